@@ -1,0 +1,72 @@
+# gravel - DEM engine. `make` builds bin/gravel; `make test` and `make run`
+# first make sure the Debian packages it needs are installed (`make deps`).
+
+CC      ?= gcc
+CFLAGS  ?= -O2 -g
+WARN     = -Wall -Wextra -Werror
+CPPFLAGS = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 -Isrc -Istyles -Ibuild/gen
+LDLIBS   = -lOpenCL -lgsl -lgslcblas -lm
+SANFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+
+SRC      = $(wildcard src/*.c styles/*.c)
+LIBSRC   = $(filter-out src/main.c,$(SRC))
+OBJ      = $(SRC:%.c=build/obj/%.o) build/obj/kernels.o
+LIBOBJ   = $(LIBSRC:%.c=build/obj/%.o) build/obj/kernels.o
+ASANOBJ  = $(LIBSRC:%.c=build/asan/%.o) build/asan/kernels.o
+KERNELS  = $(sort $(wildcard kernels/*.cl))
+UNITSRC  = $(wildcard tests/unit/test_*.c)
+UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
+
+.PHONY: all deps test run bench clean asan fuzz
+all: bin/gravel
+
+bin/gravel: $(OBJ)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
+
+# Sanitizer build of the whole engine, used by the unit tests and the fuzz replay.
+asan: bin/gravel-asan $(UNITBIN)
+bin/gravel-asan: $(ASANOBJ) build/asan/src/main.o
+	@mkdir -p bin
+	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS)
+
+build/obj/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(WARN) -c -o $@ $<
+
+build/asan/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(SANFLAGS) $(WARN) -c -o $@ $<
+
+# Kernel sources are embedded in the binary: it runs from any directory.
+build/gen/kernels.c: $(KERNELS) tools/embed.c
+	@mkdir -p build/gen
+	$(CC) -O1 -o build/gen/embed tools/embed.c
+	build/gen/embed $(KERNELS) > $@
+build/obj/kernels.o: build/gen/kernels.c
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+build/asan/kernels.o: build/gen/kernels.c
+	@mkdir -p build/asan
+	$(CC) $(CPPFLAGS) $(SANFLAGS) -c -o $@ $<
+
+build/tests/%: tests/unit/%.c tests/unit/test.h $(ASANOBJ)
+	@mkdir -p build/tests
+	$(CC) $(CPPFLAGS) $(SANFLAGS) $(WARN) -Itests/unit -o $@ $< $(ASANOBJ) $(LDLIBS)
+
+deps:
+	@sh tools/deps.sh
+
+test: deps
+	@$(MAKE) --no-print-directory all asan
+	@sh tests/run.sh
+
+run: deps
+	@$(MAKE) --no-print-directory all
+	cd inputs/examples && ../../bin/gravel -in settle.in
+
+bench: deps
+	@$(MAKE) --no-print-directory all
+	@sh tools/bench.sh
+
+clean:
+	rm -rf build bin

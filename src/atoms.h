@@ -1,0 +1,25 @@
+/* atoms.h - host-side per-atom arrays (atom_style sphere).
+ *
+ * The host copy is the source of truth between runs; `run` uploads it and
+ * downloads it back at the end and whenever output needs it. Arrays grow
+ * geometrically; indices are local positions, `tag` is the identity. */
+#ifndef GR_ATOMS_H
+#define GR_ATOMS_H
+
+#include "gravel.h"
+
+/* Make room for at least n atoms (values of new slots are zero). */
+void atoms_reserve(struct gravel *g, int n);
+/* Append one atom; returns its index. Tag 0 = next free tag. Radius and
+ * mass as given; velocity, omega, image zero; mask = "all". */
+int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double radius,
+              double rmass);
+/* Remove atom i by moving the last atom into its slot. */
+void atoms_remove(struct gravel *g, int i);
+/* Set ntypes and size the per-type tables. */
+void atoms_set_ntypes(struct gravel *g, int ntypes);
+void atoms_free(struct atoms *a);
+/* Index of the atom with this tag, or -1 (linear scan; callers cache). */
+int atoms_find_tag(const struct atoms *a, int64_t tag);
+
+#endif

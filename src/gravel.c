@@ -1,0 +1,108 @@
+/* gravel.c - creation, defaults, `clear` and destruction of a simulation. */
+#include "gravel.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atoms.h"
+#include "input.h"
+#include "run.h"
+#include "styles.h"
+#include "variable.h"
+
+void gr_unit_defaults(struct gravel *g)
+{
+    switch (g->dom.units) {
+    case UNITS_LJ: g->dt = 0.005; g->neigh.skin = 0.3; break;
+    case UNITS_SI: g->dt = 1e-8; g->neigh.skin = 0.001; break;
+    case UNITS_CGS: g->dt = 1e-8; g->neigh.skin = 0.1; break;
+    }
+    g->thermo.norm = g->dom.units == UNITS_LJ;
+}
+
+static void set_defaults(struct gravel *g)
+{
+    g->dom.units = UNITS_LJ;
+    g->dom.dimension = 3;
+    for (int d = 0; d < 3; d++) {
+        g->dom.bnd[d][0] = g->dom.bnd[d][1] = BND_P;
+        g->dom.periodic[d] = 1;
+        g->dom.lat.a[d] = 1.0;
+    }
+    g->neigh.every = 1;
+    g->neigh.delay = 0;
+    g->neigh.check = 1;
+    g->neigh.one = 2000;
+    g->neigh.page = 100000;
+    g->neigh.style_bin = 1;
+    g->thermo.lost = LOST_ERROR;
+    g->groups.n = 1;
+    g->groups.used[0] = 1;
+    strcpy(g->groups.name[0], "all");
+    gr_unit_defaults(g);
+}
+
+struct gravel *gr_create(void)
+{
+    struct gravel *g = calloc(1, sizeof *g);
+    if (!g)
+        return NULL;
+    g->screen = stdout;
+    g->echo = ECHO_LOG;
+    g->vars = var_create();
+    g->inp = inp_create();
+    set_defaults(g);
+    return g;
+}
+
+static void free_state(struct gravel *g)
+{
+    engine_destroy(g);
+    styles_free(g);
+    regions_free(g);
+    atoms_free(&g->atoms);
+    thermo_settings_free(&g->thermo);
+}
+
+void gr_clear(struct gravel *g)
+{
+    struct gravel keep = *g;
+    free_state(g);
+    memset(g, 0, sizeof *g);
+    g->opt = keep.opt;
+    g->err = keep.err;
+    g->inp = keep.inp;
+    g->vars = keep.vars;
+    g->screen = keep.screen;
+    g->logfile = keep.logfile;
+    g->echo = keep.echo;
+    set_defaults(g);
+}
+
+void gr_destroy(struct gravel *g)
+{
+    if (!g)
+        return;
+    free_state(g);
+    var_destroy(g->vars);
+    inp_destroy(g->inp);
+    if (g->logfile)
+        fclose(g->logfile);
+    free(g);
+}
+
+void gr_print(struct gravel *g, const char *fmt, ...)
+{
+    va_list ap;
+    if (g->screen) {
+        va_start(ap, fmt);
+        vfprintf(g->screen, fmt, ap);
+        va_end(ap);
+    }
+    if (g->logfile) {
+        va_start(ap, fmt);
+        vfprintf(g->logfile, fmt, ap);
+        va_end(ap);
+    }
+}

@@ -1,0 +1,200 @@
+/* gravel.h - the whole simulation as one struct, and the types every module shares.
+ *
+ * One `struct gravel` holds everything a script builds: interpreter state, the
+ * domain, atoms, groups, regions, variables, styles and output settings. Modules
+ * own their sub-structs (declared in their own headers) and export a small
+ * prefixed API. Nothing here is global: tests create several engines at once. */
+#ifndef GRAVEL_H
+#define GRAVEL_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include <setjmp.h>
+
+#define GR_VERSION "0.1.0"
+
+#define GR_MAXGROUP 32      /* groups are bits of a 32-bit per-atom mask */
+#define GR_NAMELEN 64       /* longest ID of a fix, compute, region, group, dump */
+
+typedef int64_t bigint;
+
+struct gravel;
+struct vars;                /* variable.c: opaque */
+struct inp;                 /* input.c: opaque */
+struct engine;              /* run.c: device state, opaque outside run/ocl/neighbor */
+
+/* ---- domain: units, box, boundaries, lattice ------------------------------ */
+
+enum units { UNITS_LJ, UNITS_SI, UNITS_CGS };
+
+/* Boundary flag per face, as LAMMPS: p periodic, f fixed, s shrink-wrap, m shrink
+ * with minimum. */
+enum bflag { BND_P = 'p', BND_F = 'f', BND_S = 's', BND_M = 'm' };
+
+struct lattice {
+    int style;              /* 0 none, else LAT_SC ... (lattice.c) */
+    double a[3];            /* spacing per dimension in box units */
+    double origin[3];       /* fractional origin */
+    int nbasis;
+    double basis[8][3];     /* fractional basis positions */
+};
+
+struct domain {
+    enum units units;
+    int dimension;
+    int box_exists;
+    char bnd[3][2];         /* boundary flag per dimension and face (lo, hi) */
+    int periodic[3];
+    double lo[3], hi[3];    /* current box */
+    double minlo[3], minhi[3]; /* 'm' boundaries: the box never shrinks inside these */
+    struct lattice lat;
+};
+
+/* ---- atoms: host-side structure of arrays (atom_style sphere) ------------- */
+
+struct atoms {
+    int n, cap;
+    int ntypes;
+    int64_t *tag;           /* global id, 1-based */
+    int *type;              /* 1..ntypes */
+    unsigned *mask;         /* group bits; bit 0 is "all" */
+    double *x, *v, *f;      /* 3 per atom, interleaved xyz */
+    double *omega, *torque; /* 3 per atom */
+    double *radius;
+    double *rmass;          /* per-atom mass (sphere) */
+    int *image;             /* 3 per atom: periodic image counts */
+    double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
+    int64_t maxtag;
+};
+
+/* ---- groups ---------------------------------------------------------------- */
+
+struct groups {
+    int n;                  /* slots in use (0 = "all" always) */
+    char name[GR_MAXGROUP][GR_NAMELEN];
+    int used[GR_MAXGROUP];
+};
+
+/* ---- regions --------------------------------------------------------------- */
+
+struct region;              /* region.c */
+struct regions {
+    int n, cap;
+    struct region **r;
+};
+
+/* ---- neighbor and run settings -------------------------------------------- */
+
+struct neigh_settings {
+    double skin;
+    int style_bin;          /* neighbor ... bin (only style) */
+    int every, delay, check, once;
+    int one, page;          /* capacity hints (neigh_modify one/page) */
+    int nexclude;
+    int exclude_group[16][2]; /* group index pairs excluded (neigh_modify exclude group) */
+    int exclude_type[16][2];
+    int nexclude_type;
+};
+
+enum thermo_lost { LOST_ERROR, LOST_WARN, LOST_IGNORE };
+
+#define GR_MAXTHERMO 64
+struct thermo_settings {
+    int every;                      /* 0 = first and last step only */
+    char *every_var;                /* thermo v_name */
+    int ncol;
+    char col[GR_MAXTHERMO][GR_NAMELEN];
+    int norm;                       /* thermo_modify norm (lj default yes) */
+    int norm_set;
+    int flush;
+    enum thermo_lost lost;
+    char *format_line;              /* thermo_modify format line "..." */
+    char *format_int, *format_float;
+    char *format_col[GR_MAXTHERMO];
+};
+
+/* ---- styles: fixes, computes, pair, dumps ---------------------------------- */
+
+struct fix;                 /* fix.h */
+struct compute;             /* compute.h */
+struct pair;                /* pair.h */
+struct dump;                /* dump.h */
+
+struct styles {
+    struct pair *pair;      /* NULL until pair_style */
+    int nfix, nfix_cap;
+    struct fix **fix;
+    int ncompute, ncompute_cap;
+    struct compute **compute;
+    int ndump, ndump_cap;
+    struct dump **dump;
+};
+
+/* ---- options from the command line ----------------------------------------- */
+
+enum echo_mode { ECHO_NONE = 0, ECHO_SCREEN = 1, ECHO_LOG = 2, ECHO_BOTH = 3 };
+
+struct options {
+    char device[32];        /* "", "cpu", "gpu" or an index */
+    int single;             /* -precision single */
+    int progress;           /* -progress */
+    int quiet_screen;       /* -screen none */
+};
+
+/* ---- error context: where the command being run came from ------------------ */
+
+struct errctx {
+    const char *cmd;        /* command name, for the "ERROR: cmd:" prefix */
+    const char *file;       /* script file name or "stdin" */
+    int line;               /* first line of the command in that file */
+    const char *text;       /* the command line as read (for the echo under the error) */
+    jmp_buf *jmp;           /* active unwind target; NULL = print and exit(1) */
+    char msg[1024];         /* last error message, for tests */
+    int nwarn;
+};
+
+/* ---- the simulation ---------------------------------------------------------- */
+
+struct gravel {
+    struct options opt;
+    struct errctx err;
+    struct inp *inp;
+    struct vars *vars;
+
+    FILE *screen;           /* stdout unless -screen none (then NULL) */
+    FILE *logfile;          /* log.gravel unless -log none */
+    enum echo_mode echo;
+
+    struct domain dom;
+    struct atoms atoms;
+    struct groups groups;
+    struct regions regions;
+
+    double dt;
+    int dt_set;
+    struct neigh_settings neigh;
+    struct thermo_settings thermo;
+    struct styles styles;
+
+    bigint step;            /* current timestep */
+    double time;            /* elapsed simulated time */
+    bigint firststep, laststep; /* of the current run */
+    bigint laststep_reset;
+
+    struct engine *eng;     /* device state, alive across runs; NULL before the first run */
+    uint64_t seed_counter;
+    int warned_ignored[16]; /* commands with no meaning here warn once */
+};
+
+/* Lifecycle (gravel.c). */
+struct gravel *gr_create(void);
+void gr_destroy(struct gravel *g);
+/* `clear`: back to the state of a fresh engine, keeping options and outputs. */
+void gr_clear(struct gravel *g);
+/* Unit-dependent defaults (timestep, skin, thermo norm) for g->dom.units. */
+void gr_unit_defaults(struct gravel *g);
+
+/* Output to screen and log, like LAMMPS' utils::logmesg. */
+void gr_print(struct gravel *g, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#endif

@@ -1,0 +1,27 @@
+/* run.h - the `run` command and the device engine that lives across runs.
+ *
+ * Between runs the host arrays in g->atoms are the truth. During a run the
+ * device buffers are; run_sync_host() copies them back (in the current device
+ * order: every per-atom array moves together, tags keep identity) for output
+ * and variables. */
+#ifndef GR_RUN_H
+#define GR_RUN_H
+
+#include "gravel.h"
+
+/* What a finished run reports (thermo_footer prints it LAMMPS-style). */
+struct run_stats {
+    bigint nsteps;
+    int natoms;
+    double t_total;                 /* wall seconds of the loop */
+    double t_pair, t_neigh, t_modify, t_output, t_other;
+    bigint nbuilds, ndanger;
+    double total_neighbors;         /* entries in the last list built */
+    double max_overlap_frac;        /* largest overlap / radius seen at outputs */
+};
+
+/* Device state -> host arrays; no-op when no run is active. */
+void run_sync_host(struct gravel *g);
+void engine_destroy(struct gravel *g);
+
+#endif
