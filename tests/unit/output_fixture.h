@@ -106,4 +106,20 @@ static inline void fx_destroy(struct gravel *g)
     gr_destroy(g);
 }
 
+/* CHECK_ERROR with fx_destroy (test.h's version leaks computes and dumps
+ * until styles_free releases them). */
+#define FX_CHECK_ERROR(text, what, line)                                             \
+    do {                                                                             \
+        struct gravel *ge_ = test_engine();                                          \
+        int rc_ = test_script(ge_, text);                                            \
+        char where_[64];                                                             \
+        snprintf(where_, sizeof where_, "(test.in:%d)", (line));                     \
+        if (rc_ != GR_ERR || !strstr(ge_->err.msg, what) || !strstr(ge_->err.msg, where_)) { \
+            printf("  check failed %s:%d: expected error '%s' %s, got rc %d '%s'\n", \
+                   __FILE__, __LINE__, what, where_, rc_, ge_->err.msg);             \
+            t_failed_checks++;                                                       \
+        }                                                                            \
+        fx_destroy(ge_);                                                             \
+    } while (0)
+
 #endif

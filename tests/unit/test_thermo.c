@@ -226,25 +226,25 @@ TEST(keyword_values)
 
 TEST(errors)
 {
-    CHECK_ERROR("thermo 10\nthermo_style custom step kee\n", "unknown keyword 'kee'", 2);
-    CHECK_ERROR("thermo -5\n", "must not be negative", 1);
-    CHECK_ERROR("thermo abc\n", "expected an integer", 1);
-    CHECK_ERROR("thermo_style fancy\n", "unknown style 'fancy'", 1);
-    CHECK_ERROR("thermo_style one extra\n", "takes no keywords", 1);
-    CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
-    CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
-    CHECK_ERROR("thermo_style custom f_1\n", "fix references", 1);
-    CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
-    CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
-    CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
-    CHECK_ERROR("thermo_modify format int %*d\n", "must convert an integer", 1);
-    CHECK_ERROR("thermo_modify format int %99999d\n", "width over 999", 1);
-    CHECK_ERROR("thermo_modify format 7 %d\n", "outside 1..6", 1);
-    CHECK_ERROR("thermo_modify format\n", "needs 1 value", 1);
-    CHECK_ERROR("thermo_modify lost maybe\n", "error, warn or ignore", 1);
-    CHECK_ERROR("thermo_modify norm perhaps\n", "expected yes or no", 1);
-    CHECK_ERROR("thermo_modify temp t\n", "not supported", 1);
-    CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
+    FX_CHECK_ERROR("thermo 10\nthermo_style custom step kee\n", "unknown keyword 'kee'", 2);
+    FX_CHECK_ERROR("thermo -5\n", "must not be negative", 1);
+    FX_CHECK_ERROR("thermo abc\n", "expected an integer", 1);
+    FX_CHECK_ERROR("thermo_style fancy\n", "unknown style 'fancy'", 1);
+    FX_CHECK_ERROR("thermo_style one extra\n", "takes no keywords", 1);
+    FX_CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
+    FX_CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
+    FX_CHECK_ERROR("thermo_style custom f_1\n", "fix references", 1);
+    FX_CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
+    FX_CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
+    FX_CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
+    FX_CHECK_ERROR("thermo_modify format int %*d\n", "must convert an integer", 1);
+    FX_CHECK_ERROR("thermo_modify format int %99999d\n", "width over 999", 1);
+    FX_CHECK_ERROR("thermo_modify format 7 %d\n", "outside 1..6", 1);
+    FX_CHECK_ERROR("thermo_modify format\n", "needs 1 value", 1);
+    FX_CHECK_ERROR("thermo_modify lost maybe\n", "error, warn or ignore", 1);
+    FX_CHECK_ERROR("thermo_modify norm perhaps\n", "expected yes or no", 1);
+    FX_CHECK_ERROR("thermo_modify temp t\n", "not supported", 1);
+    FX_CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
 
     /* references are resolved at run setup */
     struct gravel *g = make3();
