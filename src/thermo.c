@@ -557,7 +557,6 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     }
     case KW_KE:
     case KW_ETOTAL: {
-        run_sync_host(g);
         double ke = kinetic_energy(g);
         /* pe: granular pair styles and walls have no potential energy */
         return norm ? ke / natoms : ke;
@@ -584,6 +583,8 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
+        if (k == KW_KE || k == KW_ETOTAL)
+            run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
         return 1;
@@ -630,6 +631,12 @@ const char *thermo_line_text(struct gravel *g)
     struct thermo_settings *t = &g->thermo;
     double val[GR_MAXTHERMO];
     bigint ival[GR_MAXTHERMO];
+    /* host arrays current once per line (computes and ke read them) */
+    for (int i = 0; i < st->ncol; i++)
+        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KIND_COMPUTE) {
+            run_sync_host(g);
+            break;
+        }
     /* evaluate everything first: computes and variables may raise errors */
     for (int i = 0; i < st->ncol; i++) {
         int k = st->kind[i], isint = 0;
@@ -637,7 +644,6 @@ const char *thermo_line_text(struct gravel *g)
         if (k >= 0) {
             val[i] = keyword_value(g, k, &ival[i], &isint);
         } else if (k == KIND_COMPUTE) {
-            run_sync_host(g);
             val[i] = compute_ref_value(g, t->col[i], t->norm, "thermo_style");
         } else {
             val[i] = var_compute_equal(g, t->col[i] + 2);

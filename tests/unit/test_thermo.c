@@ -4,6 +4,8 @@
  * and the run footer. */
 #include "output_fixture.h"
 
+#include <unistd.h>
+
 #include "command.h"
 #include "output.h"
 #include "thermo.h"
@@ -358,6 +360,69 @@ TEST(schedule_and_footer)
     fx_destroy(g);
 }
 
+/* -progress: an updating line on stderr (never in the screen/log stream),
+ * erased at the end of the run. */
+TEST(progress_line)
+{
+    struct gravel *g = make3();
+    g->opt.progress = 1;
+    CHECK(test_script(g, "thermo 0\nthermo_style custom step\n") == GR_OK);
+    fflush(stderr);
+    int saved = dup(2);
+    FILE *tmp = tmpfile();
+    dup2(fileno(tmp), 2);
+    struct fx_capture cap;
+    fx_capture_begin(g, &cap);
+    g->step = g->firststep = 0;
+    g->laststep = 10;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    for (bigint s = 1; s <= 10; s++) {
+        g->step = s;
+        if (s == 5)
+            output_state(g)->prog_last_wall = 0; /* force a redraw now */
+        output_step(g);
+    }
+    struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 1.0};
+    output_finish(g, &st);
+    char *out = fx_capture_end(g, &cap);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    char err[512] = "";
+    rewind(tmp);
+    size_t n = fread(err, 1, sizeof err - 1, tmp);
+    err[n] = '\0';
+    fclose(tmp);
+    CHECK(strncmp(err, "\rstep 5 / 10   50.0%  ", 22) == 0);
+    CHECK(strstr(err, "steps/s  ETA 0:00:0") != NULL);
+    /* erased: ends with \r, blanks over the line, \r */
+    size_t len = strcspn(err + 1, "\r") ;
+    CHECK(n == 2 * (len + 1) + 1 && err[n - 1] == '\r' && err[len + 2] == ' ');
+    CHECK(out && !strstr(out, "steps/s  ETA"));
+    free(out);
+    /* without -progress and with stderr not a terminal: nothing */
+    g->opt.progress = 0;
+    tmp = tmpfile();
+    saved = dup(2);
+    dup2(fileno(tmp), 2);
+    fx_capture_begin(g, &cap);
+    g->firststep = 10;
+    g->laststep = 20;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    output_state(g)->prog_last_wall = 0;
+    g->step = 11;
+    output_step(g);
+    output_finish(g, &st);
+    free(fx_capture_end(g, &cap));
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    fseek(tmp, 0, SEEK_END);
+    CHECK(ftell(tmp) == 0);
+    fclose(tmp);
+    fx_destroy(g);
+}
+
 int main(void)
 {
     RUN(chute_layout);
@@ -369,5 +434,6 @@ int main(void)
     RUN(keyword_values);
     RUN(errors);
     RUN(schedule_and_footer);
+    RUN(progress_line);
     return 0;
 }
