@@ -104,10 +104,25 @@ static void timing_row(struct gravel *g, const char *label, double t, double tot
              total > 0 ? 100.0 * t / total : 0.0);
 }
 
+/* LAMMPS 2021 formats these with fmt's "{:W.N}" on a double: "%#W.Ng"
+ * (trailing zeros kept), and a result ending in a bare '.' gets a "0"
+ * appended after the padding: "    115133.0" (12 wide), as `lmp` prints. */
+static void showpoint(char *buf, size_t n, int width, int prec, double v)
+{
+    snprintf(buf, n, "%#*.*g", width, prec, v);
+    size_t len = strlen(buf);
+    if (len > 0 && buf[len - 1] == '.' && len + 1 < n) {
+        buf[len] = '0';
+        buf[len + 1] = '\0';
+    }
+}
+
 /* "Nlocal: ..." with its one-bin histogram, as LAMMPS for one process. */
 static void stat_row(struct gravel *g, const char *label, double v)
 {
-    gr_print(g, "%-10s %#11.6g ave %11.6g max %11.6g min\n", label, v, v, v);
+    char ave[64];
+    showpoint(ave, sizeof ave, 11, 6, v);
+    gr_print(g, "%-10s %s ave %11.6g max %11.6g min\n", label, ave, v, v);
     gr_print(g, "Histogram: 1 0 0 0 0 0 0 0 0 0\n");
 }
 
@@ -157,8 +172,11 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     stat_row(g, "Nlocal:", s->natoms);
     stat_row(g, "Neighs:", s->total_neighbors);
     gr_print(g, "\nTotal # of neighbors = %.8g\n", s->total_neighbors);
-    if (s->natoms > 0)
-        gr_print(g, "Ave neighs/atom = %#.8g\n", s->total_neighbors / s->natoms);
+    if (s->natoms > 0) {
+        char ave[64];
+        showpoint(ave, sizeof ave, 0, 8, s->total_neighbors / s->natoms);
+        gr_print(g, "Ave neighs/atom = %s\n", ave);
+    }
     gr_print(g, "Neighbor list builds = %lld\n", (long long)s->nbuilds);
     if (g->neigh.check)
         gr_print(g, "Dangerous builds = %lld\n", (long long)s->ndanger);

@@ -347,6 +347,28 @@ TEST(schedule_and_footer)
     CHECK(out && strcmp(out, "Step Atoms \n      10        3 \n      20        3 \n") == 0);
     free(out);
 
+    /* the chute's footer numbers, as `lmp` printed them */
+    fx_capture_begin(g, &cap);
+    struct run_stats chute = {.nsteps = 100, .natoms = 32000, .t_total = 0.222894,
+                              .t_pair = 0.12176, .t_neigh = 0.025657, .t_output = 0.00020322,
+                              .t_modify = 0.051746, .t_other = 0.01368, .nbuilds = 2,
+                              .total_neighbors = 115133};
+    g->dt = 0.0001;
+    output_finish(g, &chute);
+    out = fx_capture_end(g, &cap);
+    CHECK(out && strstr(out, "Loop time of 0.222894 on 1 procs for 100 steps with 32000 atoms\n"));
+    /* lmp: 3876.279 tau/day, 448.643 timesteps/s from its unrounded loop time */
+    CHECK(out && strstr(out, "Performance: 3876.282 tau/day, 448.644 timesteps/s, 14.357 "
+                             "Matom-step/s\n"));
+    CHECK(out && strstr(out, "Pair    | 0.12176    | 0.12176    | 0.12176    |   0.0 | 54.63\n"));
+    CHECK(out && strstr(out, "Output  | 0.00020322 | 0.00020322 | 0.00020322 |   0.0 |  0.09\n"));
+    CHECK(out && strstr(out, "Other   |            | 0.01368    |            |       |  6.14\n"));
+    CHECK(out && strstr(out, "Nlocal:        32000.0 ave       32000 max       32000 min\n"));
+    CHECK(out && strstr(out, "Neighs:        115133.0 ave      115133 max      115133 min\n"));
+    CHECK(out && strstr(out, "Total # of neighbors = 115133\nAve neighs/atom = 3.5979062\n"
+                             "Neighbor list builds = 2\nDangerous builds = 0\n"));
+    free(out);
+
     /* Performance in si units: simulated seconds per day, Matom-step/s */
     g->dom.units = UNITS_SI;
     g->dt = 1e-6;
