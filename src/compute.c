@@ -75,6 +75,10 @@ static void check_id(struct gravel *g, const char *id)
 
 void cmd_compute(struct gravel *g, int argc, char **argv)
 {
+    if (argc < 3)
+        gr_error(g, "expected: compute ID group style args...");
+    if (!g->dom.box_exists)
+        gr_error(g, "compute before the simulation box is defined");
     check_id(g, argv[0]);
     if (compute_find(g, argv[0]))
         gr_error(g, "compute ID '%.64s' already exists; use uncompute first", argv[0]);
@@ -134,7 +138,8 @@ void cmd_compute(struct gravel *g, int argc, char **argv)
 
 void cmd_uncompute(struct gravel *g, int argc, char **argv)
 {
-    (void)argc;
+    if (argc != 1)
+        gr_error(g, "expected: uncompute ID");
     struct styles *s = &g->styles;
     for (int i = 0; i < s->ncompute; i++) {
         if (strcmp(s->compute[i]->id, argv[0]) != 0)
@@ -216,7 +221,7 @@ void compute_ref_check(struct gravel *g, const char *ref, const char *who)
     if (index > 0 && !c->vector_flag)
         gr_error(g, "%s: compute %s (%s) does not produce a global vector", who, id,
                  c->style->name);
-    if (index > c->size_vector)
+    if (index > 0 && index > c->size_vector)
         gr_error(g, "%s: %s is out of range: compute %s has %d values", who, ref, id,
                  c->size_vector);
 }

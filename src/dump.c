@@ -129,6 +129,10 @@ static void check_id(struct gravel *g, const char *id)
 
 void cmd_dump(struct gravel *g, int argc, char **argv)
 {
+    if (argc < 5)
+        gr_error(g, "expected: dump ID group style N file args...");
+    if (!g->dom.box_exists)
+        gr_error(g, "dump before the simulation box is defined");
     check_id(g, argv[0]);
     if (dump_find(g, argv[0]))
         gr_error(g, "dump ID '%.64s' already exists; use undump first", argv[0]);
@@ -205,6 +209,8 @@ void cmd_dump(struct gravel *g, int argc, char **argv)
 
 void cmd_dump_modify(struct gravel *g, int argc, char **argv)
 {
+    if (argc < 1)
+        gr_error(g, "expected: dump_modify ID keyword value ...");
     struct dump *d = dump_find(g, argv[0]);
     if (!d)
         gr_error(g, "unknown dump ID '%.64s'", argv[0]);
@@ -252,7 +258,8 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
 
 void cmd_undump(struct gravel *g, int argc, char **argv)
 {
-    (void)argc;
+    if (argc != 1)
+        gr_error(g, "expected: undump ID");
     struct styles *s = &g->styles;
     for (int i = 0; i < s->ndump; i++) {
         struct dump *d = s->dump[i];

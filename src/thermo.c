@@ -273,7 +273,8 @@ static void reset_modify(struct gravel *g)
 
 void cmd_thermo(struct gravel *g, int argc, char **argv)
 {
-    (void)argc;
+    if (argc != 1)
+        gr_error(g, "expected: thermo N or thermo v_name");
     if (strncmp(argv[0], "v_", 2) == 0) {
         if (!argv[0][2])
             gr_error(g, "variable reference 'v_' has no name");
@@ -292,6 +293,8 @@ void cmd_thermo(struct gravel *g, int argc, char **argv)
 
 void cmd_thermo_style(struct gravel *g, int argc, char **argv)
 {
+    if (argc < 1)
+        gr_error(g, "expected: thermo_style one|multi|custom keyword...");
     const char *style = argv[0];
     if (strcmp(style, "one") == 0 || strcmp(style, "multi") == 0) {
         if (argc != 1)
@@ -330,6 +333,8 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
 {
     struct thermo_settings *t = &g->thermo;
     char buf[96];
+    if (argc < 1)
+        gr_error(g, "expected keyword/value pairs");
     for (int i = 0; i < argc; i++) {
         const char *kw = argv[i];
         if (strcmp(kw, "norm") == 0) {
@@ -595,7 +600,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!compute_parse_ref(name, id, &index) || !compute_find(g, id))
             return 0;
         run_sync_host(g);
-        *out = compute_ref_value(g, name, g->thermo.norm, "thermo keyword");
+        *out = compute_ref_value(g, name, g->thermo.norm, "reference");
         return 1;
     }
     if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {

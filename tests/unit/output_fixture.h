@@ -106,11 +106,14 @@ static inline void fx_destroy(struct gravel *g)
     gr_destroy(g);
 }
 
-/* CHECK_ERROR with fx_destroy (test.h's version leaks computes and dumps
- * until styles_free releases them). */
+/* CHECK_ERROR on an engine with a 10^3 box and 2 types, freed with
+ * fx_destroy (test.h's version leaks computes and dumps until styles_free
+ * releases them). */
 #define FX_CHECK_ERROR(text, what, line)                                             \
     do {                                                                             \
         struct gravel *ge_ = test_engine();                                          \
+        double lo_[3] = {0, 0, 0}, hi_[3] = {10, 10, 10};                            \
+        fx_box(ge_, lo_, hi_, 2);                                                    \
         int rc_ = test_script(ge_, text);                                            \
         char where_[64];                                                             \
         snprintf(where_, sizeof where_, "(test.in:%d)", (line));                     \
