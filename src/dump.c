@@ -246,12 +246,24 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             d->pad = arg_int_range(g, argv[i + 1], 0, 20, "pad");
             i += 2;
+        } else if (strcmp(kw, "first") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            d->first = arg_yesno(g, argv[i + 1], "first");
+            i += 2;
+        } else if (strcmp(kw, "append") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            int yes = arg_yesno(g, argv[i + 1], "append");
+            if (!d->style->append || d->multifile)
+                gr_error(g, "append applies to a dump custom writing one file (dump %s)", d->id);
+            if (d->nsnap == 0)
+                d->published = yes; /* the first snapshot continues the existing file */
+            i += 2;
         } else if (strcmp(kw, "binary") == 0) {
             gr_error(g, "binary applies to dump vtk only (dump %s is %s)", d->id, d->style->name);
         } else {
-            gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad%s",
-                     kw, d->id, d->style->name,
-                     strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", format");
+            gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad, "
+                        "first%s", kw, d->id, d->style->name,
+                     strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", append, format");
         }
     }
 }
@@ -434,7 +446,8 @@ void dump_setup_all(struct gravel *g)
     }
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
-        if (g->step % d->every == 0 && d->last_dump != g->step) {
+        int due = g->step % d->every == 0 || (d->first && d->last_dump < 0);
+        if (due && d->last_dump != g->step) {
             if (!synced) {
                 run_sync_host(g);
                 synced = 1;

@@ -55,11 +55,12 @@ struct dump {
     int pad;                    /* dump_modify pad: zero-pad the step to this width */
     int sort;                   /* dump_modify sort id */
     int binary;                 /* dump_modify binary yes (vtk) */
+    int first;                  /* dump_modify first yes: write at the first step of a run */
     bigint last_dump;           /* step of the last snapshot, -1 = none */
     bigint next_dump;
     /* append mode (one file, several snapshots) */
     FILE *fp;                   /* open "<file>.tmp" during a run */
-    int published;              /* <file> holds complete snapshots of this dump */
+    int published;              /* <file> holds snapshots to keep (ours, or append yes) */
     int nsnap;                  /* snapshots written */
     /* scratch */
     int *idx;

@@ -28,7 +28,7 @@ enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
-    KW_COUNT
+    KW_TEMP, KW_EPAIR, KW_EMOL, KW_COUNT
 };
 #define KIND_COMPUTE (-1)
 #define KIND_VARIABLE (-2)
@@ -47,7 +47,8 @@ static const struct {
     [KW_LZ] = {"lz", "Lz", V_FLOAT},            [KW_XLO] = {"xlo", "Xlo", V_FLOAT},
     [KW_XHI] = {"xhi", "Xhi", V_FLOAT},         [KW_YLO] = {"ylo", "Ylo", V_FLOAT},
     [KW_YHI] = {"yhi", "Yhi", V_FLOAT},         [KW_ZLO] = {"zlo", "Zlo", V_FLOAT},
-    [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},
+    [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
+    [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
 };
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press"; a
@@ -243,8 +244,10 @@ static void check_keyword(struct gravel *g, const char *s)
     }
     if (strncmp(s, "f_", 2) == 0)
         gr_error(g, "fix references ('%s') are not supported in thermo output", s);
+    if (strcmp(s, "press") == 0)
+        gr_error(g, "'press' is not available: gravel's contact models compute no virial");
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
-                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi c_ID c_ID[N] v_name)", s);
+                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair emol c_ID c_ID[N] v_name)", s);
 }
 
 /* A new thermo_style drops thermo_modify settings, as in LAMMPS. */
@@ -470,7 +473,9 @@ void thermo_init(struct gravel *g)
         } else if (!isint && t->format_float) {
             f = t->format_float;
             src = "format float";
-        } else if (word) {
+        } else if (t->format_line) {
+            if (!word)
+                gr_error(g, "thermo_modify: format line has fewer words than the %d columns", n);
             f = word;
             src = "format line";
         } else {
@@ -509,6 +514,17 @@ static double kinetic_energy(struct gravel *g)
         sum += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     }
     return 0.5 * compute_mvv2e(g) * sum;
+}
+
+/* Boltzmann constant in the current units (LAMMPS' force->boltz). */
+static double boltzmann(const struct gravel *g)
+{
+    switch (g->dom.units) {
+    case UNITS_SI: return 1.380649e-23;
+    case UNITS_CGS: return 1.380649e-16;
+    case UNITS_LJ: break;
+    }
+    return 1.0;
 }
 
 static double volume(const struct gravel *g)
@@ -566,7 +582,15 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         /* pe: granular pair styles and walls have no potential energy */
         return norm ? ke / natoms : ke;
     }
-    case KW_PE: return 0.0;
+    case KW_PE:
+    case KW_EPAIR:
+    case KW_EMOL: return 0.0;
+    case KW_TEMP: {
+        /* LAMMPS compute temp: 2 KE / (dof kB), dof = dim N - dim; intensive */
+        int dim = g->dom.dimension;
+        double dof = (double)dim * g->atoms.n - dim;
+        return dof > 0 ? 2.0 * kinetic_energy(g) / (dof * boltzmann(g)) : 0.0;
+    }
     case KW_VOL: return volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
@@ -588,7 +612,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL)
+        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP)
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
@@ -638,7 +662,8 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KIND_COMPUTE) {
+        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_TEMP ||
+            st->kind[i] == KIND_COMPUTE) {
             run_sync_host(g);
             break;
         }

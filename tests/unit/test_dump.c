@@ -258,6 +258,38 @@ TEST(append_scheme)
     remove_dir(dir);
 }
 
+/* dump_modify first yes writes at a run's first step even off the multiple;
+ * append yes continues an existing file. */
+TEST(first_and_append)
+{
+    make_dir();
+    struct gravel *g = formula_system(1);
+    char p[300];
+    snprintf(p, sizeof p, "%s/old.txt", dir);
+    FILE *fp = fopen(p, "w");
+    fputs("previous content\n", fp);
+    fclose(fp);
+    CHECK(script(g, "dump d all custom 7 @/old.txt id\ndump_modify d first yes append yes\n"
+                    "dump e all vtk 7 @/e.*.vtk\n") == GR_OK);
+    g->step = 3;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    CHECK(exists("old.txt.tmp") && !exists("e.3.vtk"));
+    g->step = 7;
+    CHECK(dump_step_all(g) == 1);
+    CHECK(fx_call(g, do_run_end, 0, NULL) == 0);
+    char *s = slurp("old.txt");
+    CHECK(s && strncmp(s, "previous content\nITEM: TIMESTEP\n3\n", 33) == 0 &&
+          count_str(s, "ITEM: TIMESTEP") == 2);
+    free(s);
+    /* first applies once: a later run starting off the multiple writes nothing */
+    g->step = 9;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    CHECK(!exists("old.txt.tmp"));
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump_modify 1 append yes\n", "append applies", 2);
+    fx_destroy(g);
+    remove_dir(dir);
+}
+
 /* ---- vtk ---------------------------------------------------------------------- */
 
 TEST(vtk_files)
@@ -416,6 +448,7 @@ int main(int argc, char **argv)
     RUN(custom_text);
     RUN(custom_formats);
     RUN(append_scheme);
+    RUN(first_and_append);
     RUN(vtk_files);
     RUN(write_failures);
     RUN(errors);

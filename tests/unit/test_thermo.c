@@ -160,6 +160,10 @@ TEST(format_precedence)
     CHECK(fx_call(g, cmd_thermo_modify, 3, a2) == 0);
     CHECK(fx_call(g, do_init, 0, NULL) == 1);
     CHECK(strstr(g->err.msg, "column 2 (atoms, an integer)") != NULL);
+    char *a3[] = {"format", "line", "%d %d %g"};
+    CHECK(fx_call(g, cmd_thermo_modify, 3, a3) == 0);
+    CHECK(fx_call(g, do_init, 0, NULL) == 1);
+    CHECK(strstr(g->err.msg, "fewer words than the 4 columns") != NULL);
     fx_destroy(g);
 }
 
@@ -211,6 +215,15 @@ TEST(keyword_values)
     CHECK(thermo_keyword_value(g, "lz", &v) && v == 10);
     CHECK(thermo_keyword_value(g, "zhi", &v) && v == 10);
     CHECK(thermo_keyword_value(g, "pe", &v) && v == 0);
+    CHECK(thermo_keyword_value(g, "epair", &v) && v == 0);
+    CHECK(thermo_keyword_value(g, "emol", &v) && v == 0);
+    /* temp = 2 KE / (dof kB), dof = 3N - 3 = 6, KE = 0.96; intensive */
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 0.32, 1e-15);
+    g->dom.units = UNITS_SI;
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 0.32 / 1.380649e-23, 1e-15 / 1.380649e-23);
+    g->dom.units = UNITS_LJ;
     CHECK(thermo_keyword_value(g, "etotal", &v));
     CHECK_NEAR(v, 0.32, 1e-15);
     CHECK(test_script(g, "compute k all ke\ncompute c all count/type atom\n") == GR_OK);
@@ -236,6 +249,7 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom f_1\n", "fix references", 1);
+    FX_CHECK_ERROR("thermo_style custom step press\n", "no virial", 1);
     FX_CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
     FX_CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
     FX_CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
