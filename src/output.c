@@ -20,6 +20,7 @@
 
 static void emit(struct gravel *g, const char *text)
 {
+    progress_clear(g); /* stdout and stderr may share the terminal */
     gr_print(g, "%s", text);
     if (g->thermo.flush) {
         if (g->screen)

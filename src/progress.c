@@ -50,13 +50,18 @@ void progress_update(struct gravel *g)
     st->prog_len = len;
 }
 
-void progress_end(struct gravel *g)
+void progress_clear(struct gravel *g)
 {
     struct output_state *st = output_state(g);
     if (st->progress_on && st->prog_len > 0) {
         fprintf(stderr, "\r%*s\r", st->prog_len, "");
         fflush(stderr);
     }
-    st->progress_on = 0;
     st->prog_len = 0;
+}
+
+void progress_end(struct gravel *g)
+{
+    progress_clear(g);
+    output_state(g)->progress_on = 0;
 }
