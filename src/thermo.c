@@ -342,7 +342,7 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
         const char *kw = argv[i];
         if (strcmp(kw, "norm") == 0) {
             arg_need(g, argc, i, 1, kw);
-            t->norm = arg_yesno(g, argv[++i], "norm");
+            t->norm = t->norm_user = arg_yesno(g, argv[++i], "norm");
             t->norm_set = 1;
         } else if (strcmp(kw, "flush") == 0) {
             arg_need(g, argc, i, 1, kw);
@@ -536,6 +536,14 @@ static double volume(const struct gravel *g)
     return v;
 }
 
+/* thermo_modify norm: the user's value wins over the units default whatever
+ * the order of `units` and `thermo_modify` (LAMMPS resolves it at init). */
+static int norm_flag(struct gravel *g)
+{
+    g->thermo.norm = g->thermo.norm_set ? g->thermo.norm_user : g->dom.units == UNITS_LJ;
+    return g->thermo.norm;
+}
+
 static double clock_now(struct gravel *g)
 {
     struct output_state *st = output_state(g);
@@ -547,7 +555,7 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
     struct output_state *st = output_state(g);
     double natoms = g->atoms.n;
-    int norm = g->thermo.norm && g->atoms.n > 0;
+    int norm = norm_flag(g) && g->atoms.n > 0;
     *isint = keywords[k].type == V_BIGINT;
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
@@ -624,7 +632,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!compute_parse_ref(name, id, &index) || !compute_find(g, id))
             return 0;
         run_sync_host(g);
-        *out = compute_ref_value(g, name, g->thermo.norm, "reference");
+        *out = compute_ref_value(g, name, norm_flag(g), "reference");
         return 1;
     }
     if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {
@@ -674,7 +682,7 @@ const char *thermo_line_text(struct gravel *g)
         if (k >= 0) {
             val[i] = keyword_value(g, k, &ival[i], &isint);
         } else if (k == KIND_COMPUTE) {
-            val[i] = compute_ref_value(g, t->col[i], t->norm, "thermo_style");
+            val[i] = compute_ref_value(g, t->col[i], norm_flag(g), "thermo_style");
         } else {
             val[i] = var_compute_equal(g, t->col[i] + 2);
         }

@@ -232,7 +232,8 @@ TEST(keyword_values)
     CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 1.0);
     CHECK(!thermo_keyword_value(g, "c_nope", &v));
     CHECK(!thermo_keyword_value(g, "bogus", &v));
-    g->thermo.norm = 0;
+    CHECK(test_script(g, "thermo_modify norm no\n") == GR_OK);
+    gr_unit_defaults(g); /* a later `units lj` does not undo the user's choice */
     CHECK(thermo_keyword_value(g, "c_k", &v));
     CHECK_NEAR(v, 0.96, 1e-15);
     CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 3.0);
