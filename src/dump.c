@@ -161,6 +161,10 @@ void cmd_dump(struct gravel *g, int argc, char **argv)
     if (strchr(file, '%'))
         gr_error(g, "dump file name '%.200s': '%%' (one file per process) is not supported",
                  file);
+    for (int k = 0; k < g->styles.ndump; k++)
+        if (strcmp(g->styles.dump[k]->file, file) == 0)
+            gr_error(g, "file '%.200s' is already written by dump %s", file,
+                     g->styles.dump[k]->id);
     size_t fl = strlen(file);
     if (fl > 3 && strcmp(file + fl - 3, ".gz") == 0)
         gr_error(g, "dump file name '%.200s': compressed dumps are not supported", file);

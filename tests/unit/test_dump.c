@@ -388,6 +388,8 @@ TEST(errors)
                    "must convert a floating-point", 2);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt id\ndump_modify 1 format float\n", "needs 2", 2);
     FX_CHECK_ERROR("undump 4\n", "unknown dump ID '4'", 1);
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump 2 all custom 1 f.vtk id\n",
+                   "already written by dump 1", 2);
     CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "before the simulation box", 1);
 }
 
