@@ -289,6 +289,62 @@ void cmd_undump(struct gravel *g, int argc, char **argv)
     gr_error(g, "unknown dump ID '%.64s'", argv[0]);
 }
 
+/* `write_dump group style file args... [modify dump_modify args...]`: one
+ * snapshot of the current state now, through a temporary dump, as LAMMPS'
+ * write_dump. Between runs the host arrays are current. */
+void cmd_write_dump(struct gravel *g, int argc, char **argv)
+{
+    static const char *const tmp_id = "WRITE_DUMP";
+    if (argc < 3)
+        gr_error(g, "expected: write_dump group style file args... [modify keyword value ...]");
+    if (!g->dom.box_exists)
+        gr_error(g, "write_dump before the simulation box is defined");
+    int m = argc;
+    for (int k = 3; k < argc; k++)
+        if (strcmp(argv[k], "modify") == 0) {
+            m = k;
+            break;
+        }
+    char *dargv[260];
+    if (m > 250 || argc - m > 250)
+        gr_error(g, "too many arguments");
+    dargv[0] = (char *)tmp_id;
+    dargv[1] = argv[0];
+    dargv[2] = argv[1];
+    dargv[3] = "1";
+    for (int k = 2; k < m; k++)
+        dargv[k + 2] = argv[k];
+    cmd_dump(g, m + 2, dargv);
+    struct dump *d = dump_find(g, tmp_id);
+
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        char *id[1] = {(char *)tmp_id};
+        cmd_undump(g, 1, id);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    if (m < argc) {
+        dargv[0] = (char *)tmp_id;
+        for (int k = m + 1; k < argc; k++)
+            dargv[k - m] = argv[k];
+        if (argc - m < 2)
+            gr_error(g, "modify needs dump_modify keywords after it");
+        cmd_dump_modify(g, argc - m, dargv);
+    }
+    if (d->style->init)
+        d->style->init(g, d);
+    dump_write(g, d);
+    publish(g, d, 1);
+    g->err.jmp = outer;
+    char *id[1] = {(char *)tmp_id};
+    cmd_undump(g, 1, id);
+}
+
 /* ---- writing ------------------------------------------------------------------- */
 
 static int cmp_tag(const void *a, const void *b, void *arg)

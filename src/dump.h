@@ -72,6 +72,7 @@ struct dump {
 void cmd_dump(struct gravel *g, int argc, char **argv);
 void cmd_dump_modify(struct gravel *g, int argc, char **argv);
 void cmd_undump(struct gravel *g, int argc, char **argv);
+void cmd_write_dump(struct gravel *g, int argc, char **argv);
 
 struct dump *dump_find(struct gravel *g, const char *id);
 

@@ -290,6 +290,32 @@ TEST(first_and_append)
     remove_dir(dir);
 }
 
+/* write_dump: one snapshot now, through a temporary dump that disappears. */
+TEST(write_dump)
+{
+    make_dir();
+    struct gravel *g = formula_system(3);
+    g->step = 12;
+    CHECK(script(g, "write_dump all custom @/w.txt id x modify sort id format float %.3f\n"
+                    "write_dump even vtk @/w_*.vtk modify binary yes\n") == GR_OK);
+    char *s = slurp("w.txt");
+    CHECK(s && strstr(s, "ITEM: TIMESTEP\n12\n") &&
+          strstr(s, "ITEM: ATOMS id x\n1 0.100\n2 1.400\n3 2.700\n"));
+    free(s);
+    CHECK(!exists("w.txt.tmp") && exists("w_12.vtk"));
+    CHECK(g->styles.ndump == 0);
+    /* errors leave no temporary dump behind */
+    CHECK(script(g, "write_dump all custom @/x.txt id modify sort q\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "sort must be id or off") != NULL);
+    CHECK(g->styles.ndump == 0 && !exists("x.txt") && !exists("x.txt.tmp"));
+    CHECK(script(g, "write_dump all custom @/x.txt bogus\n") == GR_ERR);
+    CHECK(g->styles.ndump == 0);
+    CHECK(script(g, "write_dump all custom @/x.txt id modify\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "modify needs") != NULL && g->styles.ndump == 0);
+    fx_destroy(g);
+    remove_dir(dir);
+}
+
 /* ---- vtk ---------------------------------------------------------------------- */
 
 TEST(vtk_files)
@@ -451,6 +477,7 @@ int main(int argc, char **argv)
     RUN(custom_formats);
     RUN(append_scheme);
     RUN(first_and_append);
+    RUN(write_dump);
     RUN(vtk_files);
     RUN(write_failures);
     RUN(errors);
