@@ -292,29 +292,49 @@ void cmd_undump(struct gravel *g, int argc, char **argv)
 /* `write_dump group style file args... [modify dump_modify args...]`: one
  * snapshot of the current state now, through a temporary dump, as LAMMPS'
  * write_dump. Between runs the host arrays are current. */
-void cmd_write_dump(struct gravel *g, int argc, char **argv)
+static const char *const write_dump_id = "WRITE_DUMP";
+
+/* Create the temporary dump from "group style file args" (m words). */
+static void write_dump_create(struct gravel *g, int m, char **argv)
 {
-    static const char *const tmp_id = "WRITE_DUMP";
-    if (argc < 3)
-        gr_error(g, "expected: write_dump group style file args... [modify keyword value ...]");
-    if (!g->dom.box_exists)
-        gr_error(g, "write_dump before the simulation box is defined");
-    int m = argc;
-    for (int k = 3; k < argc; k++)
-        if (strcmp(argv[k], "modify") == 0) {
-            m = k;
-            break;
-        }
     char *dargv[260];
-    if (m > 250 || argc - m > 250)
+    if (m > 250)
         gr_error(g, "too many arguments");
-    dargv[0] = (char *)tmp_id;
+    dargv[0] = (char *)write_dump_id;
     dargv[1] = argv[0];
     dargv[2] = argv[1];
     dargv[3] = "1";
     for (int k = 2; k < m; k++)
         dargv[k + 2] = argv[k];
     cmd_dump(g, m + 2, dargv);
+}
+
+/* Apply the words after "modify" (n of them) to the temporary dump. */
+static void write_dump_modify(struct gravel *g, int n, char **words)
+{
+    char *dargv[260];
+    if (n < 1)
+        gr_error(g, "modify needs dump_modify keywords after it");
+    if (n > 250)
+        gr_error(g, "too many arguments");
+    dargv[0] = (char *)write_dump_id;
+    for (int k = 0; k < n; k++)
+        dargv[k + 1] = words[k];
+    cmd_dump_modify(g, n + 1, dargv);
+}
+
+void cmd_write_dump(struct gravel *g, int argc, char **argv)
+{
+    const char *tmp_id = write_dump_id;
+    if (argc < 3)
+        gr_error(g, "expected: write_dump group style file args... [modify keyword value ...]");
+    if (!g->dom.box_exists)
+        gr_error(g, "write_dump before the simulation box is defined");
+    int m = argc;
+    for (int k = 3; k < argc && m == argc; k++)
+        if (strcmp(argv[k], "modify") == 0)
+            m = k;
+    write_dump_create(g, m, argv);
     struct dump *d = dump_find(g, tmp_id);
 
     jmp_buf jb, *outer = g->err.jmp;
@@ -328,14 +348,8 @@ void cmd_write_dump(struct gravel *g, int argc, char **argv)
         gr_report_error(g);
         exit(1);
     }
-    if (m < argc) {
-        dargv[0] = (char *)tmp_id;
-        for (int k = m + 1; k < argc; k++)
-            dargv[k - m] = argv[k];
-        if (argc - m < 2)
-            gr_error(g, "modify needs dump_modify keywords after it");
-        cmd_dump_modify(g, argc - m, dargv);
-    }
+    if (m < argc)
+        write_dump_modify(g, argc - m - 1, argv + m + 1);
     if (d->style->init)
         d->style->init(g, d);
     dump_write(g, d);
