@@ -13,6 +13,8 @@ void cmd_boundary(struct gravel *g, int argc, char **argv)
     (void)argc;
     static const char dimname[3] = {'x', 'y', 'z'};
     char bnd[3][2];
+    if (g->dom.box_exists)
+        gr_error(g, "must be used before the simulation box is created");
     for (int d = 0; d < 3; d++) {
         const char *s = argv[d];
         size_t n = strlen(s);

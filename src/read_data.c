@@ -7,7 +7,9 @@
  * sections, each a keyword line, blank lines, and exactly the expected number
  * of lines: "Atoms" (optionally "Atoms # sphere"): id type diameter density
  * x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
- * lines; "Masses": type mass, one per type. `#` starts a comment.
+ * lines; "Masses": type mass, one per type; with `nocoeff`, "Pair Coeffs" and
+ * "PairIJ Coeffs" sections are skipped (an error otherwise). `#` starts a
+ * comment.
  * As LAMMPS: radius = diameter / 2; mass = 4/3 pi r^3 density, or mass =
  * density for a point particle (diameter 0). Atoms are wrapped into the box in
  * periodic dimensions (image flags updated); non-zero image flags in
@@ -35,6 +37,7 @@ struct rd {
     long lineno;
     int nw;
     char *w[MAXWORDS];
+    int nocoeff;            /* skip Pair Coeffs / PairIJ Coeffs sections */
     /* tag -> index lookup, built after Atoms */
     int64_t *stag;
     int *sidx;
@@ -305,6 +308,17 @@ static void read_masses(struct rd *r)
     }
 }
 
+/* Skip the n lines of a section (nocoeff). */
+static void skip_section(struct rd *r, const char *section, bigint n)
+{
+    for (bigint k = 0; k < n; k++) {
+        if (k == 0)
+            first_data_line(r, section);
+        else
+            next_data_line(r, section, k, n);
+    }
+}
+
 static void read_file(struct rd *r, const double shift[3])
 {
     struct gravel *g = r->g;
@@ -392,11 +406,14 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: a second Masses section", r->path, r->lineno);
             read_masses(r);
             masses_read = 1;
+        } else if (r->nocoeff && (!strcmp(sec, "Pair Coeffs") || !strcmp(sec, "PairIJ Coeffs"))) {
+            skip_section(r, sec, sec[4] == 'I' ? ntypes * (ntypes + 1) / 2 : ntypes);
         } else if (!strcmp(sec, "Bonds") || !strcmp(sec, "Angles") ||
                    !strcmp(sec, "Dihedrals") || !strcmp(sec, "Impropers") ||
                    strstr(sec, "Coeffs") || !strcmp(sec, "Ellipsoids")) {
-            gr_error(g, "%s:%ld: section '%s' is not supported (atom_style sphere; set "
-                        "coefficients with pair_coeff)",
+            gr_error(g, "%s:%ld: section '%s' is not supported (atom_style sphere has no "
+                        "bonds; skip coefficient sections with the nocoeff keyword and use "
+                        "pair_coeff)",
                      r->path, r->lineno, sec);
         } else {
             gr_error(g, "%s:%ld: unknown section or header line '%.64s'", r->path, r->lineno,
@@ -425,6 +442,7 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     if (g->dom.box_exists)
         gr_error(g, "the simulation box already exists");
     double shift[3] = {0, 0, 0};
+    int nocoeff = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "shift")) {
             arg_need(g, argc, i, 3, "shift");
@@ -432,7 +450,7 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
                 shift[d] = arg_double(g, argv[i + 1 + d], "shift");
             i += 3;
         } else if (!strcmp(argv[i], "nocoeff")) {
-            /* no coefficient sections are read anyway */
+            nocoeff = 1;
         } else if (!strcmp(argv[i], "add") || !strcmp(argv[i], "offset") ||
                    !strcmp(argv[i], "extra/atom/types") || !strcmp(argv[i], "group") ||
                    !strcmp(argv[i], "fix")) {
@@ -445,6 +463,7 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     memset(&r, 0, sizeof r);
     r.g = g;
     r.path = argv[0];
+    r.nocoeff = nocoeff;
     r.fp = fopen(argv[0], "r");
     if (!r.fp)
         gr_error(g, "cannot open data file '%.200s': %s", argv[0], strerror(errno));

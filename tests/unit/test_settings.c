@@ -92,6 +92,26 @@ TEST(neigh_exclude_and_mass)
                 "mass must be positive", 3);
 }
 
+TEST(phase_guards)
+{
+    /* pre-box commands after the box, post-box commands before it: an error
+     * on the right line (the text may come from the dispatcher's phase check) */
+    static const char *after[] = {"units si", "dimension 3", "atom_style sphere",
+                                  "boundary p p p"};
+    for (int k = 0; k < 4; k++) {
+        char s[256];
+        snprintf(s, sizeof s, "region b block 0 1 0 1 0 1\ncreate_box 1 b\n%s\n", after[k]);
+        CHECK_ERROR(s, "", 3);
+    }
+    static const char *before[] = {"mass 1 1.0", "group a empty", "set atom 1 mass 1",
+                                   "velocity all set 1 1 1", "write_data x.data"};
+    for (int k = 0; k < 5; k++) {
+        char s[256];
+        snprintf(s, sizeof s, "\n%s\n", before[k]);
+        CHECK_ERROR(s, "", 2);
+    }
+}
+
 int main(void)
 {
     RUN(units_defaults);
@@ -99,5 +119,6 @@ int main(void)
     RUN(boundary_flags);
     RUN(timestep_neighbor);
     RUN(neigh_exclude_and_mass);
+    RUN(phase_guards);
     return 0;
 }
