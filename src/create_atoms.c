@@ -188,8 +188,8 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
         for (int i = 0; i < g->atoms.n; i++)
             grid_insert(g, &job->grid, i);
     }
-    if (job->n > 0)
-        atoms_reserve(g, g->atoms.n + (int)job->n);
+    if (job->n > 0) /* grow further only as atoms actually fit */
+        atoms_reserve(g, g->atoms.n + (int)(job->n < (1 << 22) ? job->n : (1 << 22)));
     bigint added = 0;
     for (bigint k = 0; k < job->n; k++) {
         int ok = 0;

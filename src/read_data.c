@@ -192,7 +192,9 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
 {
     struct gravel *g = r->g;
     struct atoms *a = &g->atoms;
-    atoms_reserve(g, (int)natoms);
+    /* reserve at most 1M up front: a header may claim more atoms than the
+     * file holds; beyond that the arrays grow as lines are read */
+    atoms_reserve(g, (int)(natoms < (1 << 20) ? natoms : (1 << 20)));
     int nwords = 0;
     for (bigint k = 0; k < natoms; k++) {
         if (k == 0)
