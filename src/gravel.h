@@ -114,6 +114,9 @@ struct thermo_settings {
     char *format_line;              /* thermo_modify format line "..." */
     char *format_int, *format_float;
     char *format_col[GR_MAXTHERMO];
+    int multi;                      /* thermo_modify line multi / thermo_style multi */
+    int modified;                   /* some thermo_modify setting was given */
+    struct output_state *state;     /* output.c: run-time schedule, clocks, progress */
 };
 
 /* ---- styles: fixes, computes, pair, dumps ---------------------------------- */
