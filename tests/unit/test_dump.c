@@ -356,7 +356,7 @@ TEST(errors)
                    "must convert a floating-point", 2);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt id\ndump_modify 1 format float\n", "needs 2", 2);
     FX_CHECK_ERROR("undump 4\n", "unknown dump ID '4'", 1);
-    CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "before the simulation box", 1);
+    CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "needs a simulation box", 1);
 }
 
 /* ---- files for output_vtk.py ----------------------------------------------------- */
