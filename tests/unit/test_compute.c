@@ -196,7 +196,7 @@ TEST(errors)
     FX_CHECK_ERROR("compute 1 all reduce sum c_a[2]\n", "have one column", 1);
     FX_CHECK_ERROR("compute 1 all count/type bond\n", "supports only 'atom'", 1);
     FX_CHECK_ERROR("\nuncompute nope\n", "unknown compute ID 'nope'", 2);
-    CHECK_ERROR("compute 1 all ke\n", "before the simulation box", 1);
+    CHECK_ERROR("compute 1 all ke\n", "needs a simulation box", 1);
 }
 
 int main(void)

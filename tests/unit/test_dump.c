@@ -416,7 +416,7 @@ TEST(errors)
     FX_CHECK_ERROR("undump 4\n", "unknown dump ID '4'", 1);
     FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump 2 all custom 1 f.vtk id\n",
                    "already written by dump 1", 2);
-    CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "before the simulation box", 1);
+    CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "needs a simulation box", 1);
 }
 
 /* ---- files for output_vtk.py ----------------------------------------------------- */
