@@ -9,6 +9,7 @@
 #include "command.h"
 #include "output.h"
 #include "thermo.h"
+#include "variable.h"
 
 static struct gravel *make(void)
 {
@@ -460,6 +461,56 @@ TEST(progress_line)
     fx_destroy(g);
 }
 
+/* With the interpreter: v_name columns, `thermo v_name`, quoted format
+ * lines, and thermo keywords / c_ID inside expressions. */
+TEST(with_variables)
+{
+    struct gravel *g = make3();
+    CHECK(test_script(g, "variable twice equal 2*step\n"
+                         "variable every equal step+3\n"
+                         "compute k all ke\n"
+                         "thermo_style custom step v_twice c_k\n"
+                         "thermo_modify format line \"%4d %6.1f %8.3f\"\n"
+                         "thermo v_every\n") == GR_OK);
+    struct fx_capture cap;
+    fx_capture_begin(g, &cap);
+    g->step = g->firststep = 0;
+    g->laststep = 10;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    for (bigint s = 1; s <= 10; s++) {
+        g->step = s;
+        output_step(g);
+    }
+    char *out = fx_capture_end(g, &cap);
+    /* lines at 0, 3, 6, 9 (variable) and 10 (last); c_k normalized: 0.32 */
+    const char *want = "Step v_twice c_k \n"
+                       "   0    0.0    0.320 \n"
+                       "   3    6.0    0.320 \n"
+                       "   6   12.0    0.320 \n"
+                       "   9   18.0    0.320 \n"
+                       "  10   20.0    0.320 \n";
+    CHECK(out && strcmp(out, want) == 0);
+    if (out && strcmp(out, want))
+        printf("  got:\n%s", out);
+    free(out);
+    /* a variable that does not advance is an error */
+    CHECK(test_script(g, "variable every delete\nvariable every equal 2\n") == GR_OK);
+    g->step = g->firststep = 10;
+    g->laststep = 20;
+    fx_capture_begin(g, &cap);
+    CHECK(fx_call(g, do_setup, 0, NULL) == 1);
+    CHECK(strstr(g->err.msg, "variable 'every' returned 2, which is not a step after 10") !=
+          NULL);
+    free(fx_capture_end(g, &cap));
+    /* expressions see thermo keywords and computes, normalized like thermo */
+    CHECK(test_script(g, "variable e equal ke*atoms+vol+c_k\n") == GR_OK);
+    CHECK_NEAR(var_compute_equal(g, "e"), 0.96 + 1000 + 0.32, 1e-12);
+    CHECK(test_script(g, "compute r all reduce sum vx vy\nvariable r equal c_r[1]\n") ==
+          GR_OK);
+    CHECK_NEAR(var_compute_equal(g, "r"), 0.8, 1e-15); /* 2.4 / 3 atoms */
+    fx_destroy(g);
+}
+
 int main(void)
 {
     RUN(chute_layout);
@@ -472,5 +523,6 @@ int main(void)
     RUN(errors);
     RUN(schedule_and_footer);
     RUN(progress_line);
+    RUN(with_variables);
     return 0;
 }
