@@ -153,6 +153,38 @@ void cmd_uncompute(struct gravel *g, int argc, char **argv)
     gr_error(g, "unknown compute ID '%.64s'", argv[0]);
 }
 
+/* `compute_modify ID keyword value ...`. gravel's computes have no
+ * modifiable settings; the implicit thermo_temp (thermo `temp` and `ke`)
+ * takes LAMMPS' dynamic/dof (always on: dof follow the current atom count)
+ * and extra/dof. */
+void cmd_compute_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "expected: compute_modify ID keyword value ...");
+    if (strcmp(argv[0], "thermo_temp") != 0) {
+        struct compute *c = compute_get(g, argv[0], "compute_modify");
+        gr_error(g, "compute %s (%s) has no settings to modify", c->id, c->style->name);
+    }
+    double extra = g->thermo.extra_dof;
+    int set = g->thermo.extra_dof_set;
+    for (int i = 1; i < argc; i += 2) {
+        const char *kw = argv[i];
+        arg_need(g, argc, i, 1, kw);
+        if (strcmp(kw, "dynamic/dof") == 0 || strcmp(kw, "dynamic") == 0) {
+            if (!arg_yesno(g, argv[i + 1], kw))
+                gr_warn(g, "thermo_temp: gravel always counts the current atoms (dynamic/dof "
+                           "yes)");
+        } else if (strcmp(kw, "extra/dof") == 0 || strcmp(kw, "extra") == 0) {
+            extra = arg_double(g, argv[i + 1], kw);
+            set = 1;
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (dynamic/dof, extra/dof)", kw);
+        }
+    }
+    g->thermo.extra_dof = extra;
+    g->thermo.extra_dof_set = set;
+}
+
 double compute_scalar(struct gravel *g, struct compute *c)
 {
     if (!c->scalar_flag)

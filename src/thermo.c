@@ -498,15 +498,23 @@ void thermo_init(struct gravel *g)
 
 /* ---- values -------------------------------------------------------------------- */
 
+/* Degrees of freedom of LAMMPS' thermo_temp compute: dim x N - extra, extra
+ * = dim unless `compute_modify thermo_temp extra/dof`. Counted from the
+ * current atoms each time (LAMMPS' dynamic/dof yes). */
+static double temp_dof(const struct gravel *g)
+{
+    int dim = g->dom.dimension;
+    double extra = g->thermo.extra_dof_set ? g->thermo.extra_dof : dim;
+    return (double)dim * g->atoms.n - extra;
+}
+
 /* Translational kinetic energy as LAMMPS' thermo `ke` (compute temp scalar x
  * dof/2 x kB): 1/2 sum m v^2, and 0 when the system has no degrees of freedom
  * left (dim x N - dim <= 0, e.g. a single atom). */
 static double kinetic_energy(struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
-    int dim = g->dom.dimension;
-    double dof = (double)dim * a->n - dim;
-    if (dof <= 0)
+    if (temp_dof(g) <= 0)
         return 0.0;
     double sum = 0.0;
     for (int i = 0; i < a->n; i++) {
@@ -595,8 +603,7 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_EMOL: return 0.0;
     case KW_TEMP: {
         /* LAMMPS compute temp: 2 KE / (dof kB), dof = dim N - dim; intensive */
-        int dim = g->dom.dimension;
-        double dof = (double)dim * g->atoms.n - dim;
+        double dof = temp_dof(g);
         return dof > 0 ? 2.0 * kinetic_energy(g) / (dof * boltzmann(g)) : 0.0;
     }
     case KW_VOL: return volume(g);

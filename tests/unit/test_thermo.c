@@ -225,6 +225,14 @@ TEST(keyword_values)
     CHECK(thermo_keyword_value(g, "temp", &v));
     CHECK_NEAR(v, 0.32 / 1.380649e-23, 1e-15 / 1.380649e-23);
     g->dom.units = UNITS_LJ;
+    /* compute_modify thermo_temp extra/dof 0: dof = 9 */
+    CHECK(test_script(g, "compute_modify thermo_temp dynamic/dof yes extra/dof 0\n") == GR_OK);
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 2 * 0.96 / 9, 1e-15);
+    CHECK(test_script(g, "compute_modify thermo_temp extra/dof 9\n") == GR_OK);
+    CHECK(thermo_keyword_value(g, "temp", &v) && v == 0.0);
+    CHECK(thermo_keyword_value(g, "ke", &v) && v == 0.0); /* as LAMMPS: no dof, no ke */
+    CHECK(test_script(g, "compute_modify thermo_temp extra/dof 3\n") == GR_OK);
     CHECK(thermo_keyword_value(g, "etotal", &v));
     CHECK_NEAR(v, 0.32, 1e-15);
     CHECK(test_script(g, "compute k all ke\ncompute c all count/type atom\n") == GR_OK);
@@ -263,6 +271,11 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_modify norm perhaps\n", "expected yes or no", 1);
     FX_CHECK_ERROR("thermo_modify temp t\n", "not supported", 1);
     FX_CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp dynamic/dof maybe\n", "yes or no", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp extra/dof x\n", "expected a number", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp bias yes\n", "unknown keyword 'bias'", 1);
+    FX_CHECK_ERROR("compute k all ke\ncompute_modify k extra/dof 1\n", "no settings", 2);
+    FX_CHECK_ERROR("compute_modify nope extra/dof 1\n", "unknown compute ID 'nope'", 1);
 
     /* references are resolved at run setup */
     struct gravel *g = make3();
