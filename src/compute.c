@@ -205,10 +205,11 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     if (!c->peratom_flag)
         gr_error(g, "compute %s (%s) does not produce per-atom values", c->id,
                  c->style->name);
+    int cols = c->size_peratom_cols > 0 ? c->size_peratom_cols : 1;
     int n = g->atoms.n;
     if (n > c->peratom_cap || !c->peratom) {
         int cap = n > 16 ? n : 16;
-        double *p = realloc(c->peratom, (size_t)cap * sizeof(double));
+        double *p = realloc(c->peratom, (size_t)cap * cols * sizeof(double));
         if (!p)
             gr_error(g, "out of memory for compute %s", c->id);
         c->peratom = p;
@@ -216,6 +217,31 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     }
     c->style->peratom(g, c);
     return c->peratom;
+}
+
+void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who)
+{
+    struct compute *c = compute_get(g, id, who);
+    if (!c->peratom_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce per-atom values", who, c->id,
+                 c->style->name);
+    if (index == 0 && c->size_peratom_cols > 0)
+        gr_error(g, "%s: compute %s has %d per-atom columns; use c_%s[N]", who, c->id,
+                 c->size_peratom_cols, c->id);
+    if (index > 0 && c->size_peratom_cols == 0)
+        gr_error(g, "%s: compute %s has one per-atom value; use c_%s", who, c->id, c->id);
+    if (index > c->size_peratom_cols)
+        gr_error(g, "%s: c_%s[%d] is out of range: compute %s has %d per-atom columns", who,
+                 c->id, index, c->id, c->size_peratom_cols);
+}
+
+const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index, int *stride,
+                                  const char *who)
+{
+    compute_peratom_check(g, c->id, index, who);
+    const double *p = compute_peratom(g, c);
+    *stride = c->size_peratom_cols > 0 ? c->size_peratom_cols : 1;
+    return index > 0 ? p + (index - 1) : p;
 }
 
 int compute_parse_ref(const char *ref, char *id, int *index)

@@ -377,6 +377,14 @@ TEST(write_failures)
     CHECK(fx_call(g, do_write, 1, (char *[]){"c"}) == 0);
     char *good = slurp("k.0.txt");
     CHECK(good && strstr(good, "ITEM: ATOMS id c_ka\n2 3.9375\n1 0.125\n"));
+    /* per-atom array columns */
+    CHECK(script(g, "compute pa all property/atom vz diameter\n"
+                    "dump p all custom 1 @/p.txt id c_pa[2] c_pa[1]\n") == GR_OK);
+    CHECK(fx_call(g, do_write, 1, (char *[]){"p"}) == 0);
+    CHECK(fx_call(g, do_run_end, 0, NULL) == 0);
+    char *ps = slurp("p.txt");
+    CHECK(ps && strstr(ps, "ITEM: ATOMS id c_pa[2] c_pa[1]\n2 1.02 0.5\n1 1 0.5\n"));
+    free(ps);
     CHECK(script(g, "uncompute ka\ncompute ka all ke\n") == GR_OK);
     CHECK(fx_call(g, do_write, 1, (char *[]){"c"}) == 1);
     CHECK(strstr(g->err.msg, "does not produce per-atom values") != NULL);
