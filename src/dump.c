@@ -264,6 +264,9 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
             i += 2;
         } else if (strcmp(kw, "binary") == 0) {
             gr_error(g, "binary applies to dump vtk only (dump %s is %s)", d->id, d->style->name);
+        } else if (strcmp(kw, "scale") == 0 || strcmp(kw, "image") == 0) {
+            gr_error(g, "%s applies to dump atom only (dump %s is %s)", kw, d->id,
+                     d->style->name);
         } else {
             gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad, "
                         "first%s", kw, d->id, d->style->name,

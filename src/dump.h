@@ -93,6 +93,9 @@ void dump_run_end(struct gravel *g);
 /* Free every dump, publishing append-mode files (styles_free). */
 void dump_free_all(struct gravel *g);
 
+/* dump custom (and dump atom, built on it): 1 if the dump has field `name`. */
+int dump_custom_has_field(const struct dump *d, const char *name);
+
 /* Helpers for styles (format checks: output_format_fix in thermo.h).
  * Write n doubles / int32 in big-endian order (legacy VTK binary). */
 void dump_write_be_doubles(FILE *fp, const double *v, size_t n);

@@ -8,7 +8,8 @@
  * dump_modify format says otherwise (precedence: format N > format int|float
  * > the word of format line, as LAMMPS).
  * Fields: id type x y z xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
- * mass omegax omegay omegaz tqx tqy tqz, and c_ID / c_ID[N] (a per-atom
+ * mass omegax omegay omegaz tqx tqy tqz, xs ys zs (scaled to the box: (x -
+ * xlo) / Lx), xsu ysu zsu (scaled, unwrapped: xs + ix), and c_ID / c_ID[N] (a per-atom
  * compute's vector or column N of its array). */
 #include <stdlib.h>
 #include <string.h>
@@ -22,12 +23,13 @@
 enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
-    F_COUNT, F_COMPUTE = -1
+    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_COUNT, F_COMPUTE = -1
 };
 
 static const char *const field_names[F_COUNT] = {
     "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
-    "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+    "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
+    "xs", "ys", "zs", "xsu", "ysu", "zsu"};
 
 static int field_is_int(int f)
 {
@@ -94,7 +96,8 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
         if (strncmp(s, "v_", 2) == 0)
             gr_error(g, "dump custom field '%s': atom-style variables are not supported", s);
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
-                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz c_ID c_ID[N])", s);
+                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu "
+                    "c_ID c_ID[N])", s);
     }
 }
 
@@ -241,6 +244,16 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
                 v = a->x[3 * j + dim] + a->image[3 * j + dim] * prd[dim];
                 break;
             }
+            case F_XS: case F_YS: case F_ZS: {
+                int dim = col->field - F_XS;
+                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim];
+                break;
+            }
+            case F_XSU: case F_YSU: case F_ZSU: {
+                int dim = col->field - F_XSU;
+                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim] + a->image[3 * j + dim];
+                break;
+            }
             case F_IX: case F_IY: case F_IZ: iv = a->image[3 * j + col->field - F_IX]; break;
             case F_VX: case F_VY: case F_VZ: v = a->v[3 * j + col->field - F_VX]; break;
             case F_FX: case F_FY: case F_FZ: v = a->f[3 * j + col->field - F_FX]; break;
@@ -262,6 +275,15 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
         }
         fputc('\n', fp);
     }
+}
+
+int dump_custom_has_field(const struct dump *d, const char *name)
+{
+    const struct custom *c = d->data;
+    for (int i = 0; c && i < c->n; i++)
+        if (strcmp(c->col[i].name, name) == 0)
+            return 1;
+    return 0;
 }
 
 const struct dump_style dump_style_custom = {

@@ -55,7 +55,7 @@ run 20
 STATIC_DECK = """units lj
 atom_style sphere
 boundary p p f
-region box block 0 10 0 10 0 10
+region box block -1 9 0 10 0 12
 create_box 2 box
 create_atoms 1 single 5 5 5
 create_atoms 1 single 5.95 5 5
@@ -67,6 +67,9 @@ velocity all set 0.1 0.2 -0.3
 set atom 3 omega 0.5 1 2
 write_dump all custom static.txt id type x y z vx vy vz omegax omegay omegaz radius diameter mass modify sort id
 write_dump all custom static_fmt.txt id x mass modify sort id format float %10.4f
+write_dump all atom static_atom.txt modify sort id
+write_dump all atom static_atom2.txt modify sort id scale no image yes
+write_dump all custom static_scaled.txt id xs ys zs xsu ysu zsu modify sort id
 """
 
 failures = 0
@@ -126,7 +129,8 @@ def static_deck(lmp):
         if g.returncode != 0 or not lmp:
             return
         gfiles = {}
-        for name in ("static.txt", "static_fmt.txt"):
+        for name in ("static.txt", "static_fmt.txt", "static_atom.txt", "static_atom2.txt",
+                     "static_scaled.txt"):
             with open(os.path.join(d, name)) as f:
                 gfiles[name] = f.read()
             os.remove(os.path.join(d, name))

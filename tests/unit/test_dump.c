@@ -422,6 +422,9 @@ TEST(errors)
                    "must convert a floating-point", 2);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt id\ndump_modify 1 format float\n", "needs 2", 2);
     FX_CHECK_ERROR("undump 4\n", "unknown dump ID '4'", 1);
+    FX_CHECK_ERROR("dump 1 all atom 1 f.txt id\n", "takes no arguments", 1);
+    FX_CHECK_ERROR("dump 1 all atom 1 f.txt\ndump_modify 1 scale perhaps\n", "yes or no", 2);
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump_modify 1 image yes\n", "dump atom only", 2);
     FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump 2 all custom 1 f.vtk id\n",
                    "already written by dump 1", 2);
     CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "needs a simulation box", 1);
