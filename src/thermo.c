@@ -51,9 +51,10 @@ static const struct {
     [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
 };
 
-/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press"; a
- * granular engine has no temperature compute, molecular energy or virial, so
- * `one` prints the energies and size it does have. */
+/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". gravel
+ * computes no virial (press), and for granular flows the atom count (pours,
+ * lost atoms), kinetic energy and volume say more than a temperature and
+ * the always-zero epair/emol, so `one` prints those. */
 static const char *const style_one[] = {"step", "atoms", "ke", "pe", "etotal", "vol"};
 static const char *const style_multi[] = {"step", "atoms", "etotal", "ke", "pe", "vol"};
 
