@@ -109,6 +109,12 @@ void dump_free_all(struct gravel *g)
     g->styles.ndump = g->styles.ndump_cap = 0;
 }
 
+void dump_free_pending(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ndump; i++)
+        publish(g, g->styles.dump[i], 0);
+}
+
 void dump_run_end(struct gravel *g)
 {
     for (int i = 0; i < g->styles.ndump; i++)

@@ -90,6 +90,8 @@ int dump_step_all(struct gravel *g);
 int dump_due(struct gravel *g, bigint step);
 /* End of a run: publish append-mode files (rename .tmp over the target). */
 void dump_run_end(struct gravel *g);
+/* The same without raising errors (warnings instead), for error paths. */
+void dump_free_pending(struct gravel *g);
 /* Free every dump, publishing append-mode files (styles_free). */
 void dump_free_all(struct gravel *g);
 

@@ -127,6 +127,14 @@ static void stat_row(struct gravel *g, const char *label, double v)
     gr_print(g, "Histogram: 1 0 0 0 0 0 0 0 0 0\n");
 }
 
+void output_abort(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    progress_end(g);
+    dump_free_pending(g);
+    st->active = 0;
+}
+
 void output_finish(struct gravel *g, const struct run_stats *s)
 {
     struct output_state *st = output_state(g);

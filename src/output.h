@@ -16,6 +16,7 @@
  *    t_other may be 0 (then total minus the other sections is printed);
  *    total_neighbors is the pair count LAMMPS reports (its half list: each
  *    contact pair once); max_overlap_frac is printed as given.
+ *  - a run that stops on an error calls output_abort(g) first.
  *  - styles_free (clear, destroy) must call compute_free_all(g) and
  *    dump_free_all(g) (compute.h, dump.h).
  * g->thermo.lost holds thermo_modify lost (error|warn|ignore) for the core. */
@@ -30,6 +31,10 @@ void output_setup(struct gravel *g);
 int output_due(struct gravel *g, bigint step);
 void output_step(struct gravel *g);
 void output_finish(struct gravel *g, const struct run_stats *st);
+/* A run stopping on an error (before output_finish): erase the progress
+ * line so the error message starts on a clean line, and complete appending
+ * dump files with the snapshots written so far. Never raises. */
+void output_abort(struct gravel *g);
 
 /* Value of a thermo keyword for expressions: step elapsed dt time cpu tpcpu
  * spcpu atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "command.h"
+#include "output.h"
 
 static char dir[64];
 
@@ -247,11 +248,19 @@ TEST(append_scheme)
     s = slurp("a.txt.tmp");
     CHECK(s && count_str(s, "ITEM: TIMESTEP") == 3);
     free(s);
+    /* a run stopped by an error publishes what it wrote (output_abort) */
+    g->step = 30;
+    CHECK(dump_step_all(g) == 1);
+    output_abort(g);
+    CHECK(!exists("a.txt.tmp"));
+    s = slurp("a.txt");
+    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 4 && strstr(s, "ITEM: TIMESTEP\n30\n"));
+    free(s);
     /* undump publishes */
     CHECK(script(g, "undump d\n") == GR_OK);
     CHECK(!exists("a.txt.tmp"));
     s = slurp("a.txt");
-    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 3 && strstr(s, "ITEM: TIMESTEP\n20\n"));
+    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 4 && strstr(s, "ITEM: TIMESTEP\n20\n"));
     free(s);
     CHECK(g->styles.ndump == 0);
     fx_destroy(g);
