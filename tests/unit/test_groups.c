@@ -105,6 +105,9 @@ TEST(set_semantics)
         nz += g->atoms.v[3 * k + 2] == 7;
     CHECK(nz == 16);
     CHECK(g->atoms.image[3 * i + 2] == -2);
+    /* a coordinate set outside a periodic box is wrapped, image updated */
+    CHECK(test_script(g, "set atom 1 x 9.5\n") == GR_OK);
+    CHECK(g->atoms.x[3 * i] == 1.5 && g->atoms.image[3 * i] == 3);
     /* a bad keyword late on the line changes nothing */
     CHECK(test_script(g, "set atom 1 mass 9.0 bogus 1\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "unknown keyword 'bogus'") != NULL);
@@ -124,6 +127,7 @@ TEST(set_errors)
 {
     CHECK_ERROR(CUBE "set atom 1 diameter -1\n", "diameter must not be negative", 5);
     CHECK_ERROR(CUBE "set atom 1 density 0\n", "density must be positive", 5);
+    CHECK_ERROR(CUBE "set atom 1 y 1e12\n", "too far outside the periodic box", 5);
     CHECK_ERROR(CUBE "set atom 1 type 4\n", "atom type must be between 1 and 3", 5);
     CHECK_ERROR(CUBE "set atom 99 mass 1\n", "atom ID 99 is outside 1..64", 5);
     CHECK_ERROR(CUBE "set type 4 mass 1\n", "atom type 4 is outside 1..3", 5);
