@@ -231,6 +231,19 @@ TEST(velocity_set_ramp_zero)
     CHECK(test_script(g, "velocity all scale 2.0\n") == GR_OK);
     CHECK_NEAR(temp(g), 2.0, 1e-12);
     gr_destroy(g);
+    /* a two-atom group (singular inertia): rotation removed, motion along
+     * the axis kept */
+    g = test_engine();
+    CHECK(test_script(g, "region b block 0 10 0 10 0 10 units box\ncreate_box 1 b\n"
+                         "create_atoms 1 single 2 5 5 units box\n"
+                         "create_atoms 1 single 4 5 5 units box\n"
+                         "set atom 1 vx 1.0 vy 1.0\nset atom 2 vx 1.0 vy -1.0\n"
+                         "velocity all zero angular\n") == GR_OK);
+    CHECK_NEAR(g->atoms.v[0], 1.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[1], 0.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[3], 1.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[4], 0.0, 1e-14);
+    gr_destroy(g);
 }
 
 TEST(velocity_errors)
