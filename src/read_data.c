@@ -6,8 +6,8 @@
  * "lo hi xlo xhi" (and y, z; default -0.5 0.5); zero counts of bonds, angles
  * ... are accepted, non-zero ones and triclinic boxes are errors. Then
  * sections, each a keyword line, blank lines, and exactly the expected number
- * of lines: "Atoms" (optionally "Atoms # sphere"): id type diameter density
- * x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
+ * of lines: "Atoms" (optionally "Atoms # sphere", or "# granular" as
+ * LIGGGHTS writes): id type diameter density x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
  * lines; "Masses": type mass, one per type; with `nocoeff`, "Pair Coeffs" and
  * "PairIJ Coeffs" sections are skipped (an error otherwise). `#` starts a
  * comment.
@@ -394,7 +394,9 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: a second Atoms section", r->path, r->lineno);
             if (comment) {
                 char style[32] = "";
-                if (sscanf(comment, " %31s", style) == 1 && strcmp(style, "sphere") != 0)
+                /* LIGGGHTS' atom_style granular has the same columns */
+                if (sscanf(comment, " %31s", style) == 1 && strcmp(style, "sphere") != 0 &&
+                    strcmp(style, "granular") != 0)
                     gr_error(g, "%s:%ld: Atoms are for atom_style %s; gravel reads "
                                 "atom_style sphere",
                              r->path, r->lineno, style);

@@ -210,6 +210,16 @@ TEST(good_small_file)
     CHECK(g->atoms.x[3] == 2 && g->atoms.image[3] == 1);   /* wrapped into the periodic box */
     CHECK(g->atoms.x[2] == 4 && g->atoms.v[3] == 1 && g->atoms.omega[5] == 6);
     gr_destroy(g);
+    /* LIGGGHTS' granular hint has the same columns */
+    const char *gran = tmpfile_with("gran.data", "LIGGGHTS\n\n1 atoms\n1 atom types\n\n"
+                                                 "Atoms # granular\n\n1 1 0.5 2500 0 0 0\n");
+    snprintf(script, sizeof script, "read_data %s\n", gran);
+    g = test_engine();
+    CHECK(test_script(g, script) == GR_OK);
+    CHECK(g->atoms.n == 1 && g->atoms.radius[0] == 0.25);
+    gr_destroy(g);
+    p = tmpfile_with("ok.data", HEAD "1 1 1.0 2.0 1 2 3\n2 1 0 3.0 12 5 5 \n\n"
+                                   "Velocities\n\n2 1 2 3 4 5 6\n1 0 0 0 0 0 0\n");
     /* extra/atom/types and group, as LAMMPS */
     snprintf(script, sizeof script, "read_data %s extra/atom/types 2 group fromfile\n"
              "set atom 1 type 3\n", p);
