@@ -9,6 +9,7 @@
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
+#ifdef PAIR_EVAL
 __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL *v,
                         __global const REAL *omega, __global const REAL *radius,
                         __global const REAL *rmass, __global const int *type,
@@ -94,6 +95,7 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
     vstore3(tsum, i, torque);
 #endif
 }
+#endif /* PAIR_EVAL */
 
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)
