@@ -1,6 +1,7 @@
 /* create_atoms.c - `create_atoms type box | region ID | single x y z |
  * random N seed region-ID` with LAMMPS semantics.
  *
+ * `basis M itype` gives basis atom M of the lattice type itype (box, region).
  * New atoms get atom_style sphere defaults: diameter 1, density 1, so
  * radius 0.5 and mass 4/3 pi 0.5^3 (use `set` to change them).
  * Lattice styles place atoms on the current lattice inside the box, using
@@ -31,17 +32,17 @@ static const double sphere_radius = 0.5;
 #define SPHERE_MASS (4.0 * M_PI / 3.0 * 0.125) /* density 1, diameter 1 */
 
 struct lat_ctx {
-    int type;
+    int basis_type[8];          /* type per basis atom (keyword basis) */
     const struct region *r;
     bigint n;
 };
 
-static void add_lattice_point(struct gravel *g, const double x[3], void *vctx)
+static void add_lattice_point(struct gravel *g, const double x[3], int basis, void *vctx)
 {
     struct lat_ctx *c = vctx;
     if (c->r && !region_match(c->r, x))
         return;
-    atoms_add(g, 0, c->type, x, sphere_radius, SPHERE_MASS);
+    atoms_add(g, 0, c->basis_type[basis], x, sphere_radius, SPHERE_MASS);
     c->n++;
 }
 
@@ -258,6 +259,9 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         gr_error(g, "unknown style '%.32s': expected box, region, single or random", style);
     }
     int lattice_units = 1, remap = 0, maxtry = CA_MAXTRY_DEFAULT, maxtry_set = 0;
+    int basis_type[8], basis_set = 0;
+    for (int m = 0; m < 8; m++)
+        basis_type[m] = type;
     double overlap = 0;
     int overlap_set = 0;
     for (int i = iarg; i < argc; i++) {
@@ -276,7 +280,16 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             maxtry = arg_int_range(g, argv[++i], 1, 1 << 30, "maxtry");
             maxtry_set = 1;
-        } else if (!strcmp(kw, "basis") || !strcmp(kw, "mol") || !strcmp(kw, "var") ||
+        } else if (!strcmp(kw, "basis")) {
+            arg_need(g, argc, i, 2, kw);
+            int nb = g->dom.lat.nbasis;
+            if (nb < 1)
+                gr_error(g, "basis needs a lattice: use the lattice command first");
+            int m = arg_int_range(g, argv[i + 1], 1, nb, "basis atom");
+            basis_type[m - 1] = arg_int_range(g, argv[i + 2], 1, g->atoms.ntypes, "basis type");
+            basis_set = 1;
+            i += 2;
+        } else if (!strcmp(kw, "mol") || !strcmp(kw, "var") ||
                    !strcmp(kw, "set") || !strcmp(kw, "rotate")) {
             gr_error(g, "keyword '%s' is not supported", kw);
         } else {
@@ -287,6 +300,8 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         gr_error(g, "overlap and maxtry apply only to style random");
     if (remap && strcmp(style, "single") != 0)
         gr_error(g, "remap applies only to style single");
+    if (basis_set && strcmp(style, "box") != 0 && strcmp(style, "region") != 0)
+        gr_error(g, "basis applies only to styles box and region");
     bigint created = 0;
     if (!strcmp(style, "box") || !strcmp(style, "region")) {
         double lo[3], hi[3];
@@ -299,7 +314,10 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
                 hi[d] -= 2.0 * eps;
             }
         }
-        struct lat_ctx c = {type, r, 0};
+        struct lat_ctx c;
+        memcpy(c.basis_type, basis_type, sizeof basis_type);
+        c.r = r;
+        c.n = 0;
         if (r && r->bbox)
             lattice_foreach(g, lo, hi, r->bbox_lo, r->bbox_hi, add_lattice_point, &c);
         else

@@ -155,6 +155,18 @@ void domain_unit_scale(const struct gravel *g, int lattice_flag, double scale[3]
         scale[d] = lattice_flag ? g->dom.lat.a[d] : 1.0;
 }
 
+void domain_lattice_to_box(const struct gravel *g, double v[3])
+{
+    for (int d = 0; d < 3; d++)
+        v[d] *= g->dom.lat.a[d];
+}
+
+void domain_box_to_lattice(const struct gravel *g, double v[3])
+{
+    for (int d = 0; d < 3; d++)
+        v[d] /= g->dom.lat.a[d];
+}
+
 int domain_parse_units_kw(struct gravel *g, const char *value)
 {
     if (strcmp(value, "box") == 0)

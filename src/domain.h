@@ -49,6 +49,10 @@ int domain_inside(const struct gravel *g, const double x[3]);
  * zlattice in LAMMPS). lattice_flag 0 (units box) gives factor 1. */
 void domain_unit_scale(const struct gravel *g, int lattice_flag, double scale[3]);
 
+/* Convert a vector in place: lattice units -> box units (times a[d]) and back. */
+void domain_lattice_to_box(const struct gravel *g, double v[3]);
+void domain_box_to_lattice(const struct gravel *g, double v[3]);
+
 /* Parse the value of a `units` keyword: "box" -> 0, "lattice" -> 1. */
 int domain_parse_units_kw(struct gravel *g, const char *value);
 

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_eigen.h>
+
 #include "args.h"
 #include "domain.h"
 #include "error.h"
@@ -172,24 +174,39 @@ void group_inertia(const struct gravel *g, int igroup, const double xcm[3], doub
 
 void group_omega(const double L[3], double I[3][3], double w[3])
 {
-    double det = I[0][0] * I[1][1] * I[2][2] + I[0][1] * I[1][2] * I[2][0] +
-                 I[0][2] * I[1][0] * I[2][1] - I[0][0] * I[1][2] * I[2][1] -
-                 I[0][1] * I[1][0] * I[2][2] - I[2][0] * I[1][1] * I[0][2];
+    /* Solve I w = L in the principal frame of I (GSL symmetric eigen-solver),
+     * dropping principal moments below 1e-10 of the largest: a two-atom or
+     * colinear group cannot rotate about its own axis (LAMMPS does the same
+     * with jacobi3 for a nearly singular I, but with an absolute threshold). */
     w[0] = w[1] = w[2] = 0;
-    if (!(det > 0 || det < 0))
-        return;
-    double inv[3][3];
-    inv[0][0] = I[1][1] * I[2][2] - I[1][2] * I[2][1];
-    inv[0][1] = -(I[0][1] * I[2][2] - I[0][2] * I[2][1]);
-    inv[0][2] = I[0][1] * I[1][2] - I[0][2] * I[1][1];
-    inv[1][0] = -(I[1][0] * I[2][2] - I[1][2] * I[2][0]);
-    inv[1][1] = I[0][0] * I[2][2] - I[0][2] * I[2][0];
-    inv[1][2] = -(I[0][0] * I[1][2] - I[0][2] * I[1][0]);
-    inv[2][0] = I[1][0] * I[2][1] - I[1][1] * I[2][0];
-    inv[2][1] = -(I[0][0] * I[2][1] - I[0][1] * I[2][0]);
-    inv[2][2] = I[0][0] * I[1][1] - I[0][1] * I[1][0];
+    double m[9];
     for (int r = 0; r < 3; r++)
-        w[r] = (inv[r][0] * L[0] + inv[r][1] * L[1] + inv[r][2] * L[2]) / det;
+        for (int c = 0; c < 3; c++)
+            m[3 * r + c] = I[r][c];
+    gsl_matrix_view mv = gsl_matrix_view_array(m, 3, 3);
+    gsl_vector *eval = gsl_vector_alloc(3);
+    gsl_matrix *evec = gsl_matrix_alloc(3, 3);
+    gsl_eigen_symmv_workspace *ws = gsl_eigen_symmv_alloc(3);
+    if (eval && evec && ws && gsl_eigen_symmv(&mv.matrix, eval, evec, ws) == 0) {
+        double imax = 0;
+        for (int k = 0; k < 3; k++)
+            imax = fmax(imax, gsl_vector_get(eval, k));
+        for (int k = 0; k < 3; k++) {
+            double ik = gsl_vector_get(eval, k);
+            if (!(imax > 0) || ik <= 1e-10 * imax)
+                continue;
+            double e[3], le = 0;
+            for (int d = 0; d < 3; d++) {
+                e[d] = gsl_matrix_get(evec, d, k);
+                le += L[d] * e[d];
+            }
+            for (int d = 0; d < 3; d++)
+                w[d] += le / ik * e[d];
+        }
+    }
+    gsl_eigen_symmv_free(ws);
+    gsl_matrix_free(evec);
+    gsl_vector_free(eval);
 }
 
 /* ---- the command ------------------------------------------------------------- */

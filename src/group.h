@@ -31,7 +31,9 @@ double group_ke(const struct gravel *g, int igroup);
 void group_angmom(const struct gravel *g, int igroup, const double xcm[3], double L[3]);
 /* Inertia tensor about xcm (point masses, unwrapped positions). */
 void group_inertia(const struct gravel *g, int igroup, const double xcm[3], double I[3][3]);
-/* Angular velocity from L and I (I^-1 L; 0 if I is singular, as LAMMPS). */
+/* Angular velocity w with I w = L, solved in the principal frame; principal
+ * moments below 1e-10 of the largest (two atoms, a line of atoms) get no
+ * rotation about that axis, as LAMMPS' nearly-singular branch. */
 void group_omega(const double L[3], double I[3][3], double w[3]);
 
 #endif

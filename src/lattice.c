@@ -160,6 +160,6 @@ void lattice_foreach(struct gravel *g, const double lo[3], const double hi[3],
                     if (x[0] < lo[0] || x[0] >= hi[0] || x[1] < lo[1] || x[1] >= hi[1] ||
                         x[2] < lo[2] || x[2] >= hi[2])
                         continue;
-                    fn(g, x, ctx);
+                    fn(g, x, m, ctx);
                 }
 }

@@ -12,9 +12,9 @@
 
 enum lattice_style { LAT_NONE = 0, LAT_SC, LAT_BCC, LAT_FCC, LAT_HCP, LAT_DIAMOND };
 
-/* Called for every lattice point inside [lo, hi) (box units); the callback
- * returns nothing, it may raise errors. */
-typedef void (*lattice_point_fn)(struct gravel *g, const double x[3], void *ctx);
+/* Called for every lattice point inside [lo, hi) (box units) with the index
+ * of its basis atom; it may raise errors. */
+typedef void (*lattice_point_fn)(struct gravel *g, const double x[3], int basis, void *ctx);
 
 /* Visit every lattice point p with lo[d] <= p[d] < hi[d], in k, j, i, basis
  * order (as LAMMPS create_atoms). If rlo/rhi are given, points outside the

@@ -1,12 +1,13 @@
-/* read_data.c - `read_data file [shift dx dy dz] [nocoeff]`: LAMMPS data files
+/* read_data.c - `read_data file [shift dx dy dz] [nocoeff] [extra/atom/types N]
+ * [group ID]`: LAMMPS data files
  * for atom_style sphere, as LAMMPS writes them.
  *
  * Layout: a first (comment) line; header lines "N atoms", "N atom types",
  * "lo hi xlo xhi" (and y, z; default -0.5 0.5); zero counts of bonds, angles
  * ... are accepted, non-zero ones and triclinic boxes are errors. Then
  * sections, each a keyword line, blank lines, and exactly the expected number
- * of lines: "Atoms" (optionally "Atoms # sphere"): id type diameter density
- * x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
+ * of lines: "Atoms" (optionally "Atoms # sphere", or "# granular" as
+ * LIGGGHTS writes): id type diameter density x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
  * lines; "Masses": type mass, one per type; with `nocoeff`, "Pair Coeffs" and
  * "PairIJ Coeffs" sections are skipped (an error otherwise). `#` starts a
  * comment.
@@ -25,6 +26,7 @@
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
+#include "group.h"
 
 #define MAXWORDS 16
 
@@ -38,6 +40,7 @@ struct rd {
     int nw;
     char *w[MAXWORDS];
     int nocoeff;            /* skip Pair Coeffs / PairIJ Coeffs sections */
+    int extra_types;        /* extra/atom/types: types beyond the file's */
     /* tag -> index lookup, built after Atoms */
     int64_t *stag;
     int *sidx;
@@ -216,9 +219,9 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
             gr_error(g, "%s:%ld: atom ID must be positive, got %s", r->path, r->lineno,
                      r->w[0]);
         int64_t type = rd_int(r, r->w[1], "atom type");
-        if (type < 1 || type > a->ntypes)
+        if (type < 1 || type > a->ntypes - r->extra_types)
             gr_error(g, "%s:%ld: atom type %s is outside 1..%d", r->path, r->lineno, r->w[1],
-                     a->ntypes);
+                     a->ntypes - r->extra_types);
         double diam = rd_num(r, r->w[2], "diameter");
         double dens = rd_num(r, r->w[3], "density");
         if (diam < 0)
@@ -378,7 +381,9 @@ static void read_file(struct rd *r, const double shift[3])
         g->dom.hi[d] = hi[d];
     }
     domain_set_initial_box(g);
-    atoms_set_ntypes(g, (int)ntypes);
+    if (ntypes + r->extra_types > 1000000)
+        gr_error(g, "%s: atom types plus extra/atom/types exceed 1000000", r->path);
+    atoms_set_ntypes(g, (int)ntypes + r->extra_types);
     int atoms_read = 0, vel_read = 0, masses_read = 0, warned[3] = {0, 0, 0};
     while (have_section) {
         char sec[64];
@@ -389,7 +394,9 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: a second Atoms section", r->path, r->lineno);
             if (comment) {
                 char style[32] = "";
-                if (sscanf(comment, " %31s", style) == 1 && strcmp(style, "sphere") != 0)
+                /* LIGGGHTS' atom_style granular has the same columns */
+                if (sscanf(comment, " %31s", style) == 1 && strcmp(style, "sphere") != 0 &&
+                    strcmp(style, "granular") != 0)
                     gr_error(g, "%s:%ld: Atoms are for atom_style %s; gravel reads "
                                 "atom_style sphere",
                              r->path, r->lineno, style);
@@ -444,7 +451,8 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     if (g->dom.box_exists)
         gr_error(g, "the simulation box already exists");
     double shift[3] = {0, 0, 0};
-    int nocoeff = 0;
+    int nocoeff = 0, extra_types = 0;
+    const char *group = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "shift")) {
             arg_need(g, argc, i, 3, "shift");
@@ -453,8 +461,15 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
             i += 3;
         } else if (!strcmp(argv[i], "nocoeff")) {
             nocoeff = 1;
+        } else if (!strcmp(argv[i], "extra/atom/types")) {
+            arg_need(g, argc, i, 1, argv[i]);
+            extra_types = arg_int_range(g, argv[++i], 0, 1000000, "extra/atom/types");
+        } else if (!strcmp(argv[i], "group")) {
+            arg_need(g, argc, i, 1, argv[i]);
+            group = argv[++i];
+            if (!strcmp(group, "all"))
+                gr_error(g, "group 'all' always holds every atom");
         } else if (!strcmp(argv[i], "add") || !strcmp(argv[i], "offset") ||
-                   !strcmp(argv[i], "extra/atom/types") || !strcmp(argv[i], "group") ||
                    !strcmp(argv[i], "fix")) {
             gr_error(g, "keyword '%s' is not supported", argv[i]);
         } else {
@@ -466,6 +481,7 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     r.g = g;
     r.path = argv[0];
     r.nocoeff = nocoeff;
+    r.extra_types = extra_types;
     r.fp = fopen(argv[0], "r");
     if (!r.fp)
         gr_error(g, "cannot open data file '%.200s': %s", argv[0], strerror(errno));
@@ -486,6 +502,11 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
         exit(1);
     }
     read_file(&r, shift);
+    if (group) {
+        unsigned bit = group_bit(group_create(g, group));
+        for (int i = 0; i < g->atoms.n; i++)
+            g->atoms.mask[i] |= bit;
+    }
     g->err.jmp = outer;
     fclose(r.fp);
     free(r.line);

@@ -4,7 +4,8 @@
  * LAMMPS semantics for atom_style sphere: `diameter` changes the radius only
  * (not the mass, as LAMMPS 2021 checked); `density` sets the mass from the
  * current radius, mass = 4/3 pi r^3 rho, or mass = rho for a point particle
- * (radius 0); `mass` sets the mass directly. Keywords apply in order. */
+ * (radius 0); `mass` sets the mass directly. Keywords apply in order.
+ * Coordinates set in periodic dimensions are wrapped into the box. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -159,11 +160,19 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **
                     count++;
                 }
         } else if ((kw[0] == 'x' || kw[0] == 'y' || kw[0] == 'z') && kw[1] == '\0') {
+            /* in a periodic dimension the atom is wrapped into the box at
+             * once (image flag updated), as LAMMPS' pbc() does at setup */
             int d = kw[0] - 'x';
             double val = arg_double(g, v[0], kw);
+            double len = g->dom.hi[d] - g->dom.lo[d];
+            if (g->dom.periodic[d] && fabs(val - g->dom.lo[d]) > 1e9 * len)
+                gr_error(g, "%s = %s is too far outside the periodic box to wrap", kw, v[0]);
             for (int i = 0; i < n; i++)
-                if (sel[i])
-                    a->x[3 * i + d] = val, count++;
+                if (sel[i]) {
+                    a->x[3 * i + d] = val;
+                    domain_remap(g, a->x + 3 * i, a->image + 3 * i);
+                    count++;
+                }
         } else if (kw[0] == 'v' && (kw[1] == 'x' || kw[1] == 'y' || kw[1] == 'z') &&
                    kw[2] == '\0') {
             int d = kw[1] - 'x';

@@ -8,8 +8,6 @@
 #include "error.h"
 #include "region.h"
 
-int region_parse_axis(struct gravel *g, const char *s); /* region_cylinder.c */
-
 static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 
 static int cone_parse(struct gravel *g, struct region *r, int n, char **a, const double sc[3])

@@ -13,7 +13,7 @@
 /* the two transverse dimensions of axis d, in LAMMPS order */
 static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 
-/* Parse the axis letter; shared with region cone (declared there too). */
+/* Parse the axis letter; shared with region cone (region.h). */
 int region_parse_axis(struct gravel *g, const char *s)
 {
     if (!strcmp(s, "x"))

@@ -6,8 +6,6 @@
 #include "error.h"
 #include "region.h"
 
-void region_link_subs(struct gravel *g, struct region *r, int n, char **a); /* region_union.c */
-
 static int intersect_parse(struct gravel *g, struct region *r, int n, char **a,
                            const double sc[3])
 {

@@ -7,8 +7,7 @@
 #include "error.h"
 #include "region.h"
 
-/* Resolve the N sub-region IDs of union/intersect (shared with
- * region_intersect.c). */
+/* Resolve the N sub-region IDs of union/intersect (region.h). */
 void region_link_subs(struct gravel *g, struct region *r, int n, char **a)
 {
     int nsub = n - 1;

@@ -92,6 +92,21 @@ TEST(lattice_positions_and_defaults)
     CHECK(corner == 1);
     CHECK(g->atoms.tag[13] == 14);
     gr_destroy(g);
+    /* basis M itype: in bcc the body-center atoms get type 2 */
+    g = test_engine();
+    CHECK(test_script(g, "lattice bcc 1.0\nregion b block 0 3 0 3 0 3\ncreate_box 2 b\n"
+                         "create_atoms 1 box basis 2 2\n") == GR_OK);
+    int n1 = 0, n2 = 0;
+    for (int i = 0; i < g->atoms.n; i++) {
+        double fx = g->atoms.x[3 * i] / g->dom.lat.a[0];
+        int center = fabs(fx - floor(fx) - 0.5) < 1e-9;
+        n1 += g->atoms.type[i] == 1 && !center;
+        n2 += g->atoms.type[i] == 2 && center;
+    }
+    CHECK(n1 == 27 && n2 == 27);
+    gr_destroy(g);
+    CHECK_ERROR("lattice bcc 1.0\nregion b block 0 3 0 3 0 3\ncreate_box 2 b\n"
+                "create_atoms 1 box basis 3 2\n", "basis atom must be between 1 and 2", 4);
 }
 
 TEST(create_single)

@@ -11,12 +11,14 @@
 #include "group.h"
 
 /* The chute file lives beside the repository: ../shared from the repo root
- * (main checkout) or ../../shared from a worktree under wt/. */
+ * (main checkout) or ../../shared from a worktree under wt/ (then the
+ * workspace's absolute path). A missing file fails the chute tests. */
 static const char *chute_path(void)
 {
     static const char *cands[] = {"../shared/peers/chute/data.chute",
-                                  "../../shared/peers/chute/data.chute"};
-    for (int k = 0; k < 2; k++)
+                                  "../../shared/peers/chute/data.chute",
+                                  "/work/shared/peers/chute/data.chute"};
+    for (int k = 0; k < 3; k++)
         if (access(cands[k], R_OK) == 0)
             return cands[k];
     return cands[0];
@@ -147,6 +149,11 @@ TEST(round_trip)
     snprintf(p1, sizeof p1, "%s/rt1.data", tmpdir);
     snprintf(p2, sizeof p2, "%s/rt2.data", tmpdir);
     struct gravel *g = read_chute("p p f");
+    CHECK(g->atoms.n == 32000);
+    if (g->atoms.n != 32000) {
+        gr_destroy(g);
+        return;
+    }
     /* make masses and diameters non-trivial before writing */
     CHECK(test_script(g, "set type 2 diameter 1.3\nset type 2 density 2.7\nmass 1 2.0\n"
                          "set atom 5 diameter 0\nset atom 5 mass 0.25\n") == GR_OK);
@@ -158,7 +165,7 @@ TEST(round_trip)
     CHECK(same_atoms(g, h));
     int i5 = atoms_find_tag(&h->atoms, 5);
     CHECK(i5 >= 0 && h->atoms.radius[i5] == 0 && h->atoms.rmass[i5] == 0.25); /* point particle */
-    CHECK(h->atoms.type_mass[1] == 2.0);
+    CHECK(h->atoms.ntypes == 2 && h->atoms.type_mass[1] == 2.0);
     for (int d = 0; d < 3; d++)
         CHECK(g->dom.lo[d] == h->dom.lo[d] && g->dom.hi[d] == h->dom.hi[d]);
     char *t1 = slurp(p1), *t2 = slurp(p2);
@@ -203,6 +210,29 @@ TEST(good_small_file)
     CHECK(g->atoms.x[3] == 2 && g->atoms.image[3] == 1);   /* wrapped into the periodic box */
     CHECK(g->atoms.x[2] == 4 && g->atoms.v[3] == 1 && g->atoms.omega[5] == 6);
     gr_destroy(g);
+    /* LIGGGHTS' granular hint has the same columns */
+    const char *gran = tmpfile_with("gran.data", "LIGGGHTS\n\n1 atoms\n1 atom types\n\n"
+                                                 "Atoms # granular\n\n1 1 0.5 2500 0 0 0\n");
+    snprintf(script, sizeof script, "read_data %s\n", gran);
+    g = test_engine();
+    CHECK(test_script(g, script) == GR_OK);
+    CHECK(g->atoms.n == 1 && g->atoms.radius[0] == 0.25);
+    gr_destroy(g);
+    p = tmpfile_with("ok.data", HEAD "1 1 1.0 2.0 1 2 3\n2 1 0 3.0 12 5 5 \n\n"
+                                   "Velocities\n\n2 1 2 3 4 5 6\n1 0 0 0 0 0 0\n");
+    /* extra/atom/types and group, as LAMMPS */
+    snprintf(script, sizeof script, "read_data %s extra/atom/types 2 group fromfile\n"
+             "set atom 1 type 3\n", p);
+    g = test_engine();
+    CHECK(test_script(g, script) == GR_OK);
+    CHECK(g->atoms.ntypes == 3 && g->atoms.type[0] == 3);
+    int ig = group_find(g, "fromfile");
+    CHECK(ig > 0 && group_count(g, ig) == 2);
+    gr_destroy(g);
+    snprintf(script, sizeof script, "read_data %s group all\n", p);
+    CHECK_ERROR(script, "group 'all' always holds every atom", 1);
+    snprintf(script, sizeof script, "read_data %s extra/atom/types -1\n", p);
+    CHECK_ERROR(script, "extra/atom/types must be between 0 and 1000000", 1);
 }
 
 TEST(bad_files)

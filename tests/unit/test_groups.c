@@ -105,6 +105,9 @@ TEST(set_semantics)
         nz += g->atoms.v[3 * k + 2] == 7;
     CHECK(nz == 16);
     CHECK(g->atoms.image[3 * i + 2] == -2);
+    /* a coordinate set outside a periodic box is wrapped, image updated */
+    CHECK(test_script(g, "set atom 1 x 9.5\n") == GR_OK);
+    CHECK(g->atoms.x[3 * i] == 1.5 && g->atoms.image[3 * i] == 3);
     /* a bad keyword late on the line changes nothing */
     CHECK(test_script(g, "set atom 1 mass 9.0 bogus 1\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "unknown keyword 'bogus'") != NULL);
@@ -124,6 +127,7 @@ TEST(set_errors)
 {
     CHECK_ERROR(CUBE "set atom 1 diameter -1\n", "diameter must not be negative", 5);
     CHECK_ERROR(CUBE "set atom 1 density 0\n", "density must be positive", 5);
+    CHECK_ERROR(CUBE "set atom 1 y 1e12\n", "too far outside the periodic box", 5);
     CHECK_ERROR(CUBE "set atom 1 type 4\n", "atom type must be between 1 and 3", 5);
     CHECK_ERROR(CUBE "set atom 99 mass 1\n", "atom ID 99 is outside 1..64", 5);
     CHECK_ERROR(CUBE "set type 4 mass 1\n", "atom type 4 is outside 1..3", 5);
@@ -226,6 +230,19 @@ TEST(velocity_set_ramp_zero)
         CHECK_NEAR(L[d], 0, 1e-12);
     CHECK(test_script(g, "velocity all scale 2.0\n") == GR_OK);
     CHECK_NEAR(temp(g), 2.0, 1e-12);
+    gr_destroy(g);
+    /* a two-atom group (singular inertia): rotation removed, motion along
+     * the axis kept */
+    g = test_engine();
+    CHECK(test_script(g, "region b block 0 10 0 10 0 10 units box\ncreate_box 1 b\n"
+                         "create_atoms 1 single 2 5 5 units box\n"
+                         "create_atoms 1 single 4 5 5 units box\n"
+                         "set atom 1 vx 1.0 vy 1.0\nset atom 2 vx 1.0 vy -1.0\n"
+                         "velocity all zero angular\n") == GR_OK);
+    CHECK_NEAR(g->atoms.v[0], 1.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[1], 0.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[3], 1.0, 1e-14);
+    CHECK_NEAR(g->atoms.v[4], 0.0, 1e-14);
     gr_destroy(g);
 }
 

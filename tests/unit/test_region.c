@@ -89,6 +89,23 @@ TEST(lattice_units_inf_edge)
     double a = pow(0.5, 1.0 / 3.0);
     CHECK_NEAR(g->dom.hi[0], 2 * a, 1e-15);
     CHECK(in(g, "c", 0.5, 0.5, -1e6) == 1);
+    double v[3] = {1, 2, 3};
+    domain_lattice_to_box(g, v);
+    CHECK_NEAR(v[2], 3 * a, 1e-15);
+    domain_box_to_lattice(g, v);
+    CHECK_NEAR(v[2], 3, 1e-15);
+    /* remap and minimum image on the periodic box of side 2a */
+    double x[3] = {-0.25 * a, 4.5 * a, a};
+    int im[3] = {0, 0, 0};
+    domain_remap(g, x, im);
+    CHECK_NEAR(x[0], 1.75 * a, 1e-14);
+    CHECK_NEAR(x[1], 0.5 * a, 1e-14);
+    CHECK(im[0] == -1 && im[1] == 2 && im[2] == 0);
+    double del[3] = {1.5 * a, -1.2 * a, 0.1};
+    domain_minimum_image(g, del);
+    CHECK_NEAR(del[0], -0.5 * a, 1e-14);
+    CHECK_NEAR(del[1], 0.8 * a, 1e-14);
+    CHECK_NEAR(domain_volume(g), 8 * a * a * a, 1e-14);
     struct region *e = region_find(g, "e");
     CHECK_NEAR(e->p[1], 2 * a, 1e-15);
     CHECK_NEAR(e->p[4], 0, 0);
