@@ -80,7 +80,7 @@ int output_due(struct gravel *g, bigint step)
     struct output_state *st = output_state(g);
     if (step == g->laststep || step == st->next_thermo)
         return 1;
-    return dump_due(g, step);
+    return dump_due(g, step) || progress_due(g);
 }
 
 void output_step(struct gravel *g)

@@ -10,7 +10,8 @@
  *    writes what is due and calls run_sync_host(g) itself before reading
  *    per-atom data (possibly twice in one step: dumps, then thermo; a second
  *    call in the same step should be cheap). output_due(g, step) says in
- *    advance whether anything will be written at `step`.
+ *    advance whether anything will be written at `step` (or the progress
+ *    line is due); a loop may call output_step only when it says 1.
  *  - at the end call output_finish(g, &stats): it erases the progress line,
  *    completes appending dump files, and prints LAMMPS' footer. run_stats:
  *    t_other may be 0 (then total minus the other sections is printed);
@@ -27,7 +28,8 @@
 #include "run.h"
 
 void output_setup(struct gravel *g);
-/* 1 if a thermo line or a dump is due at this step of the current run. */
+/* 1 if a thermo line or a dump is due at this step of the current run, or
+ * the progress line wants a redraw (at most 4 times a second). */
 int output_due(struct gravel *g, bigint step);
 void output_step(struct gravel *g);
 void output_finish(struct gravel *g, const struct run_stats *st);

@@ -26,6 +26,12 @@ static void format_eta(char *buf, size_t n, double s)
         snprintf(buf, n, "%d:%02d:%02d", (int)(s / 3600), (int)(s / 60) % 60, (int)s % 60);
 }
 
+int progress_due(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    return st->progress_on && output_wall() - st->prog_last_wall >= PROGRESS_PERIOD;
+}
+
 void progress_update(struct gravel *g)
 {
     struct output_state *st = output_state(g);

@@ -429,8 +429,10 @@ TEST(progress_line)
     CHECK(fx_call(g, do_setup, 0, NULL) == 0);
     for (bigint s = 1; s <= 10; s++) {
         g->step = s;
-        if (s == 5)
+        if (s == 5) {
             output_state(g)->prog_last_wall = 0; /* force a redraw now */
+            CHECK(output_due(g, s) == 1);         /* progress alone makes it due */
+        }
         output_step(g);
     }
     struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 1.0};
