@@ -179,11 +179,14 @@ void output_finish(struct gravel *g, const struct run_stats *s)
 
     gr_print(g, "\n");
     stat_row(g, "Nlocal:", s->natoms);
-    stat_row(g, "Neighs:", s->total_neighbors);
-    gr_print(g, "\nTotal # of neighbors = %.8g\n", s->total_neighbors);
+    /* gravel's lists are full (each pair twice); LAMMPS reports its half
+     * list, each pair once: print pairs so the numbers compare */
+    double pairs = s->total_neighbors / 2;
+    stat_row(g, "Neighs:", pairs);
+    gr_print(g, "\nTotal # of neighbors = %.8g\n", pairs);
     if (s->natoms > 0) {
         char ave[64];
-        showpoint(ave, sizeof ave, 0, 8, s->total_neighbors / s->natoms);
+        showpoint(ave, sizeof ave, 0, 8, pairs / s->natoms);
         gr_print(g, "Ave neighs/atom = %s\n", ave);
     }
     gr_print(g, "Neighbor list builds = %lld\n", (long long)s->nbuilds);

@@ -15,8 +15,9 @@
  *  - at the end call output_finish(g, &stats): it erases the progress line,
  *    completes appending dump files, and prints LAMMPS' footer. run_stats:
  *    t_other may be 0 (then total minus the other sections is printed);
- *    total_neighbors is the pair count LAMMPS reports (its half list: each
- *    contact pair once); max_overlap_frac is printed as given.
+ *    total_neighbors is the number of entries in gravel's full list (each
+ *    pair twice): the footer prints pairs, like LAMMPS' half list;
+ *    max_overlap_frac is printed as given.
  *  - a run that stops on an error calls output_abort(g) first.
  *  - styles_free (clear, destroy) must call compute_free_all(g) and
  *    dump_free_all(g) (compute.h, dump.h).

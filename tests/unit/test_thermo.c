@@ -324,7 +324,7 @@ TEST(schedule_and_footer)
     }
     struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 2.0, .t_pair = 1.0,
                            .t_neigh = 0.25, .t_modify = 0.25, .t_output = 0.25,
-                           .nbuilds = 3, .ndanger = 0, .total_neighbors = 6,
+                           .nbuilds = 3, .ndanger = 0, .total_neighbors = 12,
                            .max_overlap_frac = 0.0125};
     output_finish(g, &st);
     char *out = fx_capture_end(g, &cap);
@@ -381,7 +381,7 @@ TEST(schedule_and_footer)
     struct run_stats chute = {.nsteps = 100, .natoms = 32000, .t_total = 0.222894,
                               .t_pair = 0.12176, .t_neigh = 0.025657, .t_output = 0.00020322,
                               .t_modify = 0.051746, .t_other = 0.01368, .nbuilds = 2,
-                              .total_neighbors = 115133};
+                              .total_neighbors = 2 * 115133};
     g->dt = 0.0001;
     output_finish(g, &chute);
     out = fx_capture_end(g, &cap);
