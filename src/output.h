@@ -40,7 +40,7 @@ void output_finish(struct gravel *g, const struct run_stats *st);
 void output_abort(struct gravel *g);
 
 /* Value of a thermo keyword for expressions: step elapsed dt time cpu tpcpu
- * spcpu atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair
+ * spcpu cpuremain atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair
  * emol, c_ID, c_ID[N] (normalized like thermo output with norm yes) and
  * v_name. Returns 0 when `name` is none of these (or names no existing
  * compute/variable); raises an error when c_ID exists but has no such value. */

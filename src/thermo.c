@@ -28,7 +28,7 @@ enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
-    KW_TEMP, KW_EPAIR, KW_EMOL, KW_COUNT
+    KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_COUNT
 };
 #define KIND_COMPUTE (-1)
 #define KIND_VARIABLE (-2)
@@ -49,6 +49,7 @@ static const struct {
     [KW_YHI] = {"yhi", "Yhi", V_FLOAT},         [KW_ZLO] = {"zlo", "Zlo", V_FLOAT},
     [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
     [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
+    [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT},
 };
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". gravel
@@ -248,7 +249,8 @@ static void check_keyword(struct gravel *g, const char *s)
     if (strcmp(s, "press") == 0)
         gr_error(g, "'press' is not available: gravel's contact models compute no virial");
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
-                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair emol c_ID c_ID[N] v_name)", s);
+                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair emol cpuremain c_ID c_ID[N] "
+                "v_name)", s);
 }
 
 /* A new thermo_style drops thermo_modify settings, as in LAMMPS. */
@@ -573,6 +575,12 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_DT: return g->dt;
     case KW_TIME: return g->time;
     case KW_CPU: return clock_now(g);
+    case KW_CPUREMAIN: {
+        /* LAMMPS: wall time left, extrapolated from the run so far */
+        double cpu = clock_now(g);
+        bigint done = g->step - g->firststep, left = g->laststep - g->step;
+        return done > 0 && left > 0 ? cpu * (double)left / (double)done : 0.0;
+    }
     case KW_TPCPU: {
         double cpu = clock_now(g), v = 0.0;
         if (!st->firstflag) {
