@@ -49,6 +49,10 @@ dump_modify d sort id
 run 100
 thermo_modify norm no
 run 20
+thermo_modify format line "%6d %4d %10.4f %g %12.5e %8.3f %g %g %g %g" format 3 %14.6e
+run 10
+thermo_modify format none line multi
+run 10
 """
 
 # No run: only state commands and write_dump (works before the core lands).
@@ -87,7 +91,7 @@ def thermo_blocks(text):
     blocks = []
     lines = text.split("\n")
     for i, line in enumerate(lines):
-        if line.startswith("Step "):
+        if line.startswith("Step ") and "=" not in line:
             rows = []
             for row in lines[i + 1:]:
                 if not re.match(r"^\s+-?\d", row):
@@ -95,6 +99,25 @@ def thermo_blocks(text):
                 rows.append(row)
             blocks.append((line, rows))
     return blocks
+
+
+def multi_blocks(text):
+    """[(step, [(key, value)], layout)] of LAMMPS multi-line thermo blocks."""
+    out = []
+    lines = text.split("\n")
+    for i, line in enumerate(lines):
+        m = re.match(r"^-{16} Step +(\d+) ----- CPU = +[\d.]+ \(sec\) -{16}$", line)
+        if not m:
+            continue
+        pairs, layout = [], []
+        for row in lines[i + 1:]:
+            found = re.findall(r"(\S+) += +(\S+) ", row + " ")
+            if not found or not re.match(r"^\S+ += ", row):
+                break
+            pairs += found
+            layout.append(re.sub(r"\S", "x", row))
+        out.append((int(m.group(1)), pairs, layout))
+    return out
 
 
 def same_number(a, b, rel=1e-7):
@@ -178,7 +201,7 @@ def main():
         if r.returncode != 0:
             return 1
         gb, lb = thermo_blocks(g.stdout), thermo_blocks(r.stdout)
-        report("thermo_runs", len(gb) == 2 and len(lb) == 2, "%d vs %d" % (len(gb), len(lb)))
+        report("thermo_runs", len(gb) == 3 and len(lb) == 3, "%d vs %d" % (len(gb), len(lb)))
         for k, ((gh, grows), (lh, lrows)) in enumerate(zip(gb, lb)):
             report("thermo_header_%d" % k, gh == lh, "%r != %r" % (gh, lh))
             report("thermo_rows_%d" % k, len(grows) == len(lrows), "%d vs %d" % (len(grows),
@@ -190,6 +213,15 @@ def main():
                 report("thermo_values_%d_step%s" % (k, step),
                        all(same_number(a, b) for a, b in zip(gr.split(), lr.split())),
                        "\n%r\n%r" % (gr, lr))
+        gm, lm = multi_blocks(g.stdout), multi_blocks(r.stdout)
+        report("thermo_multi_blocks", [s for s, _, _ in gm] == [s for s, _, _ in lm] == [130, 140],
+               "%s vs %s" % ([s for s, _, _ in gm], [s for s, _, _ in lm]))
+        for (gs, gp, gl), (ls, lp, ll) in zip(gm, lm):
+            report("thermo_multi_layout_step%d" % ls, gl == ll, "\n%s\n%s" % (gl, ll))
+            report("thermo_multi_values_step%d" % ls,
+                   [k for k, _ in gp] == [k for k, _ in lp] and
+                   all(same_number(a, b, 1e-4) for (_, a), (_, b) in zip(gp, lp)),
+                   "\n%s\n%s" % (gp, lp))
         # footer lines in LAMMPS' layout
         for pat in (r"Loop time of \S+ on 1 procs for 100 steps with 3 atoms",
                     r"Performance: [\d.]+ tau/day, [\d.]+ timesteps/s",
