@@ -199,6 +199,18 @@ const char *output_format_fix(const char *f, int want_int, char *out)
 
 /* ---- columns ------------------------------------------------------------------- */
 
+/* LAMMPS' implicit computes thermo_temp and thermo_pe, referenced as
+ * c_thermo_temp / c_thermo_pe when no compute of that ID was defined: the
+ * keyword they stand for, else -1. */
+static int implicit_compute(struct gravel *g, const char *s)
+{
+    if (strcmp(s, "c_thermo_temp") == 0 && !compute_find(g, "thermo_temp"))
+        return KW_TEMP;
+    if (strcmp(s, "c_thermo_pe") == 0 && !compute_find(g, "thermo_pe"))
+        return KW_PE;
+    return -1;
+}
+
 static int keyword_index(const char *s)
 {
     for (int k = 0; k < KW_COUNT; k++)
@@ -444,6 +456,8 @@ void thermo_init(struct gravel *g)
         int k = keyword_index(s);
         if (k >= 0) {
             st->kind[i] = k;
+        } else if ((k = implicit_compute(g, s)) >= 0) {
+            st->kind[i] = k;
         } else if (strncmp(s, "c_", 2) == 0) {
             compute_ref_check(g, s, "thermo_style");
             st->kind[i] = KIND_COMPUTE;
@@ -642,6 +656,14 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         *out = isint ? (double)iv : v;
         return 1;
     }
+    if ((k = implicit_compute(g, name)) >= 0) {
+        bigint iv;
+        int isint;
+        if (k == KW_TEMP)
+            run_sync_host(g);
+        *out = keyword_value(g, k, &iv, &isint);
+        return 1;
+    }
     if (strncmp(name, "c_", 2) == 0) {
         char id[GR_NAMELEN];
         int index;
@@ -663,7 +685,8 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
 static const char *column_name(struct gravel *g, int i)
 {
     int k = output_state(g)->kind[i];
-    return k >= 0 ? keywords[k].header : g->thermo.col[i];
+    const char *col = g->thermo.col[i];
+    return k >= 0 && strncmp(col, "c_", 2) != 0 ? keywords[k].header : col;
 }
 
 const char *thermo_header_text(struct gravel *g)

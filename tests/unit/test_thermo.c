@@ -244,6 +244,14 @@ TEST(keyword_values)
     CHECK_NEAR(v, 0.32, 1e-15); /* extensive: normalized with norm yes */
     CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 1.0);
     CHECK(!thermo_keyword_value(g, "c_nope", &v));
+    /* LAMMPS' implicit computes */
+    CHECK(thermo_keyword_value(g, "c_thermo_temp", &v));
+    CHECK_NEAR(v, 0.32, 1e-15);
+    CHECK(thermo_keyword_value(g, "c_thermo_pe", &v) && v == 0.0);
+    CHECK(test_script(g, "thermo_style custom step c_thermo_temp c_thermo_pe\n") == GR_OK);
+    CHECK(fx_call(g, do_init, 0, NULL) == 0);
+    CHECK(strcmp(thermo_header_text(g), "Step c_thermo_temp c_thermo_pe \n") == 0);
+    CHECK(strcmp(thermo_line_text(g), "      42         0.32            0 \n") == 0);
     CHECK(!thermo_keyword_value(g, "bogus", &v));
     CHECK(test_script(g, "thermo_modify norm no\n") == GR_OK);
     gr_unit_defaults(g); /* a later `units lj` does not undo the user's choice */
