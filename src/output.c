@@ -135,16 +135,30 @@ void output_abort(struct gravel *g)
     st->active = 0;
 }
 
-void output_finish(struct gravel *g, const struct run_stats *s)
+/* Housekeeping at the end of a run and the "Loop time" line. */
+static void finish_common(struct gravel *g, const struct run_stats *s)
 {
     struct output_state *st = output_state(g);
     progress_end(g);
     dump_run_end(g);
     st->active = 0;
-
-    double t = s->t_total;
-    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", t,
+    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", s->t_total,
              (long long)s->nsteps, s->natoms);
+}
+
+void output_finish_brief(struct gravel *g, const struct run_stats *s)
+{
+    finish_common(g, s);
+    if (g->screen)
+        fflush(g->screen);
+    if (g->logfile)
+        fflush(g->logfile);
+}
+
+void output_finish(struct gravel *g, const struct run_stats *s)
+{
+    finish_common(g, s);
+    double t = s->t_total;
     if (s->nsteps > 0 && t > 0) {
         double step_s = (double)s->nsteps / t;
         double atom_steps = step_s * s->natoms; /* Cundall number */

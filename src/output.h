@@ -34,6 +34,9 @@ void output_setup(struct gravel *g);
 int output_due(struct gravel *g, bigint step);
 void output_step(struct gravel *g);
 void output_finish(struct gravel *g, const struct run_stats *st);
+/* `run N post no`: the same housekeeping, and only the "Loop time" line of
+ * the footer (LAMMPS prints nothing more with post no). */
+void output_finish_brief(struct gravel *g, const struct run_stats *st);
 /* A run stopping on an error (before output_finish): erase the progress
  * line so the error message starts on a clean line, and complete appending
  * dump files with the snapshots written so far. Never raises. */

@@ -410,6 +410,14 @@ TEST(schedule_and_footer)
                              "Neighbor list builds = 2\nDangerous builds = 0\n"));
     free(out);
 
+    /* run ... post no: only the loop line, as lmp */
+    fx_capture_begin(g, &cap);
+    output_finish_brief(g, &chute);
+    out = fx_capture_end(g, &cap);
+    CHECK(out && strcmp(out, "Loop time of 0.222894 on 1 procs for 100 steps with 32000 atoms\n"
+                             "\n") == 0);
+    free(out);
+
     /* Performance in si units: simulated seconds per day, Matom-step/s */
     g->dom.units = UNITS_SI;
     g->dt = 1e-6;
