@@ -138,6 +138,8 @@ TEST(head_on_hooke_closed_form)
     gr_destroy(g);
 }
 
+#define BOX "atom_style sphere\nregion box block 0 1 0 1 0 1\ncreate_box 1 box\n"
+
 TEST(gran_arguments)
 {
     struct gravel *g = test_engine();
@@ -165,16 +167,16 @@ TEST(gran_arguments)
     CHECK_ERROR("pair_style gran/hooke 1 NULL 3 NULL 0.5 1 limit\n", "limit_damping", 1);
     CHECK_ERROR("pair_style gran/hooke -1 NULL 3 NULL 0.5 1\n", "Kn", 1);
     CHECK_ERROR("pair_style gran/hook 1 NULL 3 NULL 0.5 1\n", "unknown pair style", 1);
-    CHECK_ERROR("pair_coeff * *\n", "before pair_style", 1);
+    CHECK_ERROR(BOX "pair_coeff * *\n", "before pair_style", 4);
 }
 
 TEST(fix_errors)
 {
-    CHECK_ERROR("fix 1 all gravity 1.0 sideways 3\n", "unknown fix gravity style", 1);
-    CHECK_ERROR("fix 1 all nosuchfix\n", "unknown fix style", 1);
-    CHECK_ERROR("fix 1 all nve extra\n", "takes no arguments", 1);
+    CHECK_ERROR(BOX "fix 1 all gravity 1.0 sideways 3\n", "unknown fix gravity style", 4);
+    CHECK_ERROR(BOX "fix 1 all nosuchfix\n", "unknown fix style", 4);
+    CHECK_ERROR(BOX "fix 1 all nve extra\n", "takes no arguments", 4);
     CHECK_ERROR("unfix 7\n", "could not find fix ID", 1);
-    CHECK_ERROR("fix 1 nogroup nve\n", "group", 1);
+    CHECK_ERROR(BOX "fix 1 nogroup nve\n", "group", 4);
 }
 
 /* fix gravity chute 26: the direction LAMMPS uses (sin 26, 0, -cos 26). */
@@ -242,8 +244,8 @@ TEST(chute_step100_matches_lammps)
     fclose(fp);
     CHECK(g->atoms.n == 32000);
     /* shrink-wrap margin as read_data sets it, then the initial 's' face */
-    double small = 1e-4 * (hi[2] - lo[2]);
-    g->dom.hi[2] += small;
+    g->dom.small[2] = 1e-4 * (hi[2] - lo[2]);
+    g->dom.hi[2] += g->dom.small[2];
     int bottom = fx_group(g, "bottom"), active = fx_group(g, "active");
     for (int i = 0; i < g->atoms.n; i++)
         g->atoms.mask[i] |= g->atoms.type[i] == 2 ? 1u << bottom : 1u << active;
@@ -270,6 +272,8 @@ TEST(chute_step100_matches_lammps)
     double vol = (g->dom.hi[0] - g->dom.lo[0]) * (g->dom.hi[1] - g->dom.lo[1]) *
                  (g->dom.hi[2] - g->dom.lo[2]);
     printf("  volume %.8g (LAMMPS 29834.707)\n", vol);
+    snprintf(buf, sizeof buf, "%.8g", vol);
+    CHECK(strcmp(buf, "29834.707") == 0);
     CHECK(g->step == 100);
     gr_destroy(g);
 }
