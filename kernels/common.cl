@@ -1,7 +1,47 @@
-/* common.cl - types shared by every kernel. REAL is float or double (-D REAL=...). */
+/* common.cl - types shared by every kernel.
+ *
+ * Build options (set by the engine): REAL=float|double (with USE_DOUBLE for
+ * double), HAS_ROTATION (omega/torque arrays exist), HAS_HISTORY (per-contact
+ * shear history), PAIR_EVAL=<ident>_eval (the active pair evaluator).
+ * Contraction of a*b+c into fma is switched off so that results match the
+ * host compilers LAMMPS is built with and the pair terms stay exactly
+ * antisymmetric. */
 #ifndef REAL
 #define REAL double
+#define USE_DOUBLE 1
 #endif
 #if defined(USE_DOUBLE)
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
+#pragma OPENCL FP_CONTRACT OFF
+
+#define REAL3 CAT3(REAL)
+#define CAT3(t) CAT3_(t)
+#define CAT3_(t) t##3
+
+/* One contact between particle i and particle (or wall) j, as the pair
+ * evaluators see it. Sign convention: del = x_i - x_j, vr = v_i - v_j. */
+struct contact {
+    REAL3 del;          /* x_i - x_j (minimum image) */
+    REAL rsq;           /* |del|^2 */
+    REAL radi, radj;    /* radii (radj = 0 for a flat wall) */
+    REAL radsum;        /* radi + radj */
+    REAL reff;          /* radi radj / radsum (radi for a wall) */
+    REAL3 vr;           /* v_i - v_j */
+    REAL3 omi, omj;     /* angular velocities (omj = 0 for a wall) */
+    REAL meff;          /* effective mass (LAMMPS: frozen partner -> other mass) */
+    REAL dt;            /* time step */
+    int shearupdate;    /* 0 during setup: history is not advanced */
+};
+
+/* Minimum image of one component for a periodic length L (0 = not periodic). */
+static inline REAL min_image(REAL d, REAL L)
+{
+    if (L > (REAL)0) {
+        if (d > (REAL)0.5 * L)
+            d -= L;
+        else if (d < (REAL)-0.5 * L)
+            d += L;
+    }
+    return d;
+}

@@ -1,4 +1,4 @@
-/* kernel_sources.h - the kernels/*.cl files, embedded at build time by
+/* kernel_sources.h - the kernels/<name>.cl files, embedded at build time by
  * tools/embed.c; the table ends with a NULL name. */
 #ifndef GR_KERNEL_SOURCES_H
 #define GR_KERNEL_SOURCES_H

@@ -1,12 +1,325 @@
-/* run.c - PLACEHOLDER: the run loop lands with the OpenCL core. */
+/* run.c - `run` and `reset_timestep`: the Verlet loop on the device.
+ *
+ * Order per step (LAMMPS Verlet::run): initial_integrate fixes -> neighbor
+ * decision (rebuild with pbc, shrink-wrap, re-sort) -> pair forces (the pair
+ * kernel also clears f and torque) -> post_force fixes -> final_integrate
+ * fixes -> end_of_step fixes -> output. Setup (Verlet::setup) rebuilds the
+ * list and computes the step-0 forces with the history frozen
+ * (shearupdate = 0), then calls post_force of every fix.
+ *
+ * Each section ends with a device synchronization so the timing breakdown
+ * attributes device time to the section that queued it. */
 #include "run.h"
 
-void run_sync_host(struct gravel *g)
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "args.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "neighbor.h"
+#include "output.h"
+#include "pair.h"
+
+static double wall(void)
 {
-    (void)g;
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-void engine_destroy(struct gravel *g)
+/* Pack and upload the per-type-pair parameters; create the pair kernels. */
+static void pair_init(struct gravel *g)
 {
-    (void)g;
+    struct engine *e = g->eng;
+    const struct pair *p = g->styles.pair;
+    e->k_clear = eng_kernel(g, "force_clear");
+    e->k_pair = NULL;
+    if (!p)
+        return;
+    if (!p->coeff_set)
+        gr_error(g, "all pair coeffs are not set (pair_coeff * * is missing for pair style %s)",
+                 p->style->name);
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1, np = p->style->nparam;
+    double *par = gr_calloc(g, (size_t)nt * nt * np, sizeof(double));
+    for (int i = 1; i <= nt; i++)
+        for (int j = 1; j <= nt; j++)
+            p->style->pack(p, i, j, par + ((size_t)(i - 1) * nt + (j - 1)) * np);
+    if (e->pair_param)
+        clReleaseMemObject(e->pair_param);
+    e->pair_param = NULL;
+    e->pair_param = eng_alloc(g, (size_t)nt * nt * np * e->rsz, "pair parameters");
+    struct gravel *gg = g;
+    eng_write_reals(gg, e->pair_param, (size_t)nt * nt * np, par);
+    free(par);
+    e->k_pair = eng_kernel(g, "pair_loop");
+}
+
+/* Force computation: pair (or clear), then every post_force fix. */
+static void compute_forces(struct gravel *g, unsigned freezebit, double *t_pair,
+                           double *t_modify)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *a = &e->a;
+    double t0 = wall();
+    if (e->k_pair) {
+        const struct nbr_list *l = nbr_list(g);
+        cl_kernel k = e->k_pair;
+        int i = 0;
+        eng_arg_int(g, k, i++, a->n);
+        eng_arg_mem(g, k, i++, a->x);
+        eng_arg_mem(g, k, i++, a->v);
+        eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
+        eng_arg_mem(g, k, i++, a->radius);
+        eng_arg_mem(g, k, i++, a->rmass);
+        eng_arg_mem(g, k, i++, a->type);
+        eng_arg_mem(g, k, i++, a->mask);
+        eng_arg_mem(g, k, i++, l->nlist);
+        eng_arg_mem(g, k, i++, l->ncount);
+        eng_arg_int(g, k, i++, l->maxn);
+        eng_arg_mem(g, k, i++, e->history ? l->shear : l->nlist);
+        eng_arg_mem(g, k, i++, e->pair_param);
+        eng_arg_int(g, k, i++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
+        eng_arg_int(g, k, i++, g->styles.pair->style->nparam);
+        eng_arg_uint(g, k, i++, freezebit);
+        eng_arg_real(g, k, i++, g->dt);
+        eng_arg_int(g, k, i++, e->setup ? 0 : 1);
+        for (int q = 0; q < 3; q++)
+            eng_arg_real(g, k, i++, l->L[q]);
+        eng_arg_mem(g, k, i++, a->f);
+        eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
+        eng_launch(g, k, (size_t)a->n);
+    } else {
+        eng_arg_int(g, e->k_clear, 0, a->n);
+        eng_arg_mem(g, e->k_clear, 1, a->f);
+        eng_arg_mem(g, e->k_clear, 2, e->rotation ? a->torque : a->f);
+        eng_launch(g, e->k_clear, (size_t)a->n);
+    }
+    eng_finish(g);
+    double t1 = wall();
+    *t_pair += t1 - t0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if ((f->hooks & HOOK_POST_FORCE) && f->style->post_force)
+            f->style->post_force(g, f);
+    }
+    eng_finish(g);
+    *t_modify += wall() - t1;
+}
+
+static void run_hook(struct gravel *g, unsigned hook)
+{
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!(f->hooks & hook))
+            continue;
+        void (*fn)(struct gravel *, struct fix *) =
+            hook == HOOK_INITIAL_INTEGRATE ? f->style->initial_integrate
+            : hook == HOOK_FINAL_INTEGRATE ? f->style->final_integrate
+            : hook == HOOK_END_OF_STEP     ? f->style->end_of_step
+                                           : f->style->post_force;
+        if (fn)
+            fn(g, f);
+    }
+}
+
+/* Log the collision time of the contact model against the time step. */
+static void timestep_report(struct gravel *g)
+{
+    const struct pair *p = g->styles.pair;
+    if (!p || !p->style->collision_time || g->atoms.n == 0)
+        return;
+    double m = INFINITY, r = 0, vmax = 0;
+    for (int i = 0; i < g->atoms.n; i++) {
+        if (g->atoms.rmass[i] < m) {
+            m = g->atoms.rmass[i];
+            r = g->atoms.radius[i];
+        }
+        for (int d = 0; d < 3; d++)
+            vmax = fmax(vmax, fabs(g->atoms.v[3 * i + d]));
+    }
+    double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
+    if (!isfinite(tc)) {
+        gr_print(g, "Contact model %s: overdamped or zero stiffness, no collision time\n",
+                 p->style->name);
+        return;
+    }
+    double steps = tc / g->dt;
+    gr_print(g, "Contact model %s: collision time %.4g = %.1f steps of %g (lightest particle)\n",
+             p->style->name, tc, steps, g->dt);
+    if (steps < 10)
+        gr_warn(g, "time step %g resolves a %s collision with only %.1f steps (at least ~10 "
+                   "are needed for accuracy)", g->dt, p->style->name, steps);
+}
+
+static void check_atoms(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->rmass[i] > 0) || !(a->radius[i] > 0))
+            gr_error(g, "atom %lld has radius %g and mass %g: granular runs need positive "
+                        "radius and mass (set diameter/density or mass)",
+                     (long long)a->tag[i], a->radius[i], a->rmass[i]);
+        if (a->type[i] < 1 || a->type[i] > a->ntypes)
+            gr_error(g, "atom %lld has type %d outside 1..%d", (long long)a->tag[i], a->type[i],
+                     a->ntypes);
+    }
+}
+
+/* The whole run: setup, loop, footer. */
+static void run_steps(struct gravel *g, bigint nsteps)
+{
+    check_atoms(g);
+    eng_prepare(g);
+    struct engine *e = g->eng;
+    e->active = 0;
+    eng_upload(g);
+    memset(&e->st, 0, sizeof e->st);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->style->init)
+            f->style->init(g, f);
+    }
+    /* fixes may have declared per-atom state in init: allocate it */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->peratom_bytes && (!f->peratom || f->peratom_cap < (size_t)e->cap)) {
+            if (f->peratom)
+                clReleaseMemObject(f->peratom);
+            if (f->peratom_tmp)
+                clReleaseMemObject(f->peratom_tmp);
+            f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+            f->peratom_tmp =
+                eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+            f->peratom_cap = (size_t)e->cap;
+            eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
+        }
+    }
+    pair_init(g);
+    nbr_setup(g);
+    struct fix *fz = fix_find_style(g, "freeze");
+    unsigned freezebit = fz ? fz->groupbit : 0;
+    timestep_report(g);
+
+    g->firststep = g->step;
+    g->laststep = g->step + nsteps;
+    double tp = 0, tn = 0, tm = 0, to = 0;
+    /* setup: list, step-0 forces without history update, post_force fixes */
+    e->setup = 1;
+    nbr_rebuild(g);
+    e->st.nbuilds = 0;
+    compute_forces(g, freezebit, &tp, &tm);
+    e->setup = 0;
+    double maxov = nbr_max_overlap(g);
+    output_setup(g);
+    tp = tn = tm = to = 0;
+    double t0 = wall();
+    for (bigint s = 0; s < nsteps; s++) {
+        g->step++;
+        double a0 = wall();
+        run_hook(g, HOOK_INITIAL_INTEGRATE);
+        double a1 = wall();
+        if (nbr_decide(g))
+            nbr_rebuild(g);
+        eng_finish(g);
+        double a2 = wall();
+        tm += a1 - a0;
+        tn += a2 - a1;
+        compute_forces(g, freezebit, &tp, &tm);
+        double b0 = wall();
+        run_hook(g, HOOK_FINAL_INTEGRATE);
+        run_hook(g, HOOK_END_OF_STEP);
+        eng_finish(g);
+        double b1 = wall();
+        tm += b1 - b0;
+        g->time += g->dt;
+        if (output_due(g, g->step)) {
+            double ov = nbr_max_overlap(g);
+            if (ov > maxov)
+                maxov = ov;
+            output_step(g);
+        }
+        to += wall() - b1;
+    }
+    double ttot = wall() - t0;
+    run_sync_host(g);
+    struct run_stats st = e->st;
+    st.nsteps = nsteps;
+    st.natoms = e->a.n;
+    st.t_total = ttot;
+    st.t_pair = tp;
+    st.t_neigh = tn;
+    st.t_modify = tm;
+    st.t_output = to;
+    st.t_other = ttot - tp - tn - tm - to;
+    if (st.t_other < 0)
+        st.t_other = 0;
+    st.total_neighbors = nbr_total(g);
+    st.max_overlap_frac = maxov;
+    e->active = 0;
+    output_finish(g, &st);
+}
+
+/* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no] */
+void cmd_run(struct gravel *g, int argc, char **argv)
+{
+    bigint n = arg_bigint(g, argv[0], "number of steps");
+    int upto = 0;
+    bigint start = -1, stop = -1;
+    int have_start = 0, have_stop = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "upto")) {
+            upto = 1;
+        } else if (!strcmp(argv[i], "start")) {
+            arg_need(g, argc, i, 1, "start");
+            start = arg_bigint(g, argv[++i], "start step");
+            have_start = 1;
+        } else if (!strcmp(argv[i], "stop")) {
+            arg_need(g, argc, i, 1, "stop");
+            stop = arg_bigint(g, argv[++i], "stop step");
+            have_stop = 1;
+        } else if (!strcmp(argv[i], "pre") || !strcmp(argv[i], "post")) {
+            arg_need(g, argc, i, 1, argv[i]);
+            (void)arg_yesno(g, argv[i + 1], argv[i]);
+            i++;
+        } else if (!strcmp(argv[i], "every")) {
+            gr_error(g, "run keyword 'every' is not supported");
+        } else {
+            gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post)",
+                     argv[i]);
+        }
+    }
+    if (upto) {
+        n -= g->step;
+        if (n < 0)
+            gr_error(g, "run upto %lld: the current step %lld is already past it",
+                     (long long)(n + g->step), (long long)g->step);
+    }
+    if (n < 0)
+        gr_error(g, "number of steps must be >= 0, got %lld", (long long)n);
+    if (g->step + n > (bigint)1 << 62)
+        gr_error(g, "too many timesteps");
+    if (have_start && start > g->step)
+        gr_error(g, "run start %lld is after the first step %lld of the run", (long long)start,
+                 (long long)g->step);
+    if (have_stop && stop < g->step + n)
+        gr_error(g, "run stop %lld is before the last step %lld of the run", (long long)stop,
+                 (long long)(g->step + n));
+    if (g->atoms.n == 0)
+        gr_warn(g, "running with no atoms");
+    run_steps(g, n);
+}
+
+/* reset_timestep N */
+void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    bigint n = arg_bigint(g, argv[0], "timestep");
+    if (n < 0)
+        gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
+    g->step = n;
+    g->laststep_reset = n;
 }

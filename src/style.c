@@ -1,8 +1,11 @@
-/* style.c - PLACEHOLDER: pair/fix/compute/dump instances land with the core. */
+/* style.c - release of every style instance on `clear` and destroy. */
 #include "gravel.h"
+#include "fix.h"
+#include "pair.h"
 #include "styles.h"
 
 void styles_free(struct gravel *g)
 {
-    (void)g;
+    pair_free(g);
+    fix_free_all(g);
 }

@@ -1,0 +1,362 @@
+/* neighbor.cl - device neighbor machinery: rebuild check, periodic wrap and
+ * atom extent, binning, a chunked prefix scan, a deterministic counting sort
+ * by cell (ties ordered by tag), re-ordering of per-atom arrays, and the full
+ * Verlet list build with contact-history transfer by partner tag.
+ *
+ * Determinism: counts and scatter use integer atomics, but each cell's
+ * segment is then sorted by tag, so the resulting order depends only on the
+ * positions and tags, never on thread timing. */
+
+/* flags[0] |= 1 if some atom moved more than sqrt(trigsq) since the last
+ * build; flags[1] = lowest index with a non-finite position or velocity. */
+__kernel void nbr_check(const int n, __global const REAL *x, __global const REAL *v,
+                        __global const REAL *xhold, const REAL trigsq,
+                        __global int *flags)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const REAL3 d = xi - vload3(i, xhold);
+    const REAL3 vi = vload3(i, v);
+    const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
+    if (rsq > trigsq)
+        atomic_or(&flags[0], 1);
+    if (!(isfinite(xi.x) && isfinite(xi.y) && isfinite(xi.z) && isfinite(vi.x) &&
+          isfinite(vi.y) && isfinite(vi.z)))
+        atomic_min(&flags[1], i);
+}
+
+/* Wrap periodic dimensions into [lo, hi) updating image flags (LAMMPS
+ * Domain::pbc, one period at most), and write the per-chunk extent
+ * ext[6 c ..] = (min x, min y, min z, max x, max y, max z). */
+__kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
+                              __global int *image, const int px, const int py, const int pz,
+                              const REAL lox, const REAL loy, const REAL loz, const REAL hix,
+                              const REAL hiy, const REAL hiz, __global REAL *ext)
+{
+    const int c = get_global_id(0);
+    const int i0 = c * chunk;
+    int i1 = i0 + chunk;
+    if (i1 > n)
+        i1 = n;
+    const int per[3] = {px, py, pz};
+    const REAL lo[3] = {lox, loy, loz}, hi[3] = {hix, hiy, hiz};
+    REAL mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = i0; i < i1; i++) {
+        for (int d = 0; d < 3; d++) {
+            REAL xd = x[3 * i + d];
+            if (per[d]) {
+                const REAL L = hi[d] - lo[d];
+                if (xd < lo[d]) {
+                    xd += L;
+                    image[3 * i + d] -= 1;
+                }
+                if (xd >= hi[d]) {
+                    xd -= L;
+                    xd = fmax(xd, lo[d]);
+                    image[3 * i + d] += 1;
+                }
+                x[3 * i + d] = xd;
+            }
+            mn[d] = fmin(mn[d], xd);
+            mx[d] = fmax(mx[d], xd);
+        }
+    }
+    for (int d = 0; d < 3; d++) {
+        ext[6 * c + d] = mn[d];
+        ext[6 * c + 3 + d] = mx[d];
+    }
+}
+
+/* Cell of each atom; atoms outside a non-periodic face go to the sentinel
+ * cell ncell (they are lost). counts[] must be zero on entry. */
+__kernel void nbr_bin(const int n, __global const REAL *x, const int nx, const int ny,
+                      const int nz, const REAL lox, const REAL loy, const REAL loz,
+                      const REAL hix, const REAL hiy, const REAL hiz, const REAL sx,
+                      const REAL sy, const REAL sz, __global int *cellof,
+                      __global int *counts)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    int c;
+    if (!(xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
+          xi.z < hiz)) {
+        c = nx * ny * nz;
+    } else {
+        int cx = (int)((xi.x - lox) * sx), cy = (int)((xi.y - loy) * sy);
+        int cz = (int)((xi.z - loz) * sz);
+        cx = clamp(cx, 0, nx - 1);
+        cy = clamp(cy, 0, ny - 1);
+        cz = clamp(cz, 0, nz - 1);
+        c = (cz * ny + cy) * nx + cx;
+    }
+    cellof[i] = c;
+    atomic_inc(&counts[c]);
+}
+
+/* Chunked exclusive scan, three launches: partial sums per chunk, a serial
+ * scan of the chunk sums, then each chunk scans itself from its offset.
+ * start[m] receives the total. */
+__kernel void scan_partial(const int m, const int chunk, __global const int *in,
+                           __global int *sums)
+{
+    const int p = get_global_id(0);
+    const int i0 = p * chunk;
+    int i1 = i0 + chunk;
+    if (i1 > m)
+        i1 = m;
+    int s = 0;
+    for (int i = i0; i < i1; i++)
+        s += in[i];
+    sums[p] = s;
+}
+
+__kernel void scan_top(const int nchunk, __global int *sums)
+{
+    if (get_global_id(0) != 0)
+        return;
+    int acc = 0;
+    for (int p = 0; p < nchunk; p++) {
+        const int s = sums[p];
+        sums[p] = acc;
+        acc += s;
+    }
+    sums[nchunk] = acc;
+}
+
+__kernel void scan_final(const int m, const int chunk, const int nchunk,
+                         __global const int *in, __global const int *sums,
+                         __global int *out)
+{
+    const int p = get_global_id(0);
+    const int i0 = p * chunk;
+    int i1 = i0 + chunk;
+    if (i1 > m)
+        i1 = m;
+    int acc = sums[p];
+    for (int i = i0; i < i1; i++) {
+        out[i] = acc;
+        acc += in[i];
+    }
+    if (p == nchunk - 1)
+        out[m] = sums[nchunk];
+}
+
+/* perm[start[c] + k] = i for the atoms of cell c (in arbitrary order). */
+__kernel void nbr_scatter(const int n, __global const int *cellof, __global const int *start,
+                          __global int *cursor, __global int *perm)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const int c = cellof[i];
+    perm[start[c] + atomic_inc(&cursor[c])] = i;
+}
+
+/* Order each cell's segment by tag: the deterministic part of the sort. */
+__kernel void nbr_cellsort(const int ncell, __global const int *start, __global int *perm,
+                           __global const long *tag)
+{
+    const int c = get_global_id(0);
+    if (c >= ncell)
+        return;
+    const int s = start[c], e = start[c + 1];
+    for (int a = s + 1; a < e; a++) {
+        const int pa = perm[a];
+        const long ta = tag[pa];
+        int b = a - 1;
+        while (b >= s && tag[perm[b]] > ta) {
+            perm[b + 1] = perm[b];
+            b--;
+        }
+        perm[b + 1] = pa;
+    }
+}
+
+/* Gather every per-atom array into its new order: new[i] = old[perm[i]]. */
+__kernel void nbr_reorder(const int n, __global const int *perm,
+                          __global const REAL *x0, __global REAL *x1,
+                          __global const REAL *v0, __global REAL *v1,
+                          __global const REAL *om0, __global REAL *om1,
+                          __global const REAL *rad0, __global REAL *rad1,
+                          __global const REAL *m0, __global REAL *m1,
+                          __global const int *type0, __global int *type1,
+                          __global const uint *mask0, __global uint *mask1,
+                          __global const long *tag0, __global long *tag1,
+                          __global const int *img0, __global int *img1)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const int o = perm[i];
+    vstore3(vload3(o, x0), i, x1);
+    vstore3(vload3(o, v0), i, v1);
+#ifdef HAS_ROTATION
+    vstore3(vload3(o, om0), i, om1);
+#endif
+    rad1[i] = rad0[o];
+    m1[i] = m0[o];
+    type1[i] = type0[o];
+    mask1[i] = mask0[o];
+    tag1[i] = tag0[o];
+    vstore3(vload3(o, img0), i, img1);
+}
+
+/* Same for a style's per-atom state of `words` 32-bit words per atom. */
+__kernel void nbr_reorder_words(const int n, const int words, __global const int *perm,
+                                __global const uint *src, __global uint *dst)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const size_t o = (size_t)perm[i] * words, d = (size_t)i * words;
+    for (int k = 0; k < words; k++)
+        dst[d + k] = src[o + k];
+}
+
+/* Stencil range of one dimension: the 3 neighboring cells (wrapped when
+ * periodic, clipped otherwise), or every cell once when there are fewer
+ * than 3 (no cell is visited twice). Returns the count; cells in out[]. */
+static inline int stencil(const int c, const int nc, const int periodic, int out[3])
+{
+    int k = 0;
+    if (nc < 3) {
+        for (int d = 0; d < nc; d++)
+            out[k++] = d;
+        return k;
+    }
+    for (int d = -1; d <= 1; d++) {
+        int cc = c + d;
+        if (cc < 0 || cc >= nc) {
+            if (!periodic)
+                continue;
+            cc = cc < 0 ? cc + nc : cc - nc;
+        }
+        out[k++] = cc;
+    }
+    return k;
+}
+
+/* Full Verlet list with skin: j is a neighbor of i when
+ * |x_i - x_j| < radi + radj + skin (LAMMPS size lists), j != i, and the pair
+ * is not excluded (type table, group bit pairs). Slots beyond maxn are
+ * counted but not written: flags[2] receives the largest count so the host
+ * can grow and rebuild. history: 0 none; 1 zero shear; 2 each touching pair
+ * copies its shear from the old list slot of the same partner tag (old list
+ * in old order: perm maps new -> old index). */
+__kernel void nbr_build(const int n, __global const REAL *x, __global const REAL *radius,
+                        __global const int *type, __global const uint *mask,
+                        __global const long *tag, __global const int *start, const int nx,
+                        const int ny, const int nz, const int px, const int py, const int pz,
+                        const REAL lox, const REAL loy, const REAL loz, const REAL sx,
+                        const REAL sy, const REAL sz, const REAL Lx, const REAL Ly,
+                        const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
+                        __global int *ncount, __global int *flags, const int ntypes,
+                        __global const int *excl_type, const int nexg,
+                        __global const uint *excl_group, const int history,
+                        __global const int *perm, __global const int *old_nlist,
+                        __global const int *old_ncount, const int old_maxn,
+                        __global const long *old_tag, __global const REAL *old_shear,
+                        __global REAL *shear)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const REAL radi = radius[i];
+    const int ti = type[i];
+    const uint mi = mask[i];
+    int cx = clamp((int)((xi.x - lox) * sx), 0, nx - 1);
+    int cy = clamp((int)((xi.y - loy) * sy), 0, ny - 1);
+    int cz = clamp((int)((xi.z - loz) * sz), 0, nz - 1);
+    int sxs[3], sys[3], szs[3];
+    const int nsx = stencil(cx, nx, px, sxs);
+    const int nsy = stencil(cy, ny, py, sys);
+    const int nsz = stencil(cz, nz, pz, szs);
+    const size_t row = (size_t)i * maxn;
+    int cnt = 0;
+    const int io = history == 2 ? perm[i] : 0;
+    const int ocnt = history == 2 ? old_ncount[io] : 0;
+    const size_t orow = (size_t)io * old_maxn;
+    for (int a = 0; a < nsz; a++)
+        for (int b = 0; b < nsy; b++)
+            for (int e = 0; e < nsx; e++) {
+                const int cell = (szs[a] * ny + sys[b]) * nx + sxs[e];
+                const int s = start[cell], t = start[cell + 1];
+                for (int j = s; j < t; j++) {
+                    if (j == i)
+                        continue;
+                    REAL3 del = xi - vload3(j, x);
+                    del.x = min_image(del.x, Lx);
+                    del.y = min_image(del.y, Ly);
+                    del.z = min_image(del.z, Lz);
+                    const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+                    const REAL radsum = radi + radius[j];
+                    const REAL cut = radsum + skin;
+                    if (rsq >= cut * cut)
+                        continue;
+                    if (excl_type[(ti - 1) * ntypes + type[j] - 1])
+                        continue;
+                    const uint mj = mask[j];
+                    int excluded = 0;
+                    for (int q = 0; q < nexg; q++) {
+                        const uint g1 = excl_group[2 * q], g2 = excl_group[2 * q + 1];
+                        if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
+                            excluded = 1;
+                    }
+                    if (excluded)
+                        continue;
+                    if (cnt < maxn) {
+                        nlist[row + cnt] = j;
+                        if (history) {
+                            REAL3 sh = (REAL3)(0);
+                            if (rsq < radsum * radsum) {
+                                const long tj = tag[j];
+                                for (int k = 0; k < ocnt; k++)
+                                    if (old_tag[old_nlist[orow + k]] == tj) {
+                                        sh = vload3(orow + k, old_shear);
+                                        break;
+                                    }
+                            }
+                            vstore3(sh, row + cnt, shear);
+                        }
+                    }
+                    cnt++;
+                }
+            }
+    ncount[i] = cnt < maxn ? cnt : maxn;
+    atomic_max(&flags[2], cnt);
+}
+
+/* Per-chunk largest overlap (radsum - r) / min(radi, radj) over the list. */
+__kernel void nbr_overlap(const int n, const int chunk, __global const REAL *x,
+                          __global const REAL *radius, __global const int *nlist,
+                          __global const int *ncount, const int maxn, const REAL Lx,
+                          const REAL Ly, const REAL Lz, __global REAL *out)
+{
+    const int c = get_global_id(0);
+    const int i0 = c * chunk;
+    int i1 = i0 + chunk;
+    if (i1 > n)
+        i1 = n;
+    REAL best = 0;
+    for (int i = i0; i < i1; i++) {
+        const REAL3 xi = vload3(i, x);
+        const REAL radi = radius[i];
+        for (int k = 0; k < ncount[i]; k++) {
+            const int j = nlist[(size_t)i * maxn + k];
+            REAL3 del = xi - vload3(j, x);
+            del.x = min_image(del.x, Lx);
+            del.y = min_image(del.y, Ly);
+            del.z = min_image(del.z, Lz);
+            const REAL r = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
+            const REAL radj = radius[j];
+            const REAL ov = (radi + radj - r) / fmin(radi, radj);
+            best = fmax(best, ov);
+        }
+    }
+    out[c] = best;
+}

@@ -1,0 +1,410 @@
+/* engine.c - device state of a simulation: device and precision choice, the
+ * per-atom buffers (structure of arrays, device order), program assembly for
+ * the active styles, upload at run start and run_sync_host().
+ *
+ * Buffers exist in two sets (a, b) so that the neighbor re-sort can gather
+ * into the spare set and swap; omega and torque exist only when some active
+ * style needs rotation. */
+#include "engine.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "atoms.h"
+#include "error.h"
+#include "fix.h"
+#include "kernel_sources.h"
+#include "neighbor.h"
+#include "pair.h"
+
+extern const struct kernel_source gr_kernel_sources[];
+
+struct engine *eng_get(struct gravel *g)
+{
+    if (!g->eng) {
+        g->eng = gr_calloc(g, 1, sizeof *g->eng);
+    }
+    struct engine *e = g->eng;
+    if (!e->ready) {
+        ocl_init(g, &e->ocl, g->opt.device);
+        e->ready = 1;
+        gr_print(g, "OpenCL device: %s (%s)\n", e->ocl.name, e->ocl.version);
+    }
+    return e;
+}
+
+struct dev_atoms *eng_atoms(struct gravel *g) { return &g->eng->a; }
+int eng_in_setup(struct gravel *g) { return g->eng && g->eng->setup; }
+
+cl_kernel eng_kernel(struct gravel *g, const char *name)
+{
+    struct engine *e = g->eng;
+    if (e->nkern == e->kern_cap) {
+        e->kern_cap = e->kern_cap ? 2 * e->kern_cap : 32;
+        e->kern = gr_realloc(g, e->kern, (size_t)e->kern_cap * sizeof *e->kern);
+    }
+    cl_kernel k = ocl_kernel(g, &e->ocl, name);
+    e->kern[e->nkern++] = k;
+    return k;
+}
+
+void eng_release_kernels(struct engine *e)
+{
+    for (int i = 0; i < e->nkern; i++)
+        clReleaseKernel(e->kern[i]);
+    e->nkern = 0;
+}
+
+static void set_arg(struct gravel *g, cl_kernel k, int i, size_t sz, const void *p)
+{
+    cl_int err = clSetKernelArg(k, (cl_uint)i, sz, p);
+    if (err != CL_SUCCESS) {
+        char name[128] = "?";
+        clGetKernelInfo(k, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL);
+        gr_error(g, "OpenCL clSetKernelArg(%s, %d) failed: %s", name, i, ocl_errname(err));
+    }
+}
+
+void eng_arg_mem(struct gravel *g, cl_kernel k, int i, cl_mem m) { set_arg(g, k, i, sizeof m, &m); }
+void eng_arg_int(struct gravel *g, cl_kernel k, int i, int v) { set_arg(g, k, i, sizeof v, &v); }
+void eng_arg_uint(struct gravel *g, cl_kernel k, int i, unsigned v)
+{
+    cl_uint u = v;
+    set_arg(g, k, i, sizeof u, &u);
+}
+void eng_arg_real(struct gravel *g, cl_kernel k, int i, double v)
+{
+    if (g->eng->single) {
+        float f = (float)v;
+        set_arg(g, k, i, sizeof f, &f);
+    } else {
+        set_arg(g, k, i, sizeof v, &v);
+    }
+}
+void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes)
+{
+    set_arg(g, k, i, bytes, NULL);
+}
+
+void eng_launch(struct gravel *g, cl_kernel k, size_t n)
+{
+    if (n == 0)
+        return;
+    cl_int err = clEnqueueNDRangeKernel(g->eng->ocl.queue, k, 1, NULL, &n, NULL, 0, NULL, NULL);
+    if (err != CL_SUCCESS) {
+        char name[128] = "?";
+        clGetKernelInfo(k, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL);
+        gr_error(g, "OpenCL launch of kernel %s over %zu items failed: %s", name, n,
+                 ocl_errname(err));
+    }
+}
+
+cl_mem eng_alloc(struct gravel *g, size_t bytes, const char *what)
+{
+    return ocl_alloc(g, &g->eng->ocl, bytes, what);
+}
+
+void eng_write(struct gravel *g, cl_mem m, size_t off, size_t bytes, const void *src)
+{
+    if (bytes)
+        OCL_CHECK(g, clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, off, bytes, src, 0,
+                                          NULL, NULL));
+}
+
+void eng_read(struct gravel *g, cl_mem m, size_t off, size_t bytes, void *dst)
+{
+    if (bytes)
+        OCL_CHECK(g, clEnqueueReadBuffer(g->eng->ocl.queue, m, CL_TRUE, off, bytes, dst, 0,
+                                         NULL, NULL));
+}
+
+void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes)
+{
+    if (!bytes)
+        return;
+    cl_uint zero = 0;
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, m, &zero, sizeof zero, 0, bytes, 0,
+                                     NULL, NULL));
+}
+
+void eng_finish(struct gravel *g) { OCL_CHECK(g, clFinish(g->eng->ocl.queue)); }
+
+void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src)
+{
+    if (!count)
+        return;
+    if (!g->eng->single) {
+        eng_write(g, m, 0, count * sizeof(double), src);
+        return;
+    }
+    float *tmp = gr_malloc(g, count * sizeof(float));
+    for (size_t i = 0; i < count; i++)
+        tmp[i] = (float)src[i];
+    cl_int err = clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, 0, count * sizeof(float),
+                                      tmp, 0, NULL, NULL);
+    free(tmp);
+    ocl_check(g, err, "clEnqueueWriteBuffer");
+}
+
+void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst)
+{
+    if (!count)
+        return;
+    if (!g->eng->single) {
+        eng_read(g, m, 0, count * sizeof(double), dst);
+        return;
+    }
+    float *tmp = gr_malloc(g, count * sizeof(float));
+    cl_int err = clEnqueueReadBuffer(g->eng->ocl.queue, m, CL_TRUE, 0, count * sizeof(float),
+                                     tmp, 0, NULL, NULL);
+    if (err == CL_SUCCESS)
+        for (size_t i = 0; i < count; i++)
+            dst[i] = tmp[i];
+    free(tmp);
+    ocl_check(g, err, "clEnqueueReadBuffer");
+}
+
+static void release_set(struct dev_atoms *s)
+{
+    cl_mem *m[] = {&s->x, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
+                   &s->rmass, &s->type, &s->mask, &s->tag, &s->image};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+}
+
+static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
+{
+    struct engine *e = g->eng;
+    size_t r = e->rsz, n = (size_t)cap;
+    s->x = eng_alloc(g, 3 * n * r, "positions");
+    s->v = eng_alloc(g, 3 * n * r, "velocities");
+    s->f = eng_alloc(g, 3 * n * r, "forces");
+    if (e->rotation) {
+        s->omega = eng_alloc(g, 3 * n * r, "angular velocities");
+        s->torque = eng_alloc(g, 3 * n * r, "torques");
+    }
+    s->radius = eng_alloc(g, n * r, "radii");
+    s->rmass = eng_alloc(g, n * r, "masses");
+    s->type = eng_alloc(g, n * sizeof(cl_int), "types");
+    s->mask = eng_alloc(g, n * sizeof(cl_uint), "group masks");
+    s->tag = eng_alloc(g, n * sizeof(cl_long), "tags");
+    s->image = eng_alloc(g, 3 * n * sizeof(cl_int), "image flags");
+}
+
+void eng_swap(struct engine *e)
+{
+    struct dev_atoms t = e->a;
+    e->a = e->b;
+    e->b = t;
+    e->b.n = e->a.n;
+}
+
+/* (Re)allocate both sets for at least n atoms. Contents are not kept: call
+ * before upload only. */
+void eng_reserve(struct gravel *g, int n)
+{
+    struct engine *e = g->eng;
+    int rot_have = e->a.x && (e->a.omega != NULL);
+    if (n <= e->cap && e->a.x && rot_have == e->rotation)
+        return;
+    int cap = n > 16 ? n + n / 8 : 16;
+    release_set(&e->a);
+    release_set(&e->b);
+    alloc_set(g, &e->a, cap);
+    alloc_set(g, &e->b, cap);
+    e->cap = cap;
+    e->tag_sum = 0; /* the neighbor list indexes the old buffers */
+}
+
+static uint64_t tag_checksum(const struct atoms *a)
+{
+    uint64_t h = 1469598103934665603ull ^ (uint64_t)a->n;
+    for (int i = 0; i < a->n; i++) {
+        h ^= (uint64_t)a->tag[i];
+        h *= 1099511628211ull;
+    }
+    return h ? h : 1;
+}
+
+void eng_upload(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    struct atoms *at = &g->atoms;
+    int n = at->n;
+    int keep = e->tag_sum && e->n_at_sync == n && tag_checksum(at) == e->tag_sum;
+    eng_reserve(g, n);
+    if (!keep || !e->tag_sum)
+        nbr_invalidate(g);
+    struct dev_atoms *s = &e->a;
+    s->n = n;
+    e->b.n = n;
+    eng_write_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
+    eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
+    if (e->rotation) {
+        eng_write_reals(g, s->omega, 3 * (size_t)n, at->omega);
+        eng_write_reals(g, s->torque, 3 * (size_t)n, at->torque);
+    }
+    eng_write_reals(g, s->radius, (size_t)n, at->radius);
+    eng_write_reals(g, s->rmass, (size_t)n, at->rmass);
+    eng_write(g, s->type, 0, (size_t)n * sizeof(cl_int), at->type);
+    eng_write(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
+    eng_write(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
+    eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
+    /* per-atom state of fixes: keep while the atoms are the same, else zero */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom_bytes)
+            continue;
+        if (f->peratom_bytes % 4)
+            gr_error(g, "fix %s: per-atom state size %zu is not a multiple of 4 bytes", f->id,
+                     f->peratom_bytes);
+        if (!keep || f->peratom_cap < (size_t)e->cap || !f->peratom) {
+            if (f->peratom)
+                clReleaseMemObject(f->peratom);
+            if (f->peratom_tmp)
+                clReleaseMemObject(f->peratom_tmp);
+            f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+            f->peratom_tmp =
+                eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+            f->peratom_cap = (size_t)e->cap;
+            eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
+        }
+    }
+    e->active = 1;
+    e->synced = 1;
+}
+
+void run_sync_host(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active)
+        return;
+    struct atoms *at = &g->atoms;
+    struct dev_atoms *s = &e->a;
+    int n = s->n;
+    if (n > at->cap)
+        atoms_reserve(g, n);
+    at->n = n;
+    eng_read_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_read_reals(g, s->v, 3 * (size_t)n, at->v);
+    eng_read_reals(g, s->f, 3 * (size_t)n, at->f);
+    if (e->rotation) {
+        eng_read_reals(g, s->omega, 3 * (size_t)n, at->omega);
+        eng_read_reals(g, s->torque, 3 * (size_t)n, at->torque);
+    }
+    eng_read_reals(g, s->radius, (size_t)n, at->radius);
+    eng_read_reals(g, s->rmass, (size_t)n, at->rmass);
+    eng_read(g, s->type, 0, (size_t)n * sizeof(cl_int), at->type);
+    eng_read(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
+    eng_read(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
+    eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
+    e->tag_sum = tag_checksum(at);
+    e->n_at_sync = n;
+}
+
+/* The source text of kernels/<name>, or an error naming the style. */
+static const char *kernel_text(struct gravel *g, const char *name, const char *who)
+{
+    for (const struct kernel_source *k = gr_kernel_sources; k->name; k++)
+        if (!strcmp(k->name, name))
+            return k->text;
+    gr_error(g, "%s: kernel source kernels/%s is not in this build", who, name);
+}
+
+static void add_source(struct gravel *g, const char **names, const char **texts, int *n,
+                       const char *name, const char *who)
+{
+    for (int i = 0; i < *n; i++)
+        if (!strcmp(names[i], name))
+            return;
+    if (*n >= 32)
+        gr_error(g, "too many kernel sources");
+    names[*n] = name;
+    texts[*n] = kernel_text(g, name, who);
+    (*n)++;
+}
+
+void eng_prepare(struct gravel *g)
+{
+    struct engine *e = eng_get(g);
+    const struct pair *p = g->styles.pair;
+    unsigned needs = fix_needs_all(g);
+    int single = g->opt.single;
+    if (!single && !e->ocl.fp64) {
+        gr_warn(g, "device %s has no double precision: running in single precision",
+                e->ocl.name);
+        single = 1;
+    }
+    if (e->single != single) {
+        /* precision change: every buffer is reallocated */
+        e->single = single;
+        e->cap = 0;
+        e->tag_sum = 0;
+    }
+    e->rsz = single ? sizeof(float) : sizeof(double);
+    e->rotation = (p && p->style->rotation) || (needs & NEED_ROTATION);
+    e->history = p && p->style->history;
+
+    const char *names[32], *texts[32];
+    int n = 0;
+    add_source(g, names, texts, &n, "common.cl", "engine");
+    if (p)
+        add_source(g, names, texts, &n, p->style->source, p->style->name);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        for (int k = 0; k < f->nsources; k++)
+            add_source(g, names, texts, &n, f->sources[k], f->style->name);
+    }
+    add_source(g, names, texts, &n, "pair_loop.cl", "engine");
+    add_source(g, names, texts, &n, "neighbor.cl", "engine");
+
+    char opts[1024];
+    int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
+                       single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
+                       e->history ? " -D HAS_HISTORY" : "");
+    if (p)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PAIR_EVAL=%s",
+                        p->style->eval);
+    for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)
+        if (g->styles.fix[i]->defines[0])
+            len += snprintf(opts + len, sizeof opts - (size_t)len, " %s",
+                            g->styles.fix[i]->defines);
+    if (len >= (int)sizeof opts)
+        gr_error(g, "kernel build options too long");
+    eng_release_kernels(e);
+    uint64_t before = e->ocl.program_key;
+    ocl_build(g, &e->ocl, n, names, texts, opts);
+    if (e->ocl.program_key != before || !e->ocl.cache_hit)
+        gr_print(g, "OpenCL program: %s (%s)\n",
+                 e->ocl.cache_hit ? "program cache hit" : "compiled", opts);
+}
+
+void engine_destroy(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e)
+        return;
+    nbr_free(g);
+    if (e->pair_param)
+        clReleaseMemObject(e->pair_param);
+    eng_release_kernels(e);
+    free(e->kern);
+    release_set(&e->a);
+    release_set(&e->b);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->peratom)
+            clReleaseMemObject(f->peratom);
+        if (f->peratom_tmp)
+            clReleaseMemObject(f->peratom_tmp);
+        f->peratom = f->peratom_tmp = NULL;
+        f->peratom_cap = 0;
+    }
+    ocl_release(&e->ocl);
+    free(e);
+    g->eng = NULL;
+}

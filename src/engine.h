@@ -1,0 +1,94 @@
+/* engine.h - the device engine: per-atom buffers, the run's program, and the
+ * helpers styles use to launch kernels.
+ *
+ * The engine lives across runs (g->eng). At each `run` it builds the program
+ * for the active styles, uploads the host atoms, and from then on the device
+ * holds the truth until run_sync_host() (run.h) copies it back. Atoms are
+ * re-sorted by cell at every neighbor rebuild; every per-atom array moves
+ * together, tags keep identity. */
+#ifndef GR_ENGINE_H
+#define GR_ENGINE_H
+
+#include "gravel.h"
+#include "ocl.h"
+#include "run.h"
+
+/* Device per-atom arrays in device order (REAL = float or double). */
+struct dev_atoms {
+    int n;                      /* atoms on the device */
+    cl_mem x, v, f;             /* REAL[3n] interleaved */
+    cl_mem omega, torque;       /* REAL[3n], only with rotation (else NULL) */
+    cl_mem radius, rmass;       /* REAL[n] */
+    cl_mem type;                /* int[n] */
+    cl_mem mask;                /* uint[n] */
+    cl_mem tag;                 /* long[n] */
+    cl_mem image;               /* int[3n] */
+};
+
+struct nbr;                     /* neighbor.c */
+struct kernel_list;
+
+struct engine {
+    struct ocl ocl;
+    int ready;                  /* device chosen */
+    int single;                 /* REAL = float */
+    size_t rsz;                 /* sizeof(REAL) */
+    int rotation, history;      /* active features of the current run */
+    int cap;                    /* per-atom buffer capacity */
+    struct dev_atoms a;
+    struct dev_atoms b;         /* second set for the re-sort (same capacity) */
+    int active;                 /* inside a run: the device holds the truth */
+    int setup;                  /* computing the setup forces (no history update) */
+    int synced;                 /* host arrays equal the device (since last change) */
+    int nkern, kern_cap;
+    cl_kernel *kern;            /* every kernel created for this program */
+    struct nbr *nbr;
+    /* kept across runs: validity of the device neighbor list / history */
+    uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */
+    int n_at_sync;
+    /* pair evaluation of the current run (run.c) */
+    cl_mem pair_param;          /* packed per-type-pair parameters */
+    cl_kernel k_pair, k_clear;
+    /* statistics of the current run */
+    struct run_stats st;
+};
+
+/* Device state of g, creating the device on first use. */
+struct engine *eng_get(struct gravel *g);
+/* The current per-atom buffers. */
+struct dev_atoms *eng_atoms(struct gravel *g);
+/* 1 during the setup force computation of a run (no history update). */
+int eng_in_setup(struct gravel *g);
+
+/* Kernel `name` from the run's program; released by the engine. */
+cl_kernel eng_kernel(struct gravel *g, const char *name);
+/* Checked argument setters. eng_arg_real converts to the run's REAL. */
+void eng_arg_mem(struct gravel *g, cl_kernel k, int i, cl_mem m);
+void eng_arg_int(struct gravel *g, cl_kernel k, int i, int v);
+void eng_arg_uint(struct gravel *g, cl_kernel k, int i, unsigned v);
+void eng_arg_real(struct gravel *g, cl_kernel k, int i, double v);
+void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes);
+/* Launch a 1-D kernel over n work-items (no-op for n = 0). */
+void eng_launch(struct gravel *g, cl_kernel k, size_t n);
+/* Checked device allocation and transfers (blocking). */
+cl_mem eng_alloc(struct gravel *g, size_t bytes, const char *what);
+void eng_write(struct gravel *g, cl_mem m, size_t off, size_t bytes, const void *src);
+void eng_read(struct gravel *g, cl_mem m, size_t off, size_t bytes, void *dst);
+void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes);
+void eng_finish(struct gravel *g);
+/* Host doubles <-> device REALs through a scratch buffer. */
+void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
+void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
+
+/* Run internals (engine.c): build the program for the active styles; upload
+ * the host atoms; grow capacity; release the program's kernels. */
+void eng_prepare(struct gravel *g);
+void eng_upload(struct gravel *g);
+void eng_release_kernels(struct engine *e);
+/* Swap the a/b per-atom sets after a re-sort. */
+void eng_swap(struct engine *e);
+/* Make sure both per-atom sets hold at least n atoms (contents of `a` kept). */
+void eng_reserve(struct gravel *g, int n);
+
+
+#endif

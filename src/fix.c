@@ -1,0 +1,147 @@
+/* fix.c - the fix registry (FIX rows of styles/styles.def) and the `fix` and
+ * `unfix` commands. Fix order is definition order, as in LAMMPS: a fix
+ * redefined with the same ID keeps its place. */
+#include "fix.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "error.h"
+
+#define PAIR(k, i)
+#define COMPUTE(k, i)
+#define DUMP(k, i)
+#define REGION(k, i)
+#define FIX(k, i) extern const struct fix_style fix_style_##i;
+#include "styles.def"
+#undef FIX
+#define FIX(k, i) &fix_style_##i,
+static const struct fix_style *const fix_styles[] = {
+#include "styles.def"
+    NULL};
+#undef FIX
+#undef PAIR
+#undef COMPUTE
+#undef DUMP
+#undef REGION
+
+struct fix *fix_find(struct gravel *g, const char *id)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (!strcmp(g->styles.fix[i]->id, id))
+            return g->styles.fix[i];
+    return NULL;
+}
+
+struct fix *fix_find_style(struct gravel *g, const char *style)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (!strcmp(g->styles.fix[i]->style->name, style))
+            return g->styles.fix[i];
+    return NULL;
+}
+
+unsigned fix_needs_all(struct gravel *g)
+{
+    unsigned u = 0;
+    for (int i = 0; i < g->styles.nfix; i++)
+        u |= g->styles.fix[i]->needs;
+    return u;
+}
+
+static void fix_delete(struct fix *f)
+{
+    if (!f)
+        return;
+    if (f->style && f->style->destroy)
+        f->style->destroy(f);
+    else
+        free(f->data);
+    if (f->peratom)
+        clReleaseMemObject(f->peratom);
+    if (f->peratom_tmp)
+        clReleaseMemObject(f->peratom_tmp);
+    free(f);
+}
+
+void fix_free_all(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        fix_delete(g->styles.fix[i]);
+    free(g->styles.fix);
+    g->styles.fix = NULL;
+    g->styles.nfix = g->styles.nfix_cap = 0;
+}
+
+static int valid_id(const char *s)
+{
+    if (!*s || strlen(s) >= GR_NAMELEN)
+        return 0;
+    for (; *s; s++)
+        if (!(*s == '_' || (*s >= '0' && *s <= '9') || (*s >= 'a' && *s <= 'z') ||
+              (*s >= 'A' && *s <= 'Z')))
+            return 0;
+    return 1;
+}
+
+/* fix ID group style args... */
+void cmd_fix(struct gravel *g, int argc, char **argv)
+{
+    if (!valid_id(argv[0]))
+        gr_error(g, "fix ID '%.64s' must be letters, digits and underscores (at most %d)",
+                 argv[0], GR_NAMELEN - 1);
+    int igroup = arg_group(g, argv[1]);
+    const struct fix_style *st = NULL;
+    for (int i = 0; fix_styles[i]; i++)
+        if (!strcmp(fix_styles[i]->name, argv[2]))
+            st = fix_styles[i];
+    if (!st) {
+        char known[512] = "";
+        for (int i = 0; fix_styles[i]; i++) {
+            strncat(known, i ? ", " : "", sizeof known - strlen(known) - 1);
+            strncat(known, fix_styles[i]->name, sizeof known - strlen(known) - 1);
+        }
+        gr_error(g, "unknown fix style '%.64s' (known: %s)", argv[2], known);
+    }
+    struct fix *old = fix_find(g, argv[0]);
+    if (old && strcmp(old->style->name, st->name))
+        gr_error(g, "fix %s already exists with style %s; unfix it before redefining it as %s",
+                 argv[0], old->style->name, st->name);
+    struct fix *f = gr_calloc(g, 1, sizeof *f);
+    snprintf(f->id, sizeof f->id, "%s", argv[0]);
+    f->style = st;
+    f->igroup = igroup;
+    f->groupbit = 1u << igroup;
+    /* create may raise: keep f reachable so it is freed (slot at the end) */
+    if (g->styles.nfix == g->styles.nfix_cap) {
+        int cap = g->styles.nfix_cap ? 2 * g->styles.nfix_cap : 8;
+        g->styles.fix = gr_realloc(g, g->styles.fix, (size_t)cap * sizeof *g->styles.fix);
+        g->styles.nfix_cap = cap;
+    }
+    g->styles.fix[g->styles.nfix++] = f;
+    st->create(g, f, argc - 3, argv + 3);
+    if (old) {
+        /* replace in place, keeping the original position */
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i] == old)
+                g->styles.fix[i] = f;
+        g->styles.nfix--;
+        fix_delete(old);
+    }
+}
+
+/* unfix ID */
+void cmd_unfix(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (!strcmp(g->styles.fix[i]->id, argv[0])) {
+            fix_delete(g->styles.fix[i]);
+            memmove(&g->styles.fix[i], &g->styles.fix[i + 1],
+                    (size_t)(g->styles.nfix - i - 1) * sizeof *g->styles.fix);
+            g->styles.nfix--;
+            return;
+        }
+    gr_error(g, "could not find fix ID '%.64s' to delete", argv[0]);
+}

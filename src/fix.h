@@ -1,0 +1,96 @@
+/* fix.h - fixes: operations applied to a group of atoms at fixed points of
+ * each time step (`fix ID group style args`, `unfix ID`).
+ *
+ * A style is a descriptor (struct fix_style) in styles/fix_<ident>.c plus,
+ * when it has device work, kernels in kernels/fix_<ident>.cl. Registration is
+ * one FIX(keyword, ident) row in styles/styles.def.
+ *
+ * Life cycle of an instance:
+ *   create()   at the `fix` command: parse and validate the arguments, set
+ *              f->hooks (HOOK_* bits), f->needs (NEED_* bits), f->sources
+ *              (kernel files the run program must include) and f->defines
+ *              (extra -D options). May not touch the device.
+ *   init()     at every `run`, after the program is built and the atoms are
+ *              on the device: create kernels with eng_kernel(), size per-atom
+ *              device state (f->peratom_bytes), check other styles.
+ *   hooks      called by the run loop in LAMMPS' Verlet order, only for the
+ *              bits set in f->hooks:
+ *                initial_integrate -> (neighbor) -> pair -> post_force
+ *                -> final_integrate -> end_of_step
+ *              During the setup force computation (step 0 of a run) only
+ *              post_force runs, with eng_in_setup(g) true (LAMMPS' setup():
+ *              no shear-history update).
+ *   destroy()  at unfix/clear: free f->data (not device objects: kernels
+ *              belong to the engine and die with the program).
+ *
+ * Device access for hooks (src/engine.h): eng_atoms(g) gives the per-atom
+ * buffers in device order (x, v, f, omega, torque, radius, rmass, type, mask,
+ * tag, image; n atoms). Buffers are swapped when atoms are re-sorted, so set
+ * kernel arguments in every hook call (cheap), never once in init().
+ *
+ * Per-atom state that must follow the atoms through re-sorts (e.g. wall
+ * contact history) is declared by setting f->peratom_bytes (a multiple of 4)
+ * in init(); the engine then provides f->peratom, a zero-filled device buffer
+ * of peratom_bytes per atom in device order, permuted with the atoms on every
+ * neighbor rebuild and kept across runs while the atoms are unchanged. */
+#ifndef GR_FIX_H
+#define GR_FIX_H
+
+#include "gravel.h"
+#include "ocl.h"
+
+enum fix_hook {
+    HOOK_INITIAL_INTEGRATE = 1 << 0,
+    HOOK_POST_FORCE = 1 << 1,
+    HOOK_FINAL_INTEGRATE = 1 << 2,
+    HOOK_END_OF_STEP = 1 << 3,
+};
+
+/* Per-atom fields / device features a style needs. */
+enum fix_need {
+    NEED_ROTATION = 1 << 0,     /* omega and torque arrays */
+};
+
+#define FIX_MAX_SOURCES 4
+
+struct fix;
+
+struct fix_style {
+    const char *name;
+    void (*create)(struct gravel *g, struct fix *f, int argc, char **argv);
+    void (*init)(struct gravel *g, struct fix *f);                 /* optional */
+    void (*initial_integrate)(struct gravel *g, struct fix *f);
+    void (*post_force)(struct gravel *g, struct fix *f);
+    void (*final_integrate)(struct gravel *g, struct fix *f);
+    void (*end_of_step)(struct gravel *g, struct fix *f);
+    void (*destroy)(struct fix *f);                                /* optional */
+};
+
+struct fix {
+    char id[GR_NAMELEN];
+    const struct fix_style *style;
+    int igroup;
+    unsigned groupbit;          /* 1u << igroup */
+    unsigned hooks;             /* HOOK_* */
+    unsigned needs;             /* NEED_* */
+    int nsources;
+    const char *sources[FIX_MAX_SOURCES];   /* kernel file names, e.g. "fix_gravity.cl" */
+    char defines[256];          /* extra build options, e.g. "-D WALL_MODEL=2" */
+    void *data;                 /* style state, freed by destroy (or free() if no destroy) */
+    /* engine-managed per-atom device state (see header comment) */
+    size_t peratom_bytes;
+    cl_mem peratom;
+    cl_mem peratom_tmp;
+    size_t peratom_cap;         /* atoms the buffers hold */
+};
+
+/* The fix with this ID, or NULL. */
+struct fix *fix_find(struct gravel *g, const char *id);
+/* The first fix of this style name (e.g. "freeze"), or NULL. */
+struct fix *fix_find_style(struct gravel *g, const char *style);
+/* Free every fix (clear/destroy). */
+void fix_free_all(struct gravel *g);
+/* Union of NEED_* over all fixes. */
+unsigned fix_needs_all(struct gravel *g);
+
+#endif

@@ -1,0 +1,377 @@
+/* ocl.c - OpenCL device choice, checked calls and the program cache.
+ *
+ * The cache stores the device binary of each built program under a 64-bit
+ * FNV-1a hash of (sources, options, device name, driver and platform
+ * version), written to a temporary file and renamed so concurrent runs never
+ * read half a file. A binary that fails to load is rebuilt from source. */
+#include "ocl.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "error.h"
+
+const char *ocl_errname(cl_int err)
+{
+    switch (err) {
+#define E(x) case x: return #x;
+    E(CL_SUCCESS) E(CL_DEVICE_NOT_FOUND) E(CL_DEVICE_NOT_AVAILABLE) E(CL_COMPILER_NOT_AVAILABLE)
+    E(CL_MEM_OBJECT_ALLOCATION_FAILURE) E(CL_OUT_OF_RESOURCES) E(CL_OUT_OF_HOST_MEMORY)
+    E(CL_PROFILING_INFO_NOT_AVAILABLE) E(CL_MEM_COPY_OVERLAP) E(CL_IMAGE_FORMAT_MISMATCH)
+    E(CL_IMAGE_FORMAT_NOT_SUPPORTED) E(CL_BUILD_PROGRAM_FAILURE) E(CL_MAP_FAILURE)
+    E(CL_MISALIGNED_SUB_BUFFER_OFFSET) E(CL_EXEC_STATUS_ERROR_FOR_EVENTS_IN_WAIT_LIST)
+    E(CL_COMPILE_PROGRAM_FAILURE) E(CL_LINKER_NOT_AVAILABLE) E(CL_LINK_PROGRAM_FAILURE)
+    E(CL_DEVICE_PARTITION_FAILED) E(CL_KERNEL_ARG_INFO_NOT_AVAILABLE) E(CL_INVALID_VALUE)
+    E(CL_INVALID_DEVICE_TYPE) E(CL_INVALID_PLATFORM) E(CL_INVALID_DEVICE) E(CL_INVALID_CONTEXT)
+    E(CL_INVALID_QUEUE_PROPERTIES) E(CL_INVALID_COMMAND_QUEUE) E(CL_INVALID_HOST_PTR)
+    E(CL_INVALID_MEM_OBJECT) E(CL_INVALID_IMAGE_FORMAT_DESCRIPTOR) E(CL_INVALID_IMAGE_SIZE)
+    E(CL_INVALID_SAMPLER) E(CL_INVALID_BINARY) E(CL_INVALID_BUILD_OPTIONS) E(CL_INVALID_PROGRAM)
+    E(CL_INVALID_PROGRAM_EXECUTABLE) E(CL_INVALID_KERNEL_NAME) E(CL_INVALID_KERNEL_DEFINITION)
+    E(CL_INVALID_KERNEL) E(CL_INVALID_ARG_INDEX) E(CL_INVALID_ARG_VALUE) E(CL_INVALID_ARG_SIZE)
+    E(CL_INVALID_KERNEL_ARGS) E(CL_INVALID_WORK_DIMENSION) E(CL_INVALID_WORK_GROUP_SIZE)
+    E(CL_INVALID_WORK_ITEM_SIZE) E(CL_INVALID_GLOBAL_OFFSET) E(CL_INVALID_EVENT_WAIT_LIST)
+    E(CL_INVALID_EVENT) E(CL_INVALID_OPERATION) E(CL_INVALID_GL_OBJECT) E(CL_INVALID_BUFFER_SIZE)
+    E(CL_INVALID_MIP_LEVEL) E(CL_INVALID_GLOBAL_WORK_SIZE) E(CL_INVALID_PROPERTY)
+    E(CL_INVALID_IMAGE_DESCRIPTOR) E(CL_INVALID_COMPILER_OPTIONS) E(CL_INVALID_LINKER_OPTIONS)
+    E(CL_INVALID_DEVICE_PARTITION_COUNT)
+#undef E
+    case -1001: return "CL_PLATFORM_NOT_FOUND_KHR (no OpenCL platform: is pocl-opencl-icd installed?)";
+    default: return "unknown OpenCL error";
+    }
+}
+
+void ocl_check(struct gravel *g, cl_int err, const char *call)
+{
+    if (err != CL_SUCCESS) {
+        char name[96];
+        size_t len = strcspn(call, "(");
+        if (len > sizeof name - 1)
+            len = sizeof name - 1;
+        memcpy(name, call, len);
+        name[len] = '\0';
+        gr_error(g, "OpenCL %s failed: %s (%d)", name, ocl_errname(err), (int)err);
+    }
+}
+
+/* All devices of all platforms, in platform order. */
+static int list_devices(struct gravel *g, cl_platform_id *plat, cl_device_id *dev, int max)
+{
+    cl_uint np = 0;
+    cl_int err = clGetPlatformIDs(0, NULL, &np);
+    if (err != CL_SUCCESS || np == 0)
+        gr_error(g, "no OpenCL platform found (%s): install pocl-opencl-icd "
+                    "(apt-get install -y pocl-opencl-icd ocl-icd-opencl-dev)", ocl_errname(err));
+    cl_platform_id ps[16];
+    if (np > 16)
+        np = 16;
+    OCL_CHECK(g, clGetPlatformIDs(np, ps, NULL));
+    int n = 0;
+    for (cl_uint p = 0; p < np; p++) {
+        cl_uint nd = 0;
+        if (clGetDeviceIDs(ps[p], CL_DEVICE_TYPE_ALL, 0, NULL, &nd) != CL_SUCCESS)
+            continue;
+        cl_device_id ds[32];
+        if (nd > 32)
+            nd = 32;
+        if (clGetDeviceIDs(ps[p], CL_DEVICE_TYPE_ALL, nd, ds, NULL) != CL_SUCCESS)
+            continue;
+        for (cl_uint d = 0; d < nd && n < max; d++) {
+            plat[n] = ps[p];
+            dev[n++] = ds[d];
+        }
+    }
+    if (n == 0)
+        gr_error(g, "no OpenCL device found on any platform");
+    return n;
+}
+
+void ocl_init(struct gravel *g, struct ocl *o, const char *want)
+{
+    cl_platform_id plat[64];
+    cl_device_id dev[64];
+    int n = list_devices(g, plat, dev, 64);
+    if (!want || !*want)
+        want = getenv("GRAVEL_DEVICE");
+    if (!want || !*want)
+        want = "cpu";
+    int pick = -1;
+    if (!strcmp(want, "cpu") || !strcmp(want, "gpu")) {
+        cl_device_type t = !strcmp(want, "cpu") ? CL_DEVICE_TYPE_CPU : CL_DEVICE_TYPE_GPU;
+        for (int i = 0; i < n && pick < 0; i++) {
+            cl_device_type dt;
+            if (clGetDeviceInfo(dev[i], CL_DEVICE_TYPE, sizeof dt, &dt, NULL) == CL_SUCCESS &&
+                (dt & t))
+                pick = i;
+        }
+        if (pick < 0 && !strcmp(want, "gpu"))
+            gr_error(g, "-device gpu: no GPU OpenCL device found (%d device(s) present)", n);
+        if (pick < 0)
+            pick = 0;
+    } else {
+        char *end;
+        long k = strtol(want, &end, 10);
+        if (*end || end == want || k < 0 || k >= n)
+            gr_error(g, "-device '%s': expected cpu, gpu or a device index 0..%d", want, n - 1);
+        pick = (int)k;
+    }
+    o->platform = plat[pick];
+    o->device = dev[pick];
+    OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_NAME, sizeof o->name, o->name, NULL));
+    char drv[128] = "", pv[120] = "";
+    OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DRIVER_VERSION, sizeof drv, drv, NULL));
+    OCL_CHECK(g, clGetPlatformInfo(o->platform, CL_PLATFORM_VERSION, sizeof pv, pv, NULL));
+    snprintf(o->version, sizeof o->version, "%s / %s", drv, pv);
+    cl_device_type dt;
+    OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_TYPE, sizeof dt, &dt, NULL));
+    o->is_gpu = (dt & CL_DEVICE_TYPE_GPU) != 0;
+    char ext[4096] = "";
+    clGetDeviceInfo(o->device, CL_DEVICE_EXTENSIONS, sizeof ext, ext, NULL);
+    ext[sizeof ext - 1] = '\0';
+    o->fp64 = strstr(ext, "cl_khr_fp64") != NULL;
+    cl_int err;
+    o->ctx = clCreateContext(NULL, 1, &o->device, NULL, NULL, &err);
+    ocl_check(g, err, "clCreateContext");
+    o->queue = clCreateCommandQueue(o->ctx, o->device, 0, &err);
+    ocl_check(g, err, "clCreateCommandQueue");
+}
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t i = 0; i < n; i++) {
+        h ^= c[i];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+int ocl_cache_dir(char *buf, size_t n)
+{
+    const char *d = getenv("GRAVEL_CACHE_DIR");
+    if (d && *d) {
+        snprintf(buf, n, "%s", d);
+        return 1;
+    }
+    d = getenv("XDG_CACHE_HOME");
+    if (d && *d) {
+        snprintf(buf, n, "%s/gravel", d);
+        return 1;
+    }
+    d = getenv("HOME");
+    if (d && *d) {
+        snprintf(buf, n, "%s/.cache/gravel", d);
+        return 1;
+    }
+    return 0;
+}
+
+/* mkdir -p for the cache directory; failures only disable the cache. */
+static int make_dirs(const char *path)
+{
+    char tmp[1024];
+    snprintf(tmp, sizeof tmp, "%s", path);
+    for (char *p = tmp + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(tmp, 0755) != 0 && errno != EEXIST)
+                return 0;
+            *p = '/';
+        }
+    return mkdir(tmp, 0755) == 0 || errno == EEXIST;
+}
+
+static unsigned char *read_file(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return NULL;
+    unsigned char *buf = NULL;
+    if (fseek(fp, 0, SEEK_END) == 0) {
+        long n = ftell(fp);
+        if (n > 0 && fseek(fp, 0, SEEK_SET) == 0) {
+            buf = malloc((size_t)n);
+            if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+                free(buf);
+                buf = NULL;
+            }
+            *len = (size_t)n;
+        }
+    }
+    fclose(fp);
+    return buf;
+}
+
+static void write_cache(struct ocl *o, const char *dir, const char *path)
+{
+    size_t len = 0;
+    if (clGetProgramInfo(o->program, CL_PROGRAM_BINARY_SIZES, sizeof len, &len, NULL) !=
+            CL_SUCCESS || len == 0)
+        return;
+    unsigned char *bin = malloc(len);
+    if (!bin)
+        return;
+    unsigned char *bins[1] = {bin};
+    if (clGetProgramInfo(o->program, CL_PROGRAM_BINARIES, sizeof bins, bins, NULL) == CL_SUCCESS &&
+        make_dirs(dir)) {
+        char tmp[1100];
+        snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
+        FILE *fp = fopen(tmp, "wb");
+        if (fp) {
+            int ok = fwrite(bin, 1, len, fp) == len;
+            ok = (fclose(fp) == 0) && ok;
+            if (!ok || rename(tmp, path) != 0)
+                remove(tmp);
+        }
+    }
+    free(bin);
+}
+
+/* Map a line number of the concatenated source back to its file. */
+static const char *source_of_line(int n, const char *const *names, const char *const *texts,
+                                  long line, long *local)
+{
+    long start = 1;
+    for (int i = 0; i < n; i++) {
+        long lines = 0;
+        for (const char *c = texts[i]; *c; c++)
+            lines += *c == '\n';
+        lines += 1; /* the separator newline */
+        if (line < start + lines) {
+            *local = line - start + 1;
+            return names[i];
+        }
+        start += lines;
+    }
+    *local = line;
+    return "?";
+}
+
+void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
+               const char *const *texts, const char *options)
+{
+    uint64_t key = 1469598103934665603ull;
+    for (int i = 0; i < n; i++) {
+        key = fnv(key, names[i], strlen(names[i]) + 1);
+        key = fnv(key, texts[i], strlen(texts[i]) + 1);
+    }
+    key = fnv(key, options, strlen(options) + 1);
+    key = fnv(key, o->name, strlen(o->name) + 1);
+    key = fnv(key, o->version, strlen(o->version) + 1);
+    o->cache_hit = 0;
+    if (o->program && o->program_key == key) {
+        o->cache_hit = 1;
+        return;
+    }
+    if (o->program) {
+        clReleaseProgram(o->program);
+        o->program = NULL;
+    }
+    char dir[900], path[1000];
+    int use_cache = ocl_cache_dir(dir, sizeof dir);
+    if (use_cache)
+        snprintf(path, sizeof path, "%s/%016llx.bin", dir, (unsigned long long)key);
+    cl_int err;
+    if (use_cache) {
+        size_t len = 0;
+        unsigned char *bin = read_file(path, &len);
+        if (bin) {
+            const unsigned char *bins[1] = {bin};
+            cl_int st;
+            cl_program p = clCreateProgramWithBinary(o->ctx, 1, &o->device, &len, bins, &st, &err);
+            free(bin);
+            if (p && err == CL_SUCCESS && st == CL_SUCCESS &&
+                clBuildProgram(p, 1, &o->device, options, NULL, NULL) == CL_SUCCESS) {
+                o->program = p;
+                o->program_key = key;
+                o->cache_hit = 1;
+                return;
+            }
+            if (p)
+                clReleaseProgram(p);
+        }
+    }
+    /* concatenate with a newline between files */
+    size_t total = 1;
+    for (int i = 0; i < n; i++)
+        total += strlen(texts[i]) + 1;
+    char *src = gr_malloc(g, total), *w = src;
+    for (int i = 0; i < n; i++) {
+        size_t l = strlen(texts[i]);
+        memcpy(w, texts[i], l);
+        w += l;
+        *w++ = '\n';
+    }
+    *w = '\0';
+    const char *srcs[1] = {src};
+    cl_program p = clCreateProgramWithSource(o->ctx, 1, srcs, NULL, &err);
+    free(src);
+    ocl_check(g, err, "clCreateProgramWithSource");
+    err = clBuildProgram(p, 1, &o->device, options, NULL, NULL);
+    if (err != CL_SUCCESS) {
+        size_t len = 0;
+        clGetProgramBuildInfo(p, o->device, CL_PROGRAM_BUILD_LOG, 0, NULL, &len);
+        char *log = calloc(len + 1, 1);
+        if (log)
+            clGetProgramBuildInfo(p, o->device, CL_PROGRAM_BUILD_LOG, len, log, NULL);
+        clReleaseProgram(p);
+        /* find the first "<source>:LINE:" reference to name the style's file */
+        const char *file = "?";
+        long local = 0;
+        const char *m = log ? strstr(log, ":") : NULL;
+        while (m) {
+            char *end;
+            long line = strtol(m + 1, &end, 10);
+            if (end != m + 1 && *end == ':') {
+                file = source_of_line(n, names, texts, line, &local);
+                break;
+            }
+            m = strchr(m + 1, ':');
+        }
+        char shortlog[700];
+        snprintf(shortlog, sizeof shortlog, "%s", log ? log : "(no log)");
+        if (g->screen)
+            fprintf(stderr, "OpenCL build log:\n%s\n", log ? log : "(no log)");
+        if (g->logfile)
+            fprintf(g->logfile, "OpenCL build log:\n%s\n", log ? log : "(no log)");
+        free(log);
+        gr_error(g, "OpenCL program build failed (%s) in kernels/%s line %ld, options '%s': %s",
+                 ocl_errname(err), file, local, options, shortlog);
+    }
+    o->program = p;
+    o->program_key = key;
+    if (use_cache)
+        write_cache(o, dir, path);
+}
+
+cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name)
+{
+    cl_int err;
+    cl_kernel k = clCreateKernel(o->program, name, &err);
+    if (err != CL_SUCCESS)
+        gr_error(g, "OpenCL clCreateKernel(%s) failed: %s", name, ocl_errname(err));
+    return k;
+}
+
+cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what)
+{
+    cl_int err;
+    cl_mem m = clCreateBuffer(o->ctx, CL_MEM_READ_WRITE, bytes ? bytes : 16, NULL, &err);
+    if (err != CL_SUCCESS)
+        gr_error(g, "OpenCL clCreateBuffer for %s (%zu bytes) failed: %s", what, bytes,
+                 ocl_errname(err));
+    return m;
+}
+
+void ocl_release(struct ocl *o)
+{
+    if (o->program)
+        clReleaseProgram(o->program);
+    if (o->queue)
+        clReleaseCommandQueue(o->queue);
+    if (o->ctx)
+        clReleaseContext(o->ctx);
+    memset(o, 0, sizeof *o);
+}

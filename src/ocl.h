@@ -1,0 +1,58 @@
+/* ocl.h - the OpenCL layer: device choice, checked calls, program build with
+ * an on-disk binary cache.
+ *
+ * Every OpenCL call goes through OCL_CHECK (or ocl_check), which raises a
+ * gr_error naming the call and the CL error name. One struct ocl per engine;
+ * ocl_release() frees everything it created. */
+#ifndef GR_OCL_H
+#define GR_OCL_H
+
+#define CL_TARGET_OPENCL_VERSION 120
+#include <CL/cl.h>
+
+#include "gravel.h"
+
+struct ocl {
+    cl_platform_id platform;
+    cl_device_id device;
+    cl_context ctx;
+    cl_command_queue queue;
+    cl_program program;         /* the run's program (NULL until ocl_build) */
+    uint64_t program_key;       /* hash of sources + options + device of `program` */
+    char name[256];             /* device name as the driver reports it */
+    char version[256];          /* driver + platform version (part of the cache key) */
+    int is_gpu;
+    int fp64;                   /* device supports cl_khr_fp64 */
+    int cache_hit;              /* last ocl_build loaded a cached binary */
+};
+
+/* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */
+const char *ocl_errname(cl_int err);
+/* Raise "<call> failed: <CL error name>" unless err == CL_SUCCESS. */
+void ocl_check(struct gravel *g, cl_int err, const char *call);
+#define OCL_CHECK(g, call) ocl_check((g), (call), #call)
+
+/* Pick the device: `want` is "", "cpu", "gpu" or a device index over all
+ * platforms; "" falls back to env GRAVEL_DEVICE and then to the first CPU
+ * device (PoCL), else the first device. Creates context and in-order queue. */
+void ocl_init(struct gravel *g, struct ocl *o, const char *want);
+
+/* Build (or load from the cache) one program from `n` named sources
+ * concatenated in order, with compiler `options`. A build failure raises an
+ * error with the compiler log, naming the source file the first error line
+ * points into. No-op when the current program has the same key. */
+void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
+               const char *const *texts, const char *options);
+
+/* Kernel `name` of the current program (checked). */
+cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name);
+/* Checked buffer allocation; size 0 allocates a minimal buffer. */
+cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what);
+/* Release every object (safe on a zeroed or partly built struct). */
+void ocl_release(struct ocl *o);
+
+/* Directory of the program cache (env GRAVEL_CACHE_DIR, else
+ * $XDG_CACHE_HOME/gravel, else ~/.cache/gravel) into buf; 0 if none. */
+int ocl_cache_dir(char *buf, size_t n);
+
+#endif

@@ -1,0 +1,118 @@
+/* fix_gravity.c - `fix ID group gravity magnitude style args`: a constant
+ * acceleration, LAMMPS fix_gravity.cpp semantics (kernels/fix_gravity.cl):
+ *   chute angle            phi = 0, theta = 180 - angle
+ *   spherical phi theta    (degrees) 3d: (sin t cos p, sin t sin p, cos t)
+ *                          2d: (sin t, cos t, 0)
+ *   vector x y z           normalized direction
+ * Acceleration = magnitude x direction; the force on atom i is m_i times it
+ * (force/mass units: ftm2v = 1 in lj, si and cgs). Variable magnitudes and
+ * the gradient style are not supported (clear error). */
+#include <math.h>
+#include <string.h>
+
+#include "args.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+
+struct grav {
+    double acc[3];
+    cl_kernel post;
+};
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 2)
+        gr_error(g, "fix gravity expects magnitude and a style (chute, spherical, vector)");
+    if (!strncmp(argv[0], "v_", 2))
+        gr_error(g, "fix gravity: variable magnitude '%s' is not supported", argv[0]);
+    double mag = arg_double(g, argv[0], "gravity magnitude");
+    double dir[3] = {0, 0, 0};
+    double theta = 0, phi = 0;
+    const double d2r = M_PI / 180.0;
+    int dim = g->dom.dimension;
+    int used;
+    for (int i = 1; i < argc; i++)
+        if (!strncmp(argv[i], "v_", 2))
+            gr_error(g, "fix gravity: variable argument '%s' is not supported", argv[i]);
+    if (!strcmp(argv[1], "chute")) {
+        arg_need(g, argc, 1, 1, "chute");
+        double vert = arg_double(g, argv[2], "chute angle");
+        phi = 0.0;
+        theta = 180.0 - vert;
+        used = 3;
+    } else if (!strcmp(argv[1], "spherical")) {
+        arg_need(g, argc, 1, 2, "spherical");
+        phi = arg_double(g, argv[2], "phi");
+        theta = arg_double(g, argv[3], "theta");
+        used = 4;
+    } else if (!strcmp(argv[1], "vector")) {
+        arg_need(g, argc, 1, 3, "vector");
+        for (int d = 0; d < 3; d++)
+            dir[d] = arg_double(g, argv[2 + d], "vector component");
+        if (dim == 2 && dir[2] != 0.0)
+            gr_error(g, "fix gravity vector must have z = 0 for a 2d simulation");
+        used = 5;
+    } else if (!strcmp(argv[1], "gradient")) {
+        gr_error(g, "fix gravity style gradient is not supported");
+    } else {
+        gr_error(g, "unknown fix gravity style '%.64s' (expected chute, spherical or vector)",
+                 argv[1]);
+    }
+    if (argc > used)
+        gr_error(g, "unexpected fix gravity argument '%.64s'", argv[used]);
+    double gv[3];
+    if (strcmp(argv[1], "vector")) {
+        if (dim == 3) {
+            gv[0] = sin(d2r * theta) * cos(d2r * phi);
+            gv[1] = sin(d2r * theta) * sin(d2r * phi);
+            gv[2] = cos(d2r * theta);
+        } else {
+            gv[0] = sin(d2r * theta);
+            gv[1] = cos(d2r * theta);
+            gv[2] = 0.0;
+        }
+    } else {
+        double len = dim == 3 ? sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2])
+                              : sqrt(dir[0] * dir[0] + dir[1] * dir[1]);
+        if (len == 0.0)
+            gr_error(g, "fix gravity vector has zero length");
+        gv[0] = dir[0] / len;
+        gv[1] = dir[1] / len;
+        gv[2] = dim == 3 ? dir[2] / len : 0.0;
+    }
+    struct grav *gr = gr_calloc(g, 1, sizeof *gr);
+    f->data = gr;
+    for (int d = 0; d < 3; d++)
+        gr->acc[d] = mag * gv[d];
+    f->hooks = HOOK_POST_FORCE;
+    f->sources[f->nsources++] = "fix_gravity.cl";
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    ((struct grav *)f->data)->post = eng_kernel(g, "gravity_post_force");
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    struct grav *gr = f->data;
+    struct dev_atoms *a = eng_atoms(g);
+    cl_kernel k = gr->post;
+    eng_arg_int(g, k, 0, a->n);
+    eng_arg_uint(g, k, 1, f->groupbit);
+    eng_arg_mem(g, k, 2, a->mask);
+    eng_arg_mem(g, k, 3, a->rmass);
+    eng_arg_mem(g, k, 4, a->f);
+    eng_arg_real(g, k, 5, gr->acc[0]);
+    eng_arg_real(g, k, 6, gr->acc[1]);
+    eng_arg_real(g, k, 7, gr->acc[2]);
+    eng_launch(g, k, (size_t)a->n);
+}
+
+const struct fix_style fix_style_gravity = {
+    .name = "gravity",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+};

@@ -1,0 +1,83 @@
+/* fix_nve_sphere.c - `fix ID group nve/sphere [update dipole|dipole/dlm]
+ * [disc]`: LAMMPS' velocity Verlet for finite-size spheres (kernels in
+ * kernels/fix_nve_sphere.cl). Only the plain sphere update is supported;
+ * the dipole and disc options are rejected with a clear error. */
+#include <string.h>
+
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "update") || !strcmp(argv[i], "disc"))
+            gr_error(g, "fix nve/sphere keyword '%s' is not supported (point dipoles and 2d "
+                        "discs are not modeled)", argv[i]);
+        gr_error(g, "unknown fix nve/sphere keyword '%.64s'", argv[i]);
+    }
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->needs = NEED_ROTATION;
+    f->sources[f->nsources++] = "fix_nve_sphere.cl";
+}
+
+struct kern {
+    cl_kernel ini, fin;
+};
+
+static void init(struct gravel *g, struct fix *f)
+{
+    if (!f->data)
+        f->data = gr_calloc(g, 1, sizeof(struct kern));
+    struct kern *k = f->data;
+    k->ini = eng_kernel(g, "nve_sphere_initial");
+    k->fin = eng_kernel(g, "nve_sphere_final");
+}
+
+static void initial_integrate(struct gravel *g, struct fix *f)
+{
+    struct kern *k = f->data;
+    struct dev_atoms *a = eng_atoms(g);
+    struct engine *e = g->eng;
+    cl_mem om = e->rotation ? a->omega : a->v, tq = e->rotation ? a->torque : a->f;
+    eng_arg_int(g, k->ini, 0, a->n);
+    eng_arg_uint(g, k->ini, 1, f->groupbit);
+    eng_arg_mem(g, k->ini, 2, a->mask);
+    eng_arg_mem(g, k->ini, 3, a->x);
+    eng_arg_mem(g, k->ini, 4, a->v);
+    eng_arg_mem(g, k->ini, 5, a->f);
+    eng_arg_mem(g, k->ini, 6, om);
+    eng_arg_mem(g, k->ini, 7, tq);
+    eng_arg_mem(g, k->ini, 8, a->radius);
+    eng_arg_mem(g, k->ini, 9, a->rmass);
+    eng_arg_real(g, k->ini, 10, g->dt);
+    eng_arg_real(g, k->ini, 11, 0.5 * g->dt);
+    eng_launch(g, k->ini, (size_t)a->n);
+}
+
+static void final_integrate(struct gravel *g, struct fix *f)
+{
+    struct kern *k = f->data;
+    struct dev_atoms *a = eng_atoms(g);
+    struct engine *e = g->eng;
+    cl_mem om = e->rotation ? a->omega : a->v, tq = e->rotation ? a->torque : a->f;
+    eng_arg_int(g, k->fin, 0, a->n);
+    eng_arg_uint(g, k->fin, 1, f->groupbit);
+    eng_arg_mem(g, k->fin, 2, a->mask);
+    eng_arg_mem(g, k->fin, 3, a->v);
+    eng_arg_mem(g, k->fin, 4, a->f);
+    eng_arg_mem(g, k->fin, 5, om);
+    eng_arg_mem(g, k->fin, 6, tq);
+    eng_arg_mem(g, k->fin, 7, a->radius);
+    eng_arg_mem(g, k->fin, 8, a->rmass);
+    eng_arg_real(g, k->fin, 9, 0.5 * g->dt);
+    eng_launch(g, k->fin, (size_t)a->n);
+}
+
+const struct fix_style fix_style_nve_sphere = {
+    .name = "nve/sphere",
+    .create = create,
+    .init = init,
+    .initial_integrate = initial_integrate,
+    .final_integrate = final_integrate,
+};

@@ -1,0 +1,79 @@
+/* pair_gran_common.c - arguments and parameter packing shared by the three
+ * LAMMPS granular pair styles (gran/hooke, gran/hooke/history,
+ * gran/hertz/history), with LAMMPS 2021 semantics (pair_gran_hooke_history.cpp
+ * settings()): Kn Kt gamman gammat xmu dampflag [limit_damping];
+ * Kt NULL -> 2/7 Kn, gammat NULL -> gamman / 2, dampflag 0 -> gammat = 0. */
+#include <math.h>
+#include <string.h>
+
+#include "args.h"
+#include "error.h"
+#include "pair.h"
+
+enum { C_KN, C_KT, C_GAMMAN, C_GAMMAT, C_XMU, C_DAMPFLAG, C_LIMIT };
+
+void pair_gran_settings(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    const char *name = p->style->name;
+    if (argc != 6 && argc != 7)
+        gr_error(g, "pair_style %s expects Kn Kt gamman gammat xmu dampflag [limit_damping], "
+                    "got %d argument(s)", name, argc);
+    double kn = arg_nonneg(g, argv[0], "Kn");
+    double kt = !strcmp(argv[1], "NULL") ? kn * 2.0 / 7.0 : arg_nonneg(g, argv[1], "Kt");
+    double gamman = arg_nonneg(g, argv[2], "gamma_n");
+    double gammat =
+        !strcmp(argv[3], "NULL") ? 0.5 * gamman : arg_nonneg(g, argv[3], "gamma_t");
+    double xmu = arg_nonneg(g, argv[4], "xmu");
+    if (xmu > 10000.0)
+        gr_error(g, "xmu must be between 0 and 10000, got %g", xmu);
+    int dampflag = arg_int_range(g, argv[5], 0, 1, "dampflag");
+    if (dampflag == 0)
+        gammat = 0.0;
+    int limit = 0;
+    if (argc == 7) {
+        if (strcmp(argv[6], "limit_damping"))
+            gr_error(g, "unknown pair_style %s keyword '%.64s' (expected limit_damping)", name,
+                     argv[6]);
+        limit = 1;
+    }
+    p->coef[C_KN] = kn;
+    p->coef[C_KT] = kt;
+    p->coef[C_GAMMAN] = gamman;
+    p->coef[C_GAMMAT] = gammat;
+    p->coef[C_XMU] = xmu;
+    p->coef[C_DAMPFLAG] = dampflag;
+    p->coef[C_LIMIT] = limit;
+}
+
+void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param)
+{
+    (void)itype;
+    (void)jtype;
+    param[GRAN_KN] = p->coef[C_KN];
+    param[GRAN_KT] = p->coef[C_KT];
+    param[GRAN_GAMMAN] = p->coef[C_GAMMAN];
+    param[GRAN_GAMMAT] = p->coef[C_GAMMAT];
+    param[GRAN_XMU] = p->coef[C_XMU];
+    param[GRAN_LIMIT] = p->coef[C_LIMIT];
+}
+
+/* Half period of the damped linear oscillator of two equal spheres
+ * (meff = m/2): pi / sqrt(kn/meff - (gamman/2)^2); for Hertz, kn is scaled by
+ * sqrt(delta r/2) at the maximum overlap of an undamped impact at speed vn. */
+double pair_gran_collision_time(const struct pair *p, double m, double r, double vn)
+{
+    double meff = 0.5 * m, kn = p->coef[C_KN], gn = p->coef[C_GAMMAN];
+    if (!strcmp(p->style->name, "gran/hertz/history")) {
+        /* Hertz: F = kn sqrt(reff) delta^1.5, reff = r/2; delta_max from energy */
+        double reff = 0.5 * r;
+        double k = kn * sqrt(reff);
+        if (vn <= 0)
+            vn = 1e-3 * sqrt(kn * r * r / m);
+        double dmax = pow(1.25 * meff * vn * vn / k, 0.4);
+        kn = k * sqrt(dmax);
+    }
+    double w2 = kn / meff - 0.25 * gn * gn;
+    if (w2 <= 0)
+        return INFINITY;
+    return M_PI / sqrt(w2);
+}

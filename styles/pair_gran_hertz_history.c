@@ -1,0 +1,18 @@
+/* pair_gran_hertz_history.c - pair_style gran/hertz/history: LAMMPS granular contact
+ * (kernels/pair_gran_hertz_history.cl holds the evaluator; arguments are shared with
+ * the other gran styles, styles/pair_gran_common.c). */
+#include "pair.h"
+
+double pair_gran_collision_time(const struct pair *p, double m, double r, double vn);
+
+const struct pair_style pair_style_gran_hertz_history = {
+    .name = "gran/hertz/history",
+    .source = "pair_gran_hertz_history.cl",
+    .eval = "gran_hertz_history_eval",
+    .history = 1,
+    .rotation = 1,
+    .nparam = GRAN_NPARAM,
+    .settings = pair_gran_settings,
+    .pack = pair_gran_pack,
+    .collision_time = pair_gran_collision_time,
+};
