@@ -3,7 +3,11 @@
  *
  * Contract: each command runs inside a setjmp boundary. On error the message
  * (g->err.msg) and offending line are reported to screen and log and the
- * reader stops: the functions return GR_ERR. `quit` returns GR_QUIT. */
+ * reader stops: the functions return GR_ERR. `quit` returns GR_QUIT.
+ *
+ * Sources form a stack (include pushes a file, jump replaces or rewinds the
+ * current one); inp_file/inp_stream/inp_string run until the source they
+ * pushed is exhausted, so they may be called again from inside a command. */
 #ifndef GR_INPUT_H
 #define GR_INPUT_H
 
@@ -21,5 +25,32 @@ int inp_file(struct gravel *g, const char *path);
 int inp_stream(struct gravel *g, FILE *fp, const char *name);
 /* Execute script text held in memory (tests); `name` is used in messages. */
 int inp_string(struct gravel *g, const char *text, const char *name);
+
+/* ---- used by the flow commands (cmd_flow.c) ---- */
+
+/* Push script file `path` on the source stack (include). */
+void inp_include(struct gravel *g, const char *path);
+/* jump: `file` = "SELF" rewinds the current source, else it replaces the
+ * current source; with `label` non-NULL, commands are skipped until
+ * `label <label>`. Honours the skip flag set by an exhausted `next`. */
+void inp_jump(struct gravel *g, const char *file, const char *label);
+/* `next` found an exhausted variable: the next jump is skipped. */
+void inp_skip_next_jump(struct gravel *g);
+/* `quit`: stop reading after this command with exit status `status`. */
+void inp_quit(struct gravel *g, int status);
+/* Exit status given to `quit` (0 when none). */
+int inp_quit_status(const struct gravel *g);
+/* Substitute $x ${name} $(expr[:fmt]) everywhere in `text` (quotes are not
+ * special here; `print` uses this). The result stays valid until the next
+ * call. */
+const char *inp_substitute(struct gravel *g, const char *text);
+
+/* ---- limits for the fuzz harness (0 = unlimited, the default) ---- */
+
+/* Refuse commands for which allow(name) returns 0 (error "not allowed"),
+ * stop after max_commands commands, and refuse lines that grow beyond
+ * max_line bytes after substitution. */
+void inp_set_limits(struct gravel *g, int (*allow)(const char *name), long max_commands,
+                    size_t max_line);
 
 #endif

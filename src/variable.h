@@ -1,5 +1,10 @@
 /* variable.h - script variables (equal, string, index, loop, format, getenv)
- * and the expression evaluator behind equal-style variables and $(...). */
+ * and the expression evaluator behind equal-style variables and $(...).
+ *
+ * Semantics follow LAMMPS: redefining an index or loop variable that exists is
+ * silently ignored (so -var on the command line wins over the script), string,
+ * equal, format and getenv variables are replaced, and redefining a variable
+ * with a different style is an error. */
 #ifndef GR_VARIABLE_H
 #define GR_VARIABLE_H
 
@@ -10,12 +15,38 @@ void var_destroy(struct vars *v);
 
 /* Define an index variable from the command line (-var NAME V1 V2 ...). */
 void var_set_index(struct gravel *g, const char *name, int n, char **values);
+/* The `variable` command: argv[0] = name, argv[1] = style or "delete", then
+ * the style's arguments. Raises gr_error on any invalid input. */
+void var_define(struct gravel *g, int argc, char **argv);
+/* Advance an index or loop variable (the `next` command). Returns 1 when it
+ * had no more values: it has then been deleted, as in LAMMPS. */
+int var_next(struct gravel *g, const char *name);
 /* Current value as text (equal-style variables are evaluated), or NULL when
  * no variable has that name. The text stays valid until the next call. */
 const char *var_retrieve(struct gravel *g, const char *name);
 /* Numeric value of variable `name`; error if undefined or not numeric. */
 double var_compute_equal(struct gravel *g, const char *name);
+/* Print every variable (name, style, value) with gr_print, for `info`. */
+void var_print_all(struct gravel *g);
+/* Number of defined variables. */
+int var_count(const struct gravel *g);
+
 /* Evaluate an expression as in equal-style variables. */
 double expr_eval(struct gravel *g, const char *text);
+/* Check that `fmt` is a printf format with exactly one double conversion
+ * (%f %e %g %E %G with flags, width <= 999, precision <= 999) and no other
+ * conversions except %%; returns 1 if valid. Used by format variables and
+ * $(expr:fmt). */
+int expr_format_ok(const char *fmt);
+
+/* Random numbers for random()/normal(): one GSL mt19937 stream per seed,
+ * created on first use with that seed and continued on later calls, so a
+ * script gives the same sequence every time. seed must be > 0. */
+double var_random_uniform(struct gravel *g, long seed);
+double var_random_gaussian(struct gravel *g, long seed);
+
+/* Internal: evaluate with a nesting depth (v_name recursion guard). */
+double expr_eval_depth(struct gravel *g, const char *text, int depth);
+double var_compute_equal_depth(struct gravel *g, const char *name, int depth);
 
 #endif

@@ -1,0 +1,689 @@
+/* expr.c - the expression evaluator behind equal-style variables and $(...).
+ *
+ * A recursive-descent parser that evaluates as it parses, with LAMMPS'
+ * operators and precedence (lowest first):
+ *     || |^      &&      == !=      < <= > >=      + -      * / %      ^
+ *     unary - and !  (bind tighter than ^, so -2^2 = 4, as in LAMMPS)
+ * All binary operators are left-associative (2^3^2 = 64, as in LAMMPS).
+ * Operands: numbers, (expr), math functions, group functions on the host atom
+ * arrays, per-atom values x[ID] ..., constants (PI, version, on/off, yes/no,
+ * true/false), v_name, and anything thermo_keyword_value() knows (step, atoms,
+ * c_ID, c_ID[n], f_ID[n], ...). Errors quote the expression and never leave
+ * state behind: the parser allocates nothing. */
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atoms.h"
+#include "error.h"
+#include "output.h"
+#include "run.h"
+#include "variable.h"
+
+#define MAXDEPTH 200        /* parenthesis / operator nesting */
+#define MAXVARDEPTH 32      /* v_a -> v_b -> ... chains */
+#define BIG 1.0e20
+
+struct ep {
+    struct gravel *g;
+    const char *text;       /* whole expression, for messages */
+    const char *p;          /* cursor */
+    int depth;              /* current nesting */
+    int vdepth;             /* variable recursion level */
+};
+
+static double parse_or(struct ep *e);
+
+static _Noreturn void ep_fail(struct ep *e, const char *what)
+{
+    size_t len = strlen(e->text);
+    gr_error(e->g, "%s in expression '%.*s%s'", what, len > 120 ? 120 : (int)len, e->text,
+             len > 120 ? "..." : "");
+}
+
+static void skip_ws(struct ep *e)
+{
+    while (*e->p == ' ' || *e->p == '\t' || *e->p == '\n' || *e->p == '\r')
+        e->p++;
+}
+
+/* Next operator token; advances past it when it matches. */
+static int accept(struct ep *e, const char *op)
+{
+    skip_ws(e);
+    size_t n = strlen(op);
+    if (strncmp(e->p, op, n) != 0)
+        return 0;
+    /* "<" must not eat "<=", "|" alone is not an operator */
+    if (n == 1 && (op[0] == '<' || op[0] == '>' || op[0] == '!' || op[0] == '=') &&
+        e->p[1] == '=')
+        return 0;
+    e->p += n;
+    return 1;
+}
+
+static void enter(struct ep *e)
+{
+    if (++e->depth > MAXDEPTH)
+        ep_fail(e, "nesting deeper than 200 levels");
+}
+
+/* ---- group and atom functions ---------------------------------------------- */
+
+static int group_bit(struct ep *e, const char *name)
+{
+    struct gravel *g = e->g;
+    for (int i = 0; i < GR_MAXGROUP; i++)
+        if (g->groups.used[i] && strcmp(g->groups.name[i], name) == 0)
+            return i;
+    char msg[160];
+    snprintf(msg, sizeof msg, "unknown group '%.64s'", name);
+    ep_fail(e, msg);
+}
+
+static int dim_index(struct ep *e, const char *s)
+{
+    if (strcmp(s, "x") == 0)
+        return 0;
+    if (strcmp(s, "y") == 0)
+        return 1;
+    if (strcmp(s, "z") == 0)
+        return 2;
+    char msg[160];
+    snprintf(msg, sizeof msg, "expected x, y or z, got '%.64s'", s);
+    ep_fail(e, msg);
+}
+
+static double atom_mass(const struct atoms *a, int i)
+{
+    if (a->rmass && a->rmass[i] > 0)
+        return a->rmass[i];
+    if (a->type_mass && a->type[i] >= 1 && a->type[i] <= a->ntypes)
+        return a->type_mass[a->type[i]];
+    return 0;
+}
+
+/* count(group), mass(group), xcm(group,dim), vcm(group,dim), bound(group,dir). */
+static double group_function(struct ep *e, const char *fn, int nargs, char args[][GR_NAMELEN])
+{
+    struct gravel *g = e->g;
+    int want = (strcmp(fn, "count") == 0 || strcmp(fn, "mass") == 0) ? 1 : 2;
+    if (nargs != want) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "%s() takes %d argument%s, got %d", fn, want,
+                 want == 1 ? "" : "s", nargs);
+        ep_fail(e, msg);
+    }
+    unsigned bit = 1u << group_bit(e, args[0]);
+    run_sync_host(g);
+    const struct atoms *a = &g->atoms;
+    if (strcmp(fn, "count") == 0) {
+        double n = 0;
+        for (int i = 0; i < a->n; i++)
+            n += (a->mask[i] & bit) != 0;
+        return n;
+    }
+    if (strcmp(fn, "mass") == 0) {
+        double m = 0;
+        for (int i = 0; i < a->n; i++)
+            if (a->mask[i] & bit)
+                m += atom_mass(a, i);
+        return m;
+    }
+    if (strcmp(fn, "xcm") == 0 || strcmp(fn, "vcm") == 0) {
+        int d = dim_index(e, args[1]);
+        int pos = fn[0] == 'x';
+        double prd = g->dom.hi[d] - g->dom.lo[d];
+        double m = 0, s = 0;
+        for (int i = 0; i < a->n; i++) {
+            if (!(a->mask[i] & bit))
+                continue;
+            double mi = atom_mass(a, i);
+            double val;
+            if (pos) /* unwrapped through periodic images, as LAMMPS' unmap */
+                val = a->x[3 * i + d] + (g->dom.periodic[d] ? a->image[3 * i + d] * prd : 0);
+            else
+                val = a->v[3 * i + d];
+            m += mi;
+            s += mi * val;
+        }
+        return m > 0 ? s / m : 0.0;
+    }
+    if (strcmp(fn, "bound") == 0) {
+        static const char *dirs[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+        int k = -1;
+        for (int j = 0; j < 6; j++)
+            if (strcmp(args[1], dirs[j]) == 0)
+                k = j;
+        if (k < 0) {
+            char msg[200];
+            snprintf(msg, sizeof msg,
+                     "bound() direction must be xmin xmax ymin ymax zmin zmax, got '%.64s'",
+                     args[1]);
+            ep_fail(e, msg);
+        }
+        int d = k / 2, mx = k % 2;
+        double v = mx ? -BIG : BIG; /* empty group: LAMMPS' BIG sentinels */
+        for (int i = 0; i < a->n; i++)
+            if (a->mask[i] & bit) {
+                double x = a->x[3 * i + d];
+                if (mx ? x > v : x < v)
+                    v = x;
+            }
+        return v;
+    }
+    ep_fail(e, "internal: unknown group function");
+}
+
+static int is_group_function(const char *name)
+{
+    return !strcmp(name, "count") || !strcmp(name, "mass") || !strcmp(name, "xcm") ||
+           !strcmp(name, "vcm") || !strcmp(name, "bound");
+}
+
+/* x[ID] y z vx vy vz fx fy fz radius mass type id [ID]. */
+static int is_atom_value(const char *name)
+{
+    static const char *names[] = {"x", "y", "z", "vx", "vy", "vz", "fx", "fy", "fz",
+                                  "radius", "mass", "type", "id", NULL};
+    for (int i = 0; names[i]; i++)
+        if (strcmp(name, names[i]) == 0)
+            return 1;
+    return 0;
+}
+
+static double atom_value(struct ep *e, const char *name, double idv)
+{
+    struct gravel *g = e->g;
+    char msg[200];
+    if (!(idv >= 1 && idv <= 9.0e18) || idv != floor(idv)) {
+        snprintf(msg, sizeof msg, "%s[] needs a positive integer atom ID, got %g", name, idv);
+        ep_fail(e, msg);
+    }
+    int64_t tag = (int64_t)idv;
+    run_sync_host(g);
+    const struct atoms *a = &g->atoms;
+    int i = atoms_find_tag(a, tag);
+    if (i < 0) {
+        snprintf(msg, sizeof msg, "atom ID %lld in %s[] does not exist", (long long)tag, name);
+        ep_fail(e, msg);
+    }
+    if (!strcmp(name, "x") || !strcmp(name, "y") || !strcmp(name, "z"))
+        return a->x[3 * i + (name[0] - 'x')];
+    if (name[0] == 'v' && name[1])
+        return a->v[3 * i + (name[1] - 'x')];
+    if (name[0] == 'f' && name[1])
+        return a->f[3 * i + (name[1] - 'x')];
+    if (!strcmp(name, "radius"))
+        return a->radius[i];
+    if (!strcmp(name, "mass"))
+        return atom_mass(a, i);
+    if (!strcmp(name, "type"))
+        return a->type[i];
+    return (double)a->tag[i]; /* id */
+}
+
+/* ---- math functions --------------------------------------------------------- */
+
+static double round_half_up(double a) /* LAMMPS' MYROUND */
+{
+    return (a - floor(a)) >= 0.5 ? ceil(a) : floor(a);
+}
+
+static long seed_arg(struct ep *e, const char *fn, double s)
+{
+    if (!(s >= 1 && s <= 2147483647.0) || s != floor(s)) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "%s() seed must be a positive integer, got %g", fn, s);
+        ep_fail(e, msg);
+    }
+    return (long)s;
+}
+
+static double math_function(struct ep *e, const char *fn, int n, const double *a)
+{
+    static const struct {
+        const char *name;
+        int nargs;
+    } table[] = {{"sqrt", 1}, {"exp", 1},   {"ln", 1},    {"log", 1},   {"abs", 1},
+                 {"sin", 1},  {"cos", 1},   {"tan", 1},   {"asin", 1},  {"acos", 1},
+                 {"atan", 1}, {"atan2", 2}, {"ceil", 1},  {"floor", 1}, {"round", 1},
+                 {"random", 3}, {"normal", 3}, {NULL, 0}};
+    char msg[200];
+    int k = -1;
+    for (int i = 0; table[i].name; i++)
+        if (strcmp(fn, table[i].name) == 0)
+            k = i;
+    if (k < 0) {
+        snprintf(msg, sizeof msg, "unknown function '%.64s()'", fn);
+        ep_fail(e, msg);
+    }
+    if (n != table[k].nargs) {
+        snprintf(msg, sizeof msg, "%s() takes %d argument%s, got %d", fn, table[k].nargs,
+                 table[k].nargs == 1 ? "" : "s", n);
+        ep_fail(e, msg);
+    }
+    double x = a[0];
+    if (!strcmp(fn, "sqrt")) {
+        if (x < 0)
+            ep_fail(e, "sqrt() of a negative value");
+        return sqrt(x);
+    }
+    if (!strcmp(fn, "exp"))
+        return exp(x);
+    if (!strcmp(fn, "ln") || !strcmp(fn, "log")) {
+        if (!(x > 0))
+            ep_fail(e, fn[1] == 'n' ? "ln() of a zero or negative value"
+                                    : "log() of a zero or negative value");
+        return fn[1] == 'n' ? log(x) : log10(x);
+    }
+    if (!strcmp(fn, "abs"))
+        return fabs(x);
+    if (!strcmp(fn, "sin"))
+        return sin(x);
+    if (!strcmp(fn, "cos"))
+        return cos(x);
+    if (!strcmp(fn, "tan"))
+        return tan(x);
+    if (!strcmp(fn, "asin") || !strcmp(fn, "acos")) {
+        if (x < -1 || x > 1) {
+            snprintf(msg, sizeof msg, "%s() of %g, outside [-1, 1]", fn, x);
+            ep_fail(e, msg);
+        }
+        return fn[1] == 's' ? asin(x) : acos(x);
+    }
+    if (!strcmp(fn, "atan"))
+        return atan(x);
+    if (!strcmp(fn, "atan2"))
+        return atan2(a[0], a[1]);
+    if (!strcmp(fn, "ceil"))
+        return ceil(x);
+    if (!strcmp(fn, "floor"))
+        return floor(x);
+    if (!strcmp(fn, "round"))
+        return round_half_up(x);
+    if (!strcmp(fn, "random")) {
+        if (a[1] < a[0])
+            ep_fail(e, "random(lo,hi,seed) needs lo <= hi");
+        long seed = seed_arg(e, fn, a[2]);
+        return a[0] + (a[1] - a[0]) * var_random_uniform(e->g, seed);
+    }
+    /* normal(mu, sigma, seed) */
+    if (a[1] < 0)
+        ep_fail(e, "normal(mu,sigma,seed) needs sigma >= 0");
+    long seed = seed_arg(e, fn, a[2]);
+    return a[0] + a[1] * var_random_gaussian(e->g, seed);
+}
+
+/* ---- operands --------------------------------------------------------------- */
+
+static double parse_number(struct ep *e)
+{
+    const char *s = e->p;
+    const char *q = s;
+    while (isdigit((unsigned char)*q))
+        q++;
+    if (*q == '.') {
+        q++;
+        while (isdigit((unsigned char)*q))
+            q++;
+    }
+    if (q == s + 1 && *s == '.')
+        ep_fail(e, "a lone '.' is not a number");
+    if ((*q == 'e' || *q == 'E') &&
+        (isdigit((unsigned char)q[1]) ||
+         ((q[1] == '+' || q[1] == '-') && isdigit((unsigned char)q[2])))) {
+        q += 2;
+        while (isdigit((unsigned char)*q))
+            q++;
+    }
+    char buf[80];
+    size_t n = (size_t)(q - s);
+    if (n >= sizeof buf)
+        ep_fail(e, "number with more than 79 characters");
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+    e->p = q;
+    return strtod(buf, NULL);
+}
+
+/* Read an identifier [A-Za-z_][A-Za-z0-9_]* into buf; returns its length. */
+static size_t read_name(struct ep *e, char *buf, size_t cap)
+{
+    const char *s = e->p;
+    const char *q = s;
+    while (isalnum((unsigned char)*q) || *q == '_')
+        q++;
+    size_t n = (size_t)(q - s);
+    if (n >= cap)
+        ep_fail(e, "name longer than 63 characters");
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+    e->p = q;
+    return n;
+}
+
+/* Word arguments of a group function: group names and keywords, not expressions. */
+static int parse_word_args(struct ep *e, char args[][GR_NAMELEN], int max)
+{
+    int n = 0;
+    skip_ws(e);
+    if (accept(e, ")"))
+        return 0;
+    for (;;) {
+        skip_ws(e);
+        const char *s = e->p;
+        while (*e->p && *e->p != ',' && *e->p != ')' && !isspace((unsigned char)*e->p))
+            e->p++;
+        size_t len = (size_t)(e->p - s);
+        if (len == 0)
+            ep_fail(e, "empty function argument");
+        if (len >= GR_NAMELEN)
+            ep_fail(e, "function argument longer than 63 characters");
+        if (n == max)
+            ep_fail(e, "too many function arguments");
+        memcpy(args[n], s, len);
+        args[n][len] = '\0';
+        n++;
+        skip_ws(e);
+        if (accept(e, ","))
+            continue;
+        if (accept(e, ")"))
+            return n;
+        ep_fail(e, "missing ')' after function arguments");
+    }
+}
+
+static double parse_primary(struct ep *e)
+{
+    skip_ws(e);
+    char c = *e->p;
+    if (c == '\0')
+        ep_fail(e, "unexpected end");
+    if (isdigit((unsigned char)c) || c == '.')
+        return parse_number(e);
+    if (c == '(') {
+        e->p++;
+        enter(e);
+        double v = parse_or(e);
+        e->depth--;
+        if (!accept(e, ")"))
+            ep_fail(e, "missing ')'");
+        return v;
+    }
+    if (!(isalpha((unsigned char)c) || c == '_')) {
+        char msg[80];
+        if (isprint((unsigned char)c))
+            snprintf(msg, sizeof msg, "unexpected character '%c'", c);
+        else
+            snprintf(msg, sizeof msg, "unexpected byte 0x%02x", (unsigned char)c);
+        ep_fail(e, msg);
+    }
+    char name[GR_NAMELEN];
+    const char *start = e->p;
+    read_name(e, name, sizeof name);
+    char msg[240];
+
+    /* v_name: another variable, evaluated numerically */
+    if (name[0] == 'v' && name[1] == '_' && name[2]) {
+        if (*e->p == '[')
+            ep_fail(e, "vector variables v_name[i] are not supported");
+        return var_compute_equal_depth(e->g, name + 2, e->vdepth + 1);
+    }
+    /* c_ID, c_ID[n], f_ID[n]: served by the output module */
+    if ((name[0] == 'c' || name[0] == 'f') && name[1] == '_' && name[2]) {
+        if (*e->p == '[') {
+            const char *close = strchr(e->p, ']');
+            if (!close)
+                ep_fail(e, "missing ']'");
+            e->p = close + 1;
+        }
+        char ref[160];
+        size_t n = (size_t)(e->p - start);
+        if (n >= sizeof ref)
+            ep_fail(e, "reference longer than 159 characters");
+        memcpy(ref, start, n);
+        ref[n] = '\0';
+        double out;
+        if (!thermo_keyword_value(e->g, ref, &out)) {
+            snprintf(msg, sizeof msg, "unknown %s '%s'", name[0] == 'c' ? "compute" : "fix", ref);
+            ep_fail(e, msg);
+        }
+        return out;
+    }
+    skip_ws(e);
+    if (*e->p == '(') {
+        e->p++;
+        enter(e);
+        double v;
+        if (is_group_function(name)) {
+            char args[3][GR_NAMELEN];
+            int n = parse_word_args(e, args, 3);
+            v = group_function(e, name, n, args);
+        } else {
+            double a[3] = {0, 0, 0};
+            int n = 0;
+            skip_ws(e);
+            if (!accept(e, ")")) {
+                for (;;) {
+                    double x = parse_or(e);
+                    if (n < 3)
+                        a[n] = x;
+                    n++;
+                    if (accept(e, ","))
+                        continue;
+                    if (accept(e, ")"))
+                        break;
+                    ep_fail(e, "missing ')' after function arguments");
+                }
+            }
+            v = math_function(e, name, n, a);
+        }
+        e->depth--;
+        return v;
+    }
+    if (*e->p == '[' && is_atom_value(name)) {
+        e->p++;
+        enter(e);
+        double id = parse_or(e);
+        e->depth--;
+        if (!accept(e, "]"))
+            ep_fail(e, "missing ']'");
+        return atom_value(e, name, id);
+    }
+    if (!strcmp(name, "PI"))
+        return 3.14159265358979323846;
+    if (!strcmp(name, "version"))
+        return 20261123; /* date-like as LAMMPS' version constant */
+    if (!strcmp(name, "on") || !strcmp(name, "yes") || !strcmp(name, "true"))
+        return 1;
+    if (!strcmp(name, "off") || !strcmp(name, "no") || !strcmp(name, "false"))
+        return 0;
+    double out;
+    if (thermo_keyword_value(e->g, name, &out))
+        return out;
+    if (is_atom_value(name))
+        snprintf(msg, sizeof msg, "'%s' needs an atom ID: %s[ID]", name, name);
+    else
+        snprintf(msg, sizeof msg, "unknown name '%s' (not a function, constant, v_name or "
+                 "thermo keyword)", name);
+    ep_fail(e, msg);
+}
+
+static double parse_unary(struct ep *e)
+{
+    skip_ws(e);
+    if (*e->p == '-' || *e->p == '!' || *e->p == '+') {
+        char op = *e->p++;
+        enter(e);
+        double v = parse_unary(e);
+        e->depth--;
+        return op == '-' ? -v : op == '!' ? (v == 0.0 ? 1.0 : 0.0) : v;
+    }
+    return parse_primary(e);
+}
+
+static double parse_pow(struct ep *e)
+{
+    double v = parse_unary(e);
+    while (accept(e, "^")) {
+        double w = parse_unary(e);
+        if (w == 0.0)
+            v = 1.0;
+        else if (v == 0.0 && w < 0.0)
+            ep_fail(e, "0 raised to a negative power");
+        else
+            v = pow(v, w);
+    }
+    return v;
+}
+
+static double parse_mul(struct ep *e)
+{
+    double v = parse_pow(e);
+    for (;;) {
+        if (accept(e, "*"))
+            v *= parse_pow(e);
+        else if (accept(e, "/")) {
+            double w = parse_pow(e);
+            if (w == 0.0)
+                ep_fail(e, "division by zero");
+            v /= w;
+        } else if (accept(e, "%")) {
+            double w = parse_pow(e);
+            if (w == 0.0)
+                ep_fail(e, "modulo by zero");
+            v = fmod(v, w);
+        } else
+            return v;
+    }
+}
+
+static double parse_add(struct ep *e)
+{
+    double v = parse_mul(e);
+    for (;;) {
+        if (accept(e, "+"))
+            v += parse_mul(e);
+        else if (accept(e, "-"))
+            v -= parse_mul(e);
+        else
+            return v;
+    }
+}
+
+static double parse_rel(struct ep *e)
+{
+    double v = parse_add(e);
+    for (;;) {
+        if (accept(e, "<="))
+            v = v <= parse_add(e);
+        else if (accept(e, ">="))
+            v = v >= parse_add(e);
+        else if (accept(e, "<"))
+            v = v < parse_add(e);
+        else if (accept(e, ">"))
+            v = v > parse_add(e);
+        else
+            return v;
+    }
+}
+
+static double parse_eq(struct ep *e)
+{
+    double v = parse_rel(e);
+    for (;;) {
+        if (accept(e, "=="))
+            v = v == parse_rel(e);
+        else if (accept(e, "!="))
+            v = v != parse_rel(e);
+        else
+            return v;
+    }
+}
+
+static double parse_and(struct ep *e)
+{
+    double v = parse_eq(e);
+    while (accept(e, "&&")) {
+        double w = parse_eq(e); /* no short circuit: both sides are checked, as LAMMPS */
+        v = (v != 0.0 && w != 0.0);
+    }
+    return v;
+}
+
+static double parse_or(struct ep *e)
+{
+    enter(e);
+    double v = parse_and(e);
+    for (;;) {
+        if (accept(e, "||")) {
+            double w = parse_and(e);
+            v = (v != 0.0 || w != 0.0);
+        } else if (accept(e, "|^")) {
+            double w = parse_and(e);
+            v = ((v == 0.0) != (w == 0.0));
+        } else
+            break;
+    }
+    e->depth--;
+    return v;
+}
+
+double expr_eval_depth(struct gravel *g, const char *text, int depth)
+{
+    struct ep e = {g, text, text, 0, depth};
+    if (depth > MAXVARDEPTH)
+        ep_fail(&e, "variables refer to each other more than 32 levels deep (a cycle?)");
+    skip_ws(&e);
+    if (*e.p == '\0')
+        ep_fail(&e, "empty expression");
+    double v = parse_or(&e);
+    skip_ws(&e);
+    if (*e.p != '\0') {
+        char msg[120];
+        snprintf(msg, sizeof msg, "unexpected '%.20s' after a complete value", e.p);
+        ep_fail(&e, msg);
+    }
+    return v;
+}
+
+double expr_eval(struct gravel *g, const char *text)
+{
+    return expr_eval_depth(g, text, 0);
+}
+
+int expr_format_ok(const char *fmt)
+{
+    int nconv = 0;
+    for (const char *p = fmt; *p; p++) {
+        if (*p != '%')
+            continue;
+        p++;
+        if (*p == '%')
+            continue;
+        while (*p && strchr("-+ #0", *p))
+            p++;
+        int nd = 0;
+        while (isdigit((unsigned char)*p)) {
+            p++;
+            if (++nd > 3)
+                return 0;
+        }
+        if (*p == '.') {
+            p++;
+            nd = 0;
+            while (isdigit((unsigned char)*p)) {
+                p++;
+                if (++nd > 3)
+                    return 0;
+            }
+        }
+        if (!*p || !strchr("feEgG", *p))
+            return 0;
+        nconv++;
+    }
+    return nconv == 1;
+}
