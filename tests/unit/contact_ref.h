@@ -17,8 +17,9 @@
  *   Fn  = P (kn d - meff gamman (vr.n))  n            P = 1 (Hooke) or sqrt(d reff) (Hertz)
  *   hooke:     Ft = -min(mu |Fn|, meff gammat |vtr|) vtr/|vtr|
  *   history:   Ft = -P (kt s + meff gammat vtr),  ds/dt = vtr - n (s . dn/dt),
- *              dn/dt = vt / r  (the continuous limit of LAMMPS' "add vtr dt,
- *              then project s onto the tangent plane")
+ *              dn/dt = vt / r for two spheres, 0 for a flat wall (the
+ *              continuous limit of LAMMPS' "add vtr dt, then project s onto
+ *              the tangent plane")
  *   F_i = Fn + Ft = -F_j,  T_i = -rad_i n x Ft,  T_j = -rad_j n x Ft
  *   sphere: I = 0.4 m rad^2
  *
@@ -57,6 +58,8 @@ struct cref_system {
     double s[3];                         /* tangential displacement (history models) */
     double max_slip_ratio;               /* largest |Ft| / (mu |Fn|) seen (history) */
     int ncontact_steps;                  /* RHS calls in contact (sanity) */
+    int slip;                            /* history, gammat = 0: sliding mode */
+    double phi, psi;                     /* |s| - S and the outward push minus dS/dt */
 };
 
 /* Contact between a (index i) and b (j, or the wall). Adds force/torque to
@@ -109,7 +112,7 @@ static int cref_contact(struct cref_system *sy, const double *y, double fi[3], d
     double g = sy->kn * d - meff * sy->gamman * vnn;     /* normal force / P */
     double fnmag = P * g;                                /* signed, along n */
     double fn_lim = sy->xmu * fabs(fnmag);
-    double ft[3], se[3] = {0, 0, 0}, smag = 0.0, S = 0.0;
+    double ft[3], se[3] = {0, 0, 0}, smag = 0.0, smag0 = 0.0, S = 0.0;
     if (sy->model == CREF_HOOKE) {
         double vrel = sqrt(vtr[0] * vtr[0] + vtr[1] * vtr[1] + vtr[2] * vtr[2]);
         double fs = meff * sy->gammat * vrel;
@@ -125,6 +128,7 @@ static int cref_contact(struct cref_system *sy, const double *y, double fi[3], d
             se[k] = s[k] * scale;
             ft[k] = -P * (sy->kt * se[k] + meff * sy->gammat * vtr[k]);
         }
+        smag0 = smag;
         smag *= scale;
         double ftm = sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
         if (fn_lim > 0 && ftm / fn_lim > sy->max_slip_ratio) sy->max_slip_ratio = ftm / fn_lim;
@@ -132,11 +136,15 @@ static int cref_contact(struct cref_system *sy, const double *y, double fi[3], d
     if (sy->model != CREF_HOOKE) {
         /* ds/dt: free evolution keeps s in the tangent plane as n turns;
          * sliding (gammat = 0, |s| at S and pushing outwards) keeps |s| = S. */
-        double sdn = (se[0] * vt[0] + se[1] * vt[1] + se[2] * vt[2]) / r; /* s . dn/dt */
+        /* s . dn/dt; dn/dt = vt/r for two spheres, 0 for the flat wall (its
+         * contact point slides with the sphere, n stays the wall normal) */
+        double sdn = sy->nbody == 2 ? (se[0] * vt[0] + se[1] * vt[1] + se[2] * vt[2]) / r : 0.0;
         double fr[3];
         for (int k = 0; k < 3; k++) fr[k] = vtr[k] - n[k] * sdn;
         for (int k = 0; k < 3; k++) dsdt[k] = fr[k];
-        if (sy->gammat == 0.0 && smag > 0.0 && smag >= S * (1.0 - 1e-7)) {
+        sy->phi = smag0 - S;
+        sy->psi = 1.0;
+        if (sy->gammat == 0.0 && smag > 0.0) {
             double F[3], ar[3], vt2 = 0.0, an = 0.0;
             for (int k = 0; k < 3; k++) {
                 F[k] = fnmag * n[k] + ft[k];
@@ -145,23 +153,16 @@ static int cref_contact(struct cref_system *sy, const double *y, double fi[3], d
             }
             if (sy->nbody == 1) ar[2] += sy->grav[2], ar[0] += sy->grav[0], ar[1] += sy->grav[1];
             for (int k = 0; k < 3; k++) an += ar[k] * n[k];
-            double vnndot = an + vt2 / r;
+            double vnndot = an + (sy->nbody == 2 ? vt2 / r : 0.0);
             double gdot = -sy->kn * vnn - meff * sy->gamman * vnndot;
             double Sdot = sy->xmu * (g >= 0.0 ? gdot : -gdot) / sy->kt;
             double out = (se[0] * fr[0] + se[1] * fr[1] + se[2] * fr[2]) / smag;
-            /* sliding: |s| follows S (|s|/S constant), and a fast relaxation
-             * (rate 1e4, far above the contact frequency) pulls a state that
-             * entered the band slightly inside onto |s| = S, so round-off
-             * never drops it out of the band (no stick/slip chatter) */
-            if (out > Sdot && S > 0.0) {
-                double s0 = sqrt(y[9 * sy->nbody] * y[9 * sy->nbody] +
-                                 y[9 * sy->nbody + 1] * y[9 * sy->nbody + 1] +
-                                 y[9 * sy->nbody + 2] * y[9 * sy->nbody + 2]);
-                double relax = s0 < S ? 1e4 * (S - s0) : 0.0;
+            sy->psi = out - Sdot;
+            /* sliding (mode set by cref_solve at the located switch): |s|/S
+             * stays constant (1), the direction turns with the free rate */
+            if (sy->slip && S > 0.0)
                 for (int k = 0; k < 3; k++)
-                    dsdt[k] = fr[k] + (relax - out) * se[k] / smag +
-                              Sdot / S * y[9 * sy->nbody + k];
-            }
+                    dsdt[k] = fr[k] - out * se[k] / smag + Sdot / S * y[9 * sy->nbody + k];
         }
     }
     for (int k = 0; k < 3; k++) fi[k] += fnmag * n[k] + ft[k];
@@ -198,12 +199,27 @@ static int cref_rhs(double t, const double *y, double *dy, void *par)
     return GSL_SUCCESS;
 }
 
-/* Advance the system by time t (in pieces of at most `piece`, clearing s
- * whenever the bodies are apart at a piece boundary, as LAMMPS does when a
- * contact ends). Returns 0 on success. */
+/* 1 when the state y calls for a switch of the sliding mode: sticking and
+ * |s| > S, or sliding and the free evolution no longer pushes outwards. */
+static int cref_switch_due(struct cref_system *sy, const double *y)
+{
+    if (sy->model == CREF_HOOKE || sy->gammat != 0.0)
+        return 0;
+    double f[3] = {0, 0, 0}, a[3] = {0, 0, 0}, c[3] = {0, 0, 0}, ds[3];
+    if (!cref_contact(sy, y, f, a, c, ds))
+        return 0;
+    return sy->slip ? sy->psi <= 0.0 : sy->phi > 0.0;
+}
+
+/* Advance the system by time t with adaptive rk8pd steps. Stick/slip
+ * switches are located by bisection to ~1e-15 of the step and the mode is
+ * changed there (entering the slide, s is put exactly on |s| = S), so the
+ * integrator never steps across a discontinuity of ds/dt. s is cleared
+ * whenever the bodies are apart, as LAMMPS does when a contact ends.
+ * `piece` bounds the step. Returns 0 on success. */
 static int cref_solve(struct cref_system *sy, double t, double piece)
 {
-    double y[21];
+    double y[21], y0[21], yt[21], yerr[21];
     int n = 9 * sy->nbody + 3;
     for (int b = 0; b < sy->nbody; b++)
         for (int k = 0; k < 3; k++) {
@@ -213,20 +229,57 @@ static int cref_solve(struct cref_system *sy, double t, double piece)
         }
     for (int k = 0; k < 3; k++) y[9 * sy->nbody + k] = sy->s[k];
     gsl_odeiv2_system sys = {cref_rhs, NULL, (size_t)n, sy};
-    gsl_odeiv2_driver *d =
-        gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-8, 1e-12, 1e-12);
-    double tt = 0.0;
+    gsl_odeiv2_step *st = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, (size_t)n);
+    gsl_odeiv2_control *ctl = gsl_odeiv2_control_standard_new(1e-12, 1e-12, 1.0, 0.0);
+    gsl_odeiv2_evolve *ev = gsl_odeiv2_evolve_alloc((size_t)n);
+    double tt = 0.0, h = 1e-7;
     int rc = 0;
     while (tt < t && rc == 0) {
-        double next = fmin(t, tt + piece);
-        rc = gsl_odeiv2_driver_apply(d, &tt, next, y);
+        double t0 = tt;
+        memcpy(y0, y, sizeof(double) * (size_t)n);
+        rc = gsl_odeiv2_evolve_apply(ev, ctl, st, &sys, &tt, fmin(t, t0 + piece), &h, y);
+        if (rc)
+            break;
+        if (cref_switch_due(sy, y)) {
+            double lo = 0.0, hi = tt - t0;
+            memcpy(yt, y, sizeof(double) * (size_t)n);
+            for (int it = 0; it < 60 && hi - lo > 1e-15 * (t0 + 1.0); it++) {
+                double mid = 0.5 * (lo + hi);
+                double ym[21];
+                memcpy(ym, y0, sizeof(double) * (size_t)n);
+                gsl_odeiv2_step_reset(st);
+                if (gsl_odeiv2_step_apply(st, t0, mid, ym, yerr, NULL, NULL, &sys) != 0)
+                    break;
+                if (cref_switch_due(sy, ym)) {
+                    hi = mid;
+                    memcpy(yt, ym, sizeof(double) * (size_t)n);
+                } else {
+                    lo = mid;
+                }
+            }
+            memcpy(y, yt, sizeof(double) * (size_t)n);
+            tt = t0 + hi;
+            if (!sy->slip) {
+                /* onto the Coulomb limit exactly: |s| = S */
+                double *s = y + 9 * sy->nbody;
+                double sm = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+                cref_switch_due(sy, y); /* refresh phi */
+                double S = sm - sy->phi;
+                for (int k = 0; k < 3; k++) s[k] *= S / sm;
+            }
+            sy->slip = !sy->slip;
+            gsl_odeiv2_evolve_reset(ev);
+            gsl_odeiv2_step_reset(st);
+        }
         double f[3] = {0, 0, 0}, a[3] = {0, 0, 0}, c[3] = {0, 0, 0}, ds[3];
         if (!cref_contact(sy, y, f, a, c, ds)) {
+            sy->slip = 0;
             for (int k = 0; k < 3; k++) y[9 * sy->nbody + k] = 0.0;
-            gsl_odeiv2_driver_reset(d);
         }
     }
-    gsl_odeiv2_driver_free(d);
+    gsl_odeiv2_evolve_free(ev);
+    gsl_odeiv2_control_free(ctl);
+    gsl_odeiv2_step_free(st);
     for (int b = 0; b < sy->nbody; b++)
         for (int k = 0; k < 3; k++) {
             sy->b[b].x[k] = y[9 * b + k];
