@@ -33,7 +33,9 @@ enum bflag { BND_P = 'p', BND_F = 'f', BND_S = 's', BND_M = 'm' };
 
 struct lattice {
     int style;              /* 0 none, else LAT_SC ... (lattice.c) */
-    double a[3];            /* spacing per dimension in box units */
+    double a[3];            /* spacing per dimension in box units (LAMMPS xlattice...) */
+    double prim[3];         /* primitive cell edge lengths in box units (where points go;
+                             * differs from a[] only with the `spacing` keyword) */
     double origin[3];       /* fractional origin */
     int nbasis;
     double basis[8][3];     /* fractional basis positions */
@@ -47,6 +49,7 @@ struct domain {
     int periodic[3];
     double lo[3], hi[3];    /* current box */
     double minlo[3], minhi[3]; /* 'm' boundaries: the box never shrinks inside these */
+    double small[3];        /* shrink-wrap margin: 1e-4 x box length at create_box/read_data */
     struct lattice lat;
 };
 
@@ -111,6 +114,9 @@ struct thermo_settings {
     char *format_line;              /* thermo_modify format line "..." */
     char *format_int, *format_float;
     char *format_col[GR_MAXTHERMO];
+    int multi;                      /* thermo_modify line multi / thermo_style multi */
+    int modified;                   /* some thermo_modify setting was given */
+    struct output_state *state;     /* output.c: run-time schedule, clocks, progress */
 };
 
 /* ---- styles: fixes, computes, pair, dumps ---------------------------------- */

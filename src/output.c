@@ -1,45 +1,190 @@
-/* output.c - PLACEHOLDER thermo output until the output module lands:
- * prints step and atom count only. Replaced wholesale by the output owner. */
+/* output.c - what is written when during a run: the thermo schedule, dumps,
+ * the progress line, and the LAMMPS-style footer after each run.
+ *
+ * Schedule (LAMMPS Output): output_setup writes the dumps due at the first
+ * step, then the thermo header and first line. After each step, dumps at
+ * multiples of their N, and a thermo line at multiples of `thermo N` (or at
+ * the step an equal-style variable returns for `thermo v_name`) and always
+ * at the run's last step. */
 #include "output.h"
 
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
-void output_setup(struct gravel *g) { gr_print(g, "Step Atoms\n"); output_step(g); }
+#include "compute.h"
+#include "dump.h"
+#include "error.h"
+#include "thermo.h"
+#include "variable.h"
+
+static void emit(struct gravel *g, const char *text)
+{
+    gr_print(g, "%s", text);
+    if (g->thermo.flush) {
+        if (g->screen)
+            fflush(g->screen);
+        if (g->logfile)
+            fflush(g->logfile);
+    }
+}
+
+/* Next step with a thermo line after `step`. */
+static bigint next_thermo(struct gravel *g, bigint step)
+{
+    struct thermo_settings *t = &g->thermo;
+    bigint next;
+    if (t->every_var) {
+        double v = var_compute_equal(g, t->every_var);
+        if (!isfinite(v) || v <= (double)step || v > 9.0e18)
+            gr_error(g, "thermo: variable '%s' returned %g, which is not a step after %lld",
+                     t->every_var, v, (long long)step);
+        next = (bigint)v;
+        if (next <= step)
+            next = step + 1;
+    } else if (t->every > 0) {
+        next = (step / t->every) * t->every + t->every;
+    } else {
+        next = g->laststep;
+    }
+    return next < g->laststep ? next : g->laststep;
+}
+
+static void thermo_print(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    emit(g, thermo_line_text(g));
+    st->last_thermo = g->step;
+}
+
+void output_setup(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    st->active = 1;
+    st->wall0 = output_wall();
+    st->firstflag = 1;
+    st->last_thermo = -1;
+    compute_init_all(g);
+    thermo_init(g);
+    dump_setup_all(g);
+    emit(g, thermo_header_text(g));
+    thermo_print(g);
+    st->firstflag = 0;
+    st->next_thermo = g->laststep > g->step ? next_thermo(g, g->step) : g->step;
+    progress_begin(g);
+}
 
 int output_due(struct gravel *g, bigint step)
 {
-    int every = g->thermo.every;
-    return step == g->laststep || (every > 0 && step % every == 0);
+    struct output_state *st = output_state(g);
+    if (step == g->laststep || step == st->next_thermo)
+        return 1;
+    return dump_due(g, step);
 }
 
 void output_step(struct gravel *g)
 {
-    if (output_due(g, g->step))
-        gr_print(g, "%8lld %8d\n", (long long)g->step, g->atoms.n);
+    struct output_state *st = output_state(g);
+    dump_step_all(g);
+    if (g->step >= st->next_thermo && st->last_thermo != g->step) {
+        thermo_print(g);
+        if (g->step < g->laststep)
+            st->next_thermo = next_thermo(g, g->step);
+    } else if (g->step == g->laststep && st->last_thermo != g->step) {
+        thermo_print(g);
+    }
+    progress_update(g);
 }
 
-void output_finish(struct gravel *g, const struct run_stats *st)
+/* One row of LAMMPS' "MPI task timing breakdown" table (one process:
+ * min = avg = max, no variation). */
+static void timing_row(struct gravel *g, const char *label, double t, double total)
 {
-    gr_print(g, "Loop time of %g on 1 procs for %lld steps with %d atoms\n", st->t_total,
-             (long long)st->nsteps, st->natoms);
+    gr_print(g, "%-8s| %-10.5g | %-10.5g | %-10.5g |%6.1f |%6.2f\n", label, t, t, t, 0.0,
+             total > 0 ? 100.0 * t / total : 0.0);
 }
 
-int thermo_keyword_value(struct gravel *g, const char *name, double *out)
+/* LAMMPS 2021 formats these with fmt's "{:W.N}" on a double: "%#W.Ng"
+ * (trailing zeros kept), and a result ending in a bare '.' gets a "0"
+ * appended after the padding: "    115133.0" (12 wide), as `lmp` prints. */
+static void showpoint(char *buf, size_t n, int width, int prec, double v)
 {
-    if (strcmp(name, "step") == 0)
-        *out = (double)g->step;
-    else if (strcmp(name, "atoms") == 0)
-        *out = g->atoms.n;
-    else if (strcmp(name, "dt") == 0)
-        *out = g->dt;
-    else if (strcmp(name, "time") == 0)
-        *out = g->time;
+    snprintf(buf, n, "%#*.*g", width, prec, v);
+    size_t len = strlen(buf);
+    if (len > 0 && buf[len - 1] == '.' && len + 1 < n) {
+        buf[len] = '0';
+        buf[len + 1] = '\0';
+    }
+}
+
+/* "Nlocal: ..." with its one-bin histogram, as LAMMPS for one process. */
+static void stat_row(struct gravel *g, const char *label, double v)
+{
+    char ave[64];
+    showpoint(ave, sizeof ave, 11, 6, v);
+    gr_print(g, "%-10s %s ave %11.6g max %11.6g min\n", label, ave, v, v);
+    gr_print(g, "Histogram: 1 0 0 0 0 0 0 0 0 0\n");
+}
+
+void output_finish(struct gravel *g, const struct run_stats *s)
+{
+    struct output_state *st = output_state(g);
+    progress_end(g);
+    dump_run_end(g);
+    st->active = 0;
+
+    double t = s->t_total;
+    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", t,
+             (long long)s->nsteps, s->natoms);
+    if (s->nsteps > 0 && t > 0) {
+        double step_s = (double)s->nsteps / t;
+        double atom_steps = step_s * s->natoms; /* Cundall number */
+        char perf[128];
+        if (g->dom.units == UNITS_LJ)
+            snprintf(perf, sizeof perf, "%.3f tau/day, ", 86400.0 * step_s * g->dt);
+        else /* si, cgs: simulated seconds per day */
+            snprintf(perf, sizeof perf, "%.6g s/day, ", 86400.0 * step_s * g->dt);
+        if (atom_steps >= 1e6)
+            gr_print(g, "Performance: %s%.3f timesteps/s, %.3f Matom-step/s\n", perf, step_s,
+                     atom_steps * 1e-6);
+        else
+            gr_print(g, "Performance: %s%.3f timesteps/s, %.3f katom-step/s\n", perf, step_s,
+                     atom_steps * 1e-3);
+    }
+
+    double other = s->t_other;
+    if (other <= 0) {
+        other = t - (s->t_pair + s->t_neigh + s->t_output + s->t_modify);
+        if (other < 0)
+            other = 0;
+    }
+    gr_print(g, "\nMPI task timing breakdown:\n"
+                "Section |  min time  |  avg time  |  max time  |%%varavg| %%total\n"
+                "---------------------------------------------------------------\n");
+    timing_row(g, "Pair", s->t_pair, t);
+    timing_row(g, "Neigh", s->t_neigh, t);
+    timing_row(g, "Output", s->t_output, t);
+    timing_row(g, "Modify", s->t_modify, t);
+    gr_print(g, "Other   |            | %-10.4g |            |       |%6.2f\n", other,
+             t > 0 ? 100.0 * other / t : 0.0);
+
+    gr_print(g, "\n");
+    stat_row(g, "Nlocal:", s->natoms);
+    stat_row(g, "Neighs:", s->total_neighbors);
+    gr_print(g, "\nTotal # of neighbors = %.8g\n", s->total_neighbors);
+    if (s->natoms > 0) {
+        char ave[64];
+        showpoint(ave, sizeof ave, 0, 8, s->total_neighbors / s->natoms);
+        gr_print(g, "Ave neighs/atom = %s\n", ave);
+    }
+    gr_print(g, "Neighbor list builds = %lld\n", (long long)s->nbuilds);
+    if (g->neigh.check)
+        gr_print(g, "Dangerous builds = %lld\n", (long long)s->ndanger);
     else
-        return 0;
-    return 1;
-}
-
-void thermo_settings_free(struct thermo_settings *t)
-{
-    (void)t;
+        gr_print(g, "Dangerous builds not checked\n");
+    gr_print(g, "Largest overlap / radius = %.6g\n", s->max_overlap_frac);
+    if (g->screen)
+        fflush(g->screen);
+    if (g->logfile)
+        fflush(g->logfile);
 }

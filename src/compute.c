@@ -1,0 +1,266 @@
+/* compute.c - the compute registry (built from styles/styles.def), the
+ * `compute` and `uncompute` commands, and evaluation of c_ID references. */
+#include "compute.h"
+
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "error.h"
+
+#define PAIR(k, i)
+#define FIX(k, i)
+#define DUMP(k, i)
+#define REGION(k, i)
+#define COMPUTE(k, i) extern const struct compute_style compute_style_##i;
+#include "styles.def"
+#undef COMPUTE
+
+static const struct compute_style *const compute_styles[] = {
+#define COMPUTE(k, i) &compute_style_##i,
+#include "styles.def"
+#undef COMPUTE
+    NULL};
+#undef PAIR
+#undef FIX
+#undef DUMP
+#undef REGION
+
+double compute_mvv2e(const struct gravel *g)
+{
+    /* lj, si and cgs are all self-consistent mass/velocity/energy systems */
+    (void)g;
+    return 1.0;
+}
+
+struct compute *compute_find(struct gravel *g, const char *id)
+{
+    for (int i = 0; i < g->styles.ncompute; i++)
+        if (strcmp(g->styles.compute[i]->id, id) == 0)
+            return g->styles.compute[i];
+    return NULL;
+}
+
+struct compute *compute_get(struct gravel *g, const char *id, const char *who)
+{
+    struct compute *c = compute_find(g, id);
+    if (!c)
+        gr_error(g, "%s refers to unknown compute ID '%.64s'", who, id);
+    return c;
+}
+
+static void compute_delete(struct compute *c)
+{
+    if (!c)
+        return;
+    if (c->style && c->style->destroy)
+        c->style->destroy(c);
+    free(c->vector);
+    free(c->peratom);
+    free(c);
+}
+
+/* IDs are letters, digits and underscores, like LAMMPS. */
+static void check_id(struct gravel *g, const char *id)
+{
+    size_t n = strlen(id);
+    if (n == 0 || n >= GR_NAMELEN)
+        gr_error(g, "compute ID must have 1 to %d characters", GR_NAMELEN - 1);
+    for (size_t k = 0; k < n; k++)
+        if (!isalnum((unsigned char)id[k]) && id[k] != '_')
+            gr_error(g, "compute ID '%.64s' may contain only letters, digits and underscores",
+                     id);
+}
+
+void cmd_compute(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "expected: compute ID group style args...");
+    if (!g->dom.box_exists)
+        gr_error(g, "compute before the simulation box is defined");
+    check_id(g, argv[0]);
+    if (compute_find(g, argv[0]))
+        gr_error(g, "compute ID '%.64s' already exists; use uncompute first", argv[0]);
+    int igroup = arg_group(g, argv[1]);
+    const struct compute_style *st = NULL;
+    for (int k = 0; compute_styles[k]; k++)
+        if (strcmp(compute_styles[k]->name, argv[2]) == 0)
+            st = compute_styles[k];
+    if (!st) {
+        char known[512] = "";
+        for (int k = 0; compute_styles[k]; k++) {
+            strncat(known, k ? ", " : "", sizeof known - strlen(known) - 1);
+            strncat(known, compute_styles[k]->name, sizeof known - strlen(known) - 1);
+        }
+        gr_error(g, "unknown compute style '%.64s' (known: %s)", argv[2], known);
+    }
+
+    struct compute *c = gr_calloc(g, 1, sizeof *c);
+    strcpy(c->id, argv[0]);
+    c->style = st;
+    c->igroup = igroup;
+    c->groupbit = 1u << igroup;
+
+    /* register first so a failing create is cleaned up by compute_free_all
+     * rather than leaked across the longjmp */
+    struct styles *s = &g->styles;
+    if (s->ncompute == s->ncompute_cap) {
+        int cap = s->ncompute_cap ? 2 * s->ncompute_cap : 8;
+        struct compute **p = realloc(s->compute, (size_t)cap * sizeof *p);
+        if (!p) {
+            free(c);
+            gr_error(g, "out of memory");
+        }
+        s->compute = p;
+        s->ncompute_cap = cap;
+    }
+    s->compute[s->ncompute++] = c;
+
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        /* creation failed: unregister, free, and pass the error on */
+        g->err.jmp = outer;
+        s->ncompute--;
+        compute_delete(c);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    st->create(g, c, argc - 3, argv + 3);
+    g->err.jmp = outer;
+    if (c->vector_flag && !c->vector)
+        c->vector = gr_calloc(g, (size_t)(c->size_vector > 0 ? c->size_vector : 1),
+                              sizeof(double));
+}
+
+void cmd_uncompute(struct gravel *g, int argc, char **argv)
+{
+    if (argc != 1)
+        gr_error(g, "expected: uncompute ID");
+    struct styles *s = &g->styles;
+    for (int i = 0; i < s->ncompute; i++) {
+        if (strcmp(s->compute[i]->id, argv[0]) != 0)
+            continue;
+        compute_delete(s->compute[i]);
+        memmove(s->compute + i, s->compute + i + 1,
+                (size_t)(s->ncompute - i - 1) * sizeof *s->compute);
+        s->ncompute--;
+        return;
+    }
+    gr_error(g, "unknown compute ID '%.64s'", argv[0]);
+}
+
+double compute_scalar(struct gravel *g, struct compute *c)
+{
+    if (!c->scalar_flag)
+        gr_error(g, "compute %s (%s) does not produce a global scalar", c->id, c->style->name);
+    return c->style->scalar(g, c);
+}
+
+const double *compute_vector(struct gravel *g, struct compute *c)
+{
+    if (!c->vector_flag)
+        gr_error(g, "compute %s (%s) does not produce a global vector", c->id, c->style->name);
+    c->style->vector(g, c);
+    return c->vector;
+}
+
+const double *compute_peratom(struct gravel *g, struct compute *c)
+{
+    if (!c->peratom_flag)
+        gr_error(g, "compute %s (%s) does not produce per-atom values", c->id,
+                 c->style->name);
+    int n = g->atoms.n;
+    if (n > c->peratom_cap || !c->peratom) {
+        int cap = n > 16 ? n : 16;
+        double *p = realloc(c->peratom, (size_t)cap * sizeof(double));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        c->peratom = p;
+        c->peratom_cap = cap;
+    }
+    c->style->peratom(g, c);
+    return c->peratom;
+}
+
+int compute_parse_ref(const char *ref, char *id, int *index)
+{
+    if (strncmp(ref, "c_", 2) != 0)
+        return 0;
+    const char *s = ref + 2;
+    const char *br = strchr(s, '[');
+    size_t n = br ? (size_t)(br - s) : strlen(s);
+    if (n == 0 || n >= GR_NAMELEN)
+        return 0;
+    memcpy(id, s, n);
+    id[n] = '\0';
+    *index = 0;
+    if (br) {
+        char *end;
+        long v = strtol(br + 1, &end, 10);
+        if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
+            return 0;
+        *index = (int)v;
+    }
+    return 1;
+}
+
+void compute_ref_check(struct gravel *g, const char *ref, const char *who)
+{
+    char id[GR_NAMELEN];
+    int index;
+    if (!compute_parse_ref(ref, id, &index))
+        gr_error(g, "%s: invalid compute reference '%.64s' (use c_ID or c_ID[N])", who, ref);
+    struct compute *c = compute_get(g, id, who);
+    if (index == 0 && !c->scalar_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce a global scalar%s", who, id,
+                 c->style->name, c->vector_flag ? "; use c_ID[N] for its vector" : "");
+    if (index > 0 && !c->vector_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce a global vector", who, id,
+                 c->style->name);
+    if (index > 0 && index > c->size_vector)
+        gr_error(g, "%s: %s is out of range: compute %s has %d values", who, ref, id,
+                 c->size_vector);
+}
+
+double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who)
+{
+    char id[GR_NAMELEN];
+    int index;
+    compute_ref_check(g, ref, who);
+    compute_parse_ref(ref, id, &index);
+    struct compute *c = compute_find(g, id);
+    double v;
+    int ext;
+    if (index == 0) {
+        v = compute_scalar(g, c);
+        ext = c->extscalar;
+    } else {
+        v = compute_vector(g, c)[index - 1];
+        ext = c->extvector;
+    }
+    if (norm && ext && g->atoms.n > 0)
+        v /= g->atoms.n;
+    return v;
+}
+
+void compute_init_all(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ncompute; i++) {
+        struct compute *c = g->styles.compute[i];
+        if (c->style->init)
+            c->style->init(g, c);
+    }
+}
+
+void compute_free_all(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ncompute; i++)
+        compute_delete(g->styles.compute[i]);
+    free(g->styles.compute);
+    g->styles.compute = NULL;
+    g->styles.ncompute = g->styles.ncompute_cap = 0;
+}

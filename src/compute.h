@@ -1,0 +1,84 @@
+/* compute.h - computes: named diagnostics (`compute ID group style args`) that
+ * thermo output, dumps and expressions read as c_ID / c_ID[N].
+ *
+ * A compute produces a global scalar, a global vector, or a per-atom vector
+ * (one value per host atom, in host order), as its style declares. Computes
+ * evaluate on the host arrays: callers inside a run call run_sync_host() first
+ * (output does this before each thermo line). Values are recomputed on every
+ * call; computes are O(N) passes over the host arrays.
+ *
+ * Styles register in styles/styles.def with COMPUTE(keyword, ident); the
+ * descriptor is `const struct compute_style compute_style_<ident>` in
+ * styles/compute_<ident>.c. */
+#ifndef GR_COMPUTE_H
+#define GR_COMPUTE_H
+
+#include "gravel.h"
+
+struct compute;
+
+struct compute_style {
+    const char *name;
+    /* Parse the style arguments (argv after "ID group style"), set the
+     * output flags and sizes, allocate c->data. Errors via gr_error; the
+     * compute is freed by the caller then (destroy is called when set). */
+    void (*create)(struct gravel *g, struct compute *c, int argc, char **argv);
+    /* Resolve references to other computes (run setup, before each use);
+     * NULL when the style has none. */
+    void (*init)(struct gravel *g, struct compute *c);
+    double (*scalar)(struct gravel *g, struct compute *c);     /* scalar_flag */
+    void (*vector)(struct gravel *g, struct compute *c);       /* fill c->vector */
+    void (*peratom)(struct gravel *g, struct compute *c);      /* fill c->peratom */
+    void (*destroy)(struct compute *c);                        /* free c->data */
+};
+
+struct compute {
+    char id[GR_NAMELEN];
+    const struct compute_style *style;
+    int igroup;
+    unsigned groupbit;          /* 1u << igroup */
+    int scalar_flag, vector_flag, peratom_flag;
+    int size_vector;
+    int extscalar, extvector;   /* 1: extensive, thermo divides by atoms when norm yes */
+    double *vector;             /* [size_vector], owned */
+    double *peratom;            /* [atoms.n] after compute_peratom, owned */
+    int peratom_cap;
+    void *data;                 /* style state */
+};
+
+/* `compute ID group style args...` and `uncompute ID` (commands.def). */
+void cmd_compute(struct gravel *g, int argc, char **argv);
+void cmd_uncompute(struct gravel *g, int argc, char **argv);
+
+/* The compute with this ID, or NULL. */
+struct compute *compute_find(struct gravel *g, const char *id);
+/* Like compute_find but raises "unknown compute ID" naming `who`. */
+struct compute *compute_get(struct gravel *g, const char *id, const char *who);
+
+/* Evaluate. Each raises an error when the compute has no such output. */
+double compute_scalar(struct gravel *g, struct compute *c);
+const double *compute_vector(struct gravel *g, struct compute *c);
+/* Per-atom values, length g->atoms.n, host order. */
+const double *compute_peratom(struct gravel *g, struct compute *c);
+
+/* Parse "c_ID" or "c_ID[N]": copies ID into id (GR_NAMELEN), sets *index to
+ * N (1-based) or 0. Returns 0 when `ref` does not have that form. */
+int compute_parse_ref(const char *ref, char *id, int *index);
+
+/* Value of reference `ref` ("c_ID" scalar or "c_ID[N]" vector element),
+ * normalized by atom count when `norm` and the value is extensive. Errors
+ * name `who` (e.g. "thermo_style"). */
+double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who);
+/* Check that `ref` names an existing compute with the right kind of output
+ * (scalar for c_ID, vector with N in range for c_ID[N]). */
+void compute_ref_check(struct gravel *g, const char *ref, const char *who);
+
+/* Run setup: let every compute resolve its references. */
+void compute_init_all(struct gravel *g);
+/* Free every compute (called from styles_free on clear and destroy). */
+void compute_free_all(struct gravel *g);
+
+/* Mass-velocity^2 to energy factor of the current units (1 in lj, si, cgs). */
+double compute_mvv2e(const struct gravel *g);
+
+#endif

@@ -1,0 +1,350 @@
+/* create_atoms.c - `create_atoms type box | region ID | single x y z |
+ * random N seed region-ID` with LAMMPS semantics.
+ *
+ * New atoms get atom_style sphere defaults: diameter 1, density 1, so
+ * radius 0.5 and mass 4/3 pi 0.5^3 (use `set` to change them).
+ * Lattice styles place atoms on the current lattice inside the box, using
+ * LAMMPS' rule for which boundary points belong to the box: in periodic
+ * dimensions [lo - eps, hi - 2 eps) with eps = 1e-6 x length (no duplicate on
+ * the upper face), otherwise [lo, hi).
+ * Random insertion draws from GSL's mt19937 seeded with `seed`; with
+ * `overlap d` a candidate is rejected if it is closer than d (center to
+ * center, minimum image in periodic dimensions) to any atom, checked against
+ * a cell grid with cells >= d so each test looks at 27 cells: O(N). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_rng.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "domain.h"
+#include "error.h"
+#include "lattice.h"
+#include "region.h"
+
+#define CA_EPSILON 1.0e-6
+#define CA_MAXTRY_DEFAULT 1000
+
+static const double sphere_radius = 0.5;
+#define SPHERE_MASS (4.0 * M_PI / 3.0 * 0.125) /* density 1, diameter 1 */
+
+struct lat_ctx {
+    int type;
+    const struct region *r;
+    bigint n;
+};
+
+static void add_lattice_point(struct gravel *g, const double x[3], void *vctx)
+{
+    struct lat_ctx *c = vctx;
+    if (c->r && !region_match(c->r, x))
+        return;
+    atoms_add(g, 0, c->type, x, sphere_radius, SPHERE_MASS);
+    c->n++;
+}
+
+/* ---- cell grid for the overlap test ---------------------------------------- */
+
+struct grid {
+    int n[3];
+    double lo[3], inv[3];
+    int *head, *next;
+    int cap_next;
+};
+
+static void grid_init(struct gravel *g, struct grid *gr, double cut, bigint nmax)
+{
+    double len[3];
+    double maxcells = fmax(64.0, 2.0 * (double)nmax);
+    double h = cut;
+    for (int d = 0; d < 3; d++) {
+        gr->lo[d] = g->dom.lo[d];
+        len[d] = g->dom.hi[d] - g->dom.lo[d];
+    }
+    for (;;) {
+        double tot = 1;
+        for (int d = 0; d < 3; d++) {
+            gr->n[d] = (int)fmax(1.0, fmin(floor(len[d] / h), 1 << 20));
+            tot *= gr->n[d];
+        }
+        if (tot <= maxcells)
+            break;
+        h *= 1.25;
+    }
+    for (int d = 0; d < 3; d++)
+        gr->inv[d] = gr->n[d] / len[d];
+    size_t nc = (size_t)gr->n[0] * gr->n[1] * gr->n[2];
+    gr->head = gr_malloc(g, nc * sizeof(int));
+    memset(gr->head, 0xff, nc * sizeof(int)); /* -1 */
+    gr->next = NULL;
+    gr->cap_next = 0;
+}
+
+static void grid_cell(const struct grid *gr, const double x[3], int c[3])
+{
+    for (int d = 0; d < 3; d++) {
+        double f = (x[d] - gr->lo[d]) * gr->inv[d];
+        int k = f < 0 ? 0 : f >= gr->n[d] ? gr->n[d] - 1 : (int)f;
+        c[d] = k;
+    }
+}
+
+static void grid_insert(struct gravel *g, struct grid *gr, int i)
+{
+    if (i >= gr->cap_next) {
+        int cap = gr->cap_next ? gr->cap_next : 1024;
+        while (cap <= i)
+            cap *= 2;
+        gr->next = gr_realloc(g, gr->next, (size_t)cap * sizeof(int));
+        gr->cap_next = cap;
+    }
+    int c[3];
+    grid_cell(gr, g->atoms.x + 3 * (size_t)i, c);
+    size_t k = ((size_t)c[2] * gr->n[1] + c[1]) * gr->n[0] + c[0];
+    gr->next[i] = gr->head[k];
+    gr->head[k] = i;
+}
+
+/* 1 if some atom is closer than cut to x. */
+static int grid_overlaps(const struct gravel *g, const struct grid *gr, const double x[3],
+                         double cut)
+{
+    int c[3];
+    grid_cell(gr, x, c);
+    double cut2 = cut * cut;
+    int lo[3], hi[3];
+    for (int d = 0; d < 3; d++) {
+        lo[d] = c[d] - 1;
+        hi[d] = c[d] + 1;
+        if (gr->n[d] <= 3) { /* every cell is a neighbor; visit each once */
+            lo[d] = 0;
+            hi[d] = gr->n[d] - 1;
+        } else if (!g->dom.periodic[d]) {
+            if (lo[d] < 0)
+                lo[d] = 0;
+            if (hi[d] >= gr->n[d])
+                hi[d] = gr->n[d] - 1;
+        }
+    }
+    for (int kz = lo[2]; kz <= hi[2]; kz++)
+        for (int ky = lo[1]; ky <= hi[1]; ky++)
+            for (int kx = lo[0]; kx <= hi[0]; kx++) {
+                int k3[3] = {kx, ky, kz};
+                for (int d = 0; d < 3; d++)
+                    k3[d] = (k3[d] + gr->n[d]) % gr->n[d];
+                size_t k = ((size_t)k3[2] * gr->n[1] + k3[1]) * gr->n[0] + k3[0];
+                for (int j = gr->head[k]; j >= 0; j = gr->next[j]) {
+                    const double *y = g->atoms.x + 3 * (size_t)j;
+                    double del[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+                    domain_minimum_image(g, del);
+                    if (del[0] * del[0] + del[1] * del[1] + del[2] * del[2] < cut2)
+                        return 1;
+                }
+            }
+    return 0;
+}
+
+static void grid_free(struct grid *gr)
+{
+    free(gr->head);
+    free(gr->next);
+    gr->head = gr->next = NULL;
+}
+
+/* ---- random insertion ------------------------------------------------------ */
+
+struct random_job {
+    bigint n;
+    unsigned long seed;
+    const struct region *r;
+    double overlap;
+    int maxtry;
+    int type;
+    /* owned resources, freed by the caller on any exit */
+    gsl_rng *rng;
+    struct grid grid;
+};
+
+static bigint insert_random(struct gravel *g, struct random_job *job)
+{
+    double lo[3], hi[3];
+    if (job->r) {
+        if (!region_box_bounds(g, job->r, lo, hi))
+            gr_error(g, "region '%s' does not overlap the box", job->r->id);
+    } else {
+        for (int d = 0; d < 3; d++) {
+            lo[d] = g->dom.lo[d];
+            hi[d] = g->dom.hi[d];
+        }
+    }
+    job->rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!job->rng)
+        gr_error(g, "out of memory creating a random number generator");
+    gsl_rng_set(job->rng, job->seed);
+    if (job->overlap > 0) {
+        grid_init(g, &job->grid, job->overlap, (bigint)g->atoms.n + job->n);
+        for (int i = 0; i < g->atoms.n; i++)
+            grid_insert(g, &job->grid, i);
+    }
+    if (job->n > 0) /* grow further only as atoms actually fit */
+        atoms_reserve(g, g->atoms.n + (int)(job->n < (1 << 22) ? job->n : (1 << 22)));
+    bigint added = 0;
+    for (bigint k = 0; k < job->n; k++) {
+        int ok = 0;
+        double x[3];
+        for (int t = 0; t < job->maxtry && !ok; t++) {
+            for (int d = 0; d < 3; d++) {
+                x[d] = lo[d] + gsl_rng_uniform(job->rng) * (hi[d] - lo[d]);
+                if (x[d] >= g->dom.hi[d]) /* hi - lo rounding */
+                    x[d] = nextafter(g->dom.hi[d], g->dom.lo[d]);
+            }
+            if (job->r && !region_match(job->r, x))
+                continue;
+            if (job->overlap > 0 && grid_overlaps(g, &job->grid, x, job->overlap))
+                continue;
+            ok = 1;
+        }
+        if (!ok)
+            continue;
+        int i = atoms_add(g, 0, job->type, x, sphere_radius, SPHERE_MASS);
+        if (job->overlap > 0)
+            grid_insert(g, &job->grid, i);
+        added++;
+    }
+    if (added < job->n)
+        gr_warn(g, "only inserted %lld particles out of %lld (maxtry %d)", (long long)added,
+                (long long)job->n, job->maxtry);
+    return added;
+}
+
+/* ---- the command -------------------------------------------------------- */
+
+void cmd_create_atoms(struct gravel *g, int argc, char **argv)
+{
+    domain_require_box(g);
+    int type = arg_int_range(g, argv[0], 1, g->atoms.ntypes, "atom type");
+    const char *style = argv[1];
+    int iarg;
+    const struct region *r = NULL;
+    double xone[3] = {0, 0, 0};
+    bigint nrandom = 0;
+    unsigned long seed = 0;
+    if (!strcmp(style, "box")) {
+        iarg = 2;
+    } else if (!strcmp(style, "region")) {
+        arg_need(g, argc, 1, 1, "region");
+        r = region_get(g, argv[2]);
+        iarg = 3;
+    } else if (!strcmp(style, "single")) {
+        arg_need(g, argc, 1, 3, "single");
+        for (int d = 0; d < 3; d++)
+            xone[d] = arg_double(g, argv[2 + d], "coordinate");
+        iarg = 5;
+    } else if (!strcmp(style, "random")) {
+        arg_need(g, argc, 1, 3, "random");
+        nrandom = arg_bigint(g, argv[2], "number of atoms");
+        if (nrandom < 0 || nrandom > 100000000)
+            gr_error(g, "number of random atoms must be between 0 and 1e8, got %s", argv[2]);
+        int s = arg_int(g, argv[3], "seed");
+        if (s <= 0)
+            gr_error(g, "seed must be a positive integer, got %s", argv[3]);
+        seed = (unsigned long)s;
+        if (strcmp(argv[4], "NULL") != 0)
+            r = region_get(g, argv[4]);
+        iarg = 5;
+    } else {
+        gr_error(g, "unknown style '%.32s': expected box, region, single or random", style);
+    }
+    int lattice_units = 1, remap = 0, maxtry = CA_MAXTRY_DEFAULT, maxtry_set = 0;
+    double overlap = 0;
+    int overlap_set = 0;
+    for (int i = iarg; i < argc; i++) {
+        const char *kw = argv[i];
+        if (!strcmp(kw, "units")) {
+            arg_need(g, argc, i, 1, kw);
+            lattice_units = domain_parse_units_kw(g, argv[++i]);
+        } else if (!strcmp(kw, "remap")) {
+            arg_need(g, argc, i, 1, kw);
+            remap = arg_yesno(g, argv[++i], "remap");
+        } else if (!strcmp(kw, "overlap")) {
+            arg_need(g, argc, i, 1, kw);
+            overlap = arg_positive(g, argv[++i], "overlap");
+            overlap_set = 1;
+        } else if (!strcmp(kw, "maxtry")) {
+            arg_need(g, argc, i, 1, kw);
+            maxtry = arg_int_range(g, argv[++i], 1, 1 << 30, "maxtry");
+            maxtry_set = 1;
+        } else if (!strcmp(kw, "basis") || !strcmp(kw, "mol") || !strcmp(kw, "var") ||
+                   !strcmp(kw, "set") || !strcmp(kw, "rotate")) {
+            gr_error(g, "keyword '%s' is not supported", kw);
+        } else {
+            gr_error(g, "unknown keyword '%.32s'", kw);
+        }
+    }
+    if ((overlap_set || maxtry_set) && strcmp(style, "random") != 0)
+        gr_error(g, "overlap and maxtry apply only to style random");
+    if (remap && strcmp(style, "single") != 0)
+        gr_error(g, "remap applies only to style single");
+    bigint created = 0;
+    if (!strcmp(style, "box") || !strcmp(style, "region")) {
+        double lo[3], hi[3];
+        for (int d = 0; d < 3; d++) {
+            lo[d] = g->dom.lo[d];
+            hi[d] = g->dom.hi[d];
+            if (g->dom.periodic[d]) {
+                double eps = (hi[d] - lo[d]) * CA_EPSILON;
+                lo[d] -= eps;
+                hi[d] -= 2.0 * eps;
+            }
+        }
+        struct lat_ctx c = {type, r, 0};
+        if (r && r->bbox)
+            lattice_foreach(g, lo, hi, r->bbox_lo, r->bbox_hi, add_lattice_point, &c);
+        else
+            lattice_foreach(g, lo, hi, NULL, NULL, add_lattice_point, &c);
+        created = c.n;
+    } else if (!strcmp(style, "single")) {
+        double sc[3];
+        domain_unit_scale(g, lattice_units, sc);
+        int image[3] = {0, 0, 0};
+        for (int d = 0; d < 3; d++)
+            xone[d] *= sc[d];
+        if (remap)
+            domain_remap(g, xone, image);
+        if (!domain_inside(g, xone))
+            gr_error(g, "point (%g %g %g) is outside the box%s", xone[0], xone[1], xone[2],
+                     remap ? "" : " (remap yes wraps periodic dimensions)");
+        int i = atoms_add(g, 0, type, xone, sphere_radius, SPHERE_MASS);
+        for (int d = 0; d < 3; d++)
+            g->atoms.image[3 * i + d] = image[d];
+        created = 1;
+    } else {
+        struct random_job job;
+        memset(&job, 0, sizeof job);
+        job.n = nrandom;
+        job.seed = seed;
+        job.r = r;
+        job.overlap = overlap;
+        job.maxtry = maxtry;
+        job.type = type;
+        /* free the generator and grid however insertion ends */
+        jmp_buf *outer = g->err.jmp, here;
+        g->err.jmp = &here;
+        if (setjmp(here)) {
+            g->err.jmp = outer;
+            gsl_rng_free(job.rng);
+            grid_free(&job.grid);
+            if (outer)
+                longjmp(*outer, 1);
+            gr_report_error(g);
+            exit(1);
+        }
+        created = insert_random(g, &job);
+        g->err.jmp = outer;
+        gsl_rng_free(job.rng);
+        grid_free(&job.grid);
+    }
+    gr_print(g, "Created %lld atoms\n", (long long)created);
+}

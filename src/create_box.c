@@ -1,0 +1,35 @@
+/* create_box.c - `create_box N region-ID`: the box is the bounding box of a
+ * bounded side-in region; N atom types. Shrink-wrapped faces start `small`
+ * outside the region (LAMMPS set_initial_box). */
+#include "args.h"
+#include "atoms.h"
+#include "domain.h"
+#include "error.h"
+#include "region.h"
+
+void cmd_create_box(struct gravel *g, int argc, char **argv)
+{
+    if (g->dom.box_exists)
+        gr_error(g, "the simulation box already exists");
+    int ntypes = arg_int_range(g, argv[0], 1, 1000000, "number of atom types");
+    struct region *r = region_get(g, argv[1]);
+    if (argc > 2)
+        gr_error(g, "unsupported keyword '%.32s': atom_style sphere has no bonds or angles",
+                 argv[2]);
+    if (!r->interior)
+        gr_error(g, "region '%s' must be side in to define the box", r->id);
+    if (!r->bbox)
+        gr_error(g, "region '%s' has no bounding box (style %s) and cannot define the box",
+                 r->id, r->style->name);
+    for (int d = 0; d < 3; d++) {
+        if (!(r->bbox_hi[d] - r->bbox_lo[d] < 1e19))
+            gr_error(g, "region '%s' is unbounded in %c and cannot define the box", r->id,
+                     "xyz"[d]);
+        g->dom.lo[d] = r->bbox_lo[d];
+        g->dom.hi[d] = r->bbox_hi[d];
+    }
+    domain_set_initial_box(g);
+    atoms_set_ntypes(g, ntypes);
+    gr_print(g, "Created orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", g->dom.lo[0],
+             g->dom.lo[1], g->dom.lo[2], g->dom.hi[0], g->dom.hi[1], g->dom.hi[2]);
+}

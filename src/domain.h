@@ -1,0 +1,58 @@
+/* domain.h - the simulation box: boundaries, shrink-wrapping, periodic
+ * wrapping, volume and lattice <-> box unit conversion.
+ *
+ * The box lives in g->dom (gravel.h). It is created by create_box or
+ * read_data through domain_set_initial_box(); afterwards the run core keeps
+ * shrink-wrapped faces fitted to the atoms with domain_shrink_wrap(). */
+#ifndef GR_DOMAIN_H
+#define GR_DOMAIN_H
+
+#include "gravel.h"
+
+/* LAMMPS' SMALL (domain.cpp): shrink-wrap margin as a fraction of the box length. */
+#define DOMAIN_SMALL 1.0e-4
+/* LAMMPS' BIG: what INF stands for in region bounds. */
+#define DOMAIN_BIG 1.0e20
+
+/* Finish a box whose g->dom.lo/hi were just set (create_box, read_data), as
+ * LAMMPS' Domain::set_initial_box(1): small[d] = 1e-4 * (hi - lo); faces with
+ * 's' move outward by small; faces with 'm' record their position as the
+ * minimum extent. Errors if lo >= hi in some dimension. Sets box_exists. */
+void domain_set_initial_box(struct gravel *g);
+
+/* Fit the non-periodic faces to the atom extent lo[d]..hi[d], as LAMMPS'
+ * Domain::reset_box(): 's' face: lo = extent_lo - small, hi = extent_hi + small;
+ * 'm' face: the same but never inside the face recorded at box creation;
+ * 'f' faces and periodic dimensions are untouched. An empty extent (some
+ * lo[d] > hi[d], no atoms) changes nothing. Errors if the box turns inside out. */
+void domain_shrink_wrap(struct gravel *g, const double lo[3], const double hi[3]);
+
+/* Box volume (product of the three lengths). 0 before the box exists. */
+double domain_volume(const struct gravel *g);
+
+/* Wrap x into [lo, hi) in every periodic dimension, updating the image
+ * counts (LAMMPS' Domain::remap). Non-periodic dimensions and non-finite
+ * coordinates are left alone. image may be NULL. */
+void domain_remap(const struct gravel *g, double x[3], int image[3]);
+
+/* Unwrapped position x + image * length (periodic dimensions only). */
+void domain_unmap(const struct gravel *g, const double x[3], const int image[3], double out[3]);
+
+/* Shortest periodic image of a separation vector (minimum image convention). */
+void domain_minimum_image(const struct gravel *g, double del[3]);
+
+/* 1 if x is inside the box as LAMMPS assigns atoms to it: lo <= x < hi. */
+int domain_inside(const struct gravel *g, const double x[3]);
+
+/* Lattice <-> box units: with units lattice, a length along dimension d is
+ * multiplied by the lattice spacing g->dom.lat.a[d] (xlattice, ylattice,
+ * zlattice in LAMMPS). lattice_flag 0 (units box) gives factor 1. */
+void domain_unit_scale(const struct gravel *g, int lattice_flag, double scale[3]);
+
+/* Parse the value of a `units` keyword: "box" -> 0, "lattice" -> 1. */
+int domain_parse_units_kw(struct gravel *g, const char *value);
+
+/* Error unless the box exists (for commands that need it). */
+void domain_require_box(struct gravel *g);
+
+#endif

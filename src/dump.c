@@ -1,0 +1,507 @@
+/* dump.c - the dump registry (styles/styles.def), the `dump`, `dump_modify`
+ * and `undump` commands, the LAMMPS schedule, and crash-safe file writing
+ * (temporary name + rename; see dump.h for the scheme). */
+#include "dump.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "error.h"
+#include "run.h"
+
+#define PAIR(k, i)
+#define FIX(k, i)
+#define COMPUTE(k, i)
+#define REGION(k, i)
+#define DUMP(k, i) extern const struct dump_style dump_style_##i;
+#include "styles.def"
+#undef DUMP
+
+static const struct dump_style *const dump_styles[] = {
+#define DUMP(k, i) &dump_style_##i,
+#include "styles.def"
+#undef DUMP
+    NULL};
+#undef PAIR
+#undef FIX
+#undef COMPUTE
+#undef REGION
+
+struct dump *dump_find(struct gravel *g, const char *id)
+{
+    for (int i = 0; i < g->styles.ndump; i++)
+        if (strcmp(g->styles.dump[i]->id, id) == 0)
+            return g->styles.dump[i];
+    return NULL;
+}
+
+/* ---- file names ------------------------------------------------------------- */
+
+/* The file a snapshot at `step` goes to: '*' replaced by the step, zero
+ * padded to d->pad digits. malloc'd. */
+static char *snapshot_name(struct gravel *g, const struct dump *d, bigint step)
+{
+    const char *star = strchr(d->file, '*');
+    if (!star)
+        return gr_strdup(g, d->file);
+    char num[40];
+    snprintf(num, sizeof num, "%0*lld", d->pad, (long long)step);
+    size_t n = strlen(d->file) + strlen(num);
+    char *s = gr_malloc(g, n);
+    snprintf(s, n, "%.*s%s%s", (int)(star - d->file), d->file, num, star + 1);
+    return s;
+}
+
+static char *tmp_name(struct gravel *g, const char *name)
+{
+    size_t n = strlen(name) + 5;
+    char *s = gr_malloc(g, n);
+    snprintf(s, n, "%s.tmp", name);
+    return s;
+}
+
+/* ---- lifetime ---------------------------------------------------------------- */
+
+/* Rename the append-mode temporary over the target. `strict`: errors raise,
+ * else warn (destroy path). */
+static void publish(struct gravel *g, struct dump *d, int strict)
+{
+    if (!d->fp)
+        return;
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", d->file);
+    int bad = fflush(d->fp) != 0 || ferror(d->fp);
+    bad |= fclose(d->fp) != 0;
+    d->fp = NULL;
+    if (!bad && rename(tmp, d->file) == 0) {
+        d->published = 1;
+        return;
+    }
+    int e = errno;
+    if (strict)
+        gr_error(g, "dump %s: cannot finish file '%s': %s (the new data is in %s)", d->id,
+                 d->file, strerror(e), tmp);
+    gr_warn(g, "dump %s: cannot finish file '%s': %s (the new data is in %s)", d->id, d->file,
+            strerror(e), tmp);
+}
+
+static void dump_delete(struct gravel *g, struct dump *d, int strict)
+{
+    if (!d)
+        return;
+    publish(g, d, strict);
+    if (d->style && d->style->destroy)
+        d->style->destroy(d);
+    free(d->file);
+    free(d->idx);
+    free(d);
+}
+
+void dump_free_all(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ndump; i++)
+        dump_delete(g, g->styles.dump[i], 0);
+    free(g->styles.dump);
+    g->styles.dump = NULL;
+    g->styles.ndump = g->styles.ndump_cap = 0;
+}
+
+void dump_run_end(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ndump; i++)
+        publish(g, g->styles.dump[i], 1);
+}
+
+/* ---- commands ------------------------------------------------------------------ */
+
+static void check_id(struct gravel *g, const char *id)
+{
+    size_t n = strlen(id);
+    if (n == 0 || n >= GR_NAMELEN)
+        gr_error(g, "dump ID must have 1 to %d characters", GR_NAMELEN - 1);
+    for (size_t k = 0; k < n; k++)
+        if (!isalnum((unsigned char)id[k]) && id[k] != '_')
+            gr_error(g, "dump ID '%.64s' may contain only letters, digits and underscores", id);
+}
+
+void cmd_dump(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 5)
+        gr_error(g, "expected: dump ID group style N file args...");
+    if (!g->dom.box_exists)
+        gr_error(g, "dump before the simulation box is defined");
+    check_id(g, argv[0]);
+    if (dump_find(g, argv[0]))
+        gr_error(g, "dump ID '%.64s' already exists; use undump first", argv[0]);
+    int igroup = arg_group(g, argv[1]);
+    const struct dump_style *st = NULL;
+    for (int k = 0; dump_styles[k]; k++)
+        if (strcmp(dump_styles[k]->name, argv[2]) == 0)
+            st = dump_styles[k];
+    if (!st) {
+        char known[256] = "";
+        for (int k = 0; dump_styles[k]; k++) {
+            strncat(known, k ? ", " : "", sizeof known - strlen(known) - 1);
+            strncat(known, dump_styles[k]->name, sizeof known - strlen(known) - 1);
+        }
+        gr_error(g, "unknown dump style '%.64s' (known: %s)", argv[2], known);
+    }
+    int every = arg_int(g, argv[3], "the dump interval N");
+    if (every <= 0)
+        gr_error(g, "the dump interval N must be positive, got %d", every);
+    const char *file = argv[4];
+    if (!*file || strlen(file) > 4000)
+        gr_error(g, "invalid dump file name");
+    const char *star = strchr(file, '*');
+    if (star && strchr(star + 1, '*'))
+        gr_error(g, "dump file name '%.200s' has more than one '*'", file);
+    if (strchr(file, '%'))
+        gr_error(g, "dump file name '%.200s': '%%' (one file per process) is not supported",
+                 file);
+    size_t fl = strlen(file);
+    if (fl > 3 && strcmp(file + fl - 3, ".gz") == 0)
+        gr_error(g, "dump file name '%.200s': compressed dumps are not supported", file);
+
+    struct dump *d = gr_calloc(g, 1, sizeof *d);
+    snprintf(d->id, sizeof d->id, "%s", argv[0]);
+    d->style = st;
+    d->igroup = igroup;
+    d->groupbit = 1u << igroup;
+    d->every = every;
+    d->multifile = star != NULL;
+    d->last_dump = -1;
+    d->file = strdup(file);
+    if (!d->file) {
+        free(d);
+        gr_error(g, "out of memory");
+    }
+
+    struct styles *s = &g->styles;
+    if (s->ndump == s->ndump_cap) {
+        int cap = s->ndump_cap ? 2 * s->ndump_cap : 4;
+        struct dump **p = realloc(s->dump, (size_t)cap * sizeof *p);
+        if (!p) {
+            dump_delete(g, d, 0);
+            gr_error(g, "out of memory");
+        }
+        s->dump = p;
+        s->ndump_cap = cap;
+    }
+    s->dump[s->ndump++] = d;
+
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        s->ndump--;
+        dump_delete(g, d, 0);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    st->create(g, d, argc - 5, argv + 5);
+    g->err.jmp = outer;
+}
+
+void cmd_dump_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "expected: dump_modify ID keyword value ...");
+    struct dump *d = dump_find(g, argv[0]);
+    if (!d)
+        gr_error(g, "unknown dump ID '%.64s'", argv[0]);
+    if (argc < 2)
+        gr_error(g, "expected keyword/value pairs after the dump ID");
+    for (int i = 1; i < argc;) {
+        const char *kw = argv[i];
+        int used = d->style->modify ? d->style->modify(g, d, argc, argv, i) : 0;
+        if (used > 0) {
+            i += used;
+            continue;
+        }
+        if (strcmp(kw, "every") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            if (argv[i + 1][0] == 'v' && argv[i + 1][1] == '_')
+                gr_error(g, "every with a variable is not supported; give a step count");
+            int n = arg_int(g, argv[i + 1], "every");
+            if (n <= 0)
+                gr_error(g, "every must be positive, got %d", n);
+            d->every = n;
+            i += 2;
+        } else if (strcmp(kw, "sort") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            if (strcmp(argv[i + 1], "id") == 0)
+                d->sort = 1;
+            else if (strcmp(argv[i + 1], "off") == 0)
+                d->sort = 0;
+            else
+                gr_error(g, "sort must be id or off, got '%.64s' (sorting by a column is not "
+                            "supported)", argv[i + 1]);
+            i += 2;
+        } else if (strcmp(kw, "pad") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            d->pad = arg_int_range(g, argv[i + 1], 0, 20, "pad");
+            i += 2;
+        } else if (strcmp(kw, "binary") == 0) {
+            gr_error(g, "binary applies to dump vtk only (dump %s is %s)", d->id, d->style->name);
+        } else {
+            gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad%s",
+                     kw, d->id, d->style->name,
+                     strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", format");
+        }
+    }
+}
+
+void cmd_undump(struct gravel *g, int argc, char **argv)
+{
+    if (argc != 1)
+        gr_error(g, "expected: undump ID");
+    struct styles *s = &g->styles;
+    for (int i = 0; i < s->ndump; i++) {
+        struct dump *d = s->dump[i];
+        if (strcmp(d->id, argv[0]) != 0)
+            continue;
+        memmove(s->dump + i, s->dump + i + 1, (size_t)(s->ndump - i - 1) * sizeof *s->dump);
+        s->ndump--;
+        dump_delete(g, d, 0);
+        return;
+    }
+    gr_error(g, "unknown dump ID '%.64s'", argv[0]);
+}
+
+/* ---- writing ------------------------------------------------------------------- */
+
+static int cmp_tag(const void *a, const void *b, void *arg)
+{
+    const int64_t *tag = arg;
+    int64_t ta = tag[*(const int *)a], tb = tag[*(const int *)b];
+    return (ta > tb) - (ta < tb);
+}
+
+/* Host indices of the atoms in the group, sorted by tag when asked. */
+static int select_atoms(struct gravel *g, struct dump *d)
+{
+    const struct atoms *a = &g->atoms;
+    if (d->idx_cap < a->n || !d->idx) {
+        int cap = a->n > 16 ? a->n : 16;
+        d->idx = gr_realloc(g, d->idx, (size_t)cap * sizeof *d->idx);
+        d->idx_cap = cap;
+    }
+    int n = 0;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & d->groupbit)
+            d->idx[n++] = i;
+    if (d->sort)
+        qsort_r(d->idx, (size_t)n, sizeof *d->idx, cmp_tag, a->tag);
+    return n;
+}
+
+/* Copy file `from` to the open stream `to`; 0 on success. */
+static int copy_into(const char *from, FILE *to)
+{
+    FILE *in = fopen(from, "rb");
+    if (!in)
+        return errno == ENOENT ? 0 : -1;
+    char buf[65536];
+    size_t k;
+    int bad = 0;
+    while ((k = fread(buf, 1, sizeof buf, in)) > 0)
+        if (fwrite(buf, 1, k, to) != k) {
+            bad = 1;
+            break;
+        }
+    bad |= ferror(in);
+    fclose(in);
+    return bad ? -1 : 0;
+}
+
+void dump_write(struct gravel *g, struct dump *d)
+{
+    int n = select_atoms(g, d);
+    int append = d->style->append && !d->multifile;
+    char *name = NULL, *tmp = NULL;
+    FILE *fp;
+    if (append) {
+        if (!d->fp) {
+            tmp = tmp_name(g, d->file);
+            d->fp = fopen(tmp, "wb");
+            if (!d->fp) {
+                int e = errno;
+                free(tmp);
+                gr_error(g, "dump %s: cannot open '%s.tmp': %s", d->id, d->file, strerror(e));
+            }
+            if (d->published && copy_into(d->file, d->fp) != 0) {
+                int e = errno;
+                fclose(d->fp);
+                d->fp = NULL;
+                remove(tmp);
+                free(tmp);
+                gr_error(g, "dump %s: cannot copy '%s' to continue it: %s", d->id, d->file,
+                         strerror(e));
+            }
+            free(tmp);
+            tmp = NULL;
+        }
+        fp = d->fp;
+    } else {
+        name = snapshot_name(g, d, g->step);
+        tmp = tmp_name(g, name);
+        fp = fopen(tmp, "wb");
+        if (!fp) {
+            int e = errno;
+            char msg[300];
+            snprintf(msg, sizeof msg, "%.250s", tmp);
+            free(name);
+            free(tmp);
+            gr_error(g, "dump %s: cannot open '%s': %s", d->id, msg, strerror(e));
+        }
+    }
+
+    /* the style may raise an error (e.g. a compute column): clean up first */
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        if (append) {
+            char t[4200];
+            snprintf(t, sizeof t, "%s.tmp", d->file);
+            fclose(d->fp);
+            d->fp = NULL;
+            remove(t);
+        } else {
+            fclose(fp);
+            remove(tmp);
+            free(name);
+            free(tmp);
+        }
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    d->style->write(g, d, fp, d->idx, n);
+    g->err.jmp = outer;
+
+    int bad = fflush(fp) != 0 || ferror(fp);
+    int e = errno;
+    if (append) {
+        if (bad) {
+            char t[4200];
+            snprintf(t, sizeof t, "%s.tmp", d->file);
+            fclose(d->fp);
+            d->fp = NULL;
+            remove(t);
+            gr_error(g, "dump %s: cannot write '%s.tmp': %s", d->id, d->file, strerror(e));
+        }
+    } else {
+        bad |= fclose(fp) != 0;
+        if (!bad && rename(tmp, name) != 0)
+            bad = 1;
+        if (bad) {
+            e = errno;
+            char msg[300];
+            snprintf(msg, sizeof msg, "%.250s", name);
+            remove(tmp);
+            free(name);
+            free(tmp);
+            gr_error(g, "dump %s: cannot write '%s': %s", d->id, msg, strerror(e));
+        }
+        free(name);
+        free(tmp);
+    }
+    d->last_dump = g->step;
+    d->nsnap++;
+}
+
+/* ---- schedule ------------------------------------------------------------------ */
+
+static bigint next_multiple(bigint step, int every)
+{
+    return (step / every) * every + every;
+}
+
+void dump_setup_all(struct gravel *g)
+{
+    int synced = 0;
+    for (int i = 0; i < g->styles.ndump; i++) {
+        struct dump *d = g->styles.dump[i];
+        if (d->style->init)
+            d->style->init(g, d);
+    }
+    for (int i = 0; i < g->styles.ndump; i++) {
+        struct dump *d = g->styles.dump[i];
+        if (g->step % d->every == 0 && d->last_dump != g->step) {
+            if (!synced) {
+                run_sync_host(g);
+                synced = 1;
+            }
+            dump_write(g, d);
+        }
+        d->next_dump = next_multiple(g->step, d->every);
+    }
+}
+
+int dump_due(struct gravel *g, bigint step)
+{
+    for (int i = 0; i < g->styles.ndump; i++) {
+        struct dump *d = g->styles.dump[i];
+        if (step % d->every == 0 && d->last_dump != step)
+            return 1;
+    }
+    return 0;
+}
+
+int dump_step_all(struct gravel *g)
+{
+    if (!dump_due(g, g->step))
+        return 0;
+    run_sync_host(g);
+    for (int i = 0; i < g->styles.ndump; i++) {
+        struct dump *d = g->styles.dump[i];
+        if (g->step % d->every == 0 && d->last_dump != g->step)
+            dump_write(g, d);
+        d->next_dump = next_multiple(g->step, d->every);
+    }
+    return 1;
+}
+
+/* ---- binary helpers -------------------------------------------------------------- */
+
+void dump_write_be_doubles(FILE *fp, const double *v, size_t n)
+{
+    unsigned char buf[8 * 512];
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        uint64_t u;
+        memcpy(&u, &v[i], 8);
+        for (int b = 7; b >= 0; b--)
+            buf[k++] = (unsigned char)(u >> (8 * b));
+        if (k == sizeof buf) {
+            fwrite(buf, 1, k, fp);
+            k = 0;
+        }
+    }
+    if (k)
+        fwrite(buf, 1, k, fp);
+}
+
+void dump_write_be_int32(FILE *fp, const int32_t *v, size_t n)
+{
+    unsigned char buf[4 * 1024];
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++) {
+        uint32_t u = (uint32_t)v[i];
+        for (int b = 3; b >= 0; b--)
+            buf[k++] = (unsigned char)(u >> (8 * b));
+        if (k == sizeof buf) {
+            fwrite(buf, 1, k, fp);
+            k = 0;
+        }
+    }
+    if (k)
+        fwrite(buf, 1, k, fp);
+}

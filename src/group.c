@@ -1,0 +1,404 @@
+/* group.c - the `group` command (static groups: region, type, id, subtract,
+ * union, intersect, delete, clear, empty) and the group reductions of
+ * group.h. Forms of `type` and `id`: values and ranges A:B or A:B:C, or a
+ * logical condition < <= > >= == != with one value or <> with two (A <= v <= B),
+ * as LAMMPS. Assigning to an existing group adds atoms to it. */
+#include "group.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "domain.h"
+#include "error.h"
+#include "region.h"
+
+int group_find(const struct gravel *g, const char *name)
+{
+    for (int i = 0; i < GR_MAXGROUP; i++)
+        if (g->groups.used[i] && strcmp(g->groups.name[i], name) == 0)
+            return i;
+    return -1;
+}
+
+int group_create(struct gravel *g, const char *name)
+{
+    int i = group_find(g, name);
+    if (i >= 0)
+        return i;
+    size_t n = strlen(name);
+    if (n == 0 || n >= GR_NAMELEN)
+        gr_error(g, "group ID must have 1 to %d characters", GR_NAMELEN - 1);
+    for (size_t k = 0; k < n; k++)
+        if (!isalnum((unsigned char)name[k]) && name[k] != '_')
+            gr_error(g, "group ID '%.64s' may contain only letters, digits and underscores",
+                     name);
+    for (i = 1; i < GR_MAXGROUP; i++)
+        if (!g->groups.used[i])
+            break;
+    if (i == GR_MAXGROUP)
+        gr_error(g, "too many groups (at most %d including 'all')", GR_MAXGROUP);
+    g->groups.used[i] = 1;
+    memcpy(g->groups.name[i], name, n + 1);
+    if (i >= g->groups.n)
+        g->groups.n = i + 1;
+    return i;
+}
+
+/* ---- reductions ------------------------------------------------------------- */
+
+bigint group_count(const struct gravel *g, int igroup)
+{
+    unsigned bit = group_bit(igroup);
+    bigint n = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        n += (g->atoms.mask[i] & bit) != 0;
+    return n;
+}
+
+double group_mass(const struct gravel *g, int igroup)
+{
+    unsigned bit = group_bit(igroup);
+    double m = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        if (g->atoms.mask[i] & bit)
+            m += g->atoms.rmass[i];
+    return m;
+}
+
+void group_xcm(const struct gravel *g, int igroup, double masstotal, double xcm[3])
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    double s[3] = {0, 0, 0};
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & bit))
+            continue;
+        double u[3];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        for (int d = 0; d < 3; d++)
+            s[d] += a->rmass[i] * u[d];
+    }
+    for (int d = 0; d < 3; d++)
+        xcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
+}
+
+void group_vcm(const struct gravel *g, int igroup, double masstotal, double vcm[3])
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    double s[3] = {0, 0, 0};
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & bit)
+            for (int d = 0; d < 3; d++)
+                s[d] += a->rmass[i] * a->v[3 * i + d];
+    for (int d = 0; d < 3; d++)
+        vcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
+}
+
+void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3])
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    for (int d = 0; d < 3; d++) {
+        lo[d] = INFINITY;
+        hi[d] = -INFINITY;
+    }
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & bit)
+            for (int d = 0; d < 3; d++) {
+                lo[d] = fmin(lo[d], a->x[3 * i + d]);
+                hi[d] = fmax(hi[d], a->x[3 * i + d]);
+            }
+}
+
+double group_ke(const struct gravel *g, int igroup)
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    double ke = 0;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & bit) {
+            const double *v = a->v + 3 * i;
+            ke += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        }
+    return 0.5 * ke;
+}
+
+void group_angmom(const struct gravel *g, int igroup, const double xcm[3], double L[3])
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    L[0] = L[1] = L[2] = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & bit))
+            continue;
+        double u[3];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        double dx = u[0] - xcm[0], dy = u[1] - xcm[1], dz = u[2] - xcm[2];
+        const double *v = a->v + 3 * i;
+        double m = a->rmass[i];
+        L[0] += m * (dy * v[2] - dz * v[1]);
+        L[1] += m * (dz * v[0] - dx * v[2]);
+        L[2] += m * (dx * v[1] - dy * v[0]);
+    }
+}
+
+void group_inertia(const struct gravel *g, int igroup, const double xcm[3], double I[3][3])
+{
+    unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    memset(I, 0, 9 * sizeof(double));
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & bit))
+            continue;
+        double u[3];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        double dx = u[0] - xcm[0], dy = u[1] - xcm[1], dz = u[2] - xcm[2];
+        double m = a->rmass[i];
+        I[0][0] += m * (dy * dy + dz * dz);
+        I[1][1] += m * (dx * dx + dz * dz);
+        I[2][2] += m * (dx * dx + dy * dy);
+        I[0][1] -= m * dx * dy;
+        I[1][2] -= m * dy * dz;
+        I[0][2] -= m * dx * dz;
+    }
+    I[1][0] = I[0][1];
+    I[2][1] = I[1][2];
+    I[2][0] = I[0][2];
+}
+
+void group_omega(const double L[3], double I[3][3], double w[3])
+{
+    double det = I[0][0] * I[1][1] * I[2][2] + I[0][1] * I[1][2] * I[2][0] +
+                 I[0][2] * I[1][0] * I[2][1] - I[0][0] * I[1][2] * I[2][1] -
+                 I[0][1] * I[1][0] * I[2][2] - I[2][0] * I[1][1] * I[0][2];
+    w[0] = w[1] = w[2] = 0;
+    if (!(det > 0 || det < 0))
+        return;
+    double inv[3][3];
+    inv[0][0] = I[1][1] * I[2][2] - I[1][2] * I[2][1];
+    inv[0][1] = -(I[0][1] * I[2][2] - I[0][2] * I[2][1]);
+    inv[0][2] = I[0][1] * I[1][2] - I[0][2] * I[1][1];
+    inv[1][0] = -(I[1][0] * I[2][2] - I[1][2] * I[2][0]);
+    inv[1][1] = I[0][0] * I[2][2] - I[0][2] * I[2][0];
+    inv[1][2] = -(I[0][0] * I[1][2] - I[0][2] * I[1][0]);
+    inv[2][0] = I[1][0] * I[2][1] - I[1][1] * I[2][0];
+    inv[2][1] = -(I[0][0] * I[2][1] - I[0][1] * I[2][0]);
+    inv[2][2] = I[0][0] * I[1][1] - I[0][1] * I[1][0];
+    for (int r = 0; r < 3; r++)
+        w[r] = (inv[r][0] * L[0] + inv[r][1] * L[1] + inv[r][2] * L[2]) / det;
+}
+
+/* ---- the command ------------------------------------------------------------- */
+
+/* Parse a value list or logical condition for `type` / `id` into a
+ * predicate; sets flags[] for matching tag/type values via callback. */
+struct selector {
+    int logical;            /* 0: list; else one of the ops below */
+    bigint a, b;
+    int nlist;
+    bigint (*list)[3];      /* start, stop, step */
+};
+
+enum { OP_LT = 1, OP_LE, OP_GT, OP_GE, OP_EQ, OP_NE, OP_BETWEEN };
+
+static int sel_match(const struct selector *s, bigint v)
+{
+    switch (s->logical) {
+    case OP_LT: return v < s->a;
+    case OP_LE: return v <= s->a;
+    case OP_GT: return v > s->a;
+    case OP_GE: return v >= s->a;
+    case OP_EQ: return v == s->a;
+    case OP_NE: return v != s->a;
+    case OP_BETWEEN: return v >= s->a && v <= s->b;
+    default: break;
+    }
+    for (int k = 0; k < s->nlist; k++) {
+        bigint lo = s->list[k][0], hi = s->list[k][1], st = s->list[k][2];
+        if (v >= lo && v <= hi && (v - lo) % st == 0)
+            return 1;
+    }
+    return 0;
+}
+
+static void parse_selector(struct gravel *g, int argc, char **argv, const char *what,
+                           struct selector *s, bigint (*buf)[3])
+{
+    static const char *ops[] = {"<", "<=", ">", ">=", "==", "!=", "<>"};
+    memset(s, 0, sizeof *s);
+    if (argc < 1)
+        gr_error(g, "group %s needs at least one value", what);
+    for (int k = 0; k < 7; k++) {
+        if (strcmp(argv[0], ops[k]) != 0)
+            continue;
+        s->logical = k + 1;
+        int need = s->logical == OP_BETWEEN ? 2 : 1;
+        if (argc != 1 + need)
+            gr_error(g, "group %s %s needs exactly %d value%s", what, ops[k], need,
+                     need > 1 ? "s" : "");
+        s->a = arg_bigint(g, argv[1], what);
+        if (need == 2) {
+            s->b = arg_bigint(g, argv[2], what);
+            if (s->a > s->b)
+                gr_error(g, "group %s <> needs the smaller value first, got %s %s", what,
+                         argv[1], argv[2]);
+        }
+        return;
+    }
+    s->list = buf;
+    for (int k = 0; k < argc; k++) {
+        char tmp[64];
+        if (strlen(argv[k]) >= sizeof tmp)
+            gr_error(g, "invalid %s value '%.64s'", what, argv[k]);
+        strcpy(tmp, argv[k]);
+        char *p1 = strchr(tmp, ':'), *p2 = NULL;
+        bigint lo, hi, st = 1;
+        if (p1) {
+            *p1++ = '\0';
+            p2 = strchr(p1, ':');
+            if (p2)
+                *p2++ = '\0';
+            lo = arg_bigint(g, tmp, what);
+            hi = arg_bigint(g, p1, what);
+            if (p2) {
+                st = arg_bigint(g, p2, what);
+                if (st <= 0)
+                    gr_error(g, "range step in '%s' must be positive", argv[k]);
+            }
+            if (lo > hi)
+                gr_error(g, "range '%s' has its start after its end", argv[k]);
+        } else {
+            lo = hi = arg_bigint(g, tmp, what);
+        }
+        buf[k][0] = lo;
+        buf[k][1] = hi;
+        buf[k][2] = st;
+    }
+    s->nlist = argc;
+}
+
+static void print_count(struct gravel *g, int ig)
+{
+    gr_print(g, "%lld atoms in group %s\n", (long long)group_count(g, ig), g->groups.name[ig]);
+}
+
+void cmd_group(struct gravel *g, int argc, char **argv)
+{
+    const char *id = argv[0], *style = argv[1];
+    struct atoms *a = &g->atoms;
+    domain_require_box(g);
+    if (!strcmp(style, "delete")) {
+        if (argc != 2)
+            gr_error(g, "group delete takes no further arguments");
+        int ig = group_find(g, id);
+        if (ig < 0)
+            gr_error(g, "unknown group '%.64s'", id);
+        if (ig == 0)
+            gr_error(g, "group 'all' cannot be deleted");
+        for (int k = 0; k < g->neigh.nexclude; k++)
+            if (g->neigh.exclude_group[k][0] == ig || g->neigh.exclude_group[k][1] == ig)
+                gr_error(g, "group '%s' is used by neigh_modify exclude and cannot be deleted",
+                         id);
+        unsigned keep = ~group_bit(ig);
+        for (int i = 0; i < a->n; i++)
+            a->mask[i] &= keep;
+        g->groups.used[ig] = 0;
+        g->groups.name[ig][0] = '\0';
+        return;
+    }
+    if (!strcmp(style, "clear")) {
+        if (argc != 2)
+            gr_error(g, "group clear takes no further arguments");
+        int ig = group_find(g, id);
+        if (ig < 0)
+            gr_error(g, "unknown group '%.64s'", id);
+        if (ig == 0)
+            gr_error(g, "group 'all' cannot be cleared");
+        unsigned keep = ~group_bit(ig);
+        for (int i = 0; i < a->n; i++)
+            a->mask[i] &= keep;
+        return;
+    }
+    if (!strcmp(id, "all"))
+        gr_error(g, "group 'all' always holds every atom and cannot be assigned");
+    /* validate everything before creating the group */
+    int nrest = argc - 2;
+    char **rest = argv + 2;
+    unsigned bit;
+    if (!strcmp(style, "empty")) {
+        if (nrest)
+            gr_error(g, "group empty takes no further arguments");
+        group_create(g, id);
+    } else if (!strcmp(style, "region")) {
+        if (nrest != 1)
+            gr_error(g, "group region needs exactly one region ID");
+        const struct region *r = region_get(g, rest[0]);
+        bit = group_bit(group_create(g, id));
+        for (int i = 0; i < a->n; i++)
+            if (region_match(r, a->x + 3 * i))
+                a->mask[i] |= bit;
+    } else if (!strcmp(style, "type") || !strcmp(style, "id")) {
+        int is_type = style[0] == 't';
+        struct selector s;
+        bigint(*buf)[3] = gr_malloc(g, (size_t)(nrest ? nrest : 1) * sizeof *buf);
+        jmp_buf *outer = g->err.jmp, here;
+        g->err.jmp = &here;
+        if (setjmp(here)) {
+            g->err.jmp = outer;
+            free(buf);
+            if (outer)
+                longjmp(*outer, 1);
+            gr_report_error(g);
+            exit(1);
+        }
+        parse_selector(g, nrest, rest, is_type ? "type" : "id", &s, buf);
+        bit = group_bit(group_create(g, id));
+        g->err.jmp = outer;
+        for (int i = 0; i < a->n; i++)
+            if (sel_match(&s, is_type ? a->type[i] : a->tag[i]))
+                a->mask[i] |= bit;
+        free(buf);
+    } else if (!strcmp(style, "subtract") || !strcmp(style, "union") ||
+               !strcmp(style, "intersect")) {
+        int min = style[0] == 'u' ? 1 : 2;
+        if (nrest < min)
+            gr_error(g, "group %s needs at least %d group IDs", style, min);
+        unsigned masks[GR_MAXGROUP];
+        if (nrest > GR_MAXGROUP)
+            gr_error(g, "too many group IDs");
+        for (int k = 0; k < nrest; k++)
+            masks[k] = group_bit(arg_group(g, rest[k]));
+        bit = group_bit(group_create(g, id));
+        for (int i = 0; i < a->n; i++) {
+            unsigned m = a->mask[i];
+            int in;
+            if (style[0] == 'u') {
+                in = 0;
+                for (int k = 0; k < nrest; k++)
+                    in |= (m & masks[k]) != 0;
+            } else if (style[0] == 'i') {
+                in = 1;
+                for (int k = 0; k < nrest; k++)
+                    in &= (m & masks[k]) != 0;
+            } else {
+                in = (m & masks[0]) != 0;
+                for (int k = 1; k < nrest; k++)
+                    if (m & masks[k])
+                        in = 0;
+            }
+            if (in)
+                a->mask[i] |= bit;
+        }
+    } else if (!strcmp(style, "variable") || !strcmp(style, "include") ||
+               !strcmp(style, "molecule") || !strcmp(style, "dynamic") ||
+               !strcmp(style, "static")) {
+        gr_error(g, "group style '%s' is not supported", style);
+    } else {
+        gr_error(g, "unknown group style '%.32s'", style);
+    }
+    print_count(g, group_find(g, id));
+}

@@ -1,0 +1,37 @@
+/* group.h - static groups of atoms (LAMMPS group command) and group
+ * reductions used by commands and expressions.
+ *
+ * A group is a bit of the per-atom mask (bit 0 = "all"); g->groups holds the
+ * names. Membership is assigned when a group command runs (static groups). */
+#ifndef GR_GROUP_H
+#define GR_GROUP_H
+
+#include "gravel.h"
+
+/* Index of group `name`, or -1. */
+int group_find(const struct gravel *g, const char *name);
+/* Index of group `name`, creating it (no atoms) if new; errors when all 32
+ * slots are used or the name is not letters, digits and underscores. */
+int group_create(struct gravel *g, const char *name);
+/* The mask bit of group index i. */
+static inline unsigned group_bit(int i) { return 1u << i; }
+
+/* Reductions over the atoms of group i (host arrays). */
+bigint group_count(const struct gravel *g, int igroup);
+double group_mass(const struct gravel *g, int igroup);
+/* Center of mass of unwrapped positions; masstotal from group_mass (0: xcm = 0). */
+void group_xcm(const struct gravel *g, int igroup, double masstotal, double xcm[3]);
+/* Center-of-mass velocity. */
+void group_vcm(const struct gravel *g, int igroup, double masstotal, double vcm[3]);
+/* Extent of the (wrapped) positions; lo > hi when the group is empty. */
+void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3]);
+/* Translational kinetic energy sum 1/2 m v^2. */
+double group_ke(const struct gravel *g, int igroup);
+/* Angular momentum about xcm (unwrapped positions). */
+void group_angmom(const struct gravel *g, int igroup, const double xcm[3], double L[3]);
+/* Inertia tensor about xcm (point masses, unwrapped positions). */
+void group_inertia(const struct gravel *g, int igroup, const double xcm[3], double I[3][3]);
+/* Angular velocity from L and I (I^-1 L; 0 if I is singular, as LAMMPS). */
+void group_omega(const double L[3], double I[3][3], double w[3]);
+
+#endif

@@ -1,0 +1,211 @@
+/* set.c - `set style ID keyword value ...`: change per-atom properties of the
+ * atoms selected by style atom|type|group|region (LAMMPS set).
+ *
+ * LAMMPS semantics for atom_style sphere: `diameter` changes the radius only
+ * (not the mass, as LAMMPS 2021 checked); `density` sets the mass from the
+ * current radius, mass = 4/3 pi r^3 rho, or mass = rho for a point particle
+ * (radius 0); `mass` sets the mass directly. Keywords apply in order. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_rng.h>
+
+#include "args.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "region.h"
+
+/* Parse a LAMMPS id range "*", "n", "n*", "*n", "m*n" into [lo, hi] within 1..max. */
+static void parse_range(struct gravel *g, const char *s, bigint max, bigint *lo, bigint *hi,
+                        const char *what)
+{
+    const char *star = strchr(s, '*');
+    if (!star) {
+        *lo = *hi = arg_bigint(g, s, what);
+        if (*lo < 1 || *lo > max)
+            gr_error(g, "%s %s is outside 1..%lld", what, s, (long long)max);
+        return;
+    }
+    char buf[64];
+    size_t n = (size_t)(star - s);
+    if (n >= sizeof buf || strlen(star + 1) >= sizeof buf)
+        gr_error(g, "invalid %s range '%.64s'", what, s);
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+    *lo = n ? arg_bigint(g, buf, what) : 1;
+    *hi = star[1] ? arg_bigint(g, star + 1, what) : max;
+    if (*lo < 1 || *lo > *hi)
+        gr_error(g, "invalid %s range '%.64s'", what, s);
+}
+
+/* Select atoms: sel[i] = 1 for chosen atoms. */
+static void select_atoms(struct gravel *g, const char *style, const char *id, char *sel)
+{
+    const struct atoms *a = &g->atoms;
+    if (!strcmp(style, "atom")) {
+        bigint lo, hi;
+        parse_range(g, id, a->maxtag > 0 ? a->maxtag : 1, &lo, &hi, "atom ID");
+        for (int i = 0; i < a->n; i++)
+            sel[i] = a->tag[i] >= lo && a->tag[i] <= hi;
+    } else if (!strcmp(style, "type")) {
+        bigint lo, hi;
+        parse_range(g, id, a->ntypes, &lo, &hi, "atom type");
+        if (hi > a->ntypes)
+            gr_error(g, "atom type range '%s' is outside 1..%d", id, a->ntypes);
+        for (int i = 0; i < a->n; i++)
+            sel[i] = a->type[i] >= lo && a->type[i] <= hi;
+    } else if (!strcmp(style, "group")) {
+        unsigned bit = group_bit(arg_group(g, id));
+        for (int i = 0; i < a->n; i++)
+            sel[i] = (a->mask[i] & bit) != 0;
+    } else if (!strcmp(style, "region")) {
+        const struct region *r = region_get(g, id);
+        for (int i = 0; i < a->n; i++)
+            sel[i] = region_match(r, a->x + 3 * i);
+    } else if (!strcmp(style, "mol")) {
+        gr_error(g, "style mol is not supported: atom_style sphere has no molecules");
+    } else {
+        gr_error(g, "unknown style '%.32s': expected atom, type, group or region", style);
+    }
+}
+
+/* A uniform [0,1) number for one atom that depends only on seed and tag. */
+static double atom_uniform(gsl_rng *rng, unsigned long seed, int64_t tag)
+{
+    uint64_t h = (uint64_t)seed * 0x9E3779B97F4A7C15ull ^ (uint64_t)tag * 0xC2B2AE3D27D4EB4Full;
+    h ^= h >> 31;
+    gsl_rng_set(rng, (unsigned long)(h & 0xffffffffu) ? (unsigned long)(h & 0xffffffffu) : 1);
+    return gsl_rng_uniform(rng);
+}
+
+/* Apply the keywords in order; with dry set, only validate them (so a bad
+ * keyword late in the line changes nothing). */
+static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **rng, int dry)
+{
+    struct atoms *a = &g->atoms;
+    int n = dry ? 0 : a->n;
+    for (int k = 2; k < argc; k++) {
+        const char *kw = argv[k];
+        long count = 0;
+        int nv = 1;
+        if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
+            nv = 3;
+        else if (!strcmp(kw, "type/fraction"))
+            nv = 3;
+        arg_need(g, argc, k, nv, kw);
+        char **v = argv + k + 1;
+        if (!strcmp(kw, "type")) {
+            int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->type[i] = t, count++;
+        } else if (!strcmp(kw, "type/fraction")) {
+            int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
+            double f = arg_double(g, v[1], "fraction");
+            if (f < 0 || f > 1)
+                gr_error(g, "fraction must be between 0 and 1, got %s", v[1]);
+            int seed = arg_int(g, v[2], "seed");
+            if (seed <= 0)
+                gr_error(g, "seed must be a positive integer, got %s", v[2]);
+            if (!dry && !*rng && !(*rng = gsl_rng_alloc(gsl_rng_mt19937)))
+                gr_error(g, "out of memory creating a random number generator");
+            for (int i = 0; i < n; i++)
+                if (sel[i] && atom_uniform(*rng, (unsigned long)seed, a->tag[i]) < f)
+                    a->type[i] = t, count++;
+        } else if (!strcmp(kw, "mass")) {
+            double m = arg_positive(g, v[0], "mass");
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->rmass[i] = m, count++;
+        } else if (!strcmp(kw, "diameter")) {
+            double d = arg_nonneg(g, v[0], "diameter");
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->radius[i] = 0.5 * d, count++;
+        } else if (!strcmp(kw, "density") || !strcmp(kw, "density/disc")) {
+            if (kw[7] == '/')
+                gr_error(g, "density/disc is for 2d and gravel is 3d only");
+            double rho = arg_positive(g, v[0], "density");
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double r = a->radius[i];
+                    a->rmass[i] = r > 0 ? 4.0 * M_PI / 3.0 * r * r * r * rho : rho;
+                    count++;
+                }
+        } else if (!strcmp(kw, "omega")) {
+            double w[3];
+            for (int d = 0; d < 3; d++)
+                w[d] = arg_double(g, v[d], "omega");
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    for (int d = 0; d < 3; d++)
+                        a->omega[3 * i + d] = w[d];
+                    count++;
+                }
+        } else if (!strcmp(kw, "image")) {
+            int im[3];
+            for (int d = 0; d < 3; d++) {
+                im[d] = arg_int(g, v[d], "image flag");
+                if (im[d] != 0 && !g->dom.periodic[d])
+                    gr_error(g, "cannot set a non-zero image flag in non-periodic %c",
+                             "xyz"[d]);
+            }
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    for (int d = 0; d < 3; d++)
+                        a->image[3 * i + d] = im[d];
+                    count++;
+                }
+        } else if ((kw[0] == 'x' || kw[0] == 'y' || kw[0] == 'z') && kw[1] == '\0') {
+            int d = kw[0] - 'x';
+            double val = arg_double(g, v[0], kw);
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->x[3 * i + d] = val, count++;
+        } else if (kw[0] == 'v' && (kw[1] == 'x' || kw[1] == 'y' || kw[1] == 'z') &&
+                   kw[2] == '\0') {
+            int d = kw[1] - 'x';
+            double val = arg_double(g, v[0], kw);
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->v[3 * i + d] = val, count++;
+        } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge") ||
+                   !strcmp(kw, "mol")) {
+            gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
+        } else {
+            gr_error(g, "unknown keyword '%.32s'", kw);
+        }
+        if (!dry)
+            gr_print(g, "  %ld settings made for %s\n", count, kw);
+        k += nv;
+    }
+}
+
+void cmd_set(struct gravel *g, int argc, char **argv)
+{
+    domain_require_box(g);
+    if (argc < 4)
+        gr_error(g, "expected: set style ID keyword value ...");
+    char *sel = gr_calloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1), 1);
+    gsl_rng *rng = NULL;
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        free(sel);
+        gsl_rng_free(rng);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    select_atoms(g, argv[0], argv[1], sel);
+    gr_print(g, "Setting atom values ...\n");
+    apply(g, argc, argv, sel, &rng, 1);
+    apply(g, argc, argv, sel, &rng, 0);
+    g->err.jmp = outer;
+    free(sel);
+    gsl_rng_free(rng);
+}

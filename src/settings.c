@@ -1,0 +1,164 @@
+/* settings.c - simple global settings: units, dimension, atom_style, timestep,
+ * neighbor, neigh_modify and mass. Each validates its arguments the way LAMMPS
+ * does and stores the result in struct gravel. */
+#include <string.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "domain.h"
+#include "error.h"
+
+/* Defence in depth for pre-box commands (the dispatcher checks phases too). */
+static void require_no_box(struct gravel *g)
+{
+    if (g->dom.box_exists)
+        gr_error(g, "must be used before the simulation box is created");
+}
+
+/* units lj|si|cgs: only defaults differ (gr_unit_defaults: timestep, skin,
+ * thermo normalization); gravel converts nothing. */
+void cmd_units(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    require_no_box(g);
+    if (strcmp(argv[0], "lj") == 0)
+        g->dom.units = UNITS_LJ;
+    else if (strcmp(argv[0], "si") == 0)
+        g->dom.units = UNITS_SI;
+    else if (strcmp(argv[0], "cgs") == 0)
+        g->dom.units = UNITS_CGS;
+    else if (!strcmp(argv[0], "real") || !strcmp(argv[0], "metal") ||
+             !strcmp(argv[0], "electron") || !strcmp(argv[0], "micro") ||
+             !strcmp(argv[0], "nano"))
+        gr_error(g, "units '%s' is not supported: use lj, si or cgs", argv[0]);
+    else
+        gr_error(g, "unknown units '%.32s': expected lj, si or cgs", argv[0]);
+    gr_unit_defaults(g);
+    g->dt_set = 0;
+}
+
+void cmd_dimension(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    require_no_box(g);
+    int d = arg_int(g, argv[0], "dimension");
+    if (d == 2)
+        gr_error(g, "2d simulations are not supported: gravel is 3d only");
+    if (d != 3)
+        gr_error(g, "dimension must be 3, got %d", d);
+    g->dom.dimension = 3;
+}
+
+/* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted. */
+void cmd_atom_style(struct gravel *g, int argc, char **argv)
+{
+    require_no_box(g);
+    if (strcmp(argv[0], "sphere") != 0)
+        gr_error(g, "atom_style '%.32s' is not supported: gravel has only atom_style sphere",
+                 argv[0]);
+    if (argc > 2)
+        gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");
+    if (argc == 2)
+        arg_int_range(g, argv[1], 0, 1, "atom_style sphere radvary flag");
+}
+
+void cmd_timestep(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    g->dt = arg_positive(g, argv[0], "timestep");
+    g->dt_set = 1;
+}
+
+/* neighbor skin bin */
+void cmd_neighbor(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    double skin = arg_nonneg(g, argv[0], "skin");
+    if (strcmp(argv[1], "nsq") == 0 || strcmp(argv[1], "multi") == 0 ||
+        strcmp(argv[1], "multi/old") == 0)
+        gr_error(g, "neighbor style '%s' is not supported: use bin", argv[1]);
+    if (strcmp(argv[1], "bin") != 0)
+        gr_error(g, "unknown neighbor style '%.32s': expected bin", argv[1]);
+    g->neigh.skin = skin;
+    g->neigh.style_bin = 1;
+}
+
+static void add_exclusion(struct gravel *g, int pairs[16][2], int *n, int a, int b)
+{
+    if (*n >= 16)
+        gr_error(g, "too many neigh_modify exclusions (at most 16 of each kind)");
+    pairs[*n][0] = a;
+    pairs[*n][1] = b;
+    (*n)++;
+}
+
+void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
+{
+    struct neigh_settings ns = g->neigh;
+    for (int i = 0; i < argc; i++) {
+        const char *kw = argv[i];
+        if (!strcmp(kw, "every")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.every = arg_int_range(g, argv[++i], 1, 1 << 30, "every");
+        } else if (!strcmp(kw, "delay")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.delay = arg_int_range(g, argv[++i], 0, 1 << 30, "delay");
+        } else if (!strcmp(kw, "check")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.check = arg_yesno(g, argv[++i], "check");
+        } else if (!strcmp(kw, "once")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.once = arg_yesno(g, argv[++i], "once");
+        } else if (!strcmp(kw, "one")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.one = arg_int_range(g, argv[++i], 1, 1 << 24, "one");
+        } else if (!strcmp(kw, "page")) {
+            arg_need(g, argc, i, 1, kw);
+            ns.page = arg_int_range(g, argv[++i], 1, 1 << 30, "page");
+        } else if (!strcmp(kw, "exclude")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *how = argv[++i];
+            if (!strcmp(how, "none")) {
+                ns.nexclude = ns.nexclude_type = 0;
+            } else if (!strcmp(how, "type")) {
+                arg_need(g, argc, i, 2, "exclude type");
+                if (!g->dom.box_exists)
+                    gr_error(g, "exclude type needs the box (atom types) to exist");
+                int a = arg_int_range(g, argv[i + 1], 1, g->atoms.ntypes, "exclude type");
+                int b = arg_int_range(g, argv[i + 2], 1, g->atoms.ntypes, "exclude type");
+                add_exclusion(g, ns.exclude_type, &ns.nexclude_type, a, b);
+                i += 2;
+            } else if (!strcmp(how, "group")) {
+                arg_need(g, argc, i, 2, "exclude group");
+                int a = arg_group(g, argv[i + 1]);
+                int b = arg_group(g, argv[i + 2]);
+                add_exclusion(g, ns.exclude_group, &ns.nexclude, a, b);
+                i += 2;
+            } else {
+                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none",
+                         how);
+            }
+        } else {
+            gr_error(g, "unknown keyword '%.32s'", kw);
+        }
+    }
+    if (ns.page < 10 * ns.one)
+        gr_error(g, "page (%d) must be at least 10 x one (%d)", ns.page, ns.one);
+    if (ns.delay > 0 && ns.delay % ns.every != 0)
+        gr_error(g, "delay (%d) must be 0 or a multiple of every (%d)", ns.delay, ns.every);
+    g->neigh = ns;
+}
+
+/* mass I value: per-type mass (I may be a range). atom_style sphere keeps a
+ * per-atom mass from diameter and density; the per-type value is stored
+ * (written to data files' Masses section) but does not change atom masses. */
+void cmd_mass(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    domain_require_box(g);
+    int lo, hi;
+    arg_type_range(g, argv[0], g->atoms.ntypes, &lo, &hi);
+    double m = arg_positive(g, argv[1], "mass");
+    for (int t = lo; t <= hi; t++)
+        g->atoms.type_mass[t] = m;
+}

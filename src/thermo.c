@@ -1,0 +1,675 @@
+/* thermo.c - the thermo table: `thermo`, `thermo_style`, `thermo_modify`,
+ * the header and value lines in LAMMPS 2021's layout, and thermo keyword
+ * values for expressions (thermo_keyword_value).
+ *
+ * Layout (LAMMPS 2021 Thermo): the header is the column names each followed
+ * by one space; a line is each value formatted and followed by one space.
+ * Default formats: integers "%8d" (steps, atoms), floats "%12.8g"; in multi
+ * mode a banner line "---------------- Step %8d ----- CPU = %11.4f (sec)
+ * ----------------" and "%-8s = %14.4f " fields, three per line.
+ * Format precedence per column: `format N` > `format int|float` >
+ * the word of `format line` > default, as LAMMPS 2021. */
+#include <ctype.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "args.h"
+#include "compute.h"
+#include "error.h"
+#include "output.h"
+#include "run.h"
+#include "styles.h"
+#include "thermo.h"
+#include "variable.h"
+
+enum vtype { V_BIGINT, V_FLOAT };
+enum kw_id {
+    KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
+    KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
+    KW_COUNT
+};
+#define KIND_COMPUTE (-1)
+#define KIND_VARIABLE (-2)
+
+static const struct {
+    const char *name, *header;
+    enum vtype type;
+} keywords[KW_COUNT] = {
+    [KW_STEP] = {"step", "Step", V_BIGINT},     [KW_ELAPSED] = {"elapsed", "Elapsed", V_BIGINT},
+    [KW_DT] = {"dt", "Dt", V_FLOAT},            [KW_TIME] = {"time", "Time", V_FLOAT},
+    [KW_CPU] = {"cpu", "CPU", V_FLOAT},         [KW_TPCPU] = {"tpcpu", "T/CPU", V_FLOAT},
+    [KW_SPCPU] = {"spcpu", "S/CPU", V_FLOAT},   [KW_ATOMS] = {"atoms", "Atoms", V_BIGINT},
+    [KW_KE] = {"ke", "KinEng", V_FLOAT},        [KW_PE] = {"pe", "PotEng", V_FLOAT},
+    [KW_ETOTAL] = {"etotal", "TotEng", V_FLOAT}, [KW_VOL] = {"vol", "Volume", V_FLOAT},
+    [KW_LX] = {"lx", "Lx", V_FLOAT},            [KW_LY] = {"ly", "Ly", V_FLOAT},
+    [KW_LZ] = {"lz", "Lz", V_FLOAT},            [KW_XLO] = {"xlo", "Xlo", V_FLOAT},
+    [KW_XHI] = {"xhi", "Xhi", V_FLOAT},         [KW_YLO] = {"ylo", "Ylo", V_FLOAT},
+    [KW_YHI] = {"yhi", "Yhi", V_FLOAT},         [KW_ZLO] = {"zlo", "Zlo", V_FLOAT},
+    [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},
+};
+
+/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press"; a
+ * granular engine has no temperature compute, molecular energy or virial, so
+ * `one` prints the energies and size it does have. */
+static const char *const style_one[] = {"step", "atoms", "ke", "pe", "etotal", "vol"};
+static const char *const style_multi[] = {"step", "atoms", "etotal", "ke", "pe", "vol"};
+
+#define FMT_BIGINT_ONE "%8lld"
+#define FMT_FLOAT_ONE "%12.8g"
+#define FMT_BIGINT_MULTI "%14lld"
+#define FMT_FLOAT_MULTI "%14.4f"
+
+/* ---- state and text buffer ------------------------------------------------- */
+
+double output_wall(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+struct output_state *output_state(struct gravel *g)
+{
+    if (!g->thermo.state) {
+        g->thermo.state = gr_calloc(g, 1, sizeof *g->thermo.state);
+        g->thermo.state->last_thermo = -1;
+        g->thermo.state->wall0 = output_wall();
+    }
+    return g->thermo.state;
+}
+
+static void text_clear(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    st->text_len = 0;
+    if (st->text)
+        st->text[0] = '\0';
+}
+
+static void text_add(struct gravel *g, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void text_add(struct gravel *g, const char *fmt, ...)
+{
+    struct output_state *st = output_state(g);
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (n < 0)
+        return;
+    if (st->text_len + (size_t)n + 1 > st->text_cap) {
+        size_t cap = st->text_cap ? st->text_cap : 256;
+        while (cap < st->text_len + (size_t)n + 1)
+            cap *= 2;
+        st->text = gr_realloc(g, st->text, cap);
+        st->text_cap = cap;
+    }
+    va_start(ap, fmt);
+    vsnprintf(st->text + st->text_len, st->text_cap - st->text_len, fmt, ap);
+    va_end(ap);
+    st->text_len += (size_t)n;
+}
+
+void thermo_settings_free(struct thermo_settings *t)
+{
+    free(t->every_var);
+    free(t->format_line);
+    free(t->format_int);
+    free(t->format_float);
+    for (int i = 0; i < GR_MAXTHERMO; i++) {
+        free(t->format_col[i]);
+        t->format_col[i] = NULL;
+    }
+    if (t->state)
+        free(t->state->text);
+    free(t->state);
+    t->every_var = t->format_line = t->format_int = t->format_float = NULL;
+    t->state = NULL;
+}
+
+/* ---- formats ------------------------------------------------------------------ */
+
+/* See thermo.h. Output can grow by 2 chars per conversion (ll): a 60-char
+ * input fits in 80 bytes. */
+const char *output_format_fix(const char *f, int want_int, char *out)
+{
+    size_t o = 0;
+    int nconv = 0;
+    if (strlen(f) > 60)
+        return "is longer than 60 characters";
+    for (const char *p = f; *p;) {
+        if (*p != '%') {
+            out[o++] = *p++;
+            continue;
+        }
+        if (p[1] == '%') {
+            out[o++] = '%';
+            out[o++] = '%';
+            p += 2;
+            continue;
+        }
+        if (nconv == 1)
+            return "must contain exactly one conversion";
+        out[o++] = *p++;
+        while (*p && strchr("-+ #0", *p))
+            out[o++] = *p++;
+        int digits = 0;
+        while (isdigit((unsigned char)*p) && digits < 4) {
+            out[o++] = *p++;
+            digits++;
+        }
+        if (digits > 3)
+            return "has a field width over 999";
+        if (*p == '.') {
+            out[o++] = *p++;
+            digits = 0;
+            while (isdigit((unsigned char)*p) && digits < 4) {
+                out[o++] = *p++;
+                digits++;
+            }
+            if (digits > 3)
+                return "has a precision over 999";
+        }
+        while (*p == 'l' || *p == 'L' || *p == 'h')
+            p++; /* length modifiers: replaced by what the value needs */
+        if (!*p)
+            return "ends inside a conversion";
+        char c = *p++;
+        if (want_int && (c == 'd' || c == 'i')) {
+            out[o++] = 'l';
+            out[o++] = 'l';
+            out[o++] = c;
+        } else if (!want_int && strchr("eEfFgG", c)) {
+            out[o++] = c;
+        } else {
+            return want_int ? "must convert an integer with %d"
+                            : "must convert a floating-point value with %e, %f or %g";
+        }
+        nconv++;
+    }
+    out[o] = '\0';
+    if (nconv != 1)
+        return "must contain exactly one conversion";
+    return NULL;
+}
+
+/* ---- columns ------------------------------------------------------------------- */
+
+static int keyword_index(const char *s)
+{
+    for (int k = 0; k < KW_COUNT; k++)
+        if (strcmp(s, keywords[k].name) == 0)
+            return k;
+    return -1;
+}
+
+static void set_columns(struct gravel *g, const char *const *cols, int n)
+{
+    for (int i = 0; i < n; i++)
+        snprintf(g->thermo.col[i], GR_NAMELEN, "%s", cols[i]);
+    g->thermo.ncol = n;
+}
+
+/* Number of columns, resolving the default style `one`. */
+static int columns(struct gravel *g)
+{
+    if (g->thermo.ncol == 0)
+        set_columns(g, style_one, (int)(sizeof style_one / sizeof *style_one));
+    return g->thermo.ncol;
+}
+
+/* Command-time check of one custom keyword. */
+static void check_keyword(struct gravel *g, const char *s)
+{
+    if (strlen(s) >= GR_NAMELEN)
+        gr_error(g, "keyword '%.64s...' is too long", s);
+    if (keyword_index(s) >= 0)
+        return;
+    if (strncmp(s, "c_", 2) == 0) {
+        char id[GR_NAMELEN];
+        int index;
+        if (!compute_parse_ref(s, id, &index))
+            gr_error(g, "invalid compute reference '%s' (use c_ID or c_ID[N], N >= 1)", s);
+        return;
+    }
+    if (strncmp(s, "v_", 2) == 0) {
+        if (!s[2])
+            gr_error(g, "variable reference 'v_' has no name");
+        for (const char *p = s + 2; *p; p++)
+            if (!isalnum((unsigned char)*p) && *p != '_')
+                gr_error(g, "invalid variable reference '%s'", s);
+        return;
+    }
+    if (strncmp(s, "f_", 2) == 0)
+        gr_error(g, "fix references ('%s') are not supported in thermo output", s);
+    gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
+                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi c_ID c_ID[N] v_name)", s);
+}
+
+/* A new thermo_style drops thermo_modify settings, as in LAMMPS. */
+static void reset_modify(struct gravel *g)
+{
+    struct thermo_settings *t = &g->thermo;
+    if (t->modified)
+        gr_warn(g, "new thermo_style command, previous thermo_modify settings are lost");
+    free(t->format_line);
+    free(t->format_int);
+    free(t->format_float);
+    t->format_line = t->format_int = t->format_float = NULL;
+    for (int i = 0; i < GR_MAXTHERMO; i++) {
+        free(t->format_col[i]);
+        t->format_col[i] = NULL;
+    }
+    t->flush = 0;
+    t->lost = LOST_ERROR;
+    t->multi = 0;
+    t->norm = g->dom.units == UNITS_LJ;
+    t->norm_set = 0;
+    t->modified = 0;
+}
+
+/* ---- commands ------------------------------------------------------------------ */
+
+void cmd_thermo(struct gravel *g, int argc, char **argv)
+{
+    if (argc != 1)
+        gr_error(g, "expected: thermo N or thermo v_name");
+    if (strncmp(argv[0], "v_", 2) == 0) {
+        if (!argv[0][2])
+            gr_error(g, "variable reference 'v_' has no name");
+        free(g->thermo.every_var);
+        g->thermo.every_var = gr_strdup(g, argv[0] + 2);
+        g->thermo.every = 0;
+        return;
+    }
+    int n = arg_int(g, argv[0], "the thermo interval");
+    if (n < 0)
+        gr_error(g, "the thermo interval must not be negative, got %d", n);
+    free(g->thermo.every_var);
+    g->thermo.every_var = NULL;
+    g->thermo.every = n;
+}
+
+void cmd_thermo_style(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "expected: thermo_style one|multi|custom keyword...");
+    const char *style = argv[0];
+    if (strcmp(style, "one") == 0 || strcmp(style, "multi") == 0) {
+        if (argc != 1)
+            gr_error(g, "style '%s' takes no keywords", style);
+        reset_modify(g);
+        if (style[0] == 'o') {
+            set_columns(g, style_one, (int)(sizeof style_one / sizeof *style_one));
+        } else {
+            set_columns(g, style_multi, (int)(sizeof style_multi / sizeof *style_multi));
+            g->thermo.multi = 1;
+        }
+        return;
+    }
+    if (strcmp(style, "custom") != 0)
+        gr_error(g, "unknown style '%.64s' (one, multi or custom)", style);
+    if (argc < 2)
+        gr_error(g, "style custom needs at least one keyword");
+    if (argc - 1 > GR_MAXTHERMO)
+        gr_error(g, "at most %d keywords, got %d", GR_MAXTHERMO, argc - 1);
+    for (int i = 1; i < argc; i++)
+        check_keyword(g, argv[i]);
+    reset_modify(g);
+    for (int i = 1; i < argc; i++)
+        snprintf(g->thermo.col[i - 1], GR_NAMELEN, "%s", argv[i]);
+    g->thermo.ncol = argc - 1;
+}
+
+static void set_string(struct gravel *g, char **dst, const char *s)
+{
+    char *d = gr_strdup(g, s);
+    free(*dst);
+    *dst = d;
+}
+
+void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
+{
+    struct thermo_settings *t = &g->thermo;
+    char buf[96];
+    if (argc < 1)
+        gr_error(g, "expected keyword/value pairs");
+    for (int i = 0; i < argc; i++) {
+        const char *kw = argv[i];
+        if (strcmp(kw, "norm") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            t->norm = arg_yesno(g, argv[++i], "norm");
+            t->norm_set = 1;
+        } else if (strcmp(kw, "flush") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            t->flush = arg_yesno(g, argv[++i], "flush");
+        } else if (strcmp(kw, "lost") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (strcmp(v, "error") == 0)
+                t->lost = LOST_ERROR;
+            else if (strcmp(v, "warn") == 0)
+                t->lost = LOST_WARN;
+            else if (strcmp(v, "ignore") == 0)
+                t->lost = LOST_IGNORE;
+            else
+                gr_error(g, "lost must be error, warn or ignore, got '%.64s'", v);
+        } else if (strcmp(kw, "line") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (strcmp(v, "one") == 0)
+                t->multi = 0;
+            else if (strcmp(v, "multi") == 0)
+                t->multi = 1;
+            else
+                gr_error(g, "line must be one or multi, got '%.64s'", v);
+        } else if (strcmp(kw, "format") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            const char *what = argv[++i];
+            if (strcmp(what, "none") == 0) {
+                free(t->format_line);
+                free(t->format_int);
+                free(t->format_float);
+                t->format_line = t->format_int = t->format_float = NULL;
+                for (int k = 0; k < GR_MAXTHERMO; k++) {
+                    free(t->format_col[k]);
+                    t->format_col[k] = NULL;
+                }
+                continue;
+            }
+            arg_need(g, argc, i, 1, "format");
+            const char *f = argv[++i];
+            const char *bad;
+            if (strcmp(what, "line") == 0) {
+                /* words checked against the column kinds at run setup */
+                if (strlen(f) > 2000)
+                    gr_error(g, "format line is too long");
+                set_string(g, &t->format_line, f);
+            } else if (strcmp(what, "int") == 0) {
+                if ((bad = output_format_fix(f, 1, buf)))
+                    gr_error(g, "format int '%.64s' %s", f, bad);
+                set_string(g, &t->format_int, f);
+            } else if (strcmp(what, "float") == 0) {
+                if ((bad = output_format_fix(f, 0, buf)))
+                    gr_error(g, "format float '%.64s' %s", f, bad);
+                set_string(g, &t->format_float, f);
+            } else if (arg_is_number(what)) {
+                int n = columns(g);
+                int col = arg_int(g, what, "format column");
+                if (col < 1 || col > n)
+                    gr_error(g, "format column %d is outside 1..%d (the thermo_style columns)",
+                             col, n);
+                /* the kind of the column is checked at run setup */
+                if (!strchr(f, '%'))
+                    gr_error(g, "format '%.64s' for column %d has no conversion", f, col);
+                if (strlen(f) > 60)
+                    gr_error(g, "format '%.64s...' is longer than 60 characters", f);
+                set_string(g, &t->format_col[col - 1], f);
+            } else {
+                gr_error(g, "format must be followed by line, int, float, none or a column "
+                            "number, got '%.64s'", what);
+            }
+        } else if (strcmp(kw, "temp") == 0 || strcmp(kw, "press") == 0 ||
+                   strcmp(kw, "lost/bond") == 0 || strcmp(kw, "warn") == 0) {
+            gr_error(g, "keyword '%s' is not supported by gravel", kw);
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (norm, format, flush, lost, line)", kw);
+        }
+    }
+    t->modified = 1;
+}
+
+/* ---- run setup ----------------------------------------------------------------- */
+
+static enum vtype column_type(const struct output_state *st, int i)
+{
+    return st->kind[i] >= 0 ? keywords[st->kind[i]].type : V_FLOAT;
+}
+
+void thermo_init(struct gravel *g)
+{
+    struct thermo_settings *t = &g->thermo;
+    struct output_state *st = output_state(g);
+    int n = columns(g);
+    st->ncol = n;
+    for (int i = 0; i < n; i++) {
+        const char *s = t->col[i];
+        int k = keyword_index(s);
+        if (k >= 0) {
+            st->kind[i] = k;
+        } else if (strncmp(s, "c_", 2) == 0) {
+            compute_ref_check(g, s, "thermo_style");
+            st->kind[i] = KIND_COMPUTE;
+        } else if (strncmp(s, "v_", 2) == 0) {
+            if (!var_retrieve(g, s + 2))
+                gr_error(g, "thermo_style: variable '%s' is not defined", s + 2);
+            st->kind[i] = KIND_VARIABLE;
+        } else {
+            gr_error(g, "thermo_style: unknown keyword '%s'", s);
+        }
+    }
+    if (t->every_var && !var_retrieve(g, t->every_var))
+        gr_error(g, "thermo: variable '%s' is not defined", t->every_var);
+
+    /* formats, LAMMPS 2021 precedence */
+    char line[2048] = "";
+    if (t->format_line)
+        snprintf(line, sizeof line, "%s", t->format_line);
+    char *save = NULL;
+    char *word = t->format_line ? strtok_r(line, " \t", &save) : NULL;
+    for (int i = 0; i < n; i++) {
+        int isint = column_type(st, i) == V_BIGINT;
+        const char *f, *src;
+        if (t->format_col[i]) {
+            f = t->format_col[i];
+            src = "format N";
+        } else if (isint && t->format_int) {
+            f = t->format_int;
+            src = "format int";
+        } else if (!isint && t->format_float) {
+            f = t->format_float;
+            src = "format float";
+        } else if (word) {
+            f = word;
+            src = "format line";
+        } else {
+            f = isint ? (t->multi ? FMT_BIGINT_MULTI : FMT_BIGINT_ONE)
+                      : (t->multi ? FMT_FLOAT_MULTI : FMT_FLOAT_ONE);
+            src = NULL;
+        }
+        if (src) {
+            const char *bad = output_format_fix(f, isint, st->fmt[i]);
+            if (bad)
+                gr_error(g, "thermo_modify: %s '%.64s' for column %d (%s, %s) %s", src, f,
+                         i + 1, t->col[i], isint ? "an integer" : "a float", bad);
+        } else {
+            snprintf(st->fmt[i], sizeof st->fmt[i], "%s", f);
+        }
+        if (word)
+            word = strtok_r(NULL, " \t", &save);
+    }
+}
+
+/* ---- values -------------------------------------------------------------------- */
+
+/* Translational kinetic energy as LAMMPS' thermo `ke` (compute temp scalar x
+ * dof/2 x kB): 1/2 sum m v^2, and 0 when the system has no degrees of freedom
+ * left (dim x N - dim <= 0, e.g. a single atom). */
+static double kinetic_energy(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    int dim = g->dom.dimension;
+    double dof = (double)dim * a->n - dim;
+    if (dof <= 0)
+        return 0.0;
+    double sum = 0.0;
+    for (int i = 0; i < a->n; i++) {
+        const double *v = a->v + 3 * i;
+        sum += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    return 0.5 * compute_mvv2e(g) * sum;
+}
+
+static double volume(const struct gravel *g)
+{
+    const struct domain *d = &g->dom;
+    double v = (d->hi[0] - d->lo[0]) * (d->hi[1] - d->lo[1]);
+    if (d->dimension == 3)
+        v *= d->hi[2] - d->lo[2];
+    return v;
+}
+
+static double clock_now(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    return st->firstflag ? 0.0 : output_wall() - st->wall0;
+}
+
+/* Value of keyword k. Integers come back in *ival with *isint set. */
+static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
+{
+    struct output_state *st = output_state(g);
+    double natoms = g->atoms.n;
+    int norm = g->thermo.norm && g->atoms.n > 0;
+    *isint = keywords[k].type == V_BIGINT;
+    switch ((enum kw_id)k) {
+    case KW_STEP: *ival = g->step; return (double)g->step;
+    case KW_ELAPSED: *ival = g->step - g->firststep; return (double)*ival;
+    case KW_ATOMS: *ival = g->atoms.n; return natoms;
+    case KW_DT: return g->dt;
+    case KW_TIME: return g->time;
+    case KW_CPU: return clock_now(g);
+    case KW_TPCPU: {
+        double cpu = clock_now(g), v = 0.0;
+        if (!st->firstflag) {
+            double dc = cpu - st->last_tp_cpu, dtime = g->time - st->last_tp_time;
+            v = dtime > 0 && dc > 0 ? dtime / dc : 0.0;
+        }
+        st->last_tp_cpu = cpu;
+        st->last_tp_time = g->time;
+        return v;
+    }
+    case KW_SPCPU: {
+        double cpu = clock_now(g), v = 0.0;
+        if (!st->firstflag) {
+            double dc = cpu - st->last_sp_cpu;
+            v = dc > 0 ? (double)(g->step - st->last_sp_step) / dc : 0.0;
+        }
+        st->last_sp_cpu = cpu;
+        st->last_sp_step = g->step;
+        return v;
+    }
+    case KW_KE:
+    case KW_ETOTAL: {
+        double ke = kinetic_energy(g);
+        /* pe: granular pair styles and walls have no potential energy */
+        return norm ? ke / natoms : ke;
+    }
+    case KW_PE: return 0.0;
+    case KW_VOL: return volume(g);
+    case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
+    case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
+    case KW_LZ: return g->dom.hi[2] - g->dom.lo[2];
+    case KW_XLO: return g->dom.lo[0];
+    case KW_XHI: return g->dom.hi[0];
+    case KW_YLO: return g->dom.lo[1];
+    case KW_YHI: return g->dom.hi[1];
+    case KW_ZLO: return g->dom.lo[2];
+    case KW_ZHI: return g->dom.hi[2];
+    case KW_COUNT: break;
+    }
+    return 0.0;
+}
+
+int thermo_keyword_value(struct gravel *g, const char *name, double *out)
+{
+    int k = keyword_index(name);
+    if (k >= 0) {
+        bigint iv = 0;
+        int isint;
+        if (k == KW_KE || k == KW_ETOTAL)
+            run_sync_host(g);
+        double v = keyword_value(g, k, &iv, &isint);
+        *out = isint ? (double)iv : v;
+        return 1;
+    }
+    if (strncmp(name, "c_", 2) == 0) {
+        char id[GR_NAMELEN];
+        int index;
+        if (!compute_parse_ref(name, id, &index) || !compute_find(g, id))
+            return 0;
+        run_sync_host(g);
+        *out = compute_ref_value(g, name, g->thermo.norm, "reference");
+        return 1;
+    }
+    if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {
+        *out = var_compute_equal(g, name + 2);
+        return 1;
+    }
+    return 0;
+}
+
+/* ---- text ---------------------------------------------------------------------- */
+
+static const char *column_name(struct gravel *g, int i)
+{
+    int k = output_state(g)->kind[i];
+    return k >= 0 ? keywords[k].header : g->thermo.col[i];
+}
+
+const char *thermo_header_text(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    text_clear(g);
+    if (!g->thermo.multi) {
+        for (int i = 0; i < st->ncol; i++)
+            text_add(g, "%s ", column_name(g, i));
+        text_add(g, "\n");
+    }
+    return st->text ? st->text : "";
+}
+
+const char *thermo_line_text(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    struct thermo_settings *t = &g->thermo;
+    double val[GR_MAXTHERMO];
+    bigint ival[GR_MAXTHERMO];
+    /* host arrays current once per line (computes and ke read them) */
+    for (int i = 0; i < st->ncol; i++)
+        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KIND_COMPUTE) {
+            run_sync_host(g);
+            break;
+        }
+    /* evaluate everything first: computes and variables may raise errors */
+    for (int i = 0; i < st->ncol; i++) {
+        int k = st->kind[i], isint = 0;
+        ival[i] = 0;
+        if (k >= 0) {
+            val[i] = keyword_value(g, k, &ival[i], &isint);
+        } else if (k == KIND_COMPUTE) {
+            val[i] = compute_ref_value(g, t->col[i], t->norm, "thermo_style");
+        } else {
+            val[i] = var_compute_equal(g, t->col[i] + 2);
+        }
+    }
+    text_clear(g);
+    if (t->multi)
+        text_add(g, "---------------- Step %8lld ----- CPU = %11.4f (sec) ----------------",
+                 (long long)g->step, clock_now(g));
+    for (int i = 0; i < st->ncol; i++) {
+        if (t->multi) {
+            if (i % 3 == 0)
+                text_add(g, "\n");
+            text_add(g, "%-8s = ", column_name(g, i));
+        }
+        if (column_type(st, i) == V_BIGINT)
+            text_add(g, st->fmt[i], (long long)ival[i]);
+        else
+            text_add(g, st->fmt[i], val[i]);
+        text_add(g, " ");
+    }
+    text_add(g, "\n");
+    return st->text;
+}

@@ -1,0 +1,62 @@
+/* thermo.h - the thermo table (LAMMPS 2021 layout), the run-time output state
+ * shared by output.c, thermo.c and progress.c, and the progress line.
+ *
+ * Internal to the output module; other modules use output.h. Tests call the
+ * text functions directly. */
+#ifndef GR_THERMO_H
+#define GR_THERMO_H
+
+#include "gravel.h"
+
+/* Run-time state of the output module, one per engine (g->thermo.state). */
+struct output_state {
+    int active;                 /* between output_setup and output_finish */
+    double wall0;               /* monotonic seconds at output_setup */
+    int firstflag;              /* the thermo line being built is the run's first */
+    double last_tp_time, last_tp_cpu;   /* tpcpu: previous sample */
+    double last_sp_cpu;                 /* spcpu: previous sample */
+    bigint last_sp_step;
+    bigint next_thermo;         /* next step with a thermo line */
+    bigint last_thermo;         /* last step that printed one (-1: none this run) */
+    /* per-column formats resolved by thermo_init (printf, ints as long long) */
+    int ncol;
+    char fmt[GR_MAXTHERMO][80];
+    int kind[GR_MAXTHERMO];     /* thermo.c: keyword index, or a reference kind */
+    /* progress line on stderr */
+    int progress_on;
+    double prog_last_wall;
+    int prog_len;               /* length of the line currently shown */
+    char *text;                 /* buffer behind thermo_*_text */
+    size_t text_len, text_cap;
+};
+
+/* The state, allocated on first use; freed by thermo_settings_free. */
+struct output_state *output_state(struct gravel *g);
+/* Monotonic wall-clock seconds. */
+double output_wall(void);
+
+/* Check that printf format `f` holds exactly one conversion of the wanted
+ * kind (integer d/i, or float e/E/f/F/g/G), with widths and precisions of
+ * at most 3 digits and no '*'; "%%" is literal. Writes the usable format to
+ * `out` (>= 80 bytes; integer conversions become long long). Returns NULL
+ * when valid, else what is wrong, for an error message. */
+const char *output_format_fix(const char *f, int want_int, char *out);
+
+/* Resolve the column list (default `one`), check c_ID and v_name references
+ * and the formats; errors name thermo_style or thermo_modify. */
+void thermo_init(struct gravel *g);
+/* Header line ("Step Atoms KinEng ... \n"; empty in multi mode) and one
+ * line of values at the current step (state->firstflag marks the run's
+ * first line). The text lives in the state and stays valid until the next
+ * call. Values that need per-atom data call run_sync_host() first. */
+const char *thermo_header_text(struct gravel *g);
+const char *thermo_line_text(struct gravel *g);
+
+/* Progress line: begin at output_setup, update after each step, end at
+ * output_finish (clears it). Active with -progress or when stderr is a
+ * terminal; writes only to stderr. */
+void progress_begin(struct gravel *g);
+void progress_update(struct gravel *g);
+void progress_end(struct gravel *g);
+
+#endif

@@ -1,0 +1,349 @@
+/* velocity.c - `velocity group style args keyword value ...` (LAMMPS
+ * velocity): create, set, scale, ramp, zero.
+ *
+ * create T seed: random velocities v = r / sqrt(m) with r uniform in
+ * [-0.5, 0.5) (dist uniform, default) or standard normal (dist gaussian);
+ * then, as LAMMPS, zero the total momentum (mom yes, default) and the angular
+ * momentum (rot yes; default no), and rescale to temperature T in LAMMPS'
+ * sense: T = sum m v^2 / (dof kB) with dof = 3 N - 3 over the group.
+ * Random numbers come from GSL's mt19937:
+ *   loop geom (gravel's default): each atom's generator is seeded from the
+ *     seed and its coordinates, so an atom gets the same velocity whatever
+ *     its index, tag or the number of other atoms (before momentum removal
+ *     and scaling);
+ *   loop all: one stream drawn in tag order over all atoms (independent of
+ *     storage order; LAMMPS' default);
+ *   loop local: one stream in storage order.
+ * set/ramp values are in lattice units (multiplied by the lattice spacing)
+ * unless `units box`, LAMMPS' default. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+
+#include "args.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+
+enum vloop { LOOP_ALL, LOOP_LOCAL, LOOP_GEOM };
+
+struct vopts {
+    int gaussian, sum, mom, rot, lattice_units;
+    enum vloop loop;
+};
+
+/* Boltzmann constant in the unit system (LAMMPS force->boltz). */
+static double boltz(const struct gravel *g)
+{
+    switch (g->dom.units) {
+    case UNITS_SI: return 1.380649e-23;
+    case UNITS_CGS: return 1.380649e-16;
+    default: return 1.0;
+    }
+}
+
+/* Temperature of a group as LAMMPS compute temp: dof = 3N - 3. Returns -1
+ * when dof <= 0. */
+static double group_temp(const struct gravel *g, int ig)
+{
+    double dof = 3.0 * (double)group_count(g, ig) - 3.0;
+    if (dof <= 0)
+        return -1;
+    return 2.0 * group_ke(g, ig) / (dof * boltz(g));
+}
+
+static void zero_momentum(struct gravel *g, int ig)
+{
+    double m = group_mass(g, ig), vcm[3];
+    if (!(m > 0))
+        return;
+    group_vcm(g, ig, m, vcm);
+    unsigned bit = group_bit(ig);
+    for (int i = 0; i < g->atoms.n; i++)
+        if (g->atoms.mask[i] & bit)
+            for (int d = 0; d < 3; d++)
+                g->atoms.v[3 * i + d] -= vcm[d];
+}
+
+static void zero_rotation(struct gravel *g, int ig)
+{
+    double m = group_mass(g, ig), xcm[3], L[3], I[3][3], w[3];
+    if (!(m > 0))
+        return;
+    group_xcm(g, ig, m, xcm);
+    group_angmom(g, ig, xcm, L);
+    group_inertia(g, ig, xcm, I);
+    group_omega(L, I, w);
+    unsigned bit = group_bit(ig);
+    struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & bit))
+            continue;
+        double u[3];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        double dx = u[0] - xcm[0], dy = u[1] - xcm[1], dz = u[2] - xcm[2];
+        a->v[3 * i + 0] -= w[1] * dz - w[2] * dy;
+        a->v[3 * i + 1] -= w[2] * dx - w[0] * dz;
+        a->v[3 * i + 2] -= w[0] * dy - w[1] * dx;
+    }
+}
+
+static void draw3(gsl_rng *rng, int gaussian, double r[3])
+{
+    for (int d = 0; d < 3; d++)
+        r[d] = gaussian ? gsl_ran_gaussian(rng, 1.0) : gsl_rng_uniform(rng) - 0.5;
+}
+
+/* 32-bit seed from the user seed and an atom's coordinates (loop geom). */
+static unsigned long geom_seed(int seed, const double x[3])
+{
+    uint64_t h = 0x9E3779B97F4A7C15ull ^ (uint64_t)(unsigned)seed;
+    for (int d = 0; d < 3; d++) {
+        uint64_t b;
+        double v = x[d] == 0 ? 0.0 : x[d]; /* -0 and +0 alike */
+        memcpy(&b, &v, sizeof b);
+        h ^= b + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+        h ^= h >> 33;
+        h *= 0xff51afd7ed558ccdull;
+        h ^= h >> 33;
+    }
+    unsigned long s = (unsigned long)(h & 0xffffffffu);
+    return s ? s : 1;
+}
+
+static int by_tag(const void *p, const void *q, void *atoms)
+{
+    const int64_t *tag = ((const struct atoms *)atoms)->tag;
+    int64_t a = tag[*(const int *)p], b = tag[*(const int *)q];
+    return (a > b) - (a < b);
+}
+
+struct create_res {
+    gsl_rng *rng;
+    int *order;
+    double *vsave;
+};
+
+static void do_create(struct gravel *g, int ig, double t_want, int seed,
+                      const struct vopts *o, struct create_res *res)
+{
+    struct atoms *a = &g->atoms;
+    unsigned bit = group_bit(ig);
+    if (group_count(g, ig) < 2)
+        gr_error(g, "group '%s' needs at least 2 atoms to define a temperature",
+                 g->groups.name[ig]);
+    for (int i = 0; i < a->n; i++)
+        if ((a->mask[i] & bit) && !(a->rmass[i] > 0))
+            gr_error(g, "atom %lld has mass %g: velocity create needs positive masses",
+                     (long long)a->tag[i], a->rmass[i]);
+    res->rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!res->rng)
+        gr_error(g, "out of memory creating a random number generator");
+    if (o->sum) {
+        res->vsave = gr_malloc(g, (size_t)a->n * 3 * sizeof(double));
+        memcpy(res->vsave, a->v, (size_t)a->n * 3 * sizeof(double));
+    }
+    if (o->loop == LOOP_GEOM) {
+        for (int i = 0; i < a->n; i++) {
+            if (!(a->mask[i] & bit))
+                continue;
+            double r[3];
+            gsl_rng_set(res->rng, geom_seed(seed, a->x + 3 * i));
+            draw3(res->rng, o->gaussian, r);
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] = r[d] / sqrt(a->rmass[i]);
+        }
+    } else {
+        gsl_rng_set(res->rng, (unsigned long)seed);
+        res->order = gr_malloc(g, (size_t)(a->n ? a->n : 1) * sizeof(int));
+        for (int i = 0; i < a->n; i++)
+            res->order[i] = i;
+        if (o->loop == LOOP_ALL) {
+            qsort_r(res->order, (size_t)a->n, sizeof(int), by_tag, a);
+        }
+        for (int k = 0; k < a->n; k++) {
+            int i = res->order[k];
+            double r[3];
+            draw3(res->rng, o->gaussian, r); /* drawn for every atom: group-independent */
+            if (!(a->mask[i] & bit))
+                continue;
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] = r[d] / sqrt(a->rmass[i]);
+        }
+    }
+    if (o->mom)
+        zero_momentum(g, ig);
+    if (o->rot)
+        zero_rotation(g, ig);
+    double t = group_temp(g, ig);
+    if (!(t > 0))
+        gr_error(g, "cannot rescale a zero temperature");
+    double f = sqrt(t_want / t);
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & bit)
+            for (int d = 0; d < 3; d++) {
+                a->v[3 * i + d] *= f;
+                if (res->vsave)
+                    a->v[3 * i + d] += res->vsave[3 * i + d];
+            }
+}
+
+static void parse_opts(struct gravel *g, int argc, char **argv, int start, struct vopts *o)
+{
+    o->gaussian = 0;
+    o->sum = 0;
+    o->mom = 1;
+    o->rot = 0;
+    o->lattice_units = 1;
+    o->loop = LOOP_GEOM;
+    for (int i = start; i < argc; i++) {
+        const char *kw = argv[i];
+        arg_need(g, argc, i, 1, kw);
+        const char *v = argv[++i];
+        if (!strcmp(kw, "dist")) {
+            if (!strcmp(v, "uniform"))
+                o->gaussian = 0;
+            else if (!strcmp(v, "gaussian"))
+                o->gaussian = 1;
+            else
+                gr_error(g, "dist must be uniform or gaussian, got '%.32s'", v);
+        } else if (!strcmp(kw, "sum")) {
+            o->sum = arg_yesno(g, v, "sum");
+        } else if (!strcmp(kw, "mom")) {
+            o->mom = arg_yesno(g, v, "mom");
+        } else if (!strcmp(kw, "rot")) {
+            o->rot = arg_yesno(g, v, "rot");
+        } else if (!strcmp(kw, "loop")) {
+            if (!strcmp(v, "all"))
+                o->loop = LOOP_ALL;
+            else if (!strcmp(v, "local"))
+                o->loop = LOOP_LOCAL;
+            else if (!strcmp(v, "geom"))
+                o->loop = LOOP_GEOM;
+            else
+                gr_error(g, "loop must be all, local or geom, got '%.32s'", v);
+        } else if (!strcmp(kw, "units")) {
+            o->lattice_units = domain_parse_units_kw(g, v);
+        } else if (!strcmp(kw, "bias")) {
+            if (arg_yesno(g, v, "bias"))
+                gr_error(g, "bias yes is not supported (no temperature computes with bias)");
+        } else if (!strcmp(kw, "temp") || !strcmp(kw, "rigid")) {
+            gr_error(g, "keyword '%s' is not supported", kw);
+        } else {
+            gr_error(g, "unknown keyword '%.32s'", kw);
+        }
+    }
+}
+
+void cmd_velocity(struct gravel *g, int argc, char **argv)
+{
+    domain_require_box(g);
+    int ig = arg_group(g, argv[0]);
+    const char *style = argv[1];
+    struct atoms *a = &g->atoms;
+    unsigned bit = group_bit(ig);
+    struct vopts o;
+    if (!strcmp(style, "create")) {
+        arg_need(g, argc, 1, 2, "create");
+        double t = arg_positive(g, argv[2], "temperature");
+        int seed = arg_int(g, argv[3], "seed");
+        if (seed <= 0)
+            gr_error(g, "seed must be a positive integer, got %s", argv[3]);
+        parse_opts(g, argc, argv, 4, &o);
+        struct create_res res = {NULL, NULL, NULL};
+        jmp_buf *outer = g->err.jmp, here;
+        g->err.jmp = &here;
+        if (setjmp(here)) {
+            g->err.jmp = outer;
+            gsl_rng_free(res.rng);
+            free(res.order);
+            free(res.vsave);
+            if (outer)
+                longjmp(*outer, 1);
+            gr_report_error(g);
+            exit(1);
+        }
+        do_create(g, ig, t, seed, &o, &res);
+        g->err.jmp = outer;
+        gsl_rng_free(res.rng);
+        free(res.order);
+        free(res.vsave);
+    } else if (!strcmp(style, "set")) {
+        arg_need(g, argc, 1, 3, "set");
+        int has[3];
+        double val[3] = {0, 0, 0};
+        for (int d = 0; d < 3; d++) {
+            has[d] = strcmp(argv[2 + d], "NULL") != 0;
+            if (has[d])
+                val[d] = arg_double(g, argv[2 + d], "velocity component");
+        }
+        parse_opts(g, argc, argv, 5, &o);
+        double sc[3];
+        domain_unit_scale(g, o.lattice_units, sc);
+        for (int i = 0; i < a->n; i++)
+            if (a->mask[i] & bit)
+                for (int d = 0; d < 3; d++)
+                    if (has[d])
+                        a->v[3 * i + d] = val[d] * sc[d] + (o.sum ? a->v[3 * i + d] : 0.0);
+    } else if (!strcmp(style, "scale")) {
+        arg_need(g, argc, 1, 1, "scale");
+        double t_want = arg_nonneg(g, argv[2], "temperature");
+        parse_opts(g, argc, argv, 3, &o);
+        double t = group_temp(g, ig);
+        if (!(t > 0))
+            gr_error(g, "cannot rescale a zero temperature");
+        double f = sqrt(t_want / t);
+        for (int i = 0; i < a->n; i++)
+            if (a->mask[i] & bit)
+                for (int d = 0; d < 3; d++)
+                    a->v[3 * i + d] *= f;
+    } else if (!strcmp(style, "ramp")) {
+        arg_need(g, argc, 1, 6, "ramp");
+        static const char *vd[3] = {"vx", "vy", "vz"}, *cd[3] = {"x", "y", "z"};
+        int v_dim = -1, c_dim = -1;
+        for (int d = 0; d < 3; d++) {
+            if (!strcmp(argv[2], vd[d]))
+                v_dim = d;
+            if (!strcmp(argv[5], cd[d]))
+                c_dim = d;
+        }
+        if (v_dim < 0)
+            gr_error(g, "ramp velocity component must be vx, vy or vz, got '%.32s'", argv[2]);
+        if (c_dim < 0)
+            gr_error(g, "ramp coordinate must be x, y or z, got '%.32s'", argv[5]);
+        double vlo = arg_double(g, argv[3], "vlo"), vhi = arg_double(g, argv[4], "vhi");
+        double clo = arg_double(g, argv[6], "clo"), chi = arg_double(g, argv[7], "chi");
+        if (!(clo < chi))
+            gr_error(g, "ramp needs clo < chi, got %s %s", argv[6], argv[7]);
+        parse_opts(g, argc, argv, 8, &o);
+        double sc[3];
+        domain_unit_scale(g, o.lattice_units, sc);
+        vlo *= sc[v_dim];
+        vhi *= sc[v_dim];
+        clo *= sc[c_dim];
+        chi *= sc[c_dim];
+        for (int i = 0; i < a->n; i++) {
+            if (!(a->mask[i] & bit))
+                continue;
+            double f = (a->x[3 * i + c_dim] - clo) / (chi - clo);
+            f = fmin(fmax(f, 0.0), 1.0);
+            double vr = vlo + f * (vhi - vlo);
+            a->v[3 * i + v_dim] = vr + (o.sum ? a->v[3 * i + v_dim] : 0.0);
+        }
+    } else if (!strcmp(style, "zero")) {
+        arg_need(g, argc, 1, 1, "zero");
+        int linear = !strcmp(argv[2], "linear");
+        if (!linear && strcmp(argv[2], "angular") != 0)
+            gr_error(g, "zero must be linear or angular, got '%.32s'", argv[2]);
+        parse_opts(g, argc, argv, 3, &o);
+        if (linear)
+            zero_momentum(g, ig);
+        else
+            zero_rotation(g, ig);
+    } else {
+        gr_error(g, "unknown style '%.32s': expected create, set, scale, ramp or zero", style);
+    }
+}

@@ -1,0 +1,102 @@
+/* write_data.c - `write_data file [nocoeff] [nofix] [pair ii|ij]`: the current
+ * state as a LAMMPS data file for atom_style sphere (read back by read_data
+ * and by LAMMPS). Numbers are written with 17 significant digits so that
+ * positions, velocities and diameters survive a round trip exactly; density
+ * is written as mass / (4/3 pi r^3) (mass for point particles), as LAMMPS.
+ * Atoms are written in tag order. The file is written under a temporary
+ * name and renamed, so a failed write never leaves a truncated file. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "domain.h"
+#include "error.h"
+
+static int by_tag(const void *p, const void *q, void *atoms)
+{
+    const int64_t *tag = ((const struct atoms *)atoms)->tag;
+    int64_t a = tag[*(const int *)p], b = tag[*(const int *)q];
+    return (a > b) - (a < b);
+}
+
+static void write_all(struct gravel *g, FILE *fp, const int *order)
+{
+    const struct atoms *a = &g->atoms;
+    static const char *un[] = {"lj", "si", "cgs"};
+    fprintf(fp, "LAMMPS data file via write_data, gravel %s, timestep = %lld, units = %s\n\n",
+            GR_VERSION, (long long)g->step, un[g->dom.units]);
+    fprintf(fp, "%d atoms\n%d atom types\n\n", a->n, a->ntypes);
+    for (int d = 0; d < 3; d++)
+        fprintf(fp, "%.17g %.17g %clo %chi\n", g->dom.lo[d], g->dom.hi[d], "xyz"[d], "xyz"[d]);
+    int any_mass = 0;
+    for (int t = 1; t <= a->ntypes; t++)
+        any_mass |= a->type_mass[t] > 0;
+    if (any_mass) {
+        fprintf(fp, "\nMasses\n\n");
+        for (int t = 1; t <= a->ntypes; t++)
+            fprintf(fp, "%d %.17g\n", t, a->type_mass[t] > 0 ? a->type_mass[t] : 1.0);
+    }
+    fprintf(fp, "\nAtoms # sphere\n\n");
+    for (int k = 0; k < a->n; k++) {
+        int i = order[k];
+        double r = a->radius[i];
+        double dens = r > 0 ? a->rmass[i] / (4.0 * M_PI / 3.0 * r * r * r) : a->rmass[i];
+        const double *x = a->x + 3 * i;
+        const int *im = a->image + 3 * i;
+        fprintf(fp, "%lld %d %.17g %.17g %.17g %.17g %.17g %d %d %d\n", (long long)a->tag[i],
+                a->type[i], 2.0 * r, dens, x[0], x[1], x[2], im[0], im[1], im[2]);
+    }
+    fprintf(fp, "\nVelocities\n\n");
+    for (int k = 0; k < a->n; k++) {
+        int i = order[k];
+        const double *v = a->v + 3 * i, *w = a->omega + 3 * i;
+        fprintf(fp, "%lld %.17g %.17g %.17g %.17g %.17g %.17g\n", (long long)a->tag[i], v[0],
+                v[1], v[2], w[0], w[1], w[2]);
+    }
+}
+
+void cmd_write_data(struct gravel *g, int argc, char **argv)
+{
+    domain_require_box(g);
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "nocoeff") || !strcmp(argv[i], "nofix")) {
+            continue; /* gravel writes no coefficient or fix sections */
+        } else if (!strcmp(argv[i], "pair")) {
+            arg_need(g, argc, i, 1, "pair");
+            i++;
+            if (strcmp(argv[i], "ii") != 0 && strcmp(argv[i], "ij") != 0)
+                gr_error(g, "pair must be ii or ij, got '%.32s'", argv[i]);
+        } else {
+            gr_error(g, "unknown keyword '%.32s'", argv[i]);
+        }
+    }
+    const char *path = argv[0];
+    size_t n = strlen(path);
+    char *tmp = gr_malloc(g, n + 16);
+    snprintf(tmp, n + 16, "%s.tmp%d", path, (int)(g->step % 100000));
+    int *order = malloc((size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
+    FILE *fp = order ? fopen(tmp, "w") : NULL;
+    if (!fp) {
+        int err = errno;
+        free(tmp);
+        free(order);
+        gr_error(g, "cannot write data file '%.200s': %s", path,
+                 order ? strerror(err) : "out of memory");
+    }
+    for (int i = 0; i < g->atoms.n; i++)
+        order[i] = i;
+    qsort_r(order, (size_t)g->atoms.n, sizeof(int), by_tag, &g->atoms);
+    write_all(g, fp, order);
+    free(order);
+    int bad = ferror(fp);
+    bad |= fclose(fp) != 0;
+    if (bad || rename(tmp, path) != 0) {
+        int err = errno;
+        remove(tmp);
+        free(tmp);
+        gr_error(g, "cannot write data file '%.200s': %s", path, strerror(err));
+    }
+    free(tmp);
+}

@@ -1,0 +1,180 @@
+/* compute_reduce.c - `compute ID group reduce mode input1 input2 ...`:
+ * reduce per-atom quantities over the atoms of the group, as LAMMPS' compute
+ * reduce. mode = sum | min | max | ave | sumsq | avesq | sumabs | aveabs.
+ * Inputs: x y z vx vy vz fx fy fz radius diameter mass omegax omegay omegaz
+ * tqx tqy tqz, or c_ID (a per-atom compute). One input gives a global scalar,
+ * several a global vector (one element per input). Sum modes are extensive.
+ * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
+ * max (LAMMPS' values). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "compute.h"
+#include "error.h"
+
+enum mode { SUM, SUMSQ, SUMABS, MIN, MAX, AVE, AVESQ, AVEABS };
+
+struct input {
+    int field;                  /* index into fields[] or -1 for a compute */
+    char cid[GR_NAMELEN];       /* per-atom compute ID */
+};
+
+struct reduce {
+    enum mode mode;
+    int n;
+    struct input *in;
+};
+
+/* Per-atom attributes: array, stride, component, scale. */
+static const struct {
+    const char *name;
+    int which, comp;
+    double scale;
+} fields[] = {
+    {"x", 0, 0, 1},      {"y", 0, 1, 1},      {"z", 0, 2, 1},      {"vx", 1, 0, 1},
+    {"vy", 1, 1, 1},     {"vz", 1, 2, 1},     {"fx", 2, 0, 1},     {"fy", 2, 1, 1},
+    {"fz", 2, 2, 1},     {"omegax", 3, 0, 1}, {"omegay", 3, 1, 1}, {"omegaz", 3, 2, 1},
+    {"tqx", 4, 0, 1},    {"tqy", 4, 1, 1},    {"tqz", 4, 2, 1},    {"radius", 5, 0, 1},
+    {"diameter", 5, 0, 2}, {"mass", 6, 0, 1},
+};
+#define NFIELDS ((int)(sizeof fields / sizeof fields[0]))
+
+static const struct {
+    const char *name;
+    enum mode mode;
+} modes[] = {{"sum", SUM},     {"sumsq", SUMSQ}, {"sumabs", SUMABS}, {"min", MIN},
+             {"max", MAX},     {"ave", AVE},     {"avesq", AVESQ},   {"aveabs", AVEABS}};
+
+static void reduce_destroy(struct compute *c)
+{
+    struct reduce *r = c->data;
+    if (r)
+        free(r->in);
+    free(r);
+    c->data = NULL;
+}
+
+static void reduce_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 2)
+        gr_error(g, "compute reduce expects a mode and at least one input");
+    struct reduce *r = gr_calloc(g, 1, sizeof *r);
+    c->data = r;
+    int m = -1;
+    for (int k = 0; k < (int)(sizeof modes / sizeof modes[0]); k++)
+        if (strcmp(argv[0], modes[k].name) == 0)
+            m = k;
+    if (m < 0)
+        gr_error(g, "compute reduce: unknown mode '%.64s' (sum, min, max, ave, sumsq, avesq, "
+                    "sumabs, aveabs)", argv[0]);
+    r->mode = modes[m].mode;
+    r->in = gr_calloc(g, (size_t)argc, sizeof *r->in);
+    for (int k = 1; k < argc; k++) {
+        const char *s = argv[k];
+        struct input *in = &r->in[r->n];
+        in->field = -1;
+        for (int f = 0; f < NFIELDS; f++)
+            if (strcmp(s, fields[f].name) == 0)
+                in->field = f;
+        if (in->field < 0) {
+            int index;
+            if (strncmp(s, "v_", 2) == 0)
+                gr_error(g, "compute reduce: atom-style variable inputs ('%.64s') are not "
+                            "supported", s);
+            if (strncmp(s, "f_", 2) == 0)
+                gr_error(g, "compute reduce: fix inputs ('%.64s') are not supported", s);
+            if (!compute_parse_ref(s, in->cid, &index))
+                gr_error(g, "compute reduce: unknown input '%.64s'", s);
+            if (index)
+                gr_error(g, "compute reduce: '%.64s': per-atom computes in gravel have one "
+                            "column; use c_ID", s);
+            if (strcmp(in->cid, c->id) == 0)
+                gr_error(g, "compute reduce: compute %s cannot reduce itself", c->id);
+        }
+        r->n++;
+    }
+    if (r->n == 1) {
+        c->scalar_flag = 1;
+        c->extscalar = r->mode == SUM || r->mode == SUMSQ || r->mode == SUMABS;
+    } else {
+        c->vector_flag = 1;
+        c->size_vector = r->n;
+        c->extvector = r->mode == SUM || r->mode == SUMSQ || r->mode == SUMABS;
+    }
+}
+
+static void reduce_init(struct gravel *g, struct compute *c)
+{
+    struct reduce *r = c->data;
+    for (int k = 0; k < r->n; k++) {
+        if (r->in[k].field >= 0)
+            continue;
+        struct compute *src = compute_get(g, r->in[k].cid, "compute reduce");
+        if (!src->peratom_flag)
+            gr_error(g, "compute reduce %s: compute %s (%s) does not produce per-atom values",
+                     c->id, src->id, src->style->name);
+    }
+}
+
+/* Reduce one input over the group. */
+static double reduce_one(struct gravel *g, struct compute *c, const struct input *in)
+{
+    const struct atoms *a = &g->atoms;
+    struct reduce *r = c->data;
+    const double *src = NULL;
+    int stride = 1, comp = 0;
+    double scale = 1.0;
+    if (in->field >= 0) {
+        const double *arrs[7] = {a->x, a->v, a->f, a->omega, a->torque, a->radius, a->rmass};
+        int which = fields[in->field].which;
+        src = arrs[which];
+        stride = which <= 4 ? 3 : 1;
+        comp = fields[in->field].comp;
+        scale = fields[in->field].scale;
+    } else {
+        struct compute *pc = compute_get(g, in->cid, "compute reduce");
+        src = compute_peratom(g, pc);
+    }
+    double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
+    bigint count = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & c->groupbit))
+            continue;
+        double v = scale * src[(size_t)stride * i + comp];
+        count++;
+        switch (r->mode) {
+        case SUM: case AVE: acc += v; break;
+        case SUMSQ: case AVESQ: acc += v * v; break;
+        case SUMABS: case AVEABS: acc += fabs(v); break;
+        case MIN: if (v < acc) acc = v; break;
+        case MAX: if (v > acc) acc = v; break;
+        }
+    }
+    if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)
+        acc /= (double)count;
+    return acc;
+}
+
+static double reduce_scalar(struct gravel *g, struct compute *c)
+{
+    reduce_init(g, c);
+    return reduce_one(g, c, &((struct reduce *)c->data)->in[0]);
+}
+
+static void reduce_vector(struct gravel *g, struct compute *c)
+{
+    struct reduce *r = c->data;
+    reduce_init(g, c);
+    for (int k = 0; k < r->n; k++)
+        c->vector[k] = reduce_one(g, c, &r->in[k]);
+}
+
+const struct compute_style compute_style_reduce = {
+    .name = "reduce",
+    .create = reduce_create,
+    .init = reduce_init,
+    .scalar = reduce_scalar,
+    .vector = reduce_vector,
+    .destroy = reduce_destroy,
+};

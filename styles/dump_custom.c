@@ -1,0 +1,279 @@
+/* dump_custom.c - `dump ID group custom N file field...`: LAMMPS text dumps.
+ *
+ * Each snapshot is, as LAMMPS writes it:
+ *   ITEM: TIMESTEP / step / ITEM: NUMBER OF ATOMS / n /
+ *   ITEM: BOX BOUNDS xx yy zz (boundary flags lo/hi per dimension) /
+ *   three "lo hi" lines in %-1.16e / ITEM: ATOMS field... / one line per atom,
+ * values separated by one space; integers "%d", floats "%g" unless
+ * dump_modify format says otherwise (precedence: format N > format int|float
+ * > the word of format line, as LAMMPS).
+ * Fields: id type x y z xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
+ * mass omegax omegay omegaz tqx tqy tqz, and c_ID (a per-atom compute). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "compute.h"
+#include "dump.h"
+#include "error.h"
+#include "thermo.h"
+
+enum field {
+    F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
+    F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
+    F_COUNT, F_COMPUTE = -1
+};
+
+static const char *const field_names[F_COUNT] = {
+    "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
+    "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+
+static int field_is_int(int f)
+{
+    return f == F_ID || f == F_TYPE || f == F_IX || f == F_IY || f == F_IZ;
+}
+
+struct column {
+    int field;                  /* enum field or F_COMPUTE */
+    char name[GR_NAMELEN];      /* as given */
+    char fmt[80];               /* resolved at init */
+    const double *peratom;      /* compute values for the current snapshot */
+};
+
+struct custom {
+    int n;
+    struct column *col;
+    char *format_line, *format_int, *format_float;
+    char **format_col;          /* [n] */
+};
+
+static void custom_destroy(struct dump *d)
+{
+    struct custom *c = d->data;
+    if (!c)
+        return;
+    free(c->col);
+    free(c->format_line);
+    free(c->format_int);
+    free(c->format_float);
+    if (c->format_col)
+        for (int i = 0; i < c->n; i++)
+            free(c->format_col[i]);
+    free(c->format_col);
+    free(c);
+    d->data = NULL;
+}
+
+static void custom_create(struct gravel *g, struct dump *d, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "dump custom needs at least one field after the file name");
+    struct custom *c = gr_calloc(g, 1, sizeof *c);
+    d->data = c;
+    c->col = gr_calloc(g, (size_t)argc, sizeof *c->col);
+    c->format_col = gr_calloc(g, (size_t)argc, sizeof *c->format_col);
+    c->n = argc;
+    for (int i = 0; i < argc; i++) {
+        struct column *col = &c->col[i];
+        const char *s = argv[i];
+        if (strlen(s) >= GR_NAMELEN)
+            gr_error(g, "dump custom field '%.64s...' is too long", s);
+        snprintf(col->name, sizeof col->name, "%s", s);
+        col->field = F_COMPUTE;
+        for (int f = 0; f < F_COUNT; f++)
+            if (strcmp(s, field_names[f]) == 0)
+                col->field = f;
+        if (col->field != F_COMPUTE)
+            continue;
+        char id[GR_NAMELEN];
+        int index;
+        if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, id, &index)) {
+            if (index)
+                gr_error(g, "dump custom field '%s': per-atom computes in gravel have one "
+                            "column; use c_ID", s);
+            continue;
+        }
+        if (strncmp(s, "v_", 2) == 0)
+            gr_error(g, "dump custom field '%s': atom-style variables are not supported", s);
+        gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
+                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz c_ID)", s);
+    }
+}
+
+static void set_str(struct gravel *g, char **dst, const char *s)
+{
+    char *n = gr_strdup(g, s);
+    free(*dst);
+    *dst = n;
+}
+
+/* dump_modify format line|int|float|N "fmt" | format none */
+static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i)
+{
+    struct custom *c = d->data;
+    char buf[96];
+    const char *bad;
+    if (strcmp(argv[i], "format") != 0)
+        return 0;
+    arg_need(g, argc, i, 1, "format");
+    const char *what = argv[i + 1];
+    if (strcmp(what, "none") == 0) {
+        free(c->format_line);
+        free(c->format_int);
+        free(c->format_float);
+        c->format_line = c->format_int = c->format_float = NULL;
+        for (int k = 0; k < c->n; k++) {
+            free(c->format_col[k]);
+            c->format_col[k] = NULL;
+        }
+        return 2;
+    }
+    arg_need(g, argc, i, 2, "format");
+    const char *f = argv[i + 2];
+    if (strcmp(what, "line") == 0) {
+        if (strlen(f) > 4000)
+            gr_error(g, "format line is too long");
+        set_str(g, &c->format_line, f);
+    } else if (strcmp(what, "int") == 0) {
+        if ((bad = output_format_fix(f, 1, buf)))
+            gr_error(g, "format int '%.64s' %s", f, bad);
+        set_str(g, &c->format_int, f);
+    } else if (strcmp(what, "float") == 0) {
+        if ((bad = output_format_fix(f, 0, buf)))
+            gr_error(g, "format float '%.64s' %s", f, bad);
+        set_str(g, &c->format_float, f);
+    } else if (arg_is_number(what)) {
+        int k = arg_int(g, what, "format column");
+        if (k < 1 || k > c->n)
+            gr_error(g, "format column %d is outside 1..%d (the dump's fields)", k, c->n);
+        int isint = c->col[k - 1].field >= 0 && field_is_int(c->col[k - 1].field);
+        if ((bad = output_format_fix(f, isint, buf)))
+            gr_error(g, "format '%.64s' for column %d (%s) %s", f, k, c->col[k - 1].name, bad);
+        set_str(g, &c->format_col[k - 1], f);
+    } else {
+        gr_error(g, "format must be followed by line, int, float, none or a column number, got "
+                    "'%.64s'", what);
+    }
+    return 3;
+}
+
+static void custom_init(struct gravel *g, struct dump *d)
+{
+    struct custom *c = d->data;
+    char line[4100] = "";
+    char *save = NULL, *word = NULL;
+    if (c->format_line) {
+        snprintf(line, sizeof line, "%s", c->format_line);
+        word = strtok_r(line, " \t", &save);
+    }
+    for (int i = 0; i < c->n; i++) {
+        struct column *col = &c->col[i];
+        if (col->field == F_COMPUTE) {
+            struct compute *pc = compute_get(g, col->name + 2, "dump custom");
+            if (!pc->peratom_flag)
+                gr_error(g, "dump %s: compute %s (%s) does not produce per-atom values", d->id,
+                         pc->id, pc->style->name);
+        }
+        int isint = col->field >= 0 && field_is_int(col->field);
+        const char *f = NULL, *src = NULL;
+        if (c->format_col[i]) {
+            f = c->format_col[i];
+            src = "format N";
+        } else if (isint && c->format_int) {
+            f = c->format_int;
+            src = "format int";
+        } else if (!isint && c->format_float) {
+            f = c->format_float;
+            src = "format float";
+        } else if (c->format_line) {
+            if (!word)
+                gr_error(g, "dump %s: dump_modify format line has fewer words than the %d "
+                            "fields", d->id, c->n);
+            f = word;
+            src = "format line";
+        }
+        if (f) {
+            const char *bad = output_format_fix(f, isint, col->fmt);
+            if (bad)
+                gr_error(g, "dump %s: %s '%.64s' for field %s %s", d->id, src, f, col->name,
+                         bad);
+        } else {
+            snprintf(col->fmt, sizeof col->fmt, "%s", isint ? "%lld" : "%g");
+        }
+        if (word)
+            word = strtok_r(NULL, " \t", &save);
+    }
+}
+
+static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx, int n)
+{
+    struct custom *c = d->data;
+    const struct atoms *a = &g->atoms;
+    const struct domain *dom = &g->dom;
+    custom_init(g, d); /* formats may have changed since run setup (tests, dump_modify) */
+    for (int i = 0; i < c->n; i++)
+        if (c->col[i].field == F_COMPUTE)
+            c->col[i].peratom = compute_peratom(g, compute_find(g, c->col[i].name + 2));
+
+    double prd[3];
+    for (int k = 0; k < 3; k++)
+        prd[k] = dom->hi[k] - dom->lo[k];
+    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS", (long long)g->step,
+            n);
+    for (int k = 0; k < 3; k++)
+        fprintf(fp, " %c%c", dom->bnd[k][0], dom->bnd[k][1]);
+    fprintf(fp, "\n");
+    for (int k = 0; k < 3; k++)
+        fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
+    fprintf(fp, "ITEM: ATOMS");
+    for (int i = 0; i < c->n; i++)
+        fprintf(fp, " %s", c->col[i].name);
+    fprintf(fp, "\n");
+
+    for (int k = 0; k < n; k++) {
+        int j = idx[k];
+        for (int i = 0; i < c->n; i++) {
+            const struct column *col = &c->col[i];
+            long long iv = 0;
+            double v = 0.0;
+            switch (col->field) {
+            case F_ID: iv = a->tag[j]; break;
+            case F_TYPE: iv = a->type[j]; break;
+            case F_X: case F_Y: case F_Z: v = a->x[3 * j + col->field - F_X]; break;
+            case F_XU: case F_YU: case F_ZU: {
+                int dim = col->field - F_XU;
+                v = a->x[3 * j + dim] + a->image[3 * j + dim] * prd[dim];
+                break;
+            }
+            case F_IX: case F_IY: case F_IZ: iv = a->image[3 * j + col->field - F_IX]; break;
+            case F_VX: case F_VY: case F_VZ: v = a->v[3 * j + col->field - F_VX]; break;
+            case F_FX: case F_FY: case F_FZ: v = a->f[3 * j + col->field - F_FX]; break;
+            case F_RADIUS: v = a->radius[j]; break;
+            case F_DIAMETER: v = 2.0 * a->radius[j]; break;
+            case F_MASS: v = a->rmass[j]; break;
+            case F_OMEGAX: case F_OMEGAY: case F_OMEGAZ:
+                v = a->omega[3 * j + col->field - F_OMEGAX];
+                break;
+            case F_TQX: case F_TQY: case F_TQZ: v = a->torque[3 * j + col->field - F_TQX]; break;
+            default: v = col->peratom[j]; break;
+            }
+            if (i)
+                fputc(' ', fp);
+            if (col->field >= 0 && field_is_int(col->field))
+                fprintf(fp, col->fmt, iv);
+            else
+                fprintf(fp, col->fmt, v);
+        }
+        fputc('\n', fp);
+    }
+}
+
+const struct dump_style dump_style_custom = {
+    .name = "custom",
+    .append = 1,
+    .create = custom_create,
+    .modify = custom_modify,
+    .init = custom_init,
+    .write = custom_write,
+    .destroy = custom_destroy,
+};

@@ -1,0 +1,193 @@
+/* dump_vtk.c - `dump ID group vtk N file`: legacy VTK POLYDATA snapshots
+ * that ParaView and VTK's own readers open.
+ *
+ * One snapshot per file (legacy VTK holds one dataset): use '*' in the name
+ * for a series (ParaView groups file.*.vtk into a time series); without '*'
+ * the file is rewritten at each snapshot and holds the latest one.
+ *
+ * Layout: "# vtk DataFile Version 3.0", a title with dump ID, step and time,
+ * ASCII or BINARY (`dump_modify binary yes`; binary data is big-endian as the
+ * legacy format requires), DATASET POLYDATA with dataset field data TIME
+ * (simulated time) and CYCLE (step), POINTS (double), one VERTICES cell per
+ * particle, and POINT_DATA field arrays: id (int, or vtktypeint64 when a tag
+ * exceeds 2^31-1), type (int), radius, mass (double), velocity, omega, force
+ * (3-component double). Atoms go in host order, or by tag with
+ * `dump_modify sort id`. */
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "dump.h"
+#include "error.h"
+
+struct vtk {
+    double *buf;                /* scratch for binary blocks, 3 per atom */
+    int cap;
+};
+
+static void vtk_create(struct gravel *g, struct dump *d, int argc, char **argv)
+{
+    (void)argv;
+    if (argc != 0)
+        gr_error(g, "dump vtk takes no arguments after the file name, got %d", argc);
+    d->data = gr_calloc(g, 1, sizeof(struct vtk));
+}
+
+static void vtk_destroy(struct dump *d)
+{
+    struct vtk *v = d->data;
+    if (v)
+        free(v->buf);
+    free(v);
+    d->data = NULL;
+}
+
+static int vtk_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i)
+{
+    if (strcmp(argv[i], "binary") != 0)
+        return 0;
+    arg_need(g, argc, i, 1, "binary");
+    d->binary = arg_yesno(g, argv[i + 1], "binary");
+    return 2;
+}
+
+static double *scratch(struct gravel *g, struct dump *d, int n)
+{
+    struct vtk *v = d->data;
+    if (v->cap < 3 * n || !v->buf) {
+        int cap = 3 * n > 48 ? 3 * n : 48;
+        v->buf = gr_realloc(g, v->buf, (size_t)cap * sizeof(double));
+        v->cap = cap;
+    }
+    return v->buf;
+}
+
+static void write_be_int64(FILE *fp, int64_t x)
+{
+    unsigned char b[8];
+    for (int k = 0; k < 8; k++)
+        b[k] = (unsigned char)((uint64_t)x >> (8 * (7 - k)));
+    fwrite(b, 1, 8, fp);
+}
+
+/* One array of `comp` doubles per atom, gathered from src (stride `comp`). */
+static void write_doubles(struct gravel *g, struct dump *d, FILE *fp, const double *src,
+                          int comp, const int *idx, int n)
+{
+    if (d->binary) {
+        double *b = scratch(g, d, n);
+        for (int k = 0; k < n; k++)
+            for (int c = 0; c < comp; c++)
+                b[(size_t)comp * k + c] = src[(size_t)comp * idx[k] + c];
+        dump_write_be_doubles(fp, b, (size_t)comp * n);
+        fputc('\n', fp);
+        return;
+    }
+    for (int k = 0; k < n; k++) {
+        const double *p = src + (size_t)comp * idx[k];
+        if (comp == 3)
+            fprintf(fp, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+        else
+            fprintf(fp, "%.17g\n", p[0]);
+    }
+}
+
+static void vtk_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx, int n)
+{
+    const struct atoms *a = &g->atoms;
+    int bin = d->binary;
+    int64_t maxtag = 0;
+    for (int k = 0; k < n; k++)
+        if (a->tag[idx[k]] > maxtag)
+            maxtag = a->tag[idx[k]];
+    int wide = maxtag > INT32_MAX;
+
+    fprintf(fp, "# vtk DataFile Version 3.0\n");
+    fprintf(fp, "gravel dump %s step %lld time %.17g\n", d->id, (long long)g->step, g->time);
+    fprintf(fp, "%s\nDATASET POLYDATA\n", bin ? "BINARY" : "ASCII");
+
+    /* dataset field data: time and cycle, which ParaView shows as time */
+    fprintf(fp, "FIELD FieldData 2\nTIME 1 1 double\n");
+    if (bin) {
+        dump_write_be_doubles(fp, &g->time, 1);
+        fputc('\n', fp);
+    } else {
+        fprintf(fp, "%.17g\n", g->time);
+    }
+    fprintf(fp, "CYCLE 1 1 int\n");
+    int32_t cyc = g->step > INT32_MAX ? INT32_MAX : (int32_t)g->step;
+    if (bin) {
+        dump_write_be_int32(fp, &cyc, 1);
+        fputc('\n', fp);
+    } else {
+        fprintf(fp, "%d\n", (int)cyc);
+    }
+
+    fprintf(fp, "POINTS %d double\n", n);
+    write_doubles(g, d, fp, a->x, 3, idx, n);
+
+    fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
+    if (bin) {
+        int32_t pair[2];
+        for (int k = 0; k < n; k++) {
+            pair[0] = 1;
+            pair[1] = k;
+            dump_write_be_int32(fp, pair, 2);
+        }
+        fputc('\n', fp);
+    } else {
+        for (int k = 0; k < n; k++)
+            fprintf(fp, "1 %d\n", k);
+    }
+
+    if (n == 0)
+        return; /* VTK's reader rejects empty attribute arrays */
+    fprintf(fp, "POINT_DATA %d\nFIELD FieldData 7\n", n);
+
+    fprintf(fp, "id 1 %d %s\n", n, wide ? "vtktypeint64" : "int");
+    for (int k = 0; k < n; k++) {
+        int64_t t = a->tag[idx[k]];
+        if (bin && wide) {
+            write_be_int64(fp, t);
+        } else if (bin) {
+            int32_t t32 = (int32_t)t;
+            dump_write_be_int32(fp, &t32, 1);
+        } else {
+            fprintf(fp, "%lld\n", (long long)t);
+        }
+    }
+    if (bin)
+        fputc('\n', fp);
+
+    fprintf(fp, "type 1 %d int\n", n);
+    for (int k = 0; k < n; k++) {
+        int32_t t = a->type[idx[k]];
+        if (bin)
+            dump_write_be_int32(fp, &t, 1);
+        else
+            fprintf(fp, "%d\n", (int)t);
+    }
+    if (bin)
+        fputc('\n', fp);
+
+    fprintf(fp, "radius 1 %d double\n", n);
+    write_doubles(g, d, fp, a->radius, 1, idx, n);
+    fprintf(fp, "mass 1 %d double\n", n);
+    write_doubles(g, d, fp, a->rmass, 1, idx, n);
+    fprintf(fp, "velocity 3 %d double\n", n);
+    write_doubles(g, d, fp, a->v, 3, idx, n);
+    fprintf(fp, "omega 3 %d double\n", n);
+    write_doubles(g, d, fp, a->omega, 3, idx, n);
+    fprintf(fp, "force 3 %d double\n", n);
+    write_doubles(g, d, fp, a->f, 3, idx, n);
+}
+
+const struct dump_style dump_style_vtk = {
+    .name = "vtk",
+    .append = 0,
+    .create = vtk_create,
+    .modify = vtk_modify,
+    .write = vtk_write,
+    .destroy = vtk_destroy,
+};
