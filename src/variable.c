@@ -87,6 +87,11 @@ static struct var *find(struct gravel *g, const char *name)
     return NULL;
 }
 
+int var_exists(struct gravel *g, const char *name)
+{
+    return find(g, name) != NULL;
+}
+
 static void remove_var(struct gravel *g, struct var *v)
 {
     struct vars *vs = g->vars;

@@ -60,6 +60,10 @@ TEST(styles)
     CHECK_NEAR(var_compute_equal(g, "f"), 10, 0); /* a formula held in a string */
     CHECK_NEAR(var_compute_equal(g, "m"), 5, 0);
     CHECK(var_retrieve(g, "nothere") == NULL);
+    CHECK(!var_exists(g, "nothere") && var_exists(g, "e"));
+    /* existence does not evaluate: a formula that fails is still defined */
+    CHECK(ok(g, "variable bad equal 1/0\n"));
+    CHECK(var_exists(g, "bad"));
     gr_destroy(g);
 }
 
