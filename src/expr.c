@@ -97,6 +97,16 @@ static int dim_index(struct ep *e, const char *s)
     ep_fail(e, msg);
 }
 
+/* Per-atom mass: rmass, or the per-type mass where rmass is unset. */
+static double atom_mass(const struct atoms *a, int i)
+{
+    if (a->rmass && a->rmass[i] > 0)
+        return a->rmass[i];
+    if (a->type_mass && a->type[i] >= 1 && a->type[i] <= a->ntypes)
+        return a->type_mass[a->type[i]];
+    return 0;
+}
+
 /* count(group), mass(group), xcm(group,dim), vcm(group,dim), bound(group,dir):
  * the reductions of group.c on the host arrays (synced first during a run). */
 static double group_function(struct ep *e, const char *fn, int nargs, char args[][GR_NAMELEN])
@@ -189,7 +199,7 @@ static double atom_value(struct ep *e, const char *name, double idv)
     if (!strcmp(name, "radius"))
         return a->radius[i];
     if (!strcmp(name, "mass"))
-        return a->rmass[i];
+        return atom_mass(a, i);
     if (!strcmp(name, "type"))
         return a->type[i];
     return (double)a->tag[i]; /* id */
