@@ -1,0 +1,191 @@
+#!/usr/bin/python3
+"""seeds_verify.py - verification decks of the source-document physics
+(inputs/verification/*.in) against their analytic solutions (000 sec. 3.3 and
+appendix A) or a fine reference solution of the same force law.
+
+Each case runs at time steps t_col/8 ... t_col/128 (a subset where a case is
+slow) in single and double precision. Checks: an error bound at t_col/32, the
+error falls as the time step falls, double is no worse than single (beyond
+single's round-off floor), and for the normal collisions the effective
+restitution stays within 5 % of nominal at t_col/8, 1 % at t_col/32 and never
+exceeds 1. Prints one PASS/FAIL line per check and a table of the measured
+errors and observed convergence orders.
+
+Usage: seeds_verify.py [case ...]   (default: all cases)"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+GRAVEL = os.path.join(ROOT, "bin", "gravel")
+DECKS = os.path.join(ROOT, "inputs", "verification")
+failures = 0
+
+
+def check(name, ok, detail=""):
+    global failures
+    print(("PASS " if ok else "FAIL ") + name + (" (" + detail + ")" if detail else ""))
+    if not ok:
+        failures += 1
+
+
+def run_deck(deck, precision, variables):
+    """Run a deck; return the thermo table as a list of dicts (floats)."""
+    cmd = [GRAVEL, "-in", os.path.join(DECKS, deck), "-precision", precision, "-log", "none"]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    with tempfile.TemporaryDirectory() as tmp:
+        p = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=300)
+    if p.returncode != 0:
+        raise RuntimeError("%s failed (%d): %s" % (" ".join(cmd), p.returncode,
+                                                 (p.stdout + p.stderr)[-800:]))
+    rows, header = [], None
+    for line in p.stdout.splitlines():
+        w = line.split()
+        if w and w[0] == "Step":
+            header = w
+            continue
+        if header and line.startswith("Loop time"):
+            header = None
+            continue
+        if header and len(w) == len(header):
+            try:
+                rows.append({h: float(x) for h, x in zip(header, w)})
+            except ValueError:
+                pass
+    if not rows:
+        raise RuntimeError("no thermo output from " + " ".join(cmd))
+    return rows
+
+
+# ---------------------------------------------------------------- cases
+M_PI = math.pi
+
+
+def sphere_mass(d, rho):
+    return M_PI / 6.0 * d ** 3 * rho
+
+
+class NormalCollision:
+    """000 sec. 3.3.2, table 5.2: A.1 closed form (started eps inside contact)."""
+    name = "normal_collision"
+    deck = "normal_collision.in"
+    ke, e, rho, d, u0, eps = 1e5, 0.8, 10.0, 0.1, -2.0, 1e-7
+    nsubs = (8, 16, 32, 64, 128)
+    bound32 = {"x": 2e-4, "v": 1e-2}    # normalized by d_b and |u0|
+    restitution = True
+
+    def __init__(self):
+        self.m = sphere_mass(self.d, self.rho)
+        l = math.log(self.e)
+        self.eta = -2 * l * math.sqrt(self.m * self.ke / (M_PI ** 2 + l * l))
+        self.tcol = math.sqrt(self.m / self.ke) * math.sqrt(M_PI ** 2 + l * l)
+        self.a = -self.eta / (2 * self.m)
+        self.b = math.sqrt(4 * self.m * self.ke - self.eta ** 2) / (2 * self.m)
+        self.A2 = -self.eps
+        self.A1 = (self.u0 - self.a * self.A2) / self.b
+        # separation: x - d_b = 0 again, first root after t = 0
+        lo, hi = 0.5 * M_PI / self.b, 1.5 * M_PI / self.b
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if self._contact(mid)[0] < 0:
+                lo = mid
+            else:
+                hi = mid
+        self.tsep = 0.5 * (lo + hi)
+        self.xsep, self.vsep = self._contact(self.tsep)
+
+    def _contact(self, t):
+        ea = math.exp(self.a * t)
+        s, c = math.sin(self.b * t), math.cos(self.b * t)
+        x = ea * (self.A1 * s + self.A2 * c)
+        v = ea * ((self.a * self.A1 - self.b * self.A2) * s + (self.a * self.A2 + self.b * self.A1) * c)
+        return x, v
+
+    def vars(self, nsub):
+        return {"nsub": nsub}
+
+    def exact(self, t):
+        if t <= self.tsep:
+            x, v = self._contact(t)
+        else:
+            x, v = self.xsep + self.vsep * (t - self.tsep), self.vsep
+        return self.d + x, v
+
+    def errors(self, rows):
+        ex = ev = 0.0
+        for r in rows:
+            x, v = self.exact(r["Time"])
+            ex = max(ex, abs(r["v_px"] - x) / self.d)
+            ev = max(ev, abs(r["v_vx"] - v) / abs(self.u0))
+        return {"x": ex, "v": ev, "e": rows[-1]["v_vx"] / abs(self.u0)}
+
+
+CASES = [NormalCollision]
+
+
+def order(errs, nsubs):
+    """Observed order from the first and last time step."""
+    e0, e1 = errs[0], errs[-1]
+    if e0 <= 0 or e1 <= 0:
+        return float("nan")
+    return math.log(e0 / e1) / math.log(nsubs[-1] / nsubs[0])
+
+
+def verify(case):
+    res = {}
+    for prec in ("double", "single"):
+        for n in case.nsubs:
+            res[prec, n] = case.errors(run_deck(case.deck, prec, case.vars(n)))
+    print("# %s: max error (x/d_b, v/u_ref)%s" % (case.name, ", restitution" if case.restitution else ""))
+    for prec in ("double", "single"):
+        for n in case.nsubs:
+            r = res[prec, n]
+            print("#   %-6s t_col/%-4d x %.3e  v %.3e%s" % (prec, n, r["x"], r["v"],
+                  "  e_eff %.5f" % r["e"] if "e" in r and case.restitution else ""))
+        for q in ("x", "v"):
+            print("#   %-6s observed order (%s): %.2f" % (prec, q, order([res[prec, n][q] for n in case.nsubs], case.nsubs)))
+    for prec in ("double", "single"):
+        r32 = res[prec, 32] if (prec, 32) in res else None
+        for q, bound in case.bound32.items():
+            check("%s %s %s error at t_col/32 < %g" % (case.name, prec, q, bound),
+                  r32 is not None and r32[q] < bound, "%.3e" % r32[q])
+            errs = [res[prec, n][q] for n in case.nsubs]
+            floor = case.floor.get(prec, 0.0) if hasattr(case, "floor") else 0.0
+            falls = all(errs[i + 1] < errs[i] or errs[i + 1] < floor for i in range(len(errs) - 1))
+            check("%s %s %s error falls with the time step" % (case.name, prec, q), falls and errs[-1] < errs[0],
+                  " ".join("%.2e" % x for x in errs))
+    for n in case.nsubs:
+        for q in case.bound32:
+            d, s = res["double", n][q], res["single", n][q]
+            floor = case.floor.get("single", 0.0) if hasattr(case, "floor") else 0.0
+            check("%s t_col/%d %s double no worse than single" % (case.name, n, q),
+                  d <= s * 1.05 + floor, "double %.3e single %.3e" % (d, s))
+    if case.restitution:
+        for prec in ("double", "single"):
+            for n in case.nsubs:
+                eff = res[prec, n]["e"]
+                nominal = case.e
+                check("%s %s t_col/%d restitution %.4f <= 1" % (case.name, prec, n, eff), eff <= 1.0)
+                if n in (8, 32):
+                    tol = 0.05 if n == 8 else 0.01
+                    check("%s %s t_col/%d restitution within %g%% of %g" % (case.name, prec, n, tol * 100, nominal),
+                          abs(eff - nominal) <= tol * nominal, "%.5f" % eff)
+
+
+def main():
+    names = sys.argv[1:]
+    for c in CASES:
+        if names and c.name not in names:
+            continue
+        try:
+            verify(c())
+        except (RuntimeError, subprocess.TimeoutExpired) as exc:
+            check(c.name + " runs", False, str(exc))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
