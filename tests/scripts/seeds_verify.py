@@ -182,7 +182,49 @@ class HertzCollision:
         return {"x": ex, "v": ev, "e": rows[-1]["v_vx"] / abs(self.u0)}
 
 
-CASES = [NormalCollision, HertzCollision]
+class Drag:
+    """000 sec. 3.3.1, table 5.1: eq. 3.10-3.11; nsub counts steps per tau."""
+    deck = "drag.in"
+    rho, d, mu, uf, ntau = 10.0, 0.1, 0.00193, 1.0, 4
+    nsubs = (8, 16, 32, 64, 128)
+    xnorm, vnorm = "u_f tau", "u_f"
+    restitution = False
+
+    def __init__(self):
+        self.tau = self.rho * self.d ** 2 / (18 * self.mu)
+
+    def vars(self, nsub):
+        return {"nsub": nsub, "update": self.update, "ntau": self.ntau}
+
+    def errors(self, rows):
+        ex = ev = 0.0
+        for r in rows:
+            t = r["Time"]
+            x = self.uf * self.tau * math.expm1(-t / self.tau) + self.uf * t
+            v = -self.uf * math.expm1(-t / self.tau)
+            ex = max(ex, abs(r["v_px"] - x) / (self.uf * self.tau))
+            ev = max(ev, abs(r["v_vx"] - v) / self.uf)
+        return {"x": ex, "v": ev}
+
+
+class DragExplicit(Drag):
+    name, update = "drag_explicit", "explicit"
+    bound32 = {"x": 2e-2, "v": 1e-2}
+
+
+class DragImplicit(Drag):
+    name, update = "drag_implicit", "implicit"
+    bound32 = {"x": 1e-2, "v": 5e-3}
+
+
+class DragExact(Drag):
+    """Exact velocity for uniform flow: v error at round-off, x second order."""
+    name, update = "drag_exact", "exact"
+    bound32 = {"x": 1e-4}
+    vfloor = {"double": 1e-12, "single": 1e-6}
+
+
+CASES = [NormalCollision, HertzCollision, DragExplicit, DragImplicit, DragExact]
 
 
 def order(errs, nsubs):
@@ -223,6 +265,14 @@ def verify(case):
             floor = case.floor.get("single", 0.0) if hasattr(case, "floor") else 0.0
             check("%s t_col/%d %s double no worse than single" % (case.name, n, q),
                   d <= s * 1.05 + floor, "double %.3e single %.3e" % (d, s))
+    if hasattr(case, "vfloor"):
+        for prec in ("double", "single"):
+            worst = max(res[prec, n]["v"] for n in case.nsubs)
+            check("%s %s velocity exact to round-off (< %g) at every time step" % (case.name, prec, case.vfloor[prec]),
+                  worst < case.vfloor[prec], "%.3e" % worst)
+        e = [res["double", n]["x"] for n in case.nsubs]
+        check("%s double position error second order" % case.name,
+              order(e, case.nsubs) > 1.8, "%.2f" % order(e, case.nsubs))
     if case.restitution:
         if hasattr(case, "e_law"):
             print("#   restitution of the continuous force law %.5f (nominal e %.3f)" % (case.e_law, case.e))
