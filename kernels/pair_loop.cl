@@ -41,9 +41,9 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
         const int j = nlist[row + k];
         const REAL3 xj = vload3(j, x);
         REAL3 del = xi - xj;
-        del.x = min_image(del.x, Lx);
-        del.y = min_image(del.y, Ly);
-        del.z = min_image(del.z, Lz);
+        del.x = MINIMG_X(del.x, Lx);
+        del.y = MINIMG_Y(del.y, Ly);
+        del.z = MINIMG_Z(del.z, Lz);
         const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
         const REAL radj = radius[j];
         const REAL radsum = radi + radj;

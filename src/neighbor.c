@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
@@ -317,26 +318,6 @@ int nbr_decide(struct gravel *g)
     return 0;
 }
 
-/* Local stand-in for state's domain_shrink_wrap until it lands (same rule:
- * LAMMPS Domain::reset_box). */
-static void shrink_wrap(struct gravel *g, const double lo[3], const double hi[3])
-{
-    struct domain *d = &g->dom;
-    for (int k = 0; k < 3; k++) {
-        if (d->periodic[k] || lo[k] > hi[k])
-            continue;
-        double small = 1e-4 * (d->hi[k] - d->lo[k]);
-        if (d->bnd[k][0] == BND_S)
-            d->lo[k] = lo[k] - small;
-        else if (d->bnd[k][0] == BND_M)
-            d->lo[k] = fmin(lo[k] - small, d->minlo[k]);
-        if (d->bnd[k][1] == BND_S)
-            d->hi[k] = hi[k] + small;
-        else if (d->bnd[k][1] == BND_M)
-            d->hi[k] = fmax(hi[k] + small, d->minhi[k]);
-    }
-}
-
 static void wrap_and_extent(struct gravel *g, struct nbr *b)
 {
     struct engine *e = g->eng;
@@ -376,7 +357,7 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
             hi[q] = fmax(hi[q], ext[6 * c + 3 + q]);
         }
     free(ext);
-    shrink_wrap(g, lo, hi);
+    domain_shrink_wrap(g, lo, hi);
 }
 
 /* Cell grid over the current box. */
