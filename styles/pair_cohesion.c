@@ -57,7 +57,7 @@ static void destroy(struct pair *p)
 static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
 {
     if (argc != 1)
-        gr_error(g, "pair_style cohesion expects one argument, the cohesion stiffness kc "
+        gr_error(g, "cohesion expects one argument, the cohesion stiffness kc "
                     "(force/distance), got %d", argc);
     p->coef[0] = arg_nonneg(g, argv[0], "cohesion stiffness kc");
 }

@@ -51,7 +51,7 @@ static void destroy(struct pair *p)
 static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
 {
     if (argc < 1)
-        gr_error(g, "pair_style hybrid/overlay expects one or more sub-styles with their "
+        gr_error(g, "hybrid/overlay expects one or more sub-styles with their "
                     "arguments, e.g. hybrid/overlay linear/restitution 1e5 0.8 0.1 cohesion 100");
     /* parsed on the stack (term settings allocate nothing), kept on success:
      * an argument error leaks nothing */
@@ -62,18 +62,18 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
     while (i < argc) {
         const struct pair_style *st = pair_style_find(argv[i]);
         if (!st || st->source_n)
-            gr_error(g, "pair_style hybrid/overlay: '%.64s' is not a pair style that can be "
+            gr_error(g, "hybrid/overlay: '%.64s' is not a pair style that can be "
                         "composed (argument %d)", argv[i], i + 1);
         int e = i + 1;
         while (e < argc && !pair_style_find(argv[e]))
             e++;
         for (int k = 0; k < h->n; k++)
             if (h->term[k].style == st)
-                gr_error(g, "pair_style hybrid/overlay: sub-style %s given twice", st->name);
+                gr_error(g, "hybrid/overlay: sub-style %s given twice", st->name);
         if (h->n == PAIR_MAXTERMS)
-            gr_error(g, "pair_style hybrid/overlay: at most %d sub-styles", PAIR_MAXTERMS);
+            gr_error(g, "hybrid/overlay: at most %d sub-styles", PAIR_MAXTERMS);
         if (st->nparam > PAIR_MAXPARAM)
-            gr_error(g, "pair_style hybrid/overlay: sub-style %s has too many parameters",
+            gr_error(g, "hybrid/overlay: sub-style %s has too many parameters",
                      st->name);
         pair_create(g, &h->term[h->n], st, e - i - 1, argv + i + 1);
         h->off[h->n] = off;
@@ -83,7 +83,7 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
         i = e;
     }
     if (nhist > 1)
-        gr_error(g, "pair_style hybrid/overlay: at most one sub-style may keep contact history");
+        gr_error(g, "hybrid/overlay: at most one sub-style may keep contact history");
     p->data = gr_calloc(g, 1, sizeof loc);
     memcpy(p->data, &loc, sizeof loc);
 }
