@@ -252,7 +252,7 @@ def force_checks():
 MOMENTUM_DECK = """units lj
 atom_style sphere
 boundary p p p
-lattice sc 0.11
+lattice sc 751.314800901578
 region box block 0 6 0 6 0 6
 create_box 1 box
 region blob block 1 4 1 4 1 4
