@@ -6,7 +6,8 @@
  *     u_0 = mean flow speed (Taylor-Green: 0.7839 A), l_0 = vortex diameter pi/a
  *   Sy  = L_e sqrt(kc) / (e sqrt(L_e^2 kc + u^2 m))             (eq. 6.5)
  *     L_e = d_e - d_b, u = mean particle speed, m = mean particle mass,
- *     e = restitution of the linear/restitution contact term
+ *     e = restitution of the linear/restitution contact term; also at
+ *     u = the mean flow speed, as 000 table 6.2 evaluates it
  *
  * Means are over all atoms (host arrays, run start); L_e and kc are those of
  * a pair of two mean-size particles of type 1. */
@@ -69,6 +70,10 @@ void pair_cohesion_dimensionless(struct gravel *g, const struct pair *coh)
     }
     double sy = le * sqrt(kc) / (e * sqrt(le * le * kc + umean * umean * mmean));
     gr_print(g, "Stickiness number Sy = %.4g (000 eq. 6.5: L_e = d_e - d_b = %g, kc %g, e %g, "
-                "mean speed %g, mean mass %g; Sy > 1: a head-on collision sticks)\n",
+                "mean particle speed %g, mean mass %g; Sy > 1: a head-on collision sticks)\n",
              sy, le, kc, e, umean, mmean);
+    /* 000 table 6.2 evaluates eq. 6.5 at the mean flow speed (0.7839 A) */
+    if (u0 > 0)
+        gr_print(g, "Stickiness number at the mean flow speed %g: Sy = %.4g (000 table 6.2 "
+                    "convention)\n", u0, le * sqrt(kc) / (e * sqrt(le * le * kc + u0 * u0 * mmean)));
 }

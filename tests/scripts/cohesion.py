@@ -352,18 +352,25 @@ run 0
 
 
 def numbers_check():
-    code, out = run([], DRAG_DECK)
-    m1 = re.search(r"Stokes number Stk = (\S+)", out)
-    m2 = re.search(r"Stickiness number Sy = (\S+)", out)
-    # 000 tables 6.1-6.3: mu 0.2080 -> Stk 5; e 0.174, kc 100 -> Sy 1.0 (at u = 1 m/s)
+    # 000 tables 6.1-6.3: mu 0.2080 -> Stk 5; e 0.174, kc 100 -> Sy 1.0 and e 0.5,
+    # kc 8.06 -> Sy 0.1 (table 6.2 evaluates eq. 6.5 at the mean flow speed 0.7839 A)
     m = math.pi / 6 * 0.05 ** 3 * 2000
-    sy = 0.025 * 10 / (0.174 * math.sqrt(0.025 ** 2 * 100 + m))
     stk = 2000 * 0.05 ** 2 * 0.7839 * 5 / (18 * 0.2080 * math.pi / 3)
-    ok = code == 0 and m1 and m2 and abs(float(m1.group(1)) - stk) < 1e-3 * stk and \
-        abs(float(m2.group(1)) - sy) < 1e-3 * sy
-    check("cohesion_stokes_stickiness_printed", bool(ok),
-          "Stk %s (want %.4g, table 6.3: 5), Sy %s (want %.4g, table 6.2: 1.0)"
-          % (m1.group(1) if m1 else None, stk, m2.group(1) if m2 else None, sy))
+    for e, kc, table in ((0.174, 100, 1.0), (0.5, 8.06, 0.1)):
+        deck = DRAG_DECK.replace("0.174 0.1 cohesion 100", "%g 0.1 cohesion %g" % (e, kc))
+        code, out = run([], deck)
+        m1 = re.search(r"Stokes number Stk = (\S+)", out)
+        m2 = re.search(r"Stickiness number Sy = (\S+)", out)
+        m3 = re.search(r"Stickiness number at the mean flow speed \S+ Sy = (\S+)", out)
+        sy = 0.025 * math.sqrt(kc) / (e * math.sqrt(0.025 ** 2 * kc + 1.0 * m))
+        ok = code == 0 and m1 and m2 and m3 and abs(float(m1.group(1)) - stk) < 1e-3 * stk \
+            and abs(float(m2.group(1)) - sy) < 1e-3 * sy \
+            and abs(float(m3.group(1)) - table) < 0.01 * table
+        check("cohesion_stokes_stickiness_printed_sy%g" % table, bool(ok),
+              "Stk %s (want %.4g, table 6.3: 5), Sy at particle speed 1 m/s %s (want %.4g), "
+              "at flow speed %s (table 6.2: %g)"
+              % (m1.group(1) if m1 else None, stk, m2.group(1) if m2 else None, sy,
+                 m3.group(1) if m3 else None, table))
 
 
 ERR_HEAD = """units si
