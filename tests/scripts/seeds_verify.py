@@ -75,6 +75,7 @@ class NormalCollision:
     ke, e, rho, d, u0, eps = 1e5, 0.8, 10.0, 0.1, -2.0, 1e-7
     nsubs = (8, 16, 32, 64, 128)
     bound32 = {"x": 2e-4, "v": 1e-2}    # normalized by d_b and |u0|
+    min_order = {"x": 0.9, "v": 0.9}
     xnorm, vnorm = "d_b", "|u0|"
     restitution = True
 
@@ -146,6 +147,7 @@ class HertzCollision:
     G, nu, e, rho, d, u0 = 26e9, 0.23, 0.66, 2500.0, 0.003, -1.0
     nsubs = (8, 16, 32, 64, 128)
     bound32 = {"x": 2e-2, "v": 2e-2}    # normalized by the max overlap and |u0|
+    min_order = {"x": 0.9, "v": 0.9}
     xnorm, vnorm = "max overlap", "|u0|"
     restitution = True
 
@@ -210,11 +212,13 @@ class Drag:
 class DragExplicit(Drag):
     name, update = "drag_explicit", "explicit"
     bound32 = {"x": 2e-2, "v": 1e-2}
+    min_order = {"x": 0.9, "v": 0.9}
 
 
 class DragImplicit(Drag):
     name, update = "drag_implicit", "implicit"
     bound32 = {"x": 1e-2, "v": 5e-3}
+    min_order = {"x": 0.9, "v": 0.9}
 
 
 class DragExact(Drag):
@@ -225,6 +229,49 @@ class DragExact(Drag):
 
 
 FULL = os.environ.get("SEEDS_FULL") == "1"
+
+
+class TaylorGreen:
+    """Particle in the Taylor-Green vortex (000 eq. 6.1-6.3) under fix drag:
+    GSL rk8pd of x' = v, v' = (u_f(x) - v)/tau; nsub counts steps per tau.
+    Errors: 3-d distance / (A tau), velocity difference / A, over 20 tau."""
+    deck = "taylor_green.in"
+    A, a, rho, d, mu, ntau = 1.0, 2 * M_PI, 10.0, 0.1, 1.0 / 9.0, 20
+    x0 = (0.1, 0.2, 0.3)
+    nsubs = (8, 16, 32, 64, 128)
+    xnorm, vnorm = "A tau", "A"
+    restitution = False
+
+    def __init__(self):
+        self.tau = self.rho * self.d ** 2 / (18 * self.mu)
+
+    def vars(self, nsub):
+        return {"nsub": nsub, "update": self.update, "ntau": self.ntau}
+
+    def errors(self, rows):
+        args = [ode_tool(), "tg"] + ["%.17g" % v for v in (self.A, self.a, self.tau) + self.x0 + (0, 0, 0)]
+        p = subprocess.run(args, input="\n".join("%.17g" % r["Time"] for r in rows),
+                           capture_output=True, text=True, check=True)
+        ref = [[float(w) for w in line.split()] for line in p.stdout.splitlines()]
+        ex = ev = 0.0
+        for r, q in zip(rows, ref):
+            dx = math.sqrt(sum((r[k] - q[1 + i]) ** 2 for i, k in enumerate(("v_px", "v_py", "v_pz"))))
+            dv = math.sqrt(sum((r[k] - q[4 + i]) ** 2 for i, k in enumerate(("v_vx", "v_vy", "v_vz"))))
+            ex = max(ex, dx / (self.A * self.tau))
+            ev = max(ev, dv / self.A)
+        return {"x": ex, "v": ev}
+
+
+class TaylorGreenImplicit(TaylorGreen):
+    name, update = "taylor_green_implicit", "implicit"
+    bound32 = {"x": 0.1, "v": 0.02}
+    min_order = {"x": 0.9, "v": 0.9}
+
+
+class TaylorGreenExact(TaylorGreen):
+    name, update = "taylor_green_exact", "exact"
+    bound32 = {"x": 1e-3, "v": 3e-4}
+    min_order = {"x": 1.8, "v": 1.8}
 
 
 class FrictionSliding:
@@ -276,7 +323,8 @@ class FrictionSliding:
         return {"x": ex, "v": ev}
 
 
-CASES = [NormalCollision, HertzCollision, DragExplicit, DragImplicit, DragExact, FrictionSliding]
+CASES = [NormalCollision, HertzCollision, DragExplicit, DragImplicit, DragExact, FrictionSliding,
+         TaylorGreenImplicit, TaylorGreenExact]
 
 
 def order(errs, nsubs):
@@ -317,6 +365,10 @@ def verify(case):
             falls = all(errs[i + 1] < errs[i] or errs[i + 1] < floor for i in range(len(errs) - 1))
             check("%s %s %s error falls with the time step" % (case.name, prec, q), falls and errs[-1] < errs[0],
                   " ".join("%.2e" % x for x in errs))
+    for prec in ("double", "single"):
+        for q, want in getattr(case, "min_order", {}).items():
+            o = order([res[prec, n][q] for n in case.nsubs], case.nsubs)
+            check("%s %s %s observed order >= %g" % (case.name, prec, q, want), o >= want, "%.2f" % o)
     for n in case.nsubs:
         for q in case.bound32:
             d, s = res["double", n][q], res["single", n][q]
