@@ -5,7 +5,8 @@
  * shear history), PAIR_EVAL=<ident>_eval (the active pair evaluator).
  * Contraction of a*b+c into fma is switched off so that results match the
  * host compilers LAMMPS is built with and the pair terms stay exactly
- * antisymmetric. */
+ * antisymmetric. PERIODIC_X/Y/Z mark periodic dimensions: the minimum-image
+ * correction is compiled only for those (MINIMG_X/Y/Z). */
 #ifndef REAL
 #define REAL double
 #define USE_DOUBLE 1
@@ -45,3 +46,19 @@ static inline REAL min_image(REAL d, REAL L)
     }
     return d;
 }
+
+#ifdef PERIODIC_X
+#define MINIMG_X(d, L) min_image(d, L)
+#else
+#define MINIMG_X(d, L) (d)
+#endif
+#ifdef PERIODIC_Y
+#define MINIMG_Y(d, L) min_image(d, L)
+#else
+#define MINIMG_Y(d, L) (d)
+#endif
+#ifdef PERIODIC_Z
+#define MINIMG_Z(d, L) min_image(d, L)
+#else
+#define MINIMG_Z(d, L) (d)
+#endif

@@ -290,9 +290,9 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                     if (j == i)
                         continue;
                     REAL3 del = xi - vload3(j, x);
-                    del.x = min_image(del.x, Lx);
-                    del.y = min_image(del.y, Ly);
-                    del.z = min_image(del.z, Lz);
+                    del.x = MINIMG_X(del.x, Lx);
+                    del.y = MINIMG_Y(del.y, Ly);
+                    del.z = MINIMG_Z(del.z, Lz);
                     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
                     const REAL radsum = radi + radius[j];
                     const REAL cut = radsum + skin;
@@ -349,9 +349,9 @@ __kernel void nbr_overlap(const int n, const int chunk, __global const REAL *x,
         for (int k = 0; k < ncount[i]; k++) {
             const int j = nlist[(size_t)i * maxn + k];
             REAL3 del = xi - vload3(j, x);
-            del.x = min_image(del.x, Lx);
-            del.y = min_image(del.y, Ly);
-            del.z = min_image(del.z, Lz);
+            del.x = MINIMG_X(del.x, Lx);
+            del.y = MINIMG_Y(del.y, Ly);
+            del.z = MINIMG_Z(del.z, Lz);
             const REAL r = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
             const REAL radj = radius[j];
             const REAL ov = (radi + radj - r) / fmin(radi, radj);

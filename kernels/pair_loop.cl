@@ -9,6 +9,7 @@
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
+#ifdef PAIR_EVAL
 __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL *v,
                         __global const REAL *omega, __global const REAL *radius,
                         __global const REAL *rmass, __global const int *type,
@@ -40,9 +41,9 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
         const int j = nlist[row + k];
         const REAL3 xj = vload3(j, x);
         REAL3 del = xi - xj;
-        del.x = min_image(del.x, Lx);
-        del.y = min_image(del.y, Ly);
-        del.z = min_image(del.z, Lz);
+        del.x = MINIMG_X(del.x, Lx);
+        del.y = MINIMG_Y(del.y, Ly);
+        del.z = MINIMG_Z(del.z, Lz);
         const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
         const REAL radj = radius[j];
         const REAL radsum = radi + radj;
@@ -94,6 +95,7 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
     vstore3(tsum, i, torque);
 #endif
 }
+#endif /* PAIR_EVAL */
 
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)

@@ -90,7 +90,30 @@ void eng_launch(struct gravel *g, cl_kernel k, size_t n)
 {
     if (n == 0)
         return;
-    cl_int err = clEnqueueNDRangeKernel(g->eng->ocl.queue, k, 1, NULL, &n, NULL, 0, NULL, NULL);
+    struct engine *e = g->eng;
+    cl_event ev = NULL;
+    cl_int err = clEnqueueNDRangeKernel(e->ocl.queue, k, 1, NULL, &n, NULL, 0, NULL,
+                                        e->ocl.profile ? &ev : NULL);
+    if (err == CL_SUCCESS && ev) {
+        cl_ulong t0 = 0, t1 = 0;
+        clWaitForEvents(1, &ev);
+        clGetEventProfilingInfo(ev, CL_PROFILING_COMMAND_START, sizeof t0, &t0, NULL);
+        clGetEventProfilingInfo(ev, CL_PROFILING_COMMAND_END, sizeof t1, &t1, NULL);
+        clReleaseEvent(ev);
+        char name[40] = "?";
+        clGetKernelInfo(k, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL);
+        int s = 0;
+        while (s < e->nprof && strcmp(e->prof_name[s], name))
+            s++;
+        if (s < 48) {
+            if (s == e->nprof) {
+                snprintf(e->prof_name[s], sizeof e->prof_name[s], "%s", name);
+                e->nprof++;
+            }
+            e->prof_sec[s] += 1e-9 * (double)(t1 - t0);
+            e->prof_calls[s]++;
+        }
+    }
     if (err != CL_SUCCESS) {
         char name[128] = "?";
         clGetKernelInfo(k, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL);
@@ -366,6 +389,9 @@ void eng_prepare(struct gravel *g)
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
                        single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
+    for (int q = 0; q < 3; q++)
+        if (g->dom.periodic[q])
+            len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
     if (p)
         len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PAIR_EVAL=%s",
                         p->style->eval);
@@ -388,6 +414,12 @@ void engine_destroy(struct gravel *g)
     struct engine *e = g->eng;
     if (!e)
         return;
+    if (e->nprof && g->screen) {
+        fprintf(stderr, "GRAVEL_PROFILE: device time per kernel\n");
+        for (int i = 0; i < e->nprof; i++)
+            fprintf(stderr, "  %-24s %8ld calls %10.4f s %8.1f us/call\n", e->prof_name[i],
+                    e->prof_calls[i], e->prof_sec[i], 1e6 * e->prof_sec[i] / e->prof_calls[i]);
+    }
     nbr_free(g);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);

@@ -49,6 +49,11 @@ struct engine {
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_clear;
+    /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
+    int nprof;
+    char prof_name[48][40];
+    double prof_sec[48];
+    long prof_calls[48];
     /* statistics of the current run */
     struct run_stats st;
 };

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
@@ -242,17 +243,14 @@ static void reset_flags(struct gravel *g, struct nbr *b)
     eng_write(g, b->flags, 0, sizeof f, f);
 }
 
-/* Stop on non-finite atom index i with the step, tag and the likely cause. */
-static void nonfinite_error(struct gravel *g, int i)
+/* "; probable cause: ..." comparing the time step with the collision time
+ * of the contact model (for the non-finite and lost-atoms stops). */
+static void probable_cause(struct gravel *g, char *cause, size_t len)
 {
-    struct engine *e = g->eng;
-    long long tag = 0;
-    eng_read(g, e->a.tag, (size_t)i * sizeof(cl_long), sizeof(cl_long), &tag);
-    char cause[400] = "";
     const struct pair *p = g->styles.pair;
-    if (p && p->style->collision_time) {
+    if (p && p->style->collision_time && g->atoms.n > 0) {
         double m = 0, r = 0, vmax = 0;
-        /* typical particle from the host copy of the run start */
+        /* lightest particle of the host copy (run start) */
         for (int k = 0; k < g->atoms.n; k++) {
             if (m == 0 || g->atoms.rmass[k] < m) {
                 m = g->atoms.rmass[k];
@@ -261,15 +259,25 @@ static void nonfinite_error(struct gravel *g, int i)
             for (int d = 0; d < 3; d++)
                 vmax = fmax(vmax, fabs(g->atoms.v[3 * k + d]));
         }
-        double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 1.0);
-        snprintf(cause, sizeof cause,
+        double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
+        snprintf(cause, len,
                  "; probable cause: the time step %g vs the estimated collision time %g of "
                  "pair style %s (%.3g steps per collision; at least ~10 are needed)",
                  g->dt, tc, p->style->name, tc / g->dt);
     } else {
-        snprintf(cause, sizeof cause, "; probable cause: a time step (%g) too large for the "
-                                      "forces, or a bad initial configuration", g->dt);
+        snprintf(cause, len, "; probable cause: a time step (%g) too large for the forces, or "
+                             "overlapping particles in the initial configuration", g->dt);
     }
+}
+
+/* Stop on non-finite atom index i with the step, tag and the likely cause. */
+static void nonfinite_error(struct gravel *g, int i)
+{
+    struct engine *e = g->eng;
+    long long tag = 0;
+    eng_read(g, e->a.tag, (size_t)i * sizeof(cl_long), sizeof(cl_long), &tag);
+    char cause[400];
+    probable_cause(g, cause, sizeof cause);
     gr_error(g, "non-finite position or velocity of atom %lld at step %lld%s", tag,
              (long long)g->step, cause);
 }
@@ -308,26 +316,6 @@ int nbr_decide(struct gravel *g)
         }
     }
     return 0;
-}
-
-/* Local stand-in for state's domain_shrink_wrap until it lands (same rule:
- * LAMMPS Domain::reset_box). */
-static void shrink_wrap(struct gravel *g, const double lo[3], const double hi[3])
-{
-    struct domain *d = &g->dom;
-    for (int k = 0; k < 3; k++) {
-        if (d->periodic[k] || lo[k] > hi[k])
-            continue;
-        double small = 1e-4 * (d->hi[k] - d->lo[k]);
-        if (d->bnd[k][0] == BND_S)
-            d->lo[k] = lo[k] - small;
-        else if (d->bnd[k][0] == BND_M)
-            d->lo[k] = fmin(lo[k] - small, d->minlo[k]);
-        if (d->bnd[k][1] == BND_S)
-            d->hi[k] = hi[k] + small;
-        else if (d->bnd[k][1] == BND_M)
-            d->hi[k] = fmax(hi[k] + small, d->minhi[k]);
-    }
 }
 
 static void wrap_and_extent(struct gravel *g, struct nbr *b)
@@ -369,7 +357,7 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
             hi[q] = fmax(hi[q], ext[6 * c + 3 + q]);
         }
     free(ext);
-    shrink_wrap(g, lo, hi);
+    domain_shrink_wrap(g, lo, hi);
 }
 
 /* Cell grid over the current box. */
@@ -490,10 +478,13 @@ void nbr_rebuild(struct gravel *g)
     cl_int nkeep = n;
     eng_read(g, b->start, (size_t)b->ncell * sizeof(cl_int), sizeof nkeep, &nkeep);
     if (nkeep < n) {
+        char cause[400];
+        probable_cause(g, cause, sizeof cause);
         if (g->thermo.lost == LOST_ERROR)
-            gr_error(g, "Lost atoms: original %d current %d (step %lld; atoms left the box "
-                        "through a fixed boundary; thermo_modify lost ignore|warn keeps going)",
-                     n, (int)nkeep, (long long)g->step);
+            gr_error(g, "Lost atoms: original %d current %d (step %lld: atoms left the box "
+                        "through a fixed boundary or moved more than a box length in one step"
+                        "%s; thermo_modify lost ignore|warn keeps going)",
+                     n, (int)nkeep, (long long)g->step, cause);
         if (g->thermo.lost == LOST_WARN)
             gr_warn(g, "Lost atoms: original %d current %d (step %lld)", n, (int)nkeep,
                     (long long)g->step);

@@ -134,7 +134,10 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     cl_int err;
     o->ctx = clCreateContext(NULL, 1, &o->device, NULL, NULL, &err);
     ocl_check(g, err, "clCreateContext");
-    o->queue = clCreateCommandQueue(o->ctx, o->device, 0, &err);
+    const char *prof = getenv("GRAVEL_PROFILE");
+    o->profile = prof && *prof && strcmp(prof, "0");
+    o->queue = clCreateCommandQueue(o->ctx, o->device,
+                                    o->profile ? CL_QUEUE_PROFILING_ENABLE : 0, &err);
     ocl_check(g, err, "clCreateCommandQueue");
 }
 

@@ -24,6 +24,7 @@ struct ocl {
     int is_gpu;
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
+    int profile;                /* env GRAVEL_PROFILE: time every kernel (engine.c) */
 };
 
 /* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */

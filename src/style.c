@@ -1,11 +1,16 @@
-/* style.c - release of every style instance on `clear` and destroy. */
+/* style.c - release of every style instance on `clear` and destroy: dumps
+ * first (they publish their files), then computes, fixes and the pair. */
 #include "gravel.h"
+#include "compute.h"
+#include "dump.h"
 #include "fix.h"
 #include "pair.h"
 #include "styles.h"
 
 void styles_free(struct gravel *g)
 {
-    pair_free(g);
+    dump_free_all(g);
+    compute_free_all(g);
     fix_free_all(g);
+    pair_free(g);
 }
