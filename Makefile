@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -67,6 +67,31 @@ run: deps
 bench: deps
 	@$(MAKE) --no-print-directory all
 	@sh tools/bench.sh
+
+# libFuzzer target for the interpreter (clang; the harness works in a scratch
+# directory, so its paths are absolute). `make fuzz FUZZ_TIME=600` runs it
+# for that many seconds on one core, niced; new inputs go to build/fuzz/corpus,
+# the committed seeds stay in tests/fuzz/corpus. `make fuzz-replay` runs every
+# committed corpus file through the ASan build (also part of make test).
+FUZZ_TIME ?= 60
+FUZZFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+FUZZOBJ   = $(LIBSRC:%.c=build/fuzz/%.o) build/fuzz/kernels.o
+build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+	@mkdir -p $(dir $@)
+	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
+build/fuzz/kernels.o: build/gen/kernels.c
+	@mkdir -p build/fuzz
+	clang $(CPPFLAGS) $(FUZZFLAGS) -c -o $@ $<
+bin/fuzz_input: tests/fuzz/fuzz_input.c $(FUZZOBJ)
+	@mkdir -p bin
+	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
+fuzz: bin/fuzz_input
+	@mkdir -p build/fuzz/corpus build/fuzz/crashes
+	nice -n 19 bin/fuzz_input -max_len=1200000 -max_total_time=$(FUZZ_TIME) -timeout=10 \
+	    -rss_limit_mb=2048 -artifact_prefix=$(CURDIR)/build/fuzz/crashes/ \
+	    -dict=$(CURDIR)/tests/fuzz/gravel.dict $(CURDIR)/build/fuzz/corpus $(CURDIR)/tests/fuzz/corpus
+fuzz-replay: bin/gravel-asan
+	@sh tests/scripts/fuzz_replay.sh
 
 clean:
 	rm -rf build bin

@@ -153,6 +153,38 @@ void cmd_uncompute(struct gravel *g, int argc, char **argv)
     gr_error(g, "unknown compute ID '%.64s'", argv[0]);
 }
 
+/* `compute_modify ID keyword value ...`. gravel's computes have no
+ * modifiable settings; the implicit thermo_temp (thermo `temp` and `ke`)
+ * takes LAMMPS' dynamic/dof (always on: dof follow the current atom count)
+ * and extra/dof. */
+void cmd_compute_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "expected: compute_modify ID keyword value ...");
+    if (strcmp(argv[0], "thermo_temp") != 0) {
+        struct compute *c = compute_get(g, argv[0], "compute_modify");
+        gr_error(g, "compute %s (%s) has no settings to modify", c->id, c->style->name);
+    }
+    double extra = g->thermo.extra_dof;
+    int set = g->thermo.extra_dof_set;
+    for (int i = 1; i < argc; i += 2) {
+        const char *kw = argv[i];
+        arg_need(g, argc, i, 1, kw);
+        if (strcmp(kw, "dynamic/dof") == 0 || strcmp(kw, "dynamic") == 0) {
+            if (!arg_yesno(g, argv[i + 1], kw))
+                gr_warn(g, "thermo_temp: gravel always counts the current atoms (dynamic/dof "
+                           "yes)");
+        } else if (strcmp(kw, "extra/dof") == 0 || strcmp(kw, "extra") == 0) {
+            extra = arg_double(g, argv[i + 1], kw);
+            set = 1;
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (dynamic/dof, extra/dof)", kw);
+        }
+    }
+    g->thermo.extra_dof = extra;
+    g->thermo.extra_dof_set = set;
+}
+
 double compute_scalar(struct gravel *g, struct compute *c)
 {
     if (!c->scalar_flag)
@@ -173,10 +205,11 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     if (!c->peratom_flag)
         gr_error(g, "compute %s (%s) does not produce per-atom values", c->id,
                  c->style->name);
+    int cols = c->size_peratom_cols > 0 ? c->size_peratom_cols : 1;
     int n = g->atoms.n;
     if (n > c->peratom_cap || !c->peratom) {
         int cap = n > 16 ? n : 16;
-        double *p = realloc(c->peratom, (size_t)cap * sizeof(double));
+        double *p = realloc(c->peratom, (size_t)cap * cols * sizeof(double));
         if (!p)
             gr_error(g, "out of memory for compute %s", c->id);
         c->peratom = p;
@@ -184,6 +217,31 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     }
     c->style->peratom(g, c);
     return c->peratom;
+}
+
+void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who)
+{
+    struct compute *c = compute_get(g, id, who);
+    if (!c->peratom_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce per-atom values", who, c->id,
+                 c->style->name);
+    if (index == 0 && c->size_peratom_cols > 0)
+        gr_error(g, "%s: compute %s has %d per-atom columns; use c_%s[N]", who, c->id,
+                 c->size_peratom_cols, c->id);
+    if (index > 0 && c->size_peratom_cols == 0)
+        gr_error(g, "%s: compute %s has one per-atom value; use c_%s", who, c->id, c->id);
+    if (index > c->size_peratom_cols)
+        gr_error(g, "%s: c_%s[%d] is out of range: compute %s has %d per-atom columns", who,
+                 c->id, index, c->id, c->size_peratom_cols);
+}
+
+const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index, int *stride,
+                                  const char *who)
+{
+    compute_peratom_check(g, c->id, index, who);
+    const double *p = compute_peratom(g, c);
+    *stride = c->size_peratom_cols > 0 ? c->size_peratom_cols : 1;
+    return index > 0 ? p + (index - 1) : p;
 }
 
 int compute_parse_ref(const char *ref, char *id, int *index)

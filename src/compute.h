@@ -39,9 +39,10 @@ struct compute {
     unsigned groupbit;          /* 1u << igroup */
     int scalar_flag, vector_flag, peratom_flag;
     int size_vector;
+    int size_peratom_cols;      /* 0: per-atom vector; else columns of a per-atom array */
     int extscalar, extvector;   /* 1: extensive, thermo divides by atoms when norm yes */
     double *vector;             /* [size_vector], owned */
-    double *peratom;            /* [atoms.n] after compute_peratom, owned */
+    double *peratom;            /* [atoms.n] or [atoms.n][cols] after compute_peratom, owned */
     int peratom_cap;
     void *data;                 /* style state */
 };
@@ -49,6 +50,7 @@ struct compute {
 /* `compute ID group style args...` and `uncompute ID` (commands.def). */
 void cmd_compute(struct gravel *g, int argc, char **argv);
 void cmd_uncompute(struct gravel *g, int argc, char **argv);
+void cmd_compute_modify(struct gravel *g, int argc, char **argv);
 
 /* The compute with this ID, or NULL. */
 struct compute *compute_find(struct gravel *g, const char *id);
@@ -58,8 +60,16 @@ struct compute *compute_get(struct gravel *g, const char *id, const char *who);
 /* Evaluate. Each raises an error when the compute has no such output. */
 double compute_scalar(struct gravel *g, struct compute *c);
 const double *compute_vector(struct gravel *g, struct compute *c);
-/* Per-atom values, length g->atoms.n, host order. */
+/* Per-atom values, length g->atoms.n (times size_peratom_cols for arrays,
+ * row-major), host order. */
 const double *compute_peratom(struct gravel *g, struct compute *c);
+/* Per-atom column for reference index (0: the vector of a per-atom-vector
+ * compute; N: column N of a per-atom array): value of atom i is
+ * p[i * *stride]. Errors name `who`. */
+const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index, int *stride,
+                                  const char *who);
+/* Check at setup that compute `id` has per-atom output matching `index`. */
+void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who);
 
 /* Parse "c_ID" or "c_ID[N]": copies ID into id (GR_NAMELEN), sets *index to
  * N (1-based) or 0. Returns 0 when `ref` does not have that form. */

@@ -109,6 +109,12 @@ void dump_free_all(struct gravel *g)
     g->styles.ndump = g->styles.ndump_cap = 0;
 }
 
+void dump_free_pending(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ndump; i++)
+        publish(g, g->styles.dump[i], 0);
+}
+
 void dump_run_end(struct gravel *g)
 {
     for (int i = 0; i < g->styles.ndump; i++)
@@ -161,6 +167,10 @@ void cmd_dump(struct gravel *g, int argc, char **argv)
     if (strchr(file, '%'))
         gr_error(g, "dump file name '%.200s': '%%' (one file per process) is not supported",
                  file);
+    for (int k = 0; k < g->styles.ndump; k++)
+        if (strcmp(g->styles.dump[k]->file, file) == 0)
+            gr_error(g, "file '%.200s' is already written by dump %s", file,
+                     g->styles.dump[k]->id);
     size_t fl = strlen(file);
     if (fl > 3 && strcmp(file + fl - 3, ".gz") == 0)
         gr_error(g, "dump file name '%.200s': compressed dumps are not supported", file);
@@ -246,12 +256,27 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             d->pad = arg_int_range(g, argv[i + 1], 0, 20, "pad");
             i += 2;
+        } else if (strcmp(kw, "first") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            d->first = arg_yesno(g, argv[i + 1], "first");
+            i += 2;
+        } else if (strcmp(kw, "append") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            int yes = arg_yesno(g, argv[i + 1], "append");
+            if (!d->style->append || d->multifile)
+                gr_error(g, "append applies to a dump custom writing one file (dump %s)", d->id);
+            if (d->nsnap == 0)
+                d->published = yes; /* the first snapshot continues the existing file */
+            i += 2;
         } else if (strcmp(kw, "binary") == 0) {
             gr_error(g, "binary applies to dump vtk only (dump %s is %s)", d->id, d->style->name);
+        } else if (strcmp(kw, "scale") == 0 || strcmp(kw, "image") == 0) {
+            gr_error(g, "%s applies to dump atom only (dump %s is %s)", kw, d->id,
+                     d->style->name);
         } else {
-            gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad%s",
-                     kw, d->id, d->style->name,
-                     strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", format");
+            gr_error(g, "unknown keyword '%.64s' for dump %s (%s): known are every, sort, pad, "
+                        "first%s", kw, d->id, d->style->name,
+                     strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", append, format");
         }
     }
 }
@@ -271,6 +296,76 @@ void cmd_undump(struct gravel *g, int argc, char **argv)
         return;
     }
     gr_error(g, "unknown dump ID '%.64s'", argv[0]);
+}
+
+/* `write_dump group style file args... [modify dump_modify args...]`: one
+ * snapshot of the current state now, through a temporary dump, as LAMMPS'
+ * write_dump. Between runs the host arrays are current. */
+static const char *const write_dump_id = "WRITE_DUMP";
+
+/* Create the temporary dump from "group style file args" (m words). */
+static void write_dump_create(struct gravel *g, int m, char **argv)
+{
+    char *dargv[260];
+    if (m > 250)
+        gr_error(g, "too many arguments");
+    dargv[0] = (char *)write_dump_id;
+    dargv[1] = argv[0];
+    dargv[2] = argv[1];
+    dargv[3] = "1";
+    for (int k = 2; k < m; k++)
+        dargv[k + 2] = argv[k];
+    cmd_dump(g, m + 2, dargv);
+}
+
+/* Apply the words after "modify" (n of them) to the temporary dump. */
+static void write_dump_modify(struct gravel *g, int n, char **words)
+{
+    char *dargv[260];
+    if (n < 1)
+        gr_error(g, "modify needs dump_modify keywords after it");
+    if (n > 250)
+        gr_error(g, "too many arguments");
+    dargv[0] = (char *)write_dump_id;
+    for (int k = 0; k < n; k++)
+        dargv[k + 1] = words[k];
+    cmd_dump_modify(g, n + 1, dargv);
+}
+
+void cmd_write_dump(struct gravel *g, int argc, char **argv)
+{
+    const char *tmp_id = write_dump_id;
+    if (argc < 3)
+        gr_error(g, "expected: write_dump group style file args... [modify keyword value ...]");
+    if (!g->dom.box_exists)
+        gr_error(g, "write_dump before the simulation box is defined");
+    int m = argc;
+    for (int k = 3; k < argc && m == argc; k++)
+        if (strcmp(argv[k], "modify") == 0)
+            m = k;
+    write_dump_create(g, m, argv);
+    struct dump *d = dump_find(g, tmp_id);
+
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        char *id[1] = {(char *)tmp_id};
+        cmd_undump(g, 1, id);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    if (m < argc)
+        write_dump_modify(g, argc - m - 1, argv + m + 1);
+    if (d->style->init)
+        d->style->init(g, d);
+    dump_write(g, d);
+    publish(g, d, 1);
+    g->err.jmp = outer;
+    char *id[1] = {(char *)tmp_id};
+    cmd_undump(g, 1, id);
 }
 
 /* ---- writing ------------------------------------------------------------------- */
@@ -434,7 +529,8 @@ void dump_setup_all(struct gravel *g)
     }
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
-        if (g->step % d->every == 0 && d->last_dump != g->step) {
+        int due = g->step % d->every == 0 || (d->first && d->last_dump < 0);
+        if (due && d->last_dump != g->step) {
             if (!synced) {
                 run_sync_host(g);
                 synced = 1;

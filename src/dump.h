@@ -55,11 +55,12 @@ struct dump {
     int pad;                    /* dump_modify pad: zero-pad the step to this width */
     int sort;                   /* dump_modify sort id */
     int binary;                 /* dump_modify binary yes (vtk) */
+    int first;                  /* dump_modify first yes: write at the first step of a run */
     bigint last_dump;           /* step of the last snapshot, -1 = none */
     bigint next_dump;
     /* append mode (one file, several snapshots) */
     FILE *fp;                   /* open "<file>.tmp" during a run */
-    int published;              /* <file> holds complete snapshots of this dump */
+    int published;              /* <file> holds snapshots to keep (ours, or append yes) */
     int nsnap;                  /* snapshots written */
     /* scratch */
     int *idx;
@@ -71,6 +72,7 @@ struct dump {
 void cmd_dump(struct gravel *g, int argc, char **argv);
 void cmd_dump_modify(struct gravel *g, int argc, char **argv);
 void cmd_undump(struct gravel *g, int argc, char **argv);
+void cmd_write_dump(struct gravel *g, int argc, char **argv);
 
 struct dump *dump_find(struct gravel *g, const char *id);
 
@@ -88,8 +90,13 @@ int dump_step_all(struct gravel *g);
 int dump_due(struct gravel *g, bigint step);
 /* End of a run: publish append-mode files (rename .tmp over the target). */
 void dump_run_end(struct gravel *g);
+/* The same without raising errors (warnings instead), for error paths. */
+void dump_free_pending(struct gravel *g);
 /* Free every dump, publishing append-mode files (styles_free). */
 void dump_free_all(struct gravel *g);
+
+/* dump custom (and dump atom, built on it): 1 if the dump has field `name`. */
+int dump_custom_has_field(const struct dump *d, const char *name);
 
 /* Helpers for styles (format checks: output_format_fix in thermo.h).
  * Write n doubles / int32 in big-endian order (legacy VTK binary). */

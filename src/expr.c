@@ -22,16 +22,15 @@
 #include "run.h"
 #include "variable.h"
 
-#define MAXDEPTH 200        /* parenthesis / operator nesting */
-#define MAXVARDEPTH 32      /* v_a -> v_b -> ... chains */
+#define MAXDEPTH 200        /* nesting of parentheses, unary operators and v_name
+                             * references together: bounds the C stack */
 #define BIG 1.0e20
 
 struct ep {
     struct gravel *g;
     const char *text;       /* whole expression, for messages */
     const char *p;          /* cursor */
-    int depth;              /* current nesting */
-    int vdepth;             /* variable recursion level */
+    int depth;              /* current nesting, including enclosing v_name evaluations */
 };
 
 static double parse_or(struct ep *e);
@@ -67,7 +66,8 @@ static int accept(struct ep *e, const char *op)
 static void enter(struct ep *e)
 {
     if (++e->depth > MAXDEPTH)
-        ep_fail(e, "nesting deeper than 200 levels");
+        ep_fail(e, "nesting deeper than 200 levels (parentheses, unary operators and "
+                   "v_name references together; do variables refer to each other in a cycle?)");
 }
 
 /* ---- group and atom functions ---------------------------------------------- */
@@ -406,9 +406,7 @@ static double parse_primary(struct ep *e)
         return parse_number(e);
     if (c == '(') {
         e->p++;
-        enter(e);
-        double v = parse_or(e);
-        e->depth--;
+        double v = parse_or(e); /* parse_or counts the nesting */
         if (!accept(e, ")"))
             ep_fail(e, "missing ')'");
         return v;
@@ -430,7 +428,7 @@ static double parse_primary(struct ep *e)
     if (name[0] == 'v' && name[1] == '_' && name[2]) {
         if (*e->p == '[')
             ep_fail(e, "vector variables v_name[i] are not supported");
-        return var_compute_equal_depth(e->g, name + 2, e->vdepth + 1);
+        return var_compute_equal_depth(e->g, name + 2, e->depth + 1);
     }
     /* c_ID, c_ID[n], f_ID[n]: served by the output module */
     if ((name[0] == 'c' || name[0] == 'f') && name[1] == '_' && name[2]) {
@@ -456,7 +454,6 @@ static double parse_primary(struct ep *e)
     skip_ws(e);
     if (*e->p == '(') {
         e->p++;
-        enter(e);
         double v;
         if (is_group_function(name)) {
             char args[3][GR_NAMELEN];
@@ -481,14 +478,11 @@ static double parse_primary(struct ep *e)
             }
             v = math_function(e, name, n, a);
         }
-        e->depth--;
         return v;
     }
     if (*e->p == '[' && is_atom_value(name)) {
         e->p++;
-        enter(e);
         double id = parse_or(e);
-        e->depth--;
         if (!accept(e, "]"))
             ep_fail(e, "missing ']'");
         return atom_value(e, name, id);
@@ -634,9 +628,8 @@ static double parse_or(struct ep *e)
 
 double expr_eval_depth(struct gravel *g, const char *text, int depth)
 {
-    struct ep e = {g, text, text, 0, depth};
-    if (depth > MAXVARDEPTH)
-        ep_fail(&e, "variables refer to each other more than 32 levels deep (a cycle?)");
+    struct ep e = {g, text, text, depth};
+    enter(&e);
     skip_ws(&e);
     if (*e.p == '\0')
         ep_fail(&e, "empty expression");

@@ -109,6 +109,9 @@ struct thermo_settings {
     char col[GR_MAXTHERMO][GR_NAMELEN];
     int norm;                       /* thermo_modify norm (lj default yes) */
     int norm_set;
+    int norm_user;                  /* the value given to thermo_modify norm */
+    int extra_dof_set;              /* compute_modify thermo_temp extra/dof given */
+    double extra_dof;               /* its value (default: dimension) */
     int flush;
     enum thermo_lost lost;
     char *format_line;              /* thermo_modify format line "..." */

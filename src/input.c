@@ -55,7 +55,7 @@ struct inp {
     struct dbuf expr;       /* the $(...) expression being evaluated */
     struct dbuf scratch;    /* inp_substitute's result */
     struct dbuf subin;      /* inp_substitute's input copy */
-    int (*allow)(const char *name);
+    int (*allow)(int argc, char **argv);
     long max_commands, ncommands;
     size_t max_line;
 };
@@ -108,7 +108,7 @@ void inp_destroy(struct inp *in)
     free(in);
 }
 
-void inp_set_limits(struct gravel *g, int (*allow)(const char *name), long max_commands,
+void inp_set_limits(struct gravel *g, int (*allow)(int argc, char **argv), long max_commands,
                     size_t max_line)
 {
     g->inp->allow = allow;
@@ -500,7 +500,7 @@ static const char *phase_problem(const struct gravel *g, enum phase ph)
 static int execute(struct gravel *g, struct frame *fr)
 {
     struct inp *in = g->inp;
-    g->err.cmd = NULL;
+    g->err.cmd = "input";
     g->err.text = fr->raw.p;
     strip_comment(g, &fr->raw, &fr->line);
     if (in->label) {
@@ -516,7 +516,7 @@ static int execute(struct gravel *g, struct frame *fr)
     echo(g, fr->raw.p);
     g->err.cmd = first_word(fr->line.p, fr->first, sizeof fr->first, NULL);
     if (!fr->first[0])
-        g->err.cmd = NULL;
+        g->err.cmd = "input";
     substitute(g, fr->line.p, &fr->work, 1);
     if (strcmp(fr->work.p, fr->line.p) != 0)
         echo(g, fr->work.p);
@@ -529,7 +529,7 @@ static int execute(struct gravel *g, struct frame *fr)
     if (!c)
         gr_error(g, "unknown command '%.64s' (nearest known command: '%s')", name,
                  cmd_nearest(name));
-    if (in->allow && !in->allow(name))
+    if (in->allow && !in->allow(fr->argc, fr->argv))
         gr_error(g, "command not allowed here");
     if (in->max_commands && ++in->ncommands > in->max_commands)
         gr_error(g, "more than %ld commands executed; stopping", in->max_commands);
@@ -572,7 +572,7 @@ static int run_sources(struct gravel *g, int base)
             break;
         }
         struct source *s = &in->src[in->nsrc - 1];
-        g->err.cmd = NULL;
+        g->err.cmd = "input"; /* errors before a command name is known */
         g->err.text = NULL;
         if (!read_command(g, s, fr)) {
             if (in->label && in->label_src == in->nsrc - 1) {

@@ -47,10 +47,10 @@ const char *inp_substitute(struct gravel *g, const char *text);
 
 /* ---- limits for the fuzz harness (0 = unlimited, the default) ---- */
 
-/* Refuse commands for which allow(name) returns 0 (error "not allowed"),
- * stop after max_commands commands, and refuse lines that grow beyond
- * max_line bytes after substitution. */
-void inp_set_limits(struct gravel *g, int (*allow)(const char *name), long max_commands,
+/* Refuse commands for which allow(argc, argv) returns 0 (argv[0] is the
+ * command name; error "not allowed here"), stop after max_commands commands,
+ * and refuse command lines longer than max_line bytes. */
+void inp_set_limits(struct gravel *g, int (*allow)(int argc, char **argv), long max_commands,
                     size_t max_line);
 
 #endif

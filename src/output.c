@@ -20,6 +20,7 @@
 
 static void emit(struct gravel *g, const char *text)
 {
+    progress_clear(g); /* stdout and stderr may share the terminal */
     gr_print(g, "%s", text);
     if (g->thermo.flush) {
         if (g->screen)
@@ -79,7 +80,7 @@ int output_due(struct gravel *g, bigint step)
     struct output_state *st = output_state(g);
     if (step == g->laststep || step == st->next_thermo)
         return 1;
-    return dump_due(g, step);
+    return dump_due(g, step) || progress_due(g);
 }
 
 void output_step(struct gravel *g)
@@ -126,16 +127,38 @@ static void stat_row(struct gravel *g, const char *label, double v)
     gr_print(g, "Histogram: 1 0 0 0 0 0 0 0 0 0\n");
 }
 
-void output_finish(struct gravel *g, const struct run_stats *s)
+void output_abort(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    progress_end(g);
+    dump_free_pending(g);
+    st->active = 0;
+}
+
+/* Housekeeping at the end of a run and the "Loop time" line. */
+static void finish_common(struct gravel *g, const struct run_stats *s)
 {
     struct output_state *st = output_state(g);
     progress_end(g);
     dump_run_end(g);
     st->active = 0;
-
-    double t = s->t_total;
-    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", t,
+    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", s->t_total,
              (long long)s->nsteps, s->natoms);
+}
+
+void output_finish_brief(struct gravel *g, const struct run_stats *s)
+{
+    finish_common(g, s);
+    if (g->screen)
+        fflush(g->screen);
+    if (g->logfile)
+        fflush(g->logfile);
+}
+
+void output_finish(struct gravel *g, const struct run_stats *s)
+{
+    finish_common(g, s);
+    double t = s->t_total;
     if (s->nsteps > 0 && t > 0) {
         double step_s = (double)s->nsteps / t;
         double atom_steps = step_s * s->natoms; /* Cundall number */
@@ -170,11 +193,14 @@ void output_finish(struct gravel *g, const struct run_stats *s)
 
     gr_print(g, "\n");
     stat_row(g, "Nlocal:", s->natoms);
-    stat_row(g, "Neighs:", s->total_neighbors);
-    gr_print(g, "\nTotal # of neighbors = %.8g\n", s->total_neighbors);
+    /* gravel's lists are full (each pair twice); LAMMPS reports its half
+     * list, each pair once: print pairs so the numbers compare */
+    double pairs = s->total_neighbors / 2;
+    stat_row(g, "Neighs:", pairs);
+    gr_print(g, "\nTotal # of neighbors = %.8g\n", pairs);
     if (s->natoms > 0) {
         char ave[64];
-        showpoint(ave, sizeof ave, 0, 8, s->total_neighbors / s->natoms);
+        showpoint(ave, sizeof ave, 0, 8, pairs / s->natoms);
         gr_print(g, "Ave neighs/atom = %s\n", ave);
     }
     gr_print(g, "Neighbor list builds = %lld\n", (long long)s->nbuilds);

@@ -1,8 +1,27 @@
 /* output.h - thermo output, dumps and the progress line, driven by `run`.
  *
- * The run loop calls output_setup() before step 0, output_step() after each
- * step (it decides what is due and syncs the host copy when it writes), and
- * output_finish() with the run's statistics. */
+ * Contract with the run loop (core):
+ *  - set g->firststep, g->laststep (and g->step = firststep) for the run,
+ *    compute the setup forces, then call output_setup(g). It resolves compute
+ *    and variable references (errors unwind from here, before any output),
+ *    writes the dumps due at the first step, prints the thermo header and
+ *    first line, and starts the progress line.
+ *  - after each step set g->step and g->time, then call output_step(g). It
+ *    writes what is due and calls run_sync_host(g) itself before reading
+ *    per-atom data (possibly twice in one step: dumps, then thermo; a second
+ *    call in the same step should be cheap). output_due(g, step) says in
+ *    advance whether anything will be written at `step` (or the progress
+ *    line is due); a loop may call output_step only when it says 1.
+ *  - at the end call output_finish(g, &stats): it erases the progress line,
+ *    completes appending dump files, and prints LAMMPS' footer. run_stats:
+ *    t_other may be 0 (then total minus the other sections is printed);
+ *    total_neighbors is the number of entries in gravel's full list (each
+ *    pair twice): the footer prints pairs, like LAMMPS' half list;
+ *    max_overlap_frac is printed as given.
+ *  - a run that stops on an error calls output_abort(g) first.
+ *  - styles_free (clear, destroy) must call compute_free_all(g) and
+ *    dump_free_all(g) (compute.h, dump.h).
+ * g->thermo.lost holds thermo_modify lost (error|warn|ignore) for the core. */
 #ifndef GR_OUTPUT_H
 #define GR_OUTPUT_H
 
@@ -10,13 +29,29 @@
 #include "run.h"
 
 void output_setup(struct gravel *g);
-/* 1 if any thermo line, dump or restart is due at this step. */
+/* 1 if a thermo line or a dump is due at this step of the current run, or
+ * the progress line wants a redraw (at most 4 times a second). */
 int output_due(struct gravel *g, bigint step);
 void output_step(struct gravel *g);
 void output_finish(struct gravel *g, const struct run_stats *st);
+/* `run N post no`: the same housekeeping, and only the "Loop time" line of
+ * the footer (LAMMPS prints nothing more with post no). */
+void output_finish_brief(struct gravel *g, const struct run_stats *st);
+/* A run stopping on an error (before output_finish): erase the progress
+ * line so the error message starts on a clean line, and complete appending
+ * dump files with the snapshots written so far. Never raises. */
+void output_abort(struct gravel *g);
 
-/* Value of a thermo keyword (step, atoms, ke, c_ID, v_name, ...) for
- * expressions; returns 0 when `name` is not a thermo keyword. */
+/* Value of a thermo keyword for expressions: step elapsed dt time cpu tpcpu
+ * spcpu cpuremain atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair
+ * emol, c_ID, c_ID[N] (normalized like thermo output with norm yes) and
+ * v_name. Returns 0 when `name` is none of these (or names no existing
+ * compute/variable); raises an error when c_ID exists but has no such value. */
 int thermo_keyword_value(struct gravel *g, const char *name, double *out);
+
+/* Commands (commands.def): thermo, thermo_style, thermo_modify. */
+void cmd_thermo(struct gravel *g, int argc, char **argv);
+void cmd_thermo_style(struct gravel *g, int argc, char **argv);
+void cmd_thermo_modify(struct gravel *g, int argc, char **argv);
 
 #endif

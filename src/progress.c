@@ -26,6 +26,12 @@ static void format_eta(char *buf, size_t n, double s)
         snprintf(buf, n, "%d:%02d:%02d", (int)(s / 3600), (int)(s / 60) % 60, (int)s % 60);
 }
 
+int progress_due(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    return st->progress_on && output_wall() - st->prog_last_wall >= PROGRESS_PERIOD;
+}
+
 void progress_update(struct gravel *g)
 {
     struct output_state *st = output_state(g);
@@ -50,13 +56,18 @@ void progress_update(struct gravel *g)
     st->prog_len = len;
 }
 
-void progress_end(struct gravel *g)
+void progress_clear(struct gravel *g)
 {
     struct output_state *st = output_state(g);
     if (st->progress_on && st->prog_len > 0) {
         fprintf(stderr, "\r%*s\r", st->prog_len, "");
         fflush(stderr);
     }
-    st->progress_on = 0;
     st->prog_len = 0;
+}
+
+void progress_end(struct gravel *g)
+{
+    progress_clear(g);
+    output_state(g)->progress_on = 0;
 }

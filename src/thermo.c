@@ -28,7 +28,7 @@ enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
-    KW_COUNT
+    KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_COUNT
 };
 #define KIND_COMPUTE (-1)
 #define KIND_VARIABLE (-2)
@@ -47,12 +47,15 @@ static const struct {
     [KW_LZ] = {"lz", "Lz", V_FLOAT},            [KW_XLO] = {"xlo", "Xlo", V_FLOAT},
     [KW_XHI] = {"xhi", "Xhi", V_FLOAT},         [KW_YLO] = {"ylo", "Ylo", V_FLOAT},
     [KW_YHI] = {"yhi", "Yhi", V_FLOAT},         [KW_ZLO] = {"zlo", "Zlo", V_FLOAT},
-    [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},
+    [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
+    [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
+    [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT},
 };
 
-/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press"; a
- * granular engine has no temperature compute, molecular energy or virial, so
- * `one` prints the energies and size it does have. */
+/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". gravel
+ * computes no virial (press), and for granular flows the atom count (pours,
+ * lost atoms), kinetic energy and volume say more than a temperature and
+ * the always-zero epair/emol, so `one` prints those. */
 static const char *const style_one[] = {"step", "atoms", "ke", "pe", "etotal", "vol"};
 static const char *const style_multi[] = {"step", "atoms", "etotal", "ke", "pe", "vol"};
 
@@ -196,6 +199,18 @@ const char *output_format_fix(const char *f, int want_int, char *out)
 
 /* ---- columns ------------------------------------------------------------------- */
 
+/* LAMMPS' implicit computes thermo_temp and thermo_pe, referenced as
+ * c_thermo_temp / c_thermo_pe when no compute of that ID was defined: the
+ * keyword they stand for, else -1. */
+static int implicit_compute(struct gravel *g, const char *s)
+{
+    if (strcmp(s, "c_thermo_temp") == 0 && !compute_find(g, "thermo_temp"))
+        return KW_TEMP;
+    if (strcmp(s, "c_thermo_pe") == 0 && !compute_find(g, "thermo_pe"))
+        return KW_PE;
+    return -1;
+}
+
 static int keyword_index(const char *s)
 {
     for (int k = 0; k < KW_COUNT; k++)
@@ -243,8 +258,11 @@ static void check_keyword(struct gravel *g, const char *s)
     }
     if (strncmp(s, "f_", 2) == 0)
         gr_error(g, "fix references ('%s') are not supported in thermo output", s);
+    if (strcmp(s, "press") == 0)
+        gr_error(g, "'press' is not available: gravel's contact models compute no virial");
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
-                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi c_ID c_ID[N] v_name)", s);
+                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair emol cpuremain c_ID c_ID[N] "
+                "v_name)", s);
 }
 
 /* A new thermo_style drops thermo_modify settings, as in LAMMPS. */
@@ -339,7 +357,7 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
         const char *kw = argv[i];
         if (strcmp(kw, "norm") == 0) {
             arg_need(g, argc, i, 1, kw);
-            t->norm = arg_yesno(g, argv[++i], "norm");
+            t->norm = t->norm_user = arg_yesno(g, argv[++i], "norm");
             t->norm_set = 1;
         } else if (strcmp(kw, "flush") == 0) {
             arg_need(g, argc, i, 1, kw);
@@ -438,6 +456,8 @@ void thermo_init(struct gravel *g)
         int k = keyword_index(s);
         if (k >= 0) {
             st->kind[i] = k;
+        } else if ((k = implicit_compute(g, s)) >= 0) {
+            st->kind[i] = k;
         } else if (strncmp(s, "c_", 2) == 0) {
             compute_ref_check(g, s, "thermo_style");
             st->kind[i] = KIND_COMPUTE;
@@ -470,7 +490,9 @@ void thermo_init(struct gravel *g)
         } else if (!isint && t->format_float) {
             f = t->format_float;
             src = "format float";
-        } else if (word) {
+        } else if (t->format_line) {
+            if (!word)
+                gr_error(g, "thermo_modify: format line has fewer words than the %d columns", n);
             f = word;
             src = "format line";
         } else {
@@ -493,15 +515,23 @@ void thermo_init(struct gravel *g)
 
 /* ---- values -------------------------------------------------------------------- */
 
+/* Degrees of freedom of LAMMPS' thermo_temp compute: dim x N - extra, extra
+ * = dim unless `compute_modify thermo_temp extra/dof`. Counted from the
+ * current atoms each time (LAMMPS' dynamic/dof yes). */
+static double temp_dof(const struct gravel *g)
+{
+    int dim = g->dom.dimension;
+    double extra = g->thermo.extra_dof_set ? g->thermo.extra_dof : dim;
+    return (double)dim * g->atoms.n - extra;
+}
+
 /* Translational kinetic energy as LAMMPS' thermo `ke` (compute temp scalar x
  * dof/2 x kB): 1/2 sum m v^2, and 0 when the system has no degrees of freedom
  * left (dim x N - dim <= 0, e.g. a single atom). */
 static double kinetic_energy(struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
-    int dim = g->dom.dimension;
-    double dof = (double)dim * a->n - dim;
-    if (dof <= 0)
+    if (temp_dof(g) <= 0)
         return 0.0;
     double sum = 0.0;
     for (int i = 0; i < a->n; i++) {
@@ -511,6 +541,17 @@ static double kinetic_energy(struct gravel *g)
     return 0.5 * compute_mvv2e(g) * sum;
 }
 
+/* Boltzmann constant in the current units (LAMMPS' force->boltz). */
+static double boltzmann(const struct gravel *g)
+{
+    switch (g->dom.units) {
+    case UNITS_SI: return 1.380649e-23;
+    case UNITS_CGS: return 1.380649e-16;
+    case UNITS_LJ: break;
+    }
+    return 1.0;
+}
+
 static double volume(const struct gravel *g)
 {
     const struct domain *d = &g->dom;
@@ -518,6 +559,14 @@ static double volume(const struct gravel *g)
     if (d->dimension == 3)
         v *= d->hi[2] - d->lo[2];
     return v;
+}
+
+/* thermo_modify norm: the user's value wins over the units default whatever
+ * the order of `units` and `thermo_modify` (LAMMPS resolves it at init). */
+static int norm_flag(struct gravel *g)
+{
+    g->thermo.norm = g->thermo.norm_set ? g->thermo.norm_user : g->dom.units == UNITS_LJ;
+    return g->thermo.norm;
 }
 
 static double clock_now(struct gravel *g)
@@ -531,7 +580,7 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
     struct output_state *st = output_state(g);
     double natoms = g->atoms.n;
-    int norm = g->thermo.norm && g->atoms.n > 0;
+    int norm = norm_flag(g) && g->atoms.n > 0;
     *isint = keywords[k].type == V_BIGINT;
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
@@ -540,6 +589,12 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_DT: return g->dt;
     case KW_TIME: return g->time;
     case KW_CPU: return clock_now(g);
+    case KW_CPUREMAIN: {
+        /* LAMMPS: wall time left, extrapolated from the run so far */
+        double cpu = clock_now(g);
+        bigint done = g->step - g->firststep, left = g->laststep - g->step;
+        return done > 0 && left > 0 ? cpu * (double)left / (double)done : 0.0;
+    }
     case KW_TPCPU: {
         double cpu = clock_now(g), v = 0.0;
         if (!st->firstflag) {
@@ -566,7 +621,14 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         /* pe: granular pair styles and walls have no potential energy */
         return norm ? ke / natoms : ke;
     }
-    case KW_PE: return 0.0;
+    case KW_PE:
+    case KW_EPAIR:
+    case KW_EMOL: return 0.0;
+    case KW_TEMP: {
+        /* LAMMPS compute temp: 2 KE / (dof kB), dof = dim N - dim; intensive */
+        double dof = temp_dof(g);
+        return dof > 0 ? 2.0 * kinetic_energy(g) / (dof * boltzmann(g)) : 0.0;
+    }
     case KW_VOL: return volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
@@ -588,10 +650,18 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL)
+        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP)
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
+        return 1;
+    }
+    if ((k = implicit_compute(g, name)) >= 0) {
+        bigint iv;
+        int isint;
+        if (k == KW_TEMP)
+            run_sync_host(g);
+        *out = keyword_value(g, k, &iv, &isint);
         return 1;
     }
     if (strncmp(name, "c_", 2) == 0) {
@@ -600,7 +670,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!compute_parse_ref(name, id, &index) || !compute_find(g, id))
             return 0;
         run_sync_host(g);
-        *out = compute_ref_value(g, name, g->thermo.norm, "reference");
+        *out = compute_ref_value(g, name, norm_flag(g), "reference");
         return 1;
     }
     if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {
@@ -615,7 +685,8 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
 static const char *column_name(struct gravel *g, int i)
 {
     int k = output_state(g)->kind[i];
-    return k >= 0 ? keywords[k].header : g->thermo.col[i];
+    const char *col = g->thermo.col[i];
+    return k >= 0 && strncmp(col, "c_", 2) != 0 ? keywords[k].header : col;
 }
 
 const char *thermo_header_text(struct gravel *g)
@@ -638,7 +709,8 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KIND_COMPUTE) {
+        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_TEMP ||
+            st->kind[i] == KIND_COMPUTE) {
             run_sync_host(g);
             break;
         }
@@ -649,7 +721,7 @@ const char *thermo_line_text(struct gravel *g)
         if (k >= 0) {
             val[i] = keyword_value(g, k, &ival[i], &isint);
         } else if (k == KIND_COMPUTE) {
-            val[i] = compute_ref_value(g, t->col[i], t->norm, "thermo_style");
+            val[i] = compute_ref_value(g, t->col[i], norm_flag(g), "thermo_style");
         } else {
             val[i] = var_compute_equal(g, t->col[i] + 2);
         }

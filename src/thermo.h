@@ -58,5 +58,11 @@ const char *thermo_line_text(struct gravel *g);
 void progress_begin(struct gravel *g);
 void progress_update(struct gravel *g);
 void progress_end(struct gravel *g);
+/* 1 when the progress line should be redrawn now (callers that only call
+ * output_step when output_due says so still get a live line). */
+int progress_due(struct gravel *g);
+/* Erase the line if shown (before other text goes to the terminal); the
+ * next update redraws it. */
+void progress_clear(struct gravel *g);
 
 #endif

@@ -87,6 +87,11 @@ static struct var *find(struct gravel *g, const char *name)
     return NULL;
 }
 
+int var_exists(struct gravel *g, const char *name)
+{
+    return find(g, name) != NULL;
+}
+
 static void remove_var(struct gravel *g, struct var *v)
 {
     struct vars *vs = g->vars;
@@ -113,7 +118,9 @@ static struct var *append(struct gravel *g, const char *name, enum vstyle style,
 {
     struct vars *vs = g->vars;
     char *dupname = gr_strdup(g, name);
-    char **val = calloc((size_t)(nval > 0 ? nval : 1), sizeof(char *));
+    /* loop variables store only their range: no value slots */
+    int nslots = style == V_LOOP ? 1 : nval > 0 ? nval : 1;
+    char **val = calloc((size_t)nslots, sizeof(char *));
     if (!val) {
         free(dupname);
         gr_error(g, "out of memory");
@@ -327,9 +334,9 @@ double var_compute_equal_depth(struct gravel *g, const char *name, int depth)
     struct var *v = find(g, name);
     if (!v)
         gr_error(g, "variable '%s' is not defined (in v_%s)", name, name);
-    if (depth > 32)
-        gr_error(g, "variables refer to each other more than 32 levels deep, at v_%s (a cycle?)",
-                 name);
+    if (depth > 200)
+        gr_error(g, "variables nested more than 200 levels deep, at v_%s (do variables refer "
+                 "to each other in a cycle?)", name);
     if (v->style == V_EQUAL)
         return expr_eval_depth(g, v->val[0], depth);
     if (v->style == V_FORMAT)

@@ -24,6 +24,8 @@ int var_next(struct gravel *g, const char *name);
 /* Current value as text (equal-style variables are evaluated), or NULL when
  * no variable has that name. The text stays valid until the next call. */
 const char *var_retrieve(struct gravel *g, const char *name);
+/* 1 if a variable of that name exists (nothing is evaluated). */
+int var_exists(struct gravel *g, const char *name);
 /* Numeric value of variable `name`; error if undefined or not numeric. */
 double var_compute_equal(struct gravel *g, const char *name);
 /* Print every variable (name, style, value) with gr_print, for `info`. */

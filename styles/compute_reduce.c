@@ -2,7 +2,8 @@
  * reduce per-atom quantities over the atoms of the group, as LAMMPS' compute
  * reduce. mode = sum | min | max | ave | sumsq | avesq | sumabs | aveabs.
  * Inputs: x y z vx vy vz fx fy fz radius diameter mass omegax omegay omegaz
- * tqx tqy tqz, or c_ID (a per-atom compute). One input gives a global scalar,
+ * tqx tqy tqz, or c_ID / c_ID[N] (a per-atom compute's vector, or column N of
+ * its array). One input gives a global scalar,
  * several a global vector (one element per input). Sum modes are extensive.
  * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
  * max (LAMMPS' values). */
@@ -18,6 +19,7 @@ enum mode { SUM, SUMSQ, SUMABS, MIN, MAX, AVE, AVESQ, AVEABS };
 struct input {
     int field;                  /* index into fields[] or -1 for a compute */
     char cid[GR_NAMELEN];       /* per-atom compute ID */
+    int index;                  /* c_ID[N]: column N of a per-atom array; 0: vector */
 };
 
 struct reduce {
@@ -78,17 +80,13 @@ static void reduce_create(struct gravel *g, struct compute *c, int argc, char **
             if (strcmp(s, fields[f].name) == 0)
                 in->field = f;
         if (in->field < 0) {
-            int index;
             if (strncmp(s, "v_", 2) == 0)
                 gr_error(g, "compute reduce: atom-style variable inputs ('%.64s') are not "
                             "supported", s);
             if (strncmp(s, "f_", 2) == 0)
                 gr_error(g, "compute reduce: fix inputs ('%.64s') are not supported", s);
-            if (!compute_parse_ref(s, in->cid, &index))
+            if (!compute_parse_ref(s, in->cid, &in->index))
                 gr_error(g, "compute reduce: unknown input '%.64s'", s);
-            if (index)
-                gr_error(g, "compute reduce: '%.64s': per-atom computes in gravel have one "
-                            "column; use c_ID", s);
             if (strcmp(in->cid, c->id) == 0)
                 gr_error(g, "compute reduce: compute %s cannot reduce itself", c->id);
         }
@@ -110,10 +108,7 @@ static void reduce_init(struct gravel *g, struct compute *c)
     for (int k = 0; k < r->n; k++) {
         if (r->in[k].field >= 0)
             continue;
-        struct compute *src = compute_get(g, r->in[k].cid, "compute reduce");
-        if (!src->peratom_flag)
-            gr_error(g, "compute reduce %s: compute %s (%s) does not produce per-atom values",
-                     c->id, src->id, src->style->name);
+        compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
     }
 }
 
@@ -134,7 +129,7 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
         scale = fields[in->field].scale;
     } else {
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
-        src = compute_peratom(g, pc);
+        src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");
     }
     double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
     bigint count = 0;

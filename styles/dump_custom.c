@@ -8,7 +8,9 @@
  * dump_modify format says otherwise (precedence: format N > format int|float
  * > the word of format line, as LAMMPS).
  * Fields: id type x y z xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
- * mass omegax omegay omegaz tqx tqy tqz, and c_ID (a per-atom compute). */
+ * mass omegax omegay omegaz tqx tqy tqz, xs ys zs (scaled to the box: (x -
+ * xlo) / Lx), xsu ysu zsu (scaled, unwrapped: xs + ix), and c_ID / c_ID[N] (a per-atom
+ * compute's vector or column N of its array). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,12 +23,13 @@
 enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
-    F_COUNT, F_COMPUTE = -1
+    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_COUNT, F_COMPUTE = -1
 };
 
 static const char *const field_names[F_COUNT] = {
     "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
-    "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+    "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
+    "xs", "ys", "zs", "xsu", "ysu", "zsu"};
 
 static int field_is_int(int f)
 {
@@ -37,7 +40,10 @@ struct column {
     int field;                  /* enum field or F_COMPUTE */
     char name[GR_NAMELEN];      /* as given */
     char fmt[80];               /* resolved at init */
+    char cid[GR_NAMELEN];       /* c_ID / c_ID[N]: compute ID and column (0: vector) */
+    int index;
     const double *peratom;      /* compute values for the current snapshot */
+    int stride;
 };
 
 struct custom {
@@ -85,18 +91,13 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
                 col->field = f;
         if (col->field != F_COMPUTE)
             continue;
-        char id[GR_NAMELEN];
-        int index;
-        if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, id, &index)) {
-            if (index)
-                gr_error(g, "dump custom field '%s': per-atom computes in gravel have one "
-                            "column; use c_ID", s);
+        if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, col->cid, &col->index))
             continue;
-        }
         if (strncmp(s, "v_", 2) == 0)
             gr_error(g, "dump custom field '%s': atom-style variables are not supported", s);
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
-                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz c_ID)", s);
+                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu "
+                    "c_ID c_ID[N])", s);
     }
 }
 
@@ -168,12 +169,8 @@ static void custom_init(struct gravel *g, struct dump *d)
     }
     for (int i = 0; i < c->n; i++) {
         struct column *col = &c->col[i];
-        if (col->field == F_COMPUTE) {
-            struct compute *pc = compute_get(g, col->name + 2, "dump custom");
-            if (!pc->peratom_flag)
-                gr_error(g, "dump %s: compute %s (%s) does not produce per-atom values", d->id,
-                         pc->id, pc->style->name);
-        }
+        if (col->field == F_COMPUTE)
+            compute_peratom_check(g, col->cid, col->index, "dump custom");
         int isint = col->field >= 0 && field_is_int(col->field);
         const char *f = NULL, *src = NULL;
         if (c->format_col[i]) {
@@ -213,7 +210,9 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
     custom_init(g, d); /* formats may have changed since run setup (tests, dump_modify) */
     for (int i = 0; i < c->n; i++)
         if (c->col[i].field == F_COMPUTE)
-            c->col[i].peratom = compute_peratom(g, compute_find(g, c->col[i].name + 2));
+            c->col[i].peratom = compute_peratom_ref(g, compute_find(g, c->col[i].cid),
+                                                    c->col[i].index, &c->col[i].stride,
+                                                    "dump custom");
 
     double prd[3];
     for (int k = 0; k < 3; k++)
@@ -245,6 +244,16 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
                 v = a->x[3 * j + dim] + a->image[3 * j + dim] * prd[dim];
                 break;
             }
+            case F_XS: case F_YS: case F_ZS: {
+                int dim = col->field - F_XS;
+                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim];
+                break;
+            }
+            case F_XSU: case F_YSU: case F_ZSU: {
+                int dim = col->field - F_XSU;
+                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim] + a->image[3 * j + dim];
+                break;
+            }
             case F_IX: case F_IY: case F_IZ: iv = a->image[3 * j + col->field - F_IX]; break;
             case F_VX: case F_VY: case F_VZ: v = a->v[3 * j + col->field - F_VX]; break;
             case F_FX: case F_FY: case F_FZ: v = a->f[3 * j + col->field - F_FX]; break;
@@ -255,7 +264,7 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
                 v = a->omega[3 * j + col->field - F_OMEGAX];
                 break;
             case F_TQX: case F_TQY: case F_TQZ: v = a->torque[3 * j + col->field - F_TQX]; break;
-            default: v = col->peratom[j]; break;
+            default: v = col->peratom[(size_t)j * col->stride]; break;
             }
             if (i)
                 fputc(' ', fp);
@@ -266,6 +275,15 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
         }
         fputc('\n', fp);
     }
+}
+
+int dump_custom_has_field(const struct dump *d, const char *name)
+{
+    const struct custom *c = d->data;
+    for (int i = 0; c && i < c->n; i++)
+        if (strcmp(c->col[i].name, name) == 0)
+            return 1;
+    return 0;
 }
 
 const struct dump_style dump_style_custom = {

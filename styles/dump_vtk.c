@@ -24,6 +24,8 @@
 struct vtk {
     double *buf;                /* scratch for binary blocks, 3 per atom */
     int cap;
+    int32_t *ibuf;              /* scratch for binary int blocks, 2 per atom */
+    int icap;
 };
 
 static void vtk_create(struct gravel *g, struct dump *d, int argc, char **argv)
@@ -37,8 +39,10 @@ static void vtk_create(struct gravel *g, struct dump *d, int argc, char **argv)
 static void vtk_destroy(struct dump *d)
 {
     struct vtk *v = d->data;
-    if (v)
+    if (v) {
         free(v->buf);
+        free(v->ibuf);
+    }
     free(v);
     d->data = NULL;
 }
@@ -61,6 +65,17 @@ static double *scratch(struct gravel *g, struct dump *d, int n)
         v->cap = cap;
     }
     return v->buf;
+}
+
+static int32_t *iscratch(struct gravel *g, struct dump *d, int n)
+{
+    struct vtk *v = d->data;
+    if (v->icap < 2 * n || !v->ibuf) {
+        int cap = 2 * n > 32 ? 2 * n : 32;
+        v->ibuf = gr_realloc(g, v->ibuf, (size_t)cap * sizeof(int32_t));
+        v->icap = cap;
+    }
+    return v->ibuf;
 }
 
 static void write_be_int64(FILE *fp, int64_t x)
@@ -129,12 +144,12 @@ static void vtk_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx
 
     fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
     if (bin) {
-        int32_t pair[2];
+        int32_t *b = iscratch(g, d, n);
         for (int k = 0; k < n; k++) {
-            pair[0] = 1;
-            pair[1] = k;
-            dump_write_be_int32(fp, pair, 2);
+            b[2 * k] = 1;
+            b[2 * k + 1] = k;
         }
+        dump_write_be_int32(fp, b, 2 * (size_t)n);
         fputc('\n', fp);
     } else {
         for (int k = 0; k < n; k++)
@@ -146,30 +161,32 @@ static void vtk_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx
     fprintf(fp, "POINT_DATA %d\nFIELD FieldData 7\n", n);
 
     fprintf(fp, "id 1 %d %s\n", n, wide ? "vtktypeint64" : "int");
-    for (int k = 0; k < n; k++) {
-        int64_t t = a->tag[idx[k]];
-        if (bin && wide) {
-            write_be_int64(fp, t);
-        } else if (bin) {
-            int32_t t32 = (int32_t)t;
-            dump_write_be_int32(fp, &t32, 1);
-        } else {
-            fprintf(fp, "%lld\n", (long long)t);
-        }
-    }
-    if (bin)
+    if (bin && wide) {
+        for (int k = 0; k < n; k++)
+            write_be_int64(fp, a->tag[idx[k]]);
         fputc('\n', fp);
+    } else if (bin) {
+        int32_t *b = iscratch(g, d, n);
+        for (int k = 0; k < n; k++)
+            b[k] = (int32_t)a->tag[idx[k]];
+        dump_write_be_int32(fp, b, (size_t)n);
+        fputc('\n', fp);
+    } else {
+        for (int k = 0; k < n; k++)
+            fprintf(fp, "%lld\n", (long long)a->tag[idx[k]]);
+    }
 
     fprintf(fp, "type 1 %d int\n", n);
-    for (int k = 0; k < n; k++) {
-        int32_t t = a->type[idx[k]];
-        if (bin)
-            dump_write_be_int32(fp, &t, 1);
-        else
-            fprintf(fp, "%d\n", (int)t);
-    }
-    if (bin)
+    if (bin) {
+        int32_t *b = iscratch(g, d, n);
+        for (int k = 0; k < n; k++)
+            b[k] = a->type[idx[k]];
+        dump_write_be_int32(fp, b, (size_t)n);
         fputc('\n', fp);
+    } else {
+        for (int k = 0; k < n; k++)
+            fprintf(fp, "%d\n", a->type[idx[k]]);
+    }
 
     fprintf(fp, "radius 1 %d double\n", n);
     write_doubles(g, d, fp, a->radius, 1, idx, n);

@@ -65,6 +65,12 @@ static void eval_rk(struct gravel *g, int argc, char **argv)
     compute_vector(g, compute_find(g, "rk"));
 }
 
+static void eval_named(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    compute_scalar(g, compute_find(g, argv[0]));
+}
+
 TEST(reduce)
 {
     struct gravel *g = make();
@@ -142,6 +148,38 @@ TEST(reduce_references)
     fx_destroy(g);
 }
 
+/* property/atom: one attribute = per-atom vector, several = array; reduce
+ * and references by column. */
+TEST(property_atom)
+{
+    struct gravel *g = make();
+    CHECK(test_script(g, "compute pv even property/atom radius\n"
+                         "compute pa all property/atom x vz id diameter\n"
+                         "compute r1 all reduce max c_pv\n"
+                         "compute r2 all reduce sum c_pa[2] c_pa[3] c_pa[4]\n") == GR_OK);
+    struct compute *pv = compute_find(g, "pv"), *pa = compute_find(g, "pa");
+    CHECK(pv->peratom_flag && pv->size_peratom_cols == 0);
+    CHECK(pa->peratom_flag && pa->size_peratom_cols == 4);
+    const double *v = compute_peratom(g, pv);
+    CHECK(v[0] == 0.5 && v[1] == 0.0 && v[2] == 0.25 && v[3] == 0.0);
+    v = compute_peratom(g, pa);
+    CHECK(v[0] == 1 && v[1] == 3 && v[2] == 1 && v[3] == 1.0); /* atom 1: x, vz, id, diameter */
+    CHECK(v[12] == 4 && v[13] == 0 && v[14] == 4 && v[15] == 1.0);
+    CHECK(scalar(g, "r1") == 0.5);
+    v = compute_vector(g, compute_find(g, "r2"));
+    CHECK(v[0] == 3.0 && v[1] == 10.0 && v[2] == 1.0 + 2.0 + 0.5 + 1.0);
+    CHECK(test_script(g, "compute bad1 all reduce sum c_pa\n"
+                         "compute bad2 all reduce sum c_pv[1]\n"
+                         "compute bad3 all reduce sum c_pa[5]\n") == GR_OK);
+    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad1"}) == 1);
+    CHECK(strstr(g->err.msg, "compute pa has 4 per-atom columns; use c_pa[N]") != NULL);
+    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad2"}) == 1);
+    CHECK(strstr(g->err.msg, "compute pv has one per-atom value; use c_pv") != NULL);
+    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad3"}) == 1);
+    CHECK(strstr(g->err.msg, "c_pa[5] is out of range") != NULL);
+    fx_destroy(g);
+}
+
 TEST(count_type)
 {
     struct gravel *g = make();
@@ -193,7 +231,8 @@ TEST(errors)
     FX_CHECK_ERROR("compute 1 all reduce sum v_a\n", "atom-style variable", 1);
     FX_CHECK_ERROR("compute 1 all reduce sum f_a\n", "fix inputs", 1);
     FX_CHECK_ERROR("compute 1 all reduce sum c_1\n", "cannot reduce itself", 1);
-    FX_CHECK_ERROR("compute 1 all reduce sum c_a[2]\n", "have one column", 1);
+    FX_CHECK_ERROR("compute 1 all property/atom\n", "at least one attribute", 1);
+    FX_CHECK_ERROR("compute 1 all property/atom x q\n", "unknown attribute 'q'", 1);
     FX_CHECK_ERROR("compute 1 all count/type bond\n", "supports only 'atom'", 1);
     FX_CHECK_ERROR("\nuncompute nope\n", "unknown compute ID 'nope'", 2);
     CHECK_ERROR("compute 1 all ke\n", "needs a simulation box", 1);
@@ -204,6 +243,7 @@ int main(void)
     RUN(ke_and_erotate);
     RUN(reduce);
     RUN(reduce_references);
+    RUN(property_atom);
     RUN(count_type);
     RUN(registry);
     RUN(errors);

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "command.h"
+#include "output.h"
 
 static char dir[64];
 
@@ -247,13 +248,79 @@ TEST(append_scheme)
     s = slurp("a.txt.tmp");
     CHECK(s && count_str(s, "ITEM: TIMESTEP") == 3);
     free(s);
+    /* a run stopped by an error publishes what it wrote (output_abort) */
+    g->step = 30;
+    CHECK(dump_step_all(g) == 1);
+    output_abort(g);
+    CHECK(!exists("a.txt.tmp"));
+    s = slurp("a.txt");
+    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 4 && strstr(s, "ITEM: TIMESTEP\n30\n"));
+    free(s);
     /* undump publishes */
     CHECK(script(g, "undump d\n") == GR_OK);
     CHECK(!exists("a.txt.tmp"));
     s = slurp("a.txt");
-    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 3 && strstr(s, "ITEM: TIMESTEP\n20\n"));
+    CHECK(s && count_str(s, "ITEM: TIMESTEP") == 4 && strstr(s, "ITEM: TIMESTEP\n20\n"));
     free(s);
     CHECK(g->styles.ndump == 0);
+    fx_destroy(g);
+    remove_dir(dir);
+}
+
+/* dump_modify first yes writes at a run's first step even off the multiple;
+ * append yes continues an existing file. */
+TEST(first_and_append)
+{
+    make_dir();
+    struct gravel *g = formula_system(1);
+    char p[300];
+    snprintf(p, sizeof p, "%s/old.txt", dir);
+    FILE *fp = fopen(p, "w");
+    fputs("previous content\n", fp);
+    fclose(fp);
+    CHECK(script(g, "dump d all custom 7 @/old.txt id\ndump_modify d first yes append yes\n"
+                    "dump e all vtk 7 @/e.*.vtk\n") == GR_OK);
+    g->step = 3;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    CHECK(exists("old.txt.tmp") && !exists("e.3.vtk"));
+    g->step = 7;
+    CHECK(dump_step_all(g) == 1);
+    CHECK(fx_call(g, do_run_end, 0, NULL) == 0);
+    char *s = slurp("old.txt");
+    CHECK(s && strncmp(s, "previous content\nITEM: TIMESTEP\n3\n", 33) == 0 &&
+          count_str(s, "ITEM: TIMESTEP") == 2);
+    free(s);
+    /* first applies once: a later run starting off the multiple writes nothing */
+    g->step = 9;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    CHECK(!exists("old.txt.tmp"));
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump_modify 1 append yes\n", "append applies", 2);
+    fx_destroy(g);
+    remove_dir(dir);
+}
+
+/* write_dump: one snapshot now, through a temporary dump that disappears. */
+TEST(write_dump)
+{
+    make_dir();
+    struct gravel *g = formula_system(3);
+    g->step = 12;
+    CHECK(script(g, "write_dump all custom @/w.txt id x modify sort id format float %.3f\n"
+                    "write_dump even vtk @/w_*.vtk modify binary yes\n") == GR_OK);
+    char *s = slurp("w.txt");
+    CHECK(s && strstr(s, "ITEM: TIMESTEP\n12\n") &&
+          strstr(s, "ITEM: ATOMS id x\n1 0.100\n2 1.400\n3 2.700\n"));
+    free(s);
+    CHECK(!exists("w.txt.tmp") && exists("w_12.vtk"));
+    CHECK(g->styles.ndump == 0);
+    /* errors leave no temporary dump behind */
+    CHECK(script(g, "write_dump all custom @/x.txt id modify sort q\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "sort must be id or off") != NULL);
+    CHECK(g->styles.ndump == 0 && !exists("x.txt") && !exists("x.txt.tmp"));
+    CHECK(script(g, "write_dump all custom @/x.txt bogus\n") == GR_ERR);
+    CHECK(g->styles.ndump == 0);
+    CHECK(script(g, "write_dump all custom @/x.txt id modify\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "modify needs") != NULL && g->styles.ndump == 0);
     fx_destroy(g);
     remove_dir(dir);
 }
@@ -319,6 +386,14 @@ TEST(write_failures)
     CHECK(fx_call(g, do_write, 1, (char *[]){"c"}) == 0);
     char *good = slurp("k.0.txt");
     CHECK(good && strstr(good, "ITEM: ATOMS id c_ka\n2 3.9375\n1 0.125\n"));
+    /* per-atom array columns */
+    CHECK(script(g, "compute pa all property/atom vz diameter\n"
+                    "dump p all custom 1 @/p.txt id c_pa[2] c_pa[1]\n") == GR_OK);
+    CHECK(fx_call(g, do_write, 1, (char *[]){"p"}) == 0);
+    CHECK(fx_call(g, do_run_end, 0, NULL) == 0);
+    char *ps = slurp("p.txt");
+    CHECK(ps && strstr(ps, "ITEM: ATOMS id c_pa[2] c_pa[1]\n2 1.02 0.5\n1 1 0.5\n"));
+    free(ps);
     CHECK(script(g, "uncompute ka\ncompute ka all ke\n") == GR_OK);
     CHECK(fx_call(g, do_write, 1, (char *[]){"c"}) == 1);
     CHECK(strstr(g->err.msg, "does not produce per-atom values") != NULL);
@@ -356,6 +431,11 @@ TEST(errors)
                    "must convert a floating-point", 2);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt id\ndump_modify 1 format float\n", "needs 2", 2);
     FX_CHECK_ERROR("undump 4\n", "unknown dump ID '4'", 1);
+    FX_CHECK_ERROR("dump 1 all atom 1 f.txt id\n", "takes no arguments", 1);
+    FX_CHECK_ERROR("dump 1 all atom 1 f.txt\ndump_modify 1 scale perhaps\n", "yes or no", 2);
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump_modify 1 image yes\n", "dump atom only", 2);
+    FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump 2 all custom 1 f.vtk id\n",
+                   "already written by dump 1", 2);
     CHECK_ERROR("dump 1 all vtk 1 f.vtk\n", "needs a simulation box", 1);
 }
 
@@ -416,6 +496,8 @@ int main(int argc, char **argv)
     RUN(custom_text);
     RUN(custom_formats);
     RUN(append_scheme);
+    RUN(first_and_append);
+    RUN(write_dump);
     RUN(vtk_files);
     RUN(write_failures);
     RUN(errors);

@@ -9,6 +9,7 @@
 #include "command.h"
 #include "output.h"
 #include "thermo.h"
+#include "variable.h"
 
 static struct gravel *make(void)
 {
@@ -131,6 +132,10 @@ TEST(all_keywords)
     double v;
     CHECK(thermo_keyword_value(g, "elapsed", &v) && v == 50);
     CHECK(thermo_keyword_value(g, "cpu", &v) && v >= 0);
+    g->laststep = 200;
+    output_state(g)->wall0 = output_wall() - 2.0; /* 2 s for 50 steps: 50 left = 2 s */
+    CHECK(thermo_keyword_value(g, "cpuremain", &v));
+    CHECK_NEAR(v, 2.0, 0.2);
     fx_destroy(g);
 }
 
@@ -160,6 +165,10 @@ TEST(format_precedence)
     CHECK(fx_call(g, cmd_thermo_modify, 3, a2) == 0);
     CHECK(fx_call(g, do_init, 0, NULL) == 1);
     CHECK(strstr(g->err.msg, "column 2 (atoms, an integer)") != NULL);
+    char *a3[] = {"format", "line", "%d %d %g"};
+    CHECK(fx_call(g, cmd_thermo_modify, 3, a3) == 0);
+    CHECK(fx_call(g, do_init, 0, NULL) == 1);
+    CHECK(strstr(g->err.msg, "fewer words than the 4 columns") != NULL);
     fx_destroy(g);
 }
 
@@ -211,6 +220,23 @@ TEST(keyword_values)
     CHECK(thermo_keyword_value(g, "lz", &v) && v == 10);
     CHECK(thermo_keyword_value(g, "zhi", &v) && v == 10);
     CHECK(thermo_keyword_value(g, "pe", &v) && v == 0);
+    CHECK(thermo_keyword_value(g, "epair", &v) && v == 0);
+    CHECK(thermo_keyword_value(g, "emol", &v) && v == 0);
+    /* temp = 2 KE / (dof kB), dof = 3N - 3 = 6, KE = 0.96; intensive */
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 0.32, 1e-15);
+    g->dom.units = UNITS_SI;
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 0.32 / 1.380649e-23, 1e-15 / 1.380649e-23);
+    g->dom.units = UNITS_LJ;
+    /* compute_modify thermo_temp extra/dof 0: dof = 9 */
+    CHECK(test_script(g, "compute_modify thermo_temp dynamic/dof yes extra/dof 0\n") == GR_OK);
+    CHECK(thermo_keyword_value(g, "temp", &v));
+    CHECK_NEAR(v, 2 * 0.96 / 9, 1e-15);
+    CHECK(test_script(g, "compute_modify thermo_temp extra/dof 9\n") == GR_OK);
+    CHECK(thermo_keyword_value(g, "temp", &v) && v == 0.0);
+    CHECK(thermo_keyword_value(g, "ke", &v) && v == 0.0); /* as LAMMPS: no dof, no ke */
+    CHECK(test_script(g, "compute_modify thermo_temp extra/dof 3\n") == GR_OK);
     CHECK(thermo_keyword_value(g, "etotal", &v));
     CHECK_NEAR(v, 0.32, 1e-15);
     CHECK(test_script(g, "compute k all ke\ncompute c all count/type atom\n") == GR_OK);
@@ -218,8 +244,17 @@ TEST(keyword_values)
     CHECK_NEAR(v, 0.32, 1e-15); /* extensive: normalized with norm yes */
     CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 1.0);
     CHECK(!thermo_keyword_value(g, "c_nope", &v));
+    /* LAMMPS' implicit computes */
+    CHECK(thermo_keyword_value(g, "c_thermo_temp", &v));
+    CHECK_NEAR(v, 0.32, 1e-15);
+    CHECK(thermo_keyword_value(g, "c_thermo_pe", &v) && v == 0.0);
+    CHECK(test_script(g, "thermo_style custom step c_thermo_temp c_thermo_pe\n") == GR_OK);
+    CHECK(fx_call(g, do_init, 0, NULL) == 0);
+    CHECK(strcmp(thermo_header_text(g), "Step c_thermo_temp c_thermo_pe \n") == 0);
+    CHECK(strcmp(thermo_line_text(g), "      42         0.32            0 \n") == 0);
     CHECK(!thermo_keyword_value(g, "bogus", &v));
-    g->thermo.norm = 0;
+    CHECK(test_script(g, "thermo_modify norm no\n") == GR_OK);
+    gr_unit_defaults(g); /* a later `units lj` does not undo the user's choice */
     CHECK(thermo_keyword_value(g, "c_k", &v));
     CHECK_NEAR(v, 0.96, 1e-15);
     CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 3.0);
@@ -236,6 +271,7 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom f_1\n", "fix references", 1);
+    FX_CHECK_ERROR("thermo_style custom step press\n", "no virial", 1);
     FX_CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
     FX_CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
     FX_CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
@@ -247,6 +283,11 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_modify norm perhaps\n", "expected yes or no", 1);
     FX_CHECK_ERROR("thermo_modify temp t\n", "not supported", 1);
     FX_CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp dynamic/dof maybe\n", "yes or no", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp extra/dof x\n", "expected a number", 1);
+    FX_CHECK_ERROR("compute_modify thermo_temp bias yes\n", "unknown keyword 'bias'", 1);
+    FX_CHECK_ERROR("compute k all ke\ncompute_modify k extra/dof 1\n", "no settings", 2);
+    FX_CHECK_ERROR("compute_modify nope extra/dof 1\n", "unknown compute ID 'nope'", 1);
 
     /* references are resolved at run setup */
     struct gravel *g = make3();
@@ -295,7 +336,7 @@ TEST(schedule_and_footer)
     }
     struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 2.0, .t_pair = 1.0,
                            .t_neigh = 0.25, .t_modify = 0.25, .t_output = 0.25,
-                           .nbuilds = 3, .ndanger = 0, .total_neighbors = 6,
+                           .nbuilds = 3, .ndanger = 0, .total_neighbors = 12,
                            .max_overlap_frac = 0.0125};
     output_finish(g, &st);
     char *out = fx_capture_end(g, &cap);
@@ -352,7 +393,7 @@ TEST(schedule_and_footer)
     struct run_stats chute = {.nsteps = 100, .natoms = 32000, .t_total = 0.222894,
                               .t_pair = 0.12176, .t_neigh = 0.025657, .t_output = 0.00020322,
                               .t_modify = 0.051746, .t_other = 0.01368, .nbuilds = 2,
-                              .total_neighbors = 115133};
+                              .total_neighbors = 2 * 115133};
     g->dt = 0.0001;
     output_finish(g, &chute);
     out = fx_capture_end(g, &cap);
@@ -367,6 +408,14 @@ TEST(schedule_and_footer)
     CHECK(out && strstr(out, "Neighs:        115133.0 ave      115133 max      115133 min\n"));
     CHECK(out && strstr(out, "Total # of neighbors = 115133\nAve neighs/atom = 3.5979062\n"
                              "Neighbor list builds = 2\nDangerous builds = 0\n"));
+    free(out);
+
+    /* run ... post no: only the loop line, as lmp */
+    fx_capture_begin(g, &cap);
+    output_finish_brief(g, &chute);
+    out = fx_capture_end(g, &cap);
+    CHECK(out && strcmp(out, "Loop time of 0.222894 on 1 procs for 100 steps with 32000 atoms\n"
+                             "\n") == 0);
     free(out);
 
     /* Performance in si units: simulated seconds per day, Matom-step/s */
@@ -400,8 +449,10 @@ TEST(progress_line)
     CHECK(fx_call(g, do_setup, 0, NULL) == 0);
     for (bigint s = 1; s <= 10; s++) {
         g->step = s;
-        if (s == 5)
+        if (s == 5) {
             output_state(g)->prog_last_wall = 0; /* force a redraw now */
+            CHECK(output_due(g, s) == 1);         /* progress alone makes it due */
+        }
         output_step(g);
     }
     struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 1.0};
@@ -445,6 +496,56 @@ TEST(progress_line)
     fx_destroy(g);
 }
 
+/* With the interpreter: v_name columns, `thermo v_name`, quoted format
+ * lines, and thermo keywords / c_ID inside expressions. */
+TEST(with_variables)
+{
+    struct gravel *g = make3();
+    CHECK(test_script(g, "variable twice equal 2*step\n"
+                         "variable every equal step+3\n"
+                         "compute k all ke\n"
+                         "thermo_style custom step v_twice c_k\n"
+                         "thermo_modify format line \"%4d %6.1f %8.3f\"\n"
+                         "thermo v_every\n") == GR_OK);
+    struct fx_capture cap;
+    fx_capture_begin(g, &cap);
+    g->step = g->firststep = 0;
+    g->laststep = 10;
+    CHECK(fx_call(g, do_setup, 0, NULL) == 0);
+    for (bigint s = 1; s <= 10; s++) {
+        g->step = s;
+        output_step(g);
+    }
+    char *out = fx_capture_end(g, &cap);
+    /* lines at 0, 3, 6, 9 (variable) and 10 (last); c_k normalized: 0.32 */
+    const char *want = "Step v_twice c_k \n"
+                       "   0    0.0    0.320 \n"
+                       "   3    6.0    0.320 \n"
+                       "   6   12.0    0.320 \n"
+                       "   9   18.0    0.320 \n"
+                       "  10   20.0    0.320 \n";
+    CHECK(out && strcmp(out, want) == 0);
+    if (out && strcmp(out, want))
+        printf("  got:\n%s", out);
+    free(out);
+    /* a variable that does not advance is an error */
+    CHECK(test_script(g, "variable every delete\nvariable every equal 2\n") == GR_OK);
+    g->step = g->firststep = 10;
+    g->laststep = 20;
+    fx_capture_begin(g, &cap);
+    CHECK(fx_call(g, do_setup, 0, NULL) == 1);
+    CHECK(strstr(g->err.msg, "variable 'every' returned 2, which is not a step after 10") !=
+          NULL);
+    free(fx_capture_end(g, &cap));
+    /* expressions see thermo keywords and computes, normalized like thermo */
+    CHECK(test_script(g, "variable e equal ke*atoms+vol+c_k\n") == GR_OK);
+    CHECK_NEAR(var_compute_equal(g, "e"), 0.96 + 1000 + 0.32, 1e-12);
+    CHECK(test_script(g, "compute r all reduce sum vx vy\nvariable r equal c_r[1]\n") ==
+          GR_OK);
+    CHECK_NEAR(var_compute_equal(g, "r"), 0.8, 1e-15); /* 2.4 / 3 atoms */
+    fx_destroy(g);
+}
+
 int main(void)
 {
     RUN(chute_layout);
@@ -457,5 +558,6 @@ int main(void)
     RUN(errors);
     RUN(schedule_and_footer);
     RUN(progress_line);
+    RUN(with_variables);
     return 0;
 }

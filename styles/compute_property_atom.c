@@ -1,0 +1,99 @@
+/* compute_property_atom.c - `compute ID group property/atom attr1 attr2 ...`:
+ * per-atom attributes as a compute, as LAMMPS' compute property/atom, for
+ * compute reduce and dump custom. One attribute gives a per-atom vector
+ * (c_ID), several a per-atom array (c_ID[N] = attribute N). Atoms outside
+ * the group get 0. Attributes: id type mass x y z xu yu zu ix iy iz vx vy vz
+ * fx fy fz radius diameter omegax omegay omegaz tqx tqy tqz. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "compute.h"
+#include "error.h"
+
+enum attr {
+    A_ID, A_TYPE, A_MASS, A_X, A_Y, A_Z, A_XU, A_YU, A_ZU, A_IX, A_IY, A_IZ, A_VX, A_VY, A_VZ,
+    A_FX, A_FY, A_FZ, A_RADIUS, A_DIAMETER, A_OMEGAX, A_OMEGAY, A_OMEGAZ, A_TQX, A_TQY, A_TQZ,
+    A_COUNT
+};
+
+static const char *const attr_names[A_COUNT] = {
+    "id", "type", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz",
+    "fx", "fy", "fz", "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+
+struct property {
+    int n;
+    int *attr;
+};
+
+static void property_destroy(struct compute *c)
+{
+    struct property *p = c->data;
+    if (p)
+        free(p->attr);
+    free(p);
+    c->data = NULL;
+}
+
+static void property_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "compute property/atom needs at least one attribute");
+    struct property *p = gr_calloc(g, 1, sizeof *p);
+    c->data = p;
+    p->attr = gr_calloc(g, (size_t)argc, sizeof *p->attr);
+    for (int k = 0; k < argc; k++) {
+        int a = -1;
+        for (int j = 0; j < A_COUNT; j++)
+            if (strcmp(argv[k], attr_names[j]) == 0)
+                a = j;
+        if (a < 0)
+            gr_error(g, "compute property/atom: unknown attribute '%.64s' (id type mass x y z xu "
+                        "yu zu ix iy iz vx vy vz fx fy fz radius diameter omegax omegay omegaz "
+                        "tqx tqy tqz)", argv[k]);
+        p->attr[p->n++] = a;
+    }
+    c->peratom_flag = 1;
+    c->size_peratom_cols = p->n == 1 ? 0 : p->n;
+}
+
+static double attr_value(const struct gravel *g, int a, int i)
+{
+    const struct atoms *at = &g->atoms;
+    switch ((enum attr)a) {
+    case A_ID: return (double)at->tag[i];
+    case A_TYPE: return at->type[i];
+    case A_MASS: return at->rmass[i];
+    case A_X: case A_Y: case A_Z: return at->x[3 * i + a - A_X];
+    case A_XU: case A_YU: case A_ZU: {
+        int d = a - A_XU;
+        return at->x[3 * i + d] + at->image[3 * i + d] * (g->dom.hi[d] - g->dom.lo[d]);
+    }
+    case A_IX: case A_IY: case A_IZ: return at->image[3 * i + a - A_IX];
+    case A_VX: case A_VY: case A_VZ: return at->v[3 * i + a - A_VX];
+    case A_FX: case A_FY: case A_FZ: return at->f[3 * i + a - A_FX];
+    case A_RADIUS: return at->radius[i];
+    case A_DIAMETER: return 2.0 * at->radius[i];
+    case A_OMEGAX: case A_OMEGAY: case A_OMEGAZ: return at->omega[3 * i + a - A_OMEGAX];
+    case A_TQX: case A_TQY: case A_TQZ: return at->torque[3 * i + a - A_TQX];
+    case A_COUNT: break;
+    }
+    return 0.0;
+}
+
+static void property_peratom(struct gravel *g, struct compute *c)
+{
+    const struct property *p = c->data;
+    const struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++) {
+        int in = (a->mask[i] & c->groupbit) != 0;
+        for (int k = 0; k < p->n; k++)
+            c->peratom[(size_t)i * p->n + k] = in ? attr_value(g, p->attr[k], i) : 0.0;
+    }
+}
+
+const struct compute_style compute_style_property_atom = {
+    .name = "property/atom",
+    .create = property_create,
+    .peratom = property_peratom,
+    .destroy = property_destroy,
+};

@@ -1,0 +1,35 @@
+#!/bin/sh
+# fuzz_replay.sh - run every committed fuzz corpus file (tests/fuzz/corpus)
+# through the ASan+UBSan build of gravel in a scratch directory. A file passes
+# when gravel ends by itself (exit 0, 1 for a reported script error, or a quit
+# status other than 86, 87, 124 or >= 128) within 20 s and no sanitizer reports anything. One PASS/FAIL line
+# per file.
+cd "$(dirname "$0")/../.." || exit 1
+root=$(pwd)
+bin="$root/bin/gravel-asan"
+if [ ! -x "$bin" ]; then
+    echo "FAIL fuzz_replay (bin/gravel-asan missing: run make asan)"
+    exit 1
+fi
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}exitcode=86"
+export UBSAN_OPTIONS="halt_on_error=1:exitcode=87"
+[ -f "$root/tests/lsan.supp" ] && export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp"
+for f in "$root"/tests/fuzz/corpus/*; do
+    [ -f "$f" ] || continue
+    name=$(basename "$f")
+    dir="$scratch/$name"
+    mkdir -p "$dir"
+    (cd "$dir" && timeout 20 "$bin" -in "$f" -log none -screen none > out.txt 2> err.txt)
+    rc=$?
+    if grep -q -e 'Sanitizer' -e 'runtime error' "$dir/err.txt"; then
+        echo "FAIL fuzz_replay $name (sanitizer report)"
+        head -20 "$dir/err.txt"
+    elif [ $rc -eq 124 ] || [ $rc -eq 86 ] || [ $rc -eq 87 ] || [ $rc -ge 128 ]; then
+        echo "FAIL fuzz_replay $name (exit $rc)"
+        head -20 "$dir/err.txt"
+    else
+        echo "PASS fuzz_replay $name"
+    fi
+done
