@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay reproduce-agglomeration
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -92,6 +92,12 @@ fuzz: bin/fuzz_input
 	    -dict=$(CURDIR)/tests/fuzz/gravel.dict $(CURDIR)/build/fuzz/corpus $(CURDIR)/tests/fuzz/corpus
 fuzz-replay: bin/gravel-asan
 	@sh tests/scripts/fuzz_replay.sh
+
+# The agglomeration study of source document 000 chapter 6 (fig. 6.8), see
+# doc/agglomeration.md: about 2 h with the defaults; AGGLO_QUICK=1 for a few minutes.
+reproduce-agglomeration: deps
+	@$(MAKE) --no-print-directory all
+	@sh tools/agglomeration/sweep.sh
 
 clean:
 	rm -rf build bin

@@ -2,7 +2,7 @@
 # deps.sh - make sure the Debian packages gravel builds, runs and tests with are
 # installed. As root it installs what is missing; otherwise it prints the exact
 # apt-get line and fails.
-PKGS="gcc make ocl-icd-opencl-dev opencl-headers pocl-opencl-icd libgsl-dev python3 python3-vtk9 clang"
+PKGS="gcc make ocl-icd-opencl-dev opencl-headers pocl-opencl-icd libgsl-dev python3 python3-vtk9 clang gnuplot-nox"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
