@@ -83,7 +83,7 @@ set logscale x
 set xrange [0.07:14]
 set xtics (0.1, 1, 5, 10)
 set grid
-set key top left
+set key top left Left reverse
 set xlabel 'Stokes number Stk'
 set ylabel 'mean agglomerate size (particles)'
 set title 'mean size'
@@ -119,7 +119,7 @@ def series(logdir, prefix, png, title, tmp):
     lines = ["set terminal %s size 1200,%d" % (terminal(), 300 * len(sys_)),
              "set output '%s'" % png,
              "set multiplot layout %d,2 title \"%s\"" % (len(sys_), title),
-             "set grid", "set key top left", "set xlabel 'time (s)'"]
+             "set grid", "set key top left Left reverse", "set autoscale xfix", "set xlabel 'time (s)'"]
     for sy in sys_:
         rs = sorted(runs[sy])
         for col, lab in ((2, "mean size"), (3, "mean void fraction")):

@@ -11,19 +11,21 @@
 #   AGGLO_QUICK=1  shortened sweep: 5 s per grid point (a few minutes in all)
 #   AGGLO_N        number of particles     (default 1000; 000 table 6.1: 10000)
 #   AGGLO_TEND     simulated s per point   (default 120, quick 5; 000: 600)
-#   AGGLO_NOUT     thermo rows per point   (default 240, quick 60)
-#   AGGLO_OUT      run directory (default build/agglomeration/full or .../quick)
+#   AGGLO_NOUT     thermo rows per point   (default 240, quick 50)
+#   AGGLO_TAG      name of this run in the output names (default full or quick)
+#   AGGLO_OUT      run directory (default build/agglomeration/<tag>)
 #   AGGLO_DOC      where the PNGs and the Markdown table go (default doc)
 # Outputs: $AGGLO_DOC/agglomeration_<tag>.png (fig. 6.8), _<tag>_series.png,
 # _<tag>.md (table); the logs, table.dat and the initial state in the run dir.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ "${AGGLO_QUICK:-0}" = 1 ]; then
-    tag=quick; tend=${AGGLO_TEND:-5}; nout=${AGGLO_NOUT:-60}
+    tag=quick; tend=${AGGLO_TEND:-5}; nout=${AGGLO_NOUT:-50}
 else
     tag=full; tend=${AGGLO_TEND:-120}; nout=${AGGLO_NOUT:-240}
 fi
 n=${AGGLO_N:-1000}
+tag=${AGGLO_TAG:-$tag}
 out=${AGGLO_OUT:-$root/build/agglomeration/$tag}
 doc=${AGGLO_DOC:-$root/doc}
 mkdir -p "$out" "$doc"
