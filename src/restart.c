@@ -1118,9 +1118,14 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     gr_print(g, "Reading restart file %s (written by gravel %s at step %lld)\n  %d atoms, %d "
                 "atom types%s%s\n", path, im->version, (long long)im->step, im->n, im->ntypes,
              im->has_pair ? ", pair style " : "", im->has_pair ? im->pair_name : "");
-    if (im->has_list)
-        gr_print(g, "  %zu neighbor entries with contact history, state of %d fix(es)\n",
-                 im->npartner, im->nfix);
+    if (im->has_list) {
+        size_t nshear = 0;
+        for (size_t k = 0; im->history && k < im->npartner; k++)
+            nshear += im->shear[3 * k] != 0 || im->shear[3 * k + 1] != 0 ||
+                      im->shear[3 * k + 2] != 0;
+        gr_print(g, "  %zu neighbor entries, %zu with contact history; state of %d fix(es)%s\n",
+                 im->npartner, nshear, im->nfix, im->exact ? "; exact continuation data" : "");
+    }
 }
 
 /* ---- resuming at the next run --------------------------------------------------------- */
