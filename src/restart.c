@@ -328,14 +328,14 @@ static int device_matches_host(struct gravel *g)
     return same;
 }
 
+static void write_fixes(struct gravel *g, struct wbuf *w, int ndev);
+
 static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
 {
     struct engine *e = g->eng;
     struct nbr_state s;
     if (!e || !e->a.x || !nbr_export(g, &s)) {
-        size_t at = sect_begin(g, w, S_FIXES);
-        put_i32(g, w, 0);
-        sect_end(w, at);
+        write_fixes(g, w, 0);
         return;
     }
     int n = s.n;
@@ -362,8 +362,15 @@ static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
     sect_end(w, at);
     nbr_state_free(&s);
     free(devtag);
+    write_fixes(g, w, n);
+}
 
-    at = sect_begin(g, w, S_FIXES);
+/* Fixes: ID, style, global state (write_restart hook) and, with a list of
+ * ndev atoms written, the engine-managed per-atom state in device order. */
+static void write_fixes(struct gravel *g, struct wbuf *w, int ndev)
+{
+    struct engine *e = g->eng;
+    size_t at = sect_begin(g, w, S_FIXES);
     put_i32(g, w, g->styles.nfix);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
@@ -379,9 +386,9 @@ static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
             if (got != len)
                 gr_error(g, "fix %s: restart state size changed while writing", f->id);
         }
-        int rows = f->peratom && f->peratom_bytes ? n : 0;
+        int rows = ndev && f->peratom && f->peratom_bytes ? ndev : 0;
         put_u32(g, w, rows ? (uint32_t)f->peratom_bytes : 0);
-        put_u32(g, w, (uint32_t)e->rsz);
+        put_u32(g, w, e ? (uint32_t)e->rsz : 0);
         put_i32(g, w, rows);
         if (rows) {
             size_t bytes = (size_t)rows * f->peratom_bytes;
