@@ -11,6 +11,9 @@ under another ID (its history and time origin not restored) diverges, and a
 changed neighbor skin takes the LAMMPS path (rebuild, history by tag) which
 stays close but not identical.
 
+The same exactness holds for hertz/mindlin (rolling), fix wall/pair and fix
+drag update exact.
+
 Errors: missing file, garbage, truncation at several offsets, a flipped
 payload byte (checksum), another format version, the other byte order, a
 directory; each exits 1 with a clear message. A write that fails midway (file
@@ -51,6 +54,27 @@ FIXES = """fix             1 all nve/sphere
 fix             2 all gravity 1.0 vector 0 0 -1
 fix             3 all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.4 1 zplane 0.0 NULL wiggle z 0.05 0.3
 thermo          50
+"""
+HM_BASE = """units           lj
+atom_style      sphere
+boundary        p p f
+region          box block 0 6.283185307179586 0 6.283185307179586 0 6
+create_box      1 box
+lattice         sc 1.0 origin 0.5 0.5 0.5
+region          fill block 0 6 0 6 0 3 units box
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1.0
+velocity        all create 2.0 4928 loop geom
+velocity        all set 3.0 2.0 NULL sum yes units box
+pair_style      hertz/mindlin 50000 0.3 0.8 0.5 rolling 0.1
+pair_coeff      * *
+neighbor        0.2 bin
+timestep        0.0005
+"""
+HM_FIXES = """fix             1 all nve/sphere
+fix             2 all gravity 1.0 vector 0 0 -1
+fix             3 all wall/pair zplane 0.0 NULL
+fix             4 all drag 0.05 taylor_green 1.0 1.0 update exact
 """
 DUMP = ("write_dump all custom {f} id x y z vx vy vz omegax omegay omegaz "
         "modify sort id format float %.17g\n")
@@ -183,6 +207,20 @@ def run_all(tmp):
           got == want, out[-800:] if rc else "max |diff| %g" % maxdiff(got, want or []))
     check("fallback_close_to_reference", got and maxdiff(got, ref) < 0.1,
           "max |diff| %g" % (maxdiff(got, ref) if got else -1))
+
+    # the same guarantee for the other styles with state: hertz/mindlin with
+    # rolling resistance (history), fix wall/pair and fix drag (per-atom state)
+    hm = HM_BASE + HM_FIXES
+    rc, out = gravel(tmp, hm + "run %d\n" % (2 * N) + DUMP.format(f="hm_ref.dump"), "in.hm_ref")
+    rc2, out2 = gravel(tmp, hm + "run %d\nwrite_restart hm.rst\n" % N, "in.hm_half")
+    rc3, out3 = gravel(tmp, "read_restart hm.rst\n" + HM_FIXES + "run %d\n" % N +
+                       DUMP.format(f="hm_cont.dump"), "in.hm_cont")
+    m = re.search(r"(\d+) neighbor entries, (\d+) with contact history", out3)
+    ok = rc == rc2 == rc3 == 0 and m and int(m.group(2)) > 0
+    got = dump_rows(os.path.join(tmp, "hm_cont.dump")) if ok else []
+    want = dump_rows(os.path.join(tmp, "hm_ref.dump")) if ok else None
+    check("exact_hertz_mindlin_wall_pair_drag", ok and got == want,
+          (out + out2 + out3)[-1500:] if not ok else "max |diff| %g" % maxdiff(got, want))
 
     # ---- error cases ----
     good = open(os.path.join(tmp, "half.%d" % N), "rb").read()
