@@ -1079,6 +1079,8 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
 
     /* apply: nothing below can fail on the file's content */
     g->dom = im->dom;
+    if (!g->thermo.norm_set) /* as the units command: thermo normalization follows units */
+        g->thermo.norm = g->dom.units == UNITS_LJ;
     g->neigh = im->neigh;
     g->groups = im->groups;
     g->step = im->step;
@@ -1152,6 +1154,17 @@ static int find_idx(const struct tagidx *map, int n, int64_t tag)
     return hit ? hit->idx : -1;
 }
 
+/* Field by field (a struct copy may leave padding bytes different). */
+static int neigh_equal(const struct neigh_settings *a, const struct neigh_settings *b)
+{
+    return a->skin == b->skin && a->style_bin == b->style_bin && a->every == b->every &&
+           a->delay == b->delay && a->check == b->check && a->once == b->once &&
+           a->one == b->one && a->page == b->page && a->nexclude == b->nexclude &&
+           a->nexclude_type == b->nexclude_type &&
+           !memcmp(a->exclude_group, b->exclude_group, sizeof a->exclude_group) &&
+           !memcmp(a->exclude_type, b->exclude_type, sizeof a->exclude_type);
+}
+
 int restart_resume(struct gravel *g)
 {
     struct restart *r = g->restart;
@@ -1174,7 +1187,7 @@ int restart_resume(struct gravel *g)
 
     int exact = im->has_list && im->exact && n == im->n &&
                 atoms_fingerprint(g) == im->atoms_hash &&
-                !memcmp(&g->neigh, &im->neigh, sizeof g->neigh) &&
+                neigh_equal(&g->neigh, &im->neigh) &&
                 !memcmp(g->dom.lo, im->dom.lo, sizeof g->dom.lo) &&
                 !memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi) &&
                 e->single == im->single;
