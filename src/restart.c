@@ -27,6 +27,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -673,7 +674,8 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
         im->dt_set = get_i32(r);
         im->single = get_i32(r);
         im->seed_counter = get_u64(r);
-        if (!r->bad && (im->step < 0 || !(im->dt > 0) || im->dt != im->dt))
+        if (!r->bad && (im->step < 0 || !(im->dt > 0) || !isfinite(im->dt) ||
+                        !isfinite(im->time)))
             BAD("invalid step %lld or time step %g", (long long)im->step, im->dt);
         break;
     case S_DOMAIN: {
@@ -714,7 +716,8 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
                     BAD("invalid boundary flag in dimension %c", "xyz"[q]);
             if ((d->periodic[q] != 0) != (d->bnd[q][0] == 'p'))
                 BAD("inconsistent periodic flag in dimension %c", "xyz"[q]);
-            if (!(d->lo[q] < d->hi[q]))
+            if (!(d->lo[q] < d->hi[q]) || !isfinite(d->lo[q]) || !isfinite(d->hi[q]) ||
+                !isfinite(d->minlo[q]) || !isfinite(d->minhi[q]) || !isfinite(d->small[q]))
                 BAD("invalid box bounds %g %g in dimension %c", d->lo[q], d->hi[q], "xyz"[q]);
         }
         d->box_exists = 1;
@@ -732,7 +735,7 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
                 ns->exclude_group[k][s] = get_i32(r);
                 ns->exclude_type[k][s] = get_i32(r);
             }
-        if (!r->bad && (!(ns->skin >= 0) || ns->every < 1 || ns->delay < 0 ||
+        if (!r->bad && (!(ns->skin >= 0) || !isfinite(ns->skin) || ns->every < 1 || ns->delay < 0 ||
                         ns->nexclude < 0 || ns->nexclude > 16 || ns->nexclude_type < 0 ||
                         ns->nexclude_type > 16))
             BAD("invalid neighbor settings");
@@ -805,7 +808,9 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
         im->fingerprint = get_u64(r);
         if (r->bad)
             break;
-        if (im->ndev < 0 || im->maxn < 0 || im->ago < 0)
+        /* a list never holds more slots per atom than atoms (+ its growth margin) */
+        if (im->ndev < 0 || im->maxn < 0 || im->ago < 0 ||
+            (int64_t)im->maxn > 64 + 2 * (int64_t)im->ndev)
             BAD("invalid neighbor list header");
         size_t n = (size_t)im->ndev;
         im->devtag = get_array(r, n, sizeof(int64_t));
