@@ -49,6 +49,8 @@ struct pair {
 };
 
 void pair_free(struct gravel *g);
+/* The registered style with this name, or NULL (restart.c). */
+const struct pair_style *pair_style_find(const char *name);
 
 /* Shared by the three gran styles (pair_gran_common.c in styles/):
  * `Kn Kt gamman gammat xmu dampflag [limit_damping]` with LAMMPS defaults. */
