@@ -18,6 +18,7 @@
 
 #include "atoms.h"
 #include "error.h"
+#include "group.h"
 #include "output.h"
 #include "run.h"
 #include "variable.h"
@@ -72,15 +73,15 @@ static void enter(struct ep *e)
 
 /* ---- group and atom functions ---------------------------------------------- */
 
-static int group_bit(struct ep *e, const char *name)
+static int group_index(struct ep *e, const char *name)
 {
-    struct gravel *g = e->g;
-    for (int i = 0; i < GR_MAXGROUP; i++)
-        if (g->groups.used[i] && strcmp(g->groups.name[i], name) == 0)
-            return i;
-    char msg[160];
-    snprintf(msg, sizeof msg, "unknown group '%.64s'", name);
-    ep_fail(e, msg);
+    int i = group_find(e->g, name);
+    if (i < 0) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "unknown group '%.64s'", name);
+        ep_fail(e, msg);
+    }
+    return i;
 }
 
 static int dim_index(struct ep *e, const char *s)
@@ -96,6 +97,7 @@ static int dim_index(struct ep *e, const char *s)
     ep_fail(e, msg);
 }
 
+/* Per-atom mass: rmass, or the per-type mass where rmass is unset. */
 static double atom_mass(const struct atoms *a, int i)
 {
     if (a->rmass && a->rmass[i] > 0)
@@ -105,7 +107,8 @@ static double atom_mass(const struct atoms *a, int i)
     return 0;
 }
 
-/* count(group), mass(group), xcm(group,dim), vcm(group,dim), bound(group,dir). */
+/* count(group), mass(group), xcm(group,dim), vcm(group,dim), bound(group,dir):
+ * the reductions of group.c on the host arrays (synced first during a run). */
 static double group_function(struct ep *e, const char *fn, int nargs, char args[][GR_NAMELEN])
 {
     struct gravel *g = e->g;
@@ -116,40 +119,20 @@ static double group_function(struct ep *e, const char *fn, int nargs, char args[
                  want == 1 ? "" : "s", nargs);
         ep_fail(e, msg);
     }
-    unsigned bit = 1u << group_bit(e, args[0]);
+    int igroup = group_index(e, args[0]);
     run_sync_host(g);
-    const struct atoms *a = &g->atoms;
-    if (strcmp(fn, "count") == 0) {
-        double n = 0;
-        for (int i = 0; i < a->n; i++)
-            n += (a->mask[i] & bit) != 0;
-        return n;
-    }
-    if (strcmp(fn, "mass") == 0) {
-        double m = 0;
-        for (int i = 0; i < a->n; i++)
-            if (a->mask[i] & bit)
-                m += atom_mass(a, i);
-        return m;
-    }
+    if (strcmp(fn, "count") == 0)
+        return (double)group_count(g, igroup);
+    if (strcmp(fn, "mass") == 0)
+        return group_mass(g, igroup);
     if (strcmp(fn, "xcm") == 0 || strcmp(fn, "vcm") == 0) {
         int d = dim_index(e, args[1]);
-        int pos = fn[0] == 'x';
-        double prd = g->dom.hi[d] - g->dom.lo[d];
-        double m = 0, s = 0;
-        for (int i = 0; i < a->n; i++) {
-            if (!(a->mask[i] & bit))
-                continue;
-            double mi = atom_mass(a, i);
-            double val;
-            if (pos) /* unwrapped through periodic images, as LAMMPS' unmap */
-                val = a->x[3 * i + d] + (g->dom.periodic[d] ? a->image[3 * i + d] * prd : 0);
-            else
-                val = a->v[3 * i + d];
-            m += mi;
-            s += mi * val;
-        }
-        return m > 0 ? s / m : 0.0;
+        double c[3];
+        if (fn[0] == 'x') /* unwrapped through periodic images, as LAMMPS' unmap */
+            group_xcm(g, igroup, group_mass(g, igroup), c);
+        else
+            group_vcm(g, igroup, group_mass(g, igroup), c);
+        return c[d];
     }
     if (strcmp(fn, "bound") == 0) {
         static const char *dirs[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
@@ -164,15 +147,12 @@ static double group_function(struct ep *e, const char *fn, int nargs, char args[
                      args[1]);
             ep_fail(e, msg);
         }
-        int d = k / 2, mx = k % 2;
-        double v = mx ? -BIG : BIG; /* empty group: LAMMPS' BIG sentinels */
-        for (int i = 0; i < a->n; i++)
-            if (a->mask[i] & bit) {
-                double x = a->x[3 * i + d];
-                if (mx ? x > v : x < v)
-                    v = x;
-            }
-        return v;
+        double lo[3], hi[3];
+        group_bounds(g, igroup, lo, hi);
+        int d = k / 2;
+        if (lo[d] > hi[d]) /* empty group: LAMMPS' BIG sentinels */
+            return k % 2 ? -BIG : BIG;
+        return k % 2 ? hi[d] : lo[d];
     }
     ep_fail(e, "internal: unknown group function");
 }

@@ -1,0 +1,62 @@
+/* pair_hertz_mindlin.cl - Hertz-Mindlin contact with Tsuji-type damping
+ * (source document 003 sec. 4.3-4.5; host side styles/pair_hertz_mindlin.c).
+ *
+ * n = del / r (from j to i), delta = radsum - r, R* = reff, m* = meff,
+ * a = sqrt(R* delta), vr_n = vr.n, v_t = contact-point relative velocity:
+ *   F_n = kn a delta - cd sqrt(1.5 kn a m*) vr_n          (kn = 4/3 E*,
+ *                                   S_n = 2 E* a = 1.5 kn a, cd = 2 sqrt(5/6) beta)
+ *   s  += v_t dt (not during setup), projected onto the tangent plane
+ *   F_t = -(kt a) s - cd sqrt(kt a m*) v_t,  rescaled to mu |F_n| when larger
+ *         (s reset consistently, as LAMMPS gran/hertz/history does)
+ *   torque_i = -radi n x F_t  - mu_r R* |F_n| w/|w|,  w = omega_i - omega_j
+ * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
+ * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
+
+static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
+                                      REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+{
+    const REAL kn = param[0], kt = param[1], cd = param[2], mu = param[3], mur = param[4];
+    const REAL r = sqrt(c->rsq);
+    const REAL3 n = c->del * ((REAL)1 / r);
+    const REAL delta = c->radsum - r;
+    const REAL a = sqrt(c->reff * delta);
+    const REAL meff = c->meff;
+
+    const REAL vn = dot(c->vr, n);
+    const REAL fnmag = kn * a * delta - cd * sqrt((REAL)1.5 * kn * a * meff) * vn;
+
+    const REAL3 w = c->radi * c->omi + c->radj * c->omj;
+    const REAL3 vt = c->vr - vn * n + cross(n, w);
+
+    REAL3 s = *shear;
+    if (c->shearupdate)
+        s += vt * c->dt;
+    s -= dot(s, n) * n;     /* keep the spring in the current tangent plane */
+
+    const REAL st = kt * a;
+    const REAL dt_coef = cd * sqrt(st * meff);
+    REAL3 ft = -st * s - dt_coef * vt;
+    const REAL ftmag = length(ft);
+    const REAL flim = mu * fabs(fnmag);
+    if (ftmag > flim) {
+        if (st > (REAL)0) {
+            /* sliding: F_t = flim ft/|ft|, spring length consistent with it */
+            ft *= flim / ftmag;
+            s = -(ft + dt_coef * vt) / st;
+        } else {
+            ft = (REAL3)(0);
+        }
+    }
+    if (c->shearupdate)
+        *shear = s;
+    *force_i = fnmag * n + ft;
+
+    REAL3 tq = -c->radi * cross(n, ft);
+    if (mur > (REAL)0) {
+        const REAL3 wrel = c->omi - c->omj;
+        const REAL wmag = length(wrel);
+        if (wmag > (REAL)0)
+            tq -= (mur * c->reff * fabs(fnmag) / wmag) * wrel;
+    }
+    *torque_i = tq;
+}

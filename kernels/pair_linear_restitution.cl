@@ -1,0 +1,51 @@
+/* pair_linear_restitution.cl - linear spring-dashpot with restitution-derived
+ * damping and the "complex" friction model (Andrews 2018, source document 000,
+ * eq. 2.1, 2.2, 2.4, 2.5, 2.14, 2.15, 2.17 and sec. 3.2.2). No history.
+ *
+ * With n = del / r (from j to i), delta = radsum - r, u_n = (vr.n) n,
+ * u_t = vr - u_n (minus the rotational contact velocity when torque is on):
+ *   eta   = ceta sqrt(m*),  t_col = ctcol sqrt(m*)     (host-precomputed)
+ *   F_n   = (ke delta - eta vr.n) n                    [force units]
+ *   F_t   = -u_t/|u_t| min(kf |u_t| t_col, mu |F_n|)
+ * The normal force is not clamped at zero: the analytic solution of 000 A.1
+ * (and the restitution it returns) includes the attractive end of the dashpot.
+ * Torque on i (torque yes): -radi (n x F_t). Param layout LR_*: ke kf mu ceta
+ * ctcol torque. Antisymmetric under i <-> j: del, vr, u_t and F_t flip sign,
+ * magnitudes are formed from sign-symmetric products. */
+
+static inline void linear_restitution_eval(const struct contact *c,
+                                           __global const REAL *param, REAL3 *shear,
+                                           REAL3 *force_i, REAL3 *torque_i)
+{
+    (void)shear;
+    const REAL ke = param[0], kf = param[1], mu = param[2];
+    const REAL ceta = param[3], ctcol = param[4], torque = param[5];
+    const REAL r = sqrt(c->rsq);
+    const REAL rinv = (REAL)1 / r;
+    const REAL3 n = c->del * rinv;
+    const REAL delta = c->radsum - r;
+    const REAL sm = sqrt(c->meff);
+    const REAL eta = ceta * sm;
+    const REAL tcol = ctcol * sm;
+
+    const REAL vn = dot(c->vr, n);
+    const REAL fnmag = ke * delta - eta * vn;
+    REAL3 ut = c->vr - vn * n;
+    if (torque != (REAL)0) {
+        /* relative velocity of the contact points: + n x (radi omi + radj omj) */
+        const REAL3 w = c->radi * c->omi + c->radj * c->omj;
+        ut += cross(n, w);
+    }
+    const REAL utmag = length(ut);
+    REAL3 ft = (REAL3)(0);
+    if (utmag > (REAL)0) {
+        const REAL fstatic = kf * utmag * tcol;
+        const REAL fdyn = mu * fabs(fnmag);
+        ft = -(fmin(fstatic, fdyn) / utmag) * ut;
+    }
+    *force_i = fnmag * n + ft;
+    if (torque != (REAL)0)
+        *torque_i = -c->radi * cross(n, ft);
+    else
+        *torque_i = (REAL3)(0);
+}
