@@ -198,6 +198,38 @@ if os.path.exists(greal) and os.path.exists(lreal):
 else:
     check("gravel_vs_lammps_reference", False, "committed references missing")
 
+# the multi-line layout (thermo_style multi / thermo_modify line multi, as
+# LAMMPS 2021 prints it), a one-line run after it, a WARNING between blocks
+MULTI = """---------------- Step        0 ----- CPU =      0.0000 (sec) ----------------
+TotEng   =         1.3500 KinEng   =         1.3500 Temp     =         1.0000
+PotEng   =         0.0000 E_bond   =         0.0000 E_angle  =         0.0000
+WARNING: something = odd (src/x.cpp:1)
+---------------- Step       50 ----- CPU =      0.0001 (sec) ----------------
+TotEng   =         1.2478 KinEng   =         1.2478 Temp     =         0.9243
+PotEng   =         0.0000 E_bond   =         0.0000 E_angle  =         0.0000
+Loop time of 9.2687e-05 on 1 procs for 50 steps with 10 atoms
+---------------- Step       50 ----- CPU =      0.0000 (sec) ----------------
+Step     =             50 KinEng   =         1.2478
+---------------- Step      100 ----- CPU =      0.0001 (sec) ----------------
+Step     =            100 KinEng   =         1.2098
+Loop time of 9.2687e-05 on 1 procs for 50 steps with 10 atoms
+Step KinEng
+ 100 1.2098
+ 150 0.8479
+Loop time of 1 on 1 procs for 50 steps with 10 atoms
+"""
+mref = write("multi.log", MULTI)
+write("multi.spec", "column * rel 1e-6\n")
+rc, out = run(write("multi_same.log", MULTI), mref)
+check("multi_layout_runs", rc == 0 and "of 3 run(s)" in out and "Temp" in out, out)
+rc, out = run(write("multi_bad.log", MULTI.replace("KinEng   =         1.2098\nLoop",
+                                                    "KinEng   =         1.2099\nLoop")), mref)
+check("multi_layout_divergence", rc == 1 and "run 2 step 100 column KinEng" in first_line(out),
+      out)
+rc, out = run(write("multi_bad2.log", MULTI.replace("Temp     =         0.9243",
+                                                     "Temp     =         0.9244")), mref)
+check("multi_layout_first_run", rc == 1 and "run 1 step 50 column Temp" in first_line(out), out)
+
 # per-step rules: the last column line covering a step wins
 sspec = write("s.spec", "column * rel 0\ncolumn B rel 0.5 steps 1\n")
 rc, _ = run(write("s1.log", "Step A B\n 0 1 4\n 1 2 11\nLoop time of 1\n"), bref, sspec)
