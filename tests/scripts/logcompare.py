@@ -230,6 +230,10 @@ rc, out = run(write("multi_bad2.log", MULTI.replace("Temp     =         0.9243",
                                                      "Temp     =         0.9244")), mref)
 check("multi_layout_first_run", rc == 1 and "run 1 step 50 column Temp" in first_line(out), out)
 
+# a global `steps` list may name steps of different runs
+rc, out = run(write("same2.log", GRAVEL), ref, write("st.spec", SPEC + "steps 100 300\n"))
+check("steps_across_runs", rc == 0 and "2 rows of 2 run(s)" in out, out)
+
 # per-step rules: the last column line covering a step wins
 sspec = write("s.spec", "column * rel 0\ncolumn B rel 0.5 steps 1\n")
 rc, _ = run(write("s1.log", "Step A B\n 0 1 4\n 1 2 11\nLoop time of 1\n"), bref, sspec)
