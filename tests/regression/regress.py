@@ -12,11 +12,14 @@ bin/gravel in a temporary copy of its directory; its log is compared with the
 references by tools/logcompare. One line `PASS regress_<case>` or
 `FAIL regress_<case> (...)` per comparison, for tests/run.sh.
 
-Usage: regress.py [--update] [--lammps] [--gravel BIN] [CASE ...] [-- GRAVEL_ARGS]
+Usage: regress.py [--update] [--lammps] [--gravel BIN] [--inputs DIR] [--cases DIR]
+                  [CASE ...] [-- GRAVEL_ARGS]
   --update   rewrite <case>.log from this build (review the diff); a deck
              without a spec gets a starting spec to edit
   --lammps   with --update: also rewrite <case>.lammps.log with `lmp` for the
              cases that have a <case>.lammps.spec
+  --inputs, --cases  other deck and case directories (default inputs/ and
+             tests/regression/; the runner's own tests use these)
   CASE       only these cases (default: every deck in inputs/)
   GRAVEL_ARGS extra gravel options, e.g. -- -device gpu
 Exit status 0 when every case passed (or was updated), 1 otherwise.
@@ -32,7 +35,8 @@ import tempfile
 import time
 
 ROOT = os.path.realpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-HERE = os.path.join(ROOT, "tests", "regression")
+HERE = os.path.join(ROOT, "tests", "regression")   # the cases (--cases)
+INPUTS = os.path.join(ROOT, "inputs")               # the decks (--inputs)
 LOGCOMPARE = os.path.join(ROOT, "tools", "logcompare")
 PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 
@@ -48,12 +52,12 @@ VOLATILE = re.compile(r"^(Performance:|MPI task timing breakdown:|Section \||-{2
 
 def case_name(deck):
     """inputs/examples/settle.in -> examples_settle."""
-    rel = os.path.relpath(deck, os.path.join(ROOT, "inputs"))
+    rel = os.path.relpath(deck, INPUTS)
     return rel[:-3].replace(os.sep, "_")
 
 
 def decks():
-    found = glob.glob(os.path.join(ROOT, "inputs", "**", "*.in"), recursive=True)
+    found = glob.glob(os.path.join(INPUTS, "**", "*.in"), recursive=True)
     return sorted(found, key=case_name)
 
 
@@ -235,6 +239,7 @@ def do_case(deck, update, lammps, gravel, extra):
 
 
 def main(argv):
+    global INPUTS, HERE
     update = lammps = False
     gravel = os.path.join(ROOT, "bin", "gravel")
     names, extra = [], []
@@ -250,6 +255,12 @@ def main(argv):
             lammps = True
         elif a == "--gravel" and i + 1 < len(argv):
             gravel = os.path.abspath(argv[i + 1])
+            i += 1
+        elif a in ("--inputs", "--cases") and i + 1 < len(argv):
+            if a == "--inputs":
+                INPUTS = os.path.abspath(argv[i + 1])
+            else:
+                HERE = os.path.abspath(argv[i + 1])
             i += 1
         elif a in ("-h", "--help"):
             print(__doc__)
