@@ -298,7 +298,6 @@ void eng_upload(struct gravel *g)
         }
     }
     e->active = 1;
-    e->synced = 1;
 }
 
 void run_sync_host(struct gravel *g)

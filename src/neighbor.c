@@ -562,8 +562,9 @@ void nbr_rebuild(struct gravel *g)
     build_list(g, b);
     if (e->history)
         b->old_valid = 1;
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.x, b->xhold, 0, 0,
-                                     3 * (size_t)nkeep * e->rsz, 0, NULL, NULL));
+    if (nkeep > 0)
+        OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.x, b->xhold, 0, 0,
+                                         3 * (size_t)nkeep * e->rsz, 0, NULL, NULL));
     b->ago = 0;
     b->built = 1;
     e->st.nbuilds++;
