@@ -70,6 +70,8 @@ struct pair {
 };
 
 void pair_free(struct gravel *g);
+/* The registered style with this name, or NULL (restart.c). */
+const struct pair_style *pair_style_find(const char *name);
 
 /* ---- composition helpers (pair.c) ---- */
 /* Registry lookup by name (NULL if unknown). */
