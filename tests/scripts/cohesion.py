@@ -236,6 +236,10 @@ def force_checks():
     want = -math.sqrt(100 * 400) * (0.275 - 0.25)
     check("cohesion_force_mixed_types", abs(f2 - want) < 1e-12 and f1 == -f2,
           "F = %.12g, want %.12g" % (f2, want))
+    # a redefined pair_style cohesion keeps pair_coeff, takes the new kc
+    f2, _ = force(0.13, "cohesion 100", "pair_coeff * * 0.15\npair_style cohesion 50")
+    check("cohesion_restyle_keeps_coeffs_new_kc", abs(f2 - (-50 * 0.02)) < 1e-12,
+          "F = %.12g, want -50 x 0.02" % f2)
     # in body contact with a contact law: contact + cohesion add up
     x = 0.0999
     fc, _ = force(x, "hybrid/overlay linear/restitution 1e5 0.8 0.0 cohesion 100",
