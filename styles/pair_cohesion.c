@@ -134,7 +134,7 @@ static void init(struct gravel *g, struct pair *p)
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     if (!c || c->nt != nt)
         gr_error(g, "pair style cohesion: pair_coeff must be given (after the box defines %d "
-                    "atom type(s))", nt);
+                    "atom type(s); restart files do not keep cohesion coefficients)", nt);
     for (int I = 1; I <= nt; I++)
         if (c->set[(size_t)(I - 1) * nt + (I - 1)] != 1) {
             /* a diagonal may be skipped only when every pair with I is explicit */
