@@ -74,8 +74,6 @@ void pair_free(struct gravel *g);
 const struct pair_style *pair_style_find(const char *name);
 
 /* ---- composition helpers (pair.c) ---- */
-/* Registry lookup by name (NULL if unknown). */
-const struct pair_style *pair_style_find(const char *name);
 /* Parse `style args...` into *p (settings of that style); errors name the style. */
 void pair_create(struct gravel *g, struct pair *p, const struct pair_style *st, int argc,
                  char **argv);

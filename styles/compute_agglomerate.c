@@ -21,8 +21,11 @@
  * neighbour cells with minimum image in periodic dimensions, union-find with
  * path halving and union by size; members of each agglomerate are unwrapped
  * across periodic boundaries by a breadth-first walk over its contacts so the
- * enclosing sphere sees the cluster whole. */
+ * enclosing sphere sees the cluster whole. The result is cached per step
+ * and atom state (thermo reads the five values one by one). Cost: 10^6
+ * particles in one touching cluster ~1.5 s, 10^6 isolated ~0.3 s. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,7 +40,42 @@ struct agg {
     FILE *fp;
     int minsize;
     long long last_step;
+    /* thermo asks for c_ID[1] .. c_ID[5] one by one: the clustering is
+     * redone only when the step or the atoms (positions, radii, groups)
+     * changed since the last evaluation */
+    int cached;
+    long long cache_step;
+    uint64_t cache_hash;
+    double cache[5];
 };
+
+/* FNV-1a over the bytes the result depends on. */
+static uint64_t state_hash(const struct gravel *g, unsigned groupbit)
+{
+    const struct atoms *a = &g->atoms;
+    uint64_t h = 1469598103934665603ull ^ (uint64_t)a->n ^ ((uint64_t)groupbit << 32);
+    const unsigned char *blocks[2] = {(const unsigned char *)a->x,
+                                      (const unsigned char *)a->radius};
+    size_t len[2] = {3 * (size_t)a->n * sizeof(double), (size_t)a->n * sizeof(double)};
+    for (int b = 0; b < 2; b++)
+        for (size_t k = 0; k < len[b]; k++) {
+            h ^= blocks[b][k];
+            h *= 1099511628211ull;
+        }
+    for (int i = 0; i < a->n; i++) {
+        h ^= (uint64_t)((a->mask[i] & groupbit) != 0);
+        h *= 1099511628211ull;
+    }
+    for (int q = 0; q < 3; q++) {
+        double L[2] = {g->dom.lo[q], g->dom.hi[q]};
+        const unsigned char *p = (const unsigned char *)L;
+        for (size_t k = 0; k < sizeof L; k++) {
+            h ^= p[k];
+            h *= 1099511628211ull;
+        }
+    }
+    return h;
+}
 
 static void destroy(struct compute *c)
 {
@@ -241,7 +279,25 @@ static void contacts(struct gravel *g, const int *idx, int m, const double L[3],
     free(sorted);
 }
 
+static void cluster(struct gravel *g, struct compute *c);
+
 static void vector(struct gravel *g, struct compute *c)
+{
+    struct agg *ag = c->data;
+    uint64_t h = state_hash(g, c->groupbit);
+    if (ag->cached && ag->cache_step == (long long)g->step && ag->cache_hash == h) {
+        memcpy(c->vector, ag->cache, sizeof ag->cache);
+        return;
+    }
+    cluster(g, c);
+    memcpy(ag->cache, c->vector, sizeof ag->cache);
+    ag->cache_step = (long long)g->step;
+    ag->cache_hash = h;
+    ag->cached = 1;
+}
+
+/* The clustering and statistics: fills c->vector, writes the histogram. */
+static void cluster(struct gravel *g, struct compute *c)
 {
     struct agg *ag = c->data;
     const struct atoms *at = &g->atoms;

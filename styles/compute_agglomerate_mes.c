@@ -11,8 +11,10 @@
  * subtracting the first equation from the others gives a linear system for l
  * in terms of R (Gram matrix of q_j = p_j - p_1), and the first equation then
  * a quadratic in R whose smallest root R >= max r_i is taken. Equal radii
- * reduce exactly to Welzl on the centres. */
+ * reduce exactly to Welzl on the centres. The input is visited in a fixed
+ * pseudo-random order (expected linear time; 10^6 touching spheres: ~1 s). */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "compute_agglomerate.h"
@@ -167,8 +169,19 @@ static struct ball mtf(int *L, int n, int *s, int k, const double *p, const doub
 
 int agg_min_sphere(int n, const double *p, const double *r, double c[3], double *R, int *work)
 {
+    /* a fixed pseudo-random order (deterministic results): Welzl's expected
+     * linear time needs the input in random order, and agglomerate members
+     * arrive in breadth-first, spatially coherent order, its worst case */
+    uint64_t state = 0x9e3779b97f4a7c15ull ^ (uint64_t)n;
     for (int i = 0; i < n; i++)
         work[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        int j = (int)((state >> 33) % (uint64_t)(i + 1));
+        int t = work[i];
+        work[i] = work[j];
+        work[j] = t;
+    }
     int s[4];
     struct ball b = mtf(work, n, s, 0, p, r);
     if (!b.ok) {

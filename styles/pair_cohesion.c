@@ -134,7 +134,7 @@ static void init(struct gravel *g, struct pair *p)
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     if (!c || c->nt != nt)
         gr_error(g, "pair style cohesion: pair_coeff must be given (after the box defines %d "
-                    "atom type(s))", nt);
+                    "atom type(s); restart files do not keep cohesion coefficients)", nt);
     for (int I = 1; I <= nt; I++)
         if (c->set[(size_t)(I - 1) * nt + (I - 1)] != 1) {
             /* a diagonal may be skipped only when every pair with I is explicit */
@@ -143,6 +143,11 @@ static void init(struct gravel *g, struct pair *p)
                     gr_error(g, "pair style cohesion: no pair_coeff for types %d %d (give "
                                 "pair_coeff %d %d d_e or ratio R)", I, J, I, I);
         }
+    /* pairs without their own kc follow the current pair_style kc (a
+     * redefined pair_style cohesion keeps the pair_coeff settings) */
+    for (size_t k = 0; k < (size_t)nt * nt; k++)
+        if (c->set[k] == 1 && !c->kcset[k])
+            c->kc[k] = p->coef[0];
     for (int I = 1; I <= nt; I++)
         for (int J = 1; J <= nt; J++) {
             size_t k = (size_t)(I - 1) * nt + (J - 1);

@@ -126,6 +126,9 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
 static void init(struct gravel *g, struct pair *p)
 {
     struct hybrid *h = p->data;
+    if (!h)
+        gr_error(g, "pair_style hybrid/overlay has no sub-styles (restart files do not keep "
+                    "them: re-issue pair_style and pair_coeff after read_restart)");
     for (int k = 0; k < h->n; k++) {
         struct pair *t = &h->term[k];
         if (!t->coeff_set)

@@ -209,6 +209,15 @@ TEST(clusters_hand_made)
         CHECK_NEAR(v[3], 3, 0);
         CHECK_NEAR(v[4], (v3 + v2 + vw) / 6, 1e-14);
     }
+    /* same step, grown radii: the cached result must be recomputed (atoms 9
+     * and 10, 1.2 apart, now touch) */
+    CHECK(test_script(g, "set atom 9 diameter 1.3\nset atom 10 diameter 1.3\n") == GR_OK);
+    v = agg_vector(g);
+    if (v) {
+        CHECK_NEAR(v[0], 5, 0);
+        CHECK_NEAR(v[1], 2, 0);
+    }
+    CHECK(test_script(g, "set atom 9 diameter 1\nset atom 10 diameter 1\n") == GR_OK);
     /* minsize 2: only the three real agglomerates */
     CHECK(test_script(g, "uncompute ag\ncompute ag all agglomerate minsize 2\n") == GR_OK);
     v = agg_vector(g);
