@@ -104,7 +104,7 @@ fuzz-replay: bin/gravel-asan
 	@sh tests/scripts/fuzz_replay.sh
 
 # The agglomeration study of source document 000 chapter 6 (fig. 6.8), see
-# doc/agglomeration.md: about 2 h with the defaults; AGGLO_QUICK=1 for a few minutes.
+# doc/agglomeration.md: about 2 h with the defaults (N 1000, 300 s); AGGLO_QUICK=1 for a few minutes.
 reproduce-agglomeration: deps
 	@$(MAKE) --no-print-directory all
 	@sh tools/agglomeration/sweep.sh

@@ -10,7 +10,7 @@
 # Environment (all optional):
 #   AGGLO_QUICK=1  shortened sweep: 5 s per grid point (a few minutes in all)
 #   AGGLO_N        number of particles     (default 1000; 000 table 6.1: 10000)
-#   AGGLO_TEND     simulated s per point   (default 120, quick 5; 000: 600)
+#   AGGLO_TEND     simulated s per point   (default 300, quick 5; 000: 600)
 #   AGGLO_NOUT     thermo rows per point   (default 240, quick 50)
 #   AGGLO_TAG      name of this run in the output names (default full or quick)
 #   AGGLO_OUT      run directory (default build/agglomeration/<tag>)
@@ -22,7 +22,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ "${AGGLO_QUICK:-0}" = 1 ]; then
     tag=quick; tend=${AGGLO_TEND:-5}; nout=${AGGLO_NOUT:-50}
 else
-    tag=full; tend=${AGGLO_TEND:-120}; nout=${AGGLO_NOUT:-240}
+    tag=full; tend=${AGGLO_TEND:-300}; nout=${AGGLO_NOUT:-240}
 fi
 n=${AGGLO_N:-1000}
 tag=${AGGLO_TAG:-$tag}
