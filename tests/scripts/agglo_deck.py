@@ -16,7 +16,8 @@ Checks (one PASS/FAIL line each):
     particles, 1.5 s): the number of agglomerates falls well below N and the mean size
     grows; at Sy 0.1, Stk 10 (same start) fewer particles join agglomerates;
   * average.py's window mean equals the mean of the thermo rows in the window; it refuses a
-    log whose run did not finish; plot.py writes a PNG.
+    log whose run did not finish; plot.py writes a PNG;
+  * a Stickiness number outside table 6.2 stops with a message unless -var eps is given.
 """
 import glob
 import math
@@ -181,6 +182,22 @@ def agglomeration_forms(tmp):
           (r.stderr + r2.stderr).strip()[-200:])
 
 
+def off_table(tmp):
+    """A Stickiness number outside table 6.2 without -var eps stops with a message naming
+    the fix; with -var eps it runs and prints the requested numbers."""
+    d = os.path.join(tmp, "off")
+    os.mkdir(d)
+    rc, out = run_deck(d, "N", 8, "tend", 0.000898, "Sy", 0.3, "St", 2.0)
+    check("sy_outside_table_is_an_error", rc != 0 and "ERROR" in out and
+          "Sy_not_in_table_6_2_give_var_eps" in out,
+          " ".join(l for l in out.splitlines() if l.startswith("ERROR"))[:200])
+    rc, out = run_deck(d, "N", 8, "tend", 0.000898, "Sy", 0.3, "St", 2.0, "eps", 0.4)
+    info = average.parse_log(os.path.join(d, "agglo_Sy0.3_St2.0.log"))
+    check("sy_outside_table_with_eps", rc == 0 and same3(info["Sy_log"], 0.3) and
+          same3(info["Stk_log"], 2.0) and info["e"] == 0.4,
+          "Sy %s Stk %s e %s" % (info["Sy_log"], info["Stk_log"], info["e"]))
+
+
 def main():
     if not os.path.exists(GRAVEL):
         check("gravel_built", False, GRAVEL + " missing: run make")
@@ -189,6 +206,7 @@ def main():
         sweep_structure(tmp)
         initial_speeds(tmp)
         agglomeration_forms(tmp)
+        off_table(tmp)
     return 1 if failures else 0
 
 
