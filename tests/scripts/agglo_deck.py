@@ -14,7 +14,8 @@ Checks (one PASS/FAIL line each):
     spacing 3 d_b around the box centre, no two bodies or effect surfaces touching;
   * agglomerates form at high stickiness and low Stokes number (Sy 1.5, Stk 0.1, 216
     particles, 1.5 s): the number of agglomerates falls well below N and the mean size
-    grows; at Sy 0.1, Stk 10 (same start) fewer particles join agglomerates;
+    grows; at Sy 0.1, Stk 10 (same start) fewer particles join agglomerates; the size
+    histogram file accounts for every particle and matches the thermo count;
   * average.py's window mean equals the mean of the thermo rows in the window; it refuses a
     log whose run did not finish; plot.py writes a PNG;
   * a Stickiness number outside table 6.2 stops with a message unless -var eps is given.
@@ -146,6 +147,24 @@ def agglomeration_forms(tmp):
     lc1 = lo["rows"][-1][lo["header"].index("c_ag[1]")]
     check("fewer_agglomerated_at_low_Sy_high_St", lc1 > c1,
           "final agglomerates: Sy 1.5 St 0.1 %g, Sy 0.1 St 10 %g" % (c1, lc1))
+    # the size histogram next to the log: every block holds all 216 particles, and its
+    # number of agglomerates is the thermo table's c_ag[1] at that step
+    blocks, cur = [], None
+    for line in open(os.path.join(d, "agglo_Sy1.5_St0.1.hist")):
+        if line.startswith("#"):
+            continue
+        a, b = (int(x) for x in line.split())
+        if cur is None or cur[2] == cur[1]:
+            cur = [a, b, 0, 0]          # step, agglomerates, counted, particles
+            blocks.append(cur)
+        else:
+            cur[2] += b
+            cur[3] += a * b
+    thermo = {int(r[0]): r[ic] for r in hi["rows"]}
+    ok = blocks and all(b[2] == b[1] and b[3] == 216 and thermo.get(b[0], b[1]) == b[1]
+                        for b in blocks) and blocks[-1][0] == int(hi["rows"][-1][0])
+    check("size_histogram", ok, "%d blocks, last: step %d, %d agglomerates"
+          % (len(blocks), blocks[-1][0], blocks[-1][1]) if blocks else "no blocks")
     # average.py: the window mean is the plain mean of the rows in 5/6..11/12 of the run
     it, ivf = h.index("Time"), h.index("c_ag[5]")
     tend = hi["rows"][-1][it]
