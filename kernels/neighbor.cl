@@ -316,7 +316,11 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                     del.z = MINIMG_Z(del.z, Lz);
                     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
                     const REAL radsum = radi + radius[j];
+#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+                    const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
+#else
                     const REAL cut = radsum + skin;
+#endif
                     if (rsq >= cut * cut)
                         continue;
                     if (excl_type[(ti - 1) * ntypes + type[j] - 1])

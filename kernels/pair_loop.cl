@@ -48,6 +48,8 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
         const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
         const REAL radj = radius[j];
         const REAL radsum = radi + radj;
+#ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
+                        * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
         if (rsq >= radsum * radsum) {
 #ifdef HAS_HISTORY
             /* reset the history of a separated pair; most are zero already and
@@ -58,6 +60,7 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
 #endif
             continue;
         }
+#endif
         struct contact c;
         c.del = del;
         c.rsq = rsq;

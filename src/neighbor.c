@@ -224,7 +224,7 @@ void nbr_setup(struct gravel *g)
     for (int i = 0; i < g->atoms.n; i++)
         if (g->atoms.radius[i] > rmax)
             rmax = g->atoms.radius[i];
-    b->cutmax = 2 * rmax + g->neigh.skin;
+    b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
     b->ago = 0;
