@@ -93,8 +93,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         else if (!strcmp(u, "trapezoidal"))
             d->update = UPD_TRAPEZOIDAL;
         else
-            gr_error(g, "fix drag update must be explicit, implicit, exact or trapezoidal, "
-                        "got '%.64s'", u);
+            gr_error(g, "fix drag update must be explicit, implicit or exact (or trapezoidal: "
+                        "000 eq. 3.8-3.9), got '%.64s'", u);
     }
     f->hooks = HOOK_POST_FORCE | (d->update == UPD_EXPLICIT ? 0u : (unsigned)HOOK_END_OF_STEP);
     f->sources[f->nsources++] = "fix_drag.cl";
