@@ -130,8 +130,10 @@ static void run_hook(struct gravel *g, unsigned hook)
     }
 }
 
-/* Log the collision time of the contact model against the time step. */
-static void timestep_report(struct gravel *g)
+/* Log the collision time of the contact model against the time step:
+ * warning under ~10 steps per collision; error under 2 unless the run was
+ * given `force yes` (DESIGN: Precision and the speed/accuracy trade). */
+static void timestep_report(struct gravel *g, int force)
 {
     const struct pair *p = g->styles.pair;
     if (!p || !p->style->collision_time || g->atoms.n == 0)
@@ -154,9 +156,35 @@ static void timestep_report(struct gravel *g)
     double steps = tc / g->dt;
     gr_print(g, "Contact model %s: collision time %.4g = %.1f steps of %g (lightest particle)\n",
              p->style->name, tc, steps, g->dt);
+    /* verify: below 2 steps a contact can be missed or explode */
+    if (steps < 2 && !force)
+        gr_error(g, "time step %g exceeds half the %s collision time %.4g (%.2f steps per "
+                    "collision): contacts are not resolved; reduce the time step or add "
+                    "'force yes' to run", g->dt, p->style->name, tc, steps);
     if (steps < 10)
         gr_warn(g, "time step %g resolves a %s collision with only %.1f steps (at least ~10 "
                    "are needed for accuracy)", g->dt, p->style->name, steps);
+}
+
+/* verify: single precision resolves a coordinate x to |x| 2^-23. Warn at
+ * setup when that exceeds 1e-3 of the smallest radius: overlaps and contact
+ * normals (fractions of a radius) lose their digits. */
+static void precision_report(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    if (!g->opt.single || a->n == 0)
+        return;
+    double xmax = 0, rmin = INFINITY;
+    for (int i = 0; i < a->n; i++) {
+        for (int d = 0; d < 3; d++)
+            xmax = fmax(xmax, fabs(a->x[3 * i + d]));
+        rmin = fmin(rmin, a->radius[i]);
+    }
+    double ulp = xmax * 0x1p-23;
+    if (ulp > 1e-3 * rmin)
+        gr_warn(g, "single precision: coordinates up to %g resolve only %.3g, %.3g of the "
+                   "smallest radius %g; overlaps lose precision (use -precision double or "
+                   "move the origin closer)", xmax, ulp, ulp / rmin, rmin);
 }
 
 static void check_atoms(struct gravel *g)
@@ -174,7 +202,7 @@ static void check_atoms(struct gravel *g)
 }
 
 /* The whole run: setup, loop, footer. */
-static void run_steps(struct gravel *g, bigint nsteps)
+static void run_steps(struct gravel *g, bigint nsteps, int force)
 {
     check_atoms(g);
     eng_prepare(g);
@@ -206,7 +234,8 @@ static void run_steps(struct gravel *g, bigint nsteps)
     nbr_setup(g);
     struct fix *fz = fix_find_style(g, "freeze");
     unsigned freezebit = fz ? fz->groupbit : 0;
-    timestep_report(g);
+    timestep_report(g, force);
+    precision_report(g);
 
     g->firststep = g->step;
     g->laststep = g->step + nsteps;
@@ -311,6 +340,11 @@ static void run_steps(struct gravel *g, bigint nsteps)
     st.max_overlap_frac = maxov;
     e->active = 0;
     output_finish(g, &st);
+    /* verify: Hertz/linear contact laws assume small overlaps */
+    if (maxov > 0.1)
+        gr_warn(g, "largest overlap reached %.1f %% of a radius (sampled at output steps): "
+                   "impacts too fast or contacts too soft for the contact model",
+                100 * maxov);
 }
 
 /* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no] */
@@ -319,7 +353,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     bigint n = arg_bigint(g, argv[0], "number of steps");
     int upto = 0;
     bigint start = -1, stop = -1;
-    int have_start = 0, have_stop = 0;
+    int have_start = 0, have_stop = 0, force = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "upto")) {
             upto = 1;
@@ -331,6 +365,10 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, "stop");
             stop = arg_bigint(g, argv[++i], "stop step");
             have_stop = 1;
+        } else if (!strcmp(argv[i], "force")) {
+            /* verify: allow a time step above half the collision time */
+            arg_need(g, argc, i, 1, "force");
+            force = arg_yesno(g, argv[++i], "force");
         } else if (!strcmp(argv[i], "pre") || !strcmp(argv[i], "post")) {
             arg_need(g, argc, i, 1, argv[i]);
             (void)arg_yesno(g, argv[i + 1], argv[i]);
@@ -338,7 +376,8 @@ void cmd_run(struct gravel *g, int argc, char **argv)
         } else if (!strcmp(argv[i], "every")) {
             gr_error(g, "run keyword 'every' is not supported");
         } else {
-            gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post)",
+            gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post, "
+                        "force)",
                      argv[i]);
         }
     }
@@ -360,7 +399,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
                  (long long)(g->step + n));
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
-    run_steps(g, n);
+    run_steps(g, n, force);
 }
 
 /* reset_timestep N */
