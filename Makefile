@@ -68,6 +68,16 @@ bench: deps
 	@$(MAKE) --no-print-directory all
 	@sh tools/bench.sh
 
+# Log regression (tests/regression/, doc/regression.md): every deck in inputs/
+# runs shortened and its thermo log is compared with the committed reference
+# by tools/logcompare. regress-update rewrites the references for review in
+# the diff (LAMMPS=1 also reruns the LAMMPS references with lmp).
+.PHONY: regress regress-update
+regress: all
+	@/usr/bin/python3 tests/regression/regress.py
+regress-update: all
+	@/usr/bin/python3 tests/regression/regress.py --update $(if $(LAMMPS),--lammps)
+
 # Verification report: runs inputs/verification/ at t_col/8 ... /128 in both
 # precisions and writes doc/verification.md + doc/verification/*.png (gnuplot).
 verify: deps

@@ -240,6 +240,26 @@ static inline int stencil(const int c, const int nc, const int periodic, int out
     return k;
 }
 
+/* Contiguous index ranges covering the x-stencil of one (y, z) row: cells
+ * are numbered x fastest, so neighboring x cells that do not wrap form one
+ * range of the sorted atoms. Returns the number of ranges (1..3). */
+static inline int row_ranges(__global const int *start, const int rowbase, const int *xs,
+                             const int nxs, int *lo, int *hi)
+{
+    int r = 0;
+    for (int e = 0; e < nxs; e++) {
+        const int cell = rowbase + xs[e];
+        if (r > 0 && xs[e] == xs[e - 1] + 1) {
+            hi[r - 1] = start[cell + 1];
+        } else {
+            lo[r] = start[cell];
+            hi[r] = start[cell + 1];
+            r++;
+        }
+    }
+    return r;
+}
+
 /* Full Verlet list with skin: j is a neighbor of i when
  * |x_i - x_j| < radi + radj + skin (LAMMPS size lists), j != i, and the pair
  * is not excluded (type table, group bit pairs). Slots beyond maxn are
@@ -282,10 +302,11 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     const int ocnt = history == 2 ? old_ncount[io] : 0;
     const size_t orow = (size_t)io * old_maxn;
     for (int a = 0; a < nsz; a++)
-        for (int b = 0; b < nsy; b++)
-            for (int e = 0; e < nsx; e++) {
-                const int cell = (szs[a] * ny + sys[b]) * nx + sxs[e];
-                const int s = start[cell], t = start[cell + 1];
+        for (int b = 0; b < nsy; b++) {
+            int rlo[3], rhi[3];
+            const int nr = row_ranges(start, (szs[a] * ny + sys[b]) * nx, sxs, nsx, rlo, rhi);
+            for (int e = 0; e < nr; e++) {
+                const int s = rlo[e], t = rhi[e];
                 for (int j = s; j < t; j++) {
                     if (j == i)
                         continue;
@@ -295,7 +316,11 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                     del.z = MINIMG_Z(del.z, Lz);
                     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
                     const REAL radsum = radi + radius[j];
+#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+                    const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
+#else
                     const REAL cut = radsum + skin;
+#endif
                     if (rsq >= cut * cut)
                         continue;
                     if (excl_type[(ti - 1) * ntypes + type[j] - 1])
@@ -327,6 +352,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                     cnt++;
                 }
             }
+        }
     ncount[i] = cnt < maxn ? cnt : maxn;
     atomic_max(&flags[2], cnt);
 }

@@ -298,7 +298,6 @@ void eng_upload(struct gravel *g)
         }
     }
     e->active = 1;
-    e->synced = 1;
 }
 
 void run_sync_host(struct gravel *g)
@@ -369,14 +368,17 @@ void eng_prepare(struct gravel *g)
         e->tag_sum = 0;
     }
     e->rsz = single ? sizeof(float) : sizeof(double);
-    e->rotation = (p && p->style->rotation) || (needs & NEED_ROTATION);
-    e->history = p && p->style->history;
+    /* cohesion: pair styles may be composed (hybrid/overlay) */
+    if (p)
+        pair_prepare(g);
+    e->rotation = (p && pair_needs_rotation(p)) || (needs & NEED_ROTATION);
+    e->history = p && pair_needs_history(p);
 
     const char *names[32], *texts[32];
     int n = 0;
     add_source(g, names, texts, &n, "common.cl", "engine");
-    if (p)
-        add_source(g, names, texts, &n, p->style->source, p->style->name);
+    for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
+        add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         for (int k = 0; k < f->nsources; k++)
@@ -392,9 +394,8 @@ void eng_prepare(struct gravel *g)
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
-    if (p)
-        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PAIR_EVAL=%s",
-                        p->style->eval);
+    if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
+        len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
     for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)
         if (g->styles.fix[i]->defines[0])
             len += snprintf(opts + len, sizeof opts - (size_t)len, " %s",

@@ -26,7 +26,6 @@ struct dev_atoms {
 };
 
 struct nbr;                     /* neighbor.c */
-struct kernel_list;
 
 struct engine {
     struct ocl ocl;
@@ -39,7 +38,6 @@ struct engine {
     struct dev_atoms b;         /* second set for the re-sort (same capacity) */
     int active;                 /* inside a run: the device holds the truth */
     int setup;                  /* computing the setup forces (no history update) */
-    int synced;                 /* host arrays equal the device (since last change) */
     int nkern, kern_cap;
     cl_kernel *kern;            /* every kernel created for this program */
     struct nbr *nbr;

@@ -224,7 +224,7 @@ void nbr_setup(struct gravel *g)
     for (int i = 0; i < g->atoms.n; i++)
         if (g->atoms.radius[i] > rmax)
             rmax = g->atoms.radius[i];
-    b->cutmax = 2 * rmax + g->neigh.skin;
+    b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
     b->ago = 0;
@@ -562,8 +562,9 @@ void nbr_rebuild(struct gravel *g)
     build_list(g, b);
     if (e->history)
         b->old_valid = 1;
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.x, b->xhold, 0, 0,
-                                     3 * (size_t)nkeep * e->rsz, 0, NULL, NULL));
+    if (nkeep > 0)
+        OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.x, b->xhold, 0, 0,
+                                         3 * (size_t)nkeep * e->rsz, 0, NULL, NULL));
     b->ago = 0;
     b->built = 1;
     e->st.nbuilds++;
@@ -615,4 +616,65 @@ double nbr_max_overlap(struct gravel *g)
     for (int c = 0; c < nch; c++)
         best = fmax(best, v[c]);
     return best;
+}
+
+/* ---- restart support (restart.c) ------------------------------------------ */
+
+void nbr_state_free(struct nbr_state *s)
+{
+    free(s->ncount);
+    free(s->nlist);
+    free(s->shear);
+    free(s->xhold);
+    memset(s, 0, sizeof *s);
+}
+
+int nbr_export(struct gravel *g, struct nbr_state *s)
+{
+    memset(s, 0, sizeof *s);
+    struct engine *e = g->eng;
+    if (!e || !e->nbr || !e->nbr->built)
+        return 0;
+    struct nbr *b = e->nbr;
+    int n = e->a.n, maxn = b->list.maxn;
+    s->n = n;
+    s->maxn = maxn;
+    s->ago = b->ago;
+    s->history = e->history;
+    s->ncount = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+    s->nlist = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
+    s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+    if (e->history)
+        s->shear = gr_malloc(g, (3 * (size_t)n * maxn + 1) * sizeof(double));
+    eng_read(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+    eng_read(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
+    eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    if (e->history)
+        eng_read_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
+    return 1;
+}
+
+void nbr_import(struct gravel *g, const struct nbr_state *s)
+{
+    struct engine *e = g->eng;
+    struct nbr *b = get(g);
+    int n = e->a.n;
+    int maxn = s->maxn > 0 ? s->maxn : 1;
+    if (s->n != n)
+        gr_error(g, "restart: neighbor list of %d atoms for %d atoms on the device", s->n, n);
+    alloc_list(g, b, maxn);
+    eng_write(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+    eng_write(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
+    if (e->history) {
+        if (s->shear)
+            eng_write_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
+        else
+            eng_fill_zero(g, b->list.shear, (size_t)n * maxn * 3 * e->rsz);
+    }
+    eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    for (int q = 0; q < 3; q++)
+        b->list.L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    b->ago = s->ago;
+    b->built = 1;
+    b->old_valid = e->history;
 }

@@ -15,7 +15,9 @@
  * pack() on the host. fix wall/gran calls the same evaluators with the wall as
  * particle j (radj = 0, radsum = reff = radi, omj = 0, meff = m_i).
  *
- * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. */
+ * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. It
+ * fills c.reff only when the evaluator's file defines PAIR_NEEDS_REFF (Hertz);
+ * other callers (walls) always set it. */
 #ifndef GR_PAIR_H
 #define GR_PAIR_H
 
@@ -23,6 +25,7 @@
 
 #define PAIR_MAXPARAM 8
 #define PAIR_MAXCOEF 8
+#define PAIR_MAXTERMS 4     /* terms fused by hybrid/overlay */
 
 struct pair;
 
@@ -40,15 +43,63 @@ struct pair_style {
     /* Estimated duration of a binary collision of two particles of mass m and
      * radius r approaching at speed vn (for time-step diagnostics). */
     double (*collision_time)(const struct pair *p, double m, double r, double vn);
+    /* ---- composition and cohesion (cohesion helper; all optional) ---- */
+    /* Acts beyond body contact (cohesion): the loop hands it every listed
+     * pair and the evaluator gates itself; the neighbor cut-off grows to
+     * reach(). Contact styles (0) are called only for touching pairs. */
+    int beyond_contact;
+    /* Largest centre distance at which this style acts, for a pair of radius
+     * sum `radsum`: an affine upper bound A + B radsum over all type pairs. */
+    double (*reach)(const struct pair *p, double radsum);
+    /* `pair_coeff I J args...` for types ilo..ihi x jlo..jhi (NULL: only
+     * `pair_coeff * *` without arguments is accepted). */
+    void (*coeff)(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
+                  int argc, char **argv);
+    /* Run start: validate coefficients, mix cross terms (before pack). */
+    void (*init)(struct gravel *g, struct pair *p);
+    /* hybrid/overlay: source files and build options of the composed terms. */
+    const char *(*source_n)(const struct pair *p, int k);
+    int (*defines)(const struct pair *p, char *buf, size_t len);
+    /* Release p->data. */
+    void (*destroy)(struct pair *p);
 };
 
 struct pair {
     const struct pair_style *style;
     double coef[PAIR_MAXCOEF];  /* style-defined (gran: kn kt gamman gammat xmu dampflag limit) */
     int coeff_set;              /* pair_coeff * * was given */
+    void *data;                 /* style-owned (per-type tables, composed terms) */
 };
 
 void pair_free(struct gravel *g);
+/* The registered style with this name, or NULL (restart.c). */
+const struct pair_style *pair_style_find(const char *name);
+
+/* ---- composition helpers (pair.c) ---- */
+/* Parse `style args...` into *p (settings of that style); errors name the style. */
+void pair_create(struct gravel *g, struct pair *p, const struct pair_style *st, int argc,
+                 char **argv);
+/* Release a pair's style data (not the struct itself). */
+void pair_release(struct pair *p);
+/* What the run needs from the pair style(s): rotation, contact history, a
+ * term that acts beyond body contact (cohesion: HAS_COHESION). */
+int pair_needs_rotation(const struct pair *p);
+int pair_needs_history(const struct pair *p);
+int pair_has_cohesion(const struct pair *p);
+/* Neighbor cut-off without skin for a pair of radius sum `radsum`: radsum
+ * unless a cohesion term reaches farther. */
+double pair_reach(const struct gravel *g, double radsum);
+/* k-th kernel source of the pair style (NULL past the last). */
+const char *pair_source(const struct pair *p, int k);
+/* " -D HAS_COHESION -D COH_REACH_A=.. -D COH_REACH_B=.." when a term acts
+ * beyond contact (else nothing); returns the length written. */
+int pair_cohesion_defines(const struct pair *p, char *buf, size_t len);
+/* Append the pair's build options (" -D PAIR_EVAL=..." ...) to buf. */
+int pair_defines(const struct pair *p, char *buf, size_t len);
+/* Run start: validate and mix coefficients (style init). */
+void pair_prepare(struct gravel *g);
+/* The composed terms of a hybrid/overlay pair (styles/pair_hybrid_overlay.c). */
+int pair_hybrid_terms(const struct pair *p, const struct pair **terms);
 
 /* Shared by the three gran styles (pair_gran_common.c in styles/):
  * `Kn Kt gamman gammat xmu dampflag [limit_damping]` with LAMMPS defaults. */

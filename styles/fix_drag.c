@@ -41,6 +41,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "pair_cohesion.h"
 
 enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN };
 enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT, UPD_TRAPEZOIDAL };
@@ -208,3 +209,23 @@ const struct fix_style fix_style_drag = {
     .post_force = post_force,
     .end_of_step = end_of_step,
 };
+
+/* Scales of the flow for the Stokes number (used by pair_style cohesion's
+ * run-setup report, styles/pair_cohesion_numbers.c): viscosity, mean flow
+ * speed (uniform: |u_f|; Taylor-Green: 0.7839 A, 000 sec. 6.1.2) and length
+ * (Taylor-Green: vortex diameter pi / a; uniform: 0, none). */
+int fix_drag_scales(const struct fix *f, double *mu, double *u0, double *l0)
+{
+    if (!f || strcmp(f->style->name, "drag"))
+        return 0;
+    const struct drag *d = f->data;
+    *mu = d->mu;
+    if (d->flow == FLOW_TAYLOR_GREEN) {
+        *u0 = 0.7839 * fabs(d->p[0]);
+        *l0 = M_PI / d->p[1];
+    } else {
+        *u0 = sqrt(d->p[0] * d->p[0] + d->p[1] * d->p[1] + d->p[2] * d->p[2]);
+        *l0 = 0;
+    }
+    return 1;
+}

@@ -263,6 +263,29 @@ TEST(program_cache_hit)
     unsetenv("GRAVEL_CACHE_DIR");
 }
 
+/* A kernel that does not compile: the error names its file and line and
+ * carries the compiler log. */
+TEST(build_failure_names_source)
+{
+    struct gravel *g = test_engine();
+    struct engine *e = eng_get(g);
+    const char *names[2] = {"common.cl", "pair_broken.cl"};
+    const char *texts[2] = {"#define REAL double\n", "\n\nvoid f(void) { undeclared_x = 1; }\n"};
+    jmp_buf jb;
+    g->err.jmp = &jb;
+    int raised = 0;
+    if (setjmp(jb) == 0)
+        ocl_build(g, &e->ocl, 2, names, texts, "-D TEST_BROKEN");
+    else
+        raised = 1;
+    g->err.jmp = NULL;
+    CHECK(raised);
+    CHECK(strstr(g->err.msg, "OpenCL program build failed") != NULL);
+    CHECK(strstr(g->err.msg, "kernels/pair_broken.cl line 3") != NULL);
+    CHECK(strstr(g->err.msg, "undeclared_x") != NULL);
+    gr_destroy(g);
+}
+
 int main(void)
 {
     RUN(scan_matches_host);
@@ -275,5 +298,6 @@ int main(void)
     RUN(lost_atoms_error);
     RUN(nonfinite_stop_names_step_tag_and_cause);
     RUN(program_cache_hit);
+    RUN(build_failure_names_source);
     return 0;
 }

@@ -1,0 +1,29 @@
+/* pair_cohesion.cl - linear cohesion between effect surfaces (Andrews 2018,
+ * source document 000, eq. 2.6, appendix A.2; styles/pair_cohesion.c).
+ *
+ * With r = |del|, n = del / r (from j to i) and the effect distance
+ *   d_e = (a_i + b_i radi) + (a_j + b_j radj)
+ * (effect radii per side, host-packed), while the effect surfaces overlap:
+ *   delta_e = d_e - r > 0,   F_i = -kc delta_e n      [force units]
+ * i.e. an attraction along the line of centres that also acts in full body
+ * contact. No torque, no history. A flat wall (radj = 0) exerts no cohesion.
+ * Param layout COH_*: kc a_i b_i a_j b_j. Antisymmetric under i <-> j: the
+ * packed sides swap, d_e is the same sum, del flips. */
+
+static inline void cohesion_eval(const struct contact *c, __global const REAL *param,
+                                 REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+{
+    (void)shear;
+    *force_i = (REAL3)(0);
+    *torque_i = (REAL3)(0);
+    if (c->radj == (REAL)0)
+        return;
+    const REAL ei = param[1] + param[2] * c->radi;
+    const REAL ej = param[3] + param[4] * c->radj;
+    const REAL de = ei + ej;
+    if (c->rsq >= de * de)
+        return;
+    const REAL r = sqrt(c->rsq);
+    const REAL delta_e = de - r;
+    *force_i = (-param[0] * delta_e / r) * c->del;
+}

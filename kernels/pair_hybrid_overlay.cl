@@ -1,0 +1,44 @@
+/* pair_hybrid_overlay.cl - the fused evaluator of pair_style hybrid/overlay
+ * (styles/pair_hybrid_overlay.c): one neighbor loop (pair_loop.cl) calls
+ * hybrid_overlay_eval, which calls each composed term in turn and sums forces
+ * and torques. Build options (set by the host):
+ *   PAIR_TERMS=n                 number of terms (1..4)
+ *   PAIR_TERMk=<ident>_eval      the k-th evaluator
+ *   PAIR_TERMk_OFF=o             its parameters start at param + o
+ *   PAIR_TERMk_CONTACT=0|1       1: a contact law, called only while the
+ *                                bodies touch (rsq < radsum^2); 0: gates
+ *                                itself (cohesion, reaches beyond contact)
+ *   PAIR_TERMk_HIST=0|1          1: owns the contact's shear history slot
+ *                                (zeroed when the bodies do not touch)
+ * At most one term owns history. Terms without history get a scratch slot. */
+
+#ifdef PAIR_TERMS
+#define HYBRID_TERM(EVAL, OFF, CONTACT, HIST)                                                  \
+    if (!(CONTACT) || touch) {                                                                 \
+        REAL3 scratch = (REAL3)(0);                                                            \
+        EVAL(c, param + (OFF), (HIST) ? shear : &scratch, &fi, &ti);                           \
+        fsum += fi;                                                                            \
+        tsum += ti;                                                                            \
+    } else if (HIST) {                                                                         \
+        *shear = (REAL3)(0);                                                                   \
+    }
+
+static inline void hybrid_overlay_eval(const struct contact *c, __global const REAL *param,
+                                       REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+{
+    const int touch = c->rsq < c->radsum * c->radsum;
+    REAL3 fsum = (REAL3)(0), tsum = (REAL3)(0), fi, ti;
+    HYBRID_TERM(PAIR_TERM0, PAIR_TERM0_OFF, PAIR_TERM0_CONTACT, PAIR_TERM0_HIST)
+#if PAIR_TERMS > 1
+    HYBRID_TERM(PAIR_TERM1, PAIR_TERM1_OFF, PAIR_TERM1_CONTACT, PAIR_TERM1_HIST)
+#endif
+#if PAIR_TERMS > 2
+    HYBRID_TERM(PAIR_TERM2, PAIR_TERM2_OFF, PAIR_TERM2_CONTACT, PAIR_TERM2_HIST)
+#endif
+#if PAIR_TERMS > 3
+    HYBRID_TERM(PAIR_TERM3, PAIR_TERM3_OFF, PAIR_TERM3_CONTACT, PAIR_TERM3_HIST)
+#endif
+    *force_i = fsum;
+    *torque_i = tsum;
+}
+#endif /* PAIR_TERMS */
