@@ -450,9 +450,30 @@ def error_checks():
           "%d bad scripts rejected with command and line" % len(cases))
 
 
+def agglomerate_dynamics_check():
+    """compute agglomerate during the sticking collision of table 5.4: two
+    agglomerates while only the effect surfaces overlap, one while the bodies
+    touch (000 sec. 6.2.1: cohesive interaction alone does not join)."""
+    text = open(DECK).read().replace(
+        "thermo_style custom step time v_px v_vx v_fx",
+        "compute ag all agglomerate\nthermo_style custom step time v_px v_vx v_fx c_ag[1] c_ag[4]")
+    code, out = run(["-var", "tend", "0.03"], text)
+    rows = thermo(out)
+    if code != 0 or not rows:
+        check("cohesion_agglomerate_body_contact_only", False, out[-400:])
+        return
+    bad = [r for r in rows if (r["v_px"] < DB) != (r["c_ag[1]"] == 1)
+           or r["c_ag[4]"] != 3 - r["c_ag[1]"]]
+    ncontact = sum(1 for r in rows if r["v_px"] < DB)
+    neffect = sum(1 for r in rows if DB <= r["v_px"] < DE)
+    check("cohesion_agglomerate_body_contact_only", not bad and ncontact > 0 and neffect > 0,
+          "%d rows in body contact -> 1 agglomerate of 2, %d rows with effect overlap only -> 2; "
+          "%d mismatches" % (ncontact, neffect, len(bad)))
+
+
 def main():
     for fn in (force_checks, cutoff_checks, collision_checks, momentum_check, numbers_check,
-               error_checks):
+               error_checks, agglomerate_dynamics_check):
         try:
             fn()
         except Exception as ex:  # a crash of one group is a failure, not an abort
