@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay verify
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -77,6 +77,13 @@ regress: all
 	@/usr/bin/python3 tests/regression/regress.py
 regress-update: all
 	@/usr/bin/python3 tests/regression/regress.py --update $(if $(LAMMPS),--lammps)
+
+# Verification report: runs inputs/verification/ at t_col/8 ... /128 in both
+# precisions and writes doc/verification.md + doc/verification/*.png (gnuplot).
+verify: deps
+	@sh tools/verify_deps.sh
+	@$(MAKE) --no-print-directory all
+	/usr/bin/python3 tools/verify_doc.py
 
 # libFuzzer target for the interpreter (clang; the harness works in a scratch
 # directory, so its paths are absolute). `make fuzz FUZZ_TIME=600` runs it
