@@ -12,8 +12,6 @@
  * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
 
-#define PAIR_NEEDS_REFF 1 /* R* = reff: the pair loop fills c.reff (kernels/pair_loop.cl) */
-
 static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
                                       REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
 {
