@@ -81,7 +81,7 @@ regress-update: all
 # Verification report: runs inputs/verification/ at t_col/8 ... /128 in both
 # precisions and writes doc/verification.md + doc/verification/*.png (gnuplot).
 verify: deps
-	@sh tools/verify_deps.sh
+	@sh tools/deps.sh gnuplot-nox
 	@$(MAKE) --no-print-directory all
 	/usr/bin/python3 tools/verify_doc.py
 
