@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay reproduce-agglomeration
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay verify reproduce-agglomeration
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -78,6 +78,13 @@ regress: all
 regress-update: all
 	@/usr/bin/python3 tests/regression/regress.py --update $(if $(LAMMPS),--lammps)
 
+# Verification report: runs inputs/verification/ at t_col/8 ... /128 in both
+# precisions and writes doc/verification.md + doc/verification/*.png (gnuplot).
+verify: deps
+	@sh tools/deps.sh gnuplot-nox
+	@$(MAKE) --no-print-directory all
+	/usr/bin/python3 tools/verify_doc.py
+
 # libFuzzer target for the interpreter (clang; the harness works in a scratch
 # directory, so its paths are absolute). `make fuzz FUZZ_TIME=600` runs it
 # for that many seconds on one core, niced; new inputs go to build/fuzz/corpus,
@@ -106,6 +113,7 @@ fuzz-replay: bin/gravel-asan
 # The agglomeration study of source document 000 chapter 6 (fig. 6.8), see
 # doc/agglomeration.md: about 2 h with the defaults (N 1000, 300 s); AGGLO_QUICK=1 for a few minutes.
 reproduce-agglomeration: deps
+	@sh tools/deps.sh gnuplot-nox
 	@$(MAKE) --no-print-directory all
 	@sh tools/agglomeration/sweep.sh
 

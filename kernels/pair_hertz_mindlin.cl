@@ -7,10 +7,13 @@
  *                                   S_n = 2 E* a = 1.5 kn a, cd = 2 sqrt(5/6) beta)
  *   s  += v_t dt (not during setup), projected onto the tangent plane
  *   F_t = -(kt a) s - cd sqrt(kt a m*) v_t,  rescaled to mu |F_n| when larger
- *         (s reset consistently, as LAMMPS gran/hertz/history does)
+ *         (in slip the spring is reset to carry F_t alone: s = -F_t/S_t)
  *   torque_i = -radi n x F_t  - mu_r R* |F_n| w/|w|,  w = omega_i - omega_j
  * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
+
+/* R* enters the law: the pair loop must fill c->reff (kernels/pair_loop.cl) */
+#define PAIR_NEEDS_REFF 1
 
 static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
                                       REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
@@ -40,9 +43,13 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
     const REAL flim = mu * fabs(fnmag);
     if (ftmag > flim) {
         if (st > (REAL)0) {
-            /* sliding: F_t = flim ft/|ft|, spring length consistent with it */
+            /* sliding: F_t = flim ft/|ft|; the spring alone carries it
+             * (verify: LAMMPS' mapping s = -(F_t + d_t v_t)/S_t stores the
+             * damping share too, which grows as delta^(-1/4) at contact
+             * start because d_t/S_t does, leaves a spring of the wrong sign
+             * that later pushes along the slip, and has no dt -> 0 limit) */
             ft *= flim / ftmag;
-            s = -(ft + dt_coef * vt) / st;
+            s = -ft / st;
         } else {
             ft = (REAL3)(0);
         }

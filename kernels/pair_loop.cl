@@ -7,7 +7,8 @@
  * slot k of i's list; it is zeroed when the pair is not touching (LAMMPS). The
  * entry of j for the same pair holds exactly minus i's entry.
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
- * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
+ * (freezebit), meff is the other particle's mass (LAMMPS pair gran).
+ * reff is computed only when the evaluator's file defines PAIR_NEEDS_REFF. */
 
 #ifdef PAIR_EVAL
 __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL *v,
@@ -51,7 +52,11 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
                         * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
         if (rsq >= radsum * radsum) {
 #ifdef HAS_HISTORY
-            vstore3((REAL3)(0), row + k, shear);
+            /* reset the history of a separated pair; most are zero already and
+             * stay clean in the cache */
+            const REAL3 old = vload3(row + k, shear);
+            if (old.x != (REAL)0 || old.y != (REAL)0 || old.z != (REAL)0)
+                vstore3((REAL3)(0), row + k, shear);
 #endif
             continue;
         }
@@ -62,7 +67,11 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
         c.radi = radi;
         c.radj = radj;
         c.radsum = radsum;
+#ifdef PAIR_NEEDS_REFF
         c.reff = radi * radj / radsum;
+#else
+        c.reff = 0; /* unused by the active evaluator */
+#endif
         c.vr = vi - vload3(j, v);
         c.omi = omi;
 #ifdef HAS_ROTATION

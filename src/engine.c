@@ -377,6 +377,9 @@ void eng_prepare(struct gravel *g)
     const char *names[32], *texts[32];
     int n = 0;
     add_source(g, names, texts, &n, "common.cl", "engine");
+    /* LAMMPS granular kinematics for the gran pair and wall evaluators:
+     * static inline helpers, free in scenes that do not call them */
+    add_source(g, names, texts, &n, "gran_common.cl", "engine");
     for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
         add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {

@@ -28,7 +28,12 @@
  * end_of_step update can take it out again. F is the force present when the
  * fix runs: fixes whose post_force comes later (defined after fix drag) are
  * treated explicitly, and init() warns about them. The position update stays
- * the integrator's x += dt v_{n+1/2}. */
+ * the integrator's x += dt v_{n+1/2}.
+ *   trapezoidal  000's own scheme (eq. 3.8-3.9): a full-step backward-Euler
+ *              velocity update from the forces at x_n and the trapezoidal
+ *              position update x_{n+1} = x_n + dt (v_n + v_{n+1})/2; the
+ *              opening kick lands on the mean of v_n and v_{n+1}, the closing
+ *              kick on v_{n+1} (kernels/fix_drag.cl drag_trapezoid). */
 #include <math.h>
 #include <string.h>
 
@@ -39,21 +44,21 @@
 #include "pair_cohesion.h"
 
 enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN };
-enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT };
+enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT, UPD_TRAPEZOIDAL };
 
 struct drag {
     double mu;                  /* fluid dynamic viscosity */
     int flow;
     double p[3];                /* uniform: ux uy uz; taylor_green: A a - */
     int update;
-    cl_kernel kexp, kimp;
+    cl_kernel kexp, kimp, ktrap;
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 2)
         gr_error(g, "fix drag expects mu and a flow (uniform ux uy uz | taylor_green A a) "
-                    "[update explicit|implicit|exact]");
+                    "[update explicit|implicit|exact|trapezoidal]");
     struct drag *d = gr_calloc(g, 1, sizeof *d);
     f->data = d;
     d->mu = arg_positive(g, argv[0], "fluid viscosity mu");
@@ -86,8 +91,11 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             d->update = UPD_IMPLICIT;
         else if (!strcmp(u, "exact"))
             d->update = UPD_EXACT;
+        else if (!strcmp(u, "trapezoidal"))
+            d->update = UPD_TRAPEZOIDAL;
         else
-            gr_error(g, "fix drag update must be explicit, implicit or exact, got '%.64s'", u);
+            gr_error(g, "fix drag update must be explicit, implicit or exact (or trapezoidal: "
+                        "000 eq. 3.8-3.9), got '%.64s'", u);
     }
     f->hooks = HOOK_POST_FORCE | (d->update == UPD_EXPLICIT ? 0u : (unsigned)HOOK_END_OF_STEP);
     f->sources[f->nsources++] = "fix_drag.cl";
@@ -100,8 +108,13 @@ static void init(struct gravel *g, struct fix *f)
         d->kexp = eng_kernel(g, "drag_explicit");
         return;
     }
-    d->kimp = eng_kernel(g, "drag_implicit");
-    f->peratom_bytes = 3 * g->eng->rsz;
+    if (d->update == UPD_TRAPEZOIDAL) {
+        d->ktrap = eng_kernel(g, "drag_trapezoid");
+        f->peratom_bytes = 6 * g->eng->rsz;     /* D and the opening kick's dv */
+    } else {
+        d->kimp = eng_kernel(g, "drag_implicit");
+        f->peratom_bytes = 3 * g->eng->rsz;
+    }
     int self = -1;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *o = g->styles.fix[i];
@@ -111,7 +124,9 @@ static void init(struct gravel *g, struct fix *f)
             gr_warn(g, "fix %s (%s) adds its force after fix %s drag: the %s drag update "
                        "treats it explicitly (define fix drag last to include it)",
                     o->id, o->style->name, f->id,
-                    d->update == UPD_IMPLICIT ? "implicit" : "exact");
+                    d->update == UPD_IMPLICIT ? "implicit"
+                    : d->update == UPD_EXACT  ? "exact"
+                                              : "trapezoidal");
     }
 }
 
@@ -146,9 +161,28 @@ static void apply_implicit(struct gravel *g, struct fix *f, int replace)
     eng_launch(g, k, (size_t)eng_atoms(g)->n);
 }
 
+/* update trapezoidal: opening kick (end_of_step, and the setup forces of a
+ * run) or closing kick (post_force of a step); see kernels/fix_drag.cl. */
+static void apply_trapezoid(struct gravel *g, struct fix *f, int replace, int closing)
+{
+    struct drag *d = f->data;
+    cl_kernel k = d->ktrap;
+    int i = 0;
+    set_common(g, f, k, &i);
+    eng_arg_mem(g, k, i++, f->peratom);
+    eng_arg_int(g, k, i++, replace);
+    eng_arg_int(g, k, i++, closing);
+    eng_arg_real(g, k, i++, 0.5 * g->dt);
+    eng_launch(g, k, (size_t)eng_atoms(g)->n);
+}
+
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct drag *d = f->data;
+    if (d->update == UPD_TRAPEZOIDAL) {
+        apply_trapezoid(g, f, 0, !eng_in_setup(g));
+        return;
+    }
     if (d->update != UPD_EXPLICIT) {
         apply_implicit(g, f, 0);
         return;
@@ -160,6 +194,11 @@ static void post_force(struct gravel *g, struct fix *f)
 
 static void end_of_step(struct gravel *g, struct fix *f)
 {
+    struct drag *d = f->data;
+    if (d->update == UPD_TRAPEZOIDAL) {
+        apply_trapezoid(g, f, 1, 0);
+        return;
+    }
     apply_implicit(g, f, 1);
 }
 

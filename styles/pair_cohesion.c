@@ -159,6 +159,7 @@ static void init(struct gravel *g, struct pair *p)
             c->kc[k] = sqrt(c->kc[ii] * c->kc[jj]);
             c->set[k] = 2;
         }
+    pair_cohesion_overlap_check(g, p);
     pair_cohesion_dimensionless(g, p);
 }
 

@@ -19,9 +19,10 @@
 #include "pair.h"
 #include "pair_cohesion.h"
 
-/* Restitution coefficient of a linear/restitution term of the scene (its
- * coef[1], styles/pair_linear_restitution.c), or 0 if there is none. */
-static double restitution(const struct gravel *g)
+/* The linear contact term of the scene: linear/restitution (coef[0] = ke,
+ * coef[1] = e, styles/pair_linear_restitution.c) or gran/hooke(/history)
+ * (coef[0] = kn); NULL if there is none. */
+static const struct pair *linear_contact(const struct gravel *g)
 {
     const struct pair *p = g->styles.pair, *t[PAIR_MAXTERMS];
     int n = 1;
@@ -29,9 +30,47 @@ static double restitution(const struct gravel *g)
     if (p->style->source_n)
         n = pair_hybrid_terms(p, t);
     for (int k = 0; k < n; k++)
-        if (!strcmp(t[k]->style->name, "linear/restitution"))
-            return t[k]->coef[1];
-    return 0;
+        if (!strcmp(t[k]->style->name, "linear/restitution") ||
+            !strcmp(t[k]->style->name, "gran/hooke") ||
+            !strcmp(t[k]->style->name, "gran/hooke/history"))
+            return t[k];
+    return NULL;
+}
+
+/* Restitution coefficient of a linear/restitution term, or 0. */
+static double restitution(const struct gravel *g)
+{
+    const struct pair *c = linear_contact(g);
+    return c && !strcmp(c->style->name, "linear/restitution") ? c->coef[1] : 0;
+}
+
+void pair_cohesion_overlap_check(struct gravel *g, const struct pair *coh)
+{
+    const struct pair *c = linear_contact(g);
+    if (!c || g->atoms.n == 0)
+        return;
+    double rsum = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        rsum += g->atoms.radius[i];
+    double rmean = rsum / g->atoms.n, db = 2 * rmean, kc, ke = c->coef[0];
+    double de = pair_cohesion_effect_distance(coh, 1, 1, rmean, rmean, &kc);
+    if (de <= db || kc <= 0)
+        return;
+    if (kc >= ke || kc * de >= ke * db) { /* still attractive at full overlap */
+        gr_warn(g, "cohesion stiffness kc = %g is not below the contact stiffness %g of %s: "
+                   "cohesion overpowers the contact and particles can pass through each other",
+                kc, ke, c->style->name);
+        return;
+    }
+    /* resting pair: ke delta = kc (d_e - d_b + delta) */
+    double delta = kc * (de - db) / (ke - kc);
+    gr_print(g, "Cohesion: a resting pair of mean-size type-1 particles overlaps by %g "
+                "(%.3g %% of the contact distance %g; kc %g vs contact stiffness %g)\n",
+             delta, 100 * delta / db, db, kc, ke);
+    if (delta > 0.1 * db)
+        gr_warn(g, "cohesion pulls resting particles %.3g %% of their contact distance into "
+                   "each other (kc %g close to the contact stiffness %g)",
+                100 * delta / db, kc, ke);
 }
 
 void pair_cohesion_dimensionless(struct gravel *g, const struct pair *coh)

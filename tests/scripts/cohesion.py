@@ -450,9 +450,68 @@ def error_checks():
           "%d bad scripts rejected with command and line" % len(cases))
 
 
+def agglomerate_dynamics_check():
+    """compute agglomerate during the sticking collision of table 5.4: two
+    agglomerates while only the effect surfaces overlap, one while the bodies
+    touch (000 sec. 6.2.1: cohesive interaction alone does not join)."""
+    text = open(DECK).read().replace(
+        "thermo_style custom step time v_px v_vx v_fx",
+        "compute ag all agglomerate\nthermo_style custom step time v_px v_vx v_fx c_ag[1] c_ag[4]")
+    code, out = run(["-var", "tend", "0.03"], text)
+    rows = thermo(out)
+    if code != 0 or not rows:
+        check("cohesion_agglomerate_body_contact_only", False, out[-400:])
+        return
+    bad = [r for r in rows if (r["v_px"] < DB) != (r["c_ag[1]"] == 1)
+           or r["c_ag[4]"] != 3 - r["c_ag[1]"]]
+    ncontact = sum(1 for r in rows if r["v_px"] < DB)
+    neffect = sum(1 for r in rows if DB <= r["v_px"] < DE)
+    check("cohesion_agglomerate_body_contact_only", not bad and ncontact > 0 and neffect > 0,
+          "%d rows in body contact -> 1 agglomerate of 2, %d rows with effect overlap only -> 2; "
+          "%d mismatches" % (ncontact, neffect, len(bad)))
+
+
+def stiff_cohesion_check():
+    """Cohesion stiffness near the contact stiffness (issue 4 stability): the
+    run logs the resting overlap kc (d_e - d_b)/(ke - kc), warns above 10 %
+    and when cohesion overpowers the contact; the collision stays finite and
+    gains no energy: |v| never exceeds the undamped bound from the energy
+    E0 = m u0^2/2 over the potential minimum of -kc (d_e - x)^2/2 + ke (d_b - x)^2/2."""
+    out = {}
+    for kc in (1e4, 2e4, 1e5):
+        code, text = run(["-in", DECK, "-var", "kc", str(kc), "-var", "tend", "0.01",
+                          "-var", "every", "1"])
+        out[kc] = (code, text, thermo(text))
+    code, text, rows = out[1e4]
+    m = re.search(r"overlaps by (\S+) \((\S+) % of the contact distance", text)
+    want = 1e4 * (DE - DB) / (KE - 1e4)
+    check("cohesion_stiff_resting_overlap_logged",
+          code == 0 and m and abs(float(m.group(1)) - want) < 1e-6 * want
+          and not re.search(r"WARNING: run: cohesion", text),
+          "kc 1e4: overlap %s (want %.6g, 5.6 %%, no cohesion warning)"
+          % (m.group(1) if m else None, want))
+    code, text, rows = out[2e4]
+    kc = 2e4
+    xeq = (KE * DB - kc * DE) / (KE - kc)
+    umin = -0.5 * kc * (DE - xeq) ** 2 + 0.5 * KE * (DB - xeq) ** 2
+    u0 = -2.0
+    vbound = math.sqrt(u0 * u0 - 2 * umin / M)
+    vmax = max(abs(r["v_vx"]) for r in rows) if rows else float("nan")
+    finite = rows and all(math.isfinite(r["v_px"]) and math.isfinite(r["v_vx"]) for r in rows)
+    check("cohesion_stiff_warned_finite_no_energy_gain",
+          code == 0 and re.search(r"WARNING: run: cohesion pulls resting particles 12.5 %", text)
+          and finite and vmax <= vbound
+          and min(r["v_px"] for r in rows) > 0,
+          "kc = 0.2 ke: warned (12.5 %% resting overlap), max |v| %.5g <= undamped bound %.5g, "
+          "stays apart" % (vmax, vbound))
+    code, text, rows = out[1e5]
+    check("cohesion_overpowering_warned", code == 0 and "cohesion overpowers the contact" in text,
+          "kc = ke: warning that particles can pass through each other")
+
+
 def main():
     for fn in (force_checks, cutoff_checks, collision_checks, momentum_check, numbers_check,
-               error_checks):
+               error_checks, agglomerate_dynamics_check, stiff_cohesion_check):
         try:
             fn()
         except Exception as ex:  # a crash of one group is a failure, not an abort

@@ -180,7 +180,8 @@ timestep %g
 thermo_style custom step time %s
 thermo_modify format float %%.16g
 thermo 100
-run %d
+# the particles never touch: dt need not resolve a collision (verify: run ... force yes)
+run %d force yes
 """ % ("\n".join(lines), mu, uf, dt,
        "\n".join("variable v%d equal vx[%d]" % (k + 1, k + 1) for k in range(8)),
        " ".join("v_v%d" % (k + 1) for k in range(8)), nsteps)

@@ -22,7 +22,9 @@ if [ $rc -eq 0 ] && grep -q '^Created 1000000 atoms' "$tmp/out"; then
 else
     echo "FAIL insert_1e6_count"; cat "$tmp/out"
 fi
-if awk "BEGIN { exit !($secs < 20) }"; then
+# A loose bound that separates O(N) (about 3 s idle) from O(N^2) (hours),
+# not a benchmark: it must hold on a loaded CI machine too.
+if awk "BEGIN { exit !($secs < 120) }"; then
     echo "PASS insert_1e6_time"
 else
     echo "FAIL insert_1e6_time (${secs} s)"

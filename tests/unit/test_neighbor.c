@@ -221,7 +221,7 @@ TEST(nonfinite_stop_names_step_tag_and_cause)
     atoms_add(g, 0, 1, x, 0.5, 0.5);
     g->dt = 0.001;
     CHECK(test_script(g, "pair_style gran/hooke 1e6 NULL 0 NULL 0.5 0\npair_coeff * *\n"
-                         "fix 1 all nve/sphere\nrun 200\n") == GR_ERR);
+                         "fix 1 all nve/sphere\nrun 200 force yes\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "non-finite position or velocity of atom") != NULL);
     CHECK(strstr(g->err.msg, "at step") != NULL);
     CHECK(strstr(g->err.msg, "collision time") != NULL);
@@ -234,7 +234,7 @@ TEST(nonfinite_stop_names_step_tag_and_cause)
     atoms_add(g, 0, 1, y, 0.5, 0.5);
     g->dt = 0.5;
     CHECK(test_script(g, "pair_style gran/hooke 1e6 NULL 0 NULL 0.5 0\npair_coeff * *\n"
-                         "fix 1 all nve/sphere\nrun 200\n") == GR_ERR);
+                         "fix 1 all nve/sphere\nrun 200 force yes\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "Lost atoms: original 2 current 0") != NULL);
     CHECK(strstr(g->err.msg, "0.00314 steps per collision") != NULL);
     gr_destroy(g);
