@@ -122,7 +122,36 @@ def analytic(u0, kc):
     ur = vc(tr)
     esc2 = ur * ur - w * w * (DE - DB) ** 2
     uout = math.sqrt(esc2) if esc2 > 0 else None
-    return dict(w=w, xin=xin, ti=ti, ui=ui, tr=tr, ur=ur, uout=uout)
+    return dict(w=w, xin=xin, ti=ti, ui=ui, tr=tr, ur=ur, uout=uout, xc=xc, vc=vc)
+
+
+def trajectory(u0, kc):
+    """Piecewise analytic solution (x, v) of particle 2 as a function of time,
+    for a collision that rebounds (analytic(u0, kc)["uout"] not None): incoming
+    under cohesion only, body contact (0 <= t - t_i <= t_r), outgoing under
+    cohesion only from d_b at u_r, free flight at u_out beyond d_e."""
+    an = analytic(u0, kc)
+    if an["uout"] is None:
+        raise ValueError("u0 %g, kc %g sticks: no single-contact trajectory" % (u0, kc))
+    w, ti, tr, ur = an["w"], an["ti"], an["tr"], an["ur"]
+    # outgoing, cohesion only: x - d_e = (d_b - d_e) cosh(ws) + u_r/w sinh(ws), s = t - t_i - t_r
+    A, B = DB - DE, ur / w
+    ts = math.atanh((DE - DB) * w / ur) / w     # x(ts) = d_e
+    A0, B0 = -EPS, u0 / w                      # incoming: x - d_e = -eps cosh + u0/w sinh
+
+    def at(t):
+        if t <= ti:
+            return (DE + A0 * math.cosh(w * t) + B0 * math.sinh(w * t),
+                    w * (A0 * math.sinh(w * t) + B0 * math.cosh(w * t)))
+        s = t - ti
+        if s <= tr:
+            return an["xc"](s), an["vc"](s)
+        s -= tr
+        if s <= ts:
+            return (DE + A * math.cosh(w * s) + B * math.sinh(w * s),
+                    w * (A * math.sinh(w * s) + B * math.cosh(w * s)))
+        return DE + an["uout"] * (s - ts), an["uout"]
+    return at
 
 
 def stickiness(u0, kc):

@@ -121,6 +121,38 @@ class ObliqueImpact(Glass):
         return {"x": ex, "v": ev, "e": rows[-1]["v_vz"] / self.vn}
 
 
+class CohesiveCollision:
+    """000 sec. 3.3.4, table 5.4: cohesive normal collision (A.2 piecewise closed form), u0 = -8 m/s rebounds.
+    linear/restitution + cohesion through hybrid/overlay against the analytic
+    solution of tests/scripts/cohesion.py (trajectory, analytic): incoming
+    under cohesion only, body contact, outgoing under cohesion, free flight at
+    the escape speed. Errors: max over the run of |dx| / d_b and |dv| / |u0|."""
+    name = "cohesive_collision"
+    deck = "cohesive_collision.in"
+    u0, kc, tend = -8.0, 100.0, 0.02
+    nsubs = (8, 16, 32, 64, 128)
+    xnorm, vnorm = "d_b", "|u0|"
+    restitution = False
+
+    def __init__(self):
+        import cohesion   # noqa: E402 (tests/scripts, on sys.path above)
+        self.co = cohesion
+        self.exact = cohesion.trajectory(self.u0, self.kc)
+        self.an = cohesion.analytic(self.u0, self.kc)
+        self.sy = cohesion.stickiness(self.u0, self.kc)
+
+    def vars(self, nsub):
+        return {"nsub": nsub, "u0": self.u0, "kc": self.kc, "tend": self.tend}
+
+    def errors(self, rows):
+        ex = ev = 0.0
+        for r in rows:
+            x, v = self.exact(r["Time"])
+            ex = max(ex, abs(r["v_px"] - x) / self.co.DB)
+            ev = max(ev, abs(r["v_vx"] - v) / abs(self.u0))
+        return {"x": ex, "v": ev, "uout": abs(rows[-1]["v_vx"] - self.an["uout"]) / self.an["uout"]}
+
+
 def bounce_heights(rows, r, g):
     """Apex heights (lowest point above the sheet) of the successive flights:
     h = z - r + vz^2/(2 g) from the free-flight samples (exact for velocity
