@@ -68,6 +68,16 @@ bench: deps
 	@$(MAKE) --no-print-directory all
 	@sh tools/bench.sh
 
+# Log regression (tests/regression/, doc/regression.md): every deck in inputs/
+# runs shortened and its thermo log is compared with the committed reference
+# by tools/logcompare. regress-update rewrites the references for review in
+# the diff (LAMMPS=1 also reruns the LAMMPS references with lmp).
+.PHONY: regress regress-update
+regress: all
+	@/usr/bin/python3 tests/regression/regress.py
+regress-update: all
+	@/usr/bin/python3 tests/regression/regress.py --update $(if $(LAMMPS),--lammps)
+
 # libFuzzer target for the interpreter (clang; the harness works in a scratch
 # directory, so its paths are absolute). `make fuzz FUZZ_TIME=600` runs it
 # for that many seconds on one core, niced; new inputs go to build/fuzz/corpus,

@@ -113,6 +113,14 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
     f->style = st;
     f->igroup = igroup;
     f->groupbit = 1u << igroup;
+    /* restart.c: a fix re-specified identically after read_restart continues exactly */
+    f->arghash = 1469598103934665603ull;
+    for (int a = 1; a < argc; a++)
+        for (const char *c = argv[a];; c++) {
+            f->arghash = (f->arghash ^ (unsigned char)*c) * 1099511628211ull;
+            if (!*c)
+                break;
+        }
     /* create may raise: keep f reachable so it is freed (slot at the end) */
     if (g->styles.nfix == g->styles.nfix_cap) {
         int cap = g->styles.nfix_cap ? 2 * g->styles.nfix_cap : 8;

@@ -64,6 +64,13 @@ struct fix_style {
     void (*final_integrate)(struct gravel *g, struct fix *f);
     void (*end_of_step)(struct gravel *g, struct fix *f);
     void (*destroy)(struct fix *f);                                /* optional */
+    /* Restart files (restart.c), optional: global state of the instance as
+     * bytes. write_restart stores at most cap bytes at buf and returns the
+     * size (called with buf NULL to ask the size). read_restart gets exactly
+     * those bytes back for a fix re-created with the same ID and style, at
+     * the start of the next run (after init); it validates len itself. */
+    size_t (*write_restart)(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
+    void (*read_restart)(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);
 };
 
 struct fix {
@@ -82,6 +89,7 @@ struct fix {
     cl_mem peratom;
     cl_mem peratom_tmp;
     size_t peratom_cap;         /* atoms the buffers hold */
+    uint64_t arghash;           /* hash of group, style and arguments (restart.c compares) */
 };
 
 /* The fix with this ID, or NULL. */

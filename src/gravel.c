@@ -7,6 +7,7 @@
 
 #include "atoms.h"
 #include "input.h"
+#include "restart.h"
 #include "run.h"
 #include "styles.h"
 #include "variable.h"
@@ -59,6 +60,7 @@ struct gravel *gr_create(void)
 static void free_state(struct gravel *g)
 {
     engine_destroy(g);
+    restart_free(g);
     styles_free(g);
     regions_free(g);
     atoms_free(&g->atoms);

@@ -22,6 +22,7 @@ struct gravel;
 struct vars;                /* variable.c: opaque */
 struct inp;                 /* input.c: opaque */
 struct engine;              /* run.c: device state, opaque outside run/ocl/neighbor */
+struct restart;             /* restart.c: restart settings and state pending from read_restart */
 
 /* ---- domain: units, box, boundaries, lattice ------------------------------ */
 
@@ -191,6 +192,7 @@ struct gravel {
     bigint laststep_reset;
 
     struct engine *eng;     /* device state, alive across runs; NULL before the first run */
+    struct restart *restart; /* restart.c; NULL until restart/read_restart */
     uint64_t seed_counter;
     int warned_ignored[16]; /* commands with no meaning here warn once */
 };

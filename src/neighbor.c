@@ -617,3 +617,64 @@ double nbr_max_overlap(struct gravel *g)
         best = fmax(best, v[c]);
     return best;
 }
+
+/* ---- restart support (restart.c) ------------------------------------------ */
+
+void nbr_state_free(struct nbr_state *s)
+{
+    free(s->ncount);
+    free(s->nlist);
+    free(s->shear);
+    free(s->xhold);
+    memset(s, 0, sizeof *s);
+}
+
+int nbr_export(struct gravel *g, struct nbr_state *s)
+{
+    memset(s, 0, sizeof *s);
+    struct engine *e = g->eng;
+    if (!e || !e->nbr || !e->nbr->built)
+        return 0;
+    struct nbr *b = e->nbr;
+    int n = e->a.n, maxn = b->list.maxn;
+    s->n = n;
+    s->maxn = maxn;
+    s->ago = b->ago;
+    s->history = e->history;
+    s->ncount = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+    s->nlist = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
+    s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+    if (e->history)
+        s->shear = gr_malloc(g, (3 * (size_t)n * maxn + 1) * sizeof(double));
+    eng_read(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+    eng_read(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
+    eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    if (e->history)
+        eng_read_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
+    return 1;
+}
+
+void nbr_import(struct gravel *g, const struct nbr_state *s)
+{
+    struct engine *e = g->eng;
+    struct nbr *b = get(g);
+    int n = e->a.n;
+    int maxn = s->maxn > 0 ? s->maxn : 1;
+    if (s->n != n)
+        gr_error(g, "restart: neighbor list of %d atoms for %d atoms on the device", s->n, n);
+    alloc_list(g, b, maxn);
+    eng_write(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+    eng_write(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
+    if (e->history) {
+        if (s->shear)
+            eng_write_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
+        else
+            eng_fill_zero(g, b->list.shear, (size_t)n * maxn * 3 * e->rsz);
+    }
+    eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    for (int q = 0; q < 3; q++)
+        b->list.L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    b->ago = s->ago;
+    b->built = 1;
+    b->old_valid = e->history;
+}

@@ -39,4 +39,22 @@ double nbr_max_overlap(struct gravel *g);
  * tests and the sort. Kernels must be set up (nbr_setup). */
 void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m);
 
+/* Restart support (restart.c): the list in host form, partners as device
+ * indices in list order. nbr_export fills s from the current list (0 = no
+ * list built this engine); nbr_import installs s as the current, built list
+ * (old_valid: the next rebuild transfers its history by partner tag) with
+ * the reference positions and the steps since the build, and sets the
+ * periodic lengths from the box. Arrays are caller-owned (free with
+ * nbr_state_free). */
+struct nbr_state {
+    int n, maxn, ago, history;
+    int *ncount;            /* [n] */
+    int *nlist;             /* [n maxn] */
+    double *shear;          /* [3 n maxn], NULL without history */
+    double *xhold;          /* [3 n] */
+};
+int nbr_export(struct gravel *g, struct nbr_state *s);
+void nbr_import(struct gravel *g, const struct nbr_state *s);
+void nbr_state_free(struct nbr_state *s);
+
 #endif

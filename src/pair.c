@@ -31,6 +31,14 @@ void pair_free(struct gravel *g)
     g->styles.pair = NULL;
 }
 
+const struct pair_style *pair_style_find(const char *name)
+{
+    for (int i = 0; pair_styles[i]; i++)
+        if (!strcmp(pair_styles[i]->name, name))
+            return pair_styles[i];
+    return NULL;
+}
+
 /* pair_style style args... */
 void cmd_pair_style(struct gravel *g, int argc, char **argv)
 {

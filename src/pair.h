@@ -15,9 +15,7 @@
  * pack() on the host. fix wall/gran calls the same evaluators with the wall as
  * particle j (radj = 0, radsum = reff = radi, omj = 0, meff = m_i).
  *
- * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. It
- * fills c.reff only when the evaluator's file defines PAIR_NEEDS_REFF (Hertz);
- * other callers (walls) always set it. */
+ * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. */
 #ifndef GR_PAIR_H
 #define GR_PAIR_H
 
@@ -51,6 +49,8 @@ struct pair {
 };
 
 void pair_free(struct gravel *g);
+/* The registered style with this name, or NULL (restart.c). */
+const struct pair_style *pair_style_find(const char *name);
 
 /* Shared by the three gran styles (pair_gran_common.c in styles/):
  * `Kn Kt gamman gammat xmu dampflag [limit_damping]` with LAMMPS defaults. */

@@ -24,6 +24,7 @@
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"
+#include "restart.h"
 
 static double wall(void)
 {
@@ -212,9 +213,13 @@ static void run_steps(struct gravel *g, bigint nsteps)
     double tp = 0, tn = 0, tm = 0, to = 0;
     /* setup: list, step-0 forces without history update, post_force fixes */
     e->setup = 1;
-    nbr_rebuild(g);
+    /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
+    int resumed = restart_resume(g);
+    if (resumed < 1)
+        nbr_rebuild(g);
     e->st.nbuilds = 0;
-    compute_forces(g, freezebit, 1, &tp, &tm);
+    if (resumed < 2)
+        compute_forces(g, freezebit, 1, &tp, &tm);
     e->setup = 0;
     double maxov = nbr_max_overlap(g);
     output_setup(g);
@@ -274,6 +279,7 @@ static void run_steps(struct gravel *g, bigint nsteps)
                 maxov = ov;
             output_step(g);
         }
+        restart_step(g); /* `restart N file`: written when the step is a multiple of N */
         to += wall() - b1;
     }
     double scale = nsamp ? (double)nplain / (double)nsamp : 0.0;

@@ -245,10 +245,35 @@ static void destroy(struct fix *f)
     f->data = NULL;
 }
 
+/* Restart state (restart.c): the time origin of wiggle (the step the fix
+ * was created at), so a re-created fix continues the same oscillation. */
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct wall *w = f->data;
+    int64_t origin = w->time_origin;
+    if (buf && cap >= sizeof origin)
+        memcpy(buf, &origin, sizeof origin);
+    return sizeof origin;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct wall *w = f->data;
+    int64_t origin;
+    if (len != sizeof origin)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+                 sizeof origin);
+    memcpy(&origin, buf, sizeof origin);
+    w->time_origin = origin;
+}
+
 const struct fix_style fix_style_wall_gran = {
     .name = "wall/gran",
     .create = create,
     .init = init,
     .post_force = post_force,
     .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
 };

@@ -6,7 +6,8 @@ gran pair styles; a spinning sphere hitting xplane/yplane/zplane/zcylinder
 walls of fix wall/gran, a wiggling and a shearing wall) runs unchanged in
 gravel; every frame of its dump (x, v, omega every 500 steps, %.15g) must
 match the dump LAMMPS wrote (tests/reference/<deck>.dump, made by
-make_refs.sh) to 1e-6 relative (|a - b| <= 1e-6 max(1, |b|)).
+make_refs.sh) to 1e-6 relative (|a - b| <= 1e-6 max(1, |b|)); three decks
+also run with -precision single and must match to 2e-3.
 
 Then the LAMMPS chute benchmark deck (inputs/bench/chute.in) on
 ../shared/peers/chute/data.chute (linked into a temporary directory, never
@@ -50,11 +51,11 @@ def run_gravel(deck, tmp, extra=()):
                           capture_output=True, text=True, timeout=300)
 
 
-def check_deck(deck):
-    name = os.path.basename(deck)[:-3]
+def check_deck(deck, extra=(), tol=TOL, label=""):
+    name = os.path.basename(deck)[:-3] + label
     ref = read_dump(deck[:-3] + ".dump")
     with tempfile.TemporaryDirectory() as tmp:
-        r = run_gravel(deck, tmp)
+        r = run_gravel(deck, tmp, extra)
         if r.returncode != 0:
             print(f"  gravel failed on {name}: {r.stdout[-800:]}{r.stderr[-800:]}")
             print(f"FAIL lammps_{name}")
@@ -71,7 +72,7 @@ def check_deck(deck):
                 err = abs(a - b) / max(1.0, abs(b))
                 if err > worst:
                     worst, where = err, f"step {step} atom {tag} column {k + 2}"
-    ok = ok and worst <= TOL
+    ok = ok and worst <= tol
     print(f"  {name}: {len(ref)} frames, max relative difference {worst:.3g} {where}")
     print(f"{'PASS' if ok else 'FAIL'} lammps_{name}")
 
@@ -104,6 +105,10 @@ def main():
         print("FAIL lammps_no_decks")
     for deck in decks:
         check_deck(deck)
+    # single precision: same trajectories to float accuracy over a collision
+    for name in ("pair_hertz_history", "wall_zcylinder_hertz_history", "wall_many_hooke_history"):
+        check_deck(os.path.join(ROOT, "tests", "reference", name + ".in"),
+                   ("-precision", "single"), 2e-3, "_single")
     check_chute()
     return 0
 

@@ -12,7 +12,8 @@
  * reference, measured ratios 1.5-4: the contact onset falls between steps at
  * a dt-dependent phase; at dt = 1e-6 LAMMPS and the reference agree to ~1e-6).
  * Head-on Hooke contacts are also checked against the closed-form restitution
- * coefficient exp(-gamman pi / (2 wd)) to 1e-3. */
+ * coefficient exp(-gamman pi / (2 wd)) to 1e-3, and the undamped head-on Hertz
+ * contact against its closed-form duration (Beta function) to 2e-3. */
 #include <stdlib.h>
 
 #include "test.h"
@@ -168,6 +169,33 @@ TEST(wall_hooke_restitution_closed_form)
     CHECK_NEAR(g[0].v[2] / -s.b[0].v[2], e, 1e-3);
 }
 
+/* Undamped head-on Hertz pair: elastic, and the contact lasts
+ * 2 (dmax/v0) (2/5) B(2/5, 1/2) (closed form), measured from the separation
+ * after the contact. */
+TEST(pair_hertz_contact_time_closed_form)
+{
+    struct cref_system s;
+    cref_case_pair(&s, CREF_HERTZ_HISTORY, 0);
+    s.gamman = s.gammat = 0.0;
+    double meff = s.b[0].m * s.b[1].m / (s.b[0].m + s.b[1].m);
+    double reff = s.b[0].rad * s.b[1].rad / (s.b[0].rad + s.b[1].rad);
+    double v0 = s.b[0].v[0] - s.b[1].v[0];
+    double gap = (s.b[1].x[0] - s.b[0].x[0]) - (s.b[0].rad + s.b[1].rad);
+    double t0 = gap / v0, tc = cref_hertz_contact_time(s.kn, reff, meff, v0);
+    double T = t0 + 1.5 * tc;
+    struct cref_body g[2];
+    if (run_case(&s, 2e-5, T, g)) {
+        CHECK(!"gravel run failed");
+        return;
+    }
+    double v1 = g[1].v[0] - g[0].v[0];
+    double sep = (g[1].x[0] - g[0].x[0]) - (s.b[0].rad + s.b[1].rad);
+    double tc_meas = T - t0 - sep / v1;
+    printf("  hertz contact time %.6g, closed form %.6g; restitution %.6f\n", tc_meas, tc, v1 / v0);
+    CHECK_NEAR(v1 / v0, 1.0, 1e-4);
+    CHECK_NEAR(tc_meas / tc, 1.0, 2e-3);
+}
+
 int main(void)
 {
     RUN(pair_hooke_vs_reference);
@@ -178,5 +206,6 @@ int main(void)
     RUN(wall_hertz_history_vs_reference);
     RUN(pair_hooke_restitution_closed_form);
     RUN(wall_hooke_restitution_closed_form);
+    RUN(pair_hertz_contact_time_closed_form);
     return 0;
 }

@@ -1,0 +1,1295 @@
+/* restart.c - binary restart files (write_restart, read_restart, restart)
+ * and the exact continuation of a run from one (restart_resume).
+ *
+ * File = 32-byte header + payload. Header: magic "GRAVELRS", a 32-bit
+ * endian marker 0x01020304 in the writer's byte order, the format version,
+ * the payload length and the FNV-1a 64 hash of the payload. Payload: tagged
+ * sections (u32 id, u32 0, u64 length, bytes), values in native byte order
+ * (the marker proves it is ours). The reader checks header, length and hash
+ * before parsing, parses every section into a private image with bounds
+ * checks, validates it, and only then applies it: a bad file never leaves a
+ * half-read state. See doc/restart.md.
+ *
+ * Exactness. A run continued from a restart file equals the uninterrupted
+ * run bit for bit when the file carries the device state at the written
+ * step: atoms in device order (unwrapped as the device holds them), the
+ * neighbor list in its order with the contact history (partners by tag), the
+ * reference positions and steps since the last build (rebuild decisions),
+ * the forces and torques of the step, and the fixes' state. restart_resume()
+ * then installs that list instead of rebuilding at setup (a rebuild would
+ * wrap, re-sort and re-order the sums) and, when pair style, coefficients,
+ * time step and fixes (ID, style, group, arguments, order) are those of the
+ * writer, keeps the written forces instead of re-evaluating them (a setup
+ * evaluation is not bitwise idempotent for sliding contacts). Anything else
+ * falls back to LAMMPS semantics: rebuild, history carried by partner tag,
+ * setup forces. */
+#include "restart.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "run.h"
+
+enum sect {
+    S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
+    S_LAST
+};
+static const char *const sect_name[] = {"", "info", "domain", "neighbor", "groups", "types",
+                                        "atoms", "pair", "neighbor list", "fixes"};
+
+/* ---- growable output buffer -------------------------------------------------- */
+
+struct wbuf {
+    unsigned char *p;
+    size_t n, cap;
+};
+
+static void put(struct gravel *g, struct wbuf *w, const void *src, size_t len)
+{
+    if (w->n + len > w->cap) {
+        size_t cap = w->cap ? w->cap : 4096;
+        while (cap < w->n + len)
+            cap *= 2;
+        w->p = gr_realloc(g, w->p, cap);
+        w->cap = cap;
+    }
+    if (len)
+        memcpy(w->p + w->n, src, len);
+    w->n += len;
+}
+static void put_u32(struct gravel *g, struct wbuf *w, uint32_t v) { put(g, w, &v, 4); }
+static void put_i32(struct gravel *g, struct wbuf *w, int32_t v) { put(g, w, &v, 4); }
+static void put_u64(struct gravel *g, struct wbuf *w, uint64_t v) { put(g, w, &v, 8); }
+static void put_i64(struct gravel *g, struct wbuf *w, int64_t v) { put(g, w, &v, 8); }
+static void put_f64(struct gravel *g, struct wbuf *w, double v) { put(g, w, &v, 8); }
+static void put_str(struct gravel *g, struct wbuf *w, const char *s)
+{
+    size_t len = strlen(s);
+    put_u32(g, w, (uint32_t)len);
+    put(g, w, s, len);
+}
+/* Section header; returns the offset of the length field (sect_end fills it). */
+static size_t sect_begin(struct gravel *g, struct wbuf *w, enum sect id)
+{
+    put_u32(g, w, (uint32_t)id);
+    put_u32(g, w, 0);
+    size_t at = w->n;
+    put_u64(g, w, 0);
+    return at;
+}
+static void sect_end(struct wbuf *w, size_t at)
+{
+    uint64_t len = (uint64_t)(w->n - at - 8);
+    memcpy(w->p + at, &len, 8);
+}
+
+static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
+{
+    const unsigned char *c = data;
+    for (size_t i = 0; i < len; i++)
+        h = (h ^ c[i]) * 1099511628211ull;
+    return h;
+}
+#define FNV_INIT 1469598103934665603ull
+
+/* ---- bounds-checked input cursor ------------------------------------------------ */
+
+struct rbuf {
+    const unsigned char *p;
+    size_t n, off;
+    int bad;
+};
+
+static int get(struct rbuf *r, void *dst, size_t len)
+{
+    if (r->bad || len > r->n - r->off) {
+        r->bad = 1;
+        if (dst)
+            memset(dst, 0, len);
+        return 0;
+    }
+    if (dst)
+        memcpy(dst, r->p + r->off, len);
+    r->off += len;
+    return 1;
+}
+static uint32_t get_u32(struct rbuf *r) { uint32_t v = 0; get(r, &v, 4); return v; }
+static int32_t get_i32(struct rbuf *r) { int32_t v = 0; get(r, &v, 4); return v; }
+static uint64_t get_u64(struct rbuf *r) { uint64_t v = 0; get(r, &v, 8); return v; }
+static int64_t get_i64(struct rbuf *r) { int64_t v = 0; get(r, &v, 8); return v; }
+static double get_f64(struct rbuf *r) { double v = 0; get(r, &v, 8); return v; }
+/* String of at most maxlen bytes into dst (NUL-terminated). */
+static void get_str(struct rbuf *r, char *dst, size_t maxlen)
+{
+    uint32_t len = get_u32(r);
+    if (len >= maxlen) {
+        r->bad = 1;
+        dst[0] = 0;
+        return;
+    }
+    get(r, dst, len);
+    dst[r->bad ? 0 : len] = 0;
+}
+/* Array of count elements of size sz, freshly allocated (NULL on overflow). */
+static void *get_array(struct rbuf *r, size_t count, size_t sz)
+{
+    if (r->bad || (sz && count > (r->n - r->off) / sz)) {
+        r->bad = 1;
+        return NULL;
+    }
+    void *p = malloc(count * sz + 1);
+    if (!p) {
+        r->bad = 1;
+        return NULL;
+    }
+    get(r, p, count * sz);
+    return p;
+}
+
+/* ---- state: settings of `restart`, scratch buffers, what read_restart left ----- */
+
+struct fix_saved {
+    char id[GR_NAMELEN], style[GR_NAMELEN];
+    unsigned char *blob;
+    size_t bloblen;
+    uint32_t peratom_bytes, rsz;
+    int nrows;                  /* rows keyed by the list section's devtag[] */
+    unsigned char *peratom;
+};
+
+/* The image of a file, parsed and validated before anything is applied. */
+struct image {
+    char version[64];
+    bigint step, laststep_reset;
+    double time, dt;
+    int dt_set, single;
+    uint64_t seed_counter;
+    struct domain dom;
+    struct neigh_settings neigh;
+    struct groups groups;
+    int ntypes;
+    double *type_mass;
+    int64_t maxtag;
+    int n;
+    int64_t *tag;
+    int *type;
+    unsigned *mask;
+    double *x, *v, *f, *omega, *torque, *radius, *rmass;
+    int *image;
+    int has_pair, coeff_set, ncoef;
+    char pair_name[GR_NAMELEN];
+    double coef[PAIR_MAXCOEF];
+    /* neighbor list (device order of the writer) */
+    int has_list, exact, history, ndev, maxn, ago;
+    uint64_t fingerprint;
+    int64_t *devtag;
+    int *ncount;
+    int64_t *partner;           /* concatenated rows */
+    size_t npartner;
+    double *shear;              /* 3 per partner entry, history only */
+    double *xhold;              /* 3 ndev, exact only */
+    int nfix;
+    struct fix_saved *fix;
+    /* filled when applied */
+    uint64_t atoms_hash;
+};
+
+struct restart {
+    /* LAMMPS keeps both modes at once: [0] one file per write (root with the
+     * step), [1] two files written alternately */
+    bigint every[2];
+    char *file[3];              /* [0] root with '*', [1] and [2] the pair */
+    int toggle;
+    struct wbuf wb;             /* scratch of the write in progress */
+    unsigned char *filebuf;     /* scratch of the read in progress */
+    struct image *loading;      /* being parsed */
+    struct image *pending;      /* applied by read_restart, resumed at the next run */
+};
+
+static void image_free(struct image *im)
+{
+    if (!im)
+        return;
+    void *p[] = {im->type_mass, im->tag, im->type, im->mask, im->x, im->v, im->f, im->omega,
+                 im->torque, im->radius, im->rmass, im->image, im->devtag, im->ncount,
+                 im->partner, im->shear, im->xhold};
+    for (size_t i = 0; i < sizeof p / sizeof *p; i++)
+        free(p[i]);
+    for (int i = 0; i < im->nfix; i++) {
+        free(im->fix[i].blob);
+        free(im->fix[i].peratom);
+    }
+    free(im->fix);
+    free(im);
+}
+
+static struct restart *state(struct gravel *g)
+{
+    if (!g->restart)
+        g->restart = gr_calloc(g, 1, sizeof *g->restart);
+    return g->restart;
+}
+
+void restart_free(struct gravel *g)
+{
+    struct restart *r = g->restart;
+    if (!r)
+        return;
+    for (int k = 0; k < 3; k++)
+        free(r->file[k]);
+    free(r->wb.p);
+    free(r->filebuf);
+    image_free(r->loading);
+    image_free(r->pending);
+    free(r);
+    g->restart = NULL;
+}
+
+/* ---- fingerprints --------------------------------------------------------------- */
+
+/* What the forces of a step depend on besides the atoms and the list: pair
+ * style and coefficients, time step, and the fixes in order. */
+static uint64_t force_fingerprint(const struct gravel *g)
+{
+    uint64_t h = FNV_INIT;
+    const struct pair *p = g->styles.pair;
+    if (p) {
+        h = fnv1a(h, p->style->name, strlen(p->style->name) + 1);
+        h = fnv1a(h, p->coef, sizeof p->coef);
+        h = fnv1a(h, &p->coeff_set, sizeof p->coeff_set);
+    }
+    h = fnv1a(h, &g->dt, sizeof g->dt);
+    h = fnv1a(h, &g->styles.nfix, sizeof g->styles.nfix);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        h = fnv1a(h, f->id, strlen(f->id) + 1);
+        h = fnv1a(h, f->style->name, strlen(f->style->name) + 1);
+        h = fnv1a(h, &f->arghash, sizeof f->arghash);
+    }
+    return h;
+}
+
+/* Every per-atom host array, in order. */
+static uint64_t atoms_fingerprint(const struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    size_t n = (size_t)a->n;
+    uint64_t h = fnv1a(FNV_INIT, &a->n, sizeof a->n);
+    h = fnv1a(h, a->tag, n * sizeof *a->tag);
+    h = fnv1a(h, a->type, n * sizeof *a->type);
+    h = fnv1a(h, a->mask, n * sizeof *a->mask);
+    h = fnv1a(h, a->x, 3 * n * sizeof(double));
+    h = fnv1a(h, a->v, 3 * n * sizeof(double));
+    h = fnv1a(h, a->f, 3 * n * sizeof(double));
+    h = fnv1a(h, a->omega, 3 * n * sizeof(double));
+    h = fnv1a(h, a->torque, 3 * n * sizeof(double));
+    h = fnv1a(h, a->radius, n * sizeof(double));
+    h = fnv1a(h, a->rmass, n * sizeof(double));
+    h = fnv1a(h, a->image, 3 * n * sizeof(int));
+    return h;
+}
+
+/* ---- writing ---------------------------------------------------------------------- */
+
+/* 1 when the device arrays equal the host arrays in the same order (the
+ * device list then describes the host atoms exactly). */
+static int device_matches_host(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    const struct atoms *at = &g->atoms;
+    int n = at->n;
+    if (!e || !e->a.x || e->a.n != n)
+        return 0;
+    size_t sz = 3 * (size_t)n + 1;
+    double *buf = gr_malloc(g, sz * sizeof(double));
+    int64_t *tags = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+    eng_read(g, e->a.tag, 0, (size_t)n * sizeof(int64_t), tags);
+    int same = !memcmp(tags, at->tag, (size_t)n * sizeof(int64_t));
+    const double *host[] = {at->x, at->v, at->f, at->omega, at->torque};
+    cl_mem dev[] = {e->a.x, e->a.v, e->a.f, e->a.omega, e->a.torque};
+    for (int k = 0; k < 5 && same; k++) {
+        if (!dev[k])
+            continue; /* no rotation: omega/torque not on the device */
+        eng_read_reals(g, dev[k], 3 * (size_t)n, buf);
+        same = !memcmp(buf, host[k], 3 * (size_t)n * sizeof(double));
+    }
+    free(buf);
+    free(tags);
+    return same;
+}
+
+static void write_fixes(struct gravel *g, struct wbuf *w, int ndev);
+
+static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
+{
+    struct engine *e = g->eng;
+    struct nbr_state s;
+    if (!e || !e->a.x || !nbr_export(g, &s)) {
+        write_fixes(g, w, 0);
+        return;
+    }
+    int n = s.n;
+    int64_t *devtag = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+    eng_read(g, e->a.tag, 0, (size_t)n * sizeof(int64_t), devtag);
+    int exact = device_matches_host(g);
+    size_t at = sect_begin(g, w, S_LIST);
+    put_i32(g, w, exact);
+    put_i32(g, w, s.history);
+    put_i32(g, w, n);
+    put_i32(g, w, s.maxn);
+    put_i32(g, w, s.ago);
+    put_u64(g, w, force_fingerprint(g));
+    put(g, w, devtag, (size_t)n * sizeof(int64_t));
+    put(g, w, s.ncount, (size_t)n * sizeof(int));
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < s.ncount[i]; k++)
+            put_i64(g, w, devtag[s.nlist[(size_t)i * s.maxn + k]]);
+    if (s.history)
+        for (int i = 0; i < n; i++)
+            put(g, w, s.shear + 3 * (size_t)i * s.maxn, 3 * (size_t)s.ncount[i] * sizeof(double));
+    if (exact)
+        put(g, w, s.xhold, 3 * (size_t)n * sizeof(double));
+    sect_end(w, at);
+    nbr_state_free(&s);
+    free(devtag);
+    write_fixes(g, w, n);
+}
+
+/* Fixes: ID, style, global state (write_restart hook) and, with a list of
+ * ndev atoms written, the engine-managed per-atom state in device order. */
+static void write_fixes(struct gravel *g, struct wbuf *w, int ndev)
+{
+    struct engine *e = g->eng;
+    size_t at = sect_begin(g, w, S_FIXES);
+    put_i32(g, w, g->styles.nfix);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        put_str(g, w, f->id);
+        put_str(g, w, f->style->name);
+        size_t len = f->style->write_restart ? f->style->write_restart(g, f, NULL, 0) : 0;
+        put_u64(g, w, len);
+        if (len) {
+            unsigned char *b = gr_malloc(g, len);
+            size_t got = f->style->write_restart(g, f, b, len);
+            put(g, w, b, len);
+            free(b);
+            if (got != len)
+                gr_error(g, "fix %s: restart state size changed while writing", f->id);
+        }
+        int rows = ndev && f->peratom && f->peratom_bytes ? ndev : 0;
+        put_u32(g, w, rows ? (uint32_t)f->peratom_bytes : 0);
+        put_u32(g, w, e ? (uint32_t)e->rsz : 0);
+        put_i32(g, w, rows);
+        if (rows) {
+            size_t bytes = (size_t)rows * f->peratom_bytes;
+            unsigned char *b = gr_malloc(g, bytes + 1);
+            eng_read(g, f->peratom, 0, bytes, b);
+            put(g, w, b, bytes);
+            free(b);
+        }
+    }
+    sect_end(w, at);
+}
+
+static void build_payload(struct gravel *g, struct wbuf *w)
+{
+    const struct atoms *a = &g->atoms;
+    const struct domain *d = &g->dom;
+    size_t at = sect_begin(g, w, S_INFO);
+    put_str(g, w, GR_VERSION);
+    put_i64(g, w, g->step);
+    put_i64(g, w, g->laststep_reset);
+    put_f64(g, w, g->time);
+    put_f64(g, w, g->dt);
+    put_i32(g, w, g->dt_set);
+    put_i32(g, w, g->eng ? g->eng->single : g->opt.single);
+    put_u64(g, w, g->seed_counter);
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_DOMAIN);
+    put_i32(g, w, (int32_t)d->units);
+    put_i32(g, w, d->dimension);
+    for (int q = 0; q < 3; q++)
+        for (int s = 0; s < 2; s++)
+            put_i32(g, w, d->bnd[q][s]);
+    for (int q = 0; q < 3; q++)
+        put_i32(g, w, d->periodic[q]);
+    const double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
+    for (int k = 0; k < 5; k++)
+        for (int q = 0; q < 3; q++)
+            put_f64(g, w, vec[k][q]);
+    const struct lattice *l = &d->lat;
+    put_i32(g, w, l->style);
+    for (int q = 0; q < 3; q++) {
+        put_f64(g, w, l->a[q]);
+        put_f64(g, w, l->prim[q]);
+        put_f64(g, w, l->origin[q]);
+    }
+    put_i32(g, w, l->nbasis);
+    for (int b = 0; b < 8; b++)
+        for (int q = 0; q < 3; q++)
+            put_f64(g, w, l->basis[b][q]);
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_NEIGH);
+    const struct neigh_settings *ns = &g->neigh;
+    put_f64(g, w, ns->skin);
+    int32_t iv[] = {ns->style_bin, ns->every, ns->delay, ns->check, ns->once,
+                    ns->one,       ns->page,  ns->nexclude, ns->nexclude_type};
+    for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
+        put_i32(g, w, iv[k]);
+    for (int k = 0; k < 16; k++)
+        for (int s = 0; s < 2; s++) {
+            put_i32(g, w, ns->exclude_group[k][s]);
+            put_i32(g, w, ns->exclude_type[k][s]);
+        }
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_GROUPS);
+    put_i32(g, w, g->groups.n);
+    for (int k = 0; k < GR_MAXGROUP; k++) {
+        put_i32(g, w, g->groups.used[k]);
+        put_str(g, w, g->groups.used[k] ? g->groups.name[k] : "");
+    }
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_TYPES);
+    put_i32(g, w, a->ntypes);
+    for (int t = 0; t <= a->ntypes; t++)
+        put_f64(g, w, a->type_mass ? a->type_mass[t] : 0.0);
+    put_i64(g, w, a->maxtag);
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_ATOMS);
+    size_t n = (size_t)a->n;
+    put_i32(g, w, a->n);
+    put(g, w, a->tag, n * sizeof(int64_t));
+    put(g, w, a->type, n * sizeof(int));
+    put(g, w, a->mask, n * sizeof(unsigned));
+    put(g, w, a->x, 3 * n * sizeof(double));
+    put(g, w, a->v, 3 * n * sizeof(double));
+    put(g, w, a->f, 3 * n * sizeof(double));
+    put(g, w, a->omega, 3 * n * sizeof(double));
+    put(g, w, a->torque, 3 * n * sizeof(double));
+    put(g, w, a->radius, n * sizeof(double));
+    put(g, w, a->rmass, n * sizeof(double));
+    put(g, w, a->image, 3 * n * sizeof(int));
+    sect_end(w, at);
+
+    at = sect_begin(g, w, S_PAIR);
+    const struct pair *p = g->styles.pair;
+    put_i32(g, w, p != NULL);
+    if (p) {
+        put_str(g, w, p->style->name);
+        put_i32(g, w, p->coeff_set);
+        put_i32(g, w, PAIR_MAXCOEF);
+        for (int k = 0; k < PAIR_MAXCOEF; k++)
+            put_f64(g, w, p->coef[k]);
+    }
+    sect_end(w, at);
+
+    write_list_and_fixes(g, w);
+}
+
+void restart_write(struct gravel *g, const char *path)
+{
+    struct restart *r = state(g);
+    if (g->eng && g->eng->active)
+        run_sync_host(g);
+    free(r->wb.p);
+    memset(&r->wb, 0, sizeof r->wb);
+    struct wbuf *w = &r->wb;
+    /* header with the length and hash filled in after the payload */
+    put(g, w, RESTART_MAGIC, 8);
+    put_u32(g, w, RESTART_ENDIAN_MARKER);
+    put_u32(g, w, RESTART_FORMAT_VERSION);
+    put_u64(g, w, 0);
+    put_u64(g, w, 0);
+    build_payload(g, w);
+    uint64_t len = (uint64_t)(w->n - RESTART_HEADER_BYTES);
+    uint64_t hash = fnv1a(FNV_INIT, w->p + RESTART_HEADER_BYTES, (size_t)len);
+    memcpy(w->p + 16, &len, 8);
+    memcpy(w->p + 24, &hash, 8);
+
+    size_t plen = strlen(path);
+    char *tmp = gr_malloc(g, plen + 32);
+    snprintf(tmp, plen + 32, "%s.tmp.%ld", path, (long)getpid());
+    FILE *fp = fopen(tmp, "wb");
+    if (!fp) {
+        int err = errno;
+        free(tmp);
+        gr_error(g, "cannot open restart file '%.200s' for writing: %s", path, strerror(err));
+    }
+    size_t wrote = fwrite(w->p, 1, w->n, fp);
+    int ok = wrote == w->n && fflush(fp) == 0 && fsync(fileno(fp)) == 0;
+    int err = errno;
+    ok = (fclose(fp) == 0) && ok;
+    if (ok && rename(tmp, path) != 0) {
+        err = errno;
+        ok = 0;
+    }
+    if (!ok) {
+        remove(tmp);
+        free(tmp);
+        gr_error(g, "writing restart file '%.200s' failed: %s (the previous file, if any, is "
+                    "unchanged)", path, strerror(err));
+    }
+    free(tmp);
+    free(r->wb.p);
+    memset(&r->wb, 0, sizeof r->wb);
+}
+
+/* name with `*` replaced by the step (LAMMPS) into out. */
+static void expand_star(struct gravel *g, const char *name, char *out, size_t len)
+{
+    const char *star = strchr(name, '*');
+    int w = star ? snprintf(out, len, "%.*s%lld%s", (int)(star - name), name,
+                            (long long)g->step, star + 1)
+                 : snprintf(out, len, "%s", name);
+    if (w < 0 || (size_t)w >= len)
+        gr_error(g, "restart file name too long");
+}
+
+static void check_name(struct gravel *g, const char *name)
+{
+    if (!name[0])
+        gr_error(g, "empty restart file name");
+    if (strchr(name, '%'))
+        gr_error(g, "'%%' in restart file name '%.200s': per-processor restart files are not "
+                    "supported (one process writes one file)", name);
+    const char *star = strchr(name, '*');
+    if (star && strchr(star + 1, '*'))
+        gr_error(g, "restart file name '%.200s' has more than one '*'", name);
+}
+
+/* write_restart file */
+void cmd_write_restart(struct gravel *g, int argc, char **argv)
+{
+    if (argc > 1) {
+        if (!strcmp(argv[1], "fileper") || !strcmp(argv[1], "nfile"))
+            gr_error(g, "keyword '%s' is not supported (one process writes one file)", argv[1]);
+        gr_error(g, "unknown keyword '%.64s' (write_restart takes only a file name)", argv[1]);
+    }
+    check_name(g, argv[0]);
+    char path[4096];
+    expand_star(g, argv[0], path, sizeof path);
+    restart_write(g, path);
+    gr_print(g, "Restart file %s written at step %lld (%d atoms)\n", path, (long long)g->step,
+             g->atoms.n);
+}
+
+/* restart 0 | restart N root | restart N file1 file2 */
+void cmd_restart(struct gravel *g, int argc, char **argv)
+{
+    bigint n = arg_bigint(g, argv[0], "restart interval N");
+    if (n < 0)
+        gr_error(g, "restart interval must be >= 0, got %lld", (long long)n);
+    if (n == 0) {
+        if (argc > 1)
+            gr_error(g, "restart 0 takes no file names");
+        if (g->restart)
+            g->restart->every[0] = g->restart->every[1] = 0;
+        return;
+    }
+    if (argc < 2)
+        gr_error(g, "restart %lld needs a file name (restart N root or restart N file1 file2)",
+                 (long long)n);
+    if (argc > 3) {
+        if (!strcmp(argv[argc - 2], "fileper") || !strcmp(argv[argc - 2], "nfile"))
+            gr_error(g, "keyword '%s' is not supported (one process writes one file)",
+                     argv[argc - 2]);
+        gr_error(g, "too many arguments: restart N root, or restart N file1 file2");
+    }
+    for (int i = 1; i < argc; i++)
+        check_name(g, argv[i]);
+    if (argc == 3 && !strcmp(argv[1], argv[2]))
+        gr_error(g, "the two restart files must differ, got '%.200s' twice", argv[1]);
+    struct restart *r = state(g);
+    if (argc == 2) {
+        /* LAMMPS: without '*' the step is appended as root.STEP */
+        size_t len = strlen(argv[1]) + 3;
+        char *root = gr_malloc(g, len);
+        snprintf(root, len, strchr(argv[1], '*') ? "%s" : "%s.*", argv[1]);
+        free(r->file[0]);
+        r->file[0] = root;
+        r->every[0] = n;
+    } else {
+        char *f1 = gr_strdup(g, argv[1]);
+        free(r->file[1]);
+        r->file[1] = f1;
+        char *f2 = gr_strdup(g, argv[2]);
+        free(r->file[2]);
+        r->file[2] = f2;
+        r->every[1] = n;
+        r->toggle = 0;
+    }
+}
+
+void restart_step(struct gravel *g)
+{
+    struct restart *r = g->restart;
+    if (!r)
+        return;
+    char path[4096];
+    if (r->every[0] > 0 && g->step % r->every[0] == 0) {
+        expand_star(g, r->file[0], path, sizeof path);
+        restart_write(g, path);
+    }
+    if (r->every[1] > 0 && g->step % r->every[1] == 0) {
+        snprintf(path, sizeof path, "%s", r->file[1 + r->toggle]);
+        r->toggle ^= 1;
+        restart_write(g, path);
+    }
+}
+
+/* ---- reading ------------------------------------------------------------------------ */
+
+#define BAD(...)                                                                         \
+    do {                                                                                 \
+        snprintf(err, errlen, __VA_ARGS__);                                              \
+        return 0;                                                                        \
+    } while (0)
+
+static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *err,
+                         size_t errlen, int seen_atoms)
+{
+    switch (id) {
+    case S_INFO:
+        get_str(r, im->version, sizeof im->version);
+        im->step = get_i64(r);
+        im->laststep_reset = get_i64(r);
+        im->time = get_f64(r);
+        im->dt = get_f64(r);
+        im->dt_set = get_i32(r);
+        im->single = get_i32(r);
+        im->seed_counter = get_u64(r);
+        if (!r->bad && (im->step < 0 || !(im->dt > 0) || !isfinite(im->dt) ||
+                        !isfinite(im->time)))
+            BAD("invalid step %lld or time step %g", (long long)im->step, im->dt);
+        break;
+    case S_DOMAIN: {
+        struct domain *d = &im->dom;
+        d->units = (enum units)get_i32(r);
+        d->dimension = get_i32(r);
+        for (int q = 0; q < 3; q++)
+            for (int s = 0; s < 2; s++)
+                d->bnd[q][s] = (char)get_i32(r);
+        for (int q = 0; q < 3; q++)
+            d->periodic[q] = get_i32(r);
+        double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
+        for (int k = 0; k < 5; k++)
+            for (int q = 0; q < 3; q++)
+                vec[k][q] = get_f64(r);
+        struct lattice *l = &d->lat;
+        l->style = get_i32(r);
+        for (int q = 0; q < 3; q++) {
+            l->a[q] = get_f64(r);
+            l->prim[q] = get_f64(r);
+            l->origin[q] = get_f64(r);
+        }
+        l->nbasis = get_i32(r);
+        for (int b = 0; b < 8; b++)
+            for (int q = 0; q < 3; q++)
+                l->basis[b][q] = get_f64(r);
+        if (r->bad)
+            break;
+        if (d->units != UNITS_LJ && d->units != UNITS_SI && d->units != UNITS_CGS)
+            BAD("invalid units code %d", (int)d->units);
+        if (d->dimension != 2 && d->dimension != 3)
+            BAD("invalid dimension %d", d->dimension);
+        if (l->nbasis < 0 || l->nbasis > 8)
+            BAD("invalid lattice basis count %d", l->nbasis);
+        for (int q = 0; q < 3; q++) {
+            for (int s = 0; s < 2; s++)
+                if (!strchr("pfsm", d->bnd[q][s]) || !d->bnd[q][s])
+                    BAD("invalid boundary flag in dimension %c", "xyz"[q]);
+            if ((d->periodic[q] != 0) != (d->bnd[q][0] == 'p'))
+                BAD("inconsistent periodic flag in dimension %c", "xyz"[q]);
+            if (!(d->lo[q] < d->hi[q]) || !isfinite(d->lo[q]) || !isfinite(d->hi[q]) ||
+                !isfinite(d->minlo[q]) || !isfinite(d->minhi[q]) || !isfinite(d->small[q]))
+                BAD("invalid box bounds %g %g in dimension %c", d->lo[q], d->hi[q], "xyz"[q]);
+        }
+        d->box_exists = 1;
+        break;
+    }
+    case S_NEIGH: {
+        struct neigh_settings *ns = &im->neigh;
+        ns->skin = get_f64(r);
+        int *iv[] = {&ns->style_bin, &ns->every, &ns->delay, &ns->check, &ns->once,
+                     &ns->one,       &ns->page,  &ns->nexclude, &ns->nexclude_type};
+        for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
+            *iv[k] = get_i32(r);
+        for (int k = 0; k < 16; k++)
+            for (int s = 0; s < 2; s++) {
+                ns->exclude_group[k][s] = get_i32(r);
+                ns->exclude_type[k][s] = get_i32(r);
+            }
+        if (!r->bad && (!(ns->skin >= 0) || !isfinite(ns->skin) || ns->every < 1 || ns->delay < 0 ||
+                        ns->nexclude < 0 || ns->nexclude > 16 || ns->nexclude_type < 0 ||
+                        ns->nexclude_type > 16))
+            BAD("invalid neighbor settings");
+        for (int k = 0; k < 16 && !r->bad; k++)
+            for (int s = 0; s < 2; s++)
+                if (ns->exclude_group[k][s] < 0 || ns->exclude_group[k][s] >= GR_MAXGROUP)
+                    BAD("invalid neighbor exclusion group");
+        break;
+    }
+    case S_GROUPS:
+        im->groups.n = get_i32(r);
+        for (int k = 0; k < GR_MAXGROUP; k++) {
+            im->groups.used[k] = get_i32(r);
+            get_str(r, im->groups.name[k], GR_NAMELEN);
+        }
+        if (!r->bad && (im->groups.n < 1 || im->groups.n > GR_MAXGROUP || !im->groups.used[0] ||
+                        strcmp(im->groups.name[0], "all")))
+            BAD("invalid group table");
+        break;
+    case S_TYPES:
+        im->ntypes = get_i32(r);
+        if (r->bad)
+            break;
+        if (im->ntypes < 1 || im->ntypes > 1000000)
+            BAD("invalid number of atom types %d", im->ntypes);
+        im->type_mass = get_array(r, (size_t)im->ntypes + 1, sizeof(double));
+        im->maxtag = get_i64(r);
+        break;
+    case S_ATOMS: {
+        im->n = get_i32(r);
+        if (r->bad)
+            break;
+        if (im->n < 0)
+            BAD("invalid atom count %d", im->n);
+        size_t n = (size_t)im->n;
+        im->tag = get_array(r, n, sizeof(int64_t));
+        im->type = get_array(r, n, sizeof(int));
+        im->mask = get_array(r, n, sizeof(unsigned));
+        im->x = get_array(r, 3 * n, sizeof(double));
+        im->v = get_array(r, 3 * n, sizeof(double));
+        im->f = get_array(r, 3 * n, sizeof(double));
+        im->omega = get_array(r, 3 * n, sizeof(double));
+        im->torque = get_array(r, 3 * n, sizeof(double));
+        im->radius = get_array(r, n, sizeof(double));
+        im->rmass = get_array(r, n, sizeof(double));
+        im->image = get_array(r, 3 * n, sizeof(int));
+        break;
+    }
+    case S_PAIR:
+        im->has_pair = get_i32(r);
+        if (im->has_pair) {
+            get_str(r, im->pair_name, sizeof im->pair_name);
+            im->coeff_set = get_i32(r);
+            im->ncoef = get_i32(r);
+            if (!r->bad && (im->ncoef < 0 || im->ncoef > PAIR_MAXCOEF))
+                BAD("invalid pair coefficient count %d", im->ncoef);
+            for (int k = 0; k < im->ncoef; k++)
+                im->coef[k] = get_f64(r);
+        }
+        break;
+    case S_LIST: {
+        if (!seen_atoms)
+            BAD("neighbor list section before the atoms");
+        im->has_list = 1;
+        im->exact = get_i32(r);
+        im->history = get_i32(r);
+        im->ndev = get_i32(r);
+        im->maxn = get_i32(r);
+        im->ago = get_i32(r);
+        im->fingerprint = get_u64(r);
+        if (r->bad)
+            break;
+        /* a list never holds more slots per atom than atoms (+ its growth margin) */
+        if (im->ndev < 0 || im->maxn < 0 || im->ago < 0 ||
+            (int64_t)im->maxn > 64 + 2 * (int64_t)im->ndev)
+            BAD("invalid neighbor list header");
+        size_t n = (size_t)im->ndev;
+        im->devtag = get_array(r, n, sizeof(int64_t));
+        im->ncount = get_array(r, n, sizeof(int));
+        if (r->bad)
+            break;
+        size_t tot = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (im->ncount[i] < 0 || im->ncount[i] > im->maxn)
+                BAD("invalid neighbor count %d (capacity %d)", im->ncount[i], im->maxn);
+            tot += (size_t)im->ncount[i];
+        }
+        im->npartner = tot;
+        im->partner = get_array(r, tot, sizeof(int64_t));
+        if (im->history)
+            im->shear = get_array(r, 3 * tot, sizeof(double));
+        if (im->exact) {
+            if (im->ndev != im->n || (im->n && memcmp(im->devtag, im->tag,
+                                                      n * sizeof(int64_t))))
+                BAD("neighbor list marked exact does not match the atoms");
+            im->xhold = get_array(r, 3 * n, sizeof(double));
+        }
+        break;
+    }
+    case S_FIXES: {
+        int nfix = get_i32(r);
+        if (r->bad)
+            break;
+        if (nfix < 0 || nfix > 100000)
+            BAD("invalid fix count %d", nfix);
+        im->fix = calloc((size_t)nfix + 1, sizeof *im->fix);
+        if (!im->fix)
+            BAD("out of memory");
+        im->nfix = nfix;
+        for (int i = 0; i < nfix && !r->bad; i++) {
+            struct fix_saved *fs = &im->fix[i];
+            get_str(r, fs->id, sizeof fs->id);
+            get_str(r, fs->style, sizeof fs->style);
+            uint64_t len = get_u64(r);
+            if (r->bad)
+                break;
+            if (len > r->n - r->off)
+                BAD("fix %s: state length beyond the section", fs->id);
+            fs->bloblen = (size_t)len;
+            fs->blob = get_array(r, fs->bloblen, 1);
+            fs->peratom_bytes = get_u32(r);
+            fs->rsz = get_u32(r);
+            fs->nrows = get_i32(r);
+            if (r->bad)
+                break;
+            if (fs->nrows && (fs->nrows != im->ndev || !im->has_list))
+                BAD("fix %s: per-atom state of %d atoms does not match the list", fs->id,
+                    fs->nrows);
+            if (fs->peratom_bytes % 4 || fs->peratom_bytes > 1024)
+                BAD("fix %s: invalid per-atom state size %u", fs->id, fs->peratom_bytes);
+            fs->peratom = get_array(r, (size_t)fs->nrows, fs->peratom_bytes);
+        }
+        break;
+    }
+    default:
+        BAD("unknown section id %u", id);
+    }
+    if (r->bad)
+        BAD("%s section is truncated", id < S_LAST ? sect_name[id] : "?");
+    if (r->off != r->n)
+        BAD("%s section has %zu unexpected trailing bytes", sect_name[id], r->n - r->off);
+    return 1;
+}
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Cross-section checks of a fully parsed image. */
+static int validate(const struct image *im, char *err, size_t errlen)
+{
+    if (im->has_pair && !pair_style_find(im->pair_name))
+        BAD("pair style '%s' of the file is not in this build", im->pair_name);
+    for (int i = 0; i < im->n; i++) {
+        if (im->tag[i] < 1 || im->tag[i] > im->maxtag)
+            BAD("atom tag %lld outside 1..%lld", (long long)im->tag[i], (long long)im->maxtag);
+        if (im->type[i] < 1 || im->type[i] > im->ntypes)
+            BAD("atom %lld has type %d outside 1..%d", (long long)im->tag[i], im->type[i],
+                im->ntypes);
+        if (!(im->mask[i] & 1u))
+            BAD("atom %lld is not in group all", (long long)im->tag[i]);
+        for (int k = 1; k < GR_MAXGROUP; k++)
+            if ((im->mask[i] >> k & 1u) && !im->groups.used[k])
+                BAD("atom %lld is in an undefined group", (long long)im->tag[i]);
+    }
+    int64_t *t = malloc(((size_t)im->n + 1) * sizeof *t);
+    if (!t)
+        BAD("out of memory");
+    memcpy(t, im->tag, (size_t)im->n * sizeof *t);
+    qsort(t, (size_t)im->n, sizeof *t, cmp_i64);
+    for (int i = 1; i < im->n; i++)
+        if (t[i] == t[i - 1]) {
+            long long dup = (long long)t[i];
+            free(t);
+            BAD("duplicate atom tag %lld", dup);
+        }
+    free(t);
+    return 1;
+}
+
+/* Read and check the whole file into r->loading; on any failure free it and
+ * raise a clear error naming the file. */
+static void load(struct gravel *g, const char *path)
+{
+    struct restart *r = state(g);
+    free(r->filebuf);
+    r->filebuf = NULL;
+    image_free(r->loading);
+    r->loading = NULL;
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        gr_error(g, "cannot open restart file '%.200s': %s", path, strerror(errno));
+    long size = -1;
+    if (fseek(fp, 0, SEEK_END) == 0)
+        size = ftell(fp);
+    if (size < 0 || fseek(fp, 0, SEEK_SET) != 0) {
+        fclose(fp);
+        gr_error(g, "cannot read restart file '%.200s' (not a regular file?)", path);
+    }
+    r->filebuf = malloc((size_t)size + 1);
+    if (!r->filebuf) {
+        fclose(fp);
+        gr_error(g, "restart file '%.200s' of %ld bytes does not fit in memory", path, size);
+    }
+    size_t got = fread(r->filebuf, 1, (size_t)size, fp);
+    fclose(fp);
+    if (got != (size_t)size)
+        gr_error(g, "reading restart file '%.200s' failed", path);
+    const unsigned char *b = r->filebuf;
+    if ((size_t)size < RESTART_HEADER_BYTES || memcmp(b, RESTART_MAGIC, 8))
+        gr_error(g, "'%.200s' is not a gravel restart file (%s)", path,
+                 (size_t)size < 8 ? "too short" : "no GRAVELRS signature");
+    uint32_t marker, version;
+    uint64_t len, hash;
+    memcpy(&marker, b + 8, 4);
+    memcpy(&version, b + 12, 4);
+    memcpy(&len, b + 16, 8);
+    memcpy(&hash, b + 24, 8);
+    if (marker != RESTART_ENDIAN_MARKER) {
+        if (marker == __builtin_bswap32(RESTART_ENDIAN_MARKER))
+            gr_error(g, "restart file '%.200s' was written on a machine of the other byte order",
+                     path);
+        gr_error(g, "restart file '%.200s' has an invalid byte-order marker 0x%08x (corrupted)",
+                 path, marker);
+    }
+    if (marker == RESTART_ENDIAN_MARKER && version != RESTART_FORMAT_VERSION)
+        gr_error(g, "restart file '%.200s' has format version %u; this gravel (%s) reads "
+                    "version %u", path, version, GR_VERSION, RESTART_FORMAT_VERSION);
+    uint64_t have = (uint64_t)size - RESTART_HEADER_BYTES;
+    if (len != have)
+        gr_error(g, "restart file '%.200s' is %s: the header announces %llu bytes of data, the "
+                    "file holds %llu", path, len > have ? "truncated" : "corrupted (too long)",
+                 (unsigned long long)len, (unsigned long long)have);
+    if (fnv1a(FNV_INIT, b + RESTART_HEADER_BYTES, (size_t)len) != hash)
+        gr_error(g, "restart file '%.200s' is corrupted (checksum mismatch)", path);
+
+    struct image *im = calloc(1, sizeof *im);
+    if (!im)
+        gr_error(g, "out of memory reading restart file '%.200s'", path);
+    r->loading = im;
+    char err[300] = "";
+    struct rbuf all = {b + RESTART_HEADER_BYTES, (size_t)len, 0, 0};
+    unsigned seen = 0;
+    while (all.off < all.n && !err[0]) {
+        uint32_t id = get_u32(&all);
+        uint32_t zero = get_u32(&all);
+        uint64_t slen = get_u64(&all);
+        if (all.bad || zero != 0 || slen > all.n - all.off) {
+            snprintf(err, sizeof err, "bad section header at byte %zu",
+                     all.off + RESTART_HEADER_BYTES);
+            break;
+        }
+        if (id >= 1 && id < S_LAST && (seen >> id & 1u)) {
+            snprintf(err, sizeof err, "duplicate %s section", sect_name[id]);
+            break;
+        }
+        struct rbuf s = {all.p + all.off, (size_t)slen, 0, 0};
+        if (parse_section(im, id, &s, err, sizeof err, (seen >> S_ATOMS) & 1u))
+            seen |= 1u << id;
+        all.off += (size_t)slen;
+    }
+    const enum sect required[] = {S_INFO, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR,
+                                  S_FIXES};
+    for (size_t k = 0; k < sizeof required / sizeof *required && !err[0]; k++)
+        if (!(seen >> required[k] & 1u))
+            snprintf(err, sizeof err, "the %s section is missing", sect_name[required[k]]);
+    if (!err[0])
+        validate(im, err, sizeof err);
+    free(r->filebuf);
+    r->filebuf = NULL;
+    if (err[0]) {
+        image_free(im);
+        r->loading = NULL;
+        gr_error(g, "restart file '%.200s' is invalid: %s", path, err);
+    }
+}
+
+/* read_restart with `*`: the matching file with the largest step (LAMMPS). */
+static void resolve_star(struct gravel *g, const char *pattern, char *out, size_t outlen)
+{
+    const char *star = strchr(pattern, '*');
+    const char *slash = strrchr(pattern, '/');
+    if (slash && slash > star)
+        gr_error(g, "'*' in a directory name is not supported: '%.200s'", pattern);
+    char dir[4096] = ".";
+    const char *base = pattern;
+    if (slash) {
+        snprintf(dir, sizeof dir, "%.*s", (int)(slash - pattern), pattern);
+        if (!dir[0])
+            snprintf(dir, sizeof dir, "/");
+        base = slash + 1;
+    }
+    size_t pre = (size_t)(star - base);
+    const char *suf = star + 1;
+    size_t slen = strlen(suf);
+    DIR *dp = opendir(dir);
+    if (!dp)
+        gr_error(g, "cannot list directory '%.200s' for '%.200s': %s", dir, pattern,
+                 strerror(errno));
+    long long best = -1;
+    struct dirent *de;
+    while ((de = readdir(dp))) {
+        const char *nm = de->d_name;
+        size_t nl = strlen(nm);
+        if (nl <= pre + slen || strncmp(nm, base, pre) || strcmp(nm + nl - slen, suf))
+            continue;
+        long long v = 0;
+        int ok = 1;
+        for (size_t i = pre; i < nl - slen; i++) {
+            if (nm[i] < '0' || nm[i] > '9' || v > (1LL << 58)) {
+                ok = 0;
+                break;
+            }
+            v = 10 * v + (nm[i] - '0');
+        }
+        if (ok && v > best)
+            best = v;
+    }
+    closedir(dp);
+    if (best < 0)
+        gr_error(g, "no restart file matches '%.200s'", pattern);
+    snprintf(out, outlen, "%.*s%lld%s", (int)(star - pattern), pattern, best, suf);
+}
+
+/* read_restart file: verify, then apply. */
+void cmd_read_restart(struct gravel *g, int argc, char **argv)
+{
+    if (argc > 1) {
+        if (!strcmp(argv[1], "remap"))
+            gr_error(g, "keyword 'remap' is not needed: atoms are kept as written");
+        gr_error(g, "unknown keyword '%.64s' (read_restart takes only a file name)", argv[1]);
+    }
+    char path[4096];
+    if (strchr(argv[0], '%'))
+        gr_error(g, "'%%' in restart file name '%.200s': per-processor restart files are not "
+                    "supported", argv[0]);
+    if (strchr(argv[0], '*'))
+        resolve_star(g, argv[0], path, sizeof path);
+    else
+        snprintf(path, sizeof path, "%s", argv[0]);
+    load(g, path);
+    struct restart *r = g->restart;
+    struct image *im = r->loading;
+
+    /* apply: nothing below can fail on the file's content */
+    g->dom = im->dom;
+    if (!g->thermo.norm_set) /* as the units command: thermo normalization follows units */
+        g->thermo.norm = g->dom.units == UNITS_LJ;
+    g->neigh = im->neigh;
+    g->groups = im->groups;
+    g->step = im->step;
+    g->laststep_reset = im->laststep_reset;
+    g->time = im->time;
+    g->dt = im->dt;
+    g->dt_set = im->dt_set;
+    g->seed_counter = im->seed_counter;
+    struct atoms *a = &g->atoms;
+    atoms_set_ntypes(g, im->ntypes);
+    memcpy(a->type_mass, im->type_mass, ((size_t)im->ntypes + 1) * sizeof(double));
+    a->n = 0;
+    atoms_reserve(g, im->n);
+    size_t n = (size_t)im->n;
+    memcpy(a->tag, im->tag, n * sizeof(int64_t));
+    memcpy(a->type, im->type, n * sizeof(int));
+    memcpy(a->mask, im->mask, n * sizeof(unsigned));
+    memcpy(a->x, im->x, 3 * n * sizeof(double));
+    memcpy(a->v, im->v, 3 * n * sizeof(double));
+    memcpy(a->f, im->f, 3 * n * sizeof(double));
+    memcpy(a->omega, im->omega, 3 * n * sizeof(double));
+    memcpy(a->torque, im->torque, 3 * n * sizeof(double));
+    memcpy(a->radius, im->radius, n * sizeof(double));
+    memcpy(a->rmass, im->rmass, n * sizeof(double));
+    memcpy(a->image, im->image, 3 * n * sizeof(int));
+    a->n = im->n;
+    a->maxtag = im->maxtag;
+    pair_free(g);
+    if (im->has_pair) {
+        struct pair *p = gr_calloc(g, 1, sizeof *p);
+        p->style = pair_style_find(im->pair_name);
+        memcpy(p->coef, im->coef, (size_t)im->ncoef * sizeof(double));
+        p->coeff_set = im->coeff_set;
+        g->styles.pair = p;
+    }
+    im->atoms_hash = atoms_fingerprint(g);
+    image_free(r->pending);
+    r->pending = im;
+    r->loading = NULL;
+    if (im->single != g->opt.single && im->has_list)
+        gr_warn(g, "restart file written in %s precision, running in %s: the continuation "
+                   "is not bitwise exact", im->single ? "single" : "double",
+                g->opt.single ? "single" : "double");
+    gr_print(g, "Reading restart file %s (written by gravel %s at step %lld)\n  %d atoms, %d "
+                "atom types%s%s\n", path, im->version, (long long)im->step, im->n, im->ntypes,
+             im->has_pair ? ", pair style " : "", im->has_pair ? im->pair_name : "");
+    if (im->has_list) {
+        size_t nshear = 0;
+        for (size_t k = 0; im->history && k < im->npartner; k++)
+            nshear += im->shear[3 * k] != 0 || im->shear[3 * k + 1] != 0 ||
+                      im->shear[3 * k + 2] != 0;
+        gr_print(g, "  %zu neighbor entries, %zu with contact history; state of %d fix(es)%s\n",
+                 im->npartner, nshear, im->nfix, im->exact ? "; exact continuation data" : "");
+    }
+}
+
+/* ---- resuming at the next run --------------------------------------------------------- */
+
+struct tagidx {
+    int64_t tag;
+    int idx;
+};
+static int cmp_tagidx(const void *a, const void *b)
+{
+    return cmp_i64(&((const struct tagidx *)a)->tag, &((const struct tagidx *)b)->tag);
+}
+static int find_idx(const struct tagidx *map, int n, int64_t tag)
+{
+    struct tagidx key = {tag, 0};
+    const struct tagidx *hit = bsearch(&key, map, (size_t)n, sizeof *map, cmp_tagidx);
+    return hit ? hit->idx : -1;
+}
+
+/* Field by field (a struct copy may leave padding bytes different). */
+static int neigh_equal(const struct neigh_settings *a, const struct neigh_settings *b)
+{
+    return a->skin == b->skin && a->style_bin == b->style_bin && a->every == b->every &&
+           a->delay == b->delay && a->check == b->check && a->once == b->once &&
+           a->one == b->one && a->page == b->page && a->nexclude == b->nexclude &&
+           a->nexclude_type == b->nexclude_type &&
+           !memcmp(a->exclude_group, b->exclude_group, sizeof a->exclude_group) &&
+           !memcmp(a->exclude_type, b->exclude_type, sizeof a->exclude_type);
+}
+
+int restart_resume(struct gravel *g)
+{
+    struct restart *r = g->restart;
+    if (!r || !r->pending)
+        return 0;
+    struct image *im = r->pending;
+    struct engine *e = g->eng;
+    int n = e->a.n;
+    /* the device holds the host atoms in host order (just uploaded) */
+    struct tagidx *map = gr_malloc(g, ((size_t)n + 1) * sizeof *map);
+    for (int i = 0; i < n; i++) {
+        map[i].tag = g->atoms.tag[i];
+        map[i].idx = i;
+    }
+    qsort(map, (size_t)n, sizeof *map, cmp_tagidx);
+    /* row of each written (device-order) atom in the current order, or -1 */
+    int *row = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(int));
+    for (int i = 0; i < im->ndev; i++)
+        row[i] = find_idx(map, n, im->devtag[i]);
+
+    int exact = im->has_list && im->exact && n == im->n &&
+                atoms_fingerprint(g) == im->atoms_hash &&
+                neigh_equal(&g->neigh, &im->neigh) &&
+                !memcmp(g->dom.lo, im->dom.lo, sizeof g->dom.lo) &&
+                !memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi) &&
+                e->single == im->single;
+
+    /* fix state, for fixes re-created with the same ID and style */
+    for (int k = 0; k < im->nfix; k++) {
+        struct fix_saved *fs = &im->fix[k];
+        struct fix *f = fix_find(g, fs->id);
+        if (!f || strcmp(f->style->name, fs->style)) {
+            if (fs->bloblen || fs->nrows)
+                gr_warn(g, "restart: state of fix %s (%s) not restored: no fix with this ID "
+                           "and style", fs->id, fs->style);
+            continue;
+        }
+        if (fs->bloblen) {
+            if (f->style->read_restart)
+                f->style->read_restart(g, f, fs->blob, fs->bloblen);
+            else
+                gr_warn(g, "restart: fix %s (%s) of this build keeps no restart state",
+                        fs->id, fs->style);
+        }
+        if (fs->nrows) {
+            if (!f->peratom || f->peratom_bytes != fs->peratom_bytes || fs->rsz != e->rsz) {
+                gr_warn(g, "restart: per-atom state of fix %s not restored (size or precision "
+                           "differs)", fs->id);
+                exact = 0;
+                continue;
+            }
+            size_t pb = fs->peratom_bytes;
+            unsigned char *buf = gr_calloc(g, (size_t)n * pb + 1, 1);
+            for (int i = 0; i < fs->nrows; i++)
+                if (row[i] >= 0)
+                    memcpy(buf + (size_t)row[i] * pb, fs->peratom + (size_t)i * pb, pb);
+            eng_write(g, f->peratom, 0, (size_t)n * pb, buf);
+            free(buf);
+        }
+    }
+
+    int result = 0;
+    if (im->has_list && n > 0) {
+        struct nbr_state s;
+        memset(&s, 0, sizeof s);
+        s.n = n;
+        s.history = e->history;
+        s.ncount = gr_calloc(g, (size_t)n + 1, sizeof(int));
+        /* rows of the current atoms, partners mapped by tag (unknown partners dropped) */
+        size_t *first = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(size_t));
+        size_t off = 0;
+        for (int i = 0; i < im->ndev; i++) {
+            first[i] = off;
+            off += (size_t)im->ncount[i];
+        }
+        int maxn = exact ? im->maxn : 1;
+        if (!exact)
+            for (int i = 0; i < im->ndev; i++)
+                if (row[i] >= 0 && im->ncount[i] > maxn)
+                    maxn = im->ncount[i];
+        s.maxn = maxn > 0 ? maxn : 1;
+        s.nlist = gr_calloc(g, (size_t)n * s.maxn + 1, sizeof(int));
+        if (e->history)
+            s.shear = gr_calloc(g, 3 * (size_t)n * s.maxn + 1, sizeof(double));
+        for (int i = 0; i < im->ndev; i++) {
+            int ri = row[i];
+            if (ri < 0)
+                continue;
+            for (int k = 0; k < im->ncount[i]; k++) {
+                int j = find_idx(map, n, im->partner[first[i] + k]);
+                if (j < 0)
+                    continue;
+                size_t slot = (size_t)ri * s.maxn + (size_t)s.ncount[ri]++;
+                s.nlist[slot] = j;
+                if (e->history && im->history)
+                    memcpy(s.shear + 3 * slot, im->shear + 3 * (first[i] + k),
+                           3 * sizeof(double));
+            }
+        }
+        free(first);
+        s.xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+        memcpy(s.xhold, exact ? im->xhold : g->atoms.x, 3 * (size_t)n * sizeof(double));
+        s.ago = exact ? im->ago : 0;
+        exact = exact && e->history == im->history;
+        nbr_import(g, &s);
+        nbr_state_free(&s);
+        if (exact)
+            result = force_fingerprint(g) == im->fingerprint ? 2 : 1;
+    }
+    free(row);
+    free(map);
+    if (result == 1)
+        gr_print(g, "Restart: continuing with the written neighbor list; forces recomputed "
+                    "(pair style, time step or fixes differ from the writer)\n");
+    else if (result == 2)
+        gr_print(g, "Restart: exact continuation of step %lld\n", (long long)im->step);
+    else if (im->has_list)
+        gr_print(g, "Restart: atoms or settings changed since the file was written; contact "
+                    "history carried into a new neighbor list\n");
+    image_free(im);
+    r->pending = NULL;
+    return result;
+}

@@ -1,0 +1,121 @@
+/* test_wall_gran.c - fix wall/gran argument validation (every error names
+ * the problem and the script line) and the wall physics that needs no
+ * reference: a sphere resting on the floor settles where kn delta = m g, a
+ * sphere outside the reach of a NULL face feels nothing, the wiggle moves the
+ * wall face, and the history of a model is zeroed when the contact ends. */
+#include "test.h"
+#include "atoms.h"
+
+#define BOX "units lj\natom_style sphere\nboundary f f f\nregion b block -4 4 -4 4 -4 4\n" \
+            "create_box 1 b\n"
+#define BOXP "units lj\natom_style sphere\nboundary p p f\nregion b block -4 4 -4 4 -4 4\n" \
+             "create_box 1 b\n"
+
+TEST(errors)
+{
+    CHECK_ERROR(BOX "fix w all wall/gran\n", "expects model", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hook 1 NULL 1 NULL 0.5 1 zplane 0 NULL\n",
+                "unknown fix wall/gran model 'hook'", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular hooke 1 1 zplane 0 NULL\n",
+                "'granular' is not supported", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5\n", "got 5 argument(s)", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke -1 NULL 1 NULL 0.5 1 zplane 0 NULL\n", "Kn", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 20000 1 zplane 0 NULL\n",
+                "xmu must be between 0 and 10000", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 2 zplane 0 NULL\n", "dampflag",
+                6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplne 0 NULL\n",
+                "unknown fix wall/gran wall style 'zplne'", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0\n", "zplane", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 1 0\n",
+                "must be below hi", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zcylinder -2\n",
+                "cylinder radius", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 region r\n",
+                "'region' is not supported", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wigle z 1 1\n",
+                "unknown fix wall/gran keyword 'wigle'", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wiggle q 1 1\n",
+                "expected dimension x, y or z", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wiggle z 1 0\n",
+                "wiggle period", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wiggle z 1 1 "
+                    "shear x 1\n",
+                "cannot both wiggle and shear", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zcylinder 2 wiggle x 1 1\n",
+                "can only wiggle along z", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL shear z 1\n",
+                "cannot shear along its normal", 6);
+    CHECK_ERROR(BOXP "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 xplane 0 NULL\n",
+                "periodic dimension x", 6);
+    CHECK_ERROR(BOXP "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zcylinder 2\n",
+                "periodic x or y", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL contacts\n",
+                "'contacts' is not supported", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran hooke/history 1 0 1 NULL 0.5 1 zplane 0 NULL\n",
+                "needs Kt > 0", 6);
+}
+
+static const char *atom_deck(void)
+{
+    return BOX "create_atoms 1 single 0.5 0.5 -2.0 units box\n"
+               "set atom 1 diameter 1.0 density 1.9098593\n"
+               "pair_style gran/hooke 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+               "timestep 0.001\nfix 1 all nve/sphere\nfix 2 all gravity 1.0 vector 0 0 -1\n"
+               "thermo 0\n";
+}
+
+/* A sphere (m = 1) left on the floor comes to rest with overlap m g / kn. */
+TEST(rest_on_floor)
+{
+    struct gravel *g = test_engine();
+    char s[2048];
+    snprintf(s, sizeof s, "%sfix 3 all wall/gran hooke/history 2000 NULL 50 NULL 0.5 1 zplane "
+                          "-2.5 NULL\nrun 3000\n", atom_deck());
+    CHECK(test_script(g, s) == GR_OK);
+    double m = g->atoms.rmass[0];
+    CHECK_NEAR(m, 1.0, 1e-6);
+    CHECK_NEAR(g->atoms.x[2], -2.5 + 0.5 - m * 1.0 / 2000.0, 1e-7);
+    CHECK_NEAR(g->atoms.v[2], 0.0, 1e-7);
+    gr_destroy(g);
+}
+
+/* The hi face alone (lo NULL) pushes down a sphere that touches it; one
+ * that does not touch it falls freely: z = z0 - t^2/2 exactly. */
+TEST(null_face_free_fall)
+{
+    struct gravel *g = test_engine();
+    char s[2048];
+    snprintf(s, sizeof s, "%sfix 3 all wall/gran hooke 2000 NULL 50 NULL 0.5 1 zplane NULL "
+                          "3.0\nrun 500\n", atom_deck());
+    CHECK(test_script(g, s) == GR_OK);
+    /* velocity Verlet is exact for constant acceleration */
+    CHECK_NEAR(g->atoms.x[2], -2.0 - 0.5 * 0.5 * 0.5, 1e-12);
+    CHECK_NEAR(g->atoms.v[2], -0.5, 1e-12);
+    gr_destroy(g);
+}
+
+/* A wiggling floor lifts a resting sphere: after a quarter period the floor
+ * has risen by A (1 - cos(pi/2)) = A, and so has the sphere (within its
+ * contact compliance). */
+TEST(wiggle_lifts)
+{
+    struct gravel *g = test_engine();
+    char s[2048];
+    snprintf(s, sizeof s, "%sfix 3 all wall/gran hooke/history 200000 NULL 500 NULL 0.5 1 "
+                          "zplane -2.5 NULL\nrun 2000\nunfix 3\n"
+                          "fix 4 all wall/gran hooke/history 200000 NULL 500 NULL 0.5 1 "
+                          "zplane -2.5 NULL wiggle z 0.05 4.0\nrun 1000\n", atom_deck());
+    CHECK(test_script(g, s) == GR_OK);
+    CHECK_NEAR(g->atoms.x[2], -2.0 + 0.05, 2e-3);
+    gr_destroy(g);
+}
+
+int main(void)
+{
+    RUN(errors);
+    RUN(rest_on_floor);
+    RUN(null_face_free_fall);
+    RUN(wiggle_lifts);
+    return 0;
+}
