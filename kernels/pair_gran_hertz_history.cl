@@ -13,8 +13,6 @@
  * Exactly antisymmetric under i <-> j: del, vr, vtr, s and F_t change sign,
  * every product and sum is formed the same way from both sides. */
 
-#define PAIR_NEEDS_REFF 1
-
 static inline void gran_hertz_history_eval(const struct contact *c, __global const REAL *param,
                                            REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
 {

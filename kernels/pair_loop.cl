@@ -7,8 +7,7 @@
  * slot k of i's list; it is zeroed when the pair is not touching (LAMMPS). The
  * entry of j for the same pair holds exactly minus i's entry.
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
- * (freezebit), meff is the other particle's mass (LAMMPS pair gran).
- * reff is computed only when the evaluator's file defines PAIR_NEEDS_REFF. */
+ * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
 #ifdef PAIR_EVAL
 __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL *v,
@@ -67,11 +66,7 @@ __kernel void pair_loop(const int n, __global const REAL *x, __global const REAL
         c.radi = radi;
         c.radj = radj;
         c.radsum = radsum;
-#ifdef PAIR_NEEDS_REFF
         c.reff = radi * radj / radsum;
-#else
-        c.reff = 0; /* unused by the active evaluator */
-#endif
         c.vr = vi - vload3(j, v);
         c.omi = omi;
 #ifdef HAS_ROTATION

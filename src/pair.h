@@ -15,9 +15,7 @@
  * pack() on the host. fix wall/gran calls the same evaluators with the wall as
  * particle j (radj = 0, radsum = reff = radi, omj = 0, meff = m_i).
  *
- * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. It
- * fills c.reff only when the evaluator's file defines PAIR_NEEDS_REFF (Hertz);
- * other callers (walls) always set it. */
+ * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. */
 #ifndef GR_PAIR_H
 #define GR_PAIR_H
 
