@@ -13,8 +13,6 @@
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
 
 /* R* enters the law: the pair loop must fill c->reff (kernels/pair_loop.cl) */
-#define PAIR_NEEDS_REFF 1
-
 static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
                                       REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
 {
