@@ -75,10 +75,6 @@ static void check_id(struct gravel *g, const char *id)
 
 void cmd_compute(struct gravel *g, int argc, char **argv)
 {
-    if (argc < 3)
-        gr_error(g, "expected: compute ID group style args...");
-    if (!g->dom.box_exists)
-        gr_error(g, "compute before the simulation box is defined");
     check_id(g, argv[0]);
     if (compute_find(g, argv[0]))
         gr_error(g, "compute ID '%.64s' already exists; use uncompute first", argv[0]);

@@ -224,7 +224,6 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
 
 void cmd_create_atoms(struct gravel *g, int argc, char **argv)
 {
-    domain_require_box(g);
     int type = arg_int_range(g, argv[0], 1, g->atoms.ntypes, "atom type");
     const char *style = argv[1];
     int iarg;

@@ -9,8 +9,6 @@
 
 void cmd_create_box(struct gravel *g, int argc, char **argv)
 {
-    if (g->dom.box_exists)
-        gr_error(g, "the simulation box already exists");
     int ntypes = arg_int_range(g, argv[0], 1, 1000000, "number of atom types");
     struct region *r = region_get(g, argv[1]);
     if (argc > 2)

@@ -135,10 +135,6 @@ static void check_id(struct gravel *g, const char *id)
 
 void cmd_dump(struct gravel *g, int argc, char **argv)
 {
-    if (argc < 5)
-        gr_error(g, "expected: dump ID group style N file args...");
-    if (!g->dom.box_exists)
-        gr_error(g, "dump before the simulation box is defined");
     check_id(g, argv[0]);
     if (dump_find(g, argv[0]))
         gr_error(g, "dump ID '%.64s' already exists; use undump first", argv[0]);

@@ -307,7 +307,6 @@ void cmd_group(struct gravel *g, int argc, char **argv)
 {
     const char *id = argv[0], *style = argv[1];
     struct atoms *a = &g->atoms;
-    domain_require_box(g);
     if (!strcmp(style, "delete")) {
         if (argc != 2)
             gr_error(g, "group delete takes no further arguments");

@@ -448,11 +448,9 @@ static void read_file(struct rd *r, const double shift[3])
 
 void cmd_read_data(struct gravel *g, int argc, char **argv)
 {
-    if (g->dom.box_exists)
-        gr_error(g, "the simulation box already exists");
     double shift[3] = {0, 0, 0};
     int nocoeff = 0, extra_types = 0;
-    const char *group = NULL;
+    const char *volatile group = NULL; /* read again after the setjmp below */
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "shift")) {
             arg_need(g, argc, i, 3, "shift");

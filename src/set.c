@@ -194,7 +194,6 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **
 
 void cmd_set(struct gravel *g, int argc, char **argv)
 {
-    domain_require_box(g);
     if (argc < 4)
         gr_error(g, "expected: set style ID keyword value ...");
     char *sel = gr_calloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1), 1);

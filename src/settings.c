@@ -8,19 +8,12 @@
 #include "domain.h"
 #include "error.h"
 
-/* Defence in depth for pre-box commands (the dispatcher checks phases too). */
-static void require_no_box(struct gravel *g)
-{
-    if (g->dom.box_exists)
-        gr_error(g, "must be used before the simulation box is created");
-}
 
 /* units lj|si|cgs: only defaults differ (gr_unit_defaults: timestep, skin,
  * thermo normalization); gravel converts nothing. */
 void cmd_units(struct gravel *g, int argc, char **argv)
 {
     (void)argc;
-    require_no_box(g);
     if (strcmp(argv[0], "lj") == 0)
         g->dom.units = UNITS_LJ;
     else if (strcmp(argv[0], "si") == 0)
@@ -40,7 +33,6 @@ void cmd_units(struct gravel *g, int argc, char **argv)
 void cmd_dimension(struct gravel *g, int argc, char **argv)
 {
     (void)argc;
-    require_no_box(g);
     int d = arg_int(g, argv[0], "dimension");
     if (d == 2)
         gr_error(g, "2d simulations are not supported: gravel is 3d only");
@@ -52,7 +44,6 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
 /* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted. */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
-    require_no_box(g);
     if (strcmp(argv[0], "sphere") != 0)
         gr_error(g, "atom_style '%.32s' is not supported: gravel has only atom_style sphere",
                  argv[0]);
@@ -155,7 +146,6 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
 void cmd_mass(struct gravel *g, int argc, char **argv)
 {
     (void)argc;
-    domain_require_box(g);
     int lo, hi;
     arg_type_range(g, argv[0], g->atoms.ntypes, &lo, &hi);
     double m = arg_positive(g, argv[1], "mass");

@@ -240,7 +240,6 @@ static void parse_opts(struct gravel *g, int argc, char **argv, int start, struc
 
 void cmd_velocity(struct gravel *g, int argc, char **argv)
 {
-    domain_require_box(g);
     int ig = arg_group(g, argv[0]);
     const char *style = argv[1];
     struct atoms *a = &g->atoms;

@@ -59,7 +59,6 @@ static void write_all(struct gravel *g, FILE *fp, const int *order)
 
 void cmd_write_data(struct gravel *g, int argc, char **argv)
 {
-    domain_require_box(g);
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "nocoeff") || !strcmp(argv[i], "nofix")) {
             continue; /* gravel writes no coefficient or fix sections */
