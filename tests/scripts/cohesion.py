@@ -24,6 +24,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import seeds_verify as sv  # noqa: E402  (thermo_rows)
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
 DECK = os.path.join(ROOT, "inputs", "verification", "cohesive_collision.in")
@@ -49,21 +52,7 @@ def run(args, text=None, cwd=None):
 
 
 def thermo(out):
-    rows, header = [], None
-    for line in out.splitlines():
-        w = line.split()
-        if w and w[0] == "Step":
-            header = w
-            continue
-        if header and line.startswith("Loop time"):
-            header = None
-            continue
-        if header and len(w) == len(header):
-            try:
-                rows.append({h: float(x) for h, x in zip(header, w)})
-            except ValueError:
-                pass
-    return rows
+    return sv.thermo_rows(out)
 
 
 # ---- analytic solution of 000 appendix A.2 (exact for this force law) ----

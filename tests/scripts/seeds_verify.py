@@ -31,18 +31,10 @@ def check(name, ok, detail=""):
         failures += 1
 
 
-def run_deck(deck, precision, variables):
-    """Run a deck; return the thermo table as a list of dicts (floats)."""
-    cmd = [GRAVEL, "-in", os.path.join(DECKS, deck), "-precision", precision, "-log", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    with tempfile.TemporaryDirectory() as tmp:
-        p = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=300)
-    if p.returncode != 0:
-        raise RuntimeError("%s failed (%d): %s" % (" ".join(cmd), p.returncode,
-                                                 (p.stdout + p.stderr)[-800:]))
+def thermo_rows(text):
+    """The thermo tables of a log or screen text, as a list of dicts (floats)."""
     rows, header = [], None
-    for line in p.stdout.splitlines():
+    for line in text.splitlines():
         w = line.split()
         if w and w[0] == "Step":
             header = w
@@ -55,6 +47,20 @@ def run_deck(deck, precision, variables):
                 rows.append({h: float(x) for h, x in zip(header, w)})
             except ValueError:
                 pass
+    return rows
+
+
+def run_deck(deck, precision, variables):
+    """Run a deck; return the thermo table as a list of dicts (floats)."""
+    cmd = [GRAVEL, "-in", os.path.join(DECKS, deck), "-precision", precision, "-log", "none"]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    with tempfile.TemporaryDirectory() as tmp:
+        p = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=300)
+    if p.returncode != 0:
+        raise RuntimeError("%s failed (%d): %s" % (" ".join(cmd), p.returncode,
+                                                 (p.stdout + p.stderr)[-800:]))
+    rows = thermo_rows(p.stdout)
     if not rows:
         raise RuntimeError("no thermo output from " + " ".join(cmd))
     return rows
