@@ -5,10 +5,15 @@
  * a = sqrt(R* delta), vr_n = vr.n, v_t = contact-point relative velocity:
  *   F_n = kn a delta - cd sqrt(1.5 kn a m*) vr_n          (kn = 4/3 E*,
  *                                   S_n = 2 E* a = 1.5 kn a, cd = 2 sqrt(5/6) beta)
+ *         integrated over each step as a two-body impulse (contact_normal.cl:
+ *         U = 0.4 kn sqrt(R*) delta^2.5, H = 0.8 cd sqrt(1.5 kn sqrt(R*) m*)
+ *         delta^1.25; exact energy for the spring, exact impulse for the
+ *         dashpot, at the partial first and last steps of a contact too)
  *   s  += v_t dt (not during setup), projected onto the tangent plane
- *   F_t = -(kt a) s - cd sqrt(kt a m*) v_t,  rescaled to mu |F_n| when larger
+ *   F_t = -(kt a) s - cd sqrt(kt a m*) v_t,  rescaled to mu max(F_n, 0) when larger
+ *         (the dashpot makes F_n tensile late in a contact: no load, no friction)
  *         (in slip the spring is reset to carry F_t alone: s = -F_t/S_t)
- *   torque_i = -radi n x F_t  - mu_r R* |F_n| w/|w|,  w = omega_i - omega_j
+ *   torque_i = -radi n x F_t  - mu_r R* max(F_n, 0) w/|w|,  w = omega_i - omega_j
  * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
 
@@ -24,7 +29,10 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
     const REAL meff = c->meff;
 
     const REAL vn = dot(c->vr, n);
-    const REAL fnmag = kn * a * delta - cd * sqrt((REAL)1.5 * kn * a * meff) * vn;
+    const REAL sr = sqrt(c->reff);
+    const REAL fnmag = contact_normal_force(NORMAL_HERTZ, (REAL)0.4 * kn * sr,
+                                            (REAL)0.8 * cd * sqrt((REAL)1.5 * kn * sr * meff),
+                                            delta, -vn, meff, c->dt);
 
     const REAL3 w = c->radi * c->omi + c->radj * c->omj;
     const REAL3 vt = c->vr - vn * n + cross(n, w);
@@ -38,7 +46,7 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
     const REAL dt_coef = cd * sqrt(st * meff);
     REAL3 ft = -st * s - dt_coef * vt;
     const REAL ftmag = length(ft);
-    const REAL flim = mu * fabs(fnmag);
+    const REAL flim = mu * fmax(fnmag, (REAL)0); /* no friction under tension */
     if (ftmag > flim) {
         if (st > (REAL)0) {
             /* sliding: F_t = flim ft/|ft|; the spring alone carries it
@@ -61,7 +69,7 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
         const REAL3 wrel = c->omi - c->omj;
         const REAL wmag = length(wrel);
         if (wmag > (REAL)0)
-            tq -= (mur * c->reff * fabs(fnmag) / wmag) * wrel;
+            tq -= (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
     }
     *torque_i = tq;
 }

@@ -380,6 +380,8 @@ void eng_prepare(struct gravel *g)
     /* LAMMPS granular kinematics for the gran pair and wall evaluators:
      * static inline helpers, free in scenes that do not call them */
     add_source(g, names, texts, &n, "gran_common.cl", "engine");
+    /* normal impulse of the source-document contact laws (same terms) */
+    add_source(g, names, texts, &n, "contact_normal.cl", "engine");
     for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
         add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {

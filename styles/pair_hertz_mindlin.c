@@ -11,9 +11,9 @@
  *   F_n = 4/3 E* sqrt(R*) delta^1.5 - 2 sqrt(5/6) beta sqrt(S_n m*) v_n,
  *         S_n = 2 E* sqrt(R* delta)
  *   F_t = -S_t s - 2 sqrt(5/6) beta sqrt(S_t m*) v_t,  S_t = 8 G* sqrt(R* delta),
- *         |F_t| <= mu |F_n| (Coulomb; s is the accumulated tangential
+ *         |F_t| <= mu max(F_n, 0) (Coulomb; s is the accumulated tangential
  *         displacement, kept per contact and rescaled when sliding)
- *   rolling: tau_i = -mu_r R* |F_n| w/|w|,  w = omega_i - omega_j
+ *   rolling: tau_i = -mu_r R* max(F_n, 0) w/|w|,  w = omega_i - omega_j
  * 003 writes the tangential spring as c_t sqrt(delta) V_t dt (a displacement
  * of one time step) and G* with 1 - nu^2; we keep the Mindlin history and the
  * standard G* (Di Renzo & Di Maio 2004), because the one-step displacement

@@ -11,7 +11,7 @@
  * a = sqrt(r delta), v_t = vx - r wy (contact-point slip along x),
  *   F_n  = kn a delta - cd sqrt(1.5 kn a m) vz
  *   s'   = v_t                                     (stick)
- *   F_t  = -kt a s - cd sqrt(kt a m) v_t, |F_t| <= mu |F_n|
+ *   F_t  = -kt a s - cd sqrt(kt a m) v_t, |F_t| <= mu max(F_n, 0)
  *   torque_y = -r F_t   (n x F_t = F_t e_y for n = e_z)
  * In slip the kernel holds the spring at s = -F_t/(kt a): the spring alone
  * carries the Coulomb force. The reference does the same: rk8pd with steps of at
@@ -42,7 +42,7 @@ static void forces(const struct par *p, const double y[], double *fn, double *ft
     double vt = y[2] - p->r * y[4];
     *fn = p->kn * a * delta - p->cd * sqrt(1.5 * p->kn * a * p->m) * y[3];
     double st = p->kt * a, dtc = p->cd * sqrt(st * p->m);
-    double f = -st * y[5] - dtc * vt, flim = p->mu * fabs(*fn);
+    double f = -st * y[5] - dtc * vt, flim = p->mu * fmax(*fn, 0.0);
     *s_map = y[5];
     if (fabs(f) > flim) {
         f = f > 0 ? flim : -flim;

@@ -75,10 +75,10 @@ def sphere_mass(d, rho):
 
 
 class NormalCollision:
-    """000 sec. 3.3.2, table 5.2: A.1 closed form (started eps inside contact)."""
+    """000 sec. 3.3.2, table 5.2: A.1 closed form (contact from t = 0)."""
     name = "normal_collision"
     deck = "normal_collision.in"
-    ke, e, rho, d, u0, eps = 1e5, 0.8, 10.0, 0.1, -2.0, 1e-7
+    ke, e, rho, d, u0 = 1e5, 0.8, 10.0, 0.1, -2.0
     nsubs = (8, 16, 32, 64, 128)
     bound32 = {"x": 2e-4, "v": 1e-2}    # normalized by d_b and |u0|
     min_order = {"x": 0.9, "v": 0.9}
@@ -92,7 +92,7 @@ class NormalCollision:
         self.tcol = math.sqrt(self.m / self.ke) * math.sqrt(M_PI ** 2 + l * l)
         self.a = -self.eta / (2 * self.m)
         self.b = math.sqrt(4 * self.m * self.ke - self.eta ** 2) / (2 * self.m)
-        self.A2 = -self.eps
+        self.A2 = 0.0
         self.A1 = (self.u0 - self.a * self.A2) / self.b
         # separation: x - d_b = 0 again, first root after t = 0
         lo, hi = 0.5 * M_PI / self.b, 1.5 * M_PI / self.b
@@ -153,6 +153,8 @@ class HertzCollision:
     G, nu, e, rho, d, u0 = 26e9, 0.23, 0.66, 2500.0, 0.003, -1.0
     nsubs = (8, 16, 32, 64, 128)
     bound32 = {"x": 2e-2, "v": 2e-2}    # normalized by the max overlap and |u0|
+    # single stores x ~ 3e-3 m to 2.3e-10 m, 2.3e-5 of the max overlap
+    floor = {"single": 1e-4}
     min_order = {"x": 0.9, "v": 0.9}
     xnorm, vnorm = "max overlap", "|u0|"
     restitution = True
@@ -165,7 +167,7 @@ class HertzCollision:
         self.kn = 4.0 / 3.0 * self.Es
         self.cd = 2 * math.sqrt(5.0 / 6.0) * (-l / math.sqrt(l * l + M_PI ** 2))
         self.reff = self.d / 4
-        self.x0 = self.d - 1e-6 * self.d
+        self.x0 = self.d
         self.tcol = 2.87 * (self.m ** 2 / (self.reff * self.Es ** 2 * abs(self.u0))) ** 0.2
         ref = self.reference([self.tcol * k / 2000.0 for k in range(4001)])
         self.dmax = max(self.d - x for _, x, _ in ref)
@@ -216,12 +218,14 @@ class Drag:
 
 
 class DragExplicit(Drag):
+    """000 sec. 3.3.1, table 5.1, `update explicit` (eq. 3.7): first order."""
     name, update = "drag_explicit", "explicit"
     bound32 = {"x": 2e-2, "v": 1e-2}
     min_order = {"x": 0.9, "v": 0.9}
 
 
 class DragImplicit(Drag):
+    """000 sec. 3.3.1, table 5.1, `update implicit` (eq. 3.8): first order, unconditionally stable."""
     name, update = "drag_implicit", "implicit"
     bound32 = {"x": 1e-2, "v": 5e-3}
     min_order = {"x": 0.9, "v": 0.9}
@@ -269,12 +273,14 @@ class TaylorGreen:
 
 
 class TaylorGreenImplicit(TaylorGreen):
+    """Taylor-Green vortex (000 eq. 6.1-6.3), `update implicit`: GSL rk8pd reference."""
     name, update = "taylor_green_implicit", "implicit"
     bound32 = {"x": 0.1, "v": 0.02}
     min_order = {"x": 0.9, "v": 0.9}
 
 
 class TaylorGreenExact(TaylorGreen):
+    """Taylor-Green vortex (000 eq. 6.1-6.3), `update exact`: GSL rk8pd reference, second order."""
     name, update = "taylor_green_exact", "exact"
     bound32 = {"x": 1e-3, "v": 3e-4}
     min_order = {"x": 1.8, "v": 1.8}
@@ -287,13 +293,20 @@ class FrictionSliding:
     ke, e, mu, rho, d, u0, g, tend = 1e5, 0.8, 0.6, 10.0, 0.1, 1.0, 9.81, 0.2
     # t_col/128 takes 35k steps per precision: only with SEEDS_FULL=1
     nsubs = (8, 16, 32, 64, 128) if FULL else (8, 16, 32, 64)
-    # Verlet integrates the constant deceleration exactly: what remains is the
-    # model's own departure from pure dynamic friction near the stop (the
-    # static estimate takes over below |u_t| = mu |F_n| / (kf t_col)) plus
-    # round-off, so the error does not fall with dt; every dt must meet the bound.
-    bound32 = {"x": 1e-6, "v": 1e-10}
+    # Verlet integrates the constant deceleration exactly. The position error
+    # is the model's own departure from pure dynamic friction near the stop
+    # (the static estimate takes over below |u_t| = mu |F_n| / (kf t_col))
+    # plus round-off: it does not fall with dt, every dt must meet the bound.
+    # The velocity error is first order: the resting contact starts at
+    # ke delta = m g, while the two-body normal impulse (contact_normal.cl)
+    # settles at an overlap larger by eta dt / (2 m*) (it reads the steady
+    # load as a separation at rate dt g); the friction force follows the
+    # normal force through that transient.
+    bound32 = {"x": 1e-6, "v": 1e-5}
     floor = {"single": 5e-5}
-    flat = True
+    min_order = {"v": 0.9}
+    order_floor = {"single": 5e-5}
+    flat = ("x",)
     xnorm, vnorm = "d_b", "u0"
     restitution = False
 
@@ -363,17 +376,23 @@ def verify(case):
                   r32 is not None and r32[q] < b, "%.3e" % r32[q])
             errs = [res[prec, n][q] for n in case.nsubs]
             floor = case.floor.get(prec, 0.0) if hasattr(case, "floor") else 0.0
-            if getattr(case, "flat", False):
+            if q in getattr(case, "flat", ()):
                 lim = max(bound, floor)
                 check("%s %s %s error within %g at every time step" % (case.name, prec, q, lim),
                       max(errs) < lim, " ".join("%.2e" % x for x in errs))
                 continue
             falls = all(errs[i + 1] < errs[i] or errs[i + 1] < floor for i in range(len(errs) - 1))
-            check("%s %s %s error falls with the time step" % (case.name, prec, q), falls and errs[-1] < errs[0],
+            check("%s %s %s error falls with the time step" % (case.name, prec, q), falls and (errs[-1] < errs[0] or max(errs) < floor),
                   " ".join("%.2e" % x for x in errs))
     for prec in ("double", "single"):
         for q, want in getattr(case, "min_order", {}).items():
-            o = order([res[prec, n][q] for n in case.nsubs], case.nsubs)
+            errs = [res[prec, n][q] for n in case.nsubs]
+            rfloor = getattr(case, "order_floor", {}).get(prec, 0.0)
+            if max(errs) < rfloor:
+                check("%s %s %s errors under the round-off floor %g (no order to observe)"
+                      % (case.name, prec, q, rfloor), True, " ".join("%.2e" % x for x in errs))
+                continue
+            o = order(errs, case.nsubs)
             check("%s %s %s observed order >= %g" % (case.name, prec, q, want), o >= want, "%.2f" % o)
     for n in case.nsubs:
         for q in case.bound32:
@@ -415,7 +434,7 @@ def restitution_sweep():
     over e and over the phase of the first contact within a time step (gap =
     start distance in |u0| dt): never above 1 for e < 1; for the nominal e = 0.8
     within 5 % at t_col/8 and 1 % at t_col/32 at every phase; e = 1 (no
-    dissipation) within the sampling error of the contact boundaries."""
+    dissipation) equal to 1 to round-off at every phase."""
     gaps = (0.0, 0.13, 0.5, 0.93)
     print("# restitution sweep (double): e_eff per entry phase gap = 0, 0.13, 0.5, 0.93")
     for e in (0.3, 0.8, 0.95, 0.99, 1.0):
@@ -431,10 +450,10 @@ def restitution_sweep():
                 check("restitution e=0.8 t_col/%d within %g%% at every contact phase" % (n, tol * 100),
                       worst <= tol, "worst %.2f%%" % (100 * worst))
             if e == 1.0:
-                tol = 5e-3 if n == 8 else 1e-4
-                worst = max(abs(x - 1.0) for x in effs)
-                check("restitution e=1 t_col/%d within %g of 1 (contact-boundary sampling)" % (n, tol),
-                      worst <= tol, "worst %.2e" % worst)
+                # the normal impulse conserves the two-body energy exactly
+                check("restitution e=1 t_col/%d in [1 - 1e-9, 1 + 1e-12] at every contact phase" % n,
+                      min(effs) >= 1.0 - 1e-9 and max(effs) <= 1.0 + 1e-12,
+                      " ".join("%.3e" % (x - 1.0) for x in effs))
 
 
 def main():

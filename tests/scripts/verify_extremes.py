@@ -53,9 +53,7 @@ def restitution_extremes():
                     ok = finite and 0.0 <= eff <= 0.02
                     want = "in [0, 0.02]"
                 else:
-                    tol = 1e-3 if nsub == 32 else 1e-4
-                    ok = finite and abs(eff - 1.0) <= tol
-                    want = "within %g of 1" % tol
+                    ok, want = finite and elastic_ok(eff, prec), ELASTIC_WANT[prec]
                 check("extreme linear/restitution e=%g %s t_col/%d: finite, e_eff %s" % (e, prec, nsub, want),
                       ok, "%.5f" % eff)
         for prec in ("double", "single"):
@@ -65,8 +63,33 @@ def restitution_extremes():
             if e < 1:
                 ok, want = finite and 0.0 <= eff <= 0.03, "in [0, 0.03]"
             else:
-                ok, want = finite and abs(eff - 1.0) <= 3e-3, "within 3e-3 of 1"
+                ok, want = finite and elastic_ok(eff, prec), ELASTIC_WANT[prec]
             check("extreme hertz/mindlin e=%g %s t_col/32: finite, e_eff %s" % (e, prec, want), ok, "%.5f" % eff)
+    # e = 1 at every phase of the first contact within a step (gap in |u0| dt)
+    for deck, name in (("normal_collision.in", "linear/restitution"), ("hertz_collision.in", "hertz/mindlin")):
+        for prec in ("double", "single"):
+            for nsub in (8, 32):
+                effs = []
+                for gap in (0.0, 0.21, 0.5, 0.79):
+                    rows = sv.run_deck(deck, prec, {"nsub": nsub, "e": 1.0, "ncol": 2, "gap": gap})
+                    effs.append(abs(rows[-1]["v_vx"] / rows[0]["v_vx"]))
+                check("extreme %s e=1 %s t_col/%d, contact phases 0 .. 0.79 of a step: e_eff %s"
+                      % (name, prec, nsub, ELASTIC_WANT[prec]), all(elastic_ok(x, prec) for x in effs),
+                      " ".join("%.3e" % (x - 1.0) for x in effs))
+
+
+# e = 1: the two-body normal impulse conserves energy exactly (contact_normal.cl),
+# so double precision returns the incoming speed to round-off and never more.
+# Single precision stores positions ~0.1 m to 7.5e-9 m, 1.6e-5 of the largest
+# overlap: the elastic energy then carries that quantisation noise, about
+# 1e-4 in e_eff after a hundred steps in contact, of either sign.
+ELASTIC_WANT = {"double": "in [1 - 1e-9, 1 + 1e-12]", "single": "within 2e-4 of 1 (round-off of float positions)"}
+
+
+def elastic_ok(eff, prec):
+    if prec == "double":
+        return 1.0 - 1e-9 <= eff <= 1.0 + 1e-12
+    return abs(eff - 1.0) <= 2e-4
 
 
 def stiffness_span():

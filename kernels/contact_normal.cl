@@ -1,0 +1,133 @@
+/* contact_normal.cl - the normal force of the source-document contact laws
+ * (linear/restitution, hertz/mindlin), made consistent with the velocity
+ * Verlet step so that the integrator never gains energy in a collision.
+ *
+ * Why: evaluated pointwise, a contact force that starts and ends between two
+ * steps gives a restitution that depends on the phase of the steps against
+ * the contact (an elastic collision rebounds at up to 1 + (w dt)^2/8), and an
+ * explicit dashpot lags by half a step (+3 % restitution at t_col/8). Here
+ * the kick of one step is the one that makes the two-body collision exact in
+ * energy (elastic part) and in impulse (dashpot), whatever the phase.
+ *
+ * Both laws have the shape U(d) = cv^2 P(d)^2 (elastic energy) and
+ * H(d) = ch P(d) (dashpot impulse per overlap, H' = eta), with
+ * P(d) = d (linear: cv^2 = ke/2, ch = eta) or d^(5/4) (Hertz). With d the
+ * overlap at the kick, s its rate over the drift that led here (lagged
+ * velocity of the kick-drift-kick step) and S the rate after the kick,
+ *   dp = d - dt s,  dn = d + dt S            (two-body overlaps a step away)
+ *   F_el = 2 cv^2 P(d) [P(dn+) - P(dp+)] / (dn - dp)
+ *   F_d  = ch/dt { [P(d) - P(dp+)] d/(d + dp+) + [P(dn+) - P(d)] d/(d + dn+) }
+ *   S    = s - dt (F_el + F_d) / m*           (solved for S; x+ = max(x, 0))
+ * F_el conserves E = S^2 + (2/m*) cv^2 P(d+) P(dn+) exactly across a step
+ * (a discrete gradient of the segment energy), so an elastic two-body
+ * collision returns its incoming normal speed to round-off. Inside the
+ * contact F_el = U'(d) + O(dt^2) (linear: exactly ke d). F_d is the dashpot
+ * impulse over the overlap change of the two neighbouring drifts, each split
+ * between its end points in proportion to their overlaps, so the first and
+ * last kick of a contact carry the impulse of the partial step. The residual
+ * S - s + dt F/m* grows with S at slope >= 1: the root is unique and
+ * bracketed by [s, s - r(s)]. Returns F_el + F_d (repulsive > 0). */
+
+#define NORMAL_LINEAR 0
+#define NORMAL_HERTZ 1
+#ifdef USE_DOUBLE
+#define NORMAL_EPS DBL_EPSILON
+#else
+#define NORMAL_EPS FLT_EPSILON
+#endif
+
+static inline REAL normal_shape(const int law, const REAL d)
+{
+    if (d <= (REAL)0)
+        return (REAL)0;
+    return law == NORMAL_HERTZ ? d * sqrt(sqrt(d)) : d;
+}
+
+/* [P(b) - P(a)] / (b - a), with the derivative at the midpoint when the two
+ * overlaps coincide to within sqrt(epsilon) (round-off would dominate). */
+static inline REAL normal_shape_slope(const int law, const REAL a, const REAL b)
+{
+    const REAL span = b - a;
+    const REAL scale = fmax(fabs(a), fabs(b));
+#ifdef USE_DOUBLE
+    const REAL tiny = (REAL)1e-8;
+#else
+    const REAL tiny = (REAL)3e-4;
+#endif
+    if (fabs(span) > tiny * scale)
+        return (normal_shape(law, b) - normal_shape(law, a)) / span;
+    const REAL mid = (REAL)0.5 * (a + b);
+    if (mid <= (REAL)0)
+        return (REAL)0;
+    return law == NORMAL_HERTZ ? (REAL)1.25 * sqrt(sqrt(mid)) : (REAL)1;
+}
+
+/* F(S) of the header for an after-kick overlap rate S. */
+static inline REAL normal_force_at(const int law, const REAL cv2, const REAL ch, const REAL d,
+                                   const REAL pd, const REAL dp, const REAL dpp, const REAL dt,
+                                   const REAL S)
+{
+    const REAL dn = d + dt * S;
+    const REAL dnp = fmax(dn, (REAL)0);
+    const REAL fel = (REAL)2 * cv2 * pd * normal_shape_slope(law, dp, dn);
+    const REAL jl = (pd - normal_shape(law, dpp)) * (d / (d + dpp));
+    const REAL jr = (normal_shape(law, dnp) - pd) * (d / (d + dnp));
+    return fel + ch * (jl + jr) / dt;
+}
+
+/* Normal force magnitude along n for overlap d > 0 closing at rate s over
+ * the last drift (s = -vr.n), reduced mass meff, time step dt. */
+static inline REAL contact_normal_force(const int law, const REAL cv2, const REAL ch,
+                                        const REAL d, const REAL s, const REAL meff,
+                                        const REAL dt)
+{
+    if (!(d > (REAL)0)) /* touching to round-off: r rounded up to radsum */
+        return (REAL)0;
+    const REAL pd = normal_shape(law, d);
+    const REAL dp = d - dt * s;
+    const REAL dpp = fmax(dp, (REAL)0);
+    const REAL k = dt / meff;
+    /* bracket [lo, hi] with r(lo) <= 0 <= r(hi), r(S) = S - s + k F(S) */
+    const REAL f0 = normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, s);
+    const REAL r0 = k * f0;
+    if (r0 == (REAL)0)
+        return f0;
+    REAL lo = s, hi = s, rlo = r0, rhi = r0;
+    const REAL s1 = s - r0;
+    const REAL r1 = s1 - s + k * normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, s1);
+    if (r0 > (REAL)0) {
+        lo = s1;
+        rlo = r1;
+    } else {
+        hi = s1;
+        rhi = r1;
+    }
+    /* Illinois regula falsi: r is monotone with slope >= 1 and nearly linear,
+     * so |S - root| <= |r(S)|: converged when r (or the bracket) is at the
+     * round-off of the rates involved */
+    const REAL tol = (REAL)4 * NORMAL_EPS * (fabs(s) + fabs(r0));
+    REAL S = rlo >= (REAL)0 ? lo : hi;
+    int side = 0;
+    for (int it = 0; it < 60 && rlo < (REAL)0 && rhi > (REAL)0; it++) {
+        S = (lo * rhi - hi * rlo) / (rhi - rlo);
+        if (!(S > lo && S < hi))
+            S = (REAL)0.5 * (lo + hi);
+        const REAL rs = S - s + k * normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, S);
+        if (fabs(rs) <= tol || hi - lo <= tol)
+            break;
+        if (rs < (REAL)0) {
+            lo = S;
+            rlo = rs;
+            if (side == -1)
+                rhi *= (REAL)0.5;
+            side = -1;
+        } else {
+            hi = S;
+            rhi = rs;
+            if (side == 1)
+                rlo *= (REAL)0.5;
+            side = 1;
+        }
+    }
+    return (s - S) / k;
+}
