@@ -9,7 +9,8 @@
  * overlap and beta = -ln e / sqrt(ln^2 e + pi^2):
  *   E* = E / (2 (1 - nu^2)),  G = E / (2 (1 + nu)),  G* = G / (2 (2 - nu))
  *   F_n = 4/3 E* sqrt(R*) delta^1.5 - 2 sqrt(5/6) beta sqrt(S_n m*) v_n,
- *         S_n = 2 E* sqrt(R* delta)
+ *         S_n = 2 E* sqrt(R* delta)  (applied as the two-body impulse of
+ *         kernels/contact_normal.cl)
  *   F_t = -S_t s - 2 sqrt(5/6) beta sqrt(S_t m*) v_t,  S_t = 8 G* sqrt(R* delta),
  *         |F_t| <= mu max(F_n, 0) (Coulomb; s is the accumulated tangential
  *         displacement, kept per contact and rescaled when sliding)

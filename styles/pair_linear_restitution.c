@@ -5,6 +5,7 @@
  * (evaluator in kernels/pair_linear_restitution.cl).
  *
  *   F_n = ke delta n - eta u_n                             (000 eq. 2.1)
+ *         (applied as the two-body impulse of kernels/contact_normal.cl)
  *   eta = -2 ln(e) sqrt(m* ke / (pi^2 + ln(e)^2))           (000 eq. 2.17)
  *   t_col = sqrt(m_eff / ke) sqrt(pi^2 + ln(e)^2)                (000 eq. 2.15)
  *   F_t = -t min(kf |u_t| t_col, mu |F_n|)                  (000 eq. 2.2, 2.4, 2.5)
