@@ -30,10 +30,13 @@
 
 #define NORMAL_LINEAR 0
 #define NORMAL_HERTZ 1
+/* round-off, and the span under which a divided difference is round-off */
 #ifdef USE_DOUBLE
 #define NORMAL_EPS DBL_EPSILON
+#define NORMAL_TINY 1e-8
 #else
 #define NORMAL_EPS FLT_EPSILON
+#define NORMAL_TINY 3e-4
 #endif
 
 static inline REAL normal_shape(const int law, const REAL d)
@@ -49,12 +52,7 @@ static inline REAL normal_shape_slope(const int law, const REAL a, const REAL b)
 {
     const REAL span = b - a;
     const REAL scale = fmax(fabs(a), fabs(b));
-#ifdef USE_DOUBLE
-    const REAL tiny = (REAL)1e-8;
-#else
-    const REAL tiny = (REAL)3e-4;
-#endif
-    if (fabs(span) > tiny * scale)
+    if (fabs(span) > (REAL)NORMAL_TINY * scale)
         return (normal_shape(law, b) - normal_shape(law, a)) / span;
     const REAL mid = (REAL)0.5 * (a + b);
     if (mid <= (REAL)0)
@@ -62,15 +60,15 @@ static inline REAL normal_shape_slope(const int law, const REAL a, const REAL b)
     return law == NORMAL_HERTZ ? (REAL)1.25 * sqrt(sqrt(mid)) : (REAL)1;
 }
 
-/* F(S) of the header for an after-kick overlap rate S. */
+/* F(S) of the header for an after-kick overlap rate S; pd = P(d) and jl, the
+ * share of the past drift's dashpot impulse, do not depend on S. */
 static inline REAL normal_force_at(const int law, const REAL cv2, const REAL ch, const REAL d,
-                                   const REAL pd, const REAL dp, const REAL dpp, const REAL dt,
+                                   const REAL pd, const REAL dp, const REAL jl, const REAL dt,
                                    const REAL S)
 {
     const REAL dn = d + dt * S;
     const REAL dnp = fmax(dn, (REAL)0);
     const REAL fel = (REAL)2 * cv2 * pd * normal_shape_slope(law, dp, dn);
-    const REAL jl = (pd - normal_shape(law, dpp)) * (d / (d + dpp));
     const REAL jr = (normal_shape(law, dnp) - pd) * (d / (d + dnp));
     return fel + ch * (jl + jr) / dt;
 }
@@ -86,15 +84,16 @@ static inline REAL contact_normal_force(const int law, const REAL cv2, const REA
     const REAL pd = normal_shape(law, d);
     const REAL dp = d - dt * s;
     const REAL dpp = fmax(dp, (REAL)0);
+    const REAL jl = (pd - normal_shape(law, dpp)) * (d / (d + dpp));
     const REAL k = dt / meff;
     /* bracket [lo, hi] with r(lo) <= 0 <= r(hi), r(S) = S - s + k F(S) */
-    const REAL f0 = normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, s);
+    const REAL f0 = normal_force_at(law, cv2, ch, d, pd, dp, jl, dt, s);
     const REAL r0 = k * f0;
     if (r0 == (REAL)0)
         return f0;
     REAL lo = s, hi = s, rlo = r0, rhi = r0;
     const REAL s1 = s - r0;
-    const REAL r1 = s1 - s + k * normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, s1);
+    const REAL r1 = s1 - s + k * normal_force_at(law, cv2, ch, d, pd, dp, jl, dt, s1);
     if (r0 > (REAL)0) {
         lo = s1;
         rlo = r1;
@@ -112,7 +111,7 @@ static inline REAL contact_normal_force(const int law, const REAL cv2, const REA
         S = (lo * rhi - hi * rlo) / (rhi - rlo);
         if (!(S > lo && S < hi))
             S = (REAL)0.5 * (lo + hi);
-        const REAL rs = S - s + k * normal_force_at(law, cv2, ch, d, pd, dp, dpp, dt, S);
+        const REAL rs = S - s + k * normal_force_at(law, cv2, ch, d, pd, dp, jl, dt, S);
         if (fabs(rs) <= tol || hi - lo <= tol)
             break;
         if (rs < (REAL)0) {

@@ -305,7 +305,6 @@ class FrictionSliding:
     bound32 = {"x": 1e-6, "v": 1e-5}
     floor = {"single": 5e-5}
     min_order = {"v": 0.9}
-    order_floor = {"single": 5e-5}
     flat = ("x",)
     xnorm, vnorm = "d_b", "u0"
     restitution = False
@@ -388,7 +387,7 @@ def verify(case):
     for prec in ("double", "single"):
         for q, want in getattr(case, "min_order", {}).items():
             errs = [res[prec, n][q] for n in case.nsubs]
-            rfloor = getattr(case, "order_floor", {}).get(prec, 0.0)
+            rfloor = case.floor.get(prec, 0.0) if hasattr(case, "floor") else 0.0
             if max(errs) < rfloor:
                 check("%s %s %s errors under the round-off floor %g (no order to observe)"
                       % (case.name, prec, q, rfloor), True, " ".join("%.2e" % x for x in errs))
