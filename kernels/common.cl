@@ -35,6 +35,13 @@ struct contact {
     int shearupdate;    /* 0 during setup: history is not advanced */
 };
 
+/* What an evaluator returns for one contact: the force on i (the force on j
+ * is exactly -f), and the torques on i and on j (walls ignore tj). */
+struct contact_force {
+    REAL3 f;
+    REAL3 ti, tj;
+};
+
 /* Minimum image of one component for a periodic length L (0 = not periodic). */
 static inline REAL min_image(REAL d, REAL L)
 {

@@ -81,8 +81,9 @@
         c.dt = dt;                                                                             \
         c.shearupdate = shearupdate;                                                           \
         REAL3 sh = has_history ? vload3(i, history) : (REAL3)(0);                              \
-        REAL3 fi, ti;                                                                          \
-        EVAL(&c, param, &sh, &fi, &ti);                                                        \
+        struct contact_force cf;                                                               \
+        EVAL(&c, param, &sh, &cf);                                                             \
+        const REAL3 fi = cf.f, ti = cf.ti;                                                     \
         if (has_history)                                                                       \
             vstore3(sh, i, history);                                                           \
         vstore3(vload3(i, f) + fi, i, f);                                                      \

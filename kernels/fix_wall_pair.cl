@@ -49,19 +49,20 @@ __kernel void wall_pair(const int n, const uint groupbit, __global const uint *m
     c.shearupdate = shearupdate;
     const int ti = type[i] - 1;
     __global const REAL *p = param + (size_t)(ti * ntypes + ti) * nparam;
-    REAL3 sh, fi, tq;
+    REAL3 sh;
+    struct contact_force cf;
 #ifdef HAS_HISTORY
     sh = vload3(i, history);
 #else
     sh = (REAL3)(0);
 #endif
-    PAIR_EVAL(&c, p, &sh, &fi, &tq);
+    PAIR_EVAL(&c, p, &sh, &cf);
 #ifdef HAS_HISTORY
     vstore3(sh, i, history);
 #endif
-    vstore3(vload3(i, f) + fi, i, f);
+    vstore3(vload3(i, f) + cf.f, i, f);
 #ifdef HAS_ROTATION
-    vstore3(vload3(i, torque) + tq, i, torque);
+    vstore3(vload3(i, torque) + cf.ti, i, torque);
 #endif
 }
 #endif

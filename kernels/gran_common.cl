@@ -102,19 +102,24 @@ static inline REAL3 gran_history_tangential(const struct contact *c, const struc
     return (REAL3)(fs1, fs2, fs3);
 }
 
-/* Force on i = del ccel + F_t; torque on i = -radi (del x F_t) / r. */
+/* Force on i = del ccel + F_t; torque on i = -radi (del x F_t) / r and on
+ * j = -radj (del x F_t) / r (LAMMPS' newton-pair update, bit for bit what
+ * j's own evaluation of the reversed contact gives). */
 static inline void gran_apply(const struct contact *c, const struct gran_kin *k, REAL ccel,
-                              REAL3 ft, REAL3 *force_i, REAL3 *torque_i)
+                              REAL3 ft, struct contact_force *out)
 {
     const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
-    force_i->x = delx * ccel + ft.x;
-    force_i->y = dely * ccel + ft.y;
-    force_i->z = delz * ccel + ft.z;
+    out->f.x = delx * ccel + ft.x;
+    out->f.y = dely * ccel + ft.y;
+    out->f.z = delz * ccel + ft.z;
 
     const REAL tor1 = k->rinv * (dely * ft.z - delz * ft.y);
     const REAL tor2 = k->rinv * (delz * ft.x - delx * ft.z);
     const REAL tor3 = k->rinv * (delx * ft.y - dely * ft.x);
-    torque_i->x = -c->radi * tor1;
-    torque_i->y = -c->radi * tor2;
-    torque_i->z = -c->radi * tor3;
+    out->ti.x = -c->radi * tor1;
+    out->ti.y = -c->radi * tor2;
+    out->ti.z = -c->radi * tor3;
+    out->tj.x = -c->radj * tor1;
+    out->tj.y = -c->radj * tor2;
+    out->tj.z = -c->radj * tor3;
 }

@@ -1,7 +1,8 @@
 /* neighbor.cl - device neighbor machinery: rebuild check, periodic wrap and
  * atom extent, binning, a chunked prefix scan, a deterministic counting sort
- * by cell (ties ordered by tag), re-ordering of per-atom arrays, and the full
- * Verlet list build with contact-history transfer by partner tag.
+ * by cell (ties ordered by tag), re-ordering of per-atom arrays, the full
+ * Verlet list build (rows in partner-tag order), the contacts of the
+ * pipeline (kernels/pair_loop.cl) and their history carried across rebuilds.
  *
  * Determinism: counts and scatter use integer atomics, but each cell's
  * segment is then sorted by tag, so the resulting order depends only on the
@@ -176,36 +177,9 @@ __kernel void nbr_cellsort(const int ncell, __global const int *start, __global 
     }
 }
 
-/* Gather every per-atom array into its new order: new[i] = old[perm[i]]. */
-__kernel void nbr_reorder(const int n, __global const int *perm,
-                          __global const REAL *x0, __global REAL *x1,
-                          __global const REAL *v0, __global REAL *v1,
-                          __global const REAL *om0, __global REAL *om1,
-                          __global const REAL *rad0, __global REAL *rad1,
-                          __global const REAL *m0, __global REAL *m1,
-                          __global const int *type0, __global int *type1,
-                          __global const uint *mask0, __global uint *mask1,
-                          __global const long *tag0, __global long *tag1,
-                          __global const int *img0, __global int *img1)
-{
-    const int i = get_global_id(0);
-    if (i >= n)
-        return;
-    const int o = perm[i];
-    vstore3(vload3(o, x0), i, x1);
-    vstore3(vload3(o, v0), i, v1);
-#ifdef HAS_ROTATION
-    vstore3(vload3(o, om0), i, om1);
-#endif
-    rad1[i] = rad0[o];
-    m1[i] = m0[o];
-    type1[i] = type0[o];
-    mask1[i] = mask0[o];
-    tag1[i] = tag0[o];
-    vstore3(vload3(o, img0), i, img1);
-}
-
-/* Same for a style's per-atom state of `words` 32-bit words per atom. */
+/* Gather one per-atom array of `words` 32-bit words per atom into its new
+ * order, dst[i] = src[perm[i]] (the re-sort goes array by array through one
+ * scratch buffer). */
 __kernel void nbr_reorder_words(const int n, const int words, __global const int *perm,
                                 __global const uint *src, __global uint *dst)
 {
@@ -260,27 +234,25 @@ static inline int row_ranges(__global const int *start, const int rowbase, const
     return r;
 }
 
-/* Full Verlet list with skin: j is a neighbor of i when
- * |x_i - x_j| < radi + radj + skin (LAMMPS size lists), j != i, and the pair
- * is not excluded (type table, group bit pairs). Slots beyond maxn are
+/* Full Verlet list with skin, each row in ascending partner tag: j is a
+ * neighbor of i when |x_i - x_j| < radi + radj + skin (LAMMPS size lists),
+ * j != i, and the pair is not excluded (type table, group bit pairs).
+ * nown[i] counts the partners of higher tag: the contacts i owns, the last
+ * nown[i] entries of its row. Cells list their atoms in cellatoms (or, after
+ * a re-sort, are contiguous index ranges: sorted = 1). Slots beyond maxn are
  * counted but not written: flags[2] receives the largest count so the host
- * can grow and rebuild. history: 0 none; 1 zero shear; 2 each touching pair
- * copies its shear from the old list slot of the same partner tag (old list
- * in old order: perm maps new -> old index). */
+ * can grow and rebuild. */
 __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL *radius,
                         __global const int *type, __global const uint *mask,
-                        __global const long *tag, __global const int *start, const int nx,
+                        __global const long *tag, __global const int *start,
+                        __global const int *cellatoms, const int sorted, const int nx,
                         const int ny, const int nz, const int px, const int py, const int pz,
                         const REAL lox, const REAL loy, const REAL loz, const REAL sx,
                         const REAL sy, const REAL sz, const REAL Lx, const REAL Ly,
                         const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
-                        __global int *ncount, __global int *flags, const int ntypes,
-                        __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group, const int history,
-                        __global const int *perm, __global const int *old_nlist,
-                        __global const int *old_ncount, const int old_maxn,
-                        __global const long *old_tag, __global const REAL *old_shear,
-                        __global REAL *shear)
+                        __global int *ncount, __global int *nown, __global int *flags,
+                        const int ntypes, __global const int *excl_type, const int nexg,
+                        __global const uint *excl_group)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -289,6 +261,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     const REAL radi = radius[i];
     const int ti = type[i];
     const uint mi = mask[i];
+    const long tagi = tag[i];
     int cx = clamp((int)((xi.x - lox) * sx), 0, nx - 1);
     int cy = clamp((int)((xi.y - loy) * sy), 0, ny - 1);
     int cz = clamp((int)((xi.z - loz) * sz), 0, nz - 1);
@@ -296,18 +269,16 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     const int nsx = stencil(cx, nx, px, sxs);
     const int nsy = stencil(cy, ny, py, sys);
     const int nsz = stencil(cz, nz, pz, szs);
-    const size_t row = (size_t)i * maxn;
-    int cnt = 0;
-    const int io = history == 2 ? perm[i] : 0;
-    const int ocnt = history == 2 ? old_ncount[io] : 0;
-    const size_t orow = (size_t)io * old_maxn;
+    __global int *row = nlist + (size_t)i * maxn;
+    int cnt = 0, own = 0;
     for (int a = 0; a < nsz; a++)
         for (int b = 0; b < nsy; b++) {
             int rlo[3], rhi[3];
             const int nr = row_ranges(start, (szs[a] * ny + sys[b]) * nx, sxs, nsx, rlo, rhi);
             for (int e = 0; e < nr; e++) {
                 const int s = rlo[e], t = rhi[e];
-                for (int j = s; j < t; j++) {
+                for (int jj = s; jj < t; jj++) {
+                    const int j = sorted ? jj : cellatoms[jj];
                     if (j == i)
                         continue;
                     REAL3 del = xi - vload3(j, x);
@@ -334,27 +305,110 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                     }
                     if (excluded)
                         continue;
+                    const long tj = tag[j];
                     if (cnt < maxn) {
-                        nlist[row + cnt] = j;
-                        if (history) {
-                            REAL3 sh = (REAL3)(0);
-                            if (rsq < radsum * radsum) {
-                                const long tj = tag[j];
-                                for (int k = 0; k < ocnt; k++)
-                                    if (old_tag[old_nlist[orow + k]] == tj) {
-                                        sh = vload3(orow + k, old_shear);
-                                        break;
-                                    }
-                            }
-                            vstore3(sh, row + cnt, shear);
+                        /* insert in tag order (rows are short) */
+                        int p = cnt;
+                        while (p > 0 && tag[row[p - 1]] > tj) {
+                            row[p] = row[p - 1];
+                            p--;
                         }
+                        row[p] = j;
                     }
+                    own += tj > tagi;
                     cnt++;
                 }
             }
         }
     ncount[i] = cnt < maxn ? cnt : maxn;
+    nown[i] = own;
     atomic_max(&flags[2], cnt);
+}
+
+/* Contacts from the rows: i owns contacts coff[i] .. coff[i] + nown[i] - 1
+ * (its last nown[i] row entries, in order), ci/cj name the two atoms, and
+ * inc[i maxn + k] is the contact of row slot k: c when i owns it, -(c + 1)
+ * when the partner j does (found in j's row by tag, binary search). A pair
+ * missing from its partner's row sets flags[3] (an inconsistent list). */
+__kernel void nbr_contacts(const int n, const int maxn, __global const int *nlist,
+                           __global const int *ncount, __global const int *nown,
+                           __global const int *coff, __global const long *tag,
+                           __global int *ci, __global int *cj, __global int *inc,
+                           __global int *flags)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const int cnt = ncount[i], first = cnt - nown[i];
+    const size_t row = (size_t)i * maxn;
+    const long tagi = tag[i];
+    for (int k = 0; k < cnt; k++) {
+        const int j = nlist[row + k];
+        if (k >= first) {
+            const int c = coff[i] + k - first;
+            ci[c] = i;
+            cj[c] = j;
+            inc[row + k] = c;
+            continue;
+        }
+        const size_t rowj = (size_t)j * maxn;
+        int lo = ncount[j] - nown[j], hi = ncount[j] - 1, at = -1;
+        while (lo <= hi) {
+            const int mid = (lo + hi) / 2;
+            const long tm = tag[nlist[rowj + mid]];
+            if (tm == tagi) {
+                at = mid;
+                break;
+            }
+            if (tm < tagi)
+                lo = mid + 1;
+            else
+                hi = mid - 1;
+        }
+        if (at < 0) {
+            atomic_or(&flags[3], 1);
+            inc[row + k] = 0;
+            continue;
+        }
+        inc[row + k] = -(coff[j] + at - (ncount[j] - nown[j]) + 1);
+    }
+}
+
+/* History carried across a rebuild: invperm[perm[i]] = i (old index -> new,
+ * -1 for lost atoms: fill first), then every old contact's partner is
+ * renamed into the new order, and each new contact (owned by the same atom
+ * as before: the lower tag) takes the history of the old contact of its
+ * owner with the same partner, or zero. */
+__kernel void nbr_invperm(const int n, __global const int *perm, __global int *invperm)
+{
+    const int i = get_global_id(0);
+    if (i < n)
+        invperm[perm[i]] = i;
+}
+
+__kernel void hist_rename(const int nold, __global const int *invperm, __global int *old_cj)
+{
+    const int c = get_global_id(0);
+    if (c < nold)
+        old_cj[c] = invperm[old_cj[c]];
+}
+
+__kernel void hist_transfer(const int ncontact, __global const int *ci, __global const int *cj,
+                            __global const int *perm, const int permuted,
+                            __global const int *old_coff, __global const int *old_cj,
+                            __global const REAL *old_shear, __global REAL *shear)
+{
+    const int c = get_global_id(0);
+    if (c >= ncontact)
+        return;
+    const int io = permuted ? perm[ci[c]] : ci[c], j = cj[c];
+    REAL3 sh = (REAL3)(0);
+    for (int o = old_coff[io], e = old_coff[io + 1]; o < e; o++)
+        if (old_cj[o] == j) {
+            sh = vload3(o, old_shear);
+            break;
+        }
+    vstore3(sh, c, shear);
 }
 
 /* Per-chunk largest overlap (radsum - r) / min(radi, radj) over the list. */

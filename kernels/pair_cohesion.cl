@@ -11,11 +11,10 @@
  * packed sides swap, d_e is the same sum, del flips. */
 
 static inline void cohesion_eval(const struct contact *c, __global const REAL *param,
-                                 REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+                                 REAL3 *shear, struct contact_force *out)
 {
     (void)shear;
-    *force_i = (REAL3)(0);
-    *torque_i = (REAL3)(0);
+    out->f = out->ti = out->tj = (REAL3)(0);
     if (c->radj == (REAL)0)
         return;
     const REAL ei = param[1] + param[2] * c->radi;
@@ -25,5 +24,5 @@ static inline void cohesion_eval(const struct contact *c, __global const REAL *p
         return;
     const REAL r = sqrt(c->rsq);
     const REAL delta_e = de - r;
-    *force_i = (-param[0] * delta_e / r) * c->del;
+    out->f = (-param[0] * delta_e / r) * c->del;
 }

@@ -14,7 +14,7 @@
  * every product and sum is formed the same way from both sides. */
 
 static inline void gran_hertz_history_eval(const struct contact *c, __global const REAL *param,
-                                           REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+                                           REAL3 *shear, struct contact_force *out)
 {
     const REAL kn = param[0], kt = param[1], gamman = param[2], gammat = param[3];
     const REAL xmu = param[4], limit = param[5];
@@ -22,5 +22,5 @@ static inline void gran_hertz_history_eval(const struct contact *c, __global con
     const REAL polyhertz = sqrt((c->radsum - k.r) * c->reff);
     const REAL ccel = gran_normal(c, &k, kn, gamman, polyhertz, limit);
     const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, polyhertz, shear);
-    gran_apply(c, &k, ccel, ft, force_i, torque_i);
+    gran_apply(c, &k, ccel, ft, out);
 }

@@ -9,7 +9,7 @@
  * Param layout (GRAN_*): kn kt gamman gammat xmu limit_damping. */
 
 static inline void gran_hooke_eval(const struct contact *c, __global const REAL *param,
-                                   REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+                                   REAL3 *shear, struct contact_force *out)
 {
     (void)shear;
     const REAL kn = param[0], gamman = param[2], gammat = param[3];
@@ -22,5 +22,5 @@ static inline void gran_hooke_eval(const struct contact *c, __global const REAL 
     const REAL fn = xmu * fabs(ccel * k.r);
     const REAL fs = c->meff * gammat * vrel;
     const REAL ft = vrel != (REAL)0 ? fmin(fn, fs) / vrel : (REAL)0;
-    gran_apply(c, &k, ccel, (REAL3)(-ft * k.vtr1, -ft * k.vtr2, -ft * k.vtr3), force_i, torque_i);
+    gran_apply(c, &k, ccel, (REAL3)(-ft * k.vtr1, -ft * k.vtr2, -ft * k.vtr3), out);
 }

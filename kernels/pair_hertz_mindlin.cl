@@ -14,12 +14,13 @@
  *         (the dashpot makes F_n tensile late in a contact: no load, no friction)
  *         (in slip the spring is reset to carry F_t alone: s = -F_t/S_t)
  *   torque_i = -radi n x F_t  - mu_r R* max(F_n, 0) w/|w|,  w = omega_i - omega_j
+ *   torque_j = -radj n x F_t  + mu_r R* max(F_n, 0) w/|w|
  * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
 
 /* R* enters the law: the pair loop must fill c->reff (kernels/pair_loop.cl) */
 static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
-                                      REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+                                      REAL3 *shear, struct contact_force *out)
 {
     const REAL kn = param[0], kt = param[1], cd = param[2], mu = param[3], mur = param[4];
     const REAL r = sqrt(c->rsq);
@@ -62,14 +63,19 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
     }
     if (c->shearupdate)
         *shear = s;
-    *force_i = fnmag * n + ft;
+    out->f = fnmag * n + ft;
 
-    REAL3 tq = -c->radi * cross(n, ft);
+    const REAL3 nxft = cross(n, ft);
+    REAL3 tqi = -c->radi * nxft, tqj = -c->radj * nxft;
     if (mur > (REAL)0) {
         const REAL3 wrel = c->omi - c->omj;
         const REAL wmag = length(wrel);
-        if (wmag > (REAL)0)
-            tq -= (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
+        if (wmag > (REAL)0) {
+            const REAL3 roll = (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
+            tqi -= roll;
+            tqj += roll;
+        }
     }
-    *torque_i = tq;
+    out->ti = tqi;
+    out->tj = tqj;
 }

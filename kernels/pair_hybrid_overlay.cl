@@ -16,18 +16,20 @@
 #define HYBRID_TERM(EVAL, OFF, CONTACT, HIST)                                                  \
     if (!(CONTACT) || touch) {                                                                 \
         REAL3 scratch = (REAL3)(0);                                                            \
-        EVAL(c, param + (OFF), (HIST) ? shear : &scratch, &fi, &ti);                           \
-        fsum += fi;                                                                            \
-        tsum += ti;                                                                            \
+        EVAL(c, param + (OFF), (HIST) ? shear : &scratch, &term);                              \
+        sum.f += term.f;                                                                       \
+        sum.ti += term.ti;                                                                     \
+        sum.tj += term.tj;                                                                     \
     } else if (HIST) {                                                                         \
         *shear = (REAL3)(0);                                                                   \
     }
 
 static inline void hybrid_overlay_eval(const struct contact *c, __global const REAL *param,
-                                       REAL3 *shear, REAL3 *force_i, REAL3 *torque_i)
+                                       REAL3 *shear, struct contact_force *out)
 {
     const int touch = c->rsq < c->radsum * c->radsum;
-    REAL3 fsum = (REAL3)(0), tsum = (REAL3)(0), fi, ti;
+    struct contact_force sum, term;
+    sum.f = sum.ti = sum.tj = (REAL3)(0);
     HYBRID_TERM(PAIR_TERM0, PAIR_TERM0_OFF, PAIR_TERM0_CONTACT, PAIR_TERM0_HIST)
 #if PAIR_TERMS > 1
     HYBRID_TERM(PAIR_TERM1, PAIR_TERM1_OFF, PAIR_TERM1_CONTACT, PAIR_TERM1_HIST)
@@ -38,7 +40,6 @@ static inline void hybrid_overlay_eval(const struct contact *c, __global const R
 #if PAIR_TERMS > 3
     HYBRID_TERM(PAIR_TERM3, PAIR_TERM3_OFF, PAIR_TERM3_CONTACT, PAIR_TERM3_HIST)
 #endif
-    *force_i = fsum;
-    *torque_i = tsum;
+    *out = sum;
 }
 #endif /* PAIR_TERMS */

@@ -12,13 +12,13 @@
  *   F_t   = -u_t/|u_t| min(kf |u_t| t_col, mu |F_n|)
  * The normal force is not clamped at zero: the analytic solution of 000 A.1
  * (and the restitution it returns) includes the attractive end of the dashpot.
- * Torque on i (torque yes): -radi (n x F_t). Param layout LR_*: ke kf mu ceta
+ * Torque on i (torque yes): -radi (n x F_t), on j: -radj (n x F_t). Param layout LR_*: ke kf mu ceta
  * ctcol torque. Antisymmetric under i <-> j: del, vr, u_t and F_t flip sign,
  * magnitudes are formed from sign-symmetric products. */
 
 static inline void linear_restitution_eval(const struct contact *c,
                                            __global const REAL *param, REAL3 *shear,
-                                           REAL3 *force_i, REAL3 *torque_i)
+                                           struct contact_force *out)
 {
     (void)shear;
     const REAL ke = param[0], kf = param[1], mu = param[2];
@@ -47,9 +47,12 @@ static inline void linear_restitution_eval(const struct contact *c,
         const REAL fdyn = mu * fabs(fnmag);
         ft = -(fmin(fstatic, fdyn) / utmag) * ut;
     }
-    *force_i = fnmag * n + ft;
-    if (torque != (REAL)0)
-        *torque_i = -c->radi * cross(n, ft);
-    else
-        *torque_i = (REAL3)(0);
+    out->f = fnmag * n + ft;
+    if (torque != (REAL)0) {
+        const REAL3 nxft = cross(n, ft);
+        out->ti = -c->radi * nxft;
+        out->tj = -c->radj * nxft;
+    } else {
+        out->ti = out->tj = (REAL3)(0);
+    }
 }

@@ -1,108 +1,147 @@
-/* pair_loop.cl - the one neighbor loop: for each particle i, gather the
- * force and torque of every contact in its full neighbor list through the
- * active evaluator PAIR_EVAL (no atomics: each work-item writes only i).
- * This kernel also clears the force: f and torque are written, not added.
+/* pair_loop.cl - the particle-particle stage of the contact pipeline.
  *
- * History (HAS_HISTORY): shear[3 (i maxn + k) ..] belongs to the contact in
- * slot k of i's list; it is zeroed when the pair is not touching (LAMMPS). The
- * entry of j for the same pair holds exactly minus i's entry.
+ * Contacts (built at each neighbor rebuild, kernels/neighbor.cl): contact c
+ * joins its owner ci[c] (the partner with the lower tag) and cj[c]; with
+ * history, shear[3c ..] is its tangential history, seen from the owner. Each
+ * contact is evaluated once, by pair_contacts, through the active evaluator
+ * PAIR_EVAL; pair_gather then sums, for every particle, the contacts of its
+ * incidence row inc[i maxn + k] (k < ncount[i]) in the order of that row:
+ * ascending partner tag, so a particle's sum depends on the particles only,
+ * never on memory order, the cell sort, the rebuild schedule or the work
+ * split. inc holds c for a contact i owns and -(c + 1) for one it is the
+ * partner of (force -F, torque tj). No atomics; forces on the two partners
+ * are exact negatives.
+ *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
+/* Contact force records: F on the owner, and with rotation the torques on
+ * owner and partner (struct contact_force). */
+#ifdef HAS_ROTATION
+#define CF_RECORDS 3
+#else
+#define CF_RECORDS 1
+#endif
+
 #ifdef PAIR_EVAL
-__kernel void pair_loop(const int n, __global const REAL *x, __global const REAL *v,
-                        __global const REAL *omega, __global const REAL *radius,
-                        __global const REAL *rmass, __global const int *type,
-                        __global const uint *mask, __global const int *nlist,
-                        __global const int *ncount, const int maxn, __global REAL *shear,
-                        __global const REAL *param, const int ntypes, const int nparam,
-                        const uint freezebit, const REAL dt, const int shearupdate,
-                        const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *f,
-                        __global REAL *torque)
+/* The contact between i and j as the evaluators see it (del = x_i - x_j). */
+static inline struct contact pair_contact(const int i, const int j, __global const REAL *x,
+                                          __global const REAL *v, __global const REAL *omega,
+                                          __global const REAL *radius,
+                                          __global const REAL *rmass, __global const uint *mask,
+                                          const uint freezebit, const REAL Lx, const REAL Ly,
+                                          const REAL Lz)
+{
+    struct contact c;
+    REAL3 del = vload3(i, x) - vload3(j, x);
+    del.x = MINIMG_X(del.x, Lx);
+    del.y = MINIMG_Y(del.y, Ly);
+    del.z = MINIMG_Z(del.z, Lz);
+    c.del = del;
+    c.rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+    c.radi = radius[i];
+    c.radj = radius[j];
+    c.radsum = c.radi + c.radj;
+    c.reff = c.radi * c.radj / c.radsum;
+    c.vr = vload3(i, v) - vload3(j, v);
+#ifdef HAS_ROTATION
+    c.omi = vload3(i, omega);
+    c.omj = vload3(j, omega);
+#else
+    c.omi = c.omj = (REAL3)(0);
+#endif
+    const REAL mi = rmass[i], mj = rmass[j];
+    REAL meff = mi * mj / (mi + mj);
+    if (mask[i] & freezebit)
+        meff = mj;
+    if (mask[j] & freezebit)
+        meff = mi;
+    c.meff = meff;
+    return c;
+}
+
+__kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,
+                            __global const REAL *x, __global const REAL *v,
+                            __global const REAL *omega, __global const REAL *radius,
+                            __global const REAL *rmass, __global const int *type,
+                            __global const uint *mask, __global REAL *shear,
+                            __global const REAL *param, const int ntypes, const int nparam,
+                            const uint freezebit, const REAL dt, const int shearupdate,
+                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *cf)
+{
+    const int c = get_global_id(0);
+    if (c >= ncontact)
+        return;
+    const int i = ci[c], j = cj[c];
+    struct contact k = pair_contact(i, j, x, v, omega, radius, rmass, mask, freezebit, Lx, Ly,
+                                    Lz);
+    struct contact_force out;
+    out.f = out.ti = out.tj = (REAL3)(0);
+#ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
+                        * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
+    if (k.rsq >= k.radsum * k.radsum) {
+#ifdef HAS_HISTORY
+        /* a separated pair forgets its history; most are zero already */
+        const REAL3 old = vload3(c, shear);
+        if (old.x != (REAL)0 || old.y != (REAL)0 || old.z != (REAL)0)
+            vstore3((REAL3)(0), c, shear);
+#endif
+    } else
+#endif
+    {
+        k.dt = dt;
+        k.shearupdate = shearupdate;
+        __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
+#ifdef HAS_HISTORY
+        REAL3 sh = vload3(c, shear);
+#else
+        REAL3 sh = (REAL3)(0);
+#endif
+        PAIR_EVAL(&k, p, &sh, &out);
+#ifdef HAS_HISTORY
+        vstore3(sh, c, shear);
+#endif
+    }
+    vstore3(out.f, (size_t)c * CF_RECORDS, cf);
+#ifdef HAS_ROTATION
+    vstore3(out.ti, (size_t)c * CF_RECORDS + 1, cf);
+    vstore3(out.tj, (size_t)c * CF_RECORDS + 2, cf);
+#endif
+}
+#endif /* PAIR_EVAL */
+
+/* f_i (and torque_i) = the sum of i's contacts in incidence-row order;
+ * written, not added (this also clears the force of the step). */
+__kernel void pair_gather(const int n, __global const int *inc, __global const int *ncount,
+                          const int maxn, __global const REAL *cf, __global REAL *f,
+                          __global REAL *torque)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
-    const REAL3 xi = vload3(i, x);
-    const REAL3 vi = vload3(i, v);
-#ifdef HAS_ROTATION
-    const REAL3 omi = vload3(i, omega);
-#else
-    const REAL3 omi = (REAL3)(0);
-#endif
-    const REAL radi = radius[i];
-    const REAL mi = rmass[i];
-    const int ti = type[i];
-    const uint maski = mask[i];
-    REAL3 fsum = (REAL3)(0), tsum = (REAL3)(0);
+    REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
     const int cnt = ncount[i];
-    const size_t row = (size_t)i * (size_t)maxn;
+    __global const int *row = inc + (size_t)i * (size_t)maxn;
     for (int k = 0; k < cnt; k++) {
-        const int j = nlist[row + k];
-        const REAL3 xj = vload3(j, x);
-        REAL3 del = xi - xj;
-        del.x = MINIMG_X(del.x, Lx);
-        del.y = MINIMG_Y(del.y, Ly);
-        del.z = MINIMG_Z(del.z, Lz);
-        const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
-        const REAL radj = radius[j];
-        const REAL radsum = radi + radj;
-#ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
-                        * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
-        if (rsq >= radsum * radsum) {
-#ifdef HAS_HISTORY
-            /* reset the history of a separated pair; most are zero already and
-             * stay clean in the cache */
-            const REAL3 old = vload3(row + k, shear);
-            if (old.x != (REAL)0 || old.y != (REAL)0 || old.z != (REAL)0)
-                vstore3((REAL3)(0), row + k, shear);
+        const int e = row[k];
+        if (e >= 0) {
+            fs += vload3((size_t)e * CF_RECORDS, cf);
+#ifdef HAS_ROTATION
+            ts += vload3((size_t)e * CF_RECORDS + 1, cf);
 #endif
-            continue;
+        } else {
+            const size_t c = (size_t)(-(e + 1));
+            fs -= vload3(c * CF_RECORDS, cf);
+#ifdef HAS_ROTATION
+            ts += vload3(c * CF_RECORDS + 2, cf);
+#endif
         }
-#endif
-        struct contact c;
-        c.del = del;
-        c.rsq = rsq;
-        c.radi = radi;
-        c.radj = radj;
-        c.radsum = radsum;
-        c.reff = radi * radj / radsum;
-        c.vr = vi - vload3(j, v);
-        c.omi = omi;
-#ifdef HAS_ROTATION
-        c.omj = vload3(j, omega);
-#else
-        c.omj = (REAL3)(0);
-#endif
-        const REAL mj = rmass[j];
-        REAL meff = mi * mj / (mi + mj);
-        if (maski & freezebit)
-            meff = mj;
-        if (mask[j] & freezebit)
-            meff = mi;
-        c.meff = meff;
-        c.dt = dt;
-        c.shearupdate = shearupdate;
-        __global const REAL *p = param + (size_t)((ti - 1) * ntypes + (type[j] - 1)) * nparam;
-        REAL3 sh, fi, tq;
-#ifdef HAS_HISTORY
-        sh = vload3(row + k, shear);
-#else
-        sh = (REAL3)(0);
-#endif
-        PAIR_EVAL(&c, p, &sh, &fi, &tq);
-#ifdef HAS_HISTORY
-        vstore3(sh, row + k, shear);
-#endif
-        fsum += fi;
-        tsum += tq;
     }
-    vstore3(fsum, i, f);
+    vstore3(fs, i, f);
 #ifdef HAS_ROTATION
-    vstore3(tsum, i, torque);
+    vstore3(ts, i, torque);
 #endif
 }
-#endif /* PAIR_EVAL */
 
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)

@@ -2,9 +2,9 @@
  * per-atom buffers (structure of arrays, device order), program assembly for
  * the active styles, upload at run start and run_sync_host().
  *
- * Buffers exist in two sets (a, b) so that the neighbor re-sort can gather
- * into the spare set and swap; omega and torque exist only when some active
- * style needs rotation. */
+ * One set of buffers: the neighbor re-sort gathers array by array through
+ * the force buffer (src/neighbor.c); omega and torque exist only when some
+ * active style needs rotation. */
 #include "engine.h"
 
 #include <stdlib.h>
@@ -217,15 +217,7 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
     s->image = eng_alloc(g, 3 * n * sizeof(cl_int), "image flags");
 }
 
-void eng_swap(struct engine *e)
-{
-    struct dev_atoms t = e->a;
-    e->a = e->b;
-    e->b = t;
-    e->b.n = e->a.n;
-}
-
-/* (Re)allocate both sets for at least n atoms. Contents are not kept: call
+/* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
  * before upload only. */
 void eng_reserve(struct gravel *g, int n)
 {
@@ -235,9 +227,7 @@ void eng_reserve(struct gravel *g, int n)
         return;
     int cap = n > 16 ? n + n / 8 : 16;
     release_set(&e->a);
-    release_set(&e->b);
     alloc_set(g, &e->a, cap);
-    alloc_set(g, &e->b, cap);
     e->cap = cap;
     e->tag_sum = 0; /* the neighbor list indexes the old buffers */
 }
@@ -263,7 +253,6 @@ void eng_upload(struct gravel *g)
         nbr_invalidate(g);
     struct dev_atoms *s = &e->a;
     s->n = n;
-    e->b.n = n;
     eng_write_reals(g, s->x, 3 * (size_t)n, at->x);
     eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
@@ -432,7 +421,6 @@ void engine_destroy(struct gravel *g)
     eng_release_kernels(e);
     free(e->kern);
     release_set(&e->a);
-    release_set(&e->b);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->peratom)

@@ -35,7 +35,6 @@ struct engine {
     int rotation, history;      /* active features of the current run */
     int cap;                    /* per-atom buffer capacity */
     struct dev_atoms a;
-    struct dev_atoms b;         /* second set for the re-sort (same capacity) */
     int active;                 /* inside a run: the device holds the truth */
     int setup;                  /* computing the setup forces (no history update) */
     int nkern, kern_cap;
@@ -46,7 +45,7 @@ struct engine {
     int n_at_sync;
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
-    cl_kernel k_pair, k_clear;
+    cl_kernel k_pair, k_gather, k_clear;
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
     char prof_name[48][40];
@@ -88,9 +87,7 @@ void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
 void eng_prepare(struct gravel *g);
 void eng_upload(struct gravel *g);
 void eng_release_kernels(struct engine *e);
-/* Swap the a/b per-atom sets after a re-sort. */
-void eng_swap(struct engine *e);
-/* Make sure both per-atom sets hold at least n atoms (contents of `a` kept). */
+/* Make sure the per-atom set holds at least n atoms (contents not kept). */
 void eng_reserve(struct gravel *g, int n);
 
 

@@ -37,6 +37,7 @@ static void set_defaults(struct gravel *g)
     g->neigh.one = 2000;
     g->neigh.page = 100000;
     g->neigh.style_bin = 1;
+    g->neigh.sort_every = -1;
     g->thermo.lost = LOST_ERROR;
     g->groups.n = 1;
     g->groups.used[0] = 1;

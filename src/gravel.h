@@ -93,6 +93,7 @@ struct neigh_settings {
     double skin;
     int style_bin;          /* neighbor ... bin (only style) */
     int every, delay, check, once;
+    bigint sort_every;      /* atom_modify sort: re-sort period in steps (< 0: every rebuild, 0: never) */
     int one, page;          /* capacity hints (neigh_modify one/page) */
     int nexclude;
     int exclude_group[16][2]; /* group index pairs excluded (neigh_modify exclude group) */

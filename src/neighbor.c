@@ -3,9 +3,12 @@
  * A rebuild: wrap periodic positions and reduce the atom extent (one pass),
  * shrink-wrap the box, bin atoms into cells of size >= 2 r_max + skin
  * (atoms outside a fixed face go to a sentinel cell and are lost), scan the
- * cell counts, scatter and sort each cell by tag (deterministic), gather every
- * per-atom array into the new order, and build the full list with history
- * transfer. A list longer than the capacity grows it and builds again. */
+ * cell counts, scatter and sort each cell by tag (deterministic), gather the
+ * per-atom arrays into the new order one by one through a scratch buffer
+ * (when a re-sort is due, atom_modify sort), build the full list in partner
+ * tag order (a list longer than the capacity grows it and builds again),
+ * then the contacts (one per pair, owned by the lower tag) and their history
+ * from the previous contacts of the same owner and partner. */
 #include "neighbor.h"
 
 #include <math.h>
@@ -21,22 +24,26 @@
 
 struct nbr {
     struct nbr_list list;
-    cl_mem nlist_old, ncount_old, shear_old;
-    int maxn_old;
-    int old_valid;              /* old list indexes the current atom order */
+    /* contacts of the previous build, for the history transfer */
+    cl_mem coff_old, cj_old, shear_old;
+    int ncontact_old, n_old;
+    size_t cap_pair, cap_contact, cap_contact_old;
+    int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
         excl_group, dummy;
     size_t cap_atoms, cap_cells;
     size_t rsz;
-    int history;
+    int history, rotation;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
     int nexg;
     int ago;
+    bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
     int lost_warned;
     cl_kernel k_check, k_wrap, k_bin, k_scan_partial, k_scan_top, k_scan_final, k_scatter,
-        k_cellsort, k_reorder, k_reorder_words, k_build, k_overlap;
+        k_cellsort, k_reorder_words, k_build, k_contacts, k_invperm, k_hist_rename,
+        k_hist_transfer, k_overlap;
 };
 
 static struct nbr *get(struct gravel *g)
@@ -60,13 +67,10 @@ void nbr_free(struct gravel *g)
     if (!g->eng || !g->eng->nbr)
         return;
     struct nbr *b = g->eng->nbr;
-    rel(&b->list.nlist);
-    rel(&b->list.ncount);
-    rel(&b->list.shear);
-    rel(&b->nlist_old);
-    rel(&b->ncount_old);
-    rel(&b->shear_old);
-    cl_mem *m[] = {&b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
+    struct nbr_list *l = &b->list;
+    cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->inc, &l->coff, &l->ci, &l->cj,
+                   &l->shear, &l->cf, &b->coff_old, &b->cj_old, &b->shear_old,
+                   &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->dummy};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
@@ -120,12 +124,18 @@ void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m)
 static void grow_atoms(struct gravel *g, struct nbr *b, size_t n)
 {
     size_t r = g->eng->rsz;
-    rel(&b->xhold);
-    rel(&b->cellof);
-    rel(&b->perm);
+    struct nbr_list *l = &b->list;
+    cl_mem *m[] = {&b->xhold, &b->cellof, &b->perm, &l->ncount, &l->nown, &l->coff,
+                   &b->coff_old};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        rel(m[i]);
     b->xhold = eng_alloc(g, 3 * n * r, "neighbor reference positions");
     b->cellof = eng_alloc(g, n * sizeof(cl_int), "cell of atom");
     b->perm = eng_alloc(g, n * sizeof(cl_int), "sort permutation");
+    l->ncount = eng_alloc(g, n * sizeof(cl_int), "neighbor counts");
+    l->nown = eng_alloc(g, n * sizeof(cl_int), "owned contact counts");
+    l->coff = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
+    b->coff_old = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
     b->cap_atoms = n;
 }
 
@@ -143,19 +153,58 @@ static void grow_cells(struct gravel *g, struct nbr *b, size_t ncell)
     b->cap_cells = c;
 }
 
-/* List buffers for maxn slots per atom (current list only). */
+/* Row buffers for maxn slots per atom. */
 static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
 {
-    struct engine *e = g->eng;
-    size_t cap = (size_t)e->cap;
+    size_t cap = (size_t)g->eng->cap;
     rel(&b->list.nlist);
-    rel(&b->list.shear);
-    if (!b->list.ncount)
-        b->list.ncount = eng_alloc(g, cap * sizeof(cl_int), "neighbor counts");
+    rel(&b->list.inc);
     b->list.nlist = eng_alloc(g, cap * (size_t)maxn * sizeof(cl_int), "neighbor list");
-    if (e->history)
-        b->list.shear = eng_alloc(g, cap * (size_t)maxn * 3 * e->rsz, "contact history");
+    b->list.inc = eng_alloc(g, cap * (size_t)maxn * sizeof(cl_int), "contact incidence");
     b->list.maxn = maxn;
+}
+
+/* Bytes of the force record of one contact (kernels/pair_loop.cl). */
+static size_t cf_bytes(const struct engine *e) { return (e->rotation ? 9 : 3) * e->rsz; }
+
+static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
+
+/* Contact buffers for at least nc contacts (contents not kept): ci and cf
+ * (cap_pair), cj and shear (cap_contact; they swap with the previous
+ * build's cj_old and shear_old, cap_contact_old). */
+static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
+{
+    struct engine *e = g->eng;
+    struct nbr_list *l = &b->list;
+    if (nc > b->cap_pair || !l->ci) {
+        rel(&l->ci);
+        rel(&l->cf);
+        b->cap_pair = grown(nc);
+        l->ci = eng_alloc(g, b->cap_pair * sizeof(cl_int), "contact owners");
+        l->cf = eng_alloc(g, b->cap_pair * cf_bytes(e), "contact forces");
+    }
+    if (nc > b->cap_contact || !l->cj) {
+        rel(&l->cj);
+        rel(&l->shear);
+        b->cap_contact = grown(nc);
+        l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
+        if (e->history)
+            l->shear = eng_alloc(g, b->cap_contact * 3 * e->rsz, "contact history");
+    }
+}
+
+/* The current contacts become the previous ones (history transfer). */
+static void retire_contacts(struct nbr *b)
+{
+    struct nbr_list *l = &b->list;
+    cl_mem t;
+    t = b->coff_old, b->coff_old = l->coff, l->coff = t;
+    t = b->cj_old, b->cj_old = l->cj, l->cj = t;
+    t = b->shear_old, b->shear_old = l->shear, l->shear = t;
+    size_t c = b->cap_contact_old;
+    b->cap_contact_old = b->cap_contact;
+    b->cap_contact = c;
+    b->ncontact_old = l->ncontact;
 }
 
 void nbr_setup(struct gravel *g)
@@ -170,9 +219,12 @@ void nbr_setup(struct gravel *g)
     b->k_scan_final = eng_kernel(g, "scan_final");
     b->k_scatter = eng_kernel(g, "nbr_scatter");
     b->k_cellsort = eng_kernel(g, "nbr_cellsort");
-    b->k_reorder = eng_kernel(g, "nbr_reorder");
     b->k_reorder_words = eng_kernel(g, "nbr_reorder_words");
     b->k_build = eng_kernel(g, "nbr_build");
+    b->k_contacts = eng_kernel(g, "nbr_contacts");
+    b->k_invperm = eng_kernel(g, "nbr_invperm");
+    b->k_hist_rename = eng_kernel(g, "hist_rename");
+    b->k_hist_transfer = eng_kernel(g, "hist_transfer");
     b->k_overlap = eng_kernel(g, "nbr_overlap");
     if (!b->flags)
         b->flags = eng_alloc(g, 4 * sizeof(cl_int), "neighbor flags");
@@ -185,14 +237,24 @@ void nbr_setup(struct gravel *g)
     /* a different capacity, precision or feature set invalidates the kept list */
     if (b->cap_atoms != (size_t)e->cap || b->rsz != e->rsz || b->history != e->history) {
         b->old_valid = 0;
-        rel(&b->nlist_old);
-        rel(&b->ncount_old);
-        rel(&b->shear_old);
-        rel(&b->list.ncount);
+        b->built = 0;
+        struct nbr_list *l = &b->list;
+        cl_mem *m[] = {&l->ci, &l->cj, &l->shear, &l->cf, &b->cj_old, &b->shear_old};
+        for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+            rel(m[i]);
+        b->cap_pair = b->cap_contact = b->cap_contact_old = 0;
+        l->ncontact = b->ncontact_old = 0;
         grow_atoms(g, b, (size_t)e->cap);
         alloc_list(g, b, b->list.maxn ? b->list.maxn : 16);
         b->rsz = e->rsz;
         b->history = e->history;
+        b->rotation = e->rotation;
+    }
+    if (b->rotation != e->rotation) { /* contact force records change size */
+        rel(&b->list.cf);
+        b->list.cf = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
+                               "contact forces");
+        b->rotation = e->rotation;
     }
     /* exclusions */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
@@ -229,6 +291,7 @@ void nbr_setup(struct gravel *g)
         b->cutmax = 1.0;
     b->ago = 0;
     b->built = 0;
+    b->last_sort = g->step;
     e->st.nbuilds = e->st.ndanger = 0;
 }
 
@@ -237,10 +300,15 @@ static void read_flags(struct gravel *g, struct nbr *b, cl_int out[4])
     eng_read(g, b->flags, 0, 4 * sizeof(cl_int), out);
 }
 
+/* flags = {0, INT_MAX, 0, 0}, queued without waiting (the pattern buffer is
+ * copied at enqueue). */
 static void reset_flags(struct gravel *g, struct nbr *b)
 {
-    cl_int f[4] = {0, 0x7fffffff, 0, 0};
-    eng_write(g, b->flags, 0, sizeof f, f);
+    cl_int zero = 0, big = 0x7fffffff;
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, b->flags, &zero, sizeof zero, 0,
+                                     4 * sizeof(cl_int), 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, b->flags, &big, sizeof big,
+                                     sizeof(cl_int), sizeof(cl_int), 0, NULL, NULL));
 }
 
 /* "; probable cause: ..." comparing the time step with the collision time
@@ -394,7 +462,9 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
     }
 }
 
-static void build_list(struct gravel *g, struct nbr *b)
+/* The full list in partner-tag order; cells list their atoms in b->perm
+ * unless the atoms were just re-sorted (sorted: contiguous ranges). */
+static void build_list(struct gravel *g, struct nbr *b, int sorted)
 {
     struct engine *e = g->eng;
     int n = e->a.n;
@@ -409,6 +479,8 @@ static void build_list(struct gravel *g, struct nbr *b)
         eng_arg_mem(g, k, a++, e->a.mask);
         eng_arg_mem(g, k, a++, e->a.tag);
         eng_arg_mem(g, k, a++, b->start);
+        eng_arg_mem(g, k, a++, b->perm);
+        eng_arg_int(g, k, a++, sorted);
         for (int q = 0; q < 3; q++)
             eng_arg_int(g, k, a++, b->nc[q]);
         for (int q = 0; q < 3; q++)
@@ -423,20 +495,12 @@ static void build_list(struct gravel *g, struct nbr *b)
         eng_arg_int(g, k, a++, b->list.maxn);
         eng_arg_mem(g, k, a++, b->list.nlist);
         eng_arg_mem(g, k, a++, b->list.ncount);
+        eng_arg_mem(g, k, a++, b->list.nown);
         eng_arg_mem(g, k, a++, b->flags);
         eng_arg_int(g, k, a++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
         eng_arg_mem(g, k, a++, b->excl_type);
         eng_arg_int(g, k, a++, b->nexg);
         eng_arg_mem(g, k, a++, b->excl_group);
-        int hist = !e->history ? 0 : (b->old_valid && b->nlist_old) ? 2 : 1;
-        eng_arg_int(g, k, a++, hist);
-        eng_arg_mem(g, k, a++, b->perm);
-        eng_arg_mem(g, k, a++, hist == 2 ? b->nlist_old : b->dummy);
-        eng_arg_mem(g, k, a++, hist == 2 ? b->ncount_old : b->dummy);
-        eng_arg_int(g, k, a++, hist == 2 ? b->maxn_old : 0);
-        eng_arg_mem(g, k, a++, e->b.tag); /* tags in the old order */
-        eng_arg_mem(g, k, a++, hist == 2 ? b->shear_old : b->dummy);
-        eng_arg_mem(g, k, a++, e->history ? b->list.shear : b->dummy);
         eng_launch(g, k, (size_t)n);
         cl_int fl[4];
         read_flags(g, b, fl);
@@ -444,11 +508,129 @@ static void build_list(struct gravel *g, struct nbr *b)
             break;
         int maxn = fl[2] + fl[2] / 4 + 4;
         gr_print(g, "Neighbor list capacity grown from %d to %d per atom\n", b->list.maxn, maxn);
-        cl_mem keep_count = b->list.ncount;
-        b->list.ncount = NULL;
         alloc_list(g, b, maxn);
-        rel(&keep_count);
     }
+}
+
+/* Contacts of the rows just built: offsets (scan of the owned counts),
+ * owners, partners, incidence; then their history. */
+static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
+{
+    struct engine *e = g->eng;
+    struct nbr_list *l = &b->list;
+    int n = e->a.n;
+    nbr_scan(g, l->nown, l->coff, n);
+    cl_int total = 0;
+    eng_read(g, l->coff, (size_t)n * sizeof(cl_int), sizeof total, &total);
+    alloc_contacts(g, b, (size_t)total);
+    l->ncontact = total;
+    reset_flags(g, b);
+    cl_kernel k = b->k_contacts;
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_int(g, k, a++, l->maxn);
+    eng_arg_mem(g, k, a++, l->nlist);
+    eng_arg_mem(g, k, a++, l->ncount);
+    eng_arg_mem(g, k, a++, l->nown);
+    eng_arg_mem(g, k, a++, l->coff);
+    eng_arg_mem(g, k, a++, e->a.tag);
+    eng_arg_mem(g, k, a++, l->ci);
+    eng_arg_mem(g, k, a++, l->cj);
+    eng_arg_mem(g, k, a++, l->inc);
+    eng_arg_mem(g, k, a++, b->flags);
+    eng_launch(g, k, (size_t)n);
+    cl_int fl[4];
+    read_flags(g, b, fl);
+    if (fl[3])
+        gr_error(g, "internal error: the neighbor list is not symmetric (a pair is missing "
+                    "from one partner's row) at step %lld", (long long)g->step);
+    if (!e->history)
+        return;
+    if (!b->old_valid || b->ncontact_old == 0) {
+        eng_fill_zero(g, l->shear, (size_t)total * 3 * e->rsz);
+        return;
+    }
+    k = b->k_hist_transfer;
+    a = 0;
+    eng_arg_int(g, k, a++, total);
+    eng_arg_mem(g, k, a++, l->ci);
+    eng_arg_mem(g, k, a++, l->cj);
+    eng_arg_mem(g, k, a++, b->perm);
+    eng_arg_int(g, k, a++, permuted);
+    eng_arg_mem(g, k, a++, b->coff_old);
+    eng_arg_mem(g, k, a++, b->cj_old);
+    eng_arg_mem(g, k, a++, b->shear_old);
+    eng_arg_mem(g, k, a++, l->shear);
+    eng_launch(g, k, (size_t)total);
+}
+
+/* Gather one per-atom array (bytes per atom) into the new order through the
+ * force buffer, free scratch during a rebuild (the forces of the step are
+ * computed after it), and copy it back. */
+static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t bytes, int n)
+{
+    struct engine *e = g->eng;
+    cl_kernel k = b->k_reorder_words;
+    eng_arg_int(g, k, 0, n);
+    eng_arg_int(g, k, 1, (int)(bytes / 4));
+    eng_arg_mem(g, k, 2, b->perm);
+    eng_arg_mem(g, k, 3, m);
+    eng_arg_mem(g, k, 4, e->a.f);
+    eng_launch(g, k, (size_t)n);
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.f, m, 0, 0, (size_t)n * bytes, 0, NULL,
+                                     NULL));
+}
+
+/* Re-sort every per-atom array (and the fixes' per-atom state) by b->perm,
+ * keeping nkeep atoms; the previous contacts are renamed into the new order
+ * for the history transfer. */
+static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *s = &e->a;
+    size_t r = e->rsz;
+    if (e->history && b->old_valid && b->ncontact_old > 0) {
+        /* cellof is free now: it becomes the inverse permutation */
+        OCL_CHECK(g, clEnqueueFillBuffer(e->ocl.queue, b->cellof, &(cl_int){-1},
+                                         sizeof(cl_int), 0, (size_t)n * sizeof(cl_int), 0,
+                                         NULL, NULL));
+        cl_kernel k = b->k_invperm;
+        eng_arg_int(g, k, 0, nkeep);
+        eng_arg_mem(g, k, 1, b->perm);
+        eng_arg_mem(g, k, 2, b->cellof);
+        eng_launch(g, k, (size_t)nkeep);
+        k = b->k_hist_rename;
+        eng_arg_int(g, k, 0, b->ncontact_old);
+        eng_arg_mem(g, k, 1, b->cellof);
+        eng_arg_mem(g, k, 2, b->cj_old);
+        eng_launch(g, k, (size_t)b->ncontact_old);
+    }
+    reorder_array(g, b, s->x, 3 * r, nkeep);
+    reorder_array(g, b, s->v, 3 * r, nkeep);
+    if (e->rotation)
+        reorder_array(g, b, s->omega, 3 * r, nkeep);
+    reorder_array(g, b, s->radius, r, nkeep);
+    reorder_array(g, b, s->rmass, r, nkeep);
+    reorder_array(g, b, s->type, sizeof(cl_int), nkeep);
+    reorder_array(g, b, s->mask, sizeof(cl_uint), nkeep);
+    reorder_array(g, b, s->tag, sizeof(cl_long), nkeep);
+    reorder_array(g, b, s->image, 3 * sizeof(cl_int), nkeep);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom)
+            continue;
+        cl_kernel k = b->k_reorder_words;
+        eng_arg_int(g, k, 0, nkeep);
+        eng_arg_int(g, k, 1, (int)(f->peratom_bytes / 4));
+        eng_arg_mem(g, k, 2, b->perm);
+        eng_arg_mem(g, k, 3, f->peratom);
+        eng_arg_mem(g, k, 4, f->peratom_tmp);
+        eng_launch(g, k, (size_t)nkeep);
+        cl_mem t = f->peratom;
+        f->peratom = f->peratom_tmp;
+        f->peratom_tmp = t;
+    }
+    e->a.n = nkeep;
 }
 
 void nbr_rebuild(struct gravel *g)
@@ -503,63 +685,19 @@ void nbr_rebuild(struct gravel *g)
     eng_arg_mem(g, k, 2, b->perm);
     eng_arg_mem(g, k, 3, e->a.tag);
     eng_launch(g, k, (size_t)b->ncell);
-    /* gather into set b, then swap: b holds the old order afterwards */
-    k = b->k_reorder;
-    struct dev_atoms *s0 = &e->a, *s1 = &e->b;
-    int a = 0;
-    eng_arg_int(g, k, a++, nkeep);
-    eng_arg_mem(g, k, a++, b->perm);
-    eng_arg_mem(g, k, a++, s0->x);
-    eng_arg_mem(g, k, a++, s1->x);
-    eng_arg_mem(g, k, a++, s0->v);
-    eng_arg_mem(g, k, a++, s1->v);
-    eng_arg_mem(g, k, a++, e->rotation ? s0->omega : s0->v);
-    eng_arg_mem(g, k, a++, e->rotation ? s1->omega : s1->v);
-    eng_arg_mem(g, k, a++, s0->radius);
-    eng_arg_mem(g, k, a++, s1->radius);
-    eng_arg_mem(g, k, a++, s0->rmass);
-    eng_arg_mem(g, k, a++, s1->rmass);
-    eng_arg_mem(g, k, a++, s0->type);
-    eng_arg_mem(g, k, a++, s1->type);
-    eng_arg_mem(g, k, a++, s0->mask);
-    eng_arg_mem(g, k, a++, s1->mask);
-    eng_arg_mem(g, k, a++, s0->tag);
-    eng_arg_mem(g, k, a++, s1->tag);
-    eng_arg_mem(g, k, a++, s0->image);
-    eng_arg_mem(g, k, a++, s1->image);
-    eng_launch(g, k, (size_t)nkeep);
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *f = g->styles.fix[i];
-        if (!f->peratom)
-            continue;
-        k = b->k_reorder_words;
-        eng_arg_int(g, k, 0, nkeep);
-        eng_arg_int(g, k, 1, (int)(f->peratom_bytes / 4));
-        eng_arg_mem(g, k, 2, b->perm);
-        eng_arg_mem(g, k, 3, f->peratom);
-        eng_arg_mem(g, k, 4, f->peratom_tmp);
-        eng_launch(g, k, (size_t)nkeep);
-        cl_mem t = f->peratom;
-        f->peratom = f->peratom_tmp;
-        f->peratom_tmp = t;
+    /* atom_modify sort: every rebuild (default, < 0), never (0) or at the
+     * first rebuild N steps after the last; lost atoms are always dropped */
+    bigint every = g->neigh.sort_every;
+    int resort = nkeep < n || !b->built || every < 0 ||
+                 (every > 0 && g->step - b->last_sort >= every);
+    if (e->history && b->old_valid)
+        retire_contacts(b);
+    if (resort) {
+        resort_atoms(g, b, n, nkeep);
+        b->last_sort = g->step;
     }
-    eng_swap(e);
-    e->a.n = e->b.n = nkeep;
-    /* the current list becomes the old one (for history transfer) */
-    if (e->history && b->old_valid) {
-        cl_mem t;
-        t = b->nlist_old, b->nlist_old = b->list.nlist, b->list.nlist = t;
-        t = b->shear_old, b->shear_old = b->list.shear, b->list.shear = t;
-        t = b->ncount_old, b->ncount_old = b->list.ncount, b->list.ncount = t;
-        int mo = b->maxn_old;
-        b->maxn_old = b->list.maxn;
-        if (!b->list.nlist || !b->list.shear || !b->list.ncount || mo != b->maxn_old) {
-            rel(&b->list.nlist);
-            rel(&b->list.shear);
-            alloc_list(g, b, b->maxn_old);
-        }
-    }
-    build_list(g, b);
+    build_list(g, b, resort);
+    build_contacts(g, b, resort);
     if (e->history)
         b->old_valid = 1;
     if (nkeep > 0)
@@ -636,7 +774,8 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     if (!e || !e->nbr || !e->nbr->built)
         return 0;
     struct nbr *b = e->nbr;
-    int n = e->a.n, maxn = b->list.maxn;
+    const struct nbr_list *l = &b->list;
+    int n = e->a.n, maxn = l->maxn, nc = l->ncontact;
     s->n = n;
     s->maxn = maxn;
     s->ago = b->ago;
@@ -644,37 +783,141 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     s->ncount = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     s->nlist = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
     s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
-    if (e->history)
-        s->shear = gr_malloc(g, (3 * (size_t)n * maxn + 1) * sizeof(double));
-    eng_read(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
-    eng_read(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
+    eng_read(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+    eng_read(g, l->nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
     eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
-    if (e->history)
-        eng_read_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
+    if (e->history) {
+        /* per row slot: the owner's history, its negative on the partner's side */
+        s->shear = gr_calloc(g, 3 * (size_t)n * maxn + 1, sizeof(double));
+        int *inc = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
+        double *sh = gr_malloc(g, (3 * (size_t)nc + 1) * sizeof(double));
+        eng_read(g, l->inc, 0, (size_t)n * maxn * sizeof(cl_int), inc);
+        eng_read_reals(g, l->shear, 3 * (size_t)nc, sh);
+        for (int i = 0; i < n; i++)
+            for (int k = 0; k < s->ncount[i]; k++) {
+                size_t slot = (size_t)i * maxn + k;
+                int c = inc[slot];
+                double sign = c >= 0 ? 1.0 : -1.0;
+                if (c < 0)
+                    c = -(c + 1);
+                for (int d = 0; d < 3; d++)
+                    s->shear[3 * slot + d] = sign * sh[3 * (size_t)c + d];
+            }
+        free(inc);
+        free(sh);
+    }
     return 1;
 }
 
-void nbr_import(struct gravel *g, const struct nbr_state *s)
+/* Order row slots by partner tag (insertion sort: rows are short). */
+static void sort_row(int *row, double *shear, int cnt, const int64_t *tag)
+{
+    for (int a = 1; a < cnt; a++) {
+        int j = row[a];
+        double sh[3] = {0, 0, 0};
+        if (shear)
+            memcpy(sh, shear + 3 * a, sizeof sh);
+        int b = a - 1;
+        while (b >= 0 && tag[row[b]] > tag[j]) {
+            row[b + 1] = row[b];
+            if (shear)
+                memcpy(shear + 3 * (b + 1), shear + 3 * b, sizeof sh);
+            b--;
+        }
+        row[b + 1] = j;
+        if (shear)
+            memcpy(shear + 3 * (b + 1), sh, sizeof sh);
+    }
+}
+
+int nbr_import(struct gravel *g, const struct nbr_state *s)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
+    struct nbr_list *l = &b->list;
     int n = e->a.n;
     int maxn = s->maxn > 0 ? s->maxn : 1;
     if (s->n != n)
         gr_error(g, "restart: neighbor list of %d atoms for %d atoms on the device", s->n, n);
-    alloc_list(g, b, maxn);
-    eng_write(g, b->list.ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
-    eng_write(g, b->list.nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
-    if (e->history) {
-        if (s->shear)
-            eng_write_reals(g, b->list.shear, 3 * (size_t)n * maxn, s->shear);
-        else
-            eng_fill_zero(g, b->list.shear, (size_t)n * maxn * 3 * e->rsz);
+    const int64_t *tag = g->atoms.tag;
+    size_t slots = (size_t)n * maxn;
+    int *row = gr_malloc(g, (slots + 1) * sizeof(int));
+    int *inc = gr_malloc(g, (slots + 1) * sizeof(int));
+    int *nown = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+    int *coff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+    double *rsh = e->history ? gr_calloc(g, 3 * slots + 1, sizeof(double)) : NULL;
+    memcpy(row, s->nlist, slots * sizeof(int));
+    if (rsh && s->shear)
+        memcpy(rsh, s->shear, 3 * slots * sizeof(double));
+    size_t total = 0;
+    for (int i = 0; i < n; i++) {
+        sort_row(row + (size_t)i * maxn, rsh ? rsh + 3 * (size_t)i * maxn : NULL, s->ncount[i],
+                 tag);
+        int own = 0;
+        for (int k = 0; k < s->ncount[i]; k++)
+            own += tag[row[(size_t)i * maxn + k]] > tag[i];
+        nown[i] = own;
+        coff[i] = (int)total;
+        total += (size_t)own;
     }
-    eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    coff[n] = (int)total;
+    int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
+    double *sh = e->history ? gr_calloc(g, 3 * total + 1, sizeof(double)) : NULL;
+    int asym = 0;
+    for (int i = 0; i < n && !asym; i++) {
+        int cnt = s->ncount[i], first = cnt - nown[i];
+        for (int k = 0; k < cnt; k++) {
+            size_t slot = (size_t)i * maxn + k;
+            int j = row[slot];
+            if (k >= first) {
+                int c = coff[i] + k - first;
+                ci[c] = i;
+                cj[c] = j;
+                inc[slot] = c;
+                if (sh)
+                    memcpy(sh + 3 * (size_t)c, rsh + 3 * slot, 3 * sizeof(double));
+                continue;
+            }
+            int jfirst = s->ncount[j] - nown[j], at = -1;
+            for (int q = jfirst; q < s->ncount[j]; q++)
+                if (row[(size_t)j * maxn + q] == i)
+                    at = q;
+            if (at < 0) {
+                asym = 1;
+                break;
+            }
+            inc[slot] = -(coff[j] + at - jfirst + 1);
+        }
+    }
+    if (!asym) {
+        alloc_list(g, b, maxn);
+        alloc_contacts(g, b, total);
+        l->ncontact = (int)total;
+        eng_write(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
+        eng_write(g, l->nlist, 0, slots * sizeof(cl_int), row);
+        eng_write(g, l->inc, 0, slots * sizeof(cl_int), inc);
+        eng_write(g, l->nown, 0, (size_t)n * sizeof(cl_int), nown);
+        eng_write(g, l->coff, 0, ((size_t)n + 1) * sizeof(cl_int), coff);
+        eng_write(g, l->ci, 0, total * sizeof(cl_int), ci);
+        eng_write(g, l->cj, 0, total * sizeof(cl_int), cj);
+        if (sh)
+            eng_write_reals(g, l->shear, 3 * total, sh);
+        eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    }
+    free(row);
+    free(inc);
+    free(nown);
+    free(coff);
+    free(rsh);
+    free(ci);
+    free(cj);
+    free(sh);
+    if (asym)
+        return 0;
     for (int q = 0; q < 3; q++)
-        b->list.L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+        l->L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
     b->ago = s->ago;
     b->built = 1;
     b->old_valid = e->history;
+    return 1;
 }

@@ -2,17 +2,25 @@
  * with skin, rebuild decisions, periodic wrap, shrink-wrap, lost atoms and
  * contact history carried across rebuilds (by partner tag).
  *
- * List layout: atom-major, nlist[i maxn + k] (k < ncount[i]) is the device
- * index of i's k-th neighbor; with history, shear[3 (i maxn + k) ..] is the
- * tangential displacement of that contact. */
+ * Each pair in the list is one contact of the pipeline (doc/contact_pipeline.md,
+ * kernels/pair_loop.cl), evaluated once; its history is stored once and
+ * follows the pair (owner and partner) through rebuilds and re-sorts. */
 #ifndef GR_NEIGHBOR_H
 #define GR_NEIGHBOR_H
 
 #include "engine.h"
 
 struct nbr_list {
-    cl_mem nlist, ncount, shear;
+    /* full rows in ascending partner tag: nlist[i maxn + k] (k < ncount[i])
+     * is the device index of i's k-th neighbor, inc[i maxn + k] its contact
+     * (c when i owns it, -(c + 1) when the partner does) */
+    cl_mem nlist, ncount, nown, inc;
     int maxn;
+    /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1;
+     * ci/cj the two atoms; shear (3 REAL, history only) seen from ci; cf the
+     * contact force records of the step (kernels/pair_loop.cl) */
+    cl_mem coff, ci, cj, shear, cf;
+    int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
 };
 
@@ -26,7 +34,8 @@ void nbr_free(struct gravel *g);
  * the step, tag and probable cause. Returns 1 when a rebuild is due. */
 int nbr_decide(struct gravel *g);
 /* Wrap periodic atoms, shrink-wrap, drop lost atoms (per thermo_modify
- * lost), re-sort all per-atom arrays by cell and build the list. */
+ * lost), re-sort all per-atom arrays by cell (atom_modify sort) and build
+ * the list and its contacts. */
 void nbr_rebuild(struct gravel *g);
 /* The current list (valid after a build). */
 const struct nbr_list *nbr_list(struct gravel *g);
@@ -44,7 +53,8 @@ void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m);
  * list built this engine); nbr_import installs s as the current, built list
  * (old_valid: the next rebuild transfers its history by partner tag) with
  * the reference positions and the steps since the build, and sets the
- * periodic lengths from the box. Arrays are caller-owned (free with
+ * periodic lengths from the box; it returns 0 and installs nothing when the
+ * rows are not symmetric (j in i's row without i in j's). Arrays are caller-owned (free with
  * nbr_state_free). */
 struct nbr_state {
     int n, maxn, ago, history;
@@ -54,7 +64,7 @@ struct nbr_state {
     double *xhold;          /* [3 n] */
 };
 int nbr_export(struct gravel *g, struct nbr_state *s);
-void nbr_import(struct gravel *g, const struct nbr_state *s);
+int nbr_import(struct gravel *g, const struct nbr_state *s);
 void nbr_state_free(struct nbr_state *s);
 
 #endif

@@ -1274,9 +1274,13 @@ int restart_resume(struct gravel *g)
         memcpy(s.xhold, exact ? im->xhold : g->atoms.x, 3 * (size_t)n * sizeof(double));
         s.ago = exact ? im->ago : 0;
         exact = exact && e->history == im->history;
-        nbr_import(g, &s);
+        int imported = nbr_import(g, &s);
         nbr_state_free(&s);
-        if (exact)
+        if (!imported) {
+            gr_warn(g, "restart: the neighbor list in the file is not symmetric; it is "
+                       "rebuilt and the contact history is lost");
+            exact = 0;
+        } else if (exact)
             result = force_fingerprint(g) == im->fingerprint ? 2 : 1;
     }
     free(row);

@@ -39,6 +39,7 @@ static void pair_init(struct gravel *g)
     struct engine *e = g->eng;
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
+    e->k_gather = eng_kernel(g, "pair_gather");
     e->k_pair = NULL;
     if (!p)
         return;
@@ -57,7 +58,7 @@ static void pair_init(struct gravel *g)
     struct gravel *gg = g;
     eng_write_reals(gg, e->pair_param, (size_t)nt * nt * np, par);
     free(par);
-    e->k_pair = eng_kernel(g, "pair_loop");
+    e->k_pair = eng_kernel(g, "pair_contacts");
 }
 
 /* Force computation: pair (or clear), then every post_force fix. */
@@ -68,10 +69,13 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     struct dev_atoms *a = &e->a;
     double t0 = wall();
     if (e->k_pair) {
+        /* the contact pipeline: each contact once, then each particle's sum */
         const struct nbr_list *l = nbr_list(g);
         cl_kernel k = e->k_pair;
         int i = 0;
-        eng_arg_int(g, k, i++, a->n);
+        eng_arg_int(g, k, i++, l->ncontact);
+        eng_arg_mem(g, k, i++, l->ci);
+        eng_arg_mem(g, k, i++, l->cj);
         eng_arg_mem(g, k, i++, a->x);
         eng_arg_mem(g, k, i++, a->v);
         eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
@@ -79,10 +83,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, a->rmass);
         eng_arg_mem(g, k, i++, a->type);
         eng_arg_mem(g, k, i++, a->mask);
-        eng_arg_mem(g, k, i++, l->nlist);
-        eng_arg_mem(g, k, i++, l->ncount);
-        eng_arg_int(g, k, i++, l->maxn);
-        eng_arg_mem(g, k, i++, e->history ? l->shear : l->nlist);
+        eng_arg_mem(g, k, i++, e->history ? l->shear : l->ci);
         eng_arg_mem(g, k, i++, e->pair_param);
         eng_arg_int(g, k, i++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
         eng_arg_int(g, k, i++, g->styles.pair->style->nparam);
@@ -91,6 +92,15 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, i++, l->L[q]);
+        eng_arg_mem(g, k, i++, l->cf);
+        eng_launch(g, k, (size_t)l->ncontact);
+        k = e->k_gather;
+        i = 0;
+        eng_arg_int(g, k, i++, a->n);
+        eng_arg_mem(g, k, i++, l->inc);
+        eng_arg_mem(g, k, i++, l->ncount);
+        eng_arg_int(g, k, i++, l->maxn);
+        eng_arg_mem(g, k, i++, l->cf);
         eng_arg_mem(g, k, i++, a->f);
         eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
         eng_launch(g, k, (size_t)a->n);

@@ -140,6 +140,36 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
     g->neigh = ns;
 }
 
+/* atom_modify sort Nfreq binsize: re-sort the atoms by cell at the first
+ * rebuild Nfreq or more steps after the last (0 = never; the binsize is
+ * accepted, cells are the neighbor cells). Other LAMMPS keywords (id, map,
+ * first) only tune LAMMPS' memory layout: accepted with one warning. */
+void cmd_atom_modify(struct gravel *g, int argc, char **argv)
+{
+    bigint every = g->neigh.sort_every;
+    int other = 0;
+    for (int i = 0; i < argc; i++) {
+        const char *kw = argv[i];
+        if (!strcmp(kw, "sort")) {
+            arg_need(g, argc, i, 2, kw);
+            every = arg_bigint(g, argv[i + 1], "sort frequency");
+            if (every < 0)
+                gr_error(g, "sort frequency must be >= 0, got %lld", (long long)every);
+            (void)arg_nonneg(g, argv[i + 2], "sort bin size");
+            i += 2;
+        } else if (!strcmp(kw, "id") || !strcmp(kw, "map") || !strcmp(kw, "first")) {
+            arg_need(g, argc, i, 1, kw);
+            i++;
+            other = 1;
+        } else {
+            gr_error(g, "unknown keyword '%.32s' (expected sort, id, map or first)", kw);
+        }
+    }
+    g->neigh.sort_every = every;
+    if (other)
+        gr_warn(g, "keywords id, map and first only tune LAMMPS' memory layout: ignored");
+}
+
 /* mass I value: per-type mass (I may be a range). atom_style sphere keeps a
  * per-atom mass from diameter and density; the per-type value is stored
  * (written to data files' Masses section) but does not change atom masses. */
