@@ -38,6 +38,8 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;
+    if (c > 0 && i0 >= n)
+        return;
     int i1 = i0 + chunk;
     if (i1 > n)
         i1 = n;
@@ -106,6 +108,8 @@ __kernel void scan_partial(const int m, const int chunk, __global const int *in,
 {
     const int p = get_global_id(0);
     const int i0 = p * chunk;
+    if (p > 0 && i0 >= m)
+        return;
     int i1 = i0 + chunk;
     if (i1 > m)
         i1 = m;
@@ -133,6 +137,8 @@ __kernel void scan_final(const int m, const int chunk, const int nchunk,
                          __global int *out)
 {
     const int p = get_global_id(0);
+    if (p >= nchunk)
+        return;
     const int i0 = p * chunk;
     int i1 = i0 + chunk;
     if (i1 > m)
@@ -419,6 +425,8 @@ __kernel void nbr_overlap(const int n, const int chunk, __global const REAL *x,
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;
+    if (c > 0 && i0 >= n)
+        return;
     int i1 = i0 + chunk;
     if (i1 > n)
         i1 = n;

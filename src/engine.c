@@ -86,13 +86,28 @@ void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes)
     set_arg(g, k, i, bytes, NULL);
 }
 
+/* Work-group size for kernel k: the device's choice (ocl.wg) capped by what
+ * the compiled kernel allows. Kernels guard their index, so the global size
+ * is rounded up to a multiple of it; results never depend on it (no
+ * cross-work-item sums). */
+static size_t work_group(struct engine *e, cl_kernel k)
+{
+    size_t kmax = 0;
+    if (clGetKernelWorkGroupInfo(k, e->ocl.device, CL_KERNEL_WORK_GROUP_SIZE, sizeof kmax, &kmax,
+                                 NULL) != CL_SUCCESS || kmax == 0)
+        return 1;
+    return e->ocl.wg < kmax ? e->ocl.wg : kmax;
+}
+
 void eng_launch(struct gravel *g, cl_kernel k, size_t n)
 {
     if (n == 0)
         return;
     struct engine *e = g->eng;
     cl_event ev = NULL;
-    cl_int err = clEnqueueNDRangeKernel(e->ocl.queue, k, 1, NULL, &n, NULL, 0, NULL,
+    size_t local = work_group(e, k);
+    size_t global = (n + local - 1) / local * local;
+    cl_int err = clEnqueueNDRangeKernel(e->ocl.queue, k, 1, NULL, &global, &local, 0, NULL,
                                         e->ocl.profile ? &ev : NULL);
     if (err == CL_SUCCESS && ev) {
         cl_ulong t0 = 0, t1 = 0;

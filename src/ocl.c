@@ -134,6 +134,20 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     cl_int err;
     o->ctx = clCreateContext(NULL, 1, &o->device, NULL, NULL, &err);
     ocl_check(g, err, "clCreateContext");
+    size_t maxwg = 1;
+    OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof maxwg, &maxwg,
+                                 NULL));
+    o->wg = 128;
+    const char *wg = getenv("GRAVEL_WORKGROUP");
+    if (wg && *wg) {
+        char *end;
+        long v = strtol(wg, &end, 10);
+        if (*end || v < 1 || v > 65536)
+            gr_error(g, "GRAVEL_WORKGROUP must be a work-group size 1..65536, got '%.32s'", wg);
+        o->wg = (size_t)v;
+    }
+    if (o->wg > maxwg)
+        o->wg = maxwg;
     const char *prof = getenv("GRAVEL_PROFILE");
     o->profile = prof && *prof && strcmp(prof, "0");
     o->queue = clCreateCommandQueue(o->ctx, o->device,

@@ -25,6 +25,8 @@ struct ocl {
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (engine.c) */
+    size_t wg;                  /* work-group size of every launch (engine.c): env
+                                 * GRAVEL_WORKGROUP, else 128 capped by the device */
 };
 
 /* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */
