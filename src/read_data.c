@@ -89,7 +89,7 @@ static double rd_num(struct rd *r, const char *s, const char *what)
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (*end || end == s || errno == ERANGE || !isfinite(v))
+    if (*end || end == s || !isfinite(v)) /* ERANGE with a finite v: a denormal, accepted */
         gr_error(r->g, "%s:%ld: expected a number for %s, got '%.64s'", r->path, r->lineno,
                  what, s);
     return v;
