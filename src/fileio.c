@@ -113,6 +113,94 @@ ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max)
     return (ssize_t)n;
 }
 
+struct sink {
+    int fd;
+    int *errp;
+};
+
+static ssize_t sink_write(void *cookie, const char *buf, size_t n)
+{
+    struct sink *k = cookie;
+    size_t done = 0;
+    while (done < n) {
+        ssize_t w = write(k->fd, buf + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            if (!*k->errp)
+                *k->errp = w < 0 ? errno : ENOSPC;
+            return -1;
+        }
+        done += (size_t)w;
+    }
+    return (ssize_t)n;
+}
+
+static int sink_close(void *cookie)
+{
+    struct sink *k = cookie;
+    int rc = close(k->fd);
+    if (rc != 0 && !*k->errp)
+        *k->errp = errno;
+    free(k);
+    return rc;
+}
+
+FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why)
+{
+    *why = NULL;
+    *errp = 0;
+    struct sink *k = malloc(sizeof *k);
+    if (!k) {
+        *why = strerror(ENOMEM);
+        return NULL;
+    }
+    k->errp = errp;
+    k->fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
+                 0666);
+    if (k->fd < 0) {
+        *why = strerror(errno);
+        free(k);
+        return NULL;
+    }
+    cookie_io_functions_t io = {NULL, sink_write, NULL, sink_close};
+    FILE *fp = fopencookie(k, "w", io);
+    if (!fp) {
+        *why = strerror(errno);
+        close(k->fd);
+        free(k);
+    }
+    return fp;
+}
+
+int fio_append_whole(const char *path, int append, const char *s, size_t n)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
+                  0666);
+    if (fd < 0)
+        return errno;
+    struct stat st;
+    off_t before = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? st.st_size : -1;
+    size_t done = 0;
+    int err = 0;
+    while (done < n) {
+        ssize_t w = write(fd, s + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            err = w < 0 ? errno : ENOSPC;
+            break;
+        }
+        done += (size_t)w;
+    }
+    if (err && done > 0 && before >= 0 && ftruncate(fd, before) != 0) {
+        /* the partial line stays; the error below still says the write failed */
+    }
+    if (close(fd) != 0 && !err)
+        err = errno;
+    return err;
+}
+
 size_t fio_bom(const char *s, size_t n)
 {
     return n >= 3 && (unsigned char)s[0] == 0xEF && (unsigned char)s[1] == 0xBB &&

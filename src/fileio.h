@@ -24,6 +24,15 @@
 
 FILE *fio_open_read(const char *path, int streams, const char **why);
 ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max);
+/* Open a file for writing (truncated, or appended to) whose first failed
+ * write stores its errno in *errp (a stdio stream forgets why a buffered
+ * write failed). Write failures also set the stream's error flag; closing
+ * reports a failed close. NULL with *why on failure to open. */
+FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why);
+/* Write all n bytes of s to the end of `path` (created if missing, emptied
+ * first unless `append`) in one write; on failure the file is cut back to
+ * its previous length, so no partial line is left. 0 or an errno. */
+int fio_append_whole(const char *path, int append, const char *s, size_t n);
 /* Length of a UTF-8 byte-order mark at the start of s (3 or 0). */
 size_t fio_bom(const char *s, size_t n);
 

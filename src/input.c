@@ -567,6 +567,10 @@ static int execute(struct gravel *g, struct frame *fr)
     if (ph)
         gr_error(g, "%s", ph);
     c->fn(g, nargs, fr->argv + 1);
+    /* a failed log write (disk full) stops the script at this command */
+    if (g->logfile)
+        fflush(g->logfile);
+    gr_log_check(g);
     return in->quit ? GR_QUIT : GR_OK;
 }
 
