@@ -11,7 +11,10 @@
  *      the end; quotes are removed;
  *   5. the first word is the command, looked up in the command table; arity
  *      and phase are checked here, before the handler runs.
- * Lines may be of any length: every buffer grows. Each command runs under its
+ * Physical lines end in LF, CR LF or a lone CR; a UTF-8 byte-order mark
+ * before a source's first line is skipped. Commands may be of any length:
+ * every buffer grows (one physical line up to INP_MAX_PHYSICAL); a read error
+ * is an error, never an end of input. Each command runs under its
  * own setjmp boundary; errors are reported with the file and first line of
  * the command, and stop the reader. */
 #include "input.h"

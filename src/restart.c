@@ -3,8 +3,9 @@
  *
  * File = 32-byte header + payload. Header: magic "GRAVELRS", a 32-bit
  * endian marker 0x01020304 in the writer's byte order, the format version,
- * the payload length and the FNV-1a 64 hash of the payload. Payload: tagged
- * sections (u32 id, u32 0, u64 length, bytes), values in native byte order
+ * the payload length and the FNV-1a 64 hash of the payload (the standard
+ * offset basis since format 2). Payload: tagged sections (u32 id, u32 0,
+ * u64 length, bytes), values in native byte order
  * (the marker proves it is ours). The reader checks header, length and hash
  * before parsing, parses every section into a private image with bounds
  * checks, validates it, and only then applies it: a bad file never leaves a
