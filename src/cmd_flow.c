@@ -74,8 +74,11 @@ void cmd_print(struct gravel *g, int argc, char **argv)
         memcpy(line, text, n);
         line[n] = '\n';
         line[n + 1] = '\0';
-        int err = fio_append_whole(file, append, line, n + 1);
+        int opened;
+        int err = fio_append_whole(file, append, line, n + 1, &opened);
         free(line);
+        if (err && !opened)
+            gr_error(g, "cannot open '%s' for writing: %s", file, strerror(err));
         if (err)
             gr_error(g, "cannot write '%s': %s", file, strerror(err));
     }

@@ -173,12 +173,14 @@ FILE *fio_open_write_checked(const char *path, int append, int *errp, const char
     return fp;
 }
 
-int fio_append_whole(const char *path, int append, const char *s, size_t n)
+int fio_append_whole(const char *path, int append, const char *s, size_t n, int *opened)
 {
+    *opened = 0;
     int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
                   0666);
     if (fd < 0)
         return errno;
+    *opened = 1;
     struct stat st;
     off_t before = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? st.st_size : -1;
     size_t done = 0;

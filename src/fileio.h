@@ -31,8 +31,9 @@ ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max);
 FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why);
 /* Write all n bytes of s to the end of `path` (created if missing, emptied
  * first unless `append`) in one write; on failure the file is cut back to
- * its previous length, so no partial line is left. 0 or an errno. */
-int fio_append_whole(const char *path, int append, const char *s, size_t n);
+ * its previous length, so no partial line is left. 0 or an errno; *opened
+ * says whether the failure came after the file was opened. */
+int fio_append_whole(const char *path, int append, const char *s, size_t n, int *opened);
 /* Length of a UTF-8 byte-order mark at the start of s (3 or 0). */
 size_t fio_bom(const char *s, size_t n);
 

@@ -112,13 +112,16 @@ static void check_name(struct gravel *g, const char *name)
             gr_error(g, "variable name '%s' may contain only letters, digits and '_'", name);
 }
 
-/* Environment variable names: any length, no '=' (POSIX). */
+/* Environment variable names: the characters of ours, but of any length
+ * (the name is the environment's, not a gravel variable's). */
 static void check_env_name(struct gravel *g, const char *name)
 {
     if (!*name)
         gr_error(g, "environment variable name is empty");
-    if (strchr(name, '='))
-        gr_error(g, "environment variable name '%.64s' may not contain '='", name);
+    for (const char *p = name; *p; p++)
+        if (!isalnum((unsigned char)*p) && *p != '_')
+            gr_error(g, "environment variable name '%.64s' may contain only letters, digits "
+                        "and '_'", name);
 }
 
 /* Append a new, empty variable; the caller fills it. Allocation happens
