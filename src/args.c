@@ -16,7 +16,9 @@ int arg_is_number(const char *s)
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    return *end == '\0' && errno == 0 && isfinite(v);
+    /* ERANGE with a finite result is an underflow: a denormal such as
+     * 4.9e-324 (or 0) is a number; an overflow gives inf and is rejected */
+    return end != s && *end == '\0' && isfinite(v) && (errno == 0 || errno == ERANGE);
 }
 
 double arg_double(struct gravel *g, const char *s, const char *what)

@@ -6,11 +6,13 @@
  * checked by the dispatcher (input.c), so they validate only their keywords. */
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "command.h"
 #include "error.h"
+#include "fileio.h"
 #include "input.h"
 #include "variable.h"
 
@@ -66,12 +68,19 @@ void cmd_print(struct gravel *g, int argc, char **argv)
     }
     const char *text = inp_substitute(g, argv[0]);
     if (file) {
-        FILE *fp = fopen(file, append ? "a" : "w");
-        if (!fp)
-            gr_error(g, "cannot open '%s' for writing: %s", file, strerror(errno));
-        fprintf(fp, "%s\n", text);
-        if (fclose(fp) != 0)
-            gr_error(g, "error writing '%s': %s", file, strerror(errno));
+        /* the whole line in one write; a failed write leaves no partial line */
+        size_t n = strlen(text);
+        char *line = gr_malloc(g, n + 2);
+        memcpy(line, text, n);
+        line[n] = '\n';
+        line[n + 1] = '\0';
+        int opened;
+        int err = fio_append_whole(file, append, line, n + 1, &opened);
+        free(line);
+        if (err && !opened)
+            gr_error(g, "cannot open '%s' for writing: %s", file, strerror(err));
+        if (err)
+            gr_error(g, "cannot write '%s': %s", file, strerror(err));
     }
     if (screen && g->screen) {
         fprintf(g->screen, "%s\n", text);
@@ -90,17 +99,23 @@ void cmd_log(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.64s' (expected append)", argv[1]);
         append = 1;
     }
-    FILE *fp = NULL;
-    if (strcmp(argv[0], "none") != 0) {
-        fp = fopen(argv[0], append ? "a" : "w");
-        if (!fp)
-            gr_error(g, "cannot open log file '%s': %s", argv[0], strerror(errno));
+    /* the previous log is closed checked: a failed write to it is an error */
+    char msg[sizeof g->err.msg];
+    if (strcmp(argv[0], "none") == 0) {
+        if (gr_log_close(g) != 0) {
+            snprintf(msg, sizeof msg, "%s", g->err.msg);
+            gr_error(g, "%s", msg);
+        }
+        return;
     }
-    if (g->logfile)
-        fclose(g->logfile);
-    g->logfile = fp;
-    if (fp)
-        fprintf(fp, "gravel (%s)\n", GR_VERSION);
+    int err = gr_log_open(g, argv[0], append);
+    if (err > 0)
+        gr_error(g, "cannot open log file '%s': %s", argv[0], strerror(err));
+    if (err < 0) {
+        snprintf(msg, sizeof msg, "%s", g->err.msg);
+        gr_error(g, "%s", msg);
+    }
+    fprintf(g->logfile, "gravel (%s)\n", GR_VERSION);
 }
 
 void cmd_echo(struct gravel *g, int argc, char **argv)

@@ -1,6 +1,8 @@
 /* create_box.c - `create_box N region-ID`: the box is the bounding box of a
  * bounded side-in region; N atom types. Shrink-wrapped faces start `small`
  * outside the region (LAMMPS set_initial_box). */
+#include <math.h>
+
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
@@ -20,9 +22,15 @@ void cmd_create_box(struct gravel *g, int argc, char **argv)
         gr_error(g, "region '%s' has no bounding box (style %s) and cannot define the box",
                  r->id, r->style->name);
     for (int d = 0; d < 3; d++) {
-        if (!(r->bbox_hi[d] - r->bbox_lo[d] < 1e19))
+        /* INF bounds are exactly +-DOMAIN_BIG (region_parse_bound); huge
+         * finite bounds are bounded, only too large for a box */
+        if (fabs(r->bbox_lo[d]) == DOMAIN_BIG || fabs(r->bbox_hi[d]) == DOMAIN_BIG)
             gr_error(g, "region '%s' is unbounded in %c and cannot define the box", r->id,
                      "xyz"[d]);
+        double len = r->bbox_hi[d] - r->bbox_lo[d];
+        if (!(len < 1e19))
+            gr_error(g, "region '%s' spans %g to %g in %c: a box length of %g is too large "
+                        "(at most 1e19)", r->id, r->bbox_lo[d], r->bbox_hi[d], "xyz"[d], len);
         g->dom.lo[d] = r->bbox_lo[d];
         g->dom.hi[d] = r->bbox_hi[d];
     }

@@ -3,6 +3,7 @@
  * redefined with the same ID keeps its place. */
 #include "fix.h"
 
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -121,21 +122,58 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
             if (!*c)
                 break;
         }
-    /* create may raise: keep f reachable so it is freed (slot at the end) */
+    /* create sees f registered (slot at the end); if it raises, f is taken
+     * out and freed and the fix list is as before the command (an old fix
+     * of the same ID stays in force) */
     if (g->styles.nfix == g->styles.nfix_cap) {
         int cap = g->styles.nfix_cap ? 2 * g->styles.nfix_cap : 8;
-        g->styles.fix = gr_realloc(g, g->styles.fix, (size_t)cap * sizeof *g->styles.fix);
+        struct fix **nf = realloc(g->styles.fix, (size_t)cap * sizeof *nf);
+        if (!nf) {
+            free(f);
+            gr_error(g, "out of memory");
+        }
+        g->styles.fix = nf;
         g->styles.nfix_cap = cap;
     }
     g->styles.fix[g->styles.nfix++] = f;
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        for (int i = g->styles.nfix - 1; i >= 0; i--)
+            if (g->styles.fix[i] == f) {
+                memmove(&g->styles.fix[i], &g->styles.fix[i + 1],
+                        (size_t)(g->styles.nfix - i - 1) * sizeof *g->styles.fix);
+                g->styles.nfix--;
+                break;
+            }
+        fix_delete(f);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
     st->create(g, f, argc - 3, argv + 3);
+    g->err.jmp = outer;
     if (old) {
-        /* replace in place, keeping the original position */
-        for (int i = 0; i < g->styles.nfix; i++)
+        /* replace in place, keeping the original position: f leaves its slot
+         * at the end and takes old's; exactly one fix has the ID */
+        int fi = -1, oi = -1;
+        for (int i = 0; i < g->styles.nfix; i++) {
+            if (g->styles.fix[i] == f)
+                fi = i;
             if (g->styles.fix[i] == old)
-                g->styles.fix[i] = f;
-        g->styles.nfix--;
-        fix_delete(old);
+                oi = i;
+        }
+        if (fi >= 0 && oi >= 0) {
+            memmove(&g->styles.fix[fi], &g->styles.fix[fi + 1],
+                    (size_t)(g->styles.nfix - fi - 1) * sizeof *g->styles.fix);
+            g->styles.nfix--;
+            if (oi > fi)
+                oi--;
+            g->styles.fix[oi] = f;
+            fix_delete(old);
+        }
     }
 }
 

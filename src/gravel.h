@@ -174,6 +174,9 @@ struct gravel {
 
     FILE *screen;           /* stdout unless -screen none (then NULL) */
     FILE *logfile;          /* log.gravel unless -log none */
+    char *logname;          /* its name, for write errors (NULL: not opened by gr_log_open) */
+    int *logerr;            /* errno of the log's first failed write, 0 while none failed
+                             * (heap, owned with logname; NULL for a log set directly) */
     enum echo_mode echo;
 
     struct domain dom;
@@ -205,6 +208,15 @@ void gr_destroy(struct gravel *g);
 void gr_clear(struct gravel *g);
 /* Unit-dependent defaults (timestep, skin, thermo norm) for g->dom.units. */
 void gr_unit_defaults(struct gravel *g);
+
+/* The log file (-log, `log`): open (closing the previous one, checked),
+ * 0 or an errno, or -1 with the message in g->err.msg when closing the
+ * previous log found a failed write); check that every write so far
+ * succeeded, else close the log and raise "cannot write log file 'F':
+ * reason"; close, 0 or -1 with the message in g->err.msg. */
+int gr_log_open(struct gravel *g, const char *path, int append);
+void gr_log_check(struct gravel *g);
+int gr_log_close(struct gravel *g);
 
 /* Output to screen and log, like LAMMPS' utils::logmesg. */
 void gr_print(struct gravel *g, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -11,7 +11,10 @@
  *      the end; quotes are removed;
  *   5. the first word is the command, looked up in the command table; arity
  *      and phase are checked here, before the handler runs.
- * Lines may be of any length: every buffer grows. Each command runs under its
+ * Physical lines end in LF, CR LF or a lone CR; a UTF-8 byte-order mark
+ * before a source's first line is skipped. Commands may be of any length:
+ * every buffer grows (one physical line up to INP_MAX_PHYSICAL); a read error
+ * is an error, never an end of input. Each command runs under its
  * own setjmp boundary; errors are reported with the file and first line of
  * the command, and stop the reader. */
 #include "input.h"
@@ -23,6 +26,7 @@
 
 #include "command.h"
 #include "error.h"
+#include "fileio.h"
 #include "variable.h"
 
 /* A growable byte buffer, always NUL-terminated once used. */
@@ -180,34 +184,52 @@ static struct source *push_source(struct gravel *g, const char *name)
     return s;
 }
 
-/* Append one physical line (without its line break and a trailing CR) to b.
- * Returns 0 at end of input with nothing read. NUL bytes become spaces. */
+/* Longest physical line of a script unless inp_set_limits gives one: a
+ * longer line is an error (a binary file or an endless device), not a slow
+ * march to out-of-memory. */
+#define INP_MAX_PHYSICAL ((size_t)64 << 20)
+
+/* Append one physical line (without its line break: "\n", "\r\n" or a lone
+ * "\r") to b; a UTF-8 byte-order mark before the first line is dropped.
+ * Returns 0 at end of input with nothing read; a read error (or a line that
+ * cannot be held) is an error, never an end of input. NUL bytes become
+ * spaces. */
 static int read_physical(struct gravel *g, struct source *s, struct dbuf *b)
 {
     const char *p;
     size_t n;
     if (s->fp) {
-        errno = 0;
-        ssize_t r = getline(&s->gl, &s->glcap, s->fp);
-        if (r < 0) {
-            if (ferror(s->fp))
-                gr_error(g, "read error in %s: %s", s->name, strerror(errno ? errno : EIO));
-            return 0;
+        size_t max = g->inp->max_line ? g->inp->max_line : INP_MAX_PHYSICAL;
+        ssize_t r = fio_getline(s->fp, &s->gl, &s->glcap, max);
+        if (r == FIO_ERR) {
+            int e = errno ? errno : EIO;
+            g->err.line = s->lineno + 1;
+            if (e == EFBIG)
+                gr_error(g, "line %d of %s is longer than %zu bytes (is it a text file?)",
+                         s->lineno + 1, s->name, max);
+            gr_error(g, "read error in %s after line %d: %s", s->name, s->lineno, strerror(e));
         }
+        if (r == FIO_EOF)
+            return 0;
         p = s->gl;
         n = (size_t)r;
-        if (n && p[n - 1] == '\n')
-            n--;
     } else {
         if (s->pos >= s->len)
             return 0;
         p = s->buf + s->pos;
-        const char *nl = memchr(p, '\n', s->len - s->pos);
-        n = nl ? (size_t)(nl - p) : s->len - s->pos;
-        s->pos += n + (nl != NULL);
+        n = 0;
+        while (s->pos + n < s->len && p[n] != '\n' && p[n] != '\r')
+            n++;
+        size_t brk = 0;
+        if (s->pos + n < s->len)
+            brk = (p[n] == '\r' && s->pos + n + 1 < s->len && p[n + 1] == '\n') ? 2 : 1;
+        s->pos += n + brk;
     }
-    if (n && p[n - 1] == '\r')
-        n--;
+    if (s->lineno == 0) {
+        size_t bom = fio_bom(p, n);
+        p += bom;
+        n -= bom;
+    }
     s->lineno++;
     size_t start = b->len;
     db_add(g, b, p, n);
@@ -548,6 +570,10 @@ static int execute(struct gravel *g, struct frame *fr)
     if (ph)
         gr_error(g, "%s", ph);
     c->fn(g, nargs, fr->argv + 1);
+    /* a failed log write (disk full) stops the script at this command */
+    if (g->logfile)
+        fflush(g->logfile);
+    gr_log_check(g);
     return in->quit ? GR_QUIT : GR_OK;
 }
 
@@ -614,14 +640,18 @@ int inp_stream(struct gravel *g, FILE *fp, const char *name)
     return run_sources(g, base);
 }
 
-static FILE *open_script(struct gravel *g, const char *path, int raise)
+/* Open a script: `include` and `jump FILE` need a regular file (a directory,
+ * FIFO or device is an error at the command's own line, before anything is
+ * read); `-in` (streams 1) also takes a pipe, FIFO or terminal. With raise 0
+ * the error is reported and NULL returned. */
+static FILE *open_script(struct gravel *g, const char *path, int streams, int raise)
 {
-    FILE *fp = fopen(path, "r");
+    const char *why;
+    FILE *fp = fio_open_read(path, streams, &why);
     if (!fp) {
         if (raise)
-            gr_error(g, "cannot open input script '%s': %s", path, strerror(errno));
-        snprintf(g->err.msg, sizeof g->err.msg, "cannot open input script '%s': %s", path,
-                 strerror(errno));
+            gr_error(g, "cannot open input script '%s': %s", path, why);
+        snprintf(g->err.msg, sizeof g->err.msg, "cannot open input script '%s': %s", path, why);
         const char *text = g->err.text;
         g->err.text = NULL;
         gr_report_error(g);
@@ -632,7 +662,7 @@ static FILE *open_script(struct gravel *g, const char *path, int raise)
 
 int inp_file(struct gravel *g, const char *path)
 {
-    FILE *fp = open_script(g, path, 0);
+    FILE *fp = open_script(g, path, 1, 0);
     if (!fp)
         return GR_ERR;
     int base = g->inp->nsrc;
@@ -655,7 +685,7 @@ int inp_string(struct gravel *g, const char *text, const char *name)
 
 void inp_include(struct gravel *g, const char *path)
 {
-    FILE *fp = open_script(g, path, 1);
+    FILE *fp = open_script(g, path, 0, 1);
     struct source *s;
     /* push_source may raise: do not leak the open file */
     if (g->inp->nsrc >= 1000) {
@@ -698,15 +728,15 @@ void inp_jump(struct gravel *g, const char *file, const char *label)
         }
         s->lineno = 0;
     } else {
-        FILE *fp = fopen(file, "r");
+        const char *why = NULL;
+        FILE *fp = fio_open_read(file, 0, &why);
         char *name = fp ? strdup(file) : NULL;
         if (!fp || !name) {
-            int err = errno;
             if (fp)
                 fclose(fp);
             free(l);
             free(f);
-            gr_error(g, "cannot open input script '%s': %s", file, strerror(err));
+            gr_error(g, "cannot open input script '%s': %s", file, why ? why : "out of memory");
         }
         if (s->close_fp && s->fp)
             fclose(s->fp);

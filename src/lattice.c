@@ -141,7 +141,8 @@ void lattice_foreach(struct gravel *g, const double lo[3], const double hi[3],
             return; /* nothing to visit */
         double l = (l0 - off) / lat->prim[d], h = (h0 - off) / lat->prim[d];
         if (!(fabs(l) < 1e12 && fabs(h) < 1e12))
-            gr_error(g, "lattice range in %c is unbounded", "xyz"[d]);
+            gr_error(g, "lattice range in %c (%g to %g) spans more than 1e12 lattice cells: "
+                        "too many points", "xyz"[d], l0, h0);
         ilo[d] = (long)floor(l) - 1;
         ihi[d] = (long)ceil(h) + 1;
         npts *= (double)(ihi[d] - ilo[d] + 1);

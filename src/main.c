@@ -218,9 +218,10 @@ int main(int argc, char **argv)
         }
     }
     if (strcmp(log, "none") != 0) {
-        g->logfile = fopen(log, "w");
-        if (!g->logfile) {
-            fprintf(stderr, "ERROR: command line: cannot open log file '%s'\n", log);
+        int err = gr_log_open(g, log, 0);
+        if (err) {
+            fprintf(stderr, "ERROR: command line: cannot open log file '%s': %s\n", log,
+                    strerror(err));
             rc = 1;
         }
     }
@@ -250,6 +251,11 @@ int main(int argc, char **argv)
     if (rc != 1) {
         int s = (int)(now() - t0);
         gr_print(g, "Total wall time: %d:%02d:%02d\n", s / 3600, s / 60 % 60, s % 60);
+    }
+    /* a log cut short (disk full) is a failed run, named with the reason */
+    if (gr_log_close(g) != 0) {
+        fprintf(stderr, "ERROR: %s\n", g->err.msg);
+        rc = 1;
     }
     if (g->screen && g->screen != stdout)
         fclose(g->screen);

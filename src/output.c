@@ -28,6 +28,7 @@ static void emit(struct gravel *g, const char *text)
         if (g->logfile)
             fflush(g->logfile);
     }
+    gr_log_check(g); /* a run whose log cannot be written stops */
 }
 
 /* Next step with a thermo line after `step`. */

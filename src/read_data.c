@@ -15,7 +15,10 @@
  * density for a point particle (diameter 0). Atoms are wrapped into the box in
  * periodic dimensions (image flags updated); non-zero image flags in
  * non-periodic dimensions are reset to 0 with a warning. Errors name the data
- * file and its line. The box and atoms appear only if the whole file reads. */
+ * file and its line. The box and atoms appear only if the whole file reads.
+ * Only a regular file is read (a directory, FIFO or device is an error before
+ * any byte is read); lines may end in LF, CR LF or a lone CR; a read error is
+ * an error, never an early end of the file. */
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -26,6 +29,7 @@
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
+#include "fileio.h"
 #include "group.h"
 
 #define MAXWORDS 16
@@ -50,9 +54,17 @@ struct rd {
  * end of file. `keep_comment` keeps the text after '#' in *comment. */
 static int rd_next(struct rd *r, char **comment)
 {
-    ssize_t n = getline(&r->line, &r->cap, r->fp);
-    if (n < 0)
+    ssize_t n = fio_getline(r->fp, &r->line, &r->cap, 0);
+    if (n == FIO_ERR)
+        gr_error(r->g, "%s:%ld: read error: %s", r->path, r->lineno + 1,
+                 strerror(errno ? errno : EIO));
+    if (n == FIO_EOF)
         return 0;
+    if (r->lineno == 0) {
+        size_t bom = fio_bom(r->line, (size_t)n);
+        memmove(r->line, r->line + bom, (size_t)n - bom + 1);
+        n -= (ssize_t)bom;
+    }
     r->lineno++;
     if (memchr(r->line, '\0', (size_t)n))
         gr_error(r->g, "%s:%ld: binary data (a NUL byte) in the data file", r->path, r->lineno);
@@ -77,7 +89,7 @@ static double rd_num(struct rd *r, const char *s, const char *what)
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (*end || end == s || errno == ERANGE || !isfinite(v))
+    if (*end || end == s || !isfinite(v)) /* ERANGE with a finite v: a denormal, accepted */
         gr_error(r->g, "%s:%ld: expected a number for %s, got '%.64s'", r->path, r->lineno,
                  what, s);
     return v;
@@ -480,9 +492,10 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     r.path = argv[0];
     r.nocoeff = nocoeff;
     r.extra_types = extra_types;
-    r.fp = fopen(argv[0], "r");
+    const char *why;
+    r.fp = fio_open_read(argv[0], 0, &why);
     if (!r.fp)
-        gr_error(g, "cannot open data file '%.200s': %s", argv[0], strerror(errno));
+        gr_error(g, "cannot open data file '%.200s': %s", argv[0], why);
     struct domain saved = g->dom;
     jmp_buf *outer = g->err.jmp, here;
     g->err.jmp = &here;

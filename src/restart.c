@@ -3,8 +3,9 @@
  *
  * File = 32-byte header + payload. Header: magic "GRAVELRS", a 32-bit
  * endian marker 0x01020304 in the writer's byte order, the format version,
- * the payload length and the FNV-1a 64 hash of the payload. Payload: tagged
- * sections (u32 id, u32 0, u64 length, bytes), values in native byte order
+ * the payload length and the FNV-1a 64 hash of the payload (the standard
+ * offset basis since format 2). Payload: tagged sections (u32 id, u32 0,
+ * u64 length, bytes), values in native byte order
  * (the marker proves it is ours). The reader checks header, length and hash
  * before parsing, parses every section into a private image with bounds
  * checks, validates it, and only then applies it: a bad file never leaves a
@@ -30,12 +31,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "args.h"
 #include "atoms.h"
 #include "engine.h"
 #include "error.h"
+#include "fileio.h"
 #include "fix.h"
 #include "neighbor.h"
 #include "pair.h"
@@ -101,7 +104,7 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
         h = (h ^ c[i]) * 1099511628211ull;
     return h;
 }
-#define FNV_INIT 1469598103934665603ull
+#define FNV_INIT 14695981039346656037ull /* the standard FNV-1a 64 offset basis (format 2) */
 
 /* ---- bounds-checked input cursor ------------------------------------------------ */
 
@@ -927,29 +930,34 @@ static void load(struct gravel *g, const char *path)
     r->filebuf = NULL;
     image_free(r->loading);
     r->loading = NULL;
-    FILE *fp = fopen(path, "rb");
+    /* a regular file only (a FIFO would block, a directory has no size); the
+     * header is read and checked before the payload, whose length must be
+     * the file's own: a corrupt length never sizes an allocation */
+    const char *why;
+    FILE *fp = fio_open_read(path, 0, &why);
     if (!fp)
-        gr_error(g, "cannot open restart file '%.200s': %s", path, strerror(errno));
-    long size = -1;
-    if (fseek(fp, 0, SEEK_END) == 0)
-        size = ftell(fp);
-    if (size < 0 || fseek(fp, 0, SEEK_SET) != 0) {
+        gr_error(g, "cannot open restart file '%.200s': %s", path, why);
+    struct stat fst;
+    if (fstat(fileno(fp), &fst) != 0) {
+        int e = errno;
         fclose(fp);
-        gr_error(g, "cannot read restart file '%.200s' (not a regular file?)", path);
+        gr_error(g, "cannot read restart file '%.200s': %s", path, strerror(e));
     }
-    r->filebuf = malloc((size_t)size + 1);
-    if (!r->filebuf) {
+    uint64_t size = (uint64_t)fst.st_size;
+    unsigned char b[RESTART_HEADER_BYTES];
+    size_t hgot = fread(b, 1, sizeof b, fp);
+    if (hgot < sizeof b && ferror(fp)) {
+        int e = errno ? errno : EIO;
         fclose(fp);
-        gr_error(g, "restart file '%.200s' of %ld bytes does not fit in memory", path, size);
+        gr_error(g, "reading restart file '%.200s' failed: %s", path, strerror(e));
     }
-    size_t got = fread(r->filebuf, 1, (size_t)size, fp);
-    fclose(fp);
-    if (got != (size_t)size)
-        gr_error(g, "reading restart file '%.200s' failed", path);
-    const unsigned char *b = r->filebuf;
-    if ((size_t)size < RESTART_HEADER_BYTES || memcmp(b, RESTART_MAGIC, 8))
+    if (hgot < RESTART_HEADER_BYTES || memcmp(b, RESTART_MAGIC, 8)) {
+        fclose(fp);
         gr_error(g, "'%.200s' is not a gravel restart file (%s)", path,
-                 (size_t)size < 8 ? "too short" : "no GRAVELRS signature");
+                 hgot < 8                        ? "too short"
+                 : memcmp(b, RESTART_MAGIC, 8) ? "no GRAVELRS signature"
+                                               : "truncated header");
+    }
     uint32_t marker, version;
     uint64_t len, hash;
     memcpy(&marker, b + 8, 4);
@@ -957,21 +965,46 @@ static void load(struct gravel *g, const char *path)
     memcpy(&len, b + 16, 8);
     memcpy(&hash, b + 24, 8);
     if (marker != RESTART_ENDIAN_MARKER) {
+        fclose(fp);
         if (marker == __builtin_bswap32(RESTART_ENDIAN_MARKER))
             gr_error(g, "restart file '%.200s' was written on a machine of the other byte order",
                      path);
         gr_error(g, "restart file '%.200s' has an invalid byte-order marker 0x%08x (corrupted)",
                  path, marker);
     }
-    if (marker == RESTART_ENDIAN_MARKER && version != RESTART_FORMAT_VERSION)
+    if (version != RESTART_FORMAT_VERSION) {
+        fclose(fp);
+        if (version < RESTART_FORMAT_VERSION)
+            gr_error(g, "restart file '%.200s' has format version %u, older than the version %u "
+                        "this gravel (%s) reads; write it again with the gravel that made it "
+                        "(or with write_data)", path, version, RESTART_FORMAT_VERSION, GR_VERSION);
         gr_error(g, "restart file '%.200s' has format version %u; this gravel (%s) reads "
                     "version %u", path, version, GR_VERSION, RESTART_FORMAT_VERSION);
-    uint64_t have = (uint64_t)size - RESTART_HEADER_BYTES;
-    if (len != have)
+    }
+    uint64_t have = size >= RESTART_HEADER_BYTES ? size - RESTART_HEADER_BYTES : 0;
+    if (len != have) {
+        fclose(fp);
         gr_error(g, "restart file '%.200s' is %s: the header announces %llu bytes of data, the "
                     "file holds %llu", path, len > have ? "truncated" : "corrupted (too long)",
                  (unsigned long long)len, (unsigned long long)have);
-    if (fnv1a(FNV_INIT, b + RESTART_HEADER_BYTES, (size_t)len) != hash)
+    }
+    if (len > (uint64_t)SIZE_MAX - 1 || !(r->filebuf = malloc((size_t)len + 1))) {
+        fclose(fp);
+        gr_error(g, "restart file '%.200s' of %llu bytes does not fit in memory", path,
+                 (unsigned long long)size);
+    }
+    size_t got = fread(r->filebuf, 1, (size_t)len, fp);
+    int rerr = ferror(fp) ? (errno ? errno : EIO) : 0;
+    fclose(fp);
+    if (got != (size_t)len) {
+        free(r->filebuf);
+        r->filebuf = NULL;
+        if (rerr)
+            gr_error(g, "reading restart file '%.200s' failed: %s", path, strerror(rerr));
+        gr_error(g, "restart file '%.200s' is truncated: it shrank while being read", path);
+    }
+    const unsigned char *pl = r->filebuf;
+    if (fnv1a(FNV_INIT, pl, (size_t)len) != hash)
         gr_error(g, "restart file '%.200s' is corrupted (checksum mismatch)", path);
 
     struct image *im = calloc(1, sizeof *im);
@@ -979,7 +1012,7 @@ static void load(struct gravel *g, const char *path)
         gr_error(g, "out of memory reading restart file '%.200s'", path);
     r->loading = im;
     char err[300] = "";
-    struct rbuf all = {b + RESTART_HEADER_BYTES, (size_t)len, 0, 0};
+    struct rbuf all = {pl, (size_t)len, 0, 0};
     unsigned seen = 0;
     while (all.off < all.n && !err[0]) {
         uint32_t id = get_u32(&all);

@@ -212,7 +212,7 @@ static void check_atoms(struct gravel *g)
 }
 
 /* The whole run: setup, loop, footer. */
-static void run_steps(struct gravel *g, bigint nsteps, int force)
+static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
 {
     check_atoms(g);
     eng_prepare(g);
@@ -349,7 +349,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force)
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
     e->active = 0;
-    output_finish(g, &st);
+    if (post)
+        output_finish(g, &st);
+    else /* run ... post no: only the "Loop time" line, as LAMMPS */
+        output_finish_brief(g, &st);
     /* verify: Hertz/linear contact laws assume small overlaps */
     if (maxov > 0.1)
         gr_warn(g, "largest overlap reached %.1f %% of a radius (sampled at output steps): "
@@ -363,7 +366,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     bigint n = arg_bigint(g, argv[0], "number of steps");
     int upto = 0;
     bigint start = -1, stop = -1;
-    int have_start = 0, have_stop = 0, force = 0;
+    int have_start = 0, have_stop = 0, force = 0, post = 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "upto")) {
             upto = 1;
@@ -379,9 +382,14 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             /* verify: allow a time step above half the collision time */
             arg_need(g, argc, i, 1, "force");
             force = arg_yesno(g, argv[++i], "force");
-        } else if (!strcmp(argv[i], "pre") || !strcmp(argv[i], "post")) {
+        } else if (!strcmp(argv[i], "pre")) {
+            /* every run sets up fully (pre no is a LAMMPS speed hint) */
             arg_need(g, argc, i, 1, argv[i]);
             (void)arg_yesno(g, argv[i + 1], argv[i]);
+            i++;
+        } else if (!strcmp(argv[i], "post")) {
+            arg_need(g, argc, i, 1, argv[i]);
+            post = arg_yesno(g, argv[i + 1], argv[i]);
             i++;
         } else if (!strcmp(argv[i], "every")) {
             gr_error(g, "run keyword 'every' is not supported");
@@ -409,7 +417,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
                  (long long)(g->step + n));
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
-    run_steps(g, n, force);
+    run_steps(g, n, force, post);
 }
 
 /* reset_timestep N */

@@ -112,6 +112,18 @@ static void check_name(struct gravel *g, const char *name)
             gr_error(g, "variable name '%s' may contain only letters, digits and '_'", name);
 }
 
+/* Environment variable names: the characters of ours, but of any length
+ * (the name is the environment's, not a gravel variable's). */
+static void check_env_name(struct gravel *g, const char *name)
+{
+    if (!*name)
+        gr_error(g, "environment variable name is empty");
+    for (const char *p = name; *p; p++)
+        if (!isalnum((unsigned char)*p) && *p != '_')
+            gr_error(g, "environment variable name '%.64s' may contain only letters, digits "
+                        "and '_'", name);
+}
+
 /* Append a new, empty variable; the caller fills it. Allocation happens
  * before any field is set, so an out-of-memory error leaves no half entry. */
 static struct var *append(struct gravel *g, const char *name, enum vstyle style, int nval)
@@ -243,8 +255,8 @@ void var_define(struct gravel *g, int argc, char **argv)
         if (nargs != 1)
             gr_error(g, "%s variable '%s' takes exactly one value, got %d (quote text that "
                      "contains spaces)", style, name, nargs);
-        if (s == V_GETENV)
-            check_name(g, a[0]);
+        if (s == V_GETENV) /* an environment variable's name, not one of ours */
+            check_env_name(g, a[0]);
         break;
     case V_FORMAT:
         if (nargs != 2)

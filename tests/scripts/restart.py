@@ -247,14 +247,26 @@ def run_all(tmp):
     bad("flipped_byte", bytes(flipped), r"corrupted \(checksum mismatch\)")
     ver = bytearray(good)
     ver[12:16] = struct.pack("=I", 99)
-    bad("version", bytes(ver), "format version 99; this gravel .* reads version 1")
+    bad("version", bytes(ver), "format version 99; this gravel .* reads version 2")
+    old = bytearray(good)
+    old[12:16] = struct.pack("=I", 1)
+    bad("old_version", bytes(old), "format version 1, older than the version 2")
     endian = bytearray(good)
     endian[8:16] = struct.pack(">I", 0x01020304 if sys.byteorder == "little" else 0x04030201) \
         + struct.pack(">I", 1 if sys.byteorder == "little" else 0x01000000)
     bad("other_endian", bytes(endian), "other byte order")
     os.mkdir(os.path.join(tmp, "adir"))
     rc, out = gravel(tmp, "read_restart adir\n", "in.dir")
-    check("error_directory", rc == 1 and "ERROR: read_restart:" in out, out[-400:])
+    check("error_directory", rc == 1 and "ERROR: read_restart: cannot open restart file "
+          "'adir': is a directory (in.dir:1)" in out, out[-400:])
+    # a FIFO with no writer is rejected at once, not waited on (issue 12)
+    os.mkfifo(os.path.join(tmp, "afifo"))
+    rc, out = gravel(tmp, "print start\nread_restart afifo\n", "in.fifo")
+    check("error_fifo", rc == 1 and "'afifo': is a FIFO (named pipe), not a regular file "
+          "(in.fifo:2)" in out, out[-400:])
+    rc, out = gravel(tmp, "read_restart /dev/zero\n", "in.dev")
+    check("error_device", rc == 1 and "is a character device, not a regular file (in.dev:1)"
+          in out, out[-400:])
     rc, out = gravel(tmp, "region b block 0 1 0 1 0 1\ncreate_box 1 b\nread_restart half.%d\n"
                      % N, "in.phase")
     check("error_after_box", rc == 1 and "ERROR" in out, out[-400:])

@@ -120,9 +120,10 @@ TEST(continuation_bit_identical)
     gr_destroy(b);
 }
 
+/* FNV-1a 64 with the standard offset basis (restart format 2). */
 static uint64_t fnv(const unsigned char *p, size_t n)
 {
-    uint64_t h = 1469598103934665603ull;
+    uint64_t h = 14695981039346656037ull;
     for (size_t i = 0; i < n; i++)
         h = (h ^ p[i]) * 1099511628211ull;
     return h;

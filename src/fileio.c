@@ -1,0 +1,212 @@
+/* fileio.c - opening and reading input files without blocking, without
+ * reading devices, and without mistaking a read error for the end of input
+ * (issue 12, items 1-3). */
+#include "fileio.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const char *kind_problem(mode_t m, int streams)
+{
+    if (S_ISREG(m))
+        return NULL;
+    if (S_ISDIR(m))
+        return "is a directory";
+    if (S_ISFIFO(m))
+        return streams ? NULL : "is a FIFO (named pipe), not a regular file";
+    if (S_ISCHR(m))
+        return streams ? NULL : "is a character device, not a regular file";
+    if (S_ISBLK(m))
+        return "is a block device, not a regular file";
+    if (S_ISSOCK(m))
+        return streams ? NULL : "is a socket, not a regular file";
+    return "is not a regular file";
+}
+
+FILE *fio_open_read(const char *path, int streams, const char **why)
+{
+    *why = NULL;
+    /* O_NONBLOCK: opening a FIFO without a writer must not wait; the flag is
+     * cleared again once the type is known to be acceptable */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) {
+        *why = strerror(errno);
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        *why = strerror(errno);
+        close(fd);
+        return NULL;
+    }
+    const char *bad = kind_problem(st.st_mode, streams);
+    if (bad) {
+        *why = bad;
+        close(fd);
+        return NULL;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl < 0 || fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) != 0) {
+        *why = strerror(errno);
+        close(fd);
+        return NULL;
+    }
+    FILE *fp = fdopen(fd, "r");
+    if (!fp) {
+        *why = strerror(errno);
+        close(fd);
+    }
+    return fp;
+}
+
+ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max)
+{
+    size_t n = 0;
+    int c;
+    errno = 0;
+    for (;;) {
+        c = getc_unlocked(fp);
+        if (c == EOF || c == '\n')
+            break;
+        if (c == '\r') {
+            int d = getc_unlocked(fp);
+            if (d != '\n' && d != EOF)
+                ungetc(d, fp);
+            break;
+        }
+        if (max && n >= max) {
+            errno = EFBIG;
+            return FIO_ERR;
+        }
+        if (n + 2 > *cap) {
+            size_t nc = *cap ? 2 * *cap : 256;
+            char *p = realloc(*buf, nc);
+            if (!p) {
+                errno = ENOMEM;
+                return FIO_ERR;
+            }
+            *buf = p;
+            *cap = nc;
+        }
+        (*buf)[n++] = (char)c;
+    }
+    if (c == EOF && ferror(fp)) {
+        if (!errno)
+            errno = EIO;
+        return FIO_ERR;
+    }
+    if (c == EOF && n == 0)
+        return FIO_EOF;
+    if (!*buf) {
+        *buf = malloc(1);
+        if (!*buf) {
+            errno = ENOMEM;
+            return FIO_ERR;
+        }
+        *cap = 1;
+    }
+    (*buf)[n] = '\0';
+    return (ssize_t)n;
+}
+
+struct sink {
+    int fd;
+    int *errp;
+};
+
+static ssize_t sink_write(void *cookie, const char *buf, size_t n)
+{
+    struct sink *k = cookie;
+    size_t done = 0;
+    while (done < n) {
+        ssize_t w = write(k->fd, buf + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            if (!*k->errp)
+                *k->errp = w < 0 ? errno : ENOSPC;
+            return -1;
+        }
+        done += (size_t)w;
+    }
+    return (ssize_t)n;
+}
+
+static int sink_close(void *cookie)
+{
+    struct sink *k = cookie;
+    int rc = close(k->fd);
+    if (rc != 0 && !*k->errp)
+        *k->errp = errno;
+    free(k);
+    return rc;
+}
+
+FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why)
+{
+    *why = NULL;
+    *errp = 0;
+    struct sink *k = malloc(sizeof *k);
+    if (!k) {
+        *why = strerror(ENOMEM);
+        return NULL;
+    }
+    k->errp = errp;
+    k->fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
+                 0666);
+    if (k->fd < 0) {
+        *why = strerror(errno);
+        free(k);
+        return NULL;
+    }
+    cookie_io_functions_t io = {NULL, sink_write, NULL, sink_close};
+    FILE *fp = fopencookie(k, "w", io);
+    if (!fp) {
+        *why = strerror(errno);
+        close(k->fd);
+        free(k);
+    }
+    return fp;
+}
+
+int fio_append_whole(const char *path, int append, const char *s, size_t n, int *opened)
+{
+    *opened = 0;
+    int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
+                  0666);
+    if (fd < 0)
+        return errno;
+    *opened = 1;
+    struct stat st;
+    off_t before = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? st.st_size : -1;
+    size_t done = 0;
+    int err = 0;
+    while (done < n) {
+        ssize_t w = write(fd, s + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            err = w < 0 ? errno : ENOSPC;
+            break;
+        }
+        done += (size_t)w;
+    }
+    if (err && done > 0 && before >= 0 && ftruncate(fd, before) != 0) {
+        /* the partial line stays; the error below still says the write failed */
+    }
+    if (close(fd) != 0 && !err)
+        err = errno;
+    return err;
+}
+
+size_t fio_bom(const char *s, size_t n)
+{
+    return n >= 3 && (unsigned char)s[0] == 0xEF && (unsigned char)s[1] == 0xBB &&
+                   (unsigned char)s[2] == 0xBF
+               ? 3
+               : 0;
+}

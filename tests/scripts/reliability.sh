@@ -1,0 +1,62 @@
+#!/bin/sh
+# reliability.sh - issue 12 through the command line: -in of a directory or
+# an endless device, -log on a full disk, print append at a file size limit
+# (no partial line), and `run ... post no` (only the Loop time line). One
+# PASS/FAIL line per check; each matches the message and the line it names.
+cd "$(dirname "$0")/../.." || exit 1
+bin="$(pwd)/bin/gravel"
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+cd "$t" || exit 1
+check() { # name, condition (shell expression)
+    if eval "$2"; then echo "PASS rel_$1"; else echo "FAIL rel_$1"; cat out; fi
+}
+
+mkdir adir
+"$bin" -in adir -log none > out 2>&1; rc=$?
+check in_directory '[ $rc -eq 1 ] && grep -q "^ERROR: cannot open input script .adir.: is a directory$" out'
+
+# an endless source: an error at the limit, not an out-of-memory end of input
+"$bin" -in /dev/zero -log none > out 2>&1; rc=$?
+check in_endless_device '[ $rc -eq 1 ] && grep -q "line 1 of /dev/zero is longer than 67108864 bytes" out'
+
+# -in from a pipe still works (a stream, not a regular file)
+printf 'print piped\n' | "$bin" -in /dev/stdin -log none > out 2>&1; rc=$?
+check in_pipe '[ $rc -eq 0 ] && grep -q "^piped$" out'
+
+printf 'print one\nprint two\n' > in.ok
+"$bin" -in in.ok -log /dev/full > out 2>&1; rc=$?
+check log_disk_full '[ $rc -eq 1 ] && grep -q "^ERROR: print: cannot write log file ./dev/full.: No space left on device (in.ok:1)$" out && ! grep -q "^two$" out'
+
+printf 'print one\nlog /dev/full append\nprint two\n' > in.log
+"$bin" -in in.log -log first.log > out 2>&1; rc=$?
+check log_command_disk_full '[ $rc -eq 1 ] && grep -q "ERROR: log: cannot write log file ./dev/full.: No space left on device (in.log:2)" out && grep -q "^one$" first.log'
+
+# print append at the file size limit: the error names the file, no partial line is left
+head -c 1000 /dev/zero | tr '\0' 'x' > p.txt
+printf 'print "%s" append p.txt\n' "$(head -c 100 /dev/zero | tr '\0' 'y')" > in.fsize
+(trap '' XFSZ; ulimit -f 2; "$bin" -in in.fsize -log none) > out 2>&1; rc=$?
+check print_append_no_partial_line '[ $rc -eq 1 ] && grep -q "cannot write .p.txt.: File too large (in.fsize:1)" out && [ "$(wc -c < p.txt)" -eq 1000 ]'
+
+cat > in.post <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+region          box block 0 4 0 4 0 4
+create_box      1 box
+lattice         sc 1.0 origin 0.5 0.5 0.5
+region          fill block 0 4 0 4 0 2 units box
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1.0
+pair_style      gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+fix             1 all nve/sphere
+timestep        0.001
+run             10 post no
+print           between
+run             10
+IN
+"$bin" -in in.post -log none > out 2>&1; rc=$?
+first=$(sed -n '1,/^between$/p' out)
+rest=$(sed -n '/^between$/,$p' out)
+check run_post_no '[ $rc -eq 0 ] && echo "$first" | grep -q "^Loop time of .* for 10 steps" && ! echo "$first" | grep -q "MPI task timing breakdown\|^Performance:\|Neighbor list builds" && echo "$rest" | grep -q "MPI task timing breakdown"'
