@@ -42,6 +42,27 @@ struct contact_force {
     REAL3 ti, tj;
 };
 
+/* The one way a contact is built, for a particle partner (pair_loop.cl) and
+ * for a wall element (wall.cl, radj = 0, omj = 0): geometry and relative
+ * motion at the contact; dt and shearupdate are set by the caller. */
+static inline struct contact contact_make(const REAL3 del, const REAL radi, const REAL radj,
+                                          const REAL reff, const REAL3 vr, const REAL3 omi,
+                                          const REAL3 omj, const REAL meff)
+{
+    struct contact c;
+    c.del = del;
+    c.rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+    c.radi = radi;
+    c.radj = radj;
+    c.radsum = radi + radj;
+    c.reff = reff;
+    c.vr = vr;
+    c.omi = omi;
+    c.omj = omj;
+    c.meff = meff;
+    return c;
+}
+
 /* Minimum image of one component for a periodic length L (0 = not periodic). */
 static inline REAL min_image(REAL d, REAL L)
 {

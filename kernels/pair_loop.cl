@@ -32,23 +32,15 @@ static inline struct contact pair_contact(const int i, const int j, __global con
                                           const uint freezebit, const REAL Lx, const REAL Ly,
                                           const REAL Lz)
 {
-    struct contact c;
     REAL3 del = vload3(i, x) - vload3(j, x);
     del.x = MINIMG_X(del.x, Lx);
     del.y = MINIMG_Y(del.y, Ly);
     del.z = MINIMG_Z(del.z, Lz);
-    c.del = del;
-    c.rsq = del.x * del.x + del.y * del.y + del.z * del.z;
-    c.radi = radius[i];
-    c.radj = radius[j];
-    c.radsum = c.radi + c.radj;
-    c.reff = c.radi * c.radj / c.radsum;
-    c.vr = vload3(i, v) - vload3(j, v);
+    const REAL radi = radius[i], radj = radius[j];
 #ifdef HAS_ROTATION
-    c.omi = vload3(i, omega);
-    c.omj = vload3(j, omega);
+    const REAL3 omi = vload3(i, omega), omj = vload3(j, omega);
 #else
-    c.omi = c.omj = (REAL3)(0);
+    const REAL3 omi = (REAL3)(0), omj = (REAL3)(0);
 #endif
     const REAL mi = rmass[i], mj = rmass[j];
     REAL meff = mi * mj / (mi + mj);
@@ -56,8 +48,8 @@ static inline struct contact pair_contact(const int i, const int j, __global con
         meff = mj;
     if (mask[j] & freezebit)
         meff = mi;
-    c.meff = meff;
-    return c;
+    return contact_make(del, radi, radj, radi * radj / (radi + radj), vload3(i, v) - vload3(j, v),
+                        omi, omj, meff);
 }
 
 __kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,

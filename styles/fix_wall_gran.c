@@ -24,11 +24,11 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "wall.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
-#define WALL_BIG 1.0e20
 
 struct wall {
     int model, history;
@@ -38,8 +38,7 @@ struct wall {
     int wiggle, wshear, axis;
     double amplitude, period, omega, vshear;
     bigint time_origin;
-    cl_kernel k;
-    cl_mem dparam;
+    struct wall_law law;
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
@@ -112,8 +111,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
         arg_need(g, argc, i, 2, ws);
         w.style = ws[0] - 'x';
-        w.lo = parse_face(g, argv[i + 1], -WALL_BIG, "wall lo position");
-        w.hi = parse_face(g, argv[i + 2], WALL_BIG, "wall hi position");
+        w.lo = parse_face(g, argv[i + 1], -WALL_FAR, "wall lo position");
+        w.hi = parse_face(g, argv[i + 2], WALL_FAR, "wall hi position");
         if (w.lo >= w.hi)
             gr_error(g, "fix wall/gran %s: lo (%g) must be below hi (%g)", ws, w.lo, w.hi);
         i += 3;
@@ -172,75 +171,73 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hooke.cl";
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
+    f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
 }
 
-static void init(struct gravel *g, struct fix *f)
+/* The wall at the current step: wiggle moves the faces along the axis and
+ * gives the surface velocity; shear moves the surface tangentially (a
+ * zcylinder sheared about x or y moves azimuthally, per atom). */
+static struct wall_geom geometry(struct gravel *g, const struct wall *w)
 {
-    struct wall *w = f->data;
-    struct engine *e = eng_get(g);
-    w->k = eng_kernel(g, model_kernel[w->model]);
-    f->peratom_bytes = w->history ? 3 * e->rsz : 0;
-    /* parameters: re-uploaded every run (precision may change between runs) */
-    if (w->dparam)
-        clReleaseMemObject(w->dparam);
-    w->dparam = NULL;
-    w->dparam = eng_alloc(g, 8 * e->rsz, "fix wall/gran parameters");
-    eng_write_reals(g, w->dparam, 6, w->param);
-}
-
-static void post_force(struct gravel *g, struct fix *f)
-{
-    struct wall *w = f->data;
-    struct dev_atoms *a = eng_atoms(g);
-    double lo = w->lo, hi = w->hi, vwall[3] = {0, 0, 0};
+    struct wall_geom geom = {0};
+    double lo = w->lo, hi = w->hi;
     if (w->wiggle) {
         double arg = w->omega * (double)(g->step - w->time_origin) * g->dt;
         if (w->style == w->axis) {
             lo = w->lo + w->amplitude - w->amplitude * cos(arg);
             hi = w->hi + w->amplitude - w->amplitude * cos(arg);
         }
-        vwall[w->axis] = w->amplitude * w->omega * sin(arg);
+        geom.v[w->axis] = w->amplitude * w->omega * sin(arg);
     } else if (w->wshear) {
-        vwall[w->axis] = w->vshear;
+        geom.v[w->axis] = w->vshear;
     }
-    int cyl_shear = w->style == W_ZCYLINDER && w->wshear && w->axis != 2;
-    if (cyl_shear)
-        vwall[0] = vwall[1] = vwall[2] = 0.0;   /* azimuthal, added per atom in the kernel */
-    cl_kernel k = w->k;
-    int i = 0;
-    eng_arg_int(g, k, i++, a->n);
-    eng_arg_uint(g, k, i++, f->groupbit);
-    eng_arg_mem(g, k, i++, a->mask);
-    eng_arg_mem(g, k, i++, a->x);
-    eng_arg_mem(g, k, i++, a->v);
-    eng_arg_mem(g, k, i++, a->omega);
-    eng_arg_mem(g, k, i++, a->radius);
-    eng_arg_mem(g, k, i++, a->rmass);
-    eng_arg_mem(g, k, i++, a->f);
-    eng_arg_mem(g, k, i++, a->torque);
-    eng_arg_mem(g, k, i++, w->history ? f->peratom : a->f);
-    eng_arg_int(g, k, i++, w->history);
-    eng_arg_mem(g, k, i++, w->dparam);
-    eng_arg_int(g, k, i++, w->style);
-    eng_arg_real(g, k, i++, lo);
-    eng_arg_real(g, k, i++, hi);
-    eng_arg_real(g, k, i++, w->cylradius);
-    eng_arg_real(g, k, i++, vwall[0]);
-    eng_arg_real(g, k, i++, vwall[1]);
-    eng_arg_real(g, k, i++, vwall[2]);
-    eng_arg_int(g, k, i++, cyl_shear);
-    eng_arg_real(g, k, i++, w->vshear);
-    eng_arg_real(g, k, i++, g->dt);
-    eng_arg_int(g, k, i++, !eng_in_setup(g));
-    eng_launch(g, k, (size_t)a->n);
+    if (w->style == W_ZCYLINDER) {
+        geom.kind = WALL_ZCYLINDER;
+        geom.radius = w->cylradius;
+        geom.cyl_shear = w->wshear && w->axis != 2;
+        geom.vshear = w->vshear;
+        if (geom.cyl_shear)
+            geom.v[0] = geom.v[1] = geom.v[2] = 0.0;
+    } else {
+        geom.kind = WALL_PLANE;
+        geom.axis = w->style;
+        geom.lo = lo;
+        geom.hi = hi;
+    }
+    return geom;
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    struct engine *e = eng_get(g);
+    w->law.kernel = eng_kernel(g, model_kernel[w->model]);
+    w->law.history = w->history;
+    w->law.by_type = 0;
+    w->law.inclusive = 1;
+    /* parameters: re-uploaded every run (precision may change between runs) */
+    if (w->law.param)
+        clReleaseMemObject(w->law.param);
+    w->law.param = NULL;
+    w->law.param = eng_alloc(g, 8 * e->rsz, "fix wall/gran parameters");
+    eng_write_reals(g, w->law.param, 6, w->param);
+    struct wall_geom geom = geometry(g, w);
+    f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    struct wall_geom geom = geometry(g, w);
+    wall_apply(g, f, &geom, &w->law);
 }
 
 static void destroy(struct fix *f)
 {
     struct wall *w = f->data;
-    if (w && w->dparam)
-        clReleaseMemObject(w->dparam);
+    if (w && w->law.param)
+        clReleaseMemObject(w->law.param);
     free(w);
     f->data = NULL;
 }

@@ -1,0 +1,48 @@
+/* wall.h - walls as contact sources of the contact pipeline (kernels/wall.cl).
+ *
+ * A wall front-end (fix wall/gran, fix wall/pair) describes its geometry as
+ * a struct wall_geom, creates the kernel of its contact law (a WALL_KERNEL
+ * instantiation) and calls wall_apply() in post_force: one launch per wall,
+ * every kernel argument bound here. Contact history is engine-managed
+ * per-atom state of the fix, wall_elements() slots of 3 REAL per atom. */
+#ifndef GR_WALL_H
+#define GR_WALL_H
+
+#include "gravel.h"
+#include "ocl.h"
+
+struct fix;
+
+enum wall_kind { WALL_PLANE = 0, WALL_ZCYLINDER = 1 };  /* = kernels/wall.cl */
+
+struct wall_geom {
+    enum wall_kind kind;
+    int axis;                   /* plane: normal axis 0..2 */
+    double lo, hi;              /* plane: face positions (+-WALL_FAR = no face) */
+    double radius;              /* zcylinder */
+    double v[3];                /* velocity of the surface */
+    int cyl_shear;              /* zcylinder: azimuthal surface speed vshear */
+    double vshear;
+};
+
+#define WALL_FAR 1.0e20
+
+/* The contact law of a wall: one packed parameter set, or (by_type) the
+ * pair style's parameters of type pair (t_i, t_i). */
+struct wall_law {
+    cl_kernel kernel;
+    cl_mem param;
+    int by_type;
+    int history;                /* 3 REAL per element per atom */
+    int inclusive;              /* |del| = radius is a contact (LAMMPS wall/gran) */
+};
+
+/* History slots per atom of a wall of this geometry. */
+int wall_elements(const struct wall_geom *w);
+/* Bytes of per-atom state the fix must declare (f->peratom_bytes). */
+size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const struct wall_law *law);
+/* Add the wall's contact forces and torques for the atoms of f's group. */
+void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
+                const struct wall_law *law);
+
+#endif
