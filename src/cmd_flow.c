@@ -1,9 +1,10 @@
 /* cmd_flow.c - interpreter and flow commands: variable next jump label include
- * print log echo clear quit info shell, and the LAMMPS commands that have no
- * meaning in gravel (accepted with one warning each).
+ * print log echo clear quit info shell if timer run_style, and the LAMMPS
+ * commands that have no meaning in gravel (accepted with one warning each).
  *
  * Handlers receive the arguments after the command name; arity and phase were
  * checked by the dispatcher (input.c), so they validate only their keywords. */
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -237,4 +238,286 @@ void cmd_ignored(struct gravel *g, int argc, char **argv)
                 gr_warn(g, "ignored: this LAMMPS command has no meaning in gravel");
             return;
         }
+}
+
+/* ---- if / elif / else ------------------------------------------------------- */
+
+/* LAMMPS's Boolean expressions (Variable::evaluate_boolean): operands are
+ * numbers (they may start with a digit, '-' or '.') or words (a letter, then
+ * letters, digits and '_'); operators, loosest first: || |^ (xor), &&,
+ * == !=, < <= > >=, unary !; parentheses group. Numbers compare as numbers;
+ * two words compare as strings with == and != only; anything else mixed is
+ * an error. Every operator yields 1 or 0; the expression is true when its
+ * value is non-zero. */
+struct bval {
+    int num;
+    double v;
+    const char *s;
+    size_t n;
+};
+
+struct bparse {
+    struct gravel *g;
+    const char *p, *text;
+};
+
+static void bskip(struct bparse *b)
+{
+    while (*b->p == ' ' || *b->p == '\t' || *b->p == '\n' || *b->p == '\r')
+        b->p++;
+}
+
+static int bop(struct bparse *b, const char *op)
+{
+    bskip(b);
+    size_t n = strlen(op);
+    if (strncmp(b->p, op, n) != 0)
+        return 0;
+    /* '<' must not take the first char of '<=' etc.; '!' not of '!=' */
+    if (n == 1 && (op[0] == '<' || op[0] == '>' || op[0] == '!') && b->p[1] == '=')
+        return 0;
+    b->p += n;
+    return 1;
+}
+
+static struct bval b_or(struct bparse *b);
+
+static double bnum(struct bparse *b, struct bval v, const char *op)
+{
+    if (!v.num)
+        gr_error(b->g, "if: operator %s needs numbers, got the word '%.*s' in \"%s\"", op,
+                 (int)v.n, v.s, b->text);
+    return v.v;
+}
+
+static struct bval bmake(double x)
+{
+    struct bval r = {1, x, NULL, 0};
+    return r;
+}
+
+static struct bval b_primary(struct bparse *b)
+{
+    bskip(b);
+    const char *p = b->p;
+    if (*p == '(') {
+        b->p++;
+        struct bval v = b_or(b);
+        if (!bop(b, ")"))
+            gr_error(b->g, "if: missing ')' in \"%s\"", b->text);
+        return v;
+    }
+    if (isdigit((unsigned char)*p) || *p == '-' || *p == '.') {
+        char *end;
+        errno = 0;
+        double x = strtod(p, &end);
+        if (end == p)
+            gr_error(b->g, "if: invalid number at '%.20s' in \"%s\"", p, b->text);
+        b->p = end;
+        return bmake(x);
+    }
+    if (isalpha((unsigned char)*p)) {
+        const char *q = p + 1;
+        while (isalnum((unsigned char)*q) || *q == '_')
+            q++;
+        b->p = q;
+        struct bval v = {0, 0, p, (size_t)(q - p)};
+        return v;
+    }
+    if (!*p)
+        gr_error(b->g, "if: the Boolean expression \"%s\" ends where an operand is expected",
+                 b->text);
+    gr_error(b->g, "if: unexpected '%.20s' in the Boolean expression \"%s\"", p, b->text);
+}
+
+static struct bval b_unary(struct bparse *b)
+{
+    if (bop(b, "!"))
+        return bmake(bnum(b, b_unary(b), "!") == 0.0);
+    return b_primary(b);
+}
+
+static struct bval b_rel(struct bparse *b)
+{
+    struct bval l = b_unary(b);
+    for (;;) {
+        const char *op = bop(b, "<=") ? "<=" : bop(b, ">=") ? ">=" : bop(b, "<") ? "<"
+                       : bop(b, ">") ? ">" : NULL;
+        if (!op)
+            return l;
+        double x = bnum(b, l, op), y = bnum(b, b_unary(b), op);
+        l = bmake(op[0] == '<' ? (op[1] ? x <= y : x < y) : (op[1] ? x >= y : x > y));
+    }
+}
+
+static struct bval b_eq(struct bparse *b)
+{
+    struct bval l = b_rel(b);
+    for (;;) {
+        int eq = bop(b, "==");
+        if (!eq && !bop(b, "!="))
+            return l;
+        struct bval r = b_rel(b);
+        int same;
+        if (l.num && r.num)
+            same = l.v == r.v;
+        else if (!l.num && !r.num)
+            same = l.n == r.n && strncmp(l.s, r.s, l.n) == 0;
+        else
+            gr_error(b->g, "if: cannot compare a number with a word in \"%s\"", b->text);
+        l = bmake(eq ? same : !same);
+    }
+}
+
+static struct bval b_and(struct bparse *b)
+{
+    struct bval l = b_eq(b);
+    while (bop(b, "&&")) {
+        double x = bnum(b, l, "&&"), y = bnum(b, b_eq(b), "&&");
+        l = bmake(x != 0.0 && y != 0.0);
+    }
+    return l;
+}
+
+static struct bval b_or(struct bparse *b)
+{
+    struct bval l = b_and(b);
+    for (;;) {
+        int xr = 0;
+        if (!bop(b, "||") && !(xr = bop(b, "|^")))
+            return l;
+        const char *op = xr ? "|^" : "||";
+        double x = bnum(b, l, op), y = bnum(b, b_and(b), op);
+        l = bmake(xr ? ((x != 0.0) != (y != 0.0)) : (x != 0.0 || y != 0.0));
+    }
+}
+
+/* Substitute variables in a condition (it was quoted, so the reader left
+ * them) and evaluate it. */
+static int if_test(struct gravel *g, const char *cond)
+{
+    char *text = gr_strdup(g, inp_substitute(g, cond));
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        free(text);
+        g->err.jmp = outer;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    struct bparse b = {g, text, text};
+    struct bval v = b_or(&b);
+    bskip(&b);
+    if (*b.p)
+        gr_error(g, "if: unexpected '%.20s' after the Boolean expression \"%s\"", b.p, text);
+    if (!v.num)
+        gr_error(g, "if: the Boolean expression \"%s\" is a word, not a test", text);
+    g->err.jmp = outer;
+    free(text);
+    return v.v != 0.0;
+}
+
+/* Run argv[first..last] as commands, copied first: running a command reuses
+ * the reader's buffers that argv points into. */
+static void if_run(struct gravel *g, int argc, char **argv, int first, int last)
+{
+    (void)argc;
+    int n = last - first + 1;
+    if (n <= 0)
+        gr_error(g, "if: no command after '%s'", argv[first - 1]);
+    for (int i = first; i <= last; i++)
+        if (!argv[i][0])
+            gr_error(g, "if: empty command (argument %d)", i + 1);
+    inp_run_commands(g, n, argv + first);
+}
+
+static int if_block_end(int argc, char **argv, int i)
+{
+    while (i < argc && strcmp(argv[i], "elif") && strcmp(argv[i], "else"))
+        i++;
+    return i;
+}
+
+/* if "cond" then "cmd" ... [elif "cond" "cmd" ...]... [else "cmd" ...]
+ * (LAMMPS if): the first branch whose condition holds runs its commands, in
+ * order, as if they were script lines here (so `jump SELF label` and `quit`
+ * work from inside). */
+void cmd_if(struct gravel *g, int argc, char **argv)
+{
+    if (strcmp(argv[1], "then") != 0)
+        gr_error(g, "expected: if \"condition\" then \"command\" ..., got '%.64s' after the "
+                    "condition", argv[1]);
+    int first = 2, end = if_block_end(argc, argv, first);
+    if (end == first)
+        gr_error(g, "if: no command after 'then'");
+    if (if_test(g, argv[0])) {
+        if_run(g, argc, argv, first, end - 1);
+        return;
+    }
+    int i = end;
+    while (i < argc) {
+        int take;
+        if (!strcmp(argv[i], "elif")) {
+            if (i + 2 >= argc)
+                gr_error(g, "if: 'elif' needs a condition and at least one command");
+            take = if_test(g, argv[i + 1]);
+            first = i + 2;
+        } else {
+            if (i + 1 >= argc)
+                gr_error(g, "if: no command after 'else'");
+            take = 1;
+            first = i + 1;
+        }
+        end = if_block_end(argc, argv, first);
+        if (end == first)
+            gr_error(g, "if: no command after '%s'", argv[first - 1]);
+        if (take) {
+            if_run(g, argc, argv, first, end - 1);
+            return;
+        }
+        i = end;
+    }
+}
+
+/* ---- timer, run_style --------------------------------------------------------- */
+
+/* timer [off|loop|normal|full] [sync|nosync] [timeout T|off] [every N]: LAMMPS
+ * timer settings. gravel always prints its timing breakdown and has no
+ * wall-time limit, so the keywords are checked and then ignored (one
+ * warning). */
+void cmd_timer(struct gravel *g, int argc, char **argv)
+{
+    for (int i = 0; i < argc; i++) {
+        const char *k = argv[i];
+        if (!strcmp(k, "off") || !strcmp(k, "loop") || !strcmp(k, "normal") ||
+            !strcmp(k, "full") || !strcmp(k, "sync") || !strcmp(k, "nosync"))
+            continue;
+        if (!strcmp(k, "timeout")) {
+            arg_need(g, argc, i, 1, k);
+            i++;
+        } else if (!strcmp(k, "every")) {
+            arg_need(g, argc, i, 1, k);
+            arg_int_range(g, argv[++i], 1, 1 << 30, "timeout check interval");
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (expected off, loop, normal, full, sync, "
+                        "nosync, timeout or every)", k);
+        }
+    }
+    static int warned;
+    if (!warned++)
+        gr_warn(g, "ignored: gravel always reports its timing breakdown and has no run "
+                   "timeout");
+}
+
+/* run_style verlet: the only integrator loop gravel has (velocity Verlet
+ * split into initial/final integrate, as LAMMPS's verlet). */
+void cmd_run_style(struct gravel *g, int argc, char **argv)
+{
+    if (strcmp(argv[0], "verlet") != 0)
+        gr_error(g, "run_style %s is not supported: gravel has only run_style verlet",
+                 argv[0]);
+    if (argc > 1)
+        gr_error(g, "run_style verlet takes no arguments, got '%.64s'", argv[1]);
 }

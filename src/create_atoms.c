@@ -8,21 +8,26 @@
  * LAMMPS' rule for which boundary points belong to the box: in periodic
  * dimensions [lo - eps, hi - 2 eps) with eps = 1e-6 x length (no duplicate on
  * the upper face), otherwise [lo, hi).
- * Random insertion draws from GSL's mt19937 seeded with `seed`; with
- * `overlap d` a candidate is rejected if it is closer than d (center to
- * center, minimum image in periodic dimensions) to any atom, checked against
- * a cell grid with cells >= d so each test looks at 27 cells: O(N). */
+ * Random insertion is LAMMPS's (create_atoms.cpp add_random), draw for
+ * draw: a RanPark stream (src/random.c) seeded with `seed` and warmed up
+ * with 30 draws; each candidate is x = lo + u (hi - lo) per dimension in
+ * the box clipped to the region's bounding box (interior regions only),
+ * tried up to maxtry times; a candidate outside the region is rejected; with
+ * `overlap d` (lattice units unless `units box`, scaled by the x spacing as
+ * LAMMPS) one closer than d (center to center, minimum image in periodic
+ * dimensions) to any atom is rejected, checked against a cell grid with
+ * cells >= d so each test looks at 27 cells: O(N). So `lmp` and gravel
+ * create the same atoms in the same order. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_rng.h>
 
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
 #include "lattice.h"
+#include "random.h"
 #include "region.h"
 
 #define CA_EPSILON 1.0e-6
@@ -164,7 +169,6 @@ struct random_job {
     int maxtry;
     int type;
     /* owned resources, freed by the caller on any exit */
-    gsl_rng *rng;
     struct grid grid;
 };
 
@@ -180,10 +184,10 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
             hi[d] = g->dom.hi[d];
         }
     }
-    job->rng = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!job->rng)
-        gr_error(g, "out of memory creating a random number generator");
-    gsl_rng_set(job->rng, job->seed);
+    struct rng_park rng;
+    rng_park_init(&rng, (int)job->seed);
+    for (int k = 0; k < 30; k++) /* LAMMPS's warm-up */
+        rng_park_uniform(&rng);
     if (job->overlap > 0) {
         grid_init(g, &job->grid, job->overlap, (bigint)g->atoms.n + job->n);
         for (int i = 0; i < g->atoms.n; i++)
@@ -196,11 +200,8 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
         int ok = 0;
         double x[3];
         for (int t = 0; t < job->maxtry && !ok; t++) {
-            for (int d = 0; d < 3; d++) {
-                x[d] = lo[d] + gsl_rng_uniform(job->rng) * (hi[d] - lo[d]);
-                if (x[d] >= g->dom.hi[d]) /* hi - lo rounding */
-                    x[d] = nextafter(g->dom.hi[d], g->dom.lo[d]);
-            }
+            for (int d = 0; d < 3; d++)
+                x[d] = lo[d] + rng_park_uniform(&rng) * (hi[d] - lo[d]);
             if (job->r && !region_match(job->r, x))
                 continue;
             if (job->overlap > 0 && grid_overlaps(g, &job->grid, x, job->overlap))
@@ -209,10 +210,14 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
         }
         if (!ok)
             continue;
+        added++;
+        /* LAMMPS counts it, but creates it only inside [lo, hi) of its
+         * sub-domain: hi - lo rounding can land a point on the upper face */
+        if (!domain_inside(g, x))
+            continue;
         int i = atoms_add(g, 0, job->type, x, sphere_radius, SPHERE_MASS);
         if (job->overlap > 0)
             grid_insert(g, &job->grid, i);
-        added++;
     }
     if (added < job->n)
         gr_warn(g, "only inserted %lld particles out of %lld (maxtry %d)", (long long)added,
@@ -343,7 +348,9 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         job.n = nrandom;
         job.seed = seed;
         job.r = r;
-        job.overlap = overlap;
+        double sc[3];
+        domain_unit_scale(g, lattice_units, sc);
+        job.overlap = overlap * sc[0]; /* LAMMPS: overlap *= xlattice */
         job.maxtry = maxtry;
         job.type = type;
         /* free the generator and grid however insertion ends */
@@ -351,7 +358,6 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         g->err.jmp = &here;
         if (setjmp(here)) {
             g->err.jmp = outer;
-            gsl_rng_free(job.rng);
             grid_free(&job.grid);
             if (outer)
                 longjmp(*outer, 1);
@@ -360,7 +366,6 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         }
         created = insert_random(g, &job);
         g->err.jmp = outer;
-        gsl_rng_free(job.rng);
         grid_free(&job.grid);
     }
     gr_print(g, "Created %lld atoms\n", (long long)created);

@@ -288,7 +288,7 @@ static double math_function(struct ep *e, const char *fn, int n, const double *a
         if (a[1] < a[0])
             ep_fail(e, "random(lo,hi,seed) needs lo <= hi");
         long seed = seed_arg(e, fn, a[2]);
-        return a[0] + (a[1] - a[0]) * var_random_uniform(e->g, seed);
+        return var_random_uniform(e->g, seed) * (a[1] - a[0]) + a[0]; /* LAMMPS's order */
     }
     /* normal(mu, sigma, seed) */
     if (a[1] < 0)

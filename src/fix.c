@@ -191,3 +191,33 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
         }
     gr_error(g, "could not find fix ID '%.64s' to delete", argv[0]);
 }
+
+/* fix_modify ID keyword value ... (LAMMPS fix_modify). gravel's thermo has
+ * no potential-energy or pressure columns that fixes contribute to, so
+ * energy/virial yes (and respa levels) are accepted with a warning and
+ * change nothing; energy/virial no is what gravel does anyway. */
+void cmd_fix_modify(struct gravel *g, int argc, char **argv)
+{
+    struct fix *f = fix_find(g, argv[0]);
+    if (!f)
+        gr_error(g, "unknown fix ID '%.64s'", argv[0]);
+    for (int i = 1; i < argc; i++) {
+        const char *k = argv[i];
+        arg_need(g, argc, i, 1, k);
+        const char *v = argv[++i];
+        if (!strcmp(k, "energy") || !strcmp(k, "virial")) {
+            if (arg_yesno(g, v, k))
+                gr_warn(g, "fix %s: %s yes has no effect (gravel's thermo output has no "
+                           "fix %s contributions)", f->id, k, k);
+        } else if (!strcmp(k, "respa")) {
+            arg_int_range(g, v, 0, 1 << 20, "respa level");
+            gr_warn(g, "fix %s: respa ignored: gravel has only run_style verlet", f->id);
+        } else if (!strcmp(k, "dynamic/dof") || !strcmp(k, "bodyforces") ||
+                   !strcmp(k, "temp") || !strcmp(k, "press")) {
+            gr_error(g, "fix %s: keyword '%s' does not apply to fix %s in gravel", f->id, k,
+                     f->style->name);
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (expected energy, virial or respa)", k);
+        }
+    }
+}

@@ -683,6 +683,60 @@ int inp_string(struct gravel *g, const char *text, const char *name)
 
 /* ---- flow support ------------------------------------------------------------- */
 
+int inp_run_commands(struct gravel *g, int n, char **cmds)
+{
+    char **copy = gr_calloc(g, (size_t)(n > 0 ? n : 1), sizeof *copy);
+    jmp_buf *outer = g->err.jmp, jb;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        for (int i = 0; i < n; i++)
+            free(copy[i]);
+        free(copy);
+        g->err.jmp = outer;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    for (int i = 0; i < n; i++)
+        copy[i] = gr_strdup(g, cmds[i]);
+    int rc = GR_OK;
+    for (int i = 0; i < n && rc == GR_OK; i++)
+        rc = inp_one(g, copy[i]);
+    g->err.jmp = outer;
+    for (int i = 0; i < n; i++)
+        free(copy[i]);
+    free(copy);
+    return rc;
+}
+
+int inp_one(struct gravel *g, const char *text)
+{
+    struct frame *fr = gr_calloc(g, 1, sizeof *fr);
+    struct errctx saved = g->err;
+    jmp_buf jb;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        /* the message (naming the inner command) is set; free our frame and
+         * let the caller's boundary report it with the enclosing line */
+        frame_free(fr);
+        g->err.cmd = saved.cmd;
+        g->err.text = saved.text;
+        g->err.jmp = saved.jmp;
+        if (saved.jmp)
+            longjmp(*saved.jmp, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    db_add(g, &fr->raw, text, strlen(text));
+    int rc = execute(g, fr);
+    frame_free(fr);
+    g->err.cmd = saved.cmd;
+    g->err.text = saved.text;
+    g->err.jmp = saved.jmp;
+    return rc;
+}
+
 void inp_include(struct gravel *g, const char *path)
 {
     FILE *fp = open_script(g, path, 0, 1);

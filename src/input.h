@@ -30,6 +30,15 @@ int inp_string(struct gravel *g, const char *text, const char *name);
 
 /* Push script file `path` on the source stack (include). */
 void inp_include(struct gravel *g, const char *path);
+/* Execute one command line now (LAMMPS Input::one), within the script being
+ * read: substitution, echo and dispatch as for a script line; jump, label
+ * searches, next and quit act on the enclosing script. Errors unwind to the
+ * caller's boundary. Used by `if` and `run ... every`. Returns GR_OK or
+ * GR_QUIT. */
+int inp_one(struct gravel *g, const char *text);
+/* inp_one for each of n command lines, copied first (they may point into
+ * the reader's buffers, which running a command reuses); stops after quit. */
+int inp_run_commands(struct gravel *g, int n, char **cmds);
 /* jump: `file` = "SELF" rewinds the current source, else it replaces the
  * current source; with `label` non-NULL, commands are skipped until
  * `label <label>`. Honours the skip flag set by an exhausted `next`. */

@@ -44,6 +44,9 @@ const struct pair_style *pair_style_find(const char *name)
 
 void pair_release(struct pair *p)
 {
+    free(p->setflag);
+    p->setflag = NULL;
+    p->setflag_nt = 0;
     if (p->data && p->style && p->style->destroy)
         p->style->destroy(p);
     else
@@ -83,6 +86,9 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
      * tables in data included; hybrid/overlay starts afresh) */
     if (g->styles.pair && g->styles.pair->style == st && !st->source_n) {
         tmp.coeff_set = g->styles.pair->coeff_set;
+        tmp.setflag = g->styles.pair->setflag;
+        tmp.setflag_nt = g->styles.pair->setflag_nt;
+        g->styles.pair->setflag = NULL;
         if (!tmp.data) {
             tmp.data = g->styles.pair->data;
             g->styles.pair->data = NULL;
@@ -95,25 +101,172 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
     *g->styles.pair = tmp;
 }
 
-/* pair_coeff * *  (granular styles take no per-type coefficients) */
+int pair_coeff_each(int ilo, int ihi, int jlo, int jhi, void (*visit)(int, int, void *),
+                    void *ctx)
+{
+    int n = 0;
+    for (int i = ilo; i <= ihi; i++)
+        for (int j = jlo > i ? jlo : i; j <= jhi; j++) {
+            if (visit)
+                visit(i, j, ctx);
+            n++;
+        }
+    return n;
+}
+
+static int plain_int(const char *s)
+{
+    if (!*s)
+        return 0;
+    for (; *s; s++)
+        if (*s < '0' || *s > '9')
+            return 0;
+    return 1;
+}
+
+struct flagctx {
+    unsigned char *f;
+    int nt;
+};
+
+static void mark_pair(int i, int j, void *vctx)
+{
+    struct flagctx *c = vctx;
+    c->f[(size_t)(i - 1) * c->nt + (j - 1)] = 1;
+    c->f[(size_t)(j - 1) * c->nt + (i - 1)] = 1;
+}
+
+/* pair_coeff I J [args]: LAMMPS's type ranges (N, *, N*, *N, M*N). As in
+ * LAMMPS, two plain numbers with J < I are swapped; otherwise the pairs set
+ * are I in the first range and J >= I in the second (`pair_coeff * 2` with 3
+ * types sets 1-1 1-2 2-2), and ranges that give no such pair are an error. */
 void cmd_pair_coeff(struct gravel *g, int argc, char **argv)
 {
     if (!g->styles.pair)
         gr_error(g, "pair_coeff command before pair_style is defined");
-    int ilo, ihi, jlo, jhi;
-    arg_type_range(g, argv[0], g->atoms.ntypes, &ilo, &ihi);
-    arg_type_range(g, argv[1], g->atoms.ntypes, &jlo, &jhi);
-    if (g->styles.pair->style->coeff) {
-        g->styles.pair->style->coeff(g, g->styles.pair, ilo, ihi, jlo, jhi, argc - 2, argv + 2);
+    struct pair *p = g->styles.pair;
+    if (plain_int(argv[0]) && plain_int(argv[1]) && atoi(argv[1]) < atoi(argv[0])) {
+        char *t = argv[0];
+        argv[0] = argv[1];
+        argv[1] = t;
+    }
+    int nt = g->atoms.ntypes, ilo, ihi, jlo, jhi;
+    arg_type_range(g, argv[0], nt, &ilo, &ihi);
+    arg_type_range(g, argv[1], nt, &jlo, &jhi);
+    if (pair_coeff_each(ilo, ihi, jlo, jhi, NULL, NULL) == 0)
+        gr_error(g, "pair_coeff %s %s names no type pair I <= J (LAMMPS sets J >= I only; "
+                    "write the lower types first)", argv[0], argv[1]);
+    if (p->style->coeff) {
+        p->style->coeff(g, p, ilo, ihi, jlo, jhi, argc - 2, argv + 2);
         return;
     }
     if (argc > 2)
-        gr_error(g, "pair style %s takes no coefficients after the two types, got '%.64s'",
-                 g->styles.pair->style->name, argv[2]);
-    if (ilo != 1 || jlo != 1 || ihi != g->atoms.ntypes || jhi != g->atoms.ntypes)
-        gr_error(g, "pair style %s requires pair_coeff * * (all type pairs share the "
-                    "pair_style coefficients)", g->styles.pair->style->name);
-    g->styles.pair->coeff_set = 1;
+        gr_error(g, "pair style %s takes no coefficients after the two types, got '%.64s' "
+                    "(its parameters are the pair_style arguments)",
+                 p->style->name, argv[2]);
+    if (!p->setflag || p->setflag_nt != nt) {
+        free(p->setflag);
+        p->setflag = gr_calloc(g, (size_t)nt * nt, 1);
+        p->setflag_nt = nt;
+    }
+    struct flagctx c = {p->setflag, nt};
+    pair_coeff_each(ilo, ihi, jlo, jhi, mark_pair, &c);
+    p->coeff_set = 1;
+}
+
+/* pair_modify on one style (a plain style or one hybrid/overlay term). */
+static void modify_one(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    /* styles whose unset cross pairs are mixed from the diagonal */
+    int mixes = p->style->coeff != NULL && p->style->init != NULL;
+    for (int i = 0; i < argc; i++) {
+        const char *k = argv[i];
+        if (!strcmp(k, "mix")) {
+            arg_need(g, argc, i, 1, k);
+            const char *v = argv[++i];
+            int arith = !strcmp(v, "arithmetic");
+            if (!arith && strcmp(v, "geometric") && strcmp(v, "sixthpower"))
+                gr_error(g, "mix must be geometric, arithmetic or sixthpower, got '%.32s'", v);
+            if (!mixes) {
+                gr_warn(g, "pair style %s has no per-type coefficients to mix: mix %s ignored",
+                        p->style->name, v);
+            } else if (!arith && strcmp(v, "geometric")) {
+                gr_error(g, "pair style %s mixes a stiffness: mix geometric or arithmetic, "
+                            "not %s", p->style->name, v);
+            } else {
+                p->mix_arithmetic = arith;
+            }
+        } else if (!strcmp(k, "shift") || !strcmp(k, "tail")) {
+            arg_need(g, argc, i, 1, k);
+            if (arg_yesno(g, argv[++i], k))
+                gr_warn(g, "%s yes ignored: contact forces end at contact, there is no "
+                           "energy shift or long-range tail", k);
+        } else if (!strcmp(k, "compute")) {
+            arg_need(g, argc, i, 1, k);
+            if (!arg_yesno(g, argv[++i], k))
+                gr_error(g, "compute no is not supported (use pair_style none)");
+        } else if (!strcmp(k, "table") || !strcmp(k, "table/disp") ||
+                   !strcmp(k, "tabinner") || !strcmp(k, "tabinner/disp")) {
+            arg_need(g, argc, i, 1, k);
+            i++;
+            gr_warn(g, "%s ignored: gravel's pair styles are not tabulated", k);
+        } else if (!strcmp(k, "nofdotr")) {
+            gr_warn(g, "nofdotr ignored");
+        } else if (!strcmp(k, "special")) {
+            arg_need(g, argc, i, 4, k);
+            i += 4;
+            gr_warn(g, "special ignored: atom_style sphere has no bonds");
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (expected pair, mix, shift, tail, compute, "
+                        "table, tabinner, nofdotr or special)", k);
+        }
+    }
+}
+
+/* pair_modify [pair SUBSTYLE [N]] keyword value ... (LAMMPS pair_modify).
+ * mix applies where the style mixes unset cross pairs (cohesion's kc);
+ * keywords that have no meaning for contact forces are accepted with a
+ * warning when they ask for something (shift yes, tail yes, tables). For
+ * hybrid/overlay, `pair SUBSTYLE` picks one term, otherwise all. */
+void cmd_pair_modify(struct gravel *g, int argc, char **argv)
+{
+    struct pair *p = g->styles.pair;
+    if (!p)
+        gr_error(g, "pair_modify command before pair_style is defined");
+    const struct pair *t[PAIR_MAXTERMS];
+    int nt = 1;
+    t[0] = p;
+    if (p->style->source_n)
+        nt = pair_hybrid_terms(p, t);
+    int start = 0;
+    if (!strcmp(argv[0], "pair")) {
+        arg_need(g, argc, 0, 1, "pair");
+        const struct pair *pick = NULL;
+        for (int k = 0; k < nt; k++)
+            if (!strcmp(t[k]->style->name, argv[1]))
+                pick = t[k];
+        if (!pick || !p->style->source_n)
+            gr_error(g, "pair %s: not a sub-style of the current pair style %s", argv[1],
+                     p->style->name);
+        t[0] = pick;
+        nt = 1;
+        start = 2;
+        if (start < argc && argv[start][0] >= '1' && argv[start][0] <= '9')
+            start++; /* sub-style instance number: each style appears once */
+    }
+    if (start >= argc)
+        gr_error(g, "pair_modify needs at least one keyword");
+    for (int k = 0; k < nt; k++)
+        modify_one(g, (struct pair *)t[k], argc - start, argv + start);
+}
+
+/* The first type I with no pair_coeff I I in a flag table, or 0. */
+int pair_first_unset_diag(const unsigned char *flag, int nt)
+{
+    for (int i = 1; i <= nt; i++)
+        if (!flag[(size_t)(i - 1) * nt + (i - 1)])
+            return i;
+    return 0;
 }
 
 /* ---- composition helpers: a plain style is one term; hybrid/overlay
@@ -212,6 +365,17 @@ int pair_defines(const struct pair *p, char *buf, size_t len)
 void pair_prepare(struct gravel *g)
 {
     struct pair *p = g->styles.pair;
+    /* LAMMPS Pair::init: every I I must have been named by a pair_coeff
+     * (cross pairs of these styles share the pair_style parameters) */
+    if (p && !p->style->coeff && p->setflag) {
+        int nt = g->atoms.ntypes, i = pair_first_unset_diag(p->setflag, p->setflag_nt);
+        if (p->setflag_nt != nt)
+            gr_error(g, "pair style %s: pair_coeff was given for %d atom types, the box has "
+                        "%d: re-issue pair_coeff", p->style->name, p->setflag_nt, nt);
+        if (i)
+            gr_error(g, "all pair coeffs are not set: no pair_coeff for types %d %d of pair "
+                        "style %s (e.g. pair_coeff * *)", i, i, p->style->name);
+    }
     if (p && p->style->init)
         p->style->init(g, p);
 }

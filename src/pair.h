@@ -49,8 +49,13 @@ struct pair_style {
     /* Largest centre distance at which this style acts, for a pair of radius
      * sum `radsum`: an affine upper bound A + B radsum over all type pairs. */
     double (*reach)(const struct pair *p, double radsum);
-    /* `pair_coeff I J args...` for types ilo..ihi x jlo..jhi (NULL: only
-     * `pair_coeff * *` without arguments is accepted). */
+    /* `pair_coeff I J args...` for types ilo..ihi x jlo..jhi, LAMMPS's
+     * semantics: set the pairs (I, J) with I in ilo..ihi, J in
+     * max(jlo, I)..jhi (so I <= J; pair.c has swapped `pair_coeff 2 1` and
+     * checked that at least one pair is set), and their mirrors (J, I).
+     * NULL: the style has no per-type coefficients; pair_coeff takes no
+     * arguments after the types and only records which pairs were named
+     * (every I I must be, at run, as LAMMPS requires). */
     void (*coeff)(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
                   int argc, char **argv);
     /* Run start: validate coefficients, mix cross terms (before pack). */
@@ -65,7 +70,12 @@ struct pair_style {
 struct pair {
     const struct pair_style *style;
     double coef[PAIR_MAXCOEF];  /* style-defined (gran: kn kt gamman gammat xmu dampflag limit) */
-    int coeff_set;              /* pair_coeff * * was given */
+    int coeff_set;              /* some pair_coeff was given (or restored) */
+    unsigned char *setflag;     /* styles without a coeff hook: nt x nt pairs
+                                 * named by pair_coeff (NULL after a restart:
+                                 * coeff_set alone then says "all") */
+    int setflag_nt;
+    int mix_arithmetic;         /* pair_modify mix arithmetic (styles that mix) */
     void *data;                 /* style-owned (per-type tables, composed terms) */
 };
 
@@ -74,6 +84,12 @@ void pair_free(struct gravel *g);
 const struct pair_style *pair_style_find(const char *name);
 
 /* ---- composition helpers (pair.c) ---- */
+/* For the pair_coeff I J ranges, LAMMPS's loop: calls visit(I, J) for every
+ * I in ilo..ihi and J in max(jlo, I)..jhi; returns how many. */
+int pair_coeff_each(int ilo, int ihi, int jlo, int jhi, void (*visit)(int, int, void *),
+                    void *ctx);
+/* The first type I whose I I entry is 0 in an nt x nt flag table, or 0. */
+int pair_first_unset_diag(const unsigned char *flag, int nt);
 /* Parse `style args...` into *p (settings of that style); errors name the style. */
 void pair_create(struct gravel *g, struct pair *p, const struct pair_style *st, int argc,
                  char **argv);

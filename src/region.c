@@ -208,6 +208,10 @@ void cmd_region(struct gravel *g, int argc, char **argv)
         exit(1);
     }
     st->parse(g, r, nstyle, argv + 2, scale);
+    /* side out: the matching points are unbounded (LAMMPS bboxflag = 0), so
+     * create_atoms searches the whole box */
+    if (!r->interior)
+        r->bbox = 0;
     g->err.jmp = outer;
     rs->r[rs->n++] = r;
 }

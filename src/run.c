@@ -20,6 +20,7 @@
 #include "args.h"
 #include "engine.h"
 #include "error.h"
+#include "input.h"
 #include "fix.h"
 #include "neighbor.h"
 #include "output.h"
@@ -360,10 +361,17 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
                 100 * maxov);
 }
 
-/* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no] */
+/* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no]
+ *       [every M "cmd" ... | every M NULL]
+ * `every` (last, as in LAMMPS) splits the run into runs of M steps (the last
+ * may be shorter), each a complete run with its own thermo header and loop
+ * summary, and after each executes the commands as script lines. */
 void cmd_run(struct gravel *g, int argc, char **argv)
 {
     bigint n = arg_bigint(g, argv[0], "number of steps");
+    bigint nevery = 0;
+    int ncmd = 0;
+    char **cmds = NULL;
     int upto = 0;
     bigint start = -1, stop = -1;
     int have_start = 0, have_stop = 0, force = 0, post = 1;
@@ -392,10 +400,18 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             post = arg_yesno(g, argv[i + 1], argv[i]);
             i++;
         } else if (!strcmp(argv[i], "every")) {
-            gr_error(g, "run keyword 'every' is not supported");
+            arg_need(g, argc, i, 1, "every");
+            nevery = arg_bigint(g, argv[i + 1], "every interval");
+            if (nevery <= 0)
+                gr_error(g, "run every needs a positive interval, got %s", argv[i + 1]);
+            cmds = argv + i + 2;
+            ncmd = argc - i - 2;
+            if (ncmd == 1 && !strcmp(cmds[0], "NULL"))
+                ncmd = 0;
+            break;
         } else {
             gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post, "
-                        "force)",
+                        "force, every)",
                      argv[i]);
         }
     }
@@ -417,7 +433,18 @@ void cmd_run(struct gravel *g, int argc, char **argv)
                  (long long)(g->step + n));
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
-    run_steps(g, n, force, post);
+    if (!nevery) {
+        run_steps(g, n, force, post);
+        return;
+    }
+    bigint left = n;
+    for (int iter = 0; left > 0 || iter == 0; iter++) {
+        bigint chunk = left < nevery ? left : nevery;
+        run_steps(g, chunk, force, post);
+        left -= chunk;
+        if (ncmd && inp_run_commands(g, ncmd, cmds) == GR_QUIT)
+            return;
+    }
 }
 
 /* reset_timestep N */

@@ -5,17 +5,26 @@
  * (not the mass, as LAMMPS 2021 checked); `density` sets the mass from the
  * current radius, mass = 4/3 pi r^3 rho, or mass = rho for a point particle
  * (radius 0); `mass` sets the mass directly. Keywords apply in order.
- * Coordinates set in periodic dimensions are wrapped into the box. */
+ * Coordinates set in periodic dimensions are wrapped into the box.
+ *
+ * The random keywords draw LAMMPS's numbers (src/random.c), so `lmp` on one
+ * process picks the same atoms:
+ *   type/fraction T f seed  each selected atom's RanPark is reseeded from
+ *                           seed and its coordinates; it becomes type T when
+ *                           the first draw is <= f (about a fraction f);
+ *   type/ratio T f seed     exactly floor(f N) of the N selected atoms,
+ *   type/subset T n seed    exactly n of them: RanMars(seed) with LAMMPS's
+ *                           select_subset over the selected atoms in storage
+ *                           order. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_rng.h>
 
 #include "args.h"
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "random.h"
 #include "region.h"
 
 /* Parse a LAMMPS id range "*", "n", "n*", "*n", "m*n" into [lo, hi] within 1..max. */
@@ -72,18 +81,34 @@ static void select_atoms(struct gravel *g, const char *style, const char *id, ch
     }
 }
 
-/* A uniform [0,1) number for one atom that depends only on seed and tag. */
-static double atom_uniform(gsl_rng *rng, unsigned long seed, int64_t tag)
+/* type/ratio and type/subset: mark exactly nsubset of the selected atoms
+ * (LAMMPS Set::setrandom). flag and work are the caller's scratch arrays. */
+static long select_exact(struct gravel *g, char *sel, int newtype, int64_t nsubset, int seed,
+                         int *flag, int *work)
 {
-    uint64_t h = (uint64_t)seed * 0x9E3779B97F4A7C15ull ^ (uint64_t)tag * 0xC2B2AE3D27D4EB4Full;
-    h ^= h >> 31;
-    gsl_rng_set(rng, (unsigned long)(h & 0xffffffffu) ? (unsigned long)(h & 0xffffffffu) : 1);
-    return gsl_rng_uniform(rng);
+    struct atoms *a = &g->atoms;
+    struct rng_mars rm;
+    rng_mars_init(&rm, seed); /* seed + rank, rank 0 */
+    int count = 0;
+    for (int i = 0; i < a->n; i++)
+        count += sel[i] != 0;
+    rng_mars_select_subset(&rm, nsubset, count, flag, work);
+    long changed = 0;
+    int k = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!sel[i])
+            continue;
+        if (flag[k++]) {
+            a->type[i] = newtype;
+            changed++;
+        }
+    }
+    return changed;
 }
 
 /* Apply the keywords in order; with dry set, only validate them (so a bad
  * keyword late in the line changes nothing). */
-static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **rng, int dry)
+static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scratch, int dry)
 {
     struct atoms *a = &g->atoms;
     int n = dry ? 0 : a->n;
@@ -93,7 +118,8 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **
         int nv = 1;
         if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
             nv = 3;
-        else if (!strcmp(kw, "type/fraction"))
+        else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio") ||
+                 !strcmp(kw, "type/subset"))
             nv = 3;
         arg_need(g, argc, k, nv, kw);
         char **v = argv + k + 1;
@@ -102,19 +128,53 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, gsl_rng **
             for (int i = 0; i < n; i++)
                 if (sel[i])
                     a->type[i] = t, count++;
-        } else if (!strcmp(kw, "type/fraction")) {
+        } else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio")) {
             int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
             double f = arg_double(g, v[1], "fraction");
-            if (f < 0 || f > 1)
+            if (!(f >= 0 && f <= 1))
                 gr_error(g, "fraction must be between 0 and 1, got %s", v[1]);
             int seed = arg_int(g, v[2], "seed");
             if (seed <= 0)
                 gr_error(g, "seed must be a positive integer, got %s", v[2]);
-            if (!dry && !*rng && !(*rng = gsl_rng_alloc(gsl_rng_mt19937)))
-                gr_error(g, "out of memory creating a random number generator");
-            for (int i = 0; i < n; i++)
-                if (sel[i] && atom_uniform(*rng, (unsigned long)seed, a->tag[i]) < f)
-                    a->type[i] = t, count++;
+            if (kw[5] == 'r' && seed > 900000000)
+                gr_error(g, "seed must be at most 900000000 (Marsaglia generator), got %s",
+                         v[2]);
+            if (kw[5] == 'f') {
+                struct rng_park rp;
+                rng_park_init(&rp, 1);
+                for (int i = 0; i < n; i++) {
+                    if (!sel[i])
+                        continue;
+                    rng_park_reset_coord(&rp, seed, a->x + 3 * i);
+                    if (rng_park_uniform(&rp) > f)
+                        continue;
+                    a->type[i] = t;
+                    count++;
+                }
+            } else if (!dry) {
+                long eligible = 0;
+                for (int i = 0; i < n; i++)
+                    eligible += sel[i] != 0;
+                int64_t nsub = (int64_t)(f * (double)eligible);
+                count = select_exact(g, sel, t, nsub, seed, scratch, scratch + a->n);
+            }
+        } else if (!strcmp(kw, "type/subset")) {
+            int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
+            bigint nsub = arg_bigint(g, v[1], "subset size");
+            if (nsub < 0)
+                gr_error(g, "subset size must be >= 0, got %s", v[1]);
+            int seed = arg_int(g, v[2], "seed");
+            if (seed <= 0 || seed > 900000000)
+                gr_error(g, "seed must be between 1 and 900000000, got %s", v[2]);
+            if (!dry) {
+                long eligible = 0;
+                for (int i = 0; i < n; i++)
+                    eligible += sel[i] != 0;
+                if (nsub > eligible)
+                    gr_error(g, "type/subset %s exceeds the %ld selected atoms", v[1],
+                             eligible);
+                count = select_exact(g, sel, t, nsub, seed, scratch, scratch + a->n);
+            }
         } else if (!strcmp(kw, "mass")) {
             double m = arg_positive(g, v[0], "mass");
             for (int i = 0; i < n; i++)
@@ -197,13 +257,13 @@ void cmd_set(struct gravel *g, int argc, char **argv)
     if (argc < 4)
         gr_error(g, "expected: set style ID keyword value ...");
     char *sel = gr_calloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1), 1);
-    gsl_rng *rng = NULL;
+    int *scratch = gr_malloc(g, 2 * (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
     jmp_buf *outer = g->err.jmp, here;
     g->err.jmp = &here;
     if (setjmp(here)) {
         g->err.jmp = outer;
         free(sel);
-        gsl_rng_free(rng);
+        free(scratch);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
@@ -211,9 +271,9 @@ void cmd_set(struct gravel *g, int argc, char **argv)
     }
     select_atoms(g, argv[0], argv[1], sel);
     gr_print(g, "Setting atom values ...\n");
-    apply(g, argc, argv, sel, &rng, 1);
-    apply(g, argc, argv, sel, &rng, 0);
+    apply(g, argc, argv, sel, scratch, 1);
+    apply(g, argc, argv, sel, scratch, 0);
     g->err.jmp = outer;
     free(sel);
-    gsl_rng_free(rng);
+    free(scratch);
 }

@@ -541,12 +541,13 @@ static double kinetic_energy(struct gravel *g)
     return 0.5 * compute_mvv2e(g) * sum;
 }
 
-/* Boltzmann constant in the current units (LAMMPS' force->boltz). */
+/* Boltzmann constant in the current units: LAMMPS 2021's force->boltz
+ * (CODATA 2006), so temperatures print LAMMPS's digits. */
 static double boltzmann(const struct gravel *g)
 {
     switch (g->dom.units) {
-    case UNITS_SI: return 1.380649e-23;
-    case UNITS_CGS: return 1.380649e-16;
+    case UNITS_SI: return 1.3806504e-23;
+    case UNITS_CGS: return 1.3806504e-16;
     case UNITS_LJ: break;
     }
     return 1.0;

@@ -1,6 +1,8 @@
 /* variable.c - the variable store: styles index, loop, string, equal, format,
- * getenv; the `variable` and `next` semantics of LAMMPS; random streams for
- * random()/normal().
+ * getenv; the `variable` and `next` semantics of LAMMPS; the random stream of
+ * random()/normal(): as LAMMPS, one RanMars (src/random.c) shared by every
+ * formula, seeded by the seed of the first call; later seeds are checked but
+ * do not restart it (LAMMPS Variable::randomequal).
  *
  * Variables live in a small array (scripts define tens, not thousands), looked
  * up by name. Loop variables store only their range, so `loop 1000000000`
@@ -9,14 +11,13 @@
 #include "variable.h"
 
 #include <ctype.h>
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "error.h"
+#include "random.h"
 
 enum vstyle { V_INDEX, V_LOOP, V_STRING, V_EQUAL, V_FORMAT, V_GETENV };
 static const char *style_names[] = {"index", "loop", "string", "equal", "format", "getenv"};
@@ -31,18 +32,13 @@ struct var {
     int pad;                /* loop: zero-pad width, 0 = none */
 };
 
-struct rngslot {
-    long seed;
-    gsl_rng *r;
-};
-
 struct vars {
     int n, cap;
     struct var *v;
     char *ret;              /* var_retrieve's text */
     size_t retcap;
-    int nrng;
-    struct rngslot rng[64];
+    int mars_on;            /* the random()/normal() stream exists */
+    struct rng_mars mars;
 };
 
 struct vars *var_create(void)
@@ -68,8 +64,6 @@ void var_destroy(struct vars *vs)
         var_free_one(&vs->v[i]);
     free(vs->v);
     free(vs->ret);
-    for (int i = 0; i < vs->nrng; i++)
-        gsl_rng_free(vs->rng[i].r);
     free(vs);
 }
 
@@ -397,30 +391,25 @@ void var_print_all(struct gravel *g)
     }
 }
 
-static gsl_rng *rng_for(struct gravel *g, long seed)
+static struct rng_mars *stream(struct gravel *g, long seed)
 {
     struct vars *vs = g->vars;
-    for (int i = 0; i < vs->nrng; i++)
-        if (vs->rng[i].seed == seed)
-            return vs->rng[i].r;
-    if (vs->nrng == (int)(sizeof vs->rng / sizeof vs->rng[0]))
-        gr_error(g, "more than 64 different random seeds in expressions");
-    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!r)
-        gr_error(g, "out of memory");
-    gsl_rng_set(r, (unsigned long)seed);
-    vs->rng[vs->nrng].seed = seed;
-    vs->rng[vs->nrng].r = r;
-    vs->nrng++;
-    return r;
+    if (!vs->mars_on) {
+        if (seed < 1 || seed > 900000000)
+            gr_error(g, "random seed %ld: the first seed of random()/normal() must be "
+                        "between 1 and 900000000 (Marsaglia generator)", seed);
+        rng_mars_init(&vs->mars, (int)seed);
+        vs->mars_on = 1;
+    }
+    return &vs->mars;
 }
 
 double var_random_uniform(struct gravel *g, long seed)
 {
-    return gsl_rng_uniform(rng_for(g, seed));
+    return rng_mars_uniform(stream(g, seed));
 }
 
 double var_random_gaussian(struct gravel *g, long seed)
 {
-    return gsl_ran_gaussian(rng_for(g, seed), 1.0);
+    return rng_mars_gaussian(stream(g, seed));
 }

@@ -41,7 +41,7 @@ double expr_eval(struct gravel *g, const char *text);
  * $(expr:fmt). */
 int expr_format_ok(const char *fmt);
 
-/* Random numbers for random()/normal(): one GSL mt19937 stream per seed,
+/* Random numbers for random()/normal(): LAMMPS's one RanMars stream,
  * created on first use with that seed and continued on later calls, so a
  * script gives the same sequence every time. seed must be > 0. */
 double var_random_uniform(struct gravel *g, long seed);

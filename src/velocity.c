@@ -5,28 +5,28 @@
  * [-0.5, 0.5) (dist uniform, default) or standard normal (dist gaussian);
  * then, as LAMMPS, zero the total momentum (mom yes, default) and the angular
  * momentum (rot yes; default no), and rescale to temperature T in LAMMPS'
- * sense: T = sum m v^2 / (dof kB) with dof = 3 N - 3 over the group.
- * Random numbers come from GSL's mt19937:
- *   loop geom (gravel's default): each atom's generator is seeded from the
- *     seed and its coordinates, so an atom gets the same velocity whatever
- *     its index, tag or the number of other atoms (before momentum removal
- *     and scaling);
- *   loop all: one stream drawn in tag order over all atoms (independent of
- *     storage order; LAMMPS' default);
- *   loop local: one stream in storage order.
+ * sense (compute temp): T = sum m v^2 / (dof kB) with dof = 3 N - 3 over the
+ * group. The random numbers are LAMMPS's, bit for bit (src/random.c,
+ * RanPark), so the velocities are those `lmp` gives on one process:
+ *   loop all (default): one stream seeded with seed, three draws for every
+ *     atom ID 1..N in ID order, kept for atoms in the group (IDs must be
+ *     consecutive, as LAMMPS requires);
+ *   loop local: one stream seeded with seed (+ the rank, 0), 100 warm-up
+ *     draws, three draws per group atom in storage order;
+ *   loop geom: per group atom, the stream is reseeded from seed and the
+ *     atom's coordinates (RanPark::reset), so an atom's velocity (before
+ *     momentum removal and scaling) depends only on where it is.
  * set/ramp values are in lattice units (multiplied by the lattice spacing)
  * unless `units box`, LAMMPS' default. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_randist.h>
-#include <gsl/gsl_rng.h>
-
 #include "args.h"
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "random.h"
 
 enum vloop { LOOP_ALL, LOOP_LOCAL, LOOP_GEOM };
 
@@ -35,24 +35,35 @@ struct vopts {
     enum vloop loop;
 };
 
-/* Boltzmann constant in the unit system (LAMMPS force->boltz). */
+/* Boltzmann constant in the unit system: LAMMPS's force->boltz values
+ * (CODATA 2006, as LAMMPS 2021 update.cpp), not the exact SI 2019 value, so
+ * that `velocity create` scales to LAMMPS's velocities. */
 static double boltz(const struct gravel *g)
 {
     switch (g->dom.units) {
-    case UNITS_SI: return 1.380649e-23;
-    case UNITS_CGS: return 1.380649e-16;
+    case UNITS_SI: return 1.3806504e-23;
+    case UNITS_CGS: return 1.3806504e-16;
     default: return 1.0;
     }
 }
 
-/* Temperature of a group as LAMMPS compute temp: dof = 3N - 3. Returns -1
- * when dof <= 0. */
+/* Temperature of a group as LAMMPS compute temp: sum of m v.v in storage
+ * order, times mvv2e / (dof kB) with dof = 3N - 3 (LAMMPS's operation order,
+ * so a rescale to T gives its factor to the bit). Returns -1 when dof <= 0. */
 static double group_temp(const struct gravel *g, int ig)
 {
     double dof = 3.0 * (double)group_count(g, ig) - 3.0;
     if (dof <= 0)
         return -1;
-    return 2.0 * group_ke(g, ig) / (dof * boltz(g));
+    const struct atoms *a = &g->atoms;
+    unsigned bit = group_bit(ig);
+    double t = 0;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & bit) {
+            const double *v = a->v + 3 * i;
+            t += (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * a->rmass[i];
+        }
+    return t * (1.0 / (dof * boltz(g)));
 }
 
 static void zero_momentum(struct gravel *g, int ig)
@@ -91,41 +102,25 @@ static void zero_rotation(struct gravel *g, int ig)
     }
 }
 
-static void draw3(gsl_rng *rng, int gaussian, double r[3])
+static void draw3(struct rng_park *rng, int gaussian, double r[3])
 {
     for (int d = 0; d < 3; d++)
-        r[d] = gaussian ? gsl_ran_gaussian(rng, 1.0) : gsl_rng_uniform(rng) - 0.5;
+        r[d] = gaussian ? rng_park_gaussian(rng) : rng_park_uniform(rng) - 0.5;
 }
 
-/* 32-bit seed from the user seed and an atom's coordinates (loop geom). */
-static unsigned long geom_seed(int seed, const double x[3])
+static void assign(struct atoms *a, int i, const double r[3])
 {
-    uint64_t h = 0x9E3779B97F4A7C15ull ^ (uint64_t)(unsigned)seed;
-    for (int d = 0; d < 3; d++) {
-        uint64_t b;
-        double v = x[d] == 0 ? 0.0 : x[d]; /* -0 and +0 alike */
-        memcpy(&b, &v, sizeof b);
-        h ^= b + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-        h ^= h >> 33;
-        h *= 0xff51afd7ed558ccdull;
-        h ^= h >> 33;
-    }
-    unsigned long s = (unsigned long)(h & 0xffffffffu);
-    return s ? s : 1;
-}
-
-static int by_tag(const void *p, const void *q, void *atoms)
-{
-    const int64_t *tag = ((const struct atoms *)atoms)->tag;
-    int64_t a = tag[*(const int *)p], b = tag[*(const int *)q];
-    return (a > b) - (a < b);
+    double f = 1.0 / sqrt(a->rmass[i]);
+    for (int d = 0; d < 3; d++)
+        a->v[3 * i + d] = r[d] * f;
 }
 
 struct create_res {
-    gsl_rng *rng;
-    int *order;
+    int *map;
     double *vsave;
 };
+
+#define VELOCITY_WARMUP 100 /* LAMMPS velocity.cpp WARMUP, loop local */
 
 static void do_create(struct gravel *g, int ig, double t_want, int seed,
                       const struct vopts *o, struct create_res *res)
@@ -139,39 +134,55 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
         if ((a->mask[i] & bit) && !(a->rmass[i] > 0))
             gr_error(g, "atom %lld has mass %g: velocity create needs positive masses",
                      (long long)a->tag[i], a->rmass[i]);
-    res->rng = gsl_rng_alloc(gsl_rng_mt19937);
-    if (!res->rng)
-        gr_error(g, "out of memory creating a random number generator");
     if (o->sum) {
         res->vsave = gr_malloc(g, (size_t)a->n * 3 * sizeof(double));
         memcpy(res->vsave, a->v, (size_t)a->n * 3 * sizeof(double));
     }
+    struct rng_park rng;
+    double r[3];
     if (o->loop == LOOP_GEOM) {
+        rng_park_init(&rng, 1);
         for (int i = 0; i < a->n; i++) {
             if (!(a->mask[i] & bit))
                 continue;
-            double r[3];
-            gsl_rng_set(res->rng, geom_seed(seed, a->x + 3 * i));
-            draw3(res->rng, o->gaussian, r);
-            for (int d = 0; d < 3; d++)
-                a->v[3 * i + d] = r[d] / sqrt(a->rmass[i]);
+            rng_park_reset_coord(&rng, seed, a->x + 3 * i);
+            draw3(&rng, o->gaussian, r);
+            assign(a, i, r);
         }
-    } else {
-        gsl_rng_set(res->rng, (unsigned long)seed);
-        res->order = gr_malloc(g, (size_t)(a->n ? a->n : 1) * sizeof(int));
-        for (int i = 0; i < a->n; i++)
-            res->order[i] = i;
-        if (o->loop == LOOP_ALL) {
-            qsort_r(res->order, (size_t)a->n, sizeof(int), by_tag, a);
-        }
-        for (int k = 0; k < a->n; k++) {
-            int i = res->order[k];
-            double r[3];
-            draw3(res->rng, o->gaussian, r); /* drawn for every atom: group-independent */
+    } else if (o->loop == LOOP_LOCAL) {
+        rng_park_init(&rng, seed);
+        for (int k = 0; k < VELOCITY_WARMUP; k++)
+            rng_park_uniform(&rng);
+        for (int i = 0; i < a->n; i++) {
             if (!(a->mask[i] & bit))
                 continue;
-            for (int d = 0; d < 3; d++)
-                a->v[3 * i + d] = r[d] / sqrt(a->rmass[i]);
+            draw3(&rng, o->gaussian, r);
+            assign(a, i, r);
+        }
+    } else {
+        /* IDs 1..N: draws for every ID, assigned to the group's atoms */
+        bigint n = a->n;
+        int consecutive = n > 0;
+        for (int i = 0; i < a->n && consecutive; i++)
+            consecutive = a->tag[i] >= 1 && a->tag[i] <= n;
+        if (consecutive) {
+            res->map = gr_malloc(g, (size_t)(n + 1) * sizeof(int));
+            for (bigint t = 0; t <= n; t++)
+                res->map[t] = -1;
+            for (int i = 0; i < a->n && consecutive; i++) {
+                consecutive = res->map[a->tag[i]] < 0;
+                res->map[a->tag[i]] = i;
+            }
+        }
+        if (!consecutive)
+            gr_error(g, "loop all needs atom IDs 1..N without gaps (as LAMMPS); "
+                        "use loop geom or loop local");
+        rng_park_init(&rng, seed);
+        for (bigint t = 1; t <= n; t++) {
+            draw3(&rng, o->gaussian, r);
+            int i = res->map[t];
+            if (a->mask[i] & bit)
+                assign(a, i, r);
         }
     }
     if (o->mom)
@@ -198,7 +209,7 @@ static void parse_opts(struct gravel *g, int argc, char **argv, int start, struc
     o->mom = 1;
     o->rot = 0;
     o->lattice_units = 1;
-    o->loop = LOOP_GEOM;
+    o->loop = LOOP_ALL; /* LAMMPS default */
     for (int i = start; i < argc; i++) {
         const char *kw = argv[i];
         arg_need(g, argc, i, 1, kw);
@@ -252,13 +263,12 @@ void cmd_velocity(struct gravel *g, int argc, char **argv)
         if (seed <= 0)
             gr_error(g, "seed must be a positive integer, got %s", argv[3]);
         parse_opts(g, argc, argv, 4, &o);
-        struct create_res res = {NULL, NULL, NULL};
+        struct create_res res = {NULL, NULL};
         jmp_buf *outer = g->err.jmp, here;
         g->err.jmp = &here;
         if (setjmp(here)) {
             g->err.jmp = outer;
-            gsl_rng_free(res.rng);
-            free(res.order);
+            free(res.map);
             free(res.vsave);
             if (outer)
                 longjmp(*outer, 1);
@@ -267,8 +277,7 @@ void cmd_velocity(struct gravel *g, int argc, char **argv)
         }
         do_create(g, ig, t, seed, &o, &res);
         g->err.jmp = outer;
-        gsl_rng_free(res.rng);
-        free(res.order);
+        free(res.map);
         free(res.vsave);
     } else if (!strcmp(style, "set")) {
         arg_need(g, argc, 1, 3, "set");

@@ -14,8 +14,10 @@
  *   d_e [kc K]        effect diameter of the I-J pair (centre distance at which
  *                     the effect surfaces touch); for I = J the type's own d_e
  *   ratio R [kc K]    effect diameter = R x body diameter, R >= 1
- * Unset I != J pairs mix from I I and J J: each side keeps its own type's
- * effect radius (d_e/2 or R r), kc = sqrt(kc_I kc_J). The kc keyword
+ * Type ranges follow LAMMPS (pair_coeff * 2 sets 1-1 1-2 2-2, each with its
+ * mirror). Unset I != J pairs mix from I I and J J: each side keeps its own type's
+ * effect radius (d_e/2 or R r), kc = sqrt(kc_I kc_J) (pair_modify mix
+ * geometric, the default) or (kc_I + kc_J)/2 (mix arithmetic). The kc keyword
  * overrides the pair_style stiffness for that pair.
  *
  * With fix drag active, run setup logs the Stokes number (000 eq. 6.4) and
@@ -114,7 +116,7 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     }
     struct coh *c = tables(g, p);
     for (int I = ilo; I <= ihi; I++)
-        for (int J = jlo; J <= jhi; J++) {
+        for (int J = jlo > I ? jlo : I; J <= jhi; J++) { /* LAMMPS: J >= I */
             for (int s = 0; s < 2; s++) { /* the pair and its mirror J I */
                 size_t k = s ? (size_t)(J - 1) * c->nt + (I - 1) : (size_t)(I - 1) * c->nt + (J - 1);
                 c->a[k] = a;
@@ -156,7 +158,8 @@ static void init(struct gravel *g, struct pair *p)
             size_t ii = (size_t)(I - 1) * nt + (I - 1), jj = (size_t)(J - 1) * nt + (J - 1);
             c->a[k] = c->a[ii];
             c->b[k] = c->b[ii];
-            c->kc[k] = sqrt(c->kc[ii] * c->kc[jj]);
+            c->kc[k] = p->mix_arithmetic ? 0.5 * (c->kc[ii] + c->kc[jj])
+                                         : sqrt(c->kc[ii] * c->kc[jj]);
             c->set[k] = 2;
         }
     pair_cohesion_overlap_check(g, p);

@@ -10,7 +10,9 @@
  * parameter block is the terms' own packed blocks one after another.
  *
  * `pair_coeff I J STYLE args` routes to term STYLE (its own coefficient
- * syntax; styles without per-type coefficients take `pair_coeff * * STYLE`).
+ * syntax, LAMMPS type ranges). A term without per-type coefficients applies
+ * to every type pair, so at run each pair I <= J must have been named for
+ * it (in one `pair_coeff * * STYLE` or several partial ones).
  * Every term needs its pair_coeff before `run`. */
 #include <math.h>
 #include <stdio.h>
@@ -114,10 +116,18 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
         if (argc > 1)
             gr_error(g, "sub-style %s takes no coefficients after its name, got '%.64s'",
                      t->style->name, argv[1]);
+        /* the term applies to every type pair (the fused loop has no
+         * per-pair switch): record which pairs were named, check at run */
         int nt = g->atoms.ntypes;
-        if (ilo != 1 || jlo != 1 || ihi != nt || jhi != nt)
-            gr_error(g, "sub-style %s requires pair_coeff * * %s (all type pairs share its "
-                        "pair_style coefficients)", t->style->name, t->style->name);
+        if (!t->setflag || t->setflag_nt != nt) {
+            free(t->setflag);
+            t->setflag = gr_calloc(g, (size_t)nt * nt, 1);
+            t->setflag_nt = nt;
+        }
+        for (int i = ilo; i <= ihi; i++)
+            for (int j = jlo > i ? jlo : i; j <= jhi; j++)
+                t->setflag[(size_t)(i - 1) * nt + (j - 1)] =
+                    t->setflag[(size_t)(j - 1) * nt + (i - 1)] = 1;
     }
     t->coeff_set = 1;
     p->coeff_set = 1;
@@ -134,6 +144,16 @@ static void init(struct gravel *g, struct pair *p)
         if (!t->coeff_set)
             gr_error(g, "pair_coeff is missing for hybrid/overlay sub-style %s (e.g. "
                         "pair_coeff * * %s ...)", t->style->name, t->style->name);
+        if (!t->style->coeff && t->setflag) {
+            int nt = t->setflag_nt;
+            for (int i = 1; i <= nt; i++)
+                for (int j = i; j <= nt; j++)
+                    if (!t->setflag[(size_t)(i - 1) * nt + (j - 1)])
+                        gr_error(g, "hybrid/overlay: no pair_coeff %d %d %s; gravel applies "
+                                    "each overlaid sub-style to every type pair, so every "
+                                    "pair needs it (e.g. pair_coeff * * %s)",
+                                 i, j, t->style->name, t->style->name);
+        }
         if (t->style->init)
             t->style->init(g, t);
     }

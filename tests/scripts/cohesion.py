@@ -453,8 +453,8 @@ def error_checks():
          "pair_coeff * * gran/hooke",
          r"ERROR: pair_coeff: 'gran/hooke' is not a sub-style.*\(in.test:8\)"),
         ("pair_style hybrid/overlay linear/restitution 1e5 0.8 0.1 cohesion 100\n"
-         "pair_coeff 1 1 linear/restitution",
-         r"ERROR: pair_coeff: sub-style linear/restitution requires pair_coeff \* \*.*\(in.test:8\)"),
+         "pair_coeff 1 1 linear/restitution\npair_coeff * * cohesion 0.15\nrun 1",
+         r"ERROR: run: hybrid/overlay: no pair_coeff 1 2 linear/restitution.*\(in.test:10\)"),
         ("pair_style hybrid/overlay linear/restitution 1e5 0.8 0.1 cohesion 100\n"
          "pair_coeff * * linear/restitution\nrun 1",
          r"ERROR: run: pair_coeff is missing for hybrid/overlay sub-style cohesion.*\(in.test:9\)"),

@@ -227,7 +227,7 @@ TEST(keyword_values)
     CHECK_NEAR(v, 0.32, 1e-15);
     g->dom.units = UNITS_SI;
     CHECK(thermo_keyword_value(g, "temp", &v));
-    CHECK_NEAR(v, 0.32 / 1.380649e-23, 1e-15 / 1.380649e-23);
+    CHECK_NEAR(v, 0.32 / 1.3806504e-23, 1e-15 / 1.3806504e-23); /* LAMMPS 2021 k_B */
     g->dom.units = UNITS_LJ;
     /* compute_modify thermo_temp extra/dof 0: dof = 9 */
     CHECK(test_script(g, "compute_modify thermo_temp dynamic/dof yes extra/dof 0\n") == GR_OK);
