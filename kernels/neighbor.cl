@@ -8,17 +8,45 @@
  * segment is then sorted by tag, so the resulting order depends only on the
  * positions and tags, never on thread timing. */
 
-/* flags[0] |= 1 if some atom moved more than sqrt(trigsq) since the last
- * build; flags[1] = lowest index with a non-finite position or velocity. */
-__kernel void nbr_check(const int n, __global const REAL *x, __global const REAL *v,
+/* Every step, after the drift: wrap periodic coordinates into [lo, hi)
+ * (image flags follow), so positions never depend on when the list was
+ * rebuilt; flags[0] |= 1 if some atom moved (minimum image) more than
+ * sqrt(trigsq) since the last build; flags[1] = lowest index with a
+ * non-finite position or velocity. */
+__kernel void nbr_check(const int n, __global REAL *x, __global const REAL *v,
                         __global const REAL *xhold, const REAL trigsq,
-                        __global int *flags)
+                        __global int *flags, __global int *image, const REAL lox,
+                        const REAL loy, const REAL loz, const REAL hix, const REAL hiy,
+                        const REAL hiz, const REAL Lx, const REAL Ly, const REAL Lz)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
-    const REAL3 xi = vload3(i, x);
-    const REAL3 d = xi - vload3(i, xhold);
+    REAL3 xi = vload3(i, x);
+#if defined(PERIODIC_X) || defined(PERIODIC_Y) || defined(PERIODIC_Z)
+    int3 im = vload3(i, image);
+    const int3 im0 = im;
+#ifdef PERIODIC_X
+    if (xi.x < lox) { xi.x += Lx; im.x--; }
+    if (xi.x >= hix) { xi.x = fmax(xi.x - Lx, lox); im.x++; }
+#endif
+#ifdef PERIODIC_Y
+    if (xi.y < loy) { xi.y += Ly; im.y--; }
+    if (xi.y >= hiy) { xi.y = fmax(xi.y - Ly, loy); im.y++; }
+#endif
+#ifdef PERIODIC_Z
+    if (xi.z < loz) { xi.z += Lz; im.z--; }
+    if (xi.z >= hiz) { xi.z = fmax(xi.z - Lz, loz); im.z++; }
+#endif
+    if (im.x != im0.x || im.y != im0.y || im.z != im0.z) {
+        vstore3(xi, i, x);
+        vstore3(im, i, image);
+    }
+#endif
+    REAL3 d = xi - vload3(i, xhold);
+    d.x = MINIMG_X(d.x, Lx);
+    d.y = MINIMG_Y(d.y, Ly);
+    d.z = MINIMG_Z(d.z, Lz);
     const REAL3 vi = vload3(i, v);
     const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
     if (rsq > trigsq)

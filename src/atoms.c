@@ -107,6 +107,7 @@ void atoms_free(struct atoms *a)
     free(a->radius);
     free(a->rmass);
     free(a->image);
+    free(a->order);
     free(a->type_mass);
     memset(a, 0, sizeof *a);
 }
@@ -117,4 +118,42 @@ int atoms_find_tag(const struct atoms *a, int64_t tag)
         if (a->tag[i] == tag)
             return i;
     return -1;
+}
+
+static int by_tag_of(const void *pa, const void *pb, void *ctx)
+{
+    const int64_t *tag = ctx;
+    int64_t ta = tag[*(const int *)pa], tb = tag[*(const int *)pb];
+    return (ta > tb) - (ta < tb);
+}
+
+const int *atoms_tag_order(struct gravel *g)
+{
+    struct atoms *a = &g->atoms;
+    if (a->n + 1 > a->order_cap) {
+        a->order = gr_realloc(g, a->order, ((size_t)a->n + 1) * sizeof(int));
+        a->order_cap = a->n + 1;
+    }
+    int n = a->n, *ord = a->order;
+    int64_t lo = INT64_MAX, hi = INT64_MIN;
+    for (int i = 0; i < n; i++) {
+        lo = a->tag[i] < lo ? a->tag[i] : lo;
+        hi = a->tag[i] > hi ? a->tag[i] : hi;
+    }
+    if (n > 0 && hi - lo < (int64_t)n) { /* dense tags: place directly if unique */
+        for (int i = 0; i < n; i++)
+            ord[i] = -1;
+        int unique = 1;
+        for (int i = 0; i < n && unique; i++) {
+            int *slot = &ord[a->tag[i] - lo];
+            unique = *slot < 0;
+            *slot = i;
+        }
+        if (unique)
+            return ord;
+    }
+    for (int i = 0; i < n; i++)
+        ord[i] = i;
+    qsort_r(ord, (size_t)n, sizeof *ord, by_tag_of, a->tag);
+    return ord;
 }

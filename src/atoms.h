@@ -19,6 +19,10 @@ void atoms_remove(struct gravel *g, int i);
 /* Set ntypes and size the per-type tables. */
 void atoms_set_ntypes(struct gravel *g, int ntypes);
 void atoms_free(struct atoms *a);
+/* Atom indices in ascending tag order (valid until the atoms change):
+ * host reductions (thermo, computes) sum in this order, so their results
+ * do not depend on the device's memory order (atom_modify sort). */
+const int *atoms_tag_order(struct gravel *g);
 /* Index of the atom with this tag, or -1 (linear scan; callers cache). */
 int atoms_find_tag(const struct atoms *a, int64_t tag);
 

@@ -69,6 +69,8 @@ struct atoms {
     int *image;             /* 3 per atom: periodic image counts */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
+    int *order;             /* scratch of atoms_tag_order() */
+    int order_cap;
 };
 
 /* ---- groups ---------------------------------------------------------------- */

@@ -364,6 +364,13 @@ int nbr_decide(struct gravel *g)
     eng_arg_mem(g, k, 3, b->xhold);
     eng_arg_real(g, k, 4, trig * trig);
     eng_arg_mem(g, k, 5, b->flags);
+    eng_arg_mem(g, k, 6, e->a.image);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, 7 + q, g->dom.lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, 10 + q, g->dom.hi[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, 13 + q, g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);

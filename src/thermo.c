@@ -15,6 +15,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "atoms.h"
 #include "args.h"
 #include "compute.h"
 #include "error.h"
@@ -533,8 +534,10 @@ static double kinetic_energy(struct gravel *g)
     const struct atoms *a = &g->atoms;
     if (temp_dof(g) <= 0)
         return 0.0;
+    const int *order = atoms_tag_order(g);
     double sum = 0.0;
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         const double *v = a->v + 3 * i;
         sum += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     }

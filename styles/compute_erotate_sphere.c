@@ -2,6 +2,7 @@
  * kinetic energy of finite-size spheres, sum of 1/2 I w^2 with the solid-sphere
  * inertia I = 2/5 m r^2 (x mvv2e), as LAMMPS' compute erotate/sphere. Global
  * scalar, extensive. */
+#include "atoms.h"
 #include "compute.h"
 #include "error.h"
 
@@ -19,8 +20,10 @@ static void erotate_create(struct gravel *g, struct compute *c, int argc, char *
 static double erotate_scalar(struct gravel *g, struct compute *c)
 {
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     double sum = 0.0;
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         const double *w = a->omega + 3 * i;

@@ -1,6 +1,7 @@
 /* compute_ke.c - `compute ID group ke`: translational kinetic energy of the
  * group, sum of 1/2 m v^2 (x mvv2e), as LAMMPS' compute ke. Global scalar,
  * extensive (thermo divides it by the atom count when norm is yes). */
+#include "atoms.h"
 #include "compute.h"
 #include "error.h"
 
@@ -17,8 +18,10 @@ static void ke_create(struct gravel *g, struct compute *c, int argc, char **argv
 static double ke_scalar(struct gravel *g, struct compute *c)
 {
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     double sum = 0.0;
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         const double *v = a->v + 3 * i;

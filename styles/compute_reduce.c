@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atoms.h"
 #include "compute.h"
 #include "error.h"
 
@@ -133,7 +134,9 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
     }
     double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
     bigint count = 0;
-    for (int i = 0; i < a->n; i++) {
+    const int *order = atoms_tag_order(g);
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         double v = scale * src[(size_t)stride * i + comp];

@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""determinism.py - the contact pipeline's order independence (issue 9).
+
+A settling bed (1800 bidisperse spheres, Hookean contacts with shear history,
+a frictional floor wall, gravity, rotation) runs 3000 steps in several ways
+that change the memory order of the atoms, the work split and the rebuild
+schedule. Each particle's force and torque are summed in partner-tag order,
+so the final per-atom state (positions, velocities, forces, angular
+velocities; dumped with 17 digits, sorted by id) and the thermo table must be
+bit-identical in every variant:
+  - the same run twice;
+  - atom_modify sort 0 (never re-sorted) and sort 137 (every 137 steps);
+  - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
+  - neigh_modify check no (a rebuild every step: other neighbor sets).
+Then momentum conservation of the pair forces: a periodic dense packing
+(1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
+sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
+One PASS/FAIL line per check.
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+GRAVEL = os.path.join(ROOT, "bin", "gravel")
+
+BED = """units lj
+atom_style sphere
+boundary p p fm
+region box block 0 12 0 12 0 40 units box
+create_box 2 box
+region top block INF INF INF INF 2 30 units box
+create_atoms 1 random 1500 4242 top overlap 1.0
+create_atoms 2 random 300 4343 top overlap 1.0
+set type 1 diameter 1.0 density 1.0
+set type 2 diameter 0.7 density 2.0
+velocity all create 2.0 8811 loop geom
+pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+fix floor all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0 NULL
+fix g all gravity 1.0 vector 0 0 -1
+fix move all nve/sphere
+{extra}
+neighbor 0.2 bin
+timestep 0.0001
+compute r all erotate/sphere
+thermo_style custom step ke c_r
+thermo_modify format float %.17g
+thermo 500
+dump d all custom 3000 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz
+dump_modify d sort id format float %.17g
+run 3000
+"""
+
+PACK = """units lj
+atom_style sphere
+boundary p p p
+lattice sc 1.0
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 box
+set group all diameter 1.0 density 1.9098593
+velocity all create 1.0 4928459 loop geom
+pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+neighbor 0.1 bin
+fix 1 all nve/sphere
+timestep 0.0001
+dump d all custom 50 out.dump id fx fy fz
+dump_modify d sort id format float %.17g
+run 50
+"""
+
+
+def run(deck, env_extra=None):
+    """Run a deck in a fresh directory; return (thermo rows, dump text)."""
+    env = dict(os.environ)
+    env.update(env_extra or {})
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "in.deck"), "w") as f:
+            f.write(deck)
+        p = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none"], cwd=d, env=env,
+                           capture_output=True, text=True, timeout=600)
+        if p.returncode != 0:
+            return None, p.stdout + p.stderr
+        rows, inside = [], False
+        for line in p.stdout.splitlines():
+            if line.split()[:1] == ["Step"]:
+                inside = True
+                continue
+            if inside:
+                if line.startswith("Loop time"):
+                    break
+                rows.append(line.strip())
+        with open(os.path.join(d, "out.dump")) as f:
+            return rows, f.read()
+
+
+def check(name, ok, detail=""):
+    print(("PASS " if ok else "FAIL ") + name + ("" if ok else " (" + detail + ")"))
+    return ok
+
+
+def first_difference(a, b):
+    for k, (x, y) in enumerate(zip(a.splitlines(), b.splitlines())):
+        if x != y:
+            return "line %d: %s | %s" % (k + 1, x[:80], y[:80])
+    return "lengths differ"
+
+
+def main():
+    ref_rows, ref_dump = run(BED.format(extra=""))
+    if ref_rows is None:
+        check("determinism_reference_run", False, ref_dump[-400:])
+        return 1
+    variants = [
+        ("same_run_twice", "", None),
+        ("atom_modify_sort_0", "atom_modify sort 0 0", None),
+        ("atom_modify_sort_137", "atom_modify sort 137 0", None),
+        ("workgroup_1", "", {"GRAVEL_WORKGROUP": "1"}),
+        ("workgroup_32", "", {"GRAVEL_WORKGROUP": "32"}),
+        ("rebuild_every_step", "neigh_modify every 1 delay 0 check no", None),
+    ]
+    bad = 0
+    for name, extra, env in variants:
+        rows, dump = run(BED.format(extra=extra), env)
+        if rows is None:
+            bad += not check("determinism_" + name, False, dump[-400:])
+            continue
+        ok = dump == ref_dump
+        bad += not check("determinism_" + name + "_dump", ok,
+                         "" if ok else first_difference(ref_dump, dump))
+        bad += not check("determinism_" + name + "_thermo", rows == ref_rows,
+                         "%s vs %s" % (rows[-1:], ref_rows[-1:]))
+    rows, dump = run(PACK)
+    if rows is None:
+        bad += not check("pair_forces_sum_to_zero", False, dump[-400:])
+    else:
+        lines = dump.splitlines()
+        at = max(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+        f = [[float(v) for v in l.split()[1:4]] for l in lines[at + 1:]]
+        total = [math.fsum(r[d] for r in f) for d in range(3)]
+        scale = math.fsum(abs(r[d]) for r in f for d in range(3))
+        ok = len(f) == 1000 and scale > 0 and max(abs(t) for t in total) <= 1e-13 * scale
+        bad += not check("pair_forces_sum_to_zero", ok,
+                         "sum f = %s, sum |f| = %g, %d atoms" % (total, scale, len(f)))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
