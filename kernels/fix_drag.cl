@@ -15,7 +15,8 @@ static inline REAL3 drag_flow(const REAL3 x, const int flow, const REAL p0, cons
         return (REAL3)(p0, p1, p2);
     const REAL sh = (REAL)M_PI_2 / p1;
     const REAL X = p1 * (x.x + sh), Y = p1 * (x.y + sh), Z = p1 * (x.z + sh);
-    const REAL sx = sin(X), cx = cos(X), sy = sin(Y), cy = cos(Y), sz = sin(Z), cz = cos(Z);
+    REAL cx, cy, cz;
+    const REAL sx = sincos(X, &cx), sy = sincos(Y, &cy), sz = sincos(Z, &cz);
     return (REAL3)(p0 * cx * sy * sz, p0 * sx * cy * sz, (REAL)-2 * p0 * sx * sy * cz);
 }
 
@@ -36,7 +37,10 @@ __kernel void drag_explicit(const int n, const uint groupbit, __global const uin
 
 /* Effective drag for one half kick of length h (implicit or exact update):
  * F = f - (replace ? D_old : 0) are the other forces, v' the velocity after
- * the kick, D = m (v' - v)/h - F; f = F + D and D is stored. */
+ * the kick, D = m (v' - v)/h - F; f = F + D and D is stored. dstore per atom:
+ * D (3 REAL) then u_f(x) (3): the post_force call (replace 0) evaluates the
+ * flow and keeps it, the end_of_step call of the same step (replace 1, same
+ * position: only velocities change in between) reuses it. */
 __kernel void drag_implicit(const int n, const uint groupbit, __global const uint *mask,
                             __global const REAL *x, __global const REAL *v, __global REAL *f,
                             __global const REAL *radius, __global const REAL *rmass,
@@ -49,11 +53,17 @@ __kernel void drag_implicit(const int n, const uint groupbit, __global const uin
         return;
     const REAL m = rmass[i];
     const REAL tau = m / ((REAL)6 * (REAL)M_PI * mu * radius[i]);
-    const REAL3 uf = drag_flow(vload3(i, x), flow, p0, p1, p2);
+    REAL3 uf;
+    if (replace) {
+        uf = vload3(2 * i + 1, dstore);
+    } else {
+        uf = drag_flow(vload3(i, x), flow, p0, p1, p2);
+        vstore3(uf, 2 * i + 1, dstore);
+    }
     const REAL3 vi = vload3(i, v);
     REAL3 F = vload3(i, f);
     if (replace)
-        F -= vload3(i, dstore);
+        F -= vload3(2 * i, dstore);
     const REAL3 target = uf + (tau / m) * F;   /* steady state under fixed F */
     REAL3 dv;
     if (exact)
@@ -61,7 +71,7 @@ __kernel void drag_implicit(const int n, const uint groupbit, __global const uin
     else
         dv = (target - vi) * (h / (tau + h));
     const REAL3 D = (m / h) * dv - F;
-    vstore3(D, i, dstore);
+    vstore3(D, 2 * i, dstore);
     vstore3(F + D, i, f);
 }
 

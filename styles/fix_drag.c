@@ -113,7 +113,7 @@ static void init(struct gravel *g, struct fix *f)
         f->peratom_bytes = 6 * g->eng->rsz;     /* D and the opening kick's dv */
     } else {
         d->kimp = eng_kernel(g, "drag_implicit");
-        f->peratom_bytes = 3 * g->eng->rsz;
+        f->peratom_bytes = 6 * g->eng->rsz;     /* D and the flow at the atom */
     }
     int self = -1;
     for (int i = 0; i < g->styles.nfix; i++) {

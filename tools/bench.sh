@@ -1,74 +1,95 @@
 #!/bin/sh
-# bench.sh - `make bench`: the LAMMPS chute benchmark (inputs/bench/chute.in,
-# 32000 spheres) in gravel and, when `lmp` is installed, the same deck file in
-# LAMMPS on 1 and 2 MPI processes. Runs alternate (gravel, lmp -np 1,
-# lmp -np 2) REPEATS times so machine noise hits all alike; prints the median
-# particle-steps/s (atoms x steps / loop time, from each "Loop time" line)
-# and the ratios gravel / LAMMPS.
-#   BENCH_STEPS (default 1000)  steps per run
-#   BENCH_REPEATS (default 3)
-#   GRAVEL_FLAGS                extra gravel options (e.g. "-precision single")
+# bench.sh - `make bench`: the three benchmark decks of inputs/bench/ (the
+# LAMMPS chute, a dense packing, a dilute gas) in gravel, double and single
+# precision, and, when `lmp` is installed, the same deck files in LAMMPS on 1
+# and 2 MPI processes; then the source document's agglomeration case
+# (cohesion + drag, N = 10^4) in gravel. Within one repeat the runs of a deck
+# alternate (gravel double, gravel single, LAMMPS-1, LAMMPS-2) so machine
+# noise hits all alike; the table gives medians of particle-steps/s (atoms x
+# steps / loop time, from each "Loop time" line) and the ratios to LAMMPS-2.
+#   BENCH_REPEATS (default 3)   repeats per deck
+#   BENCH_SCALE (default 1)     multiplies every deck's step count
+#   BENCH_DECKS                 subset, e.g. "chute dense" (default all + agglo)
+#   GRAVEL_FLAGS                extra gravel options (e.g. "-device gpu")
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
-steps=${BENCH_STEPS:-1000}
 repeats=${BENCH_REPEATS:-3}
+scale=${BENCH_SCALE:-1}
+decks=${BENCH_DECKS:-"chute dense dilute agglo"}
 data="$root/../shared/peers/chute/data.chute"
 [ -f "$data" ] || data=/work/shared/peers/chute/data.chute
-if [ ! -f "$data" ]; then
-    echo "bench: data.chute not found (expected ../shared/peers/chute/data.chute)" >&2
-    exit 1
-fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-ln -s "$data" "$tmp/data.chute"
-deck="$root/inputs/bench/chute.in"
+[ -f "$data" ] && ln -s "$data" "$tmp/data.chute"
 
 # rate LOGFILE -> particle-steps/s from "Loop time of T on P procs for N steps with M atoms"
 rate() {
-    awk '/^Loop time of/ { t = $4; n = $9; m = $12 } END { if (t > 0) printf "%.0f\n", m * n / t }' "$1"
+    awk '/^Loop time of/ { t = $4; n = $9; m = $12 } END { if (t > 0) printf "%.0f\n", m * n / t; else print 0 }' "$1"
 }
 median() {
     sort -n | awk '{ v[NR] = $1 } END { if (NR == 0) print 0; else if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
+mps() { awk -v r="$1" 'BEGIN { printf "%8.2f", r / 1e6 }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%6.2f", a / b; else printf "%6s", "-" }'; }
 
 have_lmp=0
 command -v lmp >/dev/null 2>&1 && have_lmp=1
 have_mpi=0
 command -v mpirun >/dev/null 2>&1 && have_mpi=1
 
-echo "chute benchmark: 32000 atoms, $steps steps, $repeats repeats (alternating)"
-: > "$tmp/g.rates"; : > "$tmp/l1.rates"; : > "$tmp/l2.rates"
-i=1
-while [ "$i" -le "$repeats" ]; do
-    (cd "$tmp" && "$root/bin/gravel" $GRAVEL_FLAGS -in "$deck" -var nsteps "$steps" -log none > g.out 2>&1) \
-        || { echo "bench: gravel failed:"; tail -20 "$tmp/g.out"; exit 1; }
-    r=$(rate "$tmp/g.out"); echo "$r" >> "$tmp/g.rates"
-    line="  run $i: gravel $r"
-    if [ $have_lmp = 1 ]; then
-        (cd "$tmp" && lmp -in "$deck" -var nsteps "$steps" -log none > l1.out 2>&1)
-        r=$(rate "$tmp/l1.out"); echo "$r" >> "$tmp/l1.rates"
-        line="$line, LAMMPS np1 $r"
-        if [ $have_mpi = 1 ]; then
-            (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in "$deck" \
-                -var nsteps "$steps" -log none > l2.out 2>&1)
-            r=$(rate "$tmp/l2.out"); echo "$r" >> "$tmp/l2.rates"
-            line="$line, LAMMPS np2 $r"
+# deck settings: file, steps, extra -var options
+deck_file() {
+    case $1 in
+        agglo) echo "$root/inputs/published/agglomeration/agglomeration.in" ;;
+        *) echo "$root/inputs/bench/$1.in" ;;
+    esac
+}
+deck_vars() {
+    case $1 in
+        chute) echo "-var nsteps $((2000 * scale))" ;;
+        dense) echo "-var nsteps $((1000 * scale))" ;;
+        dilute) echo "-var nsteps $((2000 * scale))" ;;
+        # 2000 steps of 0.000449 s; thermo (and the agglomerate statistics) twice
+        agglo) echo "-var Sy 1.0 -var St 1.0 -var N 10000 -var nout 2 -var tend $(awk -v s="$scale" 'BEGIN { print 2000 * s * 0.000449 }') -var logfile none" ;;
+    esac
+}
+
+printf "benchmark decks (inputs/bench/), %s repeats, alternating; million particle-steps/s (median)\n" "$repeats"
+printf "%-8s %9s %9s %9s %9s %8s %8s\n" deck "g-double" "g-single" LAMMPS-1 LAMMPS-2 "d/L2" "s/L2"
+for deck in $decks; do
+    file=$(deck_file "$deck")
+    vars=$(deck_vars "$deck")
+    if [ "$deck" = chute ] && [ ! -f "$data" ]; then
+        echo "chute: data.chute not found (../shared/peers/chute/data.chute): skipped"
+        continue
+    fi
+    : > "$tmp/gd"; : > "$tmp/gs"; : > "$tmp/l1"; : > "$tmp/l2"
+    i=1
+    while [ "$i" -le "$repeats" ]; do
+        for prec in double single; do
+            (cd "$tmp" && "$root/bin/gravel" $GRAVEL_FLAGS -precision $prec -in "$file" $vars \
+                -log none > g.out 2>&1) || { echo "bench: gravel failed on $deck:"; tail -20 "$tmp/g.out"; exit 1; }
+            rate "$tmp/g.out" >> "$tmp/g$(echo $prec | cut -c1)"
+        done
+        if [ $have_lmp = 1 ] && [ "$deck" != agglo ]; then
+            (cd "$tmp" && lmp -in "$file" $vars -log none > l.out 2>&1)
+            rate "$tmp/l.out" >> "$tmp/l1"
+            if [ $have_mpi = 1 ]; then
+                (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in "$file" \
+                    $vars -log none > l.out 2>&1)
+                rate "$tmp/l.out" >> "$tmp/l2"
+            fi
         fi
-    fi
-    echo "$line particle-steps/s"
-    i=$((i + 1))
+        i=$((i + 1))
+    done
+    gd=$(median < "$tmp/gd"); gs=$(median < "$tmp/gs")
+    l1=$(median < "$tmp/l1"); l2=$(median < "$tmp/l2")
+    printf "%-8s %9s %9s %9s %9s %8s %8s\n" "$deck" "$(mps "$gd")" "$(mps "$gs")" \
+        "$(mps "$l1")" "$(mps "$l2")" "$(ratio "$gd" "$l2")" "$(ratio "$gs" "$l2")"
+    eval "rate_$deck=$gd"
 done
-g=$(median < "$tmp/g.rates")
-printf "gravel          %8.2f M particle-steps/s (median)\n" "$(echo "$g" | awk '{ print $1 / 1e6 }')"
-if [ $have_lmp = 1 ]; then
-    l1=$(median < "$tmp/l1.rates")
-    printf "LAMMPS 1 proc   %8.2f M particle-steps/s   gravel/LAMMPS-1 = %.2f\n" \
-        "$(echo "$l1" | awk '{ print $1 / 1e6 }')" "$(echo "$g $l1" | awk '{ print ($2 > 0) ? $1 / $2 : 0 }')"
-    if [ $have_mpi = 1 ]; then
-        l2=$(median < "$tmp/l2.rates")
-        printf "LAMMPS 2 procs  %8.2f M particle-steps/s   gravel/LAMMPS-2 = %.2f\n" \
-            "$(echo "$l2" | awk '{ print $1 / 1e6 }')" "$(echo "$g $l2" | awk '{ print ($2 > 0) ? $1 / $2 : 0 }')"
-    fi
-else
-    echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
+if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
+    printf "agglomeration (N = 10^4, double) / dilute gas (double) = %s (goal >= 0.5)\n" \
+        "$(ratio "$rate_agglo" "$rate_dilute")"
 fi
+[ $have_lmp = 1 ] || echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
