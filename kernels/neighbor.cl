@@ -8,21 +8,50 @@
  * segment is then sorted by tag, so the resulting order depends only on the
  * positions and tags, never on thread timing. */
 
-/* Every step, after the drift: wrap periodic coordinates into [lo, hi)
+/* Every step: the fused initial_integrate ops (kernels/fused.cl; the drift),
+ * then wrap periodic coordinates into [lo, hi)
  * (image flags follow), so positions never depend on when the list was
  * rebuilt; flags[0] |= 1 if some atom moved (minimum image) more than
  * sqrt(trigsq) since the last build; flags[1] = lowest index with a
  * non-finite position or velocity. */
-__kernel void nbr_check(const int n, __global REAL *x, __global const REAL *v,
+__kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
                         __global const REAL *xhold, const REAL trigsq,
                         __global int *flags, __global int *image, const REAL lox,
                         const REAL loy, const REAL loz, const REAL hix, const REAL hiy,
-                        const REAL hiz, const REAL Lx, const REAL Ly, const REAL Lz)
+                        const REAL hiz, const REAL Lx, const REAL Ly, const REAL Lz,
+                        __global const int *ops, const int nops, __global const REAL *prm,
+                        __global const REAL *f, __global REAL *omega,
+                        __global const REAL *torque, __global const REAL *rmass,
+                        __global const REAL *radius, __global const int *type,
+                        __global const uint *mask)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     REAL3 xi = vload3(i, x);
+    REAL3 vi = vload3(i, v);
+    if (nops > 0) {
+        struct fused_atom at;
+        at.x = xi;
+        at.v = vi;
+        at.f = vload3(i, f);
+#ifdef HAS_ROTATION
+        at.om = vload3(i, omega);
+        at.tq = vload3(i, torque);
+#endif
+        at.m = rmass[i];
+        at.r = radius[i];
+        at.type = type[i];
+        at.mask = mask[i];
+        fused_apply(&at, ops, 0, nops, prm);
+        xi = at.x;
+        vi = at.v;
+        vstore3(xi, i, x);
+        vstore3(vi, i, v);
+#ifdef HAS_ROTATION
+        vstore3(at.om, i, omega);
+#endif
+    }
 #if defined(PERIODIC_X) || defined(PERIODIC_Y) || defined(PERIODIC_Z)
     int3 im = vload3(i, image);
     const int3 im0 = im;
@@ -47,7 +76,6 @@ __kernel void nbr_check(const int n, __global REAL *x, __global const REAL *v,
     d.x = MINIMG_X(d.x, Lx);
     d.y = MINIMG_Y(d.y, Ly);
     d.z = MINIMG_Z(d.z, Lz);
-    const REAL3 vi = vload3(i, v);
     const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
     if (rsq > trigsq)
         atomic_or(&flags[0], 1);

@@ -103,10 +103,17 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
 #endif /* PAIR_EVAL */
 
 /* f_i (and torque_i) = the sum of i's contacts in incidence-row order;
- * written, not added (this also clears the force of the step). */
+ * written, not added (this also clears the force of the step). Then the
+ * fused post_force ops [first, first + npost) and final_integrate ops
+ * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
+ * change f, torque, v and omega. */
 __kernel void pair_gather(const int n, __global const int *inc, __global const int *ncount,
                           const int maxn, __global const REAL *cf, __global REAL *f,
-                          __global REAL *torque)
+                          __global REAL *torque, __global const int *ops, const int first, const int npost,
+                          const int nfinal, __global const REAL *prm, __global REAL *v,
+                          __global REAL *omega, __global const REAL *rmass,
+                          __global const REAL *radius, __global const int *type,
+                          __global const uint *mask)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -126,6 +133,28 @@ __kernel void pair_gather(const int n, __global const int *inc, __global const i
             fs -= vload3(c * CF_RECORDS, cf);
 #ifdef HAS_ROTATION
             ts += vload3(c * CF_RECORDS + 2, cf);
+#endif
+        }
+    }
+    if (npost + nfinal > 0) {
+        struct fused_atom at;
+        at.f = fs;
+        at.tq = ts;
+        at.v = vload3(i, v);
+#ifdef HAS_ROTATION
+        at.om = vload3(i, omega);
+#endif
+        at.m = rmass[i];
+        at.r = radius[i];
+        at.type = type[i];
+        at.mask = mask[i];
+        fused_apply(&at, ops, first, npost + nfinal, prm);
+        fs = at.f;
+        ts = at.tq;
+        if (nfinal > 0) {
+            vstore3(at.v, i, v);
+#ifdef HAS_ROTATION
+            vstore3(at.om, i, omega);
 #endif
         }
     }

@@ -106,6 +106,7 @@ void eng_launch(struct gravel *g, cl_kernel k, size_t n)
     struct engine *e = g->eng;
     cl_event ev = NULL;
     size_t local = work_group(e, k);
+    e->st.nlaunch++;
     size_t global = (n + local - 1) / local * local;
     cl_int err = clEnqueueNDRangeKernel(e->ocl.queue, k, 1, NULL, &global, &local, 0, NULL,
                                         e->ocl.profile ? &ev : NULL);
@@ -386,6 +387,8 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "gran_common.cl", "engine");
     /* normal impulse of the source-document contact laws (same terms) */
     add_source(g, names, texts, &n, "contact_normal.cl", "engine");
+    /* per-particle fix work run inside the check and gather kernels */
+    add_source(g, names, texts, &n, "fused.cl", "engine");
     for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
         add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {
@@ -431,6 +434,7 @@ void engine_destroy(struct gravel *g)
                     e->prof_calls[i], e->prof_sec[i], 1e6 * e->prof_sec[i] / e->prof_calls[i]);
     }
     nbr_free(g);
+    fused_free(&e->fused);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     eng_release_kernels(e);

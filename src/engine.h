@@ -9,6 +9,7 @@
 #ifndef GR_ENGINE_H
 #define GR_ENGINE_H
 
+#include "fused.h"
 #include "gravel.h"
 #include "ocl.h"
 #include "run.h"
@@ -46,6 +47,7 @@ struct engine {
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
+    struct fused_stages fused;  /* per-particle fix work inside those kernels */
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
     char prof_name[48][40];

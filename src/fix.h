@@ -54,6 +54,7 @@ enum fix_need {
 #define FIX_MAX_SOURCES 6
 
 struct fix;
+struct fused_op;
 
 struct fix_style {
     const char *name;
@@ -71,6 +72,11 @@ struct fix_style {
      * the start of the next run (after init); it validates len itself. */
     size_t (*write_restart)(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
     void (*read_restart)(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);
+    /* Optional: this fix's per-particle work at `hook` as one fused op
+     * (src/fused.h), run inside the scene's kernels instead of the hook;
+     * return 0 when it cannot be fused this run. Called at run setup,
+     * after init. */
+    int (*fuse)(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op);
 };
 
 struct fix {
@@ -90,6 +96,7 @@ struct fix {
     cl_mem peratom_tmp;
     size_t peratom_cap;         /* atoms the buffers hold */
     uint64_t arghash;           /* hash of group, style and arguments (restart.c compares) */
+    unsigned fused_hooks;       /* hooks run inside fused kernels this run (src/fused.c) */
 };
 
 /* The fix with this ID, or NULL. */

@@ -371,6 +371,18 @@ int nbr_decide(struct gravel *g)
         eng_arg_real(g, k, 10 + q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, 13 + q, g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
+    /* the fused initial_integrate ops (src/fused.h) run first */
+    int a = 16;
+    eng_arg_mem(g, k, a++, e->fused.ops);
+    eng_arg_int(g, k, a++, e->fused.ninit);
+    eng_arg_mem(g, k, a++, e->fused.prm);
+    eng_arg_mem(g, k, a++, e->a.f);
+    eng_arg_mem(g, k, a++, e->rotation ? e->a.omega : e->a.v);
+    eng_arg_mem(g, k, a++, e->rotation ? e->a.torque : e->a.f);
+    eng_arg_mem(g, k, a++, e->a.rmass);
+    eng_arg_mem(g, k, a++, e->a.radius);
+    eng_arg_mem(g, k, a++, e->a.type);
+    eng_arg_mem(g, k, a++, e->a.mask);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);

@@ -210,6 +210,9 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     else
         gr_print(g, "Dangerous builds not checked\n");
     gr_print(g, "Largest overlap / radius = %.6g\n", s->max_overlap_frac);
+    if (s->nsteps > 0)
+        gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
+                 s->ncontact, (double)s->nlaunch / (double)s->nsteps);
     if (g->screen)
         fflush(g->screen);
     if (g->logfile)

@@ -104,6 +104,18 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, l->cf);
         eng_arg_mem(g, k, i++, a->f);
         eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
+        /* fused post_force ops, and the final kick except at setup */
+        eng_arg_mem(g, k, i++, e->fused.ops);
+        eng_arg_int(g, k, i++, e->fused.ninit);
+        eng_arg_int(g, k, i++, e->fused.npost);
+        eng_arg_int(g, k, i++, e->setup ? 0 : e->fused.nfinal);
+        eng_arg_mem(g, k, i++, e->fused.prm);
+        eng_arg_mem(g, k, i++, a->v);
+        eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
+        eng_arg_mem(g, k, i++, a->rmass);
+        eng_arg_mem(g, k, i++, a->radius);
+        eng_arg_mem(g, k, i++, a->type);
+        eng_arg_mem(g, k, i++, a->mask);
         eng_launch(g, k, (size_t)a->n);
     } else {
         eng_arg_int(g, e->k_clear, 0, a->n);
@@ -117,7 +129,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     *t_pair += t1 - t0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
-        if ((f->hooks & HOOK_POST_FORCE) && f->style->post_force)
+        if ((f->hooks & HOOK_POST_FORCE) && !(f->fused_hooks & HOOK_POST_FORCE) &&
+            f->style->post_force)
             f->style->post_force(g, f);
     }
     if (timed)
@@ -129,7 +142,7 @@ static void run_hook(struct gravel *g, unsigned hook)
 {
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
-        if (!(f->hooks & hook))
+        if (!(f->hooks & hook) || (f->fused_hooks & hook))
             continue;
         void (*fn)(struct gravel *, struct fix *) =
             hook == HOOK_INITIAL_INTEGRATE ? f->style->initial_integrate
@@ -243,6 +256,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     }
     pair_init(g);
     nbr_setup(g);
+    fused_setup(g);
     struct fix *fz = fix_find_style(g, "freeze");
     unsigned freezebit = fz ? fz->groupbit : 0;
     timestep_report(g, force);
@@ -272,6 +286,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     double sp = 0, sn = 0, sm = 0; /* sampled ordinary steps */
     double xp = 0, xn = 0, xm = 0; /* rebuild steps, exact */
     bigint nsamp = 0, nplain = 0;
+    e->st.nlaunch = 0;
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
@@ -349,6 +364,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         st.t_other = 0;
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
+    st.ncontact = nbr_list(g)->ncontact;
     e->active = 0;
     if (post)
         output_finish(g, &st);

@@ -18,6 +18,8 @@ struct run_stats {
     bigint nbuilds, ndanger;
     double total_neighbors;         /* entries in the last list built */
     double max_overlap_frac;        /* largest overlap / radius seen at outputs */
+    bigint nlaunch;                 /* kernel launches and fills in the loop */
+    int ncontact;                   /* contacts of the last list built */
 };
 
 /* Device state -> host arrays; no-op when no run is active. */

@@ -45,9 +45,23 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_launch(g, k, (size_t)a->n);
 }
 
+/* Fused: f = torque = 0 inside the gather kernel (kernels/fused.cl). */
+static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
+{
+    (void)g;
+    (void)f;
+    if (hook != HOOK_POST_FORCE)
+        return 0;
+    op->kind = FOP_FREEZE;
+    op->nprm = 0;
+    op->prm = NULL;
+    return 1;
+}
+
 const struct fix_style fix_style_freeze = {
     .name = "freeze",
     .create = create,
     .init = init,
     .post_force = post_force,
+    .fuse = fuse,
 };

@@ -110,9 +110,23 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_launch(g, k, (size_t)a->n);
 }
 
+/* Fused: f += m g inside the gather kernel (kernels/fused.cl). */
+static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
+{
+    (void)g;
+    struct grav *gr = f->data;
+    if (hook != HOOK_POST_FORCE)
+        return 0;
+    op->kind = FOP_GRAVITY;
+    op->nprm = 3;
+    op->prm = gr->acc;
+    return 1;
+}
+
 const struct fix_style fix_style_gravity = {
     .name = "gravity",
     .create = create,
     .init = init,
     .post_force = post_force,
+    .fuse = fuse,
 };

@@ -79,10 +79,24 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_launch(g, k, (size_t)a->n);
 }
 
+/* Fused: f -= gamma_type v inside the gather kernel (kernels/fused.cl). */
+static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
+{
+    (void)g;
+    struct visc *v = f->data;
+    if (hook != HOOK_POST_FORCE)
+        return 0;
+    op->kind = FOP_VISCOUS;
+    op->nprm = v->ntypes;
+    op->prm = v->gamma;
+    return 1;
+}
+
 const struct fix_style fix_style_viscous = {
     .name = "viscous",
     .create = create,
     .init = init,
     .post_force = post_force,
     .destroy = destroy,
+    .fuse = fuse,
 };

@@ -12,7 +12,9 @@ bit-identical in every variant:
   - atom_modify sort 0 (never re-sorted) and sort 137 (every 137 steps);
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - neigh_modify check no (a rebuild every step: other neighbor sets).
-Then momentum conservation of the pair forces: a periodic dense packing
+A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
+freeze, viscous, nve/sphere: src/fused.h) gives the same bits with fusion
+off (GRAVEL_FUSE=0: one launch per fix and hook). Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
 One PASS/FAIL line per check.
@@ -52,6 +54,35 @@ thermo 500
 dump d all custom 3000 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz
 dump_modify d sort id format float %.17g
 run 3000
+"""
+
+CHUTE = """units lj
+atom_style sphere
+boundary p p fm
+lattice sc 1.0
+region box block 0 8 0 8 0 14
+create_box 1 box
+region fill block INF INF INF INF 0 8
+create_atoms 1 region fill
+set group all diameter 1.0 density 1.9098593
+velocity all create 1.0 4928459 loop geom
+region base block INF INF INF INF INF 0.5
+group base region base
+group active subtract all base
+pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+neighbor 0.1 bin
+fix 1 all gravity 1.0 chute 26.0
+fix 2 base freeze
+fix 3 active nve/sphere
+fix 4 all viscous 0.05
+timestep 0.0001
+thermo_style custom step ke
+thermo_modify format float %.17g
+thermo 250
+dump d all custom 1000 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz
+dump_modify d sort id format float %.17g
+run 1000
 """
 
 PACK = """units lj
@@ -134,6 +165,14 @@ def main():
                          "" if ok else first_difference(ref_dump, dump))
         bad += not check("determinism_" + name + "_thermo", rows == ref_rows,
                          "%s vs %s" % (rows[-1:], ref_rows[-1:]))
+    rows_f, dump_f = run(CHUTE)
+    rows_u, dump_u = run(CHUTE, {"GRAVEL_FUSE": "0"})
+    if rows_f is None or rows_u is None:
+        bad += not check("fused_equals_unfused", False, (dump_f + dump_u)[-400:])
+    else:
+        ok = dump_f == dump_u and rows_f == rows_u
+        bad += not check("fused_equals_unfused", ok,
+                         "" if ok else first_difference(dump_f, dump_u))
     rows, dump = run(PACK)
     if rows is None:
         bad += not check("pair_forces_sum_to_zero", False, dump[-400:])

@@ -1,0 +1,68 @@
+/* fused.cl - per-particle fix work fused into the scene's kernels (host
+ * side src/fused.c). Instead of one launch per fix and hook, the run passes
+ * each stage's list of operations, in fix order, to a kernel that already
+ * visits every particle:
+ *   initial_integrate ops  -> nbr_check (before the wrap and the check)
+ *   post_force ops         -> pair_gather (after the contact sum)
+ *   final_integrate ops    -> pair_gather (after the post_force ops)
+ * An op is (kind, group bit, offset of its parameters in prm). Each op does
+ * exactly the arithmetic of its fix's own kernel (fix_gravity.cl,
+ * fix_freeze.cl, fix_viscous.cl, fix_nve.cl, fix_nve_sphere.cl), so fused
+ * and separate runs agree bit for bit. */
+
+#define FOP_GRAVITY 1               /* f += m g          prm: gx gy gz */
+#define FOP_FREEZE 2                /* f = torque = 0 */
+#define FOP_VISCOUS 3               /* f -= gamma_t v    prm: gamma per type */
+#define FOP_NVE_INITIAL 4           /* v += dtf/m f; x += dtv v          prm: dtv dtf */
+#define FOP_NVE_SPHERE_INITIAL 5    /* and omega += dtf/(0.4 m r^2) torque */
+#define FOP_NVE_FINAL 6             /* v += dtf/m f                      prm: dtf */
+#define FOP_NVE_SPHERE_FINAL 7      /* and omega += dtf/(0.4 m r^2) torque */
+
+/* The state an op may read or change, held in registers by the kernel. */
+struct fused_atom {
+    REAL3 x, v, f, om, tq;
+    REAL m, r;
+    int type;
+    uint mask;
+};
+
+static inline void fused_apply(struct fused_atom *a, __global const int *ops, const int first,
+                               const int count, __global const REAL *prm)
+{
+    for (int k = first; k < first + count; k++) {
+        const int kind = ops[3 * k];
+        if (!(a->mask & (uint)ops[3 * k + 1]))
+            continue;
+        __global const REAL *p = prm + ops[3 * k + 2];
+        if (kind == FOP_GRAVITY) {
+            const REAL m = a->m;
+            a->f.x += m * p[0];
+            a->f.y += m * p[1];
+            a->f.z += m * p[2];
+        } else if (kind == FOP_FREEZE) {
+            a->f = (REAL3)(0);
+            a->tq = (REAL3)(0);
+        } else if (kind == FOP_VISCOUS) {
+            a->f = a->f - p[a->type - 1] * a->v;
+        } else if (kind == FOP_NVE_INITIAL || kind == FOP_NVE_SPHERE_INITIAL) {
+            const REAL dtfm = p[1] / a->m;
+            a->v += dtfm * a->f;
+            a->x = a->x + p[0] * a->v;
+#ifdef HAS_ROTATION
+            if (kind == FOP_NVE_SPHERE_INITIAL) {
+                const REAL dtirotate = (p[1] / (REAL)0.4) / (a->r * a->r * a->m);
+                a->om = a->om + dtirotate * a->tq;
+            }
+#endif
+        } else if (kind == FOP_NVE_FINAL || kind == FOP_NVE_SPHERE_FINAL) {
+            const REAL dtfm = p[0] / a->m;
+            a->v = a->v + dtfm * a->f;
+#ifdef HAS_ROTATION
+            if (kind == FOP_NVE_SPHERE_FINAL) {
+                const REAL dtirotate = (p[0] / (REAL)0.4) / (a->r * a->r * a->m);
+                a->om = a->om + dtirotate * a->tq;
+            }
+#endif
+        }
+    }
+}

@@ -1,0 +1,106 @@
+/* fused.c - building the fused per-particle stages of a run (fused.h). */
+#include "fused.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+
+void fused_free(struct fused_stages *s)
+{
+    if (s->ops)
+        clReleaseMemObject(s->ops);
+    if (s->prm)
+        clReleaseMemObject(s->prm);
+    memset(s, 0, sizeof *s);
+}
+
+struct builder {
+    int nops, cap;
+    int *ops;
+    int nprm, pcap;
+    double *prm;
+};
+
+static void add(struct gravel *g, struct builder *b, struct fix *f, const struct fused_op *op)
+{
+    if (b->nops == b->cap) {
+        b->cap = b->cap ? 2 * b->cap : 8;
+        b->ops = gr_realloc(g, b->ops, (size_t)b->cap * 3 * sizeof(int));
+    }
+    if (b->nprm + op->nprm + 1 > b->pcap) {
+        b->pcap = 2 * (b->nprm + op->nprm + 1);
+        b->prm = gr_realloc(g, b->prm, (size_t)b->pcap * sizeof(double));
+    }
+    b->ops[3 * b->nops] = (int)op->kind;
+    b->ops[3 * b->nops + 1] = (int)f->groupbit;
+    b->ops[3 * b->nops + 2] = b->nprm;
+    memcpy(b->prm + b->nprm, op->prm, (size_t)op->nprm * sizeof(double));
+    b->nprm += op->nprm;
+    b->nops++;
+}
+
+/* Fuse the fixes of `hook` from the first; all = every one must fuse.
+ * Returns the number fused. */
+static int stage(struct gravel *g, struct builder *b, unsigned hook, int all)
+{
+    struct fix *list[64];
+    struct fused_op ops[64];
+    int n = 0, ok = 0;
+    for (int i = 0; i < g->styles.nfix && n < 64; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!(f->hooks & hook))
+            continue;
+        list[n] = f;
+        if (ok == n && f->style->fuse && f->style->fuse(g, f, hook, &ops[n]))
+            ok++;
+        n++;
+    }
+    if (all && ok < n)
+        return 0;
+    for (int k = 0; k < ok; k++) {
+        add(g, b, list[k], &ops[k]);
+        list[k]->fused_hooks |= hook;
+    }
+    return ok;
+}
+
+static int count_hook(struct gravel *g, unsigned hook)
+{
+    int n = 0;
+    for (int i = 0; i < g->styles.nfix; i++)
+        n += (g->styles.fix[i]->hooks & hook) != 0;
+    return n;
+}
+
+void fused_setup(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    struct fused_stages *s = &e->fused;
+    fused_free(s);
+    for (int i = 0; i < g->styles.nfix; i++)
+        g->styles.fix[i]->fused_hooks = 0;
+    const char *env = getenv("GRAVEL_FUSE");
+    int enabled = !(env && !strcmp(env, "0"));
+    struct builder b = {0};
+    if (enabled) {
+        s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, 1);
+        if (e->k_pair) {
+            s->npost = stage(g, &b, HOOK_POST_FORCE, 0);
+            if (s->npost == count_hook(g, HOOK_POST_FORCE))
+                s->nfinal = stage(g, &b, HOOK_FINAL_INTEGRATE, 1);
+        }
+    }
+    /* never empty buffers: kernels take them as arguments */
+    int dummy_op[3] = {0, 0, 0};
+    double dummy_prm = 0;
+    s->ops = eng_alloc(g, (size_t)(b.nops ? b.nops : 1) * 3 * sizeof(int), "fused ops");
+    s->prm = eng_alloc(g, (size_t)(b.nprm ? b.nprm : 1) * e->rsz, "fused op parameters");
+    eng_write(g, s->ops, 0, (size_t)(b.nops ? b.nops : 1) * 3 * sizeof(int),
+              b.nops ? b.ops : dummy_op);
+    eng_write_reals(g, s->prm, (size_t)(b.nprm ? b.nprm : 1), b.nprm ? b.prm : &dummy_prm);
+    free(b.ops);
+    free(b.prm);
+}

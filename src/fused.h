@@ -1,0 +1,47 @@
+/* fused.h - per-particle fix work fused into the scene's kernels
+ * (kernels/fused.cl): the initial_integrate ops run inside nbr_check, the
+ * post_force and final_integrate ops inside pair_gather, so a step of
+ * "nve/sphere + gravity + freeze + a pair style" is three launches, not
+ * seven. At run setup fused_setup() asks each fix (fix_style.fuse) for its
+ * op; a stage is fused when every fix of it can be (post_force: the
+ * longest prefix, in fix order; final_integrate only after a complete
+ * post_force stage), and the fused fixes' own hooks are then skipped
+ * (fix->fused_hooks). Env GRAVEL_FUSE=0 turns fusion off (the results are
+ * the same bit for bit: tests/scripts/determinism.py). */
+#ifndef GR_FUSED_H
+#define GR_FUSED_H
+
+#include "gravel.h"
+#include "ocl.h"
+
+/* = kernels/fused.cl */
+enum fused_kind {
+    FOP_GRAVITY = 1,
+    FOP_FREEZE = 2,
+    FOP_VISCOUS = 3,
+    FOP_NVE_INITIAL = 4,
+    FOP_NVE_SPHERE_INITIAL = 5,
+    FOP_NVE_FINAL = 6,
+    FOP_NVE_SPHERE_FINAL = 7,
+};
+
+/* What a fix answers for one hook: its op kind, group and parameters
+ * (prm points at nprm doubles owned by the fix, read during setup). */
+struct fused_op {
+    enum fused_kind kind;
+    int nprm;
+    const double *prm;
+};
+
+/* The run's fused stages (engine-owned). */
+struct fused_stages {
+    cl_mem ops, prm;            /* int[3 per op], REAL[] */
+    int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
+};
+
+/* Run setup, after the fixes' init and the pair kernels: build and upload
+ * the stages, mark fused fixes. */
+void fused_setup(struct gravel *g);
+void fused_free(struct fused_stages *s);
+
+#endif
