@@ -36,11 +36,20 @@ struct contact {
 };
 
 /* What an evaluator returns for one contact: the force on i (the force on j
- * is exactly -f), and the torques on i and on j (walls ignore tj). */
+ * is exactly -f) and the torques in two parts, a lever-arm part tc and an
+ * antisymmetric part tr (rolling resistance; zero for most laws):
+ *   torque on i = -radi tc - tr,   torque on j = -radj tc + tr
+ * (LAMMPS' newton-pair update, bit for bit what j's own evaluation of the
+ * reversed contact gives). HAS_ROLL_TORQUE: some active law sets tr. */
 struct contact_force {
     REAL3 f;
-    REAL3 ti, tj;
+    REAL3 tc, tr;
 };
+
+static inline REAL3 contact_torque_i(const struct contact *c, const struct contact_force *o)
+{
+    return -c->radi * o->tc - o->tr;
+}
 
 /* The one way a contact is built, for a particle partner (pair_loop.cl) and
  * for a wall element (wall.cl, radj = 0, omj = 0): geometry and relative

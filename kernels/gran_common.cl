@@ -102,9 +102,8 @@ static inline REAL3 gran_history_tangential(const struct contact *c, const struc
     return (REAL3)(fs1, fs2, fs3);
 }
 
-/* Force on i = del ccel + F_t; torque on i = -radi (del x F_t) / r and on
- * j = -radj (del x F_t) / r (LAMMPS' newton-pair update, bit for bit what
- * j's own evaluation of the reversed contact gives). */
+/* Force on i = del ccel + F_t; lever-arm torque tc = (del x F_t) / r, so
+ * the torque on i is -radi tc and on j -radj tc (struct contact_force). */
 static inline void gran_apply(const struct contact *c, const struct gran_kin *k, REAL ccel,
                               REAL3 ft, struct contact_force *out)
 {
@@ -116,10 +115,6 @@ static inline void gran_apply(const struct contact *c, const struct gran_kin *k,
     const REAL tor1 = k->rinv * (dely * ft.z - delz * ft.y);
     const REAL tor2 = k->rinv * (delz * ft.x - delx * ft.z);
     const REAL tor3 = k->rinv * (delx * ft.y - dely * ft.x);
-    out->ti.x = -c->radi * tor1;
-    out->ti.y = -c->radi * tor2;
-    out->ti.z = -c->radi * tor3;
-    out->tj.x = -c->radj * tor1;
-    out->tj.y = -c->radj * tor2;
-    out->tj.z = -c->radj * tor3;
+    out->tc = (REAL3)(tor1, tor2, tor3);
+    out->tr = (REAL3)(0);
 }

@@ -14,7 +14,7 @@ static inline void cohesion_eval(const struct contact *c, __global const REAL *p
                                  REAL3 *shear, struct contact_force *out)
 {
     (void)shear;
-    out->f = out->ti = out->tj = (REAL3)(0);
+    out->f = out->tc = out->tr = (REAL3)(0);
     if (c->radj == (REAL)0)
         return;
     const REAL ei = param[1] + param[2] * c->radi;

@@ -65,17 +65,12 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
         *shear = s;
     out->f = fnmag * n + ft;
 
-    const REAL3 nxft = cross(n, ft);
-    REAL3 tqi = -c->radi * nxft, tqj = -c->radj * nxft;
+    out->tc = cross(n, ft);
+    out->tr = (REAL3)(0);
     if (mur > (REAL)0) {
         const REAL3 wrel = c->omi - c->omj;
         const REAL wmag = length(wrel);
-        if (wmag > (REAL)0) {
-            const REAL3 roll = (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
-            tqi -= roll;
-            tqj += roll;
-        }
+        if (wmag > (REAL)0)
+            out->tr = (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
     }
-    out->ti = tqi;
-    out->tj = tqj;
 }

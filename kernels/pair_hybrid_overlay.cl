@@ -18,8 +18,8 @@
         REAL3 scratch = (REAL3)(0);                                                            \
         EVAL(c, param + (OFF), (HIST) ? shear : &scratch, &term);                              \
         sum.f += term.f;                                                                       \
-        sum.ti += term.ti;                                                                     \
-        sum.tj += term.tj;                                                                     \
+        sum.tc += term.tc;                                                                     \
+        sum.tr += term.tr;                                                                     \
     } else if (HIST) {                                                                         \
         *shear = (REAL3)(0);                                                                   \
     }
@@ -29,7 +29,7 @@ static inline void hybrid_overlay_eval(const struct contact *c, __global const R
 {
     const int touch = c->rsq < c->radsum * c->radsum;
     struct contact_force sum, term;
-    sum.f = sum.ti = sum.tj = (REAL3)(0);
+    sum.f = sum.tc = sum.tr = (REAL3)(0);
     HYBRID_TERM(PAIR_TERM0, PAIR_TERM0_OFF, PAIR_TERM0_CONTACT, PAIR_TERM0_HIST)
 #if PAIR_TERMS > 1
     HYBRID_TERM(PAIR_TERM1, PAIR_TERM1_OFF, PAIR_TERM1_CONTACT, PAIR_TERM1_HIST)

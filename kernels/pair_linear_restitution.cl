@@ -48,11 +48,6 @@ static inline void linear_restitution_eval(const struct contact *c,
         ft = -(fmin(fstatic, fdyn) / utmag) * ut;
     }
     out->f = fnmag * n + ft;
-    if (torque != (REAL)0) {
-        const REAL3 nxft = cross(n, ft);
-        out->ti = -c->radi * nxft;
-        out->tj = -c->radj * nxft;
-    } else {
-        out->ti = out->tj = (REAL3)(0);
-    }
+    out->tc = torque != (REAL)0 ? cross(n, ft) : (REAL3)(0);
+    out->tr = (REAL3)(0);
 }

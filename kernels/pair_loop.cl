@@ -15,10 +15,13 @@
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
-/* Contact force records: F on the owner, and with rotation the torques on
- * owner and partner (struct contact_force). */
-#ifdef HAS_ROTATION
+/* Contact force records (struct contact_force): F on the owner, with
+ * rotation the lever-arm torque tc, and with a rolling law tr. Each
+ * particle turns them into its torque with its own radius. */
+#if defined(HAS_ROTATION) && defined(HAS_ROLL_TORQUE)
 #define CF_RECORDS 3
+#elif defined(HAS_ROTATION)
+#define CF_RECORDS 2
 #else
 #define CF_RECORDS 1
 #endif
@@ -68,7 +71,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     struct contact k = pair_contact(i, j, x, v, omega, radius, rmass, mask, freezebit, Lx, Ly,
                                     Lz);
     struct contact_force out;
-    out.f = out.ti = out.tj = (REAL3)(0);
+    out.f = out.tc = out.tr = (REAL3)(0);
 #ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
                         * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
     if (k.rsq >= k.radsum * k.radsum) {
@@ -96,8 +99,10 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     }
     vstore3(out.f, (size_t)c * CF_RECORDS, cf);
 #ifdef HAS_ROTATION
-    vstore3(out.ti, (size_t)c * CF_RECORDS + 1, cf);
-    vstore3(out.tj, (size_t)c * CF_RECORDS + 2, cf);
+    vstore3(out.tc, (size_t)c * CF_RECORDS + 1, cf);
+#ifdef HAS_ROLL_TORQUE
+    vstore3(out.tr, (size_t)c * CF_RECORDS + 2, cf);
+#endif
 #endif
 }
 #endif /* PAIR_EVAL */
@@ -119,22 +124,25 @@ __kernel void pair_gather(const int n, __global const int *inc, __global const i
     if (i >= n)
         return;
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
+#ifdef HAS_ROTATION
+    const REAL rad = radius[i];
+#endif
     const int cnt = ncount[i];
     __global const int *row = inc + (size_t)i * (size_t)maxn;
     for (int k = 0; k < cnt; k++) {
         const int e = row[k];
-        if (e >= 0) {
-            fs += vload3((size_t)e * CF_RECORDS, cf);
+        const size_t c = e >= 0 ? (size_t)e : (size_t)(-(e + 1));
+        const REAL3 fc = vload3(c * CF_RECORDS, cf);
+        fs = e >= 0 ? fs + fc : fs - fc;
 #ifdef HAS_ROTATION
-            ts += vload3((size_t)e * CF_RECORDS + 1, cf);
+        const REAL3 tq = -rad * vload3(c * CF_RECORDS + 1, cf);
+#ifdef HAS_ROLL_TORQUE
+        const REAL3 tr = vload3(c * CF_RECORDS + 2, cf);
+        ts += e >= 0 ? tq - tr : tq + tr;
+#else
+        ts += tq;
 #endif
-        } else {
-            const size_t c = (size_t)(-(e + 1));
-            fs -= vload3(c * CF_RECORDS, cf);
-#ifdef HAS_ROTATION
-            ts += vload3(c * CF_RECORDS + 2, cf);
 #endif
-        }
     }
     if (npost + nfinal > 0) {
         struct fused_atom at;

@@ -125,7 +125,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
             if (has_history)                                                                   \
                 vstore3(sh, slot, history);                                                    \
             fsum += cf.f;                                                                      \
-            tsum += cf.ti;                                                                     \
+            tsum += contact_torque_i(&c, &cf);                                                 \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \

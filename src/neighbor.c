@@ -34,7 +34,7 @@ struct nbr {
         excl_group, dummy;
     size_t cap_atoms, cap_cells;
     size_t rsz;
-    int history, rotation;
+    int history, rotation, roll_torque;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
     int nexg;
@@ -165,7 +165,10 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
 }
 
 /* Bytes of the force record of one contact (kernels/pair_loop.cl). */
-static size_t cf_bytes(const struct engine *e) { return (e->rotation ? 9 : 3) * e->rsz; }
+static size_t cf_bytes(const struct engine *e)
+{
+    return (size_t)(e->rotation ? (e->roll_torque ? 9 : 6) : 3) * e->rsz;
+}
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 
@@ -245,16 +248,19 @@ void nbr_setup(struct gravel *g)
         b->cap_pair = b->cap_contact = b->cap_contact_old = 0;
         l->ncontact = b->ncontact_old = 0;
         grow_atoms(g, b, (size_t)e->cap);
-        alloc_list(g, b, b->list.maxn ? b->list.maxn : 16);
+        alloc_list(g, b, b->list.maxn ? b->list.maxn : 8); /* grows on overflow */
         b->rsz = e->rsz;
         b->history = e->history;
         b->rotation = e->rotation;
+        b->roll_torque = e->roll_torque;
     }
-    if (b->rotation != e->rotation) { /* contact force records change size */
+    if (b->rotation != e->rotation || b->roll_torque != e->roll_torque) {
+        /* contact force records change size */
         rel(&b->list.cf);
         b->list.cf = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
                                "contact forces");
         b->rotation = e->rotation;
+        b->roll_torque = e->roll_torque;
     }
     /* exclusions */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;

@@ -7,6 +7,7 @@
 #include "ocl.h"
 
 #include <errno.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -134,6 +135,11 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     cl_int err;
     o->ctx = clCreateContext(NULL, 1, &o->device, NULL, NULL, &err);
     ocl_check(g, err, "clCreateContext");
+    cl_ulong maxalloc = 0, gmem = 0;
+    clGetDeviceInfo(o->device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof maxalloc, &maxalloc, NULL);
+    clGetDeviceInfo(o->device, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof gmem, &gmem, NULL);
+    o->max_alloc = (size_t)maxalloc;
+    o->global_mem = (size_t)gmem;
     size_t maxwg = 1;
     OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof maxwg, &maxwg,
                                  NULL));
@@ -372,13 +378,43 @@ cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name)
     return k;
 }
 
+/* Process-wide, so a callback that runs after its engine is gone is safe. */
+static _Atomic long long mem_live, mem_peak;
+
+long long ocl_mem_live(void) { return atomic_load(&mem_live); }
+long long ocl_mem_peak(void) { return atomic_load(&mem_peak); }
+void ocl_mem_reset_peak(void) { atomic_store(&mem_peak, atomic_load(&mem_live)); }
+
+static void CL_CALLBACK on_release(cl_mem m, void *data)
+{
+    (void)m;
+    atomic_fetch_sub(&mem_live, (long long)(size_t)data);
+}
+
 cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what)
 {
+    if (bytes == 0)
+        bytes = 16;
+    if (o->max_alloc && bytes > o->max_alloc) {
+        char fit[128] = "";
+        if (o->atoms_hint > 0)
+            snprintf(fit, sizeof fit, "; at %d atoms, about %.0f atoms would fit", o->atoms_hint,
+                     (double)o->atoms_hint * (double)o->max_alloc / (double)bytes);
+        gr_error(g, "the %s need one buffer of %zu bytes, more than the device's largest "
+                    "allocation (CL_DEVICE_MAX_MEM_ALLOC_SIZE = %zu bytes)%s", what, bytes,
+                 o->max_alloc, fit);
+    }
     cl_int err;
-    cl_mem m = clCreateBuffer(o->ctx, CL_MEM_READ_WRITE, bytes ? bytes : 16, NULL, &err);
+    cl_mem m = clCreateBuffer(o->ctx, CL_MEM_READ_WRITE, bytes, NULL, &err);
     if (err != CL_SUCCESS)
         gr_error(g, "OpenCL clCreateBuffer for %s (%zu bytes) failed: %s", what, bytes,
                  ocl_errname(err));
+    if (clSetMemObjectDestructorCallback(m, on_release, (void *)bytes) == CL_SUCCESS) {
+        long long now = atomic_fetch_add(&mem_live, (long long)bytes) + (long long)bytes;
+        long long peak = atomic_load(&mem_peak);
+        while (now > peak && !atomic_compare_exchange_weak(&mem_peak, &peak, now))
+            ;
+    }
     return m;
 }
 

@@ -25,9 +25,18 @@ struct ocl {
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (engine.c) */
+    size_t max_alloc;           /* CL_DEVICE_MAX_MEM_ALLOC_SIZE */
+    size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE */
+    int atoms_hint;             /* atoms the buffers are sized for (error messages) */
     size_t wg;                  /* work-group size of every launch (engine.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
 };
+
+/* Bytes in live device buffers of this process, and the most at once since
+ * ocl_mem_reset_peak() (counted by buffer destructor callbacks). */
+long long ocl_mem_live(void);
+long long ocl_mem_peak(void);
+void ocl_mem_reset_peak(void);
 
 /* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */
 const char *ocl_errname(cl_int err);

@@ -213,6 +213,9 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     if (s->nsteps > 0)
         gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
                  s->ncontact, (double)s->nlaunch / (double)s->nsteps);
+    if (s->natoms > 0)
+        gr_print(g, "Device memory = %.4g Mbytes at most (%.0f bytes per atom)\n",
+                 s->mem_peak / 1e6, s->mem_peak / s->natoms);
     if (g->screen)
         fflush(g->screen);
     if (g->logfile)

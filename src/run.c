@@ -229,6 +229,7 @@ static void check_atoms(struct gravel *g)
 static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
 {
     check_atoms(g);
+    ocl_mem_reset_peak();
     eng_prepare(g);
     struct engine *e = g->eng;
     e->active = 0;
@@ -365,6 +366,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
     st.ncontact = nbr_list(g)->ncontact;
+    st.mem_peak = (double)ocl_mem_peak();
     e->active = 0;
     if (post)
         output_finish(g, &st);

@@ -20,6 +20,7 @@ struct run_stats {
     double max_overlap_frac;        /* largest overlap / radius seen at outputs */
     bigint nlaunch;                 /* kernel launches and fills in the loop */
     int ncontact;                   /* contacts of the last list built */
+    double mem_peak;                /* most bytes of device buffers live during the run */
 };
 
 /* Device state -> host arrays; no-op when no run is active. */
