@@ -440,7 +440,9 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
  * -1 for lost atoms: fill first), then every old contact's partner is
  * renamed into the new order, and each new contact (owned by the same atom
  * as before: the lower tag) takes the history of the old contact of its
- * owner with the same partner, or zero. */
+ * owner with the same partner, or zero. The previous partners and
+ * histories are parked in the force buffer during the rebuild (src/neighbor.c:
+ * histories from its start, partners from int offset `at`). */
 __kernel void nbr_invperm(const int n, __global const int *perm, __global int *invperm)
 {
     const int i = get_global_id(0);
@@ -448,18 +450,21 @@ __kernel void nbr_invperm(const int n, __global const int *perm, __global int *i
         invperm[perm[i]] = i;
 }
 
-__kernel void hist_rename(const int nold, __global const int *invperm, __global int *old_cj)
+__kernel void hist_rename(const int nold, __global const int *invperm, __global int *parked,
+                          const int at)
 {
     const int c = get_global_id(0);
     if (c < nold)
-        old_cj[c] = invperm[old_cj[c]];
+        parked[at + c] = invperm[parked[at + c]];
 }
 
 __kernel void hist_transfer(const int ncontact, __global const int *ci, __global const int *cj,
                             __global const int *perm, const int permuted,
-                            __global const int *old_coff, __global const int *old_cj,
-                            __global const REAL *old_shear, __global REAL *shear)
+                            __global const int *old_coff, __global const int *parked,
+                            const int at, __global const REAL *old_shear,
+                            __global REAL *shear)
 {
+    __global const int *old_cj = parked + at;
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;

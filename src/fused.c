@@ -37,7 +37,8 @@ static void add(struct gravel *g, struct builder *b, struct fix *f, const struct
     b->ops[3 * b->nops] = (int)op->kind;
     b->ops[3 * b->nops + 1] = (int)f->groupbit;
     b->ops[3 * b->nops + 2] = b->nprm;
-    memcpy(b->prm + b->nprm, op->prm, (size_t)op->nprm * sizeof(double));
+    if (op->nprm > 0)
+        memcpy(b->prm + b->nprm, op->prm, (size_t)op->nprm * sizeof(double));
     b->nprm += op->nprm;
     b->nops++;
 }

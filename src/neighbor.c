@@ -24,10 +24,13 @@
 
 struct nbr {
     struct nbr_list list;
-    /* contacts of the previous build, for the history transfer */
-    cl_mem coff_old, cj_old, shear_old;
-    int ncontact_old, n_old;
-    size_t cap_pair, cap_contact, cap_contact_old;
+    /* contacts of the previous build, for the history transfer: offsets,
+     * and (during a rebuild only) partners and history parked in the force
+     * buffer, which is free then (old_cj_at: offset of the partners, ints) */
+    cl_mem coff_old;
+    int ncontact_old;
+    size_t old_cj_at;
+    size_t cap_pair, cap_contact;
     int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
@@ -69,7 +72,7 @@ void nbr_free(struct gravel *g)
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->inc, &l->coff, &l->ci, &l->cj,
-                   &l->shear, &l->cf, &b->coff_old, &b->cj_old, &b->shear_old,
+                   &l->shear, &l->cf, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->dummy};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
@@ -172,42 +175,57 @@ static size_t cf_bytes(const struct engine *e)
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 
-/* Contact buffers for at least nc contacts (contents not kept): ci and cf
- * (cap_pair), cj and shear (cap_contact; they swap with the previous
- * build's cj_old and shear_old, cap_contact_old). */
+/* Contact buffers for at least nc contacts (contents not kept): ci, cj
+ * and shear (cap_contact); the force records cf (cap_pair) separately,
+ * after the history transfer has read what was parked there. */
 static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct engine *e = g->eng;
     struct nbr_list *l = &b->list;
-    if (nc > b->cap_pair || !l->ci) {
+    if (nc > b->cap_contact || !l->ci) {
         rel(&l->ci);
-        rel(&l->cf);
-        b->cap_pair = grown(nc);
-        l->ci = eng_alloc(g, b->cap_pair * sizeof(cl_int), "contact owners");
-        l->cf = eng_alloc(g, b->cap_pair * cf_bytes(e), "contact forces");
-    }
-    if (nc > b->cap_contact || !l->cj) {
         rel(&l->cj);
         rel(&l->shear);
         b->cap_contact = grown(nc);
+        l->ci = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact owners");
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
         if (e->history)
             l->shear = eng_alloc(g, b->cap_contact * 3 * e->rsz, "contact history");
     }
 }
 
-/* The current contacts become the previous ones (history transfer). */
-static void retire_contacts(struct nbr *b)
+static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    cl_mem t;
-    t = b->coff_old, b->coff_old = l->coff, l->coff = t;
-    t = b->cj_old, b->cj_old = l->cj, l->cj = t;
-    t = b->shear_old, b->shear_old = l->shear, l->shear = t;
-    size_t c = b->cap_contact_old;
-    b->cap_contact_old = b->cap_contact;
-    b->cap_contact = c;
+    if (nc > b->cap_pair || !l->cf) {
+        rel(&l->cf);
+        b->cap_pair = grown(nc);
+        l->cf = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "contact forces");
+    }
+}
+
+/* The current contacts become the previous ones: offsets swap, partners
+ * and history are parked in the force buffer (history 3 REAL per contact
+ * from byte 0, then the partners; history implies rotation, so a force
+ * record of 6 REAL holds both). */
+static void retire_contacts(struct gravel *g, struct nbr *b)
+{
+    struct engine *e = g->eng;
+    struct nbr_list *l = &b->list;
+    cl_mem t = b->coff_old;
+    b->coff_old = l->coff;
+    l->coff = t;
     b->ncontact_old = l->ncontact;
+    size_t nc = (size_t)l->ncontact, hist = nc * 3 * e->rsz;
+    b->old_cj_at = (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
+    if (nc == 0)
+        return;
+    if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * cf_bytes(e))
+        gr_error(g, "internal error: the force buffer cannot hold the previous contacts");
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->cf, 0, 0, hist, 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->cf, 0,
+                                     b->old_cj_at * sizeof(cl_int), nc * sizeof(cl_int), 0,
+                                     NULL, NULL));
 }
 
 void nbr_setup(struct gravel *g)
@@ -242,10 +260,10 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->shear, &l->cf, &b->cj_old, &b->shear_old};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->shear, &l->cf};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
-        b->cap_pair = b->cap_contact = b->cap_contact_old = 0;
+        b->cap_pair = b->cap_contact = 0;
         l->ncontact = b->ncontact_old = 0;
         grow_atoms(g, b, (size_t)e->cap);
         alloc_list(g, b, b->list.maxn ? b->list.maxn : 8); /* grows on overflow */
@@ -569,10 +587,10 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     if (fl[3])
         gr_error(g, "internal error: the neighbor list is not symmetric (a pair is missing "
                     "from one partner's row) at step %lld", (long long)g->step);
-    if (!e->history)
-        return;
-    if (!b->old_valid || b->ncontact_old == 0) {
+    if (e->history && (!b->old_valid || b->ncontact_old == 0))
         eng_fill_zero(g, l->shear, (size_t)total * 3 * e->rsz);
+    if (!e->history || !b->old_valid || b->ncontact_old == 0) {
+        alloc_forces(g, b, (size_t)total);
         return;
     }
     k = b->k_hist_transfer;
@@ -583,10 +601,12 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, b->perm);
     eng_arg_int(g, k, a++, permuted);
     eng_arg_mem(g, k, a++, b->coff_old);
-    eng_arg_mem(g, k, a++, b->cj_old);
-    eng_arg_mem(g, k, a++, b->shear_old);
+    eng_arg_mem(g, k, a++, l->cf);
+    eng_arg_int(g, k, a++, (int)b->old_cj_at);
+    eng_arg_mem(g, k, a++, l->cf);
     eng_arg_mem(g, k, a++, l->shear);
     eng_launch(g, k, (size_t)total);
+    alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
 
 /* Gather one per-atom array (bytes per atom) into the new order through the
@@ -627,7 +647,8 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         k = b->k_hist_rename;
         eng_arg_int(g, k, 0, b->ncontact_old);
         eng_arg_mem(g, k, 1, b->cellof);
-        eng_arg_mem(g, k, 2, b->cj_old);
+        eng_arg_mem(g, k, 2, b->list.cf);
+        eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
     reorder_array(g, b, s->x, 3 * r, nkeep);
@@ -716,7 +737,7 @@ void nbr_rebuild(struct gravel *g)
     int resort = nkeep < n || !b->built || every < 0 ||
                  (every > 0 && g->step - b->last_sort >= every);
     if (e->history && b->old_valid)
-        retire_contacts(b);
+        retire_contacts(g, b);
     if (resort) {
         resort_atoms(g, b, n, nkeep);
         b->last_sort = g->step;
@@ -917,6 +938,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     if (!asym) {
         alloc_list(g, b, maxn);
         alloc_contacts(g, b, total);
+        alloc_forces(g, b, total);
         l->ncontact = (int)total;
         eng_write(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
         eng_write(g, l->nlist, 0, slots * sizeof(cl_int), row);

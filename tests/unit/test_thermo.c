@@ -337,7 +337,8 @@ TEST(schedule_and_footer)
     struct run_stats st = {.nsteps = 10, .natoms = 3, .t_total = 2.0, .t_pair = 1.0,
                            .t_neigh = 0.25, .t_modify = 0.25, .t_output = 0.25,
                            .nbuilds = 3, .ndanger = 0, .total_neighbors = 12,
-                           .max_overlap_frac = 0.0125};
+                           .max_overlap_frac = 0.0125, .nlaunch = 31, .ncontact = 6,
+                           .mem_peak = 3000};
     output_finish(g, &st);
     char *out = fx_capture_end(g, &cap);
     const char *want =
@@ -368,7 +369,9 @@ TEST(schedule_and_footer)
         "Ave neighs/atom = 2.0000000\n"
         "Neighbor list builds = 3\n"
         "Dangerous builds = 0\n"
-        "Largest overlap / radius = 0.0125\n";
+        "Largest overlap / radius = 0.0125\n"
+        "Contacts = 6 (each evaluated once); kernel launches per step = 3.10\n"
+        "Device memory = 0.003 Mbytes at most (1000 bytes per atom)\n";
     CHECK(out && strcmp(out, want) == 0);
     if (out && strcmp(out, want))
         printf("  got:\n%s\n", out);
