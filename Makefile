@@ -4,7 +4,7 @@
 CC      ?= gcc
 CFLAGS  ?= -O2 -g
 WARN     = -Wall -Wextra -Werror
-CPPFLAGS = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 -Isrc -Istyles -Ibuild/gen
+CPPFLAGS = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 -Isrc -Istyles -Ikernels -Ibuild/gen
 LDLIBS   = -lOpenCL -lgsl -lgslcblas -lm
 SANFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
@@ -13,7 +13,7 @@ LIBSRC   = $(filter-out src/main.c,$(SRC))
 OBJ      = $(SRC:%.c=build/obj/%.o) build/obj/kernels.o
 LIBOBJ   = $(LIBSRC:%.c=build/obj/%.o) build/obj/kernels.o
 ASANOBJ  = $(LIBSRC:%.c=build/asan/%.o) build/asan/kernels.o
-KERNELS  = $(sort $(wildcard kernels/*.cl))
+KERNELS  = $(sort $(wildcard kernels/*.cl kernels/*.h))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
@@ -30,11 +30,11 @@ bin/gravel-asan: $(ASANOBJ) build/asan/src/main.o
 	@mkdir -p bin
 	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 
-build/obj/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+build/obj/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(WARN) -c -o $@ $<
 
-build/asan/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+build/asan/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(SANFLAGS) $(WARN) -c -o $@ $<
 
@@ -93,7 +93,7 @@ verify: deps
 FUZZ_TIME ?= 60
 FUZZFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 FUZZOBJ   = $(LIBSRC:%.c=build/fuzz/%.o) build/fuzz/kernels.o
-build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h) src/commands.def styles/styles.def
+build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
 build/fuzz/kernels.o: build/gen/kernels.c

@@ -17,12 +17,12 @@ static inline void cohesion_eval(const struct contact *c, __global const REAL *p
     out->f = out->tc = out->tr = (REAL3)(0);
     if (c->radj == (REAL)0)
         return;
-    const REAL ei = param[1] + param[2] * c->radi;
-    const REAL ej = param[3] + param[4] * c->radj;
+    const REAL ei = param[COH_AI] + param[COH_BI] * c->radi;
+    const REAL ej = param[COH_AJ] + param[COH_BJ] * c->radj;
     const REAL de = ei + ej;
     if (c->rsq >= de * de)
         return;
     const REAL r = sqrt(c->rsq);
     const REAL delta_e = de - r;
-    out->f = (-param[0] * delta_e / r) * c->del;
+    out->f = (-param[COH_KC] * delta_e / r) * c->del;
 }

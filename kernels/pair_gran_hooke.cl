@@ -12,8 +12,8 @@ static inline void gran_hooke_eval(const struct contact *c, __global const REAL 
                                    REAL3 *shear, struct contact_force *out)
 {
     (void)shear;
-    const REAL kn = param[0], gamman = param[2], gammat = param[3];
-    const REAL xmu = param[4], limit = param[5];
+    const REAL kn = param[GRAN_KN], gamman = param[GRAN_GAMMAN], gammat = param[GRAN_GAMMAT];
+    const REAL xmu = param[GRAN_XMU], limit = param[GRAN_LIMIT];
     const struct gran_kin k = gran_kinematics(c);
     const REAL ccel = gran_normal(c, &k, kn, gamman, (REAL)1, limit);
 

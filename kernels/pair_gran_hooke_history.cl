@@ -15,8 +15,8 @@
 static inline void gran_hooke_history_eval(const struct contact *c, __global const REAL *param,
                                            REAL3 *shear, struct contact_force *out)
 {
-    const REAL kn = param[0], kt = param[1], gamman = param[2], gammat = param[3];
-    const REAL xmu = param[4], limit = param[5];
+    const REAL kn = param[GRAN_KN], kt = param[GRAN_KT], gamman = param[GRAN_GAMMAN];
+    const REAL gammat = param[GRAN_GAMMAT], xmu = param[GRAN_XMU], limit = param[GRAN_LIMIT];
     const struct gran_kin k = gran_kinematics(c);
     const REAL ccel = gran_normal(c, &k, kn, gamman, (REAL)1, limit);
     const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, (REAL)1, shear);

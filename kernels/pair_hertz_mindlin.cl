@@ -22,7 +22,8 @@
 static inline void hertz_mindlin_eval(const struct contact *c, __global const REAL *param,
                                       REAL3 *shear, struct contact_force *out)
 {
-    const REAL kn = param[0], kt = param[1], cd = param[2], mu = param[3], mur = param[4];
+    const REAL kn = param[HM_KN], kt = param[HM_KT], cd = param[HM_CDAMP], mu = param[HM_MU];
+    const REAL mur = param[HM_MUR];
     const REAL r = sqrt(c->rsq);
     const REAL3 n = c->del * ((REAL)1 / r);
     const REAL delta = c->radsum - r;

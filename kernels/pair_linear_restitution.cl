@@ -21,8 +21,8 @@ static inline void linear_restitution_eval(const struct contact *c,
                                            struct contact_force *out)
 {
     (void)shear;
-    const REAL ke = param[0], kf = param[1], mu = param[2];
-    const REAL ceta = param[3], ctcol = param[4], torque = param[5];
+    const REAL ke = param[LR_KE], kf = param[LR_KF], mu = param[LR_MU];
+    const REAL ceta = param[LR_CETA], ctcol = param[LR_CTCOL], torque = param[LR_TORQUE];
     const REAL r = sqrt(c->rsq);
     const REAL rinv = (REAL)1 / r;
     const REAL3 n = c->del * rinv;

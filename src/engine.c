@@ -383,6 +383,7 @@ void eng_prepare(struct gravel *g)
 
     const char *names[32], *texts[32];
     int n = 0;
+    add_source(g, names, texts, &n, "param_layout.h", "engine");
     add_source(g, names, texts, &n, "common.cl", "engine");
     /* LAMMPS granular kinematics for the gran pair and wall evaluators:
      * static inline helpers, free in scenes that do not call them */
@@ -439,6 +440,8 @@ void engine_destroy(struct gravel *g)
     }
     nbr_free(g);
     fused_free(&e->fused);
+    for (int k = 0; k < NHOOK; k++)
+        free(e->hooks.call[k]);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     eng_release_kernels(e);

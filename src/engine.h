@@ -27,6 +27,18 @@ struct dev_atoms {
 };
 
 struct nbr;                     /* neighbor.c */
+struct fix;
+
+/* The fix calls of each hook for the current run (run.c). */
+enum { NHOOK = 4 };
+struct hook_call {
+    struct fix *fix;
+    void (*fn)(struct gravel *, struct fix *);
+};
+struct hook_lists {
+    int n[NHOOK];
+    struct hook_call *call[NHOOK];
+};
 
 struct engine {
     struct ocl ocl;
@@ -49,6 +61,7 @@ struct engine {
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
+    struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
     char prof_name[48][40];

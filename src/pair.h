@@ -123,7 +123,8 @@ int pair_hybrid_terms(const struct pair *p, const struct pair **terms);
 void pair_gran_settings(struct gravel *g, struct pair *p, int argc, char **argv);
 void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param);
 
-/* Index of packed gran parameters. */
-enum { GRAN_KN, GRAN_KT, GRAN_GAMMAN, GRAN_GAMMAT, GRAN_XMU, GRAN_LIMIT, GRAN_NPARAM };
+/* Index of packed gran parameters (GRAN_*): kernels/param_layout.h, shared
+ * with the kernels. */
+#include "param_layout.h"
 
 #endif

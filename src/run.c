@@ -62,6 +62,45 @@ static void pair_init(struct gravel *g)
     e->k_pair = eng_kernel(g, "pair_contacts");
 }
 
+/* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
+ * that set it and are not fused into the scene's kernels, in fix order,
+ * with the function to call. Built once at run setup. */
+static int hook_index(unsigned hook)
+{
+    return hook == HOOK_INITIAL_INTEGRATE ? 0 : hook == HOOK_POST_FORCE ? 1
+         : hook == HOOK_FINAL_INTEGRATE   ? 2 : 3;
+}
+
+static void build_hook_lists(struct gravel *g)
+{
+    struct hook_lists *h = &g->eng->hooks;
+    const unsigned bits[NHOOK] = {HOOK_INITIAL_INTEGRATE, HOOK_POST_FORCE, HOOK_FINAL_INTEGRATE,
+                                  HOOK_END_OF_STEP};
+    for (int k = 0; k < NHOOK; k++) {
+        free(h->call[k]);
+        h->call[k] = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->call[k]);
+        h->n[k] = 0;
+        for (int i = 0; i < g->styles.nfix; i++) {
+            struct fix *f = g->styles.fix[i];
+            if (!(f->hooks & bits[k]) || (f->fused_hooks & bits[k]))
+                continue;
+            void (*fn)(struct gravel *, struct fix *) =
+                k == 0 ? f->style->initial_integrate : k == 1 ? f->style->post_force
+              : k == 2 ? f->style->final_integrate   : f->style->end_of_step;
+            if (fn)
+                h->call[k][h->n[k]++] = (struct hook_call){f, fn};
+        }
+    }
+}
+
+static void run_hook(struct gravel *g, unsigned hook)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    int k = hook_index(hook);
+    for (int i = 0; i < h->n[k]; i++)
+        h->call[k][i].fn(g, h->call[k][i].fix);
+}
+
 /* Force computation: pair (or clear), then every post_force fix. */
 static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t_pair,
                            double *t_modify)
@@ -127,31 +166,10 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_finish(g);
     double t1 = wall();
     *t_pair += t1 - t0;
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *f = g->styles.fix[i];
-        if ((f->hooks & HOOK_POST_FORCE) && !(f->fused_hooks & HOOK_POST_FORCE) &&
-            f->style->post_force)
-            f->style->post_force(g, f);
-    }
+    run_hook(g, HOOK_POST_FORCE);
     if (timed)
         eng_finish(g);
     *t_modify += wall() - t1;
-}
-
-static void run_hook(struct gravel *g, unsigned hook)
-{
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *f = g->styles.fix[i];
-        if (!(f->hooks & hook) || (f->fused_hooks & hook))
-            continue;
-        void (*fn)(struct gravel *, struct fix *) =
-            hook == HOOK_INITIAL_INTEGRATE ? f->style->initial_integrate
-            : hook == HOOK_FINAL_INTEGRATE ? f->style->final_integrate
-            : hook == HOOK_END_OF_STEP     ? f->style->end_of_step
-                                           : f->style->post_force;
-        if (fn)
-            fn(g, f);
-    }
 }
 
 /* Log the collision time of the contact model against the time step:
@@ -258,6 +276,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     pair_init(g);
     nbr_setup(g);
     fused_setup(g);
+    build_hook_lists(g);
     struct fix *fz = fix_find_style(g, "freeze");
     unsigned freezebit = fz ? fz->groupbit : 0;
     timestep_report(g, force);

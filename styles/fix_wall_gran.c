@@ -24,6 +24,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "pair.h"
 #include "wall.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3 };
@@ -32,7 +33,7 @@ enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 struct wall {
     int model, history;
-    double param[6];        /* GRAN layout: kn kt gamman gammat xmu limit(0) */
+    double param[GRAN_NPARAM]; /* kernels/param_layout.h: kn kt gamman gammat xmu limit(0) */
     int style;
     double lo, hi, cylradius;
     int wiggle, wshear, axis;
@@ -99,12 +100,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix wall/gran %s needs Kt > 0 when gamma_t > 0 (the sliding rescale "
                     "divides by Kt)", argv[0]);
     /* Hertz: LAMMPS divides Kn, Kt by nktv2p, which is 1 in lj, si and cgs units */
-    w.param[0] = kn;
-    w.param[1] = kt;
-    w.param[2] = gamman;
-    w.param[3] = gammat;
-    w.param[4] = xmu;
-    w.param[5] = 0.0;
+    w.param[GRAN_KN] = kn;
+    w.param[GRAN_KT] = kt;
+    w.param[GRAN_GAMMAN] = gamman;
+    w.param[GRAN_GAMMAT] = gammat;
+    w.param[GRAN_XMU] = xmu;
+    w.param[GRAN_LIMIT] = 0.0;
 
     int i = 7;
     const char *ws = argv[i];
@@ -220,8 +221,8 @@ static void init(struct gravel *g, struct fix *f)
     if (w->law.param)
         clReleaseMemObject(w->law.param);
     w->law.param = NULL;
-    w->law.param = eng_alloc(g, 8 * e->rsz, "fix wall/gran parameters");
-    eng_write_reals(g, w->law.param, 6, w->param);
+    w->law.param = eng_alloc(g, GRAN_NPARAM * e->rsz, "fix wall/gran parameters");
+    eng_write_reals(g, w->law.param, GRAN_NPARAM, w->param);
     struct wall_geom geom = geometry(g, w);
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }

@@ -8,9 +8,8 @@
 
 struct fix;
 
-/* Per type pair (I = type of i, J = type of j): kc, then the effect radius
- * of each side as a + b r (r = that particle's body radius). */
-enum { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
+/* COH_*: kernels/param_layout.h, shared with the kernels */
+#include "param_layout.h"
 
 /* Centre distance at which the effect surfaces of an I-J pair with body radii
  * radi, radj touch; *kc (if not NULL) receives the pair's stiffness. The
