@@ -40,7 +40,7 @@ struct contact {
  * antisymmetric part tr (rolling resistance; zero for most laws):
  *   torque on i = -radi tc - tr,   torque on j = -radj tc + tr
  * (LAMMPS' newton-pair update, bit for bit what j's own evaluation of the
- * reversed contact gives). HAS_ROLL_TORQUE: some active law sets tr. */
+ * reversed contact gives). */
 struct contact_force {
     REAL3 f;
     REAL3 tc, tr;

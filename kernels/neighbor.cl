@@ -388,15 +388,16 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
 }
 
 /* Contacts from the rows: i owns contacts coff[i] .. coff[i] + nown[i] - 1
- * (its last nown[i] row entries, in order), ci/cj name the two atoms, and
- * inc[i maxn + k] is the contact of row slot k: c when i owns it, -(c + 1)
- * when the partner j does (found in j's row by tag, binary search). A pair
+ * (its last nown[i] row entries, in order), ci/cj name the two atoms.
+ * Row slot k of i is incidence ioff[i] + k (rows packed, partner-tag order);
+ * cslot[2c] is the owner's incidence of contact c, cslot[2c + 1] the
+ * partner's (found in the owner's row by binary search on the tag). A pair
  * missing from its partner's row sets flags[3] (an inconsistent list). */
 __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlist,
                            __global const int *ncount, __global const int *nown,
-                           __global const int *coff, __global const long *tag,
-                           __global int *ci, __global int *cj, __global int *inc,
-                           __global int *flags)
+                           __global const int *coff, __global const int *ioff,
+                           __global const long *tag, __global int *ci, __global int *cj,
+                           __global int *cslot, __global int *flags)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -410,7 +411,7 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
             const int c = coff[i] + k - first;
             ci[c] = i;
             cj[c] = j;
-            inc[row + k] = c;
+            cslot[2 * c] = ioff[i] + k;
             continue;
         }
         const size_t rowj = (size_t)j * maxn;
@@ -429,10 +430,9 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
         }
         if (at < 0) {
             atomic_or(&flags[3], 1);
-            inc[row + k] = 0;
             continue;
         }
-        inc[row + k] = -(coff[j] + at - (ncount[j] - nown[j]) + 1);
+        cslot[2 * (coff[j] + at - (ncount[j] - nown[j])) + 1] = ioff[i] + k;
     }
 }
 

@@ -4,26 +4,23 @@
  * joins its owner ci[c] (the partner with the lower tag) and cj[c]; with
  * history, shear[3c ..] is its tangential history, seen from the owner. Each
  * contact is evaluated once, by pair_contacts, through the active evaluator
- * PAIR_EVAL; pair_gather then sums, for every particle, the contacts of its
- * incidence row inc[i maxn + k] (k < ncount[i]) in the order of that row:
- * ascending partner tag, so a particle's sum depends on the particles only,
- * never on memory order, the cell sort, the rebuild schedule or the work
- * split. inc holds c for a contact i owns and -(c + 1) for one it is the
- * partner of (force -F, torque tj). No atomics; forces on the two partners
- * are exact negatives.
+ * PAIR_EVAL, which writes what each side receives into that side's
+ * incidence record: cslot[2c] (owner: F, -radi tc - tr) and cslot[2c + 1]
+ * (partner: -F, -radj tc + tr). A particle's incidences ioff[i] ..
+ * ioff[i + 1] - 1 follow its row, in ascending partner tag; pair_gather sums
+ * them in that order (a stream), so a particle's sum depends on the
+ * particles only, never on memory order, the cell sort, the rebuild
+ * schedule or the work split. No atomics; the two sides' forces are exact
+ * negatives.
  *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
-/* Contact force records (struct contact_force): F on the owner, with
- * rotation the lever-arm torque tc, and with a rolling law tr. Each
- * particle turns them into its torque with its own radius. */
-#if defined(HAS_ROTATION) && defined(HAS_ROLL_TORQUE)
-#define CF_RECORDS 3
-#elif defined(HAS_ROTATION)
-#define CF_RECORDS 2
+/* Incidence records: the force, and with rotation the torque. */
+#ifdef HAS_ROTATION
+#define REC_RECORDS 2
 #else
-#define CF_RECORDS 1
+#define REC_RECORDS 1
 #endif
 
 #ifdef PAIR_EVAL
@@ -56,13 +53,14 @@ static inline struct contact pair_contact(const int i, const int j, __global con
 }
 
 __kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,
+                            __global const int *cslot,
                             __global const REAL *x, __global const REAL *v,
                             __global const REAL *omega, __global const REAL *radius,
                             __global const REAL *rmass, __global const int *type,
                             __global const uint *mask, __global REAL *shear,
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
-                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *cf)
+                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *rec)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
@@ -97,51 +95,37 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         vstore3(sh, c, shear);
 #endif
     }
-    vstore3(out.f, (size_t)c * CF_RECORDS, cf);
+    const size_t si = (size_t)cslot[2 * c] * REC_RECORDS;
+    const size_t sj = (size_t)cslot[2 * c + 1] * REC_RECORDS;
+    vstore3(out.f, si, rec);
+    vstore3(-out.f, sj, rec);
 #ifdef HAS_ROTATION
-    vstore3(out.tc, (size_t)c * CF_RECORDS + 1, cf);
-#ifdef HAS_ROLL_TORQUE
-    vstore3(out.tr, (size_t)c * CF_RECORDS + 2, cf);
-#endif
+    vstore3(-k.radi * out.tc - out.tr, si + 1, rec);
+    vstore3(-k.radj * out.tc + out.tr, sj + 1, rec);
 #endif
 }
 #endif /* PAIR_EVAL */
 
-/* f_i (and torque_i) = the sum of i's contacts in incidence-row order;
+/* f_i (and torque_i) = the sum of i's incidence records in row order;
  * written, not added (this also clears the force of the step). Then the
  * fused post_force ops [first, first + npost) and final_integrate ops
  * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
  * change f, torque, v and omega. */
-__kernel void pair_gather(const int n, __global const int *inc, __global const int *ncount,
-                          const int maxn, __global const REAL *cf, __global REAL *f,
-                          __global REAL *torque, __global const int *ops, const int first, const int npost,
-                          const int nfinal, __global const REAL *prm, __global REAL *v,
-                          __global REAL *omega, __global const REAL *rmass,
-                          __global const REAL *radius, __global const int *type,
-                          __global const uint *mask)
+__kernel void pair_gather(const int n, __global const int *ioff, __global const REAL *rec,
+                          __global REAL *f, __global REAL *torque, __global const int *ops,
+                          const int first, const int npost, const int nfinal,
+                          __global const REAL *prm, __global REAL *v, __global REAL *omega,
+                          __global const REAL *rmass, __global const REAL *radius,
+                          __global const int *type, __global const uint *mask)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
+    for (int s = ioff[i], e = ioff[i + 1]; s < e; s++) {
+        fs += vload3((size_t)s * REC_RECORDS, rec);
 #ifdef HAS_ROTATION
-    const REAL rad = radius[i];
-#endif
-    const int cnt = ncount[i];
-    __global const int *row = inc + (size_t)i * (size_t)maxn;
-    for (int k = 0; k < cnt; k++) {
-        const int e = row[k];
-        const size_t c = e >= 0 ? (size_t)e : (size_t)(-(e + 1));
-        const REAL3 fc = vload3(c * CF_RECORDS, cf);
-        fs = e >= 0 ? fs + fc : fs - fc;
-#ifdef HAS_ROTATION
-        const REAL3 tq = -rad * vload3(c * CF_RECORDS + 1, cf);
-#ifdef HAS_ROLL_TORQUE
-        const REAL3 tr = vload3(c * CF_RECORDS + 2, cf);
-        ts += e >= 0 ? tq - tr : tq + tr;
-#else
-        ts += tq;
-#endif
+        ts += vload3((size_t)s * REC_RECORDS + 1, rec);
 #endif
     }
     if (npost + nfinal > 0) {

@@ -379,7 +379,6 @@ void eng_prepare(struct gravel *g)
         pair_prepare(g);
     e->rotation = (p && pair_needs_rotation(p)) || (needs & NEED_ROTATION);
     e->history = p && pair_needs_history(p);
-    e->roll_torque = p && pair_needs_roll_torque(p);
 
     const char *names[32], *texts[32];
     int n = 0;
@@ -406,8 +405,6 @@ void eng_prepare(struct gravel *g)
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
                        single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
-    if (e->roll_torque)
-        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D HAS_ROLL_TORQUE");
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);

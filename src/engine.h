@@ -46,7 +46,6 @@ struct engine {
     int single;                 /* REAL = float */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
-    int roll_torque;            /* a pair law has an antisymmetric torque (HAS_ROLL_TORQUE) */
     int cap;                    /* per-atom buffer capacity */
     struct dev_atoms a;
     int active;                 /* inside a run: the device holds the truth */

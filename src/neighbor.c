@@ -37,7 +37,7 @@ struct nbr {
         excl_group, dummy;
     size_t cap_atoms, cap_cells;
     size_t rsz;
-    int history, rotation, roll_torque;
+    int history, rotation;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
     int nexg;
@@ -71,8 +71,8 @@ void nbr_free(struct gravel *g)
         return;
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
-    cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->inc, &l->coff, &l->ci, &l->cj,
-                   &l->shear, &l->cf, &b->coff_old,
+    cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
+                   &l->cslot, &l->shear, &l->rec, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->dummy};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
@@ -129,7 +129,7 @@ static void grow_atoms(struct gravel *g, struct nbr *b, size_t n)
     size_t r = g->eng->rsz;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&b->xhold, &b->cellof, &b->perm, &l->ncount, &l->nown, &l->coff,
-                   &b->coff_old};
+                   &l->ioff, &b->coff_old};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
     b->xhold = eng_alloc(g, 3 * n * r, "neighbor reference positions");
@@ -138,6 +138,7 @@ static void grow_atoms(struct gravel *g, struct nbr *b, size_t n)
     l->ncount = eng_alloc(g, n * sizeof(cl_int), "neighbor counts");
     l->nown = eng_alloc(g, n * sizeof(cl_int), "owned contact counts");
     l->coff = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
+    l->ioff = eng_alloc(g, (n + 1) * sizeof(cl_int), "incidence offsets");
     b->coff_old = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
     b->cap_atoms = n;
 }
@@ -161,22 +162,18 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
 {
     size_t cap = (size_t)g->eng->cap;
     rel(&b->list.nlist);
-    rel(&b->list.inc);
     b->list.nlist = eng_alloc(g, cap * (size_t)maxn * sizeof(cl_int), "neighbor list");
-    b->list.inc = eng_alloc(g, cap * (size_t)maxn * sizeof(cl_int), "contact incidence");
     b->list.maxn = maxn;
 }
 
-/* Bytes of the force record of one contact (kernels/pair_loop.cl). */
-static size_t cf_bytes(const struct engine *e)
-{
-    return (size_t)(e->rotation ? (e->roll_torque ? 9 : 6) : 3) * e->rsz;
-}
+/* Bytes of the incidence records of one contact, both sides
+ * (kernels/pair_loop.cl: force, and torque with rotation). */
+static size_t cf_bytes(const struct engine *e) { return (size_t)(e->rotation ? 12 : 6) * e->rsz; }
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 
 /* Contact buffers for at least nc contacts (contents not kept): ci, cj
- * and shear (cap_contact); the force records cf (cap_pair) separately,
+ * cslot and shear (cap_contact); the incidence records rec (cap_pair) separately,
  * after the history transfer has read what was parked there. */
 static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 {
@@ -185,10 +182,12 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
     if (nc > b->cap_contact || !l->ci) {
         rel(&l->ci);
         rel(&l->cj);
+        rel(&l->cslot);
         rel(&l->shear);
         b->cap_contact = grown(nc);
         l->ci = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact owners");
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
+        l->cslot = eng_alloc(g, b->cap_contact * 2 * sizeof(cl_int), "contact incidences");
         if (e->history)
             l->shear = eng_alloc(g, b->cap_contact * 3 * e->rsz, "contact history");
     }
@@ -197,10 +196,10 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc > b->cap_pair || !l->cf) {
-        rel(&l->cf);
+    if (nc > b->cap_pair || !l->rec) {
+        rel(&l->rec);
         b->cap_pair = grown(nc);
-        l->cf = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "contact forces");
+        l->rec = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence records");
     }
 }
 
@@ -222,8 +221,8 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
         return;
     if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * cf_bytes(e))
         gr_error(g, "internal error: the force buffer cannot hold the previous contacts");
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->cf, 0, 0, hist, 0, NULL, NULL));
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->cf, 0,
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->rec, 0, 0, hist, 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->rec, 0,
                                      b->old_cj_at * sizeof(cl_int), nc * sizeof(cl_int), 0,
                                      NULL, NULL));
 }
@@ -260,7 +259,7 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->shear, &l->cf};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->shear, &l->rec};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
         b->cap_pair = b->cap_contact = 0;
@@ -270,15 +269,12 @@ void nbr_setup(struct gravel *g)
         b->rsz = e->rsz;
         b->history = e->history;
         b->rotation = e->rotation;
-        b->roll_torque = e->roll_torque;
     }
-    if (b->rotation != e->rotation || b->roll_torque != e->roll_torque) {
-        /* contact force records change size */
-        rel(&b->list.cf);
-        b->list.cf = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
-                               "contact forces");
+    if (b->rotation != e->rotation) { /* incidence records change size */
+        rel(&b->list.rec);
+        b->list.rec = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
+                                "incidence records");
         b->rotation = e->rotation;
-        b->roll_torque = e->roll_torque;
     }
     /* exclusions */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
@@ -563,6 +559,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     struct nbr_list *l = &b->list;
     int n = e->a.n;
     nbr_scan(g, l->nown, l->coff, n);
+    nbr_scan(g, l->ncount, l->ioff, n); /* rows packed: 2 incidences per contact */
     cl_int total = 0;
     eng_read(g, l->coff, (size_t)n * sizeof(cl_int), sizeof total, &total);
     alloc_contacts(g, b, (size_t)total);
@@ -576,10 +573,11 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, l->ncount);
     eng_arg_mem(g, k, a++, l->nown);
     eng_arg_mem(g, k, a++, l->coff);
+    eng_arg_mem(g, k, a++, l->ioff);
     eng_arg_mem(g, k, a++, e->a.tag);
     eng_arg_mem(g, k, a++, l->ci);
     eng_arg_mem(g, k, a++, l->cj);
-    eng_arg_mem(g, k, a++, l->inc);
+    eng_arg_mem(g, k, a++, l->cslot);
     eng_arg_mem(g, k, a++, b->flags);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
@@ -601,9 +599,9 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, b->perm);
     eng_arg_int(g, k, a++, permuted);
     eng_arg_mem(g, k, a++, b->coff_old);
-    eng_arg_mem(g, k, a++, l->cf);
+    eng_arg_mem(g, k, a++, l->rec);
     eng_arg_int(g, k, a++, (int)b->old_cj_at);
-    eng_arg_mem(g, k, a++, l->cf);
+    eng_arg_mem(g, k, a++, l->rec);
     eng_arg_mem(g, k, a++, l->shear);
     eng_launch(g, k, (size_t)total);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
@@ -647,7 +645,7 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         k = b->k_hist_rename;
         eng_arg_int(g, k, 0, b->ncontact_old);
         eng_arg_mem(g, k, 1, b->cellof);
-        eng_arg_mem(g, k, 2, b->list.cf);
+        eng_arg_mem(g, k, 2, b->list.rec);
         eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
@@ -835,21 +833,27 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     if (e->history) {
         /* per row slot: the owner's history, its negative on the partner's side */
         s->shear = gr_calloc(g, 3 * (size_t)n * maxn + 1, sizeof(double));
-        int *inc = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
+        int *ioff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+        int *cslot = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
+        int *owner = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
         double *sh = gr_malloc(g, (3 * (size_t)nc + 1) * sizeof(double));
-        eng_read(g, l->inc, 0, (size_t)n * maxn * sizeof(cl_int), inc);
+        eng_read(g, l->ioff, 0, ((size_t)n + 1) * sizeof(cl_int), ioff);
+        eng_read(g, l->cslot, 0, 2 * (size_t)nc * sizeof(cl_int), cslot);
         eng_read_reals(g, l->shear, 3 * (size_t)nc, sh);
+        /* incidence -> row slot: the atom whose packed row holds it */
         for (int i = 0; i < n; i++)
-            for (int k = 0; k < s->ncount[i]; k++) {
-                size_t slot = (size_t)i * maxn + k;
-                int c = inc[slot];
-                double sign = c >= 0 ? 1.0 : -1.0;
-                if (c < 0)
-                    c = -(c + 1);
+            for (int q = ioff[i]; q < ioff[i + 1]; q++)
+                owner[q] = i;
+        for (int c = 0; c < nc; c++)
+            for (int side = 0; side < 2; side++) {
+                int q = cslot[2 * c + side], i = owner[q];
+                size_t slot = (size_t)i * maxn + (size_t)(q - ioff[i]);
                 for (int d = 0; d < 3; d++)
-                    s->shear[3 * slot + d] = sign * sh[3 * (size_t)c + d];
+                    s->shear[3 * slot + d] = (side ? -1.0 : 1.0) * sh[3 * (size_t)c + d];
             }
-        free(inc);
+        free(ioff);
+        free(cslot);
+        free(owner);
         free(sh);
     }
     return 1;
@@ -888,15 +892,17 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     const int64_t *tag = g->atoms.tag;
     size_t slots = (size_t)n * maxn;
     int *row = gr_malloc(g, (slots + 1) * sizeof(int));
-    int *inc = gr_malloc(g, (slots + 1) * sizeof(int));
+    int *ioff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int *nown = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int *coff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     double *rsh = e->history ? gr_calloc(g, 3 * slots + 1, sizeof(double)) : NULL;
     memcpy(row, s->nlist, slots * sizeof(int));
     if (rsh && s->shear)
         memcpy(rsh, s->shear, 3 * slots * sizeof(double));
-    size_t total = 0;
+    size_t total = 0, nin = 0;
     for (int i = 0; i < n; i++) {
+        ioff[i] = (int)nin;
+        nin += (size_t)s->ncount[i];
         sort_row(row + (size_t)i * maxn, rsh ? rsh + 3 * (size_t)i * maxn : NULL, s->ncount[i],
                  tag);
         int own = 0;
@@ -907,7 +913,9 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         total += (size_t)own;
     }
     coff[n] = (int)total;
+    ioff[n] = (int)nin;
     int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
+    int *cslot = gr_malloc(g, (2 * total + 1) * sizeof(int));
     double *sh = e->history ? gr_calloc(g, 3 * total + 1, sizeof(double)) : NULL;
     int asym = 0;
     for (int i = 0; i < n && !asym; i++) {
@@ -919,7 +927,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
                 int c = coff[i] + k - first;
                 ci[c] = i;
                 cj[c] = j;
-                inc[slot] = c;
+                cslot[2 * c] = ioff[i] + k;
                 if (sh)
                     memcpy(sh + 3 * (size_t)c, rsh + 3 * slot, 3 * sizeof(double));
                 continue;
@@ -932,7 +940,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
                 asym = 1;
                 break;
             }
-            inc[slot] = -(coff[j] + at - jfirst + 1);
+            cslot[2 * (coff[j] + at - jfirst) + 1] = ioff[i] + k;
         }
     }
     if (!asym) {
@@ -942,7 +950,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         l->ncontact = (int)total;
         eng_write(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
         eng_write(g, l->nlist, 0, slots * sizeof(cl_int), row);
-        eng_write(g, l->inc, 0, slots * sizeof(cl_int), inc);
+        eng_write(g, l->ioff, 0, ((size_t)n + 1) * sizeof(cl_int), ioff);
+        eng_write(g, l->cslot, 0, 2 * total * sizeof(cl_int), cslot);
         eng_write(g, l->nown, 0, (size_t)n * sizeof(cl_int), nown);
         eng_write(g, l->coff, 0, ((size_t)n + 1) * sizeof(cl_int), coff);
         eng_write(g, l->ci, 0, total * sizeof(cl_int), ci);
@@ -952,7 +961,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
     }
     free(row);
-    free(inc);
+    free(ioff);
+    free(cslot);
     free(nown);
     free(coff);
     free(rsh);

@@ -12,14 +12,15 @@
 
 struct nbr_list {
     /* full rows in ascending partner tag: nlist[i maxn + k] (k < ncount[i])
-     * is the device index of i's k-th neighbor, inc[i maxn + k] its contact
-     * (c when i owns it, -(c + 1) when the partner does) */
-    cl_mem nlist, ncount, nown, inc;
+     * is the device index of i's k-th neighbor; its incidence (the record
+     * of what i receives from that contact) is ioff[i] + k */
+    cl_mem nlist, ncount, nown, ioff;
     int maxn;
     /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1;
-     * ci/cj the two atoms; shear (3 REAL, history only) seen from ci; cf the
-     * contact force records of the step (kernels/pair_loop.cl) */
-    cl_mem coff, ci, cj, shear, cf;
+     * ci/cj the two atoms; cslot[2c], cslot[2c + 1] their incidences;
+     * shear (3 REAL, history only) seen from ci; rec the incidence records
+     * of the step (kernels/pair_loop.cl) */
+    cl_mem coff, ci, cj, cslot, shear, rec;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
 };

@@ -290,15 +290,6 @@ int pair_needs_rotation(const struct pair *p)
     return r;
 }
 
-int pair_needs_roll_torque(const struct pair *p)
-{
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), r = 0;
-    for (int k = 0; k < n; k++)
-        r |= t[k]->style->roll_torque;
-    return r;
-}
-
 int pair_needs_history(const struct pair *p)
 {
     const struct pair *t[PAIR_MAXTERMS];

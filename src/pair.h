@@ -33,7 +33,6 @@ struct pair_style {
     const char *eval;           /* evaluator function, "gran_hooke_history_eval" */
     int history;                /* needs per-contact shear history (3 REAL / contact) */
     int rotation;               /* needs omega and torque */
-    int roll_torque;            /* sets contact_force.tr (rolling resistance) */
     int nparam;                 /* packed REALs per type pair */
     /* pair_style arguments (after the style name). */
     void (*settings)(struct gravel *g, struct pair *p, int argc, char **argv);
@@ -100,8 +99,6 @@ void pair_release(struct pair *p);
  * term that acts beyond body contact (cohesion: HAS_COHESION). */
 int pair_needs_rotation(const struct pair *p);
 int pair_needs_history(const struct pair *p);
-/* Some term has an antisymmetric torque (rolling resistance: contact_force.tr). */
-int pair_needs_roll_torque(const struct pair *p);
 int pair_has_cohesion(const struct pair *p);
 /* Neighbor cut-off without skin for a pair of radius sum `radsum`: radsum
  * unless a cohesion term reaches farther. */

@@ -116,6 +116,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_int(g, k, i++, l->ncontact);
         eng_arg_mem(g, k, i++, l->ci);
         eng_arg_mem(g, k, i++, l->cj);
+        eng_arg_mem(g, k, i++, l->cslot);
         eng_arg_mem(g, k, i++, a->x);
         eng_arg_mem(g, k, i++, a->v);
         eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
@@ -132,15 +133,13 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, i++, l->L[q]);
-        eng_arg_mem(g, k, i++, l->cf);
+        eng_arg_mem(g, k, i++, l->rec);
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
         i = 0;
         eng_arg_int(g, k, i++, a->n);
-        eng_arg_mem(g, k, i++, l->inc);
-        eng_arg_mem(g, k, i++, l->ncount);
-        eng_arg_int(g, k, i++, l->maxn);
-        eng_arg_mem(g, k, i++, l->cf);
+        eng_arg_mem(g, k, i++, l->ioff);
+        eng_arg_mem(g, k, i++, l->rec);
         eng_arg_mem(g, k, i++, a->f);
         eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
         /* fused post_force ops, and the final kick except at setup */

@@ -102,7 +102,6 @@ const struct pair_style pair_style_hertz_mindlin = {
     .eval = "hertz_mindlin_eval",
     .history = 1,
     .rotation = 1,
-    .roll_torque = 1,
     .nparam = HM_NPARAM,
     .settings = settings,
     .pack = pack,
