@@ -13,11 +13,11 @@ the Tsuji-type damping of hertz/mindlin rebounds at e itself (a fine-step
 solution of its ODE agrees to 1e-6), so both laws are checked against e.
 
 Known limit (asserted as measured, not as the contract): the linear law at
-t_col/8 and e < 0.1. There the step is longer than the time the contact
-takes to reach its maximum overlap (0.42 of the speed-scaled maximum at
-e = 0.01 against a step of 0.70), so for some entry phases the first kick
-sees a free-flight overlap deeper than any the real collision reaches, and
-no history-free kick can tell that state from a harder collision's.
+t_col/8 and e < 0.1. There one step of free flight, u0 t_col/8, is longer
+than the deepest overlap the collision reaches (1.7 times at e = 0.01, 1.17
+at e = 0.05, 0.97 at e = 0.1), so for entry phases near a step the first
+kick sees an overlap no real collision at that speed has: to a history-free
+kick that state is the same as a harder collision's, and it rebounds as one.
 
 `verify_restitution.py --table` prints the markdown table that
 tools/verify_doc.py puts in doc/verification.md."""
