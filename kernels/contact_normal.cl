@@ -7,7 +7,9 @@
  * the contact (an elastic collision rebounds at up to 1 + (w dt)^2/8), and an
  * explicit dashpot lags by half a step (+3 % restitution at t_col/8). Here
  * the kick of one step is the one that makes the two-body collision exact in
- * energy (elastic part) and in impulse (dashpot), whatever the phase.
+ * energy (elastic part) and in impulse (dashpot), whatever the phase; the
+ * dashpot coefficient is then corrected (normal_damping_scale) for the
+ * scheme's own restitution error, which is large at low e.
  *
  * Both laws have the shape U(d) = cv^2 P(d)^2 (elastic energy) and
  * H(d) = ch P(d) (dashpot impulse per overlap, H' = eta), with
