@@ -7,7 +7,8 @@
  *   eta   = ceta sqrt(m*),  t_col = ctcol sqrt(m*)     (host-precomputed)
  *   F_n   = (ke delta - eta vr.n) n                    [force units]
  * integrated over each step as a two-body impulse (kernels/contact_normal.cl:
- * exact energy for the spring, exact impulse for the dashpot, at the partial
+ * exact energy for the spring, exact impulse for the dashpot (its coefficient
+ * corrected for the scheme's restitution error at large damping), at the partial
  * steps where the contact starts and ends too; ke delta inside the contact).
  *   F_t   = -u_t/|u_t| min(kf |u_t| t_col, mu |F_n|)
  * The normal force is not clamped at zero: the analytic solution of 000 A.1

@@ -15,6 +15,8 @@
 #include "compute.h"
 #include "dump.h"
 #include "error.h"
+#include "fix.h"
+#include "pair.h"
 #include "thermo.h"
 #include "variable.h"
 
@@ -59,6 +61,141 @@ static void thermo_print(struct gravel *g)
     st->last_thermo = g->step;
 }
 
+/* Kinetic energy, translational and rotational (solid spheres), of the host
+ * copy of the atoms. */
+static double kinetic_energy(const struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    double e = 0.0;
+    for (int i = 0; i < a->n; i++) {
+        const double *v = a->v + 3 * i;
+        e += 0.5 * a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (a->omega) {
+            const double *w = a->omega + 3 * i;
+            e += 0.2 * a->rmass[i] * a->radius[i] * a->radius[i] *
+                 (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        }
+    }
+    return e;
+}
+
+/* Elastic energy stored in the particle contacts (host copy; each pair once,
+ * nearest periodic image), binned in cells of at least the largest contact
+ * distance. */
+static double contact_energy(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    const struct domain *dm = &g->dom;
+    const struct pair *p = g->styles.pair;
+    double rmax = 0.0, len[3];
+    int nc[3];
+    for (int i = 0; i < a->n; i++)
+        rmax = fmax(rmax, a->radius[i]);
+    if (!(rmax > 0.0))
+        return 0.0;
+    size_t ncell = 1;
+    for (int d = 0; d < 3; d++) {
+        len[d] = dm->hi[d] - dm->lo[d];
+        double n = floor(len[d] / (2.0 * rmax));
+        nc[d] = n < 1.0 ? 1 : n > 64.0 ? 64 : (int)n;
+        if (dm->periodic[d] && nc[d] < 3)
+            nc[d] = 1;          /* offsets -1..1 would visit one cell twice */
+        ncell *= (size_t)nc[d];
+    }
+    int *head = gr_malloc(g, ncell * sizeof *head), *next = gr_malloc(g, (size_t)a->n * sizeof *next);
+    int *cell = gr_malloc(g, (size_t)a->n * sizeof *cell);
+    for (size_t c = 0; c < ncell; c++)
+        head[c] = -1;
+    for (int i = 0; i < a->n; i++) {
+        int c = 0;
+        for (int d = 2; d >= 0; d--) {
+            int k = (int)floor((a->x[3 * i + d] - dm->lo[d]) / len[d] * nc[d]);
+            k = k < 0 ? 0 : k >= nc[d] ? nc[d] - 1 : k;
+            c = c * nc[d] + k;
+        }
+        cell[i] = c;
+        next[i] = head[c];
+        head[c] = i;
+    }
+    double e = 0.0;
+    for (int i = 0; i < a->n; i++) {
+        int ci[3] = {cell[i] % nc[0], cell[i] / nc[0] % nc[1], cell[i] / (nc[0] * nc[1])};
+        for (int oz = -1; oz <= 1; oz++)
+            for (int oy = -1; oy <= 1; oy++)
+                for (int ox = -1; ox <= 1; ox++) {
+                    int o[3] = {ox, oy, oz}, k[3], skip = 0;
+                    for (int d = 0; d < 3 && !skip; d++) {
+                        if (nc[d] == 1 && o[d] != 0)
+                            skip = 1;
+                        k[d] = ci[d] + o[d];
+                        if (k[d] < 0 || k[d] >= nc[d]) {
+                            if (dm->periodic[d])
+                                k[d] = (k[d] + nc[d]) % nc[d];
+                            else
+                                skip = 1;
+                        }
+                    }
+                    if (skip)
+                        continue;
+                    for (int j = head[(k[2] * nc[1] + k[1]) * nc[0] + k[0]]; j >= 0; j = next[j]) {
+                        if (j <= i)
+                            continue;
+                        double rsq = 0.0;
+                        for (int d = 0; d < 3; d++) {
+                            double dx = a->x[3 * i + d] - a->x[3 * j + d];
+                            if (dm->periodic[d])
+                                dx -= len[d] * nearbyint(dx / len[d]);
+                            rsq += dx * dx;
+                        }
+                        double rs = a->radius[i] + a->radius[j];
+                        if (rsq < rs * rs)
+                            e += p->style->contact_energy(p, rs - sqrt(rsq),
+                                                          a->radius[i] * a->radius[j] / rs);
+                    }
+                }
+    }
+    free(head);
+    free(next);
+    free(cell);
+    return e;
+}
+
+/* Energy is conserved (issue 13 item 6) when the pair style says so for its
+ * coefficients and every fix only integrates or holds atoms: no gravity
+ * (its potential energy is not counted), walls, drag or damping. Then the
+ * kinetic plus contact elastic energy at the start and end of the run
+ * measure the integrator's drift. */
+static int conserving_scene(const struct gravel *g)
+{
+    const struct pair *p = g->styles.pair;
+    if (!p || !p->style->conservative || !p->style->contact_energy || !p->style->conservative(p) ||
+        g->atoms.n == 0)
+        return 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const char *n = g->styles.fix[i]->style->name;
+        if (strcmp(n, "nve") && strcmp(n, "nve/sphere") && strcmp(n, "freeze"))
+            return 0;
+    }
+    return 1;
+}
+
+/* Collision time of the lightest particle (as the setup line of run.c). */
+static double scene_collision_time(const struct gravel *g)
+{
+    const struct pair *p = g->styles.pair;
+    double m = INFINITY, r = 0, vmax = 0;
+    for (int i = 0; i < g->atoms.n; i++) {
+        if (g->atoms.rmass[i] < m) {
+            m = g->atoms.rmass[i];
+            r = g->atoms.radius[i];
+        }
+        for (int d = 0; d < 3; d++)
+            vmax = fmax(vmax, fabs(g->atoms.v[3 * i + d]));
+    }
+    return p->style->collision_time ? p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0)
+                                    : NAN;
+}
+
 void output_setup(struct gravel *g)
 {
     struct output_state *st = output_state(g);
@@ -71,6 +208,13 @@ void output_setup(struct gravel *g)
     dump_setup_all(g);
     emit(g, thermo_header_text(g));
     thermo_print(g);
+    st->drift_on = conserving_scene(g);
+    if (st->drift_on) {
+        run_sync_host(g);
+        st->drift_e0 = kinetic_energy(g) + contact_energy(g);
+        st->drift_t0 = g->time;
+        st->drift_tcol = scene_collision_time(g);
+    }
     st->firstflag = 0;
     st->next_thermo = g->laststep > g->step ? next_thermo(g, g->step) : g->step;
     progress_begin(g);
@@ -216,6 +360,16 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     if (s->natoms > 0)
         gr_print(g, "Device memory = %.4g Mbytes at most (%.0f bytes per atom)\n",
                  s->mem_peak / 1e6, s->mem_peak / s->natoms);
+    struct output_state *st = output_state(g);
+    double ncol = st->drift_on && st->drift_tcol > 0 ? (g->time - st->drift_t0) / st->drift_tcol : 0;
+    if (ncol > 0 && st->drift_e0 > 0) {
+        double e1 = kinetic_energy(g) + contact_energy(g);
+        gr_print(g, "Energy drift (energy-conserving run) = %+.4g per collision time "
+                    "(kinetic + contact energy %.10g -> %.10g over %.4g collision times of "
+                    "%.4g)\n",
+                 (e1 - st->drift_e0) / st->drift_e0 / ncol, st->drift_e0, e1, ncol,
+                 st->drift_tcol);
+    }
     if (g->screen)
         fflush(g->screen);
     if (g->logfile)

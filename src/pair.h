@@ -41,6 +41,12 @@ struct pair_style {
     /* Estimated duration of a binary collision of two particles of mass m and
      * radius r approaching at speed vn (for time-step diagnostics). */
     double (*collision_time)(const struct pair *p, double m, double r, double vn);
+    /* 1 when these coefficients conserve energy: elastic normal law, no
+     * friction or damping (the run footer then reports the energy drift).
+     * NULL: never. */
+    int (*conservative)(const struct pair *p);
+    /* Elastic energy of a contact of overlap delta > 0 and R* = reff (with it). */
+    double (*contact_energy)(const struct pair *p, double delta, double reff);
     /* ---- composition and cohesion (cohesion helper; all optional) ---- */
     /* Acts beyond body contact (cohesion): the loop hands it every listed
      * pair and the evaluator gates itself; the neighbor cut-off grows to

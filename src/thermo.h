@@ -27,6 +27,10 @@ struct output_state {
     double prog_last_wall;
     int prog_len;               /* length of the line currently shown */
     char *text;                 /* buffer behind thermo_*_text */
+    /* energy drift of a conserving run (output.c): kinetic energy and time
+     * at output_setup, collision time of the setup's lightest particle */
+    int drift_on;
+    double drift_e0, drift_t0, drift_tcol;
     size_t text_len, text_cap;
 };
 

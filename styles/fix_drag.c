@@ -101,11 +101,38 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "fix_drag.cl";
 }
 
+/* The explicit update advances the half-step velocity by forward Euler,
+ * v += dt (u_f - v)/tau_p: the error is multiplied by 1 - dt/tau_p per step,
+ * which decays only for dt < 2 tau_p (at 2 tau_p it flips sign undamped,
+ * above it grows). Warn once per run when the smallest tau_p of the group
+ * (the lightest/smallest particle: tau_p = m / (3 pi mu d)) is past it. */
+static void check_explicit_limit(struct gravel *g, struct fix *f, const struct drag *d)
+{
+    const struct atoms *a = &g->atoms;
+    double taumin = 0.0;
+    int64_t tag = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & f->groupbit) || !(a->radius[i] > 0.0))
+            continue;
+        double tau = a->rmass[i] / (6.0 * M_PI * d->mu * a->radius[i]);
+        if (tag == 0 || tau < taumin) {
+            taumin = tau;
+            tag = a->tag[i];
+        }
+    }
+    if (tag != 0 && g->dt >= 2.0 * taumin * (1.0 - 1e-12))
+        gr_warn(g, "fix %s drag update explicit: timestep %g is %.3g tau_p of atom %lld "
+                   "(tau_p = %g, the smallest in the group): at or past the explicit limit 2 tau_p "
+                   "the velocity oscillates without decay or grows; use update implicit or exact",
+                f->id, g->dt, g->dt / taumin, (long long)tag, taumin);
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct drag *d = f->data;
     if (d->update == UPD_EXPLICIT) {
         d->kexp = eng_kernel(g, "drag_explicit");
+        check_explicit_limit(g, f, d);
         return;
     }
     if (d->update == UPD_TRAPEZOIDAL) {

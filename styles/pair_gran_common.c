@@ -57,6 +57,21 @@ void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param)
     param[GRAN_LIMIT] = p->coef[C_LIMIT];
 }
 
+/* gamman = 0 and xmu = 0: the normal spring alone (any tangential force is
+ * capped at xmu F_n) */
+int pair_gran_conservative(const struct pair *p)
+{
+    return p->coef[C_GAMMAN] == 0.0 && p->coef[C_XMU] == 0.0;
+}
+
+/* Elastic energy of a contact: hooke F = kn delta, hertz F = kn sqrt(R*) delta^1.5 */
+double pair_gran_contact_energy(const struct pair *p, double delta, double reff)
+{
+    if (!strcmp(p->style->name, "gran/hertz/history"))
+        return 0.4 * p->coef[C_KN] * sqrt(reff) * delta * delta * sqrt(delta);
+    return 0.5 * p->coef[C_KN] * delta * delta;
+}
+
 /* Half period of the damped linear oscillator of two equal spheres
  * (meff = m/2): pi / sqrt(kn/meff - (gamman/2)^2); for Hertz, kn is scaled by
  * sqrt(delta r/2) at the maximum overlap of an undamped impact at speed vn. */

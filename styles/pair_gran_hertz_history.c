@@ -4,6 +4,8 @@
 #include "pair.h"
 
 double pair_gran_collision_time(const struct pair *p, double m, double r, double vn);
+int pair_gran_conservative(const struct pair *p);
+double pair_gran_contact_energy(const struct pair *p, double delta, double reff);
 
 const struct pair_style pair_style_gran_hertz_history = {
     .name = "gran/hertz/history",
@@ -15,4 +17,6 @@ const struct pair_style pair_style_gran_hertz_history = {
     .settings = pair_gran_settings,
     .pack = pair_gran_pack,
     .collision_time = pair_gran_collision_time,
+    .conservative = pair_gran_conservative,
+    .contact_energy = pair_gran_contact_energy,
 };

@@ -86,6 +86,18 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
 /* Hertz contact duration of two equal spheres (m* = m/2, R* = r/2) at impact
  * speed vn: 2.87 (m*^2 / (R* E*^2 vn))^(1/5). Without a speed, use 1e-3 of
  * the elastic wave speed sqrt(E/rho) as a typical impact speed. */
+/* e = 1 (no dashpot), mu = 0 (no tangential force), mu_r = 0 (no rolling torque) */
+static int conservative(const struct pair *p)
+{
+    return p->coef[C_REST] == 1.0 && p->coef[C_MU] == 0.0 && p->coef[C_MUR] == 0.0;
+}
+
+/* U = 0.4 kn sqrt(R*) delta^2.5, kn = 4/3 E* (F = kn sqrt(R*) delta^1.5) */
+static double contact_energy(const struct pair *p, double delta, double reff)
+{
+    return 0.4 * (4.0 / 3.0) * estar(p) * sqrt(reff) * delta * delta * sqrt(delta);
+}
+
 static double collision_time(const struct pair *p, double m, double r, double vn)
 {
     double es = estar(p), ms = 0.5 * m, rs = 0.5 * r;
@@ -106,4 +118,6 @@ const struct pair_style pair_style_hertz_mindlin = {
     .settings = settings,
     .pack = pack,
     .collision_time = collision_time,
+    .conservative = conservative,
+    .contact_energy = contact_energy,
 };

@@ -84,6 +84,18 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
 }
 
 /* Collision time (eq. 2.15) of two equal particles of mass m: m* = m/2. */
+/* e = 1 and mu = 0: spring only (kf acts only under the Coulomb cap mu |F_n|) */
+static int conservative(const struct pair *p)
+{
+    return p->coef[C_E] == 1.0 && p->coef[C_MU] == 0.0;
+}
+
+static double contact_energy(const struct pair *p, double delta, double reff)
+{
+    (void)reff;
+    return 0.5 * p->coef[C_KE] * delta * delta;
+}
+
 static double collision_time(const struct pair *p, double m, double r, double vn)
 {
     (void)r;
@@ -101,4 +113,6 @@ const struct pair_style pair_style_linear_restitution = {
     .settings = settings,
     .pack = pack,
     .collision_time = collision_time,
+    .conservative = conservative,
+    .contact_energy = contact_energy,
 };

@@ -203,9 +203,16 @@ def collision_checks():
     # time-step sweep t_col/8 .. /128 in both precisions. The particle enters
     # body contact at speed u_i, so the dashpot force eta u_i switches on within
     # a step; the normal impulse of linear/restitution carries the partial
-    # step (kernels/contact_normal.cl), so the escape-speed error is second
-    # order whatever the phase. Checked: below 3e-3 at t_col/32, falling at
-    # every halving of dt at an observed order >= 1.8 (double), double no
+    # step (kernels/contact_normal.cl), so the escape-speed error converges
+    # whatever the phase. Its second-order part (the partial steps) is
+    # cancelled by the dashpot correction of contact_normal.cl (errors 6.6,
+    # 4.2, 2.7, 1.4 times smaller at t_col/8 ... /64 than before it, 5.3e-4
+    # at t_col/32, 1.4 times larger at t_col/128: 7.2e-5); what is left mixes
+    # that with the first-order term of the two-body prediction under the
+    # cohesive load (doc/contact_normal.md, Limits), observed order 1.44 over
+    # t_col/8 .. /128. Checked: below 1e-3
+    # at t_col/32, falling at every halving of dt at an observed order >= 1.3
+    # (double), double no
     # worse than single beyond single's round-off (1e-4 relative over ~10^4
     # steps), and no energy gain (0 < u_out < |u_0|).
     table = {}
@@ -217,8 +224,8 @@ def collision_checks():
                      for n in (8, 16, 32, 64, 128))
     d = [table[("double", n)][1] for n in (8, 16, 32, 64, 128)]
     observed = math.log(d[0] / d[4]) / math.log(16.0) if d[4] > 0 else float("inf")
-    check("cohesion_collision_dt_sweep_second_order",
-          d[2] < 3e-3 and all(d[k + 1] < d[k] for k in range(4)) and observed >= 1.8,
+    check("cohesion_collision_dt_sweep_converges",
+          d[2] < 1e-3 and all(d[k + 1] < d[k] for k in range(4)) and observed >= 1.3,
           "relative escape-speed errors %s, observed order %.2f" % (lines, observed))
     check("cohesion_collision_double_not_worse",
           all(table[("double", n)][1] <= table[("single", n)][1] + 1e-4 for n in (8, 16, 32, 64, 128)),

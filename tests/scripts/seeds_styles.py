@@ -358,6 +358,39 @@ run %d
                   w1 > 0 and abs(w1 - w2) <= 1e-4 * w1, "E_rot %.6g %.6g" % (w1, w2))
 
 
+def drag_explicit_limit():
+    """fix drag update explicit warns at setup when dt >= 2 tau_p of the
+    smallest particle of its group (forward Euler on the velocity: stable
+    below), naming the fix, dt, tau_p and the atom, with the run's line; at
+    1.9 tau_p it stays silent and the particle relaxes to the flow."""
+    mu, rho = 0.05, 2500.0
+    dsmall, dbig = 0.01, 0.02
+    tau = rho * dsmall ** 2 / (18 * mu)
+    for ratio, warn in ((1.9, False), (2.0, True), (3.0, True)):
+        body = ("create_atoms 1 single 0 0 0\ncreate_atoms 1 single 0.5 0 0\n"
+                "set atom 1 diameter %g density %g\nset atom 2 diameter %g density %g\n"
+                "velocity all set 1 0 0\ntimestep %.17g\nfix i all nve/sphere\n"
+                "fix slow all drag %g uniform 0 0 0 update explicit\n"
+                "variable v2 equal vx[2]\nthermo_style custom step v_v2\nrun 40\n"
+                % (dbig, rho, dsmall, rho, ratio * tau, mu))
+        rc, out, last = run(BOX + body)
+        nline = (BOX + body).count("\n")          # the run command is the last line
+        warned = [l for l in out.splitlines() if l.startswith("WARNING") and "drag" in l]
+        if warn:
+            w = warned[0] if warned else ""
+            # past the limit the particle may leave the box: the warning came first
+            ok = (len(warned) == 1 and "fix slow drag update explicit" in w
+                  and ("timestep %g" % (ratio * tau)) in w and ("tau_p = %g" % tau) in w
+                  and "atom 2" in w and "update implicit or exact" in w and w.endswith("in.test:%d)" % nline))
+            check("drag explicit at dt = %.1f tau_p: setup warning names fix, dt, tau_p, atom, line"
+                  % ratio, ok, w[:200] or out.strip()[-200:])
+        else:
+            ok = (rc == 0 and not warned and last is not None
+                  and abs(float(last["v_v2"])) < 0.05)
+            check("drag explicit at dt = 1.9 tau_p: no warning, stable", ok,
+                  "%s %s" % (warned[:1], last))
+
+
 def main():
     errors()
     taylor_green()
@@ -367,6 +400,7 @@ def main():
     rolling_resistance()
     oblique_pair()
     wall_bounce()
+    drag_explicit_limit()
     return 1 if failures else 0
 
 
