@@ -24,19 +24,14 @@
 #endif
 
 #ifdef PAIR_EVAL
-/* The contact between i and j as the evaluators see it (del = x_i - x_j). */
-static inline struct contact pair_contact(const int i, const int j, __global const REAL *x,
+/* The contact between i and j as the evaluators see it (del = x_i - x_j,
+ * already computed: the rest is loaded only for pairs that interact). */
+static inline struct contact pair_contact(const int i, const int j, const REAL3 del,
+                                          const REAL radi, const REAL radj,
                                           __global const REAL *v, __global const REAL *omega,
-                                          __global const REAL *radius,
                                           __global const REAL *rmass, __global const uint *mask,
-                                          const uint freezebit, const REAL Lx, const REAL Ly,
-                                          const REAL Lz)
+                                          const uint freezebit)
 {
-    REAL3 del = vload3(i, x) - vload3(j, x);
-    del.x = MINIMG_X(del.x, Lx);
-    del.y = MINIMG_Y(del.y, Ly);
-    del.z = MINIMG_Z(del.z, Lz);
-    const REAL radi = radius[i], radj = radius[j];
 #ifdef HAS_ROTATION
     const REAL3 omi = vload3(i, omega), omj = vload3(j, omega);
 #else
@@ -66,13 +61,17 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     if (c >= ncontact)
         return;
     const int i = ci[c], j = cj[c];
-    struct contact k = pair_contact(i, j, x, v, omega, radius, rmass, mask, freezebit, Lx, Ly,
-                                    Lz);
+    REAL3 del = vload3(i, x) - vload3(j, x);
+    del.x = MINIMG_X(del.x, Lx);
+    del.y = MINIMG_Y(del.y, Ly);
+    del.z = MINIMG_Z(del.z, Lz);
+    const REAL radi = radius[i], radj = radius[j];
     struct contact_force out;
     out.f = out.tc = out.tr = (REAL3)(0);
 #ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
                         * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
-    if (k.rsq >= k.radsum * k.radsum) {
+    const REAL radsum = radi + radj;
+    if (del.x * del.x + del.y * del.y + del.z * del.z >= radsum * radsum) {
 #ifdef HAS_HISTORY
         /* a separated pair forgets its history; most are zero already */
         const REAL3 old = vload3(c, shear);
@@ -82,6 +81,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     } else
 #endif
     {
+        struct contact k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
         k.dt = dt;
         k.shearupdate = shearupdate;
         __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
@@ -100,8 +100,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     vstore3(out.f, si, rec);
     vstore3(-out.f, sj, rec);
 #ifdef HAS_ROTATION
-    vstore3(-k.radi * out.tc - out.tr, si + 1, rec);
-    vstore3(-k.radj * out.tc + out.tr, sj + 1, rec);
+    vstore3(-radi * out.tc - out.tr, si + 1, rec);
+    vstore3(-radj * out.tc + out.tr, sj + 1, rec);
 #endif
 }
 #endif /* PAIR_EVAL */

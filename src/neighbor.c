@@ -613,6 +613,8 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
 static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t bytes, int n)
 {
     struct engine *e = g->eng;
+    if (n == 0)
+        return;
     cl_kernel k = b->k_reorder_words;
     eng_arg_int(g, k, 0, n);
     eng_arg_int(g, k, 1, (int)(bytes / 4));
