@@ -71,6 +71,10 @@ struct fix_style {
      * the start of the next run (after init); it validates len itself. */
     size_t (*write_restart)(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
     void (*read_restart)(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);
+    /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
+     * values, vector(g, f, i) returns value i (1-based) at the current step. */
+    int size_vector;
+    double (*vector)(struct gravel *g, struct fix *f, int i);
 };
 
 struct fix {

@@ -8,6 +8,8 @@
  *   Kt NULL    -> 2/7 Kn;  gammat NULL -> gamman/2;  dampflag 0 -> gammat = 0
  *   wallstyle  xplane lo hi | yplane lo hi | zplane lo hi  (NULL = no face)
  *              zcylinder R  (axis z through x = y = 0)
+ *              mesh n_meshes N meshes ID ...  (LIGGGHTS: triangle meshes of fix
+ *              mesh/surface, moved by fix move/mesh; kernels/wall.cl MESH_KERNEL)
  *   wiggle d A T   the wall oscillates along d: position lo + A (1 - cos wt),
  *                  velocity A w sin wt, w = 2 pi / T, t from the fix's creation
  *   shear d v      the wall moves along d at v (position unchanged)
@@ -24,9 +26,11 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_mesh_surface.h"
 #include "wall.h"
 
-enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3 };
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4 };
+#define MAX_MESHES 16
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 
@@ -39,10 +43,16 @@ struct wall {
     double amplitude, period, omega, vshear;
     bigint time_origin;
     struct wall_law law;
+    /* wallstyle mesh */
+    int nmesh;
+    char mesh_id[MAX_MESHES][GR_NAMELEN];
+    struct wall_mesh wm[MAX_MESHES];
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history"};
+static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
+                                          "mesh_gran_hertz_history"};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -121,12 +131,33 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.style = W_ZCYLINDER;
         w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
         i += 2;
+    } else if (!strcmp(ws, "mesh")) {
+        /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
+        if (i + 2 >= argc || strcmp(argv[i + 1], "n_meshes"))
+            gr_error(g, "fix wall/gran mesh expects 'n_meshes N meshes ID ...'");
+        w.style = W_MESH;
+        w.nmesh = arg_int_range(g, argv[i + 2], 1, MAX_MESHES, "n_meshes");
+        if (i + 3 >= argc || strcmp(argv[i + 3], "meshes"))
+            gr_error(g, "fix wall/gran mesh expects 'meshes' and %d mesh ID(s) after n_meshes",
+                     w.nmesh);
+        if (i + 3 + w.nmesh >= argc)
+            gr_error(g, "fix wall/gran mesh: n_meshes is %d but %d mesh ID(s) follow", w.nmesh,
+                     argc - i - 4);
+        for (int m = 0; m < w.nmesh; m++) {
+            const char *id = argv[i + 4 + m];
+            mesh_surface_get(g, id, "fix wall/gran mesh");
+            for (int q = 0; q < m; q++)
+                if (!strcmp(w.mesh_id[q], id))
+                    gr_error(g, "fix wall/gran mesh: mesh %s is listed twice", id);
+            snprintf(w.mesh_id[m], GR_NAMELEN, "%s", id);
+        }
+        i += 4 + w.nmesh;
     } else if (!strcmp(ws, "region")) {
         gr_error(g, "fix wall/gran wall style 'region' is not supported (use xplane, yplane, "
                     "zplane or zcylinder)");
     } else {
-        gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane "
-                    "or zcylinder)", ws);
+        gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
+                    "zcylinder or mesh)", ws);
     }
     while (i < argc) {
         if (!strcmp(argv[i], "wiggle")) {
@@ -144,11 +175,16 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 3;
         } else if (!strcmp(argv[i], "contacts")) {
             gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (w.style == W_MESH) {
+            gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
         } else {
             gr_error(g, "unknown fix wall/gran keyword '%.64s' (expected wiggle or shear)",
                      argv[i]);
         }
     }
+    if (w.style == W_MESH && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
+                    "move/mesh)");
     if (w.style <= W_ZPLANE && g->dom.periodic[w.style])
         gr_error(g, "cannot use a %s wall in the periodic dimension %c", ws, 'x' + w.style);
     if (w.style == W_ZCYLINDER && (g->dom.periodic[0] || g->dom.periodic[1]))
@@ -208,11 +244,64 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     return geom;
 }
 
+/* Mesh walls at run start: bins sized for the largest particle, history
+ * slots per mesh, and this fix as the one that reports each mesh's force. */
+static void init_mesh(struct gravel *g, struct fix *f, struct wall *w)
+{
+    double reach = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
+    reach *= 1.0 + 1e-6;
+    for (int m = 0; m < w->nmesh; m++) {
+        struct mesh_surface *ms = mesh_surface_get(g, w->mesh_id[m], "fix wall/gran mesh");
+        for (int k = 0; k < g->styles.nfix; k++) {
+            struct fix *o = g->styles.fix[k];
+            if (o == f || o->style != f->style)
+                continue;
+            const struct wall *ow = o->data;
+            for (int q = 0; ow->style == W_MESH && q < ow->nmesh; q++)
+                if (!strcmp(ow->mesh_id[q], w->mesh_id[m]))
+                    gr_error(g, "fix wall/gran %s: mesh %s is already a wall of fix %s", f->id,
+                             w->mesh_id[m], o->id);
+        }
+        wall_mesh_upload(g, &w->wm[m], &ms->m, ms->normal, reach, "fix wall/gran mesh");
+        ms->fmesh_valid = 0;
+    }
+    f->peratom_bytes =
+        w->history ? (size_t)w->nmesh * WALL_MESH_SLOTS * 4 * eng_get(g)->rsz : 0;
+}
+
+static void post_force_mesh(struct gravel *g, struct fix *f, struct wall *w)
+{
+    struct dev_atoms *a = eng_atoms(g);
+    size_t rsz = eng_get(g)->rsz;
+    for (int m = 0; m < w->nmesh; m++) {
+        struct mesh_surface *ms = mesh_surface_get(g, w->mesh_id[m], "fix wall/gran mesh");
+        struct mesh_pose p;
+        mesh_surface_pose(g, w->mesh_id[m], &p);
+        double ref[3];
+        for (int r = 0; r < 3; r++)
+            ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
+                     p.R[3 * r + 2] * ms->ref[2] + p.d[r];
+        if (!ms->fmesh || ms->fmesh_cap < (size_t)a->n) {
+            if (ms->fmesh)
+                clReleaseMemObject(ms->fmesh);
+            ms->fmesh = NULL;
+            ms->fmesh_cap = (size_t)a->n + 64;
+            ms->fmesh = eng_alloc(g, ms->fmesh_cap * 6 * rsz, "mesh force buffer");
+        }
+        wall_mesh_apply(g, f, &w->wm[m], &w->law, p.R, p.d, p.V0, p.omega, ref, p.moving,
+                        w->nmesh * WALL_MESH_SLOTS * 4, m * WALL_MESH_SLOTS * 4, ms->fmesh);
+        ms->fmesh_valid = 1;
+        ms->fmesh_step = g->step;
+    }
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, model_kernel[w->model]);
+    w->law.kernel = eng_kernel(g, (w->style == W_MESH ? mesh_kernel : model_kernel)[w->model]);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
@@ -222,6 +311,10 @@ static void init(struct gravel *g, struct fix *f)
     w->law.param = NULL;
     w->law.param = eng_alloc(g, 8 * e->rsz, "fix wall/gran parameters");
     eng_write_reals(g, w->law.param, 6, w->param);
+    if (w->style == W_MESH) {
+        init_mesh(g, f, w);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }
@@ -229,6 +322,10 @@ static void init(struct gravel *g, struct fix *f)
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
+    if (w->style == W_MESH) {
+        post_force_mesh(g, f, w);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     wall_apply(g, f, &geom, &w->law);
 }
@@ -238,6 +335,8 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
+    for (int m = 0; w && m < w->nmesh; m++)
+        wall_mesh_release(&w->wm[m]);
     free(w);
     f->data = NULL;
 }
