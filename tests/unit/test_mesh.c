@@ -418,6 +418,39 @@ TEST(shared_edge_and_vertex)
     CHECK(got[0] > 0.05 && got[1] > 0.05);  /* passed the centre */
 }
 
+/* A sphere resting on a convex ridge (two triangles share the edge) and on
+ * the apex of a pyramid (four share the vertex) feels one contact: it sinks
+ * m g / kn, not half of it. */
+TEST(convex_edge_and_vertex_count_once)
+{
+    double tent[36] = {-1, -2, 0, 0, -2, 1, 0, 2, 1,   -1, -2, 0, 0, 2, 1, -1, 2, 0,
+                       1, -2, 0, 0, 2, 1, 0, -2, 1,    1, -2, 0, 1, 2, 0, 0, 2, 1};
+    write_ascii_stl("tent.stl", tent, 4);
+    double pyr[36] = {0, 0, 1, -1, -1, 0, 1, -1, 0,   0, 0, 1, 1, -1, 0, 1, 1, 0,
+                      0, 0, 1, 1, 1, 0, -1, 1, 0,     0, 0, 1, -1, 1, 0, -1, -1, 0};
+    write_ascii_stl("pyr.stl", pyr, 4);
+    const char *deck = "units lj\natom_style sphere\nboundary f f f\n"
+                       "region b block -3 3 -3 3 -1 4\ncreate_box 1 b\n"
+                       "create_atoms 1 single %s units box\n"
+                       "set atom 1 diameter 1.0 density 1.9098593\n"
+                       "pair_style gran/hooke 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+                       "timestep 0.001\nfix 1 all nve/sphere\nfix 2 all gravity 1.0 vector 0 0 -1\n"
+                       "fix m all mesh/surface file %s type 1\n"
+                       "fix w all wall/gran hooke 2000 NULL 200 NULL 0.5 1 mesh n_meshes 1 meshes m\n"
+                       "thermo 0\nrun 4000\n";
+    const char *files[2] = {"tent.stl", "pyr.stl"};
+    const char *at[2] = {"0 0.3 1.5", "0 0 1.5"};
+    for (int k = 0; k < 2; k++) {
+        char s[2048];
+        snprintf(s, sizeof s, deck, at[k], path(files[k]));
+        double st[9];
+        if (run_state(s, st, 1) != GR_OK)
+            continue;
+        CHECK_NEAR(st[2], 1.5 - 1.0 / 2000.0, 1e-6);
+        CHECK_NEAR(st[0], 0.0, 1e-12);
+    }
+}
+
 /* a floor moving in its plane = LAMMPS' shear wall */
 TEST(linear_equals_shear)
 {
@@ -552,6 +585,7 @@ int main(void)
     RUN(command_errors);
     RUN(box_equals_planes);
     RUN(shared_edge_and_vertex);
+    RUN(convex_edge_and_vertex_count_once);
     RUN(linear_equals_shear);
     RUN(mesh_force_output);
     RUN(stacked_pose);
