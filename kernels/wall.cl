@@ -229,6 +229,15 @@ static inline REAL3 mat_tmul(__global const REAL *R, const REAL3 v)
                    R[2] * v.x + R[5] * v.y + R[8] * v.z);
 }
 
+/* The parameter set of a mesh contact: one packed set (wall/gran), or
+ * the pair style's set of type pair (t_i, T - 1) for a mesh of type T
+ * (wall/pair: by_type = T). */
+static inline __global const REAL *p_of(__global const REAL *param, const int by_type,
+                                        const int ti, const int ntypes, const int nparam)
+{
+    return by_type ? param + (size_t)(ti * ntypes + (by_type - 1)) * nparam : param;
+}
+
 /* One work-item per atom of the group, one launch per mesh. The mesh is
  * rigid: its triangles and their bins stay in the mesh's own frame and the
  * atom is taken there, xb = R^T (x - d) (pose: R row-major 0..8, d 9..11,
@@ -358,7 +367,7 @@ static inline REAL3 mat_tmul(__global const REAL *R, const REAL3 v)
             }                                                                                  \
             WALL_OMEGA(omi, omega, i);                                                         \
             struct contact ct = contact_make(del, radi, 0, radi, vload3(i, v) - vwall, omi,    \
-                                             (REAL3)(0), rmass[i]);                            \
+                                             moving ? vload3(5, pose) : (REAL3)(0), rmass[i]); \
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
             struct contact_force cf;                                                           \
@@ -388,9 +397,8 @@ static inline REAL3 mat_tmul(__global const REAL *R, const REAL3 v)
         }                                                                                      \
     }
 
-/* the parameter set of a mesh contact: one packed set, or the pair style's (t, t) */
-static inline __global const REAL *p_of(__global const REAL *param, const int by_type,
-                                        const int ti, const int ntypes, const int nparam)
-{
-    return by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;
-}
+
+/* fix wall/pair ... mesh: the active pair style's law against triangles */
+#ifdef PAIR_EVAL
+MESH_KERNEL(mesh_pair, PAIR_EVAL)
+#endif

@@ -163,6 +163,98 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
     return f->data;
 }
 
+int mesh_surface_parse_list(struct gravel *g, int argc, char **argv, int i,
+                            char (*ids)[GR_NAMELEN], int max, int *n, const char *who)
+{
+    if (i + 2 >= argc || strcmp(argv[i + 1], "n_meshes"))
+        gr_error(g, "%s expects 'n_meshes N meshes ID ...'", who);
+    *n = arg_int_range(g, argv[i + 2], 1, max, "n_meshes");
+    if (i + 3 >= argc || strcmp(argv[i + 3], "meshes"))
+        gr_error(g, "%s expects 'meshes' and %d mesh ID(s) after n_meshes", who, *n);
+    if (i + 3 + *n >= argc)
+        gr_error(g, "%s: n_meshes is %d but %d mesh ID(s) follow", who, *n, argc - i - 4);
+    for (int m = 0; m < *n; m++) {
+        const char *id = argv[i + 4 + m];
+        mesh_surface_get(g, id, who);
+        for (int q = 0; q < m; q++)
+            if (!strcmp(ids[q], id))
+                gr_error(g, "%s: mesh %s is listed twice", who, id);
+        snprintf(ids[m], GR_NAMELEN, "%s", id);
+    }
+    return i + 4 + *n;
+}
+
+void mesh_surface_claim(struct gravel *g, struct mesh_surface *ms, const char *mesh_id,
+                        const struct fix *f)
+{
+    for (int k = 0; ms->owner && ms->owner != f && k < g->styles.nfix; k++)
+        if (g->styles.fix[k] == ms->owner)
+            gr_error(g, "fix %s: mesh %s is already a wall of fix %s", f->id, mesh_id,
+                     ms->owner->id);
+    ms->owner = f;
+    ms->fmesh_valid = 0;
+}
+
+void mesh_surface_filled(struct gravel *g, struct mesh_surface *ms)
+{
+    ms->fmesh_valid = 1;
+    ms->fmesh_step = g->step;
+}
+
+void mesh_surface_fmesh_reserve(struct gravel *g, struct mesh_surface *ms, int n)
+{
+    if (ms->fmesh && ms->fmesh_cap >= (size_t)n)
+        return;
+    if (ms->fmesh)
+        clReleaseMemObject(ms->fmesh);
+    ms->fmesh = NULL;
+    ms->fmesh_cap = (size_t)n + 64;
+    ms->fmesh = eng_alloc(g, ms->fmesh_cap * 6 * eng_get(g)->rsz, "mesh force buffer");
+}
+
+size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, int history)
+{
+    double reach = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
+    reach *= 1.0 + 1e-6;
+    char who[GR_NAMELEN + 32];
+    snprintf(who, sizeof who, "fix %s (%s mesh)", f->id, f->style->name);
+    for (int m = 0; m < mw->n; m++) {
+        struct mesh_surface *ms = mesh_surface_get(g, mw->id[m], who);
+        mesh_surface_claim(g, ms, mw->id[m], f);
+        wall_mesh_upload(g, &mw->wm[m], &ms->m, ms->normal, reach, who);
+    }
+    return history ? (size_t)mw->n * WALL_MESH_SLOTS * 4 * eng_get(g)->rsz : 0;
+}
+
+void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
+                      struct wall_law *law, int pair_types)
+{
+    struct dev_atoms *a = eng_atoms(g);
+    for (int m = 0; m < mw->n; m++) {
+        struct mesh_surface *ms = mesh_surface_get(g, mw->id[m], f->style->name);
+        struct mesh_pose p;
+        mesh_surface_pose(g, mw->id[m], &p);
+        double ref[3];
+        for (int r = 0; r < 3; r++)
+            ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
+                     p.R[3 * r + 2] * ms->ref[2] + p.d[r];
+        mesh_surface_fmesh_reserve(g, ms, a->n);
+        if (pair_types)
+            law->by_type = ms->type;
+        wall_mesh_apply(g, f, &mw->wm[m], law, p.R, p.d, p.V0, p.omega, ref, p.moving,
+                        mw->n * WALL_MESH_SLOTS * 4, m * WALL_MESH_SLOTS * 4, ms->fmesh);
+        mesh_surface_filled(g, ms);
+    }
+}
+
+void mesh_walls_release(struct mesh_walls *mw)
+{
+    for (int m = 0; m < mw->n; m++)
+        wall_mesh_release(&mw->wm[m]);
+}
+
 /* ---- pose ------------------------------------------------------------------------ */
 
 static void mat_mul(const double A[9], const double B[9], double C[9])

@@ -8,6 +8,7 @@
 
 #include "fix.h"
 #include "mesh.h"
+#include "wall.h"
 
 struct mesh_surface {
     struct mesh m;              /* vertices after scale/move/rotate, in the mesh's own frame */
@@ -21,7 +22,7 @@ struct mesh_surface {
     size_t fmesh_cap;           /* atoms it holds */
     int fmesh_valid;            /* the wall fix wrote it at fmesh_step */
     bigint fmesh_step;
-    char wall_id[GR_NAMELEN];   /* the wall fix that owns fmesh this run */
+    const struct fix *owner;    /* the wall fix that fills fmesh (mesh_surface_claim) */
     bigint cache_step;          /* step of cache[] */
     double cache[7];
 };
@@ -52,5 +53,36 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
 /* The pose of the mesh of fix `id` at the current step: the move/mesh
  * motions on it composed in the order of their fixes. */
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p);
+
+/* At a wall fix's init: make f the one wall of the mesh (its force output);
+ * an error when another wall fix still holds it. */
+void mesh_surface_claim(struct gravel *g, struct mesh_surface *ms, const char *mesh_id,
+                        const struct fix *f);
+/* After a wall fix's launch for this mesh: fmesh holds the current step. */
+void mesh_surface_filled(struct gravel *g, struct mesh_surface *ms);
+/* Make ms->fmesh hold n atoms (6 REAL each). */
+void mesh_surface_fmesh_reserve(struct gravel *g, struct mesh_surface *ms, int n);
+
+/* The meshes of one wall fix (wall/gran or wall/pair ... mesh). */
+#define MESH_WALLS_MAX 16
+struct mesh_walls {
+    int n;
+    char id[MESH_WALLS_MAX][GR_NAMELEN];
+    struct wall_mesh wm[MESH_WALLS_MAX];
+};
+/* Run start: claim and upload every mesh (bins for the largest radius);
+ * returns the per-atom history bytes the fix must declare. */
+size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, int history);
+/* post_force: one launch per mesh. pair_types: the law's parameters are the
+ * pair style's of type pair (t_i, mesh type) (wall/pair), else one set. */
+void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
+                      struct wall_law *law, int pair_types);
+void mesh_walls_release(struct mesh_walls *mw);
+
+/* Parse LIGGGHTS' `mesh n_meshes N meshes ID1 ... IDN` starting at argv[i]
+ * (the word `mesh`) into ids (at most max, each a mesh/surface fix); returns
+ * the index after the last ID. */
+int mesh_surface_parse_list(struct gravel *g, int argc, char **argv, int i,
+                            char (*ids)[GR_NAMELEN], int max, int *n, const char *who);
 
 #endif

@@ -30,7 +30,6 @@
 #include "wall.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4 };
-#define MAX_MESHES 16
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 
@@ -43,10 +42,7 @@ struct wall {
     double amplitude, period, omega, vshear;
     bigint time_origin;
     struct wall_law law;
-    /* wallstyle mesh */
-    int nmesh;
-    char mesh_id[MAX_MESHES][GR_NAMELEN];
-    struct wall_mesh wm[MAX_MESHES];
+    struct mesh_walls mesh;     /* wallstyle mesh */
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
@@ -133,25 +129,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         i += 2;
     } else if (!strcmp(ws, "mesh")) {
         /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
-        if (i + 2 >= argc || strcmp(argv[i + 1], "n_meshes"))
-            gr_error(g, "fix wall/gran mesh expects 'n_meshes N meshes ID ...'");
         w.style = W_MESH;
-        w.nmesh = arg_int_range(g, argv[i + 2], 1, MAX_MESHES, "n_meshes");
-        if (i + 3 >= argc || strcmp(argv[i + 3], "meshes"))
-            gr_error(g, "fix wall/gran mesh expects 'meshes' and %d mesh ID(s) after n_meshes",
-                     w.nmesh);
-        if (i + 3 + w.nmesh >= argc)
-            gr_error(g, "fix wall/gran mesh: n_meshes is %d but %d mesh ID(s) follow", w.nmesh,
-                     argc - i - 4);
-        for (int m = 0; m < w.nmesh; m++) {
-            const char *id = argv[i + 4 + m];
-            mesh_surface_get(g, id, "fix wall/gran mesh");
-            for (int q = 0; q < m; q++)
-                if (!strcmp(w.mesh_id[q], id))
-                    gr_error(g, "fix wall/gran mesh: mesh %s is listed twice", id);
-            snprintf(w.mesh_id[m], GR_NAMELEN, "%s", id);
-        }
-        i += 4 + w.nmesh;
+        i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
+                                    "fix wall/gran mesh");
     } else if (!strcmp(ws, "region")) {
         gr_error(g, "fix wall/gran wall style 'region' is not supported (use xplane, yplane, "
                     "zplane or zcylinder)");
@@ -244,59 +224,6 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     return geom;
 }
 
-/* Mesh walls at run start: bins sized for the largest particle, history
- * slots per mesh, and this fix as the one that reports each mesh's force. */
-static void init_mesh(struct gravel *g, struct fix *f, struct wall *w)
-{
-    double reach = 0;
-    for (int i = 0; i < g->atoms.n; i++)
-        reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
-    reach *= 1.0 + 1e-6;
-    for (int m = 0; m < w->nmesh; m++) {
-        struct mesh_surface *ms = mesh_surface_get(g, w->mesh_id[m], "fix wall/gran mesh");
-        for (int k = 0; k < g->styles.nfix; k++) {
-            struct fix *o = g->styles.fix[k];
-            if (o == f || o->style != f->style)
-                continue;
-            const struct wall *ow = o->data;
-            for (int q = 0; ow->style == W_MESH && q < ow->nmesh; q++)
-                if (!strcmp(ow->mesh_id[q], w->mesh_id[m]))
-                    gr_error(g, "fix wall/gran %s: mesh %s is already a wall of fix %s", f->id,
-                             w->mesh_id[m], o->id);
-        }
-        wall_mesh_upload(g, &w->wm[m], &ms->m, ms->normal, reach, "fix wall/gran mesh");
-        ms->fmesh_valid = 0;
-    }
-    f->peratom_bytes =
-        w->history ? (size_t)w->nmesh * WALL_MESH_SLOTS * 4 * eng_get(g)->rsz : 0;
-}
-
-static void post_force_mesh(struct gravel *g, struct fix *f, struct wall *w)
-{
-    struct dev_atoms *a = eng_atoms(g);
-    size_t rsz = eng_get(g)->rsz;
-    for (int m = 0; m < w->nmesh; m++) {
-        struct mesh_surface *ms = mesh_surface_get(g, w->mesh_id[m], "fix wall/gran mesh");
-        struct mesh_pose p;
-        mesh_surface_pose(g, w->mesh_id[m], &p);
-        double ref[3];
-        for (int r = 0; r < 3; r++)
-            ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
-                     p.R[3 * r + 2] * ms->ref[2] + p.d[r];
-        if (!ms->fmesh || ms->fmesh_cap < (size_t)a->n) {
-            if (ms->fmesh)
-                clReleaseMemObject(ms->fmesh);
-            ms->fmesh = NULL;
-            ms->fmesh_cap = (size_t)a->n + 64;
-            ms->fmesh = eng_alloc(g, ms->fmesh_cap * 6 * rsz, "mesh force buffer");
-        }
-        wall_mesh_apply(g, f, &w->wm[m], &w->law, p.R, p.d, p.V0, p.omega, ref, p.moving,
-                        w->nmesh * WALL_MESH_SLOTS * 4, m * WALL_MESH_SLOTS * 4, ms->fmesh);
-        ms->fmesh_valid = 1;
-        ms->fmesh_step = g->step;
-    }
-}
-
 static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
@@ -312,7 +239,7 @@ static void init(struct gravel *g, struct fix *f)
     w->law.param = eng_alloc(g, 8 * e->rsz, "fix wall/gran parameters");
     eng_write_reals(g, w->law.param, 6, w->param);
     if (w->style == W_MESH) {
-        init_mesh(g, f, w);
+        f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
         return;
     }
     struct wall_geom geom = geometry(g, w);
@@ -323,7 +250,7 @@ static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     if (w->style == W_MESH) {
-        post_force_mesh(g, f, w);
+        mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
         return;
     }
     struct wall_geom geom = geometry(g, w);
@@ -335,8 +262,8 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
-    for (int m = 0; w && m < w->nmesh; m++)
-        wall_mesh_release(&w->wm[m]);
+    if (w)
+        mesh_walls_release(&w->mesh);
     free(w);
     f->data = NULL;
 }

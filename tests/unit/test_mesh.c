@@ -451,6 +451,42 @@ TEST(convex_edge_and_vertex_count_once)
     }
 }
 
+/* fix wall/pair ... mesh: hertz/mindlin with rolling resistance and
+ * linear/restitution against a two-triangle floor = against wall/pair zplane,
+ * rolling across the shared edge */
+TEST(wall_pair_mesh)
+{
+    double two[18] = {-5, -5, 0, 5, -5, 0, 5, 5, 0, -5, -5, 0, 5, 5, 0, -5, 5, 0};
+    write_ascii_stl("two.stl", two, 2);
+    const char *deck = "units si\natom_style sphere\nboundary f f f\n"
+                       "region b block -0.1 0.1 -0.1 0.1 -0.01 0.1\ncreate_box 1 b\n"
+                       "create_atoms 1 single -0.0055 -0.005 0.00149 units box\n"
+                       "set atom 1 diameter 0.003 density 2500\n"
+                       "velocity all set 0.2 0 0 units box\nset atom 1 omega 0 30 0\n"
+                       "%s\npair_coeff * *\n"
+                       "timestep 1e-6\nfix 1 all nve/sphere\nfix 2 all gravity 9.81 vector 0 0 -1\n"
+                       "thermo 0\n%s\nrun 8000\n";
+    const char *pairs[2] = {"pair_style hertz/mindlin 6.396e7 0.23 0.66 0.154 rolling 0.05",
+                            "pair_style linear/restitution 1000 0.8 0.3"};
+    for (int k = 0; k < 2; k++) {
+        char wall[512], s[4096];
+        double ref[9], got[9];
+        snprintf(s, sizeof s, deck, pairs[k], "fix w all wall/pair zplane 0 NULL");
+        if (run_state(s, ref, 1) != GR_OK)
+            continue;
+        snprintf(wall, sizeof wall, "fix m all mesh/surface file %s type 1\n"
+                 "fix w all wall/pair mesh n_meshes 1 meshes m", path("two.stl"));
+        snprintf(s, sizeof s, deck, pairs[k], wall);
+        if (run_state(s, got, 1) != GR_OK)
+            continue;
+        double d = max_diff(ref, got, 9);
+        CHECK(d <= 1e-10);
+        if (d > 1e-10)
+            printf("  %s: max |diff| %.3g\n", pairs[k], d);
+        CHECK(got[1] - got[0] < 0);   /* crossed the diagonal y = x */
+    }
+}
+
 /* a floor moving in its plane = LAMMPS' shear wall */
 TEST(linear_equals_shear)
 {
@@ -586,6 +622,7 @@ int main(void)
     RUN(box_equals_planes);
     RUN(shared_edge_and_vertex);
     RUN(convex_edge_and_vertex_count_once);
+    RUN(wall_pair_mesh);
     RUN(linear_equals_shear);
     RUN(mesh_force_output);
     RUN(stacked_pose);
