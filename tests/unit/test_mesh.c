@@ -487,6 +487,56 @@ TEST(wall_pair_mesh)
     }
 }
 
+/* A rotating drum of N flat facets (circumscribed: the facet centres on the
+ * circle) converges to wall/gran zcylinder with azimuthal shear as N grows:
+ * a sphere dragged up the inside of the turning drum. */
+TEST(faceted_drum_converges)
+{
+    const double R = 2.0;
+    const char *deck = "units lj\natom_style sphere\nboundary f f f\n"
+                       "region b block -3 3 -3 3 -1.5 1.5\ncreate_box 1 b\n"
+                       "create_atoms 1 single 0 -1.5 0 units box\n"
+                       "set atom 1 diameter 1.0 density 1.9098593\n"
+                       "pair_style gran/hooke/history 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+                       "timestep 0.0005\nfix 1 all nve/sphere\nfix 2 all gravity 1.0 vector 0 -1 0\n"
+                       "thermo 0\n%s\nrun 4000\n";
+    char s[4096], wall[1024];
+    double ref[9], got[9];
+    /* surface speed omega R = 1 counterclockwise about +z: vshear = -omega R */
+    snprintf(s, sizeof s, deck, "fix w all wall/gran " WALL " zcylinder 2 shear x -1.0");
+    if (run_state(s, ref, 1) != GR_OK)
+        return;
+    CHECK(ref[0] > 0.05);   /* dragged towards +x and up */
+    const int nf[3] = {16, 64, 256};
+    double err[3];
+    for (int k = 0; k < 3; k++) {
+        int n = nf[k];
+        double rv = R / cos(M_PI / n);
+        double *soup = malloc((size_t)2 * n * 9 * sizeof(double));
+        for (int f = 0; f < n; f++) {
+            double a0 = 2 * M_PI * (f - 0.5) / n - M_PI / 2, a1 = 2 * M_PI * (f + 0.5) / n - M_PI / 2;
+            double p0[3] = {rv * cos(a0), rv * sin(a0), -1}, p1[3] = {rv * cos(a1), rv * sin(a1), -1};
+            double q0[3] = {p0[0], p0[1], 1}, q1[3] = {p1[0], p1[1], 1};
+            double *t = soup + 18 * f;
+            memcpy(t, p0, 24); memcpy(t + 3, p1, 24); memcpy(t + 6, q1, 24);
+            memcpy(t + 9, p0, 24); memcpy(t + 12, q1, 24); memcpy(t + 15, q0, 24);
+        }
+        write_ascii_stl("drum.stl", soup, 2 * n);
+        free(soup);
+        snprintf(wall, sizeof wall, "fix m all mesh/surface file %s type 1\n"
+                 "fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period %.17g\n"
+                 "fix w all wall/gran " WALL " mesh n_meshes 1 meshes m", path("drum.stl"),
+                 4 * M_PI);
+        snprintf(s, sizeof s, deck, wall);
+        if (run_state(s, got, 1) != GR_OK)
+            return;
+        err[k] = max_diff(ref, got, 9);
+        printf("  drum of %d facets: max |diff| from zcylinder %.3g\n", n, err[k]);
+    }
+    CHECK(err[1] < err[0] && err[2] < err[1]);
+    CHECK(err[2] < 0.02);
+}
+
 /* a floor moving in its plane = LAMMPS' shear wall */
 TEST(linear_equals_shear)
 {
@@ -624,6 +674,7 @@ int main(void)
     RUN(convex_edge_and_vertex_count_once);
     RUN(wall_pair_mesh);
     RUN(linear_equals_shear);
+    RUN(faceted_drum_converges);
     RUN(mesh_force_output);
     RUN(stacked_pose);
     RUN(dump_mesh_vtk);
