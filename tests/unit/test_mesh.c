@@ -537,6 +537,74 @@ TEST(faceted_drum_converges)
     CHECK(err[2] < 0.02);
 }
 
+/* A damped contact never gains energy: spheres hit a face, a convex ridge
+ * (edge) and a pyramid apex (vertex) at 5 to 85 degrees to the horizontal;
+ * after the bounce translational + rotational energy is below the start. */
+TEST(energy_on_faces_edges_vertices)
+{
+    /* the three features, copies side by side along x, each target at z = 1 */
+    const double feat[3][36] = {
+        {-2, -2, 1, 2, -2, 1, 2, 2, 1,  -2, -2, 1, 2, 2, 1, -2, 2, 1},
+        {-1, -2, 0, 0, -2, 1, 0, 2, 1,  -1, -2, 0, 0, 2, 1, -1, 2, 0,
+         1, -2, 0, 0, 2, 1, 0, -2, 1,   1, -2, 0, 1, 2, 0, 0, 2, 1},
+        {0, 0, 1, -1, -1, 0, 1, -1, 0,  0, 0, 1, 1, -1, 0, 1, 1, 0,
+         0, 0, 1, 1, 1, 0, -1, 1, 0,    0, 0, 1, -1, 1, 0, -1, -1, 0},
+    };
+    const int ntri[3] = {2, 4, 4};
+    const double angle[5] = {5, 25, 45, 65, 85};
+    double soup[15 * 4 * 9];
+    int n = 0;
+    for (int f = 0; f < 3; f++)
+        for (int a = 0; a < 5; a++) {
+            double ox = 10.0 * (5 * f + a) - 70;
+            for (int t = 0; t < ntri[f]; t++, n++)
+                for (int v = 0; v < 3; v++) {
+                    soup[9 * n + 3 * v] = feat[f][9 * t + 3 * v] + ox;
+                    soup[9 * n + 3 * v + 1] = feat[f][9 * t + 3 * v + 1];
+                    soup[9 * n + 3 * v + 2] = feat[f][9 * t + 3 * v + 2];
+                }
+        }
+    write_ascii_stl("features.stl", soup, n);
+    char s[16384];
+    int len = snprintf(s, sizeof s, "units lj\natom_style sphere\nboundary f f f\n"
+                       "region b block -80 80 -5 5 -5 10\ncreate_box 1 b\n");
+    for (int f = 0; f < 3; f++)
+        for (int a = 0; a < 5; a++) {
+            int k = 5 * f + a;
+            double ox = 10.0 * k - 70, th = angle[a] * M_PI / 180;
+            double vx = 2 * cos(th), vz = -2 * sin(th);
+            /* aimed so that the centre would pass (ox, y, 1.45) at t = 0.5: y = 0.3 off
+             * the ridge line on the face and ridge, on the apex for the pyramid */
+            len += snprintf(s + len, sizeof s - len,
+                            "create_atoms 1 single %.17g %g %.17g units box\n", ox - 0.5 * vx,
+                            f == 2 ? 0.0 : 0.3, 1.45 - 0.5 * vz);
+            len += snprintf(s + len, sizeof s - len,
+                            "group g%d id %d\nvelocity g%d set %.17g 0 %.17g units box\n", k,
+                            k + 1, k, vx, vz);
+        }
+    snprintf(s + len, sizeof s - len,
+             "set group all diameter 1.0 density 1.9098593\n"
+             "pair_style gran/hooke/history 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+             "timestep 0.0005\nfix 1 all nve/sphere\n"
+             "fix m all mesh/surface file %s type 1\n"
+             "fix w all wall/gran hooke/history 2000 NULL 50 NULL 0.5 1 mesh n_meshes 1 meshes m\n"
+             "thermo 0\nrun 2000\n", path("features.stl"));
+    double st[15 * 9];
+    if (run_state(s, st, 15) != GR_OK)
+        return;
+    /* m = 1, I = 2/5 m r^2 = 0.1; start energy 1/2 m |v|^2 = 2 */
+    for (int k = 0; k < 15; k++) {
+        const double *v = st + 9 * k + 3, *w = st + 9 * k + 6;
+        double e = 0.5 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                   0.5 * 0.1 * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        if (!(e <= 2.0 * (1 + 1e-12)) || !(e < 1.99))
+            printf("  feature %d angle %g: energy %.6g after the bounce (start 2)\n", k / 5,
+                   angle[k % 5], e);
+        CHECK(e <= 2.0 * (1 + 1e-12));
+        CHECK(e < 1.99);   /* the sphere did hit something */
+    }
+}
+
 /* a floor moving in its plane = LAMMPS' shear wall */
 TEST(linear_equals_shear)
 {
@@ -675,6 +743,7 @@ int main(void)
     RUN(wall_pair_mesh);
     RUN(linear_equals_shear);
     RUN(faceted_drum_converges);
+    RUN(energy_on_faces_edges_vertices);
     RUN(mesh_force_output);
     RUN(stacked_pose);
     RUN(dump_mesh_vtk);
