@@ -398,7 +398,7 @@ static double vector(struct gravel *g, struct fix *f, int i)
             double pw = 0;
             for (int c = 0; c < 3; c++)
                 pw += ms->cache[c] * vref[c] + ms->cache[3 + c] * om[c];
-            ms->cache[6] = -pw;
+            ms->cache[6] = 0.0 - pw; /* +0 when nothing moves */
         }
         ms->cache_step = g->step;
     }

@@ -64,7 +64,7 @@ void mesh_surface_filled(struct gravel *g, struct mesh_surface *ms);
 void mesh_surface_fmesh_reserve(struct gravel *g, struct mesh_surface *ms, int n);
 
 /* The meshes of one wall fix (wall/gran or wall/pair ... mesh). */
-#define MESH_WALLS_MAX 16
+#define MESH_WALLS_MAX 8   /* 8 x 128 bytes of history per atom: the restart limit of 1024 */
 struct mesh_walls {
     int n;
     char id[MESH_WALLS_MAX][GR_NAMELEN];
