@@ -312,7 +312,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             const int va = triv[3 * tc[c] + k];                                                \
             const int vb = rc[c] >= MESH_VERTEX ? va : triv[3 * tc[c] + (k + 1) % 3];          \
             for (int o = 0; o < nc; o++) {                                                     \
-                if (o == c || rc[o] < 0)                                                       \
+                if (o == c) /* dropped ones count too: the nearest of a cluster stays */       \
                     continue;                                                                  \
                 if (!tri_has(triv, tc[o], va) && !tri_has(triv, tc[o], vb))                    \
                     continue;                                                                  \
@@ -324,7 +324,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         }                                                                                      \
         REAL okey[MESH_SLOTS];                                                                 \
         REAL3 osh[MESH_SLOTS];                                                                 \
-        __global REAL *hist = history + (size_t)i * hstride + hoff;                            \
+        __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;     \
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
                 okey[s] = hist[4 * s];                                                         \

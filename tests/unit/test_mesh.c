@@ -195,6 +195,104 @@ TEST(welding)
     mesh_free(&m);
 }
 
+/* distance from p to segment ab */
+static double seg_dist(const double *p, const double *a, const double *b)
+{
+    double ab[3], ap[3], t = 0, l = 0, d = 0;
+    for (int k = 0; k < 3; k++) {
+        ab[k] = b[k] - a[k];
+        ap[k] = p[k] - a[k];
+        t += ab[k] * ap[k];
+        l += ab[k] * ab[k];
+    }
+    t = t / l < 0 ? 0 : t / l > 1 ? 1 : t / l;
+    for (int k = 0; k < 3; k++)
+        d += (ap[k] - t * ab[k]) * (ap[k] - t * ab[k]);
+    return sqrt(d);
+}
+
+/* distance from p to triangle abc (inside the prism: to the plane, else to the edges) */
+static double tri_dist(const double *p, const double *a, const double *b, const double *c)
+{
+    double e1[3], e2[3], n[3], w[3];
+    for (int k = 0; k < 3; k++) {
+        e1[k] = b[k] - a[k];
+        e2[k] = c[k] - a[k];
+        w[k] = p[k] - a[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    double h = (w[0] * n[0] + w[1] * n[1] + w[2] * n[2]) / nn;
+    double q[3] = {w[0] - h * n[0], w[1] - h * n[1], w[2] - h * n[2]};
+    /* barycentric of q in (e1, e2) */
+    double d00 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+    double d01 = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+    double d11 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+    double d20 = q[0] * e1[0] + q[1] * e1[1] + q[2] * e1[2];
+    double d21 = q[0] * e2[0] + q[1] * e2[1] + q[2] * e2[2];
+    double den = d00 * d11 - d01 * d01;
+    double v = (d11 * d20 - d01 * d21) / den, u = (d00 * d21 - d01 * d20) / den;
+    if (v >= 0 && u >= 0 && u + v <= 1)
+        return fabs(h) * sqrt(nn);
+    double d = seg_dist(p, a, b), d2 = seg_dist(p, b, c), d3 = seg_dist(p, c, a);
+    return d < d2 ? (d < d3 ? d : d3) : (d2 < d3 ? d2 : d3);
+}
+
+/* every triangle within reach of a point is in the bin of that point */
+TEST(bins_cover_reach)
+{
+    double fan[72 + 108];
+    for (int k = 0; k < 8; k++) {
+        double a0 = 2 * M_PI * k / 8, a1 = 2 * M_PI * (k + 1) / 8;
+        double t[9] = {0, 0, 0.3 * k, 3 * cos(a0), 3 * sin(a0), 0, 3 * cos(a1), 3 * sin(a1), 1};
+        memcpy(fan + 9 * k, t, sizeof t);
+    }
+    box_soup(-2.5, 2.5, fan + 72);
+    struct mesh m;
+    char err[256];
+    CHECK(mesh_from_soup("mix", fan, 20, 0, &m, err, sizeof err) == 0);
+    const double reaches[3] = {0.05, 0.5, 2.0};
+    unsigned seed = 12345;
+    for (int r = 0; r < 3; r++) {
+        struct mesh_bins b;
+        CHECK(mesh_bin(&m, reaches[r], &b, err, sizeof err) == 0);
+        CHECK(b.h >= 2 * reaches[r]);
+        int missing = 0;
+        for (int s = 0; s < 20000; s++) {
+            double p[3];
+            for (int k = 0; k < 3; k++) {
+                seed = seed * 1103515245u + 12345u;
+                p[k] = -4 + 8.0 * ((seed >> 8) & 0xffff) / 65535.0;
+            }
+            int c[3], inside = 1;
+            for (int k = 0; k < 3; k++) {
+                c[k] = (int)floor((p[k] - b.lo[k]) / b.h);
+                inside &= c[k] >= 0 && c[k] < b.n[k];
+            }
+            int cell = inside ? (c[2] * b.n[1] + c[1]) * b.n[0] + c[0] : -1;
+            for (int t = 0; t < m.ntri; t++) {
+                const int *v = m.tri + 3 * t;
+                if (tri_dist(p, m.vert + 3 * v[0], m.vert + 3 * v[1], m.vert + 3 * v[2]) >
+                    reaches[r])
+                    continue;
+                int found = 0;
+                for (int k = cell < 0 ? 0 : b.start[cell]; cell >= 0 && k < b.start[cell + 1]; k++)
+                    found |= b.list[k] == t;
+                missing += !found;
+            }
+            /* lists ascend (the kernel sums contacts in triangle order) */
+            for (int k = cell < 0 ? 0 : b.start[cell] + 1; cell >= 0 && k < b.start[cell + 1]; k++)
+                if (b.list[k] <= b.list[k - 1])
+                    missing++;
+        }
+        CHECK(missing == 0);
+        mesh_bins_free(&b);
+    }
+    mesh_free(&m);
+}
+
 static void check_bad(const char *file, const char *what)
 {
     struct mesh m;
@@ -735,6 +833,7 @@ int main(void)
     RUN(read_binary_stl);
     RUN(read_vtk);
     RUN(welding);
+    RUN(bins_cover_reach);
     RUN(bad_meshes);
     RUN(command_errors);
     RUN(box_equals_planes);
