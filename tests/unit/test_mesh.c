@@ -754,7 +754,44 @@ TEST(mesh_force_output)
     CHECK_NEAR(fz, -1.0, 1e-6);
     /* torque about the origin of the weight at (1, 2, 0): r x F = (2 * -1, -(1 * -1), 0) */
     CHECK_NEAR(ty, 1.0, 1e-6);
+    double vfz = 0;
+    CHECK(thermo_keyword_value(g, "v_fz", &vfz));   /* f_ID[i] in an equal-style variable */
+    CHECK(vfz == fz);
     gr_destroy(g);
+}
+
+/* run 2N = run N + write_restart + read_restart + run N, bit for bit, with a
+ * rotating box mesh and contact history on its triangles */
+TEST(restart_exact)
+{
+    double b[108];
+    int n = box_soup(-2, 2, b);
+    write_ascii_stl("box.stl", b, n);
+    char setup[2048], styles[1024], s[4096];
+    snprintf(styles, sizeof styles,
+             "pair_style gran/hooke/history 2000 NULL 50 NULL 0.5 1\npair_coeff * *\n"
+             "timestep 0.0005\nfix 1 all nve/sphere\nfix 2 all gravity 1.0 vector 0 0 -1\n"
+             "fix m all mesh/surface file %s type 1\n"
+             "fix r all move/mesh mesh m rotate origin 0 0 0 axis 0 1 0 period 40\n"
+             "fix w all wall/gran " WALL " mesh n_meshes 1 meshes m\nthermo 0\n",
+             path("box.stl"));
+    snprintf(setup, sizeof setup, "units lj\natom_style sphere\nboundary f f f\n"
+             "region b block -3 3 -3 3 -3 3\ncreate_box 1 b\n"
+             "region inner block -1.5 1.5 -1.5 1.5 -1.5 1.5\nlattice sc 0.6\n"
+             "create_atoms 1 region inner\nset group all diameter 0.8 density 1.0\n"
+             "velocity all create 5.0 4928459 loop geom\n%s", styles);
+    double full[27 * 9], half[27 * 9];
+    snprintf(s, sizeof s, "%srun 3000\n", setup);
+    if (run_state(s, full, 27) != GR_OK)
+        return;
+    snprintf(s, sizeof s, "%srun 1500\nwrite_restart %s\n", setup, path("r.bin"));
+    struct gravel *g = test_engine();
+    CHECK(test_script(g, s) == GR_OK);
+    gr_destroy(g);
+    snprintf(s, sizeof s, "read_restart %s\n%srun 1500\n", path("r.bin"), styles);
+    if (run_state(s, half, 27) != GR_OK)
+        return;
+    CHECK(max_diff(full, half, 27 * 9) == 0.0);
 }
 
 /* rotate about z through (1, 0, 0) then translate: closed form pose */
@@ -844,6 +881,7 @@ int main(void)
     RUN(faceted_drum_converges);
     RUN(energy_on_faces_edges_vertices);
     RUN(mesh_force_output);
+    RUN(restart_exact);
     RUN(stacked_pose);
     RUN(dump_mesh_vtk);
     char cmd[128];
