@@ -81,6 +81,11 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.model = M_HOOKE_HISTORY;
     else if (!strcmp(argv[0], "hertz/history"))
         w.model = M_HERTZ_HISTORY;
+    else if (!strcmp(argv[0], "model"))
+        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
+                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
+                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
+                    "or use fix wall/pair mesh for the pair style's law");
     else if (!strcmp(argv[0], "granular"))
         gr_error(g, "fix wall/gran model 'granular' is not supported (use hooke, "
                     "hooke/history or hertz/history)");

@@ -392,6 +392,18 @@ TEST(command_errors)
              "mesh n_meshes 1 meshes m shear x 1\n", "use fix move/mesh", 6);
     MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 "
              "mesh n_meshes 1 meshes x\n", "no fix with ID 'x'", 6);
+    MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran model hertz tangential "
+             "history mesh n_meshes 1 meshes m\n", "LIGGGHTS' 'model ... tangential ...' syntax", 6);
+    MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/pair mesh n_meshes 1 meshes m "
+             "extra\n", "fix wall/pair mesh: unexpected argument 'extra'", 6);
+    MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 "
+             "mesh n_meshes 9 meshes m\n", "n_meshes", 6);
+    MESH_ERR("fix m all mesh/surface file %s type 1\n"
+             "pair_style gran/hooke 1 NULL 1 NULL 0.5 1\npair_coeff * *\n"
+             "create_atoms 1 single 0 0 0 units box\n"
+             "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 mesh n_meshes 1 meshes m\n"
+             "fix w2 all wall/gran hooke 1 NULL 1 NULL 0.5 1 mesh n_meshes 1 meshes m\nrun 1\n",
+             "mesh m is already a wall of fix w", 11);
     MESH_ERR("fix m all mesh/surface file %s type 1\nthermo_style custom step f_m[8]\n"
              "create_atoms 1 single 0 0 0 units box\nrun 0\n",
              "f_m[8] is out of range: fix m has 7 values", 8);
