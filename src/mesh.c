@@ -468,6 +468,160 @@ static int read_stl_binary(const char *path, const unsigned char *buf, size_t le
     return 0;
 }
 
+/* Legacy VTK values: ASCII tokens, or big-endian binary of the declared type
+ * (the data of a BINARY block starts after the end of its header line). */
+enum { VT_F32, VT_F64, VT_I32, VT_I64 };
+
+static int vtk_type(const char *t)
+{
+    if (!strcasecmp(t, "float"))
+        return VT_F32;
+    if (!strcasecmp(t, "double"))
+        return VT_F64;
+    if (!strcasecmp(t, "int") || !strcasecmp(t, "vtktypeint32"))
+        return VT_I32;
+    if (!strcasecmp(t, "vtktypeint64") || !strcasecmp(t, "long"))
+        return VT_I64;
+    return -1;
+}
+
+static void vtk_bin_begin(struct scan *s)
+{
+    while (s->p < s->end && *s->p != '\n')
+        s->p++;
+    if (s->p < s->end) {
+        s->p++;
+        s->line++;
+    }
+}
+
+static int vtk_value(struct scan *s, int bin, int type, double *v)
+{
+    if (!bin)
+        return next_tok(s) && tok_double(s, v);
+    size_t w = type == VT_F64 || type == VT_I64 ? 8 : 4;
+    if ((size_t)(s->end - s->p) < w)
+        return 0;
+    const unsigned char *b = (const unsigned char *)s->p;
+    uint64_t u = 0;
+    for (size_t k = 0; k < w; k++)
+        u = u << 8 | b[k];
+    s->p += w;
+    if (type == VT_F32) {
+        uint32_t u32 = (uint32_t)u;
+        float f;
+        memcpy(&f, &u32, 4);
+        *v = f;
+    } else if (type == VT_F64) {
+        double d;
+        memcpy(&d, &u, 8);
+        *v = d;
+    } else if (type == VT_I32) {
+        *v = (double)(int32_t)(uint32_t)u;
+    } else {
+        *v = (double)(int64_t)u;
+    }
+    return 1;
+}
+
+/* Cells of POLYGONS / CELLS: the 4.x layout (count n size, then "3 i j k"
+ * per cell) or the 5.x one (count nOffsets nConnectivity, then OFFSETS and
+ * CONNECTIVITY arrays). Every cell must be a triangle. */
+static int vtk_cells(const char *path, struct scan *s, int bin, long npts, long *ncell_out,
+                     int **cells_out, char *err, size_t errlen)
+{
+    double a, b;
+    const char *kw = s->tok[0] == 'C' || s->tok[0] == 'c' ? "CELLS" : "POLYGONS";
+    if (!next_tok(s) || !tok_double(s, &a) || a < 0 || a > 3e8 || !next_tok(s) ||
+        !tok_double(s, &b) || b < 0)
+        return fail(err, errlen, "%s:%d: bad %s line", path, s->line, kw);
+    /* 5.x: OFFSETS follows */
+    const char *save = s->p;
+    int save_line = s->line;
+    int v5 = next_tok(s) && tok_is(s, "offsets");
+    if (!v5) {
+        s->p = save;
+        s->line = save_line;
+    }
+    long ncell = v5 ? (long)a - 1 : (long)a;
+    if (ncell < 0)
+        return fail(err, errlen, "%s:%d: bad %s line", path, s->line, kw);
+    if ((long)b != (v5 ? 3 : 4) * ncell)
+        return fail(err, errlen, "%s:%d: inconsistent triangle count: %ld cells of triangles "
+                    "need a size of %ld, the file says %ld (only triangles are read)", path,
+                    s->line, ncell, (v5 ? 3 : 4) * ncell, (long)b);
+    int *cells = malloc((size_t)(ncell ? ncell : 1) * 3 * sizeof(int));
+    if (!cells)
+        return fail(err, errlen, "%s: out of memory", path);
+    int rc = 0;
+    double v;
+    if (v5) {
+        int type = next_tok(s) ? vtk_type(s->tok) : -1;
+        if (type != VT_I32 && type != VT_I64)
+            rc = fail(err, errlen, "%s:%d: OFFSETS: integer type expected", path, s->line);
+        if (!rc && bin)
+            vtk_bin_begin(s);
+        for (long c = 0; !rc && c <= ncell; c++) {
+            if (!vtk_value(s, bin, type, &v))
+                rc = fail(err, errlen, "%s:%d: triangle %ld is missing (truncated file?)", path,
+                          s->line, c);
+            else if (v != 3.0 * c)
+                rc = fail(err, errlen, "%s:%d: triangle %ld: cell has %g vertices (only "
+                          "triangles are read)", path, s->line, c ? c - 1 : 0,
+                          c ? v - 3.0 * (c - 1) : v);
+        }
+        if (!rc && (!next_tok(s) || !tok_is(s, "connectivity")))
+            rc = fail(err, errlen, "%s:%d: expected CONNECTIVITY after OFFSETS", path, s->line);
+        type = rc ? -1 : next_tok(s) ? vtk_type(s->tok) : -1;
+        if (!rc && type != VT_I32 && type != VT_I64)
+            rc = fail(err, errlen, "%s:%d: CONNECTIVITY: integer type expected", path, s->line);
+        if (!rc && bin)
+            vtk_bin_begin(s);
+        for (long k = 0; !rc && k < 3 * ncell; k++) {
+            if (!vtk_value(s, bin, type, &v))
+                rc = fail(err, errlen, "%s:%d: triangle %ld is missing (truncated file?)", path,
+                          s->line, k / 3);
+            else if (v < 0 || v >= npts || v != floor(v))
+                rc = fail(err, errlen, "%s:%d: triangle %ld: vertex index %g out of range (%ld "
+                          "points)", path, s->line, k / 3, v, npts);
+            else
+                cells[k] = (int)v;
+        }
+    } else {
+        if (bin)
+            vtk_bin_begin(s);
+        for (long c = 0; !rc && c < ncell; c++) {
+            if (!vtk_value(s, bin, VT_I32, &v)) {
+                rc = fail(err, errlen, "%s:%d: triangle %ld is missing (truncated file?)", path,
+                          s->line, c);
+                break;
+            }
+            if (v != 3) {
+                rc = fail(err, errlen, "%s:%d: triangle %ld: cell has %g vertices (only "
+                          "triangles are read)", path, s->line, c, v);
+                break;
+            }
+            for (int k = 0; k < 3 && !rc; k++) {
+                if (!vtk_value(s, bin, VT_I32, &v) || v != floor(v))
+                    rc = fail(err, errlen, "%s:%d: triangle %ld: bad vertex index", path,
+                              s->line, c);
+                else if (v < 0 || v >= npts)
+                    rc = fail(err, errlen, "%s:%d: triangle %ld: vertex index %g out of range "
+                              "(%ld points)", path, s->line, c, v, npts);
+                else
+                    cells[3 * c + k] = (int)v;
+            }
+        }
+    }
+    if (rc) {
+        free(cells);
+        return rc;
+    }
+    *ncell_out = ncell;
+    *cells_out = cells;
+    return 0;
+}
+
 static int read_vtk(const char *path, const char *text, size_t len, struct soup *out,
                     char *err, size_t errlen)
 {
@@ -483,9 +637,10 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
         return fail(err, errlen, "%s: legacy VTK file ends after its header", path);
     s.p = nl + 1;
     s.line = 3;
-    if (!next_tok(&s) || !tok_is(&s, "ascii"))
-        return fail(err, errlen, "%s:%d: only ASCII legacy VTK meshes are read, got '%.40s'",
-                    path, s.line, s.tok);
+    if (!next_tok(&s) || !(tok_is(&s, "ascii") || tok_is(&s, "binary")))
+        return fail(err, errlen, "%s:%d: expected ASCII or BINARY, got '%.40s'", path, s.line,
+                    s.tok);
+    int bin = tok_is(&s, "binary");
     if (!next_tok(&s) || !tok_is(&s, "dataset") || !next_tok(&s) ||
         !(tok_is(&s, "polydata") || tok_is(&s, "unstructured_grid")))
         return fail(err, errlen, "%s:%d: expected DATASET POLYDATA or UNSTRUCTURED_GRID", path,
@@ -499,7 +654,9 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
     while (rc == 0 && next_tok(&s)) {
         double v;
         if (tok_is(&s, "points")) {
-            if (!next_tok(&s) || !tok_double(&s, &v) || v < 0 || v > 3e8 || !next_tok(&s)) {
+            int type;
+            if (!next_tok(&s) || !tok_double(&s, &v) || v < 0 || v > 3e8 || !next_tok(&s) ||
+                ((type = vtk_type(s.tok)) < 0 && bin)) {
                 rc = fail(err, errlen, "%s:%d: bad POINTS line", path, s.line);
                 break;
             }
@@ -510,71 +667,76 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
                 rc = fail(err, errlen, "%s: out of memory", path);
                 break;
             }
+            if (bin)
+                vtk_bin_begin(&s);
             for (long i = 0; i < 3 * npts; i++)
-                if (!next_tok(&s) || !tok_double(&s, &pts[i])) {
+                if (!vtk_value(&s, bin, type, &pts[i])) {
                     rc = fail(err, errlen, "%s:%d: POINTS: expected %ld coordinates, point %ld "
                               "is missing or bad", path, s.line, 3 * npts, i / 3);
                     break;
                 }
         } else if (tok_is(&s, ugrid ? "cells" : "polygons")) {
-            double size;
-            if (!next_tok(&s) || !tok_double(&s, &v) || v < 0 || v > 3e8 || !next_tok(&s) ||
-                !tok_double(&s, &size)) {
-                rc = fail(err, errlen, "%s:%d: bad %s line", path, s.line,
-                          ugrid ? "CELLS" : "POLYGONS");
-                break;
-            }
-            ncell = (long)v;
-            if ((long)size != 4 * ncell) {
-                rc = fail(err, errlen, "%s:%d: inconsistent triangle count: %ld cells need a "
-                          "size of %ld for triangles, the file says %ld", path, s.line, ncell,
-                          4 * ncell, (long)size);
-                break;
-            }
             free(cells);
-            cells = malloc((size_t)(ncell ? ncell : 1) * 3 * sizeof(int));
-            if (!cells) {
-                rc = fail(err, errlen, "%s: out of memory", path);
+            cells = NULL;
+            if (npts < 0) {
+                rc = fail(err, errlen, "%s:%d: cells before POINTS", path, s.line);
                 break;
             }
-            for (long c = 0; c < ncell && rc == 0; c++) {
-                double cnt;
-                if (!next_tok(&s) || !tok_double(&s, &cnt)) {
-                    rc = fail(err, errlen, "%s:%d: triangle %ld is missing (truncated file?)",
-                              path, s.line, c);
-                    break;
-                }
-                if (cnt != 3) {
-                    rc = fail(err, errlen, "%s:%d: triangle %ld: cell has %g vertices (only "
-                              "triangles are read)", path, s.line, c, cnt);
-                    break;
-                }
-                for (int k = 0; k < 3; k++) {
-                    if (!next_tok(&s) || !tok_double(&s, &v) || v != floor(v)) {
-                        rc = fail(err, errlen, "%s:%d: triangle %ld: bad vertex index", path,
-                                  s.line, c);
-                        break;
-                    }
-                    if (v < 0 || v >= npts) {
-                        rc = fail(err, errlen, "%s:%d: triangle %ld: vertex index %g out of "
-                                  "range (%ld points)", path, s.line, c, v, npts);
-                        break;
-                    }
-                    cells[3 * c + k] = (int)v;
-                }
-            }
+            rc = vtk_cells(path, &s, bin, npts, &ncell, &cells, err, errlen);
         } else if (ugrid && tok_is(&s, "cell_types")) {
             if (!next_tok(&s) || !tok_double(&s, &v) || (long)v != ncell) {
                 rc = fail(err, errlen, "%s:%d: inconsistent triangle count: CELL_TYPES counts "
                           "%s, CELLS %ld", path, s.line, s.tok, ncell);
                 break;
             }
+            if (bin)
+                vtk_bin_begin(&s);
             for (long c = 0; c < ncell; c++)
-                if (!next_tok(&s) || !tok_double(&s, &v) || v != 5) {
-                    rc = fail(err, errlen, "%s:%d: triangle %ld: VTK cell type %s is not a "
-                              "triangle (5)", path, s.line, c, s.tok);
+                if (!vtk_value(&s, bin, VT_I32, &v) || v != 5) {
+                    rc = fail(err, errlen, "%s:%d: triangle %ld: VTK cell type %g is not a "
+                              "triangle (5)", path, s.line, c, v);
                     break;
                 }
+        } else if (tok_is(&s, "field")) {
+            /* dataset field data (e.g. TIME, CYCLE of our own dumps): skipped */
+            double narr, nc, nt;
+            if (!next_tok(&s) || !next_tok(&s) || !tok_double(&s, &narr) || narr < 0) {
+                rc = fail(err, errlen, "%s:%d: bad FIELD line", path, s.line);
+                break;
+            }
+            for (long k = 0; rc == 0 && k < (long)narr; k++) {
+                int type;
+                if (!next_tok(&s) || !next_tok(&s) || !tok_double(&s, &nc) || !next_tok(&s) ||
+                    !tok_double(&s, &nt) || !next_tok(&s) || (type = vtk_type(s.tok)) < 0 ||
+                    nc < 0 || nt < 0 || nc * nt > 1e9) {
+                    rc = fail(err, errlen, "%s:%d: FIELD array %ld: bad header (numeric "
+                              "arrays only)", path, s.line, k);
+                    break;
+                }
+                if (bin)
+                    vtk_bin_begin(&s);
+                for (long q = 0; q < (long)(nc * nt); q++)
+                    if (!vtk_value(&s, bin, type, &v)) {
+                        rc = fail(err, errlen, "%s:%d: FIELD array %ld is cut", path, s.line,
+                                  k);
+                        break;
+                    }
+            }
+        } else if (tok_is(&s, "metadata")) {
+            /* information keys up to the next blank line: skipped */
+            vtk_bin_begin(&s);  /* the rest of the METADATA line */
+            while (s.p < s.end) {
+                const char *e = memchr(s.p, '\n', (size_t)(s.end - s.p));
+                if (!e)
+                    break;
+                int blank = 1;
+                for (const char *q = s.p; q < e; q++)
+                    blank &= isspace((unsigned char)*q) != 0;
+                s.p = e + 1;
+                s.line++;
+                if (blank)
+                    break;
+            }
         } else if (tok_is(&s, "point_data") || tok_is(&s, "cell_data")) {
             break;  /* attributes are not needed */
         } else if (tok_is(&s, "vertices") || tok_is(&s, "lines") ||
@@ -619,8 +781,7 @@ int mesh_read(const char *path, double weld_tol, struct mesh *m, char *err, size
         skip++;
     int has_nul = memchr(buf, 0, len) != NULL;
     if (len >= 5 && !strncmp(text, "# vtk", 5)) {
-        rc = has_nul ? fail(err, errlen, "%s: only ASCII legacy VTK meshes are read", path)
-                     : read_vtk(path, text, len, &soup, err, errlen);
+        rc = read_vtk(path, text, len, &soup, err, errlen);
     } else {
         int binary_fits = 0;
         if (len >= 84) {

@@ -1,5 +1,6 @@
 /* mesh.h - triangle meshes: reading (ASCII and binary STL, legacy VTK
- * polydata or unstructured grid of triangles), validation, vertex welding,
+ * polydata or unstructured grid of triangles, ASCII or BINARY, file
+ * versions 2-5), validation, vertex welding,
  * edge and vertex adjacency, rigid transforms. Pure host C (no engine, no
  * OpenCL): the fix mesh/surface front-end and the unit tests call it.
  *

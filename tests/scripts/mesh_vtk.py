@@ -116,6 +116,45 @@ run 1000
                     if fd.GetArray("CYCLE") is None or int(fd.GetArray("CYCLE").GetValue(0)) != step:
                         problems.append("CYCLE")
                 report(label, not problems, "; ".join(map(str, problems)))
+        # meshes written by VTK itself (as ParaView saves them): legacy 4.2 and 5.1, ASCII and
+        # BINARY, read by fix mesh/surface and written back by dump mesh/vtk
+        cube = vtk.vtkCubeSource()
+        for k, n in enumerate((4, 4, 4)):
+            (cube.SetXLength, cube.SetYLength, cube.SetZLength)[k](n)
+        tri = vtk.vtkTriangleFilter()
+        tri.SetInputConnection(cube.GetOutputPort())
+        clean = vtk.vtkCleanPolyData()
+        clean.SetInputConnection(tri.GetOutputPort())
+        clean.Update()
+        for ver in (42, 51):
+            for binary in (False, True):
+                name = "cube_%d_%s" % (ver, "binary" if binary else "ascii")
+                w = vtk.vtkPolyDataWriter()
+                w.SetInputData(clean.GetOutput())
+                w.SetFileName(os.path.join(d, name + ".vtk"))
+                w.SetFileVersion(w.VTK_LEGACY_READER_VERSION_4_2 if ver == 42
+                                 else w.VTK_LEGACY_READER_VERSION_5_1)
+                if binary:
+                    w.SetFileTypeToBinary()
+                w.Write()
+                deck = ("units lj\natom_style sphere\nregion b block -4 4 -4 4 -4 4\n"
+                        "create_box 1 b\ncreate_atoms 1 single 0 0 0 units box\n"
+                        "fix m all mesh/surface file %s.vtk type 1\n"
+                        "dump d all mesh/vtk 1 %s.out.vtk\nthermo 0\nrun 0\n" % (name, name))
+                with open(os.path.join(d, "in." + name), "w") as f:
+                    f.write(deck)
+                r = subprocess.run([GRAVEL, "-in", "in." + name, "-log", "none", "-screen",
+                                    "none"], cwd=d, capture_output=True, text=True)
+                problems = [] if r.returncode == 0 else [r.stderr[-300:]]
+                if not problems:
+                    rd = vtk.vtkPolyDataReader()
+                    rd.SetFileName(os.path.join(d, name + ".out.vtk"))
+                    rd.Update()
+                    pd = rd.GetOutput()
+                    if pd.GetNumberOfPoints() != 8 or pd.GetNumberOfCells() != 12:
+                        problems.append("%d points %d cells" % (pd.GetNumberOfPoints(),
+                                                                pd.GetNumberOfCells()))
+                report("mesh_read_" + name, not problems, "; ".join(problems))
     return 1 if failures else 0
 
 

@@ -871,6 +871,12 @@ TEST(dump_mesh_vtk)
     CHECK(strstr(text, "POINTS 3 double\n1 0 1\n2 0 1\n1 1 1\n") != NULL);
     CHECK(strstr(text, "POLYGONS 1 4\n3 0 1 2\n") != NULL);
     CHECK(strstr(text, "velocity 3 1 double\n0 0 1\n") != NULL);
+    /* our own dump reads back as a mesh (its FIELD data skipped) */
+    struct mesh m;
+    char err[256] = "";
+    CHECK(mesh_read(path("m.vtk"), 0, &m, err, sizeof err) == 0);
+    CHECK(m.ntri == 1 && m.nvert == 3 && m.vert[0] == 1 && m.vert[2] == 1);
+    mesh_free(&m);
 }
 
 int main(void)
