@@ -76,11 +76,16 @@ static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
     return f;
 }
 
+static int norm_flag(struct gravel *g);
+
+/* Fix vectors are extensive (sums over atoms, like a mesh's force): divided
+ * by the atom count under thermo_modify norm yes, as LAMMPS does. */
 static double fix_ref_value(struct gravel *g, const char *ref)
 {
     int index;
     struct fix *f = fix_ref_check(g, ref, &index);
-    return f->style->vector(g, f, index);
+    double v = f->style->vector(g, f, index);
+    return norm_flag(g) && g->atoms.n > 0 ? v / g->atoms.n : v;
 }
 
 static const struct {
