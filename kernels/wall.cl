@@ -20,8 +20,11 @@
  *                del = -(R - |x_xy|) x_xy / |x_xy|, rwall = -2R inside,
  *                +2R outside; with azimuthal shear the surface moves at
  *                vshear (y, -x) / |x_xy|
- * Room for region surfaces and mesh triangles: a kind answers the same
- * question for its elements. */
+ *   triangle     mesh walls (MESH_KERNEL below): the elements are the
+ *                triangles of a fix mesh/surface, binned in the mesh's own
+ *                frame, history in slots keyed by triangle id
+ * Room for region surfaces: a kind answers the same question for its
+ * elements. */
 
 #define WALL_PLANE 0
 #define WALL_ZCYLINDER 1
