@@ -773,6 +773,10 @@ int mesh_read(const char *path, double weld_tol, struct mesh *m, char *err, size
     unsigned char *buf = slurp(path, &len, err, errlen);
     if (!buf)
         return -1;
+    if (len == 0) {
+        free(buf);
+        return fail(err, errlen, "%s: the mesh file is empty", path);
+    }
     struct soup soup = {0};
     int rc;
     const char *text = (const char *)buf;

@@ -320,6 +320,8 @@ TEST(bad_meshes)
     double s[108];
     int n = box_soup(-2, 2, s);
     check_bad("missing.stl", "cannot open mesh file");
+    write_text("empty.stl", "");
+    check_bad("empty.stl", "the mesh file is empty");
     /* zero area: triangle 3 collapsed onto a line */
     double z[108];
     memcpy(z, s, sizeof z);
