@@ -365,6 +365,51 @@ TEST(bad_meshes)
     check_bad("short.stl", "unexpected end of file");
 }
 
+/* random bytes and random keyword soups never crash the readers (ASan) and
+ * always end in 0 or a message naming the file */
+TEST(reader_survives_garbage)
+{
+    static const char *const words[] = {"solid", "facet", "normal", "outer", "loop", "vertex",
+                                        "endloop", "endfacet", "endsolid", "1", "nan", "-0",
+                                        "1e308", "POINTS", "POLYGONS", "3", "0", "2", "float",
+                                        "OFFSETS", "CONNECTIVITY", "vtktypeint64", "FIELD",
+                                        "CELLS", "CELL_TYPES", "5", "-1", "x"};
+    const int nw = (int)(sizeof words / sizeof *words);
+    unsigned seed = 99;
+    int bad = 0;
+    for (int k = 0; k < 300; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "garbage%d.%s", k, k % 3 == 2 ? "vtk" : "stl");
+        FILE *fp = fopen(path(name), "wb");
+        if (k % 3 == 0) {   /* bytes, sometimes with a plausible binary header */
+            seed = seed * 1103515245u + 12345u;
+            int n = (int)(seed >> 16) % 600;
+            for (int i = 0; i < n; i++) {
+                seed = seed * 1103515245u + 12345u;
+                fputc((int)(seed >> 16) & 255, fp);
+            }
+        } else {
+            fputs(k % 3 == 1 ? "solid g\n" : "# vtk DataFile Version 3.0\ng\nASCII\n"
+                                             "DATASET POLYDATA\n", fp);
+            seed = seed * 1103515245u + 12345u;
+            int n = (int)(seed >> 16) % 90;
+            for (int i = 0; i < n; i++) {
+                seed = seed * 1103515245u + 12345u;
+                fprintf(fp, "%s%c", words[(seed >> 16) % (unsigned)nw], i % 7 ? ' ' : '\n');
+            }
+        }
+        fclose(fp);
+        struct mesh m;
+        char err[512] = "";
+        int rc = mesh_read(path(name), 0, &m, err, sizeof err);
+        if (rc == 0)
+            mesh_free(&m);
+        else if (rc != -1 || !strstr(err, name))
+            bad++;
+    }
+    CHECK(bad == 0);
+}
+
 TEST(command_errors)
 {
     double s[108];
@@ -892,6 +937,7 @@ int main(void)
     RUN(welding);
     RUN(bins_cover_reach);
     RUN(bad_meshes);
+    RUN(reader_survives_garbage);
     RUN(command_errors);
     RUN(box_equals_planes);
     RUN(shared_edge_and_vertex);
