@@ -7,3 +7,8 @@
 WALL_KERNEL(wall_gran_hooke, gran_hooke_eval)
 WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_eval)
 WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_eval)
+
+/* mesh walls (fix wall/gran ... mesh): the same laws against triangles */
+MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
+MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_eval)
+MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)

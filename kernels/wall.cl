@@ -20,8 +20,11 @@
  *                del = -(R - |x_xy|) x_xy / |x_xy|, rwall = -2R inside,
  *                +2R outside; with azimuthal shear the surface moves at
  *                vshear (y, -x) / |x_xy|
- * Room for region surfaces and mesh triangles: a kind answers the same
- * question for its elements. */
+ *   triangle     mesh walls (MESH_KERNEL below): the elements are the
+ *                triangles of a fix mesh/surface, binned in the mesh's own
+ *                frame, history in slots keyed by triangle id
+ * Room for region surfaces: a kind answers the same question for its
+ * elements. */
 
 #define WALL_PLANE 0
 #define WALL_ZCYLINDER 1
@@ -142,4 +145,263 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
 /* fix wall/pair: the active pair style's law */
 #ifdef PAIR_EVAL
 WALL_KERNEL(wall_pair, PAIR_EVAL)
+#endif
+
+/* ---- mesh walls: triangles (fix mesh/surface, fix wall/gran ... mesh) ------
+ *
+ * Geometry kind "triangle": the closest point of a triangle (a, b, c) to x,
+ * by Voronoi region (Ericson, Real-Time Collision Detection 5.1.5): face,
+ * edge k (vertices k, k+1 mod 3) or vertex k. Face contacts use the stored
+ * unit normal, del = ((x - a).n) n, so an axis-aligned triangle gives the
+ * very numbers of a plane wall. Region codes: 0 face, 1+k edge k, 4+k
+ * vertex k. The surface is flat for the contact law (rwall = 0). */
+#define MESH_FACE 0
+#define MESH_EDGE 1
+#define MESH_VERTEX 4
+
+static inline int tri_closest(__global const REAL *tri, const int t, const REAL3 p, REAL3 *del)
+{
+    const REAL3 a = vload3(4 * t, tri), b = vload3(4 * t + 1, tri), c = vload3(4 * t + 2, tri);
+    const REAL3 ab = b - a, ac = c - a, ap = p - a;
+    const REAL d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        *del = ap;
+        return MESH_VERTEX + 0;
+    }
+    const REAL3 bp = p - b;
+    const REAL d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        *del = bp;
+        return MESH_VERTEX + 1;
+    }
+    const REAL vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const REAL s = d1 / (d1 - d3);
+        *del = p - (a + s * ab);
+        return MESH_EDGE + 0;
+    }
+    const REAL3 cp = p - c;
+    const REAL d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        *del = cp;
+        return MESH_VERTEX + 2;
+    }
+    const REAL vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const REAL s = d2 / (d2 - d6);
+        *del = p - (a + s * ac);
+        return MESH_EDGE + 2;
+    }
+    const REAL va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const REAL s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        *del = p - (b + s * (c - b));
+        return MESH_EDGE + 1;
+    }
+    const REAL3 n = vload3(4 * t + 3, tri);
+    const REAL h = ap.x * n.x + ap.y * n.y + ap.z * n.z;
+    *del = (REAL3)(h * n.x, h * n.y, h * n.z);
+    return MESH_FACE;
+}
+
+/* 1 when triangle t has welded vertex v */
+static inline int tri_has(__global const int *triv, const int t, const int v)
+{
+    return triv[3 * t] == v || triv[3 * t + 1] == v || triv[3 * t + 2] == v;
+}
+
+/* 1 when triangles s and t share a welded vertex */
+static inline int tri_touch(__global const int *triv, const int s, const int t)
+{
+    return tri_has(triv, t, triv[3 * s]) || tri_has(triv, t, triv[3 * s + 1]) ||
+           tri_has(triv, t, triv[3 * s + 2]);
+}
+
+#define MESH_MAXC 16   /* touching triangles examined per atom per mesh */
+#define MESH_SLOTS 4   /* history slots per atom per mesh: key (triangle + 1, 0 = free), shear */
+
+static inline REAL3 mat_mul(__global const REAL *R, const REAL3 v)
+{
+    return (REAL3)(R[0] * v.x + R[1] * v.y + R[2] * v.z, R[3] * v.x + R[4] * v.y + R[5] * v.z,
+                   R[6] * v.x + R[7] * v.y + R[8] * v.z);
+}
+
+static inline REAL3 mat_tmul(__global const REAL *R, const REAL3 v)
+{
+    return (REAL3)(R[0] * v.x + R[3] * v.y + R[6] * v.z, R[1] * v.x + R[4] * v.y + R[7] * v.z,
+                   R[2] * v.x + R[5] * v.y + R[8] * v.z);
+}
+
+/* The parameter set of a mesh contact: one packed set (wall/gran), or
+ * the pair style's set of type pair (t_i, T - 1) for a mesh of type T
+ * (wall/pair: by_type = T). */
+static inline __global const REAL *p_of(__global const REAL *param, const int by_type,
+                                        const int ti, const int ntypes, const int nparam)
+{
+    return by_type ? param + (size_t)(ti * ntypes + (by_type - 1)) * nparam : param;
+}
+
+/* One work-item per atom of the group, one launch per mesh. The mesh is
+ * rigid: its triangles and their bins stay in the mesh's own frame and the
+ * atom is taken there, xb = R^T (x - d) (pose: R row-major 0..8, d 9..11,
+ * surface velocity V0 12..14 and omega 15..17 with v(p) = V0 + omega x p,
+ * bin origin 18..20, 1 / bin size 21, torque reference point 22..24). The
+ * atom's bin lists every triangle that may touch it, so the cost grows with
+ * the triangles near the atom, not with the mesh size.
+ *
+ * One physical contact is counted once: a face contact always counts; an
+ * edge or vertex contact is dropped when another touching triangle that has
+ * a vertex of that edge or vertex is closer (ties: the lower triangle id
+ * keeps it), i.e. the contact belongs to the nearest feature. History lives
+ * in MESH_SLOTS slots per atom keyed by triangle; a contact whose triangle
+ * has no slot takes over the slot of a triangle that no longer counts and
+ * shares a vertex with it, so the shear follows a particle sliding from
+ * triangle to triangle. fmesh (want_fmesh): per atom the force on the mesh
+ * (3) and its torque about the reference point (3), for f_ID output. */
+#define MESH_KERNEL(NAME, EVAL)                                                                \
+    __kernel void NAME(                                                                        \
+        const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
+        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
+        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
+        __global REAL *torque, __global REAL *history, const int has_history,                  \
+        const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
+        const int nparam, const int by_type, __global const REAL *tri,                         \
+        __global const int *triv, __global const int *cstart, __global const int *ctri,        \
+        __global const REAL *pose, const int gnx, const int gny, const int gnz,                \
+        const int moving, __global REAL *fmesh, const int want_fmesh, const REAL dt,           \
+        const int shearupdate, const int inclusive)                                            \
+    {                                                                                          \
+        const int i = get_global_id(0);                                                        \
+        if (i >= n)                                                                            \
+            return;                                                                            \
+        if (!(mask[i] & groupbit)) {                                                           \
+            if (want_fmesh) {                                                                  \
+                vstore3((REAL3)(0), 2 * i, fmesh);                                             \
+                vstore3((REAL3)(0), 2 * i + 1, fmesh);                                         \
+            }                                                                                  \
+            return;                                                                            \
+        }                                                                                      \
+        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL radi = radius[i];                                                           \
+        const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(3, pose)) : xi;                   \
+        int tc[MESH_MAXC], rc[MESH_MAXC], nc = 0;                                              \
+        REAL3 dc[MESH_MAXC];                                                                   \
+        REAL qc[MESH_MAXC];                                                                    \
+        const REAL ginv = pose[21];                                                            \
+        const int cx = (int)floor((xb.x - pose[18]) * ginv);                                   \
+        const int cy = (int)floor((xb.y - pose[19]) * ginv);                                   \
+        const int cz = (int)floor((xb.z - pose[20]) * ginv);                                   \
+        if (cx >= 0 && cy >= 0 && cz >= 0 && cx < gnx && cy < gny && cz < gnz) {              \
+            const int cell = (cz * gny + cy) * gnx + cx;                                       \
+            for (int k = cstart[cell]; k < cstart[cell + 1] && nc < MESH_MAXC; k++) {          \
+                const int t = ctri[k];                                                         \
+                REAL3 del;                                                                     \
+                const int region = tri_closest(tri, t, xb, &del);                              \
+                const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                \
+                if (inclusive ? rsq > radi * radi : rsq >= radi * radi)                        \
+                    continue;                                                                  \
+                tc[nc] = t;                                                                    \
+                rc[nc] = region;                                                               \
+                dc[nc] = del;                                                                  \
+                qc[nc] = rsq;                                                                  \
+                nc++;                                                                          \
+            }                                                                                  \
+        }                                                                                      \
+        /* one contact per physical contact: drop edge/vertex contacts of a nearer feature */ \
+        for (int c = 0; c < nc; c++) {                                                         \
+            if (rc[c] == MESH_FACE)                                                            \
+                continue;                                                                      \
+            const int k = rc[c] >= MESH_VERTEX ? rc[c] - MESH_VERTEX : rc[c] - MESH_EDGE;      \
+            const int va = triv[3 * tc[c] + k];                                                \
+            const int vb = rc[c] >= MESH_VERTEX ? va : triv[3 * tc[c] + (k + 1) % 3];          \
+            for (int o = 0; o < nc; o++) {                                                     \
+                if (o == c) /* dropped ones count too: the nearest of a cluster stays */       \
+                    continue;                                                                  \
+                if (!tri_has(triv, tc[o], va) && !tri_has(triv, tc[o], vb))                    \
+                    continue;                                                                  \
+                if (qc[o] < qc[c] || (qc[o] == qc[c] && tc[o] < tc[c])) {                      \
+                    rc[c] = -1 - rc[c]; /* dropped */                                          \
+                    break;                                                                     \
+                }                                                                              \
+            }                                                                                  \
+        }                                                                                      \
+        REAL okey[MESH_SLOTS];                                                                 \
+        REAL3 osh[MESH_SLOTS];                                                                 \
+        __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;     \
+        if (has_history)                                                                       \
+            for (int s = 0; s < MESH_SLOTS; s++) {                                             \
+                okey[s] = hist[4 * s];                                                         \
+                osh[s] = (REAL3)(hist[4 * s + 1], hist[4 * s + 2], hist[4 * s + 3]);           \
+            }                                                                                  \
+        REAL nkey[MESH_SLOTS];                                                                 \
+        REAL3 nsh[MESH_SLOTS];                                                                 \
+        int nnew = 0;                                                                          \
+        REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);         \
+        const REAL3 rref = (REAL3)(pose[22], pose[23], pose[24]);                              \
+        for (int c = 0; c < nc; c++) {                                                         \
+            if (rc[c] < 0)                                                                     \
+                continue;                                                                      \
+            const int t = tc[c];                                                               \
+            const REAL3 del = moving ? mat_mul(pose, dc[c]) : dc[c];                           \
+            const REAL3 cpt = xi - del;                                                        \
+            REAL3 vwall = (REAL3)(0);                                                          \
+            if (moving)                                                                        \
+                vwall = vload3(4, pose) + cross(vload3(5, pose), cpt);                         \
+            REAL3 sh = (REAL3)(0);                                                             \
+            if (has_history) {                                                                 \
+                int found = -1;                                                                \
+                for (int s = 0; s < MESH_SLOTS; s++)                                           \
+                    if (okey[s] == (REAL)(t + 1))                                              \
+                        found = s;                                                             \
+                for (int s = 0; found < 0 && s < MESH_SLOTS; s++) {                            \
+                    if (okey[s] <= 0)                                                          \
+                        continue;                                                              \
+                    const int ot = (int)okey[s] - 1;                                           \
+                    int live = 0;                                                              \
+                    for (int o = 0; o < nc; o++)                                               \
+                        live |= rc[o] >= 0 && tc[o] == ot;                                     \
+                    if (!live && tri_touch(triv, ot, t))                                       \
+                        found = s;                                                             \
+                }                                                                              \
+                if (found >= 0) {                                                              \
+                    sh = osh[found];                                                           \
+                    okey[found] = 0; /* taken */                                               \
+                }                                                                              \
+            }                                                                                  \
+            WALL_OMEGA(omi, omega, i);                                                         \
+            struct contact ct = contact_make(del, radi, 0, radi, vload3(i, v) - vwall, omi,    \
+                                             moving ? vload3(5, pose) : (REAL3)(0), rmass[i]); \
+            ct.dt = dt;                                                                        \
+            ct.shearupdate = shearupdate;                                                      \
+            struct contact_force cf;                                                           \
+            EVAL(&ct, p_of(param, by_type, type[i] - 1, ntypes, nparam), &sh, &cf);            \
+            if (has_history && nnew < MESH_SLOTS) {                                            \
+                nkey[nnew] = (REAL)(t + 1);                                                    \
+                nsh[nnew++] = sh;                                                              \
+            }                                                                                  \
+            fsum += cf.f;                                                                      \
+            tsum += contact_torque_i(&ct, &cf);                                              \
+            fm -= cf.f;                                                                        \
+            tm -= cross(cpt - rref, cf.f);                                                     \
+        }                                                                                      \
+        if (has_history)                                                                       \
+            for (int s = 0; s < MESH_SLOTS; s++) {                                             \
+                const int used = s < nnew;                                                     \
+                hist[4 * s] = used ? nkey[s] : (REAL)0;                                        \
+                hist[4 * s + 1] = used ? nsh[s].x : (REAL)0;                                   \
+                hist[4 * s + 2] = used ? nsh[s].y : (REAL)0;                                   \
+                hist[4 * s + 3] = used ? nsh[s].z : (REAL)0;                                   \
+            }                                                                                  \
+        vstore3(fsum, i, f);                                                                   \
+        WALL_ADD_TORQUE(torque, i, tsum);                                                      \
+        if (want_fmesh) {                                                                      \
+            vstore3(fm, 2 * i, fmesh);                                                         \
+            vstore3(tm, 2 * i + 1, fmesh);                                                     \
+        }                                                                                      \
+    }
+
+
+/* fix wall/pair ... mesh: the active pair style's law against triangles */
+#ifdef PAIR_EVAL
+MESH_KERNEL(mesh_pair, PAIR_EVAL)
 #endif

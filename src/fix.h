@@ -77,6 +77,10 @@ struct fix_style {
      * return 0 when it cannot be fused this run. Called at run setup,
      * after init. */
     int (*fuse)(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op);
+    /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
+     * values, vector(g, f, i) returns value i (1-based) at the current step. */
+    int size_vector;
+    double (*vector)(struct gravel *g, struct fix *f, int i);
 };
 
 struct fix {

@@ -19,6 +19,7 @@
 #include "args.h"
 #include "compute.h"
 #include "error.h"
+#include "fix.h"
 #include "output.h"
 #include "run.h"
 #include "styles.h"
@@ -33,6 +34,60 @@ enum kw_id {
 };
 #define KIND_COMPUTE (-1)
 #define KIND_VARIABLE (-2)
+#define KIND_FIX (-3)
+
+/* f_ID[N] (N >= 1): the fix ID and N, else 0. Fixes expose global vectors
+ * only (struct fix_style.vector). */
+static int fix_parse_ref(const char *ref, char *id, int *index)
+{
+    if (strncmp(ref, "f_", 2) != 0)
+        return 0;
+    const char *s = ref + 2;
+    const char *br = strchr(s, '[');
+    if (!br)
+        return 0;
+    size_t n = (size_t)(br - s);
+    if (n == 0 || n >= GR_NAMELEN)
+        return 0;
+    memcpy(id, s, n);
+    id[n] = '\0';
+    char *end;
+    long v = strtol(br + 1, &end, 10);
+    if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
+        return 0;
+    *index = (int)v;
+    return 1;
+}
+
+/* The fix of a valid f_ID[N] reference with a vector holding N, else an error. */
+static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
+{
+    char id[GR_NAMELEN];
+    if (!fix_parse_ref(ref, id, index))
+        gr_error(g, "thermo_style: invalid fix reference '%.64s' (use f_ID[N], N >= 1)", ref);
+    struct fix *f = fix_find(g, id);
+    if (!f)
+        gr_error(g, "thermo_style: no fix with ID '%.64s' for %.64s", id, ref);
+    if (!f->style->vector)
+        gr_error(g, "thermo_style: fix %s (%s) does not produce a global vector", id,
+                 f->style->name);
+    if (*index > f->style->size_vector)
+        gr_error(g, "thermo_style: %s is out of range: fix %s has %d values", ref, id,
+                 f->style->size_vector);
+    return f;
+}
+
+static int norm_flag(struct gravel *g);
+
+/* Fix vectors are extensive (sums over atoms, like a mesh's force): divided
+ * by the atom count under thermo_modify norm yes, as LAMMPS does. */
+static double fix_ref_value(struct gravel *g, const char *ref)
+{
+    int index;
+    struct fix *f = fix_ref_check(g, ref, &index);
+    double v = f->style->vector(g, f, index);
+    return norm_flag(g) && g->atoms.n > 0 ? v / g->atoms.n : v;
+}
 
 static const struct {
     const char *name, *header;
@@ -257,8 +312,14 @@ static void check_keyword(struct gravel *g, const char *s)
                 gr_error(g, "invalid variable reference '%s'", s);
         return;
     }
-    if (strncmp(s, "f_", 2) == 0)
-        gr_error(g, "fix references ('%s') are not supported in thermo output", s);
+    if (strncmp(s, "f_", 2) == 0) {
+        char id[GR_NAMELEN];
+        int index;
+        if (!fix_parse_ref(s, id, &index))
+            gr_error(g, "invalid fix reference '%s' (use f_ID[N], N >= 1: fixes give global "
+                        "vectors)", s);
+        return;
+    }
     if (strcmp(s, "press") == 0)
         gr_error(g, "'press' is not available: gravel's contact models compute no virial");
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
@@ -466,6 +527,10 @@ void thermo_init(struct gravel *g)
             if (!var_retrieve(g, s + 2))
                 gr_error(g, "thermo_style: variable '%s' is not defined", s + 2);
             st->kind[i] = KIND_VARIABLE;
+        } else if (strncmp(s, "f_", 2) == 0) {
+            int index;
+            fix_ref_check(g, s, &index);
+            st->kind[i] = KIND_FIX;
         } else {
             gr_error(g, "thermo_style: unknown keyword '%s'", s);
         }
@@ -677,6 +742,16 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         *out = compute_ref_value(g, name, norm_flag(g), "reference");
         return 1;
     }
+    if (strncmp(name, "f_", 2) == 0) {
+        char id[GR_NAMELEN];
+        int index;
+        struct fix *f;
+        if (!fix_parse_ref(name, id, &index) || !(f = fix_find(g, id)) || !f->style->vector ||
+            index > f->style->size_vector)
+            return 0;
+        *out = f->style->vector(g, f, index);
+        return 1;
+    }
     if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {
         *out = var_compute_equal(g, name + 2);
         return 1;
@@ -726,6 +801,8 @@ const char *thermo_line_text(struct gravel *g)
             val[i] = keyword_value(g, k, &ival[i], &isint);
         } else if (k == KIND_COMPUTE) {
             val[i] = compute_ref_value(g, t->col[i], norm_flag(g), "thermo_style");
+        } else if (k == KIND_FIX) {
+            val[i] = fix_ref_value(g, t->col[i]);
         } else {
             val[i] = var_compute_equal(g, t->col[i] + 2);
         }

@@ -3,9 +3,13 @@
  * arguments are bound and launched. */
 #include "wall.h"
 
+#include <stdlib.h>
+#include <string.h>
+
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "mesh.h"
 #include "pair.h"
 
 int wall_elements(const struct wall_geom *w) { return w->kind == WALL_PLANE ? 2 : 1; }
@@ -50,6 +54,110 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
         eng_arg_real(g, k, i++, w->v[d]);
     eng_arg_int(g, k, i++, w->cyl_shear);
     eng_arg_real(g, k, i++, w->vshear);
+    eng_arg_real(g, k, i++, g->dt);
+    eng_arg_int(g, k, i++, !eng_in_setup(g));
+    eng_arg_int(g, k, i++, law->inclusive);
+    eng_launch(g, k, (size_t)a->n);
+}
+
+/* ---- mesh walls -------------------------------------------------------------------- */
+
+void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh *m,
+                      const double *normal, double reach, const char *who)
+{
+    wall_mesh_release(wm);
+    struct mesh_bins b;
+    char err[256];
+    if (mesh_bin(m, reach, &b, err, sizeof err))
+        gr_error(g, "%s: %s", who, err);
+    int nt = m->ntri, ncell = b.n[0] * b.n[1] * b.n[2];
+    double *tri = malloc((size_t)nt * 12 * sizeof(double));
+    if (!tri) {
+        mesh_bins_free(&b);
+        gr_error(g, "%s: out of memory for %d triangles", who, nt);
+    }
+    for (int t = 0; t < nt; t++) {
+        for (int k = 0; k < 3; k++)
+            memcpy(tri + 12 * t + 3 * k, m->vert + 3 * m->tri[3 * t + k], 3 * sizeof(double));
+        memcpy(tri + 12 * t + 9, normal + 3 * t, 3 * sizeof(double));
+    }
+    size_t rsz = g->eng->rsz;
+    int nlist = b.start[ncell];
+    wm->tri = eng_alloc(g, (size_t)nt * 12 * rsz, "mesh triangles");
+    wm->triv = eng_alloc(g, (size_t)nt * 3 * sizeof(int), "mesh vertex ids");
+    wm->cstart = eng_alloc(g, ((size_t)ncell + 1) * sizeof(int), "mesh bins");
+    wm->ctri = eng_alloc(g, (size_t)(nlist ? nlist : 1) * sizeof(int), "mesh bin lists");
+    wm->pose = eng_alloc(g, 32 * rsz, "mesh pose");
+    eng_write_reals(g, wm->tri, (size_t)nt * 12, tri);
+    eng_write(g, wm->triv, 0, (size_t)nt * 3 * sizeof(int), m->tri);
+    eng_write(g, wm->cstart, 0, ((size_t)ncell + 1) * sizeof(int), b.start);
+    eng_write(g, wm->ctri, 0, (size_t)nlist * sizeof(int), b.list);
+    free(tri);
+    wm->ntri = nt;
+    memcpy(wm->gn, b.n, sizeof wm->gn);
+    memcpy(wm->glo, b.lo, sizeof wm->glo);
+    wm->h = b.h;
+    mesh_bins_free(&b);
+}
+
+void wall_mesh_release(struct wall_mesh *wm)
+{
+    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+}
+
+void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm,
+                     const struct wall_law *law, const double R[9], const double d[3],
+                     const double V0[3], const double omega[3], const double ref[3], int moving,
+                     int hstride, int hoff, cl_mem fmesh)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *a = eng_atoms(g);
+    double pose[25];
+    memcpy(pose, R, 9 * sizeof(double));
+    memcpy(pose + 9, d, 3 * sizeof(double));
+    memcpy(pose + 12, V0, 3 * sizeof(double));
+    memcpy(pose + 15, omega, 3 * sizeof(double));
+    memcpy(pose + 18, wm->glo, 3 * sizeof(double));
+    pose[21] = 1.0 / wm->h;
+    memcpy(pose + 22, ref, 3 * sizeof(double));
+    eng_write_reals(g, wm->pose, 25, pose);
+    cl_kernel k = law->kernel;
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    int i = 0;
+    eng_arg_int(g, k, i++, a->n);
+    eng_arg_uint(g, k, i++, f->groupbit);
+    eng_arg_mem(g, k, i++, a->mask);
+    eng_arg_mem(g, k, i++, a->x);
+    eng_arg_mem(g, k, i++, a->v);
+    eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
+    eng_arg_mem(g, k, i++, a->radius);
+    eng_arg_mem(g, k, i++, a->rmass);
+    eng_arg_mem(g, k, i++, a->type);
+    eng_arg_mem(g, k, i++, a->f);
+    eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
+    eng_arg_mem(g, k, i++, law->history ? f->peratom : a->f);
+    eng_arg_int(g, k, i++, law->history);
+    eng_arg_int(g, k, i++, hstride);
+    eng_arg_int(g, k, i++, hoff);
+    eng_arg_mem(g, k, i++, law->param);
+    eng_arg_int(g, k, i++, nt);
+    eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->style->nparam : 0);
+    eng_arg_int(g, k, i++, law->by_type);
+    eng_arg_mem(g, k, i++, wm->tri);
+    eng_arg_mem(g, k, i++, wm->triv);
+    eng_arg_mem(g, k, i++, wm->cstart);
+    eng_arg_mem(g, k, i++, wm->ctri);
+    eng_arg_mem(g, k, i++, wm->pose);
+    for (int c = 0; c < 3; c++)
+        eng_arg_int(g, k, i++, wm->gn[c]);
+    eng_arg_int(g, k, i++, moving);
+    eng_arg_mem(g, k, i++, fmesh ? fmesh : a->f);
+    eng_arg_int(g, k, i++, fmesh != NULL);
     eng_arg_real(g, k, i++, g->dt);
     eng_arg_int(g, k, i++, !eng_in_setup(g));
     eng_arg_int(g, k, i++, law->inclusive);

@@ -45,4 +45,35 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
 void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law);
 
+/* ---- mesh walls (kernels/wall.cl MESH_KERNEL) ----
+ * A triangle mesh on the device in its own frame: per triangle its three
+ * vertices and unit normal (12 REAL), its welded vertex ids (3 int), and its
+ * bins (src/mesh.h). The pose (R, d, V0, omega, see fix_mesh_surface.h) is
+ * uploaded at every launch. History: WALL_MESH_SLOTS slots of 4 REAL
+ * (key, shear) per atom per mesh. */
+#define WALL_MESH_SLOTS 4   /* = MESH_SLOTS in kernels/wall.cl */
+
+struct mesh;
+
+struct wall_mesh {
+    int ntri;
+    cl_mem tri, triv, cstart, ctri, pose;
+    int gn[3];
+    double glo[3], h;
+};
+
+/* Upload mesh m (normals: 3 per triangle) with bins for particles of radius
+ * up to reach; `who` names the caller in errors. */
+void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh *m,
+                      const double *normal, double reach, const char *who);
+void wall_mesh_release(struct wall_mesh *wm);
+/* Add the mesh contacts of f's atoms. R, d, V0, omega: the pose; ref: the
+ * torque reference point (lab frame). History at REAL offset hoff of a
+ * per-atom record of hstride REAL; fmesh (or NULL): per atom force on the
+ * mesh and torque about ref. */
+void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm,
+                     const struct wall_law *law, const double R[9], const double d[3],
+                     const double V0[3], const double omega[3], const double ref[3], int moving,
+                     int hstride, int hoff, cl_mem fmesh);
+
 #endif

@@ -8,6 +8,8 @@
  *   Kt NULL    -> 2/7 Kn;  gammat NULL -> gamman/2;  dampflag 0 -> gammat = 0
  *   wallstyle  xplane lo hi | yplane lo hi | zplane lo hi  (NULL = no face)
  *              zcylinder R  (axis z through x = y = 0)
+ *              mesh n_meshes N meshes ID ...  (LIGGGHTS: triangle meshes of fix
+ *              mesh/surface, moved by fix move/mesh; kernels/wall.cl MESH_KERNEL)
  *   wiggle d A T   the wall oscillates along d: position lo + A (1 - cos wt),
  *                  velocity A w sin wt, w = 2 pi / T, t from the fix's creation
  *   shear d v      the wall moves along d at v (position unchanged)
@@ -25,9 +27,10 @@
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
+#include "fix_mesh_surface.h"
 #include "wall.h"
 
-enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3 };
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 
@@ -40,10 +43,13 @@ struct wall {
     double amplitude, period, omega, vshear;
     bigint time_origin;
     struct wall_law law;
+    struct mesh_walls mesh;     /* wallstyle mesh */
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history"};
+static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
+                                          "mesh_gran_hertz_history"};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -76,6 +82,11 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.model = M_HOOKE_HISTORY;
     else if (!strcmp(argv[0], "hertz/history"))
         w.model = M_HERTZ_HISTORY;
+    else if (!strcmp(argv[0], "model"))
+        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
+                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
+                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
+                    "or use fix wall/pair mesh for the pair style's law");
     else if (!strcmp(argv[0], "granular"))
         gr_error(g, "fix wall/gran model 'granular' is not supported (use hooke, "
                     "hooke/history or hertz/history)");
@@ -122,12 +133,17 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.style = W_ZCYLINDER;
         w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
         i += 2;
+    } else if (!strcmp(ws, "mesh")) {
+        /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
+        w.style = W_MESH;
+        i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
+                                    "fix wall/gran mesh");
     } else if (!strcmp(ws, "region")) {
         gr_error(g, "fix wall/gran wall style 'region' is not supported (use xplane, yplane, "
                     "zplane or zcylinder)");
     } else {
-        gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane "
-                    "or zcylinder)", ws);
+        gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
+                    "zcylinder or mesh)", ws);
     }
     while (i < argc) {
         if (!strcmp(argv[i], "wiggle")) {
@@ -145,11 +161,16 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 3;
         } else if (!strcmp(argv[i], "contacts")) {
             gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (w.style == W_MESH) {
+            gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
         } else {
             gr_error(g, "unknown fix wall/gran keyword '%.64s' (expected wiggle or shear)",
                      argv[i]);
         }
     }
+    if (w.style == W_MESH && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
+                    "move/mesh)");
     if (w.style <= W_ZPLANE && g->dom.periodic[w.style])
         gr_error(g, "cannot use a %s wall in the periodic dimension %c", ws, 'x' + w.style);
     if (w.style == W_ZCYLINDER && (g->dom.periodic[0] || g->dom.periodic[1]))
@@ -213,7 +234,7 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, model_kernel[w->model]);
+    w->law.kernel = eng_kernel(g, (w->style == W_MESH ? mesh_kernel : model_kernel)[w->model]);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
@@ -223,6 +244,10 @@ static void init(struct gravel *g, struct fix *f)
     w->law.param = NULL;
     w->law.param = eng_alloc(g, GRAN_NPARAM * e->rsz, "fix wall/gran parameters");
     eng_write_reals(g, w->law.param, GRAN_NPARAM, w->param);
+    if (w->style == W_MESH) {
+        f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }
@@ -230,6 +255,10 @@ static void init(struct gravel *g, struct fix *f)
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
+    if (w->style == W_MESH) {
+        mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     wall_apply(g, f, &geom, &w->law);
 }
@@ -239,6 +268,8 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
+    if (w)
+        mesh_walls_release(&w->mesh);
     free(w);
     f->data = NULL;
 }

@@ -8,19 +8,26 @@
  * Like LAMMPS fix wall/gran, only the nearer face acts on a particle; with a
  * history pair style the contact history is kept per (atom, face).
  * fix wall/gran keeps the LAMMPS models; this fix gives every pair style of
- * gravel (linear/restitution, hertz/mindlin, ...) a wall with the same law. */
+ * gravel (linear/restitution, hertz/mindlin, ...) a wall with the same law.
+ *
+ * `fix ID group wall/pair mesh n_meshes N meshes ID ...`: the same law
+ * against triangle meshes (fix mesh/surface; kernel mesh_pair), with the
+ * parameters of type pair (itype, mesh type) and, for rolling resistance,
+ * the mesh's angular velocity as omega_j. */
 #include <string.h>
 
 #include "args.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_mesh_surface.h"
 #include "pair.h"
 #include "wall.h"
 
 struct wallp {
     struct wall_geom geom;
     struct wall_law law;
+    struct mesh_walls mesh;     /* mesh.n > 0: mesh walls */
 };
 
 static double face(struct gravel *g, const char *s, double null_value, const char *what)
@@ -30,11 +37,20 @@ static double face(struct gravel *g, const char *s, double null_value, const cha
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
-    if (argc != 3)
-        gr_error(g, "fix wall/pair expects xplane|yplane|zplane lo hi, got %d argument(s)",
-                 argc);
     struct wallp *w = gr_calloc(g, 1, sizeof *w);
     f->data = w;
+    if (argc >= 1 && !strcmp(argv[0], "mesh")) {
+        int i = mesh_surface_parse_list(g, argc, argv, 0, w->mesh.id, MESH_WALLS_MAX,
+                                        &w->mesh.n, "fix wall/pair mesh");
+        if (i < argc)
+            gr_error(g, "fix wall/pair mesh: unexpected argument '%.64s'", argv[i]);
+        f->hooks = HOOK_POST_FORCE;
+        f->sources[f->nsources++] = "wall.cl";
+        return;
+    }
+    if (argc != 3)
+        gr_error(g, "fix wall/pair expects xplane|yplane|zplane lo hi or mesh n_meshes N "
+                    "meshes ID ..., got %d argument(s)", argc);
     w->geom.kind = WALL_PLANE;
     if (!strcmp(argv[0], "xplane"))
         w->geom.axis = 0;
@@ -63,19 +79,34 @@ static void init(struct gravel *g, struct fix *f)
     if (!g->styles.pair)
         gr_error(g, "fix %s wall/pair needs a pair style: the wall uses its contact law",
                  f->id);
-    w->law.kernel = eng_kernel(g, "wall_pair");
+    w->law.kernel = eng_kernel(g, w->mesh.n ? "mesh_pair" : "wall_pair");
     w->law.param = g->eng->pair_param;
     w->law.by_type = 1;
     w->law.history = g->eng->history;
     w->law.inclusive = 0;
-    f->peratom_bytes = wall_peratom_bytes(g, &w->geom, &w->law);
+    if (w->mesh.n)
+        f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->law.history);
+    else
+        f->peratom_bytes = wall_peratom_bytes(g, &w->geom, &w->law);
 }
 
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wallp *w = f->data;
     w->law.param = g->eng->pair_param; /* re-packed at every run */
-    wall_apply(g, f, &w->geom, &w->law);
+    if (w->mesh.n)
+        mesh_walls_apply(g, f, &w->mesh, &w->law, 1);
+    else
+        wall_apply(g, f, &w->geom, &w->law);
+}
+
+static void destroy(struct fix *f)
+{
+    struct wallp *w = f->data;
+    if (w)
+        mesh_walls_release(&w->mesh);
+    free(w);
+    f->data = NULL;
 }
 
 const struct fix_style fix_style_wall_pair = {
@@ -83,4 +114,5 @@ const struct fix_style fix_style_wall_pair = {
     .create = create,
     .init = init,
     .post_force = post_force,
+    .destroy = destroy,
 };
