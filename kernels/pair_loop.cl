@@ -5,8 +5,8 @@
  * history, shear[3c ..] is its tangential history, seen from the owner. Each
  * contact is evaluated once, by pair_contacts, through the active evaluator
  * PAIR_EVAL, which writes what each side receives into that side's
- * incidence record: cslot[2c] (owner: F, -radi tc - tr) and cslot[2c + 1]
- * (partner: -F, -radj tc + tr). A particle's incidences ioff[i] ..
+ * incidence record (force in recf, torque in rect): cslot[2c] (owner: F,
+ * -radi tc - tr) and cslot[2c + 1] (partner: -F, -radj tc + tr). A particle's incidences ioff[i] ..
  * ioff[i + 1] - 1 follow its row, in ascending partner tag; pair_gather sums
  * them in that order (a stream), so a particle's sum depends on the
  * particles only, never on memory order, the cell sort, the rebuild
@@ -15,13 +15,6 @@
  *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
-
-/* Incidence records: the force, and with rotation the torque. */
-#ifdef HAS_ROTATION
-#define REC_RECORDS 2
-#else
-#define REC_RECORDS 1
-#endif
 
 #ifdef PAIR_EVAL
 /* The contact between i and j as the evaluators see it (del = x_i - x_j,
@@ -55,7 +48,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const uint *mask, __global REAL *shear,
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
-                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *rec)
+                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
+                            __global REAL *rect)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
@@ -95,13 +89,12 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         vstore3(sh, c, shear);
 #endif
     }
-    const size_t si = (size_t)cslot[2 * c] * REC_RECORDS;
-    const size_t sj = (size_t)cslot[2 * c + 1] * REC_RECORDS;
-    vstore3(out.f, si, rec);
-    vstore3(-out.f, sj, rec);
+    const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
+    vstore3(out.f, si, recf);
+    vstore3(-out.f, sj, recf);
 #ifdef HAS_ROTATION
-    vstore3(-radi * out.tc - out.tr, si + 1, rec);
-    vstore3(-radj * out.tc + out.tr, sj + 1, rec);
+    vstore3(-radi * out.tc - out.tr, si, rect);
+    vstore3(-radj * out.tc + out.tr, sj, rect);
 #endif
 }
 #endif /* PAIR_EVAL */
@@ -111,7 +104,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
  * fused post_force ops [first, first + npost) and final_integrate ops
  * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
  * change f, torque, v and omega. */
-__kernel void pair_gather(const int n, __global const int *ioff, __global const REAL *rec,
+__kernel void pair_gather(const int n, __global const int *ioff, __global const REAL *recf,
+                          __global const REAL *rect,
                           __global REAL *f, __global REAL *torque, __global const int *ops,
                           const int first, const int npost, const int nfinal,
                           __global const REAL *prm, __global REAL *v, __global REAL *omega,
@@ -123,9 +117,9 @@ __kernel void pair_gather(const int n, __global const int *ioff, __global const 
         return;
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
     for (int s = ioff[i], e = ioff[i + 1]; s < e; s++) {
-        fs += vload3((size_t)s * REC_RECORDS, rec);
+        fs += vload3((size_t)s, recf);
 #ifdef HAS_ROTATION
-        ts += vload3((size_t)s * REC_RECORDS + 1, rec);
+        ts += vload3((size_t)s, rect);
 #endif
     }
     if (npost + nfinal > 0) {

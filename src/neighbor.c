@@ -72,7 +72,7 @@ void nbr_free(struct gravel *g)
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
-                   &l->cslot, &l->shear, &l->rec, &b->coff_old,
+                   &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->dummy};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
@@ -166,14 +166,14 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
     b->list.maxn = maxn;
 }
 
-/* Bytes of the incidence records of one contact, both sides
- * (kernels/pair_loop.cl: force, and torque with rotation). */
-static size_t cf_bytes(const struct engine *e) { return (size_t)(e->rotation ? 12 : 6) * e->rsz; }
+/* Bytes of one buffer of incidence records per contact: both sides'
+ * forces (recf), or both sides' torques (rect) (kernels/pair_loop.cl). */
+static size_t cf_bytes(const struct engine *e) { return 6 * e->rsz; }
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 
 /* Contact buffers for at least nc contacts (contents not kept): ci, cj
- * cslot and shear (cap_contact); the incidence records rec (cap_pair) separately,
+ * cslot and shear (cap_contact); the incidence records recf, rect (cap_pair) separately,
  * after the history transfer has read what was parked there. */
 static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 {
@@ -196,17 +196,19 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc > b->cap_pair || !l->rec) {
-        rel(&l->rec);
+    if (nc > b->cap_pair || !l->recf) {
+        rel(&l->recf);
+        rel(&l->rect);
         b->cap_pair = grown(nc);
-        l->rec = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence records");
+        l->recf = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence force records");
+        if (g->eng->rotation)
+            l->rect = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence torque records");
     }
 }
 
 /* The current contacts become the previous ones: offsets swap, partners
- * and history are parked in the force buffer (history 3 REAL per contact
- * from byte 0, then the partners; history implies rotation, so a force
- * record of 6 REAL holds both). */
+ * and history are parked in the force record buffer (history 3 REAL per
+ * contact from byte 0, then the partners; 6 REAL per contact hold both). */
 static void retire_contacts(struct gravel *g, struct nbr *b)
 {
     struct engine *e = g->eng;
@@ -221,8 +223,8 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
         return;
     if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * cf_bytes(e))
         gr_error(g, "internal error: the force buffer cannot hold the previous contacts");
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->rec, 0, 0, hist, 0, NULL, NULL));
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->rec, 0,
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->recf, 0, 0, hist, 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->recf, 0,
                                      b->old_cj_at * sizeof(cl_int), nc * sizeof(cl_int), 0,
                                      NULL, NULL));
 }
@@ -259,7 +261,7 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->shear, &l->rec};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->shear, &l->recf, &l->rect};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
         b->cap_pair = b->cap_contact = 0;
@@ -270,10 +272,11 @@ void nbr_setup(struct gravel *g)
         b->history = e->history;
         b->rotation = e->rotation;
     }
-    if (b->rotation != e->rotation) { /* incidence records change size */
-        rel(&b->list.rec);
-        b->list.rec = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
-                                "incidence records");
+    if (b->rotation != e->rotation) { /* torque records appear or go */
+        rel(&b->list.rect);
+        if (e->rotation)
+            b->list.rect = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
+                                     "incidence torque records");
         b->rotation = e->rotation;
     }
     /* exclusions */
@@ -599,9 +602,9 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, b->perm);
     eng_arg_int(g, k, a++, permuted);
     eng_arg_mem(g, k, a++, b->coff_old);
-    eng_arg_mem(g, k, a++, l->rec);
+    eng_arg_mem(g, k, a++, l->recf);
     eng_arg_int(g, k, a++, (int)b->old_cj_at);
-    eng_arg_mem(g, k, a++, l->rec);
+    eng_arg_mem(g, k, a++, l->recf);
     eng_arg_mem(g, k, a++, l->shear);
     eng_launch(g, k, (size_t)total);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
@@ -647,7 +650,7 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         k = b->k_hist_rename;
         eng_arg_int(g, k, 0, b->ncontact_old);
         eng_arg_mem(g, k, 1, b->cellof);
-        eng_arg_mem(g, k, 2, b->list.rec);
+        eng_arg_mem(g, k, 2, b->list.recf);
         eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }

@@ -18,9 +18,10 @@ struct nbr_list {
     int maxn;
     /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1;
      * ci/cj the two atoms; cslot[2c], cslot[2c + 1] their incidences;
-     * shear (3 REAL, history only) seen from ci; rec the incidence records
-     * of the step (kernels/pair_loop.cl) */
-    cl_mem coff, ci, cj, cslot, shear, rec;
+     * shear (3 REAL, history only) seen from ci; recf and rect (rotation
+     * only) the incidence records of the step, force and torque
+     * (kernels/pair_loop.cl) */
+    cl_mem coff, ci, cj, cslot, shear, recf, rect;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
 };

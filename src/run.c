@@ -133,13 +133,15 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, i++, l->L[q]);
-        eng_arg_mem(g, k, i++, l->rec);
+        eng_arg_mem(g, k, i++, l->recf);
+        eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
         i = 0;
         eng_arg_int(g, k, i++, a->n);
         eng_arg_mem(g, k, i++, l->ioff);
-        eng_arg_mem(g, k, i++, l->rec);
+        eng_arg_mem(g, k, i++, l->recf);
+        eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         eng_arg_mem(g, k, i++, a->f);
         eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
         /* fused post_force ops, and the final kick except at setup */
