@@ -4,8 +4,8 @@
  * The engine lives across runs (g->eng). At each `run` it builds the program
  * for the active styles, uploads the host atoms, and from then on the device
  * holds the truth until run_sync_host() (run.h) copies it back. Atoms are
- * re-sorted by cell at every neighbor rebuild; every per-atom array moves
- * together, tags keep identity. */
+ * re-sorted by cell at neighbor rebuilds (atom_modify sort); every per-atom
+ * array moves together, tags keep identity. */
 #ifndef GR_ENGINE_H
 #define GR_ENGINE_H
 

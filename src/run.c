@@ -1,11 +1,14 @@
 /* run.c - `run` and `reset_timestep`: the Verlet loop on the device.
  *
  * Order per step (LAMMPS Verlet::run): initial_integrate fixes -> neighbor
- * decision (rebuild with pbc, shrink-wrap, re-sort) -> pair forces (the pair
- * kernel also clears f and torque) -> post_force fixes -> final_integrate
- * fixes -> end_of_step fixes -> output. Setup (Verlet::setup) rebuilds the
- * list and computes the step-0 forces with the history frozen
- * (shearupdate = 0), then calls post_force of every fix.
+ * decision (rebuild with pbc, shrink-wrap, re-sort) -> pair forces (the
+ * contact pipeline: pair_contacts, then pair_gather, which also clears f and
+ * torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
+ * -> output. Per-particle fix work fuses into the check and gather kernels
+ * where it can (src/fused.h); the other fixes run from hook lists built once
+ * per run. Setup (Verlet::setup) rebuilds the list and computes the step-0
+ * forces with the history frozen (shearupdate = 0), then calls post_force of
+ * every fix.
  *
  * The timing breakdown synchronizes the device after each section on every
  * 8th step and on rebuild steps only (see run_steps), so ordinary steps do
