@@ -388,7 +388,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         st.t_other = 0;
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
-    st.ncontact = nbr_list(g)->ncontact;
+    st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
     e->active = 0;
     if (post)
