@@ -11,6 +11,7 @@
 #   BENCH_SCALE (default 1)     multiplies every deck's step count
 #   BENCH_DECKS                 subset, e.g. "chute dense" (default all + agglo)
 #   GRAVEL_FLAGS                extra gravel options (e.g. "-device gpu")
+#   BENCH_MEMORY (default 1)    0 skips the peak-RSS figure (tools/bench_memory.py)
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
 repeats=${BENCH_REPEATS:-3}
@@ -93,3 +94,6 @@ if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
         "$(ratio "$rate_agglo" "$rate_dilute")"
 fi
 [ $have_lmp = 1 ] || echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
+if [ "${BENCH_MEMORY:-1}" != 0 ]; then
+    /usr/bin/python3 "$root/tools/bench_memory.py" || exit 1
+fi
