@@ -26,7 +26,8 @@ struct nbr {
     struct nbr_list list;
     /* contacts of the previous build, for the history transfer: offsets,
      * and (during a rebuild only) partners and history parked in the force
-     * buffer, which is free then (old_cj_at: offset of the partners, ints) */
+     * record buffer recf, which is free then (old_cj_at: offset of the
+     * partners, in ints) */
     cl_mem coff_old;
     int ncontact_old;
     size_t old_cj_at;
@@ -34,7 +35,7 @@ struct nbr {
     int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
-        excl_group, dummy;
+        excl_group;
     size_t cap_atoms, cap_cells;
     size_t rsz;
     int history, rotation;
@@ -43,7 +44,6 @@ struct nbr {
     int nexg;
     int ago;
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
-    int lost_warned;
     cl_kernel k_check, k_wrap, k_bin, k_scan_partial, k_scan_top, k_scan_final, k_scatter,
         k_cellsort, k_reorder_words, k_build, k_contacts, k_invperm, k_hist_rename,
         k_hist_transfer, k_overlap;
@@ -74,7 +74,7 @@ void nbr_free(struct gravel *g)
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
                    &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
-                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->dummy};
+                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
     free(b);
@@ -254,8 +254,6 @@ void nbr_setup(struct gravel *g)
         b->sums = eng_alloc(g, (NCHUNK_MAX + 1) * sizeof(cl_int), "scan sums");
     rel(&b->ext);
     b->ext = eng_alloc(g, NCHUNK_MAX * 6 * e->rsz, "extent");
-    if (!b->dummy)
-        b->dummy = eng_alloc(g, 64, "dummy");
     /* a different capacity, precision or feature set invalidates the kept list */
     if (b->cap_atoms != (size_t)e->cap || b->rsz != e->rsz || b->history != e->history) {
         b->old_valid = 0;
