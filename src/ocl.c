@@ -10,6 +10,7 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -391,17 +392,48 @@ static void CL_CALLBACK on_release(cl_mem m, void *data)
     atomic_fetch_sub(&mem_live, (long long)(size_t)data);
 }
 
+/* Address space this process may still take under its limit (ulimit -v),
+ * with the limit in *limit; SIZE_MAX when there is none. */
+static size_t address_space_left(size_t *limit)
+{
+    struct rlimit rl;
+    *limit = SIZE_MAX;
+    if (getrlimit(RLIMIT_AS, &rl) != 0 || rl.rlim_cur == RLIM_INFINITY)
+        return SIZE_MAX;
+    *limit = (size_t)rl.rlim_cur;
+    unsigned long pages = 0;
+    FILE *fp = fopen("/proc/self/statm", "r");
+    if (!fp)
+        return SIZE_MAX;
+    if (fscanf(fp, "%lu", &pages) != 1)
+        pages = 0;
+    fclose(fp);
+    size_t used = (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
+    return used < *limit ? *limit - used : 0;
+}
+
 cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what)
 {
     if (bytes == 0)
         bytes = 16;
+    /* stop cleanly before the OpenCL runtime runs out of memory (PoCL aborts) */
+    size_t limit, left = address_space_left(&limit);
+    if (left != SIZE_MAX && bytes + ((size_t)16 << 20) > left)
+        gr_error(g, "cannot allocate %zu bytes for the %s: the process may allocate only %zu "
+                    "more bytes under its address-space limit of %zu bytes (ulimit -v); %lld "
+                    "bytes of device buffers are in use", bytes, what, left, limit,
+                 ocl_mem_live());
+    if (o->global_mem && (size_t)ocl_mem_live() + bytes > o->global_mem)
+        gr_error(g, "cannot allocate %zu bytes for the %s: the device has %zu bytes of global "
+                    "memory (CL_DEVICE_GLOBAL_MEM_SIZE) and %lld are in use", bytes, what,
+                 o->global_mem, ocl_mem_live());
     if (o->max_alloc && bytes > o->max_alloc) {
         char fit[128] = "";
         if (o->atoms_hint > 0)
             snprintf(fit, sizeof fit, "; at %d atoms, about %.0f atoms would fit", o->atoms_hint,
                      (double)o->atoms_hint * (double)o->max_alloc / (double)bytes);
-        gr_error(g, "the %s need one buffer of %zu bytes, more than the device's largest "
-                    "allocation (CL_DEVICE_MAX_MEM_ALLOC_SIZE = %zu bytes)%s", what, bytes,
+        gr_error(g, "one buffer of %zu bytes for the %s is more than the device's largest "
+                    "allocation (CL_DEVICE_MAX_MEM_ALLOC_SIZE = %zu bytes)%s", bytes, what,
                  o->max_alloc, fit);
     }
     cl_int err;

@@ -1,10 +1,12 @@
 #!/bin/sh
 # reliability.sh - issue 12 through the command line: -in of a directory or
 # an endless device, -log on a full disk, print append at a file size limit
-# (no partial line), and `run ... post no` (only the Loop time line). One
+# (no partial line), `run ... post no` (only the Loop time line), and a run
+# under an address-space limit (a clean stop with the numbers). One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
 bin="$(pwd)/bin/gravel"
+root=$(pwd)
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 cd "$t" || exit 1
@@ -60,3 +62,9 @@ IN
 first=$(sed -n '1,/^between$/p' out)
 rest=$(sed -n '/^between$/,$p' out)
 check run_post_no '[ $rc -eq 0 ] && echo "$first" | grep -q "^Loop time of .* for 10 steps" && ! echo "$first" | grep -q "MPI task timing breakdown\|^Performance:\|Neighbor list builds" && echo "$rest" | grep -q "MPI task timing breakdown"'
+
+# memory pressure (issue 12 item 6): under an address-space limit the run stops cleanly, before
+# the OpenCL runtime would abort, with the bytes it needed and the bytes the limit leaves
+deck="$root/inputs/bench/dense.in"
+(ulimit -v 900000; "$bin" -in "$deck" -var L 100 -var nsteps 10 -log none) > out 2>&1; rc=$?
+check memory_limit_clean_stop '[ $rc -eq 1 ] && grep -q "ERROR: run: cannot allocate [0-9]* bytes for the .*: the process may allocate only [0-9]* more bytes under its address-space limit of 921600000 bytes (ulimit -v)" out && ! grep -q "Aborted\|bad_alloc\|Assertion" out'
