@@ -42,8 +42,15 @@ cl_kernel eng_kernel(struct gravel *g, const char *name)
     if (e->nkern == e->kern_cap) {
         e->kern_cap = e->kern_cap ? 2 * e->kern_cap : 32;
         e->kern = gr_realloc(g, e->kern, (size_t)e->kern_cap * sizeof *e->kern);
+        e->kern_wg = gr_realloc(g, e->kern_wg, (size_t)e->kern_cap * sizeof *e->kern_wg);
     }
     cl_kernel k = ocl_kernel(g, &e->ocl, name);
+    /* the device's choice (ocl.wg) capped by what the compiled kernel allows */
+    size_t kmax = 0;
+    if (clGetKernelWorkGroupInfo(k, e->ocl.device, CL_KERNEL_WORK_GROUP_SIZE, sizeof kmax, &kmax,
+                                 NULL) != CL_SUCCESS || kmax == 0)
+        kmax = 1;
+    e->kern_wg[e->nkern] = e->ocl.wg < kmax ? e->ocl.wg : kmax;
     e->kern[e->nkern++] = k;
     return k;
 }
@@ -86,17 +93,15 @@ void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes)
     set_arg(g, k, i, bytes, NULL);
 }
 
-/* Work-group size for kernel k: the device's choice (ocl.wg) capped by what
- * the compiled kernel allows. Kernels guard their index, so the global size
- * is rounded up to a multiple of it; results never depend on it (no
- * cross-work-item sums). */
+/* Work-group size for kernel k, fixed when eng_kernel created it. Kernels
+ * guard their index, so the global size is rounded up to a multiple of it;
+ * results never depend on it (no cross-work-item sums). */
 static size_t work_group(struct engine *e, cl_kernel k)
 {
-    size_t kmax = 0;
-    if (clGetKernelWorkGroupInfo(k, e->ocl.device, CL_KERNEL_WORK_GROUP_SIZE, sizeof kmax, &kmax,
-                                 NULL) != CL_SUCCESS || kmax == 0)
-        return 1;
-    return e->ocl.wg < kmax ? e->ocl.wg : kmax;
+    for (int i = 0; i < e->nkern; i++)
+        if (e->kern[i] == k)
+            return e->kern_wg[i];
+    return 1;
 }
 
 void eng_launch(struct gravel *g, cl_kernel k, size_t n)
@@ -443,6 +448,7 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     eng_release_kernels(e);
     free(e->kern);
+    free(e->kern_wg);
     release_set(&e->a);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];

@@ -52,6 +52,7 @@ struct engine {
     int setup;                  /* computing the setup forces (no history update) */
     int nkern, kern_cap;
     cl_kernel *kern;            /* every kernel created for this program */
+    size_t *kern_wg;            /* its work-group size (queried once, at creation) */
     struct nbr *nbr;
     /* kept across runs: validity of the device neighbor list / history */
     uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */

@@ -1,6 +1,6 @@
 /* wall.c - host side of the wall stage of the contact pipeline
- * (kernels/wall.cl): element counts and the one place where a wall kernel's
- * arguments are bound and launched. */
+ * (kernels/wall.cl): element counts, and where the wall kernels' arguments
+ * are bound (the atoms and the law shared by every kind) and launched. */
 #include "wall.h"
 
 #include <stdlib.h>
@@ -19,13 +19,12 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
     return law->history ? (size_t)wall_elements(w) * 3 * g->eng->rsz : 0;
 }
 
-void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
-                const struct wall_law *law)
+/* The arguments every wall kernel starts with (the atoms of f's group and
+ * the history), from index 0; returns the next index. */
+static int bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = eng_atoms(g);
-    cl_kernel k = law->kernel;
-    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     int i = 0;
     eng_arg_int(g, k, i++, a->n);
     eng_arg_uint(g, k, i++, f->groupbit);
@@ -40,10 +39,26 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
     eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
     eng_arg_mem(g, k, i++, law->history ? f->peratom : a->f);
     eng_arg_int(g, k, i++, law->history);
+    return i;
+}
+
+/* The contact law's parameters from index i; returns the next index. */
+static int bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i)
+{
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     eng_arg_mem(g, k, i++, law->param);
     eng_arg_int(g, k, i++, nt);
     eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->style->nparam : 0);
     eng_arg_int(g, k, i++, law->by_type);
+    return i;
+}
+
+void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
+                const struct wall_law *law)
+{
+    struct dev_atoms *a = eng_atoms(g);
+    cl_kernel k = law->kernel;
+    int i = bind_law(g, law, k, bind_atoms(g, f, law, k));
     eng_arg_int(g, k, i++, wall_elements(w));
     eng_arg_int(g, k, i++, (int)w->kind);
     eng_arg_int(g, k, i++, w->axis);
@@ -115,7 +130,6 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
                      const double V0[3], const double omega[3], const double ref[3], int moving,
                      int hstride, int hoff, cl_mem fmesh)
 {
-    struct engine *e = g->eng;
     struct dev_atoms *a = eng_atoms(g);
     double pose[25];
     memcpy(pose, R, 9 * sizeof(double));
@@ -127,27 +141,10 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
     memcpy(pose + 22, ref, 3 * sizeof(double));
     eng_write_reals(g, wm->pose, 25, pose);
     cl_kernel k = law->kernel;
-    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
-    int i = 0;
-    eng_arg_int(g, k, i++, a->n);
-    eng_arg_uint(g, k, i++, f->groupbit);
-    eng_arg_mem(g, k, i++, a->mask);
-    eng_arg_mem(g, k, i++, a->x);
-    eng_arg_mem(g, k, i++, a->v);
-    eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
-    eng_arg_mem(g, k, i++, a->radius);
-    eng_arg_mem(g, k, i++, a->rmass);
-    eng_arg_mem(g, k, i++, a->type);
-    eng_arg_mem(g, k, i++, a->f);
-    eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
-    eng_arg_mem(g, k, i++, law->history ? f->peratom : a->f);
-    eng_arg_int(g, k, i++, law->history);
+    int i = bind_atoms(g, f, law, k);
     eng_arg_int(g, k, i++, hstride);
     eng_arg_int(g, k, i++, hoff);
-    eng_arg_mem(g, k, i++, law->param);
-    eng_arg_int(g, k, i++, nt);
-    eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->style->nparam : 0);
-    eng_arg_int(g, k, i++, law->by_type);
+    i = bind_law(g, law, k, i);
     eng_arg_mem(g, k, i++, wm->tri);
     eng_arg_mem(g, k, i++, wm->triv);
     eng_arg_mem(g, k, i++, wm->cstart);
