@@ -2,7 +2,8 @@
  *
  * Build options (set by the engine): REAL=float|double (with USE_DOUBLE for
  * double), HAS_ROTATION (omega/torque arrays exist), HAS_HISTORY (per-contact
- * shear history), PAIR_EVAL=<ident>_eval (the active pair evaluator).
+ * shear history, HIST_N REAL per contact, 3 unless set), PAIR_EVAL=<ident>_eval
+ * (the active pair evaluator).
  * Contraction of a*b+c into fma is switched off so that results match the
  * host compilers LAMMPS is built with and the pair terms stay exactly
  * antisymmetric. PERIODIC_X/Y/Z mark periodic dimensions: the minimum-image
@@ -15,6 +16,11 @@
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
 #pragma OPENCL FP_CONTRACT OFF
+
+/* REALs of contact history per contact (pair granular sets more) */
+#ifndef HIST_N
+#define HIST_N 3
+#endif
 
 #define REAL3 CAT3(REAL)
 #define CAT3(t) CAT3_(t)

@@ -462,20 +462,32 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
                             __global const int *perm, const int permuted,
                             __global const int *old_coff, __global const int *parked,
                             const int at, __global const REAL *old_shear,
-                            __global REAL *shear)
+                            __global REAL *shear, __global const REAL *x,
+                            __global const REAL *radius, const REAL Lx, const REAL Ly,
+                            const REAL Lz)
 {
     __global const int *old_cj = parked + at;
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
     const int io = permuted ? perm[ci[c]] : ci[c], j = cj[c];
-    REAL3 sh = (REAL3)(0);
-    for (int o = old_coff[io], e = old_coff[io + 1]; o < e; o++)
+    /* LAMMPS (fix neigh/history): only a pair that overlaps at the rebuild
+     * keeps its history; apart, every law but a jkr contact held beyond touch
+     * has none anyway */
+    REAL3 del = vload3(ci[c], x) - vload3(j, x);
+    del.x = MINIMG_X(del.x, Lx);
+    del.y = MINIMG_Y(del.y, Ly);
+    del.z = MINIMG_Z(del.z, Lz);
+    const REAL radsum = radius[ci[c]] + radius[j];
+    const int overlap = del.x * del.x + del.y * del.y + del.z * del.z < radsum * radsum;
+    int from = -1;
+    for (int o = old_coff[io], e = old_coff[io + 1]; overlap && o < e; o++)
         if (old_cj[o] == j) {
-            sh = vload3(o, old_shear);
+            from = o;
             break;
         }
-    vstore3(sh, c, shear);
+    for (int q = 0; q < HIST_N; q++)
+        shear[(size_t)c * HIST_N + q] = from >= 0 ? old_shear[(size_t)from * HIST_N + q] : (REAL)0;
 }
 
 /* Per-chunk largest overlap (radsum - r) / min(radi, radj) over the list. */

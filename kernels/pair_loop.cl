@@ -4,7 +4,8 @@
  * joins its owner ci[c] (the partner with the lower tag) and cj[c]; with
  * history, shear[3c ..] is its tangential history, seen from the owner. Each
  * contact is evaluated once, by pair_contacts, through the active evaluator
- * PAIR_EVAL, which writes what each side receives into that side's
+ * PAIR_EVAL (PAIR_EVAL_ROW: an evaluator taking the contact's whole history
+ * row of HIST_N REAL, pair granular), which writes what each side receives into that side's
  * incidence record (force in recf, torque in rect): cslot[2c] (owner: F,
  * -radi tc - tr) and cslot[2c + 1] (partner: -F, -radj tc + tr). A particle's incidences ioff[i] ..
  * ioff[i + 1] - 1 follow its row, in ascending partner tag; pair_gather sums
@@ -16,7 +17,7 @@
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
-#ifdef PAIR_EVAL
+#if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
 /* The contact between i and j as the evaluators see it (del = x_i - x_j,
  * already computed: the rest is loaded only for pairs that interact). */
 static inline struct contact pair_contact(const int i, const int j, const REAL3 del,
@@ -68,9 +69,13 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     if (del.x * del.x + del.y * del.y + del.z * del.z >= radsum * radsum) {
 #ifdef HAS_HISTORY
         /* a separated pair forgets its history; most are zero already */
-        const REAL3 old = vload3(c, shear);
-        if (old.x != (REAL)0 || old.y != (REAL)0 || old.z != (REAL)0)
-            vstore3((REAL3)(0), c, shear);
+        __global REAL *hrow = shear + (size_t)c * HIST_N;
+        int any = 0;
+        for (int q = 0; q < HIST_N; q++)
+            any |= hrow[q] != (REAL)0;
+        if (any)
+            for (int q = 0; q < HIST_N; q++)
+                hrow[q] = 0;
 #endif
     } else
 #endif
@@ -79,6 +84,18 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         k.dt = dt;
         k.shearupdate = shearupdate;
         __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
+#ifdef PAIR_EVAL_ROW /* history of any width: the evaluator takes the whole row */
+        REAL h[HIST_N];
+#ifdef HAS_HISTORY
+        for (int q = 0; q < HIST_N; q++)
+            h[q] = shear[(size_t)c * HIST_N + q];
+#endif
+        PAIR_EVAL_ROW(&k, p, h, &out);
+#ifdef HAS_HISTORY
+        for (int q = 0; q < HIST_N; q++)
+            shear[(size_t)c * HIST_N + q] = h[q];
+#endif
+#else
 #ifdef HAS_HISTORY
         REAL3 sh = vload3(c, shear);
 #else
@@ -87,6 +104,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         PAIR_EVAL(&k, p, &sh, &out);
 #ifdef HAS_HISTORY
         vstore3(sh, c, shear);
+#endif
 #endif
     }
     const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
@@ -97,7 +115,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     vstore3(-radj * out.tc + out.tr, sj, rect);
 #endif
 }
-#endif /* PAIR_EVAL */
+#endif /* PAIR_EVAL || PAIR_EVAL_ROW */
 
 /* f_i (and torque_i) = the sum of i's incidence records in row order;
  * written, not added (this also clears the force of the step). Then the

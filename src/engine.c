@@ -384,6 +384,7 @@ void eng_prepare(struct gravel *g)
         pair_prepare(g);
     e->rotation = (p && pair_needs_rotation(p)) || (needs & NEED_ROTATION);
     e->history = p && pair_needs_history(p);
+    e->hist_n = e->history ? pair_history_size(p) : 3;
 
     const char *names[32], *texts[32];
     int n = 0;
@@ -410,6 +411,8 @@ void eng_prepare(struct gravel *g)
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
                        single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
+    if (e->hist_n != 3)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D HIST_N=%d", e->hist_n);
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);

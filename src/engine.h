@@ -40,12 +40,16 @@ struct hook_lists {
     struct hook_call *call[NHOOK];
 };
 
+#define GR_HIST_MAX 16 /* REALs of contact history per contact, at most */
+
 struct engine {
     struct ocl ocl;
     int ready;                  /* device chosen */
     int single;                 /* REAL = float */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
+    int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
+                                 * at most GR_HIST_MAX) */
     int cap;                    /* per-atom buffer capacity */
     struct dev_atoms a;
     int active;                 /* inside a run: the device holds the truth */

@@ -170,6 +170,14 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
  * forces (recf), or both sides' torques (rect) (kernels/pair_loop.cl). */
 static size_t cf_bytes(const struct engine *e) { return 6 * e->rsz; }
 
+/* Bytes per contact of the force record buffer: the records, or the parked
+ * history row and partner of a rebuild when those are larger. */
+static size_t recf_bytes(const struct engine *e)
+{
+    size_t park = (size_t)e->hist_n * e->rsz + sizeof(cl_int);
+    return e->history && park > cf_bytes(e) ? park : cf_bytes(e);
+}
+
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 
 /* Contact buffers for at least nc contacts (contents not kept): ci, cj
@@ -189,7 +197,7 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
         l->cslot = eng_alloc(g, b->cap_contact * 2 * sizeof(cl_int), "contact incidences");
         if (e->history)
-            l->shear = eng_alloc(g, b->cap_contact * 3 * e->rsz, "contact history");
+            l->shear = eng_alloc(g, b->cap_contact * (size_t)e->hist_n * e->rsz, "contact history");
     }
 }
 
@@ -200,15 +208,15 @@ static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
         rel(&l->recf);
         rel(&l->rect);
         b->cap_pair = grown(nc);
-        l->recf = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence force records");
+        l->recf = eng_alloc(g, b->cap_pair * recf_bytes(g->eng), "incidence force records");
         if (g->eng->rotation)
             l->rect = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence torque records");
     }
 }
 
 /* The current contacts become the previous ones: offsets swap, partners
- * and history are parked in the force record buffer (history 3 REAL per
- * contact from byte 0, then the partners; 6 REAL per contact hold both). */
+ * and history are parked in the force record buffer (history hist_n REAL per
+ * contact from byte 0, then the partners; recf_bytes() per contact hold both). */
 static void retire_contacts(struct gravel *g, struct nbr *b)
 {
     struct engine *e = g->eng;
@@ -217,11 +225,11 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
     b->coff_old = l->coff;
     l->coff = t;
     b->ncontact_old = l->ncontact;
-    size_t nc = (size_t)l->ncontact, hist = nc * 3 * e->rsz;
+    size_t nc = (size_t)l->ncontact, hist = nc * (size_t)e->hist_n * e->rsz;
     b->old_cj_at = (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
     if (nc == 0)
         return;
-    if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * cf_bytes(e))
+    if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * recf_bytes(e))
         gr_error(g, "internal error: the force buffer cannot hold the previous contacts");
     OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->recf, 0, 0, hist, 0, NULL, NULL));
     OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->recf, 0,
@@ -255,7 +263,8 @@ void nbr_setup(struct gravel *g)
     rel(&b->ext);
     b->ext = eng_alloc(g, NCHUNK_MAX * 6 * e->rsz, "extent");
     /* a different capacity, precision or feature set invalidates the kept list */
-    if (b->cap_atoms != (size_t)e->cap || b->rsz != e->rsz || b->history != e->history) {
+    int hist_id = e->history ? e->hist_n : 0;
+    if (b->cap_atoms != (size_t)e->cap || b->rsz != e->rsz || b->history != hist_id) {
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
@@ -267,7 +276,7 @@ void nbr_setup(struct gravel *g)
         grow_atoms(g, b, (size_t)e->cap);
         alloc_list(g, b, b->list.maxn ? b->list.maxn : 8); /* grows on overflow */
         b->rsz = e->rsz;
-        b->history = e->history;
+        b->history = hist_id;
         b->rotation = e->rotation;
     }
     if (b->rotation != e->rotation) { /* torque records appear or go */
@@ -587,7 +596,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
         gr_error(g, "internal error: the neighbor list is not symmetric (a pair is missing "
                     "from one partner's row) at step %lld", (long long)g->step);
     if (e->history && (!b->old_valid || b->ncontact_old == 0))
-        eng_fill_zero(g, l->shear, (size_t)total * 3 * e->rsz);
+        eng_fill_zero(g, l->shear, (size_t)total * e->hist_n * e->rsz);
     if (!e->history || !b->old_valid || b->ncontact_old == 0) {
         alloc_forces(g, b, (size_t)total);
         return;
@@ -604,6 +613,10 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_int(g, k, a++, (int)b->old_cj_at);
     eng_arg_mem(g, k, a++, l->recf);
     eng_arg_mem(g, k, a++, l->shear);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.radius);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, l->L[q]);
     eng_launch(g, k, (size_t)total);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
@@ -826,23 +839,25 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     s->n = n;
     s->maxn = maxn;
     s->ago = b->ago;
-    s->history = e->history;
+    s->history = e->history ? e->hist_n : 0;
     s->ncount = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     s->nlist = gr_malloc(g, ((size_t)n * maxn + 1) * sizeof(int));
     s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
     eng_read(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
     eng_read(g, l->nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
     eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    const int hw = e->hist_n;
     if (e->history) {
-        /* per row slot: the owner's history, its negative on the partner's side */
-        s->shear = gr_calloc(g, 3 * (size_t)n * maxn + 1, sizeof(double));
+        /* per row slot: the owner's history, its negative on the partner's side
+         * (only the owner's is read back: contacts are owned by the lower tag) */
+        s->shear = gr_calloc(g, (size_t)hw * n * maxn + 1, sizeof(double));
         int *ioff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
         int *cslot = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
         int *owner = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
-        double *sh = gr_malloc(g, (3 * (size_t)nc + 1) * sizeof(double));
+        double *sh = gr_malloc(g, ((size_t)hw * nc + 1) * sizeof(double));
         eng_read(g, l->ioff, 0, ((size_t)n + 1) * sizeof(cl_int), ioff);
         eng_read(g, l->cslot, 0, 2 * (size_t)nc * sizeof(cl_int), cslot);
-        eng_read_reals(g, l->shear, 3 * (size_t)nc, sh);
+        eng_read_reals(g, l->shear, (size_t)hw * nc, sh);
         /* incidence -> row slot: the atom whose packed row holds it */
         for (int i = 0; i < n; i++)
             for (int q = ioff[i]; q < ioff[i + 1]; q++)
@@ -851,8 +866,8 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
             for (int side = 0; side < 2; side++) {
                 int q = cslot[2 * c + side], i = owner[q];
                 size_t slot = (size_t)i * maxn + (size_t)(q - ioff[i]);
-                for (int d = 0; d < 3; d++)
-                    s->shear[3 * slot + d] = (side ? -1.0 : 1.0) * sh[3 * (size_t)c + d];
+                for (int d = 0; d < hw; d++)
+                    s->shear[hw * slot + d] = (side ? -1.0 : 1.0) * sh[hw * (size_t)c + d];
             }
         free(ioff);
         free(cslot);
@@ -863,23 +878,24 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
 }
 
 /* Order row slots by partner tag (insertion sort: rows are short). */
-static void sort_row(int *row, double *shear, int cnt, const int64_t *tag)
+static void sort_row(int *row, double *shear, int hw, int cnt, const int64_t *tag)
 {
+    double sh[GR_HIST_MAX] = {0};
+    size_t w = (size_t)hw * sizeof(double);
     for (int a = 1; a < cnt; a++) {
         int j = row[a];
-        double sh[3] = {0, 0, 0};
         if (shear)
-            memcpy(sh, shear + 3 * a, sizeof sh);
+            memcpy(sh, shear + (size_t)hw * a, w);
         int b = a - 1;
         while (b >= 0 && tag[row[b]] > tag[j]) {
             row[b + 1] = row[b];
             if (shear)
-                memcpy(shear + 3 * (b + 1), shear + 3 * b, sizeof sh);
+                memcpy(shear + (size_t)hw * (b + 1), shear + (size_t)hw * b, w);
             b--;
         }
         row[b + 1] = j;
         if (shear)
-            memcpy(shear + 3 * (b + 1), sh, sizeof sh);
+            memcpy(shear + (size_t)hw * (b + 1), sh, w);
     }
 }
 
@@ -898,16 +914,20 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     int *ioff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int *nown = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int *coff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
-    double *rsh = e->history ? gr_calloc(g, 3 * slots + 1, sizeof(double)) : NULL;
+    const int hw = e->hist_n;
+    if (e->history && s->shear && s->history != hw)
+        gr_error(g, "internal error: neighbor state of history width %d for width %d",
+                 s->history, hw);
+    double *rsh = e->history ? gr_calloc(g, (size_t)hw * slots + 1, sizeof(double)) : NULL;
     memcpy(row, s->nlist, slots * sizeof(int));
     if (rsh && s->shear)
-        memcpy(rsh, s->shear, 3 * slots * sizeof(double));
+        memcpy(rsh, s->shear, (size_t)hw * slots * sizeof(double));
     size_t total = 0, nin = 0;
     for (int i = 0; i < n; i++) {
         ioff[i] = (int)nin;
         nin += (size_t)s->ncount[i];
-        sort_row(row + (size_t)i * maxn, rsh ? rsh + 3 * (size_t)i * maxn : NULL, s->ncount[i],
-                 tag);
+        sort_row(row + (size_t)i * maxn, rsh ? rsh + (size_t)hw * i * maxn : NULL, hw,
+                 s->ncount[i], tag);
         int own = 0;
         for (int k = 0; k < s->ncount[i]; k++)
             own += tag[row[(size_t)i * maxn + k]] > tag[i];
@@ -919,7 +939,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     ioff[n] = (int)nin;
     int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
     int *cslot = gr_malloc(g, (2 * total + 1) * sizeof(int));
-    double *sh = e->history ? gr_calloc(g, 3 * total + 1, sizeof(double)) : NULL;
+    double *sh = e->history ? gr_calloc(g, (size_t)hw * total + 1, sizeof(double)) : NULL;
     int asym = 0;
     for (int i = 0; i < n && !asym; i++) {
         int cnt = s->ncount[i], first = cnt - nown[i];
@@ -932,7 +952,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
                 cj[c] = j;
                 cslot[2 * c] = ioff[i] + k;
                 if (sh)
-                    memcpy(sh + 3 * (size_t)c, rsh + 3 * slot, 3 * sizeof(double));
+                    memcpy(sh + (size_t)hw * c, rsh + (size_t)hw * slot, (size_t)hw * sizeof(double));
                 continue;
             }
             int jfirst = s->ncount[j] - nown[j], at = -1;
@@ -960,7 +980,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         eng_write(g, l->ci, 0, total * sizeof(cl_int), ci);
         eng_write(g, l->cj, 0, total * sizeof(cl_int), cj);
         if (sh)
-            eng_write_reals(g, l->shear, 3 * total, sh);
+            eng_write_reals(g, l->shear, (size_t)hw * total, sh);
         eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
     }
     free(row);

@@ -59,10 +59,10 @@ void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m);
  * rows are not symmetric (j in i's row without i in j's). Arrays are caller-owned (free with
  * nbr_state_free). */
 struct nbr_state {
-    int n, maxn, ago, history;
+    int n, maxn, ago, history;  /* history: REALs per contact (0: none) */
     int *ncount;            /* [n] */
     int *nlist;             /* [n maxn] */
-    double *shear;          /* [3 n maxn], NULL without history */
+    double *shear;          /* [history n maxn], NULL without history */
     double *xhold;          /* [3 n] */
 };
 int nbr_export(struct gravel *g, struct nbr_state *s);

@@ -295,8 +295,29 @@ int pair_needs_history(const struct pair *p)
     const struct pair *t[PAIR_MAXTERMS];
     int n = terms_of(p, t), r = 0;
     for (int k = 0; k < n; k++)
-        r |= t[k]->style->history;
+        r |= t[k]->style->history &&
+             (!t[k]->style->history_size || t[k]->style->history_size(t[k]) > 0);
     return r;
+}
+
+int pair_history_size(const struct pair *p)
+{
+    const struct pair *t[PAIR_MAXTERMS];
+    int n = terms_of(p, t), w = 3;
+    for (int k = 0; k < n; k++)
+        if (t[k]->style->history && t[k]->style->history_size) {
+            int s = t[k]->style->history_size(t[k]);
+            if (n > 1 && s != 3)
+                return -1; /* hybrid/overlay: every term takes a 3-REAL history */
+            w = s;
+        }
+    return w;
+}
+
+/* the term acts beyond body contact (statically, or for its coefficients) */
+static int beyond(const struct pair *t)
+{
+    return t->style->beyond_contact || (t->style->beyond && t->style->beyond(t));
 }
 
 int pair_has_cohesion(const struct pair *p)
@@ -304,7 +325,7 @@ int pair_has_cohesion(const struct pair *p)
     const struct pair *t[PAIR_MAXTERMS];
     int n = terms_of(p, t), r = 0;
     for (int k = 0; k < n; k++)
-        r |= t[k]->style->beyond_contact;
+        r |= beyond(t[k]);
     return r;
 }
 
@@ -317,7 +338,7 @@ double pair_reach(const struct gravel *g, double radsum)
     const struct pair *t[PAIR_MAXTERMS];
     int n = terms_of(p, t);
     for (int k = 0; k < n; k++)
-        if (t[k]->style->beyond_contact && t[k]->style->reach) {
+        if (beyond(t[k]) && t[k]->style->reach) {
             double r = t[k]->style->reach(t[k], radsum);
             if (r > reach)
                 reach = r;
@@ -339,7 +360,7 @@ int pair_cohesion_defines(const struct pair *p, char *buf, size_t len)
     double a = 0, b = 0;
     int any = 0;
     for (int k = 0; k < n; k++)
-        if (t[k]->style->beyond_contact && t[k]->style->reach) {
+        if (beyond(t[k]) && t[k]->style->reach) {
             double a0 = t[k]->style->reach(t[k], 0.0);
             double b0 = t[k]->style->reach(t[k], 1.0) - a0;
             a = a0 > a ? a0 : a;

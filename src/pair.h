@@ -69,6 +69,12 @@ struct pair_style {
     /* hybrid/overlay: source files and build options of the composed terms. */
     const char *(*source_n)(const struct pair *p, int k);
     int (*defines)(const struct pair *p, char *buf, size_t len);
+    /* REALs of contact history per contact when history is set (NULL: 3);
+     * at most GR_HIST_MAX. pair granular sizes it from the sub-models. */
+    int (*history_size)(const struct pair *p);
+    /* Acts beyond body contact for these coefficients (JKR of pair granular):
+     * as beyond_contact, decided at run start (after init). NULL: never. */
+    int (*beyond)(const struct pair *p);
     /* Release p->data. */
     void (*destroy)(struct pair *p);
 };
@@ -105,6 +111,8 @@ void pair_release(struct pair *p);
  * term that acts beyond body contact (cohesion: HAS_COHESION). */
 int pair_needs_rotation(const struct pair *p);
 int pair_needs_history(const struct pair *p);
+/* REALs of history per contact (3 unless a style sizes it). */
+int pair_history_size(const struct pair *p);
 int pair_has_cohesion(const struct pair *p);
 /* Neighbor cut-off without skin for a pair of radius sum `radsum`: radsum
  * unless a cohesion term reaches farther. */

@@ -360,7 +360,8 @@ static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
             put_i64(g, w, devtag[s.nlist[(size_t)i * s.maxn + k]]);
     if (s.history)
         for (int i = 0; i < n; i++)
-            put(g, w, s.shear + 3 * (size_t)i * s.maxn, 3 * (size_t)s.ncount[i] * sizeof(double));
+            put(g, w, s.shear + (size_t)s.history * i * s.maxn,
+                (size_t)s.history * s.ncount[i] * sizeof(double));
     if (exact)
         put(g, w, s.xhold, 3 * (size_t)n * sizeof(double));
     sect_end(w, at);
@@ -828,8 +829,12 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
         }
         im->npartner = tot;
         im->partner = get_array(r, tot, sizeof(int64_t));
+        if (im->history == 1) /* files before pair granular: 1 = 3 REAL per contact */
+            im->history = 3;
+        if (im->history < 0 || im->history > GR_HIST_MAX)
+            BAD("invalid contact history width %d", im->history);
         if (im->history)
-            im->shear = get_array(r, 3 * tot, sizeof(double));
+            im->shear = get_array(r, (size_t)im->history * tot, sizeof(double));
         if (im->exact) {
             if (im->ndev != im->n || (im->n && memcmp(im->devtag, im->tag,
                                                       n * sizeof(int64_t))))
@@ -1168,8 +1173,11 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     if (im->has_list) {
         size_t nshear = 0;
         for (size_t k = 0; im->history && k < im->npartner; k++)
-            nshear += im->shear[3 * k] != 0 || im->shear[3 * k + 1] != 0 ||
-                      im->shear[3 * k + 2] != 0;
+            for (int d = 0; d < im->history; d++)
+                if (im->shear[(size_t)im->history * k + d] != 0) {
+                    nshear++;
+                    break;
+                }
         gr_print(g, "  %zu neighbor entries, %zu with contact history; state of %d fix(es)%s\n",
                  im->npartner, nshear, im->nfix, im->exact ? "; exact continuation data" : "");
     }
@@ -1269,7 +1277,8 @@ int restart_resume(struct gravel *g)
         struct nbr_state s;
         memset(&s, 0, sizeof s);
         s.n = n;
-        s.history = e->history;
+        const int hw = e->history ? e->hist_n : 0;
+        s.history = hw;
         s.ncount = gr_calloc(g, (size_t)n + 1, sizeof(int));
         /* rows of the current atoms, partners mapped by tag (unknown partners dropped) */
         size_t *first = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(size_t));
@@ -1286,7 +1295,7 @@ int restart_resume(struct gravel *g)
         s.maxn = maxn > 0 ? maxn : 1;
         s.nlist = gr_calloc(g, (size_t)n * s.maxn + 1, sizeof(int));
         if (e->history)
-            s.shear = gr_calloc(g, 3 * (size_t)n * s.maxn + 1, sizeof(double));
+            s.shear = gr_calloc(g, (size_t)hw * n * s.maxn + 1, sizeof(double));
         for (int i = 0; i < im->ndev; i++) {
             int ri = row[i];
             if (ri < 0)
@@ -1297,16 +1306,17 @@ int restart_resume(struct gravel *g)
                     continue;
                 size_t slot = (size_t)ri * s.maxn + (size_t)s.ncount[ri]++;
                 s.nlist[slot] = j;
-                if (e->history && im->history)
-                    memcpy(s.shear + 3 * slot, im->shear + 3 * (first[i] + k),
-                           3 * sizeof(double));
+                if (e->history && im->history) /* the common part of the two widths */
+                    memcpy(s.shear + (size_t)hw * slot,
+                           im->shear + (size_t)im->history * (first[i] + k),
+                           (size_t)(hw < im->history ? hw : im->history) * sizeof(double));
             }
         }
         free(first);
         s.xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
         memcpy(s.xhold, exact ? im->xhold : g->atoms.x, 3 * (size_t)n * sizeof(double));
         s.ago = exact ? im->ago : 0;
-        exact = exact && e->history == im->history;
+        exact = exact && hw == im->history;
         int imported = nbr_import(g, &s);
         nbr_state_free(&s);
         if (!imported) {

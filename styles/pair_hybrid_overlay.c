@@ -63,7 +63,7 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
     int i = 0;
     while (i < argc) {
         const struct pair_style *st = pair_style_find(argv[i]);
-        if (!st || st->source_n)
+        if (!st || st->source_n || !st->eval)
             gr_error(g, "hybrid/overlay: '%.64s' is not a pair style that can be "
                         "composed (argument %d)", argv[i], i + 1);
         int e = i + 1;

@@ -1,0 +1,368 @@
+/* pair_granular.cl - LAMMPS `pair_style granular` (29 Sep 2021,
+ * pair_granular.cpp compute()): one small evaluator per sub-model, composed
+ * by granular_eval. Host side styles/pair_granular.c; docs
+ * doc/styles/pair_granular.md.
+ *
+ * Composition at program build time (styles/pair_granular.c defines):
+ *   GRN_USED, GRD_USED, GRT_USED, GRR_USED, GRW_USED  bit masks of the normal,
+ *       damping, tangential, rolling and twisting models some type pair uses
+ *       (bit = the GR_N_* ... value of param_layout.h); a model whose bit is
+ *       clear is not compiled, a category with one bit needs no run-time test;
+ *       GRN_HAS_JKR, GRN_HAS_DMT say the same to the preprocessor.
+ *   GR_TANG_HISTORY  some pair has a tangential model with history (LAMMPS
+ *       then runs every pair through the history branch, linear_nohistory too)
+ *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH  offsets in the history row of
+ *       the contact radius of the last step (mindlin_rescale), the rolling
+ *       displacement (3), the twist angle, the JKR touch flag; HIST_N its width.
+ * Param layout GR_* (param_layout.h), per type pair, host-mixed.
+ *
+ * Sign convention: n = del / r from j to i. The tangential history is
+ * antisymmetric under i <-> j, the rolling and twisting histories and a are
+ * symmetric (as LAMMPS computes them); contacts are always evaluated from the
+ * owner (the lower tag), so the stored row is the owner's. */
+
+#define GR_IS(used, m, sel) ((((used) >> (m)) & 1) && ((used) == (1 << (m)) || (sel) == (m)))
+
+/* ---- normal models: elastic force Fne, knfac (stiffness for tsuji), a ---- */
+
+/* hooke: Fne = kn delta, a = sqrt(delta R) (for viscoelastic damping) */
+static inline REAL grn_hooke(REAL kn, REAL delta, REAL dR, REAL *knfac, REAL *a)
+{
+    *knfac = kn;
+    *a = sqrt(dR);
+    return kn * delta;
+}
+
+/* hertz, hertz/material: Fne = kn a delta, a = sqrt(delta R), knfac = kn a */
+static inline REAL grn_hertz(REAL kn, REAL delta, REAL dR, REAL *knfac, REAL *a)
+{
+    *a = sqrt(dR);
+    *knfac = kn * *a;
+    return kn * delta * *a;
+}
+
+/* dmt: hertz minus the pull-off 4 pi coh R */
+static inline REAL grn_dmt(REAL kn, REAL coh, REAL Reff, REAL delta, REAL dR, REAL *knfac,
+                           REAL *a)
+{
+    REAL fne = grn_hertz(kn, delta, dR, knfac, a);
+    return fne - (REAL)4 * (REAL)M_PI * coh * Reff;
+}
+
+/* jkr: contact radius a from the overlap (closed-form root of the JKR
+ * relation), Fne = kn a^3 / R - 2 pi a^2 sqrt(4 coh E / (pi a)), E = 3/4 kn */
+static inline REAL grn_jkr(REAL kn, REAL E, REAL coh, REAL Reff, REAL dR, REAL *knfac, REAL *a)
+{
+    const REAL R2 = Reff * Reff, dR2 = dR * dR;
+    const REAL t0 = coh * coh * R2 * R2 * E;
+    const REAL t1 = (REAL)266.47931882941264802866 * t0; /* 27 pi^2 */
+    const REAL t2 = (REAL)8 * dR * dR2 * E * E * E;
+    const REAL t3 = (REAL)4 * dR2 * E;
+    const REAL sqrt1 = fmax((REAL)0, t0 * (t1 + (REAL)2 * t2));
+    const REAL t4 = cbrt(t1 + t2 + (REAL)5.19615242270663202362 * (REAL)M_PI * sqrt(sqrt1));
+    const REAL t5 = t3 / t4 + t4 / E;
+    const REAL sqrt2 = fmax((REAL)0, (REAL)2 * dR + t5);
+    const REAL t6 = sqrt(sqrt2);
+    const REAL sqrt3 = fmax((REAL)0, (REAL)4 * dR - t5 +
+                                         (REAL)14.69693845669906728801 * coh * (REAL)M_PI * R2 /
+                                             (E * t6));
+    *a = (REAL)0.40824829046386307274 * (t6 + sqrt(sqrt3));
+    const REAL a2 = *a * *a;
+    *knfac = kn * *a;
+    return *knfac * a2 / Reff - (REAL)2 * (REAL)M_PI * a2 * sqrt((REAL)4 * coh * E / ((REAL)M_PI * *a));
+}
+
+/* JKR pull-off overlap (negative: the contact holds beyond touch) */
+static inline REAL grn_jkr_pulloff(REAL E, REAL coh, REAL Reff)
+{
+    const REAL a = cbrt((REAL)9.0 * (REAL)M_PI * coh * Reff * Reff / ((REAL)4 * E));
+    return a * a / Reff - (REAL)2 * sqrt((REAL)M_PI * coh * a / E);
+}
+
+/* ---- damping models: the factor multiplying the damping coefficient ---- */
+static inline REAL grd_factor(int model, REAL meff, REAL a, REAL knfac)
+{
+    if (GR_IS(GRD_USED, GR_D_VELOCITY, model))
+        return 1;
+    if (GR_IS(GRD_USED, GR_D_MASS_VELOCITY, model))
+        return meff;
+    if (GR_IS(GRD_USED, GR_D_VISCOELASTIC, model))
+        return a * meff;
+    if (GR_IS(GRD_USED, GR_D_TSUJI, model))
+        return sqrt(meff * knfac);
+    return 0;
+}
+
+/* ---- tangential models ---- */
+
+/* linear_nohistory (no history model in the scene): F_t = -min(mu Fn, gt |v|) v/|v| */
+static inline REAL3 grt_nohistory(REAL3 vtr, REAL vrel, REAL damp_t, REAL Fscrit)
+{
+    const REAL fs = damp_t * vrel;
+    const REAL Ft = vrel != (REAL)0 ? fmin(Fscrit, fs) / vrel : (REAL)0;
+    return -Ft * vtr;
+}
+
+/* Rotate a history vector into the tangent plane keeping its magnitude
+ * (LAMMPS: only when its normal part exceeds EPSILON of the limit). */
+static inline void gr_frame(REAL *h, REAL3 n)
+{
+    const REAL dn = h[0] * n.x + h[1] * n.y + h[2] * n.z;
+    const REAL mag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    h[0] -= dn * n.x;
+    h[1] -= dn * n.y;
+    h[2] -= dn * n.z;
+    const REAL prj = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    const REAL s = prj > (REAL)0 ? mag / prj : (REAL)0;
+    h[0] *= s;
+    h[1] *= s;
+    h[2] *= s;
+}
+
+/* linear_history, mindlin, mindlin_rescale (displacement history, force =
+ * -k s - g v) and mindlin/force, mindlin_rescale/force (elastic-force
+ * history, force = s - g v); k = kt (linear) or kt a (mindlin). Coulomb
+ * limit Fscrit with the history reset consistently. */
+static inline REAL3 grt_history(int model, REAL *h, REAL3 n, REAL3 vtr, REAL k, REAL damp_t,
+                                REAL Fscrit, REAL a, const struct contact *c)
+{
+    const int force_hist = GR_IS(GRT_USED, GR_T_MINDLIN_FORCE, model) ||
+                           GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, model) ||
+                           GR_IS(GRT_USED, GR_T_NOHISTORY, model);
+    const int rescale = GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE, model) ||
+                        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, model);
+    (void)rescale;
+#ifdef GR_H_A
+    if (rescale && a < h[GR_H_A]) {
+        const REAL factor = a / h[GR_H_A];
+        h[0] *= factor;
+        h[1] *= factor;
+        h[2] *= factor;
+    }
+#endif
+    if (c->shearupdate) {
+        const REAL rsht = h[0] * n.x + h[1] * n.y + h[2] * n.z;
+        const int frame = force_hist ? fabs(rsht) > (REAL)1e-10 * Fscrit
+                                     : fabs(rsht) * k > (REAL)1e-10 * Fscrit;
+        if (frame)
+            gr_frame(h, n);
+        if (!force_hist) {
+            h[0] += vtr.x * c->dt;
+            h[1] += vtr.y * c->dt;
+            h[2] += vtr.z * c->dt;
+        } else {
+            h[0] -= k * vtr.x * c->dt;
+            h[1] -= k * vtr.y * c->dt;
+            h[2] -= k * vtr.z * c->dt;
+        }
+#ifdef GR_H_A
+        if (rescale)
+            h[GR_H_A] = a;
+#endif
+    }
+    REAL3 fs;
+    if (!force_hist)
+        fs = (REAL3)(-k * h[0] - damp_t * vtr.x, -k * h[1] - damp_t * vtr.y,
+                     -k * h[2] - damp_t * vtr.z);
+    else
+        fs = (REAL3)(h[0] - damp_t * vtr.x, h[1] - damp_t * vtr.y, h[2] - damp_t * vtr.z);
+    const REAL fsm = sqrt(fs.x * fs.x + fs.y * fs.y + fs.z * fs.z);
+    if (fsm > Fscrit) {
+        const REAL shrmag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+        if (shrmag != (REAL)0) {
+            if (!force_hist) {
+                h[0] = (REAL)-1.0 / k * (Fscrit * fs.x / fsm + damp_t * vtr.x);
+                h[1] = (REAL)-1.0 / k * (Fscrit * fs.y / fsm + damp_t * vtr.y);
+                h[2] = (REAL)-1.0 / k * (Fscrit * fs.z / fsm + damp_t * vtr.z);
+            } else {
+                h[0] = Fscrit * fs.x / fsm + damp_t * vtr.x;
+                h[1] = Fscrit * fs.y / fsm + damp_t * vtr.y;
+                h[2] = Fscrit * fs.z / fsm + damp_t * vtr.z;
+            }
+            fs *= Fscrit / fsm;
+        } else {
+            fs = (REAL3)(0);
+        }
+    }
+    return fs;
+}
+
+/* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ---- */
+#ifdef GR_H_ROLL
+static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL Frcrit,
+                            const struct contact *c)
+{
+    if (c->shearupdate) {
+        const REAL dn = h[0] * n.x + h[1] * n.y + h[2] * n.z;
+        if (fabs(dn) * kr > (REAL)1e-10 * Frcrit)
+            gr_frame(h, n);
+        h[0] += vrl.x * c->dt;
+        h[1] += vrl.y * c->dt;
+        h[2] += vrl.z * c->dt;
+    }
+    REAL3 fr = (REAL3)(-kr * h[0] - gr * vrl.x, -kr * h[1] - gr * vrl.y,
+                       -kr * h[2] - gr * vrl.z);
+    const REAL frm = sqrt(fr.x * fr.x + fr.y * fr.y + fr.z * fr.z);
+    if (frm > Frcrit) {
+        const REAL mag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+        if (mag != (REAL)0) {
+            h[0] = (REAL)-1.0 / kr * (Frcrit * fr.x / frm + gr * vrl.x);
+            h[1] = (REAL)-1.0 / kr * (Frcrit * fr.y / frm + gr * vrl.y);
+            h[2] = (REAL)-1.0 / kr * (Frcrit * fr.z / frm + gr * vrl.z);
+            fr *= Frcrit / frm;
+        } else {
+            fr = (REAL3)(0);
+        }
+    }
+    return fr;
+}
+#endif
+
+/* ---- twisting: sds or marshall (coefficients from the tangential model) ---- */
+#ifdef GR_H_TWIST
+static inline REAL grw_twist(REAL *h, REAL magtwist, REAL kw, REAL gw, REAL muw, REAL Fncrit,
+                             const struct contact *c)
+{
+    if (c->shearupdate)
+        *h += magtwist * c->dt;
+    REAL m = -kw * *h - gw * magtwist;
+    const REAL sign = (REAL)((magtwist > (REAL)0) - (magtwist < (REAL)0));
+    const REAL Mtcrit = muw * Fncrit;
+    if (fabs(m) > Mtcrit) {
+        *h = (REAL)1.0 / kw * (Mtcrit * sign - gw * magtwist);
+        m = -Mtcrit * sign;
+    }
+    return m;
+}
+#endif
+
+/* The composed law. The torque of LAMMPS, -(rad - delta/2) (n x F_t) +
+ * M_twist n + R* n x F_roll on i (the same lever on j, the other two terms
+ * negated), is written as tc = (r / radsum) n x F_t and
+ * tr = delta (radi - radj) / (2 radsum) n x F_t - (M_twist n + R* n x F_roll). */
+static inline void granular_eval(const struct contact *c, __global const REAL *p, REAL *h,
+                                 struct contact_force *out)
+{
+    const int nm = (int)p[GR_NMODEL];
+    const REAL radsum = c->radsum, rsq = c->rsq, Reff = c->reff;
+    REAL E = p[GR_KN];
+    int touch;
+#ifdef GRN_HAS_JKR
+    const int jkr = GR_IS(GRN_USED, GR_N_JKR, nm);
+    if (jkr) {
+        E *= (REAL)0.75;
+        if (h[GR_H_TOUCH] != (REAL)0) {
+            const REAL dist = radsum - grn_jkr_pulloff(E, p[GR_COH], Reff);
+            touch = rsq < dist * dist;
+        } else {
+            touch = rsq < radsum * radsum;
+        }
+    } else
+#endif
+        touch = rsq < radsum * radsum;
+    if (!touch) { /* reached only where a JKR pair makes the loop send every pair */
+#ifdef HAS_HISTORY
+        for (int k = 0; k < HIST_N; k++)
+            h[k] = 0;
+#endif
+        return;
+    }
+    const REAL r = sqrt(rsq), rinv = (REAL)1.0 / r;
+    const REAL3 n = (REAL3)(c->del.x * rinv, c->del.y * rinv, c->del.z * rinv);
+    const REAL3 vr = c->vr;
+    const REAL vnnr = vr.x * n.x + vr.y * n.y + vr.z * n.z;
+    const REAL meff = c->meff;
+    const REAL delta = radsum - r, dR = delta * Reff;
+
+    /* normal */
+    REAL Fne, knfac, a;
+#ifdef GRN_HAS_JKR
+    if (jkr) {
+        h[GR_H_TOUCH] = 1;
+        Fne = grn_jkr(p[GR_KN], E, p[GR_COH], Reff, dR, &knfac, &a);
+    } else
+#endif
+    if (GR_IS(GRN_USED, GR_N_HOOKE, nm))
+        Fne = grn_hooke(E, delta, dR, &knfac, &a);
+    else if (GR_IS(GRN_USED, GR_N_DMT, nm))
+        Fne = grn_dmt(E, p[GR_COH], Reff, delta, dR, &knfac, &a);
+    else
+        Fne = grn_hertz(E, delta, dR, &knfac, &a);
+
+    const REAL damp_pref = p[GR_DAMP] * grd_factor((int)p[GR_DMODEL], meff, a, knfac);
+    REAL Fntot = Fne + -damp_pref * vnnr;
+    if (p[GR_LIMIT] != (REAL)0 && Fntot < (REAL)0)
+        Fntot = 0;
+
+    /* tangential relative velocity at the contact */
+    const REAL3 vt = vr - n * vnnr;
+    const REAL3 wr = c->radi * c->omi + c->radj * c->omj;
+    const REAL3 vtr = (REAL3)(vt.x - (n.z * wr.y - n.y * wr.z), vt.y - (n.x * wr.z - n.z * wr.x),
+                              vt.z - (n.y * wr.x - n.x * wr.y));
+    const REAL vrel = sqrt(vtr.x * vtr.x + vtr.y * vtr.y + vtr.z * vtr.z);
+
+    /* the normal load of the Coulomb limits: |Fne + 2 F_pulloff| for jkr;
+     * for dmt LAMMPS 2021 forms F_pulloff from a cohesion variable it sets
+     * only for jkr pairs (0 in a scene without jkr): |Fne| */
+    REAL Fncrit = fabs(Fntot);
+#ifdef GRN_HAS_JKR
+    if (GR_IS(GRN_USED, GR_N_JKR, nm))
+        Fncrit = fabs(Fne + (REAL)2 * ((REAL)3 * (REAL)M_PI * p[GR_COH] * Reff));
+#endif
+#ifdef GRN_HAS_DMT
+    if (GR_IS(GRN_USED, GR_N_DMT, nm))
+        Fncrit = fabs(Fne);
+#endif
+    const REAL Fscrit = p[GR_MU] * Fncrit;
+    const int tm = (int)p[GR_TMODEL];
+    REAL kt = p[GR_KT];
+    const REAL damp_t = p[GR_GT] * damp_pref;
+    REAL3 fs;
+#ifdef GR_TANG_HISTORY
+    if (GR_IS(GRT_USED, GR_T_MINDLIN, tm) || GR_IS(GRT_USED, GR_T_MINDLIN_FORCE, tm) ||
+        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE, tm) ||
+        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, tm))
+        kt *= a;
+    fs = grt_history(tm, h, n, vtr, kt, damp_t, Fscrit, a, c);
+#else
+    fs = grt_nohistory(vtr, vrel, damp_t, Fscrit);
+#endif
+
+    REAL3 tw = (REAL3)(0); /* M_twist n + R* n x F_roll (torque on i) */
+#if defined(GR_H_ROLL) || defined(GR_H_TWIST)
+    const REAL3 relrot = c->omi - c->omj;
+#endif
+#ifdef GR_H_ROLL
+    if (GR_IS(GRR_USED, GR_R_SDS, (int)p[GR_RMODEL])) {
+        const REAL3 vrl = (REAL3)(Reff * (relrot.y * n.z - relrot.z * n.y),
+                                  Reff * (relrot.z * n.x - relrot.x * n.z),
+                                  Reff * (relrot.x * n.y - relrot.y * n.x));
+        const REAL3 fr = grr_sds(h + GR_H_ROLL, n, vrl, p[GR_KR], p[GR_GR], p[GR_MUR] * Fncrit,
+                                 c);
+        tw += (REAL3)(Reff * (n.y * fr.z - n.z * fr.y), Reff * (n.z * fr.x - n.x * fr.z),
+                      Reff * (n.x * fr.y - n.y * fr.x));
+    }
+#endif
+#ifdef GR_H_TWIST
+    {
+        const int wm = (int)p[GR_WMODEL];
+        const REAL magtwist = relrot.x * n.x + relrot.y * n.y + relrot.z * n.z;
+        REAL kw = p[GR_KW], gw = p[GR_GW], muw = p[GR_MUW];
+        int on = GR_IS(GRW_USED, GR_W_SDS, wm);
+        if (GR_IS(GRW_USED, GR_W_MARSHALL, wm)) {
+            kw = (REAL)0.5 * kt * a * a; /* Marshall eq. 32 */
+            gw = (REAL)0.5 * damp_t * a * a;
+            muw = (REAL)(2.0 / 3.0) * a * p[GR_MU];
+            on = 1;
+        }
+        if (on)
+            tw += grw_twist(h + GR_H_TWIST, magtwist, kw, gw, muw, Fncrit, c) * n;
+    }
+#endif
+
+    out->f = (REAL3)(n.x * Fntot + fs.x, n.y * Fntot + fs.y, n.z * Fntot + fs.z);
+    const REAL3 tor = (REAL3)(n.y * fs.z - n.z * fs.y, n.z * fs.x - n.x * fs.z,
+                              n.x * fs.y - n.y * fs.x);
+    out->tc = (r / radsum) * tor;
+    out->tr = (delta * (c->radi - c->radj) / ((REAL)2 * radsum)) * tor - tw;
+}

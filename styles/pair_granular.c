@@ -1,0 +1,444 @@
+/* pair_granular.c - `pair_style granular [cutoff]` with `pair_coeff I J
+ * normal-model args [damping model] tangential model args [rolling sds ...]
+ * [twisting marshall | sds ...] [limit_damping] [cutoff c]`: LAMMPS's
+ * pair granular (29 Sep 2021, pair_granular.cpp) with its argument
+ * conversions and mixing; the evaluators are in kernels/pair_granular.cl.
+ *
+ * Coefficients as LAMMPS stores them: hertz/material, dmt, jkr keep
+ * kn = 4/3 E* of the pair's own E, nu (E* = 1 / (2 (1 - nu^2) / E)); a NULL
+ * Mindlin kt is 8 G* (G* = 1 / (4 (2 - nu)(1 + nu) / E)); damping tsuji turns
+ * the restitution coefficient e into 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3
+ * + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6. A type pair without its own
+ * pair_coeff mixes from I I and J J at run start (which must use the same
+ * sub-models): kn geometric (hooke, hertz) or 1 / ((1 - nu_I^2)/E_I +
+ * (1 - nu_J^2)/E_J) (material models: no 4/3, as LAMMPS 2021), every other
+ * coefficient geometric.
+ *
+ * The scene's kernel holds only the sub-models some type pair uses
+ * (defines()): see the build options in kernels/pair_granular.cl. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "engine.h"
+#include "error.h"
+#include "pair.h"
+
+struct gr_one {
+    int set;                    /* 1 = pair_coeff, 2 = mixed at run start */
+    int nm, dm, tm, rm, wm, ld; /* sub-models (GR_N_* ...), limit_damping */
+    double kn, damp, coh, E, nu;
+    double kt, gt, mu, kr, gr, mur, kw, gw, muw;
+    double cutoff;              /* -1: none */
+};
+
+struct gr_tab {
+    int nt;
+    struct gr_one *p;           /* nt x nt, both (I, J) and (J, I) */
+};
+
+static const char *const nname[] = {"hooke", "hertz", "hertz/material", "dmt", "jkr"};
+static const char *const dname[] = {"velocity", "mass_velocity", "viscoelastic", "tsuji"};
+static const char *const tname[] = {"linear_nohistory", "linear_history", "mindlin",
+                                    "mindlin_rescale", "mindlin/force",
+                                    "mindlin_rescale/force"};
+
+static void destroy(struct pair *p)
+{
+    struct gr_tab *t = p->data;
+    if (t)
+        free(t->p);
+    free(t);
+    p->data = NULL;
+}
+
+/* pair_style granular [cutoff] */
+static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    if (argc > 1)
+        gr_error(g, "pair_style granular takes at most one argument (a global cutoff), got %d",
+                 argc);
+    p->coef[0] = argc == 1 ? arg_positive(g, argv[0], "granular cutoff") : -1.0;
+}
+
+static struct gr_tab *tables(struct gravel *g, struct pair *p)
+{
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    struct gr_tab *t = p->data;
+    if (t && t->nt == nt)
+        return t;
+    destroy(p);
+    t = gr_calloc(g, 1, sizeof *t);
+    t->nt = nt;
+    t->p = gr_calloc(g, (size_t)nt * nt, sizeof *t->p);
+    p->data = t;
+    return t;
+}
+
+static struct gr_one *at(const struct gr_tab *t, int i, int j)
+{
+    return &t->p[(size_t)(i - 1) * t->nt + (j - 1)];
+}
+
+/* LAMMPS mix_stiffnessE / mix_stiffnessG */
+static double mixE(double Ei, double Ej, double ni, double nj)
+{
+    return 1 / ((1 - ni * ni) / Ei + (1 - nj * nj) / Ej);
+}
+
+static double mixG(double Ei, double Ej, double ni, double nj)
+{
+    return 1 / ((2 * (2 - ni) * (1 + ni) / Ei) + (2 * (2 - nj) * (1 + nj) / Ej));
+}
+
+static double num(struct gravel *g, char **argv, int argc, int i, const char *what)
+{
+    if (i >= argc)
+        gr_error(g, "pair_coeff granular: missing %s", what);
+    return arg_double(g, argv[i], what);
+}
+
+static int lookup(const char *s, const char *const *names, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (!strcmp(s, names[k]))
+            return k;
+    return -1;
+}
+
+/* pair_coeff I J model args ... (LAMMPS's keywords, any order) */
+static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
+                  int argc, char **argv)
+{
+    struct gr_one o;
+    memset(&o, 0, sizeof o);
+    o.nm = o.tm = -1;
+    o.dm = GR_D_VISCOELASTIC;
+    o.rm = GR_R_NONE;
+    o.wm = GR_W_NONE;
+    o.cutoff = -1;
+    int kt_null = 0;
+    for (int i = 0; i < argc;) {
+        const char *k = argv[i];
+        int m = lookup(k, nname, 5);
+        if (m >= 0) {
+            o.nm = m;
+            o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E");
+            o.damp = num(g, argv, argc, i + 2, "normal damping");
+            if (m >= GR_N_HERTZ_MATERIAL) {
+                o.E = o.kn;
+                o.nu = num(g, argv, argc, i + 3, "Poisson's ratio");
+            }
+            if (m >= GR_N_DMT)
+                o.coh = num(g, argv, argc, i + 4, "cohesion (surface energy)");
+            i += m <= GR_N_HERTZ ? 3 : m == GR_N_HERTZ_MATERIAL ? 4 : 5;
+        } else if (!strcmp(k, "damping")) {
+            arg_need(g, argc, i, 1, k);
+            o.dm = lookup(argv[i + 1], dname, 4);
+            if (o.dm < 0)
+                gr_error(g, "pair_coeff granular: unknown damping model '%.64s' (expected "
+                            "velocity, mass_velocity, viscoelastic or tsuji)", argv[i + 1]);
+            i += 2;
+        } else if (!strcmp(k, "tangential")) {
+            arg_need(g, argc, i, 1, k);
+            o.tm = lookup(argv[i + 1], tname, 6);
+            if (o.tm < 0)
+                gr_error(g, "pair_coeff granular: unknown tangential model '%.64s' (expected "
+                            "linear_nohistory, linear_history, mindlin, mindlin_rescale, "
+                            "mindlin/force or mindlin_rescale/force)", argv[i + 1]);
+            if (o.tm == GR_T_NOHISTORY) {
+                o.kt = 0;
+                o.gt = num(g, argv, argc, i + 2, "tangential damping");
+                o.mu = num(g, argv, argc, i + 3, "friction coefficient");
+                i += 4;
+                continue;
+            }
+            if (i + 2 < argc && !strcmp(argv[i + 2], "NULL") && o.tm >= GR_T_MINDLIN) {
+                if (o.nm == GR_N_HERTZ || o.nm == GR_N_HOOKE)
+                    gr_error(g, "NULL setting for Mindlin tangential stiffness requires a "
+                                "normal contact model that specifies material properties");
+                kt_null = 1;
+            } else {
+                o.kt = num(g, argv, argc, i + 2, "tangential stiffness kt");
+                kt_null = 0;
+            }
+            o.gt = num(g, argv, argc, i + 3, "tangential damping");
+            o.mu = num(g, argv, argc, i + 4, "friction coefficient");
+            i += 5;
+        } else if (!strcmp(k, "rolling")) {
+            arg_need(g, argc, i, 1, k);
+            if (!strcmp(argv[i + 1], "none")) {
+                o.rm = GR_R_NONE;
+                i += 2;
+            } else if (!strcmp(argv[i + 1], "sds")) {
+                o.rm = GR_R_SDS;
+                o.kr = num(g, argv, argc, i + 2, "rolling stiffness");
+                o.gr = num(g, argv, argc, i + 3, "rolling damping");
+                o.mur = num(g, argv, argc, i + 4, "rolling friction coefficient");
+                i += 5;
+            } else {
+                gr_error(g, "pair_coeff granular: unknown rolling model '%.64s' (expected sds "
+                            "or none)", argv[i + 1]);
+            }
+        } else if (!strcmp(k, "twisting")) {
+            arg_need(g, argc, i, 1, k);
+            if (!strcmp(argv[i + 1], "none")) {
+                o.wm = GR_W_NONE;
+                i += 2;
+            } else if (!strcmp(argv[i + 1], "marshall")) {
+                o.wm = GR_W_MARSHALL;
+                i += 2;
+            } else if (!strcmp(argv[i + 1], "sds")) {
+                o.wm = GR_W_SDS;
+                o.kw = num(g, argv, argc, i + 2, "twisting stiffness");
+                o.gw = num(g, argv, argc, i + 3, "twisting damping");
+                o.muw = num(g, argv, argc, i + 4, "twisting friction coefficient");
+                i += 5;
+            } else {
+                gr_error(g, "pair_coeff granular: unknown twisting model '%.64s' (expected "
+                            "marshall, sds or none)", argv[i + 1]);
+            }
+        } else if (!strcmp(k, "cutoff")) {
+            o.cutoff = num(g, argv, argc, i + 1, "cutoff");
+            i += 2;
+        } else if (!strcmp(k, "limit_damping")) {
+            o.ld = 1;
+            i++;
+        } else {
+            gr_error(g, "pair_coeff granular: unknown keyword '%.64s' (expected a normal model "
+                        "hooke, hertz, hertz/material, dmt or jkr, or damping, tangential, "
+                        "rolling, twisting, cutoff, limit_damping)", k);
+        }
+    }
+    if (o.nm < 0 || o.tm < 0)
+        gr_error(g, "pair_coeff granular: must specify normal or tangential contact model");
+    if (o.dm == GR_D_TSUJI) {
+        double e = o.damp;
+        o.damp = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e +
+                 27.467 * pow(e, 4) - 18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
+    }
+    if (o.ld && o.nm == GR_N_JKR)
+        gr_error(g, "Illegal pair_coeff command, Cannot limit damping with JKR model");
+    if (o.ld && o.nm == GR_N_DMT)
+        gr_error(g, "Illegal pair_coeff command, Cannot limit damping with DMT model");
+    if (o.nm >= GR_N_HERTZ_MATERIAL)
+        o.kn = 4.0 / 3.0 * mixE(o.E, o.E, o.nu, o.nu);
+    if (kt_null)
+        o.kt = 8 * mixG(o.E, o.E, o.nu, o.nu);
+    o.set = 1;
+    struct gr_tab *t = tables(g, p);
+    for (int I = ilo; I <= ihi; I++)
+        for (int J = jlo > I ? jlo : I; J <= jhi; J++)
+            *at(t, I, J) = *at(t, J, I) = o;
+    p->coeff_set = 1;
+}
+
+static double geo(double a, double b) { return sqrt(a * b); }
+
+/* LAMMPS pulloff_distance: the JKR overlap at pull-off (negative) */
+static double pulloff(const struct gr_one *o, double reff)
+{
+    if (reff <= 0)
+        return 0;
+    double E = o->kn * 0.75;
+    double a = cbrt(9 * M_PI * o->coh * reff * reff / (4 * E));
+    return a * a / reff - 2 * sqrt(M_PI * o->coh * a / E);
+}
+
+/* Run start: mix unset pairs (LAMMPS init_one); the JKR reach. */
+static void init(struct gravel *g, struct pair *p)
+{
+    struct gr_tab *t = p->data;
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    if (!t || t->nt != nt)
+        gr_error(g, "pair style granular: pair_coeff must be given (after the box defines %d "
+                    "atom type(s))", nt);
+    for (int i = 1; i <= nt; i++)
+        for (int j = i; j <= nt; j++) {
+            struct gr_one *o = at(t, i, j);
+            if (o->set == 1)
+                continue;
+            const struct gr_one *a = at(t, i, i), *b = at(t, j, j);
+            if (a->set != 1 || b->set != 1)
+                gr_error(g, "all pair coeffs are not set: pair granular needs pair_coeff %d %d "
+                            "(or %d %d and %d %d to mix from)", i, j, i, i, j, j);
+            if (a->nm != b->nm || a->dm != b->dm || a->tm != b->tm || a->rm != b->rm ||
+                a->wm != b->wm)
+                gr_error(g, "Granular pair style functional forms are different, cannot mix "
+                            "coefficients for types %d and %d. This combination must be set "
+                            "explicitly via a pair_coeff command", i, j);
+            struct gr_one m = *a;
+            m.set = 2;
+            /* LAMMPS 2021 init_one tests and mixes with the sub-models of the
+             * (I, J) entry, which it never sets: its freshly allocated tables
+             * hold 0 there, i.e. hooke, velocity damping, linear_nohistory,
+             * no rolling, no twisting, no limit_damping */
+            m.nm = GR_N_HOOKE;
+            m.dm = GR_D_VELOCITY;
+            m.tm = GR_T_NOHISTORY;
+            m.rm = GR_R_NONE;
+            m.wm = GR_W_NONE;
+            m.kn = geo(a->kn, b->kn);
+            m.damp = geo(a->damp, b->damp);
+            m.coh = geo(a->coh, b->coh);
+            m.kt = geo(a->kt, b->kt);
+            m.gt = geo(a->gt, b->gt);
+            m.mu = geo(a->mu, b->mu);
+            m.kr = geo(a->kr, b->kr);
+            m.gr = geo(a->gr, b->gr);
+            m.mur = geo(a->mur, b->mur);
+            m.kw = geo(a->kw, b->kw);
+            m.gw = geo(a->gw, b->gw);
+            m.muw = geo(a->muw, b->muw);
+            /* LAMMPS keeps the I I limit_damping flag of whichever pair was set last; 0 */
+            m.ld = 0;
+            m.cutoff = -1;
+            *at(t, i, j) = *at(t, j, i) = m;
+        }
+    for (int i = 1; i <= nt; i++)
+        for (int j = i; j <= nt; j++)
+            if (at(t, i, j)->set == 2)
+                gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
+                           "velocity damping and linear_nohistory with the geometric means of "
+                           "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "
+                           "sub-models)", i, j, i, i, j, j, i, j);
+    /* LAMMPS 2021 builds its list to r_i + r_j + skin: a jkr contact stretched
+     * beyond the skin is lost at the next rebuild, before its pull-off */
+    double rmax = 0, poff = 0;
+    for (int k = 0; k < g->atoms.n; k++)
+        rmax = fmax(rmax, g->atoms.radius[k]);
+    for (int i = 1; i <= nt; i++)
+        for (int j = 1; j <= nt; j++)
+            if (at(t, i, j)->nm == GR_N_JKR)
+                poff = fmax(poff, -pulloff(at(t, i, j), 0.5 * rmax));
+    if (poff > g->neigh.skin)
+        gr_warn(g, "pair granular: the jkr pull-off distance (up to %g) exceeds the neighbor "
+                   "skin %g: as in LAMMPS 2021, a contact stretched beyond the skin is lost "
+                   "at the next neighbor rebuild (a larger skin lets it reach its pull-off)",
+                poff, g->neigh.skin);
+}
+
+static void pack(const struct pair *p, int itype, int jtype, double *q)
+{
+    const struct gr_one *o = at(p->data, itype, jtype);
+    q[GR_NMODEL] = o->nm;
+    q[GR_DMODEL] = o->dm;
+    q[GR_TMODEL] = o->tm;
+    q[GR_RMODEL] = o->rm;
+    q[GR_WMODEL] = o->wm;
+    q[GR_LIMIT] = o->ld;
+    q[GR_KN] = o->kn;
+    q[GR_DAMP] = o->damp;
+    q[GR_COH] = o->coh;
+    q[GR_KT] = o->kt;
+    q[GR_GT] = o->gt;
+    q[GR_MU] = o->mu;
+    q[GR_KR] = o->kr;
+    q[GR_GR] = o->gr;
+    q[GR_MUR] = o->mur;
+    q[GR_KW] = o->kw;
+    q[GR_GW] = o->gw;
+    q[GR_MUW] = o->muw;
+}
+
+/* What the scene uses: bit masks per category and the history layout. */
+struct gr_use {
+    int n, d, t, r, w;
+    int tang_hist, rescale;
+    int h_a, h_roll, h_twist, h_touch, width;
+};
+
+static struct gr_use uses(const struct pair *p)
+{
+    struct gr_use u;
+    memset(&u, 0, sizeof u);
+    const struct gr_tab *t = p->data;
+    for (int i = 1; t && i <= t->nt; i++)
+        for (int j = 1; j <= t->nt; j++) {
+            const struct gr_one *o = at(t, i, j);
+            if (!o->set)
+                continue;
+            u.n |= 1 << o->nm;
+            u.d |= 1 << o->dm;
+            u.t |= 1 << o->tm;
+            u.r |= 1 << o->rm;
+            u.w |= 1 << o->wm;
+        }
+    u.tang_hist = (u.t & ~(1 << GR_T_NOHISTORY)) != 0;
+    u.rescale = (u.t & (1 << GR_T_MINDLIN_RESCALE | 1 << GR_T_MINDLIN_RESCALE_FORCE)) != 0;
+    int off = u.tang_hist ? 3 : 0;
+    u.h_a = u.rescale ? off++ : -1;
+    u.h_roll = (u.r >> GR_R_SDS) & 1 ? (off += 3) - 3 : -1;
+    u.h_twist = u.w & ~(1 << GR_W_NONE) ? off++ : -1;
+    u.h_touch = (u.n >> GR_N_JKR) & 1 ? off++ : -1;
+    u.width = off;
+    return u;
+}
+
+static int history_size(const struct pair *p)
+{
+    return uses(p).width;
+}
+
+static int beyond(const struct pair *p)
+{
+    return (uses(p).n >> GR_N_JKR) & 1;
+}
+
+/* JKR pairs hold beyond touch, within the list of r_i + r_j + skin (LAMMPS
+ * 2021: no reach beyond touch) */
+static double reach(const struct pair *p, double radsum)
+{
+    (void)p;
+    return radsum;
+}
+
+static int defines(const struct pair *p, char *buf, size_t len)
+{
+    struct gr_use u = uses(p);
+    int n = snprintf(buf, len,
+                     " -D PAIR_EVAL_ROW=granular_eval -D GRN_USED=%d -D GRD_USED=%d "
+                     "-D GRT_USED=%d -D GRR_USED=%d -D GRW_USED=%d",
+                     u.n, u.d, u.t, u.r, u.w);
+    char extra[256] = "";
+    size_t m = 0;
+#define ADD(...) m += (size_t)snprintf(extra + m, sizeof extra - m, __VA_ARGS__)
+    if ((u.n >> GR_N_JKR) & 1)
+        ADD(" -D GRN_HAS_JKR -D GR_H_TOUCH=%d", u.h_touch);
+    if ((u.n >> GR_N_DMT) & 1)
+        ADD(" -D GRN_HAS_DMT");
+    if (u.tang_hist)
+        ADD(" -D GR_TANG_HISTORY");
+    if (u.h_a >= 0)
+        ADD(" -D GR_H_A=%d", u.h_a);
+    if (u.h_roll >= 0)
+        ADD(" -D GR_H_ROLL=%d", u.h_roll);
+    if (u.h_twist >= 0)
+        ADD(" -D GR_H_TWIST=%d", u.h_twist);
+#undef ADD
+    if (n >= 0 && (size_t)n < len)
+        n += snprintf(buf + n, len - (size_t)n, "%s", extra);
+    if (n >= 0 && (size_t)n < len)
+        n += pair_cohesion_defines(p, buf + n, len - (size_t)n);
+    return n;
+}
+
+const struct pair_style pair_style_granular = {
+    .name = "granular",
+    .source = "pair_granular.cl",
+    .eval = NULL, /* PAIR_EVAL_ROW: takes the whole history row (defines()) */
+    .history = 1, /* sized by history_size(): 0 when no sub-model keeps any */
+    .rotation = 1,
+    .nparam = GR_NPARAM,
+    .settings = settings,
+    .pack = pack,
+    .coeff = coeff,
+    .init = init,
+    .defines = defines,
+    .history_size = history_size,
+    .beyond = beyond,
+    .reach = reach,
+    .destroy = destroy,
+};
