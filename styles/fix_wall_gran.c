@@ -88,8 +88,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                     "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
                     "or use fix wall/pair mesh for the pair style's law");
     else if (!strcmp(argv[0], "granular"))
-        gr_error(g, "fix wall/gran model 'granular' is not supported (use hooke, "
-                    "hooke/history or hertz/history)");
+        gr_error(g, "fix wall/gran model 'granular' is not supported yet (pair_style granular "
+                    "is; for the wall use hooke, hooke/history or hertz/history)");
     else
         gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history or "
                     "hertz/history)", argv[0]);
