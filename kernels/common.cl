@@ -6,7 +6,8 @@
  * Contraction of a*b+c into fma is switched off so that results match the
  * host compilers LAMMPS is built with and the pair terms stay exactly
  * antisymmetric. PERIODIC_X/Y/Z mark periodic dimensions: the minimum-image
- * correction is compiled only for those (MINIMG_X/Y/Z). */
+ * correction is compiled only for those (MINIMG_X/Y/Z). SPLIT_POS (single
+ * precision): positions are split into two arrays, see "Positions" below. */
 #ifndef REAL
 #define REAL double
 #define USE_DOUBLE 1
@@ -99,3 +100,68 @@ static inline REAL min_image(REAL d, REAL L)
 #else
 #define MINIMG_Z(d, L) (d)
 #endif
+
+/* Positions. With SPLIT_POS (every single-precision run) a coordinate is the
+ * unevaluated sum hi + lo of two floats, hi in x and lo in xlo (the kernel's
+ * last argument, POS_LO_PARAM), relative to the run's origin (the box centre,
+ * src/engine.c): 48 significant bits, so a drift below half the float spacing
+ * still moves the particle and a contact's separation is resolved as in
+ * double. Displacements, gaps and drifts go through POS_DELTA and pos_add;
+ * binning and the rebuild test read hi alone (off by at most one float
+ * spacing of a box-relative coordinate). Without SPLIT_POS there is one array
+ * and these reduce to the plain arithmetic. */
+#ifdef SPLIT_POS
+#define POS_LO_PARAM , __global REAL *xlo
+#define POS_LOAD_LO(i) vload3(i, xlo)
+#define POS_STORE_LO(val, i) vstore3(val, i, xlo)
+#define POS_DELTA(i, j) ((vload3(i, x) - vload3(j, x)) + (vload3(i, xlo) - vload3(j, xlo)))
+/* hi + lo += d, renormalised (TwoSum, then Fast2Sum): exact to the last bit of lo */
+static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
+{
+    const REAL s = *hi + d, bb = s - *hi;
+    const REAL t = ((*hi - (s - bb)) + (d - bb)) + *lo;
+    *hi = s + t;
+    *lo = t - (*hi - s);
+}
+static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
+{
+    const REAL3 s = *hi + d, bb = s - *hi;
+    const REAL3 t = ((*hi - (s - bb)) + (d - bb)) + *lo;
+    *hi = s + t;
+    *lo = t - (*hi - s);
+}
+#else
+#define POS_LO_PARAM
+#define POS_LOAD_LO(i) ((REAL3)(0))
+#define POS_STORE_LO(val, i) ((void)0)
+#define POS_DELTA(i, j) (vload3(i, x) - vload3(j, x))
+static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
+{
+    (void)lo;
+    *hi += d;
+}
+static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
+{
+    (void)lo;
+    *hi = *hi + d;
+}
+#endif
+
+/* Periodic wrap of one coordinate (hi h, lo l) into [lo, hi) of period L,
+ * one period at most (LAMMPS Domain::pbc); the image flag follows. */
+static inline void pbc_wrap(REAL *h, REAL *l, int *im, const REAL lo, const REAL hi,
+                            const REAL L)
+{
+    if (*h + *l < lo) {
+        pos_add1(h, l, L);
+        (*im)--;
+    }
+    if (*h + *l >= hi) {
+        pos_add1(h, l, -L);
+        if (*h + *l < lo) { /* rounding: stay inside */
+            *h = lo;
+            *l = 0;
+        }
+        (*im)++;
+    }
+}

@@ -49,13 +49,13 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
                             const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
-                            __global REAL *rect)
+                            __global REAL *rect POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
     const int i = ci[c], j = cj[c];
-    REAL3 del = vload3(i, x) - vload3(j, x);
+    REAL3 del = POS_DELTA(i, j);
     del.x = MINIMG_X(del.x, Lx);
     del.y = MINIMG_Y(del.y, Ly);
     del.z = MINIMG_Z(del.z, Lz);

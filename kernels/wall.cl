@@ -16,7 +16,8 @@
  *   plane pair   elements lo face (0) and hi face (1) normal to `axis`; as in
  *                LAMMPS fix wall/gran only the nearer face acts:
  *                del = (x_a - lo) e_a, or -(hi - x_a) e_a
- *   zcylinder    element 0, axis z through x = y = 0, radius R:
+ *   zcylinder    element 0, axis z through x = y = 0 (lo, hi: the axis
+ *                relative to the device origin), radius R:
  *                del = -(R - |x_xy|) x_xy / |x_xy|, rwall = -2R inside,
  *                +2R outside; with azimuthal shear the surface moves at
  *                vshear (y, -x) / |x_xy|
@@ -39,13 +40,13 @@ struct wall_geom {
 
 /* Closest point of element e to a sphere at x (radius radi): 1 when e may
  * touch it, with del, rwall and the surface velocity vwall filled. */
-static inline int wall_point(const struct wall_geom *w, const int e, const REAL3 x,
+static inline int wall_point(const struct wall_geom *w, const int e, const REAL3 xp,
                              const REAL radi, REAL3 *del, REAL *rwall, REAL3 *vwall)
 {
     *vwall = w->v;
     *rwall = 0;
     if (w->kind == WALL_PLANE) {
-        const REAL xa = w->axis == 0 ? x.x : w->axis == 1 ? x.y : x.z;
+        const REAL xa = w->axis == 0 ? xp.x : w->axis == 1 ? xp.y : xp.z;
         const REAL del1 = xa - w->lo, del2 = w->hi - xa;
         const int nearer = del1 < del2 ? 0 : 1;
         if (e != nearer)
@@ -54,7 +55,8 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         *del = (REAL3)(w->axis == 0 ? d : 0, w->axis == 1 ? d : 0, w->axis == 2 ? d : 0);
         return 1;
     }
-    /* WALL_ZCYLINDER */
+    /* WALL_ZCYLINDER: the axis at (lo, hi) (0, 0 but for the device origin) */
+    const REAL3 x = (REAL3)(xp.x - w->lo, xp.y - w->hi, xp.z);
     const REAL delxy = sqrt(x.x * x.x + x.y * x.y);
     const REAL delr = w->radius - delxy;
     if (delr > radi)
@@ -67,6 +69,20 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         vwall->z = 0;
     }
     return 1;
+}
+
+/* The gap del of the sphere's hi part, refined by its lo part xl (SPLIT_POS):
+ * the normal component of xl is added, so a flat or curved wall sees the
+ * particle's 48-bit position; tangential parts do not change the gap. */
+static inline REAL3 wall_gap_refine(const REAL3 del, const REAL3 xl)
+{
+#ifdef SPLIT_POS
+    const REAL dd = dot(del, del);
+    return dd > (REAL)0 ? del + (dot(xl, del) / dd) * del : del;
+#else
+    (void)xl;
+    return del;
+#endif
 }
 
 /* One work-item per atom of the group: every element of the wall is a
@@ -85,7 +101,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         const int nelem, const int kind, const int axis, const REAL lo, const REAL hi,         \
         const REAL wradius, const REAL vwx, const REAL vwy, const REAL vwz,                    \
         const int cyl_shear, const REAL vshear, const REAL dt, const int shearupdate,          \
-        const int inclusive)                                                                   \
+        const int inclusive POS_LO_PARAM)                                                      \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
@@ -99,7 +115,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         w.v = (REAL3)(vwx, vwy, vwz);                                                          \
         w.cyl_shear = cyl_shear;                                                               \
         w.vshear = vshear;                                                                     \
-        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL3 xi = vload3(i, x), xil = POS_LOAD_LO(i);                                   \
         const REAL radi = radius[i];                                                           \
         const int ti = type[i] - 1;                                                            \
         __global const REAL *p =                                                               \
@@ -110,6 +126,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
             REAL3 del, vwall;                                                                  \
             REAL rwall;                                                                        \
             const int acts = wall_point(&w, e, xi, radi, &del, &rwall, &vwall);                \
+            del = wall_gap_refine(del, xil);                                                   \
             const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                    \
             if (!acts || (inclusive ? rsq > radi * radi : rsq >= radi * radi)) {               \
                 if (has_history)                                                               \
@@ -269,7 +286,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         __global const int *triv, __global const int *cstart, __global const int *ctri,        \
         __global const REAL *pose, const int gnx, const int gny, const int gnz,                \
         const int moving, __global REAL *fmesh, const int want_fmesh, const REAL dt,           \
-        const int shearupdate, const int inclusive)                                            \
+        const int shearupdate, const int inclusive POS_LO_PARAM)                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
@@ -281,7 +298,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             }                                                                                  \
             return;                                                                            \
         }                                                                                      \
-        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         const REAL radi = radius[i];                                                           \
         const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(3, pose)) : xi;                   \
         int tc[MESH_MAXC], rc[MESH_MAXC], nc = 0;                                              \

@@ -7,6 +7,7 @@
  * active style needs rotation. */
 #include "engine.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -208,9 +209,83 @@ void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst)
     ocl_check(g, err, "clEnqueueReadBuffer");
 }
 
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src)
+{
+    struct engine *e = g->eng;
+    size_t count = 3 * (size_t)n;
+    if (!count)
+        return;
+    if (!e->single) {
+        eng_write(g, s->x, 0, count * sizeof(double), src);
+        return;
+    }
+    float *hi = gr_malloc(g, 2 * count * sizeof(float)), *lo = hi + count;
+    for (size_t i = 0; i < count; i++) {
+        double rel = src[i] - e->origin[i % 3];
+        hi[i] = (float)rel;
+        lo[i] = (float)(rel - (double)hi[i]);
+    }
+    eng_write(g, s->x, 0, count * sizeof(float), hi);
+    eng_write(g, s->xlo, 0, count * sizeof(float), lo);
+    free(hi);
+}
+
+void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst)
+{
+    struct engine *e = g->eng;
+    size_t count = 3 * (size_t)n;
+    if (!count)
+        return;
+    if (!e->single) {
+        eng_read(g, s->x, 0, count * sizeof(double), dst);
+        return;
+    }
+    float *hi = gr_malloc(g, 2 * count * sizeof(float)), *lo = hi + count;
+    cl_int err = clEnqueueReadBuffer(e->ocl.queue, s->x, CL_TRUE, 0, count * sizeof(float), hi,
+                                     0, NULL, NULL);
+    if (err == CL_SUCCESS)
+        err = clEnqueueReadBuffer(e->ocl.queue, s->xlo, CL_TRUE, 0, count * sizeof(float), lo,
+                                  0, NULL, NULL);
+    if (err == CL_SUCCESS)
+        for (size_t i = 0; i < count; i++)
+            dst[i] = e->origin[i % 3] + ((double)hi[i] + (double)lo[i]);
+    free(hi);
+    ocl_check(g, err, "clEnqueueReadBuffer");
+}
+
+void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v)
+{
+    eng_arg_real(g, k, i, v - g->eng->origin[q]);
+}
+
+void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i)
+{
+    if (g->eng->single)
+        eng_arg_mem(g, k, i, g->eng->a.xlo);
+}
+
+/* The device origin for single precision: per dimension 0 while the box is
+ * within its own size of 0 (most decks: no shift, lab coordinates), else
+ * the box centre, so positions far from 0 keep the bits that resolve
+ * contacts. A change moves every device position: the list is invalid. */
+static void choose_origin(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    double o[3] = {0, 0, 0};
+    for (int q = 0; q < 3 && e->single; q++) {
+        double c = 0.5 * (g->dom.lo[q] + g->dom.hi[q]), L = g->dom.hi[q] - g->dom.lo[q];
+        if (isfinite(c) && fabs(c) > L)
+            o[q] = c;
+    }
+    if (o[0] != e->origin[0] || o[1] != e->origin[1] || o[2] != e->origin[2]) {
+        memcpy(e->origin, o, sizeof o);
+        e->tag_sum = 0;
+    }
+}
+
 static void release_set(struct dev_atoms *s)
 {
-    cl_mem *m[] = {&s->x, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
+    cl_mem *m[] = {&s->x, &s->xlo, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
                    &s->rmass, &s->type, &s->mask, &s->tag, &s->image};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         if (*m[i]) {
@@ -224,6 +299,8 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
     struct engine *e = g->eng;
     size_t r = e->rsz, n = (size_t)cap;
     s->x = eng_alloc(g, 3 * n * r, "positions");
+    if (e->single)
+        s->xlo = eng_alloc(g, 3 * n * r, "positions (low parts)");
     s->v = eng_alloc(g, 3 * n * r, "velocities");
     s->f = eng_alloc(g, 3 * n * r, "forces");
     if (e->rotation) {
@@ -269,13 +346,14 @@ void eng_upload(struct gravel *g)
     struct engine *e = g->eng;
     struct atoms *at = &g->atoms;
     int n = at->n;
+    choose_origin(g);
     int keep = e->tag_sum && e->n_at_sync == n && tag_checksum(at) == e->tag_sum;
     eng_reserve(g, n);
     if (!keep || !e->tag_sum)
         nbr_invalidate(g);
     struct dev_atoms *s = &e->a;
     s->n = n;
-    eng_write_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_write_positions(g, s, n, at->x);
     eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
     if (e->rotation) {
@@ -322,7 +400,7 @@ void run_sync_host(struct gravel *g)
     if (n > at->cap)
         atoms_reserve(g, n);
     at->n = n;
-    eng_read_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_read_positions(g, s, n, at->x);
     eng_read_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_read_reals(g, s->f, 3 * (size_t)n, at->f);
     if (e->rotation) {
@@ -408,7 +486,7 @@ void eng_prepare(struct gravel *g)
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
-                       single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
+                       single ? " -D SPLIT_POS" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])

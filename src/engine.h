@@ -17,7 +17,8 @@
 /* Device per-atom arrays in device order (REAL = float or double). */
 struct dev_atoms {
     int n;                      /* atoms on the device */
-    cl_mem x, v, f;             /* REAL[3n] interleaved */
+    cl_mem x, v, f;             /* REAL[3n] interleaved; x relative to eng->origin */
+    cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
     cl_mem omega, torque;       /* REAL[3n], only with rotation (else NULL) */
     cl_mem radius, rmass;       /* REAL[n] */
     cl_mem type;                /* int[n] */
@@ -43,7 +44,8 @@ struct hook_lists {
 struct engine {
     struct ocl ocl;
     int ready;                  /* device chosen */
-    int single;                 /* REAL = float */
+    int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
+    double origin[3];           /* device positions are x - origin (0 in double) */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
     int cap;                    /* per-atom buffer capacity */
@@ -97,6 +99,14 @@ void eng_finish(struct gravel *g);
 /* Host doubles <-> device REALs through a scratch buffer. */
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
 void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
+/* Positions: host doubles <-> the device's x (and xlo), relative to origin. */
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src);
+void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst);
+/* A lab-frame coordinate of dimension q as a device REAL argument (x - origin). */
+void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
+/* Bind the low position part as argument i when positions are split
+ * (kernels with POS_LO_PARAM, their last argument); no-op otherwise. */
+void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i);
 
 /* Run internals (engine.c): build the program for the active styles; upload
  * the host atoms; grow capacity; release the program's kernels. */

@@ -387,9 +387,9 @@ int nbr_decide(struct gravel *g)
     eng_arg_mem(g, k, 5, b->flags);
     eng_arg_mem(g, k, 6, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 7 + q, g->dom.lo[q]);
+        eng_arg_coord(g, k, 7 + q, q, g->dom.lo[q]);
     for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 10 + q, g->dom.hi[q]);
+        eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, 13 + q, g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
     /* the fused initial_integrate ops (src/fused.h) run first */
@@ -404,6 +404,7 @@ int nbr_decide(struct gravel *g)
     eng_arg_mem(g, k, a++, e->a.radius);
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_pos_lo(g, k, a);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);
@@ -443,10 +444,11 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     for (int q = 0; q < 3; q++)
         eng_arg_int(g, k, 4 + q, d->periodic[q]);
     for (int q = 0; q < 3; q++) {
-        eng_arg_real(g, k, 7 + q, d->lo[q]);
-        eng_arg_real(g, k, 10 + q, d->hi[q]);
+        eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
+        eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
     }
     eng_arg_mem(g, k, 13, b->ext);
+    eng_arg_pos_lo(g, k, 14);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -461,8 +463,8 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int c = 0; c < nch; c++)
         for (int q = 0; q < 3; q++) {
-            lo[q] = fmin(lo[q], ext[6 * c + q]);
-            hi[q] = fmax(hi[q], ext[6 * c + 3 + q]);
+            lo[q] = fmin(lo[q], e->origin[q] + ext[6 * c + q]);
+            hi[q] = fmax(hi[q], e->origin[q] + ext[6 * c + 3 + q]);
         }
     free(ext);
     domain_shrink_wrap(g, lo, hi);
@@ -526,7 +528,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         for (int q = 0; q < 3; q++)
             eng_arg_int(g, k, a++, g->dom.periodic[q]);
         for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, a++, b->lo[q]);
+            eng_arg_coord(g, k, a++, q, b->lo[q]);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, a++, b->inv[q]);
         for (int q = 0; q < 3; q++)
@@ -653,6 +655,8 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
     reorder_array(g, b, s->x, 3 * r, nkeep);
+    if (s->xlo)
+        reorder_array(g, b, s->xlo, 3 * r, nkeep);
     reorder_array(g, b, s->v, 3 * r, nkeep);
     if (e->rotation)
         reorder_array(g, b, s->omega, 3 * r, nkeep);
@@ -696,8 +700,8 @@ void nbr_rebuild(struct gravel *g)
     for (int q = 0; q < 3; q++)
         eng_arg_int(g, k, 2 + q, b->nc[q]);
     for (int q = 0; q < 3; q++) {
-        eng_arg_real(g, k, 5 + q, b->lo[q]);
-        eng_arg_real(g, k, 8 + q, b->hi[q]);
+        eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
+        eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
         eng_arg_real(g, k, 11 + q, b->inv[q]);
     }
     eng_arg_mem(g, k, 14, b->cellof);
@@ -833,6 +837,9 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     eng_read(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
     eng_read(g, l->nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
     eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    if (e->single) /* the device's are relative to the origin */
+        for (size_t i = 0; i < 3 * (size_t)n; i++)
+            s->xhold[i] += e->origin[i % 3];
     if (e->history) {
         /* per row slot: the owner's history, its negative on the partner's side */
         s->shear = gr_calloc(g, 3 * (size_t)n * maxn + 1, sizeof(double));
@@ -961,7 +968,11 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         eng_write(g, l->cj, 0, total * sizeof(cl_int), cj);
         if (sh)
             eng_write_reals(g, l->shear, 3 * total, sh);
-        eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+        double *xh = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+        for (size_t i = 0; i < 3 * (size_t)n; i++) /* device: relative to the origin */
+            xh[i] = s->xhold[i] - e->origin[i % 3];
+        eng_write_reals(g, b->xhold, 3 * (size_t)n, xh);
+        free(xh);
     }
     free(row);
     free(ioff);

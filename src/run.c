@@ -138,6 +138,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             eng_arg_real(g, k, i++, l->L[q]);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
+        eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
         i = 0;
@@ -212,25 +213,28 @@ static void timestep_report(struct gravel *g, int force)
                    "are needed for accuracy)", g->dt, p->style->name, steps);
 }
 
-/* verify: single precision resolves a coordinate x to |x| 2^-23. Warn at
- * setup when that exceeds 1e-3 of the smallest radius: overlaps and contact
- * normals (fractions of a radius) lose their digits. */
+/* verify: single precision keeps positions as hi + lo float pairs relative
+ * to the device origin (kernels/common.cl, "Positions"): a coordinate x
+ * resolves to about |x - origin| 2^-47. Warn at setup when that exceeds
+ * 1e-6 of the smallest radius: overlaps (fractions of a radius) would lose
+ * digits that double keeps. Called after the upload (the origin is set). */
 static void precision_report(struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
-    if (!g->opt.single || a->n == 0)
+    const double *o = g->eng->origin;
+    if (!g->eng->single || a->n == 0)
         return;
     double xmax = 0, rmin = INFINITY;
     for (int i = 0; i < a->n; i++) {
         for (int d = 0; d < 3; d++)
-            xmax = fmax(xmax, fabs(a->x[3 * i + d]));
+            xmax = fmax(xmax, fabs(a->x[3 * i + d] - o[d]));
         rmin = fmin(rmin, a->radius[i]);
     }
-    double ulp = xmax * 0x1p-23;
-    if (ulp > 1e-3 * rmin)
-        gr_warn(g, "single precision: coordinates up to %g resolve only %.3g, %.3g of the "
-                   "smallest radius %g; overlaps lose precision (use -precision double or "
-                   "move the origin closer)", xmax, ulp, ulp / rmin, rmin);
+    double ulp = xmax * 0x1p-47;
+    if (ulp > 1e-6 * rmin)
+        gr_warn(g, "single precision: coordinates up to %g from the device origin resolve "
+                   "only %.3g, %.3g of the smallest radius %g; overlaps lose precision (use "
+                   "-precision double or a smaller box)", xmax, ulp, ulp / rmin, rmin);
 }
 
 static void check_atoms(struct gravel *g)
