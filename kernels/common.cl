@@ -12,7 +12,7 @@
 #define REAL double
 #define USE_DOUBLE 1
 #endif
-#if defined(USE_DOUBLE)
+#if defined(USE_DOUBLE) || defined(HAS_FP64)
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
 #pragma OPENCL FP_CONTRACT OFF
@@ -26,6 +26,10 @@
 struct contact {
     REAL3 del;          /* x_i - x_j (minimum image) */
     REAL rsq;           /* |del|^2 */
+    REAL r;             /* |del| */
+    REAL delta;         /* overlap radsum - r (the laws read r and delta from here:
+                         * with SPLIT_POS contact_refine computes them from the
+                         * split positions) */
     REAL radi, radj;    /* radii (radj = 0 for a flat wall) */
     REAL radsum;        /* radi + radj */
     REAL reff;          /* radi radj / radsum (radi for a wall) */
@@ -65,6 +69,8 @@ static inline struct contact contact_make(const REAL3 del, const REAL radi, cons
     c.radi = radi;
     c.radj = radj;
     c.radsum = radi + radj;
+    c.r = sqrt(c.rsq);
+    c.delta = c.radsum - c.r;
     c.reff = reff;
     c.vr = vr;
     c.omi = omi;
@@ -106,15 +112,15 @@ static inline REAL min_image(REAL d, REAL L)
  * last argument, POS_LO_PARAM), relative to the run's origin (the box centre,
  * src/engine.c): 48 significant bits, so a drift below half the float spacing
  * still moves the particle and a contact's separation is resolved as in
- * double. Displacements, gaps and drifts go through POS_DELTA and pos_add;
- * binning and the rebuild test read hi alone (off by at most one float
+ * double. Drifts go through pos_add, contact separations and overlaps through
+ * contact_refine (below) from the hi and lo differences; binning and the
+ * rebuild test read hi alone (off by at most one float
  * spacing of a box-relative coordinate). Without SPLIT_POS there is one array
  * and these reduce to the plain arithmetic. */
 #ifdef SPLIT_POS
 #define POS_LO_PARAM , __global REAL *xlo
 #define POS_LOAD_LO(i) vload3(i, xlo)
 #define POS_STORE_LO(val, i) vstore3(val, i, xlo)
-#define POS_DELTA(i, j) ((vload3(i, x) - vload3(j, x)) + (vload3(i, xlo) - vload3(j, xlo)))
 /* hi + lo += d, renormalised (TwoSum, then Fast2Sum): exact to the last bit of lo */
 static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
 {
@@ -134,7 +140,6 @@ static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
 #define POS_LO_PARAM
 #define POS_LOAD_LO(i) ((REAL3)(0))
 #define POS_STORE_LO(val, i) ((void)0)
-#define POS_DELTA(i, j) (vload3(i, x) - vload3(j, x))
 static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
 {
     (void)lo;
@@ -164,4 +169,34 @@ static inline void pbc_wrap(REAL *h, REAL *l, int *im, const REAL lo, const REAL
         }
         (*im)++;
     }
+}
+
+/* The separation and overlap of contact c from the split parts: del_lo is
+ * the low part of x_i - x_j (SPLIT_POS). With double support they are
+ * evaluated in double ((radi + radj) - |del + del_lo|), so an overlap far
+ * below a float spacing of the radius keeps its digits; else in REAL.
+ * Returns 0 when the refined overlap is not positive (no contact). */
+static inline int contact_refine(struct contact *c, const REAL3 del_lo)
+{
+#ifdef SPLIT_POS
+#ifdef HAS_FP64
+    const double dx = (double)c->del.x + (double)del_lo.x;
+    const double dy = (double)c->del.y + (double)del_lo.y;
+    const double dz = (double)c->del.z + (double)del_lo.z;
+    const double r = sqrt(dx * dx + dy * dy + dz * dz);
+    c->r = (REAL)r;
+    c->delta = (REAL)(((double)c->radi + (double)c->radj) - r);
+#else
+    const REAL3 d = c->del + del_lo;
+    c->r = sqrt(dot(d, d));
+    c->delta = c->radsum - c->r;
+#endif
+    c->del = c->del + del_lo;
+    c->rsq = c->r * c->r;
+    return c->delta > (REAL)0;
+#else
+    (void)c;
+    (void)del_lo;
+    return 1;
+#endif
 }

@@ -71,18 +71,14 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
     return 1;
 }
 
-/* The gap del of the sphere's hi part, refined by its lo part xl (SPLIT_POS):
- * the normal component of xl is added, so a flat or curved wall sees the
- * particle's 48-bit position; tangential parts do not change the gap. */
-static inline REAL3 wall_gap_refine(const REAL3 del, const REAL3 xl)
+/* The low part of the gap del of the sphere's hi part (SPLIT_POS): the normal
+ * component of the position's low part xl, so a flat or curved wall sees the
+ * particle's 48-bit position (contact_refine); tangential parts do not
+ * change the gap. */
+static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
 {
-#ifdef SPLIT_POS
     const REAL dd = dot(del, del);
-    return dd > (REAL)0 ? del + (dot(xl, del) / dd) * del : del;
-#else
-    (void)xl;
-    return del;
-#endif
+    return dd > (REAL)0 ? (dot(xl, del) / dd) * del : (REAL3)(0);
 }
 
 /* One work-item per atom of the group: every element of the wall is a
@@ -126,17 +122,23 @@ static inline REAL3 wall_gap_refine(const REAL3 del, const REAL3 xl)
             REAL3 del, vwall;                                                                  \
             REAL rwall;                                                                        \
             const int acts = wall_point(&w, e, xi, radi, &del, &rwall, &vwall);                \
-            del = wall_gap_refine(del, xil);                                                   \
-            const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                    \
-            if (!acts || (inclusive ? rsq > radi * radi : rsq >= radi * radi)) {               \
+            WALL_GAP_LO(del_lo, del, xil);                                                     \
+            const REAL3 dtest = del + del_lo;                                                  \
+            const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
+            struct contact c;                                                                  \
+            int touch = acts && (inclusive ? rsq <= radi * radi : rsq < radi * radi);          \
+            if (touch) {                                                                       \
+                WALL_OMEGA(omi, omega, i);                                                     \
+                c = contact_make(del, radi, 0,                                                 \
+                                 rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
+                                 vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
+                touch = contact_refine(&c, del_lo);                                            \
+            }                                                                                  \
+            if (!touch) {                                                                      \
                 if (has_history)                                                               \
                     vstore3((REAL3)(0), slot, history);                                        \
                 continue;                                                                      \
             }                                                                                  \
-            WALL_OMEGA(omi, omega, i);                                                         \
-            struct contact c = contact_make(                                                   \
-                del, radi, 0, rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),         \
-                vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);                              \
             c.dt = dt;                                                                         \
             c.shearupdate = shearupdate;                                                       \
             REAL3 sh = has_history ? vload3(slot, history) : (REAL3)(0);                       \
@@ -151,6 +153,11 @@ static inline REAL3 wall_gap_refine(const REAL3 del, const REAL3 xl)
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
 
+#ifdef SPLIT_POS
+#define WALL_GAP_LO(name, del, xl) const REAL3 name = wall_gap_lo(del, xl)
+#else
+#define WALL_GAP_LO(name, del, xl) const REAL3 name = (REAL3)(0)
+#endif
 #ifdef HAS_ROTATION
 #define WALL_OMEGA(name, omega, i) const REAL3 name = vload3(i, omega)
 #define WALL_ADD_TORQUE(torque, i, t) vstore3(vload3(i, torque) + (t), i, torque)

@@ -486,7 +486,9 @@ void eng_prepare(struct gravel *g)
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
-                       single ? " -D SPLIT_POS" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
+                       !single ? " -D USE_DOUBLE"
+                       : e->ocl.fp64 ? " -D SPLIT_POS -D HAS_FP64" /* contact_refine in double */
+                                     : " -D SPLIT_POS", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])
