@@ -10,7 +10,8 @@
    to 1e-6 relative (c_1 also within 1e-20 absolute: it starts at 8e-32).
    `fix_pour.py --update` rewrites that log with `lmp`.
 2. Each tests/reference/pour/<deck>.in (diam range, dens, vel, rate, vol into a
-   block; diam poly into a z-cylinder with id next, ignore and lost atoms)
+   block; diam poly into a z-cylinder with id next, ignore and lost atoms; two
+   fixes filling one region on the same steps)
    runs unchanged in gravel; its dump (every insertion step, %.15g) must have
    LAMMPS's frames and atom IDs (tests/reference/pour/<deck>.dump, make_refs.sh),
    every atom inserted at a frame's step must print LAMMPS's digits exactly
