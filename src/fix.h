@@ -119,6 +119,7 @@ struct fix {
     size_t peratom_cap;         /* atoms the buffers hold */
     uint64_t arghash;           /* hash of group, style and arguments (restart.c compares) */
     unsigned fused_hooks;       /* hooks run inside fused kernels this run (src/fused.c) */
+    int time_depend;            /* 1: its schedule is in steps; reset_timestep refuses (LAMMPS) */
     int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
     bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
 };

@@ -30,7 +30,7 @@
  * above its top face) is not created, as on LAMMPS's one process.
  *
  * Requires a fix gravity pointing -z (3d) or -y (2d) of unchanged magnitude
- * and an unchanged timestep. `ignore` (skip line/triangle particles in the
+ * and an unchanged timestep; reset_timestep is refused while it exists. `ignore` (skip line/triangle particles in the
  * near list) has nothing to skip: gravel's particles are spheres. `mol`,
  * `molfrac`, `rigid`, `shake` need molecule templates, which gravel does not
  * have: clear errors. */
@@ -398,6 +398,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix pour: the fall time %g through the region is not a usable number of "
                     "steps of %g (gravity %g)", t, g->dt, mag);
     p->nfreq = (int)nf;
+    f->time_depend = 1;
     f->force_reneighbor = 1;
     f->next_reneighbor = g->step + 1;
     p->nfirst = f->next_reneighbor;

@@ -18,7 +18,7 @@
    (type, x, y, z, radius, mass, vx, vy, vz), and the atoms inserted before
    must agree to 1e-8 (|a - b| <= 1e-8 max(1, |b|); their contact forces are
    summed in another order than LAMMPS's).
-3. Bad fix pour commands stop with a message naming the script line.
+3. Bad fix pour commands (and reset_timestep while one exists) stop with a message naming the script line.
 
 One PASS/FAIL line per case."""
 import glob
@@ -175,6 +175,8 @@ ERRORS = [
      "fix 2 all gravity 2.0 spherical 0.0 -180.0\nrun 1\n", "gravity changed", 16),
     ("timestep_changed", GRAV + "fix p all pour 10 1 5 region slab\ntimestep 0.002\nrun 1\n",
      "cannot change timestep with fix pour", 16),
+    ("reset_timestep", GRAV + "fix p all pour 10 1 5 region slab\nreset_timestep 100\n",
+     "cannot reset timestep with a time-dependent fix", 15),
 ]
 
 
