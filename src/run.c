@@ -1,9 +1,10 @@
 /* run.c - `run` and `reset_timestep`: the Verlet loop on the device.
  *
  * Order per step (LAMMPS Verlet::run): initial_integrate fixes -> neighbor
- * decision (rebuild with pbc, shrink-wrap, re-sort) -> pair forces (the
- * contact pipeline: pair_contacts, then pair_gather, which also clears f and
- * torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
+ * decision (a fix's next_reneighbor forces it) -> on rebuild steps the
+ * pre_exchange fixes (fix pour inserts atoms), then the rebuild (pbc,
+ * shrink-wrap, re-sort) -> pair forces (the contact pipeline: pair_contacts,
+ * then pair_gather, which also clears f and torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
  * -> output. Per-particle fix work fuses into the check and gather kernels
  * where it can (src/fused.h); the other fixes run from hook lists built once
  * per run. Setup (Verlet::setup) rebuilds the list and computes the step-0
@@ -363,8 +364,11 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             eng_finish(g);
         double a1 = wall();
         int rebuild = nbr_decide(g, forced_rebuild(g));
+        double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
-            run_hook(g, HOOK_PRE_EXCHANGE); /* fix pour inserts here */
+            double p0 = wall();
+            run_hook(g, HOOK_PRE_EXCHANGE);
+            tx = wall() - p0;
             nbr_rebuild(g);
             eng_finish(g);
         }
@@ -378,10 +382,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         if (timed)
             eng_finish(g);
         double b1 = wall();
-        double mod = (a1 - a0) + cm + (b1 - b0);
+        double mod = (a1 - a0) + cm + (b1 - b0) + tx;
         if (rebuild) {
             xp += cp;
-            xn += a2 - a1;
+            xn += a2 - a1 - tx;
             xm += mod;
         } else {
             nplain++;
