@@ -176,17 +176,23 @@ void eng_finish(struct gravel *g) { OCL_CHECK(g, clFinish(g->eng->ocl.queue)); }
 
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src)
 {
+    eng_write_reals_at(g, m, 0, count, src);
+}
+
+void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
+                        const double *src)
+{
     if (!count)
         return;
     if (!g->eng->single) {
-        eng_write(g, m, 0, count * sizeof(double), src);
+        eng_write(g, m, first * sizeof(double), count * sizeof(double), src);
         return;
     }
     float *tmp = gr_malloc(g, count * sizeof(float));
     for (size_t i = 0; i < count; i++)
         tmp[i] = (float)src[i];
-    cl_int err = clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, 0, count * sizeof(float),
-                                      tmp, 0, NULL, NULL);
+    cl_int err = clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, first * sizeof(float),
+                                      count * sizeof(float), tmp, 0, NULL, NULL);
     free(tmp);
     ocl_check(g, err, "clEnqueueWriteBuffer");
 }
@@ -389,6 +395,46 @@ void eng_upload(struct gravel *g)
     e->active = 1;
 }
 
+void eng_append(struct gravel *g, int nold)
+{
+    struct engine *e = g->eng;
+    struct atoms *at = &g->atoms;
+    struct dev_atoms *s = &e->a;
+    int n = at->n, k = n - nold;
+    if (!e->active || nold != s->n || k < 0)
+        gr_error(g, "internal error: eng_append needs the host atoms of run_sync_host");
+    if (k == 0)
+        return;
+    if (n > e->cap)
+        gr_error(g, "internal error: %d atoms inserted beyond the run's capacity %d", n, e->cap);
+    size_t o = (size_t)nold, c = (size_t)k;
+    eng_write_reals_at(g, s->x, 3 * o, 3 * c, at->x + 3 * o);
+    eng_write_reals_at(g, s->v, 3 * o, 3 * c, at->v + 3 * o);
+    eng_write_reals_at(g, s->f, 3 * o, 3 * c, at->f + 3 * o);
+    if (e->rotation) {
+        eng_write_reals_at(g, s->omega, 3 * o, 3 * c, at->omega + 3 * o);
+        eng_write_reals_at(g, s->torque, 3 * o, 3 * c, at->torque + 3 * o);
+    }
+    eng_write_reals_at(g, s->radius, o, c, at->radius + o);
+    eng_write_reals_at(g, s->rmass, o, c, at->rmass + o);
+    eng_write(g, s->type, o * sizeof(cl_int), c * sizeof(cl_int), at->type + o);
+    eng_write(g, s->mask, o * sizeof(cl_uint), c * sizeof(cl_uint), at->mask + o);
+    eng_write(g, s->tag, o * sizeof(cl_long), c * sizeof(cl_long), at->tag + o);
+    eng_write(g, s->image, 3 * o * sizeof(cl_int), 3 * c * sizeof(cl_int), at->image + 3 * o);
+    cl_uint zero = 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->peratom)
+            OCL_CHECK(g, clEnqueueFillBuffer(e->ocl.queue, f->peratom, &zero, sizeof zero,
+                                             o * f->peratom_bytes, c * f->peratom_bytes, 0,
+                                             NULL, NULL));
+    }
+    nbr_atoms_appended(g, nold, n);
+    s->n = n;
+    e->tag_sum = tag_checksum(at);
+    e->n_at_sync = n;
+}
+
 void run_sync_host(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -524,6 +570,7 @@ void engine_destroy(struct gravel *g)
     fused_free(&e->fused);
     for (int k = 0; k < NHOOK; k++)
         free(e->hooks.call[k]);
+    free(e->hooks.force);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     eng_release_kernels(e);

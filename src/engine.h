@@ -31,7 +31,7 @@ struct nbr;                     /* neighbor.c */
 struct fix;
 
 /* The fix calls of each hook for the current run (run.c). */
-enum { NHOOK = 4 };
+enum { NHOOK = 5 };
 struct hook_call {
     struct fix *fix;
     void (*fn)(struct gravel *, struct fix *);
@@ -39,6 +39,8 @@ struct hook_call {
 struct hook_lists {
     int n[NHOOK];
     struct hook_call *call[NHOOK];
+    int nforce;                 /* fixes with force_reneighbor (fix pour) */
+    struct fix **force;
 };
 
 struct engine {
@@ -63,6 +65,7 @@ struct engine {
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
+    double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
@@ -98,6 +101,9 @@ void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes);
 void eng_finish(struct gravel *g);
 /* Host doubles <-> device REALs through a scratch buffer. */
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
+/* The same from REAL element `first` on. */
+void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
+                        const double *src);
 void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
 /* Positions: host doubles <-> the device's x (and xlo), relative to origin. */
 void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src);
@@ -115,6 +121,12 @@ void eng_upload(struct gravel *g);
 void eng_release_kernels(struct engine *e);
 /* Make sure the per-atom set holds at least n atoms (contents not kept). */
 void eng_reserve(struct gravel *g, int n);
+/* During a run: the host atoms nold .. g->atoms.n - 1 (just added behind
+ * the atoms of the last run_sync_host) go to the device behind the others;
+ * existing atoms, their contacts and history are untouched, the new ones'
+ * fix per-atom state is zero. The caller forces a neighbor rebuild on this
+ * step. The capacity must hold them (fix reserve at run start). */
+void eng_append(struct gravel *g, int nold);
 
 
 #endif

@@ -303,7 +303,7 @@ void nbr_setup(struct gravel *g)
     if (b->nexg)
         eng_write(g, b->excl_group, 0, (size_t)b->nexg * 2 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
-    double rmax = 0;
+    double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
     for (int i = 0; i < g->atoms.n; i++)
         if (g->atoms.radius[i] > rmax)
             rmax = g->atoms.radius[i];
@@ -371,7 +371,7 @@ static void nonfinite_error(struct gravel *g, int i)
              (long long)g->step, cause);
 }
 
-int nbr_decide(struct gravel *g)
+int nbr_decide(struct gravel *g, int forced)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
@@ -410,6 +410,8 @@ int nbr_decide(struct gravel *g)
     read_flags(g, b, fl);
     if (fl[1] != 0x7fffffff)
         nonfinite_error(g, fl[1]);
+    if (forced)
+        return 1;
     b->ago++;
     int every = g->neigh.every > 0 ? g->neigh.every : 1;
     if (b->ago >= g->neigh.delay && b->ago % every == 0) {
@@ -425,6 +427,24 @@ int nbr_decide(struct gravel *g)
         }
     }
     return 0;
+}
+
+void nbr_atoms_appended(struct gravel *g, int nold, int nnew)
+{
+    struct nbr *b = get(g);
+    struct nbr_list *l = &b->list;
+    /* the previous contacts' offsets (coff becomes coff_old at the rebuild)
+     * end at nold: the new atoms' ranges are empty */
+    if (!g->eng->history || !b->old_valid || nnew <= nold || !l->coff)
+        return;
+    if ((size_t)nnew + 1 > b->cap_atoms + 1)
+        gr_error(g, "internal error: %d atoms beyond the neighbor capacity %zu", nnew,
+                 b->cap_atoms);
+    cl_int end = 0;
+    eng_read(g, l->coff, (size_t)nold * sizeof(cl_int), sizeof end, &end);
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, l->coff, &end, sizeof end,
+                                     (size_t)(nold + 1) * sizeof(cl_int),
+                                     (size_t)(nnew - nold) * sizeof(cl_int), 0, NULL, NULL));
 }
 
 static void wrap_and_extent(struct gravel *g, struct nbr *b)
