@@ -215,14 +215,15 @@ void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst)
     ocl_check(g, err, "clEnqueueReadBuffer");
 }
 
-void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src)
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int first, int n,
+                         const double *src)
 {
     struct engine *e = g->eng;
-    size_t count = 3 * (size_t)n;
+    size_t count = 3 * (size_t)n, off = 3 * (size_t)first;
     if (!count)
         return;
     if (!e->single) {
-        eng_write(g, s->x, 0, count * sizeof(double), src);
+        eng_write(g, s->x, off * sizeof(double), count * sizeof(double), src);
         return;
     }
     float *hi = gr_malloc(g, 2 * count * sizeof(float)), *lo = hi + count;
@@ -231,8 +232,8 @@ void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, con
         hi[i] = (float)rel;
         lo[i] = (float)(rel - (double)hi[i]);
     }
-    eng_write(g, s->x, 0, count * sizeof(float), hi);
-    eng_write(g, s->xlo, 0, count * sizeof(float), lo);
+    eng_write(g, s->x, off * sizeof(float), count * sizeof(float), hi);
+    eng_write(g, s->xlo, off * sizeof(float), count * sizeof(float), lo);
     free(hi);
 }
 
@@ -359,7 +360,7 @@ void eng_upload(struct gravel *g)
         nbr_invalidate(g);
     struct dev_atoms *s = &e->a;
     s->n = n;
-    eng_write_positions(g, s, n, at->x);
+    eng_write_positions(g, s, 0, n, at->x);
     eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
     if (e->rotation) {
@@ -408,7 +409,7 @@ void eng_append(struct gravel *g, int nold)
     if (n > e->cap)
         gr_error(g, "internal error: %d atoms inserted beyond the run's capacity %d", n, e->cap);
     size_t o = (size_t)nold, c = (size_t)k;
-    eng_write_reals_at(g, s->x, 3 * o, 3 * c, at->x + 3 * o);
+    eng_write_positions(g, s, nold, k, at->x + 3 * o);
     eng_write_reals_at(g, s->v, 3 * o, 3 * c, at->v + 3 * o);
     eng_write_reals_at(g, s->f, 3 * o, 3 * c, at->f + 3 * o);
     if (e->rotation) {

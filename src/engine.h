@@ -105,8 +105,10 @@ void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src
 void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
                         const double *src);
 void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
-/* Positions: host doubles <-> the device's x (and xlo), relative to origin. */
-void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src);
+/* Positions: host doubles <-> the device's x (and xlo), relative to origin;
+ * writes atoms first .. first + n - 1 from src (their 3n coordinates). */
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int first, int n,
+                         const double *src);
 void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst);
 /* A lab-frame coordinate of dimension q as a device REAL argument (x - origin). */
 void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
