@@ -1,0 +1,47 @@
+#!/bin/sh
+# reproduce.sh - `make reproduce-mill`: the 300 mm pilot mill of source
+# document 003 (sec. 6.2) as an axial slice, at 60, 70 and 80 % of the
+# critical speed, then tools/mill/report.py writes doc/mill.md and its PNGs.
+# Runs in build/mill/. Environment: MILL_SETTLE (revolutions before averaging,
+# default 2), MILL_AVE (revolutions averaged, default 1), MILL_SPEEDS
+# (default "0.6 0.7 0.8"), MILL_L (slice length, default 0.00675 m),
+# MILL_SMOOTH=1 also runs 003 fig. 6.13's mill without lifters at 50 % with
+# friction 0.42, 0.44, 0.46.
+set -e
+root=$(cd "$(dirname "$0")/../.." && pwd)
+out="$root/build/mill"
+mkdir -p "$out"
+cd "$out"
+settle=${MILL_SETTLE:-2}
+ave=${MILL_AVE:-1}
+speeds=${MILL_SPEEDS:-"0.6 0.7 0.8"}
+L=${MILL_L:-0.00675}
+cp "$root/inputs/published/mill/mill.in" .
+python3 "$root/tools/mill/mill_stl.py" mill_shell.stl --length "$L"
+: > runs.txt
+for s in $speeds; do
+    tag=mill_$(echo "$s" | tr -d .)
+    echo "== mill at $s of critical speed ($settle + $ave revolutions)"
+    t0=$(date +%s)
+    "$root/bin/gravel" -in mill.in -var speed "$s" -var settle "$settle" -var ave "$ave" \
+        -var L "$L" -var tag "$tag" -log "$tag.log" -echo none > /dev/null
+    t1=$(date +%s)
+    echo "$tag lifters $s $settle $ave $((t1 - t0))" >> runs.txt
+done
+if [ "${MILL_SMOOTH:-0}" = 1 ]; then
+    python3 "$root/tools/mill/mill_stl.py" smooth_shell.stl --length "$L" --lifters 0 --arc-facets 252
+    for mu in 0.42 0.44 0.46; do
+        tag=smooth_$(echo "$mu" | tr -d .)
+        echo "== smooth mill at 0.5 of critical speed, friction $mu"
+        sed -e "s/mill_shell.stl/smooth_shell.stl/" \
+            -e "s/^pair_style      hertz\/mindlin \${Epp} 0.23 0.66 0.154/pair_style      hertz\/mindlin \${Epp} 0.23 0.66 $mu/" \
+            -e "s/^region          drum cylinder z 0 0 0.1365/region          drum cylinder z 0 0 0.1485/" \
+            mill.in > smooth.in
+        t0=$(date +%s)
+        "$root/bin/gravel" -in smooth.in -var speed 0.5 -var settle "$settle" -var ave "$ave" \
+            -var L "$L" -var tag "$tag" -log "$tag.log" -echo none > /dev/null
+        t1=$(date +%s)
+        echo "$tag smooth 0.5 $settle $ave $((t1 - t0))" >> runs.txt
+    done
+fi
+python3 "$root/tools/mill/report.py" "$out" "$root/doc"
