@@ -30,7 +30,6 @@
 
 #include "args.h"
 #include "compute_chunk_atom.h"
-#include "engine.h"
 #include "error.h"
 #include "fileio.h"
 #include "fix.h"
@@ -258,7 +257,7 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     a->nvalid_last = -1;
     a->nvalid = next_valid(g, a);
-    f->hooks = HOOK_POST_FORCE | HOOK_END_OF_STEP;
+    f->hooks = HOOK_END_OF_STEP;
 }
 
 static void grow(struct gravel *g, struct ave_chunk *a, int nchunk)
@@ -551,18 +550,12 @@ static void ave_init(struct gravel *g, struct fix *f)
     }
 }
 
-/* LAMMPS's setup() samples when the run's first step is due. */
-static void ave_post_force(struct gravel *g, struct fix *f)
-{
-    if (eng_in_setup(g))
-        sample(g, f);
-}
 
 const struct fix_style fix_style_ave_chunk = {
     .name = "ave/chunk",
     .create = ave_create,
     .init = ave_init,
-    .post_force = ave_post_force,
+    .setup = sample, /* LAMMPS's setup(): a sample when the run's first step is due */
     .end_of_step = sample,
     .destroy = ave_destroy,
 };
