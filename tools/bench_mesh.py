@@ -13,7 +13,9 @@ wall (fix wall/pair mesh, the same law), B the pair style only, C neither
 (pair_style none). Per step and contact, medians of R interleaved runs:
     mesh contact  = (A - B) / mesh contacts
     pair contact  = (B - C) / pair contacts
-(loop times of `run S`). Prints a table for doc/benchmark.md."""
+(loop times of `run S`). --law hooke/history uses LAMMPS's gran/hooke/history
+with fix wall/gran hooke/history ... mesh instead (no impulse solver). Prints
+a table for doc/benchmark.md."""
 import argparse
 import os
 import re
@@ -46,12 +48,22 @@ def floor_stl(path, lo, hi, q):
     return 2 * nx * ny
 
 
-def deck(n, mode, steps):
+LAWS = {
+    # law: (pair_style line, wall fix line)
+    "hertz/mindlin": ("pair_style hertz/mindlin 1e6 0.3 0.5 0.5",
+                      "fix w all wall/pair mesh n_meshes 1 meshes m"),
+    "hooke/history": ("pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1",
+                      "fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 1 mesh "
+                      "n_meshes 1 meshes m"),
+}
+
+
+def deck(n, mode, steps, law="hertz/mindlin"):
     a = 0.98
     L = n * a
-    pair = "pair_style none" if mode == "C" else "pair_style hertz/mindlin 1e6 0.3 0.5 0.5\npair_coeff * *"
-    wall = ("fix m all mesh/surface file floor.stl type 1\n"
-            "fix w all wall/pair mesh n_meshes 1 meshes m\n") if mode == "A" else ""
+    pl, wl = LAWS[law]
+    pair = "pair_style none" if mode == "C" else pl + "\npair_coeff * *"
+    wall = ("fix m all mesh/surface file floor.stl type 1\n" + wl + "\n") if mode == "A" else ""
     return """units lj
 atom_style sphere
 boundary p p f
@@ -91,6 +103,7 @@ def main():
     p.add_argument("--tri-side", type=int, default=100)
     p.add_argument("--steps", type=int, default=100)
     p.add_argument("--repeat", type=int, default=3)
+    p.add_argument("--law", choices=sorted(LAWS), default="hertz/mindlin")
     a = p.parse_args()
     with tempfile.TemporaryDirectory() as d:
         L = a.n * 0.98
@@ -99,7 +112,7 @@ def main():
         npair = 0
         for k in range(a.repeat):
             for mode in "ABC":
-                loop, nc, out = run(d, deck(a.n, mode, a.steps))
+                loop, nc, out = run(d, deck(a.n, mode, a.steps, a.law))
                 t[mode].append(loop)
                 if mode == "B":
                     npair = nc
@@ -108,6 +121,7 @@ def main():
         mesh_c = natoms          # every sphere touches the floor once
         per_mesh = (mA - mB) / (mesh_c * a.steps)
         per_pair = (mB - mC) / (npair * a.steps)
+        print("law %s" % a.law)
         print("spheres %d, triangles %d, mesh contacts %d, pair contacts %d, steps %d, repeats %d"
               % (natoms, ntri, mesh_c, npair, a.steps, a.repeat))
         print("loop times (s): A %s  B %s  C %s" % (t["A"], t["B"], t["C"]))

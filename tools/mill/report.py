@@ -104,7 +104,7 @@ def charge_stats(rows):
     for r in rows:
         x, y, s, vx, vy = r[1], r[2], r[4], r[5], r[6]
         rad = math.hypot(x, y)
-        if 0.125 <= rad <= 0.134 and s > 0.3 and y < 0:
+        if 0.135 <= rad <= 0.147 and s > 0.3 and y < 0:
             vt += (-y * vx + x * vy) / rad
             n += 1
     return bulk, (vt / n if n else 0.0), max(r[4] for r in rows)
@@ -123,7 +123,7 @@ def maps(run, tag, title, docdir):
             for r in rows:
                 f.write("%g %g %g\n" % (r[1], r[2], 1 - r[4]))
         pngs.append((dat, lab))
-    png = "mill_%s_porosity.png" % tag
+    png = "%s_porosity.png" % tag
     s = ("set terminal pngcairo size 1500,520 font ',10'\nset output '%s'\n"
          "set multiplot layout 1,3 title 'Porosity (1 - solidicity), %s'\n"
          "set size ratio -1\nset xrange [-0.155:0.155]\nset yrange [-0.155:0.155]\n"
@@ -132,7 +132,7 @@ def maps(run, tag, title, docdir):
         s += "set title 'voxel %s'\nplot '%s' using 1:2:3 with image\n" % (lab, dat)
     s += "unset multiplot\n"
     gnuplot(s)
-    qpng = "mill_%s_velocity.png" % tag
+    qpng = "%s_velocity.png" % tag
     s = ("set terminal pngcairo size 1100,520 font ',10'\nset output '%s'\n"
          "set multiplot layout 1,2 title 'Mean velocity per voxel (colour: speed, m/s), %s'\n"
          "set size ratio -1\nset xrange [-0.155:0.155]\nset yrange [-0.155:0.155]\n"
@@ -202,7 +202,7 @@ def write_doc(res, docdir):
     o.append("Written by `make reproduce-mill` (tools/mill/reproduce.sh, tools/mill/report.py) from "
              "the runs of `inputs/published/mill/mill.in`. Hromnik's thesis (003) sec. 6.2 simulates "
              "a 300 mm x 0.27 m mill with 253,125 glass beads of 3 mm (fig. 5.23, 5.24) at 60, 70 "
-             "and 80 % of the critical speed omega_c = sqrt(2 g / D) = %.3f rad/s, three "
+             "and 80 %% of the critical speed omega_c = sqrt(2 g / D) = %.3f rad/s, three "
              "revolutions to steady state, then solidicity and velocity averaged over at least one "
              "revolution on voxels of R, 2R and 4R (fig. 6.7-6.12).\n" % WC)
     o.append("## What was run, and how it departs from the thesis\n")
@@ -247,14 +247,14 @@ def write_doc(res, docdir):
     o.append("|---|---|---|---|---|---|---|---|---|")
     for r in res:
         w = r["speed"] * WC
-        o.append("| %s | %.0f %% | %s deg | %s deg | %.2f | %.2f m/s | %.2f m/s | %.3g N m | %.1f W |"
+        o.append("| %s | %.0f %% | %s deg | %s deg | %.2f | %.2f m/s | %.2f m/s | %.4g N m | %.1f W |"
                  % (r["tag"], 100 * r["speed"], fmt_angle(r["sh"]), fmt_angle(r["toe"]), r["bulk"],
                     r["vt"], w * RM, r["torque"], r["power"] * 0.27 / L))
     o.append("\nAngles from the bottom of the mill, positive up the rising side (the mill turns "
              "counterclockwise in the plots); the charge edge is where the sector-averaged "
              "solidicity next to the lifter tips falls below 0.25. Bulk solidicity: mean over the "
              "2R voxels above 0.3. Charge speed at the shell: mean tangential velocity of the "
-             "occupied 2R voxels 16-25 mm inside the shell in the lower half. Power: the drive "
+             "occupied 2R voxels 3-15 mm inside the shell (between the lifters) in the lower half. Power: the drive "
              "power -T . omega of the mesh averaged over the averaging revolutions.\n")
     if any(r["kind"] == "lifters" for r in res):
         o.append("![power draw against speed](mill_power.png)\n")

@@ -5,7 +5,7 @@
 # Runs in build/mill/. Environment: MILL_SETTLE (revolutions before averaging,
 # default 2), MILL_AVE (revolutions averaged, default 1), MILL_SPEEDS
 # (default "0.6 0.7 0.8"), MILL_L (slice length, default 0.00675 m),
-# MILL_SMOOTH=1 also runs 003 fig. 6.13's mill without lifters at 50 % with
+# MILL_JOBS (speeds run at once, default 1), MILL_SMOOTH=1 also runs 003 fig. 6.13's mill without lifters at 50 % with
 # friction 0.42, 0.44, 0.46.
 set -e
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -19,15 +19,28 @@ L=${MILL_L:-0.00675}
 cp "$root/inputs/published/mill/mill.in" .
 python3 "$root/tools/mill/mill_stl.py" mill_shell.stl --length "$L"
 : > runs.txt
-for s in $speeds; do
-    tag=mill_$(echo "$s" | tr -d .)
-    echo "== mill at $s of critical speed ($settle + $ave revolutions)"
+jobs=${MILL_JOBS:-1}
+one() { # speed: one run, its line in runs.txt (tag kind speed settle ave seconds)
+    tag=mill_$(echo "$1" | tr -d .)
+    echo "== mill at $1 of critical speed ($settle + $ave revolutions)"
     t0=$(date +%s)
-    "$root/bin/gravel" -in mill.in -var speed "$s" -var settle "$settle" -var ave "$ave" \
+    "$root/bin/gravel" -in mill.in -var speed "$1" -var settle "$settle" -var ave "$ave" \
         -var L "$L" -var tag "$tag" -log "$tag.log" -echo none > /dev/null
     t1=$(date +%s)
-    echo "$tag lifters $s $settle $ave $((t1 - t0))" >> runs.txt
+    echo "$tag lifters $1 $settle $ave $((t1 - t0))" >> runs.txt
+}
+n=0
+for s in $speeds; do
+    if [ "$jobs" -gt 1 ]; then
+        one "$s" &
+        n=$((n + 1))
+        [ $((n % jobs)) -eq 0 ] && wait
+    else
+        one "$s"
+    fi
 done
+wait
+sort -o runs.txt runs.txt
 if [ "${MILL_SMOOTH:-0}" = 1 ]; then
     python3 "$root/tools/mill/mill_stl.py" smooth_shell.stl --length "$L" --lifters 0 --arc-facets 252
     for mu in 0.42 0.44 0.46; do
