@@ -134,8 +134,8 @@ static void init(struct gravel *g, struct pair *p)
                     "has %d: re-issue pair_coeff", t->nt, g->atoms.ntypes);
     for (int I = 1; I <= t->nt; I++)
         if (!t->set[(size_t)(I - 1) * t->nt + (I - 1)])
-            gr_error(g, "all pair coeffs are not set (pair_coeff %d %d is missing for pair style "
-                        "hertz/mindlin)", I, I);
+            gr_error(g, "all pair coeffs are not set: no pair_coeff for types %d %d of pair "
+                        "style hertz/mindlin (e.g. pair_coeff * *)", I, I);
 }
 
 /* The material of type pair (i, j): its own or the pair_style one. */
