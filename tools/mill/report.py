@@ -69,6 +69,14 @@ def loop_times(path):
     return out
 
 
+def max_overlap(path):
+    out = 0.0
+    for l in open(path):
+        if l.startswith("Largest overlap / radius"):
+            out = max(out, float(l.split("=")[1]))
+    return out
+
+
 def angles(rows):
     """(shoulder, toe) in degrees from the bottom, + towards the rising side."""
     nsec = 180
@@ -166,13 +174,14 @@ def main():
         lt = loop_times(os.path.join(run, "%s.log" % tag))
         steps = sum(x[1] for x in lt)
         natoms = lt[-1][2]
+        ovl = max_overlap(os.path.join(run, "%s.log" % tag))
         loop = sum(x[0] for x in lt)
         title = ("%s %.0f %% critical" % ("lifters," if kind == "lifters" else "no lifters,",
                                           100 * speed))
         png, qpng = maps(run, tag, title, docdir)
         res.append(dict(tag=tag, kind=kind, speed=speed, settle=settle, ave=ave, secs=int(secs),
                         sh=sh, toe=toe, bulk=bulk, vt=vt, smax=smax, torque=torque, power=power,
-                        nsamp=nsamp, steps=steps, natoms=natoms, loop=loop, png=png, qpng=qpng))
+                        nsamp=nsamp, ovl=ovl, steps=steps, natoms=natoms, loop=loop, png=png, qpng=qpng))
     lif = [r for r in res if r["kind"] == "lifters"]
     if lif:
         dat = os.path.join(run, "power.dat")
@@ -208,8 +217,8 @@ def write_doc(res, docdir):
     o.append("## What was run, and how it departs from the thesis\n")
     o.append("- **An axial slice, not the whole mill.** The full mill (253,125 beads, 1e-6 s steps, "
              "4 revolutions = 5-6 s of mill time) is about 10^12 particle-steps; this machine (2 "
-             "cores shared by up to 8 sessions) gives gravel ~1.5e6 particle-steps/s, so it would "
-             "take weeks. The slice is %.2f mm long (%.2f bead diameters, the shortest periodic "
+             "cores shared by up to 8 sessions) gives gravel 0.4-1.7e6 particle-steps/s, so it would "
+             "take one to four weeks per speed. The slice is %.2f mm long (%.2f bead diameters, the shortest periodic "
              "length the neighbor cut-off allows), periodic along the axis, with the thesis's "
              "charge per unit length: %d beads (253,125 x %.5f / 0.27). The end plates of the thesis "
              "are absent (the slice stands for the middle of the mill). Power and torque are scaled "
@@ -222,7 +231,7 @@ def write_doc(res, docdir):
              "step is 6e-5 s: 8 steps per 1 m/s collision, the thesis's ratio (1e-6 s for its "
              "9 us contacts) rounded down. Restitution (0.66 pp, 0.55 ps), friction (0.154 pp, "
              "0.32 ps), Poisson ratios, density (2500 kg/m^3) and radius are the thesis's. Softer "
-             "contacts raise overlaps (largest ~10 %% of a radius in these runs, see the logs) "
+             "contacts raise overlaps (the largest sampled, per run, in the cost table) "
              "and slightly lengthen the collisions; the charge shape depends mainly on friction, "
              "restitution and speed.\n")
     o.append("- **Shorter runs.** %s revolutions to steady state (the thesis: \"steady state ... "
@@ -285,28 +294,34 @@ def write_doc(res, docdir):
              "particle counts; one slice revolution gives ~%d x %d samples."
              % (max(r["smax"] for r in res) if res else 0, round(937500 * L),
                 int(float(res[0]["ave"]) * 2 * math.pi / (res[0]["speed"] * WC) / 0.003) if res else 0))
-    o.append("- **Power draw** is not reported by the thesis; ours rises with speed from 60 to "
-             "80 %% as expected for a mill below its power peak.\n" if len(res) > 1 else "")
+    lif = sorted((r for r in res if r["kind"] == "lifters"), key=lambda r: r["speed"])
+    if len(lif) > 1:
+        pw = ["%.0f %%: %.1f W" % (100 * r["speed"], r["power"] * 0.27 / L) for r in lif]
+        inc = all(b["power"] > a["power"] for a, b in zip(lif, lif[1:]))
+        o.append("- **Power draw** is not reported by the thesis. Ours (0.27 m mill): %s, %s "
+                 "with speed.\n" % (", ".join(pw), "rising" if inc else "not monotone"))
     o.append("## Cost (measured)\n")
-    o.append("| run | beads | steps | loop time | particle-steps/s | wall time of the run |")
-    o.append("|---|---|---|---|---|---|")
+    o.append("| run | beads | steps | loop time | particle-steps/s | wall time of the run | "
+             "largest overlap / radius |")
+    o.append("|---|---|---|---|---|---|---|")
     for r in res:
-        o.append("| %s | %d | %d | %.0f s | %.2e | %d s |" % (r["tag"], r["natoms"], r["steps"],
-                                                             r["loop"], r["natoms"] * r["steps"] / r["loop"],
-                                                             r["secs"]))
+        o.append("| %s | %d | %d | %.0f s | %.2e | %d s | %.3f |"
+                 % (r["tag"], r["natoms"], r["steps"], r["loop"],
+                    r["natoms"] * r["steps"] / r["loop"], r["secs"], r["ovl"]))
     tot = sum(r["secs"] for r in res)
     o.append("\nTotal %d s on this machine (2 cores shared with other sessions). The full mill "
              "(%d beads, 0.27 m) at the thesis's 1e-6 s step would need about %.1e particle-steps "
              "per speed (4 revolutions at 70 %%).\n" % (tot, n_full, n_full * 4 * 2 * math.pi / (0.7 * WC) / 1e-6))
     o.append("## Not done\n")
     o.append("- The full-length mill with end plates; the thesis's unsoftened moduli and 1e-6 s "
-             "step (both only a matter of run time: `-var L 0.27 -var soft 1` with a 1e-6 s "
-             "timestep edit, and the STL regenerated with `mill_stl.py --length 0.27`).\n")
+             "step (both only a matter of run time: `-var L 0.27 -var soft 1 -var softps 1` with a "
+             "1e-6 s timestep edit, end plates added as wall/pair zplane walls, and the STL "
+             "regenerated with `mill_stl.py --length 0.27`).\n")
     o.append("- A point-by-point numeric comparison with fig. 6.7-6.12: the thesis's figures "
              "are images without tabulated values; the comparison above uses the numbers its "
              "text states.\n")
     if not any(r["kind"] == "smooth" for r in res):
-        o.append("- Fig. 6.13's smooth mill at 50 %% with friction 0.42-0.46: the script has it "
+        o.append("- Fig. 6.13's smooth mill at 50 % with friction 0.42-0.46: the script has it "
                  "(`MILL_SMOOTH=1 make reproduce-mill`) but it was not run for this page.\n")
     with open(os.path.join(docdir, "mill.md"), "w") as f:
         f.write("\n".join(o) + "\n")
