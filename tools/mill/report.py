@@ -176,8 +176,8 @@ def main():
         natoms = lt[-1][2]
         ovl = max_overlap(os.path.join(run, "%s.log" % tag))
         loop = sum(x[0] for x in lt)
-        title = ("%s %.0f %% critical" % ("lifters," if kind == "lifters" else "no lifters,",
-                                          100 * speed))
+        title = ("%s, %s %.0f %% critical" % (tag, "lifters," if kind == "lifters" else
+                                               "no lifters,", 100 * speed))
         png, qpng = maps(run, tag, title, docdir)
         res.append(dict(tag=tag, kind=kind, speed=speed, settle=settle, ave=ave, secs=int(secs),
                         sh=sh, toe=toe, bulk=bulk, vt=vt, smax=smax, torque=torque, power=power,
@@ -254,13 +254,14 @@ def write_doc(res, docdir):
              "material (pair_coeff 1 2: the ps values), the mesh's surface velocity from fix "
              "move/mesh rotate.\n")
     o.append("## Results\n")
-    o.append("| run | speed | shoulder | toe | bulk solidicity | charge speed at shell | omega R | "
-             "torque (slice) | power draw (0.27 m) |")
-    o.append("|---|---|---|---|---|---|---|---|---|")
+    o.append("| run | speed | revolutions (settle + average) | shoulder | toe | bulk solidicity | "
+             "charge speed at shell | omega R | torque (slice) | power draw (0.27 m) |")
+    o.append("|---|---|---|---|---|---|---|---|---|---|")
     for r in res:
         w = r["speed"] * WC
-        o.append("| %s | %.0f %% | %s deg | %s deg | %.2f | %.2f m/s | %.2f m/s | %.4g N m | %.1f W |"
-                 % (r["tag"], 100 * r["speed"], fmt_angle(r["sh"]), fmt_angle(r["toe"]), r["bulk"],
+        o.append("| %s | %.0f %% | %s + %s | %s deg | %s deg | %.2f | %.2f m/s | %.2f m/s | %.4g N m "
+                 "| %.1f W |"
+                 % (r["tag"], 100 * r["speed"], r["settle"], r["ave"], fmt_angle(r["sh"]), fmt_angle(r["toe"]), r["bulk"],
                     r["vt"], w * RM, r["torque"], r["power"] * 0.27 / L))
     o.append("\nAngles from the bottom of the mill, positive up the rising side (the mill turns "
              "counterclockwise in the plots); the charge edge is where the sector-averaged "
@@ -297,6 +298,15 @@ def write_doc(res, docdir):
                  "%.0f and %.0f %%." % (fmt_angle(lif[0]["sh"]), fmt_angle(lif[-1]["sh"]),
                                         fmt_angle(lif[0]["toe"]), fmt_angle(lif[-1]["toe"]),
                                         100 * lif[0]["speed"], 100 * lif[-1]["speed"]))
+    smo = [r for r in res if r["kind"] == "smooth"]
+    if smo:
+        o.append("- **Smooth mill, 50 %% critical, bead friction 0.42-0.46 (fig. 6.13).** The "
+                 "thesis: with physically based friction a drum without lifters shows no effect "
+                 "even at high speed, while high friction at 50 %% gives \"definite shape in the "
+                 "charge\" (its figures; no numbers). Here (tags smooth_0xx = friction 0.xx): %s."
+                 % "; ".join("%s shoulder %s deg, toe %s deg, bulk solidicity %.2f, power %.1f W"
+                             % (r["tag"], fmt_angle(r["sh"]), fmt_angle(r["toe"]), r["bulk"],
+                                r["power"] * 0.27 / L) for r in smo))
     o.append("- **Low-solidicity ring at the shell.** As in all of the thesis's porosity plots "
              "(sec. 6.2: lifters sweep the outer voxels and the round mill cuts the square "
              "voxels), the outer ring reads porous; also here solidicity is the raw time average "

@@ -5,8 +5,9 @@
 # Runs in build/mill/. Environment: MILL_SETTLE (revolutions before averaging,
 # default 2), MILL_AVE (revolutions averaged, default 1), MILL_SPEEDS
 # (default "0.6 0.7 0.8"), MILL_L (slice length, default 0.00675 m),
-# MILL_JOBS (speeds run at once, default 1), MILL_SMOOTH=1 also runs 003 fig. 6.13's mill without lifters at 50 % with
-# friction 0.42, 0.44, 0.46.
+# MILL_JOBS (runs at once, default 1), MILL_SMOOTH=1 also runs 003 fig. 6.13's
+# mill without lifters at 50 % with bead friction 0.42, 0.44, 0.46
+# (MILL_SMOOTH_SETTLE 1.5, MILL_SMOOTH_AVE 0.5 revolutions).
 set -e
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out="$root/build/mill"
@@ -42,19 +43,26 @@ done
 wait
 sort -o runs.txt runs.txt
 if [ "${MILL_SMOOTH:-0}" = 1 ]; then
+    ss=${MILL_SMOOTH_SETTLE:-1.5}
+    sa=${MILL_SMOOTH_AVE:-0.5}
     python3 "$root/tools/mill/mill_stl.py" smooth_shell.stl --length "$L" --lifters 0 --arc-facets 252
-    for mu in 0.42 0.44 0.46; do
-        tag=smooth_$(echo "$mu" | tr -d .)
-        echo "== smooth mill at 0.5 of critical speed, friction $mu"
-        sed -e "s/mill_shell.stl/smooth_shell.stl/" \
-            -e "s/^pair_style      hertz\/mindlin \${Epp} 0.23 0.66 0.154/pair_style      hertz\/mindlin \${Epp} 0.23 0.66 $mu/" \
-            -e "s/^region          drum cylinder z 0 0 0.1365/region          drum cylinder z 0 0 0.1485/" \
-            mill.in > smooth.in
+    sed -e "s/mill_shell.stl/smooth_shell.stl/" \
+        -e "s/^pair_style      hertz\/mindlin \${Epp} 0.23 0.66 0.154/pair_style      hertz\/mindlin \${Epp} 0.23 0.66 \${mu}/" \
+        -e "s/^region          drum cylinder z 0 0 0.1365/region          drum cylinder z 0 0 0.1485/" \
+        mill.in > smooth.in
+    smooth() { # mu
+        tag=smooth_$(echo "$1" | tr -d .)
+        echo "== smooth mill at 0.5 of critical speed, friction $1 ($ss + $sa revolutions)"
         t0=$(date +%s)
-        "$root/bin/gravel" -in smooth.in -var speed 0.5 -var settle "$settle" -var ave "$ave" \
-            -var L "$L" -var tag "$tag" -log "$tag.log" -echo none > /dev/null
+        "$root/bin/gravel" -in smooth.in -var mu "$1" -var speed 0.5 -var settle "$ss" \
+            -var ave "$sa" -var L "$L" -var tag "$tag" -log "$tag.log" -echo none > /dev/null
         t1=$(date +%s)
-        echo "$tag smooth 0.5 $settle $ave $((t1 - t0))" >> runs.txt
+        echo "$tag smooth 0.5 $ss $sa $((t1 - t0))" >> runs.txt
+    }
+    for mu in 0.42 0.44 0.46; do
+        if [ "$jobs" -gt 1 ]; then smooth "$mu" & else smooth "$mu"; fi
     done
+    wait
+    sort -o runs.txt runs.txt
 fi
 python3 "$root/tools/mill/report.py" "$out" "$root/doc"
