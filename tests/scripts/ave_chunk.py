@@ -2,10 +2,10 @@
 """ave_chunk.py - compute chunk/atom + fix ave/chunk against LAMMPS and
 against an analytic packing.
 
-1. tests/reference/ave_chunk.in (bin/1d, 2d, 3d; ave one/running/window;
+1. tests/reference/ave_chunk/ave_chunk.in (bin/1d, 2d, 3d; ave one/running/window;
    norm all/sample/none; units box/lattice/reduced; bound, discard, format)
    run by bin/gravel: each of its four files equals, byte for byte, the file
-   LAMMPS 2021 wrote (tests/reference/ave_chunk.N.lammps).
+   LAMMPS 2021 wrote (tests/reference/ave_chunk/ave_chunk.N.lammps).
 2. Solidicity of an HCP packing of touching spheres (lattice hcp, bins of one
    orthogonal HCP cell, origin shifted a quarter cell so no centre is on a
    bin edge): every bin holds 4 spheres in sqrt(8) a^3, solidicity
@@ -23,7 +23,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
-REF = os.path.join(ROOT, "tests", "reference")
+REF = os.path.join(ROOT, "tests", "reference", "ave_chunk")
 failures = 0
 
 
