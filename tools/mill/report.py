@@ -132,7 +132,7 @@ def maps(run, tag, title, docdir):
                 f.write("%g %g %g\n" % (r[1], r[2], 1 - r[4]))
         pngs.append((dat, lab))
     png = "%s_porosity.png" % tag
-    s = ("set terminal pngcairo size 1500,520 font ',10'\nset output '%s'\n"
+    s = ("set terminal pngcairo noenhanced size 1500,520 font ',10'\nset output '%s'\n"
          "set multiplot layout 1,3 title 'Porosity (1 - solidicity), %s'\n"
          "set size ratio -1\nset xrange [-0.155:0.155]\nset yrange [-0.155:0.155]\n"
          "set cbrange [0:1]\nset palette rgb 33,13,10\nunset key\n" % (os.path.join(docdir, png), title))
@@ -141,7 +141,7 @@ def maps(run, tag, title, docdir):
     s += "unset multiplot\n"
     gnuplot(s)
     qpng = "%s_velocity.png" % tag
-    s = ("set terminal pngcairo size 1100,520 font ',10'\nset output '%s'\n"
+    s = ("set terminal pngcairo noenhanced size 1100,520 font ',10'\nset output '%s'\n"
          "set multiplot layout 1,2 title 'Mean velocity per voxel (colour: speed, m/s), %s'\n"
          "set size ratio -1\nset xrange [-0.155:0.155]\nset yrange [-0.155:0.155]\n"
          "set palette rgb 33,13,10\nset cblabel 'm/s'\nunset key\n" % (os.path.join(docdir, qpng), title))
@@ -188,7 +188,7 @@ def main():
         with open(dat, "w") as f:
             for r in lif:
                 f.write("%g %g\n" % (100 * r["speed"], r["power"] * 0.27 / L_SLICE))
-        gnuplot("set terminal pngcairo size 640,420 font ',10'\nset output '%s'\n"
+        gnuplot("set terminal pngcairo noenhanced size 640,420 font ',10'\nset output '%s'\n"
                 "set xlabel 'mill speed (%% of critical)'\nset ylabel 'power draw (W), 0.27 m mill'\n"
                 "set grid\nunset key\nset xrange [55:85]\nset yrange [0:*]\n"
                 "plot '%s' using 1:2 with linespoints pt 7\n"
@@ -307,6 +307,13 @@ def write_doc(res, docdir):
                  % "; ".join("%s shoulder %s deg, toe %s deg, bulk solidicity %.2f, power %.1f W"
                              % (r["tag"], fmt_angle(r["sh"]), fmt_angle(r["toe"]), r["bulk"],
                                 r["power"] * 0.27 / L) for r in smo))
+        o.append("  The charge slips on the smooth shell (charge speed at the shell %.2f-%.2f m/s "
+                 "against omega R = %.2f m/s) and its shape barely depends on the bead friction: "
+                 "no S-shape here. The thesis's smooth mill had a particle representation of the "
+                 "shell (sec. 5.2.7, fig. 5.21/5.22: overlapping mesh particles, a bumpy surface "
+                 "that grips the charge); ours is a flat triangle mesh with the ps friction 0.32, "
+                 "so this case is not a like-for-like reproduction of fig. 6.13."
+                 % (min(r["vt"] for r in smo), max(r["vt"] for r in smo), smo[0]["speed"] * WC * RM))
     o.append("- **Low-solidicity ring at the shell.** As in all of the thesis's porosity plots "
              "(sec. 6.2: lifters sweep the outer voxels and the round mill cuts the square "
              "voxels), the outer ring reads porous; also here solidicity is the raw time average "
@@ -332,7 +339,9 @@ def write_doc(res, docdir):
                  % (r["tag"], r["natoms"], r["steps"], r["loop"],
                     r["natoms"] * r["steps"] / r["loop"], r["secs"], r["ovl"]))
     tot = sum(r["secs"] for r in res)
-    o.append("\nTotal %d s on this machine (2 cores shared with other sessions). The full mill "
+    o.append("\nWall times sum to %d s on this machine (2 cores shared with other sessions; for "
+             "this page mill_07 and mill_08 ran at the same time, and the three smooth runs "
+             "together, `MILL_JOBS`, so their rates share the cores). The full mill "
              "(%d beads, 0.27 m) at the thesis's 1e-6 s step would need about %.1e particle-steps "
              "per speed (4 revolutions at 70 %%).\n" % (tot, n_full, n_full * 4 * 2 * math.pi / (0.7 * WC) / 1e-6))
     o.append("## Not done\n")
@@ -343,6 +352,9 @@ def write_doc(res, docdir):
     o.append("- A point-by-point numeric comparison with fig. 6.7-6.12: the thesis's figures "
              "are images without tabulated values; the comparison above uses the numbers its "
              "text states.\n")
+    if any(r["kind"] == "smooth" for r in res):
+        o.append("- Fig. 6.13 like for like: its particle-represented (bumpy) shell; the smooth "
+                 "runs here are shorter (1.5 + 0.5 revolutions).\n")
     if not any(r["kind"] == "smooth" for r in res):
         o.append("- Fig. 6.13's smooth mill at 50 % with friction 0.42-0.46: the script has it "
                  "(`MILL_SMOOTH=1 make reproduce-mill`) but it was not run for this page.\n")
