@@ -239,17 +239,21 @@ def write_doc(res, docdir):
              "restitution and speed.\n" % (100 * min(r["ovl"] for r in res), 100 * max(r["ovl"] for r in res)))
     o.append("- **Shorter runs.** %s revolutions to steady state (the thesis: \"steady state ... "
              "after about 2 revolutions\", it ran 3) and %s revolution(s) averaged, sampled every "
-             "50 steps (3 ms).\n" % (res[0]["settle"] if res else "?", res[0]["ave"] if res else "?"))
+             "50 steps (3 ms)%s.\n"
+             % (res[0]["settle"] if res else "?", res[0]["ave"] if res else "?",
+                "".join("; %s: %s + %s" % (r["tag"], r["settle"], r["ave"]) for r in res
+                        if (r["settle"], r["ave"]) != (res[0]["settle"], res[0]["ave"]))))
     o.append("- **Filling.** `create_atoms random` inside the lifter tips with `overlap 0.003` and "
              "`mesh mill 0.0015` (no bead within a radius of a triangle), then the beads fall as "
              "the mill starts (the thesis stacks HCP layers from the bottom, read from a file). "
              "The fall is part of the settling revolutions.\n")
     o.append("- **Lifters.** The text gives the 300 mm mill's profile only as 259 points and 259 "
-             "lines (sec. 5.2.7) and shows its pilot mill mesh of fig. 5.13/5.14: 12 lifters, each "
-             "three flat faces on a flat shell segment (96 triangles = 48 profile segments = 12 x 4). "
+             "lines (sec. 5.2.7); for a 120 mm pilot mill it describes the mesh (fig. 5.13/5.14): "
+             "12 lifters, each three flat faces on a flat shell segment (96 triangles = 48 profile segments = 12 x 4). "
              "tools/mill/mill_stl.py keeps that form: 12 trapezoidal bars, 12 mm high, 20 mm base "
              "and 10 mm top (our choice: the figures carry no dimensions), on a round shell of 18 "
-             "facets per arc (252 profile segments, 504 triangles, close to the thesis's 259).\n")
+             "facets per arc (252 profile segments, 504 triangles; the thesis's 300 mm profile has "
+             "259 lines).\n")
     o.append("- **Shell contact.** fix wall/pair on the mesh with hertz/mindlin's per-type-pair "
              "material (pair_coeff 1 2: the ps values), the mesh's surface velocity from fix "
              "move/mesh rotate.\n")
