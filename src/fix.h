@@ -83,6 +83,10 @@ struct fix_style {
      * *rmax to their largest radius (see header comment) */
     int (*reserve)(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);
     void (*destroy)(struct fix *f);                                /* optional */
+    /* Optional: LAMMPS's Fix::setup, called once per run after the setup
+     * force computation (step 0 of the run, forces current) and before the
+     * first thermo line; independent of the hook bits. */
+    void (*setup)(struct gravel *g, struct fix *f);
     /* Restart files (restart.c), optional: global state of the instance as
      * bytes. write_restart stores at most cap bytes at buf and returns the
      * size (called with buf NULL to ask the size). read_restart gets exactly

@@ -343,6 +343,9 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     e->st.nbuilds = 0;
     if (resumed < 2)
         compute_forces(g, freezebit, 1, &tp, &tm);
+    for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
+        if (g->styles.fix[i]->style->setup)
+            g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
     e->setup = 0;
     double maxov = nbr_max_overlap(g);
     output_setup(g);
