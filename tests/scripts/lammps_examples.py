@@ -46,7 +46,6 @@ DECKS = [
 
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
-    "pour/in.pour": "unknown fix style 'pour'",
     "pour/in.pour.2d": "2d simulations are not supported",
     "pour/in.pour.2d.molecule": "2d simulations are not supported",
     "granular/in.pour.drum": "unknown command 'change_box'",
