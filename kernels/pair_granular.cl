@@ -267,12 +267,12 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
 #endif
         return;
     }
-    const REAL r = sqrt(rsq), rinv = (REAL)1.0 / r;
+    const REAL r = c->r, rinv = (REAL)1.0 / r; /* c->r, c->delta: refined in single */
     const REAL3 n = (REAL3)(c->del.x * rinv, c->del.y * rinv, c->del.z * rinv);
     const REAL3 vr = c->vr;
     const REAL vnnr = vr.x * n.x + vr.y * n.y + vr.z * n.z;
     const REAL meff = c->meff;
-    const REAL delta = radsum - r, dR = delta * Reff;
+    const REAL delta = c->delta, dR = delta * Reff;
 
     /* normal */
     REAL Fne, knfac, a;
