@@ -91,9 +91,17 @@ struct regions {
 
 /* ---- neighbor and run settings -------------------------------------------- */
 
+enum neigh_style { NEIGH_BIN = 1, NEIGH_MULTI = 2 };
+#define GR_MAXCOLL 64
+#define GR_MAXCOLL_RANGE 256
 struct neigh_settings {
     double skin;
-    int style_bin;          /* neighbor ... bin (only style) */
+    int style;              /* NEIGH_BIN or NEIGH_MULTI (neighbor skin bin|multi) */
+    /* neighbor multi collections (neigh_modify collection/type|interval);
+     * ncoll 0: one collection per atom type */
+    int ncoll, coll_interval;
+    double coll_cut[GR_MAXCOLL];        /* collection/interval: upper diameters, ascending */
+    int ncoll_range, coll_range[GR_MAXCOLL_RANGE][3]; /* collection/type: types lo..hi -> coll */
     int every, delay, check, once;
     bigint sort_every;      /* atom_modify sort: re-sort period in steps (< 0: every rebuild, 0: never) */
     int one, page;          /* capacity hints (neigh_modify one/page) */
