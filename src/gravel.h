@@ -75,10 +75,18 @@ struct atoms {
 
 /* ---- groups ---------------------------------------------------------------- */
 
+/* group ID dynamic parent [region R] [var V] [every N]: membership is
+ * re-evaluated at the start of each run and every N steps (group.c) */
+struct group_dyn {
+    int on, parent, every;
+    char region[GR_NAMELEN], var[GR_NAMELEN];
+};
+
 struct groups {
     int n;                  /* slots in use (0 = "all" always) */
     char name[GR_MAXGROUP][GR_NAMELEN];
     int used[GR_MAXGROUP];
+    struct group_dyn dyn[GR_MAXGROUP];
 };
 
 /* ---- regions --------------------------------------------------------------- */

@@ -25,6 +25,7 @@
 #include "error.h"
 #include "input.h"
 #include "fix.h"
+#include "group.h"
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"
@@ -293,6 +294,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     e->setup = 1;
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
     int resumed = restart_resume(g);
+    group_dynamic_update(g, -1); /* dynamic groups at setup */
     if (resumed < 1)
         nbr_rebuild(g);
     e->st.nbuilds = 0;
@@ -323,6 +325,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             eng_finish(g);
         double a1 = wall();
         int rebuild = nbr_decide(g);
+        group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */
         if (rebuild) {
             nbr_rebuild(g);
             eng_finish(g);

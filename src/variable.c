@@ -400,6 +400,24 @@ void var_compute_atom(struct gravel *g, const char *name, double *out)
     var_compute_atom_depth(g, name, out, 0);
 }
 
+double *var_atom_values(struct gravel *g, const char *name)
+{
+    double *v = gr_malloc(g, ((size_t)g->atoms.n + 1) * sizeof *v);
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        free(v);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    var_compute_atom(g, name, v);
+    g->err.jmp = outer;
+    return v;
+}
+
 void var_check_atom(struct gravel *g, const char *name, const char *who)
 {
     struct var *v = find(g, name);

@@ -36,6 +36,8 @@ double var_compute_equal(struct gravel *g, const char *name);
 int var_is_atom(struct gravel *g, const char *name);
 void var_compute_atom(struct gravel *g, const char *name, double *out);
 void var_check_atom(struct gravel *g, const char *name, const char *who);
+/* The same values in a new array (caller frees; freed on error). */
+double *var_atom_values(struct gravel *g, const char *name);
 /* Print every variable (name, style, value) with gr_print, for `info`. */
 void var_print_all(struct gravel *g);
 /* Number of defined variables. */
