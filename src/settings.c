@@ -206,8 +206,9 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
                 add_exclusion(g, ns.exclude_group, &ns.nexclude, a, b);
                 i += 2;
             } else {
-                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none",
-                         how);
+                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none "
+                            "(molecule/intra and molecule/inter need molecule IDs, which "
+                            "gravel does not have yet)", how);
             }
         } else if (!strcmp(kw, "collection/interval")) {
             i = collection_interval(g, &ns, argc, argv, i);
