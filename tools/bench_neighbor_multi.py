@@ -8,7 +8,7 @@ atoms); ratio 50, one of diameter 10 in an 11^3 box (100000 atoms).
 `neigh_modify every 1 delay 0 check no` rebuilds the list every step for
 `run N`. Prints, per style: atoms, neighbors (the list total),
 builds, Neigh seconds and seconds per build.
-Usage: tools/bench_neighbor_multi.py [steps]  (default 1)
+Usage: tools/bench_neighbor_multi.py [steps [styles]]  (default 1, "bin,multi")
 """
 import os
 import re
@@ -53,9 +53,10 @@ def deck(ratio, style, steps):
 
 def main():
     steps = int(sys.argv[1]) if len(sys.argv) > 1 else 1
+    styles = sys.argv[2].split(",") if len(sys.argv) > 2 else ["bin", "multi"]
     print("ratio style   atoms  neighbors builds  Neigh_s  s/build")
     for ratio in (10, 50):
-        for style in ("bin", "multi"):
+        for style in styles:
             with tempfile.TemporaryDirectory() as d:
                 with open(os.path.join(d, "in.deck"), "w") as f:
                     f.write(deck(ratio, style, steps))
