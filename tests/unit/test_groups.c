@@ -38,19 +38,12 @@ TEST(group_styles)
     CHECK(count(g, "uni") == 37 && count(g, "both") == 5);
     /* atom-style variables: a static group of x < 2 and type == 2 (the low half has type 2,
      * z < 1.5), and a dynamic one (set at run setup: empty until a run) */
-    CHECK(test_script(g, "variable v atom (x<2)*(type==2)
-group var variable v
-"
-                         "group dyn dynamic all var v every 10
-") == GR_OK);
+    CHECK(test_script(g, "variable v atom (x<2)*(type==2)\ngroup var variable v\n"
+                         "group dyn dynamic all var v every 10\n") == GR_OK);
     CHECK(count(g, "var") == 16 && count(g, "dyn") == 0);
-    CHECK(test_script(g, "group var type 1
-") == GR_OK);
-    CHECK(test_script(g, "group dyn type 1
-") != GR_OK);
-    CHECK(test_script(g, "group dyn static
-group dyn type 1
-") == GR_OK);
+    CHECK(test_script(g, "group var type 1\n") == GR_OK);
+    CHECK(test_script(g, "group dyn type 1\n") != GR_OK);
+    CHECK(test_script(g, "group dyn static\ngroup dyn type 1\n") == GR_OK);
     CHECK(count(g, "var") == 48 && count(g, "dyn") == 32);
     /* assigning again adds atoms; delete frees the slot and the bits */
     CHECK(test_script(g, "group few id 10\n") == GR_OK);
