@@ -309,14 +309,69 @@ static inline int row_ranges(__global const int *start, const int rowbase, const
     return r;
 }
 
-/* Full Verlet list with skin, each row in ascending partner tag: j is a
- * neighbor of i when |x_i - x_j| < radi + radj + skin (LAMMPS size lists),
- * j != i, and the pair is not excluded (type table, group bit pairs).
- * nown[i] counts the partners of higher tag: the contacts i owns, the last
- * nown[i] entries of its row. Cells list their atoms in cellatoms (or, after
- * a re-sort, are contiguous index ranges: sorted = 1). Slots beyond maxn are
- * counted but not written: flags[2] receives the largest count so the host
- * can grow and rebuild. */
+/* The pair test of every list build: j is a neighbor of i when
+ * |x_i - x_j| < radi + radj + skin (LAMMPS size lists; with cohesion the
+ * effect surfaces), j != i, and the pair is not excluded (type table, group
+ * bit pairs). Both list styles (bin, multi) accept exactly these pairs. */
+static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const int ti,
+                             const uint mi, const int j, __global const REAL *x,
+                             __global const REAL *radius, __global const int *type,
+                             __global const uint *mask, const REAL Lx, const REAL Ly,
+                             const REAL Lz, const REAL skin, const int ntypes,
+                             __global const int *excl_type, const int nexg,
+                             __global const uint *excl_group)
+{
+    if (j == i)
+        return 0;
+    REAL3 del = xi - vload3(j, x);
+    del.x = MINIMG_X(del.x, Lx);
+    del.y = MINIMG_Y(del.y, Ly);
+    del.z = MINIMG_Z(del.z, Lz);
+    const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+    const REAL radsum = radi + radius[j];
+#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+    const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
+#else
+    const REAL cut = radsum + skin;
+#endif
+    if (rsq >= cut * cut)
+        return 0;
+    if (excl_type[(ti - 1) * ntypes + type[j] - 1])
+        return 0;
+    const uint mj = mask[j];
+    for (int q = 0; q < nexg; q++) {
+        const uint g1 = excl_group[2 * q], g2 = excl_group[2 * q + 1];
+        if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
+            return 0;
+    }
+    return 1;
+}
+
+/* Insert partner j into row (cnt entries, capacity maxn) in ascending tag
+ * order; a full row only counts. The row's content and order depend on the
+ * set of partners only, never on the order in which they were found. */
+static inline void nbr_row_insert(__global int *row, int *cnt, int *own, const int maxn,
+                                  __global const long *tag, const int j, const long tagi)
+{
+    const long tj = tag[j];
+    if (*cnt < maxn) {
+        int p = *cnt;
+        while (p > 0 && tag[row[p - 1]] > tj) {
+            row[p] = row[p - 1];
+            p--;
+        }
+        row[p] = j;
+    }
+    *own += tj > tagi;
+    (*cnt)++;
+}
+
+/* Full Verlet list with skin, each row in ascending partner tag (pairs of
+ * nbr_accept). nown[i] counts the partners of higher tag: the contacts i
+ * owns, the last nown[i] entries of its row. Cells list their atoms in
+ * cellatoms (or, after a re-sort, are contiguous index ranges: sorted = 1).
+ * Slots beyond maxn are counted but not written: flags[2] receives the
+ * largest count so the host can grow and rebuild. */
 __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL *radius,
                         __global const int *type, __global const uint *mask,
                         __global const long *tag, __global const int *start,
@@ -354,47 +409,201 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 const int s = rlo[e], t = rhi[e];
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
-                    if (j == i)
-                        continue;
-                    REAL3 del = xi - vload3(j, x);
-                    del.x = MINIMG_X(del.x, Lx);
-                    del.y = MINIMG_Y(del.y, Ly);
-                    del.z = MINIMG_Z(del.z, Lz);
-                    const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
-                    const REAL radsum = radi + radius[j];
-#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
-                    const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
-#else
-                    const REAL cut = radsum + skin;
-#endif
-                    if (rsq >= cut * cut)
-                        continue;
-                    if (excl_type[(ti - 1) * ntypes + type[j] - 1])
-                        continue;
-                    const uint mj = mask[j];
-                    int excluded = 0;
-                    for (int q = 0; q < nexg; q++) {
-                        const uint g1 = excl_group[2 * q], g2 = excl_group[2 * q + 1];
-                        if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
-                            excluded = 1;
-                    }
-                    if (excluded)
-                        continue;
-                    const long tj = tag[j];
-                    if (cnt < maxn) {
-                        /* insert in tag order (rows are short) */
-                        int p = cnt;
-                        while (p > 0 && tag[row[p - 1]] > tj) {
-                            row[p] = row[p - 1];
-                            p--;
-                        }
-                        row[p] = j;
-                    }
-                    own += tj > tagi;
-                    cnt++;
+                    if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
+                                   skin, ntypes, excl_type, nexg, excl_group))
+                        nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
         }
+    ncount[i] = cnt < maxn ? cnt : maxn;
+    nown[i] = own;
+    atomic_max(&flags[2], cnt);
+}
+
+/* ---- neighbor multi: one cell grid per collection ------------------------
+ * Collection c has its own grid (mgrid[4c ..] = nx, ny, nz, first global
+ * cell; minv[3c ..] = cells per unit length); the grids are numbered one
+ * after another, so one counting sort orders the atoms by collection, then
+ * by cell. An atom of collection a looks for partners of collection b in
+ * the cells of b's grid within cutab[a ncoll + b] (a bound of the pair
+ * cut-off of any a-b pair, skin included), then applies the same pair test
+ * as style bin: the same pairs, in the same (tag) order. */
+
+/* Collection of an atom: type2coll[type - 1], or with ninterval cut-offs
+ * (collection/interval) the first whose upper diameter is >= 2 radius;
+ * -1 when none is. */
+static inline int nbr_collection(const int ti, const REAL radi, const int ninterval,
+                                 __global const REAL *collcut, __global const int *type2coll)
+{
+    if (ninterval == 0)
+        return type2coll[ti - 1];
+    const REAL d = 2 * radi;
+    for (int k = 0; k < ninterval; k++)
+        if (collcut[k] >= d)
+            return k;
+    return -1;
+}
+
+/* Cells of one dimension within [u - cut, u + cut] (u from the box's lower
+ * face, s cells per unit length): up to 2 index ranges lo..hi (2 when a
+ * periodic range wraps), or every cell once when the range covers them
+ * all. Returns the number of ranges. */
+static inline int span(const REAL u, const REAL cut, const REAL s, const int nc,
+                       const int periodic, int lo[2], int hi[2])
+{
+    int a = (int)floor((u - cut) * s), b = (int)floor((u + cut) * s);
+    if (b - a + 1 >= nc) {
+        lo[0] = 0;
+        hi[0] = nc - 1;
+        return 1;
+    }
+    if (!periodic) {
+        a = max(a, 0);
+        b = min(b, nc - 1);
+        if (a > b)
+            return 0;
+        lo[0] = a;
+        hi[0] = b;
+        return 1;
+    }
+    if (a < 0) {
+        lo[0] = a + nc;
+        hi[0] = nc - 1;
+        lo[1] = 0;
+        hi[1] = b;
+        return 2;
+    }
+    if (b >= nc) {
+        lo[0] = a;
+        hi[0] = nc - 1;
+        lo[1] = 0;
+        hi[1] = b - nc;
+        return 2;
+    }
+    lo[0] = a;
+    hi[0] = b;
+    return 1;
+}
+
+/* Global cell of each atom (its collection's grid); atoms outside a
+ * non-periodic face go to the sentinel cell ncell (lost). An atom in no
+ * collection sets flags[1] = min(flags[1], its index). counts[] must be
+ * zero on entry. */
+__kernel void nbr_bin_multi(const int n, __global const REAL *x, __global const REAL *radius,
+                            __global const int *type, const int ninterval,
+                            __global const REAL *collcut, __global const int *type2coll,
+                            __global const int *mgrid, __global const REAL *minv,
+                            const int ncell, const REAL lox, const REAL loy, const REAL loz,
+                            const REAL hix, const REAL hiy, const REAL hiz,
+                            __global int *cellof, __global int *counts, __global int *flags)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const int col = nbr_collection(type[i], radius[i], ninterval, collcut, type2coll);
+    int c = ncell;
+    if (col < 0) {
+        atomic_min(&flags[1], i);
+    } else if (xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
+               xi.z < hiz) {
+        const int nx = mgrid[4 * col], ny = mgrid[4 * col + 1], nz = mgrid[4 * col + 2];
+        const int cx = clamp((int)((xi.x - lox) * minv[3 * col]), 0, nx - 1);
+        const int cy = clamp((int)((xi.y - loy) * minv[3 * col + 1]), 0, ny - 1);
+        const int cz = clamp((int)((xi.z - loz) * minv[3 * col + 2]), 0, nz - 1);
+        c = mgrid[4 * col + 3] + (cz * ny + cy) * nx + cx;
+    }
+    cellof[i] = c;
+    atomic_inc(&counts[c]);
+}
+
+/* Append partner j to row (unsorted; nbr_row_sort orders it); a full row
+ * only counts. */
+static inline void nbr_row_append(__global int *row, int *cnt, int *own, const int maxn,
+                                  __global const long *tag, const int j, const long tagi)
+{
+    if (*cnt < maxn)
+        row[*cnt] = j;
+    *own += tag[j] > tagi;
+    (*cnt)++;
+}
+
+/* Order a row by partner tag: Shell sort (Ciura's gaps, then insertion),
+ * O(k^1.3) for the long rows of large spheres where insertion on append
+ * is O(k^2). Tags are unique, so the order is the one of nbr_row_insert. */
+static inline void nbr_row_sort(__global int *row, const int cnt, __global const long *tag)
+{
+    const int gaps[8] = {701, 301, 132, 57, 23, 10, 4, 1};
+    for (int q = 0; q < 8; q++) {
+        const int gap = gaps[q];
+        for (int a = gap; a < cnt; a++) {
+            const int ja = row[a];
+            const long ta = tag[ja];
+            int b = a;
+            while (b >= gap && tag[row[b - gap]] > ta) {
+                row[b] = row[b - gap];
+                b -= gap;
+            }
+            row[b] = ja;
+        }
+    }
+}
+
+/* The full list of style multi: rows, counts and flags as nbr_build (rows
+ * appended, then sorted by partner tag). */
+__kernel void nbr_build_multi(const int n, __global const REAL *x, __global const REAL *radius,
+                              __global const int *type, __global const uint *mask,
+                              __global const long *tag, __global const int *start,
+                              __global const int *cellatoms, const int sorted, const int ncoll,
+                              const int ninterval, __global const REAL *collcut,
+                              __global const int *type2coll, __global const int *mgrid,
+                              __global const REAL *minv, __global const REAL *cutab,
+                              const int px, const int py, const int pz, const REAL lox,
+                              const REAL loy, const REAL loz, const REAL Lx, const REAL Ly,
+                              const REAL Lz, const REAL skin, const int maxn,
+                              __global int *nlist, __global int *ncount, __global int *nown,
+                              __global int *flags, const int ntypes,
+                              __global const int *excl_type, const int nexg,
+                              __global const uint *excl_group)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const REAL radi = radius[i];
+    const int ti = type[i];
+    const uint mi = mask[i];
+    const long tagi = tag[i];
+    const int ca = nbr_collection(ti, radi, ninterval, collcut, type2coll);
+    __global int *row = nlist + (size_t)i * maxn;
+    int cnt = 0, own = 0;
+    for (int cb = 0; cb < ncoll && ca >= 0; cb++) {
+        const REAL cut = cutab[ca * ncoll + cb];
+        const int nx = mgrid[4 * cb], ny = mgrid[4 * cb + 1], nz = mgrid[4 * cb + 2];
+        const int base = mgrid[4 * cb + 3];
+        int xl[2], xh[2], yl[2], yh[2], zl[2], zh[2];
+        const int nxr = span(xi.x - lox, cut, minv[3 * cb], nx, px, xl, xh);
+        const int nyr = span(xi.y - loy, cut, minv[3 * cb + 1], ny, py, yl, yh);
+        const int nzr = span(xi.z - loz, cut, minv[3 * cb + 2], nz, pz, zl, zh);
+        for (int a = 0; a < nzr; a++)
+            for (int cz = zl[a]; cz <= zh[a]; cz++)
+                for (int b = 0; b < nyr; b++)
+                    for (int cy = yl[b]; cy <= yh[b]; cy++) {
+                        const int rowbase = base + (cz * ny + cy) * nx;
+                        for (int e = 0; e < nxr; e++) {
+                            const int s = start[rowbase + xl[e]], t = start[rowbase + xh[e] + 1];
+                            for (int jj = s; jj < t; jj++) {
+                                const int j = sorted ? jj : cellatoms[jj];
+                                if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
+                                               Lx, Ly, Lz, skin, ntypes, excl_type, nexg,
+                                               excl_group))
+                                    nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
+                            }
+                        }
+                    }
+    }
+    if (cnt <= maxn) /* an overflowing row is built again, larger */
+        nbr_row_sort(row, cnt, tag);
     ncount[i] = cnt < maxn ? cnt : maxn;
     nown[i] = own;
     atomic_max(&flags[2], cnt);

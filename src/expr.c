@@ -9,14 +9,17 @@
  * arrays, per-atom values x[ID] ..., constants (PI, version, on/off, yes/no,
  * true/false), v_name, and anything thermo_keyword_value() knows (step, atoms,
  * c_ID, c_ID[n], f_ID[n], ...). Errors quote the expression and never leave
- * state behind: the parser allocates nothing. */
+ * state behind: the parser allocates nothing, except the per-atom columns of
+ * expr_eval_atoms, freed on every exit. */
 #include <ctype.h>
+#include <setjmp.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "atoms.h"
+#include "compute.h"
 #include "error.h"
 #include "group.h"
 #include "output.h"
@@ -27,11 +30,34 @@
                              * references together: bounds the C stack */
 #define BIG 1.0e20
 
+/* Per-atom evaluation (expr_eval_atoms): the formula is parsed once per
+ * atom, in atom order. The parse visits the same operands in the same order
+ * for every atom (no short circuit), so operand k's resolution is made at
+ * the first atom and kept in slot k: a global value (group function, thermo
+ * keyword, v_ of an equal-style variable, x[ID]: evaluated once, as LAMMPS
+ * does), or a per-atom column (c_ID of a per-atom compute, v_ of an
+ * atom-style variable: computed once for all atoms). */
+struct aslot {
+    const double *col;      /* per-atom column (NULL: global value s) */
+    int stride;
+    double s;
+    double *owned;          /* the column when this slot computed it */
+};
+
+struct actx {
+    int i;                  /* current atom (host index) */
+    int first;              /* the first atom: slots are being made */
+    int k;                  /* next slot */
+    int n, cap;
+    struct aslot *slot;
+};
+
 struct ep {
     struct gravel *g;
     const char *text;       /* whole expression, for messages */
     const char *p;          /* cursor */
     int depth;              /* current nesting, including enclosing v_name evaluations */
+    struct actx *ax;        /* per-atom evaluation, else NULL */
 };
 
 static double parse_or(struct ep *e);
@@ -69,6 +95,34 @@ static void enter(struct ep *e)
     if (++e->depth > MAXDEPTH)
         ep_fail(e, "nesting deeper than 200 levels (parentheses, unary operators and "
                    "v_name references together; do variables refer to each other in a cycle?)");
+}
+
+/* The next operand slot of a per-atom evaluation: made at the first atom
+ * (*made = 1: the caller fills it), read back at the others. */
+static struct aslot *next_slot(struct ep *e, int *made)
+{
+    struct actx *a = e->ax;
+    *made = a->first;
+    if (a->first) {
+        if (a->n == a->cap) {
+            int cap = a->cap ? 2 * a->cap : 8;
+            struct aslot *ns = realloc(a->slot, (size_t)cap * sizeof *ns);
+            if (!ns)
+                ep_fail(e, "out of memory");
+            a->slot = ns;
+            a->cap = cap;
+        }
+        memset(&a->slot[a->n], 0, sizeof *a->slot);
+        a->n++;
+    }
+    if (a->k >= a->n)
+        ep_fail(e, "internal error: per-atom operands out of step");
+    return &a->slot[a->k++];
+}
+
+static double slot_value(const struct ep *e, const struct aslot *s)
+{
+    return s->col ? s->col[(size_t)s->stride * e->ax->i] : s->s;
 }
 
 /* ---- group and atom functions ---------------------------------------------- */
@@ -174,6 +228,24 @@ static int is_atom_value(const char *name)
     return 0;
 }
 
+/* Value `name` (is_atom_value) of host atom i. */
+static double own_value(const struct atoms *a, const char *name, int i)
+{
+    if (!strcmp(name, "x") || !strcmp(name, "y") || !strcmp(name, "z"))
+        return a->x[3 * i + (name[0] - 'x')];
+    if (name[0] == 'v' && name[1])
+        return a->v[3 * i + (name[1] - 'x')];
+    if (name[0] == 'f' && name[1])
+        return a->f[3 * i + (name[1] - 'x')];
+    if (!strcmp(name, "radius"))
+        return a->radius[i];
+    if (!strcmp(name, "mass"))
+        return atom_mass(a, i);
+    if (!strcmp(name, "type"))
+        return a->type[i];
+    return (double)a->tag[i]; /* id */
+}
+
 static double atom_value(struct ep *e, const char *name, double idv)
 {
     struct gravel *g = e->g;
@@ -190,19 +262,7 @@ static double atom_value(struct ep *e, const char *name, double idv)
         snprintf(msg, sizeof msg, "atom ID %lld in %s[] does not exist", (long long)tag, name);
         ep_fail(e, msg);
     }
-    if (!strcmp(name, "x") || !strcmp(name, "y") || !strcmp(name, "z"))
-        return a->x[3 * i + (name[0] - 'x')];
-    if (name[0] == 'v' && name[1])
-        return a->v[3 * i + (name[1] - 'x')];
-    if (name[0] == 'f' && name[1])
-        return a->f[3 * i + (name[1] - 'x')];
-    if (!strcmp(name, "radius"))
-        return a->radius[i];
-    if (!strcmp(name, "mass"))
-        return atom_mass(a, i);
-    if (!strcmp(name, "type"))
-        return a->type[i];
-    return (double)a->tag[i]; /* id */
+    return own_value(a, name, i);
 }
 
 /* ---- math functions --------------------------------------------------------- */
@@ -408,7 +468,21 @@ static double parse_primary(struct ep *e)
     if (name[0] == 'v' && name[1] == '_' && name[2]) {
         if (*e->p == '[')
             ep_fail(e, "vector variables v_name[i] are not supported");
-        return var_compute_equal_depth(e->g, name + 2, e->depth + 1);
+        if (!e->ax)
+            return var_compute_equal_depth(e->g, name + 2, e->depth + 1);
+        int made;
+        struct aslot *sl = next_slot(e, &made);
+        if (made && var_is_atom(e->g, name + 2)) {
+            sl->owned = malloc(((size_t)e->g->atoms.n + 1) * sizeof(double));
+            if (!sl->owned)
+                ep_fail(e, "out of memory");
+            var_compute_atom_depth(e->g, name + 2, sl->owned, e->depth + 1);
+            sl->col = sl->owned;
+            sl->stride = 1;
+        } else if (made) {
+            sl->s = var_compute_equal_depth(e->g, name + 2, e->depth + 1);
+        }
+        return slot_value(e, sl);
     }
     /* c_ID, c_ID[n], f_ID[n]: served by the output module */
     if ((name[0] == 'c' || name[0] == 'f') && name[1] == '_' && name[2]) {
@@ -425,10 +499,36 @@ static double parse_primary(struct ep *e)
         memcpy(ref, start, n);
         ref[n] = '\0';
         double out;
+        struct aslot *sl = NULL;
+        if (e->ax) {
+            int made;
+            sl = next_slot(e, &made);
+            if (!made)
+                return slot_value(e, sl);
+            char id[GR_NAMELEN];
+            int index = 0;
+            struct compute *c = name[0] == 'c' && compute_parse_ref(ref, id, &index)
+                                    ? compute_find(e->g, id) : NULL;
+            if (c && c->peratom_flag) {
+                int stride = 1, na = e->g->atoms.n;
+                const double *col = compute_peratom_ref(e->g, c, index, &stride,
+                                                        "atom-style variable");
+                sl->owned = malloc(((size_t)na + 1) * sizeof(double));
+                if (!sl->owned)
+                    ep_fail(e, "out of memory");
+                for (int i = 0; i < na; i++) /* a copy: the compute's buffer is reused */
+                    sl->owned[i] = col[(size_t)stride * i];
+                sl->col = sl->owned;
+                sl->stride = 1;
+                return slot_value(e, sl);
+            }
+        }
         if (!thermo_keyword_value(e->g, ref, &out)) {
             snprintf(msg, sizeof msg, "unknown %s '%s'", name[0] == 'c' ? "compute" : "fix", ref);
             ep_fail(e, msg);
         }
+        if (sl)
+            sl->s = out;
         return out;
     }
     skip_ws(e);
@@ -438,6 +538,13 @@ static double parse_primary(struct ep *e)
         if (is_group_function(name)) {
             char args[3][GR_NAMELEN];
             int n = parse_word_args(e, args, 3);
+            if (e->ax) {
+                int made;
+                struct aslot *sl = next_slot(e, &made);
+                if (made)
+                    sl->s = group_function(e, name, n, args);
+                return slot_value(e, sl);
+            }
             v = group_function(e, name, n, args);
         } else {
             double a[3] = {0, 0, 0};
@@ -465,8 +572,17 @@ static double parse_primary(struct ep *e)
         double id = parse_or(e);
         if (!accept(e, "]"))
             ep_fail(e, "missing ']'");
+        if (e->ax) {
+            int made;
+            struct aslot *sl = next_slot(e, &made);
+            if (made)
+                sl->s = atom_value(e, name, id);
+            return slot_value(e, sl);
+        }
         return atom_value(e, name, id);
     }
+    if (e->ax && is_atom_value(name))
+        return own_value(&e->g->atoms, name, e->ax->i);
     if (!strcmp(name, "PI"))
         return 3.14159265358979323846;
     if (!strcmp(name, "version"))
@@ -476,8 +592,18 @@ static double parse_primary(struct ep *e)
     if (!strcmp(name, "off") || !strcmp(name, "no") || !strcmp(name, "false"))
         return 0;
     double out;
-    if (thermo_keyword_value(e->g, name, &out))
+    struct aslot *sl = NULL;
+    if (e->ax) {
+        int made;
+        sl = next_slot(e, &made);
+        if (!made)
+            return slot_value(e, sl);
+    }
+    if (thermo_keyword_value(e->g, name, &out)) {
+        if (sl)
+            sl->s = out;
         return out;
+    }
     if (is_atom_value(name))
         snprintf(msg, sizeof msg, "'%s' needs an atom ID: %s[ID]", name, name);
     else
@@ -606,21 +732,61 @@ static double parse_or(struct ep *e)
     return v;
 }
 
-double expr_eval_depth(struct gravel *g, const char *text, int depth)
+static double eval_one(struct ep *e)
 {
-    struct ep e = {g, text, text, depth};
-    enter(&e);
-    skip_ws(&e);
-    if (*e.p == '\0')
-        ep_fail(&e, "empty expression");
-    double v = parse_or(&e);
-    skip_ws(&e);
-    if (*e.p != '\0') {
+    enter(e);
+    skip_ws(e);
+    if (*e->p == '\0')
+        ep_fail(e, "empty expression");
+    double v = parse_or(e);
+    skip_ws(e);
+    if (*e->p != '\0') {
         char msg[120];
-        snprintf(msg, sizeof msg, "unexpected '%.20s' after a complete value", e.p);
-        ep_fail(&e, msg);
+        snprintf(msg, sizeof msg, "unexpected '%.20s' after a complete value", e->p);
+        ep_fail(e, msg);
     }
     return v;
+}
+
+static void actx_free(struct actx *a)
+{
+    for (int k = 0; k < a->n; k++)
+        free(a->slot[k].owned);
+    free(a->slot);
+    free(a);
+}
+
+void expr_eval_atoms(struct gravel *g, const char *text, double *out, int depth)
+{
+    run_sync_host(g);
+    struct actx *volatile a = calloc(1, sizeof *a);
+    if (!a)
+        gr_error(g, "out of memory");
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) { /* free the columns, pass the error on */
+        g->err.jmp = outer;
+        actx_free(a);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    for (int i = 0; i < g->atoms.n; i++) {
+        a->i = i;
+        a->first = i == 0;
+        a->k = 0;
+        struct ep e = {g, text, text, depth, a};
+        out[i] = eval_one(&e);
+    }
+    g->err.jmp = outer;
+    actx_free(a);
+}
+
+double expr_eval_depth(struct gravel *g, const char *text, int depth)
+{
+    struct ep e = {g, text, text, depth, NULL};
+    return eval_one(&e);
 }
 
 double expr_eval(struct gravel *g, const char *text)

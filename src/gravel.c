@@ -39,7 +39,7 @@ static void set_defaults(struct gravel *g)
     g->neigh.check = 1;
     g->neigh.one = 2000;
     g->neigh.page = 100000;
-    g->neigh.style_bin = 1;
+    g->neigh.style = NEIGH_BIN;
     g->neigh.sort_every = -1;
     g->thermo.lost = LOST_ERROR;
     g->groups.n = 1;

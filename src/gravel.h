@@ -75,10 +75,18 @@ struct atoms {
 
 /* ---- groups ---------------------------------------------------------------- */
 
+/* group ID dynamic parent [region R] [var V] [every N]: membership is
+ * re-evaluated at the start of each run and every N steps (group.c) */
+struct group_dyn {
+    int on, parent, every;
+    char region[GR_NAMELEN], var[GR_NAMELEN];
+};
+
 struct groups {
     int n;                  /* slots in use (0 = "all" always) */
     char name[GR_MAXGROUP][GR_NAMELEN];
     int used[GR_MAXGROUP];
+    struct group_dyn dyn[GR_MAXGROUP];
 };
 
 /* ---- regions --------------------------------------------------------------- */
@@ -91,9 +99,17 @@ struct regions {
 
 /* ---- neighbor and run settings -------------------------------------------- */
 
+enum neigh_style { NEIGH_BIN = 1, NEIGH_MULTI = 2 };
+#define GR_MAXCOLL 64
+#define GR_MAXCOLL_RANGE 256
 struct neigh_settings {
     double skin;
-    int style_bin;          /* neighbor ... bin (only style) */
+    int style;              /* NEIGH_BIN or NEIGH_MULTI (neighbor skin bin|multi) */
+    /* neighbor multi collections (neigh_modify collection/type|interval);
+     * ncoll 0: one collection per atom type */
+    int ncoll, coll_interval;
+    double coll_cut[GR_MAXCOLL];        /* collection/interval: upper diameters, ascending */
+    int ncoll_range, coll_range[GR_MAXCOLL_RANGE][3]; /* collection/type: types lo..hi -> coll */
     int every, delay, check, once;
     bigint sort_every;      /* atom_modify sort: re-sort period in steps (< 0: every rebuild, 0: never) */
     int one, page;          /* capacity hints (neigh_modify one/page) */

@@ -1,5 +1,6 @@
 /* group.c - the `group` command (static groups: region, type, id, subtract,
- * union, intersect, delete, clear, empty) and the group reductions of
+ * union, intersect, variable, delete, clear, empty; dynamic groups and
+ * `static`) and the group reductions of
  * group.h. Forms of `type` and `id`: values and ranges A:B or A:B:C, or a
  * logical condition < <= > >= == != with one value or <> with two (A <= v <= B),
  * as LAMMPS. Assigning to an existing group adds atoms to it. */
@@ -16,6 +17,9 @@
 #include "domain.h"
 #include "error.h"
 #include "region.h"
+#include "run.h"
+#include "engine.h"
+#include "variable.h"
 
 int group_find(const struct gravel *g, const char *name)
 {
@@ -303,6 +307,72 @@ static void print_count(struct gravel *g, int ig)
     gr_print(g, "%lld atoms in group %s\n", (long long)group_count(g, ig), g->groups.name[ig]);
 }
 
+static void dynamic_set(struct gravel *g, int ig)
+{
+    const struct group_dyn *d = &g->groups.dyn[ig];
+    struct atoms *a = &g->atoms;
+    const struct region *r = d->region[0] ? region_get(g, d->region) : NULL;
+    double *v = d->var[0] ? var_atom_values(g, d->var) : NULL;
+    unsigned bit = group_bit(ig), parent = group_bit(d->parent);
+    for (int i = 0; i < a->n; i++) {
+        int in = (a->mask[i] & parent) && (!r || region_match(r, a->x + 3 * i)) &&
+                 (!v || v[i] != 0.0);
+        if (in)
+            a->mask[i] |= bit;
+        else
+            a->mask[i] &= ~bit;
+    }
+    free(v);
+}
+
+void group_dynamic_update(struct gravel *g, bigint step)
+{
+    struct engine *e = g->eng;
+    for (int ig = 1; ig < g->groups.n; ig++) {
+        const struct group_dyn *d = &g->groups.dyn[ig];
+        if (!g->groups.used[ig] || !d->on || (step >= 0 && step % d->every != 0))
+            continue;
+        run_sync_host(g); /* host order = device order from here */
+        dynamic_set(g, ig);
+        /* at once: the next group's variable syncs the host from the device */
+        if (e && e->active && e->a.n > 0)
+            eng_write(g, e->a.mask, 0, (size_t)e->a.n * sizeof(cl_uint), g->atoms.mask);
+    }
+}
+
+/* group ID dynamic parent [region R] [var V] [every N] (LAMMPS FixGroup). */
+static void define_dynamic(struct gravel *g, const char *id, int nrest, char **rest)
+{
+    if (nrest < 1)
+        gr_error(g, "group dynamic needs a parent group");
+    struct group_dyn d = {1, arg_group(g, rest[0]), 1, "", ""};
+    for (int k = 1; k < nrest; k++) {
+        const char *kw = rest[k];
+        if (k + 1 >= nrest)
+            gr_error(g, "group dynamic keyword '%.32s' needs a value", kw);
+        const char *val = rest[++k];
+        if (!strcmp(kw, "region")) {
+            region_get(g, val);
+            snprintf(d.region, sizeof d.region, "%s", val);
+        } else if (!strcmp(kw, "var")) {
+            var_check_atom(g, val, "group dynamic");
+            snprintf(d.var, sizeof d.var, "%s", val);
+        } else if (!strcmp(kw, "every")) {
+            d.every = arg_int_range(g, val, 1, 1 << 30, "every");
+        } else if (!strcmp(kw, "property")) {
+            gr_error(g, "group dynamic property needs fix property/atom custom values, which "
+                        "gravel does not have yet");
+        } else {
+            gr_error(g, "unknown group dynamic keyword '%.32s' (region, var, every)", kw);
+        }
+    }
+    int ig = group_create(g, id);
+    if (ig == d.parent)
+        gr_error(g, "a dynamic group cannot be its own parent");
+    g->groups.dyn[ig] = d;
+    gr_print(g, "dynamic group %s defined\n", id);
+}
+
 void cmd_group(struct gravel *g, int argc, char **argv)
 {
     const char *id = argv[0], *style = argv[1];
@@ -324,6 +394,7 @@ void cmd_group(struct gravel *g, int argc, char **argv)
             a->mask[i] &= keep;
         g->groups.used[ig] = 0;
         g->groups.name[ig][0] = '\0';
+        memset(&g->groups.dyn[ig], 0, sizeof g->groups.dyn[ig]);
         return;
     }
     if (!strcmp(style, "clear")) {
@@ -341,6 +412,27 @@ void cmd_group(struct gravel *g, int argc, char **argv)
     }
     if (!strcmp(id, "all"))
         gr_error(g, "group 'all' always holds every atom and cannot be assigned");
+    if (!strcmp(style, "dynamic")) {
+        define_dynamic(g, id, argc - 2, argv + 2);
+        return;
+    }
+    if (!strcmp(style, "static")) {
+        if (argc != 2)
+            gr_error(g, "group static takes no further arguments");
+        int ig = group_find(g, id);
+        if (ig < 0)
+            gr_error(g, "unknown group '%.64s'", id);
+        if (!g->groups.dyn[ig].on)
+            gr_error(g, "group '%s' is not dynamic", id);
+        g->groups.dyn[ig].on = 0;
+        return;
+    }
+    {
+        int ig = group_find(g, id);
+        if (ig >= 0 && g->groups.dyn[ig].on)
+            gr_error(g, "cannot add atoms to dynamic group '%s' (make it static first: group "
+                        "%s static)", id, id);
+    }
     /* validate everything before creating the group */
     int nrest = argc - 2;
     char **rest = argv + 2;
@@ -409,9 +501,17 @@ void cmd_group(struct gravel *g, int argc, char **argv)
             if (in)
                 a->mask[i] |= bit;
         }
-    } else if (!strcmp(style, "variable") || !strcmp(style, "include") ||
-               !strcmp(style, "molecule") || !strcmp(style, "dynamic") ||
-               !strcmp(style, "static")) {
+    } else if (!strcmp(style, "variable")) {
+        if (nrest != 1)
+            gr_error(g, "group variable needs exactly one atom-style variable");
+        var_check_atom(g, rest[0], "group variable");
+        double *v = var_atom_values(g, rest[0]);
+        bit = group_bit(group_create(g, id));
+        for (int i = 0; i < a->n; i++)
+            if (v[i] != 0.0)
+                a->mask[i] |= bit;
+        free(v);
+    } else if (!strcmp(style, "include") || !strcmp(style, "molecule")) {
         gr_error(g, "group style '%s' is not supported", style);
     } else {
         gr_error(g, "unknown group style '%.32s'", style);

@@ -16,6 +16,12 @@ int group_create(struct gravel *g, const char *name);
 /* The mask bit of group index i. */
 static inline unsigned group_bit(int i) { return 1u << i; }
 
+/* Dynamic groups: re-evaluate every dynamic group's membership (parent
+ * AND region AND atom-style variable != 0) on the host arrays and, during a
+ * run, write the masks to the device. `step` < 0: all of them (run setup);
+ * else those whose `every` divides step. */
+void group_dynamic_update(struct gravel *g, bigint step);
+
 /* Reductions over the atoms of group i (host arrays). */
 bigint group_count(const struct gravel *g, int igroup);
 double group_mass(const struct gravel *g, int igroup);

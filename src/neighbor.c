@@ -8,7 +8,14 @@
  * (when a re-sort is due, atom_modify sort), build the full list in partner
  * tag order (a list longer than the capacity grows it and builds again),
  * then the contacts (one per pair, owned by the lower tag) and their history
- * from the previous contacts of the same owner and partner. */
+ * from the previous contacts of the same owner and partner.
+ *
+ * neighbor multi bins each collection (neigh_modify collection/type,
+ * collection/interval; by default one per atom type) into its own grid of
+ * cells sized by the collection's own cut-off, and an atom searches each
+ * collection's cells within the cut-off of that pair of collections; the
+ * pair test and the row order are style bin's, so both styles give the same
+ * lists. */
 #include "neighbor.h"
 
 #include <math.h>
@@ -44,6 +51,16 @@ struct nbr {
     int nexg;
     int ago;
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
+    /* neighbor multi: ncoll collections (ninterval of them by diameter
+     * interval, else by type: type2coll), per collection its atom count at
+     * setup, its radius bound and grid (mnc, mbase: first global cell), the
+     * bound of the pair cut-off of every collection pair (cutab, skin
+     * included); device copies in d_* */
+    int multi, ncoll, ninterval;
+    int *mcount, *mnc, *mbase, *type2coll;
+    double *mrad, *cutab, *minvh;
+    cl_mem d_collcut, d_type2coll, d_mgrid, d_minv, d_cutab;
+    cl_kernel k_bin_multi, k_build_multi;
     cl_kernel k_check, k_wrap, k_bin, k_scan_partial, k_scan_top, k_scan_final, k_scatter,
         k_cellsort, k_reorder_words, k_build, k_contacts, k_invperm, k_hist_rename,
         k_hist_transfer, k_overlap;
@@ -65,6 +82,19 @@ static void rel(cl_mem *m)
     }
 }
 
+static void free_multi(struct nbr *b)
+{
+    free(b->mcount);
+    free(b->mnc);
+    free(b->mbase);
+    free(b->type2coll);
+    free(b->mrad);
+    free(b->cutab);
+    free(b->minvh);
+    b->mcount = b->mnc = b->mbase = b->type2coll = NULL;
+    b->mrad = b->cutab = b->minvh = NULL;
+}
+
 void nbr_free(struct gravel *g)
 {
     if (!g->eng || !g->eng->nbr)
@@ -74,9 +104,11 @@ void nbr_free(struct gravel *g)
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
                    &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
-                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group};
+                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group,
+                   &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
+    free_multi(b);
     free(b);
     g->eng->nbr = NULL;
 }
@@ -237,6 +269,89 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
                                      NULL, NULL));
 }
 
+/* Collections of neighbor multi (LAMMPS Neighbor::init and
+ * build_collection): by type (collection/type, or one per type), each
+ * collection's radius bound the largest radius of its atoms; or by diameter
+ * interval (collection/interval: the first collection whose cut-off is >= the
+ * diameter), the bound half the interval's cut-off. */
+static void setup_multi(struct gravel *g, struct nbr *b)
+{
+    struct engine *e = g->eng;
+    const struct neigh_settings *ns = &g->neigh;
+    rel(&b->d_collcut);
+    rel(&b->d_type2coll);
+    rel(&b->d_mgrid);
+    rel(&b->d_minv);
+    rel(&b->d_cutab);
+    free_multi(b);
+    b->multi = ns->style == NEIGH_MULTI;
+    if (!b->multi)
+        return;
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    int nc = ns->ncoll > 0 ? ns->ncoll : nt;
+    b->ncoll = nc;
+    b->ninterval = ns->ncoll > 0 && ns->coll_interval ? nc : 0;
+    b->mcount = gr_calloc(g, (size_t)nc, sizeof(int));
+    b->mnc = gr_calloc(g, 3 * (size_t)nc, sizeof(int));
+    b->mbase = gr_calloc(g, (size_t)nc + 1, sizeof(int));
+    b->type2coll = gr_calloc(g, (size_t)nt, sizeof(int));
+    b->mrad = gr_calloc(g, (size_t)nc, sizeof(double));
+    b->cutab = gr_calloc(g, (size_t)nc * nc, sizeof(double));
+    b->minvh = gr_calloc(g, 3 * (size_t)nc, sizeof(double));
+    for (int t = 0; t < nt; t++)
+        b->type2coll[t] = ns->ncoll > 0 ? -1 : t;
+    if (ns->ncoll > 0 && !ns->coll_interval)
+        for (int k = 0; k < ns->ncoll_range; k++)
+            for (int t = ns->coll_range[k][0]; t <= ns->coll_range[k][1] && t <= nt; t++)
+                b->type2coll[t - 1] = ns->coll_range[k][2];
+    if (!b->ninterval)
+        for (int t = 0; t < nt; t++)
+            if (b->type2coll[t] < 0)
+                gr_error(g, "atom type %d is in no collection of neigh_modify collection/type "
+                            "(types created after the command)", t + 1);
+    for (int i = 0; i < g->atoms.n; i++) {
+        double r = g->atoms.radius[i];
+        int c = -1;
+        if (b->ninterval) {
+            for (int k = 0; k < nc && c < 0; k++)
+                if (ns->coll_cut[k] >= 2 * r)
+                    c = k;
+            if (c < 0)
+                gr_error(g, "atom %lld of diameter %g exceeds the largest collection/interval "
+                            "cut-off %g of neighbor multi", (long long)g->atoms.tag[i], 2 * r,
+                         ns->coll_cut[nc - 1]);
+        } else {
+            c = b->type2coll[g->atoms.type[i] - 1];
+        }
+        b->mcount[c]++;
+        if (r > b->mrad[c])
+            b->mrad[c] = r;
+    }
+    if (b->ninterval)
+        for (int k = 0; k < nc; k++)
+            b->mrad[k] = 0.5 * ns->coll_cut[k];
+    else /* atoms fixes may insert this run (fix pour), of any type: every bound */
+        for (int k = 0; k < nc; k++) {
+            if (e->insert_rmax > b->mrad[k])
+                b->mrad[k] = e->insert_rmax;
+            if (e->insert_rmax > 0)
+                b->mcount[k] = b->mcount[k] > 0 ? b->mcount[k] : 1;
+        }
+    /* a bound: the kernel's cell ranges must not lose a pair to rounding */
+    for (int a = 0; a < nc; a++)
+        for (int c = 0; c < nc; c++)
+            b->cutab[a * nc + c] =
+                (pair_reach(g, b->mrad[a] + b->mrad[c]) + ns->skin) * (1 + 1e-5);
+    b->d_cutab = eng_alloc(g, (size_t)nc * nc * e->rsz, "multi collection cut-offs");
+    eng_write_reals(g, b->d_cutab, (size_t)nc * nc, b->cutab);
+    b->d_collcut = eng_alloc(g, (size_t)nc * e->rsz, "multi collection intervals");
+    eng_write_reals(g, b->d_collcut, (size_t)nc, ns->coll_cut);
+    b->d_type2coll = eng_alloc(g, (size_t)nt * sizeof(cl_int), "multi type collections");
+    eng_write(g, b->d_type2coll, 0, (size_t)nt * sizeof(cl_int), b->type2coll);
+    b->d_mgrid = eng_alloc(g, 4 * (size_t)nc * sizeof(cl_int), "multi grids");
+    b->d_minv = eng_alloc(g, 3 * (size_t)nc * e->rsz, "multi grid scales");
+}
+
 void nbr_setup(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -256,6 +371,8 @@ void nbr_setup(struct gravel *g)
     b->k_hist_rename = eng_kernel(g, "hist_rename");
     b->k_hist_transfer = eng_kernel(g, "hist_transfer");
     b->k_overlap = eng_kernel(g, "nbr_overlap");
+    b->k_bin_multi = eng_kernel(g, "nbr_bin_multi");
+    b->k_build_multi = eng_kernel(g, "nbr_build_multi");
     if (!b->flags)
         b->flags = eng_alloc(g, 4 * sizeof(cl_int), "neighbor flags");
     if (!b->sums)
@@ -319,6 +436,7 @@ void nbr_setup(struct gravel *g)
     b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
+    setup_multi(g, b);
     b->ago = 0;
     b->built = 0;
     b->last_sort = g->step;
@@ -499,28 +617,68 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     domain_shrink_wrap(g, lo, hi);
 }
 
-/* Cell grid over the current box. */
-static void make_grid(struct gravel *g, struct nbr *b, int n)
+/* Cells per dimension of a grid of cells >= cut over the box, coarsened
+ * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
+static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
-    struct domain *d = &g->dom;
-    double cut = b->cutmax;
     for (;;) {
         long total = 1;
         for (int q = 0; q < 3; q++) {
             double L = d->hi[q] - d->lo[q];
-            int nc = (int)(L / cut);
-            if (nc < 1)
-                nc = 1;
-            if (nc > 1 << 20)
-                nc = 1 << 20;
-            b->nc[q] = nc;
-            total *= nc;
+            int m = (int)(L / cut);
+            if (m < 1)
+                m = 1;
+            if (m > 1 << 20)
+                m = 1 << 20;
+            nc[q] = m;
+            total *= m;
         }
-        if (total <= 8L * n + 4096 || total <= 1)
-            break;
-        cut *= 1.25; /* a sparse scene: fewer, larger cells */
+        if (total <= 8L * natoms + 4096 || total <= 1)
+            return total;
+        cut *= 1.25;
     }
+}
+
+/* neighbor multi: one grid per collection, cells of the collection's own
+ * cut-off (an empty collection: one cell), numbered one grid after the
+ * other; written to the device. */
+static void make_grids_multi(struct gravel *g, struct nbr *b)
+{
+    struct domain *d = &g->dom;
+    int nc = b->ncoll;
+    long total = 0;
+    int *mg = gr_malloc(g, 4 * (size_t)nc * sizeof(int));
+    for (int c = 0; c < nc; c++) {
+        int *m = b->mnc + 3 * c;
+        if (b->mcount[c] == 0 && !b->ninterval)
+            m[0] = m[1] = m[2] = 1;
+        else
+            grid_dims(d, b->cutab[c * nc + c], b->mcount[c], m);
+        b->mbase[c] = (int)total;
+        total += (long)m[0] * m[1] * m[2];
+        if (total > 1L << 30)
+            gr_error(g, "neighbor multi: more than 2^30 cells");
+        for (int q = 0; q < 3; q++) {
+            mg[4 * c + q] = m[q];
+            b->minvh[3 * c + q] = m[q] / (d->hi[q] - d->lo[q]);
+        }
+        mg[4 * c + 3] = b->mbase[c];
+    }
+    b->mbase[nc] = (int)total;
+    b->ncell = (int)total;
+    eng_write(g, b->d_mgrid, 0, 4 * (size_t)nc * sizeof(int), mg);
+    eng_write_reals(g, b->d_minv, 3 * (size_t)nc, b->minvh);
+    free(mg);
+}
+
+/* Cell grid over the current box. */
+static void make_grid(struct gravel *g, struct nbr *b, int n)
+{
+    struct domain *d = &g->dom;
+    grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
+    if (b->multi)
+        make_grids_multi(g, b);
     for (int q = 0; q < 3; q++) {
         b->lo[q] = d->lo[q];
         b->hi[q] = d->hi[q];
@@ -541,7 +699,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
     int n = e->a.n;
     for (;;) {
         reset_flags(g, b);
-        cl_kernel k = b->k_build;
+        cl_kernel k = b->multi ? b->k_build_multi : b->k_build;
         int a = 0;
         eng_arg_int(g, k, a++, n);
         eng_arg_mem(g, k, a++, e->a.x);
@@ -552,14 +710,25 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         eng_arg_mem(g, k, a++, b->start);
         eng_arg_mem(g, k, a++, b->perm);
         eng_arg_int(g, k, a++, sorted);
-        for (int q = 0; q < 3; q++)
-            eng_arg_int(g, k, a++, b->nc[q]);
+        if (b->multi) {
+            eng_arg_int(g, k, a++, b->ncoll);
+            eng_arg_int(g, k, a++, b->ninterval);
+            eng_arg_mem(g, k, a++, b->d_collcut);
+            eng_arg_mem(g, k, a++, b->d_type2coll);
+            eng_arg_mem(g, k, a++, b->d_mgrid);
+            eng_arg_mem(g, k, a++, b->d_minv);
+            eng_arg_mem(g, k, a++, b->d_cutab);
+        } else {
+            for (int q = 0; q < 3; q++)
+                eng_arg_int(g, k, a++, b->nc[q]);
+        }
         for (int q = 0; q < 3; q++)
             eng_arg_int(g, k, a++, g->dom.periodic[q]);
         for (int q = 0; q < 3; q++)
             eng_arg_coord(g, k, a++, q, b->lo[q]);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, a++, b->inv[q]);
+        if (!b->multi)
+            for (int q = 0; q < 3; q++)
+                eng_arg_real(g, k, a++, b->inv[q]);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, a++, b->list.L[q]);
         eng_arg_real(g, k, a++, g->neigh.skin);
@@ -717,6 +886,49 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
     e->a.n = nkeep;
 }
 
+/* Bin by collection (neighbor multi); an atom in no collection (a
+ * diameter above the last collection/interval cut-off) stops the run. */
+static void bin_multi(struct gravel *g, struct nbr *b, int n)
+{
+    struct engine *e = g->eng;
+    reset_flags(g, b);
+    cl_kernel k = b->k_bin_multi;
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.radius);
+    eng_arg_mem(g, k, a++, e->a.type);
+    eng_arg_int(g, k, a++, b->ninterval);
+    eng_arg_mem(g, k, a++, b->d_collcut);
+    eng_arg_mem(g, k, a++, b->d_type2coll);
+    eng_arg_mem(g, k, a++, b->d_mgrid);
+    eng_arg_mem(g, k, a++, b->d_minv);
+    eng_arg_int(g, k, a++, b->ncell);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, b->lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, b->hi[q]);
+    eng_arg_mem(g, k, a++, b->cellof);
+    eng_arg_mem(g, k, a++, b->counts);
+    eng_arg_mem(g, k, a++, b->flags);
+    eng_launch(g, k, (size_t)n);
+    cl_int fl[4];
+    read_flags(g, b, fl);
+    if (fl[1] != 0x7fffffff) {
+        long long tag = 0;
+        union {
+            double d;
+            float f;
+        } r;
+        eng_read(g, e->a.tag, (size_t)fl[1] * sizeof(cl_long), sizeof(cl_long), &tag);
+        eng_read(g, e->a.radius, (size_t)fl[1] * e->rsz, e->rsz, &r);
+        gr_error(g, "atom %lld of diameter %g exceeds the largest collection/interval cut-off "
+                    "%g of neighbor multi (step %lld)", tag,
+                 2 * (e->rsz == sizeof(double) ? r.d : (double)r.f),
+                 g->neigh.coll_cut[b->ncoll - 1], (long long)g->step);
+    }
+}
+
 void nbr_rebuild(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -727,19 +939,23 @@ void nbr_rebuild(struct gravel *g)
     grow_cells(g, b, (size_t)b->ncell);
     int m = b->ncell + 1; /* + sentinel cell of lost atoms */
     eng_fill_zero(g, b->counts, (size_t)m * sizeof(cl_int));
-    cl_kernel k = b->k_bin;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_mem(g, k, 1, e->a.x);
-    for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, 2 + q, b->nc[q]);
-    for (int q = 0; q < 3; q++) {
-        eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
-        eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
-        eng_arg_real(g, k, 11 + q, b->inv[q]);
+    if (b->multi) {
+        bin_multi(g, b, n);
+    } else {
+        cl_kernel k = b->k_bin;
+        eng_arg_int(g, k, 0, n);
+        eng_arg_mem(g, k, 1, e->a.x);
+        for (int q = 0; q < 3; q++)
+            eng_arg_int(g, k, 2 + q, b->nc[q]);
+        for (int q = 0; q < 3; q++) {
+            eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
+            eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
+            eng_arg_real(g, k, 11 + q, b->inv[q]);
+        }
+        eng_arg_mem(g, k, 14, b->cellof);
+        eng_arg_mem(g, k, 15, b->counts);
+        eng_launch(g, k, (size_t)n);
     }
-    eng_arg_mem(g, k, 14, b->cellof);
-    eng_arg_mem(g, k, 15, b->counts);
-    eng_launch(g, k, (size_t)n);
     nbr_scan(g, b->counts, b->start, m);
     cl_int nkeep = n;
     eng_read(g, b->start, (size_t)b->ncell * sizeof(cl_int), sizeof nkeep, &nkeep);
@@ -756,7 +972,7 @@ void nbr_rebuild(struct gravel *g)
                     (long long)g->step);
     }
     eng_fill_zero(g, b->cursor, (size_t)m * sizeof(cl_int));
-    k = b->k_scatter;
+    cl_kernel k = b->k_scatter;
     eng_arg_int(g, k, 0, n);
     eng_arg_mem(g, k, 1, b->cellof);
     eng_arg_mem(g, k, 2, b->start);

@@ -452,7 +452,7 @@ static void build_payload(struct gravel *g, struct wbuf *w)
     at = sect_begin(g, w, S_NEIGH);
     const struct neigh_settings *ns = &g->neigh;
     put_f64(g, w, ns->skin);
-    int32_t iv[] = {ns->style_bin, ns->every, ns->delay, ns->check, ns->once,
+    int32_t iv[] = {ns->style, ns->every, ns->delay, ns->check, ns->once,
                     ns->one,       ns->page,  ns->nexclude, ns->nexclude_type};
     for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
         put_i32(g, w, iv[k]);
@@ -733,7 +733,7 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
     case S_NEIGH: {
         struct neigh_settings *ns = &im->neigh;
         ns->skin = get_f64(r);
-        int *iv[] = {&ns->style_bin, &ns->every, &ns->delay, &ns->check, &ns->once,
+        int *iv[] = {&ns->style, &ns->every, &ns->delay, &ns->check, &ns->once,
                      &ns->one,       &ns->page,  &ns->nexclude, &ns->nexclude_type};
         for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
             *iv[k] = get_i32(r);
@@ -1206,7 +1206,7 @@ static int find_idx(const struct tagidx *map, int n, int64_t tag)
 /* Field by field (a struct copy may leave padding bytes different). */
 static int neigh_equal(const struct neigh_settings *a, const struct neigh_settings *b)
 {
-    return a->skin == b->skin && a->style_bin == b->style_bin && a->every == b->every &&
+    return a->skin == b->skin && a->style == b->style && a->every == b->every &&
            a->delay == b->delay && a->check == b->check && a->once == b->once &&
            a->one == b->one && a->page == b->page && a->nexclude == b->nexclude &&
            a->nexclude_type == b->nexclude_type &&

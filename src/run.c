@@ -26,6 +26,7 @@
 #include "error.h"
 #include "input.h"
 #include "fix.h"
+#include "group.h"
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"
@@ -338,6 +339,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     e->setup = 1;
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
     int resumed = restart_resume(g);
+    group_dynamic_update(g, -1); /* dynamic groups at setup */
     if (resumed < 1)
         nbr_rebuild(g);
     e->st.nbuilds = 0;
@@ -371,6 +373,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             eng_finish(g);
         double a1 = wall();
         int rebuild = nbr_decide(g, forced_rebuild(g));
+        group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */
         double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
             double p0 = wall();

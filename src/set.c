@@ -5,7 +5,9 @@
  * (not the mass, as LAMMPS 2021 checked); `density` sets the mass from the
  * current radius, mass = 4/3 pi r^3 rho, or mass = rho for a point particle
  * (radius 0); `mass` sets the mass directly. Keywords apply in order.
- * Coordinates set in periodic dimensions are wrapped into the box.
+ * Coordinates set in periodic dimensions are wrapped into the box. Values of
+ * type, mass, diameter, density, omega, x y z and vx vy vz may be v_name, an
+ * atom-style variable evaluated for every atom when the keyword applies.
  *
  * The random keywords draw LAMMPS's numbers (src/random.c), so `lmp` on one
  * process picks the same atoms:
@@ -26,6 +28,7 @@
 #include "group.h"
 #include "random.h"
 #include "region.h"
+#include "variable.h"
 
 /* Parse a LAMMPS id range "*", "n", "n*", "*n", "m*n" into [lo, hi] within 1..max. */
 static void parse_range(struct gravel *g, const char *s, bigint max, bigint *lo, bigint *hi,
@@ -106,12 +109,33 @@ static long select_exact(struct gravel *g, char *sel, int newtype, int64_t nsubs
     return changed;
 }
 
+/* A keyword's value: a number (into *num, NULL returned) or v_name, an
+ * atom-style variable evaluated now for every atom into buf (returned; in a
+ * dry pass only checked). */
+static const double *kw_value(struct gravel *g, const char *s, const char *what, double *num,
+                              double *buf, int dry)
+{
+    if (!strncmp(s, "v_", 2) && s[2]) {
+        var_check_atom(g, s + 2, "set");
+        if (!dry)
+            var_compute_atom(g, s + 2, buf);
+        return buf;
+    }
+    *num = arg_double(g, s, what);
+    return NULL;
+}
+
+#define VAL(p, num, i) ((p) ? (p)[i] : (num))
+
 /* Apply the keywords in order; with dry set, only validate them (so a bad
- * keyword late in the line changes nothing). */
-static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scratch, int dry)
+ * keyword late in the line changes nothing). Values given as v_name are
+ * checked per atom in the second pass. buf: 3 x atoms.n scratch doubles. */
+static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scratch, double *buf,
+                  int dry)
 {
     struct atoms *a = &g->atoms;
     int n = dry ? 0 : a->n;
+    size_t nb = (size_t)(a->n ? a->n : 1);
     for (int k = 2; k < argc; k++) {
         const char *kw = argv[k];
         long count = 0;
@@ -124,10 +148,18 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         arg_need(g, argc, k, nv, kw);
         char **v = argv + k + 1;
         if (!strcmp(kw, "type")) {
-            int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
+            double tv = 0;
+            const double *p = kw_value(g, v[0], "atom type", &tv, buf, dry);
+            if (!p)
+                tv = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
             for (int i = 0; i < n; i++)
-                if (sel[i])
-                    a->type[i] = t, count++;
+                if (sel[i]) {
+                    double t = VAL(p, tv, i);
+                    if (!(t >= 1 && t <= a->ntypes))
+                        gr_error(g, "type %g from %s for atom %lld is outside 1..%d", t, v[0],
+                                 (long long)a->tag[i], a->ntypes);
+                    a->type[i] = (int)t, count++;
+                }
         } else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio")) {
             int t = arg_int_range(g, v[0], 1, a->ntypes, "atom type");
             double f = arg_double(g, v[1], "fraction");
@@ -176,33 +208,54 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                 count = select_exact(g, sel, t, nsub, seed, scratch, scratch + a->n);
             }
         } else if (!strcmp(kw, "mass")) {
-            double m = arg_positive(g, v[0], "mass");
+            double m = 0;
+            const double *p = kw_value(g, v[0], "mass", &m, buf, dry);
+            if (!p)
+                m = arg_positive(g, v[0], "mass");
             for (int i = 0; i < n; i++)
-                if (sel[i])
-                    a->rmass[i] = m, count++;
+                if (sel[i]) {
+                    if (!(VAL(p, m, i) > 0))
+                        gr_error(g, "mass %g from %s for atom %lld must be positive",
+                                 VAL(p, m, i), v[0], (long long)a->tag[i]);
+                    a->rmass[i] = VAL(p, m, i), count++;
+                }
         } else if (!strcmp(kw, "diameter")) {
-            double d = arg_nonneg(g, v[0], "diameter");
+            double d = 0;
+            const double *p = kw_value(g, v[0], "diameter", &d, buf, dry);
+            if (!p)
+                d = arg_nonneg(g, v[0], "diameter");
             for (int i = 0; i < n; i++)
-                if (sel[i])
-                    a->radius[i] = 0.5 * d, count++;
+                if (sel[i]) {
+                    if (!(VAL(p, d, i) >= 0))
+                        gr_error(g, "diameter %g from %s for atom %lld must not be negative",
+                                 VAL(p, d, i), v[0], (long long)a->tag[i]);
+                    a->radius[i] = 0.5 * VAL(p, d, i), count++;
+                }
         } else if (!strcmp(kw, "density") || !strcmp(kw, "density/disc")) {
             if (kw[7] == '/')
                 gr_error(g, "density/disc is for 2d and gravel is 3d only");
-            double rho = arg_positive(g, v[0], "density");
+            double rv = 0;
+            const double *p = kw_value(g, v[0], "density", &rv, buf, dry);
+            if (!p)
+                rv = arg_positive(g, v[0], "density");
             for (int i = 0; i < n; i++)
                 if (sel[i]) {
-                    double r = a->radius[i];
+                    double r = a->radius[i], rho = VAL(p, rv, i);
+                    if (!(rho > 0))
+                        gr_error(g, "density %g from %s for atom %lld must be positive", rho,
+                                 v[0], (long long)a->tag[i]);
                     a->rmass[i] = r > 0 ? 4.0 * M_PI / 3.0 * r * r * r * rho : rho;
                     count++;
                 }
         } else if (!strcmp(kw, "omega")) {
             double w[3];
+            const double *p[3];
             for (int d = 0; d < 3; d++)
-                w[d] = arg_double(g, v[d], "omega");
+                p[d] = kw_value(g, v[d], "omega", &w[d], buf + (size_t)d * nb, dry);
             for (int i = 0; i < n; i++)
                 if (sel[i]) {
                     for (int d = 0; d < 3; d++)
-                        a->omega[3 * i + d] = w[d];
+                        a->omega[3 * i + d] = VAL(p[d], w[d], i);
                     count++;
                 }
         } else if (!strcmp(kw, "image")) {
@@ -223,12 +276,15 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
             /* in a periodic dimension the atom is wrapped into the box at
              * once (image flag updated), as LAMMPS' pbc() does at setup */
             int d = kw[0] - 'x';
-            double val = arg_double(g, v[0], kw);
+            double cv = 0;
+            const double *p = kw_value(g, v[0], kw, &cv, buf, dry);
             double len = g->dom.hi[d] - g->dom.lo[d];
-            if (g->dom.periodic[d] && fabs(val - g->dom.lo[d]) > 1e9 * len)
-                gr_error(g, "%s = %s is too far outside the periodic box to wrap", kw, v[0]);
             for (int i = 0; i < n; i++)
                 if (sel[i]) {
+                    double val = VAL(p, cv, i);
+                    if (g->dom.periodic[d] && !(fabs(val - g->dom.lo[d]) <= 1e9 * len))
+                        gr_error(g, "%s = %g is too far outside the periodic box to wrap", kw,
+                                 val);
                     a->x[3 * i + d] = val;
                     domain_remap(g, a->x + 3 * i, a->image + 3 * i);
                     count++;
@@ -236,10 +292,11 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         } else if (kw[0] == 'v' && (kw[1] == 'x' || kw[1] == 'y' || kw[1] == 'z') &&
                    kw[2] == '\0') {
             int d = kw[1] - 'x';
-            double val = arg_double(g, v[0], kw);
+            double val = 0;
+            const double *p = kw_value(g, v[0], kw, &val, buf, dry);
             for (int i = 0; i < n; i++)
                 if (sel[i])
-                    a->v[3 * i + d] = val, count++;
+                    a->v[3 * i + d] = VAL(p, val, i), count++;
         } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge") ||
                    !strcmp(kw, "mol")) {
             gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
@@ -258,12 +315,14 @@ void cmd_set(struct gravel *g, int argc, char **argv)
         gr_error(g, "expected: set style ID keyword value ...");
     char *sel = gr_calloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1), 1);
     int *scratch = gr_malloc(g, 2 * (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
+    double *buf = malloc(3 * (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(double));
     jmp_buf *outer = g->err.jmp, here;
     g->err.jmp = &here;
     if (setjmp(here)) {
         g->err.jmp = outer;
         free(sel);
         free(scratch);
+        free(buf);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
@@ -271,9 +330,12 @@ void cmd_set(struct gravel *g, int argc, char **argv)
     }
     select_atoms(g, argv[0], argv[1], sel);
     gr_print(g, "Setting atom values ...\n");
-    apply(g, argc, argv, sel, scratch, 1);
-    apply(g, argc, argv, sel, scratch, 0);
+    if (!buf)
+        gr_error(g, "out of memory");
+    apply(g, argc, argv, sel, scratch, buf, 1);
+    apply(g, argc, argv, sel, scratch, buf, 0);
     g->err.jmp = outer;
     free(sel);
     free(scratch);
+    free(buf);
 }

@@ -1,6 +1,8 @@
 /* settings.c - simple global settings: units, dimension, atom_style, timestep,
  * neighbor, neigh_modify and mass. Each validates its arguments the way LAMMPS
  * does and stores the result in struct gravel. */
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
@@ -60,18 +62,96 @@ void cmd_timestep(struct gravel *g, int argc, char **argv)
     g->dt_set = 1;
 }
 
-/* neighbor skin bin */
+/* neighbor skin bin|multi */
 void cmd_neighbor(struct gravel *g, int argc, char **argv)
 {
     (void)argc;
     double skin = arg_nonneg(g, argv[0], "skin");
-    if (strcmp(argv[1], "nsq") == 0 || strcmp(argv[1], "multi") == 0 ||
-        strcmp(argv[1], "multi/old") == 0)
-        gr_error(g, "neighbor style '%s' is not supported: use bin", argv[1]);
-    if (strcmp(argv[1], "bin") != 0)
-        gr_error(g, "unknown neighbor style '%.32s': expected bin", argv[1]);
+    if (strcmp(argv[1], "nsq") == 0 || strcmp(argv[1], "multi/old") == 0)
+        gr_error(g, "neighbor style '%s' is not supported: use bin or multi", argv[1]);
+    int style = 0;
+    if (strcmp(argv[1], "bin") == 0)
+        style = NEIGH_BIN;
+    else if (strcmp(argv[1], "multi") == 0)
+        style = NEIGH_MULTI;
+    else
+        gr_error(g, "unknown neighbor style '%.32s': expected bin or multi", argv[1]);
     g->neigh.skin = skin;
-    g->neigh.style_bin = 1;
+    g->neigh.style = style;
+}
+
+/* neigh_modify collection/interval N cut1 ... cutN: upper bounds of the
+ * particle diameter (LAMMPS' atom cut-off of granular styles), ascending. */
+static int collection_interval(struct gravel *g, struct neigh_settings *ns, int argc,
+                               char **argv, int i)
+{
+    if (ns->style != NEIGH_MULTI)
+        gr_error(g, "collection/interval needs neighbor style multi");
+    arg_need(g, argc, i, 1, "collection/interval");
+    int n = arg_int_range(g, argv[i + 1], 1, GR_MAXCOLL, "number of collections");
+    arg_need(g, argc, i, 1 + n, "collection/interval");
+    for (int k = 0; k < n; k++) {
+        ns->coll_cut[k] = arg_positive(g, argv[i + 2 + k], "collection/interval cut-off");
+        if (k > 0 && ns->coll_cut[k - 1] >= ns->coll_cut[k])
+            gr_error(g, "collection/interval cut-offs must increase: %g then %g",
+                     ns->coll_cut[k - 1], ns->coll_cut[k]);
+    }
+    ns->ncoll = n;
+    ns->coll_interval = 1;
+    return i + 1 + n;
+}
+
+/* neigh_modify collection/type N types1 ... typesN: each a comma list of
+ * type ranges (1*3,5); every type in exactly one collection. */
+static int collection_type(struct gravel *g, struct neigh_settings *ns, int argc, char **argv,
+                           int i)
+{
+    if (ns->style != NEIGH_MULTI)
+        gr_error(g, "collection/type needs neighbor style multi");
+    if (!g->dom.box_exists)
+        gr_error(g, "collection/type needs the box (atom types) to exist");
+    arg_need(g, argc, i, 1, "collection/type");
+    int n = arg_int_range(g, argv[i + 1], 1, GR_MAXCOLL, "number of collections");
+    arg_need(g, argc, i, 1 + n, "collection/type");
+    int nt = g->atoms.ntypes;
+    char *seen = gr_calloc(g, (size_t)nt + 1, 1);
+    ns->ncoll_range = 0;
+    for (int k = 0; k < n; k++) {
+        char buf[256];
+        snprintf(buf, sizeof buf, "%s", argv[i + 2 + k]);
+        for (char *w = buf, *next; w; w = next) {
+            next = strchr(w, ',');
+            if (next)
+                *next++ = 0;
+            int lo, hi;
+            arg_type_range(g, w, nt, &lo, &hi);
+            for (int t = lo; t <= hi; t++) {
+                if (seen[t]) {
+                    free(seen);
+                    gr_error(g, "type %d is in more than one collection of collection/type", t);
+                }
+                seen[t] = 1;
+            }
+            if (ns->ncoll_range >= GR_MAXCOLL_RANGE) {
+                free(seen);
+                gr_error(g, "too many type ranges in collection/type (at most %d)",
+                         GR_MAXCOLL_RANGE);
+            }
+            int *r = ns->coll_range[ns->ncoll_range++];
+            r[0] = lo;
+            r[1] = hi;
+            r[2] = k;
+        }
+    }
+    for (int t = 1; t <= nt; t++)
+        if (!seen[t]) {
+            free(seen);
+            gr_error(g, "type %d is in no collection of collection/type", t);
+        }
+    free(seen);
+    ns->ncoll = n;
+    ns->coll_interval = 0;
+    return i + 1 + n;
 }
 
 static void add_exclusion(struct gravel *g, int pairs[16][2], int *n, int a, int b)
@@ -126,9 +206,14 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
                 add_exclusion(g, ns.exclude_group, &ns.nexclude, a, b);
                 i += 2;
             } else {
-                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none",
-                         how);
+                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none "
+                            "(molecule/intra and molecule/inter need molecule IDs, which "
+                            "gravel does not have yet)", how);
             }
+        } else if (!strcmp(kw, "collection/interval")) {
+            i = collection_interval(g, &ns, argc, argv, i);
+        } else if (!strcmp(kw, "collection/type")) {
+            i = collection_type(g, &ns, argc, argv, i);
         } else {
             gr_error(g, "unknown keyword '%.32s'", kw);
         }

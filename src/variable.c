@@ -19,8 +19,9 @@
 #include "error.h"
 #include "random.h"
 
-enum vstyle { V_INDEX, V_LOOP, V_STRING, V_EQUAL, V_FORMAT, V_GETENV };
-static const char *style_names[] = {"index", "loop", "string", "equal", "format", "getenv"};
+enum vstyle { V_INDEX, V_LOOP, V_STRING, V_EQUAL, V_FORMAT, V_GETENV, V_ATOM };
+static const char *style_names[] = {"index", "loop", "string", "equal", "format", "getenv",
+                                    "atom"};
 
 struct var {
     char *name;
@@ -198,12 +199,12 @@ void var_define(struct gravel *g, int argc, char **argv)
         return;
     }
     int s = -1;
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < 7; i++)
         if (strcmp(style, style_names[i]) == 0)
             s = i;
     if (s < 0)
         gr_error(g, "unknown variable style '%.64s' (expected index, loop, string, equal, "
-                 "format, getenv or delete)", style);
+                 "format, getenv, atom or delete)", style);
     int nargs = argc - 2;
     char **a = argv + 2;
     if (old && (int)old->style != s && !(s == V_INDEX || s == V_LOOP))
@@ -245,6 +246,7 @@ void var_define(struct gravel *g, int argc, char **argv)
     }
     case V_STRING:
     case V_EQUAL:
+    case V_ATOM:
     case V_GETENV:
         if (nargs != 1)
             gr_error(g, "%s variable '%s' takes exactly one value, got %d (quote text that "
@@ -317,6 +319,10 @@ static const char *retrieve_depth(struct gravel *g, const char *name, int depth)
     case V_EQUAL:
         snprintf(buf, sizeof buf, "%.15g", expr_eval_depth(g, v->val[0], depth + 1));
         return set_ret(g, buf);
+    case V_ATOM:
+        gr_error(g, "atom-style variable '%s' has one value per atom: use it as v_%s where "
+                    "per-atom values are read (dump custom, compute reduce, group, set, "
+                    "velocity)", name, name);
     case V_FORMAT: {
         const char *fmt = v->val[1]; /* validated by expr_format_ok at definition */
         double x = var_compute_equal_depth(g, v->val[0], depth + 1);
@@ -345,6 +351,9 @@ double var_compute_equal_depth(struct gravel *g, const char *name, int depth)
                  "to each other in a cycle?)", name);
     if (v->style == V_EQUAL)
         return expr_eval_depth(g, v->val[0], depth);
+    if (v->style == V_ATOM)
+        gr_error(g, "atom-style variable v_%s used where one value is needed (an equal-style "
+                    "formula, thermo, $())", name);
     if (v->style == V_FORMAT)
         return var_compute_equal_depth(g, v->val[0], depth + 1);
     if (v->style == V_LOOP)
@@ -364,6 +373,59 @@ double var_compute_equal_depth(struct gravel *g, const char *name, int depth)
 double var_compute_equal(struct gravel *g, const char *name)
 {
     return var_compute_equal_depth(g, name, 0);
+}
+
+int var_is_atom(struct gravel *g, const char *name)
+{
+    struct var *v = find(g, name);
+    return v && v->style == V_ATOM;
+}
+
+void var_compute_atom_depth(struct gravel *g, const char *name, double *out, int depth)
+{
+    struct var *v = find(g, name);
+    if (!v)
+        gr_error(g, "variable '%s' is not defined (in v_%s)", name, name);
+    if (v->style != V_ATOM)
+        gr_error(g, "variable '%s' is %s-style; per-atom values need an atom-style variable",
+                 name, style_names[v->style]);
+    if (depth > 200)
+        gr_error(g, "variables nested more than 200 levels deep, at v_%s (do variables refer "
+                 "to each other in a cycle?)", name);
+    expr_eval_atoms(g, v->val[0], out, depth);
+}
+
+void var_compute_atom(struct gravel *g, const char *name, double *out)
+{
+    var_compute_atom_depth(g, name, out, 0);
+}
+
+double *var_atom_values(struct gravel *g, const char *name)
+{
+    double *v = gr_malloc(g, ((size_t)g->atoms.n + 1) * sizeof *v);
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        free(v);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    var_compute_atom(g, name, v);
+    g->err.jmp = outer;
+    return v;
+}
+
+void var_check_atom(struct gravel *g, const char *name, const char *who)
+{
+    struct var *v = find(g, name);
+    if (!v)
+        gr_error(g, "%s: variable '%s' is not defined", who, name);
+    if (v->style != V_ATOM)
+        gr_error(g, "%s: variable '%s' is %s-style, not atom-style", who, name,
+                 style_names[v->style]);
 }
 
 void var_print_all(struct gravel *g)

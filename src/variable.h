@@ -1,4 +1,5 @@
-/* variable.h - script variables (equal, string, index, loop, format, getenv)
+/* variable.h - script variables (equal, string, index, loop, format, getenv,
+ * atom)
  * and the expression evaluator behind equal-style variables and $(...).
  *
  * Semantics follow LAMMPS: redefining an index or loop variable that exists is
@@ -28,6 +29,15 @@ const char *var_retrieve(struct gravel *g, const char *name);
 int var_exists(struct gravel *g, const char *name);
 /* Numeric value of variable `name`; error if undefined or not numeric. */
 double var_compute_equal(struct gravel *g, const char *name);
+/* Atom-style variables (`variable NAME atom formula`): 1 if NAME is one;
+ * its value for every host atom (g->atoms.n values, host order, the host
+ * arrays synced first during a run) into out; var_check_atom raises
+ * "who: ..." unless NAME is an atom-style variable. */
+int var_is_atom(struct gravel *g, const char *name);
+void var_compute_atom(struct gravel *g, const char *name, double *out);
+void var_check_atom(struct gravel *g, const char *name, const char *who);
+/* The same values in a new array (caller frees; freed on error). */
+double *var_atom_values(struct gravel *g, const char *name);
 /* Print every variable (name, style, value) with gr_print, for `info`. */
 void var_print_all(struct gravel *g);
 /* Number of defined variables. */
@@ -35,6 +45,11 @@ int var_count(const struct gravel *g);
 
 /* Evaluate an expression as in equal-style variables. */
 double expr_eval(struct gravel *g, const char *text);
+/* Evaluate a formula once per host atom (atom-style variables): bare x y z
+ * vx vy vz fx fy fz mass radius type id are that atom's, c_ID / c_ID[N] of a
+ * per-atom compute and v_name of an atom-style variable its value; every
+ * other operand is global and evaluated once. out: g->atoms.n values. */
+void expr_eval_atoms(struct gravel *g, const char *text, double *out, int depth);
 /* Check that `fmt` is a printf format with exactly one double conversion
  * (%f %e %g %E %G with flags, width <= 999, precision <= 999) and no other
  * conversions except %%; returns 1 if valid. Used by format variables and
@@ -50,5 +65,6 @@ double var_random_gaussian(struct gravel *g, long seed);
 /* Internal: evaluate with a nesting depth (v_name recursion guard). */
 double expr_eval_depth(struct gravel *g, const char *text, int depth);
 double var_compute_equal_depth(struct gravel *g, const char *name, int depth);
+void var_compute_atom_depth(struct gravel *g, const char *name, double *out, int depth);
 
 #endif

@@ -17,12 +17,14 @@
  *     atom's coordinates (RanPark::reset), so an atom's velocity (before
  *     momentum removal and scaling) depends only on where it is.
  * set/ramp values are in lattice units (multiplied by the lattice spacing)
- * unless `units box`, LAMMPS' default. */
+ * unless `units box`, LAMMPS' default; set components may be v_name of an
+ * equal- or atom-style variable (not scaled). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
+#include "variable.h"
 #include "domain.h"
 #include "error.h"
 #include "group.h"
@@ -281,21 +283,41 @@ void cmd_velocity(struct gravel *g, int argc, char **argv)
         free(res.vsave);
     } else if (!strcmp(style, "set")) {
         arg_need(g, argc, 1, 3, "set");
-        int has[3];
+        /* a component: a number (lattice-scaled unless units box), NULL, or
+         * v_name of an equal- or atom-style variable (not scaled, as LAMMPS) */
+        int has[3], isvar[3] = {0, 0, 0};
         double val[3] = {0, 0, 0};
         for (int d = 0; d < 3; d++) {
-            has[d] = strcmp(argv[2 + d], "NULL") != 0;
-            if (has[d])
-                val[d] = arg_double(g, argv[2 + d], "velocity component");
+            const char *s = argv[2 + d];
+            has[d] = strcmp(s, "NULL") != 0;
+            if (has[d] && !strncmp(s, "v_", 2) && s[2]) {
+                if (!var_exists(g, s + 2))
+                    gr_error(g, "variable '%s' of velocity set does not exist", s + 2);
+                isvar[d] = var_is_atom(g, s + 2) ? 2 : 1;
+                if (isvar[d] == 1)
+                    val[d] = var_compute_equal(g, s + 2);
+            } else if (has[d]) {
+                val[d] = arg_double(g, s, "velocity component");
+            }
         }
         parse_opts(g, argc, argv, 5, &o);
         double sc[3];
         domain_unit_scale(g, o.lattice_units, sc);
+        double *pv[3] = {NULL, NULL, NULL};
+        for (int d = 0; d < 3; d++) {
+            if (isvar[d])
+                sc[d] = 1.0;
+            if (isvar[d] == 2)
+                pv[d] = var_atom_values(g, argv[2 + d] + 2);
+        }
         for (int i = 0; i < a->n; i++)
             if (a->mask[i] & bit)
                 for (int d = 0; d < 3; d++)
                     if (has[d])
-                        a->v[3 * i + d] = val[d] * sc[d] + (o.sum ? a->v[3 * i + d] : 0.0);
+                        a->v[3 * i + d] = (pv[d] ? pv[d][i] : val[d]) * sc[d] +
+                                          (o.sum ? a->v[3 * i + d] : 0.0);
+        for (int d = 0; d < 3; d++)
+            free(pv[d]);
     } else if (!strcmp(style, "scale")) {
         arg_need(g, argc, 1, 1, "scale");
         double t_want = arg_nonneg(g, argv[2], "temperature");

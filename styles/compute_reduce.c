@@ -2,23 +2,26 @@
  * reduce per-atom quantities over the atoms of the group, as LAMMPS' compute
  * reduce. mode = sum | min | max | ave | sumsq | avesq | sumabs | aveabs.
  * Inputs: x y z vx vy vz fx fy fz radius diameter mass omegax omegay omegaz
- * tqx tqy tqz, or c_ID / c_ID[N] (a per-atom compute's vector, or column N of
- * its array). One input gives a global scalar,
+ * tqx tqy tqz, c_ID / c_ID[N] (a per-atom compute's vector, or column N of
+ * its array) or v_name (an atom-style variable). One input gives a global scalar,
  * several a global vector (one element per input). Sum modes are extensive.
  * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
  * max (LAMMPS' values). */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
+#include "variable.h"
 
 enum mode { SUM, SUMSQ, SUMABS, MIN, MAX, AVE, AVESQ, AVEABS };
 
 struct input {
     int field;                  /* index into fields[] or -1 for a compute */
+    int var;                    /* v_name: cid holds the variable's name */
     char cid[GR_NAMELEN];       /* per-atom compute ID */
     int index;                  /* c_ID[N]: column N of a per-atom array; 0: vector */
 };
@@ -81,9 +84,14 @@ static void reduce_create(struct gravel *g, struct compute *c, int argc, char **
             if (strcmp(s, fields[f].name) == 0)
                 in->field = f;
         if (in->field < 0) {
-            if (strncmp(s, "v_", 2) == 0)
-                gr_error(g, "compute reduce: atom-style variable inputs ('%.64s') are not "
-                            "supported", s);
+            if (strncmp(s, "v_", 2) == 0 && s[2]) {
+                if (strlen(s + 2) >= GR_NAMELEN)
+                    gr_error(g, "compute reduce: variable name '%.64s' is too long", s);
+                in->var = 1;
+                snprintf(in->cid, sizeof in->cid, "%s", s + 2);
+                r->n++;
+                continue;
+            }
             if (strncmp(s, "f_", 2) == 0)
                 gr_error(g, "compute reduce: fix inputs ('%.64s') are not supported", s);
             if (!compute_parse_ref(s, in->cid, &in->index))
@@ -109,6 +117,10 @@ static void reduce_init(struct gravel *g, struct compute *c)
     for (int k = 0; k < r->n; k++) {
         if (r->in[k].field >= 0)
             continue;
+        if (r->in[k].var) {
+            var_check_atom(g, r->in[k].cid, "compute reduce");
+            continue;
+        }
         compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
     }
 }
@@ -119,6 +131,7 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
     const struct atoms *a = &g->atoms;
     struct reduce *r = c->data;
     const double *src = NULL;
+    double *vals = NULL;
     int stride = 1, comp = 0;
     double scale = 1.0;
     if (in->field >= 0) {
@@ -128,6 +141,9 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
         stride = which <= 4 ? 3 : 1;
         comp = fields[in->field].comp;
         scale = fields[in->field].scale;
+    } else if (in->var) {
+        vals = var_atom_values(g, in->cid);
+        src = vals;
     } else {
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
         src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");
@@ -149,6 +165,7 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
         case MAX: if (v > acc) acc = v; break;
         }
     }
+    free(vals);
     if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)
         acc /= (double)count;
     return acc;

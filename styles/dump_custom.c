@@ -10,7 +10,8 @@
  * Fields: id type x y z xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
  * mass omegax omegay omegaz tqx tqy tqz, xs ys zs (scaled to the box: (x -
  * xlo) / Lx), xsu ysu zsu (scaled, unwrapped: xs + ix), and c_ID / c_ID[N] (a per-atom
- * compute's vector or column N of its array). */
+ * compute's vector or column N of its array), v_name (an atom-style variable,
+ * evaluated at each snapshot). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,11 +20,12 @@
 #include "dump.h"
 #include "error.h"
 #include "thermo.h"
+#include "variable.h"
 
 enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
-    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_COUNT, F_COMPUTE = -1
+    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
 };
 
 static const char *const field_names[F_COUNT] = {
@@ -44,6 +46,7 @@ struct column {
     int index;
     const double *peratom;      /* compute values for the current snapshot */
     int stride;
+    double *vals;               /* v_name: the variable's values (owned) */
 };
 
 struct custom {
@@ -58,6 +61,8 @@ static void custom_destroy(struct dump *d)
     struct custom *c = d->data;
     if (!c)
         return;
+    for (int i = 0; i < c->n; i++)
+        free(c->col[i].vals);
     free(c->col);
     free(c->format_line);
     free(c->format_int);
@@ -93,11 +98,13 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
             continue;
         if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, col->cid, &col->index))
             continue;
-        if (strncmp(s, "v_", 2) == 0)
-            gr_error(g, "dump custom field '%s': atom-style variables are not supported", s);
+        if (strncmp(s, "v_", 2) == 0 && s[2]) {
+            col->field = F_VARIABLE;
+            continue;
+        }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
                     "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu "
-                    "c_ID c_ID[N])", s);
+                    "c_ID c_ID[N] v_name)", s);
     }
 }
 
@@ -171,6 +178,8 @@ static void custom_init(struct gravel *g, struct dump *d)
         struct column *col = &c->col[i];
         if (col->field == F_COMPUTE)
             compute_peratom_check(g, col->cid, col->index, "dump custom");
+        if (col->field == F_VARIABLE)
+            var_check_atom(g, col->name + 2, "dump custom");
         int isint = col->field >= 0 && field_is_int(col->field);
         const char *f = NULL, *src = NULL;
         if (c->format_col[i]) {
@@ -213,6 +222,18 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
             c->col[i].peratom = compute_peratom_ref(g, compute_find(g, c->col[i].cid),
                                                     c->col[i].index, &c->col[i].stride,
                                                     "dump custom");
+    for (int i = 0; i < c->n; i++) {
+        struct column *col = &c->col[i];
+        if (col->field != F_VARIABLE)
+            continue;
+        double *v = realloc(col->vals, ((size_t)a->n + 1) * sizeof *v);
+        if (!v)
+            gr_error(g, "out of memory");
+        col->vals = v;
+        var_compute_atom(g, col->name + 2, v);
+        col->peratom = v;
+        col->stride = 1;
+    }
 
     double prd[3];
     for (int k = 0; k < 3; k++)

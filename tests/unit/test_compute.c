@@ -228,7 +228,8 @@ TEST(errors)
     FX_CHECK_ERROR("compute 1 all reduce sum\n", "a mode and at least one input", 1);
     FX_CHECK_ERROR("compute 1 all reduce total vx\n", "unknown mode 'total'", 1);
     FX_CHECK_ERROR("compute 1 all reduce sum vw\n", "unknown input 'vw'", 1);
-    FX_CHECK_ERROR("compute 1 all reduce sum v_a\n", "atom-style variable", 1);
+    FX_CHECK_ERROR("compute 1 all reduce sum v_a\nprint $(c_1)\n",
+                   "compute reduce: variable 'a' is not defined", 2);
     FX_CHECK_ERROR("compute 1 all reduce sum f_a\n", "fix inputs", 1);
     FX_CHECK_ERROR("compute 1 all reduce sum c_1\n", "cannot reduce itself", 1);
     FX_CHECK_ERROR("compute 1 all property/atom\n", "at least one attribute", 1);

@@ -417,7 +417,8 @@ TEST(errors)
     FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk extra\n", "takes no arguments", 1);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt\n", "at least one field", 1);
     FX_CHECK_ERROR("dump 1 all custom 1 f.txt id q\n", "unknown dump custom field 'q'", 1);
-    FX_CHECK_ERROR("dump 1 all custom 1 f.txt v_a\n", "atom-style variables", 1);
+    FX_CHECK_ERROR("variable a equal 1\nwrite_dump all custom f.txt v_a\n",
+                   "variable 'a' is equal-style, not atom-style", 2);
     FX_CHECK_ERROR("dump 1 nogroup vtk 1 f.vtk\n", "unknown group 'nogroup'", 1);
     FX_CHECK_ERROR("dump_modify 9 sort id\n", "unknown dump ID '9'", 1);
     FX_CHECK_ERROR("dump 1 all vtk 1 f.vtk\ndump_modify 1 sort x\n", "sort must be id or off", 2);

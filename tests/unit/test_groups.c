@@ -36,6 +36,15 @@ TEST(group_styles)
     CHECK(count(g, "big") == 4 && count(g, "ne") == 63);
     CHECK(count(g, "sub") == 32);
     CHECK(count(g, "uni") == 37 && count(g, "both") == 5);
+    /* atom-style variables: a static group of x < 2 and type == 2 (the low half has type 2,
+     * z < 1.5), and a dynamic one (set at run setup: empty until a run) */
+    CHECK(test_script(g, "variable v atom (x<2)*(type==2)\ngroup var variable v\n"
+                         "group dyn dynamic all var v every 10\n") == GR_OK);
+    CHECK(count(g, "var") == 16 && count(g, "dyn") == 0);
+    CHECK(test_script(g, "group var type 1\n") == GR_OK);
+    CHECK(test_script(g, "group dyn type 1\n") != GR_OK);
+    CHECK(test_script(g, "group dyn static\ngroup dyn type 1\n") == GR_OK);
+    CHECK(count(g, "var") == 48 && count(g, "dyn") == 32);
     /* assigning again adds atoms; delete frees the slot and the bits */
     CHECK(test_script(g, "group few id 10\n") == GR_OK);
     CHECK(count(g, "few") == 5);
@@ -67,7 +76,14 @@ TEST(group_errors)
     CHECK_ERROR(CUBE "group g type abc\n", "expected an integer for type, got 'abc'", 5);
     CHECK_ERROR(CUBE "group g subtract all\n", "group subtract needs at least 2 group IDs", 5);
     CHECK_ERROR(CUBE "group g union nope\n", "unknown group 'nope'", 5);
-    CHECK_ERROR(CUBE "group g dynamic all region b\n", "group style 'dynamic' is not supported", 5);
+    CHECK_ERROR(CUBE "group g dynamic all foo b\n", "unknown group dynamic keyword 'foo'", 5);
+    CHECK_ERROR(CUBE "group g dynamic all region nowhere\n", "unknown region 'nowhere'", 5);
+    CHECK_ERROR(CUBE "variable e equal 1\ngroup g dynamic all var e\n",
+                "variable 'e' is equal-style, not atom-style", 6);
+    CHECK_ERROR(CUBE "group g dynamic g\n", "unknown group 'g'", 5);
+    CHECK_ERROR(CUBE "group g static\n", "unknown group 'g'", 5);
+    CHECK_ERROR(CUBE "group g empty\ngroup g static\n", "group 'g' is not dynamic", 6);
+    CHECK_ERROR(CUBE "group g variable nope\n", "variable 'nope' is not defined", 5);
     CHECK_ERROR(CUBE "group g frobnicate\n", "unknown group style 'frobnicate'", 5);
     CHECK_ERROR(CUBE "group x.y empty\n", "may contain only letters", 5);
     CHECK_ERROR(CUBE "group nope delete\n", "unknown group 'nope'", 5);
