@@ -43,6 +43,8 @@ void domain_set_initial_box(struct gravel *g)
 {
     struct domain *dm = &g->dom;
     static const char dimname[3] = {'x', 'y', 'z'};
+    if (dm->dimension == 2 && !dm->periodic[2])
+        gr_error(g, "cannot run a 2d simulation with a non-periodic z dimension (boundary ... p)");
     for (int d = 0; d < 3; d++) {
         if (!isfinite(dm->lo[d]) || !isfinite(dm->hi[d]) || !(dm->lo[d] < dm->hi[d]))
             gr_error(g, "box bounds in %c must satisfy lo < hi, got %g %g", dimname[d],
@@ -86,6 +88,11 @@ void domain_shrink_wrap(struct gravel *g, const double lo[3], const double hi[3]
             gr_error(g, "illegal simulation box after shrink-wrapping %c: lo %g > hi %g",
                      "xyz"[d], dm->lo[d], dm->hi[d]);
     }
+}
+
+int domain_contact_periodic(const struct gravel *g, int d)
+{
+    return g->dom.periodic[d] && !(d == 2 && g->dom.dimension == 2);
 }
 
 double domain_volume(const struct gravel *g)

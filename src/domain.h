@@ -27,6 +27,12 @@ void domain_set_initial_box(struct gravel *g);
  * lo[d] > hi[d], no atoms) changes nothing. Errors if the box turns inside out. */
 void domain_shrink_wrap(struct gravel *g, const double lo[3], const double hi[3]);
 
+/* 1 if dimension d is periodic for wrapping, binning and minimum images.
+ * In 2d (g->dom.dimension == 2, set by the `dimension` command) z is
+ * periodic by LAMMPS's rule but thin: every atom stays in one z plane
+ * (fix enforce2d), so z is neither wrapped nor imaged and has one cell. */
+int domain_contact_periodic(const struct gravel *g, int d);
+
 /* Box volume (product of the three lengths). 0 before the box exists. */
 double domain_volume(const struct gravel *g);
 

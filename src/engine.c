@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "atoms.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "kernel_sources.h"
@@ -411,7 +412,7 @@ void eng_prepare(struct gravel *g)
                        single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
     for (int q = 0; q < 3; q++)
-        if (g->dom.periodic[q])
+        if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
     if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
         len += pair_defines(p, opts + len, sizeof opts - (size_t)len);

@@ -44,7 +44,8 @@ struct lattice {
 
 struct domain {
     enum units units;
-    int dimension;
+    int dimension;          /* 2 or 3 (`dimension`, default 3); 2d: z periodic and thin,
+                             * atoms in one z plane (domain_contact_periodic) */
     int box_exists;
     char bnd[3][2];         /* boundary flag per dimension and face (lo, hi) */
     int periodic[3];
