@@ -447,6 +447,8 @@ void engine_destroy(struct gravel *g)
         free(e->hooks.call[k]);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
+    if (e->virial)
+        clReleaseMemObject(e->virial);
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);
