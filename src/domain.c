@@ -7,14 +7,10 @@
 
 #include "error.h"
 
-/* boundary x y z: each one or two letters of p f s m (lo face, hi face). */
-void cmd_boundary(struct gravel *g, int argc, char **argv)
+void domain_set_boundary(struct gravel *g, char **argv)
 {
-    (void)argc;
     static const char dimname[3] = {'x', 'y', 'z'};
     char bnd[3][2];
-    if (g->dom.box_exists)
-        gr_error(g, "must be used before the simulation box is created");
     for (int d = 0; d < 3; d++) {
         const char *s = argv[d];
         size_t n = strlen(s);
@@ -32,11 +28,22 @@ void cmd_boundary(struct gravel *g, int argc, char **argv)
             gr_error(g, "both faces of %c must be periodic ('p') or neither, got '%s'",
                      dimname[d], s);
     }
+    if (g->dom.box_exists && g->dom.dimension == 2 && bnd[2][0] != 'p')
+        gr_error(g, "cannot make z non-periodic in a 2d simulation");
     for (int d = 0; d < 3; d++) {
         g->dom.bnd[d][0] = bnd[d][0];
         g->dom.bnd[d][1] = bnd[d][1];
         g->dom.periodic[d] = bnd[d][0] == 'p';
     }
+}
+
+/* boundary x y z: each one or two letters of p f s m (lo face, hi face). */
+void cmd_boundary(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    if (g->dom.box_exists)
+        gr_error(g, "must be used before the simulation box is created");
+    domain_set_boundary(g, argv);
 }
 
 void domain_set_initial_box(struct gravel *g)

@@ -14,6 +14,10 @@
 /* LAMMPS' BIG: what INF stands for in region bounds. */
 #define DOMAIN_BIG 1.0e20
 
+/* Set the boundary flags from three words of p f s m (the `boundary` and
+ * `change_box ... boundary` arguments); errors leave the flags unchanged. */
+void domain_set_boundary(struct gravel *g, char **argv);
+
 /* Finish a box whose g->dom.lo/hi were just set (create_box, read_data), as
  * LAMMPS' Domain::set_initial_box(1): small[d] = 1e-4 * (hi - lo); faces with
  * 's' move outward by small; faces with 'm' record their position as the
