@@ -130,10 +130,10 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
             } else if (o->kind == OP_DELTA) {
                 lo += o->v[0] * sc[q];
                 hi += o->v[1] * sc[q];
-            } else {
-                double mid = 0.5 * (lo + hi), half = 0.5 * o->v[0] * (hi - lo);
-                lo = mid - half;
-                hi = mid + half;
+            } else { /* LAMMPS's arithmetic, for its bits */
+                double mid = 0.5 * (lo + hi);
+                lo = mid + o->v[0] * (lo - mid);
+                hi = mid + o->v[0] * (hi - mid);
             }
             if (!(lo < hi) || !isfinite(lo) || !isfinite(hi))
                 gr_error(g, "the new %c bounds %g %g are not lo < hi", "xyz"[q], lo, hi);
@@ -165,9 +165,12 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
             for (int i = 0; i < a->n; i++) {
                 if (!(a->mask[i] & bit))
                     continue;
+                /* LAMMPS's x2lamda / lamda2x: lamda = (1/L0) (x - lo0),
+                 * x = L lamda + lo (the bits matter: velocity loop geom
+                 * hashes coordinates) */
                 for (int p = 0; p < 3; p++) {
-                    double lam = (a->x[3 * i + p] - slo[p]) / (shi[p] - slo[p]);
-                    a->x[3 * i + p] = d->lo[p] + lam * (d->hi[p] - d->lo[p]);
+                    double lam = (1.0 / (shi[p] - slo[p])) * (a->x[3 * i + p] - slo[p]);
+                    a->x[3 * i + p] = (d->hi[p] - d->lo[p]) * lam + d->lo[p];
                 }
             }
             break;
