@@ -37,6 +37,9 @@ struct lattice {
     double a[3];            /* spacing per dimension in box units (LAMMPS xlattice...) */
     double prim[3];         /* primitive cell edge lengths in box units (where points go;
                              * differs from a[] only with the `spacing` keyword) */
+    double cell[3];         /* primitive edge lengths in units of `scale` (1, sqrt(3) ...);
+                             * 0 after read_restart (then prim[] places the points) */
+    double scale;           /* the lattice constant */
     double origin[3];       /* fractional origin */
     int nbasis;
     double basis[8][3];     /* fractional basis positions */

@@ -138,7 +138,9 @@ void cmd_lattice(struct gravel *g, int argc, char **argv)
         double vol = two_d ? cell[0] * cell[1] : cell[0] * cell[1] * cell[2];
         a = pow(lat.nbasis / vol / scale, two_d ? 0.5 : 1.0 / 3.0);
     }
+    lat.scale = a;
     for (int d = 0; d < 3; d++) {
+        lat.cell[d] = cell[d];
         lat.prim[d] = cell[d] * a;
         lat.a[d] = spacing_set ? spacing[d] * a : cell[d] * a;
     }
@@ -175,9 +177,14 @@ void lattice_foreach(struct gravel *g, const double lo[3], const double hi[3],
                 for (int m = 0; m < lat->nbasis; m++) {
                     double x[3];
                     long idx[3] = {i, j, k};
-                    for (int d = 0; d < 3; d++)
-                        x[d] = (idx[d] + lat->basis[m][d]) * lat->prim[d] +
+                    /* LAMMPS's lattice2box order: (cell (i + b)) scale + origin,
+                     * so the coordinate bits (hashed by velocity loop geom) agree */
+                    for (int d = 0; d < 3; d++) {
+                        double u = idx[d] + lat->basis[m][d];
+                        x[d] = (lat->cell[d] > 0 ? (lat->cell[d] * u) * lat->scale
+                                                 : u * lat->prim[d]) +
                                lat->origin[d] * lat->a[d];
+                    }
                     if (x[0] < lo[0] || x[0] >= hi[0] || x[1] < lo[1] || x[1] >= hi[1] ||
                         x[2] < lo[2] || x[2] >= hi[2])
                         continue;
