@@ -255,11 +255,17 @@ void cmd_delete_atoms(struct gravel *g, int argc, char **argv)
 
     int n0 = a->n;
     char *dlist = gr_calloc(g, (size_t)(n0 > 0 ? n0 : 1), 1);
+    char *cand = calloc((size_t)(n0 > 0 ? n0 : 1), 1); /* random: the candidates */
+    if (!cand) {
+        free(dlist);
+        gr_error(g, "out of memory");
+    }
     jmp_buf jb, *outer = g->err.jmp;
     g->err.jmp = &jb;
     if (setjmp(jb)) {
         g->err.jmp = outer;
         free(dlist);
+        free(cand);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
@@ -281,7 +287,6 @@ void cmd_delete_atoms(struct gravel *g, int argc, char **argv)
             if (region_match(r, a->x + 3 * i))
                 dlist[i] = rng_mars_uniform(&rm) <= frac;
     } else {
-        char *cand = gr_calloc(g, (size_t)(n0 > 0 ? n0 : 1), 1);
         int ncand = 0;
         for (int i = 0; i < n0; i++) {
             cand[i] = (a->mask[i] & b1) && (!r || region_match(r, a->x + 3 * i));
@@ -297,9 +302,9 @@ void cmd_delete_atoms(struct gravel *g, int argc, char **argv)
             bigint want = count_style ? count : (bigint)(frac * ncand);
             delete_subset(g, cand, want, seed, dlist);
         }
-        free(cand);
     }
     g->err.jmp = outer;
+    free(cand);
 
     /* LAMMPS's order: the last atom moves into each deleted slot */
     for (int i = 0; i < a->n;) {

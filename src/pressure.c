@@ -50,18 +50,27 @@ void pressure_virial(struct gravel *g, double w[3])
     free(wi);
 }
 
-double pressure_scalar(struct gravel *g, struct temp_state *t)
+double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int virialflag)
 {
     const struct domain *d = &g->dom;
     int dim = d->dimension;
-    double w[3];
-    pressure_virial(g, w);
+    double w[3] = {0, 0, 0};
+    if (virialflag)
+        pressure_virial(g, w);
     double vol = (d->hi[0] - d->lo[0]) * (d->hi[1] - d->lo[1]);
     if (dim == 3)
         vol *= d->hi[2] - d->lo[2];
-    double temp = temp_scalar(g, t);
-    double dof = temp_dof(g, t);
+    double ke = 0.0;
+    if (keflag) {
+        double temp = temp_scalar(g, t);
+        ke = temp_dof(g, t) * temp_boltz(g) * temp;
+    }
     double nktv2p = 1.0;
     double virial = dim == 3 ? w[0] + w[1] + w[2] : w[0] + w[1];
-    return (dof * temp_boltz(g) * temp + virial) / dim * (1.0 / vol) * nktv2p;
+    return (ke + virial) / dim * (1.0 / vol) * nktv2p;
+}
+
+double pressure_scalar(struct gravel *g, struct temp_state *t)
+{
+    return pressure_parts(g, t, 1, 1);
 }

@@ -19,5 +19,8 @@
 void pressure_virial(struct gravel *g, double w[3]);
 /* The pressure with temperature t (host arrays current). */
 double pressure_scalar(struct gravel *g, struct temp_state *t);
+/* The same with the kinetic part (dof kB T, needs t) and the virial part
+ * chosen (compute pressure's ke, virial/pair keywords). */
+double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int virialflag);
 
 #endif

@@ -3,9 +3,9 @@
 agree with LAMMPS 2021 (lmp, 29 Sep 2021).
 
 Each tests/reference/compat/<deck>.in runs unchanged in gravel:
-  twod_disc, gas_box, twod_hex: every thermo value (temp, c_ temp/sphere with
+  twod_disc, gas_box, twod_hex, pressure: every thermo value (temp, c_ temp/sphere with
       dof all|rotate, c_ temp with extra/dof, ke, etotal, press, vol, atoms)
-      at every printed step of every run must match LAMMPS's log
+      c_ compute pressure, at every printed step of every run must match LAMMPS's log
       (<deck>.lammps.log) to 1e-6 relative (tools/logcompare);
   delete_atoms, change_box: the final atoms (write_dump: ids, types,
       positions, image flags) must equal LAMMPS's dump (<deck>.lammps.dump)
@@ -76,7 +76,7 @@ def check_dump(deck):
     print(f"{'PASS' if ok else 'FAIL'} lammps_compat_{deck}")
 
 
-for d in ("twod_disc", "gas_box", "twod_hex"):
+for d in ("twod_disc", "gas_box", "twod_hex", "pressure"):
     check_thermo(d)
 for d in ("delete_atoms", "change_box"):
     check_dump(d)
