@@ -63,6 +63,7 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_real(g, k->ini, 10, g->dt);
     eng_arg_real(g, k->ini, 11, 0.5 * g->dt);
     eng_arg_real(g, k->ini, 12, k->inertia);
+    eng_arg_pos_lo(g, k->ini, 13);
     eng_launch(g, k->ini, (size_t)a->n);
 }
 
