@@ -14,9 +14,9 @@
 #define FOP_FREEZE 2                /* f = torque = 0 */
 #define FOP_VISCOUS 3               /* f -= gamma_t v    prm: gamma per type */
 #define FOP_NVE_INITIAL 4           /* v += dtf/m f; x += dtv v          prm: dtv dtf */
-#define FOP_NVE_SPHERE_INITIAL 5    /* and omega += dtf/(0.4 m r^2) torque */
+#define FOP_NVE_SPHERE_INITIAL 5    /* and omega += dtf/(I m r^2) torque prm: dtv dtf I */
 #define FOP_NVE_FINAL 6             /* v += dtf/m f                      prm: dtf */
-#define FOP_NVE_SPHERE_FINAL 7      /* and omega += dtf/(0.4 m r^2) torque */
+#define FOP_NVE_SPHERE_FINAL 7      /* and omega += dtf/(I m r^2) torque prm: dtf I */
 
 /* The state an op may read or change, held in registers by the kernel. */
 struct fused_atom {
@@ -50,7 +50,7 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
             pos_add(&a->x, &a->xl, p[0] * a->v);
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_INITIAL) {
-                const REAL dtirotate = (p[1] / (REAL)0.4) / (a->r * a->r * a->m);
+                const REAL dtirotate = (p[1] / p[2]) / (a->r * a->r * a->m);
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif
@@ -59,7 +59,7 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
             a->v = a->v + dtfm * a->f;
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_FINAL) {
-                const REAL dtirotate = (p[0] / (REAL)0.4) / (a->r * a->r * a->m);
+                const REAL dtirotate = (p[0] / p[1]) / (a->r * a->r * a->m);
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif

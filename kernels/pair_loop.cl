@@ -183,6 +183,35 @@ __kernel void pair_gather(const int n, __global const int *ioff, __global const 
 #endif
 }
 
+/* The pair virial of the step, per particle, for the pressure (run only on
+ * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum
+ * over i's incidence records, in row order, of del * F componentwise (xx,
+ * yy, zz), del = x_i - x_j (minimum image), F what i receives. A contact's
+ * two sides give the same product, so sum_i w_i = sum over contacts of
+ * del * F, LAMMPS's ev_tally_xyz virial. Positions have not moved since the
+ * forces (final_integrate changes velocities only). */
+__kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
+                          __global const int *ioff, __global const REAL *recf,
+                          __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
+                          __global REAL *w)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    REAL3 s = (REAL3)(0);
+    const int s0 = ioff[i], cnt = ioff[i + 1] - s0;
+    for (int k = 0; k < cnt; k++) {
+        const int j = nlist[(size_t)i * maxn + k];
+        REAL3 del = xi - vload3(j, x);
+        del.x = MINIMG_X(del.x, Lx);
+        del.y = MINIMG_Y(del.y, Ly);
+        del.z = MINIMG_Z(del.z, Lz);
+        s += del * vload3((size_t)(s0 + k), recf);
+    }
+    vstore3((REAL)0.5 * s, i, w);
+}
+
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)
 {

@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "error.h"
+#include "temperature.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -56,6 +57,8 @@ static void compute_delete(struct compute *c)
         return;
     if (c->style && c->style->destroy)
         c->style->destroy(c);
+    else
+        free(c->data); /* plain state (e.g. a temperature's struct temp_state) */
     free(c->vector);
     free(c->peratom);
     free(c);
@@ -149,36 +152,23 @@ void cmd_uncompute(struct gravel *g, int argc, char **argv)
     gr_error(g, "unknown compute ID '%.64s'", argv[0]);
 }
 
-/* `compute_modify ID keyword value ...`. gravel's computes have no
- * modifiable settings; the implicit thermo_temp (thermo `temp` and `ke`)
- * takes LAMMPS' dynamic/dof (always on: dof follow the current atom count)
- * and extra/dof. */
+/* `compute_modify ID keyword value ...`: dynamic/dof and extra/dof of a
+ * temperature compute (temp, temp/sphere) or of the implicit thermo_temp
+ * (thermo `temp`, `ke`, `press`), as LAMMPS (src/temperature.h). Other
+ * computes have no settings to modify. */
 void cmd_compute_modify(struct gravel *g, int argc, char **argv)
 {
     if (argc < 3)
         gr_error(g, "expected: compute_modify ID keyword value ...");
-    if (strcmp(argv[0], "thermo_temp") != 0) {
-        struct compute *c = compute_get(g, argv[0], "compute_modify");
+    struct compute *c = compute_find(g, argv[0]);
+    if (!c && strcmp(argv[0], "thermo_temp") == 0) {
+        temp_modify(g, &g->thermo.temp, argc - 1, argv + 1);
+        return;
+    }
+    c = compute_get(g, argv[0], "compute_modify");
+    if (!c->temp)
         gr_error(g, "compute %s (%s) has no settings to modify", c->id, c->style->name);
-    }
-    double extra = g->thermo.extra_dof;
-    int set = g->thermo.extra_dof_set;
-    for (int i = 1; i < argc; i += 2) {
-        const char *kw = argv[i];
-        arg_need(g, argc, i, 1, kw);
-        if (strcmp(kw, "dynamic/dof") == 0 || strcmp(kw, "dynamic") == 0) {
-            if (!arg_yesno(g, argv[i + 1], kw))
-                gr_warn(g, "thermo_temp: gravel always counts the current atoms (dynamic/dof "
-                           "yes)");
-        } else if (strcmp(kw, "extra/dof") == 0 || strcmp(kw, "extra") == 0) {
-            extra = arg_double(g, argv[i + 1], kw);
-            set = 1;
-        } else {
-            gr_error(g, "unknown keyword '%.64s' (dynamic/dof, extra/dof)", kw);
-        }
-    }
-    g->thermo.extra_dof = extra;
-    g->thermo.extra_dof_set = set;
+    temp_modify(g, c->temp, argc - 1, argv + 1);
 }
 
 double compute_scalar(struct gravel *g, struct compute *c)

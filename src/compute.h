@@ -45,6 +45,8 @@ struct compute {
     double *peratom;            /* [atoms.n] or [atoms.n][cols] after compute_peratom, owned */
     int peratom_cap;
     void *data;                 /* style state */
+    struct temp_state *temp;    /* temperature computes (temp, temp/sphere): their dof
+                                 * and compute_modify settings (temperature.h); in data */
 };
 
 /* `compute ID group style args...` and `uncompute ID` (commands.def). */

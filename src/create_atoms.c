@@ -250,6 +250,8 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
         for (int t = 0; t < job->maxtry && !ok; t++) {
             for (int d = 0; d < 3; d++)
                 x[d] = lo[d] + rng_park_uniform(&rng) * (hi[d] - lo[d]);
+            if (g->dom.dimension == 2) /* LAMMPS: the z draw is made, then the mid-plane */
+                x[2] = lo[2] + 0.5 * (hi[2] - lo[2]);
             if (job->r && !region_match(job->r, x))
                 continue;
             if (job->overlap > 0 && grid_overlaps(g, &job->grid, x, job->overlap))

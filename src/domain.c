@@ -7,14 +7,10 @@
 
 #include "error.h"
 
-/* boundary x y z: each one or two letters of p f s m (lo face, hi face). */
-void cmd_boundary(struct gravel *g, int argc, char **argv)
+void domain_set_boundary(struct gravel *g, char **argv)
 {
-    (void)argc;
     static const char dimname[3] = {'x', 'y', 'z'};
     char bnd[3][2];
-    if (g->dom.box_exists)
-        gr_error(g, "must be used before the simulation box is created");
     for (int d = 0; d < 3; d++) {
         const char *s = argv[d];
         size_t n = strlen(s);
@@ -32,6 +28,8 @@ void cmd_boundary(struct gravel *g, int argc, char **argv)
             gr_error(g, "both faces of %c must be periodic ('p') or neither, got '%s'",
                      dimname[d], s);
     }
+    if (g->dom.box_exists && g->dom.dimension == 2 && bnd[2][0] != 'p')
+        gr_error(g, "cannot make z non-periodic in a 2d simulation");
     for (int d = 0; d < 3; d++) {
         g->dom.bnd[d][0] = bnd[d][0];
         g->dom.bnd[d][1] = bnd[d][1];
@@ -39,10 +37,21 @@ void cmd_boundary(struct gravel *g, int argc, char **argv)
     }
 }
 
+/* boundary x y z: each one or two letters of p f s m (lo face, hi face). */
+void cmd_boundary(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    if (g->dom.box_exists)
+        gr_error(g, "must be used before the simulation box is created");
+    domain_set_boundary(g, argv);
+}
+
 void domain_set_initial_box(struct gravel *g)
 {
     struct domain *dm = &g->dom;
     static const char dimname[3] = {'x', 'y', 'z'};
+    if (dm->dimension == 2 && !dm->periodic[2])
+        gr_error(g, "cannot run a 2d simulation with a non-periodic z dimension (boundary ... p)");
     for (int d = 0; d < 3; d++) {
         if (!isfinite(dm->lo[d]) || !isfinite(dm->hi[d]) || !(dm->lo[d] < dm->hi[d]))
             gr_error(g, "box bounds in %c must satisfy lo < hi, got %g %g", dimname[d],
@@ -86,6 +95,11 @@ void domain_shrink_wrap(struct gravel *g, const double lo[3], const double hi[3]
             gr_error(g, "illegal simulation box after shrink-wrapping %c: lo %g > hi %g",
                      "xyz"[d], dm->lo[d], dm->hi[d]);
     }
+}
+
+int domain_contact_periodic(const struct gravel *g, int d)
+{
+    return g->dom.periodic[d] && !(d == 2 && g->dom.dimension == 2);
 }
 
 double domain_volume(const struct gravel *g)

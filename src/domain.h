@@ -14,6 +14,10 @@
 /* LAMMPS' BIG: what INF stands for in region bounds. */
 #define DOMAIN_BIG 1.0e20
 
+/* Set the boundary flags from three words of p f s m (the `boundary` and
+ * `change_box ... boundary` arguments); errors leave the flags unchanged. */
+void domain_set_boundary(struct gravel *g, char **argv);
+
 /* Finish a box whose g->dom.lo/hi were just set (create_box, read_data), as
  * LAMMPS' Domain::set_initial_box(1): small[d] = 1e-4 * (hi - lo); faces with
  * 's' move outward by small; faces with 'm' record their position as the
@@ -26,6 +30,12 @@ void domain_set_initial_box(struct gravel *g);
  * 'f' faces and periodic dimensions are untouched. An empty extent (some
  * lo[d] > hi[d], no atoms) changes nothing. Errors if the box turns inside out. */
 void domain_shrink_wrap(struct gravel *g, const double lo[3], const double hi[3]);
+
+/* 1 if dimension d is periodic for wrapping, binning and minimum images.
+ * In 2d (g->dom.dimension == 2, set by the `dimension` command) z is
+ * periodic by LAMMPS's rule but thin: every atom stays in one z plane
+ * (fix enforce2d), so z is neither wrapped nor imaged and has one cell. */
+int domain_contact_periodic(const struct gravel *g, int d);
 
 /* Box volume (product of the three lengths). 0 before the box exists. */
 double domain_volume(const struct gravel *g);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "atoms.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "kernel_sources.h"
@@ -541,7 +542,7 @@ void eng_prepare(struct gravel *g)
     if (e->hist_n != 3)
         len += snprintf(opts + len, sizeof opts - (size_t)len, " -D HIST_N=%d", e->hist_n);
     for (int q = 0; q < 3; q++)
-        if (g->dom.periodic[q])
+        if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
     if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
         len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
@@ -577,6 +578,8 @@ void engine_destroy(struct gravel *g)
     free(e->hooks.force);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
+    if (e->virial)
+        clReleaseMemObject(e->virial);
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);

@@ -68,6 +68,9 @@ struct engine {
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
+    cl_kernel k_virial;         /* pair_virial, for the pressure (src/pressure.c) */
+    cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
+    int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
     double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */

@@ -42,6 +42,8 @@ static void set_defaults(struct gravel *g)
     g->neigh.style = NEIGH_BIN;
     g->neigh.sort_every = -1;
     g->thermo.lost = LOST_ERROR;
+    g->thermo.temp.kind = TEMP_TRANS; /* thermo_temp: compute temp of group all */
+    g->thermo.temp.groupbit = 1u;
     g->groups.n = 1;
     g->groups.used[0] = 1;
     strcpy(g->groups.name[0], "all");

@@ -37,6 +37,9 @@ struct lattice {
     double a[3];            /* spacing per dimension in box units (LAMMPS xlattice...) */
     double prim[3];         /* primitive cell edge lengths in box units (where points go;
                              * differs from a[] only with the `spacing` keyword) */
+    double cell[3];         /* primitive edge lengths in units of `scale` (1, sqrt(3) ...);
+                             * 0 after read_restart (then prim[] places the points) */
+    double scale;           /* the lattice constant */
     double origin[3];       /* fractional origin */
     int nbasis;
     double basis[8][3];     /* fractional basis positions */
@@ -44,7 +47,8 @@ struct lattice {
 
 struct domain {
     enum units units;
-    int dimension;
+    int dimension;          /* 2 or 3 (`dimension`, default 3); 2d: z periodic and thin,
+                             * atoms in one z plane (domain_contact_periodic) */
     int box_exists;
     char bnd[3][2];         /* boundary flag per dimension and face (lo, hi) */
     int periodic[3];
@@ -121,6 +125,19 @@ struct neigh_settings {
 
 enum thermo_lost { LOST_ERROR, LOST_WARN, LOST_IGNORE };
 
+/* A temperature (src/temperature.h): what it counts and its degrees of
+ * freedom; the implicit thermo_temp and every compute temp, temp/sphere. */
+enum temp_kind { TEMP_TRANS, TEMP_SPHERE_ALL, TEMP_SPHERE_ROTATE };
+struct temp_state {
+    enum temp_kind kind;
+    unsigned groupbit;
+    double extra_dof;           /* compute_modify extra/dof (default: dimension) */
+    int extra_set;              /* extra/dof given (else the dimension at use) */
+    int dynamic;                /* compute_modify dynamic/dof yes */
+    double dof;                 /* counted at run setup (temp_setup) */
+    int dof_valid;              /* dof holds the count of the current run */
+};
+
 #define GR_MAXTHERMO 64
 struct thermo_settings {
     int every;                      /* 0 = first and last step only */
@@ -130,8 +147,8 @@ struct thermo_settings {
     int norm;                       /* thermo_modify norm (lj default yes) */
     int norm_set;
     int norm_user;                  /* the value given to thermo_modify norm */
-    int extra_dof_set;              /* compute_modify thermo_temp extra/dof given */
-    double extra_dof;               /* its value (default: dimension) */
+    struct temp_state temp;         /* the implicit thermo_temp (compute temp, group all) */
+    char temp_id[GR_NAMELEN];       /* thermo_modify temp ID; "" = thermo_temp */
     int flush;
     enum thermo_lost lost;
     char *format_line;              /* thermo_modify format line "..." */

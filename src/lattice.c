@@ -6,7 +6,11 @@
  * primitive vectors (1 for cubic, sqrt(8) for hcp); for other units the
  * scale is the lattice constant itself. `spacing sx sy sz` replaces the
  * per-dimension spacings by sx*a, sy*a, sz*a; `origin` shifts the basis by a
- * fraction of a cell; `orient` is accepted only with the default axes. */
+ * fraction of a cell; `orient` is accepted only with the default axes.
+ * The 2d styles sq, sq2 (square with a centre atom) and hex (rectangular
+ * cell a x sqrt(3) a, two atoms) need `dimension 2`, the others 3d,
+ * as LAMMPS; in 2d with units lj rho* is per area, a = (nbasis/(rho* A))^(1/2),
+ * and the z spacing is a (the cell's third vector is (0, 0, 1)). */
 #include "lattice.h"
 
 #include <math.h>
@@ -28,6 +32,7 @@ void cmd_lattice(struct gravel *g, int argc, char **argv)
     static const double sc[1][3] = {{0, 0, 0}};
     static const double bcc[2][3] = {{0, 0, 0}, {0.5, 0.5, 0.5}};
     static const double fcc[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+    static const double sq2[2][3] = {{0, 0, 0}, {0.5, 0.5, 0}};
     static const double hcp[4][3] = {
         {0, 0, 0}, {0.5, 0.5, 0}, {0.5, 5.0 / 6.0, 0.5}, {0, 1.0 / 3.0, 0.5}};
     static const double dia[8][3] = {{0, 0, 0},          {0, 0.5, 0.5},      {0.5, 0, 0.5},
@@ -56,14 +61,26 @@ void cmd_lattice(struct gravel *g, int argc, char **argv)
     } else if (!strcmp(st, "diamond")) {
         lat.style = LAT_DIAMOND;
         set_basis(&lat, 8, dia);
-    } else if (!strcmp(st, "sq") || !strcmp(st, "sq2") || !strcmp(st, "hex")) {
-        gr_error(g, "lattice '%s' is two-dimensional and gravel is 3d only", st);
+    } else if (!strcmp(st, "sq")) {
+        lat.style = LAT_SQ;
+        set_basis(&lat, 1, sc);
+    } else if (!strcmp(st, "sq2")) {
+        lat.style = LAT_SQ2;
+        set_basis(&lat, 2, sq2);
+    } else if (!strcmp(st, "hex")) {
+        lat.style = LAT_HEX;
+        set_basis(&lat, 2, sq2);
+        cell[1] = sqrt(3.0);
     } else if (!strcmp(st, "custom")) {
         gr_error(g, "lattice custom is not supported: use sc, bcc, fcc, hcp or diamond");
     } else {
-        gr_error(g, "unknown lattice style '%.32s': expected none, sc, bcc, fcc, hcp or diamond",
-                 st);
+        gr_error(g, "unknown lattice style '%.32s': expected none, sc, bcc, fcc, hcp, diamond, "
+                    "sq, sq2 or hex", st);
     }
+    int two_d = lat.style == LAT_SQ || lat.style == LAT_SQ2 || lat.style == LAT_HEX;
+    if (lat.style != LAT_NONE && two_d != (g->dom.dimension == 2))
+        gr_error(g, "lattice style %s is incompatible with a %dd simulation (2d: sq, sq2, hex; "
+                    "3d: sc, bcc, fcc, hcp, diamond)", st, g->dom.dimension);
     if (argc < 2)
         gr_error(g, "missing scale after lattice style %s", st);
     double scale = arg_positive(g, argv[1], "lattice scale");
@@ -113,12 +130,17 @@ void cmd_lattice(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s'", kw);
         }
     }
+    if (two_d && lat.origin[2] != 0.0)
+        gr_error(g, "a 2d lattice needs origin z = 0");
     double a = scale;
     if (g->dom.units == UNITS_LJ) {
-        double vol = cell[0] * cell[1] * cell[2];
-        a = pow(lat.nbasis / vol / scale, 1.0 / 3.0);
+        /* rho* is a number density per area in 2d: a = (nbasis / (rho* A))^(1/2) */
+        double vol = two_d ? cell[0] * cell[1] : cell[0] * cell[1] * cell[2];
+        a = pow(lat.nbasis / vol / scale, two_d ? 0.5 : 1.0 / 3.0);
     }
+    lat.scale = a;
     for (int d = 0; d < 3; d++) {
+        lat.cell[d] = cell[d];
         lat.prim[d] = cell[d] * a;
         lat.a[d] = spacing_set ? spacing[d] * a : cell[d] * a;
     }
@@ -155,9 +177,14 @@ void lattice_foreach(struct gravel *g, const double lo[3], const double hi[3],
                 for (int m = 0; m < lat->nbasis; m++) {
                     double x[3];
                     long idx[3] = {i, j, k};
-                    for (int d = 0; d < 3; d++)
-                        x[d] = (idx[d] + lat->basis[m][d]) * lat->prim[d] +
+                    /* LAMMPS's lattice2box order: (cell (i + b)) scale + origin,
+                     * so the coordinate bits (hashed by velocity loop geom) agree */
+                    for (int d = 0; d < 3; d++) {
+                        double u = idx[d] + lat->basis[m][d];
+                        x[d] = (lat->cell[d] > 0 ? (lat->cell[d] * u) * lat->scale
+                                                 : u * lat->prim[d]) +
                                lat->origin[d] * lat->a[d];
+                    }
                     if (x[0] < lo[0] || x[0] >= hi[0] || x[1] < lo[1] || x[1] >= hi[1] ||
                         x[2] < lo[2] || x[2] >= hi[2])
                         continue;

@@ -10,7 +10,8 @@
 
 #include "gravel.h"
 
-enum lattice_style { LAT_NONE = 0, LAT_SC, LAT_BCC, LAT_FCC, LAT_HCP, LAT_DIAMOND };
+enum lattice_style { LAT_NONE = 0, LAT_SC, LAT_BCC, LAT_FCC, LAT_HCP, LAT_DIAMOND, LAT_SQ, LAT_SQ2,
+                     LAT_HEX };
 
 /* Called for every lattice point inside [lo, hi) (box units) with the index
  * of its basis atom; it may raise errors. */

@@ -518,7 +518,7 @@ int nbr_decide(struct gravel *g, int forced)
     for (int q = 0; q < 3; q++)
         eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 13 + q, g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
+        eng_arg_real(g, k, 13 + q, domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
     /* the fused initial_integrate ops (src/fused.h) run first */
     int a = 16;
     eng_arg_mem(g, k, a++, e->fused.ops);
@@ -589,7 +589,7 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     eng_arg_mem(g, k, 2, e->a.x);
     eng_arg_mem(g, k, 3, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, 4 + q, d->periodic[q]);
+        eng_arg_int(g, k, 4 + q, domain_contact_periodic(g, q));
     for (int q = 0; q < 3; q++) {
         eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
         eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
@@ -683,8 +683,8 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
         b->lo[q] = d->lo[q];
         b->hi[q] = d->hi[q];
         b->inv[q] = b->nc[q] / (d->hi[q] - d->lo[q]);
-        b->list.L[q] = d->periodic[q] ? d->hi[q] - d->lo[q] : 0.0;
-        if (d->periodic[q] && d->hi[q] - d->lo[q] < 2 * b->cutmax)
+        b->list.L[q] = domain_contact_periodic(g, q) ? d->hi[q] - d->lo[q] : 0.0;
+        if (domain_contact_periodic(g, q) && d->hi[q] - d->lo[q] < 2 * b->cutmax)
             gr_error(g, "periodic box length %g in %c is less than twice the neighbor cut-off "
                         "%g (2 x largest radius + skin)", d->hi[q] - d->lo[q], "xyz"[q],
                      b->cutmax);
@@ -723,7 +723,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
                 eng_arg_int(g, k, a++, b->nc[q]);
         }
         for (int q = 0; q < 3; q++)
-            eng_arg_int(g, k, a++, g->dom.periodic[q]);
+            eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
         for (int q = 0; q < 3; q++)
             eng_arg_coord(g, k, a++, q, b->lo[q]);
         if (!b->multi)
@@ -1242,7 +1242,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     if (asym)
         return 0;
     for (int q = 0; q < 3; q++)
-        l->L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
     b->ago = s->ago;
     b->built = 1;
     b->old_valid = e->history;

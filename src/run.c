@@ -46,7 +46,7 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
-    e->k_pair = NULL;
+    e->k_pair = e->k_virial = NULL;
     if (!p)
         return;
     if (!p->coeff_set)
@@ -65,6 +65,7 @@ static void pair_init(struct gravel *g)
     eng_write_reals(gg, e->pair_param, (size_t)nt * nt * np, par);
     free(par);
     e->k_pair = eng_kernel(g, "pair_contacts");
+    e->k_virial = eng_kernel(g, "pair_virial");
 }
 
 /* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes

@@ -4,7 +4,8 @@
  * LAMMPS semantics for atom_style sphere: `diameter` changes the radius only
  * (not the mass, as LAMMPS 2021 checked); `density` sets the mass from the
  * current radius, mass = 4/3 pi r^3 rho, or mass = rho for a point particle
- * (radius 0); `mass` sets the mass directly. Keywords apply in order.
+ * (radius 0), also in 2d; `density/disc` (2d only) sets mass = pi r^2 rho
+ * (an area density); `mass` sets the mass directly. Keywords apply in order.
  * Coordinates set in periodic dimensions are wrapped into the box. Values of
  * type, mass, diameter, density, omega, x y z and vx vy vz may be v_name, an
  * atom-style variable evaluated for every atom when the keyword applies.
@@ -232,8 +233,9 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     a->radius[i] = 0.5 * VAL(p, d, i), count++;
                 }
         } else if (!strcmp(kw, "density") || !strcmp(kw, "density/disc")) {
-            if (kw[7] == '/')
-                gr_error(g, "density/disc is for 2d and gravel is 3d only");
+            int disc = kw[7] == '/';
+            if (disc && g->dom.dimension != 2)
+                gr_error(g, "density/disc requires a 2d simulation (dimension 2)");
             double rv = 0;
             const double *p = kw_value(g, v[0], "density", &rv, buf, dry);
             if (!p)
@@ -244,7 +246,9 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     if (!(rho > 0))
                         gr_error(g, "density %g from %s for atom %lld must be positive", rho,
                                  v[0], (long long)a->tag[i]);
-                    a->rmass[i] = r > 0 ? 4.0 * M_PI / 3.0 * r * r * r * rho : rho;
+                    a->rmass[i] = r <= 0 ? rho
+                                  : disc ? M_PI * r * r * rho
+                                         : 4.0 * M_PI / 3.0 * r * r * r * rho;
                     count++;
                 }
         } else if (!strcmp(kw, "omega")) {

@@ -36,11 +36,11 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
 {
     (void)argc;
     int d = arg_int(g, argv[0], "dimension");
-    if (d == 2)
-        gr_error(g, "2d simulations are not supported: gravel is 3d only");
-    if (d != 3)
-        gr_error(g, "dimension must be 3, got %d", d);
-    g->dom.dimension = 3;
+    if (d != 2 && d != 3)
+        gr_error(g, "dimension must be 2 or 3, got %d", d);
+    if (g->dom.box_exists)
+        gr_error(g, "dimension must be set before the simulation box is created");
+    g->dom.dimension = d;
 }
 
 /* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted. */

@@ -21,8 +21,10 @@
 #include "error.h"
 #include "fix.h"
 #include "output.h"
+#include "pressure.h"
 #include "run.h"
 #include "styles.h"
+#include "temperature.h"
 #include "thermo.h"
 #include "variable.h"
 
@@ -30,7 +32,9 @@ enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
-    KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_COUNT
+    KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
+    KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
+    KW_COUNT
 };
 #define KIND_COMPUTE (-1)
 #define KIND_VARIABLE (-2)
@@ -105,13 +109,14 @@ static const struct {
     [KW_YHI] = {"yhi", "Yhi", V_FLOAT},         [KW_ZLO] = {"zlo", "Zlo", V_FLOAT},
     [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
     [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
-    [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT},
+    [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT}, [KW_PRESS] = {"press", "Press", V_FLOAT},
+    [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
 };
 
-/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". gravel
- * computes no virial (press), and for granular flows the atom count (pours,
- * lost atoms), kinetic energy and volume say more than a temperature and
- * the always-zero epair/emol, so `one` prints those. */
+/* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
+ * granular flows the atom count (pours, lost atoms), kinetic energy and
+ * volume say more than a temperature and the always-zero epair/emol, so
+ * `one` prints those. */
 static const char *const style_one[] = {"step", "atoms", "ke", "pe", "etotal", "vol"};
 static const char *const style_multi[] = {"step", "atoms", "etotal", "ke", "pe", "vol"};
 
@@ -261,7 +266,7 @@ const char *output_format_fix(const char *f, int want_int, char *out)
 static int implicit_compute(struct gravel *g, const char *s)
 {
     if (strcmp(s, "c_thermo_temp") == 0 && !compute_find(g, "thermo_temp"))
-        return KW_TEMP;
+        return KW_THERMO_TEMP;
     if (strcmp(s, "c_thermo_pe") == 0 && !compute_find(g, "thermo_pe"))
         return KW_PE;
     return -1;
@@ -320,10 +325,9 @@ static void check_keyword(struct gravel *g, const char *s)
                         "vectors)", s);
         return;
     }
-    if (strcmp(s, "press") == 0)
-        gr_error(g, "'press' is not available: gravel's contact models compute no virial");
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
-                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair emol cpuremain c_ID c_ID[N] "
+                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp press epair emol cpuremain c_ID "
+                "c_ID[N] "
                 "v_name)", s);
 }
 
@@ -490,11 +494,21 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
                 gr_error(g, "format must be followed by line, int, float, none or a column "
                             "number, got '%.64s'", what);
             }
-        } else if (strcmp(kw, "temp") == 0 || strcmp(kw, "press") == 0 ||
-                   strcmp(kw, "lost/bond") == 0 || strcmp(kw, "warn") == 0) {
+        } else if (strcmp(kw, "temp") == 0) {
+            arg_need(g, argc, i, 1, kw);
+            const char *id = argv[++i];
+            struct compute *c = compute_get(g, id, "thermo_modify temp");
+            if (!c->temp)
+                gr_error(g, "thermo_modify temp: compute %s (%s) does not compute a "
+                            "temperature", id, c->style->name);
+            if (c->igroup != 0)
+                gr_warn(g, "temperature for thermo pressure is not for group all");
+            snprintf(t->temp_id, sizeof t->temp_id, "%s", id);
+        } else if (strcmp(kw, "press") == 0 || strcmp(kw, "lost/bond") == 0 ||
+                   strcmp(kw, "warn") == 0) {
             gr_error(g, "keyword '%s' is not supported by gravel", kw);
         } else {
-            gr_error(g, "unknown keyword '%.64s' (norm, format, flush, lost, line)", kw);
+            gr_error(g, "unknown keyword '%.64s' (norm, format, flush, lost, line, temp)", kw);
         }
     }
     t->modified = 1;
@@ -534,6 +548,15 @@ void thermo_init(struct gravel *g)
         } else {
             gr_error(g, "thermo_style: unknown keyword '%s'", s);
         }
+    }
+    /* the temperatures count their degrees of freedom at run setup */
+    temp_setup(g, &g->thermo.temp);
+    if (t->temp_id[0]) {
+        struct compute *c = compute_find(g, t->temp_id);
+        if (!c || !c->temp)
+            gr_error(g, "thermo_modify temp: compute '%s' does not exist or is not a "
+                        "temperature", t->temp_id);
+        temp_setup(g, c->temp);
     }
     if (t->every_var && !var_retrieve(g, t->every_var))
         gr_error(g, "thermo: variable '%s' is not defined", t->every_var);
@@ -581,47 +604,14 @@ void thermo_init(struct gravel *g)
 
 /* ---- values -------------------------------------------------------------------- */
 
-/* Degrees of freedom of LAMMPS' thermo_temp compute: dim x N - extra, extra
- * = dim unless `compute_modify thermo_temp extra/dof`. Counted from the
- * current atoms each time (LAMMPS' dynamic/dof yes). */
-static double temp_dof(const struct gravel *g)
-{
-    int dim = g->dom.dimension;
-    double extra = g->thermo.extra_dof_set ? g->thermo.extra_dof : dim;
-    return (double)dim * g->atoms.n - extra;
-}
-
-/* Translational kinetic energy as LAMMPS' thermo `ke` (compute temp scalar x
- * dof/2 x kB): 1/2 sum m v^2, and 0 when the system has no degrees of freedom
- * left (dim x N - dim <= 0, e.g. a single atom); -0 when they are negative
- * (no atoms: LAMMPS multiplies its zero temperature by dof < 0 and prints
- * -0, e.g. step 0 of examples/pour/in.pour). */
+/* Kinetic energy as LAMMPS' thermo `ke`: T x dof/2 x kB of the thermo
+ * temperature (translational with thermo_temp, plus rotational with a
+ * temp/sphere from thermo_modify temp); 0 when it has no dof. */
 static double kinetic_energy(struct gravel *g)
 {
-    const struct atoms *a = &g->atoms;
-    double dof = temp_dof(g);
-    if (dof <= 0)
-        return dof < 0 ? -0.0 : 0.0;
-    const int *order = atoms_tag_order(g);
-    double sum = 0.0;
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        const double *v = a->v + 3 * i;
-        sum += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    }
-    return 0.5 * compute_mvv2e(g) * sum;
-}
-
-/* Boltzmann constant in the current units: LAMMPS 2021's force->boltz
- * (CODATA 2006), so temperatures print LAMMPS's digits. */
-static double boltzmann(const struct gravel *g)
-{
-    switch (g->dom.units) {
-    case UNITS_SI: return 1.3806504e-23;
-    case UNITS_CGS: return 1.3806504e-16;
-    case UNITS_LJ: break;
-    }
-    return 1.0;
+    struct temp_state *t = temp_thermo(g);
+    double temp = temp_scalar(g, t);
+    return temp * 0.5 * temp_dof(g, t) * temp_boltz(g);
 }
 
 static double volume(const struct gravel *g)
@@ -696,11 +686,9 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_PE:
     case KW_EPAIR:
     case KW_EMOL: return 0.0;
-    case KW_TEMP: {
-        /* LAMMPS compute temp: 2 KE / (dof kB), dof = dim N - dim; intensive */
-        double dof = temp_dof(g);
-        return dof > 0 ? 2.0 * kinetic_energy(g) / (dof * boltzmann(g)) : 0.0;
-    }
+    case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
+    case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);
+    case KW_PRESS: return pressure_scalar(g, temp_thermo(g)); /* intensive */
     case KW_VOL: return volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
@@ -722,7 +710,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP)
+        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP || k == KW_PRESS)
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
@@ -731,7 +719,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if ((k = implicit_compute(g, name)) >= 0) {
         bigint iv;
         int isint;
-        if (k == KW_TEMP)
+        if (k == KW_THERMO_TEMP)
             run_sync_host(g);
         *out = keyword_value(g, k, &iv, &isint);
         return 1;
@@ -792,6 +780,7 @@ const char *thermo_line_text(struct gravel *g)
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
         if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_TEMP ||
+            st->kind[i] == KW_PRESS || st->kind[i] == KW_THERMO_TEMP ||
             st->kind[i] == KIND_COMPUTE) {
             run_sync_host(g);
             break;

@@ -5,7 +5,7 @@
  * [-0.5, 0.5) (dist uniform, default) or standard normal (dist gaussian);
  * then, as LAMMPS, zero the total momentum (mom yes, default) and the angular
  * momentum (rot yes; default no), and rescale to temperature T in LAMMPS'
- * sense (compute temp): T = sum m v^2 / (dof kB) with dof = 3 N - 3 over the
+ * sense (compute temp): T = sum m v^2 / (dof kB) with dof = dim N - dim over the
  * group. The random numbers are LAMMPS's, bit for bit (src/random.c,
  * RanPark), so the velocities are those `lmp` gives on one process:
  *   loop all (default): one stream seeded with seed, three draws for every
@@ -50,11 +50,12 @@ static double boltz(const struct gravel *g)
 }
 
 /* Temperature of a group as LAMMPS compute temp: sum of m v.v in storage
- * order, times mvv2e / (dof kB) with dof = 3N - 3 (LAMMPS's operation order,
+ * order, times mvv2e / (dof kB) with dof = dim N - dim (LAMMPS's operation order,
  * so a rescale to T gives its factor to the bit). Returns -1 when dof <= 0. */
 static double group_temp(const struct gravel *g, int ig)
 {
-    double dof = 3.0 * (double)group_count(g, ig) - 3.0;
+    int dim = g->dom.dimension;
+    double dof = (double)dim * (double)group_count(g, ig) - dim;
     if (dof <= 0)
         return -1;
     const struct atoms *a = &g->atoms;
@@ -110,11 +111,12 @@ static void draw3(struct rng_park *rng, int gaussian, double r[3])
         r[d] = gaussian ? rng_park_gaussian(rng) : rng_park_uniform(rng) - 0.5;
 }
 
-static void assign(struct atoms *a, int i, const double r[3])
+/* v = r / sqrt(m); in 2d vz = 0 (the draw is made all the same, as LAMMPS). */
+static void assign(struct atoms *a, int i, const double r[3], int dim)
 {
     double f = 1.0 / sqrt(a->rmass[i]);
     for (int d = 0; d < 3; d++)
-        a->v[3 * i + d] = r[d] * f;
+        a->v[3 * i + d] = d < dim ? r[d] * f : 0.0;
 }
 
 struct create_res {
@@ -149,7 +151,7 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
                 continue;
             rng_park_reset_coord(&rng, seed, a->x + 3 * i);
             draw3(&rng, o->gaussian, r);
-            assign(a, i, r);
+            assign(a, i, r, g->dom.dimension);
         }
     } else if (o->loop == LOOP_LOCAL) {
         rng_park_init(&rng, seed);
@@ -159,7 +161,7 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
             if (!(a->mask[i] & bit))
                 continue;
             draw3(&rng, o->gaussian, r);
-            assign(a, i, r);
+            assign(a, i, r, g->dom.dimension);
         }
     } else {
         /* IDs 1..N: draws for every ID, assigned to the group's atoms */
@@ -184,7 +186,7 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
             draw3(&rng, o->gaussian, r);
             int i = res->map[t];
             if (a->mask[i] & bit)
-                assign(a, i, r);
+                assign(a, i, r, g->dom.dimension);
         }
     }
     if (o->mom)

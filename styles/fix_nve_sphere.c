@@ -1,35 +1,44 @@
 /* fix_nve_sphere.c - `fix ID group nve/sphere [update dipole|dipole/dlm]
  * [disc]`: LAMMPS' velocity Verlet for finite-size spheres (kernels in
- * kernels/fix_nve_sphere.cl). Only the plain sphere update is supported;
- * the dipole and disc options are rejected with a clear error. */
+ * kernels/fix_nve_sphere.cl), moment of inertia 0.4 m r^2, or 0.5 m r^2
+ * with `disc` (2d only, as LAMMPS). The dipole update is rejected with a
+ * clear error (no point dipoles). */
 #include <string.h>
 
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
 
+struct kern {
+    cl_kernel ini, fin;
+    double inertia;             /* 0.4 sphere, 0.5 disc */
+    double prm[3];              /* fused op parameters (dtv dtf I, or dtf I) */
+};
+
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
+    double inertia = 0.4;
     for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "update") || !strcmp(argv[i], "disc"))
-            gr_error(g, "fix nve/sphere keyword '%s' is not supported (point dipoles and 2d "
-                        "discs are not modeled)", argv[i]);
-        gr_error(g, "unknown fix nve/sphere keyword '%.64s'", argv[i]);
+        if (!strcmp(argv[i], "update"))
+            gr_error(g, "fix nve/sphere keyword 'update' is not supported (point dipoles are "
+                        "not modeled)");
+        if (!strcmp(argv[i], "disc")) {
+            if (g->dom.dimension != 2)
+                gr_error(g, "fix nve/sphere disc requires a 2d simulation (dimension 2)");
+            inertia = 0.5;
+            continue;
+        }
+        gr_error(g, "unknown fix nve/sphere keyword '%.64s' (disc)", argv[i]);
     }
+    f->data = gr_calloc(g, 1, sizeof(struct kern));
+    ((struct kern *)f->data)->inertia = inertia;
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     f->needs = NEED_ROTATION;
     f->sources[f->nsources++] = "fix_nve_sphere.cl";
 }
 
-struct kern {
-    cl_kernel ini, fin;
-    double prm[2];              /* fused op parameters (dtv dtf, or dtf) */
-};
-
 static void init(struct gravel *g, struct fix *f)
 {
-    if (!f->data)
-        f->data = gr_calloc(g, 1, sizeof(struct kern));
     struct kern *k = f->data;
     k->ini = eng_kernel(g, "nve_sphere_initial");
     k->fin = eng_kernel(g, "nve_sphere_final");
@@ -53,7 +62,8 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->ini, 9, a->rmass);
     eng_arg_real(g, k->ini, 10, g->dt);
     eng_arg_real(g, k->ini, 11, 0.5 * g->dt);
-    eng_arg_pos_lo(g, k->ini, 12);
+    eng_arg_real(g, k->ini, 12, k->inertia);
+    eng_arg_pos_lo(g, k->ini, 13);
     eng_launch(g, k->ini, (size_t)a->n);
 }
 
@@ -73,6 +83,7 @@ static void final_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->fin, 7, a->radius);
     eng_arg_mem(g, k->fin, 8, a->rmass);
     eng_arg_real(g, k->fin, 9, 0.5 * g->dt);
+    eng_arg_real(g, k->fin, 10, k->inertia);
     eng_launch(g, k->fin, (size_t)a->n);
 }
 
@@ -84,12 +95,14 @@ static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op 
     if (hook == HOOK_INITIAL_INTEGRATE) {
         k->prm[0] = g->dt;
         k->prm[1] = 0.5 * g->dt;
+        k->prm[2] = k->inertia;
         op->kind = FOP_NVE_SPHERE_INITIAL;
-        op->nprm = 2;
+        op->nprm = 3;
     } else if (hook == HOOK_FINAL_INTEGRATE) {
         k->prm[0] = 0.5 * g->dt;
+        k->prm[1] = k->inertia;
         op->kind = FOP_NVE_SPHERE_FINAL;
-        op->nprm = 1;
+        op->nprm = 2;
     } else {
         return 0;
     }

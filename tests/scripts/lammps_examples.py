@@ -46,16 +46,15 @@ DECKS = [
 
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
-    "pour/in.pour.2d": "2d simulations are not supported",
-    "pour/in.pour.2d.molecule": "2d simulations are not supported",
-    "granular/in.pour.drum": "unknown command 'change_box'",
-    "granular/in.pour.flatwall": "unknown command 'change_box'",
+    "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
+    "granular/in.pour.drum": "keyword 'rotate' is not supported",
+    "granular/in.pour.flatwall": "fix wall/gran model 'granular' is not supported yet",
     "granregion/in.granregion.box": "unknown pair style 'hybrid'",
     "granregion/in.granregion.funnel": "unknown command 'comm_style'",
     "granregion/in.granregion.mixer": "unknown command 'comm_style'",
-    "multi/in.granular": "2d simulations are not supported",
-    "multi/in.powerlaw": "2d simulations are not supported",
-    "multi/in.colloid": "2d simulations are not supported",
+    "multi/in.granular": "triclinic boxes are not supported",
+    "multi/in.powerlaw": "triclinic boxes are not supported",
+    "multi/in.colloid": "unknown pair style 'colloid'",
     "rigid/in.rigid.gravity": "unknown fix style 'property/atom'",
 }
 

@@ -37,7 +37,20 @@ TEST(lattice_spacings)
     CHECK(g->dom.lat.origin[0] == 0.5 && g->dom.lat.nbasis == 4);
     gr_destroy(g);
     CHECK_ERROR("lattice fcc -1\n", "lattice scale must be positive", 1);
-    CHECK_ERROR("lattice sq 1\n", "two-dimensional", 1);
+    CHECK_ERROR("lattice sq 1\n", "incompatible with a 3d simulation", 1);
+    CHECK_ERROR("dimension 2\nlattice fcc 1\n", "incompatible with a 2d simulation", 2);
+    /* 2d, units lj: a = (nbasis / (rho* A))^(1/2), LAMMPS 2021's spacings */
+    g = test_engine();
+    CHECK(test_script(g, "dimension 2\nlattice sq 0.8\n") == GR_OK);
+    CHECK_NEAR(g->dom.lat.a[0], 1.1180340, 1e-7);
+    CHECK_NEAR(g->dom.lat.a[2], 1.1180340, 1e-7);
+    CHECK(test_script(g, "lattice hex 0.8\n") == GR_OK); /* lmp: 1.2014057 2.0808957 1.2014057 */
+    CHECK_NEAR(g->dom.lat.a[0], 1.2014057, 1e-7);
+    CHECK_NEAR(g->dom.lat.a[1], 2.0808957, 1e-7);
+    CHECK(g->dom.lat.nbasis == 2 && g->dom.lat.basis[1][1] == 0.5);
+    CHECK(test_script(g, "lattice sq2 0.5\n") == GR_OK); /* (2 / 0.5)^(1/2) */
+    CHECK_NEAR(g->dom.lat.a[1], 2.0, 1e-15);
+    gr_destroy(g);
     CHECK_ERROR("lattice foo 1\n", "unknown lattice style 'foo'", 1);
     CHECK_ERROR("lattice fcc 1 origin 0 0 1\n", "origin values must be in [0, 1)", 1);
     CHECK_ERROR("lattice fcc 1 orient x 1 1 0\n", "only the default orientation", 1);

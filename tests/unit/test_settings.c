@@ -27,8 +27,15 @@ TEST(dimension_atom_style)
     CHECK(test_script(g, "dimension 3\natom_style sphere\natom_style sphere 1\n") == GR_OK);
     CHECK(g->dom.dimension == 3);
     gr_destroy(g);
-    CHECK_ERROR("dimension 2\n", "2d simulations are not supported", 1);
-    CHECK_ERROR("dimension 4\n", "dimension must be 3", 1);
+    g = test_engine();
+    CHECK(test_script(g, "dimension 2\n") == GR_OK);
+    CHECK(g->dom.dimension == 2);
+    gr_destroy(g);
+    CHECK_ERROR("dimension 4\n", "dimension must be 2 or 3", 1);
+    CHECK_ERROR("dimension 2\nboundary p p f\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\n",
+                "non-periodic z", 4);
+    CHECK_ERROR("region b block 0 1 0 1 0 1\ncreate_box 1 b\ndimension 2\n",
+                "before the simulation box", 3);
     CHECK_ERROR("atom_style atomic\n", "atom_style 'atomic' is not supported", 1);
     CHECK_ERROR("atom_style sphere 2\n", "radvary flag must be between 0 and 1", 1);
 }

@@ -271,7 +271,6 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom f_1\n", "invalid fix reference", 1);
-    FX_CHECK_ERROR("thermo_style custom step press\n", "no virial", 1);
     FX_CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
     FX_CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
     FX_CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
@@ -281,7 +280,10 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_modify format\n", "needs 1 value", 1);
     FX_CHECK_ERROR("thermo_modify lost maybe\n", "error, warn or ignore", 1);
     FX_CHECK_ERROR("thermo_modify norm perhaps\n", "expected yes or no", 1);
-    FX_CHECK_ERROR("thermo_modify temp t\n", "not supported", 1);
+    FX_CHECK_ERROR("thermo_modify temp t\n", "unknown compute ID 't'", 1);
+    FX_CHECK_ERROR("compute k all ke\nthermo_modify temp k\n", "does not compute a temperature", 2);
+    FX_CHECK_ERROR("compute t all temp/sphere dof some\n", "all or rotate", 1);
+    FX_CHECK_ERROR("compute t all temp/sphere bias b\n", "bias is not supported", 1);
     FX_CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
     FX_CHECK_ERROR("compute_modify thermo_temp dynamic/dof maybe\n", "yes or no", 1);
     FX_CHECK_ERROR("compute_modify thermo_temp extra/dof x\n", "expected a number", 1);

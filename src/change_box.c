@@ -1,0 +1,205 @@
+/* change_box.c - `change_box group-ID op args ... [units lattice|box]` as
+ * LAMMPS (change_box.cpp), orthogonal boxes:
+ *   x|y|z final lo hi     set the bounds
+ *   x|y|z delta dlo dhi   add to the bounds
+ *   x|y|z scale f         scale the length about the centre
+ *   boundary bx by bz     new boundary flags (as `boundary`); image flags of
+ *                         dimensions that become non-periodic are reset
+ *   set                   remember the current box for the next remap
+ *   remap                 map the group's atoms from the remembered box
+ *                         (initially the box before this command) to the
+ *                         current one, keeping their fractional coordinates
+ *   ortho                 accepted (boxes are orthogonal)
+ * Operations run in order; units lattice (the default) multiplies final and
+ * delta values by the lattice spacings. Each box change prints the new box.
+ * Afterwards shrink-wrapped faces are refitted, atoms are wrapped into
+ * periodic dimensions, and atoms left outside a fixed face are lost with a
+ * warning ("Lost atoms via change_box"). Triclinic boxes (triclinic, xy, xz,
+ * yz) and the volume style are not supported (clear errors). */
+#include <math.h>
+#include <string.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "command.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+
+enum { OP_FINAL, OP_DELTA, OP_SCALE, OP_BOUNDARY, OP_SET, OP_REMAP, OP_ORTHO };
+
+struct op {
+    int kind, dim;
+    double v[2];
+    char **bnd;
+};
+
+void cmd_change_box(struct gravel *g, int argc, char **argv)
+{
+    domain_require_box(g);
+    int ig = arg_group(g, argv[0]);
+    struct op ops[64];
+    int nops = 0, lattice = 1;
+    for (int i = 1; i < argc;) {
+        const char *w = argv[i];
+        if (nops == 64)
+            gr_error(g, "too many operations (at most 64)");
+        struct op *o = &ops[nops];
+        memset(o, 0, sizeof *o);
+        if (!strcmp(w, "x") || !strcmp(w, "y") || !strcmp(w, "z")) {
+            o->dim = w[0] - 'x';
+            arg_need(g, argc, i, 1, w);
+            const char *st = argv[i + 1];
+            if (!strcmp(st, "final") || !strcmp(st, "delta")) {
+                arg_need(g, argc, i + 1, 2, st);
+                o->kind = st[0] == 'f' ? OP_FINAL : OP_DELTA;
+                o->v[0] = arg_double(g, argv[i + 2], st);
+                o->v[1] = arg_double(g, argv[i + 3], st);
+                i += 4;
+            } else if (!strcmp(st, "scale")) {
+                arg_need(g, argc, i + 1, 1, st);
+                o->kind = OP_SCALE;
+                o->v[0] = arg_positive(g, argv[i + 2], "scale factor");
+                i += 3;
+            } else if (!strcmp(st, "volume")) {
+                gr_error(g, "%s volume is not supported: use final, delta or scale", w);
+            } else {
+                gr_error(g, "%s needs final, delta or scale, got '%.32s'", w, st);
+            }
+            if (o->dim == 2 && g->dom.dimension == 2)
+                gr_error(g, "cannot change the z dimension of a 2d simulation");
+        } else if (!strcmp(w, "xy") || !strcmp(w, "xz") || !strcmp(w, "yz") ||
+                   !strcmp(w, "triclinic")) {
+            gr_error(g, "'%s': triclinic boxes are not supported (orthogonal boxes only)", w);
+        } else if (!strcmp(w, "boundary")) {
+            arg_need(g, argc, i, 3, w);
+            o->kind = OP_BOUNDARY;
+            o->bnd = argv + i + 1;
+            i += 4;
+        } else if (!strcmp(w, "set")) {
+            o->kind = OP_SET;
+            i++;
+        } else if (!strcmp(w, "remap")) {
+            o->kind = OP_REMAP;
+            i++;
+        } else if (!strcmp(w, "ortho")) {
+            o->kind = OP_ORTHO;
+            i++;
+        } else if (!strcmp(w, "units")) {
+            arg_need(g, argc, i, 1, w);
+            lattice = domain_parse_units_kw(g, argv[i + 1]);
+            i += 2;
+            continue;
+        } else {
+            gr_error(g, "unknown operation '%.32s' (x, y, z, boundary, set, remap, ortho, units)",
+                     w);
+        }
+        nops++;
+    }
+    if (nops == 0)
+        gr_error(g, "no operation given");
+    /* validate the boundary words before changing anything */
+    struct domain save = g->dom;
+    for (int k = 0; k < nops; k++)
+        if (ops[k].kind == OP_BOUNDARY)
+            domain_set_boundary(g, ops[k].bnd);
+    g->dom = save;
+
+    double sc[3];
+    domain_unit_scale(g, lattice, sc);
+    struct domain *d = &g->dom;
+    struct atoms *a = &g->atoms;
+    unsigned bit = group_bit(ig);
+    double slo[3], shi[3];
+    for (int q = 0; q < 3; q++) {
+        slo[q] = d->lo[q];
+        shi[q] = d->hi[q];
+    }
+    gr_print(g, "Changing box ...\n");
+    for (int k = 0; k < nops; k++) {
+        const struct op *o = &ops[k];
+        int q = o->dim;
+        switch (o->kind) {
+        case OP_FINAL:
+        case OP_DELTA:
+        case OP_SCALE: {
+            double lo = d->lo[q], hi = d->hi[q];
+            if (o->kind == OP_FINAL) {
+                lo = o->v[0] * sc[q];
+                hi = o->v[1] * sc[q];
+            } else if (o->kind == OP_DELTA) {
+                lo += o->v[0] * sc[q];
+                hi += o->v[1] * sc[q];
+            } else { /* LAMMPS's arithmetic, for its bits */
+                double mid = 0.5 * (lo + hi);
+                lo = mid + o->v[0] * (lo - mid);
+                hi = mid + o->v[0] * (hi - mid);
+            }
+            if (!(lo < hi) || !isfinite(lo) || !isfinite(hi))
+                gr_error(g, "the new %c bounds %g %g are not lo < hi", "xyz"[q], lo, hi);
+            d->lo[q] = lo;
+            d->hi[q] = hi;
+            gr_print(g, "  orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", d->lo[0],
+                     d->lo[1], d->lo[2], d->hi[0], d->hi[1], d->hi[2]);
+            break;
+        }
+        case OP_BOUNDARY:
+            domain_set_boundary(g, o->bnd);
+            for (int p = 0; p < 3; p++) {
+                if (!d->periodic[p])
+                    for (int i = 0; i < a->n; i++)
+                        a->image[3 * i + p] = 0;
+                if (d->bnd[p][0] == BND_M)
+                    d->minlo[p] = d->lo[p];
+                if (d->bnd[p][1] == BND_M)
+                    d->minhi[p] = d->hi[p];
+            }
+            break;
+        case OP_SET:
+            for (int p = 0; p < 3; p++) {
+                slo[p] = d->lo[p];
+                shi[p] = d->hi[p];
+            }
+            break;
+        case OP_REMAP:
+            for (int i = 0; i < a->n; i++) {
+                if (!(a->mask[i] & bit))
+                    continue;
+                /* LAMMPS's x2lamda / lamda2x: lamda = (1/L0) (x - lo0),
+                 * x = L lamda + lo (the bits matter: velocity loop geom
+                 * hashes coordinates) */
+                for (int p = 0; p < 3; p++) {
+                    double lam = (1.0 / (shi[p] - slo[p])) * (a->x[3 * i + p] - slo[p]);
+                    a->x[3 * i + p] = (d->hi[p] - d->lo[p]) * lam + d->lo[p];
+                }
+            }
+            break;
+        case OP_ORTHO: break;
+        }
+    }
+    for (int q = 0; q < 3; q++)
+        d->small[q] = DOMAIN_SMALL * (d->hi[q] - d->lo[q]);
+    /* refit shrink-wrapped faces to the atoms */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < a->n; i++)
+        for (int q = 0; q < 3; q++) {
+            lo[q] = fmin(lo[q], a->x[3 * i + q]);
+            hi[q] = fmax(hi[q], a->x[3 * i + q]);
+        }
+    domain_shrink_wrap(g, lo, hi);
+    /* wrap periodic dimensions; atoms outside a fixed face are lost */
+    int n0 = a->n;
+    for (int i = 0; i < a->n;) {
+        domain_remap(g, a->x + 3 * i, a->image + 3 * i);
+        int out = 0;
+        for (int q = 0; q < 3; q++)
+            if (!d->periodic[q] && (a->x[3 * i + q] < d->lo[q] || a->x[3 * i + q] > d->hi[q]))
+                out = 1;
+        if (out)
+            atoms_remove(g, i);
+        else
+            i++;
+    }
+    if (a->n != n0)
+        gr_warn(g, "Lost atoms via change_box: original %d current %d", n0, a->n);
+}

@@ -1,0 +1,26 @@
+/* pressure.h - the scalar pressure of thermo `press` and compute pressure,
+ * as LAMMPS' compute pressure (thermo_press):
+ *   p = (dof kB T + W_xx + W_yy + W_zz) / (3 V) nktv2p        (3d)
+ *   p = (dof kB T + W_xx + W_yy) / (2 A) nktv2p               (2d, A = Lx Ly)
+ * with T and dof from the temperature (thermo_modify temp, else thermo_temp)
+ * and W the pair virial of the current step: sum over contacts of
+ * del_a F_a (del = x_i - x_j, F the force on i), LAMMPS' granular pair
+ * virial. Walls and the other fixes add none (LAMMPS 2021's granular fixes
+ * have no virial). nktv2p = 1 in lj, si and cgs. The virial is computed on
+ * demand, only when a pressure is asked for (pair_virial kernel), summed
+ * per particle in row order and over particles in tag order: deterministic. */
+#ifndef GR_PRESSURE_H
+#define GR_PRESSURE_H
+
+#include "gravel.h"
+
+/* The virial trace components W_xx, W_yy, W_zz of the current step (0
+ * without a pair style or outside a run). */
+void pressure_virial(struct gravel *g, double w[3]);
+/* The pressure with temperature t (host arrays current). */
+double pressure_scalar(struct gravel *g, struct temp_state *t);
+/* The same with the kinetic part (dof kB T, needs t) and the virial part
+ * chosen (compute pressure's ke, virial/pair keywords). */
+double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int virialflag);
+
+#endif

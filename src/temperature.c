@@ -1,0 +1,152 @@
+/* temperature.c - temperatures and their degrees of freedom (temperature.h). */
+#include "temperature.h"
+
+#include <string.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "compute.h"
+#include "engine.h"
+#include "error.h"
+
+#define INERTIA 0.4 /* LAMMPS compute temp/sphere: solid sphere, in 2d as well */
+
+double temp_boltz(const struct gravel *g)
+{
+    switch (g->dom.units) {
+    case UNITS_SI: return 1.3806504e-23;
+    case UNITS_CGS: return 1.3806504e-16;
+    case UNITS_LJ: break;
+    }
+    return 1.0;
+}
+
+static double count_dof(struct gravel *g, const struct temp_state *t)
+{
+    const struct atoms *a = &g->atoms;
+    int dim = g->dom.dimension;
+    double count = 0, natoms = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & t->groupbit))
+            continue;
+        natoms++;
+        int finite = a->radius[i] > 0.0;
+        switch (t->kind) {
+        case TEMP_TRANS: count += dim; break;
+        case TEMP_SPHERE_ALL: count += dim + (finite ? (dim == 3 ? 3 : 1) : 0); break;
+        case TEMP_SPHERE_ROTATE: count += finite ? (dim == 3 ? 3 : 1) : 0; break;
+        }
+    }
+    double extra = t->extra_set ? t->extra_dof : dim;
+    if (t->kind != TEMP_SPHERE_ROTATE)
+        count -= extra;
+    if (count < 0 && natoms > 0)
+        gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g)", natoms,
+                 extra);
+    return count;
+}
+
+void temp_setup(struct gravel *g, struct temp_state *t)
+{
+    t->dof = count_dof(g, t);
+    t->dof_valid = 1;
+}
+
+double temp_dof(struct gravel *g, struct temp_state *t)
+{
+    int in_run = g->eng && g->eng->active;
+    if (t->dynamic || !in_run || !t->dof_valid)
+        temp_setup(g, t);
+    return t->dof;
+}
+
+/* sum m v.v (+ I m r^2 w.w) over the group, tag order. */
+static double sum_mv2(struct gravel *g, const struct temp_state *t)
+{
+    const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
+    double sum = 0.0;
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
+        if (!(a->mask[i] & t->groupbit))
+            continue;
+        const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
+                     r = a->radius[i];
+        if (t->kind != TEMP_SPHERE_ROTATE)
+            sum += (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * m;
+        if (t->kind != TEMP_TRANS)
+            sum += (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * r * r * m;
+    }
+    return sum;
+}
+
+double temp_scalar(struct gravel *g, struct temp_state *t)
+{
+    double dof = temp_dof(g, t);
+    if (!(dof > 0))
+        return 0.0;
+    return sum_mv2(g, t) * (compute_mvv2e(g) / (dof * temp_boltz(g)));
+}
+
+void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
+{
+    const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
+    double s[6] = {0, 0, 0, 0, 0, 0};
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
+        if (!(a->mask[i] & t->groupbit))
+            continue;
+        const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
+                     r = a->radius[i];
+        if (t->kind != TEMP_SPHERE_ROTATE) {
+            s[0] += m * v[0] * v[0];
+            s[1] += m * v[1] * v[1];
+            s[2] += m * v[2] * v[2];
+            s[3] += m * v[0] * v[1];
+            s[4] += m * v[0] * v[2];
+            s[5] += m * v[1] * v[2];
+        }
+        if (t->kind != TEMP_TRANS) {
+            double in = INERTIA * m * r * r;
+            s[0] += in * w[0] * w[0];
+            s[1] += in * w[1] * w[1];
+            s[2] += in * w[2] * w[2];
+            s[3] += in * w[0] * w[1];
+            s[4] += in * w[0] * w[2];
+            s[5] += in * w[1] * w[2];
+        }
+    }
+    for (int d = 0; d < 6; d++)
+        out[d] = s[d] * compute_mvv2e(g);
+}
+
+struct temp_state *temp_thermo(struct gravel *g)
+{
+    if (!g->thermo.temp_id[0])
+        return &g->thermo.temp;
+    struct compute *c = compute_find(g, g->thermo.temp_id);
+    if (!c || !c->temp)
+        gr_error(g, "thermo_modify temp: compute '%s' is gone or is not a temperature",
+                 g->thermo.temp_id);
+    return c->temp;
+}
+
+void temp_modify(struct gravel *g, struct temp_state *t, int argc, char **argv)
+{
+    struct temp_state n = *t;
+    for (int i = 0; i < argc; i += 2) {
+        const char *kw = argv[i];
+        arg_need(g, argc, i, 1, kw);
+        if (strcmp(kw, "dynamic/dof") == 0 || strcmp(kw, "dynamic") == 0) {
+            n.dynamic = arg_yesno(g, argv[i + 1], kw);
+        } else if (strcmp(kw, "extra/dof") == 0 || strcmp(kw, "extra") == 0) {
+            n.extra_dof = arg_double(g, argv[i + 1], kw);
+            n.extra_set = 1;
+        } else {
+            gr_error(g, "unknown keyword '%.64s' (dynamic/dof, extra/dof)", kw);
+        }
+    }
+    n.dof_valid = 0;
+    *t = n;
+}

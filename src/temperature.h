@@ -1,0 +1,39 @@
+/* temperature.h - temperatures as LAMMPS computes them (compute temp,
+ * compute temp/sphere, the implicit thermo_temp), shared by those computes
+ * and the thermo keywords temp, ke, etotal and press.
+ *
+ * T = mvv2e sum(...) / (dof kB), summed over the group in tag order:
+ *   TEMP_TRANS          m v.v (all three components, also in 2d);
+ *   TEMP_SPHERE_ALL     m v.v + 0.4 m r^2 w.w (solid-sphere inertia, also in 2d);
+ *   TEMP_SPHERE_ROTATE  0.4 m r^2 w.w only.
+ * Degrees of freedom, per atom of the group (LAMMPS 2021 dof_compute):
+ *   TRANS: dim;  SPHERE_ALL: 3d 6 (3 if r = 0), 2d 3 (2 if r = 0);
+ *   SPHERE_ROTATE: 3d 3, 2d 1 (0 if r = 0);
+ * minus extra/dof (default: the dimension) except in ROTATE mode. dof < 0
+ * with atoms in the group is an error; dof = 0 gives T = 0. The count is
+ * taken at run setup and kept through the run (dynamic/dof no, LAMMPS's
+ * default) or retaken at every evaluation (dynamic/dof yes); outside a run
+ * it is always the current one. */
+#ifndef GR_TEMPERATURE_H
+#define GR_TEMPERATURE_H
+
+#include "gravel.h"
+
+/* Boltzmann constant of the current units (LAMMPS 2021 force->boltz). */
+double temp_boltz(const struct gravel *g);
+/* Count the degrees of freedom now (run setup). */
+void temp_setup(struct gravel *g, struct temp_state *t);
+/* The degrees of freedom the next temp_scalar divides by. */
+double temp_dof(struct gravel *g, struct temp_state *t);
+/* The temperature (host arrays must be current). */
+double temp_scalar(struct gravel *g, struct temp_state *t);
+/* Kinetic-energy tensor xx yy zz xy xz yz (mvv2e sum m v_a v_b, plus the
+ * rotational terms for the sphere kinds), extensive, as LAMMPS's vector. */
+void temp_vector(struct gravel *g, struct temp_state *t, double out[6]);
+/* The temperature that thermo uses: thermo_modify temp ID, else thermo_temp. */
+struct temp_state *temp_thermo(struct gravel *g);
+/* compute_modify keywords of a temperature: dynamic/dof (dynamic),
+ * extra/dof (extra); argv holds keyword value pairs. */
+void temp_modify(struct gravel *g, struct temp_state *t, int argc, char **argv);
+
+#endif
