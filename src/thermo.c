@@ -302,6 +302,9 @@ static void check_keyword(struct gravel *g, const char *s)
         int index;
         if (!compute_parse_ref(s, id, &index))
             gr_error(g, "invalid compute reference '%s' (use c_ID or c_ID[N], N >= 1)", s);
+        /* as LAMMPS: the compute must exist when thermo_style names it */
+        if (!compute_find(g, id) && implicit_compute(g, s) < 0)
+            gr_error(g, "could not find thermo custom compute ID '%s'", id);
         return;
     }
     if (strncmp(s, "v_", 2) == 0) {
@@ -310,6 +313,8 @@ static void check_keyword(struct gravel *g, const char *s)
         for (const char *p = s + 2; *p; p++)
             if (!isalnum((unsigned char)*p) && *p != '_')
                 gr_error(g, "invalid variable reference '%s'", s);
+        if (!var_exists(g, s + 2))
+            gr_error(g, "could not find thermo custom variable name '%s'", s + 2);
         return;
     }
     if (strncmp(s, "f_", 2) == 0) {
@@ -318,6 +323,8 @@ static void check_keyword(struct gravel *g, const char *s)
         if (!fix_parse_ref(s, id, &index))
             gr_error(g, "invalid fix reference '%s' (use f_ID[N], N >= 1: fixes give global "
                         "vectors)", s);
+        if (!fix_find(g, id))
+            gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
     }
     if (strcmp(s, "press") == 0)
