@@ -4,7 +4,10 @@
  * The first line selects what the rest is: "#!data" (the rest is written to
  * fz.data and read by `read_data fz.data`), "#!restart" (written to fz.rst,
  * read by `read_restart fz.rst`, then a few commands that use the restored
- * state), anything else: the whole input is the script. Each input runs on a fresh engine with no screen and no log, inside a
+ * state), "#!restart+" (the same, after the harness rewrote the header's
+ * payload length and FNV-1a checksum to match the bytes, so mutations reach
+ * the section parser and the validation instead of the checksum test),
+ * anything else: the whole input is the script. Each input runs on a fresh engine with no screen and no log, inside a
  * scratch directory (print/log may write files there). Commands that would
  * start the OpenCL engine, write outputs endlessly or read outside the
  * scratch directory are refused through inp_set_limits(), and a command
@@ -90,6 +93,19 @@ static int write_file(const char *name, const uint8_t *data, size_t size)
     return (fclose(fp) == 0 && w == size) ? 0 : -1;
 }
 
+/* "#!restart+": make the header's length and checksum those of the payload
+ * (restart.h: 32-byte header, u64 length at 16, u64 FNV-1a 64 at 24). */
+static void fix_header(uint8_t *b, size_t n)
+{
+    if (n < 32)
+        return;
+    uint64_t len = n - 32, h = 14695981039346656037ull;
+    for (size_t i = 32; i < n; i++)
+        h = (h ^ b[i]) * 1099511628211ull;
+    memcpy(b + 16, &len, 8);
+    memcpy(b + 24, &h, 8);
+}
+
 static int has_prefix(const uint8_t *data, size_t size, const char *p)
 {
     size_t n = strlen(p);
@@ -104,6 +120,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (write_file("fz.data", data + 7, size - 7))
             return 0;
         script = data_script;
+    } else if (has_prefix(data, size, "#!restart+\n")) {
+        uint8_t *copy = malloc(size);
+        if (!copy)
+            return 0;
+        memcpy(copy, data + 11, size - 11);
+        fix_header(copy, size - 11);
+        int bad = write_file("fz.rst", copy, size - 11);
+        free(copy);
+        if (bad)
+            return 0;
+        script = restart_script;
     } else if (has_prefix(data, size, "#!restart\n")) {
         if (write_file("fz.rst", data + 10, size - 10))
             return 0;

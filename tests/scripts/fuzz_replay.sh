@@ -5,7 +5,8 @@
 # status other than 86, 87, 124 or >= 128) within 20 s and no sanitizer reports anything. One PASS/FAIL line
 # per file. A file whose first line is "#!data" or "#!restart" is, after that
 # line, a data file or restart file: it is read by the same commands as in
-# the harness (tests/fuzz/fuzz_input.c: data_script, restart_script).
+# the harness (tests/fuzz/fuzz_input.c: data_script, restart_script);
+# "#!restart+" files get their header's length and checksum fixed first.
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 bin="$root/bin/gravel-asan"
@@ -31,8 +32,11 @@ for f in "$root"/tests/fuzz/corpus/*; do
         printf '%s\n' 'atom_style sphere' 'read_data fz.data' 'group g1 type 1' \
             'set group all density 1.0' 'variable n equal count(all)+xcm(all,x)' \
             'print "$n"' > "$deck" ;;
-    '#!restart'*)
-        tail -c +11 "$f" > "$dir/fz.rst"
+    '#!restart+'*|'#!restart'*)
+        case "$(head -c 11 "$f")" in
+        '#!restart+'*) python3 "$root/tests/fuzz/fix_restart_header.py" "$f" "$dir/fz.rst" ;;
+        *) tail -c +11 "$f" > "$dir/fz.rst" ;;
+        esac
         deck="$dir/fz.in"
         printf '%s\n' 'read_restart fz.rst' 'group g1 type 1' \
             'variable n equal count(all)+xcm(all,x)+mass(all)' 'print "$n"' \

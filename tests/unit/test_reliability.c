@@ -338,6 +338,21 @@ TEST(failing_commands_change_nothing)
     /* and the engine still runs */
     CHECK(inp_string(g, "run 5\n", "test.in") == GR_OK);
     gr_destroy(g);
+    /* before a box: a failing read_data or create_box creates nothing */
+    const char *bad_data = "# bad\n\n2 atoms\n1 atom types\n0 2 xlo xhi\n0 2 ylo yhi\n"
+                           "0 2 zlo zhi\n\nAtoms # sphere\n\n1 1 1.0 1.0 0.5 0.5 0.5\n"
+                           "2 1 1.0 1.0 1.5 x 1.5\n";
+    write_bytes(tmp_path("bad.data"), bad_data, strlen(bad_data));
+    g = test_engine();
+    SCRIPT("atom_style sphere\nregion r block 0 1 0 1 0 1\nread_data %s\n", tmp_path("bad.data"));
+    CHECK(inp_string(g, script, "test.in") == GR_ERR);
+    CHECK(g->atoms.n == 0 && !g->dom.box_exists && g->regions.n == 1);
+    CHECK(inp_string(g, "create_box 1 nonexistent\n", "test.in") == GR_ERR);
+    CHECK(inp_string(g, "boundary p p bogus\n", "test.in") == GR_ERR);
+    CHECK(g->dom.bnd[2][0] == BND_P && !g->dom.box_exists);
+    CHECK(inp_string(g, "create_box 1 r\n", "test.in") == GR_OK);
+    CHECK(g->dom.box_exists && g->atoms.ntypes == 1);
+    gr_destroy(g);
     /* references are checked when the command is read, as in LAMMPS */
     const char *box = "region b block 0 1 0 1 0 1\ncreate_box 1 b\n";
     SCRIPT("%sthermo_style custom step c_nope\n", box);
