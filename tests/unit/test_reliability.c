@@ -236,7 +236,8 @@ TEST(fix_unwinding)
  * fixes, computes, dumps, regions and groups, the pair style and its
  * coefficients, the thermo columns, atom values. */
 struct snapshot {
-    int nfix, ncompute, ndump, nregion, ngroup, natoms, ncol, ntypes;
+    int nfix, ncompute, ndump, nregion, ngroup, natoms, ncol, ntypes, lost, norm, flush;
+    char *format_float;
     void *fix0, *compute0, *dump0, *region0, *pair;
     unsigned mask[8];
     double coef0, diam0, mass0, vx0;
@@ -255,6 +256,10 @@ static void snap(struct gravel *g, struct snapshot *s)
     s->natoms = g->atoms.n;
     s->ntypes = g->atoms.ntypes;
     s->ncol = g->thermo.ncol;
+    s->lost = (int)g->thermo.lost;
+    s->norm = g->thermo.norm;
+    s->flush = g->thermo.flush;
+    s->format_float = g->thermo.format_float;
     snprintf(s->col1, sizeof s->col1, "%s", g->thermo.ncol > 1 ? g->thermo.col[1] : "");
     s->fix0 = s->nfix ? g->styles.fix[0] : NULL;
     s->compute0 = s->ncompute ? g->styles.compute[0] : NULL;
@@ -320,6 +325,8 @@ TEST(failing_commands_change_nothing)
         "unfix nonexistent\n",
         "uncompute nonexistent\n",
         "undump nonexistent\n",
+        "thermo_modify lost warn norm maybe\n",
+        "thermo_modify format float %12.5f flush bogus\n",
         NULL};
     for (int k = 0; bad[k]; k++) {
         struct snapshot a, b;
