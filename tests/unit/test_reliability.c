@@ -9,6 +9,7 @@
 #include "test.h"
 
 #include "error.h"
+#include "dump.h"
 #include "fix.h"
 #include "pair.h"
 #include "restart.h"
@@ -237,6 +238,7 @@ TEST(fix_unwinding)
  * coefficients, the thermo columns, atom values. */
 struct snapshot {
     int nfix, ncompute, ndump, nregion, ngroup, natoms, ncol, ntypes, lost, norm, flush;
+    int dump_every, dump_sort, dump_pad;
     char *format_float;
     void *fix0, *compute0, *dump0, *region0, *pair;
     unsigned mask[8];
@@ -264,6 +266,11 @@ static void snap(struct gravel *g, struct snapshot *s)
     s->fix0 = s->nfix ? g->styles.fix[0] : NULL;
     s->compute0 = s->ncompute ? g->styles.compute[0] : NULL;
     s->dump0 = s->ndump ? g->styles.dump[0] : NULL;
+    if (s->ndump) {
+        s->dump_every = g->styles.dump[0]->every;
+        s->dump_sort = g->styles.dump[0]->sort;
+        s->dump_pad = g->styles.dump[0]->pad;
+    }
     s->region0 = s->nregion ? g->regions.r[0] : NULL;
     s->pair = g->styles.pair;
     s->coef0 = g->styles.pair ? g->styles.pair->coef[0] : 0;
@@ -297,6 +304,7 @@ TEST(failing_commands_change_nothing)
         "dump d2 all custom 10 d2.txt id bogus\n",
         "dump d1 all atom 10 other.atom\n",
         "dump_modify d1 every 10 bogus 1\n",
+        "dump_modify d1 every 7 sort id pad 3 format float %10.4f scale no first maybe\n",
         "region r1 block 0 1 0 1 0 1\n",
         "region r2 block 0 1 0 1 0 bogus\n",
         "region r3 union 2 r1 nonexistent\n",
