@@ -91,6 +91,7 @@ verify: deps
 # the committed seeds stay in tests/fuzz/corpus. `make fuzz-replay` runs every
 # committed corpus file through the ASan build (also part of make test).
 FUZZ_TIME ?= 60
+FUZZ_TIMEOUT ?= 10
 FUZZFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 FUZZOBJ   = $(LIBSRC:%.c=build/fuzz/%.o) build/fuzz/kernels.o
 build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
@@ -104,7 +105,7 @@ bin/fuzz_input: tests/fuzz/fuzz_input.c $(FUZZOBJ)
 	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
 fuzz: bin/fuzz_input
 	@mkdir -p build/fuzz/corpus build/fuzz/crashes
-	nice -n 19 bin/fuzz_input -max_len=1200000 -max_total_time=$(FUZZ_TIME) -timeout=10 \
+	nice -n 19 bin/fuzz_input -max_len=1200000 -max_total_time=$(FUZZ_TIME) -timeout=$(FUZZ_TIMEOUT) \
 	    -rss_limit_mb=2048 -artifact_prefix=$(CURDIR)/build/fuzz/crashes/ \
 	    -dict=$(CURDIR)/tests/fuzz/gravel.dict $(CURDIR)/build/fuzz/corpus $(CURDIR)/tests/fuzz/corpus
 fuzz-replay: bin/gravel-asan

@@ -174,6 +174,26 @@ TEST(messages)
     gr_destroy(g);
     CHECK_ERROR("region b block 0 1 0 1 0 1\ncreate_box 1 b\nmass 1 1e999\n",
                 "expected a number", 3);
+    /* in a data file and in expressions too */
+    const char *dn = "# denormal\n\n1 atoms\n1 atom types\n0 2 xlo xhi\n0 2 ylo yhi\n"
+                     "0 2 zlo zhi\n\nAtoms # sphere\n\n1 1 1.0 1.0 0.5 0.5 4.9e-324\n\n"
+                     "Velocities\n\n1 4.9e-324 0 0 0 0 0\n";
+    write_bytes(tmp_path("dn.data"), dn, strlen(dn));
+    g = test_engine();
+    SCRIPT("atom_style sphere\nread_data %s\nvariable d equal 4.9e-324*2\n", tmp_path("dn.data"));
+    CHECK(inp_string(g, script, "test.in") == GR_OK);
+    CHECK(g->atoms.n == 1 && g->atoms.x[2] > 0 && g->atoms.x[2] < 1e-320 &&
+          g->atoms.v[0] > 0 && g->atoms.v[0] < 1e-320);
+    CHECK(var_compute_equal(g, "d") > 0 && var_compute_equal(g, "d") < 1e-320);
+    gr_destroy(g);
+    /* a region with huge finite bounds is bounded: usable for a group */
+    g = test_engine();
+    CHECK(inp_string(g, "region b block 0 1 0 1 0 1\ncreate_box 1 b\n"
+                        "region h block -1e308 1e308 -1e308 1e308 -1e308 1e308\n"
+                        "create_atoms 1 single 0.5 0.5 0.5\ngroup in region h\n",
+                     "test.in") == GR_OK);
+    CHECK(g->atoms.n == 1 && (g->atoms.mask[0] & 2u));
+    gr_destroy(g);
     /* a huge bounded range is not "unbounded" */
     CHECK_ERROR("region b block -1e308 1e308 0 1 0 1\ncreate_box 1 b\n",
                 "region 'b' spans -1e+308 to 1e+308 in x: a box length of inf is too large", 2);
