@@ -354,17 +354,25 @@ TEST(failing_commands_change_nothing)
         "uncompute nonexistent\n",
         "undump nonexistent\n",
         "thermo_modify lost warn norm maybe\n",
+        "lattice sc -1\n",
+        "lattice fcc 1.0 origin 0.5 0.5 0.5 orient x 1 0 0 bogus\n",
+        "lattice sc 1.0 spacing 1 1\n",
+        "change_box all x final 0 8 bogus\n",
+        "units real\n",
+        "boundary f f f\n",
+        "atom_modify sort 100 -1\n",
         "thermo_modify format float %12.5f flush bogus\n",
         NULL};
     for (int k = 0; bad[k]; k++) {
         struct snapshot a, b;
         struct neigh_settings ns = g->neigh;
+        struct domain dom = g->dom;
         double dt = g->dt;
         snap(g, &a);
         int rc = inp_string(g, bad[k], "test.in");
         snap(g, &b);
         int same = !memcmp(&a, &b, sizeof a) && !memcmp(&ns, &g->neigh, sizeof ns) &&
-                   dt == g->dt;
+                   !memcmp(&dom, &g->dom, sizeof dom) && dt == g->dt;
         if (rc != GR_ERR || !same)
             printf("  command '%.*s': rc %d, state %s\n", (int)strlen(bad[k]) - 1, bad[k], rc,
                    same ? "unchanged" : "CHANGED");
