@@ -13,7 +13,8 @@ must say "exact continuation".
 
 Controls: the same continuation with `neighbor 0.2 bin` (skin changed) must
 take the fallback and name the skin with both values; with `timestep 0.0002`
-it must say the forces are recomputed because the time step differs."""
+it must say the forces are recomputed because the time step differs; with
+`neigh_modify exclude none` it must name the group exclusion."""
 import os
 import re
 import subprocess
@@ -88,7 +89,7 @@ def main():
     std = SETTINGS.format(skin="0.1", dt="0.0001")
     with tempfile.TemporaryDirectory() as tmp:
         dirs = {}
-        for k in ("full", "split", "skin", "dt"):
+        for k in ("full", "split", "skin", "dt", "excl"):
             dirs[k] = os.path.join(tmp, k)
             os.mkdir(dirs[k])
             os.symlink(DATA, os.path.join(dirs[k], "data.chute"))
@@ -122,9 +123,12 @@ def main():
                  r"\(neighbor skin 0\.2 \(file: 0\.1\)\)"),
                 ("dt", SETTINGS.format(skin="0.1", dt="0.0002"),
                  r"Restart: continuing with the written neighbor list; forces recomputed: "
-                 r"timestep 0\.0002 \(file: 0\.0001\) differs")):
+                 r"timestep 0\.0002 \(file: 0\.0001\) differs"),
+                ("excl", std + "neigh_modify    exclude none\n",
+                 r"Restart: atoms or settings changed since the file was written "
+                 r"\(neigh_modify exclude group: none \(file: bottom bottom\)\)")):
             os.link(os.path.join(dirs["split"], "half.rst"), os.path.join(dirs[k], "half.rst"))
-            rc, log, err = gravel(dirs[k], "read_restart half.rst\n" + deck + "run 10\n", k)
+            rc, log, err = gravel(dirs[k], "read_restart half.rst\n" + deck + "run 0\n", k)
             check("names_" + k, rc == 0 and re.search(pat, log) is not None,
                   "; ".join(l for l in log.splitlines() if l.startswith("Restart:")) or err)
 
