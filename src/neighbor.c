@@ -340,7 +340,7 @@ static void atom_state(struct gravel *g, int i, long long *tag, double x[3], dou
     size_t n3 = 3 * (size_t)e->a.n;
     double *buf = gr_malloc(g, (n3 + 1) * sizeof(double));
     eng_read(g, e->a.tag, (size_t)i * sizeof(cl_long), sizeof(cl_long), tag);
-    eng_read_reals(g, e->a.x, n3, buf);
+    eng_read_positions(g, &e->a, e->a.n, buf); /* lab frame (origin, split parts) */
     memcpy(x, buf + 3 * (size_t)i, 3 * sizeof(double));
     eng_read_reals(g, e->a.v, n3, buf);
     memcpy(v, buf + 3 * (size_t)i, 3 * sizeof(double));
