@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl kernels/*.h))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay verify reproduce-agglomeration reproduce-mill
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay fuzz-merge verify reproduce-agglomeration reproduce-mill
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -89,8 +89,10 @@ verify: deps
 # directory, so its paths are absolute). `make fuzz FUZZ_TIME=600` runs it
 # for that many seconds on one core, niced; new inputs go to build/fuzz/corpus,
 # the committed seeds stay in tests/fuzz/corpus. `make fuzz-replay` runs every
-# committed corpus file through the ASan build (also part of make test).
+# committed corpus file through the ASan build (also part of make test), and
+# `make fuzz-merge` adds the new inputs that reach new edges to tests/fuzz/found.
 FUZZ_TIME ?= 60
+FUZZ_TIMEOUT ?= 10
 FUZZFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 FUZZOBJ   = $(LIBSRC:%.c=build/fuzz/%.o) build/fuzz/kernels.o
 build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
@@ -104,11 +106,18 @@ bin/fuzz_input: tests/fuzz/fuzz_input.c $(FUZZOBJ)
 	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer -o $@ $^ $(LDLIBS)
 fuzz: bin/fuzz_input
 	@mkdir -p build/fuzz/corpus build/fuzz/crashes
-	nice -n 19 bin/fuzz_input -max_len=1200000 -max_total_time=$(FUZZ_TIME) -timeout=10 \
+	nice -n 19 bin/fuzz_input -max_len=1200000 -max_total_time=$(FUZZ_TIME) -timeout=$(FUZZ_TIMEOUT) \
 	    -rss_limit_mb=2048 -artifact_prefix=$(CURDIR)/build/fuzz/crashes/ \
 	    -dict=$(CURDIR)/tests/fuzz/gravel.dict $(CURDIR)/build/fuzz/corpus $(CURDIR)/tests/fuzz/corpus
-fuzz-replay: bin/gravel-asan
+fuzz-replay: bin/gravel-asan build/tests/test_fuzz_corpus
 	@sh tests/scripts/fuzz_replay.sh
+	@build/tests/test_fuzz_corpus
+# Add the inputs of build/fuzz/corpus that reach new edges to the committed
+# replay set tests/fuzz/found (replayed in process by test_fuzz_corpus).
+fuzz-merge: bin/fuzz_input
+	@mkdir -p tests/fuzz/found
+	$(CURDIR)/bin/fuzz_input -merge=1 -use_counters=0 -timeout=30 -rss_limit_mb=2048 \
+	    $(CURDIR)/tests/fuzz/found $(CURDIR)/build/fuzz/corpus
 
 # The agglomeration study of source document 000 chapter 6 (fig. 6.8), see
 # doc/agglomeration.md: about 2 h with the defaults (N 1000, 300 s); AGGLO_QUICK=1 for a few minutes.

@@ -213,18 +213,16 @@ void cmd_dump(struct gravel *g, int argc, char **argv)
     g->err.jmp = outer;
 }
 
-void cmd_dump_modify(struct gravel *g, int argc, char **argv)
+/* One pass over the dump_modify keywords. With apply 0 the core settings go
+ * to a scratch copy and the style hook only checks: a pass that raises no
+ * error leaves d as it was. */
+static void dump_modify_pass(struct gravel *g, struct dump *d, int argc, char **argv, int apply)
 {
-    if (argc < 1)
-        gr_error(g, "expected: dump_modify ID keyword value ...");
-    struct dump *d = dump_find(g, argv[0]);
-    if (!d)
-        gr_error(g, "unknown dump ID '%.64s'", argv[0]);
-    if (argc < 2)
-        gr_error(g, "expected keyword/value pairs after the dump ID");
+    struct dump scratch = *d;
+    struct dump *t = apply ? d : &scratch;
     for (int i = 1; i < argc;) {
         const char *kw = argv[i];
-        int used = d->style->modify ? d->style->modify(g, d, argc, argv, i) : 0;
+        int used = d->style->modify ? d->style->modify(g, d, argc, argv, i, apply) : 0;
         if (used > 0) {
             i += used;
             continue;
@@ -236,25 +234,25 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
             int n = arg_int(g, argv[i + 1], "every");
             if (n <= 0)
                 gr_error(g, "every must be positive, got %d", n);
-            d->every = n;
+            t->every = n;
             i += 2;
         } else if (strcmp(kw, "sort") == 0) {
             arg_need(g, argc, i, 1, kw);
             if (strcmp(argv[i + 1], "id") == 0)
-                d->sort = 1;
+                t->sort = 1;
             else if (strcmp(argv[i + 1], "off") == 0)
-                d->sort = 0;
+                t->sort = 0;
             else
                 gr_error(g, "sort must be id or off, got '%.64s' (sorting by a column is not "
                             "supported)", argv[i + 1]);
             i += 2;
         } else if (strcmp(kw, "pad") == 0) {
             arg_need(g, argc, i, 1, kw);
-            d->pad = arg_int_range(g, argv[i + 1], 0, 20, "pad");
+            t->pad = arg_int_range(g, argv[i + 1], 0, 20, "pad");
             i += 2;
         } else if (strcmp(kw, "first") == 0) {
             arg_need(g, argc, i, 1, kw);
-            d->first = arg_yesno(g, argv[i + 1], "first");
+            t->first = arg_yesno(g, argv[i + 1], "first");
             i += 2;
         } else if (strcmp(kw, "append") == 0) {
             arg_need(g, argc, i, 1, kw);
@@ -262,7 +260,7 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
             if (!d->style->append || d->multifile)
                 gr_error(g, "append applies to a dump custom writing one file (dump %s)", d->id);
             if (d->nsnap == 0)
-                d->published = yes; /* the first snapshot continues the existing file */
+                t->published = yes; /* the first snapshot continues the existing file */
             i += 2;
         } else if (strcmp(kw, "binary") == 0) {
             gr_error(g, "binary applies to dump vtk only (dump %s is %s)", d->id, d->style->name);
@@ -275,6 +273,19 @@ void cmd_dump_modify(struct gravel *g, int argc, char **argv)
                      strcmp(d->style->name, "vtk") == 0 ? ", binary" : ", append, format");
         }
     }
+}
+
+void cmd_dump_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "expected: dump_modify ID keyword value ...");
+    struct dump *d = dump_find(g, argv[0]);
+    if (!d)
+        gr_error(g, "unknown dump ID '%.64s'", argv[0]);
+    if (argc < 2)
+        gr_error(g, "expected keyword/value pairs after the dump ID");
+    dump_modify_pass(g, d, argc, argv, 0);
+    dump_modify_pass(g, d, argc, argv, 1);
 }
 
 void cmd_undump(struct gravel *g, int argc, char **argv)

@@ -34,8 +34,10 @@ struct dump_style {
     /* Parse the style arguments after the file name; allocate d->data. */
     void (*create)(struct gravel *g, struct dump *d, int argc, char **argv);
     /* A style-specific dump_modify keyword at argv[i]: returns the number of
-     * words used (keyword included), or 0 if the keyword is not the style's. */
-    int (*modify)(struct gravel *g, struct dump *d, int argc, char **argv, int i);
+     * words used (keyword included), or 0 if the keyword is not the style's.
+     * With apply 0 it only checks (errors as usual) and changes nothing:
+     * dump_modify checks every keyword before it applies any. */
+    int (*modify)(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply);
     /* Run setup: check references (may be NULL). */
     void (*init)(struct gravel *g, struct dump *d);
     /* Write one snapshot of atoms idx[0..n) (host indices) to fp. Errors go

@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "diagnose.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
@@ -459,43 +460,33 @@ static void reset_flags(struct gravel *g, struct nbr *b)
                                      sizeof(cl_int), sizeof(cl_int), 0, NULL, NULL));
 }
 
-/* "; probable cause: ..." comparing the time step with the collision time
- * of the contact model (for the non-finite and lost-atoms stops). */
-static void probable_cause(struct gravel *g, char *cause, size_t len)
-{
-    const struct pair *p = g->styles.pair;
-    if (p && p->style->collision_time && g->atoms.n > 0) {
-        double m = 0, r = 0, vmax = 0;
-        /* lightest particle of the host copy (run start) */
-        for (int k = 0; k < g->atoms.n; k++) {
-            if (m == 0 || g->atoms.rmass[k] < m) {
-                m = g->atoms.rmass[k];
-                r = g->atoms.radius[k];
-            }
-            for (int d = 0; d < 3; d++)
-                vmax = fmax(vmax, fabs(g->atoms.v[3 * k + d]));
-        }
-        double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
-        snprintf(cause, len,
-                 "; probable cause: the time step %g vs the estimated collision time %g of "
-                 "pair style %s (%.3g steps per collision; at least ~10 are needed)",
-                 g->dt, tc, p->style->name, tc / g->dt);
-    } else {
-        snprintf(cause, len, "; probable cause: a time step (%g) too large for the forces, or "
-                             "overlapping particles in the initial configuration", g->dt);
-    }
-}
-
-/* Stop on non-finite atom index i with the step, tag and the likely cause. */
-static void nonfinite_error(struct gravel *g, int i)
+/* Device position and velocity of atom index i (error paths only). */
+static void atom_state(struct gravel *g, int i, long long *tag, double x[3], double v[3])
 {
     struct engine *e = g->eng;
+    size_t n3 = 3 * (size_t)e->a.n;
+    double *buf = gr_malloc(g, (n3 + 1) * sizeof(double));
+    eng_read(g, e->a.tag, (size_t)i * sizeof(cl_long), sizeof(cl_long), tag);
+    eng_read_positions(g, &e->a, e->a.n, buf); /* lab frame (origin, split parts) */
+    memcpy(x, buf + 3 * (size_t)i, 3 * sizeof(double));
+    eng_read_reals(g, e->a.v, n3, buf);
+    memcpy(v, buf + 3 * (size_t)i, 3 * sizeof(double));
+    free(buf);
+}
+
+/* Stop on non-finite atom index i: the step, the atom and what the start of
+ * the run shows about it (diagnose.h); the time step is discussed only when
+ * nothing else explains it. */
+static void nonfinite_error(struct gravel *g, int i)
+{
     long long tag = 0;
-    eng_read(g, e->a.tag, (size_t)i * sizeof(cl_long), sizeof(cl_long), &tag);
-    char cause[400];
-    probable_cause(g, cause, sizeof cause);
-    gr_error(g, "non-finite position or velocity of atom %lld at step %lld%s", tag,
-             (long long)g->step, cause);
+    double x[3], v[3];
+    atom_state(g, i, &tag, x, v);
+    char seen[700], cause[400] = "";
+    if (!diag_nonfinite(g, tag, x, v, seen, sizeof seen))
+        diag_time_step(g, cause, sizeof cause);
+    gr_error(g, "non-finite position or velocity at step %lld: %s%s", (long long)g->step, seen,
+             cause);
 }
 
 int nbr_decide(struct gravel *g, int forced)
@@ -960,13 +951,24 @@ void nbr_rebuild(struct gravel *g)
     cl_int nkeep = n;
     eng_read(g, b->start, (size_t)b->ncell * sizeof(cl_int), sizeof nkeep, &nkeep);
     if (nkeep < n) {
-        char cause[400];
-        probable_cause(g, cause, sizeof cause);
-        if (g->thermo.lost == LOST_ERROR)
-            gr_error(g, "Lost atoms: original %d current %d (step %lld: atoms left the box "
-                        "through a fixed boundary or moved more than a box length in one step"
-                        "%s; thermo_modify lost ignore|warn keeps going)",
-                     n, (int)nkeep, (long long)g->step, cause);
+        if (g->thermo.lost == LOST_ERROR) {
+            /* name the first lost atom (in the sentinel cell) */
+            int *cell = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+            eng_read(g, b->cellof, 0, (size_t)n * sizeof(cl_int), cell);
+            int first = 0;
+            while (first < n - 1 && cell[first] != b->ncell)
+                first++;
+            free(cell);
+            long long tag = 0;
+            double x[3], v[3];
+            atom_state(g, first, &tag, x, v);
+            char seen[600], cause[400];
+            diag_lost_atom(g, tag, x, v, seen, sizeof seen);
+            diag_time_step(g, cause, sizeof cause);
+            gr_error(g, "Lost atoms: original %d current %d at step %lld: %s%s; thermo_modify "
+                        "lost ignore|warn keeps going", n, (int)nkeep, (long long)g->step, seen,
+                     cause);
+        }
         if (g->thermo.lost == LOST_WARN)
             gr_warn(g, "Lost atoms: original %d current %d (step %lld)", n, (int)nkeep,
                     (long long)g->step);

@@ -164,6 +164,7 @@ static void *get_array(struct rbuf *r, size_t count, size_t sz)
 
 struct fix_saved {
     char id[GR_NAMELEN], style[GR_NAMELEN];
+    uint64_t arghash;           /* of the writer's fix: group, style, arguments */
     unsigned char *blob;
     size_t bloblen;
     uint32_t peratom_bytes, rsz;
@@ -384,6 +385,7 @@ static void write_fixes(struct gravel *g, struct wbuf *w, int ndev)
         struct fix *f = g->styles.fix[i];
         put_str(g, w, f->id);
         put_str(g, w, f->style->name);
+        put_u64(g, w, f->arghash);
         size_t len = f->style->write_restart ? f->style->write_restart(g, f, NULL, 0) : 0;
         put_u64(g, w, len);
         if (len) {
@@ -860,6 +862,7 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
             struct fix_saved *fs = &im->fix[i];
             get_str(r, fs->id, sizeof fs->id);
             get_str(r, fs->style, sizeof fs->style);
+            fs->arghash = get_u64(r);
             uint64_t len = get_u64(r);
             if (r->bad)
                 break;
@@ -1203,15 +1206,140 @@ static int find_idx(const struct tagidx *map, int n, int64_t tag)
     return hit ? hit->idx : -1;
 }
 
-/* Field by field (a struct copy may leave padding bytes different). */
-static int neigh_equal(const struct neigh_settings *a, const struct neigh_settings *b)
+/* Name of group index k for messages (the groups are the current ones:
+ * read_restart restored the writer's). */
+static const char *gname(const struct gravel *g, int k)
 {
-    return a->skin == b->skin && a->style == b->style && a->every == b->every &&
-           a->delay == b->delay && a->check == b->check && a->once == b->once &&
-           a->one == b->one && a->page == b->page && a->nexclude == b->nexclude &&
-           a->nexclude_type == b->nexclude_type &&
-           !memcmp(a->exclude_group, b->exclude_group, sizeof a->exclude_group) &&
-           !memcmp(a->exclude_type, b->exclude_type, sizeof a->exclude_type);
+    return k >= 0 && k < GR_MAXGROUP && g->groups.used[k] ? g->groups.name[k] : "?";
+}
+
+/* 1 when the exclusion lists hold the same unordered pairs, in any order. */
+static int same_pairs(const int a[16][2], int na, const int b[16][2], int nb)
+{
+    if (na != nb)
+        return 0;
+    for (int i = 0; i < na; i++) {
+        int found = 0;
+        for (int k = 0; k < nb && !found; k++)
+            found = (a[i][0] == b[k][0] && a[i][1] == b[k][1]) ||
+                    (a[i][0] == b[k][1] && a[i][1] == b[k][0]);
+        if (!found)
+            return 0;
+    }
+    return 1;
+}
+
+static void pairs_text(const struct gravel *g, const int p[16][2], int n, int group, char *out,
+                       size_t len)
+{
+    size_t o = 0;
+    out[0] = '\0';
+    if (!n)
+        snprintf(out, len, "none");
+    for (int k = 0; k < n && o < len; k++) {
+        int w = group ? snprintf(out + o, len - o, "%s%s %s", k ? ", " : "", gname(g, p[k][0]),
+                                 gname(g, p[k][1]))
+                      : snprintf(out + o, len - o, "%s%d %d", k ? ", " : "", p[k][0], p[k][1]);
+        o += w > 0 ? (size_t)w : 0;
+    }
+}
+
+/* The first neighbor setting that differs between now (a) and the file (b),
+ * written into why as "setting now (file: value)"; 0 when all are equal.
+ * Every setting that can change the list or its build steps counts. */
+static int neigh_diff(const struct gravel *g, const struct neigh_settings *a,
+                      const struct neigh_settings *b, char *why, size_t len)
+{
+    const char *yn[] = {"no", "yes"};
+    if (a->skin != b->skin)
+        return snprintf(why, len, "neighbor skin %.15g (file: %.15g)", a->skin, b->skin) > 0;
+    if (a->style != b->style)
+        return snprintf(why, len, "neighbor style %s (file: %s)", a->style == NEIGH_MULTI ? "multi" : "bin",
+                        b->style == NEIGH_MULTI ? "multi" : "bin") > 0;
+    struct { const char *kw; int now, was, yesno; } iv[] = {
+        {"every", a->every, b->every, 0}, {"delay", a->delay, b->delay, 0},
+        {"check", a->check, b->check, 1}, {"once", a->once, b->once, 1},
+        {"one", a->one, b->one, 0},       {"page", a->page, b->page, 0}};
+    for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
+        if (iv[k].now != iv[k].was) {
+            if (iv[k].yesno)
+                return snprintf(why, len, "neigh_modify %s %s (file: %s)", iv[k].kw,
+                                yn[iv[k].now != 0], yn[iv[k].was != 0]) > 0;
+            return snprintf(why, len, "neigh_modify %s %d (file: %d)", iv[k].kw, iv[k].now,
+                            iv[k].was) > 0;
+        }
+    char t1[200], t2[200];
+    if (!same_pairs(a->exclude_group, a->nexclude, b->exclude_group, b->nexclude)) {
+        pairs_text(g, a->exclude_group, a->nexclude, 1, t1, sizeof t1);
+        pairs_text(g, b->exclude_group, b->nexclude, 1, t2, sizeof t2);
+        return snprintf(why, len, "neigh_modify exclude group: %s (file: %s)", t1, t2) > 0;
+    }
+    if (!same_pairs(a->exclude_type, a->nexclude_type, b->exclude_type, b->nexclude_type)) {
+        pairs_text(g, a->exclude_type, a->nexclude_type, 0, t1, sizeof t1);
+        pairs_text(g, b->exclude_type, b->nexclude_type, 0, t2, sizeof t2);
+        return snprintf(why, len, "neigh_modify exclude type: %s (file: %s)", t1, t2) > 0;
+    }
+    return 0;
+}
+
+/* Why the written list cannot be continued exactly, into why; 0 when it can.
+ * Checked in this order: the file's exact data, the atoms, the neighbor
+ * settings, the box, the precision, the contact history. */
+static int list_diff(struct gravel *g, const struct image *im, char *why, size_t len)
+{
+    struct engine *e = g->eng;
+    if (!im->exact)
+        return snprintf(why, len, "the file holds no exact continuation data: the atoms were "
+                                  "changed after the last run before write_restart") > 0;
+    if (e->a.n != im->n)
+        return snprintf(why, len, "%d atoms (file: %d)", e->a.n, im->n) > 0;
+    if (atoms_fingerprint(g) != im->atoms_hash)
+        return snprintf(why, len, "per-atom values were changed after read_restart") > 0;
+    if (neigh_diff(g, &g->neigh, &im->neigh, why, len))
+        return 1;
+    if (memcmp(g->dom.lo, im->dom.lo, sizeof g->dom.lo) ||
+        memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi))
+        return snprintf(why, len, "box bounds") > 0;
+    if (e->single != im->single)
+        return snprintf(why, len, "%s precision (file: %s)", e->single ? "single" : "double",
+                        im->single ? "single" : "double") > 0;
+    if (e->history != im->history)
+        return snprintf(why, len, "contact history %s (file: %s)", e->history ? "on" : "off",
+                        im->history ? "on" : "off") > 0;
+    return 0;
+}
+
+/* The first force setting (force_fingerprint) that differs from the
+ * writer's, into why; 0 when none does. */
+static int force_diff(const struct gravel *g, const struct image *im, char *why, size_t len)
+{
+    const struct pair *p = g->styles.pair;
+    if (!p != !im->has_pair || (p && strcmp(p->style->name, im->pair_name)))
+        return snprintf(why, len, "pair style %s (file: %s)", p ? p->style->name : "none",
+                        im->has_pair ? im->pair_name : "none") > 0;
+    if (p && (p->coeff_set != im->coeff_set ||
+              memcmp(p->coef, im->coef, (size_t)im->ncoef * sizeof(double))))
+        return snprintf(why, len, "pair_style %s coefficients", p->style->name) > 0;
+    if (g->dt != im->dt)
+        return snprintf(why, len, "timestep %.15g (file: %.15g)", g->dt, im->dt) > 0;
+    int nf = g->styles.nfix;
+    for (int k = 0; k < nf || k < im->nfix; k++) {
+        if (k >= nf)
+            return snprintf(why, len, "fix %s (%s) of the file is not defined", im->fix[k].id,
+                            im->fix[k].style) > 0;
+        const struct fix *f = g->styles.fix[k];
+        if (k >= im->nfix)
+            return snprintf(why, len, "fix %s (%s) is not in the file", f->id,
+                            f->style->name) > 0;
+        const struct fix_saved *fs = &im->fix[k];
+        if (strcmp(f->id, fs->id) || strcmp(f->style->name, fs->style))
+            return snprintf(why, len, "fix %d is %s (%s), in the file %s (%s)", k + 1, f->id,
+                            f->style->name, fs->id, fs->style) > 0;
+        if (f->arghash != fs->arghash)
+            return snprintf(why, len, "the group or arguments of fix %s (%s)", f->id,
+                            fs->style) > 0;
+    }
+    return 0;
 }
 
 int restart_resume(struct gravel *g)
@@ -1234,12 +1362,8 @@ int restart_resume(struct gravel *g)
     for (int i = 0; i < im->ndev; i++)
         row[i] = find_idx(map, n, im->devtag[i]);
 
-    int exact = im->has_list && im->exact && n == im->n &&
-                atoms_fingerprint(g) == im->atoms_hash &&
-                neigh_equal(&g->neigh, &im->neigh) &&
-                !memcmp(g->dom.lo, im->dom.lo, sizeof g->dom.lo) &&
-                !memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi) &&
-                e->single == im->single;
+    char why[512] = "";
+    int exact = im->has_list && !list_diff(g, im, why, sizeof why);
 
     /* fix state, for fixes re-created with the same ID and style */
     for (int k = 0; k < im->nfix; k++) {
@@ -1262,6 +1386,8 @@ int restart_resume(struct gravel *g)
             if (!f->peratom || f->peratom_bytes != fs->peratom_bytes || fs->rsz != e->rsz) {
                 gr_warn(g, "restart: per-atom state of fix %s not restored (size or precision "
                            "differs)", fs->id);
+                if (exact)
+                    snprintf(why, sizeof why, "per-atom state of fix %s", fs->id);
                 exact = 0;
                 continue;
             }
@@ -1326,19 +1452,23 @@ int restart_resume(struct gravel *g)
             gr_warn(g, "restart: the neighbor list in the file is not symmetric; it is "
                        "rebuilt and the contact history is lost");
             exact = 0;
-        } else if (exact)
+            snprintf(why, sizeof why, "the file's neighbor list is not symmetric");
+        } else if (exact) {
             result = force_fingerprint(g) == im->fingerprint ? 2 : 1;
+            if (result == 1 && !force_diff(g, im, why, sizeof why))
+                snprintf(why, sizeof why, "force settings");
+        }
     }
     free(row);
     free(map);
     if (result == 1)
-        gr_print(g, "Restart: continuing with the written neighbor list; forces recomputed "
-                    "(pair style, time step or fixes differ from the writer)\n");
+        gr_print(g, "Restart: continuing with the written neighbor list; forces recomputed: "
+                    "%s differs from the writer\n", why);
     else if (result == 2)
         gr_print(g, "Restart: exact continuation of step %lld\n", (long long)im->step);
     else if (im->has_list)
-        gr_print(g, "Restart: atoms or settings changed since the file was written; contact "
-                    "history carried into a new neighbor list\n");
+        gr_print(g, "Restart: atoms or settings changed since the file was written (%s); "
+                    "contact history carried into a new neighbor list\n", why);
     image_free(im);
     r->pending = NULL;
     return result;

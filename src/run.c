@@ -17,6 +17,7 @@
 #include "run.h"
 
 #include <math.h>
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -458,6 +459,29 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
                 100 * maxov);
 }
 
+/* run_steps under an error boundary: a run that stops on an error (lost or
+ * non-finite atoms, a failed write, a fix) first ends its output
+ * (output_abort: progress line erased before the message, append-mode dumps
+ * completed with the snapshots written so far) and marks the engine idle,
+ * then the error goes on to the command boundary. */
+static void run_guarded(struct gravel *g, bigint n, int force, int post)
+{
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        output_abort(g);
+        if (g->eng)
+            g->eng->active = 0;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    run_steps(g, n, force, post);
+    g->err.jmp = outer;
+}
+
 /* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no]
  *       [every M "cmd" ... | every M NULL]
  * `every` (last, as in LAMMPS) splits the run into runs of M steps (the last
@@ -531,13 +555,13 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
     if (!nevery) {
-        run_steps(g, n, force, post);
+        run_guarded(g, n, force, post);
         return;
     }
     bigint left = n;
     for (int iter = 0; left > 0 || iter == 0; iter++) {
         bigint chunk = left < nevery ? left : nevery;
-        run_steps(g, chunk, force, post);
+        run_guarded(g, chunk, force, post);
         left -= chunk;
         if (ncmd && inp_run_commands(g, ncmd, cmds) == GR_QUIT)
             return;

@@ -154,8 +154,14 @@ static int collection_type(struct gravel *g, struct neigh_settings *ns, int argc
     return i + 1 + n;
 }
 
+/* An exclusion is an unordered pair: one already in the list (either order)
+ * is not added again, so re-issuing the same neigh_modify after read_restart
+ * (which restores the exclusions) leaves the settings as they were. */
 static void add_exclusion(struct gravel *g, int pairs[16][2], int *n, int a, int b)
 {
+    for (int k = 0; k < *n; k++)
+        if ((pairs[k][0] == a && pairs[k][1] == b) || (pairs[k][0] == b && pairs[k][1] == a))
+            return;
     if (*n >= 16)
         gr_error(g, "too many neigh_modify exclusions (at most 16 of each kind)");
     pairs[*n][0] = a;

@@ -307,6 +307,9 @@ static void check_keyword(struct gravel *g, const char *s)
         int index;
         if (!compute_parse_ref(s, id, &index))
             gr_error(g, "invalid compute reference '%s' (use c_ID or c_ID[N], N >= 1)", s);
+        /* as LAMMPS: the compute must exist when thermo_style names it */
+        if (!compute_find(g, id) && implicit_compute(g, s) < 0)
+            gr_error(g, "could not find thermo custom compute ID '%s'", id);
         return;
     }
     if (strncmp(s, "v_", 2) == 0) {
@@ -315,6 +318,8 @@ static void check_keyword(struct gravel *g, const char *s)
         for (const char *p = s + 2; *p; p++)
             if (!isalnum((unsigned char)*p) && *p != '_')
                 gr_error(g, "invalid variable reference '%s'", s);
+        if (!var_exists(g, s + 2))
+            gr_error(g, "could not find thermo custom variable name '%s'", s + 2);
         return;
     }
     if (strncmp(s, "f_", 2) == 0) {
@@ -323,6 +328,8 @@ static void check_keyword(struct gravel *g, const char *s)
         if (!fix_parse_ref(s, id, &index))
             gr_error(g, "invalid fix reference '%s' (use f_ID[N], N >= 1: fixes give global "
                         "vectors)", s);
+        if (!fix_find(g, id))
+            gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
     }
     gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
@@ -413,12 +420,13 @@ static void set_string(struct gravel *g, char **dst, const char *s)
     *dst = d;
 }
 
-void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
+/* One pass over the keywords into t; with apply 0 (t a scratch copy whose
+ * strings are the live ones) nothing is freed or allocated: the pass only
+ * checks, so a bad keyword leaves the settings as they were. */
+static void thermo_modify_pass(struct gravel *g, int argc, char **argv,
+                               struct thermo_settings *t, int apply)
 {
-    struct thermo_settings *t = &g->thermo;
     char buf[96];
-    if (argc < 1)
-        gr_error(g, "expected keyword/value pairs");
     for (int i = 0; i < argc; i++) {
         const char *kw = argv[i];
         if (strcmp(kw, "norm") == 0) {
@@ -452,6 +460,8 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             const char *what = argv[++i];
             if (strcmp(what, "none") == 0) {
+                if (!apply)
+                    continue;
                 free(t->format_line);
                 free(t->format_int);
                 free(t->format_float);
@@ -469,15 +479,18 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
                 /* words checked against the column kinds at run setup */
                 if (strlen(f) > 2000)
                     gr_error(g, "format line is too long");
-                set_string(g, &t->format_line, f);
+                if (apply)
+                    set_string(g, &t->format_line, f);
             } else if (strcmp(what, "int") == 0) {
                 if ((bad = output_format_fix(f, 1, buf)))
                     gr_error(g, "format int '%.64s' %s", f, bad);
-                set_string(g, &t->format_int, f);
+                if (apply)
+                    set_string(g, &t->format_int, f);
             } else if (strcmp(what, "float") == 0) {
                 if ((bad = output_format_fix(f, 0, buf)))
                     gr_error(g, "format float '%.64s' %s", f, bad);
-                set_string(g, &t->format_float, f);
+                if (apply)
+                    set_string(g, &t->format_float, f);
             } else if (arg_is_number(what)) {
                 int n = columns(g);
                 int col = arg_int(g, what, "format column");
@@ -489,7 +502,8 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
                     gr_error(g, "format '%.64s' for column %d has no conversion", f, col);
                 if (strlen(f) > 60)
                     gr_error(g, "format '%.64s...' is longer than 60 characters", f);
-                set_string(g, &t->format_col[col - 1], f);
+                if (apply)
+                    set_string(g, &t->format_col[col - 1], f);
             } else {
                 gr_error(g, "format must be followed by line, int, float, none or a column "
                             "number, got '%.64s'", what);
@@ -511,7 +525,16 @@ void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.64s' (norm, format, flush, lost, line, temp)", kw);
         }
     }
-    t->modified = 1;
+}
+
+void cmd_thermo_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "expected keyword/value pairs");
+    struct thermo_settings check = g->thermo;
+    thermo_modify_pass(g, argc, argv, &check, 0);
+    thermo_modify_pass(g, argc, argv, &g->thermo, 1);
+    g->thermo.modified = 1;
 }
 
 /* ---- run setup ----------------------------------------------------------------- */

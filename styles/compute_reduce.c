@@ -98,6 +98,8 @@ static void reduce_create(struct gravel *g, struct compute *c, int argc, char **
                 gr_error(g, "compute reduce: unknown input '%.64s'", s);
             if (strcmp(in->cid, c->id) == 0)
                 gr_error(g, "compute reduce: compute %s cannot reduce itself", c->id);
+            /* as LAMMPS: the compute must exist (and be per-atom) now; init checks again */
+            compute_peratom_check(g, in->cid, in->index, "compute reduce");
         }
         r->n++;
     }

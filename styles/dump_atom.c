@@ -34,7 +34,8 @@ static void atom_create(struct gravel *g, struct dump *d, int argc, char **argv)
     atom_columns(g, d, 1, 0); /* LAMMPS defaults: scale yes, image no */
 }
 
-static int atom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i)
+static int atom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
+                       int apply)
 {
     const char *kw = argv[i];
     if (strcmp(kw, "scale") == 0 || strcmp(kw, "image") == 0) {
@@ -47,10 +48,11 @@ static int atom_modify(struct gravel *g, struct dump *d, int argc, char **argv, 
             scale = yes;
         else
             image = yes;
-        atom_columns(g, d, scale, image);
+        if (apply)
+            atom_columns(g, d, scale, image);
         return 2;
     }
-    return dump_style_custom.modify(g, d, argc, argv, i);
+    return dump_style_custom.modify(g, d, argc, argv, i, apply);
 }
 
 static void atom_init(struct gravel *g, struct dump *d)

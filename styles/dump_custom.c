@@ -116,7 +116,8 @@ static void set_str(struct gravel *g, char **dst, const char *s)
 }
 
 /* dump_modify format line|int|float|N "fmt" | format none */
-static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i)
+static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
+                         int apply)
 {
     struct custom *c = d->data;
     char buf[96];
@@ -126,6 +127,8 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
     arg_need(g, argc, i, 1, "format");
     const char *what = argv[i + 1];
     if (strcmp(what, "none") == 0) {
+        if (!apply)
+            return 2;
         free(c->format_line);
         free(c->format_int);
         free(c->format_float);
@@ -141,15 +144,18 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
     if (strcmp(what, "line") == 0) {
         if (strlen(f) > 4000)
             gr_error(g, "format line is too long");
-        set_str(g, &c->format_line, f);
+        if (apply)
+            set_str(g, &c->format_line, f);
     } else if (strcmp(what, "int") == 0) {
         if ((bad = output_format_fix(f, 1, buf)))
             gr_error(g, "format int '%.64s' %s", f, bad);
-        set_str(g, &c->format_int, f);
+        if (apply)
+            set_str(g, &c->format_int, f);
     } else if (strcmp(what, "float") == 0) {
         if ((bad = output_format_fix(f, 0, buf)))
             gr_error(g, "format float '%.64s' %s", f, bad);
-        set_str(g, &c->format_float, f);
+        if (apply)
+            set_str(g, &c->format_float, f);
     } else if (arg_is_number(what)) {
         int k = arg_int(g, what, "format column");
         if (k < 1 || k > c->n)
@@ -157,7 +163,8 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
         int isint = c->col[k - 1].field >= 0 && field_is_int(c->col[k - 1].field);
         if ((bad = output_format_fix(f, isint, buf)))
             gr_error(g, "format '%.64s' for column %d (%s) %s", f, k, c->col[k - 1].name, bad);
-        set_str(g, &c->format_col[k - 1], f);
+        if (apply)
+            set_str(g, &c->format_col[k - 1], f);
     } else {
         gr_error(g, "format must be followed by line, int, float, none or a column number, got "
                     "'%.64s'", what);

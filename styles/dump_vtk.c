@@ -47,12 +47,15 @@ static void vtk_destroy(struct dump *d)
     d->data = NULL;
 }
 
-static int vtk_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i)
+static int vtk_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
+                      int apply)
 {
     if (strcmp(argv[i], "binary") != 0)
         return 0;
     arg_need(g, argc, i, 1, "binary");
-    d->binary = arg_yesno(g, argv[i + 1], "binary");
+    int yes = arg_yesno(g, argv[i + 1], "binary");
+    if (apply)
+        d->binary = yes;
     return 2;
 }
 

@@ -1,6 +1,13 @@
-/* fuzz_input.c - libFuzzer target: arbitrary bytes as an input script.
+/* fuzz_input.c - libFuzzer target: arbitrary bytes as an input script, a
+ * data file or a restart file.
  *
- * Each input runs on a fresh engine with no screen and no log, inside a
+ * The first line selects what the rest is: "#!data" (the rest is written to
+ * fz.data and read by `read_data fz.data`), "#!restart" (written to fz.rst,
+ * read by `read_restart fz.rst`, then a few commands that use the restored
+ * state), "#!restart+" (the same, after the harness rewrote the header's
+ * payload length and FNV-1a checksum to match the bytes, so mutations reach
+ * the section parser and the validation instead of the checksum test),
+ * anything else: the whole input is the script. Each input runs on a fresh engine with no screen and no log, inside a
  * scratch directory (print/log may write files there). Commands that would
  * start the OpenCL engine, write outputs endlessly or read outside the
  * scratch directory are refused through inp_set_limits(), and a command
@@ -22,8 +29,14 @@ static const char *denied[] = {"run", "minimize", "create_atoms", "read_data", "
  * (no '/'), so the fuzzer never reads /dev/stdin or writes elsewhere. `log`
  * is allowed only as `log none`: a log file per input made every run slow
  * (opening and echoing into files) without reaching new code. */
+static int harness_file; /* the harness' own read_data / read_restart are allowed */
+
 static int allow(int argc, char **argv)
 {
+    if (harness_file && argc == 2 &&
+        ((!strcmp(argv[0], "read_data") && !strcmp(argv[1], "fz.data")) ||
+         (!strcmp(argv[0], "read_restart") && !strcmp(argv[1], "fz.rst"))))
+        return 1;
     for (int i = 0; denied[i]; i++)
         if (strcmp(argv[0], denied[i]) == 0)
             return 0;
@@ -55,18 +68,88 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     return 0;
 }
 
+/* The script run after a data or restart file is read: commands that walk
+ * the restored atoms, groups and box. */
+static const char data_script[] =
+    "atom_style sphere\n"
+    "read_data fz.data\n"
+    "group g1 type 1\n"
+    "set group all density 1.0\n"
+    "variable n equal count(all)+xcm(all,x)\n"
+    "print \"$n\"\n";
+static const char restart_script[] =
+    "read_restart fz.rst\n"
+    "group g1 type 1\n"
+    "variable n equal count(all)+xcm(all,x)+mass(all)\n"
+    "print \"$n\"\n"
+    "pair_coeff * *\n";
+
+static int write_file(const char *name, const uint8_t *data, size_t size)
+{
+    FILE *fp = fopen(name, "wb");
+    if (!fp)
+        return -1;
+    size_t w = fwrite(data, 1, size, fp);
+    return (fclose(fp) == 0 && w == size) ? 0 : -1;
+}
+
+/* "#!restart+": make the header's length and checksum those of the payload
+ * (restart.h: 32-byte header, u64 length at 16, u64 FNV-1a 64 at 24). */
+static void fix_header(uint8_t *b, size_t n)
+{
+    if (n < 32)
+        return;
+    uint64_t len = n - 32, h = 14695981039346656037ull;
+    for (size_t i = 32; i < n; i++)
+        h = (h ^ b[i]) * 1099511628211ull;
+    memcpy(b + 16, &len, 8);
+    memcpy(b + 24, &h, 8);
+}
+
+static int has_prefix(const uint8_t *data, size_t size, const char *p)
+{
+    size_t n = strlen(p);
+    return size >= n && !memcmp(data, p, n);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    char *text = malloc(size + 1);
-    if (!text)
-        return 0;
-    memcpy(text, data, size);
-    text[size] = '\0';
+    const char *script = NULL;
+    harness_file = 0;
+    if (has_prefix(data, size, "#!data\n")) {
+        if (write_file("fz.data", data + 7, size - 7))
+            return 0;
+        script = data_script;
+    } else if (has_prefix(data, size, "#!restart+\n")) {
+        uint8_t *copy = malloc(size);
+        if (!copy)
+            return 0;
+        memcpy(copy, data + 11, size - 11);
+        fix_header(copy, size - 11);
+        int bad = write_file("fz.rst", copy, size - 11);
+        free(copy);
+        if (bad)
+            return 0;
+        script = restart_script;
+    } else if (has_prefix(data, size, "#!restart\n")) {
+        if (write_file("fz.rst", data + 10, size - 10))
+            return 0;
+        script = restart_script;
+    }
+    char *text = NULL;
+    if (!script) {
+        text = malloc(size + 1);
+        if (!text)
+            return 0;
+        memcpy(text, data, size);
+        text[size] = '\0';
+    }
+    harness_file = script != NULL;
     struct gravel *g = gr_create();
     g->screen = NULL;
     g->echo = ECHO_NONE;
     inp_set_limits(g, allow, 1000, (size_t)4 << 20);
-    inp_string(g, text, "fuzz.in");
+    inp_string(g, script ? script : text, "fuzz.in");
     gr_destroy(g);
     free(text);
     return 0;

@@ -3,7 +3,10 @@
 # through the ASan+UBSan build of gravel in a scratch directory. A file passes
 # when gravel ends by itself (exit 0, 1 for a reported script error, or a quit
 # status other than 86, 87, 124 or >= 128) within 20 s and no sanitizer reports anything. One PASS/FAIL line
-# per file.
+# per file. A file whose first line is "#!data" or "#!restart" is, after that
+# line, a data file or restart file: it is read by the same commands as in
+# the harness (tests/fuzz/fuzz_input.c: data_script, restart_script);
+# "#!restart+" files get their header's length and checksum fixed first.
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 bin="$root/bin/gravel-asan"
@@ -21,7 +24,25 @@ for f in "$root"/tests/fuzz/corpus/*; do
     name=$(basename "$f")
     dir="$scratch/$name"
     mkdir -p "$dir"
-    (cd "$dir" && timeout 20 "$bin" -in "$f" -log none -screen none > out.txt 2> err.txt)
+    deck="$f"
+    case "$(head -c 10 "$f")" in
+    '#!data'*)
+        tail -c +8 "$f" > "$dir/fz.data"
+        deck="$dir/fz.in"
+        printf '%s\n' 'atom_style sphere' 'read_data fz.data' 'group g1 type 1' \
+            'set group all density 1.0' 'variable n equal count(all)+xcm(all,x)' \
+            'print "$n"' > "$deck" ;;
+    '#!restart+'*|'#!restart'*)
+        case "$(head -c 11 "$f")" in
+        '#!restart+'*) python3 "$root/tests/fuzz/fix_restart_header.py" "$f" "$dir/fz.rst" ;;
+        *) tail -c +11 "$f" > "$dir/fz.rst" ;;
+        esac
+        deck="$dir/fz.in"
+        printf '%s\n' 'read_restart fz.rst' 'group g1 type 1' \
+            'variable n equal count(all)+xcm(all,x)+mass(all)' 'print "$n"' \
+            'pair_coeff * *' > "$deck" ;;
+    esac
+    (cd "$dir" && timeout 20 "$bin" -in "$deck" -log none -screen none > out.txt 2> err.txt)
     rc=$?
     if grep -q -e 'Sanitizer' -e 'runtime error' "$dir/err.txt"; then
         echo "FAIL fuzz_replay $name (sanitizer report)"

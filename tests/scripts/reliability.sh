@@ -1,7 +1,8 @@
 #!/bin/sh
 # reliability.sh - issue 12 through the command line: -in of a directory or
 # an endless device, -log on a full disk, print append at a file size limit
-# (no partial line), `run ... post no` (only the Loop time line), and a run
+# (no partial line), `run ... post no` (only the Loop time line), lost and
+# non-finite atoms named with what was seen, and a run
 # under an address-space limit (a clean stop with the numbers). One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
@@ -62,6 +63,68 @@ IN
 first=$(sed -n '1,/^between$/p' out)
 rest=$(sed -n '/^between$/,$p' out)
 check run_post_no '[ $rc -eq 0 ] && echo "$first" | grep -q "^Loop time of .* for 10 steps" && ! echo "$first" | grep -q "MPI task timing breakdown\|^Performance:\|Neighbor list builds" && echo "$rest" | grep -q "MPI task timing breakdown"'
+
+# item 4: a lost-atoms stop names the particle, where it was, how fast and the face it crossed
+cat > in.lost <<'IN'
+units lj
+atom_style sphere
+boundary p p f
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 single 5 5 5
+create_atoms 1 single 2 2 2
+set group all diameter 1 density 1
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+velocity all set 0 0 0
+group one id 2
+velocity one set 0 0 -300
+fix 1 all nve/sphere
+run 100
+IN
+"$bin" -in in.lost -log none > out 2>&1; rc=$?
+check lost_atom_named '[ $rc -eq 1 ] && grep -q "ERROR: run: Lost atoms: original 2 current 1 at step 2: atom 2 at (2, 2, -1) with velocity (0, 0, -300) crossed the z lo boundary (f) at 0; its speed 300 moves it 1.5 per step (0.15 box lengths in z); .*(in.lost:15)$" out'
+
+# a blow-up from two coincident atoms names both and does not blame the resolved time step
+cat > in.coinc <<'IN'
+units lj
+atom_style sphere
+boundary p p f
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 single 5 5 5
+create_atoms 1 single 5 5 5
+create_atoms 1 single 2 2 2
+set group all diameter 1 density 1
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+timestep 0.001
+run 100
+IN
+"$bin" -in in.coinc -log none > out 2>&1; rc=$?
+check nonfinite_coincident '[ $rc -eq 1 ] && grep -q "ERROR: run: non-finite position or velocity at step 1: atom 1 has position (.*); at the start of the run (step 0) atom 1 and atom 2 were at the same position (5, 5, 5), so their contact has no normal direction (in.coinc:14)$" out && ! grep -q "probable cause" out'
+
+# an absurd velocity: the speed against the box, and the resolved time step is not blamed
+cat > in.vel <<'IN'
+units lj
+atom_style sphere
+boundary p p p
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 single 5 5 5
+create_atoms 1 single 2 2 2
+set group all diameter 1 density 1
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+group one id 2
+velocity one set 1e300 1e300 0
+fix 1 all nve/sphere
+timestep 0.001
+run 100
+IN
+"$bin" -in in.vel -log none > out 2>&1; rc=$?
+check absurd_velocity '[ $rc -eq 1 ] && grep -q "ERROR: run: Lost atoms: .* atom 2 at (1e+297, 1e+297, 2) with velocity (1e+300, 1e+300, 0) moved more than a box length through the periodic x boundaries in one step; its speed 1.414e+300 moves it 1.414e+297 per step (1e+296 box lengths in x); the time step 0.001 resolves the estimated collision time .* (37.5 steps per collision), so look at the configuration.*(in.vel:15)$" out && ! grep -q "probable cause" out'
 
 # memory pressure (issue 12 item 6): under an address-space limit the run stops cleanly, before
 # the OpenCL runtime would abort, with the bytes it needed and the bytes the limit leaves

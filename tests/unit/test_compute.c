@@ -136,10 +136,11 @@ TEST(reduce_references)
 {
     struct gravel *g = make();
     CHECK(test_script(g, "compute ka all ke/atom\ncompute rk all reduce max c_ka\n"
-                         "compute k all ke\ncompute bad all reduce sum c_k\n") == GR_OK);
-    CHECK(fx_call(g, do_init_all, 0, NULL) == 1);
+                         "compute k all ke\n") == GR_OK);
+    /* checked when the command is read, as LAMMPS: the compute is not added */
+    CHECK(test_script(g, "compute bad all reduce sum c_k\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "compute k (ke) does not produce per-atom values") != NULL);
-    CHECK(test_script(g, "uncompute bad\n") == GR_OK);
+    CHECK(compute_find(g, "bad") == NULL);
     CHECK(fx_call(g, do_init_all, 0, NULL) == 0);
     CHECK_NEAR(scalar(g, "rk"), 14.0, 1e-13);
     CHECK(test_script(g, "uncompute ka\n") == GR_OK);
@@ -168,15 +169,19 @@ TEST(property_atom)
     CHECK(scalar(g, "r1") == 0.5);
     v = compute_vector(g, compute_find(g, "r2"));
     CHECK(v[0] == 3.0 && v[1] == 10.0 && v[2] == 1.0 + 2.0 + 0.5 + 1.0);
-    CHECK(test_script(g, "compute bad1 all reduce sum c_pa\n"
-                         "compute bad2 all reduce sum c_pv[1]\n"
-                         "compute bad3 all reduce sum c_pa[5]\n") == GR_OK);
-    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad1"}) == 1);
+    /* wrong forms are errors of the command itself (as LAMMPS) */
+    CHECK(test_script(g, "compute bad1 all reduce sum c_pa\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "compute pa has 4 per-atom columns; use c_pa[N]") != NULL);
-    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad2"}) == 1);
+    CHECK(test_script(g, "compute bad2 all reduce sum c_pv[1]\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "compute pv has one per-atom value; use c_pv") != NULL);
-    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad3"}) == 1);
+    CHECK(test_script(g, "compute bad3 all reduce sum c_pa[5]\n") == GR_ERR);
     CHECK(strstr(g->err.msg, "c_pa[5] is out of range") != NULL);
+    CHECK(!compute_find(g, "bad1") && !compute_find(g, "bad2") && !compute_find(g, "bad3"));
+    /* and at evaluation, when the referenced compute changed since */
+    CHECK(test_script(g, "compute pq all property/atom x vz\ncompute bad4 all reduce sum c_pq[2]\n"
+                         "uncompute pq\ncompute pq all property/atom x\n") == GR_OK);
+    CHECK(fx_call(g, eval_named, 1, (char *[]){"bad4"}) == 1);
+    CHECK(strstr(g->err.msg, "compute pq has one per-atom value; use c_pq") != NULL);
     fx_destroy(g);
 }
 

@@ -455,7 +455,11 @@ TEST(command_errors)
              "create_atoms 1 single 0 0 0 units box\nrun 0\n",
              "f_m[8] is out of range: fix m has 7 values", 8);
     MESH_ERR("fix m all mesh/surface file %s type 1\nthermo_style custom step f_q[1]\n"
-             "create_atoms 1 single 0 0 0 units box\nrun 0\n", "no fix with ID 'q'", 8);
+             "create_atoms 1 single 0 0 0 units box\nrun 0\n",
+             "could not find thermo custom fix ID 'q'", 6);
+    MESH_ERR("fix m all mesh/surface file %s type 1\nfix q all gravity 1.0 vector 0 0 -1\n"
+             "thermo_style custom step f_q[1]\nunfix q\n"
+             "create_atoms 1 single 0 0 0 units box\nrun 0\n", "no fix with ID 'q'", 10);
 #undef MESH_ERR
 }
 

@@ -9,7 +9,10 @@
 #include "test.h"
 
 #include "error.h"
+#include "dump.h"
 #include "fix.h"
+#include "pair.h"
+#include "restart.h"
 #include "variable.h"
 
 static char tmpdir[64];
@@ -108,7 +111,7 @@ TEST(not_regular_files)
     CHECK_ERROR("read_restart /dev/null\n", "is a character device", 1);
     /* a restart header that announces more than the file holds: no allocation of it */
     char hdr[40] = "GRAVELRS";
-    uint32_t marker = 0x01020304u, version = 2;
+    uint32_t marker = RESTART_ENDIAN_MARKER, version = RESTART_FORMAT_VERSION;
     uint64_t len = (uint64_t)1 << 62, hash = 0;
     memcpy(hdr + 8, &marker, 4);
     memcpy(hdr + 12, &version, 4);
@@ -171,6 +174,26 @@ TEST(messages)
     gr_destroy(g);
     CHECK_ERROR("region b block 0 1 0 1 0 1\ncreate_box 1 b\nmass 1 1e999\n",
                 "expected a number", 3);
+    /* in a data file and in expressions too */
+    const char *dn = "# denormal\n\n1 atoms\n1 atom types\n0 2 xlo xhi\n0 2 ylo yhi\n"
+                     "0 2 zlo zhi\n\nAtoms # sphere\n\n1 1 1.0 1.0 0.5 0.5 4.9e-324\n\n"
+                     "Velocities\n\n1 4.9e-324 0 0 0 0 0\n";
+    write_bytes(tmp_path("dn.data"), dn, strlen(dn));
+    g = test_engine();
+    SCRIPT("atom_style sphere\nread_data %s\nvariable d equal 4.9e-324*2\n", tmp_path("dn.data"));
+    CHECK(inp_string(g, script, "test.in") == GR_OK);
+    CHECK(g->atoms.n == 1 && g->atoms.x[2] > 0 && g->atoms.x[2] < 1e-320 &&
+          g->atoms.v[0] > 0 && g->atoms.v[0] < 1e-320);
+    CHECK(var_compute_equal(g, "d") > 0 && var_compute_equal(g, "d") < 1e-320);
+    gr_destroy(g);
+    /* a region with huge finite bounds is bounded: usable for a group */
+    g = test_engine();
+    CHECK(inp_string(g, "region b block 0 1 0 1 0 1\ncreate_box 1 b\n"
+                        "region h block -1e308 1e308 -1e308 1e308 -1e308 1e308\n"
+                        "create_atoms 1 single 0.5 0.5 0.5\ngroup in region h\n",
+                     "test.in") == GR_OK);
+    CHECK(g->atoms.n == 1 && (g->atoms.mask[0] & 2u));
+    gr_destroy(g);
     /* a huge bounded range is not "unbounded" */
     CHECK_ERROR("region b block -1e308 1e308 0 1 0 1\ncreate_box 1 b\n",
                 "region 'b' spans -1e+308 to 1e+308 in x: a box length of inf is too large", 2);
@@ -230,6 +253,192 @@ TEST(fix_unwinding)
     gr_destroy(g);
 }
 
+/* The state a failing command must leave as it was: counts and identities of
+ * fixes, computes, dumps, regions and groups, the pair style and its
+ * coefficients, the thermo columns, atom values. */
+struct snapshot {
+    int nfix, ncompute, ndump, nregion, ngroup, natoms, ncol, ntypes, lost, norm, flush;
+    int dump_every, dump_sort, dump_pad;
+    char *format_float;
+    void *fix0, *compute0, *dump0, *region0, *pair;
+    unsigned mask[8];
+    double coef0, diam0, mass0, vx0;
+    char col1[GR_NAMELEN];
+};
+
+static void snap(struct gravel *g, struct snapshot *s)
+{
+    memset(s, 0, sizeof *s);
+    s->nfix = g->styles.nfix;
+    s->ncompute = g->styles.ncompute;
+    s->ndump = g->styles.ndump;
+    s->nregion = g->regions.n;
+    for (int k = 0; k < GR_MAXGROUP; k++)
+        s->ngroup += g->groups.used[k];
+    s->natoms = g->atoms.n;
+    s->ntypes = g->atoms.ntypes;
+    s->ncol = g->thermo.ncol;
+    s->lost = (int)g->thermo.lost;
+    s->norm = g->thermo.norm;
+    s->flush = g->thermo.flush;
+    s->format_float = g->thermo.format_float;
+    snprintf(s->col1, sizeof s->col1, "%s", g->thermo.ncol > 1 ? g->thermo.col[1] : "");
+    s->fix0 = s->nfix ? g->styles.fix[0] : NULL;
+    s->compute0 = s->ncompute ? g->styles.compute[0] : NULL;
+    s->dump0 = s->ndump ? g->styles.dump[0] : NULL;
+    if (s->ndump) {
+        s->dump_every = g->styles.dump[0]->every;
+        s->dump_sort = g->styles.dump[0]->sort;
+        s->dump_pad = g->styles.dump[0]->pad;
+    }
+    s->region0 = s->nregion ? g->regions.r[0] : NULL;
+    s->pair = g->styles.pair;
+    s->coef0 = g->styles.pair ? g->styles.pair->coef[0] : 0;
+    for (int i = 0; i < g->atoms.n && i < 8; i++)
+        s->mask[i] = g->atoms.mask[i];
+    if (g->atoms.n) {
+        s->diam0 = g->atoms.radius[0];
+        s->mass0 = g->atoms.rmass[0];
+        s->vx0 = g->atoms.v[0];
+    }
+}
+
+/* item 7: every failing command leaves the engine as it was */
+TEST(failing_commands_change_nothing)
+{
+    struct gravel *g = test_engine();
+    SCRIPT("units lj\natom_style sphere\nregion b block 0 4 0 4 0 4\ncreate_box 2 b\n"
+           "create_atoms 1 single 1 1 1\ncreate_atoms 2 single 3 3 3\n"
+           "set group all diameter 0.5 density 1\n"
+           "pair_style gran/hooke 2000 NULL 50 NULL 0.5 0\npair_coeff * *\n"
+           "group g1 type 1\nregion r1 sphere 1 1 1 0.5\ncompute c1 all ke\n"
+           "fix 1 all nve/sphere\ndump d1 all atom 100 %s\n"
+           "thermo_style custom step atoms ke\n", tmp_path("d1.atom"));
+    CHECK(inp_string(g, script, "test.in") == GR_OK);
+    static const char *bad[] = {
+        "fix 1 all gravity bogus\n",
+        "fix 2 g1 wall/gran hooke 1 NULL 1 NULL 0.5 0 zplane 0 NULL bogus\n",
+        "compute c1 all reduce bogus ke\n",
+        "compute c2 all reduce sum c_nonexistent\n",
+        "compute c3 all property/atom bogus\n",
+        "dump d2 all custom 10 d2.txt id bogus\n",
+        "dump d1 all atom 10 other.atom\n",
+        "dump_modify d1 every 10 bogus 1\n",
+        "dump_modify d1 every 7 sort id pad 3 format float %10.4f scale no first maybe\n",
+        "region r1 block 0 1 0 1 0 1\n",
+        "region r2 block 0 1 0 1 0 bogus\n",
+        "region r3 union 2 r1 nonexistent\n",
+        "region r4 sphere 0 0 0 -1\n",
+        "group g1 region nonexistent\n",
+        "group g2 type 1 bogus\n",
+        "group g3 id 1:x\n",
+        "group g1 subtract all nonexistent\n",
+        "pair_style gran/hooke 2000 NULL 50 NULL bogus 0\n",
+        "pair_style bogus/style 1\n",
+        "pair_coeff 1 3\n",
+        "thermo_style custom step bogus\n",
+        "thermo_style custom step c_nonexistent\n",
+        "set group all diameter 2.0 density -1\n",
+        "set group all vx 5.0 bogus 1\n",
+        "velocity all set 1 0 0 bogus yes\n",
+        "velocity all create -1 1234\n",
+        "mass 1 -1\n",
+        "create_atoms 1 single 1 1 1 bogus\n",
+        "create_atoms 1 single 9 9 9\n",
+        "delete_atoms group g1 bogus\n",
+        "displace_atoms all move 1 0 0 bogus\n",
+        "neigh_modify every 2 delay 3\n",
+        "neigh_modify exclude group g1 nonexistent\n",
+        "timestep -1\n",
+        "unfix nonexistent\n",
+        "uncompute nonexistent\n",
+        "undump nonexistent\n",
+        "thermo_modify lost warn norm maybe\n",
+        "lattice sc -1\n",
+        "lattice fcc 1.0 origin 0.5 0.5 0.5 orient x 1 0 0 bogus\n",
+        "lattice sc 1.0 spacing 1 1\n",
+        "change_box all x final 0 8 bogus\n",
+        "units real\n",
+        "boundary f f f\n",
+        "atom_modify sort 100 -1\n",
+        "thermo_modify format float %12.5f flush bogus\n",
+        NULL};
+    for (int k = 0; bad[k]; k++) {
+        struct snapshot a, b;
+        struct neigh_settings ns = g->neigh;
+        struct domain dom = g->dom;
+        double dt = g->dt;
+        snap(g, &a);
+        int rc = inp_string(g, bad[k], "test.in");
+        snap(g, &b);
+        int same = !memcmp(&a, &b, sizeof a) && !memcmp(&ns, &g->neigh, sizeof ns) &&
+                   !memcmp(&dom, &g->dom, sizeof dom) && dt == g->dt;
+        if (rc != GR_ERR || !same)
+            printf("  command '%.*s': rc %d, state %s\n", (int)strlen(bad[k]) - 1, bad[k], rc,
+                   same ? "unchanged" : "CHANGED");
+        CHECK(rc == GR_ERR && same);
+    }
+    /* and the engine still runs */
+    CHECK(inp_string(g, "run 5\n", "test.in") == GR_OK);
+    gr_destroy(g);
+    /* before a box: a failing read_data or create_box creates nothing */
+    const char *bad_data = "# bad\n\n2 atoms\n1 atom types\n0 2 xlo xhi\n0 2 ylo yhi\n"
+                           "0 2 zlo zhi\n\nAtoms # sphere\n\n1 1 1.0 1.0 0.5 0.5 0.5\n"
+                           "2 1 1.0 1.0 1.5 x 1.5\n";
+    write_bytes(tmp_path("bad.data"), bad_data, strlen(bad_data));
+    g = test_engine();
+    SCRIPT("atom_style sphere\nregion r block 0 1 0 1 0 1\nread_data %s\n", tmp_path("bad.data"));
+    CHECK(inp_string(g, script, "test.in") == GR_ERR);
+    CHECK(g->atoms.n == 0 && !g->dom.box_exists && g->regions.n == 1);
+    CHECK(inp_string(g, "create_box 1 nonexistent\n", "test.in") == GR_ERR);
+    CHECK(inp_string(g, "boundary p p bogus\n", "test.in") == GR_ERR);
+    CHECK(g->dom.bnd[2][0] == BND_P && !g->dom.box_exists);
+    CHECK(inp_string(g, "create_box 1 r\n", "test.in") == GR_OK);
+    CHECK(g->dom.box_exists && g->atoms.ntypes == 1);
+    gr_destroy(g);
+    /* references are checked when the command is read, as in LAMMPS */
+    const char *box = "region b block 0 1 0 1 0 1\ncreate_box 1 b\n";
+    SCRIPT("%sthermo_style custom step c_nope\n", box);
+    CHECK_ERROR(script, "could not find thermo custom compute ID 'nope'", 3);
+    SCRIPT("%sthermo_style custom step v_nope\n", box);
+    CHECK_ERROR(script, "could not find thermo custom variable name 'nope'", 3);
+    SCRIPT("%sthermo_style custom step f_nope[1]\n", box);
+    CHECK_ERROR(script, "could not find thermo custom fix ID 'nope'", 3);
+    SCRIPT("%scompute r all reduce sum c_nope\n", box);
+    CHECK_ERROR(script, "compute reduce refers to unknown compute ID 'nope'", 3);
+}
+
+/* item 7: a run that stops on an error ends its output (output_abort): the
+ * append-mode dump holds the snapshots written so far, and the engine runs
+ * again afterwards */
+TEST(failing_run_aborts_output)
+{
+    struct gravel *g = test_engine();
+    SCRIPT("units lj\natom_style sphere\nboundary p p f\nregion b block 0 10 0 10 0 10\n"
+           "create_box 1 b\ncreate_atoms 1 single 5 5 5\ncreate_atoms 1 single 2 2 2\n"
+           "set group all diameter 1 density 1\n"
+           "pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0\npair_coeff * *\n"
+           "group one id 2\nvelocity one set 0 0 -100\nfix 1 all nve/sphere\n"
+           "timestep 0.001\ndump 1 all atom 1 %s\nrun 100\n", tmp_path("abort.atom"));
+    CHECK(inp_string(g, script, "test.in") == GR_ERR);
+    CHECK(strstr(g->err.msg, "Lost atoms: original 2 current 1") &&
+          strstr(g->err.msg, "atom 2 at (") && strstr(g->err.msg, "(test.in:16)"));
+    /* the dump file is complete up to the error: no temporary left */
+    struct stat st;
+    CHECK(stat(tmp_path("abort.atom"), &st) == 0 && st.st_size > 0);
+    CHECK(stat(tmp_path("abort.atom.tmp"), &st) != 0);
+    FILE *fp = fopen(tmp_path("abort.atom"), "r");
+    int snaps = 0;
+    char line[256];
+    while (fp && fgets(line, sizeof line, fp))
+        snaps += !strncmp(line, "ITEM: TIMESTEP", 14);
+    if (fp)
+        fclose(fp);
+    CHECK(snaps >= 2);
+    CHECK(inp_string(g, "thermo_modify lost ignore\nrun 10\n", "test.in") == GR_OK);
+    gr_destroy(g);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gravel-test-rel-XXXXXX");
@@ -241,6 +450,8 @@ int main(void)
     RUN(messages);
     RUN(failed_writes);
     RUN(fix_unwinding);
+    RUN(failing_commands_change_nothing);
+    RUN(failing_run_aborts_output);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     return system(cmd) != 0;

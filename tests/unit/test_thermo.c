@@ -291,9 +291,15 @@ TEST(errors)
     FX_CHECK_ERROR("compute k all ke\ncompute_modify k extra/dof 1\n", "no settings", 2);
     FX_CHECK_ERROR("compute_modify nope extra/dof 1\n", "unknown compute ID 'nope'", 1);
 
-    /* references are resolved at run setup */
+    /* as LAMMPS, referenced computes, fixes and variables must exist when
+     * thermo_style is read; the values are resolved at run setup */
+    FX_CHECK_ERROR("thermo_style custom step c_missing\n",
+                   "could not find thermo custom compute ID 'missing'", 1);
+    FX_CHECK_ERROR("thermo_style custom step v_nothing\n",
+                   "could not find thermo custom variable name 'nothing'", 1);
     struct gravel *g = make3();
-    CHECK(test_script(g, "thermo_style custom step c_missing\n") == GR_OK);
+    CHECK(test_script(g, "compute missing all ke\nthermo_style custom step c_missing\n"
+                         "uncompute missing\n") == GR_OK);
     CHECK(fx_call(g, do_init, 0, NULL) == 1);
     CHECK(strstr(g->err.msg, "unknown compute ID 'missing'") != NULL);
     CHECK(test_script(g, "compute k all ke\nthermo_style custom step c_k[2]\n") == GR_OK);
@@ -305,7 +311,8 @@ TEST(errors)
     CHECK(test_script(g, "thermo_style custom c_r\n") == GR_OK);
     CHECK(fx_call(g, do_init, 0, NULL) == 1);
     CHECK(strstr(g->err.msg, "use c_ID[N]") != NULL);
-    CHECK(test_script(g, "thermo_style custom v_nothing\n") == GR_OK);
+    CHECK(test_script(g, "variable nothing equal 1\nthermo_style custom v_nothing\n"
+                         "variable nothing delete\n") == GR_OK);
     CHECK(fx_call(g, do_init, 0, NULL) == 1);
     CHECK(strstr(g->err.msg, "variable 'nothing' is not defined") != NULL);
     /* lost is stored for the core */

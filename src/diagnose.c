@@ -1,0 +1,158 @@
+/* diagnose.c - descriptions of lost and non-finite particles (diagnose.h). */
+#include "diagnose.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "pair.h"
+
+/* Host index of tag, or -1. */
+static int host_index(const struct gravel *g, long long tag)
+{
+    for (int i = 0; i < g->atoms.n; i++)
+        if (g->atoms.tag[i] == tag)
+            return i;
+    return -1;
+}
+
+static double norm3(const double *a)
+{
+    return hypot(hypot(a[0], a[1]), a[2]); /* no overflow for huge components */
+}
+
+/* Displacement per step against the box: ", its speed S moves it D per
+ * step (F box lengths in q)" for the dimension q where the ratio is largest. */
+static void per_step(const struct gravel *g, const double v[3], char *out, size_t len)
+{
+    const double *lo = g->dom.lo, *hi = g->dom.hi;
+    int qmax = 0;
+    double rmax = -1;
+    for (int q = 0; q < 3; q++) {
+        double l = hi[q] - lo[q];
+        double r = l > 0 ? fabs(v[q]) * g->dt / l : 0;
+        if (r > rmax || isnan(r)) {
+            rmax = r;
+            qmax = q;
+        }
+    }
+    snprintf(out, len, "; its speed %.4g moves it %.4g per step (%.3g box lengths in %c)",
+             norm3(v), norm3(v) * g->dt, rmax, "xyz"[qmax]);
+}
+
+void diag_lost_atom(const struct gravel *g, long long tag, const double x[3],
+                    const double v[3], char *out, size_t len)
+{
+    const struct domain *d = &g->dom;
+    char face[160] = "";
+    for (int q = 0; q < 3 && !face[0]; q++) {
+        if (d->periodic[q] && !(x[q] >= d->lo[q] && x[q] <= d->hi[q]))
+            snprintf(face, sizeof face, "moved more than a box length through the periodic %c "
+                                        "boundaries in one step", "xyz"[q]);
+        else if (!(x[q] >= d->lo[q]))
+            snprintf(face, sizeof face, "crossed the %c lo boundary (%c) at %.10g", "xyz"[q],
+                     d->bnd[q][0], d->lo[q]);
+        else if (!(x[q] <= d->hi[q]))
+            snprintf(face, sizeof face, "crossed the %c hi boundary (%c) at %.10g", "xyz"[q],
+                     d->bnd[q][1], d->hi[q]);
+    }
+    if (!face[0])
+        snprintf(face, sizeof face, "moved more than a box length in one step");
+    char step[160];
+    per_step(g, v, step, sizeof step);
+    snprintf(out, len, "atom %lld at (%.10g, %.10g, %.10g) with velocity (%.6g, %.6g, %.6g) %s%s",
+             tag, x[0], x[1], x[2], v[0], v[1], v[2], face, step);
+}
+
+int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], const double v[3],
+                   char *out, size_t len)
+{
+    int w = snprintf(out, len, "atom %lld has position (%g, %g, %g) and velocity (%g, %g, %g)",
+                     tag, x[0], x[1], x[2], v[0], v[1], v[2]);
+    size_t o = w > 0 && (size_t)w < len ? (size_t)w : len - 1;
+    const struct atoms *a = &g->atoms;
+    int i = host_index(g, tag);
+    if (i < 0)
+        return 0;
+    const double *xi = a->x + 3 * i, *vi = a->v + 3 * i;
+    long long start = (long long)g->firststep;
+    /* the nearest other atom at the start of the run (periodic images) */
+    int jmin = -1;
+    double dmin = INFINITY;
+    for (int j = 0; j < a->n; j++) {
+        if (j == i)
+            continue;
+        double dx[3];
+        for (int q = 0; q < 3; q++) {
+            dx[q] = a->x[3 * j + q] - xi[q];
+            double l = g->dom.hi[q] - g->dom.lo[q];
+            if (g->dom.periodic[q] && l > 0)
+                dx[q] -= l * round(dx[q] / l);
+        }
+        double dd = norm3(dx);
+        if (dd < dmin) {
+            dmin = dd;
+            jmin = j;
+        }
+    }
+    if (jmin >= 0) {
+        double ri = a->radius[i], rj = a->radius[jmin];
+        double overlap = ri + rj - dmin, rs = ri < rj ? ri : rj;
+        if (dmin <= 1e-12 * (ri + rj)) {
+            snprintf(out + o, len - o, "; at the start of the run (step %lld) atom %lld and atom "
+                                       "%lld were at the same position (%.10g, %.10g, %.10g), "
+                                       "so their contact has no normal direction",
+                     start, tag, (long long)a->tag[jmin], xi[0], xi[1], xi[2]);
+            return 1;
+        }
+        if (rs > 0 && overlap > 0.5 * rs) {
+            snprintf(out + o, len - o, "; at the start of the run (step %lld) atom %lld "
+                                       "overlapped atom %lld by %.3g (%.0f %% of the smaller "
+                                       "radius %.4g; centres %.4g apart)",
+                     start, tag, (long long)a->tag[jmin], overlap, 100 * overlap / rs, rs, dmin);
+            return 1;
+        }
+    }
+    double s = norm3(vi);
+    if (!isfinite(s) || (a->radius[i] > 0 && s * g->dt > a->radius[i])) {
+        char step[160];
+        per_step(g, vi, step, sizeof step);
+        snprintf(out + o, len - o, "; at the start of the run (step %lld) its velocity was "
+                                   "(%.6g, %.6g, %.6g), more than its radius %.4g per step%s",
+                 start, vi[0], vi[1], vi[2], a->radius[i], step);
+        return 1;
+    }
+    return 0;
+}
+
+void diag_time_step(const struct gravel *g, char *out, size_t len)
+{
+    const struct pair *p = g->styles.pair;
+    if (p && p->style->collision_time && g->atoms.n > 0) {
+        double m = 0, r = 0, vmax = 0;
+        /* lightest particle of the host copy (run start) */
+        for (int k = 0; k < g->atoms.n; k++) {
+            if (m == 0 || g->atoms.rmass[k] < m) {
+                m = g->atoms.rmass[k];
+                r = g->atoms.radius[k];
+            }
+            for (int d = 0; d < 3; d++)
+                if (isfinite(g->atoms.v[3 * k + d]))
+                    vmax = fmax(vmax, fabs(g->atoms.v[3 * k + d]));
+        }
+        double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
+        if (isfinite(tc) && tc / g->dt >= 10)
+            snprintf(out, len,
+                     "; the time step %g resolves the estimated collision time %g of pair style "
+                     "%s (%.3g steps per collision), so look at the configuration: particles "
+                     "created inside each other, an absurd velocity or force, or a fix that "
+                     "moves atoms", g->dt, tc, p->style->name, tc / g->dt);
+        else
+            snprintf(out, len,
+                     "; probable cause: the time step %g vs the estimated collision time %g of "
+                     "pair style %s (%.3g steps per collision; at least ~10 are needed)",
+                     g->dt, tc, p->style->name, tc / g->dt);
+    } else {
+        snprintf(out, len, "; probable cause: a time step (%g) too large for the forces, or "
+                           "overlapping particles in the initial configuration", g->dt);
+    }
+}
