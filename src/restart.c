@@ -1254,7 +1254,8 @@ static int neigh_diff(const struct gravel *g, const struct neigh_settings *a,
     if (a->skin != b->skin)
         return snprintf(why, len, "neighbor skin %.15g (file: %.15g)", a->skin, b->skin) > 0;
     if (a->style != b->style)
-        return snprintf(why, len, "neighbor style %s (file: %s)", a->style == NEIGH_MULTI ? "multi" : "bin",
+        return snprintf(why, len, "neighbor style %s (file: %s)",
+                        a->style == NEIGH_MULTI ? "multi" : "bin",
                         b->style == NEIGH_MULTI ? "multi" : "bin") > 0;
     struct { const char *kw; int now, was, yesno; } iv[] = {
         {"every", a->every, b->every, 0}, {"delay", a->delay, b->delay, 0},
