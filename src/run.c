@@ -16,10 +16,12 @@
 #include "run.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "accuracy.h"
 #include "args.h"
 #include "engine.h"
 #include "error.h"
@@ -138,6 +140,10 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             eng_arg_real(g, k, i++, l->L[q]);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
+        acc_reserve(g);
+        eng_arg_mem(g, k, i++, acc_pair_rec(g));
+        eng_arg_mem(g, k, i++, acc_pair_step(g));
+        eng_arg_int(g, k, i++, acc_step(g));
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
         i = 0;
@@ -161,6 +167,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, a->mask);
         eng_launch(g, k, (size_t)a->n);
     } else {
+        acc_reserve(g); /* the wall records */
         eng_arg_int(g, e->k_clear, 0, a->n);
         eng_arg_mem(g, e->k_clear, 1, a->f);
         eng_arg_mem(g, e->k_clear, 2, e->rotation ? a->torque : a->f);
@@ -285,6 +292,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     unsigned freezebit = fz ? fz->groupbit : 0;
     timestep_report(g, force);
     precision_report(g);
+    acc_begin(g, force); /* collision resolution of the contacts that happen */
 
     g->firststep = g->step;
     g->laststep = g->step + nsteps;
@@ -324,6 +332,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         double a1 = wall();
         int rebuild = nbr_decide(g);
         if (rebuild) {
+            acc_collect(g); /* the records are per contact and atom: before renumbering */
             nbr_rebuild(g);
             eng_finish(g);
         }
@@ -353,6 +362,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         }
         g->time += g->dt;
         if (output_due(g, g->step)) {
+            acc_collect(g);
             double ov = nbr_max_overlap(g);
             if (ov > maxov)
                 maxov = ov;
@@ -374,6 +384,9 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         tm *= avail / busy;
     }
     double ttot = wall() - t0;
+    acc_collect(g);
+    const struct acc_worst *worst = acc_worst(g);
+    maxov = fmax(maxov, worst->wall_ov); /* walls and meshes: every step */
     run_sync_host(g);
     struct run_stats st = e->st;
     st.nsteps = nsteps;
@@ -388,6 +401,12 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         st.t_other = 0;
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
+    st.res_q = worst->q;
+    st.res_vn = worst->vn;
+    st.res_step = worst->step;
+    st.res_tag_i = worst->tag_i;
+    st.res_tag_j = worst->tag_j;
+    snprintf(st.res_wall, sizeof st.res_wall, "%s", worst->wall);
     st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
     e->active = 0;
@@ -397,7 +416,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         output_finish_brief(g, &st);
     /* verify: Hertz/linear contact laws assume small overlaps */
     if (maxov > 0.1)
-        gr_warn(g, "largest overlap reached %.1f %% of a radius (sampled at output steps): "
+        gr_warn(g, "largest overlap reached %.1f %% of a radius (pairs sampled at output "
+                   "steps, walls and meshes at every step): "
                    "impacts too fast or contacts too soft for the contact model",
                 100 * maxov);
 }
