@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include "accuracy.h"
+#include "accuracy_map.h"
 #include "args.h"
 #include "engine.h"
 #include "error.h"
@@ -435,7 +436,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     char **cmds = NULL;
     int upto = 0;
     bigint start = -1, stop = -1;
-    int have_start = 0, have_stop = 0, force = 0, post = 1;
+    int have_start = 0, have_stop = 0, force = 0, post = 1, accuracy = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "upto")) {
             upto = 1;
@@ -451,6 +452,8 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             /* verify: allow a time step above half the collision time */
             arg_need(g, argc, i, 1, "force");
             force = arg_yesno(g, argv[++i], "force");
+        } else if (!strcmp(argv[i], "accuracy")) {
+            accuracy = 1; /* the accuracy map first (src/accuracy_map.h) */
         } else if (!strcmp(argv[i], "pre")) {
             /* every run sets up fully (pre no is a LAMMPS speed hint) */
             arg_need(g, argc, i, 1, argv[i]);
@@ -472,7 +475,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             break;
         } else {
             gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post, "
-                        "force, every)",
+                        "force, accuracy, every)",
                      argv[i]);
         }
     }
@@ -492,6 +495,12 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     if (have_stop && stop < g->step + n)
         gr_error(g, "run stop %lld is before the last step %lld of the run", (long long)stop,
                  (long long)(g->step + n));
+    if (accuracy || g->opt.check)
+        accuracy_map(g);
+    if (g->opt.check) { /* gravel -check: the map instead of the run */
+        gr_print(g, "(-check: run %lld not performed)\n", (long long)n);
+        return;
+    }
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
     if (!nevery) {
