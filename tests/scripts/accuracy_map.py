@@ -9,8 +9,8 @@ item 7; src/accuracy_map.c, doc/accuracy_map.md) on two decks of inputs/:
   (steps per collision in ratio 2, cost 2, 1, 0.5); the errors grow with dt;
   the run itself is not performed; the PNG is written where gnuplot exists.
 - inputs/verification/hertz_collision.in (hertz/mindlin, e = 0.66): the
-  reference rebounds at e (1e-3) and the Hertz contact time of two free beads
-  (1 %); at the scene's dt (t_col/32 of the frozen-partner collision, 24
+  reference rebounds at e (1e-3) and lasts the contact time of two free beads
+  under the damped law (RK4 of its ODE, 1 %); at the scene's dt (t_col/32 of the frozen-partner collision, 24
   steps for two free beads) the restitution error is within the 1 % contract.
 - `run 20 accuracy` on an inline deck prints the map and then runs."""
 import math
@@ -23,6 +23,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import seeds_verify as sv  # noqa: E402
+import verify_chung_ooi as vco  # noqa: E402
 
 check = sv.check
 ROOT = sv.ROOT
@@ -82,10 +83,11 @@ def hertz():
     E = 2 * G * (1 + nu)
     es = E / (2 * (1 - nu * nu))
     m = math.pi / 6 * d ** 3 * rho
-    tc = 2.868 * ((m / 2) ** 2 / (d / 4 * es * es * 2.0)) ** 0.2   # two free beads, V = 2 |u0|... u0 = 1
+    # two free beads (m* = m/2, R* = d/4) at V = 2 |u0| = 2: the damped law's duration (RK4)
+    tc = vco.normal_ode("hertz/mindlin", es, d / 4, m / 2, 2.0, vco.tsuji_cd(0.66))[2]
     ok = ref is not None and abs(ref[2] / 0.66 - 1) < 1e-3 and abs(ref[1] * ref[0] / tc - 1) < 0.01 \
         and rows and abs(rows[1][3]) < 1.0
-    check("accuracy map hertz_collision.in: reference e %.5f (0.66), t_col %.4g (Hertz %.4g), "
+    check("accuracy map hertz_collision.in: reference e %.5f (0.66), t_col %.4g (law %.4g), "
           "restitution error at the scene's dt %+.3f %% (< 1 %%)"
           % (ref[2] if ref else -1, ref[1] * ref[0] if ref else -1, tc, rows[1][3] if rows else 99), ok)
     common("hertz_collision.in", rc, out, rows, png)

@@ -90,7 +90,7 @@ def elastic_tc(es, reff, meff, v):
 @functools.lru_cache(maxsize=None)
 def normal_ode(law, es, reff, meff, v, c):
     """RK4 of the normal law from first touch at closing speed v: (e, J+ /
-    (m* v)). c: hertz/mindlin cd, or gran gamma_n. J+ integrates the friction
+    (m* v), contact duration). c: hertz/mindlin cd, or gran gamma_n. J+ integrates the friction
     limit: max(F, 0) (hertz/mindlin) or |F| (gran, LAMMPS' xmu |F_n|)."""
     kn = 4.0 / 3.0 * es
     sr = math.sqrt(reff)
@@ -122,10 +122,10 @@ def normal_ode(law, es, reff, meff, v, c):
         if nd <= 0 and t > h:
             frac = d / (d - nd)   # exit inside the step: speed linear in it
             uex = u + frac * (nu_ - u)
-            return -uex / v, jp / (meff * v)
+            return -uex / v, jp / (meff * v), t - h + frac * h
         d, u = nd, nu_
         if t > 50 * tc:
-            return 0.0, jp / (meff * v)
+            return 0.0, jp / (meff * v), t
 
 
 def gran_gamma(es, reff, meff, v, e):
@@ -328,7 +328,7 @@ def plane_sweep(test, law, name, r, cases, mu, e, label):
     slowest = elastic_tc(es_, r, m, min(q[0] for q in cases))[0]
     st, _ = run_bodies(bodies, lines, dt, int(3 * slowest / dt) + 8)
     for (vn, vt, w), (x, v, om) in zip(cases, st):
-        e_law, jp = normal_ode(law, es_, r, m, vn, c)
+        e_law, jp, _ = normal_ode(law, es_, r, m, vn, c)
         tv, tw, sliding = theory_plane(vn, vt, w, r, m, mu, e_law, jp)
         ke0 = 0.5 * m * (vn * vn + vt * vt) + 0.2 * m * r * r * w * w
         ke1 = 0.5 * m * (v[0] ** 2 + v[2] ** 2) + 0.2 * m * r * r * om[1] ** 2
@@ -395,7 +395,7 @@ def pair_case(test, law, name, r1, r2, vn, v1t, w, mu, e, label):
     tc, _ = elastic_tc(es_, reff, meff, V)
     dt = tc / NSUB
     lines, c = law_lines(law, MAT[name], e, mu, False, V, reff, meff)
-    e_law, jp = normal_ode(law, es_, reff, meff, V, c)
+    e_law, jp, _ = normal_ode(law, es_, reff, meff, V, c)
     gap = 0.3 * V * dt
     bodies = [Body(r1, rho, (-r1 - gap / 2, 0.0, 0.0), (vn, v1t, 0.0), (0.0, 0.0, w)),
               Body(r2, rho, (r2 + gap / 2, 0.0, 0.0), (-vn, 0.0, 0.0), (0.0, 0.0, w))]
@@ -459,13 +459,92 @@ HEAD = {
 }
 
 
-def print_tables():
+TITLE = {
+    1: "Test 1: normal impact of two identical spheres (r 10 mm, +-10 m/s), Hertz theory",
+    2: "Test 2: normal impact of a sphere on a rigid plane (r 0.1 m, 0.2 m/s), Hertz theory",
+    3: "Test 3: restitution 0.2 .. 1 on a plane (r 2.5 mm, 3.9 m/s)",
+    4: "Test 4: oblique impact on a plane at 3.9 m/s (alumina, mu 0.092, e 0.98)",
+    5: "Test 5: constant normal speed 5 m/s, tangential speed up to 20 mu Vn (r 10 um, mu 0.3, e 1)",
+    6: "Test 6: spinning sphere on a plane at 0.2 m/s (r 0.1 m, mu 0.4, e 0.5)",
+    7: "Test 7: two identical spheres at +-0.2 m/s, both spinning at omega (r 0.1 m, mu 0.4, e 0.5)",
+    8: "Test 8: spheres of radii 0.1 and 0.05 m at +-0.2 m/s, the larger moving tangentially (Al alloy, mu 0.4, e 0.5)",
+}
+
+
+def table_lines():
+    out = []
     for test in sorted(RESULTS):
-        print("\n### Test %d\n" % test)
-        print(HEAD[test])
-        print("|" + "---|" * (HEAD[test].count("|") - 1))
-        for cols in RESULTS[test]:
-            print("| " + " | ".join(cols) + " |")
+        out += ["", "### " + TITLE[test], "", HEAD[test], "|" + "---|" * (HEAD[test].count("|") - 1)]
+        out += ["| " + " | ".join(cols) + " |" for cols in RESULTS[test]]
+    return out
+
+
+def print_tables():
+    print("\n".join(table_lines()))
+
+
+def num(s):
+    return float(s.split()[0].replace("%", ""))
+
+
+def plots(pngdir):
+    """Gnuplot PNGs of tests 3-8: ours (points) against theory (lines); the
+    PNG names written."""
+    import shutil
+    if not shutil.which("gnuplot"):
+        return []
+    spec = {3: (3, 4, 2, "input e", "output e", None),
+            4: (4, 8, 9, "incident angle (deg)", "rebound angle of the contact patch (deg)", None),
+            5: (4, 8, 9, "Vt / (mu Vn)", "rebound angle (deg)", None),
+            6: (4, 6, 7, "omega before (rad/s)", "omega after (rad/s)", None),
+            7: (4, 6, 7, "omega before (rad/s)", "omega after (rad/s)", None),
+            8: (4, 4, 5, "tangential speed before (m/s)", "tangential speed after (m/s)", None)}
+    names = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for test, (xc, yc, tc, xl, yl, _) in spec.items():
+            if test not in RESULTS:
+                continue
+            series = {}
+            for cols in RESULTS[test]:
+                key = "%s %s" % (cols[0], cols[1])
+                lab = cols[2]
+                x = float([t for t in lab.replace("=", " ").split() if t[0].isdigit() or t[0] == "-"][0]) \
+                    if test != 3 else num(cols[2])
+                y = num(cols[yc - 1]) if test != 3 else num(cols[4])
+                t = num(cols[tc - 1]) if test != 3 else num(cols[3])
+                series.setdefault(key, []).append((x, y, t))
+            plot = []
+            for k, (key, pts) in enumerate(sorted(series.items())):
+                path = os.path.join(tmp, "s%d_%d.dat" % (test, k))
+                with open(path, "w") as f:
+                    f.write("\n".join("%g %g %g" % p for p in pts) + "\n")
+                plot.append("'%s' u 1:2 w p pt %d t '%s'" % (path, 4 + 2 * k, key))
+                plot.append("'%s' u 1:3 w l lc %d t '%s theory'" % (path, k + 1, key))
+            png = os.path.join(pngdir, "chung_ooi_test%d.png" % test)
+            script = ("set terminal png size 900,560\nset output '%s'\nset xlabel '%s'\n"
+                      "set ylabel '%s'\nset key outside right\nset title \"%s\"\nplot %s\n"
+                      % (png, xl, yl, TITLE[test].replace("'", ""), ", ".join(plot)))
+            subprocess.run(["gnuplot"], input=script, text=True, check=True)
+            names.append(os.path.basename(png))
+    return names
+
+
+def write_doc(md, pngdir):
+    """make verify: run every case (FULL) and write doc/chung_ooi.md with
+    the tables and plots."""
+    global FULL
+    FULL = True
+    RESULTS.clear()
+    for law in LAWS:
+        for fn in TESTS:
+            fn(law)
+    os.makedirs(pngdir, exist_ok=True)
+    pngs = plots(pngdir)
+    with open(md) as f:
+        head = f.read().split("<!-- tables -->")[0]
+    body = table_lines() + [""] + ["![%s](verification/%s)" % (p[:-4], p) for p in pngs]
+    with open(md, "w") as f:
+        f.write(head + "<!-- tables -->\n" + "\n".join(body) + "\n")
 
 
 if __name__ == "__main__":
