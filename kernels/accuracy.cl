@@ -9,7 +9,7 @@
  *
  * Records, written only by the work-item that owns them (no atomics):
  *   pair contact c   acc[2c] = largest dt / t_col seen, acc[2c + 1] = the
- *                    normal speed then; astep[c] = step (since the run's
+ *                    squared normal speed then; astep[c] = step (since the run's
  *                    first) it was seen
  *   particle i       acc[4i] = largest dt / t_col of its wall and mesh
  *   (walls)          contacts, acc[4i + 1] its normal speed, acc[4i + 2] =
@@ -42,12 +42,13 @@ static inline REAL tcol_linear(const REAL kn, const REAL gamma, const REAL meff)
  * speed beats the record. */
 #define ACC_NOTE_PAIR(EVAL, c, k, p, acc, astep, step)                                         \
     do {                                                                                       \
-        const REAL vn_ = fabs(dot((k)->vr, (k)->del)) / sqrt((k)->rsq);                        \
-        if (vn_ > (acc)[2 * (c) + 1]) {                                                        \
-            const REAL tc_ = TCOL_OF(EVAL)(k, p, vn_);                                         \
+        const REAL dv_ = dot((k)->vr, (k)->del);                                               \
+        const REAL vn2_ = dv_ * dv_ / (k)->rsq;                                                \
+        if (vn2_ > (acc)[2 * (c) + 1]) {                                                       \
+            const REAL tc_ = TCOL_OF(EVAL)(k, p, sqrt(vn2_));                                  \
             if (tc_ > (REAL)0) {                                                               \
                 (acc)[2 * (c)] = (k)->dt / tc_;                                                \
-                (acc)[2 * (c) + 1] = vn_;                                                      \
+                (acc)[2 * (c) + 1] = vn2_;                                                     \
                 (astep)[c] = step;                                                             \
             }                                                                                  \
         }                                                                                      \

@@ -169,7 +169,7 @@ void acc_collect(struct gravel *g)
     if (c >= 0 && q > w->q) {
         const struct nbr_list *l = nbr_list(g);
         w->q = q;
-        w->vn = read_real(g, s->prec, (size_t)PAIR_REC * c + 1);
+        w->vn = sqrt(read_real(g, s->prec, (size_t)PAIR_REC * c + 1)); /* stored squared */
         w->step = g->firststep + read_int(g, s->pstep, (size_t)c);
         w->tag_i = read_tag(g, read_int(g, l->ci, (size_t)c));
         w->tag_j = read_tag(g, read_int(g, l->cj, (size_t)c));
