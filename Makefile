@@ -17,7 +17,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl kernels/*.h))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay verify reproduce-agglomeration
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay verify reproduce-agglomeration reproduce-mill
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -116,6 +116,14 @@ reproduce-agglomeration: deps
 	@sh tools/deps.sh gnuplot-nox
 	@$(MAKE) --no-print-directory all
 	@sh tools/agglomeration/sweep.sh
+
+# The 300 mm pilot mill of source document 003 sec. 6.2 as an axial slice, see
+# doc/mill.md: three speeds, about 15-25 min on 2 shared cores (MILL_SETTLE, MILL_AVE,
+# MILL_SPEEDS, MILL_SMOOTH=1 for fig. 6.13's smooth mill: tools/mill/reproduce.sh).
+reproduce-mill: deps
+	@sh tools/deps.sh gnuplot-nox
+	@$(MAKE) --no-print-directory all
+	@sh tools/mill/reproduce.sh
 
 clean:
 	rm -rf build bin

@@ -17,7 +17,16 @@
  * LAMMPS) one closer than d (center to center, minimum image in periodic
  * dimensions) to any atom is rejected, checked against a cell grid with
  * cells >= d so each test looks at 27 cells: O(N). So `lmp` and gravel
- * create the same atoms in the same order. */
+ * create the same atoms in the same order.
+ *
+ * gravel's keyword `mesh ID d` (repeatable, up to CA_MAXMESH meshes; d in
+ * lattice units unless `units box`, scaled by the x spacing as overlap)
+ * skips every lattice site or random candidate closer than d to a triangle
+ * of the fix mesh/surface `ID` in its pose at the current step (d = the
+ * radius the particles will get: no new sphere then touches the mesh). For
+ * random insertion a skipped candidate counts as a failed try, as one
+ * rejected by overlap. The region test stays LAMMPS's centre test: shrink
+ * the region by the radius to keep spheres inside its surface. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,9 +38,44 @@
 #include "lattice.h"
 #include "random.h"
 #include "region.h"
+#include "fix_mesh_surface.h"
 
 #define CA_EPSILON 1.0e-6
 #define CA_MAXTRY_DEFAULT 1000
+#define CA_MAXMESH 8
+
+/* Sites near meshes are skipped (keyword mesh): each mesh in its current
+ * pose, binned with reach d; points go to the mesh frame x0 = R^T (x - d). */
+struct mesh_skip {
+    int n;
+    const struct mesh *m[CA_MAXMESH];
+    struct mesh_bins b[CA_MAXMESH];
+    double dist[CA_MAXMESH];
+    struct mesh_pose pose[CA_MAXMESH];
+    bigint skipped;
+};
+
+static int mesh_skip_hit(struct mesh_skip *ms, const double x[3])
+{
+    for (int k = 0; k < ms->n; k++) {
+        const struct mesh_pose *p = &ms->pose[k];
+        double y[3] = {x[0] - p->d[0], x[1] - p->d[1], x[2] - p->d[2]}, x0[3];
+        for (int r = 0; r < 3; r++)
+            x0[r] = p->R[r] * y[0] + p->R[3 + r] * y[1] + p->R[6 + r] * y[2];
+        if (mesh_near(ms->m[k], &ms->b[k], x0, ms->dist[k])) {
+            ms->skipped++;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void mesh_skip_free(struct mesh_skip *ms)
+{
+    for (int k = 0; k < ms->n; k++)
+        mesh_bins_free(&ms->b[k]);
+    ms->n = 0;
+}
 
 static const double sphere_radius = 0.5;
 #define SPHERE_MASS (4.0 * M_PI / 3.0 * 0.125) /* density 1, diameter 1 */
@@ -39,6 +83,7 @@ static const double sphere_radius = 0.5;
 struct lat_ctx {
     int basis_type[8];          /* type per basis atom (keyword basis) */
     const struct region *r;
+    struct mesh_skip *skip;
     bigint n;
 };
 
@@ -46,6 +91,8 @@ static void add_lattice_point(struct gravel *g, const double x[3], int basis, vo
 {
     struct lat_ctx *c = vctx;
     if (c->r && !region_match(c->r, x))
+        return;
+    if (c->skip->n && mesh_skip_hit(c->skip, x))
         return;
     atoms_add(g, 0, c->basis_type[basis], x, sphere_radius, SPHERE_MASS);
     c->n++;
@@ -168,6 +215,7 @@ struct random_job {
     double overlap;
     int maxtry;
     int type;
+    struct mesh_skip *skip;
     /* owned resources, freed by the caller on any exit */
     struct grid grid;
 };
@@ -205,6 +253,8 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
             if (job->r && !region_match(job->r, x))
                 continue;
             if (job->overlap > 0 && grid_overlaps(g, &job->grid, x, job->overlap))
+                continue;
+            if (job->skip->n && mesh_skip_hit(job->skip, x))
                 continue;
             ok = 1;
         }
@@ -268,6 +318,9 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         basis_type[m] = type;
     double overlap = 0;
     int overlap_set = 0;
+    int nmesh = 0;
+    char mesh_id[CA_MAXMESH][GR_NAMELEN];
+    double mesh_d[CA_MAXMESH];
     for (int i = iarg; i < argc; i++) {
         const char *kw = argv[i];
         if (!strcmp(kw, "units")) {
@@ -280,6 +333,14 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             overlap = arg_positive(g, argv[++i], "overlap");
             overlap_set = 1;
+        } else if (!strcmp(kw, "mesh")) {
+            arg_need(g, argc, i, 2, kw);
+            if (nmesh == CA_MAXMESH)
+                gr_error(g, "at most %d mesh keywords", CA_MAXMESH);
+            mesh_surface_get(g, argv[i + 1], "create_atoms mesh");
+            snprintf(mesh_id[nmesh], GR_NAMELEN, "%s", argv[i + 1]);
+            mesh_d[nmesh++] = arg_positive(g, argv[i + 2], "mesh distance");
+            i += 2;
         } else if (!strcmp(kw, "maxtry")) {
             arg_need(g, argc, i, 1, kw);
             maxtry = arg_int_range(g, argv[++i], 1, 1 << 30, "maxtry");
@@ -306,6 +367,35 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         gr_error(g, "remap applies only to style single");
     if (basis_set && strcmp(style, "box") != 0 && strcmp(style, "region") != 0)
         gr_error(g, "basis applies only to styles box and region");
+    if (nmesh && !strcmp(style, "single"))
+        gr_error(g, "mesh applies only to styles box, region and random");
+    /* the meshes to keep clear of, binned once; freed however the command ends */
+    struct mesh_skip skip;
+    memset(&skip, 0, sizeof skip);
+    jmp_buf *outer0 = g->err.jmp, here0;
+    g->err.jmp = &here0;
+    if (setjmp(here0)) {
+        g->err.jmp = outer0;
+        mesh_skip_free(&skip);
+        if (outer0)
+            longjmp(*outer0, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    {
+        double sc[3];
+        domain_unit_scale(g, lattice_units, sc);
+        for (int k = 0; k < nmesh; k++) {
+            struct mesh_surface *msurf = mesh_surface_get(g, mesh_id[k], "create_atoms mesh");
+            char err[256];
+            skip.m[k] = &msurf->m;
+            skip.dist[k] = mesh_d[k] * sc[0];
+            mesh_surface_pose(g, mesh_id[k], &skip.pose[k]);
+            if (mesh_bin(&msurf->m, skip.dist[k], &skip.b[k], err, sizeof err) != 0)
+                gr_error(g, "create_atoms mesh %s: %s", mesh_id[k], err);
+            skip.n = k + 1;
+        }
+    }
     bigint created = 0;
     if (!strcmp(style, "box") || !strcmp(style, "region")) {
         double lo[3], hi[3];
@@ -321,6 +411,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         struct lat_ctx c;
         memcpy(c.basis_type, basis_type, sizeof basis_type);
         c.r = r;
+        c.skip = &skip;
         c.n = 0;
         if (r && r->bbox)
             lattice_foreach(g, lo, hi, r->bbox_lo, r->bbox_hi, add_lattice_point, &c);
@@ -353,6 +444,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         job.overlap = overlap * sc[0]; /* LAMMPS: overlap *= xlattice */
         job.maxtry = maxtry;
         job.type = type;
+        job.skip = &skip;
         /* free the generator and grid however insertion ends */
         jmp_buf *outer = g->err.jmp, here;
         g->err.jmp = &here;
@@ -368,5 +460,10 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         g->err.jmp = outer;
         grid_free(&job.grid);
     }
+    g->err.jmp = outer0;
+    if (nmesh)
+        gr_print(g, "  %lld sites skipped within the mesh distance of %d mesh%s\n",
+                 (long long)skip.skipped, nmesh, nmesh > 1 ? "es" : "");
+    mesh_skip_free(&skip);
     gr_print(g, "Created %lld atoms\n", (long long)created);
 }

@@ -972,3 +972,72 @@ int mesh_bin(const struct mesh *m, double reach, struct mesh_bins *b, char *err,
     free(fill);
     return 0;
 }
+
+/* Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision
+ * Detection 5.1.5: Voronoi regions of vertices, edges, face). */
+static double tri_dist2(const double *a, const double *b, const double *c, const double *p)
+{
+    double ab[3], ac[3], ap[3], q[3];
+    for (int d = 0; d < 3; d++) {
+        ab[d] = b[d] - a[d];
+        ac[d] = c[d] - a[d];
+        ap[d] = p[d] - a[d];
+    }
+#define DOT(u, v) ((u)[0] * (v)[0] + (u)[1] * (v)[1] + (u)[2] * (v)[2])
+    double d1 = DOT(ab, ap), d2 = DOT(ac, ap);
+    double bp[3], cp[3];
+    for (int d = 0; d < 3; d++) {
+        bp[d] = p[d] - b[d];
+        cp[d] = p[d] - c[d];
+    }
+    double d3 = DOT(ab, bp), d4 = DOT(ac, bp), d5 = DOT(ab, cp), d6 = DOT(ac, cp);
+#undef DOT
+    double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+    if (d1 <= 0 && d2 <= 0) {
+        memcpy(q, a, sizeof q);
+    } else if (d3 >= 0 && d4 <= d3) {
+        memcpy(q, b, sizeof q);
+    } else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        double v = d1 / (d1 - d3);
+        for (int d = 0; d < 3; d++)
+            q[d] = a[d] + v * ab[d];
+    } else if (d6 >= 0 && d5 <= d6) {
+        memcpy(q, c, sizeof q);
+    } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        double w = d2 / (d2 - d6);
+        for (int d = 0; d < 3; d++)
+            q[d] = a[d] + w * ac[d];
+    } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        for (int d = 0; d < 3; d++)
+            q[d] = b[d] + w * (c[d] - b[d]);
+    } else {
+        double den = 1.0 / (va + vb + vc), v = vb * den, w = vc * den;
+        for (int d = 0; d < 3; d++)
+            q[d] = a[d] + ab[d] * v + ac[d] * w;
+    }
+    double r2 = 0;
+    for (int d = 0; d < 3; d++)
+        r2 += (p[d] - q[d]) * (p[d] - q[d]);
+    return r2;
+}
+
+int mesh_near(const struct mesh *m, const struct mesh_bins *b, const double p[3], double dist)
+{
+    int c[3];
+    for (int d = 0; d < 3; d++) {
+        double f = floor((p[d] - b->lo[d]) / b->h);
+        if (f < 0 || f >= b->n[d])
+            return 0; /* outside the grid: farther than reach from every triangle */
+        c[d] = (int)f;
+    }
+    int cell = (c[2] * b->n[1] + c[1]) * b->n[0] + c[0];
+    double d2 = dist * dist;
+    for (int k = b->start[cell]; k < b->start[cell + 1]; k++) {
+        int t = b->list[k];
+        const int *v = m->tri + 3 * t;
+        if (tri_dist2(m->vert + 3 * v[0], m->vert + 3 * v[1], m->vert + 3 * v[2], p) < d2)
+            return 1;
+    }
+    return 0;
+}

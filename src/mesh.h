@@ -64,5 +64,8 @@ struct mesh_bins {
 };
 int mesh_bin(const struct mesh *m, double reach, struct mesh_bins *b, char *err, size_t errlen);
 void mesh_bins_free(struct mesh_bins *b);
+/* 1 if some triangle of m is closer than dist to point p (mesh frame);
+ * b must be m's bins built with reach >= dist. */
+int mesh_near(const struct mesh *m, const struct mesh_bins *b, const double p[3], double dist);
 
 #endif

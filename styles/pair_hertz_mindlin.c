@@ -20,8 +20,19 @@
  * standard G* (Di Renzo & Di Maio 2004), because the one-step displacement
  * makes the tangential stiffness vanish as dt -> 0 (the same flaw 000 sec.
  * 3.2.2 shows). 003's rolling torque min(|F_n|, omega_rel) mixes units; the
- * form above is that of Zhou et al. 1999 it cites. */
+ * form above is that of Zhou et al. 1999 it cites.
+ *
+ * Materials per type pair (003 fig. 5.24 gives particle-particle and
+ * particle-shell values): `pair_coeff I J E nu e mu [rolling mu_r]` gives the
+ * pair (I, J) its own interaction properties, used in the formulas above in
+ * place of the pair_style ones; `pair_coeff I J` alone uses the pair_style
+ * ones. Every I I must be named before a run (LAMMPS's rule); a cross pair
+ * never named uses the pair_style values. A mesh of `type T` under fix
+ * wall/pair sees the coefficients of (I, T). Restart files keep the
+ * pair_style values only: re-issue per-pair pair_coeff lines after
+ * read_restart. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
@@ -31,11 +42,31 @@
 
 enum { C_E, C_NU, C_REST, C_MU, C_MUR };
 
-static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
+#define HMC_N 5
+
+/* Per type pair: set (0 none, 1 pair_style values, 2 own values) and values. */
+struct hm_table {
+    int nt;
+    unsigned char *set;
+    double *c;          /* nt x nt x HMC_N */
+};
+
+static void destroy(struct pair *p)
+{
+    struct hm_table *t = p->data;
+    if (t) {
+        free(t->set);
+        free(t->c);
+        free(t);
+    }
+    p->data = NULL;
+}
+
+/* E nu e mu [rolling mu_r] into c[0..5); `who` names the command. */
+static void parse_material(struct gravel *g, int argc, char **argv, double *c, const char *who)
 {
     if (argc != 4 && argc != 6)
-        gr_error(g, "pair_style hertz/mindlin expects E nu e mu [rolling mu_r], got %d "
-                    "argument(s)", argc);
+        gr_error(g, "%s expects E nu e mu [rolling mu_r], got %d argument(s)", who, argc);
     double E = arg_positive(g, argv[0], "Young's modulus E");
     double nu = arg_double(g, argv[1], "Poisson ratio nu");
     if (!(nu > -1.0 && nu < 0.5))
@@ -51,45 +82,120 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
                      argv[4]);
         mur = arg_nonneg(g, argv[5], "rolling friction coefficient mu_r");
     }
-    p->coef[C_E] = E;
-    p->coef[C_NU] = nu;
-    p->coef[C_REST] = e;
-    p->coef[C_MU] = mu;
-    p->coef[C_MUR] = mur;
+    c[C_E] = E;
+    c[C_NU] = nu;
+    c[C_REST] = e;
+    c[C_MU] = mu;
+    c[C_MUR] = mur;
+}
+
+static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    parse_material(g, argc, argv, p->coef, "pair_style hertz/mindlin");
+}
+
+/* pair_coeff I J [E nu e mu [rolling mu_r]] */
+static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
+                  int argc, char **argv)
+{
+    double c[HMC_N];
+    if (argc > 0)
+        parse_material(g, argc, argv, c, "pair_coeff (hertz/mindlin)");
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    struct hm_table *t = p->data;
+    if (t && t->nt != nt)
+        destroy(p);
+    t = p->data;
+    if (!t) {
+        t = gr_calloc(g, 1, sizeof *t);
+        p->data = t;
+        t->nt = nt;
+        t->set = gr_calloc(g, (size_t)nt * nt, 1);
+        t->c = gr_calloc(g, (size_t)nt * nt * HMC_N, sizeof(double));
+    }
+    for (int I = ilo; I <= ihi; I++)
+        for (int J = jlo > I ? jlo : I; J <= jhi; J++) /* LAMMPS: J >= I, and the mirror */
+            for (int s = 0; s < 2; s++) {
+                size_t k = s ? (size_t)(J - 1) * nt + (I - 1) : (size_t)(I - 1) * nt + (J - 1);
+                t->set[k] = argc > 0 ? 2 : 1;
+                if (argc > 0)
+                    memcpy(t->c + k * HMC_N, c, sizeof c);
+            }
+    p->coeff_set = 1;
+}
+
+static void init(struct gravel *g, struct pair *p)
+{
+    const struct hm_table *t = p->data;
+    if (!t) /* after read_restart: the pair_style material for every pair */
+        return;
+    if (t->nt != g->atoms.ntypes)
+        gr_error(g, "pair style hertz/mindlin: pair_coeff was given for %d atom types, the box "
+                    "has %d: re-issue pair_coeff", t->nt, g->atoms.ntypes);
+    for (int I = 1; I <= t->nt; I++)
+        if (!t->set[(size_t)(I - 1) * t->nt + (I - 1)])
+            gr_error(g, "all pair coeffs are not set: no pair_coeff for types %d %d of pair "
+                        "style hertz/mindlin (e.g. pair_coeff * *)", I, I);
+}
+
+/* The material of type pair (i, j): its own or the pair_style one. */
+static const double *material(const struct pair *p, int itype, int jtype)
+{
+    const struct hm_table *t = p->data;
+    if (t && itype >= 1 && jtype >= 1 && itype <= t->nt && jtype <= t->nt) {
+        size_t k = (size_t)(itype - 1) * t->nt + (jtype - 1);
+        if (t->set[k] == 2)
+            return t->c + k * HMC_N;
+    }
+    return p->coef;
+}
+
+static double estar_of(const double *c)
+{
+    double nu = c[C_NU];
+    return c[C_E] / (2.0 * (1.0 - nu * nu));
 }
 
 static double estar(const struct pair *p)
 {
-    double nu = p->coef[C_NU];
-    return p->coef[C_E] / (2.0 * (1.0 - nu * nu));
+    return estar_of(p->coef);
 }
 
-static double gstar(const struct pair *p)
+static double gstar_of(const double *c)
 {
-    double nu = p->coef[C_NU];
-    double G = p->coef[C_E] / (2.0 * (1.0 + nu));
+    double nu = c[C_NU];
+    double G = c[C_E] / (2.0 * (1.0 + nu));
     return G / (2.0 * (2.0 - nu));
 }
 
 static void pack(const struct pair *p, int itype, int jtype, double *param)
 {
-    (void)itype;
-    (void)jtype;
-    double l = log(p->coef[C_REST]);
-    param[HM_KN] = 4.0 / 3.0 * estar(p);
-    param[HM_KT] = 8.0 * gstar(p);
+    const double *c = material(p, itype, jtype);
+    double l = log(c[C_REST]);
+    param[HM_KN] = 4.0 / 3.0 * estar_of(c);
+    param[HM_KT] = 8.0 * gstar_of(c);
     param[HM_CDAMP] = 2.0 * sqrt(5.0 / 6.0) * (-l / sqrt(l * l + M_PI * M_PI));
-    param[HM_MU] = p->coef[C_MU];
-    param[HM_MUR] = p->coef[C_MUR];
+    param[HM_MU] = c[C_MU];
+    param[HM_MUR] = c[C_MUR];
 }
 
 /* Hertz contact duration of two equal spheres (m* = m/2, R* = r/2) at impact
  * speed vn: 2.87 (m*^2 / (R* E*^2 vn))^(1/5). Without a speed, use 1e-3 of
  * the elastic wave speed sqrt(E/rho) as a typical impact speed. */
-/* e = 1 (no dashpot), mu = 0 (no tangential force), mu_r = 0 (no rolling torque) */
+/* e = 1 (no dashpot), mu = 0 (no tangential force), mu_r = 0 (no rolling
+ * torque), for the pair_style material and every pair's own */
 static int conservative(const struct pair *p)
 {
-    return p->coef[C_REST] == 1.0 && p->coef[C_MU] == 0.0 && p->coef[C_MUR] == 0.0;
+    const struct hm_table *t = p->data;
+    int nt = t ? t->nt : 0;
+    for (size_t k = 0; k <= (size_t)nt * nt; k++) {
+        const double *c = k == (size_t)nt * nt ? p->coef
+                        : t->set[k] == 2      ? t->c + k * HMC_N
+                                               : p->coef;
+        if (!(c[C_REST] == 1.0 && c[C_MU] == 0.0 && c[C_MUR] == 0.0))
+            return 0;
+    }
+    return 1;
 }
 
 /* U = 0.4 kn sqrt(R*) delta^2.5, kn = 4/3 E* (F = kn sqrt(R*) delta^1.5) */
@@ -116,6 +222,9 @@ const struct pair_style pair_style_hertz_mindlin = {
     .rotation = 1,
     .nparam = HM_NPARAM,
     .settings = settings,
+    .coeff = coeff,
+    .init = init,
+    .destroy = destroy,
     .pack = pack,
     .collision_time = collision_time,
     .conservative = conservative,

@@ -1,0 +1,401 @@
+/* compute_chunk_atom.c - `compute ID group chunk/atom bin/1d|bin/2d|bin/3d
+ * dim origin delta [dim origin delta ...] keyword value ...`, LAMMPS's
+ * spatial-bin chunks (compute_chunk_atom.cpp):
+ *
+ *   dim = x|y|z, origin = lower|center|upper|value, delta = bin width.
+ *   keywords: units box|lattice|reduced (default lattice), bound dim lo hi
+ *   (lo = lower|value, hi = upper|value), discard mixed|yes|no (default
+ *   mixed), region ID, nchunk once|every (default every; once with units
+ *   reduced), ids every, pbc yes|no (no effect on bin styles), compress no.
+ *
+ * Bins: in each binned dimension the lattice of edges origin + k delta is
+ * extended to cover [boxlo, boxhi] (or the bound), exactly as LAMMPS: lo is
+ * the edge at or below the lower bound, hi the edge at or above the upper
+ * bound, nlayers = (hi - lo) / delta rounded. An atom's bin is
+ * floor((x - lo) / delta) of its coordinate (periodic coordinates remapped
+ * into the box first); out of range it is clamped (discard no), excluded
+ * (yes) or, with mixed, clamped at a box face and excluded at a bound given
+ * as a value. Chunk IDs run 1..nchunk with the last binned dimension
+ * varying fastest. Output: per-atom chunk ID (0 = excluded), and the
+ * scalar nchunk. The chunk volume is LAMMPS's: box volume x product of
+ * delta / box length over the binned dimensions. */
+#include "compute_chunk_atom.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "domain.h"
+#include "error.h"
+#include "region.h"
+
+enum { LOWER, CENTER, UPPER, COORD };
+enum { SC_BOX, SC_LATTICE, SC_REDUCED };
+enum { DISCARD_NO, DISCARD_MIXED, DISCARD_YES };
+
+struct chunk_atom {
+    int ndim, dim[3], originflag[3];
+    double origin_user[3], delta[3], invdelta[3], origin[3];
+    int minflag[3], maxflag[3];     /* by box dimension */
+    double minvalue[3], maxvalue[3];
+    int scaleflag, discard, nchunk_once, laid_out;
+    char region[GR_NAMELEN];        /* "" = none */
+    struct chunk_grid grid;
+    double *coord;
+    int *ichunk;
+    int cap;
+};
+
+static void chunk_destroy(struct compute *c)
+{
+    struct chunk_atom *ca = c->data;
+    if (ca) {
+        free(ca->coord);
+        free(ca->ichunk);
+    }
+    free(ca);
+    c->data = NULL;
+}
+
+static int parse_dim(struct gravel *g, const char *s)
+{
+    if (!strcmp(s, "x"))
+        return 0;
+    if (!strcmp(s, "y"))
+        return 1;
+    if (!strcmp(s, "z"))
+        return 2;
+    gr_error(g, "compute chunk/atom: dimension must be x, y or z, got '%.32s'", s);
+    return 0;
+}
+
+static void chunk_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "compute chunk/atom expects a style: bin/1d, bin/2d or bin/3d");
+    struct chunk_atom *ca = gr_calloc(g, 1, sizeof *ca);
+    c->data = ca;
+    const char *st = argv[0];
+    if (!strcmp(st, "bin/1d"))
+        ca->ndim = 1;
+    else if (!strcmp(st, "bin/2d"))
+        ca->ndim = 2;
+    else if (!strcmp(st, "bin/3d"))
+        ca->ndim = 3;
+    else if (!strcmp(st, "bin/sphere") || !strcmp(st, "bin/cylinder") || !strcmp(st, "type") ||
+             !strcmp(st, "molecule") || !strncmp(st, "c_", 2) || !strncmp(st, "f_", 2) ||
+             !strncmp(st, "v_", 2))
+        gr_error(g, "compute chunk/atom: style '%.32s' is not supported (bin/1d, bin/2d, "
+                    "bin/3d)", st);
+    else
+        gr_error(g, "compute chunk/atom: unknown style '%.32s' (bin/1d, bin/2d, bin/3d)", st);
+    if (argc < 1 + 3 * ca->ndim)
+        gr_error(g, "compute chunk/atom %s expects %d arguments (dim origin delta each), got "
+                    "%d", st, 3 * ca->ndim, argc - 1);
+    int iarg = 1;
+    for (int m = 0; m < ca->ndim; m++, iarg += 3) {
+        ca->dim[m] = parse_dim(g, argv[iarg]);
+        if (g->dom.dimension == 2 && ca->dim[m] == 2)
+            gr_error(g, "compute chunk/atom: cannot bin z in a 2d model");
+        const char *o = argv[iarg + 1];
+        if (!strcmp(o, "lower"))
+            ca->originflag[m] = LOWER;
+        else if (!strcmp(o, "center"))
+            ca->originflag[m] = CENTER;
+        else if (!strcmp(o, "upper"))
+            ca->originflag[m] = UPPER;
+        else {
+            ca->originflag[m] = COORD;
+            ca->origin_user[m] = arg_double(g, o, "bin origin (lower, center, upper or a value)");
+        }
+        ca->delta[m] = arg_positive(g, argv[iarg + 2], "bin width delta");
+        for (int k = 0; k < m; k++)
+            if (ca->dim[k] == ca->dim[m])
+                gr_error(g, "compute chunk/atom %s: dimension %s is binned twice", st,
+                         argv[iarg]);
+    }
+    for (int d = 0; d < 3; d++) {
+        ca->minflag[d] = LOWER;
+        ca->maxflag[d] = UPPER;
+    }
+    ca->scaleflag = SC_LATTICE;
+    ca->discard = DISCARD_MIXED;
+    int nchunk_set = 0;
+    for (int i = iarg; i < argc; i++) {
+        const char *kw = argv[i];
+        if (!strcmp(kw, "units")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "box"))
+                ca->scaleflag = SC_BOX;
+            else if (!strcmp(v, "lattice"))
+                ca->scaleflag = SC_LATTICE;
+            else if (!strcmp(v, "reduced"))
+                ca->scaleflag = SC_REDUCED;
+            else
+                gr_error(g, "compute chunk/atom: units must be box, lattice or reduced, got "
+                            "'%.32s'", v);
+        } else if (!strcmp(kw, "bound")) {
+            arg_need(g, argc, i, 3, kw);
+            int d = parse_dim(g, argv[i + 1]);
+            if (!strcmp(argv[i + 2], "lower"))
+                ca->minflag[d] = LOWER;
+            else {
+                ca->minflag[d] = COORD;
+                ca->minvalue[d] = arg_double(g, argv[i + 2], "bound lower value");
+            }
+            if (!strcmp(argv[i + 3], "upper"))
+                ca->maxflag[d] = UPPER;
+            else {
+                ca->maxflag[d] = COORD;
+                ca->maxvalue[d] = arg_double(g, argv[i + 3], "bound upper value");
+            }
+            i += 3;
+        } else if (!strcmp(kw, "discard")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "mixed"))
+                ca->discard = DISCARD_MIXED;
+            else if (!strcmp(v, "yes"))
+                ca->discard = DISCARD_YES;
+            else if (!strcmp(v, "no"))
+                ca->discard = DISCARD_NO;
+            else
+                gr_error(g, "compute chunk/atom: discard must be mixed, yes or no, got '%.32s'",
+                         v);
+        } else if (!strcmp(kw, "region")) {
+            arg_need(g, argc, i, 1, kw);
+            region_get(g, argv[++i]);
+            snprintf(ca->region, sizeof ca->region, "%s", argv[i]);
+        } else if (!strcmp(kw, "nchunk")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "once"))
+                ca->nchunk_once = 1;
+            else if (!strcmp(v, "every"))
+                ca->nchunk_once = 0;
+            else
+                gr_error(g, "compute chunk/atom: nchunk must be once or every, got '%.32s'", v);
+            nchunk_set = 1;
+        } else if (!strcmp(kw, "ids")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (strcmp(v, "every") != 0)
+                gr_error(g, "compute chunk/atom: ids %.32s is not supported (gravel assigns "
+                            "chunks at every use: ids every)", v);
+        } else if (!strcmp(kw, "pbc")) {
+            arg_need(g, argc, i, 1, kw);
+            arg_yesno(g, argv[++i], "pbc");
+        } else if (!strcmp(kw, "compress")) {
+            arg_need(g, argc, i, 1, kw);
+            if (arg_yesno(g, argv[++i], "compress"))
+                gr_error(g, "compute chunk/atom: compress yes is not supported");
+        } else if (!strcmp(kw, "limit")) {
+            gr_error(g, "compute chunk/atom: keyword 'limit' is not supported");
+        } else {
+            gr_error(g, "compute chunk/atom: unknown keyword '%.32s'", kw);
+        }
+    }
+    if (!nchunk_set && ca->scaleflag == SC_REDUCED)
+        ca->nchunk_once = 1;
+    /* scale to box units (LAMMPS: delta, origin and bounds times the lattice spacing) */
+    double sc[3] = {1, 1, 1};
+    if (ca->scaleflag == SC_LATTICE)
+        domain_unit_scale(g, 1, sc);
+    for (int m = 0; m < ca->ndim; m++) {
+        double s = sc[ca->dim[m]];
+        ca->delta[m] *= s;
+        ca->invdelta[m] = 1.0 / ca->delta[m];
+        if (ca->originflag[m] == COORD)
+            ca->origin_user[m] *= s;
+    }
+    for (int d = 0; d < 3; d++) {
+        if (ca->minflag[d] == COORD)
+            ca->minvalue[d] *= sc[d];
+        if (ca->maxflag[d] == COORD)
+            ca->maxvalue[d] *= sc[d];
+    }
+    c->peratom_flag = 1;
+    c->scalar_flag = 1;
+    c->extscalar = 0;
+}
+
+struct compute *chunk_atom_get(struct gravel *g, const char *id, const char *who)
+{
+    struct compute *c = compute_find(g, id);
+    if (!c)
+        gr_error(g, "%s: unknown compute ID '%.64s' (a compute chunk/atom)", who, id);
+    if (strcmp(c->style->name, "chunk/atom") != 0)
+        gr_error(g, "%s: compute %s is %s, not chunk/atom", who, id, c->style->name);
+    return c;
+}
+
+int chunk_atom_ncoord(const struct compute *c)
+{
+    return ((const struct chunk_atom *)c->data)->ndim;
+}
+
+const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
+{
+    struct chunk_atom *ca = c->data;
+    if (ca->laid_out && ca->nchunk_once)
+        return &ca->grid;
+    double binlo[3], binhi[3], prd[3];
+    for (int d = 0; d < 3; d++) {
+        prd[d] = g->dom.hi[d] - g->dom.lo[d];
+        binlo[d] = ca->scaleflag == SC_REDUCED ? 0.0 : g->dom.lo[d];
+        binhi[d] = ca->scaleflag == SC_REDUCED ? 1.0 : g->dom.hi[d];
+        if (ca->minflag[d] == COORD)
+            binlo[d] = ca->minvalue[d];
+        if (ca->maxflag[d] == COORD)
+            binhi[d] = ca->maxvalue[d];
+    }
+    struct chunk_grid *gr = &ca->grid;
+    int nbins = 1;
+    for (int m = 0; m < ca->ndim; m++) {
+        int d = ca->dim[m];
+        double o = ca->origin_user[m], lo, hi, del = ca->delta[m], inv = ca->invdelta[m];
+        if (ca->originflag[m] == LOWER)
+            o = binlo[d];
+        else if (ca->originflag[m] == UPPER)
+            o = binhi[d];
+        else if (ca->originflag[m] == CENTER)
+            o = 0.5 * (binlo[d] + binhi[d]);
+        ca->origin[m] = o;
+        if (o < binlo[d]) {
+            int n = (int)((binlo[d] - o) * inv);
+            lo = o + n * del;
+        } else {
+            int n = (int)((o - binlo[d]) * inv);
+            lo = o - n * del;
+            if (lo > binlo[d])
+                lo -= del;
+        }
+        if (o < binhi[d]) {
+            int n = (int)((binhi[d] - o) * inv);
+            hi = o + n * del;
+            if (hi < binhi[d])
+                hi += del;
+        } else {
+            int n = (int)((o - binhi[d]) * inv);
+            hi = o - n * del;
+        }
+        if (lo > hi)
+            gr_error(g, "compute chunk/atom %s: invalid bin bounds", c->id);
+        double nl = (hi - lo) * inv + 0.5;
+        if (nl > 1 << 24 || (double)nbins * nl > (double)(1 << 28))
+            gr_error(g, "compute chunk/atom %s: too many bins (%g along %c)", c->id, floor(nl),
+                     "xyz"[d]);
+        gr->offset[m] = lo;
+        gr->delta[m] = del;
+        gr->dim[m] = d;
+        gr->nlayers[m] = (int)nl;
+        nbins *= gr->nlayers[m];
+    }
+    gr->ndim = ca->ndim;
+    gr->nchunk = nbins;
+    gr->reduced = ca->scaleflag == SC_REDUCED;
+    free(ca->coord);
+    ca->coord = gr_malloc(g, (size_t)nbins * ca->ndim * sizeof(double));
+    for (int k = 0; k < nbins; k++) {
+        int rem = k;
+        for (int m = ca->ndim - 1; m >= 0; m--) {
+            int im = rem % gr->nlayers[m];
+            rem /= gr->nlayers[m];
+            ca->coord[(size_t)k * ca->ndim + m] = gr->offset[m] + (im + 0.5) * gr->delta[m];
+        }
+    }
+    gr->coord = ca->coord;
+    double vol = g->dom.dimension == 3 ? prd[0] * prd[1] * prd[2] : prd[0] * prd[1];
+    for (int m = 0; m < ca->ndim; m++)
+        vol *= gr->delta[m] / (gr->reduced ? 1.0 : prd[gr->dim[m]]);
+    gr->volume = vol;
+    ca->laid_out = 1;
+    return gr;
+}
+
+const int *chunk_atom_assign(struct gravel *g, struct compute *c)
+{
+    struct chunk_atom *ca = c->data;
+    const struct atoms *a = &g->atoms;
+    if (!ca->laid_out)
+        chunk_atom_setup(g, c);
+    if (a->n > ca->cap) {
+        int cap = a->n > 16 ? a->n : 16;
+        int *p = realloc(ca->ichunk, (size_t)cap * sizeof(int));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        ca->ichunk = p;
+        ca->cap = cap;
+    }
+    const struct region *r = ca->region[0] ? region_get(g, ca->region) : NULL;
+    const struct chunk_grid *gr = &ca->grid;
+    for (int i = 0; i < a->n; i++) {
+        const double *x = a->x + 3 * (size_t)i;
+        ca->ichunk[i] = 0;
+        if (!(a->mask[i] & c->groupbit) || (r && !region_match(r, x)))
+            continue;
+        int id = 0, keep = 1;
+        for (int m = 0; m < gr->ndim && keep; m++) {
+            int d = gr->dim[m];
+            double lo = g->dom.lo[d], hi = g->dom.hi[d], prd = hi - lo, xr = x[d];
+            if (gr->reduced) {
+                xr = (xr - lo) / prd;
+                lo = 0;
+                hi = prd = 1;
+            }
+            if (g->dom.periodic[d]) {
+                if (xr < lo)
+                    xr += prd;
+                if (xr >= hi)
+                    xr -= prd;
+            }
+            int ib = (int)((xr - gr->offset[m]) * ca->invdelta[m]);
+            if (xr < gr->offset[m])
+                ib--;
+            int top = gr->nlayers[m] - 1;
+            if (ca->discard == DISCARD_MIXED) {
+                /* LAMMPS: clamp only at a lower bound left at the box face
+                 * (LOWER == 0); at the upper end only values are tested */
+                if (ca->minflag[d] == LOWER)
+                    ib = ib < 0 ? 0 : ib;
+                else if (ib < 0)
+                    keep = 0;
+                if (ca->maxflag[d] == LOWER)
+                    ib = ib > top ? top : ib;
+                else if (ib > top)
+                    keep = 0;
+            } else if (ca->discard == DISCARD_NO) {
+                ib = ib < 0 ? 0 : ib > top ? top : ib;
+            } else if (ib < 0 || ib > top) {
+                keep = 0;
+            }
+            id = id * gr->nlayers[m] + ib;
+        }
+        if (keep)
+            ca->ichunk[i] = id + 1;
+    }
+    return ca->ichunk;
+}
+
+static double chunk_scalar(struct gravel *g, struct compute *c)
+{
+    return chunk_atom_setup(g, c)->nchunk;
+}
+
+static void chunk_peratom(struct gravel *g, struct compute *c)
+{
+    chunk_atom_setup(g, c);
+    const int *ic = chunk_atom_assign(g, c);
+    for (int i = 0; i < g->atoms.n; i++)
+        c->peratom[i] = ic[i];
+}
+
+const struct compute_style compute_style_chunk_atom = {
+    .name = "chunk/atom",
+    .create = chunk_create,
+    .scalar = chunk_scalar,
+    .peratom = chunk_peratom,
+    .destroy = chunk_destroy,
+};

@@ -1,0 +1,561 @@
+/* fix_ave_chunk.c - `fix ID group ave/chunk Nevery Nrepeat Nfreq chunkID
+ * value ... keyword args ...`: per-chunk time averages, LAMMPS's
+ * fix_ave_chunk.cpp semantics and text file.
+ *
+ * Values: vx vy vz fx fy fz, density/number, density/mass, mass, c_ID and
+ * c_ID[N] (per-atom compute), and gravel's `solidicity`: the volume of the
+ * spheres whose centres are in the chunk over the chunk volume (003 sec.
+ * 5.2.9, 6.2: a sphere is counted wholly in the bin of its centre, as the
+ * chunk assignment; porosity = 1 - solidicity). Solidicity is normalized
+ * like the densities: summed over the samples, divided by Nrepeat and the
+ * chunk volume, never by the atom count.
+ * Keywords: norm all|sample|none (default all), ave one|running|window M,
+ * scale atom|none, adof, cdof (accepted; no temp value), file F, append F,
+ * overwrite, format F (a printf format used as given: LAMMPS 2021 adds no
+ * separating space), title1/2/3, and gravel's `vtk F`: the
+ * grid of a bin/1d-3d chunk compute with Ncount and every value as CELL_DATA
+ * field arrays (named as the columns, '/' '[' ']' as '_') in a
+ * legacy VTK STRUCTURED_POINTS file at each Nfreq step ('*' in F becomes
+ * the step: a series ParaView opens as one).
+ *
+ * Samples are taken at end_of_step on steps nvalid, nvalid + Nevery, ...
+ * (Nrepeat of them ending on a multiple of Nfreq), and at a run's setup
+ * when that step is due, as LAMMPS; host arrays are synchronized first.
+ * Sums run over the atoms in host order (deterministic). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "args.h"
+#include "compute_chunk_atom.h"
+#include "error.h"
+#include "fileio.h"
+#include "fix.h"
+#include "run.h"
+#include "variable.h"
+
+enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };
+enum { NORM_ALL, NORM_SAMPLE, NORM_NONE };
+enum { AVE_ONE, AVE_RUNNING, AVE_WINDOW };
+
+#define AVE_MAXVAL 64
+
+struct ave_chunk {
+    int nevery, nrepeat, nfreq;
+    char chunk[GR_NAMELEN];
+    int nvalues;
+    int which[AVE_MAXVAL], argindex[AVE_MAXVAL];
+    char ids[AVE_MAXVAL][GR_NAMELEN];
+    char names[AVE_MAXVAL][GR_NAMELEN];
+    int normflag, ave, nwindow, noscale;
+    FILE *fp;
+    int fp_err;
+    long filepos;
+    int overwrite;
+    char *format;
+    char *vtk;                          /* vtk file pattern or NULL */
+    /* state */
+    bigint nvalid, nvalid_last;
+    int irepeat, iwindow, window_limit, normcount;
+    int nchunk, maxchunk;
+    double *count_one, *count_many, *count_sum, *count_total, *count_list;
+    double *values_one, *values_many, *values_sum, *values_total, *values_list;
+    const struct chunk_grid *grid;
+};
+
+static void ave_destroy(struct fix *f)
+{
+    struct ave_chunk *a = f->data;
+    if (a) {
+        if (a->fp)
+            fclose(a->fp);
+        free(a->format);
+        free(a->vtk);
+        free(a->count_one);
+        free(a->count_many);
+        free(a->count_sum);
+        free(a->count_total);
+        free(a->count_list);
+        free(a->values_one);
+        free(a->values_many);
+        free(a->values_sum);
+        free(a->values_total);
+        free(a->values_list);
+    }
+    free(a);
+    f->data = NULL;
+}
+
+/* LAMMPS nextvalid(): the first sampling step of the next Nfreq epoch. */
+static bigint next_valid(const struct gravel *g, const struct ave_chunk *a)
+{
+    bigint nv = (g->step / a->nfreq) * a->nfreq + a->nfreq;
+    if (nv - a->nfreq == g->step && a->nrepeat == 1)
+        nv = g->step;
+    else
+        nv -= (bigint)(a->nrepeat - 1) * a->nevery;
+    if (nv < g->step)
+        nv += a->nfreq;
+    return nv;
+}
+
+static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 5)
+        gr_error(g, "fix ave/chunk expects Nevery Nrepeat Nfreq chunkID and at least one value");
+    struct ave_chunk *a = gr_calloc(g, 1, sizeof *a);
+    f->data = a;
+    a->nevery = arg_int(g, argv[0], "Nevery");
+    a->nrepeat = arg_int(g, argv[1], "Nrepeat");
+    a->nfreq = arg_int(g, argv[2], "Nfreq");
+    if (a->nevery <= 0 || a->nrepeat <= 0 || a->nfreq <= 0)
+        gr_error(g, "fix ave/chunk: Nevery, Nrepeat and Nfreq must be positive");
+    if (a->nfreq % a->nevery || (bigint)(a->nrepeat - 1) * a->nevery >= a->nfreq)
+        gr_error(g, "fix ave/chunk: Nfreq must be a multiple of Nevery and (Nrepeat-1)*Nevery "
+                    "< Nfreq (got %d %d %d)", a->nevery, a->nrepeat, a->nfreq);
+    snprintf(a->chunk, sizeof a->chunk, "%s", argv[3]);
+    struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
+    int iarg = 4;
+    static const struct { const char *name; int which, index; } plain[] = {
+        {"vx", V_V, 0}, {"vy", V_V, 1}, {"vz", V_V, 2}, {"fx", V_F, 0}, {"fy", V_F, 1},
+        {"fz", V_F, 2}, {"density/number", V_DNUM, 0}, {"density/mass", V_DMASS, 0},
+        {"mass", V_MASS, 0}, {"solidicity", V_SOLID, 0}};
+    for (; iarg < argc; iarg++) {
+        const char *s = argv[iarg];
+        int w = -1, idx = 0;
+        for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++)
+            if (!strcmp(s, plain[k].name)) {
+                w = plain[k].which;
+                idx = plain[k].index;
+            }
+        char id[GR_NAMELEN] = "";
+        if (w < 0) {
+            if (!strcmp(s, "temp"))
+                gr_error(g, "fix ave/chunk: value 'temp' is not supported");
+            if (!strncmp(s, "v_", 2))
+                gr_error(g, "fix ave/chunk: '%.64s': gravel has no atom-style variables (use "
+                            "a per-atom compute c_ID)", s);
+            if (!strncmp(s, "f_", 2))
+                gr_error(g, "fix ave/chunk: '%.64s': no fix in gravel has per-atom output", s);
+            if (!strncmp(s, "c_", 2)) {
+                if (!compute_parse_ref(s, id, &idx))
+                    gr_error(g, "fix ave/chunk: malformed compute reference '%.64s'", s);
+                compute_peratom_check(g, id, idx, "fix ave/chunk");
+                w = V_COMPUTE;
+            }
+        }
+        if (w < 0)
+            break;
+        if (a->nvalues == AVE_MAXVAL)
+            gr_error(g, "fix ave/chunk: at most %d values", AVE_MAXVAL);
+        a->which[a->nvalues] = w;
+        a->argindex[a->nvalues] = idx;
+        snprintf(a->ids[a->nvalues], GR_NAMELEN, "%s", id);
+        snprintf(a->names[a->nvalues], GR_NAMELEN, "%s", s);
+        a->nvalues++;
+    }
+    if (a->nvalues == 0)
+        gr_error(g, "fix ave/chunk: no values given (vx, density/mass, c_ID, solidicity, ...)");
+    a->normflag = NORM_ALL;
+    a->ave = AVE_ONE;
+    const char *file = NULL, *title[3] = {NULL, NULL, NULL};
+    int append = 0;
+    for (int i = iarg; i < argc; i++) {
+        const char *kw = argv[i];
+        if (!strcmp(kw, "norm")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "all"))
+                a->normflag = NORM_ALL;
+            else if (!strcmp(v, "sample"))
+                a->normflag = NORM_SAMPLE;
+            else if (!strcmp(v, "none"))
+                a->normflag = NORM_NONE;
+            else
+                gr_error(g, "fix ave/chunk: norm must be all, sample or none, got '%.32s'", v);
+        } else if (!strcmp(kw, "ave")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "one"))
+                a->ave = AVE_ONE;
+            else if (!strcmp(v, "running"))
+                a->ave = AVE_RUNNING;
+            else if (!strcmp(v, "window")) {
+                a->ave = AVE_WINDOW;
+                arg_need(g, argc, i, 1, "ave window");
+                a->nwindow = arg_int_range(g, argv[++i], 1, 1 << 20, "window length M");
+            } else
+                gr_error(g, "fix ave/chunk: ave must be one, running or window M, got '%.32s'",
+                         v);
+        } else if (!strcmp(kw, "scale")) {
+            arg_need(g, argc, i, 1, kw);
+            const char *v = argv[++i];
+            if (!strcmp(v, "atom"))
+                a->noscale = 0;
+            else if (!strcmp(v, "none"))
+                a->noscale = 1;
+            else
+                gr_error(g, "fix ave/chunk: scale must be atom or none, got '%.32s'", v);
+        } else if (!strcmp(kw, "adof") || !strcmp(kw, "cdof")) {
+            arg_need(g, argc, i, 1, kw);
+            arg_double(g, argv[++i], kw);
+        } else if (!strcmp(kw, "bias")) {
+            gr_error(g, "fix ave/chunk: keyword 'bias' is not supported (no temp value)");
+        } else if (!strcmp(kw, "file") || !strcmp(kw, "append")) {
+            arg_need(g, argc, i, 1, kw);
+            file = argv[++i];
+            append = !strcmp(kw, "append");
+        } else if (!strcmp(kw, "overwrite")) {
+            a->overwrite = 1;
+        } else if (!strcmp(kw, "format")) {
+            arg_need(g, argc, i, 1, kw);
+            free(a->format);
+            a->format = gr_malloc(g, strlen(argv[i + 1]) + 1);
+            strcpy(a->format, argv[++i]); /* used as given, no separator (LAMMPS 2021) */
+            if (!expr_format_ok(a->format))
+                gr_error(g, "fix ave/chunk: format '%.64s' must have exactly one floating "
+                            "point conversion", argv[i]);
+        } else if (!strcmp(kw, "title1") || !strcmp(kw, "title2") || !strcmp(kw, "title3")) {
+            arg_need(g, argc, i, 1, kw);
+            title[kw[5] - '1'] = argv[++i];
+        } else if (!strcmp(kw, "vtk")) {
+            arg_need(g, argc, i, 1, kw);
+            free(a->vtk);
+            a->vtk = gr_malloc(g, strlen(argv[i + 1]) + 1);
+            strcpy(a->vtk, argv[++i]);
+        } else {
+            gr_error(g, "fix ave/chunk: unknown value or keyword '%.64s'", kw);
+        }
+    }
+    if (a->ave != AVE_RUNNING && a->overwrite)
+        gr_error(g, "fix ave/chunk: overwrite needs ave running");
+    if (file) {
+        const char *why = NULL;
+        a->fp = fio_open_write_checked(file, append, &a->fp_err, &why);
+        if (!a->fp)
+            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, why);
+        if (title[0])
+            fprintf(a->fp, "%s\n", title[0]);
+        else
+            fprintf(a->fp, "# Chunk-averaged data for fix %s and group %s\n", f->id,
+                    g->groups.name[f->igroup]);
+        fprintf(a->fp, "%s\n", title[1] ? title[1] : "# Timestep Number-of-chunks Total-count");
+        if (title[2])
+            fprintf(a->fp, "%s\n", title[2]);
+        else {
+            static const char *head[] = {"# Chunk Ncount", "# Chunk Coord1 Ncount",
+                                         "# Chunk Coord1 Coord2 Ncount",
+                                         "# Chunk Coord1 Coord2 Coord3 Ncount"};
+            fputs(head[chunk_atom_ncoord(cc)], a->fp);
+            for (int k = 0; k < a->nvalues; k++)
+                fprintf(a->fp, " %s", a->names[k]);
+            fputc('\n', a->fp);
+        }
+        a->filepos = ftell(a->fp);
+    }
+    a->nvalid_last = -1;
+    a->nvalid = next_valid(g, a);
+    f->hooks = HOOK_END_OF_STEP;
+}
+
+static void grow(struct gravel *g, struct ave_chunk *a, int nchunk)
+{
+    a->nchunk = nchunk;
+    if (nchunk <= a->maxchunk)
+        return;
+    size_t nv = (size_t)a->nvalues, n = (size_t)nchunk;
+    double **c[] = {&a->count_one, &a->count_many, &a->count_sum, &a->count_total};
+    double **v[] = {&a->values_one, &a->values_many, &a->values_sum, &a->values_total};
+    for (int k = 0; k < 4; k++) {
+        *c[k] = gr_realloc(g, *c[k], n * sizeof(double));
+        *v[k] = gr_realloc(g, *v[k], n * nv * sizeof(double));
+    }
+    /* totals start from zero for new chunks (LAMMPS allocate()) */
+    for (size_t m = (size_t)a->maxchunk; m < n; m++) {
+        a->count_total[m] = 0;
+        for (size_t j = 0; j < nv; j++)
+            a->values_total[m * nv + j] = 0;
+    }
+    if (a->ave == AVE_WINDOW) {
+        free(a->count_list);
+        free(a->values_list);
+        a->count_list = gr_calloc(g, (size_t)a->nwindow * n, sizeof(double));
+        a->values_list = gr_calloc(g, (size_t)a->nwindow * n * nv, sizeof(double));
+    }
+    a->maxchunk = nchunk;
+}
+
+static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a);
+
+static void sample(struct gravel *g, struct fix *f)
+{
+    struct ave_chunk *a = f->data;
+    if (g->step < a->nvalid_last || g->step > a->nvalid)
+        gr_error(g, "fix ave/chunk %s: invalid timestep reset (step %lld, next sample %lld)",
+                 f->id, (long long)g->step, (long long)a->nvalid);
+    if (g->step != a->nvalid)
+        return;
+    a->nvalid_last = a->nvalid;
+    run_sync_host(g);
+    struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
+    const int nv = a->nvalues;
+    if (a->irepeat == 0) {
+        a->grid = chunk_atom_setup(g, cc);
+        grow(g, a, a->grid->nchunk);
+        for (int m = 0; m < a->nchunk; m++) {
+            a->count_many[m] = a->count_sum[m] = 0;
+            for (int j = 0; j < nv; j++)
+                a->values_many[(size_t)m * nv + j] = 0;
+        }
+    }
+    for (int m = 0; m < a->nchunk; m++) {
+        a->count_one[m] = 0;
+        for (int j = 0; j < nv; j++)
+            a->values_one[(size_t)m * nv + j] = 0;
+    }
+    const struct atoms *at = &g->atoms;
+    const int *ichunk = chunk_atom_assign(g, cc);
+    const unsigned bit = f->groupbit;
+    for (int i = 0; i < at->n; i++)
+        if ((at->mask[i] & bit) && ichunk[i] > 0 && ichunk[i] <= a->nchunk)
+            a->count_one[ichunk[i] - 1] += 1;
+    for (int j = 0; j < nv; j++) {
+        const double *src = NULL;
+        int stride = 1, comp = a->argindex[j];
+        switch (a->which[j]) {
+        case V_V: src = at->v; stride = 3; break;
+        case V_F: src = at->f; stride = 3; break;
+        case V_COMPUTE: {
+            struct compute *pc = compute_get(g, a->ids[j], "fix ave/chunk");
+            src = compute_peratom_ref(g, pc, a->argindex[j], &stride, "fix ave/chunk");
+            comp = 0;
+            break;
+        }
+        default: break;
+        }
+        for (int i = 0; i < at->n; i++) {
+            if (!(at->mask[i] & bit) || ichunk[i] <= 0 || ichunk[i] > a->nchunk)
+                continue;
+            double val;
+            switch (a->which[j]) {
+            case V_DNUM: val = 1.0; break;
+            case V_DMASS: case V_MASS: val = at->rmass[i]; break;
+            case V_SOLID: {
+                double r = at->radius[i];
+                val = g->dom.dimension == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
+                break;
+            }
+            default: val = src[(size_t)stride * i + comp]; break;
+            }
+            a->values_one[(size_t)(ichunk[i] - 1) * nv + j] += val;
+        }
+    }
+    /* the sample: accumulate sums (all, none) or per-sample averages (sample) */
+    for (int m = 0; m < a->nchunk; m++) {
+        double *one = a->values_one + (size_t)m * nv, *many = a->values_many + (size_t)m * nv;
+        if (a->normflag != NORM_SAMPLE) {
+            a->count_many[m] += a->count_one[m];
+            for (int j = 0; j < nv; j++)
+                many[j] += one[j];
+        } else {
+            double cnt = a->count_one[m];
+            a->count_many[m] = cnt;
+            if (cnt > 0)
+                for (int j = 0; j < nv; j++) {
+                    int w = a->which[j];
+                    if (w == V_DNUM || w == V_DMASS || w == V_SOLID || a->noscale)
+                        many[j] += one[j];
+                    else
+                        many[j] += one[j] / cnt;
+                }
+            a->count_sum[m] += cnt;
+        }
+    }
+    a->irepeat++;
+    if (a->irepeat < a->nrepeat) {
+        a->nvalid += a->nevery;
+        return;
+    }
+    a->irepeat = 0;
+    a->nvalid = g->step + a->nfreq - (bigint)(a->nrepeat - 1) * a->nevery;
+    /* the epoch's average */
+    double repeat = a->nrepeat;
+    for (int m = 0; m < a->nchunk; m++) {
+        double *sum = a->values_sum + (size_t)m * nv, *many = a->values_many + (size_t)m * nv;
+        if (a->normflag == NORM_ALL) {
+            a->count_sum[m] = a->count_many[m];
+            for (int j = 0; j < nv; j++) {
+                sum[j] = many[j];
+                if (a->count_sum[m] > 0) {
+                    int w = a->which[j];
+                    if (w == V_DMASS || w == V_DNUM || w == V_SOLID || a->noscale)
+                        sum[j] /= repeat; /* mv2d = 1 in lj, si and cgs */
+                    else
+                        sum[j] /= a->count_sum[m];
+                }
+            }
+            a->count_sum[m] /= repeat;
+        } else {
+            if (a->normflag == NORM_NONE)
+                a->count_sum[m] = a->count_many[m];
+            for (int j = 0; j < nv; j++)
+                sum[j] = many[j] / repeat;
+            a->count_sum[m] /= repeat;
+        }
+    }
+    double vol = a->grid->volume;
+    for (int j = 0; j < nv; j++) {
+        int w = a->which[j];
+        if (w == V_DNUM || w == V_DMASS || w == V_SOLID)
+            for (int m = 0; m < a->nchunk; m++)
+                a->values_sum[(size_t)m * nv + j] /= vol;
+    }
+    if (a->ave == AVE_ONE) {
+        memcpy(a->values_total, a->values_sum, (size_t)a->nchunk * nv * sizeof(double));
+        memcpy(a->count_total, a->count_sum, (size_t)a->nchunk * sizeof(double));
+        a->normcount = 1;
+    } else if (a->ave == AVE_RUNNING) {
+        for (size_t k = 0; k < (size_t)a->nchunk * nv; k++)
+            a->values_total[k] += a->values_sum[k];
+        for (int m = 0; m < a->nchunk; m++)
+            a->count_total[m] += a->count_sum[m];
+        a->normcount++;
+    } else {
+        size_t off = (size_t)a->iwindow * a->nchunk;
+        for (size_t k = 0; k < (size_t)a->nchunk * nv; k++) {
+            a->values_total[k] += a->values_sum[k];
+            if (a->window_limit)
+                a->values_total[k] -= a->values_list[off * nv + k];
+            a->values_list[off * nv + k] = a->values_sum[k];
+        }
+        for (int m = 0; m < a->nchunk; m++) {
+            a->count_total[m] += a->count_sum[m];
+            if (a->window_limit)
+                a->count_total[m] -= a->count_list[off + m];
+            a->count_list[off + m] = a->count_sum[m];
+        }
+        if (++a->iwindow == a->nwindow) {
+            a->iwindow = 0;
+            a->window_limit = 1;
+        }
+        a->normcount = a->window_limit ? a->nwindow : a->iwindow;
+    }
+    if (a->fp) {
+        if (a->overwrite)
+            fseek(a->fp, a->filepos, SEEK_SET);
+        double count = 0;
+        for (int m = 0; m < a->nchunk; m++)
+            count += a->count_total[m];
+        fprintf(a->fp, "%lld %d %g\n", (long long)g->step, a->nchunk, count);
+        const char *fmt = a->format ? a->format : " %g";
+        const struct chunk_grid *gr = a->grid;
+        double nc = a->normcount;
+        for (int m = 0; m < a->nchunk; m++) {
+            fprintf(a->fp, "  %d", m + 1);
+            for (int k = 0; k < gr->ndim; k++)
+                fprintf(a->fp, " %g", gr->coord[(size_t)m * gr->ndim + k]);
+            fprintf(a->fp, " %g", a->count_total[m] / nc);
+            for (int j = 0; j < nv; j++)
+                fprintf(a->fp, fmt, a->values_total[(size_t)m * nv + j] / nc);
+            fputc('\n', a->fp);
+        }
+        fflush(a->fp);
+        if (a->overwrite) {
+            long end = ftell(a->fp);
+            if (ftruncate(fileno(a->fp), end) != 0)
+                gr_warn(g, "fix ave/chunk %s: could not truncate its file", f->id);
+        }
+        if (ferror(a->fp))
+            gr_error(g, "fix ave/chunk %s: writing its file failed", f->id);
+    }
+    if (a->vtk)
+        write_vtk(g, f, a);
+}
+
+/* Legacy VTK STRUCTURED_POINTS of the grid: unbinned dimensions span the
+ * box in one cell; cells ordered x fastest as VTK requires. */
+static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a)
+{
+    const struct chunk_grid *gr = a->grid;
+    int n[3];
+    double o[3], h[3];
+    for (int d = 0; d < 3; d++) {
+        double lo = g->dom.lo[d], prd = g->dom.hi[d] - lo;
+        n[d] = 1;
+        o[d] = lo;
+        h[d] = prd > 0 ? prd : 1;
+        for (int m = 0; m < gr->ndim; m++)
+            if (gr->dim[m] == d) {
+                n[d] = gr->nlayers[m];
+                o[d] = gr->reduced ? lo + gr->offset[m] * prd : gr->offset[m];
+                h[d] = gr->reduced ? gr->delta[m] * prd : gr->delta[m];
+            }
+    }
+    char path[4096];
+    const char *star = strchr(a->vtk, '*');
+    if (star)
+        snprintf(path, sizeof path, "%.*s%lld%s", (int)(star - a->vtk), a->vtk,
+                 (long long)g->step, star + 1);
+    else
+        snprintf(path, sizeof path, "%s", a->vtk);
+    int err = 0;
+    const char *why = NULL;
+    FILE *fp = fio_open_write_checked(path, 0, &err, &why);
+    if (!fp)
+        gr_error(g, "fix ave/chunk %s: cannot open vtk file %.200s: %s", f->id, path, why);
+    size_t ncell = (size_t)n[0] * n[1] * n[2];
+    fprintf(fp, "# vtk DataFile Version 3.0\ngravel fix ave/chunk %s step %lld\nASCII\n", f->id,
+            (long long)g->step);
+    fprintf(fp, "DATASET STRUCTURED_POINTS\nDIMENSIONS %d %d %d\n", n[0] + 1, n[1] + 1, n[2] + 1);
+    fprintf(fp, "ORIGIN %.17g %.17g %.17g\nSPACING %.17g %.17g %.17g\n", o[0], o[1], o[2], h[0],
+            h[1], h[2]);
+    int nv = a->nvalues;
+    fprintf(fp, "CELL_DATA %zu\nFIELD FieldData %d\n", ncell, nv + 1);
+    double nc = a->normcount;
+    for (int j = -1; j < nv; j++) {
+        char name[GR_NAMELEN];
+        snprintf(name, sizeof name, "%s", j < 0 ? "Ncount" : a->names[j]);
+        for (char *p = name; *p; p++)
+            if (*p == '/' || *p == '[' || *p == ']' || *p == ' ')
+                *p = '_';
+        fprintf(fp, "%s 1 %zu double\n", name, ncell);
+        for (int kz = 0; kz < n[2]; kz++)
+            for (int ky = 0; ky < n[1]; ky++)
+                for (int kx = 0; kx < n[0]; kx++) {
+                    int k3[3] = {kx, ky, kz}, id = 0;
+                    for (int m = 0; m < gr->ndim; m++)
+                        id = id * gr->nlayers[m] + k3[gr->dim[m]];
+                    double v = j < 0 ? a->count_total[id] / nc
+                                     : a->values_total[(size_t)id * nv + j] / nc;
+                    fprintf(fp, "%.9g\n", v);
+                }
+    }
+    int ok = !ferror(fp);
+    if (fclose(fp) != 0 || !ok || err)
+        gr_error(g, "fix ave/chunk %s: writing %.200s failed", f->id, path);
+}
+
+static void ave_init(struct gravel *g, struct fix *f)
+{
+    struct ave_chunk *a = f->data;
+    chunk_atom_get(g, a->chunk, "fix ave/chunk");
+    for (int j = 0; j < a->nvalues; j++)
+        if (a->which[j] == V_COMPUTE)
+            compute_peratom_check(g, a->ids[j], a->argindex[j], "fix ave/chunk");
+    if (a->nvalid < g->step) {
+        a->irepeat = 0;
+        a->nvalid = next_valid(g, a);
+    }
+}
+
+
+const struct fix_style fix_style_ave_chunk = {
+    .name = "ave/chunk",
+    .create = ave_create,
+    .init = ave_init,
+    .setup = sample, /* LAMMPS's setup(): a sample when the run's first step is due */
+    .end_of_step = sample,
+    .destroy = ave_destroy,
+};
