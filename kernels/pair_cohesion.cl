@@ -26,3 +26,13 @@ static inline void cohesion_eval(const struct contact *c, __global const REAL *p
     const REAL delta_e = de - r;
     out->f = (-param[COH_KC] * delta_e / r) * c->del;
 }
+
+/* collision time (kernels/accuracy.cl): cohesion alone has none */
+static inline REAL cohesion_eval_tcol(const struct contact *c, __global const REAL *param,
+                                      const REAL vn)
+{
+    (void)c;
+    (void)param;
+    (void)vn;
+    return (REAL)0;
+}

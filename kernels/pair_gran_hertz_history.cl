@@ -24,3 +24,10 @@ static inline void gran_hertz_history_eval(const struct contact *c, __global con
     const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, polyhertz, shear);
     gran_apply(c, &k, ccel, ft, out);
 }
+
+/* collision time (kernels/accuracy.cl): Hertz with kn = 4/3 E*, undamped */
+static inline REAL gran_hertz_history_eval_tcol(const struct contact *c,
+                                                __global const REAL *param, const REAL vn)
+{
+    return tcol_hertz(param[GRAN_KN], c->reff, c->meff, vn);
+}

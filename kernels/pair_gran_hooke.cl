@@ -24,3 +24,11 @@ static inline void gran_hooke_eval(const struct contact *c, __global const REAL 
     const REAL ft = vrel != (REAL)0 ? fmin(fn, fs) / vrel : (REAL)0;
     gran_apply(c, &k, ccel, (REAL3)(-ft * k.vtr1, -ft * k.vtr2, -ft * k.vtr3), out);
 }
+
+/* collision time (kernels/accuracy.cl): the damped linear spring */
+static inline REAL gran_hooke_eval_tcol(const struct contact *c, __global const REAL *param,
+                                        const REAL vn)
+{
+    (void)vn;
+    return tcol_linear(param[GRAN_KN], param[GRAN_GAMMAN], c->meff);
+}

@@ -22,3 +22,11 @@ static inline void gran_hooke_history_eval(const struct contact *c, __global con
     const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, (REAL)1, shear);
     gran_apply(c, &k, ccel, ft, out);
 }
+
+/* collision time (kernels/accuracy.cl): the damped linear spring */
+static inline REAL gran_hooke_history_eval_tcol(const struct contact *c,
+                                                __global const REAL *param, const REAL vn)
+{
+    (void)vn;
+    return tcol_linear(param[GRAN_KN], param[GRAN_GAMMAN], c->meff);
+}

@@ -75,3 +75,10 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
             out->tr = (mur * c->reff * fmax(fnmag, (REAL)0) / wmag) * wrel;
     }
 }
+
+/* collision time (kernels/accuracy.cl): Hertz, undamped */
+static inline REAL hertz_mindlin_eval_tcol(const struct contact *c, __global const REAL *param,
+                                           const REAL vn)
+{
+    return tcol_hertz(param[HM_KN], c->reff, c->meff, vn);
+}

@@ -42,4 +42,29 @@ static inline void hybrid_overlay_eval(const struct contact *c, __global const R
 #endif
     *out = sum;
 }
+
+/* collision time (kernels/accuracy.cl): the shortest of the terms' */
+#define HYBRID_TCOL(EVAL, OFF)                                                                 \
+    {                                                                                          \
+        const REAL t_ = TCOL_OF(EVAL)(c, param + (OFF), vn);                                   \
+        if (t_ > (REAL)0 && (tc == (REAL)0 || t_ < tc))                                        \
+            tc = t_;                                                                           \
+    }
+
+static inline REAL hybrid_overlay_eval_tcol(const struct contact *c, __global const REAL *param,
+                                            const REAL vn)
+{
+    REAL tc = 0;
+    HYBRID_TCOL(PAIR_TERM0, PAIR_TERM0_OFF)
+#if PAIR_TERMS > 1
+    HYBRID_TCOL(PAIR_TERM1, PAIR_TERM1_OFF)
+#endif
+#if PAIR_TERMS > 2
+    HYBRID_TCOL(PAIR_TERM2, PAIR_TERM2_OFF)
+#endif
+#if PAIR_TERMS > 3
+    HYBRID_TCOL(PAIR_TERM3, PAIR_TERM3_OFF)
+#endif
+    return tc;
+}
 #endif /* PAIR_TERMS */

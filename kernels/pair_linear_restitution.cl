@@ -52,3 +52,11 @@ static inline void linear_restitution_eval(const struct contact *c,
     out->tc = torque != (REAL)0 ? cross(n, ft) : (REAL3)(0);
     out->tr = (REAL3)(0);
 }
+
+/* collision time (kernels/accuracy.cl): t_col = ctcol sqrt(m*) */
+static inline REAL linear_restitution_eval_tcol(const struct contact *c,
+                                                __global const REAL *param, const REAL vn)
+{
+    (void)vn;
+    return param[LR_CTCOL] * sqrt(c->meff);
+}

@@ -14,6 +14,8 @@
  * schedule or the work split. No atomics; the two sides' forces are exact
  * negatives.
  *
+ * acc/astep: the contact's collision-resolution record (kernels/accuracy.cl).
+ *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
@@ -50,7 +52,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
                             const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
-                            __global REAL *rect POS_LO_PARAM)
+                            __global REAL *rect, __global REAL *acc, __global int *astep,
+                            const int step POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
@@ -117,6 +120,9 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         REAL3 sh = (REAL3)(0);
 #endif
         PAIR_EVAL(&k, p, &sh, &out);
+        /* collision resolution of the contacts that happen (accuracy.cl) */
+        if (k.rsq < k.radsum * k.radsum)
+            ACC_NOTE_PAIR(PAIR_EVAL, c, &k, p, acc, astep, step);
 #ifdef HAS_HISTORY
         vstore3(sh, c, shear);
 #endif

@@ -10,7 +10,9 @@
  * with the wall as partner j (radj = 0, omj = 0, meff = m_i) and
  *   reff = radi (flat) or radi rwall / (rwall + radi) (LAMMPS' choice).
  * Contact history is kept per (particle, wall element): 3 REAL per element
- * per atom, zeroed while the element does not touch the particle.
+ * per atom, zeroed while the element does not touch the particle. Each
+ * contact also updates the particle's accuracy record (acc, astep; wall
+ * code acode; kernels/accuracy.cl).
  *
  * Kinds (WALL_*, src/wall.h):
  *   plane pair   elements lo face (0) and hi face (1) normal to `axis`; as in
@@ -93,6 +95,7 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
         __global const REAL *rmass, __global const int *type, __global REAL *f,                \
         __global REAL *torque, __global REAL *history, const int has_history,                  \
+        __global REAL *acc, __global int *astep, const int acode, const int step,              \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         const int nelem, const int kind, const int axis, const REAL lo, const REAL hi,         \
         const REAL wradius, const REAL vwx, const REAL vwy, const REAL vwz,                    \
@@ -144,6 +147,7 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
             REAL3 sh = has_history ? vload3(slot, history) : (REAL3)(0);                       \
             struct contact_force cf;                                                           \
             EVAL(&c, p, &sh, &cf);                                                             \
+            ACC_NOTE_WALL(EVAL, i, &c, p, acode, acc, astep, step);                            \
             if (has_history)                                                                   \
                 vstore3(sh, slot, history);                                                    \
             fsum += cf.f;                                                                      \
@@ -288,6 +292,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
         __global const REAL *rmass, __global const int *type, __global REAL *f,                \
         __global REAL *torque, __global REAL *history, const int has_history,                  \
+        __global REAL *acc, __global int *astep, const int acode, const int step,              \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
         const int nparam, const int by_type, __global const REAL *tri,                         \
         __global const int *triv, __global const int *cstart, __global const int *ctri,        \
@@ -398,7 +403,9 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
             struct contact_force cf;                                                           \
-            EVAL(&ct, p_of(param, by_type, type[i] - 1, ntypes, nparam), &sh, &cf);            \
+            __global const REAL *pc = p_of(param, by_type, type[i] - 1, ntypes, nparam);       \
+            EVAL(&ct, pc, &sh, &cf);                                                           \
+            ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                          \
             if (has_history && nnew < MESH_SLOTS) {                                            \
                 nkey[nnew] = (REAL)(t + 1);                                                    \
                 nsh[nnew++] = sh;                                                              \

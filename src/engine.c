@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "accuracy.h"
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
@@ -523,6 +524,8 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "contact_normal.cl", "engine");
     /* per-particle fix work run inside the check and gather kernels */
     add_source(g, names, texts, &n, "fused.cl", "engine");
+    /* collision-resolution and wall-overlap records (src/accuracy.c) */
+    add_source(g, names, texts, &n, "accuracy.cl", "engine");
     for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
         add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {
@@ -572,6 +575,7 @@ void engine_destroy(struct gravel *g)
                     e->prof_calls[i], e->prof_sec[i], 1e6 * e->prof_sec[i] / e->prof_calls[i]);
     }
     nbr_free(g);
+    acc_free(g);
     fused_free(&e->fused);
     for (int k = 0; k < NHOOK; k++)
         free(e->hooks.call[k]);

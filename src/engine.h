@@ -28,6 +28,7 @@ struct dev_atoms {
 };
 
 struct nbr;                     /* neighbor.c */
+struct acc;                     /* accuracy.c */
 struct fix;
 
 /* The fix calls of each hook for the current run (run.c). */
@@ -62,6 +63,7 @@ struct engine {
     cl_kernel *kern;            /* every kernel created for this program */
     size_t *kern_wg;            /* its work-group size (queried once, at creation) */
     struct nbr *nbr;
+    struct acc *acc;            /* collision-resolution records of the run */
     /* kept across runs: validity of the device neighbor list / history */
     uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */
     int n_at_sync;

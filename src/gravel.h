@@ -168,6 +168,8 @@ struct dump;                /* dump.h */
 
 struct styles {
     struct pair *pair;      /* NULL until pair_style */
+    char *pair_cmds;        /* the pair_style and pair_coeff lines that made it
+                             * (one per line; the accuracy map replays them) */
     int nfix, nfix_cap;
     struct fix **fix;
     int ncompute, ncompute_cap;
@@ -185,6 +187,7 @@ struct options {
     int single;             /* -precision single */
     int progress;           /* -progress */
     int quiet_screen;       /* -screen none */
+    int check;              /* -check: each run prints the accuracy map instead */
 };
 
 /* ---- error context: where the command being run came from ------------------ */

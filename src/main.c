@@ -2,7 +2,7 @@
  *
  *   gravel [-in FILE] [-var NAME VALUE...] [-log FILE|none] [-echo none|screen|log|both]
  *          [-screen none|FILE] [-device cpu|gpu|N] [-precision single|double]
- *          [-progress] [-h] [-version]
+ *          [-progress] [-check [FILE]] [-h] [-version]
  *
  * Without -in the script comes from stdin. Exit status: 0 on success (or the
  * status given to `quit`), 1 on any error (a bad command line included). */
@@ -41,6 +41,8 @@ static void usage(FILE *out)
             "gravel %s - a DEM engine driven by LAMMPS-style input scripts\n\n"
             "usage: gravel [options] [< script]\n"
             "  -in, -i FILE                 read the script from FILE (default: stdin)\n"
+            "  -check [FILE]                each run prints the accuracy map of the scene\n"
+            "                               (doc/accuracy_map.md) instead of running\n"
             "  -var, -v NAME VALUE...       define index variable NAME with the values\n"
             "  -log, -l FILE|none           log file (default log.gravel)\n"
             "  -echo, -e none|screen|log|both  echo commands (default log)\n"
@@ -139,7 +141,7 @@ int main(int argc, char **argv)
 {
     const char *in = NULL, *log = "log.gravel", *screen = NULL, *echo = NULL;
     const char *device = NULL, *precision = NULL;
-    int progress = 0;
+    int progress = 0, check = 0;
     /* first pass: validate everything before any file is created */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -151,6 +153,11 @@ int main(int argc, char **argv)
         } else if (IS("-version", "--version")) {
             printf("gravel %s\n", GR_VERSION);
             return 0;
+        } else if (IS("-check", NULL)) {
+            /* -check [FILE]: each run prints the accuracy map instead of running */
+            check = 1;
+            if (more && !is_flag(argv[i + 1]))
+                in = argv[++i];
         } else if (IS("-in", "-i")) {
             if (!more)
                 return bad("%s needs a file name", a);
@@ -203,6 +210,7 @@ int main(int argc, char **argv)
         snprintf(g->opt.device, sizeof g->opt.device, "%s", device);
     g->opt.single = precision && strcmp(precision, "single") == 0;
     g->opt.progress = progress;
+    g->opt.check = check;
     if (echo)
         g->echo = !strcmp(echo, "none") ? ECHO_NONE : !strcmp(echo, "screen") ? ECHO_SCREEN
                 : !strcmp(echo, "log") ? ECHO_LOG : ECHO_BOTH;
@@ -229,6 +237,8 @@ int main(int argc, char **argv)
     /* -var definitions, in order (a later -var of the same name wins) */
     for (int i = 1; i < argc && rc == 0; i++) {
         if (strcmp(argv[i], "-var") && strcmp(argv[i], "-v")) {
+            if (!strcmp(argv[i], "-check") && i + 1 < argc && !is_flag(argv[i + 1]))
+                i++;
             if (!strcmp(argv[i], "-in") || !strcmp(argv[i], "-i") || !strcmp(argv[i], "-log") ||
                 !strcmp(argv[i], "-l") || !strcmp(argv[i], "-echo") || !strcmp(argv[i], "-e") ||
                 !strcmp(argv[i], "-screen") || !strcmp(argv[i], "-sc") ||

@@ -354,6 +354,18 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     else
         gr_print(g, "Dangerous builds not checked\n");
     gr_print(g, "Largest overlap / radius = %.6g\n", s->max_overlap_frac);
+    if (s->res_q > 0) {
+        char who[128];
+        if (s->res_tag_j)
+            snprintf(who, sizeof who, "atoms %lld and %lld", s->res_tag_i, s->res_tag_j);
+        else
+            snprintf(who, sizeof who, "atom %lld and wall %s", s->res_tag_i, s->res_wall);
+        gr_print(g, "Collision resolution = %.4g steps per collision at worst (step %lld, %s, "
+                    "normal speed %.4g)\n",
+                 1.0 / s->res_q, (long long)s->res_step, who, s->res_vn);
+    } else if (s->nsteps > 0) {
+        gr_print(g, "Collision resolution: no collisions\n");
+    }
     if (s->nsteps > 0)
         gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
                  s->ncontact, (double)s->nlaunch / (double)s->nsteps);

@@ -32,6 +32,48 @@ void pair_free(struct gravel *g)
         pair_release(g->styles.pair);
     free(g->styles.pair);
     g->styles.pair = NULL;
+    free(g->styles.pair_cmds);
+    g->styles.pair_cmds = NULL;
+}
+
+/* Append `name argv...` as one line to the recorded pair commands (keep:
+ * 0 = start afresh). */
+static void record(struct gravel *g, const char *name, int argc, char **argv, int keep)
+{
+    size_t old = keep && g->styles.pair_cmds ? strlen(g->styles.pair_cmds) : 0, add = strlen(name) + 2;
+    for (int i = 0; i < argc; i++)
+        add += strlen(argv[i]) + 1;
+    char *s = gr_malloc(g, old + add + 1);
+    if (old)
+        memcpy(s, g->styles.pair_cmds, old);
+    char *q = s + old;
+    q += sprintf(q, "%s", name);
+    for (int i = 0; i < argc; i++)
+        q += sprintf(q, " %s", argv[i]);
+    sprintf(q, "\n");
+    free(g->styles.pair_cmds);
+    g->styles.pair_cmds = s;
+}
+
+/* The style line first, then the coefficient lines kept with it. */
+static void record_style(struct gravel *g, int argc, char **argv, int keep_coeffs)
+{
+    char *coeffs = NULL;
+    if (keep_coeffs && g->styles.pair_cmds) {
+        char *nl = strchr(g->styles.pair_cmds, '\n');
+        if (nl && nl[1])
+            coeffs = strdup(nl + 1);
+    }
+    record(g, "pair_style", argc, argv, 0);
+    if (coeffs) {
+        size_t a = strlen(g->styles.pair_cmds), b = strlen(coeffs);
+        char *s = gr_malloc(g, a + b + 1);
+        memcpy(s, g->styles.pair_cmds, a);
+        memcpy(s + a, coeffs, b + 1);
+        free(g->styles.pair_cmds);
+        free(coeffs);
+        g->styles.pair_cmds = s;
+    }
 }
 
 const struct pair_style *pair_style_find(const char *name)
@@ -82,6 +124,7 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
     }
     struct pair tmp;
     pair_create(g, &tmp, st, argc - 1, argv + 1);
+    record_style(g, argc, argv, g->styles.pair && g->styles.pair->style == st && !st->source_n);
     /* LAMMPS: redefining the same style keeps the coefficients (per-type
      * tables in data included; hybrid/overlay starts afresh) */
     if (g->styles.pair && g->styles.pair->style == st && !st->source_n) {
@@ -145,6 +188,8 @@ void cmd_pair_coeff(struct gravel *g, int argc, char **argv)
     if (!g->styles.pair)
         gr_error(g, "pair_coeff command before pair_style is defined");
     struct pair *p = g->styles.pair;
+    if (g->styles.pair_cmds)
+        record(g, "pair_coeff", argc, argv, 1);
     if (plain_int(argv[0]) && plain_int(argv[1]) && atoi(argv[1]) < atoi(argv[0])) {
         char *t = argv[0];
         argv[0] = argv[1];

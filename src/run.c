@@ -18,10 +18,13 @@
 
 #include <math.h>
 #include <setjmp.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "accuracy.h"
+#include "accuracy_map.h"
 #include "args.h"
 #include "engine.h"
 #include "error.h"
@@ -181,6 +184,10 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             eng_arg_real(g, k, i++, l->L[q]);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
+        acc_reserve(g);
+        eng_arg_mem(g, k, i++, acc_pair_rec(g));
+        eng_arg_mem(g, k, i++, acc_pair_step(g));
+        eng_arg_int(g, k, i++, acc_step(g));
         eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
@@ -205,6 +212,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, a->mask);
         eng_launch(g, k, (size_t)a->n);
     } else {
+        acc_reserve(g); /* the wall records */
         eng_arg_int(g, e->k_clear, 0, a->n);
         eng_arg_mem(g, e->k_clear, 1, a->f);
         eng_arg_mem(g, e->k_clear, 2, e->rotation ? a->torque : a->f);
@@ -333,6 +341,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     unsigned freezebit = fz ? fz->groupbit : 0;
     timestep_report(g, force);
     precision_report(g);
+    acc_begin(g, force); /* collision resolution of the contacts that happen */
 
     g->firststep = g->step;
     g->laststep = g->step + nsteps;
@@ -378,6 +387,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */
         double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
+            acc_collect(g); /* the records are per contact and atom: before renumbering */
             double p0 = wall();
             run_hook(g, HOOK_PRE_EXCHANGE);
             tx = wall() - p0;
@@ -410,6 +420,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         }
         g->time += g->dt;
         if (output_due(g, g->step)) {
+            acc_collect(g);
             double ov = nbr_max_overlap(g);
             if (ov > maxov)
                 maxov = ov;
@@ -431,6 +442,9 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         tm *= avail / busy;
     }
     double ttot = wall() - t0;
+    acc_collect(g);
+    const struct acc_worst *worst = acc_worst(g);
+    maxov = fmax(maxov, worst->wall_ov); /* walls and meshes: every step */
     run_sync_host(g);
     struct run_stats st = e->st;
     st.nsteps = nsteps;
@@ -445,6 +459,12 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         st.t_other = 0;
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
+    st.res_q = worst->q;
+    st.res_vn = worst->vn;
+    st.res_step = worst->step;
+    st.res_tag_i = worst->tag_i;
+    st.res_tag_j = worst->tag_j;
+    snprintf(st.res_wall, sizeof st.res_wall, "%s", worst->wall);
     st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
     e->active = 0;
@@ -454,7 +474,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         output_finish_brief(g, &st);
     /* verify: Hertz/linear contact laws assume small overlaps */
     if (maxov > 0.1)
-        gr_warn(g, "largest overlap reached %.1f %% of a radius (sampled at output steps): "
+        gr_warn(g, "largest overlap reached %.1f %% of a radius (pairs sampled at output "
+                   "steps, walls and meshes at every step): "
                    "impacts too fast or contacts too soft for the contact model",
                 100 * maxov);
 }
@@ -495,7 +516,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     char **cmds = NULL;
     int upto = 0;
     bigint start = -1, stop = -1;
-    int have_start = 0, have_stop = 0, force = 0, post = 1;
+    int have_start = 0, have_stop = 0, force = 0, post = 1, accuracy = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "upto")) {
             upto = 1;
@@ -511,6 +532,8 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             /* verify: allow a time step above half the collision time */
             arg_need(g, argc, i, 1, "force");
             force = arg_yesno(g, argv[++i], "force");
+        } else if (!strcmp(argv[i], "accuracy")) {
+            accuracy = 1; /* the accuracy map first (src/accuracy_map.h) */
         } else if (!strcmp(argv[i], "pre")) {
             /* every run sets up fully (pre no is a LAMMPS speed hint) */
             arg_need(g, argc, i, 1, argv[i]);
@@ -532,7 +555,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
             break;
         } else {
             gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post, "
-                        "force, every)",
+                        "force, accuracy, every)",
                      argv[i]);
         }
     }
@@ -552,6 +575,12 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     if (have_stop && stop < g->step + n)
         gr_error(g, "run stop %lld is before the last step %lld of the run", (long long)stop,
                  (long long)(g->step + n));
+    if (accuracy || g->opt.check)
+        accuracy_map(g);
+    if (g->opt.check) { /* gravel -check: the map instead of the run */
+        gr_print(g, "(-check: run %lld not performed)\n", (long long)n);
+        return;
+    }
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
     if (!nevery) {

@@ -17,7 +17,13 @@ struct run_stats {
     double t_pair, t_neigh, t_modify, t_output, t_other;
     bigint nbuilds, ndanger;
     double total_neighbors;         /* entries in the last list built */
-    double max_overlap_frac;        /* largest overlap / radius seen at outputs */
+    double max_overlap_frac;        /* largest overlap / radius: pairs at outputs,
+                                     * walls and meshes at every step */
+    /* worst collision resolution (src/accuracy.h): dt / t_col, 0 = none */
+    double res_q, res_vn;
+    bigint res_step;
+    long long res_tag_i, res_tag_j; /* tag_j 0: res_wall, a wall fix */
+    char res_wall[GR_NAMELEN];
     bigint nlaunch;                 /* kernel launches and fills in the loop */
     int ncontact;                   /* contacts of the last list built */
     double mem_peak;                /* most bytes of device buffers live during the run */

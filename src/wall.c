@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "accuracy.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
@@ -39,7 +40,7 @@ static int bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *la
     eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
     eng_arg_mem(g, k, i++, law->history ? f->peratom : a->f);
     eng_arg_int(g, k, i++, law->history);
-    return i;
+    return acc_bind_wall(g, f, k, i);
 }
 
 /* The contact law's parameters from index i; returns the next index. */

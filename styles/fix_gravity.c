@@ -105,6 +105,13 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "fix_gravity.cl";
 }
 
+/* |acceleration| of a fix gravity (the accuracy map's free-fall speed). */
+double fix_gravity_magnitude(const struct fix *f)
+{
+    const struct grav *gr = f->data;
+    return sqrt(gr->acc[0] * gr->acc[0] + gr->acc[1] * gr->acc[1] + gr->acc[2] * gr->acc[2]);
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     ((struct grav *)f->data)->post = eng_kernel(g, "gravity_post_force");

@@ -29,6 +29,7 @@ import seeds_verify as sv  # noqa: E402
 import verify_cases as vc  # noqa: E402
 import verify_restitution as vr  # noqa: E402
 import energy_drift as ed  # noqa: E402
+import verify_chung_ooi as vco  # noqa: E402
 import verify_precision as vp  # noqa: E402
 
 ROOT = sv.ROOT
@@ -306,6 +307,14 @@ def main():
         run_restitution(out)
     if not names or "energy_drift" in names:
         run_energy_drift(out)
+    if not names or "chung_ooi" in names:
+        t0 = time.time()
+        vco.write_doc(os.path.join(ROOT, "doc", "chung_ooi.md"), PNGDIR)
+        out += ["## Chung & Ooi (2011) impact benchmarks", "",
+                "The eight benchmark tests, for hertz/mindlin and gran/hertz/history, against "
+                "Hertz theory, the law's own restitution and rigid-body impulse theory: tables and "
+                "plots in [chung_ooi.md](chung_ooi.md) (`tests/scripts/verify_chung_ooi.py`, "
+                "%.0f s)." % (time.time() - t0), ""]
     if not names or "precision" in names:
         run_precision(out)
     with open(DOC, "w") as f:

@@ -347,7 +347,8 @@ TEST(schedule_and_footer)
                            .t_neigh = 0.25, .t_modify = 0.25, .t_output = 0.25,
                            .nbuilds = 3, .ndanger = 0, .total_neighbors = 12,
                            .max_overlap_frac = 0.0125, .nlaunch = 31, .ncontact = 6,
-                           .mem_peak = 3000};
+                           .mem_peak = 3000, .res_q = 0.25, .res_vn = 1.5, .res_step = 7,
+                           .res_tag_i = 1, .res_tag_j = 3};
     output_finish(g, &st);
     char *out = fx_capture_end(g, &cap);
     const char *want =
@@ -379,6 +380,8 @@ TEST(schedule_and_footer)
         "Neighbor list builds = 3\n"
         "Dangerous builds = 0\n"
         "Largest overlap / radius = 0.0125\n"
+        "Collision resolution = 4 steps per collision at worst (step 7, atoms 1 and 3, normal "
+        "speed 1.5)\n"
         "Contacts = 6 (each evaluated once); kernel launches per step = 3.10\n"
         "Device memory = 0.003 Mbytes at most (1000 bytes per atom)\n";
     CHECK(out && strcmp(out, want) == 0);
