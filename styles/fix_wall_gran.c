@@ -27,10 +27,11 @@
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
+#include "region.h"
 #include "fix_mesh_surface.h"
 #include "wall.h"
 
-enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4 };
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 
@@ -44,12 +45,19 @@ struct wall {
     bigint time_origin;
     struct wall_law law;
     struct mesh_walls mesh;     /* wallstyle mesh */
+    char region_id[GR_NAMELEN]; /* fix wall/gran/region */
+    char region_style[32];      /* the region's style and sub-region count at the */
+    int region_nsub;            /* previous run (LAMMPS warns when they change) */
+    struct region *region;      /* looked up at every init (region delete) */
+    struct wall_region wreg;
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history"};
 static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
                                           "mesh_gran_hertz_history"};
+static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
+                                            "region_gran_hertz_history"};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -120,7 +128,23 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 
     int i = 7;
     const char *ws = argv[i];
-    if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
+    int is_region = !strcmp(f->style->name, "wall/gran/region");
+    if (is_region != !strcmp(ws, "region"))
+        gr_error(g, is_region ? "fix wall/gran/region expects 'region ID' after the "
+                                "coefficients, got '%.64s'"
+                              : "fix wall/gran: wall style '%.64s' belongs to fix "
+                                "wall/gran/region",
+                 ws);
+    if (is_region) {
+        arg_need(g, argc, i, 1, ws);
+        w.style = W_REGION;
+        const char *id = argv[i + 1];
+        if (strlen(id) >= GR_NAMELEN)
+            gr_error(g, "fix wall/gran/region: region ID too long");
+        region_get(g, id);
+        strcpy(w.region_id, id);
+        i += 2;
+    } else if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
         arg_need(g, argc, i, 2, ws);
         w.style = ws[0] - 'x';
         w.lo = parse_face(g, argv[i + 1], -WALL_FAR, "wall lo position");
@@ -138,9 +162,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.style = W_MESH;
         i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
                                     "fix wall/gran mesh");
-    } else if (!strcmp(ws, "region")) {
-        gr_error(g, "fix wall/gran wall style 'region' is not supported (use xplane, yplane, "
-                    "zplane or zcylinder)");
     } else {
         gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
                     "zcylinder or mesh)", ws);
@@ -161,6 +182,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 3;
         } else if (!strcmp(argv[i], "contacts")) {
             gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (w.style == W_REGION) {
+            gr_error(g, "unknown fix wall/gran/region keyword '%.64s'", argv[i]);
         } else if (w.style == W_MESH) {
             gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
         } else {
@@ -168,6 +191,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                      argv[i]);
         }
     }
+    if (w.style == W_REGION && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
+                    "and rotate keywords)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
@@ -194,6 +220,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
     f->sources[f->nsources++] = "wall.cl";
+    f->sources[f->nsources++] = "wall_region.cl";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
 }
 
@@ -234,7 +261,9 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, (w->style == W_MESH ? mesh_kernel : model_kernel)[w->model]);
+    w->law.kernel = eng_kernel(g, (w->style == W_MESH     ? mesh_kernel
+                                   : w->style == W_REGION ? region_kernel
+                                                          : model_kernel)[w->model]);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
@@ -248,6 +277,23 @@ static void init(struct gravel *g, struct fix *f)
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
         return;
     }
+    if (w->style == W_REGION) {
+        struct region *r = region_find(g, w->region_id);
+        if (!r)
+            gr_error(g, "fix %s: region '%s' for fix wall/gran/region does not exist", f->id,
+                     w->region_id);
+        if (w->region && (strcmp(w->region_style, r->style->name) != 0 ||
+                          w->region_nsub != r->nsub))
+            gr_warn(g, "fix %s: region %s was re-defined between runs, resetting its motion",
+                       f->id, w->region_id);
+        w->region = r;
+        snprintf(w->region_style, sizeof w->region_style, "%s", r->style->name);
+        w->region_nsub = r->nsub;
+        char who[GR_NAMELEN + 32];
+        snprintf(who, sizeof who, "fix %s (wall/gran/region)", f->id);
+        f->peratom_bytes = wall_region_init(g, &w->wreg, r, &w->law, who);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }
@@ -259,6 +305,10 @@ static void post_force(struct gravel *g, struct fix *f)
         mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
         return;
     }
+    if (w->style == W_REGION) {
+        wall_region_apply(g, f, &w->wreg, w->region, &w->law);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     wall_apply(g, f, &geom, &w->law);
 }
@@ -268,8 +318,10 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
-    if (w)
+    if (w) {
         mesh_walls_release(&w->mesh);
+        wall_region_release(&w->wreg);
+    }
     free(w);
     f->data = NULL;
 }
@@ -296,6 +348,16 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     memcpy(&origin, buf, sizeof origin);
     w->time_origin = origin;
 }
+
+const struct fix_style fix_style_wall_gran_region = {
+    .name = "wall/gran/region",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};
 
 const struct fix_style fix_style_wall_gran = {
     .name = "wall/gran",
