@@ -532,8 +532,8 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
  * REAL of shear per slot, kept and compacted as LAMMPS FixWallGranRegion
  * (update_contacts: slots of walls no longer touched are replaced by the
  * last one, new walls appended with zero shear; c2r maps as LAMMPS does).
- * vel_node: -1 the surface velocity of the contact's own node; else that
- * node's (0 for a single region). */
+ * dynamic: the surface moves with the velocity of the contact's node (0:
+ * at rest; the host passes 0 for union / intersect, as LAMMPS 2021). */
 #define REGION_KERNEL(NAME, EVAL)                                                              \
     __kernel void NAME(                                                                        \
         const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \

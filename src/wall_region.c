@@ -105,6 +105,10 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
                        struct region *r, const struct wall_law *law)
 {
     int dynamic = region_dynamic(r);
+    /* LAMMPS 29Sep2021: a union or intersect has no motion of its own, so
+     * Region::velocity_contact gives its contacts a resting surface even
+     * where a sub-region moves; matched here */
+    int vdyn = wr->comb ? 0 : dynamic;
     if (dynamic) {
         region_prematch(g, r);
         region_set_velocity(g, r);
@@ -125,7 +129,7 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
     eng_arg_int(g, k, i++, wr->comb);
     eng_arg_int(g, k, i++, wr->interior);
     eng_arg_int(g, k, i++, wr->slots);
-    eng_arg_int(g, k, i++, dynamic);
+    eng_arg_int(g, k, i++, vdyn);
     eng_arg_real(g, k, i++, g->dt);
     eng_arg_int(g, k, i++, !eng_in_setup(g));
     eng_launch(g, k, (size_t)a->n);
