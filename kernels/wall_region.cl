@@ -42,7 +42,7 @@
 #define RG_CYLINDER 3
 #define RG_CONE 4
 #define RG_PLANE 5
-#define RG_BIG 1.0e20
+#define RG_BIG ((REAL)1.0e20)
 
 struct rg_contact {
     REAL r, radius;
