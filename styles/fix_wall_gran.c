@@ -17,8 +17,10 @@
  * Per-atom contact history (3 REAL, model with history) follows the atoms
  * through re-sorts as engine-managed per-atom state (src/fix.h). The force
  * and torque are added in post_force, as LAMMPS does (also at setup, without
- * history update). Unsupported LAMMPS options (model granular, wallstyle
- * region, keyword contacts) are rejected with a clear error. */
+ * history update). fix wall/gran/region (same create, `region ID` as the
+ * wall style; kernels/wall_region.cl) takes the surface of a region as the
+ * wall. Unsupported LAMMPS options (model granular, keyword contacts) are
+ * rejected with a clear error. */
 #include <math.h>
 #include <string.h>
 
