@@ -22,6 +22,8 @@
  * wall. Unsupported LAMMPS options (model granular, keyword contacts) are
  * rejected with a clear error. */
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "args.h"
@@ -52,6 +54,11 @@ struct wall {
     int region_nsub;            /* previous run (LAMMPS warns when they change) */
     struct region *region;      /* looked up at every init (region delete) */
     struct wall_region wreg;
+    /* restart: the region's previous displacement and angle per node
+     * (LAMMPS Region::prev), applied when the region matches at init */
+    int rs_pending, rs_n;
+    char rs_style[32];
+    double rs_prev[WALL_REGION_MAXNODE][4];
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
@@ -259,6 +266,27 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     return geom;
 }
 
+static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }
+
+static struct region *region_node(struct region *r, int k) { return r->nsub ? r->sub[k] : r; }
+
+/* restart: the region's motion state when the restart file's region is the
+ * same (style and node count), else a warning (LAMMPS resets the motion) */
+static void restore_motion(struct gravel *g, struct fix *f, struct wall *w)
+{
+    if (!w->rs_pending || !w->region)
+        return;
+    w->rs_pending = 0;
+    if (strcmp(w->rs_style, w->region->style->name) != 0 ||
+        w->rs_n != region_nodes(w->region)) {
+        gr_warn(g, "fix %s: region %s differs from the restart file's, resetting its motion",
+                f->id, w->region_id);
+        return;
+    }
+    for (int k = 0; k < w->rs_n; k++)
+        memcpy(region_node(w->region, k)->prev, w->rs_prev[k], sizeof w->rs_prev[k]);
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
@@ -291,6 +319,7 @@ static void init(struct gravel *g, struct fix *f)
         w->region = r;
         snprintf(w->region_style, sizeof w->region_style, "%s", r->style->name);
         w->region_nsub = r->nsub;
+        restore_motion(g, f, w);
         char who[GR_NAMELEN + 32];
         snprintf(who, sizeof who, "fix %s (wall/gran/region)", f->id);
         f->peratom_bytes = wall_region_init(g, &w->wreg, r, &w->law, who);
@@ -329,26 +358,61 @@ static void destroy(struct fix *f)
 }
 
 /* Restart state (restart.c): the time origin of wiggle (the step the fix
- * was created at), so a re-created fix continues the same oscillation. */
+ * was created at), so a re-created fix continues the same oscillation; for
+ * wall/gran/region also the region's style, node count and previous
+ * displacement and angle per node (its wall velocity continues). */
+#define RS_REGION (32 + sizeof(int32_t))
+
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
     (void)g;
     const struct wall *w = f->data;
     int64_t origin = w->time_origin;
-    if (buf && cap >= sizeof origin)
-        memcpy(buf, &origin, sizeof origin);
-    return sizeof origin;
+    struct region *r = w->style == W_REGION ? region_find(g, w->region_id) : NULL;
+    int32_t n = r ? region_nodes(r) : 0;
+    size_t len = sizeof origin + (r ? RS_REGION + (size_t)n * 4 * sizeof(double) : 0);
+    if (!buf || cap < len)
+        return len;
+    memcpy(buf, &origin, sizeof origin);
+    if (r) {
+        unsigned char *b = buf + sizeof origin;
+        char st[32] = {0};
+        snprintf(st, sizeof st, "%s", r->style->name);
+        memcpy(b, st, 32);
+        memcpy(b + 32, &n, sizeof n);
+        for (int k = 0; k < n; k++)
+            memcpy(b + RS_REGION + (size_t)k * 4 * sizeof(double), region_node(r, k)->prev,
+                   4 * sizeof(double));
+    }
+    return len;
 }
 
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct wall *w = f->data;
     int64_t origin;
-    if (len != sizeof origin)
-        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+    if (len < sizeof origin)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected at least %zu", f->id, len,
                  sizeof origin);
     memcpy(&origin, buf, sizeof origin);
     w->time_origin = origin;
+    if (len == sizeof origin)
+        return;
+    int32_t n = 0;
+    if (len >= sizeof origin + RS_REGION)
+        memcpy(&n, buf + sizeof origin + 32, sizeof n);
+    if (w->style != W_REGION || n < 1 || n > WALL_REGION_MAXNODE ||
+        len != sizeof origin + RS_REGION + (size_t)n * 4 * sizeof(double))
+        gr_error(g, "fix %s: restart state of %zu bytes does not match this fix", f->id, len);
+    const unsigned char *b = buf + sizeof origin;
+    memcpy(w->rs_style, b, 32);
+    w->rs_style[31] = '\0';
+    w->rs_n = n;
+    for (int k = 0; k < n; k++)
+        memcpy(w->rs_prev[k], b + RS_REGION + (size_t)k * 4 * sizeof(double),
+               4 * sizeof(double));
+    w->rs_pending = 1;
+    restore_motion(g, f, w);
 }
 
 const struct fix_style fix_style_wall_gran_region = {

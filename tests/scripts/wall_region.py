@@ -14,7 +14,12 @@ pair_hybrid, compared with LAMMPS dumps by physics_lammps.py) do not cover.
 3. A moving region (move v_x NULL NULL with x = A sin wt) used by group
    region and create_atoms matches in its displaced frame at the current
    step.
-4. Bad input stops with a message naming the line: an unknown region, a
+4. Restart: a rotating region wall continues exactly: run 60 equals run 30 +
+   write_restart + read_restart in a fresh process + run 30 (the per-atom
+   wall history travels with the atoms; the region's previous angle is kept
+   in the fix's restart state as LAMMPS keeps it): the step-60 kinetic
+   energy agrees in all 15 printed digits.
+5. Bad input stops with a message naming the line: an unknown region, a
    region that cannot be a wall (union of a union), open on a sphere, open
    face 4 of a cylinder, move on a union, a deleted region at run, a missing
    rotate variable, wiggle on wall/gran/region, pair_style hybrid with an
@@ -136,6 +141,41 @@ write_dump all custom out.dump id type x
           f"{n2} random atoms all in x [{lo:.3f}, {hi:.3f}]: {inside}")
 
 
+RS_SETUP = """variable theta equal step*(4.0*PI/300)
+region cup block -3 3 -3 3 -3 3 units box rotate v_theta 0 0 0 0 0 1
+fix w all wall/gran/region hooke/history 4000.0 NULL 100.0 NULL 0.5 1 region cup
+fix 1 all nve/sphere
+fix 2 all gravity 1.0 vector 0 0 -1
+timestep 0.005
+thermo 30
+thermo_style custom step ke
+thermo_modify format float %20.15g
+"""
+
+
+def restart(tmp):
+    make = HEAD + """region inner block -2 2 -2 2 -2 2 units box
+lattice sc 0.5
+create_atoms 1 region inner
+set type 1 diameter 1.0 density 1.0
+velocity all create 1.0 4928 loop geom
+pair_style gran/hooke/history 4000.0 NULL 100.0 NULL 0.5 1
+pair_coeff * *
+""" + RS_SETUP
+    full = run(make + "run 60\n", tmp)
+    half = run(make + "run 30\nwrite_restart rs.bin\n", tmp)
+    rest = run("read_restart rs.bin\npair_style gran/hooke/history 4000.0 NULL 100.0 NULL 0.5 1\n"
+               "pair_coeff * *\n" + RS_SETUP + "run 30\n", tmp)
+
+    def ke60(res):
+        m = re.search(r"^\s*60\s+(\S+)\s*$", res.stdout, re.M)
+        return m.group(1) if m else None
+
+    a, b = ke60(full), ke60(rest)
+    ok = half.returncode == 0 and a is not None and a == b
+    check("wall_region_restart_exact", ok, f"run 60: {a}, run 30 + restart + run 30: {b}")
+
+
 ERRORS = [
     ("unknown_region", "fix w all wall/gran/region hooke 1e5 NULL 0 NULL 0 0 region nope\n",
      "unknown region 'nope'"),
@@ -198,6 +238,7 @@ def main():
         resting(tmp)
         carried(tmp)
         moving_match(tmp)
+        restart(tmp)
         errors(tmp)
 
 
