@@ -81,6 +81,8 @@ int region_dynamic(const struct region *r)
 
 void region_prematch(struct gravel *g, struct region *r)
 {
+    if (r->nsub)
+        region_relink(g, r);
     for (int k = 0; k < r->nsub; k++)
         region_prematch(g, r->sub[k]);
     if (r->moveflag)
@@ -203,6 +205,26 @@ static void region_free(struct region *r)
     free(r);
 }
 
+static void region_release(struct region *r);
+
+/* Drop one reference to s; a deleted region is freed with its last user. */
+static void region_unref(struct region *s)
+{
+    if (--s->nref == 0 && s->deleted)
+        region_release(s);
+}
+
+static void region_release(struct region *r)
+{
+    for (int k = 0; k < r->nsub; k++)
+        region_unref(r->sub[k]);
+    region_free(r);
+}
+
+/* region ID delete: leaves the registry at once. A region a union or
+ * intersect uses stays alive for it, marked deleted; the compound takes the
+ * region of that ID defined by then, when next used (LAMMPS re-finds its
+ * sub-regions by ID in init). */
 static void region_delete(struct gravel *g, const char *id)
 {
     struct regions *rs = &g->regions;
@@ -210,18 +232,37 @@ static void region_delete(struct gravel *g, const char *id)
         struct region *r = rs->r[i];
         if (strcmp(r->id, id) != 0)
             continue;
-        if (r->nref > 0)
-            gr_error(g, "region '%s' is used by a union or intersect region and cannot be "
-                        "deleted",
-                     id);
-        for (int k = 0; k < r->nsub; k++)
-            r->sub[k]->nref--;
-        region_free(r);
         memmove(rs->r + i, rs->r + i + 1, (size_t)(rs->n - i - 1) * sizeof *rs->r);
         rs->n--;
+        r->deleted = 1;
+        if (r->nref == 0)
+            region_release(r);
         return;
     }
     gr_error(g, "unknown region '%.64s'", id);
+}
+
+void region_relink(struct gravel *g, struct region *r)
+{
+    int cmax = 0;
+    for (int k = 0; k < r->nsub; k++) {
+        struct region *s = r->sub[k];
+        if (s->deleted) {
+            struct region *now = region_find(g, s->id);
+            if (!now)
+                gr_error(g, "region %s: its sub-region '%s' was deleted", r->id, s->id);
+            if (now == r)
+                gr_error(g, "region '%s' cannot contain itself", r->id);
+            now->nref++;
+            r->sub[k] = now;
+            region_unref(s);
+            s = now;
+        }
+        region_relink(g, s);
+        cmax += s->cmax;
+    }
+    if (r->nsub)
+        r->cmax = cmax;
 }
 
 /* region ID style args... [side in|out] [units box|lattice]
@@ -362,8 +403,14 @@ void cmd_region(struct gravel *g, int argc, char **argv)
 
 void regions_free(struct gravel *g)
 {
+    /* the registry holds one reference to each of its regions: take them
+     * all, then drop them in turn; a region goes when its last user does */
+    for (int i = 0; i < g->regions.n; i++) {
+        g->regions.r[i]->deleted = 1;
+        g->regions.r[i]->nref++;
+    }
     for (int i = 0; i < g->regions.n; i++)
-        region_free(g->regions.r[i]);
+        region_unref(g->regions.r[i]);
     free(g->regions.r);
     memset(&g->regions, 0, sizeof g->regions);
 }

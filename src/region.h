@@ -33,6 +33,7 @@ struct region {
     int nsub;                   /* union / intersect: sub-regions */
     struct region **sub;
     int nref;                   /* how many union/intersect regions use this one */
+    int deleted;                /* `region ID delete`d, alive for the compounds using it */
     int bbox;                   /* 1: lo/hi below bound every point that matches */
     double bbox_lo[3], bbox_hi[3];
     /* motion and open faces (see above) */
@@ -67,6 +68,9 @@ int region_match(const struct region *r, const double x[3]);
 /* Evaluate the motion variables of r and of its sub-regions at the current
  * step (LAMMPS Region::prematch). No-op for a static region. */
 void region_prematch(struct gravel *g, struct region *r);
+/* A union / intersect whose sub-region was deleted takes the region now
+ * defined with that ID (error if none); region_prematch does this first. */
+void region_relink(struct gravel *g, struct region *r);
 /* 1 if r or a sub-region moves or rotates. */
 int region_dynamic(const struct region *r);
 /* Update r's surface velocity from the change of d and theta since the
