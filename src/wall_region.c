@@ -76,6 +76,7 @@ static void check_vars(struct gravel *g, const struct region *r, const char *who
 size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
                         const struct wall_law *law, const char *who)
 {
+    region_relink(g, r);
     int comb = compound_kind(r);
     int nnode = comb ? r->nsub : 1;
     if (nnode > WALL_REGION_MAXNODE)
