@@ -480,7 +480,7 @@ static inline int region_surface(__global const REAL *nodes, const int nnode, co
     int n = 0;
     for (int k = 0; k < nnode && n < RG_MAXC; k++) {
         __global const REAL *nd = nodes + k * RG_NODE;
-        struct rg_contact s[6];
+        struct rg_contact s[RG_MAXC]; /* an open face point on the surface: 1 + 6 */
         const int ns = rg_surface(nd, k, x, cutoff, flip, s);
         for (int m = 0; m < ns && n < RG_MAXC; m++) {
             const REAL3 xs = x - s[m].del;
