@@ -6,12 +6,13 @@
  * Contraction of a*b+c into fma is switched off so that results match the
  * host compilers LAMMPS is built with and the pair terms stay exactly
  * antisymmetric. PERIODIC_X/Y/Z mark periodic dimensions: the minimum-image
- * correction is compiled only for those (MINIMG_X/Y/Z). */
+ * correction is compiled only for those (MINIMG_X/Y/Z). SPLIT_POS (single
+ * precision): positions are split into two arrays, see "Positions" below. */
 #ifndef REAL
 #define REAL double
 #define USE_DOUBLE 1
 #endif
-#if defined(USE_DOUBLE)
+#if defined(USE_DOUBLE) || defined(HAS_FP64)
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #endif
 #pragma OPENCL FP_CONTRACT OFF
@@ -25,6 +26,10 @@
 struct contact {
     REAL3 del;          /* x_i - x_j (minimum image) */
     REAL rsq;           /* |del|^2 */
+    REAL r;             /* |del| */
+    REAL delta;         /* overlap radsum - r (the laws read r and delta from here:
+                         * with SPLIT_POS contact_refine computes them from the
+                         * split positions) */
     REAL radi, radj;    /* radii (radj = 0 for a flat wall) */
     REAL radsum;        /* radi + radj */
     REAL reff;          /* radi radj / radsum (radi for a wall) */
@@ -64,6 +69,8 @@ static inline struct contact contact_make(const REAL3 del, const REAL radi, cons
     c.radi = radi;
     c.radj = radj;
     c.radsum = radi + radj;
+    c.r = sqrt(c.rsq);
+    c.delta = c.radsum - c.r;
     c.reff = reff;
     c.vr = vr;
     c.omi = omi;
@@ -99,3 +106,97 @@ static inline REAL min_image(REAL d, REAL L)
 #else
 #define MINIMG_Z(d, L) (d)
 #endif
+
+/* Positions. With SPLIT_POS (every single-precision run) a coordinate is the
+ * unevaluated sum hi + lo of two floats, hi in x and lo in xlo (the kernel's
+ * last argument, POS_LO_PARAM), relative to the run's origin (the box centre,
+ * src/engine.c): 48 significant bits, so a drift below half the float spacing
+ * still moves the particle and a contact's separation is resolved as in
+ * double. Drifts go through pos_add, contact separations and overlaps through
+ * contact_refine (below) from the hi and lo differences; binning and the
+ * rebuild test read hi alone (off by at most one float
+ * spacing of a box-relative coordinate). Without SPLIT_POS there is one array
+ * and these reduce to the plain arithmetic. */
+#ifdef SPLIT_POS
+#define POS_LO_PARAM , __global REAL *xlo
+#define POS_LOAD_LO(i) vload3(i, xlo)
+#define POS_STORE_LO(val, i) vstore3(val, i, xlo)
+/* hi + lo += d, renormalised (TwoSum, then Fast2Sum): exact to the last bit of lo */
+static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
+{
+    const REAL s = *hi + d, bb = s - *hi;
+    const REAL t = ((*hi - (s - bb)) + (d - bb)) + *lo;
+    *hi = s + t;
+    *lo = t - (*hi - s);
+}
+static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
+{
+    const REAL3 s = *hi + d, bb = s - *hi;
+    const REAL3 t = ((*hi - (s - bb)) + (d - bb)) + *lo;
+    *hi = s + t;
+    *lo = t - (*hi - s);
+}
+#else
+#define POS_LO_PARAM
+#define POS_LOAD_LO(i) ((REAL3)(0))
+#define POS_STORE_LO(val, i) ((void)0)
+static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
+{
+    (void)lo;
+    *hi += d;
+}
+static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
+{
+    (void)lo;
+    *hi = *hi + d;
+}
+#endif
+
+/* Periodic wrap of one coordinate (hi h, lo l) into [lo, hi) of period L,
+ * one period at most (LAMMPS Domain::pbc); the image flag follows. */
+static inline void pbc_wrap(REAL *h, REAL *l, int *im, const REAL lo, const REAL hi,
+                            const REAL L)
+{
+    if (*h + *l < lo) {
+        pos_add1(h, l, L);
+        (*im)--;
+    }
+    if (*h + *l >= hi) {
+        pos_add1(h, l, -L);
+        if (*h + *l < lo) { /* rounding: stay inside */
+            *h = lo;
+            *l = 0;
+        }
+        (*im)++;
+    }
+}
+
+/* The separation and overlap of contact c from the split parts: del_lo is
+ * the low part of x_i - x_j (SPLIT_POS). With double support they are
+ * evaluated in double ((radi + radj) - |del + del_lo|), so an overlap far
+ * below a float spacing of the radius keeps its digits; else in REAL.
+ * Returns 0 when the refined overlap is not positive (no contact). */
+static inline int contact_refine(struct contact *c, const REAL3 del_lo)
+{
+#ifdef SPLIT_POS
+#ifdef HAS_FP64
+    const double dx = (double)c->del.x + (double)del_lo.x;
+    const double dy = (double)c->del.y + (double)del_lo.y;
+    const double dz = (double)c->del.z + (double)del_lo.z;
+    const double r = sqrt(dx * dx + dy * dy + dz * dz);
+    c->r = (REAL)r;
+    c->delta = (REAL)(((double)c->radi + (double)c->radj) - r);
+#else
+    const REAL3 d = c->del + del_lo;
+    c->r = sqrt(dot(d, d));
+    c->delta = c->radsum - c->r;
+#endif
+    c->del = c->del + del_lo;
+    c->rsq = c->r * c->r;
+    return c->delta > (REAL)0;
+#else
+    (void)c;
+    (void)del_lo;
+    return 1;
+#endif
+}

@@ -8,7 +8,7 @@ __kernel void nve_sphere_initial(const int n, const uint groupbit, __global cons
                                  __global REAL *x, __global REAL *v, __global const REAL *f,
                                  __global REAL *omega, __global const REAL *torque,
                                  __global const REAL *radius, __global const REAL *rmass,
-                                 const REAL dtv, const REAL dtf)
+                                 const REAL dtv, const REAL dtf POS_LO_PARAM)
 {
     const int i = get_global_id(0);
     if (i >= n || !(mask[i] & groupbit))
@@ -17,7 +17,10 @@ __kernel void nve_sphere_initial(const int n, const uint groupbit, __global cons
     REAL3 vi = vload3(i, v);
     vi += dtfm * vload3(i, f);
     vstore3(vi, i, v);
-    vstore3(vload3(i, x) + dtv * vi, i, x);
+    REAL3 hi = vload3(i, x), lo = POS_LOAD_LO(i);
+    pos_add(&hi, &lo, dtv * vi);
+    vstore3(hi, i, x);
+    POS_STORE_LO(lo, i);
 #ifdef HAS_ROTATION
     const REAL dtirotate = (dtf / (REAL)0.4) / (radius[i] * radius[i] * rmass[i]);
     vstore3(vload3(i, omega) + dtirotate * vload3(i, torque), i, omega);

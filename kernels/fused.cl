@@ -20,7 +20,7 @@
 
 /* The state an op may read or change, held in registers by the kernel. */
 struct fused_atom {
-    REAL3 x, v, f, om, tq;
+    REAL3 x, xl, v, f, om, tq;  /* xl: low part of x (SPLIT_POS, kernels/common.cl) */
     REAL m, r;
     int type;
     uint mask;
@@ -47,7 +47,7 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
         } else if (kind == FOP_NVE_INITIAL || kind == FOP_NVE_SPHERE_INITIAL) {
             const REAL dtfm = p[1] / a->m;
             a->v += dtfm * a->f;
-            a->x = a->x + p[0] * a->v;
+            pos_add(&a->x, &a->xl, p[0] * a->v);
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_INITIAL) {
                 const REAL dtirotate = (p[1] / (REAL)0.4) / (a->r * a->r * a->m);

@@ -16,7 +16,7 @@ static inline struct gran_kin gran_kinematics(const struct contact *c)
 {
     struct gran_kin k;
     const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
-    k.r = sqrt(c->rsq);
+    k.r = c->r;
     k.rinv = (REAL)1 / k.r;
     k.rsqinv = (REAL)1 / c->rsq;
 
@@ -44,7 +44,7 @@ static inline REAL gran_normal(const struct contact *c, const struct gran_kin *k
                                REAL gamman, REAL poly, REAL limit)
 {
     const REAL damp = c->meff * gamman * k->vnnr * k->rsqinv;
-    REAL ccel = kn * (c->radsum - k->r) * k->rinv - damp;
+    REAL ccel = kn * c->delta * k->rinv - damp;
     ccel *= poly;
     if (limit != (REAL)0 && ccel < (REAL)0)
         ccel = 0;

@@ -8,6 +8,17 @@
  * segment is then sorted by tag, so the resulting order depends only on the
  * positions and tags, never on thread timing. */
 
+/* pbc_wrap of component c of (xi, xl, im): vector components have no address */
+#define PBC_WRAP_COMPONENT(c, lo, hi, L)                                                       \
+    {                                                                                          \
+        REAL h_ = xi.c, l_ = xl.c;                                                             \
+        int m_ = im.c;                                                                         \
+        pbc_wrap(&h_, &l_, &m_, lo, hi, L);                                                    \
+        xi.c = h_;                                                                             \
+        xl.c = l_;                                                                             \
+        im.c = m_;                                                                             \
+    }
+
 /* Every step: the fused initial_integrate ops (kernels/fused.cl; the drift),
  * then wrap periodic coordinates into [lo, hi)
  * (image flags follow), so positions never depend on when the list was
@@ -23,16 +34,17 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
                         __global const REAL *f, __global REAL *omega,
                         __global const REAL *torque, __global const REAL *rmass,
                         __global const REAL *radius, __global const int *type,
-                        __global const uint *mask)
+                        __global const uint *mask POS_LO_PARAM)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
-    REAL3 xi = vload3(i, x);
+    REAL3 xi = vload3(i, x), xl = POS_LOAD_LO(i);
     REAL3 vi = vload3(i, v);
     if (nops > 0) {
         struct fused_atom at;
         at.x = xi;
+        at.xl = xl;
         at.v = vi;
         at.f = vload3(i, f);
 #ifdef HAS_ROTATION
@@ -45,8 +57,10 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
         at.mask = mask[i];
         fused_apply(&at, ops, 0, nops, prm);
         xi = at.x;
+        xl = at.xl;
         vi = at.v;
         vstore3(xi, i, x);
+        POS_STORE_LO(xl, i);
         vstore3(vi, i, v);
 #ifdef HAS_ROTATION
         vstore3(at.om, i, omega);
@@ -56,19 +70,17 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
     int3 im = vload3(i, image);
     const int3 im0 = im;
 #ifdef PERIODIC_X
-    if (xi.x < lox) { xi.x += Lx; im.x--; }
-    if (xi.x >= hix) { xi.x = fmax(xi.x - Lx, lox); im.x++; }
+    PBC_WRAP_COMPONENT(x, lox, hix, Lx);
 #endif
 #ifdef PERIODIC_Y
-    if (xi.y < loy) { xi.y += Ly; im.y--; }
-    if (xi.y >= hiy) { xi.y = fmax(xi.y - Ly, loy); im.y++; }
+    PBC_WRAP_COMPONENT(y, loy, hiy, Ly);
 #endif
 #ifdef PERIODIC_Z
-    if (xi.z < loz) { xi.z += Lz; im.z--; }
-    if (xi.z >= hiz) { xi.z = fmax(xi.z - Lz, loz); im.z++; }
+    PBC_WRAP_COMPONENT(z, loz, hiz, Lz);
 #endif
     if (im.x != im0.x || im.y != im0.y || im.z != im0.z) {
         vstore3(xi, i, x);
+        POS_STORE_LO(xl, i);
         vstore3(im, i, image);
     }
 #endif
@@ -90,7 +102,7 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
 __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
                               __global int *image, const int px, const int py, const int pz,
                               const REAL lox, const REAL loy, const REAL loz, const REAL hix,
-                              const REAL hiy, const REAL hiz, __global REAL *ext)
+                              const REAL hiy, const REAL hiz, __global REAL *ext POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;
@@ -106,17 +118,18 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
         for (int d = 0; d < 3; d++) {
             REAL xd = x[3 * i + d];
             if (per[d]) {
-                const REAL L = hi[d] - lo[d];
-                if (xd < lo[d]) {
-                    xd += L;
-                    image[3 * i + d] -= 1;
-                }
-                if (xd >= hi[d]) {
-                    xd -= L;
-                    xd = fmax(xd, lo[d]);
-                    image[3 * i + d] += 1;
-                }
+#ifdef SPLIT_POS
+                REAL xld = xlo[3 * i + d];
+#else
+                REAL xld = 0;
+#endif
+                int im = image[3 * i + d];
+                pbc_wrap(&xd, &xld, &im, lo[d], hi[d], hi[d] - lo[d]);
+                image[3 * i + d] = im;
                 x[3 * i + d] = xd;
+#ifdef SPLIT_POS
+                xlo[3 * i + d] = xld;
+#endif
             }
             mn[d] = fmin(mn[d], xd);
             mx[d] = fmax(mx[d], xd);

@@ -22,7 +22,7 @@ static inline void cohesion_eval(const struct contact *c, __global const REAL *p
     const REAL de = ei + ej;
     if (c->rsq >= de * de)
         return;
-    const REAL r = sqrt(c->rsq);
+    const REAL r = c->r;
     const REAL delta_e = de - r;
     out->f = (-param[COH_KC] * delta_e / r) * c->del;
 }

@@ -19,7 +19,7 @@ static inline void gran_hertz_history_eval(const struct contact *c, __global con
     const REAL kn = param[GRAN_KN], kt = param[GRAN_KT], gamman = param[GRAN_GAMMAN];
     const REAL gammat = param[GRAN_GAMMAT], xmu = param[GRAN_XMU], limit = param[GRAN_LIMIT];
     const struct gran_kin k = gran_kinematics(c);
-    const REAL polyhertz = sqrt((c->radsum - k.r) * c->reff);
+    const REAL polyhertz = sqrt(c->delta * c->reff);
     const REAL ccel = gran_normal(c, &k, kn, gamman, polyhertz, limit);
     const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, polyhertz, shear);
     gran_apply(c, &k, ccel, ft, out);

@@ -24,9 +24,9 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
 {
     const REAL kn = param[HM_KN], kt = param[HM_KT], cd = param[HM_CDAMP], mu = param[HM_MU];
     const REAL mur = param[HM_MUR];
-    const REAL r = sqrt(c->rsq);
+    const REAL r = c->r;
     const REAL3 n = c->del * ((REAL)1 / r);
-    const REAL delta = c->radsum - r;
+    const REAL delta = c->delta;
     const REAL a = sqrt(c->reff * delta);
     const REAL meff = c->meff;
 

@@ -24,10 +24,10 @@ static inline void linear_restitution_eval(const struct contact *c,
     (void)shear;
     const REAL ke = param[LR_KE], kf = param[LR_KF], mu = param[LR_MU];
     const REAL ceta = param[LR_CETA], ctcol = param[LR_CTCOL], torque = param[LR_TORQUE];
-    const REAL r = sqrt(c->rsq);
+    const REAL r = c->r;
     const REAL rinv = (REAL)1 / r;
     const REAL3 n = c->del * rinv;
-    const REAL delta = c->radsum - r;
+    const REAL delta = c->delta;
     const REAL sm = sqrt(c->meff);
     const REAL eta = ceta * sm;
     const REAL tcol = ctcol * sm;

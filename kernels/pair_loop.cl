@@ -49,7 +49,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
                             const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
-                            __global REAL *rect)
+                            __global REAL *rect POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
@@ -59,23 +59,38 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     del.x = MINIMG_X(del.x, Lx);
     del.y = MINIMG_Y(del.y, Ly);
     del.z = MINIMG_Z(del.z, Lz);
+#ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/common.cl) */
+    const REAL3 del_lo = vload3(i, xlo) - vload3(j, xlo);
+    const REAL3 dtest = del + del_lo;
+#else
+    const REAL3 del_lo = (REAL3)(0);
+    const REAL3 dtest = del;
+#endif
     const REAL radi = radius[i], radj = radius[j];
     struct contact_force out;
     out.f = out.tc = out.tr = (REAL3)(0);
-#ifndef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
-                        * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
+    struct contact k;
+    int touch = 0;
+#ifdef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
+                      * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
+    k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
+    contact_refine(&k, del_lo);
+    touch = 1;
+#else
     const REAL radsum = radi + radj;
-    if (del.x * del.x + del.y * del.y + del.z * del.z >= radsum * radsum) {
+    if (dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z < radsum * radsum) {
+        k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
+        touch = contact_refine(&k, del_lo);
+    }
+#endif
+    if (!touch) {
 #ifdef HAS_HISTORY
         /* a separated pair forgets its history; most are zero already */
         const REAL3 old = vload3(c, shear);
         if (old.x != (REAL)0 || old.y != (REAL)0 || old.z != (REAL)0)
             vstore3((REAL3)(0), c, shear);
 #endif
-    } else
-#endif
-    {
-        struct contact k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
+    } else {
         k.dt = dt;
         k.shearupdate = shearupdate;
         __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;

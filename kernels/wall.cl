@@ -16,7 +16,8 @@
  *   plane pair   elements lo face (0) and hi face (1) normal to `axis`; as in
  *                LAMMPS fix wall/gran only the nearer face acts:
  *                del = (x_a - lo) e_a, or -(hi - x_a) e_a
- *   zcylinder    element 0, axis z through x = y = 0, radius R:
+ *   zcylinder    element 0, axis z through x = y = 0 (lo, hi: the axis
+ *                relative to the device origin), radius R:
  *                del = -(R - |x_xy|) x_xy / |x_xy|, rwall = -2R inside,
  *                +2R outside; with azimuthal shear the surface moves at
  *                vshear (y, -x) / |x_xy|
@@ -39,13 +40,13 @@ struct wall_geom {
 
 /* Closest point of element e to a sphere at x (radius radi): 1 when e may
  * touch it, with del, rwall and the surface velocity vwall filled. */
-static inline int wall_point(const struct wall_geom *w, const int e, const REAL3 x,
+static inline int wall_point(const struct wall_geom *w, const int e, const REAL3 xp,
                              const REAL radi, REAL3 *del, REAL *rwall, REAL3 *vwall)
 {
     *vwall = w->v;
     *rwall = 0;
     if (w->kind == WALL_PLANE) {
-        const REAL xa = w->axis == 0 ? x.x : w->axis == 1 ? x.y : x.z;
+        const REAL xa = w->axis == 0 ? xp.x : w->axis == 1 ? xp.y : xp.z;
         const REAL del1 = xa - w->lo, del2 = w->hi - xa;
         const int nearer = del1 < del2 ? 0 : 1;
         if (e != nearer)
@@ -54,7 +55,8 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         *del = (REAL3)(w->axis == 0 ? d : 0, w->axis == 1 ? d : 0, w->axis == 2 ? d : 0);
         return 1;
     }
-    /* WALL_ZCYLINDER */
+    /* WALL_ZCYLINDER: the axis at (lo, hi) (0, 0 but for the device origin) */
+    const REAL3 x = (REAL3)(xp.x - w->lo, xp.y - w->hi, xp.z);
     const REAL delxy = sqrt(x.x * x.x + x.y * x.y);
     const REAL delr = w->radius - delxy;
     if (delr > radi)
@@ -67,6 +69,16 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         vwall->z = 0;
     }
     return 1;
+}
+
+/* The low part of the gap del of the sphere's hi part (SPLIT_POS): the normal
+ * component of the position's low part xl, so a flat or curved wall sees the
+ * particle's 48-bit position (contact_refine); tangential parts do not
+ * change the gap. */
+static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
+{
+    const REAL dd = dot(del, del);
+    return dd > (REAL)0 ? (dot(xl, del) / dd) * del : (REAL3)(0);
 }
 
 /* One work-item per atom of the group: every element of the wall is a
@@ -85,7 +97,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         const int nelem, const int kind, const int axis, const REAL lo, const REAL hi,         \
         const REAL wradius, const REAL vwx, const REAL vwy, const REAL vwz,                    \
         const int cyl_shear, const REAL vshear, const REAL dt, const int shearupdate,          \
-        const int inclusive)                                                                   \
+        const int inclusive POS_LO_PARAM)                                                      \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
@@ -99,7 +111,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         w.v = (REAL3)(vwx, vwy, vwz);                                                          \
         w.cyl_shear = cyl_shear;                                                               \
         w.vshear = vshear;                                                                     \
-        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL3 xi = vload3(i, x), xil = POS_LOAD_LO(i);                                   \
         const REAL radi = radius[i];                                                           \
         const int ti = type[i] - 1;                                                            \
         __global const REAL *p =                                                               \
@@ -110,16 +122,23 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
             REAL3 del, vwall;                                                                  \
             REAL rwall;                                                                        \
             const int acts = wall_point(&w, e, xi, radi, &del, &rwall, &vwall);                \
-            const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                    \
-            if (!acts || (inclusive ? rsq > radi * radi : rsq >= radi * radi)) {               \
+            WALL_GAP_LO(del_lo, del, xil);                                                     \
+            const REAL3 dtest = del + del_lo;                                                  \
+            const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
+            struct contact c;                                                                  \
+            int touch = acts && (inclusive ? rsq <= radi * radi : rsq < radi * radi);          \
+            if (touch) {                                                                       \
+                WALL_OMEGA(omi, omega, i);                                                     \
+                c = contact_make(del, radi, 0,                                                 \
+                                 rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
+                                 vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
+                touch = contact_refine(&c, del_lo);                                            \
+            }                                                                                  \
+            if (!touch) {                                                                      \
                 if (has_history)                                                               \
                     vstore3((REAL3)(0), slot, history);                                        \
                 continue;                                                                      \
             }                                                                                  \
-            WALL_OMEGA(omi, omega, i);                                                         \
-            struct contact c = contact_make(                                                   \
-                del, radi, 0, rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),         \
-                vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);                              \
             c.dt = dt;                                                                         \
             c.shearupdate = shearupdate;                                                       \
             REAL3 sh = has_history ? vload3(slot, history) : (REAL3)(0);                       \
@@ -134,6 +153,11 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
 
+#ifdef SPLIT_POS
+#define WALL_GAP_LO(name, del, xl) const REAL3 name = wall_gap_lo(del, xl)
+#else
+#define WALL_GAP_LO(name, del, xl) const REAL3 name = (REAL3)(0)
+#endif
 #ifdef HAS_ROTATION
 #define WALL_OMEGA(name, omega, i) const REAL3 name = vload3(i, omega)
 #define WALL_ADD_TORQUE(torque, i, t) vstore3(vload3(i, torque) + (t), i, torque)
@@ -269,7 +293,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         __global const int *triv, __global const int *cstart, __global const int *ctri,        \
         __global const REAL *pose, const int gnx, const int gny, const int gnz,                \
         const int moving, __global REAL *fmesh, const int want_fmesh, const REAL dt,           \
-        const int shearupdate, const int inclusive)                                            \
+        const int shearupdate, const int inclusive POS_LO_PARAM)                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
@@ -281,7 +305,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             }                                                                                  \
             return;                                                                            \
         }                                                                                      \
-        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         const REAL radi = radius[i];                                                           \
         const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(3, pose)) : xi;                   \
         int tc[MESH_MAXC], rc[MESH_MAXC], nc = 0;                                              \

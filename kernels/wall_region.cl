@@ -12,7 +12,8 @@
  * -theta about P), the contacts found there, and each contact point taken
  * back (rotate by theta, add d), as Region::surface does. A contact is its
  * distance r, curvature radius (0 flat, < 0 concave), del = x - contact
- * point, and a wall id (iwall) that keys its history. */
+ * point, and a wall id (iwall) that keys its history. Coordinates are the
+ * device's (relative to the run's origin: the host shifts the nodes). */
 
 #define RG_MAXNODE 4
 #define RG_NODE 40
@@ -542,12 +543,12 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         __global REAL *torque, __global REAL *history, const int has_history,                  \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
-        const int slots, const int dynamic, const REAL dt, const int shearupdate)              \
+        const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM)  \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
             return;                                                                            \
-        const REAL3 xi = vload3(i, x);                                                         \
+        const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
             return;                                                                            \
         const REAL radi = radius[i];                                                           \
@@ -619,7 +620,9 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
             struct contact ct = contact_make(                                                  \
                 del, radi, 0, rw == (REAL)0 ? radi : radi * rw / (rw + radi),                  \
                 vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);                              \
-            ct.rsq = c[ic].r * c[ic].r;                                                        \
+            ct.rsq = c[ic].r * c[ic].r; /* LAMMPS: rsq = r^2, then r = sqrt(rsq) */            \
+            ct.r = sqrt(ct.rsq);                                                               \
+            ct.delta = ct.radsum - ct.r;                                                       \
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
             __global REAL *hs = has_history ? hist + 1 + slots + 3 * c2r[ic] : hist;           \

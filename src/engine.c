@@ -7,6 +7,7 @@
  * active style needs rotation. */
 #include "engine.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -175,17 +176,23 @@ void eng_finish(struct gravel *g) { OCL_CHECK(g, clFinish(g->eng->ocl.queue)); }
 
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src)
 {
+    eng_write_reals_at(g, m, 0, count, src);
+}
+
+void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
+                        const double *src)
+{
     if (!count)
         return;
     if (!g->eng->single) {
-        eng_write(g, m, 0, count * sizeof(double), src);
+        eng_write(g, m, first * sizeof(double), count * sizeof(double), src);
         return;
     }
     float *tmp = gr_malloc(g, count * sizeof(float));
     for (size_t i = 0; i < count; i++)
         tmp[i] = (float)src[i];
-    cl_int err = clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, 0, count * sizeof(float),
-                                      tmp, 0, NULL, NULL);
+    cl_int err = clEnqueueWriteBuffer(g->eng->ocl.queue, m, CL_TRUE, first * sizeof(float),
+                                      count * sizeof(float), tmp, 0, NULL, NULL);
     free(tmp);
     ocl_check(g, err, "clEnqueueWriteBuffer");
 }
@@ -208,9 +215,83 @@ void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst)
     ocl_check(g, err, "clEnqueueReadBuffer");
 }
 
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src)
+{
+    struct engine *e = g->eng;
+    size_t count = 3 * (size_t)n;
+    if (!count)
+        return;
+    if (!e->single) {
+        eng_write(g, s->x, 0, count * sizeof(double), src);
+        return;
+    }
+    float *hi = gr_malloc(g, 2 * count * sizeof(float)), *lo = hi + count;
+    for (size_t i = 0; i < count; i++) {
+        double rel = src[i] - e->origin[i % 3];
+        hi[i] = (float)rel;
+        lo[i] = (float)(rel - (double)hi[i]);
+    }
+    eng_write(g, s->x, 0, count * sizeof(float), hi);
+    eng_write(g, s->xlo, 0, count * sizeof(float), lo);
+    free(hi);
+}
+
+void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst)
+{
+    struct engine *e = g->eng;
+    size_t count = 3 * (size_t)n;
+    if (!count)
+        return;
+    if (!e->single) {
+        eng_read(g, s->x, 0, count * sizeof(double), dst);
+        return;
+    }
+    float *hi = gr_malloc(g, 2 * count * sizeof(float)), *lo = hi + count;
+    cl_int err = clEnqueueReadBuffer(e->ocl.queue, s->x, CL_TRUE, 0, count * sizeof(float), hi,
+                                     0, NULL, NULL);
+    if (err == CL_SUCCESS)
+        err = clEnqueueReadBuffer(e->ocl.queue, s->xlo, CL_TRUE, 0, count * sizeof(float), lo,
+                                  0, NULL, NULL);
+    if (err == CL_SUCCESS)
+        for (size_t i = 0; i < count; i++)
+            dst[i] = e->origin[i % 3] + ((double)hi[i] + (double)lo[i]);
+    free(hi);
+    ocl_check(g, err, "clEnqueueReadBuffer");
+}
+
+void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v)
+{
+    eng_arg_real(g, k, i, v - g->eng->origin[q]);
+}
+
+void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i)
+{
+    if (g->eng->single)
+        eng_arg_mem(g, k, i, g->eng->a.xlo);
+}
+
+/* The device origin for single precision: per dimension 0 while the box is
+ * within its own size of 0 (most decks: no shift, lab coordinates), else
+ * the box centre, so positions far from 0 keep the bits that resolve
+ * contacts. A change moves every device position: the list is invalid. */
+static void choose_origin(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    double o[3] = {0, 0, 0};
+    for (int q = 0; q < 3 && e->single; q++) {
+        double c = 0.5 * (g->dom.lo[q] + g->dom.hi[q]), L = g->dom.hi[q] - g->dom.lo[q];
+        if (isfinite(c) && fabs(c) > L)
+            o[q] = c;
+    }
+    if (o[0] != e->origin[0] || o[1] != e->origin[1] || o[2] != e->origin[2]) {
+        memcpy(e->origin, o, sizeof o);
+        e->tag_sum = 0;
+    }
+}
+
 static void release_set(struct dev_atoms *s)
 {
-    cl_mem *m[] = {&s->x, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
+    cl_mem *m[] = {&s->x, &s->xlo, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
                    &s->rmass, &s->type, &s->mask, &s->tag, &s->image};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         if (*m[i]) {
@@ -224,6 +305,8 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
     struct engine *e = g->eng;
     size_t r = e->rsz, n = (size_t)cap;
     s->x = eng_alloc(g, 3 * n * r, "positions");
+    if (e->single)
+        s->xlo = eng_alloc(g, 3 * n * r, "positions (low parts)");
     s->v = eng_alloc(g, 3 * n * r, "velocities");
     s->f = eng_alloc(g, 3 * n * r, "forces");
     if (e->rotation) {
@@ -269,13 +352,14 @@ void eng_upload(struct gravel *g)
     struct engine *e = g->eng;
     struct atoms *at = &g->atoms;
     int n = at->n;
+    choose_origin(g);
     int keep = e->tag_sum && e->n_at_sync == n && tag_checksum(at) == e->tag_sum;
     eng_reserve(g, n);
     if (!keep || !e->tag_sum)
         nbr_invalidate(g);
     struct dev_atoms *s = &e->a;
     s->n = n;
-    eng_write_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_write_positions(g, s, n, at->x);
     eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
     if (e->rotation) {
@@ -311,6 +395,46 @@ void eng_upload(struct gravel *g)
     e->active = 1;
 }
 
+void eng_append(struct gravel *g, int nold)
+{
+    struct engine *e = g->eng;
+    struct atoms *at = &g->atoms;
+    struct dev_atoms *s = &e->a;
+    int n = at->n, k = n - nold;
+    if (!e->active || nold != s->n || k < 0)
+        gr_error(g, "internal error: eng_append needs the host atoms of run_sync_host");
+    if (k == 0)
+        return;
+    if (n > e->cap)
+        gr_error(g, "internal error: %d atoms inserted beyond the run's capacity %d", n, e->cap);
+    size_t o = (size_t)nold, c = (size_t)k;
+    eng_write_reals_at(g, s->x, 3 * o, 3 * c, at->x + 3 * o);
+    eng_write_reals_at(g, s->v, 3 * o, 3 * c, at->v + 3 * o);
+    eng_write_reals_at(g, s->f, 3 * o, 3 * c, at->f + 3 * o);
+    if (e->rotation) {
+        eng_write_reals_at(g, s->omega, 3 * o, 3 * c, at->omega + 3 * o);
+        eng_write_reals_at(g, s->torque, 3 * o, 3 * c, at->torque + 3 * o);
+    }
+    eng_write_reals_at(g, s->radius, o, c, at->radius + o);
+    eng_write_reals_at(g, s->rmass, o, c, at->rmass + o);
+    eng_write(g, s->type, o * sizeof(cl_int), c * sizeof(cl_int), at->type + o);
+    eng_write(g, s->mask, o * sizeof(cl_uint), c * sizeof(cl_uint), at->mask + o);
+    eng_write(g, s->tag, o * sizeof(cl_long), c * sizeof(cl_long), at->tag + o);
+    eng_write(g, s->image, 3 * o * sizeof(cl_int), 3 * c * sizeof(cl_int), at->image + 3 * o);
+    cl_uint zero = 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->peratom)
+            OCL_CHECK(g, clEnqueueFillBuffer(e->ocl.queue, f->peratom, &zero, sizeof zero,
+                                             o * f->peratom_bytes, c * f->peratom_bytes, 0,
+                                             NULL, NULL));
+    }
+    nbr_atoms_appended(g, nold, n);
+    s->n = n;
+    e->tag_sum = tag_checksum(at);
+    e->n_at_sync = n;
+}
+
 void run_sync_host(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -322,7 +446,7 @@ void run_sync_host(struct gravel *g)
     if (n > at->cap)
         atoms_reserve(g, n);
     at->n = n;
-    eng_read_reals(g, s->x, 3 * (size_t)n, at->x);
+    eng_read_positions(g, s, n, at->x);
     eng_read_reals(g, s->v, 3 * (size_t)n, at->v);
     eng_read_reals(g, s->f, 3 * (size_t)n, at->f);
     if (e->rotation) {
@@ -408,7 +532,9 @@ void eng_prepare(struct gravel *g)
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
-                       single ? "" : " -D USE_DOUBLE", e->rotation ? " -D HAS_ROTATION" : "",
+                       !single ? " -D USE_DOUBLE"
+                       : e->ocl.fp64 ? " -D SPLIT_POS -D HAS_FP64" /* contact_refine in double */
+                                     : " -D SPLIT_POS", e->rotation ? " -D HAS_ROTATION" : "",
                        e->history ? " -D HAS_HISTORY" : "");
     for (int q = 0; q < 3; q++)
         if (g->dom.periodic[q])
@@ -444,6 +570,7 @@ void engine_destroy(struct gravel *g)
     fused_free(&e->fused);
     for (int k = 0; k < NHOOK; k++)
         free(e->hooks.call[k]);
+    free(e->hooks.force);
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     eng_release_kernels(e);

@@ -17,7 +17,8 @@
 /* Device per-atom arrays in device order (REAL = float or double). */
 struct dev_atoms {
     int n;                      /* atoms on the device */
-    cl_mem x, v, f;             /* REAL[3n] interleaved */
+    cl_mem x, v, f;             /* REAL[3n] interleaved; x relative to eng->origin */
+    cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
     cl_mem omega, torque;       /* REAL[3n], only with rotation (else NULL) */
     cl_mem radius, rmass;       /* REAL[n] */
     cl_mem type;                /* int[n] */
@@ -30,7 +31,7 @@ struct nbr;                     /* neighbor.c */
 struct fix;
 
 /* The fix calls of each hook for the current run (run.c). */
-enum { NHOOK = 4 };
+enum { NHOOK = 5 };
 struct hook_call {
     struct fix *fix;
     void (*fn)(struct gravel *, struct fix *);
@@ -38,12 +39,15 @@ struct hook_call {
 struct hook_lists {
     int n[NHOOK];
     struct hook_call *call[NHOOK];
+    int nforce;                 /* fixes with force_reneighbor (fix pour) */
+    struct fix **force;
 };
 
 struct engine {
     struct ocl ocl;
     int ready;                  /* device chosen */
-    int single;                 /* REAL = float */
+    int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
+    double origin[3];           /* device positions are x - origin (0 in double) */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
     int cap;                    /* per-atom buffer capacity */
@@ -61,6 +65,7 @@ struct engine {
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
+    double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
@@ -96,7 +101,18 @@ void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes);
 void eng_finish(struct gravel *g);
 /* Host doubles <-> device REALs through a scratch buffer. */
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
+/* The same from REAL element `first` on. */
+void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
+                        const double *src);
 void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
+/* Positions: host doubles <-> the device's x (and xlo), relative to origin. */
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int n, const double *src);
+void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst);
+/* A lab-frame coordinate of dimension q as a device REAL argument (x - origin). */
+void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
+/* Bind the low position part as argument i when positions are split
+ * (kernels with POS_LO_PARAM, their last argument); no-op otherwise. */
+void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i);
 
 /* Run internals (engine.c): build the program for the active styles; upload
  * the host atoms; grow capacity; release the program's kernels. */
@@ -105,6 +121,12 @@ void eng_upload(struct gravel *g);
 void eng_release_kernels(struct engine *e);
 /* Make sure the per-atom set holds at least n atoms (contents not kept). */
 void eng_reserve(struct gravel *g, int n);
+/* During a run: the host atoms nold .. g->atoms.n - 1 (just added behind
+ * the atoms of the last run_sync_host) go to the device behind the others;
+ * existing atoms, their contacts and history are untouched, the new ones'
+ * fix per-atom state is zero. The caller forces a neighbor rebuild on this
+ * step. The capacity must hold them (fix reserve at run start). */
+void eng_append(struct gravel *g, int nold);
 
 
 #endif

@@ -20,6 +20,19 @@
  *              During the setup force computation (step 0 of a run) only
  *              post_force runs, with eng_in_setup(g) true (LAMMPS' setup():
  *              no shear-history update).
+ *   pre_exchange  (HOOK_PRE_EXCHANGE) called on every step whose neighbor
+ *              list is rebuilt, after initial_integrate and before the
+ *              rebuild (LAMMPS' pre_exchange), with the atoms on the device.
+ *              A fix that sets f->force_reneighbor forces a rebuild on the
+ *              step f->next_reneighbor (LAMMPS' next_reneighbor; 0 = none);
+ *              the run loop compares it with the step, nothing else.
+ *              Atom insertion (fix pour) happens here: run_sync_host(),
+ *              atoms_add() on the host, then eng_append() (engine.h) puts
+ *              the new atoms on the device behind the others, keeping the
+ *              contact history of the existing contacts.
+ *   reserve()  optional, at every `run` before the upload: the most atoms
+ *              the fix may add within the run's nsteps steps and their
+ *              largest radius (device capacity, neighbor cut-off).
  *   destroy()  at unfix/clear: free f->data (not device objects: kernels
  *              belong to the engine and die with the program).
  *
@@ -44,6 +57,7 @@ enum fix_hook {
     HOOK_POST_FORCE = 1 << 1,
     HOOK_FINAL_INTEGRATE = 1 << 2,
     HOOK_END_OF_STEP = 1 << 3,
+    HOOK_PRE_EXCHANGE = 1 << 4,
 };
 
 /* Per-atom fields / device features a style needs. */
@@ -64,6 +78,10 @@ struct fix_style {
     void (*post_force)(struct gravel *g, struct fix *f);
     void (*final_integrate)(struct gravel *g, struct fix *f);
     void (*end_of_step)(struct gravel *g, struct fix *f);
+    void (*pre_exchange)(struct gravel *g, struct fix *f);
+    /* atoms this fix may insert in the next nsteps steps (0: none); sets
+     * *rmax to their largest radius (see header comment) */
+    int (*reserve)(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);
     void (*destroy)(struct fix *f);                                /* optional */
     /* Restart files (restart.c), optional: global state of the instance as
      * bytes. write_restart stores at most cap bytes at buf and returns the
@@ -101,6 +119,9 @@ struct fix {
     size_t peratom_cap;         /* atoms the buffers hold */
     uint64_t arghash;           /* hash of group, style and arguments (restart.c compares) */
     unsigned fused_hooks;       /* hooks run inside fused kernels this run (src/fused.c) */
+    int time_depend;            /* 1: its schedule is in steps; reset_timestep refuses (LAMMPS) */
+    int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
+    bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
 };
 
 /* The fix with this ID, or NULL. */

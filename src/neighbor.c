@@ -303,7 +303,7 @@ void nbr_setup(struct gravel *g)
     if (b->nexg)
         eng_write(g, b->excl_group, 0, (size_t)b->nexg * 2 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
-    double rmax = 0;
+    double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
     for (int i = 0; i < g->atoms.n; i++)
         if (g->atoms.radius[i] > rmax)
             rmax = g->atoms.radius[i];
@@ -371,7 +371,7 @@ static void nonfinite_error(struct gravel *g, int i)
              (long long)g->step, cause);
 }
 
-int nbr_decide(struct gravel *g)
+int nbr_decide(struct gravel *g, int forced)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
@@ -387,9 +387,9 @@ int nbr_decide(struct gravel *g)
     eng_arg_mem(g, k, 5, b->flags);
     eng_arg_mem(g, k, 6, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 7 + q, g->dom.lo[q]);
+        eng_arg_coord(g, k, 7 + q, q, g->dom.lo[q]);
     for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 10 + q, g->dom.hi[q]);
+        eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, 13 + q, g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
     /* the fused initial_integrate ops (src/fused.h) run first */
@@ -404,11 +404,14 @@ int nbr_decide(struct gravel *g)
     eng_arg_mem(g, k, a++, e->a.radius);
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_pos_lo(g, k, a);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);
     if (fl[1] != 0x7fffffff)
         nonfinite_error(g, fl[1]);
+    if (forced)
+        return 1;
     b->ago++;
     int every = g->neigh.every > 0 ? g->neigh.every : 1;
     if (b->ago >= g->neigh.delay && b->ago % every == 0) {
@@ -424,6 +427,24 @@ int nbr_decide(struct gravel *g)
         }
     }
     return 0;
+}
+
+void nbr_atoms_appended(struct gravel *g, int nold, int nnew)
+{
+    struct nbr *b = get(g);
+    struct nbr_list *l = &b->list;
+    /* the previous contacts' offsets (coff becomes coff_old at the rebuild)
+     * end at nold: the new atoms' ranges are empty */
+    if (!g->eng->history || !b->old_valid || nnew <= nold || !l->coff)
+        return;
+    if ((size_t)nnew + 1 > b->cap_atoms + 1)
+        gr_error(g, "internal error: %d atoms beyond the neighbor capacity %zu", nnew,
+                 b->cap_atoms);
+    cl_int end = 0;
+    eng_read(g, l->coff, (size_t)nold * sizeof(cl_int), sizeof end, &end);
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, l->coff, &end, sizeof end,
+                                     (size_t)(nold + 1) * sizeof(cl_int),
+                                     (size_t)(nnew - nold) * sizeof(cl_int), 0, NULL, NULL));
 }
 
 static void wrap_and_extent(struct gravel *g, struct nbr *b)
@@ -443,10 +464,11 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     for (int q = 0; q < 3; q++)
         eng_arg_int(g, k, 4 + q, d->periodic[q]);
     for (int q = 0; q < 3; q++) {
-        eng_arg_real(g, k, 7 + q, d->lo[q]);
-        eng_arg_real(g, k, 10 + q, d->hi[q]);
+        eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
+        eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
     }
     eng_arg_mem(g, k, 13, b->ext);
+    eng_arg_pos_lo(g, k, 14);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -461,8 +483,8 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int c = 0; c < nch; c++)
         for (int q = 0; q < 3; q++) {
-            lo[q] = fmin(lo[q], ext[6 * c + q]);
-            hi[q] = fmax(hi[q], ext[6 * c + 3 + q]);
+            lo[q] = fmin(lo[q], e->origin[q] + ext[6 * c + q]);
+            hi[q] = fmax(hi[q], e->origin[q] + ext[6 * c + 3 + q]);
         }
     free(ext);
     domain_shrink_wrap(g, lo, hi);
@@ -526,7 +548,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         for (int q = 0; q < 3; q++)
             eng_arg_int(g, k, a++, g->dom.periodic[q]);
         for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, a++, b->lo[q]);
+            eng_arg_coord(g, k, a++, q, b->lo[q]);
         for (int q = 0; q < 3; q++)
             eng_arg_real(g, k, a++, b->inv[q]);
         for (int q = 0; q < 3; q++)
@@ -653,6 +675,8 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
     reorder_array(g, b, s->x, 3 * r, nkeep);
+    if (s->xlo)
+        reorder_array(g, b, s->xlo, 3 * r, nkeep);
     reorder_array(g, b, s->v, 3 * r, nkeep);
     if (e->rotation)
         reorder_array(g, b, s->omega, 3 * r, nkeep);
@@ -696,8 +720,8 @@ void nbr_rebuild(struct gravel *g)
     for (int q = 0; q < 3; q++)
         eng_arg_int(g, k, 2 + q, b->nc[q]);
     for (int q = 0; q < 3; q++) {
-        eng_arg_real(g, k, 5 + q, b->lo[q]);
-        eng_arg_real(g, k, 8 + q, b->hi[q]);
+        eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
+        eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
         eng_arg_real(g, k, 11 + q, b->inv[q]);
     }
     eng_arg_mem(g, k, 14, b->cellof);
@@ -833,6 +857,9 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     eng_read(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
     eng_read(g, l->nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
     eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    if (e->single) /* the device's are relative to the origin */
+        for (size_t i = 0; i < 3 * (size_t)n; i++)
+            s->xhold[i] += e->origin[i % 3];
     if (e->history) {
         /* per row slot: the owner's history, its negative on the partner's side */
         s->shear = gr_calloc(g, 3 * (size_t)n * maxn + 1, sizeof(double));
@@ -961,7 +988,11 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         eng_write(g, l->cj, 0, total * sizeof(cl_int), cj);
         if (sh)
             eng_write_reals(g, l->shear, 3 * total, sh);
-        eng_write_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+        double *xh = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+        for (size_t i = 0; i < 3 * (size_t)n; i++) /* device: relative to the origin */
+            xh[i] = s->xhold[i] - e->origin[i % 3];
+        eng_write_reals(g, b->xhold, 3 * (size_t)n, xh);
+        free(xh);
     }
     free(row);
     free(ioff);

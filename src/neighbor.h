@@ -33,8 +33,14 @@ void nbr_invalidate(struct gravel *g);
 void nbr_free(struct gravel *g);
 /* Per step: LAMMPS Neighbor::decide() (every/delay/check/once, distance
  * check by device reduction) and a non-finite check that stops the run with
- * the step, tag and probable cause. Returns 1 when a rebuild is due. */
-int nbr_decide(struct gravel *g);
+ * the step, tag and probable cause. Returns 1 when a rebuild is due. With
+ * forced (a fix's next_reneighbor is this step) it returns 1 before the
+ * every/delay count advances, as LAMMPS (no dangerous-build count). */
+int nbr_decide(struct gravel *g, int forced);
+/* Atoms nold .. nnew - 1 were appended to the device arrays (eng_append):
+ * they own no previous contacts, so the next rebuild's history transfer
+ * finds none for them. */
+void nbr_atoms_appended(struct gravel *g, int nold, int nnew);
 /* Wrap periodic atoms, shrink-wrap, drop lost atoms (per thermo_modify
  * lost), re-sort all per-atom arrays by cell (atom_modify sort) and build
  * the list and its contacts. */

@@ -324,7 +324,10 @@ static int device_matches_host(struct gravel *g)
     for (int k = 0; k < 5 && same; k++) {
         if (!dev[k])
             continue; /* no rotation: omega/torque not on the device */
-        eng_read_reals(g, dev[k], 3 * (size_t)n, buf);
+        if (k == 0)
+            eng_read_positions(g, &e->a, n, buf);
+        else
+            eng_read_reals(g, dev[k], 3 * (size_t)n, buf);
         same = !memcmp(buf, host[k], 3 * (size_t)n * sizeof(double));
     }
     free(buf);

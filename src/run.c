@@ -1,9 +1,10 @@
 /* run.c - `run` and `reset_timestep`: the Verlet loop on the device.
  *
  * Order per step (LAMMPS Verlet::run): initial_integrate fixes -> neighbor
- * decision (rebuild with pbc, shrink-wrap, re-sort) -> pair forces (the
- * contact pipeline: pair_contacts, then pair_gather, which also clears f and
- * torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
+ * decision (a fix's next_reneighbor forces it) -> on rebuild steps the
+ * pre_exchange fixes (fix pour inserts atoms), then the rebuild (pbc,
+ * shrink-wrap, re-sort) -> pair forces (the contact pipeline: pair_contacts,
+ * then pair_gather, which also clears f and torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
  * -> output. Per-particle fix work fuses into the check and gather kernels
  * where it can (src/fused.h); the other fixes run from hook lists built once
  * per run. Setup (Verlet::setup) rebuilds the list and computes the step-0
@@ -71,14 +72,14 @@ static void pair_init(struct gravel *g)
 static int hook_index(unsigned hook)
 {
     return hook == HOOK_INITIAL_INTEGRATE ? 0 : hook == HOOK_POST_FORCE ? 1
-         : hook == HOOK_FINAL_INTEGRATE   ? 2 : 3;
+         : hook == HOOK_FINAL_INTEGRATE   ? 2 : hook == HOOK_END_OF_STEP ? 3 : 4;
 }
 
 static void build_hook_lists(struct gravel *g)
 {
     struct hook_lists *h = &g->eng->hooks;
     const unsigned bits[NHOOK] = {HOOK_INITIAL_INTEGRATE, HOOK_POST_FORCE, HOOK_FINAL_INTEGRATE,
-                                  HOOK_END_OF_STEP};
+                                  HOOK_END_OF_STEP, HOOK_PRE_EXCHANGE};
     for (int k = 0; k < NHOOK; k++) {
         free(h->call[k]);
         h->call[k] = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->call[k]);
@@ -89,11 +90,50 @@ static void build_hook_lists(struct gravel *g)
                 continue;
             void (*fn)(struct gravel *, struct fix *) =
                 k == 0 ? f->style->initial_integrate : k == 1 ? f->style->post_force
-              : k == 2 ? f->style->final_integrate   : f->style->end_of_step;
+              : k == 2 ? f->style->final_integrate   : k == 3 ? f->style->end_of_step
+              : f->style->pre_exchange;
             if (fn)
                 h->call[k][h->n[k]++] = (struct hook_call){f, fn};
         }
     }
+    free(h->force);
+    h->force = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->force);
+    h->nforce = 0;
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->force_reneighbor)
+            h->force[h->nforce++] = g->styles.fix[i];
+}
+
+/* LAMMPS Neighbor::decide()'s must_check: some fix wants a rebuild now. */
+static int forced_rebuild(struct gravel *g)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    for (int i = 0; i < h->nforce; i++)
+        if (h->force[i]->next_reneighbor == g->step)
+            return 1;
+    return 0;
+}
+
+/* Atoms fixes may insert during the next nsteps steps: the device capacity
+ * holds them from the start and the neighbor cut-off covers their radii. */
+static void reserve_insertions(struct gravel *g, bigint nsteps)
+{
+    struct engine *e = g->eng;
+    double rmax = 0;
+    long extra = 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        double r = 0;
+        if (f->style->reserve)
+            extra += f->style->reserve(g, f, nsteps, &r);
+        if (r > rmax)
+            rmax = r;
+    }
+    e->insert_rmax = rmax;
+    if (extra > 200000000L - g->atoms.n)
+        gr_error(g, "too many atoms to insert (%ld)", extra);
+    if (extra)
+        eng_reserve(g, g->atoms.n + (int)extra);
 }
 
 static void run_hook(struct gravel *g, unsigned hook)
@@ -138,6 +178,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             eng_arg_real(g, k, i++, l->L[q]);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
+        eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
         k = e->k_gather;
         i = 0;
@@ -212,25 +253,28 @@ static void timestep_report(struct gravel *g, int force)
                    "are needed for accuracy)", g->dt, p->style->name, steps);
 }
 
-/* verify: single precision resolves a coordinate x to |x| 2^-23. Warn at
- * setup when that exceeds 1e-3 of the smallest radius: overlaps and contact
- * normals (fractions of a radius) lose their digits. */
+/* verify: single precision keeps positions as hi + lo float pairs relative
+ * to the device origin (kernels/common.cl, "Positions"): a coordinate x
+ * resolves to about |x - origin| 2^-47. Warn at setup when that exceeds
+ * 1e-6 of the smallest radius: overlaps (fractions of a radius) would lose
+ * digits that double keeps. Called after the upload (the origin is set). */
 static void precision_report(struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
-    if (!g->opt.single || a->n == 0)
+    const double *o = g->eng->origin;
+    if (!g->eng->single || a->n == 0)
         return;
     double xmax = 0, rmin = INFINITY;
     for (int i = 0; i < a->n; i++) {
         for (int d = 0; d < 3; d++)
-            xmax = fmax(xmax, fabs(a->x[3 * i + d]));
+            xmax = fmax(xmax, fabs(a->x[3 * i + d] - o[d]));
         rmin = fmin(rmin, a->radius[i]);
     }
-    double ulp = xmax * 0x1p-23;
-    if (ulp > 1e-3 * rmin)
-        gr_warn(g, "single precision: coordinates up to %g resolve only %.3g, %.3g of the "
-                   "smallest radius %g; overlaps lose precision (use -precision double or "
-                   "move the origin closer)", xmax, ulp, ulp / rmin, rmin);
+    double ulp = xmax * 0x1p-47;
+    if (ulp > 1e-6 * rmin)
+        gr_warn(g, "single precision: coordinates up to %g from the device origin resolve "
+                   "only %.3g, %.3g of the smallest radius %g; overlaps lose precision (use "
+                   "-precision double or a smaller box)", xmax, ulp, ulp / rmin, rmin);
 }
 
 static void check_atoms(struct gravel *g)
@@ -255,6 +299,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     eng_prepare(g);
     struct engine *e = g->eng;
     e->active = 0;
+    reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
     for (int i = 0; i < g->styles.nfix; i++) {
@@ -322,8 +367,12 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         if (sampled)
             eng_finish(g);
         double a1 = wall();
-        int rebuild = nbr_decide(g);
+        int rebuild = nbr_decide(g, forced_rebuild(g));
+        double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
+            double p0 = wall();
+            run_hook(g, HOOK_PRE_EXCHANGE);
+            tx = wall() - p0;
             nbr_rebuild(g);
             eng_finish(g);
         }
@@ -337,10 +386,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         if (timed)
             eng_finish(g);
         double b1 = wall();
-        double mod = (a1 - a0) + cm + (b1 - b0);
+        double mod = (a1 - a0) + cm + (b1 - b0) + tx;
         if (rebuild) {
             xp += cp;
-            xn += a2 - a1;
+            xn += a2 - a1 - tx;
             xm += mod;
         } else {
             nplain++;
@@ -495,6 +544,10 @@ void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
     bigint n = arg_bigint(g, argv[0], "timestep");
     if (n < 0)
         gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->time_depend)
+            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
+                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
     g->step = n;
     g->laststep_reset = n;
 }

@@ -593,12 +593,15 @@ static double temp_dof(const struct gravel *g)
 
 /* Translational kinetic energy as LAMMPS' thermo `ke` (compute temp scalar x
  * dof/2 x kB): 1/2 sum m v^2, and 0 when the system has no degrees of freedom
- * left (dim x N - dim <= 0, e.g. a single atom). */
+ * left (dim x N - dim <= 0, e.g. a single atom); -0 when they are negative
+ * (no atoms: LAMMPS multiplies its zero temperature by dof < 0 and prints
+ * -0, e.g. step 0 of examples/pour/in.pour). */
 static double kinetic_energy(struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
-    if (temp_dof(g) <= 0)
-        return 0.0;
+    double dof = temp_dof(g);
+    if (dof <= 0)
+        return dof < 0 ? -0.0 : 0.0;
     const int *order = atoms_tag_order(g);
     double sum = 0.0;
     for (int k = 0; k < a->n; k++) {

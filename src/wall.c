@@ -59,8 +59,13 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
     eng_arg_int(g, k, i++, wall_elements(w));
     eng_arg_int(g, k, i++, (int)w->kind);
     eng_arg_int(g, k, i++, w->axis);
-    eng_arg_real(g, k, i++, w->lo);
-    eng_arg_real(g, k, i++, w->hi);
+    if (w->kind == WALL_ZCYLINDER) { /* the axis (x = y = 0) relative to the origin */
+        eng_arg_coord(g, k, i++, 0, 0.0);
+        eng_arg_coord(g, k, i++, 1, 0.0);
+    } else {
+        eng_arg_coord(g, k, i++, w->axis, w->lo);
+        eng_arg_coord(g, k, i++, w->axis, w->hi);
+    }
     eng_arg_real(g, k, i++, w->radius);
     for (int d = 0; d < 3; d++)
         eng_arg_real(g, k, i++, w->v[d]);
@@ -69,6 +74,7 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
     eng_arg_real(g, k, i++, g->dt);
     eng_arg_int(g, k, i++, !eng_in_setup(g));
     eng_arg_int(g, k, i++, law->inclusive);
+    eng_arg_pos_lo(g, k, i);
     eng_launch(g, k, (size_t)a->n);
 }
 
@@ -136,6 +142,20 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
     memcpy(pose + 18, wm->glo, 3 * sizeof(double));
     pose[21] = 1.0 / wm->h;
     memcpy(pose + 22, ref, 3 * sizeof(double));
+    /* device positions are relative to the origin: so are the pose's
+     * translation and reference point, and a static mesh takes the moving
+     * path (R = 1) when the origin is not 0 */
+    const double *o = g->eng->origin;
+    if (!moving && (o[0] != 0 || o[1] != 0 || o[2] != 0)) {
+        static const double unit[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        memcpy(pose, unit, sizeof unit);
+        memset(pose + 9, 0, 3 * sizeof(double));
+        moving = 1;
+    }
+    for (int q = 0; q < 3; q++) {
+        pose[9 + q] -= o[q];
+        pose[22 + q] -= o[q];
+    }
     eng_write_reals(g, wm->pose, 25, pose);
     cl_kernel k = law->kernel;
     int i = wall_bind_atoms(g, f, law, k);
@@ -155,5 +175,6 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
     eng_arg_real(g, k, i++, g->dt);
     eng_arg_int(g, k, i++, !eng_in_setup(g));
     eng_arg_int(g, k, i++, law->inclusive);
+    eng_arg_pos_lo(g, k, i);
     eng_launch(g, k, (size_t)a->n);
 }

@@ -35,7 +35,11 @@ static int compound_kind(const struct region *r)
     return !strcmp(r->style->name, "union") ? 1 : !strcmp(r->style->name, "intersect") ? 2 : 0;
 }
 
-static void pack_node(const struct region *r, int walloff, double *nd)
+static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+
+/* Device coordinates are relative to the run's origin (eng->origin; 0 in
+ * double precision): every position parameter is shifted by it. */
+static void pack_node(const struct region *r, int walloff, const double o[3], double *nd)
 {
     memset(nd, 0, RG_NODE * sizeof *nd);
     nd[RG_KIND] = primitive_kind(r);
@@ -62,6 +66,25 @@ static void pack_node(const struct region *r, int walloff, double *nd)
     }
     nd[RG_SIN] = sin(r->theta);
     nd[RG_COS] = cos(r->theta);
+    double *p = nd + RG_P;
+    int kind = (int)nd[RG_KIND], ax = r->dim;
+    if (kind == RG_BLOCK)
+        for (int k = 0; k < 6; k++)
+            p[k] -= o[k / 2];
+    else if (kind == RG_SPHERE || kind == RG_PLANE)
+        for (int k = 0; k < 3; k++)
+            p[k] -= o[k];
+    else {
+        p[0] -= o[trans[ax][0]];
+        p[1] -= o[trans[ax][1]];
+        int lo = kind == RG_CYLINDER ? 3 : 4;
+        p[lo] -= o[ax];
+        p[lo + 1] -= o[ax];
+    }
+    for (int k = 0; k < 3; k++) {
+        nd[RG_POINT + k] -= o[k];
+        nd[RG_RPOINT + k] -= o[k];
+    }
 }
 
 static void check_vars(struct gravel *g, const struct region *r, const char *who)
@@ -118,7 +141,7 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
     int walloff = 0;
     for (int k = 0; k < wr->nnode; k++) {
         const struct region *s = wr->comb ? r->sub[k] : r;
-        pack_node(s, walloff, nodes + k * RG_NODE);
+        pack_node(s, walloff, g->eng->origin, nodes + k * RG_NODE);
         walloff += s->cmax;
     }
     eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
@@ -133,6 +156,7 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
     eng_arg_int(g, k, i++, vdyn);
     eng_arg_real(g, k, i++, g->dt);
     eng_arg_int(g, k, i++, !eng_in_setup(g));
+    eng_arg_pos_lo(g, k, i);
     eng_launch(g, k, (size_t)a->n);
 }
 

@@ -173,6 +173,12 @@ static void set_common(struct gravel *g, struct fix *f, cl_kernel k, int *i)
     eng_arg_int(g, k, (*i)++, d->flow);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, (*i)++, d->p[q]);
+    const double *o = g->eng->origin;
+    if (d->flow && (o[0] != 0 || o[1] != 0 || o[2] != 0))
+        gr_error(g, "fix %s: the taylor_green field is evaluated at lab coordinates, but in "
+                    "single precision this box (centre %g %g %g, farther from 0 than its size) "
+                    "is shifted on the device: run in double precision or centre the box "
+                    "nearer 0", f->id, o[0], o[1], o[2]);
 }
 
 static void apply_implicit(struct gravel *g, struct fix *f, int replace)

@@ -14,11 +14,24 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_gravity.h"
 
 struct grav {
     double acc[3];
+    double mag, dir[3];         /* magnitude and unit direction (fix pour reads them) */
     cl_kernel post;
 };
+
+int fix_gravity_field(const struct fix *f, double *magnitude, double dir[3])
+{
+    if (!f || strcmp(f->style->name, "gravity") || !f->data)
+        return 0;
+    const struct grav *gr = f->data;
+    *magnitude = gr->mag;
+    for (int d = 0; d < 3; d++)
+        dir[d] = gr->dir[d];
+    return 1;
+}
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -83,8 +96,11 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     struct grav *gr = gr_calloc(g, 1, sizeof *gr);
     f->data = gr;
-    for (int d = 0; d < 3; d++)
+    gr->mag = mag;
+    for (int d = 0; d < 3; d++) {
         gr->acc[d] = mag * gv[d];
+        gr->dir[d] = gv[d];
+    }
     f->hooks = HOOK_POST_FORCE;
     f->sources[f->nsources++] = "fix_gravity.cl";
 }

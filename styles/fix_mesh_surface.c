@@ -214,7 +214,7 @@ void mesh_surface_fmesh_reserve(struct gravel *g, struct mesh_surface *ms, int n
 
 size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, int history)
 {
-    double reach = 0;
+    double reach = eng_get(g)->insert_rmax; /* atoms fix pour may insert */
     for (int i = 0; i < g->atoms.n; i++)
         reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
     reach *= 1.0 + 1e-6;

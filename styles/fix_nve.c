@@ -39,6 +39,7 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->ini, 6, a->rmass);
     eng_arg_real(g, k->ini, 7, g->dt);
     eng_arg_real(g, k->ini, 8, 0.5 * g->dt);
+    eng_arg_pos_lo(g, k->ini, 9);
     eng_launch(g, k->ini, (size_t)a->n);
 }
 

@@ -53,6 +53,7 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->ini, 9, a->rmass);
     eng_arg_real(g, k->ini, 10, g->dt);
     eng_arg_real(g, k->ini, 11, 0.5 * g->dt);
+    eng_arg_pos_lo(g, k->ini, 12);
     eng_launch(g, k->ini, (size_t)a->n);
 }
 

@@ -29,6 +29,7 @@ import seeds_verify as sv  # noqa: E402
 import verify_cases as vc  # noqa: E402
 import verify_restitution as vr  # noqa: E402
 import energy_drift as ed  # noqa: E402
+import verify_precision as vp  # noqa: E402
 
 ROOT = sv.ROOT
 DOC = os.path.join(ROOT, "doc", "verification.md")
@@ -262,6 +263,22 @@ def run_energy_drift(out):
     out.append("")
 
 
+def run_precision(out):
+    """Issue 13 item 2: both precisions with the scene translated from 0 to 10^4 km."""
+    t0 = time.time()
+    res = vp.measure()
+    out += ["## Precision wherever the box is", "",
+            "A head-on Hertz collision of two 3 mm glass beads (hertz/mindlin, e = 0.8, 1 m/s) and "
+            "an elastic wall impact (fix wall/gran hertz/history zplane) at dt = 1e-7 s (about 95 "
+            "steps per collision), with the whole scene translated by the offset "
+            "(`tests/scripts/verify_precision.py`). Single precision keeps positions as float "
+            "pairs relative to a device origin (doc/opencl.md, Precision). At 10^4 km double "
+            "itself resolves only 2e-9 m of the 1e-7 m drift per step. %.0f s for the table."
+            % (time.time() - t0), ""]
+    out += vp.table(res)
+    out.append("")
+
+
 def main():
     names = sys.argv[1:]
     os.makedirs(PNGDIR, exist_ok=True)
@@ -289,6 +306,8 @@ def main():
         run_restitution(out)
     if not names or "energy_drift" in names:
         run_energy_drift(out)
+    if not names or "precision" in names:
+        run_precision(out)
     with open(DOC, "w") as f:
         f.write("\n".join(out) + "\n")
     print("wrote", os.path.relpath(DOC, ROOT))

@@ -7,8 +7,8 @@
 - an impact fast enough for a > 10 % overlap is warned, a gentle one is not;
 - a time step above half the collision time is an error unless `run ... force
   yes`; under ~10 steps per collision a warning;
-- single precision at coordinates 1e6 times the radius is warned (double and
-  single near the origin are not);
+- single precision: a box far from 0 is not warned (it is shifted), atoms 1e9
+  radii from the origin of a box around 0 are (double never is);
 - polydisperse size ratio 10:1: forces after 0 and 400 steps (neighbor
   rebuilds, re-sorts) equal a brute-force O(N^2) host computation on the dumped
   positions (spring-only gran/hooke: central forces k delta n)."""
@@ -169,8 +169,8 @@ atom_style sphere
 boundary f f f
 region box block {lo} {hi} -1 1 -1 1 units box
 create_box 1 box
-create_atoms 1 single {x1} 0 0
-create_atoms 1 single {x2} 0 0
+create_atoms 1 single {x1:.17g} 0 0
+create_atoms 1 single {x2:.17g} 0 0
 set atom * diameter 0.1 density 10
 velocity all set 0.1 0 0
 pair_style linear/restitution 1e5 0.8 0.5
@@ -184,13 +184,21 @@ run 10
 
 
 def far_from_origin():
+    """Single precision splits positions (hi + lo floats) relative to the
+    device origin (tests/scripts/verify_precision.py measures the accuracy):
+    a box far from 0 is shifted and not warned; coordinates 1e9 radii from
+    the origin of a box around 0 resolve about 1e-5 r and are warned."""
     r = 0.05
-    far = 1e6 * r
-    for prec, x0, warned in (("single", far, True), ("double", far, False), ("single", 0.0, False)):
-        s = FAR.format(lo=x0 - 1, hi=x0 + 1, x1=x0, x2=x0 + 0.099)
+    for prec, x0, around0, warned in (("single", 1e6 * r, False, False),
+                                      ("single", 1e9 * r, True, True),
+                                      ("double", 1e9 * r, True, False),
+                                      ("single", 0.0, False, False)):
+        lo, hi = (-2 * x0 - 1, 2 * x0 + 1) if around0 else (x0 - 1, x0 + 1)
+        s = FAR.format(lo=lo, hi=hi, x1=x0, x2=x0 + 0.099)
         rc, out, _ = run_script(s, prec)
         w = [line for line in out.splitlines() if "WARNING" in line and "single precision" in line]
-        check("extreme coordinates %g (|x|/r = %g) in %s precision: %s" % (x0, x0 / r, prec,
+        check("extreme coordinates %g (|x|/r = %g, box %s) in %s precision: %s" % (
+              x0, x0 / r, "around 0" if around0 else "at x", prec,
               "precision loss warned" if warned else "no precision warning"),
               rc == 0 and bool(w) == warned, w[0][:100] if w else "rc %d" % rc)
 
