@@ -51,7 +51,7 @@ UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "2d simulations are not supported",
     "granular/in.pour.drum": "unknown command 'change_box'",
     "granular/in.pour.flatwall": "unknown command 'change_box'",
-    "granregion/in.granregion.box": "unknown pair style 'hybrid'",
+    "granregion/in.granregion.box": "unknown compute style 'temp'",
     "granregion/in.granregion.funnel": "neighbor style 'multi' is not supported",
     "granregion/in.granregion.mixer": "neighbor style 'multi' is not supported",
     "multi/in.granular": "2d simulations are not supported",
