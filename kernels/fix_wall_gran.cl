@@ -12,3 +12,8 @@ WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_eval)
 MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
 MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_eval)
 MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)
+
+/* region walls (fix wall/gran/region): the same laws against region surfaces */
+REGION_KERNEL(region_gran_hooke, gran_hooke_eval)
+REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_eval)
+REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_eval)

@@ -26,8 +26,8 @@
  *   triangle     mesh walls (MESH_KERNEL below): the elements are the
  *                triangles of a fix mesh/surface, binned in the mesh's own
  *                frame, history in slots keyed by triangle id
- * Room for region surfaces: a kind answers the same question for its
- * elements. */
+ *   region       region surfaces (kernels/wall_region.cl REGION_KERNEL): the
+ *                contacts of a LAMMPS region, history slots keyed by wall id */
 
 #define WALL_PLANE 0
 #define WALL_ZCYLINDER 1

@@ -284,7 +284,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
     int type = arg_int_range(g, argv[0], 1, g->atoms.ntypes, "atom type");
     const char *style = argv[1];
     int iarg;
-    const struct region *r = NULL;
+    struct region *r = NULL;
     double xone[3] = {0, 0, 0};
     bigint nrandom = 0;
     unsigned long seed = 0;
@@ -314,6 +314,8 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
     } else {
         gr_error(g, "unknown style '%.32s': expected box, region, single or random", style);
     }
+    if (r)
+        region_prematch(g, r);
     int lattice_units = 1, remap = 0, maxtry = CA_MAXTRY_DEFAULT, maxtry_set = 0;
     int basis_type[8], basis_set = 0;
     for (int m = 0; m < 8; m++)

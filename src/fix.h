@@ -65,7 +65,7 @@ enum fix_need {
     NEED_ROTATION = 1 << 0,     /* omega and torque arrays */
 };
 
-#define FIX_MAX_SOURCES 6
+#define FIX_MAX_SOURCES 8
 
 struct fix;
 struct fused_op;

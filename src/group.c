@@ -444,7 +444,8 @@ void cmd_group(struct gravel *g, int argc, char **argv)
     } else if (!strcmp(style, "region")) {
         if (nrest != 1)
             gr_error(g, "group region needs exactly one region ID");
-        const struct region *r = region_get(g, rest[0]);
+        struct region *r = region_get(g, rest[0]);
+        region_prematch(g, r);
         bit = group_bit(group_create(g, id));
         for (int i = 0; i < a->n; i++)
             if (region_match(r, a->x + 3 * i))

@@ -75,7 +75,8 @@ static void select_atoms(struct gravel *g, const char *style, const char *id, ch
         for (int i = 0; i < a->n; i++)
             sel[i] = (a->mask[i] & bit) != 0;
     } else if (!strcmp(style, "region")) {
-        const struct region *r = region_get(g, id);
+        struct region *r = region_get(g, id);
+        region_prematch(g, r);
         for (int i = 0; i < a->n; i++)
             sel[i] = region_match(r, a->x + 3 * i);
     } else if (!strcmp(style, "mol")) {

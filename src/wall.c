@@ -20,9 +20,7 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
     return law->history ? (size_t)wall_elements(w) * 3 * g->eng->rsz : 0;
 }
 
-/* The arguments every wall kernel starts with (the atoms of f's group and
- * the history), from index 0; returns the next index. */
-static int bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k)
+int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = eng_atoms(g);
@@ -43,8 +41,7 @@ static int bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *la
     return acc_bind_wall(g, f, k, i);
 }
 
-/* The contact law's parameters from index i; returns the next index. */
-static int bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i)
+int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i)
 {
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     eng_arg_mem(g, k, i++, law->param);
@@ -59,7 +56,7 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
 {
     struct dev_atoms *a = eng_atoms(g);
     cl_kernel k = law->kernel;
-    int i = bind_law(g, law, k, bind_atoms(g, f, law, k));
+    int i = wall_bind_law(g, law, k, wall_bind_atoms(g, f, law, k));
     eng_arg_int(g, k, i++, wall_elements(w));
     eng_arg_int(g, k, i++, (int)w->kind);
     eng_arg_int(g, k, i++, w->axis);
@@ -162,10 +159,10 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
     }
     eng_write_reals(g, wm->pose, 25, pose);
     cl_kernel k = law->kernel;
-    int i = bind_atoms(g, f, law, k);
+    int i = wall_bind_atoms(g, f, law, k);
     eng_arg_int(g, k, i++, hstride);
     eng_arg_int(g, k, i++, hoff);
-    i = bind_law(g, law, k, i);
+    i = wall_bind_law(g, law, k, i);
     eng_arg_mem(g, k, i++, wm->tri);
     eng_arg_mem(g, k, i++, wm->triv);
     eng_arg_mem(g, k, i++, wm->cstart);

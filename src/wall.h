@@ -45,6 +45,38 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
 void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law);
 
+/* Kernel argument binders shared by every wall kind (src/wall.c): the atoms
+ * of f's group and the history from index 0, then the law's parameters
+ * from index i; each returns the next index. */
+int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k);
+int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i);
+
+/* ---- region walls (kernels/wall_region.cl REGION_KERNEL; src/wall_region.c) ----
+ * The surface of a LAMMPS region: a primitive (block, sphere, cylinder,
+ * cone, plane) or a union / intersect of primitives, each with its side,
+ * open faces and motion, packed for the device at every launch. History per
+ * atom: the contact count, WALL_REGION_MAXC wall ids and 3 REAL of shear
+ * per contact (1 + 4 slots REAL). */
+#define WALL_REGION_MAXC 8      /* = RG_MAXC */
+#define WALL_REGION_MAXNODE 4   /* = RG_MAXNODE */
+
+struct region;
+
+struct wall_region {
+    cl_mem nodes;
+    int nnode, comb, interior, slots;
+};
+
+/* Check that region r can be a wall (error naming `who` otherwise) and set
+ * up wr; returns the per-atom history bytes (0 without history). */
+size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
+                        const struct wall_law *law, const char *who);
+/* Evaluate the motion of r at this step, upload it and add the contact
+ * forces and torques of f's atoms. */
+void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
+                       struct region *r, const struct wall_law *law);
+void wall_region_release(struct wall_region *wr);
+
 /* ---- mesh walls (kernels/wall.cl MESH_KERNEL) ----
  * A triangle mesh on the device in its own frame: per triangle its three
  * vertices and unit normal (12 REAL), its welded vertex ids (3 int), and its

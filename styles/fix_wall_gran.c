@@ -17,9 +17,13 @@
  * Per-atom contact history (3 REAL, model with history) follows the atoms
  * through re-sorts as engine-managed per-atom state (src/fix.h). The force
  * and torque are added in post_force, as LAMMPS does (also at setup, without
- * history update). Unsupported LAMMPS options (model granular, wallstyle
- * region, keyword contacts) are rejected with a clear error. */
+ * history update). fix wall/gran/region (same create, `region ID` as the
+ * wall style; kernels/wall_region.cl) takes the surface of a region as the
+ * wall. Unsupported LAMMPS options (model granular, keyword contacts) are
+ * rejected with a clear error. */
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "args.h"
@@ -27,10 +31,11 @@
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
+#include "region.h"
 #include "fix_mesh_surface.h"
 #include "wall.h"
 
-enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4 };
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
 
 
@@ -44,12 +49,24 @@ struct wall {
     bigint time_origin;
     struct wall_law law;
     struct mesh_walls mesh;     /* wallstyle mesh */
+    char region_id[GR_NAMELEN]; /* fix wall/gran/region */
+    char region_style[32];      /* the region's style and sub-region count at the */
+    int region_nsub;            /* previous run (LAMMPS warns when they change) */
+    struct region *region;      /* looked up at every init (region delete) */
+    struct wall_region wreg;
+    /* restart: the region's previous displacement and angle per node
+     * (LAMMPS Region::prev), applied when the region matches at init */
+    int rs_pending, rs_n;
+    char rs_style[32];
+    double rs_prev[WALL_REGION_MAXNODE][4];
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history"};
 static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
                                           "mesh_gran_hertz_history"};
+static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
+                                            "region_gran_hertz_history"};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -120,7 +137,23 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 
     int i = 7;
     const char *ws = argv[i];
-    if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
+    int is_region = !strcmp(f->style->name, "wall/gran/region");
+    if (is_region != !strcmp(ws, "region"))
+        gr_error(g, is_region ? "fix wall/gran/region expects 'region ID' after the "
+                                "coefficients, got '%.64s'"
+                              : "fix wall/gran: wall style '%.64s' belongs to fix "
+                                "wall/gran/region",
+                 ws);
+    if (is_region) {
+        arg_need(g, argc, i, 1, ws);
+        w.style = W_REGION;
+        const char *id = argv[i + 1];
+        if (strlen(id) >= GR_NAMELEN)
+            gr_error(g, "fix wall/gran/region: region ID too long");
+        region_get(g, id);
+        strcpy(w.region_id, id);
+        i += 2;
+    } else if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
         arg_need(g, argc, i, 2, ws);
         w.style = ws[0] - 'x';
         w.lo = parse_face(g, argv[i + 1], -WALL_FAR, "wall lo position");
@@ -138,9 +171,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         w.style = W_MESH;
         i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
                                     "fix wall/gran mesh");
-    } else if (!strcmp(ws, "region")) {
-        gr_error(g, "fix wall/gran wall style 'region' is not supported (use xplane, yplane, "
-                    "zplane or zcylinder)");
     } else {
         gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
                     "zcylinder or mesh)", ws);
@@ -161,6 +191,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 3;
         } else if (!strcmp(argv[i], "contacts")) {
             gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (w.style == W_REGION) {
+            gr_error(g, "unknown fix wall/gran/region keyword '%.64s'", argv[i]);
         } else if (w.style == W_MESH) {
             gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
         } else {
@@ -168,6 +200,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                      argv[i]);
         }
     }
+    if (w.style == W_REGION && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
+                    "and rotate keywords)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
@@ -194,6 +229,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
     f->sources[f->nsources++] = "wall.cl";
+    f->sources[f->nsources++] = "wall_region.cl";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
 }
 
@@ -230,11 +266,34 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     return geom;
 }
 
+static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }
+
+static struct region *region_node(struct region *r, int k) { return r->nsub ? r->sub[k] : r; }
+
+/* restart: the region's motion state when the restart file's region is the
+ * same (style and node count), else a warning (LAMMPS resets the motion) */
+static void restore_motion(struct gravel *g, struct fix *f, struct wall *w)
+{
+    if (!w->rs_pending || !w->region)
+        return;
+    w->rs_pending = 0;
+    if (strcmp(w->rs_style, w->region->style->name) != 0 ||
+        w->rs_n != region_nodes(w->region)) {
+        gr_warn(g, "fix %s: region %s differs from the restart file's, resetting its motion",
+                f->id, w->region_id);
+        return;
+    }
+    for (int k = 0; k < w->rs_n; k++)
+        memcpy(region_node(w->region, k)->prev, w->rs_prev[k], sizeof w->rs_prev[k]);
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, (w->style == W_MESH ? mesh_kernel : model_kernel)[w->model]);
+    w->law.kernel = eng_kernel(g, (w->style == W_MESH     ? mesh_kernel
+                                   : w->style == W_REGION ? region_kernel
+                                                          : model_kernel)[w->model]);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
@@ -248,6 +307,24 @@ static void init(struct gravel *g, struct fix *f)
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
         return;
     }
+    if (w->style == W_REGION) {
+        struct region *r = region_find(g, w->region_id);
+        if (!r)
+            gr_error(g, "fix %s: region '%s' for fix wall/gran/region does not exist", f->id,
+                     w->region_id);
+        if (w->region && (strcmp(w->region_style, r->style->name) != 0 ||
+                          w->region_nsub != r->nsub))
+            gr_warn(g, "fix %s: region %s was re-defined between runs, resetting its motion",
+                       f->id, w->region_id);
+        w->region = r;
+        snprintf(w->region_style, sizeof w->region_style, "%s", r->style->name);
+        w->region_nsub = r->nsub;
+        restore_motion(g, f, w);
+        char who[GR_NAMELEN + 32];
+        snprintf(who, sizeof who, "fix %s (wall/gran/region)", f->id);
+        f->peratom_bytes = wall_region_init(g, &w->wreg, r, &w->law, who);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }
@@ -259,6 +336,10 @@ static void post_force(struct gravel *g, struct fix *f)
         mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
         return;
     }
+    if (w->style == W_REGION) {
+        wall_region_apply(g, f, &w->wreg, w->region, &w->law);
+        return;
+    }
     struct wall_geom geom = geometry(g, w);
     wall_apply(g, f, &geom, &w->law);
 }
@@ -268,34 +349,81 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
-    if (w)
+    if (w) {
         mesh_walls_release(&w->mesh);
+        wall_region_release(&w->wreg);
+    }
     free(w);
     f->data = NULL;
 }
 
 /* Restart state (restart.c): the time origin of wiggle (the step the fix
- * was created at), so a re-created fix continues the same oscillation. */
+ * was created at), so a re-created fix continues the same oscillation; for
+ * wall/gran/region also the region's style, node count and previous
+ * displacement and angle per node (its wall velocity continues). */
+#define RS_REGION (32 + sizeof(int32_t))
+
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
     (void)g;
     const struct wall *w = f->data;
     int64_t origin = w->time_origin;
-    if (buf && cap >= sizeof origin)
-        memcpy(buf, &origin, sizeof origin);
-    return sizeof origin;
+    struct region *r = w->style == W_REGION ? region_find(g, w->region_id) : NULL;
+    int32_t n = r ? region_nodes(r) : 0;
+    size_t len = sizeof origin + (r ? RS_REGION + (size_t)n * 4 * sizeof(double) : 0);
+    if (!buf || cap < len)
+        return len;
+    memcpy(buf, &origin, sizeof origin);
+    if (r) {
+        unsigned char *b = buf + sizeof origin;
+        char st[32] = {0};
+        snprintf(st, sizeof st, "%s", r->style->name);
+        memcpy(b, st, 32);
+        memcpy(b + 32, &n, sizeof n);
+        for (int k = 0; k < n; k++)
+            memcpy(b + RS_REGION + (size_t)k * 4 * sizeof(double), region_node(r, k)->prev,
+                   4 * sizeof(double));
+    }
+    return len;
 }
 
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct wall *w = f->data;
     int64_t origin;
-    if (len != sizeof origin)
-        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+    if (len < sizeof origin)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected at least %zu", f->id, len,
                  sizeof origin);
     memcpy(&origin, buf, sizeof origin);
     w->time_origin = origin;
+    if (len == sizeof origin)
+        return;
+    int32_t n = 0;
+    if (len >= sizeof origin + RS_REGION)
+        memcpy(&n, buf + sizeof origin + 32, sizeof n);
+    if (w->style != W_REGION || n < 1 || n > WALL_REGION_MAXNODE ||
+        len != sizeof origin + RS_REGION + (size_t)n * 4 * sizeof(double))
+        gr_error(g, "fix %s: restart state of %zu bytes does not match this fix", f->id, len);
+    const unsigned char *b = buf + sizeof origin;
+    memcpy(w->rs_style, b, 32);
+    w->rs_style[31] = '\0';
+    w->rs_n = n;
+    for (int k = 0; k < n; k++)
+        memcpy(w->rs_prev[k], b + RS_REGION + (size_t)k * 4 * sizeof(double),
+               4 * sizeof(double));
+    w->rs_pending = 1;
+    restore_motion(g, f, w);
 }
+
+const struct fix_style fix_style_wall_gran_region = {
+    .name = "wall/gran/region",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};
 
 const struct fix_style fix_style_wall_gran = {
     .name = "wall/gran",

@@ -1,6 +1,8 @@
 /* pair_hybrid_overlay.c - `pair_style hybrid/overlay STYLE1 args STYLE2 args
  * ...`: several pair styles acting on every pair at once (LAMMPS
- * hybrid/overlay), e.g. a contact law plus cohesion.
+ * hybrid/overlay), e.g. a contact law plus cohesion; and `pair_style hybrid
+ * STYLE1 args ...`: each type pair acts through the one sub-style its
+ * pair_coeff names (or none), LAMMPS hybrid.
  *
  * The terms are fused into ONE neighbor loop: the program is built with
  * PAIR_EVAL=hybrid_overlay_eval (kernels/pair_hybrid_overlay.cl) and
@@ -13,7 +15,17 @@
  * syntax, LAMMPS type ranges). A term without per-type coefficients applies
  * to every type pair, so at run each pair I <= J must have been named for
  * it (in one `pair_coeff * * STYLE` or several partial ones).
- * Every term needs its pair_coeff before `run`. */
+ * Every term needs its pair_coeff before `run`.
+ *
+ * hybrid: the same fused loop with PAIR_EVAL=hybrid_eval; each type pair's
+ * block starts with the index of its sub-style (-1: none), the terms' blocks
+ * follow. `pair_coeff I J STYLE args` maps the pairs to STYLE (a later
+ * pair_coeff re-maps them), `pair_coeff I J none` to no interaction. A cross
+ * pair I J never named takes the sub-style of I I and J J when they have the
+ * same one (that style mixes its own coefficients), else it is an error, as
+ * LAMMPS's "All pair coeffs are not set". Several sub-styles may keep contact
+ * history (a pair uses one). A sub-style with per-type coefficients of its
+ * own (cohesion) checks them for every type pair, mapped to it or not. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,7 +39,13 @@ struct hybrid {
     int n;
     struct pair term[PAIR_MAXTERMS];
     int off[PAIR_MAXTERMS];     /* parameter offset of each term */
+    int pick;                   /* 1: hybrid (one term per type pair) */
+    int nt;                     /* hybrid: map[(i-1) nt + j-1] = term, -1 none, */
+    signed char *map;           /* -2 not named */
 };
+
+#define MAP_NONE (-1)
+#define MAP_UNSET (-2)
 
 int pair_hybrid_terms(const struct pair *p, const struct pair **terms)
 {
@@ -42,41 +60,45 @@ int pair_hybrid_terms(const struct pair *p, const struct pair **terms)
 static void destroy(struct pair *p)
 {
     struct hybrid *h = p->data;
-    if (h)
+    if (h) {
         for (int k = 0; k < h->n; k++)
             pair_release(&h->term[k]);
+        free(h->map);
+    }
     free(h);
     p->data = NULL;
 }
 
 /* Split `A args B args ...` at the registered style names. */
-static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
+static void parse_terms(struct gravel *g, struct pair *p, int argc, char **argv, int pick)
 {
+    const char *me = pick ? "hybrid" : "hybrid/overlay";
     if (argc < 1)
-        gr_error(g, "hybrid/overlay expects one or more sub-styles with their "
-                    "arguments, e.g. hybrid/overlay linear/restitution 1e5 0.8 0.1 cohesion 100");
+        gr_error(g, "%s expects one or more sub-styles with their arguments, e.g. %s "
+                    "gran/hooke 4000 NULL 100 NULL 0.5 1", me, me);
     /* parsed on the stack (term settings allocate nothing), kept on success:
      * an argument error leaks nothing */
     struct hybrid loc, *h = &loc;
     memset(&loc, 0, sizeof loc);
-    int nhist = 0, off = 0;
+    loc.pick = pick;
+    int nhist = 0, off = pick ? 1 : 0;
     int i = 0;
     while (i < argc) {
         const struct pair_style *st = pair_style_find(argv[i]);
         if (!st || st->source_n || !st->eval)
-            gr_error(g, "hybrid/overlay: '%.64s' is not a pair style that can be "
-                        "composed (argument %d)", argv[i], i + 1);
+            gr_error(g, "%s: '%.64s' is not a pair style that can be composed (argument %d)",
+                     me, argv[i], i + 1);
         int e = i + 1;
         while (e < argc && !pair_style_find(argv[e]))
             e++;
         for (int k = 0; k < h->n; k++)
             if (h->term[k].style == st)
-                gr_error(g, "hybrid/overlay: sub-style %s given twice", st->name);
+                gr_error(g, "%s: sub-style %s given twice (gravel keeps one instance of "
+                            "each)", me, st->name);
         if (h->n == PAIR_MAXTERMS)
-            gr_error(g, "hybrid/overlay: at most %d sub-styles", PAIR_MAXTERMS);
+            gr_error(g, "%s: at most %d sub-styles", me, PAIR_MAXTERMS);
         if (st->nparam > PAIR_MAXPARAM)
-            gr_error(g, "hybrid/overlay: sub-style %s has too many parameters",
-                     st->name);
+            gr_error(g, "%s: sub-style %s has too many parameters", me, st->name);
         pair_create(g, &h->term[h->n], st, e - i - 1, argv + i + 1);
         h->off[h->n] = off;
         off += st->nparam;
@@ -84,10 +106,37 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
         h->n++;
         i = e;
     }
-    if (nhist > 1)
+    if (nhist > 1 && !pick)
         gr_error(g, "hybrid/overlay: at most one sub-style may keep contact history");
     p->data = gr_calloc(g, 1, sizeof loc);
     memcpy(p->data, &loc, sizeof loc);
+}
+
+static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    parse_terms(g, p, argc, argv, 0);
+}
+
+static void settings_hybrid(struct gravel *g, struct pair *p, int argc, char **argv)
+{
+    parse_terms(g, p, argc, argv, 1);
+}
+
+/* hybrid: map the pairs (and mirrors) to term t (or MAP_NONE) */
+static void map_pairs(struct gravel *g, struct hybrid *h, int ilo, int ihi, int jlo, int jhi,
+                      int t)
+{
+    int nt = g->atoms.ntypes;
+    if (!h->map || h->nt != nt) {
+        free(h->map);
+        h->map = gr_malloc(g, (size_t)nt * nt);
+        memset(h->map, MAP_UNSET, (size_t)nt * nt);
+        h->nt = nt;
+    }
+    for (int i = ilo; i <= ihi; i++)
+        for (int j = jlo > i ? jlo : i; j <= jhi; j++)
+            h->map[(size_t)(i - 1) * nt + (j - 1)] = h->map[(size_t)(j - 1) * nt + (i - 1)] =
+                (signed char)t;
 }
 
 /* pair_coeff I J STYLE args */
@@ -95,21 +144,34 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
                   int argc, char **argv)
 {
     struct hybrid *h = p->data;
+    const char *me = p->style->name;
     char known[256] = "";
     for (int k = 0; k < h->n; k++) {
         strncat(known, k ? ", " : "", sizeof known - strlen(known) - 1);
         strncat(known, h->term[k].style->name, sizeof known - strlen(known) - 1);
     }
+    if (h->pick)
+        strncat(known, ", none", sizeof known - strlen(known) - 1);
     if (argc < 1)
-        gr_error(g, "pair style hybrid/overlay expects a sub-style name after the types (one "
-                    "of: %s)", known);
+        gr_error(g, "pair style %s expects a sub-style name after the types (one of: %s)", me,
+                 known);
+    if (h->pick && !strcmp(argv[0], "none")) {
+        if (argc > 1)
+            gr_error(g, "pair_coeff ... none takes no further arguments, got '%.64s'", argv[1]);
+        map_pairs(g, h, ilo, ihi, jlo, jhi, MAP_NONE);
+        p->coeff_set = 1;
+        return;
+    }
     struct pair *t = NULL;
+    int tk = -1;
     for (int k = 0; k < h->n; k++)
-        if (!strcmp(h->term[k].style->name, argv[0]))
+        if (!strcmp(h->term[k].style->name, argv[0])) {
             t = &h->term[k];
+            tk = k;
+        }
     if (!t)
-        gr_error(g, "'%.64s' is not a sub-style of this pair_style hybrid/overlay (one of: %s)",
-                 argv[0], known);
+        gr_error(g, "'%.64s' is not a sub-style of this pair_style %s (one of: %s)", argv[0], me,
+                 known);
     if (t->style->coeff) {
         t->style->coeff(g, t, ilo, ihi, jlo, jhi, argc - 1, argv + 1);
     } else {
@@ -131,20 +193,49 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     }
     t->coeff_set = 1;
     p->coeff_set = 1;
+    if (h->pick)
+        map_pairs(g, h, ilo, ihi, jlo, jhi, tk);
+}
+
+/* hybrid at run: every pair mapped (cross pairs from equal diagonals) */
+static void init_map(struct gravel *g, struct hybrid *h)
+{
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    if (!h->map || h->nt != nt)
+        gr_error(g, "pair_style hybrid: pair_coeff must be given for every type pair (after "
+                    "the box defines %d atom type(s))", nt);
+    for (int i = 1; i <= nt; i++)
+        for (int j = i; j <= nt; j++) {
+            signed char *m = &h->map[(size_t)(i - 1) * nt + (j - 1)];
+            if (*m != MAP_UNSET)
+                continue;
+            signed char a = h->map[(size_t)(i - 1) * nt + (i - 1)];
+            signed char b = h->map[(size_t)(j - 1) * nt + (j - 1)];
+            if (i == j || a != b || a < 0)
+                gr_error(g, "pair_style hybrid: no pair_coeff for types %d %d (All pair coeffs "
+                            "are not set: a cross pair is mixed only when %d %d and %d %d use "
+                            "the same sub-style)", i, j, i, i, j, j);
+            *m = h->map[(size_t)(j - 1) * nt + (i - 1)] = a;
+        }
 }
 
 static void init(struct gravel *g, struct pair *p)
 {
     struct hybrid *h = p->data;
     if (!h)
-        gr_error(g, "pair_style hybrid/overlay has no sub-styles (restart files do not keep "
-                    "them: re-issue pair_style and pair_coeff after read_restart)");
+        gr_error(g, "pair_style %s has no sub-styles (restart files do not keep them: "
+                    "re-issue pair_style and pair_coeff after read_restart)", p->style->name);
+    if (h->pick)
+        init_map(g, h);
     for (int k = 0; k < h->n; k++) {
         struct pair *t = &h->term[k];
+        if (!t->coeff_set && h->pick) /* LAMMPS: a sub-style no pair uses */
+            gr_error(g, "pair_style hybrid: sub-style %s is not used by any pair_coeff",
+                     t->style->name);
         if (!t->coeff_set)
             gr_error(g, "pair_coeff is missing for hybrid/overlay sub-style %s (e.g. "
                         "pair_coeff * * %s ...)", t->style->name, t->style->name);
-        if (!t->style->coeff && t->setflag) {
+        if (!t->style->coeff && t->setflag && !h->pick) {
             int nt = t->setflag_nt;
             for (int i = 1; i <= nt; i++)
                 for (int j = i; j <= nt; j++)
@@ -162,6 +253,8 @@ static void init(struct gravel *g, struct pair *p)
 static void pack(const struct pair *p, int itype, int jtype, double *param)
 {
     const struct hybrid *h = p->data;
+    if (h->pick)
+        param[0] = h->map[(size_t)(itype - 1) * h->nt + (jtype - 1)];
     for (int k = 0; k < h->n; k++)
         h->term[k].style->pack(&h->term[k], itype, jtype, param + h->off[k]);
 }
@@ -184,11 +277,13 @@ static const char *source_n(const struct pair *p, int k)
     return k == h->n ? "pair_hybrid_overlay.cl" : NULL;
 }
 
+
+
 static int defines(const struct pair *p, char *buf, size_t len)
 {
     const struct hybrid *h = p->data;
-    size_t n = (size_t)snprintf(buf, len, " -D PAIR_EVAL=hybrid_overlay_eval -D PAIR_TERMS=%d",
-                                h->n);
+    size_t n = (size_t)snprintf(buf, len, " -D PAIR_EVAL=%s -D PAIR_TERMS=%d",
+                                h->pick ? "hybrid_eval" : "hybrid_overlay_eval", h->n);
     for (int k = 0; k < h->n && n < len; k++) {
         const struct pair_style *st = h->term[k].style;
         n += (size_t)snprintf(buf + n, len - n,
@@ -210,6 +305,23 @@ const struct pair_style pair_style_hybrid_overlay = {
     .rotation = 0,
     .nparam = PAIR_MAXTERMS * PAIR_MAXPARAM,
     .settings = settings,
+    .pack = pack,
+    .collision_time = collision_time,
+    .coeff = coeff,
+    .init = init,
+    .source_n = source_n,
+    .defines = defines,
+    .destroy = destroy,
+};
+
+const struct pair_style pair_style_hybrid = {
+    .name = "hybrid",
+    .source = "pair_hybrid_overlay.cl",
+    .eval = "hybrid_eval",
+    .history = 0,
+    .rotation = 0,
+    .nparam = 1 + PAIR_MAXTERMS * PAIR_MAXPARAM,
+    .settings = settings_hybrid,
     .pack = pack,
     .collision_time = collision_time,
     .coeff = coeff,

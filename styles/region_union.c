@@ -1,6 +1,7 @@
 /* region_union.c - region union N id1 ... idN: points in any sub-region
  * (each with its own side). Bounded when every sub-region is bounded.
- * Sub-regions must exist already and cannot be deleted while used. */
+ * Sub-regions must exist already; a deleted one is replaced by the region of
+ * its ID when the union is next used (region_relink, src/region.c). */
 #include <math.h>
 #include <string.h>
 

@@ -69,9 +69,14 @@ TEST(union_intersect)
     struct region *u = region_find(g, "u"), *i = region_find(g, "i");
     CHECK(u->bbox && u->bbox_lo[0] == -1 && u->bbox_hi[0] == 2.5);
     CHECK(i->bbox && i->bbox_lo[0] == 0.5 && i->bbox_hi[0] == 1);
-    /* a sub-region in use cannot be deleted; an unused one can */
-    CHECK(test_script(g, "region a delete\n") == GR_ERR);
-    CHECK(strstr(g->err.msg, "used by a union or intersect") != NULL);
+    /* LAMMPS: a sub-region in use may be deleted; its compounds take the
+     * region of that ID defined when next used, or stop */
+    CHECK(test_script(g, "region a delete\n") == GR_OK);
+    CHECK(region_find(g, "a") == NULL && g->regions.n == 5);
+    CHECK(test_script(g, "create_box 1 u\ngroup gu region u\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "sub-region 'a' was deleted") != NULL);
+    CHECK(test_script(g, "region a sphere 5 0 0 1 units box\ngroup gu region u\n") == GR_OK);
+    CHECK(in(g, "u", 5, 0, 0) == 1 && in(g, "u", -0.9, 0, 0) == 0 && in(g, "u", 2.4, 0, 0) == 1);
     CHECK(test_script(g, "region u delete\nregion i delete\nregion shell delete\n"
                          "region a delete\n") == GR_OK);
     CHECK(region_find(g, "a") == NULL && g->regions.n == 2);
@@ -125,14 +130,37 @@ TEST(region_errors)
     CHECK_ERROR("region b plane 0 0 0 0 0 0\n", "plane normal cannot be zero", 1);
     CHECK_ERROR("region b sphere 0 0 0 1 side sideways\n", "side must be 'in' or 'out'", 1);
     CHECK_ERROR("region b sphere 0 0 0 1 units furlong\n", "units must be 'box' or 'lattice'", 1);
-    CHECK_ERROR("region b sphere 0 0 0 1 move v_x NULL NULL\n", "keyword 'move' is not supported",
-                1);
+    CHECK_ERROR("region b sphere 0 0 0 1 move x NULL NULL\n", "expected v_name or NULL", 1);
+    CHECK_ERROR("region b sphere 0 0 0 1 rotate v_t 0 0 0 0 0 0\n",
+                "rotation axis cannot have zero length", 1);
+    CHECK_ERROR("region b sphere 0 0 0 1 open 1\n", "has no faces to open", 1);
+    CHECK_ERROR("region b block 0 1 0 1 0 1 open 7\n", "open face", 1);
     CHECK_ERROR("region b sphere 0 0 0 1\nregion b sphere 0 0 0 2\n", "region 'b' already exists",
                 2);
     CHECK_ERROR("region b sphere 0 0 0 1\nregion u union 2 b c\n", "unknown region 'c'", 2);
     CHECK_ERROR("region b sphere 0 0 0 1\nregion u union 3 b b\n", "at least 2 sub-region IDs", 2);
     CHECK_ERROR("region b-1 sphere 0 0 0 1\n", "may contain only letters", 1);
     CHECK_ERROR("region x delete\n", "unknown region 'x'", 1);
+}
+
+TEST(motion_open)
+{
+    struct gravel *g = test_engine();
+    /* rotate by pi/2 about z through (0, 0, 0), then move by (0, 0, 3) */
+    CHECK(test_script(g, "region box block -5 5 -5 5 -5 5 units box\ncreate_box 1 box\n"
+                         "variable t equal PI/2\nvariable dz equal 3\n"
+                         "region r block 1 2 -0.5 0.5 -0.5 0.5 units box "
+                         "rotate v_t 0 0 0 0 0 1 move NULL NULL v_dz\n"
+                         "region o cylinder z 0 0 1 -1 1 open 3 units box\n"
+                         "group gr region r\n") == GR_OK);
+    CHECK(in(g, "r", 0, 1.5, 3) == 1 && in(g, "r", 1.5, 0, 3) == 0 && in(g, "r", 0, 1.5, 0) == 0);
+    struct region *r = region_find(g, "r");
+    CHECK_NEAR(r->theta, M_PI / 2, 1e-15);
+    CHECK(r->d[2] == 3 && r->d[0] == 0 && r->bbox == 0);
+    /* LAMMPS: a region with an open face matches every point */
+    CHECK(in(g, "o", 4, 4, 4) == 1 && region_find(g, "o")->open_faces[2] == 1);
+    CHECK(r->cmax == 6 && region_find(g, "o")->cmax == 3);
+    gr_destroy(g);
 }
 
 TEST(create_box_rules)
@@ -168,5 +196,6 @@ int main(void)
     RUN(lattice_units_inf_edge);
     RUN(region_errors);
     RUN(create_box_rules);
+    RUN(motion_open);
     return 0;
 }

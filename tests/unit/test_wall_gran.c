@@ -32,7 +32,9 @@ TEST(errors)
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zcylinder -2\n",
                 "cylinder radius", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 region r\n",
-                "'region' is not supported", 6);
+                "wall style 'region' belongs to fix wall/gran/region", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran/region hooke 1 NULL 1 NULL 0.5 1 zplane 0 1\n",
+                "expects 'region ID'", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wigle z 1 1\n",
                 "unknown fix wall/gran keyword 'wigle'", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL wiggle q 1 1\n",

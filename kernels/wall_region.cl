@@ -1,0 +1,642 @@
+/* wall_region.cl - geometry kind "region" of the wall stage (kernels/wall.cl;
+ * host side src/wall_region.c; front-end fix wall/gran/region): the surface
+ * contacts of a LAMMPS region, as LAMMPS computes them (Region::surface,
+ * surface_interior / surface_exterior of block, sphere, cylinder, cone and
+ * plane, union and intersect of those), as pure functions of the particle.
+ *
+ * A region is up to RG_MAXNODE primitive nodes of RG_NODE REAL each (layout
+ * RG_* below, filled by src/wall_region.c every step) and a combinator: 0 a
+ * single primitive (node 0), 1 union, 2 intersect of the nodes, with the
+ * compound's side. Each node carries its own side, open faces and motion:
+ * the particle is taken into the node's static frame (subtract d, rotate by
+ * -theta about P), the contacts found there, and each contact point taken
+ * back (rotate by theta, add d), as Region::surface does. A contact is its
+ * distance r, curvature radius (0 flat, < 0 concave), del = x - contact
+ * point, and a wall id (iwall) that keys its history. Coordinates are the
+ * device's (relative to the run's origin: the host shifts the nodes). */
+
+#define RG_MAXNODE 4
+#define RG_NODE 40
+#define RG_MAXC 8       /* = WALL_REGION_MAXC in src/wall.h */
+
+/* node layout */
+#define RG_KIND 0       /* 1 block, 2 sphere, 3 cylinder, 4 cone, 5 plane */
+#define RG_INTERIOR 1
+#define RG_OPENFLAG 2
+#define RG_OPEN 3       /* open faces 0..5 as bits */
+#define RG_AXIS 4
+#define RG_WALLOFF 5    /* wall id offset inside a union / intersect */
+#define RG_MOVE 6
+#define RG_ROT 7
+#define RG_P 8          /* 8 shape parameters */
+#define RG_D 16         /* displacement */
+#define RG_SIN 19
+#define RG_COS 20
+#define RG_POINT 21
+#define RG_RUNIT 24
+#define RG_V 27
+#define RG_OMEGA 30
+#define RG_RPOINT 33
+
+#define RG_BLOCK 1
+#define RG_SPHERE 2
+#define RG_CYLINDER 3
+#define RG_CONE 4
+#define RG_PLANE 5
+#define RG_BIG ((REAL)1.0e20)
+
+struct rg_contact {
+    REAL r, radius;
+    REAL3 del;
+    int iwall, node;
+};
+
+static inline REAL3 rg_vec(__global const REAL *nd, const int k)
+{
+    return (REAL3)(nd[k], nd[k + 1], nd[k + 2]);
+}
+
+/* Region::rotate: about the axis through P by the angle of (s, c) */
+static inline REAL3 rg_rotate(__global const REAL *nd, const REAL3 x, const REAL s, const REAL c)
+{
+    const REAL3 p = rg_vec(nd, RG_POINT), u = rg_vec(nd, RG_RUNIT);
+    const REAL3 d = x - p;
+    const REAL dot = d.x * u.x + d.y * u.y + d.z * u.z;
+    const REAL3 cc = dot * u;
+    const REAL3 a = d - cc;
+    const REAL3 b = (REAL3)(u.y * a.z - u.z * a.y, u.z * a.x - u.x * a.z, u.x * a.y - u.y * a.x);
+    return p + cc + (a * c + b * s);
+}
+
+static inline REAL3 rg_inverse(__global const REAL *nd, REAL3 x)
+{
+    if (nd[RG_MOVE] != 0)
+        x -= rg_vec(nd, RG_D);
+    if (nd[RG_ROT] != 0)
+        x = rg_rotate(nd, x, -nd[RG_SIN], nd[RG_COS]);
+    return x;
+}
+
+static inline REAL3 rg_forward(__global const REAL *nd, REAL3 x)
+{
+    if (nd[RG_ROT] != 0)
+        x = rg_rotate(nd, x, nd[RG_SIN], nd[RG_COS]);
+    if (nd[RG_MOVE] != 0)
+        x += rg_vec(nd, RG_D);
+    return x;
+}
+
+static inline REAL rg_comp(const REAL3 v, const int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
+
+static inline REAL3 rg_set(REAL3 v, const int k, const REAL a)
+{
+    if (k == 0)
+        v.x = a;
+    else if (k == 1)
+        v.y = a;
+    else
+        v.z = a;
+    return v;
+}
+
+/* a point from its axial coordinate and two transverse ones (LAMMPS c1, c2
+ * order: y z for axis x, x z for y, x y for z) */
+static inline REAL3 rg_axial(const int ax, const REAL a, const REAL t1, const REAL t2)
+{
+    return ax == 0 ? (REAL3)(a, t1, t2) : ax == 1 ? (REAL3)(t1, a, t2) : (REAL3)(t1, t2, a);
+}
+
+static inline REAL rg_t1(const int ax, const REAL3 x) { return ax == 0 ? x.y : x.x; }
+static inline REAL rg_t2(const int ax, const REAL3 x) { return ax == 2 ? x.y : x.z; }
+
+/* geometric interior (inclusive), in the node's frame */
+static inline int rg_inside(__global const REAL *nd, const REAL3 x)
+{
+    __global const REAL *p = nd + RG_P;
+    const int kind = (int)nd[RG_KIND], ax = (int)nd[RG_AXIS];
+    if (kind == RG_BLOCK)
+        return x.x >= p[0] && x.x <= p[1] && x.y >= p[2] && x.y <= p[3] && x.z >= p[4] &&
+               x.z <= p[5];
+    if (kind == RG_SPHERE) {
+        const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
+        return sqrt(d.x * d.x + d.y * d.y + d.z * d.z) <= p[3];
+    }
+    if (kind == RG_PLANE)
+        return (x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5] >= 0;
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL dist = sqrt(d1 * d1 + d2 * d2);
+    if (kind == RG_CYLINDER)
+        return dist <= p[2] && a >= p[3] && a <= p[4];
+    /* cone: c1 c2 radlo radhi lo hi */
+    const REAL rad = p[2] + (a - p[4]) * (p[3] - p[2]) / (p[5] - p[4]);
+    return dist <= rad && a >= p[4] && a <= p[5];
+}
+
+/* Region::match in the compound's frame (flip: the side inverted) */
+static inline int rg_match(__global const REAL *nd, const REAL3 x, const int flip)
+{
+    const REAL3 y = rg_inverse(nd, x);
+    if (nd[RG_OPENFLAG] != 0)
+        return 1;
+    return rg_inside(nd, y) == (((int)nd[RG_INTERIOR]) ^ flip);
+}
+
+static inline int rg_open(__global const REAL *nd, const int face)
+{
+    return ((int)nd[RG_OPEN] >> face) & 1;
+}
+
+static inline void rg_put(struct rg_contact *c, const REAL r, const REAL3 del, const REAL radius,
+                          const int iwall)
+{
+    c->r = r;
+    c->del = del;
+    c->radius = radius;
+    c->iwall = iwall;
+}
+
+/* Region::add_contact: from the surface point xp */
+static inline void rg_add(struct rg_contact *c, const REAL3 x, const REAL3 xp)
+{
+    const REAL3 d = x - xp;
+    c->del = d;
+    c->r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    c->radius = 0;
+    c->iwall = 0;
+}
+
+/* Region::point_on_line_segment: nearest point to c on segment ab */
+static inline REAL3 rg_segment(const REAL3 a, const REAL3 b, const REAL3 c)
+{
+    const REAL3 ba = b - a, ca = c - a;
+    const REAL t = (ca.x * ba.x + ca.y * ba.y + ca.z * ba.z) / (ba.x * ba.x + ba.y * ba.y + ba.z * ba.z);
+    if (t <= 0)
+        return a;
+    if (t >= 1)
+        return b;
+    return a + t * ba;
+}
+
+static inline REAL rg_dsq(const REAL3 a, const REAL3 b)
+{
+    const REAL3 d = a - b;
+    return d.x * d.x + d.y * d.y + d.z * d.z;
+}
+
+/* ---- surface_interior: contacts with the inner faces, 0 <= r < cutoff ---- */
+static inline int rg_interior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                              struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int kind = (int)nd[RG_KIND], ax = (int)nd[RG_AXIS];
+    int n = 0;
+    if (kind == RG_BLOCK) {
+        if (x.x < p[0] || x.x > p[1] || x.y < p[2] || x.y > p[3] || x.z < p[4] || x.z > p[5])
+            return 0;
+        for (int f = 0; f < 6; f++) {
+            const int k = f >> 1;
+            const REAL delta = (f & 1) ? p[f] - rg_comp(x, k) : rg_comp(x, k) - p[f];
+            if (delta < cutoff && !rg_open(nd, f)) {
+                rg_put(&c[n], delta, rg_set((REAL3)(0), k, (f & 1) ? -delta : delta), 0, f);
+                n++;
+            }
+        }
+        return n;
+    }
+    if (kind == RG_SPHERE) {
+        const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
+        const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        if (r > p[3] || r == 0)
+            return 0;
+        const REAL delta = p[3] - r;
+        if (delta < cutoff) {
+            rg_put(&c[0], delta, d * (1 - p[3] / r), -p[3], 0);
+            return 1;
+        }
+        return 0;
+    }
+    if (kind == RG_PLANE) {
+        const REAL dot = (x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5];
+        if (dot < cutoff && dot >= 0) {
+            rg_put(&c[0], dot, (REAL3)(dot * p[3], dot * p[4], dot * p[5]), 0, 0);
+            return 1;
+        }
+        return 0;
+    }
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL r = sqrt(d1 * d1 + d2 * d2);
+    REAL lo, hi;
+    if (kind == RG_CYLINDER) {
+        const REAL rad = p[2];
+        lo = p[3];
+        hi = p[4];
+        if (r > rad || a < lo || a > hi)
+            return 0;
+        const REAL delta = rad - r;
+        if (delta < cutoff && r > 0 && !rg_open(nd, 2)) {
+            rg_put(&c[n], delta, rg_axial(ax, 0, d1 * (1 - rad / r), d2 * (1 - rad / r)),
+                   -2 * rad, 2);
+            n++;
+        }
+    } else { /* cone */
+        const REAL rlo = p[2], rhi = p[3];
+        lo = p[4];
+        hi = p[5];
+        const REAL cur = rlo + (a - lo) * (rhi - rlo) / (hi - lo);
+        if (r > cur || a < lo || a > hi)
+            return 0;
+        if (r > 0 && !rg_open(nd, 2)) {
+            const REAL3 slo = rg_axial(ax, lo, p[0] + d1 * rlo / r, p[1] + d2 * rlo / r);
+            const REAL3 shi = rg_axial(ax, hi, p[0] + d1 * rhi / r, p[1] + d2 * rhi / r);
+            const REAL3 xs = rg_segment(slo, shi, x);
+            const REAL3 del = x - xs;
+            const REAL dist = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
+            if (dist < cutoff) {
+                rg_put(&c[n], dist, del,
+                       -2 * (rlo + (rg_comp(xs, ax) - lo) * (rhi - rlo) / (hi - lo)), 2);
+                n++;
+            }
+        }
+    }
+    REAL delta = a - lo;
+    if (delta < cutoff && !rg_open(nd, 0)) {
+        rg_put(&c[n], delta, rg_set((REAL3)(0), ax, delta), 0, 0);
+        n++;
+    }
+    delta = hi - a;
+    if (delta < cutoff && !rg_open(nd, 1)) {
+        rg_put(&c[n], delta, rg_set((REAL3)(0), ax, -delta), 0, 1);
+        n++;
+    }
+    return n;
+}
+
+/* ---- surface_exterior: the one nearest outer surface point, r < cutoff ---- */
+static inline int rg_exterior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                              struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int kind = (int)nd[RG_KIND], ax = (int)nd[RG_AXIS];
+    const int openflag = nd[RG_OPENFLAG] != 0;
+    if (kind == RG_BLOCK) {
+        if (x.x <= p[0] - cutoff || x.x >= p[1] + cutoff || x.y <= p[2] - cutoff ||
+            x.y >= p[3] + cutoff || x.z <= p[4] - cutoff || x.z >= p[5] + cutoff)
+            return 0;
+        if (x.x > p[0] && x.x < p[1] && x.y > p[2] && x.y < p[3] && x.z > p[4] && x.z < p[5])
+            return 0;
+        const REAL3 lo = (REAL3)(p[0], p[2], p[4]), hi = (REAL3)(p[1], p[3], p[5]);
+        REAL3 xp = clamp(x, lo, hi);
+        if (openflag) { /* nearest point of the closed faces (each a clamped rectangle) */
+            REAL best = RG_BIG;
+            for (int f = 0; f < 6; f++) {
+                if (rg_open(nd, f))
+                    continue;
+                const REAL3 q = rg_set(clamp(x, lo, hi), f >> 1, p[f]);
+                const REAL dsq = rg_dsq(x, q);
+                if (dsq < best) {
+                    best = dsq;
+                    xp = q;
+                }
+            }
+        }
+        rg_add(&c[0], x, xp);
+        return c[0].r < cutoff;
+    }
+    if (kind == RG_SPHERE) {
+        const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
+        const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        if (r < p[3])
+            return 0;
+        const REAL delta = r - p[3];
+        if (delta < cutoff) {
+            rg_put(&c[0], delta, d * (1 - p[3] / r), p[3], 0);
+            return 1;
+        }
+        return 0;
+    }
+    if (kind == RG_PLANE) {
+        const REAL dot = -((x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5]);
+        if (dot < cutoff && dot >= 0) {
+            rg_put(&c[0], dot, (REAL3)(-dot * p[3], -dot * p[4], -dot * p[5]), 0, 0);
+            return 1;
+        }
+        return 0;
+    }
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL r = sqrt(d1 * d1 + d2 * d2);
+    if (kind == RG_CYLINDER) {
+        const REAL rad = p[2], lo = p[3], hi = p[4];
+        if (r >= rad + cutoff || a <= lo - cutoff || a >= hi + cutoff)
+            return 0;
+        if (r < rad && a > lo && a < hi)
+            return 0;
+        REAL crad = 0, ap, t1, t2;
+        if (!openflag) {
+            if (r > rad) {
+                t1 = p[0] + d1 * rad / r;
+                t2 = p[1] + d2 * rad / r;
+                crad = 2 * rad;
+            } else {
+                t1 = rg_t1(ax, x);
+                t2 = rg_t2(ax, x);
+            }
+            ap = a < lo ? lo : a > hi ? hi : a;
+        } else {
+            const REAL dr = r - rad, dr2 = dr * dr;
+            REAL d2prev = RG_BIG, dd;
+            ap = a;
+            t1 = rg_t1(ax, x);
+            t2 = rg_t2(ax, x);
+            if (!rg_open(nd, 2)) {
+                t1 = p[0] + d1 * rad / r;
+                t2 = p[1] + d2 * rad / r;
+                REAL dx;
+                if (a < lo) {
+                    dx = lo - a;
+                    ap = lo;
+                } else if (a > hi) {
+                    dx = a - hi;
+                    ap = hi;
+                } else {
+                    dx = 0;
+                    ap = a;
+                }
+                d2prev = dr2 + dx * dx;
+            }
+            if (!rg_open(nd, 0)) {
+                const REAL dx = lo - a;
+                dd = r < rad ? dx * dx : dr2 + dx * dx;
+                if (dd < d2prev) {
+                    ap = lo;
+                    if (r < rad) {
+                        t1 = rg_t1(ax, x);
+                        t2 = rg_t2(ax, x);
+                    }
+                    d2prev = dd;
+                }
+            }
+            if (!rg_open(nd, 1)) {
+                const REAL dx = hi - a;
+                dd = r < rad ? dx * dx : dr2 + dx * dx;
+                if (dd < d2prev) {
+                    ap = hi;
+                    if (r < rad) {
+                        t1 = rg_t1(ax, x);
+                        t2 = rg_t2(ax, x);
+                    }
+                }
+            }
+        }
+        rg_add(&c[0], x, rg_axial(ax, ap, t1, t2));
+        c[0].radius = crad;
+        return c[0].r < cutoff;
+    }
+    /* cone */
+    const REAL rlo = p[2], rhi = p[3], lo = p[4], hi = p[5], rmax = p[6];
+    const REAL cur = rlo + (a - lo) * (rhi - rlo) / (hi - lo);
+    if (r >= rmax + cutoff || a <= lo - cutoff || a >= hi + cutoff)
+        return 0;
+    if (r < cur && a > lo && a < hi)
+        return 0;
+    const REAL3 c1 = rg_axial(ax, lo, p[0] + d1 * rlo / r, p[1] + d2 * rlo / r);
+    const REAL3 c2 = rg_axial(ax, hi, p[0] + d1 * rhi / r, p[1] + d2 * rhi / r);
+    const REAL3 c3 = rg_axial(ax, lo, p[0], p[1]), c4 = rg_axial(ax, hi, p[0], p[1]);
+    REAL best = RG_BIG, crad = 0;
+    REAL3 nearest = x;
+    if (!rg_open(nd, 2)) {
+        const REAL3 q = rg_segment(c1, c2, x);
+        const REAL dsq = rg_dsq(x, q);
+        if (dsq < best) {
+            best = dsq;
+            nearest = q;
+        }
+        crad = -2 * (rlo + (rg_comp(nearest, ax) - lo) * (rhi - rlo) / (hi - lo));
+    }
+    for (int f = 0; f < 2; f++) {
+        if (rg_open(nd, f))
+            continue;
+        const REAL3 q = f == 0 ? rg_segment(c1, c3, x) : rg_segment(c2, c4, x);
+        const REAL dsq = rg_dsq(x, q);
+        if (dsq < best) {
+            best = dsq;
+            nearest = q;
+            crad = 0;
+        }
+    }
+    if (best == RG_BIG)
+        return 0;
+    rg_add(&c[0], x, nearest);
+    c[0].radius = crad;
+    return c[0].r < cutoff;
+}
+
+/* Region::surface of one node (flip: side inverted, as union / intersect do
+ * for their exterior), contacts written from c[0]; returns how many. */
+static inline int rg_surface(__global const REAL *nd, const int node, const REAL3 xorig,
+                             const REAL cutoff, const int flip, struct rg_contact *c)
+{
+    const REAL3 x = rg_inverse(nd, xorig);
+    int n;
+    if (nd[RG_OPENFLAG] == 0)
+        n = (((int)nd[RG_INTERIOR]) ^ flip) ? rg_interior(nd, x, cutoff, c)
+                                             : rg_exterior(nd, x, cutoff, c);
+    else { /* one of the two finds nothing */
+        n = rg_exterior(nd, x, cutoff, c);
+        n += rg_interior(nd, x, cutoff, c + n);
+    }
+    for (int k = 0; k < n; k++) {
+        c[k].node = node;
+        if (nd[RG_ROT] != 0)
+            c[k].del = xorig - rg_forward(nd, x - c[k].del);
+    }
+    return n;
+}
+
+/* Region::match of the whole region */
+static inline int region_match(__global const REAL *nodes, const int nnode, const int comb,
+                               const int interior, const REAL3 x)
+{
+    if (comb == 0)
+        return rg_match(nodes, x, 0);
+    int any = 0, all = 1;
+    for (int k = 0; k < nnode; k++) {
+        const int m = rg_match(nodes + k * RG_NODE, x, 0);
+        any |= m;
+        all &= m;
+    }
+    return (comb == 1 ? any : all) == interior;
+}
+
+/* Region::surface of the whole region: up to RG_MAXC contacts into c. A
+ * union keeps a sub-region's contact whose point lies in no other (closed)
+ * sub-region, an intersect one whose point lies in all others; the side out
+ * of both works on the inverted sub-regions (LAMMPS RegUnion, RegIntersect). */
+static inline int region_surface(__global const REAL *nodes, const int nnode, const int comb,
+                                 const int interior, const REAL3 x, const REAL cutoff,
+                                 struct rg_contact *c)
+{
+    if (comb == 0)
+        return rg_surface(nodes, 0, x, cutoff, 0, c);
+    const int flip = !interior;
+    int n = 0;
+    for (int k = 0; k < nnode && n < RG_MAXC; k++) {
+        __global const REAL *nd = nodes + k * RG_NODE;
+        struct rg_contact s[RG_MAXC]; /* an open face point on the surface: 1 + 6 */
+        const int ns = rg_surface(nd, k, x, cutoff, flip, s);
+        for (int m = 0; m < ns && n < RG_MAXC; m++) {
+            const REAL3 xs = x - s[m].del;
+            int keep = 1;
+            for (int j = 0; j < nnode; j++) {
+                if (j == k)
+                    continue;
+                __global const REAL *nj = nodes + j * RG_NODE;
+                const int mj = rg_match(nj, xs, flip);
+                /* union in / intersect out: drop when another contains it;
+                 * intersect in / union out: drop when another does not */
+                const int drop = (comb == 1) == (interior != 0)
+                                     ? (mj && (comb == 2 || nj[RG_OPENFLAG] == 0))
+                                     : !mj;
+                if (drop) {
+                    keep = 0;
+                    break;
+                }
+            }
+            if (!keep)
+                continue;
+            c[n] = s[m];
+            c[n].iwall = interior ? s[m].iwall + (int)nd[RG_WALLOFF] : k;
+            n++;
+        }
+    }
+    return n;
+}
+
+/* surface velocity of node nd at contact point xc (Region::velocity_contact) */
+static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
+{
+    REAL3 v = (REAL3)(0);
+    if (nd[RG_MOVE] != 0)
+        v = rg_vec(nd, RG_V);
+    if (nd[RG_ROT] != 0) {
+        const REAL3 w = rg_vec(nd, RG_OMEGA), rp = rg_vec(nd, RG_RPOINT);
+        v.x += w.y * (xc.z - rp.z) - w.z * (xc.y - rp.y);
+        v.y += w.z * (xc.x - rp.x) - w.x * (xc.z - rp.z);
+        v.z += w.x * (xc.y - rp.y) - w.y * (xc.x - rp.x);
+    }
+    return v;
+}
+
+/* One work-item per atom of the group (fix wall/gran/region). An atom the
+ * region does not match is skipped, its history kept; otherwise its contacts
+ * are evaluated through EVAL in region order. History per atom (hstride =
+ * 1 + 4 slots REAL): the contact count, the wall id of each slot, then 3
+ * REAL of shear per slot, kept and compacted as LAMMPS FixWallGranRegion
+ * (update_contacts: slots of walls no longer touched are replaced by the
+ * last one, new walls appended with zero shear; c2r maps as LAMMPS does).
+ * dynamic: the surface moves with the velocity of the contact's node (0:
+ * at rest; the host passes 0 for union / intersect, as LAMMPS 2021). */
+#define REGION_KERNEL(NAME, EVAL)                                                              \
+    __kernel void NAME(                                                                        \
+        const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
+        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
+        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
+        __global REAL *torque, __global REAL *history, const int has_history,                  \
+        __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
+        __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
+        const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM)  \
+    {                                                                                          \
+        const int i = get_global_id(0);                                                        \
+        if (i >= n || !(mask[i] & groupbit))                                                   \
+            return;                                                                            \
+        const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
+        if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
+            return;                                                                            \
+        const REAL radi = radius[i];                                                           \
+        struct rg_contact c[RG_MAXC];                                                          \
+        int nc = region_surface(nodes, nnode, comb, rinterior, xi, radi, c);                   \
+        if (nc > slots)                                                                        \
+            nc = slots;                                                                        \
+        __global REAL *hist = has_history ? history + (size_t)i * (1 + 4 * slots) : history;   \
+        int c2r[RG_MAXC];                                                                      \
+        for (int k = 0; k < RG_MAXC; k++)                                                      \
+            c2r[k] = k;                                                                        \
+        if (has_history) {                                                                     \
+            int ncont = (int)hist[0];                                                          \
+            __global REAL *walls = hist + 1, *sh = hist + 1 + slots;                           \
+            if (nc == 0) {                                                                     \
+                hist[0] = 0;                                                                   \
+                return;                                                                        \
+            }                                                                                  \
+            if (nc == 1 && ncont == 0) {                                                       \
+                c2r[0] = 0;                                                                    \
+                ncont = 1;                                                                     \
+                walls[0] = (REAL)c[0].iwall;                                                   \
+                sh[0] = sh[1] = sh[2] = 0;                                                     \
+            } else if (nc == 1 && ncont == 1 && (int)walls[0] == c[0].iwall) {                 \
+                c2r[0] = 0;                                                                    \
+            } else {                                                                           \
+                int iold = 0;                                                                  \
+                while (iold < ncont) {                                                         \
+                    int m = 0;                                                                 \
+                    while (m < nc && c[m].iwall != (int)walls[iold])                           \
+                        m++;                                                                   \
+                    if (m >= nc) {                                                             \
+                        const int last = ncont - 1;                                            \
+                        for (int q = 0; q < 3; q++)                                            \
+                            sh[3 * iold + q] = sh[3 * last + q];                               \
+                        walls[iold] = walls[last];                                             \
+                        ncont--;                                                               \
+                    } else                                                                     \
+                        iold++;                                                                \
+                }                                                                              \
+                const int nold = ncont;                                                        \
+                for (int inew = 0; inew < nc; inew++) {                                        \
+                    int m = 0;                                                                 \
+                    while (m < nold && (int)walls[m] != c[inew].iwall)                         \
+                        m++;                                                                   \
+                    if (m < nold)                                                              \
+                        c2r[m] = inew;                                                         \
+                    else {                                                                     \
+                        c2r[ncont] = inew;                                                     \
+                        sh[3 * ncont] = sh[3 * ncont + 1] = sh[3 * ncont + 2] = 0;             \
+                        walls[ncont] = (REAL)c[inew].iwall;                                    \
+                        ncont++;                                                               \
+                    }                                                                          \
+                }                                                                              \
+            }                                                                                  \
+            hist[0] = (REAL)ncont;                                                             \
+        }                                                                                      \
+        const int ti = type[i] - 1;                                                            \
+        __global const REAL *p =                                                               \
+            by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;                     \
+        REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
+        for (int ic = 0; ic < nc; ic++) {                                                      \
+            const REAL3 del = c[ic].del;                                                       \
+            REAL3 vwall = (REAL3)(0);                                                          \
+            if (dynamic)                                                                       \
+                vwall = region_velocity(nodes + c[ic].node * RG_NODE, xi - del);               \
+            const REAL rw = c[ic].radius;                                                      \
+            WALL_OMEGA(omi, omega, i);                                                         \
+            struct contact ct = contact_make(                                                  \
+                del, radi, 0, rw == (REAL)0 ? radi : radi * rw / (rw + radi),                  \
+                vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);                              \
+            ct.rsq = c[ic].r * c[ic].r; /* LAMMPS: rsq = r^2, then r = sqrt(rsq) */            \
+            ct.r = sqrt(ct.rsq);                                                               \
+            ct.delta = ct.radsum - ct.r;                                                       \
+            ct.dt = dt;                                                                        \
+            ct.shearupdate = shearupdate;                                                      \
+            __global REAL *hs = has_history ? hist + 1 + slots + 3 * c2r[ic] : hist;           \
+            REAL3 sh = has_history ? (REAL3)(hs[0], hs[1], hs[2]) : (REAL3)(0);                \
+            struct contact_force cf;                                                           \
+            EVAL(&ct, p, &sh, &cf);                                                            \
+            if (has_history) {                                                                 \
+                hs[0] = sh.x;                                                                  \
+                hs[1] = sh.y;                                                                  \
+                hs[2] = sh.z;                                                                  \
+            }                                                                                  \
+            fsum += cf.f;                                                                      \
+            tsum += contact_torque_i(&ct, &cf);                                                \
+        }                                                                                      \
+        vstore3(fsum, i, f);                                                                   \
+        WALL_ADD_TORQUE(torque, i, tsum);                                                      \
+    }

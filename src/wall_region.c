@@ -1,0 +1,168 @@
+/* wall_region.c - host side of the region kind of the wall stage
+ * (kernels/wall_region.cl): a region packed as device nodes (layout RG_* of
+ * the kernel file), its motion evaluated once per step (Region::prematch and
+ * set_velocity), the launch. */
+#include <math.h>
+#include <string.h>
+
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "region.h"
+#include "variable.h"
+#include "wall.h"
+
+/* = kernels/wall_region.cl */
+#define RG_NODE 40
+enum { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
+enum {
+    RG_KIND = 0, RG_INTERIOR, RG_OPENFLAG, RG_OPEN, RG_AXIS, RG_WALLOFF, RG_MOVE, RG_ROT,
+    RG_P = 8, RG_D = 16, RG_SIN = 19, RG_COS = 20, RG_POINT = 21, RG_RUNIT = 24, RG_V = 27,
+    RG_OMEGA = 30, RG_RPOINT = 33
+};
+
+static int primitive_kind(const struct region *r)
+{
+    static const char *const names[] = {"block", "sphere", "cylinder", "cone", "plane"};
+    for (int k = 0; k < 5; k++)
+        if (!strcmp(r->style->name, names[k]))
+            return k + 1;
+    return 0;
+}
+
+static int compound_kind(const struct region *r)
+{
+    return !strcmp(r->style->name, "union") ? 1 : !strcmp(r->style->name, "intersect") ? 2 : 0;
+}
+
+static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+
+/* Device coordinates are relative to the run's origin (eng->origin; 0 in
+ * double precision): every position parameter is shifted by it. */
+static void pack_node(const struct region *r, int walloff, const double o[3], double *nd)
+{
+    memset(nd, 0, RG_NODE * sizeof *nd);
+    nd[RG_KIND] = primitive_kind(r);
+    nd[RG_INTERIOR] = r->interior;
+    nd[RG_OPENFLAG] = r->openflag;
+    int bits = 0;
+    for (int k = 0; k < 6; k++)
+        bits |= r->open_faces[k] << k;
+    nd[RG_OPEN] = bits;
+    nd[RG_AXIS] = r->dim;
+    nd[RG_WALLOFF] = walloff;
+    nd[RG_MOVE] = r->moveflag;
+    nd[RG_ROT] = r->rotateflag;
+    memcpy(nd + RG_P, r->p, 8 * sizeof *nd);
+    if (nd[RG_KIND] == RG_CONE)
+        nd[RG_P + 6] = fmax(r->p[2], r->p[3]);
+    for (int k = 0; k < 3; k++) {
+        nd[RG_D + k] = r->d[k];
+        nd[RG_POINT + k] = r->point[k];
+        nd[RG_RUNIT + k] = r->runit[k];
+        nd[RG_V + k] = r->v[k];
+        nd[RG_OMEGA + k] = r->omega[k];
+        nd[RG_RPOINT + k] = r->rpoint[k];
+    }
+    nd[RG_SIN] = sin(r->theta);
+    nd[RG_COS] = cos(r->theta);
+    double *p = nd + RG_P;
+    int kind = (int)nd[RG_KIND], ax = r->dim;
+    if (kind == RG_BLOCK)
+        for (int k = 0; k < 6; k++)
+            p[k] -= o[k / 2];
+    else if (kind == RG_SPHERE || kind == RG_PLANE)
+        for (int k = 0; k < 3; k++)
+            p[k] -= o[k];
+    else {
+        p[0] -= o[trans[ax][0]];
+        p[1] -= o[trans[ax][1]];
+        int lo = kind == RG_CYLINDER ? 3 : 4;
+        p[lo] -= o[ax];
+        p[lo + 1] -= o[ax];
+    }
+    for (int k = 0; k < 3; k++) {
+        nd[RG_POINT + k] -= o[k];
+        nd[RG_RPOINT + k] -= o[k];
+    }
+}
+
+static void check_vars(struct gravel *g, const struct region *r, const char *who)
+{
+    for (int k = 0; k < 3; k++)
+        if (r->moveflag && r->mvar[k][0] && !var_exists(g, r->mvar[k]))
+            gr_error(g, "%s: variable '%s' of region %s does not exist", who, r->mvar[k], r->id);
+    if (r->rotateflag && !var_exists(g, r->tvar))
+        gr_error(g, "%s: variable '%s' of region %s does not exist", who, r->tvar, r->id);
+}
+
+size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
+                        const struct wall_law *law, const char *who)
+{
+    region_relink(g, r);
+    int comb = compound_kind(r);
+    int nnode = comb ? r->nsub : 1;
+    if (nnode > WALL_REGION_MAXNODE)
+        gr_error(g, "%s: region %s has %d sub-regions, at most %d can be a wall", who, r->id,
+                 nnode, WALL_REGION_MAXNODE);
+    for (int k = 0; k < nnode; k++) {
+        const struct region *s = comb ? r->sub[k] : r;
+        if (!primitive_kind(s))
+            gr_error(g, "%s: region %s (%s) cannot be a wall: a wall region is a block, sphere, "
+                        "cylinder, cone or plane, or a union or intersect of those",
+                     who, s->id, s->style->name);
+        check_vars(g, s, who);
+    }
+    wr->nnode = nnode;
+    wr->comb = comb;
+    wr->interior = r->interior;
+    wr->slots = r->cmax < WALL_REGION_MAXC ? r->cmax : WALL_REGION_MAXC;
+    if (wr->nodes)
+        clReleaseMemObject(wr->nodes);
+    wr->nodes = eng_alloc(g, (size_t)nnode * RG_NODE * eng_get(g)->rsz, "wall region nodes");
+    for (int k = 0; k < nnode; k++) /* a new run: velocities by difference restart */
+        (comb ? r->sub[k] : r)->vel_step = -1;
+    return law->history ? (size_t)(1 + 4 * wr->slots) * eng_get(g)->rsz : 0;
+}
+
+void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
+                       struct region *r, const struct wall_law *law)
+{
+    int dynamic = region_dynamic(r);
+    /* LAMMPS 29Sep2021: a union or intersect has no motion of its own, so
+     * Region::velocity_contact gives its contacts a resting surface even
+     * where a sub-region moves; matched here */
+    int vdyn = wr->comb ? 0 : dynamic;
+    if (dynamic) {
+        region_prematch(g, r);
+        region_set_velocity(g, r);
+    }
+    double nodes[WALL_REGION_MAXNODE * RG_NODE];
+    int walloff = 0;
+    for (int k = 0; k < wr->nnode; k++) {
+        const struct region *s = wr->comb ? r->sub[k] : r;
+        pack_node(s, walloff, g->eng->origin, nodes + k * RG_NODE);
+        walloff += s->cmax;
+    }
+    eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
+    struct dev_atoms *a = eng_atoms(g);
+    cl_kernel k = law->kernel;
+    int i = wall_bind_law(g, law, k, wall_bind_atoms(g, f, law, k));
+    eng_arg_mem(g, k, i++, wr->nodes);
+    eng_arg_int(g, k, i++, wr->nnode);
+    eng_arg_int(g, k, i++, wr->comb);
+    eng_arg_int(g, k, i++, wr->interior);
+    eng_arg_int(g, k, i++, wr->slots);
+    eng_arg_int(g, k, i++, vdyn);
+    eng_arg_real(g, k, i++, g->dt);
+    eng_arg_int(g, k, i++, !eng_in_setup(g));
+    eng_arg_pos_lo(g, k, i);
+    eng_launch(g, k, (size_t)a->n);
+}
+
+void wall_region_release(struct wall_region *wr)
+{
+    if (wr->nodes)
+        clReleaseMemObject(wr->nodes);
+    wr->nodes = NULL;
+}
