@@ -541,6 +541,7 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
         __global const REAL *rmass, __global const int *type, __global REAL *f,                \
         __global REAL *torque, __global REAL *history, const int has_history,                  \
+        __global REAL *acc, __global int *astep, const int acode, const int step,              \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
         const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM)  \
@@ -629,6 +630,7 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
             REAL3 sh = has_history ? (REAL3)(hs[0], hs[1], hs[2]) : (REAL3)(0);                \
             struct contact_force cf;                                                           \
             EVAL(&ct, p, &sh, &cf);                                                            \
+            ACC_NOTE_WALL(EVAL, i, &ct, p, acode, acc, astep, step);                           \
             if (has_history) {                                                                 \
                 hs[0] = sh.x;                                                                  \
                 hs[1] = sh.y;                                                                  \
