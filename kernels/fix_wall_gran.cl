@@ -2,11 +2,39 @@
  * semantics; host side styles/fix_wall_gran.c): the wall stage of the
  * contact pipeline (kernels/wall.cl) with the pair evaluators of
  * pair_gran_hooke.cl, pair_gran_hooke_history.cl and
- * pair_gran_hertz_history.cl, so the wall physics is the pair physics. */
+ * pair_gran_hertz_history.cl, so the wall physics is the pair physics;
+ * model granular takes the sub-models of pair_granular.cl with the wall's
+ * own layout (run-time: one model per wall, param GRW_*). */
+
+static inline void wall_granular_eval(const struct contact *c, __global const REAL *p, REAL *h,
+                                      struct contact_force *out)
+{
+    const struct gr_layout L = {1 << (int)p[GR_NMODEL], 1 << (int)p[GR_DMODEL],
+                                1 << (int)p[GR_TMODEL], 1 << (int)p[GR_RMODEL],
+                                1 << (int)p[GR_WMODEL], (int)p[GRW_TANG],
+                                (int)p[GRW_HA],         (int)p[GRW_HROLL],
+                                (int)p[GRW_HTWIST],     (int)p[GRW_HTOUCH],
+                                (int)p[GRW_WIDTH],      1};
+    granular_eval_l(c, p, h, out, L);
+}
+
+/* accuracy record: the Hertz collision time of the wall's kn (hertz,
+ * hertz/material, dmt), the linear one for hooke; 0 for jkr */
+static inline REAL wall_granular_eval_tcol(const struct contact *c, __global const REAL *p,
+                                           const REAL vn)
+{
+    const int nm = (int)p[GR_NMODEL];
+    if (nm == GR_N_HOOKE)
+        return tcol_linear(p[GR_KN], 0, c->meff);
+    if (nm == GR_N_JKR)
+        return 0;
+    return tcol_hertz(p[GR_KN], c->reff, c->meff, vn);
+}
 
 WALL_KERNEL(wall_gran_hooke, gran_hooke_eval)
 WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_eval)
 WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_eval)
+WALL_KERNEL_ROW(wall_gran_granular, wall_granular_eval)
 
 /* mesh walls (fix wall/gran ... mesh): the same laws against triangles */
 MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
@@ -17,3 +45,4 @@ MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)
 REGION_KERNEL(region_gran_hooke, gran_hooke_eval)
 REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_eval)
 REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_eval)
+REGION_KERNEL_ROW(region_gran_granular, wall_granular_eval)

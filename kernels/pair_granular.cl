@@ -23,6 +23,17 @@
 
 #define GR_IS(used, m, sel) ((((used) >> (m)) & 1) && ((used) == (1 << (m)) || (sel) == (m)))
 
+/* Which sub-models an evaluation may meet and where their history lies:
+ * compile-time constants for the pair (folded away), run-time values for a
+ * wall/gran granular wall (its own sub-models, kernels/fix_wall_gran.cl).
+ * Offsets are -1 when absent; wall = 1: the wall's torque lever arm. */
+struct gr_layout {
+    int n, d, t, r, w;          /* bit masks of the models met */
+    int tang_hist;              /* the tangential history branch */
+    int ha, hroll, htwist, htouch, width;
+    int wall;
+};
+
 /* ---- normal models: elastic force Fne, knfac (stiffness for tsuji), a ---- */
 
 /* hooke: Fne = kn delta, a = sqrt(delta R) (for viscoelastic damping) */
@@ -80,15 +91,15 @@ static inline REAL grn_jkr_pulloff(REAL E, REAL coh, REAL Reff)
 }
 
 /* ---- damping models: the factor multiplying the damping coefficient ---- */
-static inline REAL grd_factor(int model, REAL meff, REAL a, REAL knfac)
+static inline REAL grd_factor(const int used, int model, REAL meff, REAL a, REAL knfac)
 {
-    if (GR_IS(GRD_USED, GR_D_VELOCITY, model))
+    if (GR_IS(used, GR_D_VELOCITY, model))
         return 1;
-    if (GR_IS(GRD_USED, GR_D_MASS_VELOCITY, model))
+    if (GR_IS(used, GR_D_MASS_VELOCITY, model))
         return meff;
-    if (GR_IS(GRD_USED, GR_D_VISCOELASTIC, model))
+    if (GR_IS(used, GR_D_VISCOELASTIC, model))
         return a * meff;
-    if (GR_IS(GRD_USED, GR_D_TSUJI, model))
+    if (GR_IS(used, GR_D_TSUJI, model))
         return sqrt(meff * knfac);
     return 0;
 }
@@ -123,23 +134,21 @@ static inline void gr_frame(REAL *h, REAL3 n)
  * -k s - g v) and mindlin/force, mindlin_rescale/force (elastic-force
  * history, force = s - g v); k = kt (linear) or kt a (mindlin). Coulomb
  * limit Fscrit with the history reset consistently. */
-static inline REAL3 grt_history(int model, REAL *h, REAL3 n, REAL3 vtr, REAL k, REAL damp_t,
-                                REAL Fscrit, REAL a, const struct contact *c)
+static inline REAL3 grt_history(const int used, const int ha, int model, REAL *h, REAL3 n,
+                                REAL3 vtr, REAL k, REAL damp_t, REAL Fscrit, REAL a,
+                                const struct contact *c)
 {
-    const int force_hist = GR_IS(GRT_USED, GR_T_MINDLIN_FORCE, model) ||
-                           GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, model) ||
-                           GR_IS(GRT_USED, GR_T_NOHISTORY, model);
-    const int rescale = GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE, model) ||
-                        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, model);
-    (void)rescale;
-#ifdef GR_H_A
-    if (rescale && a < h[GR_H_A]) {
-        const REAL factor = a / h[GR_H_A];
+    const int force_hist = GR_IS(used, GR_T_MINDLIN_FORCE, model) ||
+                           GR_IS(used, GR_T_MINDLIN_RESCALE_FORCE, model) ||
+                           GR_IS(used, GR_T_NOHISTORY, model);
+    const int rescale = ha >= 0 && (GR_IS(used, GR_T_MINDLIN_RESCALE, model) ||
+                                    GR_IS(used, GR_T_MINDLIN_RESCALE_FORCE, model));
+    if (rescale && a < h[ha]) {
+        const REAL factor = a / h[ha];
         h[0] *= factor;
         h[1] *= factor;
         h[2] *= factor;
     }
-#endif
     if (c->shearupdate) {
         const REAL rsht = h[0] * n.x + h[1] * n.y + h[2] * n.z;
         const int frame = force_hist ? fabs(rsht) > (REAL)1e-10 * Fscrit
@@ -155,10 +164,8 @@ static inline REAL3 grt_history(int model, REAL *h, REAL3 n, REAL3 vtr, REAL k, 
             h[1] -= k * vtr.y * c->dt;
             h[2] -= k * vtr.z * c->dt;
         }
-#ifdef GR_H_A
         if (rescale)
-            h[GR_H_A] = a;
-#endif
+            h[ha] = a;
     }
     REAL3 fs;
     if (!force_hist)
@@ -188,7 +195,6 @@ static inline REAL3 grt_history(int model, REAL *h, REAL3 n, REAL3 vtr, REAL k, 
 }
 
 /* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ---- */
-#ifdef GR_H_ROLL
 static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL Frcrit,
                             const struct contact *c)
 {
@@ -216,10 +222,8 @@ static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL 
     }
     return fr;
 }
-#endif
 
 /* ---- twisting: sds or marshall (coefficients from the tangential model) ---- */
-#ifdef GR_H_TWIST
 static inline REAL grw_twist(REAL *h, REAL magtwist, REAL kw, REAL gw, REAL muw, REAL Fncrit,
                              const struct contact *c)
 {
@@ -234,37 +238,32 @@ static inline REAL grw_twist(REAL *h, REAL magtwist, REAL kw, REAL gw, REAL muw,
     }
     return m;
 }
-#endif
 
 /* The composed law. The torque of LAMMPS, -(rad - delta/2) (n x F_t) +
  * M_twist n + R* n x F_roll on i (the same lever on j, the other two terms
  * negated), is written as tc = (r / radsum) n x F_t and
  * tr = delta (radi - radj) / (2 radsum) n x F_t - (M_twist n + R* n x F_roll). */
-static inline void granular_eval(const struct contact *c, __global const REAL *p, REAL *h,
-                                 struct contact_force *out)
+static inline void granular_eval_l(const struct contact *c, __global const REAL *p, REAL *h,
+                                   struct contact_force *out, const struct gr_layout L)
 {
     const int nm = (int)p[GR_NMODEL];
     const REAL radsum = c->radsum, rsq = c->rsq, Reff = c->reff;
     REAL E = p[GR_KN];
     int touch;
-#ifdef GRN_HAS_JKR
-    const int jkr = GR_IS(GRN_USED, GR_N_JKR, nm);
+    const int jkr = L.htouch >= 0 && GR_IS(L.n, GR_N_JKR, nm);
     if (jkr) {
         E *= (REAL)0.75;
-        if (h[GR_H_TOUCH] != (REAL)0) {
+        if (h[L.htouch] != (REAL)0) {
             const REAL dist = radsum - grn_jkr_pulloff(E, p[GR_COH], Reff);
             touch = rsq < dist * dist;
         } else {
             touch = rsq < radsum * radsum;
         }
     } else
-#endif
         touch = rsq < radsum * radsum;
     if (!touch) { /* reached only where a JKR pair makes the loop send every pair */
-#ifdef HAS_HISTORY
-        for (int k = 0; k < HIST_N; k++)
+        for (int k = 0; k < L.width; k++)
             h[k] = 0;
-#endif
         return;
     }
     const REAL r = c->r, rinv = (REAL)1.0 / r; /* c->r, c->delta: refined in single */
@@ -276,20 +275,17 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
 
     /* normal */
     REAL Fne, knfac, a;
-#ifdef GRN_HAS_JKR
     if (jkr) {
-        h[GR_H_TOUCH] = 1;
+        h[L.htouch] = 1;
         Fne = grn_jkr(p[GR_KN], E, p[GR_COH], Reff, dR, &knfac, &a);
-    } else
-#endif
-    if (GR_IS(GRN_USED, GR_N_HOOKE, nm))
+    } else if (GR_IS(L.n, GR_N_HOOKE, nm))
         Fne = grn_hooke(E, delta, dR, &knfac, &a);
-    else if (GR_IS(GRN_USED, GR_N_DMT, nm))
+    else if (GR_IS(L.n, GR_N_DMT, nm))
         Fne = grn_dmt(E, p[GR_COH], Reff, delta, dR, &knfac, &a);
     else
         Fne = grn_hertz(E, delta, dR, &knfac, &a);
 
-    const REAL damp_pref = p[GR_DAMP] * grd_factor((int)p[GR_DMODEL], meff, a, knfac);
+    const REAL damp_pref = p[GR_DAMP] * grd_factor(L.d, (int)p[GR_DMODEL], meff, a, knfac);
     REAL Fntot = Fne + -damp_pref * vnnr;
     if (p[GR_LIMIT] != (REAL)0 && Fntot < (REAL)0)
         Fntot = 0;
@@ -305,64 +301,92 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
      * for dmt LAMMPS 2021 forms F_pulloff from a cohesion variable it sets
      * only for jkr pairs (0 in a scene without jkr): |Fne| */
     REAL Fncrit = fabs(Fntot);
-#ifdef GRN_HAS_JKR
-    if (GR_IS(GRN_USED, GR_N_JKR, nm))
+    if (jkr)
         Fncrit = fabs(Fne + (REAL)2 * ((REAL)3 * (REAL)M_PI * p[GR_COH] * Reff));
-#endif
-#ifdef GRN_HAS_DMT
-    if (GR_IS(GRN_USED, GR_N_DMT, nm))
+    if (GR_IS(L.n, GR_N_DMT, nm))
         Fncrit = fabs(Fne);
-#endif
     const REAL Fscrit = p[GR_MU] * Fncrit;
     const int tm = (int)p[GR_TMODEL];
     REAL kt = p[GR_KT];
     const REAL damp_t = p[GR_GT] * damp_pref;
     REAL3 fs;
-#ifdef GR_TANG_HISTORY
-    if (GR_IS(GRT_USED, GR_T_MINDLIN, tm) || GR_IS(GRT_USED, GR_T_MINDLIN_FORCE, tm) ||
-        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE, tm) ||
-        GR_IS(GRT_USED, GR_T_MINDLIN_RESCALE_FORCE, tm))
-        kt *= a;
-    fs = grt_history(tm, h, n, vtr, kt, damp_t, Fscrit, a, c);
-#else
-    fs = grt_nohistory(vtr, vrel, damp_t, Fscrit);
-#endif
+    if (L.tang_hist) {
+        if (GR_IS(L.t, GR_T_MINDLIN, tm) || GR_IS(L.t, GR_T_MINDLIN_FORCE, tm) ||
+            GR_IS(L.t, GR_T_MINDLIN_RESCALE, tm) || GR_IS(L.t, GR_T_MINDLIN_RESCALE_FORCE, tm))
+            kt *= a;
+        fs = grt_history(L.t, L.ha, tm, h, n, vtr, kt, damp_t, Fscrit, a, c);
+    } else {
+        fs = grt_nohistory(vtr, vrel, damp_t, Fscrit);
+    }
 
     REAL3 tw = (REAL3)(0); /* M_twist n + R* n x F_roll (torque on i) */
-#if defined(GR_H_ROLL) || defined(GR_H_TWIST)
     const REAL3 relrot = c->omi - c->omj;
-#endif
-#ifdef GR_H_ROLL
-    if (GR_IS(GRR_USED, GR_R_SDS, (int)p[GR_RMODEL])) {
+    if (L.hroll >= 0 && GR_IS(L.r, GR_R_SDS, (int)p[GR_RMODEL])) {
         const REAL3 vrl = (REAL3)(Reff * (relrot.y * n.z - relrot.z * n.y),
                                   Reff * (relrot.z * n.x - relrot.x * n.z),
                                   Reff * (relrot.x * n.y - relrot.y * n.x));
-        const REAL3 fr = grr_sds(h + GR_H_ROLL, n, vrl, p[GR_KR], p[GR_GR], p[GR_MUR] * Fncrit,
+        const REAL3 fr = grr_sds(h + L.hroll, n, vrl, p[GR_KR], p[GR_GR], p[GR_MUR] * Fncrit,
                                  c);
         tw += (REAL3)(Reff * (n.y * fr.z - n.z * fr.y), Reff * (n.z * fr.x - n.x * fr.z),
                       Reff * (n.x * fr.y - n.y * fr.x));
     }
-#endif
-#ifdef GR_H_TWIST
-    {
+    if (L.htwist >= 0) {
         const int wm = (int)p[GR_WMODEL];
         const REAL magtwist = relrot.x * n.x + relrot.y * n.y + relrot.z * n.z;
         REAL kw = p[GR_KW], gw = p[GR_GW], muw = p[GR_MUW];
-        int on = GR_IS(GRW_USED, GR_W_SDS, wm);
-        if (GR_IS(GRW_USED, GR_W_MARSHALL, wm)) {
+        int on = GR_IS(L.w, GR_W_SDS, wm);
+        if (GR_IS(L.w, GR_W_MARSHALL, wm)) {
             kw = (REAL)0.5 * kt * a * a; /* Marshall eq. 32 */
             gw = (REAL)0.5 * damp_t * a * a;
             muw = (REAL)(2.0 / 3.0) * a * p[GR_MU];
             on = 1;
         }
         if (on)
-            tw += grw_twist(h + GR_H_TWIST, magtwist, kw, gw, muw, Fncrit, c) * n;
+            tw += grw_twist(h + L.htwist, magtwist, kw, gw, muw, Fncrit, c) * n;
     }
-#endif
 
     out->f = (REAL3)(n.x * Fntot + fs.x, n.y * Fntot + fs.y, n.z * Fntot + fs.z);
     const REAL3 tor = (REAL3)(n.y * fs.z - n.z * fs.y, n.z * fs.x - n.x * fs.z,
                               n.x * fs.y - n.y * fs.x);
+    if (L.wall) { /* LAMMPS 2021 fix wall/gran: lever arm radi */
+        out->tc = tor;
+        out->tr = -tw;
+        return;
+    }
     out->tc = (r / radsum) * tor;
     out->tr = (delta * (c->radi - c->radj) / ((REAL)2 * radsum)) * tor - tw;
 }
+
+/* The pair's evaluator: the layout of the build options (folded away). */
+#ifdef GRN_USED
+#ifndef GR_H_A
+#define GR_H_A -1
+#endif
+#ifndef GR_H_ROLL
+#define GR_H_ROLL -1
+#endif
+#ifndef GR_H_TWIST
+#define GR_H_TWIST -1
+#endif
+#ifndef GR_H_TOUCH
+#define GR_H_TOUCH -1
+#endif
+#ifdef GR_TANG_HISTORY
+#define GR_TANG_HISTORY_ON 1
+#else
+#define GR_TANG_HISTORY_ON 0
+#endif
+#ifdef HAS_HISTORY
+#define GR_WIDTH HIST_N
+#else
+#define GR_WIDTH 0
+#endif
+static inline void granular_eval(const struct contact *c, __global const REAL *p, REAL *h,
+                                 struct contact_force *out)
+{
+    const struct gr_layout L = {GRN_USED,   GRD_USED,  GRT_USED,   GRR_USED,
+                                GRW_USED,   GR_TANG_HISTORY_ON,    GR_H_A,
+                                GR_H_ROLL,  GR_H_TWIST, GR_H_TOUCH, GR_WIDTH, 0};
+    granular_eval_l(c, p, h, out, L);
+}
+#endif

@@ -40,4 +40,11 @@ enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RE
 enum gr_twist { GR_W_NONE, GR_W_SDS, GR_W_MARSHALL };
 enum gr_roll { GR_R_NONE, GR_R_SDS };
 
+/* fix wall/gran granular: the GR_* set, then the history layout of its one
+ * model (kernels/fix_wall_gran.cl): tangential history on (0/1), offsets of
+ * the contact radius (mindlin_rescale), rolling displacement, twist angle
+ * and JKR touch flag (-1: absent), as LAMMPS 2021 sizes a wall's history. */
+enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
+                 GRW_NPARAM };
+
 #endif

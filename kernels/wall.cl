@@ -89,7 +89,9 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
  * 0) or the pair style's set of type pair (t_i, t_i). inclusive: a contact
  * at exactly |del| = radi counts (LAMMPS fix wall/gran); else it does not
  * (the pair contract of fix wall/pair). */
-#define WALL_KERNEL(NAME, EVAL)                                                                \
+#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0)
+#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1)
+#define WALL_KERNEL_HW(NAME, EVAL, ROW)                                                        \
     __kernel void NAME(                                                                        \
         const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
         __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
@@ -137,25 +139,46 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
                                  vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
                 touch = contact_refine(&c, del_lo);                                            \
             }                                                                                  \
+            __global REAL *hrow = history + slot * (size_t)has_history;                        \
             if (!touch) {                                                                      \
-                if (has_history)                                                               \
-                    vstore3((REAL3)(0), slot, history);                                        \
+                for (int q = 0; q < has_history; q++)                                          \
+                    hrow[q] = 0;                                                               \
                 continue;                                                                      \
             }                                                                                  \
             c.dt = dt;                                                                         \
             c.shearupdate = shearupdate;                                                       \
-            REAL3 sh = has_history ? vload3(slot, history) : (REAL3)(0);                       \
             struct contact_force cf;                                                           \
-            EVAL(&c, p, &sh, &cf);                                                             \
+            WALL_CALL(ROW, EVAL, &c, p, hrow, has_history, &cf);                               \
             ACC_NOTE_WALL(EVAL, i, &c, p, acode, acc, astep, step);                            \
-            if (has_history)                                                                   \
-                vstore3(sh, slot, history);                                                    \
             fsum += cf.f;                                                                      \
             tsum += contact_torque_i(&c, &cf);                                                 \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
+
+/* One evaluation with the contact's history row hrow of hw REAL (0: none):
+ * ROW 0 an evaluator of a 3-REAL shear (REAL3 *), ROW 1 one of the whole
+ * row (REAL *, up to WALL_HMAX, pair granular's sub-models). */
+#define WALL_HMAX 10
+#define WALL_CALL(ROW, EVAL, c, p, hrow, hw, cf) WALL_CALL_PASTE(ROW)(EVAL, c, p, hrow, hw, cf)
+#define WALL_CALL_PASTE(ROW) WALL_CALL_##ROW
+#define WALL_CALL_0(EVAL, c, p, hrow, hw, cf)                                                  \
+    do {                                                                                       \
+        REAL3 sh_ = (hw) ? vload3(0, hrow) : (REAL3)(0);                                       \
+        EVAL(c, p, &sh_, cf);                                                                  \
+        if (hw)                                                                                \
+            vstore3(sh_, 0, hrow);                                                             \
+    } while (0)
+#define WALL_CALL_1(EVAL, c, p, hrow, hw, cf)                                                  \
+    do {                                                                                       \
+        REAL h_[WALL_HMAX];                                                                    \
+        for (int q_ = 0; q_ < WALL_HMAX; q_++)                                                 \
+            h_[q_] = q_ < (hw) ? (hrow)[q_] : (REAL)0;                                         \
+        EVAL(c, p, h_, cf);                                                                    \
+        for (int q_ = 0; q_ < (hw); q_++)                                                      \
+            (hrow)[q_] = h_[q_];                                                               \
+    } while (0)
 
 #ifdef SPLIT_POS
 #define WALL_GAP_LO(name, del, xl) const REAL3 name = wall_gap_lo(del, xl)

@@ -529,13 +529,15 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
 /* One work-item per atom of the group (fix wall/gran/region). An atom the
  * region does not match is skipped, its history kept; otherwise its contacts
  * are evaluated through EVAL in region order. History per atom (hstride =
- * 1 + 4 slots REAL): the contact count, the wall id of each slot, then 3
- * REAL of shear per slot, kept and compacted as LAMMPS FixWallGranRegion
+ * 1 + (1 + hw) slots REAL, hw = has_history): the contact count, the wall
+ * id of each slot, then hw REAL of history per slot (3: shear), kept and compacted as LAMMPS FixWallGranRegion
  * (update_contacts: slots of walls no longer touched are replaced by the
  * last one, new walls appended with zero shear; c2r maps as LAMMPS does).
  * dynamic: the surface moves with the velocity of the contact's node (0:
  * at rest; the host passes 0 for union / intersect, as LAMMPS 2021). */
-#define REGION_KERNEL(NAME, EVAL)                                                              \
+#define REGION_KERNEL(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 0)
+#define REGION_KERNEL_ROW(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 1)
+#define REGION_KERNEL_HW(NAME, EVAL, ROW)                                                      \
     __kernel void NAME(                                                                        \
         const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
         __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
@@ -549,6 +551,7 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
             return;                                                                            \
+        const int hw = has_history; /* history REAL per slot */                                \
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
             return;                                                                            \
@@ -557,7 +560,7 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         int nc = region_surface(nodes, nnode, comb, rinterior, xi, radi, c);                   \
         if (nc > slots)                                                                        \
             nc = slots;                                                                        \
-        __global REAL *hist = has_history ? history + (size_t)i * (1 + 4 * slots) : history;   \
+        __global REAL *hist = has_history ? history + (size_t)i * (1 + (1 + hw) * slots) : history;\
         int c2r[RG_MAXC];                                                                      \
         for (int k = 0; k < RG_MAXC; k++)                                                      \
             c2r[k] = k;                                                                        \
@@ -572,7 +575,8 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
                 c2r[0] = 0;                                                                    \
                 ncont = 1;                                                                     \
                 walls[0] = (REAL)c[0].iwall;                                                   \
-                sh[0] = sh[1] = sh[2] = 0;                                                     \
+                for (int q = 0; q < hw; q++)                                                   \
+                    sh[q] = 0;                                                                 \
             } else if (nc == 1 && ncont == 1 && (int)walls[0] == c[0].iwall) {                 \
                 c2r[0] = 0;                                                                    \
             } else {                                                                           \
@@ -583,8 +587,8 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
                         m++;                                                                   \
                     if (m >= nc) {                                                             \
                         const int last = ncont - 1;                                            \
-                        for (int q = 0; q < 3; q++)                                            \
-                            sh[3 * iold + q] = sh[3 * last + q];                               \
+                        for (int q = 0; q < hw; q++)                                           \
+                            sh[hw * iold + q] = sh[hw * last + q];                             \
                         walls[iold] = walls[last];                                             \
                         ncont--;                                                               \
                     } else                                                                     \
@@ -599,7 +603,8 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
                         c2r[m] = inew;                                                         \
                     else {                                                                     \
                         c2r[ncont] = inew;                                                     \
-                        sh[3 * ncont] = sh[3 * ncont + 1] = sh[3 * ncont + 2] = 0;             \
+                        for (int q = 0; q < hw; q++)                                           \
+                            sh[hw * ncont + q] = 0;                                            \
                         walls[ncont] = (REAL)c[inew].iwall;                                    \
                         ncont++;                                                               \
                     }                                                                          \
@@ -626,16 +631,10 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
             ct.delta = ct.radsum - ct.r;                                                       \
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
-            __global REAL *hs = has_history ? hist + 1 + slots + 3 * c2r[ic] : hist;           \
-            REAL3 sh = has_history ? (REAL3)(hs[0], hs[1], hs[2]) : (REAL3)(0);                \
+            __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
             struct contact_force cf;                                                           \
-            EVAL(&ct, p, &sh, &cf);                                                            \
+            WALL_CALL(ROW, EVAL, &ct, p, hs, hw, &cf);                                         \
             ACC_NOTE_WALL(EVAL, i, &ct, p, acode, acc, astep, step);                           \
-            if (has_history) {                                                                 \
-                hs[0] = sh.x;                                                                  \
-                hs[1] = sh.y;                                                                  \
-                hs[2] = sh.z;                                                                  \
-            }                                                                                  \
             fsum += cf.f;                                                                      \
             tsum += contact_torque_i(&ct, &cf);                                                \
         }                                                                                      \

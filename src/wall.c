@@ -17,7 +17,7 @@ int wall_elements(const struct wall_geom *w) { return w->kind == WALL_PLANE ? 2 
 
 size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const struct wall_law *law)
 {
-    return law->history ? (size_t)wall_elements(w) * 3 * g->eng->rsz : 0;
+    return (size_t)wall_elements(w) * (size_t)law->history * g->eng->rsz;
 }
 
 int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k)

@@ -33,7 +33,8 @@ struct wall_law {
     cl_kernel kernel;
     cl_mem param;
     int by_type;
-    int history;                /* 3 REAL per element per atom */
+    int history;                /* REAL of history per element per atom (0: none;
+                                 * 3: shear; granular: its sub-models' width) */
     int inclusive;              /* |del| = radius is a contact (LAMMPS wall/gran) */
 };
 

@@ -122,7 +122,7 @@ size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region 
     wr->nodes = eng_alloc(g, (size_t)nnode * RG_NODE * eng_get(g)->rsz, "wall region nodes");
     for (int k = 0; k < nnode; k++) /* a new run: velocities by difference restart */
         (comb ? r->sub[k] : r)->vel_step = -1;
-    return law->history ? (size_t)(1 + 4 * wr->slots) * eng_get(g)->rsz : 0;
+    return law->history ? (size_t)(1 + (1 + law->history) * wr->slots) * eng_get(g)->rsz : 0;
 }
 
 void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,

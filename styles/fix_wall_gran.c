@@ -31,17 +31,20 @@
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
+#include "pair_granular.h"
 #include "region.h"
 #include "fix_mesh_surface.h"
 #include "wall.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
-enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY };
+enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY, M_GRANULAR };
 
 
 struct wall {
-    int model, history;
-    double param[GRAN_NPARAM]; /* kernels/param_layout.h: kn kt gamman gammat xmu limit(0) */
+    int model, history;         /* history: REAL per wall contact (0: none) */
+    int nparam;
+    double param[GRW_NPARAM];   /* kernels/param_layout.h: GRAN_* (kn kt gamman gammat xmu
+                                 * limit) or, model granular, GR_* and GRW_* */
     int style;
     double lo, hi, cylradius;
     int wiggle, wshear, axis;
@@ -62,11 +65,12 @@ struct wall {
 };
 
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
-                                           "wall_gran_hertz_history"};
+                                           "wall_gran_hertz_history", "wall_gran_granular"};
 static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
-                                          "mesh_gran_hertz_history"};
+                                          "mesh_gran_hertz_history", NULL};
 static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
-                                            "region_gran_hertz_history"};
+                                            "region_gran_hertz_history",
+                                            "region_gran_granular"};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -86,31 +90,13 @@ static double parse_face(struct gravel *g, const char *s, double null_value, con
     return arg_double(g, s, what);
 }
 
-static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+/* hooke | hooke/history | hertz/history Kn Kt gamman gammat xmu dampflag;
+ * returns the index of the wall style */
+static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **argv)
 {
-    if (argc < 1)
-        gr_error(g, "fix wall/gran expects model Kn Kt gamman gammat xmu dampflag wallstyle "
-                    "args");
-    struct wall w;
-    memset(&w, 0, sizeof w);
-    if (!strcmp(argv[0], "hooke"))
-        w.model = M_HOOKE;
-    else if (!strcmp(argv[0], "hooke/history"))
-        w.model = M_HOOKE_HISTORY;
-    else if (!strcmp(argv[0], "hertz/history"))
-        w.model = M_HERTZ_HISTORY;
-    else if (!strcmp(argv[0], "model"))
-        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
-                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
-                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
-                    "or use fix wall/pair mesh for the pair style's law");
-    else if (!strcmp(argv[0], "granular"))
-        gr_error(g, "fix wall/gran model 'granular' is not supported yet (pair_style granular "
-                    "is; for the wall use hooke, hooke/history or hertz/history)");
-    else
-        gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history or "
-                    "hertz/history)", argv[0]);
-    w.history = w.model != M_HOOKE;
+    struct wall w = *pw;
+    w.history = w.model != M_HOOKE ? 3 : 0;
+    w.nparam = GRAN_NPARAM;
     if (argc < 9)
         gr_error(g, "fix wall/gran %s expects Kn Kt gamman gammat xmu dampflag and a wall "
                     "style, got %d argument(s)", argv[0], argc - 1);
@@ -135,7 +121,84 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     w.param[GRAN_XMU] = xmu;
     w.param[GRAN_LIMIT] = 0.0;
 
-    int i = 7;
+    *pw = w;
+    return 7;
+}
+
+/* granular <normal model args> [damping ...] tangential ... [rolling ...]
+ * [twisting ...] [limit_damping]: pair granular's sub-models (the wall's
+ * own E and nu), history laid out as LAMMPS 2021 sizes it for a wall:
+ * 3 tangential (a history model), 1 contact radius (mindlin_rescale), 3
+ * rolling, 1 twisting; returns the number of words parsed */
+static int parse_granular(struct gravel *g, struct wall *w, int argc, char **argv)
+{
+    static const char *const stop[] = {"xplane", "yplane", "zplane", "zcylinder", "region",
+                                       "mesh", NULL};
+    struct gr_one o;
+    int n = granular_parse(g, &o, argc, argv, stop, 0, "fix wall/gran granular");
+    int kt_null = 0;
+    for (int k = 0; k + 2 < n; k++)
+        if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
+            kt_null = 1;
+    if (o.nm == GR_N_JKR)
+        gr_error(g, "fix wall/gran granular: the jkr normal model is not supported for walls "
+                    "(use hooke, hertz, hertz/material or dmt)");
+    /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
+     * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
+     * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
+     * (1 + nu) (checked against lmp: tests/reference/granular_wall_*) */
+    if (o.nm >= GR_N_HERTZ_MATERIAL)
+        o.kn = o.E / (2 * (1 - o.nu)) * 1.333333333333333;
+    if (kt_null)
+        o.kt = o.E / 4 * (2 - o.nu) * (1 + o.nu);
+    w->nparam = GRW_NPARAM;
+    granular_pack(&o, w->param);
+    int off = 0;
+    int tang = o.tm != GR_T_NOHISTORY;
+    w->param[GRW_TANG] = tang;
+    off += tang ? 3 : 0;
+    w->param[GRW_HA] = o.tm == GR_T_MINDLIN_RESCALE || o.tm == GR_T_MINDLIN_RESCALE_FORCE
+                           ? off++ : -1;
+    w->param[GRW_HROLL] = o.rm == GR_R_SDS ? (off += 3) - 3 : -1;
+    w->param[GRW_HTWIST] = o.wm != GR_W_NONE ? off++ : -1;
+    w->param[GRW_HTOUCH] = -1;
+    w->param[GRW_WIDTH] = off;
+    w->history = off;
+    return n;
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "fix wall/gran expects model Kn Kt gamman gammat xmu dampflag wallstyle "
+                    "args");
+    struct wall w;
+    memset(&w, 0, sizeof w);
+    if (!strcmp(argv[0], "hooke"))
+        w.model = M_HOOKE;
+    else if (!strcmp(argv[0], "hooke/history"))
+        w.model = M_HOOKE_HISTORY;
+    else if (!strcmp(argv[0], "hertz/history"))
+        w.model = M_HERTZ_HISTORY;
+    else if (!strcmp(argv[0], "model"))
+        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
+                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
+                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
+                    "or use fix wall/pair mesh for the pair style's law");
+    else if (!strcmp(argv[0], "granular"))
+        w.model = M_GRANULAR;
+    else
+        gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history or "
+                    "hertz/history)", argv[0]);
+    int i;
+    if (w.model == M_GRANULAR) {
+        i = 1 + parse_granular(g, &w, argc - 1, argv + 1);
+        if (i >= argc)
+            gr_error(g, "fix wall/gran granular: missing the wall style (xplane, yplane, "
+                        "zplane, zcylinder or region) after the model");
+    } else {
+        i = parse_classic(g, &w, argc, argv);
+    }
     const char *ws = argv[i];
     int is_region = !strcmp(f->style->name, "wall/gran/region");
     if (is_region != !strcmp(ws, "region"))
@@ -203,6 +266,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (w.style == W_REGION && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
                     "and rotate keywords)");
+    if (w.style == W_MESH && w.model == M_GRANULAR)
+        gr_error(g, "fix wall/gran mesh: model granular is not supported for meshes (use "
+                    "hooke, hooke/history or hertz/history)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
@@ -228,6 +294,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hooke.cl";
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
+    f->sources[f->nsources++] = "pair_granular.cl";
     f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "wall_region.cl";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
@@ -301,8 +368,8 @@ static void init(struct gravel *g, struct fix *f)
     if (w->law.param)
         clReleaseMemObject(w->law.param);
     w->law.param = NULL;
-    w->law.param = eng_alloc(g, GRAN_NPARAM * e->rsz, "fix wall/gran parameters");
-    eng_write_reals(g, w->law.param, GRAN_NPARAM, w->param);
+    w->law.param = eng_alloc(g, (size_t)w->nparam * e->rsz, "fix wall/gran parameters");
+    eng_write_reals(g, w->law.param, (size_t)w->nparam, w->param);
     if (w->style == W_MESH) {
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
         return;

@@ -82,7 +82,7 @@ static void init(struct gravel *g, struct fix *f)
     w->law.kernel = eng_kernel(g, w->mesh.n ? "mesh_pair" : "wall_pair");
     w->law.param = g->eng->pair_param;
     w->law.by_type = 1;
-    w->law.history = g->eng->history;
+    w->law.history = g->eng->history ? 3 : 0;
     w->law.inclusive = 0;
     if (w->mesh.n)
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->law.history);

@@ -25,14 +25,7 @@
 #include "engine.h"
 #include "error.h"
 #include "pair.h"
-
-struct gr_one {
-    int set;                    /* 1 = pair_coeff, 2 = mixed at run start */
-    int nm, dm, tm, rm, wm, ld; /* sub-models (GR_N_* ...), limit_damping */
-    double kn, damp, coh, E, nu;
-    double kt, gt, mu, kr, gr, mur, kw, gw, muw;
-    double cutoff;              /* -1: none */
-};
+#include "pair_granular.h"
 
 struct gr_tab {
     int nt;
@@ -93,10 +86,11 @@ static double mixG(double Ei, double Ej, double ni, double nj)
     return 1 / ((2 * (2 - ni) * (1 + ni) / Ei) + (2 * (2 - nj) * (1 + nj) / Ej));
 }
 
-static double num(struct gravel *g, char **argv, int argc, int i, const char *what)
+static double num(struct gravel *g, char **argv, int argc, int i, const char *what,
+                  const char *who)
 {
     if (i >= argc)
-        gr_error(g, "pair_coeff granular: missing %s", what);
+        gr_error(g, "%s: missing %s", who, what);
     return arg_double(g, argv[i], what);
 }
 
@@ -108,9 +102,16 @@ static int lookup(const char *s, const char *const *names, int n)
     return -1;
 }
 
-/* pair_coeff I J model args ... (LAMMPS's keywords, any order) */
-static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
-                  int argc, char **argv)
+static int in_list(const char *s, const char *const *list)
+{
+    for (int k = 0; list && list[k]; k++)
+        if (!strcmp(s, list[k]))
+            return 1;
+    return 0;
+}
+
+int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
+                   const char *const *stop, int allow_cutoff, const char *who)
 {
     struct gr_one o;
     memset(&o, 0, sizeof o);
@@ -120,38 +121,41 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     o.wm = GR_W_NONE;
     o.cutoff = -1;
     int kt_null = 0;
-    for (int i = 0; i < argc;) {
+    int i = 0;
+    while (i < argc) {
         const char *k = argv[i];
+        if (in_list(k, stop))
+            break;
         int m = lookup(k, nname, 5);
         if (m >= 0) {
             o.nm = m;
-            o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E");
-            o.damp = num(g, argv, argc, i + 2, "normal damping");
+            o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E", who);
+            o.damp = num(g, argv, argc, i + 2, "normal damping", who);
             if (m >= GR_N_HERTZ_MATERIAL) {
                 o.E = o.kn;
-                o.nu = num(g, argv, argc, i + 3, "Poisson's ratio");
+                o.nu = num(g, argv, argc, i + 3, "Poisson's ratio", who);
             }
             if (m >= GR_N_DMT)
-                o.coh = num(g, argv, argc, i + 4, "cohesion (surface energy)");
+                o.coh = num(g, argv, argc, i + 4, "cohesion (surface energy)", who);
             i += m <= GR_N_HERTZ ? 3 : m == GR_N_HERTZ_MATERIAL ? 4 : 5;
         } else if (!strcmp(k, "damping")) {
             arg_need(g, argc, i, 1, k);
             o.dm = lookup(argv[i + 1], dname, 4);
             if (o.dm < 0)
-                gr_error(g, "pair_coeff granular: unknown damping model '%.64s' (expected "
-                            "velocity, mass_velocity, viscoelastic or tsuji)", argv[i + 1]);
+                gr_error(g, "%s: unknown damping model '%.64s' (expected "
+                            "velocity, mass_velocity, viscoelastic or tsuji)", who, argv[i + 1]);
             i += 2;
         } else if (!strcmp(k, "tangential")) {
             arg_need(g, argc, i, 1, k);
             o.tm = lookup(argv[i + 1], tname, 6);
             if (o.tm < 0)
-                gr_error(g, "pair_coeff granular: unknown tangential model '%.64s' (expected "
+                gr_error(g, "%s: unknown tangential model '%.64s' (expected "
                             "linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-                            "mindlin/force or mindlin_rescale/force)", argv[i + 1]);
+                            "mindlin/force or mindlin_rescale/force)", who, argv[i + 1]);
             if (o.tm == GR_T_NOHISTORY) {
                 o.kt = 0;
-                o.gt = num(g, argv, argc, i + 2, "tangential damping");
-                o.mu = num(g, argv, argc, i + 3, "friction coefficient");
+                o.gt = num(g, argv, argc, i + 2, "tangential damping", who);
+                o.mu = num(g, argv, argc, i + 3, "friction coefficient", who);
                 i += 4;
                 continue;
             }
@@ -161,11 +165,11 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
                                 "normal contact model that specifies material properties");
                 kt_null = 1;
             } else {
-                o.kt = num(g, argv, argc, i + 2, "tangential stiffness kt");
+                o.kt = num(g, argv, argc, i + 2, "tangential stiffness kt", who);
                 kt_null = 0;
             }
-            o.gt = num(g, argv, argc, i + 3, "tangential damping");
-            o.mu = num(g, argv, argc, i + 4, "friction coefficient");
+            o.gt = num(g, argv, argc, i + 3, "tangential damping", who);
+            o.mu = num(g, argv, argc, i + 4, "friction coefficient", who);
             i += 5;
         } else if (!strcmp(k, "rolling")) {
             arg_need(g, argc, i, 1, k);
@@ -174,13 +178,13 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
                 i += 2;
             } else if (!strcmp(argv[i + 1], "sds")) {
                 o.rm = GR_R_SDS;
-                o.kr = num(g, argv, argc, i + 2, "rolling stiffness");
-                o.gr = num(g, argv, argc, i + 3, "rolling damping");
-                o.mur = num(g, argv, argc, i + 4, "rolling friction coefficient");
+                o.kr = num(g, argv, argc, i + 2, "rolling stiffness", who);
+                o.gr = num(g, argv, argc, i + 3, "rolling damping", who);
+                o.mur = num(g, argv, argc, i + 4, "rolling friction coefficient", who);
                 i += 5;
             } else {
-                gr_error(g, "pair_coeff granular: unknown rolling model '%.64s' (expected sds "
-                            "or none)", argv[i + 1]);
+                gr_error(g, "%s: unknown rolling model '%.64s' (expected sds "
+                            "or none)", who, argv[i + 1]);
             }
         } else if (!strcmp(k, "twisting")) {
             arg_need(g, argc, i, 1, k);
@@ -192,42 +196,55 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
                 i += 2;
             } else if (!strcmp(argv[i + 1], "sds")) {
                 o.wm = GR_W_SDS;
-                o.kw = num(g, argv, argc, i + 2, "twisting stiffness");
-                o.gw = num(g, argv, argc, i + 3, "twisting damping");
-                o.muw = num(g, argv, argc, i + 4, "twisting friction coefficient");
+                o.kw = num(g, argv, argc, i + 2, "twisting stiffness", who);
+                o.gw = num(g, argv, argc, i + 3, "twisting damping", who);
+                o.muw = num(g, argv, argc, i + 4, "twisting friction coefficient", who);
                 i += 5;
             } else {
-                gr_error(g, "pair_coeff granular: unknown twisting model '%.64s' (expected "
-                            "marshall, sds or none)", argv[i + 1]);
+                gr_error(g, "%s: unknown twisting model '%.64s' (expected "
+                            "marshall, sds or none)", who, argv[i + 1]);
             }
-        } else if (!strcmp(k, "cutoff")) {
-            o.cutoff = num(g, argv, argc, i + 1, "cutoff");
+        } else if (allow_cutoff && !strcmp(k, "cutoff")) {
+            o.cutoff = num(g, argv, argc, i + 1, "cutoff", who);
             i += 2;
         } else if (!strcmp(k, "limit_damping")) {
             o.ld = 1;
             i++;
         } else {
-            gr_error(g, "pair_coeff granular: unknown keyword '%.64s' (expected a normal model "
+            gr_error(g, "%s: unknown keyword '%.64s' (expected a normal model "
                         "hooke, hertz, hertz/material, dmt or jkr, or damping, tangential, "
-                        "rolling, twisting, cutoff, limit_damping)", k);
+                        "rolling, twisting, %slimit_damping)",
+                     who, k, allow_cutoff ? "cutoff, " : "");
         }
     }
     if (o.nm < 0 || o.tm < 0)
-        gr_error(g, "pair_coeff granular: must specify normal or tangential contact model");
+        gr_error(g, "%s: must specify normal or tangential contact model", who);
     if (o.dm == GR_D_TSUJI) {
         double e = o.damp;
         o.damp = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e +
                  27.467 * pow(e, 4) - 18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
     }
     if (o.ld && o.nm == GR_N_JKR)
-        gr_error(g, "Illegal pair_coeff command, Cannot limit damping with JKR model");
+        gr_error(g, "Illegal %.*s command, Cannot limit damping with JKR model",
+                 (int)strcspn(who, " "), who);
     if (o.ld && o.nm == GR_N_DMT)
-        gr_error(g, "Illegal pair_coeff command, Cannot limit damping with DMT model");
+        gr_error(g, "Illegal %.*s command, Cannot limit damping with DMT model",
+                 (int)strcspn(who, " "), who);
     if (o.nm >= GR_N_HERTZ_MATERIAL)
         o.kn = 4.0 / 3.0 * mixE(o.E, o.E, o.nu, o.nu);
     if (kt_null)
         o.kt = 8 * mixG(o.E, o.E, o.nu, o.nu);
     o.set = 1;
+    *po = o;
+    return i;
+}
+
+/* pair_coeff I J model args ... (LAMMPS's keywords, any order) */
+static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
+                  int argc, char **argv)
+{
+    struct gr_one o;
+    granular_parse(g, &o, argc, argv, NULL, 1, "pair_coeff granular");
     struct gr_tab *t = tables(g, p);
     for (int I = ilo; I <= ihi; I++)
         for (int J = jlo > I ? jlo : I; J <= jhi; J++)
@@ -322,7 +339,11 @@ static void init(struct gravel *g, struct pair *p)
 
 static void pack(const struct pair *p, int itype, int jtype, double *q)
 {
-    const struct gr_one *o = at(p->data, itype, jtype);
+    granular_pack(at(p->data, itype, jtype), q);
+}
+
+void granular_pack(const struct gr_one *o, double *q)
+{
     q[GR_NMODEL] = o->nm;
     q[GR_DMODEL] = o->dm;
     q[GR_TMODEL] = o->tm;
