@@ -74,7 +74,11 @@ struct pour {
     int idnext;
     int64_t maxtag;                 /* id next: tags counted from here */
     double grav;                    /* -magnitude of the gravity at creation */
-    double dt;                      /* timestep at creation */
+    double dt;                      /* timestep at creation (sets nfreq) */
+    double dt_check;                /* the timestep runs must keep */
+    int dt_free;                    /* created before any run: LAMMPS 2021 lets the
+                                     * timestep change until the first run (nfreq
+                                     * stays that of the creation timestep) */
     double lo_cur, hi_cur;          /* vertical bounds of the current batch */
     double *near;                   /* 4 per entry: x y z radius */
     int near_cap;
@@ -381,7 +385,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (!fg || !fix_gravity_field(fg, &mag, dir))
         gr_error(g, "no fix gravity defined for fix pour");
     p->grav = -mag; /* force->ftm2v = 1 in lj, si and cgs */
-    p->dt = g->dt;
+    p->dt = p->dt_check = g->dt;
+    p->dt_free = g->eng == NULL;
 
     /* insertion period: the fall time through the region */
     double v_rel, delta;
@@ -466,9 +471,13 @@ static void init(struct gravel *g, struct fix *f)
     if (-mag != p->grav)
         gr_error(g, "gravity changed since fix pour %s was created (%g, was %g)", f->id, mag,
                  -p->grav);
-    if (g->dt != p->dt)
-        gr_error(g, "cannot change timestep with fix pour (%s was created with %g, now %g)",
-                 f->id, p->dt, g->dt);
+    if (p->dt_free) {
+        p->dt_check = g->dt;
+        p->dt_free = 0;
+    }
+    if (g->dt != p->dt_check)
+        gr_error(g, "cannot change timestep with fix pour (%s ran with %g, now %g)", f->id,
+                 p->dt_check, g->dt);
 }
 
 /* Upper bound of the atoms inserted in (step, step + nsteps]. */

@@ -173,8 +173,9 @@ ERRORS = [
      "fix p all pour 10 1 5 region slab\nrun 1\n", "gravity must point in -z", 15),
     ("gravity_changed", GRAV + "fix p all pour 10 1 5 region slab\n"
      "fix 2 all gravity 2.0 spherical 0.0 -180.0\nrun 1\n", "gravity changed", 16),
-    ("timestep_changed", GRAV + "fix p all pour 10 1 5 region slab\ntimestep 0.002\nrun 1\n",
-     "cannot change timestep with fix pour", 16),
+    # LAMMPS 2021 lets the timestep change until the first run (in.pour.flatwall)
+    ("timestep_changed", GRAV + "fix p all pour 10 1 5 region slab\nrun 1\ntimestep 0.002\n"
+     "run 1\n", "cannot change timestep with fix pour", 17),
     ("reset_timestep", GRAV + "fix p all pour 10 1 5 region slab\nreset_timestep 100\n",
      "cannot reset timestep with a time-dependent fix", 15),
 ]

@@ -51,8 +51,6 @@ DECKS = [
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
-    "granular/in.pour.drum": "fix wall/gran model 'granular' is not supported yet",
-    "granular/in.pour.flatwall": "fix wall/gran model 'granular' is not supported yet",
     "multi/in.granular": "triclinic boxes are not supported",
     "multi/in.powerlaw": "triclinic boxes are not supported",
     "multi/in.colloid": "unknown pair style 'colloid'",
