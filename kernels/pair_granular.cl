@@ -14,6 +14,9 @@
  *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH  offsets in the history row of
  *       the contact radius of the last step (mindlin_rescale), the rolling
  *       displacement (3), the twist angle, the JKR touch flag; HIST_N its width.
+ * They fill a struct gr_layout (constants, folded away) for granular_eval;
+ * fix wall/gran granular passes its own layout at run time to
+ * granular_eval_l (kernels/fix_wall_gran.cl).
  * Param layout GR_* (param_layout.h), per type pair, host-mixed.
  *
  * Sign convention: n = del / r from j to i. The tangential history is

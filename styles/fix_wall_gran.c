@@ -14,13 +14,16 @@
  *                  velocity A w sin wt, w = 2 pi / T, t from the fix's creation
  *   shear d v      the wall moves along d at v (position unchanged)
  *
- * Per-atom contact history (3 REAL, model with history) follows the atoms
+ * Per-atom contact history (3 REAL, model with history; granular: its width) follows the atoms
  * through re-sorts as engine-managed per-atom state (src/fix.h). The force
  * and torque are added in post_force, as LAMMPS does (also at setup, without
  * history update). fix wall/gran/region (same create, `region ID` as the
  * wall style; kernels/wall_region.cl) takes the surface of a region as the
- * wall. Unsupported LAMMPS options (model granular, keyword contacts) are
- * rejected with a clear error. */
+ * wall. Model granular (`granular <sub-models> wallstyle ...`) takes pair
+ * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
+ * and a history row of its sub-models' width per wall element / region slot
+ * (parse_granular). Unsupported LAMMPS options (granular jkr, keyword
+ * contacts) are rejected with a clear error. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
