@@ -17,7 +17,22 @@ TEST(errors)
     CHECK_ERROR(BOX "fix w all wall/gran hook 1 NULL 1 NULL 0.5 1 zplane 0 NULL\n",
                 "unknown fix wall/gran model 'hook'", 6);
     CHECK_ERROR(BOX "fix w all wall/gran granular hooke 1 1 zplane 0 NULL\n",
-                "'granular' is not supported", 6);
+                "fix wall/gran granular: must specify normal or tangential contact model", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular jkr 1e5 1 0.3 10 tangential linear_history "
+                    "1 1 0.5 zplane 0 NULL\n",
+                "jkr normal model is not supported for walls", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular hertz/material 1e5 1 0.3 tangential mindlin "
+                    "NULL 1 0.5\n",
+                "missing the wall style", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular hertz 1 1 tangential mindlin NULL 1 0.5 "
+                    "zplane 0 NULL\n",
+                "NULL setting for Mindlin tangential stiffness", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular hertz/material 1e5 1 0.3 tangential mindlin "
+                    "NULL 1 0.5 cutoff 1 zplane 0 NULL\n",
+                "unknown keyword 'cutoff'", 6);
+    CHECK_ERROR(BOX "fix w all wall/gran granular hertz/material 1e5 1 0.3 tangential mindlen "
+                    "NULL 1 0.5 zplane 0 NULL\n",
+                "unknown tangential model 'mindlen'", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5\n", "got 5 argument(s)", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke -1 NULL 1 NULL 0.5 1 zplane 0 NULL\n", "Kn", 6);
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 20000 1 zplane 0 NULL\n",
