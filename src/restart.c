@@ -1304,9 +1304,10 @@ static int list_diff(struct gravel *g, const struct image *im, char *why, size_t
     if (e->single != im->single)
         return snprintf(why, len, "%s precision (file: %s)", e->single ? "single" : "double",
                         im->single ? "single" : "double") > 0;
-    if (e->history != im->history)
-        return snprintf(why, len, "contact history %s (file: %s)", e->history ? "on" : "off",
-                        im->history ? "on" : "off") > 0;
+    int hw = e->history ? e->hist_n : 0; /* REALs of history per contact */
+    if (hw != im->history)
+        return snprintf(why, len, "contact history of %d REAL per contact (file: %d)", hw,
+                        im->history) > 0;
     return 0;
 }
 
