@@ -38,13 +38,15 @@ STAT_REL = 0.1
 # whose chaotic trajectories leave the lmp ones after step ~1500 (its
 # temperature means over 4000 steps differ by 14 %)
 STAT_REL_DECK = {"granregion/in.granregion.box": 0.2}
-# pour.drum: per-atom dumps equal lmp's to round-off through step 400 (pair
-# granular jkr/hertz forces differ by 1e-12 at step 300), then the 4000 falling
-# spheres diverge; the first physical thermo value (KinEng at step 1000: the
-# first run's dof is that of 0 atoms, ke prints -0 in both) differs by 1.0e-3.
-# Its second run (rotating drum, gravity along -y) has a mean KinEng 3x below
-# lmp's: not explained (every wall piece it uses matches lmp bit for bit in
-# tests/reference/granular_wall_*); only Atoms and v_theta are asserted there.
+# pour.drum: per-atom dumps equal lmp's to round-off through step 400, then
+# the spheres diverge; the first physical thermo value (KinEng at step 1000: the
+# first run's dof is that of 0 atoms, ke prints -0 in both) differs by 1.0e-3,
+# and the second run's mean KinEng is 3x below lmp's. Traced (300 spheres:
+# identical to step 674) to pair granular, not the walls: a jkr contact held
+# beyond touch (separation 0.006 < pull-off 0.014) is dropped by gravel at a
+# neighbor rebuild (hist_transfer keeps only overlapping pairs) while lmp, whose
+# jkr pair is beyond_contact, keeps it; two spheres reproduce it. Until that is
+# fixed only Atoms and v_theta are asserted after step 1000.
 REL_DECK = {"granular/in.pour.drum": 2e-3}
 STAT_SKIP = {"granular/in.pour.drum": {"KinEng"}}
 
