@@ -150,3 +150,29 @@ void temp_modify(struct gravel *g, struct temp_state *t, int argc, char **argv)
     n.dof_valid = 0;
     *t = n;
 }
+
+void temp_compute_attach(struct gravel *g, struct compute *c, enum temp_kind kind)
+{
+    struct temp_state *t = gr_calloc(g, 1, sizeof *t);
+    c->data = c->temp = t;
+    t->kind = kind;
+    t->groupbit = c->groupbit;
+    c->scalar_flag = c->vector_flag = 1;
+    c->size_vector = 6;
+    c->extvector = 1;
+}
+
+void temp_compute_init(struct gravel *g, struct compute *c)
+{
+    temp_setup(g, c->temp);
+}
+
+double temp_compute_scalar(struct gravel *g, struct compute *c)
+{
+    return temp_scalar(g, c->temp);
+}
+
+void temp_compute_vector(struct gravel *g, struct compute *c)
+{
+    temp_vector(g, c->temp, c->vector);
+}

@@ -36,4 +36,13 @@ struct temp_state *temp_thermo(struct gravel *g);
  * extra/dof (extra); argv holds keyword value pairs. */
 void temp_modify(struct gravel *g, struct temp_state *t, int argc, char **argv);
 
+/* The temperature computes (compute temp, temp/sphere): attach a temperature
+ * of this kind to c (global scalar and 6-vector), and the compute_style
+ * callbacks that serve it. */
+struct compute;
+void temp_compute_attach(struct gravel *g, struct compute *c, enum temp_kind kind);
+void temp_compute_init(struct gravel *g, struct compute *c);
+double temp_compute_scalar(struct gravel *g, struct compute *c);
+void temp_compute_vector(struct gravel *g, struct compute *c);
+
 #endif
