@@ -89,15 +89,21 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
  * 0) or the pair style's set of type pair (t_i, t_i). inclusive: a contact
  * at exactly |del| = radi counts (LAMMPS fix wall/gran); else it does not
  * (the pair contract of fix wall/pair). */
+/* The arguments every wall kernel starts with, in the order src/wall.c
+ * (wall_bind_atoms) binds them: the atoms of the group, the wall's history
+ * and the accuracy records (kernels/accuracy.cl). */
+#define WALL_ATOM_ARGS                                                                         \
+    const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,       \
+        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
+        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
+        __global REAL *torque, __global REAL *history, const int has_history,                  \
+        __global REAL *acc, __global int *astep, const int acode, const int step
+
 #define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0)
 #define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1)
 #define WALL_KERNEL_HW(NAME, EVAL, ROW)                                                        \
     __kernel void NAME(                                                                        \
-        const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
-        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
-        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
-        __global REAL *torque, __global REAL *history, const int has_history,                  \
-        __global REAL *acc, __global int *astep, const int acode, const int step,              \
+        WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         const int nelem, const int kind, const int axis, const REAL lo, const REAL hi,         \
         const REAL wradius, const REAL vwx, const REAL vwy, const REAL vwz,                    \
@@ -311,11 +317,7 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
  * (3) and its torque about the reference point (3), for f_ID output. */
 #define MESH_KERNEL(NAME, EVAL)                                                                \
     __kernel void NAME(                                                                        \
-        const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
-        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
-        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
-        __global REAL *torque, __global REAL *history, const int has_history,                  \
-        __global REAL *acc, __global int *astep, const int acode, const int step,              \
+        WALL_ATOM_ARGS,                                                                        \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
         const int nparam, const int by_type, __global const REAL *tri,                         \
         __global const int *triv, __global const int *cstart, __global const int *ctri,        \

@@ -539,11 +539,7 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
 #define REGION_KERNEL_ROW(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 1)
 #define REGION_KERNEL_HW(NAME, EVAL, ROW)                                                      \
     __kernel void NAME(                                                                        \
-        const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,   \
-        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
-        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
-        __global REAL *torque, __global REAL *history, const int has_history,                  \
-        __global REAL *acc, __global int *astep, const int acode, const int step,              \
+        WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
         const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM)  \
