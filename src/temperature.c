@@ -8,6 +8,7 @@
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
+#include "fix.h"
 
 #define INERTIA 0.4 /* LAMMPS compute temp/sphere: solid sphere, in 2d as well */
 
@@ -38,8 +39,13 @@ static double count_dof(struct gravel *g, const struct temp_state *t)
         }
     }
     double extra = t->extra_set ? t->extra_dof : dim;
-    if (t->kind != TEMP_SPHERE_ROTATE)
+    if (t->kind != TEMP_SPHERE_ROTATE) {
         count -= extra;
+        /* LAMMPS's fix_dof: what fixes (rigid bodies) remove */
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i]->style->dof)
+                count -= g->styles.fix[i]->style->dof(g, g->styles.fix[i], t->groupbit);
+    }
     if (count < 0 && natoms > 0)
         gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g)", natoms,
                  extra);
