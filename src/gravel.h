@@ -141,6 +141,7 @@ struct temp_state {
     int extra_set;              /* extra/dof given (else the dimension at use) */
     int dynamic;                /* compute_modify dynamic/dof yes */
     double dof;                 /* counted at run setup (temp_setup) */
+    double dof_natoms;          /* atoms of the group at that count */
     int dof_valid;              /* dof holds the count of the current run */
 };
 

@@ -496,8 +496,11 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
     if (r->extended && e->rotation)
         eng_read_reals(g, s->omega, 3 * (size_t)n, r->hw);
     double L[3] = {prd(g, 0), prd(g, 1), prd(g, 2)};
+    int per[3], moved = 0;
+    for (int q = 0; q < 3; q++)
+        per[q] = domain_contact_periodic(g, q);
     for (int k = 0; k < r->nmem; k++) {
-        const struct member *m = &r->m[k];
+        struct member *m = &r->m[k];
         const struct rbody *b = &r->b[m->body];
         double *x = r->hx + 3 * m->dev, *v = r->hv + 3 * m->dev, d[3];
         rm_matvec(b->ex, b->ey, b->ez, m->displace, d);
@@ -509,14 +512,34 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
             v[2] = 0.0;
         }
         if (setx)
-            for (int q = 0; q < 3; q++)
+            for (int q = 0; q < 3; q++) {
                 x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                /* gravel wraps positions every step (nbr_check): keep the
+                 * member inside the box by its image shift, so the device
+                 * wrap leaves it alone and its image flag = body's + shift */
+                if (per[q] && (x[q] < g->dom.lo[q] || x[q] >= g->dom.hi[q])) {
+                    m->xbox[q] += (int)floor((x[q] - g->dom.lo[q]) / L[q]);
+                    x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                    if (x[q] >= g->dom.hi[q])
+                        m->xbox[q]++, x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                    if (x[q] < g->dom.lo[q])
+                        x[q] = g->dom.lo[q];
+                    moved = 1;
+                }
+            }
         if (m->ext && e->rotation)
             for (int q = 0; q < 3; q++)
                 r->hw[3 * m->dev + q] = b->omega[q];
     }
     if (setx)
         eng_write_positions(g, s, 0, n, r->hx);
+    if (moved) { /* image flags of the members that crossed a periodic face */
+        eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+        for (int k = 0; k < r->nmem; k++)
+            for (int q = 0; q < 3; q++)
+                r->himg[3 * r->m[k].dev + q] = r->b[r->m[k].body].image[q] + r->m[k].xbox[q];
+        eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+    }
     eng_write_reals(g, s->v, 3 * (size_t)n, r->hv);
     if (r->extended && e->rotation)
         eng_write_reals(g, s->omega, 3 * (size_t)n, r->hw);
