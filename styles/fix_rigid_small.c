@@ -24,16 +24,16 @@
  * template) take the template's mass, centre of mass, principal moments and
  * body-frame displacements (LAMMPS set_molecule).
  *
- * Device and host: the members' forces and torques are read from the device
- * once per step (final_integrate) and summed per body in ascending tag
- * order (deterministic, no atomics); positions, velocities and spins of the
- * members are written back in initial/final_integrate. The transfers read
- * and write whole per-atom arrays (O(N) per step): meant for decks whose
- * atoms are mostly in bodies or few; a gather/scatter kernel over the
- * members would make it O(members). The tag -> device index map, the
- * members' periodic image shifts (LAMMPS xcmimage) and the contact masses
- * are refreshed after every neighbor rebuild (post_neighbor), where LAMMPS
- * remaps xcm into the box (pre_neighbor).
+ * Device and host: each step rigid_gather (kernels/fix_rigid_small.cl)
+ * copies the members' forces and torques into a member-order buffer that
+ * the host reads and sums per body in ascending tag order (deterministic,
+ * no atomics); rigid_scatter writes the members' positions, velocities and
+ * spins computed on the host. O(members) per step. The tag -> device index
+ * map, the members' periodic image shifts (LAMMPS xcmimage) and the contact
+ * masses are refreshed after every neighbor rebuild (post_neighbor), where
+ * LAMMPS remaps xcm into the box (pre_neighbor). gravel wraps atoms every
+ * step: a member crossing a periodic face is placed inside by its image
+ * shift, its image flag = the body's + the shift.
  *
  * Pair and wall contacts of a member use the body's mass as its mass in the
  * effective mass (LAMMPS's mass_rigid, engine.h contact_mass). Degrees of
@@ -74,6 +74,7 @@ struct member {
     int xbox[3];            /* image of the atom relative to its body's (xcmimage) */
     int dev;                /* device index (valid after post_neighbor) */
     double displace[3];     /* x - xcm in the body frame */
+    double x[3];            /* its position as last written to the device (or inserted) */
 };
 
 struct rigid {
@@ -88,13 +89,18 @@ struct rigid {
     int *order;             /* member indices in ascending tag order */
     int order_ok;
     double dtv, dtf, dtq;
-    /* host scratch of whole per-atom arrays (device order) */
+    /* host scratch of whole per-atom arrays (device order; rebuilds only) */
     size_t hcap;
-    double *hx, *hv, *hw, *hf, *ht, *hm;
+    double *hm;
     int64_t *htag;
     int *himg;
     cl_mem cmass;           /* contact masses (engine contact_mass) */
     size_t cmass_cap;
+    /* member-order transfers (kernels/fix_rigid_small.cl) */
+    cl_kernel k_gather, k_scatter;
+    cl_mem d_idx, d_x, d_xl, d_v, d_w, d_out;
+    size_t dcap;            /* members the device buffers hold */
+    double *mx, *mxl, *mv, *mw, *mout; /* host side, member order */
 };
 
 struct molecule *rigid_small_template(const struct fix *f)
@@ -277,6 +283,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
     (void)rsqfar;
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->sources[f->nsources++] = "fix_rigid_small.cl";
     f->needs = NEED_ROTATION;
 }
 
@@ -416,15 +423,36 @@ static void scratch(struct gravel *g, struct rigid *r, int n)
     if ((size_t)n <= r->hcap)
         return;
     size_t c = (size_t)n + (size_t)n / 4 + 16;
-    r->hx = gr_realloc(g, r->hx, 3 * c * sizeof(double));
-    r->hv = gr_realloc(g, r->hv, 3 * c * sizeof(double));
-    r->hw = gr_realloc(g, r->hw, 3 * c * sizeof(double));
-    r->hf = gr_realloc(g, r->hf, 3 * c * sizeof(double));
-    r->ht = gr_realloc(g, r->ht, 3 * c * sizeof(double));
     r->hm = gr_realloc(g, r->hm, c * sizeof(double));
     r->htag = gr_realloc(g, r->htag, c * sizeof(int64_t));
     r->himg = gr_realloc(g, r->himg, 3 * c * sizeof(int));
     r->hcap = c;
+}
+
+/* Device and host buffers of the member-order transfers for r->nmem members. */
+static void member_buffers(struct gravel *g, struct rigid *r)
+{
+    if ((size_t)r->nmem <= r->dcap && r->d_idx)
+        return;
+    size_t c = (size_t)r->nmem + (size_t)r->nmem / 4 + 16, rs = g->eng->rsz;
+    cl_mem *m[] = {&r->d_idx, &r->d_x, &r->d_xl, &r->d_v, &r->d_w, &r->d_out};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+    r->d_idx = eng_alloc(g, c * sizeof(int), "rigid body member indices");
+    r->d_x = eng_alloc(g, 3 * c * rs, "rigid body member positions");
+    r->d_xl = eng_alloc(g, 3 * c * rs, "rigid body member positions (low parts)");
+    r->d_v = eng_alloc(g, 3 * c * rs, "rigid body member velocities");
+    r->d_w = eng_alloc(g, 3 * c * rs, "rigid body member spins");
+    r->d_out = eng_alloc(g, 6 * c * rs, "rigid body member forces");
+    r->mx = gr_realloc(g, r->mx, 3 * c * sizeof(double));
+    r->mxl = gr_realloc(g, r->mxl, 3 * c * sizeof(double));
+    r->mv = gr_realloc(g, r->mv, 3 * c * sizeof(double));
+    r->mw = gr_realloc(g, r->mw, 3 * c * sizeof(double));
+    r->mout = gr_realloc(g, r->mout, 6 * c * sizeof(double));
+    r->dcap = c;
 }
 
 /* After a rebuild: device indices, image shifts (xcm remapped into the box
@@ -456,6 +484,12 @@ static void post_neighbor(struct gravel *g, struct fix *f)
             m->xbox[d] = r->himg[3 * m->dev + d] - r->b[m->body].image[d];
     }
     free(idx);
+    member_buffers(g, r);
+    int *di = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    for (int k = 0; k < r->nmem; k++)
+        di[k] = r->m[k].dev;
+    eng_write(g, r->d_idx, 0, (size_t)r->nmem * sizeof(int), di);
+    free(di);
     /* contact masses: the body's for members, the atom's for the others */
     if ((size_t)e->cap > r->cmass_cap || !r->cmass) {
         if (r->cmass)
@@ -478,8 +512,8 @@ static void need_map(struct gravel *g, struct fix *f)
         post_neighbor(g, f);
 }
 
-/* Members' velocities (and positions with setx) from their bodies, then
- * spheres' omega; whole arrays are read, changed at the members, written. */
+/* Members' velocities (and positions with setx) from their bodies, and the
+ * spheres' omega; written in member order by rigid_scatter. */
 static void set_xv(struct gravel *g, struct fix *f, int setx)
 {
     struct rigid *r = f->data;
@@ -488,13 +522,7 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
     need_map(g, f);
     struct engine *e = g->eng;
     struct dev_atoms *s = eng_atoms(g);
-    int n = s->n, dim2 = g->dom.dimension == 2;
-    scratch(g, r, n);
-    if (setx)
-        eng_read_positions(g, s, n, r->hx);
-    eng_read_reals(g, s->v, 3 * (size_t)n, r->hv);
-    if (r->extended && e->rotation)
-        eng_read_reals(g, s->omega, 3 * (size_t)n, r->hw);
+    int dim2 = g->dom.dimension == 2, setw = r->extended && e->rotation;
     double L[3] = {prd(g, 0), prd(g, 1), prd(g, 2)};
     int per[3], moved = 0;
     for (int q = 0; q < 3; q++)
@@ -502,7 +530,7 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
     for (int k = 0; k < r->nmem; k++) {
         struct member *m = &r->m[k];
         const struct rbody *b = &r->b[m->body];
-        double *x = r->hx + 3 * m->dev, *v = r->hv + 3 * m->dev, d[3];
+        double *x = m->x, *v = r->mv + 3 * k, d[3];
         rm_matvec(b->ex, b->ey, b->ez, m->displace, d);
         v[0] = b->omega[1] * d[2] - b->omega[2] * d[1] + b->vcm[0];
         v[1] = b->omega[2] * d[0] - b->omega[0] * d[2] + b->vcm[1];
@@ -527,22 +555,50 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
                     moved = 1;
                 }
             }
-        if (m->ext && e->rotation)
+        if (setw)
             for (int q = 0; q < 3; q++)
-                r->hw[3 * m->dev + q] = b->omega[q];
+                r->mw[3 * k + q] = b->omega[q];
     }
-    if (setx)
-        eng_write_positions(g, s, 0, n, r->hx);
-    if (moved) { /* image flags of the members that crossed a periodic face */
-        eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+    size_t c3 = 3 * (size_t)r->nmem;
+    if (setx) {
         for (int k = 0; k < r->nmem; k++)
+            for (int q = 0; q < 3; q++) {
+                double rel = r->m[k].x[q] - e->origin[q];
+                double hi = e->single ? (double)(float)rel : rel;
+                r->mx[3 * k + q] = hi;
+                r->mxl[3 * k + q] = rel - hi;
+            }
+        eng_write_reals(g, r->d_x, c3, r->mx);
+        if (e->single)
+            eng_write_reals(g, r->d_xl, c3, r->mxl);
+    }
+    eng_write_reals(g, r->d_v, c3, r->mv);
+    if (setw)
+        eng_write_reals(g, r->d_w, c3, r->mw);
+    cl_kernel k = r->k_scatter;
+    int a = 0;
+    eng_arg_int(g, k, a++, r->nmem);
+    eng_arg_mem(g, k, a++, r->d_idx);
+    eng_arg_mem(g, k, a++, r->d_x);
+    eng_arg_mem(g, k, a++, r->d_xl);
+    eng_arg_mem(g, k, a++, r->d_v);
+    eng_arg_mem(g, k, a++, r->d_w);
+    eng_arg_int(g, k, a++, setx);
+    eng_arg_int(g, k, a++, setw);
+    eng_arg_mem(g, k, a++, s->x);
+    eng_arg_mem(g, k, a++, s->v);
+    eng_arg_mem(g, k, a++, e->rotation ? s->omega : s->v);
+    eng_arg_pos_lo(g, k, a);
+    eng_launch(g, k, (size_t)r->nmem);
+    if (moved) { /* image flags of the members that crossed a periodic face */
+        int n = s->n;
+        scratch(g, r, n);
+        eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+        for (int i = 0; i < r->nmem; i++)
             for (int q = 0; q < 3; q++)
-                r->himg[3 * r->m[k].dev + q] = r->b[r->m[k].body].image[q] + r->m[k].xbox[q];
+                r->himg[3 * r->m[i].dev + q] = r->b[r->m[i].body].image[q] + r->m[i].xbox[q];
         eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
     }
-    eng_write_reals(g, s->v, 3 * (size_t)n, r->hv);
-    if (r->extended && e->rotation)
-        eng_write_reals(g, s->omega, 3 * (size_t)n, r->hw);
 }
 
 static void enforce2d(struct rigid *r)
@@ -556,44 +612,51 @@ static void enforce2d(struct rigid *r)
     }
 }
 
-/* F and T of every body from its members' f and torque (tag order). */
+/* F and T of every body from its members' f and torque (tag order),
+ * gathered in member order by rigid_gather. */
 static void forces_and_torques(struct gravel *g, struct fix *f, int gravity)
 {
     struct rigid *r = f->data;
     need_map(g, f);
     struct engine *e = g->eng;
     struct dev_atoms *s = eng_atoms(g);
-    int n = s->n;
-    scratch(g, r, n);
-    eng_read_positions(g, s, n, r->hx);
-    eng_read_reals(g, s->f, 3 * (size_t)n, r->hf);
-    if (r->extended && e->rotation)
-        eng_read_reals(g, s->torque, 3 * (size_t)n, r->ht);
+    int ext = r->extended && e->rotation;
+    cl_kernel k = r->k_gather;
+    eng_arg_int(g, k, 0, r->nmem);
+    eng_arg_mem(g, k, 1, r->d_idx);
+    eng_arg_mem(g, k, 2, s->f);
+    eng_arg_mem(g, k, 3, e->rotation ? s->torque : s->f);
+    eng_arg_int(g, k, 4, ext);
+    eng_arg_mem(g, k, 5, r->d_out);
+    eng_launch(g, k, (size_t)r->nmem);
+    eng_read_reals(g, r->d_out, 6 * (size_t)r->nmem, r->mout);
     for (int ib = 0; ib < r->nbody; ib++) {
         memset(r->b[ib].fcm, 0, sizeof r->b[ib].fcm);
         memset(r->b[ib].torque, 0, sizeof r->b[ib].torque);
     }
     sort_members(g, r);
-    for (int k = 0; k < r->nmem; k++) {
-        const struct member *m = &r->m[r->order[k]];
+    for (int j = 0; j < r->nmem; j++) {
+        int kk = r->order[j];
+        const struct member *m = &r->m[kk];
         struct rbody *b = &r->b[m->body];
-        const double *fi = r->hf + 3 * m->dev;
+        const double *fi = r->mout + 6 * kk;
         double u[3];
         for (int q = 0; q < 3; q++)
             b->fcm[q] += fi[q];
-        domain_unmap(g, r->hx + 3 * m->dev, m->xbox, u);
+        domain_unmap(g, m->x, m->xbox, u);
         double dx = u[0] - b->xcm[0], dy = u[1] - b->xcm[1], dz = u[2] - b->xcm[2];
         b->torque[0] += dy * fi[2] - dz * fi[1];
         b->torque[1] += dz * fi[0] - dx * fi[2];
         b->torque[2] += dx * fi[1] - dy * fi[0];
     }
-    if (r->extended && e->rotation)
-        for (int k = 0; k < r->nmem; k++) {
-            const struct member *m = &r->m[r->order[k]];
+    if (ext)
+        for (int j = 0; j < r->nmem; j++) {
+            int kk = r->order[j];
+            const struct member *m = &r->m[kk];
             if (!m->ext)
                 continue;
             for (int q = 0; q < 3; q++)
-                r->b[m->body].torque[q] += r->ht[3 * m->dev + q];
+                r->b[m->body].torque[q] += r->mout[6 * kk + 3 + q];
         }
     if (gravity && r->gravity_id[0])
         for (int ib = 0; ib < r->nbody; ib++)
@@ -618,20 +681,34 @@ static void init(struct gravel *g, struct fix *f)
         gr_warn(g, "Gravity may not be correctly applied to rigid bodies if they consist of "
                    "overlapped particles");
     }
-    if (fix_find_style(g, "nve/sphere") || fix_find_style(g, "nve")) {
-        for (int i = 0; i < g->styles.nfix; i++) {
-            struct fix *o = g->styles.fix[i];
-            if (o == f || (strcmp(o->style->name, "nve") && strcmp(o->style->name, "nve/sphere")))
-                continue;
-            for (int k = 0; k < r->nmem; k++) {
-                int j = atoms_find_tag(&g->atoms, r->m[k].tag);
-                if (j >= 0 && (g->atoms.mask[j] & o->groupbit)) {
-                    gr_warn(g, "fix %s (%s) also integrates atoms of rigid bodies of fix %s",
-                            o->id, o->style->name, f->id);
-                    break;
-                }
-            }
-        }
+    unsigned integ = 0; /* groups other integrators move */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *o = g->styles.fix[i];
+        if (o != f && (!strcmp(o->style->name, "nve") || !strcmp(o->style->name, "nve/sphere")))
+            integ |= o->groupbit;
+    }
+    if (integ && r->nmem) {
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        int k;
+        for (k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0 && (g->atoms.mask[idx[k]] & integ))
+                break;
+        free(idx);
+        if (k < r->nmem)
+            gr_warn(g, "fix nve or nve/sphere also integrates atoms of the rigid bodies of fix "
+                       "%s", f->id);
+    }
+    r->k_gather = eng_kernel(g, "rigid_gather");
+    r->k_scatter = eng_kernel(g, "rigid_scatter");
+    r->dcap = 0; /* device buffers of an earlier run: regrown at the first map */
+    if (r->nmem) { /* positions: the host atoms are the device's now */
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        for (int k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0)
+                memcpy(r->m[r->order[k]].x, g->atoms.x + 3 * idx[k], 3 * sizeof(double));
+        free(idx);
     }
     r->dtv = g->dt;
     r->dtf = 0.5 * g->dt;
@@ -709,8 +786,10 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t ta
         m->tag = a->tag[i];
         m->body = body;
         m->ext = mol->radius != NULL;
-        for (int q = 0; q < 3; q++)
+        for (int q = 0; q < 3; q++) {
             m->displace[q] = mol->dxbody[3 * k + q];
+            m->x[q] = a->x[3 * i + q];
+        }
     }
     if (mol->radius)
         r->extended = 1;
@@ -804,12 +883,16 @@ static void destroy(struct fix *f)
     free(r->b);
     free(r->m);
     free(r->order);
-    free(r->hx);
-    free(r->hv);
-    free(r->hw);
-    free(r->hf);
-    free(r->ht);
     free(r->hm);
+    free(r->mx);
+    free(r->mxl);
+    free(r->mv);
+    free(r->mw);
+    free(r->mout);
+    cl_mem *m[] = {&r->d_idx, &r->d_x, &r->d_xl, &r->d_v, &r->d_w, &r->d_out};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i])
+            clReleaseMemObject(*m[i]);
     free(r->htag);
     free(r->himg);
     if (r->cmass)
