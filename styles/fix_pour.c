@@ -379,7 +379,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         p->coords = gr_calloc(g, 4 * (size_t)p->mol->natoms, sizeof(double));
         p->imgs = gr_calloc(g, 3 * (size_t)p->mol->natoms, sizeof(int));
     } else if (p->rigid_id[0]) {
-        gr_error(g, "cannot use fix pour rigid and not molecule");
+        gr_error(g, "cannot use fix pour rigid without mol (a molecule template)");
     } else if (p->ntype <= 0 || p->ntype > g->atoms.ntypes) {
         gr_error(g, "invalid atom type %d in fix pour command (1..%d)", p->ntype,
                  g->atoms.ntypes);
