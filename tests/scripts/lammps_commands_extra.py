@@ -20,6 +20,10 @@ identical):
                 4-snapshot lmp trajectory: every thermo row (KinEng and
                 reduce max of fx, fz) to 1e-10 and each snapshot's per-atom
                 forces (dump every 50) to 1e-10 relative (abs 1e-9)
+  fix_scalar    f_ID of two fix gravity (LAMMPS's gravitational energy, on a
+                subgroup and the chute style), pe and etotal with fix_modify
+                energy yes, a variable of them; thermo_modify norm yes then
+                no: 5 thermo rows to 1e-10
   write_coeff   the file lmp writes for a granular pair style (its header
                 line alone: LAMMPS's granular styles write no coefficients)
 Bad inputs (gravel alone): each must fail with an ERROR naming the command
@@ -129,6 +133,34 @@ run 150
 RERUN = RERUN_HEAD + """dump o all custom 50 out.dump id fx fy fz
 dump_modify o format float %.17g
 rerun traj.dump first 0 every 50 dump x y z vx vy vz
+"""
+
+FIX_SCALAR = """units lj
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+set type 1 diameter 1.05
+velocity all create 1.0 4711
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+timestep 0.001
+fix 1 all nve/sphere
+region low block INF INF INF INF INF 2
+group low region low
+fix 2 low gravity 1.0 vector 0 0.5 -1
+fix 3 all gravity 0.5 chute 20
+fix_modify 2 energy yes
+variable e equal f_3*2+pe
+thermo_style custom step ke f_2 f_3 pe etotal v_e
+thermo_modify format float %.15g
+thermo 10
+run 20
+thermo_modify norm no
+run 10
 """
 
 COEFF = """units lj
@@ -303,6 +335,20 @@ def case_rerun(tmp):
         sum(len(r) for r in tl), sum(3 * len(b) for _, b in fl), worst))
 
 
+def case_fix_scalar(tmp):
+    dirs, err = both(tmp, "fix_scalar", FIX_SCALAR, [])
+    if err:
+        return err
+    tl, tg = thermo_rows(dirs["lmp"][1]), thermo_rows(dirs["gravel"][1])
+    if len(tl) != 5 or len(tl) != len(tg):
+        return "thermo rows: lmp %d gravel %d" % (len(tl), len(tg))
+    for a, b in zip(tl, tg):
+        if not all(close(y, x, 1e-10, 1e-12) for x, y in zip(a, b)):
+            return "thermo row differs: lmp %s gravel %s" % (a, b)
+    return OK("%d thermo rows (f_ID scalars, pe/etotal with fix_modify energy yes, norm "
+              "yes and no) to 1e-10" % len(tl))
+
+
 def case_coeff(tmp):
     dirs, err = both(tmp, "coeff", COEFF, ["coeffs.txt"])
     if err:
@@ -350,6 +396,7 @@ def main():
             tmp, "read_dump", READ_DUMP, ["d1.out", "d2.out", "d3.out", "d4.out", "d5.out",
                                           "d.out"])))
         results.append(("rerun", case_rerun(tmp)))
+        results.append(("fix_scalar", case_fix_scalar(tmp)))
         results.append(("write_coeff", case_coeff(tmp)))
         results.append(("errors", case_bad(tmp)))
         for name, res in results:
