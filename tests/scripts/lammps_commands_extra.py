@@ -24,6 +24,10 @@ identical):
                 subgroup and the chute style), pe and etotal with fix_modify
                 energy yes, a variable of them; thermo_modify norm yes then
                 no: 5 thermo rows to 1e-10
+  agglo_init    inputs/published/agglomeration/init_vectorized.in (the
+                agglomeration deck's initial state without its script loop):
+                the same 100 particles in lmp and gravel; no two closer than
+                d_e, speeds 1 +- 0.1 m/s (mean within 0.04), masses rho pi d_b^3 / 6
   write_coeff   the file lmp writes for a granular pair style (its header
                 line alone: LAMMPS's granular styles write no coefficients)
 Bad inputs (gravel alone): each must fail with an ERROR naming the command
@@ -349,6 +353,39 @@ def case_fix_scalar(tmp):
               "yes and no) to 1e-10" % len(tl))
 
 
+def case_agglo_init(tmp):
+    """inputs/published/agglomeration/init_vectorized.in, N = 100 (n = 5, odd)."""
+    deck = open(os.path.join(ROOT, "inputs", "published", "agglomeration",
+                             "init_vectorized.in")).read()
+    deck = deck.replace("variable N index 1000", "variable N index 100")
+    deck += "write_dump all custom i.dump id x y z vx vy vz mass radius modify format float %.17g\n"
+    dirs, err = both(tmp, "agglo", deck, ["i.dump", "agglo_init.data"])
+    if err:
+        return err
+    res = compare_snap(os.path.join(dirs["lmp"][0], "i.dump"),
+                       os.path.join(dirs["gravel"][0], "i.dump"))
+    if isinstance(res, str):
+        return res
+    rows, _, _ = read_dump(os.path.join(dirs["gravel"][0], "i.dump"))
+    if sorted(rows) != list(range(1, 101)):
+        return "IDs are not 1..100"
+    pts = list(rows.values())
+    dmin = min(sum((p[k] - q[k]) ** 2 for k in range(3)) ** 0.5
+               for i, p in enumerate(pts) for q in pts[i + 1:])
+    speed = [sum(v * v for v in p[3:6]) ** 0.5 for p in pts]
+    mean = sum(speed) / len(speed)
+    sd = (sum((v - mean) ** 2 for v in speed) / len(speed)) ** 0.5
+    cen = [sum(p[k] for p in pts) / len(pts) for k in range(3)]
+    # sd 0.1 over 100 speeds: the mean within 4 standard errors of 1
+    if not (dmin > 0.075 and abs(mean - 1) < 0.04 and 0.07 < sd < 0.13 and
+            all(abs(p[6] - 2000 * 3.141592653589793 / 6 * 0.05 ** 3) < 1e-15 for p in pts) and
+            abs(cen[0]) < 0.02 and abs(cen[1]) < 0.02):
+        return "state: min distance %.4f, speed mean %.4f sd %.4f, centre %s" % (
+            dmin, mean, sd, cen)
+    return OK("100 particles identical in lmp and gravel; closest pair %.3f m > d_e, speeds "
+              "%.3f +- %.3f m/s" % (dmin, mean, sd))
+
+
 def case_coeff(tmp):
     dirs, err = both(tmp, "coeff", COEFF, ["coeffs.txt"])
     if err:
@@ -397,6 +434,7 @@ def main():
                                           "d.out"])))
         results.append(("rerun", case_rerun(tmp)))
         results.append(("fix_scalar", case_fix_scalar(tmp)))
+        results.append(("agglo_init", case_agglo_init(tmp)))
         results.append(("write_coeff", case_coeff(tmp)))
         results.append(("errors", case_bad(tmp)))
         for name, res in results:
