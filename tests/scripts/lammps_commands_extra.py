@@ -24,7 +24,7 @@ identical):
                 subgroup and the chute style), pe and etotal with fix_modify
                 energy yes, a variable of them; thermo_modify norm yes then
                 no: 5 thermo rows to 1e-10
-  agglo_init    inputs/published/agglomeration/init_vectorized.in (the
+  agglo_init    tools/agglomeration/init_vectorized.in (the
                 agglomeration deck's initial state without its script loop):
                 the same 100 particles in lmp and gravel; no two closer than
                 d_e, speeds 1 +- 0.1 m/s (mean within 0.04), masses rho pi d_b^3 / 6
@@ -354,8 +354,8 @@ def case_fix_scalar(tmp):
 
 
 def case_agglo_init(tmp):
-    """inputs/published/agglomeration/init_vectorized.in, N = 100 (n = 5, odd)."""
-    deck = open(os.path.join(ROOT, "inputs", "published", "agglomeration",
+    """tools/agglomeration/init_vectorized.in, N = 100 (n = 5, odd)."""
+    deck = open(os.path.join(ROOT, "tools", "agglomeration",
                              "init_vectorized.in")).read()
     deck = deck.replace("variable N index 1000", "variable N index 100")
     deck += "write_dump all custom i.dump id x y z vx vy vz mass radius modify format float %.17g\n"
