@@ -192,6 +192,14 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     gr_error(g, "could not find fix ID '%.64s' to delete", argv[0]);
 }
 
+void fix_check_time_reset(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->time_depend)
+            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
+                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
+}
+
 double fix_energy_sum(struct gravel *g)
 {
     double e = 0.0;

@@ -144,6 +144,9 @@ void fix_free_all(struct gravel *g);
 /* Sum of the scalars of fixes with fix_modify energy yes (not normalized;
  * host arrays must be current). */
 double fix_energy_sum(struct gravel *g);
+/* Error "cannot reset timestep with a time-dependent fix defined (fix ID
+ * style)" if a fix has time_depend (reset_timestep, read_dump, rerun). */
+void fix_check_time_reset(struct gravel *g);
 /* Union of NEED_* over all fixes. */
 unsigned fix_needs_all(struct gravel *g);
 

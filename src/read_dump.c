@@ -656,10 +656,7 @@ void cmd_read_dump(struct gravel *g, int argc, char **argv)
     if (rd_seek(g, rd, nstep, 1) < 0)
         gr_error(g, "dump file '%s' does not contain the requested snapshot (step %lld)", argv[0],
                  (long long)nstep);
-    for (int i = 0; i < g->styles.nfix; i++)
-        if (g->styles.fix[i]->time_depend)
-            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
-                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
+    fix_check_time_reset(g);
     g->step = nstep;
     g->laststep_reset = nstep;
     gr_print(g, "Reading snapshot from dump file ...\n");

@@ -10,7 +10,8 @@
  * snapshot's row is always printed). Pair styles with contact history see
  * no history update (LAMMPS's setup_minimal). start / stop give the run's
  * bounds as time-dependent styles see them (default: first / last); a
- * snapshot after `stop` is an error. The footer counts snapshots as steps. */
+ * snapshot after `stop` is an error, and so is a time-dependent fix (fix
+ * pour), as LAMMPS. The footer counts snapshots as steps. */
 #include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,7 @@
 #include "command.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "read_dump.h"
 #include "run.h"
 
@@ -117,6 +119,7 @@ void cmd_rerun(struct gravel *g, int argc, char **argv)
         gr_report_error(g);
         exit(1);
     }
+    fix_check_time_reset(g); /* LAMMPS: each snapshot resets the timestep */
     bigint step = rd_seek(g, c.rd, first, 0);
     if (step < 0)
         gr_error(g, "the dump file(s) hold no snapshot at step %lld or later", (long long)first);

@@ -698,10 +698,7 @@ void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
     bigint n = arg_bigint(g, argv[0], "timestep");
     if (n < 0)
         gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
-    for (int i = 0; i < g->styles.nfix; i++)
-        if (g->styles.fix[i]->time_depend)
-            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
-                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
+    fix_check_time_reset(g);
     g->step = n;
     g->laststep_reset = n;
 }

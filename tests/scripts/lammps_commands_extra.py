@@ -198,6 +198,10 @@ BAD = [
     ("rerun a.dump", "rerun"),
     ("rerun a.dump first 3 dump x y z", "no snapshot at step 3 or later"),
     ("rerun a.dump skip 0 dump x", "skip must be > 0"),
+    ("region ins block 0 4 0 3 2 3\nfix gr all gravity 1 vector 0 0 -1\nfix p all pour 5 1 4767548 region ins\nrerun a.dump dump x",
+     "cannot reset timestep with a time-dependent fix defined (fix p pour)"),
+    ("region ins block 0 4 0 3 2 3\nfix gr all gravity 1 vector 0 0 -1\nfix p all pour 5 1 4767548 region ins\nread_dump a.dump 0 x",
+     "cannot reset timestep with a time-dependent fix defined (fix p pour)"),
 ]
 BAD_HEAD = BOX.format(lat="1.0") + \
     "write_dump all custom a.dump id type x y z vx modify format float %.17g\n"
