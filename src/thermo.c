@@ -90,6 +90,17 @@ static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
     return f;
 }
 
+int thermo_shows_fix_vector(const struct gravel *g, const char *id)
+{
+    size_t n = strlen(id);
+    for (int i = 0; i < g->thermo.ncol; i++) {
+        const char *c = g->thermo.col[i];
+        if (!strncmp(c, "f_", 2) && !strncmp(c + 2, id, n) && c[2 + n] == '[')
+            return 1;
+    }
+    return 0;
+}
+
 static int norm_flag(struct gravel *g);
 
 /* Fix scalars and vectors are extensive (sums over atoms, like a mesh's force): divided

@@ -28,6 +28,10 @@ identical):
                 agglomeration deck's initial state without its script loop):
                 the same 100 particles in lmp and gravel; no two closer than
                 d_e, speeds 1 +- 0.1 m/s (mean within 0.04), masses rho pi d_b^3 / 6
+  fix_freeze    f_ID[1], [2], [3] of fix freeze (the force on the frozen layer
+                before zeroing: pair contacts and the earlier fix gravity, not
+                the wall fix defined after it), norm yes then no: 6 rows to
+                1e-10 (abs 1e-12)
   write_coeff   the file lmp writes for a granular pair style (its header
                 line alone: LAMMPS's granular styles write no coefficients)
 Bad inputs (gravel alone): each must fail with an ERROR naming the command
@@ -163,6 +167,33 @@ thermo_style custom step ke f_2 f_3 pe etotal v_e
 thermo_modify format float %.15g
 thermo 10
 run 20
+thermo_modify norm no
+run 10
+"""
+
+FIX_FREEZE = """units lj
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+set type 1 diameter 1.05
+velocity all create 1.0 4711
+region low block INF INF INF INF INF 1
+group low region low
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+timestep 0.001
+fix 1 all nve/sphere
+fix 2 all gravity 1.0 vector 0.3 0 -1
+fix 3 low freeze
+fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.4 NULL
+thermo_style custom step ke f_3[1] f_3[2] f_3[3]
+thermo_modify format float %.15g
+thermo 10
+run 30
 thermo_modify norm no
 run 10
 """
@@ -304,7 +335,7 @@ def thermo_rows(text):
             continue
         if on and line.startswith("Loop time"):
             on = False
-        elif on:
+        elif on and re.match(r"^\s*-?\d", line):   # not the notes between rows
             rows.append([float(x) for x in line.split()])
     return rows
 
@@ -343,18 +374,17 @@ def case_rerun(tmp):
         sum(len(r) for r in tl), sum(3 * len(b) for _, b in fl), worst))
 
 
-def case_fix_scalar(tmp):
-    dirs, err = both(tmp, "fix_scalar", FIX_SCALAR, [])
+def case_thermo(tmp, name, deck, nrows, what):
+    dirs, err = both(tmp, name, deck, [])
     if err:
         return err
     tl, tg = thermo_rows(dirs["lmp"][1]), thermo_rows(dirs["gravel"][1])
-    if len(tl) != 5 or len(tl) != len(tg):
+    if len(tl) != nrows or len(tl) != len(tg):
         return "thermo rows: lmp %d gravel %d" % (len(tl), len(tg))
     for a, b in zip(tl, tg):
         if not all(close(y, x, 1e-10, 1e-12) for x, y in zip(a, b)):
             return "thermo row differs: lmp %s gravel %s" % (a, b)
-    return OK("%d thermo rows (f_ID scalars, pe/etotal with fix_modify energy yes, norm "
-              "yes and no) to 1e-10" % len(tl))
+    return OK("%d thermo rows (%s) to 1e-10" % (len(tl), what))
 
 
 def case_agglo_init(tmp):
@@ -437,7 +467,12 @@ def main():
             tmp, "read_dump", READ_DUMP, ["d1.out", "d2.out", "d3.out", "d4.out", "d5.out",
                                           "d.out"])))
         results.append(("rerun", case_rerun(tmp)))
-        results.append(("fix_scalar", case_fix_scalar(tmp)))
+        results.append(("fix_scalar", case_thermo(
+            tmp, "fix_scalar", FIX_SCALAR, 5,
+            "f_ID scalars, pe/etotal with fix_modify energy yes, norm yes and no")))
+        results.append(("fix_freeze", case_thermo(
+            tmp, "fix_freeze", FIX_FREEZE, 6,
+            "f_ID[1..3] of fix freeze: pair, gravity, not the later wall; norm yes and no")))
         results.append(("agglo_init", case_agglo_init(tmp)))
         results.append(("write_coeff", case_coeff(tmp)))
         results.append(("errors", case_bad(tmp)))
