@@ -51,7 +51,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const uint *mask, __global REAL *shear,
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
-                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
+                            const REAL Lx, const REAL Ly, const REAL Lz, const REAL xy,
+                            const REAL xz, const REAL yz, __global REAL *recf,
                             __global REAL *rect, __global REAL *acc, __global int *astep,
                             const int step POS_LO_PARAM)
 {
@@ -60,9 +61,7 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         return;
     const int i = ci[c], j = cj[c];
     REAL3 del = vload3(i, x) - vload3(j, x);
-    del.x = MINIMG_X(del.x, Lx);
-    del.y = MINIMG_Y(del.y, Ly);
-    del.z = MINIMG_Z(del.z, Lz);
+    MINIMG3(del);
 #ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/common.cl) */
     const REAL3 del_lo = vload3(i, xlo) - vload3(j, xlo);
     const REAL3 dtest = del + del_lo;
@@ -199,7 +198,7 @@ __kernel void pair_gather(const int n, __global const int *ioff, __global const 
 __kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
                           __global const int *ioff, __global const REAL *recf,
                           __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
-                          __global REAL *w)
+                          const REAL xy, const REAL xz, const REAL yz, __global REAL *w)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -210,9 +209,7 @@ __kernel void pair_virial(const int n, __global const int *nlist, const int maxn
     for (int k = 0; k < cnt; k++) {
         const int j = nlist[(size_t)i * maxn + k];
         REAL3 del = xi - vload3(j, x);
-        del.x = MINIMG_X(del.x, Lx);
-        del.y = MINIMG_Y(del.y, Ly);
-        del.z = MINIMG_Z(del.z, Lz);
+        MINIMG3(del);
         s += del * vload3((size_t)(s0 + k), recf);
     }
     vstore3((REAL)0.5 * s, i, w);

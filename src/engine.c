@@ -547,6 +547,8 @@ void eng_prepare(struct gravel *g)
     for (int q = 0; q < 3; q++)
         if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
+    if (g->dom.triclinic)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D TRICLINIC");
     if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
         len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
     for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)

@@ -35,8 +35,7 @@ void pressure_virial(struct gravel *g, double w[3])
     eng_arg_mem(g, k, a++, l->ioff);
     eng_arg_mem(g, k, a++, l->recf);
     eng_arg_mem(g, k, a++, e->a.x);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, a++, l->L[q]);
+    a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->virial);
     eng_launch(g, k, (size_t)n);
     double *wi = gr_malloc(g, (size_t)n * 3 * sizeof(double));

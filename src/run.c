@@ -180,8 +180,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_uint(g, k, i++, freezebit);
         eng_arg_real(g, k, i++, g->dt);
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, i++, l->L[q]);
+        i = nbr_arg_box(g, k, i, l);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         acc_reserve(g);
