@@ -535,6 +535,7 @@ void eng_prepare(struct gravel *g)
     }
     add_source(g, names, texts, &n, "pair_loop.cl", "engine");
     add_source(g, names, texts, &n, "neighbor.cl", "engine");
+    add_source(g, names, texts, &n, "box_change.cl", "engine");
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",

@@ -50,6 +50,7 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
+    e->k_box_remap = eng_kernel(g, "box_remap");
     e->k_pair = e->k_virial = NULL;
     if (!p)
         return;
