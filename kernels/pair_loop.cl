@@ -190,11 +190,12 @@ __kernel void pair_gather(const int n, __global const int *ioff, __global const 
 
 /* The pair virial of the step, per particle, for the pressure (run only on
  * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum
- * over i's incidence records, in row order, of del * F componentwise (xx,
- * yy, zz), del = x_i - x_j (minimum image), F what i receives. A contact's
- * two sides give the same product, so sum_i w_i = sum over contacts of
- * del * F, LAMMPS's ev_tally_xyz virial. Positions have not moved since the
- * forces (final_integrate changes velocities only). */
+ * over i's incidence records, in row order, of the tensor del_a F_b in
+ * LAMMPS's order xx yy zz xy xz yz (6 REAL per particle), del = x_i - x_j
+ * (minimum image), F what i receives. A contact's two sides give the same
+ * product, so sum_i w_i = sum over contacts of del F, LAMMPS's
+ * ev_tally_xyz virial. Positions have not moved since the forces
+ * (final_integrate changes velocities only). */
 __kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
                           __global const int *ioff, __global const REAL *recf,
                           __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
@@ -204,15 +205,18 @@ __kernel void pair_virial(const int n, __global const int *nlist, const int maxn
     if (i >= n)
         return;
     const REAL3 xi = vload3(i, x);
-    REAL3 s = (REAL3)(0);
+    REAL3 s = (REAL3)(0), o = (REAL3)(0);
     const int s0 = ioff[i], cnt = ioff[i + 1] - s0;
     for (int k = 0; k < cnt; k++) {
         const int j = nlist[(size_t)i * maxn + k];
         REAL3 del = xi - vload3(j, x);
         MINIMG3(del);
-        s += del * vload3((size_t)(s0 + k), recf);
+        const REAL3 f = vload3((size_t)(s0 + k), recf);
+        s += del * f;
+        o += (REAL3)(del.x * f.y, del.x * f.z, del.y * f.z);
     }
-    vstore3((REAL)0.5 * s, i, w);
+    vstore3((REAL)0.5 * s, 2 * i, w);
+    vstore3((REAL)0.5 * o, 2 * i + 1, w);
 }
 
 /* Zero the force (and torque) when no pair style computes them. */
