@@ -24,6 +24,9 @@
  *     new box are wrapped back at the next step (nbr_check), as LAMMPS's pbc.
  *   - a change of a non-periodic (shrink-wrapped or fixed) face is allowed;
  *     atoms outside a fixed face are lost at the next rebuild.
+ *   - on a step with output due, the pair virial of the step's forces is
+ *     taken before the atoms move (pressure_virial_snapshot), so the
+ *     pressure printed is that of the forces, as LAMMPS's tally;
  *   - nothing else is refreshed: a fix that caches box-derived values on the
  *     device (none today) must recompute them. */
 #ifndef GR_BOX_CHANGE_H

@@ -16,6 +16,11 @@ void pressure_virial(struct gravel *g, double w[6])
     struct engine *e = g->eng;
     if (!e || !e->active || !e->k_pair || !e->k_virial)
         return;
+    if (e->virial_snap_step == g->step) {
+        for (int d = 0; d < 6; d++)
+            w[d] = e->virial_snap[d];
+        return;
+    }
     const struct nbr_list *l = nbr_list(g);
     int n = e->a.n;
     if (n <= 0)
@@ -66,6 +71,18 @@ double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int vi
     double nktv2p = 1.0;
     double virial = dim == 3 ? w[0] + w[1] + w[2] : w[0] + w[1];
     return (ke + virial) / dim * (1.0 / vol) * nktv2p;
+}
+
+void pressure_virial_snapshot(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active || e->virial_snap_step == g->step)
+        return;
+    double w[6];
+    pressure_virial(g, w);
+    for (int d = 0; d < 6; d++)
+        e->virial_snap[d] = w[d];
+    e->virial_snap_step = g->step;
 }
 
 double pressure_volume(const struct gravel *g)

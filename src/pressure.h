@@ -18,6 +18,11 @@
 /* The virial tensor W_xx, W_yy, W_zz, W_xy, W_xz, W_yz of the current step
  * (0 without a pair style or outside a run). */
 void pressure_virial(struct gravel *g, double w[6]);
+/* Take the virial of this step now and return it for the rest of the step:
+ * a box change (src/box_change.c) calls it before it moves the atoms, since
+ * pair_virial recomputes the separations from the positions (LAMMPS tallies
+ * the virial with the forces, before fix deform's end_of_step). */
+void pressure_virial_snapshot(struct gravel *g);
 /* The volume the pressure divides by: Lx Ly Lz (3d), Lx Ly (2d); tilts
  * do not change it. */
 double pressure_volume(const struct gravel *g);

@@ -51,6 +51,7 @@ static void pair_init(struct gravel *g)
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
     e->k_box_remap = eng_kernel(g, "box_remap");
+    e->virial_snap_step = -1;
     e->k_pair = e->k_virial = NULL;
     if (!p)
         return;
@@ -313,6 +314,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
+    g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
+    g->laststep = g->step + nsteps;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)
