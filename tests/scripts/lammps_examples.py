@@ -62,8 +62,7 @@ DECKS = [
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
-    "multi/in.granular": "triclinic boxes are not supported",
-    "multi/in.powerlaw": "triclinic boxes are not supported",
+    "multi/in.granular": "unknown fix style 'nph/sphere'",
     "multi/in.colloid": "unknown pair style 'colloid'",
     "rigid/in.rigid.gravity": "unknown fix style 'property/atom'",
 }

@@ -1,0 +1,202 @@
+#!/usr/bin/python3
+"""triclinic.py - triclinic boxes, fix deform and the pressure tensor against lmp.
+
+Decks (written here, the same text for both engines; a data file of 200
+spheres from a fixed seed):
+  tilted   3-d periodic box with tilts xy xz yz, a granular gas
+           (gran/hooke/history), fix deform xy erate + yz vel (remap x),
+           300 steps; per-atom x v omega at the end against lmp's dump to
+           DUMP_TOL (relative to the box length / the largest speed), thermo
+           press pxx pyy pzz pxy pxz pyz xy yz against lmp's to THERMO_REL.
+  ortho    the gas in an orthogonal periodic box, fix deform x erate and
+           y volume (remap x): thermo vol lx ly press pxx pyy pxy to THERMO_REL.
+  restart  the tilted deck run 150, write_restart, run 150; then read_restart
+           and the same 150 steps: both final dumps are equal exactly.
+References: tests/reference/triclinic/<deck>.lammps.{dump,log}, made by
+`triclinic.py --update` (needs lmp)."""
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import seeds_verify as sv  # noqa: E402
+
+REF = os.path.join(sv.ROOT, "tests", "reference", "triclinic")
+DUMP_TOL = 1e-10
+THERMO_REL, THERMO_ABS = 1e-8, 1e-12
+L = 8.0
+TILT = {"tilted": (1.5, -1.0, 0.8), "ortho": None}
+
+
+def data_file(path, tilt):
+    rnd = random.Random(11)
+    n = 200
+    lines = ["gas for triclinic.py", "", "%d atoms" % n, "1 atom types", ""]
+    for d in "xyz":
+        lines.append("0 %.1f %slo %shi" % (L, d, d))
+    if tilt:
+        lines.append("%.17g %.17g %.17g xy xz yz" % tilt)
+    xy, xz, yz = tilt or (0, 0, 0)
+    lines += ["", "Atoms # sphere", ""]
+    m = 6  # a 6^3 lattice in lamda coordinates, 200 sites used
+    k = 0
+    for i in range(m):
+        for j in range(m):
+            for q in range(m):
+                if k == n:
+                    break
+                lam = [(i + 0.5 + 0.2 * rnd.random()) / m, (j + 0.5 + 0.2 * rnd.random()) / m,
+                       (q + 0.5 + 0.2 * rnd.random()) / m]
+                x = L * lam[0] + xy * lam[1] + xz * lam[2]
+                y = L * lam[1] + yz * lam[2]
+                z = L * lam[2]
+                diam = 0.8 + 0.4 * rnd.random()
+                k += 1
+                lines.append("%d 1 %.17g 1 %.17g %.17g %.17g" % (k, diam, x, y, z))
+    lines += ["", "Velocities", ""]
+    for k in range(1, n + 1):
+        lines.append("%d %.17g %.17g %.17g 0 0 0" % (
+            k, rnd.uniform(-1, 1), rnd.uniform(-1, 1), rnd.uniform(-1, 1)))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+HEAD = """units lj
+atom_style sphere
+boundary p p p
+read_data gas.data
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+neighbor 0.3 bin
+comm_modify vel yes
+neigh_modify delay 0 every 1 check yes
+timestep 0.001
+fix 1 all nve/sphere
+"""
+
+
+def deck(name, steps=300, restart_at=None):
+    if name == "tilted":
+        fixes = "fix 2 all deform 1 xy erate 0.05 yz vel 0.01 units box\n"
+        cols = "step press pxx pyy pzz pxy pxz pyz xy yz"
+    else:
+        fixes = "fix 2 all deform 1 x erate 0.2 y volume\n"
+        cols = "step vol lx ly press pxx pyy pxy"
+    run = "run %d\n" % steps
+    if restart_at:
+        run = "run %d\nwrite_restart tri.restart\nrun %d\n" % (restart_at, steps - restart_at)
+    return (HEAD + fixes + "thermo_style custom %s\nthermo_modify format float %%.15g\n"
+            "thermo 50\n" % cols + run +
+            "write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz "
+            "modify sort id format float %.17g\n")
+
+
+RESTARTED = """read_restart tri.restart
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+neighbor 0.3 bin
+comm_modify vel yes
+neigh_modify delay 0 every 1 check yes
+fix 1 all nve/sphere
+fix 2 all deform 1 xy erate 0.05 yz vel 0.01 units box
+thermo 50
+run 150
+write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+"""
+
+
+def run(exe, name, text, tmp, data=True):
+    if data:
+        data_file(os.path.join(tmp, "gas.data"), TILT.get(name))
+    with open(os.path.join(tmp, "in.deck"), "w") as f:
+        f.write(text)
+    cmd = ([exe, "-in", "in.deck", "-log", "log.txt", "-screen", "none"] if exe == "lmp"
+           else [exe, "-in", "in.deck", "-log", "log.txt"])
+    p = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=600)
+    log = open(os.path.join(tmp, "log.txt")).read() if os.path.exists(
+        os.path.join(tmp, "log.txt")) else ""
+    dump = open(os.path.join(tmp, "final.dump")).read() if os.path.exists(
+        os.path.join(tmp, "final.dump")) else ""
+    return p.returncode, log or (p.stdout + p.stderr), dump
+
+
+def atoms(dump):
+    lines = dump.splitlines()
+    i = next(k for k, s in enumerate(lines) if s.startswith("ITEM: ATOMS"))
+    return {int(s.split()[0]): [float(v) for v in s.split()[1:]] for s in lines[i + 1:] if s}
+
+
+def compare_dump(name, ref, got):
+    a, b = atoms(ref), atoms(got)
+    sv.check("%s: same atoms as lmp" % name, sorted(a) == sorted(b))
+    vmax = max(abs(v) for r in a.values() for v in r[3:]) or 1.0
+    worst = 0.0
+    for t in a:
+        for c in range(9):
+            scale = L if c < 3 else vmax
+            worst = max(worst, abs(a[t][c] - b.get(t, a[t])[c]) / scale)
+    sv.check("%s: final x v omega within %g of lmp's dump" % (name, DUMP_TOL), worst <= DUMP_TOL,
+             "worst %.3g" % worst)
+
+
+def compare_thermo(name, ref, got):
+    r, g = sv.thermo_rows(ref), sv.thermo_rows(got)
+    sv.check("%s: %d thermo rows as lmp" % (name, len(r)), len(r) == len(g) and len(r) > 2,
+             "%d vs %d" % (len(g), len(r)))
+    worst, where = 0.0, ""
+    for a, b in zip(r, g):
+        for c in a:
+            if c == "Step" or c not in b:
+                continue
+            e = abs(a[c] - b[c]) / max(abs(a[c]), THERMO_ABS / THERMO_REL)
+            if e > worst:
+                worst, where = e, "%s step %d: %.12g vs %.12g" % (c, a["Step"], b[c], a[c])
+    sv.check("%s: thermo within %g of lmp" % (name, THERMO_REL), worst <= THERMO_REL,
+             "worst %.3g (%s)" % (worst, where))
+
+
+def main():
+    update = "--update" in sys.argv
+    os.makedirs(REF, exist_ok=True)
+    dumps = {}
+    for name in ("tilted", "ortho"):
+        rd, rl = (os.path.join(REF, name + ".lammps." + e) for e in ("dump", "log"))
+        if update:
+            with tempfile.TemporaryDirectory() as tmp:
+                rc, log, dump = run("lmp", name, deck(name), tmp)
+                if rc != 0:
+                    print(log[-2000:])
+                    return 1
+                open(rd, "w").write(dump)
+                open(rl, "w").write(log)
+                print("wrote", rd, rl)
+        with tempfile.TemporaryDirectory() as tmp:
+            rc, log, dump = run(sv.GRAVEL, name, deck(name), tmp)
+        sv.check("%s: gravel runs the deck" % name, rc == 0, log[-400:] if rc else "")
+        if rc:
+            continue
+        dumps[name] = dump
+        compare_dump(name, open(rd).read(), dump)
+        compare_thermo(name, open(rl).read(), log)
+    with tempfile.TemporaryDirectory() as tmp:
+        rc, log, straight = run(sv.GRAVEL, "tilted", deck("tilted", 300, 150), tmp)
+        ok = rc == 0
+        if ok:
+            os.remove(os.path.join(tmp, "final.dump"))
+            rc, log2, dump = run(sv.GRAVEL, "tilted", RESTARTED, tmp, data=False)
+            ok = rc == 0
+            log += log2
+        sv.check("restart: a triclinic, deforming run restarts", ok, log[-400:] if not ok else "")
+        if ok:
+            a, b = atoms(dump), atoms(straight)
+            worst = max(abs(u - v) for t in a for u, v in zip(a[t], b[t]))
+            sv.check("restart: 150 + 150 steps across write/read_restart equal 300 exactly",
+                     worst == 0.0, "worst difference %.3g" % worst)
+    return 1 if sv.failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
