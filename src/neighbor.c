@@ -682,25 +682,12 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     domain_shrink_wrap(g, lo, hi);
 }
 
-/* kernels/common.cl box_ufac on the host: the cells of u = L lamda must be
- * this much wider than a cut-off (1 in an orthogonal box). */
-static void box_ufac(const struct domain *d, double f[3])
-{
-    f[0] = f[1] = f[2] = 1.0;
-    if (!d->triclinic)
-        return;
-    double Ly = d->hi[1] - d->lo[1], Lz = d->hi[2] - d->lo[2];
-    double by = d->xy / Ly, cz = (d->xy * d->yz / Ly - d->xz) / Lz, cy = d->yz / Lz;
-    f[0] = sqrt(1 + by * by + cz * cz);
-    f[1] = sqrt(1 + cy * cy);
-}
-
 /* Cells per dimension of a grid of cells >= cut over the box, coarsened
  * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
 static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
     double f[3];
-    box_ufac(d, f);
+    domain_ufac(d, f);
     for (;;) {
         long total = 1;
         for (int q = 0; q < 3; q++) {
@@ -756,7 +743,7 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
 {
     struct domain *d = &g->dom;
     double f[3];
-    box_ufac(d, f);
+    domain_ufac(d, f);
     grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
     if (b->multi)
