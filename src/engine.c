@@ -587,6 +587,8 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     if (e->virial)
         clReleaseMemObject(e->virial);
+    if (e->hrate)
+        clReleaseMemObject(e->hrate);
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);

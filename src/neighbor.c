@@ -593,6 +593,8 @@ int nbr_decide(struct gravel *g, int forced)
     eng_arg_mem(g, k, a++, e->a.radius);
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
     eng_arg_pos_lo(g, k, a);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
@@ -646,21 +648,26 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
         chunk = 1;
     int nch = (n + chunk - 1) / chunk;
     cl_kernel k = b->k_wrap;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_int(g, k, 1, chunk);
-    eng_arg_mem(g, k, 2, e->a.x);
-    eng_arg_mem(g, k, 3, e->a.image);
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_int(g, k, a++, chunk);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.v);
+    eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
+    eng_arg_mem(g, k, a++, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, 4 + q, domain_contact_periodic(g, q));
-    for (int q = 0; q < 3; q++) {
-        eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
-        eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
-    }
-    eng_arg_real(g, k, 13, d->xy);
-    eng_arg_real(g, k, 14, d->xz);
-    eng_arg_real(g, k, 15, d->yz);
-    eng_arg_mem(g, k, 16, b->ext);
-    eng_arg_pos_lo(g, k, 17);
+        eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->hi[q]);
+    eng_arg_real(g, k, a++, d->xy);
+    eng_arg_real(g, k, a++, d->xz);
+    eng_arg_real(g, k, a++, d->yz);
+    eng_arg_mem(g, k, a++, b->ext);
+    eng_arg_pos_lo(g, k, a);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);

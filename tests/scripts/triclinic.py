@@ -16,6 +16,7 @@ spheres from a fixed seed):
            each run, as LAMMPS without run start/stop: other roundings).
 References: tests/reference/triclinic/<deck>.lammps.{dump,log}, made by
 `triclinic.py --update` (needs lmp)."""
+import math
 import os
 import random
 import shutil
@@ -30,7 +31,8 @@ REF = os.path.join(sv.ROOT, "tests", "reference", "triclinic")
 DUMP_TOL = 1e-10
 THERMO_REL, THERMO_ABS = 1e-8, 1e-12
 L = 8.0
-TILT = {"tilted": (1.5, -1.0, 0.8), "ortho": None}
+TILT = {"tilted": (1.5, -1.0, 0.8), "ortho": None, "vremap": (0.5, 0.0, -0.4),
+        "vremap_ortho": None}
 
 
 def data_file(path, tilt):
@@ -84,6 +86,12 @@ def deck(name, steps=300):
     if name == "tilted":
         fixes = "fix 2 all deform 1 xy erate 0.05 yz vel 0.01 units box\n"
         cols = "step press pxx pyy pzz pxy pxz pyz xy yz"
+    elif name == "vremap":
+        fixes = "fix 2 all deform 1 xy erate 0.5 yz erate -0.3 remap v\n"
+        cols = "step ke press pxy pyz xy yz"
+    elif name == "vremap_ortho":
+        fixes = "fix 2 all deform 1 x trate 0.3 z wiggle 0.4 0.1 remap v\n"
+        cols = "step ke vol press pxx pzz"
     else:
         fixes = "fix 2 all deform 1 x erate 0.2 y volume\n"
         cols = "step vol lx ly press pxx pyy pxy"
@@ -123,6 +131,44 @@ def run(exe, name, text, tmp, data=True):
     return p.returncode, log or (p.stdout + p.stderr), dump
 
 
+# h_rate (Lx Ly Lz yz xz xy rates) of the remap v decks with constant rates
+HRATE = {"vremap": (0, 0, 0, -0.3 * L, 0, 0.5 * L)}
+
+
+def box_of(dump):
+    """lo[3], h[6] of a dump's box (LAMMPS's bounding-box header when tilted)."""
+    lines = dump.splitlines()
+    i = next(k for k, s in enumerate(lines) if s.startswith("ITEM: BOX BOUNDS"))
+    rows = [[float(v) for v in lines[i + 1 + k].split()] for k in range(3)]
+    if "xy" not in lines[i]:
+        return [r[0] for r in rows], [r[1] - r[0] for r in rows] + [0, 0, 0]
+    xy, xz, yz = rows[0][2], rows[1][2], rows[2][2]
+    lo = [rows[0][0] - min(0, xy, xz, xy + xz), rows[1][0] - min(0, yz), rows[2][0]]
+    hi = [rows[0][1] - max(0, xy, xz, xy + xz), rows[1][1] - max(0, yz), rows[2][1]]
+    return lo, [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], yz, xz, xy]
+
+
+def wrapped(rows, lo, h, hrate):
+    """Atoms wrapped into the box (lamda in [0, 1)), velocities following
+    (v -= n . h_rate per period, LAMMPS's pbc with remap v): lmp wraps only
+    at its neighbor rebuilds, gravel at every step."""
+    out = {}
+    for t, r in rows.items():
+        x, v = list(r[0:3]), list(r[3:6])
+        lz = (x[2] - lo[2]) / h[2]
+        ly = (x[1] - lo[1] - h[3] * lz) / h[1]
+        lx = (x[0] - lo[0] - h[5] * ly - h[4] * lz) / h[0]
+        n = [math.floor(lx), math.floor(ly), math.floor(lz)]
+        x[0] -= n[0] * h[0] + n[1] * h[5] + n[2] * h[4]
+        x[1] -= n[1] * h[1] + n[2] * h[3]
+        x[2] -= n[2] * h[2]
+        v[0] -= n[0] * hrate[0] + n[1] * hrate[5] + n[2] * hrate[4]
+        v[1] -= n[1] * hrate[1] + n[2] * hrate[3]
+        v[2] -= n[2] * hrate[2]
+        out[t] = x + v + list(r[6:9])
+    return out
+
+
 def atoms(dump):
     lines = dump.splitlines()
     i = next(k for k, s in enumerate(lines) if s.startswith("ITEM: ATOMS"))
@@ -130,7 +176,9 @@ def atoms(dump):
 
 
 def compare_dump(name, ref, got):
-    a, b = atoms(ref), atoms(got)
+    lo, h = box_of(ref)
+    hr = HRATE.get(name, (0, 0, 0, 0, 0, 0))
+    a, b = wrapped(atoms(ref), lo, h, hr), wrapped(atoms(got), lo, h, hr)
     sv.check("%s: same atoms as lmp" % name, sorted(a) == sorted(b))
     vmax = max(abs(v) for r in a.values() for v in r[3:]) or 1.0
     worst = 0.0
@@ -162,7 +210,7 @@ def main():
     update = "--update" in sys.argv
     os.makedirs(REF, exist_ok=True)
     dumps = {}
-    for name in ("tilted", "ortho"):
+    for name in ("tilted", "ortho", "vremap", "vremap_ortho"):
         rd, rl = (os.path.join(REF, name + ".lammps." + e) for e in ("dump", "log"))
         if update:
             with tempfile.TemporaryDirectory() as tmp:
