@@ -55,3 +55,19 @@ __kernel void box_remap(const int n, __global REAL *x, __global const uint *mask
 #endif
     vstore3(xi, i, x);
 }
+
+/* Image flags after a box flip (src/box_change.c box_change_flip): the new
+ * edge vectors are b' = b + fxy a, c' = c + fyz b + fxz a (LAMMPS's flips),
+ * and an atom keeps its unwrapped position:
+ * iy' = iy - fyz iz, ix' = ix - fxz iz - fxy iy'. */
+__kernel void box_image_flip(const int n, __global int *image, const int fxy, const int fxz,
+                             const int fyz)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    int3 im = vload3(i, image);
+    im.y -= fyz * im.z;
+    im.x -= fxz * im.z + fxy * im.y;
+    vstore3(im, i, image);
+}

@@ -83,3 +83,18 @@ void box_change_apply(struct gravel *g, const struct box_target *b, enum box_rem
     }
     nbr_box_changed(g);
 }
+
+void box_change_flip(struct gravel *g, const struct box_target *b, int fxy, int fxz, int fyz)
+{
+    struct engine *e = g->eng;
+    box_change_apply(g, b, BOX_REMAP_NONE, 0);
+    if (e->a.n == 0 || (!fxy && !fxz && !fyz))
+        return;
+    cl_kernel k = e->k_box_flip;
+    eng_arg_int(g, k, 0, e->a.n);
+    eng_arg_mem(g, k, 1, e->a.image);
+    eng_arg_int(g, k, 2, fxy);
+    eng_arg_int(g, k, 3, fxz);
+    eng_arg_int(g, k, 4, fyz);
+    eng_launch(g, k, (size_t)e->a.n);
+}

@@ -50,6 +50,13 @@ struct box_target {
 
 /* The current box as a target (a starting point for a change). */
 void box_current(const struct gravel *g, struct box_target *b);
+/* A box flip (LAMMPS's FixDeform::pre_exchange): the tilts become xy xz yz
+ * of b, whose edge vectors are b' = b + fxy a and c' = c + fyz b + fxz a
+ * (fxy, fxz, fyz in -1, 0, 1); no atom moves, image flags change so that
+ * unwrapped positions are kept (Domain::image_flip). The caller forces a
+ * neighbor rebuild on this step (call it from pre_exchange), which wraps the
+ * atoms into the flipped box. */
+void box_change_flip(struct gravel *g, const struct box_target *b, int fxy, int fxz, int fyz);
 /* Upload g->dom.h_rate again (rates that change during a run). */
 void box_change_rates(struct gravel *g);
 /* Apply the new box b (contract above). */

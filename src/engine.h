@@ -72,6 +72,7 @@ struct engine {
     cl_kernel k_pair, k_gather, k_clear;
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/pressure.c) */
     cl_kernel k_box_remap;      /* box_remap, for box changes in a run (src/box_change.c) */
+    cl_kernel k_box_flip;       /* box_image_flip, for box flips */
     /* the virial taken before a box change moved the atoms (pressure.h):
      * valid for step virial_snap_step only (-1: none) */
     double virial_snap[6];

@@ -51,6 +51,7 @@ static void pair_init(struct gravel *g)
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
     e->k_box_remap = eng_kernel(g, "box_remap");
+    e->k_box_flip = eng_kernel(g, "box_image_flip");
     e->virial_snap_step = -1;
     if (!e->hrate)
         e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");

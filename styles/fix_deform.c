@@ -22,8 +22,12 @@
  * per period, and contacts through a periodic image see the image's
  * streaming velocity (Lees-Edwards; box_change.h).
  *
- * Not supported (clear errors): the variable style, and box flips: a tilt beyond half its box length stops the run (flip yes) or is
- * refused as too skewed for the minimum image (flip no). */
+ * flip yes (default): a tilt beyond half its box length (x for xy and xz,
+ * y for yz) flips the box at the next step, before its neighbor rebuild, as
+ * LAMMPS (tilt -/+ the length, image flags kept consistent:
+ * box_change_flip). Not supported (clear errors): the variable style, and
+ * with flip no a tilt beyond half its box length (gravel's minimum image
+ * needs the flipped box). */
 #include <math.h>
 #include <string.h>
 
@@ -50,6 +54,8 @@ struct set {
 struct deform {
     int nevery, remap, flip, scaled;
     int rates_vary;             /* some trate or wiggle: h_rate changes each step */
+    int flip_pending, fxy, fxz, fyz; /* a flip to do at the next step's pre_exchange */
+    struct box_target flip_box;
     struct set set[6];
 };
 
@@ -250,8 +256,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         s->ftilt *= k;
         s->dtilt *= k;
     }
-    f->hooks = HOOK_END_OF_STEP;
+    f->hooks = HOOK_END_OF_STEP | HOOK_PRE_EXCHANGE;
     f->time_depend = 1;
+    f->force_reneighbor = 1;
     if (d->remap == REMAP_V)
         snprintf(f->defines, sizeof f->defines, "-D VREMAP");
 }
@@ -263,6 +270,8 @@ static void init(struct gravel *g, struct fix *f)
         if (g->styles.fix[i] != f && g->styles.fix[i]->style == f->style)
             gr_error(g, "more than one fix deform");
     const struct domain *dm = &g->dom;
+    d->flip_pending = 0;
+    f->next_reneighbor = 0;
     double delt = (double)(g->laststep - g->firststep) * g->dt;
     for (int i = 0; i < 3; i++) {
         struct set *s = &d->set[i];
@@ -329,6 +338,29 @@ static void init(struct gravel *g, struct fix *f)
         if (delt != 0.0 && (s->style == FINAL || s->style == DELTA || s->style == VEL ||
                             s->style == ERATE))
             hr[i] = (s->tilt_stop - s->tilt_start) / delt;
+    }
+    /* LAMMPS: a yz that would flip while xy changes is refused (the flips
+     * would change xz continuously) */
+    const struct set *yz = &d->set[3], *ys = &d->set[1];
+    if (yz->style && d->set[5].style) {
+        double lo = yz->tilt_stop, hi = yz->tilt_stop;
+        if (yz->style == WIGGLE) { /* LAMMPS's extreme tilts of the wiggle in the run */
+            double a = yz->amplitude, shift = a * sin(2 * M_PI * delt / yz->tperiod);
+            double q = delt / yz->tperiod, t0 = yz->tilt_start;
+            if (a >= 0.0) {
+                lo = q < 0.5 ? t0 : q < 0.75 ? t0 - shift : t0 - a;
+                hi = q < 0.25 ? t0 + shift : t0 + a;
+            } else {
+                lo = q < 0.25 ? t0 - shift : t0 - a;
+                hi = q < 0.5 ? t0 : q < 0.75 ? t0 + shift : t0 + a;
+            }
+        }
+        int flag = lo / (ys->hi_start - ys->lo_start) < -0.5 ||
+                   hi / (ys->hi_start - ys->lo_start) > 0.5;
+        if (ys->style)
+            flag |= lo / (ys->hi_stop - ys->lo_stop) < -0.5 || hi / (ys->hi_stop - ys->lo_stop) > 0.5;
+        if (flag)
+            gr_error(g, "fix deform is changing yz too much with xy");
     }
     g->dom.vremap_group = d->remap == REMAP_V ? f->groupbit : 0;
 }
@@ -435,10 +467,54 @@ static void end_of_step(struct gravel *g, struct fix *f)
         if (d->set[5].style)
             b.xy = d->set[5].tilt_target;
         double xprd = b.hi[0] - b.lo[0], yprd = b.hi[1] - b.lo[1];
-        if (fabs(b.yz / yprd) > 0.5 || fabs(b.xz / xprd) > 0.5 || fabs(b.xy / xprd) > 0.5)
-            gr_error(g, "fix %s deform: a tilt factor exceeds half its box length at step %lld "
-                        "(xy %g xz %g yz %g); %s", f->id, (long long)g->step, b.xy, b.xz, b.yz,
-                     d->flip ? "box flips are not supported" : "the box is too skewed");
+        double xinv = 1.0 / xprd, yinv = 1.0 / yprd;
+        if (b.yz * yinv < -0.5 || b.yz * yinv > 0.5 || b.xz * xinv < -0.5 ||
+            b.xz * xinv > 0.5 || b.xy * xinv < -0.5 || b.xy * xinv > 0.5) {
+            if (!d->flip)
+                gr_error(g, "fix %s deform: with flip no the tilt reached more than half its "
+                            "box length at step %lld (xy %g xz %g yz %g): gravel's minimum "
+                            "image needs flip yes", f->id, (long long)g->step, b.xy, b.xz, b.yz);
+            /* LAMMPS's flip, done at the next step before its rebuild */
+            struct box_target fb = b;
+            int fxy = 0, fxz = 0, fyz = 0;
+            if (g->dom.periodic[1]) {
+                if (fb.yz * yinv < -0.5) {
+                    fb.yz += yprd;
+                    fb.xz += fb.xy;
+                    fyz = 1;
+                } else if (fb.yz * yinv > 0.5) {
+                    fb.yz -= yprd;
+                    fb.xz -= fb.xy;
+                    fyz = -1;
+                }
+            }
+            if (g->dom.periodic[0]) {
+                if (fb.xz * xinv < -0.5) {
+                    fb.xz += xprd;
+                    fxz = 1;
+                }
+                if (fb.xz * xinv > 0.5) {
+                    fb.xz -= xprd;
+                    fxz = -1;
+                }
+                if (fb.xy * xinv < -0.5) {
+                    fb.xy += xprd;
+                    fxy = 1;
+                }
+                if (fb.xy * xinv > 0.5) {
+                    fb.xy -= xprd;
+                    fxy = -1;
+                }
+            }
+            if (fxy || fxz || fyz) {
+                d->flip_pending = 1;
+                d->fxy = fxy;
+                d->fxz = fxz;
+                d->fyz = fyz;
+                d->flip_box = fb;
+                f->next_reneighbor = g->step + 1;
+            }
+        }
     }
     box_change_apply(g, &b, d->remap == BOX_REMAP_X ? BOX_REMAP_X : BOX_REMAP_NONE,
                      f->groupbit);
@@ -446,9 +522,28 @@ static void end_of_step(struct gravel *g, struct fix *f)
         box_change_rates(g);
 }
 
+/* the flip scheduled by the previous step (LAMMPS's pre_exchange): the box
+ * gets the flipped tilts, the image flags follow, and this step's rebuild
+ * wraps the atoms into the flipped box */
+static void pre_exchange(struct gravel *g, struct fix *f)
+{
+    struct deform *d = f->data;
+    if (!d->flip_pending)
+        return;
+    d->flip_pending = 0;
+    /* the bounds are the current ones: the flip changes the tilts only */
+    struct box_target b;
+    box_current(g, &b);
+    b.xy = d->flip_box.xy;
+    b.xz = d->flip_box.xz;
+    b.yz = d->flip_box.yz;
+    box_change_flip(g, &b, d->fxy, d->fxz, d->fyz);
+}
+
 const struct fix_style fix_style_deform = {
     .name = "deform",
     .create = create,
     .init = init,
     .end_of_step = end_of_step,
+    .pre_exchange = pre_exchange,
 };

@@ -32,7 +32,7 @@ DUMP_TOL = 1e-10
 THERMO_REL, THERMO_ABS = 1e-8, 1e-12
 L = 8.0
 TILT = {"tilted": (1.5, -1.0, 0.8), "ortho": None, "vremap": (0.5, 0.0, -0.4),
-        "vremap_ortho": None}
+        "vremap_ortho": None, "flip": (1.5, 0.5, -1.0)}
 
 
 def data_file(path, tilt):
@@ -89,6 +89,9 @@ def deck(name, steps=300):
     elif name == "vremap":
         fixes = "fix 2 all deform 1 xy erate 0.5 yz erate -0.3 remap v\n"
         cols = "step ke press pxy pyz xy yz"
+    elif name == "flip":
+        fixes = "fix 2 all deform 1 xy erate 2.0 xz erate -1.5 yz erate 0.5\n"
+        cols = "step press pxy pyz xy xz yz"
     elif name == "vremap_ortho":
         fixes = "fix 2 all deform 1 x trate 0.3 z wiggle 0.4 0.1 remap v\n"
         cols = "step ke vol press pxx pzz"
@@ -210,7 +213,7 @@ def main():
     update = "--update" in sys.argv
     os.makedirs(REF, exist_ok=True)
     dumps = {}
-    for name in ("tilted", "ortho", "vremap", "vremap_ortho"):
+    for name in ("tilted", "ortho", "vremap", "vremap_ortho", "flip"):
         rd, rl = (os.path.join(REF, name + ".lammps." + e) for e in ("dump", "log"))
         if update:
             with tempfile.TemporaryDirectory() as tmp:
