@@ -19,7 +19,7 @@ References: tests/reference/triclinic/<deck>.lammps.{dump,log}, made by
 import math
 import os
 import random
-import shutil
+import re
 import subprocess
 import sys
 import tempfile
@@ -209,8 +209,53 @@ def compare_thermo(name, ref, got):
              "worst %.3g (%s)" % (worst, where))
 
 
+PRISM = """units lj
+atom_style sphere
+region box prism 0 6 0 6 0 6 1.0 -0.5 0.8 units box
+create_box 1 box
+create_atoms 1 single 1 1 1 units box remap yes
+create_atoms 1 single 6.5 2 1 units box remap yes
+create_atoms 1 single -0.3 5.9 5.9 units box remap yes
+create_atoms 1 single 3 6.4 0.2 units box remap yes
+create_atoms 1 single 2.5 2.5 6.2 units box remap yes
+create_atoms 1 single 4.7 3.1 2.2 units box remap yes
+region rp prism 1 4 1 4 1 4 1 0.5 -0.5 units box
+group inr region rp
+region rb block 0.4 2.1 INF INF INF INF units box
+group inb region rb
+write_dump all custom final.dump id x y z modify sort id format float %.17g
+"""
+
+
+def prism_check(update):
+    """create_box with a prism region, create_atoms single remap, region
+    prism and block membership: positions and group counts equal lmp's."""
+    rd, rl = (os.path.join(REF, "prism.lammps." + e) for e in ("dump", "log"))
+    if update:
+        with tempfile.TemporaryDirectory() as tmp:
+            rc, log, dump = run("lmp", "prism", PRISM, tmp, data=False)
+            open(rd, "w").write(dump)
+            open(rl, "w").write(log)
+    with tempfile.TemporaryDirectory() as tmp:
+        rc, log, dump = run(sv.GRAVEL, "prism", PRISM, tmp, data=False)
+    sv.check("prism: gravel runs create_box prism", rc == 0, log[-300:] if rc else "")
+    if rc:
+        return
+    ref = open(rd).read()
+    a, b = atoms(ref), atoms(dump)
+    worst = max(abs(u - v) for t in a for u, v in zip(a[t], b.get(t, [1e9] * 3)))
+    sv.check("prism: remapped positions equal lmp's", worst <= 1e-14, "worst %.3g" % worst)
+    grp = lambda text: re.findall(r"(\d+) atoms in group (\w+)", text)  # noqa: E731
+    sv.check("prism: group counts of region prism and block as lmp", grp(open(rl).read()) ==
+             grp(log) and len(grp(log)) == 2, "%s vs %s" % (grp(log), grp(open(rl).read())))
+    sv.check("prism: the box line as lmp", "Created triclinic box = (0.0000000 0.0000000 "
+             "0.0000000) to (6.0000000 6.0000000 6.0000000) with tilt (1.0000000 -0.50000000 "
+             "0.80000000)" in log)
+
+
 def main():
     update = "--update" in sys.argv
+    prism_check(update)
     os.makedirs(REF, exist_ok=True)
     dumps = {}
     for name in ("tilted", "ortho", "vremap", "vremap_ortho", "flip"):
