@@ -10,6 +10,7 @@
  * Format precedence per column: `format N` > `format int|float` >
  * the word of `format line` > default, as LAMMPS 2021. */
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +35,7 @@ enum kw_id {
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
     KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
+    KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     KW_COUNT
 };
@@ -116,6 +118,11 @@ static const struct {
     [KW_PXZ] = {"pxz", "Pxz", V_FLOAT},         [KW_PYZ] = {"pyz", "Pyz", V_FLOAT},
     [KW_XY] = {"xy", "Xy", V_FLOAT},            [KW_XZ] = {"xz", "Xz", V_FLOAT},
     [KW_YZ] = {"yz", "Yz", V_FLOAT},
+    [KW_CELLA] = {"cella", "Cella", V_FLOAT},   [KW_CELLB] = {"cellb", "Cellb", V_FLOAT},
+    [KW_CELLC] = {"cellc", "Cellc", V_FLOAT},
+    [KW_CELLALPHA] = {"cellalpha", "CellAlpha", V_FLOAT},
+    [KW_CELLBETA] = {"cellbeta", "CellBeta", V_FLOAT},
+    [KW_CELLGAMMA] = {"cellgamma", "CellGamma", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
 };
 
@@ -735,6 +742,26 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         double p[6];
         pressure_tensor(g, temp_thermo(g), 1, 1, p);
         return p[k - KW_PXX];
+    }
+    case KW_CELLA:
+    case KW_CELLB:
+    case KW_CELLC:
+    case KW_CELLALPHA:
+    case KW_CELLBETA:
+    case KW_CELLGAMMA: { /* LAMMPS's cell lengths and angles (degrees) */
+        const struct domain *d = &g->dom;
+        double lx = d->hi[0] - d->lo[0], ly = d->hi[1] - d->lo[1], lz = d->hi[2] - d->lo[2];
+        double b = sqrt(ly * ly + d->xy * d->xy);
+        double c = sqrt(lz * lz + d->xz * d->xz + d->yz * d->yz);
+        double deg = 180.0 / M_PI;
+        switch (k) {
+        case KW_CELLA: return lx;
+        case KW_CELLB: return b;
+        case KW_CELLC: return c;
+        case KW_CELLALPHA: return acos((d->xy * d->xz + ly * d->yz) / (b * c)) * deg;
+        case KW_CELLBETA: return acos(d->xz / c) * deg;
+        default: return acos(d->xy / b) * deg;
+        }
     }
     case KW_XY: return g->dom.xy;
     case KW_XZ: return g->dom.xz;

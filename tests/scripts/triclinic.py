@@ -91,7 +91,7 @@ def deck(name, steps=300):
         cols = "step ke press pxy pyz xy yz"
     elif name == "flip":
         fixes = "fix 2 all deform 1 xy erate 2.0 xz erate -1.5 yz erate 0.5\n"
-        cols = "step press pxy pyz xy xz yz"
+        cols = "step press pxy pyz xy xz yz cella cellb cellc cellalpha cellbeta cellgamma"
     elif name == "vremap_ortho":
         fixes = "fix 2 all deform 1 x trate 0.3 z wiggle 0.4 0.1 remap v\n"
         cols = "step ke vol press pxx pzz"
