@@ -259,8 +259,44 @@ def prism_check(update):
              "0.80000000)" in log)
 
 
+BOX3 = """units lj
+atom_style sphere
+region b block 0 8 0 8 0 8 units box
+create_box 1 b
+"""
+# (deck lines after BOX3, the error text, the 1-based line that must be named)
+ERRORS = [
+    ("change_box all xy final 1", "cannot change the tilt factors of an orthogonal box", 5),
+    ("change_box all triclinic xy final 1 ortho", "cannot change the box to orthogonal", 5),
+    ("change_box all boundary p f p triclinic xy final 1", "non-periodic dimension", 5),
+    ("fix d all deform 1 xy erate 0.1", "require a triclinic box", 5),
+    ("fix d all deform 1 x erate 0.1 remap w", "remap must be x, v or none", 5),
+    ("fix d all deform 1 x bogus 1", "unknown style 'bogus'", 5),
+    ("fix d all deform 1 x variable v_a v_b", "variable is not supported", 5),
+    ("fix d all deform 1", "at least one parameter", 5),
+    ("fix d all deform 1 x final 2 1", "lo must be below hi", 5),
+    ("change_box all triclinic\nfix d all deform 1 xy trate 0.1\nrun 1",
+     "trate on a box with zero tilt", 7),
+    ("change_box all triclinic\nfix d all deform 1 xy erate 100 flip no units box\n"
+     "pair_style gran/hooke 1 NULL 1 NULL 0.5 0\npair_coeff * *\n"
+     "create_atoms 1 single 1 1 1 units box\nrun 10", "with flip no the tilt", 10),
+    ("region p prism 0 1 0 1 INF INF 0 0.5 0 units box", "infinite dimension", 5),
+    ("region p prism 0 1 2 1 0 1 0 0 0 units box", "needs ylo < yhi", 5),
+]
+
+
+def error_checks():
+    for text, want, line in ERRORS:
+        with tempfile.TemporaryDirectory() as tmp:
+            rc, log, _ = run(sv.GRAVEL, "errors", BOX3 + text + "\n", tmp, data=False)
+        err = [s for s in log.splitlines() if s.startswith("ERROR")]
+        sv.check("error: %s" % want, rc != 0 and bool(err) and want in err[0] and
+                 ("in.deck:%d)" % line) in err[0], err[0][:200] if err else "rc %d" % rc)
+
+
 def main():
     update = "--update" in sys.argv
+    error_checks()
     prism_check(update)
     os.makedirs(REF, exist_ok=True)
     dumps = {}
