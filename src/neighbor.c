@@ -1271,6 +1271,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     ioff[n] = (int)nin;
     int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
     int *cslot = gr_malloc(g, (2 * total + 1) * sizeof(int));
+    for (size_t c = 0; c < 2 * total; c++)
+        cslot[c] = -1;
     double *sh = e->history ? gr_calloc(g, (size_t)hw * total + 1, sizeof(double)) : NULL;
     int asym = 0;
     for (int i = 0; i < n && !asym; i++) {
@@ -1298,6 +1300,9 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
             cslot[2 * (coff[j] + at - jfirst) + 1] = ioff[i] + k;
         }
     }
+    /* an owned contact whose partner's row lacks the owner is asymmetric too */
+    for (size_t c = 0; c < total && !asym; c++)
+        asym = cslot[2 * c + 1] < 0;
     if (!asym) {
         alloc_list(g, b, maxn);
         alloc_contacts(g, b, total);
