@@ -374,9 +374,6 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: box bounds must satisfy %s < %s, got %s %s", r->path,
                          r->lineno, r->w[2], r->w[3], r->w[0], r->w[1]);
         } else if (words_are(r, 3, "xy", "xz", "yz")) {
-            if (r->nw != 6)
-                gr_error(g, "%s:%ld: expected 'xy xz yz' after three tilt factors", r->path,
-                         r->lineno);
             for (int q = 0; q < 3; q++)
                 tilt[q] = rd_num(r, r->w[q], "tilt factor");
             triclinic = 1;
