@@ -512,6 +512,15 @@ void eng_prepare(struct gravel *g)
     e->rotation = (p && pair_needs_rotation(p)) || (needs & NEED_ROTATION);
     e->history = p && pair_needs_history(p);
     e->hist_n = e->history ? pair_history_size(p) : 3;
+    /* -compat lammps2021: a trailing slot records LAMMPS's owner of each
+     * listed pair (kernels/neighbor.cl, hist_transfer) */
+    int flip_lo = 0, flip_n = 0, lmp2021 = e->history && g->opt.lammps2021 &&
+                                            g->neigh.style == NEIGH_BIN;
+    if (lmp2021 && p->style->lammps2021_flip)
+        flip_n = p->style->lammps2021_flip(p, &flip_lo);
+    e->hist_owner = flip_n > 0;
+    if (flip_n > 0)
+        e->hist_n++;
 
     const char *names[32], *texts[32];
     int n = 0;
@@ -545,6 +554,12 @@ void eng_prepare(struct gravel *g)
                        e->history ? " -D HAS_HISTORY" : "");
     if (e->hist_n != 3)
         len += snprintf(opts + len, sizeof opts - (size_t)len, " -D HIST_N=%d", e->hist_n);
+    if (lmp2021)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D LMP2021");
+    if (flip_n > 0)
+        len += snprintf(opts + len, sizeof opts - (size_t)len,
+                        " -D HIST_OWNER=%d -D HIST_ZERO_N=%d -D HIST_FLIP_LO=%d -D HIST_FLIP_N=%d",
+                        e->hist_n - 1, e->hist_n - 1, flip_lo, flip_n);
     for (int q = 0; q < 3; q++)
         if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);

@@ -55,6 +55,7 @@ struct engine {
     int rotation, history;      /* active features of the current run */
     int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
                                  * at most GR_HIST_MAX) */
+    int hist_owner;             /* its last slot is LAMMPS's owner (-compat lammps2021) */
     int cap;                    /* per-atom buffer capacity */
     struct dev_atoms a;
     int active;                 /* inside a run: the device holds the truth */

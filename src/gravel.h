@@ -199,6 +199,7 @@ struct options {
     int progress;           /* -progress */
     int quiet_screen;       /* -screen none */
     int check;              /* -check: each run prints the accuracy map instead */
+    int lammps2021;         /* -compat lammps2021: reproduce that version's quirks */
 };
 
 /* ---- error context: where the command being run came from ------------------ */

@@ -6,11 +6,14 @@
  *   vector x y z           normalized direction
  * Acceleration = magnitude x direction; the force on atom i is m_i times it
  * (force/mass units: ftm2v = 1 in lj, si and cgs). Variable magnitudes and
- * the gradient style are not supported (clear error). */
+ * the gradient style are not supported (clear error). f_ID is LAMMPS's
+ * scalar, the group's gravitational potential energy, which fix_modify
+ * energy yes adds to the thermo pe. */
 #include <math.h>
 #include <string.h>
 
 #include "args.h"
+#include "atoms.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
@@ -146,10 +149,31 @@ static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op 
     return 1;
 }
 
+/* LAMMPS's scalar: the gravitational potential energy of the group,
+ * -sum m (a . x) over its atoms at their (wrapped) positions, summed in tag
+ * order; extensive. */
+static double scalar(struct gravel *g, struct fix *f)
+{
+    const struct grav *gr = f->data;
+    const struct atoms *a = &g->atoms;
+    const int *ord = atoms_tag_order(g);
+    double e = 0.0;
+    for (int k = 0; k < a->n; k++) {
+        int i = ord[k];
+        if (!(a->mask[i] & f->groupbit))
+            continue;
+        const double *x = a->x + 3 * i;
+        e -= a->rmass[i] * (gr->acc[0] * x[0] + gr->acc[1] * x[1] + gr->acc[2] * x[2]);
+    }
+    return e;
+}
+
 const struct fix_style fix_style_gravity = {
     .name = "gravity",
     .create = create,
     .init = init,
     .post_force = post_force,
     .fuse = fuse,
+    .scalar = scalar,
+    .energy_global = 1,
 };

@@ -38,17 +38,16 @@ STAT_REL = 0.1
 # whose chaotic trajectories leave the lmp ones after step ~1500 (its
 # temperature means over 4000 steps differ by 14 %)
 STAT_REL_DECK = {"granregion/in.granregion.box": 0.2}
-# pour.drum: per-atom dumps equal lmp's to round-off through step 400, then
-# the spheres diverge; the first physical thermo value (KinEng at step 1000: the
-# first run's dof is that of 0 atoms, ke prints -0 in both) differs by 1.0e-3,
-# and the second run's mean KinEng is 3x below lmp's. Traced (300 spheres:
-# identical to step 674) to pair granular, not the walls: a jkr contact held
-# beyond touch (separation 0.006 < pull-off 0.014) is dropped by gravel at a
-# neighbor rebuild (hist_transfer keeps only overlapping pairs) while lmp, whose
-# jkr pair is beyond_contact, keeps it; two spheres reproduce it. Until that is
-# fixed only Atoms and v_theta are asserted after step 1000.
-REL_DECK = {"granular/in.pour.drum": 2e-3}
-STAT_SKIP = {"granular/in.pour.drum": {"KinEng"}}
+# pour.drum: gravel runs with -compat lammps2021 (every deck does: the mode
+# that reproduces LAMMPS 29Sep2021 where it is not physical, doc/lammps.md).
+# Without it pour.drum departs at step 436, where LAMMPS negates the rolling
+# and twisting history of a jkr pair whose owner changes at a rebuild; with it
+# per-atom velocities agree to 2e-4 at step 1000 (round-off amplified by the
+# chaotic pour). Its second run (rotating drum) is compared in window means.
+REL_DECK = {}
+STAT_SKIP = {}
+# -compat lammps2021: LAMMPS 2021's quirks (kernels/neighbor.cl, hist_transfer)
+COMPAT = ["-compat", "lammps2021"]
 
 DECKS = [
     "pour/in.pour", "pour/in.pour.2d", "pour/in.pour.2d.molecule",
@@ -120,7 +119,7 @@ def run_lmp(deck):
 def run_gravel(deck):
     with tempfile.TemporaryDirectory() as tmp:
         prepare(deck, tmp)
-        p = subprocess.run([sv.GRAVEL, "-in", "in.short", "-log", "none"], cwd=tmp,
+        p = subprocess.run([sv.GRAVEL, "-in", "in.short", "-log", "none", *COMPAT], cwd=tmp,
                            capture_output=True, text=True, timeout=1800)
     return p.returncode, p.stdout + p.stderr
 
