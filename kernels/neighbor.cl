@@ -311,7 +311,8 @@ static inline int row_ranges(__global const int *start, const int rowbase, const
 
 /* The pair test of every list build: j is a neighbor of i when
  * |x_i - x_j| < radi + radj + skin (LAMMPS size lists; with cohesion the
- * effect surfaces), j != i, and the pair is not excluded (type table, group
+ * effect surfaces; with PAIR_TYPECUT at least typecut[ti][tj] + skin, the
+ * type pair's cut-off of a potential), j != i, and the pair is not excluded (type table, group
  * bit pairs). Both list styles (bin, multi) accept exactly these pairs. */
 static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const int ti,
                              const uint mi, const int j, __global const REAL *x,
@@ -319,7 +320,7 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
                              __global const uint *mask, const REAL Lx, const REAL Ly,
                              const REAL Lz, const REAL skin, const int ntypes,
                              __global const int *excl_type, const int nexg,
-                             __global const uint *excl_group)
+                             __global const uint *excl_group, __global const REAL *typecut)
 {
     if (j == i)
         return 0;
@@ -329,7 +330,10 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
     del.z = MINIMG_Z(del.z, Lz);
     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
     const REAL radsum = radi + radius[j];
-#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+#if defined(PAIR_TYPECUT) /* a potential (pair colloid): its type pair's cut-off */
+    const REAL cut = fmax(fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum),
+                          typecut[(ti - 1) * ntypes + type[j] - 1]) + skin;
+#elif defined(HAS_COHESION) /* cohesion: the list reaches the effect surfaces */
     const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
 #else
     const REAL cut = radsum + skin;
@@ -382,7 +386,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                         const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
                         __global int *ncount, __global int *nown, __global int *flags,
                         const int ntypes, __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group)
+                        __global const uint *excl_group, __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -410,7 +414,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
                     if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
-                                   skin, ntypes, excl_type, nexg, excl_group))
+                                   skin, ntypes, excl_type, nexg, excl_group, typecut))
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
@@ -564,7 +568,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                               __global int *nlist, __global int *ncount, __global int *nown,
                               __global int *flags, const int ntypes,
                               __global const int *excl_type, const int nexg,
-                              __global const uint *excl_group)
+                              __global const uint *excl_group, __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -596,7 +600,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                                 const int j = sorted ? jj : cellatoms[jj];
                                 if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
                                                Lx, Ly, Lz, skin, ntypes, excl_type, nexg,
-                                               excl_group))
+                                               excl_group, typecut))
                                     nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
                             }
                         }

@@ -71,6 +71,7 @@ struct engine {
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/pressure.c) */
+    cl_kernel k_energy;         /* pair_energy of a potential (src/pair_energy.c) */
     cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
     int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */

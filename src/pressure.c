@@ -9,6 +9,20 @@
 #include "neighbor.h"
 #include "temperature.h"
 
+cl_mem pressure_scratch(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (e->a.n > e->virial_cap || !e->virial) {
+        if (e->virial)
+            clReleaseMemObject(e->virial);
+        e->virial = NULL;
+        e->virial_cap = 0;
+        e->virial = eng_alloc(g, (size_t)e->cap * 3 * e->rsz, "per-particle virial");
+        e->virial_cap = e->cap;
+    }
+    return e->virial;
+}
+
 void pressure_virial(struct gravel *g, double w[3])
 {
     w[0] = w[1] = w[2] = 0.0;
@@ -19,14 +33,7 @@ void pressure_virial(struct gravel *g, double w[3])
     int n = e->a.n;
     if (n <= 0)
         return;
-    if (n > e->virial_cap || !e->virial) {
-        if (e->virial)
-            clReleaseMemObject(e->virial);
-        e->virial = NULL;
-        e->virial_cap = 0;
-        e->virial = eng_alloc(g, (size_t)e->cap * 3 * e->rsz, "per-particle virial");
-        e->virial_cap = e->cap;
-    }
+    pressure_scratch(g);
     cl_kernel k = e->k_virial;
     int a = 0;
     eng_arg_int(g, k, a++, n);

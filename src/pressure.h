@@ -13,10 +13,14 @@
 #define GR_PRESSURE_H
 
 #include "gravel.h"
+#include "ocl.h"
 
 /* The virial trace components W_xx, W_yy, W_zz of the current step (0
  * without a pair style or outside a run). */
 void pressure_virial(struct gravel *g, double w[3]);
+/* The per-particle scratch of the on-demand pair tallies (virial, energy):
+ * REAL[3 cap] on the device, kept with the engine. */
+cl_mem pressure_scratch(struct gravel *g);
 /* The pressure with temperature t (host arrays current). */
 double pressure_scalar(struct gravel *g, struct temp_state *t);
 /* The same with the kinetic part (dof kB T, needs t) and the virial part

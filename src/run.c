@@ -50,7 +50,7 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
-    e->k_pair = e->k_virial = NULL;
+    e->k_pair = e->k_virial = e->k_energy = NULL;
     if (!p)
         return;
     if (!p->coeff_set)
@@ -70,6 +70,8 @@ static void pair_init(struct gravel *g)
     free(par);
     e->k_pair = eng_kernel(g, "pair_contacts");
     e->k_virial = eng_kernel(g, "pair_virial");
+    if (p->style->energy)
+        e->k_energy = eng_kernel(g, "pair_energy");
 }
 
 /* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
