@@ -77,6 +77,10 @@ struct engine {
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
     double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
+    /* eng_tag_order: the device tags last read and their order */
+    int64_t *tag_seen;
+    int *tag_order;
+    int tag_n, tag_cap;
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
     char prof_name[48][40];
@@ -125,6 +129,12 @@ void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
 /* Bind the low position part as argument i when positions are split
  * (kernels with POS_LO_PARAM, their last argument); no-op otherwise. */
 void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i);
+
+/* During a run: ord[k] = the device index of the atom with the k-th
+ * smallest tag (reads the device tags; the order is recomputed only when
+ * they moved), so host sums over per-atom device values can run in tag
+ * order without run_sync_host. */
+const int *eng_tag_order(struct gravel *g);
 
 /* Run internals (engine.c): build the program for the active styles; upload
  * the host atoms; grow capacity; release the program's kernels. */

@@ -122,6 +122,13 @@ void nbr_invalidate(struct gravel *g)
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
 
+void nbr_box_changed(struct gravel *g)
+{
+    struct nbr_list *l = &get(g)->list;
+    for (int q = 0; q < 3; q++)
+        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+}
+
 static size_t scan_chunks(int m, int *chunk)
 {
     int nch = (m + 63) / 64;
@@ -517,6 +524,20 @@ int nbr_decide(struct gravel *g, int forced)
     struct nbr *b = get(g);
     int n = e->a.n;
     double trig = 0.5 * g->neigh.skin;
+    if (b->built) {
+        /* the box moved since the build (fix npt, nph, deform): LAMMPS's
+         * boxcheck, the corners' motion comes off the skin */
+        double d1 = 0, d2 = 0;
+        for (int q = 0; q < 3; q++) {
+            d1 += (g->dom.lo[q] - b->lo[q]) * (g->dom.lo[q] - b->lo[q]);
+            d2 += (g->dom.hi[q] - b->hi[q]) * (g->dom.hi[q] - b->hi[q]);
+        }
+        if (d1 > 0 || d2 > 0) {
+            trig = 0.5 * (g->neigh.skin - (sqrt(d1) + sqrt(d2)));
+            if (trig < 0)
+                trig = 0;
+        }
+    }
     reset_flags(g, b);
     cl_kernel k = b->k_check;
     eng_arg_int(g, k, 0, n);

@@ -47,6 +47,11 @@ void nbr_atoms_appended(struct gravel *g, int nold, int nnew);
 void nbr_rebuild(struct gravel *g);
 /* The current list (valid after a build). */
 const struct nbr_list *nbr_list(struct gravel *g);
+/* The box changed during the run (g->dom, orthogonal): the periodic lengths
+ * of the minimum images follow now; the rebuild test takes the corners'
+ * motion since the last build off the skin (LAMMPS boxcheck), and the next
+ * rebuild bins over the new box. */
+void nbr_box_changed(struct gravel *g);
 /* Sum of list lengths (host reduction of the counts). */
 double nbr_total(struct gravel *g);
 /* Largest overlap / min radius over the current contacts. */

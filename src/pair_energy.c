@@ -37,9 +37,7 @@ double pair_energy(struct gravel *g)
     eng_launch(g, k, (size_t)n);
     double *ei = gr_malloc(g, (size_t)n * sizeof(double));
     eng_read_reals(g, out, (size_t)n, ei);
-    /* host index = device index after run_sync_host: sum in tag order */
-    run_sync_host(g);
-    const int *order = atoms_tag_order(g);
+    const int *order = eng_tag_order(g); /* sum in tag order */
     double s = 0.0;
     for (int i = 0; i < n; i++)
         s += ei[order[i]];

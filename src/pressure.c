@@ -48,9 +48,7 @@ void pressure_virial(struct gravel *g, double w[3])
     eng_launch(g, k, (size_t)n);
     double *wi = gr_malloc(g, (size_t)n * 3 * sizeof(double));
     eng_read_reals(g, e->virial, 3 * (size_t)n, wi);
-    /* host index = device index after run_sync_host: sum in tag order */
-    run_sync_host(g);
-    const int *order = atoms_tag_order(g);
+    const int *order = eng_tag_order(g); /* sum in tag order */
     for (int k2 = 0; k2 < n; k2++)
         for (int d = 0; d < 3; d++)
             w[d] += wi[3 * order[k2] + d];
