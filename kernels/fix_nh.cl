@@ -1,41 +1,22 @@
 /* fix_nh.cl - the per-atom work of the Nose-Hoover integrators (fix nvt,
  * npt, nph and their /sphere forms; host side styles/fix_nh.c). Each kernel
  * does exactly LAMMPS FixNH's arithmetic, in its order, for the atoms of the
- * fix group (groupbit); the box dilation for those of the dilate group.
+ * fix group (groupbit).
  *
  * Flags (bit mask `ops`, in the order applied):
  *   NH_TEMP    v *= fe (and omega *= fe with NH_SPHERE)   nh_v_temp
  *   NH_PRESS   v_d *= fp_d, twice                          nh_v_press
  *   NH_KICK    v += dtf/m f (omega += dtf/(I r^2 m) torque) nve_v
- *   NH_REMAP1  x -> lamda in box A -> x in box B           remap
  *   NH_DRIFT   x += dtv v                                  nve_x
- *   NH_REMAP2  x -> lamda in box B -> x in box C           remap
- * final_integrate is NH_KICK then NH_PRESS: nh_final orders them so. */
+ * final_integrate is NH_KICK then NH_PRESS: nh_final orders them so. The
+ * box dilation between the kick and the drift and after the drift is the
+ * box change's (src/box_change.c). */
 
 #define NH_TEMP 1
 #define NH_PRESS 2
 #define NH_KICK 4
-#define NH_REMAP1 8
 #define NH_DRIFT 16
-#define NH_REMAP2 32
 #define NH_SPHERE 64
-
-/* LAMMPS x2lamda then lamda2x of an orthogonal box, all three dimensions:
- * lamda = hinv (x - lo_a), x = h lamda + lo_b (device x relative to the
- * origin: lo_a, lo_b likewise). With split positions the change is added. */
-static inline void nh_remap(REAL3 *hi, REAL3 *lo, const REAL3 lo_a, const REAL3 hinv_a,
-                            const REAL3 lo_b, const REAL3 h_b)
-{
-#ifdef SPLIT_POS
-    const REAL3 x = *hi + *lo;
-    const REAL3 lam = hinv_a * (x - lo_a);
-    pos_add(hi, lo, (h_b * lam + lo_b) - x);
-#else
-    (void)lo;
-    const REAL3 lam = hinv_a * (*hi - lo_a);
-    *hi = h_b * lam + lo_b;
-#endif
-}
 
 static inline REAL3 nh_kick(const REAL3 v, const REAL3 f, const REAL dtfm)
 {
@@ -48,29 +29,23 @@ static inline REAL3 nh_press(REAL3 v, const REAL3 fp)
     return (REAL3)(v.x * fp.x, v.y * fp.y, v.z * fp.z);
 }
 
-/* The atom work of initial_integrate, or of a part of it (ops). box: lo_a,
- * hinv_a, lo_b, h_b for the first remap, lo_b, hinv_b, lo_c, h_c for the
- * second (x, y, z each). */
-__kernel void nh_initial(const int n, const uint groupbit, const uint dilatebit,
-                         const int ops, __global const uint *mask, __global REAL *x,
+/* The atom work of initial_integrate, or of a part of it (ops). */
+__kernel void nh_initial(const int n, const uint groupbit, const int ops,
+                         __global const uint *mask, __global REAL *x,
                          __global REAL *v, __global const REAL *f, __global REAL *omega,
                          __global const REAL *torque, __global const REAL *radius,
                          __global const REAL *rmass, const REAL fe, const REAL fpx,
                          const REAL fpy, const REAL fpz, const REAL dtv, const REAL dtf,
-                         const REAL dtfrot, __global const REAL *box POS_LO_PARAM)
+                         const REAL dtfrot POS_LO_PARAM)
 {
     const int i = get_global_id(0);
-    if (i >= n)
-        return;
-    const uint mi = mask[i];
-    const int in = (mi & groupbit) != 0, dil = (mi & dilatebit) != 0;
-    if (!in && !dil)
+    if (i >= n || !(mask[i] & groupbit))
         return;
     REAL3 vi = vload3(i, v);
 #ifdef HAS_ROTATION
     REAL3 wi = vload3(i, omega);
 #endif
-    if (in) {
+    if (ops & (NH_TEMP | NH_PRESS | NH_KICK)) {
         if (ops & NH_TEMP) {
             vi = (REAL3)(vi.x * fe, vi.y * fe, vi.z * fe);
 #ifdef HAS_ROTATION
@@ -95,17 +70,12 @@ __kernel void nh_initial(const int n, const uint groupbit, const uint dilatebit,
             vstore3(wi, i, omega);
 #endif
     }
-    if (!(ops & (NH_REMAP1 | NH_DRIFT | NH_REMAP2)))
-        return;
-    REAL3 hi = vload3(i, x), lo = POS_LOAD_LO(i);
-    if ((ops & NH_REMAP1) && dil)
-        nh_remap(&hi, &lo, vload3(0, box), vload3(1, box), vload3(2, box), vload3(3, box));
-    if ((ops & NH_DRIFT) && in)
+    if (ops & NH_DRIFT) {
+        REAL3 hi = vload3(i, x), lo = POS_LOAD_LO(i);
         pos_add(&hi, &lo, dtv * vi);
-    if ((ops & NH_REMAP2) && dil)
-        nh_remap(&hi, &lo, vload3(4, box), vload3(5, box), vload3(6, box), vload3(7, box));
-    vstore3(hi, i, x);
-    POS_STORE_LO(lo, i);
+        vstore3(hi, i, x);
+        POS_STORE_LO(lo, i);
+    }
 }
 
 /* final_integrate's atom work: nve_v, then nh_v_press (NH_PRESS). */

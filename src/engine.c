@@ -535,6 +535,7 @@ void eng_prepare(struct gravel *g)
     }
     add_source(g, names, texts, &n, "pair_loop.cl", "engine");
     add_source(g, names, texts, &n, "neighbor.cl", "engine");
+    add_source(g, names, texts, &n, "box_change.cl", "engine");
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
@@ -547,6 +548,8 @@ void eng_prepare(struct gravel *g)
     for (int q = 0; q < 3; q++)
         if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
+    if (g->dom.triclinic)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D TRICLINIC");
     if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
         len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
     for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)

@@ -72,6 +72,14 @@ struct engine {
     cl_kernel k_pair, k_gather, k_clear;
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/pressure.c) */
     cl_kernel k_energy;         /* pair_energy of a potential (src/pair_energy.c) */
+    double epair_snap;          /* the pair energy taken before a box change moved the
+                                 * atoms: valid for step epair_snap_step only (-1: none) */
+    bigint epair_snap_step;
+    cl_kernel k_box_remap;      /* box_remap, for box changes in a run (src/box_change.c) */
+    /* the virial taken before a box change moved the atoms (pressure.h):
+     * valid for step virial_snap_step only (-1: none) */
+    double virial_snap[6];
+    bigint virial_snap_step;
     cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
     int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */

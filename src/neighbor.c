@@ -49,8 +49,11 @@ struct nbr {
     int history, rotation;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
+    double cutpair;             /* largest cut-off of a pair (minimum image needs L >= 2 x) */
     int nexg;
     int ago;
+    double corners_hold[8][3];  /* box corners at the last build */
+    int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
     /* neighbor multi: ncoll collections (ninterval of them by diameter
      * interval, else by type: type2coll), per collection its atom count at
@@ -122,12 +125,6 @@ void nbr_invalidate(struct gravel *g)
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
 
-void nbr_box_changed(struct gravel *g)
-{
-    struct nbr_list *l = &get(g)->list;
-    for (int q = 0; q < 3; q++)
-        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
-}
 
 static size_t scan_chunks(int m, int *chunk)
 {
@@ -448,10 +445,16 @@ void nbr_setup(struct gravel *g)
     if (b->nexg)
         eng_write(g, b->excl_group, 0, (size_t)b->nexg * 2 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
-    double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.radius[i] > rmax)
-            rmax = g->atoms.radius[i];
+    double rmax = e->insert_rmax, r2nd = e->insert_rmax; /* atoms fixes may insert (fix pour) */
+    for (int i = 0; i < g->atoms.n; i++) {
+        double r = g->atoms.radius[i];
+        if (r > rmax) {
+            r2nd = rmax;
+            rmax = r;
+        } else if (r > r2nd) {
+            r2nd = r;
+        }
+    }
     b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
                      pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
     double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
@@ -466,6 +469,8 @@ void nbr_setup(struct gravel *g)
     free(tc);
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
+    /* the largest cut-off of a pair of two atoms: the two largest radii */
+    b->cutpair = fmax(pair_reach(g, rmax + r2nd) + g->neigh.skin, 0.5 * b->cutmax);
     setup_multi(g, b);
     b->ago = 0;
     b->built = 0;
@@ -518,26 +523,69 @@ static void nonfinite_error(struct gravel *g, int i)
              cause);
 }
 
+/* The box corners (LAMMPS's Domain::box_corners order). */
+static void box_corners(const struct gravel *g, double c[8][3])
+{
+    for (int k = 0; k < 8; k++) {
+        double lam[3] = {(double)(k & 1), (double)((k >> 1) & 1), (double)((k >> 2) & 1)};
+        domain_lamda2x(g, lam, c[k]);
+    }
+}
+
+/* Displacement that triggers a rebuild: half the skin, less the two largest
+ * corner displacements of a box changed since the build (LAMMPS's
+ * check_distance: delta = 0.5 (skin - (delta1 + delta2)), at least 0). */
+static double trigger_distance(struct gravel *g, struct nbr *b)
+{
+    double trig = 0.5 * g->neigh.skin;
+    if (!b->box_moved)
+        return trig;
+    double c[8][3], d1 = 0, d2 = 0;
+    box_corners(g, c);
+    for (int k = 0; k < 8; k++) {
+        double dx = c[k][0] - b->corners_hold[k][0], dy = c[k][1] - b->corners_hold[k][1];
+        double dz = c[k][2] - b->corners_hold[k][2];
+        double dl = sqrt(dx * dx + dy * dy + dz * dz);
+        if (dl > d1)
+            d1 = dl;
+        else if (dl > d2)
+            d2 = dl;
+    }
+    trig = 0.5 * (g->neigh.skin - (d1 + d2));
+    return trig < 0 ? 0 : trig;
+}
+
+int nbr_arg_box(struct gravel *g, cl_kernel k, int a, const struct nbr_list *l)
+{
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, l->L[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, l->tilt[q]);
+    return a;
+}
+
+static void list_box(struct gravel *g, struct nbr_list *l)
+{
+    for (int q = 0; q < 3; q++)
+        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    l->tilt[0] = g->dom.xy;
+    l->tilt[1] = g->dom.xz;
+    l->tilt[2] = g->dom.yz;
+}
+
+void nbr_box_changed(struct gravel *g)
+{
+    struct nbr *b = get(g);
+    list_box(g, &b->list);
+    b->box_moved = 1;
+}
+
 int nbr_decide(struct gravel *g, int forced)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
     int n = e->a.n;
-    double trig = 0.5 * g->neigh.skin;
-    if (b->built) {
-        /* the box moved since the build (fix npt, nph, deform): LAMMPS's
-         * boxcheck, the corners' motion comes off the skin */
-        double d1 = 0, d2 = 0;
-        for (int q = 0; q < 3; q++) {
-            d1 += (g->dom.lo[q] - b->lo[q]) * (g->dom.lo[q] - b->lo[q]);
-            d2 += (g->dom.hi[q] - b->hi[q]) * (g->dom.hi[q] - b->hi[q]);
-        }
-        if (d1 > 0 || d2 > 0) {
-            trig = 0.5 * (g->neigh.skin - (sqrt(d1) + sqrt(d2)));
-            if (trig < 0)
-                trig = 0;
-        }
-    }
+    double trig = trigger_distance(g, b);
     reset_flags(g, b);
     cl_kernel k = b->k_check;
     eng_arg_int(g, k, 0, n);
@@ -553,8 +601,11 @@ int nbr_decide(struct gravel *g, int forced)
         eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, 13 + q, domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
+    eng_arg_real(g, k, 16, g->dom.xy);
+    eng_arg_real(g, k, 17, g->dom.xz);
+    eng_arg_real(g, k, 18, g->dom.yz);
     /* the fused initial_integrate ops (src/fused.h) run first */
-    int a = 16;
+    int a = 19;
     eng_arg_mem(g, k, a++, e->fused.ops);
     eng_arg_int(g, k, a++, e->fused.ninit);
     eng_arg_mem(g, k, a++, e->fused.prm);
@@ -628,8 +679,11 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
         eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
         eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
     }
-    eng_arg_mem(g, k, 13, b->ext);
-    eng_arg_pos_lo(g, k, 14);
+    eng_arg_real(g, k, 13, d->xy);
+    eng_arg_real(g, k, 14, d->xz);
+    eng_arg_real(g, k, 15, d->yz);
+    eng_arg_mem(g, k, 16, b->ext);
+    eng_arg_pos_lo(g, k, 17);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -651,15 +705,30 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     domain_shrink_wrap(g, lo, hi);
 }
 
+/* kernels/common.cl box_ufac on the host: the cells of u = L lamda must be
+ * this much wider than a cut-off (1 in an orthogonal box). */
+static void box_ufac(const struct domain *d, double f[3])
+{
+    f[0] = f[1] = f[2] = 1.0;
+    if (!d->triclinic)
+        return;
+    double Ly = d->hi[1] - d->lo[1], Lz = d->hi[2] - d->lo[2];
+    double by = d->xy / Ly, cz = (d->xy * d->yz / Ly - d->xz) / Lz, cy = d->yz / Lz;
+    f[0] = sqrt(1 + by * by + cz * cz);
+    f[1] = sqrt(1 + cy * cy);
+}
+
 /* Cells per dimension of a grid of cells >= cut over the box, coarsened
  * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
 static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
+    double f[3];
+    box_ufac(d, f);
     for (;;) {
         long total = 1;
         for (int q = 0; q < 3; q++) {
             double L = d->hi[q] - d->lo[q];
-            int m = (int)(L / cut);
+            int m = (int)(L / (cut * f[q]));
             if (m < 1)
                 m = 1;
             if (m > 1 << 20)
@@ -709,6 +778,8 @@ static void make_grids_multi(struct gravel *g, struct nbr *b)
 static void make_grid(struct gravel *g, struct nbr *b, int n)
 {
     struct domain *d = &g->dom;
+    double f[3];
+    box_ufac(d, f);
     grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
     if (b->multi)
@@ -717,12 +788,14 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
         b->lo[q] = d->lo[q];
         b->hi[q] = d->hi[q];
         b->inv[q] = b->nc[q] / (d->hi[q] - d->lo[q]);
-        b->list.L[q] = domain_contact_periodic(g, q) ? d->hi[q] - d->lo[q] : 0.0;
-        if (domain_contact_periodic(g, q) && d->hi[q] - d->lo[q] < 2 * b->cutmax)
-            gr_error(g, "periodic box length %g in %c is less than twice the neighbor cut-off "
-                        "%g (2 x largest radius + skin)", d->hi[q] - d->lo[q], "xyz"[q],
-                     b->cutmax);
+        if (domain_contact_periodic(g, q) && (d->hi[q] - d->lo[q]) / f[q] < 2 * b->cutpair)
+            gr_error(g, "periodic box %s %g in %c is less than twice the neighbor cut-off "
+                        "%g (the two largest radii + skin)", d->triclinic ? "width" : "length",
+                     (d->hi[q] - d->lo[q]) / f[q], "xyz"[q], b->cutpair);
     }
+    list_box(g, &b->list);
+    box_corners(g, b->corners_hold);
+    b->box_moved = 0;
 }
 
 /* The full list in partner-tag order; cells list their atoms in b->perm
@@ -763,8 +836,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         if (!b->multi)
             for (int q = 0; q < 3; q++)
                 eng_arg_real(g, k, a++, b->inv[q]);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, a++, b->list.L[q]);
+        a = nbr_arg_box(g, k, a, &b->list);
         eng_arg_real(g, k, a++, g->neigh.skin);
         eng_arg_int(g, k, a++, b->list.maxn);
         eng_arg_mem(g, k, a++, b->list.nlist);
@@ -841,8 +913,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, l->shear);
     eng_arg_mem(g, k, a++, e->a.x);
     eng_arg_mem(g, k, a++, e->a.radius);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, a++, l->L[q]);
+    nbr_arg_box(g, k, a, l);
     eng_launch(g, k, (size_t)total);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
@@ -943,6 +1014,8 @@ static void bin_multi(struct gravel *g, struct nbr *b, int n)
         eng_arg_coord(g, k, a++, q, b->lo[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_coord(g, k, a++, q, b->hi[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, b->list.tilt[q]);
     eng_arg_mem(g, k, a++, b->cellof);
     eng_arg_mem(g, k, a++, b->counts);
     eng_arg_mem(g, k, a++, b->flags);
@@ -986,9 +1059,10 @@ void nbr_rebuild(struct gravel *g)
             eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
             eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
             eng_arg_real(g, k, 11 + q, b->inv[q]);
+            eng_arg_real(g, k, 14 + q, b->list.tilt[q]);
         }
-        eng_arg_mem(g, k, 14, b->cellof);
-        eng_arg_mem(g, k, 15, b->counts);
+        eng_arg_mem(g, k, 17, b->cellof);
+        eng_arg_mem(g, k, 18, b->counts);
         eng_launch(g, k, (size_t)n);
     }
     nbr_scan(g, b->counts, b->start, m);
@@ -1093,9 +1167,8 @@ double nbr_max_overlap(struct gravel *g)
     eng_arg_mem(g, k, 4, b->list.nlist);
     eng_arg_mem(g, k, 5, b->list.ncount);
     eng_arg_int(g, k, 6, b->list.maxn);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 7 + q, b->list.L[q]);
-    eng_arg_mem(g, k, 10, b->ext);
+    nbr_arg_box(g, k, 7, &b->list);
+    eng_arg_mem(g, k, 13, b->ext);
     eng_launch(g, k, (size_t)nch);
     double v[NCHUNK_MAX];
     eng_read_reals(g, b->ext, (size_t)nch, v);
@@ -1290,8 +1363,9 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     free(sh);
     if (asym)
         return 0;
-    for (int q = 0; q < 3; q++)
-        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    list_box(g, l);
+    box_corners(g, b->corners_hold);
+    b->box_moved = 0;
     b->ago = s->ago;
     b->built = 1;
     b->old_valid = e->history;

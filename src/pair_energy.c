@@ -15,6 +15,8 @@ double pair_energy(struct gravel *g)
     struct engine *e = g->eng;
     if (!e || !e->active || !e->k_energy || !g->styles.pair)
         return 0.0;
+    if (e->epair_snap_step == g->step)
+        return e->epair_snap;
     const struct nbr_list *l = nbr_list(g);
     int n = e->a.n;
     if (n <= 0)
@@ -31,8 +33,7 @@ double pair_energy(struct gravel *g)
     eng_arg_mem(g, k, a++, e->pair_param);
     eng_arg_int(g, k, a++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
     eng_arg_int(g, k, a++, g->styles.pair->style->nparam);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, a++, l->L[q]);
+    a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, out);
     eng_launch(g, k, (size_t)n);
     double *ei = gr_malloc(g, (size_t)n * sizeof(double));
@@ -43,4 +44,13 @@ double pair_energy(struct gravel *g)
         s += ei[order[i]];
     free(ei);
     return s;
+}
+
+void pair_energy_snapshot(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active || !e->k_energy || e->epair_snap_step == g->step)
+        return;
+    e->epair_snap = pair_energy(g);
+    e->epair_snap_step = g->step;
 }

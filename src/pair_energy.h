@@ -13,5 +13,9 @@
 /* The pair energy of the current positions (0 outside a run, without a
  * pair style or for a style without an energy). */
 double pair_energy(struct gravel *g);
+/* Take this step's pair energy now, for the rest of the step: a box change
+ * after the forces (src/box_change.c) calls it before it moves the atoms
+ * (compute_forces discards it). */
+void pair_energy_snapshot(struct gravel *g);
 
 #endif

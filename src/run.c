@@ -50,6 +50,8 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
+    e->k_box_remap = eng_kernel(g, "box_remap");
+    e->virial_snap_step = e->epair_snap_step = -1;
     e->k_pair = e->k_virial = e->k_energy = NULL;
     if (!p)
         return;
@@ -182,8 +184,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_uint(g, k, i++, freezebit);
         eng_arg_real(g, k, i++, g->dt);
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, i++, l->L[q]);
+        i = nbr_arg_box(g, k, i, l);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         acc_reserve(g);
@@ -192,6 +193,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_int(g, k, i++, acc_step(g));
         eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
+        /* new forces: a virial or energy taken before is stale */
+        e->virial_snap_step = e->epair_snap_step = -1;
         k = e->k_gather;
         i = 0;
         eng_arg_int(g, k, i++, a->n);
@@ -315,6 +318,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
+    g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
+    g->laststep = g->step + nsteps;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)

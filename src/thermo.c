@@ -34,6 +34,7 @@ enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
+    KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     KW_COUNT
 };
@@ -111,8 +112,21 @@ static const struct {
     [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
     [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
     [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT}, [KW_PRESS] = {"press", "Press", V_FLOAT},
+    [KW_PXX] = {"pxx", "Pxx", V_FLOAT},         [KW_PYY] = {"pyy", "Pyy", V_FLOAT},
+    [KW_PZZ] = {"pzz", "Pzz", V_FLOAT},         [KW_PXY] = {"pxy", "Pxy", V_FLOAT},
+    [KW_PXZ] = {"pxz", "Pxz", V_FLOAT},         [KW_PYZ] = {"pyz", "Pyz", V_FLOAT},
+    [KW_XY] = {"xy", "Xy", V_FLOAT},            [KW_XZ] = {"xz", "Xz", V_FLOAT},
+    [KW_YZ] = {"yz", "Yz", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
 };
+
+/* thermo keywords that read the host arrays (the temperature or the kinetic
+ * tensor) */
+static int needs_host(int k)
+{
+    return k == KW_KE || k == KW_ETOTAL || k == KW_TEMP || k == KW_PRESS ||
+           (k >= KW_PXX && k <= KW_PYZ);
+}
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
  * granular flows the atom count (pours, lost atoms), kinetic energy and
@@ -719,6 +733,19 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
     case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);
     case KW_PRESS: return pressure_scalar(g, temp_thermo(g)); /* intensive */
+    case KW_PXX:
+    case KW_PYY:
+    case KW_PZZ:
+    case KW_PXY:
+    case KW_PXZ:
+    case KW_PYZ: { /* intensive */
+        double p[6];
+        pressure_tensor(g, temp_thermo(g), 1, 1, p);
+        return p[k - KW_PXX];
+    }
+    case KW_XY: return g->dom.xy;
+    case KW_XZ: return g->dom.xz;
+    case KW_YZ: return g->dom.yz;
     case KW_VOL: return volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
@@ -740,7 +767,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP || k == KW_PRESS)
+        if (needs_host(k))
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
@@ -809,8 +836,7 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_TEMP ||
-            st->kind[i] == KW_PRESS || st->kind[i] == KW_THERMO_TEMP ||
+        if ((st->kind[i] >= 0 && needs_host(st->kind[i])) || st->kind[i] == KW_THERMO_TEMP ||
             st->kind[i] == KIND_COMPUTE) {
             run_sync_host(g);
             break;

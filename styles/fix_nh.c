@@ -24,13 +24,14 @@
  *
  * Box dilation (barostat): the orthogonal box scales about the fixed point
  * by exp(dt/2 omega_dot) twice a step, the atoms of the dilate group with it
- * (LAMMPS remap: x -> lamda -> x); the neighbor list follows through
- * nbr_box_changed(). */
+ * (LAMMPS remap: x -> lamda -> x), through box_change_apply
+ * (src/box_change.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
+#include "box_change.h"
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
@@ -44,8 +45,7 @@
 enum { NONE, XYZ, XY, YZ, XZ };
 enum { ISO, ANISO };
 /* kernels/fix_nh.cl flags */
-enum { NH_TEMP = 1, NH_PRESS = 2, NH_KICK = 4, NH_REMAP1 = 8, NH_DRIFT = 16, NH_REMAP2 = 32,
-       NH_SPHERE = 64 };
+enum { NH_TEMP = 1, NH_PRESS = 2, NH_KICK = 4, NH_DRIFT = 16, NH_SPHERE = 64 };
 
 #define NH_MAXCHAIN 64
 
@@ -74,10 +74,10 @@ struct nh {
     /* the fix's temperature and the virial of the last forces */
     struct temp_state temp;
     double mvv[6];                  /* its kinetic tensor diagonal (xx yy zz) */
-    double virial[3];
+    double virial[6];
     /* device */
     cl_kernel k_ini, k_fin, k_mvv;
-    cl_mem d_mvv, d_box;
+    cl_mem d_mvv;
     int mvv_cap;
     double *h_mvv;
 };
@@ -272,8 +272,6 @@ void fix_nh_destroy(struct fix *f)
     if (n) {
         if (n->d_mvv)
             clReleaseMemObject(n->d_mvv);
-        if (n->d_box)
-            clReleaseMemObject(n->d_box);
         free(n->h_mvv);
         free(n);
     }
@@ -296,7 +294,7 @@ void fix_nh_init(struct gravel *g, struct fix *f)
             if ((a->mask[i] & f->groupbit) && a->radius[i] == 0)
                 gr_error(g, "fix %s requires extended particles (atom %lld has radius 0)",
                          f->style->name, (long long)a->tag[i]);
-    n->dilatebit = ~0u;
+    n->dilatebit = group_bit(0); /* all */
     if (!n->allremap) {
         int ig = group_find(g, n->dilate_id);
         if (ig < 0)
@@ -310,8 +308,6 @@ void fix_nh_init(struct gravel *g, struct fix *f)
     n->k_ini = eng_kernel(g, "nh_initial");
     n->k_fin = eng_kernel(g, "nh_final");
     n->k_mvv = eng_kernel(g, "nh_mvv");
-    if (!n->d_box)
-        n->d_box = eng_alloc(g, 24 * g->eng->rsz, "fix nh box");
     double dt = g->dt;
     n->dtv = dt;
     n->dtf = 0.5 * dt; /* ftm2v = 1 in lj, si, cgs */
@@ -484,26 +480,16 @@ static void compute_press_target(struct gravel *g, struct nh *n)
         compute_sigma(g, n);
 }
 
-/* The atom work: kernels/fix_nh.cl nh_initial with the given flags; box:
- * the 24 values of its two remaps (or NULL). */
+/* The atom work: kernels/fix_nh.cl nh_initial with the given flags. */
 static void atoms_initial(struct gravel *g, struct fix *f, struct nh *n, int ops, double fe,
-                          const double fp[3], const double *box)
+                          const double fp[3])
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = &e->a;
-    if (box) {
-        double b[24];
-        memcpy(b, box, sizeof b);
-        for (int k = 0; k < 24; k += 6) /* lo rows relative to the device origin */
-            for (int d = 0; d < 3; d++)
-                b[k + d] -= e->origin[d];
-        eng_write_reals(g, n->d_box, 24, b);
-    }
     cl_kernel k = n->k_ini;
     int i = 0;
     eng_arg_int(g, k, i++, a->n);
     eng_arg_uint(g, k, i++, f->groupbit);
-    eng_arg_uint(g, k, i++, box ? n->dilatebit : 0u);
     eng_arg_int(g, k, i++, ops | (n->sphere ? NH_SPHERE : 0));
     eng_arg_mem(g, k, i++, a->mask);
     eng_arg_mem(g, k, i++, a->x);
@@ -519,14 +505,13 @@ static void atoms_initial(struct gravel *g, struct fix *f, struct nh *n, int ops
     eng_arg_real(g, k, i++, n->dtv);
     eng_arg_real(g, k, i++, n->dtf);
     eng_arg_real(g, k, i++, n->dtf / n->inertia);
-    eng_arg_mem(g, k, i++, n->d_box);
     eng_arg_pos_lo(g, k, i);
     eng_launch(g, k, (size_t)a->n);
 }
 
 static void nh_v_temp(struct gravel *g, struct fix *f, struct nh *n)
 {
-    atoms_initial(g, f, n, NH_TEMP, n->factor_eta, NULL, NULL);
+    atoms_initial(g, f, n, NH_TEMP, n->factor_eta, NULL);
 }
 
 static void nhc_temp_integrate(struct gravel *g, struct fix *f, struct nh *n)
@@ -672,28 +657,23 @@ static void press_factors(const struct nh *n, double fp[3])
         fp[d] = exp(-n->dt4 * (n->omega_dot[d] + n->mtk_term2));
 }
 
-/* One half-step box change (LAMMPS remap without the atoms): box rows lo,
- * h_inv of the box before, lo, h after, into b[0..12). */
-static void remap_box(struct gravel *g, struct nh *n, double *b)
+/* One half-step box change, LAMMPS remap: the box scales about the fixed
+ * point by exp(dto omega_dot) in each barostatted dimension, the atoms of
+ * the dilate group keep their lamda coordinates (src/box_change.c). */
+static void remap(struct gravel *g, struct nh *n)
 {
-    struct domain *d = &g->dom;
     for (int q = 0; q < 3; q++)
         n->omega[q] += n->dto * n->omega_dot[q];
-    for (int q = 0; q < 3; q++) {
-        b[q] = d->lo[q];
-        b[3 + q] = 1.0 / (d->hi[q] - d->lo[q]);
-    }
+    struct box_target b;
+    box_current(g, &b);
     for (int q = 0; q < 3; q++)
         if (n->p_flag[q]) {
-            double oldlo = d->lo[q], oldhi = d->hi[q];
+            double oldlo = b.lo[q], oldhi = b.hi[q];
             double expfac = exp(n->dto * n->omega_dot[q]);
-            d->lo[q] = (oldlo - n->fixedpoint[q]) * expfac + n->fixedpoint[q];
-            d->hi[q] = (oldhi - n->fixedpoint[q]) * expfac + n->fixedpoint[q];
+            b.lo[q] = (oldlo - n->fixedpoint[q]) * expfac + n->fixedpoint[q];
+            b.hi[q] = (oldhi - n->fixedpoint[q]) * expfac + n->fixedpoint[q];
         }
-    for (int q = 0; q < 3; q++) {
-        b[6 + q] = d->lo[q];
-        b[9 + q] = d->hi[q] - d->lo[q];
-    }
+    box_change_apply(g, &b, BOX_REMAP_X, n->dilatebit);
 }
 
 /* ---- hooks ---- */
@@ -758,25 +738,21 @@ void fix_nh_initial_integrate(struct gravel *g, struct fix *f)
         compute_temp_target(g, n);
         nhc_temp_integrate(g, f, n);
     }
-    double fp[3] = {1, 1, 1};
-    int ops = NH_KICK | NH_DRIFT;
-    if (n->pstat) {
-        /* the kinetic part after the thermostat's scaling, with the virial
-         * of the last forces */
-        double t = temperature(g, n);
-        pressure_couple(g, n, t);
-        compute_press_target(g, n);
-        nh_omega_dot(g, n);
-        press_factors(n, fp);
-        ops |= NH_PRESS | NH_REMAP1 | NH_REMAP2;
-        double box[24];
-        remap_box(g, n, box);
-        remap_box(g, n, box + 12);
-        nbr_box_changed(g);
-        atoms_initial(g, f, n, ops, 1.0, fp, box);
-    } else {
-        atoms_initial(g, f, n, ops, 1.0, fp, NULL);
+    if (!n->pstat) {
+        atoms_initial(g, f, n, NH_KICK | NH_DRIFT, 1.0, NULL);
+        return;
     }
+    /* the kinetic part after the thermostat's scaling, with the virial of
+     * the last forces */
+    double t = temperature(g, n), fp[3];
+    pressure_couple(g, n, t);
+    compute_press_target(g, n);
+    nh_omega_dot(g, n);
+    press_factors(n, fp);
+    atoms_initial(g, f, n, NH_PRESS | NH_KICK, 1.0, fp);
+    remap(g, n);
+    atoms_initial(g, f, n, NH_DRIFT, 1.0, NULL);
+    remap(g, n);
 }
 
 void fix_nh_final_integrate(struct gravel *g, struct fix *f)
