@@ -31,6 +31,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_deform.h"
 
 enum { NONE = 0, FINAL, DELTA, SCALE, VEL, ERATE, TRATE, VOLUME, WIGGLE };
 enum { ONE_FROM_ONE, ONE_FROM_TWO, TWO_FROM_ONE };
@@ -415,6 +416,12 @@ static void end_of_step(struct gravel *g, struct fix *f)
                      d->flip ? "box flips are not supported" : "the box is too skewed");
     }
     box_change_apply(g, &b, (enum box_remap)d->remap, f->groupbit);
+}
+
+int fix_deform_changes(const struct fix *f, int p)
+{
+    const struct deform *d = f->data;
+    return d && p >= 0 && p < 6 && d->set[p].style != NONE;
 }
 
 const struct fix_style fix_style_deform = {

