@@ -343,9 +343,10 @@ void fix_nh_init(struct gravel *g, struct fix *f)
 
 /* ---- the fix's temperature and pressure ---- */
 
-/* T of the fix's temperature from the device velocities, and its kinetic
- * tensor diagonal in n->mvv (LAMMPS compute temp / temp/sphere). */
-static double temperature(struct gravel *g, struct nh *n)
+/* T of the fix's temperature from the device velocities (LAMMPS compute
+ * temp / temp/sphere scalar) and, with tensor, its kinetic tensor diagonal
+ * in n->mvv (the vector). */
+static double temperature(struct gravel *g, struct nh *n, int tensor)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = &e->a;
@@ -386,7 +387,7 @@ static double temperature(struct gravel *g, struct nh *n)
         }
     }
     double mvv2e = compute_mvv2e(g);
-    for (int d = 0; d < 3; d++)
+    for (int d = 0; tensor && d < 3; d++)
         n->mvv[d] = s[d] * mvv2e;
     double dof = n->temp.dof;
     double tfactor = dof > 0 ? mvv2e / (dof * temp_boltz(g)) : 0.0;
@@ -579,8 +580,10 @@ static double omega_ke(const struct nh *n)
 
 static void nhc_press_integrate(struct gravel *g, struct nh *n)
 {
-    double boltz = temp_boltz(g), kt = boltz * n->t_target, lkt_press = kt, expfac;
+    double boltz = temp_boltz(g), kt = boltz * n->t_target, expfac;
     int m = n->mpchain;
+    /* the barostat's kinetic target: kT (ISO), pdof kT otherwise (LAMMPS 2021) */
+    double lkt_press = n->pstyle == ISO ? kt : (n->p_flag[0] + n->p_flag[1] + n->p_flag[2]) * kt;
     double kecurrent = omega_ke(n);
     n->etap_dotdot[0] = (kecurrent - lkt_press) / n->etap_mass[0];
     double ncfac = 1.0 / n->nc_pchain, dt8 = n->dt8, dt4 = n->dt4, dthalf = n->dthalf;
@@ -694,7 +697,7 @@ void fix_nh_setup(struct gravel *g, struct fix *f)
         compute_temp_target(g, n);
     } else if (n->pstat) {
         if (n->t0 == 0.0) { /* reference temperature of the barostat masses */
-            n->t0 = temperature(g, n);
+            n->t0 = temperature(g, n, 1);
             if (n->t0 == 0.0)
                 n->t0 = g->dom.units == UNITS_LJ ? 1.0 : 300.0;
         }
@@ -702,7 +705,7 @@ void fix_nh_setup(struct gravel *g, struct fix *f)
     }
     if (n->pstat)
         compute_press_target(g, n);
-    n->t_current = temperature(g, n);
+    n->t_current = temperature(g, n, 1);
     if (n->pstat) {
         take_virial(g, n);
         pressure_couple(g, n, n->t_current);
@@ -751,7 +754,7 @@ void fix_nh_initial_integrate(struct gravel *g, struct fix *f)
     }
     /* the kinetic part after the thermostat's scaling, with the virial of
      * the last forces */
-    double t = temperature(g, n), fp[3];
+    double t = temperature(g, n, 1), fp[3];
     pressure_couple(g, n, t);
     compute_press_target(g, n);
     nh_omega_dot(g, n);
@@ -787,7 +790,7 @@ void fix_nh_final_integrate(struct gravel *g, struct fix *f)
     eng_arg_real(g, k, i++, n->dtf);
     eng_arg_real(g, k, i++, n->dtf / n->inertia);
     eng_launch(g, k, (size_t)a->n);
-    n->t_current = temperature(g, n);
+    n->t_current = temperature(g, n, 1);
     n->tdof = n->temp.dof;
     if (n->pstat) {
         take_virial(g, n);
