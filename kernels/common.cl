@@ -169,6 +169,28 @@ static inline REAL3 minimg_tri(REAL3 d, const REAL Lx, const REAL Ly, const REAL
     }
 #endif
 
+/* Velocity remap (VREMAP, fix deform remap v): hrate = LAMMPS's h_rate
+ * (d/dt of Lx Ly Lz yz xz xy); an atom of the group vgroup seen through a
+ * periodic image n (n_a whole periods along a, b, c) moves with
+ * v + n . h_rate: the image's streaming velocity. */
+static inline REAL3 image_velocity(const int3 n, __global const REAL *hrate)
+{
+    return (REAL3)(n.x * hrate[0] + n.y * hrate[5] + n.z * hrate[4], n.y * hrate[1] + n.z * hrate[3],
+                   n.z * hrate[2]);
+}
+
+/* The periods n a minimum image moved the partner by: raw - del = n_x a +
+ * n_y b + n_z c (raw = x_i - x_j before MINIMG3, del after). */
+static inline int3 image_count(const REAL3 raw, const REAL3 del, const REAL Lx, const REAL Ly,
+                               const REAL Lz, const REAL xy, const REAL xz, const REAL yz)
+{
+    const REAL3 s = raw - del;
+    const int nz = Lz > (REAL)0 ? (int)round(s.z / Lz) : 0;
+    const int ny = Ly > (REAL)0 ? (int)round((s.y - nz * yz) / Ly) : 0;
+    const int nx = Lx > (REAL)0 ? (int)round((s.x - ny * xy - nz * xz) / Lx) : 0;
+    return (int3)(nx, ny, nz);
+}
+
 /* Box coordinates of a position relative to the lower corner d = x - lo:
  * u = L lamda per dimension (the lamda coordinates scaled by the lengths;
  * u = d in an orthogonal box). A periodic image moves u by exactly one

@@ -35,7 +35,8 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
                         __global const REAL *f, __global REAL *omega,
                         __global const REAL *torque, __global const REAL *rmass,
                         __global const REAL *radius, __global const int *type,
-                        __global const uint *mask POS_LO_PARAM)
+                        __global const uint *mask, __global const REAL *hrate,
+                        const uint vgroup POS_LO_PARAM)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -87,7 +88,17 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
         vstore3(xi, i, x);
         POS_STORE_LO(xl, i);
         vstore3(im, i, image);
+#ifdef VREMAP /* LAMMPS's Domain::pbc with deform remap v: v -/+ h_rate per period */
+        if (mask[i] & vgroup) {
+            vi -= image_velocity(im - im0, hrate);
+            vstore3(vi, i, v);
+        }
+#endif
     }
+#endif
+#ifndef VREMAP
+    (void)hrate;
+    (void)vgroup;
 #endif
     REAL3 d = xi - vload3(i, xhold);
     MINIMG3(d);
@@ -103,6 +114,8 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
  * Domain::pbc, one period at most), and write the per-chunk extent
  * ext[6 c ..] = (min x, min y, min z, max x, max y, max z). */
 __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
+                              __global REAL *v, __global const uint *mask,
+                              __global const REAL *hrate, const uint vgroup,
                               __global int *image, const int px, const int py, const int pz,
                               const REAL lox, const REAL loy, const REAL loz, const REAL hix,
                               const REAL hiy, const REAL hiz, const REAL xy, const REAL xz,
@@ -116,6 +129,12 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
     if (i1 > n)
         i1 = n;
     const int per[3] = {px, py, pz};
+#ifndef VREMAP
+    (void)v;
+    (void)mask;
+    (void)hrate;
+    (void)vgroup;
+#endif
     const REAL lo[3] = {lox, loy, loz}, hi[3] = {hix, hiy, hiz};
     REAL mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = i0; i < i1; i++) {
@@ -123,11 +142,16 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
         {
             REAL3 xi = vload3(i, x), xl = POS_LOAD_LO(i);
             int3 im = vload3(i, image);
+            const int3 im0 = im;
             pbc_wrap_tri(&xi, &xl, &im, (REAL3)(lox, loy, loz), (REAL3)(hix, hiy, hiz), xy, xz,
                          yz);
             vstore3(xi, i, x);
             POS_STORE_LO(xl, i);
             vstore3(im, i, image);
+#ifdef VREMAP
+            if ((mask[i] & vgroup) && (im.x != im0.x || im.y != im0.y || im.z != im0.z))
+                vstore3(vload3(i, v) - image_velocity(im - im0, hrate), i, v);
+#endif
             for (int d = 0; d < 3; d++) {
                 mn[d] = fmin(mn[d], x[3 * i + d]);
                 mx[d] = fmax(mx[d], x[3 * i + d]);
@@ -144,8 +168,15 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
                 REAL xld = 0;
 #endif
                 int im = image[3 * i + d];
+#ifdef VREMAP
+                const int im0 = im;
+#endif
                 pbc_wrap(&xd, &xld, &im, lo[d], hi[d], hi[d] - lo[d]);
                 image[3 * i + d] = im;
+#ifdef VREMAP /* orthogonal: only the diagonal rates */
+                if ((mask[i] & vgroup) && im != im0)
+                    v[3 * i + d] -= (im - im0) * hrate[d];
+#endif
                 x[3 * i + d] = xd;
 #ifdef SPLIT_POS
                 xlo[3 * i + d] = xld;

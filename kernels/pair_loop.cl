@@ -54,13 +54,20 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             const REAL Lx, const REAL Ly, const REAL Lz, const REAL xy,
                             const REAL xz, const REAL yz, __global REAL *recf,
                             __global REAL *rect, __global REAL *acc, __global int *astep,
-                            const int step POS_LO_PARAM)
+                            const int step, __global const REAL *hrate,
+                            const uint vgroup POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
     const int i = ci[c], j = cj[c];
     REAL3 del = vload3(i, x) - vload3(j, x);
+#ifdef VREMAP
+    const REAL3 raw = del;
+#else
+    (void)hrate;
+    (void)vgroup;
+#endif
     MINIMG3(del);
 #ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/common.cl) */
     const REAL3 del_lo = vload3(i, xlo) - vload3(j, xlo);
@@ -85,6 +92,10 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
         touch = contact_refine(&k, del_lo);
     }
+#endif
+#ifdef VREMAP /* the partner's image streams with the box (LAMMPS's ghost velocities) */
+    if (touch && (mask[j] & vgroup))
+        k.vr -= image_velocity(image_count(raw, del, Lx, Ly, Lz, xy, xz, yz), hrate);
 #endif
     if (!touch) {
 #ifdef HAS_HISTORY

@@ -22,6 +22,13 @@ void box_current(const struct gravel *g, struct box_target *b)
     b->yz = g->dom.yz;
 }
 
+void box_change_rates(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (e && e->active && e->hrate)
+        eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
+}
+
 void box_change_apply(struct gravel *g, const struct box_target *b, enum box_remap remap,
                       unsigned groupbit)
 {

@@ -12,8 +12,15 @@
  *   - remap BOX_REMAP_X: the atoms of groupbit keep their lamda (fractional)
  *     coordinates, LAMMPS's x2lamda with the old box then lamda2x with the
  *     new one (bit for bit in double precision; kernels/box_change.cl);
- *     BOX_REMAP_NONE: no atom moves (LAMMPS's remap none); remap v is the
- *     caller's (velocities are the caller's to change);
+ *     BOX_REMAP_NONE: no atom moves (LAMMPS's remap none);
+ *   - remap v (LAMMPS's deform_vremap): a fix sets g->dom.h_rate (the rates
+ *     of Lx Ly Lz yz xz xy) and g->dom.vremap_group in its init (both are
+ *     reset at every run start and uploaded before the setup forces); when
+ *     the rates change during the run it calls box_change_rates(g). With
+ *     the build option VREMAP (the fix adds "-D VREMAP" to f->defines) an atom
+ *     of the group that crosses a periodic face gets v -/+ n . h_rate, and a
+ *     contact with a partner's periodic image sees the image's velocity
+ *     v + n . h_rate (LAMMPS's Domain::pbc and ghost velocities);
  *   - afterwards g->dom holds the new box, and every kernel launched after
  *     it sees the new box: the wrap, rebuild check and binning read g->dom at
  *     launch, the pair, virial and history kernels read the list's lengths and
@@ -43,6 +50,8 @@ struct box_target {
 
 /* The current box as a target (a starting point for a change). */
 void box_current(const struct gravel *g, struct box_target *b);
+/* Upload g->dom.h_rate again (rates that change during a run). */
+void box_change_rates(struct gravel *g);
 /* Apply the new box b (contract above). */
 void box_change_apply(struct gravel *g, const struct box_target *b, enum box_remap remap,
                       unsigned groupbit);

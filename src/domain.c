@@ -167,6 +167,29 @@ void domain_check_tilt(struct gravel *g)
         gr_error(g, "cannot skew a 2d box in z (xz and yz must be 0)");
 }
 
+void domain_ufac(const struct domain *d, double f[3])
+{
+    f[0] = f[1] = f[2] = 1.0;
+    if (!d->triclinic)
+        return;
+    double Ly = d->hi[1] - d->lo[1], Lz = d->hi[2] - d->lo[2];
+    double by = d->xy / Ly, cz = (d->xy * d->yz / Ly - d->xz) / Lz, cy = d->yz / Lz;
+    f[0] = sqrt(1 + by * by + cz * cz);
+    f[1] = sqrt(1 + cy * cy);
+}
+
+void domain_bbox(const struct gravel *g, double lo[3], double hi[3])
+{
+    const struct domain *d = &g->dom;
+    double xy = d->xy, xz = d->xz, yz = d->yz;
+    lo[0] = d->lo[0] + fmin(fmin(0.0, xy), fmin(xz, xy + xz));
+    hi[0] = d->hi[0] + fmax(fmax(0.0, xy), fmax(xz, xy + xz));
+    lo[1] = d->lo[1] + fmin(0.0, yz);
+    hi[1] = d->hi[1] + fmax(0.0, yz);
+    lo[2] = d->lo[2];
+    hi[2] = d->hi[2];
+}
+
 void domain_print_box(struct gravel *g, const char *indent)
 {
     const struct domain *d = &g->dom;

@@ -52,6 +52,14 @@ void domain_lamda2x(const struct gravel *g, const double lam[3], double x[3]);
 /* Errors for tilts that LAMMPS refuses: a non-zero tilt along a non-periodic
  * dimension (xy needs y periodic, xz and yz z periodic), z tilts in 2d. */
 void domain_check_tilt(struct gravel *g);
+/* Per dimension, how much wider than a separation's length its component of
+ * u = L lamda can be: f_q = |row q of L h^-1| (1 when orthogonal). Cells of
+ * u hold every partner within cut in the neighboring cells when they are
+ * at least cut f_q wide (kernels/common.cl box_ufac, the same numbers). */
+void domain_ufac(const struct domain *d, double f[3]);
+/* The bounding box of a (tilted) box, LAMMPS's boxlo_bound / boxhi_bound:
+ * lo + min(0, xy, xz, xy + xz) in x, lo + min(0, yz) in y (hi with max). */
+void domain_bbox(const struct gravel *g, double lo[3], double hi[3]);
 /* "  orthogonal box = (...) to (...)" or "  triclinic box = ... with tilt
  * (xy xz yz)" as LAMMPS prints it, after indent. */
 void domain_print_box(struct gravel *g, const char *indent);

@@ -613,6 +613,8 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->virial);
     free(e->tag_seen);
     free(e->tag_order);
+    if (e->hrate)
+        clReleaseMemObject(e->hrate);
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);

@@ -80,6 +80,10 @@ struct engine {
      * valid for step virial_snap_step only (-1: none) */
     double virial_snap[6];
     bigint virial_snap_step;
+    /* velocity remap of a deforming box (box_change_vremap): LAMMPS's
+     * h_rate (6 REAL) and the group it applies to (0: none) */
+    cl_mem hrate;
+    unsigned vgroup;
     cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
     int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */

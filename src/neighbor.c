@@ -616,6 +616,8 @@ int nbr_decide(struct gravel *g, int forced)
     eng_arg_mem(g, k, a++, e->a.radius);
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
     eng_arg_pos_lo(g, k, a);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
@@ -669,21 +671,26 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
         chunk = 1;
     int nch = (n + chunk - 1) / chunk;
     cl_kernel k = b->k_wrap;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_int(g, k, 1, chunk);
-    eng_arg_mem(g, k, 2, e->a.x);
-    eng_arg_mem(g, k, 3, e->a.image);
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_int(g, k, a++, chunk);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.v);
+    eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
+    eng_arg_mem(g, k, a++, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, 4 + q, domain_contact_periodic(g, q));
-    for (int q = 0; q < 3; q++) {
-        eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
-        eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
-    }
-    eng_arg_real(g, k, 13, d->xy);
-    eng_arg_real(g, k, 14, d->xz);
-    eng_arg_real(g, k, 15, d->yz);
-    eng_arg_mem(g, k, 16, b->ext);
-    eng_arg_pos_lo(g, k, 17);
+        eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->hi[q]);
+    eng_arg_real(g, k, a++, d->xy);
+    eng_arg_real(g, k, a++, d->xz);
+    eng_arg_real(g, k, a++, d->yz);
+    eng_arg_mem(g, k, a++, b->ext);
+    eng_arg_pos_lo(g, k, a);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -705,25 +712,12 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     domain_shrink_wrap(g, lo, hi);
 }
 
-/* kernels/common.cl box_ufac on the host: the cells of u = L lamda must be
- * this much wider than a cut-off (1 in an orthogonal box). */
-static void box_ufac(const struct domain *d, double f[3])
-{
-    f[0] = f[1] = f[2] = 1.0;
-    if (!d->triclinic)
-        return;
-    double Ly = d->hi[1] - d->lo[1], Lz = d->hi[2] - d->lo[2];
-    double by = d->xy / Ly, cz = (d->xy * d->yz / Ly - d->xz) / Lz, cy = d->yz / Lz;
-    f[0] = sqrt(1 + by * by + cz * cz);
-    f[1] = sqrt(1 + cy * cy);
-}
-
 /* Cells per dimension of a grid of cells >= cut over the box, coarsened
  * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
 static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
     double f[3];
-    box_ufac(d, f);
+    domain_ufac(d, f);
     for (;;) {
         long total = 1;
         for (int q = 0; q < 3; q++) {
@@ -779,7 +773,7 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
 {
     struct domain *d = &g->dom;
     double f[3];
-    box_ufac(d, f);
+    domain_ufac(d, f);
     grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
     if (b->multi)

@@ -52,6 +52,10 @@ static void pair_init(struct gravel *g)
     e->k_gather = eng_kernel(g, "pair_gather");
     e->k_box_remap = eng_kernel(g, "box_remap");
     e->virial_snap_step = e->epair_snap_step = -1;
+    if (!e->hrate)
+        e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");
+    eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
+    e->vgroup = g->dom.vremap_group;
     e->k_pair = e->k_virial = e->k_energy = NULL;
     if (!p)
         return;
@@ -191,6 +195,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, acc_pair_rec(g));
         eng_arg_mem(g, k, i++, acc_pair_step(g));
         eng_arg_int(g, k, i++, acc_step(g));
+        eng_arg_mem(g, k, i++, e->hrate);
+        eng_arg_uint(g, k, i++, e->vgroup);
         eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
         /* new forces: a virial or energy taken before is stale */
@@ -320,6 +326,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     memset(&e->st, 0, sizeof e->st);
     g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
     g->laststep = g->step + nsteps;
+    memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
+    g->dom.vremap_group = 0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)

@@ -17,11 +17,12 @@
  * final, delta, vel and wiggle values by the lattice spacings (x for xy and
  * xz, y for yz). The change goes through box_change_apply (src/box_change.h):
  * remap x (default) keeps the group's atoms at their lamda coordinates,
- * remap none leaves them.
+ * remap none leaves them, remap v leaves them and sets LAMMPS's h_rate
+ * (g->dom.h_rate): group atoms crossing a periodic face get v -/+ h_rate
+ * per period, and contacts through a periodic image see the image's
+ * streaming velocity (Lees-Edwards; box_change.h).
  *
- * Not supported (clear errors): remap v (the velocity kick of atoms that
- * cross a periodic face of a shearing box), the variable style, and box
- * flips: a tilt beyond half its box length stops the run (flip yes) or is
+ * Not supported (clear errors): the variable style, and box flips: a tilt beyond half its box length stops the run (flip yes) or is
  * refused as too skewed for the minimum image (flip no). */
 #include <math.h>
 #include <string.h>
@@ -33,6 +34,7 @@
 #include "fix.h"
 #include "fix_deform.h"
 
+enum { REMAP_V = 2 }; /* besides BOX_REMAP_NONE / BOX_REMAP_X */
 enum { NONE = 0, FINAL, DELTA, SCALE, VEL, ERATE, TRATE, VOLUME, WIGGLE };
 enum { ONE_FROM_ONE, ONE_FROM_TWO, TWO_FROM_ONE };
 
@@ -48,6 +50,7 @@ struct set {
 
 struct deform {
     int nevery, remap, flip, scaled;
+    int rates_vary;             /* some trate or wiggle: h_rate changes each step */
     struct set set[6];
 };
 
@@ -153,7 +156,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             else if (!strcmp(v, "none"))
                 d->remap = BOX_REMAP_NONE;
             else if (!strcmp(v, "v"))
-                gr_error(g, "fix deform remap v is not supported (use remap x or none)");
+                d->remap = REMAP_V;
             else
                 gr_error(g, "fix deform remap must be x, v or none, got '%.32s'", v);
         } else if (!strcmp(kw, "flip")) {
@@ -232,6 +235,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         int st = d->set[p].style;
         need |= st == FINAL || st == DELTA || st == VEL || st == WIGGLE;
     }
+    for (int p = 0; p < 6; p++)
+        d->rates_vary |= d->set[p].style == TRATE || d->set[p].style == WIGGLE;
     double sc[3];
     domain_unit_scale(g, need && d->scaled, sc);
     for (int p = 0; p < 6; p++) {
@@ -248,6 +253,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     f->hooks = HOOK_END_OF_STEP;
     f->time_depend = 1;
+    if (d->remap == REMAP_V)
+        snprintf(f->defines, sizeof f->defines, "-D VREMAP");
 }
 
 static void init(struct gravel *g, struct fix *f)
@@ -292,6 +299,15 @@ static void init(struct gravel *g, struct fix *f)
             s->hi_stop = s->hi_start + shift;
         }
     }
+    /* LAMMPS's h_rate for the constant-rate styles (the others per step) */
+    double *hr = g->dom.h_rate;
+    for (int i = 0; i < 3; i++) {
+        const struct set *s = &d->set[i];
+        hr[i] = 0.0;
+        if (delt != 0.0 && (s->style == FINAL || s->style == DELTA || s->style == SCALE ||
+                            s->style == VEL || s->style == ERATE))
+            hr[i] = (s->hi_stop - s->hi_start) / delt - (s->lo_stop - s->lo_start) / delt;
+    }
     for (int i = 3; i < 6; i++) {
         struct set *s = &d->set[i];
         s->tilt_start = i == 5 ? dm->xy : i == 4 ? dm->xz : dm->yz;
@@ -310,13 +326,19 @@ static void init(struct gravel *g, struct fix *f)
             s->tilt_stop = s->tilt_start * exp(s->rate * delt);
         } else if (s->style == WIGGLE)
             s->tilt_stop = s->tilt_start + s->amplitude * sin(2 * M_PI * delt / s->tperiod);
+        hr[i] = 0.0;
+        if (delt != 0.0 && (s->style == FINAL || s->style == DELTA || s->style == VEL ||
+                            s->style == ERATE))
+            hr[i] = (s->tilt_stop - s->tilt_start) / delt;
     }
+    g->dom.vremap_group = d->remap == REMAP_V ? f->groupbit : 0;
 }
 
 /* LAMMPS's FixDeform::end_of_step, the targets of this step */
 static void targets(struct gravel *g, struct deform *d)
 {
     const struct domain *dm = &g->dom;
+    double *hr = g->dom.h_rate;
     struct set *set = d->set;
     double delta = (double)(g->step - g->firststep);
     if (delta != 0.0)
@@ -328,11 +350,13 @@ static void targets(struct gravel *g, struct deform *d)
             s->lo_target = dm->lo[i];
             s->hi_target = dm->hi[i];
         } else if (s->style == TRATE) {
+            hr[i] = s->rate * (dm->hi[i] - dm->lo[i]);
             s->lo_target = 0.5 * (s->lo_start + s->hi_start) -
                            0.5 * ((s->hi_start - s->lo_start) * exp(s->rate * delt));
             s->hi_target = 0.5 * (s->lo_start + s->hi_start) +
                            0.5 * ((s->hi_start - s->lo_start) * exp(s->rate * delt));
         } else if (s->style == WIGGLE) {
+            hr[i] = 2 * M_PI / s->tperiod * s->amplitude * cos(2 * M_PI * delt / s->tperiod);
             s->lo_target = s->lo_start - 0.5 * s->amplitude * sin(2 * M_PI * delt / s->tperiod);
             s->hi_target = s->hi_start + 0.5 * s->amplitude * sin(2 * M_PI * delt / s->tperiod);
         } else if (s->style != VOLUME) {
@@ -370,11 +394,13 @@ static void targets(struct gravel *g, struct deform *d)
         struct set *s = &set[i];
         if (s->style == NONE)
             s->tilt_target = i == 5 ? dm->xy : i == 4 ? dm->xz : dm->yz;
-        else if (s->style == TRATE)
+        else if (s->style == TRATE) {
             s->tilt_target = s->tilt_start * exp(s->rate * delt);
-        else if (s->style == WIGGLE)
+            hr[i] = s->rate * h[i];
+        } else if (s->style == WIGGLE) {
             s->tilt_target = s->tilt_start + s->amplitude * sin(2 * M_PI * delt / s->tperiod);
-        else
+            hr[i] = 2 * M_PI / s->tperiod * s->amplitude * cos(2 * M_PI * delt / s->tperiod);
+        } else
             s->tilt_target = s->tilt_start + delta * (s->tilt_stop - s->tilt_start);
         /* the target closest to the current tilt, whole box lengths apart */
         int idenom = i == 3 ? 1 : 0;
@@ -415,7 +441,10 @@ static void end_of_step(struct gravel *g, struct fix *f)
                         "(xy %g xz %g yz %g); %s", f->id, (long long)g->step, b.xy, b.xz, b.yz,
                      d->flip ? "box flips are not supported" : "the box is too skewed");
     }
-    box_change_apply(g, &b, (enum box_remap)d->remap, f->groupbit);
+    box_change_apply(g, &b, d->remap == BOX_REMAP_X ? BOX_REMAP_X : BOX_REMAP_NONE,
+                     f->groupbit);
+    if (d->remap == REMAP_V && d->rates_vary)
+        box_change_rates(g);
 }
 
 int fix_deform_changes(const struct fix *f, int p)

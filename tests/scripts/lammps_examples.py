@@ -70,7 +70,6 @@ DECKS = [
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
-    "multi/in.powerlaw": "triclinic boxes are not supported",
     "rigid/in.rigid.gravity": "unknown fix style 'property/atom'",
 }
 
