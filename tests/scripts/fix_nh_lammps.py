@@ -13,6 +13,7 @@ to 1e-8 relative (1e-9 absolute near zero):
   nph_sphere_gas   fix nph/sphere iso: a granular gas (gran/hooke/history)
                    compressed to its target, rotation integrated;
   npt_sphere_gas   fix npt/sphere, tchain 2, pchain 0;
+  nvt_sphere_gas   fix nvt/sphere, a ramped target, tchain 4;
   nph_sphere_disc  fix nph/sphere aniso disc in 2d with enforce2d, drag.
 Then bad fix commands stop with an error naming the script line.
 
@@ -105,7 +106,7 @@ def main():
     decks = sorted(glob.glob(os.path.join(REFDIR, "*.in")))
     if args:
         decks = [d for d in decks if os.path.basename(d)[:-3] in args]
-    sv.check("fix nh reference decks exist", len(decks) >= (len(args) or 6), str(len(decks)))
+    sv.check("fix nh reference decks exist", len(decks) >= (len(args) or 7), str(len(decks)))
     for deck in decks:
         if "--update" in sys.argv:
             update(deck)
