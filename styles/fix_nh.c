@@ -39,7 +39,6 @@
 #include "fix_deform.h"
 #include "fix_nh.h"
 #include "group.h"
-#include "neighbor.h"
 #include "pressure.h"
 #include "temperature.h"
 
