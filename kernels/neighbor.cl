@@ -373,7 +373,8 @@ static inline int row_ranges(__global const int *start, const int rowbase, const
 
 /* The pair test of every list build: j is a neighbor of i when
  * |x_i - x_j| < radi + radj + skin (LAMMPS size lists; with cohesion the
- * effect surfaces), j != i, and the pair is not excluded (type table, group
+ * effect surfaces; with PAIR_TYPECUT at least typecut[ti][tj] + skin, the
+ * type pair's cut-off of a potential), j != i, and the pair is not excluded (type table, group
  * bit pairs). Both list styles (bin, multi) accept exactly these pairs. */
 static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const int ti,
                              const uint mi, const int j, __global const REAL *x,
@@ -382,7 +383,7 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
                              const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
                              const REAL skin, const int ntypes,
                              __global const int *excl_type, const int nexg,
-                             __global const uint *excl_group)
+                             __global const uint *excl_group, __global const REAL *typecut)
 {
     if (j == i)
         return 0;
@@ -390,7 +391,10 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
     MINIMG3(del);
     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
     const REAL radsum = radi + radius[j];
-#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+#if defined(PAIR_TYPECUT) /* a potential (pair colloid): its type pair's cut-off */
+    const REAL cut = fmax(fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum),
+                          typecut[(ti - 1) * ntypes + type[j] - 1]) + skin;
+#elif defined(HAS_COHESION) /* cohesion: the list reaches the effect surfaces */
     const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
 #else
     const REAL cut = radsum + skin;
@@ -444,7 +448,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                         const REAL skin, const int maxn, __global int *nlist,
                         __global int *ncount, __global int *nown, __global int *flags,
                         const int ntypes, __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group)
+                        __global const uint *excl_group, __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -473,7 +477,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
                     if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz, xy,
-                                   xz, yz, skin, ntypes, excl_type, nexg, excl_group))
+                                   xz, yz, skin, ntypes, excl_type, nexg, excl_group, typecut))
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
@@ -636,7 +640,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                               __global int *nlist, __global int *ncount, __global int *nown,
                               __global int *flags, const int ntypes,
                               __global const int *excl_type, const int nexg,
-                              __global const uint *excl_group)
+                              __global const uint *excl_group, __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -670,7 +674,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                                 const int j = sorted ? jj : cellatoms[jj];
                                 if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
                                                Lx, Ly, Lz, xy, xz, yz, skin, ntypes,
-                                               excl_type, nexg, excl_group))
+                                               excl_type, nexg, excl_group, typecut))
                                     nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
                             }
                         }

@@ -230,6 +230,37 @@ __kernel void pair_virial(const int n, __global const int *nlist, const int maxn
     vstore3((REAL)0.5 * o, 2 * i + 1, w);
 }
 
+#ifdef PAIR_ENERGY
+/* The pair energy of the step, per particle (a potential's style only; run
+ * on the steps that print it): e_i = 1/2 sum over i's row, in row order, of
+ * PAIR_ENERGY(rsq, param of (type i, type j)), which is 0 beyond the type
+ * pair's cut-off. The two sides of a pair give the same energy, so sum_i e_i
+ * is the per-pair sum, LAMMPS's eng_vdwl. */
+__kernel void pair_energy(const int n, __global const int *nlist, const int maxn,
+                          __global const int *ioff, __global const REAL *x,
+                          __global const int *type, __global const REAL *param,
+                          const int ntypes, const int nparam, const REAL Lx, const REAL Ly,
+                          const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                          __global REAL *e)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const int ti = type[i];
+    REAL s = 0;
+    const int cnt = ioff[i + 1] - ioff[i];
+    for (int k = 0; k < cnt; k++) {
+        const int j = nlist[(size_t)i * maxn + k];
+        REAL3 del = xi - vload3(j, x);
+        MINIMG3(del);
+        const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+        s += PAIR_ENERGY(rsq, param + (size_t)((ti - 1) * ntypes + (type[j] - 1)) * nparam);
+    }
+    e[i] = (REAL)0.5 * s;
+}
+#endif
+
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)
 {

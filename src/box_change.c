@@ -8,6 +8,7 @@
 #include "error.h"
 #include "neighbor.h"
 #include "output.h"
+#include "pair_energy.h"
 #include "pressure.h"
 
 void box_current(const struct gravel *g, struct box_target *b)
@@ -42,8 +43,10 @@ void box_change_apply(struct gravel *g, const struct box_target *b, enum box_rem
     if (!d->triclinic && (b->xy != 0 || b->xz != 0 || b->yz != 0))
         gr_error(g, "internal error: a tilt for an orthogonal box");
     /* the pressure printed this step is that of the forces, before the change */
-    if (!e->setup && output_due(g, g->step))
+    if (!e->setup && output_due(g, g->step)) {
         pressure_virial_snapshot(g);
+        pair_energy_snapshot(g);
+    }
     double olo[3], hinv[6], h0[6];
     for (int q = 0; q < 3; q++)
         olo[q] = d->lo[q];

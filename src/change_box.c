@@ -238,7 +238,10 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
     /* wrap periodic dimensions; atoms outside a fixed face are lost */
     int n0 = a->n;
     for (int i = 0; i < a->n;) {
-        domain_remap(g, a->x + 3 * i, a->image + 3 * i);
+        /* lmp 2021 leaves the bits of an atom inside a triclinic box (no
+         * lamda round trip; velocity loop geom hashes them: multi/in.granular) */
+        if (!d->triclinic || !domain_inside(g, a->x + 3 * i))
+            domain_remap(g, a->x + 3 * i, a->image + 3 * i);
         int out = 0;
         for (int q = 0; q < 3; q++)
             if (!d->periodic[q] && (a->x[3 * i + q] < d->lo[q] || a->x[3 * i + q] > d->hi[q]))

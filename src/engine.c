@@ -581,6 +581,30 @@ void eng_prepare(struct gravel *g)
                  e->ocl.cache_hit ? "program cache hit" : "compiled", opts);
 }
 
+const int *eng_tag_order(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    int n = e->a.n;
+    if (n + 1 > e->tag_cap) {
+        free(e->tag_seen);
+        free(e->tag_order);
+        e->tag_seen = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+        e->tag_order = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+        e->tag_cap = n + 1;
+        e->tag_n = -1;
+    }
+    int64_t *t = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+    if (n > 0)
+        eng_read(g, e->a.tag, 0, (size_t)n * sizeof(cl_long), t);
+    if (n != e->tag_n || memcmp(t, e->tag_seen, (size_t)n * sizeof(int64_t))) {
+        memcpy(e->tag_seen, t, (size_t)n * sizeof(int64_t));
+        atoms_order_by_tag(e->tag_seen, n, e->tag_order);
+        e->tag_n = n;
+    }
+    free(t);
+    return e->tag_order;
+}
+
 void engine_destroy(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -602,6 +626,8 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     if (e->virial)
         clReleaseMemObject(e->virial);
+    free(e->tag_seen);
+    free(e->tag_order);
     if (e->hrate)
         clReleaseMemObject(e->hrate);
     eng_release_kernels(e);

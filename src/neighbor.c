@@ -43,7 +43,7 @@ struct nbr {
     int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
-        excl_group;
+        excl_group, typecut;
     size_t cap_atoms, cap_cells;
     size_t rsz;
     int history, rotation;
@@ -109,7 +109,7 @@ void nbr_free(struct gravel *g)
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
                    &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
-                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group,
+                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->typecut,
                    &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
@@ -125,6 +125,7 @@ void nbr_invalidate(struct gravel *g)
 }
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
+
 
 static size_t scan_chunks(int m, int *chunk)
 {
@@ -343,10 +344,21 @@ static void setup_multi(struct gravel *g, struct nbr *b)
                 b->mcount[k] = b->mcount[k] > 0 ? b->mcount[k] : 1;
         }
     /* a bound: the kernel's cell ranges must not lose a pair to rounding */
+    /* a potential's type-pair cut-offs: the largest between the two
+     * collections' types (every type for collection/interval) */
+    unsigned *tmask = gr_calloc(g, (size_t)nc, sizeof(unsigned));
+    for (int t = 0; t < nt; t++)
+        if (b->ninterval || t >= 32)
+            for (int k = 0; k < nc; k++)
+                tmask[k] = ~0u;
+        else
+            tmask[b->type2coll[t]] |= 1u << t;
     for (int a = 0; a < nc; a++)
         for (int c = 0; c < nc; c++)
             b->cutab[a * nc + c] =
-                (pair_reach(g, b->mrad[a] + b->mrad[c]) + ns->skin) * (1 + 1e-5);
+                (fmax(pair_reach(g, b->mrad[a] + b->mrad[c]),
+                      pair_type_cut_max(g, tmask[a], tmask[c])) + ns->skin) * (1 + 1e-5);
+    free(tmask);
     b->d_cutab = eng_alloc(g, (size_t)nc * nc * e->rsz, "multi collection cut-offs");
     eng_write_reals(g, b->d_cutab, (size_t)nc * nc, b->cutab);
     b->d_collcut = eng_alloc(g, (size_t)nc * e->rsz, "multi collection intervals");
@@ -468,7 +480,18 @@ void nbr_setup(struct gravel *g)
             r2nd = r;
         }
     }
-    b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
+    b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
+                     pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
+    double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
+    const struct pair *pp = g->styles.pair;
+    if (pp && pp->style->type_cut)
+        for (int a = 0; a < nt; a++)
+            for (int c = 0; c < nt; c++)
+                tc[a * nt + c] = pp->style->type_cut(pp, a + 1, c + 1);
+    rel(&b->typecut);
+    b->typecut = eng_alloc(g, (size_t)nt * nt * e->rsz, "type-pair cut-offs");
+    eng_write_reals(g, b->typecut, (size_t)nt * nt, tc);
+    free(tc);
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
     /* the largest cut-off of a pair of two atoms: the two largest radii */
@@ -844,6 +867,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         eng_arg_mem(g, k, a++, b->excl_type);
         eng_arg_int(g, k, a++, b->nexg);
         eng_arg_mem(g, k, a++, b->excl_group);
+        eng_arg_mem(g, k, a++, b->typecut);
         eng_launch(g, k, (size_t)n);
         cl_int fl[4];
         read_flags(g, b, fl);
@@ -1185,6 +1209,9 @@ double nbr_max_overlap(struct gravel *g)
     struct nbr *b = get(g);
     int n = e->a.n;
     if (!b->built || n == 0)
+        return 0;
+    /* a potential (pair colloid) has no bodies in contact: radii mean nothing */
+    if (g->styles.pair && g->styles.pair->style->energy)
         return 0;
     int chunk = (n + NCHUNK_MAX - 1) / NCHUNK_MAX;
     int nch = (n + chunk - 1) / chunk;

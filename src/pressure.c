@@ -9,6 +9,20 @@
 #include "neighbor.h"
 #include "temperature.h"
 
+cl_mem pressure_scratch(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (e->a.n > e->virial_cap || !e->virial) {
+        if (e->virial)
+            clReleaseMemObject(e->virial);
+        e->virial = NULL;
+        e->virial_cap = 0;
+        e->virial = eng_alloc(g, (size_t)e->cap * 6 * e->rsz, "per-particle virial");
+        e->virial_cap = e->cap;
+    }
+    return e->virial;
+}
+
 void pressure_virial(struct gravel *g, double w[6])
 {
     for (int d = 0; d < 6; d++)
@@ -25,14 +39,7 @@ void pressure_virial(struct gravel *g, double w[6])
     int n = e->a.n;
     if (n <= 0)
         return;
-    if (n > e->virial_cap || !e->virial) {
-        if (e->virial)
-            clReleaseMemObject(e->virial);
-        e->virial = NULL;
-        e->virial_cap = 0;
-        e->virial = eng_alloc(g, (size_t)e->cap * 6 * e->rsz, "per-particle virial");
-        e->virial_cap = e->cap;
-    }
+    pressure_scratch(g);
     cl_kernel k = e->k_virial;
     int a = 0;
     eng_arg_int(g, k, a++, n);
@@ -46,9 +53,7 @@ void pressure_virial(struct gravel *g, double w[6])
     eng_launch(g, k, (size_t)n);
     double *wi = gr_malloc(g, (size_t)n * 6 * sizeof(double));
     eng_read_reals(g, e->virial, 6 * (size_t)n, wi);
-    /* host index = device index after run_sync_host: sum in tag order */
-    run_sync_host(g);
-    const int *order = atoms_tag_order(g);
+    const int *order = eng_tag_order(g); /* sum in tag order */
     for (int k2 = 0; k2 < n; k2++)
         for (int d = 0; d < 6; d++)
             w[d] += wi[6 * order[k2] + d];

@@ -14,6 +14,7 @@
 #define GR_PRESSURE_H
 
 #include "gravel.h"
+#include "ocl.h"
 
 /* The virial tensor W_xx, W_yy, W_zz, W_xy, W_xz, W_yz of the current step
  * (0 without a pair style or outside a run). */
@@ -31,6 +32,9 @@ double pressure_volume(const struct gravel *g);
  * (temp_vector, mvv2e sum m v_a v_b), xz yz zz = 0 in 2d. */
 void pressure_tensor(struct gravel *g, struct temp_state *t, int keflag, int virialflag,
                      double out[6]);
+/* The per-particle scratch of the on-demand pair tallies (virial, energy):
+ * REAL[6 cap] on the device, kept with the engine. */
+cl_mem pressure_scratch(struct gravel *g);
 /* The pressure with temperature t (host arrays current). */
 double pressure_scalar(struct gravel *g, struct temp_state *t);
 /* The same with the kinetic part (dof kB T, needs t) and the virial part

@@ -52,12 +52,12 @@ static void pair_init(struct gravel *g)
     e->k_gather = eng_kernel(g, "pair_gather");
     e->k_box_remap = eng_kernel(g, "box_remap");
     e->k_box_flip = eng_kernel(g, "box_image_flip");
-    e->virial_snap_step = -1;
+    e->virial_snap_step = e->epair_snap_step = -1;
     if (!e->hrate)
         e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");
     eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
     e->vgroup = g->dom.vremap_group;
-    e->k_pair = e->k_virial = NULL;
+    e->k_pair = e->k_virial = e->k_energy = NULL;
     if (!p)
         return;
     if (!p->coeff_set)
@@ -77,6 +77,8 @@ static void pair_init(struct gravel *g)
     free(par);
     e->k_pair = eng_kernel(g, "pair_contacts");
     e->k_virial = eng_kernel(g, "pair_virial");
+    if (p->style->energy)
+        e->k_energy = eng_kernel(g, "pair_energy");
 }
 
 /* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
@@ -198,6 +200,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_uint(g, k, i++, e->vgroup);
         eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
+        /* new forces: a virial or energy taken before is stale */
+        e->virial_snap_step = e->epair_snap_step = -1;
         k = e->k_gather;
         i = 0;
         eng_arg_int(g, k, i++, a->n);

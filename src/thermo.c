@@ -22,6 +22,7 @@
 #include "error.h"
 #include "fix.h"
 #include "output.h"
+#include "pair_energy.h"
 #include "pressure.h"
 #include "run.h"
 #include "styles.h"
@@ -742,18 +743,24 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         st->last_sp_step = g->step;
         return v;
     }
-    case KW_KE:
+    case KW_KE: {
+        double ke = kinetic_energy(g);
+        return norm ? ke / natoms : ke;
+    }
     case KW_ETOTAL: {
-        /* pe: granular pair styles and walls have no potential energy; fixes
-         * with fix_modify energy yes (gravity) add theirs, as LAMMPS */
-        double e = kinetic_energy(g) + (k == KW_ETOTAL ? fix_energy_sum(g) : 0.0);
-        return norm ? e / natoms : e;
+        /* pe: a potential's pair energy (granular contacts and walls have none)
+         * and the fixes with fix_modify energy yes (gravity), as LAMMPS */
+        double et = kinetic_energy(g) + pair_energy(g) + fix_energy_sum(g);
+        return norm ? et / natoms : et;
     }
     case KW_PE: {
-        double e = fix_energy_sum(g);
-        return norm ? e / natoms : e;
+        double pe = pair_energy(g) + fix_energy_sum(g);
+        return norm ? pe / natoms : pe;
     }
-    case KW_EPAIR:
+    case KW_EPAIR: {
+        double pe = pair_energy(g);
+        return norm ? pe / natoms : pe;
+    }
     case KW_EMOL: return 0.0;
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
     case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);

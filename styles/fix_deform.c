@@ -36,6 +36,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_deform.h"
 
 enum { REMAP_V = 2 }; /* besides BOX_REMAP_NONE / BOX_REMAP_X */
 enum { NONE = 0, FINAL, DELTA, SCALE, VEL, ERATE, TRATE, VOLUME, WIGGLE };
@@ -538,6 +539,12 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     b.xz = d->flip_box.xz;
     b.yz = d->flip_box.yz;
     box_change_flip(g, &b, d->fxy, d->fxz, d->fyz);
+}
+
+int fix_deform_changes(const struct fix *f, int p)
+{
+    const struct deform *d = f->data;
+    return d && p >= 0 && p < 6 && d->set[p].style != NONE;
 }
 
 const struct fix_style fix_style_deform = {

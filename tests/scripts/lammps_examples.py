@@ -61,8 +61,6 @@ DECKS = [
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
     "pour/in.pour.2d.molecule": "needs a simulation box",  # the molecule command
-    "multi/in.granular": "unknown fix style 'nph/sphere'",
-    "multi/in.colloid": "unknown pair style 'colloid'",
     "rigid/in.rigid.gravity": "unknown fix style 'property/atom'",
 }
 
