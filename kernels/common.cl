@@ -7,7 +7,8 @@
  * Contraction of a*b+c into fma is switched off so that results match the
  * host compilers LAMMPS is built with and the pair terms stay exactly
  * antisymmetric. PERIODIC_X/Y/Z mark periodic dimensions: the minimum-image
- * correction is compiled only for those (MINIMG_X/Y/Z). SPLIT_POS (single
+ * correction is compiled only for those (MINIMG_X/Y/Z). TRICLINIC: the box
+ * is tilted (see "Triclinic boxes" below). SPLIT_POS (single
  * precision): positions are split into two arrays, see "Positions" below. */
 #ifndef REAL
 #define REAL double
@@ -118,6 +119,127 @@ static inline REAL min_image(REAL d, REAL L)
 #define MINIMG_Z(d, L) (d)
 #endif
 
+/* Triclinic boxes. Every kernel that takes separations or wraps receives
+ * the periodic lengths Lx Ly Lz (0 = not periodic) followed by the tilt
+ * factors xy xz yz (LAMMPS's edge vectors a = (Lx,0,0), b = (xy,Ly,0),
+ * c = (xz,yz,Lz)); the tilts are read only with TRICLINIC. MINIMG3(d)
+ * replaces the REAL3 separation d by its minimum image: z first (an image
+ * in z shifts by c), then y (by b), then x (by a), as LAMMPS's
+ * Domain::minimum_image. */
+#ifdef TRICLINIC
+static inline REAL3 minimg_tri(REAL3 d, const REAL Lx, const REAL Ly, const REAL Lz,
+                               const REAL xy, const REAL xz, const REAL yz)
+{
+#ifdef PERIODIC_Z
+    if (d.z > (REAL)0.5 * Lz) {
+        d.z -= Lz;
+        d.y -= yz;
+        d.x -= xz;
+    } else if (d.z < (REAL)-0.5 * Lz) {
+        d.z += Lz;
+        d.y += yz;
+        d.x += xz;
+    }
+#endif
+#ifdef PERIODIC_Y
+    if (d.y > (REAL)0.5 * Ly) {
+        d.y -= Ly;
+        d.x -= xy;
+    } else if (d.y < (REAL)-0.5 * Ly) {
+        d.y += Ly;
+        d.x += xy;
+    }
+#endif
+#ifdef PERIODIC_X
+    d.x = min_image(d.x, Lx);
+#endif
+    (void)Lx;
+    (void)Ly;
+    (void)Lz;
+    (void)xz;
+    (void)yz;
+    (void)xy;
+    return d;
+}
+#define MINIMG3(d) ((d) = minimg_tri((d), Lx, Ly, Lz, xy, xz, yz))
+#else
+#define MINIMG3(d)                                                                             \
+    {                                                                                          \
+        (d).x = MINIMG_X((d).x, Lx);                                                           \
+        (d).y = MINIMG_Y((d).y, Ly);                                                           \
+        (d).z = MINIMG_Z((d).z, Lz);                                                           \
+        (void)xy;                                                                              \
+        (void)xz;                                                                              \
+        (void)yz;                                                                              \
+    }
+#endif
+
+/* Velocity remap (VREMAP, fix deform remap v): hrate = LAMMPS's h_rate
+ * (d/dt of Lx Ly Lz yz xz xy); an atom of the group vgroup seen through a
+ * periodic image n (n_a whole periods along a, b, c) moves with
+ * v + n . h_rate: the image's streaming velocity. */
+static inline REAL3 image_velocity(const int3 n, __global const REAL *hrate)
+{
+    return (REAL3)(n.x * hrate[0] + n.y * hrate[5] + n.z * hrate[4], n.y * hrate[1] + n.z * hrate[3],
+                   n.z * hrate[2]);
+}
+
+/* The periods n a minimum image moved the partner by: raw - del = n_x a +
+ * n_y b + n_z c (raw = x_i - x_j before MINIMG3, del after). */
+static inline int3 image_count(const REAL3 raw, const REAL3 del, const REAL Lx, const REAL Ly,
+                               const REAL Lz, const REAL xy, const REAL xz, const REAL yz)
+{
+    const REAL3 s = raw - del;
+    const int nz = Lz > (REAL)0 ? (int)round(s.z / Lz) : 0;
+    const int ny = Ly > (REAL)0 ? (int)round((s.y - nz * yz) / Ly) : 0;
+    const int nx = Lx > (REAL)0 ? (int)round((s.x - ny * xy - nz * xz) / Lx) : 0;
+    return (int3)(nx, ny, nz);
+}
+
+/* Box coordinates of a position relative to the lower corner d = x - lo:
+ * u = L lamda per dimension (the lamda coordinates scaled by the lengths;
+ * u = d in an orthogonal box). A periodic image moves u by exactly one
+ * length, so cells of u wrap as in an orthogonal box. Lengths may be 0 for
+ * dimensions without tilt across them. */
+static inline REAL3 box_u(REAL3 d, const REAL Ly, const REAL Lz, const REAL xy, const REAL xz,
+                          const REAL yz)
+{
+#ifdef TRICLINIC
+    const REAL lz = Lz > (REAL)0 ? d.z / Lz : (REAL)0;
+    d.y -= yz * lz;
+    const REAL ly = Ly > (REAL)0 ? d.y / Ly : (REAL)0;
+    d.x -= xy * ly + xz * lz;
+#else
+    (void)Ly;
+    (void)Lz;
+    (void)xy;
+    (void)xz;
+    (void)yz;
+#endif
+    return d;
+}
+
+/* How much wider than a separation's length its u components can be
+ * (|du_q| <= fac_q |d|): the norms of the rows of L h^-1 (1 when
+ * orthogonal). Cells of u are this much wider than the cut-off. */
+static inline REAL3 box_ufac(const REAL Ly, const REAL Lz, const REAL xy, const REAL xz,
+                             const REAL yz)
+{
+#ifdef TRICLINIC
+    const REAL by = Ly > (REAL)0 ? xy / Ly : (REAL)0;
+    const REAL cz = Lz > (REAL)0 ? (xy * (Ly > (REAL)0 ? yz / Ly : (REAL)0) - xz) / Lz : (REAL)0;
+    const REAL cy = Lz > (REAL)0 ? yz / Lz : (REAL)0;
+    return (REAL3)(sqrt((REAL)1 + by * by + cz * cz), sqrt((REAL)1 + cy * cy), (REAL)1);
+#else
+    (void)Ly;
+    (void)Lz;
+    (void)xy;
+    (void)xz;
+    (void)yz;
+    return (REAL3)(1);
+#endif
+}
+
 /* Positions. With SPLIT_POS (every single-precision run) a coordinate is the
  * unevaluated sum hi + lo of two floats, hi in x and lo in xlo (the kernel's
  * last argument, POS_LO_PARAM), relative to the run's origin (the box centre,
@@ -181,6 +303,52 @@ static inline void pbc_wrap(REAL *h, REAL *l, int *im, const REAL lo, const REAL
         (*im)++;
     }
 }
+
+#ifdef TRICLINIC
+/* Periodic wrap of a position (hi h, lo l) in a tilted box, one period at
+ * most per dimension: z against [loz, hiz) (an image shifts by c), then y
+ * against the face through the wrapped z (by b), then x against the faces
+ * through y and z (by a); the decisions are LAMMPS's lamda tests
+ * 0 <= lamda < 1, with L lamda = the u of box_u. */
+static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, const REAL3 hi,
+                                const REAL xy, const REAL xz, const REAL yz)
+{
+    const REAL3 L = hi - lo;
+#ifdef PERIODIC_Z
+    {
+        const REAL z = h->z + l->z;
+        const int dn = z < lo.z ? -1 : z >= hi.z ? 1 : 0;
+        if (dn) {
+            pos_add(h, l, (REAL3)(-dn * xz, -dn * yz, -dn * L.z));
+            im->z += dn;
+        }
+    }
+#endif
+    const REAL lz = ((h->z + l->z) - lo.z) / L.z;
+#ifdef PERIODIC_Y
+    {
+        const REAL uy = ((h->y + l->y) - lo.y) - yz * lz;
+        const int dn = uy < 0 ? -1 : uy >= L.y ? 1 : 0;
+        if (dn) {
+            pos_add(h, l, (REAL3)(-dn * xy, -dn * L.y, 0));
+            im->y += dn;
+        }
+    }
+#endif
+    const REAL ly = (((h->y + l->y) - lo.y) - yz * lz) / L.y;
+#ifdef PERIODIC_X
+    {
+        const REAL ux = ((h->x + l->x) - lo.x) - xy * ly - xz * lz;
+        const int dn = ux < 0 ? -1 : ux >= L.x ? 1 : 0;
+        if (dn) {
+            pos_add(h, l, (REAL3)(-dn * L.x, 0, 0));
+            im->x += dn;
+        }
+    }
+#endif
+    (void)ly;
+}
+#endif
 
 /* The separation and overlap of contact c from the split parts: del_lo is
  * the low part of x_i - x_j (SPLIT_POS). With double support they are

@@ -30,11 +30,13 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
                         __global int *flags, __global int *image, const REAL lox,
                         const REAL loy, const REAL loz, const REAL hix, const REAL hiy,
                         const REAL hiz, const REAL Lx, const REAL Ly, const REAL Lz,
+                        const REAL xy, const REAL xz, const REAL yz,
                         __global const int *ops, const int nops, __global const REAL *prm,
                         __global const REAL *f, __global REAL *omega,
                         __global const REAL *torque, __global const REAL *rmass,
                         __global const REAL *radius, __global const int *type,
-                        __global const uint *mask POS_LO_PARAM)
+                        __global const uint *mask, __global const REAL *hrate,
+                        const uint vgroup POS_LO_PARAM)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -69,6 +71,9 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
 #if defined(PERIODIC_X) || defined(PERIODIC_Y) || defined(PERIODIC_Z)
     int3 im = vload3(i, image);
     const int3 im0 = im;
+#ifdef TRICLINIC
+    pbc_wrap_tri(&xi, &xl, &im, (REAL3)(lox, loy, loz), (REAL3)(hix, hiy, hiz), xy, xz, yz);
+#else
 #ifdef PERIODIC_X
     PBC_WRAP_COMPONENT(x, lox, hix, Lx);
 #endif
@@ -78,16 +83,25 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
 #ifdef PERIODIC_Z
     PBC_WRAP_COMPONENT(z, loz, hiz, Lz);
 #endif
+#endif
     if (im.x != im0.x || im.y != im0.y || im.z != im0.z) {
         vstore3(xi, i, x);
         POS_STORE_LO(xl, i);
         vstore3(im, i, image);
+#ifdef VREMAP /* LAMMPS's Domain::pbc with deform remap v: v -/+ h_rate per period */
+        if (mask[i] & vgroup) {
+            vi -= image_velocity(im - im0, hrate);
+            vstore3(vi, i, v);
+        }
+#endif
     }
 #endif
+#ifndef VREMAP
+    (void)hrate;
+    (void)vgroup;
+#endif
     REAL3 d = xi - vload3(i, xhold);
-    d.x = MINIMG_X(d.x, Lx);
-    d.y = MINIMG_Y(d.y, Ly);
-    d.z = MINIMG_Z(d.z, Lz);
+    MINIMG3(d);
     const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
     if (rsq > trigsq)
         atomic_or(&flags[0], 1);
@@ -100,9 +114,12 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
  * Domain::pbc, one period at most), and write the per-chunk extent
  * ext[6 c ..] = (min x, min y, min z, max x, max y, max z). */
 __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
+                              __global REAL *v, __global const uint *mask,
+                              __global const REAL *hrate, const uint vgroup,
                               __global int *image, const int px, const int py, const int pz,
                               const REAL lox, const REAL loy, const REAL loz, const REAL hix,
-                              const REAL hiy, const REAL hiz, __global REAL *ext POS_LO_PARAM)
+                              const REAL hiy, const REAL hiz, const REAL xy, const REAL xz,
+                              const REAL yz, __global REAL *ext POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;
@@ -112,9 +129,36 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
     if (i1 > n)
         i1 = n;
     const int per[3] = {px, py, pz};
+#ifndef VREMAP
+    (void)v;
+    (void)mask;
+    (void)hrate;
+    (void)vgroup;
+#endif
     const REAL lo[3] = {lox, loy, loz}, hi[3] = {hix, hiy, hiz};
     REAL mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = i0; i < i1; i++) {
+#ifdef TRICLINIC
+        {
+            REAL3 xi = vload3(i, x), xl = POS_LOAD_LO(i);
+            int3 im = vload3(i, image);
+            const int3 im0 = im;
+            pbc_wrap_tri(&xi, &xl, &im, (REAL3)(lox, loy, loz), (REAL3)(hix, hiy, hiz), xy, xz,
+                         yz);
+            vstore3(xi, i, x);
+            POS_STORE_LO(xl, i);
+            vstore3(im, i, image);
+#ifdef VREMAP
+            if ((mask[i] & vgroup) && (im.x != im0.x || im.y != im0.y || im.z != im0.z))
+                vstore3(vload3(i, v) - image_velocity(im - im0, hrate), i, v);
+#endif
+            for (int d = 0; d < 3; d++) {
+                mn[d] = fmin(mn[d], x[3 * i + d]);
+                mx[d] = fmax(mx[d], x[3 * i + d]);
+            }
+            continue;
+        }
+#endif
         for (int d = 0; d < 3; d++) {
             REAL xd = x[3 * i + d];
             if (per[d]) {
@@ -124,8 +168,15 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
                 REAL xld = 0;
 #endif
                 int im = image[3 * i + d];
+#ifdef VREMAP
+                const int im0 = im;
+#endif
                 pbc_wrap(&xd, &xld, &im, lo[d], hi[d], hi[d] - lo[d]);
                 image[3 * i + d] = im;
+#ifdef VREMAP /* orthogonal: only the diagonal rates */
+                if ((mask[i] & vgroup) && im != im0)
+                    v[3 * i + d] -= (im - im0) * hrate[d];
+#endif
                 x[3 * i + d] = xd;
 #ifdef SPLIT_POS
                 xlo[3 * i + d] = xld;
@@ -146,20 +197,31 @@ __kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
 __kernel void nbr_bin(const int n, __global const REAL *x, const int nx, const int ny,
                       const int nz, const REAL lox, const REAL loy, const REAL loz,
                       const REAL hix, const REAL hiy, const REAL hiz, const REAL sx,
-                      const REAL sy, const REAL sz, __global int *cellof,
-                      __global int *counts)
+                      const REAL sy, const REAL sz, const REAL xy, const REAL xz,
+                      const REAL yz, __global int *cellof, __global int *counts)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     const REAL3 xi = vload3(i, x);
     int c;
-    if (!(xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
-          xi.z < hiz)) {
+#ifdef TRICLINIC
+    const REAL3 u = box_u(xi - (REAL3)(lox, loy, loz), hiy - loy, hiz - loz, xy, xz, yz);
+    const int out = !(u.x >= 0 && u.x < hix - lox && u.y >= 0 && u.y < hiy - loy &&
+                      u.z >= 0 && u.z < hiz - loz);
+#else
+    const REAL3 u = xi - (REAL3)(lox, loy, loz);
+    const int out = !(xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
+                      xi.z < hiz);
+    (void)xy;
+    (void)xz;
+    (void)yz;
+#endif
+    if (out) {
         c = nx * ny * nz;
     } else {
-        int cx = (int)((xi.x - lox) * sx), cy = (int)((xi.y - loy) * sy);
-        int cz = (int)((xi.z - loz) * sz);
+        int cx = (int)(u.x * sx), cy = (int)(u.y * sy);
+        int cz = (int)(u.z * sz);
         cx = clamp(cx, 0, nx - 1);
         cy = clamp(cy, 0, ny - 1);
         cz = clamp(cz, 0, nz - 1);
@@ -311,25 +373,29 @@ static inline int row_ranges(__global const int *start, const int rowbase, const
 
 /* The pair test of every list build: j is a neighbor of i when
  * |x_i - x_j| < radi + radj + skin (LAMMPS size lists; with cohesion the
- * effect surfaces), j != i, and the pair is not excluded (type table, group
+ * effect surfaces; with PAIR_TYPECUT at least typecut[ti][tj] + skin, the
+ * type pair's cut-off of a potential), j != i, and the pair is not excluded (type table, group
  * bit pairs). Both list styles (bin, multi) accept exactly these pairs. */
 static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const int ti,
                              const uint mi, const int j, __global const REAL *x,
                              __global const REAL *radius, __global const int *type,
                              __global const uint *mask, const REAL Lx, const REAL Ly,
-                             const REAL Lz, const REAL skin, const int ntypes,
+                             const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                             const REAL skin, const int ntypes,
                              __global const int *excl_type, const int nexg,
-                             __global const uint *excl_group, __global const long *mol)
+                             __global const uint *excl_group, __global const long *mol,
+                             __global const REAL *typecut)
 {
     if (j == i)
         return 0;
     REAL3 del = xi - vload3(j, x);
-    del.x = MINIMG_X(del.x, Lx);
-    del.y = MINIMG_Y(del.y, Ly);
-    del.z = MINIMG_Z(del.z, Lz);
+    MINIMG3(del);
     const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
     const REAL radsum = radi + radius[j];
-#ifdef HAS_COHESION /* cohesion: the list reaches the effect surfaces */
+#if defined(PAIR_TYPECUT) /* a potential (pair colloid): its type pair's cut-off */
+    const REAL cut = fmax(fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum),
+                          typecut[(ti - 1) * ntypes + type[j] - 1]) + skin;
+#elif defined(HAS_COHESION) /* cohesion: the list reaches the effect surfaces */
     const REAL cut = fmax(radsum, (REAL)COH_REACH_A + (REAL)COH_REACH_B * radsum) + skin;
 #else
     const REAL cut = radsum + skin;
@@ -384,10 +450,12 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                         const int ny, const int nz, const int px, const int py, const int pz,
                         const REAL lox, const REAL loy, const REAL loz, const REAL sx,
                         const REAL sy, const REAL sz, const REAL Lx, const REAL Ly,
-                        const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
+                        const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                        const REAL skin, const int maxn, __global int *nlist,
                         __global int *ncount, __global int *nown, __global int *flags,
                         const int ntypes, __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group, __global const long *mol)
+                        __global const uint *excl_group, __global const long *mol,
+                        __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -397,9 +465,10 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     const int ti = type[i];
     const uint mi = mask[i];
     const long tagi = tag[i];
-    int cx = clamp((int)((xi.x - lox) * sx), 0, nx - 1);
-    int cy = clamp((int)((xi.y - loy) * sy), 0, ny - 1);
-    int cz = clamp((int)((xi.z - loz) * sz), 0, nz - 1);
+    const REAL3 u = box_u(xi - (REAL3)(lox, loy, loz), Ly, Lz, xy, xz, yz);
+    int cx = clamp((int)(u.x * sx), 0, nx - 1);
+    int cy = clamp((int)(u.y * sy), 0, ny - 1);
+    int cz = clamp((int)(u.z * sz), 0, nz - 1);
     int sxs[3], sys[3], szs[3];
     const int nsx = stencil(cx, nx, px, sxs);
     const int nsy = stencil(cy, ny, py, sys);
@@ -414,8 +483,9 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 const int s = rlo[e], t = rhi[e];
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
-                    if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
-                                   skin, ntypes, excl_type, nexg, excl_group, mol))
+                    if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz, xy,
+                                   xz, yz, skin, ntypes, excl_type, nexg, excl_group, mol,
+                                   typecut))
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
@@ -499,23 +569,31 @@ __kernel void nbr_bin_multi(const int n, __global const REAL *x, __global const 
                             __global const REAL *collcut, __global const int *type2coll,
                             __global const int *mgrid, __global const REAL *minv,
                             const int ncell, const REAL lox, const REAL loy, const REAL loz,
-                            const REAL hix, const REAL hiy, const REAL hiz,
-                            __global int *cellof, __global int *counts, __global int *flags)
+                            const REAL hix, const REAL hiy, const REAL hiz, const REAL xy,
+                            const REAL xz, const REAL yz, __global int *cellof,
+                            __global int *counts, __global int *flags)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     const REAL3 xi = vload3(i, x);
     const int col = nbr_collection(type[i], radius[i], ninterval, collcut, type2coll);
+    const REAL3 u = box_u(xi - (REAL3)(lox, loy, loz), hiy - loy, hiz - loz, xy, xz, yz);
     int c = ncell;
     if (col < 0) {
         atomic_min(&flags[1], i);
-    } else if (xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
-               xi.z < hiz) {
+    } else if (
+#ifdef TRICLINIC
+        u.x >= 0 && u.x < hix - lox && u.y >= 0 && u.y < hiy - loy && u.z >= 0 &&
+        u.z < hiz - loz
+#else
+        xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz && xi.z < hiz
+#endif
+    ) {
         const int nx = mgrid[4 * col], ny = mgrid[4 * col + 1], nz = mgrid[4 * col + 2];
-        const int cx = clamp((int)((xi.x - lox) * minv[3 * col]), 0, nx - 1);
-        const int cy = clamp((int)((xi.y - loy) * minv[3 * col + 1]), 0, ny - 1);
-        const int cz = clamp((int)((xi.z - loz) * minv[3 * col + 2]), 0, nz - 1);
+        const int cx = clamp((int)(u.x * minv[3 * col]), 0, nx - 1);
+        const int cy = clamp((int)(u.y * minv[3 * col + 1]), 0, ny - 1);
+        const int cz = clamp((int)(u.z * minv[3 * col + 2]), 0, nz - 1);
         c = mgrid[4 * col + 3] + (cz * ny + cy) * nx + cx;
     }
     cellof[i] = c;
@@ -565,11 +643,13 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                               __global const REAL *minv, __global const REAL *cutab,
                               const int px, const int py, const int pz, const REAL lox,
                               const REAL loy, const REAL loz, const REAL Lx, const REAL Ly,
-                              const REAL Lz, const REAL skin, const int maxn,
+                              const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                              const REAL skin, const int maxn,
                               __global int *nlist, __global int *ncount, __global int *nown,
                               __global int *flags, const int ntypes,
                               __global const int *excl_type, const int nexg,
-                              __global const uint *excl_group, __global const long *mol)
+                              __global const uint *excl_group, __global const long *mol,
+                              __global const REAL *typecut)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -580,6 +660,8 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
     const uint mi = mask[i];
     const long tagi = tag[i];
     const int ca = nbr_collection(ti, radi, ninterval, collcut, type2coll);
+    const REAL3 u = box_u(xi - (REAL3)(lox, loy, loz), Ly, Lz, xy, xz, yz);
+    const REAL3 uf = box_ufac(Ly, Lz, xy, xz, yz);
     __global int *row = nlist + (size_t)i * maxn;
     int cnt = 0, own = 0;
     for (int cb = 0; cb < ncoll && ca >= 0; cb++) {
@@ -587,9 +669,9 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
         const int nx = mgrid[4 * cb], ny = mgrid[4 * cb + 1], nz = mgrid[4 * cb + 2];
         const int base = mgrid[4 * cb + 3];
         int xl[2], xh[2], yl[2], yh[2], zl[2], zh[2];
-        const int nxr = span(xi.x - lox, cut, minv[3 * cb], nx, px, xl, xh);
-        const int nyr = span(xi.y - loy, cut, minv[3 * cb + 1], ny, py, yl, yh);
-        const int nzr = span(xi.z - loz, cut, minv[3 * cb + 2], nz, pz, zl, zh);
+        const int nxr = span(u.x, cut * uf.x, minv[3 * cb], nx, px, xl, xh);
+        const int nyr = span(u.y, cut * uf.y, minv[3 * cb + 1], ny, py, yl, yh);
+        const int nzr = span(u.z, cut * uf.z, minv[3 * cb + 2], nz, pz, zl, zh);
         for (int a = 0; a < nzr; a++)
             for (int cz = zl[a]; cz <= zh[a]; cz++)
                 for (int b = 0; b < nyr; b++)
@@ -600,8 +682,8 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                             for (int jj = s; jj < t; jj++) {
                                 const int j = sorted ? jj : cellatoms[jj];
                                 if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
-                                               Lx, Ly, Lz, skin, ntypes, excl_type, nexg,
-                                               excl_group, mol))
+                                               Lx, Ly, Lz, xy, xz, yz, skin, ntypes,
+                                               excl_type, nexg, excl_group, mol, typecut))
                                     nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
                             }
                         }
@@ -756,7 +838,8 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
                             const int at, __global const REAL *old_shear,
                             __global REAL *shear, __global const REAL *x,
                             __global const REAL *radius, const REAL Lx, const REAL Ly,
-                            const REAL Lz, __global const long *tag, const REAL blox,
+                            const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                            __global const long *tag, const REAL blox,
                             const REAL bloy, const REAL bloz, const REAL bhix, const REAL bhiy,
                             const REAL bhiz, const REAL binvx, const REAL binvy,
                             const REAL binvz, const int nbx, const int nby, const int nbz,
@@ -774,9 +857,7 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
      * listed partner does: apart, it holds zeros unless its contact holds
      * beyond touch */
     REAL3 del = vload3(ci[c], x) - vload3(j, x);
-    del.x = MINIMG_X(del.x, Lx);
-    del.y = MINIMG_Y(del.y, Ly);
-    del.z = MINIMG_Z(del.z, Lz);
+    MINIMG3(del);
 #if defined(HAS_COHESION) && defined(GRN_HAS_JKR) /* LAMMPS's beyond_contact */
     int keep = 1;
     (void)radius;
@@ -824,7 +905,8 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
 __kernel void nbr_overlap(const int n, const int chunk, __global const REAL *x,
                           __global const REAL *radius, __global const int *nlist,
                           __global const int *ncount, const int maxn, const REAL Lx,
-                          const REAL Ly, const REAL Lz, __global REAL *out)
+                          const REAL Ly, const REAL Lz, const REAL xy, const REAL xz,
+                          const REAL yz, __global REAL *out)
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;
@@ -840,9 +922,7 @@ __kernel void nbr_overlap(const int n, const int chunk, __global const REAL *x,
         for (int k = 0; k < ncount[i]; k++) {
             const int j = nlist[(size_t)i * maxn + k];
             REAL3 del = xi - vload3(j, x);
-            del.x = MINIMG_X(del.x, Lx);
-            del.y = MINIMG_Y(del.y, Ly);
-            del.z = MINIMG_Z(del.z, Lz);
+            MINIMG3(del);
             const REAL r = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
             const REAL radj = radius[j];
             const REAL ov = (radi + radj - r) / fmin(radi, radj);

@@ -51,18 +51,24 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
                             __global const uint *mask, __global REAL *shear,
                             __global const REAL *param, const int ntypes, const int nparam,
                             const uint freezebit, const REAL dt, const int shearupdate,
-                            const REAL Lx, const REAL Ly, const REAL Lz, __global REAL *recf,
+                            const REAL Lx, const REAL Ly, const REAL Lz, const REAL xy,
+                            const REAL xz, const REAL yz, __global REAL *recf,
                             __global REAL *rect, __global REAL *acc, __global int *astep,
-                            const int step POS_LO_PARAM)
+                            const int step, __global const REAL *hrate,
+                            const uint vgroup POS_LO_PARAM)
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
     const int i = ci[c], j = cj[c];
     REAL3 del = vload3(i, x) - vload3(j, x);
-    del.x = MINIMG_X(del.x, Lx);
-    del.y = MINIMG_Y(del.y, Ly);
-    del.z = MINIMG_Z(del.z, Lz);
+#ifdef VREMAP
+    const REAL3 raw = del;
+#else
+    (void)hrate;
+    (void)vgroup;
+#endif
+    MINIMG3(del);
 #ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/common.cl) */
     const REAL3 del_lo = vload3(i, xlo) - vload3(j, xlo);
     const REAL3 dtest = del + del_lo;
@@ -86,6 +92,10 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
         touch = contact_refine(&k, del_lo);
     }
+#endif
+#ifdef VREMAP /* the partner's image streams with the box (LAMMPS's ghost velocities) */
+    if (touch && (mask[j] & vgroup))
+        k.vr -= image_velocity(image_count(raw, del, Lx, Ly, Lz, xy, xz, yz), hrate);
 #endif
     if (!touch) {
 #ifdef HAS_HISTORY
@@ -191,32 +201,65 @@ __kernel void pair_gather(const int n, __global const int *ioff, __global const 
 
 /* The pair virial of the step, per particle, for the pressure (run only on
  * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum
- * over i's incidence records, in row order, of del * F componentwise (xx,
- * yy, zz), del = x_i - x_j (minimum image), F what i receives. A contact's
- * two sides give the same product, so sum_i w_i = sum over contacts of
- * del * F, LAMMPS's ev_tally_xyz virial. Positions have not moved since the
- * forces (final_integrate changes velocities only). */
+ * over i's incidence records, in row order, of the tensor del_a F_b in
+ * LAMMPS's order xx yy zz xy xz yz (6 REAL per particle), del = x_i - x_j
+ * (minimum image), F what i receives. A contact's two sides give the same
+ * product, so sum_i w_i = sum over contacts of del F, LAMMPS's
+ * ev_tally_xyz virial. Positions have not moved since the forces
+ * (final_integrate changes velocities only). */
 __kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
                           __global const int *ioff, __global const REAL *recf,
                           __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
-                          __global REAL *w)
+                          const REAL xy, const REAL xz, const REAL yz, __global REAL *w)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     const REAL3 xi = vload3(i, x);
-    REAL3 s = (REAL3)(0);
+    REAL3 s = (REAL3)(0), o = (REAL3)(0);
     const int s0 = ioff[i], cnt = ioff[i + 1] - s0;
     for (int k = 0; k < cnt; k++) {
         const int j = nlist[(size_t)i * maxn + k];
         REAL3 del = xi - vload3(j, x);
-        del.x = MINIMG_X(del.x, Lx);
-        del.y = MINIMG_Y(del.y, Ly);
-        del.z = MINIMG_Z(del.z, Lz);
-        s += del * vload3((size_t)(s0 + k), recf);
+        MINIMG3(del);
+        const REAL3 f = vload3((size_t)(s0 + k), recf);
+        s += del * f;
+        o += (REAL3)(del.x * f.y, del.x * f.z, del.y * f.z);
     }
-    vstore3((REAL)0.5 * s, i, w);
+    vstore3((REAL)0.5 * s, 2 * i, w);
+    vstore3((REAL)0.5 * o, 2 * i + 1, w);
 }
+
+#ifdef PAIR_ENERGY
+/* The pair energy of the step, per particle (a potential's style only; run
+ * on the steps that print it): e_i = 1/2 sum over i's row, in row order, of
+ * PAIR_ENERGY(rsq, param of (type i, type j)), which is 0 beyond the type
+ * pair's cut-off. The two sides of a pair give the same energy, so sum_i e_i
+ * is the per-pair sum, LAMMPS's eng_vdwl. */
+__kernel void pair_energy(const int n, __global const int *nlist, const int maxn,
+                          __global const int *ioff, __global const REAL *x,
+                          __global const int *type, __global const REAL *param,
+                          const int ntypes, const int nparam, const REAL Lx, const REAL Ly,
+                          const REAL Lz, const REAL xy, const REAL xz, const REAL yz,
+                          __global REAL *e)
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    const REAL3 xi = vload3(i, x);
+    const int ti = type[i];
+    REAL s = 0;
+    const int cnt = ioff[i + 1] - ioff[i];
+    for (int k = 0; k < cnt; k++) {
+        const int j = nlist[(size_t)i * maxn + k];
+        REAL3 del = xi - vload3(j, x);
+        MINIMG3(del);
+        const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+        s += PAIR_ENERGY(rsq, param + (size_t)((ti - 1) * ntypes + (type[j] - 1)) * nparam);
+    }
+    e[i] = (REAL)0.5 * s;
+}
+#endif
 
 /* Zero the force (and torque) when no pair style computes them. */
 __kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)

@@ -47,4 +47,14 @@ enum gr_roll { GR_R_NONE, GR_R_SDS };
 enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
                  GRW_NPARAM };
 
+/* colloid (styles/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
+ * (COL_SS small-small LJ, COL_SL colloid-small, COL_LL colloid-colloid as
+ * REAL), cutsq, the Hamaker constant A, sigma^3, sigma^6, the radii a1 (of
+ * the I type) and a2 (a2 alone: the colloid's radius in COL_SL), LJ
+ * prefactors 48 eps s^12, 24 eps s^6, 4 eps s^12, 4 eps s^6 (eps = A/144),
+ * and the energy offset (pair_modify shift yes). */
+enum col_param { COL_FORM, COL_CUTSQ, COL_A12, COL_SIGMA3, COL_SIGMA6, COL_A1, COL_A2,
+                 COL_LJ1, COL_LJ2, COL_LJ3, COL_LJ4, COL_OFFSET, COL_NPARAM };
+enum col_form { COL_SS, COL_SL, COL_LL };
+
 #endif

@@ -131,6 +131,30 @@ static int by_tag_of(const void *pa, const void *pb, void *ctx)
     return (ta > tb) - (ta < tb);
 }
 
+void atoms_order_by_tag(const int64_t *tag, int n, int *ord)
+{
+    int64_t lo = INT64_MAX, hi = INT64_MIN;
+    for (int i = 0; i < n; i++) {
+        lo = tag[i] < lo ? tag[i] : lo;
+        hi = tag[i] > hi ? tag[i] : hi;
+    }
+    if (n > 0 && hi - lo < (int64_t)n) { /* dense tags: place directly if unique */
+        for (int i = 0; i < n; i++)
+            ord[i] = -1;
+        int unique = 1;
+        for (int i = 0; i < n && unique; i++) {
+            int *slot = &ord[tag[i] - lo];
+            unique = *slot < 0;
+            *slot = i;
+        }
+        if (unique)
+            return;
+    }
+    for (int i = 0; i < n; i++)
+        ord[i] = i;
+    qsort_r(ord, (size_t)n, sizeof *ord, by_tag_of, (void *)tag);
+}
+
 const int *atoms_tag_order(struct gravel *g)
 {
     struct atoms *a = &g->atoms;
@@ -138,26 +162,6 @@ const int *atoms_tag_order(struct gravel *g)
         a->order = gr_realloc(g, a->order, ((size_t)a->n + 1) * sizeof(int));
         a->order_cap = a->n + 1;
     }
-    int n = a->n, *ord = a->order;
-    int64_t lo = INT64_MAX, hi = INT64_MIN;
-    for (int i = 0; i < n; i++) {
-        lo = a->tag[i] < lo ? a->tag[i] : lo;
-        hi = a->tag[i] > hi ? a->tag[i] : hi;
-    }
-    if (n > 0 && hi - lo < (int64_t)n) { /* dense tags: place directly if unique */
-        for (int i = 0; i < n; i++)
-            ord[i] = -1;
-        int unique = 1;
-        for (int i = 0; i < n && unique; i++) {
-            int *slot = &ord[a->tag[i] - lo];
-            unique = *slot < 0;
-            *slot = i;
-        }
-        if (unique)
-            return ord;
-    }
-    for (int i = 0; i < n; i++)
-        ord[i] = i;
-    qsort_r(ord, (size_t)n, sizeof *ord, by_tag_of, a->tag);
-    return ord;
+    atoms_order_by_tag(a->tag, a->n, a->order);
+    return a->order;
 }

@@ -23,6 +23,8 @@ void atoms_free(struct atoms *a);
  * host reductions (thermo, computes) sum in this order, so their results
  * do not depend on the device's memory order (atom_modify sort). */
 const int *atoms_tag_order(struct gravel *g);
+/* ord[k] = the index of the k-th smallest of the n tags (ties: any order). */
+void atoms_order_by_tag(const int64_t *tag, int n, int *ord);
 /* Index of the atom with this tag, or -1 (linear scan; callers cache). */
 int atoms_find_tag(const struct atoms *a, int64_t tag);
 

@@ -1,21 +1,26 @@
 /* change_box.c - `change_box group-ID op args ... [units lattice|box]` as
- * LAMMPS (change_box.cpp), orthogonal boxes:
+ * LAMMPS (change_box.cpp):
  *   x|y|z final lo hi     set the bounds
  *   x|y|z delta dlo dhi   add to the bounds
  *   x|y|z scale f         scale the length about the centre
+ *   xy|xz|yz final t      set a tilt factor (triclinic boxes)
+ *   xy|xz|yz delta dt     add to a tilt factor
+ *   triclinic             make the box triclinic (tilts 0)
+ *   ortho                 make it orthogonal (error unless every tilt is 0)
  *   boundary bx by bz     new boundary flags (as `boundary`); image flags of
  *                         dimensions that become non-periodic are reset
  *   set                   remember the current box for the next remap
  *   remap                 map the group's atoms from the remembered box
  *                         (initially the box before this command) to the
- *                         current one, keeping their fractional coordinates
- *   ortho                 accepted (boxes are orthogonal)
+ *                         current one, keeping their lamda (fractional)
+ *                         coordinates; the current box is remembered
  * Operations run in order; units lattice (the default) multiplies final and
- * delta values by the lattice spacings. Each box change prints the new box.
+ * delta values by the lattice spacings (xy, xz by the x spacing, yz by y).
+ * Each box change prints the new box.
  * Afterwards shrink-wrapped faces are refitted, atoms are wrapped into
  * periodic dimensions, and atoms left outside a fixed face are lost with a
- * warning ("Lost atoms via change_box"). Triclinic boxes (triclinic, xy, xz,
- * yz) and the volume style are not supported (clear errors). */
+ * warning ("Lost atoms via change_box"). The volume style is not supported
+ * (a clear error). */
 #include <math.h>
 #include <string.h>
 
@@ -26,7 +31,20 @@
 #include "error.h"
 #include "group.h"
 
-enum { OP_FINAL, OP_DELTA, OP_SCALE, OP_BOUNDARY, OP_SET, OP_REMAP, OP_ORTHO };
+enum { OP_FINAL, OP_DELTA, OP_SCALE, OP_BOUNDARY, OP_SET, OP_REMAP, OP_ORTHO, OP_TRICLINIC,
+       OP_TILT_FINAL, OP_TILT_DELTA };
+
+/* the box a remap maps from (LAMMPS's save_box_state) */
+struct saved_box {
+    double lo[3], hinv[6];
+};
+
+static void save_box(struct gravel *g, struct saved_box *s)
+{
+    for (int q = 0; q < 3; q++)
+        s->lo[q] = g->dom.lo[q];
+    domain_h_inv(g, s->hinv);
+}
 
 struct op {
     int kind, dim;
@@ -68,9 +86,24 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
             }
             if (o->dim == 2 && g->dom.dimension == 2)
                 gr_error(g, "cannot change the z dimension of a 2d simulation");
-        } else if (!strcmp(w, "xy") || !strcmp(w, "xz") || !strcmp(w, "yz") ||
-                   !strcmp(w, "triclinic")) {
-            gr_error(g, "'%s': triclinic boxes are not supported (orthogonal boxes only)", w);
+        } else if (!strcmp(w, "xy") || !strcmp(w, "xz") || !strcmp(w, "yz")) {
+            /* dim: the tilt index 0 xy, 1 xz, 2 yz */
+            o->dim = !strcmp(w, "xy") ? 0 : !strcmp(w, "xz") ? 1 : 2;
+            arg_need(g, argc, i, 2, w);
+            const char *st = argv[i + 1];
+            if (!strcmp(st, "final"))
+                o->kind = OP_TILT_FINAL;
+            else if (!strcmp(st, "delta"))
+                o->kind = OP_TILT_DELTA;
+            else
+                gr_error(g, "%s needs final or delta, got '%.32s'", w, st);
+            o->v[0] = arg_double(g, argv[i + 2], st);
+            i += 3;
+            if (o->dim > 0 && g->dom.dimension == 2)
+                gr_error(g, "cannot change the %s tilt of a 2d simulation", w);
+        } else if (!strcmp(w, "triclinic")) {
+            o->kind = OP_TRICLINIC;
+            i++;
         } else if (!strcmp(w, "boundary")) {
             arg_need(g, argc, i, 3, w);
             o->kind = OP_BOUNDARY;
@@ -110,11 +143,8 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
     struct domain *d = &g->dom;
     struct atoms *a = &g->atoms;
     unsigned bit = group_bit(ig);
-    double slo[3], shi[3];
-    for (int q = 0; q < 3; q++) {
-        slo[q] = d->lo[q];
-        shi[q] = d->hi[q];
-    }
+    struct saved_box sb;
+    save_box(g, &sb);
     gr_print(g, "Changing box ...\n");
     for (int k = 0; k < nops; k++) {
         const struct op *o = &ops[k];
@@ -139,10 +169,31 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
                 gr_error(g, "the new %c bounds %g %g are not lo < hi", "xyz"[q], lo, hi);
             d->lo[q] = lo;
             d->hi[q] = hi;
-            gr_print(g, "  orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", d->lo[0],
-                     d->lo[1], d->lo[2], d->hi[0], d->hi[1], d->hi[2]);
+            domain_print_box(g, "  ");
             break;
         }
+        case OP_TILT_FINAL:
+        case OP_TILT_DELTA: {
+            if (!d->triclinic)
+                gr_error(g, "cannot change the tilt factors of an orthogonal box (change_box "
+                            "... triclinic first)");
+            double *t = q == 0 ? &d->xy : q == 1 ? &d->xz : &d->yz;
+            double v = o->v[0] * sc[q == 2 ? 1 : 0];
+            *t = o->kind == OP_TILT_FINAL ? v : *t + v;
+            domain_check_tilt(g);
+            domain_print_box(g, "  ");
+            break;
+        }
+        case OP_TRICLINIC:
+            d->triclinic = 1;
+            domain_print_box(g, "  ");
+            break;
+        case OP_ORTHO:
+            if (d->xy != 0.0 || d->xz != 0.0 || d->yz != 0.0)
+                gr_error(g, "cannot change the box to orthogonal when a tilt factor is non-zero");
+            d->triclinic = 0;
+            domain_print_box(g, "  ");
+            break;
         case OP_BOUNDARY:
             domain_set_boundary(g, o->bnd);
             for (int p = 0; p < 3; p++) {
@@ -155,26 +206,23 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
                     d->minhi[p] = d->hi[p];
             }
             break;
-        case OP_SET:
-            for (int p = 0; p < 3; p++) {
-                slo[p] = d->lo[p];
-                shi[p] = d->hi[p];
-            }
-            break;
+        case OP_SET: save_box(g, &sb); break;
         case OP_REMAP:
             for (int i = 0; i < a->n; i++) {
                 if (!(a->mask[i] & bit))
                     continue;
-                /* LAMMPS's x2lamda / lamda2x: lamda = (1/L0) (x - lo0),
-                 * x = L lamda + lo (the bits matter: velocity loop geom
+                /* LAMMPS's x2lamda with the remembered box, lamda2x with
+                 * the current one (the bits matter: velocity loop geom
                  * hashes coordinates) */
-                for (int p = 0; p < 3; p++) {
-                    double lam = (1.0 / (shi[p] - slo[p])) * (a->x[3 * i + p] - slo[p]);
-                    a->x[3 * i + p] = (d->hi[p] - d->lo[p]) * lam + d->lo[p];
-                }
+                double *x = a->x + 3 * i, lam[3];
+                double dx = x[0] - sb.lo[0], dy = x[1] - sb.lo[1], dz = x[2] - sb.lo[2];
+                lam[0] = sb.hinv[0] * dx + sb.hinv[5] * dy + sb.hinv[4] * dz;
+                lam[1] = sb.hinv[1] * dy + sb.hinv[3] * dz;
+                lam[2] = sb.hinv[2] * dz;
+                domain_lamda2x(g, lam, x);
             }
+            save_box(g, &sb);
             break;
-        case OP_ORTHO: break;
         }
     }
     for (int q = 0; q < 3; q++)
@@ -190,7 +238,10 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
     /* wrap periodic dimensions; atoms outside a fixed face are lost */
     int n0 = a->n;
     for (int i = 0; i < a->n;) {
-        domain_remap(g, a->x + 3 * i, a->image + 3 * i);
+        /* lmp 2021 leaves the bits of an atom inside a triclinic box (no
+         * lamda round trip; velocity loop geom hashes them: multi/in.granular) */
+        if (!d->triclinic || !domain_inside(g, a->x + 3 * i))
+            domain_remap(g, a->x + 3 * i, a->image + 3 * i);
         int out = 0;
         for (int q = 0; q < 3; q++)
             if (!d->periodic[q] && (a->x[3 * i + q] < d->lo[q] || a->x[3 * i + q] > d->hi[q]))

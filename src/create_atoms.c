@@ -283,6 +283,10 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
 {
     int type = arg_int_range(g, argv[0], 1, g->atoms.ntypes, "atom type");
     const char *style = argv[1];
+    if ((g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0) && strcmp(style, "single"))
+        gr_error(g, "create_atoms %s in a tilted triclinic box is not supported (single is; or "
+                    "create the atoms before tilting the box with change_box, or read_data)",
+                 style);
     int iarg;
     struct region *r = NULL;
     double xone[3] = {0, 0, 0};

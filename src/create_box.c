@@ -1,6 +1,8 @@
 /* create_box.c - `create_box N region-ID`: the box is the bounding box of a
- * bounded side-in region; N atom types. Shrink-wrapped faces start `small`
- * outside the region (LAMMPS set_initial_box). */
+ * bounded side-in region, or with a prism region the triclinic box of the
+ * prism (its bounds and tilts, as LAMMPS); N atom types. Shrink-wrapped
+ * faces start `small` outside the region (LAMMPS set_initial_box). */
+#include <string.h>
 #include <math.h>
 
 #include "args.h"
@@ -34,8 +36,25 @@ void cmd_create_box(struct gravel *g, int argc, char **argv)
         g->dom.lo[d] = r->bbox_lo[d];
         g->dom.hi[d] = r->bbox_hi[d];
     }
+    int prism = !strcmp(r->style->name, "prism");
+    g->dom.triclinic = prism;
+    g->dom.xy = g->dom.xz = g->dom.yz = 0.0;
+    if (prism) {
+        for (int d = 0; d < 3; d++) {
+            g->dom.lo[d] = r->p[2 * d];
+            g->dom.hi[d] = r->p[2 * d + 1];
+        }
+        g->dom.xy = r->p[6];
+        g->dom.xz = r->p[7];
+        g->dom.yz = r->p[8];
+        domain_check_tilt(g);
+        double lx = g->dom.hi[0] - g->dom.lo[0], ly = g->dom.hi[1] - g->dom.lo[1];
+        if (fabs(g->dom.xy / lx) > 0.5 || fabs(g->dom.xz / lx) > 0.5 || fabs(g->dom.yz / ly) > 0.5)
+            gr_error(g, "triclinic box skew is too large (a tilt beyond half its box length: "
+                        "xy and xz against Lx, yz against Ly)");
+    }
     domain_set_initial_box(g);
     atoms_set_ntypes(g, ntypes);
-    gr_print(g, "Created orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", g->dom.lo[0],
-             g->dom.lo[1], g->dom.lo[2], g->dom.hi[0], g->dom.hi[1], g->dom.hi[2]);
+    gr_print(g, "Created ");
+    domain_print_box(g, "");
 }

@@ -89,17 +89,24 @@ static int overlap_hit(struct gravel *g, const struct cells *c, int i, double cu
     const struct atoms *a = &g->atoms;
     const double *xi = a->x + 3 * i;
     int ci[3], span[3];
+    /* a tilted box: an image across y (z) is shifted along x (and y), so
+     * those dimensions visit every cell */
+    const struct domain *dm = &g->dom;
+    int all[3] = {dm->xy != 0.0 || dm->xz != 0.0, dm->yz != 0.0, 0};
     for (int d = 0; d < 3; d++) {
         ci[d] = cell_of(c, xi, d);
         /* a periodic dimension with few cells: visit them all (images wrap) */
-        span[d] = c->nc[d] <= 3 ? c->nc[d] : 3;
+        if (all[d] && c->nc[d] > 3)
+            span[d] = c->nc[d];
+        else
+            span[d] = c->nc[d] <= 3 ? c->nc[d] : 3;
     }
     for (int dz = 0; dz < span[2]; dz++)
         for (int dy = 0; dy < span[1]; dy++)
             for (int dx = 0; dx < span[0]; dx++) {
                 int cc[3], off[3] = {dx, dy, dz}, skip = 0;
                 for (int d = 0; d < 3; d++) {
-                    int k = c->nc[d] <= 3 ? off[d] : ci[d] - 1 + off[d];
+                    int k = c->nc[d] <= 3 || span[d] == c->nc[d] ? off[d] : ci[d] - 1 + off[d];
                     if (k < 0 || k >= c->nc[d]) {
                         if (!domain_contact_periodic(g, d)) {
                             skip = 1;

@@ -110,53 +110,189 @@ double domain_volume(const struct gravel *g)
     return (dm->hi[0] - dm->lo[0]) * (dm->hi[1] - dm->lo[1]) * (dm->hi[2] - dm->lo[2]);
 }
 
+void domain_h(const struct gravel *g, double h[6])
+{
+    const struct domain *dm = &g->dom;
+    for (int d = 0; d < 3; d++)
+        h[d] = dm->hi[d] - dm->lo[d];
+    h[3] = dm->yz;
+    h[4] = dm->xz;
+    h[5] = dm->xy;
+}
+
+void domain_h_inv(const struct gravel *g, double hinv[6])
+{
+    double h[6];
+    domain_h(g, h);
+    hinv[0] = 1.0 / h[0];
+    hinv[1] = 1.0 / h[1];
+    hinv[2] = 1.0 / h[2];
+    hinv[3] = -h[3] / (h[1] * h[2]);
+    hinv[4] = (h[3] * h[5] - h[1] * h[4]) / (h[0] * h[1] * h[2]);
+    hinv[5] = -h[5] / (h[0] * h[1]);
+}
+
+void domain_x2lamda(const struct gravel *g, const double x[3], double lam[3])
+{
+    const struct domain *dm = &g->dom;
+    double hinv[6], dx = x[0] - dm->lo[0], dy = x[1] - dm->lo[1], dz = x[2] - dm->lo[2];
+    domain_h_inv(g, hinv);
+    lam[0] = hinv[0] * dx + hinv[5] * dy + hinv[4] * dz;
+    lam[1] = hinv[1] * dy + hinv[3] * dz;
+    lam[2] = hinv[2] * dz;
+}
+
+void domain_lamda2x(const struct gravel *g, const double lam[3], double x[3])
+{
+    const struct domain *dm = &g->dom;
+    double h[6], l0 = lam[0], l1 = lam[1], l2 = lam[2];
+    domain_h(g, h);
+    x[0] = h[0] * l0 + h[5] * l1 + h[4] * l2 + dm->lo[0];
+    x[1] = h[1] * l1 + h[3] * l2 + dm->lo[1];
+    x[2] = h[2] * l2 + dm->lo[2];
+}
+
+void domain_check_tilt(struct gravel *g)
+{
+    const struct domain *dm = &g->dom;
+    if (!dm->triclinic)
+        return;
+    if (!isfinite(dm->xy) || !isfinite(dm->xz) || !isfinite(dm->yz))
+        gr_error(g, "tilt factors must be finite");
+    if ((dm->xy != 0.0 && !dm->periodic[1]) || (dm->xz != 0.0 && !dm->periodic[2]) ||
+        (dm->yz != 0.0 && !dm->periodic[2]))
+        gr_error(g, "cannot skew a triclinic box along a non-periodic dimension (xy needs y "
+                    "periodic, xz and yz need z periodic)");
+    if (dm->dimension == 2 && (dm->xz != 0.0 || dm->yz != 0.0))
+        gr_error(g, "cannot skew a 2d box in z (xz and yz must be 0)");
+}
+
+void domain_ufac(const struct domain *d, double f[3])
+{
+    f[0] = f[1] = f[2] = 1.0;
+    if (!d->triclinic)
+        return;
+    double Ly = d->hi[1] - d->lo[1], Lz = d->hi[2] - d->lo[2];
+    double by = d->xy / Ly, cz = (d->xy * d->yz / Ly - d->xz) / Lz, cy = d->yz / Lz;
+    f[0] = sqrt(1 + by * by + cz * cz);
+    f[1] = sqrt(1 + cy * cy);
+}
+
+void domain_bbox(const struct gravel *g, double lo[3], double hi[3])
+{
+    const struct domain *d = &g->dom;
+    double xy = d->xy, xz = d->xz, yz = d->yz;
+    lo[0] = d->lo[0] + fmin(fmin(0.0, xy), fmin(xz, xy + xz));
+    hi[0] = d->hi[0] + fmax(fmax(0.0, xy), fmax(xz, xy + xz));
+    lo[1] = d->lo[1] + fmin(0.0, yz);
+    hi[1] = d->hi[1] + fmax(0.0, yz);
+    lo[2] = d->lo[2];
+    hi[2] = d->hi[2];
+}
+
+void domain_print_box(struct gravel *g, const char *indent)
+{
+    const struct domain *d = &g->dom;
+    if (d->triclinic)
+        gr_print(g, "%striclinic box = (%#.8g %#.8g %#.8g) to (%#.8g %#.8g %#.8g) with tilt "
+                    "(%#.8g %#.8g %#.8g)\n", indent, d->lo[0], d->lo[1], d->lo[2], d->hi[0],
+                 d->hi[1], d->hi[2], d->xy, d->xz, d->yz);
+    else
+        gr_print(g, "%sorthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", indent,
+                 d->lo[0], d->lo[1], d->lo[2], d->hi[0], d->hi[1], d->hi[2]);
+}
+
+/* One wrapped coordinate c in [lo, hi) of period len; returns the image shift. */
+static int wrap1(double *c, double lo, double hi, double len)
+{
+    if (*c >= lo && *c < hi)
+        return 0;
+    double n = floor((*c - lo) / len);
+    if (fabs(n) > 1e9)
+        return 0; /* hopelessly far: leave for the caller's sanity checks */
+    *c -= n * len;
+    /* round-off can leave c a hair outside [lo, hi) */
+    if (*c >= hi) {
+        *c -= len;
+        n += 1;
+    }
+    if (*c < lo)
+        *c = lo;
+    return (int)n;
+}
+
 void domain_remap(const struct gravel *g, double x[3], int image[3])
 {
     const struct domain *dm = &g->dom;
+    if (dm->triclinic) { /* LAMMPS: wrap the lamda coordinates in [0, 1), map back */
+        if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2]))
+            return;
+        double lam[3];
+        domain_x2lamda(g, x, lam);
+        for (int d = 0; d < 3; d++) {
+            if (!dm->periodic[d])
+                continue;
+            int n = wrap1(&lam[d], 0.0, 1.0, 1.0);
+            if (image)
+                image[d] += n;
+        }
+        domain_lamda2x(g, lam, x);
+        return;
+    }
     for (int d = 0; d < 3; d++) {
         if (!dm->periodic[d] || !isfinite(x[d]))
             continue;
-        double len = dm->hi[d] - dm->lo[d];
-        if (x[d] >= dm->lo[d] && x[d] < dm->hi[d])
-            continue;
-        double n = floor((x[d] - dm->lo[d]) / len);
-        if (fabs(n) > 1e9)
-            continue; /* hopelessly far: leave for the caller's sanity checks */
-        x[d] -= n * len;
-        /* round-off can leave x a hair outside [lo, hi) */
-        if (x[d] >= dm->hi[d]) {
-            x[d] -= len;
-            n += 1;
-        }
-        if (x[d] < dm->lo[d])
-            x[d] = dm->lo[d];
+        int n = wrap1(&x[d], dm->lo[d], dm->hi[d], dm->hi[d] - dm->lo[d]);
         if (image)
-            image[d] += (int)n;
+            image[d] += n;
     }
 }
 
 void domain_unmap(const struct gravel *g, const double x[3], const int image[3], double out[3])
 {
     const struct domain *dm = &g->dom;
+    int im[3];
     for (int d = 0; d < 3; d++)
-        out[d] = x[d] + (dm->periodic[d] ? image[d] * (dm->hi[d] - dm->lo[d]) : 0.0);
+        im[d] = dm->periodic[d] ? image[d] : 0;
+    double h[6];
+    domain_h(g, h);
+    out[0] = x[0] + h[0] * im[0] + h[5] * im[1] + h[4] * im[2];
+    out[1] = x[1] + h[1] * im[1] + h[3] * im[2];
+    out[2] = x[2] + h[2] * im[2];
 }
 
 void domain_minimum_image(const struct gravel *g, double del[3])
 {
     const struct domain *dm = &g->dom;
-    for (int d = 0; d < 3; d++) {
-        if (!dm->periodic[d])
-            continue;
-        double len = dm->hi[d] - dm->lo[d];
-        if (fabs(del[d]) > 0.5 * len)
-            del[d] -= len * nearbyint(del[d] / len);
+    /* z first (its image shifts y and x by the tilts), then y, then x */
+    double h[6];
+    domain_h(g, h);
+    if (dm->periodic[2] && fabs(del[2]) > 0.5 * h[2]) {
+        double n = nearbyint(del[2] / h[2]);
+        del[2] -= n * h[2];
+        del[1] -= n * h[3];
+        del[0] -= n * h[4];
     }
+    if (dm->periodic[1] && fabs(del[1]) > 0.5 * h[1]) {
+        double n = nearbyint(del[1] / h[1]);
+        del[1] -= n * h[1];
+        del[0] -= n * h[5];
+    }
+    if (dm->periodic[0] && fabs(del[0]) > 0.5 * h[0])
+        del[0] -= h[0] * nearbyint(del[0] / h[0]);
 }
 
 int domain_inside(const struct gravel *g, const double x[3])
 {
     const struct domain *dm = &g->dom;
+    if (dm->triclinic) {
+        double lam[3];
+        domain_x2lamda(g, x, lam);
+        for (int d = 0; d < 3; d++)
+            if (!(lam[d] >= 0.0 && lam[d] < 1.0))
+                return 0;
+        return 1;
+    }
     for (int d = 0; d < 3; d++)
         if (!(x[d] >= dm->lo[d] && x[d] < dm->hi[d]))
             return 0;

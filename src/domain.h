@@ -40,18 +40,45 @@ int domain_contact_periodic(const struct gravel *g, int d);
 /* Box volume (product of the three lengths). 0 before the box exists. */
 double domain_volume(const struct gravel *g);
 
+/* Triclinic geometry, LAMMPS's conventions (Domain::set_global_box):
+ * h = (Lx, Ly, Lz, yz, xz, xy) and its inverse (upper triangular); lamda
+ * (fractional) coordinates lamda = h_inv (x - lo), x = h lamda + lo, with
+ * LAMMPS's operation order (the bits matter). Valid for orthogonal boxes too
+ * (tilts 0). */
+void domain_h(const struct gravel *g, double h[6]);
+void domain_h_inv(const struct gravel *g, double hinv[6]);
+void domain_x2lamda(const struct gravel *g, const double x[3], double lam[3]);
+void domain_lamda2x(const struct gravel *g, const double lam[3], double x[3]);
+/* Errors for tilts that LAMMPS refuses: a non-zero tilt along a non-periodic
+ * dimension (xy needs y periodic, xz and yz z periodic), z tilts in 2d. */
+void domain_check_tilt(struct gravel *g);
+/* Per dimension, how much wider than a separation's length its component of
+ * u = L lamda can be: f_q = |row q of L h^-1| (1 when orthogonal). Cells of
+ * u hold every partner within cut in the neighboring cells when they are
+ * at least cut f_q wide (kernels/common.cl box_ufac, the same numbers). */
+void domain_ufac(const struct domain *d, double f[3]);
+/* The bounding box of a (tilted) box, LAMMPS's boxlo_bound / boxhi_bound:
+ * lo + min(0, xy, xz, xy + xz) in x, lo + min(0, yz) in y (hi with max). */
+void domain_bbox(const struct gravel *g, double lo[3], double hi[3]);
+/* "  orthogonal box = (...) to (...)" or "  triclinic box = ... with tilt
+ * (xy xz yz)" as LAMMPS prints it, after indent. */
+void domain_print_box(struct gravel *g, const char *indent);
+
 /* Wrap x into [lo, hi) in every periodic dimension, updating the image
- * counts (LAMMPS' Domain::remap). Non-periodic dimensions and non-finite
+ * counts (LAMMPS' Domain::remap; triclinic: the lamda coordinates wrap into
+ * [0, 1) and x is mapped back). Non-periodic dimensions and non-finite
  * coordinates are left alone. image may be NULL. */
 void domain_remap(const struct gravel *g, double x[3], int image[3]);
 
-/* Unwrapped position x + image * length (periodic dimensions only). */
+/* Unwrapped position x + image . (a, b, c) (periodic dimensions only). */
 void domain_unmap(const struct gravel *g, const double x[3], const int image[3], double out[3]);
 
-/* Shortest periodic image of a separation vector (minimum image convention). */
+/* Shortest periodic image of a separation vector (minimum image convention;
+ * triclinic: z, then y, then x, each image shifting the tilted components). */
 void domain_minimum_image(const struct gravel *g, double del[3]);
 
-/* 1 if x is inside the box as LAMMPS assigns atoms to it: lo <= x < hi. */
+/* 1 if x is inside the box as LAMMPS assigns atoms to it: lo <= x < hi
+ * (triclinic: 0 <= lamda < 1). */
 int domain_inside(const struct gravel *g, const double x[3]);
 
 /* Lattice <-> box units: with units lattice, a length along dimension d is

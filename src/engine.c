@@ -553,6 +553,7 @@ void eng_prepare(struct gravel *g)
     }
     add_source(g, names, texts, &n, "pair_loop.cl", "engine");
     add_source(g, names, texts, &n, "neighbor.cl", "engine");
+    add_source(g, names, texts, &n, "box_change.cl", "engine");
 
     char opts[1024];
     int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
@@ -571,6 +572,8 @@ void eng_prepare(struct gravel *g)
     for (int q = 0; q < 3; q++)
         if (domain_contact_periodic(g, q))
             len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
+    if (g->dom.triclinic)
+        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D TRICLINIC");
     if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
         len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
     for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)
@@ -585,6 +588,30 @@ void eng_prepare(struct gravel *g)
     if (e->ocl.program_key != before || !e->ocl.cache_hit)
         gr_print(g, "OpenCL program: %s (%s)\n",
                  e->ocl.cache_hit ? "program cache hit" : "compiled", opts);
+}
+
+const int *eng_tag_order(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    int n = e->a.n;
+    if (n + 1 > e->tag_cap) {
+        free(e->tag_seen);
+        free(e->tag_order);
+        e->tag_seen = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+        e->tag_order = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+        e->tag_cap = n + 1;
+        e->tag_n = -1;
+    }
+    int64_t *t = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
+    if (n > 0)
+        eng_read(g, e->a.tag, 0, (size_t)n * sizeof(cl_long), t);
+    if (n != e->tag_n || memcmp(t, e->tag_seen, (size_t)n * sizeof(int64_t))) {
+        memcpy(e->tag_seen, t, (size_t)n * sizeof(int64_t));
+        atoms_order_by_tag(e->tag_seen, n, e->tag_order);
+        e->tag_n = n;
+    }
+    free(t);
+    return e->tag_order;
 }
 
 void engine_destroy(struct gravel *g)
@@ -608,6 +635,10 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     if (e->virial)
         clReleaseMemObject(e->virial);
+    free(e->tag_seen);
+    free(e->tag_order);
+    if (e->hrate)
+        clReleaseMemObject(e->hrate);
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);

@@ -73,6 +73,20 @@ struct engine {
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_clear;
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/pressure.c) */
+    cl_kernel k_energy;         /* pair_energy of a potential (src/pair_energy.c) */
+    double epair_snap;          /* the pair energy taken before a box change moved the
+                                 * atoms: valid for step epair_snap_step only (-1: none) */
+    bigint epair_snap_step;
+    cl_kernel k_box_remap;      /* box_remap, for box changes in a run (src/box_change.c) */
+    cl_kernel k_box_flip;       /* box_image_flip, for box flips */
+    /* the virial taken before a box change moved the atoms (pressure.h):
+     * valid for step virial_snap_step only (-1: none) */
+    double virial_snap[6];
+    bigint virial_snap_step;
+    /* velocity remap of a deforming box (box_change_vremap): LAMMPS's
+     * h_rate (6 REAL) and the group it applies to (0: none) */
+    cl_mem hrate;
+    unsigned vgroup;
     cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
     int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
@@ -82,6 +96,10 @@ struct engine {
     cl_mem contact_mass;
     double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
+    /* eng_tag_order: the device tags last read and their order */
+    int64_t *tag_seen;
+    int *tag_order;
+    int tag_n, tag_cap;
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
     int nprof;
     char prof_name[48][40];
@@ -130,6 +148,12 @@ void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
 /* Bind the low position part as argument i when positions are split
  * (kernels with POS_LO_PARAM, their last argument); no-op otherwise. */
 void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i);
+
+/* During a run: ord[k] = the device index of the atom with the k-th
+ * smallest tag (reads the device tags; the order is recomputed only when
+ * they moved), so host sums over per-atom device values can run in tag
+ * order without run_sync_host. */
+const int *eng_tag_order(struct gravel *g);
 
 /* Run internals (engine.c): build the program for the active styles; upload
  * the host atoms; grow capacity; release the program's kernels. */

@@ -54,6 +54,17 @@ struct domain {
     char bnd[3][2];         /* boundary flag per dimension and face (lo, hi) */
     int periodic[3];
     double lo[3], hi[3];    /* current box */
+    int triclinic;          /* 1: a parallelepiped with tilt factors xy xz yz (LAMMPS's
+                             * h = (Lx, Ly, Lz, yz, xz, xy); edge vectors a = (Lx,0,0),
+                             * b = (xy,Ly,0), c = (xz,yz,Lz)); read_data's xy xz yz line,
+                             * change_box triclinic, region prism boxes */
+    double xy, xz, yz;      /* tilt factors (0 when orthogonal) */
+    /* box deformation rates of the current run, LAMMPS's h_rate (d/dt of
+     * Lx Ly Lz yz xz xy), and the group whose velocities are remapped when
+     * they cross a periodic face (fix deform remap v; 0: none); reset at
+     * each run start, set by the fixes' init (src/box_change.h) */
+    double h_rate[6];
+    unsigned vremap_group;
     double minlo[3], minhi[3]; /* 'm' boundaries: the box never shrinks inside these */
     double small[3];        /* shrink-wrap margin: 1e-4 x box length at create_box/read_data */
     struct lattice lat;

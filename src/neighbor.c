@@ -43,15 +43,18 @@ struct nbr {
     int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
-        excl_group;
+        excl_group, typecut;
     size_t cap_atoms, cap_cells;
     size_t rsz;
     int history, rotation;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
+    double cutpair;             /* largest cut-off of a pair (minimum image needs L >= 2 x) */
     double lmp_cutmax;          /* -compat lammps2021: LAMMPS's cutneighmax (its bins) */
     int nexg;
     int ago;
+    double corners_hold[8][3];  /* box corners at the last build */
+    int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
     /* neighbor multi: ncoll collections (ninterval of them by diameter
      * interval, else by type: type2coll), per collection its atom count at
@@ -106,7 +109,7 @@ void nbr_free(struct gravel *g)
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
                    &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
-                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group,
+                   &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->typecut,
                    &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         rel(m[i]);
@@ -122,6 +125,7 @@ void nbr_invalidate(struct gravel *g)
 }
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
+
 
 static size_t scan_chunks(int m, int *chunk)
 {
@@ -340,10 +344,21 @@ static void setup_multi(struct gravel *g, struct nbr *b)
                 b->mcount[k] = b->mcount[k] > 0 ? b->mcount[k] : 1;
         }
     /* a bound: the kernel's cell ranges must not lose a pair to rounding */
+    /* a potential's type-pair cut-offs: the largest between the two
+     * collections' types (every type for collection/interval) */
+    unsigned *tmask = gr_calloc(g, (size_t)nc, sizeof(unsigned));
+    for (int t = 0; t < nt; t++)
+        if (b->ninterval || t >= 32)
+            for (int k = 0; k < nc; k++)
+                tmask[k] = ~0u;
+        else
+            tmask[b->type2coll[t]] |= 1u << t;
     for (int a = 0; a < nc; a++)
         for (int c = 0; c < nc; c++)
             b->cutab[a * nc + c] =
-                (pair_reach(g, b->mrad[a] + b->mrad[c]) + ns->skin) * (1 + 1e-5);
+                (fmax(pair_reach(g, b->mrad[a] + b->mrad[c]),
+                      pair_type_cut_max(g, tmask[a], tmask[c])) + ns->skin) * (1 + 1e-5);
+    free(tmask);
     b->d_cutab = eng_alloc(g, (size_t)nc * nc * e->rsz, "multi collection cut-offs");
     eng_write_reals(g, b->d_cutab, (size_t)nc * nc, b->cutab);
     b->d_collcut = eng_alloc(g, (size_t)nc * e->rsz, "multi collection intervals");
@@ -464,13 +479,32 @@ void nbr_setup(struct gravel *g)
     if (b->nexg)
         eng_write(g, b->excl_group, 0, (size_t)b->nexg * 3 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
-    double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.radius[i] > rmax)
-            rmax = g->atoms.radius[i];
-    b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
+    double rmax = e->insert_rmax, r2nd = e->insert_rmax; /* atoms fixes may insert (fix pour) */
+    for (int i = 0; i < g->atoms.n; i++) {
+        double r = g->atoms.radius[i];
+        if (r > rmax) {
+            r2nd = rmax;
+            rmax = r;
+        } else if (r > r2nd) {
+            r2nd = r;
+        }
+    }
+    b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
+                     pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
+    double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
+    const struct pair *pp = g->styles.pair;
+    if (pp && pp->style->type_cut)
+        for (int a = 0; a < nt; a++)
+            for (int c = 0; c < nt; c++)
+                tc[a * nt + c] = pp->style->type_cut(pp, a + 1, c + 1);
+    rel(&b->typecut);
+    b->typecut = eng_alloc(g, (size_t)nt * nt * e->rsz, "type-pair cut-offs");
+    eng_write_reals(g, b->typecut, (size_t)nt * nt, tc);
+    free(tc);
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
+    /* the largest cut-off of a pair of two atoms: the two largest radii */
+    b->cutpair = fmax(pair_reach(g, rmax + r2nd) + g->neigh.skin, 0.5 * b->cutmax);
     b->lmp_cutmax = g->opt.lammps2021 ? lammps2021_cutneighmax(g, e->insert_rmax) : 0;
     setup_multi(g, b);
     b->ago = 0;
@@ -524,12 +558,69 @@ static void nonfinite_error(struct gravel *g, int i)
              cause);
 }
 
+/* The box corners (LAMMPS's Domain::box_corners order). */
+static void box_corners(const struct gravel *g, double c[8][3])
+{
+    for (int k = 0; k < 8; k++) {
+        double lam[3] = {(double)(k & 1), (double)((k >> 1) & 1), (double)((k >> 2) & 1)};
+        domain_lamda2x(g, lam, c[k]);
+    }
+}
+
+/* Displacement that triggers a rebuild: half the skin, less the two largest
+ * corner displacements of a box changed since the build (LAMMPS's
+ * check_distance: delta = 0.5 (skin - (delta1 + delta2)), at least 0). */
+static double trigger_distance(struct gravel *g, struct nbr *b)
+{
+    double trig = 0.5 * g->neigh.skin;
+    if (!b->box_moved)
+        return trig;
+    double c[8][3], d1 = 0, d2 = 0;
+    box_corners(g, c);
+    for (int k = 0; k < 8; k++) {
+        double dx = c[k][0] - b->corners_hold[k][0], dy = c[k][1] - b->corners_hold[k][1];
+        double dz = c[k][2] - b->corners_hold[k][2];
+        double dl = sqrt(dx * dx + dy * dy + dz * dz);
+        if (dl > d1)
+            d1 = dl;
+        else if (dl > d2)
+            d2 = dl;
+    }
+    trig = 0.5 * (g->neigh.skin - (d1 + d2));
+    return trig < 0 ? 0 : trig;
+}
+
+int nbr_arg_box(struct gravel *g, cl_kernel k, int a, const struct nbr_list *l)
+{
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, l->L[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, l->tilt[q]);
+    return a;
+}
+
+static void list_box(struct gravel *g, struct nbr_list *l)
+{
+    for (int q = 0; q < 3; q++)
+        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    l->tilt[0] = g->dom.xy;
+    l->tilt[1] = g->dom.xz;
+    l->tilt[2] = g->dom.yz;
+}
+
+void nbr_box_changed(struct gravel *g)
+{
+    struct nbr *b = get(g);
+    list_box(g, &b->list);
+    b->box_moved = 1;
+}
+
 int nbr_decide(struct gravel *g, int forced)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
     int n = e->a.n;
-    double trig = 0.5 * g->neigh.skin;
+    double trig = trigger_distance(g, b);
     reset_flags(g, b);
     cl_kernel k = b->k_check;
     eng_arg_int(g, k, 0, n);
@@ -545,8 +636,11 @@ int nbr_decide(struct gravel *g, int forced)
         eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, 13 + q, domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
+    eng_arg_real(g, k, 16, g->dom.xy);
+    eng_arg_real(g, k, 17, g->dom.xz);
+    eng_arg_real(g, k, 18, g->dom.yz);
     /* the fused initial_integrate ops (src/fused.h) run first */
-    int a = 16;
+    int a = 19;
     eng_arg_mem(g, k, a++, e->fused.ops);
     eng_arg_int(g, k, a++, e->fused.ninit);
     eng_arg_mem(g, k, a++, e->fused.prm);
@@ -557,6 +651,8 @@ int nbr_decide(struct gravel *g, int forced)
     eng_arg_mem(g, k, a++, e->a.radius);
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
     eng_arg_pos_lo(g, k, a);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
@@ -610,18 +706,26 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
         chunk = 1;
     int nch = (n + chunk - 1) / chunk;
     cl_kernel k = b->k_wrap;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_int(g, k, 1, chunk);
-    eng_arg_mem(g, k, 2, e->a.x);
-    eng_arg_mem(g, k, 3, e->a.image);
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_int(g, k, a++, chunk);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.v);
+    eng_arg_mem(g, k, a++, e->a.mask);
+    eng_arg_mem(g, k, a++, e->hrate);
+    eng_arg_uint(g, k, a++, e->vgroup);
+    eng_arg_mem(g, k, a++, e->a.image);
     for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, 4 + q, domain_contact_periodic(g, q));
-    for (int q = 0; q < 3; q++) {
-        eng_arg_coord(g, k, 7 + q, q, d->lo[q]);
-        eng_arg_coord(g, k, 10 + q, q, d->hi[q]);
-    }
-    eng_arg_mem(g, k, 13, b->ext);
-    eng_arg_pos_lo(g, k, 14);
+        eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, d->hi[q]);
+    eng_arg_real(g, k, a++, d->xy);
+    eng_arg_real(g, k, a++, d->xz);
+    eng_arg_real(g, k, a++, d->yz);
+    eng_arg_mem(g, k, a++, b->ext);
+    eng_arg_pos_lo(g, k, a);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -647,11 +751,13 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
  * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
 static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
+    double f[3];
+    domain_ufac(d, f);
     for (;;) {
         long total = 1;
         for (int q = 0; q < 3; q++) {
             double L = d->hi[q] - d->lo[q];
-            int m = (int)(L / cut);
+            int m = (int)(L / (cut * f[q]));
             if (m < 1)
                 m = 1;
             if (m > 1 << 20)
@@ -701,6 +807,8 @@ static void make_grids_multi(struct gravel *g, struct nbr *b)
 static void make_grid(struct gravel *g, struct nbr *b, int n)
 {
     struct domain *d = &g->dom;
+    double f[3];
+    domain_ufac(d, f);
     grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
     if (b->multi)
@@ -709,12 +817,14 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
         b->lo[q] = d->lo[q];
         b->hi[q] = d->hi[q];
         b->inv[q] = b->nc[q] / (d->hi[q] - d->lo[q]);
-        b->list.L[q] = domain_contact_periodic(g, q) ? d->hi[q] - d->lo[q] : 0.0;
-        if (domain_contact_periodic(g, q) && d->hi[q] - d->lo[q] < 2 * b->cutmax)
-            gr_error(g, "periodic box length %g in %c is less than twice the neighbor cut-off "
-                        "%g (2 x largest radius + skin)", d->hi[q] - d->lo[q], "xyz"[q],
-                     b->cutmax);
+        if (domain_contact_periodic(g, q) && (d->hi[q] - d->lo[q]) / f[q] < 2 * b->cutpair)
+            gr_error(g, "periodic box %s %g in %c is less than twice the neighbor cut-off "
+                        "%g (the two largest radii + skin)", d->triclinic ? "width" : "length",
+                     (d->hi[q] - d->lo[q]) / f[q], "xyz"[q], b->cutpair);
     }
+    list_box(g, &b->list);
+    box_corners(g, b->corners_hold);
+    b->box_moved = 0;
 }
 
 /* The full list in partner-tag order; cells list their atoms in b->perm
@@ -755,8 +865,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         if (!b->multi)
             for (int q = 0; q < 3; q++)
                 eng_arg_real(g, k, a++, b->inv[q]);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, a++, b->list.L[q]);
+        a = nbr_arg_box(g, k, a, &b->list);
         eng_arg_real(g, k, a++, g->neigh.skin);
         eng_arg_int(g, k, a++, b->list.maxn);
         eng_arg_mem(g, k, a++, b->list.nlist);
@@ -768,6 +877,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         eng_arg_int(g, k, a++, b->nexg);
         eng_arg_mem(g, k, a++, b->excl_group);
         eng_arg_mem(g, k, a++, e->a.mol ? e->a.mol : e->a.tag);
+        eng_arg_mem(g, k, a++, b->typecut);
         eng_launch(g, k, (size_t)n);
         cl_int fl[4];
         read_flags(g, b, fl);
@@ -867,8 +977,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     eng_arg_mem(g, k, a++, l->shear);
     eng_arg_mem(g, k, a++, e->a.x);
     eng_arg_mem(g, k, a++, e->a.radius);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, a++, l->L[q]);
+    a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->a.tag);
     a = lammps2021_bins(g, b, k, a);
     eng_launch(g, k, (size_t)total);
@@ -973,6 +1082,8 @@ static void bin_multi(struct gravel *g, struct nbr *b, int n)
         eng_arg_coord(g, k, a++, q, b->lo[q]);
     for (int q = 0; q < 3; q++)
         eng_arg_coord(g, k, a++, q, b->hi[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, b->list.tilt[q]);
     eng_arg_mem(g, k, a++, b->cellof);
     eng_arg_mem(g, k, a++, b->counts);
     eng_arg_mem(g, k, a++, b->flags);
@@ -1016,9 +1127,10 @@ void nbr_rebuild(struct gravel *g)
             eng_arg_coord(g, k, 5 + q, q, b->lo[q]);
             eng_arg_coord(g, k, 8 + q, q, b->hi[q]);
             eng_arg_real(g, k, 11 + q, b->inv[q]);
+            eng_arg_real(g, k, 14 + q, b->list.tilt[q]);
         }
-        eng_arg_mem(g, k, 14, b->cellof);
-        eng_arg_mem(g, k, 15, b->counts);
+        eng_arg_mem(g, k, 17, b->cellof);
+        eng_arg_mem(g, k, 18, b->counts);
         eng_launch(g, k, (size_t)n);
     }
     nbr_scan(g, b->counts, b->start, m);
@@ -1110,6 +1222,9 @@ double nbr_max_overlap(struct gravel *g)
     int n = e->a.n;
     if (!b->built || n == 0)
         return 0;
+    /* a potential (pair colloid) has no bodies in contact: radii mean nothing */
+    if (g->styles.pair && g->styles.pair->style->energy)
+        return 0;
     int chunk = (n + NCHUNK_MAX - 1) / NCHUNK_MAX;
     int nch = (n + chunk - 1) / chunk;
     cl_kernel k = b->k_overlap;
@@ -1120,9 +1235,8 @@ double nbr_max_overlap(struct gravel *g)
     eng_arg_mem(g, k, 4, b->list.nlist);
     eng_arg_mem(g, k, 5, b->list.ncount);
     eng_arg_int(g, k, 6, b->list.maxn);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 7 + q, b->list.L[q]);
-    eng_arg_mem(g, k, 10, b->ext);
+    nbr_arg_box(g, k, 7, &b->list);
+    eng_arg_mem(g, k, 13, b->ext);
     eng_launch(g, k, (size_t)nch);
     double v[NCHUNK_MAX];
     eng_read_reals(g, b->ext, (size_t)nch, v);
@@ -1258,6 +1372,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     ioff[n] = (int)nin;
     int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
     int *cslot = gr_malloc(g, (2 * total + 1) * sizeof(int));
+    for (size_t c = 0; c < 2 * total; c++)
+        cslot[c] = -1;
     double *sh = e->history ? gr_calloc(g, (size_t)hw * total + 1, sizeof(double)) : NULL;
     int asym = 0;
     for (int i = 0; i < n && !asym; i++) {
@@ -1285,6 +1401,9 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
             cslot[2 * (coff[j] + at - jfirst) + 1] = ioff[i] + k;
         }
     }
+    /* an owned contact whose partner's row lacks the owner is asymmetric too */
+    for (size_t c = 0; c < total && !asym; c++)
+        asym = cslot[2 * c + 1] < 0;
     if (!asym) {
         alloc_list(g, b, maxn);
         alloc_contacts(g, b, total);
@@ -1317,8 +1436,9 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     free(sh);
     if (asym)
         return 0;
-    for (int q = 0; q < 3; q++)
-        l->L[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    list_box(g, l);
+    box_corners(g, b->corners_hold);
+    b->box_moved = 0;
     b->ago = s->ago;
     b->built = 1;
     b->old_valid = e->history;

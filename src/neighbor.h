@@ -24,7 +24,17 @@ struct nbr_list {
     cl_mem coff, ci, cj, cslot, shear, recf, rect;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
+    double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */
 };
+
+/* Kernel arguments a .. a + 5: the list's periodic lengths Lx Ly Lz, then
+ * the tilts xy xz yz (kernels/common.cl, "Triclinic boxes"). Returns a + 6. */
+int nbr_arg_box(struct gravel *g, cl_kernel k, int a, const struct nbr_list *l);
+/* The box changed during a run (src/box_change.c): refresh the list's
+ * periodic lengths and tilts from g->dom, so that minimum images use the
+ * new box, and make the next nbr_decide count the box's corner motion
+ * since the last build (LAMMPS's Neighbor::check_distance box check). */
+void nbr_box_changed(struct gravel *g);
 
 /* Run start: kernels and work buffers for the current program and atoms. */
 void nbr_setup(struct gravel *g);

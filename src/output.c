@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "compute.h"
+#include "domain.h"
 #include "dump.h"
 #include "error.h"
 #include "fix.h"
@@ -94,9 +95,11 @@ static double contact_energy(struct gravel *g)
     if (!(rmax > 0.0))
         return 0.0;
     size_t ncell = 1;
+    double f[3]; /* a tilted box: cells of L lamda, f wider (domain_ufac) */
+    domain_ufac(dm, f);
     for (int d = 0; d < 3; d++) {
         len[d] = dm->hi[d] - dm->lo[d];
-        double n = floor(len[d] / (2.0 * rmax));
+        double n = floor(len[d] / (2.0 * rmax * f[d]));
         nc[d] = n < 1.0 ? 1 : n > 64.0 ? 64 : (int)n;
         if (dm->periodic[d] && nc[d] < 3)
             nc[d] = 1;          /* offsets -1..1 would visit one cell twice */
@@ -108,8 +111,11 @@ static double contact_energy(struct gravel *g)
         head[c] = -1;
     for (int i = 0; i < a->n; i++) {
         int c = 0;
+        double lam[3];
+        domain_x2lamda(g, a->x + 3 * i, lam);
         for (int d = 2; d >= 0; d--) {
-            int k = (int)floor((a->x[3 * i + d] - dm->lo[d]) / len[d] * nc[d]);
+            int k = (int)floor((dm->triclinic ? lam[d] : (a->x[3 * i + d] - dm->lo[d]) / len[d]) *
+                               nc[d]);
             k = k < 0 ? 0 : k >= nc[d] ? nc[d] - 1 : k;
             c = c * nc[d] + k;
         }
@@ -140,10 +146,14 @@ static double contact_energy(struct gravel *g)
                     for (int j = head[(k[2] * nc[1] + k[1]) * nc[0] + k[0]]; j >= 0; j = next[j]) {
                         if (j <= i)
                             continue;
-                        double rsq = 0.0;
+                        double rsq = 0.0, del[3];
+                        for (int d = 0; d < 3; d++)
+                            del[d] = a->x[3 * i + d] - a->x[3 * j + d];
+                        if (dm->triclinic)
+                            domain_minimum_image(g, del);
                         for (int d = 0; d < 3; d++) {
-                            double dx = a->x[3 * i + d] - a->x[3 * j + d];
-                            if (dm->periodic[d])
+                            double dx = del[d];
+                            if (dm->periodic[d] && !dm->triclinic)
                                 dx -= len[d] * nearbyint(dx / len[d]);
                             rsq += dx * dx;
                         }

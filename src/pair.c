@@ -241,6 +241,9 @@ static void modify_one(struct gravel *g, struct pair *p, int argc, char **argv)
             } else {
                 p->mix_arithmetic = arith;
             }
+        } else if (!strcmp(k, "shift") && p->style->energy) {
+            arg_need(g, argc, i, 1, k);
+            p->shift = arg_yesno(g, argv[++i], k);
         } else if (!strcmp(k, "shift") || !strcmp(k, "tail")) {
             arg_need(g, argc, i, 1, k);
             if (arg_yesno(g, argv[++i], k))
@@ -391,6 +394,28 @@ double pair_reach(const struct gravel *g, double radsum)
     return reach;
 }
 
+double pair_type_cut_max(const struct gravel *g, unsigned imask, unsigned jmask)
+{
+    const struct pair *p = g->styles.pair;
+    double m = 0.0;
+    if (!p)
+        return m;
+    const struct pair *t[PAIR_MAXTERMS];
+    int n = terms_of(p, t), nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    for (int k = 0; k < n; k++)
+        if (t[k]->style->type_cut)
+            for (int a = 1; a <= nt; a++)
+                for (int b = 1; b <= nt; b++) {
+                    if (a <= 32 && !(imask >> (a - 1) & 1u))
+                        continue;
+                    if (b <= 32 && !(jmask >> (b - 1) & 1u))
+                        continue;
+                    double c = t[k]->style->type_cut(t[k], a, b);
+                    m = c > m ? c : m;
+                }
+    return m;
+}
+
 const char *pair_source(const struct pair *p, int k)
 {
     if (p->style->source_n)
@@ -403,19 +428,23 @@ int pair_cohesion_defines(const struct pair *p, char *buf, size_t len)
     const struct pair *t[PAIR_MAXTERMS];
     int n = terms_of(p, t);
     double a = 0, b = 0;
-    int any = 0;
-    for (int k = 0; k < n; k++)
+    int any = 0, typecut = 0;
+    for (int k = 0; k < n; k++) {
+        if (beyond(t[k]))
+            any = 1;
+        if (t[k]->style->type_cut)
+            typecut = 1;
         if (beyond(t[k]) && t[k]->style->reach) {
             double a0 = t[k]->style->reach(t[k], 0.0);
             double b0 = t[k]->style->reach(t[k], 1.0) - a0;
             a = a0 > a ? a0 : a;
             b = b0 > b ? b0 : b;
-            any = 1;
         }
+    }
     if (!any)
         return 0;
-    return snprintf(buf, len, " -D HAS_COHESION -D COH_REACH_A=%.17g -D COH_REACH_B=%.17g", a,
-                    b);
+    return snprintf(buf, len, " -D HAS_COHESION -D COH_REACH_A=%.17g -D COH_REACH_B=%.17g%s", a,
+                    b, typecut ? " -D PAIR_TYPECUT" : "");
 }
 
 int pair_defines(const struct pair *p, char *buf, size_t len)
@@ -423,6 +452,8 @@ int pair_defines(const struct pair *p, char *buf, size_t len)
     if (p->style->defines)
         return p->style->defines(p, buf, len);
     int n = snprintf(buf, len, " -D PAIR_EVAL=%s", p->style->eval);
+    if (p->style->energy && n >= 0 && (size_t)n < len)
+        n += snprintf(buf + n, len - (size_t)n, " -D PAIR_ENERGY=%s", p->style->energy);
     if (n >= 0 && (size_t)n < len)
         n += pair_cohesion_defines(p, buf + n, len - (size_t)n);
     return n;

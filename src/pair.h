@@ -85,6 +85,15 @@ struct pair_style {
     double (*lammps2021_cut)(const struct pair *p, int i, int j, double ri, double rj);
     /* Release p->data. */
     void (*destroy)(struct pair *p);
+    /* A potential (pair colloid): the kernel function returning the pair
+     * energy REAL f(REAL rsq, __global const REAL *param), 0 at and beyond
+     * the cut-off (thermo epair, pe, etotal: src/pair_energy.c). NULL: the
+     * style has no potential energy (granular contacts). */
+    const char *energy;
+    /* Cut-off of the type pair (a potential with per-type cut-offs, pair
+     * colloid): the neighbor list then holds pairs within it plus the skin,
+     * whatever the radii (after init). NULL: the radii decide. */
+    double (*type_cut)(const struct pair *p, int itype, int jtype);
 };
 
 struct pair {
@@ -96,6 +105,7 @@ struct pair {
                                  * coeff_set alone then says "all") */
     int setflag_nt;
     int mix_arithmetic;         /* pair_modify mix arithmetic (styles that mix) */
+    int shift;                  /* pair_modify shift yes (styles with an energy) */
     void *data;                 /* style-owned (per-type tables, composed terms) */
 };
 
@@ -125,6 +135,9 @@ int pair_has_cohesion(const struct pair *p);
 /* Neighbor cut-off without skin for a pair of radius sum `radsum`: radsum
  * unless a cohesion term reaches farther. */
 double pair_reach(const struct gravel *g, double radsum);
+/* The largest type-pair cut-off of the pair style(s) between types of the
+ * masks (bit t-1 = type t; ~0u: every type), 0 when none has type_cut. */
+double pair_type_cut_max(const struct gravel *g, unsigned imask, unsigned jmask);
 /* k-th kernel source of the pair style (NULL past the last). */
 const char *pair_source(const struct pair *p, int k);
 /* " -D HAS_COHESION -D COH_REACH_A=.. -D COH_REACH_B=.." when a term acts

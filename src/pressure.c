@@ -9,24 +9,37 @@
 #include "neighbor.h"
 #include "temperature.h"
 
-void pressure_virial(struct gravel *g, double w[3])
+cl_mem pressure_scratch(struct gravel *g)
 {
-    w[0] = w[1] = w[2] = 0.0;
     struct engine *e = g->eng;
-    if (!e || !e->active || !e->k_pair || !e->k_virial)
-        return;
-    const struct nbr_list *l = nbr_list(g);
-    int n = e->a.n;
-    if (n <= 0)
-        return;
-    if (n > e->virial_cap || !e->virial) {
+    if (e->a.n > e->virial_cap || !e->virial) {
         if (e->virial)
             clReleaseMemObject(e->virial);
         e->virial = NULL;
         e->virial_cap = 0;
-        e->virial = eng_alloc(g, (size_t)e->cap * 3 * e->rsz, "per-particle virial");
+        e->virial = eng_alloc(g, (size_t)e->cap * 6 * e->rsz, "per-particle virial");
         e->virial_cap = e->cap;
     }
+    return e->virial;
+}
+
+void pressure_virial(struct gravel *g, double w[6])
+{
+    for (int d = 0; d < 6; d++)
+        w[d] = 0.0;
+    struct engine *e = g->eng;
+    if (!e || !e->active || !e->k_pair || !e->k_virial)
+        return;
+    if (e->virial_snap_step == g->step) {
+        for (int d = 0; d < 6; d++)
+            w[d] = e->virial_snap[d];
+        return;
+    }
+    const struct nbr_list *l = nbr_list(g);
+    int n = e->a.n;
+    if (n <= 0)
+        return;
+    pressure_scratch(g);
     cl_kernel k = e->k_virial;
     int a = 0;
     eng_arg_int(g, k, a++, n);
@@ -35,18 +48,15 @@ void pressure_virial(struct gravel *g, double w[3])
     eng_arg_mem(g, k, a++, l->ioff);
     eng_arg_mem(g, k, a++, l->recf);
     eng_arg_mem(g, k, a++, e->a.x);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, a++, l->L[q]);
+    a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->virial);
     eng_launch(g, k, (size_t)n);
-    double *wi = gr_malloc(g, (size_t)n * 3 * sizeof(double));
-    eng_read_reals(g, e->virial, 3 * (size_t)n, wi);
-    /* host index = device index after run_sync_host: sum in tag order */
-    run_sync_host(g);
-    const int *order = atoms_tag_order(g);
+    double *wi = gr_malloc(g, (size_t)n * 6 * sizeof(double));
+    eng_read_reals(g, e->virial, 6 * (size_t)n, wi);
+    const int *order = eng_tag_order(g); /* sum in tag order */
     for (int k2 = 0; k2 < n; k2++)
-        for (int d = 0; d < 3; d++)
-            w[d] += wi[3 * order[k2] + d];
+        for (int d = 0; d < 6; d++)
+            w[d] += wi[6 * order[k2] + d];
     free(wi);
 }
 
@@ -54,12 +64,10 @@ double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int vi
 {
     const struct domain *d = &g->dom;
     int dim = d->dimension;
-    double w[3] = {0, 0, 0};
+    double w[6] = {0, 0, 0, 0, 0, 0};
     if (virialflag)
         pressure_virial(g, w);
-    double vol = (d->hi[0] - d->lo[0]) * (d->hi[1] - d->lo[1]);
-    if (dim == 3)
-        vol *= d->hi[2] - d->lo[2];
+    double vol = pressure_volume(g);
     double ke = 0.0;
     if (keflag) {
         double temp = temp_scalar(g, t);
@@ -68,6 +76,42 @@ double pressure_parts(struct gravel *g, struct temp_state *t, int keflag, int vi
     double nktv2p = 1.0;
     double virial = dim == 3 ? w[0] + w[1] + w[2] : w[0] + w[1];
     return (ke + virial) / dim * (1.0 / vol) * nktv2p;
+}
+
+void pressure_virial_snapshot(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active || e->virial_snap_step == g->step)
+        return;
+    double w[6];
+    pressure_virial(g, w);
+    for (int d = 0; d < 6; d++)
+        e->virial_snap[d] = w[d];
+    e->virial_snap_step = g->step;
+}
+
+double pressure_volume(const struct gravel *g)
+{
+    const struct domain *d = &g->dom;
+    double vol = (d->hi[0] - d->lo[0]) * (d->hi[1] - d->lo[1]);
+    if (d->dimension == 3)
+        vol *= d->hi[2] - d->lo[2];
+    return vol;
+}
+
+void pressure_tensor(struct gravel *g, struct temp_state *t, int keflag, int virialflag,
+                     double out[6])
+{
+    double w[6] = {0, 0, 0, 0, 0, 0}, ke[6] = {0, 0, 0, 0, 0, 0};
+    if (virialflag)
+        pressure_virial(g, w);
+    if (keflag)
+        temp_vector(g, t, ke);
+    double inv = 1.0 / pressure_volume(g), nktv2p = 1.0;
+    for (int d = 0; d < 6; d++)
+        out[d] = (ke[d] + w[d]) * inv * nktv2p;
+    if (g->dom.dimension == 2)
+        out[2] = out[4] = out[5] = 0.0;
 }
 
 double pressure_scalar(struct gravel *g, struct temp_state *t)

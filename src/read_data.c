@@ -4,7 +4,8 @@
  *
  * Layout: a first (comment) line; header lines "N atoms", "N atom types",
  * "lo hi xlo xhi" (and y, z; default -0.5 0.5); zero counts of bonds, angles
- * ... are accepted, non-zero ones and triclinic boxes are errors. Then
+ * ... are accepted, non-zero ones are errors; an "xy xz yz" line makes the
+ * box triclinic (as LAMMPS, even with zero tilts). Then
  * sections, each a keyword line, blank lines, and exactly the expected number
  * of lines: "Atoms" (optionally "Atoms # sphere", or "# granular" as
  * LIGGGHTS writes): id type diameter density x y z [ix iy iz], N atoms lines; "Velocities": id vx vy vz wx wy wz, N
@@ -264,7 +265,8 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
             }
         domain_remap(g, x, img);
         for (int d = 0; d < 3; d++)
-            if (!(x[d] >= g->dom.lo[d] && x[d] < g->dom.hi[d]))
+            if (g->dom.triclinic ? !domain_inside(g, x)
+                                 : !(x[d] >= g->dom.lo[d] && x[d] < g->dom.hi[d]))
                 gr_error(g, "%s:%ld: atom %lld is outside the box in %c (%g not in [%g, %g))",
                          r->path, r->lineno, (long long)tag, "xyz"[d], x[d], g->dom.lo[d],
                          g->dom.hi[d]);
@@ -341,7 +343,8 @@ static void read_file(struct rd *r, const double shift[3])
     struct gravel *g = r->g;
     bigint natoms = -1;
     int64_t ntypes = -1;
-    double lo[3] = {-0.5, -0.5, -0.5}, hi[3] = {0.5, 0.5, 0.5};
+    double lo[3] = {-0.5, -0.5, -0.5}, hi[3] = {0.5, 0.5, 0.5}, tilt[3] = {0, 0, 0};
+    int triclinic = 0;
     if (!rd_next(r, NULL))
         gr_error(g, "%s: the data file is empty", r->path);
     /* header */
@@ -371,7 +374,9 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: box bounds must satisfy %s < %s, got %s %s", r->path,
                          r->lineno, r->w[2], r->w[3], r->w[0], r->w[1]);
         } else if (words_are(r, 3, "xy", "xz", "yz")) {
-            gr_error(g, "%s:%ld: triclinic boxes are not supported", r->path, r->lineno);
+            for (int q = 0; q < 3; q++)
+                tilt[q] = rd_num(r, r->w[q], "tilt factor");
+            triclinic = 1;
         } else if (r->nw >= 2 && zero_count_keyword(r)) {
             if (rd_int(r, r->w[0], r->w[1]) != 0)
                 gr_error(g, "%s:%ld: atom_style sphere has no %s; the count must be 0", r->path,
@@ -392,6 +397,11 @@ static void read_file(struct rd *r, const double shift[3])
         g->dom.lo[d] = lo[d];
         g->dom.hi[d] = hi[d];
     }
+    g->dom.triclinic = triclinic;
+    g->dom.xy = tilt[0];
+    g->dom.xz = tilt[1];
+    g->dom.yz = tilt[2];
+    domain_check_tilt(g);
     domain_set_initial_box(g);
     if (ntypes + r->extra_types > 1000000)
         gr_error(g, "%s: atom types plus extra/atom/types exceed 1000000", r->path);
@@ -523,8 +533,7 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     free(r.line);
     free(r.stag);
     free(r.sidx);
-    gr_print(g, "Reading data file ...\n  orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n"
-                "  %d atoms\n",
-             g->dom.lo[0], g->dom.lo[1], g->dom.lo[2], g->dom.hi[0], g->dom.hi[1],
-             g->dom.hi[2], g->atoms.n);
+    gr_print(g, "Reading data file ...\n");
+    domain_print_box(g, "  ");
+    gr_print(g, "  %d atoms\n", g->atoms.n);
 }

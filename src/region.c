@@ -170,9 +170,8 @@ struct region *region_get(struct gravel *g, const char *id)
 int region_box_bounds(struct gravel *g, const struct region *r, double lo[3], double hi[3])
 {
     domain_require_box(g);
+    domain_bbox(g, lo, hi); /* a tilted box: its bounding box, as LAMMPS */
     for (int d = 0; d < 3; d++) {
-        lo[d] = g->dom.lo[d];
-        hi[d] = g->dom.hi[d];
         if (r->bbox) {
             lo[d] = fmax(lo[d], r->bbox_lo[d]);
             hi[d] = fmin(hi[d], r->bbox_hi[d]);
@@ -194,7 +193,9 @@ double region_parse_bound(struct gravel *g, const char *s, int dim, int is_hi, d
     if (!strcmp(s, "EDGE")) {
         if (!g->dom.box_exists)
             gr_error(g, "cannot use EDGE for %s before the box exists", what);
-        return is_hi ? g->dom.hi[dim] : g->dom.lo[dim];
+        double blo[3], bhi[3]; /* a tilted box: the bounding box, as LAMMPS */
+        domain_bbox(g, blo, bhi);
+        return is_hi ? bhi[dim] : blo[dim];
     }
     return scale * arg_double(g, s, what);
 }

@@ -452,6 +452,10 @@ static void build_payload(struct gravel *g, struct wbuf *w)
     for (int b = 0; b < 8; b++)
         for (int q = 0; q < 3; q++)
             put_f64(g, w, l->basis[b][q]);
+    put_i32(g, w, d->triclinic);
+    put_f64(g, w, d->xy);
+    put_f64(g, w, d->xz);
+    put_f64(g, w, d->yz);
     sect_end(w, at);
 
     at = sect_begin(g, w, S_NEIGH);
@@ -725,8 +729,16 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
         for (int b = 0; b < 8; b++)
             for (int q = 0; q < 3; q++)
                 l->basis[b][q] = get_f64(r);
+        d->triclinic = get_i32(r);
+        d->xy = get_f64(r);
+        d->xz = get_f64(r);
+        d->yz = get_f64(r);
         if (r->bad)
             break;
+        if ((d->triclinic != 0 && d->triclinic != 1) || !isfinite(d->xy) || !isfinite(d->xz) ||
+            !isfinite(d->yz) || (!d->triclinic && (d->xy != 0 || d->xz != 0 || d->yz != 0)))
+            BAD("invalid triclinic flag %d or tilt factors %g %g %g", d->triclinic, d->xy,
+                d->xz, d->yz);
         if (d->units != UNITS_LJ && d->units != UNITS_SI && d->units != UNITS_CGS)
             BAD("invalid units code %d", (int)d->units);
         if (d->dimension != 2 && d->dimension != 3)
@@ -1335,7 +1347,8 @@ static int list_diff(struct gravel *g, const struct image *im, char *why, size_t
     if (neigh_diff(g, &g->neigh, &im->neigh, why, len))
         return 1;
     if (memcmp(g->dom.lo, im->dom.lo, sizeof g->dom.lo) ||
-        memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi))
+        memcmp(g->dom.hi, im->dom.hi, sizeof g->dom.hi) || g->dom.triclinic != im->dom.triclinic ||
+        g->dom.xy != im->dom.xy || g->dom.xz != im->dom.xz || g->dom.yz != im->dom.yz)
         return snprintf(why, len, "box bounds") > 0;
     if (e->single != im->single)
         return snprintf(why, len, "%s precision (file: %s)", e->single ? "single" : "double",

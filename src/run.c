@@ -50,7 +50,14 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
-    e->k_pair = e->k_virial = NULL;
+    e->k_box_remap = eng_kernel(g, "box_remap");
+    e->k_box_flip = eng_kernel(g, "box_image_flip");
+    e->virial_snap_step = e->epair_snap_step = -1;
+    if (!e->hrate)
+        e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");
+    eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
+    e->vgroup = g->dom.vremap_group;
+    e->k_pair = e->k_virial = e->k_energy = NULL;
     if (!p)
         return;
     if (!p->coeff_set)
@@ -70,6 +77,8 @@ static void pair_init(struct gravel *g)
     free(par);
     e->k_pair = eng_kernel(g, "pair_contacts");
     e->k_virial = eng_kernel(g, "pair_virial");
+    if (p->style->energy)
+        e->k_energy = eng_kernel(g, "pair_energy");
 }
 
 /* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
@@ -188,16 +197,19 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_uint(g, k, i++, freezebit);
         eng_arg_real(g, k, i++, g->dt);
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
-        for (int q = 0; q < 3; q++)
-            eng_arg_real(g, k, i++, l->L[q]);
+        i = nbr_arg_box(g, k, i, l);
         eng_arg_mem(g, k, i++, l->recf);
         eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         acc_reserve(g);
         eng_arg_mem(g, k, i++, acc_pair_rec(g));
         eng_arg_mem(g, k, i++, acc_pair_step(g));
         eng_arg_int(g, k, i++, acc_step(g));
+        eng_arg_mem(g, k, i++, e->hrate);
+        eng_arg_uint(g, k, i++, e->vgroup);
         eng_arg_pos_lo(g, k, i);
         eng_launch(g, k, (size_t)l->ncontact);
+        /* new forces: a virial or energy taken before is stale */
+        e->virial_snap_step = e->epair_snap_step = -1;
         k = e->k_gather;
         i = 0;
         eng_arg_int(g, k, i++, a->n);
@@ -324,6 +336,10 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
     e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
+    g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
+    g->laststep = g->step + nsteps;
+    memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
+    g->dom.vremap_group = 0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)

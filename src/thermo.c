@@ -10,6 +10,7 @@
  * Format precedence per column: `format N` > `format int|float` >
  * the word of `format line` > default, as LAMMPS 2021. */
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +22,7 @@
 #include "error.h"
 #include "fix.h"
 #include "output.h"
+#include "pair_energy.h"
 #include "pressure.h"
 #include "run.h"
 #include "styles.h"
@@ -33,6 +35,8 @@ enum kw_id {
     KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
+    KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
+    KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     KW_COUNT
 };
@@ -132,8 +136,26 @@ static const struct {
     [KW_ZHI] = {"zhi", "Zhi", V_FLOAT},         [KW_TEMP] = {"temp", "Temp", V_FLOAT},
     [KW_EPAIR] = {"epair", "E_pair", V_FLOAT},  [KW_EMOL] = {"emol", "E_mol", V_FLOAT},
     [KW_CPUREMAIN] = {"cpuremain", "CPULeft", V_FLOAT}, [KW_PRESS] = {"press", "Press", V_FLOAT},
+    [KW_PXX] = {"pxx", "Pxx", V_FLOAT},         [KW_PYY] = {"pyy", "Pyy", V_FLOAT},
+    [KW_PZZ] = {"pzz", "Pzz", V_FLOAT},         [KW_PXY] = {"pxy", "Pxy", V_FLOAT},
+    [KW_PXZ] = {"pxz", "Pxz", V_FLOAT},         [KW_PYZ] = {"pyz", "Pyz", V_FLOAT},
+    [KW_XY] = {"xy", "Xy", V_FLOAT},            [KW_XZ] = {"xz", "Xz", V_FLOAT},
+    [KW_YZ] = {"yz", "Yz", V_FLOAT},
+    [KW_CELLA] = {"cella", "Cella", V_FLOAT},   [KW_CELLB] = {"cellb", "Cellb", V_FLOAT},
+    [KW_CELLC] = {"cellc", "Cellc", V_FLOAT},
+    [KW_CELLALPHA] = {"cellalpha", "CellAlpha", V_FLOAT},
+    [KW_CELLBETA] = {"cellbeta", "CellBeta", V_FLOAT},
+    [KW_CELLGAMMA] = {"cellgamma", "CellGamma", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
 };
+
+/* thermo keywords that read the host arrays (the temperature or the kinetic
+ * tensor) */
+static int needs_host(int k)
+{
+    return k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS ||
+           (k >= KW_PXX && k <= KW_PYZ);
+}
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
  * granular flows the atom count (pours, lost atoms), kinetic energy and
@@ -721,22 +743,61 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         st->last_sp_step = g->step;
         return v;
     }
-    case KW_KE:
+    case KW_KE: {
+        double ke = kinetic_energy(g);
+        return norm ? ke / natoms : ke;
+    }
     case KW_ETOTAL: {
-        /* pe: granular pair styles and walls have no potential energy; fixes
-         * with fix_modify energy yes (gravity) add theirs, as LAMMPS */
-        double e = kinetic_energy(g) + (k == KW_ETOTAL ? fix_energy_sum(g) : 0.0);
-        return norm ? e / natoms : e;
+        /* pe: a potential's pair energy (granular contacts and walls have none)
+         * and the fixes with fix_modify energy yes (gravity), as LAMMPS */
+        double et = kinetic_energy(g) + pair_energy(g) + fix_energy_sum(g);
+        return norm ? et / natoms : et;
     }
     case KW_PE: {
-        double e = fix_energy_sum(g);
-        return norm ? e / natoms : e;
+        double pe = pair_energy(g) + fix_energy_sum(g);
+        return norm ? pe / natoms : pe;
     }
-    case KW_EPAIR:
+    case KW_EPAIR: {
+        double pe = pair_energy(g);
+        return norm ? pe / natoms : pe;
+    }
     case KW_EMOL: return 0.0;
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
     case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);
     case KW_PRESS: return pressure_scalar(g, temp_thermo(g)); /* intensive */
+    case KW_PXX:
+    case KW_PYY:
+    case KW_PZZ:
+    case KW_PXY:
+    case KW_PXZ:
+    case KW_PYZ: { /* intensive */
+        double p[6];
+        pressure_tensor(g, temp_thermo(g), 1, 1, p);
+        return p[k - KW_PXX];
+    }
+    case KW_CELLA:
+    case KW_CELLB:
+    case KW_CELLC:
+    case KW_CELLALPHA:
+    case KW_CELLBETA:
+    case KW_CELLGAMMA: { /* LAMMPS's cell lengths and angles (degrees) */
+        const struct domain *d = &g->dom;
+        double lx = d->hi[0] - d->lo[0], ly = d->hi[1] - d->lo[1], lz = d->hi[2] - d->lo[2];
+        double b = sqrt(ly * ly + d->xy * d->xy);
+        double c = sqrt(lz * lz + d->xz * d->xz + d->yz * d->yz);
+        double deg = 180.0 / M_PI;
+        switch (k) {
+        case KW_CELLA: return lx;
+        case KW_CELLB: return b;
+        case KW_CELLC: return c;
+        case KW_CELLALPHA: return acos((d->xy * d->xz + ly * d->yz) / (b * c)) * deg;
+        case KW_CELLBETA: return acos(d->xz / c) * deg;
+        default: return acos(d->xy / b) * deg;
+        }
+    }
+    case KW_XY: return g->dom.xy;
+    case KW_XZ: return g->dom.xz;
+    case KW_YZ: return g->dom.yz;
     case KW_VOL: return volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
@@ -758,7 +819,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS)
+        if (needs_host(k))
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
@@ -835,10 +896,8 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_PE ||
-            st->kind[i] == KW_TEMP || st->kind[i] == KW_PRESS ||
-            st->kind[i] == KW_THERMO_TEMP || st->kind[i] == KIND_COMPUTE ||
-            st->kind[i] == KIND_FIX) {
+        if ((st->kind[i] >= 0 && needs_host(st->kind[i])) || st->kind[i] == KW_THERMO_TEMP ||
+            st->kind[i] == KIND_COMPUTE || st->kind[i] == KIND_FIX) {
             run_sync_host(g);
             break;
         }

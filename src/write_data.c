@@ -30,6 +30,8 @@ static void write_all(struct gravel *g, FILE *fp, const int *order)
     fprintf(fp, "%d atoms\n%d atom types\n\n", a->n, a->ntypes);
     for (int d = 0; d < 3; d++)
         fprintf(fp, "%.17g %.17g %clo %chi\n", g->dom.lo[d], g->dom.hi[d], "xyz"[d], "xyz"[d]);
+    if (g->dom.triclinic)
+        fprintf(fp, "%.17g %.17g %.17g xy xz yz\n", g->dom.xy, g->dom.xz, g->dom.yz);
     int any_mass = 0;
     for (int t = 1; t <= a->ntypes; t++)
         any_mass |= a->type_mass[t] > 0;

@@ -308,6 +308,8 @@ static void cluster(struct gravel *g, struct compute *c)
     struct agg *ag = c->data;
     const struct atoms *at = &g->atoms;
     double L[3];
+    if (g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
+        gr_error(g, "compute %s agglomerate: tilted triclinic boxes are not supported", c->id);
     for (int q = 0; q < 3; q++)
         L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
     int m = 0;

@@ -242,6 +242,9 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
     if (ca->laid_out && ca->nchunk_once)
         return &ca->grid;
     double binlo[3], binhi[3], prd[3];
+    if (g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
+        gr_error(g, "compute %s chunk/atom: spatial bins in a tilted triclinic box are not "
+                    "supported", c->id);
     for (int d = 0; d < 3; d++) {
         prd[d] = g->dom.hi[d] - g->dom.lo[d];
         binlo[d] = ca->scaleflag == SC_REDUCED ? 0.0 : g->dom.lo[d];

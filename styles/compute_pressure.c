@@ -5,8 +5,9 @@
  * W the granular pair virial. Keywords choose the parts: ke the kinetic
  * part, pair or virial the pair virial (fixes contribute none, so `fix`
  * adds nothing); none given = both. The group is ignored, as LAMMPS (the
- * pressure is of the whole system). Global scalar, intensive; the pressure
- * tensor (LAMMPS' 6-vector) is not provided. */
+ * pressure is of the whole system). Global scalar and the pressure tensor
+ * as a 6-vector pxx pyy pzz pxy pxz pyz (pressure_tensor; xz yz zz are 0 in
+ * 2d), both intensive. */
 #include <string.h>
 
 #include "compute.h"
@@ -50,6 +51,10 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
     if (p->keflag && !p->temp_id[0])
         gr_error(g, "compute pressure: the kinetic part needs a temperature compute, not NULL");
     c->scalar_flag = 1;
+    c->vector_flag = 1;
+    c->size_vector = 6;
+    c->extvector = 0;
+    c->vector = gr_calloc(g, 6, sizeof(double));
 }
 
 static struct temp_state *temperature(struct gravel *g, struct compute *c)
@@ -77,9 +82,16 @@ static double scalar(struct gravel *g, struct compute *c)
     return pressure_parts(g, temperature(g, c), p->keflag, p->virialflag);
 }
 
+static void vector(struct gravel *g, struct compute *c)
+{
+    struct press *p = c->data;
+    pressure_tensor(g, temperature(g, c), p->keflag, p->virialflag, c->vector);
+}
+
 const struct compute_style compute_style_pressure = {
     .name = "pressure",
     .create = create,
     .init = init,
     .scalar = scalar,
+    .vector = vector,
 };

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "compute.h"
+#include "domain.h"
 #include "error.h"
 
 enum attr {
@@ -65,8 +66,9 @@ static double attr_value(const struct gravel *g, int a, int i)
     case A_MASS: return at->rmass[i];
     case A_X: case A_Y: case A_Z: return at->x[3 * i + a - A_X];
     case A_XU: case A_YU: case A_ZU: {
-        int d = a - A_XU;
-        return at->x[3 * i + d] + at->image[3 * i + d] * (g->dom.hi[d] - g->dom.lo[d]);
+        double u[3];
+        domain_unmap(g, at->x + 3 * i, at->image + 3 * i, u);
+        return u[a - A_XU];
     }
     case A_IX: case A_IY: case A_IZ: return at->image[3 * i + a - A_IX];
     case A_VX: case A_VY: case A_VZ: return at->v[3 * i + a - A_VX];

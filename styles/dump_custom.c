@@ -3,13 +3,15 @@
  * Each snapshot is, as LAMMPS writes it:
  *   ITEM: TIMESTEP / step / ITEM: NUMBER OF ATOMS / n /
  *   ITEM: BOX BOUNDS xx yy zz (boundary flags lo/hi per dimension) /
- *   three "lo hi" lines in %-1.16e / ITEM: ATOMS field... / one line per atom,
+ *   three "lo hi" lines in %-1.16e (triclinic, as LAMMPS: "BOX BOUNDS xy xz
+ *   yz ..." and "lo_bound hi_bound tilt" lines of the bounding box) / ITEM: ATOMS field... / one line per atom,
  * values separated by one space; integers "%d", floats "%g" unless
  * dump_modify format says otherwise (precedence: format N > format int|float
  * > the word of format line, as LAMMPS).
  * Fields: id type x y z xu yu zu ix iy iz vx vy vz fx fy fz radius diameter
  * mass omegax omegay omegaz tqx tqy tqz, xs ys zs (scaled to the box: (x -
- * xlo) / Lx), xsu ysu zsu (scaled, unwrapped: xs + ix), and c_ID / c_ID[N] (a per-atom
+ * xlo) / Lx; triclinic: the lamda coordinates), xsu ysu zsu (scaled,
+ * unwrapped: xs + ix), xu yu zu unwrapped with the tilted edge vectors, and c_ID / c_ID[N] (a per-atom
  * compute's vector or column N of its array), v_name (an atom-style variable,
  * evaluated at each snapshot). */
 #include <stdlib.h>
@@ -17,6 +19,7 @@
 
 #include "args.h"
 #include "compute.h"
+#include "domain.h"
 #include "dump.h"
 #include "error.h"
 #include "thermo.h"
@@ -248,13 +251,20 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
     double prd[3];
     for (int k = 0; k < 3; k++)
         prd[k] = dom->hi[k] - dom->lo[k];
-    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS", (long long)g->step,
-            n);
+    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS%s", (long long)g->step,
+            n, dom->triclinic ? " xy xz yz" : "");
     for (int k = 0; k < 3; k++)
         fprintf(fp, " %c%c", dom->bnd[k][0], dom->bnd[k][1]);
     fprintf(fp, "\n");
-    for (int k = 0; k < 3; k++)
-        fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
+    if (dom->triclinic) { /* LAMMPS: the bounding box, each line with one tilt */
+        double blo[3], bhi[3], tilt[3] = {dom->xy, dom->xz, dom->yz};
+        domain_bbox(g, blo, bhi);
+        for (int k = 0; k < 3; k++)
+            fprintf(fp, "%-1.16e %-1.16e %-1.16e\n", blo[k], bhi[k], tilt[k]);
+    } else {
+        for (int k = 0; k < 3; k++)
+            fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
+    }
     fprintf(fp, "ITEM: ATOMS");
     for (int i = 0; i < c->n; i++)
         fprintf(fp, " %s", c->col[i].name);
@@ -273,17 +283,27 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
             case F_X: case F_Y: case F_Z: v = a->x[3 * j + col->field - F_X]; break;
             case F_XU: case F_YU: case F_ZU: {
                 int dim = col->field - F_XU;
-                v = a->x[3 * j + dim] + a->image[3 * j + dim] * prd[dim];
+                if (dom->triclinic) {
+                    double u[3];
+                    domain_unmap(g, a->x + 3 * j, a->image + 3 * j, u);
+                    v = u[dim];
+                } else {
+                    v = a->x[3 * j + dim] + a->image[3 * j + dim] * prd[dim];
+                }
                 break;
             }
-            case F_XS: case F_YS: case F_ZS: {
-                int dim = col->field - F_XS;
-                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim];
-                break;
-            }
+            case F_XS: case F_YS: case F_ZS:
             case F_XSU: case F_YSU: case F_ZSU: {
-                int dim = col->field - F_XSU;
-                v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim] + a->image[3 * j + dim];
+                int su = col->field >= F_XSU, dim = col->field - (su ? F_XSU : F_XS);
+                if (dom->triclinic) { /* LAMMPS: the lamda coordinate */
+                    double lam[3];
+                    domain_x2lamda(g, a->x + 3 * j, lam);
+                    v = lam[dim];
+                } else {
+                    v = (a->x[3 * j + dim] - dom->lo[dim]) / prd[dim];
+                }
+                if (su)
+                    v += a->image[3 * j + dim];
                 break;
             }
             case F_IX: case F_IY: case F_IZ: iv = a->image[3 * j + col->field - F_IX]; break;

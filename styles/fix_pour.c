@@ -501,6 +501,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 static void init(struct gravel *g, struct fix *f)
 {
     struct pour *p = f->data;
+    if (g->dom.triclinic)
+        gr_error(g, "cannot use fix pour with triclinic box (as LAMMPS)");
     struct fix *fg = find_gravity(g);
     double mag, dir[3];
     if (!fg || !fix_gravity_field(fg, &mag, dir))

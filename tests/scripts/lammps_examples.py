@@ -60,9 +60,6 @@ DECKS = [
 
 # deck -> the text of the error gravel stops with (a command it lacks)
 UNSUPPORTED = {
-    "multi/in.granular": "triclinic boxes are not supported",
-    "multi/in.powerlaw": "triclinic boxes are not supported",
-    "multi/in.colloid": "unknown pair style 'colloid'",
 }
 
 # deck -> commands added before its first `run` (test-only, the same for lmp

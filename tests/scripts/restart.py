@@ -254,10 +254,10 @@ def run_all(tmp):
     bad("flipped_byte", bytes(flipped), r"corrupted \(checksum mismatch\)")
     ver = bytearray(good)
     ver[12:16] = struct.pack("=I", 99)
-    bad("version", bytes(ver), "format version 99; this gravel .* reads version 3")
+    bad("version", bytes(ver), "format version 99; this gravel .* reads version 4")
     old = bytearray(good)
-    old[12:16] = struct.pack("=I", 2)
-    bad("old_version", bytes(old), "format version 2, older than the version 3")
+    old[12:16] = struct.pack("=I", 3)
+    bad("old_version", bytes(old), "format version 3, older than the version 4")
     endian = bytearray(good)
     endian[8:16] = struct.pack(">I", 0x01020304 if sys.byteorder == "little" else 0x04030201) \
         + struct.pack(">I", 1 if sys.byteorder == "little" else 0x01000000)

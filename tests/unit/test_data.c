@@ -258,8 +258,11 @@ TEST(bad_files)
     bad_file("LAMMPS data file\n\n2 atoms\n1 atom types\n\n0 10 xlo xhi\n\nAtoms # atomic\n\n",
              "Atoms are for atom_style atomic", 8);
     bad_file("LAMMPS data file\n\n2 atoms\n2 bonds\n", "atom_style sphere has no bonds", 4);
-    bad_file("LAMMPS data file\n\n2 atoms\n0 0 0 xy xz yz\n", "triclinic boxes are not supported",
-             4);
+    /* boundary p p f: a tilt across the non-periodic z is refused */
+    bad_file("LAMMPS data file\n\n2 atoms\n1 atom types\n0 0.5 0 xy xz yz\n",
+             "cannot skew a triclinic box along a non-periodic dimension", 0);
+    bad_file("LAMMPS data file\n\n2 atoms\n0 q 0 xy xz yz\n",
+             "expected a number for tilt factor, got 'q'", 4);
     bad_file("LAMMPS data file\n\n2 atoms\n5 10 xlo xhi\n1 atom types\n5 1 ylo yhi\n",
              "box bounds must satisfy ylo < yhi", 6);
     bad_file("LAMMPS data file\n\n2 atoms\n42\n", "unknown header line", 4);

@@ -91,7 +91,16 @@ TEST(change_box_ops)
     CHECK(test_script(g, "change_box all z final -1 0 units box\n") == GR_OK);
     CHECK(g->atoms.n < n && g->atoms.n > 0);
     gr_destroy(g);
-    CHECK_ERROR(BOX "change_box all triclinic\n", "triclinic boxes are not supported", 5);
+    /* triclinic: tilts, remap in lamda coordinates, ortho only without tilt */
+    g = test_engine();
+    CHECK(test_script(g, BOX "change_box all triclinic xy final 1.5 remap units box\n") == GR_OK);
+    CHECK(g->dom.triclinic && g->dom.xy == 1.5 && g->dom.xz == 0.0);
+    CHECK(test_script(g, "change_box all xy delta -1.5 units box ortho\n") == GR_OK);
+    CHECK(!g->dom.triclinic && g->dom.xy == 0.0);
+    gr_destroy(g);
+    CHECK_ERROR(BOX "change_box all xy final 1\n", "tilt factors of an orthogonal box", 5);
+    CHECK_ERROR(BOX "change_box all triclinic xy final 1 ortho\n",
+                "cannot change the box to orthogonal", 5);
     CHECK_ERROR(BOX "change_box all x volume\n", "volume is not supported", 5);
     CHECK_ERROR(BOX "change_box all x final 3 1\n", "not lo < hi", 5);
     CHECK_ERROR(BOX "change_box all boundary p q p\n", "unknown boundary 'q'", 5);

@@ -1,0 +1,56 @@
+/* pair_energy.c - the pair potential energy (pair_energy.h). */
+#include "pair_energy.h"
+
+#include <stdlib.h>
+
+#include "atoms.h"
+#include "engine.h"
+#include "error.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "pressure.h"
+
+double pair_energy(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active || !e->k_energy || !g->styles.pair)
+        return 0.0;
+    if (e->epair_snap_step == g->step)
+        return e->epair_snap;
+    const struct nbr_list *l = nbr_list(g);
+    int n = e->a.n;
+    if (n <= 0)
+        return 0.0;
+    cl_mem out = pressure_scratch(g);
+    cl_kernel k = e->k_energy;
+    int a = 0;
+    eng_arg_int(g, k, a++, n);
+    eng_arg_mem(g, k, a++, l->nlist);
+    eng_arg_int(g, k, a++, l->maxn);
+    eng_arg_mem(g, k, a++, l->ioff);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.type);
+    eng_arg_mem(g, k, a++, e->pair_param);
+    eng_arg_int(g, k, a++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
+    eng_arg_int(g, k, a++, g->styles.pair->style->nparam);
+    a = nbr_arg_box(g, k, a, l);
+    eng_arg_mem(g, k, a++, out);
+    eng_launch(g, k, (size_t)n);
+    double *ei = gr_malloc(g, (size_t)n * sizeof(double));
+    eng_read_reals(g, out, (size_t)n, ei);
+    const int *order = eng_tag_order(g); /* sum in tag order */
+    double s = 0.0;
+    for (int i = 0; i < n; i++)
+        s += ei[order[i]];
+    free(ei);
+    return s;
+}
+
+void pair_energy_snapshot(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->active || !e->k_energy || e->epair_snap_step == g->step)
+        return;
+    e->epair_snap = pair_energy(g);
+    e->epair_snap_step = g->step;
+}
