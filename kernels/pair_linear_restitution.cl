@@ -33,8 +33,11 @@ static inline void linear_restitution_eval(const struct contact *c,
     const REAL tcol = ctcol * sm;
 
     const REAL vn = dot(c->vr, n);
-    const REAL fnmag = contact_normal_force(NORMAL_LINEAR, (REAL)0.5 * ke, eta, delta, -vn,
-                                            c->meff, c->dt);
+    const REAL fnmag =
+        c->approach ? contact_normal_linear(eta, tcol, delta, -vn, c->meff, c->dt, c->radsum,
+                                            !c->shearupdate)
+                    : contact_normal_force(NORMAL_LINEAR, (REAL)0.5 * ke, eta, delta, -vn, c->meff,
+                                           c->dt);
     REAL3 ut = c->vr - vn * n;
     if (torque != (REAL)0) {
         /* relative velocity of the contact points: + n x (radi omi + radj omj) */

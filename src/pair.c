@@ -422,7 +422,8 @@ int pair_defines(const struct pair *p, char *buf, size_t len)
 {
     if (p->style->defines)
         return p->style->defines(p, buf, len);
-    int n = snprintf(buf, len, " -D PAIR_EVAL=%s", p->style->eval);
+    int n = snprintf(buf, len, " -D PAIR_EVAL=%s%s", p->style->eval,
+                     p->style->approach ? " -D PAIR_APPROACH" : "");
     if (n >= 0 && (size_t)n < len)
         n += pair_cohesion_defines(p, buf + n, len - (size_t)n);
     return n;

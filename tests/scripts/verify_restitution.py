@@ -65,7 +65,7 @@ def sweep(law, e, nsub, prec="double"):
              "create_box 1 box"]
     for j in range(NPHASE):
         y = 3 * d * j
-        gap = j / NPHASE * u0 * dt
+        gap = (1 + j / NPHASE) * u0 * dt
         lines.append("create_atoms 1 single 0 %.17g 0" % y)
         lines.append("create_atoms 1 single %.17g %.17g 0" % (d + gap, y))
     lines += ["set atom * diameter %g density %g" % (d, p["rho"]),
