@@ -49,9 +49,12 @@ static inline struct contact pair_contact(const int i, const int j, const REAL3 
 static inline int pair_within_drift(const int i, const int j, const REAL3 del, const REAL rsq,
                                     const REAL radsum, __global const REAL *v, const REAL dt)
 {
-    const REAL dv = dot(vload3(i, v) - vload3(j, v), del);
+    const REAL dv = fabs(dot(vload3(i, v) - vload3(j, v), del)) * dt;
+    /* r (r - radsum) >= (rsq - radsum^2) / 2: most pairs leave without the sqrt */
+    if (dv <= (REAL)0.5 * (rsq - radsum * radsum))
+        return 0;
     const REAL r = sqrt(rsq);
-    return fabs(dv) * dt > r * (r - radsum);
+    return dv > r * (r - radsum);
 }
 #endif
 
