@@ -6,10 +6,11 @@
  * u_t = vr - u_n (minus the rotational contact velocity when torque is on):
  *   eta   = ceta sqrt(m*),  t_col = ctcol sqrt(m*)     (host-precomputed)
  *   F_n   = (ke delta - eta vr.n) n                    [force units]
- * integrated over each step as a two-body impulse (kernels/contact_normal.cl:
- * exact energy for the spring, exact impulse for the dashpot (its coefficient
- * corrected for the scheme's restitution error at large damping), at the partial
- * steps where the contact starts and ends too; ke delta inside the contact).
+ * integrated exactly over each step for two bodies (kernels/contact_normal.cl,
+ * contact_normal_linear: the closed-form solution, with a pre-contact kick on
+ * pairs one drift from contact; c->approach, set by callers that evaluate
+ * those pairs: the pair loop and fix wall/pair's plane and mesh kernels), else
+ * (hybrid/overlay) as contact_normal_force's second-order two-body impulse.
  *   F_t   = -u_t/|u_t| min(kf |u_t| t_col, mu |F_n|)
  * The normal force is not clamped at zero: the analytic solution of 000 A.1
  * (and the restitution it returns) includes the attractive end of the dashpot.
