@@ -223,8 +223,9 @@ static inline REAL contact_normal_linear(const REAL eta, const REAL tcol, const 
     const REAL a = eta / ((REAL)2 * meff), w = pi / tcol, b = a / w, W = w * dt;
     /* in contact: d > tol. A contact that ends at a kick (d = 0 but for the
      * round-off of the overlaps of bodies of size scale) ends there, and the
-     * next kick, whose reconstructed dp is as small, does not end it again */
-    const REAL tol = (REAL)16 * NORMAL_EPS * scale;
+     * next kick, whose reconstructed dp is as small, does not end it again.
+     * (Single precision: an overlap below 1e-6 scale carries no force.) */
+    const REAL tol = (REAL)8 * NORMAL_EPS * scale;
     REAL S;
     if (!(d > tol)) {
         if (s > (REAL)0 && d + dt * s > (REAL)0) {          /* pre-contact */

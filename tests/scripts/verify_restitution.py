@@ -130,8 +130,9 @@ def table(res):
             cells = []
             for nsub in NSUBS:
                 v = res[(law, nsub, e)]
-                cells.append("%.5g .. %.5g | %+.2f %%" % (min(v), max(v),
-                                                          100 * max((x / e - 1 for x in v), key=abs)))
+                w = max((x / e - 1 for x in v), key=abs)
+                cells.append("%.5g .. %.5g | %s" % (min(v), max(v), "%+.2f %%" % (100 * w)
+                                                    if abs(w) >= 1e-5 else "%+.1e" % w))
             out.append("| %s | %g | %s | %s |" % (law, e, cells[0], cells[1]))
     return out
 
