@@ -22,6 +22,11 @@
 #ifndef HIST_N
 #define HIST_N 3
 #endif
+/* the slots a separated pair clears: all but a trailing HIST_OWNER slot
+ * (-compat lammps2021, kernels/neighbor.cl) */
+#ifndef HIST_ZERO_N
+#define HIST_ZERO_N HIST_N
+#endif
 
 #define REAL3 CAT3(REAL)
 #define CAT3(t) CAT3_(t)

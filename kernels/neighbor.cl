@@ -319,7 +319,7 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
                              __global const uint *mask, const REAL Lx, const REAL Ly,
                              const REAL Lz, const REAL skin, const int ntypes,
                              __global const int *excl_type, const int nexg,
-                             __global const uint *excl_group)
+                             __global const uint *excl_group, __global const long *mol)
 {
     if (j == i)
         return 0;
@@ -340,9 +340,14 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
         return 0;
     const uint mj = mask[j];
     for (int q = 0; q < nexg; q++) {
-        const uint g1 = excl_group[2 * q], g2 = excl_group[2 * q + 1];
-        if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
-            return 0;
+        const uint g1 = excl_group[3 * q], g2 = excl_group[3 * q + 1];
+        const uint kind = excl_group[3 * q + 2];
+        if (kind == 0) {
+            if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
+                return 0;
+        } else if ((mi & g1) && (mj & g1) && ((mol[i] == mol[j]) == (kind == 1))) {
+            return 0; /* molecule/intra (same ID, 0 included) or molecule/inter */
+        }
     }
     return 1;
 }
@@ -382,7 +387,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                         const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
                         __global int *ncount, __global int *nown, __global int *flags,
                         const int ntypes, __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group)
+                        __global const uint *excl_group, __global const long *mol)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -410,7 +415,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
                     if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
-                                   skin, ntypes, excl_type, nexg, excl_group))
+                                   skin, ntypes, excl_type, nexg, excl_group, mol))
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
@@ -564,7 +569,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                               __global int *nlist, __global int *ncount, __global int *nown,
                               __global int *flags, const int ntypes,
                               __global const int *excl_type, const int nexg,
-                              __global const uint *excl_group)
+                              __global const uint *excl_group, __global const long *mol)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -596,7 +601,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                                 const int j = sorted ? jj : cellatoms[jj];
                                 if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
                                                Lx, Ly, Lz, skin, ntypes, excl_type, nexg,
-                                               excl_group))
+                                               excl_group, mol))
                                     nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
                             }
                         }
@@ -680,36 +685,139 @@ __kernel void hist_rename(const int nold, __global const int *invperm, __global 
         parked[at + c] = invperm[parked[at + c]];
 }
 
+#ifdef LMP2021
+/* -compat lammps2021: LAMMPS 29Sep2021's neighbor bins (NBinStandard, one
+ * process, style bin, atoms in tag order), as src/neighbor.c sets them up. */
+struct lmp_grid {
+    REAL3 lo, hi, inv;
+    int3 n;
+    REAL cutsq; /* its cutneighmax squared */
+};
+
+/* The bin of one coordinate (coord2bin): bins of 1/inv from lo, n of them
+ * inside [lo, hi), images beyond on the same grid */
+static inline int lmp_bin(const REAL v, const REAL lo, const REAL hi, const REAL inv, const int n)
+{
+    if (v >= hi)
+        return (int)((v - hi) * inv) + n;
+    if (v >= lo)
+        return min((int)((v - lo) * inv), n - 1);
+    return (int)((v - lo) * inv) - 1;
+}
+
+static inline int3 lmp_bin3(const REAL3 v, const struct lmp_grid *G)
+{
+    return (int3)(lmp_bin(v.x, G->lo.x, G->hi.x, G->inv.x, G->n.x),
+                  lmp_bin(v.y, G->lo.y, G->hi.y, G->inv.y, G->n.y),
+                  lmp_bin(v.z, G->lo.z, G->hi.z, G->inv.z, G->n.z));
+}
+
+/* Closest approach of two bins `d` apart in one dimension (bin_distance) */
+static inline REAL lmp_gap(const int d, const REAL inv)
+{
+    return d > 0 ? (REAL)(d - 1) / inv : d < 0 ? (REAL)(d + 1) / inv : (REAL)0;
+}
+
+/* The pair a-b as LAMMPS lists it, a = xa, b = xb, del = xa - xb after
+ * minimum image: b's image next to a is its ghost. *in_list: a's stencil (or
+ * b's) holds the other's bin, gap below cutneighmax (a pair LAMMPS's list
+ * misses where a jkr pull-off made that cut-off short); returns whether the
+ * atom with the lower tag owns it: the stencil holds the bins above in
+ * (z, y, x) order; in one bin a partner later in the bin's list (the larger
+ * index: tag order) or a periodic image above in (z, y, x). */
+static inline int lmp_pair(const REAL3 xa, const REAL3 xb, const REAL3 del,
+                           const struct lmp_grid *G, const int lower, int *in_list)
+{
+    const REAL3 shift = (xa - xb) - del;
+    const int image = shift.x != 0 || shift.y != 0 || shift.z != 0;
+    const REAL3 xi = xb + shift;
+    const int3 ba = lmp_bin3(xa, G), bb = lmp_bin3(xi, G), d = bb - ba;
+    const REAL gx = lmp_gap(d.x, G->inv.x), gy = lmp_gap(d.y, G->inv.y),
+               gz = lmp_gap(d.z, G->inv.z);
+    *in_list = gx * gx + gy * gy + gz * gz < G->cutsq;
+    int a_owns;
+    if (d.z != 0)
+        a_owns = d.z > 0;
+    else if (d.y != 0)
+        a_owns = d.y > 0;
+    else if (d.x != 0)
+        a_owns = d.x > 0;
+    else if (!image)
+        a_owns = lower;
+    else
+        a_owns = xi.z > xa.z || (xi.z == xa.z && (xi.y > xa.y || (xi.y == xa.y && xi.x >= xa.x)));
+    return a_owns == lower;
+}
+#endif
+
 __kernel void hist_transfer(const int ncontact, __global const int *ci, __global const int *cj,
                             __global const int *perm, const int permuted,
                             __global const int *old_coff, __global const int *parked,
                             const int at, __global const REAL *old_shear,
                             __global REAL *shear, __global const REAL *x,
                             __global const REAL *radius, const REAL Lx, const REAL Ly,
-                            const REAL Lz)
+                            const REAL Lz, __global const long *tag, const REAL blox,
+                            const REAL bloy, const REAL bloz, const REAL bhix, const REAL bhiy,
+                            const REAL bhiz, const REAL binvx, const REAL binvy,
+                            const REAL binvz, const int nbx, const int nby, const int nbz,
+                            const REAL lmp_cutsq)
 {
+    /* ncontact < 0: -ncontact contacts and no previous ones (first build) */
+    const int have_old = ncontact > 0, nc = have_old ? ncontact : -ncontact;
     __global const int *old_cj = parked + at;
     const int c = get_global_id(0);
-    if (c >= ncontact)
+    if (c >= nc)
         return;
-    const int io = permuted ? perm[ci[c]] : ci[c], j = cj[c];
-    /* LAMMPS (fix neigh/history): only a pair that overlaps at the rebuild
-     * keeps its history; apart, every law but a jkr contact held beyond touch
-     * has none anyway */
+    const int io = have_old && permuted ? perm[ci[c]] : ci[c], j = cj[c];
+    /* LAMMPS (fix neigh/history): a pair that overlaps at the rebuild keeps
+     * its history; with a jkr term (pair granular, beyond contact) every
+     * listed partner does: apart, it holds zeros unless its contact holds
+     * beyond touch */
     REAL3 del = vload3(ci[c], x) - vload3(j, x);
     del.x = MINIMG_X(del.x, Lx);
     del.y = MINIMG_Y(del.y, Ly);
     del.z = MINIMG_Z(del.z, Lz);
+#if defined(HAS_COHESION) && defined(GRN_HAS_JKR) /* LAMMPS's beyond_contact */
+    int keep = 1;
+    (void)radius;
+#else
     const REAL radsum = radius[ci[c]] + radius[j];
-    const int overlap = del.x * del.x + del.y * del.y + del.z * del.z < radsum * radsum;
+    int keep = del.x * del.x + del.y * del.y + del.z * del.z < radsum * radsum;
+#endif
+#ifdef LMP2021
+    struct lmp_grid G;
+    G.lo = (REAL3)(blox, bloy, bloz);
+    G.hi = (REAL3)(bhix, bhiy, bhiz);
+    G.inv = (REAL3)(binvx, binvy, binvz);
+    G.n = (int3)(nbx, nby, nbz);
+    G.cutsq = lmp_cutsq;
+    int listed;
+    const int lower_owns = lmp_pair(vload3(ci[c], x), vload3(j, x), del, &G,
+                                    tag[ci[c]] < tag[j], &listed);
+    keep = keep && listed;
+    (void)lower_owns;
+#else
+    (void)tag;
+#endif
     int from = -1;
-    for (int o = old_coff[io], e = old_coff[io + 1]; overlap && o < e; o++)
+    for (int o = have_old ? old_coff[io] : 0, e = have_old ? old_coff[io + 1] : 0; keep && o < e;
+         o++)
         if (old_cj[o] == j) {
             from = o;
             break;
         }
     for (int q = 0; q < HIST_N; q++)
         shear[(size_t)c * HIST_N + q] = from >= 0 ? old_shear[(size_t)from * HIST_N + q] : (REAL)0;
+#ifdef HIST_OWNER /* LAMMPS's owner flips negate these symmetric slots */
+    {
+        __global REAL *row = shear + (size_t)c * HIST_N;
+        const REAL was = row[HIST_OWNER], now = lower_owns ? (REAL)1 : (REAL)-1;
+        if (was * now < 0)
+            for (int q = HIST_FLIP_LO; q < HIST_FLIP_LO + HIST_FLIP_N; q++)
+                row[q] = -row[q];
+        row[HIST_OWNER] = now;
+    }
+#endif
 }
 
 /* Per-chunk largest overlap (radsum - r) / min(radi, radj) over the list. */

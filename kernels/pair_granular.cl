@@ -380,7 +380,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
 #define GR_TANG_HISTORY_ON 0
 #endif
 #ifdef HAS_HISTORY
-#define GR_WIDTH HIST_N
+#define GR_WIDTH HIST_ZERO_N /* a trailing HIST_OWNER slot is not the law's */
 #else
 #define GR_WIDTH 0
 #endif

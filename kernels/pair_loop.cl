@@ -116,10 +116,10 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
         /* a separated pair forgets its history; most are zero already */
         __global REAL *hrow = shear + (size_t)c * HIST_N;
         int any = 0;
-        for (int q = 0; q < HIST_N; q++)
+        for (int q = 0; q < HIST_ZERO_N; q++)
             any |= hrow[q] != (REAL)0;
         if (any)
-            for (int q = 0; q < HIST_N; q++)
+            for (int q = 0; q < HIST_ZERO_N; q++)
                 hrow[q] = 0;
 #endif
     } else {

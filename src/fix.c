@@ -105,6 +105,10 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
         }
         gr_error(g, "unknown fix style '%.64s' (known: %s)", argv[2], known);
     }
+    /* LAMMPS: fix property/atom may precede the box; every other fix needs it */
+    if (!g->dom.box_exists && strcmp(st->name, "property/atom"))
+        gr_error(g, "fix %s needs a simulation box: use create_box or read_data first",
+                 st->name);
     struct fix *old = fix_find(g, argv[0]);
     if (old && strcmp(old->style->name, st->name))
         gr_error(g, "fix %s already exists with style %s; unfix it before redefining it as %s",
@@ -183,6 +187,8 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     (void)argc;
     for (int i = 0; i < g->styles.nfix; i++)
         if (!strcmp(g->styles.fix[i]->id, argv[0])) {
+            if (!strcmp(g->styles.fix[i]->style->name, "property/atom"))
+                g->atoms.molecule_flag = 0; /* the molecule IDs go with their fix */
             fix_delete(g->styles.fix[i]);
             memmove(&g->styles.fix[i], &g->styles.fix[i + 1],
                     (size_t)(g->styles.nfix - i - 1) * sizeof *g->styles.fix);
@@ -192,10 +198,30 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     gr_error(g, "could not find fix ID '%.64s' to delete", argv[0]);
 }
 
-/* fix_modify ID keyword value ... (LAMMPS fix_modify). gravel's thermo has
- * no potential-energy or pressure columns that fixes contribute to, so
- * energy/virial yes (and respa levels) are accepted with a warning and
- * change nothing; energy/virial no is what gravel does anyway. */
+void fix_check_time_reset(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->time_depend)
+            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
+                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
+}
+
+double fix_energy_sum(struct gravel *g)
+{
+    double e = 0.0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->energy && f->style->scalar)
+            e += f->style->scalar(g, f);
+    }
+    return e;
+}
+
+/* fix_modify ID keyword value ... (LAMMPS fix_modify). energy yes on a
+ * fix with a global energy (fix gravity) adds its scalar to the thermo pe
+ * and etotal, as LAMMPS; on other fixes, like virial yes and respa levels,
+ * it is accepted with a warning and changes nothing (no fix contributes a
+ * virial in gravel). */
 void cmd_fix_modify(struct gravel *g, int argc, char **argv)
 {
     struct fix *f = fix_find(g, argv[0]);
@@ -205,7 +231,9 @@ void cmd_fix_modify(struct gravel *g, int argc, char **argv)
         const char *k = argv[i];
         arg_need(g, argc, i, 1, k);
         const char *v = argv[++i];
-        if (!strcmp(k, "energy") || !strcmp(k, "virial")) {
+        if (!strcmp(k, "energy") && f->style->energy_global && f->style->scalar) {
+            f->energy = arg_yesno(g, v, k); /* its scalar joins the thermo pe */
+        } else if (!strcmp(k, "energy") || !strcmp(k, "virial")) {
             if (arg_yesno(g, v, k))
                 gr_warn(g, "fix %s: %s yes has no effect (gravel's thermo output has no "
                            "fix %s contributions)", f->id, k, k);

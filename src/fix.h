@@ -99,10 +99,24 @@ struct fix_style {
      * return 0 when it cannot be fused this run. Called at run setup,
      * after init. */
     int (*fuse)(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op);
+    /* Optional: LAMMPS's Fix::post_neighbor, called after every neighbor
+     * rebuild (the setup one included), once the atoms are in their new
+     * device order and wrapped into the box. */
+    void (*post_neighbor)(struct gravel *g, struct fix *f);
+    /* Optional: degrees of freedom this fix removes from the atoms of
+     * groupbit (LAMMPS Fix::dof, e.g. rigid bodies); temperatures subtract
+     * the sum over fixes. */
+    double (*dof)(struct gravel *g, struct fix *f, unsigned groupbit);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;
     double (*vector)(struct gravel *g, struct fix *f, int i);
+    /* Global scalar for `f_ID` in thermo output, optional, extensive (divided
+     * by the atom count under thermo_modify norm yes); host arrays current.
+     * energy_global: the scalar is an energy that `fix_modify ID energy yes`
+     * adds to the thermo pe (LAMMPS's energy_global_flag). */
+    double (*scalar)(struct gravel *g, struct fix *f);
+    int energy_global;
 };
 
 struct fix {
@@ -126,6 +140,7 @@ struct fix {
     int time_depend;            /* 1: its schedule is in steps; reset_timestep refuses (LAMMPS) */
     int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
     bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
+    int energy;                 /* fix_modify energy yes: scalar counted in pe */
 };
 
 /* The fix with this ID, or NULL. */
@@ -134,6 +149,12 @@ struct fix *fix_find(struct gravel *g, const char *id);
 struct fix *fix_find_style(struct gravel *g, const char *style);
 /* Free every fix (clear/destroy). */
 void fix_free_all(struct gravel *g);
+/* Sum of the scalars of fixes with fix_modify energy yes (not normalized;
+ * host arrays must be current). */
+double fix_energy_sum(struct gravel *g);
+/* Error "cannot reset timestep with a time-dependent fix defined (fix ID
+ * style)" if a fix has time_depend (reset_timestep, read_dump, rerun). */
+void fix_check_time_reset(struct gravel *g);
 /* Union of NEED_* over all fixes. */
 unsigned fix_needs_all(struct gravel *g);
 

@@ -2,7 +2,7 @@
  *
  *   gravel [-in FILE] [-var NAME VALUE...] [-log FILE|none] [-echo none|screen|log|both]
  *          [-screen none|FILE] [-device cpu|gpu|N] [-precision single|double]
- *          [-progress] [-check [FILE]] [-h] [-version]
+ *          [-progress] [-check [FILE]] [-compat lammps2021] [-h] [-version]
  *
  * Without -in the script comes from stdin. Exit status: 0 on success (or the
  * status given to `quit`), 1 on any error (a bad command line included). */
@@ -50,6 +50,8 @@ static void usage(FILE *out)
             "  -device cpu|gpu|N            OpenCL device (default: env GRAVEL_DEVICE, else cpu)\n"
             "  -precision single|double     floating point in kernels (default double)\n"
             "  -progress                    progress line on stderr during runs\n"
+            "  -compat lammps2021           reproduce LAMMPS 29Sep2021 where it is not physical\n"
+            "                               (doc/lammps.md, Compatibility)\n"
             "  -h, -help                    this help, every command and style\n"
             "  -version                     print the version\n",
             GR_VERSION);
@@ -141,7 +143,7 @@ int main(int argc, char **argv)
 {
     const char *in = NULL, *log = "log.gravel", *screen = NULL, *echo = NULL;
     const char *device = NULL, *precision = NULL;
-    int progress = 0, check = 0;
+    int progress = 0, check = 0, lammps2021 = 0;
     /* first pass: validate everything before any file is created */
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -195,6 +197,11 @@ int main(int argc, char **argv)
             precision = argv[++i];
         } else if (IS("-progress", NULL)) {
             progress = 1;
+        } else if (IS("-compat", NULL)) {
+            if (!more || strcmp(argv[i + 1], "lammps2021"))
+                return bad("-compat must be lammps2021, got '%s'", more ? argv[i + 1] : "");
+            lammps2021 = 1;
+            i++;
         } else {
             return bad("unknown option '%s'", a);
         }
@@ -211,6 +218,7 @@ int main(int argc, char **argv)
     g->opt.single = precision && strcmp(precision, "single") == 0;
     g->opt.progress = progress;
     g->opt.check = check;
+    g->opt.lammps2021 = lammps2021;
     if (echo)
         g->echo = !strcmp(echo, "none") ? ECHO_NONE : !strcmp(echo, "screen") ? ECHO_SCREEN
                 : !strcmp(echo, "log") ? ECHO_LOG : ECHO_BOTH;
@@ -242,7 +250,8 @@ int main(int argc, char **argv)
             if (!strcmp(argv[i], "-in") || !strcmp(argv[i], "-i") || !strcmp(argv[i], "-log") ||
                 !strcmp(argv[i], "-l") || !strcmp(argv[i], "-echo") || !strcmp(argv[i], "-e") ||
                 !strcmp(argv[i], "-screen") || !strcmp(argv[i], "-sc") ||
-                !strcmp(argv[i], "-device") || !strcmp(argv[i], "-precision"))
+                !strcmp(argv[i], "-device") || !strcmp(argv[i], "-precision") ||
+                !strcmp(argv[i], "-compat"))
                 i++;
             continue;
         }

@@ -49,6 +49,7 @@ struct nbr {
     int history, rotation;
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
+    double lmp_cutmax;          /* -compat lammps2021: LAMMPS's cutneighmax (its bins) */
     int nexg;
     int ago;
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
@@ -353,6 +354,30 @@ static void setup_multi(struct gravel *g, struct nbr *b)
     b->d_minv = eng_alloc(g, 3 * (size_t)nc * e->rsz, "multi grid scales");
 }
 
+/* LAMMPS 2021's cutneighmax: the largest init_one cut-off over type pairs
+ * whose types have a radius (their atoms', or what fix pour may insert),
+ * plus the skin. */
+static double lammps2021_cutneighmax(struct gravel *g, double insert_rmax)
+{
+    const struct pair *p = g->styles.pair;
+    int nt = g->atoms.ntypes;
+    double *rt = gr_calloc(g, (size_t)nt + 1, sizeof *rt), cut = 0;
+    for (int t = 1; t <= nt; t++)
+        rt[t] = insert_rmax;
+    for (int k = 0; k < g->atoms.n; k++)
+        if (g->atoms.radius[k] > rt[g->atoms.type[k]])
+            rt[g->atoms.type[k]] = g->atoms.radius[k];
+    for (int i = 1; i <= nt; i++)
+        for (int j = i; j <= nt; j++)
+            if (rt[i] > 0 && rt[j] > 0)
+                cut = fmax(cut, p && p->style->lammps2021_cut
+                                    ? p->style->lammps2021_cut(p, i, j, rt[i], rt[j])
+                                    : rt[i] + rt[j]);
+    free(rt);
+    return cut + g->neigh.skin;
+}
+
+
 void nbr_setup(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -418,17 +443,26 @@ void nbr_setup(struct gravel *g)
                                       (size_t)nt * nt * sizeof(cl_int), et, 0, NULL, NULL);
     free(et);
     ocl_check(g, err, "clEnqueueWriteBuffer");
-    cl_uint eg[32];
+    /* group and molecule exclusions: (bits 1, bits 2, kind) triples, kind 0
+     * a group pair, 1 molecule/intra, 2 molecule/inter (kernels/neighbor.cl) */
+    cl_uint eg[96];
     b->nexg = 0;
-    for (int k = 0; k < g->neigh.nexclude && k < 16; k++) {
-        eg[2 * k] = 1u << g->neigh.exclude_group[k][0];
-        eg[2 * k + 1] = 1u << g->neigh.exclude_group[k][1];
-        b->nexg++;
+    for (int k = 0; k < g->neigh.nexclude && k < 16; k++, b->nexg++) {
+        eg[3 * b->nexg] = 1u << g->neigh.exclude_group[k][0];
+        eg[3 * b->nexg + 1] = 1u << g->neigh.exclude_group[k][1];
+        eg[3 * b->nexg + 2] = 0;
+    }
+    if (g->neigh.nexclude_mol && !g->atoms.molecule_flag)
+        gr_error(g, "neigh_modify exclude molecule/%s requires atom attribute molecule (fix "
+                    "property/atom mol)", g->neigh.exclude_mol[0][1] ? "intra" : "inter");
+    for (int k = 0; k < g->neigh.nexclude_mol && k < 16; k++, b->nexg++) {
+        eg[3 * b->nexg] = eg[3 * b->nexg + 1] = 1u << g->neigh.exclude_mol[k][0];
+        eg[3 * b->nexg + 2] = g->neigh.exclude_mol[k][1] ? 1 : 2;
     }
     rel(&b->excl_group);
     b->excl_group = eng_alloc(g, sizeof eg, "group exclusions");
     if (b->nexg)
-        eng_write(g, b->excl_group, 0, (size_t)b->nexg * 2 * sizeof(cl_uint), eg);
+        eng_write(g, b->excl_group, 0, (size_t)b->nexg * 3 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
     double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
     for (int i = 0; i < g->atoms.n; i++)
@@ -437,6 +471,7 @@ void nbr_setup(struct gravel *g)
     b->cutmax = pair_reach(g, 2 * rmax) + g->neigh.skin; /* cohesion: effect range */
     if (b->cutmax <= 0)
         b->cutmax = 1.0;
+    b->lmp_cutmax = g->opt.lammps2021 ? lammps2021_cutneighmax(g, e->insert_rmax) : 0;
     setup_multi(g, b);
     b->ago = 0;
     b->built = 0;
@@ -732,6 +767,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         eng_arg_mem(g, k, a++, b->excl_type);
         eng_arg_int(g, k, a++, b->nexg);
         eng_arg_mem(g, k, a++, b->excl_group);
+        eng_arg_mem(g, k, a++, e->a.mol ? e->a.mol : e->a.tag);
         eng_launch(g, k, (size_t)n);
         cl_int fl[4];
         read_flags(g, b, fl);
@@ -741,6 +777,37 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         gr_print(g, "Neighbor list capacity grown from %d to %d per atom\n", b->list.maxn, maxn);
         alloc_list(g, b, maxn);
     }
+}
+
+/* LAMMPS 2021's bin grid (NBinStandard::setup_bins, one process, style
+ * bin): bins of half the largest cut-off plus skin, fitted exactly into the
+ * box; z a single bin in 2-d. Arguments a.. of hist_transfer (used under
+ * -compat lammps2021); returns the next argument index. */
+static int lammps2021_bins(struct gravel *g, struct nbr *b, cl_kernel k, int a)
+{
+    const struct domain *d = &g->dom;
+    double binsize = 0.5 * (b->lmp_cutmax > 0 ? b->lmp_cutmax : b->cutmax), lo[3], hi[3], inv[3];
+    int nb[3];
+    for (int q = 0; q < 3; q++) {
+        double len = d->hi[q] - d->lo[q];
+        nb[q] = q == 2 && d->dimension == 2 ? 1 : (int)(len * (1.0 / binsize));
+        if (nb[q] < 1)
+            nb[q] = 1;
+        lo[q] = d->lo[q];
+        hi[q] = d->hi[q];
+        inv[q] = 1.0 / (len / nb[q]);
+    }
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, lo[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_coord(g, k, a++, q, hi[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_real(g, k, a++, inv[q]);
+    for (int q = 0; q < 3; q++)
+        eng_arg_int(g, k, a++, nb[q]);
+    double cut = b->lmp_cutmax > 0 ? b->lmp_cutmax : b->cutmax;
+    eng_arg_real(g, k, a++, cut * cut);
+    return a;
 }
 
 /* Contacts of the rows just built: offsets (scan of the owned counts),
@@ -777,28 +844,33 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     if (fl[3])
         gr_error(g, "internal error: the neighbor list is not symmetric (a pair is missing "
                     "from one partner's row) at step %lld", (long long)g->step);
-    if (e->history && (!b->old_valid || b->ncontact_old == 0))
+    int have_old = e->history && b->old_valid && b->ncontact_old > 0;
+    if (e->history && !have_old)
         eng_fill_zero(g, l->shear, (size_t)total * e->hist_n * e->rsz);
-    if (!e->history || !b->old_valid || b->ncontact_old == 0) {
+    if (!have_old && !(e->history && e->hist_owner && total > 0)) {
         alloc_forces(g, b, (size_t)total);
         return;
     }
+    /* the transfer; with no previous contacts it only records LAMMPS's owners */
     k = b->k_hist_transfer;
     a = 0;
-    eng_arg_int(g, k, a++, total);
+    eng_arg_int(g, k, a++, have_old ? total : -total);
     eng_arg_mem(g, k, a++, l->ci);
     eng_arg_mem(g, k, a++, l->cj);
-    eng_arg_mem(g, k, a++, b->perm);
+    cl_mem any = l->ci; /* the previous contacts' buffers are not read without them */
+    eng_arg_mem(g, k, a++, have_old ? b->perm : any);
     eng_arg_int(g, k, a++, permuted);
-    eng_arg_mem(g, k, a++, b->coff_old);
-    eng_arg_mem(g, k, a++, l->recf);
+    eng_arg_mem(g, k, a++, have_old ? b->coff_old : any);
+    eng_arg_mem(g, k, a++, have_old ? l->recf : any);
     eng_arg_int(g, k, a++, (int)b->old_cj_at);
-    eng_arg_mem(g, k, a++, l->recf);
+    eng_arg_mem(g, k, a++, have_old ? l->recf : l->shear);
     eng_arg_mem(g, k, a++, l->shear);
     eng_arg_mem(g, k, a++, e->a.x);
     eng_arg_mem(g, k, a++, e->a.radius);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, a++, l->L[q]);
+    eng_arg_mem(g, k, a++, e->a.tag);
+    a = lammps2021_bins(g, b, k, a);
     eng_launch(g, k, (size_t)total);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
@@ -859,6 +931,8 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
     reorder_array(g, b, s->mask, sizeof(cl_uint), nkeep);
     reorder_array(g, b, s->tag, sizeof(cl_long), nkeep);
     reorder_array(g, b, s->image, 3 * sizeof(cl_int), nkeep);
+    if (s->mol)
+        reorder_array(g, b, s->mol, sizeof(cl_long), nkeep);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (!f->peratom)

@@ -80,6 +80,14 @@ struct pair_style {
     /* Acts beyond body contact for these coefficients (JKR of pair granular):
      * as beyond_contact, decided at run start (after init). NULL: never. */
     int (*beyond)(const struct pair *p);
+    /* History slots [*first, *first + return) that LAMMPS 2021 negates when a
+     * pair changes owner at a rebuild although they are symmetric in the two
+     * atoms (pair granular: rolling and twisting); gravel keeps them unless
+     * run with -compat lammps2021. NULL or 0: none. */
+    int (*lammps2021_flip)(const struct pair *p, int *first);
+    /* LAMMPS 2021's init_one cut-off of type pair (i, j) whose largest radii
+     * are ri, rj (its neighbor bins follow from it). NULL: ri + rj. */
+    double (*lammps2021_cut)(const struct pair *p, int i, int j, double ri, double rj);
     /* Release p->data. */
     void (*destroy)(struct pair *p);
 };

@@ -150,6 +150,14 @@ static void run_hook(struct gravel *g, unsigned hook)
         h->call[k][i].fn(g, h->call[k][i].fix);
 }
 
+/* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */
+static void post_neighbor(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->post_neighbor)
+            g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
+}
+
 /* Force computation: pair (or clear), then every post_force fix. */
 static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t_pair,
                            double *t_modify)
@@ -170,7 +178,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, a->v);
         eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
         eng_arg_mem(g, k, i++, a->radius);
-        eng_arg_mem(g, k, i++, a->rmass);
+        eng_arg_mem(g, k, i++, e->contact_mass ? e->contact_mass : a->rmass); /* meff */
         eng_arg_mem(g, k, i++, a->type);
         eng_arg_mem(g, k, i++, a->mask);
         eng_arg_mem(g, k, i++, e->history ? l->shear : l->ci);
@@ -302,8 +310,10 @@ static void check_atoms(struct gravel *g)
     }
 }
 
-/* The whole run: setup, loop, footer. */
-static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
+/* Run setup up to the first force computation: device program, upload,
+ * fix init and per-atom state, pair, neighbor and hook lists, reports.
+ * Returns the freeze group bit. */
+static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
 {
     check_atoms(g);
     ocl_mem_reset_peak();
@@ -313,6 +323,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
+    e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)
@@ -342,6 +353,18 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     timestep_report(g, force);
     precision_report(g);
     acc_begin(g, force); /* collision resolution of the contacts that happen */
+    return freezebit;
+}
+
+/* Statistics of a finished run (or rerun) and its footer. */
+static void run_end(struct gravel *g, bigint nsteps, double ttot, double tp, double tn,
+                    double tm, double to, double maxov, int post);
+
+/* The whole run: setup, loop, footer. */
+static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
+{
+    unsigned freezebit = run_begin(g, nsteps, force);
+    struct engine *e = g->eng;
 
     g->firststep = g->step;
     g->laststep = g->step + nsteps;
@@ -351,8 +374,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
     int resumed = restart_resume(g);
     group_dynamic_update(g, -1); /* dynamic groups at setup */
-    if (resumed < 1)
+    if (resumed < 1) {
         nbr_rebuild(g);
+        post_neighbor(g);
+    }
     e->st.nbuilds = 0;
     if (resumed < 2)
         compute_forces(g, freezebit, 1, &tp, &tm);
@@ -392,6 +417,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             run_hook(g, HOOK_PRE_EXCHANGE);
             tx = wall() - p0;
             nbr_rebuild(g);
+            post_neighbor(g);
             eng_finish(g);
         }
         double a2 = wall();
@@ -442,6 +468,13 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         tm *= avail / busy;
     }
     double ttot = wall() - t0;
+    run_end(g, nsteps, ttot, tp, tn, tm, to, maxov, post);
+}
+
+static void run_end(struct gravel *g, bigint nsteps, double ttot, double tp, double tn,
+                    double tm, double to, double maxov, int post)
+{
+    struct engine *e = g->eng;
     acc_collect(g);
     const struct acc_worst *worst = acc_worst(g);
     maxov = fmax(maxov, worst->wall_ov); /* walls and meshes: every step */
@@ -480,6 +513,60 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
                 100 * maxov);
 }
 
+/* rerun's core: the run setup once, then for each snapshot (load() puts it
+ * into the host atoms and sets the step; -1 ends) the setup forces without
+ * integration or history update (LAMMPS's setup_minimal), the fixes' setup
+ * and end_of_step work and the output due at that step (the first snapshot
+ * prints the thermo header and its row); the last snapshot's thermo row is
+ * always printed, then LAMMPS's footer counts the snapshots as steps. */
+static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
+                        bigint firststep, bigint laststep, int post)
+{
+    unsigned freezebit = run_begin(g, 0, 0);
+    struct engine *e = g->eng;
+    g->firststep = firststep;
+    g->laststep = laststep;
+    double tp = 0, tm = 0, maxov = 0, to = 0;
+    bigint ndump = 0;
+    double t0 = wall();
+    for (int first = 1;; first = 0) {
+        ndump++;
+        e->setup = 1;
+        group_dynamic_update(g, -1);
+        nbr_rebuild(g);
+        compute_forces(g, freezebit, 1, &tp, &tm);
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i]->style->setup)
+                g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
+        e->setup = 0;
+        run_hook(g, HOOK_END_OF_STEP);
+        eng_finish(g);
+        double o0 = wall();
+        maxov = fmax(maxov, nbr_max_overlap(g));
+        if (first)
+            output_setup(g);
+        else if (output_due(g, g->step))
+            output_step(g);
+        to += wall() - o0;
+        run_sync_host(g);
+        e->active = 0;
+        bigint prev = g->step;
+        if (load(g, ctx) < 0) {
+            g->step = prev;
+            break;
+        }
+        check_atoms(g);
+        eng_upload(g);
+    }
+    eng_upload(g); /* the host may have been read from: the device state again */
+    double o0 = wall();
+    g->laststep = g->step; /* LAMMPS: thermo on the last snapshot */
+    output_step(g);
+    to += wall() - o0;
+    double ttot = wall() - t0;
+    run_end(g, ndump, ttot, tp, 0.0, tm, to, maxov, post);
+}
+
 /* run_steps under an error boundary: a run that stops on an error (lost or
  * non-finite atoms, a failed write, a fix) first ends its output
  * (output_abort: progress line erased before the message, append-mode dumps
@@ -500,6 +587,25 @@ static void run_guarded(struct gravel *g, bigint n, int force, int post)
         exit(1);
     }
     run_steps(g, n, force, post);
+    g->err.jmp = outer;
+}
+
+void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
+               bigint firststep, bigint laststep)
+{
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        output_abort(g);
+        if (g->eng)
+            g->eng->active = 0;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    rerun_steps(g, load, ctx, firststep, laststep, 1);
     g->err.jmp = outer;
 }
 
@@ -604,10 +710,7 @@ void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
     bigint n = arg_bigint(g, argv[0], "timestep");
     if (n < 0)
         gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
-    for (int i = 0; i < g->styles.nfix; i++)
-        if (g->styles.fix[i]->time_depend)
-            gr_error(g, "cannot reset timestep with a time-dependent fix defined (fix %s %s)",
-                     g->styles.fix[i]->id, g->styles.fix[i]->style->name);
+    fix_check_time_reset(g);
     g->step = n;
     g->laststep_reset = n;
 }

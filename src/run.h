@@ -32,5 +32,12 @@ struct run_stats {
 /* Device state -> host arrays; no-op when no run is active. */
 void run_sync_host(struct gravel *g);
 void engine_destroy(struct gravel *g);
+/* rerun (src/rerun.c): the first snapshot is already in the host atoms;
+ * each is set up and output without integrating, load() then puts the next
+ * one into the host atoms and returns its step (-1: no more). firststep and
+ * laststep are the run's bounds as time-dependent styles and thermo see
+ * them. */
+void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
+               bigint firststep, bigint laststep);
 
 #endif

@@ -40,21 +40,23 @@ enum kw_id {
 #define KIND_VARIABLE (-2)
 #define KIND_FIX (-3)
 
-/* f_ID[N] (N >= 1): the fix ID and N, else 0. Fixes expose global vectors
- * only (struct fix_style.vector). */
+/* f_ID (index 0: the fix's scalar) or f_ID[N] (N >= 1: its vector): the
+ * fix ID and N, else 0. */
 static int fix_parse_ref(const char *ref, char *id, int *index)
 {
     if (strncmp(ref, "f_", 2) != 0)
         return 0;
     const char *s = ref + 2;
     const char *br = strchr(s, '[');
-    if (!br)
-        return 0;
-    size_t n = (size_t)(br - s);
+    size_t n = br ? (size_t)(br - s) : strlen(s);
     if (n == 0 || n >= GR_NAMELEN)
         return 0;
     memcpy(id, s, n);
     id[n] = '\0';
+    if (!br) {
+        *index = 0;
+        return 1;
+    }
     char *end;
     long v = strtol(br + 1, &end, 10);
     if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
@@ -63,15 +65,22 @@ static int fix_parse_ref(const char *ref, char *id, int *index)
     return 1;
 }
 
-/* The fix of a valid f_ID[N] reference with a vector holding N, else an error. */
+/* The fix of a valid f_ID / f_ID[N] reference it can evaluate, else an error. */
 static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
 {
     char id[GR_NAMELEN];
     if (!fix_parse_ref(ref, id, index))
-        gr_error(g, "thermo_style: invalid fix reference '%.64s' (use f_ID[N], N >= 1)", ref);
+        gr_error(g, "thermo_style: invalid fix reference '%.64s' (use f_ID or f_ID[N], N >= 1)",
+                 ref);
     struct fix *f = fix_find(g, id);
     if (!f)
         gr_error(g, "thermo_style: no fix with ID '%.64s' for %.64s", id, ref);
+    if (*index == 0) {
+        if (!f->style->scalar)
+            gr_error(g, "thermo_style: fix %s (%s) does not compute a global scalar", id,
+                     f->style->name);
+        return f;
+    }
     if (!f->style->vector)
         gr_error(g, "thermo_style: fix %s (%s) does not produce a global vector", id,
                  f->style->name);
@@ -81,15 +90,28 @@ static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
     return f;
 }
 
+int thermo_shows_fix_vector(const struct gravel *g, const char *id)
+{
+    size_t n = strlen(id);
+    for (int i = 0; i < g->thermo.ncol; i++) {
+        const char *c = g->thermo.col[i];
+        if (!strncmp(c, "f_", 2) && !strncmp(c + 2, id, n) && c[2 + n] == '[')
+            return 1;
+    }
+    return 0;
+}
+
 static int norm_flag(struct gravel *g);
 
-/* Fix vectors are extensive (sums over atoms, like a mesh's force): divided
+/* Fix scalars and vectors are extensive (sums over atoms, like a mesh's force): divided
  * by the atom count under thermo_modify norm yes, as LAMMPS does. */
 static double fix_ref_value(struct gravel *g, const char *ref)
 {
     int index;
     struct fix *f = fix_ref_check(g, ref, &index);
-    double v = f->style->vector(g, f, index);
+    if (index == 0)
+        run_sync_host(g);
+    double v = index ? f->style->vector(g, f, index) : f->style->scalar(g, f);
     return norm_flag(g) && g->atoms.n > 0 ? v / g->atoms.n : v;
 }
 
@@ -326,8 +348,7 @@ static void check_keyword(struct gravel *g, const char *s)
         char id[GR_NAMELEN];
         int index;
         if (!fix_parse_ref(s, id, &index))
-            gr_error(g, "invalid fix reference '%s' (use f_ID[N], N >= 1: fixes give global "
-                        "vectors)", s);
+            gr_error(g, "invalid fix reference '%s' (use f_ID or f_ID[N], N >= 1)", s);
         if (!fix_find(g, id))
             gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
@@ -702,11 +723,15 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     }
     case KW_KE:
     case KW_ETOTAL: {
-        double ke = kinetic_energy(g);
-        /* pe: granular pair styles and walls have no potential energy */
-        return norm ? ke / natoms : ke;
+        /* pe: granular pair styles and walls have no potential energy; fixes
+         * with fix_modify energy yes (gravity) add theirs, as LAMMPS */
+        double e = kinetic_energy(g) + (k == KW_ETOTAL ? fix_energy_sum(g) : 0.0);
+        return norm ? e / natoms : e;
     }
-    case KW_PE:
+    case KW_PE: {
+        double e = fix_energy_sum(g);
+        return norm ? e / natoms : e;
+    }
     case KW_EPAIR:
     case KW_EMOL: return 0.0;
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
@@ -733,7 +758,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if (k >= 0) {
         bigint iv = 0;
         int isint;
-        if (k == KW_KE || k == KW_ETOTAL || k == KW_TEMP || k == KW_PRESS)
+        if (k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS)
             run_sync_host(g);
         double v = keyword_value(g, k, &iv, &isint);
         *out = isint ? (double)iv : v;
@@ -760,8 +785,16 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         char id[GR_NAMELEN];
         int index;
         struct fix *f;
-        if (!fix_parse_ref(name, id, &index) || !(f = fix_find(g, id)) || !f->style->vector ||
-            index > f->style->size_vector)
+        if (!fix_parse_ref(name, id, &index) || !(f = fix_find(g, id)))
+            return 0;
+        if (index == 0) {
+            if (!f->style->scalar)
+                return 0;
+            run_sync_host(g);
+            *out = f->style->scalar(g, f);
+            return 1;
+        }
+        if (!f->style->vector || index > f->style->size_vector)
             return 0;
         *out = f->style->vector(g, f, index);
         return 1;
@@ -802,9 +835,10 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_TEMP ||
-            st->kind[i] == KW_PRESS || st->kind[i] == KW_THERMO_TEMP ||
-            st->kind[i] == KIND_COMPUTE) {
+        if (st->kind[i] == KW_KE || st->kind[i] == KW_ETOTAL || st->kind[i] == KW_PE ||
+            st->kind[i] == KW_TEMP || st->kind[i] == KW_PRESS ||
+            st->kind[i] == KW_THERMO_TEMP || st->kind[i] == KIND_COMPUTE ||
+            st->kind[i] == KIND_FIX) {
             run_sync_host(g);
             break;
         }

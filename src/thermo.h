@@ -49,6 +49,9 @@ const char *output_format_fix(const char *f, int want_int, char *out);
 /* Resolve the column list (default `one`), check c_ID and v_name references
  * and the formats; errors name thermo_style or thermo_modify. */
 void thermo_init(struct gravel *g);
+/* 1 if a thermo_style column is f_ID[N] of this fix (fixes that compute
+ * their vector only when it is shown ask at run setup). */
+int thermo_shows_fix_vector(const struct gravel *g, const char *id);
 /* Header line ("Step Atoms KinEng ... \n"; empty in multi mode) and one
  * line of values at the current step (state->firstflag marks the run's
  * first line). The text lives in the state and stays valid until the next

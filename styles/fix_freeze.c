@@ -1,12 +1,22 @@
 /* fix_freeze.c - `fix ID group freeze`: zero force and torque of the group
  * after the pair forces (LAMMPS fix_freeze.cpp). The gran pair styles use
  * this group's bit for their effective mass (frozen partner: meff = m of the
- * other particle). At most one freeze fix, as in LAMMPS. */
+ * other particle). At most one freeze fix, as in LAMMPS.
+ * f_ID[1..3] is LAMMPS's global vector: the total force on the group before
+ * it was zeroed at the last force computation. Only when a thermo_style
+ * column shows it (checked at run setup) does the fix keep each atom's force
+ * (a per-atom buffer, its own kernel instead of the fused op); the host sums
+ * the group in tag order. The fused path runs first, so a fix gravity
+ * defined after the freeze fix is still counted (LAMMPS: not counted). */
+#include <stdlib.h>
 #include <string.h>
 
+#include "atoms.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "run.h"
+#include "thermo.h"
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -24,33 +34,71 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 
 struct kern {
     cl_kernel post;
+    int keep;                   /* this run keeps the forces (f_ID[N] shown) */
+    bigint sum_step;            /* step of sum[] (-1: none) */
+    double sum[3];
 };
 
 static void init(struct gravel *g, struct fix *f)
 {
     if (!f->data)
         f->data = gr_calloc(g, 1, sizeof(struct kern));
-    ((struct kern *)f->data)->post = eng_kernel(g, "freeze_post_force");
+    struct kern *k = f->data;
+    k->keep = thermo_shows_fix_vector(g, f->id);
+    k->sum_step = -1;
+    k->post = eng_kernel(g, k->keep ? "freeze_post_force_keep" : "freeze_post_force");
+    f->peratom_bytes = k->keep ? 3 * g->eng->rsz : 0;
 }
 
 static void post_force(struct gravel *g, struct fix *f)
 {
-    cl_kernel k = ((struct kern *)f->data)->post;
+    struct kern *kd = f->data;
+    cl_kernel k = kd->post;
     struct dev_atoms *a = eng_atoms(g);
     eng_arg_int(g, k, 0, a->n);
     eng_arg_uint(g, k, 1, f->groupbit);
     eng_arg_mem(g, k, 2, a->mask);
     eng_arg_mem(g, k, 3, a->f);
     eng_arg_mem(g, k, 4, g->eng->rotation ? a->torque : a->f);
+    if (kd->keep)
+        eng_arg_mem(g, k, 5, f->peratom);
     eng_launch(g, k, (size_t)a->n);
+    kd->sum_step = -1;
 }
 
-/* Fused: f = torque = 0 inside the gather kernel (kernels/fused.cl). */
+/* f_ID[i]: component i of the group's force before zeroing. */
+static double vector(struct gravel *g, struct fix *f, int i)
+{
+    struct kern *kd = f->data;
+    if (!kd || !kd->keep || !f->peratom || !g->eng)
+        gr_error(g, "fix %s (freeze): f_%s[%d] is available as a thermo_style column of a "
+                    "run (the fix keeps the forces only then)",
+                 f->id, f->id, i);
+    if (kd->sum_step != g->step) {
+        run_sync_host(g); /* host order = device order = the buffer's */
+        const struct atoms *a = &g->atoms;
+        double *orig = gr_malloc(g, ((size_t)a->n + 1) * 3 * sizeof(double));
+        eng_read_reals(g, f->peratom, 3 * (size_t)a->n, orig);
+        const int *ord = atoms_tag_order(g);
+        kd->sum[0] = kd->sum[1] = kd->sum[2] = 0.0;
+        for (int k = 0; k < a->n; k++) {
+            int j = ord[k];
+            if (a->mask[j] & f->groupbit)
+                for (int d = 0; d < 3; d++)
+                    kd->sum[d] += orig[3 * j + d];
+        }
+        free(orig);
+        kd->sum_step = g->step;
+    }
+    return kd->sum[i - 1];
+}
+
+/* Fused: f = torque = 0 inside the gather kernel (kernels/fused.cl); not
+ * when this run keeps the forces. */
 static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
 {
     (void)g;
-    (void)f;
-    if (hook != HOOK_POST_FORCE)
+    if (hook != HOOK_POST_FORCE || ((struct kern *)f->data)->keep)
         return 0;
     op->kind = FOP_FREEZE;
     op->nprm = 0;
@@ -64,4 +112,6 @@ const struct fix_style fix_style_freeze = {
     .init = init,
     .post_force = post_force,
     .fuse = fuse,
+    .size_vector = 3,
+    .vector = vector,
 };

@@ -59,6 +59,7 @@ struct wall {
     char region_style[32];      /* the region's style and sub-region count at the */
     int region_nsub;            /* previous run (LAMMPS warns when they change) */
     struct region *region;      /* looked up at every init (region delete) */
+    int inits;                  /* runs set up so far (-compat lammps2021: tsuji) */
     struct wall_region wreg;
     /* restart: the region's previous displacement and angle per node
      * (LAMMPS Region::prev), applied when the region matches at init */
@@ -367,6 +368,11 @@ static void init(struct gravel *g, struct fix *f)
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
+    /* -compat lammps2021: FixWallGran::init converts a tsuji restitution at
+     * every run, so each later run converts the converted value again */
+    if (w->inits++ > 0 && g->opt.lammps2021 && w->model == M_GRANULAR &&
+        (int)w->param[GR_DMODEL] == GR_D_TSUJI)
+        w->param[GR_DAMP] = granular_tsuji(w->param[GR_DAMP]);
     /* parameters: re-uploaded every run (precision may change between runs) */
     if (w->law.param)
         clReleaseMemObject(w->law.param);

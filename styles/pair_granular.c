@@ -110,6 +110,12 @@ static int in_list(const char *s, const char *const *list)
     return 0;
 }
 
+double granular_tsuji(double e)
+{
+    return 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e + 27.467 * pow(e, 4) -
+           18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
+}
+
 int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                    const char *const *stop, int allow_cutoff, const char *who)
 {
@@ -219,11 +225,8 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     }
     if (o.nm < 0 || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
-    if (o.dm == GR_D_TSUJI) {
-        double e = o.damp;
-        o.damp = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e +
-                 27.467 * pow(e, 4) - 18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
-    }
+    if (o.dm == GR_D_TSUJI)
+        o.damp = granular_tsuji(o.damp);
     if (o.ld && o.nm == GR_N_JKR)
         gr_error(g, "Illegal %.*s command, Cannot limit damping with JKR model",
                  (int)strcspn(who, " "), who);
@@ -403,6 +406,29 @@ static int history_size(const struct pair *p)
     return uses(p).width;
 }
 
+/* LAMMPS 2021 init_one: r_i + r_j plus the (negative) JKR pull-off overlap,
+ * or the pair's cutoff, or the style's global one */
+static double lammps2021_cut(const struct pair *p, int i, int j, double ri, double rj)
+{
+    const struct gr_one *o = at(p->data, i, j);
+    if (o->cutoff >= 0)
+        return o->cutoff;
+    if (p->coef[0] >= 0)
+        return p->coef[0];
+    double c = ri + rj;
+    if (o->nm == GR_N_JKR && ri + rj > 0)
+        c += pulloff(o, ri * rj / (ri + rj));
+    return c;
+}
+
+/* Rolling and twisting history are adjacent (uses()) */
+static int lammps2021_flip(const struct pair *p, int *first)
+{
+    struct gr_use u = uses(p);
+    *first = u.h_roll >= 0 ? u.h_roll : u.h_twist;
+    return (u.h_roll >= 0 ? 3 : 0) + (u.h_twist >= 0 ? 1 : 0);
+}
+
 static int beyond(const struct pair *p)
 {
     return (uses(p).n >> GR_N_JKR) & 1;
@@ -460,6 +486,8 @@ const struct pair_style pair_style_granular = {
     .defines = defines,
     .history_size = history_size,
     .beyond = beyond,
+    .lammps2021_flip = lammps2021_flip,
+    .lammps2021_cut = lammps2021_cut,
     .reach = reach,
     .destroy = destroy,
 };

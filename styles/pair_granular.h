@@ -27,5 +27,7 @@ int granular_parse(struct gravel *g, struct gr_one *o, int argc, char **argv,
                    const char *const *stop, int allow_cutoff, const char *who);
 /* The GR_NPARAM coefficients of o (kernels/param_layout.h). */
 void granular_pack(const struct gr_one *o, double *q);
+/* Tsuji's damping coefficient for restitution e (LAMMPS's polynomial fit). */
+double granular_tsuji(double e);
 
 #endif

@@ -270,7 +270,9 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_style one extra\n", "takes no keywords", 1);
     FX_CHECK_ERROR("thermo_style custom step c_\n", "invalid compute reference", 1);
     FX_CHECK_ERROR("thermo_style custom step c_a[0]\n", "invalid compute reference", 1);
-    FX_CHECK_ERROR("thermo_style custom f_1\n", "invalid fix reference", 1);
+    FX_CHECK_ERROR("thermo_style custom f_1[0]\n", "invalid fix reference", 1);
+    FX_CHECK_ERROR("thermo_style custom f_\n", "invalid fix reference", 1);
+    FX_CHECK_ERROR("thermo_style custom f_1\n", "could not find thermo custom fix ID '1'", 1);
     FX_CHECK_ERROR("\nthermo_modify format float %d\n", "format float '%d' must convert a float", 2);
     FX_CHECK_ERROR("thermo_modify format int %5.2f\n", "must convert an integer", 1);
     FX_CHECK_ERROR("thermo_modify format int %d%d\n", "exactly one conversion", 1);
