@@ -50,6 +50,9 @@ struct contact {
     REAL meff;          /* effective mass (LAMMPS: frozen partner -> other mass) */
     REAL dt;            /* time step */
     int shearupdate;    /* 0 during setup: history is not advanced */
+    int approach;       /* 1: the caller also evaluates pairs apart that one
+                         * drift at their normal rate brings into or out of
+                         * contact (PAIR_APPROACH, contact_normal_linear) */
 };
 
 /* What an evaluator returns for one contact: the force on i (the force on j
@@ -88,6 +91,7 @@ static inline struct contact contact_make(const REAL3 del, const REAL radi, cons
     c.omi = omi;
     c.omj = omj;
     c.meff = meff;
+    c.approach = 0;
     return c;
 }
 

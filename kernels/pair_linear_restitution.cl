@@ -6,10 +6,11 @@
  * u_t = vr - u_n (minus the rotational contact velocity when torque is on):
  *   eta   = ceta sqrt(m*),  t_col = ctcol sqrt(m*)     (host-precomputed)
  *   F_n   = (ke delta - eta vr.n) n                    [force units]
- * integrated over each step as a two-body impulse (kernels/contact_normal.cl:
- * exact energy for the spring, exact impulse for the dashpot (its coefficient
- * corrected for the scheme's restitution error at large damping), at the partial
- * steps where the contact starts and ends too; ke delta inside the contact).
+ * integrated exactly over each step for two bodies (kernels/contact_normal.cl,
+ * contact_normal_linear: the closed-form solution, with a pre-contact kick on
+ * pairs one drift from contact; c->approach, set by callers that evaluate
+ * those pairs: the pair loop and fix wall/pair's plane and mesh kernels), else
+ * (hybrid/overlay) as contact_normal_force's second-order two-body impulse.
  *   F_t   = -u_t/|u_t| min(kf |u_t| t_col, mu |F_n|)
  * The normal force is not clamped at zero: the analytic solution of 000 A.1
  * (and the restitution it returns) includes the attractive end of the dashpot.
@@ -33,8 +34,11 @@ static inline void linear_restitution_eval(const struct contact *c,
     const REAL tcol = ctcol * sm;
 
     const REAL vn = dot(c->vr, n);
-    const REAL fnmag = contact_normal_force(NORMAL_LINEAR, (REAL)0.5 * ke, eta, delta, -vn,
-                                            c->meff, c->dt);
+    const REAL fnmag =
+        c->approach ? contact_normal_linear(eta, tcol, delta, -vn, c->meff, c->dt, c->radsum,
+                                            !c->shearupdate)
+                    : contact_normal_force(NORMAL_LINEAR, (REAL)0.5 * ke, eta, delta, -vn, c->meff,
+                                           c->dt);
     REAL3 ut = c->vr - vn * n;
     if (torque != (REAL)0) {
         /* relative velocity of the contact points: + n x (radi omi + radj omj) */

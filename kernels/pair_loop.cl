@@ -43,6 +43,21 @@ static inline struct contact pair_contact(const int i, const int j, const REAL3 
                         omi, omj, meff);
 }
 
+#ifdef PAIR_APPROACH
+/* |normal rate| dt > gap: the next drift at this rate closes the gap, or
+ * the last one opened it (the pair is apart: rsq >= radsum^2) */
+static inline int pair_within_drift(const int i, const int j, const REAL3 del, const REAL rsq,
+                                    const REAL radsum, __global const REAL *v, const REAL dt)
+{
+    const REAL dv = fabs(dot(vload3(i, v) - vload3(j, v), del)) * dt;
+    /* r (r - radsum) >= (rsq - radsum^2) / 2: most pairs leave without the sqrt */
+    if (dv <= (REAL)0.5 * (rsq - radsum * radsum))
+        return 0;
+    const REAL r = sqrt(rsq);
+    return dv > r * (r - radsum);
+}
+#endif
+
 __kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,
                             __global const int *cslot,
                             __global const REAL *x, __global const REAL *v,
@@ -88,10 +103,19 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     touch = 1;
 #else
     const REAL radsum = radi + radj;
-    if (dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z < radsum * radsum) {
+    const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;
+    if (rsq < radsum * radsum) {
         k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
         touch = contact_refine(&k, del_lo);
     }
+#ifdef PAIR_APPROACH /* also pairs apart that one drift at their normal rate
+                      * brings into or out of contact (contact_normal_linear) */
+    if (!touch && pair_within_drift(i, j, dtest, rsq, radsum, v, dt)) {
+        k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
+        contact_refine(&k, del_lo);
+        touch = 1;
+    }
+#endif
 #endif
 #ifdef VREMAP /* the partner's image streams with the box (LAMMPS's ghost velocities) */
     if (touch && (mask[j] & vgroup))
@@ -111,6 +135,9 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     } else {
         k.dt = dt;
         k.shearupdate = shearupdate;
+#if defined(PAIR_APPROACH) && !defined(HAS_COHESION)
+        k.approach = 1;
+#endif
         __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
 #ifdef PAIR_EVAL_ROW /* history of any width: the evaluator takes the whole row */
         REAL h[HIST_N];

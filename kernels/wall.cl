@@ -99,9 +99,13 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         __global REAL *torque, __global REAL *history, const int has_history,                  \
         __global REAL *acc, __global int *astep, const int acode, const int step
 
-#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0)
-#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1)
-#define WALL_KERNEL_HW(NAME, EVAL, ROW)                                                        \
+#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0, 0)
+#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1, 0)
+/* APPROACH 1: EVAL also takes planes the sphere is apart from that one
+ * drift at its normal rate brings into or out of contact (c.approach set;
+ * pair_style approach, linear/restitution with fix wall/pair, which has no
+ * cylinder: a cylinder acts only on spheres it touches) */
+#define WALL_KERNEL_HW(NAME, EVAL, ROW, APPROACH)                                              \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
@@ -138,12 +142,15 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
             const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
             struct contact c;                                                                  \
             int touch = acts && (inclusive ? rsq <= radi * radi : rsq < radi * radi);          \
-            if (touch) {                                                                       \
+            const int near_ = APPROACH && acts && !touch &&                                    \
+                              wall_within_drift(vload3(i, v) - vwall, dtest, rsq, radi, dt);   \
+            if (touch || near_) {                                                              \
                 WALL_OMEGA(omi, omega, i);                                                     \
                 c = contact_make(del, radi, 0,                                                 \
                                  rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
                                  vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
-                touch = contact_refine(&c, del_lo);                                            \
+                touch = contact_refine(&c, del_lo) || APPROACH;                                \
+                c.approach = APPROACH;                                                         \
             }                                                                                  \
             __global REAL *hrow = history + slot * (size_t)has_history;                        \
             if (!touch) {                                                                      \
@@ -155,13 +162,23 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
             c.shearupdate = shearupdate;                                                       \
             struct contact_force cf;                                                           \
             WALL_CALL(ROW, EVAL, &c, p, hrow, has_history, &cf);                               \
-            ACC_NOTE_WALL(EVAL, i, &c, p, acode, acc, astep, step);                            \
+            if (!APPROACH || c.delta > (REAL)0)                                                \
+                ACC_NOTE_WALL(EVAL, i, &c, p, acode, acc, astep, step);                        \
             fsum += cf.f;                                                                      \
             tsum += contact_torque_i(&c, &cf);                                                 \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
+
+/* |normal rate| dt > gap for a sphere apart from its wall element (the gap
+ * |dtest| - radi > 0): pair_within_drift's test */
+static inline int wall_within_drift(const REAL3 vrel, const REAL3 dtest, const REAL rsq,
+                                    const REAL radi, const REAL dt)
+{
+    const REAL r = sqrt(rsq);
+    return fabs(dot(vrel, dtest)) * dt > r * (r - radi);
+}
 
 /* One evaluation with the contact's history row hrow of hw REAL (0: none):
  * ROW 0 an evaluator of a 3-REAL shear (REAL3 *), ROW 1 one of the whole
@@ -201,7 +218,11 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
 
 /* fix wall/pair: the active pair style's law */
 #ifdef PAIR_EVAL
+#ifdef PAIR_APPROACH
+WALL_KERNEL_HW(wall_pair, PAIR_EVAL, 0, 1)
+#else
 WALL_KERNEL(wall_pair, PAIR_EVAL)
+#endif
 #endif
 
 /* ---- mesh walls: triangles (fix mesh/surface, fix wall/gran ... mesh) ------
@@ -298,6 +319,20 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
     return by_type ? param + (size_t)(ti * ntypes + (by_type - 1)) * nparam : param;
 }
 
+/* wall_within_drift for a triangle: del (mesh frame) from its closest
+ * point, the surface velocity of a moving mesh taken there */
+static inline int mesh_within_drift(__global const REAL *pose, const int moving, const REAL3 xi,
+                                    const REAL3 vi, const REAL3 del, const REAL rsq,
+                                    const REAL radi, const REAL dt)
+{
+    REAL3 vb = vi;
+    if (moving) {
+        const REAL3 dw = mat_mul(pose, del);
+        vb = mat_tmul(pose, vi - (vload3(4, pose) + cross(vload3(5, pose), xi - dw)));
+    }
+    return wall_within_drift(vb, del, rsq, radi, dt);
+}
+
 /* One work-item per atom of the group, one launch per mesh. The mesh is
  * rigid: its triangles and their bins stay in the mesh's own frame and the
  * atom is taken there, xb = R^T (x - d) (pose: R row-major 0..8, d 9..11,
@@ -315,7 +350,11 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
  * shares a vertex with it, so the shear follows a particle sliding from
  * triangle to triangle. fmesh (want_fmesh): per atom the force on the mesh
  * (3) and its torque about the reference point (3), for f_ID output. */
-#define MESH_KERNEL(NAME, EVAL)                                                                \
+#define MESH_KERNEL(NAME, EVAL) MESH_KERNEL_A(NAME, EVAL, 0)
+/* APPROACH 1: triangles the sphere is apart from that one drift at its
+ * normal rate brings into or out of contact count too (as WALL_KERNEL_HW;
+ * fix mesh/surface then bins the triangles with the neighbor skin added) */
+#define MESH_KERNEL_A(NAME, EVAL, APPROACH)                                                    \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
@@ -352,7 +391,9 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
                 REAL3 del;                                                                     \
                 const int region = tri_closest(tri, t, xb, &del);                              \
                 const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                \
-                if (inclusive ? rsq > radi * radi : rsq >= radi * radi)                        \
+                if ((inclusive ? rsq > radi * radi : rsq >= radi * radi) &&                    \
+                    !(APPROACH && mesh_within_drift(pose, moving, xi, vload3(i, v), del, rsq,  \
+                                                    radi, dt)))                                \
                     continue;                                                                  \
                 tc[nc] = t;                                                                    \
                 rc[nc] = region;                                                               \
@@ -425,12 +466,14 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             WALL_OMEGA(omi, omega, i);                                                         \
             struct contact ct = contact_make(del, radi, 0, radi, vload3(i, v) - vwall, omi,    \
                                              moving ? vload3(5, pose) : (REAL3)(0), rmass[i]); \
+            ct.approach = APPROACH;                                                            \
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
             struct contact_force cf;                                                           \
             __global const REAL *pc = p_of(param, by_type, type[i] - 1, ntypes, nparam);       \
             EVAL(&ct, pc, &sh, &cf);                                                           \
-            ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                          \
+            if (!APPROACH || ct.delta > (REAL)0)                                               \
+                ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                      \
             if (has_history && nnew < MESH_SLOTS) {                                            \
                 nkey[nnew] = (REAL)(t + 1);                                                    \
                 nsh[nnew++] = sh;                                                              \
@@ -459,5 +502,9 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
 
 /* fix wall/pair ... mesh: the active pair style's law against triangles */
 #ifdef PAIR_EVAL
+#ifdef PAIR_APPROACH
+MESH_KERNEL_A(mesh_pair, PAIR_EVAL, 1)
+#else
 MESH_KERNEL(mesh_pair, PAIR_EVAL)
+#endif
 #endif

@@ -451,7 +451,8 @@ int pair_defines(const struct pair *p, char *buf, size_t len)
 {
     if (p->style->defines)
         return p->style->defines(p, buf, len);
-    int n = snprintf(buf, len, " -D PAIR_EVAL=%s", p->style->eval);
+    int n = snprintf(buf, len, " -D PAIR_EVAL=%s%s", p->style->eval,
+                     p->style->approach ? " -D PAIR_APPROACH" : "");
     if (p->style->energy && n >= 0 && (size_t)n < len)
         n += snprintf(buf + n, len - (size_t)n, " -D PAIR_ENERGY=%s", p->style->energy);
     if (n >= 0 && (size_t)n < len)

@@ -52,6 +52,11 @@ struct pair_style {
      * pair and the evaluator gates itself; the neighbor cut-off grows to
      * reach(). Contact styles (0) are called only for touching pairs. */
     int beyond_contact;
+    /* 1: the evaluator also takes pairs (and plane and cylinder wall
+     * elements) apart that one drift at their normal rate brings into or
+     * out of contact, with c->approach set (build option PAIR_APPROACH;
+     * linear/restitution's exact two-body impulse, kernels/contact_normal.cl). */
+    int approach;
     /* Largest centre distance at which this style acts, for a pair of radius
      * sum `radsum`: an affine upper bound A + B radsum over all type pairs. */
     double (*reach)(const struct pair *p, double radsum);

@@ -31,6 +31,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "pair.h"
 
 static void compute_normals(struct gravel *g, struct mesh_surface *ms)
 {
@@ -217,6 +218,10 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
     double reach = eng_get(g)->insert_rmax; /* atoms fix pour may insert */
     for (int i = 0; i < g->atoms.n; i++)
         reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
+    /* a pair style that takes contacts one drift away (linear/restitution)
+     * needs the triangles within the skin of the atom's bin too */
+    if (g->styles.pair && g->styles.pair->style->approach)
+        reach += g->neigh.skin;
     reach *= 1.0 + 1e-6;
     char who[GR_NAMELEN + 32];
     snprintf(who, sizeof who, "fix %s (%s mesh)", f->id, f->style->name);

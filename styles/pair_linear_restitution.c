@@ -109,6 +109,7 @@ const struct pair_style pair_style_linear_restitution = {
     .eval = "linear_restitution_eval",
     .history = 0,
     .rotation = 0,
+    .approach = 1,
     .nparam = LR_NPARAM,
     .settings = settings,
     .pack = pack,
