@@ -99,9 +99,12 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         __global REAL *torque, __global REAL *history, const int has_history,                  \
         __global REAL *acc, __global int *astep, const int acode, const int step
 
-#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0)
-#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1)
-#define WALL_KERNEL_HW(NAME, EVAL, ROW)                                                        \
+#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0, 0)
+#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1, 0)
+/* JKR 1: a jkr wall (kernels/fix_wall_gran.cl WALL_JKR_1): the contact reaches
+ * to WALL_REACH beyond touch and is held there only once it has touched (the
+ * touch flag of its history row); JKR 0 folds both away. */
+#define WALL_KERNEL_HW(NAME, EVAL, ROW, JKR)                                                   \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
@@ -137,15 +140,18 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
             const REAL3 dtest = del + del_lo;                                                  \
             const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
             struct contact c;                                                                  \
-            int touch = acts && (inclusive ? rsq <= radi * radi : rsq < radi * radi);          \
+            const REAL reach = WALL_REACH(JKR, p, radi);                                       \
+            int touch = acts && (inclusive ? rsq <= reach * reach : rsq < reach * reach);      \
+            __global REAL *hrow = history + slot * (size_t)has_history;                        \
+            if (JKR && touch && !WALL_TOUCHED(JKR, p, hrow) && rsq > radi * radi)              \
+                touch = 0; /* not touched yet: no hold beyond touch */                         \
             if (touch) {                                                                       \
                 WALL_OMEGA(omi, omega, i);                                                     \
                 c = contact_make(del, radi, 0,                                                 \
                                  rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
                                  vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
-                touch = contact_refine(&c, del_lo);                                            \
+                touch = contact_refine(&c, del_lo) || JKR;                                     \
             }                                                                                  \
-            __global REAL *hrow = history + slot * (size_t)has_history;                        \
             if (!touch) {                                                                      \
                 for (int q = 0; q < has_history; q++)                                          \
                     hrow[q] = 0;                                                               \
@@ -162,6 +168,16 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
+
+/* The reach of a wall contact (radi; a jkr wall's: WALL_REACH_1) and the
+ * touch flag of its history row (WALL_TOUCHED_1), both defined where a jkr
+ * kernel is instantiated (kernels/fix_wall_gran.cl). */
+#define WALL_REACH(JKR, p, radi) WALL_REACH_PASTE(JKR)(p, radi)
+#define WALL_REACH_PASTE(JKR) WALL_REACH_##JKR
+#define WALL_REACH_0(p, radi) (radi)
+#define WALL_TOUCHED(JKR, p, hrow) WALL_TOUCHED_PASTE(JKR)(p, hrow)
+#define WALL_TOUCHED_PASTE(JKR) WALL_TOUCHED_##JKR
+#define WALL_TOUCHED_0(p, hrow) 1
 
 /* One evaluation with the contact's history row hrow of hw REAL (0: none):
  * ROW 0 an evaluator of a 3-REAL shear (REAL3 *), ROW 1 one of the whole

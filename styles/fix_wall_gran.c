@@ -144,9 +144,6 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     for (int k = 0; k + 2 < n; k++)
         if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
             kt_null = 1;
-    if (o.nm == GR_N_JKR)
-        gr_error(g, "fix wall/gran granular: the jkr normal model is not supported for walls "
-                    "(use hooke, hertz, hertz/material or dmt)");
     /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
      * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
      * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
@@ -165,7 +162,9 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
                            ? off++ : -1;
     w->param[GRW_HROLL] = o.rm == GR_R_SDS ? (off += 3) - 3 : -1;
     w->param[GRW_HTWIST] = o.wm != GR_W_NONE ? off++ : -1;
-    w->param[GRW_HTOUCH] = -1;
+    /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
+    w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
+    w->param[GRW_JKR2021] = g->opt.lammps2021;
     w->param[GRW_WIDTH] = off;
     w->history = off;
     return n;
@@ -362,9 +361,15 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, (w->style == W_MESH     ? mesh_kernel
-                                   : w->style == W_REGION ? region_kernel
-                                                          : model_kernel)[w->model]);
+    const char *kname = (w->style == W_MESH     ? mesh_kernel
+                         : w->style == W_REGION ? region_kernel
+                                                : model_kernel)[w->model];
+    char kjkr[64];
+    if (w->model == M_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR) {
+        snprintf(kjkr, sizeof kjkr, "%s_jkr", kname); /* held beyond touch */
+        kname = kjkr;
+    }
+    w->law.kernel = eng_kernel(g, kname);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
