@@ -59,6 +59,7 @@ WALL_KERNEL_HW(wall_gran_granular_jkr, wall_granular_eval, 1, 1)
 MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
 MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_eval)
 MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)
+MESH_KERNEL_ROW(mesh_gran_granular, wall_granular_eval)
 
 /* region walls (fix wall/gran/region): the same laws against region surfaces */
 REGION_KERNEL(region_gran_hooke, gran_hooke_eval)

@@ -326,12 +326,16 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
  * edge or vertex contact is dropped when another touching triangle that has
  * a vertex of that edge or vertex is closer (ties: the lower triangle id
  * keeps it), i.e. the contact belongs to the nearest feature. History lives
- * in MESH_SLOTS slots per atom keyed by triangle; a contact whose triangle
+ * in MESH_SLOTS slots per atom keyed by triangle (1 + hw REAL each: the key,
+ * then the law's hw = 3 REAL of shear, or for ROW 1 the has_history REAL of
+ * pair granular's sub-models, kernels/fix_wall_gran.cl); a contact whose triangle
  * has no slot takes over the slot of a triangle that no longer counts and
  * shares a vertex with it, so the shear follows a particle sliding from
  * triangle to triangle. fmesh (want_fmesh): per atom the force on the mesh
  * (3) and its torque about the reference point (3), for f_ID output. */
-#define MESH_KERNEL(NAME, EVAL)                                                                \
+#define MESH_KERNEL(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 0)
+#define MESH_KERNEL_ROW(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 1)
+#define MESH_KERNEL_HW(NAME, EVAL, ROW)                                                        \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
@@ -395,16 +399,18 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
                 }                                                                              \
             }                                                                                  \
         }                                                                                      \
+        const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */     \
         REAL okey[MESH_SLOTS];                                                                 \
-        REAL3 osh[MESH_SLOTS];                                                                 \
+        REAL osh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
         __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;     \
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
-                okey[s] = hist[4 * s];                                                         \
-                osh[s] = (REAL3)(hist[4 * s + 1], hist[4 * s + 2], hist[4 * s + 3]);           \
+                okey[s] = hist[(1 + hw) * s];                                                  \
+                for (int q = 0; q < hw; q++)                                                   \
+                    osh[s][q] = hist[(1 + hw) * s + 1 + q];                                    \
             }                                                                                  \
         REAL nkey[MESH_SLOTS];                                                                 \
-        REAL3 nsh[MESH_SLOTS];                                                                 \
+        REAL nsh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
         int nnew = 0;                                                                          \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);         \
         const REAL3 rref = (REAL3)(pose[22], pose[23], pose[24]);                              \
@@ -417,7 +423,9 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             REAL3 vwall = (REAL3)(0);                                                          \
             if (moving)                                                                        \
                 vwall = vload3(4, pose) + cross(vload3(5, pose), cpt);                         \
-            REAL3 sh = (REAL3)(0);                                                             \
+            REAL sh[MESH_HMAX(ROW)];                                                           \
+            for (int q = 0; q < MESH_HMAX(ROW); q++)                                           \
+                sh[q] = 0;                                                                     \
             if (has_history) {                                                                 \
                 int found = -1;                                                                \
                 for (int s = 0; s < MESH_SLOTS; s++)                                           \
@@ -434,7 +442,8 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
                         found = s;                                                             \
                 }                                                                              \
                 if (found >= 0) {                                                              \
-                    sh = osh[found];                                                           \
+                    for (int q = 0; q < hw; q++)                                               \
+                        sh[q] = osh[found][q];                                                 \
                     okey[found] = 0; /* taken */                                               \
                 }                                                                              \
             }                                                                                  \
@@ -445,11 +454,13 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
             ct.shearupdate = shearupdate;                                                      \
             struct contact_force cf;                                                           \
             __global const REAL *pc = p_of(param, by_type, type[i] - 1, ntypes, nparam);       \
-            EVAL(&ct, pc, &sh, &cf);                                                           \
+            MESH_EVAL(ROW, EVAL, &ct, pc, sh, &cf);                                            \
             ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                          \
             if (has_history && nnew < MESH_SLOTS) {                                            \
                 nkey[nnew] = (REAL)(t + 1);                                                    \
-                nsh[nnew++] = sh;                                                              \
+                for (int q = 0; q < hw; q++)                                                   \
+                    nsh[nnew][q] = sh[q];                                                      \
+                nnew++;                                                                        \
             }                                                                                  \
             fsum += cf.f;                                                                      \
             tsum += contact_torque_i(&ct, &cf);                                              \
@@ -459,10 +470,9 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
                 const int used = s < nnew;                                                     \
-                hist[4 * s] = used ? nkey[s] : (REAL)0;                                        \
-                hist[4 * s + 1] = used ? nsh[s].x : (REAL)0;                                   \
-                hist[4 * s + 2] = used ? nsh[s].y : (REAL)0;                                   \
-                hist[4 * s + 3] = used ? nsh[s].z : (REAL)0;                                   \
+                hist[(1 + hw) * s] = used ? nkey[s] : (REAL)0;                                 \
+                for (int q = 0; q < hw; q++)                                                   \
+                    hist[(1 + hw) * s + 1 + q] = used ? nsh[s][q] : (REAL)0;                   \
             }                                                                                  \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
@@ -472,6 +482,25 @@ static inline __global const REAL *p_of(__global const REAL *param, const int by
         }                                                                                      \
     }
 
+
+/* A mesh contact's evaluation with its history sh (MESH_HMAX(ROW) REAL): ROW 0
+ * a 3-REAL shear evaluator (REAL3 *), ROW 1 one of the whole row (pair
+ * granular's sub-models, the wall's width). */
+#define MESH_HMAX(ROW) MESH_HMAX_PASTE(ROW)
+#define MESH_HMAX_PASTE(ROW) MESH_HMAX_##ROW
+#define MESH_HMAX_0 3
+#define MESH_HMAX_1 WALL_HMAX
+#define MESH_EVAL(ROW, EVAL, c, p, sh, cf) MESH_EVAL_PASTE(ROW)(EVAL, c, p, sh, cf)
+#define MESH_EVAL_PASTE(ROW) MESH_EVAL_##ROW
+#define MESH_EVAL_0(EVAL, c, p, sh, cf)                                                        \
+    do {                                                                                       \
+        REAL3 s3_ = (REAL3)((sh)[0], (sh)[1], (sh)[2]);                                        \
+        EVAL(c, p, &s3_, cf);                                                                  \
+        (sh)[0] = s3_.x;                                                                       \
+        (sh)[1] = s3_.y;                                                                       \
+        (sh)[2] = s3_.z;                                                                       \
+    } while (0)
+#define MESH_EVAL_1(EVAL, c, p, sh, cf) EVAL(c, p, sh, cf)
 
 /* fix wall/pair ... mesh: the active pair style's law against triangles */
 #ifdef PAIR_EVAL

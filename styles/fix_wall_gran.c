@@ -71,7 +71,7 @@ struct wall {
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history", "wall_gran_granular"};
 static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
-                                          "mesh_gran_hertz_history", NULL};
+                                          "mesh_gran_hertz_history", "mesh_gran_granular"};
 static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
                                             "region_gran_hertz_history",
                                             "region_gran_granular"};
@@ -269,9 +269,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (w.style == W_REGION && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
                     "and rotate keywords)");
-    if (w.style == W_MESH && w.model == M_GRANULAR)
-        gr_error(g, "fix wall/gran mesh: model granular is not supported for meshes (use "
-                    "hooke, hooke/history or hertz/history)");
+    if (w.style == W_MESH && w.model == M_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
+        gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
+                    "meshes (hooke, hertz, hertz/material or dmt are)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
