@@ -22,8 +22,9 @@
  * wall. Model granular (`granular <sub-models> wallstyle ...`) takes pair
  * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
  * and a history row of its sub-models' width per wall element / region slot
- * (parse_granular). Unsupported LAMMPS options (granular jkr, keyword
- * contacts) are rejected with a clear error. */
+ * (parse_granular); jkr walls hold beyond touch to the pull-off distance
+ * (kernels *_jkr). Meshes take model granular too (not jkr). Unsupported
+ * LAMMPS options (keyword contacts) are rejected with a clear error. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -234,6 +235,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         i += 2;
     } else if (!strcmp(ws, "mesh")) {
         /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
+        if (w.model == M_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
+            gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
+                        "meshes (hooke, hertz, hertz/material or dmt are)");
         w.style = W_MESH;
         i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
                                     "fix wall/gran mesh");
@@ -269,9 +273,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (w.style == W_REGION && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
                     "and rotate keywords)");
-    if (w.style == W_MESH && w.model == M_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
-        gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
-                    "meshes (hooke, hertz, hertz/material or dmt are)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
