@@ -319,7 +319,7 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
                              __global const uint *mask, const REAL Lx, const REAL Ly,
                              const REAL Lz, const REAL skin, const int ntypes,
                              __global const int *excl_type, const int nexg,
-                             __global const uint *excl_group)
+                             __global const uint *excl_group, __global const long *mol)
 {
     if (j == i)
         return 0;
@@ -340,9 +340,14 @@ static inline int nbr_accept(const int i, const REAL3 xi, const REAL radi, const
         return 0;
     const uint mj = mask[j];
     for (int q = 0; q < nexg; q++) {
-        const uint g1 = excl_group[2 * q], g2 = excl_group[2 * q + 1];
-        if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
-            return 0;
+        const uint g1 = excl_group[3 * q], g2 = excl_group[3 * q + 1];
+        const uint kind = excl_group[3 * q + 2];
+        if (kind == 0) {
+            if (((mi & g1) && (mj & g2)) || ((mi & g2) && (mj & g1)))
+                return 0;
+        } else if ((mi & g1) && (mj & g1) && ((mol[i] == mol[j]) == (kind == 1))) {
+            return 0; /* molecule/intra (same ID, 0 included) or molecule/inter */
+        }
     }
     return 1;
 }
@@ -382,7 +387,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                         const REAL Lz, const REAL skin, const int maxn, __global int *nlist,
                         __global int *ncount, __global int *nown, __global int *flags,
                         const int ntypes, __global const int *excl_type, const int nexg,
-                        __global const uint *excl_group)
+                        __global const uint *excl_group, __global const long *mol)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -410,7 +415,7 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
                     if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
-                                   skin, ntypes, excl_type, nexg, excl_group))
+                                   skin, ntypes, excl_type, nexg, excl_group, mol))
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
@@ -564,7 +569,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                               __global int *nlist, __global int *ncount, __global int *nown,
                               __global int *flags, const int ntypes,
                               __global const int *excl_type, const int nexg,
-                              __global const uint *excl_group)
+                              __global const uint *excl_group, __global const long *mol)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -596,7 +601,7 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
                                 const int j = sorted ? jj : cellatoms[jj];
                                 if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask,
                                                Lx, Ly, Lz, skin, ntypes, excl_type, nexg,
-                                               excl_group))
+                                               excl_group, mol))
                                     nbr_row_append(row, &cnt, &own, maxn, tag, j, tagi);
                             }
                         }

@@ -33,6 +33,7 @@ void atoms_reserve(struct gravel *g, int n)
     GROW(a->radius, double, 1);
     GROW(a->rmass, double, 1);
     GROW(a->image, int, 3);
+    GROW(a->mol, int64_t, 1);
     a->cap = cap;
 }
 
@@ -57,6 +58,7 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
     }
     a->radius[i] = radius;
     a->rmass[i] = rmass;
+    a->mol[i] = 0;
     return i;
 }
 
@@ -71,6 +73,7 @@ void atoms_remove(struct gravel *g, int i)
     a->mask[i] = a->mask[last];
     a->radius[i] = a->radius[last];
     a->rmass[i] = a->rmass[last];
+    a->mol[i] = a->mol[last];
     for (int k = 0; k < 3; k++) {
         a->x[3 * i + k] = a->x[3 * last + k];
         a->v[3 * i + k] = a->v[3 * last + k];
@@ -107,6 +110,7 @@ void atoms_free(struct atoms *a)
     free(a->radius);
     free(a->rmass);
     free(a->image);
+    free(a->mol);
     free(a->order);
     free(a->type_mass);
     memset(a, 0, sizeof *a);

@@ -295,7 +295,7 @@ static void choose_origin(struct gravel *g)
 static void release_set(struct dev_atoms *s)
 {
     cl_mem *m[] = {&s->x, &s->xlo, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
-                   &s->rmass, &s->type, &s->mask, &s->tag, &s->image};
+                   &s->rmass, &s->type, &s->mask, &s->tag, &s->image, &s->mol};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         if (*m[i]) {
             clReleaseMemObject(*m[i]);
@@ -322,6 +322,8 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
     s->mask = eng_alloc(g, n * sizeof(cl_uint), "group masks");
     s->tag = eng_alloc(g, n * sizeof(cl_long), "tags");
     s->image = eng_alloc(g, 3 * n * sizeof(cl_int), "image flags");
+    if (g->atoms.molecule_flag)
+        s->mol = eng_alloc(g, n * sizeof(cl_long), "molecule IDs");
 }
 
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
@@ -330,7 +332,8 @@ void eng_reserve(struct gravel *g, int n)
 {
     struct engine *e = g->eng;
     int rot_have = e->a.x && (e->a.omega != NULL);
-    if (n <= e->cap && e->a.x && rot_have == e->rotation)
+    int mol_have = e->a.mol != NULL;
+    if (n <= e->cap && e->a.x && rot_have == e->rotation && mol_have == g->atoms.molecule_flag)
         return;
     int cap = n > 16 ? n + n / 8 : 16;
     release_set(&e->a);
@@ -375,6 +378,8 @@ void eng_upload(struct gravel *g)
     eng_write(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
     eng_write(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
     eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
+    if (s->mol)
+        eng_write(g, s->mol, 0, (size_t)n * sizeof(cl_long), at->mol);
     /* per-atom state of fixes: keep while the atoms are the same, else zero */
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
@@ -424,6 +429,8 @@ void eng_append(struct gravel *g, int nold)
     eng_write(g, s->mask, o * sizeof(cl_uint), c * sizeof(cl_uint), at->mask + o);
     eng_write(g, s->tag, o * sizeof(cl_long), c * sizeof(cl_long), at->tag + o);
     eng_write(g, s->image, 3 * o * sizeof(cl_int), 3 * c * sizeof(cl_int), at->image + 3 * o);
+    if (s->mol)
+        eng_write(g, s->mol, o * sizeof(cl_long), c * sizeof(cl_long), at->mol + o);
     cl_uint zero = 0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
@@ -462,6 +469,8 @@ void run_sync_host(struct gravel *g)
     eng_read(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
     eng_read(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
     eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
+    if (s->mol)
+        eng_read(g, s->mol, 0, (size_t)n * sizeof(cl_long), at->mol);
     e->tag_sum = tag_checksum(at);
     e->n_at_sync = n;
 }

@@ -25,6 +25,7 @@ struct dev_atoms {
     cl_mem mask;                /* uint[n] */
     cl_mem tag;                 /* long[n] */
     cl_mem image;               /* int[3n] */
+    cl_mem mol;                 /* long[n] molecule IDs, only with molecule IDs (else NULL) */
 };
 
 struct nbr;                     /* neighbor.c */
@@ -75,6 +76,10 @@ struct engine {
     cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
     int virial_cap;
     struct fused_stages fused;  /* per-particle fix work inside those kernels */
+    /* REAL[n] in device order: the mass pair and wall contacts use for
+     * their effective mass (a rigid body's mass for its atoms, LAMMPS's
+     * mass_rigid); NULL = rmass. Owned by the fix that sets it. */
+    cl_mem contact_mass;
     double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
     struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
     /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */

@@ -105,6 +105,10 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
         }
         gr_error(g, "unknown fix style '%.64s' (known: %s)", argv[2], known);
     }
+    /* LAMMPS: fix property/atom may precede the box; every other fix needs it */
+    if (!g->dom.box_exists && strcmp(st->name, "property/atom"))
+        gr_error(g, "fix %s needs a simulation box: use create_box or read_data first",
+                 st->name);
     struct fix *old = fix_find(g, argv[0]);
     if (old && strcmp(old->style->name, st->name))
         gr_error(g, "fix %s already exists with style %s; unfix it before redefining it as %s",
@@ -183,6 +187,8 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     (void)argc;
     for (int i = 0; i < g->styles.nfix; i++)
         if (!strcmp(g->styles.fix[i]->id, argv[0])) {
+            if (!strcmp(g->styles.fix[i]->style->name, "property/atom"))
+                g->atoms.molecule_flag = 0; /* the molecule IDs go with their fix */
             fix_delete(g->styles.fix[i]);
             memmove(&g->styles.fix[i], &g->styles.fix[i + 1],
                     (size_t)(g->styles.nfix - i - 1) * sizeof *g->styles.fix);

@@ -99,6 +99,14 @@ struct fix_style {
      * return 0 when it cannot be fused this run. Called at run setup,
      * after init. */
     int (*fuse)(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op);
+    /* Optional: LAMMPS's Fix::post_neighbor, called after every neighbor
+     * rebuild (the setup one included), once the atoms are in their new
+     * device order and wrapped into the box. */
+    void (*post_neighbor)(struct gravel *g, struct fix *f);
+    /* Optional: degrees of freedom this fix removes from the atoms of
+     * groupbit (LAMMPS Fix::dof, e.g. rigid bodies); temperatures subtract
+     * the sum over fixes. */
+    double (*dof)(struct gravel *g, struct fix *f, unsigned groupbit);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;

@@ -10,6 +10,7 @@
 #include "error.h"
 #include "fileio.h"
 #include "input.h"
+#include "molecule.h"
 #include "restart.h"
 #include "run.h"
 #include "styles.h"
@@ -70,6 +71,7 @@ static void free_state(struct gravel *g)
     styles_free(g);
     regions_free(g);
     atoms_free(&g->atoms);
+    molecules_free(g);
     thermo_settings_free(&g->thermo);
 }
 

@@ -23,6 +23,7 @@ struct vars;                /* variable.c: opaque */
 struct inp;                 /* input.c: opaque */
 struct engine;              /* run.c: device state, opaque outside run/ocl/neighbor */
 struct restart;             /* restart.c: restart settings and state pending from read_restart */
+struct molecule;            /* molecule.h: molecule templates */
 
 /* ---- domain: units, box, boundaries, lattice ------------------------------ */
 
@@ -71,6 +72,9 @@ struct atoms {
     double *radius;
     double *rmass;          /* per-atom mass (sphere) */
     int *image;             /* 3 per atom: periodic image counts */
+    int64_t *mol;           /* molecule ID per atom (0 = none); meaningful with
+                             * molecule_flag (fix property/atom mol) */
+    int molecule_flag;      /* 1: atoms carry molecule IDs (LAMMPS atom->molecule_flag) */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
     int *order;             /* scratch of atoms_tag_order() */
@@ -121,6 +125,8 @@ struct neigh_settings {
     int exclude_group[16][2]; /* group index pairs excluded (neigh_modify exclude group) */
     int exclude_type[16][2];
     int nexclude_type;
+    int exclude_mol[16][2];   /* (group, 1 intra | 0 inter): neigh_modify exclude molecule/... */
+    int nexclude_mol;
 };
 
 enum thermo_lost { LOST_ERROR, LOST_WARN, LOST_IGNORE };
@@ -135,6 +141,7 @@ struct temp_state {
     int extra_set;              /* extra/dof given (else the dimension at use) */
     int dynamic;                /* compute_modify dynamic/dof yes */
     double dof;                 /* counted at run setup (temp_setup) */
+    double dof_natoms;          /* atoms of the group at that count */
     int dof_valid;              /* dof holds the count of the current run */
 };
 
@@ -234,6 +241,8 @@ struct gravel {
     bigint firststep, laststep; /* of the current run */
     bigint laststep_reset;
 
+    int nmolecule;          /* molecule templates (`molecule` command) */
+    struct molecule **molecules;
     struct engine *eng;     /* device state, alive across runs; NULL before the first run */
     struct restart *restart; /* restart.c; NULL until restart/read_restart */
     uint64_t seed_counter;

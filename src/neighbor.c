@@ -443,17 +443,26 @@ void nbr_setup(struct gravel *g)
                                       (size_t)nt * nt * sizeof(cl_int), et, 0, NULL, NULL);
     free(et);
     ocl_check(g, err, "clEnqueueWriteBuffer");
-    cl_uint eg[32];
+    /* group and molecule exclusions: (bits 1, bits 2, kind) triples, kind 0
+     * a group pair, 1 molecule/intra, 2 molecule/inter (kernels/neighbor.cl) */
+    cl_uint eg[96];
     b->nexg = 0;
-    for (int k = 0; k < g->neigh.nexclude && k < 16; k++) {
-        eg[2 * k] = 1u << g->neigh.exclude_group[k][0];
-        eg[2 * k + 1] = 1u << g->neigh.exclude_group[k][1];
-        b->nexg++;
+    for (int k = 0; k < g->neigh.nexclude && k < 16; k++, b->nexg++) {
+        eg[3 * b->nexg] = 1u << g->neigh.exclude_group[k][0];
+        eg[3 * b->nexg + 1] = 1u << g->neigh.exclude_group[k][1];
+        eg[3 * b->nexg + 2] = 0;
+    }
+    if (g->neigh.nexclude_mol && !g->atoms.molecule_flag)
+        gr_error(g, "neigh_modify exclude molecule/%s requires atom attribute molecule (fix "
+                    "property/atom mol)", g->neigh.exclude_mol[0][1] ? "intra" : "inter");
+    for (int k = 0; k < g->neigh.nexclude_mol && k < 16; k++, b->nexg++) {
+        eg[3 * b->nexg] = eg[3 * b->nexg + 1] = 1u << g->neigh.exclude_mol[k][0];
+        eg[3 * b->nexg + 2] = g->neigh.exclude_mol[k][1] ? 1 : 2;
     }
     rel(&b->excl_group);
     b->excl_group = eng_alloc(g, sizeof eg, "group exclusions");
     if (b->nexg)
-        eng_write(g, b->excl_group, 0, (size_t)b->nexg * 2 * sizeof(cl_uint), eg);
+        eng_write(g, b->excl_group, 0, (size_t)b->nexg * 3 * sizeof(cl_uint), eg);
     /* cut-off from the largest radius */
     double rmax = e->insert_rmax; /* atoms fixes may insert (fix pour) */
     for (int i = 0; i < g->atoms.n; i++)
@@ -758,6 +767,7 @@ static void build_list(struct gravel *g, struct nbr *b, int sorted)
         eng_arg_mem(g, k, a++, b->excl_type);
         eng_arg_int(g, k, a++, b->nexg);
         eng_arg_mem(g, k, a++, b->excl_group);
+        eng_arg_mem(g, k, a++, e->a.mol ? e->a.mol : e->a.tag);
         eng_launch(g, k, (size_t)n);
         cl_int fl[4];
         read_flags(g, b, fl);
@@ -921,6 +931,8 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
     reorder_array(g, b, s->mask, sizeof(cl_uint), nkeep);
     reorder_array(g, b, s->tag, sizeof(cl_long), nkeep);
     reorder_array(g, b, s->image, 3 * sizeof(cl_int), nkeep);
+    if (s->mol)
+        reorder_array(g, b, s->mol, sizeof(cl_long), nkeep);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (!f->peratom)

@@ -46,10 +46,12 @@
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
+    S_MOLECULE, /* optional: molecule IDs (fix property/atom mol) */
     S_LAST
 };
 static const char *const sect_name[] = {"", "info", "domain", "neighbor", "groups", "types",
-                                        "atoms", "pair", "neighbor list", "fixes"};
+                                        "atoms", "pair", "neighbor list", "fixes",
+                                        "molecule IDs"};
 
 /* ---- growable output buffer -------------------------------------------------- */
 
@@ -191,6 +193,7 @@ struct image {
     unsigned *mask;
     double *x, *v, *f, *omega, *torque, *radius, *rmass;
     int *image;
+    int64_t *mol;               /* NULL: no molecule IDs */
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
@@ -227,7 +230,7 @@ static void image_free(struct image *im)
         return;
     void *p[] = {im->type_mass, im->tag, im->type, im->mask, im->x, im->v, im->f, im->omega,
                  im->torque, im->radius, im->rmass, im->image, im->devtag, im->ncount,
-                 im->partner, im->shear, im->xhold};
+                 im->partner, im->shear, im->xhold, im->mol};
     for (size_t i = 0; i < sizeof p / sizeof *p; i++)
         free(p[i]);
     for (int i = 0; i < im->nfix; i++) {
@@ -495,6 +498,17 @@ static void build_payload(struct gravel *g, struct wbuf *w)
     put(g, w, a->rmass, n * sizeof(double));
     put(g, w, a->image, 3 * n * sizeof(int));
     sect_end(w, at);
+
+    if (a->molecule_flag) {
+        at = sect_begin(g, w, S_MOLECULE);
+        put_i32(g, w, a->n);
+        put(g, w, a->mol, n * sizeof(int64_t));
+        put_i32(g, w, g->neigh.nexclude_mol); /* neigh_modify exclude molecule/... */
+        for (int k = 0; k < 16; k++)
+            for (int q = 0; q < 2; q++)
+                put_i32(g, w, g->neigh.exclude_mol[k][q]);
+        sect_end(w, at);
+    }
 
     at = sect_begin(g, w, S_PAIR);
     const struct pair *p = g->styles.pair;
@@ -884,6 +898,25 @@ static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *er
         }
         break;
     }
+    case S_MOLECULE: {
+        int nm = get_i32(r);
+        if (r->bad)
+            break;
+        if (!seen_atoms || nm != im->n)
+            BAD("molecule IDs of %d atoms, not the atoms section's %d", nm, im->n);
+        im->mol = get_array(r, (size_t)nm, sizeof(int64_t));
+        struct neigh_settings *ns = &im->neigh;
+        ns->nexclude_mol = get_i32(r);
+        for (int k = 0; k < 16; k++)
+            for (int q = 0; q < 2; q++)
+                ns->exclude_mol[k][q] = get_i32(r);
+        if (!r->bad && (ns->nexclude_mol < 0 || ns->nexclude_mol > 16))
+            BAD("invalid molecule exclusions");
+        for (int k = 0; k < 16 && !r->bad; k++)
+            if (ns->exclude_mol[k][0] < 0 || ns->exclude_mol[k][0] >= GR_MAXGROUP)
+                BAD("invalid molecule exclusion group");
+        break;
+    }
     default:
         BAD("unknown section id %u", id);
     }
@@ -1155,6 +1188,9 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     memcpy(a->radius, im->radius, n * sizeof(double));
     memcpy(a->rmass, im->rmass, n * sizeof(double));
     memcpy(a->image, im->image, 3 * n * sizeof(int));
+    a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
+    if (im->mol)
+        memcpy(a->mol, im->mol, n * sizeof(int64_t));
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -150,6 +150,14 @@ static void run_hook(struct gravel *g, unsigned hook)
         h->call[k][i].fn(g, h->call[k][i].fix);
 }
 
+/* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */
+static void post_neighbor(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->post_neighbor)
+            g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
+}
+
 /* Force computation: pair (or clear), then every post_force fix. */
 static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t_pair,
                            double *t_modify)
@@ -170,7 +178,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, a->v);
         eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
         eng_arg_mem(g, k, i++, a->radius);
-        eng_arg_mem(g, k, i++, a->rmass);
+        eng_arg_mem(g, k, i++, e->contact_mass ? e->contact_mass : a->rmass); /* meff */
         eng_arg_mem(g, k, i++, a->type);
         eng_arg_mem(g, k, i++, a->mask);
         eng_arg_mem(g, k, i++, e->history ? l->shear : l->ci);
@@ -315,6 +323,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
+    e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)
@@ -365,8 +374,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
     int resumed = restart_resume(g);
     group_dynamic_update(g, -1); /* dynamic groups at setup */
-    if (resumed < 1)
+    if (resumed < 1) {
         nbr_rebuild(g);
+        post_neighbor(g);
+    }
     e->st.nbuilds = 0;
     if (resumed < 2)
         compute_forces(g, freezebit, 1, &tp, &tm);
@@ -406,6 +417,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             run_hook(g, HOOK_PRE_EXCHANGE);
             tx = wall() - p0;
             nbr_rebuild(g);
+            post_neighbor(g);
             eng_finish(g);
         }
         double a2 = wall();

@@ -302,8 +302,21 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
             for (int i = 0; i < n; i++)
                 if (sel[i])
                     a->v[3 * i + d] = VAL(p, val, i), count++;
-        } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge") ||
-                   !strcmp(kw, "mol")) {
+        } else if (!strcmp(kw, "mol")) {
+            if (!g->atoms.molecule_flag)
+                gr_error(g, "cannot set attribute mol for atom style (fix property/atom mol "
+                            "first)");
+            double mv = 0;
+            const double *p = kw_value(g, v[0], "molecule ID", &mv, buf, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double val = VAL(p, mv, i);
+                    if (!(val >= 0 && val < 9.2e18) || val != floor(val))
+                        gr_error(g, "invalid molecule ID %g in set command", val);
+                    a->mol[i] = (int64_t)val;
+                    count++;
+                }
+        } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge")) {
             gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
         } else {
             gr_error(g, "unknown keyword '%.32s'", kw);

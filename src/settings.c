@@ -196,7 +196,7 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             const char *how = argv[++i];
             if (!strcmp(how, "none")) {
-                ns.nexclude = ns.nexclude_type = 0;
+                ns.nexclude = ns.nexclude_type = ns.nexclude_mol = 0;
             } else if (!strcmp(how, "type")) {
                 arg_need(g, argc, i, 2, "exclude type");
                 if (!g->dom.box_exists)
@@ -211,10 +211,30 @@ void cmd_neigh_modify(struct gravel *g, int argc, char **argv)
                 int b = arg_group(g, argv[i + 2]);
                 add_exclusion(g, ns.exclude_group, &ns.nexclude, a, b);
                 i += 2;
+            } else if (!strcmp(how, "molecule/intra") || !strcmp(how, "molecule/inter") ||
+                       !strcmp(how, "molecule")) {
+                /* LAMMPS: exclude pairs of atoms both in the group with the same
+                 * (intra; `molecule` is its old name) or different (inter) IDs */
+                arg_need(g, argc, i, 1, how);
+                if (!g->atoms.molecule_flag)
+                    gr_error(g, "neigh_modify exclude %s requires atom attribute molecule (fix "
+                                "property/atom mol)", how);
+                int a = arg_group(g, argv[i + 1]), intra = strcmp(how, "molecule/inter") != 0;
+                int k;
+                for (k = 0; k < ns.nexclude_mol; k++)
+                    if (ns.exclude_mol[k][0] == a && ns.exclude_mol[k][1] == intra)
+                        break;
+                if (k == ns.nexclude_mol) {
+                    if (ns.nexclude_mol >= 16)
+                        gr_error(g, "too many neigh_modify exclusions (at most 16 of each kind)");
+                    ns.exclude_mol[k][0] = a;
+                    ns.exclude_mol[k][1] = intra;
+                    ns.nexclude_mol++;
+                }
+                i += 1;
             } else {
-                gr_error(g, "unsupported exclude style '%.32s': expected type, group or none "
-                            "(molecule/intra and molecule/inter need molecule IDs, which "
-                            "gravel does not have yet)", how);
+                gr_error(g, "unsupported exclude style '%.32s': expected type, group, "
+                            "molecule/intra, molecule/inter or none", how);
             }
         } else if (!strcmp(kw, "collection/interval")) {
             i = collection_interval(g, &ns, argc, argv, i);

@@ -8,6 +8,7 @@
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
+#include "fix.h"
 
 #define INERTIA 0.4 /* LAMMPS compute temp/sphere: solid sphere, in 2d as well */
 
@@ -21,7 +22,7 @@ double temp_boltz(const struct gravel *g)
     return 1.0;
 }
 
-static double count_dof(struct gravel *g, const struct temp_state *t)
+static double count_dof(struct gravel *g, const struct temp_state *t, double *natoms_out)
 {
     const struct atoms *a = &g->atoms;
     int dim = g->dom.dimension;
@@ -38,25 +39,36 @@ static double count_dof(struct gravel *g, const struct temp_state *t)
         }
     }
     double extra = t->extra_set ? t->extra_dof : dim;
-    if (t->kind != TEMP_SPHERE_ROTATE)
+    if (t->kind != TEMP_SPHERE_ROTATE) {
         count -= extra;
-    if (count < 0 && natoms > 0)
-        gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g)", natoms,
-                 extra);
+        /* LAMMPS's fix_dof: what fixes (rigid bodies) remove */
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i]->style->dof)
+                count -= g->styles.fix[i]->style->dof(g, g->styles.fix[i], t->groupbit);
+    }
+    *natoms_out = natoms;
     return count;
 }
 
 void temp_setup(struct gravel *g, struct temp_state *t)
 {
-    t->dof = count_dof(g, t);
+    double natoms = 0;
+    t->dof = count_dof(g, t, &natoms);
+    t->dof_natoms = natoms;
     t->dof_valid = 1;
 }
 
+/* LAMMPS raises a negative count when the temperature is evaluated, not
+ * when it is set up (a deck whose thermo never reads it runs) */
 double temp_dof(struct gravel *g, struct temp_state *t)
 {
     int in_run = g->eng && g->eng->active;
     if (t->dynamic || !in_run || !t->dof_valid)
         temp_setup(g, t);
+    if (t->dof < 0 && t->dof_natoms > 0)
+        gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g%s)",
+                 t->dof_natoms, t->extra_set ? t->extra_dof : g->dom.dimension,
+                 fix_find_style(g, "rigid/small") ? ", rigid bodies" : "");
     return t->dof;
 }
 

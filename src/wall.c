@@ -32,7 +32,7 @@ int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law,
     eng_arg_mem(g, k, i++, a->v);
     eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
     eng_arg_mem(g, k, i++, a->radius);
-    eng_arg_mem(g, k, i++, a->rmass);
+    eng_arg_mem(g, k, i++, e->contact_mass ? e->contact_mass : a->rmass); /* meff */
     eng_arg_mem(g, k, i++, a->type);
     eng_arg_mem(g, k, i++, a->f);
     eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);

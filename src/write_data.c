@@ -71,6 +71,9 @@ void cmd_write_data(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s'", argv[i]);
         }
     }
+    if (g->atoms.molecule_flag)
+        gr_warn(g, "write_data: molecule IDs (fix property/atom mol) are not written to data "
+                   "files yet");
     const char *path = argv[0];
     size_t n = strlen(path);
     char *tmp = gr_malloc(g, n + 16);

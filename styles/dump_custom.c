@@ -25,17 +25,17 @@
 enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
-    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
+    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
 };
 
 static const char *const field_names[F_COUNT] = {
     "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
     "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
-    "xs", "ys", "zs", "xsu", "ysu", "zsu"};
+    "xs", "ys", "zs", "xsu", "ysu", "zsu", "mol"};
 
 static int field_is_int(int f)
 {
-    return f == F_ID || f == F_TYPE || f == F_IX || f == F_IY || f == F_IZ;
+    return f == F_ID || f == F_TYPE || f == F_MOL || f == F_IX || f == F_IY || f == F_IZ;
 }
 
 struct column {
@@ -94,6 +94,9 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
         for (int f = 0; f < F_COUNT; f++)
             if (strcmp(s, field_names[f]) == 0)
                 col->field = f;
+        if (col->field == F_MOL && !g->atoms.molecule_flag)
+            gr_error(g, "dumping an atom property (mol) that isn't allocated (fix property/atom "
+                        "mol)");
         if (col->field != F_COMPUTE)
             continue;
         if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, col->cid, &col->index))
@@ -103,7 +106,7 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
             continue;
         }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
-                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu "
+                    "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu mol "
                     "c_ID c_ID[N] v_name)", s);
     }
 }
@@ -265,6 +268,7 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
             double v = 0.0;
             switch (col->field) {
             case F_ID: iv = a->tag[j]; break;
+            case F_MOL: iv = a->mol[j]; break;
             case F_TYPE: iv = a->type[j]; break;
             case F_X: case F_Y: case F_Z: v = a->x[3 * j + col->field - F_X]; break;
             case F_XU: case F_YU: case F_ZU: {

@@ -5,7 +5,9 @@
  *                          2d: (sin t, cos t, 0)
  *   vector x y z           normalized direction
  * Acceleration = magnitude x direction; the force on atom i is m_i times it
- * (force/mass units: ftm2v = 1 in lj, si and cgs). Variable magnitudes and
+ * (force/mass units: ftm2v = 1 in lj, si and cgs). `disable` (LAMMPS
+ * 2020+): no force on the atoms; fix rigid/small's `gravity` keyword applies
+ * the acceleration to each body's centre of mass instead. Variable magnitudes and
  * the gradient style are not supported (clear error). f_ID is LAMMPS's
  * scalar, the group's gravitational potential energy, which fix_modify
  * energy yes adds to the thermo pe. */
@@ -21,6 +23,7 @@
 
 struct grav {
     double acc[3];
+    int disable;                /* `disable`: no force on atoms (fix rigid/small gravity) */
     double mag, dir[3];         /* magnitude and unit direction (fix pour reads them) */
     cl_kernel post;
 };
@@ -33,6 +36,16 @@ int fix_gravity_field(const struct fix *f, double *magnitude, double dir[3])
     *magnitude = gr->mag;
     for (int d = 0; d < 3; d++)
         dir[d] = gr->dir[d];
+    return 1;
+}
+
+int fix_gravity_vector(const struct fix *f, double acc[3])
+{
+    if (!f || strcmp(f->style->name, "gravity") || !f->data)
+        return 0;
+    const struct grav *gr = f->data;
+    for (int d = 0; d < 3; d++)
+        acc[d] = gr->acc[d];
     return 1;
 }
 
@@ -75,8 +88,13 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "unknown fix gravity style '%.64s' (expected chute, spherical or vector)",
                  argv[1]);
     }
-    if (argc > used)
-        gr_error(g, "unexpected fix gravity argument '%.64s'", argv[used]);
+    int disable = 0;
+    for (int i = used; i < argc; i++) {
+        if (!strcmp(argv[i], "disable"))
+            disable = 1;
+        else
+            gr_error(g, "unexpected fix gravity argument '%.64s' (keyword: disable)", argv[i]);
+    }
     double gv[3];
     if (strcmp(argv[1], "vector")) {
         if (dim == 3) {
@@ -100,11 +118,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct grav *gr = gr_calloc(g, 1, sizeof *gr);
     f->data = gr;
     gr->mag = mag;
+    gr->disable = disable;
     for (int d = 0; d < 3; d++) {
         gr->acc[d] = mag * gv[d];
         gr->dir[d] = gv[d];
     }
-    f->hooks = HOOK_POST_FORCE;
+    f->hooks = disable ? 0 : HOOK_POST_FORCE;
     f->sources[f->nsources++] = "fix_gravity.cl";
 }
 
@@ -141,7 +160,7 @@ static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op 
 {
     (void)g;
     struct grav *gr = f->data;
-    if (hook != HOOK_POST_FORCE)
+    if (hook != HOOK_POST_FORCE || gr->disable)
         return 0;
     op->kind = FOP_GRAVITY;
     op->nprm = 3;

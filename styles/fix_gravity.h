@@ -9,4 +9,8 @@
  * spherical/chute/vector direction; 2d: z = 0); returns 1. Other fixes: 0. */
 int fix_gravity_field(const struct fix *f, double *magnitude, double dir[3]);
 
+/* Its acceleration vector (magnitude x direction, LAMMPS's gvec); 1, or 0
+ * for other fixes. */
+int fix_gravity_vector(const struct fix *f, double acc[3]);
+
 #endif

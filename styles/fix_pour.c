@@ -45,8 +45,11 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"
+#include "fix_rigid_small.h"
+#include "molecule.h"
 #include "random.h"
 #include "region.h"
+#include "rigid_math.h"
 
 #define POUR_EPSILON 0.001 /* gravity direction tolerance (LAMMPS EPSILON) */
 #define POUR_SMALL 1.0e-10 /* poly fractions must sum to 1 within this */
@@ -82,6 +85,13 @@ struct pour {
     double lo_cur, hi_cur;          /* vertical bounds of the current batch */
     double *near;                   /* 4 per entry: x y z radius */
     int near_cap;
+    /* molecule mode (mol T [rigid F]) */
+    struct molecule *mol;
+    char rigid_id[GR_NAMELEN];
+    struct fix *rigid;              /* the fix rigid/small of rigid_id (init) */
+    int64_t maxmol;                 /* id next: molecule IDs counted from here */
+    double *coords;                 /* 4 per template atom: x y z radius */
+    int *imgs;                      /* 3 per template atom */
 };
 
 /* LAMMPS FixPour::outside(): value outside [lo, hi] along dim, periodic
@@ -107,7 +117,7 @@ static int outside(const struct gravel *g, int dim, double value, double lo, dou
 static int near_region(const struct gravel *g, const struct pour *p, const double *x,
                        double radius)
 {
-    double delta = radius + p->radius_max;
+    double delta = radius + (p->mol ? p->mol->molradius : p->radius_max);
     if (g->dom.dimension == 3) {
         if (!p->cyl) {
             if (outside(g, 0, x[0], p->xlo - delta, p->xhi + delta) ||
@@ -164,6 +174,15 @@ static double radius_sample(struct pour *p)
     return p->radius_poly[i > 0 ? i - 1 : 0];
 }
 
+static int64_t max_mol(const struct gravel *g)
+{
+    int64_t m = 0;
+    for (int i = 0; g->atoms.molecule_flag && i < g->atoms.n; i++)
+        if (g->atoms.mol[i] > m)
+            m = g->atoms.mol[i];
+    return m;
+}
+
 static int64_t max_tag(const struct gravel *g)
 {
     int64_t m = 0;
@@ -203,15 +222,26 @@ static void parse_options(struct gravel *g, struct pour *p, int argc, char **arg
             i += 2;
         } else if (!strcmp(k, "mol")) {
             arg_need(g, argc, i, 1, k);
-            gr_error(g, "fix pour: mol %.64s: molecule templates do not exist in gravel "
-                        "(particles are single spheres)", argv[i + 1]);
+            p->mol = molecule_find(g, argv[i + 1]);
+            if (!p->mol)
+                gr_error(g, "molecule template ID %.64s for fix pour does not exist",
+                         argv[i + 1]);
+            i += 2;
         } else if (!strcmp(k, "molfrac")) {
-            gr_error(g, "fix pour: molfrac needs mol, and molecule templates do not exist in "
-                        "gravel");
-        } else if (!strcmp(k, "rigid") || !strcmp(k, "shake")) {
+            /* one molecule per template here: molfrac 1.0 */
+            if (!p->mol)
+                gr_error(g, "fix pour: molfrac needs mol first");
+            double v = num(g, argc, argv, i + 1, "molfrac");
+            if (v < 1.0 - POUR_EPSILON || v > 1.0 + POUR_EPSILON)
+                gr_error(g, "fix pour: molfrac of a one-molecule template must be 1.0, got %s",
+                         argv[i + 1]);
+            i += 2;
+        } else if (!strcmp(k, "rigid")) {
             arg_need(g, argc, i, 1, k);
-            gr_error(g, "fix pour: cannot use %s without mol (molecule templates do not exist "
-                        "in gravel)", k);
+            snprintf(p->rigid_id, sizeof p->rigid_id, "%s", argv[i + 1]);
+            i += 2;
+        } else if (!strcmp(k, "shake")) {
+            gr_error(g, "fix pour: shake is not supported (granular molecules have no bonds)");
         } else if (!strcmp(k, "id")) {
             arg_need(g, argc, i, 1, k);
             if (!strcmp(argv[i + 1], "max"))
@@ -340,9 +370,20 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     p->maxattempt = 50;
     struct region *reg = NULL;
     parse_options(g, p, argc - 3, argv + 3, &reg);
-    if (p->ntype <= 0 || p->ntype > g->atoms.ntypes)
+    if (p->mol) {
+        if (p->ntype + p->mol->ntypes <= 0 || p->ntype + p->mol->ntypes > g->atoms.ntypes)
+            gr_error(g, "invalid atom type in fix pour mol command (type offset %d + template "
+                        "types up to %d, box has %d)", p->ntype, p->mol->ntypes,
+                     g->atoms.ntypes);
+        mol_compute_center(p->mol); /* inserted about the geometric centre */
+        p->coords = gr_calloc(g, 4 * (size_t)p->mol->natoms, sizeof(double));
+        p->imgs = gr_calloc(g, 3 * (size_t)p->mol->natoms, sizeof(int));
+    } else if (p->rigid_id[0]) {
+        gr_error(g, "cannot use fix pour rigid without mol (a molecule template)");
+    } else if (p->ntype <= 0 || p->ntype > g->atoms.ntypes) {
         gr_error(g, "invalid atom type %d in fix pour command (1..%d)", p->ntype,
                  g->atoms.ntypes);
+    }
     if (!reg)
         gr_error(g, "must specify a region in fix pour");
     const struct domain *d = &g->dom;
@@ -373,8 +414,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "must use a block or cylinder region with fix pour (region %s is %s)",
                  reg->id, reg->style->name);
     }
-    if (p->idnext)
+    if (p->idnext) {
         p->maxtag = max_tag(g);
+        p->maxmol = max_mol(g);
+    }
     rng_park_init(&p->rng, p->seed);
     /* LAMMPS 2021 warms the generator up with 30 draws (measured: the first
      * particle's height is draw 31 for every seed) */
@@ -419,7 +462,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         } else {
             volume = M_PI * p->rc * p->rc * (p->zhi - p->zlo);
         }
-        if (p->dstyle != DIAM_POLY) {
+        if (p->mol) {
+            double mr = p->mol->molradius;
+            volume_one = 4.0 / 3.0 * M_PI * mr * mr * mr;
+        } else if (p->dstyle != DIAM_POLY) {
             volume_one = 4.0 / 3.0 * M_PI * p->radius_max * p->radius_max * p->radius_max;
         } else {
             volume_one = 0.0;
@@ -429,7 +475,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         }
     } else {
         volume = (p->xhi - p->xlo) * (p->yhi - p->ylo);
-        if (p->dstyle != DIAM_POLY) {
+        if (p->mol) {
+            volume_one = M_PI * p->mol->molradius * p->mol->molradius;
+        } else if (p->dstyle != DIAM_POLY) {
             volume_one = M_PI * p->radius_max * p->radius_max;
         } else {
             volume_one = 0.0;
@@ -478,6 +526,16 @@ static void init(struct gravel *g, struct fix *f)
     if (g->dt != p->dt_check)
         gr_error(g, "cannot change timestep with fix pour (%s ran with %g, now %g)", f->id,
                  p->dt_check, g->dt);
+    p->rigid = NULL;
+    if (p->rigid_id[0]) {
+        p->rigid = fix_find(g, p->rigid_id);
+        if (!p->rigid)
+            gr_error(g, "fix pour rigid fix %s does not exist", p->rigid_id);
+        if (rigid_small_template(p->rigid) != p->mol)
+            gr_error(g, "fix pour and fix rigid/small not using same molecule template ID");
+    }
+    if (p->mol && !g->atoms.molecule_flag && p->rigid)
+        gr_error(g, "fix pour mol rigid needs molecule IDs (fix property/atom mol)");
 }
 
 /* Upper bound of the atoms inserted in (step, step + nsteps]. */
@@ -485,13 +543,185 @@ static int reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
 {
     struct pour *p = f->data;
     *rmax = p->radius_max;
+    int per = 1;
+    if (p->mol) {
+        per = p->mol->natoms;
+        *rmax = 0.5;
+        if (p->mol->radius) {
+            *rmax = 0;
+            for (int i = 0; i < per; i++)
+                *rmax = p->mol->radius[i] > *rmax ? p->mol->radius[i] : *rmax;
+        }
+    }
     bigint next = f->next_reneighbor, last = g->step + nsteps;
     if (next <= g->step || next > last || p->ninserted >= p->ninsert)
         return 0;
     bigint batches = p->nfreq > 0 ? (last - next) / p->nfreq + 1 : 1;
     bigint left = p->ninsert - p->ninserted;
     bigint most = batches * p->nper;
-    return (int)(most < left ? most : left);
+    return (int)((most < left ? most : left) * per);
+}
+
+/* A batch of molecules (LAMMPS FixPour::pre_exchange, mode MOLECULE): per
+ * molecule the height draw; per attempt a point, the template draw (one
+ * template: always the first), the rotation (3d: a random axis, 3 draws; 2d:
+ * z) and its angle; the template atoms rotated about the geometric centre
+ * and wrapped into the periodic box must all be clear of the near list.
+ * Placed: vx (vy) draws; every atom gets the velocity, the template's type
+ * (+ the type offset), radius (0.5 without Diameters) and mass (4/3 pi r^3
+ * without Masses), tags maxtag + 1 ..., molecule ID maxmol + 1; fix
+ * rigid/small turns it into a body. */
+static void pre_exchange_mol(struct gravel *g, struct fix *f)
+{
+    struct pour *p = f->data;
+    struct molecule *mol = p->mol;
+    struct atoms *a = &g->atoms;
+    const struct domain *d = &g->dom;
+    int dim = d->dimension, nold = a->n, natom = mol->natoms;
+    int64_t maxtag = p->idnext ? p->maxtag : max_tag(g);
+    int64_t maxmol = p->idnext ? p->maxmol : max_mol(g);
+    int nnew = p->nper;
+    if (p->ninserted + nnew > p->ninsert)
+        nnew = p->ninsert - p->ninserted;
+    double shift = (double)(g->step - p->nfirst) * g->dt * p->rate;
+    p->lo_cur = (dim == 3 ? p->zlo : p->ylo) + shift;
+    p->hi_cur = (dim == 3 ? p->zhi : p->yhi) + shift;
+    int nnear = 0;
+    for (int i = 0; i < nold; i++)
+        if (near_region(g, p, a->x + 3 * i, a->radius[i]))
+            nnear++;
+    int need = nnear + nnew * natom;
+    if (need > p->near_cap) {
+        p->near = gr_realloc(g, p->near, (size_t)(need > 0 ? need : 1) * 4 * sizeof(double));
+        p->near_cap = need;
+    }
+    nnear = 0;
+    for (int i = 0; i < nold; i++)
+        if (near_region(g, p, a->x + 3 * i, a->radius[i])) {
+            double *q = p->near + 4 * nnear++;
+            q[0] = a->x[3 * i], q[1] = a->x[3 * i + 1], q[2] = a->x[3 * i + 2];
+            q[3] = a->radius[i];
+        }
+    int nprevious = nnear;
+    int nsuccess = 0;
+    long attempt = 0, maxiter = (long)nnew * p->maxattempt;
+    while (nsuccess < nnew) {
+        double rn = rng_park_uniform(&p->rng);
+        double h = p->hi_cur - rn * rn * (p->hi_cur - p->lo_cur);
+        double c[3], quat[4];
+        int success = 0;
+        while (attempt < maxiter) {
+            attempt++;
+            xyz_random(g, p, h, c);
+            (void)rng_park_uniform(&p->rng); /* the template draw (molfrac) */
+            double r[3], rot[3][3];
+            if (dim == 3) {
+                r[0] = rng_park_uniform(&p->rng) - 0.5;
+                r[1] = rng_park_uniform(&p->rng) - 0.5;
+                r[2] = rng_park_uniform(&p->rng) - 0.5;
+            } else {
+                r[0] = r[1] = 0.0;
+                r[2] = 1.0;
+            }
+            double theta = rng_park_uniform(&p->rng) * 2.0 * M_PI;
+            double scale = 1.0 / sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+            for (int k = 0; k < 3; k++)
+                r[k] *= scale;
+            rm_axisangle_to_quat(r, theta, quat);
+            rm_quat_to_mat(quat, rot);
+            for (int m = 0; m < natom; m++) {
+                const double *dx = mol->dx + 3 * m;
+                double *q = p->coords + 4 * m;
+                for (int k = 0; k < 3; k++)
+                    q[k] = rot[k][0] * dx[0] + rot[k][1] * dx[1] + rot[k][2] * dx[2] + c[k];
+                q[3] = mol->radius ? mol->radius[m] : 0.5;
+                int *im = p->imgs + 3 * m;
+                im[0] = im[1] = im[2] = 0;
+                domain_remap(g, q, im);
+            }
+            int m;
+            for (m = 0; m < natom; m++) {
+                const double *q = p->coords + 4 * m;
+                int i;
+                for (i = 0; i < nnear; i++) {
+                    const double *o = p->near + 4 * i;
+                    double del[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
+                    domain_minimum_image(g, del);
+                    double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+                    double radsum = q[3] + o[3];
+                    if (rsq <= radsum * radsum)
+                        break;
+                }
+                if (i < nnear)
+                    break;
+            }
+            if (m == natom) {
+                success = 1;
+                break;
+            }
+        }
+        if (!success)
+            break;
+        nsuccess++;
+        int first = a->n;
+        for (int m = 0; m < natom; m++)
+            memcpy(p->near + 4 * nnear++, p->coords + 4 * m, 4 * sizeof(double));
+        double vnew[3];
+        vnew[0] = p->vxlo + rng_park_uniform(&p->rng) * (p->vxhi - p->vxlo);
+        if (dim == 3) {
+            vnew[1] = p->vylo + rng_park_uniform(&p->rng) * (p->vyhi - p->vylo);
+            vnew[2] = -sqrt(p->vz * p->vz + 2.0 * p->grav * (c[2] - p->hi_cur));
+        } else {
+            vnew[1] = -sqrt(p->vy * p->vy + 2.0 * p->grav * (c[1] - p->hi_cur));
+            vnew[2] = 0.0;
+        }
+        int top = dim == 3 ? 2 : 1;
+        for (int m = 0; m < natom; m++) {
+            const double *q = p->coords + 4 * m;
+            int inbox = 1, above = q[top] >= d->hi[top];
+            for (int k = 0; k < 3; k++) {
+                int in = q[k] >= d->lo[k] && q[k] < d->hi[k];
+                inbox = inbox && in;
+                if (k != top)
+                    above = above && in;
+            }
+            if (!(inbox || above))
+                continue;
+            double rad = q[3];
+            double mass = mol->rmass ? mol->rmass[m] : 4.0 * M_PI / 3.0 * rad * rad * rad;
+            int n = atoms_add(g, maxtag + m + 1, p->ntype + mol->type[m], q, rad, mass);
+            a->mask[n] = 1u | f->groupbit;
+            if (a->molecule_flag)
+                a->mol[n] = maxmol + (mol->molecule ? mol->molecule[m] : 1);
+            for (int k = 0; k < 3; k++) {
+                a->v[3 * n + k] = vnew[k];
+                a->image[3 * n + k] = p->imgs[3 * m + k];
+            }
+        }
+        if (p->rigid) {
+            if (a->n - first != natom)
+                gr_error(g, "fix pour %s: a rigid molecule was inserted partly outside the box "
+                            "(step %lld)", f->id, (long long)g->step);
+            rigid_small_add_body(g, p->rigid, first, maxtag, c, vnew, quat);
+        }
+        maxtag += natom;
+        if (a->molecule_flag)
+            maxmol += mol->molecule ? mol->nmolecules : 1;
+    }
+    int ninserted_atoms = nnear - nprevious, now = ninserted_atoms / natom;
+    p->ninserted += now;
+    if (now < nnew)
+        gr_warn(g, "Less insertions than requested (fix pour %s at step %lld: %d of %d)", f->id,
+                (long long)g->step, now, nnew);
+    if (p->idnext) {
+        p->maxtag = maxtag;
+        p->maxmol = maxmol;
+    }
+    eng_append(g, nold);
+    if (p->ninserted < p->ninsert)
+        f->next_reneighbor += p->nfreq;
+    else
+        f->next_reneighbor = 0;
 }
 
 /* One batch of insertions (LAMMPS FixPour::pre_exchange). */
@@ -500,6 +730,11 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     struct pour *p = f->data;
     if (f->next_reneighbor != g->step)
         return;
+    if (p->mol) {
+        run_sync_host(g);
+        pre_exchange_mol(g, f);
+        return;
+    }
     run_sync_host(g); /* the host arrays = the device's atoms, in device order */
     struct atoms *a = &g->atoms;
     const struct domain *d = &g->dom;
@@ -611,6 +846,8 @@ static void destroy(struct fix *f)
         free(p->radius_poly);
         free(p->frac_poly);
         free(p->near);
+        free(p->coords);
+        free(p->imgs);
     }
     free(p);
 }

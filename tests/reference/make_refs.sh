@@ -6,7 +6,7 @@ cd "$(dirname "$0")" || exit 1
 command -v lmp >/dev/null || { echo "lmp (Debian package lammps) is not installed"; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-for deck in pair_*.in wall_*.in granular_*.in pour/*.in; do
+for deck in pair_*.in wall_*.in granular_*.in rigid_*.in pour/*.in; do
     name=${deck%.in}
     rm -f "$tmp/out.dump"
     (cd "$tmp" && lmp -in "$OLDPWD/$deck" -log none -screen none) || { echo "lmp failed on $deck"; exit 1; }

@@ -153,7 +153,7 @@ ERRORS = [
     ("bad_keyword", GRAV + "fix p all pour 10 1 5 region slab diameter 1\n",
      "unknown keyword 'diameter'", 14),
     ("mol", GRAV + "fix p all pour 10 1 5 region slab mol vshape\n",
-     "molecule templates do not exist in gravel", 14),
+     "molecule template ID vshape for fix pour does not exist", 14),
     ("rigid", GRAV + "fix p all pour 10 1 5 region slab rigid r\n", "without mol", 14),
     ("no_region", GRAV + "fix p all pour 10 1 5\n", "must specify a region", 14),
     ("no_gravity", "fix p all pour 10 1 5 region slab\n", "no fix gravity", 13),

@@ -100,7 +100,10 @@ def check_chute():
 
 
 def main():
-    decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "*.in")))
+    # rigid_*.in: tests/scripts/rigid_small.py compares them by unwrapped
+    # positions (gravel wraps atoms every step, LAMMPS at rebuilds)
+    decks = sorted(d for d in glob.glob(os.path.join(ROOT, "tests", "reference", "*.in"))
+                   if not os.path.basename(d).startswith("rigid_"))
     if not decks:
         print("FAIL lammps_no_decks")
     for deck in decks:

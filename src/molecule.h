@@ -1,0 +1,56 @@
+/* molecule.h - molecule templates (`molecule ID file [keyword values]`),
+ * LAMMPS's Molecule class as granular decks use it: per-atom coordinates,
+ * types, diameters, masses and molecule IDs read from a LAMMPS molecule
+ * file, plus the derived quantities fix pour and fix rigid/small insert
+ * with (geometric centre, total mass, centre of mass, inertia tensor, its
+ * principal axes and quaternion, body-frame displacements).
+ *
+ * The derived values are computed on demand, once each, in LAMMPS's order
+ * (mol_compute_center, _mass, _com, _inertia); header values of the file
+ * (`mass`, `com`, `inertia`) take precedence over the atoms' values, as in
+ * LAMMPS. Bonds, angles, charges, special lists and shake info have no
+ * meaning for granular spheres: a file with them is an error. */
+#ifndef GR_MOLECULE_H
+#define GR_MOLECULE_H
+
+#include "gravel.h"
+
+struct molecule {
+    char id[GR_NAMELEN];
+    int natoms;
+    double *x;              /* 3 per atom (scaled) */
+    int *type;              /* per atom, type offset applied */
+    double *radius;         /* per atom, or NULL (no Diameters section) */
+    double *rmass;          /* per atom, or NULL (no Masses section) */
+    int64_t *molecule;      /* per atom molecule IDs (Molecules section), or NULL */
+    int nmolecules;         /* distinct IDs of the Molecules section (1 without) */
+    int ntypes;             /* largest type of the template */
+    /* header values */
+    int massflag, comflag, inertiaflag;
+    double masstotal, com[3], itensor[6]; /* itensor: xx yy zz xy xz yz (file order) */
+    /* derived (mol_compute_*) */
+    int centerflag, massdone, comdone, inertiadone;
+    double center[3], molradius;
+    double *dx;             /* 3 per atom: x - center */
+    double *dxcom;          /* 3 per atom: x - com */
+    double *dxbody;         /* 3 per atom: dxcom in the principal-axes frame */
+    int comatom;            /* 1-based atom closest to the com */
+    double maxextent;       /* largest distance from comatom to an atom */
+    double inertia[3];      /* principal moments, decreasing (0 below 1e-7 x max) */
+    double ex[3], ey[3], ez[3], quat[4];
+};
+
+/* `molecule` command. */
+void cmd_molecule(struct gravel *g, int argc, char **argv);
+/* The template with this ID, or NULL. */
+struct molecule *molecule_find(struct gravel *g, const char *id);
+void molecules_free(struct gravel *g);
+
+/* LAMMPS Molecule::compute_center / compute_mass / compute_com /
+ * compute_inertia (each once; later calls return at once). */
+void mol_compute_center(struct molecule *m);
+void mol_compute_mass(struct gravel *g, struct molecule *m);
+void mol_compute_com(struct gravel *g, struct molecule *m);
+void mol_compute_inertia(struct gravel *g, struct molecule *m);
+
+#endif

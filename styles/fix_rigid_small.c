@@ -1,0 +1,915 @@
+/* fix_rigid_small.c - `fix ID group rigid/small molecule [mol T] [gravity G]
+ * [reinit yes|no]`: rigid bodies of spheres, one per molecule ID, LAMMPS's
+ * FixRigidSmall (RIGID package, 2021) step for step so the bodies follow
+ * LAMMPS's trajectories to round-off.
+ *
+ * A body's state (mass, centre of mass xcm, velocity vcm, angular momentum,
+ * quaternion, principal moments and axes ex ey ez) lives on the host; each
+ * member atom keeps its displacement from xcm in the body frame. The step,
+ * as LAMMPS's velocity Verlet for bodies:
+ *   initial_integrate  vcm += dt/2 F/M; xcm += dt vcm; L += dt/2 T;
+ *                      omega from L; quaternion a full step by Richardson
+ *                      iteration; then every member's x = xcm + R d (mapped
+ *                      by its image shift), v = vcm + omega x (x - xcm), and
+ *                      a sphere's omega = the body's.
+ *   final_integrate    F, T = sums over the members of f and (x - xcm) x f
+ *                      plus the spheres' torques (+ M g with `gravity`;
+ *                      2d: z force and x, y torque zeroed); vcm, L half
+ *                      kicks; omega; members' v and omega.
+ *   setup              the same sums (no gravity, as LAMMPS) and v, omega.
+ * At every run's start (unless `reinit no`) the bodies are recomputed from
+ * their atoms (mass, xcm, inertia tensor diagonalized by Jacobi rotations,
+ * vcm and L from the atoms' velocities and spins), as LAMMPS's
+ * setup_bodies_static/dynamic. Bodies inserted by fix pour (`mol`
+ * template) take the template's mass, centre of mass, principal moments and
+ * body-frame displacements (LAMMPS set_molecule).
+ *
+ * Device and host: each step rigid_gather (kernels/fix_rigid_small.cl)
+ * copies the members' forces and torques into a member-order buffer that
+ * the host reads and sums per body in ascending tag order (deterministic,
+ * no atomics); rigid_scatter writes the members' positions, velocities and
+ * spins computed on the host. O(members) per step. The tag -> device index
+ * map, the members' periodic image shifts (LAMMPS xcmimage) and the contact
+ * masses are refreshed after every neighbor rebuild (post_neighbor), where
+ * LAMMPS remaps xcm into the box (pre_neighbor). gravel wraps atoms every
+ * step: a member crossing a periodic face is placed inside by its image
+ * shift, its image flag = the body's + the shift.
+ *
+ * Pair and wall contacts of a member use the body's mass as its mass in the
+ * effective mass (LAMMPS's mass_rigid, engine.h contact_mass). Degrees of
+ * freedom (temperatures): a body wholly in the temperature group keeps 6
+ * (3d; 5 if linear) or 3 (2d) of its atoms' 3 + 3 (finite spheres) each.
+ *
+ * Not supported (clear errors): langevin, infile, the custom body ID style,
+ * thermostats/barostats of rigid/n?t/small; write_restart of a run with
+ * bodies. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "atoms.h"
+#include "domain.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_gravity.h"
+#include "fix_rigid_small.h"
+#include "molecule.h"
+#include "rigid_math.h"
+
+#define SINERTIA 0.4 /* solid sphere */
+
+struct rbody {
+    double mass, xcm[3], xgc[3], vcm[3], fcm[3], torque[3], angmom[3], omega[3];
+    double quat[4], inertia[3], ex[3], ey[3], ez[3], xgc_body[3];
+    int image[3];           /* periodic image of xcm (LAMMPS body image) */
+    int natoms;
+};
+
+struct member {
+    int64_t tag;
+    int body;
+    int ext;                /* finite-size sphere (radius > 0): spins with the body */
+    int xbox[3];            /* image of the atom relative to its body's (xcmimage) */
+    int dev;                /* device index (valid after post_neighbor) */
+    double displace[3];     /* x - xcm in the body frame */
+    double x[3];            /* its position as last written to the device (or inserted) */
+};
+
+struct rigid {
+    struct molecule *mol;
+    char gravity_id[GR_NAMELEN];
+    double gvec[3];
+    int reinit, extended, setupflag, mapped;
+    int nbody, body_cap;
+    struct rbody *b;
+    int nmem, mem_cap;
+    struct member *m;
+    int *order;             /* member indices in ascending tag order */
+    int order_ok;
+    double dtv, dtf, dtq;
+    /* host scratch of whole per-atom arrays (device order; rebuilds only) */
+    size_t hcap;
+    double *hm;
+    int64_t *htag;
+    int *himg;
+    cl_mem cmass;           /* contact masses (engine contact_mass) */
+    size_t cmass_cap;
+    /* member-order transfers (kernels/fix_rigid_small.cl) */
+    cl_kernel k_gather, k_scatter;
+    cl_mem d_idx, d_x, d_xl, d_v, d_w, d_out;
+    size_t dcap;            /* members the device buffers hold */
+    double *mx, *mxl, *mv, *mw, *mout; /* host side, member order */
+};
+
+struct molecule *rigid_small_template(const struct fix *f)
+{
+    if (!f || strcmp(f->style->name, "rigid/small") || !f->data)
+        return NULL;
+    return ((const struct rigid *)f->data)->mol;
+}
+
+static struct rbody *new_body(struct gravel *g, struct rigid *r)
+{
+    if (r->nbody == r->body_cap) {
+        r->body_cap = r->body_cap ? 2 * r->body_cap : 16;
+        r->b = gr_realloc(g, r->b, (size_t)r->body_cap * sizeof *r->b);
+    }
+    struct rbody *b = &r->b[r->nbody++];
+    memset(b, 0, sizeof *b);
+    return b;
+}
+
+static struct member *new_member(struct gravel *g, struct rigid *r)
+{
+    if (r->nmem == r->mem_cap) {
+        r->mem_cap = r->mem_cap ? 2 * r->mem_cap : 64;
+        r->m = gr_realloc(g, r->m, (size_t)r->mem_cap * sizeof *r->m);
+    }
+    struct member *m = &r->m[r->nmem++];
+    memset(m, 0, sizeof *m);
+    m->dev = -1;
+    r->order_ok = 0;
+    r->mapped = 0;
+    return m;
+}
+
+static const struct member *cmp_base;
+static int by_tag(const void *a, const void *b)
+{
+    int64_t ta = cmp_base[*(const int *)a].tag, tb = cmp_base[*(const int *)b].tag;
+    return (ta > tb) - (ta < tb);
+}
+
+static void sort_members(struct gravel *g, struct rigid *r)
+{
+    if (r->order_ok)
+        return;
+    r->order = gr_realloc(g, r->order, (size_t)(r->nmem + 1) * sizeof(int));
+    for (int k = 0; k < r->nmem; k++)
+        r->order[k] = k;
+    cmp_base = r->m;
+    qsort(r->order, (size_t)r->nmem, sizeof(int), by_tag);
+    r->order_ok = 1;
+}
+
+static int64_t *sort_keys;
+static int by_key(const void *a, const void *b)
+{
+    int64_t ta = sort_keys[*(const int *)a], tb = sort_keys[*(const int *)b];
+    return (ta > tb) - (ta < tb);
+}
+
+/* idx[k] = index in tags[0..n) of member order[k]'s tag, or -1 (both
+ * sorted, then merged). */
+static void match_tags(struct gravel *g, struct rigid *r, const int64_t *tags, int n, int *idx)
+{
+    sort_members(g, r);
+    int *p = gr_calloc(g, (size_t)(n + 1), sizeof(int));
+    for (int i = 0; i < n; i++)
+        p[i] = i;
+    sort_keys = (int64_t *)tags;
+    qsort(p, (size_t)n, sizeof(int), by_key);
+    int j = 0;
+    for (int k = 0; k < r->nmem; k++) {
+        int64_t t = r->m[r->order[k]].tag;
+        while (j < n && tags[p[j]] < t)
+            j++;
+        idx[k] = j < n && tags[p[j]] == t ? p[j] : -1;
+    }
+    free(p);
+}
+
+static double prd(const struct gravel *g, int d)
+{
+    return g->dom.hi[d] - g->dom.lo[d];
+}
+
+/* ---- creation ------------------------------------------------------------------ */
+
+static const int64_t *cmp_mol;
+static const int64_t *cmp_tagv;
+static int by_mol(const void *a, const void *b)
+{
+    int i = *(const int *)a, j = *(const int *)b;
+    if (cmp_mol[i] != cmp_mol[j])
+        return (cmp_mol[i] > cmp_mol[j]) - (cmp_mol[i] < cmp_mol[j]);
+    return (cmp_tagv[i] > cmp_tagv[j]) - (cmp_tagv[i] < cmp_tagv[j]);
+}
+
+/* One body per molecule ID of the group's atoms (LAMMPS create_bodies). */
+static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
+{
+    struct atoms *a = &g->atoms;
+    int n = 0;
+    int *list = gr_calloc(g, (size_t)a->n + 1, sizeof(int));
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & f->groupbit)
+            list[n++] = i;
+    cmp_mol = a->mol;
+    cmp_tagv = a->tag;
+    qsort(list, (size_t)n, sizeof(int), by_mol);
+    for (int s = 0; s < n;) {
+        int e = s;
+        while (e < n && a->mol[list[e]] == a->mol[list[s]])
+            e++;
+        double lo[3] = {1e20, 1e20, 1e20}, hi[3] = {-1e20, -1e20, -1e20};
+        for (int k = s; k < e; k++) {
+            double u[3];
+            domain_unmap(g, a->x + 3 * list[k], a->image + 3 * list[k], u);
+            for (int d = 0; d < 3; d++) {
+                lo[d] = u[d] < lo[d] ? u[d] : lo[d];
+                hi[d] = u[d] > hi[d] ? u[d] : hi[d];
+            }
+        }
+        if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2])
+            gr_error(g, "fix rigid/small: one or more rigid bodies are a single particle "
+                        "(molecule %lld)", (long long)a->mol[list[s]]);
+        int body = r->nbody;
+        (void)new_body(g, r);
+        for (int k = s; k < e; k++) {
+            struct member *m = new_member(g, r);
+            m->tag = a->tag[list[k]];
+            m->body = body;
+        }
+        s = e;
+    }
+    free(list);
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "fix rigid/small expects a body style (molecule)");
+    if (!strcmp(argv[0], "custom"))
+        gr_error(g, "fix rigid/small custom is not supported (use molecule IDs)");
+    if (strcmp(argv[0], "molecule"))
+        gr_error(g, "unknown fix rigid/small body style '%.64s' (expected molecule)", argv[0]);
+    if (!g->atoms.molecule_flag)
+        gr_error(g, "fix rigid/small requires atom attribute molecule (fix property/atom mol)");
+    struct rigid *r = gr_calloc(g, 1, sizeof *r);
+    f->data = r;
+    r->reinit = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *k = argv[i];
+        if (!strcmp(k, "mol")) {
+            arg_need(g, argc, i, 1, k);
+            r->mol = molecule_find(g, argv[++i]);
+            if (!r->mol)
+                gr_error(g, "molecule template ID %.64s for fix rigid/small does not exist",
+                         argv[i]);
+        } else if (!strcmp(k, "gravity")) {
+            arg_need(g, argc, i, 1, k);
+            snprintf(r->gravity_id, sizeof r->gravity_id, "%s", argv[++i]);
+        } else if (!strcmp(k, "reinit")) {
+            arg_need(g, argc, i, 1, k);
+            r->reinit = arg_yesno(g, argv[++i], k);
+        } else if (!strcmp(k, "langevin") || !strcmp(k, "infile") || !strcmp(k, "temp") ||
+                   !strcmp(k, "iso") || !strcmp(k, "aniso") || !strcmp(k, "dilate")) {
+            gr_error(g, "fix rigid/small keyword '%s' is not supported", k);
+        } else {
+            gr_error(g, "unknown fix rigid/small keyword '%.64s' (mol, gravity, reinit)", k);
+        }
+    }
+    if (r->mol) {
+        mol_compute_center(r->mol);
+        mol_compute_mass(g, r->mol);
+        mol_compute_com(g, r->mol);
+        mol_compute_inertia(g, r->mol);
+    }
+    create_bodies(g, f, r);
+    double rsqfar = 0;
+    gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
+    (void)rsqfar;
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->sources[f->nsources++] = "fix_rigid_small.cl";
+    f->needs = NEED_ROTATION;
+}
+
+/* ---- body properties from the atoms (LAMMPS setup_bodies_static/dynamic) ------- */
+
+static void setup_bodies(struct gravel *g, struct rigid *r)
+{
+    struct atoms *a = &g->atoms;
+    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    match_tags(g, r, a->tag, a->n, idx);
+    for (int k = 0; k < r->nmem; k++)
+        if (idx[k] < 0)
+            gr_error(g, "fix rigid/small: rigid body atom %lld is missing",
+                     (long long)r->m[r->order[k]].tag);
+    r->extended = r->mol && r->mol->radius;
+    for (int k = 0; k < r->nmem; k++) {
+        struct member *m = &r->m[r->order[k]];
+        m->ext = a->radius[idx[k]] > 0.0;
+        r->extended |= m->ext;
+    }
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        memset(b->xcm, 0, sizeof b->xcm);
+        memset(b->xgc, 0, sizeof b->xgc);
+        b->mass = 0;
+        b->natoms = 0;
+    }
+    for (int k = 0; k < r->nmem; k++) {
+        int i = idx[k];
+        struct member *m = &r->m[r->order[k]];
+        struct rbody *b = &r->b[m->body];
+        double u[3], w = a->rmass[i];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        for (int d = 0; d < 3; d++) {
+            b->xcm[d] += u[d] * w;
+            b->xgc[d] += u[d];
+        }
+        b->mass += w;
+        b->natoms++;
+    }
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        for (int d = 0; d < 3; d++) {
+            b->xcm[d] /= b->mass;
+            b->xgc[d] /= b->natoms;
+            b->vcm[d] = b->angmom[d] = 0.0;
+            b->image[d] = 0;
+        }
+        domain_remap(g, b->xcm, b->image); /* pre_neighbor */
+    }
+    double (*it)[6] = gr_calloc(g, (size_t)r->nbody + 1, sizeof *it);
+    for (int k = 0; k < r->nmem; k++) {
+        int i = idx[k];
+        struct member *m = &r->m[r->order[k]];
+        struct rbody *b = &r->b[m->body];
+        for (int d = 0; d < 3; d++)
+            m->xbox[d] = a->image[3 * i + d] - b->image[d];
+        double u[3], w = a->rmass[i];
+        domain_unmap(g, a->x + 3 * i, m->xbox, u);
+        double dx = u[0] - b->xcm[0], dy = u[1] - b->xcm[1], dz = u[2] - b->xcm[2];
+        double *t = it[m->body];
+        t[0] += w * (dy * dy + dz * dz);
+        t[1] += w * (dx * dx + dz * dz);
+        t[2] += w * (dx * dx + dy * dy);
+        t[3] -= w * dy * dz;
+        t[4] -= w * dx * dz;
+        t[5] -= w * dx * dy;
+    }
+    if (r->extended)
+        for (int k = 0; k < r->nmem; k++) {
+            int i = idx[k];
+            struct member *m = &r->m[r->order[k]];
+            if (!m->ext)
+                continue;
+            double *t = it[m->body], ri = a->radius[i];
+            for (int d = 0; d < 3; d++)
+                t[d] += SINERTIA * a->rmass[i] * ri * ri;
+        }
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        if (rm_principal(it[ib], g->dom.dimension == 2, b->inertia, b->ex, b->ey, b->ez,
+                         b->quat))
+            gr_error(g, "insufficient Jacobi rotations for rigid body");
+        double delta[3] = {b->xgc[0] - b->xcm[0], b->xgc[1] - b->xcm[1], b->xgc[2] - b->xcm[2]};
+        domain_minimum_image(g, delta);
+        rm_transpose_matvec(b->ex, b->ey, b->ez, delta, b->xgc_body);
+        for (int d = 0; d < 3; d++)
+            b->xgc[d] = b->xcm[d] + delta[d];
+    }
+    free(it);
+    for (int k = 0; k < r->nmem; k++) {
+        int i = idx[k];
+        struct member *m = &r->m[r->order[k]];
+        struct rbody *b = &r->b[m->body];
+        double u[3], delta[3];
+        domain_unmap(g, a->x + 3 * i, m->xbox, u);
+        for (int d = 0; d < 3; d++)
+            delta[d] = u[d] - b->xcm[d];
+        rm_transpose_matvec(b->ex, b->ey, b->ez, delta, m->displace);
+    }
+    /* dynamic: vcm and angular momentum from the atoms */
+    for (int k = 0; k < r->nmem; k++) {
+        int i = idx[k];
+        struct member *m = &r->m[r->order[k]];
+        struct rbody *b = &r->b[m->body];
+        double w = a->rmass[i], u[3];
+        const double *v = a->v + 3 * i;
+        for (int d = 0; d < 3; d++)
+            b->vcm[d] += v[d] * w;
+        domain_unmap(g, a->x + 3 * i, m->xbox, u);
+        double dx = u[0] - b->xcm[0], dy = u[1] - b->xcm[1], dz = u[2] - b->xcm[2];
+        b->angmom[0] += dy * w * v[2] - dz * w * v[1];
+        b->angmom[1] += dz * w * v[0] - dx * w * v[2];
+        b->angmom[2] += dx * w * v[1] - dy * w * v[0];
+    }
+    if (r->extended)
+        for (int k = 0; k < r->nmem; k++) {
+            int i = idx[k];
+            struct member *m = &r->m[r->order[k]];
+            if (!m->ext)
+                continue;
+            struct rbody *b = &r->b[m->body];
+            double ri = a->radius[i];
+            for (int d = 0; d < 3; d++)
+                b->angmom[d] += SINERTIA * a->rmass[i] * ri * ri * a->omega[3 * i + d];
+        }
+    for (int ib = 0; ib < r->nbody; ib++)
+        for (int d = 0; d < 3; d++)
+            r->b[ib].vcm[d] /= r->b[ib].mass;
+    free(idx);
+}
+
+/* ---- device transfers ---------------------------------------------------------- */
+
+static void scratch(struct gravel *g, struct rigid *r, int n)
+{
+    if ((size_t)n <= r->hcap)
+        return;
+    size_t c = (size_t)n + (size_t)n / 4 + 16;
+    r->hm = gr_realloc(g, r->hm, c * sizeof(double));
+    r->htag = gr_realloc(g, r->htag, c * sizeof(int64_t));
+    r->himg = gr_realloc(g, r->himg, 3 * c * sizeof(int));
+    r->hcap = c;
+}
+
+/* Device and host buffers of the member-order transfers for r->nmem members. */
+static void member_buffers(struct gravel *g, struct rigid *r)
+{
+    if ((size_t)r->nmem <= r->dcap && r->d_idx)
+        return;
+    size_t c = (size_t)r->nmem + (size_t)r->nmem / 4 + 16, rs = g->eng->rsz;
+    cl_mem *m[] = {&r->d_idx, &r->d_x, &r->d_xl, &r->d_v, &r->d_w, &r->d_out};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+    r->d_idx = eng_alloc(g, c * sizeof(int), "rigid body member indices");
+    r->d_x = eng_alloc(g, 3 * c * rs, "rigid body member positions");
+    r->d_xl = eng_alloc(g, 3 * c * rs, "rigid body member positions (low parts)");
+    r->d_v = eng_alloc(g, 3 * c * rs, "rigid body member velocities");
+    r->d_w = eng_alloc(g, 3 * c * rs, "rigid body member spins");
+    r->d_out = eng_alloc(g, 6 * c * rs, "rigid body member forces");
+    r->mx = gr_realloc(g, r->mx, 3 * c * sizeof(double));
+    r->mxl = gr_realloc(g, r->mxl, 3 * c * sizeof(double));
+    r->mv = gr_realloc(g, r->mv, 3 * c * sizeof(double));
+    r->mw = gr_realloc(g, r->mw, 3 * c * sizeof(double));
+    r->mout = gr_realloc(g, r->mout, 6 * c * sizeof(double));
+    r->dcap = c;
+}
+
+/* After a rebuild: device indices, image shifts (xcm remapped into the box
+ * first, LAMMPS pre_neighbor + image_shift) and contact masses. */
+static void post_neighbor(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    struct engine *e = g->eng;
+    struct dev_atoms *s = eng_atoms(g);
+    int n = s->n;
+    if (r->nmem == 0) {
+        r->mapped = 1;
+        return;
+    }
+    scratch(g, r, n);
+    eng_read(g, s->tag, 0, (size_t)n * sizeof(int64_t), r->htag);
+    eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    match_tags(g, r, r->htag, n, idx);
+    for (int ib = 0; ib < r->nbody; ib++)
+        domain_remap(g, r->b[ib].xcm, r->b[ib].image);
+    for (int k = 0; k < r->nmem; k++) {
+        struct member *m = &r->m[r->order[k]];
+        if (idx[k] < 0)
+            gr_error(g, "fix rigid/small: rigid body atom %lld is missing at step %lld (lost?)",
+                     (long long)m->tag, (long long)g->step);
+        m->dev = idx[k];
+        for (int d = 0; d < 3; d++)
+            m->xbox[d] = r->himg[3 * m->dev + d] - r->b[m->body].image[d];
+    }
+    free(idx);
+    member_buffers(g, r);
+    int *di = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    for (int k = 0; k < r->nmem; k++)
+        di[k] = r->m[k].dev;
+    eng_write(g, r->d_idx, 0, (size_t)r->nmem * sizeof(int), di);
+    free(di);
+    /* contact masses: the body's for members, the atom's for the others */
+    if ((size_t)e->cap > r->cmass_cap || !r->cmass) {
+        if (r->cmass)
+            clReleaseMemObject(r->cmass);
+        r->cmass = eng_alloc(g, (size_t)e->cap * e->rsz, "rigid body contact masses");
+        r->cmass_cap = (size_t)e->cap;
+    }
+    eng_read_reals(g, s->rmass, (size_t)n, r->hm);
+    for (int k = 0; k < r->nmem; k++)
+        r->hm[r->m[k].dev] = r->b[r->m[k].body].mass;
+    eng_write_reals(g, r->cmass, (size_t)n, r->hm);
+    e->contact_mass = r->cmass;
+    r->mapped = 1;
+}
+
+static void need_map(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (!r->mapped)
+        post_neighbor(g, f);
+}
+
+/* Members' velocities (and positions with setx) from their bodies, and the
+ * spheres' omega; written in member order by rigid_scatter. */
+static void set_xv(struct gravel *g, struct fix *f, int setx)
+{
+    struct rigid *r = f->data;
+    if (r->nmem == 0)
+        return;
+    need_map(g, f);
+    struct engine *e = g->eng;
+    struct dev_atoms *s = eng_atoms(g);
+    int dim2 = g->dom.dimension == 2, setw = r->extended && e->rotation;
+    double L[3] = {prd(g, 0), prd(g, 1), prd(g, 2)};
+    int per[3], moved = 0;
+    for (int q = 0; q < 3; q++)
+        per[q] = domain_contact_periodic(g, q);
+    for (int k = 0; k < r->nmem; k++) {
+        struct member *m = &r->m[k];
+        const struct rbody *b = &r->b[m->body];
+        double *x = m->x, *v = r->mv + 3 * k, d[3];
+        rm_matvec(b->ex, b->ey, b->ez, m->displace, d);
+        v[0] = b->omega[1] * d[2] - b->omega[2] * d[1] + b->vcm[0];
+        v[1] = b->omega[2] * d[0] - b->omega[0] * d[2] + b->vcm[1];
+        v[2] = b->omega[0] * d[1] - b->omega[1] * d[0] + b->vcm[2];
+        if (dim2) {
+            d[2] = 0.0;
+            v[2] = 0.0;
+        }
+        if (setx)
+            for (int q = 0; q < 3; q++) {
+                x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                /* gravel wraps positions every step (nbr_check): keep the
+                 * member inside the box by its image shift, so the device
+                 * wrap leaves it alone and its image flag = body's + shift */
+                if (per[q] && (x[q] < g->dom.lo[q] || x[q] >= g->dom.hi[q])) {
+                    m->xbox[q] += (int)floor((x[q] - g->dom.lo[q]) / L[q]);
+                    x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                    if (x[q] >= g->dom.hi[q])
+                        m->xbox[q]++, x[q] = d[q] + (b->xcm[q] - m->xbox[q] * L[q]);
+                    if (x[q] < g->dom.lo[q])
+                        x[q] = g->dom.lo[q];
+                    moved = 1;
+                }
+            }
+        if (setw)
+            for (int q = 0; q < 3; q++)
+                r->mw[3 * k + q] = b->omega[q];
+    }
+    size_t c3 = 3 * (size_t)r->nmem;
+    if (setx) {
+        for (int k = 0; k < r->nmem; k++)
+            for (int q = 0; q < 3; q++) {
+                double rel = r->m[k].x[q] - e->origin[q];
+                double hi = e->single ? (double)(float)rel : rel;
+                r->mx[3 * k + q] = hi;
+                r->mxl[3 * k + q] = rel - hi;
+            }
+        eng_write_reals(g, r->d_x, c3, r->mx);
+        if (e->single)
+            eng_write_reals(g, r->d_xl, c3, r->mxl);
+    }
+    eng_write_reals(g, r->d_v, c3, r->mv);
+    if (setw)
+        eng_write_reals(g, r->d_w, c3, r->mw);
+    cl_kernel k = r->k_scatter;
+    int a = 0;
+    eng_arg_int(g, k, a++, r->nmem);
+    eng_arg_mem(g, k, a++, r->d_idx);
+    eng_arg_mem(g, k, a++, r->d_x);
+    eng_arg_mem(g, k, a++, r->d_xl);
+    eng_arg_mem(g, k, a++, r->d_v);
+    eng_arg_mem(g, k, a++, r->d_w);
+    eng_arg_int(g, k, a++, setx);
+    eng_arg_int(g, k, a++, setw);
+    eng_arg_mem(g, k, a++, s->x);
+    eng_arg_mem(g, k, a++, s->v);
+    eng_arg_mem(g, k, a++, e->rotation ? s->omega : s->v);
+    eng_arg_pos_lo(g, k, a);
+    eng_launch(g, k, (size_t)r->nmem);
+    if (moved) { /* image flags of the members that crossed a periodic face */
+        int n = s->n;
+        scratch(g, r, n);
+        eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+        for (int i = 0; i < r->nmem; i++)
+            for (int q = 0; q < 3; q++)
+                r->himg[3 * r->m[i].dev + q] = r->b[r->m[i].body].image[q] + r->m[i].xbox[q];
+        eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
+    }
+}
+
+static void enforce2d(struct rigid *r)
+{
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        b->xcm[2] = b->vcm[2] = b->fcm[2] = b->xgc[2] = 0.0;
+        b->torque[0] = b->torque[1] = 0.0;
+        b->angmom[0] = b->angmom[1] = 0.0;
+        b->omega[0] = b->omega[1] = 0.0;
+    }
+}
+
+/* F and T of every body from its members' f and torque (tag order),
+ * gathered in member order by rigid_gather. */
+static void forces_and_torques(struct gravel *g, struct fix *f, int gravity)
+{
+    struct rigid *r = f->data;
+    need_map(g, f);
+    struct engine *e = g->eng;
+    struct dev_atoms *s = eng_atoms(g);
+    int ext = r->extended && e->rotation;
+    cl_kernel k = r->k_gather;
+    eng_arg_int(g, k, 0, r->nmem);
+    eng_arg_mem(g, k, 1, r->d_idx);
+    eng_arg_mem(g, k, 2, s->f);
+    eng_arg_mem(g, k, 3, e->rotation ? s->torque : s->f);
+    eng_arg_int(g, k, 4, ext);
+    eng_arg_mem(g, k, 5, r->d_out);
+    eng_launch(g, k, (size_t)r->nmem);
+    eng_read_reals(g, r->d_out, 6 * (size_t)r->nmem, r->mout);
+    for (int ib = 0; ib < r->nbody; ib++) {
+        memset(r->b[ib].fcm, 0, sizeof r->b[ib].fcm);
+        memset(r->b[ib].torque, 0, sizeof r->b[ib].torque);
+    }
+    sort_members(g, r);
+    for (int j = 0; j < r->nmem; j++) {
+        int kk = r->order[j];
+        const struct member *m = &r->m[kk];
+        struct rbody *b = &r->b[m->body];
+        const double *fi = r->mout + 6 * kk;
+        double u[3];
+        for (int q = 0; q < 3; q++)
+            b->fcm[q] += fi[q];
+        domain_unmap(g, m->x, m->xbox, u);
+        double dx = u[0] - b->xcm[0], dy = u[1] - b->xcm[1], dz = u[2] - b->xcm[2];
+        b->torque[0] += dy * fi[2] - dz * fi[1];
+        b->torque[1] += dz * fi[0] - dx * fi[2];
+        b->torque[2] += dx * fi[1] - dy * fi[0];
+    }
+    if (ext)
+        for (int j = 0; j < r->nmem; j++) {
+            int kk = r->order[j];
+            const struct member *m = &r->m[kk];
+            if (!m->ext)
+                continue;
+            for (int q = 0; q < 3; q++)
+                r->b[m->body].torque[q] += r->mout[6 * kk + 3 + q];
+        }
+    if (gravity && r->gravity_id[0])
+        for (int ib = 0; ib < r->nbody; ib++)
+            for (int q = 0; q < 3; q++)
+                r->b[ib].fcm[q] += r->gvec[q] * r->b[ib].mass;
+}
+
+/* ---- the hooks ----------------------------------------------------------------- */
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (r->gravity_id[0]) {
+        struct fix *fg = fix_find(g, r->gravity_id);
+        if (!fg)
+            gr_error(g, "fix rigid/small %s cannot find fix gravity ID %s", f->id,
+                     r->gravity_id);
+        if (!fix_gravity_vector(fg, r->gvec))
+            gr_error(g, "fix rigid/small %s gravity fix ID %s is not a gravity fix style",
+                     f->id, r->gravity_id);
+    } else if ((r->mol) && fix_find_style(g, "gravity")) {
+        gr_warn(g, "Gravity may not be correctly applied to rigid bodies if they consist of "
+                   "overlapped particles");
+    }
+    unsigned integ = 0; /* groups other integrators move */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *o = g->styles.fix[i];
+        if (o != f && (!strcmp(o->style->name, "nve") || !strcmp(o->style->name, "nve/sphere")))
+            integ |= o->groupbit;
+    }
+    if (integ && r->nmem) {
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        int k;
+        for (k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0 && (g->atoms.mask[idx[k]] & integ))
+                break;
+        free(idx);
+        if (k < r->nmem)
+            gr_warn(g, "fix nve or nve/sphere also integrates atoms of the rigid bodies of fix "
+                       "%s", f->id);
+    }
+    r->k_gather = eng_kernel(g, "rigid_gather");
+    r->k_scatter = eng_kernel(g, "rigid_scatter");
+    r->dcap = 0; /* device buffers of an earlier run: regrown at the first map */
+    if (r->nmem) { /* positions: the host atoms are the device's now */
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        for (int k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0)
+                memcpy(r->m[r->order[k]].x, g->atoms.x + 3 * idx[k], 3 * sizeof(double));
+        free(idx);
+    }
+    r->dtv = g->dt;
+    r->dtf = 0.5 * g->dt;
+    r->dtq = 0.5 * g->dt;
+    if (r->nbody && (r->reinit || !r->setupflag))
+        setup_bodies(g, r);
+    r->setupflag = 1;
+    r->mapped = 0;
+}
+
+static void setup(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (r->nbody == 0)
+        return;
+    forces_and_torques(g, f, 0);
+    if (g->dom.dimension == 2)
+        enforce2d(r);
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        rm_angmom_to_omega(b->angmom, b->ex, b->ey, b->ez, b->inertia, b->omega);
+    }
+    set_xv(g, f, 0);
+}
+
+static void initial_integrate(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        double dtfm = r->dtf / b->mass;
+        for (int q = 0; q < 3; q++) {
+            b->vcm[q] += dtfm * b->fcm[q];
+            b->xcm[q] += r->dtv * b->vcm[q];
+            b->angmom[q] += r->dtf * b->torque[q];
+        }
+        rm_angmom_to_omega(b->angmom, b->ex, b->ey, b->ez, b->inertia, b->omega);
+        rm_richardson(b->quat, b->angmom, b->omega, b->inertia, r->dtq);
+        rm_q_to_exyz(b->quat, b->ex, b->ey, b->ez);
+    }
+    set_xv(g, f, 1);
+}
+
+static void final_integrate(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (r->nbody == 0)
+        return;
+    forces_and_torques(g, f, 1);
+    if (g->dom.dimension == 2)
+        enforce2d(r);
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        double dtfm = r->dtf / b->mass;
+        for (int q = 0; q < 3; q++) {
+            b->vcm[q] += dtfm * b->fcm[q];
+            b->angmom[q] += r->dtf * b->torque[q];
+        }
+        rm_angmom_to_omega(b->angmom, b->ex, b->ey, b->ez, b->inertia, b->omega);
+    }
+    set_xv(g, f, 0);
+}
+
+void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t tagprev,
+                          const double xgeom[3], const double vcm[3], const double quat[4])
+{
+    struct rigid *r = f->data;
+    const struct molecule *mol = r->mol;
+    struct atoms *a = &g->atoms;
+    int body = r->nbody;
+    struct rbody *b = new_body(g, r);
+    for (int i = first; i < first + mol->natoms; i++) {
+        struct member *m = new_member(g, r);
+        int k = (int)(a->tag[i] - tagprev - 1);
+        m->tag = a->tag[i];
+        m->body = body;
+        m->ext = mol->radius != NULL;
+        for (int q = 0; q < 3; q++) {
+            m->displace[q] = mol->dxbody[3 * k + q];
+            m->x[q] = a->x[3 * i + q];
+        }
+    }
+    if (mol->radius)
+        r->extended = 1;
+    b->mass = mol->masstotal;
+    b->natoms = mol->natoms;
+    double rot[3][3], c2c[3], c2r[3];
+    rm_quat_to_mat(quat, rot);
+    for (int q = 0; q < 3; q++)
+        c2c[q] = mol->com[q] - mol->center[q];
+    for (int q = 0; q < 3; q++)
+        c2r[q] = rot[q][0] * c2c[0] + rot[q][1] * c2c[1] + rot[q][2] * c2c[2];
+    for (int q = 0; q < 3; q++) {
+        b->xgc[q] = xgeom[q];
+        b->xcm[q] = c2r[q] + xgeom[q];
+        b->vcm[q] = vcm[q];
+        b->inertia[q] = mol->inertia[q];
+    }
+    rm_quatquat(quat, mol->quat, b->quat);
+    rm_q_to_exyz(b->quat, b->ex, b->ey, b->ez);
+    rm_transpose_matvec(b->ex, b->ey, b->ez, c2r, b->xgc_body);
+    for (int q = 0; q < 3; q++)
+        b->xgc_body[q] = -b->xgc_body[q];
+    r->mapped = 0; /* a rebuild follows the insertion (post_neighbor) */
+}
+
+/* LAMMPS FixRigidSmall::dof */
+static double dof(struct gravel *g, struct fix *f, unsigned groupbit)
+{
+    struct rigid *r = f->data;
+    if (!r->setupflag) {
+        if (r->nbody)
+            gr_warn(g, "Cannot count rigid body degrees-of-freedom before bodies are fully "
+                       "initialized");
+        return 0;
+    }
+    if (r->nbody == 0)
+        return 0;
+    int (*c)[3] = gr_calloc(g, (size_t)r->nbody, sizeof *c);
+    struct atoms *a = &g->atoms;
+    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    match_tags(g, r, a->tag, a->n, idx);
+    for (int k = 0; k < r->nmem; k++) {
+        const struct member *m = &r->m[r->order[k]];
+        c[m->body][2]++;
+        if (idx[k] >= 0 && (a->mask[idx[k]] & groupbit))
+            c[m->body][m->ext && r->extended ? 1 : 0]++;
+    }
+    free(idx);
+    double n = 0;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        if (c[ib][0] + c[ib][1] != c[ib][2])
+            continue;
+        if (g->dom.dimension == 3) {
+            n += 3 * c[ib][0] + 6 * c[ib][1] - 6;
+            const double *I = r->b[ib].inertia;
+            if (I[0] == 0.0 || I[1] == 0.0 || I[2] == 0.0)
+                n++;
+        } else {
+            n += 2 * c[ib][0] + 3 * c[ib][1] - 3;
+        }
+    }
+    free(c);
+    return n;
+}
+
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)buf;
+    (void)cap;
+    struct rigid *r = f->data;
+    if (r->nbody)
+        gr_error(g, "write_restart: fix rigid/small %s holds %d rigid bodies, whose state "
+                    "restart files do not store yet (not supported for rigid bodies)", f->id,
+                 r->nbody);
+    return 0;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    (void)g;
+    (void)f;
+    (void)buf;
+    (void)len;
+}
+
+static void destroy(struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (!r)
+        return;
+    free(r->b);
+    free(r->m);
+    free(r->order);
+    free(r->hm);
+    free(r->mx);
+    free(r->mxl);
+    free(r->mv);
+    free(r->mw);
+    free(r->mout);
+    cl_mem *m[] = {&r->d_idx, &r->d_x, &r->d_xl, &r->d_v, &r->d_w, &r->d_out};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i])
+            clReleaseMemObject(*m[i]);
+    free(r->htag);
+    free(r->himg);
+    if (r->cmass)
+        clReleaseMemObject(r->cmass);
+    free(r);
+}
+
+const struct fix_style fix_style_rigid_small = {
+    .name = "rigid/small",
+    .create = create,
+    .init = init,
+    .setup = setup,
+    .initial_integrate = initial_integrate,
+    .final_integrate = final_integrate,
+    .post_neighbor = post_neighbor,
+    .dof = dof,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+    .destroy = destroy,
+};

@@ -1,0 +1,20 @@
+/* fix_rigid_small.h - what fix pour needs of a fix rigid/small: its
+ * molecule template, and LAMMPS's FixRigidSmall::set_molecule for a body it
+ * has just inserted. */
+#ifndef GR_FIX_RIGID_SMALL_H
+#define GR_FIX_RIGID_SMALL_H
+
+#include "fix.h"
+
+struct molecule;
+
+/* The `mol` template of a fix rigid/small (NULL without one, or for other
+ * fixes). */
+struct molecule *rigid_small_template(const struct fix *f);
+/* A new body of template `m`: the host atoms first .. first + m->natoms - 1
+ * (tags tagprev + 1 ...), inserted with the template's geometric centre at
+ * xgeom, rotated by quat about it, moving with vcm (LAMMPS set_molecule). */
+void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t tagprev,
+                          const double xgeom[3], const double vcm[3], const double quat[4]);
+
+#endif
