@@ -31,18 +31,39 @@ static inline REAL wall_granular_eval_tcol(const struct contact *c, __global con
     return tcol_hertz(p[GR_KN], c->reff, c->meff, vn);
 }
 
+/* jkr walls (LAMMPS 2021 FixWallGran::pulloff_distance): the reach of a
+ * sphere of radius radi, radi + pull-off distance; with p[GRW_JKR2021] by
+ * LAMMPS 2021's wall formula, its a^3 = 9 pi coh radi / (4 E) (the wall's
+ * own one, not the pair's Reff^2) and the signed pull-off overlap added
+ * (it may shrink the reach); else the flat wall's physical pull-off gap,
+ * the pair's formula at Reff = radi. E = 3/4 kn (LAMMPS THREEQUARTERS). */
+static inline REAL wall_jkr_reach(__global const REAL *p, const REAL radi)
+{
+    const REAL E = p[GR_KN] * (REAL)0.75, coh = p[GR_COH];
+    if (p[GRW_JKR2021] != (REAL)0) {
+        const REAL a = cbrt((REAL)9 * (REAL)M_PI * coh * radi / ((REAL)4 * E));
+        return radi + (a * a / radi - (REAL)2 * sqrt((REAL)M_PI * coh * a / E));
+    }
+    return radi - grn_jkr_pulloff(E, coh, radi);
+}
+#define WALL_REACH_1(p, radi) wall_jkr_reach(p, radi)
+#define WALL_TOUCHED_1(p, hrow) ((hrow)[(int)(p)[GRW_HTOUCH]] != (REAL)0)
+
 WALL_KERNEL(wall_gran_hooke, gran_hooke_eval)
 WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_eval)
 WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_eval)
 WALL_KERNEL_ROW(wall_gran_granular, wall_granular_eval)
+WALL_KERNEL_HW(wall_gran_granular_jkr, wall_granular_eval, 1, 0, 1)
 
 /* mesh walls (fix wall/gran ... mesh): the same laws against triangles */
 MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
 MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_eval)
 MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)
+MESH_KERNEL_ROW(mesh_gran_granular, wall_granular_eval)
 
 /* region walls (fix wall/gran/region): the same laws against region surfaces */
 REGION_KERNEL(region_gran_hooke, gran_hooke_eval)
 REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_eval)
 REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_eval)
 REGION_KERNEL_ROW(region_gran_granular, wall_granular_eval)
+REGION_KERNEL_HW(region_gran_granular_jkr, wall_granular_eval, 1, 1)

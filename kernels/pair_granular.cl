@@ -252,18 +252,18 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     const int nm = (int)p[GR_NMODEL];
     const REAL radsum = c->radsum, rsq = c->rsq, Reff = c->reff;
     REAL E = p[GR_KN];
-    int touch;
+    int touch = 1; /* a wall's kernel decides its touch (wall_jkr_reach) */
     const int jkr = L.htouch >= 0 && GR_IS(L.n, GR_N_JKR, nm);
-    if (jkr) {
+    if (jkr)
         E *= (REAL)0.75;
-        if (h[L.htouch] != (REAL)0) {
+    if (!L.wall) {
+        if (jkr && h[L.htouch] != (REAL)0) {
             const REAL dist = radsum - grn_jkr_pulloff(E, p[GR_COH], Reff);
             touch = rsq < dist * dist;
         } else {
             touch = rsq < radsum * radsum;
         }
-    } else
-        touch = rsq < radsum * radsum;
+    }
     if (!touch) { /* reached only where a JKR pair makes the loop send every pair */
         for (int k = 0; k < L.width; k++)
             h[k] = 0;

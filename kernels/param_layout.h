@@ -43,9 +43,10 @@ enum gr_roll { GR_R_NONE, GR_R_SDS };
 /* fix wall/gran granular: the GR_* set, then the history layout of its one
  * model (kernels/fix_wall_gran.cl): tangential history on (0/1), offsets of
  * the contact radius (mindlin_rescale), rolling displacement, twist angle
- * and JKR touch flag (-1: absent), as LAMMPS 2021 sizes a wall's history. */
+ * and JKR touch flag (-1: absent), as LAMMPS 2021 sizes a wall's history;
+ * then 1 when a jkr wall reaches as LAMMPS 2021's (-compat lammps2021). */
 enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
-                 GRW_NPARAM };
+                 GRW_JKR2021, GRW_NPARAM };
 
 /* colloid (styles/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
  * (COL_SS small-small LJ, COL_SL colloid-small, COL_LL colloid-colloid as

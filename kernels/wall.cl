@@ -99,13 +99,16 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         __global REAL *torque, __global REAL *history, const int has_history,                  \
         __global REAL *acc, __global int *astep, const int acode, const int step
 
-#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0, 0)
-#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1, 0)
+#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0, 0, 0)
+#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1, 0, 0)
 /* APPROACH 1: EVAL also takes planes the sphere is apart from that one
  * drift at its normal rate brings into or out of contact (c.approach set;
  * pair_style approach, linear/restitution with fix wall/pair, which has no
- * cylinder: a cylinder acts only on spheres it touches) */
-#define WALL_KERNEL_HW(NAME, EVAL, ROW, APPROACH)                                              \
+ * cylinder: a cylinder acts only on spheres it touches). JKR 1: a jkr wall
+ * (kernels/fix_wall_gran.cl WALL_JKR_1): the contact reaches to WALL_REACH
+ * beyond touch and is held there only once it has touched (the touch flag of
+ * its history row); 0 folds either away. */
+#define WALL_KERNEL_HW(NAME, EVAL, ROW, APPROACH, JKR)                                         \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
@@ -141,7 +144,11 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
             const REAL3 dtest = del + del_lo;                                                  \
             const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
             struct contact c;                                                                  \
-            int touch = acts && (inclusive ? rsq <= radi * radi : rsq < radi * radi);          \
+            const REAL reach = WALL_REACH(JKR, p, radi);                                       \
+            int touch = acts && (inclusive ? rsq <= reach * reach : rsq < reach * reach);      \
+            __global REAL *hrow = history + slot * (size_t)has_history;                        \
+            if (JKR && touch && !WALL_TOUCHED(JKR, p, hrow) && rsq > radi * radi)              \
+                touch = 0; /* not touched yet: no hold beyond touch */                         \
             const int near_ = APPROACH && acts && !touch &&                                    \
                               wall_within_drift(vload3(i, v) - vwall, dtest, rsq, radi, dt);   \
             if (touch || near_) {                                                              \
@@ -149,10 +156,9 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
                 c = contact_make(del, radi, 0,                                                 \
                                  rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
                                  vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
-                touch = contact_refine(&c, del_lo) || APPROACH;                                \
+                touch = contact_refine(&c, del_lo) || APPROACH || JKR;                         \
                 c.approach = APPROACH;                                                         \
             }                                                                                  \
-            __global REAL *hrow = history + slot * (size_t)has_history;                        \
             if (!touch) {                                                                      \
                 for (int q = 0; q < has_history; q++)                                          \
                     hrow[q] = 0;                                                               \
@@ -179,6 +185,15 @@ static inline int wall_within_drift(const REAL3 vrel, const REAL3 dtest, const R
     const REAL r = sqrt(rsq);
     return fabs(dot(vrel, dtest)) * dt > r * (r - radi);
 }
+/* The reach of a wall contact (radi; a jkr wall's: WALL_REACH_1) and the
+ * touch flag of its history row (WALL_TOUCHED_1), both defined where a jkr
+ * kernel is instantiated (kernels/fix_wall_gran.cl). */
+#define WALL_REACH(JKR, p, radi) WALL_REACH_PASTE(JKR)(p, radi)
+#define WALL_REACH_PASTE(JKR) WALL_REACH_##JKR
+#define WALL_REACH_0(p, radi) (radi)
+#define WALL_TOUCHED(JKR, p, hrow) WALL_TOUCHED_PASTE(JKR)(p, hrow)
+#define WALL_TOUCHED_PASTE(JKR) WALL_TOUCHED_##JKR
+#define WALL_TOUCHED_0(p, hrow) 1
 
 /* One evaluation with the contact's history row hrow of hw REAL (0: none):
  * ROW 0 an evaluator of a 3-REAL shear (REAL3 *), ROW 1 one of the whole
@@ -219,7 +234,7 @@ static inline int wall_within_drift(const REAL3 vrel, const REAL3 dtest, const R
 /* fix wall/pair: the active pair style's law */
 #ifdef PAIR_EVAL
 #ifdef PAIR_APPROACH
-WALL_KERNEL_HW(wall_pair, PAIR_EVAL, 0, 1)
+WALL_KERNEL_HW(wall_pair, PAIR_EVAL, 0, 1, 0)
 #else
 WALL_KERNEL(wall_pair, PAIR_EVAL)
 #endif
@@ -345,16 +360,19 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
  * edge or vertex contact is dropped when another touching triangle that has
  * a vertex of that edge or vertex is closer (ties: the lower triangle id
  * keeps it), i.e. the contact belongs to the nearest feature. History lives
- * in MESH_SLOTS slots per atom keyed by triangle; a contact whose triangle
+ * in MESH_SLOTS slots per atom keyed by triangle (1 + hw REAL each: the key,
+ * then the law's hw = 3 REAL of shear, or for ROW 1 the has_history REAL of
+ * pair granular's sub-models, kernels/fix_wall_gran.cl); a contact whose triangle
  * has no slot takes over the slot of a triangle that no longer counts and
  * shares a vertex with it, so the shear follows a particle sliding from
  * triangle to triangle. fmesh (want_fmesh): per atom the force on the mesh
  * (3) and its torque about the reference point (3), for f_ID output. */
-#define MESH_KERNEL(NAME, EVAL) MESH_KERNEL_A(NAME, EVAL, 0)
+#define MESH_KERNEL(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 0, 0)
+#define MESH_KERNEL_ROW(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 1, 0)
 /* APPROACH 1: triangles the sphere is apart from that one drift at its
  * normal rate brings into or out of contact count too (as WALL_KERNEL_HW;
  * fix mesh/surface then bins the triangles with the neighbor skin added) */
-#define MESH_KERNEL_A(NAME, EVAL, APPROACH)                                                    \
+#define MESH_KERNEL_HW(NAME, EVAL, ROW, APPROACH)                                              \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
@@ -420,16 +438,18 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
                 }                                                                              \
             }                                                                                  \
         }                                                                                      \
+        const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */     \
         REAL okey[MESH_SLOTS];                                                                 \
-        REAL3 osh[MESH_SLOTS];                                                                 \
+        REAL osh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
         __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;     \
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
-                okey[s] = hist[4 * s];                                                         \
-                osh[s] = (REAL3)(hist[4 * s + 1], hist[4 * s + 2], hist[4 * s + 3]);           \
+                okey[s] = hist[(1 + hw) * s];                                                  \
+                for (int q = 0; q < hw; q++)                                                   \
+                    osh[s][q] = hist[(1 + hw) * s + 1 + q];                                    \
             }                                                                                  \
         REAL nkey[MESH_SLOTS];                                                                 \
-        REAL3 nsh[MESH_SLOTS];                                                                 \
+        REAL nsh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
         int nnew = 0;                                                                          \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);         \
         const REAL3 rref = (REAL3)(pose[22], pose[23], pose[24]);                              \
@@ -442,7 +462,9 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
             REAL3 vwall = (REAL3)(0);                                                          \
             if (moving)                                                                        \
                 vwall = vload3(4, pose) + cross(vload3(5, pose), cpt);                         \
-            REAL3 sh = (REAL3)(0);                                                             \
+            REAL sh[MESH_HMAX(ROW)];                                                           \
+            for (int q = 0; q < MESH_HMAX(ROW); q++)                                           \
+                sh[q] = 0;                                                                     \
             if (has_history) {                                                                 \
                 int found = -1;                                                                \
                 for (int s = 0; s < MESH_SLOTS; s++)                                           \
@@ -459,7 +481,8 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
                         found = s;                                                             \
                 }                                                                              \
                 if (found >= 0) {                                                              \
-                    sh = osh[found];                                                           \
+                    for (int q = 0; q < hw; q++)                                               \
+                        sh[q] = osh[found][q];                                                 \
                     okey[found] = 0; /* taken */                                               \
                 }                                                                              \
             }                                                                                  \
@@ -471,12 +494,14 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
             ct.shearupdate = shearupdate;                                                      \
             struct contact_force cf;                                                           \
             __global const REAL *pc = p_of(param, by_type, type[i] - 1, ntypes, nparam);       \
-            EVAL(&ct, pc, &sh, &cf);                                                           \
+            MESH_EVAL(ROW, EVAL, &ct, pc, sh, &cf);                                            \
             if (!APPROACH || ct.delta > (REAL)0)                                               \
                 ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                      \
             if (has_history && nnew < MESH_SLOTS) {                                            \
                 nkey[nnew] = (REAL)(t + 1);                                                    \
-                nsh[nnew++] = sh;                                                              \
+                for (int q = 0; q < hw; q++)                                                   \
+                    nsh[nnew][q] = sh[q];                                                      \
+                nnew++;                                                                        \
             }                                                                                  \
             fsum += cf.f;                                                                      \
             tsum += contact_torque_i(&ct, &cf);                                              \
@@ -486,10 +511,9 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
                 const int used = s < nnew;                                                     \
-                hist[4 * s] = used ? nkey[s] : (REAL)0;                                        \
-                hist[4 * s + 1] = used ? nsh[s].x : (REAL)0;                                   \
-                hist[4 * s + 2] = used ? nsh[s].y : (REAL)0;                                   \
-                hist[4 * s + 3] = used ? nsh[s].z : (REAL)0;                                   \
+                hist[(1 + hw) * s] = used ? nkey[s] : (REAL)0;                                 \
+                for (int q = 0; q < hw; q++)                                                   \
+                    hist[(1 + hw) * s + 1 + q] = used ? nsh[s][q] : (REAL)0;                   \
             }                                                                                  \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
@@ -500,10 +524,29 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
     }
 
 
+/* A mesh contact's evaluation with its history sh (MESH_HMAX(ROW) REAL): ROW 0
+ * a 3-REAL shear evaluator (REAL3 *), ROW 1 one of the whole row (pair
+ * granular's sub-models, the wall's width). */
+#define MESH_HMAX(ROW) MESH_HMAX_PASTE(ROW)
+#define MESH_HMAX_PASTE(ROW) MESH_HMAX_##ROW
+#define MESH_HMAX_0 3
+#define MESH_HMAX_1 WALL_HMAX
+#define MESH_EVAL(ROW, EVAL, c, p, sh, cf) MESH_EVAL_PASTE(ROW)(EVAL, c, p, sh, cf)
+#define MESH_EVAL_PASTE(ROW) MESH_EVAL_##ROW
+#define MESH_EVAL_0(EVAL, c, p, sh, cf)                                                        \
+    do {                                                                                       \
+        REAL3 s3_ = (REAL3)((sh)[0], (sh)[1], (sh)[2]);                                        \
+        EVAL(c, p, &s3_, cf);                                                                  \
+        (sh)[0] = s3_.x;                                                                       \
+        (sh)[1] = s3_.y;                                                                       \
+        (sh)[2] = s3_.z;                                                                       \
+    } while (0)
+#define MESH_EVAL_1(EVAL, c, p, sh, cf) EVAL(c, p, sh, cf)
+
 /* fix wall/pair ... mesh: the active pair style's law against triangles */
 #ifdef PAIR_EVAL
 #ifdef PAIR_APPROACH
-MESH_KERNEL_A(mesh_pair, PAIR_EVAL, 1)
+MESH_KERNEL_HW(mesh_pair, PAIR_EVAL, 0, 1)
 #else
 MESH_KERNEL(mesh_pair, PAIR_EVAL)
 #endif

@@ -535,9 +535,12 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
  * last one, new walls appended with zero shear; c2r maps as LAMMPS does).
  * dynamic: the surface moves with the velocity of the contact's node (0:
  * at rest; the host passes 0 for union / intersect, as LAMMPS 2021). */
-#define REGION_KERNEL(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 0)
-#define REGION_KERNEL_ROW(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 1)
-#define REGION_KERNEL_HW(NAME, EVAL, ROW)                                                      \
+#define REGION_KERNEL(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 0, 0)
+#define REGION_KERNEL_ROW(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 1, 0)
+/* JKR 1 (a jkr wall, kernels/wall.cl WALL_REACH): the region is searched to the
+ * reach, and a contact beyond touch not touched yet is skipped with the
+ * history of slot 0 zeroed, as LAMMPS 2021 FixWallGranRegion does. */
+#define REGION_KERNEL_HW(NAME, EVAL, ROW, JKR)                                                 \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
@@ -552,8 +555,12 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
             return;                                                                            \
         const REAL radi = radius[i];                                                           \
+        const int ti = type[i] - 1;                                                            \
+        __global const REAL *p =                                                               \
+            by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;                     \
         struct rg_contact c[RG_MAXC];                                                          \
-        int nc = region_surface(nodes, nnode, comb, rinterior, xi, radi, c);                   \
+        int nc = region_surface(nodes, nnode, comb, rinterior, xi,                             \
+                                WALL_REACH(JKR, p, radi), c);                                  \
         if (nc > slots)                                                                        \
             nc = slots;                                                                        \
         __global REAL *hist = has_history ? history + (size_t)i * (1 + (1 + hw) * slots) : history;\
@@ -608,11 +615,14 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
             }                                                                                  \
             hist[0] = (REAL)ncont;                                                             \
         }                                                                                      \
-        const int ti = type[i] - 1;                                                            \
-        __global const REAL *p =                                                               \
-            by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;                     \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
         for (int ic = 0; ic < nc; ic++) {                                                      \
+            __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
+            if (JKR && !WALL_TOUCHED(JKR, p, hs) && c[ic].r * c[ic].r > radi * radi) {         \
+                for (int q = 0; q < hw; q++)                                                   \
+                    hist[1 + slots + q] = 0;                                                   \
+                continue;                                                                      \
+            }                                                                                  \
             const REAL3 del = c[ic].del;                                                       \
             REAL3 vwall = (REAL3)(0);                                                          \
             if (dynamic)                                                                       \
@@ -627,7 +637,6 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
             ct.delta = ct.radsum - ct.r;                                                       \
             ct.dt = dt;                                                                        \
             ct.shearupdate = shearupdate;                                                      \
-            __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
             struct contact_force cf;                                                           \
             WALL_CALL(ROW, EVAL, &ct, p, hs, hw, &cf);                                         \
             ACC_NOTE_WALL(EVAL, i, &ct, p, acode, acc, astep, step);                           \

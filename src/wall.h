@@ -82,7 +82,7 @@ void wall_region_release(struct wall_region *wr);
  * A triangle mesh on the device in its own frame: per triangle its three
  * vertices and unit normal (12 REAL), its welded vertex ids (3 int), and its
  * bins (src/mesh.h). The pose (R, d, V0, omega, see fix_mesh_surface.h) is
- * uploaded at every launch. History: WALL_MESH_SLOTS slots of 4 REAL
+ * uploaded at every launch. History: WALL_MESH_SLOTS slots of 1 + width REAL
  * (key, shear) per atom per mesh. */
 #define WALL_MESH_SLOTS 4   /* = MESH_SLOTS in kernels/wall.cl */
 

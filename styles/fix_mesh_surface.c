@@ -230,7 +230,8 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
         mesh_surface_claim(g, ms, mw->id[m], f);
         wall_mesh_upload(g, &mw->wm[m], &ms->m, ms->normal, reach, who);
     }
-    return history ? (size_t)mw->n * WALL_MESH_SLOTS * 4 * eng_get(g)->rsz : 0;
+    /* per mesh WALL_MESH_SLOTS slots of a key and the law's history REAL */
+    return history ? (size_t)mw->n * WALL_MESH_SLOTS * (1 + history) * eng_get(g)->rsz : 0;
 }
 
 void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
@@ -249,7 +250,8 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
         if (pair_types)
             law->by_type = ms->type;
         wall_mesh_apply(g, f, &mw->wm[m], law, p.R, p.d, p.V0, p.omega, ref, p.moving,
-                        mw->n * WALL_MESH_SLOTS * 4, m * WALL_MESH_SLOTS * 4, ms->fmesh);
+                        mw->n * WALL_MESH_SLOTS * (1 + law->history),
+                        m * WALL_MESH_SLOTS * (1 + law->history), ms->fmesh);
         mesh_surface_filled(g, ms);
     }
 }

@@ -22,8 +22,9 @@
  * wall. Model granular (`granular <sub-models> wallstyle ...`) takes pair
  * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
  * and a history row of its sub-models' width per wall element / region slot
- * (parse_granular). Unsupported LAMMPS options (granular jkr, keyword
- * contacts) are rejected with a clear error. */
+ * (parse_granular); jkr walls hold beyond touch to the pull-off distance
+ * (kernels *_jkr). Meshes take model granular too (not jkr). Unsupported
+ * LAMMPS options (keyword contacts) are rejected with a clear error. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -71,7 +72,7 @@ struct wall {
 static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
                                            "wall_gran_hertz_history", "wall_gran_granular"};
 static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
-                                          "mesh_gran_hertz_history", NULL};
+                                          "mesh_gran_hertz_history", "mesh_gran_granular"};
 static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
                                             "region_gran_hertz_history",
                                             "region_gran_granular"};
@@ -144,9 +145,6 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     for (int k = 0; k + 2 < n; k++)
         if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
             kt_null = 1;
-    if (o.nm == GR_N_JKR)
-        gr_error(g, "fix wall/gran granular: the jkr normal model is not supported for walls "
-                    "(use hooke, hertz, hertz/material or dmt)");
     /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
      * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
      * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
@@ -165,7 +163,9 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
                            ? off++ : -1;
     w->param[GRW_HROLL] = o.rm == GR_R_SDS ? (off += 3) - 3 : -1;
     w->param[GRW_HTWIST] = o.wm != GR_W_NONE ? off++ : -1;
-    w->param[GRW_HTOUCH] = -1;
+    /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
+    w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
+    w->param[GRW_JKR2021] = g->opt.lammps2021;
     w->param[GRW_WIDTH] = off;
     w->history = off;
     return n;
@@ -235,6 +235,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         i += 2;
     } else if (!strcmp(ws, "mesh")) {
         /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
+        if (w.model == M_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
+            gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
+                        "meshes (hooke, hertz, hertz/material or dmt are)");
         w.style = W_MESH;
         i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
                                     "fix wall/gran mesh");
@@ -270,9 +273,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (w.style == W_REGION && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
                     "and rotate keywords)");
-    if (w.style == W_MESH && w.model == M_GRANULAR)
-        gr_error(g, "fix wall/gran mesh: model granular is not supported for meshes (use "
-                    "hooke, hooke/history or hertz/history)");
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
@@ -362,9 +362,15 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    w->law.kernel = eng_kernel(g, (w->style == W_MESH     ? mesh_kernel
-                                   : w->style == W_REGION ? region_kernel
-                                                          : model_kernel)[w->model]);
+    const char *kname = (w->style == W_MESH     ? mesh_kernel
+                         : w->style == W_REGION ? region_kernel
+                                                : model_kernel)[w->model];
+    char kjkr[64];
+    if (w->model == M_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR) {
+        snprintf(kjkr, sizeof kjkr, "%s_jkr", kname); /* held beyond touch */
+        kname = kjkr;
+    }
+    w->law.kernel = eng_kernel(g, kname);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;

@@ -22,7 +22,11 @@ rows follow their contacts through every rebuild and re-sort.
 
 Every deck runs with -compat lammps2021, the mode that reproduces that
 version where it is not physical (doc/lammps.md, Compatibility); only
-granular_owner_flip and granular_jkr_pulloff depend on it. granular_owner_flip
+granular_owner_flip, granular_jkr_pulloff and the jkr wall decks depend on it.
+
+granular_wall_jkr_plane must also show the wall contact held beyond touch up
+to the reach: LAMMPS 2021's wall pull-off distance with -compat lammps2021
+(0.00210 here), the physical flat-wall one without it (0.00766). granular_owner_flip
 must also depart from LAMMPS without it (relative 1e-3 or more): by default
 gravel keeps the rolling and twisting history LAMMPS negates when a pair
 changes owner."""
@@ -74,6 +78,42 @@ def check_hold(got):
     print(f"{'PASS' if ok else 'FAIL'} lammps_granular_jkr_hold_pulloff")
 
 
+def wall_reach(E, nu, coh, rad, lammps2021):
+    """the gap to which a jkr wall holds a sphere of radius rad (fix wall/gran
+    granular jkr): LAMMPS 2021's wall pulloff_distance (a^3 = 9 pi coh rad /
+    (4 E), signed), or the physical pull-off gap of a flat wall (Reff = rad)"""
+    Ej = 0.75 * E / (2 * (1 - nu)) * 1.333333333333333
+    if lammps2021:
+        a = (9 * math.pi * coh * rad / (4 * Ej)) ** (1.0 / 3.0)
+        return a * a / rad - 2 * math.sqrt(math.pi * coh * a / Ej)
+    a = (9 * math.pi * coh * rad * rad / (4 * Ej)) ** (1.0 / 3.0)
+    return -(a * a / rad - 2 * math.sqrt(math.pi * coh * a / Ej))
+
+
+def check_wall_hold(deck, got):
+    """granular_wall_jkr_plane: the sphere leaves the floor z = 0 held beyond
+    touch up to the reach (frames every 10 steps: the last frame with a
+    contact force has a gap below it, the next one above), with -compat
+    lammps2021 LAMMPS's reach, without it the physical one (longer here)"""
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        r = run_gravel(deck, tmp)
+        phys = read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {}
+    for label, frames, reach in (("lammps2021", got, wall_reach(1e5, 0.3, 50.0, 0.5, True)),
+                                 ("default", phys, wall_reach(1e5, 0.3, 50.0, 0.5, False))):
+        steps = sorted(frames)
+        touched = [s for s in steps if any(frames[s][1][k] != 0.0 for k in (9, 10, 12, 13, 14))]
+        ok = bool(touched) and touched[-1] != steps[-1]
+        if ok:
+            last = touched[-1]
+            nxt = steps[steps.index(last) + 1]
+            gap = lambda s: frames[s][1][2] - 0.5
+            ok = 0 < gap(last) < reach < gap(nxt)
+            print(f"  granular_wall_jkr_plane {label}: held to gap {gap(last):.5f}, free at "
+                  f"{gap(nxt):.5f}, reach {reach:.5f}")
+        print(f"{'PASS' if ok else 'FAIL'} granular_wall_jkr_hold_{label}")
+
+
 def check_rebuilds(deck, got):
     import tempfile
     text = open(deck).read().replace("check yes", "check no")
@@ -118,6 +158,8 @@ def main():
             check_hold(got)
         if name == "granular_material":
             check_rebuilds(deck, got)
+        if name == "granular_wall_jkr_plane":
+            check_wall_hold(deck, got)
         if name == "granular_owner_flip":
             check_default_departs(deck, ref)
 

@@ -9,7 +9,8 @@
  *    rolling across the shared edge of two coplanar triangles, or over the
  *    centre vertex of a fan of 8, = the same on one plane wall (1e-10: no
  *    bump, no double force, history carried across); a floor moving with
- *    move/mesh linear = wall/gran zplane shear (1e-10); a resting sphere
+ *    move/mesh linear = wall/gran zplane shear (1e-10); model granular on
+ *    the square and the fan = on the plane wall (1e-12); a resting sphere
  *    weighs m g on f_ID[3];
  *  - the pose of stacked motions (rotate + linear) against closed form;
  *  - dump mesh/vtk writes the moved triangles. */
@@ -579,6 +580,52 @@ TEST(shared_edge_and_vertex)
     CHECK(got[0] > 0.05 && got[1] > 0.05);  /* passed the centre */
 }
 
+/* fix wall/gran granular ... mesh: the granular evaluator of the plane wall,
+ * its whole history row per mesh contact. A sphere thrown sliding and
+ * spinning onto the two-triangle square and across its diagonal, and over
+ * the centre vertex of the fan, gives the zplane wall's trajectory to 1e-12
+ * (x, v, omega): the tangential, rolling and twisting history goes with the
+ * sphere from triangle to triangle. Two models: width 7 (mindlin, rolling,
+ * marshall) and width 8 (mindlin_rescale/force keeps the contact radius). */
+TEST(granular_mesh_equals_plane)
+{
+    static const char *const model[] = {
+        "granular hertz/material 50000 200 0.3 tangential mindlin NULL 1.0 0.4 "
+        "rolling sds 300 3 0.02 twisting marshall",
+        "granular dmt 50000 0.5 0.3 2.0 damping tsuji tangential mindlin_rescale/force 3000 "
+        "1.0 0.4 rolling sds 300 3 0.02 twisting sds 100 1 0.01"};
+    const char *deck = "units lj\natom_style sphere\nboundary f f f\n"
+                       "region b block -6 6 -6 6 -1 6\ncreate_box 1 b\n"
+                       "create_atoms 1 single %s 0.52 units box\n"
+                       "set atom 1 diameter 1.0 density 1.9098593\n"
+                       "velocity all set %s -0.3 units box\n"
+                       "set atom 1 omega 1 -2 3\n"
+                       "timestep 0.0002\nfix 1 all nve/sphere\nfix 2 all gravity 10.0 vector 0 0 -1\n"
+                       "thermo 0\n%s\nrun 6000\n";
+    static const char *const start[][3] = {{"-1 -0.5", "2.4 0", "two.stl"},
+                                           {"-1.3 -1.2", "2.4 2.2", "fan.stl"}};
+    char wall[1024], s[4096];
+    for (int m = 0; m < 2; m++)
+        for (int k = 0; k < 2; k++) {
+            double ref[9], got[9];
+            snprintf(wall, sizeof wall, "fix w all wall/gran %s zplane 0 NULL", model[m]);
+            snprintf(s, sizeof s, deck, start[k][0], start[k][1], wall);
+            int ok = run_state(s, ref, 1) == GR_OK;
+            snprintf(wall, sizeof wall, "fix m all mesh/surface file %s type 1\n"
+                     "fix w all wall/gran %s mesh n_meshes 1 meshes m", path(start[k][2]),
+                     model[m]);
+            snprintf(s, sizeof s, deck, start[k][0], start[k][1], wall);
+            ok = ok && run_state(s, got, 1) == GR_OK;
+            double d = ok ? max_diff(ref, got, 9) : 1e9;
+            printf("  granular model %d on %s: end at %.6g %.6g, max |diff| %.3g\n", m,
+                   start[k][2], got[0], got[1], d);
+            CHECK(ok && d <= 1e-12);
+            /* it rolled across the diagonal (square) or past the centre (fan), resting */
+            CHECK(k == 0 ? got[1] - got[0] < 0 : got[0] > 0.05 && got[1] > 0.05);
+            CHECK(fabs(got[2] - 0.5) < 0.01);
+        }
+}
+
 /* A sphere resting on a convex ridge (two triangles share the edge) and on
  * the apex of a pyramid (four share the vertex) feels one contact: it sinks
  * m g / kn, not half of it. */
@@ -945,6 +992,7 @@ int main(void)
     RUN(command_errors);
     RUN(box_equals_planes);
     RUN(shared_edge_and_vertex);
+    RUN(granular_mesh_equals_plane);
     RUN(convex_edge_and_vertex_count_once);
     RUN(wall_pair_mesh);
     RUN(linear_equals_shear);

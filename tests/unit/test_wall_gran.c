@@ -19,8 +19,8 @@ TEST(errors)
     CHECK_ERROR(BOX "fix w all wall/gran granular hooke 1 1 zplane 0 NULL\n",
                 "fix wall/gran granular: must specify normal or tangential contact model", 6);
     CHECK_ERROR(BOX "fix w all wall/gran granular jkr 1e5 1 0.3 10 tangential linear_history "
-                    "1 1 0.5 zplane 0 NULL\n",
-                "jkr normal model is not supported for walls", 6);
+                    "1 1 0.5 mesh n_meshes 1 meshes m\n",
+                "jkr normal model is not supported for meshes", 6);
     CHECK_ERROR(BOX "fix w all wall/gran granular hertz/material 1e5 1 0.3 tangential mindlin "
                     "NULL 1 0.5\n",
                 "missing the wall style", 6);
