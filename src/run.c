@@ -583,12 +583,12 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     run_end(g, ndump, ttot, tp, 0.0, tm, to, maxov, post);
 }
 
-/* run_steps under an error boundary: a run that stops on an error (lost or
- * non-finite atoms, a failed write, a fix) first ends its output
+/* body(g, ctx) under an error boundary: a run that stops on an error (lost
+ * or non-finite atoms, a failed write, a fix) first ends its output
  * (output_abort: progress line erased before the message, append-mode dumps
  * completed with the snapshots written so far) and marks the engine idle,
  * then the error goes on to the command boundary. */
-static void run_guarded(struct gravel *g, bigint n, int force, int post)
+static void guarded(struct gravel *g, void (*body)(struct gravel *, void *), void *ctx)
 {
     jmp_buf *outer = g->err.jmp, here;
     g->err.jmp = &here;
@@ -602,27 +602,44 @@ static void run_guarded(struct gravel *g, bigint n, int force, int post)
         gr_report_error(g);
         exit(1);
     }
-    run_steps(g, n, force, post);
+    body(g, ctx);
     g->err.jmp = outer;
+}
+
+struct run_args {
+    bigint n;
+    int force, post;
+};
+
+static void run_body(struct gravel *g, void *ctx)
+{
+    const struct run_args *r = ctx;
+    run_steps(g, r->n, r->force, r->post);
+}
+
+static void run_guarded(struct gravel *g, bigint n, int force, int post)
+{
+    struct run_args r = {n, force, post};
+    guarded(g, run_body, &r);
+}
+
+struct rerun_args {
+    bigint (*load)(struct gravel *, void *);
+    void *ctx;
+    bigint first, last;
+};
+
+static void rerun_body(struct gravel *g, void *ctx)
+{
+    const struct rerun_args *r = ctx;
+    rerun_steps(g, r->load, r->ctx, r->first, r->last, 1);
 }
 
 void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
                bigint firststep, bigint laststep)
 {
-    jmp_buf *outer = g->err.jmp, here;
-    g->err.jmp = &here;
-    if (setjmp(here)) {
-        g->err.jmp = outer;
-        output_abort(g);
-        if (g->eng)
-            g->eng->active = 0;
-        if (outer)
-            longjmp(*outer, 1);
-        gr_report_error(g);
-        exit(1);
-    }
-    rerun_steps(g, load, ctx, firststep, laststep, 1);
-    g->err.jmp = outer;
+    struct rerun_args r = {load, ctx, firststep, laststep};
+    guarded(g, rerun_body, &r);
 }
 
 /* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no]

@@ -521,6 +521,25 @@ static void nh_v_temp(struct gravel *g, struct fix *f, struct nh *n)
     atoms_initial(g, f, n, NH_TEMP, n->factor_eta, NULL);
 }
 
+
+/* The first half of a Nose-Hoover chain update (LAMMPS nhc_*_integrate): each
+ * thermostat's velocity, from the last down to the first, scaled by the next
+ * one's exp(-ncfac dt8 dot), kicked by dotdot ncfac dt4 and dragged; returns the factor used
+ * on dot[0]. dot has m + 1 entries (dot[m] = 0). */
+static double chain_half_kick(double *dot, const double *dotdot, int m, double ncfac,
+                              double dt8, double dt4, double drag)
+{
+    double expfac = 1.0;
+    for (int ich = m - 1; ich >= 0; ich--) {
+        expfac = exp(-ncfac * dt8 * dot[ich + 1]);
+        dot[ich] *= expfac;
+        dot[ich] += dotdot[ich] * ncfac * dt4;
+        dot[ich] *= drag;
+        dot[ich] *= expfac;
+    }
+    return expfac;
+}
+
 static void nhc_temp_integrate(struct gravel *g, struct fix *f, struct nh *n)
 {
     double boltz = temp_boltz(g), expfac;
@@ -533,18 +552,7 @@ static void nhc_temp_integrate(struct gravel *g, struct fix *f, struct nh *n)
     n->eta_dotdot[0] = n->eta_mass[0] > 0.0 ? (kecurrent - n->ke_target) / n->eta_mass[0] : 0.0;
     double ncfac = 1.0 / n->nc_tchain, dt8 = n->dt8, dt4 = n->dt4, dthalf = n->dthalf;
     for (int iloop = 0; iloop < n->nc_tchain; iloop++) {
-        for (int ich = m - 1; ich > 0; ich--) {
-            expfac = exp(-ncfac * dt8 * n->eta_dot[ich + 1]);
-            n->eta_dot[ich] *= expfac;
-            n->eta_dot[ich] += n->eta_dotdot[ich] * ncfac * dt4;
-            n->eta_dot[ich] *= n->tdrag_factor;
-            n->eta_dot[ich] *= expfac;
-        }
-        expfac = exp(-ncfac * dt8 * n->eta_dot[1]);
-        n->eta_dot[0] *= expfac;
-        n->eta_dot[0] += n->eta_dotdot[0] * ncfac * dt4;
-        n->eta_dot[0] *= n->tdrag_factor;
-        n->eta_dot[0] *= expfac;
+        expfac = chain_half_kick(n->eta_dot, n->eta_dotdot, m, ncfac, dt8, dt4, n->tdrag_factor);
         n->factor_eta = exp(-ncfac * dthalf * n->eta_dot[0]);
         nh_v_temp(g, f, n);
         /* the temperature follows the scaling (not recomputed, as LAMMPS) */
@@ -587,18 +595,7 @@ static void nhc_press_integrate(struct gravel *g, struct nh *n)
     n->etap_dotdot[0] = (kecurrent - lkt_press) / n->etap_mass[0];
     double ncfac = 1.0 / n->nc_pchain, dt8 = n->dt8, dt4 = n->dt4, dthalf = n->dthalf;
     for (int iloop = 0; iloop < n->nc_pchain; iloop++) {
-        for (int ich = m - 1; ich > 0; ich--) {
-            expfac = exp(-ncfac * dt8 * n->etap_dot[ich + 1]);
-            n->etap_dot[ich] *= expfac;
-            n->etap_dot[ich] += n->etap_dotdot[ich] * ncfac * dt4;
-            n->etap_dot[ich] *= n->pdrag_factor;
-            n->etap_dot[ich] *= expfac;
-        }
-        expfac = exp(-ncfac * dt8 * n->etap_dot[1]);
-        n->etap_dot[0] *= expfac;
-        n->etap_dot[0] += n->etap_dotdot[0] * ncfac * dt4;
-        n->etap_dot[0] *= n->pdrag_factor;
-        n->etap_dot[0] *= expfac;
+        expfac = chain_half_kick(n->etap_dot, n->etap_dotdot, m, ncfac, dt8, dt4, n->pdrag_factor);
         for (int ich = 0; ich < m; ich++)
             n->etap[ich] += ncfac * dthalf * n->etap_dot[ich];
         double factor_etap = exp(-ncfac * dthalf * n->etap_dot[0]);

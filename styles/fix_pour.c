@@ -136,6 +136,30 @@ static int near_region(const struct gravel *g, const struct pour *p, const doubl
            !outside(g, 1, x[1], p->lo_cur - delta, p->hi_cur + delta);
 }
 
+/* p->near = (x, y, z, r) of the nold existing atoms that could touch a new
+ * particle, with room for `extra` more (the new ones); returns their count. */
+static int near_list(struct gravel *g, struct pour *p, const struct atoms *a, int nold,
+                     int extra)
+{
+    int nnear = 0;
+    for (int i = 0; i < nold; i++)
+        if (near_region(g, p, a->x + 3 * i, a->radius[i]))
+            nnear++;
+    int need = nnear + extra;
+    if (need > p->near_cap) {
+        p->near = gr_realloc(g, p->near, (size_t)(need > 0 ? need : 1) * 4 * sizeof(double));
+        p->near_cap = need;
+    }
+    nnear = 0;
+    for (int i = 0; i < nold; i++)
+        if (near_region(g, p, a->x + 3 * i, a->radius[i])) {
+            double *q = p->near + 4 * nnear++;
+            q[0] = a->x[3 * i], q[1] = a->x[3 * i + 1], q[2] = a->x[3 * i + 2];
+            q[3] = a->radius[i];
+        }
+    return nnear;
+}
+
 static void xyz_random(const struct gravel *g, struct pour *p, double h, double c[3])
 {
     if (g->dom.dimension == 3) {
@@ -588,22 +612,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
     double shift = (double)(g->step - p->nfirst) * g->dt * p->rate;
     p->lo_cur = (dim == 3 ? p->zlo : p->ylo) + shift;
     p->hi_cur = (dim == 3 ? p->zhi : p->yhi) + shift;
-    int nnear = 0;
-    for (int i = 0; i < nold; i++)
-        if (near_region(g, p, a->x + 3 * i, a->radius[i]))
-            nnear++;
-    int need = nnear + nnew * natom;
-    if (need > p->near_cap) {
-        p->near = gr_realloc(g, p->near, (size_t)(need > 0 ? need : 1) * 4 * sizeof(double));
-        p->near_cap = need;
-    }
-    nnear = 0;
-    for (int i = 0; i < nold; i++)
-        if (near_region(g, p, a->x + 3 * i, a->radius[i])) {
-            double *q = p->near + 4 * nnear++;
-            q[0] = a->x[3 * i], q[1] = a->x[3 * i + 1], q[2] = a->x[3 * i + 2];
-            q[3] = a->radius[i];
-        }
+    int nnear = near_list(g, p, a, nold, nnew * natom);
     int nprevious = nnear;
     int nsuccess = 0;
     long attempt = 0, maxiter = (long)nnew * p->maxattempt;
@@ -750,22 +759,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     p->hi_cur = (dim == 3 ? p->zhi : p->yhi) + shift;
 
     /* the near list: atoms that could touch a new particle, then the new ones */
-    int nnear = 0;
-    for (int i = 0; i < nold; i++)
-        if (near_region(g, p, a->x + 3 * i, a->radius[i]))
-            nnear++;
-    int need = nnear + nnew;
-    if (need > p->near_cap) {
-        p->near = gr_realloc(g, p->near, (size_t)(need > 0 ? need : 1) * 4 * sizeof(double));
-        p->near_cap = need;
-    }
-    nnear = 0;
-    for (int i = 0; i < nold; i++)
-        if (near_region(g, p, a->x + 3 * i, a->radius[i])) {
-            double *q = p->near + 4 * nnear++;
-            q[0] = a->x[3 * i], q[1] = a->x[3 * i + 1], q[2] = a->x[3 * i + 2];
-            q[3] = a->radius[i];
-        }
+    int nnear = near_list(g, p, a, nold, nnew);
     int nprevious = nnear;
 
     int nsuccess = 0;
