@@ -1,4 +1,5 @@
-/* atoms.c - growth and bookkeeping of the host-side atom arrays. */
+/* atoms.c - growth and bookkeeping of the host-side atom arrays: every
+ * per-atom array is handled through the field table (atom_fields.h). */
 #include "atoms.h"
 
 #include <stdlib.h>
@@ -6,11 +7,11 @@
 
 #include "error.h"
 
-#define GROW(p, type, per)                                                                     \
-    do {                                                                                       \
-        p = gr_realloc(g, p, (size_t)cap * (per) * sizeof(type));                              \
-        memset(p + (size_t)a->cap * (per), 0, (size_t)(cap - a->cap) * (per) * sizeof(type)); \
-    } while (0)
+/* Grow one field to cap atoms; the new slots are zero. */
+#define GROW(name, ctype, dev, width, when, life, sect, what)                                  \
+    a->name = gr_realloc(g, a->name, (size_t)cap * (width) * sizeof(ctype));                   \
+    memset(a->name + (size_t)a->cap * (width), 0,                                             \
+           (size_t)(cap - a->cap) * (width) * sizeof(ctype));
 
 void atoms_reserve(struct gravel *g, int n)
 {
@@ -22,18 +23,7 @@ void atoms_reserve(struct gravel *g, int n)
     int cap = a->cap ? a->cap : 1024;
     while (cap < n)
         cap = cap < (1 << 29) ? cap * 2 : n;
-    GROW(a->tag, int64_t, 1);
-    GROW(a->type, int, 1);
-    GROW(a->mask, unsigned, 1);
-    GROW(a->x, double, 3);
-    GROW(a->v, double, 3);
-    GROW(a->f, double, 3);
-    GROW(a->omega, double, 3);
-    GROW(a->torque, double, 3);
-    GROW(a->radius, double, 1);
-    GROW(a->rmass, double, 1);
-    GROW(a->image, int, 3);
-    GROW(a->mol, int64_t, 1);
+    ATOM_FIELDS(GROW)
     a->cap = cap;
 }
 
@@ -47,41 +37,36 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
         tag = a->maxtag + 1;
     if (tag > a->maxtag)
         a->maxtag = tag;
+#define ZERO(name, ctype, dev, width, when, life, sect, what)                                  \
+    memset(a->name + (size_t)(width) * i, 0, (width) * sizeof(ctype));
+    ATOM_FIELDS(ZERO)
+#undef ZERO
     a->tag[i] = tag;
     a->type[i] = type;
     a->mask[i] = 1u;
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 3; k++)
         a->x[3 * i + k] = x[k];
-        a->v[3 * i + k] = a->f[3 * i + k] = 0;
-        a->omega[3 * i + k] = a->torque[3 * i + k] = 0;
-        a->image[3 * i + k] = 0;
-    }
     a->radius[i] = radius;
     a->rmass[i] = rmass;
-    a->mol[i] = 0;
     return i;
+}
+
+void atoms_copy(struct atoms *a, int from, int to)
+{
+    if (from == to)
+        return;
+#define COPY(name, ctype, dev, width, when, life, sect, what)                                  \
+    memcpy(a->name + (size_t)(width) * to, a->name + (size_t)(width) * from,                  \
+           (width) * sizeof(ctype));
+    ATOM_FIELDS(COPY)
+#undef COPY
 }
 
 void atoms_remove(struct gravel *g, int i)
 {
     struct atoms *a = &g->atoms;
     int last = --a->n;
-    if (i == last)
-        return;
-    a->tag[i] = a->tag[last];
-    a->type[i] = a->type[last];
-    a->mask[i] = a->mask[last];
-    a->radius[i] = a->radius[last];
-    a->rmass[i] = a->rmass[last];
-    a->mol[i] = a->mol[last];
-    for (int k = 0; k < 3; k++) {
-        a->x[3 * i + k] = a->x[3 * last + k];
-        a->v[3 * i + k] = a->v[3 * last + k];
-        a->f[3 * i + k] = a->f[3 * last + k];
-        a->omega[3 * i + k] = a->omega[3 * last + k];
-        a->torque[3 * i + k] = a->torque[3 * last + k];
-        a->image[3 * i + k] = a->image[3 * last + k];
-    }
+    atoms_copy(a, last, i);
 }
 
 void atoms_set_ntypes(struct gravel *g, int ntypes)
@@ -99,18 +84,9 @@ void atoms_set_ntypes(struct gravel *g, int ntypes)
 
 void atoms_free(struct atoms *a)
 {
-    free(a->tag);
-    free(a->type);
-    free(a->mask);
-    free(a->x);
-    free(a->v);
-    free(a->f);
-    free(a->omega);
-    free(a->torque);
-    free(a->radius);
-    free(a->rmass);
-    free(a->image);
-    free(a->mol);
+#define FREE(name, ctype, dev, width, when, life, sect, what) free(a->name);
+    ATOM_FIELDS(FREE)
+#undef FREE
     free(a->order);
     free(a->type_mass);
     memset(a, 0, sizeof *a);

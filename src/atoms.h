@@ -2,7 +2,8 @@
  *
  * The host copy is the source of truth between runs; `run` uploads it and
  * downloads it back at the end and whenever output needs it. Arrays grow
- * geometrically; indices are local positions, `tag` is the identity. */
+ * geometrically; indices are local positions, `tag` is the identity. The
+ * arrays themselves are the rows of the field table (atom_fields.h). */
 #ifndef GR_ATOMS_H
 #define GR_ATOMS_H
 
@@ -14,6 +15,9 @@ void atoms_reserve(struct gravel *g, int n);
  * mass as given; velocity, omega, image zero; mask = "all". */
 int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double radius,
               double rmass);
+/* Copy every per-atom field of atom `from` into slot `to` (LAMMPS's
+ * AtomVec::copy). */
+void atoms_copy(struct atoms *a, int from, int to);
 /* Remove atom i by moving the last atom into its slot. */
 void atoms_remove(struct gravel *g, int i);
 /* Set ntypes and size the per-type tables. */

@@ -292,38 +292,91 @@ static void choose_origin(struct gravel *g)
     }
 }
 
+/* ---- the per-atom set, driven by the field table (atom_fields.h) ---------------- */
+
+/* 1 when the current run holds fields of this `when` on the device. */
+static int field_on(const struct gravel *g, enum atom_field_when when)
+{
+    switch (when) {
+    case FW_ROTATION: return g->eng->rotation;
+    case FW_MOLECULE: return g->atoms.molecule_flag;
+    default: return 1;
+    }
+}
+
+/* Device bytes per atom of a field of host element size hsz. */
+static size_t field_bytes(const struct engine *e, enum atom_field_dev dev, size_t hsz, int width)
+{
+    return (size_t)width * (dev == FD_RAW ? hsz : e->rsz);
+}
+
+size_t eng_field_bytes(const struct gravel *g, enum atom_field_dev dev, size_t hsz, int width)
+{
+    return field_bytes(g->eng, dev, hsz, width);
+}
+
+/* Host atoms first .. first + n - 1 of one field (host array src) to the device. */
+static void field_put(struct gravel *g, struct dev_atoms *s, cl_mem m, enum atom_field_dev dev,
+                      size_t hsz, int width, int first, int n, const void *src)
+{
+    size_t o = (size_t)first * width, c = (size_t)n * width;
+    switch (dev) {
+    case FD_POS: eng_write_positions(g, s, first, n, (const double *)src + o); break;
+    case FD_REAL: eng_write_reals_at(g, m, o, c, (const double *)src + o); break;
+    case FD_RAW: eng_write(g, m, o * hsz, c * hsz, (const char *)src + o * hsz); break;
+    }
+}
+
+/* The first n atoms of one field from the device into host array dst. */
+static void field_get(struct gravel *g, struct dev_atoms *s, cl_mem m, enum atom_field_dev dev,
+                      size_t hsz, int width, int n, void *dst)
+{
+    size_t c = (size_t)n * width;
+    switch (dev) {
+    case FD_POS: eng_read_positions(g, s, n, dst); break;
+    case FD_REAL: eng_read_reals(g, m, c, dst); break;
+    case FD_RAW: eng_read(g, m, 0, c * hsz, dst); break;
+    }
+}
+
+static void release_mem(cl_mem *m)
+{
+    if (*m) {
+        clReleaseMemObject(*m);
+        *m = NULL;
+    }
+}
+
 static void release_set(struct dev_atoms *s)
 {
-    cl_mem *m[] = {&s->x, &s->xlo, &s->v, &s->f, &s->omega, &s->torque, &s->radius,
-                   &s->rmass, &s->type, &s->mask, &s->tag, &s->image, &s->mol};
-    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
-        if (*m[i]) {
-            clReleaseMemObject(*m[i]);
-            *m[i] = NULL;
-        }
+#define RELEASE(name, ctype, dev, width, when, life, sect, what) release_mem(&s->name);
+    ATOM_FIELDS(RELEASE)
+#undef RELEASE
+    release_mem(&s->xlo);
 }
 
 static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
 {
     struct engine *e = g->eng;
-    size_t r = e->rsz, n = (size_t)cap;
-    s->x = eng_alloc(g, 3 * n * r, "positions");
+    size_t n = (size_t)cap;
+#define ALLOC(name, ctype, dev, width, when, life, sect, what)                                 \
+    if (field_on(g, when))                                                                    \
+        s->name = eng_alloc(g, n * field_bytes(e, dev, sizeof(ctype), width), what);
+    ATOM_FIELDS(ALLOC)
+#undef ALLOC
     if (e->single)
-        s->xlo = eng_alloc(g, 3 * n * r, "positions (low parts)");
-    s->v = eng_alloc(g, 3 * n * r, "velocities");
-    s->f = eng_alloc(g, 3 * n * r, "forces");
-    if (e->rotation) {
-        s->omega = eng_alloc(g, 3 * n * r, "angular velocities");
-        s->torque = eng_alloc(g, 3 * n * r, "torques");
-    }
-    s->radius = eng_alloc(g, n * r, "radii");
-    s->rmass = eng_alloc(g, n * r, "masses");
-    s->type = eng_alloc(g, n * sizeof(cl_int), "types");
-    s->mask = eng_alloc(g, n * sizeof(cl_uint), "group masks");
-    s->tag = eng_alloc(g, n * sizeof(cl_long), "tags");
-    s->image = eng_alloc(g, 3 * n * sizeof(cl_int), "image flags");
-    if (g->atoms.molecule_flag)
-        s->mol = eng_alloc(g, n * sizeof(cl_long), "molecule IDs");
+        s->xlo = eng_alloc(g, 3 * n * e->rsz, "positions (low parts)");
+}
+
+/* 1 when the set holds exactly the fields the current run needs. */
+static int set_matches_run(struct gravel *g, const struct dev_atoms *s)
+{
+    int ok = 1;
+#define MATCH(name, ctype, dev, width, when, life, sect, what)                                 \
+    ok = ok && (s->name != NULL) == (field_on(g, when) != 0);
+    ATOM_FIELDS(MATCH)
+#undef MATCH
+    return ok;
 }
 
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
@@ -331,9 +384,7 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
 void eng_reserve(struct gravel *g, int n)
 {
     struct engine *e = g->eng;
-    int rot_have = e->a.x && (e->a.omega != NULL);
-    int mol_have = e->a.mol != NULL;
-    if (n <= e->cap && e->a.x && rot_have == e->rotation && mol_have == g->atoms.molecule_flag)
+    if (n <= e->cap && e->a.x && set_matches_run(g, &e->a))
         return;
     int cap = n > 16 ? n + n / 8 : 16;
     release_set(&e->a);
@@ -341,6 +392,43 @@ void eng_reserve(struct gravel *g, int n)
     e->cap = cap;
     e->ocl.atoms_hint = cap;
     e->tag_sum = 0; /* the neighbor list indexes the old buffers */
+}
+
+/* Host atoms first .. first + n - 1, every field the device holds. */
+static void put_atoms(struct gravel *g, int first, int n)
+{
+    struct dev_atoms *s = &g->eng->a;
+    const struct atoms *at = &g->atoms;
+#define PUT(name, ctype, dev, width, when, life, sect, what)                                   \
+    if (s->name)                                                                              \
+        field_put(g, s, s->name, dev, sizeof(ctype), width, first, n, at->name);
+    ATOM_FIELDS(PUT)
+#undef PUT
+}
+
+/* Per-atom state of fixes (fix.h): the one allocation path. A fix that
+ * declares peratom_bytes gets zero-filled buffers of e->cap atoms when it
+ * has none, when they are too small, or when !keep (the atoms changed since
+ * the state was written); otherwise its state is kept. */
+void eng_fix_state(struct gravel *g, int keep)
+{
+    struct engine *e = g->eng;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom_bytes)
+            continue;
+        if (f->peratom_bytes % 4)
+            gr_error(g, "fix %s: per-atom state size %zu is not a multiple of 4 bytes", f->id,
+                     f->peratom_bytes);
+        if (keep && f->peratom && f->peratom_cap >= (size_t)e->cap)
+            continue;
+        release_mem(&f->peratom);
+        release_mem(&f->peratom_tmp);
+        f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+        f->peratom_tmp = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+        f->peratom_cap = (size_t)e->cap;
+        eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
+    }
 }
 
 static uint64_t tag_checksum(const struct atoms *a)
@@ -363,43 +451,10 @@ void eng_upload(struct gravel *g)
     eng_reserve(g, n);
     if (!keep || !e->tag_sum)
         nbr_invalidate(g);
-    struct dev_atoms *s = &e->a;
-    s->n = n;
-    eng_write_positions(g, s, 0, n, at->x);
-    eng_write_reals(g, s->v, 3 * (size_t)n, at->v);
-    eng_write_reals(g, s->f, 3 * (size_t)n, at->f);
-    if (e->rotation) {
-        eng_write_reals(g, s->omega, 3 * (size_t)n, at->omega);
-        eng_write_reals(g, s->torque, 3 * (size_t)n, at->torque);
-    }
-    eng_write_reals(g, s->radius, (size_t)n, at->radius);
-    eng_write_reals(g, s->rmass, (size_t)n, at->rmass);
-    eng_write(g, s->type, 0, (size_t)n * sizeof(cl_int), at->type);
-    eng_write(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
-    eng_write(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
-    eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
-    if (s->mol)
-        eng_write(g, s->mol, 0, (size_t)n * sizeof(cl_long), at->mol);
+    e->a.n = n;
+    put_atoms(g, 0, n);
     /* per-atom state of fixes: keep while the atoms are the same, else zero */
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *f = g->styles.fix[i];
-        if (!f->peratom_bytes)
-            continue;
-        if (f->peratom_bytes % 4)
-            gr_error(g, "fix %s: per-atom state size %zu is not a multiple of 4 bytes", f->id,
-                     f->peratom_bytes);
-        if (!keep || f->peratom_cap < (size_t)e->cap || !f->peratom) {
-            if (f->peratom)
-                clReleaseMemObject(f->peratom);
-            if (f->peratom_tmp)
-                clReleaseMemObject(f->peratom_tmp);
-            f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
-            f->peratom_tmp =
-                eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
-            f->peratom_cap = (size_t)e->cap;
-            eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
-        }
-    }
+    eng_fix_state(g, keep);
     e->active = 1;
 }
 
@@ -416,21 +471,7 @@ void eng_append(struct gravel *g, int nold)
     if (n > e->cap)
         gr_error(g, "internal error: %d atoms inserted beyond the run's capacity %d", n, e->cap);
     size_t o = (size_t)nold, c = (size_t)k;
-    eng_write_positions(g, s, nold, k, at->x + 3 * o);
-    eng_write_reals_at(g, s->v, 3 * o, 3 * c, at->v + 3 * o);
-    eng_write_reals_at(g, s->f, 3 * o, 3 * c, at->f + 3 * o);
-    if (e->rotation) {
-        eng_write_reals_at(g, s->omega, 3 * o, 3 * c, at->omega + 3 * o);
-        eng_write_reals_at(g, s->torque, 3 * o, 3 * c, at->torque + 3 * o);
-    }
-    eng_write_reals_at(g, s->radius, o, c, at->radius + o);
-    eng_write_reals_at(g, s->rmass, o, c, at->rmass + o);
-    eng_write(g, s->type, o * sizeof(cl_int), c * sizeof(cl_int), at->type + o);
-    eng_write(g, s->mask, o * sizeof(cl_uint), c * sizeof(cl_uint), at->mask + o);
-    eng_write(g, s->tag, o * sizeof(cl_long), c * sizeof(cl_long), at->tag + o);
-    eng_write(g, s->image, 3 * o * sizeof(cl_int), 3 * c * sizeof(cl_int), at->image + 3 * o);
-    if (s->mol)
-        eng_write(g, s->mol, o * sizeof(cl_long), c * sizeof(cl_long), at->mol + o);
+    put_atoms(g, nold, k);
     cl_uint zero = 0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
@@ -456,21 +497,11 @@ void run_sync_host(struct gravel *g)
     if (n > at->cap)
         atoms_reserve(g, n);
     at->n = n;
-    eng_read_positions(g, s, n, at->x);
-    eng_read_reals(g, s->v, 3 * (size_t)n, at->v);
-    eng_read_reals(g, s->f, 3 * (size_t)n, at->f);
-    if (e->rotation) {
-        eng_read_reals(g, s->omega, 3 * (size_t)n, at->omega);
-        eng_read_reals(g, s->torque, 3 * (size_t)n, at->torque);
-    }
-    eng_read_reals(g, s->radius, (size_t)n, at->radius);
-    eng_read_reals(g, s->rmass, (size_t)n, at->rmass);
-    eng_read(g, s->type, 0, (size_t)n * sizeof(cl_int), at->type);
-    eng_read(g, s->mask, 0, (size_t)n * sizeof(cl_uint), at->mask);
-    eng_read(g, s->tag, 0, (size_t)n * sizeof(cl_long), at->tag);
-    eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(cl_int), at->image);
-    if (s->mol)
-        eng_read(g, s->mol, 0, (size_t)n * sizeof(cl_long), at->mol);
+#define GET(name, ctype, dev, width, when, life, sect, what)                                   \
+    if (s->name)                                                                              \
+        field_get(g, s, s->name, dev, sizeof(ctype), width, n, at->name);
+    ATOM_FIELDS(GET)
+#undef GET
     e->tag_sum = tag_checksum(at);
     e->n_at_sync = n;
 }

@@ -14,18 +14,14 @@
 #include "ocl.h"
 #include "run.h"
 
-/* Device per-atom arrays in device order (REAL = float or double). */
+/* Device per-atom arrays in device order (REAL = float or double): one
+ * buffer per row of the field table (atom_fields.h), NULL when the run does
+ * not hold that field (its `when` column). x is relative to eng->origin. */
+#define DEV_ATOM_MEMBER(name, ctype, dev, width, when, life, sect, what) cl_mem name;
 struct dev_atoms {
     int n;                      /* atoms on the device */
-    cl_mem x, v, f;             /* REAL[3n] interleaved; x relative to eng->origin */
+    ATOM_FIELDS(DEV_ATOM_MEMBER)
     cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
-    cl_mem omega, torque;       /* REAL[3n], only with rotation (else NULL) */
-    cl_mem radius, rmass;       /* REAL[n] */
-    cl_mem type;                /* int[n] */
-    cl_mem mask;                /* uint[n] */
-    cl_mem tag;                 /* long[n] */
-    cl_mem image;               /* int[3n] */
-    cl_mem mol;                 /* long[n] molecule IDs, only with molecule IDs (else NULL) */
 };
 
 struct nbr;                     /* neighbor.c */
@@ -162,6 +158,15 @@ void eng_upload(struct gravel *g);
 void eng_release_kernels(struct engine *e);
 /* Make sure the per-atom set holds at least n atoms (contents not kept). */
 void eng_reserve(struct gravel *g, int n);
+/* Device bytes per atom of a field-table row (atom_fields.h) whose host
+ * elements have size hsz. */
+size_t eng_field_bytes(const struct gravel *g, enum atom_field_dev dev, size_t hsz, int width);
+/* The fixes' per-atom state (fix.h), the one allocation path: each fix with
+ * peratom_bytes gets zero-filled buffers of the run's capacity unless it
+ * holds big enough ones and keep (the atoms are those the state belongs to).
+ * Called at upload (before fix init) and after fix init (keep = 1: only
+ * state declared there is new). */
+void eng_fix_state(struct gravel *g, int keep);
 /* During a run: the host atoms nold .. g->atoms.n - 1 (just added behind
  * the atoms of the last run_sync_host) go to the device behind the others;
  * existing atoms, their contacts and history are untouched, the new ones'

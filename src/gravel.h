@@ -11,6 +11,8 @@
 #include <stdio.h>
 #include <setjmp.h>
 
+#include "atom_fields.h"
+
 #define GR_VERSION "0.1.0"
 
 #define GR_MAXGROUP 32      /* groups are bits of a 32-bit per-atom mask */
@@ -75,16 +77,7 @@ struct domain {
 struct atoms {
     int n, cap;
     int ntypes;
-    int64_t *tag;           /* global id, 1-based */
-    int *type;              /* 1..ntypes */
-    unsigned *mask;         /* group bits; bit 0 is "all" */
-    double *x, *v, *f;      /* 3 per atom, interleaved xyz */
-    double *omega, *torque; /* 3 per atom */
-    double *radius;
-    double *rmass;          /* per-atom mass (sphere) */
-    int *image;             /* 3 per atom: periodic image counts */
-    int64_t *mol;           /* molecule ID per atom (0 = none); meaningful with
-                             * molecule_flag (fix property/atom mol) */
+    ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays (atom_fields.h) */
     int molecule_flag;      /* 1: atoms carry molecule IDs (LAMMPS atom->molecule_flag) */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;

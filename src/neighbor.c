@@ -992,6 +992,9 @@ static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t byte
     struct engine *e = g->eng;
     if (n == 0)
         return;
+    if (bytes > 3 * e->rsz || bytes % 4)
+        gr_error(g, "internal error: a per-atom field of %zu bytes per atom does not fit the "
+                    "re-sort's scratch (the force buffer)", bytes);
     cl_kernel k = b->k_reorder_words;
     eng_arg_int(g, k, 0, n);
     eng_arg_int(g, k, 1, (int)(bytes / 4));
@@ -1010,7 +1013,6 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
 {
     struct engine *e = g->eng;
     struct dev_atoms *s = &e->a;
-    size_t r = e->rsz;
     if (e->history && b->old_valid && b->ncontact_old > 0) {
         /* cellof is free now: it becomes the inverse permutation */
         OCL_CHECK(g, clEnqueueFillBuffer(e->ocl.queue, b->cellof, &(cl_int){-1},
@@ -1028,20 +1030,14 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
-    reorder_array(g, b, s->x, 3 * r, nkeep);
+    /* the fields that move with their atoms (atom_fields.h, FL_STATE) */
+#define REORDER(name, ctype, dev, width, when, life, sect, what)                               \
+    if (life == FL_STATE && s->name)                                                          \
+        reorder_array(g, b, s->name, eng_field_bytes(g, dev, sizeof(ctype), width), nkeep);
+    ATOM_FIELDS(REORDER)
+#undef REORDER
     if (s->xlo)
-        reorder_array(g, b, s->xlo, 3 * r, nkeep);
-    reorder_array(g, b, s->v, 3 * r, nkeep);
-    if (e->rotation)
-        reorder_array(g, b, s->omega, 3 * r, nkeep);
-    reorder_array(g, b, s->radius, r, nkeep);
-    reorder_array(g, b, s->rmass, r, nkeep);
-    reorder_array(g, b, s->type, sizeof(cl_int), nkeep);
-    reorder_array(g, b, s->mask, sizeof(cl_uint), nkeep);
-    reorder_array(g, b, s->tag, sizeof(cl_long), nkeep);
-    reorder_array(g, b, s->image, 3 * sizeof(cl_int), nkeep);
-    if (s->mol)
-        reorder_array(g, b, s->mol, sizeof(cl_long), nkeep);
+        reorder_array(g, b, s->xlo, 3 * e->rsz, nkeep);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (!f->peratom)

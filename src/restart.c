@@ -49,10 +49,6 @@ enum sect {
     S_MOLECULE, /* optional: molecule IDs (fix property/atom mol) */
     S_LAST
 };
-static const char *const sect_name[] = {"", "info", "domain", "neighbor", "groups", "types",
-                                        "atoms", "pair", "neighbor list", "fixes",
-                                        "molecule IDs"};
-
 /* ---- growable output buffer -------------------------------------------------- */
 
 struct wbuf {
@@ -188,12 +184,7 @@ struct image {
     double *type_mass;
     int64_t maxtag;
     int n;
-    int64_t *tag;
-    int *type;
-    unsigned *mask;
-    double *x, *v, *f, *omega, *torque, *radius, *rmass;
-    int *image;
-    int64_t *mol;               /* NULL: no molecule IDs */
+    ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays; mol NULL: no molecule IDs */
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
@@ -228,11 +219,12 @@ static void image_free(struct image *im)
 {
     if (!im)
         return;
-    void *p[] = {im->type_mass, im->tag, im->type, im->mask, im->x, im->v, im->f, im->omega,
-                 im->torque, im->radius, im->rmass, im->image, im->devtag, im->ncount,
-                 im->partner, im->shear, im->xhold, im->mol};
+    void *p[] = {im->type_mass, im->devtag, im->ncount, im->partner, im->shear, im->xhold};
     for (size_t i = 0; i < sizeof p / sizeof *p; i++)
         free(p[i]);
+#define FREE_FIELD(name, ctype, dev, width, when, life, sect, what) free(im->name);
+    ATOM_FIELDS(FREE_FIELD)
+#undef FREE_FIELD
     for (int i = 0; i < im->nfix; i++) {
         free(im->fix[i].blob);
         free(im->fix[i].peratom);
@@ -287,27 +279,368 @@ static uint64_t force_fingerprint(const struct gravel *g)
     return h;
 }
 
-/* Every per-atom host array, in order. */
+/* Every per-atom host array of the atoms section, in file order. */
 static uint64_t atoms_fingerprint(const struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
     size_t n = (size_t)a->n;
     uint64_t h = fnv1a(FNV_INIT, &a->n, sizeof a->n);
-    h = fnv1a(h, a->tag, n * sizeof *a->tag);
-    h = fnv1a(h, a->type, n * sizeof *a->type);
-    h = fnv1a(h, a->mask, n * sizeof *a->mask);
-    h = fnv1a(h, a->x, 3 * n * sizeof(double));
-    h = fnv1a(h, a->v, 3 * n * sizeof(double));
-    h = fnv1a(h, a->f, 3 * n * sizeof(double));
-    h = fnv1a(h, a->omega, 3 * n * sizeof(double));
-    h = fnv1a(h, a->torque, 3 * n * sizeof(double));
-    h = fnv1a(h, a->radius, n * sizeof(double));
-    h = fnv1a(h, a->rmass, n * sizeof(double));
-    h = fnv1a(h, a->image, 3 * n * sizeof(int));
+#define HASH_FIELD(name, ctype, dev, width, when, life, sect, what)                            \
+    if (sect == FS_ATOMS)                                                                     \
+        h = fnv1a(h, a->name, n * (width) * sizeof(ctype));
+    ATOM_FIELDS(HASH_FIELD)
+#undef HASH_FIELD
     return h;
 }
 
-/* ---- writing ---------------------------------------------------------------------- */
+/* ---- sections: each writer beside its reader ------------------------------------------
+ *
+ * A writer appends its whole section (header included) or nothing (optional
+ * sections); a reader parses one section's bytes into the image with bounds
+ * checks and returns 0 with a message in err when the values are invalid.
+ * The driver (load) then rejects a truncated section or trailing bytes.
+ * `seen` has bit id set for every section already read. */
+
+/* What the list writer tells the fixes writer: atoms of the written list. */
+struct wctx {
+    int ndev;
+};
+
+#define BAD(...)                                                                         \
+    do {                                                                                 \
+        snprintf(err, errlen, __VA_ARGS__);                                              \
+        return 0;                                                                        \
+    } while (0)
+
+static void write_info(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    size_t at = sect_begin(g, w, S_INFO);
+    put_str(g, w, GR_VERSION);
+    put_i64(g, w, g->step);
+    put_i64(g, w, g->laststep_reset);
+    put_f64(g, w, g->time);
+    put_f64(g, w, g->dt);
+    put_i32(g, w, g->dt_set);
+    put_i32(g, w, g->eng ? g->eng->single : g->opt.single);
+    put_u64(g, w, g->seed_counter);
+    sect_end(w, at);
+}
+
+static int read_info(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    get_str(r, im->version, sizeof im->version);
+    im->step = get_i64(r);
+    im->laststep_reset = get_i64(r);
+    im->time = get_f64(r);
+    im->dt = get_f64(r);
+    im->dt_set = get_i32(r);
+    im->single = get_i32(r);
+    im->seed_counter = get_u64(r);
+    if (!r->bad && (im->step < 0 || !(im->dt > 0) || !isfinite(im->dt) || !isfinite(im->time)))
+        BAD("invalid step %lld or time step %g", (long long)im->step, im->dt);
+    return 1;
+}
+
+static void write_domain(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    const struct domain *d = &g->dom;
+    size_t at = sect_begin(g, w, S_DOMAIN);
+    put_i32(g, w, (int32_t)d->units);
+    put_i32(g, w, d->dimension);
+    for (int q = 0; q < 3; q++)
+        for (int s = 0; s < 2; s++)
+            put_i32(g, w, d->bnd[q][s]);
+    for (int q = 0; q < 3; q++)
+        put_i32(g, w, d->periodic[q]);
+    const double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
+    for (int k = 0; k < 5; k++)
+        for (int q = 0; q < 3; q++)
+            put_f64(g, w, vec[k][q]);
+    const struct lattice *l = &d->lat;
+    put_i32(g, w, l->style);
+    for (int q = 0; q < 3; q++) {
+        put_f64(g, w, l->a[q]);
+        put_f64(g, w, l->prim[q]);
+        put_f64(g, w, l->origin[q]);
+    }
+    put_i32(g, w, l->nbasis);
+    for (int b = 0; b < 8; b++)
+        for (int q = 0; q < 3; q++)
+            put_f64(g, w, l->basis[b][q]);
+    put_i32(g, w, d->triclinic);
+    put_f64(g, w, d->xy);
+    put_f64(g, w, d->xz);
+    put_f64(g, w, d->yz);
+    sect_end(w, at);
+}
+
+static int read_domain(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    struct domain *d = &im->dom;
+    d->units = (enum units)get_i32(r);
+    d->dimension = get_i32(r);
+    for (int q = 0; q < 3; q++)
+        for (int s = 0; s < 2; s++)
+            d->bnd[q][s] = (char)get_i32(r);
+    for (int q = 0; q < 3; q++)
+        d->periodic[q] = get_i32(r);
+    double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
+    for (int k = 0; k < 5; k++)
+        for (int q = 0; q < 3; q++)
+            vec[k][q] = get_f64(r);
+    struct lattice *l = &d->lat;
+    l->style = get_i32(r);
+    for (int q = 0; q < 3; q++) {
+        l->a[q] = get_f64(r);
+        l->prim[q] = get_f64(r);
+        l->origin[q] = get_f64(r);
+    }
+    l->nbasis = get_i32(r);
+    for (int b = 0; b < 8; b++)
+        for (int q = 0; q < 3; q++)
+            l->basis[b][q] = get_f64(r);
+    d->triclinic = get_i32(r);
+    d->xy = get_f64(r);
+    d->xz = get_f64(r);
+    d->yz = get_f64(r);
+    if (r->bad)
+        return 1;
+    if ((d->triclinic != 0 && d->triclinic != 1) || !isfinite(d->xy) || !isfinite(d->xz) ||
+        !isfinite(d->yz) || (!d->triclinic && (d->xy != 0 || d->xz != 0 || d->yz != 0)))
+        BAD("invalid triclinic flag %d or tilt factors %g %g %g", d->triclinic, d->xy, d->xz,
+            d->yz);
+    if (d->units != UNITS_LJ && d->units != UNITS_SI && d->units != UNITS_CGS)
+        BAD("invalid units code %d", (int)d->units);
+    if (d->dimension != 2 && d->dimension != 3)
+        BAD("invalid dimension %d", d->dimension);
+    if (l->nbasis < 0 || l->nbasis > 8)
+        BAD("invalid lattice basis count %d", l->nbasis);
+    for (int q = 0; q < 3; q++) {
+        for (int s = 0; s < 2; s++)
+            if (!strchr("pfsm", d->bnd[q][s]) || !d->bnd[q][s])
+                BAD("invalid boundary flag in dimension %c", "xyz"[q]);
+        if ((d->periodic[q] != 0) != (d->bnd[q][0] == 'p'))
+            BAD("inconsistent periodic flag in dimension %c", "xyz"[q]);
+        if (!(d->lo[q] < d->hi[q]) || !isfinite(d->lo[q]) || !isfinite(d->hi[q]) ||
+            !isfinite(d->minlo[q]) || !isfinite(d->minhi[q]) || !isfinite(d->small[q]))
+            BAD("invalid box bounds %g %g in dimension %c", d->lo[q], d->hi[q], "xyz"[q]);
+    }
+    d->box_exists = 1;
+    return 1;
+}
+
+static void write_neigh(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    size_t at = sect_begin(g, w, S_NEIGH);
+    const struct neigh_settings *ns = &g->neigh;
+    put_f64(g, w, ns->skin);
+    int32_t iv[] = {ns->style, ns->every, ns->delay,    ns->check,        ns->once,
+                    ns->one,   ns->page,  ns->nexclude, ns->nexclude_type};
+    for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
+        put_i32(g, w, iv[k]);
+    for (int k = 0; k < 16; k++)
+        for (int s = 0; s < 2; s++) {
+            put_i32(g, w, ns->exclude_group[k][s]);
+            put_i32(g, w, ns->exclude_type[k][s]);
+        }
+    sect_end(w, at);
+}
+
+static int read_neigh(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    struct neigh_settings *ns = &im->neigh;
+    ns->skin = get_f64(r);
+    int *iv[] = {&ns->style, &ns->every, &ns->delay,    &ns->check,        &ns->once,
+                 &ns->one,   &ns->page,  &ns->nexclude, &ns->nexclude_type};
+    for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
+        *iv[k] = get_i32(r);
+    for (int k = 0; k < 16; k++)
+        for (int s = 0; s < 2; s++) {
+            ns->exclude_group[k][s] = get_i32(r);
+            ns->exclude_type[k][s] = get_i32(r);
+        }
+    if (!r->bad && (!(ns->skin >= 0) || !isfinite(ns->skin) || ns->every < 1 || ns->delay < 0 ||
+                    ns->nexclude < 0 || ns->nexclude > 16 || ns->nexclude_type < 0 ||
+                    ns->nexclude_type > 16))
+        BAD("invalid neighbor settings");
+    for (int k = 0; k < 16 && !r->bad; k++)
+        for (int s = 0; s < 2; s++)
+            if (ns->exclude_group[k][s] < 0 || ns->exclude_group[k][s] >= GR_MAXGROUP)
+                BAD("invalid neighbor exclusion group");
+    return 1;
+}
+
+static void write_groups(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    size_t at = sect_begin(g, w, S_GROUPS);
+    put_i32(g, w, g->groups.n);
+    for (int k = 0; k < GR_MAXGROUP; k++) {
+        put_i32(g, w, g->groups.used[k]);
+        put_str(g, w, g->groups.used[k] ? g->groups.name[k] : "");
+    }
+    sect_end(w, at);
+}
+
+static int read_groups(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    im->groups.n = get_i32(r);
+    for (int k = 0; k < GR_MAXGROUP; k++) {
+        im->groups.used[k] = get_i32(r);
+        get_str(r, im->groups.name[k], GR_NAMELEN);
+    }
+    if (!r->bad && (im->groups.n < 1 || im->groups.n > GR_MAXGROUP || !im->groups.used[0] ||
+                    strcmp(im->groups.name[0], "all")))
+        BAD("invalid group table");
+    return 1;
+}
+
+static void write_types(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    const struct atoms *a = &g->atoms;
+    size_t at = sect_begin(g, w, S_TYPES);
+    put_i32(g, w, a->ntypes);
+    for (int t = 0; t <= a->ntypes; t++)
+        put_f64(g, w, a->type_mass ? a->type_mass[t] : 0.0);
+    put_i64(g, w, a->maxtag);
+    sect_end(w, at);
+}
+
+static int read_types(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    im->ntypes = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (im->ntypes < 1 || im->ntypes > 1000000)
+        BAD("invalid number of atom types %d", im->ntypes);
+    im->type_mass = get_array(r, (size_t)im->ntypes + 1, sizeof(double));
+    im->maxtag = get_i64(r);
+    return 1;
+}
+
+/* The per-atom fields of one restart section (atom_fields.h, column sect), in
+ * table order: n * width raw host elements each. */
+static void put_fields(struct gravel *g, struct wbuf *w, enum atom_field_sect in)
+{
+    const struct atoms *a = &g->atoms;
+    size_t n = (size_t)a->n;
+#define PUT_FIELD(name, ctype, dev, width, when, life, sect, what)                             \
+    if (sect == in)                                                                           \
+        put(g, w, a->name, n * (width) * sizeof(ctype));
+    ATOM_FIELDS(PUT_FIELD)
+#undef PUT_FIELD
+}
+
+static void get_fields(struct image *im, struct rbuf *r, enum atom_field_sect in)
+{
+    size_t n = (size_t)im->n;
+#define GET_FIELD(name, ctype, dev, width, when, life, sect, what)                             \
+    if (sect == in)                                                                           \
+        im->name = get_array(r, n * (width), sizeof(ctype));
+    ATOM_FIELDS(GET_FIELD)
+#undef GET_FIELD
+}
+
+static void write_atoms(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    size_t at = sect_begin(g, w, S_ATOMS);
+    put_i32(g, w, g->atoms.n);
+    put_fields(g, w, FS_ATOMS);
+    sect_end(w, at);
+}
+
+static int read_atoms(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    im->n = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (im->n < 0)
+        BAD("invalid atom count %d", im->n);
+    get_fields(im, r, FS_ATOMS);
+    return 1;
+}
+
+/* Optional: the molecule IDs (fix property/atom mol) and the molecule
+ * exclusions of neigh_modify. */
+static void write_molecule(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    if (!g->atoms.molecule_flag)
+        return;
+    size_t at = sect_begin(g, w, S_MOLECULE);
+    put_i32(g, w, g->atoms.n);
+    put_fields(g, w, FS_MOLECULE);
+    put_i32(g, w, g->neigh.nexclude_mol); /* neigh_modify exclude molecule/... */
+    for (int k = 0; k < 16; k++)
+        for (int q = 0; q < 2; q++)
+            put_i32(g, w, g->neigh.exclude_mol[k][q]);
+    sect_end(w, at);
+}
+
+static int read_molecule(struct image *im, struct rbuf *r, unsigned seen, char *err,
+                         size_t errlen)
+{
+    int nm = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (!(seen >> S_ATOMS & 1u) || nm != im->n)
+        BAD("molecule IDs of %d atoms, not the atoms section's %d", nm, im->n);
+    get_fields(im, r, FS_MOLECULE);
+    struct neigh_settings *ns = &im->neigh;
+    ns->nexclude_mol = get_i32(r);
+    for (int k = 0; k < 16; k++)
+        for (int q = 0; q < 2; q++)
+            ns->exclude_mol[k][q] = get_i32(r);
+    if (!r->bad && (ns->nexclude_mol < 0 || ns->nexclude_mol > 16))
+        BAD("invalid molecule exclusions");
+    for (int k = 0; k < 16 && !r->bad; k++)
+        if (ns->exclude_mol[k][0] < 0 || ns->exclude_mol[k][0] >= GR_MAXGROUP)
+            BAD("invalid molecule exclusion group");
+    return 1;
+}
+
+static void write_pair(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    size_t at = sect_begin(g, w, S_PAIR);
+    const struct pair *p = g->styles.pair;
+    put_i32(g, w, p != NULL);
+    if (p) {
+        put_str(g, w, p->style->name);
+        put_i32(g, w, p->coeff_set);
+        put_i32(g, w, PAIR_MAXCOEF);
+        for (int k = 0; k < PAIR_MAXCOEF; k++)
+            put_f64(g, w, p->coef[k]);
+    }
+    sect_end(w, at);
+}
+
+static int read_pair(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    im->has_pair = get_i32(r);
+    if (im->has_pair) {
+        get_str(r, im->pair_name, sizeof im->pair_name);
+        im->coeff_set = get_i32(r);
+        im->ncoef = get_i32(r);
+        if (!r->bad && (im->ncoef < 0 || im->ncoef > PAIR_MAXCOEF))
+            BAD("invalid pair coefficient count %d", im->ncoef);
+        for (int k = 0; k < im->ncoef; k++)
+            im->coef[k] = get_f64(r);
+    }
+    return 1;
+}
 
 /* 1 when the device arrays equal the host arrays in the same order (the
  * device list then describes the host atoms exactly). */
@@ -339,16 +672,16 @@ static int device_matches_host(struct gravel *g)
     return same;
 }
 
-static void write_fixes(struct gravel *g, struct wbuf *w, int ndev);
-
-static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
+/* Optional: the device neighbor list in device order with its contact
+ * history and, when the device holds the host atoms exactly, the reference
+ * positions of the last build. */
+static void write_list(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     struct engine *e = g->eng;
     struct nbr_state s;
-    if (!e || !e->a.x || !nbr_export(g, &s)) {
-        write_fixes(g, w, 0);
+    c->ndev = 0;
+    if (!e || !e->a.x || !nbr_export(g, &s))
         return;
-    }
     int n = s.n;
     int64_t *devtag = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
     eng_read(g, e->a.tag, 0, (size_t)n * sizeof(int64_t), devtag);
@@ -374,14 +707,59 @@ static void write_list_and_fixes(struct gravel *g, struct wbuf *w)
     sect_end(w, at);
     nbr_state_free(&s);
     free(devtag);
-    write_fixes(g, w, n);
+    c->ndev = n;
+}
+
+static int read_list(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    if (!(seen >> S_ATOMS & 1u))
+        BAD("neighbor list section before the atoms");
+    im->has_list = 1;
+    im->exact = get_i32(r);
+    im->history = get_i32(r);
+    im->ndev = get_i32(r);
+    im->maxn = get_i32(r);
+    im->ago = get_i32(r);
+    im->fingerprint = get_u64(r);
+    if (r->bad)
+        return 1;
+    /* a list never holds more slots per atom than atoms (+ its growth margin) */
+    if (im->ndev < 0 || im->maxn < 0 || im->ago < 0 ||
+        (int64_t)im->maxn > 64 + 2 * (int64_t)im->ndev)
+        BAD("invalid neighbor list header");
+    size_t n = (size_t)im->ndev;
+    im->devtag = get_array(r, n, sizeof(int64_t));
+    im->ncount = get_array(r, n, sizeof(int));
+    if (r->bad)
+        return 1;
+    size_t tot = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (im->ncount[i] < 0 || im->ncount[i] > im->maxn)
+            BAD("invalid neighbor count %d (capacity %d)", im->ncount[i], im->maxn);
+        tot += (size_t)im->ncount[i];
+    }
+    im->npartner = tot;
+    im->partner = get_array(r, tot, sizeof(int64_t));
+    if (im->history == 1) /* files before pair granular: 1 = 3 REAL per contact */
+        im->history = 3;
+    if (im->history < 0 || im->history > GR_HIST_MAX)
+        BAD("invalid contact history width %d", im->history);
+    if (im->history)
+        im->shear = get_array(r, (size_t)im->history * tot, sizeof(double));
+    if (im->exact) {
+        if (im->ndev != im->n || (im->n && memcmp(im->devtag, im->tag, n * sizeof(int64_t))))
+            BAD("neighbor list marked exact does not match the atoms");
+        im->xhold = get_array(r, 3 * n, sizeof(double));
+    }
+    return 1;
 }
 
 /* Fixes: ID, style, global state (write_restart hook) and, with a list of
- * ndev atoms written, the engine-managed per-atom state in device order. */
-static void write_fixes(struct gravel *g, struct wbuf *w, int ndev)
+ * c->ndev atoms written, the engine-managed per-atom state in device order. */
+static void write_fixes(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     struct engine *e = g->eng;
+    int ndev = c->ndev;
     size_t at = sect_begin(g, w, S_FIXES);
     put_i32(g, w, g->styles.nfix);
     for (int i = 0; i < g->styles.nfix; i++) {
@@ -414,119 +792,97 @@ static void write_fixes(struct gravel *g, struct wbuf *w, int ndev)
     sect_end(w, at);
 }
 
+static int read_fixes(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    (void)seen;
+    int nfix = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (nfix < 0 || nfix > 100000)
+        BAD("invalid fix count %d", nfix);
+    im->fix = calloc((size_t)nfix + 1, sizeof *im->fix);
+    if (!im->fix)
+        BAD("out of memory");
+    im->nfix = nfix;
+    for (int i = 0; i < nfix && !r->bad; i++) {
+        struct fix_saved *fs = &im->fix[i];
+        get_str(r, fs->id, sizeof fs->id);
+        get_str(r, fs->style, sizeof fs->style);
+        fs->arghash = get_u64(r);
+        uint64_t len = get_u64(r);
+        if (r->bad)
+            break;
+        if (len > r->n - r->off)
+            BAD("fix %s: state length beyond the section", fs->id);
+        fs->bloblen = (size_t)len;
+        fs->blob = get_array(r, fs->bloblen, 1);
+        fs->peratom_bytes = get_u32(r);
+        fs->rsz = get_u32(r);
+        fs->nrows = get_i32(r);
+        if (r->bad)
+            break;
+        if (fs->nrows && (fs->nrows != im->ndev || !im->has_list))
+            BAD("fix %s: per-atom state of %d atoms does not match the list", fs->id, fs->nrows);
+        if (fs->peratom_bytes % 4 || fs->peratom_bytes > 1024)
+            BAD("fix %s: invalid per-atom state size %u", fs->id, fs->peratom_bytes);
+        fs->peratom = get_array(r, (size_t)fs->nrows, fs->peratom_bytes);
+    }
+    return 1;
+}
+
+/* The sections in file order (the writer's order; a reader accepts any
+ * order, each section once, the list after the atoms). */
+static const struct section {
+    enum sect id;
+    const char *name;
+    int required;
+    void (*write)(struct gravel *g, struct wbuf *w, struct wctx *c);
+    int (*read)(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen);
+} sections[] = {
+    {S_INFO, "info", 1, write_info, read_info},
+    {S_DOMAIN, "domain", 1, write_domain, read_domain},
+    {S_NEIGH, "neighbor", 1, write_neigh, read_neigh},
+    {S_GROUPS, "groups", 1, write_groups, read_groups},
+    {S_TYPES, "types", 1, write_types, read_types},
+    {S_ATOMS, "atoms", 1, write_atoms, read_atoms},
+    {S_MOLECULE, "molecule IDs", 0, write_molecule, read_molecule},
+    {S_PAIR, "pair", 1, write_pair, read_pair},
+    {S_LIST, "neighbor list", 0, write_list, read_list},
+    {S_FIXES, "fixes", 1, write_fixes, read_fixes},
+};
+enum { NSECTION = sizeof sections / sizeof *sections };
+
+static const struct section *section_of(uint32_t id)
+{
+    for (int k = 0; k < NSECTION; k++)
+        if (sections[k].id == id)
+            return &sections[k];
+    return NULL;
+}
+
+/* Parse one section's bytes (r) into im: 1, or 0 with the reason in err. */
+static int parse_section(struct image *im, uint32_t id, struct rbuf *r, unsigned seen, char *err,
+                         size_t errlen)
+{
+    const struct section *s = section_of(id);
+    if (!s)
+        BAD("unknown section id %u", id);
+    if (!s->read(im, r, seen, err, errlen))
+        return 0;
+    if (r->bad)
+        BAD("%s section is truncated", s->name);
+    if (r->off != r->n)
+        BAD("%s section has %zu unexpected trailing bytes", s->name, r->n - r->off);
+    return 1;
+}
+
+/* ---- writing ---------------------------------------------------------------------- */
+
 static void build_payload(struct gravel *g, struct wbuf *w)
 {
-    const struct atoms *a = &g->atoms;
-    const struct domain *d = &g->dom;
-    size_t at = sect_begin(g, w, S_INFO);
-    put_str(g, w, GR_VERSION);
-    put_i64(g, w, g->step);
-    put_i64(g, w, g->laststep_reset);
-    put_f64(g, w, g->time);
-    put_f64(g, w, g->dt);
-    put_i32(g, w, g->dt_set);
-    put_i32(g, w, g->eng ? g->eng->single : g->opt.single);
-    put_u64(g, w, g->seed_counter);
-    sect_end(w, at);
-
-    at = sect_begin(g, w, S_DOMAIN);
-    put_i32(g, w, (int32_t)d->units);
-    put_i32(g, w, d->dimension);
-    for (int q = 0; q < 3; q++)
-        for (int s = 0; s < 2; s++)
-            put_i32(g, w, d->bnd[q][s]);
-    for (int q = 0; q < 3; q++)
-        put_i32(g, w, d->periodic[q]);
-    const double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
-    for (int k = 0; k < 5; k++)
-        for (int q = 0; q < 3; q++)
-            put_f64(g, w, vec[k][q]);
-    const struct lattice *l = &d->lat;
-    put_i32(g, w, l->style);
-    for (int q = 0; q < 3; q++) {
-        put_f64(g, w, l->a[q]);
-        put_f64(g, w, l->prim[q]);
-        put_f64(g, w, l->origin[q]);
-    }
-    put_i32(g, w, l->nbasis);
-    for (int b = 0; b < 8; b++)
-        for (int q = 0; q < 3; q++)
-            put_f64(g, w, l->basis[b][q]);
-    put_i32(g, w, d->triclinic);
-    put_f64(g, w, d->xy);
-    put_f64(g, w, d->xz);
-    put_f64(g, w, d->yz);
-    sect_end(w, at);
-
-    at = sect_begin(g, w, S_NEIGH);
-    const struct neigh_settings *ns = &g->neigh;
-    put_f64(g, w, ns->skin);
-    int32_t iv[] = {ns->style, ns->every, ns->delay, ns->check, ns->once,
-                    ns->one,       ns->page,  ns->nexclude, ns->nexclude_type};
-    for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
-        put_i32(g, w, iv[k]);
-    for (int k = 0; k < 16; k++)
-        for (int s = 0; s < 2; s++) {
-            put_i32(g, w, ns->exclude_group[k][s]);
-            put_i32(g, w, ns->exclude_type[k][s]);
-        }
-    sect_end(w, at);
-
-    at = sect_begin(g, w, S_GROUPS);
-    put_i32(g, w, g->groups.n);
-    for (int k = 0; k < GR_MAXGROUP; k++) {
-        put_i32(g, w, g->groups.used[k]);
-        put_str(g, w, g->groups.used[k] ? g->groups.name[k] : "");
-    }
-    sect_end(w, at);
-
-    at = sect_begin(g, w, S_TYPES);
-    put_i32(g, w, a->ntypes);
-    for (int t = 0; t <= a->ntypes; t++)
-        put_f64(g, w, a->type_mass ? a->type_mass[t] : 0.0);
-    put_i64(g, w, a->maxtag);
-    sect_end(w, at);
-
-    at = sect_begin(g, w, S_ATOMS);
-    size_t n = (size_t)a->n;
-    put_i32(g, w, a->n);
-    put(g, w, a->tag, n * sizeof(int64_t));
-    put(g, w, a->type, n * sizeof(int));
-    put(g, w, a->mask, n * sizeof(unsigned));
-    put(g, w, a->x, 3 * n * sizeof(double));
-    put(g, w, a->v, 3 * n * sizeof(double));
-    put(g, w, a->f, 3 * n * sizeof(double));
-    put(g, w, a->omega, 3 * n * sizeof(double));
-    put(g, w, a->torque, 3 * n * sizeof(double));
-    put(g, w, a->radius, n * sizeof(double));
-    put(g, w, a->rmass, n * sizeof(double));
-    put(g, w, a->image, 3 * n * sizeof(int));
-    sect_end(w, at);
-
-    if (a->molecule_flag) {
-        at = sect_begin(g, w, S_MOLECULE);
-        put_i32(g, w, a->n);
-        put(g, w, a->mol, n * sizeof(int64_t));
-        put_i32(g, w, g->neigh.nexclude_mol); /* neigh_modify exclude molecule/... */
-        for (int k = 0; k < 16; k++)
-            for (int q = 0; q < 2; q++)
-                put_i32(g, w, g->neigh.exclude_mol[k][q]);
-        sect_end(w, at);
-    }
-
-    at = sect_begin(g, w, S_PAIR);
-    const struct pair *p = g->styles.pair;
-    put_i32(g, w, p != NULL);
-    if (p) {
-        put_str(g, w, p->style->name);
-        put_i32(g, w, p->coeff_set);
-        put_i32(g, w, PAIR_MAXCOEF);
-        for (int k = 0; k < PAIR_MAXCOEF; k++)
-            put_f64(g, w, p->coef[k]);
-    }
-    sect_end(w, at);
-
-    write_list_and_fixes(g, w);
+    struct wctx c = {0};
+    for (int k = 0; k < NSECTION; k++)
+        sections[k].write(g, w, &c);
 }
 
 void restart_write(struct gravel *g, const char *path)
@@ -682,263 +1038,6 @@ void restart_step(struct gravel *g)
 
 /* ---- reading ------------------------------------------------------------------------ */
 
-#define BAD(...)                                                                         \
-    do {                                                                                 \
-        snprintf(err, errlen, __VA_ARGS__);                                              \
-        return 0;                                                                        \
-    } while (0)
-
-static int parse_section(struct image *im, uint32_t id, struct rbuf *r, char *err,
-                         size_t errlen, int seen_atoms)
-{
-    switch (id) {
-    case S_INFO:
-        get_str(r, im->version, sizeof im->version);
-        im->step = get_i64(r);
-        im->laststep_reset = get_i64(r);
-        im->time = get_f64(r);
-        im->dt = get_f64(r);
-        im->dt_set = get_i32(r);
-        im->single = get_i32(r);
-        im->seed_counter = get_u64(r);
-        if (!r->bad && (im->step < 0 || !(im->dt > 0) || !isfinite(im->dt) ||
-                        !isfinite(im->time)))
-            BAD("invalid step %lld or time step %g", (long long)im->step, im->dt);
-        break;
-    case S_DOMAIN: {
-        struct domain *d = &im->dom;
-        d->units = (enum units)get_i32(r);
-        d->dimension = get_i32(r);
-        for (int q = 0; q < 3; q++)
-            for (int s = 0; s < 2; s++)
-                d->bnd[q][s] = (char)get_i32(r);
-        for (int q = 0; q < 3; q++)
-            d->periodic[q] = get_i32(r);
-        double *vec[] = {d->lo, d->hi, d->minlo, d->minhi, d->small};
-        for (int k = 0; k < 5; k++)
-            for (int q = 0; q < 3; q++)
-                vec[k][q] = get_f64(r);
-        struct lattice *l = &d->lat;
-        l->style = get_i32(r);
-        for (int q = 0; q < 3; q++) {
-            l->a[q] = get_f64(r);
-            l->prim[q] = get_f64(r);
-            l->origin[q] = get_f64(r);
-        }
-        l->nbasis = get_i32(r);
-        for (int b = 0; b < 8; b++)
-            for (int q = 0; q < 3; q++)
-                l->basis[b][q] = get_f64(r);
-        d->triclinic = get_i32(r);
-        d->xy = get_f64(r);
-        d->xz = get_f64(r);
-        d->yz = get_f64(r);
-        if (r->bad)
-            break;
-        if ((d->triclinic != 0 && d->triclinic != 1) || !isfinite(d->xy) || !isfinite(d->xz) ||
-            !isfinite(d->yz) || (!d->triclinic && (d->xy != 0 || d->xz != 0 || d->yz != 0)))
-            BAD("invalid triclinic flag %d or tilt factors %g %g %g", d->triclinic, d->xy,
-                d->xz, d->yz);
-        if (d->units != UNITS_LJ && d->units != UNITS_SI && d->units != UNITS_CGS)
-            BAD("invalid units code %d", (int)d->units);
-        if (d->dimension != 2 && d->dimension != 3)
-            BAD("invalid dimension %d", d->dimension);
-        if (l->nbasis < 0 || l->nbasis > 8)
-            BAD("invalid lattice basis count %d", l->nbasis);
-        for (int q = 0; q < 3; q++) {
-            for (int s = 0; s < 2; s++)
-                if (!strchr("pfsm", d->bnd[q][s]) || !d->bnd[q][s])
-                    BAD("invalid boundary flag in dimension %c", "xyz"[q]);
-            if ((d->periodic[q] != 0) != (d->bnd[q][0] == 'p'))
-                BAD("inconsistent periodic flag in dimension %c", "xyz"[q]);
-            if (!(d->lo[q] < d->hi[q]) || !isfinite(d->lo[q]) || !isfinite(d->hi[q]) ||
-                !isfinite(d->minlo[q]) || !isfinite(d->minhi[q]) || !isfinite(d->small[q]))
-                BAD("invalid box bounds %g %g in dimension %c", d->lo[q], d->hi[q], "xyz"[q]);
-        }
-        d->box_exists = 1;
-        break;
-    }
-    case S_NEIGH: {
-        struct neigh_settings *ns = &im->neigh;
-        ns->skin = get_f64(r);
-        int *iv[] = {&ns->style, &ns->every, &ns->delay, &ns->check, &ns->once,
-                     &ns->one,       &ns->page,  &ns->nexclude, &ns->nexclude_type};
-        for (size_t k = 0; k < sizeof iv / sizeof *iv; k++)
-            *iv[k] = get_i32(r);
-        for (int k = 0; k < 16; k++)
-            for (int s = 0; s < 2; s++) {
-                ns->exclude_group[k][s] = get_i32(r);
-                ns->exclude_type[k][s] = get_i32(r);
-            }
-        if (!r->bad && (!(ns->skin >= 0) || !isfinite(ns->skin) || ns->every < 1 || ns->delay < 0 ||
-                        ns->nexclude < 0 || ns->nexclude > 16 || ns->nexclude_type < 0 ||
-                        ns->nexclude_type > 16))
-            BAD("invalid neighbor settings");
-        for (int k = 0; k < 16 && !r->bad; k++)
-            for (int s = 0; s < 2; s++)
-                if (ns->exclude_group[k][s] < 0 || ns->exclude_group[k][s] >= GR_MAXGROUP)
-                    BAD("invalid neighbor exclusion group");
-        break;
-    }
-    case S_GROUPS:
-        im->groups.n = get_i32(r);
-        for (int k = 0; k < GR_MAXGROUP; k++) {
-            im->groups.used[k] = get_i32(r);
-            get_str(r, im->groups.name[k], GR_NAMELEN);
-        }
-        if (!r->bad && (im->groups.n < 1 || im->groups.n > GR_MAXGROUP || !im->groups.used[0] ||
-                        strcmp(im->groups.name[0], "all")))
-            BAD("invalid group table");
-        break;
-    case S_TYPES:
-        im->ntypes = get_i32(r);
-        if (r->bad)
-            break;
-        if (im->ntypes < 1 || im->ntypes > 1000000)
-            BAD("invalid number of atom types %d", im->ntypes);
-        im->type_mass = get_array(r, (size_t)im->ntypes + 1, sizeof(double));
-        im->maxtag = get_i64(r);
-        break;
-    case S_ATOMS: {
-        im->n = get_i32(r);
-        if (r->bad)
-            break;
-        if (im->n < 0)
-            BAD("invalid atom count %d", im->n);
-        size_t n = (size_t)im->n;
-        im->tag = get_array(r, n, sizeof(int64_t));
-        im->type = get_array(r, n, sizeof(int));
-        im->mask = get_array(r, n, sizeof(unsigned));
-        im->x = get_array(r, 3 * n, sizeof(double));
-        im->v = get_array(r, 3 * n, sizeof(double));
-        im->f = get_array(r, 3 * n, sizeof(double));
-        im->omega = get_array(r, 3 * n, sizeof(double));
-        im->torque = get_array(r, 3 * n, sizeof(double));
-        im->radius = get_array(r, n, sizeof(double));
-        im->rmass = get_array(r, n, sizeof(double));
-        im->image = get_array(r, 3 * n, sizeof(int));
-        break;
-    }
-    case S_PAIR:
-        im->has_pair = get_i32(r);
-        if (im->has_pair) {
-            get_str(r, im->pair_name, sizeof im->pair_name);
-            im->coeff_set = get_i32(r);
-            im->ncoef = get_i32(r);
-            if (!r->bad && (im->ncoef < 0 || im->ncoef > PAIR_MAXCOEF))
-                BAD("invalid pair coefficient count %d", im->ncoef);
-            for (int k = 0; k < im->ncoef; k++)
-                im->coef[k] = get_f64(r);
-        }
-        break;
-    case S_LIST: {
-        if (!seen_atoms)
-            BAD("neighbor list section before the atoms");
-        im->has_list = 1;
-        im->exact = get_i32(r);
-        im->history = get_i32(r);
-        im->ndev = get_i32(r);
-        im->maxn = get_i32(r);
-        im->ago = get_i32(r);
-        im->fingerprint = get_u64(r);
-        if (r->bad)
-            break;
-        /* a list never holds more slots per atom than atoms (+ its growth margin) */
-        if (im->ndev < 0 || im->maxn < 0 || im->ago < 0 ||
-            (int64_t)im->maxn > 64 + 2 * (int64_t)im->ndev)
-            BAD("invalid neighbor list header");
-        size_t n = (size_t)im->ndev;
-        im->devtag = get_array(r, n, sizeof(int64_t));
-        im->ncount = get_array(r, n, sizeof(int));
-        if (r->bad)
-            break;
-        size_t tot = 0;
-        for (size_t i = 0; i < n; i++) {
-            if (im->ncount[i] < 0 || im->ncount[i] > im->maxn)
-                BAD("invalid neighbor count %d (capacity %d)", im->ncount[i], im->maxn);
-            tot += (size_t)im->ncount[i];
-        }
-        im->npartner = tot;
-        im->partner = get_array(r, tot, sizeof(int64_t));
-        if (im->history == 1) /* files before pair granular: 1 = 3 REAL per contact */
-            im->history = 3;
-        if (im->history < 0 || im->history > GR_HIST_MAX)
-            BAD("invalid contact history width %d", im->history);
-        if (im->history)
-            im->shear = get_array(r, (size_t)im->history * tot, sizeof(double));
-        if (im->exact) {
-            if (im->ndev != im->n || (im->n && memcmp(im->devtag, im->tag,
-                                                      n * sizeof(int64_t))))
-                BAD("neighbor list marked exact does not match the atoms");
-            im->xhold = get_array(r, 3 * n, sizeof(double));
-        }
-        break;
-    }
-    case S_FIXES: {
-        int nfix = get_i32(r);
-        if (r->bad)
-            break;
-        if (nfix < 0 || nfix > 100000)
-            BAD("invalid fix count %d", nfix);
-        im->fix = calloc((size_t)nfix + 1, sizeof *im->fix);
-        if (!im->fix)
-            BAD("out of memory");
-        im->nfix = nfix;
-        for (int i = 0; i < nfix && !r->bad; i++) {
-            struct fix_saved *fs = &im->fix[i];
-            get_str(r, fs->id, sizeof fs->id);
-            get_str(r, fs->style, sizeof fs->style);
-            fs->arghash = get_u64(r);
-            uint64_t len = get_u64(r);
-            if (r->bad)
-                break;
-            if (len > r->n - r->off)
-                BAD("fix %s: state length beyond the section", fs->id);
-            fs->bloblen = (size_t)len;
-            fs->blob = get_array(r, fs->bloblen, 1);
-            fs->peratom_bytes = get_u32(r);
-            fs->rsz = get_u32(r);
-            fs->nrows = get_i32(r);
-            if (r->bad)
-                break;
-            if (fs->nrows && (fs->nrows != im->ndev || !im->has_list))
-                BAD("fix %s: per-atom state of %d atoms does not match the list", fs->id,
-                    fs->nrows);
-            if (fs->peratom_bytes % 4 || fs->peratom_bytes > 1024)
-                BAD("fix %s: invalid per-atom state size %u", fs->id, fs->peratom_bytes);
-            fs->peratom = get_array(r, (size_t)fs->nrows, fs->peratom_bytes);
-        }
-        break;
-    }
-    case S_MOLECULE: {
-        int nm = get_i32(r);
-        if (r->bad)
-            break;
-        if (!seen_atoms || nm != im->n)
-            BAD("molecule IDs of %d atoms, not the atoms section's %d", nm, im->n);
-        im->mol = get_array(r, (size_t)nm, sizeof(int64_t));
-        struct neigh_settings *ns = &im->neigh;
-        ns->nexclude_mol = get_i32(r);
-        for (int k = 0; k < 16; k++)
-            for (int q = 0; q < 2; q++)
-                ns->exclude_mol[k][q] = get_i32(r);
-        if (!r->bad && (ns->nexclude_mol < 0 || ns->nexclude_mol > 16))
-            BAD("invalid molecule exclusions");
-        for (int k = 0; k < 16 && !r->bad; k++)
-            if (ns->exclude_mol[k][0] < 0 || ns->exclude_mol[k][0] >= GR_MAXGROUP)
-                BAD("invalid molecule exclusion group");
-        break;
-    }
-    default:
-        BAD("unknown section id %u", id);
-    }
-    if (r->bad)
-        BAD("%s section is truncated", id < S_LAST ? sect_name[id] : "?");
-    if (r->off != r->n)
-        BAD("%s section has %zu unexpected trailing bytes", sect_name[id], r->n - r->off);
-    return 1;
-}
-
 static int cmp_i64(const void *a, const void *b)
 {
     int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
@@ -1079,20 +1178,18 @@ static void load(struct gravel *g, const char *path)
                      all.off + RESTART_HEADER_BYTES);
             break;
         }
-        if (id >= 1 && id < S_LAST && (seen >> id & 1u)) {
-            snprintf(err, sizeof err, "duplicate %s section", sect_name[id]);
+        if (section_of(id) && (seen >> id & 1u)) {
+            snprintf(err, sizeof err, "duplicate %s section", section_of(id)->name);
             break;
         }
         struct rbuf s = {all.p + all.off, (size_t)slen, 0, 0};
-        if (parse_section(im, id, &s, err, sizeof err, (seen >> S_ATOMS) & 1u))
+        if (parse_section(im, id, &s, seen, err, sizeof err))
             seen |= 1u << id;
         all.off += (size_t)slen;
     }
-    const enum sect required[] = {S_INFO, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR,
-                                  S_FIXES};
-    for (size_t k = 0; k < sizeof required / sizeof *required && !err[0]; k++)
-        if (!(seen >> required[k] & 1u))
-            snprintf(err, sizeof err, "the %s section is missing", sect_name[required[k]]);
+    for (int k = 0; k < NSECTION && !err[0]; k++)
+        if (sections[k].required && !(seen >> sections[k].id & 1u))
+            snprintf(err, sizeof err, "the %s section is missing", sections[k].name);
     if (!err[0])
         validate(im, err, sizeof err);
     free(r->filebuf);
@@ -1189,20 +1286,13 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     a->n = 0;
     atoms_reserve(g, im->n);
     size_t n = (size_t)im->n;
-    memcpy(a->tag, im->tag, n * sizeof(int64_t));
-    memcpy(a->type, im->type, n * sizeof(int));
-    memcpy(a->mask, im->mask, n * sizeof(unsigned));
-    memcpy(a->x, im->x, 3 * n * sizeof(double));
-    memcpy(a->v, im->v, 3 * n * sizeof(double));
-    memcpy(a->f, im->f, 3 * n * sizeof(double));
-    memcpy(a->omega, im->omega, 3 * n * sizeof(double));
-    memcpy(a->torque, im->torque, 3 * n * sizeof(double));
-    memcpy(a->radius, im->radius, n * sizeof(double));
-    memcpy(a->rmass, im->rmass, n * sizeof(double));
-    memcpy(a->image, im->image, 3 * n * sizeof(int));
+    /* every field the file holds (an optional section's may be absent) */
+#define APPLY_FIELD(name, ctype, dev, width, when, life, sect, what)                           \
+    if (im->name)                                                                             \
+        memcpy(a->name, im->name, n * (width) * sizeof(ctype));
+    ATOM_FIELDS(APPLY_FIELD)
+#undef APPLY_FIELD
     a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
-    if (im->mol)
-        memcpy(a->mol, im->mol, n * sizeof(int64_t));
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -345,21 +345,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
         if (f->style->init)
             f->style->init(g, f);
     }
-    /* fixes may have declared per-atom state in init: allocate it */
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *f = g->styles.fix[i];
-        if (f->peratom_bytes && (!f->peratom || f->peratom_cap < (size_t)e->cap)) {
-            if (f->peratom)
-                clReleaseMemObject(f->peratom);
-            if (f->peratom_tmp)
-                clReleaseMemObject(f->peratom_tmp);
-            f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
-            f->peratom_tmp =
-                eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
-            f->peratom_cap = (size_t)e->cap;
-            eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
-        }
-    }
+    eng_fix_state(g, 1); /* fixes may have declared per-atom state in init */
     pair_init(g);
     nbr_setup(g);
     fused_setup(g);

@@ -1,0 +1,68 @@
+/* atom_fields.h - the per-atom field table (atom_style sphere): every
+ * per-atom array, declared once and expanded wherever the whole set is
+ * handled (LAMMPS's fields_grow / fields_copy / fields_restart lists of
+ * atom_vec_sphere.cpp, written here as one X-macro).
+ *
+ * ATOM_FIELDS(X) calls X(name, ctype, dev, width, when, life, sect, what) once
+ * per field, in the order of the restart file's per-atom sections:
+ *   name   member of struct atoms (gravel.h: host, ctype *, `width` per atom,
+ *          interleaved) and of struct dev_atoms (engine.h: cl_mem, device order)
+ *   ctype  host element type
+ *   dev    device representation:
+ *            FD_POS   REAL, relative to the engine's origin; in single precision
+ *                     split into x (high part) and dev_atoms.xlo (low part)
+ *            FD_REAL  REAL (float or double): converted from and to double
+ *            FD_RAW   the host bytes as they are (int = cl_int, unsigned =
+ *                     cl_uint, int64_t = cl_long)
+ *   width  elements per atom
+ *   when   runs that hold it on the device: FW_ALWAYS; FW_ROTATION (some
+ *          active style needs rotation); FW_MOLECULE (atoms carry molecule IDs,
+ *          atoms.molecule_flag). The host array always exists.
+ *   life   FL_STATE: moves with its atom when the device re-sorts by cell
+ *          (neighbor.c); FL_STEP: recomputed every step (forces, torques), not
+ *          moved (the force buffer is the re-sort's scratch)
+ *   sect   restart section holding it (restart.c): FS_ATOMS or FS_MOLECULE;
+ *          each section writes its fields in table order, n * width raw host
+ *          elements each
+ *   what   words for allocation errors
+ *
+ * Driven by the table: host growth, slot copy, append and release
+ * (atoms.c), device allocation, upload, append and download (engine.c), the
+ * cell re-sort (neighbor.c), restart write, read and apply (restart.c).
+ * A per-atom exchange between processes (MPI pack/unpack) is one more
+ * expansion over FL_STATE rows. Commands that give fields meaning (set,
+ * dump custom, compute property/atom, replicate, read_data) name them
+ * individually. */
+#ifndef GR_ATOM_FIELDS_H
+#define GR_ATOM_FIELDS_H
+
+#include <stdint.h>
+
+enum atom_field_dev { FD_POS, FD_REAL, FD_RAW };
+enum atom_field_when { FW_ALWAYS, FW_ROTATION, FW_MOLECULE };
+enum atom_field_life { FL_STATE, FL_STEP };
+enum atom_field_sect { FS_ATOMS, FS_MOLECULE };
+
+/* Meanings: tag the global ID (1-based); type 1..ntypes; mask the group bits
+ * (bit 0 = "all"); x, v, f, omega, torque xyz per atom; rmass the per-atom
+ * mass; image the periodic image counts; mol the molecule ID (0 = none). */
+/* clang-format off */
+#define ATOM_FIELDS(X)                                                                       \
+    X(tag,    int64_t,  FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "tags")               \
+    X(type,   int,      FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "types")              \
+    X(mask,   unsigned, FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "group masks")        \
+    X(x,      double,   FD_POS,  3, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "positions")          \
+    X(v,      double,   FD_REAL, 3, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "velocities")         \
+    X(f,      double,   FD_REAL, 3, FW_ALWAYS,   FL_STEP,  FS_ATOMS,    "forces")             \
+    X(omega,  double,   FD_REAL, 3, FW_ROTATION, FL_STATE, FS_ATOMS,    "angular velocities") \
+    X(torque, double,   FD_REAL, 3, FW_ROTATION, FL_STEP,  FS_ATOMS,    "torques")            \
+    X(radius, double,   FD_REAL, 1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "radii")              \
+    X(rmass,  double,   FD_REAL, 1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "masses")             \
+    X(image,  int,      FD_RAW,  3, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "image flags")        \
+    X(mol,    int64_t,  FD_RAW,  1, FW_MOLECULE, FL_STATE, FS_MOLECULE, "molecule IDs")
+/* clang-format on */
+
+/* Declares one pointer member per field (struct atoms, struct image). */
+#define ATOM_FIELD_MEMBER(name, ctype, dev, width, when, life, sect, what) ctype *name;
+
+#endif
