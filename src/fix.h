@@ -37,15 +37,17 @@
  *              belong to the engine and die with the program).
  *
  * Device access for hooks (src/engine.h): eng_atoms(g) gives the per-atom
- * buffers in device order (x, v, f, omega, torque, radius, rmass, type, mask,
- * tag, image; n atoms). Buffers are swapped when atoms are re-sorted, so set
- * kernel arguments in every hook call (cheap), never once in init().
+ * buffers in device order (the rows of src/atom_fields.h: x, v, f, omega,
+ * torque, radius, rmass, type, mask, tag, image, mol; n atoms). Buffers are
+ * swapped when atoms are re-sorted, so set kernel arguments in every hook
+ * call (cheap), never once in init().
  *
  * Per-atom state that must follow the atoms through re-sorts (e.g. wall
  * contact history) is declared by setting f->peratom_bytes (a multiple of 4)
- * in init(); the engine then provides f->peratom, a zero-filled device buffer
- * of peratom_bytes per atom in device order, permuted with the atoms on every
- * neighbor rebuild and kept across runs while the atoms are unchanged. */
+ * in init(); the engine then provides f->peratom (eng_fix_state, engine.h),
+ * a zero-filled device buffer of peratom_bytes per atom in device order,
+ * permuted with the atoms on every neighbor rebuild and kept across runs
+ * while the atoms are unchanged. */
 #ifndef GR_FIX_H
 #define GR_FIX_H
 

@@ -9,7 +9,9 @@
  * (the marker proves it is ours). The reader checks header, length and hash
  * before parsing, parses every section into a private image with bounds
  * checks, validates it, and only then applies it: a bad file never leaves a
- * half-read state. See doc/restart.md.
+ * half-read state. Each section has one writer and, beside it, one reader,
+ * listed once in file order in sections[]; the per-atom sections follow the
+ * field table (atom_fields.h). See doc/restart.md.
  *
  * Exactness. A run continued from a restart file equals the uninterrupted
  * run bit for bit when the file carries the device state at the written
