@@ -13,7 +13,7 @@
 #ifndef GR_COMPUTE_H
 #define GR_COMPUTE_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct compute;
 

@@ -7,7 +7,7 @@
 #ifndef GR_DOMAIN_H
 #define GR_DOMAIN_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* LAMMPS' SMALL (domain.cpp): shrink-wrap margin as a fraction of the box length. */
 #define DOMAIN_SMALL 1.0e-4

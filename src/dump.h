@@ -24,7 +24,7 @@
 
 #include <stdio.h>
 
-#include "gravel.h"
+#include "state.h"
 
 struct dump;
 

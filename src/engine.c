@@ -17,6 +17,7 @@
 #include "error.h"
 #include "fix.h"
 #include "kernel_sources.h"
+#include "log.h"
 #include "neighbor.h"
 #include "pair.h"
 

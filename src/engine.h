@@ -10,7 +10,7 @@
 #define GR_ENGINE_H
 
 #include "fused.h"
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 #include "run.h"
 

@@ -49,7 +49,7 @@
 #ifndef GR_FIX_H
 #define GR_FIX_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 enum fix_hook {

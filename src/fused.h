@@ -11,7 +11,7 @@
 #ifndef GR_FUSED_H
 #define GR_FUSED_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 /* = kernels/fused.cl */

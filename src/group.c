@@ -16,6 +16,7 @@
 #include "args.h"
 #include "domain.h"
 #include "error.h"
+#include "log.h"
 #include "region.h"
 #include "run.h"
 #include "engine.h"

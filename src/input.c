@@ -27,6 +27,7 @@
 #include "command.h"
 #include "error.h"
 #include "fileio.h"
+#include "log.h"
 #include "variable.h"
 
 /* A growable byte buffer, always NUL-terminated once used. */

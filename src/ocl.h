@@ -10,7 +10,7 @@
 #define CL_TARGET_OPENCL_VERSION 120
 #include <CL/cl.h>
 
-#include "gravel.h"
+#include "state.h"
 
 struct ocl {
     cl_platform_id platform;

@@ -17,6 +17,7 @@
 #include "dump.h"
 #include "error.h"
 #include "fix.h"
+#include "log.h"
 #include "pair.h"
 #include "thermo.h"
 #include "variable.h"

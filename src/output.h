@@ -25,7 +25,7 @@
 #ifndef GR_OUTPUT_H
 #define GR_OUTPUT_H
 
-#include "gravel.h"
+#include "state.h"
 #include "run.h"
 
 void output_setup(struct gravel *g);

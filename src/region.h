@@ -19,7 +19,7 @@
 #ifndef GR_REGION_H
 #define GR_REGION_H
 
-#include "gravel.h"
+#include "state.h"
 
 #define REGION_NPARAM 12
 

@@ -40,6 +40,7 @@
 #include "error.h"
 #include "fileio.h"
 #include "fix.h"
+#include "log.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "run.h"

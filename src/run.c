@@ -31,6 +31,7 @@
 #include "input.h"
 #include "fix.h"
 #include "group.h"
+#include "log.h"
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"

@@ -7,7 +7,7 @@
 #ifndef GR_RUN_H
 #define GR_RUN_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* What a finished run reports (thermo_footer prints it LAMMPS-style). */
 struct run_stats {

@@ -1,6 +1,6 @@
 /* style.c - release of every style instance on `clear` and destroy: dumps
  * first (they publish their files), then computes, fixes and the pair. */
-#include "gravel.h"
+#include "state.h"
 #include "compute.h"
 #include "dump.h"
 #include "fix.h"

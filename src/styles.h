@@ -4,7 +4,7 @@
 #ifndef GR_STYLES_H
 #define GR_STYLES_H
 
-#include "gravel.h"
+#include "state.h"
 
 void styles_free(struct gravel *g);                     /* pair, fixes, computes, dumps */
 void regions_free(struct gravel *g);                    /* region.c */

@@ -17,7 +17,7 @@
 #ifndef GR_TEMPERATURE_H
 #define GR_TEMPERATURE_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Boltzmann constant of the current units (LAMMPS 2021 force->boltz). */
 double temp_boltz(const struct gravel *g);

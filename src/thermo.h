@@ -6,7 +6,7 @@
 #ifndef GR_THERMO_H
 #define GR_THERMO_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Run-time state of the output module, one per engine (g->thermo.state). */
 struct output_state {

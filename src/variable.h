@@ -9,7 +9,7 @@
 #ifndef GR_VARIABLE_H
 #define GR_VARIABLE_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct vars *var_create(void);
 void var_destroy(struct vars *v);

@@ -8,7 +8,7 @@
 #ifndef GR_WALL_H
 #define GR_WALL_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 struct fix;

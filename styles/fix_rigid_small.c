@@ -55,6 +55,7 @@
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
+#include "log.h"
 #include "molecule.h"
 #include "rigid_math.h"
 

@@ -16,6 +16,7 @@
 
 #include "error.h"
 #include "fix.h"
+#include "log.h"
 #include "pair.h"
 #include "pair_cohesion.h"
 
