@@ -20,10 +20,10 @@
 
 #include "atoms.h"
 #include "compute.h"
+#include "engine.h"
 #include "error.h"
 #include "group.h"
-#include "output.h"
-#include "run.h"
+#include "thermo.h"
 #include "variable.h"
 
 #define MAXDEPTH 200        /* nesting of parentheses, unary operators and v_name

@@ -5,11 +5,11 @@
 #include <string.h>
 
 #include "atoms.h"
+#include "engine.h"
 #include "error.h"
 #include "input.h"
 #include "molecule.h"
 #include "restart.h"
-#include "run.h"
 #include "styles.h"
 #include "variable.h"
 

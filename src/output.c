@@ -15,6 +15,7 @@
 #include "compute.h"
 #include "domain.h"
 #include "dump.h"
+#include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "log.h"

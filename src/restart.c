@@ -36,6 +36,7 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
 #include "fileio.h"
@@ -43,7 +44,6 @@
 #include "log.h"
 #include "neighbor.h"
 #include "pair.h"
-#include "run.h"
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "region.h"

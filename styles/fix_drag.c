@@ -38,7 +38,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "pair_cohesion.h"

@@ -41,6 +41,7 @@
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"

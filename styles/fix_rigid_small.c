@@ -50,7 +50,7 @@
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"

@@ -31,7 +31,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
