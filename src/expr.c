@@ -11,6 +11,8 @@
  * c_ID, c_ID[n], f_ID[n], ...). Errors quote the expression and never leave
  * state behind: the parser allocates nothing, except the per-atom columns of
  * expr_eval_atoms, freed on every exit. */
+#include "expr.h"
+
 #include <ctype.h>
 #include <setjmp.h>
 #include <math.h>

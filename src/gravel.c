@@ -9,8 +9,10 @@
 #include "error.h"
 #include "input.h"
 #include "molecule.h"
+#include "region.h"
 #include "restart.h"
-#include "styles.h"
+#include "style.h"
+#include "thermo.h"
 #include "variable.h"
 
 void gr_unit_defaults(struct gravel *g)

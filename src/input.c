@@ -26,6 +26,7 @@
 
 #include "command.h"
 #include "error.h"
+#include "expr.h"
 #include "fileio.h"
 #include "log.h"
 #include "variable.h"

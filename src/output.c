@@ -20,6 +20,7 @@
 #include "fix.h"
 #include "log.h"
 #include "pair.h"
+#include "progress.h"
 #include "thermo.h"
 #include "variable.h"
 

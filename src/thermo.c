@@ -24,7 +24,6 @@
 #include "fix.h"
 #include "pair_energy.h"
 #include "pressure.h"
-#include "styles.h"
 #include "temperature.h"
 #include "thermo.h"
 #include "variable.h"

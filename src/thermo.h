@@ -73,17 +73,8 @@ void cmd_thermo(struct gravel *g, int argc, char **argv);
 void cmd_thermo_style(struct gravel *g, int argc, char **argv);
 void cmd_thermo_modify(struct gravel *g, int argc, char **argv);
 
-/* Progress line: begin at output_setup, update after each step, end at
- * output_finish (clears it). Active with -progress or when stderr is a
- * terminal; writes only to stderr. */
-void progress_begin(struct gravel *g);
-void progress_update(struct gravel *g);
-void progress_end(struct gravel *g);
-/* 1 when the progress line should be redrawn now (callers that only call
- * output_step when output_due says so still get a live line). */
-int progress_due(struct gravel *g);
-/* Erase the line if shown (before other text goes to the terminal); the
- * next update redraws it. */
-void progress_clear(struct gravel *g);
+/* Release the thermo settings' strings and the output state (`clear`,
+ * destroy: gravel.c). */
+void thermo_settings_free(struct thermo_settings *t);
 
 #endif

@@ -17,6 +17,7 @@
 
 #include "args.h"
 #include "error.h"
+#include "expr.h"
 #include "log.h"
 #include "random.h"
 

@@ -2,6 +2,8 @@
  * (kernels/wall_region.cl): a region packed as device nodes (layout RG_* of
  * the kernel file), its motion evaluated once per step (Region::prematch and
  * set_velocity), the launch. */
+#include "wall_region.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -10,7 +12,6 @@
 #include "fix.h"
 #include "region.h"
 #include "variable.h"
-#include "wall.h"
 
 /* = kernels/wall_region.cl */
 #define RG_NODE 40

@@ -32,6 +32,7 @@
 #include "compute_chunk_atom.h"
 #include "engine.h"
 #include "error.h"
+#include "expr.h"
 #include "fileio.h"
 #include "fix.h"
 #include "variable.h"

@@ -36,7 +36,7 @@
  * shift, its image flag = the body's + the shift.
  *
  * Pair and wall contacts of a member use the body's mass as its mass in the
- * effective mass (LAMMPS's mass_rigid, engine.h contact_mass). Degrees of
+ * effective mass (LAMMPS's mass_rigid, device.h contact_mass). Degrees of
  * freedom (temperatures): a body wholly in the temperature group keeps 6
  * (3d; 5 if linear) or 3 (2d) of its atoms' 3 + 3 (finite spheres) each.
  *

@@ -39,6 +39,7 @@
 #include "region.h"
 #include "fix_mesh_surface.h"
 #include "wall.h"
+#include "wall_region.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY, M_GRANULAR };
