@@ -1,6 +1,7 @@
-/* engine.c - device state of a simulation: device and precision choice, the
- * per-atom buffers (structure of arrays, device order), program assembly for
- * the active styles, upload at run start and run_sync_host().
+/* engine.c - what a run does with the device engine (device.c holds the
+ * helpers): precision choice, the per-atom buffers (structure of arrays,
+ * device order), program assembly for the active styles, upload at run
+ * start, appended atoms, run_sync_host() and the teardown.
  *
  * One set of buffers: the neighbor re-sort gathers array by array through
  * the force buffer (src/neighbor.c); omega and torque exist only when some
