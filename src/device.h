@@ -31,7 +31,7 @@ struct nbr;                     /* neighbor.c */
 struct acc;                     /* accuracy.c */
 struct fix;
 
-/* The run's fused stages (engine-owned). */
+/* The run's fused stages (engine-owned; built by fused_setup, fused.h). */
 struct fused_stages {
     cl_mem ops, prm;            /* int[3 per op], REAL[] */
     int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
