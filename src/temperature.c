@@ -191,7 +191,7 @@ void temp_compute_vector(struct gravel *g, struct compute *c)
 
 /* `compute_modify ID keyword value ...`: dynamic/dof and extra/dof of a
  * temperature compute (temp, temp/sphere) or of the implicit thermo_temp
- * (thermo `temp`, `ke`, `press`), as LAMMPS (src/temperature.h). Other
+ * (thermo `temp`, `ke`, `press`), as LAMMPS (temp_modify). Other
  * computes have no settings to modify. */
 void cmd_compute_modify(struct gravel *g, int argc, char **argv)
 {
