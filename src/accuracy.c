@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "neighbor.h"

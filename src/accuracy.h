@@ -14,7 +14,7 @@
 #ifndef GR_ACCURACY_H
 #define GR_ACCURACY_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 struct fix;

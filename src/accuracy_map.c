@@ -24,7 +24,9 @@
 
 #include "error.h"
 #include "fix.h"
+#include "gravel.h"
 #include "input.h"
+#include "log.h"
 #include "pair.h"
 
 double fix_gravity_magnitude(const struct fix *f); /* styles/fix_gravity.c */

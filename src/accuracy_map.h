@@ -5,7 +5,7 @@
 #ifndef GR_ACCURACY_MAP_H
 #define GR_ACCURACY_MAP_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Print the table (and accuracy_map.png where gnuplot exists). */
 void accuracy_map(struct gravel *g);

@@ -6,7 +6,7 @@
 #ifndef GR_ARGS_H
 #define GR_ARGS_H
 
-#include "gravel.h"
+#include "state.h"
 
 double arg_double(struct gravel *g, const char *s, const char *what);
 double arg_positive(struct gravel *g, const char *s, const char *what);     /* > 0 */

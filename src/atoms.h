@@ -7,7 +7,7 @@
 #ifndef GR_ATOMS_H
 #define GR_ATOMS_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Make room for at least n atoms (values of new slots are zero). */
 void atoms_reserve(struct gravel *g, int n);

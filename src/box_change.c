@@ -4,7 +4,7 @@
 #include <math.h>
 
 #include "domain.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "neighbor.h"
 #include "output.h"

@@ -39,7 +39,7 @@
 #ifndef GR_BOX_CHANGE_H
 #define GR_BOX_CHANGE_H
 
-#include "gravel.h"
+#include "state.h"
 
 enum box_remap { BOX_REMAP_NONE, BOX_REMAP_X };
 

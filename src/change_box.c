@@ -30,6 +30,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "log.h"
 
 enum { OP_FINAL, OP_DELTA, OP_SCALE, OP_BOUNDARY, OP_SET, OP_REMAP, OP_ORTHO, OP_TRICLINIC,
        OP_TILT_FINAL, OP_TILT_DELTA };

@@ -14,7 +14,9 @@
 #include "command.h"
 #include "error.h"
 #include "fileio.h"
+#include "gravel.h"
 #include "input.h"
+#include "log.h"
 #include "variable.h"
 
 void cmd_variable(struct gravel *g, int argc, char **argv)

@@ -7,7 +7,7 @@
 #ifndef GR_COMMAND_H
 #define GR_COMMAND_H
 
-#include "gravel.h"
+#include "state.h"
 
 enum phase {
     PH_ANY,         /* legal any time */

@@ -8,7 +8,6 @@
 
 #include "args.h"
 #include "error.h"
-#include "temperature.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -150,25 +149,6 @@ void cmd_uncompute(struct gravel *g, int argc, char **argv)
         return;
     }
     gr_error(g, "unknown compute ID '%.64s'", argv[0]);
-}
-
-/* `compute_modify ID keyword value ...`: dynamic/dof and extra/dof of a
- * temperature compute (temp, temp/sphere) or of the implicit thermo_temp
- * (thermo `temp`, `ke`, `press`), as LAMMPS (src/temperature.h). Other
- * computes have no settings to modify. */
-void cmd_compute_modify(struct gravel *g, int argc, char **argv)
-{
-    if (argc < 3)
-        gr_error(g, "expected: compute_modify ID keyword value ...");
-    struct compute *c = compute_find(g, argv[0]);
-    if (!c && strcmp(argv[0], "thermo_temp") == 0) {
-        temp_modify(g, &g->thermo.temp, argc - 1, argv + 1);
-        return;
-    }
-    c = compute_get(g, argv[0], "compute_modify");
-    if (!c->temp)
-        gr_error(g, "compute %s (%s) has no settings to modify", c->id, c->style->name);
-    temp_modify(g, c->temp, argc - 1, argv + 1);
 }
 
 double compute_scalar(struct gravel *g, struct compute *c)

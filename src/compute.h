@@ -13,7 +13,7 @@
 #ifndef GR_COMPUTE_H
 #define GR_COMPUTE_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct compute;
 
@@ -52,7 +52,6 @@ struct compute {
 /* `compute ID group style args...` and `uncompute ID` (commands.def). */
 void cmd_compute(struct gravel *g, int argc, char **argv);
 void cmd_uncompute(struct gravel *g, int argc, char **argv);
-void cmd_compute_modify(struct gravel *g, int argc, char **argv);
 
 /* The compute with this ID, or NULL. */
 struct compute *compute_find(struct gravel *g, const char *id);

@@ -36,6 +36,7 @@
 #include "domain.h"
 #include "error.h"
 #include "lattice.h"
+#include "log.h"
 #include "random.h"
 #include "region.h"
 #include "fix_mesh_surface.h"

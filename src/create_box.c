@@ -9,6 +9,7 @@
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
+#include "log.h"
 #include "region.h"
 
 void cmd_create_box(struct gravel *g, int argc, char **argv)

@@ -32,6 +32,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "log.h"
 #include "random.h"
 #include "region.h"
 

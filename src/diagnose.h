@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 
-#include "gravel.h"
+#include "state.h"
 
 /* "atom T at (x, y, z) with velocity (vx, vy, vz) crossed the z lo boundary
  * (f) at 0: ..." for a lost atom with the given device position and

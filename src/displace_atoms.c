@@ -29,6 +29,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "log.h"
 #include "random.h"
 #include "variable.h"
 

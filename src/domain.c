@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "log.h"
 
 void domain_set_boundary(struct gravel *g, char **argv)
 {

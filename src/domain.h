@@ -1,13 +1,13 @@
 /* domain.h - the simulation box: boundaries, shrink-wrapping, periodic
  * wrapping, volume and lattice <-> box unit conversion.
  *
- * The box lives in g->dom (gravel.h). It is created by create_box or
+ * The box lives in g->dom (state.h). It is created by create_box or
  * read_data through domain_set_initial_box(); afterwards the run core keeps
  * shrink-wrapped faces fitted to the atoms with domain_shrink_wrap(). */
 #ifndef GR_DOMAIN_H
 #define GR_DOMAIN_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* LAMMPS' SMALL (domain.cpp): shrink-wrap margin as a fraction of the box length. */
 #define DOMAIN_SMALL 1.0e-4

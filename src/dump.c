@@ -9,8 +9,8 @@
 #include <string.h>
 
 #include "args.h"
+#include "engine.h"
 #include "error.h"
-#include "run.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)

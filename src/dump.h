@@ -24,7 +24,7 @@
 
 #include <stdio.h>
 
-#include "gravel.h"
+#include "state.h"
 
 struct dump;
 
@@ -97,8 +97,6 @@ void dump_free_pending(struct gravel *g);
 /* Free every dump, publishing append-mode files (styles_free). */
 void dump_free_all(struct gravel *g);
 
-/* dump custom (and dump atom, built on it): 1 if the dump has field `name`. */
-int dump_custom_has_field(const struct dump *d, const char *name);
 
 /* Helpers for styles (format checks: output_format_fix in thermo.h).
  * Write n doubles / int32 in big-endian order (legacy VTK binary). */

@@ -9,7 +9,7 @@
 #ifndef GR_ERROR_H
 #define GR_ERROR_H
 
-#include "gravel.h"
+#include "state.h"
 
 _Noreturn void gr_error(struct gravel *g, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

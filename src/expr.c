@@ -11,6 +11,8 @@
  * c_ID, c_ID[n], f_ID[n], ...). Errors quote the expression and never leave
  * state behind: the parser allocates nothing, except the per-atom columns of
  * expr_eval_atoms, freed on every exit. */
+#include "expr.h"
+
 #include <ctype.h>
 #include <setjmp.h>
 #include <math.h>
@@ -20,10 +22,10 @@
 
 #include "atoms.h"
 #include "compute.h"
+#include "engine.h"
 #include "error.h"
 #include "group.h"
-#include "output.h"
-#include "run.h"
+#include "thermo.h"
 #include "variable.h"
 
 #define MAXDEPTH 200        /* nesting of parentheses, unary operators and v_name

@@ -36,7 +36,7 @@
  *   destroy()  at unfix/clear: free f->data (not device objects: kernels
  *              belong to the engine and die with the program).
  *
- * Device access for hooks (src/engine.h): eng_atoms(g) gives the per-atom
+ * Device access for hooks (src/device.h): eng_atoms(g) gives the per-atom
  * buffers in device order (the rows of src/atom_fields.h: x, v, f, omega,
  * torque, radius, rmass, type, mask, tag, image, mol; n atoms). Buffers are
  * swapped when atoms are re-sorted, so set kernel arguments in every hook
@@ -51,7 +51,7 @@
 #ifndef GR_FIX_H
 #define GR_FIX_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 enum fix_hook {

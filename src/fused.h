@@ -11,7 +11,7 @@
 #ifndef GR_FUSED_H
 #define GR_FUSED_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 /* = kernels/fused.cl */
@@ -33,11 +33,7 @@ struct fused_op {
     const double *prm;
 };
 
-/* The run's fused stages (engine-owned). */
-struct fused_stages {
-    cl_mem ops, prm;            /* int[3 per op], REAL[] */
-    int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
-};
+struct fused_stages;        /* device.h: the run's stages, engine-owned */
 
 /* Run setup, after the fixes' init and the pair kernels: build and upload
  * the stages, mark fused fixes. */

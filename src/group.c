@@ -15,10 +15,11 @@
 
 #include "args.h"
 #include "domain.h"
-#include "error.h"
-#include "region.h"
-#include "run.h"
 #include "engine.h"
+#include "error.h"
+#include "log.h"
+#include "region.h"
+#include "device.h"
 #include "variable.h"
 
 int group_find(const struct gravel *g, const char *name)

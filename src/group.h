@@ -6,7 +6,7 @@
 #ifndef GR_GROUP_H
 #define GR_GROUP_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Index of group `name`, or -1. */
 int group_find(const struct gravel *g, const char *name);

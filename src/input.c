@@ -26,7 +26,9 @@
 
 #include "command.h"
 #include "error.h"
+#include "expr.h"
 #include "fileio.h"
+#include "log.h"
 #include "variable.h"
 
 /* A growable byte buffer, always NUL-terminated once used. */

@@ -13,7 +13,7 @@
 
 #include <stdio.h>
 
-#include "gravel.h"
+#include "state.h"
 
 enum { GR_OK = 0, GR_ERR = 1, GR_QUIT = 2 };
 

@@ -18,6 +18,7 @@
 
 #include "args.h"
 #include "error.h"
+#include "log.h"
 
 static void set_basis(struct lattice *lat, int n, const double b[][3])
 {

@@ -8,7 +8,7 @@
 #ifndef GR_LATTICE_H
 #define GR_LATTICE_H
 
-#include "gravel.h"
+#include "state.h"
 
 enum lattice_style { LAT_NONE = 0, LAT_SC, LAT_BCC, LAT_FCC, LAT_HCP, LAT_DIAMOND, LAT_SQ, LAT_SQ2,
                      LAT_HEX };

@@ -10,6 +10,7 @@
 #include "args.h"
 #include "error.h"
 #include "fileio.h"
+#include "log.h"
 #include "rigid_math.h"
 
 #define SINERTIA 0.4 /* solid sphere */

@@ -13,7 +13,7 @@
 #ifndef GR_MOLECULE_H
 #define GR_MOLECULE_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct molecule {
     char id[GR_NAMELEN];

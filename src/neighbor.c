@@ -26,6 +26,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "log.h"
 #include "pair.h"
 
 #define NCHUNK_MAX 256

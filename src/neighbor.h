@@ -8,7 +8,7 @@
 #ifndef GR_NEIGHBOR_H
 #define GR_NEIGHBOR_H
 
-#include "engine.h"
+#include "device.h"
 
 struct nbr_list {
     /* full rows in ascending partner tag: nlist[i maxn + k] (k < ncount[i])

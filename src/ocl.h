@@ -10,7 +10,7 @@
 #define CL_TARGET_OPENCL_VERSION 120
 #include <CL/cl.h>
 
-#include "gravel.h"
+#include "state.h"
 
 struct ocl {
     cl_platform_id platform;
@@ -24,11 +24,11 @@ struct ocl {
     int is_gpu;
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
-    int profile;                /* env GRAVEL_PROFILE: time every kernel (engine.c) */
+    int profile;                /* env GRAVEL_PROFILE: time every kernel (device.c) */
     size_t max_alloc;           /* CL_DEVICE_MAX_MEM_ALLOC_SIZE */
     size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE */
     int atoms_hint;             /* atoms the buffers are sized for (error messages) */
-    size_t wg;                  /* work-group size of every launch (engine.c): env
+    size_t wg;                  /* work-group size of every launch (device.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
 };
 

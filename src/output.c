@@ -15,9 +15,12 @@
 #include "compute.h"
 #include "domain.h"
 #include "dump.h"
+#include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "log.h"
 #include "pair.h"
+#include "progress.h"
 #include "thermo.h"
 #include "variable.h"
 

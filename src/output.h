@@ -25,8 +25,9 @@
 #ifndef GR_OUTPUT_H
 #define GR_OUTPUT_H
 
-#include "gravel.h"
-#include "run.h"
+#include "state.h"
+
+struct run_stats;           /* device.h */
 
 void output_setup(struct gravel *g);
 /* 1 if a thermo line or a dump is due at this step of the current run, or
@@ -41,17 +42,5 @@ void output_finish_brief(struct gravel *g, const struct run_stats *st);
  * line so the error message starts on a clean line, and complete appending
  * dump files with the snapshots written so far. Never raises. */
 void output_abort(struct gravel *g);
-
-/* Value of a thermo keyword for expressions: step elapsed dt time cpu tpcpu
- * spcpu cpuremain atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair
- * emol, c_ID, c_ID[N] (normalized like thermo output with norm yes) and
- * v_name. Returns 0 when `name` is none of these (or names no existing
- * compute/variable); raises an error when c_ID exists but has no such value. */
-int thermo_keyword_value(struct gravel *g, const char *name, double *out);
-
-/* Commands (commands.def): thermo, thermo_style, thermo_modify. */
-void cmd_thermo(struct gravel *g, int argc, char **argv);
-void cmd_thermo_style(struct gravel *g, int argc, char **argv);
-void cmd_thermo_modify(struct gravel *g, int argc, char **argv);
 
 #endif

@@ -19,7 +19,7 @@
 #ifndef GR_PAIR_H
 #define GR_PAIR_H
 
-#include "gravel.h"
+#include "state.h"
 
 #define PAIR_MAXPARAM 8
 #define PAIR_MAXCOEF 8

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "atoms.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "neighbor.h"
 #include "pair.h"

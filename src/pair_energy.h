@@ -8,7 +8,7 @@
 #ifndef GR_PAIR_ENERGY_H
 #define GR_PAIR_ENERGY_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* The pair energy of the current positions (0 outside a run, without a
  * pair style or for a style without an energy). */

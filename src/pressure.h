@@ -13,7 +13,7 @@
 #ifndef GR_PRESSURE_H
 #define GR_PRESSURE_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 /* The virial tensor W_xx, W_yy, W_zz, W_xy, W_xz, W_yz of the current step

@@ -2,6 +2,8 @@
  * steps/s and ETA, redrawn in place with '\r' at most 4 times a second and
  * erased at the end of the run. Shown with -progress or when stderr is a
  * terminal; it never goes to the log or the screen stream. */
+#include "progress.h"
+
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>

@@ -32,6 +32,7 @@
 #include "error.h"
 #include "fileio.h"
 #include "group.h"
+#include "log.h"
 
 #define MAXWORDS 16
 

@@ -37,6 +37,7 @@
 #include "error.h"
 #include "fileio.h"
 #include "fix.h"
+#include "log.h"
 
 enum { F_ID, F_TYPE, F_X, F_Y, F_Z, F_VX, F_VY, F_VZ, F_Q, F_IX, F_IY, F_IZ, F_FX, F_FY, F_FZ };
 static const char *field_name[] = {"id", "type", "x",  "y",  "z",  "vx", "vy", "vz",

@@ -7,7 +7,7 @@
 #ifndef GR_READ_DUMP_H
 #define GR_READ_DUMP_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct rdump;
 

@@ -11,7 +11,6 @@
 #include "args.h"
 #include "domain.h"
 #include "error.h"
-#include "styles.h"
 #include "variable.h"
 
 #define PAIR(k, i)

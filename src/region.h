@@ -19,7 +19,7 @@
 #ifndef GR_REGION_H
 #define GR_REGION_H
 
-#include "gravel.h"
+#include "state.h"
 
 #define REGION_NPARAM 12
 
@@ -95,10 +95,8 @@ int region_box_bounds(struct gravel *g, const struct region *r, double lo[3], do
  * Used by the styles. */
 double region_parse_bound(struct gravel *g, const char *s, int dim, int is_hi, double scale,
                           const char *what);
-/* Axis letter x|y|z -> 0|1|2 (cylinder, cone; styles/region_cylinder.c). */
-int region_parse_axis(struct gravel *g, const char *s);
-/* Resolve the sub-region IDs a[1..n-1] of union/intersect into r->sub and
- * count the references (styles/region_union.c). */
-void region_link_subs(struct gravel *g, struct region *r, int n, char **a);
+
+/* Release every region (`clear`, destroy: gravel.c). */
+void regions_free(struct gravel *g);
 
 #endif

@@ -20,6 +20,7 @@
 #include "command.h"
 #include "domain.h"
 #include "error.h"
+#include "log.h"
 
 void cmd_replicate(struct gravel *g, int argc, char **argv)
 {

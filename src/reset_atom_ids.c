@@ -20,6 +20,7 @@
 #include "command.h"
 #include "domain.h"
 #include "error.h"
+#include "log.h"
 
 struct sortkey {
     long long bin;

@@ -38,13 +38,14 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
 #include "fileio.h"
 #include "fix.h"
+#include "log.h"
 #include "neighbor.h"
 #include "pair.h"
-#include "run.h"
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,

@@ -18,7 +18,7 @@
 #ifndef GR_RESTART_H
 #define GR_RESTART_H
 
-#include "gravel.h"
+#include "state.h"
 
 #define RESTART_FORMAT_VERSION 4u
 #define RESTART_ENDIAN_MARKER 0x01020304u

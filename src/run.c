@@ -26,11 +26,14 @@
 #include "accuracy.h"
 #include "accuracy_map.h"
 #include "args.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
+#include "fused.h"
 #include "input.h"
 #include "fix.h"
 #include "group.h"
+#include "log.h"
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"
@@ -41,6 +44,50 @@ static double wall(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The loop's clocks: LAMMPS's timing breakdown (Pair, Neigh, Modify,
+ * Output; Other is what the loop spent beyond them), in wall seconds.
+ * The device is synchronized after each section only on sampled steps
+ * (every TIME_SAMPLE-th) and on rebuild steps, so ordinary steps run
+ * without host waits: rebuild steps are timed exactly, sampled ordinary
+ * steps are scaled to all ordinary steps; the output is timed every step. */
+enum timer_phase { TM_PAIR, TM_NEIGH, TM_MODIFY, TM_OUTPUT, TM_N };
+enum { TIME_SAMPLE = 8 };
+struct run_timers {
+    double exact[TM_N];         /* rebuild steps; the output of every step */
+    double sampled[TM_N];       /* sampled ordinary steps */
+    bigint nsamp, nplain;       /* sampled ordinary steps, all ordinary steps */
+};
+
+/* One step's section times (step[], output excluded) into the record. */
+static void timers_step(struct run_timers *t, int rebuild, int sampled, const double *step)
+{
+    if (!rebuild)
+        t->nplain++;
+    if (!rebuild && !sampled)
+        return;
+    if (!rebuild)
+        t->nsamp++;
+    double *to = rebuild ? t->exact : t->sampled;
+    for (int p = 0; p < TM_OUTPUT; p++)
+        to[p] += step[p];
+}
+
+/* The loop's totals per phase (out[TM_N]): sampled times scaled to every
+ * ordinary step, and never more section time than the loop spent outside
+ * the output (sampled steps run a little slower, for their syncs). */
+static void timers_total(const struct run_timers *t, double loop, double *out)
+{
+    double scale = t->nsamp ? (double)t->nplain / (double)t->nsamp : 0.0;
+    for (int p = 0; p < TM_OUTPUT; p++)
+        out[p] = t->exact[p] + t->sampled[p] * scale;
+    out[TM_OUTPUT] = t->exact[TM_OUTPUT];
+    double busy = out[TM_PAIR] + out[TM_NEIGH] + out[TM_MODIFY];
+    double avail = loop - out[TM_OUTPUT];
+    if (busy > avail && busy > 0)
+        for (int p = 0; p < TM_OUTPUT; p++)
+            out[p] *= avail / busy;
 }
 
 /* Pack and upload the per-type-pair parameters; create the pair kernels. */
@@ -167,9 +214,9 @@ static void post_neighbor(struct gravel *g)
             g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
 }
 
-/* Force computation: pair (or clear), then every post_force fix. */
-static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t_pair,
-                           double *t_modify)
+/* Force computation: pair (or clear), then every post_force fix; their
+ * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
+static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = &e->a;
@@ -241,11 +288,11 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     if (timed)
         eng_finish(g);
     double t1 = wall();
-    *t_pair += t1 - t0;
+    t[TM_PAIR] += t1 - t0;
     run_hook(g, HOOK_POST_FORCE);
     if (timed)
         eng_finish(g);
-    *t_modify += wall() - t1;
+    t[TM_MODIFY] += wall() - t1;
 }
 
 /* Log the collision time of the contact model against the time step:
@@ -359,8 +406,8 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
 }
 
 /* Statistics of a finished run (or rerun) and its footer. */
-static void run_end(struct gravel *g, bigint nsteps, double ttot, double tp, double tn,
-                    double tm, double to, double maxov, int post);
+static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
+                    double maxov, int post);
 
 /* The whole run: setup, loop, footer. */
 static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
@@ -370,7 +417,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
 
     g->firststep = g->step;
     g->laststep = g->step + nsteps;
-    double tp = 0, tn = 0, tm = 0, to = 0;
+    double tsetup[TM_N] = {0}; /* not reported: LAMMPS times the loop only */
     /* setup: list, step-0 forces without history update, post_force fixes */
     e->setup = 1;
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
@@ -382,22 +429,15 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     }
     e->st.nbuilds = 0;
     if (resumed < 2)
-        compute_forces(g, freezebit, 1, &tp, &tm);
+        compute_forces(g, freezebit, 1, tsetup);
     for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
         if (g->styles.fix[i]->style->setup)
             g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
     e->setup = 0;
     double maxov = nbr_max_overlap(g);
     output_setup(g);
-    /* Timing: the device is synchronized after each section only on sampled
-     * steps (every TIME_SAMPLE-th) and on rebuild steps (timed exactly), so
-     * ordinary steps run without host waits; sampled section times are
-     * scaled to the ordinary steps. The decision read syncs every step. */
-    enum { TIME_SAMPLE = 8 };
-    tp = tn = tm = to = 0;
-    double sp = 0, sn = 0, sm = 0; /* sampled ordinary steps */
-    double xp = 0, xn = 0, xm = 0; /* rebuild steps, exact */
-    bigint nsamp = 0, nplain = 0;
+    /* Timing (struct run_timers): the decision read syncs every step. */
+    struct run_timers tm = {0};
     e->st.nlaunch = 0;
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
@@ -424,28 +464,17 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         }
         double a2 = wall();
         int timed = sampled || rebuild;
-        double cp = 0, cm = 0;
-        compute_forces(g, freezebit, timed, &cp, &cm);
+        double step[TM_N] = {0};
+        compute_forces(g, freezebit, timed, step);
         double b0 = wall();
         run_hook(g, HOOK_FINAL_INTEGRATE);
         run_hook(g, HOOK_END_OF_STEP);
         if (timed)
             eng_finish(g);
         double b1 = wall();
-        double mod = (a1 - a0) + cm + (b1 - b0) + tx;
-        if (rebuild) {
-            xp += cp;
-            xn += a2 - a1 - tx;
-            xm += mod;
-        } else {
-            nplain++;
-            if (sampled) {
-                nsamp++;
-                sp += cp;
-                sn += a2 - a1;
-                sm += mod;
-            }
-        }
+        step[TM_NEIGH] = a2 - a1 - tx;
+        step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
+        timers_step(&tm, rebuild, sampled, step);
         g->time += g->dt;
         if (output_due(g, g->step)) {
             acc_collect(g);
@@ -455,26 +484,16 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             output_step(g);
         }
         restart_step(g); /* `restart N file`: written when the step is a multiple of N */
-        to += wall() - b1;
+        tm.exact[TM_OUTPUT] += wall() - b1;
     }
-    double scale = nsamp ? (double)nplain / (double)nsamp : 0.0;
-    tp = xp + sp * scale;
-    tn = xn + sn * scale;
-    tm = xm + sm * scale;
-    /* sampled steps run a little slower (their syncs): never report more
-     * section time than the loop took */
-    double busy = tp + tn + tm, avail = wall() - t0 - to;
-    if (busy > avail && busy > 0) {
-        tp *= avail / busy;
-        tn *= avail / busy;
-        tm *= avail / busy;
-    }
+    double t[TM_N];
+    timers_total(&tm, wall() - t0, t);
     double ttot = wall() - t0;
-    run_end(g, nsteps, ttot, tp, tn, tm, to, maxov, post);
+    run_end(g, nsteps, ttot, t, maxov, post);
 }
 
-static void run_end(struct gravel *g, bigint nsteps, double ttot, double tp, double tn,
-                    double tm, double to, double maxov, int post)
+static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
+                    double maxov, int post)
 {
     struct engine *e = g->eng;
     acc_collect(g);
@@ -485,11 +504,11 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, double tp, dou
     st.nsteps = nsteps;
     st.natoms = e->a.n;
     st.t_total = ttot;
-    st.t_pair = tp;
-    st.t_neigh = tn;
-    st.t_modify = tm;
-    st.t_output = to;
-    st.t_other = ttot - tp - tn - tm - to;
+    st.t_pair = t[TM_PAIR];
+    st.t_neigh = t[TM_NEIGH];
+    st.t_modify = t[TM_MODIFY];
+    st.t_output = t[TM_OUTPUT];
+    st.t_other = ttot - st.t_pair - st.t_neigh - st.t_modify - st.t_output;
     if (st.t_other < 0)
         st.t_other = 0;
     st.total_neighbors = nbr_total(g);
@@ -528,7 +547,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     struct engine *e = g->eng;
     g->firststep = firststep;
     g->laststep = laststep;
-    double tp = 0, tm = 0, maxov = 0, to = 0;
+    double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
     bigint ndump = 0;
     double t0 = wall();
     for (int first = 1;; first = 0) {
@@ -536,7 +555,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         e->setup = 1;
         group_dynamic_update(g, -1);
         nbr_rebuild(g);
-        compute_forces(g, freezebit, 1, &tp, &tm);
+        compute_forces(g, freezebit, 1, t);
         for (int i = 0; i < g->styles.nfix; i++)
             if (g->styles.fix[i]->style->setup)
                 g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
@@ -549,7 +568,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
             output_setup(g);
         else if (output_due(g, g->step))
             output_step(g);
-        to += wall() - o0;
+        t[TM_OUTPUT] += wall() - o0;
         run_sync_host(g);
         e->active = 0;
         bigint prev = g->step;
@@ -564,9 +583,9 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     double o0 = wall();
     g->laststep = g->step; /* LAMMPS: thermo on the last snapshot */
     output_step(g);
-    to += wall() - o0;
+    t[TM_OUTPUT] += wall() - o0;
     double ttot = wall() - t0;
-    run_end(g, ndump, ttot, tp, 0.0, tm, to, maxov, post);
+    run_end(g, ndump, ttot, t, maxov, post);
 }
 
 /* body(g, ctx) under an error boundary: a run that stops on an error (lost

@@ -27,6 +27,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "log.h"
 #include "random.h"
 #include "region.h"
 #include "variable.h"
@@ -80,7 +81,7 @@ static void select_atoms(struct gravel *g, const char *style, const char *id, ch
         for (int i = 0; i < a->n; i++)
             sel[i] = region_match(r, a->x + 3 * i);
     } else if (!strcmp(style, "mol")) {
-        gr_error(g, "style mol is not supported: atom_style sphere has no molecules");
+        gr_error(g, "style mol is not supported: select by atom, type, group or region");
     } else {
         gr_error(g, "unknown style '%.32s': expected atom, type, group or region", style);
     }

@@ -9,6 +9,7 @@
 #include "atoms.h"
 #include "domain.h"
 #include "error.h"
+#include "gravel.h"
 
 
 /* units lj|si|cgs: only defaults differ (gr_unit_defaults: timestep, skin,

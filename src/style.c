@@ -1,11 +1,12 @@
 /* style.c - release of every style instance on `clear` and destroy: dumps
  * first (they publish their files), then computes, fixes and the pair. */
-#include "gravel.h"
+#include "style.h"
+
 #include "compute.h"
 #include "dump.h"
 #include "fix.h"
 #include "pair.h"
-#include "styles.h"
+#include "state.h"
 
 void styles_free(struct gravel *g)
 {

@@ -6,7 +6,7 @@
 #include "args.h"
 #include "atoms.h"
 #include "compute.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 
@@ -187,4 +187,23 @@ double temp_compute_scalar(struct gravel *g, struct compute *c)
 void temp_compute_vector(struct gravel *g, struct compute *c)
 {
     temp_vector(g, c->temp, c->vector);
+}
+
+/* `compute_modify ID keyword value ...`: dynamic/dof and extra/dof of a
+ * temperature compute (temp, temp/sphere) or of the implicit thermo_temp
+ * (thermo `temp`, `ke`, `press`), as LAMMPS (temp_modify). Other
+ * computes have no settings to modify. */
+void cmd_compute_modify(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "expected: compute_modify ID keyword value ...");
+    struct compute *c = compute_find(g, argv[0]);
+    if (!c && strcmp(argv[0], "thermo_temp") == 0) {
+        temp_modify(g, &g->thermo.temp, argc - 1, argv + 1);
+        return;
+    }
+    c = compute_get(g, argv[0], "compute_modify");
+    if (!c->temp)
+        gr_error(g, "compute %s (%s) has no settings to modify", c->id, c->style->name);
+    temp_modify(g, c->temp, argc - 1, argv + 1);
 }

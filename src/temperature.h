@@ -17,7 +17,7 @@
 #ifndef GR_TEMPERATURE_H
 #define GR_TEMPERATURE_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Boltzmann constant of the current units (LAMMPS 2021 force->boltz). */
 double temp_boltz(const struct gravel *g);
@@ -35,6 +35,9 @@ struct temp_state *temp_thermo(struct gravel *g);
 /* compute_modify keywords of a temperature: dynamic/dof (dynamic),
  * extra/dof (extra); argv holds keyword value pairs. */
 void temp_modify(struct gravel *g, struct temp_state *t, int argc, char **argv);
+/* `compute_modify ID keyword value ...` (commands.def): temp_modify on a
+ * temperature compute or on the implicit thermo_temp. */
+void cmd_compute_modify(struct gravel *g, int argc, char **argv);
 
 /* The temperature computes (compute temp, temp/sphere): attach a temperature
  * of this kind to c (global scalar and 6-vector), and the compute_style

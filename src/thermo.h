@@ -1,12 +1,14 @@
 /* thermo.h - the thermo table (LAMMPS 2021 layout), the run-time output state
  * shared by output.c, thermo.c and progress.c, and the progress line.
  *
- * Internal to the output module; other modules use output.h. Tests call the
- * text functions directly. */
+ * The run loop drives output through output.h; this header is the thermo
+ * table's own: the thermo commands, thermo keyword values for expressions
+ * (expr.c), and what output.c and progress.c share. Tests call the text
+ * functions directly. */
 #ifndef GR_THERMO_H
 #define GR_THERMO_H
 
-#include "gravel.h"
+#include "state.h"
 
 /* Run-time state of the output module, one per engine (g->thermo.state). */
 struct output_state {
@@ -59,17 +61,20 @@ int thermo_shows_fix_vector(const struct gravel *g, const char *id);
 const char *thermo_header_text(struct gravel *g);
 const char *thermo_line_text(struct gravel *g);
 
-/* Progress line: begin at output_setup, update after each step, end at
- * output_finish (clears it). Active with -progress or when stderr is a
- * terminal; writes only to stderr. */
-void progress_begin(struct gravel *g);
-void progress_update(struct gravel *g);
-void progress_end(struct gravel *g);
-/* 1 when the progress line should be redrawn now (callers that only call
- * output_step when output_due says so still get a live line). */
-int progress_due(struct gravel *g);
-/* Erase the line if shown (before other text goes to the terminal); the
- * next update redraws it. */
-void progress_clear(struct gravel *g);
+/* Value of a thermo keyword for expressions: step elapsed dt time cpu tpcpu
+ * spcpu cpuremain atoms ke pe etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp epair
+ * emol, c_ID, c_ID[N] (normalized like thermo output with norm yes) and
+ * v_name. Returns 0 when `name` is none of these (or names no existing
+ * compute/variable); raises an error when c_ID exists but has no such value. */
+int thermo_keyword_value(struct gravel *g, const char *name, double *out);
+
+/* Commands (commands.def): thermo, thermo_style, thermo_modify. */
+void cmd_thermo(struct gravel *g, int argc, char **argv);
+void cmd_thermo_style(struct gravel *g, int argc, char **argv);
+void cmd_thermo_modify(struct gravel *g, int argc, char **argv);
+
+/* Release the thermo settings' strings and the output state (`clear`,
+ * destroy: gravel.c). */
+void thermo_settings_free(struct thermo_settings *t);
 
 #endif

@@ -17,6 +17,8 @@
 
 #include "args.h"
 #include "error.h"
+#include "expr.h"
+#include "log.h"
 #include "random.h"
 
 enum vstyle { V_INDEX, V_LOOP, V_STRING, V_EQUAL, V_FORMAT, V_GETENV, V_ATOM };

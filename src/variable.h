@@ -9,7 +9,7 @@
 #ifndef GR_VARIABLE_H
 #define GR_VARIABLE_H
 
-#include "gravel.h"
+#include "state.h"
 
 struct vars *var_create(void);
 void var_destroy(struct vars *v);
@@ -43,19 +43,6 @@ void var_print_all(struct gravel *g);
 /* Number of defined variables. */
 int var_count(const struct gravel *g);
 
-/* Evaluate an expression as in equal-style variables. */
-double expr_eval(struct gravel *g, const char *text);
-/* Evaluate a formula once per host atom (atom-style variables): bare x y z
- * vx vy vz fx fy fz mass radius type id are that atom's, c_ID / c_ID[N] of a
- * per-atom compute and v_name of an atom-style variable its value; every
- * other operand is global and evaluated once. out: g->atoms.n values. */
-void expr_eval_atoms(struct gravel *g, const char *text, double *out, int depth);
-/* Check that `fmt` is a printf format with exactly one double conversion
- * (%f %e %g %E %G with flags, width <= 999, precision <= 999) and no other
- * conversions except %%; returns 1 if valid. Used by format variables and
- * $(expr:fmt). */
-int expr_format_ok(const char *fmt);
-
 /* Random numbers for random()/normal(): LAMMPS's one RanMars stream,
  * created on first use with that seed and continued on later calls, so a
  * script gives the same sequence every time. seed must be > 0. */
@@ -63,7 +50,6 @@ double var_random_uniform(struct gravel *g, long seed);
 double var_random_gaussian(struct gravel *g, long seed);
 
 /* Internal: evaluate with a nesting depth (v_name recursion guard). */
-double expr_eval_depth(struct gravel *g, const char *text, int depth);
 double var_compute_equal_depth(struct gravel *g, const char *name, int depth);
 void var_compute_atom_depth(struct gravel *g, const char *name, double *out, int depth);
 

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "accuracy.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "mesh.h"

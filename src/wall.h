@@ -8,7 +8,7 @@
 #ifndef GR_WALL_H
 #define GR_WALL_H
 
-#include "gravel.h"
+#include "state.h"
 #include "ocl.h"
 
 struct fix;
@@ -68,15 +68,7 @@ struct wall_region {
     int nnode, comb, interior, slots;
 };
 
-/* Check that region r can be a wall (error naming `who` otherwise) and set
- * up wr; returns the per-atom history bytes (0 without history). */
-size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
-                        const struct wall_law *law, const char *who);
-/* Evaluate the motion of r at this step, upload it and add the contact
- * forces and torques of f's atoms. */
-void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
-                       struct region *r, const struct wall_law *law);
-void wall_region_release(struct wall_region *wr);
+/* Set up, apply and release: wall_region.h. */
 
 /* ---- mesh walls (kernels/wall.cl MESH_KERNEL) ----
  * A triangle mesh on the device in its own frame: per triangle its three

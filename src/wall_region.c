@@ -2,15 +2,16 @@
  * (kernels/wall_region.cl): a region packed as device nodes (layout RG_* of
  * the kernel file), its motion evaluated once per step (Region::prematch and
  * set_velocity), the launch. */
+#include "wall_region.h"
+
 #include <math.h>
 #include <string.h>
 
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "region.h"
 #include "variable.h"
-#include "wall.h"
 
 /* = kernels/wall_region.cl */
 #define RG_NODE 40

@@ -33,7 +33,7 @@
 
 #include "args.h"
 #include "compute.h"
-#include "compute_agglomerate.h"
+#include "compute_agglomerate_mes.h"
 #include "error.h"
 
 struct agg {

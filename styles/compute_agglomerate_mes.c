@@ -17,7 +17,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "compute_agglomerate.h"
+#include "compute_agglomerate_mes.h"
 
 struct ball {
     double c[3], R;

@@ -7,6 +7,7 @@
 
 #include "args.h"
 #include "dump.h"
+#include "dump_custom.h"
 #include "error.h"
 
 extern const struct dump_style dump_style_custom;

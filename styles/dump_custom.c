@@ -21,6 +21,7 @@
 #include "compute.h"
 #include "domain.h"
 #include "dump.h"
+#include "dump_custom.h"
 #include "error.h"
 #include "thermo.h"
 #include "variable.h"

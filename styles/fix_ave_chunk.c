@@ -30,10 +30,11 @@
 
 #include "args.h"
 #include "compute_chunk_atom.h"
+#include "engine.h"
 #include "error.h"
+#include "expr.h"
 #include "fileio.h"
 #include "fix.h"
-#include "run.h"
 #include "variable.h"
 
 enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };

@@ -38,10 +38,10 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
-#include "pair_cohesion.h"
+#include "fix_drag.h"
 
 enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN };
 enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT, UPD_TRAPEZOIDAL };

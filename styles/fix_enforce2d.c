@@ -5,7 +5,7 @@
  * about z only. Requires `dimension 2`. Runs as its own kernel
  * (kernels/fix_enforce2d.cl): it changes velocities, which a fused
  * post_force op does not write back. */
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 

@@ -12,10 +12,11 @@
 #include <string.h>
 
 #include "atoms.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
-#include "run.h"
+#include "fused.h"
 #include "thermo.h"
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)

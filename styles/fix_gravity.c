@@ -16,9 +16,10 @@
 
 #include "args.h"
 #include "atoms.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fused.h"
 #include "fix_gravity.h"
 
 struct grav {

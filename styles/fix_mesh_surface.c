@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
 #include "pair.h"

@@ -33,7 +33,7 @@
 #include "args.h"
 #include "box_change.h"
 #include "compute.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_deform.h"

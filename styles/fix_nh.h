@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-#include "gravel.h"
+#include "state.h"
 
 struct fix;
 

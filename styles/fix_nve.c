@@ -1,8 +1,9 @@
 /* fix_nve.c - `fix ID group nve`: velocity Verlet for point particles
  * (LAMMPS fix_nve.cpp with per-atom mass; kernels/fix_nve.cl). */
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fused.h"
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {

@@ -5,9 +5,10 @@
  * clear error (no point dipoles). */
 #include <string.h>
 
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fused.h"
 
 struct kern {
     cl_kernel ini, fin;

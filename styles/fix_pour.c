@@ -29,11 +29,18 @@
  * creation). Mask: all + the fix group. An atom outside the box (except
  * above its top face) is not created, as on LAMMPS's one process.
  *
+ * Molecules (`mol T`, LAMMPS's mode MOLECULE): copies of molecule template
+ * T instead of single spheres; per molecule one height draw, per attempt a
+ * point, the template draw (molfrac: one-molecule templates, so 1.0) and a
+ * random rotation about the template's geometric centre; every atom must
+ * clear the near list; the template's radius enters v1 and the near list.
+ * `rigid ID`: each inserted molecule becomes a body of fix rigid/small ID
+ * (same template). `shake` is an error (granular molecules have no bonds).
+ *
  * Requires a fix gravity pointing -z (3d) or -y (2d) of unchanged magnitude
- * and an unchanged timestep; reset_timestep is refused while it exists. `ignore` (skip line/triangle particles in the
- * near list) has nothing to skip: gravel's particles are spheres. `mol`,
- * `molfrac`, `rigid`, `shake` need molecule templates, which gravel does not
- * have: clear errors. */
+ * and an unchanged timestep; reset_timestep is refused while it exists.
+ * `ignore` (skip line/triangle particles in the near list) has nothing to
+ * skip: gravel's particles are spheres. Full contract: doc/styles/fix_pour.md. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,11 +48,13 @@
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
+#include "device.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
+#include "log.h"
 #include "molecule.h"
 #include "random.h"
 #include "region.h"

@@ -36,7 +36,7 @@
  * shift, its image flag = the body's + the shift.
  *
  * Pair and wall contacts of a member use the body's mass as its mass in the
- * effective mass (LAMMPS's mass_rigid, engine.h contact_mass). Degrees of
+ * effective mass (LAMMPS's mass_rigid, device.h contact_mass). Degrees of
  * freedom (temperatures): a body wholly in the temperature group keeps 6
  * (3d; 5 if linear) or 3 (2d) of its atoms' 3 + 3 (finite spheres) each.
  *
@@ -50,11 +50,12 @@
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
+#include "log.h"
 #include "molecule.h"
 #include "rigid_math.h"
 

@@ -5,9 +5,10 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fused.h"
 
 struct visc {
     int ntypes;

@@ -1,10 +1,11 @@
 /* fix_wall_gran.c - `fix ID group wall/gran model Kn Kt gamman gammat xmu
  * dampflag wallstyle args [wiggle dim amplitude period | shear dim vshear]`:
  * frictional granular walls with LAMMPS 2021 fix wall/gran semantics
- * (fix_wall_gran.cpp, models hooke, hooke/history, hertz/history).
+ * (fix_wall_gran.cpp, models hooke, hooke/history, hertz/history, granular).
  *
  *   model      hooke | hooke/history | hertz/history (same laws as the pair
  *              styles gran/hooke etc.: the wall kernel calls their evaluators)
+ *              | granular <sub-models> (pair granular's, below)
  *   Kt NULL    -> 2/7 Kn;  gammat NULL -> gamman/2;  dampflag 0 -> gammat = 0
  *   wallstyle  xplane lo hi | yplane lo hi | zplane lo hi  (NULL = no face)
  *              zcylinder R  (axis z through x = y = 0)
@@ -31,7 +32,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
@@ -39,6 +40,7 @@
 #include "region.h"
 #include "fix_mesh_surface.h"
 #include "wall.h"
+#include "wall_region.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
 enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY, M_GRANULAR };
@@ -192,8 +194,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     else if (!strcmp(argv[0], "granular"))
         w.model = M_GRANULAR;
     else
-        gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history or "
-                    "hertz/history)", argv[0]);
+        gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history, "
+                    "hertz/history or granular)", argv[0]);
     int i;
     if (w.model == M_GRANULAR) {
         i = 1 + parse_granular(g, &w, argc - 1, argv + 1);

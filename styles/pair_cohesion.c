@@ -30,6 +30,7 @@
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
+#include "pair_cohesion_numbers.h"
 #include "pair_cohesion.h"
 
 /* Per-type-pair tables, row-major (I-1) nt + (J-1), for the I side. */

@@ -16,8 +16,11 @@
 
 #include "error.h"
 #include "fix.h"
+#include "fix_drag.h"
+#include "log.h"
 #include "pair.h"
 #include "pair_cohesion.h"
+#include "pair_cohesion_numbers.h"
 
 /* The linear contact term of the scene: linear/restitution (coef[0] = ke,
  * coef[1] = e, styles/pair_linear_restitution.c) or gran/hooke(/history)

@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "engine.h"
+#include "device.h"
 #include "error.h"
 #include "pair.h"
 #include "pair_granular.h"

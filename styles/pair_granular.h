@@ -5,7 +5,7 @@
 #ifndef GR_PAIR_GRANULAR_H
 #define GR_PAIR_GRANULAR_H
 
-#include "gravel.h"
+#include "state.h"
 #include "param_layout.h"
 
 struct gr_one {

@@ -7,6 +7,7 @@
 #include "args.h"
 #include "error.h"
 #include "region.h"
+#include "region_cylinder.h"
 
 static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 

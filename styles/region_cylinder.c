@@ -9,6 +9,7 @@
 #include "args.h"
 #include "error.h"
 #include "region.h"
+#include "region_cylinder.h"
 
 /* the two transverse dimensions of axis d, in LAMMPS order */
 static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};

@@ -5,6 +5,7 @@
 
 #include "error.h"
 #include "region.h"
+#include "region_union.h"
 
 static int intersect_parse(struct gravel *g, struct region *r, int n, char **a,
                            const double sc[3])

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "region.h"
+#include "region_union.h"
 
 /* Resolve the N sub-region IDs of union/intersect (region.h). */
 void region_link_subs(struct gravel *g, struct region *r, int n, char **a)

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 
 #include "compute.h"
-#include "compute_agglomerate.h"
+#include "compute_agglomerate_mes.h"
 #include "test.h"
 
 static double enclose_radius(int n, const double *p, const double *r, const double c[3])

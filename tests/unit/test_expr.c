@@ -3,6 +3,7 @@
  * and per-atom values on host atoms, thermo keywords, and each error. */
 #include <stdlib.h>
 
+#include "expr.h"
 #include "test.h"
 
 #include "atoms.h"

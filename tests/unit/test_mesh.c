@@ -24,6 +24,7 @@
 #include "fix_mesh_surface.h"
 #include "mesh.h"
 #include "output.h"
+#include "thermo.h"
 
 static char dir[64];
 

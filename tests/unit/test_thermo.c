@@ -2,6 +2,7 @@
  * against lines printed by `lmp` 29Sep2021 for the same settings), formats
  * and their precedence, normalization, keyword values, the output schedule
  * and the run footer. */
+#include "device.h"
 #include "output_fixture.h"
 
 #include <unistd.h>

@@ -3,6 +3,7 @@
  * each. */
 #include <stdlib.h>
 
+#include "expr.h"
 #include "test.h"
 
 #include "error.h"

@@ -1,7 +1,8 @@
-/* compute_agglomerate.h - host helpers of compute agglomerate
- * (styles/compute_agglomerate.c), exported for the unit tests. */
-#ifndef GR_COMPUTE_AGGLOMERATE_H
-#define GR_COMPUTE_AGGLOMERATE_H
+/* compute_agglomerate_mes.h - the minimum enclosing sphere of a set of
+ * spheres (styles/compute_agglomerate_mes.c), for compute agglomerate and
+ * its unit tests. */
+#ifndef GR_COMPUTE_AGGLOMERATE_MES_H
+#define GR_COMPUTE_AGGLOMERATE_MES_H
 
 /* Smallest sphere enclosing n spheres (centres p[3i..3i+2], radii r[i]):
  * centre c[3] and radius *R. Welzl's move-to-front recursion on spheres, the

@@ -1,0 +1,19 @@
+/* wall_region.h - region walls (wall_region.c): the surface of a LAMMPS
+ * region as a contact source of fix wall/gran region. The device record,
+ * struct wall_region, and its limits are in wall.h with the other walls. */
+#ifndef GR_WALL_REGION_H
+#define GR_WALL_REGION_H
+
+#include "wall.h"
+
+/* Check that region r can be a wall (error naming `who` otherwise) and set
+ * up wr; returns the per-atom history bytes (0 without history). */
+size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
+                        const struct wall_law *law, const char *who);
+/* Evaluate the motion of r at this step, upload it and add the contact
+ * forces and torques of f's atoms. */
+void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
+                       struct region *r, const struct wall_law *law);
+void wall_region_release(struct wall_region *wr);
+
+#endif
