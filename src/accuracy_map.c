@@ -181,7 +181,10 @@ static int have_gnuplot(void)
 void accuracy_map(struct gravel *g)
 {
     const struct pair *p = g->styles.pair;
-    if (!p || !p->style->collision_time) {
+    struct pair_caps caps; /* before the run's set-up: the record as it stands */
+    if (p)
+        pair_describe(p, &caps);
+    if (!p || !caps.collision_time) {
         gr_warn(g, "accuracy map: the scene has no contact law with a collision time");
         return;
     }
@@ -221,7 +224,7 @@ void accuracy_map(struct gravel *g)
             why = "1 (the scene starts at rest, no gravity)";
         }
     }
-    double tcol = p->style->collision_time(p, m, r, V);
+    double tcol = pair_collision_time(&caps, m, r, V);
     if (!isfinite(tcol) || !(tcol > 0)) {
         gr_warn(g, "accuracy map: %s has no collision time at these parameters (overdamped?)",
                 p->style->name);
