@@ -1,10 +1,13 @@
 /* pair.h - pair styles: the contact law between two particles in contact.
  *
- * A style is a descriptor (struct pair_style) in styles/pair_<ident>.c and a
- * pure evaluator in kernels/pair_<ident>.cl:
+ * A style is a descriptor (struct pair_style) in styles/pair_<ident>.c, one
+ * PAIR(keyword, ident) row in styles/styles.def, and a pure evaluator in
+ * kernels/pair_<ident>.cl:
  *
  *   void <ident>_eval(const struct contact *c, __global const REAL *param,
  *                     REAL3 *shear, REAL3 *force_i, REAL3 *torque_i);
+ *   REAL <ident>_eval_tcol(const struct contact *c, __global const REAL *param,
+ *                          REAL vn);      (collision time, see below)
  *
  * struct contact (kernels/common.cl) carries del = x_i - x_j, rsq, radii,
  * radsum, reff = radi radj / radsum, vr = v_i - v_j, omega_i, omega_j, meff,
@@ -12,8 +15,17 @@
  * torque on i; it must be exactly antisymmetric under i <-> j so that the
  * force on j (computed by j's own loop) is exactly minus the force on i.
  * `param` points at this type pair's `nparam` packed REALs, produced by
- * pack() on the host. fix wall/gran calls the same evaluators with the wall as
+ * pack() on the host (layout: an enum in kernels/param_layout.h). fix
+ * wall/gran and fix wall/pair call the same evaluators with the wall as
  * particle j (radj = 0, radsum = reff = radi, omj = 0, meff = m_i).
+ *
+ * Life cycle: settings() at pair_style, coeff() at pair_coeff; at every run
+ * start pair_setup() calls init() (check, mix) and then describe(), which
+ * fills the style's capabilities record (struct pair_caps below: rotation,
+ * history width, reach and cut-offs, approach, energy, kernel sources, build
+ * options, collision time); pair_pack() then packs the parameters, before
+ * the fixes initialise. The core reads the record only; it never calls
+ * another style hook and never names a style.
  *
  * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. */
 #ifndef GR_PAIR_H
@@ -69,7 +81,7 @@ struct pair_caps {
                                  * NULL: contact forces only */
     int ndef;                   /* the style's own build options, NAME or NAME=VALUE */
     struct pair_def {
-        char name[24];
+        char name[32];
         char value[40];
     } def[PAIR_MAXDEF];
     /* ---- state the run keeps ---- */

@@ -289,7 +289,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
         pair_describe(t, &tc);
         for (int q = 0; q < tc.nsources; q++)
             pair_caps_source(c, tc.sources[q]);
-        char nm[24];
+        char nm[32];
         snprintf(nm, sizeof nm, "PAIR_TERM%d", k);
         pair_caps_define(c, nm, "%s", tc.eval);
         snprintf(nm, sizeof nm, "PAIR_TERM%d_OFF", k);
