@@ -27,8 +27,6 @@
 #include "input.h"
 #include "pair.h"
 
-double fix_gravity_magnitude(const struct fix *f); /* styles/fix_gravity.c */
-
 enum { NPHASE = 4, REF_STEPS = 400 };
 
 struct replay {
@@ -212,12 +210,12 @@ void accuracy_map(struct gravel *g)
     double V = 2 * vmax;
     const char *why = "twice the fastest particle's speed";
     if (!(V > 0)) {
-        struct fix *fg = fix_find_style(g, "gravity");
+        struct fix *fg = fix_find_acceleration(g);
         double H = 0;
         for (int d = 0; d < 3; d++)
             H = fmax(H, g->dom.hi[d] - g->dom.lo[d]);
         if (fg && H > 0) {
-            V = sqrt(2 * fix_gravity_magnitude(fg) * H);
+            V = sqrt(2 * fg->style->acceleration(fg) * H);
             why = "free fall over the box under fix gravity (the scene starts at rest)";
         } else {
             V = 1;

@@ -35,6 +35,14 @@ struct fix *fix_find(struct gravel *g, const char *id)
     return NULL;
 }
 
+struct fix *fix_find_acceleration(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->acceleration)
+            return g->styles.fix[i];
+    return NULL;
+}
+
 unsigned fix_frozen_groupbit(struct gravel *g)
 {
     for (int i = 0; i < g->styles.nfix; i++)

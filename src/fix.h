@@ -128,6 +128,9 @@ struct fix_style {
      * groupbit (LAMMPS Fix::dof, e.g. rigid bodies); temperatures subtract
      * the sum over fixes. */
     double (*dof)(struct gravel *g, struct fix *f, unsigned groupbit);
+    /* Optional: the magnitude of the uniform acceleration this fix applies
+     * to its atoms (fix gravity): the -check accuracy map's free-fall speed. */
+    double (*acceleration)(const struct fix *f);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;
@@ -169,6 +172,9 @@ struct fix {
 struct fix *fix_find(struct gravel *g, const char *id);
 /* The first fix of this style name (e.g. "gravity"), or NULL. */
 struct fix *fix_find_style(struct gravel *g, const char *style);
+/* The first fix that applies a uniform acceleration (style->acceleration),
+ * or NULL. */
+struct fix *fix_find_acceleration(struct gravel *g);
 /* The group bit of the first FIX_FROZEN fix (0: none). */
 unsigned fix_frozen_groupbit(struct gravel *g);
 /* 1 when every fix is FIX_CONSERVING (none: 1). */

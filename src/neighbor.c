@@ -386,7 +386,8 @@ static double lammps2021_cutneighmax(struct gravel *g, double insert_rmax)
         for (int j = i; j <= nt; j++)
             if (rt[i] > 0 && rt[j] > 0)
                 cut = fmax(cut, p && p->caps.lammps2021_cut
-                                    ? p->caps.lammps2021_cut(p->caps.cut2021_of, i, j, rt[i], rt[j])
+                                    ? p->caps.lammps2021_cut(p->caps.cut2021_of, i, j, rt[i],
+                                                             rt[j])
                                     : rt[i] + rt[j]);
     free(rt);
     return cut + g->neigh.skin;
