@@ -4,8 +4,10 @@
  * Every contact law has a collision-time function <eval>_tcol(c, param, vn):
  * the duration of an isolated two-body collision of this contact's m* and
  * R* at relative normal speed vn > 0 (0: none, e.g. cohesion or an
- * overdamped dashpot). TCOL_OF(EVAL) names it for an evaluator EVAL (a macro
- * such as PAIR_EVAL is expanded first).
+ * overdamped dashpot), which calls the law's formula in
+ * kernels/collision_time.h (the host calls the same one, src/pair.h).
+ * TCOL_OF(EVAL) names it for an evaluator EVAL (a macro such as PAIR_EVAL is
+ * expanded first).
  *
  * Records, written only by the work-item that owns them (no atomics):
  *   pair contact c   acc[2c] = largest dt / t_col seen, acc[2c + 1] = the
@@ -21,21 +23,8 @@
 #define TCOL_PASTE(e) e##_tcol
 #define TCOL_OF(e) TCOL_PASTE(e)
 
-/* Hertz, F = 4/3 E* sqrt(R*) d^1.5 = K sqrt(R*) d^1.5 (K = 4/3 E*), undamped:
- * t_col = 2.87 (m*^2 / (R* E*^2 vn))^(1/5) (Johnson 1985, 11.2). */
-static inline REAL tcol_hertz(const REAL K, const REAL reff, const REAL meff, const REAL vn)
-{
-    const REAL es = (REAL)0.75 * K;
-    return (REAL)2.868 * pow(meff * meff / (reff * es * es * vn), (REAL)0.2);
-}
-
-/* Linear spring kn with a dashpot of rate gamma (force meff gamma vn):
- * pi / sqrt(kn / m* - gamma^2 / 4); 0 when overdamped. */
-static inline REAL tcol_linear(const REAL kn, const REAL gamma, const REAL meff)
-{
-    const REAL w2 = kn / meff - (REAL)0.25 * gamma * gamma;
-    return w2 > (REAL)0 ? (REAL)M_PI / sqrt(w2) : (REAL)0;
-}
+/* The laws' collision-time formulas (tcol_linear, tcol_hertz, ...) are in
+ * kernels/collision_time.h, shared with the host. */
 
 /* Note a pair contact: the record keeps the fastest impact; dt / t_col
  * grows with vn for a given contact, so the law is evaluated only when the

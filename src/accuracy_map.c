@@ -29,8 +29,6 @@
 #include "log.h"
 #include "pair.h"
 
-double fix_gravity_magnitude(const struct fix *f); /* styles/fix_gravity.c */
-
 enum { NPHASE = 4, REF_STEPS = 400 };
 
 struct replay {
@@ -183,7 +181,10 @@ static int have_gnuplot(void)
 void accuracy_map(struct gravel *g)
 {
     const struct pair *p = g->styles.pair;
-    if (!p || !p->style->collision_time) {
+    struct pair_caps caps; /* before the run's set-up: the record as it stands */
+    if (p)
+        pair_describe(p, &caps);
+    if (!p || !caps.collision_time) {
         gr_warn(g, "accuracy map: the scene has no contact law with a collision time");
         return;
     }
@@ -211,19 +212,19 @@ void accuracy_map(struct gravel *g)
     double V = 2 * vmax;
     const char *why = "twice the fastest particle's speed";
     if (!(V > 0)) {
-        struct fix *fg = fix_find_style(g, "gravity");
+        struct fix *fg = fix_find_acceleration(g);
         double H = 0;
         for (int d = 0; d < 3; d++)
             H = fmax(H, g->dom.hi[d] - g->dom.lo[d]);
         if (fg && H > 0) {
-            V = sqrt(2 * fix_gravity_magnitude(fg) * H);
+            V = sqrt(2 * fg->style->acceleration(fg) * H);
             why = "free fall over the box under fix gravity (the scene starts at rest)";
         } else {
             V = 1;
             why = "1 (the scene starts at rest, no gravity)";
         }
     }
-    double tcol = p->style->collision_time(p, m, r, V);
+    double tcol = pair_collision_time(&caps, m, r, V);
     if (!isfinite(tcol) || !(tcol > 0)) {
         gr_warn(g, "accuracy map: %s has no collision time at these parameters (overdamped?)",
                 p->style->name);

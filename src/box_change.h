@@ -17,7 +17,7 @@
  *     of Lx Ly Lz yz xz xy) and g->dom.vremap_group in its init (both are
  *     reset at every run start and uploaded before the setup forces); when
  *     the rates change during the run it calls box_change_rates(g). With
- *     the build option VREMAP (the fix adds "-D VREMAP" to f->defines) an atom
+ *     the build option VREMAP (the fix puts "VREMAP" in f->defines) an atom
  *     of the group that crosses a periodic face gets v -/+ n . h_rate, and a
  *     contact with a partner's periodic image sees the image's velocity
  *     v + n . h_rate (LAMMPS's Domain::pbc and ghost velocities);

@@ -127,7 +127,7 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
 void diag_time_step(const struct gravel *g, char *out, size_t len)
 {
     const struct pair *p = g->styles.pair;
-    if (p && p->style->collision_time && g->atoms.n > 0) {
+    if (p && p->caps.collision_time && g->atoms.n > 0) {
         double m = 0, r = 0, vmax = 0;
         /* lightest particle of the host copy (run start) */
         for (int k = 0; k < g->atoms.n; k++) {
@@ -139,7 +139,7 @@ void diag_time_step(const struct gravel *g, char *out, size_t len)
                 if (isfinite(g->atoms.v[3 * k + d]))
                     vmax = fmax(vmax, fabs(g->atoms.v[3 * k + d]));
         }
-        double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
+        double tc = pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
         if (isfinite(tc) && tc / g->dt >= 10)
             snprintf(out, len,
                      "; the time step %g resolves the estimated collision time %g of pair style "

@@ -275,6 +275,69 @@ static void add_source(struct gravel *g, const char **names, const char **texts,
     (*n)++;
 }
 
+/* The run program's build options, assembled here and nowhere else:
+ * precision, the state the run keeps, the box, the pair style's record
+ * (src/pair.h: evaluator, approach, energy, its own options, reach) and
+ * the fixes' options (f->defines). Returns the length (>= len: too long). */
+static int build_options(struct gravel *g, const struct pair_caps *pc, int lmp2021,
+                         int flip_lo, int flip_n, char *opts, size_t size)
+{
+    struct engine *e = g->eng;
+    int single = e->single;
+    size_t len = 0;
+#define OPT(...)                                                                               \
+    do {                                                                                       \
+        if (len < size)                                                                        \
+            len += (size_t)snprintf(opts + len, size - len, __VA_ARGS__);                      \
+    } while (0)
+    OPT("-D REAL=%s%s%s%s", single ? "float" : "double",
+        !single ? " -D USE_DOUBLE"
+        : e->ocl.fp64 ? " -D SPLIT_POS -D HAS_FP64" /* contact_refine in double */
+                      : " -D SPLIT_POS", e->rotation ? " -D HAS_ROTATION" : "",
+        e->history ? " -D HAS_HISTORY" : "");
+    if (e->hist_n != 3)
+        OPT(" -D HIST_N=%d", e->hist_n);
+    if (lmp2021)
+        OPT(" -D LMP2021");
+    if (flip_n > 0)
+        OPT(" -D HIST_OWNER=%d -D HIST_ZERO_N=%d -D HIST_FLIP_LO=%d -D HIST_FLIP_N=%d",
+            e->hist_n - 1, e->hist_n - 1, flip_lo, flip_n);
+    for (int q = 0; q < 3; q++)
+        if (domain_contact_periodic(g, q))
+            OPT(" -D PERIODIC_%c", "XYZ"[q]);
+    if (g->dom.triclinic)
+        OPT(" -D TRICLINIC");
+    if (pc) {
+        if (pc->eval_row)
+            OPT(" -D PAIR_EVAL_ROW=%s", pc->eval_row);
+        else
+            OPT(" -D PAIR_EVAL=%s", pc->eval);
+        if (pc->approach)
+            OPT(" -D PAIR_APPROACH");
+        if (pc->energy)
+            OPT(" -D PAIR_ENERGY=%s", pc->energy);
+        for (int k = 0; k < pc->ndef; k++)
+            OPT(" -D %s%s%s", pc->def[k].name, pc->def[k].value[0] ? "=" : "",
+                pc->def[k].value);
+        if (pc->beyond) { /* cohesion: the loop's reach bound over the terms */
+            double a = 0, b = 0;
+            for (int k = 0; k < pc->nreach; k++) {
+                double a0 = pc->reach_a[k] + pc->reach_b[k] * 0.0;
+                double b0 = (pc->reach_a[k] + pc->reach_b[k] * 1.0) - a0;
+                a = a0 > a ? a0 : a;
+                b = b0 > b ? b0 : b;
+            }
+            OPT(" -D HAS_COHESION -D COH_REACH_A=%.17g -D COH_REACH_B=%.17g%s", a, b,
+                pc->type_cut ? " -D PAIR_TYPECUT" : "");
+        }
+    }
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->defines[0])
+            OPT(" -D %s", g->styles.fix[i]->defines);
+#undef OPT
+    return len < size ? (int)len : (int)size;
+}
+
 void eng_prepare(struct gravel *g)
 {
     struct engine *e = eng_get(g);
@@ -293,18 +356,16 @@ void eng_prepare(struct gravel *g)
         e->tag_sum = 0;
     }
     e->rsz = single ? sizeof(float) : sizeof(double);
-    /* cohesion: pair styles may be composed (hybrid/overlay) */
-    if (p)
-        pair_prepare(g);
-    e->rotation = (p && pair_needs_rotation(p)) || (needs & NEED_ROTATION);
-    e->history = p && pair_needs_history(p);
-    e->hist_n = e->history ? pair_history_size(p) : 3;
+    /* the pair style answers every question of the run once: its record */
+    pair_setup(g);
+    const struct pair_caps *pc = p ? &p->caps : NULL;
+    e->rotation = (pc && pc->rotation) || (needs & NEED_ROTATION);
+    e->history = pc && pc->history;
+    e->hist_n = e->history ? pc->hist_n : 3;
     /* -compat lammps2021: a trailing slot records LAMMPS's owner of each
      * listed pair (kernels/neighbor.cl, hist_transfer) */
-    int flip_lo = 0, flip_n = 0, lmp2021 = e->history && g->opt.lammps2021 &&
-                                            g->neigh.style == NEIGH_BIN;
-    if (lmp2021 && p->style->lammps2021_flip)
-        flip_n = p->style->lammps2021_flip(p, &flip_lo);
+    int lmp2021 = e->history && g->opt.lammps2021 && g->neigh.style == NEIGH_BIN;
+    int flip_lo = lmp2021 ? pc->flip_lo : 0, flip_n = lmp2021 ? pc->flip_n : 0;
     e->hist_owner = flip_n > 0;
     if (flip_n > 0)
         e->hist_n++;
@@ -312,6 +373,8 @@ void eng_prepare(struct gravel *g)
     const char *names[32], *texts[32];
     int n = 0;
     add_source(g, names, texts, &n, "param_layout.h", "engine");
+    /* each contact law's collision time, shared with the host */
+    add_source(g, names, texts, &n, "collision_time.h", "engine");
     add_source(g, names, texts, &n, "common.cl", "engine");
     /* LAMMPS granular kinematics for the gran pair and wall evaluators:
      * static inline helpers, free in scenes that do not call them */
@@ -322,8 +385,8 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "fused.cl", "engine");
     /* collision-resolution and wall-overlap records (src/accuracy.c) */
     add_source(g, names, texts, &n, "accuracy.cl", "engine");
-    for (int k = 0; p && pair_source(p, k); k++) /* cohesion: one source per fused term */
-        add_source(g, names, texts, &n, pair_source(p, k), p->style->name);
+    for (int k = 0; pc && k < pc->nsources; k++) /* hybrid: one source per fused term */
+        add_source(g, names, texts, &n, pc->sources[k], p->style->name);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         for (int k = 0; k < f->nsources; k++)
@@ -334,30 +397,7 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "box_change.cl", "engine");
 
     char opts[1024];
-    int len = snprintf(opts, sizeof opts, "-D REAL=%s%s%s%s", single ? "float" : "double",
-                       !single ? " -D USE_DOUBLE"
-                       : e->ocl.fp64 ? " -D SPLIT_POS -D HAS_FP64" /* contact_refine in double */
-                                     : " -D SPLIT_POS", e->rotation ? " -D HAS_ROTATION" : "",
-                       e->history ? " -D HAS_HISTORY" : "");
-    if (e->hist_n != 3)
-        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D HIST_N=%d", e->hist_n);
-    if (lmp2021)
-        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D LMP2021");
-    if (flip_n > 0)
-        len += snprintf(opts + len, sizeof opts - (size_t)len,
-                        " -D HIST_OWNER=%d -D HIST_ZERO_N=%d -D HIST_FLIP_LO=%d -D HIST_FLIP_N=%d",
-                        e->hist_n - 1, e->hist_n - 1, flip_lo, flip_n);
-    for (int q = 0; q < 3; q++)
-        if (domain_contact_periodic(g, q))
-            len += snprintf(opts + len, sizeof opts - (size_t)len, " -D PERIODIC_%c", "XYZ"[q]);
-    if (g->dom.triclinic)
-        len += snprintf(opts + len, sizeof opts - (size_t)len, " -D TRICLINIC");
-    if (p) /* cohesion: PAIR_EVAL, or the fused terms of hybrid/overlay */
-        len += pair_defines(p, opts + len, sizeof opts - (size_t)len);
-    for (int i = 0; i < g->styles.nfix && len < (int)sizeof opts; i++)
-        if (g->styles.fix[i]->defines[0])
-            len += snprintf(opts + len, sizeof opts - (size_t)len, " %s",
-                            g->styles.fix[i]->defines);
+    int len = build_options(g, pc, lmp2021, flip_lo, flip_n, opts, sizeof opts);
     if (len >= (int)sizeof opts)
         gr_error(g, "kernel build options too long");
     eng_release_kernels(e);

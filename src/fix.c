@@ -35,6 +35,30 @@ struct fix *fix_find(struct gravel *g, const char *id)
     return NULL;
 }
 
+struct fix *fix_find_acceleration(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->acceleration)
+            return g->styles.fix[i];
+    return NULL;
+}
+
+unsigned fix_frozen_groupbit(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->flags & FIX_FROZEN)
+            return g->styles.fix[i]->groupbit;
+    return 0;
+}
+
+int fix_all_conserving(const struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (!(g->styles.fix[i]->style->flags & FIX_CONSERVING))
+            return 0;
+    return 1;
+}
+
 struct fix *fix_find_style(struct gravel *g, const char *style)
 {
     for (int i = 0; i < g->styles.nfix; i++)

@@ -9,10 +9,16 @@
  *   create()   at the `fix` command: parse and validate the arguments, set
  *              f->hooks (HOOK_* bits), f->needs (NEED_* bits), f->sources
  *              (kernel files the run program must include) and f->defines
- *              (extra -D options). May not touch the device.
- *   init()     at every `run`, after the program is built and the atoms are
- *              on the device: create kernels with eng_kernel(), size per-atom
- *              device state (f->peratom_bytes), check other styles.
+ *              (extra build options, without the leading "-D "). May not
+ *              touch the device.
+ *   init()     at every `run`, after the program is built, the atoms are on
+ *              the device and the pair parameters are packed and uploaded
+ *              (g->eng->pair_param, the pair style's record
+ *              g->styles.pair->caps: src/pair.h): create kernels with
+ *              eng_kernel(), size per-atom device state (f->peratom_bytes),
+ *              check other styles. What the core must know about a style is
+ *              declared in its descriptor (.flags: FIX_*), never found by
+ *              its name.
  *   hooks      called by the run loop in LAMMPS' Verlet order, only for the
  *              bits set in f->hooks:
  *                initial_integrate -> (neighbor) -> pair -> post_force
@@ -67,6 +73,20 @@ enum fix_need {
     NEED_ROTATION = 1 << 0,     /* omega and torque arrays */
 };
 
+/* What a style declares about itself (struct fix_style .flags), read by the
+ * core instead of naming styles:
+ *   FIX_FROZEN       its group is held in place (fix freeze): a contact
+ *                    with a held atom takes the moving atom's mass as m*
+ *                    (LAMMPS pair gran's freeze group); the run uses the
+ *                    first such fix's group (fix_frozen_groupbit).
+ *   FIX_CONSERVING   it only integrates or holds atoms (nve, nve/sphere,
+ *                    freeze): no work on the system, so a scene of such fixes
+ *                    and a conservative pair law reports its energy drift. */
+enum fix_flag {
+    FIX_FROZEN = 1 << 0,
+    FIX_CONSERVING = 1 << 1,
+};
+
 #define FIX_MAX_SOURCES 8
 
 struct fix;
@@ -74,6 +94,7 @@ struct fused_op;
 
 struct fix_style {
     const char *name;
+    unsigned flags;             /* FIX_* (above) */
     void (*create)(struct gravel *g, struct fix *f, int argc, char **argv);
     void (*init)(struct gravel *g, struct fix *f);                 /* optional */
     void (*initial_integrate)(struct gravel *g, struct fix *f);
@@ -109,6 +130,9 @@ struct fix_style {
      * groupbit (LAMMPS Fix::dof, e.g. rigid bodies); temperatures subtract
      * the sum over fixes. */
     double (*dof)(struct gravel *g, struct fix *f, unsigned groupbit);
+    /* Optional: the magnitude of the uniform acceleration this fix applies
+     * to its atoms (fix gravity): the -check accuracy map's free-fall speed. */
+    double (*acceleration)(const struct fix *f);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;
@@ -130,7 +154,8 @@ struct fix {
     unsigned needs;             /* NEED_* */
     int nsources;
     const char *sources[FIX_MAX_SOURCES];   /* kernel file names, e.g. "fix_gravity.cl" */
-    char defines[256];          /* extra build options, e.g. "-D WALL_MODEL=2" */
+    char defines[256];          /* extra build options, each NAME or NAME=VALUE separated by
+                                 * " -D " (the engine adds the first -D), e.g. "VREMAP" */
     void *data;                 /* style state, freed by destroy (or free() if no destroy) */
     /* engine-managed per-atom device state (see header comment) */
     size_t peratom_bytes;
@@ -147,8 +172,15 @@ struct fix {
 
 /* The fix with this ID, or NULL. */
 struct fix *fix_find(struct gravel *g, const char *id);
-/* The first fix of this style name (e.g. "freeze"), or NULL. */
+/* The first fix of this style name (e.g. "gravity"), or NULL. */
 struct fix *fix_find_style(struct gravel *g, const char *style);
+/* The first fix that applies a uniform acceleration (style->acceleration),
+ * or NULL. */
+struct fix *fix_find_acceleration(struct gravel *g);
+/* The group bit of the first FIX_FROZEN fix (0: none). */
+unsigned fix_frozen_groupbit(struct gravel *g);
+/* 1 when every fix is FIX_CONSERVING (none: 1). */
+int fix_all_conserving(const struct gravel *g);
 /* Free every fix (clear/destroy). */
 void fix_free_all(struct gravel *g);
 /* Sum of the scalars of fixes with fix_modify energy yes (not normalized;

@@ -386,8 +386,9 @@ static double lammps2021_cutneighmax(struct gravel *g, double insert_rmax)
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
             if (rt[i] > 0 && rt[j] > 0)
-                cut = fmax(cut, p && p->style->lammps2021_cut
-                                    ? p->style->lammps2021_cut(p, i, j, rt[i], rt[j])
+                cut = fmax(cut, p && p->caps.lammps2021_cut
+                                    ? p->caps.lammps2021_cut(p->caps.cut2021_of, i, j, rt[i],
+                                                             rt[j])
                                     : rt[i] + rt[j]);
     free(rt);
     return cut + g->neigh.skin;
@@ -494,10 +495,10 @@ void nbr_setup(struct gravel *g)
                      pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
     double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
     const struct pair *pp = g->styles.pair;
-    if (pp && pp->style->type_cut)
+    if (pp && pp->caps.type_cut)
         for (int a = 0; a < nt; a++)
             for (int c = 0; c < nt; c++)
-                tc[a * nt + c] = pp->style->type_cut(pp, a + 1, c + 1);
+                tc[a * nt + c] = pp->caps.type_cut(pp->caps.cut_of, a + 1, c + 1);
     rel(&b->typecut);
     b->typecut = eng_alloc(g, (size_t)nt * nt * e->rsz, "type-pair cut-offs");
     eng_write_reals(g, b->typecut, (size_t)nt * nt, tc);
@@ -1220,7 +1221,7 @@ double nbr_max_overlap(struct gravel *g)
     if (!b->built || n == 0)
         return 0;
     /* a potential (pair colloid) has no bodies in contact: radii mean nothing */
-    if (g->styles.pair && g->styles.pair->style->energy)
+    if (g->styles.pair && g->styles.pair->caps.energy)
         return 0;
     int chunk = (n + NCHUNK_MAX - 1) / NCHUNK_MAX;
     int nch = (n + chunk - 1) / chunk;

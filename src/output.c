@@ -162,7 +162,7 @@ static double contact_energy(struct gravel *g)
                         }
                         double rs = a->radius[i] + a->radius[j];
                         if (rsq < rs * rs)
-                            e += p->style->contact_energy(p, rs - sqrt(rsq),
+                            e += p->caps.contact_energy(p->caps.energy_of, rs - sqrt(rsq),
                                                           a->radius[i] * a->radius[j] / rs);
                     }
                 }
@@ -181,15 +181,9 @@ static double contact_energy(struct gravel *g)
 static int conserving_scene(const struct gravel *g)
 {
     const struct pair *p = g->styles.pair;
-    if (!p || !p->style->conservative || !p->style->contact_energy || !p->style->conservative(p) ||
-        g->atoms.n == 0)
+    if (!p || !p->caps.conservative || !p->caps.contact_energy || g->atoms.n == 0)
         return 0;
-    for (int i = 0; i < g->styles.nfix; i++) {
-        const char *n = g->styles.fix[i]->style->name;
-        if (strcmp(n, "nve") && strcmp(n, "nve/sphere") && strcmp(n, "freeze"))
-            return 0;
-    }
-    return 1;
+    return fix_all_conserving(g);
 }
 
 /* Collision time of the lightest particle (as the setup line of run.c). */
@@ -205,8 +199,7 @@ static double scene_collision_time(const struct gravel *g)
         for (int d = 0; d < 3; d++)
             vmax = fmax(vmax, fabs(g->atoms.v[3 * i + d]));
     }
-    return p->style->collision_time ? p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0)
-                                    : NAN;
+    return pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
 }
 
 void output_setup(struct gravel *g)

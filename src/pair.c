@@ -2,6 +2,8 @@
  * `pair_style` and `pair_coeff` commands. */
 #include "pair.h"
 
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -124,10 +126,10 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
     }
     struct pair tmp;
     pair_create(g, &tmp, st, argc - 1, argv + 1);
-    record_style(g, argc, argv, g->styles.pair && g->styles.pair->style == st && !st->source_n);
+    record_style(g, argc, argv, g->styles.pair && g->styles.pair->style == st && !st->terms);
     /* LAMMPS: redefining the same style keeps the coefficients (per-type
      * tables in data included; hybrid/overlay starts afresh) */
-    if (g->styles.pair && g->styles.pair->style == st && !st->source_n) {
+    if (g->styles.pair && g->styles.pair->style == st && !st->terms) {
         tmp.coeff_set = g->styles.pair->coeff_set;
         tmp.setflag = g->styles.pair->setflag;
         tmp.setflag_nt = g->styles.pair->setflag_nt;
@@ -219,6 +221,14 @@ void cmd_pair_coeff(struct gravel *g, int argc, char **argv)
     p->coeff_set = 1;
 }
 
+/* the style has a potential energy (pair_modify shift applies) */
+static int has_energy(const struct pair *p)
+{
+    struct pair_caps c;
+    pair_describe(p, &c);
+    return c.energy != NULL;
+}
+
 /* pair_modify on one style (a plain style or one hybrid/overlay term). */
 static void modify_one(struct gravel *g, struct pair *p, int argc, char **argv)
 {
@@ -241,7 +251,7 @@ static void modify_one(struct gravel *g, struct pair *p, int argc, char **argv)
             } else {
                 p->mix_arithmetic = arith;
             }
-        } else if (!strcmp(k, "shift") && p->style->energy) {
+        } else if (!strcmp(k, "shift") && has_energy(p)) {
             arg_need(g, argc, i, 1, k);
             p->shift = arg_yesno(g, argv[++i], k);
         } else if (!strcmp(k, "shift") || !strcmp(k, "tail")) {
@@ -284,8 +294,8 @@ void cmd_pair_modify(struct gravel *g, int argc, char **argv)
     const struct pair *t[PAIR_MAXTERMS];
     int nt = 1;
     t[0] = p;
-    if (p->style->source_n)
-        nt = pair_hybrid_terms(p, t);
+    if (p->style->terms)
+        nt = p->style->terms(p, t);
     int start = 0;
     if (!strcmp(argv[0], "pair")) {
         arg_need(g, argc, 0, 1, "pair");
@@ -293,7 +303,7 @@ void cmd_pair_modify(struct gravel *g, int argc, char **argv)
         for (int k = 0; k < nt; k++)
             if (!strcmp(t[k]->style->name, argv[1]))
                 pick = t[k];
-        if (!pick || !p->style->source_n)
+        if (!pick || !p->style->terms)
             gr_error(g, "pair %s: not a sub-style of the current pair style %s", argv[1],
                      p->style->name);
         t[0] = pick;
@@ -317,155 +327,57 @@ int pair_first_unset_diag(const unsigned char *flag, int nt)
     return 0;
 }
 
-/* ---- composition helpers: a plain style is one term; hybrid/overlay
- * (styles/pair_hybrid_overlay.c) answers through its source_n/defines hooks
- * and exposes its terms through pair_hybrid_terms(). ---- */
+/* ---- the capabilities record ---- */
 
-static int terms_of(const struct pair *p, const struct pair **t)
+void pair_caps_source(struct pair_caps *c, const char *file)
 {
-    if (p->style->source_n)
-        return pair_hybrid_terms(p, t);
-    t[0] = p;
-    return 1;
+    for (int k = 0; k < c->nsources; k++)
+        if (!strcmp(c->sources[k], file))
+            return;
+    if (c->nsources < PAIR_MAXTERMS + 1)
+        c->sources[c->nsources++] = file;
 }
 
-int pair_needs_rotation(const struct pair *p)
+void pair_caps_define(struct pair_caps *c, const char *name, const char *fmt, ...)
 {
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), r = 0;
-    for (int k = 0; k < n; k++)
-        r |= t[k]->style->rotation;
-    return r;
-}
-
-int pair_needs_history(const struct pair *p)
-{
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), r = 0;
-    for (int k = 0; k < n; k++)
-        r |= t[k]->style->history &&
-             (!t[k]->style->history_size || t[k]->style->history_size(t[k]) > 0);
-    return r;
-}
-
-int pair_history_size(const struct pair *p)
-{
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), w = 3;
-    for (int k = 0; k < n; k++)
-        if (t[k]->style->history && t[k]->style->history_size) {
-            int s = t[k]->style->history_size(t[k]);
-            if (n > 1 && s != 3)
-                return -1; /* hybrid/overlay: every term takes a 3-REAL history */
-            w = s;
-        }
-    return w;
-}
-
-/* the term acts beyond body contact (statically, or for its coefficients) */
-static int beyond(const struct pair *t)
-{
-    return t->style->beyond_contact || (t->style->beyond && t->style->beyond(t));
-}
-
-int pair_has_cohesion(const struct pair *p)
-{
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), r = 0;
-    for (int k = 0; k < n; k++)
-        r |= beyond(t[k]);
-    return r;
-}
-
-double pair_reach(const struct gravel *g, double radsum)
-{
-    const struct pair *p = g->styles.pair;
-    double reach = radsum;
-    if (!p)
-        return reach;
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t);
-    for (int k = 0; k < n; k++)
-        if (beyond(t[k]) && t[k]->style->reach) {
-            double r = t[k]->style->reach(t[k], radsum);
-            if (r > reach)
-                reach = r;
-        }
-    return reach;
-}
-
-double pair_type_cut_max(const struct gravel *g, unsigned imask, unsigned jmask)
-{
-    const struct pair *p = g->styles.pair;
-    double m = 0.0;
-    if (!p)
-        return m;
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t), nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
-    for (int k = 0; k < n; k++)
-        if (t[k]->style->type_cut)
-            for (int a = 1; a <= nt; a++)
-                for (int b = 1; b <= nt; b++) {
-                    if (a <= 32 && !(imask >> (a - 1) & 1u))
-                        continue;
-                    if (b <= 32 && !(jmask >> (b - 1) & 1u))
-                        continue;
-                    double c = t[k]->style->type_cut(t[k], a, b);
-                    m = c > m ? c : m;
-                }
-    return m;
-}
-
-const char *pair_source(const struct pair *p, int k)
-{
-    if (p->style->source_n)
-        return p->style->source_n(p, k);
-    return k == 0 ? p->style->source : NULL;
-}
-
-int pair_cohesion_defines(const struct pair *p, char *buf, size_t len)
-{
-    const struct pair *t[PAIR_MAXTERMS];
-    int n = terms_of(p, t);
-    double a = 0, b = 0;
-    int any = 0, typecut = 0;
-    for (int k = 0; k < n; k++) {
-        if (beyond(t[k]))
-            any = 1;
-        if (t[k]->style->type_cut)
-            typecut = 1;
-        if (beyond(t[k]) && t[k]->style->reach) {
-            double a0 = t[k]->style->reach(t[k], 0.0);
-            double b0 = t[k]->style->reach(t[k], 1.0) - a0;
-            a = a0 > a ? a0 : a;
-            b = b0 > b ? b0 : b;
-        }
+    if (c->ndef >= PAIR_MAXDEF)
+        return; /* pair_setup reports the overflow */
+    struct pair_def *d = &c->def[c->ndef++];
+    snprintf(d->name, sizeof d->name, "%s", name);
+    d->value[0] = 0;
+    if (fmt) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(d->value, sizeof d->value, fmt, ap);
+        va_end(ap);
     }
-    if (!any)
-        return 0;
-    return snprintf(buf, len, " -D HAS_COHESION -D COH_REACH_A=%.17g -D COH_REACH_B=%.17g%s", a,
-                    b, typecut ? " -D PAIR_TYPECUT" : "");
 }
 
-int pair_defines(const struct pair *p, char *buf, size_t len)
+void pair_caps_reach(struct pair_caps *c, double a, double b)
 {
-    if (p->style->defines)
-        return p->style->defines(p, buf, len);
-    int n = snprintf(buf, len, " -D PAIR_EVAL=%s%s", p->style->eval,
-                     p->style->approach ? " -D PAIR_APPROACH" : "");
-    if (p->style->energy && n >= 0 && (size_t)n < len)
-        n += snprintf(buf + n, len - (size_t)n, " -D PAIR_ENERGY=%s", p->style->energy);
-    if (n >= 0 && (size_t)n < len)
-        n += pair_cohesion_defines(p, buf + n, len - (size_t)n);
-    return n;
+    if (c->nreach < PAIR_MAXTERMS) {
+        c->reach_a[c->nreach] = a;
+        c->reach_b[c->nreach] = b;
+        c->nreach++;
+    }
 }
 
-void pair_prepare(struct gravel *g)
+void pair_describe(const struct pair *p, struct pair_caps *c)
+{
+    memset(c, 0, sizeof *c);
+    c->nparam = p->style->nparam;
+    c->hist_n = 3;
+    p->style->describe(p, c);
+}
+
+void pair_setup(struct gravel *g)
 {
     struct pair *p = g->styles.pair;
+    if (!p)
+        return;
     /* LAMMPS Pair::init: every I I must have been named by a pair_coeff
      * (cross pairs of these styles share the pair_style parameters) */
-    if (p && !p->style->coeff && p->setflag) {
+    if (!p->style->coeff && p->setflag) {
         int nt = g->atoms.ntypes, i = pair_first_unset_diag(p->setflag, p->setflag_nt);
         if (p->setflag_nt != nt)
             gr_error(g, "pair style %s: pair_coeff was given for %d atom types, the box has "
@@ -474,6 +386,65 @@ void pair_prepare(struct gravel *g)
             gr_error(g, "all pair coeffs are not set: no pair_coeff for types %d %d of pair "
                         "style %s (e.g. pair_coeff * *)", i, i, p->style->name);
     }
-    if (p && p->style->init)
+    if (p->style->init)
         p->style->init(g, p);
+    pair_describe(p, &p->caps);
+    if (p->caps.ndef >= PAIR_MAXDEF)
+        gr_error(g, "pair style %s: too many build options", p->style->name);
+    if (p->caps.hist_n < 0)
+        gr_error(g, "pair style %s: every composed term must keep a 3-REAL contact history",
+                 p->style->name);
+}
+
+double *pair_pack(struct gravel *g, int *ntypes)
+{
+    const struct pair *p = g->styles.pair;
+    if (!p->coeff_set)
+        gr_error(g, "all pair coeffs are not set (pair_coeff * * is missing for pair style %s)",
+                 p->style->name);
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1, np = p->caps.nparam;
+    double *par = gr_calloc(g, (size_t)nt * nt * np, sizeof(double));
+    for (int i = 1; i <= nt; i++)
+        for (int j = 1; j <= nt; j++)
+            p->style->pack(p, i, j, par + ((size_t)(i - 1) * nt + (j - 1)) * np);
+    *ntypes = nt;
+    return par;
+}
+
+double pair_reach(const struct gravel *g, double radsum)
+{
+    const struct pair *p = g->styles.pair;
+    double reach = radsum;
+    if (!p)
+        return reach;
+    for (int k = 0; k < p->caps.nreach; k++) {
+        double r = p->caps.reach_a[k] + p->caps.reach_b[k] * radsum;
+        if (r > reach)
+            reach = r;
+    }
+    return reach;
+}
+
+double pair_type_cut_max(const struct gravel *g, unsigned imask, unsigned jmask)
+{
+    const struct pair *p = g->styles.pair;
+    double m = 0.0;
+    if (!p || !p->caps.type_cut)
+        return m;
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    for (int a = 1; a <= nt; a++)
+        for (int b = 1; b <= nt; b++) {
+            if (a <= 32 && !(imask >> (a - 1) & 1u))
+                continue;
+            if (b <= 32 && !(jmask >> (b - 1) & 1u))
+                continue;
+            double c = p->caps.type_cut(p->caps.cut_of, a, b);
+            m = c > m ? c : m;
+        }
+    return m;
+}
+
+double pair_collision_time(const struct pair_caps *c, double m, double r, double vn)
+{
+    return c->collision_time ? c->collision_time(c->tcol_of, m, r, vn) : NAN;
 }

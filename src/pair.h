@@ -1,10 +1,13 @@
 /* pair.h - pair styles: the contact law between two particles in contact.
  *
- * A style is a descriptor (struct pair_style) in styles/pair_<ident>.c and a
- * pure evaluator in kernels/pair_<ident>.cl:
+ * A style is a descriptor (struct pair_style) in styles/pair_<ident>.c, one
+ * PAIR(keyword, ident) row in styles/styles.def, and a pure evaluator in
+ * kernels/pair_<ident>.cl:
  *
  *   void <ident>_eval(const struct contact *c, __global const REAL *param,
  *                     REAL3 *shear, REAL3 *force_i, REAL3 *torque_i);
+ *   REAL <ident>_eval_tcol(const struct contact *c, __global const REAL *param,
+ *                          REAL vn);      (collision time, see below)
  *
  * struct contact (kernels/common.cl) carries del = x_i - x_j, rsq, radii,
  * radsum, reff = radi radj / radsum, vr = v_i - v_j, omega_i, omega_j, meff,
@@ -12,8 +15,17 @@
  * torque on i; it must be exactly antisymmetric under i <-> j so that the
  * force on j (computed by j's own loop) is exactly minus the force on i.
  * `param` points at this type pair's `nparam` packed REALs, produced by
- * pack() on the host. fix wall/gran calls the same evaluators with the wall as
+ * pack() on the host (layout: an enum in kernels/param_layout.h). fix
+ * wall/gran and fix wall/pair call the same evaluators with the wall as
  * particle j (radj = 0, radsum = reff = radi, omj = 0, meff = m_i).
+ *
+ * Life cycle: settings() at pair_style, coeff() at pair_coeff; at every run
+ * start pair_setup() calls init() (check, mix) and then describe(), which
+ * fills the style's capabilities record (struct pair_caps below: rotation,
+ * history width, reach and cut-offs, approach, energy, kernel sources, build
+ * options, collision time); pair_pack() then packs the parameters, before
+ * the fixes initialise. The core reads the record only; it never calls
+ * another style hook and never names a style.
  *
  * One shared neighbor-loop kernel (kernels/pair_loop.cl) calls PAIR_EVAL. */
 #ifndef GR_PAIR_H
@@ -27,39 +39,85 @@
 
 struct pair;
 
+/* ---- the capabilities record: what a style answers at run set-up --------
+ *
+ * Every question the core asks a pair style is answered ONCE per run, in
+ * one call: pair_setup() (run start, src/engine.c) runs the style's init(),
+ * then its describe(), which fills this record; the core (engine, neighbor,
+ * run, output, walls) reads only the record and never calls a style hook or
+ * names a style. hybrid and hybrid/overlay describe each term and merge the
+ * terms' records in their own describe(). Fields a style leaves alone stay
+ * 0 / NULL, which always means "no".
+ *
+ * The run program: the engine includes `sources` and assembles every build
+ * option in one place (eng_prepare): PAIR_EVAL=eval or PAIR_EVAL_ROW=eval_row,
+ * PAIR_APPROACH, PAIR_ENERGY=energy, the style's own `def` entries (sub-model
+ * switches, composed terms) in order, then HAS_COHESION with COH_REACH_A/B
+ * (the largest reach terms) and PAIR_TYPECUT.
+ *
+ * The collision time (contract): collision_time(tcol_of, m, r, vn) is the
+ * duration of a head-on collision of two equal particles of mass m and
+ * radius r (m* = m/2, R* = r/2) approaching at normal speed vn (0: the law's
+ * own fallback), INFINITY when there is none (overdamped, no stiffness); it
+ * sizes the run-start time-step report, the -check accuracy map and the
+ * energy-drift footer. Each law's formula exists once, as a pure function of
+ * (law coefficients, m*, R*, vn) in kernels/collision_time.h, which the host
+ * includes and the engine prepends to every program; the law's kernel
+ * <eval>_tcol(c, param, vn) (the accuracy records, kernels/accuracy.cl)
+ * calls the same function with the contact's m*, R* and speed. */
+#define PAIR_MAXDEF 24
+
+struct pair_caps {
+    int nparam;                 /* packed REALs per type pair */
+    /* ---- the run program ---- */
+    int nsources;               /* kernel sources, in order */
+    const char *sources[PAIR_MAXTERMS + 1];
+    const char *eval;           /* 3-vector evaluator (PAIR_EVAL), or NULL */
+    const char *eval_row;       /* history-row evaluator (PAIR_EVAL_ROW, pair granular) */
+    int approach;               /* also takes pairs one drift from contact (PAIR_APPROACH;
+                                 * linear/restitution, kernels/contact_normal.cl) */
+    const char *energy;         /* potential energy function REAL f(REAL rsq, param), 0 at
+                                 * and beyond the cut-off (pair colloid; src/pair_energy.c);
+                                 * NULL: contact forces only */
+    int ndef;                   /* the style's own build options, NAME or NAME=VALUE */
+    struct pair_def {
+        char name[32];
+        char value[40];
+    } def[PAIR_MAXDEF];
+    /* ---- state the run keeps ---- */
+    int rotation;               /* needs omega and torque */
+    int history;                /* keeps per-contact history ... */
+    int hist_n;                 /* ... of hist_n REAL (3 when none; at most GR_HIST_MAX) */
+    int flip_lo, flip_n;        /* history slots [flip_lo, flip_lo + flip_n) that LAMMPS
+                                 * 2021 negates when a pair changes owner at a rebuild
+                                 * although they are symmetric (pair granular: rolling,
+                                 * twisting); gravel keeps them unless -compat lammps2021 */
+    /* ---- reach ---- */
+    int beyond;                 /* some term acts beyond body contact (cohesion, JKR,
+                                 * colloid): the loop hands it every listed pair */
+    int nreach;                 /* reach bounds A + B radsum of such terms: the largest */
+    double reach_a[PAIR_MAXTERMS], reach_b[PAIR_MAXTERMS]; /* centre distance they act at */
+    const struct pair *cut_of;  /* per-type-pair cut-off (a potential, pair colloid): */
+    double (*type_cut)(const struct pair *p, int itype, int jtype); /* type_cut(cut_of,..) */
+    /* LAMMPS 2021's init_one cut-off of type pair (i, j) whose largest radii
+     * are ri, rj (-compat lammps2021 neighbor bins); NULL: ri + rj */
+    double (*lammps2021_cut)(const struct pair *p, int i, int j, double ri, double rj);
+    const struct pair *cut2021_of;
+    /* ---- diagnostics ---- */
+    const struct pair *tcol_of; /* the contact law's term (hybrid: the first with one) */
+    double (*collision_time)(const struct pair *p, double m, double r, double vn);
+    int conservative;           /* these coefficients conserve energy (elastic normal law,
+                                 * no friction or damping): the footer reports the drift */
+    const struct pair *energy_of; /* elastic energy of a contact of overlap delta > 0 */
+    double (*contact_energy)(const struct pair *p, double delta, double reff);
+};
+
+/* A style's descriptor: lifecycle hooks plus ONE description call. */
 struct pair_style {
     const char *name;           /* "gran/hooke/history" */
-    const char *source;         /* "pair_gran_hooke_history.cl" */
-    const char *eval;           /* evaluator function, "gran_hooke_history_eval" */
-    int history;                /* needs per-contact shear history (3 REAL / contact) */
-    int rotation;               /* needs omega and torque */
     int nparam;                 /* packed REALs per type pair */
     /* pair_style arguments (after the style name). */
     void (*settings)(struct gravel *g, struct pair *p, int argc, char **argv);
-    /* Fill param[0..nparam) for type pair (i, j) from p->coef. */
-    void (*pack)(const struct pair *p, int itype, int jtype, double *param);
-    /* Estimated duration of a binary collision of two particles of mass m and
-     * radius r approaching at speed vn (for time-step diagnostics). */
-    double (*collision_time)(const struct pair *p, double m, double r, double vn);
-    /* 1 when these coefficients conserve energy: elastic normal law, no
-     * friction or damping (the run footer then reports the energy drift).
-     * NULL: never. */
-    int (*conservative)(const struct pair *p);
-    /* Elastic energy of a contact of overlap delta > 0 and R* = reff (with it). */
-    double (*contact_energy)(const struct pair *p, double delta, double reff);
-    /* ---- composition and cohesion (cohesion helper; all optional) ---- */
-    /* Acts beyond body contact (cohesion): the loop hands it every listed
-     * pair and the evaluator gates itself; the neighbor cut-off grows to
-     * reach(). Contact styles (0) are called only for touching pairs. */
-    int beyond_contact;
-    /* 1: the evaluator also takes pairs (and plane and cylinder wall
-     * elements) apart that one drift at their normal rate brings into or
-     * out of contact, with c->approach set (build option PAIR_APPROACH;
-     * linear/restitution's exact two-body impulse, kernels/contact_normal.cl). */
-    int approach;
-    /* Largest centre distance at which this style acts, for a pair of radius
-     * sum `radsum`: an affine upper bound A + B radsum over all type pairs. */
-    double (*reach)(const struct pair *p, double radsum);
     /* `pair_coeff I J args...` for types ilo..ihi x jlo..jhi, LAMMPS's
      * semantics: set the pairs (I, J) with I in ilo..ihi, J in
      * max(jlo, I)..jhi (so I <= J; pair.c has swapped `pair_coeff 2 1` and
@@ -69,36 +127,19 @@ struct pair_style {
      * (every I I must be, at run, as LAMMPS requires). */
     void (*coeff)(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
                   int argc, char **argv);
-    /* Run start: validate coefficients, mix cross terms (before pack). */
+    /* Run start: validate coefficients, mix cross terms (before describe and pack). */
     void (*init)(struct gravel *g, struct pair *p);
-    /* hybrid/overlay: source files and build options of the composed terms. */
-    const char *(*source_n)(const struct pair *p, int k);
-    int (*defines)(const struct pair *p, char *buf, size_t len);
-    /* REALs of contact history per contact when history is set (NULL: 3);
-     * at most GR_HIST_MAX. pair granular sizes it from the sub-models. */
-    int (*history_size)(const struct pair *p);
-    /* Acts beyond body contact for these coefficients (JKR of pair granular):
-     * as beyond_contact, decided at run start (after init). NULL: never. */
-    int (*beyond)(const struct pair *p);
-    /* History slots [*first, *first + return) that LAMMPS 2021 negates when a
-     * pair changes owner at a rebuild although they are symmetric in the two
-     * atoms (pair granular: rolling and twisting); gravel keeps them unless
-     * run with -compat lammps2021. NULL or 0: none. */
-    int (*lammps2021_flip)(const struct pair *p, int *first);
-    /* LAMMPS 2021's init_one cut-off of type pair (i, j) whose largest radii
-     * are ri, rj (its neighbor bins follow from it). NULL: ri + rj. */
-    double (*lammps2021_cut)(const struct pair *p, int i, int j, double ri, double rj);
+    /* Fill the capabilities record (above) for these coefficients; c arrives
+     * zeroed with c->nparam set. Also called before init() by the -check
+     * accuracy map, for the collision time only. */
+    void (*describe)(const struct pair *p, struct pair_caps *c);
+    /* Fill param[0..nparam) for type pair (i, j) from p->coef. */
+    void (*pack)(const struct pair *p, int itype, int jtype, double *param);
+    /* hybrid, hybrid/overlay: the composed terms (pair_modify pair SUBSTYLE);
+     * NULL for a single law. */
+    int (*terms)(const struct pair *p, const struct pair **terms);
     /* Release p->data. */
     void (*destroy)(struct pair *p);
-    /* A potential (pair colloid): the kernel function returning the pair
-     * energy REAL f(REAL rsq, __global const REAL *param), 0 at and beyond
-     * the cut-off (thermo epair, pe, etotal: src/pair_energy.c). NULL: the
-     * style has no potential energy (granular contacts). */
-    const char *energy;
-    /* Cut-off of the type pair (a potential with per-type cut-offs, pair
-     * colloid): the neighbor list then holds pairs within it plus the skin,
-     * whatever the radii (after init). NULL: the radii decide. */
-    double (*type_cut)(const struct pair *p, int itype, int jtype);
 };
 
 struct pair {
@@ -112,6 +153,7 @@ struct pair {
     int mix_arithmetic;         /* pair_modify mix arithmetic (styles that mix) */
     int shift;                  /* pair_modify shift yes (styles with an energy) */
     void *data;                 /* style-owned (per-type tables, composed terms) */
+    struct pair_caps caps;      /* pair_setup(): the run's capabilities record */
 };
 
 void pair_free(struct gravel *g);
@@ -130,35 +172,44 @@ void pair_create(struct gravel *g, struct pair *p, const struct pair_style *st, 
                  char **argv);
 /* Release a pair's style data (not the struct itself). */
 void pair_release(struct pair *p);
-/* What the run needs from the pair style(s): rotation, contact history, a
- * term that acts beyond body contact (cohesion: HAS_COHESION). */
-int pair_needs_rotation(const struct pair *p);
-int pair_needs_history(const struct pair *p);
-/* REALs of history per contact (3 unless a style sizes it). */
-int pair_history_size(const struct pair *p);
-int pair_has_cohesion(const struct pair *p);
+
+/* ---- the core's interface: set-up, then the record ---- */
+/* Run start (eng_prepare): check that every I I was named, run the style's
+ * init(), then fill g->styles.pair->caps through its describe(). */
+void pair_setup(struct gravel *g);
+/* The record of p as it stands (describe() alone, no init): the -check
+ * accuracy map asks for the collision time before any run. */
+void pair_describe(const struct pair *p, struct pair_caps *c);
+/* The packed parameters of every type pair (nt x nt blocks of caps.nparam,
+ * row-major in (I, J)), malloc'd; errors when no pair_coeff was given. Run
+ * start, after pair_setup and before the fixes initialise. */
+double *pair_pack(struct gravel *g, int *ntypes);
 /* Neighbor cut-off without skin for a pair of radius sum `radsum`: radsum
- * unless a cohesion term reaches farther. */
+ * unless a term reaches farther (caps.reach_*). */
 double pair_reach(const struct gravel *g, double radsum);
-/* The largest type-pair cut-off of the pair style(s) between types of the
- * masks (bit t-1 = type t; ~0u: every type), 0 when none has type_cut. */
+/* The largest type-pair cut-off (caps.type_cut) between types of the masks
+ * (bit t-1 = type t; ~0u: every type), 0 when the style has none. */
 double pair_type_cut_max(const struct gravel *g, unsigned imask, unsigned jmask);
-/* k-th kernel source of the pair style (NULL past the last). */
-const char *pair_source(const struct pair *p, int k);
-/* " -D HAS_COHESION -D COH_REACH_A=.. -D COH_REACH_B=.." when a term acts
- * beyond contact (else nothing); returns the length written. */
-int pair_cohesion_defines(const struct pair *p, char *buf, size_t len);
-/* Append the pair's build options (" -D PAIR_EVAL=..." ...) to buf. */
-int pair_defines(const struct pair *p, char *buf, size_t len);
-/* Run start: validate and mix coefficients (style init). */
-void pair_prepare(struct gravel *g);
-/* The composed terms of a hybrid/overlay pair (styles/pair_hybrid_overlay.c). */
-int pair_hybrid_terms(const struct pair *p, const struct pair **terms);
+/* caps.collision_time at (m, r, vn), or NAN when the style has none. */
+double pair_collision_time(const struct pair_caps *c, double m, double r, double vn);
+
+/* ---- for describe() and composed styles ---- */
+/* Append a kernel source (once). */
+void pair_caps_source(struct pair_caps *c, const char *file);
+/* Append the build option NAME (value NULL) or NAME=value (printf format). */
+void pair_caps_define(struct pair_caps *c, const char *name, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* Record a reach bound A + B radsum of a term that acts beyond contact. */
+void pair_caps_reach(struct pair_caps *c, double a, double b);
 
 /* Shared by the three gran styles (pair_gran_common.c in styles/):
  * `Kn Kt gamman gammat xmu dampflag [limit_damping]` with LAMMPS defaults. */
 void pair_gran_settings(struct gravel *g, struct pair *p, int argc, char **argv);
 void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param);
+/* Their record: kernel source, evaluator, history (0/1); rotation, the
+ * collision time, energy conservation and the elastic energy. */
+void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
+                        const char *eval, int history);
 
 /* Index of packed gran parameters (GRAN_*): kernels/param_layout.h, shared
  * with the kernels. */

@@ -32,7 +32,7 @@ double pair_energy(struct gravel *g)
     eng_arg_mem(g, k, a++, e->a.type);
     eng_arg_mem(g, k, a++, e->pair_param);
     eng_arg_int(g, k, a++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
-    eng_arg_int(g, k, a++, g->styles.pair->style->nparam);
+    eng_arg_int(g, k, a++, g->styles.pair->caps.nparam);
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, out);
     eng_launch(g, k, (size_t)n);

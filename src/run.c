@@ -90,13 +90,37 @@ static void timers_total(const struct run_timers *t, double loop, double *out)
             out[p] *= avail / busy;
 }
 
-/* Pack and upload the per-type-pair parameters; create the pair kernels. */
+/* Pack and upload the per-type-pair parameters; create the pair kernels.
+ * Before the fixes initialise: a fix that uses the pair law (fix wall/pair)
+ * takes the parameter buffer in its init. */
 static void pair_init(struct gravel *g)
 {
     struct engine *e = g->eng;
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
+    e->k_pair = e->k_virial = e->k_energy = NULL;
+    if (e->pair_param)
+        clReleaseMemObject(e->pair_param);
+    e->pair_param = NULL;
+    if (!p)
+        return;
+    int nt, np = p->caps.nparam;
+    double *par = pair_pack(g, &nt);
+    e->pair_param = eng_alloc(g, (size_t)nt * nt * np * e->rsz, "pair parameters");
+    eng_write_reals(g, e->pair_param, (size_t)nt * nt * np, par);
+    free(par);
+    e->k_pair = eng_kernel(g, "pair_contacts");
+    e->k_virial = eng_kernel(g, "pair_virial");
+    if (p->caps.energy)
+        e->k_energy = eng_kernel(g, "pair_energy");
+}
+
+/* The box-deformation kernels and rates: after the fixes initialise (a
+ * deforming fix's init sets the rates and the remap group). */
+static void box_init(struct gravel *g)
+{
+    struct engine *e = g->eng;
     e->k_box_remap = eng_kernel(g, "box_remap");
     e->k_box_flip = eng_kernel(g, "box_image_flip");
     e->virial_snap_step = e->epair_snap_step = -1;
@@ -104,28 +128,6 @@ static void pair_init(struct gravel *g)
         e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");
     eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
     e->vgroup = g->dom.vremap_group;
-    e->k_pair = e->k_virial = e->k_energy = NULL;
-    if (!p)
-        return;
-    if (!p->coeff_set)
-        gr_error(g, "all pair coeffs are not set (pair_coeff * * is missing for pair style %s)",
-                 p->style->name);
-    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1, np = p->style->nparam;
-    double *par = gr_calloc(g, (size_t)nt * nt * np, sizeof(double));
-    for (int i = 1; i <= nt; i++)
-        for (int j = 1; j <= nt; j++)
-            p->style->pack(p, i, j, par + ((size_t)(i - 1) * nt + (j - 1)) * np);
-    if (e->pair_param)
-        clReleaseMemObject(e->pair_param);
-    e->pair_param = NULL;
-    e->pair_param = eng_alloc(g, (size_t)nt * nt * np * e->rsz, "pair parameters");
-    struct gravel *gg = g;
-    eng_write_reals(gg, e->pair_param, (size_t)nt * nt * np, par);
-    free(par);
-    e->k_pair = eng_kernel(g, "pair_contacts");
-    e->k_virial = eng_kernel(g, "pair_virial");
-    if (p->style->energy)
-        e->k_energy = eng_kernel(g, "pair_energy");
 }
 
 /* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
@@ -240,7 +242,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         eng_arg_mem(g, k, i++, e->history ? l->shear : l->ci);
         eng_arg_mem(g, k, i++, e->pair_param);
         eng_arg_int(g, k, i++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
-        eng_arg_int(g, k, i++, g->styles.pair->style->nparam);
+        eng_arg_int(g, k, i++, g->styles.pair->caps.nparam);
         eng_arg_uint(g, k, i++, freezebit);
         eng_arg_real(g, k, i++, g->dt);
         eng_arg_int(g, k, i++, e->setup ? 0 : 1);
@@ -301,7 +303,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
 static void timestep_report(struct gravel *g, int force)
 {
     const struct pair *p = g->styles.pair;
-    if (!p || !p->style->collision_time || g->atoms.n == 0)
+    if (!p || !p->caps.collision_time || g->atoms.n == 0)
         return;
     double m = INFINITY, r = 0, vmax = 0;
     for (int i = 0; i < g->atoms.n; i++) {
@@ -312,7 +314,7 @@ static void timestep_report(struct gravel *g, int force)
         for (int d = 0; d < 3; d++)
             vmax = fmax(vmax, fabs(g->atoms.v[3 * i + d]));
     }
-    double tc = p->style->collision_time(p, m, r, vmax > 0 ? 2 * vmax : 0);
+    double tc = pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
     if (!isfinite(tc)) {
         gr_print(g, "Contact model %s: overdamped or zero stiffness, no collision time\n",
                  p->style->name);
@@ -387,18 +389,18 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     g->laststep = g->step + nsteps;
     memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
     g->dom.vremap_group = 0;
+    pair_init(g); /* the pair parameters first: fixes may use them in init */
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)
             f->style->init(g, f);
     }
     eng_fix_state(g, 1); /* fixes may have declared per-atom state in init */
-    pair_init(g);
+    box_init(g);
     nbr_setup(g);
     fused_setup(g);
     build_hook_lists(g);
-    struct fix *fz = fix_find_style(g, "freeze");
-    unsigned freezebit = fz ? fz->groupbit : 0;
+    unsigned freezebit = fix_frozen_groupbit(g);
     timestep_report(g, force);
     precision_report(g);
     acc_begin(g, force); /* collision resolution of the contacts that happen */

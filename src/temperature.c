@@ -58,6 +58,15 @@ void temp_setup(struct gravel *g, struct temp_state *t)
     t->dof_valid = 1;
 }
 
+/* some fix removes degrees of freedom (fix rigid/small's bodies) */
+static int removes_dof(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->dof)
+            return 1;
+    return 0;
+}
+
 /* LAMMPS raises a negative count when the temperature is evaluated, not
  * when it is set up (a deck whose thermo never reads it runs) */
 double temp_dof(struct gravel *g, struct temp_state *t)
@@ -68,7 +77,7 @@ double temp_dof(struct gravel *g, struct temp_state *t)
     if (t->dof < 0 && t->dof_natoms > 0)
         gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g%s)",
                  t->dof_natoms, t->extra_set ? t->extra_dof : g->dom.dimension,
-                 fix_find_style(g, "rigid/small") ? ", rigid bodies" : "");
+                 removes_dof(g) ? ", rigid bodies" : "");
     return t->dof;
 }
 

@@ -46,7 +46,7 @@ int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     eng_arg_mem(g, k, i++, law->param);
     eng_arg_int(g, k, i++, nt);
-    eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->style->nparam : 0);
+    eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->caps.nparam : 0);
     eng_arg_int(g, k, i++, law->by_type);
     return i;
 }

@@ -22,7 +22,7 @@ void cmd_write_coeff(struct gravel *g, int argc, char **argv)
     (void)argc;
     domain_require_box(g);
     if (g->styles.pair)
-        pair_prepare(g);
+        pair_setup(g);
     FILE *fp = fopen(argv[0], "w");
     if (!fp)
         gr_error(g, "cannot open coeff file '%s': %s", argv[0], strerror(errno));

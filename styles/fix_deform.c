@@ -261,7 +261,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->time_depend = 1;
     f->force_reneighbor = 1;
     if (d->remap == REMAP_V)
-        snprintf(f->defines, sizeof f->defines, "-D VREMAP");
+        snprintf(f->defines, sizeof f->defines, "VREMAP");
 }
 
 static void init(struct gravel *g, struct fix *f)

@@ -109,6 +109,7 @@ static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op 
 
 const struct fix_style fix_style_freeze = {
     .name = "freeze",
+    .flags = FIX_FROZEN | FIX_CONSERVING,
     .create = create,
     .init = init,
     .post_force = post_force,

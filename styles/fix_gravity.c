@@ -129,7 +129,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 }
 
 /* |acceleration| of a fix gravity (the accuracy map's free-fall speed). */
-double fix_gravity_magnitude(const struct fix *f)
+static double magnitude(const struct fix *f)
 {
     const struct grav *gr = f->data;
     return sqrt(gr->acc[0] * gr->acc[0] + gr->acc[1] * gr->acc[1] + gr->acc[2] * gr->acc[2]);
@@ -190,6 +190,7 @@ static double scalar(struct gravel *g, struct fix *f)
 
 const struct fix_style fix_style_gravity = {
     .name = "gravity",
+    .acceleration = magnitude,
     .create = create,
     .init = init,
     .post_force = post_force,

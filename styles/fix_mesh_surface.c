@@ -220,7 +220,7 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
         reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
     /* a pair style that takes contacts one drift away (linear/restitution)
      * needs the triangles within the skin of the atom's bin too */
-    if (g->styles.pair && g->styles.pair->style->approach)
+    if (g->styles.pair && g->styles.pair->caps.approach)
         reach += g->neigh.skin;
     reach *= 1.0 + 1e-6;
     char who[GR_NAMELEN + 32];

@@ -113,6 +113,7 @@ static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op 
 
 const struct fix_style fix_style_nve_sphere = {
     .name = "nve/sphere",
+    .flags = FIX_CONSERVING,
     .create = create,
     .init = init,
     .initial_integrate = initial_integrate,

@@ -80,7 +80,7 @@ static void init(struct gravel *g, struct fix *f)
         gr_error(g, "fix %s wall/pair needs a pair style: the wall uses its contact law",
                  f->id);
     w->law.kernel = eng_kernel(g, w->mesh.n ? "mesh_pair" : "wall_pair");
-    w->law.param = g->eng->pair_param;
+    w->law.param = g->eng->pair_param; /* packed for this run before the fixes' init */
     w->law.by_type = 1;
     w->law.history = g->eng->history ? 3 : 0;
     w->law.inclusive = 0;
@@ -93,7 +93,6 @@ static void init(struct gravel *g, struct fix *f)
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wallp *w = f->data;
-    w->law.param = g->eng->pair_param; /* re-packed at every run */
     if (w->mesh.n)
         mesh_walls_apply(g, f, &w->mesh, &w->law, 1);
     else

@@ -179,12 +179,13 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
     param[COH_BJ] = c->b[ji];
 }
 
-/* Affine bound A + B radsum over all type pairs of the effect distance. */
-static double reach(const struct pair *p, double radsum)
+/* Affine bound A + B radsum over all type pairs of the effect distance
+ * (left alone before pair_coeff). */
+static void reach_bound(const struct pair *p, double *ra, double *rb)
 {
     const struct coh *c = p->data;
     if (!c)
-        return radsum;
+        return;
     double a = 0, b = 0;
     int nt = c->nt;
     for (int I = 0; I < nt; I++)
@@ -193,7 +194,8 @@ static double reach(const struct pair *p, double radsum)
             a = s > a ? s : a;
             b = c->b[(size_t)I * nt + J] > b ? c->b[(size_t)I * nt + J] : b;
         }
-    return a + b * radsum;
+    *ra = a;
+    *rb = b;
 }
 
 double pair_cohesion_effect_distance(const struct pair *p, int itype, int jtype, double radi,
@@ -207,18 +209,23 @@ double pair_cohesion_effect_distance(const struct pair *p, int itype, int jtype,
     return (c->a[ij] + c->b[ij] * radi) + (c->a[ji] + c->b[ji] * radj);
 }
 
+/* acts beyond contact up to its effect distance; no collision of its own */
+static void describe(const struct pair *p, struct pair_caps *c)
+{
+    pair_caps_source(c, "pair_cohesion.cl");
+    c->eval = "cohesion_eval";
+    c->beyond = 1;
+    double a = 0, b = 1; /* no tables yet: the contact distance */
+    reach_bound(p, &a, &b);
+    pair_caps_reach(c, a, b);
+}
+
 const struct pair_style pair_style_cohesion = {
     .name = "cohesion",
-    .source = "pair_cohesion.cl",
-    .eval = "cohesion_eval",
-    .history = 0,
-    .rotation = 0,
     .nparam = COH_NPARAM,
     .settings = settings,
     .pack = pack,
-    .collision_time = NULL,
-    .beyond_contact = 1,
-    .reach = reach,
+    .describe = describe,
     .coeff = coeff,
     .init = init,
     .destroy = destroy,

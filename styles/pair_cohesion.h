@@ -13,7 +13,7 @@ struct fix;
 
 /* Centre distance at which the effect surfaces of an I-J pair with body radii
  * radi, radj touch; *kc (if not NULL) receives the pair's stiffness. The
- * coefficients must have been prepared (pair_prepare). */
+ * coefficients must have been prepared (pair_setup). */
 double pair_cohesion_effect_distance(const struct pair *p, int itype, int jtype, double radi,
                                      double radj, double *kc);
 

@@ -30,8 +30,8 @@ static const struct pair *linear_contact(const struct gravel *g)
     const struct pair *p = g->styles.pair, *t[PAIR_MAXTERMS];
     int n = 1;
     t[0] = p;
-    if (p->style->source_n)
-        n = pair_hybrid_terms(p, t);
+    if (p->style->terms)
+        n = p->style->terms(p, t);
     for (int k = 0; k < n; k++)
         if (!strcmp(t[k]->style->name, "linear/restitution") ||
             !strcmp(t[k]->style->name, "gran/hooke") ||

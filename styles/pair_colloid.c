@@ -221,19 +221,24 @@ static double type_cut(const struct pair *p, int itype, int jtype)
     return at(c, itype, jtype)[C_CUT];
 }
 
+/* a potential: acts on every listed pair within its type pair's cut-off,
+ * has an energy and no contact collision */
+static void describe(const struct pair *p, struct pair_caps *c)
+{
+    pair_caps_source(c, "pair_colloid.cl");
+    c->eval = "colloid_eval";
+    c->energy = "colloid_energy";
+    c->beyond = 1;
+    c->cut_of = p;
+    c->type_cut = type_cut;
+}
+
 const struct pair_style pair_style_colloid = {
     .name = "colloid",
-    .source = "pair_colloid.cl",
-    .eval = "colloid_eval",
-    .energy = "colloid_energy",
-    .history = 0,
-    .rotation = 0,
     .nparam = COL_NPARAM,
     .settings = settings,
     .pack = pack,
-    .collision_time = NULL,
-    .beyond_contact = 1,
-    .type_cut = type_cut,
+    .describe = describe,
     .coeff = coeff,
     .init = init,
     .destroy = destroy,

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "collision_time.h"
 #include "error.h"
 #include "pair.h"
 
@@ -59,36 +60,46 @@ void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param)
 
 /* gamman = 0 and xmu = 0: the normal spring alone (any tangential force is
  * capped at xmu F_n) */
-int pair_gran_conservative(const struct pair *p)
+static int pair_gran_conservative(const struct pair *p)
 {
     return p->coef[C_GAMMAN] == 0.0 && p->coef[C_XMU] == 0.0;
 }
 
 /* Elastic energy of a contact: hooke F = kn delta, hertz F = kn sqrt(R*) delta^1.5 */
-double pair_gran_contact_energy(const struct pair *p, double delta, double reff)
+static double pair_gran_contact_energy(const struct pair *p, double delta, double reff)
 {
     if (!strcmp(p->style->name, "gran/hertz/history"))
         return 0.4 * p->coef[C_KN] * sqrt(reff) * delta * delta * sqrt(delta);
     return 0.5 * p->coef[C_KN] * delta * delta;
 }
 
-/* Half period of the damped linear oscillator of two equal spheres
- * (meff = m/2): pi / sqrt(kn/meff - (gamman/2)^2); for Hertz, kn is scaled by
- * sqrt(delta r/2) at the maximum overlap of an undamped impact at speed vn. */
-double pair_gran_collision_time(const struct pair *p, double m, double r, double vn)
+/* Run-start collision time of two equal spheres (m* = m/2, R* = r/2), the
+ * laws' formulas of kernels/collision_time.h: hooke, the damped linear
+ * oscillator; hertz, the same at the secant stiffness of an undamped impact
+ * at vn. INFINITY when overdamped. */
+static double collision_time(const struct pair *p, double m, double r, double vn)
 {
-    double meff = 0.5 * m, kn = p->coef[C_KN], gn = p->coef[C_GAMMAN];
+    double meff = 0.5 * m, kn = p->coef[C_KN], gn = p->coef[C_GAMMAN], t;
     if (!strcmp(p->style->name, "gran/hertz/history")) {
-        /* Hertz: F = kn sqrt(reff) delta^1.5, reff = r/2; delta_max from energy */
-        double reff = 0.5 * r;
-        double k = kn * sqrt(reff);
         if (vn <= 0)
             vn = 1e-3 * sqrt(kn * r * r / m);
-        double dmax = pow(1.25 * meff * vn * vn / k, 0.4);
-        kn = k * sqrt(dmax);
+        t = tcol_hertz_secant(kn, gn, 0.5 * r, meff, vn);
+    } else {
+        t = tcol_linear(kn, gn, meff);
     }
-    double w2 = kn / meff - 0.25 * gn * gn;
-    if (w2 <= 0)
-        return INFINITY;
-    return M_PI / sqrt(w2);
+    return t > 0 ? t : INFINITY;
+}
+
+void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
+                        const char *eval, int history)
+{
+    pair_caps_source(c, source);
+    c->eval = eval;
+    c->rotation = 1;
+    c->history = history;
+    c->tcol_of = p;
+    c->collision_time = collision_time;
+    c->conservative = pair_gran_conservative(p);
+    c->energy_of = p;
+    c->contact_energy = pair_gran_contact_energy;
 }

@@ -3,20 +3,15 @@
  * the other gran styles, styles/pair_gran_common.c). */
 #include "pair.h"
 
-double pair_gran_collision_time(const struct pair *p, double m, double r, double vn);
-int pair_gran_conservative(const struct pair *p);
-double pair_gran_contact_energy(const struct pair *p, double delta, double reff);
+static void describe(const struct pair *p, struct pair_caps *c)
+{
+    pair_gran_describe(p, c, "pair_gran_hooke.cl", "gran_hooke_eval", 0);
+}
 
 const struct pair_style pair_style_gran_hooke = {
     .name = "gran/hooke",
-    .source = "pair_gran_hooke.cl",
-    .eval = "gran_hooke_eval",
-    .history = 0,
-    .rotation = 1,
     .nparam = GRAN_NPARAM,
     .settings = pair_gran_settings,
     .pack = pair_gran_pack,
-    .collision_time = pair_gran_collision_time,
-    .conservative = pair_gran_conservative,
-    .contact_energy = pair_gran_contact_energy,
+    .describe = describe,
 };

@@ -15,7 +15,7 @@
  * coefficient geometric.
  *
  * The scene's kernel holds only the sub-models some type pair uses
- * (defines()): see the build options in kernels/pair_granular.cl. */
+ * (describe()): see the build options in kernels/pair_granular.cl. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -401,11 +401,6 @@ static struct gr_use uses(const struct pair *p)
     return u;
 }
 
-static int history_size(const struct pair *p)
-{
-    return uses(p).width;
-}
-
 /* LAMMPS 2021 init_one: r_i + r_j plus the (negative) JKR pull-off overlap,
  * or the pair's cutoff, or the style's global one */
 static double lammps2021_cut(const struct pair *p, int i, int j, double ri, double rj)
@@ -421,73 +416,55 @@ static double lammps2021_cut(const struct pair *p, int i, int j, double ri, doub
     return c;
 }
 
-/* Rolling and twisting history are adjacent (uses()) */
-static int lammps2021_flip(const struct pair *p, int *first)
+/* The sub-models the type pairs use decide the program (the GR*_USED
+ * masks, see kernels/pair_granular.cl) and the history row's layout; JKR
+ * pairs hold beyond touch, within the list of r_i + r_j + skin (LAMMPS 2021:
+ * no reach beyond touch). Rolling and twisting history are adjacent (uses()):
+ * the slots LAMMPS 2021 negates at an owner change. */
+static void describe(const struct pair *p, struct pair_caps *c)
 {
     struct gr_use u = uses(p);
-    *first = u.h_roll >= 0 ? u.h_roll : u.h_twist;
-    return (u.h_roll >= 0 ? 3 : 0) + (u.h_twist >= 0 ? 1 : 0);
-}
-
-static int beyond(const struct pair *p)
-{
-    return (uses(p).n >> GR_N_JKR) & 1;
-}
-
-/* JKR pairs hold beyond touch, within the list of r_i + r_j + skin (LAMMPS
- * 2021: no reach beyond touch) */
-static double reach(const struct pair *p, double radsum)
-{
-    (void)p;
-    return radsum;
-}
-
-static int defines(const struct pair *p, char *buf, size_t len)
-{
-    struct gr_use u = uses(p);
-    int n = snprintf(buf, len,
-                     " -D PAIR_EVAL_ROW=granular_eval -D GRN_USED=%d -D GRD_USED=%d "
-                     "-D GRT_USED=%d -D GRR_USED=%d -D GRW_USED=%d",
-                     u.n, u.d, u.t, u.r, u.w);
-    char extra[256] = "";
-    size_t m = 0;
-#define ADD(...) m += (size_t)snprintf(extra + m, sizeof extra - m, __VA_ARGS__)
-    if ((u.n >> GR_N_JKR) & 1)
-        ADD(" -D GRN_HAS_JKR -D GR_H_TOUCH=%d", u.h_touch);
+    pair_caps_source(c, "pair_granular.cl");
+    c->eval_row = "granular_eval";
+    c->rotation = 1;
+    c->history = u.width > 0;
+    c->hist_n = u.width > 0 ? u.width : 3;
+    c->flip_lo = u.h_roll >= 0 ? u.h_roll : u.h_twist;
+    c->flip_n = (u.h_roll >= 0 ? 3 : 0) + (u.h_twist >= 0 ? 1 : 0);
+    c->lammps2021_cut = lammps2021_cut;
+    c->cut2021_of = p;
+    if ((u.n >> GR_N_JKR) & 1) {
+        c->beyond = 1;
+        pair_caps_reach(c, 0.0, 1.0);
+    }
+    pair_caps_define(c, "GRN_USED", "%d", u.n);
+    pair_caps_define(c, "GRD_USED", "%d", u.d);
+    pair_caps_define(c, "GRT_USED", "%d", u.t);
+    pair_caps_define(c, "GRR_USED", "%d", u.r);
+    pair_caps_define(c, "GRW_USED", "%d", u.w);
+    if ((u.n >> GR_N_JKR) & 1) {
+        pair_caps_define(c, "GRN_HAS_JKR", NULL);
+        pair_caps_define(c, "GR_H_TOUCH", "%d", u.h_touch);
+    }
     if ((u.n >> GR_N_DMT) & 1)
-        ADD(" -D GRN_HAS_DMT");
+        pair_caps_define(c, "GRN_HAS_DMT", NULL);
     if (u.tang_hist)
-        ADD(" -D GR_TANG_HISTORY");
+        pair_caps_define(c, "GR_TANG_HISTORY", NULL);
     if (u.h_a >= 0)
-        ADD(" -D GR_H_A=%d", u.h_a);
+        pair_caps_define(c, "GR_H_A", "%d", u.h_a);
     if (u.h_roll >= 0)
-        ADD(" -D GR_H_ROLL=%d", u.h_roll);
+        pair_caps_define(c, "GR_H_ROLL", "%d", u.h_roll);
     if (u.h_twist >= 0)
-        ADD(" -D GR_H_TWIST=%d", u.h_twist);
-#undef ADD
-    if (n >= 0 && (size_t)n < len)
-        n += snprintf(buf + n, len - (size_t)n, "%s", extra);
-    if (n >= 0 && (size_t)n < len)
-        n += pair_cohesion_defines(p, buf + n, len - (size_t)n);
-    return n;
+        pair_caps_define(c, "GR_H_TWIST", "%d", u.h_twist);
 }
 
 const struct pair_style pair_style_granular = {
     .name = "granular",
-    .source = "pair_granular.cl",
-    .eval = NULL, /* PAIR_EVAL_ROW: takes the whole history row (defines()) */
-    .history = 1, /* sized by history_size(): 0 when no sub-model keeps any */
-    .rotation = 1,
     .nparam = GR_NPARAM,
     .settings = settings,
     .pack = pack,
     .coeff = coeff,
     .init = init,
-    .defines = defines,
-    .history_size = history_size,
-    .beyond = beyond,
-    .lammps2021_flip = lammps2021_flip,
-    .lammps2021_cut = lammps2021_cut,
-    .reach = reach,
+    .describe = describe,
     .destroy = destroy,
 };

@@ -36,6 +36,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "collision_time.h"
 #include "error.h"
 #include "pair.h"
 #include "pair_seeds.h"
@@ -204,29 +205,37 @@ static double contact_energy(const struct pair *p, double delta, double reff)
     return 0.4 * (4.0 / 3.0) * estar(p) * sqrt(reff) * delta * delta * sqrt(delta);
 }
 
+/* Run-start collision time of two equal spheres (m* = m/2, R* = r/2):
+ * Johnson's Hertz time (kernels/collision_time.h) from E* */
 static double collision_time(const struct pair *p, double m, double r, double vn)
 {
-    double es = estar(p), ms = 0.5 * m, rs = 0.5 * r;
     if (!(vn > 0)) {
         double rho = m / (4.0 / 3.0 * M_PI * r * r * r);
         vn = 1e-3 * sqrt(p->coef[C_E] / rho);
     }
-    return 2.87 * pow(ms * ms / (rs * es * es * vn), 0.2);
+    return tcol_hertz_es(estar(p), 0.5 * r, 0.5 * m, vn);
+}
+
+static void describe(const struct pair *p, struct pair_caps *c)
+{
+    pair_caps_source(c, "pair_hertz_mindlin.cl");
+    c->eval = "hertz_mindlin_eval";
+    c->rotation = 1;
+    c->history = 1;
+    c->tcol_of = p;
+    c->collision_time = collision_time;
+    c->conservative = conservative(p);
+    c->energy_of = p;
+    c->contact_energy = contact_energy;
 }
 
 const struct pair_style pair_style_hertz_mindlin = {
     .name = "hertz/mindlin",
-    .source = "pair_hertz_mindlin.cl",
-    .eval = "hertz_mindlin_eval",
-    .history = 1,
-    .rotation = 1,
     .nparam = HM_NPARAM,
     .settings = settings,
     .coeff = coeff,
     .init = init,
     .destroy = destroy,
     .pack = pack,
-    .collision_time = collision_time,
-    .conservative = conservative,
-    .contact_energy = contact_energy,
+    .describe = describe,
 };

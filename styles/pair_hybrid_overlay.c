@@ -47,7 +47,7 @@ struct hybrid {
 #define MAP_NONE (-1)
 #define MAP_UNSET (-2)
 
-int pair_hybrid_terms(const struct pair *p, const struct pair **terms)
+static int terms(const struct pair *p, const struct pair **terms)
 {
     const struct hybrid *h = p->data;
     if (!h)
@@ -69,6 +69,18 @@ static void destroy(struct pair *p)
     p->data = NULL;
 }
 
+/* A style with a 3-vector evaluator (not pair granular's history row): its
+ * record before any coefficient says so. */
+static int law_evaluator(const struct pair_style *st)
+{
+    struct pair tmp;
+    memset(&tmp, 0, sizeof tmp);
+    tmp.style = st;
+    struct pair_caps c;
+    pair_describe(&tmp, &c);
+    return c.eval != NULL;
+}
+
 /* Split `A args B args ...` at the registered style names. */
 static void parse_terms(struct gravel *g, struct pair *p, int argc, char **argv, int pick)
 {
@@ -85,7 +97,7 @@ static void parse_terms(struct gravel *g, struct pair *p, int argc, char **argv,
     int i = 0;
     while (i < argc) {
         const struct pair_style *st = pair_style_find(argv[i]);
-        if (!st || st->source_n || !st->eval)
+        if (!st || st->terms || !law_evaluator(st))
             gr_error(g, "%s: '%.64s' is not a pair style that can be composed (argument %d)",
                      me, argv[i], i + 1);
         int e = i + 1;
@@ -102,7 +114,9 @@ static void parse_terms(struct gravel *g, struct pair *p, int argc, char **argv,
         pair_create(g, &h->term[h->n], st, e - i - 1, argv + i + 1);
         h->off[h->n] = off;
         off += st->nparam;
-        nhist += st->history;
+        struct pair_caps tc;
+        pair_describe(&h->term[h->n], &tc);
+        nhist += tc.history;
         h->n++;
         i = e;
     }
@@ -259,74 +273,73 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
         h->term[k].style->pack(&h->term[k], itype, jtype, param + h->off[k]);
 }
 
-/* The first term with a collision time (the contact law). */
-static double collision_time(const struct pair *p, double m, double r, double vn)
+/* The terms' records merged: their sources, then the fused loop's; state
+ * and reach are the union; the collision time and energy are the first
+ * term's that has one (the contact law). A composed loop takes no
+ * approach or potential-energy path (PAIR_APPROACH, PAIR_ENERGY). */
+static void describe(const struct pair *p, struct pair_caps *c)
 {
     const struct hybrid *h = p->data;
-    for (int k = 0; k < h->n; k++)
-        if (h->term[k].style->collision_time)
-            return h->term[k].style->collision_time(&h->term[k], m, r, vn);
-    return INFINITY;
-}
-
-static const char *source_n(const struct pair *p, int k)
-{
-    const struct hybrid *h = p->data;
-    if (k < h->n)
-        return h->term[k].style->source;
-    return k == h->n ? "pair_hybrid_overlay.cl" : NULL;
-}
-
-
-
-static int defines(const struct pair *p, char *buf, size_t len)
-{
-    const struct hybrid *h = p->data;
-    size_t n = (size_t)snprintf(buf, len, " -D PAIR_EVAL=%s -D PAIR_TERMS=%d",
-                                h->pick ? "hybrid_eval" : "hybrid_overlay_eval", h->n);
-    for (int k = 0; k < h->n && n < len; k++) {
-        const struct pair_style *st = h->term[k].style;
-        n += (size_t)snprintf(buf + n, len - n,
-                              " -D PAIR_TERM%d=%s -D PAIR_TERM%d_OFF=%d -D PAIR_TERM%d_CONTACT=%d"
-                              " -D PAIR_TERM%d_HIST=%d",
-                              k, st->eval, k, h->off[k], k, !st->beyond_contact, k,
-                              st->history);
+    if (!h) /* after read_restart, before pair_style is re-issued (init refuses) */
+        return;
+    pair_caps_define(c, "PAIR_TERMS", "%d", h->n);
+    for (int k = 0; k < h->n; k++) {
+        const struct pair *t = &h->term[k];
+        struct pair_caps tc;
+        pair_describe(t, &tc);
+        for (int q = 0; q < tc.nsources; q++)
+            pair_caps_source(c, tc.sources[q]);
+        char nm[32];
+        snprintf(nm, sizeof nm, "PAIR_TERM%d", k);
+        pair_caps_define(c, nm, "%s", tc.eval);
+        snprintf(nm, sizeof nm, "PAIR_TERM%d_OFF", k);
+        pair_caps_define(c, nm, "%d", h->off[k]);
+        snprintf(nm, sizeof nm, "PAIR_TERM%d_CONTACT", k);
+        pair_caps_define(c, nm, "%d", !tc.beyond);
+        snprintf(nm, sizeof nm, "PAIR_TERM%d_HIST", k);
+        pair_caps_define(c, nm, "%d", tc.history);
+        c->rotation |= tc.rotation;
+        if (tc.history) {
+            c->history = 1;
+            if (tc.hist_n != 3)
+                c->hist_n = -1; /* every term takes a 3-REAL history (pair_setup) */
+        }
+        c->beyond |= tc.beyond;
+        for (int q = 0; q < tc.nreach; q++)
+            pair_caps_reach(c, tc.reach_a[q], tc.reach_b[q]);
+        if (tc.type_cut && !c->type_cut) {
+            c->cut_of = tc.cut_of;
+            c->type_cut = tc.type_cut;
+        }
+        if (tc.collision_time && !c->collision_time) {
+            c->tcol_of = tc.tcol_of;
+            c->collision_time = tc.collision_time;
+        }
     }
-    if (n < len)
-        n += (size_t)pair_cohesion_defines(p, buf + n, len - n);
-    return (int)n;
+    pair_caps_source(c, "pair_hybrid_overlay.cl");
+    c->eval = h->pick ? "hybrid_eval" : "hybrid_overlay_eval";
 }
 
 const struct pair_style pair_style_hybrid_overlay = {
     .name = "hybrid/overlay",
-    .source = "pair_hybrid_overlay.cl",
-    .eval = "hybrid_overlay_eval",
-    .history = 0,
-    .rotation = 0,
     .nparam = PAIR_MAXTERMS * PAIR_MAXPARAM,
     .settings = settings,
     .pack = pack,
-    .collision_time = collision_time,
     .coeff = coeff,
     .init = init,
-    .source_n = source_n,
-    .defines = defines,
+    .describe = describe,
+    .terms = terms,
     .destroy = destroy,
 };
 
 const struct pair_style pair_style_hybrid = {
     .name = "hybrid",
-    .source = "pair_hybrid_overlay.cl",
-    .eval = "hybrid_eval",
-    .history = 0,
-    .rotation = 0,
     .nparam = 1 + PAIR_MAXTERMS * PAIR_MAXPARAM,
     .settings = settings_hybrid,
     .pack = pack,
-    .collision_time = collision_time,
     .coeff = coeff,
     .init = init,
-    .source_n = source_n,
-    .defines = defines,
+    .describe = describe,
+    .terms = terms,
     .destroy = destroy,
 };

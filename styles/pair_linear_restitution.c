@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "collision_time.h"
 #include "error.h"
 #include "pair.h"
 #include "pair_seeds.h"
@@ -66,8 +67,7 @@ double seeds_restitution_damping_factor(double e)
 
 double seeds_linear_collision_time(double ke, double e, double meff)
 {
-    double l = log(e);
-    return sqrt(meff / ke) * sqrt(M_PI * M_PI + l * l);
+    return tcol_restitution(ke, e, meff);
 }
 
 static void pack(const struct pair *p, int itype, int jtype, double *param)
@@ -103,17 +103,22 @@ static double collision_time(const struct pair *p, double m, double r, double vn
     return seeds_linear_collision_time(p->coef[C_KE], p->coef[C_E], 0.5 * m);
 }
 
+static void describe(const struct pair *p, struct pair_caps *c)
+{
+    pair_caps_source(c, "pair_linear_restitution.cl");
+    c->eval = "linear_restitution_eval";
+    c->approach = 1;
+    c->tcol_of = p;
+    c->collision_time = collision_time;
+    c->conservative = conservative(p);
+    c->energy_of = p;
+    c->contact_energy = contact_energy;
+}
+
 const struct pair_style pair_style_linear_restitution = {
     .name = "linear/restitution",
-    .source = "pair_linear_restitution.cl",
-    .eval = "linear_restitution_eval",
-    .history = 0,
-    .rotation = 0,
-    .approach = 1,
     .nparam = LR_NPARAM,
     .settings = settings,
     .pack = pack,
-    .collision_time = collision_time,
-    .conservative = conservative,
-    .contact_energy = contact_energy,
+    .describe = describe,
 };

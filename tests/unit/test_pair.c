@@ -10,10 +10,20 @@
 
 #include "error.h"
 #include "input.h"
+#include "collision_time.h"
+#include "fix.h"
 #include "pair.h"
 
-/* A dense periodic pile of polydisperse spheres in contact. */
+/* A dense periodic pile of polydisperse spheres in contact; `pair` holds
+ * the pair_style arguments, `coeff` the pair_coeff lines (NULL: "* *"). */
+static struct gravel *pile_coeff(const char *pair, const char *coeff, int nx);
+
 static struct gravel *pile(const char *pair, int nx)
+{
+    return pile_coeff(pair, NULL, nx);
+}
+
+static struct gravel *pile_coeff(const char *pair, const char *coeff, int nx)
 {
     struct gravel *g = test_engine();
     double lo[3] = {0, 0, 0}, hi[3] = {nx * 0.95, nx * 0.95, nx * 0.95};
@@ -24,8 +34,8 @@ static struct gravel *pile(const char *pair, int nx)
             g->atoms.omega[3 * i + d] = 0.5 * ((i * 7 + d * 3) % 5 - 2);
     g->dt = 1e-4;
     g->neigh.skin = 0.1;
-    char buf[256];
-    snprintf(buf, sizeof buf, "pair_style %s\npair_coeff * *\n", pair);
+    char buf[512];
+    snprintf(buf, sizeof buf, "pair_style %s\n%s", pair, coeff ? coeff : "pair_coeff * *\n");
     CHECK(test_script(g, buf) == GR_OK);
     return g;
 }
@@ -349,6 +359,68 @@ TEST(exclusions_in_list)
 }
 
 /* LAMMPS bench/in.chute on data.chute: KinEng and erotate/sphere at step 100. */
+/* The build option NAME of a record, its value, or NULL. */
+static const char *caps_def(const struct pair_caps *c, const char *name)
+{
+    for (int k = 0; k < c->ndef; k++)
+        if (!strcmp(c->def[k].name, name))
+            return c->def[k].value;
+    return NULL;
+}
+
+/* Each style answers through one record; hybrid/overlay merges its terms';
+ * the host collision time is the law's formula of collision_time.h. */
+TEST(capabilities_records)
+{
+    struct gravel *g = pile("gran/hooke/history 2e5 NULL 50 NULL 0.5 1", 3);
+    CHECK(test_script(g, "fix 1 all nve/sphere\nrun 0\n") == GR_OK);
+    const struct pair_caps *c = &g->styles.pair->caps; /* filled by the run's set-up */
+    CHECK(c->nsources == 1 && !strcmp(c->sources[0], "pair_gran_hooke_history.cl"));
+    CHECK(c->eval && !strcmp(c->eval, "gran_hooke_history_eval") && !c->eval_row);
+    CHECK(c->rotation == 1 && c->history == 1 && c->hist_n == 3 && c->nparam == GRAN_NPARAM);
+    CHECK(!c->beyond && c->nreach == 0 && !c->type_cut && !c->approach && !c->energy);
+    CHECK(c->conservative == 0 && c->contact_energy != NULL);
+    /* m = 2, r = 0.5: m* = 1 */
+    CHECK(pair_collision_time(c, 2.0, 0.5, 1.0) == tcol_linear(2e5, 50, 1.0));
+    CHECK(pair_collision_time(c, 2.0, 0.5, 1.0) == M_PI / sqrt(2e5 - 0.25 * 50 * 50));
+    gr_destroy(g);
+
+    g = pile_coeff("hybrid/overlay linear/restitution 1e4 0.5 0.0 cohesion 50",
+                   "pair_coeff * * linear/restitution\npair_coeff * * cohesion 0.05\n", 3);
+    CHECK(test_script(g, "fix 1 all nve/sphere\nrun 0\n") == GR_OK);
+    c = &g->styles.pair->caps;
+    CHECK(c->nsources == 3 && !strcmp(c->sources[0], "pair_linear_restitution.cl") &&
+          !strcmp(c->sources[1], "pair_cohesion.cl") &&
+          !strcmp(c->sources[2], "pair_hybrid_overlay.cl"));
+    CHECK(c->eval && !strcmp(c->eval, "hybrid_overlay_eval"));
+    CHECK(caps_def(c, "PAIR_TERMS") && !strcmp(caps_def(c, "PAIR_TERMS"), "2"));
+    CHECK(caps_def(c, "PAIR_TERM0") && !strcmp(caps_def(c, "PAIR_TERM0"),
+                                               "linear_restitution_eval"));
+    CHECK(caps_def(c, "PAIR_TERM0_CONTACT") && !strcmp(caps_def(c, "PAIR_TERM0_CONTACT"), "1"));
+    CHECK(caps_def(c, "PAIR_TERM1_CONTACT") && !strcmp(caps_def(c, "PAIR_TERM1_CONTACT"), "0"));
+    CHECK(c->beyond == 1 && c->nreach == 1 && c->reach_a[0] + c->reach_b[0] > 0);
+    CHECK(!c->approach && !c->history && c->hist_n == 3 && !c->conservative);
+    /* the contact law's collision time, cohesion has none */
+    CHECK(c->tcol_of && !strcmp(c->tcol_of->style->name, "linear/restitution"));
+    CHECK(pair_collision_time(c, 2.0, 0.5, 0.0) == tcol_restitution(1e4, 0.5, 1.0));
+    CHECK(pair_reach(g, 1.0) == fmax(1.0, c->reach_a[0] + c->reach_b[0] * 1.0));
+    CHECK(pair_reach(g, 0.0) == c->reach_a[0]); /* the effect reaches beyond touch */
+    gr_destroy(g);
+}
+
+/* fix freeze declares its group held (FIX_FROZEN); the core asks the flag. */
+TEST(frozen_flag)
+{
+    struct gravel *g = pile("gran/hooke 2e5 NULL 50 NULL 0.5 1", 3);
+    CHECK(fix_frozen_groupbit(g) == 0 && fix_all_conserving(g));
+    CHECK(test_script(g, "group low id 1 2\nfix 1 all nve/sphere\nfix 2 low freeze\n") ==
+          GR_OK);
+    CHECK(fix_frozen_groupbit(g) == fix_find(g, "2")->groupbit && fix_all_conserving(g));
+    CHECK(test_script(g, "fix 3 all gravity 1.0 vector 0 0 -1\n") == GR_OK);
+    CHECK(!fix_all_conserving(g));
+    gr_destroy(g);
+}
+
 TEST(chute_step100_matches_lammps)
 {
     const char *path = "/work/shared/peers/chute/data.chute";
@@ -444,6 +516,8 @@ int main(void)
     RUN(viscous_decay);
     RUN(freeze_meff_restitution);
     RUN(exclusions_in_list);
+    RUN(capabilities_records);
+    RUN(frozen_flag);
     RUN(chute_step100_matches_lammps);
     return 0;
 }
