@@ -17,9 +17,8 @@ style.
     tools/style_tests.py --check    every page has a Tests line and every path a
                                     Tests line names exists (PASS/FAIL lines)
 
-Files are listed most uses first; reference decks as their folder with a
-count; a style used by more than MAXLIST files lists the first MAXLIST and
-counts the rest."""
+Programs and scripts are listed most uses first (at most MAXLIST, the rest
+counted), then the deck folders with the decks in them that use the style."""
 import glob
 import os
 import re
@@ -46,7 +45,8 @@ GRANULAR_SUB = {
 # LAMMPS example decks lammps_examples.py runs from the lammps-examples package
 # (granular/in.pour.drum, granregion/in.granregion.mixer and .funnel use fix balance)
 EXTRA = {"fix_balance": ["tests/scripts/lammps_examples.py"]}
-GRANULAR_USE = r"(pair_style\s+(hybrid\S*\s+([^\n]*\s)?)?granular\b|wall/gran(/region)?\s+granular\b)"
+GRANULAR_USE = (r"(pair_style\s+(hybrid\S*\s+([^\n]*\s)?)?granular\b|"
+                r"wall/gran(/region)?\s+granular\b)")
 
 
 def style_regex(page, title):
@@ -94,40 +94,46 @@ def uses(page, srcs):
         if n:
             found.append((path, n))
     found += [(path, 1) for path in EXTRA.get(name, [])]
-    # the scripts that run a deck folder (they name it: "reference", "<folder>")
-    folders = {os.path.dirname(p) for p, _ in found if p.startswith("tests/reference/")}
-    for folder in sorted(folders):
-        sub = os.path.basename(folder)
-        for path, text in srcs:
-            if (path.startswith("tests/scripts/") and not any(path == f for f, _ in found)
-                    and re.search(r"reference[\"'/, ]+%s\b" % re.escape(sub), text)):
-                found.append((path, 1))
     found.sort(key=lambda pn: (-pn[1], pn[0]))
     return found
 
 
-def line(found):
-    """the Tests line: programs and scripts by name, decks by folder"""
+def runners(folder, srcs):
+    """the scripts that run a deck folder: they join it into a path
+    ("reference", "<folder>"), or name the string "<folder>" and join
+    "reference" with a variable"""
+    sub = os.path.basename(folder)
+    rx = r"[\"']reference[\"'],\s*[\"']%s[\"']" % re.escape(sub)
+    rq = r"[\"']%s[\"']" % re.escape(sub)
+    return [path for path, text in srcs
+            if path.startswith("tests/scripts/") and (
+                re.search(rx, text) or (re.search(rq, text) and
+                                        re.search(r"[\"']reference[\"'],\s*[a-z_]+\b", text)))]
+
+
+def line(found, srcs):
+    """the Tests line: programs and scripts by name (most uses first, at most
+    MAXLIST), then every deck folder with its decks"""
     if not found:
         return MARK + " none found (no test writes this command)."
     items, decks = [], {}
     for path, n in found:
         if path.endswith(".in") or path.endswith(".spec"):
-            d = os.path.dirname(path)
-            decks.setdefault(d, []).append(os.path.basename(path))
+            decks.setdefault(os.path.dirname(path), []).append(os.path.basename(path))
         else:
             items.append("`%s`" % path)
-    for d, names in sorted(decks.items(), key=lambda kv: -len(kv[1])):
-        if len(names) <= 3:
-            items += ["`%s/%s`" % (d, n) for n in names]
-        else:
-            items.append("%d decks in `%s/` (%s)" % (len(names), d, ", ".join(
-                n.rsplit(".", 1)[0] for n in sorted(names))))
     more = ""
     if len(items) > MAXLIST:
-        more = " and %d more files" % (len(items) - MAXLIST)
+        more = " and %d more" % (len(items) - MAXLIST)
         items = items[:MAXLIST]
-    return MARK + " " + ", ".join(items) + more + "."
+    if more:
+        items[-1] += more
+    for d, names in sorted(decks.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+        run = runners(d, srcs) if d.startswith("tests/reference") else []
+        items.append("decks `%s/` (%s)%s" % (d, ", ".join(
+            n.rsplit(".", 1)[0] for n in sorted(names)), "".join(
+            " run by " + " and ".join("`%s`" % r for r in run) if run else "")))
+    return MARK + " " + ", ".join(items) + "."
 
 
 def pages():
@@ -141,7 +147,7 @@ def write():
         text = [x for x in text if not x.startswith(MARK)]
         while text and text[-1] == "":
             text.pop()
-        text += ["", line(uses(page, srcs))]
+        text += ["", line(uses(page, srcs), srcs)]
         with open(page, "w") as f:
             f.write("\n".join(text) + "\n")
 
@@ -156,7 +162,7 @@ def check():
         print(("PASS " if ok else "FAIL ") + "style_tests %s has one Tests line" % rel)
         bad += not ok
         missing = []
-        for ref in re.findall(r"`((?:tests|inputs|tools)/[^`*]+?)`", text):
+        for ref in re.findall(r"`((?:tests|inputs|tools)/[^`*\s]+)[^`*]*`", text):
             p = os.path.join(ROOT, ref.rstrip("/"))
             if not os.path.exists(p):
                 missing.append(ref)
@@ -175,7 +181,7 @@ def main():
         return check()
     srcs = sources()
     for page in pages():
-        print("%s: %s" % (os.path.relpath(page, ROOT), line(uses(page, srcs))))
+        print("%s: %s" % (os.path.relpath(page, ROOT), line(uses(page, srcs), srcs)))
     return 0
 
 
