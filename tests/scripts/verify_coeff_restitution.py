@@ -26,6 +26,7 @@ materials) and the three walls (m* = m), at e = 0.1, 0.5, 0.9:
   (observed order >= 0.8: velocity Verlet with a contact that starts and ends
   inside a step);
 - the Hertz restitution is the same at impact speeds 0.25 and 4;
+- single precision gives the double-precision e_out within 1e-5;
 - errors: with dmt or jkr (LAMMPS: "Cannot use coeff_restitution model with a
   cohesive normal model") and for e outside (0, 1].
 
@@ -92,7 +93,7 @@ def model(kind, e, **kw):
     return "%s tangential linear_nohistory 0 0 damping coeff_restitution" % normal(kind, e, **kw)
 
 
-def run(lines):
+def run(lines, prec="double"):
     with tempfile.TemporaryDirectory() as tmp:
         stl = os.path.join(tmp, "floor.stl")
         with open(stl, "w") as f:
@@ -106,8 +107,8 @@ def run(lines):
         path = os.path.join(tmp, "in.cr")
         with open(path, "w") as f:
             f.write("\n".join(lines).replace("@STL@", stl) + "\n")
-        return subprocess.run([GRAVEL, "-in", path, "-log", "none"], cwd=tmp, capture_output=True,
-                              text=True, timeout=600)
+        return subprocess.run([GRAVEL, "-in", path, "-log", "none", "-precision", prec], cwd=tmp,
+                              capture_output=True, text=True, timeout=600)
 
 
 class Case:
@@ -132,7 +133,7 @@ class Case:
     def gap(self, j, dt):
         return (1 + j / NPHASE) * self.u0 * dt
 
-    def gravel(self, nsub):
+    def gravel(self, nsub, prec="double"):
         dt, u0 = self.tc / nsub, self.u0
         box = 3 * D * NPHASE + 3 * D
         lines = ["units si", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
@@ -175,7 +176,7 @@ class Case:
         nsteps = 4 * nsub + 2
         lines += ["thermo_style custom step %s" % " ".join("v_v%d" % j for j in range(NPHASE)),
                   "thermo_modify format float %.16g", "thermo %d" % nsteps, "run %d" % nsteps]
-        r = run(lines)
+        r = run(lines, prec)
         if r.returncode != 0:
             raise RuntimeError("%s %s e=%g t_col/%d failed: %s"
                                % (self.kind, self.source, self.e, nsub,
@@ -296,6 +297,13 @@ def main():
                  "0.25 and 4 (and = e) within %g" % (e, BOUND),
                  abs(worst(a, e)) <= BOUND and abs(worst(b, e)) <= BOUND,
                  "%+.2e, %+.2e" % (worst(a, e), worst(b, e)))
+    # single precision: the same collisions to float round-off
+    for name, c in (("hertz/material pair", Case("hertz/material", 0.5)),
+                    ("hooke wall/gran plane", Case("hooke", 0.5, source="plane"))):
+        d, f = c.gravel(NSUBS[1]), c.gravel(NSUBS[1], "single")
+        gap = max(abs(a - b) for a, b in zip(d, f))
+        sv.check("coeff_restitution %s e=0.5 t_col/%d: single precision = double within 1e-5"
+                 % (name, NSUBS[1]), gap <= 1e-5, "worst %.2e" % gap)
     # LAMMPS 2024 mixing: types 1 (e1) and 2 (e2) collide at sqrt(e1 e2); hooke kn
     # geometric, hertz/material kn = 4/3 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)
     e1, e2 = 0.3, 0.8
