@@ -304,9 +304,9 @@ static double pulloff(const struct gr_one *o, double reff)
 /* A type pair of two coeff_restitution types: that model is LAMMPS 2024's,
  * so the pair mixes as LAMMPS 2024 does (GranularModel::mix_coeffs, then
  * init): every sub-model kept; e, nu and every other coefficient geometric;
- * hertz/material's E as E_I E_J mixE (1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/
- * E_J)) and kn = 4/3 of it; a NULL Mindlin kt (on either side) 8 G* of the
- * mixed E and nu; limit_damping if either has it; then e converted. */
+ * hertz/material's E* = 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) and
+ * kn = 4/3 E*; a NULL Mindlin kt (on either side) 8 G* of the mixed E* and
+ * nu; limit_damping if either has it; then e converted. */
 static void mix2024(const struct gr_one *a, const struct gr_one *b, struct gr_one *m)
 {
     if (a->nm == GR_N_HERTZ_MATERIAL) {
