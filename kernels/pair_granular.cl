@@ -93,8 +93,14 @@ static inline REAL grn_jkr_pulloff(REAL E, REAL coh, REAL Reff)
     return a * a / Reff - (REAL)2 * sqrt((REAL)M_PI * coh * a / E);
 }
 
-/* ---- damping models: the factor multiplying the damping coefficient ---- */
-static inline REAL grd_factor(const int used, int model, REAL meff, REAL a, REAL knfac)
+/* ---- damping models: the factor multiplying the damping coefficient ----
+ * coeff_restitution (LAMMPS 2024, GranSubModDampingCoeffRestitution, a
+ * GranSubModDampingTsuji with its own init): sqrt(m Fne / delta), 0 unless
+ * delta > 0, i.e. sqrt(m kn) for hooke and sqrt(m kn a) for hertz and
+ * hertz/material (the host turned e into damp, styles/pair_granular.c; the
+ * cohesive dmt and jkr are refused there). */
+static inline REAL grd_factor(const int used, int model, REAL meff, REAL a, REAL knfac,
+                              REAL Fne, REAL delta)
 {
     if (GR_IS(used, GR_D_VELOCITY, model))
         return 1;
@@ -104,6 +110,8 @@ static inline REAL grd_factor(const int used, int model, REAL meff, REAL a, REAL
         return a * meff;
     if (GR_IS(used, GR_D_TSUJI, model))
         return sqrt(meff * knfac);
+    if (GR_IS(used, GR_D_COEFF_RESTITUTION, model))
+        return delta > (REAL)0 ? sqrt(fmax((REAL)0, meff * Fne / delta)) : (REAL)0;
     return 0;
 }
 
@@ -288,7 +296,8 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     else
         Fne = grn_hertz(E, delta, dR, &knfac, &a);
 
-    const REAL damp_pref = p[GR_DAMP] * grd_factor(L.d, (int)p[GR_DMODEL], meff, a, knfac);
+    const REAL damp_pref = p[GR_DAMP] * grd_factor(L.d, (int)p[GR_DMODEL], meff, a, knfac, Fne,
+                                                        delta);
     REAL Fntot = Fne + -damp_pref * vnnr;
     if (p[GR_LIMIT] != (REAL)0 && Fntot < (REAL)0)
         Fntot = 0;

@@ -26,15 +26,16 @@ enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
 /* granular (styles/pair_granular.c, kernels/pair_granular.cl): the sub-model
  * of each category (GR_N_*, GR_D_*, GR_T_*, GR_R_*, GR_W_* as REAL), limit_damping
  * (0/1), then LAMMPS's coefficients after its conversions and mixing:
- * normal kn (4/3 E* for the material models), damping (tsuji: the factor from
- * the restitution coefficient), cohesion; tangential kt, damping ratio, mu;
+ * normal kn (4/3 E* for the material models), damping (tsuji, coeff_restitution:
+ * the factor from the restitution coefficient), cohesion; tangential kt, damping ratio, mu;
  * rolling kr, gr, mu_r; twisting kw, gw, mu_w. */
 enum gr_param { GR_NMODEL, GR_DMODEL, GR_TMODEL, GR_RMODEL, GR_WMODEL, GR_LIMIT,
                 GR_KN, GR_DAMP, GR_COH, GR_KT, GR_GT, GR_MU, GR_KR, GR_GR, GR_MUR,
                 GR_KW, GR_GW, GR_MUW, GR_NPARAM };
 /* LAMMPS's numbering of the sub-models (pair_granular.cpp) */
 enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR };
-enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI };
+enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI,
+                  GR_D_COEFF_RESTITUTION /* LAMMPS 2024 */ };
 enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RESCALE,
                      GR_T_MINDLIN_FORCE, GR_T_MINDLIN_RESCALE_FORCE };
 enum gr_twist { GR_W_NONE, GR_W_SDS, GR_W_MARSHALL };

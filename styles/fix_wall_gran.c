@@ -150,7 +150,8 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
      * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
      * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
-     * (1 + nu) (checked against lmp: tests/reference/granular_wall_*) */
+     * (1 + nu) (checked against lmp: granular_wall_* in tests/reference/wall_gran
+     * and wall_gran_region) */
     if (o.nm >= GR_N_HERTZ_MATERIAL)
         o.kn = o.E / (2 * (1 - o.nu)) * 1.333333333333333;
     if (kt_null)

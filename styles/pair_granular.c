@@ -12,7 +12,11 @@
  * pair_coeff mixes from I I and J J at run start (which must use the same
  * sub-models): kn geometric (hooke, hertz) or 1 / ((1 - nu_I^2)/E_I +
  * (1 - nu_J^2)/E_J) (material models: no 4/3, as LAMMPS 2021), every other
- * coefficient geometric.
+ * coefficient geometric. LAMMPS 2024's damping coeff_restitution takes e
+ * in the normal damping slot and keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e)
+ * (hooke) or -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz,
+ * hertz/material; refused with dmt, jkr), which the kernel multiplies by
+ * sqrt(m Fne / delta); two such types mix as LAMMPS 2024 does (mix2024).
  *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
@@ -33,7 +37,8 @@ struct gr_tab {
 };
 
 static const char *const nname[] = {"hooke", "hertz", "hertz/material", "dmt", "jkr"};
-static const char *const dname[] = {"velocity", "mass_velocity", "viscoelastic", "tsuji"};
+static const char *const dname[] = {"velocity", "mass_velocity", "viscoelastic", "tsuji",
+                                    "coeff_restitution"};
 static const char *const tname[] = {"linear_nohistory", "linear_history", "mindlin",
                                     "mindlin_rescale", "mindlin/force",
                                     "mindlin_rescale/force"};
@@ -116,6 +121,30 @@ double granular_tsuji(double e)
            18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
 }
 
+double granular_coeff_restitution(double e, int nm)
+{
+    const double l = log(e), root = sqrt(M_PI * M_PI + l * l);
+    if (nm == GR_N_HOOKE)
+        return -2 * l / root;
+    /* sqrt(3/2) 2 sqrt(5/6): the Hertz stiffness dF/ddelta = 3/2 kn a */
+    return -1.22474487139158894067 * 1.82574185835055380345 * l / root;
+}
+
+/* coeff_restitution: the restitution coefficient of o (its normal damping
+ * slot) into the damping coefficient; LAMMPS refuses it with a cohesive
+ * normal model (GranSubModDampingTsuji: allow_cohesion = 0) and takes any e
+ * (ln 0 or e > 1 give a NaN or negative damping): gravel asks 0 < e <= 1 */
+static void coeff_restitution(struct gravel *g, struct gr_one *o, const char *who)
+{
+    if (o->nm == GR_N_DMT || o->nm == GR_N_JKR)
+        gr_error(g, "%s: Cannot use coeff_restitution model with a cohesive normal model, %s",
+                 who, nname[o->nm]);
+    if (!(o->e > 0 && o->e <= 1))
+        gr_error(g, "%s: damping coeff_restitution takes the restitution coefficient e in the "
+                    "normal model's damping slot, 0 < e <= 1 (got %g)", who, o->e);
+    o->damp = granular_coeff_restitution(o->e, o->nm);
+}
+
 int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                    const char *const *stop, int allow_cutoff, const char *who)
 {
@@ -146,10 +175,11 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             i += m <= GR_N_HERTZ ? 3 : m == GR_N_HERTZ_MATERIAL ? 4 : 5;
         } else if (!strcmp(k, "damping")) {
             arg_need(g, argc, i, 1, k);
-            o.dm = lookup(argv[i + 1], dname, 4);
+            o.dm = lookup(argv[i + 1], dname, 5);
             if (o.dm < 0)
-                gr_error(g, "%s: unknown damping model '%.64s' (expected "
-                            "velocity, mass_velocity, viscoelastic or tsuji)", who, argv[i + 1]);
+                gr_error(g, "%s: unknown damping model '%.64s' (expected velocity, "
+                            "mass_velocity, viscoelastic, tsuji or coeff_restitution)", who,
+                         argv[i + 1]);
             i += 2;
         } else if (!strcmp(k, "tangential")) {
             arg_need(g, argc, i, 1, k);
@@ -227,6 +257,9 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         gr_error(g, "%s: must specify normal or tangential contact model", who);
     if (o.dm == GR_D_TSUJI)
         o.damp = granular_tsuji(o.damp);
+    o.e = o.damp;
+    if (o.dm == GR_D_COEFF_RESTITUTION)
+        coeff_restitution(g, &o, who);
     if (o.ld && o.nm == GR_N_JKR)
         gr_error(g, "Illegal %.*s command, Cannot limit damping with JKR model",
                  (int)strcspn(who, " "), who);
@@ -237,6 +270,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         o.kn = 4.0 / 3.0 * mixE(o.E, o.E, o.nu, o.nu);
     if (kt_null)
         o.kt = 8 * mixG(o.E, o.E, o.nu, o.nu);
+    o.ktnull = kt_null;
     o.set = 1;
     *po = o;
     return i;
@@ -267,6 +301,38 @@ static double pulloff(const struct gr_one *o, double reff)
     return a * a / reff - 2 * sqrt(M_PI * o->coh * a / E);
 }
 
+/* A type pair of two coeff_restitution types: that model is LAMMPS 2024's,
+ * so the pair mixes as LAMMPS 2024 does (GranularModel::mix_coeffs, then
+ * init): every sub-model kept; e, nu and every other coefficient geometric;
+ * hertz/material's E* = 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) and
+ * kn = 4/3 E*; a NULL Mindlin kt (on either side) 8 G* of the mixed E* and
+ * nu; limit_damping if either has it; then e converted. */
+static void mix2024(const struct gr_one *a, const struct gr_one *b, struct gr_one *m)
+{
+    if (a->nm == GR_N_HERTZ_MATERIAL) {
+        m->E = mixE(a->E, b->E, a->nu, b->nu);
+        m->nu = geo(a->nu, b->nu);
+        m->kn = 4.0 / 3.0 * m->E;
+    } else {
+        m->kn = geo(a->kn, b->kn);
+    }
+    m->e = geo(a->e, b->e);
+    m->damp = granular_coeff_restitution(m->e, m->nm);
+    m->coh = 0;
+    m->ktnull = a->ktnull || b->ktnull;
+    m->kt = m->ktnull ? 8 * mixG(m->E, m->E, m->nu, m->nu) : geo(a->kt, b->kt);
+    m->gt = geo(a->gt, b->gt);
+    m->mu = geo(a->mu, b->mu);
+    m->kr = geo(a->kr, b->kr);
+    m->gr = geo(a->gr, b->gr);
+    m->mur = geo(a->mur, b->mur);
+    m->kw = geo(a->kw, b->kw);
+    m->gw = geo(a->gw, b->gw);
+    m->muw = geo(a->muw, b->muw);
+    m->ld = a->ld || b->ld;
+    m->cutoff = -1;
+}
+
 /* Run start: mix unset pairs (LAMMPS init_one); the JKR reach. */
 static void init(struct gravel *g, struct pair *p)
 {
@@ -291,6 +357,11 @@ static void init(struct gravel *g, struct pair *p)
                             "explicitly via a pair_coeff command", i, j);
             struct gr_one m = *a;
             m.set = 2;
+            if (a->dm == GR_D_COEFF_RESTITUTION) {
+                mix2024(a, b, &m);
+                *at(t, i, j) = *at(t, j, i) = m;
+                continue;
+            }
             /* LAMMPS 2021 init_one tests and mixes with the sub-models of the
              * (I, J) entry, which it never sets: its freshly allocated tables
              * hold 0 there, i.e. hooke, velocity damping, linear_nohistory,
@@ -319,7 +390,7 @@ static void init(struct gravel *g, struct pair *p)
         }
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
-            if (at(t, i, j)->set == 2)
+            if (at(t, i, j)->set == 2 && at(t, i, j)->dm != GR_D_COEFF_RESTITUTION)
                 gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "

@@ -14,10 +14,10 @@ two dynamic ones (group delgroup dynamic all var zmax every 100, the rule of
 LAMMPS' examples/granular/in.pour.drum; group lowfast dynamic all region low
 var fast) whose counts are thermo columns, beside compute reduce sum/max of
 atom-style variables; `group delgroup static` freezes one before the second
-run. tests/reference/atom_variables.lammps.log is `lmp` (29 Sep 2021) on this
+run. tests/reference/atom_variables/atom_variables.lammps.log is `lmp` (29 Sep 2021) on this
 deck: every thermo value must agree to 1e-10 relative, the group counts
 exactly. DUMP (20 atoms, run 0) writes v_a v_b v_c with dump custom; they
-must equal LAMMPS' dump (tests/reference/atom_variables.lammps.dump) to
+must equal LAMMPS' dump (tests/reference/atom_variables/atom_variables.lammps.dump) to
 1e-12. Then errors. One PASS/FAIL line per check.
 """
 import os
@@ -28,7 +28,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
-REF = os.path.join(ROOT, "tests", "reference")
+REF = os.path.join(ROOT, "tests", "reference", "atom_variables")
 
 BED = """units lj
 atom_style sphere

@@ -14,7 +14,7 @@ periodic packing (no wall, no gravity) whose large spheres straddle the
 faces. Then:
   - multi pays each pair's own cut-off: its Neigh time is below half of bin's
     (bin's cells are 2 x 2 + skin wide: every small sphere tests every other);
-  - LAMMPS (tests/reference/neighbor_multi.lammps.log, `lmp` 29 Sep 2021 on
+  - LAMMPS (tests/reference/neighbor_multi/neighbor_multi.lammps.log, `lmp` 29 Sep 2021 on
     the same deck with neighbor multi) builds the list as often and counts as
     many neighbors, and its thermo agrees to 1e-12 relative;
   - errors: collection keywords without multi, a diameter above the last
@@ -29,7 +29,8 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
-LAMMPS_LOG = os.path.join(ROOT, "tests", "reference", "neighbor_multi.lammps.log")
+LAMMPS_LOG = os.path.join(ROOT, "tests", "reference", "neighbor_multi",
+                          "neighbor_multi.lammps.log")
 
 # the LAMMPS reference log was written from this deck with NEIGH = multi,
 # MOD empty, DUMP empty and `comm_modify vel yes` (LAMMPS needs ghost velocities)

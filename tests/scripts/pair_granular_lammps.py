@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """pair_granular_lammps.py - pair granular agrees with LAMMPS 29Sep2021.
 
-Every tests/reference/granular_*.in deck (six spheres of two types in three
+Every granular_*.in deck of tests/reference/pair_granular, wall_gran and
+wall_gran_region (six spheres of two types in three
 colliding pairs, or two JKR spheres pulled apart) runs unchanged in gravel; each
 frame of its dump (x, v, omega, f, torque, %.17g) must match the dump LAMMPS
 wrote (granular_*.dump, tests/reference/make_refs.sh) to 1e-10: |a - b| <=
@@ -138,7 +139,9 @@ def check_default_departs(deck, ref):
 
 def main():
     import tempfile
-    decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "granular_*.in")))
+    decks = sorted(d for sub in ("pair_granular", "wall_gran", "wall_gran_region")
+                   for d in glob.glob(os.path.join(ROOT, "tests", "reference", sub,
+                                                   "granular_*.in")))
     if not decks:
         print("FAIL lammps_granular (no decks)")
     for deck in decks:

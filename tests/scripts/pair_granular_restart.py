@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """pair_granular_restart.py - pair granular's wide contact history survives a restart.
 
-The jkr reference deck (tests/reference/granular_jkr.in: mindlin_rescale/force,
+The jkr reference deck (tests/reference/pair_granular/granular_jkr.in: mindlin_rescale/force,
 rolling sds, twisting sds, jkr touch flag: 9 REAL of history per contact) run
 for 3000 steps must equal, in every frame after step 1500, 1500 steps +
 write_restart + a fresh process (read_restart, pair_style and pair_coeff given
@@ -19,7 +19,7 @@ from physics_lammps import read_dump  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
-DECK = os.path.join(ROOT, "tests", "reference", "granular_jkr.in")
+DECK = os.path.join(ROOT, "tests", "reference", "pair_granular", "granular_jkr.in")
 
 
 def gravel(tmp, text, name):

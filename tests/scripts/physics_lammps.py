@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """physics_lammps.py - gravel agrees with LAMMPS 2021 on the reference decks.
 
-Each tests/reference/<deck>.in (two spheres colliding obliquely with the three
-gran pair styles; a spinning sphere hitting xplane/yplane/zplane/zcylinder
-walls of fix wall/gran, a wiggling and a shearing wall) runs unchanged in
+Each tests/reference/<dir>/<deck>.in of DECK_DIRS (pair_gran: two spheres
+colliding obliquely with the three gran pair styles, and pair hybrid;
+wall_gran: a spinning sphere hitting xplane/yplane/zplane/zcylinder walls of
+fix wall/gran, a wiggling and a shearing wall; wall_gran_region: fix
+wall/gran/region; pair_granular: pair granular) runs unchanged in
 gravel; every frame of its dump (x, v, omega every 500 steps, %.15g) must
-match the dump LAMMPS wrote (tests/reference/<deck>.dump, made by
+match the dump LAMMPS wrote (tests/reference/<dir>/<deck>.dump, made by
 make_refs.sh) to 1e-6 relative (|a - b| <= 1e-6 max(1, |b|)), run with
 -compat lammps2021 (it matters for granular_owner_flip and granular_jkr_pulloff
 only); three decks also run with -precision single and must match to 2e-3.
@@ -24,6 +26,9 @@ import tempfile
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
 TOL = 1e-6
+# the deck folders of tests/reference compared here (rigid/: rigid_small.py, by
+# unwrapped positions: gravel wraps atoms every step, LAMMPS at rebuilds)
+DECK_DIRS = ("pair_gran", "pair_granular", "wall_gran", "wall_gran_region")
 
 
 def read_dump(path):
@@ -101,16 +106,15 @@ def check_chute():
 
 
 def main():
-    # rigid_*.in: tests/scripts/rigid_small.py compares them by unwrapped
-    # positions (gravel wraps atoms every step, LAMMPS at rebuilds)
-    decks = sorted(d for d in glob.glob(os.path.join(ROOT, "tests", "reference", "*.in"))
-                   if not os.path.basename(d).startswith("rigid_"))
+    decks = sorted(d for sub in DECK_DIRS
+                   for d in glob.glob(os.path.join(ROOT, "tests", "reference", sub, "*.in")))
     if not decks:
         print("FAIL lammps_no_decks")
     for deck in decks:  # the LAMMPS comparison mode (doc/lammps.md, Compatibility)
         check_deck(deck, ("-compat", "lammps2021"))
     # single precision: same trajectories to float accuracy over a collision
-    for name in ("pair_hertz_history", "wall_zcylinder_hertz_history", "wall_many_hooke_history"):
+    for name in ("pair_gran/pair_hertz_history", "wall_gran/wall_zcylinder_hertz_history",
+                 "wall_gran/wall_many_hooke_history"):
         check_deck(os.path.join(ROOT, "tests", "reference", name + ".in"),
                    ("-precision", "single"), 2e-3, "_single")
     check_chute()

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """rigid_small.py - fix rigid/small, molecule templates and molecule IDs.
 
-1. LAMMPS agreement: every tests/reference/rigid_*.in deck runs unchanged in
+1. LAMMPS agreement: every tests/reference/rigid/rigid_*.in deck runs unchanged in
    gravel; each frame of its dump must match the dump LAMMPS 2021 wrote
    (rigid_*.dump, tests/reference/make_refs.sh): unwrapped positions (x + ix
    Lx ...: gravel wraps atoms every step, LAMMPS at rebuilds), velocities and
@@ -148,7 +148,7 @@ create_atoms 1 single 2.8 2 2
 
 
 def main():
-    decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "rigid_*.in")))
+    decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "rigid", "rigid_*.in")))
     check("rigid decks found", len(decks) >= 2, "%d" % len(decks))
     for deck in decks:
         name = os.path.basename(deck)[:-3]

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """wall_region.py - fix wall/gran/region, region move/rotate/open and
-pair_style hybrid: what the reference decks (tests/reference/wall_region_*,
+pair_style hybrid: what the reference decks (tests/reference/wall_gran_region/wall_region_*,
 pair_hybrid, compared with LAMMPS dumps by physics_lammps.py) do not cover.
 
 1. A single sphere at rest on the floor of a block container (hooke, no
