@@ -44,7 +44,7 @@ static inline REAL tcol_linear(const REAL kn, const REAL gamma, const REAL meff)
  * speed beats the record. */
 #define ACC_NOTE_PAIR(TCOL, c, k, p, acc, astep, step)                                         \
     do {                                                                                       \
-        const REAL dv_ = dot((k)->vr, (k)->del);                                               \
+        const REAL dv_ = (k)->vdel;                                               \
         const REAL vn2_ = dv_ * dv_ / (k)->rsq;                                                \
         if (vn2_ > (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2]) {                                   \
             const REAL tc_ = TCOL(k, p, sqrt(vn2_));                                           \
@@ -60,7 +60,7 @@ static inline REAL tcol_linear(const REAL kn, const REAL gamma, const REAL meff)
 #define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
         const REAL r_ = sqrt((k)->rsq);                                                        \
-        const REAL vn_ = fabs(dot((k)->vr, (k)->del)) / r_;                                    \
+        const REAL vn_ = fabs((k)->vdel) / r_;                                    \
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
         if (ov_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_OV])                                       \
             (acc)[ACC_WALL_W * (i) + ACC_WALL_OV] = ov_;                                       \

@@ -14,7 +14,10 @@
  *      or opens (contact_normal_linear);
  *   2. building the contact (contact_make) and refining its overlap from
  *      the split position parts (contact_refine, SPLIT_POS);
- *   3. the law's evaluation, in its 3-vector (REAL3 shear) or history-row
+ *   3. the contact's kinematics (contact_kinematics: normal, normal rate,
+ *      tangential and contact-point velocities), computed once and read by
+ *      every law and by the accuracy notes; then
+ *      the law's evaluation, in its 3-vector (REAL3 shear) or history-row
  *      form, on the contact's history row held in private memory;
  *   4. the accuracy note (kernels/accuracy.cl): the pair record of the
  *      contact, or the wall record of particle i;
@@ -47,6 +50,16 @@ struct contact {
     int approach;       /* 1: the caller also evaluates pairs apart that one
                          * drift at their normal rate brings into or out of
                          * contact (PAIR_APPROACH, contact_normal_linear) */
+    /* The kinematics, computed once per contact by contact_kinematics (the
+     * body, after refinement and the velocity remap) and read by the laws
+     * and the accuracy notes: */
+    REAL rinv, rsqinv;  /* 1 / r, 1 / rsq */
+    REAL3 n;            /* del / r: the unit normal, from j to i */
+    REAL vn;            /* vr . n: the normal rate (> 0 apart) */
+    REAL vdel;          /* vr . del */
+    REAL3 w;            /* radi omi + radj omj */
+    REAL3 vt;           /* vr - vn n: the tangential relative velocity of the centres */
+    REAL3 vtr;          /* vt + n x w: the relative velocity of the contact points */
 };
 
 /* What an evaluator returns for one contact: the force on i (the force on j
@@ -301,6 +314,20 @@ static inline int contact_gate(const int kind, const int i, const struct contact
     return 1;
 }
 
+/* The normal/tangential kinematics of a built contact (struct contact's
+ * last fields), in the order every law reads them. */
+static inline void contact_kinematics(struct contact *k)
+{
+    k->rinv = (REAL)1 / k->r;
+    k->rsqinv = (REAL)1 / k->rsq;
+    k->n = k->del * k->rinv;
+    k->vn = dot(k->vr, k->n);
+    k->vdel = dot(k->vr, k->del);
+    k->w = k->radi * k->omi + k->radj * k->omj;
+    k->vt = k->vr - k->vn * k->n;
+    k->vtr = k->vt + cross(k->n, k->w);
+}
+
 /* Step 6: the force and both torques (LAMMPS's newton-pair update) */
 static inline void contact_out_set(const struct contact *k, const struct contact_force *cf,
                                    struct contact_out *o)
@@ -362,6 +389,7 @@ static inline void contact_hist_store(__global REAL *row, const REAL *h, const i
             return 0;                                                                          \
         }                                                                                      \
         CONTACT_VREMAP(kind, pj, k);                                                           \
+        contact_kinematics(&k);                                                                \
         k.dt = a->dt;                                                                          \
         k.shearupdate = a->shearupdate;                                                        \
         k.approach = s->approach;                                                              \
