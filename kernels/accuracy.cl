@@ -9,7 +9,8 @@
  * TCOL_OF(EVAL) names it for an evaluator EVAL (a macro such as PAIR_EVAL is
  * expanded first).
  *
- * Records, written only by the work-item that owns them (no atomics):
+ * Records (widths and offsets ACC_* of kernels/wall_layout.h), written only
+ * by the work-item that owns them (no atomics):
  *   pair contact c   acc[2c] = largest dt / t_col seen, acc[2c + 1] = the
  *                    squared normal speed then; astep[c] = step (since the run's
  *                    first) it was seen
@@ -26,37 +27,38 @@
 /* The laws' collision-time formulas (tcol_linear, tcol_hertz, ...) are in
  * kernels/collision_time.h, shared with the host. */
 
-/* Note a pair contact: the record keeps the fastest impact; dt / t_col
- * grows with vn for a given contact, so the law is evaluated only when the
- * speed beats the record. */
-#define ACC_NOTE_PAIR(EVAL, c, k, p, acc, astep, step)                                         \
+/* The notes are taken by the contact body (kernels/contact.cl); TCOL is the
+ * law's collision time. Note a pair contact: the record keeps the fastest
+ * impact; dt / t_col grows with vn for a given contact, so the law is
+ * evaluated only when the speed beats the record. */
+#define ACC_NOTE_PAIR(TCOL, c, k, p, acc, astep, step)                                         \
     do {                                                                                       \
-        const REAL dv_ = dot((k)->vr, (k)->del);                                               \
+        const REAL dv_ = (k)->vdel;                                                            \
         const REAL vn2_ = dv_ * dv_ / (k)->rsq;                                                \
-        if (vn2_ > (acc)[2 * (c) + 1]) {                                                       \
-            const REAL tc_ = TCOL_OF(EVAL)(k, p, sqrt(vn2_));                                  \
+        if (vn2_ > (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2]) {                                   \
+            const REAL tc_ = TCOL(k, p, sqrt(vn2_));                                           \
             if (tc_ > (REAL)0) {                                                               \
-                (acc)[2 * (c)] = (k)->dt / tc_;                                                \
-                (acc)[2 * (c) + 1] = vn2_;                                                     \
+                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_Q] = (k)->dt / tc_;                          \
+                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2] = vn2_;                                 \
                 (astep)[c] = step;                                                             \
             }                                                                                  \
         }                                                                                      \
     } while (0)
 
 /* Note a wall contact of particle i with wall `code` (the work-item of i). */
-#define ACC_NOTE_WALL(EVAL, i, k, p, code, acc, astep, step)                                   \
+#define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
         const REAL r_ = sqrt((k)->rsq);                                                        \
-        const REAL vn_ = fabs(dot((k)->vr, (k)->del)) / r_;                                    \
+        const REAL vn_ = fabs((k)->vdel) / r_;                                    \
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
-        if (ov_ > (acc)[4 * (i) + 2])                                                          \
-            (acc)[4 * (i) + 2] = ov_;                                                          \
+        if (ov_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_OV])                                       \
+            (acc)[ACC_WALL_W * (i) + ACC_WALL_OV] = ov_;                                       \
         if (vn_ > (REAL)0) {                                                                   \
-            const REAL tc_ = TCOL_OF(EVAL)(k, p, vn_);                                         \
-            if (tc_ > (REAL)0 && (k)->dt / tc_ > (acc)[4 * (i)]) {                             \
-                (acc)[4 * (i)] = (k)->dt / tc_;                                                \
-                (acc)[4 * (i) + 1] = vn_;                                                      \
-                (acc)[4 * (i) + 3] = (REAL)(code);                                             \
+            const REAL tc_ = TCOL(k, p, vn_);                                                  \
+            if (tc_ > (REAL)0 && (k)->dt / tc_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_Q]) {       \
+                (acc)[ACC_WALL_W * (i) + ACC_WALL_Q] = (k)->dt / tc_;                          \
+                (acc)[ACC_WALL_W * (i) + ACC_WALL_VN] = vn_;                                   \
+                (acc)[ACC_WALL_W * (i) + ACC_WALL_CODE] = (REAL)(code);                        \
                 (astep)[i] = step;                                                             \
             }                                                                                  \
         }                                                                                      \

@@ -33,68 +33,6 @@
 #define CAT3(t) CAT3_(t)
 #define CAT3_(t) t##3
 
-/* One contact between particle i and particle (or wall) j, as the pair
- * evaluators see it. Sign convention: del = x_i - x_j, vr = v_i - v_j. */
-struct contact {
-    REAL3 del;          /* x_i - x_j (minimum image) */
-    REAL rsq;           /* |del|^2 */
-    REAL r;             /* |del| */
-    REAL delta;         /* overlap radsum - r (the laws read r and delta from here:
-                         * with SPLIT_POS contact_refine computes them from the
-                         * split positions) */
-    REAL radi, radj;    /* radii (radj = 0 for a flat wall) */
-    REAL radsum;        /* radi + radj */
-    REAL reff;          /* radi radj / radsum (radi for a wall) */
-    REAL3 vr;           /* v_i - v_j */
-    REAL3 omi, omj;     /* angular velocities (omj = 0 for a wall) */
-    REAL meff;          /* effective mass (LAMMPS: frozen partner -> other mass) */
-    REAL dt;            /* time step */
-    int shearupdate;    /* 0 during setup: history is not advanced */
-    int approach;       /* 1: the caller also evaluates pairs apart that one
-                         * drift at their normal rate brings into or out of
-                         * contact (PAIR_APPROACH, contact_normal_linear) */
-};
-
-/* What an evaluator returns for one contact: the force on i (the force on j
- * is exactly -f) and the torques in two parts, a lever-arm part tc and an
- * antisymmetric part tr (rolling resistance; zero for most laws):
- *   torque on i = -radi tc - tr,   torque on j = -radj tc + tr
- * (LAMMPS' newton-pair update, bit for bit what j's own evaluation of the
- * reversed contact gives). */
-struct contact_force {
-    REAL3 f;
-    REAL3 tc, tr;
-};
-
-static inline REAL3 contact_torque_i(const struct contact *c, const struct contact_force *o)
-{
-    return -c->radi * o->tc - o->tr;
-}
-
-/* The one way a contact is built, for a particle partner (pair_loop.cl) and
- * for a wall element (wall.cl, radj = 0, omj = 0): geometry and relative
- * motion at the contact; dt and shearupdate are set by the caller. */
-static inline struct contact contact_make(const REAL3 del, const REAL radi, const REAL radj,
-                                          const REAL reff, const REAL3 vr, const REAL3 omi,
-                                          const REAL3 omj, const REAL meff)
-{
-    struct contact c;
-    c.del = del;
-    c.rsq = del.x * del.x + del.y * del.y + del.z * del.z;
-    c.radi = radi;
-    c.radj = radj;
-    c.radsum = radi + radj;
-    c.r = sqrt(c.rsq);
-    c.delta = c.radsum - c.r;
-    c.reff = reff;
-    c.vr = vr;
-    c.omi = omi;
-    c.omj = omj;
-    c.meff = meff;
-    c.approach = 0;
-    return c;
-}
-
 /* Minimum image of one component for a periodic length L (0 = not periodic). */
 static inline REAL min_image(REAL d, REAL L)
 {
@@ -353,33 +291,3 @@ static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, co
     (void)ly;
 }
 #endif
-
-/* The separation and overlap of contact c from the split parts: del_lo is
- * the low part of x_i - x_j (SPLIT_POS). With double support they are
- * evaluated in double ((radi + radj) - |del + del_lo|), so an overlap far
- * below a float spacing of the radius keeps its digits; else in REAL.
- * Returns 0 when the refined overlap is not positive (no contact). */
-static inline int contact_refine(struct contact *c, const REAL3 del_lo)
-{
-#ifdef SPLIT_POS
-#ifdef HAS_FP64
-    const double dx = (double)c->del.x + (double)del_lo.x;
-    const double dy = (double)c->del.y + (double)del_lo.y;
-    const double dz = (double)c->del.z + (double)del_lo.z;
-    const double r = sqrt(dx * dx + dy * dy + dz * dz);
-    c->r = (REAL)r;
-    c->delta = (REAL)(((double)c->radi + (double)c->radj) - r);
-#else
-    const REAL3 d = c->del + del_lo;
-    c->r = sqrt(dot(d, d));
-    c->delta = c->radsum - c->r;
-#endif
-    c->del = c->del + del_lo;
-    c->rsq = c->r * c->r;
-    return c->delta > (REAL)0;
-#else
-    (void)c;
-    (void)del_lo;
-    return 1;
-#endif
-}

@@ -47,23 +47,32 @@ static inline REAL wall_jkr_reach(__global const REAL *p, const REAL radi)
     return radi - grn_jkr_pulloff(E, coh, radi);
 }
 #define WALL_REACH_1(p, radi) wall_jkr_reach(p, radi)
-#define WALL_TOUCHED_1(p, hrow) ((hrow)[(int)(p)[GRW_HTOUCH]] != (REAL)0)
+#define WALL_HOLD_1(p) ((int)(p)[GRW_HTOUCH])
 
-WALL_KERNEL(wall_gran_hooke, gran_hooke_eval)
-WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_eval)
-WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_eval)
-WALL_KERNEL_ROW(wall_gran_granular, wall_granular_eval)
-WALL_KERNEL_HW(wall_gran_granular_jkr, wall_granular_eval, 1, 0, 1)
+/* the laws' contact bodies (kernels/contact.cl) */
+CONTACT_BODY(gran_hooke_body, gran_hooke_eval, 0, TCOL_OF(gran_hooke_eval))
+CONTACT_BODY(gran_hooke_history_body, gran_hooke_history_eval, 0,
+             TCOL_OF(gran_hooke_history_eval))
+CONTACT_BODY(gran_hertz_history_body, gran_hertz_history_eval, 0,
+             TCOL_OF(gran_hertz_history_eval))
+CONTACT_BODY(wall_granular_body, wall_granular_eval, 1, TCOL_OF(wall_granular_eval))
+
+/* plane and cylinder walls (fix wall/gran): kernel, body, row form, approach, jkr */
+WALL_KERNEL(wall_gran_hooke, gran_hooke_body, 0, 0, 0)
+WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_body, 0, 0, 0)
+WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_body, 0, 0, 0)
+WALL_KERNEL(wall_gran_granular, wall_granular_body, 1, 0, 0)
+WALL_KERNEL(wall_gran_granular_jkr, wall_granular_body, 1, 0, 1)
 
 /* mesh walls (fix wall/gran ... mesh): the same laws against triangles */
-MESH_KERNEL(mesh_gran_hooke, gran_hooke_eval)
-MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_eval)
-MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_eval)
-MESH_KERNEL_ROW(mesh_gran_granular, wall_granular_eval)
+MESH_KERNEL(mesh_gran_hooke, gran_hooke_body, 0, 0)
+MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_body, 0, 0)
+MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_body, 0, 0)
+MESH_KERNEL(mesh_gran_granular, wall_granular_body, 1, 0)
 
 /* region walls (fix wall/gran/region): the same laws against region surfaces */
-REGION_KERNEL(region_gran_hooke, gran_hooke_eval)
-REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_eval)
-REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_eval)
-REGION_KERNEL_ROW(region_gran_granular, wall_granular_eval)
-REGION_KERNEL_HW(region_gran_granular_jkr, wall_granular_eval, 1, 1)
+REGION_KERNEL(region_gran_hooke, gran_hooke_body, 0, 0)
+REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_body, 0, 0)
+REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_body, 0, 0)
+REGION_KERNEL(region_gran_granular, wall_granular_body, 1, 0)
+REGION_KERNEL(region_gran_granular_jkr, wall_granular_body, 1, 1)

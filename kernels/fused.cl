@@ -10,13 +10,7 @@
  * fix_freeze.cl, fix_viscous.cl, fix_nve.cl, fix_nve_sphere.cl), so fused
  * and separate runs agree bit for bit. */
 
-#define FOP_GRAVITY 1               /* f += m g          prm: gx gy gz */
-#define FOP_FREEZE 2                /* f = torque = 0 */
-#define FOP_VISCOUS 3               /* f -= gamma_t v    prm: gamma per type */
-#define FOP_NVE_INITIAL 4           /* v += dtf/m f; x += dtv v          prm: dtv dtf */
-#define FOP_NVE_SPHERE_INITIAL 5    /* and omega += dtf/(I m r^2) torque prm: dtv dtf I */
-#define FOP_NVE_FINAL 6             /* v += dtf/m f                      prm: dtf */
-#define FOP_NVE_SPHERE_FINAL 7      /* and omega += dtf/(I m r^2) torque prm: dtf I */
+/* The ops (enum fused_kind) and their layout: kernels/fused_layout.h */
 
 /* The state an op may read or change, held in registers by the kernel. */
 struct fused_atom {
@@ -30,10 +24,10 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
                                const int count, __global const REAL *prm)
 {
     for (int k = first; k < first + count; k++) {
-        const int kind = ops[3 * k];
-        if (!(a->mask & (uint)ops[3 * k + 1]))
+        const int kind = ops[FOP_W * k + FOP_KIND];
+        if (!(a->mask & (uint)ops[FOP_W * k + FOP_GROUP]))
             continue;
-        __global const REAL *p = prm + ops[3 * k + 2];
+        __global const REAL *p = prm + ops[FOP_W * k + FOP_PRM];
         if (kind == FOP_GRAVITY) {
             const REAL m = a->m;
             a->f.x += m * p[0];

@@ -4,8 +4,12 @@
  * pair_gran_*.cpp so results match LAMMPS bit for bit, and every term is
  * exactly antisymmetric under i <-> j. Static inline: free when unused. */
 
-/* Relative motion at the contact: vnnr = vr.del, and the tangential relative
- * velocity of the contact points vtr = vt - del x wr, wr = (radi omi + radj omj)/r. */
+/* Relative motion at the contact in LAMMPS pair gran's form: vnnr = vr.del,
+ * and the tangential relative velocity of the contact points
+ * vtr = vt - del x wr, wr = (radi omi + radj omj)/r, formed from del (not
+ * from the unit normal as the contact's vt and vtr are, kernels/contact.cl)
+ * to stay bit for bit with LAMMPS; 1/r, 1/rsq, vr.del and radi omi + radj
+ * omj are the contact's. */
 struct gran_kin {
     REAL r, rinv, rsqinv;
     REAL vnnr;
@@ -17,19 +21,19 @@ static inline struct gran_kin gran_kinematics(const struct contact *c)
     struct gran_kin k;
     const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
     k.r = c->r;
-    k.rinv = (REAL)1 / k.r;
-    k.rsqinv = (REAL)1 / c->rsq;
+    k.rinv = c->rinv;
+    k.rsqinv = c->rsqinv;
 
     const REAL vr1 = c->vr.x, vr2 = c->vr.y, vr3 = c->vr.z;
-    k.vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+    k.vnnr = c->vdel;
     const REAL vn1 = delx * k.vnnr * k.rsqinv;
     const REAL vn2 = dely * k.vnnr * k.rsqinv;
     const REAL vn3 = delz * k.vnnr * k.rsqinv;
     const REAL vt1 = vr1 - vn1, vt2 = vr2 - vn2, vt3 = vr3 - vn3;
 
-    const REAL wr1 = (c->radi * c->omi.x + c->radj * c->omj.x) * k.rinv;
-    const REAL wr2 = (c->radi * c->omi.y + c->radj * c->omj.y) * k.rinv;
-    const REAL wr3 = (c->radi * c->omi.z + c->radj * c->omj.z) * k.rinv;
+    const REAL wr1 = c->w.x * k.rinv;
+    const REAL wr2 = c->w.y * k.rinv;
+    const REAL wr3 = c->w.z * k.rinv;
 
     k.vtr1 = vt1 - (delz * wr2 - dely * wr3);
     k.vtr2 = vt2 - (delx * wr3 - delz * wr1);

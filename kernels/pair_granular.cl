@@ -277,10 +277,8 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
             h[k] = 0;
         return;
     }
-    const REAL r = c->r, rinv = (REAL)1.0 / r; /* c->r, c->delta: refined in single */
-    const REAL3 n = (REAL3)(c->del.x * rinv, c->del.y * rinv, c->del.z * rinv);
-    const REAL3 vr = c->vr;
-    const REAL vnnr = vr.x * n.x + vr.y * n.y + vr.z * n.z;
+    const REAL3 n = c->n; /* the contact's kinematics (kernels/contact.cl) */
+    const REAL vnnr = c->vn;
     const REAL meff = c->meff;
     const REAL delta = c->delta, dR = delta * Reff;
 
@@ -303,10 +301,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
         Fntot = 0;
 
     /* tangential relative velocity at the contact */
-    const REAL3 vt = vr - n * vnnr;
-    const REAL3 wr = c->radi * c->omi + c->radj * c->omj;
-    const REAL3 vtr = (REAL3)(vt.x - (n.z * wr.y - n.y * wr.z), vt.y - (n.x * wr.z - n.z * wr.x),
-                              vt.z - (n.y * wr.x - n.x * wr.y));
+    const REAL3 vtr = c->vtr;
     const REAL vrel = sqrt(vtr.x * vtr.x + vtr.y * vtr.y + vtr.z * vtr.z);
 
     /* the normal load of the Coulomb limits: |Fne + 2 F_pulloff| for jkr;
@@ -365,7 +360,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
         out->tr = -tw;
         return;
     }
-    out->tc = (r / radsum) * tor;
+    out->tc = (c->r / radsum) * tor;
     out->tr = (delta * (c->radi - c->radj) / ((REAL)2 * radsum)) * tor - tw;
 }
 

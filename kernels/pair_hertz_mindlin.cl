@@ -24,20 +24,18 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
 {
     const REAL kn = param[HM_KN], kt = param[HM_KT], cd = param[HM_CDAMP], mu = param[HM_MU];
     const REAL mur = param[HM_MUR];
-    const REAL r = c->r;
-    const REAL3 n = c->del * ((REAL)1 / r);
+    const REAL3 n = c->n;
     const REAL delta = c->delta;
     const REAL a = sqrt(c->reff * delta);
     const REAL meff = c->meff;
 
-    const REAL vn = dot(c->vr, n);
+    const REAL vn = c->vn;
     const REAL sr = sqrt(c->reff);
     const REAL fnmag = contact_normal_force(NORMAL_HERTZ, (REAL)0.4 * kn * sr,
                                             (REAL)0.8 * cd * sqrt((REAL)1.5 * kn * sr * meff),
                                             delta, -vn, meff, c->dt);
 
-    const REAL3 w = c->radi * c->omi + c->radj * c->omj;
-    const REAL3 vt = c->vr - vn * n + cross(n, w);
+    const REAL3 vt = c->vtr; /* the contact points' relative velocity */
 
     REAL3 s = *shear;
     if (c->shearupdate)

@@ -25,26 +25,20 @@ static inline void linear_restitution_eval(const struct contact *c,
     (void)shear;
     const REAL ke = param[LR_KE], kf = param[LR_KF], mu = param[LR_MU];
     const REAL ceta = param[LR_CETA], ctcol = param[LR_CTCOL], torque = param[LR_TORQUE];
-    const REAL r = c->r;
-    const REAL rinv = (REAL)1 / r;
-    const REAL3 n = c->del * rinv;
+    const REAL3 n = c->n;
     const REAL delta = c->delta;
     const REAL sm = sqrt(c->meff);
     const REAL eta = ceta * sm;
     const REAL tcol = ctcol * sm;
 
-    const REAL vn = dot(c->vr, n);
+    const REAL vn = c->vn;
     const REAL fnmag =
         c->approach ? contact_normal_linear(eta, tcol, delta, -vn, c->meff, c->dt, c->radsum,
                                             !c->shearupdate)
                     : contact_normal_force(NORMAL_LINEAR, (REAL)0.5 * ke, eta, delta, -vn, c->meff,
                                            c->dt);
-    REAL3 ut = c->vr - vn * n;
-    if (torque != (REAL)0) {
-        /* relative velocity of the contact points: + n x (radi omi + radj omj) */
-        const REAL3 w = c->radi * c->omi + c->radj * c->omj;
-        ut += cross(n, w);
-    }
+    /* with torque, the relative velocity of the contact points */
+    const REAL3 ut = torque != (REAL)0 ? c->vtr : c->vt;
     const REAL utmag = length(ut);
     REAL3 ft = (REAL3)(0);
     if (utmag > (REAL)0) {

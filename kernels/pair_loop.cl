@@ -20,42 +20,19 @@
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
-/* The contact between i and j as the evaluators see it (del = x_i - x_j,
- * already computed: the rest is loaded only for pairs that interact). */
-static inline struct contact pair_contact(const int i, const int j, const REAL3 del,
-                                          const REAL radi, const REAL radj,
-                                          __global const REAL *v, __global const REAL *omega,
-                                          __global const REAL *rmass, __global const uint *mask,
-                                          const uint freezebit)
-{
-#ifdef HAS_ROTATION
-    const REAL3 omi = vload3(i, omega), omj = vload3(j, omega);
+/* the pair law's contact body (kernels/contact.cl); pair granular's row
+ * form keeps no accuracy record */
+#ifdef PAIR_EVAL_ROW
+#define PAIR_ROW 1
+CONTACT_BODY(pair_body, PAIR_EVAL_ROW, 1, contact_no_tcol)
 #else
-    const REAL3 omi = (REAL3)(0), omj = (REAL3)(0);
+#define PAIR_ROW 0
+CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 #endif
-    const REAL mi = rmass[i], mj = rmass[j];
-    REAL meff = mi * mj / (mi + mj);
-    if (mask[i] & freezebit)
-        meff = mj;
-    if (mask[j] & freezebit)
-        meff = mi;
-    return contact_make(del, radi, radj, radi * radj / (radi + radj), vload3(i, v) - vload3(j, v),
-                        omi, omj, meff);
-}
-
-#ifdef PAIR_APPROACH
-/* |normal rate| dt > gap: the next drift at this rate closes the gap, or
- * the last one opened it (the pair is apart: rsq >= radsum^2) */
-static inline int pair_within_drift(const int i, const int j, const REAL3 del, const REAL rsq,
-                                    const REAL radsum, __global const REAL *v, const REAL dt)
-{
-    const REAL dv = fabs(dot(vload3(i, v) - vload3(j, v), del)) * dt;
-    /* r (r - radsum) >= (rsq - radsum^2) / 2: most pairs leave without the sqrt */
-    if (dv <= (REAL)0.5 * (rsq - radsum * radsum))
-        return 0;
-    const REAL r = sqrt(rsq);
-    return dv > r * (r - radsum);
-}
+#ifdef HAS_HISTORY
+#define PAIR_HIST_N HIST_N
+#else
+#define PAIR_HIST_N 0
 #endif
 
 __kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,
@@ -76,101 +53,78 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
     if (c >= ncontact)
         return;
     const int i = ci[c], j = cj[c];
-    REAL3 del = vload3(i, x) - vload3(j, x);
+    struct contact_site s;
+    s.del = vload3(i, x) - vload3(j, x);
 #ifdef VREMAP
-    const REAL3 raw = del;
+    const REAL3 raw = s.del;
 #else
     (void)hrate;
     (void)vgroup;
 #endif
-    MINIMG3(del);
-#ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/common.cl) */
-    const REAL3 del_lo = vload3(i, xlo) - vload3(j, xlo);
-    const REAL3 dtest = del + del_lo;
+    MINIMG3(s.del);
+#ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/contact.cl) */
+    s.del_lo = vload3(i, xlo) - vload3(j, xlo);
 #else
-    const REAL3 del_lo = (REAL3)(0);
-    const REAL3 dtest = del;
+    s.del_lo = (REAL3)(0);
 #endif
-    const REAL radi = radius[i], radj = radius[j];
-    struct contact_force out;
-    out.f = out.tc = out.tr = (REAL3)(0);
-    struct contact k;
-    int touch = 0;
+    s.radi = radius[i];
+    s.radj = radius[j];
+    s.rwall = 0;
+    s.rgiven = -1;
+    s.reach = s.radi + s.radj;
+    s.acts = 1;
+    s.inclusive = 0;
+    s.hold = -1;
+    s.hzero = PAIR_HIST_N > 0 ? HIST_ZERO_N : 0;
+    s.note = !PAIR_ROW;
+    s.note_idx = c;
+    s.acode = 0;
+    s.refine = 1;
 #ifdef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
-                      * PAIR_EVAL, whose terms gate themselves (pair_hybrid_overlay.cl) */
-    k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
-    contact_refine(&k, del_lo);
-    touch = 1;
+                      * the law, whose terms gate themselves (pair_hybrid_overlay.cl) */
+    s.gated = 1;
+    s.approach = 0;
 #else
-    const REAL radsum = radi + radj;
-    const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;
-    if (rsq < radsum * radsum) {
-        k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
-        touch = contact_refine(&k, del_lo);
-    }
-#ifdef PAIR_APPROACH /* also pairs apart that one drift at their normal rate
-                      * brings into or out of contact (contact_normal_linear) */
-    if (!touch && pair_within_drift(i, j, dtest, rsq, radsum, v, dt)) {
-        k = pair_contact(i, j, del, radi, radj, v, omega, rmass, mask, freezebit);
-        contact_refine(&k, del_lo);
-        touch = 1;
-    }
-#endif
-#endif
-#ifdef VREMAP /* the partner's image streams with the box (LAMMPS's ghost velocities) */
-    if (touch && (mask[j] & vgroup))
-        k.vr -= image_velocity(image_count(raw, del, Lx, Ly, Lz, xy, xz, yz), hrate);
-#endif
-    if (!touch) {
-#ifdef HAS_HISTORY
-        /* a separated pair forgets its history; most are zero already */
-        __global REAL *hrow = shear + (size_t)c * HIST_N;
-        int any = 0;
-        for (int q = 0; q < HIST_ZERO_N; q++)
-            any |= hrow[q] != (REAL)0;
-        if (any)
-            for (int q = 0; q < HIST_ZERO_N; q++)
-                hrow[q] = 0;
-#endif
-    } else {
-        k.dt = dt;
-        k.shearupdate = shearupdate;
-#if defined(PAIR_APPROACH) && !defined(HAS_COHESION)
-        k.approach = 1;
-#endif
-        __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
-#ifdef PAIR_EVAL_ROW /* history of any width: the evaluator takes the whole row */
-        REAL h[HIST_N];
-#ifdef HAS_HISTORY
-        for (int q = 0; q < HIST_N; q++)
-            h[q] = shear[(size_t)c * HIST_N + q];
-#endif
-        PAIR_EVAL_ROW(&k, p, h, &out);
-#ifdef HAS_HISTORY
-        for (int q = 0; q < HIST_N; q++)
-            shear[(size_t)c * HIST_N + q] = h[q];
-#endif
+    s.gated = 0;
+#ifdef PAIR_APPROACH
+    s.approach = 1;
 #else
-#ifdef HAS_HISTORY
-        REAL3 sh = vload3(c, shear);
-#else
-        REAL3 sh = (REAL3)(0);
-#endif
-        PAIR_EVAL(&k, p, &sh, &out);
-        /* collision resolution of the contacts that happen (accuracy.cl) */
-        if (k.rsq < k.radsum * k.radsum)
-            ACC_NOTE_PAIR(PAIR_EVAL, c, &k, p, acc, astep, step);
-#ifdef HAS_HISTORY
-        vstore3(sh, c, shear);
+    s.approach = 0;
 #endif
 #endif
-    }
+    struct contact_partner pj;
+    pj.j = j;
+    pj.freezebit = freezebit;
+    pj.mask = mask;
+#ifdef VREMAP
+    pj.vremap = (mask[j] & vgroup) != 0;
+    pj.vimage = pj.vremap ? image_velocity(image_count(raw, s.del, Lx, Ly, Lz, xy, xz, yz), hrate)
+                          : (REAL3)(0);
+#endif
+    struct contact_atoms a;
+    a.v = v;
+    a.omega = omega;
+    a.rmass = rmass;
+    a.dt = dt;
+    a.shearupdate = shearupdate;
+    a.acc = acc;
+    a.astep = astep;
+    a.step = step;
+    REAL h[PAIR_ROW ? HIST_N : 3];
+    __global REAL *hrow = shear + (size_t)c * HIST_N;
+    for (int q = 0; q < (PAIR_ROW ? HIST_N : 3); q++)
+        h[q] = q < PAIR_HIST_N ? hrow[q] : (REAL)0;
+    __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
+    struct contact_out o;
+    o.f = o.ti = o.tj = (REAL3)(0);
+    const int acted = pair_body(CONTACT_PAIR, i, &s, &pj, &a, p, h, &o);
+    contact_hist_store(hrow, h, acted ? PAIR_HIST_N : s.hzero, acted);
     const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
-    vstore3(out.f, si, recf);
-    vstore3(-out.f, sj, recf);
+    vstore3(o.f, si, recf);
+    vstore3(-o.f, sj, recf);
 #ifdef HAS_ROTATION
-    vstore3(-radi * out.tc - out.tr, si, rect);
-    vstore3(-radj * out.tc + out.tr, sj, rect);
+    vstore3(o.ti, si, rect);
+    vstore3(o.tj, sj, rect);
 #endif
 }
 #endif /* PAIR_EVAL || PAIR_EVAL_ROW */

@@ -6,15 +6,15 @@
  * the closest point as del = x - p (from the wall to the particle), the
  * curvature radius rwall of the surface there (0 = flat, < 0 concave: the
  * inside of a cylinder) and the velocity of the surface at p. The contact
- * is then built by contact_make (common.cl), exactly as for two particles,
- * with the wall as partner j (radj = 0, omj = 0, meff = m_i) and
- *   reff = radi (flat) or radi rwall / (rwall + radi) (LAMMPS' choice).
+ * is then evaluated by the one contact body (kernels/contact.cl), exactly as
+ * for two particles, with the wall as partner j (radj = 0, omj = the wall's
+ * angular velocity, meff = m_i, reff = wall_reff(radi, rwall)).
  * Contact history is kept per (particle, wall element): 3 REAL per element
  * per atom, zeroed while the element does not touch the particle. Each
  * contact also updates the particle's accuracy record (acc, astep; wall
  * code acode; kernels/accuracy.cl).
  *
- * Kinds (WALL_*, src/wall.h):
+ * Kinds (enum wall_kind, kernels/wall_layout.h):
  *   plane pair   elements lo face (0) and hi face (1) normal to `axis`; as in
  *                LAMMPS fix wall/gran only the nearer face acts:
  *                del = (x_a - lo) e_a, or -(hi - x_a) e_a
@@ -29,8 +29,6 @@
  *   region       region surfaces (kernels/wall_region.cl REGION_KERNEL): the
  *                contacts of a LAMMPS region, history slots keyed by wall id */
 
-#define WALL_PLANE 0
-#define WALL_ZCYLINDER 1
 
 struct wall_geom {
     int kind, axis;
@@ -39,6 +37,23 @@ struct wall_geom {
     int cyl_shear;          /* zcylinder: azimuthal surface speed vshear */
     REAL vshear;
 };
+
+static inline struct wall_geom wall_geom_of(const int kind, const int axis, const REAL lo,
+                                            const REAL hi, const REAL radius, const REAL vwx,
+                                            const REAL vwy, const REAL vwz, const int cyl_shear,
+                                            const REAL vshear)
+{
+    struct wall_geom w;
+    w.kind = kind;
+    w.axis = axis;
+    w.lo = lo;
+    w.hi = hi;
+    w.radius = radius;
+    w.v = (REAL3)(vwx, vwy, vwz);
+    w.cyl_shear = cyl_shear;
+    w.vshear = vshear;
+    return w;
+}
 
 /* Closest point of element e to a sphere at x (radius radi): 1 when e may
  * touch it, with del, rwall and the surface velocity vwall filled. */
@@ -73,22 +88,7 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
     return 1;
 }
 
-/* The low part of the gap del of the sphere's hi part (SPLIT_POS): the normal
- * component of the position's low part xl, so a flat or curved wall sees the
- * particle's 48-bit position (contact_refine); tangential parts do not
- * change the gap. */
-static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
-{
-    const REAL dd = dot(del, del);
-    return dd > (REAL)0 ? (dot(xl, del) / dd) * del : (REAL3)(0);
-}
 
-/* One work-item per atom of the group: every element of the wall is a
- * contact source evaluated through EVAL; forces and torques are added to f
- * and torque in element order. The parameters are one packed set (by_type
- * 0) or the pair style's set of type pair (t_i, t_i). inclusive: a contact
- * at exactly |del| = radi counts (LAMMPS fix wall/gran); else it does not
- * (the pair contract of fix wall/pair). */
 /* The arguments every wall kernel starts with, in the order src/wall.c
  * (wall_bind_atoms) binds them: the atoms of the group, the wall's history
  * and the accuracy records (kernels/accuracy.cl). */
@@ -99,16 +99,97 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         __global REAL *torque, __global REAL *history, const int has_history,                  \
         __global REAL *acc, __global int *astep, const int acode, const int step
 
-#define WALL_KERNEL(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 0, 0, 0)
-#define WALL_KERNEL_ROW(NAME, EVAL) WALL_KERNEL_HW(NAME, EVAL, 1, 0, 0)
-/* APPROACH 1: EVAL also takes planes the sphere is apart from that one
- * drift at its normal rate brings into or out of contact (c.approach set;
- * pair_style approach, linear/restitution with fix wall/pair, which has no
- * cylinder: a cylinder acts only on spheres it touches). JKR 1: a jkr wall
- * (kernels/fix_wall_gran.cl WALL_JKR_1): the contact reaches to WALL_REACH
- * beyond touch and is held there only once it has touched (the touch flag of
- * its history row); 0 folds either away. */
-#define WALL_KERNEL_HW(NAME, EVAL, ROW, APPROACH, JKR)                                         \
+/* WALL_HMAX: kernels/wall_layout.h */
+#define WALL_ROW_N(ROW) ((ROW) ? WALL_HMAX : 3)
+
+static inline struct contact_atoms wall_atoms(__global const REAL *v, __global const REAL *omega,
+                                              __global const REAL *rmass, const REAL dt,
+                                              const int shearupdate, __global REAL *acc,
+                                              __global int *astep, const int step)
+{
+    struct contact_atoms a;
+    a.v = v;
+    a.omega = omega;
+    a.rmass = rmass;
+    a.dt = dt;
+    a.shearupdate = shearupdate;
+    a.acc = acc;
+    a.astep = astep;
+    a.step = step;
+    return a;
+}
+
+/* The site of a wall contact of particle i (radius radi) before its
+ * geometry is found: a refined, exclusive, noted contact that forgets hw
+ * REAL of history when it does not act. */
+static inline struct contact_site wall_site(const int i, const REAL radi, const REAL reach,
+                                            const int hw, const int acode)
+{
+    struct contact_site s;
+    s.del = s.del_lo = (REAL3)(0);
+    s.radi = radi;
+    s.radj = 0;
+    s.rwall = 0;
+    s.rgiven = -1;
+    s.reach = reach;
+    s.acts = 1;
+    s.gated = 0;
+    s.refine = 1;
+    s.approach = 0;
+    s.inclusive = 0;
+    s.hold = -1;
+    s.hzero = hw;
+    s.note = 1;
+    s.note_idx = i;
+    s.acode = acode;
+    return s;
+}
+
+/* A history row of hw REAL into the private row h of hmax (zero beyond hw) */
+static inline void contact_hist_load(REAL *h, __global const REAL *row, const int hw,
+                                     const int hmax)
+{
+    for (int q = 0; q < hmax; q++)
+        h[q] = q < hw ? row[q] : (REAL)0;
+}
+
+/* The wall's parameter set for type t_i: one packed set (by_type 0) or the
+ * pair style's set of type pair (t_i, t_i). */
+static inline __global const REAL *wall_param(__global const REAL *param, const int by_type,
+                                              const int ti, const int ntypes, const int nparam)
+{
+    return by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;
+}
+
+#ifdef HAS_ROTATION
+#define WALL_ADD_TORQUE(torque, i, t) vstore3(vload3(i, torque) + (t), i, torque)
+#else
+#define WALL_ADD_TORQUE(torque, i, t) (void)(t)
+#endif
+
+/* The reach of a wall contact (radi; a jkr wall's: WALL_REACH_1) and the row
+ * index of its touch flag (WALL_HOLD_1; -1: none), both defined where a jkr
+ * kernel is instantiated (kernels/fix_wall_gran.cl). */
+#define WALL_REACH(JKR, p, radi) WALL_REACH_PASTE(JKR)(p, radi)
+#define WALL_REACH_PASTE(JKR) WALL_REACH_##JKR
+#define WALL_REACH_0(p, radi) (radi)
+#define WALL_HOLD(JKR, p) WALL_HOLD_PASTE(JKR)(p)
+#define WALL_HOLD_PASTE(JKR) WALL_HOLD_##JKR
+#define WALL_HOLD_0(p) (-1)
+
+/* Plane and cylinder walls: one work-item per atom of the group; every
+ * element of the wall is a contact site (wall_point) run through the law's
+ * contact body; forces and torques are added to f and torque in element
+ * order. History: has_history REAL per element per atom. inclusive: a
+ * contact at exactly |del| = radi counts (LAMMPS fix wall/gran); else it
+ * does not (the pair contract of fix wall/pair).
+ * BODY: a CONTACT_BODY instance; ROW its form. APPROACH 1: also planes the
+ * sphere is apart from that one drift at its normal rate brings into or out
+ * of contact (pair_style approach, linear/restitution with fix wall/pair,
+ * which has no cylinder: a cylinder acts only on spheres it touches). JKR 1:
+ * a jkr wall: the contact reaches to WALL_REACH beyond touch and is held
+ * there only once it has touched; 0 folds either away. */
+#define WALL_KERNEL(NAME, BODY, ROW, APPROACH, JKR)                                            \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
@@ -120,124 +201,55 @@ static inline REAL3 wall_gap_lo(const REAL3 del, const REAL3 xl)
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
             return;                                                                            \
-        struct wall_geom w;                                                                    \
-        w.kind = kind;                                                                         \
-        w.axis = axis;                                                                         \
-        w.lo = lo;                                                                             \
-        w.hi = hi;                                                                             \
-        w.radius = wradius;                                                                    \
-        w.v = (REAL3)(vwx, vwy, vwz);                                                          \
-        w.cyl_shear = cyl_shear;                                                               \
-        w.vshear = vshear;                                                                     \
+        const struct wall_geom w = wall_geom_of(kind, axis, lo, hi, wradius, vwx, vwy, vwz,    \
+                                                cyl_shear, vshear);                            \
+        const struct contact_atoms a =                                                         \
+            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+        __global const REAL *p = wall_param(param, by_type, type[i] - 1, ntypes, nparam);      \
+        struct contact_site s =                                                                \
+            wall_site(i, radius[i], WALL_REACH(JKR, p, radius[i]), has_history, acode);        \
+        s.inclusive = inclusive;                                                               \
+        s.approach = APPROACH;                                                                 \
+        s.hold = WALL_HOLD(JKR, p);                                                            \
         const REAL3 xi = vload3(i, x), xil = POS_LOAD_LO(i);                                   \
-        const REAL radi = radius[i];                                                           \
-        const int ti = type[i] - 1;                                                            \
-        __global const REAL *p =                                                               \
-            by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;                     \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
         for (int e = 0; e < nelem; e++) {                                                      \
-            const size_t slot = (size_t)i * nelem + e;                                         \
-            REAL3 del, vwall;                                                                  \
-            REAL rwall;                                                                        \
-            const int acts = wall_point(&w, e, xi, radi, &del, &rwall, &vwall);                \
-            WALL_GAP_LO(del_lo, del, xil);                                                     \
-            const REAL3 dtest = del + del_lo;                                                  \
-            const REAL rsq = dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;        \
-            struct contact c;                                                                  \
-            const REAL reach = WALL_REACH(JKR, p, radi);                                       \
-            int touch = acts && (inclusive ? rsq <= reach * reach : rsq < reach * reach);      \
-            __global REAL *hrow = history + slot * (size_t)has_history;                        \
-            if (JKR && touch && !WALL_TOUCHED(JKR, p, hrow) && rsq > radi * radi)              \
-                touch = 0; /* not touched yet: no hold beyond touch */                         \
-            const int near_ = APPROACH && acts && !touch &&                                    \
-                              wall_within_drift(vload3(i, v) - vwall, dtest, rsq, radi, dt);   \
-            if (touch || near_) {                                                              \
-                WALL_OMEGA(omi, omega, i);                                                     \
-                c = contact_make(del, radi, 0,                                                 \
-                                 rwall == (REAL)0 ? radi : radi * rwall / (rwall + radi),      \
-                                 vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);             \
-                touch = contact_refine(&c, del_lo) || APPROACH || JKR;                         \
-                c.approach = APPROACH;                                                         \
+            __global REAL *hrow = history + ((size_t)i * nelem + e) * (size_t)has_history;     \
+            struct contact_partner pj;                                                         \
+            pj.omwall = (REAL3)(0);                                                            \
+            s.acts = wall_point(&w, e, xi, s.radi, &s.del, &s.rwall, &pj.vwall);               \
+            s.del_lo = wall_gap_lo(s.del, xil);                                                \
+            REAL h[WALL_ROW_N(ROW)];                                                           \
+            contact_hist_load(h, hrow, has_history, WALL_ROW_N(ROW));                          \
+            struct contact_out o;                                                              \
+            const int acted = BODY(CONTACT_WALL, i, &s, &pj, &a, p, h, &o);                    \
+            contact_hist_store(hrow, h, has_history, acted);                                   \
+            if (acted) {                                                                       \
+                fsum += o.f;                                                                   \
+                tsum += o.ti;                                                                  \
             }                                                                                  \
-            if (!touch) {                                                                      \
-                for (int q = 0; q < has_history; q++)                                          \
-                    hrow[q] = 0;                                                               \
-                continue;                                                                      \
-            }                                                                                  \
-            c.dt = dt;                                                                         \
-            c.shearupdate = shearupdate;                                                       \
-            struct contact_force cf;                                                           \
-            WALL_CALL(ROW, EVAL, &c, p, hrow, has_history, &cf);                               \
-            if (!APPROACH || c.delta > (REAL)0)                                                \
-                ACC_NOTE_WALL(EVAL, i, &c, p, acode, acc, astep, step);                        \
-            fsum += cf.f;                                                                      \
-            tsum += contact_torque_i(&c, &cf);                                                 \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
 
-/* |normal rate| dt > gap for a sphere apart from its wall element (the gap
- * |dtest| - radi > 0): pair_within_drift's test */
-static inline int wall_within_drift(const REAL3 vrel, const REAL3 dtest, const REAL rsq,
-                                    const REAL radi, const REAL dt)
-{
-    const REAL r = sqrt(rsq);
-    return fabs(dot(vrel, dtest)) * dt > r * (r - radi);
-}
-/* The reach of a wall contact (radi; a jkr wall's: WALL_REACH_1) and the
- * touch flag of its history row (WALL_TOUCHED_1), both defined where a jkr
- * kernel is instantiated (kernels/fix_wall_gran.cl). */
-#define WALL_REACH(JKR, p, radi) WALL_REACH_PASTE(JKR)(p, radi)
-#define WALL_REACH_PASTE(JKR) WALL_REACH_##JKR
-#define WALL_REACH_0(p, radi) (radi)
-#define WALL_TOUCHED(JKR, p, hrow) WALL_TOUCHED_PASTE(JKR)(p, hrow)
-#define WALL_TOUCHED_PASTE(JKR) WALL_TOUCHED_##JKR
-#define WALL_TOUCHED_0(p, hrow) 1
-
-/* One evaluation with the contact's history row hrow of hw REAL (0: none):
- * ROW 0 an evaluator of a 3-REAL shear (REAL3 *), ROW 1 one of the whole
- * row (REAL *, up to WALL_HMAX, pair granular's sub-models). */
-#define WALL_HMAX 10
-#define WALL_CALL(ROW, EVAL, c, p, hrow, hw, cf) WALL_CALL_PASTE(ROW)(EVAL, c, p, hrow, hw, cf)
-#define WALL_CALL_PASTE(ROW) WALL_CALL_##ROW
-#define WALL_CALL_0(EVAL, c, p, hrow, hw, cf)                                                  \
-    do {                                                                                       \
-        REAL3 sh_ = (hw) ? vload3(0, hrow) : (REAL3)(0);                                       \
-        EVAL(c, p, &sh_, cf);                                                                  \
-        if (hw)                                                                                \
-            vstore3(sh_, 0, hrow);                                                             \
-    } while (0)
-#define WALL_CALL_1(EVAL, c, p, hrow, hw, cf)                                                  \
-    do {                                                                                       \
-        REAL h_[WALL_HMAX];                                                                    \
-        for (int q_ = 0; q_ < WALL_HMAX; q_++)                                                 \
-            h_[q_] = q_ < (hw) ? (hrow)[q_] : (REAL)0;                                         \
-        EVAL(c, p, h_, cf);                                                                    \
-        for (int q_ = 0; q_ < (hw); q_++)                                                      \
-            (hrow)[q_] = h_[q_];                                                               \
-    } while (0)
-
-#ifdef SPLIT_POS
-#define WALL_GAP_LO(name, del, xl) const REAL3 name = wall_gap_lo(del, xl)
+/* fix wall/pair: the active pair style's law (kernels/pair_loop.cl's
+ * pair_body is the pair kernel's; this is the same law against a wall). In
+ * the row form (pair granular) the law's history row is the wall's. */
+#if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
+#ifdef PAIR_EVAL_ROW
+CONTACT_BODY(wall_pair_body, PAIR_EVAL_ROW, 1, contact_no_tcol)
+#define WALL_PAIR_ROW 1
 #else
-#define WALL_GAP_LO(name, del, xl) const REAL3 name = (REAL3)(0)
+CONTACT_BODY(wall_pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
+#define WALL_PAIR_ROW 0
 #endif
-#ifdef HAS_ROTATION
-#define WALL_OMEGA(name, omega, i) const REAL3 name = vload3(i, omega)
-#define WALL_ADD_TORQUE(torque, i, t) vstore3(vload3(i, torque) + (t), i, torque)
-#else
-#define WALL_OMEGA(name, omega, i) const REAL3 name = (REAL3)(0)
-#define WALL_ADD_TORQUE(torque, i, t) (void)(t)
-#endif
-
-/* fix wall/pair: the active pair style's law */
-#ifdef PAIR_EVAL
 #ifdef PAIR_APPROACH
-WALL_KERNEL_HW(wall_pair, PAIR_EVAL, 0, 1, 0)
+#define WALL_PAIR_APPROACH 1
 #else
-WALL_KERNEL(wall_pair, PAIR_EVAL)
+#define WALL_PAIR_APPROACH 0
 #endif
+WALL_KERNEL(wall_pair, wall_pair_body, WALL_PAIR_ROW, WALL_PAIR_APPROACH, 0)
 #endif
 
 /* ---- mesh walls: triangles (fix mesh/surface, fix wall/gran ... mesh) ------
@@ -311,7 +323,7 @@ static inline int tri_touch(__global const int *triv, const int s, const int t)
 }
 
 #define MESH_MAXC 16   /* touching triangles examined per atom per mesh */
-#define MESH_SLOTS 4   /* history slots per atom per mesh: key (triangle + 1, 0 = free), shear */
+/* MESH_SLOTS: kernels/wall_layout.h */
 
 static inline REAL3 mat_mul(__global const REAL *R, const REAL3 v)
 {
@@ -343,36 +355,107 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
     REAL3 vb = vi;
     if (moving) {
         const REAL3 dw = mat_mul(pose, del);
-        vb = mat_tmul(pose, vi - (vload3(4, pose) + cross(vload3(5, pose), xi - dw)));
+        vb = mat_tmul(pose, vi - (vload3(POSE_V0 / 3, pose) +
+                                 cross(vload3(POSE_OMEGA / 3, pose), xi - dw)));
     }
     return wall_within_drift(vb, del, rsq, radi, dt);
 }
 
-/* One work-item per atom of the group, one launch per mesh. The mesh is
- * rigid: its triangles and their bins stay in the mesh's own frame and the
- * atom is taken there, xb = R^T (x - d) (pose: R row-major 0..8, d 9..11,
- * surface velocity V0 12..14 and omega 15..17 with v(p) = V0 + omega x p,
- * bin origin 18..20, 1 / bin size 21, torque reference point 22..24). The
- * atom's bin lists every triangle that may touch it, so the cost grows with
- * the triangles near the atom, not with the mesh size.
- *
- * One physical contact is counted once: a face contact always counts; an
- * edge or vertex contact is dropped when another touching triangle that has
- * a vertex of that edge or vertex is closer (ties: the lower triangle id
- * keeps it), i.e. the contact belongs to the nearest feature. History lives
- * in MESH_SLOTS slots per atom keyed by triangle (1 + hw REAL each: the key,
- * then the law's hw = 3 REAL of shear, or for ROW 1 the has_history REAL of
- * pair granular's sub-models, kernels/fix_wall_gran.cl); a contact whose triangle
- * has no slot takes over the slot of a triangle that no longer counts and
- * shares a vertex with it, so the shear follows a particle sliding from
- * triangle to triangle. fmesh (want_fmesh): per atom the force on the mesh
- * (3) and its torque about the reference point (3), for f_ID output. */
-#define MESH_KERNEL(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 0, 0)
-#define MESH_KERNEL_ROW(NAME, EVAL) MESH_KERNEL_HW(NAME, EVAL, 1, 0)
-/* APPROACH 1: triangles the sphere is apart from that one drift at its
- * normal rate brings into or out of contact count too (as WALL_KERNEL_HW;
- * fix mesh/surface then bins the triangles with the neighbor skin added) */
-#define MESH_KERNEL_HW(NAME, EVAL, ROW, APPROACH)                                              \
+/* The triangles of a mesh that touch the sphere at xi (radius radi; with
+ * approach, also those one drift at its normal rate brings into or out of
+ * contact), at most MESH_MAXC, in bin order: tc the triangle, rc its
+ * Voronoi region (negative: dropped, a nearer feature holds the contact),
+ * dc the separation in the mesh frame, qc its square. Returns how many. */
+static inline int mesh_candidates(__global const REAL *tri, __global const int *triv,
+                                  __global const int *cstart, __global const int *ctri,
+                                  __global const REAL *pose, const int gnx, const int gny,
+                                  const int gnz, const int moving, const REAL3 xi,
+                                  const REAL3 vi, const REAL radi, const int inclusive,
+                                  const int approach, const REAL dt, int *tc, int *rc,
+                                  REAL3 *dc, REAL *qc)
+{
+    const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(POSE_D / 3, pose)) : xi;
+    int nc = 0;
+    const REAL ginv = pose[POSE_GINV];
+    const int cx = (int)floor((xb.x - pose[POSE_GLO]) * ginv);
+    const int cy = (int)floor((xb.y - pose[POSE_GLO + 1]) * ginv);
+    const int cz = (int)floor((xb.z - pose[POSE_GLO + 2]) * ginv);
+    if (cx >= 0 && cy >= 0 && cz >= 0 && cx < gnx && cy < gny && cz < gnz) {
+        const int cell = (cz * gny + cy) * gnx + cx;
+        for (int k = cstart[cell]; k < cstart[cell + 1] && nc < MESH_MAXC; k++) {
+            const int t = ctri[k];
+            REAL3 del;
+            const int region = tri_closest(tri, t, xb, &del);
+            const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+            if ((inclusive ? rsq > radi * radi : rsq >= radi * radi) &&
+                !(approach && mesh_within_drift(pose, moving, xi, vi, del, rsq, radi, dt)))
+                continue;
+            tc[nc] = t;
+            rc[nc] = region;
+            dc[nc] = del;
+            qc[nc] = rsq;
+            nc++;
+        }
+    }
+    /* one contact per physical contact: drop edge/vertex contacts of a nearer feature */
+    for (int c = 0; c < nc; c++) {
+        if (rc[c] == MESH_FACE)
+            continue;
+        const int k = rc[c] >= MESH_VERTEX ? rc[c] - MESH_VERTEX : rc[c] - MESH_EDGE;
+        const int va = triv[3 * tc[c] + k];
+        const int vb = rc[c] >= MESH_VERTEX ? va : triv[3 * tc[c] + (k + 1) % 3];
+        for (int o = 0; o < nc; o++) {
+            if (o == c) /* dropped ones count too: the nearest of a cluster stays */
+                continue;
+            if (!tri_has(triv, tc[o], va) && !tri_has(triv, tc[o], vb))
+                continue;
+            if (qc[o] < qc[c] || (qc[o] == qc[c] && tc[o] < tc[c])) {
+                rc[c] = -1 - rc[c]; /* dropped */
+                break;
+            }
+        }
+    }
+    return nc;
+}
+
+/* The history slot of a contact with triangle t: the slot keyed by t, else
+ * the slot of a triangle that no longer counts and shares a vertex with t
+ * (the shear follows a particle sliding across an edge); -1: none (a new
+ * contact). okey: the old slots' keys (triangle + 1, 0 free). */
+static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, const int *tc,
+                                 const int *rc, __global const int *triv)
+{
+    int found = -1;
+    for (int s = 0; s < MESH_SLOTS; s++)
+        if (okey[s] == (REAL)(t + 1))
+            found = s;
+    for (int s = 0; found < 0 && s < MESH_SLOTS; s++) {
+        if (okey[s] <= 0)
+            continue;
+        const int ot = (int)okey[s] - 1;
+        int live = 0;
+        for (int o = 0; o < nc; o++)
+            live |= rc[o] >= 0 && tc[o] == ot;
+        if (!live && tri_touch(triv, ot, t))
+            found = s;
+    }
+    return found;
+}
+
+/* Mesh walls: one work-item per atom of the group, one launch per mesh.
+ * The mesh is rigid: its triangles and their bins stay in the mesh's own
+ * frame and the atom is taken there, xb = R^T (x - d) (the pose, layout
+ * POSE_* of kernels/wall_layout.h); the atom's bin lists every triangle
+ * that may touch it, so the cost grows with the triangles near the atom,
+ * not with the mesh size. fmesh (want_fmesh): per atom the force on the
+ * mesh (3) and its torque about the reference point (3), for f_ID output.
+ * BODY: a CONTACT_BODY instance; ROW its form; APPROACH as WALL_KERNEL
+ * (fix mesh/surface then bins the triangles with the neighbor skin added).
+ * The contacts found by mesh_candidates are run through the body in bin
+ * order; history slots are kept as mesh_slot_find says (1 + hw REAL each:
+ * the key, then the law's hw = 3 REAL of shear, or for ROW 1 the
+ * has_history REAL of pair granular's sub-models, kernels/fix_wall_gran.cl). */
+#define MESH_KERNEL(NAME, BODY, ROW, APPROACH)                                                 \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
@@ -394,119 +477,62 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
         }                                                                                      \
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         const REAL radi = radius[i];                                                           \
-        const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(3, pose)) : xi;                   \
-        int tc[MESH_MAXC], rc[MESH_MAXC], nc = 0;                                              \
+        int tc[MESH_MAXC], rc[MESH_MAXC];                                                      \
         REAL3 dc[MESH_MAXC];                                                                   \
         REAL qc[MESH_MAXC];                                                                    \
-        const REAL ginv = pose[21];                                                            \
-        const int cx = (int)floor((xb.x - pose[18]) * ginv);                                   \
-        const int cy = (int)floor((xb.y - pose[19]) * ginv);                                   \
-        const int cz = (int)floor((xb.z - pose[20]) * ginv);                                   \
-        if (cx >= 0 && cy >= 0 && cz >= 0 && cx < gnx && cy < gny && cz < gnz) {              \
-            const int cell = (cz * gny + cy) * gnx + cx;                                       \
-            for (int k = cstart[cell]; k < cstart[cell + 1] && nc < MESH_MAXC; k++) {          \
-                const int t = ctri[k];                                                         \
-                REAL3 del;                                                                     \
-                const int region = tri_closest(tri, t, xb, &del);                              \
-                const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;                \
-                if ((inclusive ? rsq > radi * radi : rsq >= radi * radi) &&                    \
-                    !(APPROACH && mesh_within_drift(pose, moving, xi, vload3(i, v), del, rsq,  \
-                                                    radi, dt)))                                \
-                    continue;                                                                  \
-                tc[nc] = t;                                                                    \
-                rc[nc] = region;                                                               \
-                dc[nc] = del;                                                                  \
-                qc[nc] = rsq;                                                                  \
-                nc++;                                                                          \
-            }                                                                                  \
-        }                                                                                      \
-        /* one contact per physical contact: drop edge/vertex contacts of a nearer feature */ \
-        for (int c = 0; c < nc; c++) {                                                         \
-            if (rc[c] == MESH_FACE)                                                            \
-                continue;                                                                      \
-            const int k = rc[c] >= MESH_VERTEX ? rc[c] - MESH_VERTEX : rc[c] - MESH_EDGE;      \
-            const int va = triv[3 * tc[c] + k];                                                \
-            const int vb = rc[c] >= MESH_VERTEX ? va : triv[3 * tc[c] + (k + 1) % 3];          \
-            for (int o = 0; o < nc; o++) {                                                     \
-                if (o == c) /* dropped ones count too: the nearest of a cluster stays */       \
-                    continue;                                                                  \
-                if (!tri_has(triv, tc[o], va) && !tri_has(triv, tc[o], vb))                    \
-                    continue;                                                                  \
-                if (qc[o] < qc[c] || (qc[o] == qc[c] && tc[o] < tc[c])) {                      \
-                    rc[c] = -1 - rc[c]; /* dropped */                                          \
-                    break;                                                                     \
-                }                                                                              \
-            }                                                                                  \
-        }                                                                                      \
-        const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */     \
-        REAL okey[MESH_SLOTS];                                                                 \
-        REAL osh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
-        __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;     \
+        const int nc = mesh_candidates(tri, triv, cstart, ctri, pose, gnx, gny, gnz, moving,   \
+                                       xi, vload3(i, v), radi, inclusive, APPROACH, dt, tc,    \
+                                       rc, dc, qc);                                            \
+        const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */      \
+        REAL okey[MESH_SLOTS], osh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
+        __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;    \
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
                 okey[s] = hist[(1 + hw) * s];                                                  \
                 for (int q = 0; q < hw; q++)                                                   \
                     osh[s][q] = hist[(1 + hw) * s + 1 + q];                                    \
             }                                                                                  \
-        REAL nkey[MESH_SLOTS];                                                                 \
-        REAL nsh[MESH_SLOTS][MESH_HMAX(ROW)];                                                  \
+        REAL nkey[MESH_SLOTS], nsh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
         int nnew = 0;                                                                          \
-        REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);         \
-        const REAL3 rref = (REAL3)(pose[22], pose[23], pose[24]);                              \
+        const struct contact_atoms a =                                                         \
+            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+        __global const REAL *p = p_of(param, by_type, type[i] - 1, ntypes, nparam);            \
+        struct contact_site s = wall_site(i, radi, radi, 0, acode);                            \
+        s.gated = 1; /* mesh_candidates decided */                                             \
+        s.refine = 0;                                                                          \
+        s.approach = APPROACH;                                                                 \
+        struct contact_partner pj;                                                             \
+        pj.omwall = moving ? vload3(POSE_OMEGA / 3, pose) : (REAL3)(0);                        \
+        REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);        \
+        const REAL3 rref = (REAL3)(pose[POSE_REF], pose[POSE_REF + 1], pose[POSE_REF + 2]);    \
         for (int c = 0; c < nc; c++) {                                                         \
             if (rc[c] < 0)                                                                     \
                 continue;                                                                      \
             const int t = tc[c];                                                               \
-            const REAL3 del = moving ? mat_mul(pose, dc[c]) : dc[c];                           \
-            const REAL3 cpt = xi - del;                                                        \
-            REAL3 vwall = (REAL3)(0);                                                          \
-            if (moving)                                                                        \
-                vwall = vload3(4, pose) + cross(vload3(5, pose), cpt);                         \
-            REAL sh[MESH_HMAX(ROW)];                                                           \
-            for (int q = 0; q < MESH_HMAX(ROW); q++)                                           \
-                sh[q] = 0;                                                                     \
-            if (has_history) {                                                                 \
-                int found = -1;                                                                \
-                for (int s = 0; s < MESH_SLOTS; s++)                                           \
-                    if (okey[s] == (REAL)(t + 1))                                              \
-                        found = s;                                                             \
-                for (int s = 0; found < 0 && s < MESH_SLOTS; s++) {                            \
-                    if (okey[s] <= 0)                                                          \
-                        continue;                                                              \
-                    const int ot = (int)okey[s] - 1;                                           \
-                    int live = 0;                                                              \
-                    for (int o = 0; o < nc; o++)                                               \
-                        live |= rc[o] >= 0 && tc[o] == ot;                                     \
-                    if (!live && tri_touch(triv, ot, t))                                       \
-                        found = s;                                                             \
-                }                                                                              \
-                if (found >= 0) {                                                              \
-                    for (int q = 0; q < hw; q++)                                               \
-                        sh[q] = osh[found][q];                                                 \
-                    okey[found] = 0; /* taken */                                               \
-                }                                                                              \
+            s.del = moving ? mat_mul(pose, dc[c]) : dc[c];                                     \
+            const REAL3 cpt = xi - s.del;                                                      \
+            pj.vwall = moving ? vload3(POSE_V0 / 3, pose) + cross(pj.omwall, cpt) : (REAL3)(0); \
+            REAL h[WALL_ROW_N(ROW)];                                                           \
+            for (int q = 0; q < WALL_ROW_N(ROW); q++)                                          \
+                h[q] = 0;                                                                      \
+            const int found = has_history ? mesh_slot_find(okey, t, nc, tc, rc, triv) : -1;    \
+            if (found >= 0) {                                                                  \
+                for (int q = 0; q < hw; q++)                                                   \
+                    h[q] = osh[found][q];                                                      \
+                okey[found] = 0; /* taken */                                                   \
             }                                                                                  \
-            WALL_OMEGA(omi, omega, i);                                                         \
-            struct contact ct = contact_make(del, radi, 0, radi, vload3(i, v) - vwall, omi,    \
-                                             moving ? vload3(5, pose) : (REAL3)(0), rmass[i]); \
-            ct.approach = APPROACH;                                                            \
-            ct.dt = dt;                                                                        \
-            ct.shearupdate = shearupdate;                                                      \
-            struct contact_force cf;                                                           \
-            __global const REAL *pc = p_of(param, by_type, type[i] - 1, ntypes, nparam);       \
-            MESH_EVAL(ROW, EVAL, &ct, pc, sh, &cf);                                            \
-            if (!APPROACH || ct.delta > (REAL)0)                                               \
-                ACC_NOTE_WALL(EVAL, i, &ct, pc, acode, acc, astep, step);                      \
+            struct contact_out o;                                                              \
+            BODY(CONTACT_WALL, i, &s, &pj, &a, p, h, &o);                                      \
             if (has_history && nnew < MESH_SLOTS) {                                            \
                 nkey[nnew] = (REAL)(t + 1);                                                    \
                 for (int q = 0; q < hw; q++)                                                   \
-                    nsh[nnew][q] = sh[q];                                                      \
+                    nsh[nnew][q] = h[q];                                                       \
                 nnew++;                                                                        \
             }                                                                                  \
-            fsum += cf.f;                                                                      \
-            tsum += contact_torque_i(&ct, &cf);                                              \
-            fm -= cf.f;                                                                        \
-            tm -= cross(cpt - rref, cf.f);                                                     \
+            fsum += o.f;                                                                       \
+            tsum += o.ti;                                                                      \
+            fm -= o.f;                                                                         \
+            tm -= cross(cpt - rref, o.f);                                                      \
         }                                                                                      \
         if (has_history)                                                                       \
             for (int s = 0; s < MESH_SLOTS; s++) {                                             \
@@ -523,31 +549,7 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
         }                                                                                      \
     }
 
-
-/* A mesh contact's evaluation with its history sh (MESH_HMAX(ROW) REAL): ROW 0
- * a 3-REAL shear evaluator (REAL3 *), ROW 1 one of the whole row (pair
- * granular's sub-models, the wall's width). */
-#define MESH_HMAX(ROW) MESH_HMAX_PASTE(ROW)
-#define MESH_HMAX_PASTE(ROW) MESH_HMAX_##ROW
-#define MESH_HMAX_0 3
-#define MESH_HMAX_1 WALL_HMAX
-#define MESH_EVAL(ROW, EVAL, c, p, sh, cf) MESH_EVAL_PASTE(ROW)(EVAL, c, p, sh, cf)
-#define MESH_EVAL_PASTE(ROW) MESH_EVAL_##ROW
-#define MESH_EVAL_0(EVAL, c, p, sh, cf)                                                        \
-    do {                                                                                       \
-        REAL3 s3_ = (REAL3)((sh)[0], (sh)[1], (sh)[2]);                                        \
-        EVAL(c, p, &s3_, cf);                                                                  \
-        (sh)[0] = s3_.x;                                                                       \
-        (sh)[1] = s3_.y;                                                                       \
-        (sh)[2] = s3_.z;                                                                       \
-    } while (0)
-#define MESH_EVAL_1(EVAL, c, p, sh, cf) EVAL(c, p, sh, cf)
-
 /* fix wall/pair ... mesh: the active pair style's law against triangles */
-#ifdef PAIR_EVAL
-#ifdef PAIR_APPROACH
-MESH_KERNEL_HW(mesh_pair, PAIR_EVAL, 0, 1)
-#else
-MESH_KERNEL(mesh_pair, PAIR_EVAL)
-#endif
+#if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
+MESH_KERNEL(mesh_pair, wall_pair_body, WALL_PAIR_ROW, WALL_PAIR_APPROACH)
 #endif

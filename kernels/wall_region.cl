@@ -5,7 +5,7 @@
  * plane, union and intersect of those), as pure functions of the particle.
  *
  * A region is up to RG_MAXNODE primitive nodes of RG_NODE REAL each (layout
- * RG_* below, filled by src/wall_region.c every step) and a combinator: 0 a
+ * RG_* of kernels/wall_layout.h, filled by src/wall_region.c every step) and a combinator: 0 a
  * single primitive (node 0), 1 union, 2 intersect of the nodes, with the
  * compound's side. Each node carries its own side, open faces and motion:
  * the particle is taken into the node's static frame (subtract d, rotate by
@@ -15,34 +15,7 @@
  * point, and a wall id (iwall) that keys its history. Coordinates are the
  * device's (relative to the run's origin: the host shifts the nodes). */
 
-#define RG_MAXNODE 4
-#define RG_NODE 40
-#define RG_MAXC 8       /* = WALL_REGION_MAXC in src/wall.h */
-
-/* node layout */
-#define RG_KIND 0       /* 1 block, 2 sphere, 3 cylinder, 4 cone, 5 plane */
-#define RG_INTERIOR 1
-#define RG_OPENFLAG 2
-#define RG_OPEN 3       /* open faces 0..5 as bits */
-#define RG_AXIS 4
-#define RG_WALLOFF 5    /* wall id offset inside a union / intersect */
-#define RG_MOVE 6
-#define RG_ROT 7
-#define RG_P 8          /* 8 shape parameters */
-#define RG_D 16         /* displacement */
-#define RG_SIN 19
-#define RG_COS 20
-#define RG_POINT 21
-#define RG_RUNIT 24
-#define RG_V 27
-#define RG_OMEGA 30
-#define RG_RPOINT 33
-
-#define RG_BLOCK 1
-#define RG_SPHERE 2
-#define RG_CYLINDER 3
-#define RG_CONE 4
-#define RG_PLANE 5
+/* RG_* (node layout, primitives, RG_MAXNODE, RG_MAXC): kernels/wall_layout.h */
 #define RG_BIG ((REAL)1.0e20)
 
 struct rg_contact {
@@ -183,81 +156,61 @@ static inline REAL rg_dsq(const REAL3 a, const REAL3 b)
     return d.x * d.x + d.y * d.y + d.z * d.z;
 }
 
-/* ---- surface_interior: contacts with the inner faces, 0 <= r < cutoff ---- */
-static inline int rg_interior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
-                              struct rg_contact *c)
+/* ---- surface_interior: contacts with the inner faces, 0 <= r < cutoff ----
+ * One function per primitive, x in the node's frame, contacts into c;
+ * each returns how many. */
+static inline int rg_interior_block(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                    struct rg_contact *c)
 {
     __global const REAL *p = nd + RG_P;
-    const int kind = (int)nd[RG_KIND], ax = (int)nd[RG_AXIS];
+    if (x.x < p[0] || x.x > p[1] || x.y < p[2] || x.y > p[3] || x.z < p[4] || x.z > p[5])
+        return 0;
     int n = 0;
-    if (kind == RG_BLOCK) {
-        if (x.x < p[0] || x.x > p[1] || x.y < p[2] || x.y > p[3] || x.z < p[4] || x.z > p[5])
-            return 0;
-        for (int f = 0; f < 6; f++) {
-            const int k = f >> 1;
-            const REAL delta = (f & 1) ? p[f] - rg_comp(x, k) : rg_comp(x, k) - p[f];
-            if (delta < cutoff && !rg_open(nd, f)) {
-                rg_put(&c[n], delta, rg_set((REAL3)(0), k, (f & 1) ? -delta : delta), 0, f);
-                n++;
-            }
-        }
-        return n;
-    }
-    if (kind == RG_SPHERE) {
-        const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
-        const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-        if (r > p[3] || r == 0)
-            return 0;
-        const REAL delta = p[3] - r;
-        if (delta < cutoff) {
-            rg_put(&c[0], delta, d * (1 - p[3] / r), -p[3], 0);
-            return 1;
-        }
-        return 0;
-    }
-    if (kind == RG_PLANE) {
-        const REAL dot = (x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5];
-        if (dot < cutoff && dot >= 0) {
-            rg_put(&c[0], dot, (REAL3)(dot * p[3], dot * p[4], dot * p[5]), 0, 0);
-            return 1;
-        }
-        return 0;
-    }
-    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
-    const REAL r = sqrt(d1 * d1 + d2 * d2);
-    REAL lo, hi;
-    if (kind == RG_CYLINDER) {
-        const REAL rad = p[2];
-        lo = p[3];
-        hi = p[4];
-        if (r > rad || a < lo || a > hi)
-            return 0;
-        const REAL delta = rad - r;
-        if (delta < cutoff && r > 0 && !rg_open(nd, 2)) {
-            rg_put(&c[n], delta, rg_axial(ax, 0, d1 * (1 - rad / r), d2 * (1 - rad / r)),
-                   -2 * rad, 2);
+    for (int f = 0; f < 6; f++) {
+        const int k = f >> 1;
+        const REAL delta = (f & 1) ? p[f] - rg_comp(x, k) : rg_comp(x, k) - p[f];
+        if (delta < cutoff && !rg_open(nd, f)) {
+            rg_put(&c[n], delta, rg_set((REAL3)(0), k, (f & 1) ? -delta : delta), 0, f);
             n++;
         }
-    } else { /* cone */
-        const REAL rlo = p[2], rhi = p[3];
-        lo = p[4];
-        hi = p[5];
-        const REAL cur = rlo + (a - lo) * (rhi - rlo) / (hi - lo);
-        if (r > cur || a < lo || a > hi)
-            return 0;
-        if (r > 0 && !rg_open(nd, 2)) {
-            const REAL3 slo = rg_axial(ax, lo, p[0] + d1 * rlo / r, p[1] + d2 * rlo / r);
-            const REAL3 shi = rg_axial(ax, hi, p[0] + d1 * rhi / r, p[1] + d2 * rhi / r);
-            const REAL3 xs = rg_segment(slo, shi, x);
-            const REAL3 del = x - xs;
-            const REAL dist = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
-            if (dist < cutoff) {
-                rg_put(&c[n], dist, del,
-                       -2 * (rlo + (rg_comp(xs, ax) - lo) * (rhi - rlo) / (hi - lo)), 2);
-                n++;
-            }
-        }
     }
+    return n;
+}
+
+static inline int rg_interior_sphere(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                     struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
+    const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (r > p[3] || r == 0)
+        return 0;
+    const REAL delta = p[3] - r;
+    if (delta < cutoff) {
+        rg_put(&c[0], delta, d * (1 - p[3] / r), -p[3], 0);
+        return 1;
+    }
+    return 0;
+}
+
+static inline int rg_interior_plane(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                    struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const REAL dot = (x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5];
+    if (dot < cutoff && dot >= 0) {
+        rg_put(&c[0], dot, (REAL3)(dot * p[3], dot * p[4], dot * p[5]), 0, 0);
+        return 1;
+    }
+    return 0;
+}
+
+/* the end caps lo and hi of a cylinder or cone (faces 0 and 1) after its
+ * n side contacts */
+static inline int rg_interior_caps(__global const REAL *nd, const REAL a, const REAL lo,
+                                   const REAL hi, const REAL cutoff, struct rg_contact *c, int n)
+{
+    const int ax = (int)nd[RG_AXIS];
     REAL delta = a - lo;
     if (delta < cutoff && !rg_open(nd, 0)) {
         rg_put(&c[n], delta, rg_set((REAL3)(0), ax, delta), 0, 0);
@@ -271,127 +224,214 @@ static inline int rg_interior(__global const REAL *nd, const REAL3 x, const REAL
     return n;
 }
 
-/* ---- surface_exterior: the one nearest outer surface point, r < cutoff ---- */
-static inline int rg_exterior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
-                              struct rg_contact *c)
+static inline int rg_interior_cylinder(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                       struct rg_contact *c)
 {
     __global const REAL *p = nd + RG_P;
-    const int kind = (int)nd[RG_KIND], ax = (int)nd[RG_AXIS];
-    const int openflag = nd[RG_OPENFLAG] != 0;
-    if (kind == RG_BLOCK) {
-        if (x.x <= p[0] - cutoff || x.x >= p[1] + cutoff || x.y <= p[2] - cutoff ||
-            x.y >= p[3] + cutoff || x.z <= p[4] - cutoff || x.z >= p[5] + cutoff)
-            return 0;
-        if (x.x > p[0] && x.x < p[1] && x.y > p[2] && x.y < p[3] && x.z > p[4] && x.z < p[5])
-            return 0;
-        const REAL3 lo = (REAL3)(p[0], p[2], p[4]), hi = (REAL3)(p[1], p[3], p[5]);
-        REAL3 xp = clamp(x, lo, hi);
-        if (openflag) { /* nearest point of the closed faces (each a clamped rectangle) */
-            REAL best = RG_BIG;
-            for (int f = 0; f < 6; f++) {
-                if (rg_open(nd, f))
-                    continue;
-                const REAL3 q = rg_set(clamp(x, lo, hi), f >> 1, p[f]);
-                const REAL dsq = rg_dsq(x, q);
-                if (dsq < best) {
-                    best = dsq;
-                    xp = q;
-                }
-            }
-        }
-        rg_add(&c[0], x, xp);
-        return c[0].r < cutoff;
-    }
-    if (kind == RG_SPHERE) {
-        const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
-        const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-        if (r < p[3])
-            return 0;
-        const REAL delta = r - p[3];
-        if (delta < cutoff) {
-            rg_put(&c[0], delta, d * (1 - p[3] / r), p[3], 0);
-            return 1;
-        }
-        return 0;
-    }
-    if (kind == RG_PLANE) {
-        const REAL dot = -((x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5]);
-        if (dot < cutoff && dot >= 0) {
-            rg_put(&c[0], dot, (REAL3)(-dot * p[3], -dot * p[4], -dot * p[5]), 0, 0);
-            return 1;
-        }
-        return 0;
-    }
+    const int ax = (int)nd[RG_AXIS];
     const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
     const REAL r = sqrt(d1 * d1 + d2 * d2);
-    if (kind == RG_CYLINDER) {
-        const REAL rad = p[2], lo = p[3], hi = p[4];
-        if (r >= rad + cutoff || a <= lo - cutoff || a >= hi + cutoff)
-            return 0;
-        if (r < rad && a > lo && a < hi)
-            return 0;
-        REAL crad = 0, ap, t1, t2;
-        if (!openflag) {
-            if (r > rad) {
-                t1 = p[0] + d1 * rad / r;
-                t2 = p[1] + d2 * rad / r;
-                crad = 2 * rad;
-            } else {
-                t1 = rg_t1(ax, x);
-                t2 = rg_t2(ax, x);
+    const REAL rad = p[2], lo = p[3], hi = p[4];
+    if (r > rad || a < lo || a > hi)
+        return 0;
+    int n = 0;
+    const REAL delta = rad - r;
+    if (delta < cutoff && r > 0 && !rg_open(nd, 2)) {
+        rg_put(&c[n], delta, rg_axial(ax, 0, d1 * (1 - rad / r), d2 * (1 - rad / r)), -2 * rad,
+               2);
+        n++;
+    }
+    return rg_interior_caps(nd, a, lo, hi, cutoff, c, n);
+}
+
+/* cone: c1 c2 radlo radhi lo hi */
+static inline int rg_interior_cone(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                   struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int ax = (int)nd[RG_AXIS];
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL r = sqrt(d1 * d1 + d2 * d2);
+    const REAL rlo = p[2], rhi = p[3], lo = p[4], hi = p[5];
+    const REAL cur = rlo + (a - lo) * (rhi - rlo) / (hi - lo);
+    if (r > cur || a < lo || a > hi)
+        return 0;
+    int n = 0;
+    if (r > 0 && !rg_open(nd, 2)) {
+        const REAL3 slo = rg_axial(ax, lo, p[0] + d1 * rlo / r, p[1] + d2 * rlo / r);
+        const REAL3 shi = rg_axial(ax, hi, p[0] + d1 * rhi / r, p[1] + d2 * rhi / r);
+        const REAL3 xs = rg_segment(slo, shi, x);
+        const REAL3 del = x - xs;
+        const REAL dist = sqrt(del.x * del.x + del.y * del.y + del.z * del.z);
+        if (dist < cutoff) {
+            rg_put(&c[n], dist, del, -2 * (rlo + (rg_comp(xs, ax) - lo) * (rhi - rlo) / (hi - lo)),
+                   2);
+            n++;
+        }
+    }
+    return rg_interior_caps(nd, a, lo, hi, cutoff, c, n);
+}
+
+static inline int rg_interior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                              struct rg_contact *c)
+{
+    switch ((int)nd[RG_KIND]) {
+    case RG_BLOCK:
+        return rg_interior_block(nd, x, cutoff, c);
+    case RG_SPHERE:
+        return rg_interior_sphere(nd, x, cutoff, c);
+    case RG_PLANE:
+        return rg_interior_plane(nd, x, cutoff, c);
+    case RG_CYLINDER:
+        return rg_interior_cylinder(nd, x, cutoff, c);
+    default:
+        return rg_interior_cone(nd, x, cutoff, c);
+    }
+}
+
+/* ---- surface_exterior: the one nearest outer surface point, r < cutoff ----
+ * One function per primitive, x in the node's frame, the contact into c[0];
+ * each returns 1 when there is one. */
+static inline int rg_exterior_block(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                    struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int openflag = nd[RG_OPENFLAG] != 0;
+    if (x.x <= p[0] - cutoff || x.x >= p[1] + cutoff || x.y <= p[2] - cutoff ||
+        x.y >= p[3] + cutoff || x.z <= p[4] - cutoff || x.z >= p[5] + cutoff)
+        return 0;
+    if (x.x > p[0] && x.x < p[1] && x.y > p[2] && x.y < p[3] && x.z > p[4] && x.z < p[5])
+        return 0;
+    const REAL3 lo = (REAL3)(p[0], p[2], p[4]), hi = (REAL3)(p[1], p[3], p[5]);
+    REAL3 xp = clamp(x, lo, hi);
+    if (openflag) { /* nearest point of the closed faces (each a clamped rectangle) */
+        REAL best = RG_BIG;
+        for (int f = 0; f < 6; f++) {
+            if (rg_open(nd, f))
+                continue;
+            const REAL3 q = rg_set(clamp(x, lo, hi), f >> 1, p[f]);
+            const REAL dsq = rg_dsq(x, q);
+            if (dsq < best) {
+                best = dsq;
+                xp = q;
             }
-            ap = a < lo ? lo : a > hi ? hi : a;
+        }
+    }
+    rg_add(&c[0], x, xp);
+    return c[0].r < cutoff;
+}
+
+static inline int rg_exterior_sphere(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                     struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const REAL3 d = x - (REAL3)(p[0], p[1], p[2]);
+    const REAL r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (r < p[3])
+        return 0;
+    const REAL delta = r - p[3];
+    if (delta < cutoff) {
+        rg_put(&c[0], delta, d * (1 - p[3] / r), p[3], 0);
+        return 1;
+    }
+    return 0;
+}
+
+static inline int rg_exterior_plane(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                    struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const REAL dot = -((x.x - p[0]) * p[3] + (x.y - p[1]) * p[4] + (x.z - p[2]) * p[5]);
+    if (dot < cutoff && dot >= 0) {
+        rg_put(&c[0], dot, (REAL3)(-dot * p[3], -dot * p[4], -dot * p[5]), 0, 0);
+        return 1;
+    }
+    return 0;
+}
+
+static inline int rg_exterior_cylinder(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                       struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int ax = (int)nd[RG_AXIS];
+    const int openflag = nd[RG_OPENFLAG] != 0;
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL r = sqrt(d1 * d1 + d2 * d2);
+    const REAL rad = p[2], lo = p[3], hi = p[4];
+    if (r >= rad + cutoff || a <= lo - cutoff || a >= hi + cutoff)
+        return 0;
+    if (r < rad && a > lo && a < hi)
+        return 0;
+    REAL crad = 0, ap, t1, t2;
+    if (!openflag) {
+        if (r > rad) {
+            t1 = p[0] + d1 * rad / r;
+            t2 = p[1] + d2 * rad / r;
+            crad = 2 * rad;
         } else {
-            const REAL dr = r - rad, dr2 = dr * dr;
-            REAL d2prev = RG_BIG, dd;
-            ap = a;
             t1 = rg_t1(ax, x);
             t2 = rg_t2(ax, x);
-            if (!rg_open(nd, 2)) {
-                t1 = p[0] + d1 * rad / r;
-                t2 = p[1] + d2 * rad / r;
-                REAL dx;
-                if (a < lo) {
-                    dx = lo - a;
-                    ap = lo;
-                } else if (a > hi) {
-                    dx = a - hi;
-                    ap = hi;
-                } else {
-                    dx = 0;
-                    ap = a;
-                }
-                d2prev = dr2 + dx * dx;
+        }
+        ap = a < lo ? lo : a > hi ? hi : a;
+    } else {
+        const REAL dr = r - rad, dr2 = dr * dr;
+        REAL d2prev = RG_BIG, dd;
+        ap = a;
+        t1 = rg_t1(ax, x);
+        t2 = rg_t2(ax, x);
+        if (!rg_open(nd, 2)) {
+            t1 = p[0] + d1 * rad / r;
+            t2 = p[1] + d2 * rad / r;
+            REAL dx;
+            if (a < lo) {
+                dx = lo - a;
+                ap = lo;
+            } else if (a > hi) {
+                dx = a - hi;
+                ap = hi;
+            } else {
+                dx = 0;
+                ap = a;
             }
-            if (!rg_open(nd, 0)) {
-                const REAL dx = lo - a;
-                dd = r < rad ? dx * dx : dr2 + dx * dx;
-                if (dd < d2prev) {
-                    ap = lo;
-                    if (r < rad) {
-                        t1 = rg_t1(ax, x);
-                        t2 = rg_t2(ax, x);
-                    }
-                    d2prev = dd;
+            d2prev = dr2 + dx * dx;
+        }
+        if (!rg_open(nd, 0)) {
+            const REAL dx = lo - a;
+            dd = r < rad ? dx * dx : dr2 + dx * dx;
+            if (dd < d2prev) {
+                ap = lo;
+                if (r < rad) {
+                    t1 = rg_t1(ax, x);
+                    t2 = rg_t2(ax, x);
                 }
+                d2prev = dd;
             }
-            if (!rg_open(nd, 1)) {
-                const REAL dx = hi - a;
-                dd = r < rad ? dx * dx : dr2 + dx * dx;
-                if (dd < d2prev) {
-                    ap = hi;
-                    if (r < rad) {
-                        t1 = rg_t1(ax, x);
-                        t2 = rg_t2(ax, x);
-                    }
+        }
+        if (!rg_open(nd, 1)) {
+            const REAL dx = hi - a;
+            dd = r < rad ? dx * dx : dr2 + dx * dx;
+            if (dd < d2prev) {
+                ap = hi;
+                if (r < rad) {
+                    t1 = rg_t1(ax, x);
+                    t2 = rg_t2(ax, x);
                 }
             }
         }
-        rg_add(&c[0], x, rg_axial(ax, ap, t1, t2));
-        c[0].radius = crad;
-        return c[0].r < cutoff;
     }
-    /* cone */
+    rg_add(&c[0], x, rg_axial(ax, ap, t1, t2));
+    c[0].radius = crad;
+    return c[0].r < cutoff;
+}
+
+/* cone: c1 c2 radlo radhi lo hi, then the larger radius */
+static inline int rg_exterior_cone(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                                   struct rg_contact *c)
+{
+    __global const REAL *p = nd + RG_P;
+    const int ax = (int)nd[RG_AXIS];
+    const REAL a = rg_comp(x, ax), d1 = rg_t1(ax, x) - p[0], d2 = rg_t2(ax, x) - p[1];
+    const REAL r = sqrt(d1 * d1 + d2 * d2);
     const REAL rlo = p[2], rhi = p[3], lo = p[4], hi = p[5], rmax = p[6];
     const REAL cur = rlo + (a - lo) * (rhi - rlo) / (hi - lo);
     if (r >= rmax + cutoff || a <= lo - cutoff || a >= hi + cutoff)
@@ -428,6 +468,23 @@ static inline int rg_exterior(__global const REAL *nd, const REAL3 x, const REAL
     rg_add(&c[0], x, nearest);
     c[0].radius = crad;
     return c[0].r < cutoff;
+}
+
+static inline int rg_exterior(__global const REAL *nd, const REAL3 x, const REAL cutoff,
+                              struct rg_contact *c)
+{
+    switch ((int)nd[RG_KIND]) {
+    case RG_BLOCK:
+        return rg_exterior_block(nd, x, cutoff, c);
+    case RG_SPHERE:
+        return rg_exterior_sphere(nd, x, cutoff, c);
+    case RG_PLANE:
+        return rg_exterior_plane(nd, x, cutoff, c);
+    case RG_CYLINDER:
+        return rg_exterior_cylinder(nd, x, cutoff, c);
+    default:
+        return rg_exterior_cone(nd, x, cutoff, c);
+    }
 }
 
 /* Region::surface of one node (flip: side inverted, as union / intersect do
@@ -526,26 +583,80 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
     return v;
 }
 
-/* One work-item per atom of the group (fix wall/gran/region). An atom the
- * region does not match is skipped, its history kept; otherwise its contacts
- * are evaluated through EVAL in region order. History per atom (hstride =
- * 1 + (1 + hw) slots REAL, hw = has_history): the contact count, the wall
- * id of each slot, then hw REAL of history per slot (3: shear), kept and compacted as LAMMPS FixWallGranRegion
- * (update_contacts: slots of walls no longer touched are replaced by the
- * last one, new walls appended with zero shear; c2r maps as LAMMPS does).
- * dynamic: the surface moves with the velocity of the contact's node (0:
- * at rest; the host passes 0 for union / intersect, as LAMMPS 2021). */
-#define REGION_KERNEL(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 0, 0)
-#define REGION_KERNEL_ROW(NAME, EVAL) REGION_KERNEL_HW(NAME, EVAL, 1, 0)
-/* JKR 1 (a jkr wall, kernels/wall.cl WALL_REACH): the region is searched to the
- * reach, and a contact beyond touch not touched yet is skipped with the
+/* The wall-id bookkeeping of an atom's region contacts, as LAMMPS
+ * FixWallGranRegion::update_contacts: hist = the contact count, `slots`
+ * wall ids, then hw REAL of history per slot. Slots of walls no longer
+ * touched are replaced by the last one, new walls appended with zero
+ * history; c2r[k] = the slot of contact k (LAMMPS's c2r). Returns 0 when
+ * the atom has no contact now (its count is reset). */
+static inline int region_slots(__global REAL *hist, const int slots, const int hw,
+                               const struct rg_contact *c, const int nc, int *c2r)
+{
+    int ncont = (int)hist[0];
+    __global REAL *walls = hist + 1, *sh = hist + 1 + slots;
+    if (nc == 0) {
+        hist[0] = 0;
+        return 0;
+    }
+    if (nc == 1 && ncont == 0) {
+        c2r[0] = 0;
+        ncont = 1;
+        walls[0] = (REAL)c[0].iwall;
+        for (int q = 0; q < hw; q++)
+            sh[q] = 0;
+    } else if (nc == 1 && ncont == 1 && (int)walls[0] == c[0].iwall) {
+        c2r[0] = 0;
+    } else {
+        int iold = 0;
+        while (iold < ncont) {
+            int m = 0;
+            while (m < nc && c[m].iwall != (int)walls[iold])
+                m++;
+            if (m >= nc) {
+                const int last = ncont - 1;
+                for (int q = 0; q < hw; q++)
+                    sh[hw * iold + q] = sh[hw * last + q];
+                walls[iold] = walls[last];
+                ncont--;
+            } else
+                iold++;
+        }
+        const int nold = ncont;
+        for (int inew = 0; inew < nc; inew++) {
+            int m = 0;
+            while (m < nold && (int)walls[m] != c[inew].iwall)
+                m++;
+            if (m < nold)
+                c2r[m] = inew;
+            else {
+                c2r[ncont] = inew;
+                for (int q = 0; q < hw; q++)
+                    sh[hw * ncont + q] = 0;
+                walls[ncont] = (REAL)c[inew].iwall;
+                ncont++;
+            }
+        }
+    }
+    hist[0] = (REAL)ncont;
+    return 1;
+}
+
+/* Region walls (fix wall/gran/region): one work-item per atom of the group.
+ * An atom the region does not match is skipped, its history kept; otherwise
+ * its contacts (region_surface) run through the law's contact body in
+ * region order, each with its slot (region_slots; per atom 1 + (1 + hw)
+ * slots REAL, hw = has_history). dynamic: the surface moves with the
+ * velocity of the contact's node (0: at rest; the host passes 0 for union /
+ * intersect, as LAMMPS 2021). BODY: a CONTACT_BODY instance; ROW its form.
+ * JKR 1 (a jkr wall, kernels/wall.cl WALL_REACH): the region is searched to
+ * the reach, and a contact beyond touch not touched yet is skipped with the
  * history of slot 0 zeroed, as LAMMPS 2021 FixWallGranRegion does. */
-#define REGION_KERNEL_HW(NAME, EVAL, ROW, JKR)                                                 \
+#define REGION_KERNEL(NAME, BODY, ROW, JKR)                                                    \
     __kernel void NAME(                                                                        \
         WALL_ATOM_ARGS,                                                                        \
         __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
         __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
-        const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM)  \
+        const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM) \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
@@ -555,93 +666,45 @@ static inline REAL3 region_velocity(__global const REAL *nd, const REAL3 xc)
         if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
             return;                                                                            \
         const REAL radi = radius[i];                                                           \
-        const int ti = type[i] - 1;                                                            \
-        __global const REAL *p =                                                               \
-            by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;                     \
+        __global const REAL *p = wall_param(param, by_type, type[i] - 1, ntypes, nparam);      \
         struct rg_contact c[RG_MAXC];                                                          \
         int nc = region_surface(nodes, nnode, comb, rinterior, xi,                             \
                                 WALL_REACH(JKR, p, radi), c);                                  \
         if (nc > slots)                                                                        \
             nc = slots;                                                                        \
-        __global REAL *hist = has_history ? history + (size_t)i * (1 + (1 + hw) * slots) : history;\
+        __global REAL *hist =                                                                  \
+            has_history ? history + (size_t)i * (1 + (1 + hw) * slots) : history;              \
         int c2r[RG_MAXC];                                                                      \
         for (int k = 0; k < RG_MAXC; k++)                                                      \
             c2r[k] = k;                                                                        \
-        if (has_history) {                                                                     \
-            int ncont = (int)hist[0];                                                          \
-            __global REAL *walls = hist + 1, *sh = hist + 1 + slots;                           \
-            if (nc == 0) {                                                                     \
-                hist[0] = 0;                                                                   \
-                return;                                                                        \
-            }                                                                                  \
-            if (nc == 1 && ncont == 0) {                                                       \
-                c2r[0] = 0;                                                                    \
-                ncont = 1;                                                                     \
-                walls[0] = (REAL)c[0].iwall;                                                   \
-                for (int q = 0; q < hw; q++)                                                   \
-                    sh[q] = 0;                                                                 \
-            } else if (nc == 1 && ncont == 1 && (int)walls[0] == c[0].iwall) {                 \
-                c2r[0] = 0;                                                                    \
-            } else {                                                                           \
-                int iold = 0;                                                                  \
-                while (iold < ncont) {                                                         \
-                    int m = 0;                                                                 \
-                    while (m < nc && c[m].iwall != (int)walls[iold])                           \
-                        m++;                                                                   \
-                    if (m >= nc) {                                                             \
-                        const int last = ncont - 1;                                            \
-                        for (int q = 0; q < hw; q++)                                           \
-                            sh[hw * iold + q] = sh[hw * last + q];                             \
-                        walls[iold] = walls[last];                                             \
-                        ncont--;                                                               \
-                    } else                                                                     \
-                        iold++;                                                                \
-                }                                                                              \
-                const int nold = ncont;                                                        \
-                for (int inew = 0; inew < nc; inew++) {                                        \
-                    int m = 0;                                                                 \
-                    while (m < nold && (int)walls[m] != c[inew].iwall)                         \
-                        m++;                                                                   \
-                    if (m < nold)                                                              \
-                        c2r[m] = inew;                                                         \
-                    else {                                                                     \
-                        c2r[ncont] = inew;                                                     \
-                        for (int q = 0; q < hw; q++)                                           \
-                            sh[hw * ncont + q] = 0;                                            \
-                        walls[ncont] = (REAL)c[inew].iwall;                                    \
-                        ncont++;                                                               \
-                    }                                                                          \
-                }                                                                              \
-            }                                                                                  \
-            hist[0] = (REAL)ncont;                                                             \
-        }                                                                                      \
+        if (has_history && !region_slots(hist, slots, hw, c, nc, c2r))                         \
+            return;                                                                            \
+        const struct contact_atoms a =                                                         \
+            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+        struct contact_site s = wall_site(i, radi, radi, hw, acode);                           \
+        s.gated = 1; /* region_surface decided */                                              \
+        s.refine = 0;                                                                          \
+        s.hold = WALL_HOLD(JKR, p);                                                            \
+        struct contact_partner pj;                                                             \
+        pj.omwall = (REAL3)(0);                                                                \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
         for (int ic = 0; ic < nc; ic++) {                                                      \
             __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
-            if (JKR && !WALL_TOUCHED(JKR, p, hs) && c[ic].r * c[ic].r > radi * radi) {         \
-                for (int q = 0; q < hw; q++)                                                   \
-                    hist[1 + slots + q] = 0;                                                   \
+            s.del = c[ic].del;                                                                 \
+            s.rwall = c[ic].radius;                                                            \
+            s.rgiven = c[ic].r;                                                                \
+            pj.vwall = dynamic ? region_velocity(nodes + c[ic].node * RG_NODE, xi - s.del)     \
+                               : (REAL3)(0);                                                   \
+            REAL h[WALL_ROW_N(ROW)];                                                           \
+            contact_hist_load(h, hs, hw, WALL_ROW_N(ROW));                                     \
+            struct contact_out o;                                                              \
+            if (!BODY(CONTACT_WALL, i, &s, &pj, &a, p, h, &o)) {                               \
+                contact_hist_store(hist + 1 + slots, h, hw, 0); /* LAMMPS 2021: slot 0 */      \
                 continue;                                                                      \
             }                                                                                  \
-            const REAL3 del = c[ic].del;                                                       \
-            REAL3 vwall = (REAL3)(0);                                                          \
-            if (dynamic)                                                                       \
-                vwall = region_velocity(nodes + c[ic].node * RG_NODE, xi - del);               \
-            const REAL rw = c[ic].radius;                                                      \
-            WALL_OMEGA(omi, omega, i);                                                         \
-            struct contact ct = contact_make(                                                  \
-                del, radi, 0, rw == (REAL)0 ? radi : radi * rw / (rw + radi),                  \
-                vload3(i, v) - vwall, omi, (REAL3)(0), rmass[i]);                              \
-            ct.rsq = c[ic].r * c[ic].r; /* LAMMPS: rsq = r^2, then r = sqrt(rsq) */            \
-            ct.r = sqrt(ct.rsq);                                                               \
-            ct.delta = ct.radsum - ct.r;                                                       \
-            ct.dt = dt;                                                                        \
-            ct.shearupdate = shearupdate;                                                      \
-            struct contact_force cf;                                                           \
-            WALL_CALL(ROW, EVAL, &ct, p, hs, hw, &cf);                                         \
-            ACC_NOTE_WALL(EVAL, i, &ct, p, acode, acc, astep, step);                           \
-            fsum += cf.f;                                                                      \
-            tsum += contact_torque_i(&ct, &cf);                                                \
+            contact_hist_store(hs, h, hw, 1);                                                  \
+            fsum += o.f;                                                                       \
+            tsum += o.ti;                                                                      \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \

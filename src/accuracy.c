@@ -11,8 +11,10 @@
 #include "error.h"
 #include "fix.h"
 #include "neighbor.h"
+#include "wall_layout.h"
 
-enum { NCHUNK = 256, PAIR_REC = 2, WALL_REC = 4 };
+/* record widths and offsets: kernels/wall_layout.h (ACC_*) */
+enum { NCHUNK = 256, PAIR_REC = ACC_PAIR_W, WALL_REC = ACC_WALL_W };
 
 struct acc {
     cl_mem prec, pstep;     /* pair contacts: REAL[2], int */
@@ -169,19 +171,19 @@ void acc_collect(struct gravel *g)
     if (c >= 0 && q > w->q) {
         const struct nbr_list *l = nbr_list(g);
         w->q = q;
-        w->vn = sqrt(read_real(g, s->prec, (size_t)PAIR_REC * c + 1)); /* stored squared */
+        w->vn = sqrt(read_real(g, s->prec, (size_t)PAIR_REC * c + ACC_PAIR_VN2)); /* stored squared */
         w->step = g->firststep + read_int(g, s->pstep, (size_t)c);
         w->tag_i = read_tag(g, read_int(g, l->ci, (size_t)c));
         w->tag_j = read_tag(g, read_int(g, l->cj, (size_t)c));
         w->wall[0] = 0;
     }
     int n = e->a.n < (int)s->wcap ? e->a.n : (int)s->wcap;
-    int i = reduce(g, s->wrec, n, WALL_REC, 2, &q, &ov);
+    int i = reduce(g, s->wrec, n, WALL_REC, ACC_WALL_OV, &q, &ov);
     w->wall_ov = fmax(w->wall_ov, ov);
     if (i >= 0 && q > w->q) {
         w->q = q;
-        w->vn = read_real(g, s->wrec, (size_t)WALL_REC * i + 1);
-        int code = (int)read_real(g, s->wrec, (size_t)WALL_REC * i + 3);
+        w->vn = read_real(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_VN);
+        int code = (int)read_real(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_CODE);
         w->step = g->firststep + read_int(g, s->wstep, (size_t)i);
         w->tag_i = read_tag(g, i);
         w->tag_j = 0;

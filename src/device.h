@@ -30,7 +30,7 @@ struct fix;
 
 /* The run's fused stages (engine-owned; built by fused_setup, fused.h). */
 struct fused_stages {
-    cl_mem ops, prm;            /* int[3 per op], REAL[] */
+    cl_mem ops, prm;            /* int[FOP_W per op], REAL[] */
     int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
 };
 

@@ -373,9 +373,14 @@ void eng_prepare(struct gravel *g)
     const char *names[32], *texts[32];
     int n = 0;
     add_source(g, names, texts, &n, "param_layout.h", "engine");
-    /* each contact law's collision time, shared with the host */
-    add_source(g, names, texts, &n, "collision_time.h", "engine");
+    add_source(g, names, texts, &n, "wall_layout.h", "engine");
+    add_source(g, names, texts, &n, "fused_layout.h", "engine");
     add_source(g, names, texts, &n, "common.cl", "engine");
+    /* each contact law's collision time, shared with the host (after
+     * common.cl: REAL and fp64 are set up) */
+    add_source(g, names, texts, &n, "collision_time.h", "engine");
+    /* the contact record and the one contact body of every source */
+    add_source(g, names, texts, &n, "contact.cl", "engine");
     /* LAMMPS granular kinematics for the gran pair and wall evaluators:
      * static inline helpers, free in scenes that do not call them */
     add_source(g, names, texts, &n, "gran_common.cl", "engine");

@@ -28,15 +28,15 @@ static void add(struct gravel *g, struct builder *b, struct fix *f, const struct
 {
     if (b->nops == b->cap) {
         b->cap = b->cap ? 2 * b->cap : 8;
-        b->ops = gr_realloc(g, b->ops, (size_t)b->cap * 3 * sizeof(int));
+        b->ops = gr_realloc(g, b->ops, (size_t)b->cap * FOP_W * sizeof(int));
     }
     if (b->nprm + op->nprm + 1 > b->pcap) {
         b->pcap = 2 * (b->nprm + op->nprm + 1);
         b->prm = gr_realloc(g, b->prm, (size_t)b->pcap * sizeof(double));
     }
-    b->ops[3 * b->nops] = (int)op->kind;
-    b->ops[3 * b->nops + 1] = (int)f->groupbit;
-    b->ops[3 * b->nops + 2] = b->nprm;
+    b->ops[FOP_W * b->nops + FOP_KIND] = (int)op->kind;
+    b->ops[FOP_W * b->nops + FOP_GROUP] = (int)f->groupbit;
+    b->ops[FOP_W * b->nops + FOP_PRM] = b->nprm;
     if (op->nprm > 0)
         memcpy(b->prm + b->nprm, op->prm, (size_t)op->nprm * sizeof(double));
     b->nprm += op->nprm;
@@ -95,11 +95,11 @@ void fused_setup(struct gravel *g)
         }
     }
     /* never empty buffers: kernels take them as arguments */
-    int dummy_op[3] = {0, 0, 0};
+    int dummy_op[FOP_W] = {0};
     double dummy_prm = 0;
-    s->ops = eng_alloc(g, (size_t)(b.nops ? b.nops : 1) * 3 * sizeof(int), "fused ops");
+    s->ops = eng_alloc(g, (size_t)(b.nops ? b.nops : 1) * FOP_W * sizeof(int), "fused ops");
     s->prm = eng_alloc(g, (size_t)(b.nprm ? b.nprm : 1) * e->rsz, "fused op parameters");
-    eng_write(g, s->ops, 0, (size_t)(b.nops ? b.nops : 1) * 3 * sizeof(int),
+    eng_write(g, s->ops, 0, (size_t)(b.nops ? b.nops : 1) * FOP_W * sizeof(int),
               b.nops ? b.ops : dummy_op);
     eng_write_reals(g, s->prm, (size_t)(b.nprm ? b.nprm : 1), b.nprm ? b.prm : &dummy_prm);
     free(b.ops);

@@ -13,17 +13,7 @@
 
 #include "state.h"
 #include "ocl.h"
-
-/* = kernels/fused.cl */
-enum fused_kind {
-    FOP_GRAVITY = 1,
-    FOP_FREEZE = 2,
-    FOP_VISCOUS = 3,
-    FOP_NVE_INITIAL = 4,
-    FOP_NVE_SPHERE_INITIAL = 5,
-    FOP_NVE_FINAL = 6,
-    FOP_NVE_SPHERE_FINAL = 7,
-};
+#include "fused_layout.h" /* enum fused_kind, the op layout */
 
 /* What a fix answers for one hook: its op kind, group and parameters
  * (prm points at nprm doubles owned by the fix, read during setup). */

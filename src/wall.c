@@ -106,7 +106,7 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
     wm->triv = eng_alloc(g, (size_t)nt * 3 * sizeof(int), "mesh vertex ids");
     wm->cstart = eng_alloc(g, ((size_t)ncell + 1) * sizeof(int), "mesh bins");
     wm->ctri = eng_alloc(g, (size_t)(nlist ? nlist : 1) * sizeof(int), "mesh bin lists");
-    wm->pose = eng_alloc(g, 32 * rsz, "mesh pose");
+    wm->pose = eng_alloc(g, POSE_N * rsz, "mesh pose");
     eng_write_reals(g, wm->tri, (size_t)nt * 12, tri);
     eng_write(g, wm->triv, 0, (size_t)nt * 3 * sizeof(int), m->tri);
     eng_write(g, wm->cstart, 0, ((size_t)ncell + 1) * sizeof(int), b.start);
@@ -135,29 +135,29 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
                      int hstride, int hoff, cl_mem fmesh)
 {
     struct dev_atoms *a = eng_atoms(g);
-    double pose[25];
-    memcpy(pose, R, 9 * sizeof(double));
-    memcpy(pose + 9, d, 3 * sizeof(double));
-    memcpy(pose + 12, V0, 3 * sizeof(double));
-    memcpy(pose + 15, omega, 3 * sizeof(double));
-    memcpy(pose + 18, wm->glo, 3 * sizeof(double));
-    pose[21] = 1.0 / wm->h;
-    memcpy(pose + 22, ref, 3 * sizeof(double));
+    double pose[POSE_N];
+    memcpy(pose + POSE_R, R, 9 * sizeof(double));
+    memcpy(pose + POSE_D, d, 3 * sizeof(double));
+    memcpy(pose + POSE_V0, V0, 3 * sizeof(double));
+    memcpy(pose + POSE_OMEGA, omega, 3 * sizeof(double));
+    memcpy(pose + POSE_GLO, wm->glo, 3 * sizeof(double));
+    pose[POSE_GINV] = 1.0 / wm->h;
+    memcpy(pose + POSE_REF, ref, 3 * sizeof(double));
     /* device positions are relative to the origin: so are the pose's
      * translation and reference point, and a static mesh takes the moving
      * path (R = 1) when the origin is not 0 */
     const double *o = g->eng->origin;
     if (!moving && (o[0] != 0 || o[1] != 0 || o[2] != 0)) {
         static const double unit[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-        memcpy(pose, unit, sizeof unit);
-        memset(pose + 9, 0, 3 * sizeof(double));
+        memcpy(pose + POSE_R, unit, sizeof unit);
+        memset(pose + POSE_D, 0, 3 * sizeof(double));
         moving = 1;
     }
     for (int q = 0; q < 3; q++) {
-        pose[9 + q] -= o[q];
-        pose[22 + q] -= o[q];
+        pose[POSE_D + q] -= o[q];
+        pose[POSE_REF + q] -= o[q];
     }
-    eng_write_reals(g, wm->pose, 25, pose);
+    eng_write_reals(g, wm->pose, POSE_N, pose);
     cl_kernel k = law->kernel;
     int i = wall_bind_atoms(g, f, law, k);
     eng_arg_int(g, k, i++, hstride);

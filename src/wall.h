@@ -10,10 +10,9 @@
 
 #include "state.h"
 #include "ocl.h"
+#include "wall_layout.h"
 
 struct fix;
-
-enum wall_kind { WALL_PLANE = 0, WALL_ZCYLINDER = 1 };  /* = kernels/wall.cl */
 
 struct wall_geom {
     enum wall_kind kind;
@@ -58,8 +57,8 @@ int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int
  * open faces and motion, packed for the device at every launch. History per
  * atom: the contact count, WALL_REGION_MAXC wall ids and 3 REAL of shear
  * per contact (1 + 4 slots REAL). */
-#define WALL_REGION_MAXC 8      /* = RG_MAXC */
-#define WALL_REGION_MAXNODE 4   /* = RG_MAXNODE */
+#define WALL_REGION_MAXC RG_MAXC         /* kernels/wall_layout.h */
+#define WALL_REGION_MAXNODE RG_MAXNODE
 
 struct region;
 
@@ -76,7 +75,7 @@ struct wall_region {
  * bins (src/mesh.h). The pose (R, d, V0, omega, see fix_mesh_surface.h) is
  * uploaded at every launch. History: WALL_MESH_SLOTS slots of 1 + width REAL
  * (key, shear) per atom per mesh. */
-#define WALL_MESH_SLOTS 4   /* = MESH_SLOTS in kernels/wall.cl */
+#define WALL_MESH_SLOTS MESH_SLOTS   /* kernels/wall_layout.h */
 
 struct mesh;
 

@@ -13,14 +13,7 @@
 #include "region.h"
 #include "variable.h"
 
-/* = kernels/wall_region.cl */
-#define RG_NODE 40
-enum { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
-enum {
-    RG_KIND = 0, RG_INTERIOR, RG_OPENFLAG, RG_OPEN, RG_AXIS, RG_WALLOFF, RG_MOVE, RG_ROT,
-    RG_P = 8, RG_D = 16, RG_SIN = 19, RG_COS = 20, RG_POINT = 21, RG_RUNIT = 24, RG_V = 27,
-    RG_OMEGA = 30, RG_RPOINT = 33
-};
+/* the node layout RG_*: kernels/wall_layout.h (through wall.h) */
 
 static int primitive_kind(const struct region *r)
 {

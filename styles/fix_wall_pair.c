@@ -1,7 +1,8 @@
 /* fix_wall_pair.c - `fix ID group wall/pair xplane|yplane|zplane lo hi`:
  * flat, stationary walls whose contact law is the active pair style, a
  * front-end of the wall stage of the contact pipeline (src/wall.c,
- * kernels/wall.cl, kernel wall_pair). The pair evaluator (PAIR_EVAL) sees the wall as
+ * kernels/wall.cl, kernel wall_pair). The pair law (PAIR_EVAL, or PAIR_EVAL_ROW
+ * with its whole history row: pair granular) sees the wall as
  * particle j with the contract of src/pair.h: radj = 0, radsum = reff = radi,
  * omega_j = 0, v_j = 0, meff = m_i (the wall is infinitely heavy), and the
  * parameters of type pair (itype, itype). lo or hi may be NULL (no face).
@@ -79,10 +80,21 @@ static void init(struct gravel *g, struct fix *f)
     if (!g->styles.pair)
         gr_error(g, "fix %s wall/pair needs a pair style: the wall uses its contact law",
                  f->id);
+    const struct pair_caps *pc = &g->styles.pair->caps;
+    if (pc->eval_row && pc->beyond) /* pair granular jkr: its hold beyond touch */
+        gr_error(g, "fix %s wall/pair: pair style %s acts beyond contact (jkr), which a "
+                    "wall/pair wall does not model; use fix wall/gran granular ... jkr",
+                 f->id, g->styles.pair->style->name);
     w->law.kernel = eng_kernel(g, w->mesh.n ? "mesh_pair" : "wall_pair");
     w->law.param = g->eng->pair_param; /* packed for this run before the fixes' init */
     w->law.by_type = 1;
-    w->law.history = g->eng->history ? 3 : 0;
+    /* the law's history row (pair granular: its sub-models' width, without
+     * the -compat lammps2021 owner slot; the 3-vector laws: 3) */
+    struct engine *e = g->eng;
+    w->law.history = e->history ? e->hist_n - e->hist_owner : 0;
+    if (w->law.history > WALL_HMAX)
+        gr_error(g, "fix %s wall/pair: the pair style's %d REAL of contact history exceed a "
+                    "wall's %d", f->id, w->law.history, WALL_HMAX);
     w->law.inclusive = 0;
     if (w->mesh.n)
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->law.history);

@@ -2,7 +2,10 @@
  * the problem and the script line) and the wall physics that needs no
  * reference: a sphere resting on the floor settles where kn delta = m g, a
  * sphere outside the reach of a NULL face feels nothing, the wiggle moves the
- * wall face, and the history of a model is zeroed when the contact ends. */
+ * wall face, the history of a model is zeroed when the contact ends, and
+ * fix wall/pair with pair_style granular is the wall/gran granular wall. */
+#include <math.h>
+
 #include "test.h"
 #include "atoms.h"
 
@@ -128,11 +131,63 @@ TEST(wiggle_lifts)
     gr_destroy(g);
 }
 
+/* fix wall/pair with pair_style granular (the row form of the contact
+ * body, issue 18) is the pair law against the wall: a spinning sphere thrown
+ * obliquely onto the floor moves normally exactly as with fix wall/gran
+ * granular and the same coefficients (z, v_z to 1e-12), and its friction
+ * acts within the Coulomb bound |dv_t| <= mu |dv_n| and within 2 % of
+ * wall/gran's (whose history follows LAMMPS 2021's wall code). A granular
+ * law that acts beyond contact (jkr) is refused with a message naming fix
+ * wall/gran. */
+static void granular_wall_run(const char *wall, double out[9])
+{
+    struct gravel *g = test_engine();
+    char s[2048];
+    snprintf(s, sizeof s,
+             BOX "create_atoms 1 single 0.5 0.5 -1.9 units box\n"
+                 "set atom 1 diameter 1.0 density 1.9098593\n"
+                 "velocity all set 0.7 -0.2 -1.5\nset atom 1 omega 0.3 2.0 -1.0\n"
+                 "pair_style granular\npair_coeff * * hooke 2000 0.3 tangential "
+                 "linear_history 800 0.5 0.4 damping mass_velocity\n"
+                 "timestep 0.0005\nfix 1 all nve/sphere\nfix 2 all gravity 1.0 vector 0 0 -1\n"
+                 "thermo 0\n%s\nrun 400\n",
+             wall);
+    CHECK(test_script(g, s) == GR_OK);
+    for (int q = 0; q < 3; q++) {
+        out[q] = g->atoms.x[q];
+        out[3 + q] = g->atoms.v[q];
+        out[6 + q] = g->atoms.omega[q];
+    }
+    gr_destroy(g);
+}
+
+TEST(wall_pair_granular)
+{
+    double a[9], b[9];
+    granular_wall_run("fix 3 all wall/pair zplane -2.5 NULL", a);
+    granular_wall_run("fix 3 all wall/gran granular hooke 2000 0.3 tangential linear_history 800 "
+                      "0.5 0.4 damping mass_velocity zplane -2.5 NULL", b);
+    CHECK_NEAR(a[2], b[2], 1e-12);          /* z */
+    CHECK_NEAR(a[5], b[5], 1e-12);          /* v_z */
+    CHECK(a[5] > 0.1);                      /* rising after the bounce: the wall acted */
+    const double g_t = 400 * 0.0005;        /* gravity's share of dv_z */
+    const double dvn = a[5] - (-1.5) + g_t, dvx = a[3] - 0.7, dvy = a[4] + 0.2;
+    CHECK(fabs(dvx) > 1e-3);                /* friction acted */
+    CHECK(sqrt(dvx * dvx + dvy * dvy) <= 0.4 * dvn);
+    for (int q = 3; q < 9; q++)
+        CHECK_NEAR(a[q], b[q], 0.02 * fabs(b[q]) + 1e-6);
+    CHECK_ERROR(BOX "create_atoms 1 single 0 0 0 units box\npair_style granular\n"
+                    "pair_coeff * * jkr 1000 50 0.3 5 tangential linear_history 800 0.5 0.4\n"
+                    "fix 1 all nve/sphere\nfix 3 all wall/pair zplane -2.5 NULL\nrun 1\n",
+                "use fix wall/gran", 11);
+}
+
 int main(void)
 {
     RUN(errors);
     RUN(rest_on_floor);
     RUN(null_face_free_fall);
     RUN(wiggle_lifts);
+    RUN(wall_pair_granular);
     return 0;
 }

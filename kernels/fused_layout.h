@@ -1,0 +1,23 @@
+/* fused_layout.h - the contract of the fused per-particle fix work, declared
+ * once: read by the host (src/fused.c builds the op list) and by the kernels
+ * (kernels/fused.cl runs it; the engine prepends this file to every
+ * program). Plain enums: valid C and OpenCL C. */
+#ifndef GR_FUSED_LAYOUT_H
+#define GR_FUSED_LAYOUT_H
+
+/* The ops, each exactly the arithmetic of its fix's own kernel */
+enum fused_kind {
+    FOP_GRAVITY = 1,            /* f += m g          prm: gx gy gz */
+    FOP_FREEZE = 2,             /* f = torque = 0 */
+    FOP_VISCOUS = 3,            /* f -= gamma_t v    prm: gamma per type */
+    FOP_NVE_INITIAL = 4,        /* v += dtf/m f; x += dtv v          prm: dtv dtf */
+    FOP_NVE_SPHERE_INITIAL = 5, /* and omega += dtf/(I m r^2) torque prm: dtv dtf I */
+    FOP_NVE_FINAL = 6,          /* v += dtf/m f                      prm: dtf */
+    FOP_NVE_SPHERE_FINAL = 7    /* and omega += dtf/(I m r^2) torque prm: dtf I */
+};
+
+/* One op in the int list: its kind, its group bit, the offset of its
+ * parameters in the REAL list */
+enum fused_op_layout { FOP_KIND = 0, FOP_GROUP = 1, FOP_PRM = 2, FOP_W = 3 };
+
+#endif

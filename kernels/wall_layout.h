@@ -1,0 +1,59 @@
+/* wall_layout.h - the host/device contracts of the wall stage, declared once:
+ * read by the host (src/wall.c, src/wall_region.c, src/accuracy.c) and by
+ * the kernels (the engine prepends it to every program, after
+ * param_layout.h). Plain enums: valid C and OpenCL C. */
+#ifndef GR_WALL_LAYOUT_H
+#define GR_WALL_LAYOUT_H
+
+/* Geometry kinds of a plane/cylinder wall (kernels/wall.cl wall_point) */
+enum wall_kind { WALL_PLANE = 0, WALL_ZCYLINDER = 1 };
+
+/* REAL of history per wall contact in the row form (a law's whole history
+ * row: pair granular's sub-models) */
+enum { WALL_HMAX = 10 };
+
+/* The pose of a mesh (REAL each, uploaded at every launch; kernels/wall.cl
+ * MESH_KERNEL): R row-major, d, surface velocity V0 and angular velocity
+ * omega (v(p) = V0 + omega x p), bin origin, 1 / bin size, torque reference
+ * point. Vector entries start at multiples of 3 (vload3(POSE_x / 3)). */
+enum mesh_pose_layout { POSE_R = 0, POSE_D = 9, POSE_V0 = 12, POSE_OMEGA = 15, POSE_GLO = 18,
+                        POSE_GINV = 21, POSE_REF = 22, POSE_N = 25 };
+/* History slots per atom per mesh: key (triangle + 1, 0 = free), then the
+ * law's history */
+enum { MESH_SLOTS = 4 };
+
+/* A region as device nodes (kernels/wall_region.cl; filled by
+ * src/wall_region.c every step): up to RG_MAXNODE primitive nodes of
+ * RG_NODE REAL, at most RG_MAXC contacts per atom. Node layout: */
+enum region_node_layout {
+    RG_KIND = 0,        /* enum region_primitive */
+    RG_INTERIOR = 1,
+    RG_OPENFLAG = 2,
+    RG_OPEN = 3,        /* open faces 0..5 as bits */
+    RG_AXIS = 4,
+    RG_WALLOFF = 5,     /* wall id offset inside a union / intersect */
+    RG_MOVE = 6,
+    RG_ROT = 7,
+    RG_P = 8,           /* 8 shape parameters */
+    RG_D = 16,          /* displacement */
+    RG_SIN = 19,
+    RG_COS = 20,
+    RG_POINT = 21,
+    RG_RUNIT = 24,
+    RG_V = 27,
+    RG_OMEGA = 30,
+    RG_RPOINT = 33,
+    RG_NODE = 40
+};
+enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
+enum { RG_MAXNODE = 4, RG_MAXC = 8 };
+
+/* Accuracy records (kernels/accuracy.cl, src/accuracy.c): ACC_PAIR_W REAL
+ * per pair contact (largest dt / t_col, the squared normal speed then) and
+ * ACC_WALL_W REAL per particle for its wall contacts (largest dt / t_col,
+ * normal speed then, largest overlap / radius, the wall's code). */
+enum acc_layout { ACC_PAIR_Q = 0, ACC_PAIR_VN2 = 1, ACC_PAIR_W = 2,
+                  ACC_WALL_Q = 0, ACC_WALL_VN = 1, ACC_WALL_OV = 2, ACC_WALL_CODE = 3,
+                  ACC_WALL_W = 4 };
+
+#endif
