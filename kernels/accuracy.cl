@@ -49,7 +49,7 @@
 #define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
         const REAL r_ = sqrt((k)->rsq);                                                        \
-        const REAL vn_ = fabs((k)->vdel) / r_;                                    \
+        const REAL vn_ = fabs((k)->vdel) / r_;                                                 \
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
         if (ov_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_OV])                                       \
             (acc)[ACC_WALL_W * (i) + ACC_WALL_OV] = ov_;                                       \
