@@ -202,15 +202,6 @@ void pair_caps_define(struct pair_caps *c, const char *name, const char *fmt, ..
 /* Record a reach bound A + B radsum of a term that acts beyond contact. */
 void pair_caps_reach(struct pair_caps *c, double a, double b);
 
-/* Shared by the three gran styles (pair_gran_common.c in styles/):
- * `Kn Kt gamman gammat xmu dampflag [limit_damping]` with LAMMPS defaults. */
-void pair_gran_settings(struct gravel *g, struct pair *p, int argc, char **argv);
-void pair_gran_pack(const struct pair *p, int itype, int jtype, double *param);
-/* Their record: kernel source, evaluator, history (0/1); rotation, the
- * collision time, energy conservation and the elastic energy. */
-void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
-                        const char *eval, int history);
-
 /* Index of packed gran parameters (GRAN_*): kernels/param_layout.h, shared
  * with the kernels. */
 #include "param_layout.h"

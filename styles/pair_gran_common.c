@@ -9,7 +9,7 @@
 #include "args.h"
 #include "collision_time.h"
 #include "error.h"
-#include "pair.h"
+#include "pair_gran_common.h"
 
 enum { C_KN, C_KT, C_GAMMAN, C_GAMMAT, C_XMU, C_DAMPFLAG, C_LIMIT };
 

@@ -1,7 +1,7 @@
 /* pair_gran_hooke.c - pair_style gran/hooke: LAMMPS granular contact
  * (kernels/pair_gran_hooke.cl holds the evaluator; arguments are shared with
  * the other gran styles, styles/pair_gran_common.c). */
-#include "pair.h"
+#include "pair_gran_common.h"
 
 static void describe(const struct pair *p, struct pair_caps *c)
 {

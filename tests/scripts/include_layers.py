@@ -32,7 +32,6 @@ MAX_KNOT = 5
 
 # header -> functions it declares that another .c defines (known, to move)
 KNOWN = {
-    "pair": {"pair_hybrid_terms", "pair_gran_settings", "pair_gran_pack"},
     "pair_seeds": {"seeds_restitution_damping_factor", "seeds_linear_collision_time"},
 }
 
