@@ -535,6 +535,8 @@ void eng_prepare(struct gravel *g)
     int n = 0;
     add_source(g, names, texts, &n, "param_layout.h", "engine");
     add_source(g, names, texts, &n, "wall_layout.h", "engine");
+    /* the pipeline kernels' argument lists (src/kargs.h binds them) */
+    add_source(g, names, texts, &n, "kernel_args.h", "engine");
     add_source(g, names, texts, &n, "common.cl", "engine");
     /* the contact record and the one contact body of every source */
     add_source(g, names, texts, &n, "contact.cl", "engine");

@@ -26,6 +26,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "kargs.h"
 #include "pair.h"
 
 #define NCHUNK_MAX 256
@@ -622,38 +623,36 @@ int nbr_decide(struct gravel *g, int forced)
     int n = e->a.n;
     double trig = trigger_distance(g, b);
     reset_flags(g, b);
-    cl_kernel k = b->k_check;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_mem(g, k, 1, e->a.x);
-    eng_arg_mem(g, k, 2, e->a.v);
-    eng_arg_mem(g, k, 3, b->xhold);
-    eng_arg_real(g, k, 4, trig * trig);
-    eng_arg_mem(g, k, 5, b->flags);
-    eng_arg_mem(g, k, 6, e->a.image);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, 7 + q, q, g->dom.lo[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 13 + q, domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
-    eng_arg_real(g, k, 16, g->dom.xy);
-    eng_arg_real(g, k, 17, g->dom.xz);
-    eng_arg_real(g, k, 18, g->dom.yz);
     /* the fused initial_integrate ops (src/fused.h) run first */
-    int a = 19;
-    eng_arg_mem(g, k, a++, e->fused.ops);
-    eng_arg_int(g, k, a++, e->fused.ninit);
-    eng_arg_mem(g, k, a++, e->fused.prm);
-    eng_arg_mem(g, k, a++, e->a.f);
-    eng_arg_mem(g, k, a++, e->rotation ? e->a.omega : e->a.v);
-    eng_arg_mem(g, k, a++, e->rotation ? e->a.torque : e->a.f);
-    eng_arg_mem(g, k, a++, e->a.rmass);
-    eng_arg_mem(g, k, a++, e->a.radius);
-    eng_arg_mem(g, k, a++, e->a.type);
-    eng_arg_mem(g, k, a++, e->a.mask);
-    eng_arg_mem(g, k, a++, e->hrate);
-    eng_arg_uint(g, k, a++, e->vgroup);
-    eng_arg_pos_lo(g, k, a);
+    struct nbr_check_args ck = {
+        .n = n,
+        .x = e->a.x,
+        .v = e->a.v,
+        .xhold = b->xhold,
+        .trigsq = trig * trig,
+        .flags = b->flags,
+        .image = e->a.image,
+        .box = {0, 0, 0, g->dom.xy, g->dom.xz, g->dom.yz},
+        .ops = e->fused.ops,
+        .nops = e->fused.ninit,
+        .prm = e->fused.prm,
+        .f = e->a.f,
+        .omega = e->rotation ? e->a.omega : e->a.v,
+        .torque = e->rotation ? e->a.torque : e->a.f,
+        .rmass = e->a.rmass,
+        .radius = e->a.radius,
+        .type = e->a.type,
+        .mask = e->a.mask,
+        .hrate = e->hrate,
+        .vgroup = e->vgroup,
+    };
+    for (int q = 0; q < 3; q++) {
+        ck.lo[q] = g->dom.lo[q];
+        ck.hi[q] = g->dom.hi[q];
+        ck.box[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    }
+    cl_kernel k = b->k_check;
+    ka_bind_nbr_check(g, k, 0, &ck);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);
