@@ -50,13 +50,19 @@
 /* force_clear: no pair style */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque)
 
-/* ---- the step's check (kernels/neighbor.cl nbr_check) ---- */
+/* ---- the step's check and wrap (kernels/neighbor.cl) ---- */
 
 #define KARGS_nbr_check(X, Y)                                                                  \
     X(I, n) Y(M, x) Y(M, v) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(MI, image) Y(C3, lo)      \
     Y(C3, hi) Y(BOX, box) Y(CMI, ops) Y(I, nops) Y(CM, prm) Y(CM, f) Y(M, omega)              \
     Y(CM, torque) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, hrate)           \
     Y(U, vgroup) Y(POS_LO, xlo)
+
+/* nbr_wrap_extent: periodic wrap (p: periodic per dimension) and the
+ * per-chunk extents */
+#define KARGS_nbr_wrap_extent(X, Y)                                                            \
+    X(I, n) Y(I, chunk) Y(M, x) Y(M, v) Y(CMU, mask) Y(CM, hrate) Y(U, vgroup) Y(MI, image)    \
+    Y(I3, p) Y(C3, lo) Y(C3, hi) Y(R, xy) Y(R, xz) Y(R, yz) Y(M, ext) Y(POS_LO, xlo)
 
 /* ---- the wall stage (kernels/wall.cl, kernels/wall_region.cl) ---- */
 
@@ -94,6 +100,7 @@
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
     T(wall_atoms) T(wall_law) T(pair_contacts) T(pair_gather) T(force_clear) T(nbr_check)      \
+    T(nbr_wrap_extent)                                                                         \
     T(wall_kernel) T(mesh_kernel) T(region_kernel)
 
 #ifdef __OPENCL_VERSION__

@@ -704,27 +704,27 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     if (chunk < 1)
         chunk = 1;
     int nch = (n + chunk - 1) / chunk;
+    struct nbr_wrap_extent_args wa = {
+        .n = n,
+        .chunk = chunk,
+        .x = e->a.x,
+        .v = e->a.v,
+        .mask = e->a.mask,
+        .hrate = e->hrate,
+        .vgroup = e->vgroup,
+        .image = e->a.image,
+        .xy = d->xy,
+        .xz = d->xz,
+        .yz = d->yz,
+        .ext = b->ext,
+    };
+    for (int q = 0; q < 3; q++) {
+        wa.p[q] = domain_contact_periodic(g, q);
+        wa.lo[q] = d->lo[q];
+        wa.hi[q] = d->hi[q];
+    }
     cl_kernel k = b->k_wrap;
-    int a = 0;
-    eng_arg_int(g, k, a++, n);
-    eng_arg_int(g, k, a++, chunk);
-    eng_arg_mem(g, k, a++, e->a.x);
-    eng_arg_mem(g, k, a++, e->a.v);
-    eng_arg_mem(g, k, a++, e->a.mask);
-    eng_arg_mem(g, k, a++, e->hrate);
-    eng_arg_uint(g, k, a++, e->vgroup);
-    eng_arg_mem(g, k, a++, e->a.image);
-    for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, a++, q, d->lo[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, a++, q, d->hi[q]);
-    eng_arg_real(g, k, a++, d->xy);
-    eng_arg_real(g, k, a++, d->xz);
-    eng_arg_real(g, k, a++, d->yz);
-    eng_arg_mem(g, k, a++, b->ext);
-    eng_arg_pos_lo(g, k, a);
+    ka_bind_nbr_wrap_extent(g, k, 0, &wa);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
