@@ -57,22 +57,22 @@ CONTACT_BODY(gran_hertz_history_body, gran_hertz_history_eval, 0,
              TCOL_OF(gran_hertz_history_eval))
 CONTACT_BODY(wall_granular_body, wall_granular_eval, 1, TCOL_OF(wall_granular_eval))
 
-/* plane and cylinder walls (fix wall/gran): kernel, body, row form, approach, jkr */
-WALL_KERNEL(wall_gran_hooke, gran_hooke_body, 0, 0, 0)
-WALL_KERNEL(wall_gran_hooke_history, gran_hooke_history_body, 0, 0, 0)
-WALL_KERNEL(wall_gran_hertz_history, gran_hertz_history_body, 0, 0, 0)
-WALL_KERNEL(wall_gran_granular, wall_granular_body, 1, 0, 0)
-WALL_KERNEL(wall_gran_granular_jkr, wall_granular_body, 1, 0, 1)
+/* each model's contact body and its form (1: a history row) */
+#define WG_BODY_WG_HOOKE gran_hooke_body
+#define WG_BODY_WG_HOOKE_HISTORY gran_hooke_history_body
+#define WG_BODY_WG_HERTZ_HISTORY gran_hertz_history_body
+#define WG_BODY_WG_GRANULAR wall_granular_body
+#define WG_ROW_WG_HOOKE 0
+#define WG_ROW_WG_HOOKE_HISTORY 0
+#define WG_ROW_WG_HERTZ_HISTORY 0
+#define WG_ROW_WG_GRANULAR 1
 
-/* mesh walls (fix wall/gran ... mesh): the same laws against triangles */
-MESH_KERNEL(mesh_gran_hooke, gran_hooke_body, 0, 0)
-MESH_KERNEL(mesh_gran_hooke_history, gran_hooke_history_body, 0, 0)
-MESH_KERNEL(mesh_gran_hertz_history, gran_hertz_history_body, 0, 0)
-MESH_KERNEL(mesh_gran_granular, wall_granular_body, 1, 0)
-
-/* region walls (fix wall/gran/region): the same laws against region surfaces */
-REGION_KERNEL(region_gran_hooke, gran_hooke_body, 0, 0)
-REGION_KERNEL(region_gran_hooke_history, gran_hooke_history_body, 0, 0)
-REGION_KERNEL(region_gran_hertz_history, gran_hertz_history_body, 0, 0)
-REGION_KERNEL(region_gran_granular, wall_granular_body, 1, 0)
-REGION_KERNEL(region_gran_granular_jkr, wall_granular_body, 1, 1)
+/* every kernel of the table (kernels/fix_wall_gran.h), without approach:
+ * plane and cylinder walls (fix wall/gran), meshes (fix wall/gran ...
+ * mesh; no jkr row), region surfaces (fix wall/gran/region) */
+#define WG_INSTANCE(name, source, model, jkr)                                                  \
+    WG_INSTANCE_##source(name, WG_BODY_##model, WG_ROW_##model, jkr)
+#define WG_INSTANCE_WG_WALL(name, body, row, jkr) WALL_KERNEL(name, body, row, 0, jkr)
+#define WG_INSTANCE_WG_MESH(name, body, row, jkr) MESH_KERNEL(name, body, row, 0)
+#define WG_INSTANCE_WG_REGION(name, body, row, jkr) REGION_KERNEL(name, body, row, jkr)
+WALL_GRAN_KERNELS(WG_INSTANCE)

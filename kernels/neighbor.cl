@@ -25,18 +25,8 @@
  * rebuilt; flags[0] |= 1 if some atom moved (minimum image) more than
  * sqrt(trigsq) since the last build; flags[1] = lowest index with a
  * non-finite position or velocity. */
-__kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
-                        __global const REAL *xhold, const REAL trigsq,
-                        __global int *flags, __global int *image, const REAL lox,
-                        const REAL loy, const REAL loz, const REAL hix, const REAL hiy,
-                        const REAL hiz, const REAL Lx, const REAL Ly, const REAL Lz,
-                        const REAL xy, const REAL xz, const REAL yz,
-                        __global const int *ops, const int nops, __global const REAL *prm,
-                        __global const REAL *f, __global REAL *omega,
-                        __global const REAL *torque, __global const REAL *rmass,
-                        __global const REAL *radius, __global const int *type,
-                        __global const uint *mask, __global const REAL *hrate,
-                        const uint vgroup POS_LO_PARAM)
+/* arguments: KARGS_nbr_check (kernels/kernel_args.h) */
+__kernel void nbr_check(KA_PARAMS(nbr_check))
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -113,13 +103,8 @@ __kernel void nbr_check(const int n, __global REAL *x, __global REAL *v,
 /* Wrap periodic dimensions into [lo, hi) updating image flags (LAMMPS
  * Domain::pbc, one period at most), and write the per-chunk extent
  * ext[6 c ..] = (min x, min y, min z, max x, max y, max z). */
-__kernel void nbr_wrap_extent(const int n, const int chunk, __global REAL *x,
-                              __global REAL *v, __global const uint *mask,
-                              __global const REAL *hrate, const uint vgroup,
-                              __global int *image, const int px, const int py, const int pz,
-                              const REAL lox, const REAL loy, const REAL loz, const REAL hix,
-                              const REAL hiy, const REAL hiz, const REAL xy, const REAL xz,
-                              const REAL yz, __global REAL *ext POS_LO_PARAM)
+/* arguments: KARGS_nbr_wrap_extent (kernels/kernel_args.h) */
+__kernel void nbr_wrap_extent(KA_PARAMS(nbr_wrap_extent))
 {
     const int c = get_global_id(0);
     const int i0 = c * chunk;

@@ -35,19 +35,8 @@ CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 #define PAIR_HIST_N 0
 #endif
 
-__kernel void pair_contacts(const int ncontact, __global const int *ci, __global const int *cj,
-                            __global const int *cslot,
-                            __global const REAL *x, __global const REAL *v,
-                            __global const REAL *omega, __global const REAL *radius,
-                            __global const REAL *rmass, __global const int *type,
-                            __global const uint *mask, __global REAL *shear,
-                            __global const REAL *param, const int ntypes, const int nparam,
-                            const uint freezebit, const REAL dt, const int shearupdate,
-                            const REAL Lx, const REAL Ly, const REAL Lz, const REAL xy,
-                            const REAL xz, const REAL yz, __global REAL *recf,
-                            __global REAL *rect, __global REAL *acc, __global int *astep,
-                            const int step, __global const REAL *hrate,
-                            const uint vgroup POS_LO_PARAM)
+/* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
+__kernel void pair_contacts(KA_PARAMS(pair_contacts))
 {
     const int c = get_global_id(0);
     if (c >= ncontact)
@@ -134,13 +123,8 @@ __kernel void pair_contacts(const int ncontact, __global const int *ci, __global
  * fused post_force ops [first, first + npost) and final_integrate ops
  * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
  * change f, torque, v and omega. */
-__kernel void pair_gather(const int n, __global const int *ioff, __global const REAL *recf,
-                          __global const REAL *rect,
-                          __global REAL *f, __global REAL *torque, __global const int *ops,
-                          const int first, const int npost, const int nfinal,
-                          __global const REAL *prm, __global REAL *v, __global REAL *omega,
-                          __global const REAL *rmass, __global const REAL *radius,
-                          __global const int *type, __global const uint *mask)
+/* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
+__kernel void pair_gather(KA_PARAMS(pair_gather))
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -243,7 +227,7 @@ __kernel void pair_energy(const int n, __global const int *nlist, const int maxn
 #endif
 
 /* Zero the force (and torque) when no pair style computes them. */
-__kernel void force_clear(const int n, __global REAL *f, __global REAL *torque)
+__kernel void force_clear(KA_PARAMS(force_clear))
 {
     const int i = get_global_id(0);
     if (i >= n)

@@ -88,17 +88,6 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
     return 1;
 }
 
-
-/* The arguments every wall kernel starts with, in the order src/wall.c
- * (wall_bind_atoms) binds them: the atoms of the group, the wall's history
- * and the accuracy records (kernels/accuracy.cl). */
-#define WALL_ATOM_ARGS                                                                         \
-    const int n, const uint groupbit, __global const uint *mask, __global const REAL *x,       \
-        __global const REAL *v, __global const REAL *omega, __global const REAL *radius,       \
-        __global const REAL *rmass, __global const int *type, __global REAL *f,                \
-        __global REAL *torque, __global REAL *history, const int has_history,                  \
-        __global REAL *acc, __global int *astep, const int acode, const int step
-
 /* WALL_HMAX: kernels/wall_layout.h */
 #define WALL_ROW_N(ROW) ((ROW) ? WALL_HMAX : 3)
 
@@ -188,15 +177,10 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
  * of contact (pair_style approach, linear/restitution with fix wall/pair,
  * which has no cylinder: a cylinder acts only on spheres it touches). JKR 1:
  * a jkr wall: the contact reaches to WALL_REACH beyond touch and is held
- * there only once it has touched; 0 folds either away. */
+ * there only once it has touched; 0 folds either away. Arguments:
+ * KARGS_wall_kernel (kernels/kernel_args.h). */
 #define WALL_KERNEL(NAME, BODY, ROW, APPROACH, JKR)                                            \
-    __kernel void NAME(                                                                        \
-        WALL_ATOM_ARGS,                                                                        \
-        __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
-        const int nelem, const int kind, const int axis, const REAL lo, const REAL hi,         \
-        const REAL wradius, const REAL vwx, const REAL vwy, const REAL vwz,                    \
-        const int cyl_shear, const REAL vshear, const REAL dt, const int shearupdate,          \
-        const int inclusive POS_LO_PARAM)                                                      \
+    __kernel void NAME(KA_PARAMS(wall_kernel))                                                 \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \
@@ -454,16 +438,10 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
  * The contacts found by mesh_candidates are run through the body in bin
  * order; history slots are kept as mesh_slot_find says (1 + hw REAL each:
  * the key, then the law's hw = 3 REAL of shear, or for ROW 1 the
- * has_history REAL of pair granular's sub-models, kernels/fix_wall_gran.cl). */
+ * has_history REAL of pair granular's sub-models, kernels/fix_wall_gran.cl).
+ * Arguments: KARGS_mesh_kernel (kernels/kernel_args.h). */
 #define MESH_KERNEL(NAME, BODY, ROW, APPROACH)                                                 \
-    __kernel void NAME(                                                                        \
-        WALL_ATOM_ARGS,                                                                        \
-        const int hstride, const int hoff, __global const REAL *param, const int ntypes,       \
-        const int nparam, const int by_type, __global const REAL *tri,                         \
-        __global const int *triv, __global const int *cstart, __global const int *ctri,        \
-        __global const REAL *pose, const int gnx, const int gny, const int gnz,                \
-        const int moving, __global REAL *fmesh, const int want_fmesh, const REAL dt,           \
-        const int shearupdate, const int inclusive POS_LO_PARAM)                               \
+    __kernel void NAME(KA_PARAMS(mesh_kernel))                                                 \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \

@@ -650,13 +650,10 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
  * intersect, as LAMMPS 2021). BODY: a CONTACT_BODY instance; ROW its form.
  * JKR 1 (a jkr wall, kernels/wall.cl WALL_REACH): the region is searched to
  * the reach, and a contact beyond touch not touched yet is skipped with the
- * history of slot 0 zeroed, as LAMMPS 2021 FixWallGranRegion does. */
+ * history of slot 0 zeroed, as LAMMPS 2021 FixWallGranRegion does.
+ * Arguments: KARGS_region_kernel (kernels/kernel_args.h). */
 #define REGION_KERNEL(NAME, BODY, ROW, JKR)                                                    \
-    __kernel void NAME(                                                                        \
-        WALL_ATOM_ARGS,                                                                        \
-        __global const REAL *param, const int ntypes, const int nparam, const int by_type,     \
-        __global const REAL *nodes, const int nnode, const int comb, const int rinterior,      \
-        const int slots, const int dynamic, const REAL dt, const int shearupdate POS_LO_PARAM) \
+    __kernel void NAME(KA_PARAMS(region_kernel))                                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n || !(mask[i] & groupbit))                                                   \

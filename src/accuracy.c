@@ -224,18 +224,16 @@ int acc_step(const struct gravel *g)
     return d > 0x7fffffff ? 0x7fffffff : (int)d;
 }
 
-int acc_bind_wall(struct gravel *g, struct fix *f, cl_kernel k, int i)
+cl_mem acc_wall_rec(struct gravel *g) { return get(g)->wrec; }
+cl_mem acc_wall_step(struct gravel *g) { return get(g)->wstep; }
+
+int acc_wall_code(const struct gravel *g, const struct fix *f)
 {
-    struct acc *s = get(g);
     int code = 0;
     for (int q = 0; q < g->styles.nfix; q++)
         if (g->styles.fix[q] == f)
             code = q + 1;
-    eng_arg_mem(g, k, i++, s->wrec);
-    eng_arg_mem(g, k, i++, s->wstep);
-    eng_arg_int(g, k, i++, code);
-    eng_arg_int(g, k, i++, acc_step(g));
-    return i;
+    return code;
 }
 
 void acc_free(struct gravel *g)

@@ -42,9 +42,11 @@ const struct acc_worst *acc_worst(struct gravel *g);
 cl_mem acc_pair_rec(struct gravel *g);
 cl_mem acc_pair_step(struct gravel *g);
 int acc_step(const struct gravel *g);
-/* Bind the wall-record arguments of a wall or mesh kernel of fix f from
- * index i (acc, astep, acode, step); returns the next index. */
-int acc_bind_wall(struct gravel *g, struct fix *f, cl_kernel k, int i);
+/* Wall kernel arguments (kernels/kernel_args.h KARGS_wall_atoms): the
+ * particles' wall records, their steps, and the code of fix f's walls. */
+cl_mem acc_wall_rec(struct gravel *g);
+cl_mem acc_wall_step(struct gravel *g);
+int acc_wall_code(const struct gravel *g, const struct fix *f);
 void acc_free(struct gravel *g);
 
 #endif

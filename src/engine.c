@@ -375,6 +375,8 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "param_layout.h", "engine");
     add_source(g, names, texts, &n, "wall_layout.h", "engine");
     add_source(g, names, texts, &n, "fused_layout.h", "engine");
+    /* the pipeline kernels' argument lists (src/kargs.h binds them) */
+    add_source(g, names, texts, &n, "kernel_args.h", "engine");
     add_source(g, names, texts, &n, "common.cl", "engine");
     /* each contact law's collision time, shared with the host (after
      * common.cl: REAL and fp64 are set up) */

@@ -26,6 +26,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "kargs.h"
 #include "log.h"
 #include "pair.h"
 
@@ -624,38 +625,36 @@ int nbr_decide(struct gravel *g, int forced)
     int n = e->a.n;
     double trig = trigger_distance(g, b);
     reset_flags(g, b);
-    cl_kernel k = b->k_check;
-    eng_arg_int(g, k, 0, n);
-    eng_arg_mem(g, k, 1, e->a.x);
-    eng_arg_mem(g, k, 2, e->a.v);
-    eng_arg_mem(g, k, 3, b->xhold);
-    eng_arg_real(g, k, 4, trig * trig);
-    eng_arg_mem(g, k, 5, b->flags);
-    eng_arg_mem(g, k, 6, e->a.image);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, 7 + q, q, g->dom.lo[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, 10 + q, q, g->dom.hi[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_real(g, k, 13 + q, domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0);
-    eng_arg_real(g, k, 16, g->dom.xy);
-    eng_arg_real(g, k, 17, g->dom.xz);
-    eng_arg_real(g, k, 18, g->dom.yz);
     /* the fused initial_integrate ops (src/fused.h) run first */
-    int a = 19;
-    eng_arg_mem(g, k, a++, e->fused.ops);
-    eng_arg_int(g, k, a++, e->fused.ninit);
-    eng_arg_mem(g, k, a++, e->fused.prm);
-    eng_arg_mem(g, k, a++, e->a.f);
-    eng_arg_mem(g, k, a++, e->rotation ? e->a.omega : e->a.v);
-    eng_arg_mem(g, k, a++, e->rotation ? e->a.torque : e->a.f);
-    eng_arg_mem(g, k, a++, e->a.rmass);
-    eng_arg_mem(g, k, a++, e->a.radius);
-    eng_arg_mem(g, k, a++, e->a.type);
-    eng_arg_mem(g, k, a++, e->a.mask);
-    eng_arg_mem(g, k, a++, e->hrate);
-    eng_arg_uint(g, k, a++, e->vgroup);
-    eng_arg_pos_lo(g, k, a);
+    struct nbr_check_args ck = {
+        .n = n,
+        .x = e->a.x,
+        .v = e->a.v,
+        .xhold = b->xhold,
+        .trigsq = trig * trig,
+        .flags = b->flags,
+        .image = e->a.image,
+        .box = {0, 0, 0, g->dom.xy, g->dom.xz, g->dom.yz},
+        .ops = e->fused.ops,
+        .nops = e->fused.ninit,
+        .prm = e->fused.prm,
+        .f = e->a.f,
+        .omega = e->rotation ? e->a.omega : e->a.v,
+        .torque = e->rotation ? e->a.torque : e->a.f,
+        .rmass = e->a.rmass,
+        .radius = e->a.radius,
+        .type = e->a.type,
+        .mask = e->a.mask,
+        .hrate = e->hrate,
+        .vgroup = e->vgroup,
+    };
+    for (int q = 0; q < 3; q++) {
+        ck.lo[q] = g->dom.lo[q];
+        ck.hi[q] = g->dom.hi[q];
+        ck.box[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    }
+    cl_kernel k = b->k_check;
+    ka_bind_nbr_check(g, k, 0, &ck);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
     read_flags(g, b, fl);
@@ -707,27 +706,27 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     if (chunk < 1)
         chunk = 1;
     int nch = (n + chunk - 1) / chunk;
+    struct nbr_wrap_extent_args wa = {
+        .n = n,
+        .chunk = chunk,
+        .x = e->a.x,
+        .v = e->a.v,
+        .mask = e->a.mask,
+        .hrate = e->hrate,
+        .vgroup = e->vgroup,
+        .image = e->a.image,
+        .xy = d->xy,
+        .xz = d->xz,
+        .yz = d->yz,
+        .ext = b->ext,
+    };
+    for (int q = 0; q < 3; q++) {
+        wa.p[q] = domain_contact_periodic(g, q);
+        wa.lo[q] = d->lo[q];
+        wa.hi[q] = d->hi[q];
+    }
     cl_kernel k = b->k_wrap;
-    int a = 0;
-    eng_arg_int(g, k, a++, n);
-    eng_arg_int(g, k, a++, chunk);
-    eng_arg_mem(g, k, a++, e->a.x);
-    eng_arg_mem(g, k, a++, e->a.v);
-    eng_arg_mem(g, k, a++, e->a.mask);
-    eng_arg_mem(g, k, a++, e->hrate);
-    eng_arg_uint(g, k, a++, e->vgroup);
-    eng_arg_mem(g, k, a++, e->a.image);
-    for (int q = 0; q < 3; q++)
-        eng_arg_int(g, k, a++, domain_contact_periodic(g, q));
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, a++, q, d->lo[q]);
-    for (int q = 0; q < 3; q++)
-        eng_arg_coord(g, k, a++, q, d->hi[q]);
-    eng_arg_real(g, k, a++, d->xy);
-    eng_arg_real(g, k, a++, d->xz);
-    eng_arg_real(g, k, a++, d->yz);
-    eng_arg_mem(g, k, a++, b->ext);
-    eng_arg_pos_lo(g, k, a);
+    ka_bind_nbr_wrap_extent(g, k, 0, &wa);
     if (nch < 1)
         return;
     eng_launch(g, k, (size_t)nch);
@@ -1441,4 +1440,12 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     b->built = 1;
     b->old_valid = e->history;
     return 1;
+}
+
+void nbr_list_box(const struct nbr_list *l, double box[6])
+{
+    for (int q = 0; q < 3; q++) {
+        box[q] = l->L[q];
+        box[3 + q] = l->tilt[q];
+    }
 }

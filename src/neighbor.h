@@ -85,4 +85,8 @@ int nbr_export(struct gravel *g, struct nbr_state *s);
 int nbr_import(struct gravel *g, const struct nbr_state *s);
 void nbr_state_free(struct nbr_state *s);
 
+/* The list's box for a kernel's BOX argument (kernels/kernel_args.h):
+ * Lx Ly Lz (0 = not periodic) and the tilts xy xz yz. */
+void nbr_list_box(const struct nbr_list *l, double box[6]);
+
 #endif

@@ -32,6 +32,7 @@
 #include "fused.h"
 #include "input.h"
 #include "fix.h"
+#include "kargs.h"
 #include "group.h"
 #include "log.h"
 #include "neighbor.h"
@@ -226,65 +227,66 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     if (e->k_pair) {
         /* the contact pipeline: each contact once, then each particle's sum */
         const struct nbr_list *l = nbr_list(g);
-        cl_kernel k = e->k_pair;
-        int i = 0;
-        eng_arg_int(g, k, i++, l->ncontact);
-        eng_arg_mem(g, k, i++, l->ci);
-        eng_arg_mem(g, k, i++, l->cj);
-        eng_arg_mem(g, k, i++, l->cslot);
-        eng_arg_mem(g, k, i++, a->x);
-        eng_arg_mem(g, k, i++, a->v);
-        eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
-        eng_arg_mem(g, k, i++, a->radius);
-        eng_arg_mem(g, k, i++, e->contact_mass ? e->contact_mass : a->rmass); /* meff */
-        eng_arg_mem(g, k, i++, a->type);
-        eng_arg_mem(g, k, i++, a->mask);
-        eng_arg_mem(g, k, i++, e->history ? l->shear : l->ci);
-        eng_arg_mem(g, k, i++, e->pair_param);
-        eng_arg_int(g, k, i++, g->atoms.ntypes > 0 ? g->atoms.ntypes : 1);
-        eng_arg_int(g, k, i++, g->styles.pair->caps.nparam);
-        eng_arg_uint(g, k, i++, freezebit);
-        eng_arg_real(g, k, i++, g->dt);
-        eng_arg_int(g, k, i++, e->setup ? 0 : 1);
-        i = nbr_arg_box(g, k, i, l);
-        eng_arg_mem(g, k, i++, l->recf);
-        eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
         acc_reserve(g);
-        eng_arg_mem(g, k, i++, acc_pair_rec(g));
-        eng_arg_mem(g, k, i++, acc_pair_step(g));
-        eng_arg_int(g, k, i++, acc_step(g));
-        eng_arg_mem(g, k, i++, e->hrate);
-        eng_arg_uint(g, k, i++, e->vgroup);
-        eng_arg_pos_lo(g, k, i);
-        eng_launch(g, k, (size_t)l->ncontact);
+        struct pair_contacts_args pc = {
+            .ncontact = l->ncontact,
+            .ci = l->ci,
+            .cj = l->cj,
+            .cslot = l->cslot,
+            .x = a->x,
+            .v = a->v,
+            .omega = e->rotation ? a->omega : a->v,
+            .radius = a->radius,
+            .rmass = e->contact_mass ? e->contact_mass : a->rmass, /* meff */
+            .type = a->type,
+            .mask = a->mask,
+            .shear = e->history ? l->shear : l->ci,
+            .param = e->pair_param,
+            .ntypes = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1,
+            .nparam = g->styles.pair->caps.nparam,
+            .freezebit = freezebit,
+            .dt = g->dt,
+            .shearupdate = e->setup ? 0 : 1,
+            .recf = l->recf,
+            .rect = e->rotation ? l->rect : l->recf,
+            .acc = acc_pair_rec(g),
+            .astep = acc_pair_step(g),
+            .step = acc_step(g),
+            .hrate = e->hrate,
+            .vgroup = e->vgroup,
+        };
+        nbr_list_box(l, pc.box);
+        ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
+        eng_launch(g, e->k_pair, (size_t)l->ncontact);
         /* new forces: a virial or energy taken before is stale */
         e->virial_snap_step = e->epair_snap_step = -1;
-        k = e->k_gather;
-        i = 0;
-        eng_arg_int(g, k, i++, a->n);
-        eng_arg_mem(g, k, i++, l->ioff);
-        eng_arg_mem(g, k, i++, l->recf);
-        eng_arg_mem(g, k, i++, e->rotation ? l->rect : l->recf);
-        eng_arg_mem(g, k, i++, a->f);
-        eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
         /* fused post_force ops, and the final kick except at setup */
-        eng_arg_mem(g, k, i++, e->fused.ops);
-        eng_arg_int(g, k, i++, e->fused.ninit);
-        eng_arg_int(g, k, i++, e->fused.npost);
-        eng_arg_int(g, k, i++, e->setup ? 0 : e->fused.nfinal);
-        eng_arg_mem(g, k, i++, e->fused.prm);
-        eng_arg_mem(g, k, i++, a->v);
-        eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
-        eng_arg_mem(g, k, i++, a->rmass);
-        eng_arg_mem(g, k, i++, a->radius);
-        eng_arg_mem(g, k, i++, a->type);
-        eng_arg_mem(g, k, i++, a->mask);
-        eng_launch(g, k, (size_t)a->n);
+        const struct pair_gather_args pg = {
+            .n = a->n,
+            .ioff = l->ioff,
+            .recf = l->recf,
+            .rect = e->rotation ? l->rect : l->recf,
+            .f = a->f,
+            .torque = e->rotation ? a->torque : a->f,
+            .ops = e->fused.ops,
+            .first = e->fused.ninit,
+            .npost = e->fused.npost,
+            .nfinal = e->setup ? 0 : e->fused.nfinal,
+            .prm = e->fused.prm,
+            .v = a->v,
+            .omega = e->rotation ? a->omega : a->v,
+            .rmass = a->rmass,
+            .radius = a->radius,
+            .type = a->type,
+            .mask = a->mask,
+        };
+        ka_bind_pair_gather(g, e->k_gather, 0, &pg);
+        eng_launch(g, e->k_gather, (size_t)a->n);
     } else {
         acc_reserve(g); /* the wall records */
-        eng_arg_int(g, e->k_clear, 0, a->n);
-        eng_arg_mem(g, e->k_clear, 1, a->f);
-        eng_arg_mem(g, e->k_clear, 2, e->rotation ? a->torque : a->f);
+        const struct force_clear_args fc = {
+            .n = a->n, .f = a->f, .torque = e->rotation ? a->torque : a->f};
+        ka_bind_force_clear(g, e->k_clear, 0, &fc);
         eng_launch(g, e->k_clear, (size_t)a->n);
     }
     if (timed)

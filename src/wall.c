@@ -20,63 +20,68 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
     return (size_t)wall_elements(w) * (size_t)law->history * g->eng->rsz;
 }
 
-int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k)
+struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
+                                       const struct wall_law *law)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = eng_atoms(g);
-    int i = 0;
-    eng_arg_int(g, k, i++, a->n);
-    eng_arg_uint(g, k, i++, f->groupbit);
-    eng_arg_mem(g, k, i++, a->mask);
-    eng_arg_mem(g, k, i++, a->x);
-    eng_arg_mem(g, k, i++, a->v);
-    eng_arg_mem(g, k, i++, e->rotation ? a->omega : a->v);
-    eng_arg_mem(g, k, i++, a->radius);
-    eng_arg_mem(g, k, i++, e->contact_mass ? e->contact_mass : a->rmass); /* meff */
-    eng_arg_mem(g, k, i++, a->type);
-    eng_arg_mem(g, k, i++, a->f);
-    eng_arg_mem(g, k, i++, e->rotation ? a->torque : a->f);
-    eng_arg_mem(g, k, i++, law->history ? f->peratom : a->f);
-    eng_arg_int(g, k, i++, law->history);
-    return acc_bind_wall(g, f, k, i);
+    return (struct wall_atoms_args){
+        .n = a->n,
+        .groupbit = f->groupbit,
+        .mask = a->mask,
+        .x = a->x,
+        .v = a->v,
+        .omega = e->rotation ? a->omega : a->v,
+        .radius = a->radius,
+        .rmass = e->contact_mass ? e->contact_mass : a->rmass, /* meff */
+        .type = a->type,
+        .f = a->f,
+        .torque = e->rotation ? a->torque : a->f,
+        .history = law->history ? f->peratom : a->f,
+        .has_history = law->history,
+        .acc = acc_wall_rec(g),
+        .astep = acc_wall_step(g),
+        .acode = acc_wall_code(g, f),
+        .step = acc_step(g),
+    };
 }
 
-int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i)
+struct wall_law_args wall_law_args(struct gravel *g, const struct wall_law *law)
 {
-    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
-    eng_arg_mem(g, k, i++, law->param);
-    eng_arg_int(g, k, i++, nt);
-    eng_arg_int(g, k, i++, law->by_type ? g->styles.pair->caps.nparam : 0);
-    eng_arg_int(g, k, i++, law->by_type);
-    return i;
+    return (struct wall_law_args){
+        .param = law->param,
+        .ntypes = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1,
+        .nparam = law->by_type ? g->styles.pair->caps.nparam : 0,
+        .by_type = law->by_type,
+    };
 }
 
 void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law)
 {
-    struct dev_atoms *a = eng_atoms(g);
-    cl_kernel k = law->kernel;
-    int i = wall_bind_law(g, law, k, wall_bind_atoms(g, f, law, k));
-    eng_arg_int(g, k, i++, wall_elements(w));
-    eng_arg_int(g, k, i++, (int)w->kind);
-    eng_arg_int(g, k, i++, w->axis);
+    struct wall_kernel_args ka = {
+        .wall_atoms = wall_atoms_args(g, f, law),
+        .wall_law = wall_law_args(g, law),
+        .nelem = wall_elements(w),
+        .kind = (int)w->kind,
+        .axis = w->axis,
+        .wradius = w->radius,
+        .vw = {w->v[0], w->v[1], w->v[2]},
+        .cyl_shear = w->cyl_shear,
+        .vshear = w->vshear,
+        .dt = g->dt,
+        .shearupdate = !eng_in_setup(g),
+        .inclusive = law->inclusive,
+    };
     if (w->kind == WALL_ZCYLINDER) { /* the axis (x = y = 0) relative to the origin */
-        eng_arg_coord(g, k, i++, 0, 0.0);
-        eng_arg_coord(g, k, i++, 1, 0.0);
+        ka.lo = ka_coord(g, 0, 0.0);
+        ka.hi = ka_coord(g, 1, 0.0);
     } else {
-        eng_arg_coord(g, k, i++, w->axis, w->lo);
-        eng_arg_coord(g, k, i++, w->axis, w->hi);
+        ka.lo = ka_coord(g, w->axis, w->lo);
+        ka.hi = ka_coord(g, w->axis, w->hi);
     }
-    eng_arg_real(g, k, i++, w->radius);
-    for (int d = 0; d < 3; d++)
-        eng_arg_real(g, k, i++, w->v[d]);
-    eng_arg_int(g, k, i++, w->cyl_shear);
-    eng_arg_real(g, k, i++, w->vshear);
-    eng_arg_real(g, k, i++, g->dt);
-    eng_arg_int(g, k, i++, !eng_in_setup(g));
-    eng_arg_int(g, k, i++, law->inclusive);
-    eng_arg_pos_lo(g, k, i);
-    eng_launch(g, k, (size_t)a->n);
+    ka_bind_wall_kernel(g, law->kernel, 0, &ka);
+    eng_launch(g, law->kernel, (size_t)ka.wall_atoms.n);
 }
 
 /* ---- mesh walls -------------------------------------------------------------------- */
@@ -158,24 +163,24 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
         pose[POSE_REF + q] -= o[q];
     }
     eng_write_reals(g, wm->pose, POSE_N, pose);
-    cl_kernel k = law->kernel;
-    int i = wall_bind_atoms(g, f, law, k);
-    eng_arg_int(g, k, i++, hstride);
-    eng_arg_int(g, k, i++, hoff);
-    i = wall_bind_law(g, law, k, i);
-    eng_arg_mem(g, k, i++, wm->tri);
-    eng_arg_mem(g, k, i++, wm->triv);
-    eng_arg_mem(g, k, i++, wm->cstart);
-    eng_arg_mem(g, k, i++, wm->ctri);
-    eng_arg_mem(g, k, i++, wm->pose);
-    for (int c = 0; c < 3; c++)
-        eng_arg_int(g, k, i++, wm->gn[c]);
-    eng_arg_int(g, k, i++, moving);
-    eng_arg_mem(g, k, i++, fmesh ? fmesh : a->f);
-    eng_arg_int(g, k, i++, fmesh != NULL);
-    eng_arg_real(g, k, i++, g->dt);
-    eng_arg_int(g, k, i++, !eng_in_setup(g));
-    eng_arg_int(g, k, i++, law->inclusive);
-    eng_arg_pos_lo(g, k, i);
-    eng_launch(g, k, (size_t)a->n);
+    const struct mesh_kernel_args ka = {
+        .wall_atoms = wall_atoms_args(g, f, law),
+        .hstride = hstride,
+        .hoff = hoff,
+        .wall_law = wall_law_args(g, law),
+        .tri = wm->tri,
+        .triv = wm->triv,
+        .cstart = wm->cstart,
+        .ctri = wm->ctri,
+        .pose = wm->pose,
+        .gn = {wm->gn[0], wm->gn[1], wm->gn[2]},
+        .moving = moving,
+        .fmesh = fmesh ? fmesh : a->f,
+        .want_fmesh = fmesh != NULL,
+        .dt = g->dt,
+        .shearupdate = !eng_in_setup(g),
+        .inclusive = law->inclusive,
+    };
+    ka_bind_mesh_kernel(g, law->kernel, 0, &ka);
+    eng_launch(g, law->kernel, (size_t)a->n);
 }

@@ -9,6 +9,7 @@
 #define GR_WALL_H
 
 #include "state.h"
+#include "kargs.h"
 #include "ocl.h"
 #include "wall_layout.h"
 
@@ -45,11 +46,12 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
 void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law);
 
-/* Kernel argument binders shared by every wall kind (src/wall.c): the atoms
- * of f's group and the history from index 0, then the law's parameters
- * from index i; each returns the next index. */
-int wall_bind_atoms(struct gravel *g, struct fix *f, const struct wall_law *law, cl_kernel k);
-int wall_bind_law(struct gravel *g, const struct wall_law *law, cl_kernel k, int i);
+/* The kernel arguments shared by every wall kind (kernels/kernel_args.h):
+ * the atoms of f's group, their history and wall records
+ * (KARGS_wall_atoms), and the law's parameters (KARGS_wall_law). */
+struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
+                                       const struct wall_law *law);
+struct wall_law_args wall_law_args(struct gravel *g, const struct wall_law *law);
 
 /* ---- region walls (kernels/wall_region.cl REGION_KERNEL; src/wall_region.c) ----
  * The surface of a LAMMPS region: a primitive (block, sphere, cylinder,

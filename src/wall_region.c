@@ -140,18 +140,20 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
     }
     eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
     struct dev_atoms *a = eng_atoms(g);
-    cl_kernel k = law->kernel;
-    int i = wall_bind_law(g, law, k, wall_bind_atoms(g, f, law, k));
-    eng_arg_mem(g, k, i++, wr->nodes);
-    eng_arg_int(g, k, i++, wr->nnode);
-    eng_arg_int(g, k, i++, wr->comb);
-    eng_arg_int(g, k, i++, wr->interior);
-    eng_arg_int(g, k, i++, wr->slots);
-    eng_arg_int(g, k, i++, vdyn);
-    eng_arg_real(g, k, i++, g->dt);
-    eng_arg_int(g, k, i++, !eng_in_setup(g));
-    eng_arg_pos_lo(g, k, i);
-    eng_launch(g, k, (size_t)a->n);
+    const struct region_kernel_args ka = {
+        .wall_atoms = wall_atoms_args(g, f, law),
+        .wall_law = wall_law_args(g, law),
+        .nodes = wr->nodes,
+        .nnode = wr->nnode,
+        .comb = wr->comb,
+        .rinterior = wr->interior,
+        .slots = wr->slots,
+        .dynamic = vdyn,
+        .dt = g->dt,
+        .shearupdate = !eng_in_setup(g),
+    };
+    ka_bind_region_kernel(g, law->kernel, 0, &ka);
+    eng_launch(g, law->kernel, (size_t)a->n);
 }
 
 void wall_region_release(struct wall_region *wr)

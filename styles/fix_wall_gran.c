@@ -24,7 +24,7 @@
  * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
  * and a history row of its sub-models' width per wall element / region slot
  * (parse_granular); jkr walls hold beyond touch to the pull-off distance
- * (kernels *_jkr). Meshes take model granular too (not jkr). Unsupported
+ * (the jkr rows of kernels/fix_wall_gran.h). Meshes take model granular too (not jkr). Unsupported
  * LAMMPS options (keyword contacts) are rejected with a clear error. */
 #include <math.h>
 #include <stdint.h>
@@ -35,6 +35,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_wall_gran.h"
 #include "pair.h"
 #include "pair_granular.h"
 #include "region.h"
@@ -43,11 +44,11 @@
 #include "wall_region.h"
 
 enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
-enum { M_HOOKE, M_HOOKE_HISTORY, M_HERTZ_HISTORY, M_GRANULAR };
 
 
 struct wall {
-    int model, history;         /* history: REAL per wall contact (0: none) */
+    enum wall_gran_model model;
+    int history;                /* REAL per wall contact (0: none) */
     int nparam;
     double param[GRW_NPARAM];   /* kernels/param_layout.h: GRAN_* (kn kt gamman gammat xmu
                                  * limit) or, model granular, GR_* and GRW_* */
@@ -71,13 +72,17 @@ struct wall {
     double rs_prev[WALL_REGION_MAXNODE][4];
 };
 
-static const char *const model_kernel[] = {"wall_gran_hooke", "wall_gran_hooke_history",
-                                           "wall_gran_hertz_history", "wall_gran_granular"};
-static const char *const mesh_kernel[] = {"mesh_gran_hooke", "mesh_gran_hooke_history",
-                                          "mesh_gran_hertz_history", "mesh_gran_granular"};
-static const char *const region_kernel[] = {"region_gran_hooke", "region_gran_hooke_history",
-                                            "region_gran_hertz_history",
-                                            "region_gran_granular"};
+/* the kernels, by source, model and jkr (kernels/fix_wall_gran.h) */
+static const struct {
+    const char *name;
+    enum wall_gran_source source;
+    enum wall_gran_model model;
+    int jkr;
+} wall_gran_kernel[] = {
+#define WG_ROW(name, source, model, jkr) {#name, source, model, jkr},
+    WALL_GRAN_KERNELS(WG_ROW)
+#undef WG_ROW
+};
 
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
@@ -102,7 +107,7 @@ static double parse_face(struct gravel *g, const char *s, double null_value, con
 static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **argv)
 {
     struct wall w = *pw;
-    w.history = w.model != M_HOOKE ? 3 : 0;
+    w.history = w.model != WG_HOOKE ? 3 : 0;
     w.nparam = GRAN_NPARAM;
     if (argc < 9)
         gr_error(g, "fix wall/gran %s expects Kn Kt gamman gammat xmu dampflag and a wall "
@@ -182,23 +187,23 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct wall w;
     memset(&w, 0, sizeof w);
     if (!strcmp(argv[0], "hooke"))
-        w.model = M_HOOKE;
+        w.model = WG_HOOKE;
     else if (!strcmp(argv[0], "hooke/history"))
-        w.model = M_HOOKE_HISTORY;
+        w.model = WG_HOOKE_HISTORY;
     else if (!strcmp(argv[0], "hertz/history"))
-        w.model = M_HERTZ_HISTORY;
+        w.model = WG_HERTZ_HISTORY;
     else if (!strcmp(argv[0], "model"))
         gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
                     "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
                     "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
                     "or use fix wall/pair mesh for the pair style's law");
     else if (!strcmp(argv[0], "granular"))
-        w.model = M_GRANULAR;
+        w.model = WG_GRANULAR;
     else
         gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history, "
                     "hertz/history or granular)", argv[0]);
     int i;
-    if (w.model == M_GRANULAR) {
+    if (w.model == WG_GRANULAR) {
         i = 1 + parse_granular(g, &w, argc - 1, argv + 1);
         if (i >= argc)
             gr_error(g, "fix wall/gran granular: missing the wall style (xplane, yplane, "
@@ -238,7 +243,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         i += 2;
     } else if (!strcmp(ws, "mesh")) {
         /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
-        if (w.model == M_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
+        if (w.model == WG_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
             gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
                         "meshes (hooke, hertz, hertz/material or dmt are)");
         w.style = W_MESH;
@@ -304,6 +309,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_granular.cl";
     f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "wall_region.cl";
+    f->sources[f->nsources++] = "fix_wall_gran.h";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
 }
 
@@ -365,21 +371,25 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     struct engine *e = eng_get(g);
-    const char *kname = (w->style == W_MESH     ? mesh_kernel
-                         : w->style == W_REGION ? region_kernel
-                                                : model_kernel)[w->model];
-    char kjkr[64];
-    if (w->model == M_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR) {
-        snprintf(kjkr, sizeof kjkr, "%s_jkr", kname); /* held beyond touch */
-        kname = kjkr;
-    }
+    const enum wall_gran_source source = w->style == W_MESH     ? WG_MESH
+                                         : w->style == W_REGION ? WG_REGION
+                                                                : WG_WALL;
+    /* a jkr wall is held beyond touch */
+    const int jkr = w->model == WG_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR;
+    const char *kname = NULL;
+    for (size_t k = 0; k < sizeof wall_gran_kernel / sizeof *wall_gran_kernel; k++)
+        if (wall_gran_kernel[k].source == source && wall_gran_kernel[k].model == w->model &&
+            wall_gran_kernel[k].jkr == jkr)
+            kname = wall_gran_kernel[k].name;
+    if (!kname)
+        gr_error(g, "internal error: fix %s: no wall/gran kernel for this wall and model", f->id);
     w->law.kernel = eng_kernel(g, kname);
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
     /* -compat lammps2021: FixWallGran::init converts a tsuji restitution at
      * every run, so each later run converts the converted value again */
-    if (w->inits++ > 0 && g->opt.lammps2021 && w->model == M_GRANULAR &&
+    if (w->inits++ > 0 && g->opt.lammps2021 && w->model == WG_GRANULAR &&
         (int)w->param[GR_DMODEL] == GR_D_TSUJI)
         w->param[GR_DAMP] = granular_tsuji(w->param[GR_DAMP]);
     /* parameters: re-uploaded every run (precision may change between runs) */

@@ -1,0 +1,150 @@
+/* kernel_args.h - the argument lists of the contact pipeline's kernels,
+ * declared once: each list expands to the kernel's .cl parameter list
+ * (KA_PARAMS; the engine prepends this header to every program, after
+ * wall_layout.h) and, on the host, to a struct with one field per argument
+ * and a binder that sets them in order (src/kargs.h, src/kargs.c). Valid C
+ * and OpenCL C. Adding or moving an argument is one edit here; the kernel
+ * body and the host code that fills the struct then read it by name.
+ *
+ * A list KARGS_<name>(X, Y) names each argument as X(kind, name) for the
+ * first and Y(kind, name) for the rest (so the device expansion can place
+ * the commas). Kinds (device parameter / host field / how it is bound):
+ *   I       const int / int
+ *   U       const uint / unsigned
+ *   R       const REAL / double (eng_arg_real: converted to the run's REAL)
+ *   R3      const REAL <name>x, <name>y, <name>z / double[3]
+ *   C3      as R3, a position: the binder subtracts the device origin
+ *           (eng_arg_coord)
+ *   I3      const int <name>x, <name>y, <name>z / int[3]
+ *   BOX     const REAL Lx, Ly, Lz, xy, xz, yz (the minimum-image box of
+ *           kernels/common.cl; the name is the host field) / double[6]
+ *   M CM    __global REAL * / __global const REAL * ; host cl_mem
+ *   MI CMI  __global int * / __global const int * ; host cl_mem
+ *   CMU     __global const uint * ; host cl_mem
+ *   POS_LO  the low parts of the positions in single precision
+ *           (POS_LO_PARAM of kernels/common.cl: absent in double); no
+ *           host field, bound from the engine; always last
+ *   PART    the arguments of list KARGS_<name>, in place; host field
+ *           struct <name>_args <name> (a part holds no part) */
+#ifndef GR_KERNEL_ARGS_H
+#define GR_KERNEL_ARGS_H
+
+/* ---- the particle-particle stage (kernels/pair_loop.cl) ---- */
+
+/* pair_contacts: one work-item per contact; shear is ci when the law keeps
+ * no history, omega / rect are v / recf without rotation */
+#define KARGS_pair_contacts(X, Y)                                                              \
+    X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CMI, cslot) Y(CM, x) Y(CM, v) Y(CM, omega)          \
+    Y(CM, radius) Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param)              \
+    Y(I, ntypes) Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box)           \
+    Y(M, recf) Y(M, rect) Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup)          \
+    Y(POS_LO, xlo)
+
+/* pair_gather: one work-item per particle, then the fused post_force and
+ * final_integrate ops [first, first + npost + nfinal) */
+#define KARGS_pair_gather(X, Y)                                                                \
+    X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
+    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, v) Y(M, omega) Y(CM, rmass)           \
+    Y(CM, radius) Y(CMI, type) Y(CMU, mask)
+
+/* force_clear: no pair style */
+#define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque)
+
+/* ---- the step's check and wrap (kernels/neighbor.cl) ---- */
+
+#define KARGS_nbr_check(X, Y)                                                                  \
+    X(I, n) Y(M, x) Y(M, v) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(MI, image) Y(C3, lo)      \
+    Y(C3, hi) Y(BOX, box) Y(CMI, ops) Y(I, nops) Y(CM, prm) Y(CM, f) Y(M, omega)              \
+    Y(CM, torque) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, hrate)           \
+    Y(U, vgroup) Y(POS_LO, xlo)
+
+/* nbr_wrap_extent: periodic wrap (p: periodic per dimension) and the
+ * per-chunk extents */
+#define KARGS_nbr_wrap_extent(X, Y)                                                            \
+    X(I, n) Y(I, chunk) Y(M, x) Y(M, v) Y(CMU, mask) Y(CM, hrate) Y(U, vgroup) Y(MI, image)    \
+    Y(I3, p) Y(C3, lo) Y(C3, hi) Y(R, xy) Y(R, xz) Y(R, yz) Y(M, ext) Y(POS_LO, xlo)
+
+/* ---- the wall stage (kernels/wall.cl, kernels/wall_region.cl) ---- */
+
+/* what every wall kernel starts with: the atoms of the group, the wall's
+ * history (has_history REAL per slot) and the accuracy records
+ * (kernels/accuracy.cl: acc, astep, the wall's code acode, step) */
+#define KARGS_wall_atoms(X, Y)                                                                 \
+    X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
+    Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
+    Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step)
+
+/* the wall's law: one packed parameter set (by_type 0) or the pair style's
+ * sets (ntypes x ntypes of nparam REAL) */
+#define KARGS_wall_law(X, Y) X(CM, param) Y(I, ntypes) Y(I, nparam) Y(I, by_type)
+
+/* WALL_KERNEL: plane pair and cylinder (struct wall_geom of kernels/wall.cl) */
+#define KARGS_wall_kernel(X, Y)                                                                \
+    X(PART, wall_atoms) Y(PART, wall_law) Y(I, nelem) Y(I, kind) Y(I, axis) Y(R, lo)          \
+    Y(R, hi) Y(R, wradius) Y(R3, vw) Y(I, cyl_shear) Y(R, vshear) Y(R, dt)                    \
+    Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
+
+/* MESH_KERNEL: history at hoff of a per-atom record of hstride REAL; the
+ * mesh's triangles, bins (gnx x gny x gnz) and pose (POSE_*) */
+#define KARGS_mesh_kernel(X, Y)                                                                \
+    X(PART, wall_atoms) Y(I, hstride) Y(I, hoff) Y(PART, wall_law) Y(CM, tri) Y(CMI, triv)    \
+    Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving) Y(M, fmesh)                \
+    Y(I, want_fmesh) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
+
+/* REGION_KERNEL: nnode nodes (RG_*) under combinator comb */
+#define KARGS_region_kernel(X, Y)                                                              \
+    X(PART, wall_atoms) Y(PART, wall_law) Y(CM, nodes) Y(I, nnode) Y(I, comb)                 \
+    Y(I, rinterior) Y(I, slots) Y(I, dynamic) Y(R, dt) Y(I, shearupdate) Y(POS_LO, xlo)
+
+/* Every list, for the host's structs and binders (src/kargs.h); parts
+ * first (a list's struct holds its parts' structs). */
+#define KARGS_LISTS(T)                                                                         \
+    T(wall_atoms) T(wall_law) T(pair_contacts) T(pair_gather) T(force_clear) T(nbr_check)      \
+    T(nbr_wrap_extent)                                                                         \
+    T(wall_kernel) T(mesh_kernel) T(region_kernel)
+
+#ifdef __OPENCL_VERSION__
+/* ---- device: the parameter list of list `name`, e.g.
+ *   __kernel void pair_contacts(KA_PARAMS(pair_contacts))
+ * KA_FIRST / KA_NEXT expand a list's own arguments; a part is expanded by
+ * copies of them (KA_FIRST2 / KA_NEXT2), as a macro does not expand inside
+ * its own expansion. */
+#define KA_PARAMS(name) KARGS_##name(KA_FIRST, KA_NEXT)
+#define KA_FIRST(kind, name) KA_DECL_##kind(name, KA_FIRST2, KA_NEXT2)
+#define KA_NEXT(kind, name) KA_SEP_##kind KA_DECL_##kind(name, KA_NEXT2, KA_NEXT2)
+#define KA_FIRST2(kind, name) KA_DECL_##kind(name, , )
+#define KA_NEXT2(kind, name) KA_SEP_##kind KA_DECL_##kind(name, , )
+
+#define KA_DECL_I(n, X, Y) const int n
+#define KA_DECL_U(n, X, Y) const uint n
+#define KA_DECL_R(n, X, Y) const REAL n
+#define KA_DECL_R3(n, X, Y) const REAL n##x, const REAL n##y, const REAL n##z
+#define KA_DECL_C3(n, X, Y) const REAL n##x, const REAL n##y, const REAL n##z
+#define KA_DECL_I3(n, X, Y) const int n##x, const int n##y, const int n##z
+#define KA_DECL_BOX(n, X, Y)                                                                   \
+    const REAL Lx, const REAL Ly, const REAL Lz, const REAL xy, const REAL xz, const REAL yz
+#define KA_DECL_M(n, X, Y) __global REAL *n
+#define KA_DECL_CM(n, X, Y) __global const REAL *n
+#define KA_DECL_MI(n, X, Y) __global int *n
+#define KA_DECL_CMI(n, X, Y) __global const int *n
+#define KA_DECL_CMU(n, X, Y) __global const uint *n
+#define KA_DECL_POS_LO(n, X, Y) POS_LO_PARAM
+#define KA_DECL_PART(n, X, Y) KARGS_##n(X, Y)
+
+#define KA_SEP_I ,
+#define KA_SEP_U ,
+#define KA_SEP_R ,
+#define KA_SEP_R3 ,
+#define KA_SEP_C3 ,
+#define KA_SEP_I3 ,
+#define KA_SEP_BOX ,
+#define KA_SEP_M ,
+#define KA_SEP_CM ,
+#define KA_SEP_MI ,
+#define KA_SEP_CMI ,
+#define KA_SEP_CMU ,
+#define KA_SEP_POS_LO /* POS_LO_PARAM brings its own comma */
+#define KA_SEP_PART /* the part's first argument brings it */
+#endif
+
+#endif
