@@ -4,12 +4,15 @@
 CC      ?= gcc
 CFLAGS  ?= -O2 -g
 WARN     = -Wall -Wextra -Werror
-CPPFLAGS = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 -Isrc -Istyles -Ikernels -Ibuild/gen
+# every folder of src/ and styles/ is on the include path (doc/architecture.md)
+SRCDIRS  = $(sort $(dir $(wildcard src/*/*.c src/*/*.h styles/*/*.c styles/*/*.h)))
+CPPFLAGS = -std=c11 -D_GNU_SOURCE -D_FILE_OFFSET_BITS=64 $(patsubst %/,-I%,$(SRCDIRS)) -Istyles -Ikernels \
+           -Ibuild/gen
 LDLIBS   = -lOpenCL -lgsl -lgslcblas -lm
 SANFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-SRC      = $(wildcard src/*.c styles/*.c)
-LIBSRC   = $(filter-out src/main.c,$(SRC))
+SRC      = $(wildcard src/*/*.c styles/*/*.c)
+LIBSRC   = $(filter-out src/core/main.c,$(SRC))
 OBJ      = $(SRC:%.c=build/obj/%.o) build/obj/kernels.o
 LIBOBJ   = $(LIBSRC:%.c=build/obj/%.o) build/obj/kernels.o
 ASANOBJ  = $(LIBSRC:%.c=build/asan/%.o) build/asan/kernels.o
@@ -26,15 +29,15 @@ bin/gravel: $(OBJ)
 
 # Sanitizer build of the whole engine, used by the unit tests and the fuzz replay.
 asan: bin/gravel-asan $(UNITBIN)
-bin/gravel-asan: $(ASANOBJ) build/asan/src/main.o
+bin/gravel-asan: $(ASANOBJ) build/asan/src/core/main.o
 	@mkdir -p bin
 	$(CC) $(SANFLAGS) -o $@ $^ $(LDLIBS)
 
-build/obj/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
+build/obj/%.o: %.c $(wildcard src/*/*.h styles/*/*.h kernels/*.h) src/script/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(WARN) -c -o $@ $<
 
-build/asan/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
+build/asan/%.o: %.c $(wildcard src/*/*.h styles/*/*.h kernels/*.h) src/script/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(SANFLAGS) $(WARN) -c -o $@ $<
 
@@ -95,7 +98,7 @@ FUZZ_TIME ?= 60
 FUZZ_TIMEOUT ?= 10
 FUZZFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 FUZZOBJ   = $(LIBSRC:%.c=build/fuzz/%.o) build/fuzz/kernels.o
-build/fuzz/%.o: %.c $(wildcard src/*.h styles/*.h kernels/*.h) src/commands.def styles/styles.def
+build/fuzz/%.o: %.c $(wildcard src/*/*.h styles/*/*.h kernels/*.h) src/script/commands.def styles/styles.def
 	@mkdir -p $(dir $@)
 	clang $(CPPFLAGS) $(FUZZFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
 build/fuzz/kernels.o: build/gen/kernels.c

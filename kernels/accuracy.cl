@@ -1,11 +1,11 @@
 /* accuracy.cl - collision resolution and overlap of the contacts that
- * happen during a run (host side src/accuracy.c).
+ * happen during a run (host side src/contact/accuracy.c).
  *
  * Every contact law has a collision-time function <eval>_tcol(c, param, vn):
  * the duration of an isolated two-body collision of this contact's m* and
  * R* at relative normal speed vn > 0 (0: none, e.g. cohesion or an
  * overdamped dashpot), which calls the law's formula in
- * kernels/collision_time.h (the host calls the same one, src/pair.h).
+ * kernels/collision_time.h (the host calls the same one, src/style/pair.h).
  * TCOL_OF(EVAL) names it for an evaluator EVAL (a macro such as PAIR_EVAL is
  * expanded first).
  *

@@ -1,5 +1,5 @@
 /* box_change.cl - atoms remapped by a box change during a run
- * (src/box_change.c): the atoms of groupbit keep their lamda coordinates.
+ * (src/engine/box_change.c): the atoms of groupbit keep their lamda coordinates.
  *
  * Without SPLIT_POS this is LAMMPS's x2lamda with the old box (lower
  * corner olo, inverse shape hinv = h_inv[0..5]) and lamda2x with the new
@@ -56,7 +56,7 @@ __kernel void box_remap(const int n, __global REAL *x, __global const uint *mask
     vstore3(xi, i, x);
 }
 
-/* Image flags after a box flip (src/box_change.c box_change_flip): the new
+/* Image flags after a box flip (src/engine/box_change.c box_change_flip): the new
  * edge vectors are b' = b + fxy a, c' = c + fyz b + fxz a (LAMMPS's flips),
  * and an atom keeps its unwrapped position:
  * iy' = iy - fyz iz, ix' = ix - fxz iz - fxy iy'. */

@@ -4,7 +4,7 @@
  * effective radius R* and the normal speed vn (> 0), in plain C that is
  * valid C11 and OpenCL C: the host includes this file (styles/pair_*.c: the
  * run-start time-step report, the -check accuracy map, the energy-drift
- * footer; src/pair.h's collision-time contract) and the engine prepends it
+ * footer; src/style/pair.h's collision-time contract) and the engine prepends it
  * to every program, where each law's <eval>_tcol(c, param, vn) calls the
  * same function with the contact's m* and R* (kernels/accuracy.cl reads
  * those for the collision-resolution records). On the host TCOL_REAL is

@@ -185,7 +185,7 @@ static inline REAL3 box_ufac(const REAL Ly, const REAL Lz, const REAL xy, const 
 /* Positions. With SPLIT_POS (every single-precision run) a coordinate is the
  * unevaluated sum hi + lo of two floats, hi in x and lo in xlo (the kernel's
  * last argument, POS_LO_PARAM), relative to the run's origin (the box centre,
- * src/engine.c): 48 significant bits, so a drift below half the float spacing
+ * src/engine/engine.c): 48 significant bits, so a drift below half the float spacing
  * still moves the particle and a contact's separation is resolved as in
  * double. Drifts go through pos_add, contact separations and overlaps through
  * contact_refine (below) from the hi and lo differences; binning and the

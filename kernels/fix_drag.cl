@@ -1,7 +1,7 @@
 /* fix_drag.cl - Stokes drag F_d = beta (u_f(x) - v), beta = m/tau_p =
  * 3 pi mu d = 6 pi mu r (000 eq. 2.7-2.8), in a uniform flow or the
  * Taylor-Green vortex (000 eq. 6.1-6.3). Host side and the update schemes:
- * styles/fix_drag.c. */
+ * styles/fix/fix_drag.c. */
 
 /* Fluid velocity at x. flow 0: (p0, p1, p2); flow 1: Taylor-Green with
  * amplitude A = p0 and wave number a = p1:

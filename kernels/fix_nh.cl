@@ -1,5 +1,5 @@
 /* fix_nh.cl - the per-atom work of the Nose-Hoover integrators (fix nvt,
- * npt, nph and their /sphere forms; host side styles/fix_nh.c). Each kernel
+ * npt, nph and their /sphere forms; host side styles/fix/fix_nh.c). Each kernel
  * does exactly LAMMPS FixNH's arithmetic, in its order, for the atoms of the
  * fix group (groupbit).
  *
@@ -10,7 +10,7 @@
  *   NH_DRIFT   x += dtv v                                  nve_x
  * final_integrate is NH_KICK then NH_PRESS: nh_final orders them so. The
  * box dilation between the kick and the drift and after the drift is the
- * box change's (src/box_change.c). */
+ * box change's (src/engine/box_change.c). */
 
 #define NH_TEMP 1
 #define NH_PRESS 2

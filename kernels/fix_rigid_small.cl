@@ -1,5 +1,5 @@
 /* fix_rigid_small.cl - the device side of fix rigid/small
- * (styles/fix_rigid_small.c): copy the members' forces and torques into a
+ * (styles/fix/fix_rigid_small.c): copy the members' forces and torques into a
  * compact buffer (member order), and write back the members' positions,
  * velocities and spins computed on the host. idx[k] = device index of
  * member k. Positions arrive relative to the run's origin, split in hi + lo

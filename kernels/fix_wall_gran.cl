@@ -1,5 +1,5 @@
 /* fix_wall_gran.cl - the LAMMPS granular wall models (fix wall/gran, 2021
- * semantics; host side styles/fix_wall_gran.c): the wall stage of the
+ * semantics; host side styles/fix/fix_wall_gran.c): the wall stage of the
  * contact pipeline (kernels/wall.cl) with the pair evaluators of
  * pair_gran_hooke.cl, pair_gran_hooke_history.cl and
  * pair_gran_hertz_history.cl, so the wall physics is the pair physics;

@@ -1,5 +1,5 @@
 /* fix_wall_gran.h - the kernels of fix wall/gran and wall/gran/region,
- * declared once: read by the host (styles/fix_wall_gran.c picks its kernel
+ * declared once: read by the host (styles/fix/fix_wall_gran.c picks its kernel
  * by source, model and jkr from this table) and by the device
  * (kernels/fix_wall_gran.cl instantiates every row). Valid C and OpenCL C;
  * the fix lists it among its kernel sources, before fix_wall_gran.cl. */

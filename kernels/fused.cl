@@ -1,5 +1,5 @@
 /* fused.cl - per-particle fix work fused into the scene's kernels (host
- * side src/fused.c). Instead of one launch per fix and hook, the run passes
+ * side src/engine/fused.c). Instead of one launch per fix and hook, the run passes
  * each stage's list of operations, in fix order, to a kernel that already
  * visits every particle:
  *   initial_integrate ops  -> nbr_check (before the wrap and the check)

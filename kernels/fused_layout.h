@@ -1,5 +1,5 @@
 /* fused_layout.h - the contract of the fused per-particle fix work, declared
- * once: read by the host (src/fused.c builds the op list) and by the kernels
+ * once: read by the host (src/engine/fused.c builds the op list) and by the kernels
  * (kernels/fused.cl runs it; the engine prepends this file to every
  * program). Plain enums: valid C and OpenCL C. */
 #ifndef GR_FUSED_LAYOUT_H

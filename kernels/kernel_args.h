@@ -2,7 +2,7 @@
  * declared once: each list expands to the kernel's .cl parameter list
  * (KA_PARAMS; the engine prepends this header to every program, after
  * wall_layout.h) and, on the host, to a struct with one field per argument
- * and a binder that sets them in order (src/kargs.h, src/kargs.c). Valid C
+ * and a binder that sets them in order (src/engine/kargs.h, src/engine/kargs.c). Valid C
  * and OpenCL C. Adding or moving an argument is one edit here; the kernel
  * body and the host code that fills the struct then read it by name.
  *
@@ -96,7 +96,7 @@
     X(PART, wall_atoms) Y(PART, wall_law) Y(CM, nodes) Y(I, nnode) Y(I, comb)                 \
     Y(I, rinterior) Y(I, slots) Y(I, dynamic) Y(R, dt) Y(I, shearupdate) Y(POS_LO, xlo)
 
-/* Every list, for the host's structs and binders (src/kargs.h); parts
+/* Every list, for the host's structs and binders (src/engine/kargs.h); parts
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
     T(wall_atoms) T(wall_law) T(pair_contacts) T(pair_gather) T(force_clear) T(nbr_check)      \

@@ -735,7 +735,7 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
  * renamed into the new order, and each new contact (owned by the same atom
  * as before: the lower tag) takes the history of the old contact of its
  * owner with the same partner, or zero. The previous partners and
- * histories are parked in the force buffer during the rebuild (src/neighbor.c:
+ * histories are parked in the force buffer during the rebuild (src/engine/neighbor.c:
  * histories from its start, partners from int offset `at`). */
 __kernel void nbr_invperm(const int n, __global const int *perm, __global int *invperm)
 {
@@ -754,7 +754,7 @@ __kernel void hist_rename(const int nold, __global const int *invperm, __global 
 
 #ifdef LMP2021
 /* -compat lammps2021: LAMMPS 29Sep2021's neighbor bins (NBinStandard, one
- * process, style bin, atoms in tag order), as src/neighbor.c sets them up. */
+ * process, style bin, atoms in tag order), as src/engine/neighbor.c sets them up. */
 struct lmp_grid {
     REAL3 lo, hi, inv;
     int3 n;

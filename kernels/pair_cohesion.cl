@@ -1,5 +1,5 @@
 /* pair_cohesion.cl - linear cohesion between effect surfaces (Andrews 2018,
- * source document 000, eq. 2.6, appendix A.2; styles/pair_cohesion.c).
+ * source document 000, eq. 2.6, appendix A.2; styles/pair/pair_cohesion.c).
  *
  * With r = |del|, n = del / r (from j to i) and the effect distance
  *   d_e = (a_i + b_i radi) + (a_j + b_j radj)

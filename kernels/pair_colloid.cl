@@ -1,4 +1,4 @@
-/* pair_colloid.cl - LAMMPS pair colloid (styles/pair_colloid.c): integrated
+/* pair_colloid.cl - LAMMPS pair colloid (styles/pair/pair_colloid.c): integrated
  * Lennard-Jones spheres (Everaers and Ejtehadi 2003), three forms chosen per
  * type pair on the host (COL_FORM):
  *   COL_SS  small-small: LJ 4 eps ((s/r)^12 - (s/r)^6), eps = A / 144;

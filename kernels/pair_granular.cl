@@ -1,9 +1,9 @@
 /* pair_granular.cl - LAMMPS `pair_style granular` (29 Sep 2021,
  * pair_granular.cpp compute()): one small evaluator per sub-model, composed
- * by granular_eval. Host side styles/pair_granular.c; docs
+ * by granular_eval. Host side styles/pair/pair_granular.c; docs
  * doc/styles/pair_granular.md.
  *
- * Composition at program build time (styles/pair_granular.c defines):
+ * Composition at program build time (styles/pair/pair_granular.c defines):
  *   GRN_USED, GRD_USED, GRT_USED, GRR_USED, GRW_USED  bit masks of the normal,
  *       damping, tangential, rolling and twisting models some type pair uses
  *       (bit = the GR_N_* ... value of param_layout.h); a model whose bit is
@@ -97,7 +97,7 @@ static inline REAL grn_jkr_pulloff(REAL E, REAL coh, REAL Reff)
  * coeff_restitution (LAMMPS 2024, GranSubModDampingCoeffRestitution, a
  * GranSubModDampingTsuji with its own init): sqrt(m Fne / delta), 0 unless
  * delta > 0, i.e. sqrt(m kn) for hooke and sqrt(m kn a) for hertz and
- * hertz/material (the host turned e into damp, styles/pair_granular.c; the
+ * hertz/material (the host turned e into damp, styles/pair/pair_granular.c; the
  * cohesive dmt and jkr are refused there). */
 static inline REAL grd_factor(const int used, int model, REAL meff, REAL a, REAL knfac,
                               REAL Fne, REAL delta)

@@ -1,5 +1,5 @@
 /* pair_hertz_mindlin.cl - Hertz-Mindlin contact with Tsuji-type damping
- * (source document 003 sec. 4.3-4.5; host side styles/pair_hertz_mindlin.c).
+ * (source document 003 sec. 4.3-4.5; host side styles/pair/pair_hertz_mindlin.c).
  *
  * n = del / r (from j to i), delta = radsum - r, R* = reff, m* = meff,
  * a = sqrt(R* delta), vr_n = vr.n, v_t = contact-point relative velocity:

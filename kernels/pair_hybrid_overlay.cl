@@ -1,5 +1,5 @@
 /* pair_hybrid_overlay.cl - the fused evaluator of pair_style hybrid/overlay
- * (styles/pair_hybrid_overlay.c): one neighbor loop (pair_loop.cl) calls
+ * (styles/pair/pair_hybrid_overlay.c): one neighbor loop (pair_loop.cl) calls
  * hybrid_overlay_eval, which calls each composed term in turn and sums forces
  * and torques. Build options (set by the host):
  *   PAIR_TERMS=n                 number of terms (1..4)

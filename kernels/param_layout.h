@@ -17,13 +17,13 @@ enum gran_param { GRAN_KN, GRAN_KT, GRAN_GAMMAN, GRAN_GAMMAT, GRAN_XMU, GRAN_LIM
 enum lr_param { LR_KE, LR_KF, LR_MU, LR_CETA, LR_CTCOL, LR_TORQUE, LR_NPARAM };
 
 /* hertz/mindlin: kn = 4/3 E*, kt = 8 G*, damping factor, friction and
- * rolling-friction coefficients (styles/pair_hertz_mindlin.c). */
+ * rolling-friction coefficients (styles/pair/pair_hertz_mindlin.c). */
 enum hm_param { HM_KN, HM_KT, HM_CDAMP, HM_MU, HM_MUR, HM_NPARAM };
 
 /* cohesion: kc, then the effect radius a + b r of each side (i, j). */
 enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
 
-/* granular (styles/pair_granular.c, kernels/pair_granular.cl): the sub-model
+/* granular (styles/pair/pair_granular.c, kernels/pair_granular.cl): the sub-model
  * of each category (GR_N_*, GR_D_*, GR_T_*, GR_R_*, GR_W_* as REAL), limit_damping
  * (0/1), then LAMMPS's coefficients after its conversions and mixing:
  * normal kn (4/3 E* for the material models), damping (tsuji, coeff_restitution:
@@ -49,7 +49,7 @@ enum gr_roll { GR_R_NONE, GR_R_SDS };
 enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
                  GRW_JKR2021, GRW_NPARAM };
 
-/* colloid (styles/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
+/* colloid (styles/pair/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
  * (COL_SS small-small LJ, COL_SL colloid-small, COL_LL colloid-colloid as
  * REAL), cutsq, the Hamaker constant A, sigma^3, sigma^6, the radii a1 (of
  * the I type) and a2 (a2 alone: the colloid's radius in COL_SL), LJ

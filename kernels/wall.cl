@@ -1,5 +1,5 @@
 /* wall.cl - the wall stage of the contact pipeline: walls as contact
- * sources (host side src/wall.c; front-ends fix wall/gran and wall/pair).
+ * sources (host side src/contact/wall.c; front-ends fix wall/gran and wall/pair).
  *
  * A wall is a set of elements; a geometry kind is a small pure function
  * that answers, for element e and a sphere at x, whether e acts on it and

@@ -1,5 +1,5 @@
 /* wall_layout.h - the host/device contracts of the wall stage, declared once:
- * read by the host (src/wall.c, src/wall_region.c, src/accuracy.c) and by
+ * read by the host (src/contact/wall.c, src/contact/wall_region.c, src/contact/accuracy.c) and by
  * the kernels (the engine prepends it to every program, after
  * param_layout.h). Plain enums: valid C and OpenCL C. */
 #ifndef GR_WALL_LAYOUT_H
@@ -23,7 +23,7 @@ enum mesh_pose_layout { POSE_R = 0, POSE_D = 9, POSE_V0 = 12, POSE_OMEGA = 15, P
 enum { MESH_SLOTS = 4 };
 
 /* A region as device nodes (kernels/wall_region.cl; filled by
- * src/wall_region.c every step): up to RG_MAXNODE primitive nodes of
+ * src/contact/wall_region.c every step): up to RG_MAXNODE primitive nodes of
  * RG_NODE REAL, at most RG_MAXC contacts per atom. Node layout: */
 enum region_node_layout {
     RG_KIND = 0,        /* enum region_primitive */
@@ -48,7 +48,7 @@ enum region_node_layout {
 enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
 enum { RG_MAXNODE = 4, RG_MAXC = 8 };
 
-/* Accuracy records (kernels/accuracy.cl, src/accuracy.c): ACC_PAIR_W REAL
+/* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c): ACC_PAIR_W REAL
  * per pair contact (largest dt / t_col, the squared normal speed then) and
  * ACC_WALL_W REAL per particle for its wall contacts (largest dt / t_col,
  * normal speed then, largest overlap / radius, the wall's code). */

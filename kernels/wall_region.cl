@@ -1,11 +1,11 @@
 /* wall_region.cl - geometry kind "region" of the wall stage (kernels/wall.cl;
- * host side src/wall_region.c; front-end fix wall/gran/region): the surface
+ * host side src/contact/wall_region.c; front-end fix wall/gran/region): the surface
  * contacts of a LAMMPS region, as LAMMPS computes them (Region::surface,
  * surface_interior / surface_exterior of block, sphere, cylinder, cone and
  * plane, union and intersect of those), as pure functions of the particle.
  *
  * A region is up to RG_MAXNODE primitive nodes of RG_NODE REAL each (layout
- * RG_* of kernels/wall_layout.h, filled by src/wall_region.c every step) and a combinator: 0 a
+ * RG_* of kernels/wall_layout.h, filled by src/contact/wall_region.c every step) and a combinator: 0 a
  * single primitive (node 0), 1 union, 2 intersect of the nodes, with the
  * compound's side. Each node carries its own side, open faces and motion:
  * the particle is taken into the node's static frame (subtract d, rotate by

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """accuracy_map.py - `gravel -check deck` and `run N accuracy` (issue 13
-item 7; src/accuracy_map.c, doc/accuracy_map.md) on two decks of inputs/:
+item 7; src/contact/accuracy_map.c, doc/accuracy_map.md) on two decks of inputs/:
 
 - inputs/examples/settle.in (gran/hooke/history, kn 1e5, gamma_n 100, m 1):
   the converged reference replay equals the damped linear oscillator of two

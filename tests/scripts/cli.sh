@@ -59,7 +59,7 @@ check device_precision_accepted '[ $rc -eq 0 ] && grep -q "^ok$" out'
 
 "$bin" -h > out 2>&1; rc=$?
 check help '[ $rc -eq 0 ] && grep -q "^  variable " out && grep -q "^  print " out && grep -q "styles:" out'
-n_cmd=$(grep -c '^CMD(' "$OLDPWD/src/commands.def")
+n_cmd=$(grep -c '^CMD(' "$OLDPWD/src/script/commands.def")
 n_help=$(sed -n '/^Commands:/,/^$/p' out | grep -c '^  ')
 check help_lists_every_command '[ "$n_cmd" -eq "$n_help" ]'
 "$bin" -version > out 2>&1; rc=$?

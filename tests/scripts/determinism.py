@@ -13,7 +13,7 @@ bit-identical in every variant:
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - neigh_modify check no (a rebuild every step: other neighbor sets).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
-freeze, viscous, nve/sphere: src/fused.h) gives the same bits with fusion
+freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
 off (GRAVEL_FUSE=0: one launch per fix and hook). Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).

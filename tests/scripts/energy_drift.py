@@ -3,7 +3,7 @@
 time where energy is conserved (issue 13 item 6): an elastic pair style
 without friction (linear/restitution e = 1 mu = 0, hertz/mindlin e = 1 mu = 0
 mu_r = 0, gran/* gamman = 0 xmu = 0) and only nve, nve/sphere or freeze fixes.
-Energy = kinetic (with rotation) + elastic energy of the contacts (src/output.c).
+Energy = kinetic (with rotation) + elastic energy of the contacts (src/io/output.c).
 
 - two spheres overlapping at rest across a periodic boundary: the footer's
   starting energy is the contact's elastic energy (linear 1/2 ke delta^2,

@@ -155,7 +155,7 @@ def main():
 
     bottom = {"state": {"atom_fields"}, "log": {"state"}, "error": {"state"}}
     for m, allowed in sorted(bottom.items()):
-        header = os.path.join(ROOT, "src", m + ".h")
+        header = os.path.join(ROOT, "src", "core", m + ".h")
         with open(header) as fp:
             incs = set(INCLUDE.findall(fp.read())) - {m}
         extra = incs - allowed

@@ -83,7 +83,7 @@ def gstar(E, nu, wall):
 
 
 def tsuji_cd(e):
-    """hertz/mindlin damping factor 2 sqrt(5/6) beta (styles/pair_hertz_mindlin.c)."""
+    """hertz/mindlin damping factor 2 sqrt(5/6) beta (styles/pair/pair_hertz_mindlin.c)."""
     if e >= 1:
         return 0.0
     l = math.log(e)

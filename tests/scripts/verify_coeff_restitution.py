@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """verify_coeff_restitution.py - pair granular's `damping coeff_restitution`
-(LAMMPS 2024, GranSubModDampingCoeffRestitution; styles/pair_granular.c,
+(LAMMPS 2024, GranSubModDampingCoeffRestitution; styles/pair/pair_granular.c,
 kernels/pair_granular.cl) against its analytic restitution, for pairs and for
 its wall forms (fix wall/gran granular zplane, fix wall/gran/region granular,
 fix wall/gran granular mesh).

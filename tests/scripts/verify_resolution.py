@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """verify_resolution.py - collision resolution and overlap of the contacts
-that happen during a run (issue 13 items 3 and 4; src/accuracy.c).
+that happen during a run (issue 13 items 3 and 4; src/contact/accuracy.c).
 
 - A bead starts at rest and falls onto a wall (fix wall/pair, hertz/mindlin)
   or a triangle mesh (fix wall/gran hertz/history ... mesh): the run-start

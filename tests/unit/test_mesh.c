@@ -1,4 +1,4 @@
-/* test_mesh.c - triangle-mesh walls (src/mesh.c, fix mesh/surface, fix
+/* test_mesh.c - triangle-mesh walls (src/state/mesh.c, fix mesh/surface, fix
  * move/mesh, fix wall/gran ... mesh, dump mesh/vtk, f_ID output):
  *  - the readers (ASCII STL, binary STL, legacy VTK polydata and
  *    unstructured grid) give the same welded box: 8 vertices, 18 edges,

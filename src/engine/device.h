@@ -1,0 +1,185 @@
+/* device.h - the device engine's state and the helpers styles use to launch
+ * kernels: the bottom of everything that runs on the device.
+ *
+ * The engine lives across runs (g->eng). Its state (per-atom buffers in
+ * device order, the run's kernels, the per-run records neighbor.c,
+ * accuracy.c and fused.c keep in it, the run's statistics) is declared
+ * here so that those modules and the styles need only this header; what a
+ * run does with it (program assembly, upload, sync back, teardown) is
+ * engine.h. */
+#ifndef GR_DEVICE_H
+#define GR_DEVICE_H
+
+#include "ocl.h"
+#include "state.h"
+
+/* Device per-atom arrays in device order (REAL = float or double). */
+/* Device per-atom arrays in device order (REAL = float or double): one
+ * buffer per row of the field table (atom_fields.h), NULL when the run does
+ * not hold that field (its `when` column). x is relative to eng->origin. */
+#define DEV_ATOM_MEMBER(name, ctype, dev, width, when, life, sect, what) cl_mem name;
+struct dev_atoms {
+    int n;                      /* atoms on the device */
+    ATOM_FIELDS(DEV_ATOM_MEMBER)
+    cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
+};
+
+struct nbr;                     /* neighbor.c */
+struct acc;                     /* accuracy.c */
+struct fix;
+
+/* The run's fused stages (engine-owned; built by fused_setup, fused.h). */
+struct fused_stages {
+    cl_mem ops, prm;            /* int[FOP_W per op], REAL[] */
+    int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
+};
+
+/* The fix calls of each hook for the current run (run.c). */
+enum { NHOOK = 5 };
+struct hook_call {
+    struct fix *fix;
+    void (*fn)(struct gravel *, struct fix *);
+};
+struct hook_lists {
+    int n[NHOOK];
+    struct hook_call *call[NHOOK];
+    int nforce;                 /* fixes with force_reneighbor (fix pour) */
+    struct fix **force;
+};
+
+#define GR_HIST_MAX 16 /* REALs of contact history per contact, at most */
+
+/* What a finished run reports (thermo_footer prints it LAMMPS-style). */
+struct run_stats {
+    bigint nsteps;
+    int natoms;
+    double t_total;                 /* wall seconds of the loop */
+    double t_pair, t_neigh, t_modify, t_output, t_other;
+    bigint nbuilds, ndanger;
+    double total_neighbors;         /* entries in the last list built */
+    double max_overlap_frac;        /* largest overlap / radius: pairs at outputs,
+                                     * walls and meshes at every step */
+    /* worst collision resolution (src/contact/accuracy.h): dt / t_col, 0 = none */
+    double res_q, res_vn;
+    bigint res_step;
+    long long res_tag_i, res_tag_j; /* tag_j 0: res_wall, a wall fix */
+    char res_wall[GR_NAMELEN];
+    bigint nlaunch;                 /* kernel launches and fills in the loop */
+    int ncontact;                   /* contacts of the last list built */
+    double mem_peak;                /* most bytes of device buffers live during the run */
+};
+
+struct engine {
+    struct ocl ocl;
+    int ready;                  /* device chosen */
+    int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
+    double origin[3];           /* device positions are x - origin (0 in double) */
+    size_t rsz;                 /* sizeof(REAL) */
+    int rotation, history;      /* active features of the current run */
+    int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
+                                 * at most GR_HIST_MAX) */
+    int hist_owner;             /* its last slot is LAMMPS's owner (-compat lammps2021) */
+    int cap;                    /* per-atom buffer capacity */
+    struct dev_atoms a;
+    int active;                 /* inside a run: the device holds the truth */
+    int setup;                  /* computing the setup forces (no history update) */
+    int nkern, kern_cap;
+    cl_kernel *kern;            /* every kernel created for this program */
+    size_t *kern_wg;            /* its work-group size (queried once, at creation) */
+    struct nbr *nbr;
+    struct acc *acc;            /* collision-resolution records of the run */
+    /* kept across runs: validity of the device neighbor list / history */
+    uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */
+    int n_at_sync;
+    /* pair evaluation of the current run (run.c) */
+    cl_mem pair_param;          /* packed per-type-pair parameters */
+    cl_kernel k_pair, k_gather, k_clear;
+    cl_kernel k_virial;         /* pair_virial, for the pressure (src/engine/pressure.c) */
+    cl_kernel k_energy;         /* pair_energy of a potential (src/contact/pair_energy.c) */
+    double epair_snap;          /* the pair energy taken before a box change moved the
+                                 * atoms: valid for step epair_snap_step only (-1: none) */
+    bigint epair_snap_step;
+    cl_kernel k_box_remap;      /* box_remap, for box changes in a run (src/engine/box_change.c) */
+    cl_kernel k_box_flip;       /* box_image_flip, for box flips */
+    /* the virial taken before a box change moved the atoms (pressure.h):
+     * valid for step virial_snap_step only (-1: none) */
+    double virial_snap[6];
+    bigint virial_snap_step;
+    /* velocity remap of a deforming box (box_change_vremap): LAMMPS's
+     * h_rate (6 REAL) and the group it applies to (0: none) */
+    cl_mem hrate;
+    unsigned vgroup;
+    cl_mem virial;              /* REAL[3 virial_cap]: its per-particle output */
+    int virial_cap;
+    struct fused_stages fused;  /* per-particle fix work inside those kernels */
+    /* REAL[n] in device order: the mass pair and wall contacts use for
+     * their effective mass (a rigid body's mass for its atoms, LAMMPS's
+     * mass_rigid); NULL = rmass. Owned by the fix that sets it. */
+    cl_mem contact_mass;
+    double insert_rmax;         /* largest radius fixes may insert this run (fix reserve) */
+    struct hook_lists hooks;    /* the other fix work, per hook (run.c) */
+    /* eng_tag_order: the device tags last read and their order */
+    int64_t *tag_seen;
+    int *tag_order;
+    int tag_n, tag_cap;
+    /* GRAVEL_PROFILE: device time per kernel name, printed at destroy */
+    int nprof;
+    char prof_name[48][40];
+    double prof_sec[48];
+    long prof_calls[48];
+    /* statistics of the current run */
+    struct run_stats st;
+};
+
+/* Device state of g, creating the device on first use. */
+struct engine *eng_get(struct gravel *g);
+/* The current per-atom buffers. */
+struct dev_atoms *eng_atoms(struct gravel *g);
+/* 1 during the setup force computation of a run (no history update). */
+int eng_in_setup(struct gravel *g);
+
+/* Kernel `name` from the run's program; released by the engine
+ * (eng_release_kernels: every kernel created so far). */
+cl_kernel eng_kernel(struct gravel *g, const char *name);
+void eng_release_kernels(struct engine *e);
+/* Device bytes per atom of a field-table row (atom_fields.h) whose host
+ * elements have size hsz. */
+size_t eng_field_bytes(const struct gravel *g, enum atom_field_dev dev, size_t hsz, int width);
+/* Checked argument setters. eng_arg_real converts to the run's REAL. */
+void eng_arg_mem(struct gravel *g, cl_kernel k, int i, cl_mem m);
+void eng_arg_int(struct gravel *g, cl_kernel k, int i, int v);
+void eng_arg_uint(struct gravel *g, cl_kernel k, int i, unsigned v);
+void eng_arg_real(struct gravel *g, cl_kernel k, int i, double v);
+void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes);
+/* Launch a 1-D kernel over n work-items (no-op for n = 0). */
+void eng_launch(struct gravel *g, cl_kernel k, size_t n);
+/* Checked device allocation and transfers (blocking). */
+cl_mem eng_alloc(struct gravel *g, size_t bytes, const char *what);
+void eng_write(struct gravel *g, cl_mem m, size_t off, size_t bytes, const void *src);
+void eng_read(struct gravel *g, cl_mem m, size_t off, size_t bytes, void *dst);
+void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes);
+void eng_finish(struct gravel *g);
+/* Host doubles <-> device REALs through a scratch buffer. */
+void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
+/* The same from REAL element `first` on. */
+void eng_write_reals_at(struct gravel *g, cl_mem m, size_t first, size_t count,
+                        const double *src);
+void eng_read_reals(struct gravel *g, cl_mem m, size_t count, double *dst);
+/* Positions: host doubles <-> the device's x (and xlo), relative to origin;
+ * writes atoms first .. first + n - 1 from src (their 3n coordinates). */
+void eng_write_positions(struct gravel *g, const struct dev_atoms *s, int first, int n,
+                         const double *src);
+void eng_read_positions(struct gravel *g, const struct dev_atoms *s, int n, double *dst);
+/* A lab-frame coordinate of dimension q as a device REAL argument (x - origin). */
+void eng_arg_coord(struct gravel *g, cl_kernel k, int i, int q, double v);
+/* Bind the low position part as argument i when positions are split
+ * (kernels with POS_LO_PARAM, their last argument); no-op otherwise. */
+void eng_arg_pos_lo(struct gravel *g, cl_kernel k, int i);
+
+/* During a run: ord[k] = the device index of the atom with the k-th
+ * smallest tag (reads the device tags; the order is recomputed only when
+ * they moved), so host sums over per-atom device values can run in tag
+ * order without run_sync_host. */
+const int *eng_tag_order(struct gravel *g);
+
+#endif

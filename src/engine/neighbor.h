@@ -1,0 +1,92 @@
+/* neighbor.h - device neighbor lists: binning, sort by cell, full Verlet list
+ * with skin, rebuild decisions, periodic wrap, shrink-wrap, lost atoms and
+ * contact history carried across rebuilds (by partner tag).
+ *
+ * Each pair in the list is one contact of the pipeline (doc/contact_pipeline.md,
+ * kernels/pair_loop.cl), evaluated once; its history is stored once and
+ * follows the pair (owner and partner) through rebuilds and re-sorts. */
+#ifndef GR_NEIGHBOR_H
+#define GR_NEIGHBOR_H
+
+#include "device.h"
+
+struct nbr_list {
+    /* full rows in ascending partner tag: nlist[i maxn + k] (k < ncount[i])
+     * is the device index of i's k-th neighbor; its incidence (the record
+     * of what i receives from that contact) is ioff[i] + k */
+    cl_mem nlist, ncount, nown, ioff;
+    int maxn;
+    /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1;
+     * ci/cj the two atoms; cslot[2c], cslot[2c + 1] their incidences;
+     * shear (3 REAL, history only) seen from ci; recf and rect (rotation
+     * only) the incidence records of the step, force and torque
+     * (kernels/pair_loop.cl) */
+    cl_mem coff, ci, cj, cslot, shear, recf, rect;
+    int ncontact;
+    double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
+    double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */
+};
+
+/* Kernel arguments a .. a + 5: the list's periodic lengths Lx Ly Lz, then
+ * the tilts xy xz yz (kernels/common.cl, "Triclinic boxes"). Returns a + 6. */
+int nbr_arg_box(struct gravel *g, cl_kernel k, int a, const struct nbr_list *l);
+/* The box changed during a run (src/engine/box_change.c): refresh the list's
+ * periodic lengths and tilts from g->dom, so that minimum images use the
+ * new box, and make the next nbr_decide count the box's corner motion
+ * since the last build (LAMMPS's Neighbor::check_distance box check). */
+void nbr_box_changed(struct gravel *g);
+
+/* Run start: kernels and work buffers for the current program and atoms. */
+void nbr_setup(struct gravel *g);
+/* Forget the list (atoms changed): the next build transfers no history. */
+void nbr_invalidate(struct gravel *g);
+void nbr_free(struct gravel *g);
+/* Per step: LAMMPS Neighbor::decide() (every/delay/check/once, distance
+ * check by device reduction) and a non-finite check that stops the run with
+ * the step, tag and probable cause. Returns 1 when a rebuild is due. With
+ * forced (a fix's next_reneighbor is this step) it returns 1 before the
+ * every/delay count advances, as LAMMPS (no dangerous-build count). */
+int nbr_decide(struct gravel *g, int forced);
+/* Atoms nold .. nnew - 1 were appended to the device arrays (eng_append):
+ * they own no previous contacts, so the next rebuild's history transfer
+ * finds none for them. */
+void nbr_atoms_appended(struct gravel *g, int nold, int nnew);
+/* Wrap periodic atoms, shrink-wrap, drop lost atoms (per thermo_modify
+ * lost), re-sort all per-atom arrays by cell (atom_modify sort) and build
+ * the list and its contacts. */
+void nbr_rebuild(struct gravel *g);
+/* The current list (valid after a build). */
+const struct nbr_list *nbr_list(struct gravel *g);
+/* Sum of list lengths (host reduction of the counts). */
+double nbr_total(struct gravel *g);
+/* Largest overlap / min radius over the current contacts. */
+double nbr_max_overlap(struct gravel *g);
+
+/* Device exclusive prefix scan of m ints: out[0..m] (out[m] = total). For
+ * tests and the sort. Kernels must be set up (nbr_setup). */
+void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m);
+
+/* Restart support (restart.c): the list in host form, partners as device
+ * indices in list order. nbr_export fills s from the current list (0 = no
+ * list built this engine); nbr_import installs s as the current, built list
+ * (old_valid: the next rebuild transfers its history by partner tag) with
+ * the reference positions and the steps since the build, and sets the
+ * periodic lengths from the box; it returns 0 and installs nothing when the
+ * rows are not symmetric (j in i's row without i in j's). Arrays are caller-owned (free with
+ * nbr_state_free). */
+struct nbr_state {
+    int n, maxn, ago, history;  /* history: REALs per contact (0: none) */
+    int *ncount;            /* [n] */
+    int *nlist;             /* [n maxn] */
+    double *shear;          /* [history n maxn], NULL without history */
+    double *xhold;          /* [3 n] */
+};
+int nbr_export(struct gravel *g, struct nbr_state *s);
+int nbr_import(struct gravel *g, const struct nbr_state *s);
+void nbr_state_free(struct nbr_state *s);
+
+/* The list's box for a kernel's BOX argument (kernels/kernel_args.h):
+ * Lx Ly Lz (0 = not periodic) and the tilts xy xz yz. */
+void nbr_list_box(const struct nbr_list *l, double box[6]);
+
+#endif

@@ -1,0 +1,758 @@
+/* run.c - `run` and `reset_timestep`: the Verlet loop on the device.
+ *
+ * Order per step (LAMMPS Verlet::run): initial_integrate fixes -> neighbor
+ * decision (a fix's next_reneighbor forces it) -> on rebuild steps the
+ * pre_exchange fixes (fix pour inserts atoms), then the rebuild (pbc,
+ * shrink-wrap, re-sort) -> pair forces (the contact pipeline: pair_contacts,
+ * then pair_gather, which also clears f and torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
+ * -> output. Per-particle fix work fuses into the check and gather kernels
+ * where it can (src/engine/fused.h); the other fixes run from hook lists built once
+ * per run. Setup (Verlet::setup) rebuilds the list and computes the step-0
+ * forces with the history frozen (shearupdate = 0), then calls post_force of
+ * every fix.
+ *
+ * The timing breakdown synchronizes the device after each section on every
+ * 8th step and on rebuild steps only (see run_steps), so ordinary steps do
+ * not wait on the host more than the neighbor decision requires. */
+#include "run.h"
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "accuracy.h"
+#include "accuracy_map.h"
+#include "args.h"
+#include "device.h"
+#include "engine.h"
+#include "error.h"
+#include "fused.h"
+#include "input.h"
+#include "fix.h"
+#include "kargs.h"
+#include "group.h"
+#include "log.h"
+#include "neighbor.h"
+#include "output.h"
+#include "pair.h"
+#include "restart.h"
+
+static double wall(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The loop's clocks: LAMMPS's timing breakdown (Pair, Neigh, Modify,
+ * Output; Other is what the loop spent beyond them), in wall seconds.
+ * The device is synchronized after each section only on sampled steps
+ * (every TIME_SAMPLE-th) and on rebuild steps, so ordinary steps run
+ * without host waits: rebuild steps are timed exactly, sampled ordinary
+ * steps are scaled to all ordinary steps; the output is timed every step. */
+enum timer_phase { TM_PAIR, TM_NEIGH, TM_MODIFY, TM_OUTPUT, TM_N };
+enum { TIME_SAMPLE = 8 };
+struct run_timers {
+    double exact[TM_N];         /* rebuild steps; the output of every step */
+    double sampled[TM_N];       /* sampled ordinary steps */
+    bigint nsamp, nplain;       /* sampled ordinary steps, all ordinary steps */
+};
+
+/* One step's section times (step[], output excluded) into the record. */
+static void timers_step(struct run_timers *t, int rebuild, int sampled, const double *step)
+{
+    if (!rebuild)
+        t->nplain++;
+    if (!rebuild && !sampled)
+        return;
+    if (!rebuild)
+        t->nsamp++;
+    double *to = rebuild ? t->exact : t->sampled;
+    for (int p = 0; p < TM_OUTPUT; p++)
+        to[p] += step[p];
+}
+
+/* The loop's totals per phase (out[TM_N]): sampled times scaled to every
+ * ordinary step, and never more section time than the loop spent outside
+ * the output (sampled steps run a little slower, for their syncs). */
+static void timers_total(const struct run_timers *t, double loop, double *out)
+{
+    double scale = t->nsamp ? (double)t->nplain / (double)t->nsamp : 0.0;
+    for (int p = 0; p < TM_OUTPUT; p++)
+        out[p] = t->exact[p] + t->sampled[p] * scale;
+    out[TM_OUTPUT] = t->exact[TM_OUTPUT];
+    double busy = out[TM_PAIR] + out[TM_NEIGH] + out[TM_MODIFY];
+    double avail = loop - out[TM_OUTPUT];
+    if (busy > avail && busy > 0)
+        for (int p = 0; p < TM_OUTPUT; p++)
+            out[p] *= avail / busy;
+}
+
+/* Pack and upload the per-type-pair parameters; create the pair kernels.
+ * Before the fixes initialise: a fix that uses the pair law (fix wall/pair)
+ * takes the parameter buffer in its init. */
+static void pair_init(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    const struct pair *p = g->styles.pair;
+    e->k_clear = eng_kernel(g, "force_clear");
+    e->k_gather = eng_kernel(g, "pair_gather");
+    e->k_pair = e->k_virial = e->k_energy = NULL;
+    if (e->pair_param)
+        clReleaseMemObject(e->pair_param);
+    e->pair_param = NULL;
+    if (!p)
+        return;
+    int nt, np = p->caps.nparam;
+    double *par = pair_pack(g, &nt);
+    e->pair_param = eng_alloc(g, (size_t)nt * nt * np * e->rsz, "pair parameters");
+    eng_write_reals(g, e->pair_param, (size_t)nt * nt * np, par);
+    free(par);
+    e->k_pair = eng_kernel(g, "pair_contacts");
+    e->k_virial = eng_kernel(g, "pair_virial");
+    if (p->caps.energy)
+        e->k_energy = eng_kernel(g, "pair_energy");
+}
+
+/* The box-deformation kernels and rates: after the fixes initialise (a
+ * deforming fix's init sets the rates and the remap group). */
+static void box_init(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    e->k_box_remap = eng_kernel(g, "box_remap");
+    e->k_box_flip = eng_kernel(g, "box_image_flip");
+    e->virial_snap_step = e->epair_snap_step = -1;
+    if (!e->hrate)
+        e->hrate = eng_alloc(g, 6 * e->rsz, "box deformation rates");
+    eng_write_reals(g, e->hrate, 6, g->dom.h_rate);
+    e->vgroup = g->dom.vremap_group;
+}
+
+/* The hook lists of a run (LAMMPS Modify::init): for each hook, the fixes
+ * that set it and are not fused into the scene's kernels, in fix order,
+ * with the function to call. Built once at run setup. */
+static int hook_index(unsigned hook)
+{
+    return hook == HOOK_INITIAL_INTEGRATE ? 0 : hook == HOOK_POST_FORCE ? 1
+         : hook == HOOK_FINAL_INTEGRATE   ? 2 : hook == HOOK_END_OF_STEP ? 3 : 4;
+}
+
+static void build_hook_lists(struct gravel *g)
+{
+    struct hook_lists *h = &g->eng->hooks;
+    const unsigned bits[NHOOK] = {HOOK_INITIAL_INTEGRATE, HOOK_POST_FORCE, HOOK_FINAL_INTEGRATE,
+                                  HOOK_END_OF_STEP, HOOK_PRE_EXCHANGE};
+    for (int k = 0; k < NHOOK; k++) {
+        free(h->call[k]);
+        h->call[k] = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->call[k]);
+        h->n[k] = 0;
+        for (int i = 0; i < g->styles.nfix; i++) {
+            struct fix *f = g->styles.fix[i];
+            if (!(f->hooks & bits[k]) || (f->fused_hooks & bits[k]))
+                continue;
+            void (*fn)(struct gravel *, struct fix *) =
+                k == 0 ? f->style->initial_integrate : k == 1 ? f->style->post_force
+              : k == 2 ? f->style->final_integrate   : k == 3 ? f->style->end_of_step
+              : f->style->pre_exchange;
+            if (fn)
+                h->call[k][h->n[k]++] = (struct hook_call){f, fn};
+        }
+    }
+    free(h->force);
+    h->force = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->force);
+    h->nforce = 0;
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->force_reneighbor)
+            h->force[h->nforce++] = g->styles.fix[i];
+}
+
+/* LAMMPS Neighbor::decide()'s must_check: some fix wants a rebuild now. */
+static int forced_rebuild(struct gravel *g)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    for (int i = 0; i < h->nforce; i++)
+        if (h->force[i]->next_reneighbor == g->step)
+            return 1;
+    return 0;
+}
+
+/* Atoms fixes may insert during the next nsteps steps: the device capacity
+ * holds them from the start and the neighbor cut-off covers their radii. */
+static void reserve_insertions(struct gravel *g, bigint nsteps)
+{
+    struct engine *e = g->eng;
+    double rmax = 0;
+    long extra = 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        double r = 0;
+        if (f->style->reserve)
+            extra += f->style->reserve(g, f, nsteps, &r);
+        if (r > rmax)
+            rmax = r;
+    }
+    e->insert_rmax = rmax;
+    if (extra > 200000000L - g->atoms.n)
+        gr_error(g, "too many atoms to insert (%ld)", extra);
+    if (extra)
+        eng_reserve(g, g->atoms.n + (int)extra);
+}
+
+static void run_hook(struct gravel *g, unsigned hook)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    int k = hook_index(hook);
+    for (int i = 0; i < h->n[k]; i++)
+        h->call[k][i].fn(g, h->call[k][i].fix);
+}
+
+/* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */
+static void post_neighbor(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->post_neighbor)
+            g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
+}
+
+/* Force computation: pair (or clear), then every post_force fix; their
+ * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
+static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *a = &e->a;
+    double t0 = wall();
+    if (e->k_pair) {
+        /* the contact pipeline: each contact once, then each particle's sum */
+        const struct nbr_list *l = nbr_list(g);
+        acc_reserve(g);
+        struct pair_contacts_args pc = {
+            .ncontact = l->ncontact,
+            .ci = l->ci,
+            .cj = l->cj,
+            .cslot = l->cslot,
+            .x = a->x,
+            .v = a->v,
+            .omega = e->rotation ? a->omega : a->v,
+            .radius = a->radius,
+            .rmass = e->contact_mass ? e->contact_mass : a->rmass, /* meff */
+            .type = a->type,
+            .mask = a->mask,
+            .shear = e->history ? l->shear : l->ci,
+            .param = e->pair_param,
+            .ntypes = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1,
+            .nparam = g->styles.pair->caps.nparam,
+            .freezebit = freezebit,
+            .dt = g->dt,
+            .shearupdate = e->setup ? 0 : 1,
+            .recf = l->recf,
+            .rect = e->rotation ? l->rect : l->recf,
+            .acc = acc_pair_rec(g),
+            .astep = acc_pair_step(g),
+            .step = acc_step(g),
+            .hrate = e->hrate,
+            .vgroup = e->vgroup,
+        };
+        nbr_list_box(l, pc.box);
+        ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
+        eng_launch(g, e->k_pair, (size_t)l->ncontact);
+        /* new forces: a virial or energy taken before is stale */
+        e->virial_snap_step = e->epair_snap_step = -1;
+        /* fused post_force ops, and the final kick except at setup */
+        const struct pair_gather_args pg = {
+            .n = a->n,
+            .ioff = l->ioff,
+            .recf = l->recf,
+            .rect = e->rotation ? l->rect : l->recf,
+            .f = a->f,
+            .torque = e->rotation ? a->torque : a->f,
+            .ops = e->fused.ops,
+            .first = e->fused.ninit,
+            .npost = e->fused.npost,
+            .nfinal = e->setup ? 0 : e->fused.nfinal,
+            .prm = e->fused.prm,
+            .v = a->v,
+            .omega = e->rotation ? a->omega : a->v,
+            .rmass = a->rmass,
+            .radius = a->radius,
+            .type = a->type,
+            .mask = a->mask,
+        };
+        ka_bind_pair_gather(g, e->k_gather, 0, &pg);
+        eng_launch(g, e->k_gather, (size_t)a->n);
+    } else {
+        acc_reserve(g); /* the wall records */
+        const struct force_clear_args fc = {
+            .n = a->n, .f = a->f, .torque = e->rotation ? a->torque : a->f};
+        ka_bind_force_clear(g, e->k_clear, 0, &fc);
+        eng_launch(g, e->k_clear, (size_t)a->n);
+    }
+    if (timed)
+        eng_finish(g);
+    double t1 = wall();
+    t[TM_PAIR] += t1 - t0;
+    run_hook(g, HOOK_POST_FORCE);
+    if (timed)
+        eng_finish(g);
+    t[TM_MODIFY] += wall() - t1;
+}
+
+/* Log the collision time of the contact model against the time step:
+ * warning under ~10 steps per collision; error under 2 unless the run was
+ * given `force yes` (DESIGN: Precision and the speed/accuracy trade). */
+static void timestep_report(struct gravel *g, int force)
+{
+    const struct pair *p = g->styles.pair;
+    if (!p || !p->caps.collision_time || g->atoms.n == 0)
+        return;
+    double m = INFINITY, r = 0, vmax = 0;
+    for (int i = 0; i < g->atoms.n; i++) {
+        if (g->atoms.rmass[i] < m) {
+            m = g->atoms.rmass[i];
+            r = g->atoms.radius[i];
+        }
+        for (int d = 0; d < 3; d++)
+            vmax = fmax(vmax, fabs(g->atoms.v[3 * i + d]));
+    }
+    double tc = pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
+    if (!isfinite(tc)) {
+        gr_print(g, "Contact model %s: overdamped or zero stiffness, no collision time\n",
+                 p->style->name);
+        return;
+    }
+    double steps = tc / g->dt;
+    gr_print(g, "Contact model %s: collision time %.4g = %.1f steps of %g (lightest particle)\n",
+             p->style->name, tc, steps, g->dt);
+    /* verify: below 2 steps a contact can be missed or explode */
+    if (steps < 2 && !force)
+        gr_error(g, "time step %g exceeds half the %s collision time %.4g (%.2f steps per "
+                    "collision): contacts are not resolved; reduce the time step or add "
+                    "'force yes' to run", g->dt, p->style->name, tc, steps);
+    if (steps < 10)
+        gr_warn(g, "time step %g resolves a %s collision with only %.1f steps (at least ~10 "
+                   "are needed for accuracy)", g->dt, p->style->name, steps);
+}
+
+/* verify: single precision keeps positions as hi + lo float pairs relative
+ * to the device origin (kernels/common.cl, "Positions"): a coordinate x
+ * resolves to about |x - origin| 2^-47. Warn at setup when that exceeds
+ * 1e-6 of the smallest radius: overlaps (fractions of a radius) would lose
+ * digits that double keeps. Called after the upload (the origin is set). */
+static void precision_report(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    const double *o = g->eng->origin;
+    if (!g->eng->single || a->n == 0)
+        return;
+    double xmax = 0, rmin = INFINITY;
+    for (int i = 0; i < a->n; i++) {
+        for (int d = 0; d < 3; d++)
+            xmax = fmax(xmax, fabs(a->x[3 * i + d] - o[d]));
+        rmin = fmin(rmin, a->radius[i]);
+    }
+    double ulp = xmax * 0x1p-47;
+    if (ulp > 1e-6 * rmin)
+        gr_warn(g, "single precision: coordinates up to %g from the device origin resolve "
+                   "only %.3g, %.3g of the smallest radius %g; overlaps lose precision (use "
+                   "-precision double or a smaller box)", xmax, ulp, ulp / rmin, rmin);
+}
+
+static void check_atoms(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->rmass[i] > 0) || !(a->radius[i] > 0))
+            gr_error(g, "atom %lld has radius %g and mass %g: granular runs need positive "
+                        "radius and mass (set diameter/density or mass)",
+                     (long long)a->tag[i], a->radius[i], a->rmass[i]);
+        if (a->type[i] < 1 || a->type[i] > a->ntypes)
+            gr_error(g, "atom %lld has type %d outside 1..%d", (long long)a->tag[i], a->type[i],
+                     a->ntypes);
+    }
+}
+
+/* Run setup up to the first force computation: device program, upload,
+ * fix init and per-atom state, pair, neighbor and hook lists, reports.
+ * Returns the freeze group bit. */
+static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
+{
+    check_atoms(g);
+    ocl_mem_reset_peak();
+    eng_prepare(g);
+    struct engine *e = g->eng;
+    e->active = 0;
+    reserve_insertions(g, nsteps);
+    eng_upload(g);
+    memset(&e->st, 0, sizeof e->st);
+    e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
+    g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
+    g->laststep = g->step + nsteps;
+    memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
+    g->dom.vremap_group = 0;
+    pair_init(g); /* the pair parameters first: fixes may use them in init */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->style->init)
+            f->style->init(g, f);
+    }
+    eng_fix_state(g, 1); /* fixes may have declared per-atom state in init */
+    box_init(g);
+    nbr_setup(g);
+    fused_setup(g);
+    build_hook_lists(g);
+    unsigned freezebit = fix_frozen_groupbit(g);
+    timestep_report(g, force);
+    precision_report(g);
+    acc_begin(g, force); /* collision resolution of the contacts that happen */
+    return freezebit;
+}
+
+/* Statistics of a finished run (or rerun) and its footer. */
+static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
+                    double maxov, int post);
+
+/* The whole run: setup, loop, footer. */
+static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
+{
+    unsigned freezebit = run_begin(g, nsteps, force);
+    struct engine *e = g->eng;
+
+    g->firststep = g->step;
+    g->laststep = g->step + nsteps;
+    double tsetup[TM_N] = {0}; /* not reported: LAMMPS times the loop only */
+    /* setup: list, step-0 forces without history update, post_force fixes */
+    e->setup = 1;
+    /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
+    int resumed = restart_resume(g);
+    group_dynamic_update(g, -1); /* dynamic groups at setup */
+    if (resumed < 1) {
+        nbr_rebuild(g);
+        post_neighbor(g);
+    }
+    e->st.nbuilds = 0;
+    if (resumed < 2)
+        compute_forces(g, freezebit, 1, tsetup);
+    for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
+        if (g->styles.fix[i]->style->setup)
+            g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
+    e->setup = 0;
+    double maxov = nbr_max_overlap(g);
+    output_setup(g);
+    /* Timing (struct run_timers): the decision read syncs every step. */
+    struct run_timers tm = {0};
+    e->st.nlaunch = 0;
+    double t0 = wall();
+    for (bigint s = 0; s < nsteps; s++) {
+        g->step++;
+        int sampled = s % TIME_SAMPLE == 0;
+        if (sampled)
+            eng_finish(g); /* the previous step's work is not this step's */
+        double a0 = wall();
+        run_hook(g, HOOK_INITIAL_INTEGRATE);
+        if (sampled)
+            eng_finish(g);
+        double a1 = wall();
+        int rebuild = nbr_decide(g, forced_rebuild(g));
+        group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */
+        double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
+        if (rebuild) {
+            acc_collect(g); /* the records are per contact and atom: before renumbering */
+            double p0 = wall();
+            run_hook(g, HOOK_PRE_EXCHANGE);
+            tx = wall() - p0;
+            nbr_rebuild(g);
+            post_neighbor(g);
+            eng_finish(g);
+        }
+        double a2 = wall();
+        int timed = sampled || rebuild;
+        double step[TM_N] = {0};
+        compute_forces(g, freezebit, timed, step);
+        double b0 = wall();
+        run_hook(g, HOOK_FINAL_INTEGRATE);
+        run_hook(g, HOOK_END_OF_STEP);
+        if (timed)
+            eng_finish(g);
+        double b1 = wall();
+        step[TM_NEIGH] = a2 - a1 - tx;
+        step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
+        timers_step(&tm, rebuild, sampled, step);
+        g->time += g->dt;
+        if (output_due(g, g->step)) {
+            acc_collect(g);
+            double ov = nbr_max_overlap(g);
+            if (ov > maxov)
+                maxov = ov;
+            output_step(g);
+        }
+        restart_step(g); /* `restart N file`: written when the step is a multiple of N */
+        tm.exact[TM_OUTPUT] += wall() - b1;
+    }
+    double t[TM_N];
+    timers_total(&tm, wall() - t0, t);
+    double ttot = wall() - t0;
+    run_end(g, nsteps, ttot, t, maxov, post);
+}
+
+static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
+                    double maxov, int post)
+{
+    struct engine *e = g->eng;
+    acc_collect(g);
+    const struct acc_worst *worst = acc_worst(g);
+    maxov = fmax(maxov, worst->wall_ov); /* walls and meshes: every step */
+    run_sync_host(g);
+    struct run_stats st = e->st;
+    st.nsteps = nsteps;
+    st.natoms = e->a.n;
+    st.t_total = ttot;
+    st.t_pair = t[TM_PAIR];
+    st.t_neigh = t[TM_NEIGH];
+    st.t_modify = t[TM_MODIFY];
+    st.t_output = t[TM_OUTPUT];
+    st.t_other = ttot - st.t_pair - st.t_neigh - st.t_modify - st.t_output;
+    if (st.t_other < 0)
+        st.t_other = 0;
+    st.total_neighbors = nbr_total(g);
+    st.max_overlap_frac = maxov;
+    st.res_q = worst->q;
+    st.res_vn = worst->vn;
+    st.res_step = worst->step;
+    st.res_tag_i = worst->tag_i;
+    st.res_tag_j = worst->tag_j;
+    snprintf(st.res_wall, sizeof st.res_wall, "%s", worst->wall);
+    st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
+    st.mem_peak = (double)ocl_mem_peak();
+    e->active = 0;
+    if (post)
+        output_finish(g, &st);
+    else /* run ... post no: only the "Loop time" line, as LAMMPS */
+        output_finish_brief(g, &st);
+    /* verify: Hertz/linear contact laws assume small overlaps */
+    if (maxov > 0.1)
+        gr_warn(g, "largest overlap reached %.1f %% of a radius (pairs sampled at output "
+                   "steps, walls and meshes at every step): "
+                   "impacts too fast or contacts too soft for the contact model",
+                100 * maxov);
+}
+
+/* rerun's core: the run setup once, then for each snapshot (load() puts it
+ * into the host atoms and sets the step; -1 ends) the setup forces without
+ * integration or history update (LAMMPS's setup_minimal), the fixes' setup
+ * and end_of_step work and the output due at that step (the first snapshot
+ * prints the thermo header and its row); the last snapshot's thermo row is
+ * always printed, then LAMMPS's footer counts the snapshots as steps. */
+static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
+                        bigint firststep, bigint laststep, int post)
+{
+    unsigned freezebit = run_begin(g, 0, 0);
+    struct engine *e = g->eng;
+    g->firststep = firststep;
+    g->laststep = laststep;
+    double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
+    bigint ndump = 0;
+    double t0 = wall();
+    for (int first = 1;; first = 0) {
+        ndump++;
+        e->setup = 1;
+        group_dynamic_update(g, -1);
+        nbr_rebuild(g);
+        compute_forces(g, freezebit, 1, t);
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i]->style->setup)
+                g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
+        e->setup = 0;
+        run_hook(g, HOOK_END_OF_STEP);
+        eng_finish(g);
+        double o0 = wall();
+        maxov = fmax(maxov, nbr_max_overlap(g));
+        if (first)
+            output_setup(g);
+        else if (output_due(g, g->step))
+            output_step(g);
+        t[TM_OUTPUT] += wall() - o0;
+        run_sync_host(g);
+        e->active = 0;
+        bigint prev = g->step;
+        if (load(g, ctx) < 0) {
+            g->step = prev;
+            break;
+        }
+        check_atoms(g);
+        eng_upload(g);
+    }
+    eng_upload(g); /* the host may have been read from: the device state again */
+    double o0 = wall();
+    g->laststep = g->step; /* LAMMPS: thermo on the last snapshot */
+    output_step(g);
+    t[TM_OUTPUT] += wall() - o0;
+    double ttot = wall() - t0;
+    run_end(g, ndump, ttot, t, maxov, post);
+}
+
+/* body(g, ctx) under an error boundary: a run that stops on an error (lost
+ * or non-finite atoms, a failed write, a fix) first ends its output
+ * (output_abort: progress line erased before the message, append-mode dumps
+ * completed with the snapshots written so far) and marks the engine idle,
+ * then the error goes on to the command boundary. */
+static void guarded(struct gravel *g, void (*body)(struct gravel *, void *), void *ctx)
+{
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        output_abort(g);
+        if (g->eng)
+            g->eng->active = 0;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    body(g, ctx);
+    g->err.jmp = outer;
+}
+
+struct run_args {
+    bigint n;
+    int force, post;
+};
+
+static void run_body(struct gravel *g, void *ctx)
+{
+    const struct run_args *r = ctx;
+    run_steps(g, r->n, r->force, r->post);
+}
+
+static void run_guarded(struct gravel *g, bigint n, int force, int post)
+{
+    struct run_args r = {n, force, post};
+    guarded(g, run_body, &r);
+}
+
+struct rerun_args {
+    bigint (*load)(struct gravel *, void *);
+    void *ctx;
+    bigint first, last;
+};
+
+static void rerun_body(struct gravel *g, void *ctx)
+{
+    const struct rerun_args *r = ctx;
+    rerun_steps(g, r->load, r->ctx, r->first, r->last, 1);
+}
+
+void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
+               bigint firststep, bigint laststep)
+{
+    struct rerun_args r = {load, ctx, firststep, laststep};
+    guarded(g, rerun_body, &r);
+}
+
+/* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no]
+ *       [every M "cmd" ... | every M NULL]
+ * `every` (last, as in LAMMPS) splits the run into runs of M steps (the last
+ * may be shorter), each a complete run with its own thermo header and loop
+ * summary, and after each executes the commands as script lines. */
+void cmd_run(struct gravel *g, int argc, char **argv)
+{
+    bigint n = arg_bigint(g, argv[0], "number of steps");
+    bigint nevery = 0;
+    int ncmd = 0;
+    char **cmds = NULL;
+    int upto = 0;
+    bigint start = -1, stop = -1;
+    int have_start = 0, have_stop = 0, force = 0, post = 1, accuracy = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "upto")) {
+            upto = 1;
+        } else if (!strcmp(argv[i], "start")) {
+            arg_need(g, argc, i, 1, "start");
+            start = arg_bigint(g, argv[++i], "start step");
+            have_start = 1;
+        } else if (!strcmp(argv[i], "stop")) {
+            arg_need(g, argc, i, 1, "stop");
+            stop = arg_bigint(g, argv[++i], "stop step");
+            have_stop = 1;
+        } else if (!strcmp(argv[i], "force")) {
+            /* verify: allow a time step above half the collision time */
+            arg_need(g, argc, i, 1, "force");
+            force = arg_yesno(g, argv[++i], "force");
+        } else if (!strcmp(argv[i], "accuracy")) {
+            accuracy = 1; /* the accuracy map first (src/contact/accuracy_map.h) */
+        } else if (!strcmp(argv[i], "pre")) {
+            /* every run sets up fully (pre no is a LAMMPS speed hint) */
+            arg_need(g, argc, i, 1, argv[i]);
+            (void)arg_yesno(g, argv[i + 1], argv[i]);
+            i++;
+        } else if (!strcmp(argv[i], "post")) {
+            arg_need(g, argc, i, 1, argv[i]);
+            post = arg_yesno(g, argv[i + 1], argv[i]);
+            i++;
+        } else if (!strcmp(argv[i], "every")) {
+            arg_need(g, argc, i, 1, "every");
+            nevery = arg_bigint(g, argv[i + 1], "every interval");
+            if (nevery <= 0)
+                gr_error(g, "run every needs a positive interval, got %s", argv[i + 1]);
+            cmds = argv + i + 2;
+            ncmd = argc - i - 2;
+            if (ncmd == 1 && !strcmp(cmds[0], "NULL"))
+                ncmd = 0;
+            break;
+        } else {
+            gr_error(g, "unknown run keyword '%.64s' (expected upto, start, stop, pre, post, "
+                        "force, accuracy, every)",
+                     argv[i]);
+        }
+    }
+    if (upto) {
+        n -= g->step;
+        if (n < 0)
+            gr_error(g, "run upto %lld: the current step %lld is already past it",
+                     (long long)(n + g->step), (long long)g->step);
+    }
+    if (n < 0)
+        gr_error(g, "number of steps must be >= 0, got %lld", (long long)n);
+    if (g->step + n > (bigint)1 << 62)
+        gr_error(g, "too many timesteps");
+    if (have_start && start > g->step)
+        gr_error(g, "run start %lld is after the first step %lld of the run", (long long)start,
+                 (long long)g->step);
+    if (have_stop && stop < g->step + n)
+        gr_error(g, "run stop %lld is before the last step %lld of the run", (long long)stop,
+                 (long long)(g->step + n));
+    if (accuracy || g->opt.check)
+        accuracy_map(g);
+    if (g->opt.check) { /* gravel -check: the map instead of the run */
+        gr_print(g, "(-check: run %lld not performed)\n", (long long)n);
+        return;
+    }
+    if (g->atoms.n == 0)
+        gr_warn(g, "running with no atoms");
+    if (!nevery) {
+        run_guarded(g, n, force, post);
+        return;
+    }
+    bigint left = n;
+    for (int iter = 0; left > 0 || iter == 0; iter++) {
+        bigint chunk = left < nevery ? left : nevery;
+        run_guarded(g, chunk, force, post);
+        left -= chunk;
+        if (ncmd && inp_run_commands(g, ncmd, cmds) == GR_QUIT)
+            return;
+    }
+}
+
+/* reset_timestep N */
+void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    bigint n = arg_bigint(g, argv[0], "timestep");
+    if (n < 0)
+        gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
+    fix_check_time_reset(g);
+    g->step = n;
+    g->laststep_reset = n;
+}

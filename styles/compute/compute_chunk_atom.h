@@ -1,0 +1,34 @@
+/* compute_chunk_atom.h - what fix ave/chunk reads from a
+ * `compute ID group chunk/atom bin/1d|bin/2d|bin/3d ...` (its bins and each
+ * atom's chunk), styles/compute/compute_chunk_atom.c. */
+#ifndef GR_COMPUTE_CHUNK_ATOM_H
+#define GR_COMPUTE_CHUNK_ATOM_H
+
+#include "compute.h"
+
+struct chunk_grid {
+    int ndim;                   /* 1, 2 or 3 binned dimensions */
+    int dim[3];                 /* box dimension of binned dimension m */
+    int nlayers[3];             /* bins along binned dimension m */
+    double offset[3], delta[3]; /* lower edge and width of the bins (box units,
+                                   or fractions of the box with units reduced) */
+    int reduced;                /* units reduced */
+    int nchunk;                 /* product of nlayers */
+    double volume;              /* LAMMPS's chunk_volume_scalar (box units^3) */
+    const double *coord;        /* [nchunk][ndim] bin centres, LAMMPS order:
+                                   the last binned dimension varies fastest */
+};
+
+/* The chunk/atom compute `id`, or an error naming `who`. */
+struct compute *chunk_atom_get(struct gravel *g, const char *id, const char *who);
+/* Binned dimensions (LAMMPS ncoord), known from the arguments. */
+int chunk_atom_ncoord(const struct compute *c);
+/* Lay out the bins on the current box (LAMMPS setup_chunks); returns the
+ * grid, valid until the next call. nchunk once: laid out at the first call
+ * only. */
+const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c);
+/* Chunk of every host atom (1..nchunk, 0 = excluded: outside the group or
+ * region, or discarded), on the grid of the last chunk_atom_setup. */
+const int *chunk_atom_assign(struct gravel *g, struct compute *c);
+
+#endif

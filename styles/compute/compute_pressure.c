@@ -1,0 +1,97 @@
+/* compute_pressure.c - `compute ID group pressure temp-ID [ke] [pair]
+ * [virial] [fix]`: the scalar pressure as LAMMPS' compute pressure
+ * (src/engine/pressure.h): (dof kB T + W) / (dim V) with T and dof of compute
+ * temp-ID (a temp or temp/sphere; NULL when only the virial is asked) and
+ * W the granular pair virial. Keywords choose the parts: ke the kinetic
+ * part, pair or virial the pair virial (fixes contribute none, so `fix`
+ * adds nothing); none given = both. The group is ignored, as LAMMPS (the
+ * pressure is of the whole system). Global scalar and the pressure tensor
+ * as a 6-vector pxx pyy pzz pxy pxz pyz (pressure_tensor; xz yz zz are 0 in
+ * 2d), both intensive. */
+#include <string.h>
+
+#include "compute.h"
+#include "error.h"
+#include "pressure.h"
+
+struct press {
+    char temp_id[GR_NAMELEN];
+    int keflag, virialflag;
+};
+
+static void create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "compute pressure needs a temperature compute ID (or NULL)");
+    struct press *p = gr_calloc(g, 1, sizeof *p);
+    c->data = p;
+    if (strlen(argv[0]) >= GR_NAMELEN)
+        gr_error(g, "compute pressure: temperature ID is too long");
+    if (strcmp(argv[0], "NULL"))
+        snprintf(p->temp_id, sizeof p->temp_id, "%s", argv[0]);
+    if (argc == 1) {
+        p->keflag = p->virialflag = 1;
+    } else {
+        for (int i = 1; i < argc; i++) {
+            if (!strcmp(argv[i], "ke"))
+                p->keflag = 1;
+            else if (!strcmp(argv[i], "pair") || !strcmp(argv[i], "virial"))
+                p->virialflag = 1;
+            else if (!strcmp(argv[i], "fix"))
+                ; /* gravel's fixes have no virial, as LAMMPS 2021's granular fixes */
+            else if (!strcmp(argv[i], "bond") || !strcmp(argv[i], "angle") ||
+                     !strcmp(argv[i], "dihedral") || !strcmp(argv[i], "improper") ||
+                     !strcmp(argv[i], "kspace"))
+                ; /* no such terms: zero */
+            else
+                gr_error(g, "compute pressure: unknown keyword '%.64s' (ke, pair, virial, fix)",
+                         argv[i]);
+        }
+    }
+    if (p->keflag && !p->temp_id[0])
+        gr_error(g, "compute pressure: the kinetic part needs a temperature compute, not NULL");
+    c->scalar_flag = 1;
+    c->vector_flag = 1;
+    c->size_vector = 6;
+    c->extvector = 0;
+    c->vector = gr_calloc(g, 6, sizeof(double));
+}
+
+static struct temp_state *temperature(struct gravel *g, struct compute *c)
+{
+    struct press *p = c->data;
+    if (!p->temp_id[0])
+        return NULL;
+    if (!strcmp(p->temp_id, "thermo_temp") && !compute_find(g, "thermo_temp"))
+        return &g->thermo.temp; /* LAMMPS's implicit thermo_temp */
+    struct compute *t = compute_get(g, p->temp_id, "compute pressure");
+    if (!t->temp)
+        gr_error(g, "compute pressure: compute %s (%s) is not a temperature", t->id,
+                 t->style->name);
+    return t->temp;
+}
+
+static void init(struct gravel *g, struct compute *c)
+{
+    temperature(g, c);
+}
+
+static double scalar(struct gravel *g, struct compute *c)
+{
+    struct press *p = c->data;
+    return pressure_parts(g, temperature(g, c), p->keflag, p->virialflag);
+}
+
+static void vector(struct gravel *g, struct compute *c)
+{
+    struct press *p = c->data;
+    pressure_tensor(g, temperature(g, c), p->keflag, p->virialflag, c->vector);
+}
+
+const struct compute_style compute_style_pressure = {
+    .name = "pressure",
+    .create = create,
+    .init = init,
+    .scalar = scalar,
+    .vector = vector,
+};

@@ -1,0 +1,531 @@
+/* fix_wall_gran.c - `fix ID group wall/gran model Kn Kt gamman gammat xmu
+ * dampflag wallstyle args [wiggle dim amplitude period | shear dim vshear]`:
+ * frictional granular walls with LAMMPS 2021 fix wall/gran semantics
+ * (fix_wall_gran.cpp, models hooke, hooke/history, hertz/history, granular).
+ *
+ *   model      hooke | hooke/history | hertz/history (same laws as the pair
+ *              styles gran/hooke etc.: the wall kernel calls their evaluators)
+ *              | granular <sub-models> (pair granular's, below)
+ *   Kt NULL    -> 2/7 Kn;  gammat NULL -> gamman/2;  dampflag 0 -> gammat = 0
+ *   wallstyle  xplane lo hi | yplane lo hi | zplane lo hi  (NULL = no face)
+ *              zcylinder R  (axis z through x = y = 0)
+ *              mesh n_meshes N meshes ID ...  (LIGGGHTS: triangle meshes of fix
+ *              mesh/surface, moved by fix move/mesh; kernels/wall.cl MESH_KERNEL)
+ *   wiggle d A T   the wall oscillates along d: position lo + A (1 - cos wt),
+ *                  velocity A w sin wt, w = 2 pi / T, t from the fix's creation
+ *   shear d v      the wall moves along d at v (position unchanged)
+ *
+ * Per-atom contact history (3 REAL, model with history; granular: its width) follows the atoms
+ * through re-sorts as engine-managed per-atom state (src/style/fix.h). The force
+ * and torque are added in post_force, as LAMMPS does (also at setup, without
+ * history update). fix wall/gran/region (same create, `region ID` as the
+ * wall style; kernels/wall_region.cl) takes the surface of a region as the
+ * wall. Model granular (`granular <sub-models> wallstyle ...`) takes pair
+ * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
+ * and a history row of its sub-models' width per wall element / region slot
+ * (parse_granular); jkr walls hold beyond touch to the pull-off distance
+ * (the jkr rows of kernels/fix_wall_gran.h). Meshes take model granular too (not jkr). Unsupported
+ * LAMMPS options (keyword contacts) are rejected with a clear error. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "args.h"
+#include "device.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_wall_gran.h"
+#include "pair.h"
+#include "pair_granular.h"
+#include "region.h"
+#include "fix_mesh_surface.h"
+#include "wall.h"
+#include "wall_region.h"
+
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
+
+
+struct wall {
+    enum wall_gran_model model;
+    int history;                /* REAL per wall contact (0: none) */
+    int nparam;
+    double param[GRW_NPARAM];   /* kernels/param_layout.h: GRAN_* (kn kt gamman gammat xmu
+                                 * limit) or, model granular, GR_* and GRW_* */
+    int style;
+    double lo, hi, cylradius;
+    int wiggle, wshear, axis;
+    double amplitude, period, omega, vshear;
+    bigint time_origin;
+    struct wall_law law;
+    struct mesh_walls mesh;     /* wallstyle mesh */
+    char region_id[GR_NAMELEN]; /* fix wall/gran/region */
+    char region_style[32];      /* the region's style and sub-region count at the */
+    int region_nsub;            /* previous run (LAMMPS warns when they change) */
+    struct region *region;      /* looked up at every init (region delete) */
+    int inits;                  /* runs set up so far (-compat lammps2021: tsuji) */
+    struct wall_region wreg;
+    /* restart: the region's previous displacement and angle per node
+     * (LAMMPS Region::prev), applied when the region matches at init */
+    int rs_pending, rs_n;
+    char rs_style[32];
+    double rs_prev[WALL_REGION_MAXNODE][4];
+};
+
+/* the kernels, by source, model and jkr (kernels/fix_wall_gran.h) */
+static const struct {
+    const char *name;
+    enum wall_gran_source source;
+    enum wall_gran_model model;
+    int jkr;
+} wall_gran_kernel[] = {
+#define WG_ROW(name, source, model, jkr) {#name, source, model, jkr},
+    WALL_GRAN_KERNELS(WG_ROW)
+#undef WG_ROW
+};
+
+static int parse_dim(struct gravel *g, const char *s, const char *kw)
+{
+    if (!strcmp(s, "x"))
+        return 0;
+    if (!strcmp(s, "y"))
+        return 1;
+    if (!strcmp(s, "z"))
+        return 2;
+    gr_error(g, "fix wall/gran %s: expected dimension x, y or z, got '%.64s'", kw, s);
+}
+
+static double parse_face(struct gravel *g, const char *s, double null_value, const char *what)
+{
+    if (!strcmp(s, "NULL"))
+        return null_value;
+    return arg_double(g, s, what);
+}
+
+/* hooke | hooke/history | hertz/history Kn Kt gamman gammat xmu dampflag;
+ * returns the index of the wall style */
+static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **argv)
+{
+    struct wall w = *pw;
+    w.history = w.model != WG_HOOKE ? 3 : 0;
+    w.nparam = GRAN_NPARAM;
+    if (argc < 9)
+        gr_error(g, "fix wall/gran %s expects Kn Kt gamman gammat xmu dampflag and a wall "
+                    "style, got %d argument(s)", argv[0], argc - 1);
+    double kn = arg_nonneg(g, argv[1], "Kn");
+    double kt = !strcmp(argv[2], "NULL") ? kn * 2.0 / 7.0 : arg_nonneg(g, argv[2], "Kt");
+    double gamman = arg_nonneg(g, argv[3], "gamma_n");
+    double gammat = !strcmp(argv[4], "NULL") ? 0.5 * gamman : arg_nonneg(g, argv[4], "gamma_t");
+    double xmu = arg_nonneg(g, argv[5], "xmu");
+    if (xmu > 10000.0)
+        gr_error(g, "fix wall/gran xmu must be between 0 and 10000, got %g", xmu);
+    int dampflag = arg_int_range(g, argv[6], 0, 1, "dampflag");
+    if (dampflag == 0)
+        gammat = 0.0;
+    if (w.history && kt == 0.0 && gammat > 0.0)
+        gr_error(g, "fix wall/gran %s needs Kt > 0 when gamma_t > 0 (the sliding rescale "
+                    "divides by Kt)", argv[0]);
+    /* Hertz: LAMMPS divides Kn, Kt by nktv2p, which is 1 in lj, si and cgs units */
+    w.param[GRAN_KN] = kn;
+    w.param[GRAN_KT] = kt;
+    w.param[GRAN_GAMMAN] = gamman;
+    w.param[GRAN_GAMMAT] = gammat;
+    w.param[GRAN_XMU] = xmu;
+    w.param[GRAN_LIMIT] = 0.0;
+
+    *pw = w;
+    return 7;
+}
+
+/* granular <normal model args> [damping ...] tangential ... [rolling ...]
+ * [twisting ...] [limit_damping]: pair granular's sub-models (the wall's
+ * own E and nu), history laid out as LAMMPS 2021 sizes it for a wall:
+ * 3 tangential (a history model), 1 contact radius (mindlin_rescale), 3
+ * rolling, 1 twisting; returns the number of words parsed */
+static int parse_granular(struct gravel *g, struct wall *w, int argc, char **argv)
+{
+    static const char *const stop[] = {"xplane", "yplane", "zplane", "zcylinder", "region",
+                                       "mesh", NULL};
+    struct gr_one o;
+    int n = granular_parse(g, &o, argc, argv, stop, 0, "fix wall/gran granular");
+    int kt_null = 0;
+    for (int k = 0; k + 2 < n; k++)
+        if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
+            kt_null = 1;
+    /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
+     * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
+     * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
+     * (1 + nu) (checked against lmp: granular_wall_* in tests/reference/wall_gran
+     * and wall_gran_region) */
+    if (o.nm >= GR_N_HERTZ_MATERIAL)
+        o.kn = o.E / (2 * (1 - o.nu)) * 1.333333333333333;
+    if (kt_null)
+        o.kt = o.E / 4 * (2 - o.nu) * (1 + o.nu);
+    w->nparam = GRW_NPARAM;
+    granular_pack(&o, w->param);
+    int off = 0;
+    int tang = o.tm != GR_T_NOHISTORY;
+    w->param[GRW_TANG] = tang;
+    off += tang ? 3 : 0;
+    w->param[GRW_HA] = o.tm == GR_T_MINDLIN_RESCALE || o.tm == GR_T_MINDLIN_RESCALE_FORCE
+                           ? off++ : -1;
+    w->param[GRW_HROLL] = o.rm == GR_R_SDS ? (off += 3) - 3 : -1;
+    w->param[GRW_HTWIST] = o.wm != GR_W_NONE ? off++ : -1;
+    /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
+    w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
+    w->param[GRW_JKR2021] = g->opt.lammps2021;
+    w->param[GRW_WIDTH] = off;
+    w->history = off;
+    return n;
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "fix wall/gran expects model Kn Kt gamman gammat xmu dampflag wallstyle "
+                    "args");
+    struct wall w;
+    memset(&w, 0, sizeof w);
+    if (!strcmp(argv[0], "hooke"))
+        w.model = WG_HOOKE;
+    else if (!strcmp(argv[0], "hooke/history"))
+        w.model = WG_HOOKE_HISTORY;
+    else if (!strcmp(argv[0], "hertz/history"))
+        w.model = WG_HERTZ_HISTORY;
+    else if (!strcmp(argv[0], "model"))
+        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
+                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
+                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
+                    "or use fix wall/pair mesh for the pair style's law");
+    else if (!strcmp(argv[0], "granular"))
+        w.model = WG_GRANULAR;
+    else
+        gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history, "
+                    "hertz/history or granular)", argv[0]);
+    int i;
+    if (w.model == WG_GRANULAR) {
+        i = 1 + parse_granular(g, &w, argc - 1, argv + 1);
+        if (i >= argc)
+            gr_error(g, "fix wall/gran granular: missing the wall style (xplane, yplane, "
+                        "zplane, zcylinder or region) after the model");
+    } else {
+        i = parse_classic(g, &w, argc, argv);
+    }
+    const char *ws = argv[i];
+    int is_region = !strcmp(f->style->name, "wall/gran/region");
+    if (is_region != !strcmp(ws, "region"))
+        gr_error(g, is_region ? "fix wall/gran/region expects 'region ID' after the "
+                                "coefficients, got '%.64s'"
+                              : "fix wall/gran: wall style '%.64s' belongs to fix "
+                                "wall/gran/region",
+                 ws);
+    if (is_region) {
+        arg_need(g, argc, i, 1, ws);
+        w.style = W_REGION;
+        const char *id = argv[i + 1];
+        if (strlen(id) >= GR_NAMELEN)
+            gr_error(g, "fix wall/gran/region: region ID too long");
+        region_get(g, id);
+        strcpy(w.region_id, id);
+        i += 2;
+    } else if (!strcmp(ws, "xplane") || !strcmp(ws, "yplane") || !strcmp(ws, "zplane")) {
+        arg_need(g, argc, i, 2, ws);
+        w.style = ws[0] - 'x';
+        w.lo = parse_face(g, argv[i + 1], -WALL_FAR, "wall lo position");
+        w.hi = parse_face(g, argv[i + 2], WALL_FAR, "wall hi position");
+        if (w.lo >= w.hi)
+            gr_error(g, "fix wall/gran %s: lo (%g) must be below hi (%g)", ws, w.lo, w.hi);
+        i += 3;
+    } else if (!strcmp(ws, "zcylinder")) {
+        arg_need(g, argc, i, 1, ws);
+        w.style = W_ZCYLINDER;
+        w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
+        i += 2;
+    } else if (!strcmp(ws, "mesh")) {
+        /* LIGGGHTS: mesh n_meshes N meshes ID1 ... IDN */
+        if (w.model == WG_GRANULAR && (int)w.param[GR_NMODEL] == GR_N_JKR)
+            gr_error(g, "fix wall/gran mesh: the granular jkr normal model is not supported for "
+                        "meshes (hooke, hertz, hertz/material or dmt are)");
+        w.style = W_MESH;
+        i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
+                                    "fix wall/gran mesh");
+    } else {
+        gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
+                    "zcylinder or mesh)", ws);
+    }
+    while (i < argc) {
+        if (!strcmp(argv[i], "wiggle")) {
+            arg_need(g, argc, i, 3, "wiggle");
+            w.axis = parse_dim(g, argv[i + 1], "wiggle");
+            w.amplitude = arg_double(g, argv[i + 2], "wiggle amplitude");
+            w.period = arg_positive(g, argv[i + 3], "wiggle period");
+            w.wiggle = 1;
+            i += 4;
+        } else if (!strcmp(argv[i], "shear")) {
+            arg_need(g, argc, i, 2, "shear");
+            w.axis = parse_dim(g, argv[i + 1], "shear");
+            w.vshear = arg_double(g, argv[i + 2], "shear velocity");
+            w.wshear = 1;
+            i += 3;
+        } else if (!strcmp(argv[i], "contacts")) {
+            gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (w.style == W_REGION) {
+            gr_error(g, "unknown fix wall/gran/region keyword '%.64s'", argv[i]);
+        } else if (w.style == W_MESH) {
+            gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
+        } else {
+            gr_error(g, "unknown fix wall/gran keyword '%.64s' (expected wiggle or shear)",
+                     argv[i]);
+        }
+    }
+    if (w.style == W_REGION && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
+                    "and rotate keywords)");
+    if (w.style == W_MESH && (w.wiggle || w.wshear))
+        gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
+                    "move/mesh)");
+    if (w.style <= W_ZPLANE && g->dom.periodic[w.style])
+        gr_error(g, "cannot use a %s wall in the periodic dimension %c", ws, 'x' + w.style);
+    if (w.style == W_ZCYLINDER && (g->dom.periodic[0] || g->dom.periodic[1]))
+        gr_error(g, "cannot use a zcylinder wall with periodic x or y");
+    if (w.wiggle && w.wshear)
+        gr_error(g, "cannot both wiggle and shear a wall");
+    if (w.wiggle && w.style == W_ZCYLINDER && w.axis != 2)
+        gr_error(g, "a zcylinder wall can only wiggle along z");
+    if (w.wshear && w.style <= W_ZPLANE && w.axis == w.style)
+        gr_error(g, "a %s wall cannot shear along its normal %c", ws, 'x' + w.axis);
+    if (w.wiggle)
+        w.omega = 2.0 * M_PI / w.period;
+    w.time_origin = g->step;
+
+    struct wall *pw = gr_malloc(g, sizeof *pw);
+    *pw = w;
+    f->data = pw;
+    f->hooks = HOOK_POST_FORCE;
+    f->needs = NEED_ROTATION;
+    f->sources[f->nsources++] = "pair_gran_hooke.cl";
+    f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
+    f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
+    f->sources[f->nsources++] = "pair_granular.cl";
+    f->sources[f->nsources++] = "wall.cl";
+    f->sources[f->nsources++] = "wall_region.cl";
+    f->sources[f->nsources++] = "fix_wall_gran.h";
+    f->sources[f->nsources++] = "fix_wall_gran.cl";
+}
+
+/* The wall at the current step: wiggle moves the faces along the axis and
+ * gives the surface velocity; shear moves the surface tangentially (a
+ * zcylinder sheared about x or y moves azimuthally, per atom). */
+static struct wall_geom geometry(struct gravel *g, const struct wall *w)
+{
+    struct wall_geom geom = {0};
+    double lo = w->lo, hi = w->hi;
+    if (w->wiggle) {
+        double arg = w->omega * (double)(g->step - w->time_origin) * g->dt;
+        if (w->style == w->axis) {
+            lo = w->lo + w->amplitude - w->amplitude * cos(arg);
+            hi = w->hi + w->amplitude - w->amplitude * cos(arg);
+        }
+        geom.v[w->axis] = w->amplitude * w->omega * sin(arg);
+    } else if (w->wshear) {
+        geom.v[w->axis] = w->vshear;
+    }
+    if (w->style == W_ZCYLINDER) {
+        geom.kind = WALL_ZCYLINDER;
+        geom.radius = w->cylradius;
+        geom.cyl_shear = w->wshear && w->axis != 2;
+        geom.vshear = w->vshear;
+        if (geom.cyl_shear)
+            geom.v[0] = geom.v[1] = geom.v[2] = 0.0;
+    } else {
+        geom.kind = WALL_PLANE;
+        geom.axis = w->style;
+        geom.lo = lo;
+        geom.hi = hi;
+    }
+    return geom;
+}
+
+static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }
+
+static struct region *region_node(struct region *r, int k) { return r->nsub ? r->sub[k] : r; }
+
+/* restart: the region's motion state when the restart file's region is the
+ * same (style and node count), else a warning (LAMMPS resets the motion) */
+static void restore_motion(struct gravel *g, struct fix *f, struct wall *w)
+{
+    if (!w->rs_pending || !w->region)
+        return;
+    w->rs_pending = 0;
+    if (strcmp(w->rs_style, w->region->style->name) != 0 ||
+        w->rs_n != region_nodes(w->region)) {
+        gr_warn(g, "fix %s: region %s differs from the restart file's, resetting its motion",
+                f->id, w->region_id);
+        return;
+    }
+    for (int k = 0; k < w->rs_n; k++)
+        memcpy(region_node(w->region, k)->prev, w->rs_prev[k], sizeof w->rs_prev[k]);
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    struct engine *e = eng_get(g);
+    const enum wall_gran_source source = w->style == W_MESH     ? WG_MESH
+                                         : w->style == W_REGION ? WG_REGION
+                                                                : WG_WALL;
+    /* a jkr wall is held beyond touch */
+    const int jkr = w->model == WG_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR;
+    const char *kname = NULL;
+    for (size_t k = 0; k < sizeof wall_gran_kernel / sizeof *wall_gran_kernel; k++)
+        if (wall_gran_kernel[k].source == source && wall_gran_kernel[k].model == w->model &&
+            wall_gran_kernel[k].jkr == jkr)
+            kname = wall_gran_kernel[k].name;
+    if (!kname)
+        gr_error(g, "internal error: fix %s: no wall/gran kernel for this wall and model", f->id);
+    w->law.kernel = eng_kernel(g, kname);
+    w->law.history = w->history;
+    w->law.by_type = 0;
+    w->law.inclusive = 1;
+    /* -compat lammps2021: FixWallGran::init converts a tsuji restitution at
+     * every run, so each later run converts the converted value again */
+    if (w->inits++ > 0 && g->opt.lammps2021 && w->model == WG_GRANULAR &&
+        (int)w->param[GR_DMODEL] == GR_D_TSUJI)
+        w->param[GR_DAMP] = granular_tsuji(w->param[GR_DAMP]);
+    /* parameters: re-uploaded every run (precision may change between runs) */
+    if (w->law.param)
+        clReleaseMemObject(w->law.param);
+    w->law.param = NULL;
+    w->law.param = eng_alloc(g, (size_t)w->nparam * e->rsz, "fix wall/gran parameters");
+    eng_write_reals(g, w->law.param, (size_t)w->nparam, w->param);
+    if (w->style == W_MESH) {
+        f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
+        return;
+    }
+    if (w->style == W_REGION) {
+        struct region *r = region_find(g, w->region_id);
+        if (!r)
+            gr_error(g, "fix %s: region '%s' for fix wall/gran/region does not exist", f->id,
+                     w->region_id);
+        if (w->region && (strcmp(w->region_style, r->style->name) != 0 ||
+                          w->region_nsub != r->nsub))
+            gr_warn(g, "fix %s: region %s was re-defined between runs, resetting its motion",
+                       f->id, w->region_id);
+        w->region = r;
+        snprintf(w->region_style, sizeof w->region_style, "%s", r->style->name);
+        w->region_nsub = r->nsub;
+        restore_motion(g, f, w);
+        char who[GR_NAMELEN + 32];
+        snprintf(who, sizeof who, "fix %s (wall/gran/region)", f->id);
+        f->peratom_bytes = wall_region_init(g, &w->wreg, r, &w->law, who);
+        return;
+    }
+    struct wall_geom geom = geometry(g, w);
+    f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    if (w->style == W_MESH) {
+        mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
+        return;
+    }
+    if (w->style == W_REGION) {
+        wall_region_apply(g, f, &w->wreg, w->region, &w->law);
+        return;
+    }
+    struct wall_geom geom = geometry(g, w);
+    wall_apply(g, f, &geom, &w->law);
+}
+
+static void destroy(struct fix *f)
+{
+    struct wall *w = f->data;
+    if (w && w->law.param)
+        clReleaseMemObject(w->law.param);
+    if (w) {
+        mesh_walls_release(&w->mesh);
+        wall_region_release(&w->wreg);
+    }
+    free(w);
+    f->data = NULL;
+}
+
+/* Restart state (restart.c): the time origin of wiggle (the step the fix
+ * was created at), so a re-created fix continues the same oscillation; for
+ * wall/gran/region also the region's style, node count and previous
+ * displacement and angle per node (its wall velocity continues). */
+#define RS_REGION (32 + sizeof(int32_t))
+
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct wall *w = f->data;
+    int64_t origin = w->time_origin;
+    struct region *r = w->style == W_REGION ? region_find(g, w->region_id) : NULL;
+    int32_t n = r ? region_nodes(r) : 0;
+    size_t len = sizeof origin + (r ? RS_REGION + (size_t)n * 4 * sizeof(double) : 0);
+    if (!buf || cap < len)
+        return len;
+    memcpy(buf, &origin, sizeof origin);
+    if (r) {
+        unsigned char *b = buf + sizeof origin;
+        char st[32] = {0};
+        snprintf(st, sizeof st, "%s", r->style->name);
+        memcpy(b, st, 32);
+        memcpy(b + 32, &n, sizeof n);
+        for (int k = 0; k < n; k++)
+            memcpy(b + RS_REGION + (size_t)k * 4 * sizeof(double), region_node(r, k)->prev,
+                   4 * sizeof(double));
+    }
+    return len;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct wall *w = f->data;
+    int64_t origin;
+    if (len < sizeof origin)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected at least %zu", f->id, len,
+                 sizeof origin);
+    memcpy(&origin, buf, sizeof origin);
+    w->time_origin = origin;
+    if (len == sizeof origin)
+        return;
+    int32_t n = 0;
+    if (len >= sizeof origin + RS_REGION)
+        memcpy(&n, buf + sizeof origin + 32, sizeof n);
+    if (w->style != W_REGION || n < 1 || n > WALL_REGION_MAXNODE ||
+        len != sizeof origin + RS_REGION + (size_t)n * 4 * sizeof(double))
+        gr_error(g, "fix %s: restart state of %zu bytes does not match this fix", f->id, len);
+    const unsigned char *b = buf + sizeof origin;
+    memcpy(w->rs_style, b, 32);
+    w->rs_style[31] = '\0';
+    w->rs_n = n;
+    for (int k = 0; k < n; k++)
+        memcpy(w->rs_prev[k], b + RS_REGION + (size_t)k * 4 * sizeof(double),
+               4 * sizeof(double));
+    w->rs_pending = 1;
+    restore_motion(g, f, w);
+}
+
+const struct fix_style fix_style_wall_gran_region = {
+    .name = "wall/gran/region",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};
+
+const struct fix_style fix_style_wall_gran = {
+    .name = "wall/gran",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};

@@ -1,7 +1,0 @@
-/* fix_npt_sphere.c - `fix ID group npt/sphere keyword values...`: fix npt for
- * finite spheres (LAMMPS fix npt/sphere): omega is integrated and
- * thermostatted; temperature temp/sphere. The integrator is styles/fix_nh.c. */
-#include "fix.h"
-#include "fix_nh.h"
-
-FIX_NH_STYLE(npt_sphere, "npt/sphere");

@@ -1,0 +1,43 @@
+/* pair_granular.h - the sub-models of LAMMPS's granular contact model
+ * (pair_style granular, 29 Sep 2021, plus LAMMPS 2024's damping
+ * coeff_restitution), shared by the pair style
+ * (styles/pair/pair_granular.c) and fix wall/gran granular
+ * (styles/fix/fix_wall_gran.c): one contact's model, its parsing and packing. */
+#ifndef GR_PAIR_GRANULAR_H
+#define GR_PAIR_GRANULAR_H
+
+#include "state.h"
+#include "param_layout.h"
+
+struct gr_one {
+    int set;                    /* 1 = pair_coeff, 2 = mixed at run start */
+    int nm, dm, tm, rm, wm, ld; /* sub-models (GR_N_* ...), limit_damping */
+    double kn, damp, coh, E, nu;
+    double kt, gt, mu, kr, gr, mur, kw, gw, muw;
+    double cutoff;              /* -1: none */
+    double e;                   /* coeff_restitution: e as given (mixed, then converted) */
+    int ktnull;                 /* the Mindlin kt was NULL (8 G*) */
+};
+
+/* Parse the sub-model keywords of argv[0..argc) into *o as LAMMPS does
+ * (`normal args [damping m] tangential m args [rolling ...] [twisting ...]
+ * [limit_damping]`, plus `cutoff c` where allow_cutoff); parsing stops at the
+ * first word in stop (NULL-terminated list, or NULL). kn of the material
+ * models is 4/3 E* of (E, nu) and a NULL Mindlin kt 8 G*; tsuji's e becomes
+ * its damping coefficient, and so does coeff_restitution's (by the normal
+ * model; not with the cohesive dmt, jkr). `who` names the command in errors. Returns the
+ * index of the first word not parsed. */
+int granular_parse(struct gravel *g, struct gr_one *o, int argc, char **argv,
+                   const char *const *stop, int allow_cutoff, const char *who);
+/* The GR_NPARAM coefficients of o (kernels/param_layout.h). */
+void granular_pack(const struct gr_one *o, double *q);
+/* Tsuji's damping coefficient for restitution e (LAMMPS's polynomial fit). */
+double granular_tsuji(double e);
+/* damping coeff_restitution (LAMMPS 2024 GranSubModDampingCoeffRestitution::
+ * init): the damping coefficient of restitution e for normal model nm,
+ * -2 ln e / sqrt(pi^2 + ln^2 e) for hooke (the linear spring-dashpot's exact
+ * one), -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) for the others
+ * (the Hertz one); the kernel multiplies it by sqrt(m Fne / delta). */
+double granular_coeff_restitution(double e, int nm);
+
+#endif
