@@ -204,6 +204,25 @@ struct contact_atoms {
     int step;
 };
 
+/* The particle arrays and step data of a kernel's contacts */
+static inline struct contact_atoms contact_atoms_of(__global const REAL *v,
+                                                   __global const REAL *omega,
+                                                   __global const REAL *rmass, const REAL dt,
+                                                   const int shearupdate, __global REAL *acc,
+                                                   __global int *astep, const int step)
+{
+    struct contact_atoms a;
+    a.v = v;
+    a.omega = omega;
+    a.rmass = rmass;
+    a.dt = dt;
+    a.shearupdate = shearupdate;
+    a.acc = acc;
+    a.astep = astep;
+    a.step = step;
+    return a;
+}
+
 /* What a contact gives: the force on i (on j: exactly -f) and the torques
  * on i and j (struct contact_force's two parts). */
 struct contact_out {

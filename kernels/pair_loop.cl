@@ -90,15 +90,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     pj.vimage = pj.vremap ? image_velocity(image_count(raw, s.del, Lx, Ly, Lz, xy, xz, yz), hrate)
                           : (REAL3)(0);
 #endif
-    struct contact_atoms a;
-    a.v = v;
-    a.omega = omega;
-    a.rmass = rmass;
-    a.dt = dt;
-    a.shearupdate = shearupdate;
-    a.acc = acc;
-    a.astep = astep;
-    a.step = step;
+    const struct contact_atoms a =
+        contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);
     REAL h[PAIR_ROW ? HIST_N : 3];
     __global REAL *hrow = shear + (size_t)c * HIST_N;
     for (int q = 0; q < (PAIR_ROW ? HIST_N : 3); q++)

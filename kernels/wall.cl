@@ -91,22 +91,6 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
 /* WALL_HMAX: kernels/wall_layout.h */
 #define WALL_ROW_N(ROW) ((ROW) ? WALL_HMAX : 3)
 
-static inline struct contact_atoms wall_atoms(__global const REAL *v, __global const REAL *omega,
-                                              __global const REAL *rmass, const REAL dt,
-                                              const int shearupdate, __global REAL *acc,
-                                              __global int *astep, const int step)
-{
-    struct contact_atoms a;
-    a.v = v;
-    a.omega = omega;
-    a.rmass = rmass;
-    a.dt = dt;
-    a.shearupdate = shearupdate;
-    a.acc = acc;
-    a.astep = astep;
-    a.step = step;
-    return a;
-}
 
 /* The site of a wall contact of particle i (radius radi) before its
  * geometry is found: a refined, exclusive, noted contact that forgets hw
@@ -188,7 +172,7 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
         const struct wall_geom w = wall_geom_of(kind, axis, lo, hi, wradius, vwx, vwy, vwz,    \
                                                 cyl_shear, vshear);                            \
         const struct contact_atoms a =                                                         \
-            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+            contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
         __global const REAL *p = wall_param(param, by_type, type[i] - 1, ntypes, nparam);      \
         struct contact_site s =                                                                \
             wall_site(i, radius[i], WALL_REACH(JKR, p, radius[i]), has_history, acode);        \
@@ -473,7 +457,7 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         REAL nkey[MESH_SLOTS], nsh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
         int nnew = 0;                                                                          \
         const struct contact_atoms a =                                                         \
-            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+            contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
         __global const REAL *p = p_of(param, by_type, type[i] - 1, ntypes, nparam);            \
         struct contact_site s = wall_site(i, radi, radi, 0, acode);                            \
         s.gated = 1; /* mesh_candidates decided */                                             \

@@ -4,10 +4,10 @@
  * surface_interior / surface_exterior of block, sphere, cylinder, cone and
  * plane, union and intersect of those), as pure functions of the particle.
  *
- * A region is up to RG_MAXNODE primitive nodes of RG_NODE REAL each (layout
- * RG_* of kernels/wall_layout.h, filled by src/contact/wall_region.c every step) and a combinator: 0 a
- * single primitive (node 0), 1 union, 2 intersect of the nodes, with the
- * compound's side. Each node carries its own side, open faces and motion:
+ * A region is up to RG_MAXNODE primitive nodes of RG_NODE REAL each
+ * (layout RG_* of kernels/wall_layout.h, filled by src/contact/wall_region.c
+ * every step) and a combinator: 0 a single primitive (node 0), 1 union, 2
+ * intersect of the nodes, with the compound's side. Each node carries its own side, open faces and motion:
  * the particle is taken into the node's static frame (subtract d, rotate by
  * -theta about P), the contacts found there, and each contact point taken
  * back (rotate by theta, add d), as Region::surface does. A contact is its
@@ -142,7 +142,8 @@ static inline void rg_add(struct rg_contact *c, const REAL3 x, const REAL3 xp)
 static inline REAL3 rg_segment(const REAL3 a, const REAL3 b, const REAL3 c)
 {
     const REAL3 ba = b - a, ca = c - a;
-    const REAL t = (ca.x * ba.x + ca.y * ba.y + ca.z * ba.z) / (ba.x * ba.x + ba.y * ba.y + ba.z * ba.z);
+    const REAL t =
+        (ca.x * ba.x + ca.y * ba.y + ca.z * ba.z) / (ba.x * ba.x + ba.y * ba.y + ba.z * ba.z);
     if (t <= 0)
         return a;
     if (t >= 1)
@@ -677,7 +678,7 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
         if (has_history && !region_slots(hist, slots, hw, c, nc, c2r))                         \
             return;                                                                            \
         const struct contact_atoms a =                                                         \
-            wall_atoms(v, omega, rmass, dt, shearupdate, acc, astep, step);                    \
+            contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
         struct contact_site s = wall_site(i, radi, radi, hw, acode);                           \
         s.gated = 1; /* region_surface decided */                                              \
         s.refine = 0;                                                                          \
