@@ -390,39 +390,6 @@ static inline void contact_hist_store(__global REAL *row, const REAL *h, const i
     } while (0)
 #define CONTACT_CALL_1(EVAL, k, p, h, cf) EVAL(k, p, h, cf)
 
-/* The one contact body, instantiated for one law: NAME(kind, i, site,
- * partner, atoms, param, h, out) runs steps 1-6 above on the private history
- * row h and returns 1 when the contact acted (out filled), 0 when it did
- * not (h's first site->hzero REAL zeroed). EVAL: the law; ROW: its form;
- * TCOL: its collision time. kind is a constant at every call site, so each
- * source compiles only its own branches. */
-#define CONTACT_BODY(NAME, EVAL, ROW, TCOL)                                                    \
-    static inline int NAME(const int kind, const int i, const struct contact_site *s,          \
-                           const struct contact_partner *pj, const struct contact_atoms *a,    \
-                           __global const REAL *p, REAL *h, struct contact_out *o)             \
-    {                                                                                          \
-        struct contact k;                                                                      \
-        if (!contact_gate(kind, i, s, pj, a, h, &k)) {                                         \
-            for (int q = 0; q < s->hzero; q++)                                                 \
-                h[q] = 0;                                                                      \
-            return 0;                                                                          \
-        }                                                                                      \
-        CONTACT_VREMAP(kind, pj, k);                                                           \
-        contact_kinematics(&k);                                                                \
-        k.dt = a->dt;                                                                          \
-        k.shearupdate = a->shearupdate;                                                        \
-        k.approach = s->approach;                                                              \
-        struct contact_force cf; /* a law may leave it (granular's jkr beyond reach) */        \
-        cf.f = cf.tc = cf.tr = (REAL3)(0);                                                     \
-        CONTACT_CALL(ROW, EVAL, &k, p, h, &cf);                                                \
-        if (kind == CONTACT_PAIR && s->note && k.rsq < k.radsum * k.radsum)                    \
-            ACC_NOTE_PAIR(TCOL, s->note_idx, &k, p, a->acc, a->astep, a->step);                \
-        if (kind == CONTACT_WALL && s->note && (!s->approach || k.delta > (REAL)0))            \
-            ACC_NOTE_WALL(TCOL, i, &k, p, s->acode, a->acc, a->astep, a->step);                \
-        contact_out_set(&k, &cf, o);                                                           \
-        return 1;                                                                              \
-    }
-
 #ifdef VREMAP /* the partner's image streams with the box (LAMMPS's ghost velocities) */
 #define CONTACT_VREMAP(kind, pj, k)                                                            \
     if ((kind) == CONTACT_PAIR && (pj)->vremap)                                                \
@@ -430,3 +397,57 @@ static inline void contact_hist_store(__global REAL *row, const REAL *h, const i
 #else
 #define CONTACT_VREMAP(kind, pj, k) (void)0
 #endif
+
+/* Steps 1-3 of the body, before the law: 1 when the contact acts, with *k
+ * built and its kinematics, step data and approach set; 0 when it does not
+ * (h's first site->hzero REAL zeroed). */
+static inline int contact_begin(const int kind, const int i, const struct contact_site *s,
+                                const struct contact_partner *pj, const struct contact_atoms *a,
+                                REAL *h, struct contact *k)
+{
+    if (!contact_gate(kind, i, s, pj, a, h, k)) {
+        for (int q = 0; q < s->hzero; q++)
+            h[q] = 0;
+        return 0;
+    }
+    CONTACT_VREMAP(kind, pj, *k);
+    contact_kinematics(k);
+    k->dt = a->dt;
+    k->shearupdate = a->shearupdate;
+    k->approach = s->approach;
+    return 1;
+}
+
+/* Steps 4 and 6 of the body, after the law's force cf: the accuracy note
+ * (TCOL: the law's collision time) and the force and torques in *o. */
+#define CONTACT_END(kind, TCOL, i, s, a, k, p, cf, o)                                          \
+    do {                                                                                       \
+        if ((kind) == CONTACT_PAIR && (s)->note && (k)->rsq < (k)->radsum * (k)->radsum)       \
+            ACC_NOTE_PAIR(TCOL, (s)->note_idx, k, p, (a)->acc, (a)->astep, (a)->step);         \
+        if ((kind) == CONTACT_WALL && (s)->note && (!(s)->approach || (k)->delta > (REAL)0))   \
+            ACC_NOTE_WALL(TCOL, i, k, p, (s)->acode, (a)->acc, (a)->astep, (a)->step);         \
+        contact_out_set(k, cf, o);                                                             \
+    } while (0)
+
+/* The one contact body, instantiated for one law: NAME(kind, i, site,
+ * partner, atoms, param, h, out) runs steps 1-6 above on the private history
+ * row h and returns 1 when the contact acted (out filled), 0 when it did
+ * not (h's first site->hzero REAL zeroed). EVAL: the law; ROW: its form;
+ * TCOL: its collision time. kind is a constant at every call site, so each
+ * source compiles only its own branches. The pair kernel runs the same
+ * steps on several contacts at once (kernels/pair_loop.cl, PAIR_LW). */
+#define CONTACT_BODY(NAME, EVAL, ROW, TCOL)                                                    \
+    static inline int NAME(const int kind, const int i, const struct contact_site *s,          \
+                           const struct contact_partner *pj, const struct contact_atoms *a,    \
+                           __global const REAL *p, REAL *h, struct contact_out *o)             \
+    {                                                                                          \
+        struct contact k;                                                                      \
+        if (!contact_begin(kind, i, s, pj, a, h, &k))                                          \
+            return 0;                                                                          \
+        struct contact_force cf; /* a law may leave it (granular's jkr beyond reach) */        \
+        cf.f = cf.tc = cf.tr = (REAL3)(0);                                                     \
+        CONTACT_CALL(ROW, EVAL, &k, p, h, &cf);                                                \
+        CONTACT_END(kind, TCOL, i, s, a, &k, p, &cf, o);                                       \
+        return 1;                                                                              \
+    }
+

@@ -1,124 +1,149 @@
-/* gran_common.cl - the pieces every LAMMPS granular evaluator shares
- * (gran/hooke, gran/hooke/history, gran/hertz/history, and fix wall/gran
- * through them). Operations are written in the order of LAMMPS'
- * pair_gran_*.cpp so results match LAMMPS bit for bit, and every term is
- * exactly antisymmetric under i <-> j. Static inline: free when unused. */
+/* gran_common.cl - the gran laws (kernels/gran_law.cl, width 1) as contact
+ * evaluators: struct contact and the type pair's GRAN_* coefficients in,
+ * struct contact_force out (tr = 0). Used by pair_gran_*.cl (PAIR_EVAL) and
+ * fix wall/gran's plane, region and mesh walls. Static inline: free when
+ * unused. */
 
-/* Relative motion at the contact in LAMMPS pair gran's form: vnnr = vr.del,
- * and the tangential relative velocity of the contact points
- * vtr = vt - del x wr, wr = (radi omi + radj omj)/r, formed from del (not
- * from the unit normal as the contact's vt and vtr are, kernels/contact.cl)
- * to stay bit for bit with LAMMPS; 1/r, 1/rsq, vr.del and radi omi + radj
- * omj are the contact's. */
-struct gran_kin {
-    REAL r, rinv, rsqinv;
-    REAL vnnr;
-    REAL vtr1, vtr2, vtr3;
+static inline struct gran_in_1 gran_in_of(const struct contact *c)
+{
+    struct gran_in_1 g;
+    g.del = lr3_of_1(c->del.x, c->del.y, c->del.z);
+    g.vr = lr3_of_1(c->vr.x, c->vr.y, c->vr.z);
+    g.w = lr3_of_1(c->w.x, c->w.y, c->w.z);
+    g.r = c->r;
+    g.rinv = c->rinv;
+    g.rsqinv = c->rsqinv;
+    g.delta = c->delta;
+    g.reff = c->reff;
+    g.vdel = c->vdel;
+    g.meff = c->meff;
+    g.dt = c->dt;
+    g.shearupdate = c->shearupdate;
+    return g;
+}
+
+static inline struct gran_par_1 gran_par_of(__global const REAL *param)
+{
+    struct gran_par_1 p;
+    p.kn = param[GRAN_KN];
+    p.kt = param[GRAN_KT];
+    p.gamman = param[GRAN_GAMMAN];
+    p.gammat = param[GRAN_GAMMAT];
+    p.xmu = param[GRAN_XMU];
+    p.limit = param[GRAN_LIMIT];
+    return p;
+}
+
+/* The evaluator of LAW (gran_hooke, gran_hooke_history, gran_hertz_history)
+ * on one contact */
+#define GRAN_EVAL(LAW, c, param, shear, out)                                                   \
+    do {                                                                                       \
+        const struct gran_in_1 in_ = gran_in_of(c);                                            \
+        const struct gran_par_1 p_ = gran_par_of(param);                                       \
+        struct lr3_1 s_ = lr3_of_1((shear)->x, (shear)->y, (shear)->z);                        \
+        struct gran_out_1 o_;                                                                  \
+        LAW##_1(&in_, &p_, &s_, &o_);                                                          \
+        *(shear) = (REAL3)(s_.x, s_.y, s_.z);                                                  \
+        (out)->f = (REAL3)(o_.f.x, o_.f.y, o_.f.z);                                            \
+        (out)->tc = (REAL3)(o_.tc.x, o_.tc.y, o_.tc.z);                                        \
+        (out)->tr = (REAL3)(0);                                                                \
+    } while (0)
+
+#if defined(PAIR_LW) && PAIR_LW > 1
+#define LANE_PASTE(a, b) a##b
+#define LANE_CAT(a, b) LANE_PASTE(a, b)
+#define LLOAD(t) LANE_CAT(vload, PAIR_LW)(0, t)
+#define LSTORE(v, t) LANE_CAT(vstore, PAIR_LW)(v, 0, t)
+
+/* The law PAIR_EVAL_LANES (a gran law) on the pair kernel's PAIR_LW built
+ * contacts k at once (kernels/pair_loop.cl): their fields and coefficients
+ * into lanes, the law at width PAIR_LW, the force, torque and shear back
+ * for the contacts that act (acted[l]); the others are left alone. */
+enum gran_lane_field {
+    GL_DELX, GL_DELY, GL_DELZ, GL_VRX, GL_VRY, GL_VRZ, GL_WX, GL_WY, GL_WZ, GL_R, GL_RINV,
+    GL_RSQINV, GL_DELTA, GL_REFF, GL_VDEL, GL_MEFF, GL_S1, GL_S2, GL_S3, GL_PAR, GL_N = GL_PAR +
+    GRAN_NPARAM
 };
 
-static inline struct gran_kin gran_kinematics(const struct contact *c)
+static inline void pair_lanes_eval(const struct contact *k, __global const REAL *const *p,
+                                   REAL (*h)[3], const int *acted, struct contact_force *cf)
 {
-    struct gran_kin k;
-    const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
-    k.r = c->r;
-    k.rinv = c->rinv;
-    k.rsqinv = c->rsqinv;
-
-    const REAL vr1 = c->vr.x, vr2 = c->vr.y, vr3 = c->vr.z;
-    k.vnnr = c->vdel;
-    const REAL vn1 = delx * k.vnnr * k.rsqinv;
-    const REAL vn2 = dely * k.vnnr * k.rsqinv;
-    const REAL vn3 = delz * k.vnnr * k.rsqinv;
-    const REAL vt1 = vr1 - vn1, vt2 = vr2 - vn2, vt3 = vr3 - vn3;
-
-    const REAL wr1 = c->w.x * k.rinv;
-    const REAL wr2 = c->w.y * k.rinv;
-    const REAL wr3 = c->w.z * k.rinv;
-
-    k.vtr1 = vt1 - (delz * wr2 - dely * wr3);
-    k.vtr2 = vt2 - (delx * wr3 - delz * wr1);
-    k.vtr3 = vt3 - (dely * wr1 - delx * wr2);
-    return k;
-}
-
-/* Normal force per unit del: ccel = poly (kn (radsum - r)/r - meff gamman vnnr/r^2),
- * F_n = del ccel; poly = 1 (Hooke) or sqrt(delta reff) (Hertz); with
- * limit_damping a net attractive ccel is clamped to 0. */
-static inline REAL gran_normal(const struct contact *c, const struct gran_kin *k, REAL kn,
-                               REAL gamman, REAL poly, REAL limit)
-{
-    const REAL damp = c->meff * gamman * k->vnnr * k->rsqinv;
-    REAL ccel = kn * c->delta * k->rinv - damp;
-    ccel *= poly;
-    if (limit != (REAL)0 && ccel < (REAL)0)
-        ccel = 0;
-    return ccel;
-}
-
-/* Tangential force with shear history (LAMMPS hooke/history, hertz/history):
- * s += vtr dt (not during setup), rotated into the tangent plane;
- * F_t = -poly (kt s + meff gammat vtr), rescaled to the Coulomb limit
- * xmu |F_n| with s reset consistently. Updates *shear, returns F_t. */
-static inline REAL3 gran_history_tangential(const struct contact *c, const struct gran_kin *k,
-                                            REAL kt, REAL gammat, REAL xmu, REAL ccel,
-                                            REAL poly, REAL3 *shear)
-{
-    const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
-    const REAL vtr1 = k->vtr1, vtr2 = k->vtr2, vtr3 = k->vtr3;
-    const REAL meff = c->meff;
-    REAL s1 = shear->x, s2 = shear->y, s3 = shear->z;
-    if (c->shearupdate) {
-        s1 += vtr1 * c->dt;
-        s2 += vtr2 * c->dt;
-        s3 += vtr3 * c->dt;
-    }
-    const REAL shrmag = sqrt(s1 * s1 + s2 * s2 + s3 * s3);
-
-    REAL rsht = s1 * delx + s2 * dely + s3 * delz;
-    rsht *= k->rsqinv;
-    if (c->shearupdate) {
-        s1 -= rsht * delx;
-        s2 -= rsht * dely;
-        s3 -= rsht * delz;
-    }
-
-    REAL fs1 = -poly * (kt * s1 + meff * gammat * vtr1);
-    REAL fs2 = -poly * (kt * s2 + meff * gammat * vtr2);
-    REAL fs3 = -poly * (kt * s3 + meff * gammat * vtr3);
-
-    const REAL fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
-    const REAL fn = xmu * fabs(ccel * k->r);
-    if (fs > fn) {
-        if (shrmag != (REAL)0) {
-            s1 = (fn / fs) * (s1 + meff * gammat * vtr1 / kt) - meff * gammat * vtr1 / kt;
-            s2 = (fn / fs) * (s2 + meff * gammat * vtr2 / kt) - meff * gammat * vtr2 / kt;
-            s3 = (fn / fs) * (s3 + meff * gammat * vtr3 / kt) - meff * gammat * vtr3 / kt;
-            fs1 *= fn / fs;
-            fs2 *= fn / fs;
-            fs3 *= fn / fs;
-        } else {
-            fs1 = fs2 = fs3 = 0;
+    REAL t[GL_N][PAIR_LW];
+    for (int l = 0; l < PAIR_LW; l++) {
+        if (!acted[l]) { /* a lane that computes nothing anyone reads */
+            for (int q = 0; q < GL_N; q++)
+                t[q][l] = 1;
+            continue;
         }
+        const struct contact *c = &k[l];
+        t[GL_DELX][l] = c->del.x;
+        t[GL_DELY][l] = c->del.y;
+        t[GL_DELZ][l] = c->del.z;
+        t[GL_VRX][l] = c->vr.x;
+        t[GL_VRY][l] = c->vr.y;
+        t[GL_VRZ][l] = c->vr.z;
+        t[GL_WX][l] = c->w.x;
+        t[GL_WY][l] = c->w.y;
+        t[GL_WZ][l] = c->w.z;
+        t[GL_R][l] = c->r;
+        t[GL_RINV][l] = c->rinv;
+        t[GL_RSQINV][l] = c->rsqinv;
+        t[GL_DELTA][l] = c->delta;
+        t[GL_REFF][l] = c->reff;
+        t[GL_VDEL][l] = c->vdel;
+        t[GL_MEFF][l] = c->meff;
+        t[GL_S1][l] = h[l][0];
+        t[GL_S2][l] = h[l][1];
+        t[GL_S3][l] = h[l][2];
+        for (int q = 0; q < GRAN_NPARAM; q++)
+            t[GL_PAR + q][l] = p[l][q];
     }
-    shear->x = s1;
-    shear->y = s2;
-    shear->z = s3;
-    return (REAL3)(fs1, fs2, fs3);
+    struct gran_in_w in;
+    in.del = lr3_of_w(LLOAD(t[GL_DELX]), LLOAD(t[GL_DELY]), LLOAD(t[GL_DELZ]));
+    in.vr = lr3_of_w(LLOAD(t[GL_VRX]), LLOAD(t[GL_VRY]), LLOAD(t[GL_VRZ]));
+    in.w = lr3_of_w(LLOAD(t[GL_WX]), LLOAD(t[GL_WY]), LLOAD(t[GL_WZ]));
+    in.r = LLOAD(t[GL_R]);
+    in.rinv = LLOAD(t[GL_RINV]);
+    in.rsqinv = LLOAD(t[GL_RSQINV]);
+    in.delta = LLOAD(t[GL_DELTA]);
+    in.reff = LLOAD(t[GL_REFF]);
+    in.vdel = LLOAD(t[GL_VDEL]);
+    in.meff = LLOAD(t[GL_MEFF]);
+    in.dt = k[0].dt; /* the same in every built contact */
+    in.shearupdate = k[0].shearupdate;
+    for (int l = 1; l < PAIR_LW; l++)
+        if (acted[l]) {
+            in.dt = k[l].dt;
+            in.shearupdate = k[l].shearupdate;
+        }
+    struct gran_par_w par;
+    par.kn = LLOAD(t[GL_PAR + GRAN_KN]);
+    par.kt = LLOAD(t[GL_PAR + GRAN_KT]);
+    par.gamman = LLOAD(t[GL_PAR + GRAN_GAMMAN]);
+    par.gammat = LLOAD(t[GL_PAR + GRAN_GAMMAT]);
+    par.xmu = LLOAD(t[GL_PAR + GRAN_XMU]);
+    par.limit = LLOAD(t[GL_PAR + GRAN_LIMIT]);
+    struct lr3_w sh = lr3_of_w(LLOAD(t[GL_S1]), LLOAD(t[GL_S2]), LLOAD(t[GL_S3]));
+    struct gran_out_w o;
+    LANE_CAT(PAIR_EVAL_LANES, _w)(&in, &par, &sh, &o);
+    REAL r[9][PAIR_LW];
+    LSTORE(o.f.x, r[0]);
+    LSTORE(o.f.y, r[1]);
+    LSTORE(o.f.z, r[2]);
+    LSTORE(o.tc.x, r[3]);
+    LSTORE(o.tc.y, r[4]);
+    LSTORE(o.tc.z, r[5]);
+    LSTORE(sh.x, r[6]);
+    LSTORE(sh.y, r[7]);
+    LSTORE(sh.z, r[8]);
+    for (int l = 0; l < PAIR_LW; l++)
+        if (acted[l]) {
+            cf[l].f = (REAL3)(r[0][l], r[1][l], r[2][l]);
+            cf[l].tc = (REAL3)(r[3][l], r[4][l], r[5][l]);
+            cf[l].tr = (REAL3)(0);
+            h[l][0] = r[6][l];
+            h[l][1] = r[7][l];
+            h[l][2] = r[8][l];
+        }
 }
-
-/* Force on i = del ccel + F_t; lever-arm torque tc = (del x F_t) / r, so
- * the torque on i is -radi tc and on j -radj tc (struct contact_force). */
-static inline void gran_apply(const struct contact *c, const struct gran_kin *k, REAL ccel,
-                              REAL3 ft, struct contact_force *out)
-{
-    const REAL delx = c->del.x, dely = c->del.y, delz = c->del.z;
-    out->f.x = delx * ccel + ft.x;
-    out->f.y = dely * ccel + ft.y;
-    out->f.z = delz * ccel + ft.z;
-
-    const REAL tor1 = k->rinv * (dely * ft.z - delz * ft.y);
-    const REAL tor2 = k->rinv * (delz * ft.x - delx * ft.z);
-    const REAL tor3 = k->rinv * (delx * ft.y - dely * ft.x);
-    out->tc = (REAL3)(tor1, tor2, tor3);
-    out->tr = (REAL3)(0);
-}
+#endif

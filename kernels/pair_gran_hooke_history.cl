@@ -1,26 +1,12 @@
-/* pair_gran_hooke_history.cl - Hookean contact with shear history
- * (LAMMPS pair gran/hooke/history, 2021 semantics).
- *
- * Normal:  F_n = (kn delta - meff gamman v_n) n   with delta = radsum - r,
- *          written as ccel = kn (radsum - r)/r - meff gamman (vr.del)/r^2,
- *          F = del ccel; limit_damping clamps ccel >= 0.
- * Tangent: shear displacement s += vtr dt (not during setup), rotated into
- *          the tangent plane; F_t = -(kt s + meff gammat vtr), rescaled to the
- *          Coulomb limit xmu |F_n| (s is reset consistently).
- * Torque on i: -radi (del x F_t) / r.
- * Param layout (GRAN_*): kn kt gamman gammat xmu limit_damping.
- * Exactly antisymmetric under i <-> j: del, vr, vtr, s and F_t change sign,
- * every product and sum is formed the same way from both sides. */
+/* pair_gran_hooke_history.cl - Hookean contact with shear history (LAMMPS
+ * pair gran/hooke/history, 2021 semantics): the law is gran_hooke_history of
+ * kernels/gran_law.cl; param layout GRAN_* (kn kt gamman gammat xmu
+ * limit_damping). */
 
 static inline void gran_hooke_history_eval(const struct contact *c, __global const REAL *param,
                                            REAL3 *shear, struct contact_force *out)
 {
-    const REAL kn = param[GRAN_KN], kt = param[GRAN_KT], gamman = param[GRAN_GAMMAN];
-    const REAL gammat = param[GRAN_GAMMAT], xmu = param[GRAN_XMU], limit = param[GRAN_LIMIT];
-    const struct gran_kin k = gran_kinematics(c);
-    const REAL ccel = gran_normal(c, &k, kn, gamman, (REAL)1, limit);
-    const REAL3 ft = gran_history_tangential(c, &k, kt, gammat, xmu, ccel, (REAL)1, shear);
-    gran_apply(c, &k, ccel, ft, out);
+    GRAN_EVAL(gran_hooke_history, c, param, shear, out);
 }
 
 /* collision time (kernels/accuracy.cl): the damped linear spring */

@@ -201,8 +201,8 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
     }
 
-/* fix wall/pair: the active pair style's law (kernels/pair_loop.cl's
- * pair_body is the pair kernel's; this is the same law against a wall). In
+/* fix wall/pair: the active pair style's law (the pair kernel's,
+ * kernels/pair_loop.cl, against a wall). In
  * the row form (pair granular) the law's history row is the wall's. */
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
 #ifdef PAIR_EVAL_ROW

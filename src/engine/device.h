@@ -73,6 +73,8 @@ struct engine {
     struct ocl ocl;
     int ready;                  /* device chosen */
     int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
+    int pair_lw;                /* contacts per work-item of pair_contacts (PAIR_LW) */
+    char lanes_prologue[160];   /* kernels/lanes.cl's prologue at the pair width */
     double origin[3];           /* device positions are x - origin (0 in double) */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */

@@ -262,17 +262,52 @@ static const char *kernel_text(struct gravel *g, const char *name, const char *w
     gr_error(g, "%s: kernel source kernels/%s is not in this build", who, name);
 }
 
-static void add_source(struct gravel *g, const char **names, const char **texts, int *n,
-                       const char *name, const char *who)
+#define MAX_SOURCES 48
+
+/* Adds text under name, once. */
+static void add_text(struct gravel *g, const char **names, const char **texts, int *n,
+                     const char *name, const char *text)
 {
     for (int i = 0; i < *n; i++)
         if (!strcmp(names[i], name))
             return;
-    if (*n >= 32)
+    if (*n >= MAX_SOURCES)
         gr_error(g, "too many kernel sources");
     names[*n] = name;
-    texts[*n] = kernel_text(g, name, who);
+    texts[*n] = text;
     (*n)++;
+}
+
+static void add_source(struct gravel *g, const char **names, const char **texts, int *n,
+                       const char *name, const char *who)
+{
+    add_text(g, names, texts, n, name, kernel_text(g, name, who));
+}
+
+/* The lane templates (kernels/lanes.cl, then the lane-generic laws:
+ * kernels/gran_law.cl) at width 1 (names x_1) and, with pair_lw > 1, at the
+ * pair kernel's width (x_w), each between its prologue and the epilogue. */
+static void add_lanes(struct gravel *g, const char **names, const char **texts, int *n)
+{
+    struct engine *e = g->eng;
+    static const char epilogue[] = "#undef LW\n#undef LR\n#undef LRI\n#undef LN\n#undef LSEL\n";
+    static const char one[] = "#define LW 1\n#define LR REAL\n#define LRI int\n"
+                              "#define LN(x) x##_1\n#define LSEL(a, b, m) ((m) ? (b) : (a))\n";
+    add_text(g, names, texts, n, "lanes@1", one);
+    add_text(g, names, texts, n, "lanes.cl@1", kernel_text(g, "lanes.cl", "engine"));
+    add_text(g, names, texts, n, "gran_law.cl@1", kernel_text(g, "gran_law.cl", "engine"));
+    add_text(g, names, texts, n, "lanes@1/", epilogue);
+    if (e->pair_lw <= 1)
+        return;
+    snprintf(e->lanes_prologue, sizeof e->lanes_prologue,
+             "#define LW %d\n#define LR %s%d\n#define LRI %s%d\n#define LN(x) x##_w\n"
+             "#define LSEL(a, b, m) select((a), (b), (m))\n",
+             e->pair_lw, e->single ? "float" : "double", e->pair_lw, e->single ? "int" : "long",
+             e->pair_lw);
+    add_text(g, names, texts, n, "lanes@w", e->lanes_prologue);
+    add_text(g, names, texts, n, "lanes.cl@w", kernel_text(g, "lanes.cl", "engine"));
+    add_text(g, names, texts, n, "gran_law.cl@w", kernel_text(g, "gran_law.cl", "engine"));
+    add_text(g, names, texts, n, "lanes@w/", epilogue);
 }
 
 /* The run program's build options, assembled here and nowhere else:
@@ -312,6 +347,8 @@ static int build_options(struct gravel *g, const struct pair_caps *pc, int lmp20
             OPT(" -D PAIR_EVAL_ROW=%s", pc->eval_row);
         else
             OPT(" -D PAIR_EVAL=%s", pc->eval);
+        if (e->pair_lw > 1)
+            OPT(" -D PAIR_LW=%d -D PAIR_EVAL_LANES=%s", e->pair_lw, pc->eval_lanes);
         if (pc->approach)
             OPT(" -D PAIR_APPROACH");
         if (pc->energy)
@@ -370,7 +407,13 @@ void eng_prepare(struct gravel *g)
     if (flip_n > 0)
         e->hist_n++;
 
-    const char *names[32], *texts[32];
+    /* the pair kernel's width: the device's lanes for a law written in
+     * lanes (kernels/gran_law.cl), one contact per work-item otherwise */
+    e->pair_lw = pc && pc->eval_lanes && !pc->beyond
+                     ? (single ? e->ocl.lanes_float : e->ocl.lanes_double)
+                     : 1;
+
+    const char *names[MAX_SOURCES], *texts[MAX_SOURCES];
     int n = 0;
     add_source(g, names, texts, &n, "param_layout.h", "engine");
     add_source(g, names, texts, &n, "wall_layout.h", "engine");
@@ -383,8 +426,10 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "collision_time.h", "engine");
     /* the contact record and the one contact body of every source */
     add_source(g, names, texts, &n, "contact.cl", "engine");
-    /* LAMMPS granular kinematics for the gran pair and wall evaluators:
-     * static inline helpers, free in scenes that do not call them */
+    /* the lane-generic laws: the LAMMPS gran laws at width 1 for every
+     * source and at the pair width; then their contact evaluators (static
+     * inline, free in scenes that do not call them) */
+    add_lanes(g, names, texts, &n);
     add_source(g, names, texts, &n, "gran_common.cl", "engine");
     /* normal impulse of the source-document contact laws (same terms) */
     add_source(g, names, texts, &n, "contact_normal.cl", "engine");

@@ -90,6 +90,31 @@ static int list_devices(struct gravel *g, cl_platform_id *plat, cl_device_id *de
     return n;
 }
 
+/* The lane widths (struct ocl): a power of two 1..16. */
+static void ocl_lanes(struct gravel *g, struct ocl *o)
+{
+    cl_uint wd = 1, wf = 1;
+    clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_DOUBLE, sizeof wd, &wd, NULL);
+    clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT, sizeof wf, &wf, NULL);
+    const char *env = getenv("GRAVEL_LANES");
+    if (env && *env) {
+        char *end;
+        long v = strtol(env, &end, 10);
+        if (*end || (v != 1 && v != 2 && v != 4 && v != 8 && v != 16))
+            gr_error(g, "GRAVEL_LANES must be 1, 2, 4, 8 or 16 contacts per work-item, got '%.32s'",
+                     env);
+        wd = wf = (cl_uint)v;
+    } else if (o->is_gpu) {
+        wd = wf = 1; /* a GPU's lanes are its work-items */
+    }
+    o->lanes_double = 1;
+    o->lanes_float = 1;
+    while (o->lanes_double < 16 && (cl_uint)o->lanes_double * 2 <= wd)
+        o->lanes_double *= 2;
+    while (o->lanes_float < 16 && (cl_uint)o->lanes_float * 2 <= wf)
+        o->lanes_float *= 2;
+}
+
 void ocl_init(struct gravel *g, struct ocl *o, const char *want)
 {
     cl_platform_id plat[64];
@@ -155,6 +180,7 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     }
     if (o->wg > maxwg)
         o->wg = maxwg;
+    ocl_lanes(g, o);
     const char *prof = getenv("GRAVEL_PROFILE");
     o->profile = prof && *prof && strcmp(prof, "0");
     o->queue = clCreateCommandQueue(o->ctx, o->device,

@@ -30,6 +30,11 @@ struct ocl {
     int atoms_hint;             /* atoms the buffers are sized for (error messages) */
     size_t wg;                  /* work-group size of every launch (device.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
+    int lanes_double;           /* contacts per work-item of a lane-generic law (kernels/
+                                 * lanes.cl) in double and in single: env GRAVEL_LANES,
+                                 * else 1 on a GPU, else the device's preferred vector
+                                 * width of the precision */
+    int lanes_float;
 };
 
 /* Bytes in live device buffers of this process, and the most at once since

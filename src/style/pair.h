@@ -74,6 +74,9 @@ struct pair_caps {
     const char *sources[PAIR_MAXTERMS + 1];
     const char *eval;           /* 3-vector evaluator (PAIR_EVAL), or NULL */
     const char *eval_row;       /* history-row evaluator (PAIR_EVAL_ROW, pair granular) */
+    const char *eval_lanes;     /* eval's law in lane-generic form (kernels/gran_law.cl,
+                                 * PAIR_EVAL_LANES=<name>_w): the pair kernel then takes
+                                 * the device's lanes of contacts per work-item; NULL: one */
     int approach;               /* also takes pairs one drift from contact (PAIR_APPROACH;
                                  * linear/restitution, kernels/contact_normal.cl) */
     const char *energy;         /* potential energy function REAL f(REAL rsq, param), 0 at

@@ -91,10 +91,11 @@ static double collision_time(const struct pair *p, double m, double r, double vn
 }
 
 void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
-                        const char *eval, int history)
+                        const char *eval, const char *law, int history)
 {
     pair_caps_source(c, source);
     c->eval = eval;
+    c->eval_lanes = law;
     c->rotation = 1;
     c->history = history;
     c->tcol_of = p;

@@ -5,7 +5,8 @@
 
 static void describe(const struct pair *p, struct pair_caps *c)
 {
-    pair_gran_describe(p, c, "pair_gran_hertz_history.cl", "gran_hertz_history_eval", 1);
+    pair_gran_describe(p, c, "pair_gran_hertz_history.cl", "gran_hertz_history_eval", "gran_hertz_history",
+                       1);
 }
 
 const struct pair_style pair_style_gran_hertz_history = {

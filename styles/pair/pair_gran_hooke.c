@@ -5,7 +5,8 @@
 
 static void describe(const struct pair *p, struct pair_caps *c)
 {
-    pair_gran_describe(p, c, "pair_gran_hooke.cl", "gran_hooke_eval", 0);
+    pair_gran_describe(p, c, "pair_gran_hooke.cl", "gran_hooke_eval", "gran_hooke",
+                       0);
 }
 
 const struct pair_style pair_style_gran_hooke = {

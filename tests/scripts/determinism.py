@@ -11,12 +11,17 @@ bit-identical in every variant:
   - the same run twice;
   - atom_modify sort 0 (never re-sorted) and sort 137 (every 137 steps);
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
+  - GRAVEL_LANES=1, 2 and 16 contacts per pair work-item (the default is the
+    device's preferred vector width, kernels/lanes.cl);
   - neigh_modify check no (a rebuild every step: other neighbor sets).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
 freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
 off (GRAVEL_FUSE=0: one launch per fix and hook). Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
+The same lane widths give the same bits for each lane-generic law (gran
+hooke, hooke/history, hertz/history) in double and single precision, on a
+shorter bed (lanes_<law>_<precision>_<width>, widths 1 and 16).
 One PASS/FAIL line per check.
 """
 import math
@@ -105,14 +110,14 @@ run 50
 """
 
 
-def run(deck, env_extra=None):
+def run(deck, env_extra=None, args=()):
     """Run a deck in a fresh directory; return (thermo rows, dump text)."""
     env = dict(os.environ)
     env.update(env_extra or {})
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, "in.deck"), "w") as f:
             f.write(deck)
-        p = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none"], cwd=d, env=env,
+        p = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none", *args], cwd=d, env=env,
                            capture_output=True, text=True, timeout=600)
         if p.returncode != 0:
             return None, p.stdout + p.stderr
@@ -141,6 +146,26 @@ def first_difference(a, b):
     return "lengths differ"
 
 
+def check_lanes():
+    """Each lane-generic law at lane widths 1 and 16 against the device's
+    default, in both precisions: a shorter bed (600 steps)."""
+    bad = 0
+    for law in ("hooke", "hooke/history", "hertz/history"):
+        deck = BED.format(extra="").replace("hooke/history", law).replace(
+            "run 3000", "run 600").replace("custom 3000", "custom 600").replace(
+            "thermo 500", "thermo 200")
+        for prec in ("double", "single"):
+            args = ("-precision", prec)
+            ref_rows, ref_dump = run(deck, None, args)
+            for width in ("1", "16"):
+                name = "lanes_%s_%s_%s" % (law.replace("/", "_"), prec, width)
+                rows, dump = run(deck, {"GRAVEL_LANES": width}, args)
+                ok = ref_rows is not None and rows == ref_rows and dump == ref_dump
+                bad += not check(name, ok, (dump or "")[-300:] if rows is None or ref_rows is None
+                                 else first_difference(ref_dump, dump))
+    return bad
+
+
 def main():
     ref_rows, ref_dump = run(BED.format(extra=""))
     if ref_rows is None:
@@ -152,6 +177,9 @@ def main():
         ("atom_modify_sort_137", "atom_modify sort 137 0", None),
         ("workgroup_1", "", {"GRAVEL_WORKGROUP": "1"}),
         ("workgroup_32", "", {"GRAVEL_WORKGROUP": "32"}),
+        ("lanes_1", "", {"GRAVEL_LANES": "1"}),
+        ("lanes_2", "", {"GRAVEL_LANES": "2"}),
+        ("lanes_16_workgroup_8", "", {"GRAVEL_LANES": "16", "GRAVEL_WORKGROUP": "8"}),
         ("rebuild_every_step", "neigh_modify every 1 delay 0 check no", None),
     ]
     bad = 0
@@ -165,6 +193,7 @@ def main():
                          "" if ok else first_difference(ref_dump, dump))
         bad += not check("determinism_" + name + "_thermo", rows == ref_rows,
                          "%s vs %s" % (rows[-1:], ref_rows[-1:]))
+    bad += check_lanes()
     rows_f, dump_f = run(CHUTE)
     rows_u, dump_u = run(CHUTE, {"GRAVEL_FUSE": "0"})
     if rows_f is None or rows_u is None:
