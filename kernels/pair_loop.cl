@@ -20,16 +20,14 @@
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
-/* the pair law, its form and collision time for the contact body
- * (kernels/contact.cl); pair granular's row form keeps no accuracy record */
+/* the pair law's contact body (kernels/contact.cl); pair granular's row
+ * form keeps no accuracy record */
 #ifdef PAIR_EVAL_ROW
 #define PAIR_ROW 1
-#define PAIR_LAW PAIR_EVAL_ROW
-#define PAIR_TCOL contact_no_tcol
+CONTACT_BODY(pair_body, PAIR_EVAL_ROW, 1, contact_no_tcol)
 #else
 #define PAIR_ROW 0
-#define PAIR_LAW PAIR_EVAL
-#define PAIR_TCOL TCOL_OF(PAIR_EVAL)
+CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 #endif
 #ifdef HAS_HISTORY
 #define PAIR_HIST_N HIST_N
@@ -37,116 +35,82 @@
 #define PAIR_HIST_N 0
 #endif
 
-#ifndef PAIR_LW
-#define PAIR_LW 1 /* contacts per work-item (PAIR_EVAL_LANES: the device's lanes) */
-#endif
-
-/* arguments: KARGS_pair_contacts (kernels/kernel_args.h). Work-item g
- * evaluates contacts PAIR_LW g .. PAIR_LW g + PAIR_LW - 1: each contact's
- * site, gate and kinematics (contact_begin), then the law, on all of them
- * at once in lanes with PAIR_EVAL_LANES (pair_lanes_eval, kernels/
- * gran_common.cl), else one by one; then each contact's note, history and
- * records. The operations on a contact are the same at every width. */
+#if !defined(PAIR_LW) || PAIR_LW == 1 /* else kernels/pair_gran_lanes.cl's, in lanes */
+/* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
 __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 {
-    const int c0 = get_global_id(0) * PAIR_LW;
-    if (c0 >= ncontact)
+    const int c = get_global_id(0);
+    if (c >= ncontact)
         return;
-#ifndef VREMAP
+    const int i = ci[c], j = cj[c];
+    struct contact_site s;
+    s.del = vload3(i, x) - vload3(j, x);
+#ifdef VREMAP
+    const REAL3 raw = s.del;
+#else
     (void)hrate;
     (void)vgroup;
 #endif
-    const struct contact_atoms a =
-        contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);
-    struct contact_site s[PAIR_LW];
-    struct contact k[PAIR_LW];
-    struct contact_force cf[PAIR_LW];
-    __global const REAL *p[PAIR_LW];
-    REAL h[PAIR_LW][PAIR_ROW ? HIST_N : 3];
-    int acted[PAIR_LW];
-    for (int l = 0; l < PAIR_LW; l++) {
-        const int c = c0 + l;
-        acted[l] = 0;
-        cf[l].f = cf[l].tc = cf[l].tr = (REAL3)(0); /* a law may leave it (jkr beyond reach) */
-        if (c >= ncontact)
-            continue;
-        const int i = ci[c], j = cj[c];
-        s[l].del = vload3(i, x) - vload3(j, x);
-#ifdef VREMAP
-        const REAL3 raw = s[l].del;
-#endif
-        MINIMG3(s[l].del);
+    MINIMG3(s.del);
 #ifdef SPLIT_POS /* the low parts: refined by contact_refine (kernels/contact.cl) */
-        s[l].del_lo = vload3(i, xlo) - vload3(j, xlo);
+    s.del_lo = vload3(i, xlo) - vload3(j, xlo);
 #else
-        s[l].del_lo = (REAL3)(0);
+    s.del_lo = (REAL3)(0);
 #endif
-        s[l].radi = radius[i];
-        s[l].radj = radius[j];
-        s[l].rwall = 0;
-        s[l].rgiven = -1;
-        s[l].reach = s[l].radi + s[l].radj;
-        s[l].acts = 1;
-        s[l].inclusive = 0;
-        s[l].hold = -1;
-        s[l].hzero = PAIR_HIST_N > 0 ? HIST_ZERO_N : 0;
-        s[l].note = !PAIR_ROW;
-        s[l].note_idx = c;
-        s[l].acode = 0;
-        s[l].refine = 1;
+    s.radi = radius[i];
+    s.radj = radius[j];
+    s.rwall = 0;
+    s.rgiven = -1;
+    s.reach = s.radi + s.radj;
+    s.acts = 1;
+    s.inclusive = 0;
+    s.hold = -1;
+    s.hzero = PAIR_HIST_N > 0 ? HIST_ZERO_N : 0;
+    s.note = !PAIR_ROW;
+    s.note_idx = c;
+    s.acode = 0;
+    s.refine = 1;
 #ifdef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
                       * the law, whose terms gate themselves (pair_hybrid_overlay.cl) */
-        s[l].gated = 1;
-        s[l].approach = 0;
+    s.gated = 1;
+    s.approach = 0;
 #else
-        s[l].gated = 0;
+    s.gated = 0;
 #ifdef PAIR_APPROACH
-        s[l].approach = 1;
+    s.approach = 1;
 #else
-        s[l].approach = 0;
+    s.approach = 0;
 #endif
 #endif
-        struct contact_partner pj;
-        pj.j = j;
-        pj.freezebit = freezebit;
-        pj.mask = mask;
+    struct contact_partner pj;
+    pj.j = j;
+    pj.freezebit = freezebit;
+    pj.mask = mask;
 #ifdef VREMAP
-        pj.vremap = (mask[j] & vgroup) != 0;
-        pj.vimage = pj.vremap
-                        ? image_velocity(image_count(raw, s[l].del, Lx, Ly, Lz, xy, xz, yz), hrate)
-                        : (REAL3)(0);
+    pj.vremap = (mask[j] & vgroup) != 0;
+    pj.vimage = pj.vremap ? image_velocity(image_count(raw, s.del, Lx, Ly, Lz, xy, xz, yz), hrate)
+                          : (REAL3)(0);
 #endif
-        __global const REAL *hrow = shear + (size_t)c * HIST_N;
-        for (int q = 0; q < (PAIR_ROW ? HIST_N : 3); q++)
-            h[l][q] = q < PAIR_HIST_N ? hrow[q] : (REAL)0;
-        p[l] = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
-        acted[l] = contact_begin(CONTACT_PAIR, i, &s[l], &pj, &a, h[l], &k[l]);
-    }
-#if PAIR_LW > 1
-    pair_lanes_eval(k, p, h, acted, cf);
-#else
-    if (acted[0])
-        CONTACT_CALL(PAIR_ROW, PAIR_LAW, &k[0], p[0], h[0], &cf[0]);
-#endif
-    for (int l = 0; l < PAIR_LW; l++) {
-        const int c = c0 + l;
-        if (c >= ncontact)
-            break;
-        struct contact_out o;
-        o.f = o.ti = o.tj = (REAL3)(0);
-        if (acted[l])
-            CONTACT_END(CONTACT_PAIR, PAIR_TCOL, ci[c], &s[l], &a, &k[l], p[l], &cf[l], &o);
-        contact_hist_store(shear + (size_t)c * HIST_N, h[l], acted[l] ? PAIR_HIST_N : s[l].hzero,
-                           acted[l]);
-        const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
-        vstore3(o.f, si, recf);
-        vstore3(-o.f, sj, recf);
+    const struct contact_atoms a =
+        contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);
+    REAL h[PAIR_ROW ? HIST_N : 3];
+    __global REAL *hrow = shear + (size_t)c * HIST_N;
+    for (int q = 0; q < (PAIR_ROW ? HIST_N : 3); q++)
+        h[q] = q < PAIR_HIST_N ? hrow[q] : (REAL)0;
+    __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
+    struct contact_out o;
+    o.f = o.ti = o.tj = (REAL3)(0);
+    const int acted = pair_body(CONTACT_PAIR, i, &s, &pj, &a, p, h, &o);
+    contact_hist_store(hrow, h, acted ? PAIR_HIST_N : s.hzero, acted);
+    const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
+    vstore3(o.f, si, recf);
+    vstore3(-o.f, sj, recf);
 #ifdef HAS_ROTATION
-        vstore3(o.ti, si, rect);
-        vstore3(o.tj, sj, rect);
+    vstore3(o.ti, si, rect);
+    vstore3(o.tj, sj, rect);
 #endif
-    }
 }
+#endif /* PAIR_LW == 1 */
 #endif /* PAIR_EVAL || PAIR_EVAL_ROW */
 
 /* f_i (and torque_i) = the sum of i's incidence records in row order;

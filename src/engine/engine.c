@@ -284,6 +284,21 @@ static void add_source(struct gravel *g, const char **names, const char **texts,
     add_text(g, names, texts, n, name, kernel_text(g, name, who));
 }
 
+/* The pair kernel's width: the device's lanes for a law written in lanes
+ * (kernels/gran_law.cl) in a scene kernels/pair_gran_lanes.cl covers (no
+ * cohesion, approach, velocity remap, triclinic box, split positions or
+ * history row beyond 3 REAL); one contact per work-item otherwise. */
+static int pair_lanes(struct gravel *g, const struct pair_caps *pc, int single, int lmp2021)
+{
+    if (!pc || !pc->eval_lanes || pc->beyond || pc->approach || single || lmp2021 ||
+        g->dom.triclinic)
+        return 1;
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (strstr(g->styles.fix[i]->defines, "VREMAP"))
+            return 1;
+    return g->eng->ocl.lanes_double;
+}
+
 /* The lane templates (kernels/lanes.cl, then the lane-generic laws:
  * kernels/gran_law.cl) at width 1 (names x_1) and, with pair_lw > 1, at the
  * pair kernel's width (x_w), each between its prologue and the epilogue. */
@@ -407,11 +422,7 @@ void eng_prepare(struct gravel *g)
     if (flip_n > 0)
         e->hist_n++;
 
-    /* the pair kernel's width: the device's lanes for a law written in
-     * lanes (kernels/gran_law.cl), one contact per work-item otherwise */
-    e->pair_lw = pc && pc->eval_lanes && !pc->beyond
-                     ? (single ? e->ocl.lanes_float : e->ocl.lanes_double)
-                     : 1;
+    e->pair_lw = pair_lanes(g, pc, single, lmp2021);
 
     const char *names[MAX_SOURCES], *texts[MAX_SOURCES];
     int n = 0;
@@ -445,6 +456,7 @@ void eng_prepare(struct gravel *g)
             add_source(g, names, texts, &n, f->sources[k], f->style->name);
     }
     add_source(g, names, texts, &n, "pair_loop.cl", "engine");
+    add_source(g, names, texts, &n, "pair_gran_lanes.cl", "engine");
     add_source(g, names, texts, &n, "neighbor.cl", "engine");
     add_source(g, names, texts, &n, "box_change.cl", "engine");
 

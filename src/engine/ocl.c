@@ -90,22 +90,25 @@ static int list_devices(struct gravel *g, cl_platform_id *plat, cl_device_id *de
     return n;
 }
 
-/* The lane widths (struct ocl): a power of two 1..16. */
+/* The lane widths (struct ocl): env GRAVEL_LANES = 1, 2, 4, 8 or 16, or
+ * "device" (the device's preferred vector width of the precision, 1 on a
+ * GPU: its lanes are its work-items); 1 by default: on PoCL 3.1 (AVX-512)
+ * the pair stage in lanes of 8 measured slower than one contact per
+ * work-item (doc/benchmark.md, lanes). */
 static void ocl_lanes(struct gravel *g, struct ocl *o)
 {
     cl_uint wd = 1, wf = 1;
-    clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_DOUBLE, sizeof wd, &wd, NULL);
-    clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT, sizeof wf, &wf, NULL);
     const char *env = getenv("GRAVEL_LANES");
-    if (env && *env) {
+    if (env && !strcmp(env, "device") && !o->is_gpu) {
+        clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_DOUBLE, sizeof wd, &wd, NULL);
+        clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT, sizeof wf, &wf, NULL);
+    } else if (env && *env && strcmp(env, "device")) {
         char *end;
         long v = strtol(env, &end, 10);
         if (*end || (v != 1 && v != 2 && v != 4 && v != 8 && v != 16))
-            gr_error(g, "GRAVEL_LANES must be 1, 2, 4, 8 or 16 contacts per work-item, got '%.32s'",
-                     env);
+            gr_error(g, "GRAVEL_LANES must be 1, 2, 4, 8 or 16 contacts per work-item, or "
+                        "device, got '%.32s'", env);
         wd = wf = (cl_uint)v;
-    } else if (o->is_gpu) {
-        wd = wf = 1; /* a GPU's lanes are its work-items */
     }
     o->lanes_double = 1;
     o->lanes_float = 1;

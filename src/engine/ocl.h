@@ -31,9 +31,8 @@ struct ocl {
     size_t wg;                  /* work-group size of every launch (device.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
     int lanes_double;           /* contacts per work-item of a lane-generic law (kernels/
-                                 * lanes.cl) in double and in single: env GRAVEL_LANES,
-                                 * else 1 on a GPU, else the device's preferred vector
-                                 * width of the precision */
+                                 * lanes.cl) in double and in single: env GRAVEL_LANES
+                                 * (ocl.c, ocl_lanes), 1 by default */
     int lanes_float;
 };
 
