@@ -59,7 +59,11 @@ struct rdump {
     int scaled, wrapped;
     bigint nsnap;
     double box[3][2];
-    double *fields;
+    double *fields;             /* nsnap rows of nfield; column 0 unused (ids) */
+    int64_t *ids;               /* the snapshot's atom IDs, parsed as integers */
+    long lineno;                /* lines read from the current file */
+    long atom_line0;            /* line of the snapshot's first atom */
+    bigint step;                /* timestep of the snapshot at the position */
     bigint cnt[6];
 };
 
@@ -82,6 +86,7 @@ void rd_destroy(struct rdump *rd)
     free(rd->files);
     free(rd->line);
     free(rd->fields);
+    free(rd->ids);
     free(rd);
 }
 
@@ -211,6 +216,7 @@ static int next_line(struct gravel *g, struct rdump *rd, int need)
             gr_error(g, "unexpected end of dump file '%s'", rd->files[rd->curfile]);
         return 0;
     }
+    rd->lineno++;
     return 1;
 }
 
@@ -253,7 +259,7 @@ static int read_time(struct gravel *g, struct rdump *rd, bigint *step)
                     "'%.40s'",
                  rd->files[rd->curfile], rd->line);
     next_line(g, rd, 1);
-    *step = parse_count(g, rd, "a timestep");
+    *step = rd->step = parse_count(g, rd, "a timestep");
     return 0;
 }
 
@@ -274,6 +280,7 @@ static void open_file(struct gravel *g, struct rdump *rd, int k)
         fclose(rd->fp);
     rd->fp = NULL;
     rd->curfile = k;
+    rd->lineno = 0;
     const char *why = NULL;
     rd->fp = fio_open_read(rd->files[k], 0, &why);
     if (!rd->fp)
@@ -351,6 +358,86 @@ bigint rd_next(struct gravel *g, struct rdump *rd, bigint ncurrent, bigint nlast
     return step;
 }
 
+static double coord(const struct rdump *rd, int d, double v);
+
+/* The largest atom ID read: LAMMPS's tag_check refuses IDs >= MAXTAGINT,
+ * so that a new ID (largest + 1) still fits. */
+#define RD_MAXTAG (INT64_MAX - 1)
+
+/* An atom ID word: an integer in 1..RD_MAXTAG, exactly (not through a
+ * double, which rounds IDs beyond 2^53). */
+static int64_t parse_id(struct gravel *g, struct rdump *rd, const char *word)
+{
+    const char *fn = rd->files[rd->curfile];
+    char *end;
+    errno = 0;
+    long long v = strtoll(word, &end, 10);
+    if (end == word || *end)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID '%.32s' is not an integer",
+                 fn, rd->lineno, (long long)rd->step, word);
+    if (errno == ERANGE || v > RD_MAXTAG)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %.32s is too big (at most "
+                    "%lld)",
+                 fn, rd->lineno, (long long)rd->step, word, (long long)RD_MAXTAG);
+    if (v <= 0)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %.32s is not positive", fn,
+                 rd->lineno, (long long)rd->step, word);
+    return v;
+}
+
+/* A field value of atom `id` on the current line: finite, and a type or
+ * image flag an integer in range. */
+static void check_value(struct gravel *g, struct rdump *rd, int64_t id, int t, double v,
+                        const char *word)
+{
+    const char *fn = rd->files[rd->curfile];
+    if (!isfinite(v))
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has a non-finite %s "
+                    "('%.32s')",
+                 fn, rd->lineno, (long long)rd->step, (long long)id, field_name[t], word);
+    int integral = t == F_TYPE || (t >= F_IX && t <= F_IZ);
+    double lim = t == F_TYPE ? 1e6 : (double)(1 << 20);
+    if (integral && (v != floor(v) || fabs(v) > lim))
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has %s '%.32s' (an "
+                    "integer within +-%g expected)",
+                 fn, rd->lineno, (long long)rd->step, (long long)id, field_name[t], word, lim);
+}
+
+static int cmp_id_line(const void *pa, const void *pb)
+{
+    const int64_t *a = pa, *b = pb;
+    if (a[0] != b[0])
+        return (a[0] > b[0]) - (a[0] < b[0]);
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* Errors if an atom ID appears twice in the snapshot: `add keep` would make
+ * two atoms of one ID (LAMMPS stops later, at its atom map); replace would
+ * apply two lines to one atom. */
+static void check_unique_ids(struct gravel *g, struct rdump *rd)
+{
+    bigint n = rd->nsnap;
+    int64_t *p = malloc(((size_t)n + 1) * 2 * sizeof(int64_t));
+    if (!p)
+        gr_error(g, "out of memory");
+    for (bigint i = 0; i < n; i++) {
+        p[2 * i] = rd->ids[i];
+        p[2 * i + 1] = i;
+    }
+    qsort(p, (size_t)n, 2 * sizeof(int64_t), cmp_id_line);
+    for (bigint i = 1; i < n; i++)
+        if (p[2 * i] == p[2 * i - 2]) {
+            long first = rd->atom_line0 + (long)p[2 * i - 1];
+            long second = rd->atom_line0 + (long)p[2 * i + 1];
+            long long id = p[2 * i];
+            free(p);
+            gr_error(g, "dump file '%s' (step %lld): atom ID %lld appears twice, on lines %ld "
+                        "and %ld",
+                     rd->files[rd->curfile], (long long)rd->step, id, first, second);
+        }
+    free(p);
+}
+
 /* The rest of the header (atoms, box, columns) and the field columns. */
 static void read_header(struct gravel *g, struct rdump *rd)
 {
@@ -364,7 +451,15 @@ static void read_header(struct gravel *g, struct rdump *rd)
                     "'%.40s'",
                  fn, rd->line);
     if (strstr(rd->line, "xy"))
-        gr_error(g, "dump file '%s' has a triclinic box; gravel boxes are orthogonal", fn);
+        gr_error(g, "dump file '%s' (step %lld) has a triclinic box: read_dump and rerun read "
+                    "orthogonal snapshots only",
+                 fn, (long long)rd->step);
+    /* LAMMPS: "Read_dump triclinic status does not match simulation" */
+    if (rd->boxflag && g->dom.triclinic)
+        gr_error(g, "dump file '%s' (step %lld) has an orthogonal box but the simulation box "
+                    "is triclinic: box yes needs the same kind of box (as LAMMPS); use box no "
+                    "to keep the current box and its tilts",
+                 fn, (long long)rd->step);
     for (int d = 0; d < 3; d++) {
         next_line(g, rd, 1);
         char *end;
@@ -374,6 +469,13 @@ static void read_header(struct gravel *g, struct rdump *rd)
         if (e2 == end)
             gr_error(g, "dump file '%s' is incorrectly formatted: bad box bounds '%.40s'", fn,
                      rd->line);
+        if (!isfinite(rd->box[d][0]) || !isfinite(rd->box[d][1]) ||
+            !(rd->box[d][0] < rd->box[d][1]) ||
+            !isfinite(rd->box[d][1] - rd->box[d][0]))
+            gr_error(g, "dump file '%s' line %ld (step %lld): the %c box bounds %g %g are not "
+                        "finite with lo < hi",
+                     fn, rd->lineno, (long long)rd->step, "xyz"[d], rd->box[d][0],
+                     rd->box[d][1]);
     }
     next_line(g, rd, 1);
     if (!starts(rd->line, "ITEM: ATOMS"))
@@ -435,13 +537,17 @@ static void read_header(struct gravel *g, struct rdump *rd)
     rd->wrapped = value == NOSCALE_WRAP || value == SCALE_WRAP;
     /* the atoms */
     free(rd->fields);
+    free(rd->ids);
     rd->fields = NULL;
+    rd->ids = NULL;
     if (rd->nsnap > 200000000)
         gr_error(g, "dump file '%s': snapshot of %lld atoms is too large", fn,
                  (long long)rd->nsnap);
     rd->fields = malloc(((size_t)rd->nsnap + 1) * (size_t)rd->nfield * sizeof(double));
-    if (!rd->fields)
+    rd->ids = malloc(((size_t)rd->nsnap + 1) * sizeof(int64_t));
+    if (!rd->fields || !rd->ids)
         gr_error(g, "out of memory");
+    rd->atom_line0 = rd->lineno + 1;
     for (bigint i = 0; i < rd->nsnap; i++) {
         next_line(g, rd, 1);
         char *w[256];
@@ -449,17 +555,28 @@ static void read_header(struct gravel *g, struct rdump *rd)
         for (char *t = strtok(rd->line, " \t"); t && n < 256; t = strtok(NULL, " \t"))
             w[n++] = t;
         if (n < nw)
-            gr_error(g, "dump file '%s': insufficient columns in an atom line (%d of %d)", fn, n,
-                     nw);
-        for (int k = 0; k < rd->nfield; k++) {
+            gr_error(g, "dump file '%s' line %ld: insufficient columns in an atom line (%d of "
+                        "%d)",
+                     fn, rd->lineno, n, nw);
+        rd->ids[i] = parse_id(g, rd, w[rd->index[0]]);
+        for (int k = 1; k < rd->nfield; k++) {
             char *end;
-            double v = strtod(w[rd->index[k]], &end);
-            if (end == w[rd->index[k]] || *end)
-                gr_error(g, "dump file '%s': bad number '%.32s' in column %s", fn,
-                         w[rd->index[k]], lab[rd->index[k]]);
+            const char *word = w[rd->index[k]];
+            double v = strtod(word, &end);
+            if (end == word || *end)
+                gr_error(g, "dump file '%s' line %ld: bad number '%.32s' in column %s", fn,
+                         rd->lineno, word, lab[rd->index[k]]);
+            check_value(g, rd, rd->ids[i], rd->type[k], v, word);
+            int t = rd->type[k];
+            if (t >= F_X && t <= F_Z && !isfinite(coord(rd, t - F_X, v)))
+                gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld: scaled %s %.32s "
+                            "gives a non-finite coordinate",
+                         fn, rd->lineno, (long long)rd->step, (long long)rd->ids[i],
+                         field_name[t], word);
             rd->fields[(size_t)i * rd->nfield + k] = v;
         }
     }
+    check_unique_ids(g, rd);
 }
 
 static double coord(const struct rdump *rd, int d, double v)
@@ -502,7 +619,7 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
     for (bigint i = 0; i < rd->nsnap; i++) {
         const double *fv = rd->fields + (size_t)i * nf;
         isnew[i] = 1;
-        int m = find_tag(map, nlocal, (int64_t)fv[0]);
+        int m = find_tag(map, nlocal, rd->ids[i]);
         if (m < 0)
             continue;
         upd[m] = 1;
@@ -556,11 +673,14 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
                 x[t - F_X] = coord(rd, t - F_X, fv[k]);
         }
         if (type < 1 || type > a->ntypes)
-            gr_error(g, "dump atom %lld has type %d outside 1..%d", (long long)fv[0], type,
-                     a->ntypes);
-        int64_t tag = rd->add == KEEPADD ? (int64_t)fv[0] : ++maxtag;
-        if (tag <= 0)
-            gr_error(g, "dump atom ID %lld is not positive", (long long)fv[0]);
+            gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has type %d outside "
+                        "1..%d",
+                     rd->files[rd->curfile], rd->atom_line0 + (long)i, (long long)rd->step,
+                     (long long)rd->ids[i], type, a->ntypes);
+        if (rd->add == YESADD && maxtag >= RD_MAXTAG)
+            gr_error(g, "add yes: a new atom ID after %lld would be too big (at most %lld)",
+                     (long long)maxtag, (long long)RD_MAXTAG);
+        int64_t tag = rd->add == KEEPADD ? rd->ids[i] : ++maxtag;
         int m = atoms_add(g, tag, type, x, 0.5, 4.0 * M_PI / 3.0 * 0.125);
         rd->cnt[5]++;
         for (int k = 1; k < nf; k++) {
@@ -666,9 +786,7 @@ void cmd_read_dump(struct gravel *g, int argc, char **argv)
     bigint c[6];
     rd_counts(rd, c);
     rd_destroy(rd);
-    const struct domain *dm = &g->dom;
-    gr_print(g, "  orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", dm->lo[0], dm->lo[1],
-             dm->lo[2], dm->hi[0], dm->hi[1], dm->hi[2]);
+    domain_print_box(g, "  ");
     static const char *what[] = {"before read", "in snapshot", "purged",
                                  "replaced",    "trimmed",     "added"};
     for (int k = 0; k < 6; k++)

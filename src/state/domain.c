@@ -168,6 +168,21 @@ void domain_check_tilt(struct gravel *g)
         gr_error(g, "cannot skew a 2d box in z (xz and yz must be 0)");
 }
 
+void domain_check_skew(struct gravel *g)
+{
+    const struct domain *dm = &g->dom;
+    if (!dm->triclinic)
+        return;
+    double lx = dm->hi[0] - dm->lo[0], ly = dm->hi[1] - dm->lo[1];
+    /* written so that a NaN ratio fails too */
+    if (!(fabs(dm->xy / lx) <= 0.5) || !(fabs(dm->xz / lx) <= 0.5) ||
+        !(fabs(dm->yz / ly) <= 0.5))
+        gr_error(g, "triclinic box skew is too large: tilts xy %g xz %g yz %g with box lengths "
+                    "Lx %g Ly %g (a tilt may be at most half its box length: xy and xz against "
+                    "Lx, yz against Ly)",
+                 dm->xy, dm->xz, dm->yz, lx, ly);
+}
+
 void domain_ufac(const struct domain *d, double f[3])
 {
     f[0] = f[1] = f[2] = 1.0;
