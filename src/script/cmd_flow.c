@@ -136,6 +136,9 @@ void cmd_echo(struct gravel *g, int argc, char **argv)
 void cmd_clear(struct gravel *g, int argc, char **argv)
 {
     (void)argc; (void)argv;
+    if (g->in_run_every)
+        gr_error(g, "cannot be used in the commands of 'run ... every': the run continues "
+                    "with the simulation that clear would delete");
     gr_clear(g);
 }
 

@@ -58,8 +58,8 @@ void domain_set_initial_box(struct gravel *g)
             gr_error(g, "box bounds in %c must satisfy lo < hi, got %g %g", dimname[d],
                      dm->lo[d], dm->hi[d]);
         if (fabs(dm->lo[d]) >= DOMAIN_BIG || fabs(dm->hi[d]) >= DOMAIN_BIG)
-            gr_error(g, "box bounds in %c must be finite, got %g %g", dimname[d], dm->lo[d],
-                     dm->hi[d]);
+            gr_error(g, "box bounds in %c must lie within +-1e20, got %g %g", dimname[d],
+                     dm->lo[d], dm->hi[d]);
         dm->small[d] = DOMAIN_SMALL * (dm->hi[d] - dm->lo[d]);
     }
     for (int d = 0; d < 3; d++) {
