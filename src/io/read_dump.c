@@ -1,10 +1,12 @@
 /* read_dump.c - `read_dump file Nstep field ... [keyword value ...]` as
  * LAMMPS 2021 (read_dump.cpp, reader_native.cpp), native text dumps, one
- * process, orthogonal boxes:
+ * process, orthogonal snapshots:
  *   fields   x y z vx vy vz ix iy iz fx fy fz (and id, type; z vz iz fz are
  *            illegal in 2d; q does not exist in atom_style sphere). The last
  *            field may not be id or type (LAMMPS's check).
- *   box yes|no       (yes) take the snapshot's box (z only in 3d)
+ *   box yes|no       (yes) take the snapshot's box (z only in 3d); the
+ *                    simulation box must be orthogonal too (LAMMPS: the
+ *                    triclinic status must match); no keeps the box
  *   replace yes|no   (yes) overwrite matching atoms' fields (never the type)
  *   purge yes|no     (no) delete every atom first (needs replace no, trim no)
  *   trim yes|no      (no) delete atoms the snapshot does not hold
@@ -20,7 +22,10 @@
  * flags. Afterwards every atom is remapped into the periodic box and
  * shrink-wrapped faces refitted. read_dump resets the timestep to Nstep and
  * prints LAMMPS's summary (atoms before read, in snapshot, purged,
- * replaced, trimmed, added, after read). */
+ * replaced, trimmed, added, after read).
+ * Every value is checked as it is read, naming the file, line and step:
+ * IDs exact integers in 1..INT64_MAX - 1, once per snapshot; other fields
+ * finite, types and image flags integers in range; box bounds finite. */
 #include "read_dump.h"
 
 #include <errno.h>
