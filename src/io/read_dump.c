@@ -1,12 +1,14 @@
 /* read_dump.c - `read_dump file Nstep field ... [keyword value ...]` as
  * LAMMPS 2021 (read_dump.cpp, reader_native.cpp), native text dumps, one
- * process, orthogonal snapshots:
+ * process, orthogonal or triclinic snapshots (a triclinic header holds the
+ * bounding box and the tilts, as LAMMPS and gravel's dumps write it):
  *   fields   x y z vx vy vz ix iy iz fx fy fz (and id, type; z vz iz fz are
  *            illegal in 2d; q does not exist in atom_style sphere). The last
  *            field may not be id or type (LAMMPS's check).
- *   box yes|no       (yes) take the snapshot's box (z only in 3d); the
- *                    simulation box must be orthogonal too (LAMMPS: the
- *                    triclinic status must match); no keeps the box
+ *   box yes|no       (yes) take the snapshot's box and tilts (z, xz, yz only
+ *                    in 3d); the simulation box must be of the same kind
+ *                    (LAMMPS: the triclinic status must match); no keeps
+ *                    the box
  *   replace yes|no   (yes) overwrite matching atoms' fields (never the type)
  *   purge yes|no     (no) delete every atom first (needs replace no, trim no)
  *   trim yes|no      (no) delete atoms the snapshot does not hold
@@ -63,7 +65,10 @@ struct rdump {
     int boxflag, replace, purge, trim, add, scaleflag, wrapflag;
     int scaled, wrapped;
     bigint nsnap;
-    double box[3][2];
+    double box[3][2];           /* the snapshot's lo, hi (triclinic: not the bounding box) */
+    int tri_snap;               /* the snapshot's box is triclinic ... */
+    double tilt[3];             /* ... with tilts xy, xz, yz (else 0) */
+    int xyz_k[3];               /* field index of x, y, z in a row (-1: not read) */
     double *fields;             /* nsnap rows of nfield; column 0 unused (ids) */
     int64_t *ids;               /* the snapshot's atom IDs, parsed as integers */
     long lineno;                /* lines read from the current file */
@@ -363,7 +368,7 @@ bigint rd_next(struct gravel *g, struct rdump *rd, bigint ncurrent, bigint nlast
     return step;
 }
 
-static double coord(const struct rdump *rd, int d, double v);
+static double coord(const struct rdump *rd, int d, const double *fv);
 
 /* The largest atom ID read: LAMMPS's tag_check refuses IDs >= MAXTAGINT,
  * so that a new ID (largest + 1) still fits. */
@@ -455,33 +460,42 @@ static void read_header(struct gravel *g, struct rdump *rd)
         gr_error(g, "dump file '%s' is incorrectly formatted: expected 'ITEM: BOX BOUNDS', got "
                     "'%.40s'",
                  fn, rd->line);
-    if (strstr(rd->line, "xy"))
-        gr_error(g, "dump file '%s' (step %lld) has a triclinic box: read_dump and rerun read "
-                    "orthogonal snapshots only",
-                 fn, (long long)rd->step);
+    rd->tri_snap = strstr(rd->line, "xy") != NULL;
     /* LAMMPS: "Read_dump triclinic status does not match simulation" */
-    if (rd->boxflag && g->dom.triclinic)
-        gr_error(g, "dump file '%s' (step %lld) has an orthogonal box but the simulation box "
-                    "is triclinic: box yes needs the same kind of box (as LAMMPS); use box no "
-                    "to keep the current box and its tilts",
-                 fn, (long long)rd->step);
+    if (rd->boxflag && rd->tri_snap != g->dom.triclinic)
+        gr_error(g, "dump file '%s' (step %lld) has %s box but the simulation box is %s: box "
+                    "yes needs the same kind of box (as LAMMPS); use box no to keep the "
+                    "current box",
+                 fn, (long long)rd->step, rd->tri_snap ? "a triclinic" : "an orthogonal",
+                 g->dom.triclinic ? "triclinic" : "orthogonal");
     for (int d = 0; d < 3; d++) {
         next_line(g, rd, 1);
-        char *end;
+        char *end, *e2, *e3;
         rd->box[d][0] = strtod(rd->line, &end);
-        char *e2;
         rd->box[d][1] = strtod(end, &e2);
-        if (e2 == end)
+        rd->tilt[d] = rd->tri_snap ? strtod(e2, &e3) : 0.0;
+        if (e2 == end || (rd->tri_snap && e3 == e2))
             gr_error(g, "dump file '%s' is incorrectly formatted: bad box bounds '%.40s'", fn,
                      rd->line);
+        if (!isfinite(rd->tilt[d]))
+            gr_error(g, "dump file '%s' line %ld (step %lld): the %s tilt %g is not finite", fn,
+                     rd->lineno, (long long)rd->step, d == 0 ? "xy" : d == 1 ? "xz" : "yz",
+                     rd->tilt[d]);
+    }
+    if (rd->tri_snap) { /* the lines hold the bounding box (LAMMPS's ReadDump::header) */
+        double xy = rd->tilt[0], xz = rd->tilt[1], yz = rd->tilt[2];
+        rd->box[0][0] -= fmin(fmin(0.0, xy), fmin(xz, xy + xz));
+        rd->box[0][1] -= fmax(fmax(0.0, xy), fmax(xz, xy + xz));
+        rd->box[1][0] -= fmin(0.0, yz);
+        rd->box[1][1] -= fmax(0.0, yz);
+    }
+    for (int d = 0; d < 3; d++)
         if (!isfinite(rd->box[d][0]) || !isfinite(rd->box[d][1]) ||
             !(rd->box[d][0] < rd->box[d][1]) ||
             !isfinite(rd->box[d][1] - rd->box[d][0]))
-            gr_error(g, "dump file '%s' line %ld (step %lld): the %c box bounds %g %g are not "
-                        "finite with lo < hi",
-                     fn, rd->lineno, (long long)rd->step, "xyz"[d], rd->box[d][0],
-                     rd->box[d][1]);
-    }
+            gr_error(g, "dump file '%s' (step %lld): the %c box bounds %g %g are not finite "
+                        "with lo < hi",
+                     fn, (long long)rd->step, "xyz"[d], rd->box[d][0], rd->box[d][1]);
     next_line(g, rd, 1);
     if (!starts(rd->line, "ITEM: ATOMS"))
         gr_error(g, "dump file '%s' is incorrectly formatted: expected 'ITEM: ATOMS', got "
@@ -540,6 +554,16 @@ static void read_header(struct gravel *g, struct rdump *rd)
                      fn);
     rd->scaled = value == SCALE_NOWRAP || value == SCALE_WRAP;
     rd->wrapped = value == NOSCALE_WRAP || value == SCALE_WRAP;
+    for (int d = 0; d < 3; d++)
+        rd->xyz_k[d] = -1;
+    for (int k = 0; k < rd->nfield; k++)
+        if (rd->type[k] >= F_X && rd->type[k] <= F_Z)
+            rd->xyz_k[rd->type[k] - F_X] = k;
+    if (rd->scaled && rd->tri_snap &&
+        (rd->xyz_k[0] < 0 || rd->xyz_k[1] < 0 || (g->dom.dimension == 3 && rd->xyz_k[2] < 0)))
+        gr_error(g, "dump file '%s': scaled coordinates of a triclinic snapshot need all of the "
+                    "x, y, z fields (as LAMMPS)",
+                 fn);
     /* the atoms */
     free(rd->fields);
     free(rd->ids);
@@ -572,21 +596,35 @@ static void read_header(struct gravel *g, struct rdump *rd)
                 gr_error(g, "dump file '%s' line %ld: bad number '%.32s' in column %s", fn,
                          rd->lineno, word, lab[rd->index[k]]);
             check_value(g, rd, rd->ids[i], rd->type[k], v, word);
-            int t = rd->type[k];
-            if (t >= F_X && t <= F_Z && !isfinite(coord(rd, t - F_X, v)))
-                gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld: scaled %s %.32s "
-                            "gives a non-finite coordinate",
-                         fn, rd->lineno, (long long)rd->step, (long long)rd->ids[i],
-                         field_name[t], word);
             rd->fields[(size_t)i * rd->nfield + k] = v;
         }
+        for (int d = 0; d < 3; d++)
+            if (rd->xyz_k[d] >= 0 && !isfinite(coord(rd, d, rd->fields + (size_t)i * rd->nfield)))
+                gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld: the scaled "
+                            "coordinates give a non-finite %c",
+                         fn, rd->lineno, (long long)rd->step, (long long)rd->ids[i], "xyz"[d]);
     }
     check_unique_ids(g, rd);
 }
 
-static double coord(const struct rdump *rd, int d, double v)
+/* Coordinate d of the row fv, in box units: scaled coordinates are mapped
+ * through the snapshot's box, with its tilts when triclinic (LAMMPS's
+ * xfield, yfield, zfield, their operation order). */
+static double coord(const struct rdump *rd, int d, const double *fv)
 {
-    return rd->scaled ? v * (rd->box[d][1] - rd->box[d][0]) + rd->box[d][0] : v;
+    double v = fv[rd->xyz_k[d]], lo = rd->box[d][0], len = rd->box[d][1] - lo;
+    if (!rd->scaled)
+        return v;
+    if (!rd->tri_snap)
+        return v * len + lo;
+    int has_z = rd->xyz_k[2] >= 0;
+    if (d == 0) {
+        double x = len * v + rd->tilt[0] * fv[rd->xyz_k[1]];
+        return has_z ? x + rd->tilt[1] * fv[rd->xyz_k[2]] + lo : x + lo;
+    }
+    if (d == 1)
+        return has_z ? len * v + rd->tilt[2] * fv[rd->xyz_k[2]] + lo : len * v + lo;
+    return v * len + lo;
 }
 
 static int by_tag(const void *pa, const void *pb)
@@ -637,7 +675,7 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
             int t = rd->type[k];
             double v = fv[k];
             if (t >= F_X && t <= F_Z)
-                a->x[3 * m + t - F_X] = coord(rd, t - F_X, v);
+                a->x[3 * m + t - F_X] = coord(rd, t - F_X, fv);
             else if (t >= F_VX && t <= F_VZ)
                 a->v[3 * m + t - F_VX] = v;
             else if (t >= F_IX && t <= F_IZ)
@@ -675,7 +713,7 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
             if (t == F_TYPE)
                 type = (int)fv[k];
             else if (t >= F_X && t <= F_Z)
-                x[t - F_X] = coord(rd, t - F_X, fv[k]);
+                x[t - F_X] = coord(rd, t - F_X, fv);
         }
         if (type < 1 || type > a->ntypes)
             gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has type %d outside "
@@ -744,6 +782,15 @@ void rd_atoms(struct gravel *g, struct rdump *rd)
         for (int d = 0; d < (dm->dimension == 3 ? 3 : 2); d++) {
             dm->lo[d] = rd->box[d][0];
             dm->hi[d] = rd->box[d][1];
+        }
+        if (rd->tri_snap) { /* the kinds match (read_header) */
+            dm->xy = rd->tilt[0];
+            if (dm->dimension == 3) {
+                dm->xz = rd->tilt[1];
+                dm->yz = rd->tilt[2];
+            }
+            domain_check_tilt(g);
+            domain_check_skew(g);
         }
         domain_set_initial_box(g);
     }

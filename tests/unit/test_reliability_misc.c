@@ -126,6 +126,54 @@ TEST(read_dump_triclinic_box)
     gr_destroy(g);
 }
 
+/* a triclinic snapshot (gravel's own dump of a prism box): box yes takes its
+ * box and tilts, and the atoms come back where they were (to the round-off
+ * of the remap through lamda coordinates, as LAMMPS's) */
+TEST(read_dump_triclinic_snapshot)
+{
+    const char *prism = "units lj\natom_style sphere\n"
+                        "region p prism 0 10 0 8 0 6 2 -1 1.5\ncreate_box 1 p\n";
+    const char *other = "units lj\natom_style sphere\n"
+                        "region p prism 0 5 0 5 0 5 1 0 0\ncreate_box 1 p\n";
+    struct gravel *g = test_engine();
+    SCRIPT("%screate_atoms 1 single 1 1 1\ncreate_atoms 1 single 9.5 7 5.5\n"
+           "create_atoms 1 single 3 4 2\n"
+           "write_dump all custom %s id type x y z modify format float %%.17g\n"
+           "write_dump all custom %s id type xs ys zs modify format float %%.17g\n",
+           prism, tmp_path("tri_u.dump"), tmp_path("tri_s.dump"));
+    CHECK(test_script(g, script) == GR_OK);
+    double x0[9];
+    memcpy(x0, g->atoms.x, sizeof x0);
+    gr_destroy(g);
+    for (int scaled = 0; scaled < 2; scaled++) {
+        g = test_engine();
+        SCRIPT("%sread_dump %s 0 x y z add keep\n", other,
+               tmp_path(scaled ? "tri_s.dump" : "tri_u.dump"));
+        CHECK(test_script(g, script) == GR_OK);
+        CHECK(g->dom.triclinic && g->dom.xy == 2 && g->dom.xz == -1 && g->dom.yz == 1.5);
+        CHECK(g->dom.lo[0] == 0 && g->dom.hi[0] == 10 && g->dom.hi[1] == 8 &&
+              g->dom.hi[2] == 6);
+        CHECK(g->atoms.n == 3);
+        for (int k = 0; k < 9 && g->atoms.n == 3; k++)
+            CHECK_NEAR(g->atoms.x[k], x0[k], 1e-12);
+        gr_destroy(g);
+    }
+    /* into an orthogonal box: box yes refuses (LAMMPS), box no keeps the box */
+    SCRIPT(BOX "read_dump %s 0 x y z add keep\n", tmp_path("tri_u.dump"));
+    CHECK_ERROR(script, "has a triclinic box but the simulation box is orthogonal", 5);
+    g = test_engine();
+    SCRIPT(BOX "read_dump %s 0 x y z add keep box no\n", tmp_path("tri_u.dump"));
+    CHECK(test_script(g, script) == GR_OK);
+    CHECK(!g->dom.triclinic && g->dom.hi[0] == 10 && g->atoms.n == 3);
+    gr_destroy(g);
+    /* scaled triclinic coordinates need all three columns */
+    g = test_engine();
+    SCRIPT("%sread_dump %s 0 x y add keep\n", other, tmp_path("tri_s.dump"));
+    CHECK(test_script(g, script) == GR_ERR);
+    CHECK(strstr(g->err.msg, "need all of the x, y, z fields") != NULL);
+    gr_destroy(g);
+}
+
 /* rerun: a non-finite position in a later snapshot names the snapshot */
 TEST(rerun_nonfinite)
 {
@@ -302,6 +350,7 @@ int main(void)
     RUN(change_box_limits);
     RUN(read_dump_values);
     RUN(read_dump_triclinic_box);
+    RUN(read_dump_triclinic_snapshot);
     RUN(rerun_nonfinite);
     RUN(group_delete_in_use);
     RUN(renumber_rigid_bodies);
