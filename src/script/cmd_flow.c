@@ -449,8 +449,8 @@ static int if_block_end(int argc, char **argv, int i)
  * (LAMMPS if): the first branch whose condition holds runs its commands, in
  * order, as if they were script lines here (so `jump SELF label` and `quit`
  * work from inside). */
-/* The branch structure, checked before any condition or command runs (as
- * LAMMPS): nothing may follow the 'else' branch but its commands. */
+/* The branch structure, checked before any condition or command runs
+ * (LAMMPS errors on it too): nothing may follow the 'else' branch but its commands. */
 static void if_check_branches(struct gravel *g, int argc, char **argv)
 {
     int seen_else = 0;
