@@ -8,9 +8,11 @@
  * cut-off (rsq >= cutsq). The arithmetic is LAMMPS's, operation for
  * operation, so forces agree to round-off. Energies (pair_energy,
  * kernels/pair_loop.cl) subtract the offset of pair_modify shift yes.
- * Overlapping particles (r <= a2 for COL_SL, r <= a1 + a2 for COL_LL) are an
- * error in LAMMPS; here they give a non-physical or non-finite force, which
- * the run's non-finite check stops. No torque, no history. */
+ * Overlapping particles (r <= a2 for COL_SL, r <= a1 + a2 for COL_LL, inside
+ * the cut-off) are an error in LAMMPS ("Overlapping small/large in pair
+ * colloid"); here their force is NaN, so the run's non-finite check stops
+ * at the next step and names the overlap (pair_caps.nonfinite_cause). No
+ * torque, no history. */
 
 /* x^-7 as LAMMPS's MathSpecial::powint(x, -7): repeated squaring, then 1/y */
 static inline REAL colloid_pow_m7(const REAL x)
@@ -34,6 +36,8 @@ static inline REAL colloid_fpair(const REAL rsq, __global const REAL *p)
     if (form == COL_SL) {
         const REAL c2 = p[COL_A2];
         const REAL k1 = c2 * c2, k2 = rsq, k0 = k1 - rsq, k4 = rsq * rsq;
+        if (rsq <= k1)
+            return (REAL)NAN; /* LAMMPS: Overlapping small/large in pair colloid */
         REAL k3 = k1 - k2;
         k3 *= k3 * k3;
         const REAL k6 = k3 * k3;
@@ -47,6 +51,8 @@ static inline REAL colloid_fpair(const REAL rsq, __global const REAL *p)
     const REAL r = sqrt(rsq);
     const REAL c1 = p[COL_A1], c2 = p[COL_A2];
     const REAL K0 = c1 * c2, K1 = c1 + c2, K2 = c1 - c2;
+    if (r <= K1)
+        return (REAL)NAN; /* LAMMPS: Overlapping large/large in pair colloid */
     const REAL K3 = K1 + r, K4 = K1 - r, K5 = K2 + r, K6 = K2 - r;
     const REAL K7 = (REAL)1.0 / (K3 * K4), K8 = (REAL)1.0 / (K5 * K6);
     REAL g0 = colloid_pow_m7(K3), g1 = colloid_pow_m7(K4);

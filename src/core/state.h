@@ -255,6 +255,8 @@ struct gravel {
     struct restart *restart; /* restart.c; NULL until restart/read_restart */
     uint64_t seed_counter;
     int warned_ignored[16]; /* commands with no meaning here warn once */
+    int in_run_every;       /* > 0 while `run ... every` executes its commands (clear
+                             * refuses: the run goes on with the simulation) */
 };
 
 #endif

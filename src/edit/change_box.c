@@ -16,7 +16,9 @@
  *                         coordinates; the current box is remembered
  * Operations run in order; units lattice (the default) multiplies final and
  * delta values by the lattice spacings (xy, xz by the x spacing, yz by y).
- * Each box change prints the new box.
+ * Each box change prints the new box; as LAMMPS, each is checked as
+ * create_box checks a box (a finite length below 1e19, a triclinic skew of
+ * at most half a box length).
  * Afterwards shrink-wrapped faces are refitted, atoms are wrapped into
  * periodic dimensions, and atoms left outside a fixed face are lost with a
  * warning ("Lost atoms via change_box"). The volume style is not supported
@@ -168,8 +170,14 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
             }
             if (!(lo < hi) || !isfinite(lo) || !isfinite(hi))
                 gr_error(g, "the new %c bounds %g %g are not lo < hi", "xyz"[q], lo, hi);
+            /* the limits of create_box: a length that fits a double */
+            if (!(hi - lo < 1e19) || fabs(lo) >= DOMAIN_BIG || fabs(hi) >= DOMAIN_BIG)
+                gr_error(g, "the new %c bounds %g %g give a box length of %g: too large (the "
+                            "length must be below 1e19, the bounds within +-1e20)",
+                         "xyz"[q], lo, hi, hi - lo);
             d->lo[q] = lo;
             d->hi[q] = hi;
+            domain_check_skew(g);
             domain_print_box(g, "  ");
             break;
         }
@@ -182,6 +190,7 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
             double v = o->v[0] * sc[q == 2 ? 1 : 0];
             *t = o->kind == OP_TILT_FINAL ? v : *t + v;
             domain_check_tilt(g);
+            domain_check_skew(g);
             domain_print_box(g, "  ");
             break;
         }

@@ -49,10 +49,7 @@ void cmd_create_box(struct gravel *g, int argc, char **argv)
         g->dom.xz = r->p[7];
         g->dom.yz = r->p[8];
         domain_check_tilt(g);
-        double lx = g->dom.hi[0] - g->dom.lo[0], ly = g->dom.hi[1] - g->dom.lo[1];
-        if (fabs(g->dom.xy / lx) > 0.5 || fabs(g->dom.xz / lx) > 0.5 || fabs(g->dom.yz / ly) > 0.5)
-            gr_error(g, "triclinic box skew is too large (a tilt beyond half its box length: "
-                        "xy and xz against Lx, yz against Ly)");
+        domain_check_skew(g);
     }
     domain_set_initial_box(g);
     atoms_set_ntypes(g, ntypes);

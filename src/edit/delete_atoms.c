@@ -31,6 +31,7 @@
 #include "command.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "group.h"
 #include "log.h"
 #include "random.h"
@@ -220,6 +221,17 @@ void cmd_delete_atoms(struct gravel *g, int argc, char **argv)
         } else {
             gr_error(g, "unknown keyword '%.32s' (compress, mol, bond)", kw);
         }
+    }
+
+    /* compress renumbers the atoms left: a fix holding atoms by their IDs
+     * (rigid/small) would then hold other atoms (reset_atom_ids refuses the
+     * same, as LAMMPS) */
+    for (int k = 0; compress && k < g->styles.nfix; k++) {
+        const struct fix *f = g->styles.fix[k];
+        if (f->style->flags & FIX_STORES_IDS)
+            gr_error(g, "compress yes would renumber the atoms that fix %s (%s) holds by their "
+                        "IDs: use compress no",
+                     f->id, f->style->name);
     }
 
     /* validate every argument before deleting anything */

@@ -18,8 +18,11 @@
  * lattice spacings. Afterwards every atom is remapped into the periodic box
  * (image flags updated) and shrink-wrapped faces are refitted; an atom left
  * outside a fixed face stays (LAMMPS on one process keeps it; the next run
- * reports it). Prints "Displacing atoms ...". */
+ * reports it). Prints "Displacing atoms ...". A displacement that puts an
+ * atom at a non-finite position (a variable of 1e309, an overflow) is an
+ * error naming the atom, and no atom moves. */
 #include <math.h>
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -149,6 +152,30 @@ static void do_rotate(struct gravel *g, unsigned bit, char **argv, const double 
     }
 }
 
+/* The style's displacement, then a check that every moved atom is at a
+ * finite position (a displacement of 1e309 or an overflow errors). */
+static void displace(struct gravel *g, unsigned bit, const char *style, char **sa,
+                     const double sc[3])
+{
+    if (!strcmp(style, "move"))
+        for (int d = 0; d < 3; d++)
+            move_dim(g, bit, d, sa[d], sc[d]);
+    else if (!strcmp(style, "ramp"))
+        do_ramp(g, bit, sa, sc);
+    else if (!strcmp(style, "random"))
+        do_random(g, bit, sa, sc);
+    else
+        do_rotate(g, bit, sa, sc);
+    const struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++) {
+        const double *x = a->x + 3 * i;
+        if ((a->mask[i] & bit) && !(isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2])))
+            gr_error(g, "%s would put atom %lld at a non-finite position (%g %g %g); no atom "
+                        "was moved",
+                     style, (long long)a->tag[i], x[0], x[1], x[2]);
+    }
+}
+
 void cmd_displace_atoms(struct gravel *g, int argc, char **argv)
 {
     domain_require_box(g);
@@ -176,18 +203,35 @@ void cmd_displace_atoms(struct gravel *g, int argc, char **argv)
     domain_unit_scale(g, lattice, sc);
     gr_print(g, "Displacing atoms ...\n");
     unsigned bit = group_bit(ig);
-    char **sa = argv + 2;
-    if (!strcmp(style, "move"))
-        for (int d = 0; d < 3; d++)
-            move_dim(g, bit, d, sa[d], sc[d]);
-    else if (!strcmp(style, "ramp"))
-        do_ramp(g, bit, sa, sc);
-    else if (!strcmp(style, "random"))
-        do_random(g, bit, sa, sc);
-    else
-        do_rotate(g, bit, sa, sc);
-
     struct atoms *a = &g->atoms;
+    /* the positions before, restored when an argument or a result is bad */
+    size_t nb = (size_t)a->n * 3 + 1;
+    double *x0 = gr_malloc(g, nb * sizeof(double));
+    int *im0 = malloc(nb * sizeof(int));
+    if (!im0) {
+        free(x0);
+        gr_error(g, "out of memory");
+    }
+    memcpy(x0, a->x, (size_t)a->n * 3 * sizeof(double));
+    memcpy(im0, a->image, (size_t)a->n * 3 * sizeof(int));
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        memcpy(a->x, x0, (size_t)a->n * 3 * sizeof(double));
+        memcpy(a->image, im0, (size_t)a->n * 3 * sizeof(int));
+        free(x0);
+        free(im0);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    displace(g, bit, style, argv + 2, sc);
+    g->err.jmp = outer;
+    free(x0);
+    free(im0);
+
     for (int i = 0; i < a->n; i++)
         domain_remap(g, a->x + 3 * i, a->image + 3 * i);
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};

@@ -60,6 +60,11 @@ void cmd_replicate(struct gravel *g, int argc, char **argv)
     for (int d = 0; d < 3; d++) {
         prd[d] = old.hi[d] - old.lo[d];
         nb.hi[d] = old.lo[d] + nrep[d] * prd[d];
+        /* the limits of create_box */
+        if (!(nb.hi[d] - nb.lo[d] < 1e19) || !(fabs(nb.hi[d]) < DOMAIN_BIG))
+            gr_error(g, "replicating %d times in %c makes the box %g to %g, a length of %g: "
+                        "too large (a box length must be below 1e19, its bounds within +-1e20)",
+                     nrep[d], "xyz"[d], nb.lo[d], nb.hi[d], nb.hi[d] - nb.lo[d]);
     }
     *dm = nb;
     domain_set_initial_box(g);

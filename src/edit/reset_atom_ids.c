@@ -10,7 +10,8 @@
  *                      fastest, then z slowest, and inside a bin atoms are
  *                      ordered by x, then y, then z (a stable sort: ties
  *                      keep storage order), as LAMMPS's rendezvous sort.
- * Prints "Resetting atom IDs ...". */
+ * Prints "Resetting atom IDs ...". Refused while a fix holds atoms by their
+ * IDs (FIX_STORES_IDS: fix rigid/small), as LAMMPS. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,7 @@
 #include "command.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "log.h"
 
 struct sortkey {
@@ -98,6 +100,14 @@ void cmd_reset_atom_ids(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s' (sort)", argv[i]);
         arg_need(g, argc, i, 1, argv[i]);
         sort = arg_yesno(g, argv[i + 1], "sort");
+    }
+    /* LAMMPS: "Cannot use reset_atoms id with a fix ... storing atom IDs" */
+    for (int k = 0; k < g->styles.nfix; k++) {
+        const struct fix *f = g->styles.fix[k];
+        if (f->style->flags & FIX_STORES_IDS)
+            gr_error(g, "cannot reset atom IDs while fix %s (%s) holds atoms by their IDs (as "
+                        "LAMMPS; unfix it first)",
+                     f->id, f->style->name);
     }
     gr_print(g, "Resetting atom IDs ...\n");
     struct atoms *a = &g->atoms;

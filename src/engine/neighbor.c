@@ -555,7 +555,11 @@ static void nonfinite_error(struct gravel *g, int i)
     double x[3], v[3];
     atom_state(g, i, &tag, x, v);
     char seen[700], cause[400] = "";
-    if (!diag_nonfinite(g, tag, x, v, seen, sizeof seen))
+    const struct pair *p = g->styles.pair;
+    int explained = diag_nonfinite(g, tag, x, v, seen, sizeof seen);
+    if (p && p->caps.nonfinite_cause)
+        snprintf(cause, sizeof cause, "; %s", p->caps.nonfinite_cause);
+    else if (!explained)
         diag_time_step(g, cause, sizeof cause);
     gr_error(g, "non-finite position or velocity at step %lld: %s%s", (long long)g->step, seen,
              cause);

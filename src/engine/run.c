@@ -651,6 +651,27 @@ void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *
     guarded(g, rerun_body, &r);
 }
 
+/* The commands of `run ... every` as script lines, with g->in_run_every
+ * raised meanwhile (restored on an error too). */
+static int every_commands(struct gravel *g, int ncmd, char **cmds)
+{
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        g->in_run_every--;
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    g->in_run_every++;
+    int rc = inp_run_commands(g, ncmd, cmds);
+    g->in_run_every--;
+    g->err.jmp = outer;
+    return rc;
+}
+
 /* run N [upto] [start N] [stop N] [pre yes|no] [post yes|no]
  *       [every M "cmd" ... | every M NULL]
  * `every` (last, as in LAMMPS) splits the run into runs of M steps (the last
@@ -740,7 +761,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
         bigint chunk = left < nevery ? left : nevery;
         run_guarded(g, chunk, force, post);
         left -= chunk;
-        if (ncmd && inp_run_commands(g, ncmd, cmds) == GR_QUIT)
+        if (ncmd && every_commands(g, ncmd, cmds) == GR_QUIT)
             return;
     }
 }

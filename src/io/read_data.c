@@ -403,6 +403,7 @@ static void read_file(struct rd *r, const double shift[3])
     g->dom.xz = tilt[1];
     g->dom.yz = tilt[2];
     domain_check_tilt(g);
+    domain_check_skew(g);
     domain_set_initial_box(g);
     if (ntypes + r->extra_types > 1000000)
         gr_error(g, "%s: atom types plus extra/atom/types exceed 1000000", r->path);

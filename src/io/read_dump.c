@@ -1,10 +1,14 @@
 /* read_dump.c - `read_dump file Nstep field ... [keyword value ...]` as
  * LAMMPS 2021 (read_dump.cpp, reader_native.cpp), native text dumps, one
- * process, orthogonal boxes:
+ * process, orthogonal or triclinic snapshots (a triclinic header holds the
+ * bounding box and the tilts, as LAMMPS and gravel's dumps write it):
  *   fields   x y z vx vy vz ix iy iz fx fy fz (and id, type; z vz iz fz are
  *            illegal in 2d; q does not exist in atom_style sphere). The last
  *            field may not be id or type (LAMMPS's check).
- *   box yes|no       (yes) take the snapshot's box (z only in 3d)
+ *   box yes|no       (yes) take the snapshot's box and tilts (z, xz, yz only
+ *                    in 3d); the simulation box must be of the same kind
+ *                    (LAMMPS: the triclinic status must match); no keeps
+ *                    the box
  *   replace yes|no   (yes) overwrite matching atoms' fields (never the type)
  *   purge yes|no     (no) delete every atom first (needs replace no, trim no)
  *   trim yes|no      (no) delete atoms the snapshot does not hold
@@ -20,7 +24,10 @@
  * flags. Afterwards every atom is remapped into the periodic box and
  * shrink-wrapped faces refitted. read_dump resets the timestep to Nstep and
  * prints LAMMPS's summary (atoms before read, in snapshot, purged,
- * replaced, trimmed, added, after read). */
+ * replaced, trimmed, added, after read).
+ * Every value is checked as it is read, naming the file, line and step:
+ * IDs exact integers in 1..INT64_MAX - 1, once per snapshot; other fields
+ * finite, types and image flags integers in range; box bounds finite. */
 #include "read_dump.h"
 
 #include <errno.h>
@@ -58,8 +65,15 @@ struct rdump {
     int boxflag, replace, purge, trim, add, scaleflag, wrapflag;
     int scaled, wrapped;
     bigint nsnap;
-    double box[3][2];
-    double *fields;
+    double box[3][2];           /* the snapshot's lo, hi (triclinic: not the bounding box) */
+    int tri_snap;               /* the snapshot's box is triclinic ... */
+    double tilt[3];             /* ... with tilts xy, xz, yz (else 0) */
+    int xyz_k[3];               /* field index of x, y, z in a row (-1: not read) */
+    double *fields;             /* nsnap rows of nfield; column 0 unused (ids) */
+    int64_t *ids;               /* the snapshot's atom IDs, parsed as integers */
+    long lineno;                /* lines read from the current file */
+    long atom_line0;            /* line of the snapshot's first atom */
+    bigint step;                /* timestep of the snapshot at the position */
     bigint cnt[6];
 };
 
@@ -82,6 +96,7 @@ void rd_destroy(struct rdump *rd)
     free(rd->files);
     free(rd->line);
     free(rd->fields);
+    free(rd->ids);
     free(rd);
 }
 
@@ -211,6 +226,7 @@ static int next_line(struct gravel *g, struct rdump *rd, int need)
             gr_error(g, "unexpected end of dump file '%s'", rd->files[rd->curfile]);
         return 0;
     }
+    rd->lineno++;
     return 1;
 }
 
@@ -253,7 +269,7 @@ static int read_time(struct gravel *g, struct rdump *rd, bigint *step)
                     "'%.40s'",
                  rd->files[rd->curfile], rd->line);
     next_line(g, rd, 1);
-    *step = parse_count(g, rd, "a timestep");
+    *step = rd->step = parse_count(g, rd, "a timestep");
     return 0;
 }
 
@@ -274,6 +290,7 @@ static void open_file(struct gravel *g, struct rdump *rd, int k)
         fclose(rd->fp);
     rd->fp = NULL;
     rd->curfile = k;
+    rd->lineno = 0;
     const char *why = NULL;
     rd->fp = fio_open_read(rd->files[k], 0, &why);
     if (!rd->fp)
@@ -351,6 +368,86 @@ bigint rd_next(struct gravel *g, struct rdump *rd, bigint ncurrent, bigint nlast
     return step;
 }
 
+static double coord(const struct rdump *rd, int d, const double *fv);
+
+/* The largest atom ID read: LAMMPS's tag_check refuses IDs >= MAXTAGINT,
+ * so that a new ID (largest + 1) still fits. */
+#define RD_MAXTAG (INT64_MAX - 1)
+
+/* An atom ID word: an integer in 1..RD_MAXTAG, exactly (not through a
+ * double, which rounds IDs beyond 2^53). */
+static int64_t parse_id(struct gravel *g, struct rdump *rd, const char *word)
+{
+    const char *fn = rd->files[rd->curfile];
+    char *end;
+    errno = 0;
+    long long v = strtoll(word, &end, 10);
+    if (end == word || *end)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID '%.32s' is not an integer",
+                 fn, rd->lineno, (long long)rd->step, word);
+    if (errno == ERANGE || v > RD_MAXTAG)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %.32s is too big (at most "
+                    "%lld)",
+                 fn, rd->lineno, (long long)rd->step, word, (long long)RD_MAXTAG);
+    if (v <= 0)
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %.32s is not positive", fn,
+                 rd->lineno, (long long)rd->step, word);
+    return v;
+}
+
+/* A field value of atom `id` on the current line: finite, and a type or
+ * image flag an integer in range. */
+static void check_value(struct gravel *g, struct rdump *rd, int64_t id, int t, double v,
+                        const char *word)
+{
+    const char *fn = rd->files[rd->curfile];
+    if (!isfinite(v))
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has a non-finite %s "
+                    "('%.32s')",
+                 fn, rd->lineno, (long long)rd->step, (long long)id, field_name[t], word);
+    int integral = t == F_TYPE || (t >= F_IX && t <= F_IZ);
+    double lim = t == F_TYPE ? 1e6 : (double)(1 << 20);
+    if (integral && (v != floor(v) || fabs(v) > lim))
+        gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has %s '%.32s' (an "
+                    "integer within +-%g expected)",
+                 fn, rd->lineno, (long long)rd->step, (long long)id, field_name[t], word, lim);
+}
+
+static int cmp_id_line(const void *pa, const void *pb)
+{
+    const int64_t *a = pa, *b = pb;
+    if (a[0] != b[0])
+        return (a[0] > b[0]) - (a[0] < b[0]);
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* Errors if an atom ID appears twice in the snapshot: `add keep` would make
+ * two atoms of one ID (LAMMPS stops later, at its atom map); replace would
+ * apply two lines to one atom. */
+static void check_unique_ids(struct gravel *g, struct rdump *rd)
+{
+    bigint n = rd->nsnap;
+    int64_t *p = malloc(((size_t)n + 1) * 2 * sizeof(int64_t));
+    if (!p)
+        gr_error(g, "out of memory");
+    for (bigint i = 0; i < n; i++) {
+        p[2 * i] = rd->ids[i];
+        p[2 * i + 1] = i;
+    }
+    qsort(p, (size_t)n, 2 * sizeof(int64_t), cmp_id_line);
+    for (bigint i = 1; i < n; i++)
+        if (p[2 * i] == p[2 * i - 2]) {
+            long first = rd->atom_line0 + (long)p[2 * i - 1];
+            long second = rd->atom_line0 + (long)p[2 * i + 1];
+            long long id = p[2 * i];
+            free(p);
+            gr_error(g, "dump file '%s' (step %lld): atom ID %lld appears twice, on lines %ld "
+                        "and %ld",
+                     rd->files[rd->curfile], (long long)rd->step, id, first, second);
+        }
+    free(p);
+}
+
 /* The rest of the header (atoms, box, columns) and the field columns. */
 static void read_header(struct gravel *g, struct rdump *rd)
 {
@@ -363,18 +460,42 @@ static void read_header(struct gravel *g, struct rdump *rd)
         gr_error(g, "dump file '%s' is incorrectly formatted: expected 'ITEM: BOX BOUNDS', got "
                     "'%.40s'",
                  fn, rd->line);
-    if (strstr(rd->line, "xy"))
-        gr_error(g, "dump file '%s' has a triclinic box; gravel boxes are orthogonal", fn);
+    rd->tri_snap = strstr(rd->line, "xy") != NULL;
+    /* LAMMPS: "Read_dump triclinic status does not match simulation" */
+    if (rd->boxflag && rd->tri_snap != g->dom.triclinic)
+        gr_error(g, "dump file '%s' (step %lld) has %s box but the simulation box is %s: box "
+                    "yes needs the same kind of box (as LAMMPS); use box no to keep the "
+                    "current box",
+                 fn, (long long)rd->step, rd->tri_snap ? "a triclinic" : "an orthogonal",
+                 g->dom.triclinic ? "triclinic" : "orthogonal");
     for (int d = 0; d < 3; d++) {
         next_line(g, rd, 1);
-        char *end;
+        char *end, *e2, *e3;
         rd->box[d][0] = strtod(rd->line, &end);
-        char *e2;
         rd->box[d][1] = strtod(end, &e2);
-        if (e2 == end)
+        rd->tilt[d] = rd->tri_snap ? strtod(e2, &e3) : 0.0;
+        if (e2 == end || (rd->tri_snap && e3 == e2))
             gr_error(g, "dump file '%s' is incorrectly formatted: bad box bounds '%.40s'", fn,
                      rd->line);
+        if (!isfinite(rd->tilt[d]))
+            gr_error(g, "dump file '%s' line %ld (step %lld): the %s tilt %g is not finite", fn,
+                     rd->lineno, (long long)rd->step, d == 0 ? "xy" : d == 1 ? "xz" : "yz",
+                     rd->tilt[d]);
     }
+    if (rd->tri_snap) { /* the lines hold the bounding box (LAMMPS's ReadDump::header) */
+        double xy = rd->tilt[0], xz = rd->tilt[1], yz = rd->tilt[2];
+        rd->box[0][0] -= fmin(fmin(0.0, xy), fmin(xz, xy + xz));
+        rd->box[0][1] -= fmax(fmax(0.0, xy), fmax(xz, xy + xz));
+        rd->box[1][0] -= fmin(0.0, yz);
+        rd->box[1][1] -= fmax(0.0, yz);
+    }
+    for (int d = 0; d < 3; d++)
+        if (!isfinite(rd->box[d][0]) || !isfinite(rd->box[d][1]) ||
+            !(rd->box[d][0] < rd->box[d][1]) ||
+            !isfinite(rd->box[d][1] - rd->box[d][0]))
+            gr_error(g, "dump file '%s' (step %lld): the %c box bounds %g %g are not finite "
+                        "with lo < hi",
+                     fn, (long long)rd->step, "xyz"[d], rd->box[d][0], rd->box[d][1]);
     next_line(g, rd, 1);
     if (!starts(rd->line, "ITEM: ATOMS"))
         gr_error(g, "dump file '%s' is incorrectly formatted: expected 'ITEM: ATOMS', got "
@@ -433,15 +554,29 @@ static void read_header(struct gravel *g, struct rdump *rd)
                      fn);
     rd->scaled = value == SCALE_NOWRAP || value == SCALE_WRAP;
     rd->wrapped = value == NOSCALE_WRAP || value == SCALE_WRAP;
+    for (int d = 0; d < 3; d++)
+        rd->xyz_k[d] = -1;
+    for (int k = 0; k < rd->nfield; k++)
+        if (rd->type[k] >= F_X && rd->type[k] <= F_Z)
+            rd->xyz_k[rd->type[k] - F_X] = k;
+    if (rd->scaled && rd->tri_snap &&
+        (rd->xyz_k[0] < 0 || rd->xyz_k[1] < 0 || (g->dom.dimension == 3 && rd->xyz_k[2] < 0)))
+        gr_error(g, "dump file '%s': scaled coordinates of a triclinic snapshot need all of the "
+                    "x, y, z fields (as LAMMPS)",
+                 fn);
     /* the atoms */
     free(rd->fields);
+    free(rd->ids);
     rd->fields = NULL;
+    rd->ids = NULL;
     if (rd->nsnap > 200000000)
         gr_error(g, "dump file '%s': snapshot of %lld atoms is too large", fn,
                  (long long)rd->nsnap);
     rd->fields = malloc(((size_t)rd->nsnap + 1) * (size_t)rd->nfield * sizeof(double));
-    if (!rd->fields)
+    rd->ids = malloc(((size_t)rd->nsnap + 1) * sizeof(int64_t));
+    if (!rd->fields || !rd->ids)
         gr_error(g, "out of memory");
+    rd->atom_line0 = rd->lineno + 1;
     for (bigint i = 0; i < rd->nsnap; i++) {
         next_line(g, rd, 1);
         char *w[256];
@@ -449,22 +584,47 @@ static void read_header(struct gravel *g, struct rdump *rd)
         for (char *t = strtok(rd->line, " \t"); t && n < 256; t = strtok(NULL, " \t"))
             w[n++] = t;
         if (n < nw)
-            gr_error(g, "dump file '%s': insufficient columns in an atom line (%d of %d)", fn, n,
-                     nw);
-        for (int k = 0; k < rd->nfield; k++) {
+            gr_error(g, "dump file '%s' line %ld: insufficient columns in an atom line (%d of "
+                        "%d)",
+                     fn, rd->lineno, n, nw);
+        rd->ids[i] = parse_id(g, rd, w[rd->index[0]]);
+        for (int k = 1; k < rd->nfield; k++) {
             char *end;
-            double v = strtod(w[rd->index[k]], &end);
-            if (end == w[rd->index[k]] || *end)
-                gr_error(g, "dump file '%s': bad number '%.32s' in column %s", fn,
-                         w[rd->index[k]], lab[rd->index[k]]);
+            const char *word = w[rd->index[k]];
+            double v = strtod(word, &end);
+            if (end == word || *end)
+                gr_error(g, "dump file '%s' line %ld: bad number '%.32s' in column %s", fn,
+                         rd->lineno, word, lab[rd->index[k]]);
+            check_value(g, rd, rd->ids[i], rd->type[k], v, word);
             rd->fields[(size_t)i * rd->nfield + k] = v;
         }
+        for (int d = 0; d < 3; d++)
+            if (rd->xyz_k[d] >= 0 && !isfinite(coord(rd, d, rd->fields + (size_t)i * rd->nfield)))
+                gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld: the scaled "
+                            "coordinates give a non-finite %c",
+                         fn, rd->lineno, (long long)rd->step, (long long)rd->ids[i], "xyz"[d]);
     }
+    check_unique_ids(g, rd);
 }
 
-static double coord(const struct rdump *rd, int d, double v)
+/* Coordinate d of the row fv, in box units: scaled coordinates are mapped
+ * through the snapshot's box, with its tilts when triclinic (LAMMPS's
+ * xfield, yfield, zfield, their operation order). */
+static double coord(const struct rdump *rd, int d, const double *fv)
 {
-    return rd->scaled ? v * (rd->box[d][1] - rd->box[d][0]) + rd->box[d][0] : v;
+    double v = fv[rd->xyz_k[d]], lo = rd->box[d][0], len = rd->box[d][1] - lo;
+    if (!rd->scaled)
+        return v;
+    if (!rd->tri_snap)
+        return v * len + lo;
+    int has_z = rd->xyz_k[2] >= 0;
+    if (d == 0) {
+        double x = len * v + rd->tilt[0] * fv[rd->xyz_k[1]];
+        return has_z ? x + rd->tilt[1] * fv[rd->xyz_k[2]] + lo : x + lo;
+    }
+    if (d == 1)
+        return has_z ? len * v + rd->tilt[2] * fv[rd->xyz_k[2]] + lo : len * v + lo;
+    return v * len + lo;
 }
 
 static int by_tag(const void *pa, const void *pb)
@@ -502,7 +662,7 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
     for (bigint i = 0; i < rd->nsnap; i++) {
         const double *fv = rd->fields + (size_t)i * nf;
         isnew[i] = 1;
-        int m = find_tag(map, nlocal, (int64_t)fv[0]);
+        int m = find_tag(map, nlocal, rd->ids[i]);
         if (m < 0)
             continue;
         upd[m] = 1;
@@ -515,7 +675,7 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
             int t = rd->type[k];
             double v = fv[k];
             if (t >= F_X && t <= F_Z)
-                a->x[3 * m + t - F_X] = coord(rd, t - F_X, v);
+                a->x[3 * m + t - F_X] = coord(rd, t - F_X, fv);
             else if (t >= F_VX && t <= F_VZ)
                 a->v[3 * m + t - F_VX] = v;
             else if (t >= F_IX && t <= F_IZ)
@@ -553,14 +713,17 @@ static void process_atoms(struct gravel *g, struct rdump *rd, int64_t *map, char
             if (t == F_TYPE)
                 type = (int)fv[k];
             else if (t >= F_X && t <= F_Z)
-                x[t - F_X] = coord(rd, t - F_X, fv[k]);
+                x[t - F_X] = coord(rd, t - F_X, fv);
         }
         if (type < 1 || type > a->ntypes)
-            gr_error(g, "dump atom %lld has type %d outside 1..%d", (long long)fv[0], type,
-                     a->ntypes);
-        int64_t tag = rd->add == KEEPADD ? (int64_t)fv[0] : ++maxtag;
-        if (tag <= 0)
-            gr_error(g, "dump atom ID %lld is not positive", (long long)fv[0]);
+            gr_error(g, "dump file '%s' line %ld (step %lld): atom ID %lld has type %d outside "
+                        "1..%d",
+                     rd->files[rd->curfile], rd->atom_line0 + (long)i, (long long)rd->step,
+                     (long long)rd->ids[i], type, a->ntypes);
+        if (rd->add == YESADD && maxtag >= RD_MAXTAG)
+            gr_error(g, "add yes: a new atom ID after %lld would be too big (at most %lld)",
+                     (long long)maxtag, (long long)RD_MAXTAG);
+        int64_t tag = rd->add == KEEPADD ? rd->ids[i] : ++maxtag;
         int m = atoms_add(g, tag, type, x, 0.5, 4.0 * M_PI / 3.0 * 0.125);
         rd->cnt[5]++;
         for (int k = 1; k < nf; k++) {
@@ -620,6 +783,15 @@ void rd_atoms(struct gravel *g, struct rdump *rd)
             dm->lo[d] = rd->box[d][0];
             dm->hi[d] = rd->box[d][1];
         }
+        if (rd->tri_snap) { /* the kinds match (read_header) */
+            dm->xy = rd->tilt[0];
+            if (dm->dimension == 3) {
+                dm->xz = rd->tilt[1];
+                dm->yz = rd->tilt[2];
+            }
+            domain_check_tilt(g);
+            domain_check_skew(g);
+        }
         domain_set_initial_box(g);
     }
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
@@ -666,9 +838,7 @@ void cmd_read_dump(struct gravel *g, int argc, char **argv)
     bigint c[6];
     rd_counts(rd, c);
     rd_destroy(rd);
-    const struct domain *dm = &g->dom;
-    gr_print(g, "  orthogonal box = (%.8g %.8g %.8g) to (%.8g %.8g %.8g)\n", dm->lo[0], dm->lo[1],
-             dm->lo[2], dm->hi[0], dm->hi[1], dm->hi[2]);
+    domain_print_box(g, "  ");
     static const char *what[] = {"before read", "in snapshot", "purged",
                                  "replaced",    "trimmed",     "added"};
     for (int k = 0; k < 6; k++)

@@ -136,6 +136,9 @@ void cmd_echo(struct gravel *g, int argc, char **argv)
 void cmd_clear(struct gravel *g, int argc, char **argv)
 {
     (void)argc; (void)argv;
+    if (g->in_run_every)
+        gr_error(g, "cannot be used in the commands of 'run ... every': the run continues "
+                    "with the simulation that clear would delete");
     gr_clear(g);
 }
 
@@ -446,11 +449,30 @@ static int if_block_end(int argc, char **argv, int i)
  * (LAMMPS if): the first branch whose condition holds runs its commands, in
  * order, as if they were script lines here (so `jump SELF label` and `quit`
  * work from inside). */
+/* The branch structure, checked before any condition or command runs
+ * (LAMMPS errors on it too): nothing may follow the 'else' branch but its commands. */
+static void if_check_branches(struct gravel *g, int argc, char **argv)
+{
+    int seen_else = 0;
+    for (int i = 2; i < argc; i++) {
+        if (strcmp(argv[i], "elif") && strcmp(argv[i], "else"))
+            continue;
+        if (seen_else)
+            gr_error(g, "'%s' after 'else' (argument %d): 'else' must be the last branch",
+                     argv[i], i + 1);
+        if (!strcmp(argv[i], "else"))
+            seen_else = 1;
+        else
+            i++; /* the elif condition */
+    }
+}
+
 void cmd_if(struct gravel *g, int argc, char **argv)
 {
     if (strcmp(argv[1], "then") != 0)
         gr_error(g, "expected: if \"condition\" then \"command\" ..., got '%.64s' after the "
                     "condition", argv[1]);
+    if_check_branches(g, argc, argv);
     int first = 2, end = if_block_end(argc, argv, first);
     if (end == first)
         gr_error(g, "if: no command after 'then'");

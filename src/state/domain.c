@@ -58,8 +58,8 @@ void domain_set_initial_box(struct gravel *g)
             gr_error(g, "box bounds in %c must satisfy lo < hi, got %g %g", dimname[d],
                      dm->lo[d], dm->hi[d]);
         if (fabs(dm->lo[d]) >= DOMAIN_BIG || fabs(dm->hi[d]) >= DOMAIN_BIG)
-            gr_error(g, "box bounds in %c must be finite, got %g %g", dimname[d], dm->lo[d],
-                     dm->hi[d]);
+            gr_error(g, "box bounds in %c must lie within +-1e20, got %g %g", dimname[d],
+                     dm->lo[d], dm->hi[d]);
         dm->small[d] = DOMAIN_SMALL * (dm->hi[d] - dm->lo[d]);
     }
     for (int d = 0; d < 3; d++) {
@@ -166,6 +166,21 @@ void domain_check_tilt(struct gravel *g)
                     "periodic, xz and yz need z periodic)");
     if (dm->dimension == 2 && (dm->xz != 0.0 || dm->yz != 0.0))
         gr_error(g, "cannot skew a 2d box in z (xz and yz must be 0)");
+}
+
+void domain_check_skew(struct gravel *g)
+{
+    const struct domain *dm = &g->dom;
+    if (!dm->triclinic)
+        return;
+    double lx = dm->hi[0] - dm->lo[0], ly = dm->hi[1] - dm->lo[1];
+    /* written so that a NaN ratio fails too */
+    if (!(fabs(dm->xy / lx) <= 0.5) || !(fabs(dm->xz / lx) <= 0.5) ||
+        !(fabs(dm->yz / ly) <= 0.5))
+        gr_error(g, "triclinic box skew is too large: tilts xy %g xz %g yz %g with box lengths "
+                    "Lx %g Ly %g (a tilt may be at most half its box length: xy and xz against "
+                    "Lx, yz against Ly)",
+                 dm->xy, dm->xz, dm->yz, lx, ly);
 }
 
 void domain_ufac(const struct domain *d, double f[3])

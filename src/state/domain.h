@@ -52,6 +52,11 @@ void domain_lamda2x(const struct gravel *g, const double lam[3], double x[3]);
 /* Errors for tilts that LAMMPS refuses: a non-zero tilt along a non-periodic
  * dimension (xy needs y periodic, xz and yz z periodic), z tilts in 2d. */
 void domain_check_tilt(struct gravel *g);
+/* Errors for a triclinic box skewed beyond half a box length, LAMMPS's
+ * "Triclinic box skew is too large" of Domain::set_initial_box (|xy| and
+ * |xz| at most Lx / 2, |yz| at most Ly / 2): create_box, read_data and
+ * change_box. fix deform is exempt (it flips the box, as LAMMPS). */
+void domain_check_skew(struct gravel *g);
 /* Per dimension, how much wider than a separation's length its component of
  * u = L lamda can be: f_q = |row q of L h^-1| (1 when orthogonal). Cells of
  * u hold every partner within cut in the neighboring cells when they are

@@ -14,9 +14,12 @@
 #include <gsl/gsl_eigen.h>
 
 #include "args.h"
+#include "compute.h"
 #include "domain.h"
+#include "dump.h"
 #include "engine.h"
 #include "error.h"
+#include "fix.h"
 #include "log.h"
 #include "region.h"
 #include "device.h"
@@ -374,6 +377,35 @@ static void define_dynamic(struct gravel *g, const char *id, int nrest, char **r
     gr_print(g, "dynamic group %s defined\n", id);
 }
 
+/* Errors if something holds group ig by its index, which a later group
+ * would inherit (LAMMPS Group::assign: "Cannot delete group currently used
+ * by a fix", ... a compute, a dump; a dynamic group is a fix on its parent
+ * in LAMMPS). */
+static void refuse_delete_in_use(struct gravel *g, int ig)
+{
+    const char *id = g->groups.name[ig];
+    for (int k = 0; k < g->neigh.nexclude; k++)
+        if (g->neigh.exclude_group[k][0] == ig || g->neigh.exclude_group[k][1] == ig)
+            gr_error(g, "group '%s' is used by neigh_modify exclude and cannot be deleted", id);
+    for (int k = 1; k < g->groups.n; k++)
+        if (g->groups.used[k] && g->groups.dyn[k].on && g->groups.dyn[k].parent == ig)
+            gr_error(g, "group '%s' is the parent of dynamic group '%s' and cannot be deleted "
+                        "(delete '%s' or make it static first)",
+                     id, g->groups.name[k], g->groups.name[k]);
+    for (int k = 0; k < g->styles.nfix; k++)
+        if (g->styles.fix[k]->igroup == ig)
+            gr_error(g, "group '%s' is used by fix %s and cannot be deleted", id,
+                     g->styles.fix[k]->id);
+    for (int k = 0; k < g->styles.ncompute; k++)
+        if (g->styles.compute[k]->igroup == ig)
+            gr_error(g, "group '%s' is used by compute %s and cannot be deleted", id,
+                     g->styles.compute[k]->id);
+    for (int k = 0; k < g->styles.ndump; k++)
+        if (g->styles.dump[k]->igroup == ig)
+            gr_error(g, "group '%s' is used by dump %s and cannot be deleted", id,
+                     g->styles.dump[k]->id);
+}
+
 void cmd_group(struct gravel *g, int argc, char **argv)
 {
     const char *id = argv[0], *style = argv[1];
@@ -386,10 +418,7 @@ void cmd_group(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown group '%.64s'", id);
         if (ig == 0)
             gr_error(g, "group 'all' cannot be deleted");
-        for (int k = 0; k < g->neigh.nexclude; k++)
-            if (g->neigh.exclude_group[k][0] == ig || g->neigh.exclude_group[k][1] == ig)
-                gr_error(g, "group '%s' is used by neigh_modify exclude and cannot be deleted",
-                         id);
+        refuse_delete_in_use(g, ig);
         unsigned keep = ~group_bit(ig);
         for (int i = 0; i < a->n; i++)
             a->mask[i] &= keep;

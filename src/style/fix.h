@@ -81,10 +81,14 @@ enum fix_need {
  *                    first such fix's group (fix_frozen_groupbit).
  *   FIX_CONSERVING   it only integrates or holds atoms (nve, nve/sphere,
  *                    freeze): no work on the system, so a scene of such fixes
- *                    and a conservative pair law reports its energy drift. */
+ *                    and a conservative pair law reports its energy drift.
+ *   FIX_STORES_IDS   it holds atoms by their IDs (fix rigid/small's bodies):
+ *                    commands that renumber atoms refuse while it exists
+ *                    (LAMMPS's Fix::stores_ids). */
 enum fix_flag {
     FIX_FROZEN = 1 << 0,
     FIX_CONSERVING = 1 << 1,
+    FIX_STORES_IDS = 1 << 2,
 };
 
 #define FIX_MAX_SOURCES 8

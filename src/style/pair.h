@@ -113,6 +113,10 @@ struct pair_caps {
                                  * no friction or damping): the footer reports the drift */
     const struct pair *energy_of; /* elastic energy of a contact of overlap delta > 0 */
     double (*contact_energy)(const struct pair *p, double delta, double reff);
+    /* why this law's forces turn non-finite, named by a run that stops on a
+     * non-finite atom (pair colloid: its overlap stop); NULL: the generic
+     * diagnosis (diagnose.h) */
+    const char *nonfinite_cause;
 };
 
 /* A style's descriptor: lifecycle hooks plus ONE description call. */

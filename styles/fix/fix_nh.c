@@ -8,9 +8,10 @@
  * Pdamp; couple none|xyz|xy|yz|xz; tchain N (3); pchain N (3); mtk yes|no
  * (yes); tloop M (1); ploop M (1); nreset N (0); drag f (0); dilate all |
  * partial | group-ID (all); fixedpoint x y z (box centre at the fix
- * command); disc (/sphere, 2d: inertia 0.5 instead of 0.4). Triclinic
- * components (tri, xy, xz, yz, scale*, flip) are refused: boxes are
- * orthogonal. nvt needs temp and no pressure, nph a pressure and no temp,
+ * command); disc (/sphere, 2d: inertia 0.5 instead of 0.4). Tilt and
+ * off-diagonal components (tri, xy, xz, yz, scale*, flip) are refused: the
+ * barostat controls the box lengths only (a triclinic box keeps its tilts,
+ * doc/styles/fix_nh.md). nvt needs temp and no pressure, nph a pressure and no temp,
  * npt both.
  *
  * Temperature: the fix's own, as LAMMPS's fix-ID_temp: compute temp (point
@@ -198,8 +199,10 @@ void fix_nh_create(struct gravel *g, struct fix *f, int argc, char **argv)
         } else if (!strcmp(k, "tri") || !strcmp(k, "xy") || !strcmp(k, "xz") ||
                    !strcmp(k, "yz") || !strcmp(k, "scalexy") || !strcmp(k, "scalexz") ||
                    !strcmp(k, "scaleyz") || !strcmp(k, "flip")) {
-            gr_error(g, "fix %s: keyword '%s' needs a triclinic box, which gravel does not "
-                        "support", name, k);
+            gr_error(g, "fix %s: keyword '%s' (a tilt factor or off-diagonal stress) is not "
+                        "supported: gravel's barostat controls the box lengths only (iso, "
+                        "aniso, x, y, z)",
+                     name, k);
         } else if (!strcmp(k, "update") || !strcmp(k, "ptemp")) {
             gr_error(g, "fix %s: keyword '%s' is not supported", name, k);
         } else {

@@ -903,6 +903,7 @@ static void destroy(struct fix *f)
 
 const struct fix_style fix_style_rigid_small = {
     .name = "rigid/small",
+    .flags = FIX_STORES_IDS,
     .create = create,
     .init = init,
     .setup = setup,

@@ -231,6 +231,10 @@ static void describe(const struct pair *p, struct pair_caps *c)
     c->beyond = 1;
     c->cut_of = p;
     c->type_cut = type_cut;
+    c->nonfinite_cause = "pair colloid stops on overlapping particles (LAMMPS: \"Overlapping "
+                         "small/large in pair colloid\", \"Overlapping large/large in pair "
+                         "colloid\"): a point particle came within a colloid's radius or two "
+                         "colloids touched, and the force there is undefined";
 }
 
 const struct pair_style pair_style_colloid = {

@@ -75,7 +75,7 @@ BAD = [
     ("", "-1 1", "fix 1 all nvt temp 1 1 1 iso 1 1 1", "pressure control can not be used"),
     ("dimension 2\n", "-0.5 0.5", "fix 1 all nph z 1 1 1", "z is invalid for a 2d"),
     ("boundary p p f\n", "-1 1", "fix 1 all nph iso 1 1 1", "non-periodic dimension (z)"),
-    ("", "-1 1", "fix 1 all npt temp 1 1 1 tri 1 1 1", "needs a triclinic box"),
+    ("", "-1 1", "fix 1 all npt temp 1 1 1 tri 1 1 1", "controls the box lengths only"),
     ("", "-1 1", "fix 1 all nvt temp 1 1 1 disc", "keyword of the /sphere styles"),
     ("", "-1 1", "fix 1 all nvt/sphere temp 1 1 1 disc", "requires a 2d simulation"),
     ("", "-1 1", "fix 1 all nvt temp 1 1 1 tchain 0", "tchain must be 1 to"),

@@ -126,6 +126,30 @@ IN
 "$bin" -in in.vel -log none > out 2>&1; rc=$?
 check absurd_velocity '[ $rc -eq 1 ] && grep -q "ERROR: run: Lost atoms: .* atom 2 at (1e+297, 1e+297, 2) with velocity (1e+300, 1e+300, 0) moved more than a box length through the periodic x boundaries in one step; its speed 1.414e+300 moves it 1.414e+297 per step (1e+296 box lengths in x); the time step 0.001 resolves the estimated collision time .* (37.5 steps per collision), so look at the configuration.*(in.vel:15)$" out && ! grep -q "probable cause" out'
 
+# issue 24: overlapping colloids stop the run at the step, as LAMMPS's pair colloid
+cat > in.colloid <<'IN'
+units lj
+atom_style sphere
+boundary f f f
+region box block -40 40 -40 40 -40 40
+create_box 1 box
+create_atoms 1 single 0 0 0 units box
+create_atoms 1 single 8 0 0 units box
+pair_style colloid 30.0
+pair_coeff 1 1 39.5 1.0 10.0 10.0
+set type 1 mass 400.0
+fix 1 all nve
+run 10
+IN
+"$bin" -in in.colloid -log none > out 2>&1; rc=$?
+check colloid_overlap_stops '[ $rc -eq 1 ] && grep -q "ERROR: run: non-finite position or velocity at step 1: .*pair colloid stops on overlapping particles (LAMMPS: .Overlapping small/large in pair colloid., .Overlapping large/large in pair colloid.).*(in.colloid:12)$" out'
+
+# issue 24: a NaN coordinate in a dump names the atom, the dump line and its step
+printf 'ITEM: TIMESTEP\n5\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\nITEM: ATOMS id type x y z\n1 1 1 1 1\n2 1 nan 2 2\n' > nan.dump
+printf 'units lj\natom_style sphere\nregion b block 0 10 0 10 0 10\ncreate_box 1 b\nread_dump nan.dump 5 x y z add keep\n' > in.nandump
+"$bin" -in in.nandump -log none > out 2>&1; rc=$?
+check read_dump_nan_named '[ $rc -eq 1 ] && grep -q "^ERROR: read_dump: dump file .nan.dump. line 11 (step 5): atom ID 2 has a non-finite x (.nan.) (in.nandump:5)$" out'
+
 # memory pressure (issue 12 item 6): under an address-space limit the run stops cleanly, before
 # the OpenCL runtime would abort, with the bytes it needed and the bytes the limit leaves
 deck="$root/inputs/bench/dense.in"
