@@ -159,9 +159,10 @@ static int open_waiting(const char *path, int flags)
     }
 }
 
-int of_open_fd(const char *path, int append)
+/* of_open_fd on a path without symlinks in its last component. */
+static int open_fd_final(const char *path, int append)
 {
-    int fl = O_WRONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK | (append ? O_APPEND : 0);
+    int fl = O_WRONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK | O_NOFOLLOW | (append ? O_APPEND : 0);
     int fd = -1;
     for (int tries = 0; fd < 0 && tries < 3; tries++) {
         /* an existing file of any kind is opened as it is; only a missing
@@ -183,6 +184,22 @@ int of_open_fd(const char *path, int append)
         errno = e;
         return -1;
     }
+    return fd;
+}
+
+int of_open_fd(const char *path, int append)
+{
+    char *final;
+    int through;
+    int e = of_resolve(path, &final, &through);
+    if (e) {
+        errno = e;
+        return -1;
+    }
+    int fd = open_fd_final(final, append);
+    e = errno;
+    free(final);
+    errno = e;
     return fd;
 }
 
@@ -302,7 +319,7 @@ int of_open(struct ofile *o, const char *path, const char *suffix, enum of_mode 
             return open_failed(o, o->final, e);
         }
     }
-    if (through && (fd = of_open_fd(o->final, mode == OF_CONTINUE)) < 0)
+    if (through && (fd = open_fd_final(o->final, mode == OF_CONTINUE)) < 0)
         return open_failed(o, o->final, errno);
     o->fp = of_stream(fd, &o->err); /* closes fd on failure */
     if (!o->fp) {

@@ -69,7 +69,7 @@ void of_abort(struct ofile *o);
 int of_through(const struct ofile *o);
 
 /* Open `path` for writing in place (logs, print and fix ave files):
- * symlinks followed by open(2), only regular files created, a FIFO waited
+ * symlinks resolved by of_resolve, only regular files created, a FIFO waited
  * for as above. `append`: O_APPEND, else truncated. A descriptor or -1 with
  * errno set. */
 int of_open_fd(const char *path, int append);

@@ -22,6 +22,7 @@
  * (Nrepeat of them ending on a multiple of Nfreq), and at a run's setup
  * when that step is due, as LAMMPS; host arrays are synchronized first.
  * Sums run over the atoms in host order (deterministic). */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -469,7 +470,8 @@ static void sample(struct gravel *g, struct fix *f)
                 gr_warn(g, "fix ave/chunk %s: could not truncate its file", f->id);
         }
         if (ferror(a->fp))
-            gr_error(g, "fix ave/chunk %s: writing its file failed", f->id);
+            gr_error(g, "fix ave/chunk %s: writing its file failed: %s", f->id,
+                     strerror(a->fp_err ? a->fp_err : EIO));
     }
     if (a->vtk)
         write_vtk(g, f, a);
@@ -535,7 +537,8 @@ static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a)
     }
     int ok = !ferror(fp);
     if (fclose(fp) != 0 || !ok || err)
-        gr_error(g, "fix ave/chunk %s: writing %.200s failed", f->id, path);
+        gr_error(g, "fix ave/chunk %s: writing %.200s failed: %s", f->id, path,
+                 strerror(err ? err : EIO));
 }
 
 static void ave_init(struct gravel *g, struct fix *f)
