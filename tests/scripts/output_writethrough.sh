@@ -178,3 +178,10 @@ start=$(date +%s)
 secs=$(( $(date +%s) - start ))
 report fifo_without_reader '[ $rc -eq 1 ] && [ -p fifo/noreader ] && [ $secs -lt 30 ] &&
     grep -q "^ERROR: write_data: cannot write data file .fifo/noreader.: No such device or address (in.noreader:$((nbase + 1)))$" out.noreader' out.noreader
+
+# ---- write_coeff checks the coefficients as run does ------------------------------
+grep -v '^pair_coeff' base.in > in.nocoeff
+printf 'write_coeff coeff.txt\n' >> in.nocoeff
+"$bin" -in in.nocoeff -log none > out.nocoeff 2>&1; rc=$?
+report write_coeff_before_pair_coeff '[ $rc -eq 1 ] && [ ! -e coeff.txt ] &&
+    grep -q "^ERROR: write_coeff: all pair coeffs are not set (pair_coeff \* \* is missing for pair style gran/hooke) (in.nocoeff:$nbase)$" out.nocoeff' out.nocoeff
