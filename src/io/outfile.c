@@ -109,6 +109,16 @@ static ssize_t sink_write(void *cookie, const char *buf, size_t n)
     return (ssize_t)n;
 }
 
+static int sink_seek(void *cookie, off64_t *pos, int whence)
+{
+    struct sink *k = cookie;
+    off_t r = lseek(k->fd, (off_t)*pos, whence);
+    if (r < 0)
+        return -1;
+    *pos = (off64_t)r;
+    return 0;
+}
+
 static int sink_close(void *cookie)
 {
     struct sink *k = cookie;
@@ -130,7 +140,7 @@ FILE *of_stream(int fd, int *errp)
     }
     k->fd = fd;
     k->errp = errp;
-    cookie_io_functions_t io = {NULL, sink_write, NULL, sink_close};
+    cookie_io_functions_t io = {NULL, sink_write, sink_seek, sink_close};
     FILE *fp = fopencookie(k, "w", io);
     if (!fp) {
         int e = errno;

@@ -73,8 +73,9 @@ int of_through(const struct ofile *o);
  * for as above. `append`: O_APPEND, else truncated. A descriptor or -1 with
  * errno set. */
 int of_open_fd(const char *path, int append);
-/* A stdio stream over descriptor fd (taken over) that stores the errno of
- * its first failed write in *errp; NULL with errno set (fd closed). */
+/* A stdio stream over descriptor fd (taken over: closing the stream closes
+ * it) that stores the errno of its first failed write in *errp and seeks
+ * where fd can; NULL with errno set (fd closed). */
 FILE *of_stream(int fd, int *errp);
 
 #endif

@@ -36,6 +36,7 @@
 #include "expr.h"
 #include "fileio.h"
 #include "fix.h"
+#include "outfile.h"
 #include "variable.h"
 
 enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };
@@ -54,6 +55,7 @@ struct ave_chunk {
     int normflag, ave, nwindow, noscale;
     FILE *fp;
     int fp_err;
+    int fd;       /* the descriptor under fp (overwrite truncates it) */
     long filepos;
     int overwrite;
     char *format;
@@ -234,10 +236,10 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (a->ave != AVE_RUNNING && a->overwrite)
         gr_error(g, "fix ave/chunk: overwrite needs ave running");
     if (file) {
-        const char *why = NULL;
-        a->fp = fio_open_write_checked(file, append, &a->fp_err, &why);
+        a->fd = of_open_fd(file, append);
+        a->fp = a->fd < 0 ? NULL : of_stream(a->fd, &a->fp_err);
         if (!a->fp)
-            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, why);
+            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, strerror(errno));
         if (title[0])
             fprintf(a->fp, "%s\n", title[0]);
         else
@@ -466,7 +468,7 @@ static void sample(struct gravel *g, struct fix *f)
         fflush(a->fp);
         if (a->overwrite) {
             long end = ftell(a->fp);
-            if (ftruncate(fileno(a->fp), end) != 0)
+            if (end >= 0 && ftruncate(a->fd, end) != 0)
                 gr_warn(g, "fix ave/chunk %s: could not truncate its file", f->id);
         }
         if (ferror(a->fp))

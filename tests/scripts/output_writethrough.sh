@@ -185,3 +185,9 @@ printf 'write_coeff coeff.txt\n' >> in.nocoeff
 "$bin" -in in.nocoeff -log none > out.nocoeff 2>&1; rc=$?
 report write_coeff_before_pair_coeff '[ $rc -eq 1 ] && [ ! -e coeff.txt ] &&
     grep -q "^ERROR: write_coeff: all pair coeffs are not set (pair_coeff \* \* is missing for pair style gran/hooke) (in.nocoeff:$nbase)$" out.nocoeff' out.nocoeff
+
+# ---- fix ave/chunk overwrite: the file holds the latest block only ------------------
+{ cat base.in; printf 'compute cc all chunk/atom bin/1d z lower 1\nfix a all ave/chunk 1 1 1 cc density/number ave running overwrite file over.txt\nrun 3\n'; } > in.over
+"$bin" -in in.over -log none > out.over 2>&1; rc=$?
+report ave_chunk_overwrite '[ $rc -eq 0 ] && ! grep -q WARNING out.over &&
+    [ "$(grep -c "^[0-9]" over.txt)" -eq 1 ] && grep -q "^3 8 [0-9]*$" over.txt' out.over
