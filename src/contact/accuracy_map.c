@@ -287,8 +287,8 @@ void accuracy_map(struct gravel *g)
     if (!have_gnuplot())
         return;
     int werr;
-    const char *why;
-    FILE *f = fio_open_write_checked("accuracy_map.dat", 0, &werr, &why);
+    const char *nowhy;
+    FILE *f = fio_open_write_checked("accuracy_map.dat", 0, &werr, &nowhy);
     if (!f)
         return;
     fputs(dat, f);
