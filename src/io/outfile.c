@@ -301,6 +301,8 @@ int of_open(struct ofile *o, const char *path, const char *suffix, enum of_mode 
 {
     memset(o, 0, sizeof *o);
     o->fd = -1;
+    if (!*path)
+        return open_failed(o, path, ENOENT); /* never a bare "<suffix>" file */
     int through;
     int e = of_resolve(path, &o->final, &through);
     if (e)
