@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "fileio.h"
 #include "fix.h"
 #include "gravel.h"
 #include "input.h"
@@ -285,11 +286,14 @@ void accuracy_map(struct gravel *g)
     }
     if (!have_gnuplot())
         return;
-    FILE *f = fopen("accuracy_map.dat", "w");
+    int werr;
+    const char *nowhy;
+    FILE *f = fio_open_write_checked("accuracy_map.dat", 0, &werr, &nowhy);
     if (!f)
         return;
     fputs(dat, f);
-    fclose(f);
+    if (fclose(f) != 0 || werr)
+        return; /* no data file, no plot */
     f = popen("gnuplot 2>/dev/null", "w");
     if (!f)
         return;

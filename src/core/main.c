@@ -7,6 +7,7 @@
  * Without -in the script comes from stdin. Exit status: 0 on success (or the
  * status given to `quit`), 1 on any error (a bad command line included). */
 #include <ctype.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 
 #include "command.h"
 #include "error.h"
+#include "fileio.h"
 #include "gravel.h"
 #include "input.h"
 #include "variable.h"
@@ -222,13 +224,15 @@ int main(int argc, char **argv)
     if (echo)
         g->echo = !strcmp(echo, "none") ? ECHO_NONE : !strcmp(echo, "screen") ? ECHO_SCREEN
                 : !strcmp(echo, "log") ? ECHO_LOG : ECHO_BOTH;
-    int rc = 0;
+    int rc = 0, screen_err = 0; /* screen_err outlives the -screen stream */
+    const char *why = NULL;
     if (screen) {
         if (strcmp(screen, "none") == 0) {
             g->screen = NULL;
             g->opt.quiet_screen = 1;
-        } else if (!(g->screen = fopen(screen, "w"))) {
-            fprintf(stderr, "ERROR: command line: cannot open screen file '%s'\n", screen);
+        } else if (!(g->screen = fio_open_write_checked(screen, 0, &screen_err, &why))) {
+            fprintf(stderr, "ERROR: command line: cannot open screen file '%s': %s\n", screen,
+                    why);
             gr_destroy(g);
             return 1;
         }
@@ -276,8 +280,13 @@ int main(int argc, char **argv)
         fprintf(stderr, "ERROR: %s\n", g->err.msg);
         rc = 1;
     }
-    if (g->screen && g->screen != stdout)
-        fclose(g->screen);
+    if (g->screen && g->screen != stdout && (fclose(g->screen) != 0 || screen_err)) {
+        /* a screen file cut short is a failed run too */
+        fprintf(stderr, "ERROR: cannot write screen file '%s': %s\n", screen,
+                strerror(screen_err ? screen_err : EIO));
+        rc = 1;
+    }
+    g->screen = NULL;
     gr_destroy(g);
     return rc;
 }

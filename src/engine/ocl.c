@@ -1,9 +1,8 @@
 /* ocl.c - OpenCL device choice, checked calls and the program cache.
  *
- * The cache stores the device binary of each built program under a 64-bit
- * FNV-1a hash of (sources, options, device name, driver and platform
- * version), written to a temporary file and renamed so concurrent runs never
- * read half a file. A binary that fails to load is rebuilt from source. */
+ * Built programs are cached on disk under a 64-bit FNV-1a hash of (sources,
+ * options, device name, driver and platform version) by program_cache.c,
+ * which verifies every entry before the driver sees it. */
 #include "ocl.h"
 
 #include <errno.h>
@@ -15,6 +14,7 @@
 #include <unistd.h>
 
 #include "error.h"
+#include "program_cache.h"
 
 const char *ocl_errname(cl_int err)
 {
@@ -191,7 +191,7 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     ocl_check(g, err, "clCreateCommandQueue");
 }
 
-static uint64_t fnv(uint64_t h, const void *p, size_t n)
+uint64_t ocl_fnv(uint64_t h, const void *p, size_t n)
 {
     const unsigned char *c = p;
     for (size_t i = 0; i < n; i++) {
@@ -199,87 +199,6 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
         h *= 1099511628211ull;
     }
     return h;
-}
-
-int ocl_cache_dir(char *buf, size_t n)
-{
-    const char *d = getenv("GRAVEL_CACHE_DIR");
-    if (d && *d) {
-        snprintf(buf, n, "%s", d);
-        return 1;
-    }
-    d = getenv("XDG_CACHE_HOME");
-    if (d && *d) {
-        snprintf(buf, n, "%s/gravel", d);
-        return 1;
-    }
-    d = getenv("HOME");
-    if (d && *d) {
-        snprintf(buf, n, "%s/.cache/gravel", d);
-        return 1;
-    }
-    return 0;
-}
-
-/* mkdir -p for the cache directory; failures only disable the cache. */
-static int make_dirs(const char *path)
-{
-    char tmp[1024];
-    snprintf(tmp, sizeof tmp, "%s", path);
-    for (char *p = tmp + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(tmp, 0755) != 0 && errno != EEXIST)
-                return 0;
-            *p = '/';
-        }
-    return mkdir(tmp, 0755) == 0 || errno == EEXIST;
-}
-
-static unsigned char *read_file(const char *path, size_t *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return NULL;
-    unsigned char *buf = NULL;
-    if (fseek(fp, 0, SEEK_END) == 0) {
-        long n = ftell(fp);
-        if (n > 0 && fseek(fp, 0, SEEK_SET) == 0) {
-            buf = malloc((size_t)n);
-            if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
-                free(buf);
-                buf = NULL;
-            }
-            *len = (size_t)n;
-        }
-    }
-    fclose(fp);
-    return buf;
-}
-
-static void write_cache(struct ocl *o, const char *dir, const char *path)
-{
-    size_t len = 0;
-    if (clGetProgramInfo(o->program, CL_PROGRAM_BINARY_SIZES, sizeof len, &len, NULL) !=
-            CL_SUCCESS || len == 0)
-        return;
-    unsigned char *bin = malloc(len);
-    if (!bin)
-        return;
-    unsigned char *bins[1] = {bin};
-    if (clGetProgramInfo(o->program, CL_PROGRAM_BINARIES, sizeof bins, bins, NULL) == CL_SUCCESS &&
-        make_dirs(dir)) {
-        char tmp[1100];
-        snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
-        FILE *fp = fopen(tmp, "wb");
-        if (fp) {
-            int ok = fwrite(bin, 1, len, fp) == len;
-            ok = (fclose(fp) == 0) && ok;
-            if (!ok || rename(tmp, path) != 0)
-                remove(tmp);
-        }
-    }
-    free(bin);
 }
 
 /* Map a line number of the concatenated source back to its file. */
@@ -305,14 +224,14 @@ static const char *source_of_line(int n, const char *const *names, const char *c
 void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
                const char *const *texts, const char *options)
 {
-    uint64_t key = 1469598103934665603ull;
+    uint64_t key = OCL_FNV_INIT;
     for (int i = 0; i < n; i++) {
-        key = fnv(key, names[i], strlen(names[i]) + 1);
-        key = fnv(key, texts[i], strlen(texts[i]) + 1);
+        key = ocl_fnv(key, names[i], strlen(names[i]) + 1);
+        key = ocl_fnv(key, texts[i], strlen(texts[i]) + 1);
     }
-    key = fnv(key, options, strlen(options) + 1);
-    key = fnv(key, o->name, strlen(o->name) + 1);
-    key = fnv(key, o->version, strlen(o->version) + 1);
+    key = ocl_fnv(key, options, strlen(options) + 1);
+    key = ocl_fnv(key, o->name, strlen(o->name) + 1);
+    key = ocl_fnv(key, o->version, strlen(o->version) + 1);
     o->cache_hit = 0;
     if (o->program && o->program_key == key) {
         o->cache_hit = 1;
@@ -322,29 +241,13 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
         clReleaseProgram(o->program);
         o->program = NULL;
     }
-    char dir[900], path[1000];
-    int use_cache = ocl_cache_dir(dir, sizeof dir);
-    if (use_cache)
-        snprintf(path, sizeof path, "%s/%016llx.bin", dir, (unsigned long long)key);
     cl_int err;
-    if (use_cache) {
-        size_t len = 0;
-        unsigned char *bin = read_file(path, &len);
-        if (bin) {
-            const unsigned char *bins[1] = {bin};
-            cl_int st;
-            cl_program p = clCreateProgramWithBinary(o->ctx, 1, &o->device, &len, bins, &st, &err);
-            free(bin);
-            if (p && err == CL_SUCCESS && st == CL_SUCCESS &&
-                clBuildProgram(p, 1, &o->device, options, NULL, NULL) == CL_SUCCESS) {
-                o->program = p;
-                o->program_key = key;
-                o->cache_hit = 1;
-                return;
-            }
-            if (p)
-                clReleaseProgram(p);
-        }
+    cl_program cached = pcache_load(g, o, key, options);
+    if (cached) {
+        o->program = cached;
+        o->program_key = key;
+        o->cache_hit = 1;
+        return;
     }
     /* concatenate with a newline between files */
     size_t total = 1;
@@ -395,8 +298,7 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
     }
     o->program = p;
     o->program_key = key;
-    if (use_cache)
-        write_cache(o, dir, path);
+    pcache_store(o, key, options);
 }
 
 cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name)

@@ -67,8 +67,9 @@ cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what
 /* Release every object (safe on a zeroed or partly built struct). */
 void ocl_release(struct ocl *o);
 
-/* Directory of the program cache (env GRAVEL_CACHE_DIR, else
- * $XDG_CACHE_HOME/gravel, else ~/.cache/gravel) into buf; 0 if none. */
-int ocl_cache_dir(char *buf, size_t n);
+/* 64-bit FNV-1a of p[0..n) continuing from h (start with OCL_FNV_INIT):
+ * the program's cache key and the cache entries' checksum. */
+#define OCL_FNV_INIT 1469598103934665603ull
+uint64_t ocl_fnv(uint64_t h, const void *p, size_t n);
 
 #endif

@@ -11,6 +11,7 @@
 #include "args.h"
 #include "engine.h"
 #include "error.h"
+#include "outfile.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -55,36 +56,43 @@ static char *snapshot_name(struct gravel *g, const struct dump *d, bigint step)
     return s;
 }
 
-static char *tmp_name(struct gravel *g, const char *name)
-{
-    size_t n = strlen(name) + 5;
-    char *s = gr_malloc(g, n);
-    snprintf(s, n, "%s.tmp", name);
-    return s;
-}
-
 /* ---- lifetime ---------------------------------------------------------------- */
 
-/* Rename the append-mode temporary over the target. `strict`: errors raise,
- * else warn (destroy path). */
-static void publish(struct gravel *g, struct dump *d, int strict)
+/* Finish the append-mode file: rename its temporary over the target (a
+ * target written through is flushed and stays open until `final`, so a
+ * FIFO's reader sees one stream across runs). `strict`: errors raise, else
+ * warn (destroy path). */
+static void publish(struct gravel *g, struct dump *d, int strict, int final)
 {
-    if (!d->fp)
+    if (!d->out.fp)
         return;
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp", d->file);
-    int bad = fflush(d->fp) != 0 || ferror(d->fp);
-    bad |= fclose(d->fp) != 0;
-    d->fp = NULL;
-    if (!bad && rename(tmp, d->file) == 0) {
-        d->published = 1;
+    char tmp[600];
+    snprintf(tmp, sizeof tmp, "%.590s", d->out.tmp ? d->out.tmp : "");
+    int e;
+    if (of_through(&d->out) && !final) {
+        if ((e = of_flush(&d->out)) == 0)
+            return;
+        of_abort(&d->out);
+        if (strict)
+            gr_error(g, "dump %s: cannot write '%.250s': %s", d->id, d->file, strerror(e));
+        gr_warn(g, "dump %s: cannot write '%.250s': %s", d->id, d->file, strerror(e));
         return;
     }
-    int e = errno;
+    int through = of_through(&d->out);
+    if ((e = of_commit(&d->out, OF_KEEP)) == 0) {
+        d->published = !through;
+        return;
+    }
+    if (through) {
+        if (strict)
+            gr_error(g, "dump %s: cannot write '%.250s': %s", d->id, d->file, strerror(e));
+        gr_warn(g, "dump %s: cannot write '%.250s': %s", d->id, d->file, strerror(e));
+        return;
+    }
     if (strict)
-        gr_error(g, "dump %s: cannot finish file '%s': %s (the new data is in %s)", d->id,
+        gr_error(g, "dump %s: cannot finish file '%.250s': %s (the new data is in %s)", d->id,
                  d->file, strerror(e), tmp);
-    gr_warn(g, "dump %s: cannot finish file '%s': %s (the new data is in %s)", d->id, d->file,
+    gr_warn(g, "dump %s: cannot finish file '%.250s': %s (the new data is in %s)", d->id, d->file,
             strerror(e), tmp);
 }
 
@@ -92,7 +100,7 @@ static void dump_delete(struct gravel *g, struct dump *d, int strict)
 {
     if (!d)
         return;
-    publish(g, d, strict);
+    publish(g, d, strict, 1);
     if (d->style && d->style->destroy)
         d->style->destroy(d);
     free(d->file);
@@ -112,13 +120,13 @@ void dump_free_all(struct gravel *g)
 void dump_free_pending(struct gravel *g)
 {
     for (int i = 0; i < g->styles.ndump; i++)
-        publish(g, g->styles.dump[i], 0);
+        publish(g, g->styles.dump[i], 0, 0);
 }
 
 void dump_run_end(struct gravel *g)
 {
     for (int i = 0; i < g->styles.ndump; i++)
-        publish(g, g->styles.dump[i], 1);
+        publish(g, g->styles.dump[i], 1, 0);
 }
 
 /* ---- commands ------------------------------------------------------------------ */
@@ -369,7 +377,7 @@ void cmd_write_dump(struct gravel *g, int argc, char **argv)
     if (d->style->init)
         d->style->init(g, d);
     dump_write(g, d);
-    publish(g, d, 1);
+    publish(g, d, 1, 1);
     g->err.jmp = outer;
     char *id[1] = {(char *)tmp_id};
     cmd_undump(g, 1, id);
@@ -402,65 +410,28 @@ static int select_atoms(struct gravel *g, struct dump *d)
     return n;
 }
 
-/* Copy file `from` to the open stream `to`; 0 on success. */
-static int copy_into(const char *from, FILE *to)
+/* Raise the failure of of_open for dump d. */
+static _Noreturn void open_error(struct gravel *g, struct dump *d, const struct ofile *o, int e)
 {
-    FILE *in = fopen(from, "rb");
-    if (!in)
-        return errno == ENOENT ? 0 : -1;
-    char buf[65536];
-    size_t k;
-    int bad = 0;
-    while ((k = fread(buf, 1, sizeof buf, in)) > 0)
-        if (fwrite(buf, 1, k, to) != k) {
-            bad = 1;
-            break;
-        }
-    bad |= ferror(in);
-    fclose(in);
-    return bad ? -1 : 0;
+    if (o->copying)
+        gr_error(g, "dump %s: cannot copy '%.250s' to continue it: %s", d->id, o->failed,
+                 strerror(e));
+    gr_error(g, "dump %s: cannot open '%.250s': %s", d->id, o->failed, strerror(e));
 }
 
 void dump_write(struct gravel *g, struct dump *d)
 {
     int n = select_atoms(g, d);
     int append = d->style->append && !d->multifile;
-    char *name = NULL, *tmp = NULL;
-    FILE *fp;
-    if (append) {
-        if (!d->fp) {
-            tmp = tmp_name(g, d->file);
-            d->fp = fopen(tmp, "wb");
-            if (!d->fp) {
-                int e = errno;
-                free(tmp);
-                gr_error(g, "dump %s: cannot open '%s.tmp': %s", d->id, d->file, strerror(e));
-            }
-            if (d->published && copy_into(d->file, d->fp) != 0) {
-                int e = errno;
-                fclose(d->fp);
-                d->fp = NULL;
-                remove(tmp);
-                free(tmp);
-                gr_error(g, "dump %s: cannot copy '%s' to continue it: %s", d->id, d->file,
-                         strerror(e));
-            }
-            free(tmp);
-            tmp = NULL;
-        }
-        fp = d->fp;
-    } else {
-        name = snapshot_name(g, d, g->step);
-        tmp = tmp_name(g, name);
-        fp = fopen(tmp, "wb");
-        if (!fp) {
-            int e = errno;
-            char msg[300];
-            snprintf(msg, sizeof msg, "%.250s", tmp);
-            free(name);
-            free(tmp);
-            gr_error(g, "dump %s: cannot open '%s': %s", d->id, msg, strerror(e));
-        }
+    struct ofile snap, *o = append ? &d->out : &snap;
+    char *name = NULL;
+    if (!append || !d->out.fp) {
+        name = append ? NULL : snapshot_name(g, d, g->step);
+        int e = of_open(o, append ? d->file : name, ".tmp",
+                        append && d->published ? OF_CONTINUE : OF_TRUNC);
+        free(name);
+        if (e)
+            open_error(g, d, o, e);
     }
 
     /* the style may raise an error (e.g. a compute column): clean up first */
@@ -468,52 +439,21 @@ void dump_write(struct gravel *g, struct dump *d)
     g->err.jmp = &jb;
     if (setjmp(jb)) {
         g->err.jmp = outer;
-        if (append) {
-            char t[4200];
-            snprintf(t, sizeof t, "%s.tmp", d->file);
-            fclose(d->fp);
-            d->fp = NULL;
-            remove(t);
-        } else {
-            fclose(fp);
-            remove(tmp);
-            free(name);
-            free(tmp);
-        }
+        of_abort(o);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
         exit(1);
     }
-    d->style->write(g, d, fp, d->idx, n);
+    d->style->write(g, d, o->fp, d->idx, n);
     g->err.jmp = outer;
 
-    int bad = fflush(fp) != 0 || ferror(fp);
-    int e = errno;
-    if (append) {
-        if (bad) {
-            char t[4200];
-            snprintf(t, sizeof t, "%s.tmp", d->file);
-            fclose(d->fp);
-            d->fp = NULL;
-            remove(t);
-            gr_error(g, "dump %s: cannot write '%s.tmp': %s", d->id, d->file, strerror(e));
-        }
-    } else {
-        bad |= fclose(fp) != 0;
-        if (!bad && rename(tmp, name) != 0)
-            bad = 1;
-        if (bad) {
-            e = errno;
-            char msg[300];
-            snprintf(msg, sizeof msg, "%.250s", name);
-            remove(tmp);
-            free(name);
-            free(tmp);
-            gr_error(g, "dump %s: cannot write '%s': %s", d->id, msg, strerror(e));
-        }
-        free(name);
-        free(tmp);
+    char shown[300];
+    snprintf(shown, sizeof shown, "%.250s", o->tmp && append ? o->tmp : o->final);
+    int e = append ? of_flush(o) : of_commit(o, 0);
+    if (e) {
+        of_abort(o);
+        gr_error(g, "dump %s: cannot write '%s': %s", d->id, shown, strerror(e));
     }
     d->last_dump = g->step;
     d->nsnap++;

@@ -24,6 +24,7 @@
 
 #include <stdio.h>
 
+#include "outfile.h"
 #include "state.h"
 
 struct dump;
@@ -61,7 +62,7 @@ struct dump {
     bigint last_dump;           /* step of the last snapshot, -1 = none */
     bigint next_dump;
     /* append mode (one file, several snapshots) */
-    FILE *fp;                   /* open "<file>.tmp" during a run */
+    struct ofile out;           /* open "<file>.tmp" (or the file written through) */
     int published;              /* <file> holds snapshots to keep (ours, or append yes) */
     int nsnap;                  /* snapshots written */
     /* scratch */

@@ -10,6 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "outfile.h"
+
 static const char *kind_problem(mode_t m, int streams)
 {
     if (S_ISREG(m))
@@ -113,71 +115,21 @@ ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max)
     return (ssize_t)n;
 }
 
-struct sink {
-    int fd;
-    int *errp;
-};
-
-static ssize_t sink_write(void *cookie, const char *buf, size_t n)
-{
-    struct sink *k = cookie;
-    size_t done = 0;
-    while (done < n) {
-        ssize_t w = write(k->fd, buf + done, n - done);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0) {
-            if (!*k->errp)
-                *k->errp = w < 0 ? errno : ENOSPC;
-            return -1;
-        }
-        done += (size_t)w;
-    }
-    return (ssize_t)n;
-}
-
-static int sink_close(void *cookie)
-{
-    struct sink *k = cookie;
-    int rc = close(k->fd);
-    if (rc != 0 && !*k->errp)
-        *k->errp = errno;
-    free(k);
-    return rc;
-}
-
 FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why)
 {
     *why = NULL;
     *errp = 0;
-    struct sink *k = malloc(sizeof *k);
-    if (!k) {
-        *why = strerror(ENOMEM);
-        return NULL;
-    }
-    k->errp = errp;
-    k->fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
-                 0666);
-    if (k->fd < 0) {
+    int fd = of_open_fd(path, append);
+    FILE *fp = fd < 0 ? NULL : of_stream(fd, errp);
+    if (!fp)
         *why = strerror(errno);
-        free(k);
-        return NULL;
-    }
-    cookie_io_functions_t io = {NULL, sink_write, NULL, sink_close};
-    FILE *fp = fopencookie(k, "w", io);
-    if (!fp) {
-        *why = strerror(errno);
-        close(k->fd);
-        free(k);
-    }
     return fp;
 }
 
 int fio_append_whole(const char *path, int append, const char *s, size_t n, int *opened)
 {
     *opened = 0;
-    int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (append ? O_APPEND : O_TRUNC),
-                  0666);
+    int fd = of_open_fd(path, append);
     if (fd < 0)
         return errno;
     *opened = 1;

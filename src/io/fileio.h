@@ -27,7 +27,8 @@ ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max);
 /* Open a file for writing (truncated, or appended to) whose first failed
  * write stores its errno in *errp (a stdio stream forgets why a buffered
  * write failed). Write failures also set the stream's error flag; closing
- * reports a failed close. NULL with *why on failure to open. */
+ * reports a failed close. NULL with *why on failure to open. The file is
+ * written in place by the write-through rule of outfile.h (of_open_fd). */
 FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why);
 /* Write all n bytes of s to the end of `path` (created if missing, emptied
  * first unless `append`) in one write; on failure the file is cut back to

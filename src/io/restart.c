@@ -45,6 +45,7 @@
 #include "fix.h"
 #include "log.h"
 #include "neighbor.h"
+#include "outfile.h"
 #include "pair.h"
 
 enum sect {
@@ -908,30 +909,17 @@ void restart_write(struct gravel *g, const char *path)
     memcpy(w->p + 16, &len, 8);
     memcpy(w->p + 24, &hash, 8);
 
-    size_t plen = strlen(path);
-    char *tmp = gr_malloc(g, plen + 32);
-    snprintf(tmp, plen + 32, "%s.tmp.%ld", path, (long)getpid());
-    FILE *fp = fopen(tmp, "wb");
-    if (!fp) {
-        int err = errno;
-        free(tmp);
+    char suffix[32];
+    snprintf(suffix, sizeof suffix, ".tmp.%ld", (long)getpid());
+    struct ofile o;
+    int err = of_open(&o, path, suffix, OF_TRUNC);
+    if (err)
         gr_error(g, "cannot open restart file '%.200s' for writing: %s", path, strerror(err));
-    }
-    size_t wrote = fwrite(w->p, 1, w->n, fp);
-    int ok = wrote == w->n && fflush(fp) == 0 && fsync(fileno(fp)) == 0;
-    int err = errno;
-    ok = (fclose(fp) == 0) && ok;
-    if (ok && rename(tmp, path) != 0) {
-        err = errno;
-        ok = 0;
-    }
-    if (!ok) {
-        remove(tmp);
-        free(tmp);
-        gr_error(g, "writing restart file '%.200s' failed: %s (the previous file, if any, is "
-                    "unchanged)", path, strerror(err));
-    }
-    free(tmp);
+    fwrite(w->p, 1, w->n, o.fp);
+    int through = of_through(&o);
+    if ((err = of_commit(&o, OF_SYNC)) != 0)
+        gr_error(g, "writing restart file '%.200s' failed: %s%s", path, strerror(err),
+                 through ? "" : " (the previous file, if any, is unchanged)");
     free(r->wb.p);
     memset(&r->wb, 0, sizeof r->wb);
 }

@@ -3,8 +3,9 @@
  * and by LAMMPS). Numbers are written with 17 significant digits so that
  * positions, velocities and diameters survive a round trip exactly; density
  * is written as mass / (4/3 pi r^3) (mass for point particles), as LAMMPS.
- * Atoms are written in tag order. The file is written under a temporary
- * name and renamed, so a failed write never leaves a truncated file. */
+ * Atoms are written in tag order. The file is written by outfile.h's rule
+ * (a temporary renamed over a regular file, devices and FIFOs written
+ * through), so a failed write never leaves a truncated file. */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -13,6 +14,7 @@
 #include "args.h"
 #include "domain.h"
 #include "error.h"
+#include "outfile.h"
 
 static int by_tag(const void *p, const void *q, void *atoms)
 {
@@ -77,30 +79,18 @@ void cmd_write_data(struct gravel *g, int argc, char **argv)
         gr_warn(g, "write_data: molecule IDs (fix property/atom mol) are not written to data "
                    "files yet");
     const char *path = argv[0];
-    size_t n = strlen(path);
-    char *tmp = gr_malloc(g, n + 16);
-    snprintf(tmp, n + 16, "%s.tmp%d", path, (int)(g->step % 100000));
-    int *order = malloc((size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
-    FILE *fp = order ? fopen(tmp, "w") : NULL;
-    if (!fp) {
-        int err = errno;
-        free(tmp);
+    int *order = gr_malloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
+    struct ofile o;
+    int err = of_open(&o, path, ".tmp", OF_TRUNC);
+    if (err) {
         free(order);
-        gr_error(g, "cannot write data file '%.200s': %s", path,
-                 order ? strerror(err) : "out of memory");
+        gr_error(g, "cannot write data file '%.200s': %s", path, strerror(err));
     }
     for (int i = 0; i < g->atoms.n; i++)
         order[i] = i;
     qsort_r(order, (size_t)g->atoms.n, sizeof(int), by_tag, &g->atoms);
-    write_all(g, fp, order);
+    write_all(g, o.fp, order);
     free(order);
-    int bad = ferror(fp);
-    bad |= fclose(fp) != 0;
-    if (bad || rename(tmp, path) != 0) {
-        int err = errno;
-        remove(tmp);
-        free(tmp);
+    if ((err = of_commit(&o, 0)) != 0)
         gr_error(g, "cannot write data file '%.200s': %s", path, strerror(err));
-    }
-    free(tmp);
 }

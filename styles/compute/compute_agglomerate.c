@@ -35,10 +35,12 @@
 #include "compute.h"
 #include "compute_agglomerate_mes.h"
 #include "error.h"
+#include "fileio.h"
 
 struct agg {
     char *file;
     FILE *fp;
+    int fp_err; /* errno of the first failed write to fp */
     int minsize;
     long long last_step;
     /* thermo asks for c_ID[1] .. c_ID[5] one by one: the clustering is
@@ -110,16 +112,16 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
         }
     }
     if (a->file) {
-        a->fp = fopen(a->file, "w");
+        const char *why;
+        a->fp = fio_open_write_checked(a->file, 0, &a->fp_err, &why);
         if (!a->fp)
             gr_error(g, "compute agglomerate: cannot open histogram file '%.200s': %s", a->file,
-                     strerror(errno));
-        errno = 0;
+                     why);
         fprintf(a->fp, "# Agglomerate size histogram (compute %s agglomerate)\n"
                        "# Timestep Number-of-agglomerates\n# size count\n", c->id);
         if (fflush(a->fp) != 0 || ferror(a->fp))
             gr_error(g, "compute agglomerate: cannot write histogram file '%.200s': %s",
-                     a->file, strerror(errno ? errno : EIO));
+                     a->file, strerror(a->fp_err ? a->fp_err : EIO));
     }
     c->vector_flag = 1;
     c->size_vector = 5;
@@ -416,13 +418,12 @@ static void cluster(struct gravel *g, struct compute *c)
     int werr = 0;
     if (ag->fp && (long long)g->step != ag->last_step) {
         ag->last_step = (long long)g->step;
-        errno = 0;
         fprintf(ag->fp, "%lld %d\n", (long long)g->step, nagg);
         for (int s = ag->minsize; s <= maxsize; s++)
             if (hist[s])
                 fprintf(ag->fp, "%d %ld\n", s, hist[s]);
         if (fflush(ag->fp) != 0 || ferror(ag->fp))
-            werr = errno ? errno : EIO;
+            werr = ag->fp_err ? ag->fp_err : EIO;
     }
     free(hist);
     free(pos);

@@ -22,6 +22,7 @@
  * (Nrepeat of them ending on a multiple of Nfreq), and at a run's setup
  * when that step is due, as LAMMPS; host arrays are synchronized first.
  * Sums run over the atoms in host order (deterministic). */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,6 +36,7 @@
 #include "expr.h"
 #include "fileio.h"
 #include "fix.h"
+#include "outfile.h"
 #include "variable.h"
 
 enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };
@@ -53,6 +55,7 @@ struct ave_chunk {
     int normflag, ave, nwindow, noscale;
     FILE *fp;
     int fp_err;
+    int fd;       /* the descriptor under fp (overwrite truncates it) */
     long filepos;
     int overwrite;
     char *format;
@@ -233,10 +236,10 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (a->ave != AVE_RUNNING && a->overwrite)
         gr_error(g, "fix ave/chunk: overwrite needs ave running");
     if (file) {
-        const char *why = NULL;
-        a->fp = fio_open_write_checked(file, append, &a->fp_err, &why);
+        a->fd = of_open_fd(file, append);
+        a->fp = a->fd < 0 ? NULL : of_stream(a->fd, &a->fp_err);
         if (!a->fp)
-            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, why);
+            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, strerror(errno));
         if (title[0])
             fprintf(a->fp, "%s\n", title[0]);
         else
@@ -465,11 +468,12 @@ static void sample(struct gravel *g, struct fix *f)
         fflush(a->fp);
         if (a->overwrite) {
             long end = ftell(a->fp);
-            if (ftruncate(fileno(a->fp), end) != 0)
+            if (end >= 0 && ftruncate(a->fd, end) != 0)
                 gr_warn(g, "fix ave/chunk %s: could not truncate its file", f->id);
         }
         if (ferror(a->fp))
-            gr_error(g, "fix ave/chunk %s: writing its file failed", f->id);
+            gr_error(g, "fix ave/chunk %s: writing its file failed: %s", f->id,
+                     strerror(a->fp_err ? a->fp_err : EIO));
     }
     if (a->vtk)
         write_vtk(g, f, a);
@@ -535,7 +539,8 @@ static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a)
     }
     int ok = !ferror(fp);
     if (fclose(fp) != 0 || !ok || err)
-        gr_error(g, "fix ave/chunk %s: writing %.200s failed", f->id, path);
+        gr_error(g, "fix ave/chunk %s: writing %.200s failed: %s", f->id, path,
+                 strerror(err ? err : EIO));
 }
 
 static void ave_init(struct gravel *g, struct fix *f)

@@ -1,0 +1,45 @@
+/* program_cache.h - the on-disk cache of built OpenCL programs.
+ *
+ * An entry is `<dir>/<key>.gbin`: a 32-byte header (magic "GRVLPRG1", the
+ * build key, the binary's length and its FNV-1a hash, little-endian) and the
+ * device binary. An entry is trusted only when every header field verifies
+ * and, for a PoCL binary, its serialized structure is whole (PoCL asserts on
+ * a malformed binary inside clCreateProgramWithBinary and aborts the
+ * process, so nothing unverified is ever handed to it). A binary is stored
+ * only after it has been loaded back (created, built, kernels counted), and
+ * is written by outfile.h's rule (temporary + rename). A damaged entry is
+ * removed with one warning and the program is rebuilt from source. */
+#ifndef GR_PROGRAM_CACHE_H
+#define GR_PROGRAM_CACHE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "ocl.h"
+
+#define PCACHE_HEADER 32
+
+/* Directory of the program cache (env GRAVEL_CACHE_DIR, else
+ * $XDG_CACHE_HOME/gravel, else ~/.cache/gravel) into buf; 0 if none. */
+int pcache_dir(char *buf, size_t n);
+/* The entry file of `key` in buf; 0 when there is no cache directory. */
+int pcache_path(char *buf, size_t n, uint64_t key);
+
+/* The cached program of `key`, built with `options` and holding kernels;
+ * NULL when there is none, or when the entry is damaged (it is removed with
+ * a warning naming the reason). */
+cl_program pcache_load(struct gravel *g, struct ocl *o, uint64_t key, const char *options);
+/* Store the binary of o->program (built from source) under `key` once it
+ * has loaded back with the same number of kernels. A failure only leaves
+ * the cache without the entry. */
+void pcache_store(struct ocl *o, uint64_t key, const char *options);
+
+/* What is wrong with the entry bytes buf[0..n) for `key` (NULL if nothing);
+ * on success *bin, *len give the binary inside. */
+const char *pcache_entry_problem(const unsigned char *buf, size_t n, uint64_t key,
+                                 const unsigned char **bin, size_t *len);
+/* What is wrong with the structure of PoCL binary b[0..n) (NULL if nothing):
+ * the checks PoCL makes with assert() when it loads one. */
+const char *pcache_pocl_problem(const unsigned char *b, size_t n);
+
+#endif
