@@ -26,7 +26,7 @@
 #define NEEDLE_REL 1e-5
 /* Coordinates and edge lengths must stay within [1e-75, 1e75] (edges: when
  * not 0): a triangle's squared area (~ edge^4) is then a normal double. */
-#define COORD_MAX 1e75
+#define COORD_MAX MESH_COORD_MAX
 #define EDGE_MIN 1e-75
 
 static int fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -993,8 +993,8 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
     return rc;
 }
 
-/* Text with at most 1 % NUL bytes (a text file that picked up a stray NUL,
- * not a binary STL, whose header padding and float bytes are not text):
+/* Text with at most 1 % NUL bytes, or one (a text file that picked up a
+ * stray NUL, not a binary STL, whose header padding and floats are not text):
  * 1, with the first NUL's offset and line in *nul_at / *nul_line (-1: none). */
 static int text_like(const unsigned char *b, size_t len, long *nul_at, int *nul_line)
 {
@@ -1014,7 +1014,7 @@ static int text_like(const unsigned char *b, size_t len, long *nul_at, int *nul_
         }
         line += c == '\n';
     }
-    return nul * 100 <= len;
+    return nul <= 1 || nul * 100 <= len;
 }
 
 /* The message for a file that is neither binary STL (size not 84 + 50 n)
@@ -1093,6 +1093,18 @@ void mesh_move(struct mesh *m, const double d[3])
     for (int v = 0; v < m->nvert; v++)
         for (int k = 0; k < 3; k++)
             m->vert[3 * v + k] += d[k];
+}
+
+int mesh_check_range(const struct mesh *m, const char *name, char *err, size_t errlen)
+{
+    for (int v = 0; v < m->nvert; v++)
+        for (int d = 0; d < 3; d++)
+            if (!(fabs(m->vert[3 * v + d]) <= COORD_MAX))
+                return fail(err, errlen, "%s: scale, move or rotate puts vertex %d at (%g, %g, "
+                            "%g), beyond %g: triangle areas would overflow double precision",
+                            name, v, m->vert[3 * v], m->vert[3 * v + 1], m->vert[3 * v + 2],
+                            COORD_MAX);
+    return 0;
 }
 
 void mesh_rotation_matrix(const double a[3], double rad, double R[9])
@@ -1201,9 +1213,9 @@ int mesh_bin(const struct mesh *m, double reach, struct mesh_bins *b, char *err,
     if (!(reach > 0))
         reach = 1e-9 * (ext > 0 ? ext : 1);
     /* the grid spans the box grown by reach and cells of 2 reach: both finite */
-    if (!(2 * reach + ext <= 1e300))
-        return fail(err, errlen, "distance %g is too large for the mesh grid (at most 1e300 "
-                    "with this mesh)", reach);
+    if (!isfinite(2 * reach + ext))
+        return fail(err, errlen, "distance %g is too large for the mesh grid (its extent, the "
+                    "mesh grown by it on both sides, overflows double precision)", reach);
     double h = 2 * reach;
     if (h < ext / 64)
         h = ext / 64;
