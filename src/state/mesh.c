@@ -777,6 +777,13 @@ static int vtk_cells(const char *path, struct scan *s, int bin, long npts, long 
         return fail(err, errlen, "%s:%d: inconsistent triangle count: %ld cells of triangles "
                     "need a size of %ld, the file says %ld (only triangles are read)", path,
                     s->line, ncell, (v5 ? 3 : 4) * ncell, (long)b);
+    /* at least "3 i j k" (or an offset and "i j k") and a separator per
+     * triangle, or 16 bytes of binary values: a large count that cannot fit
+     * is refused before it is allocated (a small one is left to the reading,
+     * which names the first missing triangle) */
+    if (ncell > 4096 && ncell * (bin ? 16 : 8) > (long)(s->end - s->p) + 1)
+        return fail(err, errlen, "%s:%d: %s: %ld triangles cannot fit in the %ld bytes left in "
+                    "the file (cut short?)", path, s->line, kw, ncell, (long)(s->end - s->p));
     int *cells = malloc((size_t)(ncell ? ncell : 1) * 3 * sizeof(int));
     if (!cells)
         return fail(err, errlen, "%s: out of memory", path);
@@ -888,6 +895,16 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
                 break;
             }
             npts = (long)v;
+            /* at least "x y z" and a separator per point, or 3 binary values:
+             * a large count that cannot fit is refused before it is allocated
+             * (a small one is left to the reading, which names the point) */
+            long per = bin ? 3 * (type == VT_F64 || type == VT_I64 ? 8 : 4) : 6;
+            if (npts > 4096 && npts * per > (long)(s.end - s.p) + 1) {
+                rc = fail(err, errlen, "%s:%d: POINTS: %ld points cannot fit in the %ld bytes "
+                          "left in the file (cut short?)", path, s.line, npts,
+                          (long)(s.end - s.p));
+                break;
+            }
             free(pts);
             pts = malloc((size_t)(npts ? npts : 1) * 3 * sizeof(double));
             if (!pts) {

@@ -6,7 +6,8 @@
  *    exact vertex count; a chain of vertices each within the tolerance of the
  *    next is one vertex, numbered and placed by its first appearance;
  *  - a vertex token over 127 characters, a NUL byte in an ASCII STL or a
- *    text file, an ASCII STL cut short, triangles of size 1e200 and 1e-300,
+ *    text file, an ASCII STL cut short, VTK counts the file cannot hold
+ *    (no allocation of gigabytes), triangles of size 1e200 and 1e-300,
  *    create_atoms ... mesh m 1e308 and a scale or move beyond 1e75 get
  *    messages saying what is wrong;
  *  - rotation axes of any finite length: rotate axis 0 0 1e300 (and 1e-300)
@@ -228,6 +229,22 @@ TEST(cut_short)
     check_bad("word.stl", "word.stl:5: expected a vertex coordinate, got 'zero' (triangle 0)");
 }
 
+TEST(vtk_counts_fit)
+{
+    /* counts that the file cannot hold are refused before they are allocated */
+    write_text("pts.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
+                          "POINTS 200000000 float\n0 0 0 1 0 0 0 1 0\n");
+    check_bad("pts.vtk", "pts.vtk:5: POINTS: 200000000 points cannot fit in the 19 bytes left");
+    write_text("cells.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
+                            "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 300000000 1200000000\n"
+                            "3 0 1 2\n");
+    check_bad("cells.vtk", "POLYGONS: 300000000 triangles cannot fit in the 9 bytes left");
+    write_text("cells5.vtk", "# vtk DataFile Version 5.1\nx\nASCII\nDATASET POLYDATA\n"
+                             "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 100000 299997\n"
+                             "OFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n");
+    check_bad("cells5.vtk", "99999 triangles cannot fit");
+}
+
 TEST(scale_limits)
 {
     double big[9] = {0, 0, 0, 1e200, 0, 0, 0, 1e200, 0};
@@ -393,6 +410,7 @@ int main(void)
     RUN(long_and_nul_tokens);
     RUN(text_files);
     RUN(cut_short);
+    RUN(vtk_counts_fit);
     RUN(scale_limits);
     RUN(create_atoms_huge_distance);
     RUN(transform_range);
