@@ -889,6 +889,10 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
         double v;
         if (tok_is(&s, "points")) {
             int type;
+            if (npts >= 0) { /* the cells read so far index the first one */
+                rc = fail(err, errlen, "%s:%d: a second POINTS section", path, s.line);
+                break;
+            }
             if (!next_tok(&s) || !tok_double(&s, &v) || v < 0 || v > 3e8 || !next_tok(&s) ||
                 ((type = vtk_type(s.tok)) < 0 && bin)) {
                 rc = fail(err, errlen, "%s:%d: bad POINTS line", path, s.line);
@@ -1121,6 +1125,18 @@ int mesh_check_range(const struct mesh *m, const char *name, char *err, size_t e
                             "%g), beyond %g: triangle areas would overflow double precision",
                             name, v, m->vert[3 * v], m->vert[3 * v + 1], m->vert[3 * v + 2],
                             COORD_MAX);
+    for (int t = 0; t < m->ntri; t++) {
+        const double *a = m->vert + 3 * m->tri[3 * t], *b = m->vert + 3 * m->tri[3 * t + 1],
+                     *c = m->vert + 3 * m->tri[3 * t + 2];
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (!(nn > 0) || !isfinite(nn))
+            return fail(err, errlen, "%s: scale, move or rotate leaves triangle %d without an "
+                        "area in double precision (its normal is undefined)", name, t);
+    }
     return 0;
 }
 

@@ -243,6 +243,11 @@ TEST(vtk_counts_fit)
                              "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 100000 299997\n"
                              "OFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n");
     check_bad("cells5.vtk", "99999 triangles cannot fit");
+    /* a second POINTS section after the cells (which index the first one) */
+    write_text("twice.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\n"
+                            "POINTS 5 float\n0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nPOLYGONS 1 4\n"
+                            "3 2 3 4\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n");
+    check_bad("twice.vtk", "twice.vtk:9: a second POINTS section");
 }
 
 TEST(scale_limits)
@@ -302,6 +307,13 @@ TEST(transform_range)
     snprintf(s, sizeof s, "%sfix m all mesh/surface file %s type 1 move 0 0 2e75\n", box_pre,
              path("tri.stl"));
     CHECK_ERROR(s, "puts vertex 0 at (0, 0, 2e+75)", 5);
+    /* the vertices collapse at 1e70 or shrink below what an area can hold */
+    snprintf(s, sizeof s, "%sfix m all mesh/surface file %s type 1 move 1e70 0 0\n", box_pre,
+             path("tri.stl"));
+    CHECK_ERROR(s, "tri.stl: scale, move or rotate leaves triangle 0 without an area", 5);
+    snprintf(s, sizeof s, "%sfix m all mesh/surface file %s type 1 scale 1e-300\n", box_pre,
+             path("tri.stl"));
+    CHECK_ERROR(s, "leaves triangle 0 without an area", 5);
     snprintf(s, sizeof s, "%sfix m all mesh/surface file %s type 1 scale 1e70 move 0 0 1e70\n",
              box_pre, path("tri.stl"));
     struct gravel *g = test_engine();
