@@ -34,6 +34,7 @@
 #include "group.h"
 #include "log.h"
 #include "random.h"
+#include "rigid_math.h"
 #include "variable.h"
 
 static int parse_dim(struct gravel *g, const char *s, const char *what)
@@ -124,10 +125,9 @@ static void do_rotate(struct gravel *g, unsigned bit, char **argv, const double 
     if (dim == 2 && (axis[0] != 0.0 || axis[1] != 0.0))
         gr_error(g, "rotate: in 2d the axis must be along z, got %s %s %s", argv[3], argv[4],
                  argv[5]);
-    double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
-    if (len == 0.0)
+    double u[3];
+    if (rm_unit_axis(axis, u))
         gr_error(g, "rotate: zero-length rotation axis");
-    double u[3] = {axis[0] / len, axis[1] / len, axis[2] / len};
     double ang = M_PI * theta / 180.0, c = cos(ang), s = sin(ang);
     for (int i = 0; i < a->n; i++) {
         if (!(a->mask[i] & bit))

@@ -8,8 +8,9 @@
  *     area > 1e-14 L^2 (L = longest edge), else "zero area";
  *   - not a needle: shortest altitude 2A/L >= 1e-5 L, else "needle".
  * Welding: raw vertices closer than the tolerance are one vertex (union-find
- * over a sweep sorted by x); welded vertices are numbered in order of first
- * appearance in the file, so ids are stable for a given file. */
+ * over exact duplicates and a hashed grid, expected linear time: weld());
+ * welded vertices are numbered in order of first appearance in the file, so
+ * ids are stable for a given file. */
 #include "mesh.h"
 
 #include <ctype.h>
@@ -23,6 +24,10 @@
 
 #define ZERO_AREA_REL 1e-14
 #define NEEDLE_REL 1e-5
+/* Coordinates and edge lengths must stay within [1e-75, 1e75] (edges: when
+ * not 0): a triangle's squared area (~ edge^4) is then a normal double. */
+#define COORD_MAX MESH_COORD_MAX
+#define EDGE_MIN 1e-75
 
 static int fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 static int fail(char *err, size_t errlen, const char *fmt, ...)
@@ -67,14 +72,197 @@ static void uf_union(int *p, int a, int b)
         p[a] = b;
 }
 
-static const double *sort_x;
-static int cmp_x(const void *a, const void *b)
+/* ---- welding --------------------------------------------------------------------
+ * Raw vertices i, j are one vertex when they are linked by a chain of pairs
+ * with |dx| <= tol and dx^2 + dy^2 + dz^2 <= tol^2 (the components of that
+ * graph). Found by hashing, in expected time linear in the vertex count:
+ * exact duplicates first (one representative each, however many copies), then a
+ * grid of cells of side h >= 0.55 tol over the representatives, so that linked
+ * points lie at most 2 cells apart; when h is 0.55 tol every two points of
+ * one cell are linked (0.95 tol apart at most), so a cell is one component
+ * without a pair test. A welded vertex is numbered by the first raw vertex of
+ * its component in file order and takes that vertex's coordinates. */
+
+struct khash {          /* open addressing: key (3 x 64 bit) -> group number */
+    uint64_t *key;      /* 3 per group, in order of first appearance */
+    int *slot;          /* cap entries: group + 1, 0 = empty */
+    size_t cap;
+    int n;
+};
+
+static uint64_t mix64(uint64_t x)
 {
-    int i = *(const int *)a, j = *(const int *)b;
-    double xi = sort_x[3 * i], xj = sort_x[3 * j];
-    if (xi != xj)
-        return xi < xj ? -1 : 1;
-    return i - j;
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+static size_t khash_pos(const struct khash *h, const uint64_t k[3])
+{
+    return (size_t)mix64(k[0] ^ mix64(k[1] ^ mix64(k[2]))) & (h->cap - 1);
+}
+
+static int khash_init(struct khash *h, int nmax)
+{
+    h->cap = 16;
+    while (h->cap < 2 * (size_t)nmax)
+        h->cap *= 2;
+    h->n = 0;
+    h->slot = calloc(h->cap, sizeof *h->slot);
+    h->key = malloc((size_t)(nmax ? nmax : 1) * 3 * sizeof *h->key);
+    return h->slot && h->key ? 0 : -1;
+}
+
+static void khash_free(struct khash *h)
+{
+    free(h->slot);
+    free(h->key);
+    memset(h, 0, sizeof *h);
+}
+
+/* The group of key k, or -1 if none (insert = 0); with insert = 1 a new key
+ * gets the next group number (room for nmax groups was reserved). */
+static int khash_get(struct khash *h, const uint64_t k[3], int insert)
+{
+    for (size_t p = khash_pos(h, k);; p = (p + 1) & (h->cap - 1)) {
+        int s = h->slot[p] - 1;
+        if (s < 0) {
+            if (!insert)
+                return -1;
+            memcpy(h->key + 3 * (size_t)h->n, k, 3 * sizeof *k);
+            h->slot[p] = h->n + 1;
+            return h->n++;
+        }
+        const uint64_t *q = h->key + 3 * (size_t)s;
+        if (q[0] == k[0] && q[1] == k[1] && q[2] == k[2])
+            return s;
+    }
+}
+
+static int weld_linked(const double *p, const double *q, double tol)
+{
+    double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+    return fabs(dx) <= tol && dx * dx + dy * dy + dz * dz <= tol * tol;
+}
+
+/* Pair tests between the points of cells a and b (a == b: within one cell). */
+static void weld_cells(const double *soup, const int *rep, const int *cstart, const int *cpts,
+                       int a, int b, double tol, int clique, int *parent)
+{
+    for (int i = cstart[a]; i < cstart[a + 1]; i++)
+        for (int j = a == b ? i + 1 : cstart[b]; j < cstart[b + 1]; j++) {
+            int u = cpts[i], v = cpts[j];
+            if (clique && uf_find(parent, u) == uf_find(parent, v))
+                return; /* the two cells are one component already */
+            if (uf_find(parent, u) != uf_find(parent, v) &&
+                weld_linked(soup + 3 * (size_t)rep[u], soup + 3 * (size_t)rep[v], tol))
+                uf_union(parent, u, v);
+        }
+}
+
+/* Weld nraw raw vertices (bounding box lo..hi): id[i] = welded vertex of raw
+ * vertex i, root[v] = the raw vertex whose coordinates vertex v takes;
+ * returns the welded vertex count, or -1 when out of memory. */
+static int weld(const double *soup, int nraw, double tol, const double lo[3],
+                const double hi[3], int *id, int *root)
+{
+    struct khash ex = {0}, cells = {0};
+    int *rep = NULL, *parent = NULL, *cell = NULL, *cstart = NULL, *cpts = NULL, nv = -1;
+    if (khash_init(&ex, nraw))
+        goto out;
+    /* exact duplicates: raw vertex i -> representative group id[i] */
+    for (int i = 0; i < nraw; i++) {
+        uint64_t k[3];
+        for (int d = 0; d < 3; d++) {
+            double x = soup[3 * (size_t)i + d] + 0.0; /* -0 -> +0 */
+            memcpy(&k[d], &x, sizeof x);
+        }
+        id[i] = khash_get(&ex, k, 1);
+    }
+    int nu = ex.n;
+    rep = malloc((size_t)nu * sizeof *rep);
+    parent = malloc((size_t)nu * sizeof *parent);
+    cell = malloc((size_t)nu * sizeof *cell);
+    if (!rep || !parent || !cell || khash_init(&cells, nu))
+        goto out;
+    for (int i = nraw - 1; i >= 0; i--)
+        rep[id[i]] = i;   /* the first raw vertex with these coordinates */
+    double ext = 0;
+    for (int d = 0; d < 3; d++)
+        ext = hi[d] - lo[d] > ext ? hi[d] - lo[d] : ext;
+    double h = 0.55 * tol;
+    int clique = 1;
+    if (!(h >= ext * 0x1p-40)) { /* keep cell numbers small: < 2^41 per axis */
+        h = ext * 0x1p-40;
+        clique = 0;
+    }
+    if (!(h > 0))
+        h = 1;   /* every point is one point */
+    for (int u = 0; u < nu; u++) {
+        uint64_t k[3];
+        for (int d = 0; d < 3; d++)
+            k[d] = (uint64_t)(int64_t)floor((soup[3 * (size_t)rep[u] + d] - lo[d]) / h);
+        cell[u] = khash_get(&cells, k, 1);
+        parent[u] = u;
+    }
+    /* points of each cell (CSR, ascending) */
+    int nc = cells.n;
+    cstart = calloc((size_t)nc + 1, sizeof *cstart);
+    cpts = malloc((size_t)nu * sizeof *cpts);
+    if (!cstart || !cpts)
+        goto out;
+    for (int u = 0; u < nu; u++)
+        cstart[cell[u] + 1]++;
+    for (int c = 0; c < nc; c++)
+        cstart[c + 1] += cstart[c];
+    for (int u = 0; u < nu; u++)
+        cpts[cstart[cell[u]]++] = u;
+    for (int c = nc; c > 0; c--)
+        cstart[c] = cstart[c - 1];
+    cstart[0] = 0;
+    for (int c = 0; c < nc; c++) /* within cells first: a cell is then one component */
+        if (clique)
+            for (int i = cstart[c] + 1; i < cstart[c + 1]; i++)
+                uf_union(parent, cpts[cstart[c]], cpts[i]);
+        else
+            weld_cells(soup, rep, cstart, cpts, c, c, tol, 0, parent);
+    for (int c = 0; c < nc; c++) {
+        /* each neighbouring cell pair once: offsets after (0,0,0) in z, y, x order */
+        const uint64_t *k = cells.key + 3 * (size_t)c;
+        for (int dz = 0; dz <= 2; dz++)
+            for (int dy = dz ? -2 : 0; dy <= 2; dy++)
+                for (int dx = dz || dy ? -2 : 1; dx <= 2; dx++) {
+                    uint64_t q[3] = {k[0] + (uint64_t)(int64_t)dx, k[1] + (uint64_t)(int64_t)dy,
+                                     k[2] + (uint64_t)(int64_t)dz};
+                    int b = khash_get(&cells, q, 0);
+                    if (b >= 0)
+                        weld_cells(soup, rep, cstart, cpts, c, b, tol, clique, parent);
+                }
+    }
+    /* number the components by their first raw vertex (the smallest
+     * representative: uf_union keeps the smallest index as the root) */
+    for (int u = 0; u < nu; u++)
+        cell[u] = -1;
+    nv = 0;
+    for (int i = 0; i < nraw; i++) {
+        int r = uf_find(parent, id[i]);
+        if (cell[r] < 0) {
+            root[nv] = rep[r];
+            cell[r] = nv++;
+        }
+        id[i] = cell[r];
+    }
+out:
+    khash_free(&ex);
+    khash_free(&cells);
+    free(rep);
+    free(parent);
+    free(cell);
+    free(cstart);
+    free(cpts);
+    return nv;
 }
 
 struct edge_rec {
@@ -101,10 +289,16 @@ int mesh_from_soup(const char *name, const double *soup, int ntri, double weld_t
         return fail(err, errlen, "%s: no triangles", name);
     int nraw = 3 * ntri;
     for (int t = 0; t < ntri; t++)
-        for (int c = 0; c < 9; c++)
-            if (!isfinite(soup[9 * t + c]))
+        for (int c = 0; c < 9; c++) {
+            double x = soup[9 * t + c];
+            if (!isfinite(x))
                 return fail(err, errlen, "%s: triangle %d: vertex %d is not finite (NaN or inf)",
                             name, t, c / 3);
+            if (fabs(x) > COORD_MAX)
+                return fail(err, errlen, "%s: triangle %d: vertex %d has coordinate %g, beyond "
+                            "%g: its area would overflow double precision", name, t, c / 3, x,
+                            COORD_MAX);
+        }
     double lo[3], hi[3];
     for (int d = 0; d < 3; d++)
         lo[d] = hi[d] = soup[d];
@@ -117,35 +311,24 @@ int mesh_from_soup(const char *name, const double *soup, int ntri, double weld_t
     double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                        (hi[2] - lo[2]) * (hi[2] - lo[2]));
     double tol = weld_tol > 0 ? weld_tol : 1e-10 * diag;
+    for (int t = 0; t < ntri; t++) {
+        double e = 0;   /* the longest edge component */
+        for (int k = 0; k < 3; k++)
+            for (int d = 0; d < 3; d++)
+                e = fmax(e, fabs(soup[9 * t + 3 * k + d] - soup[9 * t + 3 * ((k + 1) % 3) + d]));
+        if (e > tol && e < EDGE_MIN)
+            return fail(err, errlen, "%s: triangle %d: degenerate at this scale: its edges "
+                        "(%g) are shorter than %g, where its area underflows double precision",
+                        name, t, e, EDGE_MIN);
+    }
 
-    int *order = malloc((size_t)nraw * sizeof *order);
-    int *parent = malloc((size_t)nraw * sizeof *parent);
     int *id = malloc((size_t)nraw * sizeof *id);
-    if (!order || !parent || !id) {
-        free(order);
-        free(parent);
+    int *root = malloc((size_t)nraw * sizeof *root);
+    int nvert = id && root ? weld(soup, nraw, tol, lo, hi, id, root) : -1;
+    if (nvert < 0) {
         free(id);
+        free(root);
         return fail(err, errlen, "%s: out of memory for %d triangles", name, ntri);
-    }
-    for (int i = 0; i < nraw; i++)
-        order[i] = parent[i] = i;
-    sort_x = soup;
-    qsort(order, (size_t)nraw, sizeof *order, cmp_x);
-    for (int s = 0; s < nraw; s++) {
-        const double *p = soup + 3 * order[s];
-        for (int r = s - 1; r >= 0; r--) {
-            const double *q = soup + 3 * order[r];
-            if (p[0] - q[0] > tol)
-                break;
-            double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
-            if (dx * dx + dy * dy + dz * dz <= tol * tol)
-                uf_union(parent, order[s], order[r]);
-        }
-    }
-    int nvert = 0;
-    for (int i = 0; i < nraw; i++) {
-        int r = uf_find(parent, i);
-        id[i] = r == i ? nvert++ : id[r];
     }
     m->nvert = nvert;
     m->ntri = ntri;
@@ -156,21 +339,17 @@ int mesh_from_soup(const char *name, const double *soup, int ntri, double weld_t
     m->vtri = malloc((size_t)nraw * sizeof(int));
     struct edge_rec *edges = malloc((size_t)nraw * sizeof *edges);
     if (!m->vert || !m->tri || !m->nbr || !m->vtri_start || !m->vtri || !edges) {
-        free(order);
-        free(parent);
         free(id);
+        free(root);
         free(edges);
         mesh_free(m);
         return fail(err, errlen, "%s: out of memory for %d triangles", name, ntri);
     }
-    for (int i = 0; i < nraw; i++) {
-        if (uf_find(parent, i) == i)
-            memcpy(m->vert + 3 * id[i], soup + 3 * i, 3 * sizeof(double));
-        m->tri[i] = id[i];
-    }
-    free(order);
-    free(parent);
+    for (int v = 0; v < nvert; v++)
+        memcpy(m->vert + 3 * v, soup + 3 * (size_t)root[v], 3 * sizeof(double));
+    memcpy(m->tri, id, (size_t)nraw * sizeof(int));
     free(id);
+    free(root);
 
     /* geometry checks on the welded triangles */
     for (int t = 0; t < ntri; t++) {
@@ -289,11 +468,15 @@ static unsigned char *slurp(const char *path, size_t *len, char *err, size_t err
     return buf;
 }
 
-/* Token scanner over text with line numbers. */
+/* Token scanner over text with line numbers. A token longer than tok holds,
+ * or one with a NUL byte in it, is kept cut but marked (bad), so that it
+ * never reads as a keyword or a number. */
+enum { TOK_OK, TOK_LONG, TOK_NUL };
 struct scan {
     const char *p, *end;
     int line;
     char tok[128];
+    int bad;        /* TOK_OK, TOK_LONG or TOK_NUL */
 };
 
 static int next_tok(struct scan *s)
@@ -306,17 +489,39 @@ static int next_tok(struct scan *s)
     if (s->p >= s->end)
         return 0;
     size_t n = 0;
+    s->bad = TOK_OK;
     while (s->p < s->end && !isspace((unsigned char)*s->p)) {
-        if (n + 1 < sizeof s->tok)
+        if (*s->p == 0)
+            s->bad = TOK_NUL;
+        else if (n + 1 < sizeof s->tok)
             s->tok[n++] = *s->p;
+        else if (s->bad == TOK_OK)
+            s->bad = TOK_LONG;
         s->p++;
     }
     s->tok[n] = 0;
     return 1;
 }
 
+/* Why the current token cannot be what was expected, beyond its text. */
+static const char *tok_why(const struct scan *s)
+{
+    return s->bad == TOK_LONG  ? " (a token longer than 127 characters)"
+           : s->bad == TOK_NUL ? " (a token with a NUL byte: binary data in a text file)"
+                               : "";
+}
+
+/* 1 if the current token ran up to the end of a file that does not end in
+ * white space: the file was cut in the middle of it. */
+static int tok_cut(const struct scan *s)
+{
+    return s->p == s->end;
+}
+
 static int tok_is(const struct scan *s, const char *w)
 {
+    if (s->bad)
+        return 0;
     const char *a = s->tok;
     while (*a && *w && tolower((unsigned char)*a) == *w)
         a++, w++;
@@ -326,6 +531,8 @@ static int tok_is(const struct scan *s, const char *w)
 static int tok_double(const struct scan *s, double *v)
 {
     char *e;
+    if (s->bad)
+        return 0;
     *v = strtod(s->tok, &e);
     return e != s->tok && *e == 0;
 }
@@ -349,22 +556,46 @@ static double *soup_add(struct soup *s)
     return s->v + 9 * (size_t)s->n++;
 }
 
+/* The message for triangle t when `what` was expected: the file ended
+ * (have = 0), ended in the middle of the current token, or holds a wrong one. */
+static int stl_fail(const struct scan *s, int have, const char *path, const char *what, int t,
+                    char *err, size_t errlen)
+{
+    if (!have)
+        return fail(err, errlen, "%s:%d: unexpected end of file: the file is cut short in "
+                    "triangle %d, expected %s", path, s->line, t, what);
+    if (tok_cut(s))
+        return fail(err, errlen, "%s:%d: the file is cut short in triangle %d: it ends in "
+                    "'%.40s', expected %s", path, s->line, t, s->tok, what);
+    return fail(err, errlen, "%s:%d: expected %s, got '%.40s'%s (triangle %d)", path, s->line,
+                what, s->tok, tok_why(s), t);
+}
+
 static int stl_expect(struct scan *s, const char *path, const char *w, int t, char *err,
                       size_t errlen)
 {
-    if (!next_tok(s))
-        return fail(err, errlen, "%s:%d: unexpected end of file, expected '%s' (triangle %d)",
-                    path, s->line, w, t);
-    if (!tok_is(s, w))
-        return fail(err, errlen, "%s:%d: expected '%s', got '%.40s' (triangle %d)", path,
-                    s->line, w, s->tok, t);
-    return 0;
+    int have = next_tok(s);
+    if (have && tok_is(s, w))
+        return 0;
+    char what[32];
+    snprintf(what, sizeof what, "'%s'", w);
+    return stl_fail(s, have, path, what, t, err, errlen);
+}
+
+/* The next token as a number of triangle t. */
+static int stl_number(struct scan *s, const char *path, const char *what, int t, double *v,
+                      char *err, size_t errlen)
+{
+    int have = next_tok(s);
+    if (have && tok_double(s, v) && !tok_cut(s))
+        return 0;
+    return stl_fail(s, have, path, what, t, err, errlen);
 }
 
 static int read_stl_ascii(const char *path, const char *text, size_t len, struct soup *out,
                           char *err, size_t errlen)
 {
-    struct scan s = {text, text + len, 1, {0}};
+    struct scan s = {text, text + len, 1, {0}, TOK_OK};
     int in_solid = 0;
     while (next_tok(&s)) {
         if (tok_is(&s, "solid")) {
@@ -382,8 +613,8 @@ static int read_stl_ascii(const char *path, const char *text, size_t len, struct
         }
         int t = out->n;
         if (!tok_is(&s, "facet"))
-            return fail(err, errlen, "%s:%d: expected 'facet' or 'endsolid', got '%.40s' "
-                        "(triangle %d)", path, s.line, s.tok, t);
+            return fail(err, errlen, "%s:%d: expected 'facet' or 'endsolid', got '%.40s'%s "
+                        "(triangle %d)", path, s.line, s.tok, tok_why(&s), t);
         if (!in_solid)
             return fail(err, errlen, "%s:%d: 'facet' outside 'solid' (triangle %d)", path,
                         s.line, t);
@@ -391,9 +622,8 @@ static int read_stl_ascii(const char *path, const char *text, size_t len, struct
             return -1;
         for (int c = 0; c < 3; c++) {
             double dummy;
-            if (!next_tok(&s) || !tok_double(&s, &dummy))
-                return fail(err, errlen, "%s:%d: bad facet normal component '%.40s' "
-                            "(triangle %d)", path, s.line, s.tok, t);
+            if (stl_number(&s, path, "a facet normal component", t, &dummy, err, errlen))
+                return -1;
         }
         if (stl_expect(&s, path, "outer", t, err, errlen) ||
             stl_expect(&s, path, "loop", t, err, errlen))
@@ -405,19 +635,16 @@ static int read_stl_ascii(const char *path, const char *text, size_t len, struct
             if (stl_expect(&s, path, "vertex", t, err, errlen))
                 return -1;
             for (int c = 0; c < 3; c++)
-                if (!next_tok(&s) || !tok_double(&s, &tri[3 * k + c]))
-                    return fail(err, errlen, "%s:%d: bad vertex coordinate '%.40s' "
-                                "(triangle %d)", path, s.line, s.tok, t);
+                if (stl_number(&s, path, "a vertex coordinate", t, &tri[3 * k + c], err,
+                               errlen))
+                    return -1;
         }
-        if (!next_tok(&s))
-            return fail(err, errlen, "%s:%d: unexpected end of file, expected 'endloop' "
-                        "(triangle %d)", path, s.line, t);
-        if (tok_is(&s, "vertex"))
+        int have = next_tok(&s);
+        if (have && tok_is(&s, "vertex"))
             return fail(err, errlen, "%s:%d: triangle %d has more than 3 vertices", path,
                         s.line, t);
-        if (!tok_is(&s, "endloop"))
-            return fail(err, errlen, "%s:%d: expected 'endloop', got '%.40s' (triangle %d)",
-                        path, s.line, s.tok, t);
+        if (!have || !tok_is(&s, "endloop"))
+            return stl_fail(&s, have, path, "'endloop'", t, err, errlen);
         if (stl_expect(&s, path, "endfacet", t, err, errlen))
             return -1;
     }
@@ -550,6 +777,13 @@ static int vtk_cells(const char *path, struct scan *s, int bin, long npts, long 
         return fail(err, errlen, "%s:%d: inconsistent triangle count: %ld cells of triangles "
                     "need a size of %ld, the file says %ld (only triangles are read)", path,
                     s->line, ncell, (v5 ? 3 : 4) * ncell, (long)b);
+    /* at least "3 i j k" (or an offset and "i j k") and a separator per
+     * triangle, or 16 bytes of binary values: a large count that cannot fit
+     * is refused before it is allocated (a small one is left to the reading,
+     * which names the first missing triangle) */
+    if (ncell > 4096 && ncell * (bin ? 16 : 8) > (long)(s->end - s->p) + 1)
+        return fail(err, errlen, "%s:%d: %s: %ld triangles cannot fit in the %ld bytes left in "
+                    "the file (cut short?)", path, s->line, kw, ncell, (long)(s->end - s->p));
     int *cells = malloc((size_t)(ncell ? ncell : 1) * 3 * sizeof(int));
     if (!cells)
         return fail(err, errlen, "%s: out of memory", path);
@@ -625,7 +859,7 @@ static int vtk_cells(const char *path, struct scan *s, int bin, long npts, long 
 static int read_vtk(const char *path, const char *text, size_t len, struct soup *out,
                     char *err, size_t errlen)
 {
-    struct scan s = {text, text + len, 1, {0}};
+    struct scan s = {text, text + len, 1, {0}, TOK_OK};
     /* line 1: "# vtk DataFile Version x.y", line 2: title */
     const char *nl = memchr(s.p, '\n', len);
     if (!nl)
@@ -655,12 +889,26 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
         double v;
         if (tok_is(&s, "points")) {
             int type;
+            if (npts >= 0) { /* the cells read so far index the first one */
+                rc = fail(err, errlen, "%s:%d: a second POINTS section", path, s.line);
+                break;
+            }
             if (!next_tok(&s) || !tok_double(&s, &v) || v < 0 || v > 3e8 || !next_tok(&s) ||
                 ((type = vtk_type(s.tok)) < 0 && bin)) {
                 rc = fail(err, errlen, "%s:%d: bad POINTS line", path, s.line);
                 break;
             }
             npts = (long)v;
+            /* at least "x y z" and a separator per point, or 3 binary values:
+             * a large count that cannot fit is refused before it is allocated
+             * (a small one is left to the reading, which names the point) */
+            long per = bin ? 3 * (type == VT_F64 || type == VT_I64 ? 8 : 4) : 6;
+            if (npts > 4096 && npts * per > (long)(s.end - s.p) + 1) {
+                rc = fail(err, errlen, "%s:%d: POINTS: %ld points cannot fit in the %ld bytes "
+                          "left in the file (cut short?)", path, s.line, npts,
+                          (long)(s.end - s.p));
+                break;
+            }
             free(pts);
             pts = malloc((size_t)(npts ? npts : 1) * 3 * sizeof(double));
             if (!pts) {
@@ -766,6 +1014,48 @@ static int read_vtk(const char *path, const char *text, size_t len, struct soup 
     return rc;
 }
 
+/* Text with at most 1 % NUL bytes, or one (a text file that picked up a
+ * stray NUL, not a binary STL, whose header padding and floats are not text):
+ * 1, with the first NUL's offset and line in *nul_at / *nul_line (-1: none). */
+static int text_like(const unsigned char *b, size_t len, long *nul_at, int *nul_line)
+{
+    size_t nul = 0;
+    int line = 1;
+    *nul_at = -1;
+    *nul_line = 0;
+    for (size_t i = 0; i < len; i++) {
+        unsigned char c = b[i];
+        if (c == 0) {
+            if (!nul++) {
+                *nul_at = (long)i;
+                *nul_line = line;
+            }
+        } else if (!(c >= 32 && c < 127) && !isspace(c)) {
+            return 0;
+        }
+        line += c == '\n';
+    }
+    return nul <= 1 || nul * 100 <= len;
+}
+
+/* The message for a file that is neither binary STL (size not 84 + 50 n)
+ * nor legacy VTK, when it is text: an ASCII STL with a NUL byte, or no mesh. */
+static int text_not_mesh(const char *path, const unsigned char *buf, size_t len, size_t skip,
+                         long nul_at, int nul_line, char *err, size_t errlen)
+{
+    if (len - skip >= 5 && !strncasecmp((const char *)buf + skip, "solid", 5))
+        return fail(err, errlen, "%s:%d: ASCII STL file with a NUL byte (offset %ld): a text "
+                    "file must not hold binary data", path, nul_line, nul_at);
+    char head[24];
+    size_t n = 0;
+    for (size_t i = skip; i < len && n + 1 < sizeof head && buf[i] != '\n'; i++)
+        head[n++] = buf[i] ? (char)buf[i] : ' ';
+    head[n] = 0;
+    return fail(err, errlen, "%s: not a mesh file: text that starts with '%s'%s (expected "
+                "'solid' of an ASCII STL, '# vtk' of a legacy VTK file, or a binary STL of 84 "
+                "+ 50 n bytes)", path, head, nul_at >= 0 ? " and holds a NUL byte" : "");
+}
+
 int mesh_read(const char *path, double weld_tol, struct mesh *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
@@ -795,8 +1085,14 @@ int mesh_read(const char *path, double weld_tol, struct mesh *m, char *err, size
         }
         int ascii = !binary_fits && !has_nul && len - skip >= 5 &&
                     !strncasecmp(text + skip, "solid", 5);
-        rc = ascii ? read_stl_ascii(path, text, len, &soup, err, errlen)
-                   : read_stl_binary(path, buf, len, &soup, err, errlen);
+        long nul_at;
+        int nul_line;
+        if (ascii)
+            rc = read_stl_ascii(path, text, len, &soup, err, errlen);
+        else if (!binary_fits && text_like(buf, len, &nul_at, &nul_line))
+            rc = text_not_mesh(path, buf, len, skip, nul_at, nul_line, err, errlen);
+        else
+            rc = read_stl_binary(path, buf, len, &soup, err, errlen);
     }
     free(buf);
     if (rc == 0)
@@ -818,6 +1114,30 @@ void mesh_move(struct mesh *m, const double d[3])
     for (int v = 0; v < m->nvert; v++)
         for (int k = 0; k < 3; k++)
             m->vert[3 * v + k] += d[k];
+}
+
+int mesh_check_range(const struct mesh *m, const char *name, char *err, size_t errlen)
+{
+    for (int v = 0; v < m->nvert; v++)
+        for (int d = 0; d < 3; d++)
+            if (!(fabs(m->vert[3 * v + d]) <= COORD_MAX))
+                return fail(err, errlen, "%s: scale, move or rotate puts vertex %d at (%g, %g, "
+                            "%g), beyond %g: triangle areas would overflow double precision",
+                            name, v, m->vert[3 * v], m->vert[3 * v + 1], m->vert[3 * v + 2],
+                            COORD_MAX);
+    for (int t = 0; t < m->ntri; t++) {
+        const double *a = m->vert + 3 * m->tri[3 * t], *b = m->vert + 3 * m->tri[3 * t + 1],
+                     *c = m->vert + 3 * m->tri[3 * t + 2];
+        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (!(nn > 0) || !isfinite(nn))
+            return fail(err, errlen, "%s: scale, move or rotate leaves triangle %d without an "
+                        "area in double precision (its normal is undefined)", name, t);
+    }
+    return 0;
 }
 
 void mesh_rotation_matrix(const double a[3], double rad, double R[9])
@@ -925,6 +1245,10 @@ int mesh_bin(const struct mesh *m, double reach, struct mesh_bins *b, char *err,
         ext = hi[d] - lo[d] > ext ? hi[d] - lo[d] : ext;
     if (!(reach > 0))
         reach = 1e-9 * (ext > 0 ? ext : 1);
+    /* the grid spans the box grown by reach and cells of 2 reach: both finite */
+    if (!isfinite(2 * reach + ext))
+        return fail(err, errlen, "distance %g is too large for the mesh grid (its extent, the "
+                    "mesh grown by it on both sides, overflows double precision)", reach);
     double h = 2 * reach;
     if (h < ext / 64)
         h = ext / 64;

@@ -45,6 +45,14 @@ void mesh_scale(struct mesh *m, double s);
 void mesh_move(struct mesh *m, const double d[3]);
 void mesh_rotate(struct mesh *m, const double axis[3], double deg);
 
+/* Coordinates beyond this make squared areas overflow: the readers refuse
+ * them, and so does mesh_check_range after the transforms. */
+#define MESH_COORD_MAX 1e75
+/* 0 if every vertex is finite and within MESH_COORD_MAX and every triangle
+ * still has a non-zero, finite area (a normal); else -1 and a message naming
+ * the file (name) and the first vertex or triangle at fault. */
+int mesh_check_range(const struct mesh *m, const char *name, char *err, size_t errlen);
+
 /* Rotation matrix (row-major 3x3) of angle rad about the unit axis a. */
 void mesh_rotation_matrix(const double a[3], double rad, double R[9]);
 

@@ -11,6 +11,7 @@
 #include "args.h"
 #include "domain.h"
 #include "error.h"
+#include "rigid_math.h"
 #include "variable.h"
 
 #define PAIR(k, i)
@@ -141,12 +142,8 @@ static void parse_rotate(struct gravel *g, struct region *r, char **a)
         r->point[k] = arg_double(g, a[1 + k], "rotation point");
         r->axis[k] = arg_double(g, a[4 + k], "rotation axis");
     }
-    double len = sqrt(r->axis[0] * r->axis[0] + r->axis[1] * r->axis[1] +
-                      r->axis[2] * r->axis[2]);
-    if (len == 0.0)
+    if (rm_unit_axis(r->axis, r->runit))
         gr_error(g, "region rotate: the rotation axis cannot have zero length");
-    for (int k = 0; k < 3; k++)
-        r->runit[k] = r->axis[k] / len;
     r->rotateflag = 1;
 }
 

@@ -3,6 +3,7 @@
  * order) so rounding matches. */
 #include "rigid_math.h"
 
+#include <float.h>
 #include <math.h>
 
 static void qnormalize(double q[4])
@@ -257,4 +258,25 @@ void rm_richardson(double q[4], const double m[3], double w[3], const double mom
     for (int k = 0; k < 4; k++)
         q[k] = 2.0 * qhalf[k] - qfull[k];
     qnormalize(q);
+}
+
+int rm_unit_axis(const double a[3], double u[3])
+{
+    if (!isfinite(a[0]) || !isfinite(a[1]) || !isfinite(a[2]))
+        return -1;
+    double m = fmax(fabs(a[0]), fmax(fabs(a[1]), fabs(a[2])));
+    if (!(m > 0))
+        return -1;
+    double l2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    if (isfinite(l2) && l2 >= DBL_MIN) {
+        double len = sqrt(l2);
+        for (int k = 0; k < 3; k++)
+            u[k] = a[k] / len;
+        return 0;
+    }
+    double b[3] = {a[0] / m, a[1] / m, a[2] / m};
+    double len = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    for (int k = 0; k < 3; k++)
+        u[k] = b[k] / len;
+    return 0;
 }

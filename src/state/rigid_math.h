@@ -33,5 +33,12 @@ void rm_matvec(const double ex[3], const double ey[3], const double ez[3], const
                double out[3]);
 void rm_transpose_matvec(const double ex[3], const double ey[3], const double ez[3],
                          const double v[3], double out[3]);
+/* The unit vector along axis a, for every finite a however large or small
+ * (scaled by its largest component first when |a|^2 would overflow or
+ * underflow; otherwise a / |a| as computed before, bit for bit): 0, or -1
+ * when a is zero or not finite. Used by every command that takes a rotation
+ * axis (fix mesh/surface rotate, fix move/mesh rotate, displace_atoms
+ * rotate, region rotate). */
+int rm_unit_axis(const double a[3], double u[3]);
 
 #endif

@@ -32,6 +32,7 @@
 #include "error.h"
 #include "fix_mesh_surface.h"
 #include "pair.h"
+#include "rigid_math.h"
 
 static void compute_normals(struct gravel *g, struct mesh_surface *ms)
 {
@@ -95,11 +96,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             double a[3];
             for (int k = 0; k < 3; k++)
                 a[k] = arg_double(g, argv[i + 2 + k], "rotate axis");
-            double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-            if (len == 0)
+            if (rm_unit_axis(a, a))
                 gr_error(g, "fix mesh/surface rotate axis is zero");
-            for (int k = 0; k < 3; k++)
-                a[k] /= len;
             mesh_rotate(&ms->m, a, arg_double(g, argv[i + 6], "rotate angle"));
             i += 7;
         } else if (!strcmp(kw, "precision") || !strcmp(kw, "temperature") ||
@@ -135,6 +133,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (!type)
         gr_error(g, "fix mesh/surface needs 'type T' (the wall's material type)");
+    if (mesh_check_range(&ms->m, file, err, sizeof err))
+        gr_error(g, "fix mesh/surface: %s", err);
     ms->type = type;
     ms->cache_step = -1;
     compute_normals(g, ms);

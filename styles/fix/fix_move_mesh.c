@@ -19,6 +19,7 @@
 #include "args.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "rigid_math.h"
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -55,12 +56,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             mo.origin[k] = arg_double(g, argv[4 + k], "rotate origin");
             mo.axis[k] = arg_double(g, argv[8 + k], "rotate axis");
         }
-        double len = sqrt(mo.axis[0] * mo.axis[0] + mo.axis[1] * mo.axis[1] +
-                          mo.axis[2] * mo.axis[2]);
-        if (len == 0)
+        if (rm_unit_axis(mo.axis, mo.axis))
             gr_error(g, "fix move/mesh rotate axis is zero");
-        for (int k = 0; k < 3; k++)
-            mo.axis[k] /= len;
         mo.period = arg_positive(g, argv[12], "rotate period");
         if (!ms->ref_set) {
             memcpy(ms->ref, mo.origin, sizeof ms->ref);

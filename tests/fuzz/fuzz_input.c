@@ -7,6 +7,8 @@
  * state), "#!restart+" (the same, after the harness rewrote the header's
  * payload length and FNV-1a checksum to match the bytes, so mutations reach
  * the section parser and the validation instead of the checksum test),
+ * "#!stl", "#!stlb", "#!vtk" (a mesh file read by fix mesh/surface, then
+ * used by create_atoms: see mesh_input below),
  * anything else: the whole input is the script. Each input runs on a fresh engine with no screen and no log, inside a
  * scratch directory (print/log may write files there). Commands that would
  * start the OpenCL engine, write outputs endlessly or read outside the
@@ -31,8 +33,13 @@ static const char *denied[] = {"run", "minimize", "create_atoms", "read_data", "
  * (opening and echoing into files) without reaching new code. */
 static int harness_file; /* the harness' own read_data / read_restart are allowed */
 
+static int mesh_allow(int argc, char **argv);
+
 static int allow(int argc, char **argv)
 {
+    int m = mesh_allow(argc, argv);
+    if (m)
+        return m > 0;
     if (harness_file && argc == 2 &&
         ((!strcmp(argv[0], "read_data") && !strcmp(argv[1], "fz.data")) ||
          (!strcmp(argv[0], "read_restart") && !strcmp(argv[1], "fz.rst"))))
@@ -112,10 +119,88 @@ static int has_prefix(const uint8_t *data, size_t size, const char *p)
     return size >= n && !memcmp(data, p, n);
 }
 
+/* ---- mesh files: "#!stl", "#!stlb", "#!vtk" ----------------------------------------
+ * The rest of the input is a mesh file: "#!stl" writes it as it is to fz.stl
+ * (the reader tells ASCII from binary STL by the contents), "#!stlb" first
+ * sets the binary STL header's triangle count to what the bytes hold and
+ * drops a cut last triangle (so mutations reach the triangle data instead of
+ * the count check), "#!vtk" writes it to fz.vtk. mesh_script then reads it
+ * (fix mesh/surface: parsing, welding, validation, adjacency, transforms),
+ * bins it and keeps random sites clear of it (create_atoms ... mesh: host
+ * code, no OpenCL), and reads it again with a coarse weld tolerance. */
+static int harness_mesh; /* the harness' own create_atoms is allowed */
+
+/* 1: allow (the harness' create_atoms), -1: refuse (a mesh file named with
+ * '/': it could be /dev/zero or a FIFO outside the scratch directory),
+ * 0: no opinion. */
+static int mesh_allow(int argc, char **argv)
+{
+    if (harness_mesh && argc > 0 && !strcmp(argv[0], "create_atoms"))
+        return 1;
+    if (argc > 0 && !strcmp(argv[0], "fix"))
+        for (int i = 1; i + 1 < argc; i++)
+            if (!strcmp(argv[i], "file") && strchr(argv[i + 1], '/'))
+                return -1;
+    return 0;
+}
+
+static const char mesh_script_fmt[] =
+    "region b block -2 2 -2 2 -2 2\n"
+    "create_box 1 b\n"
+    "fix m all mesh/surface file %s type 1 rotate axis 1 1 0 angle 30 move 0.1 0 0\n"
+    "create_atoms 1 random 50 123 NULL mesh m 0.3\n"
+    "fix p all mesh/surface file %s type 1 precision 0.01\n"
+    "variable n equal count(all)+f_m[1]\n"
+    "print \"$n\"\n";
+static char mesh_script[sizeof mesh_script_fmt + 16];
+
+/* "#!stlb": header count := complete 50-byte triangles after the 84-byte header. */
+static size_t fix_stl_count(uint8_t *b, size_t n)
+{
+    if (n < 84)
+        return n;
+    uint64_t t = (n - 84) / 50;
+    uint32_t c = t > 0xffffffffu ? 0xffffffffu : (uint32_t)t;
+    for (int k = 0; k < 4; k++)
+        b[80 + k] = (uint8_t)(c >> (8 * k));
+    return 84 + 50 * (size_t)c;
+}
+
+/* 1: a mesh input, *script set; 0: not one; -1: the file could not be written. */
+static int mesh_input(const uint8_t *data, size_t size, const char **script)
+{
+    const char *file = NULL;
+    size_t skip = 0;
+    int fix = 0;
+    if (has_prefix(data, size, "#!stlb\n")) {
+        file = "fz.stl", skip = 7, fix = 1;
+    } else if (has_prefix(data, size, "#!stl\n")) {
+        file = "fz.stl", skip = 6;
+    } else if (has_prefix(data, size, "#!vtk\n")) {
+        file = "fz.vtk", skip = 6;
+    } else {
+        return 0;
+    }
+    uint8_t *copy = malloc(size - skip + 1);
+    if (!copy)
+        return -1;
+    memcpy(copy, data + skip, size - skip);
+    size_t n = fix ? fix_stl_count(copy, size - skip) : size - skip;
+    int bad = write_file(file, copy, n);
+    free(copy);
+    if (bad)
+        return -1;
+    snprintf(mesh_script, sizeof mesh_script, mesh_script_fmt, file, file);
+    *script = mesh_script;
+    harness_mesh = 1;
+    return 1;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     const char *script = NULL;
     harness_file = 0;
+    harness_mesh = 0;
     if (has_prefix(data, size, "#!data\n")) {
         if (write_file("fz.data", data + 7, size - 7))
             return 0;
@@ -136,6 +221,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             return 0;
         script = restart_script;
     }
+    if (!script && mesh_input(data, size, &script) < 0)
+        return 0;
     char *text = NULL;
     if (!script) {
         text = malloc(size + 1);

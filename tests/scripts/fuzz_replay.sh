@@ -7,6 +7,8 @@
 # line, a data file or restart file: it is read by the same commands as in
 # the harness (tests/fuzz/fuzz_input.c: data_script, restart_script);
 # "#!restart+" files get their header's length and checksum fixed first.
+# "#!stl", "#!stlb" and "#!vtk" files are mesh files read by the harness'
+# mesh_script ("#!stlb": binary STL with the triangle count fixed up).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 bin="$root/bin/gravel-asan"
@@ -19,6 +21,21 @@ trap 'rm -rf "$scratch"' EXIT
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}exitcode=86"
 export UBSAN_OPTIONS="halt_on_error=1:exitcode=87"
 [ -f "$root/tests/lsan.supp" ] && export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp"
+# mesh_replay IN DIR: write the mesh file of a "#!stl", "#!stlb" or "#!vtk"
+# input into DIR and print the harness' mesh_script for it
+# (tests/fuzz/fuzz_input.c: mesh_input).
+mesh_replay() {
+    case "$(head -c 7 "$1")" in
+    '#!stlb'*) python3 "$root/tests/fuzz/fix_stl_count.py" "$1" "$2/fz.stl"; m=fz.stl ;;
+    '#!stl'*) tail -c +7 "$1" > "$2/fz.stl"; m=fz.stl ;;
+    *) tail -c +7 "$1" > "$2/fz.vtk"; m=fz.vtk ;;
+    esac
+    printf '%s\n' 'region b block -2 2 -2 2 -2 2' 'create_box 1 b' \
+        "fix m all mesh/surface file $m type 1 rotate axis 1 1 0 angle 30 move 0.1 0 0" \
+        'create_atoms 1 random 50 123 NULL mesh m 0.3' \
+        "fix p all mesh/surface file $m type 1 precision 0.01" \
+        'variable n equal count(all)+f_m[1]' 'print "$n"'
+}
 for f in "$root"/tests/fuzz/corpus/*; do
     [ -f "$f" ] || continue
     name=$(basename "$f")
@@ -41,6 +58,9 @@ for f in "$root"/tests/fuzz/corpus/*; do
         printf '%s\n' 'read_restart fz.rst' 'group g1 type 1' \
             'variable n equal count(all)+xcm(all,x)+mass(all)' 'print "$n"' \
             'pair_coeff * *' > "$deck" ;;
+    '#!stl'*|'#!vtk'*)
+        deck="$dir/fz.in"
+        mesh_replay "$f" "$dir" > "$deck" ;;
     esac
     (cd "$dir" && timeout 20 "$bin" -in "$deck" -log none -screen none > out.txt 2> err.txt)
     rc=$?

@@ -4,7 +4,8 @@
  * the same command allow-list, command budget and scratch directory), in
  * this ASan+UBSan build. An input passes when it ends (error or not) without
  * a sanitizer report; a report names the input through the death callback.
- * Also checks the corpus holds each of the three input kinds. */
+ * Also checks the corpus holds each of the input kinds (scripts, data,
+ * restart and mesh files). */
 #include <dirent.h>
 #include <limits.h>
 #include <sanitizer/common_interface_defs.h>
@@ -31,7 +32,13 @@ static int cmp_str(const void *a, const void *b)
 }
 
 static char dir[PATH_MAX];
-static int n_inputs, n_data, n_restart, n_script;
+static int n_inputs, n_data, n_restart, n_script, n_mesh;
+
+static int is_mesh(const uint8_t *b, size_t n)
+{
+    return has_prefix(b, n, "#!stl\n") || has_prefix(b, n, "#!stlb\n") ||
+           has_prefix(b, n, "#!vtk\n");
+}
 
 static int replay_file(const char *name)
 {
@@ -55,7 +62,9 @@ static int replay_file(const char *name)
     LLVMFuzzerTestOneInput(buf, n);
     n_data += has_prefix(buf, n, "#!data\n");
     n_restart += has_prefix(buf, n, "#!restart");
-    n_script += !has_prefix(buf, n, "#!data\n") && !has_prefix(buf, n, "#!restart");
+    n_mesh += is_mesh(buf, n);
+    n_script += !has_prefix(buf, n, "#!data\n") && !has_prefix(buf, n, "#!restart") &&
+                !is_mesh(buf, n);
     free(buf);
     return 1;
 }
@@ -90,10 +99,10 @@ TEST(fuzz_corpus_replay)
         free(names[i]);
     }
     free(names);
-    printf("  %d inputs replayed: %d scripts, %d data files, %d restart files\n", n_inputs,
-           n_script, n_data, n_restart);
+    printf("  %d inputs replayed: %d scripts, %d data files, %d restart files, %d mesh "
+           "files\n", n_inputs, n_script, n_data, n_restart, n_mesh);
     CHECK(n_inputs == nn && n_inputs >= 100);
-    CHECK(n_script > 0 && n_data > 0 && n_restart > 0);
+    CHECK(n_script > 0 && n_data > 0 && n_restart > 0 && n_mesh > 0);
 }
 
 int main(void)
