@@ -126,6 +126,18 @@ static int set_matches_run(struct gravel *g, const struct dev_atoms *s)
     return ok;
 }
 
+size_t eng_atom_bytes(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    size_t b = e->single ? 3 * e->rsz : 0; /* xlo */
+#define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
+    if (field_on(g, when))                                                                    \
+        b += field_bytes(e, dev, sizeof(ctype), width);
+    ATOM_FIELDS(BYTES)
+#undef BYTES
+    return b;
+}
+
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
  * before upload only. */
 void eng_reserve(struct gravel *g, int n)
@@ -133,7 +145,7 @@ void eng_reserve(struct gravel *g, int n)
     struct engine *e = g->eng;
     if (n <= e->cap && e->a.x && set_matches_run(g, &e->a))
         return;
-    int cap = n > 16 ? n + n / 8 : 16;
+    int cap = n > 16 ? n : 16; /* exactly: insertions are reserved (fix reserve) */
     release_set(&e->a);
     alloc_set(g, &e->a, cap);
     e->cap = cap;

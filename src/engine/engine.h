@@ -16,7 +16,11 @@
 /* Build the program for the active styles; upload the host atoms. */
 void eng_prepare(struct gravel *g);
 void eng_upload(struct gravel *g);
-/* Make sure the per-atom set holds at least n atoms (contents not kept). */
+/* Device bytes of one atom slot of the run's per-atom set (every field the
+ * run holds, src/state/atom_fields.h). */
+size_t eng_atom_bytes(struct gravel *g);
+/* Make sure the per-atom set holds at least n atoms (exactly n when it
+ * grows; contents not kept). */
 void eng_reserve(struct gravel *g, int n);
 /* The fixes' per-atom state (fix.h), the one allocation path: each fix with
  * peratom_bytes gets zero-filled buffers of the run's capacity unless it

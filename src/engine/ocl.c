@@ -141,6 +141,16 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     clGetDeviceInfo(o->device, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof gmem, &gmem, NULL);
     o->max_alloc = (size_t)maxalloc;
     o->global_mem = (size_t)gmem;
+    const char *cap = getenv("GRAVEL_DEVICE_MEMORY");
+    if (cap && *cap) { /* a smaller device, e.g. to try a GPU's size on the CPU */
+        char *end;
+        double v = strtod(cap, &end);
+        if (*end || !(v >= 1 << 20) || v > 1e18)
+            gr_error(g, "GRAVEL_DEVICE_MEMORY must be a number of bytes >= 1048576, got '%.32s'",
+                     cap);
+        if (!o->global_mem || (size_t)v < o->global_mem)
+            o->global_mem = (size_t)v;
+    }
     size_t maxwg = 1;
     OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof maxwg, &maxwg,
                                  NULL));
@@ -392,9 +402,7 @@ static void CL_CALLBACK on_release(cl_mem m, void *data)
     atomic_fetch_sub(&mem_live, (long long)(size_t)data);
 }
 
-/* Address space this process may still take under its limit (ulimit -v),
- * with the limit in *limit; SIZE_MAX when there is none. */
-static size_t address_space_left(size_t *limit)
+size_t ocl_address_left(size_t *limit)
 {
     struct rlimit rl;
     *limit = SIZE_MAX;
@@ -417,7 +425,7 @@ cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what
     if (bytes == 0)
         bytes = 16;
     /* stop cleanly before the OpenCL runtime runs out of memory (PoCL aborts) */
-    size_t limit, left = address_space_left(&limit);
+    size_t limit, left = ocl_address_left(&limit);
     if (left != SIZE_MAX && bytes + ((size_t)16 << 20) > left)
         gr_error(g, "cannot allocate %zu bytes for the %s: the process may allocate only %zu "
                     "more bytes under its address-space limit of %zu bytes (ulimit -v); %lld "

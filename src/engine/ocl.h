@@ -26,7 +26,8 @@ struct ocl {
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (device.c) */
     size_t max_alloc;           /* CL_DEVICE_MAX_MEM_ALLOC_SIZE */
-    size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE */
+    size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE, or env GRAVEL_DEVICE_MEMORY
+                                 * (bytes) when that is less */
     int atoms_hint;             /* atoms the buffers are sized for (error messages) */
     size_t wg;                  /* work-group size of every launch (device.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
@@ -37,6 +38,10 @@ struct ocl {
 long long ocl_mem_live(void);
 long long ocl_mem_peak(void);
 void ocl_mem_reset_peak(void);
+
+/* Address space this process may still take under its limit (ulimit -v),
+ * with the limit in *limit; SIZE_MAX (both) when there is none. */
+size_t ocl_address_left(size_t *limit);
 
 /* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */
 const char *ocl_errname(cl_int err);
