@@ -2,8 +2,10 @@
  * that left the box or became non-finite, its neighbour and its speed.
  *
  * Pure functions over the host state; neighbor.c reads the device values of
- * the particle and calls them. The host copy of the atoms is the state at the
- * start of the current run (g->firststep). */
+ * the particle and calls them. The state at the start of the current run
+ * (g->firststep) is the host copy of the atoms, or, when the run's device
+ * buffers are the host arrays themselves (engine.c), the engine's copy of
+ * the start's positions, velocities and tags (struct start_copy). */
 #ifndef GR_DIAGNOSE_H
 #define GR_DIAGNOSE_H
 

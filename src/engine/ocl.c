@@ -129,6 +129,10 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     cl_device_type dt;
     OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_TYPE, sizeof dt, &dt, NULL));
     o->is_gpu = (dt & CL_DEVICE_TYPE_GPU) != 0;
+    cl_bool unified = CL_FALSE;
+    clGetDeviceInfo(o->device, CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof unified, &unified, NULL);
+    const char *share = getenv("GRAVEL_HOST_SHARE");
+    o->host_unified = !o->is_gpu && unified && !(share && !strcmp(share, "0"));
     char ext[4096] = "";
     clGetDeviceInfo(o->device, CL_DEVICE_EXTENSIONS, sizeof ext, ext, NULL);
     ext[sizeof ext - 1] = '\0';
@@ -455,6 +459,17 @@ cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what
         while (now > peak && !atomic_compare_exchange_weak(&mem_peak, &peak, now))
             ;
     }
+    return m;
+}
+
+cl_mem ocl_wrap(struct gravel *g, struct ocl *o, void *host, size_t bytes, const char *what)
+{
+    cl_int err;
+    cl_mem m = clCreateBuffer(o->ctx, CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR, bytes ? bytes : 16,
+                              host, &err);
+    if (err != CL_SUCCESS)
+        gr_error(g, "OpenCL clCreateBuffer over the host's %s (%zu bytes) failed: %s", what,
+                 bytes, ocl_errname(err));
     return m;
 }
 

@@ -22,6 +22,9 @@ struct ocl {
     char name[256];             /* device name as the driver reports it */
     char version[256];          /* driver + platform version (part of the cache key) */
     int is_gpu;
+    int host_unified;           /* a CPU device on host memory (CL_DEVICE_HOST_UNIFIED_MEMORY):
+                                 * buffers may be the host's arrays (ocl_wrap); env
+                                 * GRAVEL_HOST_SHARE=0 turns that off */
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (device.c) */
@@ -65,6 +68,10 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
 cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name);
 /* Checked buffer allocation; size 0 allocates a minimal buffer. */
 cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what);
+/* A buffer that is the host memory at `host` (CL_MEM_USE_HOST_PTR; aligned
+ * to the device's CL_DEVICE_MEM_BASE_ADDR_ALIGN so the runtime keeps no
+ * copy of its own). Not counted in ocl_mem_live: it takes no new memory. */
+cl_mem ocl_wrap(struct gravel *g, struct ocl *o, void *host, size_t bytes, const char *what);
 /* Release every object (safe on a zeroed or partly built struct). */
 void ocl_release(struct ocl *o);
 
