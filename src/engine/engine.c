@@ -107,6 +107,8 @@ static void release_set(struct dev_atoms *s)
  * fields as they are): one copy of the atoms instead of two. */
 static int share_host(const struct engine *e) { return e->ocl.host_unified && !e->single; }
 
+int eng_shares_host(struct gravel *g) { return share_host(g->eng); }
+
 static uint64_t host_key(const struct atoms *at)
 {
     uint64_t h = 1469598103934665603ull ^ (uint64_t)at->cap;

@@ -89,7 +89,7 @@ static size_t held_bytes(struct gravel *g)
            acc_held_bytes(g);
 }
 
-/* Host bytes of one atom (the field table's host arrays). */
+/* Host bytes of one atom: the field table's host arrays (in use already). */
 static size_t host_atom_bytes(void)
 {
     size_t b = 0;
@@ -122,10 +122,15 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
                      ? "GRAVEL_DEVICE_MEMORY" : "CL_DEVICE_GLOBAL_MEM_SIZE", other);
     }
     size_t limit, left = ocl_address_left(&limit);
-    if (!why[0] && left != SIZE_MAX && need > (double)left + (double)held - MARGIN) {
+    double start_copy = eng_shares_host(g) ? (6 * sizeof(double) + sizeof(int64_t)) * (double)n : 0;
+    if (!why[0] && left != SIZE_MAX &&
+        need + start_copy > (double)left + (double)held - MARGIN) {
         avail = (double)left + (double)held - MARGIN;
-        double host = (double)host_atom_bytes(); /* the host arrays grow with the atoms too */
-        fit = (avail + host * (double)g->atoms.n) / (per + host);
+        /* the host arrays grow with the atoms too (their capacity by doubling: up to
+         * twice the atoms' bytes), and the run start's copy is to come */
+        double host = (double)host_atom_bytes();
+        double start = eng_shares_host(g) ? 6 * sizeof(double) + sizeof(int64_t) : 0;
+        fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host + start);
         snprintf(why, sizeof why,
                  "the process may allocate only %zu more bytes under its address-space limit "
                  "of %zu bytes (ulimit -v)", left, limit);

@@ -134,6 +134,9 @@ deck="$root/inputs/bench/dense.in"
 (ulimit -v 900000; "$bin" -in "$deck" -var L 100 -var nsteps 10 -log none) > out 2>&1; rc=$?
 fit=$(sed -n 's/.*; about \([0-9]*\) particles would fit.*/\1/p' out)
 check memory_limit_clean_stop '[ $rc -eq 1 ] && grep -q "ERROR: run: 1000000 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 2.8[0-9] contacts per particle (estimated) of 156 bytes each), more than fit: the process may allocate only [0-9]* more bytes under its address-space limit of 921600000 bytes (ulimit -v); about [0-9]* particles would fit (.*dense.in:38)$" out && [ "${fit:-0}" -gt 100000 ] && [ "$fit" -lt 1000000 ] && ! grep -q "Aborted\|bad_alloc\|Assertion\|Loop time" out'
+L=$(awk -v n="${fit:-0}" 'BEGIN { L = int((0.9 * n) ^ (1 / 3)); print L }')
+(ulimit -v 900000; "$bin" -in "$deck" -var L "$L" -var nsteps 10 -log none) > out 2>&1; rc=$?
+check memory_limit_would_fit '[ $rc -eq 0 ] && [ "$L" -gt 40 ] && grep -q "^Loop time of .* for 10 steps with $((L * L * L)) atoms" out'
 
 # a device smaller than the run (GRAVEL_DEVICE_MEMORY caps CL_DEVICE_GLOBAL_MEM_SIZE): refused
 # with the particles that would fit, and 90 % of that number does run under the same cap
