@@ -91,13 +91,18 @@ struct engine {
     struct nbr *nbr;
     struct acc *acc;            /* collision-resolution records of the run */
     /* kept across runs: validity of the device neighbor list / history */
-    /* the run start's positions, velocities and tags, kept only while the
-     * per-atom set is the host arrays (dev_atoms.shared), which the run then
-     * changes: what diagnose.c reads as the start of the run */
+    /* the run start as diagnose.c reads it, kept only while the per-atom set
+     * is the host arrays (dev_atoms.shared), which the run then changes:
+     * positions and tags; the largest finite velocity component; the atoms
+     * that moved more than their radius per step (or were non-finite), with
+     * their velocities */
     struct start_copy {
-        int n;
-        double *x, *v;
+        int n, nfast;
+        double *x;
         int64_t *tag;
+        double vmax;
+        int64_t *fast_tag;
+        double *fast_v;
     } start;
     uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */
     int n_at_sync;

@@ -3,24 +3,69 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "device.h"
 #include "pair.h"
 
-/* The atoms at the start of the run: the host arrays, or the engine's copy
- * of them when the run's device buffers are those arrays (engine.h). */
+/* Positions and tags at the start of the run: the host arrays, or the
+ * engine's copy when the run's device buffers are those arrays (engine.h). */
 struct start_view {
     int n;
-    const double *x, *v;
+    const double *x;
     const int64_t *tag;
 };
 
+static const struct start_copy *start_copy(const struct gravel *g)
+{
+    return g->eng && g->eng->start.x ? &g->eng->start : NULL;
+}
+
 static struct start_view start_of_run(const struct gravel *g)
 {
-    const struct start_copy *c = g->eng ? &g->eng->start : NULL;
-    if (c && c->x)
-        return (struct start_view){c->n, c->x, c->v, c->tag};
-    return (struct start_view){g->atoms.n, g->atoms.x, g->atoms.v, g->atoms.tag};
+    const struct start_copy *c = start_copy(g);
+    if (c)
+        return (struct start_view){c->n, c->x, c->tag};
+    return (struct start_view){g->atoms.n, g->atoms.x, g->atoms.tag};
+}
+
+int diag_fast(const struct gravel *g, const double v[3], double radius)
+{
+    double s = hypot(hypot(v[0], v[1]), v[2]);
+    return !isfinite(s) || (radius > 0 && s * g->dt > radius);
+}
+
+/* The velocity at the start of the run of the atom of tag when it was fast
+ * (diag_fast) into v: 1, else 0. */
+static int start_fast(const struct gravel *g, long long tag, double v[3])
+{
+    const struct start_copy *c = start_copy(g);
+    const double *src = NULL;
+    if (c) {
+        for (int k = 0; k < c->nfast && !src; k++)
+            if (c->fast_tag[k] == tag)
+                src = c->fast_v + 3 * k;
+    } else {
+        for (int i = 0; i < g->atoms.n && !src; i++)
+            if (g->atoms.tag[i] == tag && diag_fast(g, g->atoms.v + 3 * i, g->atoms.radius[i]))
+                src = g->atoms.v + 3 * i;
+    }
+    if (src)
+        memcpy(v, src, 3 * sizeof *v);
+    return src != NULL;
+}
+
+/* The largest finite velocity component at the start of the run. */
+static double start_vmax(const struct gravel *g)
+{
+    const struct start_copy *c = start_copy(g);
+    if (c)
+        return c->vmax;
+    double vmax = 0;
+    for (int k = 0; k < 3 * g->atoms.n; k++)
+        if (isfinite(g->atoms.v[k]))
+            vmax = fmax(vmax, fabs(g->atoms.v[k]));
+    return vmax;
 }
 
 /* Index of tag among n tags, or -1. */
@@ -97,7 +142,7 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
     int i = index_of(a.tag, a.n, tag);
     if (i < 0)
         return 0;
-    const double *xi = a.x + 3 * i, *vi = a.v + 3 * i;
+    const double *xi = a.x + 3 * i;
     double radi = radius_of(g, tag);
     long long start = (long long)g->firststep;
     /* the nearest other atom at the start of the run (periodic images) */
@@ -137,8 +182,8 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
             return 1;
         }
     }
-    double s = norm3(vi);
-    if (!isfinite(s) || (radi > 0 && s * g->dt > radi)) {
+    double vi[3];
+    if (start_fast(g, tag, vi)) {
         char step[160];
         per_step(g, vi, step, sizeof step);
         snprintf(out + o, len - o, "; at the start of the run (step %lld) its velocity was "
@@ -165,10 +210,7 @@ void diag_time_step(const struct gravel *g, char *out, size_t len)
                 mtag = g->atoms.tag[k];
             }
         }
-        const struct start_view a = start_of_run(g);
-        for (int k = 0; k < 3 * a.n; k++)
-            if (isfinite(a.v[k]))
-                vmax = fmax(vmax, fabs(a.v[k]));
+        vmax = start_vmax(g);
         double tc = pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
         if (isfinite(tc) && tc / g->dt >= 10)
             snprintf(out, len,

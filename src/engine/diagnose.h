@@ -5,7 +5,7 @@
  * the particle and calls them. The state at the start of the current run
  * (g->firststep) is the host copy of the atoms, or, when the run's device
  * buffers are the host arrays themselves (engine.c), the engine's copy of
- * the start's positions, velocities and tags (struct start_copy). */
+ * what these functions read of it (struct start_copy). */
 #ifndef GR_DIAGNOSE_H
 #define GR_DIAGNOSE_H
 
@@ -27,6 +27,10 @@ void diag_lost_atom(const struct gravel *g, long long tag, const double x[3],
  * only). */
 int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], const double v[3],
                    char *out, size_t len);
+
+/* 1 when velocity v moves an atom of this radius more than its radius per
+ * step, or is not finite: what diag_nonfinite blames at the run start. */
+int diag_fast(const struct gravel *g, const double v[3], double radius);
 
 /* "; probable cause: ..." from the time step against the collision time of
  * the contact model. When the time step resolves the collision (>= 10 steps

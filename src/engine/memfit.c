@@ -122,14 +122,14 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
                      ? "GRAVEL_DEVICE_MEMORY" : "CL_DEVICE_GLOBAL_MEM_SIZE", other);
     }
     size_t limit, left = ocl_address_left(&limit);
-    double start_copy = eng_shares_host(g) ? (6 * sizeof(double) + sizeof(int64_t)) * (double)n : 0;
+    double start_copy = eng_shares_host(g) ? (3 * sizeof(double) + sizeof(int64_t)) * (double)n : 0;
     if (!why[0] && left != SIZE_MAX &&
         need + start_copy > (double)left + (double)held - MARGIN) {
         avail = (double)left + (double)held - MARGIN;
         /* the host arrays grow with the atoms too (their capacity by doubling: up to
-         * twice the atoms' bytes), and the run start's copy is to come */
+         * twice the atoms' bytes), and the run start's copy (positions, tags) is to come */
         double host = (double)host_atom_bytes();
-        double start = eng_shares_host(g) ? 6 * sizeof(double) + sizeof(int64_t) : 0;
+        double start = eng_shares_host(g) ? 3 * sizeof(double) + sizeof(int64_t) : 0;
         fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host + start);
         snprintf(why, sizeof why,
                  "the process may allocate only %zu more bytes under its address-space limit "
