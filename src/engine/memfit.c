@@ -99,6 +99,13 @@ static size_t host_atom_bytes(void)
     return b;
 }
 
+/* Host bytes per atom of the run start's copy (diagnose.h: positions and
+ * tags), made at the upload when the device buffers are the host arrays. */
+static double start_copy_bytes(struct gravel *g)
+{
+    return eng_shares_host(g) ? 3 * sizeof(double) + sizeof(int64_t) : 0;
+}
+
 /* n atom slots and nc contacts (z = nc per particle), `how` the contacts'
  * origin: stop unless they fit every limit. */
 static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
@@ -107,7 +114,7 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
     size_t pa = atom_bytes(g), pc = contact_bytes(g);
     size_t ncap = pc ? nbr_capacity(nc) : 0;
     double need = (double)n * (double)pa + (double)ncap * (double)pc;
-    double per = (double)pa + z * 1.125 * (double)pc; /* per particle, at that capacity */
+    double per = (double)pa + z * 1.125 * (double)pc; /* per particle, 1/8 headroom */
     size_t held = held_bytes(g), live = (size_t)ocl_mem_live();
     size_t other = live > held ? live - held : 0;
     char why[256] = "";
@@ -122,14 +129,12 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
                      ? "GRAVEL_DEVICE_MEMORY" : "CL_DEVICE_GLOBAL_MEM_SIZE", other);
     }
     size_t limit, left = ocl_address_left(&limit);
-    double start_copy = eng_shares_host(g) ? (3 * sizeof(double) + sizeof(int64_t)) * (double)n : 0;
-    if (!why[0] && left != SIZE_MAX &&
-        need + start_copy > (double)left + (double)held - MARGIN) {
+    double start = start_copy_bytes(g);
+    if (!why[0] && left != SIZE_MAX && need + start * n > (double)left + (double)held - MARGIN) {
         avail = (double)left + (double)held - MARGIN;
         /* the host arrays grow with the atoms too (their capacity by doubling: up to
          * twice the atoms' bytes), and the run start's copy (positions, tags) is to come */
         double host = (double)host_atom_bytes();
-        double start = eng_shares_host(g) ? 3 * sizeof(double) + sizeof(int64_t) : 0;
         fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host + start);
         snprintf(why, sizeof why,
                  "the process may allocate only %zu more bytes under its address-space limit "
