@@ -97,7 +97,7 @@ struct engine {
      * that moved more than their radius per step (or were non-finite), with
      * their velocities */
     struct start_copy {
-        int n, nfast;
+        int n, nfast, fast_cap;
         double *x;
         int64_t *tag;
         double vmax;

@@ -267,8 +267,11 @@ static void keep_start(struct gravel *g)
             if (isfinite(v[q]))
                 c->vmax = fmax(c->vmax, fabs(v[q]));
         if (diag_fast(g, v, at->radius[i])) {
-            c->fast_tag = gr_realloc(g, c->fast_tag, (size_t)(c->nfast + 1) * sizeof *c->fast_tag);
-            c->fast_v = gr_realloc(g, c->fast_v, 3 * (size_t)(c->nfast + 1) * sizeof *c->fast_v);
+            if (c->nfast == c->fast_cap) {
+                c->fast_cap = c->fast_cap ? 2 * c->fast_cap : 16;
+                c->fast_tag = gr_realloc(g, c->fast_tag, (size_t)c->fast_cap * sizeof *c->fast_tag);
+                c->fast_v = gr_realloc(g, c->fast_v, 3 * (size_t)c->fast_cap * sizeof *c->fast_v);
+            }
             c->fast_tag[c->nfast] = at->tag[i];
             memcpy(c->fast_v + 3 * c->nfast, v, 3 * sizeof *v);
             c->nfast++;
