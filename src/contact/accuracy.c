@@ -41,16 +41,18 @@ static void rel(cl_mem *m)
     *m = NULL;
 }
 
-/* Records for `cap` items of `nrec` REAL, zeroed (contents not kept). */
+/* Records for at least `need` items of `nrec` REAL, zeroed (contents not
+ * kept); `slack`: room to grow by 1/8 (contacts; particle records follow
+ * the engine's capacity exactly). */
 static void grow(struct gravel *g, cl_mem *rec, cl_mem *step, size_t *cap, size_t need,
-                 int nrec, const char *what)
+                 int slack, int nrec, const char *what)
 {
     struct engine *e = g->eng;
     if (*rec && need <= *cap)
         return;
     rel(rec);
     rel(step);
-    *cap = need + need / 8 + 64;
+    *cap = slack ? need + need / 8 + 64 : need;
     *rec = eng_alloc(g, *cap * (size_t)nrec * e->rsz, what);
     *step = eng_alloc(g, *cap * sizeof(cl_int), what);
     eng_fill_zero(g, *rec, *cap * (size_t)nrec * e->rsz);
@@ -74,9 +76,11 @@ void acc_reserve(struct gravel *g)
         rel(&s->out);
         s->rsz = e->rsz;
     }
-    grow(g, &s->prec, &s->pstep, &s->pcap, ncontact(g), PAIR_REC, "contact accuracy records");
-    grow(g, &s->wrec, &s->wstep, &s->wcap, (size_t)e->cap, WALL_REC,
-         "particle accuracy records");
+    grow(g, &s->prec, &s->pstep, &s->pcap, ncontact(g), 1, PAIR_REC,
+         "contact accuracy records");
+    if (s->wrec) /* the particle records exist once a wall kernel asked for them */
+        grow(g, &s->wrec, &s->wstep, &s->wcap, (size_t)e->cap, 0, WALL_REC,
+             "particle accuracy records");
     if (!s->out) {
         s->out = eng_alloc(g, 2 * NCHUNK * e->rsz, "accuracy reduction");
         if (!s->idx)
@@ -91,8 +95,9 @@ void acc_begin(struct gravel *g, int force)
     acc_reserve(g);
     eng_fill_zero(g, s->prec, s->pcap * PAIR_REC * g->eng->rsz);
     eng_fill_zero(g, s->pstep, s->pcap * sizeof(cl_int));
-    eng_fill_zero(g, s->wrec, s->wcap * WALL_REC * g->eng->rsz);
-    eng_fill_zero(g, s->wstep, s->wcap * sizeof(cl_int));
+    rel(&s->wrec); /* made again, zeroed, by the run's first wall kernel (acc_wall_rec) */
+    rel(&s->wstep);
+    s->wcap = 0;
     s->force = force;
     s->warned = 0;
     memset(&s->worst, 0, sizeof s->worst);
@@ -177,7 +182,7 @@ void acc_collect(struct gravel *g)
         w->tag_j = read_tag(g, read_int(g, l->cj, (size_t)c));
         w->wall[0] = 0;
     }
-    int n = e->a.n < (int)s->wcap ? e->a.n : (int)s->wcap;
+    int n = !s->wrec ? 0 : e->a.n < (int)s->wcap ? e->a.n : (int)s->wcap;
     int i = reduce(g, s->wrec, n, WALL_REC, ACC_WALL_OV, &q, &ov);
     w->wall_ov = fmax(w->wall_ov, ov);
     if (i >= 0 && q > w->q) {
@@ -191,7 +196,8 @@ void acc_collect(struct gravel *g)
                  code >= 1 && code <= g->styles.nfix ? g->styles.fix[code - 1]->id : "?");
     }
     eng_fill_zero(g, s->prec, (size_t)nc * PAIR_REC * e->rsz);
-    eng_fill_zero(g, s->wrec, (size_t)n * WALL_REC * e->rsz);
+    if (n > 0)
+        eng_fill_zero(g, s->wrec, (size_t)n * WALL_REC * e->rsz);
     if (!(w->q > 0))
         return;
     double steps = 1.0 / w->q;
@@ -224,8 +230,21 @@ int acc_step(const struct gravel *g)
     return d > 0x7fffffff ? 0x7fffffff : (int)d;
 }
 
-cl_mem acc_wall_rec(struct gravel *g) { return get(g)->wrec; }
-cl_mem acc_wall_step(struct gravel *g) { return get(g)->wstep; }
+/* Made on demand: a run without wall, region or mesh contacts holds no
+ * particle records. */
+cl_mem acc_wall_rec(struct gravel *g)
+{
+    struct acc *s = get(g);
+    grow(g, &s->wrec, &s->wstep, &s->wcap, (size_t)g->eng->cap, 0, WALL_REC,
+         "particle accuracy records");
+    return s->wrec;
+}
+
+cl_mem acc_wall_step(struct gravel *g)
+{
+    acc_wall_rec(g);
+    return get(g)->wstep;
+}
 
 int acc_wall_code(const struct gravel *g, const struct fix *f)
 {
@@ -234,6 +253,17 @@ int acc_wall_code(const struct gravel *g, const struct fix *f)
         if (g->styles.fix[q] == f)
             code = q + 1;
     return code;
+}
+
+size_t acc_contact_bytes(struct gravel *g) { return PAIR_REC * g->eng->rsz + sizeof(cl_int); }
+
+size_t acc_held_bytes(struct gravel *g)
+{
+    const struct acc *s = g->eng->acc;
+    if (!s)
+        return 0;
+    return (s->prec ? s->pcap * (PAIR_REC * s->rsz + sizeof(cl_int)) : 0) +
+           (s->wrec ? s->wcap * (WALL_REC * s->rsz + sizeof(cl_int)) : 0);
 }
 
 void acc_free(struct gravel *g)

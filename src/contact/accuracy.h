@@ -47,6 +47,10 @@ int acc_step(const struct gravel *g);
 cl_mem acc_wall_rec(struct gravel *g);
 cl_mem acc_wall_step(struct gravel *g);
 int acc_wall_code(const struct gravel *g, const struct fix *f);
+/* Memory (src/engine/memfit.c): device bytes of one pair contact's record,
+ * and the bytes the records hold now. */
+size_t acc_contact_bytes(struct gravel *g);
+size_t acc_held_bytes(struct gravel *g);
 void acc_free(struct gravel *g);
 
 #endif

@@ -22,6 +22,8 @@ struct dev_atoms {
     int n;                      /* atoms on the device */
     ATOM_FIELDS(DEV_ATOM_MEMBER)
     cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
+    int shared;                 /* the buffers are the host arrays of g->atoms (engine.c) */
+    uint64_t shared_key;        /* which host arrays (their addresses and capacity) */
 };
 
 struct nbr;                     /* neighbor.c */
@@ -91,6 +93,19 @@ struct engine {
     struct nbr *nbr;
     struct acc *acc;            /* collision-resolution records of the run */
     /* kept across runs: validity of the device neighbor list / history */
+    /* the run start as diagnose.c reads it, kept only while the per-atom set
+     * is the host arrays (dev_atoms.shared), which the run then changes:
+     * positions and tags; the largest finite velocity component; the atoms
+     * that moved more than their radius per step (or were non-finite), with
+     * their velocities */
+    struct start_copy {
+        int n, nfast, fast_cap;
+        double *x;
+        int64_t *tag;
+        double vmax;
+        int64_t *fast_tag;
+        double *fast_v;
+    } start;
     uint64_t tag_sum;           /* checksum of the tags at the last sync; 0 = invalid */
     int n_at_sync;
     /* pair evaluation of the current run (run.c) */

@@ -3,16 +3,85 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "device.h"
 #include "pair.h"
 
-/* Host index of tag, or -1. */
-static int host_index(const struct gravel *g, long long tag)
+/* Positions and tags at the start of the run: the host arrays, or the
+ * engine's copy when the run's device buffers are those arrays (engine.h). */
+struct start_view {
+    int n;
+    const double *x;
+    const int64_t *tag;
+};
+
+static const struct start_copy *start_copy(const struct gravel *g)
 {
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.tag[i] == tag)
+    return g->eng && g->eng->start.x ? &g->eng->start : NULL;
+}
+
+static struct start_view start_of_run(const struct gravel *g)
+{
+    const struct start_copy *c = start_copy(g);
+    if (c)
+        return (struct start_view){c->n, c->x, c->tag};
+    return (struct start_view){g->atoms.n, g->atoms.x, g->atoms.tag};
+}
+
+int diag_fast(const struct gravel *g, const double v[3], double radius)
+{
+    double s = hypot(hypot(v[0], v[1]), v[2]);
+    return !isfinite(s) || (radius > 0 && s * g->dt > radius);
+}
+
+/* The velocity at the start of the run of the atom of tag when it was fast
+ * (diag_fast) into v: 1, else 0. */
+static int start_fast(const struct gravel *g, long long tag, double v[3])
+{
+    const struct start_copy *c = start_copy(g);
+    const double *src = NULL;
+    if (c) {
+        for (int k = 0; k < c->nfast && !src; k++)
+            if (c->fast_tag[k] == tag)
+                src = c->fast_v + 3 * k;
+    } else {
+        for (int i = 0; i < g->atoms.n && !src; i++)
+            if (g->atoms.tag[i] == tag && diag_fast(g, g->atoms.v + 3 * i, g->atoms.radius[i]))
+                src = g->atoms.v + 3 * i;
+    }
+    if (src)
+        memcpy(v, src, 3 * sizeof *v);
+    return src != NULL;
+}
+
+/* The largest finite velocity component at the start of the run. */
+static double start_vmax(const struct gravel *g)
+{
+    const struct start_copy *c = start_copy(g);
+    if (c)
+        return c->vmax;
+    double vmax = 0;
+    for (int k = 0; k < 3 * g->atoms.n; k++)
+        if (isfinite(g->atoms.v[k]))
+            vmax = fmax(vmax, fabs(g->atoms.v[k]));
+    return vmax;
+}
+
+/* Index of tag among n tags, or -1. */
+static int index_of(const int64_t *tags, int n, long long tag)
+{
+    for (int i = 0; i < n; i++)
+        if (tags[i] == tag)
             return i;
     return -1;
+}
+
+/* The radius of the atom of `tag` (host arrays, any order). */
+static double radius_of(const struct gravel *g, long long tag)
+{
+    int i = index_of(g->atoms.tag, g->atoms.n, tag);
+    return i >= 0 ? g->atoms.radius[i] : 0;
 }
 
 static double norm3(const double *a)
@@ -69,21 +138,22 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
     int w = snprintf(out, len, "atom %lld has position (%g, %g, %g) and velocity (%g, %g, %g)",
                      tag, x[0], x[1], x[2], v[0], v[1], v[2]);
     size_t o = w > 0 && (size_t)w < len ? (size_t)w : len - 1;
-    const struct atoms *a = &g->atoms;
-    int i = host_index(g, tag);
+    const struct start_view a = start_of_run(g);
+    int i = index_of(a.tag, a.n, tag);
     if (i < 0)
         return 0;
-    const double *xi = a->x + 3 * i, *vi = a->v + 3 * i;
+    const double *xi = a.x + 3 * i;
+    double radi = radius_of(g, tag);
     long long start = (long long)g->firststep;
     /* the nearest other atom at the start of the run (periodic images) */
     int jmin = -1;
     double dmin = INFINITY;
-    for (int j = 0; j < a->n; j++) {
+    for (int j = 0; j < a.n; j++) {
         if (j == i)
             continue;
         double dx[3];
         for (int q = 0; q < 3; q++) {
-            dx[q] = a->x[3 * j + q] - xi[q];
+            dx[q] = a.x[3 * j + q] - xi[q];
             double l = g->dom.hi[q] - g->dom.lo[q];
             if (g->dom.periodic[q] && l > 0)
                 dx[q] -= l * round(dx[q] / l);
@@ -95,30 +165,30 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
         }
     }
     if (jmin >= 0) {
-        double ri = a->radius[i], rj = a->radius[jmin];
+        double ri = radi, rj = radius_of(g, a.tag[jmin]);
         double overlap = ri + rj - dmin, rs = ri < rj ? ri : rj;
         if (dmin <= 1e-12 * (ri + rj)) {
             snprintf(out + o, len - o, "; at the start of the run (step %lld) atom %lld and atom "
                                        "%lld were at the same position (%.10g, %.10g, %.10g), "
                                        "so their contact has no normal direction",
-                     start, tag, (long long)a->tag[jmin], xi[0], xi[1], xi[2]);
+                     start, tag, (long long)a.tag[jmin], xi[0], xi[1], xi[2]);
             return 1;
         }
         if (rs > 0 && overlap > 0.5 * rs) {
             snprintf(out + o, len - o, "; at the start of the run (step %lld) atom %lld "
                                        "overlapped atom %lld by %.3g (%.0f %% of the smaller "
                                        "radius %.4g; centres %.4g apart)",
-                     start, tag, (long long)a->tag[jmin], overlap, 100 * overlap / rs, rs, dmin);
+                     start, tag, (long long)a.tag[jmin], overlap, 100 * overlap / rs, rs, dmin);
             return 1;
         }
     }
-    double s = norm3(vi);
-    if (!isfinite(s) || (a->radius[i] > 0 && s * g->dt > a->radius[i])) {
+    double vi[3];
+    if (start_fast(g, tag, vi)) {
         char step[160];
         per_step(g, vi, step, sizeof step);
         snprintf(out + o, len - o, "; at the start of the run (step %lld) its velocity was "
                                    "(%.6g, %.6g, %.6g), more than its radius %.4g per step%s",
-                 start, vi[0], vi[1], vi[2], a->radius[i], step);
+                 start, vi[0], vi[1], vi[2], radi, step);
         return 1;
     }
     return 0;
@@ -129,16 +199,18 @@ void diag_time_step(const struct gravel *g, char *out, size_t len)
     const struct pair *p = g->styles.pair;
     if (p && p->caps.collision_time && g->atoms.n > 0) {
         double m = 0, r = 0, vmax = 0;
-        /* lightest particle of the host copy (run start) */
+        int64_t mtag = 0;
+        /* lightest particle (the lowest tag of equals: any order of the arrays); the
+         * fastest at the run start */
         for (int k = 0; k < g->atoms.n; k++) {
-            if (m == 0 || g->atoms.rmass[k] < m) {
-                m = g->atoms.rmass[k];
+            double mk = g->atoms.rmass[k];
+            if (m == 0 || mk < m || (mk == m && g->atoms.tag[k] < mtag)) {
+                m = mk;
                 r = g->atoms.radius[k];
+                mtag = g->atoms.tag[k];
             }
-            for (int d = 0; d < 3; d++)
-                if (isfinite(g->atoms.v[3 * k + d]))
-                    vmax = fmax(vmax, fabs(g->atoms.v[3 * k + d]));
         }
+        vmax = start_vmax(g);
         double tc = pair_collision_time(&p->caps, m, r, vmax > 0 ? 2 * vmax : 0);
         if (isfinite(tc) && tc / g->dt >= 10)
             snprintf(out, len,

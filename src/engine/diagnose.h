@@ -2,8 +2,10 @@
  * that left the box or became non-finite, its neighbour and its speed.
  *
  * Pure functions over the host state; neighbor.c reads the device values of
- * the particle and calls them. The host copy of the atoms is the state at the
- * start of the current run (g->firststep). */
+ * the particle and calls them. The state at the start of the current run
+ * (g->firststep) is the host copy of the atoms, or, when the run's device
+ * buffers are the host arrays themselves (engine.c), the engine's copy of
+ * what these functions read of it (struct start_copy). */
 #ifndef GR_DIAGNOSE_H
 #define GR_DIAGNOSE_H
 
@@ -25,6 +27,10 @@ void diag_lost_atom(const struct gravel *g, long long tag, const double x[3],
  * only). */
 int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], const double v[3],
                    char *out, size_t len);
+
+/* 1 when velocity v moves an atom of this radius more than its radius per
+ * step, or is not finite: what diag_nonfinite blames at the run start. */
+int diag_fast(const struct gravel *g, const double v[3], double radius);
 
 /* "; probable cause: ..." from the time step against the collision time of
  * the contact model. When the time step resolves the collision (>= 10 steps

@@ -14,6 +14,7 @@
 
 #include "accuracy.h"
 #include "atoms.h"
+#include "diagnose.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
@@ -102,17 +103,49 @@ static void release_set(struct dev_atoms *s)
     release_mem(&s->xlo);
 }
 
+/* In double precision on a CPU device on host memory the per-atom set is
+ * the host arrays themselves (the same bytes: origin 0, REAL = double, raw
+ * fields as they are): one copy of the atoms instead of two. */
+static int share_host(const struct engine *e) { return e->ocl.host_unified && !e->single; }
+
+int eng_shares_host(struct gravel *g) { return share_host(g->eng); }
+
+static uint64_t host_key(const struct atoms *at)
+{
+    uint64_t h = 1469598103934665603ull ^ (uint64_t)at->cap;
+#define KEY(name, ctype, dev, width, when, life, sect, what)                                   \
+    h = (h ^ (uint64_t)(uintptr_t)at->name) * 1099511628211ull;
+    ATOM_FIELDS(KEY)
+#undef KEY
+    return h;
+}
+
+/* A shared set's host arrays hold the capacity first, so that nothing
+ * moves them while it exists (fix pour's atoms_add stays within it). */
 static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
 {
     struct engine *e = g->eng;
+    struct atoms *at = &g->atoms;
     size_t n = (size_t)cap;
+    s->shared = share_host(e);
+    if (s->shared)
+        atoms_reserve(g, cap);
 #define ALLOC(name, ctype, dev, width, when, life, sect, what)                                 \
     if (field_on(g, when))                                                                    \
-        s->name = eng_alloc(g, n * field_bytes(e, dev, sizeof(ctype), width), what);
+        s->name = s->shared ? ocl_wrap(g, &e->ocl, at->name, n * sizeof(ctype) * (width), what) \
+                            : eng_alloc(g, n * field_bytes(e, dev, sizeof(ctype), width), what);
     ATOM_FIELDS(ALLOC)
 #undef ALLOC
     if (e->single)
         s->xlo = eng_alloc(g, 3 * n * e->rsz, "positions (low parts)");
+    s->shared_key = s->shared ? host_key(at) : 0;
+}
+
+/* 1 when the set is still what share_host() asks for, over the current
+ * host arrays. */
+static int sharing_current(struct gravel *g, const struct dev_atoms *s)
+{
+    return s->shared == share_host(g->eng) && (!s->shared || s->shared_key == host_key(&g->atoms));
 }
 
 /* 1 when the set holds exactly the fields the current run needs. */
@@ -126,14 +159,28 @@ static int set_matches_run(struct gravel *g, const struct dev_atoms *s)
     return ok;
 }
 
+size_t eng_atom_bytes(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    if (share_host(e))
+        return 0; /* the host arrays */
+    size_t b = e->single ? 3 * e->rsz : 0; /* xlo */
+#define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
+    if (field_on(g, when))                                                                    \
+        b += field_bytes(e, dev, sizeof(ctype), width);
+    ATOM_FIELDS(BYTES)
+#undef BYTES
+    return b;
+}
+
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
  * before upload only. */
 void eng_reserve(struct gravel *g, int n)
 {
     struct engine *e = g->eng;
-    if (n <= e->cap && e->a.x && set_matches_run(g, &e->a))
+    if (n <= e->cap && e->a.x && set_matches_run(g, &e->a) && sharing_current(g, &e->a))
         return;
-    int cap = n > 16 ? n + n / 8 : 16;
+    int cap = n > 16 ? n : 16; /* exactly: insertions are reserved (fix reserve) */
     release_set(&e->a);
     alloc_set(g, &e->a, cap);
     e->cap = cap;
@@ -146,6 +193,8 @@ static void put_atoms(struct gravel *g, int first, int n)
 {
     struct dev_atoms *s = &g->eng->a;
     const struct atoms *at = &g->atoms;
+    if (s->shared)
+        return; /* the device reads the host arrays */
 #define PUT(name, ctype, dev, width, when, life, sect, what)                                   \
     if (s->name)                                                                              \
         field_put(g, s, s->name, dev, sizeof(ctype), width, first, n, at->name);
@@ -188,6 +237,48 @@ static uint64_t tag_checksum(const struct atoms *a)
     return h ? h : 1;
 }
 
+static void free_start(struct start_copy *c)
+{
+    free(c->x);
+    free(c->tag);
+    free(c->fast_tag);
+    free(c->fast_v);
+    memset(c, 0, sizeof *c);
+}
+
+/* The run start's copy for diagnose.c when the run writes the host arrays
+ * (what diag_nonfinite and diag_time_step read, no more). */
+static void keep_start(struct gravel *g)
+{
+    struct start_copy *c = &g->eng->start;
+    const struct atoms *at = &g->atoms;
+    free_start(c);
+    if (!g->eng->a.shared || at->n == 0)
+        return;
+    size_t n = (size_t)at->n;
+    c->x = gr_malloc(g, 3 * n * sizeof *c->x);
+    c->tag = gr_malloc(g, n * sizeof *c->tag);
+    memcpy(c->x, at->x, 3 * n * sizeof *c->x);
+    memcpy(c->tag, at->tag, n * sizeof *c->tag);
+    c->n = at->n;
+    for (size_t i = 0; i < n; i++) {
+        const double *v = at->v + 3 * i;
+        for (int q = 0; q < 3; q++)
+            if (isfinite(v[q]))
+                c->vmax = fmax(c->vmax, fabs(v[q]));
+        if (diag_fast(g, v, at->radius[i])) {
+            if (c->nfast == c->fast_cap) {
+                c->fast_cap = c->fast_cap ? 2 * c->fast_cap : 16;
+                c->fast_tag = gr_realloc(g, c->fast_tag, (size_t)c->fast_cap * sizeof *c->fast_tag);
+                c->fast_v = gr_realloc(g, c->fast_v, 3 * (size_t)c->fast_cap * sizeof *c->fast_v);
+            }
+            c->fast_tag[c->nfast] = at->tag[i];
+            memcpy(c->fast_v + 3 * c->nfast, v, 3 * sizeof *v);
+            c->nfast++;
+        }
+    }
+}
+
 void eng_upload(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -200,6 +291,7 @@ void eng_upload(struct gravel *g)
         nbr_invalidate(g);
     e->a.n = n;
     put_atoms(g, 0, n);
+    keep_start(g);
     /* per-atom state of fixes: keep while the atoms are the same, else zero */
     eng_fix_state(g, keep);
     e->active = 1;
@@ -244,11 +336,15 @@ void run_sync_host(struct gravel *g)
     if (n > at->cap)
         atoms_reserve(g, n);
     at->n = n;
+    if (s->shared)
+        eng_finish(g); /* the host arrays are the device's: only wait for its work */
+    else {
 #define GET(name, ctype, dev, width, when, life, sect, what)                                   \
     if (s->name)                                                                              \
         field_get(g, s, s->name, dev, sizeof(ctype), width, n, at->name);
-    ATOM_FIELDS(GET)
+        ATOM_FIELDS(GET)
 #undef GET
+    }
     e->tag_sum = tag_checksum(at);
     e->n_at_sync = n;
 }
@@ -501,6 +597,7 @@ void engine_destroy(struct gravel *g)
     free(e->kern);
     free(e->kern_wg);
     release_set(&e->a);
+    free_start(&e->start);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->peratom)

@@ -16,7 +16,16 @@
 /* Build the program for the active styles; upload the host atoms. */
 void eng_prepare(struct gravel *g);
 void eng_upload(struct gravel *g);
-/* Make sure the per-atom set holds at least n atoms (contents not kept). */
+/* Device bytes of one atom slot of the run's per-atom set (every field the
+ * run holds, src/state/atom_fields.h). */
+size_t eng_atom_bytes(struct gravel *g);
+/* 1 when the run's per-atom device buffers are the host arrays (a CPU
+ * device on host memory, double precision; env GRAVEL_HOST_SHARE=0: never):
+ * eng_atom_bytes() is then 0, and the run keeps a copy of the start's
+ * positions, velocities and tags on the host (diagnose.h). */
+int eng_shares_host(struct gravel *g);
+/* Make sure the per-atom set holds at least n atoms (exactly n when it
+ * grows; contents not kept). */
 void eng_reserve(struct gravel *g, int n);
 /* The fixes' per-atom state (fix.h), the one allocation path: each fix with
  * peratom_bytes gets zero-filled buffers of the run's capacity unless it

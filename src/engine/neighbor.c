@@ -28,6 +28,7 @@
 #include "fix.h"
 #include "kargs.h"
 #include "log.h"
+#include "memfit.h"
 #include "pair.h"
 
 #define NCHUNK_MAX 256
@@ -219,6 +220,43 @@ static size_t recf_bytes(const struct engine *e)
 }
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
+
+/* The buffers of grow_atoms, per atom slot. */
+static size_t atom_bytes(const struct engine *e) { return 3 * e->rsz + 7 * sizeof(cl_int); }
+
+/* ci, cj, cslot and the history row of one contact. */
+static size_t contact_bytes(const struct engine *e)
+{
+    return 4 * sizeof(cl_int) + (e->history ? (size_t)e->hist_n * e->rsz : 0);
+}
+
+/* recf and rect of one contact. */
+static size_t pair_bytes(const struct engine *e)
+{
+    return recf_bytes(e) + (e->rotation ? cf_bytes(e) : 0);
+}
+
+size_t nbr_atom_bytes(struct gravel *g)
+{
+    int maxn = get(g)->list.maxn;
+    return atom_bytes(g->eng) + (size_t)(maxn > 0 ? maxn : 8) * sizeof(cl_int);
+}
+
+size_t nbr_contact_bytes(struct gravel *g)
+{
+    return contact_bytes(g->eng) + pair_bytes(g->eng);
+}
+
+size_t nbr_capacity(size_t ncontact) { return grown(ncontact); }
+
+size_t nbr_held_bytes(struct gravel *g)
+{
+    const struct engine *e = g->eng;
+    const struct nbr *b = get(g);
+    size_t rows = b->list.nlist ? (size_t)e->cap * (size_t)b->list.maxn * sizeof(cl_int) : 0;
+    return b->cap_atoms * atom_bytes(e) + rows + b->cap_contact * contact_bytes(e) +
+           b->cap_pair * pair_bytes(e) + 3 * b->cap_cells * sizeof(cl_int);
+}
 
 /* Contact buffers for at least nc contacts (contents not kept): ci, cj
  * cslot and shear (cap_contact); the incidence records recf, rect (cap_pair) separately,
@@ -936,6 +974,8 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
     nbr_scan(g, l->ncount, l->ioff, n); /* rows packed: 2 incidences per contact */
     cl_int total = 0;
     eng_read(g, l->coff, (size_t)n * sizeof(cl_int), sizeof total, &total);
+    if ((size_t)total > b->cap_contact || (size_t)total > b->cap_pair)
+        mem_fit_contacts(g, (size_t)total); /* all of the contacts' buffers, before any */
     alloc_contacts(g, b, (size_t)total);
     l->ncontact = total;
     reset_flags(g, b);

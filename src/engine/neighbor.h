@@ -89,4 +89,13 @@ void nbr_state_free(struct nbr_state *s);
  * Lx Ly Lz (0 = not periodic) and the tilts xy xz yz. */
 void nbr_list_box(const struct nbr_list *l, double box[6]);
 
+/* Memory (src/engine/memfit.c): device bytes per atom slot (reference
+ * positions, cell and sort indices, counts, offsets and the list rows), per
+ * contact (partners, incidences, history, incidence records), the contact
+ * capacity allocated for ncontact contacts, and the bytes held now. */
+size_t nbr_atom_bytes(struct gravel *g);
+size_t nbr_contact_bytes(struct gravel *g);
+size_t nbr_capacity(size_t ncontact);
+size_t nbr_held_bytes(struct gravel *g);
+
 #endif

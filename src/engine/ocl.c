@@ -157,6 +157,10 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     cl_device_type dt;
     OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_TYPE, sizeof dt, &dt, NULL));
     o->is_gpu = (dt & CL_DEVICE_TYPE_GPU) != 0;
+    cl_bool unified = CL_FALSE;
+    clGetDeviceInfo(o->device, CL_DEVICE_HOST_UNIFIED_MEMORY, sizeof unified, &unified, NULL);
+    const char *share = getenv("GRAVEL_HOST_SHARE");
+    o->host_unified = !o->is_gpu && unified && !(share && !strcmp(share, "0"));
     char ext[4096] = "";
     clGetDeviceInfo(o->device, CL_DEVICE_EXTENSIONS, sizeof ext, ext, NULL);
     ext[sizeof ext - 1] = '\0';
@@ -169,6 +173,16 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
     clGetDeviceInfo(o->device, CL_DEVICE_GLOBAL_MEM_SIZE, sizeof gmem, &gmem, NULL);
     o->max_alloc = (size_t)maxalloc;
     o->global_mem = (size_t)gmem;
+    const char *cap = getenv("GRAVEL_DEVICE_MEMORY");
+    if (cap && *cap) { /* a smaller device, e.g. to try a GPU's size on the CPU */
+        char *end;
+        double v = strtod(cap, &end);
+        if (*end || !(v >= 1 << 20) || v > 1e18)
+            gr_error(g, "GRAVEL_DEVICE_MEMORY must be a number of bytes >= 1048576, got '%.32s'",
+                     cap);
+        if (!o->global_mem || (size_t)v < o->global_mem)
+            o->global_mem = (size_t)v;
+    }
     size_t maxwg = 1;
     OCL_CHECK(g, clGetDeviceInfo(o->device, CL_DEVICE_MAX_WORK_GROUP_SIZE, sizeof maxwg, &maxwg,
                                  NULL));
@@ -323,9 +337,7 @@ static void CL_CALLBACK on_release(cl_mem m, void *data)
     atomic_fetch_sub(&mem_live, (long long)(size_t)data);
 }
 
-/* Address space this process may still take under its limit (ulimit -v),
- * with the limit in *limit; SIZE_MAX when there is none. */
-static size_t address_space_left(size_t *limit)
+size_t ocl_address_left(size_t *limit)
 {
     struct rlimit rl;
     *limit = SIZE_MAX;
@@ -348,7 +360,7 @@ cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what
     if (bytes == 0)
         bytes = 16;
     /* stop cleanly before the OpenCL runtime runs out of memory (PoCL aborts) */
-    size_t limit, left = address_space_left(&limit);
+    size_t limit, left = ocl_address_left(&limit);
     if (left != SIZE_MAX && bytes + ((size_t)16 << 20) > left)
         gr_error(g, "cannot allocate %zu bytes for the %s: the process may allocate only %zu "
                     "more bytes under its address-space limit of %zu bytes (ulimit -v); %lld "
@@ -378,6 +390,17 @@ cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what
         while (now > peak && !atomic_compare_exchange_weak(&mem_peak, &peak, now))
             ;
     }
+    return m;
+}
+
+cl_mem ocl_wrap(struct gravel *g, struct ocl *o, void *host, size_t bytes, const char *what)
+{
+    cl_int err;
+    cl_mem m = clCreateBuffer(o->ctx, CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR, bytes ? bytes : 16,
+                              host, &err);
+    if (err != CL_SUCCESS)
+        gr_error(g, "OpenCL clCreateBuffer over the host's %s (%zu bytes) failed: %s", what,
+                 bytes, ocl_errname(err));
     return m;
 }
 

@@ -22,11 +22,15 @@ struct ocl {
     char name[256];             /* device name as the driver reports it */
     char version[256];          /* driver + platform version (part of the cache key) */
     int is_gpu;
+    int host_unified;           /* a CPU device on host memory (CL_DEVICE_HOST_UNIFIED_MEMORY):
+                                 * buffers may be the host's arrays (ocl_wrap); env
+                                 * GRAVEL_HOST_SHARE=0 turns that off */
     int fp64;                   /* device supports cl_khr_fp64 */
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (device.c) */
     size_t max_alloc;           /* CL_DEVICE_MAX_MEM_ALLOC_SIZE */
-    size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE */
+    size_t global_mem;          /* CL_DEVICE_GLOBAL_MEM_SIZE, or env GRAVEL_DEVICE_MEMORY
+                                 * (bytes) when that is less */
     int atoms_hint;             /* atoms the buffers are sized for (error messages) */
     size_t wg;                  /* work-group size of every launch (device.c): env
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
@@ -41,6 +45,10 @@ struct ocl {
 long long ocl_mem_live(void);
 long long ocl_mem_peak(void);
 void ocl_mem_reset_peak(void);
+
+/* Address space this process may still take under its limit (ulimit -v),
+ * with the limit in *limit; SIZE_MAX (both) when there is none. */
+size_t ocl_address_left(size_t *limit);
 
 /* Symbolic name of a CL error code ("CL_OUT_OF_RESOURCES"). */
 const char *ocl_errname(cl_int err);
@@ -64,6 +72,10 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
 cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name);
 /* Checked buffer allocation; size 0 allocates a minimal buffer. */
 cl_mem ocl_alloc(struct gravel *g, struct ocl *o, size_t bytes, const char *what);
+/* A buffer that is the host memory at `host` (CL_MEM_USE_HOST_PTR; aligned
+ * to the device's CL_DEVICE_MEM_BASE_ADDR_ALIGN so the runtime keeps no
+ * copy of its own). Not counted in ocl_mem_live: it takes no new memory. */
+cl_mem ocl_wrap(struct gravel *g, struct ocl *o, void *host, size_t bytes, const char *what);
 /* Release every object (safe on a zeroed or partly built struct). */
 void ocl_release(struct ocl *o);
 

@@ -35,6 +35,7 @@
 #include "kargs.h"
 #include "group.h"
 #include "log.h"
+#include "memfit.h"
 #include "neighbor.h"
 #include "output.h"
 #include "pair.h"
@@ -197,6 +198,7 @@ static void reserve_insertions(struct gravel *g, bigint nsteps)
     e->insert_rmax = rmax;
     if (extra > 200000000L - g->atoms.n)
         gr_error(g, "too many atoms to insert (%ld)", extra);
+    mem_fit_run(g, g->atoms.n + (int)extra); /* before the first large allocation */
     if (extra)
         eng_reserve(g, g->atoms.n + (int)extra);
 }

@@ -4,14 +4,37 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 #include "error.h"
 
-/* Grow one field to cap atoms; the new slots are zero. */
+/* The arrays are page mappings: page-aligned (a CPU device can use them as
+ * its buffers, engine.c) and zero until written, so the capacity beyond the
+ * atoms costs address space, not memory. */
+static void *field_alloc(struct gravel *g, size_t bytes)
+{
+    void *p = mmap(NULL, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED)
+        gr_error(g, "cannot allocate %zu bytes for the atoms' arrays", bytes);
+    return p;
+}
+
+static void field_free(void *p, size_t bytes)
+{
+    if (p)
+        munmap(p, bytes);
+}
+
+/* Grow one field from a->cap to cap atoms; the new slots are zero. */
 #define GROW(name, ctype, dev, width, when, life, sect, what)                                  \
-    a->name = gr_realloc(g, a->name, (size_t)cap * (width) * sizeof(ctype));                   \
-    memset(a->name + (size_t)a->cap * (width), 0,                                             \
-           (size_t)(cap - a->cap) * (width) * sizeof(ctype));
+    {                                                                                         \
+        size_t old_ = (size_t)a->cap * (width) * sizeof(ctype);                               \
+        ctype *p_ = field_alloc(g, (size_t)cap * (width) * sizeof(ctype));                    \
+        if (a->name)                                                                          \
+            memcpy(p_, a->name, old_);                                                        \
+        field_free(a->name, old_);                                                            \
+        a->name = p_;                                                                         \
+    }
 
 void atoms_reserve(struct gravel *g, int n)
 {
@@ -84,7 +107,8 @@ void atoms_set_ntypes(struct gravel *g, int ntypes)
 
 void atoms_free(struct atoms *a)
 {
-#define FREE(name, ctype, dev, width, when, life, sect, what) free(a->name);
+#define FREE(name, ctype, dev, width, when, life, sect, what)                                  \
+    field_free(a->name, (size_t)a->cap * (width) * sizeof(ctype));
     ATOM_FIELDS(FREE)
 #undef FREE
     free(a->order);
