@@ -230,12 +230,14 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
         } else if (!strcmp(name, "Types")) {
             section(g, r, m, name, 1, tmp);
             for (int i = 0; i < nat; i++) {
-                m->type[i] = (int)tmp[i] + toff;
-                if (tmp[i] != floor(tmp[i]) || m->type[i] <= 0 ||
-                    m->type[i] > g->atoms.ntypes)
+                /* checked as a double: a huge, fractional or NaN value (or a
+                 * large offset) never reaches an int conversion */
+                double t = tmp[i] + toff;
+                if (tmp[i] != floor(tmp[i]) || !(t >= 1 && t <= g->atoms.ntypes))
                     gr_error(g, "molecule file '%s': invalid atom type %g for atom %d "
                                 "(1..%d with offset %d)", path, tmp[i], i + 1,
                              g->atoms.ntypes, toff);
+                m->type[i] = (int)t;
                 if (m->type[i] > m->ntypes)
                     m->ntypes = m->type[i];
             }
@@ -262,9 +264,10 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
             section(g, r, m, name, 1, tmp);
             int64_t mx = 0;
             for (int i = 0; i < nat; i++) {
+                if (tmp[i] != floor(tmp[i]) || !(tmp[i] >= 1 && tmp[i] <= 2147483647.0))
+                    gr_error(g, "molecule file '%s': invalid molecule ID %g for atom %d "
+                                "(an integer 1..2147483647)", path, tmp[i], i + 1);
                 m->molecule[i] = (int64_t)tmp[i];
-                if (m->molecule[i] <= 0)
-                    gr_error(g, "molecule file '%s': invalid molecule ID %g", path, tmp[i]);
                 mx = m->molecule[i] > mx ? m->molecule[i] : mx;
             }
             m->nmolecules = (int)mx;
