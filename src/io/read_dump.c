@@ -351,6 +351,27 @@ bigint rd_next(struct gravel *g, struct rdump *rd, bigint ncurrent, bigint nlast
     return step;
 }
 
+/* The name of field k's column for messages: the labels read from the
+ * header live in the line buffer, which each atom line overwrites (or moves),
+ * so the field's own name or `label` is used. */
+static const char *column(const struct rdump *rd, int k)
+{
+    return rd->label[k] ? rd->label[k] : field_name[rd->type[k]];
+}
+
+/* The ID, type and image flag columns become integers: a value that is not
+ * an integer, or that no conversion could hold (IDs are exact in a double up
+ * to 2^53; types and image flags are ints), is an error naming the column,
+ * before any conversion. */
+static void check_integer(struct gravel *g, const char *fn, int t, const char *col, double v)
+{
+    double max = t == F_ID ? 9007199254740992.0 : 2147483647.0;
+    if ((t == F_ID || t == F_TYPE || (t >= F_IX && t <= F_IZ)) &&
+        (v != floor(v) || !(fabs(v) <= max)))
+        gr_error(g, "dump file '%s': %.17g in column %s is not an integer of magnitude at most "
+                    "%.17g", fn, v, col, max);
+}
+
 /* The rest of the header (atoms, box, columns) and the field columns. */
 static void read_header(struct gravel *g, struct rdump *rd)
 {
@@ -456,7 +477,8 @@ static void read_header(struct gravel *g, struct rdump *rd)
             double v = strtod(w[rd->index[k]], &end);
             if (end == w[rd->index[k]] || *end)
                 gr_error(g, "dump file '%s': bad number '%.32s' in column %s", fn,
-                         w[rd->index[k]], lab[rd->index[k]]);
+                         w[rd->index[k]], column(rd, k));
+            check_integer(g, fn, rd->type[k], column(rd, k), v);
             rd->fields[(size_t)i * rd->nfield + k] = v;
         }
     }

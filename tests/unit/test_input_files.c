@@ -127,6 +127,47 @@ TEST(molecule_integer_ranges)
     gr_destroy(g);
 }
 
+/* dump files: ID, type and image flag columns must hold integers that fit
+ * (fuzzer: an image flag of 1e12 converted to int, UBSan) */
+static void check_dump_value(const char *id, const char *type, const char *ix, const char *what)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n"
+             "-1 1\n-1 1\n-1 1\nITEM: ATOMS id type x y z ix\n1 1 0 0 0 0\n%s %s 0.5 0 0 %s\n",
+             id, type, ix);
+    write_text(tmp_path("d.dump"), text);
+    SCRIPT("%s\nread_dump %s 0 x y z ix add keep\n", box, tmp_path("d.dump"));
+    if (what) {
+        CHECK_ERROR(script, what, 4);
+        return;
+    }
+    struct gravel *g = test_engine();
+    CHECK(test_script(g, script) == GR_OK && g->atoms.n == 2);
+    gr_destroy(g);
+}
+
+TEST(dump_integer_columns)
+{
+    check_dump_value("2", "2", "-3", NULL);
+    check_dump_value("9007199254740992", "2", "1", NULL);
+    check_dump_value("2", "2", "1e12",
+                     "1000000000000 in column ix is not an integer of magnitude at most "
+                     "2147483647");
+    check_dump_value("2", "1.5", "0", "1.5 in column type is not an integer");
+    check_dump_value("2", "nan", "0", "nan in column type is not an integer");
+    check_dump_value("9223372036854775807", "1", "0",
+                     "9.2233720368547758e+18 in column id is not an integer of magnitude at most "
+                     "9007199254740992");
+    /* a bad number on an atom line longer than the buffer that held the column
+     * labels: the message names the field (it used to read the labels from the
+     * freed buffer) */
+    char pad[700];
+    memset(pad, '0', sizeof pad - 5);
+    memcpy(pad + sizeof pad - 5, "1.5x", 5);
+    check_dump_value("2", "1", pad, "bad number '00000000000000000000000000000000' in column ix");
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gravel-test-files-XXXXXX");
@@ -135,6 +176,7 @@ int main(void)
     RUN(special_files_every_reader);
     RUN(mesh_size_limit);
     RUN(molecule_integer_ranges);
+    RUN(dump_integer_columns);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     return system(cmd) != 0;
