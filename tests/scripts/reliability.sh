@@ -3,7 +3,9 @@
 # an endless device, -log on a full disk, print append at a file size limit
 # (no partial line), `run ... post no` (only the Loop time line), lost and
 # non-finite atoms named with what was seen, and a run
-# under an address-space limit (a clean stop with the numbers). One
+# under an address-space limit (a clean stop with the numbers); issue 24:
+# commands that run themselves through a variable (if, run every) and mesh
+# files that are a FIFO or a device. One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
 bin="$(pwd)/bin/gravel"
@@ -131,3 +133,38 @@ check absurd_velocity '[ $rc -eq 1 ] && grep -q "ERROR: run: Lost atoms: .* atom
 deck="$root/inputs/bench/dense.in"
 (ulimit -v 900000; "$bin" -in "$deck" -var L 100 -var nsteps 10 -log none) > out 2>&1; rc=$?
 check memory_limit_clean_stop '[ $rc -eq 1 ] && grep -q "ERROR: run: cannot allocate [0-9]* bytes for the .*: the process may allocate only [0-9]* more bytes under its address-space limit of 921600000 bytes (ulimit -v)" out && ! grep -q "Aborted\|bad_alloc\|Assertion" out'
+
+# issue 24: a variable that expands to a command running itself stops at the nesting limit,
+# at once, naming the line that started it (it overflowed the stack: SIGSEGV, after ~13 s
+# of nested runs through run every)
+cat > in.ifself <<'IN'
+variable c string "if 1 then ${c}"
+print start
+${c}
+IN
+start=$(date +%s)
+timeout 60 "$bin" -in in.ifself -log none > out 2>&1; rc=$?
+check if_self_nesting '[ $rc -eq 1 ] && [ $(( $(date +%s) - start )) -lt 10 ] && grep -q "^ERROR: if: commands run by if or run every nested more than 100 deep (does a variable expand to a command that runs itself?) (in.ifself:3)$" out'
+cat > in.runself <<'IN'
+region b block 0 4 0 4 0 4
+create_box 1 b
+create_atoms 1 single 1 1 1
+mass 1 1
+pair_style gran/hooke 1000 0 0 0 0 0
+pair_coeff * *
+fix 1 all nve/sphere
+variable r string "run 1 every 1 ${r}"
+run 1 every 1 "${r}"
+IN
+start=$(date +%s)
+timeout 60 "$bin" -in in.runself -log none > out 2>&1; rc=$?
+check run_every_self_nesting '[ $rc -eq 1 ] && [ $(( $(date +%s) - start )) -lt 30 ] && grep -q "^ERROR: run: commands run by if or run every nested more than 100 deep (does a variable expand to a command that runs itself?) (in.runself:9)$" out && [ $(grep -c "^Loop time" out) -eq 101 ]'
+
+# issue 24: a mesh file that is a FIFO or /dev/zero is refused at once (it blocked forever,
+# or read until memory ran out)
+mkfifo mesh.fifo
+for f in mesh.fifo /dev/zero; do
+    printf 'region b block -1 1 -1 1 -1 1\ncreate_box 1 b\nfix m all mesh/surface file %s type 1\n' "$f" > in.mesh
+    timeout 20 "$bin" -in in.mesh -log none > out 2>&1; rc=$?
+    check "mesh_special_file_$(basename $f)" '[ $rc -eq 1 ] && grep -q "^ERROR: fix: fix mesh/surface: $f: cannot read mesh file: is a .*, not a regular file (in.mesh:3)$" out'
+done
