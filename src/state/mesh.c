@@ -267,7 +267,7 @@ static unsigned char *slurp(const char *path, size_t *len, char *err, size_t err
     char why[160];
     unsigned char *buf = fio_read_all(path, MESH_MAX_BYTES, len, why, sizeof why);
     if (!buf)
-        fail(err, errlen, "%s: cannot read mesh file: %s", path, why);
+        fail(err, errlen, "%s: cannot open mesh file: %s", path, why);
     return buf;
 }
 

@@ -166,5 +166,5 @@ mkfifo mesh.fifo
 for f in mesh.fifo /dev/zero; do
     printf 'region b block -1 1 -1 1 -1 1\ncreate_box 1 b\nfix m all mesh/surface file %s type 1\n' "$f" > in.mesh
     timeout 20 "$bin" -in in.mesh -log none > out 2>&1; rc=$?
-    check "mesh_special_file_$(basename $f)" '[ $rc -eq 1 ] && grep -q "^ERROR: fix: fix mesh/surface: $f: cannot read mesh file: is a .*, not a regular file (in.mesh:3)$" out'
+    check "mesh_special_file_$(basename $f)" '[ $rc -eq 1 ] && grep -q "^ERROR: fix: fix mesh/surface: $f: cannot open mesh file: is a .*, not a regular file (in.mesh:3)$" out'
 done

@@ -49,7 +49,7 @@ static void check_reader(const char *cmd, const char *what)
         SCRIPT("%s%s\n", box, line);
         snprintf(msg, sizeof msg, "%s'%s': %s", what, files[i], why[i]);
         if (!strcmp(what, "mesh"))
-            snprintf(msg, sizeof msg, "%s: cannot read mesh file: %s", files[i], why[i]);
+            snprintf(msg, sizeof msg, "%s: cannot open mesh file: %s", files[i], why[i]);
         time_t t0 = time(NULL);
         CHECK_ERROR(script, msg, 3);
         CHECK(time(NULL) - t0 < 5); /* refused, never waited on */
@@ -75,7 +75,7 @@ TEST(mesh_size_limit)
     CHECK(fp && ftruncate(fileno(fp), ((off_t)1 << 30) + 1) == 0);
     fclose(fp);
     SCRIPT("%sfix m all mesh/surface file %s type 1\n", box, big);
-    CHECK_ERROR(script, "cannot read mesh file: is 1073741825 bytes, more than the limit of "
+    CHECK_ERROR(script, "cannot open mesh file: is 1073741825 bytes, more than the limit of "
                         "1073741824 bytes", 3);
     unlink(big);
     /* fio_read_all itself: contents, length and the terminating NUL */
