@@ -222,6 +222,11 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
         }
         char name[64];
         snprintf(name, sizeof name, "%s", s);
+        /* each section once (a second Diameters section leaked the first) */
+        if ((!strcmp(name, "Coords") && have_x) || (!strcmp(name, "Types") && have_type) ||
+            (!strcmp(name, "Diameters") && m->radius) || (!strcmp(name, "Masses") && m->rmass) ||
+            (!strcmp(name, "Molecules") && m->molecule))
+            gr_error(g, "molecule file '%s' line %d: a second %s section", path, r->line, name);
         if (!strcmp(name, "Coords")) {
             section(g, r, m, name, 3, m->x);
             for (int i = 0; i < 3 * nat; i++)

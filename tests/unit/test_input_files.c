@@ -120,7 +120,22 @@ TEST(molecule_integer_ranges)
     write_text(mol, text);
     SCRIPT("%smolecule m %s toff 2147483647\n", box, mol);
     CHECK_ERROR(script, "invalid atom type 1 for atom 1 (1..2 with offset 2147483647)", 3);
+    /* a section given twice (fuzzer: the second Diameters section leaked the first) */
+    const char *twice[] = {"Coords\n\n1 0 0 0\n2 1 0 0\n", "Types\n\n1 1\n2 2\n",
+                           "Diameters\n\n1 1\n2 1\n", "Masses\n\n1 1\n2 1\n",
+                           "Molecules\n\n1 1\n2 1\n"};
+    for (int i = 0; i < 5; i++) {
+        snprintf(text, sizeof text, "%s2 2\n\n%s\n%s", head, twice[i], twice[i]);
+        write_text(mol, text);
+        char want[64];
+        snprintf(want, sizeof want, "line %d: a second %.*s section", i < 2 ? 14 : 19,
+                 (int)strcspn(twice[i], "\n"), twice[i]);
+        SCRIPT("%smolecule m %s\n", box, mol);
+        CHECK_ERROR(script, want, 3);
+    }
     /* the good file reads, with the offset applied */
+    snprintf(text, sizeof text, "%s2 2\n", head);
+    write_text(mol, text);
     SCRIPT("%smolecule m %s toff 0\nvariable ok equal 1\n", box, mol);
     struct gravel *g = test_engine();
     CHECK(test_script(g, script) == GR_OK && var_retrieve(g, "ok"));
