@@ -8,7 +8,8 @@
  * maxID (maxID the largest existing ID). Type, group bits, radius, mass,
  * velocity and angular velocity are carried. A copy outside a non-periodic
  * face of the new box is an error (LAMMPS: "did not assign all atoms"),
- * raised before anything changes. Replicating a non-periodic dimension
+ * raised before anything changes; so is a grid of more than 2147483647
+ * copies, with or without atoms. Replicating a non-periodic dimension
  * warns; nz > 1 in 2d is an error. `bbox` is accepted (the same result on
  * one process). Prints LAMMPS's lines: the new box and the atom count. */
 #include <math.h>
@@ -37,9 +38,15 @@ void cmd_replicate(struct gravel *g, int argc, char **argv)
     struct domain *dm = &g->dom;
     if (dm->dimension == 2 && nrep[2] != 1)
         gr_error(g, "cannot replicate a 2d simulation in z (nz must be 1)");
-    long long nr = (long long)nrep[0] * nrep[1] * nrep[2];
+    /* the copy count is an int, as in LAMMPS; checked in double (three ints
+     * overflow a long long), before any loop over the copies */
+    double nrd = (double)nrep[0] * nrep[1] * nrep[2];
     struct atoms *a = &g->atoms;
     int n0 = a->n;
+    if (nrd > 2147483647.0)
+        gr_error(g, "the replicated system is too big (%.0f copies of the box, at most "
+                    "2147483647)", nrd);
+    long long nr = (long long)nrd;
     if (nr * n0 > 200000000LL)
         gr_error(g, "the replicated system is too big (%lld atoms)", nr * n0);
     gr_print(g, "Replicating atoms ...\n");
@@ -80,7 +87,7 @@ void cmd_replicate(struct gravel *g, int argc, char **argv)
         gr_error(g, "out of memory");
     }
     int k = 0, bad = -1;
-    for (int ix = 0; ix < nrep[0]; ix++)
+    for (int ix = 0; ix < nrep[0] && n0 > 0; ix++) /* no atoms: only the box grows */
         for (int iy = 0; iy < nrep[1]; iy++)
             for (int iz = 0; iz < nrep[2]; iz++)
                 for (int i = 0; i < n0; i++, k++) {
@@ -114,7 +121,7 @@ void cmd_replicate(struct gravel *g, int argc, char **argv)
 
     /* commit: grow, then fill copies from the back so originals stay intact */
     atoms_reserve(g, ntot > 0 ? ntot : 1);
-    for (int c = (int)nr - 1; c >= 0; c--) {
+    for (int c = (int)nr - 1; c >= 0 && n0 > 0; c--) {
         int iz = c % nrep[2], iy = (c / nrep[2]) % nrep[1], ix = c / (nrep[2] * nrep[1]);
         int64_t toff = ((int64_t)iz * nrep[1] * nrep[0] + (int64_t)iy * nrep[0] + ix) * maxtag;
         for (int i = n0 - 1; i >= 0; i--) {

@@ -115,6 +115,63 @@ ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max)
     return (ssize_t)n;
 }
 
+unsigned char *fio_read_all(const char *path, size_t max, size_t *len, char *why,
+                            size_t whylen)
+{
+    const char *bad;
+    FILE *fp = fio_open_read(path, 0, &bad);
+    if (!fp) {
+        snprintf(why, whylen, "%s", bad);
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fileno(fp), &st) != 0) {
+        snprintf(why, whylen, "%s", strerror(errno));
+        fclose(fp);
+        return NULL;
+    }
+    if ((unsigned long long)st.st_size > max) {
+        snprintf(why, whylen, "is %lld bytes, more than the limit of %zu bytes",
+                 (long long)st.st_size, max);
+        fclose(fp);
+        return NULL;
+    }
+    /* sized by the file, but read to its end: it may have grown (or shrunk) */
+    size_t cap = (size_t)st.st_size + 1, n = 0;
+    unsigned char *buf = malloc(cap + 1);
+    while (buf) {
+        n += fread(buf + n, 1, cap - n, fp);
+        if (n < cap || ferror(fp))
+            break;
+        if (n > max)
+            break;
+        size_t nc = cap * 2 > max + 1 ? max + 1 : cap * 2;
+        unsigned char *nb = realloc(buf, nc + 1);
+        if (!nb) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = nb;
+        cap = nc;
+    }
+    int err = ferror(fp) ? (errno ? errno : EIO) : 0;
+    fclose(fp);
+    if (!buf || err || n > max) {
+        if (!buf)
+            snprintf(why, whylen, "%s", strerror(ENOMEM));
+        else if (err)
+            snprintf(why, whylen, "%s", strerror(err));
+        else
+            snprintf(why, whylen, "grew to more than the limit of %zu bytes while read", max);
+        free(buf);
+        return NULL;
+    }
+    buf[n] = 0;
+    *len = n;
+    return buf;
+}
+
 FILE *fio_open_write_checked(const char *path, int append, int *errp, const char **why)
 {
     *why = NULL;

@@ -1,4 +1,4 @@
-/* fileio.h - reading input files safely: scripts, data files, restart files.
+/* fileio.h - reading input files safely: scripts, data, restart, mesh files.
  *
  * Contracts:
  *  - fio_open_read() never blocks (a FIFO with no writer is rejected, not
@@ -24,6 +24,13 @@
 
 FILE *fio_open_read(const char *path, int streams, const char **why);
 ssize_t fio_getline(FILE *fp, char **buf, size_t *cap, size_t max);
+/* Read a whole regular file (fio_open_read's checks: no FIFO, device or
+ * directory) of at most `max` bytes into a new buffer with a NUL after its
+ * *len bytes. NULL on failure, with the reason in why[whylen] ("is a FIFO
+ * (named pipe), not a regular file", "is N bytes, more than the limit of M
+ * bytes", strerror): the size is checked before anything is allocated. */
+unsigned char *fio_read_all(const char *path, size_t max, size_t *len, char *why,
+                            size_t whylen);
 /* Open a file for writing (truncated, or appended to) whose first failed
  * write stores its errno in *errp (a stdio stream forgets why a buffered
  * write failed). Write failures also set the stream's error flag; closing

@@ -368,6 +368,14 @@ bigint rd_next(struct gravel *g, struct rdump *rd, bigint ncurrent, bigint nlast
     return step;
 }
 
+/* The name of field k's column for messages: the labels read from the
+ * header live in the line buffer, which each atom line overwrites (or moves),
+ * so the field's own name or `label` is used. */
+static const char *column(const struct rdump *rd, int k)
+{
+    return rd->label[k] ? rd->label[k] : field_name[rd->type[k]];
+}
+
 static double coord(const struct rdump *rd, int d, const double *fv);
 
 /* The largest atom ID read: LAMMPS's tag_check refuses IDs >= MAXTAGINT,
@@ -594,7 +602,7 @@ static void read_header(struct gravel *g, struct rdump *rd)
             double v = strtod(word, &end);
             if (end == word || *end)
                 gr_error(g, "dump file '%s' line %ld: bad number '%.32s' in column %s", fn,
-                         rd->lineno, word, lab[rd->index[k]]);
+                         rd->lineno, word, column(rd, k));
             check_value(g, rd, rd->ids[i], rd->type[k], v, word);
             rd->fields[(size_t)i * rd->nfield + k] = v;
         }

@@ -61,6 +61,7 @@ struct inp {
     struct dbuf expr;       /* the $(...) expression being evaluated */
     struct dbuf scratch;    /* inp_substitute's result */
     struct dbuf subin;      /* inp_substitute's input copy */
+    int nest;               /* commands run by commands (if, run every) now active */
     int (*allow)(int argc, char **argv);
     long max_commands, ncommands;
     size_t max_line;
@@ -685,15 +686,27 @@ int inp_string(struct gravel *g, const char *text, const char *name)
 
 /* ---- flow support ------------------------------------------------------------- */
 
+/* How deep commands that run commands (`if`, `run ... every`) may nest: a
+ * variable that expands to a command running itself (`variable c string
+ * "if 1 then ${c}"`) stops here instead of overflowing the stack. Each level
+ * is a few C frames; 100 is far beyond any script's need. */
+#define INP_MAX_NEST 100
+
 int inp_run_commands(struct gravel *g, int n, char **cmds)
 {
+    struct inp *in = g->inp;
+    if (in->nest >= INP_MAX_NEST)
+        gr_error(g, "commands run by if or run every nested more than %d deep (does a "
+                    "variable expand to a command that runs itself?)", INP_MAX_NEST);
     char **copy = gr_calloc(g, (size_t)(n > 0 ? n : 1), sizeof *copy);
     jmp_buf *outer = g->err.jmp, jb;
+    in->nest++;
     g->err.jmp = &jb;
     if (setjmp(jb)) {
         for (int i = 0; i < n; i++)
             free(copy[i]);
         free(copy);
+        in->nest--;
         g->err.jmp = outer;
         if (outer)
             longjmp(*outer, 1);
@@ -705,6 +718,7 @@ int inp_run_commands(struct gravel *g, int n, char **cmds)
     int rc = GR_OK;
     for (int i = 0; i < n && rc == GR_OK; i++)
         rc = inp_one(g, copy[i]);
+    in->nest--;
     g->err.jmp = outer;
     for (int i = 0; i < n; i++)
         free(copy[i]);

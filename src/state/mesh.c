@@ -22,6 +22,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fileio.h"
+
 #define ZERO_AREA_REL 1e-14
 #define NEEDLE_REL 1e-5
 /* Coordinates and edge lengths must stay within [1e-75, 1e75] (edges: when
@@ -434,37 +436,17 @@ int mesh_from_soup(const char *name, const double *soup, int ntri, double weld_t
 
 /* ---- file readers --------------------------------------------------------------- */
 
+/* Largest mesh file read: a binary STL of 21 million triangles. A FIFO, a
+ * device (/dev/zero) or a directory is refused before anything is read, and
+ * a larger file before anything is allocated (fio_read_all). */
+#define MESH_MAX_BYTES ((size_t)1 << 30)
+
 static unsigned char *slurp(const char *path, size_t *len, char *err, size_t errlen)
 {
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
-        fail(err, errlen, "%s: cannot open mesh file: %s", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 1 << 16, n = 0;
-    unsigned char *buf = malloc(cap + 1);
-    while (buf) {
-        size_t r = fread(buf + n, 1, cap - n, fp);
-        n += r;
-        if (n < cap)
-            break;
-        cap *= 2;
-        unsigned char *nb = realloc(buf, cap + 1);
-        if (!nb) {
-            free(buf);
-            buf = NULL;
-        }
-        buf = nb;
-    }
-    int bad = ferror(fp);
-    fclose(fp);
-    if (!buf || bad) {
-        free(buf);
-        fail(err, errlen, "%s: cannot read mesh file", path);
-        return NULL;
-    }
-    buf[n] = 0;
-    *len = n;
+    char why[160];
+    unsigned char *buf = fio_read_all(path, MESH_MAX_BYTES, len, why, sizeof why);
+    if (!buf)
+        fail(err, errlen, "%s: cannot open mesh file: %s", path, why);
     return buf;
 }
 

@@ -4,6 +4,7 @@
 
 #include <ctype.h>
 #include <math.h>
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,7 +56,23 @@ struct reader {
     char *buf;
     size_t cap;
     int line;
+    int *seen;   /* section(): how often each atom index appeared */
+    double *tmp; /* one value per atom (Types, Molecules) */
 };
+
+/* Release what the reader holds (after success or an error). */
+static void reader_close(struct reader *r)
+{
+    if (r->fp)
+        fclose(r->fp);
+    free(r->buf);
+    free(r->seen);
+    free(r->tmp);
+    r->fp = NULL;
+    r->buf = NULL;
+    r->seen = NULL;
+    r->tmp = NULL;
+}
 
 /* Next line without its comment, trimmed; NULL at the end. */
 static char *next_line(struct gravel *g, struct reader *r)
@@ -109,7 +126,9 @@ static int inum(struct gravel *g, const struct reader *r, const char *s)
 static void section(struct gravel *g, struct reader *r, struct molecule *m, const char *name,
                     int nval, double *out)
 {
-    int *seen = gr_calloc(g, (size_t)m->natoms, sizeof(int));
+    free(r->seen);
+    r->seen = NULL;
+    int *seen = r->seen = gr_calloc(g, (size_t)m->natoms, sizeof(int));
     for (int k = 0; k < m->natoms; k++) {
         char *s;
         do
@@ -136,22 +155,23 @@ static void section(struct gravel *g, struct reader *r, struct molecule *m, cons
             gr_error(g, "molecule file '%s': atom %d appears %d times in %s", r->path, i + 1,
                      seen[i], name);
     free(seen);
+    r->seen = NULL;
 }
 
-static void read_file(struct gravel *g, struct molecule *m, const char *path, double scale,
+/* Read the file into m; errors leave what r holds for the caller to free. */
+static void read_file(struct gravel *g, struct reader *r, struct molecule *m, double scale,
                       int toff)
 {
-    const char *why = NULL;
-    struct reader r = {.path = path};
-    r.fp = fio_open_read(path, 0, &why);
-    if (!r.fp)
+    const char *why = NULL, *path = r->path;
+    r->fp = fio_open_read(path, 0, &why);
+    if (!r->fp)
         gr_error(g, "cannot open molecule file '%s': %s", path, why ? why : "error");
-    if (!next_line(g, &r)) /* the title line */
+    if (!next_line(g, r)) /* the title line */
         gr_error(g, "molecule file '%s' is empty", path);
     char *s, *w[8];
     /* header: "N atoms", "M mass", "x y z com", "6 values inertia" */
     for (;;) {
-        s = next_line(g, &r);
+        s = next_line(g, r);
         if (!s)
             gr_error(g, "molecule file '%s' has no sections", path);
         if (!*s)
@@ -163,28 +183,28 @@ static void read_file(struct gravel *g, struct molecule *m, const char *path, do
         if (!isdigit((unsigned char)s[0]) && s[0] != '-' && s[0] != '+' && s[0] != '.')
             break; /* a section name */
         if (!strcmp(kw, "atoms") && n == 2) {
-            m->natoms = inum(g, &r, w[0]);
+            m->natoms = inum(g, r, w[0]);
         } else if (!strcmp(kw, "mass") && n == 2) {
             m->massflag = 1;
-            m->masstotal = num(g, &r, w[0]) * scale * scale * scale;
+            m->masstotal = num(g, r, w[0]) * scale * scale * scale;
         } else if (!strcmp(kw, "com") && n == 4) {
             m->comflag = 1;
             for (int q = 0; q < 3; q++)
-                m->com[q] = num(g, &r, w[q]) * scale;
+                m->com[q] = num(g, r, w[q]) * scale;
             if (g->dom.dimension == 2 && m->com[2] != 0.0)
                 gr_error(g, "molecule file '%s': z center-of-mass must be 0.0 for 2d", path);
         } else if (!strcmp(kw, "inertia") && n == 7) {
             m->inertiaflag = 1;
             double s5 = scale * scale * scale * scale * scale;
             for (int q = 0; q < 6; q++)
-                m->itensor[q] = num(g, &r, w[q]) * s5;
+                m->itensor[q] = num(g, r, w[q]) * s5;
         } else if ((!strcmp(kw, "bonds") || !strcmp(kw, "angles") || !strcmp(kw, "dihedrals") ||
                     !strcmp(kw, "impropers") || !strcmp(kw, "fragments")) && n == 2) {
-            if (inum(g, &r, w[0]) != 0)
+            if (inum(g, r, w[0]) != 0)
                 gr_error(g, "molecule file '%s' line %d: %s are not supported (granular "
-                            "templates have atoms only)", path, r.line, kw);
+                            "templates have atoms only)", path, r->line, kw);
         } else {
-            gr_error(g, "molecule file '%s' line %d: invalid header line '%.60s'", path, r.line,
+            gr_error(g, "molecule file '%s' line %d: invalid header line '%.60s'", path, r->line,
                      s);
         }
     }
@@ -194,35 +214,42 @@ static void read_file(struct gravel *g, struct molecule *m, const char *path, do
     m->x = gr_calloc(g, 3 * (size_t)nat, sizeof(double));
     m->type = gr_calloc(g, (size_t)nat, sizeof(int));
     int have_x = 0, have_type = 0;
-    double *tmp = gr_calloc(g, (size_t)nat, sizeof(double));
+    double *tmp = r->tmp = gr_calloc(g, (size_t)nat, sizeof(double));
     while (s) {
         if (!*s) {
-            s = next_line(g, &r);
+            s = next_line(g, r);
             continue;
         }
         char name[64];
         snprintf(name, sizeof name, "%s", s);
+        /* each section once (a second Diameters section leaked the first) */
+        if ((!strcmp(name, "Coords") && have_x) || (!strcmp(name, "Types") && have_type) ||
+            (!strcmp(name, "Diameters") && m->radius) || (!strcmp(name, "Masses") && m->rmass) ||
+            (!strcmp(name, "Molecules") && m->molecule))
+            gr_error(g, "molecule file '%s' line %d: a second %s section", path, r->line, name);
         if (!strcmp(name, "Coords")) {
-            section(g, &r, m, name, 3, m->x);
+            section(g, r, m, name, 3, m->x);
             for (int i = 0; i < 3 * nat; i++)
                 m->x[i] *= scale;
             have_x = 1;
         } else if (!strcmp(name, "Types")) {
-            section(g, &r, m, name, 1, tmp);
+            section(g, r, m, name, 1, tmp);
             for (int i = 0; i < nat; i++) {
-                m->type[i] = (int)tmp[i] + toff;
-                if (tmp[i] != floor(tmp[i]) || m->type[i] <= 0 ||
-                    m->type[i] > g->atoms.ntypes)
+                /* checked as a double: a huge, fractional or NaN value (or a
+                 * large offset) never reaches an int conversion */
+                double t = tmp[i] + toff;
+                if (tmp[i] != floor(tmp[i]) || !(t >= 1 && t <= g->atoms.ntypes))
                     gr_error(g, "molecule file '%s': invalid atom type %g for atom %d "
                                 "(1..%d with offset %d)", path, tmp[i], i + 1,
                              g->atoms.ntypes, toff);
+                m->type[i] = (int)t;
                 if (m->type[i] > m->ntypes)
                     m->ntypes = m->type[i];
             }
             have_type = 1;
         } else if (!strcmp(name, "Diameters")) {
             m->radius = gr_calloc(g, (size_t)nat, sizeof(double));
-            section(g, &r, m, name, 1, m->radius);
+            section(g, r, m, name, 1, m->radius);
             for (int i = 0; i < nat; i++) {
                 if (m->radius[i] < 0)
                     gr_error(g, "molecule file '%s': invalid diameter %g", path,
@@ -231,7 +258,7 @@ static void read_file(struct gravel *g, struct molecule *m, const char *path, do
             }
         } else if (!strcmp(name, "Masses")) {
             m->rmass = gr_calloc(g, (size_t)nat, sizeof(double));
-            section(g, &r, m, name, 1, m->rmass);
+            section(g, r, m, name, 1, m->rmass);
             for (int i = 0; i < nat; i++) {
                 if (m->rmass[i] <= 0)
                     gr_error(g, "molecule file '%s': invalid mass %g", path, m->rmass[i]);
@@ -239,28 +266,48 @@ static void read_file(struct gravel *g, struct molecule *m, const char *path, do
             }
         } else if (!strcmp(name, "Molecules")) {
             m->molecule = gr_calloc(g, (size_t)nat, sizeof(int64_t));
-            section(g, &r, m, name, 1, tmp);
+            section(g, r, m, name, 1, tmp);
             int64_t mx = 0;
             for (int i = 0; i < nat; i++) {
+                if (tmp[i] != floor(tmp[i]) || !(tmp[i] >= 1 && tmp[i] <= 2147483647.0))
+                    gr_error(g, "molecule file '%s': invalid molecule ID %g for atom %d "
+                                "(an integer 1..2147483647)", path, tmp[i], i + 1);
                 m->molecule[i] = (int64_t)tmp[i];
-                if (m->molecule[i] <= 0)
-                    gr_error(g, "molecule file '%s': invalid molecule ID %g", path, tmp[i]);
                 mx = m->molecule[i] > mx ? m->molecule[i] : mx;
             }
             m->nmolecules = (int)mx;
         } else {
             gr_error(g, "molecule file '%s' line %d: unsupported section '%.40s' (gravel reads "
-                        "Coords, Types, Molecules, Diameters, Masses)", path, r.line, name);
+                        "Coords, Types, Molecules, Diameters, Masses)", path, r->line, name);
         }
-        s = next_line(g, &r);
+        s = next_line(g, r);
     }
-    free(tmp);
-    free(r.buf);
-    fclose(r.fp);
     if (!have_x || !have_type)
         gr_error(g, "molecule file '%s' needs Coords and Types sections", path);
     if (!m->molecule)
         m->nmolecules = 1;
+}
+
+/* read_file under its own error boundary: the file, the line buffer and the
+ * scratch arrays are released whether reading succeeds or fails (the
+ * template itself is owned by g->molecules already). */
+static void read_guarded(struct gravel *g, struct molecule *m, const char *path, double scale,
+                         int toff)
+{
+    struct reader r = {.path = path};
+    jmp_buf *outer = g->err.jmp, here;
+    g->err.jmp = &here;
+    if (setjmp(here)) {
+        g->err.jmp = outer;
+        reader_close(&r);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    read_file(g, &r, m, scale, toff);
+    g->err.jmp = outer;
+    reader_close(&r);
 }
 
 void cmd_molecule(struct gravel *g, int argc, char **argv)
@@ -316,7 +363,7 @@ void cmd_molecule(struct gravel *g, int argc, char **argv)
     snprintf(m->id, sizeof m->id, "%s", id);
     g->molecules = gr_realloc(g, g->molecules, (size_t)(g->nmolecule + 1) * sizeof *g->molecules);
     g->molecules[g->nmolecule++] = m; /* owned now: freed even if reading fails */
-    read_file(g, m, argv[1], scale, toff);
+    read_guarded(g, m, argv[1], scale, toff);
     if (g->dom.dimension == 2)
         for (int i = 0; i < m->natoms; i++)
             if (m->x[3 * i + 2] != 0.0)

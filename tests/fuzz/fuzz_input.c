@@ -9,6 +9,10 @@
  * the section parser and the validation instead of the checksum test),
  * "#!stl", "#!stlb", "#!vtk" (a mesh file read by fix mesh/surface, then
  * used by create_atoms: see mesh_input below),
+ * "#!molecule" (written to fz.mol, read by `molecule m fz.mol`, then used by
+ * fix rigid/small and fix pour, which derive its centre, mass, inertia and
+ * extent without starting OpenCL), "#!dump" (written to fz.dump, read by
+ * three `read_dump` commands: add, replace + trim, purge + add keep),
  * anything else: the whole input is the script. Each input runs on a fresh engine with no screen and no log, inside a
  * scratch directory (print/log may write files there). Commands that would
  * start the OpenCL engine, write outputs endlessly or read outside the
@@ -90,6 +94,53 @@ static const char restart_script[] =
     "variable n equal count(all)+xcm(all,x)+mass(all)\n"
     "print \"$n\"\n"
     "pair_coeff * *\n";
+
+/* ---- molecule and dump files ("#!molecule", "#!dump") ---- */
+
+static const char molecule_script[] =
+    "atom_style sphere\n"
+    "region b block 0 10 0 10 0 10\n"
+    "create_box 4 b\n"
+    "fix pm all property/atom mol\n"
+    "molecule m fz.mol\n"
+    "fix g all gravity 1.0 vector 0 0 -1\n"
+    "fix r all rigid/small molecule mol m\n"
+    "fix p all pour 5 0 1 region b mol m rigid r\n";
+static const char dump_script[] =
+    "atom_style sphere\n"
+    "region b block 0 10 0 10 0 10\n"
+    "create_box 2 b\n"
+    "read_dump fz.dump 0 x y z vx vy vz ix iy iz add yes\n"
+    "read_dump fz.dump 0 x y z replace yes trim yes box no\n"
+    "group g1 type 1\n"
+    "variable n equal count(all)+xcm(all,x)\n"
+    "print \"$n\"\n"
+    "read_dump fz.dump 10 x y z purge yes replace no add keep\n";
+
+/* The text-file modes: the input after the first line is the file. */
+static const struct text_mode {
+    const char *magic, *file, *script;
+} text_modes[] = {
+    {"#!molecule\n", "fz.mol", molecule_script},
+    {"#!dump\n", "fz.dump", dump_script},
+};
+
+static int write_file(const char *name, const uint8_t *data, size_t size);
+
+/* The script of the text-file mode `data` starts with, after writing its
+ * file; NULL when it starts with none. *skip: the file could not be written. */
+static const char *text_file_mode(const uint8_t *data, size_t size, int *skip)
+{
+    for (size_t i = 0; i < sizeof text_modes / sizeof text_modes[0]; i++) {
+        const struct text_mode *m = &text_modes[i];
+        size_t n = strlen(m->magic);
+        if (size >= n && !memcmp(data, m->magic, n)) {
+            *skip = write_file(m->file, data + n, size - n) != 0;
+            return m->script;
+        }
+    }
+    return NULL;
+}
 
 static int write_file(const char *name, const uint8_t *data, size_t size)
 {
@@ -199,9 +250,13 @@ static int mesh_input(const uint8_t *data, size_t size, const char **script)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     const char *script = NULL;
+    int skip = 0;
     harness_file = 0;
     harness_mesh = 0;
-    if (has_prefix(data, size, "#!data\n")) {
+    if ((script = text_file_mode(data, size, &skip))) {
+        if (skip)
+            return 0;
+    } else if (has_prefix(data, size, "#!data\n")) {
         if (write_file("fz.data", data + 7, size - 7))
             return 0;
         script = data_script;

@@ -3,9 +3,10 @@
 # through the ASan+UBSan build of gravel in a scratch directory. A file passes
 # when gravel ends by itself (exit 0, 1 for a reported script error, or a quit
 # status other than 86, 87, 124 or >= 128) within 20 s and no sanitizer reports anything. One PASS/FAIL line
-# per file. A file whose first line is "#!data" or "#!restart" is, after that
-# line, a data file or restart file: it is read by the same commands as in
-# the harness (tests/fuzz/fuzz_input.c: data_script, restart_script);
+# per file. A file whose first line is "#!data", "#!restart", "#!molecule" or
+# "#!dump" is, after that line, a data, restart, molecule or dump file: it is
+# read by the same commands as in the harness (tests/fuzz/fuzz_input.c:
+# data_script, restart_script, molecule_script, dump_script);
 # "#!restart+" files get their header's length and checksum fixed first.
 # "#!stl", "#!stlb" and "#!vtk" files are mesh files read by the harness'
 # mesh_script ("#!stlb": binary STL with the triangle count fixed up).
@@ -43,6 +44,21 @@ for f in "$root"/tests/fuzz/corpus/*; do
     mkdir -p "$dir"
     deck="$f"
     case "$(head -c 10 "$f")" in
+    '#!molecule'*)
+        tail -c +12 "$f" > "$dir/fz.mol"
+        deck="$dir/fz.in"
+        printf '%s\n' 'atom_style sphere' 'region b block 0 10 0 10 0 10' 'create_box 4 b' \
+            'fix pm all property/atom mol' 'molecule m fz.mol' \
+            'fix g all gravity 1.0 vector 0 0 -1' 'fix r all rigid/small molecule mol m' \
+            'fix p all pour 5 0 1 region b mol m rigid r' > "$deck" ;;
+    '#!dump'*)
+        tail -c +8 "$f" > "$dir/fz.dump"
+        deck="$dir/fz.in"
+        printf '%s\n' 'atom_style sphere' 'region b block 0 10 0 10 0 10' 'create_box 2 b' \
+            'read_dump fz.dump 0 x y z vx vy vz ix iy iz add yes' \
+            'read_dump fz.dump 0 x y z replace yes trim yes box no' 'group g1 type 1' \
+            'variable n equal count(all)+xcm(all,x)' 'print "$n"' \
+            'read_dump fz.dump 10 x y z purge yes replace no add keep' > "$deck" ;;
     '#!data'*)
         tail -c +8 "$f" > "$dir/fz.data"
         deck="$dir/fz.in"

@@ -4,7 +4,9 @@
 # (no partial line), `run ... post no` (only the Loop time line), lost and
 # non-finite atoms named with what was seen, and a run
 # under an address-space limit or on a device too small (a clean stop with
-# the numbers, before the first large allocation). One
+# the numbers, before the first large allocation); issue 24: commands that
+# run themselves through a variable (if, run every) and mesh files that are
+# a FIFO or a device. One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
 bin="$(pwd)/bin/gravel"
@@ -178,3 +180,38 @@ GRAVEL_DEVICE_MEMORY=$((${need:-0} + 1000000)) "$bin" -in "$deck" -var L 64 -var
 check device_memory_counted '[ $rc -eq 1 ] && grep -q "ERROR: run: 262144 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 3.00 contacts per particle (counted) of 156 bytes each), more than fit: .*; about 2[0-9][0-9][0-9][0-9][0-9] particles would fit (.*dense.in:38)$" out && ! grep -q "Loop time" out'
 GRAVEL_DEVICE_MEMORY=1000 "$bin" -in "$deck" -var L 4 -log none > out 2>&1; rc=$?
 check device_memory_bad_value '[ $rc -eq 1 ] && grep -q "^ERROR: run: GRAVEL_DEVICE_MEMORY must be a number of bytes >= 1048576, got .1000." out'
+
+# issue 24: a variable that expands to a command running itself stops at the nesting limit,
+# at once, naming the line that started it (it overflowed the stack: SIGSEGV, after ~13 s
+# of nested runs through run every)
+cat > in.ifself <<'IN'
+variable c string "if 1 then ${c}"
+print start
+${c}
+IN
+start=$(date +%s)
+timeout 60 "$bin" -in in.ifself -log none > out 2>&1; rc=$?
+check if_self_nesting '[ $rc -eq 1 ] && [ $(( $(date +%s) - start )) -lt 10 ] && grep -q "^ERROR: if: commands run by if or run every nested more than 100 deep (does a variable expand to a command that runs itself?) (in.ifself:3)$" out'
+cat > in.runself <<'IN'
+region b block 0 4 0 4 0 4
+create_box 1 b
+create_atoms 1 single 1 1 1
+mass 1 1
+pair_style gran/hooke 1000 0 0 0 0 0
+pair_coeff * *
+fix 1 all nve/sphere
+variable r string "run 1 every 1 ${r}"
+run 1 every 1 "${r}"
+IN
+start=$(date +%s)
+timeout 60 "$bin" -in in.runself -log none > out 2>&1; rc=$?
+check run_every_self_nesting '[ $rc -eq 1 ] && [ $(( $(date +%s) - start )) -lt 30 ] && grep -q "^ERROR: run: commands run by if or run every nested more than 100 deep (does a variable expand to a command that runs itself?) (in.runself:9)$" out && [ $(grep -c "^Loop time" out) -eq 101 ]'
+
+# issue 24: a mesh file that is a FIFO or /dev/zero is refused at once (it blocked forever,
+# or read until memory ran out)
+mkfifo mesh.fifo
+for f in mesh.fifo /dev/zero; do
+    printf 'region b block -1 1 -1 1 -1 1\ncreate_box 1 b\nfix m all mesh/surface file %s type 1\n' "$f" > in.mesh
+    timeout 20 "$bin" -in in.mesh -log none > out 2>&1; rc=$?
+    check "mesh_special_file_$(basename $f)" '[ $rc -eq 1 ] && grep -q "^ERROR: fix: fix mesh/surface: $f: cannot open mesh file: is a .*, not a regular file (in.mesh:3)$" out'
+done

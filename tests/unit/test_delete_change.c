@@ -5,6 +5,7 @@
 #include "test.h"
 
 #include <math.h>
+#include <time.h>
 
 #define BOX "lattice sc 1.0\nregion b block 0 4 0 4 0 4\ncreate_box 2 b\ncreate_atoms 1 box\n"
 
@@ -131,10 +132,36 @@ TEST(twod_rules)
     gr_destroy(g);
 }
 
+/* issue 24: a replication grid of 10^12 copies took over a minute with no
+ * atoms (a loop per copy); now it is refused at once, with or without atoms,
+ * and an empty box only grows */
+TEST(replicate_huge_grid)
+{
+    const char *empty = "region b block 0 1 0 1 0 1\ncreate_box 1 b\n";
+    char text[256];
+    time_t t0 = time(NULL);
+    snprintf(text, sizeof text, "%sreplicate 1000000 1000000 1\n", empty);
+    CHECK_ERROR(text, "the replicated system is too big (1000000000000 copies of the box, at "
+                      "most 2147483647)", 3);
+    snprintf(text, sizeof text, "%sreplicate 2147483647 2147483647 2147483647\n", empty);
+    CHECK_ERROR(text, "(9903520300447984143910830080 copies of the box", 3);
+    snprintf(text, sizeof text, "%screate_atoms 1 single 0.5 0.5 0.5\nreplicate 1000000 "
+                                "1000000 1\n", empty);
+    CHECK_ERROR(text, "the replicated system is too big (1000000000000 copies of the box", 4);
+    struct gravel *g = test_engine();
+    snprintf(text, sizeof text, "%sreplicate 40000 40000 1\n", empty);
+    CHECK(test_script(g, text) == GR_OK);
+    CHECK(g->atoms.n == 0 && g->dom.hi[0] == 40000.0 && g->dom.hi[1] == 40000.0 &&
+          g->dom.hi[2] == 1.0);
+    gr_destroy(g);
+    CHECK(time(NULL) - t0 < 5);
+}
+
 int main(void)
 {
     RUN(delete_styles);
     RUN(change_box_ops);
     RUN(twod_rules);
+    RUN(replicate_huge_grid);
     return 0;
 }

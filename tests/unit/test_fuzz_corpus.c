@@ -1,11 +1,11 @@
 /* test_fuzz_corpus.c - replay the fuzzer's corpus (tests/fuzz/found/, the
- * edge-minimal set of a fuzzing campaign: scripts, data files and restart
- * files) in process, through the fuzz harness itself (tests/fuzz/fuzz_input.c:
+ * edge-minimal set of a fuzzing campaign: scripts, data, restart, molecule
+ * and dump files) in process, through the fuzz harness itself (tests/fuzz/fuzz_input.c:
  * the same command allow-list, command budget and scratch directory), in
  * this ASan+UBSan build. An input passes when it ends (error or not) without
  * a sanitizer report; a report names the input through the death callback.
  * Also checks the corpus holds each of the input kinds (scripts, data,
- * restart and mesh files). */
+ * restart, molecule, dump and mesh files). */
 #include <dirent.h>
 #include <limits.h>
 #include <sanitizer/common_interface_defs.h>
@@ -32,7 +32,7 @@ static int cmp_str(const void *a, const void *b)
 }
 
 static char dir[PATH_MAX];
-static int n_inputs, n_data, n_restart, n_script, n_mesh;
+static int n_inputs, n_data, n_restart, n_molecule, n_dump, n_script, n_mesh;
 
 static int is_mesh(const uint8_t *b, size_t n)
 {
@@ -60,11 +60,14 @@ static int replay_file(const char *name)
         return 0;
     }
     LLVMFuzzerTestOneInput(buf, n);
-    n_data += has_prefix(buf, n, "#!data\n");
-    n_restart += has_prefix(buf, n, "#!restart");
+    int data = has_prefix(buf, n, "#!data\n"), restart = has_prefix(buf, n, "#!restart");
+    int molecule = has_prefix(buf, n, "#!molecule\n"), dump = has_prefix(buf, n, "#!dump\n");
+    n_data += data;
+    n_restart += restart;
+    n_molecule += molecule;
+    n_dump += dump;
     n_mesh += is_mesh(buf, n);
-    n_script += !has_prefix(buf, n, "#!data\n") && !has_prefix(buf, n, "#!restart") &&
-                !is_mesh(buf, n);
+    n_script += !data && !restart && !molecule && !dump && !is_mesh(buf, n);
     free(buf);
     return 1;
 }
@@ -99,10 +102,12 @@ TEST(fuzz_corpus_replay)
         free(names[i]);
     }
     free(names);
-    printf("  %d inputs replayed: %d scripts, %d data files, %d restart files, %d mesh "
-           "files\n", n_inputs, n_script, n_data, n_restart, n_mesh);
+    printf("  %d inputs replayed: %d scripts, %d data files, %d restart files, %d molecule "
+           "files, %d dump files, %d mesh files\n", n_inputs, n_script, n_data, n_restart,
+           n_molecule, n_dump, n_mesh);
     CHECK(n_inputs == nn && n_inputs >= 100);
-    CHECK(n_script > 0 && n_data > 0 && n_restart > 0 && n_mesh > 0);
+    CHECK(n_script > 0 && n_data > 0 && n_restart > 0 && n_molecule > 0 && n_dump > 0 &&
+          n_mesh > 0);
 }
 
 int main(void)

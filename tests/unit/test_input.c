@@ -437,6 +437,42 @@ TEST(stream_and_nested)
     gr_destroy(g);
 }
 
+/* issue 24: a command that runs itself through a variable stops at a depth
+ * limit with the depth in the message, naming the line that started it */
+TEST(nesting_depth)
+{
+    const char *msg = "commands run by if or run every nested more than 100 deep (does a "
+                      "variable expand to a command that runs itself?)";
+    char want[256];
+    snprintf(want, sizeof want, "if: %s (test.in:3)", msg);
+    /* without and with quotes around the inner ${c} */
+    struct gravel *g = test_engine();
+    CHECK(test_script(g, "variable c string \"if 1 then ${c}\"\nprint hi\n${c}\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, want) != NULL);
+    /* the counter unwinds with the error: the same engine nests 100 deep again */
+    CHECK(test_script(g, "variable k equal 0\n"
+                         "variable d string \"if '$k < 100' then 'variable k equal $(v_k+1)' "
+                         "'${d}'\"\n${d}\n") == GR_OK);
+    CHECK(var_retrieve(g, "k") && !strcmp(var_retrieve(g, "k"), "100"));
+    gr_destroy(g);
+    CHECK_ERROR("variable c string \"if 1 then '${c}'\"\n\n${c}\n", msg, 3);
+    /* one level more than the limit */
+    CHECK_ERROR("variable k equal 0\n"
+                "variable d string \"if '$k < 101' then 'variable k equal $(v_k+1)' '${d}'\"\n"
+                "${d}\n", msg, 3);
+    /* a file that includes itself: the error names the file's own line */
+    write_file(tmp_path("selfinc.in"), "print x\ninclude selfinc.in\n");
+    char cwd[512];
+    CHECK(getcwd(cwd, sizeof cwd) != NULL);
+    CHECK(chdir(tmpdir) == 0);
+    g = test_engine();
+    CHECK(test_script(g, "print a\ninclude selfinc.in\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "include: include files nested more than 1000 deep (does a "
+                             "file include itself?) (selfinc.in:2)") != NULL);
+    gr_destroy(g);
+    CHECK(chdir(cwd) == 0);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/gravel-test-input-XXXXXX");
@@ -462,6 +498,7 @@ int main(void)
     if (nphase)
         RUN(phase_check);
     RUN(stream_and_nested);
+    RUN(nesting_depth);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf %s", tmpdir);
     return system(cmd) != 0;
