@@ -3,6 +3,7 @@
  * are bound (the atoms and the law shared by every kind) and launched. */
 #include "wall.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -87,11 +88,12 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
 /* ---- mesh walls -------------------------------------------------------------------- */
 
 void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh *m,
-                      const double *normal, double reach, const char *who)
+                      const double *normal, double reach, double lskin, const char *who)
 {
     wall_mesh_release(wm);
     struct mesh_bins b;
     char err[256];
+    reach += lskin;
     if (mesh_bin(m, reach, &b, err, sizeof err))
         gr_error(g, "%s: %s", who, err);
     int nt = m->ntri, ncell = b.n[0] * b.n[1] * b.n[2];
@@ -118,6 +120,14 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
     eng_write(g, wm->ctri, 0, (size_t)nlist * sizeof(int), b.list);
     free(tri);
     wm->ntri = nt;
+    wm->reach = reach;
+    wm->lskin = lskin;
+    wm->mscale = 0;
+    for (int v = 0; v < m->nvert; v++) {
+        const double *p = m->vert + 3 * v;
+        double l1 = fabs(p[0]) + fabs(p[1]) + fabs(p[2]);
+        wm->mscale = l1 > wm->mscale ? l1 : wm->mscale;
+    }
     memcpy(wm->gn, b.n, sizeof wm->gn);
     memcpy(wm->glo, b.lo, sizeof wm->glo);
     wm->h = b.h;
@@ -126,15 +136,50 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
 
 void wall_mesh_release(struct wall_mesh *wm)
 {
-    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose};
+    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose, &wm->mlist,
+                   &wm->mlpos};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         if (*m[i]) {
             clReleaseMemObject(*m[i]);
             *m[i] = NULL;
         }
+    wm->lcap = 0;
+    wm->pose_ok = 0;
 }
 
-void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm,
+/* The per-atom triangle lists for n atoms: zero (no tag is 0: every entry
+ * stale) when they are (re)allocated; kept otherwise, as an entry names
+ * its atom and the point it was built at. */
+static void mesh_lists_reserve(struct gravel *g, struct wall_mesh *wm, int n)
+{
+    if (wm->mlist && wm->lcap >= (size_t)n)
+        return;
+    cl_mem *m[] = {&wm->mlist, &wm->mlpos};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+    size_t cap = (size_t)n + 64;
+    wm->mlist = eng_alloc(g, cap * MESH_LIST_W * sizeof(int), "mesh triangle lists");
+    wm->mlpos = eng_alloc(g, cap * MESH_LPOS_W * g->eng->rsz, "mesh triangle lists");
+    eng_fill_zero(g, wm->mlist, cap * MESH_LIST_W * sizeof(int));
+    eng_fill_zero(g, wm->mlpos, cap * MESH_LPOS_W * g->eng->rsz);
+    wm->lcap = cap;
+}
+
+/* The pose to the device when it differs from the one there (a mesh that
+ * does not move is written once) */
+static void mesh_pose_upload(struct gravel *g, struct wall_mesh *wm, const double *pose)
+{
+    if (wm->pose_ok && !memcmp(wm->pose_up, pose, sizeof wm->pose_up))
+        return;
+    eng_write_reals(g, wm->pose, POSE_N, pose);
+    memcpy(wm->pose_up, pose, sizeof wm->pose_up);
+    wm->pose_ok = 1;
+}
+
+void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
                      const struct wall_law *law, const double R[9], const double d[3],
                      const double V0[3], const double omega[3], const double ref[3], int moving,
                      int hstride, int hoff, cl_mem fmesh)
@@ -162,7 +207,8 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
         pose[POSE_D + q] -= o[q];
         pose[POSE_REF + q] -= o[q];
     }
-    eng_write_reals(g, wm->pose, POSE_N, pose);
+    mesh_pose_upload(g, wm, pose);
+    mesh_lists_reserve(g, wm, a->n);
     const struct mesh_kernel_args ka = {
         .wall_atoms = wall_atoms_args(g, f, law),
         .hstride = hstride,
@@ -180,6 +226,12 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
         .dt = g->dt,
         .shearupdate = !eng_in_setup(g),
         .inclusive = law->inclusive,
+        .tag = a->tag,
+        .mlist = wm->mlist,
+        .mlpos = wm->mlpos,
+        .lskin = wm->lskin,
+        .lreach = wm->reach,
+        .mscale = wm->mscale,
     };
     ka_bind_mesh_kernel(g, law->kernel, 0, &ka);
     eng_launch(g, law->kernel, (size_t)a->n);
