@@ -573,8 +573,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
  * The mesh is rigid: its triangles and their bins stay in the mesh's own
  * frame and the atom is taken there, xb = R^T (x - d) (the pose, layout
  * POSE_* of kernels/wall_layout.h); the atom's bin lists every triangle
- * that may touch it, so the cost grows with the triangles near the atom,
- * not with the mesh size. fmesh (want_fmesh): per atom the force on the
+ * that may touch it, and the atom's own list (mesh_candidates) the few
+ * near it, so the cost grows with the triangles near the atom, not with
+ * the mesh size. fmesh (want_fmesh): per atom the force on the
  * mesh (3) and its torque about the reference point (3), for f_ID output.
  * BODY: a CONTACT_BODY instance; ROW its form; APPROACH as WALL_KERNEL
  * (fix mesh/surface then bins the triangles with the neighbor skin added).
@@ -607,12 +608,17 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
                                        mlpos + (size_t)i * MESH_LPOS_W, tag[i], lskin, lreach, \
                                        mscale, tc, rc, dc, qc);                                \
         const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */      \
-        /* the slots' keys (okey: 0 once taken; okey0: as loaded); a slot's                    \
-         * history is read only when a contact takes it */                                     \
+        /* the slots' keys (okey: 0 once taken; okey0: as loaded). The slots                   \
+         * in use come first (they are written so, below): the keys are read                   \
+         * up to the first free one, and a slot's history only when a                          \
+         * contact takes it. */                                                                \
         REAL okey[MESH_SLOTS], okey0[MESH_SLOTS];                                              \
         __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;    \
-        for (int s = 0; s < MESH_SLOTS; s++)                                                   \
-            okey[s] = okey0[s] = has_history ? hist[(1 + hw) * s] : (REAL)0;                   \
+        int more = has_history;                                                                \
+        for (int s = 0; s < MESH_SLOTS; s++) {                                                 \
+            okey[s] = okey0[s] = more ? hist[(1 + hw) * s] : (REAL)0;                          \
+            more = okey[s] != (REAL)0;                                                         \
+        }                                                                                      \
         REAL nkey[MESH_SLOTS], nsh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
         int nnew = 0;                                                                          \
         const struct contact_atoms a =                                                         \

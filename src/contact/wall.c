@@ -12,6 +12,7 @@
 #include "error.h"
 #include "fix.h"
 #include "mesh.h"
+#include "ocl.h"
 #include "pair.h"
 
 int wall_elements(const struct wall_geom *w) { return w->kind == WALL_PLANE ? 2 : 1; }
@@ -143,6 +144,15 @@ void wall_mesh_release(struct wall_mesh *wm)
             clReleaseMemObject(*m[i]);
             *m[i] = NULL;
         }
+    for (int k = 0; k < 2; k++) {
+        if (wm->pose_ev[k]) {
+            clWaitForEvents(1, &wm->pose_ev[k]);
+            clReleaseEvent(wm->pose_ev[k]);
+            wm->pose_ev[k] = NULL;
+        }
+        free(wm->pose_host[k]);
+        wm->pose_host[k] = NULL;
+    }
     wm->lcap = 0;
     wm->pose_ok = 0;
 }
@@ -169,12 +179,29 @@ static void mesh_lists_reserve(struct gravel *g, struct wall_mesh *wm, int n)
 }
 
 /* The pose to the device when it differs from the one there (a mesh that
- * does not move is written once) */
+ * does not move is written once), without waiting for the queue: the
+ * write is ordered before the mesh kernel, and its host copy is kept until
+ * it has completed (the copy's previous write is waited for, long done). */
 static void mesh_pose_upload(struct gravel *g, struct wall_mesh *wm, const double *pose)
 {
     if (wm->pose_ok && !memcmp(wm->pose_up, pose, sizeof wm->pose_up))
         return;
-    eng_write_reals(g, wm->pose, POSE_N, pose);
+    int k = wm->pose_k = !wm->pose_k;
+    if (wm->pose_ev[k]) {
+        OCL_CHECK(g, clWaitForEvents(1, &wm->pose_ev[k]));
+        clReleaseEvent(wm->pose_ev[k]);
+        wm->pose_ev[k] = NULL;
+    }
+    if (!wm->pose_host[k])
+        wm->pose_host[k] = gr_malloc(g, POSE_N * sizeof(double));
+    if (g->eng->single)
+        for (int q = 0; q < POSE_N; q++)
+            ((float *)wm->pose_host[k])[q] = (float)pose[q];
+    else
+        memcpy(wm->pose_host[k], pose, POSE_N * sizeof(double));
+    OCL_CHECK(g, clEnqueueWriteBuffer(g->eng->ocl.queue, wm->pose, CL_FALSE, 0,
+                                      POSE_N * g->eng->rsz, wm->pose_host[k], 0, NULL,
+                                      &wm->pose_ev[k]));
     memcpy(wm->pose_up, pose, sizeof wm->pose_up);
     wm->pose_ok = 1;
 }

@@ -91,6 +91,11 @@ struct wall_mesh {
     size_t lcap;                    /* atoms they hold */
     double pose_up[POSE_N];         /* the pose last uploaded (pose_ok: valid) */
     int pose_ok;
+    /* a moving mesh's pose goes up without a wait: two host copies, each
+     * kept until the write from it (its event) has completed */
+    void *pose_host[2];
+    cl_event pose_ev[2];
+    int pose_k;
 };
 
 /* Upload mesh m (normals: 3 per triangle) with bins for particles of radius
