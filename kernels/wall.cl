@@ -354,11 +354,12 @@ static inline int2 mesh_bin_range(__global const int *cstart, __global const REA
 /* Triangle t against the sphere at xb (radius radi): appended to the
  * candidates (tc, rc, dc, qc; at most MESH_MAXC) when it touches (with
  * approach: or one drift at the normal rate brings it into or out of
- * contact). Returns its squared distance. */
-static inline __attribute__((always_inline)) REAL mesh_take(__global const REAL *tri, __global const REAL *pose, const int t,
-                             const int moving, const REAL3 xi, const REAL3 xb, const REAL3 vi,
-                             const REAL radi, const int inclusive, const int approach,
-                             const REAL dt, int *nc, int *tc, int *rc, REAL3 *dc, REAL *qc)
+ * contact). Returns its squared distance. Always inlined: it runs in two
+ * loops, and without approach its drift test folds away. */
+static inline __attribute__((always_inline)) REAL
+mesh_take(__global const REAL *tri, __global const REAL *pose, const int t, const int moving,
+          const REAL3 xi, const REAL3 xb, const REAL3 vi, const REAL radi, const int inclusive,
+          const int approach, const REAL dt, int *nc, int *tc, int *rc, REAL3 *dc, REAL *qc)
 {
     REAL3 del;
     const int region = tri_closest(tri, t, xb, &del);
