@@ -137,13 +137,6 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
 
 void wall_mesh_release(struct wall_mesh *wm)
 {
-    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose, &wm->mlist,
-                   &wm->mlpos};
-    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
-        if (*m[i]) {
-            clReleaseMemObject(*m[i]);
-            *m[i] = NULL;
-        }
     for (int k = 0; k < 2; k++) {
         if (wm->pose_ev[k]) {
             clWaitForEvents(1, &wm->pose_ev[k]);
@@ -153,6 +146,13 @@ void wall_mesh_release(struct wall_mesh *wm)
         free(wm->pose_host[k]);
         wm->pose_host[k] = NULL;
     }
+    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose, &wm->mlist,
+                   &wm->mlpos};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
     wm->lcap = 0;
     wm->pose_ok = 0;
 }
