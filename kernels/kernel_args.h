@@ -21,6 +21,7 @@
  *   M CM    __global REAL * / __global const REAL * ; host cl_mem
  *   MI CMI  __global int * / __global const int * ; host cl_mem
  *   CMU     __global const uint * ; host cl_mem
+ *   CML     __global const long * ; host cl_mem (the atoms' tags)
  *   POS_LO  the low parts of the positions in single precision
  *           (POS_LO_PARAM of kernels/common.cl: absent in double); no
  *           host field, bound from the engine; always last
@@ -85,11 +86,15 @@
     Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
 
 /* MESH_KERNEL: history at hoff of a per-atom record of hstride REAL; the
- * mesh's triangles, bins (gnx x gny x gnz) and pose (POSE_*) */
+ * mesh's triangles, bins (gnx x gny x gnz, reach lreach) and pose (POSE_*);
+ * the atoms' triangle lists (mlist, mlpos: MESH_LIST_W int and MESH_LPOS_W
+ * REAL per atom, keyed by tag; built lskin beyond the radius; mscale the
+ * largest |vertex|_1) */
 #define KARGS_mesh_kernel(X, Y)                                                                \
     X(PART, wall_atoms) Y(I, hstride) Y(I, hoff) Y(PART, wall_law) Y(CM, tri) Y(CMI, triv)    \
     Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving) Y(M, fmesh)                \
-    Y(I, want_fmesh) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
+    Y(I, want_fmesh) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(CML, tag) Y(MI, mlist)      \
+    Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) Y(POS_LO, xlo)
 
 /* REGION_KERNEL: nnode nodes (RG_*) under combinator comb */
 #define KARGS_region_kernel(X, Y)                                                              \
@@ -128,6 +133,7 @@
 #define KA_DECL_MI(n, X, Y) __global int *n
 #define KA_DECL_CMI(n, X, Y) __global const int *n
 #define KA_DECL_CMU(n, X, Y) __global const uint *n
+#define KA_DECL_CML(n, X, Y) __global const long *n
 #define KA_DECL_POS_LO(n, X, Y) POS_LO_PARAM
 #define KA_DECL_PART(n, X, Y) KARGS_##n(X, Y)
 
@@ -143,6 +149,7 @@
 #define KA_SEP_MI ,
 #define KA_SEP_CMI ,
 #define KA_SEP_CMU ,
+#define KA_SEP_CML ,
 #define KA_SEP_POS_LO /* POS_LO_PARAM brings its own comma */
 #define KA_SEP_PART /* the part's first argument brings it */
 #endif

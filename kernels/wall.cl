@@ -329,43 +329,59 @@ static inline int mesh_within_drift(__global const REAL *pose, const int moving,
     return wall_within_drift(vb, del, rsq, radi, dt);
 }
 
-/* The triangles of a mesh that touch the sphere at xi (radius radi; with
- * approach, also those one drift at its normal rate brings into or out of
- * contact), at most MESH_MAXC, in bin order: tc the triangle, rc its
- * Voronoi region (negative: dropped, a nearer feature holds the contact),
- * dc the separation in the mesh frame, qc its square. Returns how many. */
-static inline int mesh_candidates(__global const REAL *tri, __global const int *triv,
-                                  __global const int *cstart, __global const int *ctri,
-                                  __global const REAL *pose, const int gnx, const int gny,
-                                  const int gnz, const int moving, const REAL3 xi,
-                                  const REAL3 vi, const REAL radi, const int inclusive,
-                                  const int approach, const REAL dt, int *tc, int *rc,
-                                  REAL3 *dc, REAL *qc)
+/* The atom at xi in the mesh's frame: xb = R^T (x - d) */
+static inline REAL3 mesh_frame(__global const REAL *pose, const int moving, const REAL3 xi)
 {
-    const REAL3 xb = moving ? mat_tmul(pose, xi - vload3(POSE_D / 3, pose)) : xi;
-    int nc = 0;
+    return moving ? mat_tmul(pose, xi - vload3(POSE_D / 3, pose)) : xi;
+}
+
+/* The first triangle-list entry of xb's bin and the one after it (both 0
+ * outside the grid) */
+static inline int2 mesh_bin_range(__global const int *cstart, __global const REAL *pose,
+                                  const int gnx, const int gny, const int gnz, const REAL3 xb)
+{
     const REAL ginv = pose[POSE_GINV];
     const int cx = (int)floor((xb.x - pose[POSE_GLO]) * ginv);
     const int cy = (int)floor((xb.y - pose[POSE_GLO + 1]) * ginv);
     const int cz = (int)floor((xb.z - pose[POSE_GLO + 2]) * ginv);
     if (cx >= 0 && cy >= 0 && cz >= 0 && cx < gnx && cy < gny && cz < gnz) {
         const int cell = (cz * gny + cy) * gnx + cx;
-        for (int k = cstart[cell]; k < cstart[cell + 1] && nc < MESH_MAXC; k++) {
-            const int t = ctri[k];
-            REAL3 del;
-            const int region = tri_closest(tri, t, xb, &del);
-            const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
-            if ((inclusive ? rsq > radi * radi : rsq >= radi * radi) &&
-                !(approach && mesh_within_drift(pose, moving, xi, vi, del, rsq, radi, dt)))
-                continue;
-            tc[nc] = t;
-            rc[nc] = region;
-            dc[nc] = del;
-            qc[nc] = rsq;
-            nc++;
-        }
+        return (int2)(cstart[cell], cstart[cell + 1]);
     }
-    /* one contact per physical contact: drop edge/vertex contacts of a nearer feature */
+    return (int2)(0, 0);
+}
+
+/* Triangle t against the sphere at xb (radius radi): appended to the
+ * candidates (tc, rc, dc, qc; at most MESH_MAXC) when it touches (with
+ * approach: or one drift at the normal rate brings it into or out of
+ * contact). Returns its squared distance. Always inlined: it runs in two
+ * loops, and without approach its drift test folds away. */
+static inline __attribute__((always_inline)) REAL
+mesh_take(__global const REAL *tri, __global const REAL *pose, const int t, const int moving,
+          const REAL3 xi, const REAL3 xb, const REAL3 vi, const REAL radi, const int inclusive,
+          const int approach, const REAL dt, int *nc, int *tc, int *rc, REAL3 *dc, REAL *qc)
+{
+    REAL3 del;
+    const int region = tri_closest(tri, t, xb, &del);
+    const REAL rsq = del.x * del.x + del.y * del.y + del.z * del.z;
+    if ((inclusive ? rsq > radi * radi : rsq >= radi * radi) &&
+        !(approach && mesh_within_drift(pose, moving, xi, vi, del, rsq, radi, dt)))
+        return rsq;
+    if (*nc < MESH_MAXC) {
+        tc[*nc] = t;
+        rc[*nc] = region;
+        dc[*nc] = del;
+        qc[*nc] = rsq;
+        (*nc)++;
+    }
+    return rsq;
+}
+
+/* One contact per physical contact: the edge and vertex contacts among the
+ * nc candidates that a nearer feature holds are dropped (rc negative). */
+static inline void mesh_drop_shadowed(__global const int *triv, const int nc, const int *tc,
+                                      int *rc, const REAL *qc)
+{
     for (int c = 0; c < nc; c++) {
         if (rc[c] == MESH_FACE)
             continue;
@@ -383,6 +399,150 @@ static inline int mesh_candidates(__global const REAL *tri, __global const int *
             }
         }
     }
+}
+
+/* ---- the per-atom triangle lists of a mesh (no approach) ----
+ *
+ * Testing every triangle of the atom's bin each step costs some ten
+ * triangle tests per atom; most atoms touch one triangle or none. So each
+ * atom keeps a list (MESH_LIST_* of kernels/wall_layout.h): the triangles
+ * within rl of the point xref (mesh frame) where it was built, in ascending
+ * triangle id, and every other triangle is at least rl from xref. While
+ * the atom is within (rl - radi) / 2 of xref (less the round-off bound tol),
+ * every triangle it touches is listed, and the listed ones that touch, in
+ * list order, are exactly the bin's touching triangles in bin order (a bin
+ * lists its triangles in ascending id too). The contacts, their order and
+ * so every sum are the bin search's: the list only saves the tests of the
+ * far triangles. An atom that has moved further, or whose entry belongs to
+ * another atom (the tag: the atoms are re-sorted at rebuilds), searches its
+ * bin, which lists every triangle within the bins' reach, and builds its
+ * list on the way with rl = radi + lskin (lskin <= reach - radi), shrunk
+ * when more than MESH_LIST_K triangles are that near; an entry whose
+ * margin is not above the round-off bound is left stale (n = -1): the bin
+ * search then runs every step, as it does for the approach kernels. */
+#ifdef USE_DOUBLE
+#define MESH_EPS DBL_EPSILON
+#else
+#define MESH_EPS FLT_EPSILON
+#endif
+
+/* The round-off bound of a distance from tri_closest near xb: the
+ * coordinates involved are at most |xb|_1 + mscale (mscale: the largest
+ * |vertex|_1 of the mesh) */
+static inline REAL mesh_list_tol(const REAL3 xb, const REAL mscale)
+{
+    return (REAL)64 * MESH_EPS * (fabs(xb.x) + fabs(xb.y) + fabs(xb.z) + mscale);
+}
+
+/* 1 when atom i's list holds every triangle it can touch at xb */
+static inline int mesh_list_fresh(__global const int *lt, __global const REAL *lx,
+                                  const long tagi, const REAL3 xb, const REAL radi,
+                                  const REAL mscale)
+{
+    if (lt[MESH_LIST_TAGLO] != (int)(tagi & 0xffffffff) ||
+        lt[MESH_LIST_TAGHI] != (int)(tagi >> 32) || lt[MESH_LIST_N] < 0)
+        return 0;
+    const REAL room = (REAL)0.5 * (lx[MESH_LPOS_RL] - radi);
+    if (!(room > mesh_list_tol(xb, mscale)))
+        return 0;
+    const REAL3 dx = xb - (REAL3)(lx[0], lx[1], lx[2]);
+    return dx.x * dx.x + dx.y * dx.y + dx.z * dx.z < room * room;
+}
+
+/* Add triangle t at squared distance rsq to the list being built (ln
+ * entries lt_ / lq_ of at most MESH_LIST_K, rl2 the squared radius); when
+ * full, rl2 shrinks to the largest distance among them and t, and the
+ * triangles that far leave. Every triangle seen and not listed is then at
+ * least sqrt(rl2) away. */
+static inline void mesh_list_note(const int t, const REAL rsq, int *ln, int *lt_, REAL *lq_,
+                                  REAL *rl2)
+{
+    if (!(rsq < *rl2))
+        return;
+    if (*ln < MESH_LIST_K) {
+        lt_[*ln] = t;
+        lq_[*ln] = rsq;
+        (*ln)++;
+        return;
+    }
+    REAL qmax = rsq;
+    for (int k = 0; k < *ln; k++)
+        qmax = fmax(qmax, lq_[k]);
+    *rl2 = qmax;
+    int m = 0;
+    for (int k = 0; k < *ln; k++)
+        if (lq_[k] < qmax) {
+            lt_[m] = lt_[k];
+            lq_[m] = lq_[k];
+            m++;
+        }
+    *ln = m;
+    if (rsq < qmax) {
+        lt_[m] = t;
+        lq_[m] = rsq;
+        (*ln)++;
+    }
+}
+
+/* Store the list built at xb (rl2: its squared radius) as atom i's */
+static inline void mesh_list_store(__global int *lt, __global REAL *lx, const long tagi,
+                                   const REAL3 xb, const REAL radi, const REAL mscale,
+                                   const int ln, const int *lt_, const REAL rl2)
+{
+    const REAL rl = sqrt(rl2);
+    const int ok = (REAL)0.5 * (rl - radi) > mesh_list_tol(xb, mscale);
+    lt[MESH_LIST_TAGLO] = (int)(tagi & 0xffffffff);
+    lt[MESH_LIST_TAGHI] = (int)(tagi >> 32);
+    lt[MESH_LIST_N] = ok ? ln : -1;
+    for (int k = 0; ok && k < ln; k++)
+        lt[MESH_LIST_T + k] = lt_[k];
+    lx[0] = xb.x;
+    lx[1] = xb.y;
+    lx[2] = xb.z;
+    lx[MESH_LPOS_RL] = rl;
+}
+
+/* The triangles of a mesh that touch the sphere at xi (radius radi; with
+ * approach, also those one drift at its normal rate brings into or out of
+ * contact), at most MESH_MAXC, in bin order: tc the triangle, rc its
+ * Voronoi region (negative: dropped, a nearer feature holds the contact),
+ * dc the separation in the mesh frame, qc its square. Returns how many.
+ * Without approach the atom's list (lt, lx: its entries) stands in for its
+ * bin while it is fresh, and is rebuilt by the bin search when it is not. */
+static inline int mesh_candidates(__global const REAL *tri, __global const int *triv,
+                                  __global const int *cstart, __global const int *ctri,
+                                  __global const REAL *pose, const int gnx, const int gny,
+                                  const int gnz, const int moving, const REAL3 xi,
+                                  const REAL3 vi, const REAL radi, const int inclusive,
+                                  const int approach, const REAL dt, __global int *lt,
+                                  __global REAL *lx, const long tagi, const REAL lskin,
+                                  const REAL lreach, const REAL mscale, int *tc, int *rc,
+                                  REAL3 *dc, REAL *qc)
+{
+    const REAL3 xb = mesh_frame(pose, moving, xi);
+    int nc = 0;
+    if (!approach && mesh_list_fresh(lt, lx, tagi, xb, radi, mscale)) {
+        const int ln = lt[MESH_LIST_N];
+        for (int k = 0; k < ln; k++)
+            mesh_take(tri, pose, lt[MESH_LIST_T + k], moving, xi, xb, vi, radi, inclusive, 0,
+                      dt, &nc, tc, rc, dc, qc);
+    } else {
+        const int2 r = mesh_bin_range(cstart, pose, gnx, gny, gnz, xb);
+        int ln = 0, lt_[MESH_LIST_K];
+        REAL lq_[MESH_LIST_K];
+        const REAL rl = radi + fmin(lskin, lreach - radi);
+        REAL rl2 = rl * rl;
+        for (int k = r.x; k < r.y && (approach ? nc < MESH_MAXC : 1); k++) {
+            const int t = ctri[k];
+            const REAL rsq = mesh_take(tri, pose, t, moving, xi, xb, vi, radi, inclusive,
+                                       approach, dt, &nc, tc, rc, dc, qc);
+            if (!approach)
+                mesh_list_note(t, rsq, &ln, lt_, lq_, &rl2);
+        }
+        if (!approach)
+            mesh_list_store(lt, lx, tagi, xb, radi, mscale, ln, lt_, rl2);
+    }
+    mesh_drop_shadowed(triv, nc, tc, rc, qc);
     return nc;
 }
 
@@ -414,8 +574,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
  * The mesh is rigid: its triangles and their bins stay in the mesh's own
  * frame and the atom is taken there, xb = R^T (x - d) (the pose, layout
  * POSE_* of kernels/wall_layout.h); the atom's bin lists every triangle
- * that may touch it, so the cost grows with the triangles near the atom,
- * not with the mesh size. fmesh (want_fmesh): per atom the force on the
+ * that may touch it, and the atom's own list (mesh_candidates) the few
+ * near it, so the cost grows with the triangles near the atom, not with
+ * the mesh size. fmesh (want_fmesh): per atom the force on the
  * mesh (3) and its torque about the reference point (3), for f_ID output.
  * BODY: a CONTACT_BODY instance; ROW its form; APPROACH as WALL_KERNEL
  * (fix mesh/surface then bins the triangles with the neighbor skin added).
@@ -443,17 +604,22 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         REAL3 dc[MESH_MAXC];                                                                   \
         REAL qc[MESH_MAXC];                                                                    \
         const int nc = mesh_candidates(tri, triv, cstart, ctri, pose, gnx, gny, gnz, moving,   \
-                                       xi, vload3(i, v), radi, inclusive, APPROACH, dt, tc,    \
-                                       rc, dc, qc);                                            \
+                                       xi, vload3(i, v), radi, inclusive, APPROACH, dt,        \
+                                       mlist + (size_t)i * MESH_LIST_W,                        \
+                                       mlpos + (size_t)i * MESH_LPOS_W, tag[i], lskin, lreach, \
+                                       mscale, tc, rc, dc, qc);                                \
         const int hw = ROW ? has_history : 3; /* history REAL per slot (after its key) */      \
-        REAL okey[MESH_SLOTS], osh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
+        /* the slots' keys (okey: 0 once taken; okey0: as loaded). The slots                   \
+         * in use come first (they are written so, below): the keys are read                   \
+         * up to the first free one, and a slot's history only when a                          \
+         * contact takes it. */                                                                \
+        REAL okey[MESH_SLOTS], okey0[MESH_SLOTS];                                              \
         __global REAL *hist = has_history ? history + (size_t)i * hstride + hoff : history;    \
-        if (has_history)                                                                       \
-            for (int s = 0; s < MESH_SLOTS; s++) {                                             \
-                okey[s] = hist[(1 + hw) * s];                                                  \
-                for (int q = 0; q < hw; q++)                                                   \
-                    osh[s][q] = hist[(1 + hw) * s + 1 + q];                                    \
-            }                                                                                  \
+        int more = has_history;                                                                \
+        for (int s = 0; s < MESH_SLOTS; s++) {                                                 \
+            okey[s] = okey0[s] = more ? hist[(1 + hw) * s] : (REAL)0;                          \
+            more = okey[s] != (REAL)0;                                                         \
+        }                                                                                      \
         REAL nkey[MESH_SLOTS], nsh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
         int nnew = 0;                                                                          \
         const struct contact_atoms a =                                                         \
@@ -473,14 +639,14 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
             const int t = tc[c];                                                               \
             s.del = moving ? mat_mul(pose, dc[c]) : dc[c];                                     \
             const REAL3 cpt = xi - s.del;                                                      \
-            pj.vwall = moving ? vload3(POSE_V0 / 3, pose) + cross(pj.omwall, cpt) : (REAL3)(0); \
+            pj.vwall = moving ? vload3(POSE_V0 / 3, pose) + cross(pj.omwall, cpt) : (REAL3)(0);\
             REAL h[WALL_ROW_N(ROW)];                                                           \
             for (int q = 0; q < WALL_ROW_N(ROW); q++)                                          \
                 h[q] = 0;                                                                      \
             const int found = has_history ? mesh_slot_find(okey, t, nc, tc, rc, triv) : -1;    \
             if (found >= 0) {                                                                  \
                 for (int q = 0; q < hw; q++)                                                   \
-                    h[q] = osh[found][q];                                                      \
+                    h[q] = hist[(1 + hw) * found + 1 + q];                                     \
                 okey[found] = 0; /* taken */                                                   \
             }                                                                                  \
             struct contact_out o;                                                              \
@@ -496,13 +662,16 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
             fm -= o.f;                                                                         \
             tm -= cross(cpt - rref, o.f);                                                      \
         }                                                                                      \
-        if (has_history)                                                                       \
-            for (int s = 0; s < MESH_SLOTS; s++) {                                             \
-                const int used = s < nnew;                                                     \
-                hist[(1 + hw) * s] = used ? nkey[s] : (REAL)0;                                 \
-                for (int q = 0; q < hw; q++)                                                   \
-                    hist[(1 + hw) * s + 1 + q] = used ? nsh[s][q] : (REAL)0;                   \
-            }                                                                                  \
+        /* the new slots in order, then zeros where a slot was in use (a free                  \
+         * slot is all zero already) */                                                        \
+        for (int s = 0; has_history && s < MESH_SLOTS; s++) {                                  \
+            const int used = s < nnew;                                                         \
+            if (!used && okey0[s] == (REAL)0)                                                  \
+                continue;                                                                      \
+            hist[(1 + hw) * s] = used ? nkey[s] : (REAL)0;                                     \
+            for (int q = 0; q < hw; q++)                                                       \
+                hist[(1 + hw) * s + 1 + q] = used ? nsh[s][q] : (REAL)0;                       \
+        }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
         if (want_fmesh) {                                                                      \

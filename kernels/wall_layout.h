@@ -21,6 +21,13 @@ enum mesh_pose_layout { POSE_R = 0, POSE_D = 9, POSE_V0 = 12, POSE_OMEGA = 15, P
 /* History slots per atom per mesh: key (triangle + 1, 0 = free), then the
  * law's history */
 enum { MESH_SLOTS = 4 };
+/* The per-atom triangle list of a mesh (kernels/wall.cl mesh_candidates):
+ * MESH_LIST_W int (the atom's tag in two halves, the count n (-1: stale),
+ * then up to MESH_LIST_K triangle ids) and MESH_LPOS_W REAL (the point it
+ * was built at, mesh frame, then its radius) */
+enum mesh_list_layout { MESH_LIST_TAGLO = 0, MESH_LIST_TAGHI = 1, MESH_LIST_N = 2,
+                        MESH_LIST_T = 3, MESH_LIST_K = 13, MESH_LIST_W = 16,
+                        MESH_LPOS_RL = 3, MESH_LPOS_W = 4 };
 
 /* A region as device nodes (kernels/wall_region.cl; filled by
  * src/contact/wall_region.c every step): up to RG_MAXNODE primitive nodes of

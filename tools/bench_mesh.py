@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """bench_mesh.py - cost of a mesh contact against a particle-particle contact.
 
-    bench_mesh.py [--n SIDE] [--tri-side Q] [--steps S] [--repeat R]
+    bench_mesh.py [--n SIDE] [--tri-side Q] [--steps S] [--repeat R] [--law L]
+                  [--gravel BIN]
 
 A square monolayer of SIDE x SIDE spheres (diameter 1, spacing 0.98: every
-sphere overlaps its 4 neighbours) rests in a floor of Q x Q/2 quads = Q^2
+sphere overlaps its 4 neighbours by 0.02; a simple cubic lattice of reduced
+density 0.98^-3, as `lattice ... spacing` only sets the lattice's length
+unit, in gravel as in LAMMPS) rests in a floor of Q x Q/2 quads = Q^2
 triangles (default 100: 10^4 triangles), overlapping it by 0.02: every sphere
 has one mesh contact (on a face, an edge or a vertex; counted once). Nothing
 moves (no integrator), so the contact sets are fixed and every step evaluates
@@ -13,7 +16,10 @@ wall (fix wall/pair mesh, the same law), B the pair style only, C neither
 (pair_style none). Per step and contact, medians of R interleaved runs:
     mesh contact  = (A - B) / mesh contacts
     pair contact  = (B - C) / pair contacts
-(loop times of `run S`). --law hooke/history uses LAMMPS's gran/hooke/history
+(loop times of `run S`). The same two figures from run A alone, by device
+time per kernel (GRAVEL_PROFILE=1: the mesh kernel per mesh contact,
+pair_contacts + pair_gather per pair contact), do not depend on the load of
+a shared machine between the runs. --law hooke/history uses LAMMPS's gran/hooke/history
 with fix wall/gran hooke/history ... mesh instead (no impulse solver). Prints
 a table for doc/benchmark.md."""
 import argparse
@@ -60,6 +66,7 @@ LAWS = {
 
 def deck(n, mode, steps, law="hertz/mindlin"):
     a = 0.98
+    rho = a ** -3   # units lj: lattice sc rho has the constant rho^(-1/3) = a
     L = n * a
     pl, wl = LAWS[law]
     pair = "pair_style none" if mode == "C" else pl + "\npair_coeff * *"
@@ -67,11 +74,11 @@ def deck(n, mode, steps, law="hertz/mindlin"):
     return """units lj
 atom_style sphere
 boundary p p f
-lattice sc 1.0 spacing %g %g 1 origin 0.5 0.5 0
+lattice sc %.17g origin 0.5 0.5 0
 region b block 0 %g 0 %g -1 2 units box
 create_box 1 b
 region layer block 0 %g 0 %g 0.47 0.49 units box
-lattice sc 1.0 spacing %g %g 1 origin 0.5 0.5 0.48
+lattice sc %.17g origin 0.5 0.5 %.17g
 create_atoms 1 region layer
 set type 1 diameter 1.0 density 1.0
 %s
@@ -81,41 +88,52 @@ timestep 0.0001
 %sthermo %d
 thermo_style custom step atoms
 run %d
-""" % (a, a, L, L, L, L, a, a, pair, wall, steps, steps)
+""" % (rho, L, L, L, L, rho, 0.48 / a, pair, wall, steps, steps)
 
 
 def run(d, text):
+    """Loop time, contacts and the device seconds per kernel name of one run."""
     with open(os.path.join(d, "in.deck"), "w") as f:
         f.write(text)
+    env = dict(os.environ, GRAVEL_PROFILE="1")
     r = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none", "-echo", "none"], cwd=d,
-                       capture_output=True, text=True, timeout=1200)
+                       capture_output=True, text=True, timeout=1200, env=env)
     if r.returncode:
         sys.exit("gravel failed:\n" + r.stdout[-2000:] + r.stderr[-2000:])
     out = r.stdout
     loop = float(re.search(r"Loop time of ([0-9.eE+-]+)", out).group(1))
     m = re.search(r"Contacts = (\d+)", out)
-    return loop, int(m.group(1)) if m else 0, out
+    kern = {k: float(t) for k, t in
+            re.findall(r"^  (\w+) +\d+ calls +([0-9.eE+-]+) s", r.stderr, re.M)}
+    return loop, int(m.group(1)) if m else 0, kern
 
 
 def main():
+    global GRAVEL
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--n", type=int, default=316)
     p.add_argument("--tri-side", type=int, default=100)
     p.add_argument("--steps", type=int, default=100)
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--law", choices=sorted(LAWS), default="hertz/mindlin")
+    p.add_argument("--gravel", help="the binary (default bin/gravel)")
     a = p.parse_args()
+    GRAVEL = os.path.abspath(a.gravel) if a.gravel else GRAVEL
     with tempfile.TemporaryDirectory() as d:
         L = a.n * 0.98
         ntri = floor_stl(os.path.join(d, "floor.stl"), -0.5, L + 0.5, a.tri_side)
         t = {"A": [], "B": [], "C": []}
+        kmesh, kpair = [], []
         npair = 0
         for k in range(a.repeat):
             for mode in "ABC":
-                loop, nc, out = run(d, deck(a.n, mode, a.steps, a.law))
+                loop, nc, kern = run(d, deck(a.n, mode, a.steps, a.law))
                 t[mode].append(loop)
                 if mode == "B":
                     npair = nc
+                if mode == "A":
+                    kmesh.append(sum(v for n, v in kern.items() if n.startswith("mesh_")))
+                    kpair.append(kern.get("pair_contacts", 0) + kern.get("pair_gather", 0))
         natoms = a.n * a.n
         mA, mB, mC = (statistics.median(t[m]) for m in "ABC")
         mesh_c = natoms          # every sphere touches the floor once
@@ -130,6 +148,12 @@ def main():
               % (mA, mB, mC))
         print("mesh contact: %.1f ns per contact-step; pair contact: %.1f ns per contact-step; "
               "ratio mesh/pair %.2f" % (1e9 * per_mesh, 1e9 * per_pair, per_mesh / per_pair))
+        # the kernels run steps + 1 times (the setup forces too)
+        km = statistics.median(kmesh) / (mesh_c * (a.steps + 1))
+        kp = statistics.median(kpair) / (npair * (a.steps + 1))
+        print("device time per kernel in run A (medians): mesh kernel %.1f ns per mesh "
+              "contact-step; pair_contacts + pair_gather %.1f ns per pair contact-step; ratio "
+              "%.2f" % (1e9 * km, 1e9 * kp, km / kp))
 
 
 if __name__ == "__main__":

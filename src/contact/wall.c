@@ -3,6 +3,7 @@
  * are bound (the atoms and the law shared by every kind) and launched. */
 #include "wall.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,6 +12,7 @@
 #include "error.h"
 #include "fix.h"
 #include "mesh.h"
+#include "ocl.h"
 #include "pair.h"
 
 int wall_elements(const struct wall_geom *w) { return w->kind == WALL_PLANE ? 2 : 1; }
@@ -87,11 +89,12 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
 /* ---- mesh walls -------------------------------------------------------------------- */
 
 void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh *m,
-                      const double *normal, double reach, const char *who)
+                      const double *normal, double reach, double lskin, const char *who)
 {
     wall_mesh_release(wm);
     struct mesh_bins b;
     char err[256];
+    reach += lskin;
     if (mesh_bin(m, reach, &b, err, sizeof err))
         gr_error(g, "%s: %s", who, err);
     int nt = m->ntri, ncell = b.n[0] * b.n[1] * b.n[2];
@@ -118,6 +121,14 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
     eng_write(g, wm->ctri, 0, (size_t)nlist * sizeof(int), b.list);
     free(tri);
     wm->ntri = nt;
+    wm->reach = reach;
+    wm->lskin = lskin;
+    wm->mscale = 0;
+    for (int v = 0; v < m->nvert; v++) {
+        const double *p = m->vert + 3 * v;
+        double l1 = fabs(p[0]) + fabs(p[1]) + fabs(p[2]);
+        wm->mscale = l1 > wm->mscale ? l1 : wm->mscale;
+    }
     memcpy(wm->gn, b.n, sizeof wm->gn);
     memcpy(wm->glo, b.lo, sizeof wm->glo);
     wm->h = b.h;
@@ -126,15 +137,76 @@ void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh 
 
 void wall_mesh_release(struct wall_mesh *wm)
 {
-    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose};
+    for (int k = 0; k < 2; k++) {
+        if (wm->pose_ev[k]) {
+            clWaitForEvents(1, &wm->pose_ev[k]);
+            clReleaseEvent(wm->pose_ev[k]);
+            wm->pose_ev[k] = NULL;
+        }
+        free(wm->pose_host[k]);
+        wm->pose_host[k] = NULL;
+    }
+    cl_mem *m[] = {&wm->tri, &wm->triv, &wm->cstart, &wm->ctri, &wm->pose, &wm->mlist,
+                   &wm->mlpos};
     for (size_t i = 0; i < sizeof m / sizeof *m; i++)
         if (*m[i]) {
             clReleaseMemObject(*m[i]);
             *m[i] = NULL;
         }
+    wm->lcap = 0;
+    wm->pose_ok = 0;
 }
 
-void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm,
+/* The per-atom triangle lists for n atoms: zero (no tag is 0: every entry
+ * stale) when they are (re)allocated; kept otherwise, as an entry names
+ * its atom and the point it was built at. */
+static void mesh_lists_reserve(struct gravel *g, struct wall_mesh *wm, int n)
+{
+    if (wm->mlist && wm->lcap >= (size_t)n)
+        return;
+    cl_mem *m[] = {&wm->mlist, &wm->mlpos};
+    for (size_t i = 0; i < sizeof m / sizeof *m; i++)
+        if (*m[i]) {
+            clReleaseMemObject(*m[i]);
+            *m[i] = NULL;
+        }
+    size_t cap = (size_t)n + 64;
+    wm->mlist = eng_alloc(g, cap * MESH_LIST_W * sizeof(int), "mesh triangle lists");
+    wm->mlpos = eng_alloc(g, cap * MESH_LPOS_W * g->eng->rsz, "mesh triangle lists");
+    eng_fill_zero(g, wm->mlist, cap * MESH_LIST_W * sizeof(int));
+    eng_fill_zero(g, wm->mlpos, cap * MESH_LPOS_W * g->eng->rsz);
+    wm->lcap = cap;
+}
+
+/* The pose to the device when it differs from the one there (a mesh that
+ * does not move is written once), without waiting for the queue: the
+ * write is ordered before the mesh kernel, and its host copy is kept until
+ * it has completed (the copy's previous write is waited for, long done). */
+static void mesh_pose_upload(struct gravel *g, struct wall_mesh *wm, const double *pose)
+{
+    if (wm->pose_ok && !memcmp(wm->pose_up, pose, sizeof wm->pose_up))
+        return;
+    int k = wm->pose_k = !wm->pose_k;
+    if (wm->pose_ev[k]) {
+        OCL_CHECK(g, clWaitForEvents(1, &wm->pose_ev[k]));
+        clReleaseEvent(wm->pose_ev[k]);
+        wm->pose_ev[k] = NULL;
+    }
+    if (!wm->pose_host[k])
+        wm->pose_host[k] = gr_malloc(g, POSE_N * sizeof(double));
+    if (g->eng->single)
+        for (int q = 0; q < POSE_N; q++)
+            ((float *)wm->pose_host[k])[q] = (float)pose[q];
+    else
+        memcpy(wm->pose_host[k], pose, POSE_N * sizeof(double));
+    OCL_CHECK(g, clEnqueueWriteBuffer(g->eng->ocl.queue, wm->pose, CL_FALSE, 0,
+                                      POSE_N * g->eng->rsz, wm->pose_host[k], 0, NULL,
+                                      &wm->pose_ev[k]));
+    memcpy(wm->pose_up, pose, sizeof wm->pose_up);
+    wm->pose_ok = 1;
+}
+
+void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
                      const struct wall_law *law, const double R[9], const double d[3],
                      const double V0[3], const double omega[3], const double ref[3], int moving,
                      int hstride, int hoff, cl_mem fmesh)
@@ -162,7 +234,8 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
         pose[POSE_D + q] -= o[q];
         pose[POSE_REF + q] -= o[q];
     }
-    eng_write_reals(g, wm->pose, POSE_N, pose);
+    mesh_pose_upload(g, wm, pose);
+    mesh_lists_reserve(g, wm, a->n);
     const struct mesh_kernel_args ka = {
         .wall_atoms = wall_atoms_args(g, f, law),
         .hstride = hstride,
@@ -180,6 +253,12 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm
         .dt = g->dt,
         .shearupdate = !eng_in_setup(g),
         .inclusive = law->inclusive,
+        .tag = a->tag,
+        .mlist = wm->mlist,
+        .mlpos = wm->mlpos,
+        .lskin = wm->lskin,
+        .lreach = wm->reach,
+        .mscale = wm->mscale,
     };
     ka_bind_mesh_kernel(g, law->kernel, 0, &ka);
     eng_launch(g, law->kernel, (size_t)a->n);

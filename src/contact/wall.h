@@ -86,18 +86,30 @@ struct wall_mesh {
     cl_mem tri, triv, cstart, ctri, pose;
     int gn[3];
     double glo[3], h;
+    double reach, lskin, mscale;    /* bin reach, list skin, largest |vertex|_1 */
+    cl_mem mlist, mlpos;            /* per-atom triangle lists (MESH_LIST_*) */
+    size_t lcap;                    /* atoms they hold */
+    double pose_up[POSE_N];         /* the pose last uploaded (pose_ok: valid) */
+    int pose_ok;
+    /* a moving mesh's pose goes up without a wait: two host copies, each
+     * kept until the write from it (its event) has completed */
+    void *pose_host[2];
+    cl_event pose_ev[2];
+    int pose_k;
 };
 
 /* Upload mesh m (normals: 3 per triangle) with bins for particles of radius
- * up to reach; `who` names the caller in errors. */
+ * up to reach + lskin, and per-atom triangle lists built lskin beyond an
+ * atom's radius (0: none; kernels/wall.cl mesh_candidates); `who` names the
+ * caller in errors. */
 void wall_mesh_upload(struct gravel *g, struct wall_mesh *wm, const struct mesh *m,
-                      const double *normal, double reach, const char *who);
+                      const double *normal, double reach, double lskin, const char *who);
 void wall_mesh_release(struct wall_mesh *wm);
 /* Add the mesh contacts of f's atoms. R, d, V0, omega: the pose; ref: the
  * torque reference point (lab frame). History at REAL offset hoff of a
  * per-atom record of hstride REAL; fmesh (or NULL): per atom force on the
  * mesh and torque about ref. */
-void wall_mesh_apply(struct gravel *g, struct fix *f, const struct wall_mesh *wm,
+void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
                      const struct wall_law *law, const double R[9], const double d[3],
                      const double V0[3], const double omega[3], const double ref[3], int moving,
                      int hstride, int hoff, cl_mem fmesh);

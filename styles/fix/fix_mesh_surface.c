@@ -219,16 +219,21 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
     for (int i = 0; i < g->atoms.n; i++)
         reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
     /* a pair style that takes contacts one drift away (linear/restitution)
-     * needs the triangles within the skin of the atom's bin too */
-    if (g->styles.pair && g->styles.pair->caps.approach)
+     * needs the triangles within the skin of the atom's bin too, and
+     * searches the bin every step; the others keep per-atom triangle lists
+     * built a skin beyond the radius (the neighbor skin, or a tenth of the
+     * largest radius without one; kernels/wall.cl mesh_candidates) */
+    int approach = g->styles.pair && g->styles.pair->caps.approach;
+    if (approach)
         reach += g->neigh.skin;
     reach *= 1.0 + 1e-6;
+    double lskin = approach ? 0 : g->neigh.skin > 0 ? g->neigh.skin : 0.1 * reach;
     char who[GR_NAMELEN + 32];
     snprintf(who, sizeof who, "fix %s (%s mesh)", f->id, f->style->name);
     for (int m = 0; m < mw->n; m++) {
         struct mesh_surface *ms = mesh_surface_get(g, mw->id[m], who);
         mesh_surface_claim(g, ms, mw->id[m], f);
-        wall_mesh_upload(g, &mw->wm[m], &ms->m, ms->normal, reach, who);
+        wall_mesh_upload(g, &mw->wm[m], &ms->m, ms->normal, reach, lskin, who);
     }
     /* per mesh WALL_MESH_SLOTS slots of a key and the law's history REAL */
     return history ? (size_t)mw->n * WALL_MESH_SLOTS * (1 + history) * eng_get(g)->rsz : 0;
