@@ -24,7 +24,12 @@
 
 #define LANE_PASTE(a, b) a##b
 #define LANE_CAT(a, b) LANE_PASTE(a, b)
-#define LLOAD(t) LANE_CAT(vload, PAIR_LW)(0, t)
+#define LANES_2(F) (F(0), F(1))
+#define LANES_4(F) (F(0), F(1), F(2), F(3))
+#define LANES_8(F) (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7))
+#define LANES_16(F)                                                                            \
+    (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7), F(8), F(9), F(10), F(11), F(12), F(13),   \
+     F(14), F(15))
 #define LSTORE(v, t) LANE_CAT(vstore, PAIR_LW)(v, 0, t)
 #define LSELW(a, b, m) select((a), (b), (m))
 typedef LANE_CAT(REAL, PAIR_LW) lreal_w;
@@ -56,13 +61,6 @@ static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
 #define LMINIMG_Z(d, L) (d)
 #endif
 
-/* the per-lane data gathered from the particles, REAL fields first */
-enum pair_lane_field {
-    PL_XI, PL_YI, PL_ZI, PL_XJ, PL_YJ, PL_ZJ, PL_VIX, PL_VIY, PL_VIZ, PL_VJX, PL_VJY, PL_VJZ,
-    PL_OIX, PL_OIY, PL_OIZ, PL_OJX, PL_OJY, PL_OJZ, PL_RADI, PL_RADJ, PL_MI, PL_MJ, PL_FI, PL_FJ,
-    PL_S1, PL_S2, PL_S3, PL_VN2REC, PL_PAR, PL_N = PL_PAR + GRAN_NPARAM
-};
-
 /* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
 __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 {
@@ -74,57 +72,60 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     (void)xy;
     (void)xz;
     (void)yz;
-    /* gather: a lane past the last contact repeats the last one (stored by nobody) */
-    REAL t[PL_N][PAIR_LW];
+    /* the lanes' contacts and particles: a lane past the last contact repeats
+     * the last one (stored by nobody) */
+    int cc[PAIR_LW], ii[PAIR_LW], jj[PAIR_LW];
+    __global const REAL *pp[PAIR_LW];
     for (int l = 0; l < PAIR_LW; l++) {
-        const int c = min(c0 + l, ncontact - 1);
-        const int i = ci[c], j = cj[c];
-        const REAL3 xi = vload3(i, x), xj = vload3(j, x);
-        const REAL3 vi = vload3(i, v), vj = vload3(j, v);
-        const REAL3 oi = vload3(i, omega), oj = vload3(j, omega);
-        t[PL_XI][l] = xi.x;
-        t[PL_YI][l] = xi.y;
-        t[PL_ZI][l] = xi.z;
-        t[PL_XJ][l] = xj.x;
-        t[PL_YJ][l] = xj.y;
-        t[PL_ZJ][l] = xj.z;
-        t[PL_VIX][l] = vi.x;
-        t[PL_VIY][l] = vi.y;
-        t[PL_VIZ][l] = vi.z;
-        t[PL_VJX][l] = vj.x;
-        t[PL_VJY][l] = vj.y;
-        t[PL_VJZ][l] = vj.z;
-        t[PL_OIX][l] = oi.x;
-        t[PL_OIY][l] = oi.y;
-        t[PL_OIZ][l] = oi.z;
-        t[PL_OJX][l] = oj.x;
-        t[PL_OJY][l] = oj.y;
-        t[PL_OJZ][l] = oj.z;
-        t[PL_RADI][l] = radius[i];
-        t[PL_RADJ][l] = radius[j];
-        t[PL_MI][l] = rmass[i];
-        t[PL_MJ][l] = rmass[j];
-        t[PL_FI][l] = (mask[i] & freezebit) ? 1 : 0;
-        t[PL_FJ][l] = (mask[j] & freezebit) ? 1 : 0;
-#ifdef HAS_HISTORY
-        t[PL_S1][l] = shear[(size_t)c * 3];
-        t[PL_S2][l] = shear[(size_t)c * 3 + 1];
-        t[PL_S3][l] = shear[(size_t)c * 3 + 2];
-#else
-        t[PL_S1][l] = t[PL_S2][l] = t[PL_S3][l] = 0;
-#endif
-        t[PL_VN2REC][l] = acc[ACC_PAIR_W * c + ACC_PAIR_VN2];
-        __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
-        for (int q = 0; q < GRAN_NPARAM; q++)
-            t[PL_PAR + q][l] = p[q];
+        cc[l] = min(c0 + l, ncontact - 1);
+        ii[l] = ci[cc[l]];
+        jj[l] = cj[cc[l]];
+        pp[l] = param + (size_t)((type[ii[l]] - 1) * ntypes + (type[jj[l]] - 1)) * nparam;
     }
+    /* gathered straight into lanes (LG(F): F(0), ..., F(PAIR_LW - 1); no
+     * round trip through private memory) */
+#define G_XI(l) x[3 * (size_t)ii[l]]
+#define G_YI(l) x[3 * (size_t)ii[l] + 1]
+#define G_ZI(l) x[3 * (size_t)ii[l] + 2]
+#define G_XJ(l) x[3 * (size_t)jj[l]]
+#define G_YJ(l) x[3 * (size_t)jj[l] + 1]
+#define G_ZJ(l) x[3 * (size_t)jj[l] + 2]
+#define G_VIX(l) v[3 * (size_t)ii[l]]
+#define G_VIY(l) v[3 * (size_t)ii[l] + 1]
+#define G_VIZ(l) v[3 * (size_t)ii[l] + 2]
+#define G_VJX(l) v[3 * (size_t)jj[l]]
+#define G_VJY(l) v[3 * (size_t)jj[l] + 1]
+#define G_VJZ(l) v[3 * (size_t)jj[l] + 2]
+#define G_OIX(l) omega[3 * (size_t)ii[l]]
+#define G_OIY(l) omega[3 * (size_t)ii[l] + 1]
+#define G_OIZ(l) omega[3 * (size_t)ii[l] + 2]
+#define G_OJX(l) omega[3 * (size_t)jj[l]]
+#define G_OJY(l) omega[3 * (size_t)jj[l] + 1]
+#define G_OJZ(l) omega[3 * (size_t)jj[l] + 2]
+#define G_RADI(l) radius[ii[l]]
+#define G_RADJ(l) radius[jj[l]]
+#define G_MI(l) rmass[ii[l]]
+#define G_MJ(l) rmass[jj[l]]
+#define G_FI(l) ((mask[ii[l]] & freezebit) ? (REAL)1 : (REAL)0)
+#define G_FJ(l) ((mask[jj[l]] & freezebit) ? (REAL)1 : (REAL)0)
+#define G_S1(l) shear[3 * (size_t)cc[l]]
+#define G_S2(l) shear[3 * (size_t)cc[l] + 1]
+#define G_S3(l) shear[3 * (size_t)cc[l] + 2]
+#define G_REC(l) acc[ACC_PAIR_W * cc[l] + ACC_PAIR_VN2]
+#define G_KN(l) pp[l][GRAN_KN]
+#define G_KT(l) pp[l][GRAN_KT]
+#define G_GN(l) pp[l][GRAN_GAMMAN]
+#define G_GT(l) pp[l][GRAN_GAMMAT]
+#define G_XMU(l) pp[l][GRAN_XMU]
+#define G_LIM(l) pp[l][GRAN_LIMIT]
+#define LG(F) ((lreal_w)LANE_CAT(LANES_, PAIR_LW)(F))
 
     /* the gate and the contact's build (contact_gate, contact_build) */
-    const lreal_w radi = LLOAD(t[PL_RADI]), radj = LLOAD(t[PL_RADJ]);
+    const lreal_w radi = LG(G_RADI), radj = LG(G_RADJ);
     struct gran_in_w k;
-    k.del = lr3_of_w(LMINIMG_X(LLOAD(t[PL_XI]) - LLOAD(t[PL_XJ]), Lx),
-                     LMINIMG_Y(LLOAD(t[PL_YI]) - LLOAD(t[PL_YJ]), Ly),
-                     LMINIMG_Z(LLOAD(t[PL_ZI]) - LLOAD(t[PL_ZJ]), Lz));
+    k.del = lr3_of_w(LMINIMG_X(LG(G_XI) - LG(G_XJ), Lx),
+                     LMINIMG_Y(LG(G_YI) - LG(G_YJ), Ly),
+                     LMINIMG_Z(LG(G_ZI) - LG(G_ZJ), Lz));
     const lreal_w rsq = k.del.x * k.del.x + k.del.y * k.del.y + k.del.z * k.del.z;
     const lreal_w reach = radi + radj;
     const lmask_w acts = rsq < reach * reach;
@@ -132,30 +133,34 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     k.r = sqrt(rsq);
     k.delta = radsum - k.r;
     k.reff = radi * radj / (radi + radj);
-    k.vr = lr3_of_w(LLOAD(t[PL_VIX]) - LLOAD(t[PL_VJX]), LLOAD(t[PL_VIY]) - LLOAD(t[PL_VJY]),
-                    LLOAD(t[PL_VIZ]) - LLOAD(t[PL_VJZ]));
-    const lreal_w mi = LLOAD(t[PL_MI]), mj = LLOAD(t[PL_MJ]);
-    k.meff = LSELW(LSELW(mi * mj / (mi + mj), mj, LLOAD(t[PL_FI]) != (lreal_w)0), mi,
-                   LLOAD(t[PL_FJ]) != (lreal_w)0);
+    k.vr = lr3_of_w(LG(G_VIX) - LG(G_VJX), LG(G_VIY) - LG(G_VJY),
+                    LG(G_VIZ) - LG(G_VJZ));
+    const lreal_w mi = LG(G_MI), mj = LG(G_MJ);
+    k.meff = LSELW(LSELW(mi * mj / (mi + mj), mj, LG(G_FI) != (lreal_w)0), mi,
+                   LG(G_FJ) != (lreal_w)0);
     /* the kinematics the gran laws and the note read (contact_kinematics) */
     k.rinv = (lreal_w)1 / k.r;
     k.rsqinv = (lreal_w)1 / rsq;
     k.vdel = k.vr.x * k.del.x + k.vr.y * k.del.y + k.vr.z * k.del.z;
-    k.w = lr3_of_w(radi * LLOAD(t[PL_OIX]) + radj * LLOAD(t[PL_OJX]),
-                   radi * LLOAD(t[PL_OIY]) + radj * LLOAD(t[PL_OJY]),
-                   radi * LLOAD(t[PL_OIZ]) + radj * LLOAD(t[PL_OJZ]));
+    k.w = lr3_of_w(radi * LG(G_OIX) + radj * LG(G_OJX),
+                   radi * LG(G_OIY) + radj * LG(G_OJY),
+                   radi * LG(G_OIZ) + radj * LG(G_OJZ));
     k.dt = dt;
     k.shearupdate = shearupdate;
 
     /* the law */
     struct gran_par_w par;
-    par.kn = LLOAD(t[PL_PAR + GRAN_KN]);
-    par.kt = LLOAD(t[PL_PAR + GRAN_KT]);
-    par.gamman = LLOAD(t[PL_PAR + GRAN_GAMMAN]);
-    par.gammat = LLOAD(t[PL_PAR + GRAN_GAMMAT]);
-    par.xmu = LLOAD(t[PL_PAR + GRAN_XMU]);
-    par.limit = LLOAD(t[PL_PAR + GRAN_LIMIT]);
-    struct lr3_w sh = lr3_of_w(LLOAD(t[PL_S1]), LLOAD(t[PL_S2]), LLOAD(t[PL_S3]));
+    par.kn = LG(G_KN);
+    par.kt = LG(G_KT);
+    par.gamman = LG(G_GN);
+    par.gammat = LG(G_GT);
+    par.xmu = LG(G_XMU);
+    par.limit = LG(G_LIM);
+#ifdef HAS_HISTORY
+    struct lr3_w sh = lr3_of_w(LG(G_S1), LG(G_S2), LG(G_S3));
+#else
+    struct lr3_w sh = lr3_of_w((lreal_w)0, (lreal_w)0, (lreal_w)0);
+#endif
     struct gran_out_w o;
     LANE_CAT(PAIR_EVAL_LANES, _w)(&k, &par, &sh, &o);
 
@@ -173,8 +178,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     /* the accuracy note's test (ACC_NOTE_PAIR): an acting contact overlapping
      * at a normal speed above its record */
     const lreal_w vn2 = k.vdel * k.vdel / rsq;
-    const lmask_w note = acts & (rsq < radsum * radsum) & (vn2 > LLOAD(t[PL_VN2REC]));
-    REAL r[PL_N][PAIR_LW]; /* back per lane: force, torques, shear, note */
+    const lmask_w note = acts & (rsq < radsum * radsum) & (vn2 > LG(G_REC));
+    REAL r[17][PAIR_LW]; /* back per lane: force, torques, shear, acts, note, vn2, meff, reff */
     LSTORE(fx, r[0]);
     LSTORE(fy, r[1]);
     LSTORE(fz, r[2]);
@@ -201,9 +206,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
             struct contact kc;
             kc.meff = r[15][l];
             kc.reff = r[16][l];
-            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, param + (size_t)((type[ci[c]] - 1) * ntypes +
-                                                                     (type[cj[c]] - 1)) * nparam,
-                                               sqrt(r[14][l]));
+            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(r[14][l]));
             if (tc > (REAL)0) {
                 acc[ACC_PAIR_W * c + ACC_PAIR_Q] = dt / tc;
                 acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = r[14][l];

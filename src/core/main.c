@@ -286,7 +286,8 @@ int main(int argc, char **argv)
                 strerror(screen_err ? screen_err : EIO));
         rc = 1;
     }
-    g->screen = NULL;
+    if (g->screen != stdout) /* closed above; the profile's table goes to stderr */
+        g->screen = NULL;
     gr_destroy(g);
     return rc;
 }

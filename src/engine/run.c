@@ -259,7 +259,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         };
         nbr_list_box(l, pc.box);
         ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
-        eng_launch(g, e->k_pair, (size_t)l->ncontact);
+        /* PAIR_LW contacts per work-item (kernels/pair_gran_lanes.cl) */
+        eng_launch(g, e->k_pair, ((size_t)l->ncontact + (size_t)e->pair_lw - 1) / (size_t)e->pair_lw);
         /* new forces: a virial or energy taken before is stale */
         e->virial_snap_step = e->epair_snap_step = -1;
         /* fused post_force ops, and the final kick except at setup */
