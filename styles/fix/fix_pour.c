@@ -421,6 +421,23 @@ static void check_template(struct gravel *g, const struct molecule *m)
     }
 }
 
+/* The lightest and heaviest particle the diameters and densities allow
+ * must have a finite mass > 0 (4/3 pi r^3 density, as inserted). */
+static void check_masses(struct gravel *g, const struct pour *p)
+{
+    double rlo = p->radius_one, rhi = p->radius_max;
+    if (p->dstyle == DIAM_RANGE)
+        rlo = p->radius_lo;
+    for (int q = 0; p->dstyle == DIAM_POLY && q < p->npoly; q++)
+        rlo = q == 0 || p->radius_poly[q] < rlo ? p->radius_poly[q] : rlo;
+    double mlo = 4.0 * M_PI / 3.0 * rlo * rlo * rlo * p->dens_lo;
+    double mhi = 4.0 * M_PI / 3.0 * rhi * rhi * rhi * p->dens_hi;
+    if (!(mlo > 0) || !isfinite(mhi))
+        gr_error(g, "fix pour: particles of diameter %g to %g and density %g to %g would have "
+                    "masses %g to %g (each needs a finite mass > 0)",
+                 2 * rlo, 2 * rhi, p->dens_lo, p->dens_hi, mlo, mhi);
+}
+
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 3)
@@ -463,6 +480,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (!reg)
         gr_error(g, "must specify a region in fix pour");
     check_region(g, reg);
+    if (!p->mol)
+        check_masses(g, p);
     const struct domain *d = &g->dom;
     int dim = d->dimension;
     if (!strcmp(reg->style->name, "block")) {

@@ -146,6 +146,7 @@ POURS = [
      12),
     ("pour_diam_one_negative", POUR + "diam one -1\n",
      "diam one diameter must be positive, got -1", 12),
+    ("pour_mass_underflow", POUR + "diam one 1e-120\n", "each needs a finite mass > 0", 12),
     ("pour_vol_negative", POUR + "vol -0.1 50\n", "vol fraction must be positive", 12),
     ("pour_side_out", "region out block -9 9 -9 9 10 15 side out units box\n"
      "fix p all pour 10 1 5 region out\n", "fix pour region out has side out", 13),
