@@ -153,8 +153,11 @@ POURS = [
     ("pour_moving_region", "variable z equal 0.1*time\n"
      "region mv block -9 9 -9 9 10 15 move NULL NULL v_z units box\n"
      "fix p all pour 10 1 5 region mv\n", "fix pour region mv moves or rotates", 14),
-    ("pour_template_massless", "molecule dot zero.mol\nfix p all pour 10 0 5 region slab mol "
-     "dot\n", "would be inserted with radius 0 and mass 0", 13),
+    ("pour_template_point", "molecule dot zero.mol\nfix p all pour 10 0 5 region slab mol "
+     "dot\n", "molecule template dot has no finite positive extent (radius 0)", 13),
+    ("pour_template_massless", "molecule flat flat.mol\nfix p all pour 10 0 5 region slab mol "
+     "flat\n", "atom 1 of molecule template flat would be inserted with radius 0 and mass 0",
+     13),
     ("pour_type_offset_overflow", "molecule two two.mol\nfix p all pour 10 2147483647 5 region "
      "slab mol two\n", "invalid atom type in fix pour mol command", 13),
 ]
@@ -170,6 +173,8 @@ fix p all pour 10 1 5 region slab
 
 MOL_OK = {
     "zero.mol": "dot\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0\n",
+    "flat.mol": "pair\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 1 0 0\n\nTypes\n\n1 1\n2 1\n\n"
+                "Diameters\n\n1 0\n2 0\n",
     "two.mol": "two\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 1 0 0\n\nTypes\n\n1 1\n2 1\n",
 }
 
