@@ -356,15 +356,6 @@ static inline void contact_out_set(const struct contact *k, const struct contact
     o->tj = -k->radj * cf->tc + cf->tr;
 }
 
-/* A law with no collision time (its contacts leave no accuracy record) */
-static inline REAL contact_no_tcol(const struct contact *c, __global const REAL *p, const REAL vn)
-{
-    (void)c;
-    (void)p;
-    (void)vn;
-    return 0;
-}
-
 /* A contact's history row back to its slot: all n REAL when it acted; when
  * it did not, the forgotten ones (zero in h), written only where the slot
  * is not zero already (most are). */

@@ -18,17 +18,12 @@ static inline void wall_granular_eval(const struct contact *c, __global const RE
     granular_eval_l(c, p, h, out, L);
 }
 
-/* accuracy record: the Hertz collision time of the wall's kn (hertz,
- * hertz/material, dmt), the linear one for hooke; 0 for jkr */
+/* accuracy record: pair granular's collision time of the wall's kn
+ * (granular_tcol, kernels/pair_granular.cl) */
 static inline REAL wall_granular_eval_tcol(const struct contact *c, __global const REAL *p,
                                            const REAL vn)
 {
-    const int nm = (int)p[GR_NMODEL];
-    if (nm == GR_N_HOOKE)
-        return tcol_linear(p[GR_KN], 0, c->meff);
-    if (nm == GR_N_JKR)
-        return 0;
-    return tcol_hertz(p[GR_KN], c->reff, c->meff, vn);
+    return granular_tcol(c, p, vn);
 }
 
 /* jkr walls (LAMMPS 2021 FixWallGran::pulloff_distance): the reach of a

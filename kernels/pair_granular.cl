@@ -364,6 +364,20 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     out->tr = (delta * (c->radi - c->radj) / ((REAL)2 * radsum)) * tor - tw;
 }
 
+/* Collision time of a contact of this model (the accuracy records,
+ * kernels/accuracy.cl; the host's model_tcol in styles/pair/pair_granular.c
+ * is the same for two equal spheres): undamped, hooke the linear spring's
+ * half period, hertz, hertz/material, dmt and jkr Johnson's Hertz time of kn
+ * = 4/3 E*; 0 (no record) when kn = 0. Pair and wall/gran granular walls. */
+static inline REAL granular_tcol(const struct contact *c, __global const REAL *p, const REAL vn)
+{
+    if (!(p[GR_KN] > (REAL)0))
+        return 0;
+    if ((int)p[GR_NMODEL] == GR_N_HOOKE)
+        return tcol_linear(p[GR_KN], 0, c->meff);
+    return tcol_hertz(p[GR_KN], c->reff, c->meff, vn);
+}
+
 /* The pair's evaluator: the layout of the build options (folded away). */
 #ifdef GRN_USED
 #ifndef GR_H_A
@@ -395,5 +409,10 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
                                 GRW_USED,   GR_TANG_HISTORY_ON,    GR_H_A,
                                 GR_H_ROLL,  GR_H_TWIST, GR_H_TOUCH, GR_WIDTH, 0};
     granular_eval_l(c, p, h, out, L);
+}
+static inline REAL granular_eval_tcol(const struct contact *c, __global const REAL *p,
+                                      const REAL vn)
+{
+    return granular_tcol(c, p, vn);
 }
 #endif

@@ -20,11 +20,11 @@
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
 
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
-/* the pair law's contact body (kernels/contact.cl); pair granular's row
- * form keeps no accuracy record */
+/* the pair law's contact body (kernels/contact.cl), with its collision
+ * time for the accuracy records (pair granular's row form too) */
 #ifdef PAIR_EVAL_ROW
 #define PAIR_ROW 1
-CONTACT_BODY(pair_body, PAIR_EVAL_ROW, 1, contact_no_tcol)
+CONTACT_BODY(pair_body, PAIR_EVAL_ROW, 1, TCOL_OF(PAIR_EVAL_ROW))
 #else
 #define PAIR_ROW 0
 CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
@@ -66,7 +66,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     s.inclusive = 0;
     s.hold = -1;
     s.hzero = PAIR_HIST_N > 0 ? HIST_ZERO_N : 0;
-    s.note = !PAIR_ROW;
+    s.note = 1;
     s.note_idx = c;
     s.acode = 0;
     s.refine = 1;

@@ -206,7 +206,7 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
  * the row form (pair granular) the law's history row is the wall's. */
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
 #ifdef PAIR_EVAL_ROW
-CONTACT_BODY(wall_pair_body, PAIR_EVAL_ROW, 1, contact_no_tcol)
+CONTACT_BODY(wall_pair_body, PAIR_EVAL_ROW, 1, TCOL_OF(PAIR_EVAL_ROW))
 #define WALL_PAIR_ROW 1
 #else
 CONTACT_BODY(wall_pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))

@@ -50,28 +50,29 @@ void molecules_free(struct gravel *g)
 
 /* ---- the file ---------------------------------------------------------------- */
 
+/* The open file and every scratch buffer of one read: reader_close frees
+ * them all, on success and when an error unwinds through read_guarded. */
 struct reader {
     FILE *fp;
     const char *path;
     char *buf;
     size_t cap;
     int line;
-    int *seen;   /* section(): how often each atom index appeared */
-    double *tmp; /* one value per atom (Types, Molecules) */
+    int *seen;              /* section(): how often each atom appeared */
+    double *tmp;            /* one value per atom (Types, Molecules) */
 };
 
-/* Release what the reader holds (after success or an error). */
 static void reader_close(struct reader *r)
 {
-    if (r->fp)
-        fclose(r->fp);
     free(r->buf);
     free(r->seen);
     free(r->tmp);
-    r->fp = NULL;
     r->buf = NULL;
     r->seen = NULL;
     r->tmp = NULL;
+    if (r->fp)
+        fclose(r->fp);
+    r->fp = NULL;
 }
 
 /* Next line without its comment, trimmed; NULL at the end. */
@@ -102,6 +103,7 @@ static int split(char *s, char **w, int max)
     return n;
 }
 
+/* A finite number (nan, inf and overflowing values are refused). */
 static double num(struct gravel *g, const struct reader *r, const char *s)
 {
     char *end;
@@ -109,8 +111,26 @@ static double num(struct gravel *g, const struct reader *r, const char *s)
     if (end == s || *end)
         gr_error(g, "molecule file '%s' line %d: expected a number, got '%.40s'", r->path,
                  r->line, s);
+    if (!isfinite(v))
+        gr_error(g, "molecule file '%s' line %d: expected a finite number, got '%.40s'",
+                 r->path, r->line, s);
     return v;
 }
+
+/* v times a scale factor, which must stay finite (what: the value's name). */
+static double scaled(struct gravel *g, const char *path, double v, double factor,
+                     const char *what)
+{
+    double x = v * factor;
+    if (!isfinite(x))
+        gr_error(g, "molecule file '%s': %s %g times the scale factor is not finite", path,
+                 what, v);
+    return x;
+}
+
+/* A per-atom integer of a section (type, molecule ID) read as a number:
+ * whole and within [1, hi] (no conversion of an out-of-range double). */
+static int whole_in(double v, double hi) { return v == floor(v) && v >= 1 && v <= hi; }
 
 static int inum(struct gravel *g, const struct reader *r, const char *s)
 {
@@ -154,18 +174,16 @@ static void section(struct gravel *g, struct reader *r, struct molecule *m, cons
         if (seen[i] != 1)
             gr_error(g, "molecule file '%s': atom %d appears %d times in %s", r->path, i + 1,
                      seen[i], name);
-    free(seen);
+    free(r->seen);
     r->seen = NULL;
 }
 
-/* Read the file into m; errors leave what r holds for the caller to free. */
-static void read_file(struct gravel *g, struct reader *r, struct molecule *m, double scale,
+/* The file's contents after the open (read_file); every error unwinds
+ * through read_guarded, which closes the reader. */
+static void read_body(struct gravel *g, struct molecule *m, struct reader *r, double scale,
                       int toff)
 {
-    const char *why = NULL, *path = r->path;
-    r->fp = fio_open_read(path, 0, &why);
-    if (!r->fp)
-        gr_error(g, "cannot open molecule file '%s': %s", path, why ? why : "error");
+    const char *path = r->path;
     if (!next_line(g, r)) /* the title line */
         gr_error(g, "molecule file '%s' is empty", path);
     char *s, *w[8];
@@ -186,18 +204,21 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
             m->natoms = inum(g, r, w[0]);
         } else if (!strcmp(kw, "mass") && n == 2) {
             m->massflag = 1;
-            m->masstotal = num(g, r, w[0]) * scale * scale * scale;
+            m->masstotal = scaled(g, path, num(g, r, w[0]), scale * scale * scale, "mass");
+            if (!(m->masstotal > 0))
+                gr_error(g, "molecule file '%s' line %d: the mass must be positive, got %g",
+                         path, r->line, m->masstotal);
         } else if (!strcmp(kw, "com") && n == 4) {
             m->comflag = 1;
             for (int q = 0; q < 3; q++)
-                m->com[q] = num(g, r, w[q]) * scale;
+                m->com[q] = scaled(g, path, num(g, r, w[q]), scale, "com");
             if (g->dom.dimension == 2 && m->com[2] != 0.0)
                 gr_error(g, "molecule file '%s': z center-of-mass must be 0.0 for 2d", path);
         } else if (!strcmp(kw, "inertia") && n == 7) {
             m->inertiaflag = 1;
             double s5 = scale * scale * scale * scale * scale;
             for (int q = 0; q < 6; q++)
-                m->itensor[q] = num(g, r, w[q]) * s5;
+                m->itensor[q] = scaled(g, path, num(g, r, w[q]), s5, "inertia");
         } else if ((!strcmp(kw, "bonds") || !strcmp(kw, "angles") || !strcmp(kw, "dihedrals") ||
                     !strcmp(kw, "impropers") || !strcmp(kw, "fragments")) && n == 2) {
             if (inum(g, r, w[0]) != 0)
@@ -230,15 +251,14 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
         if (!strcmp(name, "Coords")) {
             section(g, r, m, name, 3, m->x);
             for (int i = 0; i < 3 * nat; i++)
-                m->x[i] *= scale;
+                m->x[i] = scaled(g, path, m->x[i], scale, "coordinate");
             have_x = 1;
         } else if (!strcmp(name, "Types")) {
             section(g, r, m, name, 1, tmp);
             for (int i = 0; i < nat; i++) {
-                /* checked as a double: a huge, fractional or NaN value (or a
-                 * large offset) never reaches an int conversion */
+                /* in double: a type plus an offset near INT_MAX must not overflow */
                 double t = tmp[i] + toff;
-                if (tmp[i] != floor(tmp[i]) || !(t >= 1 && t <= g->atoms.ntypes))
+                if (tmp[i] != floor(tmp[i]) || !whole_in(t, g->atoms.ntypes))
                     gr_error(g, "molecule file '%s': invalid atom type %g for atom %d "
                                 "(1..%d with offset %d)", path, tmp[i], i + 1,
                              g->atoms.ntypes, toff);
@@ -248,28 +268,37 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
             }
             have_type = 1;
         } else if (!strcmp(name, "Diameters")) {
+            free(m->radius);
+            m->radius = NULL;
             m->radius = gr_calloc(g, (size_t)nat, sizeof(double));
             section(g, r, m, name, 1, m->radius);
             for (int i = 0; i < nat; i++) {
                 if (m->radius[i] < 0)
                     gr_error(g, "molecule file '%s': invalid diameter %g", path,
                              m->radius[i]);
-                m->radius[i] *= 0.5 * scale;
+                m->radius[i] = scaled(g, path, m->radius[i], 0.5 * scale, "diameter");
             }
         } else if (!strcmp(name, "Masses")) {
+            free(m->rmass);
+            m->rmass = NULL;
             m->rmass = gr_calloc(g, (size_t)nat, sizeof(double));
             section(g, r, m, name, 1, m->rmass);
             for (int i = 0; i < nat; i++) {
                 if (m->rmass[i] <= 0)
                     gr_error(g, "molecule file '%s': invalid mass %g", path, m->rmass[i]);
-                m->rmass[i] *= scale * scale * scale;
+                m->rmass[i] = scaled(g, path, m->rmass[i], scale * scale * scale, "mass");
+                if (!(m->rmass[i] > 0))
+                    gr_error(g, "molecule file '%s': mass %g of atom %d underflows to 0 at "
+                                "this scale", path, m->rmass[i], i + 1);
             }
         } else if (!strcmp(name, "Molecules")) {
+            free(m->molecule);
+            m->molecule = NULL;
             m->molecule = gr_calloc(g, (size_t)nat, sizeof(int64_t));
             section(g, r, m, name, 1, tmp);
             int64_t mx = 0;
             for (int i = 0; i < nat; i++) {
-                if (tmp[i] != floor(tmp[i]) || !(tmp[i] >= 1 && tmp[i] <= 2147483647.0))
+                if (!whole_in(tmp[i], 2147483647.0))
                     gr_error(g, "molecule file '%s': invalid molecule ID %g for atom %d "
                                 "(an integer 1..2147483647)", path, tmp[i], i + 1);
                 m->molecule[i] = (int64_t)tmp[i];
@@ -288,26 +317,34 @@ static void read_file(struct gravel *g, struct reader *r, struct molecule *m, do
         m->nmolecules = 1;
 }
 
-/* read_file under its own error boundary: the file, the line buffer and the
- * scratch arrays are released whether reading succeeds or fails (the
- * template itself is owned by g->molecules already). */
-static void read_guarded(struct gravel *g, struct molecule *m, const char *path, double scale,
+/* Read the file at path into m; the reader is closed on every path out. */
+static void read_guarded(struct gravel *g, struct molecule *m, struct reader *r, double scale,
                          int toff)
 {
-    struct reader r = {.path = path};
-    jmp_buf *outer = g->err.jmp, here;
-    g->err.jmp = &here;
-    if (setjmp(here)) {
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
         g->err.jmp = outer;
-        reader_close(&r);
+        reader_close(r);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
         exit(1);
     }
-    read_file(g, &r, m, scale, toff);
+    read_body(g, m, r, scale, toff);
     g->err.jmp = outer;
-    reader_close(&r);
+    reader_close(r);
+}
+
+static void read_file(struct gravel *g, struct molecule *m, const char *path, double scale,
+                      int toff)
+{
+    const char *why = NULL;
+    struct reader r = {.path = path};
+    r.fp = fio_open_read(path, 0, &why);
+    if (!r.fp)
+        gr_error(g, "cannot open molecule file '%s': %s", path, why ? why : "error");
+    read_guarded(g, m, &r, scale, toff);
 }
 
 void cmd_molecule(struct gravel *g, int argc, char **argv)
@@ -363,7 +400,7 @@ void cmd_molecule(struct gravel *g, int argc, char **argv)
     snprintf(m->id, sizeof m->id, "%s", id);
     g->molecules = gr_realloc(g, g->molecules, (size_t)(g->nmolecule + 1) * sizeof *g->molecules);
     g->molecules[g->nmolecule++] = m; /* owned now: freed even if reading fails */
-    read_guarded(g, m, argv[1], scale, toff);
+    read_file(g, m, argv[1], scale, toff);
     if (g->dom.dimension == 2)
         for (int i = 0; i < m->natoms; i++)
             if (m->x[3 * i + 2] != 0.0)

@@ -47,6 +47,7 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "coeff_check.h"
 #include "domain.h"
 #include "device.h"
 #include "engine.h"
@@ -291,12 +292,16 @@ static void parse_options(struct gravel *g, struct pour *p, int argc, char **arg
             const char *s = argv[i + 1];
             if (!strcmp(s, "one")) {
                 p->dstyle = DIAM_ONE;
-                p->radius_one = 0.5 * num(g, argc, argv, i + 2, "diam one diameter");
+                p->radius_one = 0.5 * coeff_check(g, "fix pour", "diam one diameter",
+                                                  num(g, argc, argv, i + 2, "diam one diameter"),
+                                                  CR_POSITIVE);
                 p->radius_max = p->radius_one;
                 i += 3;
             } else if (!strcmp(s, "range")) {
                 p->dstyle = DIAM_RANGE;
-                p->radius_lo = 0.5 * num(g, argc, argv, i + 2, "diam range lo");
+                p->radius_lo = 0.5 * coeff_check(g, "fix pour", "diam range lo",
+                                                 num(g, argc, argv, i + 2, "diam range lo"),
+                                                 CR_POSITIVE);
                 p->radius_hi = 0.5 * num(g, argc, argv, i + 3, "diam range hi");
                 if (p->radius_lo > p->radius_hi)
                     gr_error(g, "fix pour: diam range needs lo <= hi, got %s %s", argv[i + 2],
@@ -341,14 +346,16 @@ static void parse_options(struct gravel *g, struct pour *p, int argc, char **arg
                 gr_error(g, "fix pour: diam must be one, range or poly, got '%.64s'", s);
             }
         } else if (!strcmp(k, "dens")) {
-            p->dens_lo = num(g, argc, argv, i + 1, "dens lo");
+            p->dens_lo = coeff_check(g, "fix pour", "dens lo", num(g, argc, argv, i + 1, "dens lo"),
+                                     CR_POSITIVE);
             p->dens_hi = num(g, argc, argv, i + 2, "dens hi");
             if (p->dens_lo > p->dens_hi)
                 gr_error(g, "fix pour: dens needs lo <= hi, got %s %s", argv[i + 1],
                          argv[i + 2]);
             i += 3;
         } else if (!strcmp(k, "vol")) {
-            p->volfrac = num(g, argc, argv, i + 1, "vol fraction");
+            p->volfrac = coeff_check(g, "fix pour", "vol fraction",
+                                     num(g, argc, argv, i + 1, "vol fraction"), CR_POSITIVE);
             if (i + 2 >= argc)
                 gr_error(g, "fix pour: vol needs a fraction and a number of attempts");
             p->maxattempt = arg_int(g, argv[i + 2], "vol attempts");
@@ -382,10 +389,61 @@ static void parse_options(struct gravel *g, struct pour *p, int argc, char **arg
     }
 }
 
+/* LAMMPS's refusals of the insertion region: it must bound its points
+ * (side out does not: "Fix pour region does not support a bounding box")
+ * and keep still (insertion heights come from its extent at creation). */
+static void check_region(struct gravel *g, const struct region *reg)
+{
+    if (!reg->interior)
+        gr_error(g, "fix pour region %s has side out: an insertion region must bound its "
+                    "points (LAMMPS: Fix pour region does not support a bounding box)",
+                 reg->id);
+    if (region_dynamic(reg))
+        gr_error(g, "fix pour region %s moves or rotates: an insertion region cannot be "
+                    "dynamic (as LAMMPS)", reg->id);
+}
+
+/* The template's atoms become particles: a finite extent (molradius, which
+ * sizes the batches) and per atom a finite radius >= 0 and a mass > 0 (the
+ * Masses section, or 4/3 pi r^3 of a unit density as inserted). */
+static void check_template(struct gravel *g, const struct molecule *m)
+{
+    if (!(isfinite(m->molradius) && m->molradius > 0))
+        gr_error(g, "fix pour: molecule template %s has no finite positive extent (radius %g)",
+                 m->id, m->molradius);
+    for (int i = 0; i < m->natoms; i++) {
+        double r = m->radius ? m->radius[i] : 0.5;
+        double mass = m->rmass ? m->rmass[i] : 4.0 * M_PI / 3.0 * r * r * r;
+        if (!(isfinite(r) && r >= 0 && isfinite(mass) && mass > 0))
+            gr_error(g, "fix pour: atom %d of molecule template %s would be inserted with "
+                        "radius %g and mass %g (a particle needs a mass > 0)",
+                     i + 1, m->id, r, mass);
+    }
+}
+
+/* The lightest and heaviest particle the diameters and densities allow
+ * must have a finite mass > 0 (4/3 pi r^3 density, as inserted). */
+static void check_masses(struct gravel *g, const struct pour *p)
+{
+    double rlo = p->radius_one, rhi = p->radius_max;
+    if (p->dstyle == DIAM_RANGE)
+        rlo = p->radius_lo;
+    for (int q = 0; p->dstyle == DIAM_POLY && q < p->npoly; q++)
+        rlo = q == 0 || p->radius_poly[q] < rlo ? p->radius_poly[q] : rlo;
+    double mlo = 4.0 * M_PI / 3.0 * rlo * rlo * rlo * p->dens_lo;
+    double mhi = 4.0 * M_PI / 3.0 * rhi * rhi * rhi * p->dens_hi;
+    if (!(mlo > 0) || !isfinite(mhi))
+        gr_error(g, "fix pour: particles of diameter %g to %g and density %g to %g would have "
+                    "masses %g to %g (each needs a finite mass > 0)",
+                 2 * rlo, 2 * rhi, p->dens_lo, p->dens_hi, mlo, mhi);
+}
+
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 3)
         gr_error(g, "fix pour expects N type seed keyword values ...");
+    if (g->dom.triclinic)
+        gr_error(g, "cannot use fix pour with triclinic box (as LAMMPS)");
     struct pour *p = gr_calloc(g, 1, sizeof *p);
     f->data = p;
     p->ninsert = arg_int(g, argv[0], "number of particles");
@@ -404,11 +462,13 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct region *reg = NULL;
     parse_options(g, p, argc - 3, argv + 3, &reg);
     if (p->mol) {
-        if (p->ntype + p->mol->ntypes <= 0 || p->ntype + p->mol->ntypes > g->atoms.ntypes)
+        long long top = (long long)p->ntype + p->mol->ntypes; /* no int overflow */
+        if (top <= 0 || top > g->atoms.ntypes)
             gr_error(g, "invalid atom type in fix pour mol command (type offset %d + template "
                         "types up to %d, box has %d)", p->ntype, p->mol->ntypes,
                      g->atoms.ntypes);
         mol_compute_center(p->mol); /* inserted about the geometric centre */
+        check_template(g, p->mol);
         p->coords = gr_calloc(g, 4 * (size_t)p->mol->natoms, sizeof(double));
         p->imgs = gr_calloc(g, 3 * (size_t)p->mol->natoms, sizeof(int));
     } else if (p->rigid_id[0]) {
@@ -419,6 +479,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (!reg)
         gr_error(g, "must specify a region in fix pour");
+    check_region(g, reg);
+    if (!p->mol)
+        check_masses(g, p);
     const struct domain *d = &g->dom;
     int dim = d->dimension;
     if (!strcmp(reg->style->name, "block")) {

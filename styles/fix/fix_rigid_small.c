@@ -102,6 +102,12 @@ struct rigid {
     cl_mem d_idx, d_x, d_xl, d_v, d_w, d_out;
     size_t dcap;            /* members the device buffers hold */
     double *mx, *mxl, *mv, *mw, *mout; /* host side, member order */
+    /* scratch a function holds while it may raise an error: owned here so
+     * that destroy frees it when the error unwinds (fix.c deletes a fix
+     * whose create fails; a run's error keeps the fix, and the next hold
+     * frees the old scratch) */
+    int *held_i;
+    double (*held_it)[6];
 };
 
 struct molecule *rigid_small_template(const struct fix *f)
@@ -109,6 +115,20 @@ struct molecule *rigid_small_template(const struct fix *f)
     if (!f || strcmp(f->style->name, "rigid/small") || !f->data)
         return NULL;
     return ((const struct rigid *)f->data)->mol;
+}
+
+static int *hold_ints(struct gravel *g, struct rigid *r, size_t n)
+{
+    free(r->held_i);
+    r->held_i = NULL;
+    r->held_i = gr_calloc(g, n, sizeof(int));
+    return r->held_i;
+}
+
+static void release_ints(struct rigid *r)
+{
+    free(r->held_i);
+    r->held_i = NULL;
 }
 
 static struct rbody *new_body(struct gravel *g, struct rigid *r)
@@ -204,7 +224,7 @@ static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
 {
     struct atoms *a = &g->atoms;
     int n = 0;
-    int *list = gr_calloc(g, (size_t)a->n + 1, sizeof(int));
+    int *list = hold_ints(g, r, (size_t)a->n + 1);
     for (int i = 0; i < a->n; i++)
         if (a->mask[i] & f->groupbit)
             list[n++] = i;
@@ -236,7 +256,7 @@ static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
         }
         s = e;
     }
-    free(list);
+    release_ints(r);
 }
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -293,7 +313,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 static void setup_bodies(struct gravel *g, struct rigid *r)
 {
     struct atoms *a = &g->atoms;
-    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    int *idx = hold_ints(g, r, (size_t)r->nmem + 1);
     match_tags(g, r, a->tag, a->n, idx);
     for (int k = 0; k < r->nmem; k++)
         if (idx[k] < 0)
@@ -335,7 +355,9 @@ static void setup_bodies(struct gravel *g, struct rigid *r)
         }
         domain_remap(g, b->xcm, b->image); /* pre_neighbor */
     }
-    double (*it)[6] = gr_calloc(g, (size_t)r->nbody + 1, sizeof *it);
+    free(r->held_it);
+    r->held_it = NULL;
+    double (*it)[6] = r->held_it = gr_calloc(g, (size_t)r->nbody + 1, sizeof *it);
     for (int k = 0; k < r->nmem; k++) {
         int i = idx[k];
         struct member *m = &r->m[r->order[k]];
@@ -374,7 +396,8 @@ static void setup_bodies(struct gravel *g, struct rigid *r)
         for (int d = 0; d < 3; d++)
             b->xgc[d] = b->xcm[d] + delta[d];
     }
-    free(it);
+    free(r->held_it);
+    r->held_it = NULL;
     for (int k = 0; k < r->nmem; k++) {
         int i = idx[k];
         struct member *m = &r->m[r->order[k]];
@@ -414,7 +437,7 @@ static void setup_bodies(struct gravel *g, struct rigid *r)
     for (int ib = 0; ib < r->nbody; ib++)
         for (int d = 0; d < 3; d++)
             r->b[ib].vcm[d] /= r->b[ib].mass;
-    free(idx);
+    release_ints(r);
 }
 
 /* ---- device transfers ---------------------------------------------------------- */
@@ -471,7 +494,7 @@ static void post_neighbor(struct gravel *g, struct fix *f)
     scratch(g, r, n);
     eng_read(g, s->tag, 0, (size_t)n * sizeof(int64_t), r->htag);
     eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
-    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+    int *idx = hold_ints(g, r, (size_t)r->nmem + 1);
     match_tags(g, r, r->htag, n, idx);
     for (int ib = 0; ib < r->nbody; ib++)
         domain_remap(g, r->b[ib].xcm, r->b[ib].image);
@@ -484,7 +507,7 @@ static void post_neighbor(struct gravel *g, struct fix *f)
         for (int d = 0; d < 3; d++)
             m->xbox[d] = r->himg[3 * m->dev + d] - r->b[m->body].image[d];
     }
-    free(idx);
+    release_ints(r);
     member_buffers(g, r);
     int *di = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
     for (int k = 0; k < r->nmem; k++)
@@ -896,6 +919,8 @@ static void destroy(struct fix *f)
             clReleaseMemObject(*m[i]);
     free(r->htag);
     free(r->himg);
+    free(r->held_i);
+    free(r->held_it);
     if (r->cmass)
         clReleaseMemObject(r->cmass);
     free(r);

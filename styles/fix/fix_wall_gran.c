@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "device.h"
 #include "error.h"
 #include "fix.h"
@@ -112,13 +113,14 @@ static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **arg
     if (argc < 9)
         gr_error(g, "fix wall/gran %s expects Kn Kt gamman gammat xmu dampflag and a wall "
                     "style, got %d argument(s)", argv[0], argc - 1);
-    double kn = arg_nonneg(g, argv[1], "Kn");
-    double kt = !strcmp(argv[2], "NULL") ? kn * 2.0 / 7.0 : arg_nonneg(g, argv[2], "Kt");
-    double gamman = arg_nonneg(g, argv[3], "gamma_n");
-    double gammat = !strcmp(argv[4], "NULL") ? 0.5 * gamman : arg_nonneg(g, argv[4], "gamma_t");
-    double xmu = arg_nonneg(g, argv[5], "xmu");
-    if (xmu > 10000.0)
-        gr_error(g, "fix wall/gran xmu must be between 0 and 10000, got %g", xmu);
+    const char *who = "fix wall/gran";
+    double kn = coeff_arg(g, who, argv[1], "Kn", CR_NONNEG);
+    double kt = !strcmp(argv[2], "NULL") ? kn * 2.0 / 7.0
+                                          : coeff_arg(g, who, argv[2], "Kt", CR_NONNEG);
+    double gamman = coeff_arg(g, who, argv[3], "gamma_n", CR_NONNEG);
+    double gammat = !strcmp(argv[4], "NULL") ? 0.5 * gamman
+                                             : coeff_arg(g, who, argv[4], "gamma_t", CR_NONNEG);
+    double xmu = coeff_upto(g, who, "xmu", arg_double(g, argv[5], "xmu"), 10000.0);
     int dampflag = arg_int_range(g, argv[6], 0, 1, "dampflag");
     if (dampflag == 0)
         gammat = 0.0;

@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "error.h"
 #include "fix.h"
 #include "pair.h"
@@ -62,7 +63,7 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
     if (argc != 1)
         gr_error(g, "cohesion expects one argument, the cohesion stiffness kc "
                     "(force/distance), got %d", argc);
-    p->coef[0] = arg_nonneg(g, argv[0], "cohesion stiffness kc");
+    p->coef[0] = coeff_arg(g, NULL, argv[0], "cohesion stiffness kc", CR_NONNEG);
 }
 
 static struct coh *tables(struct gravel *g, struct pair *p)
@@ -102,7 +103,7 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
                         "the body), got %g", b);
         i = 2;
     } else {
-        a = 0.5 * arg_positive(g, argv[0], "effect diameter d_e");
+        a = 0.5 * coeff_arg(g, NULL, argv[0], "effect diameter d_e", CR_POSITIVE);
         i = 1;
     }
     double kc = p->coef[0];
@@ -112,7 +113,7 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
             gr_error(g, "unknown pair_coeff keyword '%.64s' for pair style cohesion (expected "
                         "kc)", argv[i]);
         arg_need(g, argc, i, 1, "kc");
-        kc = arg_nonneg(g, argv[i + 1], "cohesion stiffness kc");
+        kc = coeff_arg(g, NULL, argv[i + 1], "cohesion stiffness kc", CR_NONNEG);
         kcset = 1;
     }
     struct coh *c = tables(g, p);

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "error.h"
 #include "pair.h"
 
@@ -77,12 +78,12 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     if (argc < 4 || argc > 5)
         gr_error(g, "pair style colloid expects pair_coeff I J A sigma d1 d2 [cutoff], got %d "
                     "values after the types", argc);
-    double a12 = arg_double(g, argv[0], "Hamaker constant A");
-    double sigma = arg_positive(g, argv[1], "sigma");
+    double a12 = coeff_arg(g, NULL, argv[0], "Hamaker constant A", CR_FINITE);
+    double sigma = coeff_arg(g, NULL, argv[1], "sigma", CR_POSITIVE);
     double d1 = arg_double(g, argv[2], "d1");
     double d2 = arg_double(g, argv[3], "d2");
     int given = argc == 5;
-    double cut = given ? arg_positive(g, argv[4], "cut-off") : p->coef[0];
+    double cut = given ? coeff_arg(g, NULL, argv[4], "cut-off", CR_POSITIVE) : p->coef[0];
     if (d1 < 0 || d2 < 0)
         gr_error(g, "invalid d1 or d2 value for pair colloid coeff (%g %g: diameters are >= 0)",
                  d1, d2);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "collision_time.h"
 #include "error.h"
 #include "pair_gran_common.h"
@@ -19,14 +20,13 @@ void pair_gran_settings(struct gravel *g, struct pair *p, int argc, char **argv)
     if (argc != 6 && argc != 7)
         gr_error(g, "pair_style %s expects Kn Kt gamman gammat xmu dampflag [limit_damping], "
                     "got %d argument(s)", name, argc);
-    double kn = arg_nonneg(g, argv[0], "Kn");
-    double kt = !strcmp(argv[1], "NULL") ? kn * 2.0 / 7.0 : arg_nonneg(g, argv[1], "Kt");
-    double gamman = arg_nonneg(g, argv[2], "gamma_n");
-    double gammat =
-        !strcmp(argv[3], "NULL") ? 0.5 * gamman : arg_nonneg(g, argv[3], "gamma_t");
-    double xmu = arg_nonneg(g, argv[4], "xmu");
-    if (xmu > 10000.0)
-        gr_error(g, "xmu must be between 0 and 10000, got %g", xmu);
+    double kn = coeff_arg(g, NULL, argv[0], "Kn", CR_NONNEG);
+    double kt = !strcmp(argv[1], "NULL") ? kn * 2.0 / 7.0
+                                          : coeff_arg(g, NULL, argv[1], "Kt", CR_NONNEG);
+    double gamman = coeff_arg(g, NULL, argv[2], "gamma_n", CR_NONNEG);
+    double gammat = !strcmp(argv[3], "NULL") ? 0.5 * gamman
+                                             : coeff_arg(g, NULL, argv[3], "gamma_t", CR_NONNEG);
+    double xmu = coeff_upto(g, NULL, "xmu", arg_double(g, argv[4], "xmu"), 10000.0);
     int dampflag = arg_int_range(g, argv[5], 0, 1, "dampflag");
     if (dampflag == 0)
         gammat = 0.0;

@@ -26,6 +26,8 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
+#include "collision_time.h"
 #include "device.h"
 #include "error.h"
 #include "pair.h"
@@ -131,18 +133,51 @@ double granular_coeff_restitution(double e, int nm)
 }
 
 /* coeff_restitution: the restitution coefficient of o (its normal damping
- * slot) into the damping coefficient; LAMMPS refuses it with a cohesive
- * normal model (GranSubModDampingTsuji: allow_cohesion = 0) and takes any e
- * (ln 0 or e > 1 give a NaN or negative damping): gravel asks 0 < e <= 1 */
+ * slot, checked in (0, 1] by check_ranges) into the damping coefficient;
+ * LAMMPS refuses it with a cohesive normal model (GranSubModDampingTsuji:
+ * allow_cohesion = 0) */
 static void coeff_restitution(struct gravel *g, struct gr_one *o, const char *who)
 {
     if (o->nm == GR_N_DMT || o->nm == GR_N_JKR)
         gr_error(g, "%s: Cannot use coeff_restitution model with a cohesive normal model, %s",
                  who, nname[o->nm]);
-    if (!(o->e > 0 && o->e <= 1))
-        gr_error(g, "%s: damping coeff_restitution takes the restitution coefficient e in the "
-                    "normal model's damping slot, 0 < e <= 1 (got %g)", who, o->e);
     o->damp = granular_coeff_restitution(o->e, o->nm);
+}
+
+/* The coefficients as given, before any conversion (coeff_check.h): every
+ * stiffness, damping, friction and cohesion >= 0 as LAMMPS's sub-models ask;
+ * the material models' E > 0 and Poisson's ratio in (-1, 0.5] (E* and G*
+ * divide by E and 1 - nu^2); the damping slot holds a restitution
+ * coefficient for tsuji ([0, 1]) and coeff_restitution ((0, 1], ln e). */
+static void check_ranges(struct gravel *g, const struct gr_one *o, int kt_null,
+                         const char *who)
+{
+    if (o->nm >= GR_N_HERTZ_MATERIAL) {
+        coeff_check(g, who, "Young's modulus E", o->E, CR_POSITIVE);
+        coeff_check(g, who, "Poisson's ratio", o->nu, CR_POISSON);
+    } else {
+        coeff_check(g, who, "normal stiffness kn", o->kn, CR_NONNEG);
+    }
+    if (o->dm == GR_D_TSUJI)
+        coeff_check(g, who, "restitution coefficient e (damping tsuji)", o->damp, CR_UNIT);
+    else if (o->dm == GR_D_COEFF_RESTITUTION)
+        coeff_check(g, who, "restitution coefficient e (damping coeff_restitution)", o->damp,
+                    CR_RESTITUTION);
+    else
+        coeff_check(g, who, "normal damping", o->damp, CR_NONNEG);
+    if (o->nm >= GR_N_DMT)
+        coeff_check(g, who, o->nm == GR_N_JKR ? "surface energy" : "cohesion", o->coh,
+                    CR_NONNEG);
+    if (!kt_null)
+        coeff_check(g, who, "tangential stiffness kt", o->kt, CR_NONNEG);
+    coeff_check(g, who, "tangential damping", o->gt, CR_NONNEG);
+    coeff_check(g, who, "friction coefficient", o->mu, CR_NONNEG);
+    coeff_check(g, who, "rolling stiffness", o->kr, CR_NONNEG);
+    coeff_check(g, who, "rolling damping", o->gr, CR_NONNEG);
+    coeff_check(g, who, "rolling friction coefficient", o->mur, CR_NONNEG);
+    coeff_check(g, who, "twisting stiffness", o->kw, CR_NONNEG);
+    coeff_check(g, who, "twisting damping", o->gw, CR_NONNEG);
+    coeff_check(g, who, "twisting friction coefficient", o->muw, CR_NONNEG);
 }
 
 int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
@@ -241,7 +276,8 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                             "marshall, sds or none)", who, argv[i + 1]);
             }
         } else if (allow_cutoff && !strcmp(k, "cutoff")) {
-            o.cutoff = num(g, argv, argc, i + 1, "cutoff", who);
+            o.cutoff = coeff_check(g, who, "cutoff", num(g, argv, argc, i + 1, "cutoff", who),
+                                   CR_POSITIVE);
             i += 2;
         } else if (!strcmp(k, "limit_damping")) {
             o.ld = 1;
@@ -255,6 +291,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     }
     if (o.nm < 0 || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
+    check_ranges(g, &o, kt_null, who);
     if (o.dm == GR_D_TSUJI)
         o.damp = granular_tsuji(o.damp);
     o.e = o.damp;
@@ -487,6 +524,41 @@ static double lammps2021_cut(const struct pair *p, int i, int j, double ri, doub
     return c;
 }
 
+/* Collision time of one type pair's model for two equal spheres (m* = m/2,
+ * R* = r/2) at normal speed vn, undamped (damping lengthens a collision, so
+ * this is the bound a time step must resolve), the formulas of
+ * kernels/collision_time.h the kernel's granular_tcol uses: hooke, the
+ * linear spring's half period; hertz, hertz/material, dmt and jkr, Johnson's
+ * Hertz time of kn = 4/3 E* (JKR's elastic part; DMT's cohesion adds a
+ * constant force). vn <= 0: the impact speed 1e-3 sqrt(E* / rho). 0: none. */
+static double model_tcol(const struct gr_one *o, double m, double r, double vn)
+{
+    if (!(o->kn > 0))
+        return 0;
+    if (o->nm == GR_N_HOOKE)
+        return tcol_linear(o->kn, 0, 0.5 * m);
+    if (!(vn > 0))
+        vn = 1e-3 * sqrt(0.75 * o->kn / (m / (4.0 / 3.0 * M_PI * r * r * r)));
+    return tcol_hertz(o->kn, 0.5 * r, 0.5 * m, vn);
+}
+
+/* pair.h's collision time: the shortest of the type pairs' (every pair's
+ * model may act between two spheres of this size); INFINITY when none has
+ * one (kn = 0) */
+static double collision_time(const struct pair *p, double m, double r, double vn)
+{
+    const struct gr_tab *t = p->data;
+    double best = INFINITY;
+    for (int i = 1; t && i <= t->nt; i++)
+        for (int j = i; j <= t->nt; j++) {
+            const struct gr_one *o = at(t, i, j);
+            double tc = o->set ? model_tcol(o, m, r, vn) : 0;
+            if (tc > 0 && tc < best)
+                best = tc;
+        }
+    return best;
+}
+
 /* The sub-models the type pairs use decide the program (the GR*_USED
  * masks, see kernels/pair_granular.cl) and the history row's layout; JKR
  * pairs hold beyond touch, within the list of r_i + r_j + skin (LAMMPS 2021:
@@ -504,6 +576,8 @@ static void describe(const struct pair *p, struct pair_caps *c)
     c->flip_n = (u.h_roll >= 0 ? 3 : 0) + (u.h_twist >= 0 ? 1 : 0);
     c->lammps2021_cut = lammps2021_cut;
     c->cut2021_of = p;
+    c->tcol_of = p;
+    c->collision_time = collision_time;
     if ((u.n >> GR_N_JKR) & 1) {
         c->beyond = 1;
         pair_caps_reach(c, 0.0, 1.0);

@@ -36,6 +36,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "collision_time.h"
 #include "error.h"
 #include "pair.h"
@@ -68,20 +69,16 @@ static void parse_material(struct gravel *g, int argc, char **argv, double *c, c
 {
     if (argc != 4 && argc != 6)
         gr_error(g, "%s expects E nu e mu [rolling mu_r], got %d argument(s)", who, argc);
-    double E = arg_positive(g, argv[0], "Young's modulus E");
-    double nu = arg_double(g, argv[1], "Poisson ratio nu");
-    if (!(nu > -1.0 && nu < 0.5))
-        gr_error(g, "Poisson ratio nu must be in (-1, 0.5), got %g", nu);
-    double e = arg_double(g, argv[2], "restitution coefficient e");
-    if (!(e > 0.0 && e <= 1.0))
-        gr_error(g, "restitution coefficient e must be in (0, 1], got %g", e);
-    double mu = arg_nonneg(g, argv[3], "friction coefficient mu");
+    double E = coeff_arg(g, NULL, argv[0], "Young's modulus E", CR_POSITIVE);
+    double nu = coeff_arg(g, NULL, argv[1], "Poisson ratio nu", CR_POISSON);
+    double e = coeff_arg(g, NULL, argv[2], "restitution coefficient e", CR_RESTITUTION);
+    double mu = coeff_arg(g, NULL, argv[3], "friction coefficient mu", CR_NONNEG);
     double mur = 0.0;
     if (argc == 6) {
         if (strcmp(argv[4], "rolling"))
             gr_error(g, "unknown pair_style hertz/mindlin keyword '%.64s' (expected rolling)",
                      argv[4]);
-        mur = arg_nonneg(g, argv[5], "rolling friction coefficient mu_r");
+        mur = coeff_arg(g, NULL, argv[5], "rolling friction coefficient mu_r", CR_NONNEG);
     }
     c[C_E] = E;
     c[C_NU] = nu;

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "coeff_check.h"
 #include "collision_time.h"
 #include "error.h"
 #include "pair.h"
@@ -33,17 +34,15 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
     if (argc < 3)
         gr_error(g, "pair_style linear/restitution expects ke e mu [kf K] [torque yes|no], "
                     "got %d argument(s)", argc);
-    double ke = arg_positive(g, argv[0], "stiffness ke");
-    double e = arg_double(g, argv[1], "restitution coefficient e");
-    if (!(e > 0.0 && e <= 1.0))
-        gr_error(g, "restitution coefficient e must be in (0, 1], got %g", e);
-    double mu = arg_nonneg(g, argv[2], "friction coefficient mu");
+    double ke = coeff_arg(g, NULL, argv[0], "stiffness ke", CR_POSITIVE);
+    double e = coeff_arg(g, NULL, argv[1], "restitution coefficient e", CR_RESTITUTION);
+    double mu = coeff_arg(g, NULL, argv[2], "friction coefficient mu", CR_NONNEG);
     double kf = ke;
     int torque = 0;
     for (int i = 3; i < argc; i += 2) {
         if (!strcmp(argv[i], "kf")) {
             arg_need(g, argc, i, 1, "kf");
-            kf = arg_nonneg(g, argv[i + 1], "friction stiffness kf");
+            kf = coeff_arg(g, NULL, argv[i + 1], "friction stiffness kf", CR_NONNEG);
         } else if (!strcmp(argv[i], "torque")) {
             arg_need(g, argc, i, 1, "torque");
             torque = arg_yesno(g, argv[i + 1], "torque");

@@ -65,8 +65,8 @@ def errors():
     error_case("unknown linear keyword", "pair_style linear/restitution 1e5 0.8 0.5 kt 3\n",
                "unknown pair_style linear/restitution keyword 'kt'")
     error_case("linear too few", "pair_style linear/restitution 1e5 0.8\n", "expects ke e mu")
-    error_case("hertz poisson", "pair_style hertz/mindlin 1e9 0.5 0.8 0.3\n",
-               "Poisson ratio nu must be in (-1, 0.5)")
+    error_case("hertz poisson", "pair_style hertz/mindlin 1e9 0.6 0.8 0.3\n",
+               "Poisson ratio nu must be in (-1, 0.5]")
     error_case("hertz rolling keyword", "pair_style hertz/mindlin 1e9 0.3 0.8 0.3 rollin 0.1\n",
                "expected rolling")
     error_case("hertz negative rolling", "pair_style hertz/mindlin 1e9 0.3 0.8 0.3 rolling -1\n",

@@ -322,9 +322,9 @@ def main():
     error_case("pair_coeff * * damping coeff_restitution jkr 1e7 0.5 0.3 0.1 tangential "
                "linear_nohistory 0 0", "cohesive normal model, jkr")
     error_case("pair_coeff * * hooke 1e4 0 tangential linear_nohistory 0 0 damping "
-               "coeff_restitution", "0 < e <= 1 (got 0)")
+               "coeff_restitution", "must be in (0, 1], got 0")
     error_case("pair_coeff * * hooke 1e4 1.5 tangential linear_nohistory 0 0 damping "
-               "coeff_restitution", "0 < e <= 1 (got 1.5)")
+               "coeff_restitution", "must be in (0, 1], got 1.5")
     return 1 if sv.failures else 0
 
 
