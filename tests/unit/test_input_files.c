@@ -114,7 +114,7 @@ TEST(molecule_integer_ranges)
     CHECK_ERROR(script, "invalid atom type 1e+20 for atom 2 (1..2 with offset 0)", 3);
     snprintf(text, sizeof text, "%s2 nan\n", head);
     write_text(mol, text);
-    CHECK_ERROR(script, "invalid atom type nan for atom 2", 3);
+    CHECK_ERROR(script, "line 12: expected a finite number, got 'nan'", 3);
     /* an offset that would overflow int */
     snprintf(text, sizeof text, "%s2 2\n", head);
     write_text(mol, text);
