@@ -9,27 +9,11 @@
 #include <unistd.h>
 
 #include "test.h"
+#include "test_tmp.h"
 
 #include "fileio.h"
 #include "variable.h"
 
-static char tmpdir[64];
-
-static const char *tmp_path(const char *name)
-{
-    static char buf[4][160];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    fputs(text, fp);
-    fclose(fp);
-}
 
 static char script[4096];
 #define SCRIPT(...) snprintf(script, sizeof script, __VA_ARGS__)

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "test.h"
+#include "test_tmp.h"
 
 #include "error.h"
 #include "dump.h"
@@ -15,16 +16,6 @@
 #include "restart.h"
 #include "variable.h"
 
-static char tmpdir[64];
-
-static const char *tmp_path(const char *name)
-{
-    static char buf[4][160];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
 
 static void write_bytes(const char *path, const char *text, size_t n)
 {

@@ -7,29 +7,13 @@
 #include <unistd.h>
 
 #include "test.h"
+#include "test_tmp.h"
 
 #include "atoms.h"
 #include "group.h"
 
-static char tmpdir[64];
 static char script[8192];
 #define SCRIPT(...) snprintf(script, sizeof script, __VA_ARGS__)
-
-static const char *tmp_path(const char *name)
-{
-    static char buf[4][160];
-    static int k;
-    k = (k + 1) % 4;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", tmpdir, name);
-    return buf[k];
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    fputs(text, fp);
-    fclose(fp);
-}
 
 #define BOX "units lj\natom_style sphere\nregion b block 0 10 0 10 0 10\ncreate_box 1 b\n"
 
