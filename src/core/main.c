@@ -141,6 +141,23 @@ static double now(void)
     return tv.tv_sec + 1e-6 * tv.tv_usec;
 }
 
+/* Ranks of an MPI launch (mpirun/mpiexec of OpenMPI or MPICH, srun with PMI):
+ * the size of the job from the launcher's environment, 1 when not launched so. */
+static int launcher_size(int *rank)
+{
+    static const char *const size_vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"};
+    static const char *const rank_vars[] = {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"};
+    for (int k = 0; k < 3; k++) {
+        const char *s = getenv(size_vars[k]), *r = getenv(rank_vars[k]);
+        if (s && atoi(s) > 1) {
+            *rank = r ? atoi(r) : 0;
+            return atoi(s);
+        }
+    }
+    *rank = 0;
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     const char *in = NULL, *log = "log.gravel", *screen = NULL, *echo = NULL;
@@ -208,6 +225,19 @@ int main(int argc, char **argv)
             return bad("unknown option '%s'", a);
         }
 #undef IS
+    }
+    /* gravel runs in one process: N copies under mpirun would each run the whole
+     * deck and overwrite one another's outputs. Stop every rank before any file
+     * is opened; rank 0 says why (doc/usage.md, Parallel runs). */
+    int rank, nranks = launcher_size(&rank);
+    if (nranks > 1) {
+        if (rank == 0)
+            fprintf(stderr,
+                    "ERROR: gravel was launched as %d MPI ranks, but it runs in one process "
+                    "(domain decomposition over MPI is not built yet): run it without "
+                    "mpirun, or with -np 1\n",
+                    nranks);
+        return 1;
     }
 
     struct gravel *g = gr_create();
