@@ -200,3 +200,13 @@ void rng_mars_select_subset(struct rng_mars *r, int64_t ntarget, int n, int *mar
         nmark += mode == 0 ? nflip : -nflip;
     }
 }
+
+double rng_park_draw(void *park)
+{
+    return rng_park_uniform(park);
+}
+
+double rng_mars_draw(void *mars)
+{
+    return rng_mars_uniform(mars);
+}

@@ -43,6 +43,9 @@ void rng_park_reset_coord(struct rng_park *r, int seed, const double coord[3]);
 /* Seed must be in 1 .. 900000000 (callers check and report). */
 void rng_mars_init(struct rng_mars *r, int seed);
 double rng_mars_uniform(struct rng_mars *r);      /* in [0, 1) */
+/* The uniform draws behind a void pointer, for code that takes either stream. */
+double rng_park_draw(void *park);
+double rng_mars_draw(void *mars);
 double rng_mars_gaussian(struct rng_mars *r);
 /* Choose exactly ntarget of n items: mark[i] = 1 for chosen ones; next is
  * work space of n ints. LAMMPS RanMars::select_subset on one process. */

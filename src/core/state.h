@@ -83,6 +83,8 @@ struct atoms {
     int ntypes;
     ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays (atom_fields.h) */
     int molecule_flag;      /* 1: atoms carry molecule IDs (LAMMPS atom->molecule_flag) */
+    int style_molecular;    /* atom_style hybrid sphere molecular: the IDs belong to the
+                             * style (data files carry them), not to fix property/atom */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
     int *order;             /* scratch of atoms_tag_order() */

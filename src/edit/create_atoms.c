@@ -40,6 +40,8 @@
 #include "random.h"
 #include "region.h"
 #include "fix_mesh_surface.h"
+#include "molecule.h"
+#include "rigid_math.h"
 
 #define CA_EPSILON 1.0e-6
 #define CA_MAXTRY_DEFAULT 1000
@@ -81,10 +83,65 @@ static void mesh_skip_free(struct mesh_skip *ms)
 static const double sphere_radius = 0.5;
 #define SPHERE_MASS (4.0 * M_PI / 3.0 * 0.125) /* density 1, diameter 1 */
 
+/* ---- molecules (`mol template-ID seed`, LAMMPS's mode MOLECULE) ------------- */
+
+/* Each point (lattice site, random point, the single point) gets a copy of
+ * the template about its geometric centre, turned by `rotate` or else by a
+ * random quaternion from a RanMars stream seeded with `seed` (LAMMPS
+ * add_molecule); atom types are the type argument plus the template's. */
+struct mol_job {
+    struct molecule *mol;       /* NULL: single atoms */
+    int type_offset;
+    int quat_user;
+    double quat[4];
+    struct rng_mars rng;
+    int nmol;                   /* molecules placed so far */
+};
+
+static void add_molecule(struct gravel *g, struct mol_job *mj, const double center[3])
+{
+    const struct molecule *m = mj->mol;
+    double quat[4], rot[3][3];
+    if (mj->quat_user)
+        memcpy(quat, mj->quat, sizeof quat);
+    else
+        mol_random_quat(g->dom.dimension, rng_mars_draw, &mj->rng, quat);
+    rm_quat_to_mat(quat, rot);
+    for (int k = 0; k < m->natoms; k++) {
+        double x[3];
+        mol_place_atom(m, rot, center, k, x);
+        double r = m->radius ? m->radius[k] : sphere_radius;
+        double mass = m->rmass ? m->rmass[k] : 4.0 * M_PI / 3.0 * r * r * r;
+        int i = atoms_add(g, 0, mj->type_offset + m->type[k], x, r, mass);
+        domain_remap(g, g->atoms.x + 3 * i, g->atoms.image + 3 * i);
+        g->atoms.mol[i] = mj->nmol + 1; /* made absolute by set_molecule_ids */
+    }
+    mj->nmol++;
+}
+
+/* LAMMPS: the molecules created get IDs after the largest ID of the atoms
+ * that existed before, one per molecule in creation order. */
+static void set_molecule_ids(struct gravel *g, int first)
+{
+    struct atoms *a = &g->atoms;
+    if (!a->molecule_flag) {
+        for (int i = first; i < a->n; i++)
+            a->mol[i] = 0;
+        return;
+    }
+    int64_t maxmol = 0;
+    for (int i = 0; i < first; i++)
+        if (a->mol[i] > maxmol)
+            maxmol = a->mol[i];
+    for (int i = first; i < a->n; i++)
+        a->mol[i] += maxmol;
+}
+
 struct lat_ctx {
     int basis_type[8];          /* type per basis atom (keyword basis) */
     const struct region *r;
     struct mesh_skip *skip;
+    struct mol_job *mj;
     bigint n;
 };
 
@@ -95,6 +152,11 @@ static void add_lattice_point(struct gravel *g, const double x[3], int basis, vo
         return;
     if (c->skip->n && mesh_skip_hit(c->skip, x))
         return;
+    if (c->mj->mol) {
+        add_molecule(g, c->mj, x);
+        c->n += c->mj->mol->natoms;
+        return;
+    }
     atoms_add(g, 0, c->basis_type[basis], x, sphere_radius, SPHERE_MASS);
     c->n++;
 }
@@ -217,6 +279,7 @@ struct random_job {
     int maxtry;
     int type;
     struct mesh_skip *skip;
+    struct mol_job *mj;
     /* owned resources, freed by the caller on any exit */
     struct grid grid;
 };
@@ -268,6 +331,10 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
          * sub-domain: hi - lo rounding can land a point on the upper face */
         if (!domain_inside(g, x))
             continue;
+        if (job->mj->mol) {
+            add_molecule(g, job->mj, x);
+            continue;
+        }
         int i = atoms_add(g, 0, job->type, x, sphere_radius, SPHERE_MASS);
         if (job->overlap > 0)
             grid_insert(g, &job->grid, i);
@@ -282,7 +349,7 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
 
 void cmd_create_atoms(struct gravel *g, int argc, char **argv)
 {
-    int type = arg_int_range(g, argv[0], 1, g->atoms.ntypes, "atom type");
+    int type = arg_int(g, argv[0], "atom type");
     const char *style = argv[1];
     if ((g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0) && strcmp(style, "single"))
         gr_error(g, "create_atoms %s in a tilted triclinic box is not supported (single is; or "
@@ -330,6 +397,9 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
     int nmesh = 0;
     char mesh_id[CA_MAXMESH][GR_NAMELEN];
     double mesh_d[CA_MAXMESH];
+    struct mol_job mj;
+    memset(&mj, 0, sizeof mj);
+    int molseed = 0;
     for (int i = iarg; i < argc; i++) {
         const char *kw = argv[i];
         if (!strcmp(kw, "units")) {
@@ -363,12 +433,57 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
             basis_type[m - 1] = arg_int_range(g, argv[i + 2], 1, g->atoms.ntypes, "basis type");
             basis_set = 1;
             i += 2;
-        } else if (!strcmp(kw, "mol") || !strcmp(kw, "var") ||
-                   !strcmp(kw, "set") || !strcmp(kw, "rotate")) {
+        } else if (!strcmp(kw, "mol")) {
+            arg_need(g, argc, i, 2, kw);
+            mj.mol = molecule_find(g, argv[i + 1]);
+            if (!mj.mol)
+                gr_error(g, "molecule template ID %.64s for create_atoms does not exist",
+                         argv[i + 1]);
+            molseed = arg_int(g, argv[i + 2], "molecule seed");
+            if (molseed <= 0 || molseed > 900000000)
+                gr_error(g, "molecule seed must be in 1..900000000, got %s", argv[i + 2]);
+            i += 2;
+        } else if (!strcmp(kw, "rotate")) {
+            arg_need(g, argc, i, 4, kw);
+            double theta = arg_double(g, argv[i + 1], "rotate angle");
+            double axis[3];
+            for (int k = 0; k < 3; k++)
+                axis[k] = arg_double(g, argv[i + 2 + k], "rotate axis");
+            if (axis[0] == 0.0 && axis[1] == 0.0 && axis[2] == 0.0)
+                gr_error(g, "rotate axis must not be zero");
+            if (g->dom.dimension == 2 && (axis[0] != 0.0 || axis[1] != 0.0))
+                gr_error(g, "invalid create_atoms rotation vector for 2d model (must be along z)");
+            double s = 1.0 / sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+            for (int k = 0; k < 3; k++)
+                axis[k] *= s;
+            rm_axisangle_to_quat(axis, theta * M_PI / 180.0, mj.quat);
+            mj.quat_user = 1;
+            i += 4;
+        } else if (!strcmp(kw, "var") || !strcmp(kw, "set")) {
             gr_error(g, "keyword '%s' is not supported", kw);
         } else {
             gr_error(g, "unknown keyword '%.32s'", kw);
         }
+    }
+    if (mj.mol) {
+        /* LAMMPS: the type argument is an offset to the template's types */
+        long long lo = (long long)type + 1, hi = (long long)type + mj.mol->ntypes;
+        if (lo < 1 || hi > g->atoms.ntypes)
+            gr_error(g, "invalid atom type in create_atoms mol command (type offset %d + "
+                        "template types 1..%d, box has %d)",
+                     type, mj.mol->ntypes, g->atoms.ntypes);
+        if (overlap_set || maxtry_set)
+            gr_error(g, "overlap and maxtry are not supported with mol (as LAMMPS 29 Sep 2021)");
+        if (nmesh)
+            gr_error(g, "create_atoms mesh is not compatible with the mol option");
+        mol_compute_center(mj.mol);
+        rng_mars_init(&mj.rng, molseed);
+        mj.type_offset = type;
+    } else {
+        if (type < 1 || type > g->atoms.ntypes)
+            gr_error(g, "atom type must be between 1 and %d, got %d", g->atoms.ntypes, type);
+        if (mj.quat_user)
+            gr_error(g, "rotate applies only with mol (a molecule template)");
     }
     if ((overlap_set || maxtry_set) && strcmp(style, "random") != 0)
         gr_error(g, "overlap and maxtry apply only to style random");
@@ -406,6 +521,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         }
     }
     bigint created = 0;
+    int first = g->atoms.n;
     if (!strcmp(style, "box") || !strcmp(style, "region")) {
         double lo[3], hi[3];
         for (int d = 0; d < 3; d++) {
@@ -421,6 +537,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         memcpy(c.basis_type, basis_type, sizeof basis_type);
         c.r = r;
         c.skip = &skip;
+        c.mj = &mj;
         c.n = 0;
         if (r && r->bbox)
             lattice_foreach(g, lo, hi, r->bbox_lo, r->bbox_hi, add_lattice_point, &c);
@@ -438,10 +555,14 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         if (!domain_inside(g, xone))
             gr_error(g, "point (%g %g %g) is outside the box%s", xone[0], xone[1], xone[2],
                      remap ? "" : " (remap yes wraps periodic dimensions)");
-        int i = atoms_add(g, 0, type, xone, sphere_radius, SPHERE_MASS);
-        for (int d = 0; d < 3; d++)
-            g->atoms.image[3 * i + d] = image[d];
-        created = 1;
+        if (mj.mol) {
+            add_molecule(g, &mj, xone);
+        } else {
+            int i = atoms_add(g, 0, type, xone, sphere_radius, SPHERE_MASS);
+            for (int d = 0; d < 3; d++)
+                g->atoms.image[3 * i + d] = image[d];
+        }
+        created = g->atoms.n - first;
     } else {
         struct random_job job;
         memset(&job, 0, sizeof job);
@@ -454,6 +575,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         job.maxtry = maxtry;
         job.type = type;
         job.skip = &skip;
+        job.mj = &mj;
         /* free the generator and grid however insertion ends */
         jmp_buf *outer = g->err.jmp, here;
         g->err.jmp = &here;
@@ -468,7 +590,11 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         created = insert_random(g, &job);
         g->err.jmp = outer;
         grid_free(&job.grid);
+        if (mj.mol)
+            created = g->atoms.n - first;
     }
+    if (mj.mol)
+        set_molecule_ids(g, first);
     g->err.jmp = outer0;
     if (nmesh)
         gr_print(g, "  %lld sites skipped within the mesh distance of %d mesh%s\n",

@@ -212,6 +212,11 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
     /* reserve at most 1M up front: a header may claim more atoms than the
      * file holds; beyond that the arrays grow as lines are read */
     atoms_reserve(g, (int)(natoms < (1 << 20) ? natoms : (1 << 20)));
+    /* columns: sphere "id type diameter density x y z", hybrid sphere
+     * molecular "id type x y z diameter density mol" (LAMMPS's sub-style order);
+     * image flags follow either */
+    int hyb = a->style_molecular;
+    int c_diam = hyb ? 5 : 2, c_dens = hyb ? 6 : 3, c_x = hyb ? 2 : 4, c_img = hyb ? 8 : 7;
     int nwords = 0;
     for (bigint k = 0; k < natoms; k++) {
         if (k == 0)
@@ -220,10 +225,13 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
             next_data_line(r, "Atoms", k, natoms);
         if (k == 0) {
             nwords = r->nw;
-            if (nwords != 7 && nwords != 10)
-                gr_error(g, "%s:%ld: Atoms lines for atom_style sphere need 7 or 10 values "
-                            "(id type diameter density x y z [ix iy iz]), got %d",
-                         r->path, r->lineno, nwords);
+            if (nwords != c_img && nwords != c_img + 3)
+                gr_error(g, "%s:%ld: Atoms lines for atom_style %s need %d or %d values (%s "
+                            "[ix iy iz]), got %d",
+                         r->path, r->lineno, hyb ? "hybrid sphere molecular" : "sphere", c_img,
+                         c_img + 3,
+                         hyb ? "id type x y z diameter density mol" : "id type diameter density x y z",
+                         nwords);
         } else if (r->nw != nwords) {
             gr_error(g, "%s:%ld: expected %d values on this Atoms line like the first, got %d",
                      r->path, r->lineno, nwords, r->nw);
@@ -236,24 +244,31 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
         if (type < 1 || type > a->ntypes - r->extra_types)
             gr_error(g, "%s:%ld: atom type %s is outside 1..%d", r->path, r->lineno, r->w[1],
                      a->ntypes - r->extra_types);
-        double diam = rd_num(r, r->w[2], "diameter");
-        double dens = rd_num(r, r->w[3], "density");
+        double diam = rd_num(r, r->w[c_diam], "diameter");
+        double dens = rd_num(r, r->w[c_dens], "density");
         if (diam < 0)
             gr_error(g, "%s:%ld: diameter must not be negative, got %s", r->path, r->lineno,
-                     r->w[2]);
+                     r->w[c_diam]);
         if (!(dens > 0))
             gr_error(g, "%s:%ld: density must be positive, got %s", r->path, r->lineno,
-                     r->w[3]);
+                     r->w[c_dens]);
+        int64_t molid = 0;
+        if (hyb) {
+            molid = rd_int(r, r->w[7], "molecule ID");
+            if (molid < 0)
+                gr_error(g, "%s:%ld: molecule ID must not be negative, got %s", r->path,
+                         r->lineno, r->w[7]);
+        }
         double x[3];
         int img[3] = {0, 0, 0};
         for (int d = 0; d < 3; d++)
-            x[d] = rd_num(r, r->w[4 + d], "coordinate") + shift[d];
-        if (nwords == 10)
+            x[d] = rd_num(r, r->w[c_x + d], "coordinate") + shift[d];
+        if (nwords == c_img + 3)
             for (int d = 0; d < 3; d++) {
-                int64_t v = rd_int(r, r->w[7 + d], "image flag");
+                int64_t v = rd_int(r, r->w[c_img + d], "image flag");
                 if (v < -(1 << 20) || v > (1 << 20))
                     gr_error(g, "%s:%ld: image flag %s is out of range", r->path, r->lineno,
-                             r->w[7 + d]);
+                             r->w[c_img + d]);
                 img[d] = (int)v;
                 if (img[d] && !g->dom.periodic[d]) {
                     img[d] = 0;
@@ -276,6 +291,8 @@ static void read_atoms(struct rd *r, bigint natoms, const double shift[3], int *
         int i = atoms_add(g, tag, (int)type, x, rad, mass);
         for (int d = 0; d < 3; d++)
             a->image[3 * i + d] = img[d];
+        if (a->molecule_flag)
+            a->mol[i] = molid;
     }
     build_lookup(r);
 }
@@ -418,12 +435,14 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: a second Atoms section", r->path, r->lineno);
             if (comment) {
                 char style[32] = "";
-                /* LIGGGHTS' atom_style granular has the same columns */
-                if (sscanf(comment, " %31s", style) == 1 && strcmp(style, "sphere") != 0 &&
-                    strcmp(style, "granular") != 0)
-                    gr_error(g, "%s:%ld: Atoms are for atom_style %s; gravel reads "
-                                "atom_style sphere",
-                             r->path, r->lineno, style);
+                /* LIGGGHTS' atom_style granular has the same columns as sphere */
+                int hyb = g->atoms.style_molecular;
+                if (sscanf(comment, " %31s", style) == 1 &&
+                    (hyb ? strcmp(style, "hybrid") != 0
+                         : strcmp(style, "sphere") != 0 && strcmp(style, "granular") != 0))
+                    gr_error(g, "%s:%ld: Atoms are for atom_style %s; the script's atom style "
+                                "is %s",
+                             r->path, r->lineno, style, hyb ? "hybrid sphere molecular" : "sphere");
             }
             read_atoms(r, natoms, shift, warned);
             atoms_read = 1;

@@ -50,7 +50,7 @@
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
-    S_MOLECULE, /* optional: molecule IDs (fix property/atom mol) */
+    S_MOLECULE, /* optional: molecule IDs (fix property/atom mol, or the atom style's) */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -189,6 +189,7 @@ struct image {
     int64_t maxtag;
     int n;
     ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays; mol NULL: no molecule IDs */
+    int style_molecular;        /* atom_style hybrid sphere molecular */
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
@@ -589,6 +590,7 @@ static void write_molecule(struct gravel *g, struct wbuf *w, struct wctx *c)
     for (int k = 0; k < 16; k++)
         for (int q = 0; q < 2; q++)
             put_i32(g, w, g->neigh.exclude_mol[k][q]);
+    put_i32(g, w, g->atoms.style_molecular); /* absent in files before hybrid styles */
     sect_end(w, at);
 }
 
@@ -611,6 +613,9 @@ static int read_molecule(struct image *im, struct rbuf *r, unsigned seen, char *
     for (int k = 0; k < 16 && !r->bad; k++)
         if (ns->exclude_mol[k][0] < 0 || ns->exclude_mol[k][0] >= GR_MAXGROUP)
             BAD("invalid molecule exclusion group");
+    im->style_molecular = r->off < r->n ? get_i32(r) : 0;
+    if (!r->bad && im->style_molecular != 0 && im->style_molecular != 1)
+        BAD("invalid atom style flag %d", im->style_molecular);
     return 1;
 }
 
@@ -1284,6 +1289,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     ATOM_FIELDS(APPLY_FIELD)
 #undef APPLY_FIELD
     a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
+    a->style_molecular = im->mol != NULL && im->style_molecular;
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -42,15 +42,24 @@ static void write_all(struct gravel *g, FILE *fp, const int *order)
         for (int t = 1; t <= a->ntypes; t++)
             fprintf(fp, "%d %.17g\n", t, a->type_mass[t] > 0 ? a->type_mass[t] : 1.0);
     }
-    fprintf(fp, "\nAtoms # sphere\n\n");
+    /* LAMMPS's column order: sphere "id type diameter density x y z", hybrid
+     * sphere molecular "id type x y z diameter density mol" */
+    int hyb = a->style_molecular;
+    fprintf(fp, hyb ? "\nAtoms # hybrid\n\n" : "\nAtoms # sphere\n\n");
     for (int k = 0; k < a->n; k++) {
         int i = order[k];
         double r = a->radius[i];
         double dens = r > 0 ? a->rmass[i] / (4.0 * M_PI / 3.0 * r * r * r) : a->rmass[i];
         const double *x = a->x + 3 * i;
         const int *im = a->image + 3 * i;
-        fprintf(fp, "%lld %d %.17g %.17g %.17g %.17g %.17g %d %d %d\n", (long long)a->tag[i],
-                a->type[i], 2.0 * r, dens, x[0], x[1], x[2], im[0], im[1], im[2]);
+        if (hyb)
+            fprintf(fp, "%lld %d %.17g %.17g %.17g %.17g %.17g %lld %d %d %d\n",
+                    (long long)a->tag[i], a->type[i], x[0], x[1], x[2], 2.0 * r, dens,
+                    (long long)a->mol[i], im[0], im[1], im[2]);
+        else
+            fprintf(fp, "%lld %d %.17g %.17g %.17g %.17g %.17g %d %d %d\n",
+                    (long long)a->tag[i], a->type[i], 2.0 * r, dens, x[0], x[1], x[2], im[0],
+                    im[1], im[2]);
     }
     fprintf(fp, "\nVelocities\n\n");
     for (int k = 0; k < a->n; k++) {
@@ -75,9 +84,10 @@ void cmd_write_data(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s'", argv[i]);
         }
     }
-    if (g->atoms.molecule_flag)
-        gr_warn(g, "write_data: molecule IDs (fix property/atom mol) are not written to data "
-                   "files yet");
+    if (g->atoms.molecule_flag && !g->atoms.style_molecular)
+        gr_warn(g, "write_data: molecule IDs of fix property/atom mol are not written to data "
+                   "files (LAMMPS writes them in the fix's section; atom_style hybrid sphere "
+                   "molecular carries them in Atoms)");
     const char *path = argv[0];
     int *order = gr_malloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
     struct ofile o;

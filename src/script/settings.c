@@ -44,16 +44,39 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
     g->dom.dimension = d;
 }
 
-/* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted. */
+/* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted.
+ * atom_style hybrid sphere molecular (either order): spheres with molecule IDs
+ * as part of the style (LAMMPS's molecular sub-style; no bonds in granular
+ * decks: a molecule template with bonds is refused where it is read). */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
+    if (!strcmp(argv[0], "hybrid")) {
+        int sphere = 0, molecular = 0;
+        for (int i = 1; i < argc; i++) {
+            if (!strcmp(argv[i], "sphere") && !sphere)
+                sphere = 1;
+            else if (!strcmp(argv[i], "molecular") && !molecular)
+                molecular = 1;
+            else
+                gr_error(g, "hybrid sub-style '%.32s' is not supported (gravel "
+                            "has hybrid sphere molecular)", argv[i]);
+        }
+        if (!sphere || !molecular)
+            gr_error(g, "hybrid needs the sub-styles sphere and molecular");
+        g->atoms.style_molecular = 1;
+        g->atoms.molecule_flag = 1;
+        return;
+    }
     if (strcmp(argv[0], "sphere") != 0)
-        gr_error(g, "atom_style '%.32s' is not supported: gravel has only atom_style sphere",
+        gr_error(g, "atom_style '%.32s' is not supported: gravel has atom_style sphere and "
+                    "hybrid sphere molecular",
                  argv[0]);
     if (argc > 2)
         gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");
     if (argc == 2)
         arg_int_range(g, argv[1], 0, 1, "atom_style sphere radvary flag");
+    g->atoms.style_molecular = 0;
+    g->atoms.molecule_flag = 0;
 }
 
 void cmd_timestep(struct gravel *g, int argc, char **argv)

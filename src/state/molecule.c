@@ -412,6 +412,27 @@ void cmd_molecule(struct gravel *g, int argc, char **argv)
 
 /* ---- derived quantities (LAMMPS Molecule::compute_*) -------------------------- */
 
+void mol_random_quat(int dim, double (*uniform)(void *rng), void *rng, double quat[4])
+{
+    double r[3] = {0.0, 0.0, 1.0};
+    if (dim == 3)
+        for (int k = 0; k < 3; k++)
+            r[k] = uniform(rng) - 0.5;
+    double theta = uniform(rng) * 2.0 * M_PI;
+    double scale = 1.0 / sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int k = 0; k < 3; k++)
+        r[k] *= scale;
+    rm_axisangle_to_quat(r, theta, quat);
+}
+
+void mol_place_atom(const struct molecule *m, const double rot[3][3], const double center[3],
+                    int k, double out[3])
+{
+    const double *dx = m->dx + 3 * k;
+    for (int q = 0; q < 3; q++)
+        out[q] = rot[q][0] * dx[0] + rot[q][1] * dx[1] + rot[q][2] * dx[2] + center[q];
+}
+
 void mol_compute_center(struct molecule *m)
 {
     if (m->centerflag)

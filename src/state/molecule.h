@@ -53,4 +53,13 @@ void mol_compute_mass(struct gravel *g, struct molecule *m);
 void mol_compute_com(struct gravel *g, struct molecule *m);
 void mol_compute_inertia(struct gravel *g, struct molecule *m);
 
+/* LAMMPS's random orientation of an inserted molecule (fix pour, create_atoms):
+ * in 3d an axis of three draws u - 0.5, normalised, in 2d the z axis; then the
+ * angle 2 pi u. `uniform` draws from `rng` in (0, 1) or [0, 1). */
+void mol_random_quat(int dim, double (*uniform)(void *rng), void *rng, double quat[4]);
+/* Atom k of m rotated by rot about the geometric centre placed at center
+ * (needs mol_compute_center): rot dx_k + center, LAMMPS's matvec then add3. */
+void mol_place_atom(const struct molecule *m, const double rot[3][3], const double center[3],
+                    int k, double out[3]);
+
 #endif

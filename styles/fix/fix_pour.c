@@ -697,26 +697,12 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
             attempt++;
             xyz_random(g, p, h, c);
             (void)rng_park_uniform(&p->rng); /* the template draw (molfrac) */
-            double r[3], rot[3][3];
-            if (dim == 3) {
-                r[0] = rng_park_uniform(&p->rng) - 0.5;
-                r[1] = rng_park_uniform(&p->rng) - 0.5;
-                r[2] = rng_park_uniform(&p->rng) - 0.5;
-            } else {
-                r[0] = r[1] = 0.0;
-                r[2] = 1.0;
-            }
-            double theta = rng_park_uniform(&p->rng) * 2.0 * M_PI;
-            double scale = 1.0 / sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-            for (int k = 0; k < 3; k++)
-                r[k] *= scale;
-            rm_axisangle_to_quat(r, theta, quat);
+            double rot[3][3];
+            mol_random_quat(dim, rng_park_draw, &p->rng, quat);
             rm_quat_to_mat(quat, rot);
             for (int m = 0; m < natom; m++) {
-                const double *dx = mol->dx + 3 * m;
                 double *q = p->coords + 4 * m;
-                for (int k = 0; k < 3; k++)
-                    q[k] = rot[k][0] * dx[0] + rot[k][1] * dx[1] + rot[k][2] * dx[2] + c[k];
+                mol_place_atom(mol, rot, c, m, q);
                 q[3] = mol->radius ? mol->radius[m] : 0.5;
                 int *im = p->imgs + 3 * m;
                 im[0] = im[1] = im[2] = 0;

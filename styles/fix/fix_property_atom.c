@@ -35,6 +35,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (!mol)
         gr_error(g, "fix property/atom expects the mol property");
+    if (g->atoms.style_molecular)
+        gr_error(g, "fix property/atom mol when atom_style already has molecule attribute "
+                    "(atom_style hybrid sphere molecular)");
     for (int i = 0; i < g->styles.nfix; i++)
         if (g->styles.fix[i] != f && !strcmp(g->styles.fix[i]->style->name, "property/atom") &&
             strcmp(g->styles.fix[i]->id, f->id))
