@@ -777,6 +777,9 @@ void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
     if (n < 0)
         gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
     fix_check_time_reset(g);
+    /* the motions timed from their own start (fix move/mesh, wall/gran
+     * wiggle) keep their clocks: continuous across the reset */
+    fix_reset_step(g, n - g->step);
     g->step = n;
     g->laststep_reset = n;
 }
