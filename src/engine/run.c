@@ -449,6 +449,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
+        /* `time` is the step's time throughout the step, as LAMMPS's
+         * atime + (ntimestep - atimestep) dt: a region moved by a variable
+         * of time is where step n puts it when step n's forces see it */
+        g->time += g->dt;
         int sampled = s % TIME_SAMPLE == 0;
         if (sampled)
             eng_finish(g); /* the previous step's work is not this step's */
@@ -482,7 +486,6 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         step[TM_NEIGH] = a2 - a1 - tx;
         step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
         timers_step(&tm, rebuild, sampled, step);
-        g->time += g->dt;
         if (output_due(g, g->step)) {
             acc_collect(g);
             double ov = nbr_max_overlap(g);

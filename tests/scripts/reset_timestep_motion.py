@@ -10,7 +10,8 @@ without the reset.
    torque f_mill[6], drive power, kinetic and rotational energy. Before the
    fix the mesh jumped back by the settling angle and the torque collapsed.
 2. The same drum as a rotating region (region cylinder rotate v_th with
-   th = w*time) under fix wall/gran/region.
+   th = w*time) under fix wall/gran/region; and `time` during step n is
+   n dt (LAMMPS), so th = w*time turns the wall as th = w*step*dt does.
 3. fix deform (x wiggle, remap x) on a periodic gas of beads.
 4. fix wall/gran zplane wiggle under a bed of beads.
 5. Variables: `time` goes on across the reset, `step` takes the new value,
@@ -98,7 +99,7 @@ comm_modify vel yes
 region box block -8.5 8.5 -8.5 8.5 0 4
 create_box 2 box
 {fill_region}
-create_atoms 1 random 70 8371 fill overlap 1.0 maxtry 500
+create_atoms 1 random 60 8371 fill overlap 1.0 maxtry 500
 set type 1 diameter 1.0 density 1.9098593
 pair_style gran/hertz/history 400000.0 NULL 200.0 NULL 0.5 1
 pair_coeff * *
@@ -137,6 +138,28 @@ thermo_modify format float %.15g norm no
 thermo 75
 """
         ok &= compare("region_rotate", deck, tmp, "ke rot theta")
+        # 2b. during step n, `time` is n dt (LAMMPS: atime + (ntimestep -
+        # atimestep) dt), so a region shaken and turned by variables of time
+        # is where the same variables of step*dt put it (before: one step
+        # behind)
+        tail = f"run {N1 + N2}\n"
+        shaken = deck.replace("variable th equal 2*PI/8.0*time",
+                              "variable th equal 2*PI/8.0*time\n"
+                              "variable dx equal 0.2*sin(2*PI*time/0.15)").replace(
+                                  "rotate v_th", "move v_dx NULL NULL rotate v_th")
+        a = run(shaken + tail, tmp, "region_time")
+        b = run(shaken.replace("*time", "*step*dt") + tail, tmp, "region_step")
+        ra, rb = thermo_rows(a.stdout), thermo_rows(b.stdout)
+        ok_t = a.returncode == 0 and b.returncode == 0 and ra and rb and ra[-1] and rb[-1]
+        worst = 0.0
+        if ok_t:
+            for (sa, va), (sb, vb) in zip(ra[-1], rb[-1]):
+                for x, y in zip(va, vb):
+                    x, y = float(x), float(y)
+                    worst = max(worst, abs(x - y) / max(abs(x), abs(y), 1e-300))
+        ok &= check("region_time_is_step_time", bool(ok_t) and worst < 1e-10,
+                    f"largest relative difference of ke, rot, theta: {worst:.2e} (limit 1e-10)")
+        ok &= check("region_time_ran", bool(ok_t), (a.stderr + b.stderr).strip()[-200:])
         # 3. fix deform wiggle on a periodic gas
         deck = """units lj
 atom_style sphere
