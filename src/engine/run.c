@@ -392,6 +392,8 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
     g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
     g->laststep = g->step + nsteps;
+    g->beginstep = g->run_start >= 0 ? g->run_start : g->step; /* LAMMPS's elaplong origin */
+    g->run_start = -1; /* used once: only cmd_run sets it */
     memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
     g->dom.vremap_group = 0;
     pair_init(g); /* the pair parameters first: fixes may use them in init */
@@ -557,6 +559,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     struct engine *e = g->eng;
     g->firststep = firststep;
     g->laststep = laststep;
+    g->beginstep = firststep;
     double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
     bigint ndump = 0;
     double t0 = wall();
@@ -758,13 +761,16 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     }
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
+    bigint run_start = have_start ? start : -1; /* each (sub-)run's elaplong origin */
     if (!nevery) {
+        g->run_start = run_start;
         run_guarded(g, n, force, post);
         return;
     }
     bigint left = n;
     for (int iter = 0; left > 0 || iter == 0; iter++) {
         bigint chunk = left < nevery ? left : nevery;
+        g->run_start = run_start;
         run_guarded(g, chunk, force, post);
         left -= chunk;
         if (ncmd && every_commands(g, ncmd, cmds) == GR_QUIT)

@@ -15,7 +15,8 @@ without the reset.
 3. fix deform (x wiggle, remap x) on a periodic gas of beads.
 4. fix wall/gran zplane wiggle under a bed of beads.
 5. Variables: `time` goes on across the reset, `step` takes the new value,
-   `elapsed` counts from the run's first step (LAMMPS 2021 semantics).
+   `elapsed` counts from the run's first step, `elaplong` from `run ... start`
+   (the rows lmp 29 Sep 2021 prints).
 6. fix pour is still refused, with the script line (LAMMPS).
 One PASS/FAIL line per check."""
 import os
@@ -226,6 +227,28 @@ print "end ${t} ${s} ${e}"
                 ("end", "0.35", "12", "5")]
         ok &= check("variables_time_step_elapsed", r.returncode == 0 and got == want,
                     f"got {got}, want {want}")
+        # 5b. elaplong: steps since `run ... start N` (else the run's first
+        # step), each sub-run of `every` too; the rows lmp 29 Sep 2021 prints
+        deck = """units lj
+atom_style sphere
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 single 2 2 2
+timestep 0.01
+thermo_style custom step elapsed elaplong
+thermo 5
+run 10 start 0 stop 30
+run 10 start 0 stop 30
+run 10
+run 10 start 5 every 5 NULL
+"""
+        r = run(deck, tmp, "elaplong")
+        got = [tuple(v) for t in thermo_rows(r.stdout) for _, v in t]
+        want = [("0", "0"), ("5", "5"), ("10", "10"), ("0", "10"), ("5", "15"), ("10", "20"),
+                ("0", "0"), ("5", "5"), ("10", "10"), ("0", "25"), ("5", "30"), ("0", "30"),
+                ("5", "35")]
+        ok &= check("elaplong_lammps", r.returncode == 0 and got == want,
+                    f"(elapsed, elaplong) rows {got}")
         # 6. fix pour stays refused
         deck = """units lj
 atom_style sphere
