@@ -27,6 +27,7 @@ void gr_unit_defaults(struct gravel *g)
 
 static void set_defaults(struct gravel *g)
 {
+    g->run_start = -1; /* no `run ... start` pending */
     g->dom.units = UNITS_LJ;
     g->dom.dimension = 3;
     for (int d = 0; d < 3; d++) {

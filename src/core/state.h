@@ -249,6 +249,8 @@ struct gravel {
     bigint step;            /* current timestep */
     double time;            /* elapsed simulated time */
     bigint firststep, laststep; /* of the current run */
+    bigint beginstep;       /* `run ... start N` (else the run's first step): elaplong */
+    bigint run_start;       /* cmd_run -> run_begin: the start keyword, -1 none */
     bigint laststep_reset;
 
     int nmolecule;          /* molecule templates (`molecule` command) */

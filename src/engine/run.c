@@ -392,6 +392,8 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     e->contact_mass = NULL; /* a fix (rigid/small) sets it again in init */
     g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
     g->laststep = g->step + nsteps;
+    g->beginstep = g->run_start >= 0 ? g->run_start : g->step; /* LAMMPS's elaplong origin */
+    g->run_start = -1; /* used once: only cmd_run sets it */
     memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
     g->dom.vremap_group = 0;
     pair_init(g); /* the pair parameters first: fixes may use them in init */
@@ -449,6 +451,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
+        /* `time` is the step's time throughout the step, as LAMMPS's
+         * atime + (ntimestep - atimestep) dt: a region moved by a variable
+         * of time is where step n puts it when step n's forces see it */
+        g->time += g->dt;
         int sampled = s % TIME_SAMPLE == 0;
         if (sampled)
             eng_finish(g); /* the previous step's work is not this step's */
@@ -482,7 +488,6 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         step[TM_NEIGH] = a2 - a1 - tx;
         step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
         timers_step(&tm, rebuild, sampled, step);
-        g->time += g->dt;
         if (output_due(g, g->step)) {
             acc_collect(g);
             double ov = nbr_max_overlap(g);
@@ -554,6 +559,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     struct engine *e = g->eng;
     g->firststep = firststep;
     g->laststep = laststep;
+    g->beginstep = firststep;
     double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
     bigint ndump = 0;
     double t0 = wall();
@@ -755,13 +761,16 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     }
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
+    bigint run_start = have_start ? start : -1; /* each (sub-)run's elaplong origin */
     if (!nevery) {
+        g->run_start = run_start;
         run_guarded(g, n, force, post);
         return;
     }
     bigint left = n;
     for (int iter = 0; left > 0 || iter == 0; iter++) {
         bigint chunk = left < nevery ? left : nevery;
+        g->run_start = run_start;
         run_guarded(g, chunk, force, post);
         left -= chunk;
         if (ncmd && every_commands(g, ncmd, cmds) == GR_QUIT)
@@ -777,6 +786,9 @@ void cmd_reset_timestep(struct gravel *g, int argc, char **argv)
     if (n < 0)
         gr_error(g, "timestep must be >= 0, got %lld", (long long)n);
     fix_check_time_reset(g);
+    /* the motions timed from their own start (fix move/mesh, wall/gran
+     * wiggle) keep their clocks: continuous across the reset */
+    fix_reset_step(g, n - g->step);
     g->step = n;
     g->laststep_reset = n;
 }

@@ -30,7 +30,7 @@
 
 enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
-    KW_STEP, KW_ELAPSED, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
+    KW_STEP, KW_ELAPSED, KW_ELAPLONG, KW_DT, KW_TIME, KW_CPU, KW_TPCPU, KW_SPCPU, KW_ATOMS, KW_KE, KW_PE,
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
     KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
@@ -122,6 +122,7 @@ static const struct {
     enum vtype type;
 } keywords[KW_COUNT] = {
     [KW_STEP] = {"step", "Step", V_BIGINT},     [KW_ELAPSED] = {"elapsed", "Elapsed", V_BIGINT},
+    [KW_ELAPLONG] = {"elaplong", "Elaplong", V_BIGINT},
     [KW_DT] = {"dt", "Dt", V_FLOAT},            [KW_TIME] = {"time", "Time", V_FLOAT},
     [KW_CPU] = {"cpu", "CPU", V_FLOAT},         [KW_TPCPU] = {"tpcpu", "T/CPU", V_FLOAT},
     [KW_SPCPU] = {"spcpu", "S/CPU", V_FLOAT},   [KW_ATOMS] = {"atoms", "Atoms", V_BIGINT},
@@ -373,7 +374,7 @@ static void check_keyword(struct gravel *g, const char *s)
             gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
     }
-    gr_error(g, "unknown keyword '%s' (known: step elapsed dt time cpu tpcpu spcpu atoms ke pe "
+    gr_error(g, "unknown keyword '%s' (known: step elapsed elaplong dt time cpu tpcpu spcpu atoms ke pe "
                 "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp press epair emol cpuremain c_ID "
                 "c_ID[N] "
                 "v_name)", s);
@@ -711,6 +712,8 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
     case KW_ELAPSED: *ival = g->step - g->firststep; return (double)*ival;
+    /* LAMMPS: since `run ... start` (else the run's first step) */
+    case KW_ELAPLONG: *ival = g->step - g->beginstep; return (double)*ival;
     case KW_ATOMS: *ival = g->atoms.n; return natoms;
     case KW_DT: return g->dt;
     case KW_TIME: return g->time;

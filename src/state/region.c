@@ -100,14 +100,19 @@ void region_set_velocity(struct gravel *g, struct region *r)
     if (r->vel_step == g->step)
         return;
     r->vel_step = g->step;
+    /* LAMMPS: zero at step 0, where there is no previous motion; after a
+     * reset_timestep to 0 the previous evaluation still counts, so the
+     * velocity stays continuous across the reset */
+    int have_prev = g->step > 0 || r->prev_set;
+    r->prev_set = 1;
     if (r->moveflag) {
         for (int k = 0; k < 3; k++) {
-            r->v[k] = g->step > 0 ? (r->d[k] - r->prev[k]) / g->dt : 0.0;
+            r->v[k] = have_prev ? (r->d[k] - r->prev[k]) / g->dt : 0.0;
             r->prev[k] = r->d[k];
         }
     }
     if (r->rotateflag) {
-        double w = g->step > 0 ? (r->theta - r->prev[3]) / g->dt : 0.0;
+        double w = have_prev ? (r->theta - r->prev[3]) / g->dt : 0.0;
         for (int k = 0; k < 3; k++) {
             r->rpoint[k] = r->point[k] + r->d[k];
             r->omega[k] = w * r->axis[k];

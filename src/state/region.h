@@ -45,6 +45,7 @@ struct region {
     /* wall velocity by differences (LAMMPS Region::set_velocity) */
     double prev[4], v[3], omega[3], rpoint[3];
     bigint vel_step;            /* step of the last set_velocity, -1: none */
+    int prev_set;               /* prev holds an earlier evaluation */
     int cmax;                   /* most contacts its surface can report (wall ids) */
 };
 
@@ -75,7 +76,8 @@ void region_relink(struct gravel *g, struct region *r);
 int region_dynamic(const struct region *r);
 /* Update r's surface velocity from the change of d and theta since the
  * previous step, once per step (LAMMPS Region::set_velocity: zero at step
- * 0, omega = dtheta/dt times the axis as given). */
+ * 0 unless an earlier evaluation exists, i.e. after reset_timestep 0;
+ * omega = dtheta/dt times the axis as given). */
 void region_set_velocity(struct gravel *g, struct region *r);
 /* Rotate x about the axis through r->point by the angle with sine s and
  * cosine c (LAMMPS Region::rotate, same operation order). */

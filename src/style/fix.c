@@ -230,6 +230,13 @@ void fix_check_time_reset(struct gravel *g)
                      g->styles.fix[i]->id, g->styles.fix[i]->style->name);
 }
 
+void fix_reset_step(struct gravel *g, bigint shift)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->reset_step)
+            g->styles.fix[i]->style->reset_step(g, g->styles.fix[i], shift);
+}
+
 double fix_energy_sum(struct gravel *g)
 {
     double e = 0.0;

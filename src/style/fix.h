@@ -137,6 +137,11 @@ struct fix_style {
     /* Optional: the magnitude of the uniform acceleration this fix applies
      * to its atoms (fix gravity): the -check accuracy map's free-fall speed. */
     double (*acceleration)(const struct fix *f);
+    /* Optional: reset_timestep moved the step counter by `shift` steps
+     * (between runs). A motion timed by its own start step (time_origin)
+     * moves that origin by shift, so its clock, and the motion, continue
+     * where they stood; step-keyed caches move with it. */
+    void (*reset_step)(struct gravel *g, struct fix *f, bigint shift);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;
@@ -168,7 +173,8 @@ struct fix {
     size_t peratom_cap;         /* atoms the buffers hold */
     uint64_t arghash;           /* hash of group, style and arguments (restart.c compares) */
     unsigned fused_hooks;       /* hooks run inside fused kernels this run (src/engine/fused.c) */
-    int time_depend;            /* 1: its schedule is in steps; reset_timestep refuses (LAMMPS) */
+    int time_depend;            /* 1: its schedule is in absolute steps (fix pour):
+                                 * reset_timestep refuses (LAMMPS) */
     int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
     bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
     int energy;                 /* fix_modify energy yes: scalar counted in pe */
@@ -193,6 +199,8 @@ double fix_energy_sum(struct gravel *g);
 /* Error "cannot reset timestep with a time-dependent fix defined (fix ID
  * style)" if a fix has time_depend (reset_timestep, read_dump, rerun). */
 void fix_check_time_reset(struct gravel *g);
+/* reset_timestep moved the step counter by shift: every fix's reset_step. */
+void fix_reset_step(struct gravel *g, bigint shift);
 /* Union of NEED_* over all fixes. */
 unsigned fix_needs_all(struct gravel *g);
 

@@ -258,7 +258,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         s->dtilt *= k;
     }
     f->hooks = HOOK_END_OF_STEP | HOOK_PRE_EXCHANGE;
-    f->time_depend = 1;
+    /* no time_depend: the targets are timed from the run's first step, so
+     * reset_timestep leaves them alone (LAMMPS 2021 allows it too) */
     f->force_reneighbor = 1;
     if (d->remap == REMAP_V)
         snprintf(f->defines, sizeof f->defines, "VREMAP");

@@ -417,8 +417,21 @@ static double vector(struct gravel *g, struct fix *f, int i)
     return ms->cache[i - 1];
 }
 
+/* reset_timestep: the mesh force and its sums still describe the same
+ * state, now labelled with the shifted step */
+static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    struct mesh_surface *ms = f->data;
+    if (ms->fmesh_valid)
+        ms->fmesh_step += shift;
+    if (ms->cache_step >= 0)
+        ms->cache_step += shift;
+}
+
 const struct fix_style fix_style_mesh_surface = {
     .name = "mesh/surface",
+    .reset_step = reset_step,
     .create = create,
     .destroy = destroy,
     .size_vector = 7,

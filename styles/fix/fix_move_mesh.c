@@ -7,7 +7,10 @@
  *                                           rotation by 2 pi t / T about the
  *                                           axis through o (right hand rule)
  *
- * t counts from the step the fix was created. Several move/mesh fixes on one
+ * t counts from the step the fix was created, in steps run: reset_timestep
+ * moves that origin with the step counter, so the motion continues across
+ * it (LAMMPS 2021's fix move, timed from the step alone, jumps back; later
+ * LAMMPS refuses the reset). Several move/mesh fixes on one
  * mesh stack: each motion acts on the mesh as the earlier ones left it, in
  * the order of the fixes (fix_mesh_surface.c composes them into one rigid
  * pose x = R x0 + d with surface velocity v(p) = V0 + omega x p, exact at
@@ -96,9 +99,17 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     ((struct mesh_motion *)f->data)->time_origin = origin;
 }
 
+/* reset_timestep: the motion keeps its own clock (t = step - origin) */
+static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    ((struct mesh_motion *)f->data)->time_origin += shift;
+}
+
 const struct fix_style fix_style_move_mesh = {
     .name = "move/mesh",
     .create = create,
+    .reset_step = reset_step,
     .write_restart = write_restart,
     .read_restart = read_restart,
 };

@@ -512,6 +512,14 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     restore_motion(g, f, w);
 }
 
+/* reset_timestep: wiggle keeps its own clock (step - time_origin), so the
+ * wall goes on oscillating from where it stood (LAMMPS 2021 restarts it) */
+static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    ((struct wall *)f->data)->time_origin += shift;
+}
+
 const struct fix_style fix_style_wall_gran_region = {
     .name = "wall/gran/region",
     .create = create,
@@ -520,6 +528,7 @@ const struct fix_style fix_style_wall_gran_region = {
     .destroy = destroy,
     .write_restart = write_restart,
     .read_restart = read_restart,
+    .reset_step = reset_step,
 };
 
 const struct fix_style fix_style_wall_gran = {
@@ -530,4 +539,5 @@ const struct fix_style fix_style_wall_gran = {
     .destroy = destroy,
     .write_restart = write_restart,
     .read_restart = read_restart,
+    .reset_step = reset_step,
 };

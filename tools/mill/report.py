@@ -60,12 +60,41 @@ def log_means(path):
     return (sum(r[i_t] for r in rows) / n, sum(r[i_p] for r in rows) / n, n)
 
 
+def reset_continuous(path):
+    """True when the first thermo row after `reset_timestep 0` repeats the last
+    row of the settling run (torque and power to every printed digit): the mesh
+    kept its pose across the reset. False for the jump of the logs made before
+    issue 23's fix (fix move/mesh restarted its angle at the new step 0)."""
+    runs, cur = [], None
+    for l in open(path):
+        f = l.split()
+        if f[:1] == ["Step"]:
+            cur = []
+            runs.append(cur)
+        elif cur is not None and f and f[0].isdigit():
+            cur.append(f)
+        elif l.startswith("Loop time"):
+            cur = None
+    if len(runs) < 2 or not runs[-2] or not runs[-1]:
+        return None
+    return runs[-2][-1][1:] == runs[-1][0][1:]
+
+
 def loop_times(path):
     out = []
     for l in open(path):
         if l.startswith("Loop time of"):
             f = l.split()
             out.append((float(f[3]), int(f[8]), int(f[11])))
+    return out
+
+
+def bytes_per_atom(path):
+    """The run's own device-memory figure (bytes per atom), or None."""
+    out = None
+    for l in open(path):
+        if l.startswith("Device memory") and "bytes per atom" in l:
+            out = float(l.split("(")[1].split()[0])
     return out
 
 
@@ -175,13 +204,15 @@ def main():
         steps = sum(x[1] for x in lt)
         natoms = lt[-1][2]
         ovl = max_overlap(os.path.join(run, "%s.log" % tag))
+        cont = reset_continuous(os.path.join(run, "%s.log" % tag))
+        bpa = bytes_per_atom(os.path.join(run, "%s.log" % tag))
         loop = sum(x[0] for x in lt)
         title = ("%s, %s %.0f %% critical" % (tag, "lifters," if kind == "lifters" else
                                                "no lifters,", 100 * speed))
         png, qpng = maps(run, tag, title, docdir)
         res.append(dict(tag=tag, kind=kind, speed=speed, settle=settle, ave=ave, secs=int(secs),
                         sh=sh, toe=toe, bulk=bulk, vt=vt, smax=smax, torque=torque, power=power,
-                        nsamp=nsamp, ovl=ovl, steps=steps, natoms=natoms, loop=loop, png=png, qpng=qpng))
+                        nsamp=nsamp, ovl=ovl, cont=cont, bpa=bpa, steps=steps, natoms=natoms, loop=loop, png=png, qpng=qpng))
     lif = [r for r in res if r["kind"] == "lifters"]
     if lif:
         dat = os.path.join(run, "power.dat")
@@ -203,6 +234,67 @@ def fmt_angle(a):
     return "n/a" if a is None else "%+d" % a
 
 
+def navg(r):
+    """Steps of r's averaging window (mill.in: ave revolutions at 6e-5 s)."""
+    return round(float(r["ave"]) * 2 * math.pi / (r["speed"] * WC) / 6e-5 / 50) * 50
+
+
+def departures(res):
+    """The contact-model and bookkeeping departures from the thesis (checked
+    against 003's sec. 4.2-4.5 and fig. 5.10, 5.23, 5.24), and whether the runs
+    had the reset_timestep jump."""
+    o = []
+    o.append("- **Bead count.** The thesis gives two: 253,125 (the HCP fill of fig. 5.10 and the "
+             "performance figures of sec. 6.4) and 303,156 (the parameter table, fig. 5.23, and the "
+             "47 MB checkpoint of sec. 5.2.10). The slice keeps 253,125 per 0.27 m; 303,156 would "
+             "give %d beads.\n" % round(303156 * L_SLICE / 0.27))
+    o.append("- **Tangential contact force.** hertz/mindlin keeps a Mindlin tangential spring with "
+             "history (the tangential displacement accumulated over the contact, truncated at the "
+             "Coulomb limit), so beads at rest hold static friction. The thesis (sec. 4.3) sets the "
+             "tangential displacement to V_t dt afresh each step (fig. 5.23's ppTanForceCoeff "
+             "5696.31 = 8 G sqrt(R/2) x 1e-6 s and psTanForceCoeff 67.9176 = 8 G_ps sqrt(R/2) x "
+             "1e-6 s fold its step in): no memory and, as it says of its friction in sec. 4.2, no "
+             "static friction (F_t = 0 when V_t = 0).\n")
+    o.append("- **No rolling resistance.** The thesis's sec. 4.5 adds a rolling torque mu_R "
+             "min(|F_n|, omega_rel) [ZY03] (fig. 5.23/5.24 give no mu_R); the deck has none "
+             "(hertz/mindlin's optional rolling term is off).\n")
+    o.append("- **\"Thesis moduli\" are softer than what the thesis ran.** `-var soft 1 -var "
+             "softps 1` gives fig. 5.24's moduli through the thesis's own formula E* = E / (2 (1 - "
+             "nu^2)) (sec. 4.3): a bead-bead coefficient (4/3) E* sqrt(R/2) = 1.233e9. The thesis "
+             "ran ppNormalForceCoeff = 2,335,490,000 (fig. 5.23) = (4/3) E sqrt(R/2) with E = 63.96 "
+             "GPa, i.e. E* = E: 1.89x stiffer. Its psNormalForceCoeff 32,147,700 = (4/3) E_ps "
+             "sqrt(R/2) is 1.16x the shell contact of `softps 1` (E*_ps from the formula, R* = R "
+             "against a wall). `-var soft 0.528 -var softps 0.859` gives the thesis's two normal "
+             "coefficients.\n")
+    old = [r["tag"] for r in res if r.get("cont") is False]
+    if old:
+        o.append("- **reset_timestep jump (runs %s).** These logs predate the fix of issue 23: "
+                 "`mill.in` calls `reset_timestep 0` after settling, and fix move/mesh then timed "
+                 "its rotation from the new step 0, so the mesh jumped back by the part of a "
+                 "revolution the settling left (2 revolutions: 60 %%: 0.23 deg, 70 %%: 0.05 deg, "
+                 "80 %%: 0.51 deg = 1.2 mm at the lifter tips; the smooth runs' 1.5 revolutions: "
+                 "180 deg, which maps the 252-facet shell onto itself to 0.04 deg) and each "
+                 "averaging window began with a kick (issue 23 measured at 80 %%: overlaps up to "
+                 "0.85 of a radius, beads leaving the shell at 11.5 m/s, the drive torque of the "
+                 "wrong sign for 150 steps, against %s averaging steps). The motion is now "
+                 "continuous across `reset_timestep` (tests/scripts/reset_timestep_motion.py). "
+                 "Checked on the deck at 60 %% with `-var settle 0.3 -var ave 0.02` (a 108 deg "
+                 "jump before the fix): before, the torque went from -0.092 to +16.4 N m at the "
+                 "reset and a bead crossed the shell at 10.3 m/s (lost atom, run stopped at step "
+                 "18); after, the first averaging row repeats the last settling row (torque "
+                 "-0.0919 N m, -0.084 to -0.102 over the 450 averaging steps) and the largest "
+                 "overlap over those steps is 0.082 of a radius. `make reproduce-mill` rewrites "
+                 "these tables (about 1.5 h here).\n"
+                 % (", ".join(old), "-".join(
+                     "%d" % v for v in sorted({min(navg(r) for r in res if r["tag"] in old),
+                                               max(navg(r) for r in res if r["tag"] in old)}))))
+    elif res and all(r.get("cont") for r in res):
+        o.append("- **reset_timestep.** Every log shows the mesh continuous across the "
+                 "`reset_timestep 0` that starts the averaging (the first averaging row repeats "
+                 "the last settling row).\n")
+    return o
+
+
 def write_doc(res, docdir):
     L = L_SLICE
     n_full = 253125
@@ -210,7 +302,8 @@ def write_doc(res, docdir):
     o.append("# The 300 mm pilot mill of source document 003, reproduced (axial slice)\n")
     o.append("Written by `make reproduce-mill` (tools/mill/reproduce.sh, tools/mill/report.py) from "
              "the runs of `inputs/published/mill/mill.in`. Hromnik's thesis (003) sec. 6.2 simulates "
-             "a 300 mm x 0.27 m mill with 253,125 glass beads of 3 mm (fig. 5.23, 5.24) at 60, 70 "
+             "a 300 mm x 0.27 m mill with 253,125 glass beads of 3 mm (fig. 5.10; fig. 5.23 says 303,156, "
+             "see below; properties fig. 5.24) at 60, 70 "
              "and 80 %% of the critical speed omega_c = sqrt(2 g / D) = %.3f rad/s, three "
              "revolutions to steady state, then solidicity and velocity averaged over at least one "
              "revolution on voxels of R, 2R and 4R (fig. 6.7-6.12).\n" % WC)
@@ -257,6 +350,7 @@ def write_doc(res, docdir):
     o.append("- **Shell contact.** fix wall/pair on the mesh with hertz/mindlin's per-type-pair "
              "material (pair_coeff 1 2: the ps values), the mesh's surface velocity from fix "
              "move/mesh rotate.\n")
+    o.extend(departures(res))
     o.append("## Results\n")
     o.append("| run | speed | revolutions (settle + average) | shoulder | toe | bulk solidicity | "
              "charge speed at shell | omega R | torque (slice) | power draw (0.27 m) |")
@@ -342,15 +436,30 @@ def write_doc(res, docdir):
         o.append("| %s | %d | %d | %.0f s | %.2e | %d s | %.3f |"
                  % (r["tag"], r["natoms"], r["steps"], r["loop"],
                     r["natoms"] * r["steps"] / r["loop"], r["secs"], r["ovl"]))
+    if any(r.get("cont") is False for r in res):
+        o.append("\nThe overlap column of these logs predates wall-overlap tracking: it holds "
+                 "bead-bead overlaps sampled at thermo steps only (no bead-shell overlaps, and not "
+                 "the reset kick above); today's logs sample the walls and meshes at every step.")
     tot = sum(r["secs"] for r in res)
     o.append("\nWall times sum to %d s on this machine (2 cores shared with other sessions; for "
              "this page mill_07 and mill_08 ran at the same time, and the three smooth runs "
              "together, `MILL_JOBS`, so their rates share the cores). The full mill "
              "(%d beads, 0.27 m) at the thesis's 1e-6 s step would need about %.1e particle-steps "
              "per speed (4 revolutions at 70 %%).\n" % (tot, n_full, n_full * 4 * 2 * math.pi / (0.7 * WC) / 1e-6))
+    o.append("Time per step: %s. " % ", ".join("%s %.1f ms" % (r["tag"], 1e3 * r["loop"] / r["steps"])
+                                                for r in res))
+    bpa = [r["bpa"] for r in res if r.get("bpa")]
+    if bpa:
+        b = max(bpa)
+        o.append("A GPU run needs little memory: the logs give %.0f bytes per bead in double "
+                 "precision (mesh contact history included), %.1f MB for the slice, %.0f MB for "
+                 "the full 253,125-bead mill (%.0f MB for 303,156). Its run time on a GPU is not "
+                 "measured here.\n" % (b, b * round(937500 * L_SLICE) / 1e6, b * n_full / 1e6,
+                                        b * 303156 / 1e6))
     o.append("## Not done\n")
     o.append("- The full-length mill with end plates; the thesis's unsoftened moduli and 1e-6 s "
-             "step (both only a matter of run time: `-var L 0.27 -var soft 1 -var softps 1` with a "
+             "step (both only a matter of run time: `-var L 0.27 -var soft 0.528 -var softps 0.859` "
+             "(the thesis's normal coefficients; `soft 1 softps 1` is the formula's, 1.89x softer) with a "
              "1e-6 s timestep edit, end plates added as wall/pair zplane walls, and the STL "
              "regenerated with `mill_stl.py --length 0.27`).\n")
     o.append("- A point-by-point numeric comparison with fig. 6.7-6.12: the thesis's figures "
