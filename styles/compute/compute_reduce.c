@@ -6,7 +6,11 @@
  * its array) or v_name (an atom-style variable). One input gives a global scalar,
  * several a global vector (one element per input). Sum modes are extensive.
  * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
- * max (LAMMPS' values). */
+ * max (LAMMPS' values).
+ *
+ * `compute ID group reduce/region region-ID mode input1 ...` (LAMMPS's
+ * compute reduce/region) is the same over the atoms of the group that are
+ * inside the region at evaluation time (region motion applied). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +19,7 @@
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
+#include "region.h"
 #include "variable.h"
 
 enum mode { SUM, SUMSQ, SUMABS, MIN, MAX, AVE, AVESQ, AVEABS };
@@ -27,6 +32,7 @@ struct input {
 };
 
 struct reduce {
+    char region[GR_NAMELEN];    /* reduce/region: its region, "" for reduce */
     enum mode mode;
     int n;
     struct input *in;
@@ -61,12 +67,33 @@ static void reduce_destroy(struct compute *c)
     c->data = NULL;
 }
 
+static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, int argc,
+                         char **argv);
+
 static void reduce_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     if (argc < 2)
         gr_error(g, "compute reduce expects a mode and at least one input");
     struct reduce *r = gr_calloc(g, 1, sizeof *r);
     c->data = r;
+    reduce_parse(g, c, r, argc, argv);
+}
+
+static void reduce_region_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "compute reduce/region expects a region ID, a mode and at least one input");
+    struct reduce *r = gr_calloc(g, 1, sizeof *r);
+    c->data = r;
+    region_get(g, argv[0]); /* must exist now, as LAMMPS */
+    snprintf(r->region, sizeof r->region, "%s", argv[0]);
+    reduce_parse(g, c, r, argc - 1, argv + 1);
+}
+
+/* mode input1 input2 ...: the part reduce and reduce/region share */
+static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, int argc,
+                         char **argv)
+{
     int m = -1;
     for (int k = 0; k < (int)(sizeof modes / sizeof modes[0]); k++)
         if (strcmp(argv[0], modes[k].name) == 0)
@@ -150,12 +177,19 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
         src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");
     }
+    struct region *reg = NULL;
+    if (r->region[0]) {
+        reg = region_get(g, r->region);
+        region_prematch(g, reg);
+    }
     double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
     bigint count = 0;
     const int *order = atoms_tag_order(g);
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
+            continue;
+        if (reg && !region_match(reg, a->x + 3 * i))
             continue;
         double v = scale * src[(size_t)stride * i + comp];
         count++;
@@ -190,6 +224,15 @@ static void reduce_vector(struct gravel *g, struct compute *c)
 const struct compute_style compute_style_reduce = {
     .name = "reduce",
     .create = reduce_create,
+    .init = reduce_init,
+    .scalar = reduce_scalar,
+    .vector = reduce_vector,
+    .destroy = reduce_destroy,
+};
+
+const struct compute_style compute_style_reduce_region = {
+    .name = "reduce/region",
+    .create = reduce_region_create,
     .init = reduce_init,
     .scalar = reduce_scalar,
     .vector = reduce_vector,

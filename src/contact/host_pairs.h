@@ -1,0 +1,25 @@
+/* host_pairs.h - pairs of atoms closer than a distance, found on the host
+ * from the host arrays (a cell grid, minimum image in periodic dimensions),
+ * for the computes that look at neighbours at output time (contact/atom,
+ * coord/atom, cluster/atom, pair/local, property/local), as LAMMPS's
+ * occasional neighbor lists serve its computes. Orthogonal boxes only.
+ * Each pair appears once, ordered by (lower tag, higher tag): i is the
+ * partner with the lower tag; del = x_i - x_j (minimum image). */
+#ifndef GR_HOST_PAIRS_H
+#define GR_HOST_PAIRS_H
+
+#include "state.h"
+
+struct host_pair {
+    int i, j;           /* host indices, tag[i] < tag[j] */
+    double del[3];      /* x_i - x_j, minimum image */
+    double rsq;
+};
+
+/* Every pair of atoms, one in mask bits `bits_a` and the other in `bits_b`
+ * (either way round), with |del| < cut (cut > 0). Returns the count and sets
+ * *out (malloc'd, caller frees; NULL when none). Errors name `who`. */
+int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits_b,
+                    struct host_pair **out, const char *who);
+
+#endif
