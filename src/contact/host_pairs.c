@@ -12,6 +12,8 @@
 #include <string.h>
 
 #include "error.h"
+#include "fix.h"
+#include "pair.h"
 
 static double minimg(double d, double L)
 {
@@ -169,4 +171,70 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
     }
     *out = p;
     return np;
+}
+
+/* LAMMPS 2021 init_one's cut-off for types with largest radii ri, rj */
+static double type_cut(const struct pair *p, const struct pair_caps *caps, int i, int j,
+                       double ri, double rj)
+{
+    if (p && caps->lammps2021_cut)
+        return caps->lammps2021_cut(caps->cut2021_of, i, j, ri, rj);
+    return ri + rj;
+}
+
+int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct host_pair **out,
+                     const char *who)
+{
+    const struct atoms *a = &g->atoms;
+    int nt = a->ntypes > 0 ? a->ntypes : 1;
+    double *dyn = gr_calloc(g, (size_t)(2 * nt + 2), sizeof *dyn), *fro = dyn + nt + 1;
+    unsigned frozen = fix_frozen_groupbit(g);
+    double rmax = 0;
+    for (int k = 0; k < a->n; k++) {
+        double *m = (a->mask[k] & frozen) ? fro : dyn;
+        if (a->radius[k] > m[a->type[k]])
+            m[a->type[k]] = a->radius[k];
+        if (a->radius[k] > rmax)
+            rmax = a->radius[k];
+    }
+    double *cut = NULL, cmax = 2 * rmax;
+    if (!radius) {
+        const struct pair *p = g->styles.pair;
+        if (!p)
+            gr_error(g, "%s: cutoff type needs a pair style (or use cutoff radius)", who);
+        struct pair_caps caps;
+        pair_describe(p, &caps);
+        cut = gr_calloc(g, (size_t)(nt + 1) * (nt + 1), sizeof *cut);
+        cmax = 0;
+        for (int i = 1; i <= nt; i++)
+            for (int j = 1; j <= nt; j++) {
+                double c = type_cut(p, &caps, i, j, dyn[i], dyn[j]);
+                c = fmax(c, type_cut(p, &caps, i, j, fro[i], dyn[j]));
+                c = fmax(c, type_cut(p, &caps, i, j, dyn[i], fro[j]));
+                cut[i * (nt + 1) + j] = c;
+                cmax = fmax(cmax, c);
+            }
+    }
+    free(dyn);
+    *out = NULL;
+    if (!(cmax > 0)) {
+        free(cut);
+        return 0;
+    }
+    struct host_pair *p;
+    int np = host_pairs_find(g, cmax * (1 + 1e-12), groupbit, groupbit, &p, who);
+    int m = 0;
+    for (int k = 0; k < np; k++) {
+        int i = p[k].i, j = p[k].j;
+        double c = radius ? a->radius[i] + a->radius[j] : cut[a->type[i] * (nt + 1) + a->type[j]];
+        if (p[k].rsq < c * c)
+            p[m++] = p[k];
+    }
+    free(cut);
+    if (m == 0) {
+        free(p);
+        p = NULL;
+    }
+    *out = p;
+    return m;
 }

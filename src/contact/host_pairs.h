@@ -22,4 +22,16 @@ struct host_pair {
 int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits_b,
                     struct host_pair **out, const char *who);
 
+/* The pairs LAMMPS's local pair computes list (compute pair/local and the
+ * p* values of compute property/local): both atoms in `groupbit`, closer
+ * than the cut-off: with `radius`, r_i + r_j (LAMMPS's cutoff radius);
+ * else the pair style's type-pair cut-off of LAMMPS 2021's init_one
+ * (cutoff type): the largest of R_i + R_j over the largest radii of the
+ * two types' dynamic and frozen (fix freeze) atoms, frozen-frozen
+ * excluded, through the style's caps.lammps2021_cut when it has one (pair
+ * granular: JKR pull-off, its cutoff keyword), the radii of the atoms
+ * present now. Same order and layout as host_pairs_find. */
+int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct host_pair **out,
+                     const char *who);
+
 #endif

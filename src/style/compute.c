@@ -60,6 +60,7 @@ static void compute_delete(struct compute *c)
         free(c->data); /* plain state (e.g. a temperature's struct temp_state) */
     free(c->vector);
     free(c->peratom);
+    free(c->local);
     free(c);
 }
 
@@ -183,6 +184,47 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     }
     c->style->peratom(g, c);
     return c->peratom;
+}
+
+double *compute_local_rows(struct gravel *g, struct compute *c, int rows)
+{
+    int cols = c->size_local_cols > 0 ? c->size_local_cols : 1;
+    if (rows > c->local_cap || !c->local) {
+        int cap = rows > 16 ? rows : 16;
+        double *p = realloc(c->local, (size_t)cap * cols * sizeof(double));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        c->local = p;
+        c->local_cap = cap;
+    }
+    c->size_local_rows = rows;
+    return c->local;
+}
+
+int compute_local(struct gravel *g, struct compute *c, const double **data)
+{
+    if (!c->local_flag)
+        gr_error(g, "compute %s (%s) does not produce local values", c->id, c->style->name);
+    compute_local_rows(g, c, 0);
+    c->style->local(g, c);
+    *data = c->local;
+    return c->size_local_rows;
+}
+
+void compute_local_check(struct gravel *g, const char *id, int index, const char *who)
+{
+    struct compute *c = compute_get(g, id, who);
+    if (!c->local_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce local values", who, c->id,
+                 c->style->name);
+    if (index == 0 && c->size_local_cols > 0)
+        gr_error(g, "%s: compute %s has %d local columns; use c_%s[N]", who, c->id,
+                 c->size_local_cols, c->id);
+    if (index > 0 && c->size_local_cols == 0)
+        gr_error(g, "%s: compute %s has one local value per row; use c_%s", who, c->id, c->id);
+    if (index > c->size_local_cols)
+        gr_error(g, "%s: c_%s[%d] is out of range: compute %s has %d local columns", who,
+                 c->id, index, c->id, c->size_local_cols);
 }
 
 void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who)

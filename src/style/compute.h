@@ -1,8 +1,11 @@
 /* compute.h - computes: named diagnostics (`compute ID group style args`) that
  * thermo output, dumps and expressions read as c_ID / c_ID[N].
  *
- * A compute produces a global scalar, a global vector, or a per-atom vector
- * (one value per host atom, in host order), as its style declares. Computes
+ * A compute produces a global scalar, a global vector, a per-atom vector
+ * (one value per host atom, in host order) or array, or local values (a
+ * vector or an array of rows that are not atoms: pairs, contacts; LAMMPS's
+ * local computes, written by dump local and reduced by compute reduce), as
+ * its style declares. Computes
  * evaluate on the host arrays: callers inside a run call run_sync_host() first
  * (output does this before each thermo line). Values are recomputed on every
  * call; computes are O(N) passes over the host arrays.
@@ -29,6 +32,9 @@ struct compute_style {
     double (*scalar)(struct gravel *g, struct compute *c);     /* scalar_flag */
     void (*vector)(struct gravel *g, struct compute *c);       /* fill c->vector */
     void (*peratom)(struct gravel *g, struct compute *c);      /* fill c->peratom */
+    /* local_flag: fill rows through compute_local_rows() (which sets
+     * size_local_rows) */
+    void (*local)(struct gravel *g, struct compute *c);
     void (*destroy)(struct compute *c);                        /* free c->data */
 };
 
@@ -44,6 +50,11 @@ struct compute {
     double *vector;             /* [size_vector], owned */
     double *peratom;            /* [atoms.n] or [atoms.n][cols] after compute_peratom, owned */
     int peratom_cap;
+    int local_flag;
+    int size_local_cols;        /* 0: local vector; else columns of a local array */
+    int size_local_rows;        /* rows of the last evaluation */
+    double *local;              /* [rows][max(cols, 1)], owned */
+    int local_cap;              /* rows allocated */
     void *data;                 /* style state */
     struct temp_state *temp;    /* temperature computes (temp, temp/sphere): their dof
                                  * and compute_modify settings (temperature.h); in data */
@@ -69,6 +80,16 @@ const double *compute_peratom(struct gravel *g, struct compute *c);
  * p[i * *stride]. Errors name `who`. */
 const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index, int *stride,
                                   const char *who);
+/* Evaluate the local values of c: returns the row count, *data the rows
+ * (row-major, max(size_local_cols, 1) per row), valid until the next
+ * evaluation. */
+int compute_local(struct gravel *g, struct compute *c, const double **data);
+/* For styles: room for `rows` rows in c->local (size_local_rows = rows);
+ * returns c->local. */
+double *compute_local_rows(struct gravel *g, struct compute *c, int rows);
+/* Check that compute `id` has local output matching `index` (0: its local
+ * vector; N: column N of its local array). */
+void compute_local_check(struct gravel *g, const char *id, int index, const char *who);
 /* Check at setup that compute `id` has per-atom output matching `index`. */
 void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who);
 

@@ -90,6 +90,35 @@ static double collision_time(const struct pair *p, double m, double r, double vn
     return t > 0 ? t : INFINITY;
 }
 
+/* LAMMPS 2021 PairGranHookeHistory::single / PairGranHertzHistory::single,
+ * normal part: fforce = kn (radsum - r) / r - meff gamman vn.del / r^2,
+ * times sqrt(delta R*) for hertz, clipped at 0 with limit_damping; no
+ * energy. */
+static double pair_gran_single(const struct pair *p, const struct pair_single *s,
+                               double *fforce)
+{
+    double radsum = s->radi + s->radj;
+    *fforce = 0.0;
+    if (s->rsq >= radsum * radsum)
+        return 0.0;
+    double r = sqrt(s->rsq), rinv = 1.0 / r, rsqinv = 1.0 / s->rsq;
+    double vnnr = (s->vi[0] - s->vj[0]) * s->del[0] + (s->vi[1] - s->vj[1]) * s->del[1] +
+                  (s->vi[2] - s->vj[2]) * s->del[2];
+    double meff = s->mi * s->mj / (s->mi + s->mj);
+    if (s->frozen_i)
+        meff = s->mj;
+    if (s->frozen_j)
+        meff = s->mi;
+    double damp = meff * p->coef[C_GAMMAN] * vnnr * rsqinv;
+    double ccel = p->coef[C_KN] * (radsum - r) * rinv - damp;
+    if (!strcmp(p->style->name, "gran/hertz/history"))
+        ccel *= sqrt((radsum - r) * s->radi * s->radj / radsum);
+    if (p->coef[C_LIMIT] != 0.0 && ccel < 0.0)
+        ccel = 0.0;
+    *fforce = ccel;
+    return 0.0;
+}
+
 void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
                         const char *eval, const char *law, int history)
 {
@@ -103,4 +132,6 @@ void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *s
     c->conservative = pair_gran_conservative(p);
     c->energy_of = p;
     c->contact_energy = pair_gran_contact_energy;
+    c->single_of = p;
+    c->single = pair_gran_single;
 }
