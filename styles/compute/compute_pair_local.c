@@ -36,6 +36,8 @@ struct pair_local {
     int needs_single;
 };
 
+static const struct pair *pl_pair(struct gravel *g, struct compute *c, struct pair_caps *caps);
+
 static void pl_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     struct pair_local *pl = gr_calloc(g, 1, sizeof *pl);
@@ -74,6 +76,10 @@ static void pl_create(struct gravel *g, struct compute *c, int argc, char **argv
         gr_error(g, "compute pair/local expects at least one value (dist eng force fx fy fz)");
     c->local_flag = 1;
     c->size_local_cols = pl->n > 1 ? pl->n : 0;
+    if (g->styles.pair) { /* checked again at each use: the pair style may change */
+        struct pair_caps caps;
+        pl_pair(g, c, &caps);
+    }
 }
 
 static const struct pair *pl_pair(struct gravel *g, struct compute *c, struct pair_caps *caps)
