@@ -3,7 +3,9 @@
  * reduce. mode = sum | min | max | ave | sumsq | avesq | sumabs | aveabs.
  * Inputs: x y z vx vy vz fx fy fz radius diameter mass omegax omegay omegaz
  * tqx tqy tqz, c_ID / c_ID[N] (a per-atom compute's vector, or column N of
- * its array) or v_name (an atom-style variable). One input gives a global scalar,
+ * its array; or a local compute's, e.g. pair/local: then every row counts,
+ * whatever the group and region, as LAMMPS) or v_name (an atom-style
+ * variable). One input gives a global scalar,
  * several a global vector (one element per input). Sum modes are extensive.
  * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
  * max (LAMMPS' values).
@@ -29,6 +31,7 @@ struct input {
     int var;                    /* v_name: cid holds the variable's name */
     char cid[GR_NAMELEN];       /* per-atom compute ID */
     int index;                  /* c_ID[N]: column N of a per-atom array; 0: vector */
+    int local;                  /* c_ID of a local compute (rows, not atoms) */
 };
 
 struct reduce {
@@ -125,8 +128,14 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
                 gr_error(g, "compute reduce: unknown input '%.64s'", s);
             if (strcmp(in->cid, c->id) == 0)
                 gr_error(g, "compute reduce: compute %s cannot reduce itself", c->id);
-            /* as LAMMPS: the compute must exist (and be per-atom) now; init checks again */
-            compute_peratom_check(g, in->cid, in->index, "compute reduce");
+            /* as LAMMPS: the compute must exist (per-atom or local) now; init
+             * checks again */
+            struct compute *ic = compute_get(g, in->cid, "compute reduce");
+            in->local = ic->local_flag && !ic->peratom_flag;
+            if (in->local)
+                compute_local_check(g, in->cid, in->index, "compute reduce");
+            else
+                compute_peratom_check(g, in->cid, in->index, "compute reduce");
         }
         r->n++;
     }
@@ -150,11 +159,26 @@ static void reduce_init(struct gravel *g, struct compute *c)
             var_check_atom(g, r->in[k].cid, "compute reduce");
             continue;
         }
-        compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
+        if (r->in[k].local)
+            compute_local_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
+        else
+            compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
     }
 }
 
-/* Reduce one input over the group. */
+static double combine(enum mode mode, double acc, double v)
+{
+    switch (mode) {
+    case SUM: case AVE: return acc + v;
+    case SUMSQ: case AVESQ: return acc + v * v;
+    case SUMABS: case AVEABS: return acc + fabs(v);
+    case MIN: return v < acc ? v : acc;
+    case MAX: return v > acc ? v : acc;
+    }
+    return acc;
+}
+
+/* Reduce one input over the group (a local input: over its rows). */
 static double reduce_one(struct gravel *g, struct compute *c, const struct input *in)
 {
     const struct atoms *a = &g->atoms;
@@ -173,17 +197,30 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
     } else if (in->var) {
         vals = var_atom_values(g, in->cid);
         src = vals;
-    } else {
+    } else if (!in->local) {
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
         src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");
+    }
+    double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
+    bigint count = 0;
+    if (in->local) { /* every row, in the compute's order (LAMMPS: no group or region) */
+        struct compute *lc = compute_get(g, in->cid, "compute reduce");
+        const double *rows;
+        int nrow = compute_local(g, lc, &rows);
+        int cols = lc->size_local_cols > 0 ? lc->size_local_cols : 1;
+        const double *col = rows + (in->index > 0 ? in->index - 1 : 0);
+        for (int k = 0; k < nrow; k++)
+            acc = combine(r->mode, acc, col[(size_t)k * cols]);
+        count = nrow;
+        if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)
+            acc /= (double)count;
+        return acc;
     }
     struct region *reg = NULL;
     if (r->region[0]) {
         reg = region_get(g, r->region);
         region_prematch(g, reg);
     }
-    double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
-    bigint count = 0;
     const int *order = atoms_tag_order(g);
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
@@ -193,13 +230,7 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
             continue;
         double v = scale * src[(size_t)stride * i + comp];
         count++;
-        switch (r->mode) {
-        case SUM: case AVE: acc += v; break;
-        case SUMSQ: case AVESQ: acc += v * v; break;
-        case SUMABS: case AVEABS: acc += fabs(v); break;
-        case MIN: if (v < acc) acc = v; break;
-        case MAX: if (v > acc) acc = v; break;
-        }
+        acc = combine(r->mode, acc, v);
     }
     free(vals);
     if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)

@@ -6,7 +6,8 @@ wall/gran floor, gran/hooke/history, periodic x y) runs 1500 steps in lmp
 and in gravel. Compared:
   thermo (every 100 steps): compute com, gyration (scalar and tensor), msd
     (plain, and com yes average yes on a group), vacf, reduce sum of
-    contact/atom, reduce/region (sum vz fz, ave of a coord/atom column)
+    contact/atom, reduce/region (sum vz fz, ave of a coord/atom column),
+    reduce over local values (max and mean pair distance)
     -> to 1e-9 of each column's largest magnitude;
   dump custom (every 500): contact/atom, coord/atom (one range, three
     ranges, group2), cluster/atom -> equal;
@@ -82,8 +83,10 @@ compute pl all pair/local dist eng force fx fy fz
 compute pr all property/local patom1 patom2 ptype1 ptype2
 compute plr all pair/local dist force cutoff radius
 compute prr all property/local patom1 patom2 cutoff radius
+compute dmax all reduce max c_pl[1]
+compute tsum all reduce ave c_pl[1] c_plr[1]
 thermo_style custom step c_com[1] c_com[2] c_com[3] c_cup[3] c_gyr c_gyr[1] c_gyr[3] c_gyr[4] &
-  c_gyr[6] c_msd[1] c_msd[4] c_msd2[3] c_msd2[4] c_vacf[1] c_vacf[4] c_sumc c_rr[1] c_rr[2] c_rr2
+  c_gyr[6] c_msd[1] c_msd[4] c_msd2[3] c_msd2[4] c_vacf[1] c_vacf[4] c_sumc c_rr[1] c_rr[2] c_rr2 c_dmax c_tsum[1] c_tsum[2]
 thermo_modify format float %.17g
 thermo 100
 dump d all custom 500 atoms.dump id c_ca c_co c_co2[1] c_co2[2] c_co2[3] c_co3 c_cl
