@@ -61,6 +61,7 @@ static void compute_delete(struct compute *c)
     free(c->vector);
     free(c->peratom);
     free(c->local);
+    free(c->array);
     free(c);
 }
 
@@ -252,7 +253,7 @@ const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index
     return index > 0 ? p + (index - 1) : p;
 }
 
-int compute_parse_ref(const char *ref, char *id, int *index)
+int compute_parse_ref2(const char *ref, char *id, int *index, int *col)
 {
     if (strncmp(ref, "c_", 2) != 0)
         return 0;
@@ -263,24 +264,63 @@ int compute_parse_ref(const char *ref, char *id, int *index)
         return 0;
     memcpy(id, s, n);
     id[n] = '\0';
-    *index = 0;
-    if (br) {
+    *index = *col = 0;
+    for (int k = 0; br && k < 2; k++) {
         char *end;
         long v = strtol(br + 1, &end, 10);
-        if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
+        if (end == br + 1 || *end != ']' || v < 1 || v > 1000000)
             return 0;
-        *index = (int)v;
+        if (k == 0)
+            *index = (int)v;
+        else
+            *col = (int)v;
+        br = end[1] == '[' ? end + 1 : NULL;
+        if (!br && end[1] != '\0')
+            return 0;
+        if (br && k == 1)
+            return 0;
     }
     return 1;
+}
+
+int compute_parse_ref(const char *ref, char *id, int *index)
+{
+    int col;
+    return compute_parse_ref2(ref, id, index, &col) && col == 0;
+}
+
+double *compute_array_rows(struct gravel *g, struct compute *c, int rows)
+{
+    int cols = c->size_array_cols > 0 ? c->size_array_cols : 1;
+    if (rows > c->array_cap || !c->array) {
+        int cap = rows > 16 ? rows : 16;
+        double *p = realloc(c->array, (size_t)cap * cols * sizeof(double));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        c->array = p;
+        c->array_cap = cap;
+    }
+    c->size_array_rows = rows;
+    return c->array;
 }
 
 void compute_ref_check(struct gravel *g, const char *ref, const char *who)
 {
     char id[GR_NAMELEN];
-    int index;
-    if (!compute_parse_ref(ref, id, &index))
-        gr_error(g, "%s: invalid compute reference '%.64s' (use c_ID or c_ID[N])", who, ref);
+    int index, col;
+    if (!compute_parse_ref2(ref, id, &index, &col))
+        gr_error(g, "%s: invalid compute reference '%.64s' (use c_ID, c_ID[N] or c_ID[I][J])",
+                 who, ref);
     struct compute *c = compute_get(g, id, who);
+    if (col > 0) {
+        if (!c->array_flag)
+            gr_error(g, "%s: compute %s (%s) does not produce a global array", who, id,
+                     c->style->name);
+        if (col > c->size_array_cols)
+            gr_error(g, "%s: %s is out of range: compute %s has %d columns", who, ref, id,
+                     c->size_array_cols);
+        return;
+    }
     if (index == 0 && !c->scalar_flag)
         gr_error(g, "%s: compute %s (%s) does not produce a global scalar%s", who, id,
                  c->style->name, c->vector_flag ? "; use c_ID[N] for its vector" : "");
@@ -295,13 +335,20 @@ void compute_ref_check(struct gravel *g, const char *ref, const char *who)
 double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who)
 {
     char id[GR_NAMELEN];
-    int index;
+    int index, col;
     compute_ref_check(g, ref, who);
-    compute_parse_ref(ref, id, &index);
+    compute_parse_ref2(ref, id, &index, &col);
     struct compute *c = compute_find(g, id);
     double v;
     int ext;
-    if (index == 0) {
+    if (col > 0) {
+        c->style->array(g, c);
+        if (index > c->size_array_rows)
+            gr_error(g, "%s: %s is out of range: compute %s has %d rows now", who, ref, id,
+                     c->size_array_rows);
+        v = c->array[(size_t)(index - 1) * c->size_array_cols + (col - 1)];
+        ext = c->extarray;
+    } else if (index == 0) {
         v = compute_scalar(g, c);
         ext = c->extscalar;
     } else {

@@ -35,6 +35,8 @@ struct compute_style {
     /* local_flag: fill rows through compute_local_rows() (which sets
      * size_local_rows) */
     void (*local)(struct gravel *g, struct compute *c);
+    /* array_flag: fill c->array through compute_array_rows() */
+    void (*array)(struct gravel *g, struct compute *c);
     void (*destroy)(struct compute *c);                        /* free c->data */
 };
 
@@ -50,6 +52,12 @@ struct compute {
     double *vector;             /* [size_vector], owned */
     double *peratom;            /* [atoms.n] or [atoms.n][cols] after compute_peratom, owned */
     int peratom_cap;
+    int array_flag;             /* a global array (com/chunk): c_ID[I][J] */
+    int size_array_cols;
+    int size_array_rows;        /* rows of the last evaluation */
+    double *array;              /* [rows][cols], owned */
+    int array_cap;
+    int extarray;
     int local_flag;
     int size_local_cols;        /* 0: local vector; else columns of a local array */
     int size_local_rows;        /* rows of the last evaluation */
@@ -96,13 +104,20 @@ void compute_peratom_check(struct gravel *g, const char *id, int index, const ch
 /* Parse "c_ID" or "c_ID[N]": copies ID into id (GR_NAMELEN), sets *index to
  * N (1-based) or 0. Returns 0 when `ref` does not have that form. */
 int compute_parse_ref(const char *ref, char *id, int *index);
+/* The same, also accepting "c_ID[I][J]" (an element of a global array):
+ * *col is J, 0 without a second index. */
+int compute_parse_ref2(const char *ref, char *id, int *index, int *col);
+/* Room for `rows` rows of c->array (size_array_rows = rows); returns it. */
+double *compute_array_rows(struct gravel *g, struct compute *c, int rows);
 
-/* Value of reference `ref` ("c_ID" scalar or "c_ID[N]" vector element),
+/* Value of reference `ref` ("c_ID" scalar, "c_ID[N]" vector element or
+ * "c_ID[I][J]" array element: out of range is an error, as LAMMPS),
  * normalized by atom count when `norm` and the value is extensive. Errors
  * name `who` (e.g. "thermo_style"). */
 double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who);
 /* Check that `ref` names an existing compute with the right kind of output
- * (scalar for c_ID, vector with N in range for c_ID[N]). */
+ * (scalar for c_ID, vector with N in range for c_ID[N], array with J in
+ * range for c_ID[I][J]). */
 void compute_ref_check(struct gravel *g, const char *ref, const char *who);
 
 /* Run setup: let every compute resolve its references. */

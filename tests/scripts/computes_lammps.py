@@ -7,7 +7,8 @@ and in gravel. Compared:
   thermo (every 100 steps): compute com, gyration (scalar and tensor), msd
     (plain, and com yes average yes on a group), vacf, reduce sum of
     contact/atom, reduce/region (sum vz fz, ave of a coord/atom column),
-    reduce over local values (max and mean pair distance)
+    reduce over local values (max and mean pair distance), com/chunk
+    elements (thermo c_ID[I][J] and an equal-style variable)
     -> to 1e-9 of each column's largest magnitude;
   dump custom (every 500): contact/atom, coord/atom (one range, three
     ranges, group2), cluster/atom -> equal;
@@ -83,10 +84,14 @@ compute pl all pair/local dist eng force fx fy fz
 compute pr all property/local patom1 patom2 ptype1 ptype2
 compute plr all pair/local dist force cutoff radius
 compute prr all property/local patom1 patom2 cutoff radius
+compute chk all chunk/atom bin/1d z lower 2.0 units box
+compute cc up com/chunk chk
+variable ccz equal c_cc[2][3]+0.0
 compute dmax all reduce max c_pl[1]
 compute tsum all reduce ave c_pl[1] c_plr[1]
 thermo_style custom step c_com[1] c_com[2] c_com[3] c_cup[3] c_gyr c_gyr[1] c_gyr[3] c_gyr[4] &
-  c_gyr[6] c_msd[1] c_msd[4] c_msd2[3] c_msd2[4] c_vacf[1] c_vacf[4] c_sumc c_rr[1] c_rr[2] c_rr2 c_dmax c_tsum[1] c_tsum[2]
+  c_gyr[6] c_msd[1] c_msd[4] c_msd2[3] c_msd2[4] c_vacf[1] c_vacf[4] c_sumc c_rr[1] c_rr[2] c_rr2 c_dmax c_tsum[1] c_tsum[2] &
+  c_cc[1][3] c_cc[2][1] c_cc[3][3] v_ccz
 thermo_modify format float %.17g
 thermo 100
 dump d all custom 500 atoms.dump id c_ca c_co c_co2[1] c_co2[2] c_co2[3] c_co3 c_cl
