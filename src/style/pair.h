@@ -43,6 +43,7 @@ struct pair;
  * rsq = |del|^2, radii, velocities, masses; frozen_i/j: in fix freeze's
  * group (meff is then the other particle's mass, as LAMMPS). */
 struct pair_single {
+    int itype, jtype;
     double del[3], rsq;
     double radi, radj;
     double vi[3], vj[3];

@@ -7,8 +7,8 @@
  *   fx fy fz        del fpair: the normal force on i (del = x_i - x_j)
  * where fpair is the pair style's Pair::single (pair_caps.single), evaluated
  * with the current positions and velocities at output time, as LAMMPS does:
- * for gran/hooke, gran/hooke/history and gran/hertz/history the normal
- * spring and damping force (the tangential force is not in fx fy fz, as in
+ * for gran/hooke, gran/hooke/history, gran/hertz/history and granular the
+ * normal contact force (the tangential force is not in fx fy fz, as in
  * LAMMPS), 0 for pairs not in contact. Other pair styles give dist only.
  * The tangential pN values (LAMMPS's svector) are not supported.
  *
@@ -92,7 +92,8 @@ static const struct pair *pl_pair(struct gravel *g, struct compute *c, struct pa
     if (pl->needs_single && !caps->single)
         gr_error(g, "compute pair/local %s: eng, force, fx, fy, fz need the pair style's "
                     "single-pair evaluation, which pair style %s does not have here (gran/hooke, "
-                    "gran/hooke/history and gran/hertz/history do); dist works with any",
+                    "gran/hooke/history, gran/hertz/history and granular do); dist works with "
+                    "any",
                  c->id, p->style->name);
     return p;
 }
@@ -119,6 +120,8 @@ static void pl_local(struct gravel *g, struct compute *c)
         double eng = 0.0, fpair = 0.0;
         if (pl->needs_single) {
             struct pair_single s;
+            s.itype = a->type[i];
+            s.jtype = a->type[j];
             memcpy(s.del, p[k].del, sizeof s.del);
             s.rsq = p[k].rsq;
             s.radi = a->radius[i];

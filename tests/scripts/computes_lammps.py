@@ -24,10 +24,14 @@ and in gravel. Compared:
     must equal gravel's or that half-step emulation with either partner as
     the ghost (1e-8), the dist and
     property columns as inside.
+Pair granular's single(): two decks of overlapping spheres (hertz/material
+tsuji, dmt viscoelastic, mass_velocity; hooke velocity limit_damping, jkr,
+hertz) at step 0 (run 0), where both engines hold the same state: every
+pair/local row to 1e-12.
 Then gravel alone: contact/atom with group2 recomputed from the dumped
 positions, the dump local layout (header words, trailing spaces), and error
 messages for fragment/atom, property/local natom1, pair/local p1, pair/local
-force with pair granular, a dump local of a per-atom compute."""
+force with pair colloid, a dump local of a per-atom compute."""
 import math
 import os
 import shutil
@@ -294,6 +298,53 @@ def compare(lt, gt):
     report(bad == 0 and nz > 0, "computes_contact_group2", f"{bad} differ, {nz} atoms touch group2")
 
 
+# pair granular's single() (normal force) at step 0 of an overlapped lattice:
+# the same positions and velocities in both, so every row must agree exactly
+GRANULAR_COEFFS = {
+    "material_dmt": """pair_coeff 1 1 hertz/material 2e4 0.5 0.3 tangential linear_history 1000 1.0 0.5 damping tsuji
+pair_coeff 2 2 dmt 3e4 0.4 0.3 0.5 tangential linear_history 1000 1.0 0.5 damping viscoelastic
+pair_coeff 1 2 hertz/material 2e4 0.3 0.3 tangential linear_history 1000 1.0 0.5 damping mass_velocity""",
+    "hooke_jkr": """pair_coeff 1 1 hooke 2000 20 tangential linear_nohistory 1.0 0.5 damping velocity limit_damping
+pair_coeff 2 2 jkr 3e4 0.4 0.3 2.0 tangential mindlin NULL 1.0 0.5 damping viscoelastic
+pair_coeff 1 2 hertz 3000 30 tangential linear_history 1000 1.0 0.5 damping viscoelastic""",
+}
+
+
+def granular_single(lmp):
+    base = DECK.split("region mid")[0]
+    base = base.replace("set type 1 diameter 0.98", "set type 1 diameter 1.02").replace(
+        "set type 2 diameter 0.9", "set type 2 diameter 1.04").replace(
+        "0 6 0 6 0.9 3.1", "0 6 0 6 0.9 4.1").replace("0 6 0 6 3.9 6.1", "0 6 0 6 4.9 6.1")
+    base = "\n".join(l for l in base.split("\n") if "#GRAVEL" not in l and "wall/gran" not in l)
+    for name, coeffs in GRANULAR_COEFFS.items():
+        deck = base.replace("pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1\n"
+                            "pair_coeff * *", "pair_style granular\n" + coeffs)
+        deck += ("compute pl all pair/local dist eng force fx fy fz\n"
+                 "compute pr all property/local patom1 patom2 ptype1 ptype2\n"
+                 "dump dl all local 1 pairs.local c_pr[1] c_pr[2] c_pr[3] c_pr[4] c_pl[1] c_pl[2] "
+                 "c_pl[3] c_pl[4] c_pl[5] c_pl[6]\ndump_modify dl format float %.17g\nrun 0\n")
+        with tempfile.TemporaryDirectory() as lt, tempfile.TemporaryDirectory() as gt:
+            rl, rg = run([lmp], deck, lt), run([GRAVEL], deck, gt)
+            if rl.returncode or rg.returncode:
+                report(False, "computes_granular_single_" + name,
+                       (rl.stdout + rl.stderr)[-300:] + (rg.stdout + rg.stderr)[-300:])
+                continue
+            fl = local_frames(os.path.join(lt, "pairs.local"))[0]
+            fg = local_frames(os.path.join(gt, "pairs.local"))[0]
+        flip = ("c_pl[4]", "c_pl[5]", "c_pl[6]")
+        pl = pairs_by_key(*fl, "c_pr[1]", "c_pr[2]", flip)
+        pg = pairs_by_key(*fg, "c_pr[1]", "c_pr[2]", flip)
+        worst = 0.0
+        for key in set(pl) & set(pg):
+            scale = max(abs(pl[key]["c_pl[3]"]), 1e-3)
+            for col in ("c_pl[1]", "c_pl[3]", "c_pl[4]", "c_pl[5]", "c_pl[6]"):
+                worst = max(worst, abs(pl[key][col] - pg[key][col]) / scale)
+        types = {(int(v["c_pr[3]"]), int(v["c_pr[4]"])) for v in pl.values()}
+        report(set(pl) == set(pg) and len(pl) > 300 and len(types) == 3 and worst <= 1e-12,
+               "computes_granular_single_" + name,
+               f"{len(pl)} pairs of type pairs {sorted(types)}, worst {worst:.3g}")
+
+
 ERRORS = [
     ("compute f all fragment/atom", "needs bonds"),
     ("compute p all property/local natom1 natom2", "natom1"),
@@ -318,7 +369,14 @@ def errors(tmp):
         "pair_coeff * *", "pair_coeff * * hooke 2000.0 50.0 tangential linear_history 571 1.0 0.5")
     r = run([GRAVEL], granular + "compute p all pair/local dist force\n", tmp)
     out = r.stdout + r.stderr
-    report(r.returncode != 0 and "single-pair evaluation" in out, "computes_error granular_force",
+    report(r.returncode == 0, "computes_granular_force_accepted",
+           out.strip()[-300:] if r.returncode else "")
+    colloid = base.replace("pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1",
+                           "pair_style colloid 10.0").replace("pair_coeff * *",
+                                                              "pair_coeff * * 144 1 0 0")
+    r = run([GRAVEL], colloid + "compute p all pair/local dist force\n", tmp)
+    out = r.stdout + r.stderr
+    report(r.returncode != 0 and "single-pair evaluation" in out, "computes_error colloid_force",
            out.strip()[-300:] if r.returncode == 0 else "")
     r = run([GRAVEL], granular + "compute p all pair/local dist\n"
             "write_dump all local o.local c_p\n", tmp)
@@ -346,6 +404,7 @@ def main():
             return 1
         if lmp:
             compare(lt, gt)
+            granular_single(lmp)
         errors(gt)
     return 1 if failures else 0
 
