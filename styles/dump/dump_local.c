@@ -35,6 +35,8 @@ struct local {
     struct lcol *col;
     char *format_line, *format_int, *format_float;
     char label[GR_NAMELEN];
+    const double **data;        /* [n] scratch of one snapshot: column i's first value */
+    int *stride;                /* [n] its row stride */
 };
 
 static void local_destroy(struct dump *d)
@@ -45,6 +47,8 @@ static void local_destroy(struct dump *d)
     for (int i = 0; i < l->n; i++)
         free(l->col[i].user_fmt);
     free(l->col);
+    free(l->data);
+    free(l->stride);
     free(l->format_line);
     free(l->format_int);
     free(l->format_float);
@@ -61,6 +65,8 @@ static void local_create(struct gravel *g, struct dump *d, int argc, char **argv
     d->data = l;
     snprintf(l->label, sizeof l->label, "ENTRIES");
     l->col = gr_calloc(g, (size_t)argc, sizeof *l->col);
+    l->data = gr_calloc(g, (size_t)argc, sizeof *l->data);
+    l->stride = gr_calloc(g, (size_t)argc, sizeof *l->stride);
     l->n = argc;
     int ncompute = 0;
     for (int i = 0; i < argc; i++) {
@@ -194,8 +200,8 @@ static void local_write(struct gravel *g, struct dump *d, FILE *fp, const int *i
     const struct domain *dom = &g->dom;
     local_init(g, d);
     /* each compute once per snapshot: rows of compute k in data[k] */
-    const double **data = gr_calloc(g, (size_t)l->n, sizeof *data);
-    int *stride = gr_calloc(g, (size_t)l->n, sizeof *stride);
+    const double **data = l->data;
+    int *stride = l->stride;
     int rows = -1;
     for (int i = 0; i < l->n; i++) {
         struct lcol *c = &l->col[i];
@@ -215,12 +221,9 @@ static void local_write(struct gravel *g, struct dump *d, FILE *fp, const int *i
         } else {
             r = compute_local(g, cp, &base);
         }
-        if (rows >= 0 && r != rows) {
-            free(data);
-            free(stride);
+        if (rows >= 0 && r != rows)
             gr_error(g, "dump %s: local computes give different numbers of rows (%d and %d "
                         "for %s)", d->id, rows, r, c->name);
-        }
         rows = r;
         data[i] = base + (c->index > 0 ? c->index - 1 : 0);
         stride[i] = cols;
@@ -254,8 +257,6 @@ static void local_write(struct gravel *g, struct dump *d, FILE *fp, const int *i
         }
         fputc('\n', fp);
     }
-    free(data);
-    free(stride);
 }
 
 const struct dump_style dump_style_local = {
