@@ -13,6 +13,7 @@
 
 #include "error.h"
 #include "fix.h"
+#include "neighbor.h"
 #include "pair.h"
 
 static double minimg(double d, double L)
@@ -237,4 +238,31 @@ int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct hos
     }
     *out = p;
     return m;
+}
+
+_Static_assert(HOST_PAIRS_HIST_MAX == GR_HIST_MAX, "history width bound");
+
+int host_pairs_history(struct gravel *g, const struct host_pair *p, int np, double *hist)
+{
+    struct nbr_state st;
+    if (!nbr_export(g, &st))
+        return 0;
+    int hw = st.history;
+    if (hw <= 0 || hw > GR_HIST_MAX || st.n != g->atoms.n) {
+        nbr_state_free(&st);
+        return 0;
+    }
+    for (int k = 0; k < np; k++) {
+        double *h = hist + (size_t)k * hw;
+        memset(h, 0, (size_t)hw * sizeof *h);
+        int i = p[k].i;
+        for (int q = 0; q < st.ncount[i]; q++)
+            if (st.nlist[(size_t)i * st.maxn + q] == p[k].j) {
+                memcpy(h, st.shear + (size_t)hw * ((size_t)i * st.maxn + q),
+                       (size_t)hw * sizeof *h);
+                break;
+            }
+    }
+    nbr_state_free(&st);
+    return hw;
 }

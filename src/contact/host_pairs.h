@@ -34,4 +34,14 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
 int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct host_pair **out,
                      const char *who);
 
+/* The engine's contact history of each pair (LAMMPS's fix neigh/history
+ * values that Pair::single reads): hist[k * width + d] for pair k, seen from
+ * its atom i, from the engine's current neighbor list (host order = device
+ * order after a run's host sync). Returns the width (REALs per contact), 0
+ * when there is none (no history style, no list built yet, atoms changed
+ * since): hist is then untouched. Pairs not in the list get zeros. hist
+ * needs np * HOST_PAIRS_HIST_MAX doubles. */
+#define HOST_PAIRS_HIST_MAX 16 /* = the engine's GR_HIST_MAX (checked in host_pairs.c) */
+int host_pairs_history(struct gravel *g, const struct host_pair *p, int np, double *hist);
+
 #endif

@@ -49,6 +49,10 @@ struct pair_single {
     double vi[3], vj[3];
     double mi, mj;
     int frozen_i, frozen_j;
+    double omi[3], omj[3];  /* angular velocities (the extra values only) */
+    const double *hist;     /* the contact's history seen from i, NULL: none yet */
+    double *sv;             /* NULL, or room for single_extra extra values (LAMMPS's
+                             * svector: compute pair/local p1 .. pN) */
 };
 
 /* ---- the capabilities record: what a style answers at run set-up --------
@@ -132,6 +136,7 @@ struct pair_caps {
      * at force time); 0 beyond contact. NULL: the style has none. */
     const struct pair *single_of;
     double (*single)(const struct pair *p, const struct pair_single *s, double *fforce);
+    int single_extra;           /* extra values single() fills in s->sv (0: none) */
     /* why this law's forces turn non-finite, named by a run that stops on a
      * non-finite atom (pair colloid: its overlap stop); NULL: the generic
      * diagnosis (diagnose.h) */

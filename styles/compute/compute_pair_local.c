@@ -10,7 +10,11 @@
  * for gran/hooke, gran/hooke/history, gran/hertz/history and granular the
  * normal contact force (the tangential force is not in fx fy fz, as in
  * LAMMPS), 0 for pairs not in contact. Other pair styles give dist only.
- * The tangential pN values (LAMMPS's svector) are not supported.
+ * pN: the style's N-th extra single() value (LAMMPS's svector), for
+ * gran/hooke/history and gran/hertz/history: p1..p3 the tangential force
+ * on i from the contact's stored history (the engine's, read back), p4 its
+ * magnitude, p5..p7 the normal and p8..p10 the tangential relative
+ * velocity.
  *
  * Rows: pairs with r < the type-pair cut-off (cutoff type, LAMMPS's
  * default) or r < r_i + r_j (cutoff radius), host_pairs_local; ordered by
@@ -26,12 +30,12 @@
 #include "host_pairs.h"
 #include "pair.h"
 
-enum { V_DIST, V_ENG, V_FORCE, V_FX, V_FY, V_FZ };
+enum { V_DIST, V_ENG, V_FORCE, V_FX, V_FY, V_FZ, V_P };
 static const char *const names[] = {"dist", "eng", "force", "fx", "fy", "fz"};
 #define PL_MAXVAL 32
 
 struct pair_local {
-    int n, v[PL_MAXVAL];
+    int n, v[PL_MAXVAL];        /* V_*, or V_P + m for pN (m = N - 1) */
     int radius;             /* cutoff radius */
     int needs_single;
 };
@@ -60,9 +64,13 @@ static void pl_create(struct gravel *g, struct compute *c, int argc, char **argv
         for (int q = 0; q < (int)(sizeof names / sizeof names[0]); q++)
             if (!strcmp(argv[i], names[q]))
                 k = q;
-        if (k < 0 && argv[i][0] == 'p' && argv[i][1] >= '0' && argv[i][1] <= '9')
-            gr_error(g, "compute pair/local: value '%.64s' (the pair style's extra single() "
-                        "terms) is not supported; use dist eng force fx fy fz", argv[i]);
+        if (k < 0 && argv[i][0] == 'p' && argv[i][1] >= '1' && argv[i][1] <= '9') {
+            char *end;
+            long m = strtol(argv[i] + 1, &end, 10);
+            if (*end || m < 1 || m > 64)
+                gr_error(g, "compute pair/local: invalid value '%.64s' (pN: N from 1)", argv[i]);
+            k = V_P + (int)m - 1;
+        }
         if (k < 0)
             gr_error(g, "compute pair/local: unknown value '%.64s' (dist eng force fx fy fz, "
                         "keyword cutoff)", argv[i]);
@@ -89,6 +97,15 @@ static const struct pair *pl_pair(struct gravel *g, struct compute *c, struct pa
         gr_error(g, "compute pair/local %s needs a pair style", c->id);
     pair_describe(p, caps);
     struct pair_local *pl = c->data;
+    int maxp = 0;
+    for (int q = 0; q < pl->n; q++)
+        if (pl->v[q] >= V_P && pl->v[q] - V_P + 1 > maxp)
+            maxp = pl->v[q] - V_P + 1;
+    if (maxp > 0 && caps->single && maxp > caps->single_extra)
+        gr_error(g, "compute pair/local %s: p%d is out of range: pair style %s has %d extra "
+                    "values%s", c->id, maxp, p->style->name, caps->single_extra,
+                 caps->single_extra ? "" : " here (gran/hooke/history and gran/hertz/history "
+                                          "have 10)");
     if (pl->needs_single && !caps->single)
         gr_error(g, "compute pair/local %s: eng, force, fx, fy, fz need the pair style's "
                     "single-pair evaluation, which pair style %s does not have here (gran/hooke, "
@@ -114,6 +131,15 @@ static void pl_local(struct gravel *g, struct compute *c)
     struct host_pair *p;
     int np = host_pairs_local(g, c->groupbit, pl->radius, &p, "compute pair/local");
     int nc = pl->n > 1 ? pl->n : 1;
+    int wants_sv = 0;
+    for (int q = 0; q < pl->n; q++)
+        wants_sv |= pl->v[q] >= V_P;
+    double *hist = NULL, sv[64];
+    int hw = 0;
+    if (wants_sv && np > 0) {
+        hist = gr_malloc(g, (size_t)np * HOST_PAIRS_HIST_MAX * sizeof *hist);
+        hw = host_pairs_history(g, p, np, hist);
+    }
     double *out = compute_local_rows(g, c, np);
     for (int k = 0; k < np; k++) {
         int i = p[k].i, j = p[k].j;
@@ -132,6 +158,11 @@ static void pl_local(struct gravel *g, struct compute *c)
             s.mj = a->rmass[j];
             s.frozen_i = (a->mask[i] & frozen) != 0;
             s.frozen_j = (a->mask[j] & frozen) != 0;
+            memcpy(s.omi, a->omega + 3 * i, sizeof s.omi);
+            memcpy(s.omj, a->omega + 3 * j, sizeof s.omj);
+            s.hist = hw > 0 ? hist + (size_t)k * hw : NULL;
+            s.sv = wants_sv ? sv : NULL;
+            memset(sv, 0, sizeof sv);
             eng = caps.single(caps.single_of, &s, &fpair);
         }
         double r = sqrt(p[k].rsq);
@@ -144,11 +175,13 @@ static void pl_local(struct gravel *g, struct compute *c)
             case V_FX: v = p[k].del[0] * fpair; break;
             case V_FY: v = p[k].del[1] * fpair; break;
             case V_FZ: v = p[k].del[2] * fpair; break;
+            default: v = sv[pl->v[q] - V_P]; break;
             }
             out[(size_t)k * nc + q] = v;
         }
     }
     free(p);
+    free(hist);
 }
 
 const struct compute_style compute_style_pair_local = {

@@ -24,6 +24,9 @@ and in gravel. Compared:
     must equal gravel's or that half-step emulation with either partner as
     the ghost (1e-8), the dist and
     property columns as inside.
+Then p1..p10 of pair/local (gran/hooke/history, gran/hertz/history: the
+tangential force from the engine's contact history, vn, vt) over 1500 steps,
+the pairs inside the box, to 1e-8, contacts at the friction limit included.
 The styles' single(): decks of overlapping spheres (gran/hertz/history with
 limit_damping, gran/hooke, pair granular with hertz/material
 tsuji, dmt viscoelastic, mass_velocity; hooke velocity limit_damping, jkr,
@@ -31,7 +34,7 @@ hertz) at step 0 (run 0), where both engines hold the same state: every
 pair/local row to 1e-12.
 Then gravel alone: contact/atom with group2 recomputed from the dumped
 positions, the dump local layout (header words, trailing spaces), and error
-messages for fragment/atom, property/local natom1, pair/local p1, pair/local
+messages for fragment/atom, property/local natom1, pair/local p11, pair/local
 force with pair colloid, a dump local of a per-atom compute."""
 import math
 import os
@@ -353,10 +356,52 @@ def granular_single(lmp):
                f"worst {worst:.3g}")
 
 
+def svector(lmp):
+    """pair/local p1..p10 of gran/hooke/history and gran/hertz/history (the
+    tangential force from the engine's contact history, vn, vt) against lmp,
+    1500 steps, the pairs inside the box (see compare) to 1e-8."""
+    base = "\n".join(l for l in DECK.split("region mid")[0].split("\n") if "#GRAVEL" not in l)
+    base += ("compute pl all pair/local dist force p1 p2 p3 p4 p5 p6 p7 p8 p9 p10 cutoff radius\n"
+             "compute pr all property/local patom1 patom2 cutoff radius\n"
+             "dump dl all local 500 pairs.local c_pr[1] c_pr[2] " +
+             " ".join(f"c_pl[{k}]" for k in range(1, 13)) +
+             "\ndump_modify dl format float %.17g\n"
+             "dump dx all custom 500 x.dump id x y z\ndump_modify dx sort id format float %.17g\n"
+             "thermo 500\nrun 1500\n")
+    flip = tuple(f"c_pl[{k}]" for k in (3, 4, 5, 7, 8, 9, 10, 11, 12))
+    for law in ("hooke", "hertz"):
+        deck = base.replace("hooke/history", law + "/history")
+        with tempfile.TemporaryDirectory() as lt, tempfile.TemporaryDirectory() as gt:
+            rl, rg = run([lmp], deck, lt), run([GRAVEL], deck, gt)
+            if rl.returncode or rg.returncode:
+                report(False, "computes_pair_local_svector_" + law,
+                       (rl.stdout + rl.stderr)[-300:] + (rg.stdout + rg.stderr)[-300:])
+                continue
+            fl = local_frames(os.path.join(lt, "pairs.local"))
+            fg = local_frames(os.path.join(gt, "pairs.local"))
+            xs = atom_frames(os.path.join(gt, "x.dump"))
+        worst, n, slid, ok = 0.0, 0, 0, sorted(fl) == sorted(fg)
+        for st in fl:
+            pl = pairs_by_key(*fl[st], "c_pr[1]", "c_pr[2]", flip)
+            pg = pairs_by_key(*fg[st], "c_pr[1]", "c_pr[2]", flip)
+            ok &= set(pl) == set(pg)
+            for key in set(pl) & set(pg):
+                if crosses(xs[st], *key):
+                    continue
+                n += 1
+                a, b = pl[key], pg[key]
+                slid += abs(a["c_pl[6]"] - 0.5 * abs(a["c_pl[2]"])) < 1e-9 * abs(a["c_pl[2]"]) + 1e-300
+                for col in a:
+                    if col.startswith("c_pl"):
+                        worst = max(worst, abs(a[col] - b[col]) / max(1.0, abs(a[col])))
+        report(ok and n > 150 and slid > 10 and worst <= 1e-8, "computes_pair_local_svector_" + law,
+               f"{n} pairs inside, {slid} at the friction limit, worst {worst:.3g}")
+
+
 ERRORS = [
     ("compute f all fragment/atom", "needs bonds"),
     ("compute p all property/local natom1 natom2", "natom1"),
-    ("compute p all pair/local dist p1", "not supported"),
+    ("compute p all pair/local dist p11", "out of range"),
     ("compute c all coord/atom orientorder q 1", "orientorder"),
     ("compute k all ke/atom\ndump d all local 10 o.local c_k", "does not produce local values"),
     ("compute m all msd average maybe", "average"),
@@ -413,6 +458,7 @@ def main():
         if lmp:
             compare(lt, gt)
             granular_single(lmp)
+            svector(lmp)
         errors(gt)
     return 1 if failures else 0
 
