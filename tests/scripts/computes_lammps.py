@@ -406,6 +406,11 @@ ERRORS = [
     ("compute k all ke/atom\ndump d all local 10 o.local c_k", "does not produce local values"),
     ("compute m all msd average maybe", "average"),
     ("compute r all reduce/region nowhere sum vx", "nowhere"),
+    ("compute chk all chunk/atom bin/1d z lower 2.0 units box\ncompute cc all com/chunk chk\n"
+     "thermo_style custom step c_cc[1][4]", "out of range"),
+    ("compute chk all chunk/atom bin/1d z lower 2.0 units box\ncompute cc all com/chunk chk\n"
+     "thermo_style custom step c_cc[99][1]", "rows now"),
+    ("compute cc all com/chunk nochunk", "nochunk"),
 ]
 
 
@@ -415,7 +420,7 @@ def errors(tmp):
         r = run([GRAVEL], base + extra + "\nrun 0\n", tmp)
         out = r.stdout + r.stderr
         ok = r.returncode != 0 and want in out and "in.deck:" in out
-        report(ok, "computes_error " + extra.split()[3].split("\n")[0],
+        report(ok, "computes_error " + extra.split("\n")[-1][:48],
                "" if ok else out.strip()[-300:])
     granular = base.replace("pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1",
                             "pair_style granular").replace(
