@@ -347,9 +347,10 @@ static void check_keyword(struct gravel *g, const char *s)
         return;
     if (strncmp(s, "c_", 2) == 0) {
         char id[GR_NAMELEN];
-        int index;
-        if (!compute_parse_ref(s, id, &index))
-            gr_error(g, "invalid compute reference '%s' (use c_ID or c_ID[N], N >= 1)", s);
+        int index, col;
+        if (!compute_parse_ref2(s, id, &index, &col))
+            gr_error(g, "invalid compute reference '%s' (use c_ID, c_ID[N] or c_ID[I][J], N, I, "
+                        "J >= 1)", s);
         /* as LAMMPS: the compute must exist when thermo_style names it */
         if (!compute_find(g, id) && implicit_compute(g, s) < 0)
             gr_error(g, "could not find thermo custom compute ID '%s'", id);
@@ -836,8 +837,8 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     }
     if (strncmp(name, "c_", 2) == 0) {
         char id[GR_NAMELEN];
-        int index;
-        if (!compute_parse_ref(name, id, &index) || !compute_find(g, id))
+        int index, col;
+        if (!compute_parse_ref2(name, id, &index, &col) || !compute_find(g, id))
             return 0;
         run_sync_host(g);
         *out = compute_ref_value(g, name, norm_flag(g), "reference");

@@ -488,7 +488,7 @@ static double parse_primary(struct ep *e)
     }
     /* c_ID, c_ID[n], f_ID[n]: served by the output module */
     if ((name[0] == 'c' || name[0] == 'f') && name[1] == '_' && name[2]) {
-        if (*e->p == '[') {
+        for (int k = 0; k < 2 && *e->p == '['; k++) { /* c_ID[N], c_ID[I][J] */
             const char *close = strchr(e->p, ']');
             if (!close)
                 ep_fail(e, "missing ']'");

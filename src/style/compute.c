@@ -60,6 +60,8 @@ static void compute_delete(struct compute *c)
         free(c->data); /* plain state (e.g. a temperature's struct temp_state) */
     free(c->vector);
     free(c->peratom);
+    free(c->local);
+    free(c->array);
     free(c);
 }
 
@@ -185,6 +187,47 @@ const double *compute_peratom(struct gravel *g, struct compute *c)
     return c->peratom;
 }
 
+double *compute_local_rows(struct gravel *g, struct compute *c, int rows)
+{
+    int cols = c->size_local_cols > 0 ? c->size_local_cols : 1;
+    if (rows > c->local_cap || !c->local) {
+        int cap = rows > 16 ? rows : 16;
+        double *p = realloc(c->local, (size_t)cap * cols * sizeof(double));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        c->local = p;
+        c->local_cap = cap;
+    }
+    c->size_local_rows = rows;
+    return c->local;
+}
+
+int compute_local(struct gravel *g, struct compute *c, const double **data)
+{
+    if (!c->local_flag)
+        gr_error(g, "compute %s (%s) does not produce local values", c->id, c->style->name);
+    compute_local_rows(g, c, 0);
+    c->style->local(g, c);
+    *data = c->local;
+    return c->size_local_rows;
+}
+
+void compute_local_check(struct gravel *g, const char *id, int index, const char *who)
+{
+    struct compute *c = compute_get(g, id, who);
+    if (!c->local_flag)
+        gr_error(g, "%s: compute %s (%s) does not produce local values", who, c->id,
+                 c->style->name);
+    if (index == 0 && c->size_local_cols > 0)
+        gr_error(g, "%s: compute %s has %d local columns; use c_%s[N]", who, c->id,
+                 c->size_local_cols, c->id);
+    if (index > 0 && c->size_local_cols == 0)
+        gr_error(g, "%s: compute %s has one local value per row; use c_%s", who, c->id, c->id);
+    if (index > c->size_local_cols)
+        gr_error(g, "%s: c_%s[%d] is out of range: compute %s has %d local columns", who,
+                 c->id, index, c->id, c->size_local_cols);
+}
+
 void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who)
 {
     struct compute *c = compute_get(g, id, who);
@@ -210,7 +253,7 @@ const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index
     return index > 0 ? p + (index - 1) : p;
 }
 
-int compute_parse_ref(const char *ref, char *id, int *index)
+int compute_parse_ref2(const char *ref, char *id, int *index, int *col)
 {
     if (strncmp(ref, "c_", 2) != 0)
         return 0;
@@ -221,24 +264,63 @@ int compute_parse_ref(const char *ref, char *id, int *index)
         return 0;
     memcpy(id, s, n);
     id[n] = '\0';
-    *index = 0;
-    if (br) {
+    *index = *col = 0;
+    for (int k = 0; br && k < 2; k++) {
         char *end;
         long v = strtol(br + 1, &end, 10);
-        if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
+        if (end == br + 1 || *end != ']' || v < 1 || v > 1000000)
             return 0;
-        *index = (int)v;
+        if (k == 0)
+            *index = (int)v;
+        else
+            *col = (int)v;
+        br = end[1] == '[' ? end + 1 : NULL;
+        if (!br && end[1] != '\0')
+            return 0;
+        if (br && k == 1)
+            return 0;
     }
     return 1;
+}
+
+int compute_parse_ref(const char *ref, char *id, int *index)
+{
+    int col;
+    return compute_parse_ref2(ref, id, index, &col) && col == 0;
+}
+
+double *compute_array_rows(struct gravel *g, struct compute *c, int rows)
+{
+    int cols = c->size_array_cols > 0 ? c->size_array_cols : 1;
+    if (rows > c->array_cap || !c->array) {
+        int cap = rows > 16 ? rows : 16;
+        double *p = realloc(c->array, (size_t)cap * cols * sizeof(double));
+        if (!p)
+            gr_error(g, "out of memory for compute %s", c->id);
+        c->array = p;
+        c->array_cap = cap;
+    }
+    c->size_array_rows = rows;
+    return c->array;
 }
 
 void compute_ref_check(struct gravel *g, const char *ref, const char *who)
 {
     char id[GR_NAMELEN];
-    int index;
-    if (!compute_parse_ref(ref, id, &index))
-        gr_error(g, "%s: invalid compute reference '%.64s' (use c_ID or c_ID[N])", who, ref);
+    int index, col;
+    if (!compute_parse_ref2(ref, id, &index, &col))
+        gr_error(g, "%s: invalid compute reference '%.64s' (use c_ID, c_ID[N] or c_ID[I][J])",
+                 who, ref);
     struct compute *c = compute_get(g, id, who);
+    if (col > 0) {
+        if (!c->array_flag)
+            gr_error(g, "%s: compute %s (%s) does not produce a global array", who, id,
+                     c->style->name);
+        if (col > c->size_array_cols)
+            gr_error(g, "%s: %s is out of range: compute %s has %d columns", who, ref, id,
+                     c->size_array_cols);
+        return;
+    }
     if (index == 0 && !c->scalar_flag)
         gr_error(g, "%s: compute %s (%s) does not produce a global scalar%s", who, id,
                  c->style->name, c->vector_flag ? "; use c_ID[N] for its vector" : "");
@@ -253,13 +335,20 @@ void compute_ref_check(struct gravel *g, const char *ref, const char *who)
 double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who)
 {
     char id[GR_NAMELEN];
-    int index;
+    int index, col;
     compute_ref_check(g, ref, who);
-    compute_parse_ref(ref, id, &index);
+    compute_parse_ref2(ref, id, &index, &col);
     struct compute *c = compute_find(g, id);
     double v;
     int ext;
-    if (index == 0) {
+    if (col > 0) {
+        c->style->array(g, c);
+        if (index > c->size_array_rows)
+            gr_error(g, "%s: %s is out of range: compute %s has %d rows now", who, ref, id,
+                     c->size_array_rows);
+        v = c->array[(size_t)(index - 1) * c->size_array_cols + (col - 1)];
+        ext = c->extarray;
+    } else if (index == 0) {
         v = compute_scalar(g, c);
         ext = c->extscalar;
     } else {

@@ -1,8 +1,11 @@
 /* compute.h - computes: named diagnostics (`compute ID group style args`) that
  * thermo output, dumps and expressions read as c_ID / c_ID[N].
  *
- * A compute produces a global scalar, a global vector, or a per-atom vector
- * (one value per host atom, in host order), as its style declares. Computes
+ * A compute produces a global scalar, a global vector, a per-atom vector
+ * (one value per host atom, in host order) or array, or local values (a
+ * vector or an array of rows that are not atoms: pairs, contacts; LAMMPS's
+ * local computes, written by dump local and reduced by compute reduce), as
+ * its style declares. Computes
  * evaluate on the host arrays: callers inside a run call run_sync_host() first
  * (output does this before each thermo line). Values are recomputed on every
  * call; computes are O(N) passes over the host arrays.
@@ -29,6 +32,11 @@ struct compute_style {
     double (*scalar)(struct gravel *g, struct compute *c);     /* scalar_flag */
     void (*vector)(struct gravel *g, struct compute *c);       /* fill c->vector */
     void (*peratom)(struct gravel *g, struct compute *c);      /* fill c->peratom */
+    /* local_flag: fill rows through compute_local_rows() (which sets
+     * size_local_rows) */
+    void (*local)(struct gravel *g, struct compute *c);
+    /* array_flag: fill c->array through compute_array_rows() */
+    void (*array)(struct gravel *g, struct compute *c);
     void (*destroy)(struct compute *c);                        /* free c->data */
 };
 
@@ -44,6 +52,17 @@ struct compute {
     double *vector;             /* [size_vector], owned */
     double *peratom;            /* [atoms.n] or [atoms.n][cols] after compute_peratom, owned */
     int peratom_cap;
+    int array_flag;             /* a global array (com/chunk): c_ID[I][J] */
+    int size_array_cols;
+    int size_array_rows;        /* rows of the last evaluation */
+    double *array;              /* [rows][cols], owned */
+    int array_cap;
+    int extarray;
+    int local_flag;
+    int size_local_cols;        /* 0: local vector; else columns of a local array */
+    int size_local_rows;        /* rows of the last evaluation */
+    double *local;              /* [rows][max(cols, 1)], owned */
+    int local_cap;              /* rows allocated */
     void *data;                 /* style state */
     struct temp_state *temp;    /* temperature computes (temp, temp/sphere): their dof
                                  * and compute_modify settings (temperature.h); in data */
@@ -69,19 +88,36 @@ const double *compute_peratom(struct gravel *g, struct compute *c);
  * p[i * *stride]. Errors name `who`. */
 const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index, int *stride,
                                   const char *who);
+/* Evaluate the local values of c: returns the row count, *data the rows
+ * (row-major, max(size_local_cols, 1) per row), valid until the next
+ * evaluation. */
+int compute_local(struct gravel *g, struct compute *c, const double **data);
+/* For styles: room for `rows` rows in c->local (size_local_rows = rows);
+ * returns c->local. */
+double *compute_local_rows(struct gravel *g, struct compute *c, int rows);
+/* Check that compute `id` has local output matching `index` (0: its local
+ * vector; N: column N of its local array). */
+void compute_local_check(struct gravel *g, const char *id, int index, const char *who);
 /* Check at setup that compute `id` has per-atom output matching `index`. */
 void compute_peratom_check(struct gravel *g, const char *id, int index, const char *who);
 
 /* Parse "c_ID" or "c_ID[N]": copies ID into id (GR_NAMELEN), sets *index to
  * N (1-based) or 0. Returns 0 when `ref` does not have that form. */
 int compute_parse_ref(const char *ref, char *id, int *index);
+/* The same, also accepting "c_ID[I][J]" (an element of a global array):
+ * *col is J, 0 without a second index. */
+int compute_parse_ref2(const char *ref, char *id, int *index, int *col);
+/* Room for `rows` rows of c->array (size_array_rows = rows); returns it. */
+double *compute_array_rows(struct gravel *g, struct compute *c, int rows);
 
-/* Value of reference `ref` ("c_ID" scalar or "c_ID[N]" vector element),
+/* Value of reference `ref` ("c_ID" scalar, "c_ID[N]" vector element or
+ * "c_ID[I][J]" array element: out of range is an error, as LAMMPS),
  * normalized by atom count when `norm` and the value is extensive. Errors
  * name `who` (e.g. "thermo_style"). */
 double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who);
 /* Check that `ref` names an existing compute with the right kind of output
- * (scalar for c_ID, vector with N in range for c_ID[N]). */
+ * (scalar for c_ID, vector with N in range for c_ID[N], array with J in
+ * range for c_ID[I][J]). */
 void compute_ref_check(struct gravel *g, const char *ref, const char *who);
 
 /* Run setup: let every compute resolve its references. */

@@ -39,6 +39,22 @@
 
 struct pair;
 
+/* One pair's state for pair_caps.single: del = x_i - x_j (minimum image),
+ * rsq = |del|^2, radii, velocities, masses; frozen_i/j: in fix freeze's
+ * group (meff is then the other particle's mass, as LAMMPS). */
+struct pair_single {
+    int itype, jtype;
+    double del[3], rsq;
+    double radi, radj;
+    double vi[3], vj[3];
+    double mi, mj;
+    int frozen_i, frozen_j;
+    double omi[3], omj[3];  /* angular velocities (the extra values only) */
+    const double *hist;     /* the contact's history seen from i, NULL: none yet */
+    double *sv;             /* NULL, or room for single_extra extra values (LAMMPS's
+                             * svector: compute pair/local p1 .. pN) */
+};
+
 /* ---- the capabilities record: what a style answers at run set-up --------
  *
  * Every question the core asks a pair style is answered ONCE per run, in
@@ -113,6 +129,14 @@ struct pair_caps {
                                  * no friction or damping): the footer reports the drift */
     const struct pair *energy_of; /* elastic energy of a contact of overlap delta > 0 */
     double (*contact_energy)(const struct pair *p, double delta, double reff);
+    /* LAMMPS's Pair::single, for compute pair/local: the pair's energy
+     * (returned) and fforce, the normal force over the distance (LAMMPS's
+     * fpair: F_i = del fforce), of two particles at the state in `s`, with
+     * the velocities of the moment (LAMMPS evaluates it at output time, not
+     * at force time); 0 beyond contact. NULL: the style has none. */
+    const struct pair *single_of;
+    double (*single)(const struct pair *p, const struct pair_single *s, double *fforce);
+    int single_extra;           /* extra values single() fills in s->sv (0: none) */
     /* why this law's forces turn non-finite, named by a run that stops on a
      * non-finite atom (pair colloid: its overlap stop); NULL: the generic
      * diagnosis (diagnose.h) */

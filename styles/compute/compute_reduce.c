@@ -3,10 +3,16 @@
  * reduce. mode = sum | min | max | ave | sumsq | avesq | sumabs | aveabs.
  * Inputs: x y z vx vy vz fx fy fz radius diameter mass omegax omegay omegaz
  * tqx tqy tqz, c_ID / c_ID[N] (a per-atom compute's vector, or column N of
- * its array) or v_name (an atom-style variable). One input gives a global scalar,
+ * its array; or a local compute's, e.g. pair/local: then every row counts,
+ * whatever the group and region, as LAMMPS) or v_name (an atom-style
+ * variable). One input gives a global scalar,
  * several a global vector (one element per input). Sum modes are extensive.
  * An empty group gives 0 for sums and averages, 1e20 for min and -1e20 for
- * max (LAMMPS' values). */
+ * max (LAMMPS' values).
+ *
+ * `compute ID group reduce/region region-ID mode input1 ...` (LAMMPS's
+ * compute reduce/region) is the same over the atoms of the group that are
+ * inside the region at evaluation time (region motion applied). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +21,7 @@
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
+#include "region.h"
 #include "variable.h"
 
 enum mode { SUM, SUMSQ, SUMABS, MIN, MAX, AVE, AVESQ, AVEABS };
@@ -24,9 +31,11 @@ struct input {
     int var;                    /* v_name: cid holds the variable's name */
     char cid[GR_NAMELEN];       /* per-atom compute ID */
     int index;                  /* c_ID[N]: column N of a per-atom array; 0: vector */
+    int local;                  /* c_ID of a local compute (rows, not atoms) */
 };
 
 struct reduce {
+    char region[GR_NAMELEN];    /* reduce/region: its region, "" for reduce */
     enum mode mode;
     int n;
     struct input *in;
@@ -61,12 +70,33 @@ static void reduce_destroy(struct compute *c)
     c->data = NULL;
 }
 
+static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, int argc,
+                         char **argv);
+
 static void reduce_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     if (argc < 2)
         gr_error(g, "compute reduce expects a mode and at least one input");
     struct reduce *r = gr_calloc(g, 1, sizeof *r);
     c->data = r;
+    reduce_parse(g, c, r, argc, argv);
+}
+
+static void reduce_region_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "compute reduce/region expects a region ID, a mode and at least one input");
+    struct reduce *r = gr_calloc(g, 1, sizeof *r);
+    c->data = r;
+    region_get(g, argv[0]); /* must exist now, as LAMMPS */
+    snprintf(r->region, sizeof r->region, "%s", argv[0]);
+    reduce_parse(g, c, r, argc - 1, argv + 1);
+}
+
+/* mode input1 input2 ...: the part reduce and reduce/region share */
+static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, int argc,
+                         char **argv)
+{
     int m = -1;
     for (int k = 0; k < (int)(sizeof modes / sizeof modes[0]); k++)
         if (strcmp(argv[0], modes[k].name) == 0)
@@ -98,8 +128,14 @@ static void reduce_create(struct gravel *g, struct compute *c, int argc, char **
                 gr_error(g, "compute reduce: unknown input '%.64s'", s);
             if (strcmp(in->cid, c->id) == 0)
                 gr_error(g, "compute reduce: compute %s cannot reduce itself", c->id);
-            /* as LAMMPS: the compute must exist (and be per-atom) now; init checks again */
-            compute_peratom_check(g, in->cid, in->index, "compute reduce");
+            /* as LAMMPS: the compute must exist (per-atom or local) now; init
+             * checks again */
+            struct compute *ic = compute_get(g, in->cid, "compute reduce");
+            in->local = ic->local_flag && !ic->peratom_flag;
+            if (in->local)
+                compute_local_check(g, in->cid, in->index, "compute reduce");
+            else
+                compute_peratom_check(g, in->cid, in->index, "compute reduce");
         }
         r->n++;
     }
@@ -123,11 +159,26 @@ static void reduce_init(struct gravel *g, struct compute *c)
             var_check_atom(g, r->in[k].cid, "compute reduce");
             continue;
         }
-        compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
+        if (r->in[k].local)
+            compute_local_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
+        else
+            compute_peratom_check(g, r->in[k].cid, r->in[k].index, "compute reduce");
     }
 }
 
-/* Reduce one input over the group. */
+static double combine(enum mode mode, double acc, double v)
+{
+    switch (mode) {
+    case SUM: case AVE: return acc + v;
+    case SUMSQ: case AVESQ: return acc + v * v;
+    case SUMABS: case AVEABS: return acc + fabs(v);
+    case MIN: return v < acc ? v : acc;
+    case MAX: return v > acc ? v : acc;
+    }
+    return acc;
+}
+
+/* Reduce one input over the group (a local input: over its rows). */
 static double reduce_one(struct gravel *g, struct compute *c, const struct input *in)
 {
     const struct atoms *a = &g->atoms;
@@ -146,26 +197,40 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
     } else if (in->var) {
         vals = var_atom_values(g, in->cid);
         src = vals;
-    } else {
+    } else if (!in->local) {
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
         src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");
     }
     double acc = r->mode == MIN ? 1.0e20 : r->mode == MAX ? -1.0e20 : 0.0;
     bigint count = 0;
+    if (in->local) { /* every row, in the compute's order (LAMMPS: no group or region) */
+        struct compute *lc = compute_get(g, in->cid, "compute reduce");
+        const double *rows;
+        int nrow = compute_local(g, lc, &rows);
+        int cols = lc->size_local_cols > 0 ? lc->size_local_cols : 1;
+        const double *col = rows + (in->index > 0 ? in->index - 1 : 0);
+        for (int k = 0; k < nrow; k++)
+            acc = combine(r->mode, acc, col[(size_t)k * cols]);
+        count = nrow;
+        if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)
+            acc /= (double)count;
+        return acc;
+    }
+    struct region *reg = NULL;
+    if (r->region[0]) {
+        reg = region_get(g, r->region);
+        region_prematch(g, reg);
+    }
     const int *order = atoms_tag_order(g);
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
+        if (reg && !region_match(reg, a->x + 3 * i))
+            continue;
         double v = scale * src[(size_t)stride * i + comp];
         count++;
-        switch (r->mode) {
-        case SUM: case AVE: acc += v; break;
-        case SUMSQ: case AVESQ: acc += v * v; break;
-        case SUMABS: case AVEABS: acc += fabs(v); break;
-        case MIN: if (v < acc) acc = v; break;
-        case MAX: if (v > acc) acc = v; break;
-        }
+        acc = combine(r->mode, acc, v);
     }
     free(vals);
     if ((r->mode == AVE || r->mode == AVESQ || r->mode == AVEABS) && count > 0)
@@ -190,6 +255,15 @@ static void reduce_vector(struct gravel *g, struct compute *c)
 const struct compute_style compute_style_reduce = {
     .name = "reduce",
     .create = reduce_create,
+    .init = reduce_init,
+    .scalar = reduce_scalar,
+    .vector = reduce_vector,
+    .destroy = reduce_destroy,
+};
+
+const struct compute_style compute_style_reduce_region = {
+    .name = "reduce/region",
+    .create = reduce_region_create,
     .init = reduce_init,
     .scalar = reduce_scalar,
     .vector = reduce_vector,

@@ -90,6 +90,74 @@ static double collision_time(const struct pair *p, double m, double r, double vn
     return t > 0 ? t : INFINITY;
 }
 
+/* LAMMPS 2021 PairGranHookeHistory::single / PairGranHertzHistory::single:
+ * fforce = kn (radsum - r) / r - meff gamman vn.del / r^2, times
+ * sqrt(delta R*) for hertz, clipped at 0 with limit_damping; no energy.
+ * With s->sv (history styles): LAMMPS's 10 extra values, the tangential
+ * force from the stored history, -(kt shear + meff gammat vtr) (hertz: times
+ * sqrt(delta R*)) capped at xmu |F_n| (fs1 fs2 fs3 fs), then vn and vt. */
+static double pair_gran_single(const struct pair *p, const struct pair_single *s,
+                               double *fforce)
+{
+    double radsum = s->radi + s->radj;
+    *fforce = 0.0;
+    if (s->rsq >= radsum * radsum)
+        return 0.0;
+    double r = sqrt(s->rsq), rinv = 1.0 / r, rsqinv = 1.0 / s->rsq;
+    double vnnr = (s->vi[0] - s->vj[0]) * s->del[0] + (s->vi[1] - s->vj[1]) * s->del[1] +
+                  (s->vi[2] - s->vj[2]) * s->del[2];
+    double meff = s->mi * s->mj / (s->mi + s->mj);
+    if (s->frozen_i)
+        meff = s->mj;
+    if (s->frozen_j)
+        meff = s->mi;
+    double damp = meff * p->coef[C_GAMMAN] * vnnr * rsqinv;
+    double ccel = p->coef[C_KN] * (radsum - r) * rinv - damp;
+    if (!strcmp(p->style->name, "gran/hertz/history"))
+        ccel *= sqrt((radsum - r) * s->radi * s->radj / radsum);
+    if (p->coef[C_LIMIT] != 0.0 && ccel < 0.0)
+        ccel = 0.0;
+    *fforce = ccel;
+    if (s->sv) {
+        const double *d = s->del;
+        double vr[3], vn[3], vt[3], wr[3], vtr[3], f[3];
+        double poly = 1.0;
+        if (!strcmp(p->style->name, "gran/hertz/history"))
+            poly = sqrt((radsum - r) * s->radi * s->radj / radsum);
+        for (int k = 0; k < 3; k++) {
+            vr[k] = s->vi[k] - s->vj[k];
+            vn[k] = d[k] * vnnr * rsqinv;
+            vt[k] = vr[k] - vn[k];
+            wr[k] = (s->radi * s->omi[k] + s->radj * s->omj[k]) * rinv;
+        }
+        vtr[0] = vt[0] - (d[2] * wr[1] - d[1] * wr[2]);
+        vtr[1] = vt[1] - (d[0] * wr[2] - d[2] * wr[0]);
+        vtr[2] = vt[2] - (d[1] * wr[0] - d[0] * wr[1]);
+        const double zero[3] = {0, 0, 0}, *h = s->hist ? s->hist : zero;
+        double shrmag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+        for (int k = 0; k < 3; k++)
+            f[k] = -poly * (p->coef[C_KT] * h[k] + meff * p->coef[C_GAMMAT] * vtr[k]);
+        double fs = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        double fn = p->coef[C_XMU] * fabs(ccel * r);
+        if (fs > fn) {
+            if (shrmag != 0.0) {
+                for (int k = 0; k < 3; k++)
+                    f[k] *= fn / fs;
+                fs *= fn / fs;
+            } else {
+                f[0] = f[1] = f[2] = fs = 0.0;
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            s->sv[k] = f[k];
+            s->sv[4 + k] = vn[k];
+            s->sv[7 + k] = vt[k];
+        }
+        s->sv[3] = fs;
+    }
+    return 0.0;
+}
+
 void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *source,
                         const char *eval, const char *law, int history)
 {
@@ -103,4 +171,7 @@ void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *s
     c->conservative = pair_gran_conservative(p);
     c->energy_of = p;
     c->contact_energy = pair_gran_contact_energy;
+    c->single_of = p;
+    c->single = pair_gran_single;
+    c->single_extra = history ? 10 : 0; /* gran/hooke: LAMMPS's single() reads a history */
 }

@@ -524,6 +524,83 @@ static double lammps2021_cut(const struct pair *p, int i, int j, double ri, doub
     return c;
 }
 
+/* LAMMPS 2021 PairGranular::single, normal part (plus LAMMPS 2024's
+ * coeff_restitution damping): fforce = Fntot / r with Fntot = Fne - damp
+ * factor v_n (limit_damping: >= 0), 0 beyond touch (jkr: beyond the
+ * pull-off distance). No energy. */
+static double granular_single(const struct pair *p, const struct pair_single *s,
+                              double *fforce)
+{
+    const struct gr_one *o = at(p->data, s->itype, s->jtype);
+    if (!o->set) { /* a cross pair before the first run mixed it */
+        *fforce = NAN;
+        return NAN;
+    }
+    double radsum = s->radi + s->radj;
+    double Reff = radsum > 0 ? s->radi * s->radj / radsum : 0.0;
+    double E = o->kn;
+    int touch;
+    *fforce = 0.0;
+    if (o->nm == GR_N_JKR) {
+        E *= 0.75;
+        double a0 = cbrt(9.0 * M_PI * o->coh * Reff * Reff / (4 * E));
+        double dist = radsum + a0 * a0 / Reff - 2 * sqrt(M_PI * o->coh * a0 / E);
+        touch = s->rsq <= dist * dist;
+    } else {
+        touch = s->rsq <= radsum * radsum;
+    }
+    if (!touch)
+        return 0.0;
+    double r = sqrt(s->rsq), rinv = 1.0 / r;
+    double vnnr = 0;
+    for (int d = 0; d < 3; d++)
+        vnnr += (s->vi[d] - s->vj[d]) * s->del[d] * rinv;
+    double meff = s->mi * s->mj / (s->mi + s->mj);
+    if (s->frozen_i)
+        meff = s->mj;
+    if (s->frozen_j)
+        meff = s->mi;
+    double delta = radsum - r, dR = delta * Reff, a, knfac, Fne;
+    if (o->nm == GR_N_JKR) {
+        double R2 = Reff * Reff, dR2 = dR * dR, coh = o->coh;
+        double t0 = coh * coh * R2 * R2 * E, t1 = 27.0 * M_PI * M_PI * t0;
+        double t2 = 8 * dR * dR2 * E * E * E, t3 = 4 * dR2 * E;
+        double t4 = cbrt(t1 + t2 + 3.0 * sqrt(3.0) * M_PI * sqrt(fmax(0, t0 * (t1 + 2 * t2))));
+        double t5 = t3 / t4 + t4 / E, t6 = sqrt(fmax(0, 2 * dR + t5));
+        a = (t6 + sqrt(fmax(0, 4 * dR - t5 + 6.0 * sqrt(6.0) * coh * M_PI * R2 / (E * t6)))) /
+            sqrt(6.0);
+        double a2 = a * a;
+        knfac = o->kn * a;
+        Fne = knfac * a2 / Reff - 2 * M_PI * a2 * sqrt(4 * coh * E / (M_PI * a));
+    } else {
+        knfac = E;
+        Fne = knfac * delta;
+        a = sqrt(dR);
+        if (o->nm != GR_N_HOOKE) {
+            Fne *= a;
+            knfac *= a;
+        }
+        if (o->nm == GR_N_DMT)
+            Fne -= 4 * M_PI * o->coh * Reff;
+    }
+    double damp;
+    switch (o->dm) {
+    case GR_D_VELOCITY: damp = 1; break;
+    case GR_D_MASS_VELOCITY: damp = meff; break;
+    case GR_D_VISCOELASTIC: damp = a * meff; break;
+    case GR_D_TSUJI: damp = sqrt(meff * knfac); break;
+    case GR_D_COEFF_RESTITUTION:
+        damp = delta > 0 ? sqrt(fmax(0, meff * Fne / delta)) : 0;
+        break;
+    default: damp = 0; break;
+    }
+    double Fntot = Fne - o->damp * damp * vnnr;
+    if (o->ld && Fntot < 0.0)
+        Fntot = 0.0;
+    *fforce = Fntot * rinv;
+    return 0.0;
+}
+
 /* Collision time of one type pair's model for two equal spheres (m* = m/2,
  * R* = r/2) at normal speed vn, undamped (damping lengthens a collision, so
  * this is the bound a time step must resolve), the formulas of
@@ -576,6 +653,8 @@ static void describe(const struct pair *p, struct pair_caps *c)
     c->flip_n = (u.h_roll >= 0 ? 3 : 0) + (u.h_twist >= 0 ? 1 : 0);
     c->lammps2021_cut = lammps2021_cut;
     c->cut2021_of = p;
+    c->single = granular_single;
+    c->single_of = p;
     c->tcol_of = p;
     c->collision_time = collision_time;
     if ((u.n >> GR_N_JKR) & 1) {

@@ -1,0 +1,65 @@
+/* compute_com_chunk.c - `compute ID group com/chunk chunkID`: the centre of
+ * mass of each chunk of a compute chunk/atom, as LAMMPS's compute
+ * com/chunk: a global array of nchunk rows x 3 columns (x y z), from the
+ * unwrapped positions of the atoms in both the group and the chunk, 0 0 0
+ * for a chunk without mass. Intensive. Read as c_ID[I][J] in thermo output
+ * and variables (I the chunk, J the coordinate). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "compute.h"
+#include "compute_chunk_atom.h"
+#include "domain.h"
+#include "error.h"
+
+static void cc_create(struct gravel *g, struct compute *c, int argc, char **argv)
+{
+    if (argc != 1)
+        gr_error(g, "compute com/chunk expects one argument, the chunk/atom compute ID, got %d",
+                 argc);
+    if (strlen(argv[0]) >= GR_NAMELEN)
+        gr_error(g, "compute com/chunk: chunk ID '%.64s...' is too long", argv[0]);
+    chunk_atom_get(g, argv[0], "compute com/chunk");
+    c->data = gr_strdup(g, argv[0]);
+    c->array_flag = 1;
+    c->size_array_cols = 3;
+    c->extarray = 0;
+}
+
+static void cc_init(struct gravel *g, struct compute *c)
+{
+    chunk_atom_get(g, c->data, "compute com/chunk");
+}
+
+static void cc_array(struct gravel *g, struct compute *c)
+{
+    const struct atoms *a = &g->atoms;
+    struct compute *ca = chunk_atom_get(g, c->data, "compute com/chunk");
+    const struct chunk_grid *grid = chunk_atom_setup(g, ca);
+    const int *ichunk = chunk_atom_assign(g, ca);
+    int n = grid->nchunk;
+    double *com = compute_array_rows(g, c, n);
+    double *mass = gr_calloc(g, (size_t)(n > 0 ? n : 1), sizeof *mass);
+    memset(com, 0, (size_t)n * 3 * sizeof *com);
+    for (int i = 0; i < a->n; i++) {
+        int k = ichunk[i] - 1;
+        if (!(a->mask[i] & c->groupbit) || k < 0)
+            continue;
+        double u[3], m = a->rmass[i];
+        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+        mass[k] += m;
+        for (int d = 0; d < 3; d++)
+            com[3 * k + d] += u[d] * m;
+    }
+    for (int k = 0; k < n; k++)
+        for (int d = 0; d < 3; d++)
+            com[3 * k + d] = mass[k] > 0 ? com[3 * k + d] / mass[k] : 0.0;
+    free(mass);
+}
+
+const struct compute_style compute_style_com_chunk = {
+    .name = "com/chunk",
+    .create = cc_create,
+    .init = cc_init,
+    .array = cc_array,
+};
