@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""lammps_granular_today.py - gravel's default pair granular and fix wall/gran
+granular follow today's LAMMPS (doc/lammps.md), checked on setups of LAMMPS's
+own granular unit cases (lammps/lammps, unittest/granular/tests/*.yaml): each
+case's deck is written here as a gravel deck and gravel's positions,
+velocities, angular velocities and torques after each run segment must match
+the case's reference values (copied below, with the file they come from) to
+1e-8 relative (relative to the largest magnitude of that quantity in that
+segment; a quantity that is exactly zero in LAMMPS must be below 1e-12 in
+gravel).
+
+- dem01-hertz-tsuji-3d-si.yaml (LAMMPS 4 Jul 2026 + the tsuji sqrt(2) of
+  GranSubModDampingTsuji::init): two spinning aluminium spheres, head-on,
+  hertz/material, damping tsuji e = 0.5, tangential mindlin NULL.
+- dem03-hertz-tsuji-wall-3d-si.yaml: the same sphere against fix wall/gran
+  granular xplane with the same model (today's wall E* = E / (2 (1 - nu^2))).
+
+Their first segment (the collision) also runs under -compat lammps2021 (tsuji
+without sqrt(2), LAMMPS 2021's wall conversion), which must then differ from
+the references (so the test
+sees the switch), and their restitution must be e within the cases' own
+analytic tolerances (0.02 pair, 0.005 wall: LAMMPS's collision_restitution and
+wall_restitution analytic models) in the default mode only."""
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from physics_lammps import GRAVEL, read_dump  # noqa: E402
+
+TOL = 1e-8
+ZERO = 1e-12
+FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz")
+GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9))
+
+PAIR_DECK = """units si
+dimension 3
+boundary f f f
+atom_style sphere
+region box block -0.2 0.2 -0.1 0.1 -0.1 0.1 units box
+create_box 1 box
+create_atoms 1 single -0.002550 0.0 0.0 units box
+create_atoms 1 single 0.002550 0.0 0.0 units box
+set group all diameter 0.005 density 2700.0
+group left id 1
+group right id 2
+velocity left set 2.0 0.0 0.0
+velocity right set -2.0 0.0 0.0
+set group left omega 0.0 0.0 22.0
+set group right omega 0.0 0.0 -22.0
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0
+timestep 1.0e-8
+pair_style granular
+pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
+fix integr all nve/sphere
+"""
+
+WALL_DECK = """units si
+dimension 3
+boundary f f f
+atom_style sphere
+region box block -0.05 0.012 -0.012 0.012 -0.012 0.012 units box
+create_box 1 box
+create_atoms 1 single -0.0026 0.0 0.0 units box
+set group all diameter 0.005 density 2700.0
+velocity all set 2.0 0.0 0.0
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0
+timestep 1.0e-8
+pair_style granular
+pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
+fix integr all nve/sphere
+fix xwall all wall/gran granular hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4 xplane NULL 0.0
+"""
+
+# {segment: {atom: [x y z vx vy vz omegax omegay omegaz tqx tqy tqz]}}
+# unittest/granular/tests/dem01-hertz-tsuji-3d-si.yaml (run_pos, run_vel, run_omega, run_torque)
+PAIR_REF = {
+    0: {1: [-2.4980771847769199e-03, 0, 0, 1.8175852473916858e+00, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.4980771847769199e-03, 0, 0, -1.8175852473916858e+00, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+    1: {1: [-2.5034867026327494e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.5034867026327494e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+    2: {1: [-2.5134838795636545e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.5134838795636545e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+}
+# unittest/granular/tests/dem03-hertz-tsuji-wall-3d-si.yaml
+WALL_REF = {
+    0: {1: [-2.4926116685070137e-03, 0, 0, 7.1068571385515955e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
+    1: {1: [-2.5034880148754384e-03, 0, 0, -9.9974392334184659e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
+}
+
+CASES = (
+    ("dem01-hertz-tsuji-3d-si", PAIR_DECK, (2600, 1500, 1000), PAIR_REF, 2.0, 0.02),
+    ("dem03-hertz-tsuji-wall-3d-si", WALL_DECK, (5500, 1500), WALL_REF, 2.0, 0.005),
+)
+
+
+def run(name, deck, segments, extra=()):
+    """gravel on deck + one `run` per segment; {segment: {id: values}} or None"""
+    text = deck + "dump d all custom 100 out.dump id " + " ".join(FIELDS) + "\n"
+    text += "dump_modify d sort id format float %.17g\n"
+    text += "".join(f"run {n}\n" for n in segments)
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(os.path.join(tmp, "in.case"), "w") as f:
+            f.write(text)
+        r = subprocess.run([GRAVEL, "-in", "in.case", "-log", "none", *extra], cwd=tmp,
+                           capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed on {name}: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None
+        frames = read_dump(os.path.join(tmp, "out.dump"))
+    out, step = {}, 0
+    for k, n in enumerate(segments):
+        step += n
+        if step not in frames:
+            print(f"  {name}: no dump at step {step}")
+            return None
+        out[k] = frames[step]
+    return out
+
+
+def worst_error(got, ref):
+    worst, where = 0.0, ""
+    for seg, rows in ref.items():
+        if seg not in got:
+            continue
+        for label, c0 in GROUPS:
+            scale = max(abs(v) for vals in rows.values() for v in vals[c0:c0 + 3])
+            for tag, vals in rows.items():
+                for c in range(c0, c0 + 3):
+                    a, b = got[seg][tag][c], vals[c]
+                    err = abs(a - b) / scale if scale > 0 else abs(a) / ZERO
+                    if err > worst:
+                        worst, where = err, f"segment {seg} atom {tag} {FIELDS[c]}"
+    return worst, where
+
+
+def main():
+    failed = 0
+    for name, deck, segs, ref, vin, etol in CASES:
+        got = run(name, deck, segs)
+        ok = got is not None
+        if ok:
+            worst, where = worst_error(got, ref)
+            ok = worst <= TOL
+            print(f"  {name}: worst relative error {worst:.3e} ({where})")
+            # restitution: the rebound speed after the contact (segment 1) over vin
+            e = abs(got[1][1][3]) / vin
+            eok = abs(e - 0.5) <= etol
+            print(f"  {name}: restitution {e:.6f} (e = 0.5, tolerance {etol})")
+            ok = ok and eok
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}")
+        failed += not ok
+        old = run(name, deck, segs[:1], ("-compat", "lammps2021"))
+        ok = old is not None and worst_error(old, ref)[0] > 1e-4
+        print(f"  {name} -compat lammps2021: differs from today's LAMMPS by "
+              f"{worst_error(old, ref)[0] if old else float('nan'):.3e}")
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}_compat2021_differs")
+        failed += not ok
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
