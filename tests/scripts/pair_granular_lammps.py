@@ -17,20 +17,23 @@ granular_jkr_hold must also show the JKR contact holding beyond touch up to the
 analytic pull-off distance (LAMMPS pulloff_distance, 0.03371 here): the last
 frame with a force has a separation below it, the next one above.
 
-granular_material (7 REAL of history per contact) rerun with a rebuild every
-step (neigh_modify check no) must give bit-identical dumps: the wide history
-rows follow their contacts through every rebuild and re-sort.
+granular_material (7 REAL of history per contact) run in gravel's default
+mode with a rebuild every step (neigh_modify check no) must give the dumps of
+the deck's own rebuilds, bit for bit: the wide history rows follow their
+contacts through every rebuild and re-sort.
 
 Every deck runs with -compat lammps2021, the mode that reproduces that
-version where it is not physical (doc/lammps.md, Compatibility); only
-granular_owner_flip, granular_jkr_pulloff and the jkr wall decks depend on it.
+version (doc/lammps.md, Compatibility); by default gravel follows today's
+LAMMPS (tsuji's sqrt(2), mixing, dmt's Coulomb load, marshall's twist
+stiffness, the wall conversions: tests/scripts/lammps_granular_today.py).
 
 granular_wall_jkr_plane must also show the wall contact held beyond touch up
 to the reach: LAMMPS 2021's wall pull-off distance with -compat lammps2021
-(0.00210 here), the physical flat-wall one without it (0.00766). granular_owner_flip
-must also depart from LAMMPS without it (relative 1e-3 or more): by default
-gravel keeps the rolling and twisting history LAMMPS negates when a pair
-changes owner."""
+(0.00210 here), the physical flat-wall one without it (0.00766). Without it,
+granular_owner_flip (jkr with damping tsuji) must be refused as today's
+LAMMPS refuses it, and with damping viscoelastic depart from its -compat run
+(relative 1e-3 or more): by default gravel keeps the rolling and twisting
+history LAMMPS 2021 negates when a pair changes owner (and marshall's kt)."""
 import glob
 import math
 import os
