@@ -20,6 +20,9 @@ gravel).
   (pull request 5007): gravel's wall runs pair gran/hooke/history's law, which
   that fix restored, so it matches with and without -compat lammps2021.
 
+Mixing: two hertz/material tsuji types without pair_coeff 1 2 must run as
+with a pair_coeff 1 2 written from LAMMPS's mixing rules (check_mixing).
+
 The first segment (the collision) also runs under -compat lammps2021 (tsuji
 without sqrt(2), LAMMPS 2021's wall conversion), which must then differ from
 the references (so the test
@@ -181,8 +184,81 @@ def worst_error(got, ref):
     return worst, where
 
 
+MIX_DECK = """units lj
+atom_style sphere
+boundary f f f
+region box block -4 4 -4 4 -4 4
+create_box 2 box
+create_atoms 1 single -0.5 0.0 0.0 units box
+create_atoms 2 single 0.45 0.3 0.05 units box
+set type 1 diameter 1.0 density 1.5
+set type 2 diameter 0.8 density 2.5
+group a1 id 1
+group a2 id 2
+velocity a1 set 1.0 0.1 0.0 units box
+velocity a2 set -1.0 0.0 0.2 units box
+set atom 2 omega 0.0 0.0 3.0
+pair_style granular
+pair_coeff 1 1 hertz/material 100000.0 0.5 0.3 damping tsuji tangential mindlin NULL 1.0 0.5 rolling sds 1000.0 20.0 0.1 twisting marshall
+pair_coeff 2 2 hertz/material 150000.0 0.7 0.2 damping tsuji tangential mindlin NULL 0.8 0.4 rolling sds 800.0 10.0 0.2 twisting marshall
+{cross}
+neighbor 0.2 bin
+timestep 0.0001
+fix 1 all nve/sphere
+run 3000
+"""
+
+
+def check_mixing():
+    """two hertz/material tsuji types mixed as today's LAMMPS mixes
+    (GranularModel::mix_coeffs): the run equals one with pair_coeff 1 2 written
+    out by hand from LAMMPS's rules: E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)
+    (given as E' = 2 (1 - nu'^2) E*, nu' = sqrt(nu1 nu2), so that pair_coeff's
+    own conversion gives kn = 4/3 E*), e, gt, mu and the rolling coefficients
+    geometric, the NULL kt 8 G*(E*, nu') given explicitly."""
+    E1, nu1, E2, nu2 = 100000.0, 0.3, 150000.0, 0.2
+    es = 1 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+    nu = (nu1 * nu2) ** 0.5
+    kt = 8 / (2 * (2 * (2 - nu) * (1 + nu) / es))
+    g = lambda a, b: (a * b) ** 0.5  # noqa: E731
+    cross = ("pair_coeff 1 2 hertz/material %.17g %.17g %.17g damping tsuji tangential mindlin "
+             "%.17g %.17g %.17g rolling sds %.17g %.17g %.17g twisting marshall"
+             % (2 * (1 - nu * nu) * es, g(0.5, 0.7), nu, kt, g(1.0, 0.8), g(0.5, 0.4),
+                g(1000.0, 800.0), g(20.0, 10.0), g(0.1, 0.2)))
+    out = []
+    for text in (MIX_DECK.format(cross=""), MIX_DECK.format(cross=cross)):
+        out.append(run_deck(text))
+    ok = all(o is not None for o in out)
+    worst = 0.0
+    if ok:
+        for tag in out[0]:
+            scale = [max(abs(out[1][t][c]) for t in out[1]) or 1 for c in range(12)]
+            for c in range(12):
+                worst = max(worst, abs(out[0][tag][c] - out[1][tag][c]) / scale[c])
+        ok = worst <= 1e-10 and abs(out[0][1][3] - 1.0) > 1e-3  # and they collided
+    print(f"  mixing: mixed 1 2 vs its hand-written pair_coeff: worst relative {worst:.3e}")
+    print(f"{'PASS' if ok else 'FAIL'} lammps_today_mixing")
+    return ok
+
+
+def run_deck(text):
+    """the final state {id: values} of deck text (write_dump at its end)"""
+    text += "write_dump all custom final.dump id " + " ".join(FIELDS) + \
+        " modify sort id format float %.17g\n"
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(os.path.join(tmp, "in.mix"), "w") as f:
+            f.write(text)
+        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none"], cwd=tmp,
+                           capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None
+        frames = read_dump(os.path.join(tmp, "final.dump"))
+    return frames[max(frames)]
+
+
 def main():
-    failed = 0
+    failed = 0 if check_mixing() else 1
     for name, deck, segs, ref, vin, etol, differs in CASES:
         got = run(name, deck, segs)
         ok = got is not None
