@@ -1,6 +1,6 @@
-/* pair_granular.cl - LAMMPS `pair_style granular` (29 Sep 2021,
- * pair_granular.cpp compute()): one small evaluator per sub-model, composed
- * by granular_eval. Host side styles/pair/pair_granular.c; docs
+/* pair_granular.cl - LAMMPS `pair_style granular` (today's GranularModel;
+ * p[GR_2021]: 29 Sep 2021's pair_granular.cpp compute() where they differ):
+ * one small evaluator per sub-model, composed by granular_eval. Host side styles/pair/pair_granular.c; docs
  * doc/styles/pair_granular.md.
  *
  * Composition at program build time (styles/pair/pair_granular.c defines):
@@ -11,9 +11,10 @@
  *       GRN_HAS_JKR, GRN_HAS_DMT say the same to the preprocessor.
  *   GR_TANG_HISTORY  some pair has a tangential model with history (LAMMPS
  *       then runs every pair through the history branch, linear_nohistory too)
- *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH  offsets in the history row of
- *       the contact radius of the last step (mindlin_rescale), the rolling
- *       displacement (3), the twist angle, the JKR touch flag; HIST_N its width.
+ *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH, GR_H_DYN  offsets in the
+ *       history row of the contact radius of the last step (mindlin_rescale),
+ *       the rolling displacement (3), the twist angle, the JKR touch flag, the
+ *       /static models' dynamic flag; HIST_N its width.
  * They fill a struct gr_layout (constants, folded away) for granular_eval;
  * fix wall/gran granular passes its own layout at run time to
  * granular_eval_l (kernels/fix_wall_gran.cl).

@@ -1,18 +1,22 @@
 /* pair_granular.c - `pair_style granular [cutoff]` with `pair_coeff I J
  * normal-model args [damping model] tangential model args [rolling sds ...]
  * [twisting marshall | sds ...] [limit_damping] [cutoff c]`: LAMMPS's
- * pair granular (29 Sep 2021, pair_granular.cpp) with its argument
- * conversions and mixing; the evaluators are in kernels/pair_granular.cl.
+ * pair granular with its argument conversions and mixing, as today's LAMMPS
+ * computes it (GranularModel, gran_sub_mod_*.cpp; tsuji's sqrt(2), per
+ * sub-model mixing, the /static tangential models) and, with -compat
+ * lammps2021 (o->c2021), as 29 Sep 2021's pair_granular.cpp did; the
+ * evaluators are in kernels/pair_granular.cl.
  *
  * Coefficients as LAMMPS stores them: hertz/material, dmt, jkr keep
  * kn = 4/3 E* of the pair's own E, nu (E* = 1 / (2 (1 - nu^2) / E)); a NULL
  * Mindlin kt is 8 G* (G* = 1 / (4 (2 - nu)(1 + nu) / E)); damping tsuji turns
  * the restitution coefficient e into 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3
- * + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6. A type pair without its own
- * pair_coeff mixes from I I and J J at run start (which must use the same
- * sub-models): kn geometric (hooke, hertz) or 1 / ((1 - nu_I^2)/E_I +
- * (1 - nu_J^2)/E_J) (material models: no 4/3, as LAMMPS 2021), every other
- * coefficient geometric. LAMMPS 2024's damping coeff_restitution takes e
+ * + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6, times sqrt(2) (not with -compat
+ * lammps2021). A type pair without its own pair_coeff mixes from I I and J J
+ * at run start (which must use the same sub-models), as today's LAMMPS
+ * (mix_today) or, -compat lammps2021, as LAMMPS 2021: kn geometric (hooke,
+ * hertz) or 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) (material models: no
+ * 4/3), every other coefficient geometric, the sub-models reset. LAMMPS 2024's damping coeff_restitution takes e
  * in the normal damping slot and keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e)
  * (hooke) or -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz,
  * hertz/material; refused with dmt, jkr), which the kernel multiplies by

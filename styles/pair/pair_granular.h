@@ -1,6 +1,6 @@
 /* pair_granular.h - the sub-models of LAMMPS's granular contact model
- * (pair_style granular, 29 Sep 2021, plus LAMMPS 2024's damping
- * coeff_restitution), shared by the pair style
+ * (pair_style granular as today's LAMMPS has it, or 29 Sep 2021's with
+ * -compat lammps2021), shared by the pair style
  * (styles/pair/pair_granular.c) and fix wall/gran granular
  * (styles/fix/fix_wall_gran.c): one contact's model, its parsing and packing. */
 #ifndef GR_PAIR_GRANULAR_H
