@@ -20,6 +20,10 @@ gravel).
   (pull request 5007): gravel's wall runs pair gran/hooke/history's law, which
   that fix restored, so it matches with and without -compat lammps2021.
 
+Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
+it), mdr, damping mdr, epa/linear, epa/nonlinear, linear_history_classic and
+synchronized_verlet each give an error naming them (check_refusals).
+
 Mixing: two hertz/material tsuji types without pair_coeff 1 2 must run as
 with a pair_coeff 1 2 written from LAMMPS's mixing rules (check_mixing).
 
@@ -257,8 +261,56 @@ def run_deck(text):
     return frames[max(frames)]
 
 
+REFUSE_HEAD = """units lj
+atom_style sphere
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+pair_style granular
+"""
+# (name, command, extra arguments, the error it must give)
+REFUSALS = (
+    ("tsuji_jkr", "pair_coeff * * jkr 1e4 0.5 0.3 50 damping tsuji tangential mindlin NULL 1 0.5",
+     (), "Cannot use tsuji model with a cohesive normal model, jkr"),
+    ("tsuji_dmt_wall", "fix w all wall/gran granular dmt 1e4 0.5 0.3 5 damping tsuji tangential "
+     "linear_history 100 1 0.5 zplane 0 NULL", (),
+     "Cannot use tsuji model with a cohesive normal model, dmt"),
+    ("mdr", "pair_coeff * * mdr 1e7 0.3 1e5 0.1 0.5 0.5 damping mdr 1 tangential "
+     "linear_history 1 1 0.5", (), "normal model 'mdr' of LAMMPS's pair granular is not supported"),
+    ("epa_linear", "pair_coeff * * epa/linear 1 2 3 4 tangential linear_history 1 1 0.5", (),
+     "normal model 'epa/linear' of LAMMPS's pair granular is not supported"),
+    ("epa_nonlinear", "pair_coeff * * epa/nonlinear 1 2 3 4 tangential linear_history 1 1 0.5",
+     (), "normal model 'epa/nonlinear' of LAMMPS's pair granular is not supported"),
+    ("damping_mdr", "pair_coeff * * hooke 1 1 damping mdr 1 tangential linear_history 1 1 0.5",
+     (), "damping model 'mdr' of LAMMPS's pair granular is not supported"),
+    ("classic", "pair_coeff * * hooke 1 1 tangential linear_history_classic 1 1 0.5", (),
+     "tangential model 'linear_history_classic' of LAMMPS's pair granular is not supported"),
+    ("synchronized_verlet", "pair_coeff * * hooke 1 1 tangential linear_history 1 1 0.5 "
+     "synchronized_verlet", (), "synchronized_verlet (LAMMPS's half-step normal"),
+)
+
+
+def check_refusals():
+    """LAMMPS's models gravel lacks, and tsuji with a cohesive normal model
+    (today's LAMMPS), are refused naming the model; -compat lammps2021 takes
+    tsuji with jkr as LAMMPS 2021 did"""
+    bad = 0
+    for name, cmd, extra, want in REFUSALS + (("tsuji_jkr_compat", REFUSALS[0][1],
+                                               ("-compat", "lammps2021"), None),):
+        r = subprocess.run([GRAVEL, "-log", "none", *extra], input=REFUSE_HEAD + cmd + "\n",
+                           capture_output=True, text=True, timeout=120)
+        out = r.stdout + r.stderr
+        ok = r.returncode == 0 if want is None else (r.returncode != 0 and want in out)
+        msg = [w for w in out.splitlines() if "ERROR" in w]
+        print(f"  {name}: {msg[0][msg[0].index('ERROR'):] if msg else 'accepted'}")
+        label = "compat2021_takes_tsuji_jkr" if want is None else "refuses_" + name
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{label}")
+        bad += not ok
+    return bad
+
+
 def main():
     failed = 0 if check_mixing() else 1
+    failed += check_refusals()
     for name, deck, segs, ref, vin, etol, differs in CASES:
         got = run(name, deck, segs)
         ok = got is not None
