@@ -16,11 +16,12 @@
  * at run start (which must use the same sub-models), as today's LAMMPS
  * (mix_today) or, -compat lammps2021, as LAMMPS 2021: kn geometric (hooke,
  * hertz) or 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) (material models: no
- * 4/3), every other coefficient geometric, the sub-models reset. LAMMPS 2024's damping coeff_restitution takes e
- * in the normal damping slot and keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e)
- * (hooke) or -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz,
- * hertz/material; refused with dmt, jkr), which the kernel multiplies by
- * sqrt(m Fne / delta); two such types mix as LAMMPS 2024 does (mix2024).
+ * 4/3), every other coefficient geometric, the sub-models reset. LAMMPS
+ * 2024's damping coeff_restitution takes e in the normal damping slot and
+ * keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e) (hooke) or -sqrt(3/2) 2
+ * sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz, hertz/material; refused with
+ * dmt, jkr), which the kernel multiplies by sqrt(m Fne / delta); two such
+ * types mix as today's LAMMPS does (mix_today) even with -compat lammps2021.
  *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
