@@ -14,7 +14,8 @@ static inline void wall_granular_eval(const struct contact *c, __global const RE
                                 1 << (int)p[GR_WMODEL], (int)p[GRW_TANG],
                                 (int)p[GRW_HA],         (int)p[GRW_HROLL],
                                 (int)p[GRW_HTWIST],     (int)p[GRW_HTOUCH],
-                                (int)p[GRW_WIDTH],      1};
+                                (int)p[GRW_WIDTH],      1,
+                                (int)p[GRW_HDYN]};
     granular_eval_l(c, p, h, out, L);
 }
 

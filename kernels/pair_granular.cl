@@ -1,6 +1,6 @@
-/* pair_granular.cl - LAMMPS `pair_style granular` (29 Sep 2021,
- * pair_granular.cpp compute()): one small evaluator per sub-model, composed
- * by granular_eval. Host side styles/pair/pair_granular.c; docs
+/* pair_granular.cl - LAMMPS `pair_style granular` (today's GranularModel;
+ * p[GR_2021]: 29 Sep 2021's pair_granular.cpp compute() where they differ):
+ * one small evaluator per sub-model, composed by granular_eval. Host side styles/pair/pair_granular.c; docs
  * doc/styles/pair_granular.md.
  *
  * Composition at program build time (styles/pair/pair_granular.c defines):
@@ -11,9 +11,10 @@
  *       GRN_HAS_JKR, GRN_HAS_DMT say the same to the preprocessor.
  *   GR_TANG_HISTORY  some pair has a tangential model with history (LAMMPS
  *       then runs every pair through the history branch, linear_nohistory too)
- *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH  offsets in the history row of
- *       the contact radius of the last step (mindlin_rescale), the rolling
- *       displacement (3), the twist angle, the JKR touch flag; HIST_N its width.
+ *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH, GR_H_DYN  offsets in the
+ *       history row of the contact radius of the last step (mindlin_rescale),
+ *       the rolling displacement (3), the twist angle, the JKR touch flag, the
+ *       /static models' dynamic flag; HIST_N its width.
  * They fill a struct gr_layout (constants, folded away) for granular_eval;
  * fix wall/gran granular passes its own layout at run time to
  * granular_eval_l (kernels/fix_wall_gran.cl).
@@ -35,6 +36,7 @@ struct gr_layout {
     int tang_hist;              /* the tangential history branch */
     int ha, hroll, htwist, htouch, width;
     int wall;
+    int hdyn;                   /* the /static models' static (0) / dynamic (1) flag */
 };
 
 /* ---- normal models: elastic force Fne, knfac (stiffness for tsuji), a ---- */
@@ -205,6 +207,47 @@ static inline REAL3 grt_history(const int used, const int ha, int model, REAL *h
     return fs;
 }
 
+/* linear_history/static and mindlin/static (today's LAMMPS,
+ * GranSubModTangential*Static): linear_history's displacement history with
+ * k = kt (kt a for mindlin/static), whose Coulomb limit is mu_s Fncrit while
+ * the contact sticks and mu_d Fncrit once it slid: the limit reached
+ * switches it to dynamic, a force within the dynamic limit back to static
+ * (*dyn, kept in the history row). */
+static inline REAL3 grt_static(REAL *h, REAL *dyn, REAL3 n, REAL3 vtr, REAL k, REAL damp_t,
+                               REAL Fncrit, REAL mus, REAL mud, const struct contact *c)
+{
+    const int dynamic = (int)*dyn != 0;
+    const REAL Fscrit = Fncrit * (dynamic ? mud : mus);
+    if (c->shearupdate) {
+        const REAL rsht = h[0] * n.x + h[1] * n.y + h[2] * n.z;
+        if (fabs(rsht) * k > (REAL)1e-10 * Fscrit)
+            gr_frame(h, n);
+        h[0] += vtr.x * c->dt;
+        h[1] += vtr.y * c->dt;
+        h[2] += vtr.z * c->dt;
+    }
+    REAL3 fs = (REAL3)(-k * h[0] - damp_t * vtr.x, -k * h[1] - damp_t * vtr.y,
+                       -k * h[2] - damp_t * vtr.z);
+    const REAL fsm = sqrt(fs.x * fs.x + fs.y * fs.y + fs.z * fs.z);
+    if (fsm > Fscrit) {
+        const REAL shrmag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+        if (shrmag != (REAL)0) {
+            const REAL s = Fscrit / fsm;
+            h[0] = (REAL)-1.0 / k * (s * fs.x + damp_t * vtr.x);
+            h[1] = (REAL)-1.0 / k * (s * fs.y + damp_t * vtr.y);
+            h[2] = (REAL)-1.0 / k * (s * fs.z + damp_t * vtr.z);
+            fs *= s;
+        } else {
+            fs = (REAL3)(0);
+        }
+        if (!dynamic)
+            *dyn = 1;
+    } else if (dynamic) {
+        *dyn = 0;
+    }
+    return fs;
+}
+
 /* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ---- */
 static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL Frcrit,
                             const struct contact *c)
@@ -310,14 +353,20 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     REAL Fncrit = fabs(Fntot);
     if (jkr)
         Fncrit = fabs(Fne + (REAL)2 * ((REAL)3 * (REAL)M_PI * p[GR_COH] * Reff));
-    if (GR_IS(L.n, GR_N_DMT, nm))
-        Fncrit = fabs(Fne);
+    if (GR_IS(L.n, GR_N_DMT, nm)) /* today's LAMMPS: |Fne + 2 F_pulloff|, F_pulloff = 4 pi coh R */
+        Fncrit = p[GR_2021] != (REAL)0 ? fabs(Fne)
+                                       : fabs(Fne + (REAL)2 * ((REAL)4 * (REAL)M_PI * p[GR_COH] *
+                                                               Reff));
     const REAL Fscrit = p[GR_MU] * Fncrit;
     const int tm = (int)p[GR_TMODEL];
     REAL kt = p[GR_KT];
     const REAL damp_t = p[GR_GT] * damp_pref;
     REAL3 fs;
-    if (L.tang_hist) {
+    if (L.hdyn >= 0 && (GR_IS(L.t, GR_T_HISTORY_STATIC, tm) ||
+                        GR_IS(L.t, GR_T_MINDLIN_STATIC, tm))) {
+        const REAL k = GR_IS(L.t, GR_T_MINDLIN_STATIC, tm) ? kt * a : kt;
+        fs = grt_static(h, h + L.hdyn, n, vtr, k, damp_t, Fncrit, p[GR_MU], p[GR_MUD], c);
+    } else if (L.tang_hist) {
         if (GR_IS(L.t, GR_T_MINDLIN, tm) || GR_IS(L.t, GR_T_MINDLIN_FORCE, tm) ||
             GR_IS(L.t, GR_T_MINDLIN_RESCALE, tm) || GR_IS(L.t, GR_T_MINDLIN_RESCALE_FORCE, tm))
             kt *= a;
@@ -343,7 +392,9 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
         REAL kw = p[GR_KW], gw = p[GR_GW], muw = p[GR_MUW];
         int on = GR_IS(L.w, GR_W_SDS, wm);
         if (GR_IS(L.w, GR_W_MARSHALL, wm)) {
-            kw = (REAL)0.5 * kt * a * a; /* Marshall eq. 32 */
+            /* Marshall eq. 32 with the tangential model's kt (today's LAMMPS:
+             * unscaled; LAMMPS 2021: kt a for the mindlin models) */
+            kw = (REAL)0.5 * (p[GR_2021] != (REAL)0 ? kt : p[GR_KT]) * a * a;
             gw = (REAL)0.5 * damp_t * a * a;
             muw = (REAL)(2.0 / 3.0) * a * p[GR_MU];
             on = 1;
@@ -392,6 +443,9 @@ static inline REAL granular_tcol(const struct contact *c, __global const REAL *p
 #ifndef GR_H_TOUCH
 #define GR_H_TOUCH -1
 #endif
+#ifndef GR_H_DYN
+#define GR_H_DYN -1
+#endif
 #ifdef GR_TANG_HISTORY
 #define GR_TANG_HISTORY_ON 1
 #else
@@ -407,7 +461,8 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
 {
     const struct gr_layout L = {GRN_USED,   GRD_USED,  GRT_USED,   GRR_USED,
                                 GRW_USED,   GR_TANG_HISTORY_ON,    GR_H_A,
-                                GR_H_ROLL,  GR_H_TWIST, GR_H_TOUCH, GR_WIDTH, 0};
+                                GR_H_ROLL,  GR_H_TWIST, GR_H_TOUCH, GR_WIDTH, 0,
+                                GR_H_DYN};
     granular_eval_l(c, p, h, out, L);
 }
 static inline REAL granular_eval_tcol(const struct contact *c, __global const REAL *p,

@@ -28,16 +28,20 @@ enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
  * (0/1), then LAMMPS's coefficients after its conversions and mixing:
  * normal kn (4/3 E* for the material models), damping (tsuji, coeff_restitution:
  * the factor from the restitution coefficient), cohesion; tangential kt, damping ratio, mu;
- * rolling kr, gr, mu_r; twisting kw, gw, mu_w. */
+ * rolling kr, gr, mu_r; twisting kw, gw, mu_w; the dynamic friction coefficient
+ * of the /static tangential models (mu above is their static one);
+ * 1 where the pair follows LAMMPS 29Sep2021 (-compat lammps2021: dmt's
+ * Coulomb load, marshall's twist stiffness), 0 for today's LAMMPS. */
 enum gr_param { GR_NMODEL, GR_DMODEL, GR_TMODEL, GR_RMODEL, GR_WMODEL, GR_LIMIT,
                 GR_KN, GR_DAMP, GR_COH, GR_KT, GR_GT, GR_MU, GR_KR, GR_GR, GR_MUR,
-                GR_KW, GR_GW, GR_MUW, GR_NPARAM };
+                GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_NPARAM };
 /* LAMMPS's numbering of the sub-models (pair_granular.cpp) */
 enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR };
 enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI,
                   GR_D_COEFF_RESTITUTION /* LAMMPS 2024 */ };
 enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RESCALE,
-                     GR_T_MINDLIN_FORCE, GR_T_MINDLIN_RESCALE_FORCE };
+                     GR_T_MINDLIN_FORCE, GR_T_MINDLIN_RESCALE_FORCE,
+                     GR_T_HISTORY_STATIC, GR_T_MINDLIN_STATIC /* today's LAMMPS */ };
 enum gr_twist { GR_W_NONE, GR_W_SDS, GR_W_MARSHALL };
 enum gr_roll { GR_R_NONE, GR_R_SDS };
 
@@ -45,9 +49,10 @@ enum gr_roll { GR_R_NONE, GR_R_SDS };
  * model (kernels/fix_wall_gran.cl): tangential history on (0/1), offsets of
  * the contact radius (mindlin_rescale), rolling displacement, twist angle
  * and JKR touch flag (-1: absent), as LAMMPS 2021 sizes a wall's history;
- * then 1 when a jkr wall reaches as LAMMPS 2021's (-compat lammps2021). */
+ * then 1 when a jkr wall reaches as LAMMPS 2021's (-compat lammps2021); the
+ * offset of the static/dynamic flag of the /static tangential models (-1). */
 enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
-                 GRW_JKR2021, GRW_NPARAM };
+                 GRW_JKR2021, GRW_HDYN, GRW_NPARAM };
 
 /* colloid (styles/pair/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
  * (COL_SS small-small LJ, COL_SL colloid-small, COL_LL colloid-colloid as

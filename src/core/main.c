@@ -52,7 +52,8 @@ static void usage(FILE *out)
             "  -device cpu|gpu|N            OpenCL device (default: env GRAVEL_DEVICE, else cpu)\n"
             "  -precision single|double     floating point in kernels (default double)\n"
             "  -progress                    progress line on stderr during runs\n"
-            "  -compat lammps2021           reproduce LAMMPS 29Sep2021 where it is not physical\n"
+            "  -compat lammps2021           reproduce LAMMPS 29Sep2021 (its quirks, and its\n"
+            "                               granular results that today's LAMMPS changed)\n"
             "                               (doc/lammps.md, Compatibility)\n"
             "  -h, -help                    this help, every command and style\n"
             "  -version                     print the version\n",

@@ -154,15 +154,19 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     for (int k = 0; k + 2 < n; k++)
         if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
             kt_null = 1;
-    /* LAMMPS 2021 FixWallGran converts the wall's own E, nu (no mixing with
-     * the particle's) by its formulas, not pair granular's: kn = 4/3 E /
-     * (2 (1 - nu)) (its FOURTHIRDS constant), a NULL Mindlin kt = E/4 (2 - nu)
-     * (1 + nu) (checked against lmp: granular_wall_* in tests/reference/wall_gran
-     * and wall_gran_region) */
+    /* The wall's own E, nu (no mixing with the particle's). Today's LAMMPS
+     * (GranSubMod::mix_stiffnessE_wall, mix_stiffnessG_wall): kn = 4/3 E /
+     * (2 (1 - nu^2)), a NULL Mindlin kt = 8 E / (4 (2 - nu)(1 + nu)).
+     * -compat lammps2021: LAMMPS 2021 FixWallGran's formulas, kn = 4/3 E /
+     * (2 (1 - nu)) (its FOURTHIRDS constant), kt = E/4 (2 - nu) (1 + nu)
+     * (checked against lmp: granular_wall_* in tests/reference/wall_gran and
+     * wall_gran_region) */
     if (o.nm >= GR_N_HERTZ_MATERIAL)
-        o.kn = o.E / (2 * (1 - o.nu)) * 1.333333333333333;
+        o.kn = g->opt.lammps2021 ? o.E / (2 * (1 - o.nu)) * 1.333333333333333
+                                 : 4.0 / 3.0 * (o.E / (2 * (1 - o.nu * o.nu)));
     if (kt_null)
-        o.kt = o.E / 4 * (2 - o.nu) * (1 + o.nu);
+        o.kt = g->opt.lammps2021 ? o.E / 4 * (2 - o.nu) * (1 + o.nu)
+                                 : 8.0 * (o.E / (4.0 * (2 - o.nu) * (1 + o.nu)));
     w->nparam = GRW_NPARAM;
     granular_pack(&o, w->param);
     int off = 0;
@@ -175,6 +179,7 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     w->param[GRW_HTWIST] = o.wm != GR_W_NONE ? off++ : -1;
     /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
     w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
+    w->param[GRW_HDYN] = o.tm == GR_T_HISTORY_STATIC || o.tm == GR_T_MINDLIN_STATIC ? off++ : -1;
     w->param[GRW_JKR2021] = g->opt.lammps2021;
     w->param[GRW_WIDTH] = off;
     w->history = off;
@@ -393,7 +398,7 @@ static void init(struct gravel *g, struct fix *f)
      * every run, so each later run converts the converted value again */
     if (w->inits++ > 0 && g->opt.lammps2021 && w->model == WG_GRANULAR &&
         (int)w->param[GR_DMODEL] == GR_D_TSUJI)
-        w->param[GR_DAMP] = granular_tsuji(w->param[GR_DAMP]);
+        w->param[GR_DAMP] = granular_tsuji(w->param[GR_DAMP], 1);
     /* parameters: re-uploaded every run (precision may change between runs) */
     if (w->law.param)
         clReleaseMemObject(w->law.param);

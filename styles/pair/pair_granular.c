@@ -1,22 +1,27 @@
 /* pair_granular.c - `pair_style granular [cutoff]` with `pair_coeff I J
  * normal-model args [damping model] tangential model args [rolling sds ...]
  * [twisting marshall | sds ...] [limit_damping] [cutoff c]`: LAMMPS's
- * pair granular (29 Sep 2021, pair_granular.cpp) with its argument
- * conversions and mixing; the evaluators are in kernels/pair_granular.cl.
+ * pair granular with its argument conversions and mixing, as today's LAMMPS
+ * computes it (GranularModel, gran_sub_mod_*.cpp; tsuji's sqrt(2), per
+ * sub-model mixing, the /static tangential models) and, with -compat
+ * lammps2021 (o->c2021), as 29 Sep 2021's pair_granular.cpp did; the
+ * evaluators are in kernels/pair_granular.cl.
  *
  * Coefficients as LAMMPS stores them: hertz/material, dmt, jkr keep
  * kn = 4/3 E* of the pair's own E, nu (E* = 1 / (2 (1 - nu^2) / E)); a NULL
  * Mindlin kt is 8 G* (G* = 1 / (4 (2 - nu)(1 + nu) / E)); damping tsuji turns
  * the restitution coefficient e into 1.2728 - 4.2783 e + 11.087 e^2 - 22.348 e^3
- * + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6. A type pair without its own
- * pair_coeff mixes from I I and J J at run start (which must use the same
- * sub-models): kn geometric (hooke, hertz) or 1 / ((1 - nu_I^2)/E_I +
- * (1 - nu_J^2)/E_J) (material models: no 4/3, as LAMMPS 2021), every other
- * coefficient geometric. LAMMPS 2024's damping coeff_restitution takes e
- * in the normal damping slot and keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e)
- * (hooke) or -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz,
- * hertz/material; refused with dmt, jkr), which the kernel multiplies by
- * sqrt(m Fne / delta); two such types mix as LAMMPS 2024 does (mix2024).
+ * + 27.467 e^4 - 18.022 e^5 + 4.8218 e^6, times sqrt(2) (not with -compat
+ * lammps2021). A type pair without its own pair_coeff mixes from I I and J J
+ * at run start (which must use the same sub-models), as today's LAMMPS
+ * (mix_today) or, -compat lammps2021, as LAMMPS 2021: kn geometric (hooke,
+ * hertz) or 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) (material models: no
+ * 4/3), every other coefficient geometric, the sub-models reset. LAMMPS
+ * 2024's damping coeff_restitution takes e in the normal damping slot and
+ * keeps damp = -2 ln e / sqrt(pi^2 + ln^2 e) (hooke) or -sqrt(3/2) 2
+ * sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz, hertz/material; refused with
+ * dmt, jkr), which the kernel multiplies by sqrt(m Fne / delta); two such
+ * types mix as today's LAMMPS does (mix_today) even with -compat lammps2021.
  *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
@@ -43,7 +48,8 @@ static const char *const dname[] = {"velocity", "mass_velocity", "viscoelastic",
                                     "coeff_restitution"};
 static const char *const tname[] = {"linear_nohistory", "linear_history", "mindlin",
                                     "mindlin_rescale", "mindlin/force",
-                                    "mindlin_rescale/force"};
+                                    "mindlin_rescale/force", "linear_history/static",
+                                    "mindlin/static"};
 
 static void destroy(struct pair *p)
 {
@@ -117,10 +123,24 @@ static int in_list(const char *s, const char *const *list)
     return 0;
 }
 
-double granular_tsuji(double e)
+double granular_tsuji(double e, int lammps2021)
 {
-    return 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e + 27.467 * pow(e, 4) -
-           18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
+    double d = 1.2728 - 4.2783 * e + 11.087 * e * e - 22.348 * e * e * e + 27.467 * pow(e, 4) -
+               18.022 * pow(e, 5) + 4.8218 * pow(e, 6);
+    return lammps2021 ? d : d * M_SQRT2;
+}
+
+/* LAMMPS's sub-model names gravel does not have: a clear refusal (`what`
+ * names the category) instead of "unknown model" */
+static void refuse_known(struct gravel *g, const char *who, const char *what, const char *s)
+{
+    static const char *const later[] = {"mdr", "epa/linear", "epa/nonlinear", "none",
+                                        "linear_history_classic", "mindlin_classic", NULL};
+    if (in_list(s, later))
+        gr_error(g, "%s: %s model '%s' of LAMMPS's pair granular is not supported by gravel%s",
+                 who, what, s,
+                 !strcmp(s, "mdr") ? " (its large-deformation bookkeeping needs LAMMPS's fix "
+                                     "GRANULAR/MDR per-atom radius updates)" : "");
 }
 
 double granular_coeff_restitution(double e, int nm)
@@ -142,6 +162,16 @@ static void coeff_restitution(struct gravel *g, struct gr_one *o, const char *wh
         gr_error(g, "%s: Cannot use coeff_restitution model with a cohesive normal model, %s",
                  who, nname[o->nm]);
     o->damp = granular_coeff_restitution(o->e, o->nm);
+}
+
+/* tsuji: today's LAMMPS refuses it with a cohesive normal model
+ * (GranSubModDampingTsuji: allow_cohesion = 0; LAMMPS 2021 took it) */
+static void tsuji(struct gravel *g, struct gr_one *o, const char *who)
+{
+    if (!o->c2021 && (o->nm == GR_N_DMT || o->nm == GR_N_JKR))
+        gr_error(g, "%s: Cannot use tsuji model with a cohesive normal model, %s (LAMMPS "
+                    "29Sep2021 took it: -compat lammps2021)", who, nname[o->nm]);
+    o->damp = granular_tsuji(o->e, o->c2021);
 }
 
 /* The coefficients as given, before any conversion (coeff_check.h): every
@@ -171,7 +201,10 @@ static void check_ranges(struct gravel *g, const struct gr_one *o, int kt_null,
     if (!kt_null)
         coeff_check(g, who, "tangential stiffness kt", o->kt, CR_NONNEG);
     coeff_check(g, who, "tangential damping", o->gt, CR_NONNEG);
-    coeff_check(g, who, "friction coefficient", o->mu, CR_NONNEG);
+    coeff_check(g, who, o->tm >= GR_T_HISTORY_STATIC ? "static friction coefficient"
+                                                     : "friction coefficient", o->mu, CR_NONNEG);
+    if (o->tm >= GR_T_HISTORY_STATIC)
+        coeff_check(g, who, "dynamic friction coefficient", o->mud, CR_NONNEG);
     coeff_check(g, who, "rolling stiffness", o->kr, CR_NONNEG);
     coeff_check(g, who, "rolling damping", o->gr, CR_NONNEG);
     coeff_check(g, who, "rolling friction coefficient", o->mur, CR_NONNEG);
@@ -190,6 +223,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     o.rm = GR_R_NONE;
     o.wm = GR_W_NONE;
     o.cutoff = -1;
+    o.c2021 = g->opt.lammps2021;
     int kt_null = 0;
     int i = 0;
     while (i < argc) {
@@ -197,6 +231,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         if (in_list(k, stop))
             break;
         int m = lookup(k, nname, 5);
+        refuse_known(g, who, "normal", k);
         if (m >= 0) {
             o.nm = m;
             o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E", who);
@@ -211,6 +246,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         } else if (!strcmp(k, "damping")) {
             arg_need(g, argc, i, 1, k);
             o.dm = lookup(argv[i + 1], dname, 5);
+            refuse_known(g, who, "damping", argv[i + 1]);
             if (o.dm < 0)
                 gr_error(g, "%s: unknown damping model '%.64s' (expected velocity, "
                             "mass_velocity, viscoelastic, tsuji or coeff_restitution)", who,
@@ -218,11 +254,13 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             i += 2;
         } else if (!strcmp(k, "tangential")) {
             arg_need(g, argc, i, 1, k);
-            o.tm = lookup(argv[i + 1], tname, 6);
+            o.tm = lookup(argv[i + 1], tname, 8);
+            refuse_known(g, who, "tangential", argv[i + 1]);
             if (o.tm < 0)
                 gr_error(g, "%s: unknown tangential model '%.64s' (expected "
                             "linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-                            "mindlin/force or mindlin_rescale/force)", who, argv[i + 1]);
+                            "mindlin/force, mindlin_rescale/force, linear_history/static or "
+                            "mindlin/static)", who, argv[i + 1]);
             if (o.tm == GR_T_NOHISTORY) {
                 o.kt = 0;
                 o.gt = num(g, argv, argc, i + 2, "tangential damping", who);
@@ -230,7 +268,8 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                 i += 4;
                 continue;
             }
-            if (i + 2 < argc && !strcmp(argv[i + 2], "NULL") && o.tm >= GR_T_MINDLIN) {
+            if (i + 2 < argc && !strcmp(argv[i + 2], "NULL") && o.tm >= GR_T_MINDLIN &&
+                o.tm != GR_T_HISTORY_STATIC) {
                 if (o.nm == GR_N_HERTZ || o.nm == GR_N_HOOKE)
                     gr_error(g, "NULL setting for Mindlin tangential stiffness requires a "
                                 "normal contact model that specifies material properties");
@@ -240,6 +279,12 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                 kt_null = 0;
             }
             o.gt = num(g, argv, argc, i + 3, "tangential damping", who);
+            if (o.tm >= GR_T_HISTORY_STATIC) { /* kt xt mu_static mu_dynamic */
+                o.mu = num(g, argv, argc, i + 4, "static friction coefficient", who);
+                o.mud = num(g, argv, argc, i + 5, "dynamic friction coefficient", who);
+                i += 6;
+                continue;
+            }
             o.mu = num(g, argv, argc, i + 4, "friction coefficient", who);
             i += 5;
         } else if (!strcmp(k, "rolling")) {
@@ -282,6 +327,9 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         } else if (!strcmp(k, "limit_damping")) {
             o.ld = 1;
             i++;
+        } else if (!strcmp(k, "synchronized_verlet")) {
+            gr_error(g, "%s: synchronized_verlet (LAMMPS's half-step normal with a second "
+                        "history projection) is not supported by gravel", who);
         } else {
             gr_error(g, "%s: unknown keyword '%.64s' (expected a normal model "
                         "hooke, hertz, hertz/material, dmt or jkr, or damping, tangential, "
@@ -292,11 +340,15 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     if (o.nm < 0 || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
     check_ranges(g, &o, kt_null, who);
-    if (o.dm == GR_D_TSUJI)
-        o.damp = granular_tsuji(o.damp);
     o.e = o.damp;
+    if (o.dm == GR_D_TSUJI)
+        tsuji(g, &o, who);
     if (o.dm == GR_D_COEFF_RESTITUTION)
         coeff_restitution(g, &o, who);
+    if (o.tm >= GR_T_HISTORY_STATIC && o.wm == GR_W_MARSHALL)
+        gr_error(g, "%s: twisting marshall takes its friction from the tangential model, "
+                    "which %s does not define (LAMMPS leaves it unset); use twisting sds",
+                 who, tname[o.tm]);
     if (o.ld && o.nm == GR_N_JKR)
         gr_error(g, "Illegal %.*s command, Cannot limit damping with JKR model",
                  (int)strcspn(who, " "), who);
@@ -338,15 +390,16 @@ static double pulloff(const struct gr_one *o, double reff)
     return a * a / reff - 2 * sqrt(M_PI * o->coh * a / E);
 }
 
-/* A type pair of two coeff_restitution types: that model is LAMMPS 2024's,
- * so the pair mixes as LAMMPS 2024 does (GranularModel::mix_coeffs, then
- * init): every sub-model kept; e, nu and every other coefficient geometric;
- * hertz/material's E* = 1 / ((1 - nu_I^2)/E_I + (1 - nu_J^2)/E_J) and
- * kn = 4/3 E*; a NULL Mindlin kt (on either side) 8 G* of the mixed E* and
- * nu; limit_damping if either has it; then e converted. */
-static void mix2024(const struct gr_one *a, const struct gr_one *b, struct gr_one *m)
+/* Today's LAMMPS mixing (since the 2023 GranularModel; also every
+ * coeff_restitution pair, a model LAMMPS 2021 lacks): GranularModel::
+ * mix_coeffs, then init: every sub-model kept; the damping slot (e for tsuji
+ * and coeff_restitution), nu, cohesion and every other coefficient
+ * geometric; the material models' E* = 1 / ((1 - nu_I^2)/E_I + (1 -
+ * nu_J^2)/E_J) and kn = 4/3 E*; a NULL Mindlin kt (on either side) 8 G* of
+ * the mixed E* and nu; limit_damping if either has it; then e converted. */
+static void mix_today(const struct gr_one *a, const struct gr_one *b, struct gr_one *m)
 {
-    if (a->nm == GR_N_HERTZ_MATERIAL) {
+    if (a->nm >= GR_N_HERTZ_MATERIAL) {
         m->E = mixE(a->E, b->E, a->nu, b->nu);
         m->nu = geo(a->nu, b->nu);
         m->kn = 4.0 / 3.0 * m->E;
@@ -354,8 +407,14 @@ static void mix2024(const struct gr_one *a, const struct gr_one *b, struct gr_on
         m->kn = geo(a->kn, b->kn);
     }
     m->e = geo(a->e, b->e);
-    m->damp = granular_coeff_restitution(m->e, m->nm);
-    m->coh = 0;
+    if (a->dm == GR_D_COEFF_RESTITUTION)
+        m->damp = granular_coeff_restitution(m->e, m->nm);
+    else if (a->dm == GR_D_TSUJI)
+        m->damp = granular_tsuji(m->e, 0);
+    else
+        m->damp = m->e;
+    m->coh = geo(a->coh, b->coh);
+    m->mud = geo(a->mud, b->mud);
     m->ktnull = a->ktnull || b->ktnull;
     m->kt = m->ktnull ? 8 * mixG(m->E, m->E, m->nu, m->nu) : geo(a->kt, b->kt);
     m->gt = geo(a->gt, b->gt);
@@ -394,8 +453,8 @@ static void init(struct gravel *g, struct pair *p)
                             "explicitly via a pair_coeff command", i, j);
             struct gr_one m = *a;
             m.set = 2;
-            if (a->dm == GR_D_COEFF_RESTITUTION) {
-                mix2024(a, b, &m);
+            if (a->dm == GR_D_COEFF_RESTITUTION || !a->c2021 || !b->c2021) {
+                mix_today(a, b, &m);
                 *at(t, i, j) = *at(t, j, i) = m;
                 continue;
             }
@@ -427,7 +486,8 @@ static void init(struct gravel *g, struct pair *p)
         }
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
-            if (at(t, i, j)->set == 2 && at(t, i, j)->dm != GR_D_COEFF_RESTITUTION)
+            if (at(t, i, j)->set == 2 && at(t, i, j)->c2021 &&
+                at(t, i, j)->dm != GR_D_COEFF_RESTITUTION)
                 gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "
@@ -473,13 +533,15 @@ void granular_pack(const struct gr_one *o, double *q)
     q[GR_KW] = o->kw;
     q[GR_GW] = o->gw;
     q[GR_MUW] = o->muw;
+    q[GR_MUD] = o->mud;
+    q[GR_2021] = o->c2021;
 }
 
 /* What the scene uses: bit masks per category and the history layout. */
 struct gr_use {
     int n, d, t, r, w;
     int tang_hist, rescale;
-    int h_a, h_roll, h_twist, h_touch, width;
+    int h_a, h_roll, h_twist, h_touch, h_dyn, width;
 };
 
 static struct gr_use uses(const struct pair *p)
@@ -505,6 +567,7 @@ static struct gr_use uses(const struct pair *p)
     u.h_roll = (u.r >> GR_R_SDS) & 1 ? (off += 3) - 3 : -1;
     u.h_twist = u.w & ~(1 << GR_W_NONE) ? off++ : -1;
     u.h_touch = (u.n >> GR_N_JKR) & 1 ? off++ : -1;
+    u.h_dyn = u.t & (1 << GR_T_HISTORY_STATIC | 1 << GR_T_MINDLIN_STATIC) ? off++ : -1;
     u.width = off;
     return u;
 }
@@ -680,6 +743,8 @@ static void describe(const struct pair *p, struct pair_caps *c)
         pair_caps_define(c, "GR_H_ROLL", "%d", u.h_roll);
     if (u.h_twist >= 0)
         pair_caps_define(c, "GR_H_TWIST", "%d", u.h_twist);
+    if (u.h_dyn >= 0)
+        pair_caps_define(c, "GR_H_DYN", "%d", u.h_dyn);
 }
 
 const struct pair_style pair_style_granular = {

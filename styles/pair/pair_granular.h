@@ -1,6 +1,6 @@
 /* pair_granular.h - the sub-models of LAMMPS's granular contact model
- * (pair_style granular, 29 Sep 2021, plus LAMMPS 2024's damping
- * coeff_restitution), shared by the pair style
+ * (pair_style granular as today's LAMMPS has it, or 29 Sep 2021's with
+ * -compat lammps2021), shared by the pair style
  * (styles/pair/pair_granular.c) and fix wall/gran granular
  * (styles/fix/fix_wall_gran.c): one contact's model, its parsing and packing. */
 #ifndef GR_PAIR_GRANULAR_H
@@ -14,8 +14,10 @@ struct gr_one {
     int nm, dm, tm, rm, wm, ld; /* sub-models (GR_N_* ...), limit_damping */
     double kn, damp, coh, E, nu;
     double kt, gt, mu, kr, gr, mur, kw, gw, muw;
+    double mud;                 /* /static tangential models: dynamic friction (mu: static) */
+    int c2021;                  /* -compat lammps2021: LAMMPS 29Sep2021's conversions */
     double cutoff;              /* -1: none */
-    double e;                   /* coeff_restitution: e as given (mixed, then converted) */
+    double e;                   /* tsuji, coeff_restitution: e as given (mixed, then converted) */
     int ktnull;                 /* the Mindlin kt was NULL (8 G*) */
 };
 
@@ -31,8 +33,10 @@ int granular_parse(struct gravel *g, struct gr_one *o, int argc, char **argv,
                    const char *const *stop, int allow_cutoff, const char *who);
 /* The GR_NPARAM coefficients of o (kernels/param_layout.h). */
 void granular_pack(const struct gr_one *o, double *q);
-/* Tsuji's damping coefficient for restitution e (LAMMPS's polynomial fit). */
-double granular_tsuji(double e);
+/* Tsuji's damping coefficient for restitution e (LAMMPS's polynomial fit,
+ * Marshall 2009 eq. 53), times sqrt(2) unless lammps2021 (LAMMPS 2 Sep 2026,
+ * GranSubModDampingTsuji::init: Tsuji 1992's effective-mass convention). */
+double granular_tsuji(double e, int lammps2021);
 /* damping coeff_restitution (LAMMPS 2024 GranSubModDampingCoeffRestitution::
  * init): the damping coefficient of restitution e for normal model nm,
  * -2 ln e / sqrt(pi^2 + ln^2 e) for hooke (the linear spring-dashpot's exact

@@ -17,20 +17,23 @@ granular_jkr_hold must also show the JKR contact holding beyond touch up to the
 analytic pull-off distance (LAMMPS pulloff_distance, 0.03371 here): the last
 frame with a force has a separation below it, the next one above.
 
-granular_material (7 REAL of history per contact) rerun with a rebuild every
-step (neigh_modify check no) must give bit-identical dumps: the wide history
-rows follow their contacts through every rebuild and re-sort.
+granular_material (7 REAL of history per contact) run in gravel's default
+mode with a rebuild every step (neigh_modify check no) must give the dumps of
+the deck's own rebuilds, bit for bit: the wide history rows follow their
+contacts through every rebuild and re-sort.
 
 Every deck runs with -compat lammps2021, the mode that reproduces that
-version where it is not physical (doc/lammps.md, Compatibility); only
-granular_owner_flip, granular_jkr_pulloff and the jkr wall decks depend on it.
+version (doc/lammps.md, Compatibility); by default gravel follows today's
+LAMMPS (tsuji's sqrt(2), mixing, dmt's Coulomb load, marshall's twist
+stiffness, the wall conversions: tests/scripts/lammps_granular_today.py).
 
 granular_wall_jkr_plane must also show the wall contact held beyond touch up
 to the reach: LAMMPS 2021's wall pull-off distance with -compat lammps2021
-(0.00210 here), the physical flat-wall one without it (0.00766). granular_owner_flip
-must also depart from LAMMPS without it (relative 1e-3 or more): by default
-gravel keeps the rolling and twisting history LAMMPS negates when a pair
-changes owner."""
+(0.00210 here), the physical flat-wall one without it (0.00766). Without it,
+granular_owner_flip (jkr with damping tsuji) must be refused as today's
+LAMMPS refuses it, and with damping viscoelastic depart from its -compat run
+(relative 1e-3 or more): by default gravel keeps the rolling and twisting
+history LAMMPS 2021 negates when a pair changes owner (and marshall's kt)."""
 import glob
 import math
 import os
@@ -115,26 +118,45 @@ def check_wall_hold(deck, got):
         print(f"{'PASS' if ok else 'FAIL'} granular_wall_jkr_hold_{label}")
 
 
-def check_rebuilds(deck, got):
+def check_rebuilds(deck):
+    """gravel's default mode (no owner emulation): the same dumps with a
+    rebuild every step as with the deck's rebuilds"""
     import tempfile
-    text = open(deck).read().replace("check yes", "check no")
-    with tempfile.TemporaryDirectory() as tmp:
-        open(os.path.join(tmp, "in.every"), "w").write(text)
-        r = run_gravel("in.every", tmp)
-        every = read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {}
+    dumps = []
+    for check in ("check yes", "check no"):
+        text = open(deck).read().replace("check yes", check)
+        with tempfile.TemporaryDirectory() as tmp:
+            open(os.path.join(tmp, "in.every"), "w").write(text)
+            r = run_gravel("in.every", tmp)
+            dumps.append(read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {})
+    got, every = dumps
     same = every == got and len(got) > 1
     print(f"  granular_material with a rebuild every step: {'identical' if same else 'differs'}")
     print(f"{'PASS' if same else 'FAIL'} granular_history_every_rebuild")
 
 
 def check_default_departs(deck, ref):
+    """without -compat: the deck's jkr with damping tsuji is refused (today's
+    LAMMPS); with damping viscoelastic instead, the default mode departs from
+    the -compat run of the same deck (owner flips, marshall's kt)"""
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         r = run_gravel(deck, tmp)
-        got = read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {}
-    _, worst, where = compare("default", got, ref)
-    print(f"  granular_owner_flip without -compat: max relative difference {worst:.3g} {where}")
-    print(f"{'PASS' if got and worst >= 1e-3 else 'FAIL'} granular_owner_flip_default_physical")
+    refused = r.returncode != 0 and "Cannot use tsuji model with a cohesive normal model, jkr" \
+        in r.stdout + r.stderr
+    print(f"{'PASS' if refused else 'FAIL'} granular_owner_flip_default_refuses_tsuji_jkr")
+    text = open(deck).read().replace("damping tsuji", "damping viscoelastic")
+    runs = []
+    for extra in ((), COMPAT):
+        with tempfile.TemporaryDirectory() as tmp:
+            open(os.path.join(tmp, "in.visc"), "w").write(text)
+            r = run_gravel("in.visc", tmp, extra)
+            runs.append(read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {})
+    _, worst, where = compare("default", runs[0], runs[1])
+    print(f"  granular_owner_flip (viscoelastic) without -compat: max relative difference "
+          f"{worst:.3g} {where}")
+    print(f"{'PASS' if runs[0] and runs[1] and worst >= 1e-3 else 'FAIL'} "
+          "granular_owner_flip_default_physical")
 
 
 def main():
@@ -160,7 +182,7 @@ def main():
         if name == "granular_jkr_hold":
             check_hold(got)
         if name == "granular_material":
-            check_rebuilds(deck, got)
+            check_rebuilds(deck)
         if name == "granular_wall_jkr_plane":
             check_wall_hold(deck, got)
         if name == "granular_owner_flip":

@@ -179,12 +179,12 @@ def law_lines(law, mat, e, mu, wall, v, reff, meff):
         return lines, tsuji_cd(e)
     kn, kt = 4.0 / 3.0 * es, 8.0 * gs
     if law == "granular":
-        # hertz/material takes E and nu; pair granular mixes E* = E / (2 (1 - nu^2)), LAMMPS
-        # 2021's fix wall/gran uses kn = 4/3 E / (2 (1 - nu)): E' = 2 E / (1 + nu) gives the
-        # rigid plane's E / (1 - nu^2). kt = 8 G* given explicitly (the wall's NULL kt is
-        # another conversion); gt = 1: eta_t = eta_n, as gran's gamma_t = gamma_n;
-        # viscoelastic damp = gran's gamma_n (the same ODE)
-        Ein = 2 * E / (1 + nu) if wall else E
+        # hertz/material takes E and nu; pair granular mixes E* = E / (2 (1 - nu^2)), and
+        # fix wall/gran uses the same kn = 4/3 E / (2 (1 - nu^2)) of the wall's own E (today's
+        # LAMMPS): E' = 2 E gives the rigid plane's E / (1 - nu^2). kt = 8 G* given
+        # explicitly; gt = 1: eta_t = eta_n, as gran's gamma_t = gamma_n; viscoelastic damp =
+        # gran's gamma_n (the same ODE)
+        Ein = 2 * E if wall else E
         gam = gran_gamma(es, reff, meff, v, e)
         model = ("hertz/material %.10g %.10g %.10g damping viscoelastic tangential mindlin %.10g 1 "
                  "%.10g" % (Ein, gam, nu, kt, mu))

@@ -57,11 +57,11 @@ def mass(d, rho=RHO):
 
 
 def kn_of(kind, wall=False, E=E_MAT, nu=NU):
-    """the normal stiffness gravel keeps: hooke's kn; 4/3 E* (pair, E* =
-    E / (2 (1 - nu^2))); LAMMPS 2021's wall 4/3 E / (2 (1 - nu))"""
+    """the normal stiffness gravel keeps: hooke's kn; 4/3 E* (pair and,
+    today's LAMMPS, wall: E* = E / (2 (1 - nu^2)))"""
     if kind == "hooke":
         return KN
-    return 4.0 / 3.0 * E / (2 * (1 - nu) if wall else 2 * (1 - nu * nu))
+    return 4.0 / 3.0 * E / (2 * (1 - nu * nu))
 
 
 def damp_of(kind, e):

@@ -593,7 +593,7 @@ TEST(granular_mesh_equals_plane)
     static const char *const model[] = {
         "granular hertz/material 50000 200 0.3 tangential mindlin NULL 1.0 0.4 "
         "rolling sds 300 3 0.02 twisting marshall",
-        "granular dmt 50000 0.5 0.3 2.0 damping tsuji tangential mindlin_rescale/force 3000 "
+        "granular dmt 50000 0.5 0.3 2.0 damping mass_velocity tangential mindlin_rescale/force 3000 "
         "1.0 0.4 rolling sds 300 3 0.02 twisting sds 100 1 0.01"};
     const char *deck = "units lj\natom_style sphere\nboundary f f f\n"
                        "region b block -6 6 -6 6 -1 6\ncreate_box 1 b\n"

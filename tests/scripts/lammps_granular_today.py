@@ -1,0 +1,340 @@
+#!/usr/bin/python3
+"""lammps_granular_today.py - gravel's default pair granular and fix wall/gran
+granular follow today's LAMMPS (doc/lammps.md), checked on setups of LAMMPS's
+own granular unit cases (lammps/lammps, unittest/granular/tests/*.yaml): each
+case's deck is written here as a gravel deck and gravel's positions,
+velocities, angular velocities and torques after each run segment must match
+the case's reference values (copied below, with the file they come from) to
+1e-8 relative (relative to the largest magnitude of that quantity in that
+segment; a quantity that is exactly zero in LAMMPS must be below 1e-12 in
+gravel).
+
+- dem01-hertz-tsuji-3d-si.yaml (LAMMPS 4 Jul 2026 + the tsuji sqrt(2) of
+  GranSubModDampingTsuji::init): two spinning aluminium spheres, head-on,
+  hertz/material, damping tsuji e = 0.5, tangential mindlin NULL.
+- dem03-hertz-tsuji-wall-3d-si.yaml: the same sphere against fix wall/gran
+  granular xplane with the same model (today's wall E* = E / (2 (1 - nu^2))).
+
+- dem04-legacy-hookehistory-grazing-3d-si.yaml: fix wall/gran hooke/history
+  at a grazing impact, generated after LAMMPS's 2026 fix of its energy gain
+  (pull request 5007): gravel's wall runs pair gran/hooke/history's law, which
+  that fix restored, so it matches with and without -compat lammps2021.
+
+Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
+it), mdr, damping mdr, epa/linear, epa/nonlinear, linear_history_classic and
+synchronized_verlet each give an error naming them (check_refusals).
+
+Mixing: two hertz/material tsuji types without pair_coeff 1 2 must run as
+with a pair_coeff 1 2 written from LAMMPS's mixing rules (check_mixing).
+
+The first segment (the collision) also runs under -compat lammps2021 (tsuji
+without sqrt(2), LAMMPS 2021's wall conversion), which must then differ from
+the references (so the test
+sees the switch), and their restitution must be e within the cases' own
+analytic tolerances (0.02 pair, 0.005 wall: LAMMPS's collision_restitution and
+wall_restitution analytic models) in the default mode only."""
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from physics_lammps import GRAVEL, read_dump  # noqa: E402
+
+TOL = 1e-8
+ZERO = 1e-12
+FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz")
+GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9))
+
+PAIR_DECK = """units si
+dimension 3
+boundary f f f
+atom_style sphere
+region box block -0.2 0.2 -0.1 0.1 -0.1 0.1 units box
+create_box 1 box
+create_atoms 1 single -0.002550 0.0 0.0 units box
+create_atoms 1 single 0.002550 0.0 0.0 units box
+set group all diameter 0.005 density 2700.0
+group left id 1
+group right id 2
+velocity left set 2.0 0.0 0.0
+velocity right set -2.0 0.0 0.0
+set group left omega 0.0 0.0 22.0
+set group right omega 0.0 0.0 -22.0
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0
+timestep 1.0e-8
+pair_style granular
+pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
+fix integr all nve/sphere
+"""
+
+WALL_DECK = """units si
+dimension 3
+boundary f f f
+atom_style sphere
+region box block -0.05 0.012 -0.012 0.012 -0.012 0.012 units box
+create_box 1 box
+create_atoms 1 single -0.0026 0.0 0.0 units box
+set group all diameter 0.005 density 2700.0
+velocity all set 2.0 0.0 0.0
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0
+timestep 1.0e-8
+pair_style granular
+pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
+fix integr all nve/sphere
+fix xwall all wall/gran granular hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4 xplane NULL 0.0
+"""
+
+GRAZE_DECK = """units si
+dimension 3
+boundary p p f
+atom_style sphere
+region box block -0.2 0.2 -0.05 0.05 -0.05 0.1 units box
+create_box 1 box
+create_atoms 1 single 0.0 0.0 0.002550 units box
+set group all diameter 0.005 density 2700
+velocity all set 3.7839 0.0 -0.94345
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0
+timestep 1e-08
+pair_style gran/hooke/history 2.0e7 NULL 4300 NULL 0.5 1
+pair_coeff * *
+fix integr all nve/sphere
+fix zwall all wall/gran hooke/history 2.0e7 NULL 4300 NULL 0.5 1 zplane 0.0 NULL
+"""
+
+# {segment: {atom: [x y z vx vy vz omegax omegay omegaz tqx tqy tqz]}}
+# unittest/granular/tests/dem01-hertz-tsuji-3d-si.yaml (run_pos, run_vel, run_omega, run_torque)
+PAIR_REF = {
+    0: {1: [-2.4980771847769199e-03, 0, 0, 1.8175852473916858e+00, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.4980771847769199e-03, 0, 0, -1.8175852473916858e+00, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+    1: {1: [-2.5034867026327494e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.5034867026327494e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+    2: {1: [-2.5134838795636545e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
+        2: [2.5134838795636545e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
+}
+# unittest/granular/tests/dem03-hertz-tsuji-wall-3d-si.yaml
+WALL_REF = {
+    0: {1: [-2.4926116685070137e-03, 0, 0, 7.1068571385515955e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
+    1: {1: [-2.5034880148754384e-03, 0, 0, -9.9974392334184659e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
+}
+
+# unittest/granular/tests/dem04-legacy-hookehistory-grazing-3d-si.yaml (generated after
+# LAMMPS pull request 5007, the fix wall/gran hooke/history grazing-impact fix of 2026)
+GRAZE_REF = {
+    0: {1: [2.0432066856505740e-04, 0, 2.4990735628708334e-03,
+            3.7553395032095160e+00, 0, -8.8632900641903323e-01,
+            0, 2.8560496790483597e+01, 0, 0, 2.4003315845031060e-02, 0]},
+    1: {1: [2.3620950910504049e-04, 0, 2.5015392070110425e-03,
+            2.8497777743815123e+00, 0, 9.2469027185000185e-01,
+            0, 9.3412222561848876e+02, 0, 0, 0, 0]},
+    2: {1: [2.5900773130010181e-04, 0, 2.5089367291857272e-03,
+            2.8497777743815123e+00, 0, 9.2469027185000185e-01,
+            0, 9.3412222561848876e+02, 0, 0, 0, 0]},
+}
+
+# name, deck, run segments, reference, impact speed and restitution tolerance (None: no
+# restitution check), whether -compat lammps2021 must differ (False: must match too)
+CASES = (
+    ("dem01-hertz-tsuji-3d-si", PAIR_DECK, (2600, 1500, 1000), PAIR_REF, 2.0, 0.02, True),
+    ("dem03-hertz-tsuji-wall-3d-si", WALL_DECK, (5500, 1500), WALL_REF, 2.0, 0.005, True),
+    ("dem04-legacy-hookehistory-grazing-3d-si", GRAZE_DECK, (5400, 1000, 800), GRAZE_REF,
+     None, None, False),
+)
+
+
+def run(name, deck, segments, extra=()):
+    """gravel on deck + one `run` per segment; {segment: {id: values}} or None"""
+    text = deck + "dump d all custom 100 out.dump id " + " ".join(FIELDS) + "\n"
+    text += "dump_modify d sort id format float %.17g\n"
+    text += "".join(f"run {n}\n" for n in segments)
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(os.path.join(tmp, "in.case"), "w") as f:
+            f.write(text)
+        r = subprocess.run([GRAVEL, "-in", "in.case", "-log", "none", *extra], cwd=tmp,
+                           capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed on {name}: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None
+        frames = read_dump(os.path.join(tmp, "out.dump"))
+    out, step = {}, 0
+    for k, n in enumerate(segments):
+        step += n
+        if step not in frames:
+            print(f"  {name}: no dump at step {step}")
+            return None
+        out[k] = frames[step]
+    return out
+
+
+def worst_error(got, ref):
+    worst, where = 0.0, ""
+    for seg, rows in ref.items():
+        if seg not in got:
+            continue
+        for label, c0 in GROUPS:
+            scale = max(abs(v) for vals in rows.values() for v in vals[c0:c0 + 3])
+            for tag, vals in rows.items():
+                for c in range(c0, c0 + 3):
+                    a, b = got[seg][tag][c], vals[c]
+                    err = abs(a - b) / scale if scale > 0 else abs(a) / ZERO
+                    if err > worst:
+                        worst, where = err, f"segment {seg} atom {tag} {FIELDS[c]}"
+    return worst, where
+
+
+MIX_DECK = """units lj
+atom_style sphere
+boundary f f f
+region box block -4 4 -4 4 -4 4
+create_box 2 box
+create_atoms 1 single -0.5 0.0 0.0 units box
+create_atoms 2 single 0.45 0.3 0.05 units box
+set type 1 diameter 1.0 density 1.5
+set type 2 diameter 0.8 density 2.5
+group a1 id 1
+group a2 id 2
+velocity a1 set 1.0 0.1 0.0 units box
+velocity a2 set -1.0 0.0 0.2 units box
+set atom 2 omega 0.0 0.0 3.0
+pair_style granular
+pair_coeff 1 1 hertz/material 100000.0 0.5 0.3 damping tsuji tangential mindlin NULL 1.0 0.5 rolling sds 1000.0 20.0 0.1 twisting marshall
+pair_coeff 2 2 hertz/material 150000.0 0.7 0.2 damping tsuji tangential mindlin NULL 0.8 0.4 rolling sds 800.0 10.0 0.2 twisting marshall
+{cross}
+neighbor 0.2 bin
+timestep 0.0001
+fix 1 all nve/sphere
+run 3000
+"""
+
+
+def check_mixing():
+    """two hertz/material tsuji types mixed as today's LAMMPS mixes
+    (GranularModel::mix_coeffs): the run equals one with pair_coeff 1 2 written
+    out by hand from LAMMPS's rules: E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)
+    (given as E' = 2 (1 - nu'^2) E*, nu' = sqrt(nu1 nu2), so that pair_coeff's
+    own conversion gives kn = 4/3 E*), e, gt, mu and the rolling coefficients
+    geometric, the NULL kt 8 G*(E*, nu') given explicitly."""
+    E1, nu1, E2, nu2 = 100000.0, 0.3, 150000.0, 0.2
+    es = 1 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+    nu = (nu1 * nu2) ** 0.5
+    kt = 8 / (2 * (2 * (2 - nu) * (1 + nu) / es))
+    g = lambda a, b: (a * b) ** 0.5  # noqa: E731
+    cross = ("pair_coeff 1 2 hertz/material %.17g %.17g %.17g damping tsuji tangential mindlin "
+             "%.17g %.17g %.17g rolling sds %.17g %.17g %.17g twisting marshall"
+             % (2 * (1 - nu * nu) * es, g(0.5, 0.7), nu, kt, g(1.0, 0.8), g(0.5, 0.4),
+                g(1000.0, 800.0), g(20.0, 10.0), g(0.1, 0.2)))
+    out = []
+    for text in (MIX_DECK.format(cross=""), MIX_DECK.format(cross=cross)):
+        out.append(run_deck(text))
+    ok = all(o is not None for o in out)
+    worst = 0.0
+    if ok:
+        for tag in out[0]:
+            scale = [max(abs(out[1][t][c]) for t in out[1]) or 1 for c in range(12)]
+            for c in range(12):
+                worst = max(worst, abs(out[0][tag][c] - out[1][tag][c]) / scale[c])
+        ok = worst <= 1e-10 and abs(out[0][1][3] - 1.0) > 1e-3  # and they collided
+    print(f"  mixing: mixed 1 2 vs its hand-written pair_coeff: worst relative {worst:.3e}")
+    print(f"{'PASS' if ok else 'FAIL'} lammps_today_mixing")
+    return ok
+
+
+def run_deck(text):
+    """the final state {id: values} of deck text (write_dump at its end)"""
+    text += "write_dump all custom final.dump id " + " ".join(FIELDS) + \
+        " modify sort id format float %.17g\n"
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(os.path.join(tmp, "in.mix"), "w") as f:
+            f.write(text)
+        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none"], cwd=tmp,
+                           capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None
+        frames = read_dump(os.path.join(tmp, "final.dump"))
+    return frames[max(frames)]
+
+
+REFUSE_HEAD = """units lj
+atom_style sphere
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+pair_style granular
+"""
+# (name, command, extra arguments, the error it must give)
+REFUSALS = (
+    ("tsuji_jkr", "pair_coeff * * jkr 1e4 0.5 0.3 50 damping tsuji tangential mindlin NULL 1 0.5",
+     (), "Cannot use tsuji model with a cohesive normal model, jkr"),
+    ("tsuji_dmt_wall", "fix w all wall/gran granular dmt 1e4 0.5 0.3 5 damping tsuji tangential "
+     "linear_history 100 1 0.5 zplane 0 NULL", (),
+     "Cannot use tsuji model with a cohesive normal model, dmt"),
+    ("mdr", "pair_coeff * * mdr 1e7 0.3 1e5 0.1 0.5 0.5 damping mdr 1 tangential "
+     "linear_history 1 1 0.5", (), "normal model 'mdr' of LAMMPS's pair granular is not supported"),
+    ("epa_linear", "pair_coeff * * epa/linear 1 2 3 4 tangential linear_history 1 1 0.5", (),
+     "normal model 'epa/linear' of LAMMPS's pair granular is not supported"),
+    ("epa_nonlinear", "pair_coeff * * epa/nonlinear 1 2 3 4 tangential linear_history 1 1 0.5",
+     (), "normal model 'epa/nonlinear' of LAMMPS's pair granular is not supported"),
+    ("damping_mdr", "pair_coeff * * hooke 1 1 damping mdr 1 tangential linear_history 1 1 0.5",
+     (), "damping model 'mdr' of LAMMPS's pair granular is not supported"),
+    ("classic", "pair_coeff * * hooke 1 1 tangential linear_history_classic 1 1 0.5", (),
+     "tangential model 'linear_history_classic' of LAMMPS's pair granular is not supported"),
+    ("synchronized_verlet", "pair_coeff * * hooke 1 1 tangential linear_history 1 1 0.5 "
+     "synchronized_verlet", (), "synchronized_verlet (LAMMPS's half-step normal"),
+)
+
+
+def check_refusals():
+    """LAMMPS's models gravel lacks, and tsuji with a cohesive normal model
+    (today's LAMMPS), are refused naming the model; -compat lammps2021 takes
+    tsuji with jkr as LAMMPS 2021 did"""
+    bad = 0
+    for name, cmd, extra, want in REFUSALS + (("tsuji_jkr_compat", REFUSALS[0][1],
+                                               ("-compat", "lammps2021"), None),):
+        r = subprocess.run([GRAVEL, "-log", "none", *extra], input=REFUSE_HEAD + cmd + "\n",
+                           capture_output=True, text=True, timeout=120)
+        out = r.stdout + r.stderr
+        ok = r.returncode == 0 if want is None else (r.returncode != 0 and want in out)
+        msg = [w for w in out.splitlines() if "ERROR" in w]
+        print(f"  {name}: {msg[0][msg[0].index('ERROR'):] if msg else 'accepted'}")
+        label = "compat2021_takes_tsuji_jkr" if want is None else "refuses_" + name
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{label}")
+        bad += not ok
+    return bad
+
+
+def main():
+    failed = 0 if check_mixing() else 1
+    failed += check_refusals()
+    for name, deck, segs, ref, vin, etol, differs in CASES:
+        got = run(name, deck, segs)
+        ok = got is not None
+        if ok:
+            worst, where = worst_error(got, ref)
+            ok = worst <= TOL
+            print(f"  {name}: worst relative error {worst:.3e} ({where})")
+            if vin is not None:
+                # restitution: the rebound speed after the contact (segment 1) over vin
+                e = abs(got[1][1][3]) / vin
+                eok = abs(e - 0.5) <= etol
+                print(f"  {name}: restitution {e:.6f} (e = 0.5, tolerance {etol})")
+                ok = ok and eok
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}")
+        failed += not ok
+        old = run(name, deck, segs[:1], ("-compat", "lammps2021"))
+        d = worst_error(old, ref)[0] if old else float("nan")
+        ok = old is not None and (d > 1e-4 if differs else d <= TOL)
+        print(f"  {name} -compat lammps2021: differs from today's LAMMPS by {d:.3e}")
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}_compat2021_"
+              f"{'differs' if differs else 'same'}")
+        failed += not ok
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
