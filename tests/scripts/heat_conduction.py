@@ -21,7 +21,12 @@ custom and compute property/atom (through compute reduce).
    temperature Tw: T_n from the recurrence T += dt G (Tw - T) / (m cp), 1e-12.
 4. Restart: run 600 = run 300 + write_restart + read_restart + run 300, the
    temperatures bit for bit.
-5. Bad input: clear errors (heat without the properties, wall heat without
+5. Order independence: 64 pressed spheres settling on a hot wall (pair and
+   wall conduction, temperatures set by an atom-style variable) gives
+   bit-identical temperatures and heat flows with the cell sort every step or
+   never and one work-item per work-group (GRAVEL_WORKGROUP=1): the heat flow
+   is gathered in partner order, like the forces.
+6. Bad input: clear errors (heat without the properties, wall heat without
    its temperature, negative temperature, dumping an absent property)."""
 import math
 import os
@@ -98,6 +103,33 @@ RESTART_A = PAIR.format(t2=2, model="area", k1=3.0, k2=3.0, cp="constant 2.0", n
     "dump_modify d format float %.17g\nrun 300")
 
 
+BED = """units lj
+atom_style sphere
+boundary p p f
+region box block 0 4 0 4 0 8 units box
+create_box 1 box
+lattice sc 1.0
+region fill block 0 4 0 4 0.6 4.5 units box
+create_atoms 1 region fill
+set group all diameter 1.02 density 1.0
+fix prop all property/atom temperature heatflow
+variable t atom 0.1*id
+set group all temperature v_t
+pair_style granular
+pair_coeff * * hertz 2000.0 20.0 tangential linear_history 500.0 0.5 0.5 heat area 5.0
+fix w all wall/gran granular hertz 2000.0 20.0 tangential linear_history 500.0 0.5 0.5 &
+    heat radius 3.0 zplane 0.5 NULL temperature 10.0
+fix g all gravity 1.0 vector 0 0 -1
+fix nve all nve/sphere
+fix hf all heat/flow constant 1.0
+atom_modify sort {sort} 1.0
+timestep 0.001
+dump d all custom 300 out.dump id temperature heatflow
+dump_modify d format float %.17g sort id
+run 300
+"""
+
+
 def thermo(tmp):
     rows, on = [], False
     for line in open(os.path.join(tmp, "log.txt")):
@@ -157,6 +189,16 @@ def main():
                                     n=1000)),
             start(t[2], WALL),
             start(t[3], RESTART_A)]
+    beds = [tempfile.TemporaryDirectory() for _ in range(3)]
+    for k, (sort, wg) in enumerate(((1, None), (0, None), (1, "1"))):
+        with open(os.path.join(beds[k].name, "in.deck"), "w") as fh:
+            fh.write(BED.format(sort=sort))
+        env = dict(os.environ)
+        if wg:
+            env["GRAVEL_WORKGROUP"] = wg
+        runs.append(subprocess.Popen([GRAVEL, "-in", "in.deck", "-log", "none", "-echo", "none"],
+                                     cwd=beds[k].name, stdout=subprocess.PIPE,
+                                     stderr=subprocess.STDOUT, text=True, env=env))
     outs = [p.communicate(timeout=600)[0] for p in runs]
     rcs = [p.returncode == 0 for p in runs]
     pair_check(t[0], "heat_area", 3.0 * math.pi * a * a, m, (2.0, 2.0), rcs[0], outs[0])
@@ -185,7 +227,18 @@ def main():
               if same else f"{one[600]} vs {two[600]}")
     else:
         check(False, "heat_restart", outs[3][-600:])
-    for x in tmps:
+    # order independence
+    if all(rcs[4:7]):
+        txt = [open(os.path.join(b.name, "out.dump")).read() for b in beds]
+        heated = read_dump(os.path.join(beds[0].name, "out.dump"))[300]
+        moved = sum(1 for i, r in heated.items() if abs(r[0] - 0.1 * i) > 1e-6)
+        check(txt[0] == txt[1] == txt[2] and moved > 10, "heat_order_independent",
+              f"{moved} of 64 temperatures changed; dumps identical with sort 1, sort 0, "
+              f"GRAVEL_WORKGROUP=1" if txt[0] == txt[1] == txt[2] else "dumps differ")
+    else:
+        check(False, "heat_order_independent", next(o for o, r in zip(outs[4:], rcs[4:])
+                                                      if not r)[-600:])
+    for x in tmps + beds:
         x.cleanup()
     # bad input
     one = HEAD + "create_atoms 1 single 0 0 0 units box\n"
