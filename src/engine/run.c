@@ -219,8 +219,6 @@ static void post_neighbor(struct gravel *g)
             g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
 }
 
-/* Force computation: pair (or clear), then every post_force fix; their
- * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
 /* HAS_HEAT: the heat records of ncontact contacts' incidences (two each,
  * kernels/pair_loop.cl), grown as the contacts grow; without heat the
  * force records stand in (never read). */
@@ -239,6 +237,8 @@ static cl_mem heat_records(struct gravel *g, size_t ncontact)
     return e->recq;
 }
 
+/* Force computation: pair (or clear), then every post_force fix; their
+ * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
 static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t)
 {
     struct engine *e = g->eng;
