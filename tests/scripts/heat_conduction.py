@@ -18,7 +18,8 @@ custom and compute property/atom (through compute reduce).
    lambda = G (1/(m cp1) + 1/(m cp2)) and sum m cp T is conserved, from the
    dump).
 3. A sphere resting on a zplane wall/gran granular wall with heat radius k at
-   temperature Tw: T_n from the recurrence T += dt G (Tw - T) / (m cp), 1e-12.
+   temperature Tw: T_n from the recurrence T += dt G (Tw - T) / (m cp), 1e-12;
+   the same sphere in a wall/gran/region block (its floor): the same numbers.
 4. Restart: run 600 = run 300 + write_restart + read_restart + run 300, the
    temperatures bit for bit.
 5. Order independence: 64 pressed spheres settling on a hot wall (pair and
@@ -94,6 +95,10 @@ dump d all custom 100 out.dump id temperature heatflow
 dump_modify d format float %.17g
 run 1000
 """
+
+WALLREG = WALL.replace("zplane -2.0 NULL", "region floor").replace(
+    "fix w all", "region floor block -1.9 1.9 -1.9 1.9 -2 2 units box\nfix w all").replace(
+    "wall/gran granular", "wall/gran/region granular")
 
 RESTART_A = PAIR.format(t2=2, model="area", k1=3.0, k2=3.0, cp="constant 2.0", n=300).replace(
     "run 300", "run 300\nwrite_restart r.bin\nclear\nread_restart r.bin\n"
@@ -189,7 +194,10 @@ def main():
                                     n=1000)),
             start(t[2], WALL),
             start(t[3], RESTART_A)]
+    treg = tempfile.TemporaryDirectory()
+    runs.append(start(treg.name, WALLREG))
     beds = [tempfile.TemporaryDirectory() for _ in range(3)]
+    nfirst = len(runs)
     for k, (sort, wg) in enumerate(((1, None), (0, None), (1, "1"))):
         with open(os.path.join(beds[k].name, "in.deck"), "w") as fh:
             fh.write(BED.format(sort=sort))
@@ -227,8 +235,17 @@ def main():
               if same else f"{one[600]} vs {two[600]}")
     else:
         check(False, "heat_restart", outs[3][-600:])
+    # the region wall: the plane wall's numbers
+    if rcs[4] and rcs[2]:
+        a_, b_ = (read_dump(os.path.join(d, "out.dump")) for d in (t[2], treg.name))
+        check(all(a_[s][1][:2] == b_[s][1][:2] for s in a_), "heat_wall_region",
+              f"T {b_[1000][1][0]:.15g} as the plane wall's")
+    else:
+        check(False, "heat_wall_region", outs[4][-600:])
+    treg.cleanup()
     # order independence
-    if all(rcs[4:7]):
+    rcs, outs = rcs[nfirst:], outs[nfirst:]
+    if all(rcs):
         txt = [open(os.path.join(b.name, "out.dump")).read() for b in beds]
         heated = read_dump(os.path.join(beds[0].name, "out.dump"))[300]
         moved = sum(1 for i, r in heated.items() if abs(r[0] - 0.1 * i) > 1e-6)
@@ -236,8 +253,7 @@ def main():
               f"{moved} of 64 temperatures changed; dumps identical with sort 1, sort 0, "
               f"GRAVEL_WORKGROUP=1" if txt[0] == txt[1] == txt[2] else "dumps differ")
     else:
-        check(False, "heat_order_independent", next(o for o, r in zip(outs[4:], rcs[4:])
-                                                      if not r)[-600:])
+        check(False, "heat_order_independent", next(o for o, r in zip(outs, rcs) if not r)[-600:])
     for x in tmps + beds:
         x.cleanup()
     # bad input
