@@ -60,6 +60,9 @@ struct contact {
     REAL3 w;            /* radi omi + radj omj */
     REAL3 vt;           /* vr - vn n: the tangential relative velocity of the centres */
     REAL3 vtr;          /* vt + n x w: the relative velocity of the contact points */
+#ifdef HAS_HEAT
+    REAL ti, tj;        /* temperatures of i and of the partner (a wall's own) */
+#endif
 };
 
 /* What an evaluator returns for one contact: the force on i (the force on j
@@ -71,6 +74,9 @@ struct contact {
 struct contact_force {
     REAL3 f;
     REAL3 tc, tr;
+#ifdef HAS_HEAT
+    REAL q;             /* heat flowing into i (into j: exactly -q); 0 without a heat model */
+#endif
 };
 
 static inline REAL3 contact_torque_i(const struct contact *c, const struct contact_force *o)
@@ -192,6 +198,9 @@ struct contact_partner {
                                      * point and its angular velocity */
     int vremap;                     /* VREMAP: the partner's image streams with the box */
     REAL3 vimage;                   /* ... at this velocity (kernels/common.cl image_velocity) */
+#ifdef HAS_HEAT
+    REAL twall;                     /* CONTACT_WALL: the wall's temperature */
+#endif
 };
 
 /* The particle arrays and step data every body reads. */
@@ -202,6 +211,9 @@ struct contact_atoms {
     __global REAL *acc;             /* accuracy records (kernels/accuracy.cl) */
     __global int *astep;
     int step;
+#ifdef HAS_HEAT
+    __global const REAL *temp;      /* the atoms' temperatures (contact_atoms_heat) */
+#endif
 };
 
 /* The particle arrays and step data of a kernel's contacts */
@@ -223,10 +235,22 @@ static inline struct contact_atoms contact_atoms_of(__global const REAL *v,
     return a;
 }
 
+/* With HAS_HEAT (fix property/atom temperature heatflow): the atoms'
+ * temperatures the contacts read. */
+#ifdef HAS_HEAT
+#define contact_atoms_heat(a, t) ((a).temp = (t))
+#else
+#define contact_atoms_heat(a, t) (void)(t)
+#endif
+
 /* What a contact gives: the force on i (on j: exactly -f) and the torques
- * on i and j (struct contact_force's two parts). */
+ * on i and j (struct contact_force's two parts); with HAS_HEAT the heat
+ * flowing into i (into j: -q). */
 struct contact_out {
     REAL3 f, ti, tj;
+#ifdef HAS_HEAT
+    REAL q;
+#endif
 };
 
 /* |normal rate| dt > gap of a pair apart (rsq >= radsum^2): the next drift
@@ -274,11 +298,21 @@ static inline struct contact contact_build(const int kind, const int i,
             meff = mj;
         if (pj->mask[j] & pj->freezebit)
             meff = mi;
-        return contact_make(s->del, s->radi, s->radj, s->radi * s->radj / (s->radi + s->radj),
-                            vload3(i, a->v) - vload3(j, a->v), omi, omj, meff);
+        struct contact k = contact_make(s->del, s->radi, s->radj,
+                                        s->radi * s->radj / (s->radi + s->radj),
+                                        vload3(i, a->v) - vload3(j, a->v), omi, omj, meff);
+#ifdef HAS_HEAT
+        k.ti = a->temp[i];
+        k.tj = a->temp[j];
+#endif
+        return k;
     }
     struct contact k = contact_make(s->del, s->radi, 0, wall_reff(s->radi, s->rwall),
                                     vload3(i, a->v) - pj->vwall, omi, pj->omwall, a->rmass[i]);
+#ifdef HAS_HEAT
+    k.ti = a->temp[i];
+    k.tj = pj->twall;
+#endif
     if (s->rgiven >= (REAL)0) { /* LAMMPS: rsq = r^2, then r = sqrt(rsq) */
         k.rsq = s->rgiven * s->rgiven;
         k.r = sqrt(k.rsq);
@@ -354,6 +388,9 @@ static inline void contact_out_set(const struct contact *k, const struct contact
     o->f = cf->f;
     o->ti = contact_torque_i(k, cf);
     o->tj = -k->radj * cf->tc + cf->tr;
+#ifdef HAS_HEAT
+    o->q = cf->q;
+#endif
 }
 
 /* A contact's history row back to its slot: all n REAL when it acted; when
@@ -420,6 +457,12 @@ static inline int contact_begin(const int kind, const int i, const struct contac
         contact_out_set(k, cf, o);                                                             \
     } while (0)
 
+#ifdef HAS_HEAT
+#define CONTACT_HEAT_ZERO(cf) ((cf).q = 0)
+#else
+#define CONTACT_HEAT_ZERO(cf) (void)0
+#endif
+
 /* The one contact body, instantiated for one law: NAME(kind, i, site,
  * partner, atoms, param, h, out) runs steps 1-6 above on the private history
  * row h and returns 1 when the contact acted (out filled), 0 when it did
@@ -437,6 +480,7 @@ static inline int contact_begin(const int kind, const int i, const struct contac
             return 0;                                                                          \
         struct contact_force cf; /* a law may leave it (granular's jkr beyond reach) */        \
         cf.f = cf.tc = cf.tr = (REAL3)(0);                                                     \
+        CONTACT_HEAT_ZERO(cf);                                                                 \
         CONTACT_CALL(ROW, EVAL, &k, p, h, &cf);                                                \
         CONTACT_END(kind, TCOL, i, s, a, &k, p, &cf, o);                                       \
         return 1;                                                                              \

@@ -33,23 +33,25 @@
 /* ---- the particle-particle stage (kernels/pair_loop.cl) ---- */
 
 /* pair_contacts: one work-item per contact; shear is ci when the law keeps
- * no history, omega / rect are v / recf without rotation */
+ * no history, omega / rect are v / recf without rotation; temp / recq (the
+ * temperatures, the incidences' heat records) are v / recf without HAS_HEAT */
 #define KARGS_pair_contacts(X, Y)                                                              \
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CMI, cslot) Y(CM, x) Y(CM, v) Y(CM, omega)          \
     Y(CM, radius) Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param)              \
     Y(I, ntypes) Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box)           \
     Y(M, recf) Y(M, rect) Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup)          \
-    Y(POS_LO, xlo)
+    Y(CM, temp) Y(M, recq) Y(POS_LO, xlo)
 
 /* pair_gather: one work-item per particle, then the fused post_force and
- * final_integrate ops [first, first + npost + nfinal) */
+ * final_integrate ops [first, first + npost + nfinal); recq / heatflow as
+ * pair_contacts' */
 #define KARGS_pair_gather(X, Y)                                                                \
     X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
     Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, v) Y(M, omega) Y(CM, rmass)           \
-    Y(CM, radius) Y(CMI, type) Y(CMU, mask)
+    Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow)
 
-/* force_clear: no pair style */
-#define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque)
+/* force_clear: no pair style (heatflow: f without HAS_HEAT) */
+#define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)
 
 /* ---- the step's check and wrap (kernels/neighbor.cl) ---- */
 
@@ -69,11 +71,15 @@
 
 /* what every wall kernel starts with: the atoms of the group, the wall's
  * history (has_history REAL per slot) and the accuracy records
- * (kernels/accuracy.cl: acc, astep, the wall's code acode, step) */
+ * (kernels/accuracy.cl: acc, astep, the wall's code acode, step); with
+ * HAS_HEAT the atoms' temperatures and heat flows, whether the wall
+ * conducts (wheat) and its temperature twall (temp / heatflow are v / f
+ * without HAS_HEAT) */
 #define KARGS_wall_atoms(X, Y)                                                                 \
     X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
     Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
-    Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step)
+    Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
+    Y(R, twall)
 
 /* the wall's law: one packed parameter set (by_type 0) or the pair style's
  * sets (ntypes x ntypes of nparam REAL) */

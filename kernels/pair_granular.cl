@@ -403,6 +403,9 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
             tw += grw_twist(h + L.htwist, magtwist, kw, gw, muw, Fncrit, c) * n;
     }
 
+#ifdef HAS_HEAT /* the heat sub-model (kernels/gran_heat.cl), on the contact radius a */
+    out->q = gran_heat((int)p[GR_HMODEL], p[GR_HK], a, c->ti, c->tj);
+#endif
     out->f = (REAL3)(n.x * Fntot + fs.x, n.y * Fntot + fs.y, n.z * Fntot + fs.z);
     const REAL3 tor = (REAL3)(n.y * fs.z - n.z * fs.y, n.z * fs.x - n.x * fs.z,
                               n.x * fs.y - n.y * fs.x);

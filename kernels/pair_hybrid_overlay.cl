@@ -34,6 +34,7 @@ static inline void hybrid_overlay_eval(const struct contact *c, __global const R
     const int touch = c->rsq < c->radsum * c->radsum;
     struct contact_force sum, term;
     sum.f = sum.tc = sum.tr = (REAL3)(0);
+    CONTACT_HEAT_ZERO(sum); /* no term conducts heat (pair granular is not a term) */
     HYBRID_TERM(PAIR_TERM0, PAIR_TERM0_OFF, PAIR_TERM0_CONTACT, PAIR_TERM0_HIST)
 #if PAIR_TERMS > 1
     HYBRID_TERM(PAIR_TERM1, PAIR_TERM1_OFF, PAIR_TERM1_CONTACT, PAIR_TERM1_HIST)

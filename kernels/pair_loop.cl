@@ -91,8 +91,9 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     pj.vimage = pj.vremap ? image_velocity(image_count(raw, s.del, Lx, Ly, Lz, xy, xz, yz), hrate)
                           : (REAL3)(0);
 #endif
-    const struct contact_atoms a =
+    struct contact_atoms a =
         contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);
+    contact_atoms_heat(a, temp);
     REAL h[PAIR_ROW ? HIST_N : 3];
     __global REAL *hrow = shear + (size_t)c * HIST_N;
     for (int q = 0; q < (PAIR_ROW ? HIST_N : 3); q++)
@@ -100,6 +101,9 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
     struct contact_out o;
     o.f = o.ti = o.tj = (REAL3)(0);
+#ifdef HAS_HEAT
+    o.q = 0;
+#endif
     const int acted = pair_body(CONTACT_PAIR, i, &s, &pj, &a, p, h, &o);
     contact_hist_store(hrow, h, acted ? PAIR_HIST_N : s.hzero, acted);
     const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
@@ -108,6 +112,13 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #ifdef HAS_ROTATION
     vstore3(o.ti, si, rect);
     vstore3(o.tj, sj, rect);
+#endif
+#ifdef HAS_HEAT /* the heat records, as the forces: exact negatives */
+    recq[si] = o.q;
+    recq[sj] = -o.q;
+#else
+    (void)temp;
+    (void)recq;
 #endif
 }
 #endif /* PAIR_LW == 1 */
@@ -131,6 +142,15 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
         ts += vload3((size_t)s, rect);
 #endif
     }
+#ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
+    REAL qs = 0;
+    for (int s = ioff[i], e = ioff[i + 1]; s < e; s++)
+        qs += recq[s];
+    heatflow[i] = qs;
+#else
+    (void)recq;
+    (void)heatflow;
+#endif
     if (npost + nfinal > 0) {
         struct fused_atom at;
         at.f = fs;
@@ -230,5 +250,10 @@ __kernel void force_clear(KA_PARAMS(force_clear))
     vstore3((REAL3)(0), i, f);
 #ifdef HAS_ROTATION
     vstore3((REAL3)(0), i, torque);
+#endif
+#ifdef HAS_HEAT
+    heatflow[i] = 0;
+#else
+    (void)heatflow;
 #endif
 }

@@ -31,10 +31,11 @@ enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
  * rolling kr, gr, mu_r; twisting kw, gw, mu_w; the dynamic friction coefficient
  * of the /static tangential models (mu above is their static one);
  * 1 where the pair follows LAMMPS 29Sep2021 (-compat lammps2021: dmt's
- * Coulomb load, marshall's twist stiffness), 0 for today's LAMMPS. */
+ * Coulomb load, marshall's twist stiffness), 0 for today's LAMMPS; the heat
+ * model (GR_H_*) and its coefficient. */
 enum gr_param { GR_NMODEL, GR_DMODEL, GR_TMODEL, GR_RMODEL, GR_WMODEL, GR_LIMIT,
                 GR_KN, GR_DAMP, GR_COH, GR_KT, GR_GT, GR_MU, GR_KR, GR_GR, GR_MUR,
-                GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_NPARAM };
+                GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_HMODEL, GR_HK, GR_NPARAM };
 /* LAMMPS's numbering of the sub-models (pair_granular.cpp) */
 enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR };
 enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI,
@@ -44,6 +45,9 @@ enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RE
                      GR_T_HISTORY_STATIC, GR_T_MINDLIN_STATIC /* today's LAMMPS */ };
 enum gr_twist { GR_W_NONE, GR_W_SDS, GR_W_MARSHALL };
 enum gr_roll { GR_R_NONE, GR_R_SDS };
+/* heat conduction (LAMMPS 2023 GranSubModHeat*; kernels/gran_heat.cl): GR_HK is
+ * the conductivity (radius) or the heat transfer coefficient (area) */
+enum gr_heat { GR_H_NONE, GR_H_AREA, GR_H_RADIUS };
 
 /* fix wall/gran granular: the GR_* set, then the history layout of its one
  * model (kernels/fix_wall_gran.cl): tangential history on (0/1), offsets of

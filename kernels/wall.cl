@@ -140,6 +140,29 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
 #define WALL_ADD_TORQUE(torque, i, t) (void)(t)
 #endif
 
+/* Heat conduction through wall contacts (HAS_HEAT; LAMMPS fix wall/gran's
+ * `heat` sub-model with `temperature T`): each contact's heat q into the
+ * atom (the law's, kernels/gran_heat.cl, with the wall at twall) is summed
+ * over the wall's elements in their order and added to the atom's heat
+ * flow of the step, after the pair gather wrote it, when the wall conducts
+ * (wheat: fix wall/gran with a heat model; never fix wall/pair, whose pair
+ * law may carry one). Without HAS_HEAT the arguments are unused. */
+#ifdef HAS_HEAT
+#define WALL_HEAT_BEGIN(a)                                                                     \
+    contact_atoms_heat(a, temp);                                                               \
+    REAL qsum_ = 0
+#define WALL_HEAT_PARTNER(pj) ((pj).twall = twall)
+#define WALL_HEAT_ADD(o) (qsum_ += (o).q)
+#define WALL_HEAT_STORE(i)                                                                     \
+    if (wheat)                                                                                 \
+    heatflow[i] += qsum_
+#else
+#define WALL_HEAT_BEGIN(a) (void)temp, (void)heatflow, (void)wheat, (void)twall
+#define WALL_HEAT_PARTNER(pj) (void)0
+#define WALL_HEAT_ADD(o) (void)0
+#define WALL_HEAT_STORE(i) (void)0
+#endif
+
 /* The reach of a wall contact (radi; a jkr wall's: WALL_REACH_1) and the row
  * index of its touch flag (WALL_HOLD_1; -1: none), both defined where a jkr
  * kernel is instantiated (kernels/fix_wall_gran.cl). */
@@ -171,8 +194,9 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
             return;                                                                            \
         const struct wall_geom w = wall_geom_of(kind, axis, lo, hi, wradius, vwx, vwy, vwz,    \
                                                 cyl_shear, vshear);                            \
-        const struct contact_atoms a =                                                         \
+        struct contact_atoms a =                                                               \
             contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
+        WALL_HEAT_BEGIN(a);                                                                    \
         __global const REAL *p = wall_param(param, by_type, type[i] - 1, ntypes, nparam);      \
         struct contact_site s =                                                                \
             wall_site(i, radius[i], WALL_REACH(JKR, p, radius[i]), has_history, acode);        \
@@ -185,6 +209,7 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
             __global REAL *hrow = history + ((size_t)i * nelem + e) * (size_t)has_history;     \
             struct contact_partner pj;                                                         \
             pj.omwall = (REAL3)(0);                                                            \
+            WALL_HEAT_PARTNER(pj);                                                             \
             s.acts = wall_point(&w, e, xi, s.radi, &s.del, &s.rwall, &pj.vwall);               \
             s.del_lo = wall_gap_lo(s.del, xil);                                                \
             REAL h[WALL_ROW_N(ROW)];                                                           \
@@ -195,10 +220,12 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
             if (acted) {                                                                       \
                 fsum += o.f;                                                                   \
                 tsum += o.ti;                                                                  \
+                WALL_HEAT_ADD(o);                                                              \
             }                                                                                  \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
+        WALL_HEAT_STORE(i);                                                                    \
     }
 
 /* fix wall/pair: the active pair style's law (the pair kernel's,
@@ -622,8 +649,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         }                                                                                      \
         REAL nkey[MESH_SLOTS], nsh[MESH_SLOTS][WALL_ROW_N(ROW)];                               \
         int nnew = 0;                                                                          \
-        const struct contact_atoms a =                                                         \
+        struct contact_atoms a =                                                               \
             contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
+        WALL_HEAT_BEGIN(a);                                                                    \
         __global const REAL *p = p_of(param, by_type, type[i] - 1, ntypes, nparam);            \
         struct contact_site s = wall_site(i, radi, radi, 0, acode);                            \
         s.gated = 1; /* mesh_candidates decided */                                             \
@@ -631,6 +659,7 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         s.approach = APPROACH;                                                                 \
         struct contact_partner pj;                                                             \
         pj.omwall = moving ? vload3(POSE_OMEGA / 3, pose) : (REAL3)(0);                        \
+        WALL_HEAT_PARTNER(pj);                                                                 \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);        \
         const REAL3 rref = (REAL3)(pose[POSE_REF], pose[POSE_REF + 1], pose[POSE_REF + 2]);    \
         for (int c = 0; c < nc; c++) {                                                         \
@@ -659,6 +688,7 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
             }                                                                                  \
             fsum += o.f;                                                                       \
             tsum += o.ti;                                                                      \
+            WALL_HEAT_ADD(o);                                                                  \
             fm -= o.f;                                                                         \
             tm -= cross(cpt - rref, o.f);                                                      \
         }                                                                                      \
@@ -674,6 +704,7 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
+        WALL_HEAT_STORE(i);                                                                    \
         if (want_fmesh) {                                                                      \
             vstore3(fm, 2 * i, fmesh);                                                         \
             vstore3(tm, 2 * i + 1, fmesh);                                                     \

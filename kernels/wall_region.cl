@@ -677,14 +677,16 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
             c2r[k] = k;                                                                        \
         if (has_history && !region_slots(hist, slots, hw, c, nc, c2r))                         \
             return;                                                                            \
-        const struct contact_atoms a =                                                         \
+        struct contact_atoms a =                                                               \
             contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
+        WALL_HEAT_BEGIN(a);                                                                    \
         struct contact_site s = wall_site(i, radi, radi, hw, acode);                           \
         s.gated = 1; /* region_surface decided */                                              \
         s.refine = 0;                                                                          \
         s.hold = WALL_HOLD(JKR, p);                                                            \
         struct contact_partner pj;                                                             \
         pj.omwall = (REAL3)(0);                                                                \
+        WALL_HEAT_PARTNER(pj);                                                                 \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
         for (int ic = 0; ic < nc; ic++) {                                                      \
             __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
@@ -703,7 +705,9 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
             contact_hist_store(hs, h, hw, 1);                                                  \
             fsum += o.f;                                                                       \
             tsum += o.ti;                                                                      \
+            WALL_HEAT_ADD(o);                                                                  \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
+        WALL_HEAT_STORE(i);                                                                    \
     }

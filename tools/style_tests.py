@@ -38,6 +38,7 @@ GRANULAR_SUB = {
     "pair_granular_damping": r"\bdamping\s+(velocity|mass_velocity|viscoelastic|tsuji|"
                              r"coeff_restitution)\b",
     "pair_granular_tangential": r"\btangential\s+(linear_nohistory|linear_history|mindlin)",
+    "pair_granular_heat": r"\bheat\s+(area|radius|none)\b",
     "pair_granular_rolling": r"\brolling\s+sds\b",
     "pair_granular_twisting": r"\btwisting\s+(marshall|sds)\b",
 }

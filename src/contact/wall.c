@@ -45,6 +45,10 @@ struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
         .astep = acc_wall_step(g),
         .acode = acc_wall_code(g, f),
         .step = acc_step(g),
+        .temp = e->heat ? a->temperature : a->v,
+        .heatflow = e->heat ? a->heatflow : a->f,
+        .wheat = e->heat && law->heat,
+        .twall = law->twall,
     };
 }
 

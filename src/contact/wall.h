@@ -36,6 +36,8 @@ struct wall_law {
     int history;                /* REAL of history per element per atom (0: none;
                                  * 3: shear; granular: its sub-models' width) */
     int inclusive;              /* |del| = radius is a contact (LAMMPS wall/gran) */
+    int heat;                   /* conducts heat (a wall/gran heat sub-model) ... */
+    double twall;               /* ... at this temperature (`temperature T`) */
 };
 
 /* History slots per atom of a wall of this geometry. */

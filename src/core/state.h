@@ -78,6 +78,8 @@ struct domain {
 
 /* ---- atoms: host-side structure of arrays (atom_style sphere) ------------- */
 
+enum atom_heat { ATOM_HEAT_T = 1, ATOM_HEAT_Q = 2, ATOM_HEAT_BOTH = 3 };
+
 struct atoms {
     int n, cap;
     int ntypes;
@@ -85,6 +87,8 @@ struct atoms {
     int molecule_flag;      /* 1: atoms carry molecule IDs (LAMMPS atom->molecule_flag) */
     int style_molecular;    /* atom_style hybrid sphere molecular: the IDs belong to the
                              * style (data files carry them), not to fix property/atom */
+    int heat_flag;          /* ATOM_HEAT_* bits: fix property/atom temperature, heatflow
+                             * (LAMMPS atom->temperature_flag, heatflow_flag) */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
     int *order;             /* scratch of atoms_tag_order() */

@@ -317,6 +317,23 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     a->mol[i] = (int64_t)val;
                     count++;
                 }
+        } else if (!strcmp(kw, "temperature")) { /* LAMMPS 2023 Set::process_temperature */
+            if (!(g->atoms.heat_flag & ATOM_HEAT_T))
+                gr_error(g, "cannot set attribute temperature for this atom style (fix "
+                            "property/atom temperature first)");
+            double tv = 0;
+            const double *p = kw_value(g, v[0], "temperature", &tv, buf, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double val = VAL(p, tv, i);
+                    if (!(val >= 0))
+                        gr_error(g, "invalid temperature %g in set command", val);
+                    a->temperature[i] = val;
+                    count++;
+                }
+        } else if (!strcmp(kw, "heatflow")) {
+            gr_error(g, "keyword 'heatflow' is not settable: the heat flow is recomputed every "
+                        "step from the contacts (LAMMPS's set has no heatflow keyword either)");
         } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge")) {
             gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
         } else {

@@ -80,6 +80,9 @@ struct engine {
     double origin[3];           /* device positions are x - origin (0 in double) */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
+    int heat;                   /* the atoms store temperature and heatflow (HAS_HEAT) */
+    cl_mem recq;                /* HAS_HEAT: the incidences' heat records (run.c) */
+    size_t recq_cap;            /* ... their capacity in bytes */
     int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
                                  * at most GR_HIST_MAX) */
     int hist_owner;             /* its last slot is LAMMPS's owner (-compat lammps2021) */

@@ -53,6 +53,7 @@ static int field_on(const struct gravel *g, enum atom_field_when when)
     switch (when) {
     case FW_ROTATION: return g->eng->rotation;
     case FW_MOLECULE: return g->atoms.molecule_flag;
+    case FW_HEAT: return g->atoms.heat_flag != 0;
     default: return 1;
     }
 }
@@ -441,6 +442,8 @@ static int build_options(struct gravel *g, const struct pair_caps *pc, int lmp20
         : e->ocl.fp64 ? " -D SPLIT_POS -D HAS_FP64" /* contact_refine in double */
                       : " -D SPLIT_POS", e->rotation ? " -D HAS_ROTATION" : "",
         e->history ? " -D HAS_HISTORY" : "");
+    if (e->heat)
+        OPT(" -D HAS_HEAT");
     if (e->hist_n != 3)
         OPT(" -D HIST_N=%d", e->hist_n);
     if (lmp2021)
@@ -518,7 +521,10 @@ void eng_prepare(struct gravel *g)
     if (flip_n > 0)
         e->hist_n++;
 
-    e->pair_lw = pair_lanes(g, pc, single, lmp2021);
+    /* heat conduction: temperature and heatflow on the device; the heat
+     * records are written by kernels/pair_loop.cl's one-contact kernel */
+    e->heat = g->atoms.heat_flag == ATOM_HEAT_BOTH;
+    e->pair_lw = e->heat ? 1 : pair_lanes(g, pc, single, lmp2021);
 
     const char *names[MAX_SOURCES], *texts[MAX_SOURCES];
     int n = 0;
@@ -589,6 +595,8 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     if (e->virial)
         clReleaseMemObject(e->virial);
+    if (e->recq)
+        clReleaseMemObject(e->recq);
     free(e->tag_seen);
     free(e->tag_order);
     if (e->hrate)

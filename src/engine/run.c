@@ -219,6 +219,24 @@ static void post_neighbor(struct gravel *g)
             g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
 }
 
+/* HAS_HEAT: the heat records of ncontact contacts' incidences (two each,
+ * kernels/pair_loop.cl), grown as the contacts grow; without heat the
+ * force records stand in (never read). */
+static cl_mem heat_records(struct gravel *g, size_t ncontact)
+{
+    struct engine *e = g->eng;
+    if (!e->heat)
+        return nbr_list(g)->recf;
+    size_t need = (2 * ncontact + 2) * e->rsz;
+    if (!e->recq || need > e->recq_cap) {
+        if (e->recq)
+            clReleaseMemObject(e->recq);
+        e->recq_cap = need + need / 8 + 64 * e->rsz;
+        e->recq = eng_alloc(g, e->recq_cap, "incidence heat records");
+    }
+    return e->recq;
+}
+
 /* Force computation: pair (or clear), then every post_force fix; their
  * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
 static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t)
@@ -230,6 +248,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         /* the contact pipeline: each contact once, then each particle's sum */
         const struct nbr_list *l = nbr_list(g);
         acc_reserve(g);
+        cl_mem recq = heat_records(g, (size_t)l->ncontact);
         struct pair_contacts_args pc = {
             .ncontact = l->ncontact,
             .ci = l->ci,
@@ -256,6 +275,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .step = acc_step(g),
             .hrate = e->hrate,
             .vgroup = e->vgroup,
+            .temp = e->heat ? a->temperature : a->v,
+            .recq = recq,
         };
         nbr_list_box(l, pc.box);
         ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
@@ -282,13 +303,16 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .radius = a->radius,
             .type = a->type,
             .mask = a->mask,
+            .recq = recq,
+            .heatflow = e->heat ? a->heatflow : a->f,
         };
         ka_bind_pair_gather(g, e->k_gather, 0, &pg);
         eng_launch(g, e->k_gather, (size_t)a->n);
     } else {
         acc_reserve(g); /* the wall records */
         const struct force_clear_args fc = {
-            .n = a->n, .f = a->f, .torque = e->rotation ? a->torque : a->f};
+            .n = a->n, .f = a->f, .torque = e->rotation ? a->torque : a->f,
+            .heatflow = e->heat ? a->heatflow : a->f};
         ka_bind_force_clear(g, e->k_clear, 0, &fc);
         eng_launch(g, e->k_clear, (size_t)a->n);
     }

@@ -51,6 +51,7 @@
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
     S_MOLECULE, /* optional: molecule IDs (fix property/atom mol, or the atom style's) */
+    S_HEAT,     /* optional: temperatures and heat flows (fix property/atom temperature) */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -190,6 +191,7 @@ struct image {
     int n;
     ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays; mol NULL: no molecule IDs */
     int style_molecular;        /* atom_style hybrid sphere molecular */
+    int heat_flag;              /* the S_HEAT section's ATOM_HEAT_* bits (0: none) */
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
@@ -619,6 +621,34 @@ static int read_molecule(struct image *im, struct rbuf *r, unsigned seen, char *
     return 1;
 }
 
+/* Optional: the temperatures and heat flows (fix property/atom temperature
+ * heatflow) with the atoms' ATOM_HEAT_* bits. */
+static void write_heat(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    if (!g->atoms.heat_flag)
+        return;
+    size_t at = sect_begin(g, w, S_HEAT);
+    put_i32(g, w, g->atoms.n);
+    put_i32(g, w, g->atoms.heat_flag);
+    put_fields(g, w, FS_HEAT);
+    sect_end(w, at);
+}
+
+static int read_heat(struct image *im, struct rbuf *r, unsigned seen, char *err, size_t errlen)
+{
+    int nh = get_i32(r);
+    im->heat_flag = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (!(seen >> S_ATOMS & 1u) || nh != im->n)
+        BAD("temperatures of %d atoms, not the atoms section's %d", nh, im->n);
+    if (im->heat_flag < 1 || im->heat_flag > ATOM_HEAT_BOTH)
+        BAD("invalid heat properties %d", im->heat_flag);
+    get_fields(im, r, FS_HEAT);
+    return 1;
+}
+
 static void write_pair(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     (void)c;
@@ -855,6 +885,7 @@ static const struct section {
     {S_TYPES, "types", 1, write_types, read_types},
     {S_ATOMS, "atoms", 1, write_atoms, read_atoms},
     {S_MOLECULE, "molecule IDs", 0, write_molecule, read_molecule},
+    {S_HEAT, "temperatures", 0, write_heat, read_heat},
     {S_PAIR, "pair", 1, write_pair, read_pair},
     {S_LIST, "neighbor list", 0, write_list, read_list},
     {S_FIXES, "fixes", 1, write_fixes, read_fixes},
@@ -1290,6 +1321,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
 #undef APPLY_FIELD
     a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
     a->style_molecular = im->mol != NULL && im->style_molecular;
+    a->heat_flag = im->temperature ? im->heat_flag : 0; /* ... temperature heatflow */
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -17,11 +17,14 @@
  *   width  elements per atom
  *   when   runs that hold it on the device: FW_ALWAYS; FW_ROTATION (some
  *          active style needs rotation); FW_MOLECULE (atoms carry molecule IDs,
- *          atoms.molecule_flag). The host array always exists.
+ *          atoms.molecule_flag); FW_HEAT (atoms store a temperature:
+ *          fix property/atom temperature heatflow, atoms.heat_flag). The host
+ *          array always exists.
  *   life   FL_STATE: moves with its atom when the device re-sorts by cell
  *          (neighbor.c); FL_STEP: recomputed every step (forces, torques), not
  *          moved (the force buffer is the re-sort's scratch)
- *   sect   restart section holding it (restart.c): FS_ATOMS or FS_MOLECULE;
+ *   sect   restart section holding it (restart.c): FS_ATOMS, FS_MOLECULE or
+ *          FS_HEAT;
  *          each section writes its fields in table order, n * width raw host
  *          elements each
  *   what   words for allocation errors
@@ -39,13 +42,16 @@
 #include <stdint.h>
 
 enum atom_field_dev { FD_POS, FD_REAL, FD_RAW };
-enum atom_field_when { FW_ALWAYS, FW_ROTATION, FW_MOLECULE };
+enum atom_field_when { FW_ALWAYS, FW_ROTATION, FW_MOLECULE, FW_HEAT };
 enum atom_field_life { FL_STATE, FL_STEP };
-enum atom_field_sect { FS_ATOMS, FS_MOLECULE };
+enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
 
 /* Meanings: tag the global ID (1-based); type 1..ntypes; mask the group bits
  * (bit 0 = "all"); x, v, f, omega, torque xyz per atom; rmass the per-atom
- * mass; image the periodic image counts; mol the molecule ID (0 = none). */
+ * mass; image the periodic image counts; mol the molecule ID (0 = none);
+ * temperature LAMMPS's per-atom temperature and heatflow the heat flowing
+ * into the atom in the step (pair and wall conduction, summed like the
+ * forces; fix heat/flow integrates it). */
 /* clang-format off */
 #define ATOM_FIELDS(X)                                                                       \
     X(tag,    int64_t,  FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "tags")               \
@@ -59,7 +65,9 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE };
     X(radius, double,   FD_REAL, 1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "radii")              \
     X(rmass,  double,   FD_REAL, 1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "masses")             \
     X(image,  int,      FD_RAW,  3, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "image flags")        \
-    X(mol,    int64_t,  FD_RAW,  1, FW_MOLECULE, FL_STATE, FS_MOLECULE, "molecule IDs")
+    X(mol,    int64_t,  FD_RAW,  1, FW_MOLECULE, FL_STATE, FS_MOLECULE, "molecule IDs")       \
+    X(temperature, double, FD_REAL, 1, FW_HEAT,  FL_STATE, FS_HEAT,     "temperatures")       \
+    X(heatflow, double, FD_REAL, 1, FW_HEAT,     FL_STEP,  FS_HEAT,     "heat flows")
 /* clang-format on */
 
 /* Declares one pointer member per field (struct atoms, struct image). */

@@ -211,8 +211,7 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     (void)argc;
     for (int i = 0; i < g->styles.nfix; i++)
         if (!strcmp(g->styles.fix[i]->id, argv[0])) {
-            if (!strcmp(g->styles.fix[i]->style->name, "property/atom"))
-                g->atoms.molecule_flag = 0; /* the molecule IDs go with their fix */
+            property_atom_release(g, g->styles.fix[i]); /* its properties go with it */
             fix_delete(g->styles.fix[i]);
             memmove(&g->styles.fix[i], &g->styles.fix[i + 1],
                     (size_t)(g->styles.nfix - i - 1) * sizeof *g->styles.fix);

@@ -91,7 +91,7 @@ enum fix_flag {
     FIX_STORES_IDS = 1 << 2,
 };
 
-#define FIX_MAX_SOURCES 8
+#define FIX_MAX_SOURCES 10
 
 struct fix;
 struct fused_op;
@@ -203,5 +203,9 @@ void fix_check_time_reset(struct gravel *g);
 void fix_reset_step(struct gravel *g, bigint shift);
 /* Union of NEED_* over all fixes. */
 unsigned fix_needs_all(struct gravel *g);
+
+/* unfix of a fix property/atom: the per-atom properties it defined go
+ * (styles/fix/fix_property_atom.c; nothing for another style). */
+void property_atom_release(struct gravel *g, struct fix *f);
 
 #endif

@@ -334,7 +334,7 @@ void pair_caps_source(struct pair_caps *c, const char *file)
     for (int k = 0; k < c->nsources; k++)
         if (!strcmp(c->sources[k], file))
             return;
-    if (c->nsources < PAIR_MAXTERMS + 1)
+    if (c->nsources < PAIR_MAXTERMS + 2)
         c->sources[c->nsources++] = file;
 }
 

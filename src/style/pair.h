@@ -87,7 +87,7 @@ struct pair_caps {
     int nparam;                 /* packed REALs per type pair */
     /* ---- the run program ---- */
     int nsources;               /* kernel sources, in order */
-    const char *sources[PAIR_MAXTERMS + 1];
+    const char *sources[PAIR_MAXTERMS + 2]; /* + granular's gran_heat.cl */
     const char *eval;           /* 3-vector evaluator (PAIR_EVAL), or NULL */
     const char *eval_row;       /* history-row evaluator (PAIR_EVAL_ROW, pair granular) */
     const char *eval_lanes;     /* eval's law in lane-generic form (kernels/gran_law.cl,

@@ -3,7 +3,8 @@
  * compute reduce and dump custom. One attribute gives a per-atom vector
  * (c_ID), several a per-atom array (c_ID[N] = attribute N). Atoms outside
  * the group get 0. Attributes: id type mass x y z xu yu zu ix iy iz vx vy vz
- * fx fy fz radius diameter omegax omegay omegaz tqx tqy tqz. */
+ * fx fy fz radius diameter omegax omegay omegaz tqx tqy tqz, and temperature,
+ * heatflow (LAMMPS 2023; fix property/atom temperature heatflow). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -14,12 +15,13 @@
 enum attr {
     A_ID, A_TYPE, A_MASS, A_X, A_Y, A_Z, A_XU, A_YU, A_ZU, A_IX, A_IY, A_IZ, A_VX, A_VY, A_VZ,
     A_FX, A_FY, A_FZ, A_RADIUS, A_DIAMETER, A_OMEGAX, A_OMEGAY, A_OMEGAZ, A_TQX, A_TQY, A_TQZ,
-    A_COUNT
+    A_TEMPERATURE, A_HEATFLOW, A_COUNT
 };
 
 static const char *const attr_names[A_COUNT] = {
     "id", "type", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz",
-    "fx", "fy", "fz", "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+    "fx", "fy", "fz", "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
+    "temperature", "heatflow"};
 
 struct property {
     int n;
@@ -50,7 +52,11 @@ static void property_create(struct gravel *g, struct compute *c, int argc, char 
         if (a < 0)
             gr_error(g, "compute property/atom: unknown attribute '%.64s' (id type mass x y z xu "
                         "yu zu ix iy iz vx vy vz fx fy fz radius diameter omegax omegay omegaz "
-                        "tqx tqy tqz)", argv[k]);
+                        "tqx tqy tqz temperature heatflow)", argv[k]);
+        if ((a == A_TEMPERATURE && !(g->atoms.heat_flag & ATOM_HEAT_T)) ||
+            (a == A_HEATFLOW && !(g->atoms.heat_flag & ATOM_HEAT_Q)))
+            gr_error(g, "compute property/atom: atom property %s is not allocated (fix "
+                        "property/atom %s)", argv[k], argv[k]);
         p->attr[p->n++] = a;
     }
     c->peratom_flag = 1;
@@ -77,6 +83,8 @@ static double attr_value(const struct gravel *g, int a, int i)
     case A_DIAMETER: return 2.0 * at->radius[i];
     case A_OMEGAX: case A_OMEGAY: case A_OMEGAZ: return at->omega[3 * i + a - A_OMEGAX];
     case A_TQX: case A_TQY: case A_TQZ: return at->torque[3 * i + a - A_TQX];
+    case A_TEMPERATURE: return at->heat_flag & ATOM_HEAT_T ? at->temperature[i] : 0.0;
+    case A_HEATFLOW: return at->heat_flag & ATOM_HEAT_Q ? at->heatflow[i] : 0.0;
     case A_COUNT: break;
     }
     return 0.0;

@@ -29,13 +29,14 @@
 enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
-    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
+    F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_TEMPERATURE,
+    F_HEATFLOW, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
 };
 
 static const char *const field_names[F_COUNT] = {
     "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
     "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
-    "xs", "ys", "zs", "xsu", "ysu", "zsu", "mol"};
+    "xs", "ys", "zs", "xsu", "ysu", "zsu", "mol", "temperature", "heatflow"};
 
 static int field_is_int(int f)
 {
@@ -101,6 +102,12 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
         if (col->field == F_MOL && !g->atoms.molecule_flag)
             gr_error(g, "dumping an atom property (mol) that isn't allocated (fix property/atom "
                         "mol)");
+        if (col->field == F_TEMPERATURE && !(g->atoms.heat_flag & ATOM_HEAT_T))
+            gr_error(g, "dumping an atom property (temperature) that isn't allocated (fix "
+                        "property/atom temperature)");
+        if (col->field == F_HEATFLOW && !(g->atoms.heat_flag & ATOM_HEAT_Q))
+            gr_error(g, "dumping an atom property (heatflow) that isn't allocated (fix "
+                        "property/atom heatflow)");
         if (col->field != F_COMPUTE)
             continue;
         if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, col->cid, &col->index))
@@ -281,6 +288,8 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
             case F_ID: iv = a->tag[j]; break;
             case F_MOL: iv = a->mol[j]; break;
             case F_TYPE: iv = a->type[j]; break;
+            case F_TEMPERATURE: v = a->temperature[j]; break;
+            case F_HEATFLOW: v = a->heatflow[j]; break;
             case F_X: case F_Y: case F_Z: v = a->x[3 * j + col->field - F_X]; break;
             case F_XU: case F_YU: case F_ZU: {
                 int dim = col->field - F_XU;

@@ -24,7 +24,10 @@
  * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
  * and a history row of its sub-models' width per wall element / region slot
  * (parse_granular); jkr walls hold beyond touch to the pull-off distance
- * (the jkr rows of kernels/fix_wall_gran.h). Meshes take model granular too (not jkr). Unsupported
+ * (the jkr rows of kernels/fix_wall_gran.h). Meshes take model granular too (not jkr).
+ * A granular `heat area|radius k` sub-model conducts heat between the wall,
+ * at `temperature T` (required with it, as LAMMPS 2023), and the atoms
+ * (kernels/gran_heat.cl, kernels/wall.cl WALL_HEAT_*). Unsupported
  * LAMMPS options (keyword contacts) are rejected with a clear error. */
 #include <math.h>
 #include <stdint.h>
@@ -65,6 +68,8 @@ struct wall {
     int region_nsub;            /* previous run (LAMMPS warns when they change) */
     struct region *region;      /* looked up at every init (region delete) */
     int inits;                  /* runs set up so far (-compat lammps2021: tsuji) */
+    int heat, twall_set;        /* a granular heat sub-model; `temperature T` given */
+    double twall;               /* the wall's temperature (LAMMPS 2023 Twall) */
     struct wall_region wreg;
     /* restart: the region's previous displacement and angle per node
      * (LAMMPS Region::prev), applied when the region matches at init */
@@ -260,8 +265,17 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
                     "zcylinder or mesh)", ws);
     }
+    w.heat = w.model == WG_GRANULAR && (int)w.param[GR_HMODEL] != GR_H_NONE;
     while (i < argc) {
-        if (!strcmp(argv[i], "wiggle")) {
+        if (!strcmp(argv[i], "temperature")) { /* LAMMPS 2023: the wall's temperature */
+            arg_need(g, argc, i, 1, "temperature");
+            if (!strncmp(argv[i + 1], "v_", 2))
+                gr_error(g, "fix wall/gran temperature: a variable wall temperature (%.64s) is "
+                            "not supported; give a number", argv[i + 1]);
+            w.twall = arg_double(g, argv[i + 1], "wall temperature");
+            w.twall_set = 1;
+            i += 2;
+        } else if (!strcmp(argv[i], "wiggle")) {
             arg_need(g, argc, i, 3, "wiggle");
             w.axis = parse_dim(g, argv[i + 1], "wiggle");
             w.amplitude = arg_double(g, argv[i + 2], "wiggle amplitude");
@@ -285,6 +299,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                      argv[i]);
         }
     }
+    if (w.heat != w.twall_set)
+        gr_error(g, "Must define wall temperature with heat model (fix wall/gran granular ... "
+                    "heat area|radius k ... temperature T)");
     if (w.style == W_REGION && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran/region: no wiggle or shear (move the region with its move "
                     "and rotate keywords)");
@@ -313,6 +330,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hooke.cl";
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
+    f->sources[f->nsources++] = "gran_heat.cl";
     f->sources[f->nsources++] = "pair_granular.cl";
     f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "wall_region.cl";
@@ -394,6 +412,14 @@ static void init(struct gravel *g, struct fix *f)
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.inclusive = 1;
+    if (w->heat && !(g->atoms.heat_flag & ATOM_HEAT_T))
+        gr_error(g, "Heat conduction in fix wall/gran requires atom style with temperature "
+                    "property (fix property/atom temperature heatflow)");
+    if (w->heat && !(g->atoms.heat_flag & ATOM_HEAT_Q))
+        gr_error(g, "Heat conduction in fix wall/gran requires atom style with heatflow "
+                    "property (fix property/atom temperature heatflow)");
+    w->law.heat = w->heat;
+    w->law.twall = w->twall;
     /* -compat lammps2021: FixWallGran::init converts a tsuji restitution at
      * every run, so each later run converts the converted value again */
     if (w->inits++ > 0 && g->opt.lammps2021 && w->model == WG_GRANULAR &&

@@ -320,6 +320,24 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                 gr_error(g, "%s: unknown twisting model '%.64s' (expected "
                             "marshall, sds or none)", who, argv[i + 1]);
             }
+        } else if (!strcmp(k, "heat")) { /* LAMMPS 2023 GranSubModHeat* */
+            arg_need(g, argc, i, 1, k);
+            static const char *const hname[] = {"none", "area", "radius"};
+            o.hm = lookup(argv[i + 1], hname, 3);
+            if (o.hm < 0)
+                gr_error(g, "%s: unknown heat model '%.64s' (expected none, area or radius)", who,
+                         argv[i + 1]);
+            if (o.hm == GR_H_NONE) {
+                o.hk = 0;
+                i += 2;
+            } else {
+                o.hk = coeff_check(g, who,
+                                   o.hm == GR_H_AREA ? "heat transfer coefficient (heat area)"
+                                                     : "conductivity (heat radius)",
+                                   num(g, argv, argc, i + 2, "heat coefficient", who),
+                                   CR_NONNEG);
+                i += 3;
+            }
         } else if (allow_cutoff && !strcmp(k, "cutoff")) {
             o.cutoff = coeff_check(g, who, "cutoff", num(g, argv, argc, i + 1, "cutoff", who),
                                    CR_POSITIVE);
@@ -333,7 +351,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         } else {
             gr_error(g, "%s: unknown keyword '%.64s' (expected a normal model "
                         "hooke, hertz, hertz/material, dmt or jkr, or damping, tangential, "
-                        "rolling, twisting, %slimit_damping)",
+                        "rolling, twisting, heat, %slimit_damping)",
                      who, k, allow_cutoff ? "cutoff, " : "");
         }
     }
@@ -426,6 +444,7 @@ static void mix_today(const struct gr_one *a, const struct gr_one *b, struct gr_
     m->gw = geo(a->gw, b->gw);
     m->muw = geo(a->muw, b->muw);
     m->ld = a->ld || b->ld;
+    m->hk = geo(a->hk, b->hk);
     m->cutoff = -1;
 }
 
@@ -447,7 +466,7 @@ static void init(struct gravel *g, struct pair *p)
                 gr_error(g, "all pair coeffs are not set: pair granular needs pair_coeff %d %d "
                             "(or %d %d and %d %d to mix from)", i, j, i, i, j, j);
             if (a->nm != b->nm || a->dm != b->dm || a->tm != b->tm || a->rm != b->rm ||
-                a->wm != b->wm)
+                a->wm != b->wm || a->hm != b->hm)
                 gr_error(g, "Granular pair style functional forms are different, cannot mix "
                             "coefficients for types %d and %d. This combination must be set "
                             "explicitly via a pair_coeff command", i, j);
@@ -479,6 +498,10 @@ static void init(struct gravel *g, struct pair *p)
             m.kw = geo(a->kw, b->kw);
             m.gw = geo(a->gw, b->gw);
             m.muw = geo(a->muw, b->muw);
+            /* heat (LAMMPS 2023, GranularModel::mix_coeffs): the model kept, the
+             * coefficient geometric; LAMMPS 2021 had none */
+            m.hm = a->hm;
+            m.hk = geo(a->hk, b->hk);
             /* LAMMPS keeps the I I limit_damping flag of whichever pair was set last; 0 */
             m.ld = 0;
             m.cutoff = -1;
@@ -492,6 +515,17 @@ static void init(struct gravel *g, struct pair *p)
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "
                            "sub-models)", i, j, i, i, j, j, i, j);
+    /* heat conduction needs both per-atom properties (LAMMPS init_style) */
+    for (int i = 1; i <= nt; i++)
+        for (int j = i; j <= nt; j++)
+            if (at(t, i, j)->hm != GR_H_NONE) {
+                if (!(g->atoms.heat_flag & ATOM_HEAT_T))
+                    gr_error(g, "Heat conduction in pair granular requires atom style with "
+                                "temperature property (fix property/atom temperature heatflow)");
+                if (!(g->atoms.heat_flag & ATOM_HEAT_Q))
+                    gr_error(g, "Heat conduction in pair granular requires atom style with "
+                                "heatflow property (fix property/atom temperature heatflow)");
+            }
     /* LAMMPS 2021 builds its list to r_i + r_j + skin: a jkr contact stretched
      * beyond the skin is lost at the next rebuild, before its pull-off */
     double rmax = 0, poff = 0;
@@ -535,6 +569,8 @@ void granular_pack(const struct gr_one *o, double *q)
     q[GR_MUW] = o->muw;
     q[GR_MUD] = o->mud;
     q[GR_2021] = o->c2021;
+    q[GR_HMODEL] = o->hm;
+    q[GR_HK] = o->hk;
 }
 
 /* What the scene uses: bit masks per category and the history layout. */
@@ -707,6 +743,7 @@ static double collision_time(const struct pair *p, double m, double r, double vn
 static void describe(const struct pair *p, struct pair_caps *c)
 {
     struct gr_use u = uses(p);
+    pair_caps_source(c, "gran_heat.cl");
     pair_caps_source(c, "pair_granular.cl");
     c->eval_row = "granular_eval";
     c->rotation = 1;
