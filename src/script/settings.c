@@ -44,12 +44,18 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
     g->dom.dimension = d;
 }
 
-/* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted. */
+/* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted.
+ * atom_style granular is LIGGGHTS's name for the same style (no flag). */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
+    if (!strcmp(argv[0], "granular")) {
+        if (argc > 1)
+            gr_error(g, "atom_style granular takes no arguments, got '%.32s'", argv[1]);
+        return;
+    }
     if (strcmp(argv[0], "sphere") != 0)
-        gr_error(g, "atom_style '%.32s' is not supported: gravel has only atom_style sphere",
-                 argv[0]);
+        gr_error(g, "atom_style '%.32s' is not supported: gravel has only atom_style sphere "
+                    "(and its LIGGGHTS name granular)", argv[0]);
     if (argc > 2)
         gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");
     if (argc == 2)
