@@ -91,7 +91,7 @@ enum fix_flag {
     FIX_STORES_IDS = 1 << 2,
 };
 
-#define FIX_MAX_SOURCES 8
+#define FIX_MAX_SOURCES 10
 
 struct fix;
 struct fused_op;
