@@ -15,6 +15,7 @@ import os
 import statistics
 import sys
 import glob
+import shutil
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -54,6 +55,8 @@ def main():
         name = os.path.basename(deck)[:-3]
         ref = read_dump(deck[:-3] + ".dump")
         with tempfile.TemporaryDirectory() as tmp:
+            for stl in glob.glob(os.path.join(os.path.dirname(deck), "*.stl")):
+                shutil.copy(stl, tmp)
             r = run_gravel(deck, tmp)
             if r.returncode != 0:
                 print(f"  gravel failed on {name}: {r.stdout[-800:]}{r.stderr[-800:]}")

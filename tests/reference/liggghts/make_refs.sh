@@ -10,6 +10,7 @@ for deck in ${*:-*.in}; do
     tmp=$(mktemp -d)
     fmt='"%d'$(printf ' %%.17g%.0s' $(seq 15))'"'
     sed "s/format float %.17g/format $fmt/" "$deck" > "$tmp/$deck"
+    cp ./*.stl "$tmp/" 2>/dev/null || true
     (cd "$tmp" && stdbuf -o0 liggghts -in "$deck" > screen.txt 2>&1) || true
     cp "$tmp/out.dump" "$here/$name.dump"
     grep -v '^Created\|^ *[0-9] by' "$tmp/screen.txt" > "$here/$name.liggghts.log"
