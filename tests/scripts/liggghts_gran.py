@@ -9,7 +9,9 @@ frame of its dump (x, v, omega, f, torque, %.17g) must match the dump
 liggghts wrote (DECK.dump, tests/reference/liggghts/make_refs.sh) to TOL:
 |a - b| <= TOL max(|b|, s), s the largest |value| of that column in the frame.
 LIGGGHTS sums forces in its own order, so agreement is to round-off grown
-over a contact, not bit for bit. Decks named bed_* are settled beds (chaotic):
+over a contact, not bit for bit. The thermo table of every deck (by column
+position: LIGGGHTS drops the f_ prefix) must match DECK.liggghts.log to
+THERMO_TOL relative (fix check/timestep/gran's f_ts[1..3] in ts_check). Decks named bed_* are settled beds (chaotic):
 their last frame is compared by the mean height and the mean |v| (BED_TOL)."""
 import os
 import statistics
@@ -24,6 +26,37 @@ from physics_lammps import read_dump, run_gravel  # noqa: E402
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TOL = 1e-8
 BED_TOL = 0.03
+THERMO_TOL = 1e-7
+
+
+def thermo_rows(text):
+    """The numeric rows of the first thermo table (after a line starting Step)."""
+    rows, on = [], False
+    for line in text.split("\n"):
+        w = line.split()
+        if w and w[0] == "Step":
+            on = True
+            continue
+        if on:
+            try:
+                rows.append([float(v) for v in w])
+            except ValueError:
+                break
+            if not w:
+                break
+    return rows
+
+
+def thermo_ok(got, ref):
+    if len(got) != len(ref) or not ref:
+        return False, f"{len(got)} rows, liggghts {len(ref)}"
+    for a, b in zip(got, ref):
+        if len(a) != len(b):
+            return False, f"row {b[0]:g}: {len(a)} columns, liggghts {len(b)}"
+        for x, y in zip(a, b):
+            if abs(x - y) > THERMO_TOL * max(abs(x), abs(y)):
+                return False, f"row {b[0]:g}: {x!r} vs liggghts {y!r}"
+    return True, f"{len(ref)} rows"
 
 
 def compare(got, ref):
@@ -64,6 +97,9 @@ def main():
                 fails += 1
                 continue
             got = read_dump(os.path.join(tmp, "out.dump"))
+        tok, tmsg = thermo_ok(thermo_rows(r.stdout),
+                              thermo_rows(open(deck[:-3] + ".liggghts.log").read()))
+        print(f"  {name}: thermo {tmsg}")
         if name.startswith("bed_"):
             last = max(ref)
             (zg, vg), (zr, vr) = bed_stats(got[last]), bed_stats(ref[last])
@@ -73,6 +109,7 @@ def main():
         else:
             ok, worst, where = compare(got, ref)
             print(f"  {name}: worst relative difference {worst:.3g} ({where})")
+        ok = ok and tok
         print(f"{'PASS' if ok else 'FAIL'} liggghts_{name}")
         fails += not ok
     return 1 if fails else 0
