@@ -59,6 +59,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix property/global %s: not enough arguments (no values)", p.name);
     if (p.form == FPG_SCALAR && p.n != 1)
         gr_error(g, "fix property/global %s scalar: expected 1 value, got %d", p.name, p.n);
+    for (int k = 0; k < p.n; k++) /* errors before anything is allocated */
+        (void)arg_double(g, argv[first + k], "fix property/global value");
     p.v = gr_malloc(g, (size_t)p.n * sizeof(double));
     for (int k = 0; k < p.n; k++)
         p.v[k] = arg_double(g, argv[first + k], "fix property/global value");
