@@ -10,9 +10,10 @@ liggghts wrote (DECK.dump, tests/reference/liggghts/make_refs.sh) to TOL:
 |a - b| <= TOL max(|b|, s), s the largest |value| of that column in the frame.
 LIGGGHTS sums forces in its own order, so agreement is to round-off grown
 over a contact, not bit for bit. The thermo table of every deck (by column
-position: LIGGGHTS drops the f_ prefix) must match DECK.liggghts.log to
+position: LIGGGHTS drops the f_ prefix; a bed's step and atoms only) must match DECK.liggghts.log to
 THERMO_TOL relative (fix check/timestep/gran's f_ts[1..3] in ts_check). Decks named bed_* are settled beds (chaotic):
-their last frame is compared by the mean height and the mean |v| (BED_TOL)."""
+their last frame is compared by the atom count and the mean height (BED_TOL, from
+liggghts's own spread)."""
 import os
 import statistics
 import sys
@@ -25,7 +26,10 @@ from physics_lammps import read_dump, run_gravel  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TOL = 1e-8
-BED_TOL = 0.03
+# a settled bed's mean height: liggghts itself, with the gravity's tilt changed
+# in the 7th digit (1.5000001e-1, 1.499999e-1, 1.5000003e-1), settles bed_hertz to
+# 0.01883, 0.01841, 0.01789 against the reference's 0.01793: 5 % apart
+BED_TOL = 0.06
 THERMO_TOL = 1e-7
 
 
@@ -38,22 +42,22 @@ def thermo_rows(text):
             on = True
             continue
         if on:
+            if line.startswith("Loop time"):
+                break
             try:
                 rows.append([float(v) for v in w])
             except ValueError:
-                break
-            if not w:
-                break
+                continue  # a warning or note inside the table
     return rows
 
 
-def thermo_ok(got, ref):
+def thermo_ok(got, ref, ncol=None):
     if len(got) != len(ref) or not ref:
         return False, f"{len(got)} rows, liggghts {len(ref)}"
     for a, b in zip(got, ref):
         if len(a) != len(b):
             return False, f"row {b[0]:g}: {len(a)} columns, liggghts {len(b)}"
-        for x, y in zip(a, b):
+        for x, y in list(zip(a, b))[:ncol]:
             if abs(x - y) > THERMO_TOL * max(abs(x), abs(y)):
                 return False, f"row {b[0]:g}: {x!r} vs liggghts {y!r}"
     return True, f"{len(ref)} rows"
@@ -98,14 +102,17 @@ def main():
                 continue
             got = read_dump(os.path.join(tmp, "out.dump"))
         tok, tmsg = thermo_ok(thermo_rows(r.stdout),
-                              thermo_rows(open(deck[:-3] + ".liggghts.log").read()))
+                              thermo_rows(open(deck[:-3] + ".liggghts.log").read()),
+                              2 if name.startswith("bed_") else None)
         print(f"  {name}: thermo {tmsg}")
         if name.startswith("bed_"):
             last = max(ref)
             (zg, vg), (zr, vr) = bed_stats(got[last]), bed_stats(ref[last])
             ok = len(got[last]) == len(ref[last]) and abs(zg - zr) <= BED_TOL * abs(zr)
+            _, worst, where = compare(got, ref)
             print(f"  {name}: step {last} mean z {zg:.6g} (liggghts {zr:.6g}), "
-                  f"mean |v| {vg:.3g} (liggghts {vr:.3g})")
+                  f"mean |v| {vg:.3g} (liggghts {vr:.3g}); frames differ by {worst:.3g} "
+                  f"at most ({where})")
         else:
             ok, worst, where = compare(got, ref)
             print(f"  {name}: worst relative difference {worst:.3g} ({where})")
