@@ -86,7 +86,7 @@ def bed_stats(frame):
 
 
 def main():
-    decks = sorted(glob.glob(os.path.join(ROOT, "tests/reference/liggghts/*.in")))
+    decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "liggghts", "*.in")))
     fails = 0
     for deck in decks:
         name = os.path.basename(deck)[:-3]
