@@ -17,6 +17,14 @@
  *   hooke   kn = 16/15 sqrt(reff) Y* (15 meff v_c^2 / (16 sqrt(reff) Y*))^(1/5),
  *           kt = kn (2/7 kn with ktToKnUser), gamman = gammat =
  *           sqrt(4 meff kn ln^2 e / (ln^2 e + pi^2))
+ *   hooke/hysteresis  hooke's kn, kt = kn, gamman = gammat = sqrt(4 meff kn / (1 +
+ *           (pi / ln e)^2)); the elastic part follows Walton-Braun / Luding's
+ *           hysteresis on the largest overlap dmax (history): loading kn delta,
+ *           un/reloading k2 (delta - dmax) + kn dmax with k2 = kn + (k2max - kn)
+ *           dmax / dlim (k2max beyond dlim = k2max/(k2max - kn) phiF 2 reff),
+ *           bounded below by the adhesion -kc delta (dmax then moves on);
+ *           k2max = kn coefficientMaxElasticStiffness, kc = kn
+ *           coefficientAdhesionStiffness, phiF = coefficientPlasticityDepth
  *   hertz/stiffness  kn, kt, gamman meff, gammat meff, each x sqrt(reff deltan)
  *   hooke/stiffness  kn, kt, gamman meff, gammat meff (absolute_damping: no meff)
  *   (tangential_damping off: gammat = 0)
@@ -38,12 +46,67 @@ struct lg_normal_out {
     REAL Fn, kn, kt, gamman, gammat;
 };
 
+/* hooke/hysteresis's elastic force on the largest overlap *dmax (updated:
+ * raised to deltan always, moved on along the adhesion branch when update) */
+static inline REAL lg_hysteresis(__global const REAL *p, const REAL kn, const REAL reff,
+                                 const REAL deltan, REAL *dmax, const int update)
+{
+    const REAL k2Max = kn * p[LG_K2MAX];
+    const REAL kc = kn * p[LG_KC];
+    if (deltan > *dmax)
+        *dmax = deltan;
+    const REAL deltaMax = *dmax;
+    const REAL deltaMaxLim = (k2Max / (k2Max - kn)) * p[LG_PHIF] * (REAL)2 * reff;
+    REAL fHys;
+    if (deltaMax >= deltaMaxLim) {
+        const REAL fTmp = k2Max * (deltan - deltaMaxLim) + kn * deltaMaxLim;
+        if (fTmp >= -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            if (update)
+                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
+                                                                      deltaMaxLim / (k2Max - kn))));
+        }
+    } else {
+        const REAL k2 = kn + (k2Max - kn) * deltaMax / deltaMaxLim;
+        const REAL fTmp = k2 * (deltan - deltaMax) + kn * deltaMax;
+        if (fTmp >= kn * deltan) {
+            fHys = kn * deltan;
+        } else if (fTmp > -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            if (update)
+                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
+                                                                      deltaMaxLim / (k2Max - kn))));
+        }
+    }
+    return fHys;
+}
+
+/* dmax: hooke/hysteresis's history entry (NULL for the other models) */
 static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL reff,
-                                             const REAL meff, const REAL deltan, const REAL vn)
+                                             const REAL meff, const REAL deltan, const REAL vn,
+                                             REAL *dmax, const int update)
 {
     struct lg_normal_out o;
     const int nm = (int)p[LG_NMODEL];
     const int tdamp = p[LG_TDAMP] != (REAL)0;
+    if (nm == LG_N_HOOKE_HYSTERESIS) {
+        const REAL Y = p[LG_YEFF], cv = p[LG_CHARV], l = p[LG_LOGE];
+        const REAL sqrtval = sqrt(reff);
+        o.kn = (REAL)16. / (REAL)15. * sqrtval * Y *
+               pow((REAL)15. * meff * cv * cv / ((REAL)16. * sqrtval * Y), (REAL)0.2);
+        o.kt = o.kn;
+        o.gamman = sqrt((REAL)4. * meff * o.kn /
+                        ((REAL)1. + ((REAL)M_PI / l) * ((REAL)M_PI / l)));
+        o.gammat = tdamp ? o.gamman : (REAL)0;
+        const REAL fHys = dmax ? lg_hysteresis(p, o.kn, reff, deltan, dmax, update)
+                               : o.kn * deltan;
+        o.Fn = fHys + -o.gamman * vn;
+        return o;
+    }
     if (nm == LG_N_HERTZ) {
         const REAL Y = p[LG_YEFF], beta = p[LG_BETA];
         const REAL sqrtval = sqrt(reff * deltan);
@@ -181,9 +244,10 @@ static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const
     return t;
 }
 
-/* The composed law (PAIR_EVAL form; the wall's set has p[LG_WALL] = 1). */
-static inline void gran_model_eval(const struct contact *c, __global const REAL *p,
-                                   REAL3 *shear, struct contact_force *out)
+/* The composed law; dmax: hooke/hysteresis's history entry (NULL otherwise).
+ * The wall's set has p[LG_WALL] = 1. */
+static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *dmax,
+                                  REAL3 *shear, struct contact_force *out)
 {
     const int wall = p[LG_WALL] != (REAL)0;
     const REAL3 en = c->n;
@@ -209,7 +273,8 @@ static inline void gran_model_eval(const struct contact *c, __global const REAL 
                               vt.z - (del.y * wr.x - del.x * wr.y));
     const REAL reff = wall ? radi : radi * radj / (radi + radj);
 
-    const struct lg_normal_out nf = lg_normal(p, reff, c->meff, deltan, vn);
+    const struct lg_normal_out nf = lg_normal(p, reff, c->meff, deltan, vn, dmax,
+                                              c->shearupdate);
     REAL3 F = (REAL3)(nf.Fn * en.x, nf.Fn * en.y, nf.Fn * en.z);
     if ((int)p[LG_COH] != LG_C_NONE) {
         const REAL fc = lg_cohesion(p, r, radi, radj, wall);
@@ -242,6 +307,24 @@ static inline void gran_model_eval(const struct contact *c, __global const REAL 
     out->tr = (deltan * (radi - radj) / ((REAL)2 * radsum)) * tor + rt;
 }
 
+/* PAIR_EVAL form: the models without a normal history */
+static inline void gran_model_eval(const struct contact *c, __global const REAL *p,
+                                   REAL3 *shear, struct contact_force *out)
+{
+    gran_model_law(c, p, 0, shear, out);
+}
+
+/* PAIR_EVAL_ROW form (hooke/hysteresis): h = dmax, then the shear */
+static inline void gran_model_eval_row(const struct contact *c, __global const REAL *p, REAL *h,
+                                       struct contact_force *out)
+{
+    REAL3 s = (REAL3)(h[1], h[2], h[3]);
+    gran_model_law(c, p, h, &s, out);
+    h[1] = s.x;
+    h[2] = s.y;
+    h[3] = s.z;
+}
+
 /* collision time (kernels/accuracy.cl): hertz models Johnson's Hertz time
  * of kn = 4/3 Y*, hooke the linear spring's half period at its kn */
 static inline REAL gran_model_eval_tcol(const struct contact *c, __global const REAL *p,
@@ -251,8 +334,14 @@ static inline REAL gran_model_eval_tcol(const struct contact *c, __global const 
     const REAL reff = p[LG_WALL] != (REAL)0 ? c->radi : c->reff;
     if (nm == LG_N_HERTZ)
         return tcol_hertz((REAL)4. / (REAL)3. * p[LG_YEFF], reff, c->meff, vn);
-    const struct lg_normal_out o = lg_normal(p, reff, c->meff, (REAL)0, (REAL)0);
+    const struct lg_normal_out o = lg_normal(p, reff, c->meff, (REAL)0, (REAL)0, 0, 0);
     if (nm == LG_N_HERTZ_STIFFNESS)
         return tcol_hertz(p[LG_KN], reff, c->meff, vn);
     return o.kn > (REAL)0 ? tcol_linear(o.kn, 0, c->meff) : (REAL)0;
+}
+
+static inline REAL gran_model_eval_row_tcol(const struct contact *c, __global const REAL *p,
+                                            const REAL vn)
+{
+    return gran_model_eval_tcol(c, p, vn);
 }

@@ -225,6 +225,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             gr_error(g, "fix wall/gran/region: LIGGGHTS's 'model ...' form is not supported "
                         "(use fix wall/gran model ... primitive or mesh)");
         i = lg_parse(g, &w.lg, argc, argv, stop, "fix wall/gran");
+        if (w.lg.nm == LG_N_HOOKE_HYSTERESIS)
+            gr_error(g, "fix wall/gran: model hooke/hysteresis is not supported for walls (hertz, "
+                        "hooke, hertz/stiffness, hooke/stiffness are)");
         w.history = w.lg.tm ? 3 : 0;
         if (i >= argc)
             gr_error(g, "fix wall/gran model ...: missing the wall ('primitive type T ...' or "

@@ -15,7 +15,10 @@
  * (cohesionEnergyDensity); R: cdt (coefficientRollingFriction). Settings:
  * tangential_damping (on), limitForce (off), ktToKnUser (hooke, off),
  * absolute_damping (hooke/stiffness, off), torsionTorque (cdt, off).
- * Not supported (clear errors): hooke/hysteresis, the epsd rolling models,
+ * hooke/hysteresis (those of hooke and coefficientMaxElasticStiffness,
+ * coefficientAdhesionStiffness, coefficientPlasticityDepth; pairs only)
+ * keeps the largest overlap in its history row (4 REAL, PAIR_EVAL_ROW).
+ * Not supported (clear errors): the epsd rolling models,
  * other surface models, the heating and energy-tracking settings. */
 #include <math.h>
 #include <stdlib.h>
@@ -36,6 +39,7 @@ static const struct {
     {"hooke", LG_N_HOOKE},
     {"hertz/stiffness", LG_N_HERTZ_STIFFNESS},
     {"hooke/stiffness", LG_N_HOOKE_STIFFNESS},
+    {"hooke/hysteresis", LG_N_HOOKE_HYSTERESIS},
 };
 
 static int in_list(const char *s, const char *const *list)
@@ -74,7 +78,7 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
                     m->nm = normal_models[k].nm;
             if (m->nm < 0)
                 gr_error(g, "%s: model '%.64s' is not supported (gravel has hertz, hooke, "
-                            "hertz/stiffness, hooke/stiffness)", who, v);
+                            "hertz/stiffness, hooke/stiffness, hooke/hysteresis)", who, v);
         } else if (!strcmp(kw, "tangential")) {
             if (!strcmp(v, "history"))
                 m->tm = 1;
@@ -157,8 +161,12 @@ void lg_from_coef(struct lg_model *m, const double *c)
 
 static int material_model(const struct lg_model *m)
 {
-    return m->nm == LG_N_HERTZ || m->nm == LG_N_HOOKE;
+    return m->nm == LG_N_HERTZ || m->nm == LG_N_HOOKE || m->nm == LG_N_HOOKE_HYSTERESIS;
 }
+
+static const char *const hysteresis_props[3] = {"coefficientMaxElasticStiffness",
+                                                "coefficientAdhesionStiffness",
+                                                "coefficientPlasticityDepth"};
 
 void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *who)
 {
@@ -179,7 +187,16 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
                     gr_error(g, "%s: 0.05 < coefficientRestitution <= 1 required (types %d %d: "
                                 "%g)", who, I, J, e);
             }
-        if (m->nm == LG_N_HOOKE) {
+        if (m->nm == LG_N_HOOKE_HYSTERESIS)
+            for (int k = 0; k < 3; k++)
+                for (int I = 1; I <= nt; I++)
+                    for (int J = 1; J <= nt; J++) {
+                        double v = fpg_pair(g, hysteresis_props[k], nt, I, J, who);
+                        if ((k == 0 ? !(v > 1) : !(v >= 0)) || !isfinite(v))
+                            gr_error(g, "%s: %s must be %s (types %d %d: %g)", who,
+                                     hysteresis_props[k], k == 0 ? "> 1" : ">= 0", I, J, v);
+                    }
+        if (m->nm != LG_N_HERTZ) {
             double cv = fpg_scalar(g, "characteristicVelocity", who);
             if (!(cv > 0) || !isfinite(cv))
                 gr_error(g, "%s: characteristicVelocity must be > 0, got %g", who, cv);
@@ -225,8 +242,13 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
         const double l = log(fpg_pair(g, "coefficientRestitution", nt, I, J, who));
         q[LG_LOGE] = l;
         q[LG_BETA] = l / sqrt(pow(l, 2.) + pow(M_PI, 2.));
-        if (m->nm == LG_N_HOOKE)
+        if (m->nm != LG_N_HERTZ)
             q[LG_CHARV] = fpg_scalar(g, "characteristicVelocity", who);
+        if (m->nm == LG_N_HOOKE_HYSTERESIS) {
+            q[LG_K2MAX] = fpg_pair(g, hysteresis_props[0], nt, I, J, who);
+            q[LG_KC] = fpg_pair(g, hysteresis_props[1], nt, I, J, who);
+            q[LG_PHIF] = fpg_pair(g, hysteresis_props[2], nt, I, J, who);
+        }
     } else {
         const int abs = m->absdamp && m->nm == LG_N_HOOKE_STIFFNESS;
         q[LG_KN] = fpg_pair(g, "kn", nt, I, J, who);
@@ -320,7 +342,8 @@ static double collision_time(const struct pair *p, double m, double r, double vn
         if (!(vn > 0))
             vn = 1e-3 * sqrt(q[LG_KN] / (m / (4.0 / 3.0 * M_PI * r * r * r)));
         return tcol_hertz(q[LG_KN], reff, meff, vn);
-    case LG_N_HOOKE: {
+    case LG_N_HOOKE:
+    case LG_N_HOOKE_HYSTERESIS: {
         double sr = sqrt(reff), Y = q[LG_YEFF], cv = q[LG_CHARV];
         double kn = 16. / 15. * sr * Y * pow(15. * meff * cv * cv / (16. * sr * Y), 0.2);
         return tcol_linear(kn, 0, meff);
@@ -335,9 +358,15 @@ static void describe(const struct pair *p, struct pair_caps *c)
     struct lg_model m;
     lg_from_coef(&m, p->coef);
     pair_caps_source(c, "pair_gran.cl");
-    c->eval = "gran_model_eval";
     c->rotation = 1;
-    c->history = m.tm;
+    if (m.nm == LG_N_HOOKE_HYSTERESIS) { /* the largest overlap, then the shear */
+        c->eval_row = "gran_model_eval_row";
+        c->history = 1;
+        c->hist_n = 4;
+    } else {
+        c->eval = "gran_model_eval";
+        c->history = m.tm;
+    }
     c->tcol_of = p;
     c->collision_time = collision_time;
 }
