@@ -13,7 +13,12 @@ over a contact, not bit for bit. The thermo table of every deck (by column
 position: LIGGGHTS drops the f_ prefix; a bed's step and atoms only) must match DECK.liggghts.log to
 THERMO_TOL relative (fix check/timestep/gran's f_ts[1..3] in ts_check). Decks named bed_* are settled beds (chaotic):
 their last frame is compared by the atom count and the mean height (BED_TOL, from
-liggghts's own spread)."""
+liggghts's own spread).
+
+Restart: gran_hysteresis (a 4-REAL history row: the largest overlap and the
+shear) split at step 100, mid-contact, by write_restart, clear, read_restart
+and the property fixes re-issued (as a LIGGGHTS deck does), must end on the
+same frame (TOL against the liggghts dump)."""
 import os
 import statistics
 import sys
@@ -85,6 +90,43 @@ def bed_stats(frame):
     return statistics.mean(z), statistics.mean(sp)
 
 
+def restart_deck(src, split):
+    """src with its run split at `split` by a restart round trip"""
+    lines = src.split("\n")
+    run = next(l for l in lines if l.startswith("run"))
+    total = int(run.split()[1])
+    keep = [l for l in lines if l.startswith("fix             m")]
+    tail = keep + ["pair_coeff      * *", "neighbor        0.002 bin", "neigh_modify    delay 0",
+                   "timestep        0.00001", "fix             integr all nve/sphere",
+                   "thermo_style    custom step atoms ke", "thermo          200",
+                   "dump            d all custom 200 out.dump id x y z vx vy vz omegax omegay "
+                   "omegaz fx fy fz tqx tqy tqz",
+                   "dump_modify     d sort id format float %.17g", f"run             {total - split}"]
+    return src.replace(run, "\n".join([f"run             {split}", "write_restart   r.bin",
+                                         "clear", "atom_style      granular",
+                                         "read_restart    r.bin"] + tail))
+
+
+def restart_check():
+    deck = os.path.join(ROOT, "tests", "reference", "liggghts", "gran_hysteresis.in")
+    ref = read_dump(deck[:-3] + ".dump")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "rs.in")
+        open(path, "w").write(restart_deck(open(deck).read(), 100))
+        r = run_gravel(path, tmp)
+        got = read_dump(os.path.join(tmp, "out.dump")) if r.returncode == 0 else {}
+    last = max(ref)
+    ok = last in got
+    if ok:
+        _, worst, where = compare({last: got[last]}, {last: ref[last]})
+        ok = worst <= TOL
+        print(f"  restart at step 100: step {last} differs by {worst:.3g} ({where})")
+    else:
+        print(f"  restart run failed: {r.stdout[-600:]}{r.stderr[-600:]}")
+    print(f"{'PASS' if ok else 'FAIL'} liggghts_gran_restart")
+    return ok
+
+
 def main():
     decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "liggghts", "*.in")))
     fails = 0
@@ -119,6 +161,7 @@ def main():
         ok = ok and tok
         print(f"{'PASS' if ok else 'FAIL'} liggghts_{name}")
         fails += not ok
+    fails += not restart_check()
     return 1 if fails else 0
 
 
