@@ -292,8 +292,7 @@ static void destroy(struct pair *p)
 static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
 {
     struct lg_model m;
-    int n = lg_parse(g, &m, argc, argv, NULL, "pair_style gran");
-    (void)n;
+    lg_parse(g, &m, argc, argv, NULL, "pair_style gran"); /* every word (no stop list) */
     lg_to_coef(&m, p->coef);
 }
 
