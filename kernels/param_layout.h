@@ -68,4 +68,24 @@ enum col_param { COL_FORM, COL_CUTSQ, COL_A12, COL_SIGMA3, COL_SIGMA6, COL_A1, C
                  COL_LJ1, COL_LJ2, COL_LJ3, COL_LJ4, COL_OFFSET, COL_NPARAM };
 enum col_form { COL_SS, COL_SL, COL_LL };
 
+/* gran (LIGGGHTS `pair_style gran model ...`, styles/pair/pair_gran.c,
+ * kernels/pair_gran.cl), per type pair, from the fix property/global
+ * materials: the normal model (LG_N_*), Y* and G* (material mixing), beta
+ * = ln e / sqrt(ln^2 e + pi^2), ln e, characteristicVelocity; the stiffness
+ * models' kn kt gamman gammat; switches absolute_damping, tangential_damping,
+ * limitForce, ktToKnUser (0/1); tangential history (1) or no_history (0) and
+ * coefficientFriction; cohesion (LG_C_*) and cohesionEnergyDensity; rolling
+ * friction (LG_R_*), coefficientRollingFriction, torsionTorque (0/1); 1 for
+ * the wall's set (fix wall/gran model ...: reff = radi, lever radi - delta/2,
+ * the wall's contact area); hooke/hysteresis's coefficientMaxElasticStiffness,
+ * coefficientAdhesionStiffness, coefficientPlasticityDepth. */
+enum lg_param { LG_NMODEL, LG_YEFF, LG_GEFF, LG_BETA, LG_LOGE, LG_CHARV, LG_KN, LG_KT, LG_GN,
+                LG_GT, LG_ABSDAMP, LG_TDAMP, LG_LIMIT, LG_KTTOKN, LG_TMODEL, LG_MU, LG_COH,
+                LG_CED, LG_ROLL, LG_RMU, LG_TORSION, LG_WALL, LG_K2MAX, LG_KC, LG_PHIF,
+                LG_NPARAM };
+enum lg_normal { LG_N_HERTZ, LG_N_HOOKE, LG_N_HERTZ_STIFFNESS, LG_N_HOOKE_STIFFNESS,
+                 LG_N_HOOKE_HYSTERESIS };
+enum lg_cohesion { LG_C_NONE, LG_C_SJKR, LG_C_SJKR2 };
+enum lg_rolling { LG_R_NONE, LG_R_CDT };
+
 #endif

@@ -126,11 +126,15 @@ static inline void contact_hist_load(REAL *h, __global const REAL *row, const in
         h[q] = q < hw ? row[q] : (REAL)0;
 }
 
-/* The wall's parameter set for type t_i: one packed set (by_type 0) or the
- * pair style's set of type pair (t_i, t_i). */
+/* The wall's parameter set for type t_i: one packed set (by_type 0), the
+ * pair style's set of type pair (t_i, t_i) (by_type > 0), or the set of
+ * (t_i, T - 1) of a table by type pair for a wall of type T (by_type = -T:
+ * fix wall/gran model ... primitive type T). */
 static inline __global const REAL *wall_param(__global const REAL *param, const int by_type,
                                               const int ti, const int ntypes, const int nparam)
 {
+    if (by_type < 0)
+        return param + (size_t)(ti * ntypes + (-by_type - 1)) * nparam;
     return by_type ? param + (size_t)(ti * ntypes + ti) * nparam : param;
 }
 

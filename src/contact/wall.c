@@ -57,7 +57,7 @@ struct wall_law_args wall_law_args(struct gravel *g, const struct wall_law *law)
     return (struct wall_law_args){
         .param = law->param,
         .ntypes = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1,
-        .nparam = law->by_type ? g->styles.pair->caps.nparam : 0,
+        .nparam = !law->by_type ? 0 : law->nparam ? law->nparam : g->styles.pair->caps.nparam,
         .by_type = law->by_type,
     };
 }
@@ -79,9 +79,9 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
         .shearupdate = !eng_in_setup(g),
         .inclusive = law->inclusive,
     };
-    if (w->kind == WALL_ZCYLINDER) { /* the axis (x = y = 0) relative to the origin */
-        ka.lo = ka_coord(g, 0, 0.0);
-        ka.hi = ka_coord(g, 1, 0.0);
+    if (w->kind == WALL_ZCYLINDER) { /* the axis (cx, cy) relative to the origin */
+        ka.lo = ka_coord(g, 0, w->cx);
+        ka.hi = ka_coord(g, 1, w->cy);
     } else {
         ka.lo = ka_coord(g, w->axis, w->lo);
         ka.hi = ka_coord(g, w->axis, w->hi);

@@ -22,6 +22,7 @@ struct wall_geom {
     double radius;              /* zcylinder */
     double v[3];                /* velocity of the surface */
     int cyl_shear;              /* zcylinder: azimuthal surface speed vshear */
+    double cx, cy;              /* zcylinder: the axis (0, 0 for LAMMPS's) */
     double vshear;
 };
 
@@ -32,7 +33,8 @@ struct wall_geom {
 struct wall_law {
     cl_kernel kernel;
     cl_mem param;
-    int by_type;
+    int by_type;                /* < 0: a table by type pair, column -by_type - 1 */
+    int nparam;                 /* REALs per set of a by-type table (0: the pair style's) */
     int history;                /* REAL of history per element per atom (0: none;
                                  * 3: shear; granular: its sub-models' width) */
     int inclusive;              /* |del| = radius is a contact (LAMMPS wall/gran) */

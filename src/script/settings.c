@@ -47,7 +47,8 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
 /* atom_style sphere [0|1]: the optional LAMMPS radvary flag is accepted.
  * atom_style hybrid sphere molecular (either order): spheres with molecule IDs
  * as part of the style (LAMMPS's molecular sub-style; no bonds in granular
- * decks: a molecule template with bonds is refused where it is read). */
+ * decks: a molecule template with bonds is refused where it is read).
+ * atom_style granular is LIGGGHTS's name for sphere (no flag). */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
     if (!strcmp(argv[0], "hybrid")) {
@@ -67,16 +68,23 @@ void cmd_atom_style(struct gravel *g, int argc, char **argv)
         g->atoms.molecule_flag = 1;
         return;
     }
+    if (g->atoms.style_molecular) { /* a later atom_style replaces hybrid */
+        g->atoms.style_molecular = 0;
+        g->atoms.molecule_flag = 0;
+    }
+    if (!strcmp(argv[0], "granular")) {
+        if (argc > 1)
+            gr_error(g, "atom_style granular takes no arguments, got '%.32s'", argv[1]);
+        return;
+    }
     if (strcmp(argv[0], "sphere") != 0)
-        gr_error(g, "atom_style '%.32s' is not supported: gravel has atom_style sphere and "
-                    "hybrid sphere molecular",
+        gr_error(g, "atom_style '%.32s' is not supported: gravel has atom_style sphere (LIGGGHTS: "
+                    "granular) and hybrid sphere molecular",
                  argv[0]);
     if (argc > 2)
         gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");
     if (argc == 2)
         arg_int_range(g, argv[1], 0, 1, "atom_style sphere radvary flag");
-    g->atoms.style_molecular = 0;
-    g->atoms.molecule_flag = 0;
 }
 
 void cmd_timestep(struct gravel *g, int argc, char **argv)

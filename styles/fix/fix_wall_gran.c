@@ -28,7 +28,17 @@
  * A granular `heat area|radius k` sub-model conducts heat between the wall,
  * at `temperature T` (required with it, as LAMMPS 2023), and the atoms
  * (kernels/gran_heat.cl, kernels/wall.cl WALL_HEAT_*). Unsupported
- * LAMMPS options (keyword contacts) are rejected with a clear error. */
+ * LAMMPS options (keyword contacts) are rejected with a clear error.
+ *
+ * LIGGGHTS's form: `fix ID group wall/gran model M tangential T [cohesion C]
+ * [rolling_friction R] [settings] primitive type W xplane|yplane|zplane p |
+ * zcylinder R cx cy` or `... mesh n_meshes N meshes ID...` [shear dim v]:
+ * pair gran's models (styles/pair/pair_gran.h, kernels/pair_gran.cl) with
+ * the materials of (particle type, wall type W; a mesh's own type) from fix
+ * property/global, packed at every run as a table by type pair. A primitive
+ * plane at p acts on both sides (LIGGGHTS's primitive walls: the contact
+ * normal points from the plane to the particle), the cylinder inside and
+ * outside. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -41,6 +51,7 @@
 #include "fix.h"
 #include "fix_wall_gran.h"
 #include "pair.h"
+#include "pair_gran.h"
 #include "pair_granular.h"
 #include "region.h"
 #include "fix_mesh_surface.h"
@@ -62,6 +73,11 @@ struct wall {
     double amplitude, period, omega, vshear;
     bigint time_origin;
     struct wall_law law;
+    struct lg_model lg;         /* model ...: LIGGGHTS's model (WG_LIGGGHTS) */
+    int wtype;                  /* its primitive's type (0: a mesh's own) */
+    double cx, cy;              /* zcylinder axis (LIGGGHTS: any; LAMMPS: 0 0) */
+    double *table;              /* WG_LIGGGHTS: nt x nt x LG_NPARAM, rebuilt at init */
+    int table_nt;
     struct mesh_walls mesh;     /* wallstyle mesh */
     char region_id[GR_NAMELEN]; /* fix wall/gran/region */
     char region_style[32];      /* the region's style and sub-region count at the */
@@ -205,16 +221,69 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     else if (!strcmp(argv[0], "hertz/history"))
         w.model = WG_HERTZ_HISTORY;
     else if (!strcmp(argv[0], "model"))
-        gr_error(g, "fix wall/gran: LIGGGHTS' 'model ... tangential ...' syntax is not "
-                    "supported; give the LAMMPS model and coefficients (hooke, hooke/history or "
-                    "hertz/history Kn Kt gamman gammat xmu dampflag) before 'mesh n_meshes ...', "
-                    "or use fix wall/pair mesh for the pair style's law");
+        w.model = WG_LIGGGHTS;
     else if (!strcmp(argv[0], "granular"))
         w.model = WG_GRANULAR;
     else
         gr_error(g, "unknown fix wall/gran model '%.64s' (expected hooke, hooke/history, "
                     "hertz/history or granular)", argv[0]);
     int i;
+    const char *ws = "mesh";    /* the wall style's word (errors) */
+    if (w.model == WG_LIGGGHTS) {
+        static const char *const stop[] = {"primitive", "mesh", NULL};
+        if (!strcmp(f->style->name, "wall/gran/region"))
+            gr_error(g, "fix wall/gran/region: LIGGGHTS's 'model ...' form is not supported "
+                        "(use fix wall/gran model ... primitive or mesh)");
+        i = lg_parse(g, &w.lg, argc, argv, stop, "fix wall/gran");
+        if (w.lg.nm == LG_N_HOOKE_HYSTERESIS)
+            gr_error(g, "fix wall/gran: model hooke/hysteresis is not supported for walls (hertz, "
+                        "hooke, hertz/stiffness, hooke/stiffness are)");
+        w.history = w.lg.tm ? 3 : 0;
+        if (i >= argc)
+            gr_error(g, "fix wall/gran model ...: missing the wall ('primitive type T ...' or "
+                        "'mesh n_meshes N meshes ...') after the model");
+        if (!strcmp(argv[i], "primitive")) {
+            arg_need(g, argc, i, 3, "primitive");
+            if (strcmp(argv[i + 1], "type"))
+                gr_error(g, "fix wall/gran primitive: expected 'type T', got '%.64s'",
+                         argv[i + 1]);
+            w.wtype = arg_int(g, argv[i + 2], "primitive wall type");
+            if (w.wtype < 1 || (g->atoms.ntypes > 0 && w.wtype > g->atoms.ntypes))
+                gr_error(g, "fix wall/gran primitive type %d is out of range 1..%d (the wall's "
+                            "material must be one of the box's atom types)", w.wtype,
+                         g->atoms.ntypes);
+            i += 3;
+            if (i >= argc)
+                gr_error(g, "fix wall/gran primitive: missing the primitive (xplane, yplane, "
+                            "zplane or zcylinder)");
+            const char *ps = ws = argv[i];
+            if (!strcmp(ps, "xplane") || !strcmp(ps, "yplane") || !strcmp(ps, "zplane")) {
+                arg_need(g, argc, i, 1, ps);
+                w.style = ps[0] - 'x';
+                w.lo = arg_double(g, argv[i + 1], "plane position");
+                w.hi = WALL_FAR;
+                i += 2;
+            } else if (!strcmp(ps, "zcylinder")) {
+                arg_need(g, argc, i, 3, ps);
+                w.style = W_ZCYLINDER;
+                w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
+                w.cx = arg_double(g, argv[i + 2], "cylinder axis x");
+                w.cy = arg_double(g, argv[i + 3], "cylinder axis y");
+                i += 4;
+            } else {
+                gr_error(g, "fix wall/gran primitive '%.64s' is not supported (xplane, yplane, "
+                            "zplane or zcylinder)", ps);
+            }
+        } else if (strcmp(argv[i], "mesh")) {
+            gr_error(g, "fix wall/gran model ...: unknown keyword '%.64s' (expected primitive "
+                        "or mesh)", argv[i]);
+        } else {
+            w.style = W_MESH;
+            i = mesh_surface_parse_list(g, argc, argv, i, w.mesh.id, MESH_WALLS_MAX, &w.mesh.n,
+                                        "fix wall/gran mesh");
+        }
+        goto options;
+    }
     if (w.model == WG_GRANULAR) {
         i = 1 + parse_granular(g, &w, argc - 1, argv + 1);
         if (i >= argc)
@@ -223,7 +292,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     } else {
         i = parse_classic(g, &w, argc, argv);
     }
-    const char *ws = argv[i];
+    ws = argv[i];
     int is_region = !strcmp(f->style->name, "wall/gran/region");
     if (is_region != !strcmp(ws, "region"))
         gr_error(g, is_region ? "fix wall/gran/region expects 'region ID' after the "
@@ -265,9 +334,18 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "unknown fix wall/gran wall style '%.64s' (expected xplane, yplane, zplane, "
                     "zcylinder or mesh)", ws);
     }
+options:
     w.heat = w.model == WG_GRANULAR && (int)w.param[GR_HMODEL] != GR_H_NONE;
     while (i < argc) {
-        if (!strcmp(argv[i], "temperature")) { /* LAMMPS 2023: the wall's temperature */
+        if (w.model == WG_LIGGGHTS && !strcmp(argv[i], "store_force")) {
+            arg_need(g, argc, i, 1, "store_force");
+            if (arg_yesno(g, argv[i + 1], "store_force"))
+                gr_error(g, "fix wall/gran keyword 'store_force yes' is not supported");
+            i += 2;
+        } else if (w.model == WG_LIGGGHTS && !strcmp(argv[i], "wiggle")) {
+            gr_error(g, "fix wall/gran model ...: LIGGGHTS has no wiggle (use shear, or fix "
+                        "move/mesh on a mesh)");
+        } else if (!strcmp(argv[i], "temperature")) { /* LAMMPS 2023: the wall's temperature */
             arg_need(g, argc, i, 1, "temperature");
             if (!strncmp(argv[i + 1], "v_", 2))
                 gr_error(g, "fix wall/gran temperature: a variable wall temperature (%.64s) is "
@@ -332,6 +410,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "pair_gran_hertz_history.cl";
     f->sources[f->nsources++] = "gran_heat.cl";
     f->sources[f->nsources++] = "pair_granular.cl";
+    f->sources[f->nsources++] = "pair_gran.cl";
     f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "wall_region.cl";
     f->sources[f->nsources++] = "fix_wall_gran.h";
@@ -358,6 +437,8 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     if (w->style == W_ZCYLINDER) {
         geom.kind = WALL_ZCYLINDER;
         geom.radius = w->cylradius;
+        geom.cx = w->cx;
+        geom.cy = w->cy;
         geom.cyl_shear = w->wshear && w->axis != 2;
         geom.vshear = w->vshear;
         if (geom.cyl_shear)
@@ -411,6 +492,7 @@ static void init(struct gravel *g, struct fix *f)
     w->law.kernel = eng_kernel(g, kname);
     w->law.history = w->history;
     w->law.by_type = 0;
+    w->law.nparam = 0;
     w->law.inclusive = 1;
     if (w->heat && !(g->atoms.heat_flag & ATOM_HEAT_T))
         gr_error(g, "Heat conduction in fix wall/gran requires atom style with temperature "
@@ -420,6 +502,23 @@ static void init(struct gravel *g, struct fix *f)
                     "property (fix property/atom temperature heatflow)");
     w->law.heat = w->heat;
     w->law.twall = w->twall;
+    if (w->model == WG_LIGGGHTS) { /* the table by (particle type, wall type) */
+        int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+        char who[GR_NAMELEN + 32];
+        snprintf(who, sizeof who, "fix %s (wall/gran)", f->id);
+        if (w->wtype > nt)
+            gr_error(g, "%s: primitive type %d is beyond the %d atom type(s)", who, w->wtype, nt);
+        lg_check(g, &w->lg, nt, who);
+        free(w->table);
+        w->table = gr_calloc(g, (size_t)nt * nt * LG_NPARAM, sizeof(double));
+        w->table_nt = nt;
+        for (int I = 1; I <= nt; I++)
+            for (int J = 1; J <= nt; J++)
+                lg_pack(g, &w->lg, nt, I, J, 1,
+                        w->table + ((size_t)(I - 1) * nt + (J - 1)) * LG_NPARAM, who);
+        w->law.by_type = w->style == W_MESH ? 0 : -w->wtype;
+        w->law.nparam = LG_NPARAM;
+    }
     /* -compat lammps2021: FixWallGran::init converts a tsuji restitution at
      * every run, so each later run converts the converted value again */
     if (w->inits++ > 0 && g->opt.lammps2021 && w->model == WG_GRANULAR &&
@@ -429,8 +528,14 @@ static void init(struct gravel *g, struct fix *f)
     if (w->law.param)
         clReleaseMemObject(w->law.param);
     w->law.param = NULL;
-    w->law.param = eng_alloc(g, (size_t)w->nparam * e->rsz, "fix wall/gran parameters");
-    eng_write_reals(g, w->law.param, (size_t)w->nparam, w->param);
+    if (w->model == WG_LIGGGHTS) {
+        size_t nq = (size_t)w->table_nt * w->table_nt * LG_NPARAM;
+        w->law.param = eng_alloc(g, nq * e->rsz, "fix wall/gran parameters");
+        eng_write_reals(g, w->law.param, nq, w->table);
+    } else {
+        w->law.param = eng_alloc(g, (size_t)w->nparam * e->rsz, "fix wall/gran parameters");
+        eng_write_reals(g, w->law.param, (size_t)w->nparam, w->param);
+    }
     if (w->style == W_MESH) {
         f->peratom_bytes = mesh_walls_init(g, f, &w->mesh, w->history);
         return;
@@ -461,7 +566,7 @@ static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     if (w->style == W_MESH) {
-        mesh_walls_apply(g, f, &w->mesh, &w->law, 0);
+        mesh_walls_apply(g, f, &w->mesh, &w->law, w->model == WG_LIGGGHTS);
         return;
     }
     if (w->style == W_REGION) {
@@ -478,6 +583,7 @@ static void destroy(struct fix *f)
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
     if (w) {
+        free(w->table);
         mesh_walls_release(&w->mesh);
         wall_region_release(&w->wreg);
     }

@@ -442,7 +442,7 @@ TEST(command_errors)
     MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 "
              "mesh n_meshes 1 meshes x\n", "no fix with ID 'x'", 6);
     MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran model hertz tangential "
-             "history mesh n_meshes 1 meshes m\n", "LIGGGHTS' 'model ... tangential ...' syntax", 6);
+             "history mesh n_meshes 1 meshes m shear x 1\n", "use fix move/mesh", 6);
     MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/pair mesh n_meshes 1 meshes m "
              "extra\n", "fix wall/pair mesh: unexpected argument 'extra'", 6);
     MESH_ERR("fix m all mesh/surface file %s type 1\nfix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 "

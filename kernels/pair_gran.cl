@@ -1,0 +1,347 @@
+/* pair_gran.cl - LIGGGHTS 3.8's granular contact models (`pair_style gran
+ * model M tangential T [cohesion C] [rolling_friction R]`, and `fix wall/gran
+ * model ...` through the same evaluator; host side styles/pair/pair_gran.c,
+ * docs doc/styles/pair_gran_model.md), reproduced from LIGGGHTS's
+ * surface_model_default.h, normal_model_*.h, tangential_model_*.h,
+ * cohesion_model_sjkr*.h and rolling_model_cdt.h in their order of
+ * operations. Param layout LG_* (kernels/param_layout.h), mixed on the host.
+ *
+ * en = del / r from j to i, deltan = radsum - r, vn = vr.en (< 0 closing),
+ * reff = ri rj / (ri + rj) (ri for a wall), meff the reduced mass (mi: wall).
+ * Contact-point lever arms cri = ri - deltan/2, crj = rj - deltan/2 (not
+ * LAMMPS's ri, rj); vtr = vt + del x (cri omi + crj omj) / r.
+ * Normal (Fn = kn deltan - gamman vn, clamped at 0 with limitForce):
+ *   hertz   kn = 4/3 Y* sqrt(reff deltan), kt = 8 G* sqrt(reff deltan),
+ *           gamman = -2 sqrt(5/6) beta sqrt(2 Y* sqrt(reff deltan) meff),
+ *           gammat = -2 sqrt(5/6) beta sqrt(kt meff)
+ *   hooke   kn = 16/15 sqrt(reff) Y* (15 meff v_c^2 / (16 sqrt(reff) Y*))^(1/5),
+ *           kt = kn (2/7 kn with ktToKnUser), gamman = gammat =
+ *           sqrt(4 meff kn ln^2 e / (ln^2 e + pi^2))
+ *   hooke/hysteresis  hooke's kn, kt = kn, gamman = gammat = sqrt(4 meff kn / (1 +
+ *           (pi / ln e)^2)); the elastic part follows Walton-Braun / Luding's
+ *           hysteresis on the largest overlap dmax (history): loading kn delta,
+ *           un/reloading k2 (delta - dmax) + kn dmax with k2 = kn + (k2max - kn)
+ *           dmax / dlim (k2max beyond dlim = k2max/(k2max - kn) phiF 2 reff),
+ *           bounded below by the adhesion -kc delta (dmax then moves on);
+ *           k2max = kn coefficientMaxElasticStiffness, kc = kn
+ *           coefficientAdhesionStiffness, phiF = coefficientPlasticityDepth
+ *   hertz/stiffness  kn, kt, gamman meff, gammat meff, each x sqrt(reff deltan)
+ *   hooke/stiffness  kn, kt, gamman meff, gammat meff (absolute_damping: no meff)
+ *   (tangential_damping off: gammat = 0)
+ * Tangential history: s += vtr dt, s -= (s.en) en (no rescale of |s|);
+ *   Ft = -kt s; if kt |s| > mu |Fn|: Ft scaled to mu |Fn| and s = -Ft / kt,
+ *   WITHOUT the dashpot (LAMMPS adds it before the Coulomb test), else
+ *   Ft -= gammat vtr. no_history: Ft = -min(gammat, mu |Fn| / |vtr|) vtr.
+ * Cohesion (in contact only): Fcoh = -ced A along en,
+ *   sjkr  A = -pi/4 (r-ri-rj)(r+ri-rj)(r-ri+rj)(r+ri+rj) / r^2 (wall: pi (ri^2 - r^2)),
+ *   sjkr2 A = 2 pi (2 ri rj / (ri + rj)) (ri + rj - r) (wall: 2 pi ri (ri - r)).
+ * Rolling cdt: tr = mu_r kn deltan reff w/|w| without its en component
+ *   (torsionTorque on: kept), w = omi - omj (wall: cri omi / r); on i -tr, on j +tr.
+ * Torques: on i -cri (en x Ft) - tr, on j -crj (en x Ft) + tr. */
+
+#define LG_SQRT56 ((REAL)0.91287092917527685576161630466800355658790782499663875)
+
+/* The normal model's result (LIGGGHTS's sidata.Fn, kn, kt, gamman, gammat) */
+struct lg_normal_out {
+    REAL Fn, kn, kt, gamman, gammat;
+};
+
+/* hooke/hysteresis's elastic force on the largest overlap *dmax (updated:
+ * raised to deltan always, moved on along the adhesion branch when update) */
+static inline REAL lg_hysteresis(__global const REAL *p, const REAL kn, const REAL reff,
+                                 const REAL deltan, REAL *dmax, const int update)
+{
+    const REAL k2Max = kn * p[LG_K2MAX];
+    const REAL kc = kn * p[LG_KC];
+    if (deltan > *dmax)
+        *dmax = deltan;
+    const REAL deltaMax = *dmax;
+    const REAL deltaMaxLim = (k2Max / (k2Max - kn)) * p[LG_PHIF] * (REAL)2 * reff;
+    REAL fHys;
+    if (deltaMax >= deltaMaxLim) {
+        const REAL fTmp = k2Max * (deltan - deltaMaxLim) + kn * deltaMaxLim;
+        if (fTmp >= -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            if (update)
+                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
+                                                                      deltaMaxLim / (k2Max - kn))));
+        }
+    } else {
+        const REAL k2 = kn + (k2Max - kn) * deltaMax / deltaMaxLim;
+        const REAL fTmp = k2 * (deltan - deltaMax) + kn * deltaMax;
+        if (fTmp >= kn * deltan) {
+            fHys = kn * deltan;
+        } else if (fTmp > -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            if (update)
+                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
+                                                                      deltaMaxLim / (k2Max - kn))));
+        }
+    }
+    return fHys;
+}
+
+/* dmax: hooke/hysteresis's history entry (NULL for the other models) */
+static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL reff,
+                                             const REAL meff, const REAL deltan, const REAL vn,
+                                             REAL *dmax, const int update)
+{
+    struct lg_normal_out o;
+    const int nm = (int)p[LG_NMODEL];
+    const int tdamp = p[LG_TDAMP] != (REAL)0;
+    if (nm == LG_N_HOOKE_HYSTERESIS) {
+        const REAL Y = p[LG_YEFF], cv = p[LG_CHARV], l = p[LG_LOGE];
+        const REAL sqrtval = sqrt(reff);
+        o.kn = (REAL)16. / (REAL)15. * sqrtval * Y *
+               pow((REAL)15. * meff * cv * cv / ((REAL)16. * sqrtval * Y), (REAL)0.2);
+        o.kt = o.kn;
+        o.gamman = sqrt((REAL)4. * meff * o.kn /
+                        ((REAL)1. + ((REAL)M_PI / l) * ((REAL)M_PI / l)));
+        o.gammat = tdamp ? o.gamman : (REAL)0;
+        const REAL fHys = dmax ? lg_hysteresis(p, o.kn, reff, deltan, dmax, update)
+                               : o.kn * deltan;
+        o.Fn = fHys + -o.gamman * vn;
+        return o;
+    }
+    if (nm == LG_N_HERTZ) {
+        const REAL Y = p[LG_YEFF], beta = p[LG_BETA];
+        const REAL sqrtval = sqrt(reff * deltan);
+        const REAL Sn = (REAL)2. * Y * sqrtval;
+        const REAL St = (REAL)8. * p[LG_GEFF] * sqrtval;
+        o.kn = (REAL)4. / (REAL)3. * Y * sqrtval;
+        o.kt = St;
+        o.gamman = (REAL)-2. * LG_SQRT56 * beta * sqrt(Sn * meff);
+        o.gammat = tdamp ? (REAL)-2. * LG_SQRT56 * beta * sqrt(St * meff) : (REAL)0;
+    } else if (nm == LG_N_HOOKE) {
+        const REAL Y = p[LG_YEFF], cv = p[LG_CHARV], l = p[LG_LOGE];
+        const REAL sqrtval = sqrt(reff);
+        o.kn = (REAL)16. / (REAL)15. * sqrtval * Y *
+               pow((REAL)15. * meff * cv * cv / ((REAL)16. * sqrtval * Y), (REAL)0.2);
+        o.kt = o.kn;
+        if (p[LG_KTTOKN] != (REAL)0)
+            o.kt *= (REAL)0.285714286;
+        const REAL l2 = l * l;
+        o.gamman = sqrt((REAL)4. * meff * o.kn * l2 / (l2 + (REAL)M_PI * (REAL)M_PI));
+        o.gammat = tdamp ? o.gamman : (REAL)0;
+    } else if (nm == LG_N_HERTZ_STIFFNESS) {
+        const REAL polyhertz = sqrt(reff * deltan);
+        o.kn = polyhertz * p[LG_KN];
+        o.kt = polyhertz * p[LG_KT];
+        o.gamman = polyhertz * meff * p[LG_GN];
+        o.gammat = tdamp ? polyhertz * meff * p[LG_GT] : (REAL)0;
+    } else { /* LG_N_HOOKE_STIFFNESS */
+        o.kn = p[LG_KN];
+        o.kt = p[LG_KT];
+        const int absd = p[LG_ABSDAMP] != (REAL)0;
+        o.gamman = absd ? p[LG_GN] : meff * p[LG_GN];
+        o.gammat = absd ? p[LG_GT] : meff * p[LG_GT];
+        if (!tdamp)
+            o.gammat = 0;
+    }
+    const REAL Fn_damping = -o.gamman * vn;
+    const REAL Fn_contact = o.kn * deltan;
+    o.Fn = Fn_damping + Fn_contact;
+    if (p[LG_LIMIT] != (REAL)0 && o.Fn < (REAL)0)
+        o.Fn = 0;
+    return o;
+}
+
+/* cohesionEnergyDensity times the contact area, as a normal force along en
+ * (negative: attractive) */
+static inline REAL lg_cohesion(__global const REAL *p, const REAL r, const REAL ri,
+                               const REAL rj, const int wall)
+{
+    const int cm = (int)p[LG_COH];
+    REAL Acont;
+    if (cm == LG_C_SJKR)
+        Acont = wall ? (ri * ri - r * r) * (REAL)M_PI
+                     : -(REAL)M_PI / (REAL)4 * ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) *
+                                                (r + ri + rj)) / (r * r);
+    else
+        Acont = wall ? (REAL)M_PI * (REAL)2. * ri * (ri - r)
+                     : (REAL)M_PI * (REAL)2. * ((REAL)2. * ri * rj / (ri + rj)) * (ri + rj - r);
+    return -p[LG_CED] * Acont;
+}
+
+/* history: the spring truncated at mu |Fn| without its dashpot; updates *s */
+static inline REAL3 lg_tangential_history(const REAL3 en, const REAL3 vtr, const REAL kt,
+                                          const REAL gammat, const REAL xmu, const REAL Fn,
+                                          const REAL dt, const int update, REAL3 *s)
+{
+    REAL s0 = s->x, s1 = s->y, s2 = s->z;
+    if (update) {
+        s0 += vtr.x * dt;
+        s1 += vtr.y * dt;
+        s2 += vtr.z * dt;
+        const REAL rsht = s0 * en.x + s1 * en.y + s2 * en.z;
+        s0 -= rsht * en.x;
+        s1 -= rsht * en.y;
+        s2 -= rsht * en.z;
+    }
+    const REAL shrmag = sqrt(s0 * s0 + s1 * s1 + s2 * s2);
+    REAL Ft1 = -(kt * s0), Ft2 = -(kt * s1), Ft3 = -(kt * s2);
+    const REAL Ft_shear = kt * shrmag;
+    const REAL Ft_friction = xmu * fabs(Fn);
+    if (Ft_shear > Ft_friction) {
+        if (shrmag != (REAL)0) {
+            const REAL ratio = Ft_friction / Ft_shear;
+            Ft1 *= ratio;
+            Ft2 *= ratio;
+            Ft3 *= ratio;
+            if (update) {
+                s0 = -Ft1 / kt;
+                s1 = -Ft2 / kt;
+                s2 = -Ft3 / kt;
+            }
+        } else {
+            Ft1 = Ft2 = Ft3 = 0;
+        }
+    } else {
+        Ft1 -= gammat * vtr.x;
+        Ft2 -= gammat * vtr.y;
+        Ft3 -= gammat * vtr.z;
+    }
+    if (update)
+        *s = (REAL3)(s0, s1, s2);
+    return (REAL3)(Ft1, Ft2, Ft3);
+}
+
+/* no_history: the dashpot capped by Coulomb */
+static inline REAL3 lg_tangential_nohistory(const REAL3 vtr, const REAL gammat, const REAL xmu,
+                                            const REAL Fn)
+{
+    const REAL vrel = sqrt(vtr.x * vtr.x + vtr.y * vtr.y + vtr.z * vtr.z);
+    const REAL Ft_friction = xmu * fabs(Fn);
+    const REAL gamma = Ft_friction < gammat * vrel ? Ft_friction / vrel : gammat;
+    return (REAL3)(-gamma * vtr.x, -gamma * vtr.y, -gamma * vtr.z);
+}
+
+/* rolling cdt: the torque subtracted on i (added on j); wr the relative
+ * rotation (the wall's cri omi / r), Fel = kn deltan */
+static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const REAL3 en,
+                                   const REAL Fel, const REAL reff, const int wall)
+{
+    const REAL rmu = p[LG_RMU];
+    const REAL wrmag = sqrt(wr.x * wr.x + wr.y * wr.y + wr.z * wr.z);
+    if (!(wrmag > (REAL)0))
+        return (REAL3)(0);
+    REAL3 t;
+    if (wall) {
+        t = (REAL3)(rmu * Fel * wr.x / wrmag * reff, rmu * Fel * wr.y / wrmag * reff,
+                    rmu * Fel * wr.z / wrmag * reff);
+    } else {
+        const REAL f = rmu * Fel * reff / wrmag;
+        t = (REAL3)(wr.x * f, wr.y * f, wr.z * f);
+    }
+    if (p[LG_TORSION] == (REAL)0) {
+        const REAL d = t.x * en.x + t.y * en.y + t.z * en.z;
+        t = (REAL3)(t.x - en.x * d, t.y - en.y * d, t.z - en.z * d);
+    }
+    return t;
+}
+
+/* The composed law; dmax: hooke/hysteresis's history entry (NULL otherwise).
+ * The wall's set has p[LG_WALL] = 1. */
+static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *dmax,
+                                  REAL3 *shear, struct contact_force *out)
+{
+    const int wall = p[LG_WALL] != (REAL)0;
+    const REAL3 en = c->n;
+    const REAL3 del = c->del;
+    const REAL rinv = c->rinv, r = c->r;
+    const REAL radi = c->radi, radj = wall ? (REAL)0 : c->radj;
+    const REAL deltan = c->delta;
+    /* surface_model_default: relative velocities at the contact points */
+    const REAL3 vr = c->vr;
+    const REAL vn = vr.x * en.x + vr.y * en.y + vr.z * en.z;
+    const REAL3 vt = (REAL3)(vr.x - vn * en.x, vr.y - vn * en.y, vr.z - vn * en.z);
+    const REAL cri = radi - (REAL)0.5 * deltan;
+    const REAL crj = radj - (REAL)0.5 * deltan;
+    REAL3 wr;
+    if (wall)
+        wr = (REAL3)(cri * c->omi.x * rinv, cri * c->omi.y * rinv, cri * c->omi.z * rinv);
+    else
+        wr = (REAL3)((cri * c->omi.x + crj * c->omj.x) * rinv,
+                     (cri * c->omi.y + crj * c->omj.y) * rinv,
+                     (cri * c->omi.z + crj * c->omj.z) * rinv);
+    const REAL3 vtr = (REAL3)(vt.x - (del.z * wr.y - del.y * wr.z),
+                              vt.y - (del.x * wr.z - del.z * wr.x),
+                              vt.z - (del.y * wr.x - del.x * wr.y));
+    const REAL reff = wall ? radi : radi * radj / (radi + radj);
+
+    const struct lg_normal_out nf = lg_normal(p, reff, c->meff, deltan, vn, dmax,
+                                              c->shearupdate);
+    REAL3 F = (REAL3)(nf.Fn * en.x, nf.Fn * en.y, nf.Fn * en.z);
+    if ((int)p[LG_COH] != LG_C_NONE) {
+        const REAL fc = lg_cohesion(p, r, radi, radj, wall);
+        F += (REAL3)(fc * en.x, fc * en.y, fc * en.z);
+    }
+    REAL3 Ft;
+    if (p[LG_TMODEL] != (REAL)0)
+        Ft = lg_tangential_history(en, vtr, nf.kt, nf.gammat, p[LG_MU], nf.Fn, c->dt,
+                                   c->shearupdate, shear);
+    else
+        Ft = lg_tangential_nohistory(vtr, nf.gammat, p[LG_MU], nf.Fn);
+    out->f = F + Ft;
+
+    /* torques: on i -cri tor - rt, on j -crj tor + rt, written as the body's
+     * -radi tc - tr, -radj tc + tr (tc = (r / radsum) tor) */
+    const REAL3 tor = (REAL3)(en.y * Ft.z - en.z * Ft.y, en.z * Ft.x - en.x * Ft.z,
+                              en.x * Ft.y - en.y * Ft.x);
+    REAL3 rt = (REAL3)(0);
+    if ((int)p[LG_ROLL] == LG_R_CDT) {
+        const REAL3 w = wall ? wr : c->omi - c->omj;
+        rt = lg_rolling_cdt(p, w, en, deltan * nf.kn, reff, wall);
+    }
+    if (wall) {
+        out->tc = tor;
+        out->tr = (-(REAL)0.5 * deltan) * tor + rt;
+        return;
+    }
+    const REAL radsum = radi + radj;
+    out->tc = (r / radsum) * tor;
+    out->tr = (deltan * (radi - radj) / ((REAL)2 * radsum)) * tor + rt;
+}
+
+/* PAIR_EVAL form: the models without a normal history */
+static inline void gran_model_eval(const struct contact *c, __global const REAL *p,
+                                   REAL3 *shear, struct contact_force *out)
+{
+    gran_model_law(c, p, 0, shear, out);
+}
+
+/* PAIR_EVAL_ROW form (hooke/hysteresis): h = dmax, then the shear */
+static inline void gran_model_eval_row(const struct contact *c, __global const REAL *p, REAL *h,
+                                       struct contact_force *out)
+{
+    REAL3 s = (REAL3)(h[1], h[2], h[3]);
+    gran_model_law(c, p, h, &s, out);
+    h[1] = s.x;
+    h[2] = s.y;
+    h[3] = s.z;
+}
+
+/* collision time (kernels/accuracy.cl): hertz models Johnson's Hertz time
+ * of kn = 4/3 Y*, hooke the linear spring's half period at its kn */
+static inline REAL gran_model_eval_tcol(const struct contact *c, __global const REAL *p,
+                                        const REAL vn)
+{
+    const int nm = (int)p[LG_NMODEL];
+    const REAL reff = p[LG_WALL] != (REAL)0 ? c->radi : c->reff;
+    if (nm == LG_N_HERTZ)
+        return tcol_hertz((REAL)4. / (REAL)3. * p[LG_YEFF], reff, c->meff, vn);
+    const struct lg_normal_out o = lg_normal(p, reff, c->meff, (REAL)0, (REAL)0, 0, 0);
+    if (nm == LG_N_HERTZ_STIFFNESS)
+        return tcol_hertz(p[LG_KN], reff, c->meff, vn);
+    return o.kn > (REAL)0 ? tcol_linear(o.kn, 0, c->meff) : (REAL)0;
+}
+
+static inline REAL gran_model_eval_row_tcol(const struct contact *c, __global const REAL *p,
+                                            const REAL vn)
+{
+    return gran_model_eval_tcol(c, p, vn);
+}
