@@ -57,7 +57,12 @@ def thermo(text):
             if re.match(r"^\s*\d+\s+\d+\s+[-\d.eE+]+(\s+[-\d.eE+]+)*\s*$", l)]
 
 
+FAILURES = []
+
+
 def report(ok, name, why=""):
+    if not ok:
+        FAILURES.append(name)
     if not ok and why:
         print("  " + why)
     print(f"{'PASS' if ok else 'FAIL'} {name}")
@@ -255,6 +260,7 @@ def main():
     check_props()
     check_no_overlapcheck()
     check_errors()
+    return 1 if FAILURES else 0
 
 
 if __name__ == "__main__":
