@@ -723,3 +723,49 @@ void insert_destroy(struct fix *f)
     }
     free(in);
 }
+
+/* Restart state: the streams, counts and schedule (LIGGGHTS writes the
+ * stream, ninserted, first step, next step and mass inserted). */
+struct insert_saved {
+    struct rng_park rng, rrng;
+    int ninserted, ninsert, exact_number, setup_done;
+    double massinserted, massinsert, region_volume, ninsert_per, nflowrate, massflowrate;
+    int64_t first_ins_step, final_ins_step, most_recent, next_reneighbor;
+};
+
+size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct insert *in = f->data;
+    struct insert_saved s;
+    memset(&s, 0, sizeof s);
+    s.rng = in->rng, s.rrng = in->rrng;
+    s.ninserted = in->ninserted, s.ninsert = in->ninsert;
+    s.exact_number = in->exact_number, s.setup_done = in->setup_done;
+    s.massinserted = in->massinserted, s.massinsert = in->massinsert;
+    s.region_volume = in->region_volume, s.ninsert_per = in->ninsert_per;
+    s.nflowrate = in->nflowrate, s.massflowrate = in->massflowrate;
+    s.first_ins_step = in->first_ins_step, s.final_ins_step = in->final_ins_step;
+    s.most_recent = in->most_recent, s.next_reneighbor = f->next_reneighbor;
+    if (buf && cap >= sizeof s)
+        memcpy(buf, &s, sizeof s);
+    return sizeof s;
+}
+
+void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct insert *in = f->data;
+    struct insert_saved s;
+    if (len != sizeof s)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len, sizeof s);
+    memcpy(&s, buf, sizeof s);
+    in->rng = s.rng, in->rrng = s.rrng;
+    in->ninserted = s.ninserted, in->ninsert = s.ninsert;
+    in->exact_number = s.exact_number, in->setup_done = s.setup_done;
+    in->massinserted = s.massinserted, in->massinsert = s.massinsert;
+    in->region_volume = s.region_volume, in->ninsert_per = s.ninsert_per;
+    in->nflowrate = s.nflowrate, in->massflowrate = s.massflowrate;
+    in->first_ins_step = s.first_ins_step, in->final_ins_step = s.final_ins_step;
+    in->most_recent = s.most_recent;
+    f->next_reneighbor = s.next_reneighbor;
+}

@@ -75,5 +75,7 @@ void insert_pre_exchange(struct gravel *g, struct fix *f);
 int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);
 void insert_destroy(struct fix *f);
 double insert_vector(struct gravel *g, struct fix *f, int i);
+size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
+void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);
 
 #endif

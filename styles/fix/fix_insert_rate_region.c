@@ -92,6 +92,8 @@ const struct fix_style fix_style_insert_rate_region = {
     .pre_exchange = insert_pre_exchange,
     .reserve = insert_reserve,
     .destroy = insert_destroy,
+    .write_restart = insert_write_restart,
+    .read_restart = insert_read_restart,
     .size_vector = 2,
     .vector = insert_vector,
 };

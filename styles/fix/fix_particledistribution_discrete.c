@@ -200,20 +200,45 @@ static void destroy(struct fix *f)
     free(d);
 }
 
+/* Restart files carry the stream. */
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct pdist *d = f->data;
+    if (buf && cap >= sizeof d->rng)
+        memcpy(buf, &d->rng, sizeof d->rng);
+    return sizeof d->rng;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct pdist *d = f->data;
+    if (len != sizeof d->rng)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+                 sizeof d->rng);
+    memcpy(&d->rng, buf, sizeof d->rng);
+}
+
 const struct fix_style fix_style_particledistribution_discrete = {
     .name = "particledistribution/discrete",
     .create = create_mass,
     .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
 };
 
 const struct fix_style fix_style_particledistribution_discrete_numberbased = {
     .name = "particledistribution/discrete/numberbased",
     .create = create_number,
     .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
 };
 
 const struct fix_style fix_style_particledistribution_discrete_massbased = {
     .name = "particledistribution/discrete/massbased",
     .create = create_massbased,
     .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
 };

@@ -229,7 +229,28 @@ void ptemplate_draw(struct ptemplate *t, double *radius, double *density)
     *density = pdf_sample(&t->density, &t->rng);
 }
 
+/* Restart files carry the stream (LIGGGHTS writes its state too). */
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct ptemplate *t = f->data;
+    if (buf && cap >= sizeof t->rng)
+        memcpy(buf, &t->rng, sizeof t->rng);
+    return sizeof t->rng;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct ptemplate *t = f->data;
+    if (len != sizeof t->rng)
+        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+                 sizeof t->rng);
+    memcpy(&t->rng, buf, sizeof t->rng);
+}
+
 const struct fix_style fix_style_particletemplate_sphere = {
     .name = "particletemplate/sphere",
     .create = create,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
 };
