@@ -699,7 +699,9 @@ int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
     bigint steps = in->insert_every > 0 ? (last - next) / in->insert_every + 1 : 1;
     double per = (double)in->ops->reserve(g, in, nsteps) + in->dist->n + 2;
     double total = per * (double)steps;
-    if (in->ninsert_exists && total > in->ninsert - in->ninserted + in->dist->n + 2.0)
+    /* the total is known once the first run's setup has derived it (mass M) */
+    if (in->ninsert_exists && in->setup_done &&
+        total > in->ninsert - in->ninserted + in->dist->n + 2.0)
         total = in->ninsert - in->ninserted + in->dist->n + 2.0;
     if (!(total < 2e9))
         gr_error(g, "%s %s: up to %g insertions in this run are too many", in->ops->who, f->id,

@@ -15,8 +15,8 @@ particles, as many as asked, inside their region and without overlaps.
 2. gravel-only properties: particles_in_region gives exactly N atoms in the
    region, all inside it by their radius (all_in yes), no two touching, radii of
    gaussian/uniform templates within their bounds and with the expected mean;
-   later insertion steps add nothing to a full region; insert/rate/region stops at
-   nparticles; overlapcheck no places the whole count.
+   later insertion steps add nothing to a full region; insert/rate/region with `mass M`
+   stops at int(M / E[mass]) particles; overlapcheck no places the whole count.
 3. Bad commands stop with LIGGGHTS's message and the script line.
 
 One PASS/FAIL line per case."""
@@ -100,7 +100,8 @@ fix pdd1 all particledistribution/discrete/numberbased 32452843 2 pts1 0.5 pts2 
 region rb block 0.005 0.055 0.005 0.055 0.02 0.06 units box
 fix ins all insert/pack seed 49979687 distributiontemplate pdd1 insert_every 10 overlapcheck yes all_in yes particles_in_region 1500 region rb
 region rr sphere 0.03 0.03 0.08 0.0199 units box
-fix ins2 all insert/rate/region seed 86028121 distributiontemplate pdd1 nparticles 120 particlerate 400000 insert_every 5 all_in yes region rr
+variable mtot equal 120.5*PI*4/3*(0.5*2500*0.002*(0.002^2+3*0.0002^2)+0.5*2000*(0.001^3+0.001^2*0.0015+0.001*0.0015^2+0.0015^3)/4)
+fix ins2 all insert/rate/region seed 86028121 distributiontemplate pdd1 mass ${mtot} massrate 20 insert_every 5 all_in yes region rr
 thermo_style custom step atoms f_ins[1] f_ins2[1]
 thermo 10
 dump d all custom 40 dump.out id type x y z radius mass
