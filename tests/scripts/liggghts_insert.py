@@ -11,7 +11,10 @@ particles, as many as asked, inside their region and without overlaps.
    z-cylinder, all_in yes, two templates by mass; mixed: insert/pack
    mass_in_region every 5 steps into a periodic block (three templates by number,
    random_distribute uncorrelated, vel gaussian, omega) beside insert/rate/region
-   into a sphere (vel uniform, all_in yes).
+   into a sphere (vel uniform, all_in yes); extra: massbased distribution, volumefraction_region
+   in a y-cylinder every 3 steps from `start 2` with maxattempt 3 (LIGGGHTS's "Less insertions
+   than requested" on the same steps, the same atoms placed) beside overlapcheck no, all_in
+   yes, particles_in_region in a sphere.
 2. gravel-only properties: particles_in_region gives exactly N atoms in the
    region, all inside it by their radius (all_in yes), no two touching, radii of
    gaussian/uniform templates within their bounds and with the expected mean;
@@ -258,6 +261,7 @@ def check_errors():
 def main():
     check_peer("pack")
     check_peer("mixed")
+    check_peer("extra")
     check_props()
     check_no_overlapcheck()
     check_errors()

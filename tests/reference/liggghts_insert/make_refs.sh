@@ -2,11 +2,11 @@
 # make_refs.sh - regenerate the liggghts references of tests/scripts/liggghts_insert.py:
 # each <deck>.body behind head.liggghts, run by LIGGGHTS-PUBLIC 3.8 (`liggghts`, Debian),
 # gives <deck>.liggghts.log (its log) and <deck>.liggghts.dump.gz (its last dump frame);
-# vtk.body gives vtk.liggghts.legacy and vtk.liggghts.box.legacy (legacy VTK files) (dump custom/vtk, step 2).
+# (decks pack, mixed, extra); vtk.body gives vtk.liggghts.legacy and vtk.liggghts.box.legacy (legacy VTK files) (dump custom/vtk, step 2).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
-for deck in pack mixed; do
+for deck in pack mixed extra; do
     cat "$here/head.liggghts" "$here/$deck.body" > "$tmp/in.$deck"
     (cd "$tmp" && liggghts -in "in.$deck" -log "$here/$deck.liggghts.log" > /dev/null)
     [ -f "$tmp/dump.out" ] || continue
