@@ -585,6 +585,12 @@ void insert_init(struct gravel *g, struct fix *f)
 {
     struct insert *in = f->data;
     relink(g, in);
+    if (in->reg_id[0]) {
+        in->reg = region_find(g, in->reg_id);
+        if (!in->reg)
+            gr_error(g, "%s %s: regions used by this command must not be deleted (%s)",
+                     in->ops->who, f->id, in->reg_id);
+    }
     if (f->next_reneighbor > 0 && f->next_reneighbor < g->step)
         gr_error(g, "%s %s: 'start' step can not be before current step", in->ops->who, f->id);
     if (in->setup_done)
@@ -692,6 +698,7 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
 int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
 {
     struct insert *in = f->data;
+    relink(g, in); /* reserve comes before init: the distribution may be a new one */
     *rmax = in->dist->maxrad;
     bigint next = f->next_reneighbor, last = g->step + nsteps;
     if (next <= g->step || next > last)

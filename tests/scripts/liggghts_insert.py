@@ -242,6 +242,10 @@ ERRORS = [
      "must define either 'massrate' or 'particlerate'", 17),
     ("vel_style", T + D + R + P + "insert_every once particles_in_region 5 vel random 1 2 3\n",
      "expecting keyword 'constant' or 'uniform' or 'gaussian'", 16),
+    ("unfixed_dist", T + D + R + P + "insert_every once particles_in_region 5\nunfix pdd1\n"
+     "run 1\n", "valid ID for a fix of type particledistribution/discrete", 18),
+    ("deleted_region", T + D + R + P + "insert_every once particles_in_region 5\nregion rb "
+     "delete\nrun 1\n", "regions used by this command must not be deleted", 18),
     ("all_in_cone", T + D + "region rc cone z 0.03 0.03 0.01 0.02 0.02 0.06 units box\n"
      "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 region rc insert_every "
      "once particles_in_region 5 all_in yes\nrun 1\n", "all_in yes needs", 17),
