@@ -16,6 +16,7 @@
  * scaled/unwrapped coordinates and LIGGGHTS's SPH/superquadric fields are
  * refused, as are the XML extensions (.vtu .vtp .pvtu .pvtp need the VTK
  * library). `dump_modify binary yes`: big-endian binary blocks. */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -185,6 +186,10 @@ static void write(struct gravel *g, struct dump *d, FILE *fp, const int *idx, in
     if (g->dom.triclinic)
         gr_error(g, "dump custom/vtk: triclinic boxes are not supported (LIGGGHTS writes a "
                     "hexahedron grid for the box)");
+    for (int k = 0; c->on[C_ID] && k < n; k++)
+        if (a->tag[idx[k]] > INT32_MAX)
+            gr_error(g, "dump custom/vtk: atom ID %lld does not fit LIGGGHTS's int id array "
+                        "(use dump vtk, which writes 64-bit IDs)", (long long)a->tag[idx[k]]);
     fprintf(fp, "# vtk DataFile Version 3.0\n");
     fprintf(fp, "gravel dump %s step %lld time %.17g\n", d->id, (long long)g->step, g->time);
     fprintf(fp, "%s\nDATASET POLYDATA\n", bin ? "BINARY" : "ASCII");
