@@ -1,0 +1,99 @@
+/* fix_insert_rate_region.c - `fix ID group insert/rate/region seed S
+ * distributiontemplate D nparticles N|INF | mass M  particlerate R |
+ * massrate Q  insert_every N  region R ...`: insert at a rate into region R
+ * every N steps (LIGGGHTS-PUBLIC 3.8 FixInsertRateRegion). Per step
+ * int(R N dt + u) particles (u a draw of the fix's stream), capped by the
+ * total; massrate Q gives R = Q / E[mass], mass M gives N = int(M /
+ * E[mass]). n maxattempt tries per step. The insertion step itself:
+ * fix_insert.c; the region keywords as fix insert/pack (volume, count and
+ * mass targets are not used). Full contract:
+ * doc/styles/fix_insert_rate_region.md. */
+#include <math.h>
+
+#include "error.h"
+#include "fix.h"
+#include "fix_insert.h"
+#include "region.h"
+
+#define WHO "fix insert/rate/region"
+
+static void properties(struct gravel *g, struct insert *in)
+{
+    insert_region_setup(g, in);
+    if (in->insert_every < 0)
+        gr_error(g, WHO ": must define 'insert_every'");
+    if (in->insert_every == 0)
+        gr_error(g, WHO ": 'insert_every' = once not allowed");
+    if (in->volfrac > 0. || in->ntotal_region > 0 || in->masstotal_region > 0.)
+        gr_error(g, WHO ": volumefraction_region, particles_in_region and mass_in_region are "
+                    "insert/pack keywords (use nparticles or mass with a rate)");
+    const struct pdist *d = in->dist;
+    if (in->ninsert == 0 && in->ninsert_exists) {
+        if (in->massinsert > 0.) {
+            double n = in->massinsert / d->massexpect;
+            if (!(n < 2147483647.0))
+                gr_error(g, WHO ": mass %g is too many particles", in->massinsert);
+            in->ninsert = (int)n;
+        } else
+            gr_error(g, WHO ": must define either 'nparticles' or 'mass'");
+    }
+    if (in->nflowrate == 0.) {
+        if (in->massflowrate == 0.)
+            gr_error(g, WHO ": must define either 'massrate' or 'particlerate'");
+        in->nflowrate = in->massflowrate / d->massexpect;
+    } else
+        in->massflowrate = in->nflowrate * d->massexpect;
+    in->ninsert_per = in->nflowrate * ((double)in->insert_every * g->dt);
+    if (in->ninsert_exists)
+        in->massinsert = (double)in->ninsert * d->massexpect;
+    if (!(in->ninsert_per < 1e9))
+        gr_error(g, WHO ": %g particles per insertion step is too many", in->ninsert_per);
+}
+
+static int ninsert_this(struct gravel *g, struct insert *in)
+{
+    insert_region_check_box(g, in);
+    return insert_ninsert_rate(g, in);
+}
+
+static int maxtry(const struct insert *in, int n)
+{
+    double t = (double)n * in->maxattempt;
+    return t < 2147483647.0 ? (int)t : 2147483647;
+}
+
+static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
+{
+    (void)nsteps;
+    /* before the first run's setup the rate is not yet derived */
+    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
+    double per = rate * (double)in->insert_every * g->dt + 1;
+    return per < 1e9 ? (int)per : 1000000000;
+}
+
+static const struct insert_ops ops = {
+    .who = WHO,
+    .keyword = insert_region_keyword,
+    .properties = properties,
+    .ninsert_this = ninsert_this,
+    .maxtry = maxtry,
+    .reserve = reserve,
+};
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    insert_create(g, f, argc, argv, &ops);
+}
+
+const struct fix_style fix_style_insert_rate_region = {
+    .name = "insert/rate/region",
+    .create = create,
+    .init = insert_init,
+    .pre_exchange = insert_pre_exchange,
+    .reserve = insert_reserve,
+    .destroy = insert_destroy,
+    .write_restart = insert_write_restart,
+    .read_restart = insert_read_restart,
+    .size_vector = 2,
+    .vector = insert_vector,
+};
