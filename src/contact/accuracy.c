@@ -169,6 +169,10 @@ void acc_collect(struct gravel *g)
     struct acc *s = get(g);
     if (!s->k_reduce || !s->prec)
         return;
+    /* the list may have grown since the last force computation (a run that
+     * computes none, e.g. run 0 continuing a restart while fix pour rebuilds
+     * the list): records that cover it, zero where no kernel wrote */
+    acc_reserve(g);
     struct acc_worst *w = &s->worst;
     double q, ov;
     int nc = (int)ncontact(g);

@@ -197,8 +197,61 @@ def check_errors():
         print(f"{'PASS' if ok else 'FAIL'} {name}")
 
 
+RESTART_A = """units lj
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 10 0 10 0 20
+create_box 1 box
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+fix grav all gravity 1.0 vector 0 0 -1
+fix nve all nve/sphere
+fix floor all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 NULL
+region slab block 0 10 0 10 10 18
+fix ins all pour 200 1 4767 region slab
+timestep 0.001
+run 200
+write_restart r.bin
+"""
+RESTART_B = """read_restart r.bin
+comm_modify vel yes
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+fix grav all gravity 1.0 vector 0 0 -1
+fix nve all nve/sphere
+fix floor all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 NULL
+region slab block 0 10 0 10 10 18
+fix ins all pour 200 1 4767 region slab
+timestep 0.001
+run 0
+run 100
+"""
+
+
+def check_restart_then_pour():
+    """A deck continued from a restart with fix pour defined again runs (run 0
+    continuing the restart while the pour rebuilds the list once stopped on an
+    out-of-range read of the accuracy records) and the pour inserts."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = ""
+        for name, deck in (("a.in", RESTART_A), ("b.in", RESTART_B)):
+            open(os.path.join(tmp, name), "w").write(deck)
+            r = subprocess.run([GRAVEL, "-in", name, "-log", "none"], cwd=tmp,
+                               capture_output=True, text=True, timeout=300)
+            out = r.stdout + r.stderr
+            if r.returncode != 0:
+                break
+        loops = [l for l in out.split("\n") if l.startswith("Loop time")]
+        ok = r.returncode == 0 and len(loops) == 2 and loops[1].endswith("with 277 atoms")
+        if not ok:
+            print(f"  rc {r.returncode}: {out[-400:]}")
+        print(f"{'PASS' if ok else 'FAIL'} fix_pour_restart_run0_then_pour")
+
+
 def main():
     update = "--update" in sys.argv[1:]
+    check_restart_then_pour()
     check_deck_log(update)
     for deck in sorted(glob.glob(os.path.join(REFDIR, "*.in"))):
         check_dump_deck(deck)
