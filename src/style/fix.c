@@ -2,6 +2,7 @@
  * `unfix` commands. Fix order is definition order, as in LAMMPS: a fix
  * redefined with the same ID keeps its place. */
 #include "fix.h"
+#include "fix_property_atom.h"
 
 #include <setjmp.h>
 #include <stdlib.h>

@@ -204,8 +204,4 @@ void fix_reset_step(struct gravel *g, bigint shift);
 /* Union of NEED_* over all fixes. */
 unsigned fix_needs_all(struct gravel *g);
 
-/* unfix of a fix property/atom: the per-atom properties it defined go
- * (styles/fix/fix_property_atom.c; nothing for another style). */
-void property_atom_release(struct gravel *g, struct fix *f);
-
 #endif

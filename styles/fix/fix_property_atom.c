@@ -22,6 +22,7 @@
 #include "args.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_property_atom.h"
 
 enum { P_MOL = 1, P_T = 2, P_Q = 4 };
 
