@@ -35,29 +35,15 @@ static int cmp_pair(const void *pa, const void *pb)
     return aj < bj ? -1 : aj > bj;
 }
 
-int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits_b,
-                    struct host_pair **out, const char *who)
+void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
+                     void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx)
 {
     const struct atoms *at = &g->atoms;
-    *out = NULL;
-    if (g->dom.triclinic || g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
-        gr_error(g, "%s: triclinic boxes are not supported", who);
-    if (!(cut > 0) || !isfinite(cut))
-        gr_error(g, "%s: the pair cut-off must be positive", who);
-    double L[3];
-    for (int q = 0; q < 3; q++)
-        L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
-    int m = 0;
-    int *idx = gr_malloc(g, (size_t)(at->n > 0 ? at->n : 1) * sizeof *idx);
-    for (int i = 0; i < at->n; i++)
-        if (at->mask[i] & (bits_a | bits_b))
-            idx[m++] = i;
-    if (m < 2) {
-        free(idx);
-        return 0;
-    }
-    double lo[3], hi[3];
+    if (m < 2)
+        return;
+    double L[3], lo[3], hi[3];
     for (int q = 0; q < 3; q++) {
+        L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
         lo[q] = INFINITY;
         hi[q] = -INFINITY;
     }
@@ -75,9 +61,9 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
         double n = floor((hi[q] - lo[q]) / cut);
         nc[q] = n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
         if (L[q] > 0 && nc[q] < 3)
-            nc[q] = 1;
+            nc[q] = 1; /* a stencil that wraps onto itself: one cell, all pairs */
     }
-    long total;
+    long total; /* a sparse scene: fewer cells than atoms x 8 */
     while ((total = (long)nc[0] * nc[1] * nc[2]) > 8L * m + 64) {
         int q = nc[0] >= nc[1] && nc[0] >= nc[2] ? 0 : nc[1] >= nc[2] ? 1 : 2;
         nc[q] = nc[q] / 2 > 0 ? nc[q] / 2 : 1;
@@ -107,12 +93,7 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
     for (int k = 0; k < m; k++)
         sorted[cur[cell[k]]++] = k;
     free(cur);
-
-    int np = 0, cap = 0;
-    struct host_pair *p = NULL;
-    const double cutsq = cut * cut;
     for (int k = 0; k < m; k++) {
-        const int i = idx[k];
         const int c0 = cell[k];
         const int ci[3] = {c0 % nc[0], (c0 / nc[0]) % nc[1], c0 / (nc[0] * nc[1])};
         int lst[3][3], ns[3];
@@ -135,43 +116,83 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
             for (int b = 0; b < ns[1]; b++)
                 for (int d = 0; d < ns[0]; d++) {
                     int cc = (lst[2][a] * nc[1] + lst[1][b]) * nc[0] + lst[0][d];
-                    for (int s = start[cc]; s < start[cc + 1]; s++) {
-                        const int j = idx[sorted[s]];
-                        if (at->tag[j] <= at->tag[i])
-                            continue;
-                        unsigned mi = at->mask[i], mj = at->mask[j];
-                        if (!((mi & bits_a) && (mj & bits_b)) &&
-                            !((mi & bits_b) && (mj & bits_a)))
-                            continue;
-                        double del[3], rsq = 0;
-                        for (int q = 0; q < 3; q++) {
-                            del[q] = minimg(at->x[3 * i + q] - at->x[3 * j + q], L[q]);
-                            rsq += del[q] * del[q];
-                        }
-                        if (rsq >= cutsq)
-                            continue;
-                        if (np == cap) {
-                            cap = cap ? 2 * cap : 256;
-                            p = gr_realloc(g, p, (size_t)cap * sizeof *p);
-                        }
-                        p[np].i = i;
-                        p[np].j = j;
-                        memcpy(p[np].del, del, sizeof del);
-                        p[np].rsq = rsq;
-                        np++;
-                    }
+                    for (int s = start[cc]; s < start[cc + 1]; s++)
+                        if (sorted[s] > k)
+                            visit(g, k, sorted[s], ctx);
                 }
     }
     free(cell);
     free(start);
     free(sorted);
-    free(idx);
-    if (np > 1) {
-        sort_tags = at->tag;
-        qsort(p, (size_t)np, sizeof *p, cmp_pair);
+}
+
+struct find_ctx {
+    const int *idx;
+    unsigned bits_a, bits_b;
+    double cutsq, L[3];
+    int np, cap;
+    struct host_pair *p;
+};
+
+/* One candidate of host_pairs_find: oriented lower tag first, kept when the
+ * groups match and it is closer than the cut. */
+static void find_visit(struct gravel *g, int k, int kk, void *vctx)
+{
+    struct find_ctx *c = vctx;
+    const struct atoms *at = &g->atoms;
+    int i = c->idx[k], j = c->idx[kk];
+    if (at->tag[j] < at->tag[i]) {
+        int t = i;
+        i = j;
+        j = t;
     }
-    *out = p;
-    return np;
+    unsigned mi = at->mask[i], mj = at->mask[j];
+    if (!((mi & c->bits_a) && (mj & c->bits_b)) && !((mi & c->bits_b) && (mj & c->bits_a)))
+        return;
+    double del[3], rsq = 0;
+    for (int q = 0; q < 3; q++) {
+        del[q] = minimg(at->x[3 * i + q] - at->x[3 * j + q], c->L[q]);
+        rsq += del[q] * del[q];
+    }
+    if (rsq >= c->cutsq)
+        return;
+    if (c->np == c->cap) {
+        c->cap = c->cap ? 2 * c->cap : 256;
+        c->p = gr_realloc(g, c->p, (size_t)c->cap * sizeof *c->p);
+    }
+    struct host_pair *p = c->p + c->np++;
+    p->i = i;
+    p->j = j;
+    memcpy(p->del, del, sizeof del);
+    p->rsq = rsq;
+}
+
+int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits_b,
+                    struct host_pair **out, const char *who)
+{
+    const struct atoms *at = &g->atoms;
+    *out = NULL;
+    if (g->dom.triclinic || g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
+        gr_error(g, "%s: triclinic boxes are not supported", who);
+    if (!(cut > 0) || !isfinite(cut))
+        gr_error(g, "%s: the pair cut-off must be positive", who);
+    struct find_ctx c = {.bits_a = bits_a, .bits_b = bits_b, .cutsq = cut * cut};
+    for (int q = 0; q < 3; q++)
+        c.L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    int m = 0;
+    int *idx = gr_malloc(g, (size_t)(at->n > 0 ? at->n : 1) * sizeof *idx);
+    for (int i = 0; i < at->n; i++)
+        if (at->mask[i] & (bits_a | bits_b))
+            idx[m++] = i;
+    c.idx = idx;
+    host_pairs_scan(g, idx, m, cut, find_visit, &c);
+    free(idx);
+    if (c.np > 1) {
+        sort_tags = at->tag;
+        qsort(c.p, (size_t)c.np, sizeof *c.p, cmp_pair);
+    }
+    *out = c.p;
+    return c.np;
 }
 
 /* LAMMPS 2021 init_one's cut-off for types with largest radii ri, rj */

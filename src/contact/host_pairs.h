@@ -16,6 +16,15 @@ struct host_pair {
     double rsq;
 };
 
+/* The cell-grid scan behind host_pairs_find: every unordered pair of the
+ * listed atoms idx[0..m) that may be closer than cut (cells of width >= cut
+ * over the box in periodic dimensions, the atoms' extent otherwise) is given
+ * to visit(g, k, kk, ctx), k < kk positions in idx, in a fixed order (k
+ * ascending, then the 27-cell stencil, then cell order). visit tests the
+ * distance itself (minimum image in periodic dimensions). */
+void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
+                     void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx);
+
 /* Every pair of atoms, one in mask bits `bits_a` and the other in `bits_b`
  * (either way round), with |del| < cut (cut > 0). Returns the count and sets
  * *out (malloc'd, caller frees; NULL when none). Errors name `who`. */

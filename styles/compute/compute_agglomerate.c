@@ -36,6 +36,7 @@
 #include "compute_agglomerate_mes.h"
 #include "error.h"
 #include "fileio.h"
+#include "host_pairs.h"
 
 struct agg {
     char *file;
@@ -180,111 +181,38 @@ static void edge_add(struct gravel *g, struct edges *e, int i, int j)
     e->n++;
 }
 
-/* Every body contact among the listed atoms (idx[0..m)) via a cell grid. */
+struct contact_ctx {
+    const int *idx;
+    const double *L;
+    struct edges *e;
+};
+
+/* One candidate pair of host_pairs_scan: an edge when the spheres touch. */
+static void contact_visit(struct gravel *g, int k, int kk, void *vctx)
+{
+    const struct contact_ctx *c = vctx;
+    const struct atoms *at = &g->atoms;
+    int i = c->idx[k], j = c->idx[kk];
+    double rsq = 0;
+    for (int q = 0; q < 3; q++) {
+        double dq = minimg(at->x[3 * i + q] - at->x[3 * j + q], c->L[q]);
+        rsq += dq * dq;
+    }
+    double rs = at->radius[i] + at->radius[j];
+    if (rsq < rs * rs)
+        edge_add(g, c->e, k, kk);
+}
+
+/* Every body contact among the listed atoms (idx[0..m)), through the cell
+ * grid of cells >= the largest diameter. */
 static void contacts(struct gravel *g, const int *idx, int m, const double L[3],
                      struct edges *e)
 {
-    const struct atoms *at = &g->atoms;
-    double lo[3], hi[3], rmax = 0;
-    for (int q = 0; q < 3; q++) {
-        lo[q] = INFINITY;
-        hi[q] = -INFINITY;
-    }
-    for (int k = 0; k < m; k++) {
-        int i = idx[k];
-        rmax = fmax(rmax, at->radius[i]);
-        for (int q = 0; q < 3; q++) {
-            lo[q] = fmin(lo[q], at->x[3 * i + q]);
-            hi[q] = fmax(hi[q], at->x[3 * i + q]);
-        }
-    }
-    double cut = 2 * rmax > 0 ? 2 * rmax : 1;
-    int nc[3];
-    long total = 1;
-    for (int q = 0; q < 3; q++) {
-        if (L[q] > 0) {
-            lo[q] = g->dom.lo[q];
-            hi[q] = g->dom.hi[q];
-        }
-        double len = hi[q] - lo[q];
-        nc[q] = (int)(len / cut);
-        if (nc[q] < 1)
-            nc[q] = 1;
-        if (L[q] > 0 && nc[q] < 3)
-            nc[q] = 1; /* a stencil that wraps onto itself: one cell, all pairs */
-    }
-    /* a sparse scene: fewer cells than atoms x 8 */
-    while ((total = (long)nc[0] * nc[1] * nc[2]) > 8L * m + 64) {
-        int q = nc[0] >= nc[1] && nc[0] >= nc[2] ? 0 : nc[1] >= nc[2] ? 1 : 2;
-        nc[q] = nc[q] / 2 > 0 ? nc[q] / 2 : 1;
-        if (L[q] > 0 && nc[q] < 3)
-            nc[q] = 1;
-    }
-    int *cell = gr_malloc(g, (size_t)m * sizeof *cell);
-    int *start = gr_calloc(g, (size_t)total + 1, sizeof *start);
-    int *sorted = gr_malloc(g, (size_t)m * sizeof *sorted);
-    for (int k = 0; k < m; k++) {
-        int i = idx[k], ci[3];
-        for (int q = 0; q < 3; q++) {
-            double s = (at->x[3 * i + q] - lo[q]) / (hi[q] - lo[q] > 0 ? hi[q] - lo[q] : 1);
-            if (L[q] > 0)
-                s -= floor(s);
-            ci[q] = (int)(s * nc[q]);
-            ci[q] = ci[q] < 0 ? 0 : ci[q] >= nc[q] ? nc[q] - 1 : ci[q];
-        }
-        cell[k] = (ci[2] * nc[1] + ci[1]) * nc[0] + ci[0];
-        start[cell[k] + 1]++;
-    }
-    for (long c = 0; c < total; c++)
-        start[c + 1] += start[c];
-    int *cur = gr_malloc(g, (size_t)total * sizeof *cur);
-    memcpy(cur, start, (size_t)total * sizeof *cur);
+    double rmax = 0;
     for (int k = 0; k < m; k++)
-        sorted[cur[cell[k]]++] = k;
-    free(cur);
-    for (int k = 0; k < m; k++) {
-        int i = idx[k];
-        int c0 = cell[k];
-        int ci[3] = {c0 % nc[0], (c0 / nc[0]) % nc[1], c0 / (nc[0] * nc[1])};
-        int lst[3][3], ns[3];
-        for (int q = 0; q < 3; q++) {
-            ns[q] = 0;
-            for (int dd = -1; dd <= 1; dd++) {
-                int v = ci[q] + dd;
-                if (L[q] > 0)
-                    v = (v + nc[q]) % nc[q];
-                else if (v < 0 || v >= nc[q])
-                    continue;
-                int dup = 0;
-                for (int t = 0; t < ns[q]; t++)
-                    dup |= lst[q][t] == v;
-                if (!dup)
-                    lst[q][ns[q]++] = v;
-            }
-        }
-        for (int a = 0; a < ns[2]; a++)
-            for (int b = 0; b < ns[1]; b++)
-                for (int d = 0; d < ns[0]; d++) {
-                    int cc = (lst[2][a] * nc[1] + lst[1][b]) * nc[0] + lst[0][d];
-                    for (int s = start[cc]; s < start[cc + 1]; s++) {
-                        int kk = sorted[s];
-                        if (kk <= k)
-                            continue;
-                        int j = idx[kk];
-                        double rsq = 0;
-                        for (int q = 0; q < 3; q++) {
-                            double dq = minimg(at->x[3 * i + q] - at->x[3 * j + q], L[q]);
-                            rsq += dq * dq;
-                        }
-                        double rs = at->radius[i] + at->radius[j];
-                        if (rsq < rs * rs)
-                            edge_add(g, e, k, kk);
-                    }
-                }
-    }
-    free(cell);
-    free(start);
-    free(sorted);
+        rmax = fmax(rmax, g->atoms.radius[idx[k]]);
+    struct contact_ctx c = {idx, L, e};
+    host_pairs_scan(g, idx, m, 2 * rmax > 0 ? 2 * rmax : 1, contact_visit, &c);
 }
 
 static void cluster(struct gravel *g, struct compute *c);
