@@ -22,12 +22,11 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "tag_ref.h"
 
 struct msd {
     int comflag, avflag;
-    double *xref;           /* [3 * cap] by tag */
-    unsigned char *have;    /* [cap] by tag */
-    int64_t cap;
+    struct tag_ref ref;     /* reference positions by tag */
     bigint naverage;
     bigint nmsd;
     double masstotal;
@@ -39,25 +38,10 @@ static void msd_destroy(struct compute *c)
 {
     struct msd *m = c->data;
     if (m) {
-        free(m->xref);
-        free(m->have);
+        tag_ref_free(&m->ref);
     }
     free(m);
     c->data = NULL;
-}
-
-static void msd_reserve(struct gravel *g, struct msd *m, int64_t tag)
-{
-    if (tag < m->cap)
-        return;
-    int64_t cap = m->cap ? m->cap : 64;
-    while (cap <= tag)
-        cap *= 2;
-    m->xref = gr_realloc(g, m->xref, (size_t)cap * 3 * sizeof *m->xref);
-    m->have = gr_realloc(g, m->have, (size_t)cap);
-    memset(m->have + m->cap, 0, (size_t)(cap - m->cap));
-    memset(m->xref + 3 * m->cap, 0, (size_t)(cap - m->cap) * 3 * sizeof *m->xref);
-    m->cap = cap;
 }
 
 static void msd_create(struct gravel *g, struct compute *c, int argc, char **argv)
@@ -79,15 +63,15 @@ static void msd_create(struct gravel *g, struct compute *c, int argc, char **arg
         gr_error(g, "compute msd is not compatible with dynamic groups (group %s)",
                  g->groups.name[c->igroup]);
     const struct atoms *a = &g->atoms;
-    msd_reserve(g, m, a->maxtag);
+    tag_ref_reserve(g, &m->ref, a->maxtag);
     double cm[3] = {0, 0, 0};
     if (m->comflag)
         group_xcm(g, c->igroup, group_mass(g, c->igroup), cm);
     for (int i = 0; i < a->n; i++) {
         int64_t t = a->tag[i];
-        msd_reserve(g, m, t);
-        m->have[t] = 1;
-        double *r = m->xref + 3 * t;
+        tag_ref_reserve(g, &m->ref, t);
+        m->ref.have[t] = 1;
+        double *r = m->ref.v + 3 * t;
         if (a->mask[i] & c->groupbit) {
             domain_unmap(g, a->x + 3 * i, a->image + 3 * i, r);
             for (int d = 0; d < 3; d++)
@@ -133,11 +117,11 @@ static void msd_vector(struct gravel *g, struct compute *c)
         if (!(a->mask[i] & c->groupbit))
             continue;
         int64_t t = a->tag[i];
-        msd_reserve(g, m, t);
-        double *r = m->xref + 3 * t;
-        if (!m->have[t]) {
+        tag_ref_reserve(g, &m->ref, t);
+        double *r = m->ref.v + 3 * t;
+        if (!m->ref.have[t]) {
             memcpy(r, a->x + 3 * i, 3 * sizeof *r);
-            m->have[t] = 1;
+            m->ref.have[t] = 1;
         }
         double u[3];
         domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);

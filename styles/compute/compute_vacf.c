@@ -12,11 +12,10 @@
 #include "compute.h"
 #include "error.h"
 #include "group.h"
+#include "tag_ref.h"
 
 struct vacf {
-    double *v0;             /* [3 * cap] by tag */
-    unsigned char *have;
-    int64_t cap;
+    struct tag_ref ref;     /* velocities at the start, by tag */
     bigint nvacf;
     int inited;
 };
@@ -25,25 +24,10 @@ static void vacf_destroy(struct compute *c)
 {
     struct vacf *w = c->data;
     if (w) {
-        free(w->v0);
-        free(w->have);
+        tag_ref_free(&w->ref);
     }
     free(w);
     c->data = NULL;
-}
-
-static void vacf_reserve(struct gravel *g, struct vacf *w, int64_t tag)
-{
-    if (tag < w->cap)
-        return;
-    int64_t cap = w->cap ? w->cap : 64;
-    while (cap <= tag)
-        cap *= 2;
-    w->v0 = gr_realloc(g, w->v0, (size_t)cap * 3 * sizeof *w->v0);
-    w->have = gr_realloc(g, w->have, (size_t)cap);
-    memset(w->have + w->cap, 0, (size_t)(cap - w->cap));
-    memset(w->v0 + 3 * w->cap, 0, (size_t)(cap - w->cap) * 3 * sizeof *w->v0);
-    w->cap = cap;
 }
 
 static void vacf_create(struct gravel *g, struct compute *c, int argc, char **argv)
@@ -57,13 +41,13 @@ static void vacf_create(struct gravel *g, struct compute *c, int argc, char **ar
     struct vacf *w = gr_calloc(g, 1, sizeof *w);
     c->data = w;
     const struct atoms *a = &g->atoms;
-    vacf_reserve(g, w, a->maxtag);
+    tag_ref_reserve(g, &w->ref, a->maxtag);
     for (int i = 0; i < a->n; i++) {
         int64_t t = a->tag[i];
-        vacf_reserve(g, w, t);
-        w->have[t] = 1;
+        tag_ref_reserve(g, &w->ref, t);
+        w->ref.have[t] = 1;
         for (int d = 0; d < 3; d++)
-            w->v0[3 * t + d] = (a->mask[i] & c->groupbit) ? a->v[3 * i + d] : 0.0;
+            w->ref.v[3 * t + d] = (a->mask[i] & c->groupbit) ? a->v[3 * i + d] : 0.0;
     }
     c->vector_flag = 1;
     c->size_vector = 4;
@@ -90,12 +74,12 @@ static void vacf_vector(struct gravel *g, struct compute *c)
         if (!(a->mask[i] & c->groupbit))
             continue;
         int64_t t = a->tag[i];
-        vacf_reserve(g, w, t);
-        double *v0 = w->v0 + 3 * t;
+        tag_ref_reserve(g, &w->ref, t);
+        double *v0 = w->ref.v + 3 * t;
         const double *v = a->v + 3 * i;
-        if (!w->have[t]) {
+        if (!w->ref.have[t]) {
             memcpy(v0, v, 3 * sizeof *v0);
-            w->have[t] = 1;
+            w->ref.have[t] = 1;
         }
         double vx = v[0] * v0[0], vy = v[1] * v0[1], vz = v[2] * v0[2];
         s[0] += vx;
