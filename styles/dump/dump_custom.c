@@ -57,8 +57,7 @@ struct column {
 struct custom {
     int n;
     struct column *col;
-    char *format_line, *format_int, *format_float;
-    char **format_col;          /* [n] */
+    struct dump_formats fmt;
 };
 
 static void custom_destroy(struct dump *d)
@@ -69,13 +68,7 @@ static void custom_destroy(struct dump *d)
     for (int i = 0; i < c->n; i++)
         free(c->col[i].vals);
     free(c->col);
-    free(c->format_line);
-    free(c->format_int);
-    free(c->format_float);
-    if (c->format_col)
-        for (int i = 0; i < c->n; i++)
-            free(c->format_col[i]);
-    free(c->format_col);
+    dump_formats_free(&c->fmt);
     free(c);
     d->data = NULL;
 }
@@ -87,7 +80,8 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
     struct custom *c = gr_calloc(g, 1, sizeof *c);
     d->data = c;
     c->col = gr_calloc(g, (size_t)argc, sizeof *c->col);
-    c->format_col = gr_calloc(g, (size_t)argc, sizeof *c->format_col);
+    c->fmt.col = gr_calloc(g, (size_t)argc, sizeof *c->fmt.col);
+    c->fmt.n = argc;
     c->n = argc;
     for (int i = 0; i < argc; i++) {
         struct column *col = &c->col[i];
@@ -129,11 +123,22 @@ static void set_str(struct gravel *g, char **dst, const char *s)
     *dst = n;
 }
 
-/* dump_modify format line|int|float|N "fmt" | format none */
-static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
-                         int apply)
+void dump_formats_free(struct dump_formats *fm)
 {
-    struct custom *c = d->data;
+    free(fm->line);
+    free(fm->fint);
+    free(fm->ffloat);
+    fm->line = fm->fint = fm->ffloat = NULL;
+    if (fm->col)
+        for (int k = 0; k < fm->n; k++)
+            free(fm->col[k]);
+    free(fm->col);
+    fm->col = NULL;
+}
+
+int dump_formats_modify(struct gravel *g, struct dump_formats *fm, const struct dump_columns *dc,
+                        int argc, char **argv, int i, int apply)
+{
     char buf[96];
     const char *bad;
     if (strcmp(argv[i], "format") != 0)
@@ -143,13 +148,13 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
     if (strcmp(what, "none") == 0) {
         if (!apply)
             return 2;
-        free(c->format_line);
-        free(c->format_int);
-        free(c->format_float);
-        c->format_line = c->format_int = c->format_float = NULL;
-        for (int k = 0; k < c->n; k++) {
-            free(c->format_col[k]);
-            c->format_col[k] = NULL;
+        free(fm->line);
+        free(fm->fint);
+        free(fm->ffloat);
+        fm->line = fm->fint = fm->ffloat = NULL;
+        for (int k = 0; k < fm->n; k++) {
+            free(fm->col[k]);
+            fm->col[k] = NULL;
         }
         return 2;
     }
@@ -159,26 +164,26 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
         if (strlen(f) > 4000)
             gr_error(g, "format line is too long");
         if (apply)
-            set_str(g, &c->format_line, f);
+            set_str(g, &fm->line, f);
     } else if (strcmp(what, "int") == 0) {
         if ((bad = output_format_fix(f, 1, buf)))
             gr_error(g, "format int '%.64s' %s", f, bad);
         if (apply)
-            set_str(g, &c->format_int, f);
+            set_str(g, &fm->fint, f);
     } else if (strcmp(what, "float") == 0) {
         if ((bad = output_format_fix(f, 0, buf)))
             gr_error(g, "format float '%.64s' %s", f, bad);
         if (apply)
-            set_str(g, &c->format_float, f);
+            set_str(g, &fm->ffloat, f);
     } else if (arg_is_number(what)) {
         int k = arg_int(g, what, "format column");
-        if (k < 1 || k > c->n)
-            gr_error(g, "format column %d is outside 1..%d (the dump's fields)", k, c->n);
-        int isint = c->col[k - 1].field >= 0 && field_is_int(c->col[k - 1].field);
-        if ((bad = output_format_fix(f, isint, buf)))
-            gr_error(g, "format '%.64s' for column %d (%s) %s", f, k, c->col[k - 1].name, bad);
+        if (k < 1 || k > fm->n)
+            gr_error(g, "format column %d is outside 1..%d (the dump's %s)", k, fm->n, dc->noun);
+        if ((bad = output_format_fix(f, dc->is_int(dc->ctx, k - 1), buf)))
+            gr_error(g, "format '%.64s' for column %d (%s) %s", f, k, dc->name(dc->ctx, k - 1),
+                     bad);
         if (apply)
-            set_str(g, &c->format_col[k - 1], f);
+            set_str(g, &fm->col[k - 1], f);
     } else {
         gr_error(g, "format must be followed by line, int, float, none or a column number, got "
                     "'%.64s'", what);
@@ -186,13 +191,51 @@ static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv
     return 3;
 }
 
+void dump_box_header(struct gravel *g, FILE *fp, const char *what, long long count)
+{
+    const struct domain *dom = &g->dom;
+    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF %s\n%lld\nITEM: BOX BOUNDS%s",
+            (long long)g->step, what, count, dom->triclinic ? " xy xz yz" : "");
+    for (int k = 0; k < 3; k++)
+        fprintf(fp, " %c%c", dom->bnd[k][0], dom->bnd[k][1]);
+    fprintf(fp, "\n");
+    if (dom->triclinic) { /* LAMMPS: the bounding box, each line with one tilt */
+        double blo[3], bhi[3], tilt[3] = {dom->xy, dom->xz, dom->yz};
+        domain_bbox(g, blo, bhi);
+        for (int k = 0; k < 3; k++)
+            fprintf(fp, "%-1.16e %-1.16e %-1.16e\n", blo[k], bhi[k], tilt[k]);
+    } else {
+        for (int k = 0; k < 3; k++)
+            fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
+    }
+}
+
+static int custom_is_int(const void *ctx, int k)
+{
+    const struct column *col = &((const struct custom *)ctx)->col[k];
+    return col->field >= 0 && field_is_int(col->field);
+}
+
+static const char *custom_name(const void *ctx, int k)
+{
+    return ((const struct custom *)ctx)->col[k].name;
+}
+
+static int custom_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
+                         int apply)
+{
+    struct custom *c = d->data;
+    const struct dump_columns dc = {c, custom_is_int, custom_name, "fields"};
+    return dump_formats_modify(g, &c->fmt, &dc, argc, argv, i, apply);
+}
+
 static void custom_init(struct gravel *g, struct dump *d)
 {
     struct custom *c = d->data;
     char line[4100] = "";
     char *save = NULL, *word = NULL;
-    if (c->format_line) {
-        snprintf(line, sizeof line, "%s", c->format_line);
+    if (c->fmt.line) {
+        snprintf(line, sizeof line, "%s", c->fmt.line);
         word = strtok_r(line, " \t", &save);
     }
     for (int i = 0; i < c->n; i++) {
@@ -203,16 +246,16 @@ static void custom_init(struct gravel *g, struct dump *d)
             var_check_atom(g, col->name + 2, "dump custom");
         int isint = col->field >= 0 && field_is_int(col->field);
         const char *f = NULL, *src = NULL;
-        if (c->format_col[i]) {
-            f = c->format_col[i];
+        if (c->fmt.col[i]) {
+            f = c->fmt.col[i];
             src = "format N";
-        } else if (isint && c->format_int) {
-            f = c->format_int;
+        } else if (isint && c->fmt.fint) {
+            f = c->fmt.fint;
             src = "format int";
-        } else if (!isint && c->format_float) {
-            f = c->format_float;
+        } else if (!isint && c->fmt.ffloat) {
+            f = c->fmt.ffloat;
             src = "format float";
-        } else if (c->format_line) {
+        } else if (c->fmt.line) {
             if (!word)
                 gr_error(g, "dump %s: dump_modify format line has fewer words than the %d "
                             "fields", d->id, c->n);
@@ -259,20 +302,7 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
     double prd[3];
     for (int k = 0; k < 3; k++)
         prd[k] = dom->hi[k] - dom->lo[k];
-    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS%s", (long long)g->step,
-            n, dom->triclinic ? " xy xz yz" : "");
-    for (int k = 0; k < 3; k++)
-        fprintf(fp, " %c%c", dom->bnd[k][0], dom->bnd[k][1]);
-    fprintf(fp, "\n");
-    if (dom->triclinic) { /* LAMMPS: the bounding box, each line with one tilt */
-        double blo[3], bhi[3], tilt[3] = {dom->xy, dom->xz, dom->yz};
-        domain_bbox(g, blo, bhi);
-        for (int k = 0; k < 3; k++)
-            fprintf(fp, "%-1.16e %-1.16e %-1.16e\n", blo[k], bhi[k], tilt[k]);
-    } else {
-        for (int k = 0; k < 3; k++)
-            fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
-    }
+    dump_box_header(g, fp, "ATOMS", n);
     fprintf(fp, "ITEM: ATOMS");
     for (int i = 0; i < c->n; i++)
         fprintf(fp, " %s", c->col[i].name);

@@ -16,8 +16,8 @@
 
 #include "args.h"
 #include "compute.h"
-#include "domain.h"
 #include "dump.h"
+#include "dump_custom.h"
 #include "error.h"
 #include "thermo.h"
 
@@ -27,13 +27,12 @@ struct lcol {
     char cid[GR_NAMELEN];
     int index;                  /* c_ID[N]: N; 0: the local vector */
     char fmt[80];
-    char *user_fmt;             /* format N */
 };
 
 struct local {
     int n;
     struct lcol *col;
-    char *format_line, *format_int, *format_float;
+    struct dump_formats fmt;
     char label[GR_NAMELEN];
     const double **data;        /* [n] scratch of one snapshot: column i's first value */
     int *stride;                /* [n] its row stride */
@@ -44,14 +43,10 @@ static void local_destroy(struct dump *d)
     struct local *l = d->data;
     if (!l)
         return;
-    for (int i = 0; i < l->n; i++)
-        free(l->col[i].user_fmt);
     free(l->col);
     free(l->data);
     free(l->stride);
-    free(l->format_line);
-    free(l->format_int);
-    free(l->format_float);
+    dump_formats_free(&l->fmt);
     free(l);
     d->data = NULL;
 }
@@ -68,6 +63,8 @@ static void local_create(struct gravel *g, struct dump *d, int argc, char **argv
     l->data = gr_calloc(g, (size_t)argc, sizeof *l->data);
     l->stride = gr_calloc(g, (size_t)argc, sizeof *l->stride);
     l->n = argc;
+    l->fmt.col = gr_calloc(g, (size_t)argc, sizeof *l->fmt.col);
+    l->fmt.n = argc;
     int ncompute = 0;
     for (int i = 0; i < argc; i++) {
         struct lcol *c = &l->col[i];
@@ -91,19 +88,21 @@ static void local_create(struct gravel *g, struct dump *d, int argc, char **argv
         gr_error(g, "dump local needs at least one compute value (c_ID or c_ID[N])");
 }
 
-static void set_str(struct gravel *g, char **dst, const char *s)
+static int local_is_int(const void *ctx, int k)
 {
-    char *n = gr_strdup(g, s);
-    free(*dst);
-    *dst = n;
+    return ((const struct local *)ctx)->col[k].is_index;
 }
 
+static const char *local_name(const void *ctx, int k)
+{
+    return ((const struct local *)ctx)->col[k].name;
+}
+
+/* dump_modify label WORD, and format as dump custom */
 static int local_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
                         int apply)
 {
     struct local *l = d->data;
-    char buf[96];
-    const char *bad;
     if (!strcmp(argv[i], "label")) {
         arg_need(g, argc, i, 1, "label");
         const char *w = argv[i + 1];
@@ -114,48 +113,8 @@ static int local_modify(struct gravel *g, struct dump *d, int argc, char **argv,
             snprintf(l->label, sizeof l->label, "%s", w);
         return 2;
     }
-    if (strcmp(argv[i], "format"))
-        return 0;
-    arg_need(g, argc, i, 1, "format");
-    const char *what = argv[i + 1];
-    if (!strcmp(what, "none")) {
-        if (apply) {
-            free(l->format_line);
-            free(l->format_int);
-            free(l->format_float);
-            l->format_line = l->format_int = l->format_float = NULL;
-            for (int k = 0; k < l->n; k++) {
-                free(l->col[k].user_fmt);
-                l->col[k].user_fmt = NULL;
-            }
-        }
-        return 2;
-    }
-    arg_need(g, argc, i, 2, "format");
-    const char *f = argv[i + 2];
-    if (!strcmp(what, "line")) {
-        if (strlen(f) > 4000)
-            gr_error(g, "format line is too long");
-        if (apply)
-            set_str(g, &l->format_line, f);
-    } else if (!strcmp(what, "int") || !strcmp(what, "float")) {
-        if ((bad = output_format_fix(f, what[0] == 'i', buf)))
-            gr_error(g, "format %s '%.64s' %s", what, f, bad);
-        if (apply)
-            set_str(g, what[0] == 'i' ? &l->format_int : &l->format_float, f);
-    } else if (arg_is_number(what)) {
-        int k = arg_int(g, what, "format column");
-        if (k < 1 || k > l->n)
-            gr_error(g, "format column %d is outside 1..%d (the dump's values)", k, l->n);
-        if ((bad = output_format_fix(f, l->col[k - 1].is_index, buf)))
-            gr_error(g, "format '%.64s' for column %d (%s) %s", f, k, l->col[k - 1].name, bad);
-        if (apply)
-            set_str(g, &l->col[k - 1].user_fmt, f);
-    } else {
-        gr_error(g, "format must be followed by line, int, float, none or a column number, got "
-                    "'%.64s'", what);
-    }
-    return 3;
+    const struct dump_columns dc = {l, local_is_int, local_name, "values"};
+    return dump_formats_modify(g, &l->fmt, &dc, argc, argv, i, apply);
 }
 
 static void local_init(struct gravel *g, struct dump *d)
@@ -163,18 +122,18 @@ static void local_init(struct gravel *g, struct dump *d)
     struct local *l = d->data;
     char line[4100] = "";
     char *save = NULL, *word = NULL;
-    if (l->format_line) {
-        snprintf(line, sizeof line, "%s", l->format_line);
+    if (l->fmt.line) {
+        snprintf(line, sizeof line, "%s", l->fmt.line);
         word = strtok_r(line, " \t", &save);
     }
     for (int i = 0; i < l->n; i++) {
         struct lcol *c = &l->col[i];
         if (!c->is_index)
             compute_local_check(g, c->cid, c->index, "dump local");
-        const char *f = c->user_fmt;
+        const char *f = l->fmt.col[i];
         if (!f)
-            f = c->is_index ? l->format_int : l->format_float;
-        if (!f && l->format_line) {
+            f = c->is_index ? l->fmt.fint : l->fmt.ffloat;
+        if (!f && l->fmt.line) {
             if (!word)
                 gr_error(g, "dump %s: dump_modify format line has fewer words than the %d "
                             "values", d->id, l->n);
@@ -197,7 +156,6 @@ static void local_write(struct gravel *g, struct dump *d, FILE *fp, const int *i
     (void)idx;
     (void)n;
     struct local *l = d->data;
-    const struct domain *dom = &g->dom;
     local_init(g, d);
     /* each compute once per snapshot: rows of compute k in data[k] */
     const double **data = l->data;
@@ -228,20 +186,7 @@ static void local_write(struct gravel *g, struct dump *d, FILE *fp, const int *i
         data[i] = base + (c->index > 0 ? c->index - 1 : 0);
         stride[i] = cols;
     }
-    fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF %s\n%d\nITEM: BOX BOUNDS%s",
-            (long long)g->step, l->label, rows, dom->triclinic ? " xy xz yz" : "");
-    for (int k = 0; k < 3; k++)
-        fprintf(fp, " %c%c", dom->bnd[k][0], dom->bnd[k][1]);
-    fprintf(fp, "\n");
-    if (dom->triclinic) {
-        double blo[3], bhi[3], tilt[3] = {dom->xy, dom->xz, dom->yz};
-        domain_bbox(g, blo, bhi);
-        for (int k = 0; k < 3; k++)
-            fprintf(fp, "%-1.16e %-1.16e %-1.16e\n", blo[k], bhi[k], tilt[k]);
-    } else {
-        for (int k = 0; k < 3; k++)
-            fprintf(fp, "%-1.16e %-1.16e\n", dom->lo[k], dom->hi[k]);
-    }
+    dump_box_header(g, fp, l->label, rows);
     fprintf(fp, "ITEM: %s ", l->label);
     for (int i = 0; i < l->n; i++)
         fprintf(fp, "%s ", l->col[i].name);
