@@ -194,6 +194,7 @@ static inline REAL3 box_ufac(const REAL Ly, const REAL Lz, const REAL xy, const 
  * and these reduce to the plain arithmetic. */
 #ifdef SPLIT_POS
 #define POS_LO_PARAM , __global REAL *xlo
+#define POS_LO_ARG , xlo
 #define POS_LOAD_LO(i) vload3(i, xlo)
 #define POS_STORE_LO(val, i) vstore3(val, i, xlo)
 /* hi + lo += d, renormalised (TwoSum, then Fast2Sum): exact to the last bit of lo */
@@ -213,6 +214,7 @@ static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
 }
 #else
 #define POS_LO_PARAM
+#define POS_LO_ARG
 #define POS_LOAD_LO(i) ((REAL3)(0))
 #define POS_STORE_LO(val, i) ((void)0)
 static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)

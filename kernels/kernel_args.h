@@ -48,7 +48,8 @@
 #define KARGS_pair_gather(X, Y)                                                                \
     X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
     Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, v) Y(M, omega) Y(CM, rmass)           \
-    Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow)
+    Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look)             \
+    Y(PART, atom_step) Y(POS_LO, xlo)
 
 /* force_clear: no pair style (heatflow: f without HAS_HEAT) */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)
@@ -56,10 +57,16 @@
 /* ---- the step's check and wrap (kernels/neighbor.cl) ---- */
 
 #define KARGS_nbr_check(X, Y)                                                                  \
-    X(I, n) Y(M, x) Y(M, v) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(MI, image) Y(C3, lo)      \
-    Y(C3, hi) Y(BOX, box) Y(CMI, ops) Y(I, nops) Y(CM, prm) Y(CM, f) Y(M, omega)              \
-    Y(CM, torque) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, hrate)           \
-    Y(U, vgroup) Y(POS_LO, xlo)
+    X(I, n) Y(M, v) Y(CMI, ops) Y(CM, prm) Y(CM, f) Y(M, omega) Y(CM, torque) Y(CM, rmass)     \
+    Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(PART, atom_step) Y(POS_LO, xlo)
+
+/* atom_step (a part; kernels/atom_step.cl): the opening of a step, the
+ * fused initial_integrate ops [0, ninit), the periodic wrap and the
+ * rebuild and finiteness flags; run by nbr_check, or by pair_gather at the
+ * end of the step before (look = 1: src/engine/run.c, step_lookahead) */
+#define KARGS_atom_step(X, Y)                                                                  \
+    X(M, x) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(MI, image) Y(C3, lo) Y(C3, hi)            \
+    Y(BOX, box) Y(CM, hrate) Y(U, vgroup) Y(I, ninit)
 
 /* nbr_wrap_extent: periodic wrap (p: periodic per dimension) and the
  * per-chunk extents */
@@ -110,8 +117,8 @@
 /* Every list, for the host's structs and binders (src/engine/kargs.h); parts
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
-    T(wall_atoms) T(wall_law) T(pair_contacts) T(pair_gather) T(force_clear) T(nbr_check)      \
-    T(nbr_wrap_extent)                                                                         \
+    T(wall_atoms) T(wall_law) T(atom_step) T(pair_contacts) T(pair_gather) T(force_clear)      \
+    T(nbr_check) T(nbr_wrap_extent)                                                            \
     T(wall_kernel) T(mesh_kernel) T(region_kernel)
 
 #ifdef __OPENCL_VERSION__
@@ -142,6 +149,29 @@
 #define KA_DECL_CML(n, X, Y) __global const long *n
 #define KA_DECL_POS_LO(n, X, Y) POS_LO_PARAM
 #define KA_DECL_PART(n, X, Y) KARGS_##n(X, Y)
+
+/* the names of list `name`'s arguments, in order: a kernel passes them on
+ * to a function declared with KA_PARAMS(name) */
+#define KA_ARGS(name) KARGS_##name(KA_AFIRST, KA_ANEXT)
+#define KA_AFIRST(kind, name) KA_ARG_##kind(name, KA_AFIRST2, KA_ANEXT2)
+#define KA_ANEXT(kind, name) KA_SEP_##kind KA_ARG_##kind(name, KA_ANEXT2, KA_ANEXT2)
+#define KA_AFIRST2(kind, name) KA_ARG_##kind(name, , )
+#define KA_ANEXT2(kind, name) KA_SEP_##kind KA_ARG_##kind(name, , )
+#define KA_ARG_I(n, X, Y) n
+#define KA_ARG_U(n, X, Y) n
+#define KA_ARG_R(n, X, Y) n
+#define KA_ARG_R3(n, X, Y) n##x, n##y, n##z
+#define KA_ARG_C3(n, X, Y) n##x, n##y, n##z
+#define KA_ARG_I3(n, X, Y) n##x, n##y, n##z
+#define KA_ARG_BOX(n, X, Y) Lx, Ly, Lz, xy, xz, yz
+#define KA_ARG_M(n, X, Y) n
+#define KA_ARG_CM(n, X, Y) n
+#define KA_ARG_MI(n, X, Y) n
+#define KA_ARG_CMI(n, X, Y) n
+#define KA_ARG_CMU(n, X, Y) n
+#define KA_ARG_CML(n, X, Y) n
+#define KA_ARG_POS_LO(n, X, Y) POS_LO_ARG
+#define KA_ARG_PART(n, X, Y) KARGS_##n(X, Y)
 
 #define KA_SEP_I ,
 #define KA_SEP_U ,

@@ -8,36 +8,19 @@
  * segment is then sorted by tag, so the resulting order depends only on the
  * positions and tags, never on thread timing. */
 
-/* pbc_wrap of component c of (xi, xl, im): vector components have no address */
-#define PBC_WRAP_COMPONENT(c, lo, hi, L)                                                       \
-    {                                                                                          \
-        REAL h_ = xi.c, l_ = xl.c;                                                             \
-        int m_ = im.c;                                                                         \
-        pbc_wrap(&h_, &l_, &m_, lo, hi, L);                                                    \
-        xi.c = h_;                                                                             \
-        xl.c = l_;                                                                             \
-        im.c = m_;                                                                             \
-    }
-
-/* Every step: the fused initial_integrate ops (kernels/fused.cl; the drift),
- * then wrap periodic coordinates into [lo, hi)
- * (image flags follow), so positions never depend on when the list was
- * rebuilt; flags[0] |= 1 if some atom moved (minimum image) more than
- * sqrt(trigsq) since the last build; flags[1] = lowest index with a
- * non-finite position or velocity. */
+/* Every step, unless the step before ran it (pair_gather, look): the step's
+ * opening for every particle (kernels/atom_step.cl). */
 /* arguments: KARGS_nbr_check (kernels/kernel_args.h) */
 __kernel void nbr_check(KA_PARAMS(nbr_check))
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
-    REAL3 xi = vload3(i, x), xl = POS_LOAD_LO(i);
-    REAL3 vi = vload3(i, v);
-    if (nops > 0) {
-        struct fused_atom at;
-        at.x = xi;
-        at.xl = xl;
-        at.v = vi;
+    struct fused_atom at;
+    at.x = vload3(i, x);
+    at.xl = POS_LOAD_LO(i);
+    at.v = vload3(i, v);
+    if (ninit > 0) {
         at.f = vload3(i, f);
 #ifdef HAS_ROTATION
         at.om = vload3(i, omega);
@@ -46,58 +29,9 @@ __kernel void nbr_check(KA_PARAMS(nbr_check))
         at.m = rmass[i];
         at.r = radius[i];
         at.type = type[i];
-        at.mask = mask[i];
-        fused_apply(&at, ops, 0, nops, prm);
-        xi = at.x;
-        xl = at.xl;
-        vi = at.v;
-        vstore3(xi, i, x);
-        POS_STORE_LO(xl, i);
-        vstore3(vi, i, v);
-#ifdef HAS_ROTATION
-        vstore3(at.om, i, omega);
-#endif
     }
-#if defined(PERIODIC_X) || defined(PERIODIC_Y) || defined(PERIODIC_Z)
-    int3 im = vload3(i, image);
-    const int3 im0 = im;
-#ifdef TRICLINIC
-    pbc_wrap_tri(&xi, &xl, &im, (REAL3)(lox, loy, loz), (REAL3)(hix, hiy, hiz), xy, xz, yz);
-#else
-#ifdef PERIODIC_X
-    PBC_WRAP_COMPONENT(x, lox, hix, Lx);
-#endif
-#ifdef PERIODIC_Y
-    PBC_WRAP_COMPONENT(y, loy, hiy, Ly);
-#endif
-#ifdef PERIODIC_Z
-    PBC_WRAP_COMPONENT(z, loz, hiz, Lz);
-#endif
-#endif
-    if (im.x != im0.x || im.y != im0.y || im.z != im0.z) {
-        vstore3(xi, i, x);
-        POS_STORE_LO(xl, i);
-        vstore3(im, i, image);
-#ifdef VREMAP /* LAMMPS's Domain::pbc with deform remap v: v -/+ h_rate per period */
-        if (mask[i] & vgroup) {
-            vi -= image_velocity(im - im0, hrate);
-            vstore3(vi, i, v);
-        }
-#endif
-    }
-#endif
-#ifndef VREMAP
-    (void)hrate;
-    (void)vgroup;
-#endif
-    REAL3 d = xi - vload3(i, xhold);
-    MINIMG3(d);
-    const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
-    if (rsq > trigsq)
-        atomic_or(&flags[0], 1);
-    if (!(isfinite(xi.x) && isfinite(xi.y) && isfinite(xi.z) && isfinite(vi.x) &&
-          isfinite(vi.y) && isfinite(vi.z)))
-        atomic_min(&flags[1], i);
+    at.mask = mask[i];
+    atom_step(i, &at, KA_ARGS(atom_step), v, omega, ops, prm POS_LO_ARG);
 }
 
 /* Wrap periodic dimensions into [lo, hi) updating image flags (LAMMPS

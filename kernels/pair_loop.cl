@@ -128,7 +128,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
  * written, not added (this also clears the force of the step). Then the
  * fused post_force ops [first, first + npost) and final_integrate ops
  * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
- * change f, torque, v and omega. */
+ * change f, torque, v and omega; with look, the next step's opening
+ * (kernels/atom_step.cl) on the state in registers. */
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
 __kernel void pair_gather(KA_PARAMS(pair_gather))
 {
@@ -151,7 +152,7 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
     (void)recq;
     (void)heatflow;
 #endif
-    if (npost + nfinal > 0) {
+    if (npost + nfinal > 0 || look) {
         struct fused_atom at;
         at.f = fs;
         at.tq = ts;
@@ -166,7 +167,17 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
         fused_apply(&at, ops, first, npost + nfinal, prm);
         fs = at.f;
         ts = at.tq;
-        if (nfinal > 0) {
+        if (look) { /* atom_step stores v and omega after its own ops */
+            at.x = vload3(i, x);
+            at.xl = POS_LOAD_LO(i);
+            if (ninit == 0 && nfinal > 0) {
+                vstore3(at.v, i, v);
+#ifdef HAS_ROTATION
+                vstore3(at.om, i, omega);
+#endif
+            }
+            atom_step(i, &at, KA_ARGS(atom_step), v, omega, ops, prm POS_LO_ARG);
+        } else if (nfinal > 0) {
             vstore3(at.v, i, v);
 #ifdef HAS_ROTATION
             vstore3(at.om, i, omega);

@@ -34,6 +34,7 @@ struct fix;
 struct fused_stages {
     cl_mem ops, prm;            /* int[FOP_W per op], REAL[] */
     int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
+    int lookahead;              /* 0: GRAVEL_LOOKAHEAD=0, no step opening in pair_gather */
 };
 
 /* The fix calls of each hook for the current run (run.c). */

@@ -548,6 +548,8 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "contact_normal.cl", "engine");
     /* per-particle fix work run inside the check and gather kernels */
     add_source(g, names, texts, &n, "fused.cl", "engine");
+    /* a step's opening per particle: nbr_check's, or pair_gather's look-ahead */
+    add_source(g, names, texts, &n, "atom_step.cl", "engine");
     /* collision-resolution and wall-overlap records (src/contact/accuracy.c) */
     add_source(g, names, texts, &n, "accuracy.cl", "engine");
     for (int k = 0; pc && k < pc->nsources; k++) /* hybrid: one source per fused term */

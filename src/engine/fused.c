@@ -85,6 +85,8 @@ void fused_setup(struct gravel *g)
         g->styles.fix[i]->fused_hooks = 0;
     const char *env = getenv("GRAVEL_FUSE");
     int enabled = !(env && !strcmp(env, "0"));
+    const char *look = getenv("GRAVEL_LOOKAHEAD");
+    s->lookahead = !(look && !strcmp(look, "0"));
     struct builder b = {0};
     if (enabled) {
         s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, 1);

@@ -56,6 +56,7 @@ struct nbr {
     double lmp_cutmax;          /* -compat lammps2021: LAMMPS's cutneighmax (its bins) */
     int nexg;
     int ago;
+    int opened;                 /* the last pair_gather ran this step's opening (nbr_step_ahead) */
     double corners_hold[8][3];  /* box corners at the last build */
     int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
@@ -660,44 +661,67 @@ void nbr_box_changed(struct gravel *g)
     b->box_moved = 1;
 }
 
-int nbr_decide(struct gravel *g, int forced)
+/* The arguments of a step's opening (kernels/atom_step.cl); with reset, its
+ * flags reset for it. */
+static void step_args(struct gravel *g, struct nbr *b, struct atom_step_args *a, int reset)
 {
     struct engine *e = g->eng;
-    struct nbr *b = get(g);
-    int n = e->a.n;
     double trig = trigger_distance(g, b);
-    reset_flags(g, b);
-    /* the fused initial_integrate ops (src/engine/fused.h) run first */
-    struct nbr_check_args ck = {
-        .n = n,
+    if (reset)
+        reset_flags(g, b);
+    *a = (struct atom_step_args){
         .x = e->a.x,
-        .v = e->a.v,
         .xhold = b->xhold,
         .trigsq = trig * trig,
         .flags = b->flags,
         .image = e->a.image,
         .box = {0, 0, 0, g->dom.xy, g->dom.xz, g->dom.yz},
-        .ops = e->fused.ops,
-        .nops = e->fused.ninit,
-        .prm = e->fused.prm,
-        .f = e->a.f,
-        .omega = e->rotation ? e->a.omega : e->a.v,
-        .torque = e->rotation ? e->a.torque : e->a.f,
-        .rmass = e->a.rmass,
-        .radius = e->a.radius,
-        .type = e->a.type,
-        .mask = e->a.mask,
         .hrate = e->hrate,
         .vgroup = e->vgroup,
+        .ninit = e->fused.ninit,
     };
     for (int q = 0; q < 3; q++) {
-        ck.lo[q] = g->dom.lo[q];
-        ck.hi[q] = g->dom.hi[q];
-        ck.box[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+        a->lo[q] = g->dom.lo[q];
+        a->hi[q] = g->dom.hi[q];
+        a->box[q] = domain_contact_periodic(g, q) ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
     }
-    cl_kernel k = b->k_check;
-    ka_bind_nbr_check(g, k, 0, &ck);
-    eng_launch(g, k, (size_t)n);
+}
+
+void nbr_step_args(struct gravel *g, struct atom_step_args *a, int ahead)
+{
+    struct nbr *b = get(g);
+    step_args(g, b, a, ahead);
+    b->opened = ahead;
+}
+
+void nbr_step_reset(struct gravel *g)
+{
+    get(g)->opened = 0;
+}
+
+int nbr_decide(struct gravel *g, int forced)
+{
+    struct engine *e = g->eng;
+    struct nbr *b = get(g);
+    if (!b->opened) { /* the step's opening; else the last pair_gather ran it */
+        struct nbr_check_args ck = {
+            .n = e->a.n,
+            .v = e->a.v,
+            .ops = e->fused.ops,
+            .prm = e->fused.prm,
+            .f = e->a.f,
+            .omega = e->rotation ? e->a.omega : e->a.v,
+            .torque = e->rotation ? e->a.torque : e->a.f,
+            .rmass = e->a.rmass,
+            .radius = e->a.radius,
+            .type = e->a.type,
+            .mask = e->a.mask,
+        };
+        step_args(g, b, &ck.atom_step, 1);
+        ka_bind_nbr_check(g, b->k_check, 0, &ck);
+        eng_launch(g, b->k_check, (size_t)e->a.n);
+    }
+    b->opened = 0;
     cl_int fl[4];
     read_flags(g, b, fl);
     if (fl[1] != 0x7fffffff)

@@ -47,6 +47,14 @@ void nbr_free(struct gravel *g);
  * forced (a fix's next_reneighbor is this step) it returns 1 before the
  * every/delay count advances, as LAMMPS (no dangerous-build count). */
 int nbr_decide(struct gravel *g, int forced);
+/* The arguments of a step's opening for pair_gather (kernels/atom_step.cl).
+ * With ahead, the next step's opening runs in this step's pair_gather
+ * (src/engine/run.c, step_lookahead): the flags are reset for it and the
+ * next nbr_decide only reads them; without, the arguments are bound unused.
+ * nbr_step_reset forgets an opening run ahead (a run's start). */
+struct atom_step_args;
+void nbr_step_args(struct gravel *g, struct atom_step_args *a, int ahead);
+void nbr_step_reset(struct gravel *g);
 /* Atoms nold .. nnew - 1 were appended to the device arrays (eng_append):
  * they own no previous contacts, so the next rebuild's history transfer
  * finds none for them. */

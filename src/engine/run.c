@@ -211,6 +211,24 @@ static void run_hook(struct gravel *g, unsigned hook)
         h->call[k][i].fn(g, h->call[k][i].fix);
 }
 
+/* Whether this step's pair_gather also runs the next step's opening
+ * (kernels/atom_step.cl: its initial_integrate ops, wrap and rebuild check;
+ * bit-identical to nbr_check at the next step's start): when nothing reads
+ * or moves the particles in between, i.e. every fix's per-step work is
+ * fused (no hook left to call; pre_exchange runs after the check), no
+ * output or restart file is due, and the step is not the run's last. */
+static int step_lookahead(struct gravel *g, int last)
+{
+    const struct engine *e = g->eng;
+    if (!e->k_pair || !e->fused.lookahead || last || output_due(g, g->step) ||
+        restart_due(g, g->step))
+        return 0;
+    for (int k = 0; k < NHOOK; k++)
+        if (e->hooks.n[k] > 0 && k != hook_index(HOOK_PRE_EXCHANGE))
+            return 0;
+    return 1;
+}
+
 /* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */
 static void post_neighbor(struct gravel *g)
 {
@@ -239,7 +257,7 @@ static cl_mem heat_records(struct gravel *g, size_t ncontact)
 
 /* Force computation: pair (or clear), then every post_force fix; their
  * wall times are added to t[TM_PAIR] and t[TM_MODIFY]. */
-static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t)
+static void compute_forces(struct gravel *g, unsigned freezebit, int timed, double *t, int look)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = &e->a;
@@ -285,7 +303,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         /* new forces: a virial or energy taken before is stale */
         e->virial_snap_step = e->epair_snap_step = -1;
         /* fused post_force ops, and the final kick except at setup */
-        const struct pair_gather_args pg = {
+        struct pair_gather_args pg = {
             .n = a->n,
             .ioff = l->ioff,
             .recf = l->recf,
@@ -305,7 +323,9 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .mask = a->mask,
             .recq = recq,
             .heatflow = e->heat ? a->heatflow : a->f,
+            .look = look,
         };
+        nbr_step_args(g, &pg.atom_step, look);
         ka_bind_pair_gather(g, e->k_gather, 0, &pg);
         eng_launch(g, e->k_gather, (size_t)a->n);
     } else {
@@ -462,7 +482,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     }
     e->st.nbuilds = 0;
     if (resumed < 2)
-        compute_forces(g, freezebit, 1, tsetup);
+        compute_forces(g, freezebit, 1, tsetup, 0);
     for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
         if (g->styles.fix[i]->style->setup)
             g->styles.fix[i]->style->setup(g, g->styles.fix[i]);
@@ -472,6 +492,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     /* Timing (struct run_timers): the decision read syncs every step. */
     struct run_timers tm = {0};
     e->st.nlaunch = 0;
+    nbr_step_reset(g);
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
@@ -502,7 +523,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         double a2 = wall();
         int timed = sampled || rebuild;
         double step[TM_N] = {0};
-        compute_forces(g, freezebit, timed, step);
+        const int look = step_lookahead(g, s + 1 == nsteps);
+        compute_forces(g, freezebit, timed, step, look);
         double b0 = wall();
         run_hook(g, HOOK_FINAL_INTEGRATE);
         run_hook(g, HOOK_END_OF_STEP);
@@ -512,7 +534,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         step[TM_NEIGH] = a2 - a1 - tx;
         step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
         timers_step(&tm, rebuild, sampled, step);
-        if (output_due(g, g->step)) {
+        if (!look && output_due(g, g->step)) { /* look: none was due */
             acc_collect(g);
             double ov = nbr_max_overlap(g);
             if (ov > maxov)
@@ -592,7 +614,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         e->setup = 1;
         group_dynamic_update(g, -1);
         nbr_rebuild(g);
-        compute_forces(g, freezebit, 1, t);
+        compute_forces(g, freezebit, 1, t, 0);
         for (int i = 0; i < g->styles.nfix; i++)
             if (g->styles.fix[i]->style->setup)
                 g->styles.fix[i]->style->setup(g, g->styles.fix[i]);

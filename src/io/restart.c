@@ -1046,6 +1046,13 @@ void cmd_restart(struct gravel *g, int argc, char **argv)
     }
 }
 
+int restart_due(const struct gravel *g, bigint step)
+{
+    const struct restart *r = g->restart;
+    return r && ((r->every[0] > 0 && step % r->every[0] == 0) ||
+                 (r->every[1] > 0 && step % r->every[1] == 0));
+}
+
 void restart_step(struct gravel *g)
 {
     struct restart *r = g->restart;

@@ -34,6 +34,8 @@ void cmd_restart(struct gravel *g, int argc, char **argv);
  * previous file at `path` survives any failure. */
 void restart_write(struct gravel *g, const char *path);
 
+/* Whether restart_step writes a file at this step. */
+int restart_due(const struct gravel *g, bigint step);
 /* Run loop, after each step: writes the `restart` files when the step is a
  * multiple of N. Cheap when not due. */
 void restart_step(struct gravel *g);

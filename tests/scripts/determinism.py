@@ -16,7 +16,9 @@ bit-identical in every variant:
   - neigh_modify check no (a rebuild every step: other neighbor sets).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
 freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
-off (GRAVEL_FUSE=0: one launch per fix and hook). Then momentum conservation of the pair forces: a periodic dense packing
+off (GRAVEL_FUSE=0: one launch per fix and hook) and with the look-ahead off
+(GRAVEL_LOOKAHEAD=0: each step's opening in nbr_check instead of the step
+before's pair_gather). Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
 The same lane widths give the same bits for each lane-generic law (gran
@@ -203,6 +205,13 @@ def main():
         ok = dump_f == dump_u and rows_f == rows_u
         bad += not check("fused_equals_unfused", ok,
                          "" if ok else first_difference(dump_f, dump_u))
+    rows_n, dump_n = run(CHUTE, {"GRAVEL_LOOKAHEAD": "0"})
+    if rows_f is None or rows_n is None:
+        bad += not check("lookahead_equals_none", False, (dump_f + dump_n)[-400:])
+    else:
+        ok = dump_f == dump_n and rows_f == rows_n
+        bad += not check("lookahead_equals_none", ok,
+                         "" if ok else first_difference(dump_f, dump_n))
     rows, dump = run(PACK)
     if rows is None:
         bad += not check("pair_forces_sum_to_zero", False, dump[-400:])
