@@ -67,10 +67,15 @@ int ref_wildcard(struct gravel *g, const char *ref, int array, char *prefix, int
     const char *what = array ? "global array" : "global vector";
     if (ref[0] == 'c') {
         struct compute *c = compute_get(g, id, who);
-        if (array ? !c->array_flag : !c->vector_flag)
+        if (array ? c->array_flag : c->vector_flag)
+            width = array ? c->size_array_cols : c->size_vector;
+        else if (c->peratom_flag && c->size_peratom_cols > 0)
+            width = c->size_peratom_cols, what = "per-atom array";
+        else if (c->local_flag && c->size_local_cols > 0)
+            width = c->size_local_cols, what = "local array";
+        else
             gr_error(g, "%s: cannot expand %.64s: compute %s (%s) has no %s", who, ref, id,
                      c->style->name, what);
-        width = array ? c->size_array_cols : c->size_vector;
     } else {
         struct fix *f = fix_find(g, id);
         if (!f)
@@ -83,7 +88,7 @@ int ref_wildcard(struct gravel *g, const char *ref, int array, char *prefix, int
     *lo = a ? (int)a : 1;
     *hi = b ? (int)b : width;
     if (*lo > *hi || *hi > width)
-        gr_error(g, "%s: %.64s is out of range: %s %s has %d %s", who, ref,
-                 ref[0] == 'c' ? "compute" : "fix", id, width, array ? "columns" : "values");
+        gr_error(g, "%s: %.64s is out of range: %s %s has %d in its %s", who, ref,
+                 ref[0] == 'c' ? "compute" : "fix", id, width, what);
     return 1;
 }

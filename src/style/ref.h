@@ -5,7 +5,8 @@
  * reference per index, c_ID[N] ... c_ID[M]. An open end is the width of the
  * compute's or fix's output the reader takes: its global vector
  * (size_vector) in vector mode, the columns of its global array
- * (size_array_cols) in array mode. */
+ * (size_array_cols) in array mode; for a compute without that output, the
+ * columns of its per-atom array, else of its local array (LAMMPS's order). */
 #ifndef GR_REF_H
 #define GR_REF_H
 

@@ -7,8 +7,11 @@
 #include <unistd.h>
 
 #include "args.h"
+#include "compute.h"
 #include "error.h"
+#include "fix.h"
 #include "outfile.h"
+#include "variable.h"
 
 void ave_sched_parse(struct gravel *g, struct ave_sched *s, char **argv, const char *who)
 {
@@ -80,6 +83,85 @@ void ave_window_parse(struct gravel *g, struct ave_window *w, int argc, char **a
     } else {
         gr_error(g, "%s: ave must be one, running or window M, got '%.32s'", who, v);
     }
+}
+
+int ave_keyword(struct gravel *g, struct ave_opts *o, struct ave_sched *s, struct ave_window *w,
+                struct ave_file *af, int argc, char **argv, int *i, const char *who)
+{
+    const char *kw = argv[*i];
+    if (!strcmp(kw, "file") || !strcmp(kw, "append")) {
+        arg_need(g, argc, *i, 1, kw);
+        o->file = argv[++*i];
+        o->append = !strcmp(kw, "append");
+    } else if (!strcmp(kw, "ave")) {
+        ave_window_parse(g, w, argc, argv, i, who);
+    } else if (!strcmp(kw, "start")) {
+        arg_need(g, argc, *i, 1, kw);
+        s->start = arg_bigint(g, argv[++*i], "start step");
+    } else if (!strcmp(kw, "mode")) {
+        arg_need(g, argc, *i, 1, kw);
+        const char *m = argv[++*i];
+        if (strcmp(m, "scalar") && strcmp(m, "vector"))
+            gr_error(g, "%s: mode must be scalar or vector, got '%.32s'", who, m);
+        o->vector_mode = !strcmp(m, "vector");
+    } else if (!strcmp(kw, "overwrite")) {
+        af->overwrite = 1;
+    } else if (!strcmp(kw, "title1") || !strcmp(kw, "title2") || !strcmp(kw, "title3")) {
+        arg_need(g, argc, *i, 1, kw);
+        o->title[kw[5] - '1'] = argv[++*i];
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+void ave_global_check(struct gravel *g, char kind, const char *id, int index, int vector_mode,
+                      int nevery, const char *who)
+{
+    static const char *const what[2][2] = {{"scalar", "vector"}, {"vector", "array"}};
+    const char *need = what[vector_mode != 0][index > 0];
+    int has, n;
+    const char *style;
+    if (kind == 'c') {
+        struct compute *c = compute_find(g, id);
+        if (!c)
+            gr_error(g, "%s: compute ID '%s' does not exist", who, id);
+        has = !vector_mode ? (index ? c->vector_flag : c->scalar_flag)
+                           : (index ? c->array_flag : c->vector_flag);
+        n = !vector_mode ? c->size_vector : c->size_array_cols;
+        style = c->style->name;
+    } else {
+        struct fix *f = fix_find(g, id);
+        if (!f)
+            gr_error(g, "%s: fix ID '%s' does not exist", who, id);
+        has = !vector_mode ? (index ? f->vector_flag : f->scalar_flag)
+                           : (index ? f->array_flag : f->vector_flag);
+        n = !vector_mode ? f->size_vector : f->size_array_cols;
+        style = f->style->name;
+        if (nevery % f->global_freq)
+            gr_error(g, "%s: fix %s is not computed at compatible times (its output is "
+                        "current every %d steps, Nevery is %d)", who, id, f->global_freq,
+                     nevery);
+    }
+    const char *kname = kind == 'c' ? "compute" : "fix";
+    if (!has)
+        gr_error(g, "%s: %s %s (%s) does not calculate a global %s%s", who, kname, id, style,
+                 need, vector_mode ? " (mode vector reads c_ID as a vector, c_ID[I] as an "
+                                     "array column)" : "");
+    if (index > n)
+        gr_error(g, "%s: %c_%s[%d] is out of range: %s %s has %d %s", who, kind, id, index,
+                 kname, id, n, vector_mode ? "columns" : "values");
+}
+
+void ave_source_check(struct gravel *g, char kind, const char *id, const char *who,
+                      const char *fid)
+{
+    if (kind == 'c' && !compute_find(g, id))
+        gr_error(g, "%s %s: compute ID '%s' does not exist", who, fid, id);
+    if (kind == 'f' && !fix_find(g, id))
+        gr_error(g, "%s %s: fix ID '%s' does not exist", who, fid, id);
+    if (kind == 'v' && !var_exists(g, id))
+        gr_error(g, "%s %s: variable name '%s' does not exist", who, fid, id);
 }
 
 void ave_window_add(const struct ave_window *w, double *total, double *list, const double *one,

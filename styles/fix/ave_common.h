@@ -1,4 +1,5 @@
-/* ave_common.h - what the time-averaging fixes (ave/time, ave/chunk) share,
+/* ave_common.h - what the time-averaging fixes (ave/time, ave/chunk,
+ * ave/histo) share,
  * as LAMMPS's FixAve* classes do:
  *  - the schedule: samples on steps nvalid, nvalid + Nevery, ... (Nrepeat of
  *    them) ending on a multiple of Nfreq (LAMMPS nextvalid());
@@ -52,6 +53,32 @@ void ave_window_parse(struct gravel *g, struct ave_window *w, int argc, char **a
 void ave_window_add(const struct ave_window *w, double *total, double *list, const double *one,
                     size_t n);
 void ave_window_advance(struct ave_window *w);
+
+/* The keywords fix ave/time and ave/histo share, as parsed. */
+struct ave_opts {
+    const char *file;           /* file or append F */
+    int append;
+    const char *title[3];       /* title1/2/3 */
+    int vector_mode;            /* mode vector */
+};
+
+/* If argv[*i] is one of the shared keywords (file, append, ave, start, mode,
+ * overwrite, title1, title2, title3), parse it and its values into o, w,
+ * s->start and af->overwrite, advance *i to its last word and return 1;
+ * else return 0. */
+struct ave_file;
+int ave_keyword(struct gravel *g, struct ave_opts *o, struct ave_sched *s, struct ave_window *w,
+                struct ave_file *af, int argc, char **argv, int *i, const char *who);
+/* LAMMPS's checks of a global input c_ID / c_ID[I] (kind 'c') or f_ID /
+ * f_ID[I] ('f'): scalar mode reads the scalar (index 0) or vector element I,
+ * vector mode the vector (index 0) or column I of the array; a fix's output
+ * must be current on every Nevery-th step. */
+void ave_global_check(struct gravel *g, char kind, const char *id, int index, int vector_mode,
+                      int nevery, const char *who);
+/* At run setup: the compute ('c'), fix ('f') or variable ('v') `id` that
+ * fix `fid` reads still exists, else an error. */
+void ave_source_check(struct gravel *g, char kind, const char *id, const char *who,
+                      const char *fid);
 
 struct ave_file {
     FILE *fp;

@@ -113,50 +113,10 @@ static void check_value(struct gravel *g, struct ave_time *a, struct value *v)
             v->which = W_THERMO_TEMP; /* thermo's implicit temperature, as thermo_style */
             return;
         }
-        struct compute *c = compute_find(g, v->id);
-        if (!c)
-            gr_error(g, WHO ": compute ID '%s' for %s does not exist", v->id, v->name);
-        if (!vec && !i && !c->scalar_flag)
-            gr_error(g, WHO ": compute %s (%s) does not calculate a scalar%s", v->id,
-                     c->style->name, c->vector_flag ? " (use c_ID[I], or mode vector)" : "");
-        if (!vec && i && !c->vector_flag)
-            gr_error(g, WHO ": compute %s (%s) does not calculate a vector", v->id,
-                     c->style->name);
-        if (!vec && i > c->size_vector)
-            gr_error(g, WHO ": %s is out of range: compute %s has %d values", v->name, v->id,
-                     c->size_vector);
-        if (vec && !i && !c->vector_flag)
-            gr_error(g, WHO ": compute %s (%s) does not calculate a vector (mode vector reads "
-                        "c_ID as a global vector)", v->id, c->style->name);
-        if (vec && i && !c->array_flag)
-            gr_error(g, WHO ": compute %s (%s) does not calculate an array (mode vector reads "
-                        "c_ID[I] as column I of a global array)", v->id, c->style->name);
-        if (vec && i > c->size_array_cols)
-            gr_error(g, WHO ": %s is out of range: compute %s has %d columns", v->name, v->id,
-                     c->size_array_cols);
+        ave_global_check(g, 'c', v->id, i, vec, a->s.nevery, WHO);
         v->varlen = vec && i;
     } else if (v->which == W_FIX) {
-        struct fix *f = fix_find(g, v->id);
-        if (!f)
-            gr_error(g, WHO ": fix ID '%s' for %s does not exist", v->id, v->name);
-        if (!vec && !i && !f->scalar_flag)
-            gr_error(g, WHO ": fix %s (%s) does not calculate a scalar", v->id, f->style->name);
-        if (!vec && i && !f->vector_flag)
-            gr_error(g, WHO ": fix %s (%s) does not calculate a vector", v->id, f->style->name);
-        if (!vec && i > f->size_vector)
-            gr_error(g, WHO ": %s is out of range: fix %s has %d values", v->name, v->id,
-                     f->size_vector);
-        if (vec && !i && !f->vector_flag)
-            gr_error(g, WHO ": fix %s (%s) does not calculate a vector", v->id, f->style->name);
-        if (vec && i && !f->array_flag)
-            gr_error(g, WHO ": fix %s (%s) does not calculate an array", v->id, f->style->name);
-        if (vec && i > f->size_array_cols)
-            gr_error(g, WHO ": %s is out of range: fix %s has %d columns", v->name, v->id,
-                     f->size_array_cols);
-        if (a->s.nevery % f->global_freq)
-            gr_error(g, WHO ": fix %s is not computed at compatible times (its output is "
-                        "current every %d steps, Nevery is %d)", v->id, f->global_freq,
-                     a->s.nevery);
+        ave_global_check(g, 'f', v->id, i, vec, a->s.nevery, WHO);
     } else {
         if (!var_exists(g, v->id))
             gr_error(g, WHO ": variable name '%s' for %s does not exist", v->id, v->name);
@@ -339,36 +299,17 @@ static void at_create(struct gravel *g, struct fix *f, int argc, char **argv)
                     "got '%.64s'", argv[3]);
     /* keywords first: the mode decides how wildcards expand */
     a->w.kind = AVE_ONE;
-    a->mode = MODE_SCALAR;
-    const char *file = NULL, *title[3] = {NULL, NULL, NULL};
-    int append = 0, noff = 0, off[64];
+    struct ave_opts o = {0};
+    int noff = 0, off[64];
     for (int i = 3 + nargs; i < argc; i++) {
         const char *kw = argv[i];
-        if (!strcmp(kw, "file") || !strcmp(kw, "append")) {
-            arg_need(g, argc, i, 1, kw);
-            file = argv[++i];
-            append = !strcmp(kw, "append");
-        } else if (!strcmp(kw, "ave")) {
-            ave_window_parse(g, &a->w, argc, argv, &i, WHO);
-        } else if (!strcmp(kw, "start")) {
-            arg_need(g, argc, i, 1, kw);
-            a->s.start = arg_bigint(g, argv[++i], "start step");
-        } else if (!strcmp(kw, "mode")) {
-            arg_need(g, argc, i, 1, kw);
-            const char *m = argv[++i];
-            if (!strcmp(m, "scalar"))
-                a->mode = MODE_SCALAR;
-            else if (!strcmp(m, "vector"))
-                a->mode = MODE_VECTOR;
-            else
-                gr_error(g, WHO ": mode must be scalar or vector, got '%.32s'", m);
+        if (ave_keyword(g, &o, &a->s, &a->w, &a->af, argc, argv, &i, WHO)) {
+            continue;
         } else if (!strcmp(kw, "off")) {
             arg_need(g, argc, i, 1, kw);
             if (noff == (int)(sizeof off / sizeof off[0]))
                 gr_error(g, WHO ": at most %d off keywords", noff);
             off[noff++] = arg_int(g, argv[++i], "off column");
-        } else if (!strcmp(kw, "overwrite")) {
-            a->af.overwrite = 1;
         } else if (!strcmp(kw, "format")) {
             arg_need(g, argc, i, 1, kw);
             free(a->format);
@@ -376,14 +317,12 @@ static void at_create(struct gravel *g, struct fix *f, int argc, char **argv)
             if (!expr_format_ok(a->format))
                 gr_error(g, WHO ": format '%.64s' must have exactly one floating point "
                             "conversion", argv[i]);
-        } else if (!strcmp(kw, "title1") || !strcmp(kw, "title2") || !strcmp(kw, "title3")) {
-            arg_need(g, argc, i, 1, kw);
-            title[kw[5] - '1'] = argv[++i];
         } else {
             gr_error(g, WHO ": unknown keyword '%.64s' (file, append, ave, start, mode, off, "
                         "overwrite, format, title1, title2, title3)", kw);
         }
     }
+    a->mode = o.vector_mode ? MODE_VECTOR : MODE_SCALAR;
     if (a->w.kind != AVE_RUNNING && a->af.overwrite)
         gr_error(g, WHO ": overwrite needs ave running");
     /* the values, wildcards expanded */
@@ -430,9 +369,9 @@ static void at_create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (a->mode == MODE_VECTOR && a->nrows < 1)
         gr_error(g, WHO ": %s has no rows", a->v[0].name);
-    if (file) {
-        ave_file_open(g, &a->af, file, append, WHO);
-        write_header(g, f, a, title);
+    if (o.file) {
+        ave_file_open(g, &a->af, o.file, o.append, WHO);
+        write_header(g, f, a, o.title);
     }
     allocate(g, f, a);
     set_output(g, f, a);
@@ -542,17 +481,9 @@ static void at_sample(struct gravel *g, struct fix *f)
 static void at_init(struct gravel *g, struct fix *f)
 {
     struct ave_time *a = f->data;
-    for (int j = 0; j < a->nvalues; j++) {
-        const struct value *v = &a->v[j];
-        if (v->which == W_COMPUTE && !compute_find(g, v->id))
-            gr_error(g, WHO " %s: compute ID '%s' for %s does not exist", f->id, v->id,
-                     v->name);
-        if (v->which == W_FIX && !fix_find(g, v->id))
-            gr_error(g, WHO " %s: fix ID '%s' for %s does not exist", f->id, v->id, v->name);
-        if (v->which == W_VARIABLE && !var_exists(g, v->id))
-            gr_error(g, WHO " %s: variable name '%s' for %s does not exist", f->id, v->id,
-                     v->name);
-    }
+    for (int j = 0; j < a->nvalues; j++)
+        if (a->v[j].which != W_THERMO_TEMP)
+            ave_source_check(g, a->v[j].name[0], a->v[j].id, WHO, f->id);
     if (a->s.nvalid < g->step)
         ave_sched_reset(g, &a->s);
 }

@@ -78,20 +78,25 @@ FILES = {"a1.txt": 1, "a2.txt": 1, "a3.txt": 1, "a4.txt": 1, "a5.txt": 1, "a6.tx
          "a7.txt": 0, "a8.txt": 0}  # 1: %.15g, 0: LAMMPS's default %g
 
 
-def records(path):
-    """(header lines, [(step, [rows of numbers])]) of a fix ave/time file."""
+def records(path, blocks=None):
+    """(header lines, [(step, [rows of numbers])]) of a fix ave/time or ave/histo file.
+    blocks: each record is a line "STEP N ..." and N rows (vector mode, histograms): the
+    numbers after N, if any, are the first row; None: vector mode when the header says so."""
     head, recs = [], []
     lines = open(path).read().splitlines()
-    vector = any(l.startswith("# TimeStep Number-of-rows") or l == "# second" for l in lines)
+    if blocks is None:
+        blocks = any(l.startswith("# TimeStep Number-of-rows") or l == "# second" for l in lines)
     i = 0
     while i < len(lines) and lines[i].startswith("#"):
         head.append(lines[i])
         i += 1
     while i < len(lines):
         w = lines[i].split()
-        if vector:
+        if blocks:
             n = int(w[1])
-            recs.append((int(w[0]), [[float(x) for x in l.split()] for l in lines[i + 1:i + 1 + n]]))
+            first = [[float(x) for x in w[2:]]] if len(w) > 2 else []
+            recs.append((int(w[0]), first + [[float(x) for x in l.split()]
+                                             for l in lines[i + 1:i + 1 + n]]))
             i += 1 + n
         else:
             recs.append((int(w[0]), [[float(x) for x in w[1:]]]))
@@ -130,22 +135,29 @@ def compare_thermo(lt, gt):
            f"worst {worst:.3g} ({where})")
 
 
-def lammps_case():
+def with_lammps(deck, tag, check):
+    """Run deck in lmp and gravel (each in a fresh folder), report both runs, then
+    check(lammps_folder, gravel_folder)."""
     lmp = shutil.which("lmp")
     if not lmp:
-        print("SKIP fix_ave_time lammps: lmp (LAMMPS) is not installed")
+        print(f"SKIP {tag} lammps: lmp (LAMMPS) is not installed")
         return
     with tempfile.TemporaryDirectory() as lt, tempfile.TemporaryDirectory() as gt:
-        rl = run([lmp], HEAD + FIXES, lt)
-        rg = run([GRAVEL], HEAD + FIXES, gt)
-        report(rl.returncode == 0, "ave_time_lmp_runs", "" if rl.returncode == 0 else rl.stdout[-500:])
-        report(rg.returncode == 0, "ave_time_gravel_runs",
+        rl = run([lmp], deck, lt)
+        rg = run([GRAVEL], deck, gt)
+        report(rl.returncode == 0, f"{tag}_lmp_runs", "" if rl.returncode == 0 else rl.stdout[-500:])
+        report(rg.returncode == 0, f"{tag}_gravel_runs",
                "" if rg.returncode == 0 else (rg.stdout + rg.stderr)[-500:])
-        if rl.returncode or rg.returncode:
-            return
+        if rl.returncode == 0 and rg.returncode == 0:
+            check(lt, gt)
+
+
+def lammps_case():
+    def check(lt, gt):
         for name, precise in FILES.items():
             compare_file(name, lt, gt, precise)
         compare_thermo(lt, gt)
+    with_lammps(HEAD + FIXES, "ave_time", check)
 
 
 HAND = """variable s equal step
@@ -196,15 +208,15 @@ ERRORS = [
     ("nevery_zero", "fix e all ave/time 0 1 10 c_ke", "must be positive"),
     ("no_values", "fix e all ave/time 10 1 100 ave one", "no values"),
     ("no_compute", "fix e all ave/time 10 1 100 c_nope", "compute ID 'nope'"),
-    ("no_scalar", "fix e all ave/time 10 1 100 c_com", "does not calculate a scalar"),
-    ("no_vector", "fix e all ave/time 10 1 100 c_ke[1]", "does not calculate a vector"),
+    ("no_scalar", "fix e all ave/time 10 1 100 c_com", "does not calculate a global scalar"),
+    ("no_vector", "fix e all ave/time 10 1 100 c_ke[1]", "does not calculate a global vector"),
     ("out_of_range", "fix e all ave/time 10 1 100 c_com[4]", "out of range"),
     ("wildcard_range", "fix e all ave/time 10 1 100 c_com[2*5]", "out of range"),
     ("wildcard_scalar", "fix e all ave/time 10 1 100 c_ke[*]", "has no global vector"),
     ("vector_no_vector", "fix e all ave/time 10 1 100 c_ke mode vector",
-     "does not calculate a vector"),
+     "does not calculate a global vector"),
     ("vector_no_array", "fix e all ave/time 10 1 100 c_com[1] mode vector",
-     "does not calculate an array"),
+     "does not calculate a global array"),
     ("vector_lengths", "fix e all ave/time 10 1 100 c_com c_red4 mode vector",
      "inconsistent lengths"),
     ("vector_mixed_ext", "fix e all ave/time 10 1 100 c_com c_red mode vector",
@@ -218,7 +230,7 @@ ERRORS = [
      "compatible times"),
     ("fix_2d_index", "fix a all ave/time 10 1 100 c_com mode vector\n"
      "fix e all ave/time 100 1 100 f_a[1][1]", "invalid value"),
-    ("fix_no_scalar", "fix e all ave/time 10 1 100 f_integ", "does not calculate a scalar"),
+    ("fix_no_scalar", "fix e all ave/time 10 1 100 f_integ", "does not calculate a global scalar"),
     ("overwrite", "fix e all ave/time 10 1 100 c_ke overwrite", "overwrite needs ave running"),
     ("keyword", "fix e all ave/time 10 1 100 c_ke bogus 1", "unknown keyword 'bogus'"),
     ("window", "fix e all ave/time 10 1 100 c_ke ave window 0", "window length"),
@@ -232,20 +244,20 @@ ERRORS = [
 ]
 
 
-def errors():
+def check_errors(table, tag, names):
+    """Each (name, commands, words) of table, after HEAD, must fail with an ERROR line
+    holding words, one of names (the command) and the file:line of its last command."""
     nhead = HEAD.count("\n")
     with tempfile.TemporaryDirectory() as d:
-        for name, cmds, words in ERRORS:
-            deck = HEAD + cmds + "\n"
+        for name, cmds, words in table:
             # the failing line: the last command line (thermo_every fails at run)
             line = nhead + cmds.count("\n") + 1
-            r = run([GRAVEL], deck, d)
+            r = run([GRAVEL], HEAD + cmds + "\n", d)
             out = r.stdout + r.stderr
             err = [l for l in out.splitlines() if l.startswith("ERROR")]
             ok = (r.returncode != 0 and err and words in err[0] and
-                  f"in.deck:{line})" in err[0] and ("ave/time" in err[0] or "thermo" in err[0]
-                                                     or "reset_timestep" in err[0]))
-            report(bool(ok), f"ave_time_error {name}", (err[0] if err else out[-300:])
+                  f"in.deck:{line})" in err[0] and any(n in err[0] for n in names))
+            report(bool(ok), f"{tag}_error {name}", (err[0] if err else out[-300:])
                    if not ok else "")
 
 
@@ -255,7 +267,7 @@ def main():
         return 1
     lammps_case()
     by_hand()
-    errors()
+    check_errors(ERRORS, "ave_time", ("ave/time", "thermo", "reset_timestep"))
     return 1 if computes_lammps.failures else 0
 
 
