@@ -87,6 +87,9 @@ int ref_wildcard(struct gravel *g, const char *ref, int array, char *prefix, int
     }
     *lo = a ? (int)a : 1;
     *hi = b ? (int)b : width;
+    if ((bigint)*hi - *lo >= 100000)
+        gr_error(g, "%s: %.64s expands to %d references (at most 100000)", who, ref,
+                 *hi - *lo + 1);
     if (*lo > *hi || *hi > width)
         gr_error(g, "%s: %.64s is out of range: %s %s has %d in its %s", who, ref,
                  ref[0] == 'c' ? "compute" : "fix", id, width, what);
