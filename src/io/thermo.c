@@ -42,56 +42,6 @@ enum kw_id {
 #define KIND_VARIABLE (-2)
 #define KIND_FIX (-3)
 
-/* f_ID (index 0: the fix's scalar) or f_ID[N] (N >= 1: its vector): the
- * fix ID and N, else 0. */
-static int fix_parse_ref(const char *ref, char *id, int *index)
-{
-    if (strncmp(ref, "f_", 2) != 0)
-        return 0;
-    const char *s = ref + 2;
-    const char *br = strchr(s, '[');
-    size_t n = br ? (size_t)(br - s) : strlen(s);
-    if (n == 0 || n >= GR_NAMELEN)
-        return 0;
-    memcpy(id, s, n);
-    id[n] = '\0';
-    if (!br) {
-        *index = 0;
-        return 1;
-    }
-    char *end;
-    long v = strtol(br + 1, &end, 10);
-    if (end == br + 1 || *end != ']' || end[1] != '\0' || v < 1 || v > 1000000)
-        return 0;
-    *index = (int)v;
-    return 1;
-}
-
-/* The fix of a valid f_ID / f_ID[N] reference it can evaluate, else an error. */
-static struct fix *fix_ref_check(struct gravel *g, const char *ref, int *index)
-{
-    char id[GR_NAMELEN];
-    if (!fix_parse_ref(ref, id, index))
-        gr_error(g, "thermo_style: invalid fix reference '%.64s' (use f_ID or f_ID[N], N >= 1)",
-                 ref);
-    struct fix *f = fix_find(g, id);
-    if (!f)
-        gr_error(g, "thermo_style: no fix with ID '%.64s' for %.64s", id, ref);
-    if (*index == 0) {
-        if (!f->style->scalar)
-            gr_error(g, "thermo_style: fix %s (%s) does not compute a global scalar", id,
-                     f->style->name);
-        return f;
-    }
-    if (!f->style->vector)
-        gr_error(g, "thermo_style: fix %s (%s) does not produce a global vector", id,
-                 f->style->name);
-    if (*index > f->style->size_vector)
-        gr_error(g, "thermo_style: %s is out of range: fix %s has %d values", ref, id,
-                 f->style->size_vector);
-    return f;
-}
-
 int thermo_shows_fix_vector(const struct gravel *g, const char *id)
 {
     size_t n = strlen(id);
@@ -105,16 +55,15 @@ int thermo_shows_fix_vector(const struct gravel *g, const char *id)
 
 static int norm_flag(struct gravel *g);
 
-/* Fix scalars and vectors are extensive (sums over atoms, like a mesh's force): divided
- * by the atom count under thermo_modify norm yes, as LAMMPS does. */
+/* f_ID, f_ID[I], f_ID[I][J]: extensive fix outputs are divided by the atom
+ * count under thermo_modify norm yes, as LAMMPS does. */
 static double fix_ref_value(struct gravel *g, const char *ref)
 {
-    int index;
-    struct fix *f = fix_ref_check(g, ref, &index);
-    if (index == 0)
-        run_sync_host(g);
-    double v = index ? f->style->vector(g, f, index) : f->style->scalar(g, f);
-    return norm_flag(g) && g->atoms.n > 0 ? v / g->atoms.n : v;
+    char id[GR_NAMELEN];
+    int index, col;
+    struct fix *f = fix_ref_check(g, ref, "thermo_style");
+    fix_parse_ref(ref, id, &index, &col);
+    return fix_output(g, f, index, col, norm_flag(g), "thermo_style");
 }
 
 static const struct {
@@ -368,9 +317,10 @@ static void check_keyword(struct gravel *g, const char *s)
     }
     if (strncmp(s, "f_", 2) == 0) {
         char id[GR_NAMELEN];
-        int index;
-        if (!fix_parse_ref(s, id, &index))
-            gr_error(g, "invalid fix reference '%s' (use f_ID or f_ID[N], N >= 1)", s);
+        int index, col;
+        if (!fix_parse_ref(s, id, &index, &col))
+            gr_error(g, "invalid fix reference '%s' (use f_ID, f_ID[I] or f_ID[I][J], I, J >= 1)",
+                     s);
         if (!fix_find(g, id))
             gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
@@ -608,8 +558,12 @@ void thermo_init(struct gravel *g)
                 gr_error(g, "thermo_style: variable '%s' is not defined", s + 2);
             st->kind[i] = KIND_VARIABLE;
         } else if (strncmp(s, "f_", 2) == 0) {
-            int index;
-            fix_ref_check(g, s, &index);
+            struct fix *f = fix_ref_check(g, s, "thermo_style");
+            /* LAMMPS Thermo::init: a fix output current only every global_freq steps */
+            if (t->every % f->global_freq)
+                gr_error(g, "thermo_style: thermo every %d and fix %s (%s, output every %d "
+                            "steps) are not computed at compatible times", t->every, f->id,
+                         f->style->name, f->global_freq);
             st->kind[i] = KIND_FIX;
         } else {
             gr_error(g, "thermo_style: unknown keyword '%s'", s);
@@ -841,25 +795,19 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!compute_parse_ref2(name, id, &index, &col) || !compute_find(g, id))
             return 0;
         run_sync_host(g);
-        *out = compute_ref_value(g, name, norm_flag(g), "reference");
+        /* LAMMPS: variables read a compute's value as it is, never normalized */
+        *out = compute_ref_value(g, name, 0, "reference");
         return 1;
     }
     if (strncmp(name, "f_", 2) == 0) {
         char id[GR_NAMELEN];
-        int index;
-        struct fix *f;
-        if (!fix_parse_ref(name, id, &index) || !(f = fix_find(g, id)))
+        int index, col;
+        if (!fix_parse_ref(name, id, &index, &col) || !fix_find(g, id))
             return 0;
-        if (index == 0) {
-            if (!f->style->scalar)
-                return 0;
+        struct fix *f = fix_ref_check(g, name, "reference");
+        if (index == 0)
             run_sync_host(g);
-            *out = f->style->scalar(g, f);
-            return 1;
-        }
-        if (!f->style->vector || index > f->style->size_vector)
-            return 0;
-        *out = f->style->vector(g, f, index);
+        *out = fix_output(g, f, index, col, 0, "reference");
         return 1;
     }
     if (strncmp(name, "v_", 2) == 0 && var_retrieve(g, name + 2)) {

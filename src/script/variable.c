@@ -383,6 +383,12 @@ int var_is_atom(struct gravel *g, const char *name)
     return v && v->style == V_ATOM;
 }
 
+int var_is_equal(struct gravel *g, const char *name)
+{
+    struct var *v = find(g, name);
+    return v && v->style == V_EQUAL;
+}
+
 void var_compute_atom_depth(struct gravel *g, const char *name, double *out, int depth)
 {
     struct var *v = find(g, name);

@@ -34,6 +34,8 @@ double var_compute_equal(struct gravel *g, const char *name);
  * arrays synced first during a run) into out; var_check_atom raises
  * "who: ..." unless NAME is an atom-style variable. */
 int var_is_atom(struct gravel *g, const char *name);
+/* 1 if NAME is an equal-style variable (LAMMPS's equalstyle()). */
+int var_is_equal(struct gravel *g, const char *name);
 void var_compute_atom(struct gravel *g, const char *name, double *out);
 void var_check_atom(struct gravel *g, const char *name, const char *who);
 /* The same values in a new array (caller frees; freed on error). */

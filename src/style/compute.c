@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "error.h"
+#include "ref.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -168,6 +169,14 @@ const double *compute_vector(struct gravel *g, struct compute *c)
     return c->vector;
 }
 
+const double *compute_array(struct gravel *g, struct compute *c)
+{
+    if (!c->array_flag)
+        gr_error(g, "compute %s (%s) does not produce a global array", c->id, c->style->name);
+    c->style->array(g, c);
+    return c->array;
+}
+
 const double *compute_peratom(struct gravel *g, struct compute *c)
 {
     if (!c->peratom_flag)
@@ -255,32 +264,7 @@ const double *compute_peratom_ref(struct gravel *g, struct compute *c, int index
 
 int compute_parse_ref2(const char *ref, char *id, int *index, int *col)
 {
-    if (strncmp(ref, "c_", 2) != 0)
-        return 0;
-    const char *s = ref + 2;
-    const char *br = strchr(s, '[');
-    size_t n = br ? (size_t)(br - s) : strlen(s);
-    if (n == 0 || n >= GR_NAMELEN)
-        return 0;
-    memcpy(id, s, n);
-    id[n] = '\0';
-    *index = *col = 0;
-    for (int k = 0; br && k < 2; k++) {
-        char *end;
-        long v = strtol(br + 1, &end, 10);
-        if (end == br + 1 || *end != ']' || v < 1 || v > 1000000)
-            return 0;
-        if (k == 0)
-            *index = (int)v;
-        else
-            *col = (int)v;
-        br = end[1] == '[' ? end + 1 : NULL;
-        if (!br && end[1] != '\0')
-            return 0;
-        if (br && k == 1)
-            return 0;
-    }
-    return 1;
+    return ref_parse(ref, 'c', id, index, col);
 }
 
 int compute_parse_ref(const char *ref, char *id, int *index)
@@ -342,7 +326,7 @@ double compute_ref_value(struct gravel *g, const char *ref, int norm, const char
     double v;
     int ext;
     if (col > 0) {
-        c->style->array(g, c);
+        compute_array(g, c);
         if (index > c->size_array_rows)
             gr_error(g, "%s: %s is out of range: compute %s has %d rows now", who, ref, id,
                      c->size_array_rows);

@@ -80,6 +80,9 @@ struct compute *compute_get(struct gravel *g, const char *id, const char *who);
 /* Evaluate. Each raises an error when the compute has no such output. */
 double compute_scalar(struct gravel *g, struct compute *c);
 const double *compute_vector(struct gravel *g, struct compute *c);
+/* Evaluate the global array: c->size_array_rows rows of size_array_cols,
+ * row-major, valid until the next evaluation. */
+const double *compute_array(struct gravel *g, struct compute *c);
 /* Per-atom values, length g->atoms.n (times size_peratom_cols for arrays,
  * row-major), host order. */
 const double *compute_peratom(struct gravel *g, struct compute *c);

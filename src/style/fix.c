@@ -10,6 +10,7 @@
 
 #include "args.h"
 #include "error.h"
+#include "ref.h"
 
 #define PAIR(k, i)
 #define COMPUTE(k, i)
@@ -34,6 +35,69 @@ struct fix *fix_find(struct gravel *g, const char *id)
         if (!strcmp(g->styles.fix[i]->id, id))
             return g->styles.fix[i];
     return NULL;
+}
+
+int fix_parse_ref(const char *ref, char *id, int *index, int *col)
+{
+    return ref_parse(ref, 'f', id, index, col);
+}
+
+struct fix *fix_ref_check(struct gravel *g, const char *ref, const char *who)
+{
+    char id[GR_NAMELEN];
+    int index, col;
+    if (!fix_parse_ref(ref, id, &index, &col))
+        gr_error(g, "%s: invalid fix reference '%.64s' (use f_ID, f_ID[I] or f_ID[I][J], I, "
+                    "J >= 1)", who, ref);
+    struct fix *f = fix_find(g, id);
+    if (!f)
+        gr_error(g, "%s: no fix with ID '%.64s' for %.64s", who, id, ref);
+    if (col > 0) {
+        if (!f->array_flag)
+            gr_error(g, "%s: fix %s (%s) does not produce a global array", who, id,
+                     f->style->name);
+        if (col > f->size_array_cols)
+            gr_error(g, "%s: %.64s is out of range: fix %s has %d columns", who, ref, id,
+                     f->size_array_cols);
+    } else if (index == 0) {
+        if (!f->scalar_flag)
+            gr_error(g, "%s: fix %s (%s) does not compute a global scalar", who, id,
+                     f->style->name);
+    } else {
+        if (!f->vector_flag)
+            gr_error(g, "%s: fix %s (%s) does not produce a global vector%s", who, id,
+                     f->style->name, f->array_flag ? " (it has an array: f_ID[I][J])" : "");
+        if (index > f->size_vector && !f->rows_variable)
+            gr_error(g, "%s: %.64s is out of range: fix %s has %d values", who, ref, id,
+                     f->size_vector);
+    }
+    return f;
+}
+
+int fix_output_extensive(const struct fix *f, int index, int col)
+{
+    if (col > 0)
+        return f->extarray;
+    if (index == 0)
+        return f->extscalar;
+    return f->extvector >= 0 ? f->extvector : f->extlist[index - 1];
+}
+
+double fix_output(struct gravel *g, struct fix *f, int index, int col, int norm,
+                  const char *who)
+{
+    double v;
+    if (col > 0) {
+        if (index > f->size_array_rows && !f->rows_variable)
+            gr_error(g, "%s: f_%s[%d][%d] is out of range: fix %s has %d rows now", who, f->id,
+                     index, col, f->id, f->size_array_rows);
+        v = f->style->array(g, f, index, col);
+    } else {
+        v = index ? f->style->vector(g, f, index) : f->style->scalar(g, f);
+    }
+    if (norm && g->atoms.n > 0 && fix_output_extensive(f, index, col))
+        v /= g->atoms.n;
+    return v;
 }
 
 struct fix *fix_find_acceleration(struct gravel *g)
@@ -143,6 +207,11 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
     f->style = st;
     f->igroup = igroup;
     f->groupbit = 1u << igroup;
+    f->scalar_flag = st->scalar != NULL;
+    f->vector_flag = st->vector != NULL;
+    f->size_vector = st->size_vector;
+    f->extscalar = f->extvector = f->extarray = 1;
+    f->global_freq = 1;
     /* restart.c: a fix re-specified identically after read_restart continues exactly */
     f->arghash = 1469598103934665603ull;
     for (int a = 1; a < argc; a++)

@@ -143,9 +143,14 @@ struct fix_style {
      * where they stood; step-keyed caches move with it. */
     void (*reset_step)(struct gravel *g, struct fix *f, bigint shift);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
-     * values, vector(g, f, i) returns value i (1-based) at the current step. */
+     * values (the instance's f->size_vector starts from it; create may
+     * change it), vector(g, f, i) returns value i (1-based) at the current
+     * step. */
     int size_vector;
     double (*vector)(struct gravel *g, struct fix *f, int i);
+    /* Global array for `f_ID[i][j]`, optional: element (i, j), 1-based,
+     * within the instance's f->size_array_rows x f->size_array_cols. */
+    double (*array)(struct gravel *g, struct fix *f, int i, int j);
     /* Global scalar for `f_ID` in thermo output, optional, extensive (divided
      * by the atom count under thermo_modify norm yes); host arrays current.
      * energy_global: the scalar is an energy that `fix_modify ID energy yes`
@@ -178,7 +183,41 @@ struct fix {
     int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
     bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
     int energy;                 /* fix_modify energy yes: scalar counted in pe */
+    /* The instance's global output (LAMMPS's Fix flags), which f_ID,
+     * f_ID[i] and f_ID[i][j] read (fix_ref_*). cmd_fix fills them from the
+     * descriptor before create (scalar_flag and vector_flag from the
+     * .scalar and .vector hooks, size_vector from .size_vector, outputs
+     * extensive, global_freq 1); a style whose output depends on its
+     * arguments (fix ave/time) sets them in create. Extensive values are
+     * divided by the atom count under thermo_modify norm yes; extvector -1:
+     * per element, extlist[i - 1]. global_freq: the output is current only
+     * on multiples of it (thermo and readers check). */
+    int scalar_flag, vector_flag, array_flag;
+    int size_vector;
+    int size_array_rows, size_array_cols;
+    int extscalar, extvector, extarray;
+    const int *extlist;         /* [size_vector] when extvector is -1; owned by the style */
+    int global_freq;
+    int rows_variable;          /* the vector's length or the array's rows change at run
+                                 * time: elements beyond them read as 0, not an error
+                                 * (LAMMPS's size_vector_variable, size_array_rows_variable) */
 };
+
+/* Parse "f_ID", "f_ID[I]" or "f_ID[I][J]" (I, J >= 1): copies ID into id
+ * (GR_NAMELEN), sets *index to I (0: the scalar) and *col to J (0: none).
+ * Returns 0 when `ref` does not have that form. */
+int fix_parse_ref(const char *ref, char *id, int *index, int *col);
+/* The fix a reference names, checked: it exists and has the output the
+ * reference asks for (scalar, vector element I in range, array column J in
+ * range). Errors name `who`. */
+struct fix *fix_ref_check(struct gravel *g, const char *ref, const char *who);
+/* Output (index, col) of f (as fix_parse_ref sets them), divided by the
+ * atom count when `norm` and that output is extensive. A row beyond the
+ * array's current rows is an error naming `who`. */
+double fix_output(struct gravel *g, struct fix *f, int index, int col, int norm,
+                  const char *who);
+/* 1 when output (index, col) of f is extensive. */
+int fix_output_extensive(const struct fix *f, int index, int col);
 
 /* The fix with this ID, or NULL. */
 struct fix *fix_find(struct gravel *g, const char *id);

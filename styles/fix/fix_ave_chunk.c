@@ -30,6 +30,7 @@
 #include <unistd.h>
 
 #include "args.h"
+#include "ave_common.h"
 #include "compute_chunk_atom.h"
 #include "engine.h"
 #include "error.h"
@@ -41,28 +42,22 @@
 
 enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };
 enum { NORM_ALL, NORM_SAMPLE, NORM_NONE };
-enum { AVE_ONE, AVE_RUNNING, AVE_WINDOW };
 
 #define AVE_MAXVAL 64
 
 struct ave_chunk {
-    int nevery, nrepeat, nfreq;
+    struct ave_sched s;
     char chunk[GR_NAMELEN];
     int nvalues;
     int which[AVE_MAXVAL], argindex[AVE_MAXVAL];
     char ids[AVE_MAXVAL][GR_NAMELEN];
     char names[AVE_MAXVAL][GR_NAMELEN];
-    int normflag, ave, nwindow, noscale;
-    FILE *fp;
-    int fp_err;
-    int fd;       /* the descriptor under fp (overwrite truncates it) */
-    long filepos;
-    int overwrite;
+    int normflag, noscale;
+    struct ave_window w;
+    struct ave_file af;
     char *format;
     char *vtk;                          /* vtk file pattern or NULL */
     /* state */
-    bigint nvalid, nvalid_last;
-    int irepeat, iwindow, window_limit, normcount;
     int nchunk, maxchunk;
     double *count_one, *count_many, *count_sum, *count_total, *count_list;
     double *values_one, *values_many, *values_sum, *values_total, *values_list;
@@ -73,8 +68,7 @@ static void ave_destroy(struct fix *f)
 {
     struct ave_chunk *a = f->data;
     if (a) {
-        if (a->fp)
-            fclose(a->fp);
+        ave_file_close(&a->af);
         free(a->format);
         free(a->vtk);
         free(a->count_one);
@@ -92,33 +86,13 @@ static void ave_destroy(struct fix *f)
     f->data = NULL;
 }
 
-/* LAMMPS nextvalid(): the first sampling step of the next Nfreq epoch. */
-static bigint next_valid(const struct gravel *g, const struct ave_chunk *a)
-{
-    bigint nv = (g->step / a->nfreq) * a->nfreq + a->nfreq;
-    if (nv - a->nfreq == g->step && a->nrepeat == 1)
-        nv = g->step;
-    else
-        nv -= (bigint)(a->nrepeat - 1) * a->nevery;
-    if (nv < g->step)
-        nv += a->nfreq;
-    return nv;
-}
-
 static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 5)
         gr_error(g, "fix ave/chunk expects Nevery Nrepeat Nfreq chunkID and at least one value");
     struct ave_chunk *a = gr_calloc(g, 1, sizeof *a);
     f->data = a;
-    a->nevery = arg_int(g, argv[0], "Nevery");
-    a->nrepeat = arg_int(g, argv[1], "Nrepeat");
-    a->nfreq = arg_int(g, argv[2], "Nfreq");
-    if (a->nevery <= 0 || a->nrepeat <= 0 || a->nfreq <= 0)
-        gr_error(g, "fix ave/chunk: Nevery, Nrepeat and Nfreq must be positive");
-    if (a->nfreq % a->nevery || (bigint)(a->nrepeat - 1) * a->nevery >= a->nfreq)
-        gr_error(g, "fix ave/chunk: Nfreq must be a multiple of Nevery and (Nrepeat-1)*Nevery "
-                    "< Nfreq (got %d %d %d)", a->nevery, a->nrepeat, a->nfreq);
+    ave_sched_parse(g, &a->s, argv, "fix ave/chunk");
     snprintf(a->chunk, sizeof a->chunk, "%s", argv[3]);
     struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
     int iarg = 4;
@@ -163,7 +137,7 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (a->nvalues == 0)
         gr_error(g, "fix ave/chunk: no values given (vx, density/mass, c_ID, solidicity, ...)");
     a->normflag = NORM_ALL;
-    a->ave = AVE_ONE;
+    a->w.kind = AVE_ONE;
     const char *file = NULL, *title[3] = {NULL, NULL, NULL};
     int append = 0;
     for (int i = iarg; i < argc; i++) {
@@ -180,19 +154,7 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
             else
                 gr_error(g, "fix ave/chunk: norm must be all, sample or none, got '%.32s'", v);
         } else if (!strcmp(kw, "ave")) {
-            arg_need(g, argc, i, 1, kw);
-            const char *v = argv[++i];
-            if (!strcmp(v, "one"))
-                a->ave = AVE_ONE;
-            else if (!strcmp(v, "running"))
-                a->ave = AVE_RUNNING;
-            else if (!strcmp(v, "window")) {
-                a->ave = AVE_WINDOW;
-                arg_need(g, argc, i, 1, "ave window");
-                a->nwindow = arg_int_range(g, argv[++i], 1, 1 << 20, "window length M");
-            } else
-                gr_error(g, "fix ave/chunk: ave must be one, running or window M, got '%.32s'",
-                         v);
+            ave_window_parse(g, &a->w, argc, argv, &i, "fix ave/chunk");
         } else if (!strcmp(kw, "scale")) {
             arg_need(g, argc, i, 1, kw);
             const char *v = argv[++i];
@@ -212,7 +174,7 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
             file = argv[++i];
             append = !strcmp(kw, "append");
         } else if (!strcmp(kw, "overwrite")) {
-            a->overwrite = 1;
+            a->af.overwrite = 1;
         } else if (!strcmp(kw, "format")) {
             arg_need(g, argc, i, 1, kw);
             free(a->format);
@@ -233,34 +195,31 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
             gr_error(g, "fix ave/chunk: unknown value or keyword '%.64s'", kw);
         }
     }
-    if (a->ave != AVE_RUNNING && a->overwrite)
+    if (a->w.kind != AVE_RUNNING && a->af.overwrite)
         gr_error(g, "fix ave/chunk: overwrite needs ave running");
     if (file) {
-        a->fd = of_open_fd(file, append);
-        a->fp = a->fd < 0 ? NULL : of_stream(a->fd, &a->fp_err);
-        if (!a->fp)
-            gr_error(g, "fix ave/chunk: cannot open file %.200s: %s", file, strerror(errno));
+        ave_file_open(g, &a->af, file, append, "fix ave/chunk");
+        FILE *fp = a->af.fp;
         if (title[0])
-            fprintf(a->fp, "%s\n", title[0]);
+            fprintf(fp, "%s\n", title[0]);
         else
-            fprintf(a->fp, "# Chunk-averaged data for fix %s and group %s\n", f->id,
+            fprintf(fp, "# Chunk-averaged data for fix %s and group %s\n", f->id,
                     g->groups.name[f->igroup]);
-        fprintf(a->fp, "%s\n", title[1] ? title[1] : "# Timestep Number-of-chunks Total-count");
+        fprintf(fp, "%s\n", title[1] ? title[1] : "# Timestep Number-of-chunks Total-count");
         if (title[2])
-            fprintf(a->fp, "%s\n", title[2]);
+            fprintf(fp, "%s\n", title[2]);
         else {
             static const char *head[] = {"# Chunk Ncount", "# Chunk Coord1 Ncount",
                                          "# Chunk Coord1 Coord2 Ncount",
                                          "# Chunk Coord1 Coord2 Coord3 Ncount"};
-            fputs(head[chunk_atom_ncoord(cc)], a->fp);
+            fputs(head[chunk_atom_ncoord(cc)], fp);
             for (int k = 0; k < a->nvalues; k++)
-                fprintf(a->fp, " %s", a->names[k]);
-            fputc('\n', a->fp);
+                fprintf(fp, " %s", a->names[k]);
+            fputc('\n', fp);
         }
-        a->filepos = ftell(a->fp);
+        ave_file_header_done(g, &a->af, "fix ave/chunk");
     }
-    a->nvalid_last = -1;
-    a->nvalid = next_valid(g, a);
+    ave_sched_reset(g, &a->s);
     f->hooks = HOOK_END_OF_STEP;
 }
 
@@ -282,11 +241,11 @@ static void grow(struct gravel *g, struct ave_chunk *a, int nchunk)
         for (size_t j = 0; j < nv; j++)
             a->values_total[m * nv + j] = 0;
     }
-    if (a->ave == AVE_WINDOW) {
+    if (a->w.kind == AVE_WINDOW) {
         free(a->count_list);
         free(a->values_list);
-        a->count_list = gr_calloc(g, (size_t)a->nwindow * n, sizeof(double));
-        a->values_list = gr_calloc(g, (size_t)a->nwindow * n * nv, sizeof(double));
+        a->count_list = gr_calloc(g, (size_t)a->w.nwindow * n, sizeof(double));
+        a->values_list = gr_calloc(g, (size_t)a->w.nwindow * n * nv, sizeof(double));
     }
     a->maxchunk = nchunk;
 }
@@ -296,16 +255,12 @@ static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a);
 static void sample(struct gravel *g, struct fix *f)
 {
     struct ave_chunk *a = f->data;
-    if (g->step < a->nvalid_last || g->step > a->nvalid)
-        gr_error(g, "fix ave/chunk %s: invalid timestep reset (step %lld, next sample %lld)",
-                 f->id, (long long)g->step, (long long)a->nvalid);
-    if (g->step != a->nvalid)
+    if (!ave_sched_due(g, &a->s, "fix ave/chunk", f->id))
         return;
-    a->nvalid_last = a->nvalid;
     run_sync_host(g);
     struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
     const int nv = a->nvalues;
-    if (a->irepeat == 0) {
+    if (a->s.irepeat == 0) {
         a->grid = chunk_atom_setup(g, cc);
         grow(g, a, a->grid->nchunk);
         for (int m = 0; m < a->nchunk; m++) {
@@ -377,15 +332,10 @@ static void sample(struct gravel *g, struct fix *f)
             a->count_sum[m] += cnt;
         }
     }
-    a->irepeat++;
-    if (a->irepeat < a->nrepeat) {
-        a->nvalid += a->nevery;
+    if (!ave_sched_next(g, &a->s))
         return;
-    }
-    a->irepeat = 0;
-    a->nvalid = g->step + a->nfreq - (bigint)(a->nrepeat - 1) * a->nevery;
     /* the epoch's average */
-    double repeat = a->nrepeat;
+    double repeat = a->s.nrepeat;
     for (int m = 0; m < a->nchunk; m++) {
         double *sum = a->values_sum + (size_t)m * nv, *many = a->values_many + (size_t)m * nv;
         if (a->normflag == NORM_ALL) {
@@ -416,64 +366,30 @@ static void sample(struct gravel *g, struct fix *f)
             for (int m = 0; m < a->nchunk; m++)
                 a->values_sum[(size_t)m * nv + j] /= vol;
     }
-    if (a->ave == AVE_ONE) {
-        memcpy(a->values_total, a->values_sum, (size_t)a->nchunk * nv * sizeof(double));
-        memcpy(a->count_total, a->count_sum, (size_t)a->nchunk * sizeof(double));
-        a->normcount = 1;
-    } else if (a->ave == AVE_RUNNING) {
-        for (size_t k = 0; k < (size_t)a->nchunk * nv; k++)
-            a->values_total[k] += a->values_sum[k];
-        for (int m = 0; m < a->nchunk; m++)
-            a->count_total[m] += a->count_sum[m];
-        a->normcount++;
-    } else {
-        size_t off = (size_t)a->iwindow * a->nchunk;
-        for (size_t k = 0; k < (size_t)a->nchunk * nv; k++) {
-            a->values_total[k] += a->values_sum[k];
-            if (a->window_limit)
-                a->values_total[k] -= a->values_list[off * nv + k];
-            a->values_list[off * nv + k] = a->values_sum[k];
-        }
-        for (int m = 0; m < a->nchunk; m++) {
-            a->count_total[m] += a->count_sum[m];
-            if (a->window_limit)
-                a->count_total[m] -= a->count_list[off + m];
-            a->count_list[off + m] = a->count_sum[m];
-        }
-        if (++a->iwindow == a->nwindow) {
-            a->iwindow = 0;
-            a->window_limit = 1;
-        }
-        a->normcount = a->window_limit ? a->nwindow : a->iwindow;
-    }
-    if (a->fp) {
-        if (a->overwrite)
-            fseek(a->fp, a->filepos, SEEK_SET);
+    ave_window_add(&a->w, a->values_total, a->values_list, a->values_sum,
+                   (size_t)a->nchunk * nv);
+    ave_window_add(&a->w, a->count_total, a->count_list, a->count_sum, (size_t)a->nchunk);
+    ave_window_advance(&a->w);
+    FILE *fp = a->af.fp;
+    if (fp) {
+        ave_file_begin(&a->af);
         double count = 0;
         for (int m = 0; m < a->nchunk; m++)
             count += a->count_total[m];
-        fprintf(a->fp, "%lld %d %g\n", (long long)g->step, a->nchunk, count);
+        fprintf(fp, "%lld %d %g\n", (long long)g->step, a->nchunk, count);
         const char *fmt = a->format ? a->format : " %g";
         const struct chunk_grid *gr = a->grid;
-        double nc = a->normcount;
+        double nc = a->w.norm;
         for (int m = 0; m < a->nchunk; m++) {
-            fprintf(a->fp, "  %d", m + 1);
+            fprintf(fp, "  %d", m + 1);
             for (int k = 0; k < gr->ndim; k++)
-                fprintf(a->fp, " %g", gr->coord[(size_t)m * gr->ndim + k]);
-            fprintf(a->fp, " %g", a->count_total[m] / nc);
+                fprintf(fp, " %g", gr->coord[(size_t)m * gr->ndim + k]);
+            fprintf(fp, " %g", a->count_total[m] / nc);
             for (int j = 0; j < nv; j++)
-                fprintf(a->fp, fmt, a->values_total[(size_t)m * nv + j] / nc);
-            fputc('\n', a->fp);
+                fprintf(fp, fmt, a->values_total[(size_t)m * nv + j] / nc);
+            fputc('\n', fp);
         }
-        fflush(a->fp);
-        if (a->overwrite) {
-            long end = ftell(a->fp);
-            if (end >= 0 && ftruncate(a->fd, end) != 0)
-                gr_warn(g, "fix ave/chunk %s: could not truncate its file", f->id);
-        }
-        if (ferror(a->fp))
-            gr_error(g, "fix ave/chunk %s: writing its file failed: %s", f->id,
-                     strerror(a->fp_err ? a->fp_err : EIO));
+        ave_file_end(g, &a->af, "fix ave/chunk", f->id);
     }
     if (a->vtk)
         write_vtk(g, f, a);
@@ -518,7 +434,7 @@ static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a)
             h[1], h[2]);
     int nv = a->nvalues;
     fprintf(fp, "CELL_DATA %zu\nFIELD FieldData %d\n", ncell, nv + 1);
-    double nc = a->normcount;
+    double nc = a->w.norm;
     for (int j = -1; j < nv; j++) {
         char name[GR_NAMELEN];
         snprintf(name, sizeof name, "%s", j < 0 ? "Ncount" : a->names[j]);
@@ -550,10 +466,8 @@ static void ave_init(struct gravel *g, struct fix *f)
     for (int j = 0; j < a->nvalues; j++)
         if (a->which[j] == V_COMPUTE)
             compute_peratom_check(g, a->ids[j], a->argindex[j], "fix ave/chunk");
-    if (a->nvalid < g->step) {
-        a->irepeat = 0;
-        a->nvalid = next_valid(g, a);
-    }
+    if (a->s.nvalid < g->step)
+        ave_sched_reset(g, &a->s);
 }
 
 

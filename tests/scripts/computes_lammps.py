@@ -216,10 +216,13 @@ def run(cmd, deck, tmp):
                           capture_output=True, text=True, timeout=300)
 
 
-def compare(lt, gt):
+def thermo_worst(lt, gt, nrows=16):
+    """The thermo tables of lt/log.txt (LAMMPS) and gt/log.txt (gravel): (same header and
+    nrows rows each, worst difference over the columns after Step relative to the column's
+    largest magnitude, where, LAMMPS header, LAMMPS rows)."""
     hl, rl = thermo(os.path.join(lt, "log.txt"))
     hg, rg = thermo(os.path.join(gt, "log.txt"))
-    ok = hl == hg and len(rl) == len(rg) == 16
+    ok = hl == hg and len(rl) == len(rg) == nrows
     worst, where = 0.0, ""
     for k in range(1, len(hl) if ok else 0):
         scale = max(abs(r[k]) for r in rl) or 1.0
@@ -227,6 +230,11 @@ def compare(lt, gt):
             e = abs(a[k] - b[k]) / scale
             if e > worst:
                 worst, where = e, f"{hl[k]} step {int(a[0])}"
+    return ok, worst, where, hl or [], rl
+
+
+def compare(lt, gt):
+    ok, worst, where, hl, rl = thermo_worst(lt, gt)
     report(ok and worst <= 1e-9, "computes_thermo",
            f"{len(rl)} rows x {len(hl) - 1} columns, worst {worst:.3g} ({where})")
 

@@ -1,7 +1,7 @@
 #!/bin/sh
 # output_writethrough.sh - issue 24: every output kind (each dump style,
 # write_dump, write_restart, write_data, write_coeff, log, -log, -screen,
-# print, fix ave/chunk, compute agglomerate) written to
+# print, fix ave/chunk, ave/time, ave/histo, compute agglomerate) written to
 #  - a private character device made with mknod (the numbers of /dev/null):
 #    the run succeeds and the node is still that character device;
 #  - a private node with the numbers of /dev/full: a clean ERROR naming the
@@ -64,6 +64,8 @@ log|log @\nprint logged|logged
 print_file|print "printed" file @|printed
 print_append|print "printed" append @|printed
 ave_chunk|compute cc all chunk/atom bin/1d z lower 1\nfix a all ave/chunk 1 1 1 cc density/number file @\nrun 1|# Chunk-averaged data
+ave_time|fix a all ave/time 1 1 1 c_thermo_temp file @\nrun 1|# Time-averaged data for fix a
+ave_histo|fix a all ave/histo 1 1 1 -1 1 4 vx mode vector file @\nrun 1|# Histogrammed data for fix a
 agglomerate|compute ag all agglomerate file @\nthermo_style custom step c_ag[1]\nrun 0|# Agglomerate size histogram'
 # styles that reopen their file at every snapshot: a FIFO reader sees one
 # snapshot per open, so the FIFO check uses the single-snapshot commands

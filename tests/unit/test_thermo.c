@@ -242,8 +242,8 @@ TEST(keyword_values)
     CHECK_NEAR(v, 0.32, 1e-15);
     CHECK(test_script(g, "compute k all ke\ncompute c all count/type atom\n") == GR_OK);
     CHECK(thermo_keyword_value(g, "c_k", &v));
-    CHECK_NEAR(v, 0.32, 1e-15); /* extensive: normalized with norm yes */
-    CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 1.0);
+    CHECK_NEAR(v, 0.96, 1e-15); /* as it is: LAMMPS's variables never normalize c_ID */
+    CHECK(thermo_keyword_value(g, "c_c[1]", &v) && v == 3.0);
     CHECK(!thermo_keyword_value(g, "c_nope", &v));
     /* LAMMPS' implicit computes */
     CHECK(thermo_keyword_value(g, "c_thermo_temp", &v));
@@ -555,12 +555,13 @@ TEST(with_variables)
     CHECK(strstr(g->err.msg, "variable 'every' returned 2, which is not a step after 10") !=
           NULL);
     free(fx_capture_end(g, &cap));
-    /* expressions see thermo keywords and computes, normalized like thermo */
+    /* expressions see thermo keywords normalized like thermo, and computes as they are
+     * (LAMMPS's Variable: c_ID is never normalized; lmp 2021 checked, fix_ave_time.py) */
     CHECK(test_script(g, "variable e equal ke*atoms+vol+c_k\n") == GR_OK);
-    CHECK_NEAR(var_compute_equal(g, "e"), 0.96 + 1000 + 0.32, 1e-12);
+    CHECK_NEAR(var_compute_equal(g, "e"), 0.96 + 1000 + 0.96, 1e-12);
     CHECK(test_script(g, "compute r all reduce sum vx vy\nvariable r equal c_r[1]\n") ==
           GR_OK);
-    CHECK_NEAR(var_compute_equal(g, "r"), 0.8, 1e-15); /* 2.4 / 3 atoms */
+    CHECK_NEAR(var_compute_equal(g, "r"), 2.4, 1e-15); /* the sum over 3 atoms */
     fx_destroy(g);
 }
 
