@@ -68,7 +68,7 @@ CONTACT_BODY(gran_model_body, gran_model_eval, 0, TCOL_OF(gran_model_eval))
 #define WG_ROW_WG_GRANULAR 1
 #define WG_ROW_WG_LIGGGHTS 0
 
-/* every kernel of the table (kernels/fix_wall_gran.h), without approach:
+/* every kernel of the table (kernels/wall_gran_kernels.h), without approach:
  * plane and cylinder walls (fix wall/gran), meshes (fix wall/gran ...
  * mesh; no jkr row), region surfaces (fix wall/gran/region) */
 #define WG_INSTANCE(name, source, model, jkr)                                                  \

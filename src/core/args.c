@@ -81,23 +81,28 @@ int arg_yesno(struct gravel *g, const char *s, const char *what)
     gr_error(g, "expected yes or no for %s, got '%.64s'", what, s);
 }
 
-void arg_type_range(struct gravel *g, const char *s, int ntypes, int *lo, int *hi)
+void arg_range(struct gravel *g, const char *s, int n, int *lo, int *hi, const char *what)
 {
     const char *star = strchr(s, '*');
     if (!star) {
-        *lo = *hi = arg_int(g, s, "atom type");
+        *lo = *hi = arg_int(g, s, what);
     } else {
         char buf[64];
-        size_t n = (size_t)(star - s);
-        if (n >= sizeof buf || strlen(star + 1) >= sizeof buf)
-            gr_error(g, "invalid type range '%.64s'", s);
-        memcpy(buf, s, n);
-        buf[n] = '\0';
-        *lo = n ? arg_int(g, buf, "atom type") : 1;
-        *hi = star[1] ? arg_int(g, star + 1, "atom type") : ntypes;
+        size_t k = (size_t)(star - s);
+        if (k >= sizeof buf || strlen(star + 1) >= sizeof buf)
+            gr_error(g, "invalid %s range '%.64s'", what, s);
+        memcpy(buf, s, k);
+        buf[k] = '\0';
+        *lo = k ? arg_int(g, buf, what) : 1;
+        *hi = star[1] ? arg_int(g, star + 1, what) : n;
     }
-    if (*lo < 1 || *hi > ntypes || *lo > *hi)
-        gr_error(g, "type range '%.64s' is outside 1..%d", s, ntypes);
+    if (*lo < 1 || *hi > n || *lo > *hi)
+        gr_error(g, "%s range '%.64s' is outside 1..%d", what, s, n);
+}
+
+void arg_type_range(struct gravel *g, const char *s, int ntypes, int *lo, int *hi)
+{
+    arg_range(g, s, ntypes, lo, hi, "atom type");
 }
 
 int arg_group(struct gravel *g, const char *name)

@@ -186,6 +186,9 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
     for (int i = 0; fix_styles[i]; i++)
         if (!strcmp(fix_styles[i]->name, argv[2]))
             st = fix_styles[i];
+    if (!st && !strcmp(argv[2], "surface/local"))
+        gr_error(g, "fix surface/local (LAMMPS 2026 local granular surfaces) is not supported "
+                    "by gravel; global surfaces: fix surface/global");
     if (!st) {
         char known[512] = "";
         for (int i = 0; fix_styles[i]; i++) {
@@ -321,7 +324,8 @@ double fix_energy_sum(struct gravel *g)
  * fix with a global energy (fix gravity) adds its scalar to the thermo pe
  * and etotal, as LAMMPS; on other fixes, like virial yes and respa levels,
  * it is accepted with a warning and changes nothing (no fix contributes a
- * virial in gravel). */
+ * virial in gravel). A style's own keywords (fix surface/global's move)
+ * go to its modify_param first. */
 void cmd_fix_modify(struct gravel *g, int argc, char **argv)
 {
     struct fix *f = fix_find(g, argv[0]);
@@ -329,6 +333,11 @@ void cmd_fix_modify(struct gravel *g, int argc, char **argv)
         gr_error(g, "unknown fix ID '%.64s'", argv[0]);
     for (int i = 1; i < argc; i++) {
         const char *k = argv[i];
+        int used = f->style->modify_param ? f->style->modify_param(g, f, argc - i, argv + i) : 0;
+        if (used) {
+            i += used - 1;
+            continue;
+        }
         arg_need(g, argc, i, 1, k);
         const char *v = argv[++i];
         if (!strcmp(k, "energy") && f->style->energy_global && f->style->scalar) {

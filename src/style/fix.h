@@ -142,6 +142,10 @@ struct fix_style {
      * moves that origin by shift, so its clock, and the motion, continue
      * where they stood; step-keyed caches move with it. */
     void (*reset_step)(struct gravel *g, struct fix *f, bigint shift);
+    /* Optional: LAMMPS's Fix::modify_param, the style's own fix_modify
+     * keywords: argv[0] is the keyword; returns the words it used (0: not
+     * its keyword). */
+    int (*modify_param)(struct gravel *g, struct fix *f, int argc, char **argv);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values (the instance's f->size_vector starts from it; create may
      * change it), vector(g, f, i) returns value i (1-based) at the current

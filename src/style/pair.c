@@ -116,6 +116,9 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
         pair_free(g);
         return;
     }
+    if (!st && !strcmp(argv[0], "surf/granular"))
+        gr_error(g, "pair_style surf/granular (LAMMPS 2026 local granular surfaces) is not "
+                    "supported by gravel; global surfaces: fix surface/global");
     if (!st) {
         char known[512] = "";
         for (int i = 0; pair_styles[i]; i++) {

@@ -34,7 +34,7 @@
 #include "pair.h"
 #include "rigid_math.h"
 
-static void compute_normals(struct gravel *g, struct mesh_surface *ms)
+void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms)
 {
     free(ms->normal);
     ms->normal = gr_malloc(g, (size_t)ms->m.ntri * 3 * sizeof(double));
@@ -137,19 +137,25 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix mesh/surface: %s", err);
     ms->type = type;
     ms->cache_step = -1;
-    compute_normals(g, ms);
+    mesh_surface_normals(g, ms);
     f->hooks = 0;
+}
+
+void mesh_surface_free(struct mesh_surface *ms)
+{
+    mesh_free(&ms->m);
+    free(ms->normal);
+    ms->normal = NULL;
+    if (ms->fmesh)
+        clReleaseMemObject(ms->fmesh);
+    ms->fmesh = NULL;
 }
 
 static void destroy(struct fix *f)
 {
     struct mesh_surface *ms = f->data;
-    if (ms) {
-        mesh_free(&ms->m);
-        free(ms->normal);
-        if (ms->fmesh)
-            clReleaseMemObject(ms->fmesh);
-    }
+    if (ms)
+        mesh_surface_free(ms);
     free(ms);
     f->data = NULL;
 }
@@ -231,8 +237,9 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
     char who[GR_NAMELEN + 32];
     snprintf(who, sizeof who, "fix %s (%s mesh)", f->id, f->style->name);
     for (int m = 0; m < mw->n; m++) {
-        struct mesh_surface *ms = mesh_surface_get(g, mw->id[m], who);
-        mesh_surface_claim(g, ms, mw->id[m], f);
+        struct mesh_surface *ms = mw->own[m] ? mw->own[m] : mesh_surface_get(g, mw->id[m], who);
+        if (!mw->own[m])
+            mesh_surface_claim(g, ms, mw->id[m], f);
         wall_mesh_upload(g, &mw->wm[m], &ms->m, ms->normal, reach, lskin, who);
     }
     /* per mesh WALL_MESH_SLOTS slots of a key and the law's history REAL */
@@ -244,9 +251,10 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
 {
     struct dev_atoms *a = eng_atoms(g);
     for (int m = 0; m < mw->n; m++) {
-        struct mesh_surface *ms = mesh_surface_get(g, mw->id[m], f->style->name);
+        struct mesh_surface *ms =
+            mw->own[m] ? mw->own[m] : mesh_surface_get(g, mw->id[m], f->style->name);
         struct mesh_pose p;
-        mesh_surface_pose(g, mw->id[m], &p);
+        mesh_surface_pose_of(g, ms, mw->own[m] ? NULL : mw->id[m], &p);
         double ref[3];
         for (int r = 0; r < 3; r++)
             ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
@@ -263,8 +271,14 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
 
 void mesh_walls_release(struct mesh_walls *mw)
 {
-    for (int m = 0; m < mw->n; m++)
+    for (int m = 0; m < mw->n; m++) {
         wall_mesh_release(&mw->wm[m]);
+        if (mw->own[m]) {
+            mesh_surface_free(mw->own[m]);
+            free(mw->own[m]);
+            mw->own[m] = NULL;
+        }
+    }
 }
 
 /* ---- pose ------------------------------------------------------------------------ */
@@ -288,13 +302,26 @@ static void mat_vec(const double A[9], const double v[3], double out[3])
 
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p)
 {
+    mesh_surface_pose_of(g, NULL, id, p);
+}
+
+void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const char *id,
+                          struct mesh_pose *p)
+{
     double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Rd[9] = {0}, d[3] = {0}, dd[3] = {0};
     int moving = 0;
-    for (int k = 0; k < g->styles.nfix; k++) {
-        struct fix *f = g->styles.fix[k];
-        if (f->style != &fix_style_move_mesh || strcmp(((struct mesh_motion *)f->data)->mesh, id))
-            continue;
-        const struct mesh_motion *mo = f->data;
+    const int nown = ms ? ms->nmotion : 0;
+    for (int k = -nown; k < g->styles.nfix; k++) {
+        const struct mesh_motion *mo;
+        if (k < 0) {
+            mo = &ms->motion[k + nown];
+        } else {
+            struct fix *f = g->styles.fix[k];
+            if (!id || f->style != &fix_style_move_mesh ||
+                strcmp(((struct mesh_motion *)f->data)->mesh, id))
+                continue;
+            mo = f->data;
+        }
         double t = (double)(g->step - mo->time_origin) * g->dt;
         double Rk[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Rdk[9] = {0}, dk[3] = {0}, ddk[3] = {0};
         if (mo->kind == MOVE_LINEAR) {

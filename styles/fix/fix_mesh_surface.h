@@ -10,6 +10,20 @@
 #include "mesh.h"
 #include "wall.h"
 
+/* One rigid motion of fix move/mesh or of fix_modify ID move (fix
+ * surface/global) (kind = MOVE_*). */
+enum { MOVE_LINEAR, MOVE_WIGGLE, MOVE_ROTATE };
+struct mesh_motion {
+    char mesh[GR_NAMELEN];
+    int kind;
+    double v[3];                /* linear velocity / wiggle amplitude */
+    double origin[3], axis[3];  /* rotate (axis unit) */
+    double period;
+    bigint time_origin;         /* step the motion started */
+};
+
+#define MESH_OWN_MOTIONS 2      /* fix surface/global: transrot = linear then rotate */
+
 struct mesh_surface {
     struct mesh m;              /* vertices after scale/move/rotate, in the mesh's own frame */
     double *normal;             /* unit normal per triangle (right hand over vertices 0 1 2) */
@@ -25,6 +39,11 @@ struct mesh_surface {
     const struct fix *owner;    /* the wall fix that fills fmesh (mesh_surface_claim) */
     bigint cache_step;          /* step of cache[] */
     double cache[7];
+    /* fix surface/global: the mesh's molecule ID and its own motions (from
+     * fix_modify ID move), composed before any fix move/mesh */
+    int mol;
+    int nmotion;
+    struct mesh_motion motion[MESH_OWN_MOTIONS];
 };
 
 /* Rigid pose of a mesh: x = R x0 + d for a point x0 of the mesh's own
@@ -32,17 +51,6 @@ struct mesh_surface {
 struct mesh_pose {
     double R[9], d[3], V0[3], omega[3];
     int moving;                 /* some motion acts (else R = I, d = V0 = omega = 0) */
-};
-
-/* One rigid motion of fix move/mesh (kind = MOVE_*), defined for fix_move_mesh.c. */
-enum { MOVE_LINEAR, MOVE_WIGGLE, MOVE_ROTATE };
-struct mesh_motion {
-    char mesh[GR_NAMELEN];
-    int kind;
-    double v[3];                /* linear velocity / wiggle amplitude */
-    double origin[3], axis[3];  /* rotate (axis unit) */
-    double period;
-    bigint time_origin;         /* step the motion started */
 };
 
 extern const struct fix_style fix_style_mesh_surface;
@@ -53,6 +61,14 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
 /* The pose of the mesh of fix `id` at the current step: the move/mesh
  * motions on it composed in the order of their fixes. */
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p);
+/* The pose of mesh ms at the current step: its own motions (ms->motion),
+ * then the move/mesh motions on fix id (id NULL: none). */
+void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const char *id,
+                          struct mesh_pose *p);
+/* Unit normals of ms's triangles (ms->normal, right hand over vertices 0 1 2). */
+void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms);
+/* Free what ms holds (not ms itself). */
+void mesh_surface_free(struct mesh_surface *ms);
 
 /* At a wall fix's init: make f the one wall of the mesh (its force output);
  * an error when another wall fix still holds it. */
@@ -63,11 +79,14 @@ void mesh_surface_filled(struct gravel *g, struct mesh_surface *ms);
 /* Make ms->fmesh hold n atoms (6 REAL each). */
 void mesh_surface_fmesh_reserve(struct gravel *g, struct mesh_surface *ms, int n);
 
-/* The meshes of one wall fix (wall/gran or wall/pair ... mesh). */
+/* The meshes of one wall fix (wall/gran or wall/pair ... mesh): fixes
+ * mesh/surface by ID, or meshes the wall owns (own[m], fix surface/global;
+ * freed by mesh_walls_release). */
 #define MESH_WALLS_MAX 8   /* 8 x 128 bytes of history per atom: the restart limit of 1024 */
 struct mesh_walls {
     int n;
     char id[MESH_WALLS_MAX][GR_NAMELEN];
+    struct mesh_surface *own[MESH_WALLS_MAX];
     struct wall_mesh wm[MESH_WALLS_MAX];
 };
 /* Run start: claim and upload every mesh (bins for the largest radius);

@@ -24,7 +24,7 @@
  * granular's sub-models (granular_parse) with LAMMPS 2021's wall conversions
  * and a history row of its sub-models' width per wall element / region slot
  * (parse_granular); jkr walls hold beyond touch to the pull-off distance
- * (the jkr rows of kernels/fix_wall_gran.h). Meshes take model granular too (not jkr).
+ * (the jkr rows of kernels/wall_gran_kernels.h). Meshes take model granular too (not jkr).
  * A granular `heat area|radius k` sub-model conducts heat between the wall,
  * at `temperature T` (required with it, as LAMMPS 2023), and the atoms
  * (kernels/gran_heat.cl, kernels/wall.cl WALL_HEAT_*). Unsupported
@@ -38,7 +38,11 @@
  * property/global, packed at every run as a table by type pair. A primitive
  * plane at p acts on both sides (LIGGGHTS's primitive walls: the contact
  * normal points from the plane to the particle), the cylinder inside and
- * outside. */
+ * outside.
+ *
+ * fix surface/global (styles/fix/fix_surface_global.c) is this fix on
+ * meshes it owns: its model words come here through wall_gran_create_own
+ * (fix_wall_gran.h), with no wall style. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -49,12 +53,13 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
-#include "fix_wall_gran.h"
+#include "wall_gran_kernels.h"
 #include "pair.h"
 #include "pair_gran.h"
 #include "pair_granular.h"
 #include "region.h"
 #include "fix_mesh_surface.h"
+#include "fix_wall_gran.h"
 #include "wall.h"
 #include "wall_region.h"
 
@@ -94,7 +99,7 @@ struct wall {
     double rs_prev[WALL_REGION_MAXNODE][4];
 };
 
-/* the kernels, by source, model and jkr (kernels/fix_wall_gran.h) */
+/* the kernels, by source, model and jkr (kernels/wall_gran_kernels.h) */
 static const struct {
     const char *name;
     enum wall_gran_source source;
@@ -131,7 +136,7 @@ static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **arg
     struct wall w = *pw;
     w.history = w.model != WG_HOOKE ? 3 : 0;
     w.nparam = GRAN_NPARAM;
-    if (argc < 9)
+    if (argc < (w.mesh.own[0] ? 7 : 9))
         gr_error(g, "fix wall/gran %s expects Kn Kt gamman gammat xmu dampflag and a wall "
                     "style, got %d argument(s)", argv[0], argc - 1);
     const char *who = "fix wall/gran";
@@ -168,9 +173,11 @@ static int parse_classic(struct gravel *g, struct wall *pw, int argc, char **arg
 static int parse_granular(struct gravel *g, struct wall *w, int argc, char **argv)
 {
     static const char *const stop[] = {"xplane", "yplane", "zplane", "zcylinder", "region",
-                                       "mesh", NULL};
+                                       "mesh", "temperature", NULL};
     struct gr_one o;
-    int n = granular_parse(g, &o, argc, argv, stop, 0, "fix wall/gran granular");
+    int n = granular_parse(g, &o, argc, argv, stop, 0,
+                           w->mesh.own[0] ? "fix surface/global model granular"
+                                          : "fix wall/gran granular");
     int kt_null = 0;
     for (int k = 0; k + 2 < n; k++)
         if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))
@@ -207,13 +214,30 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     return n;
 }
 
-static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+/* fix surface/global: the wall is the n meshes in w->mesh.own (LAMMPS
+ * refuses models acting beyond contact there) */
+static void own_meshes(struct gravel *g, struct fix *f, struct wall *w, int n)
+{
+    if (w->model == WG_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR)
+        gr_error(g, "Granular models that extend beyond contact (e.g. JKR) not currently "
+                    "supported (fix surface/global)");
+    w->style = W_MESH;
+    w->mesh.n = n;
+    for (int m = 0; m < n; m++)
+        snprintf(w->mesh.id[m], GR_NAMELEN, "%s", f->id);
+}
+
+/* own: the n meshes of fix surface/global (wall_gran_create_own), else NULL */
+static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
+                        struct mesh_surface **own, int n)
 {
     if (argc < 1)
         gr_error(g, "fix wall/gran expects model Kn Kt gamman gammat xmu dampflag wallstyle "
                     "args");
     struct wall w;
     memset(&w, 0, sizeof w);
+    for (int m = 0; own && m < n; m++)
+        w.mesh.own[m] = own[m];
     if (!strcmp(argv[0], "hooke"))
         w.model = WG_HOOKE;
     else if (!strcmp(argv[0], "hooke/history"))
@@ -286,11 +310,19 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (w.model == WG_GRANULAR) {
         i = 1 + parse_granular(g, &w, argc - 1, argv + 1);
+        if (own) {
+            own_meshes(g, f, &w, n);
+            goto options;
+        }
         if (i >= argc)
             gr_error(g, "fix wall/gran granular: missing the wall style (xplane, yplane, "
                         "zplane, zcylinder or region) after the model");
     } else {
         i = parse_classic(g, &w, argc, argv);
+        if (own) {
+            own_meshes(g, f, &w, n);
+            goto options;
+        }
     }
     ws = argv[i];
     int is_region = !strcmp(f->style->name, "wall/gran/region");
@@ -371,7 +403,9 @@ options:
         } else if (w.style == W_REGION) {
             gr_error(g, "unknown fix wall/gran/region keyword '%.64s'", argv[i]);
         } else if (w.style == W_MESH) {
-            gr_error(g, "unknown fix wall/gran mesh keyword '%.64s'", argv[i]);
+            gr_error(g, own ? "fix surface/global model %s: unexpected word '%.64s'"
+                            : "unknown fix wall/gran mesh keyword '%.64s'",
+                     own ? argv[0] : argv[i], argv[i]);
         } else {
             gr_error(g, "unknown fix wall/gran keyword '%.64s' (expected wiggle or shear)",
                      argv[i]);
@@ -413,8 +447,24 @@ options:
     f->sources[f->nsources++] = "pair_gran.cl";
     f->sources[f->nsources++] = "wall.cl";
     f->sources[f->nsources++] = "wall_region.cl";
-    f->sources[f->nsources++] = "fix_wall_gran.h";
+    f->sources[f->nsources++] = "wall_gran_kernels.h";
     f->sources[f->nsources++] = "fix_wall_gran.cl";
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    create_wall(g, f, argc, argv, NULL, 0);
+}
+
+void wall_gran_create_own(struct gravel *g, struct fix *f, int argc, char **argv,
+                          struct mesh_surface **own, int n)
+{
+    create_wall(g, f, argc, argv, own, n);
+}
+
+struct mesh_walls *wall_gran_meshes(struct fix *f)
+{
+    return &((struct wall *)f->data)->mesh;
 }
 
 /* The wall at the current step: wiggle moves the faces along the axis and

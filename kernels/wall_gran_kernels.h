@@ -1,10 +1,10 @@
-/* fix_wall_gran.h - the kernels of fix wall/gran and wall/gran/region,
+/* wall_gran_kernels.h - the kernels of fix wall/gran and wall/gran/region,
  * declared once: read by the host (styles/fix/fix_wall_gran.c picks its kernel
  * by source, model and jkr from this table) and by the device
  * (kernels/fix_wall_gran.cl instantiates every row). Valid C and OpenCL C;
  * the fix lists it among its kernel sources, before fix_wall_gran.cl. */
-#ifndef GR_FIX_WALL_GRAN_H
-#define GR_FIX_WALL_GRAN_H
+#ifndef GR_WALL_GRAN_KERNELS_H
+#define GR_WALL_GRAN_KERNELS_H
 
 /* the wall's contact law (`fix wall/gran ID group <model> ...`) */
 enum wall_gran_model { WG_HOOKE, WG_HOOKE_HISTORY, WG_HERTZ_HISTORY, WG_GRANULAR,
