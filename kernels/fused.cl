@@ -44,7 +44,7 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
             pos_add(&a->x, &a->xl, p[0] * a->v);
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_INITIAL) {
-                const REAL dtirotate = (p[1] / p[2]) / (a->r * a->r * a->m);
+                const REAL dtirotate = p[2] / (a->r * a->r * a->m); /* p[2]: dtf / I */
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif
@@ -53,7 +53,7 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
             a->v = a->v + dtfm * a->f;
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_FINAL) {
-                const REAL dtirotate = (p[0] / p[1]) / (a->r * a->r * a->m);
+                const REAL dtirotate = p[1] / (a->r * a->r * a->m); /* p[1]: dtf / I */
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif

@@ -11,9 +11,9 @@ enum fused_kind {
     FOP_FREEZE = 2,             /* f = torque = 0 */
     FOP_VISCOUS = 3,            /* f -= gamma_t v    prm: gamma per type */
     FOP_NVE_INITIAL = 4,        /* v += dtf/m f; x += dtv v          prm: dtv dtf */
-    FOP_NVE_SPHERE_INITIAL = 5, /* and omega += dtf/(I m r^2) torque prm: dtv dtf I */
+    FOP_NVE_SPHERE_INITIAL = 5, /* and omega += dtf/(I m r^2) torque prm: dtv dtf dtf/I */
     FOP_NVE_FINAL = 6,          /* v += dtf/m f                      prm: dtf */
-    FOP_NVE_SPHERE_FINAL = 7    /* and omega += dtf/(I m r^2) torque prm: dtf I */
+    FOP_NVE_SPHERE_FINAL = 7    /* and omega += dtf/(I m r^2) torque prm: dtf dtf/I */
 };
 
 /* One op in the int list: its kind, its group bit, the offset of its

@@ -13,12 +13,14 @@
  * PAIR_LW = 1 (tests/scripts/determinism.py).
  *
  * The host takes this form only for a scene it covers (src/engine/engine.c,
- * pair_lanes): no cohesion, approach, velocity remap, triclinic box or
- * split positions, and a 3-REAL history. */
+ * pair_lanes): no cohesion, approach, velocity remap or triclinic box, split
+ * positions only with double support (the overlap in double lanes, as
+ * contact_refine), and a 3-REAL history. */
 
 #if defined(PAIR_LW) && PAIR_LW > 1
 #if defined(HAS_COHESION) || defined(PAIR_APPROACH) || defined(VREMAP) || defined(TRICLINIC) ||  \
-    defined(SPLIT_POS) || defined(PAIR_EVAL_ROW) || !defined(HAS_ROTATION) || HIST_N != 3
+    (defined(SPLIT_POS) && !defined(HAS_FP64)) || defined(PAIR_EVAL_ROW) ||                    \
+    !defined(HAS_ROTATION) || HIST_N != 3
 #error "pair_gran_lanes.cl: a scene the lane form does not cover (src/engine/engine.c)"
 #endif
 
@@ -37,6 +39,11 @@ typedef LANE_CAT(REAL, PAIR_LW) lreal_w;
 typedef LANE_CAT(long, PAIR_LW) lmask_w; /* a comparison of two lreal_w */
 #else
 typedef LANE_CAT(int, PAIR_LW) lmask_w;
+#endif
+#ifdef SPLIT_POS /* single precision: overlaps in double lanes (HAS_FP64: src/engine/engine.c) */
+typedef LANE_CAT(double, PAIR_LW) ldouble_w;
+#define LTO_DOUBLE(v) LANE_CAT(convert_double, PAIR_LW)(v)
+#define LTO_REAL(v) LANE_CAT(convert_float, PAIR_LW)(v)
 #endif
 
 /* min_image (kernels/common.cl) of each lane */
@@ -88,6 +95,12 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #define G_YI(l) x[3 * (size_t)ii[l] + 1]
 #define G_ZI(l) x[3 * (size_t)ii[l] + 2]
 #define G_XJ(l) x[3 * (size_t)jj[l]]
+#define G_XLI(l) xlo[3 * (size_t)ii[l]]
+#define G_YLI(l) xlo[3 * (size_t)ii[l] + 1]
+#define G_ZLI(l) xlo[3 * (size_t)ii[l] + 2]
+#define G_XLJ(l) xlo[3 * (size_t)jj[l]]
+#define G_YLJ(l) xlo[3 * (size_t)jj[l] + 1]
+#define G_ZLJ(l) xlo[3 * (size_t)jj[l] + 2]
 #define G_YJ(l) x[3 * (size_t)jj[l] + 1]
 #define G_ZJ(l) x[3 * (size_t)jj[l] + 2]
 #define G_VIX(l) v[3 * (size_t)ii[l]]
@@ -123,15 +136,31 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     /* the gate and the contact's build (contact_gate, contact_build) */
     const lreal_w radi = LG(G_RADI), radj = LG(G_RADJ);
     struct gran_in_w k;
-    k.del = lr3_of_w(LMINIMG_X(LG(G_XI) - LG(G_XJ), Lx),
-                     LMINIMG_Y(LG(G_YI) - LG(G_YJ), Ly),
-                     LMINIMG_Z(LG(G_ZI) - LG(G_ZJ), Lz));
-    const lreal_w rsq = k.del.x * k.del.x + k.del.y * k.del.y + k.del.z * k.del.z;
+    const lreal_w dhx = LMINIMG_X(LG(G_XI) - LG(G_XJ), Lx);
+    const lreal_w dhy = LMINIMG_Y(LG(G_YI) - LG(G_YJ), Ly);
+    const lreal_w dhz = LMINIMG_Z(LG(G_ZI) - LG(G_ZJ), Lz);
     const lreal_w reach = radi + radj;
-    const lmask_w acts = rsq < reach * reach;
     const lreal_w radsum = radi + radj;
+#ifdef SPLIT_POS /* the gate on hi + lo, the overlap in double (contact_refine) */
+    const lreal_w dlx = LG(G_XLI) - LG(G_XLJ), dly = LG(G_YLI) - LG(G_YLJ);
+    const lreal_w dlz = LG(G_ZLI) - LG(G_ZLJ);
+    k.del = lr3_of_w(dhx + dlx, dhy + dly, dhz + dlz);
+    const lreal_w rsqt = k.del.x * k.del.x + k.del.y * k.del.y + k.del.z * k.del.z;
+    const ldouble_w ddx = LTO_DOUBLE(dhx) + LTO_DOUBLE(dlx);
+    const ldouble_w ddy = LTO_DOUBLE(dhy) + LTO_DOUBLE(dly);
+    const ldouble_w ddz = LTO_DOUBLE(dhz) + LTO_DOUBLE(dlz);
+    const ldouble_w rd = sqrt(ddx * ddx + ddy * ddy + ddz * ddz);
+    k.r = LTO_REAL(rd);
+    k.delta = LTO_REAL((LTO_DOUBLE(radi) + LTO_DOUBLE(radj)) - rd);
+    const lreal_w rsq = k.r * k.r;
+    const lmask_w acts = (rsqt < reach * reach) & (k.delta > (lreal_w)0);
+#else
+    k.del = lr3_of_w(dhx, dhy, dhz);
+    const lreal_w rsq = k.del.x * k.del.x + k.del.y * k.del.y + k.del.z * k.del.z;
+    const lmask_w acts = rsq < reach * reach;
     k.r = sqrt(rsq);
     k.delta = radsum - k.r;
+#endif
     k.reff = radi * radj / (radi + radj);
     k.vr = lr3_of_w(LG(G_VIX) - LG(G_VJX), LG(G_VIY) - LG(G_VJY),
                     LG(G_VIZ) - LG(G_VJZ));
@@ -179,52 +208,41 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
      * at a normal speed above its record */
     const lreal_w vn2 = k.vdel * k.vdel / rsq;
     const lmask_w note = acts & (rsq < radsum * radsum) & (vn2 > LG(G_REC));
-    REAL r[17][PAIR_LW]; /* back per lane: force, torques, shear, acts, note, vn2, meff, reff */
-    LSTORE(fx, r[0]);
-    LSTORE(fy, r[1]);
-    LSTORE(fz, r[2]);
-    LSTORE(tix, r[3]);
-    LSTORE(tiy, r[4]);
-    LSTORE(tiz, r[5]);
-    LSTORE(tjx, r[6]);
-    LSTORE(tjy, r[7]);
-    LSTORE(tjz, r[8]);
-    LSTORE(LSELW(zero, sh.x, acts), r[9]);
-    LSTORE(LSELW(zero, sh.y, acts), r[10]);
-    LSTORE(LSELW(zero, sh.z, acts), r[11]);
-    LSTORE(LSELW(zero, (lreal_w)1, acts), r[12]);
-    LSTORE(LSELW(zero, (lreal_w)1, note), r[13]);
-    LSTORE(vn2, r[14]);
-    LSTORE(k.meff, r[15]);
-    LSTORE(k.reff, r[16]);
-
+    const lreal_w shx = LSELW(zero, sh.x, acts), shy = LSELW(zero, sh.y, acts);
+    const lreal_w shz = LSELW(zero, sh.z, acts);
+    const lreal_w actsw = LSELW(zero, (lreal_w)1, acts), notew = LSELW(zero, (lreal_w)1, note);
+    const lreal_w meffw = k.meff, reffw = k.reff;
+    /* back per lane (a constant lane index once unrolled: an extract) */
+#define LANE(v, l) (((const REAL *)&(v))[l])
+#pragma unroll
     for (int l = 0; l < PAIR_LW; l++) {
         const int c = c0 + l;
         if (c >= ncontact)
             break;
-        if (r[13][l] != (REAL)0) { /* ACC_NOTE_PAIR's record (kernels/accuracy.cl) */
+        if (LANE(notew, l) != (REAL)0) { /* ACC_NOTE_PAIR's record (kernels/accuracy.cl) */
             struct contact kc;
-            kc.meff = r[15][l];
-            kc.reff = r[16][l];
-            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(r[14][l]));
+            kc.meff = LANE(meffw, l);
+            kc.reff = LANE(reffw, l);
+            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(LANE(vn2, l)));
             if (tc > (REAL)0) {
                 acc[ACC_PAIR_W * c + ACC_PAIR_Q] = dt / tc;
-                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = r[14][l];
+                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = LANE(vn2, l);
                 astep[c] = step;
             }
         }
 #ifdef HAS_HISTORY /* contact_hist_store */
+        const REAL3 sl = (REAL3)(LANE(shx, l), LANE(shy, l), LANE(shz, l));
         __global REAL *row = shear + (size_t)c * 3;
-        for (int q = 0; q < 3; q++)
-            if (r[12][l] != (REAL)0 || row[q] != r[9 + q][l])
-                row[q] = r[9 + q][l];
+        if (LANE(actsw, l) != (REAL)0 || row[0] != sl.x || row[1] != sl.y || row[2] != sl.z)
+            vstore3(sl, 0, row);
 #endif
-        const REAL3 f = (REAL3)(r[0][l], r[1][l], r[2][l]);
+        const REAL3 f = (REAL3)(LANE(fx, l), LANE(fy, l), LANE(fz, l));
         const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
         vstore3(f, si, recf);
         vstore3(-f, sj, recf);
-        vstore3((REAL3)(r[3][l], r[4][l], r[5][l]), si, rect);
-        vstore3((REAL3)(r[6][l], r[7][l], r[8][l]), sj, rect);
+        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), si, rect);
+        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), sj, rect);
     }
+#undef LANE
 }
 #endif /* PAIR_LW > 1 */

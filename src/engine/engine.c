@@ -387,13 +387,13 @@ static void add_source(struct gravel *g, const char **names, const char **texts,
  * history row beyond 3 REAL); one contact per work-item otherwise. */
 static int pair_lanes(struct gravel *g, const struct pair_caps *pc, int single, int lmp2021)
 {
-    if (!pc || !pc->eval_lanes || pc->beyond || pc->approach || single || lmp2021 ||
-        g->dom.triclinic)
+    if (!pc || !pc->eval_lanes || pc->beyond || pc->approach || (single && !g->eng->ocl.fp64) ||
+        lmp2021 || g->dom.triclinic)
         return 1;
     for (int i = 0; i < g->styles.nfix; i++)
         if (strstr(g->styles.fix[i]->defines, "VREMAP"))
             return 1;
-    return g->eng->ocl.lanes_double;
+    return single ? g->eng->ocl.lanes_float : g->eng->ocl.lanes_double;
 }
 
 /* The lane templates (kernels/lanes.cl, then the lane-generic laws:

@@ -13,7 +13,7 @@
 struct kern {
     cl_kernel ini, fin;
     double inertia;             /* 0.4 sphere, 0.5 disc */
-    double prm[3];              /* fused op parameters (dtv dtf I, or dtf I) */
+    double prm[3];              /* fused op parameters (dtv dtf dtf/I, or dtf dtf/I) */
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -36,6 +36,16 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     f->needs = NEED_ROTATION;
     f->sources[f->nsources++] = "fix_nve_sphere.cl";
+}
+
+/* LAMMPS's dtfrotate = dtf / inertia, once per run, rounded as the
+ * device's REAL rounds it (the kernels no longer divide per particle) */
+static double dtfrotate(const struct gravel *g, double inertia)
+{
+    const double dtf = 0.5 * g->dt;
+    if (g->eng->single)
+        return (double)((float)dtf / (float)inertia);
+    return dtf / inertia;
 }
 
 static void init(struct gravel *g, struct fix *f)
@@ -63,7 +73,7 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->ini, 9, a->rmass);
     eng_arg_real(g, k->ini, 10, g->dt);
     eng_arg_real(g, k->ini, 11, 0.5 * g->dt);
-    eng_arg_real(g, k->ini, 12, k->inertia);
+    eng_arg_real(g, k->ini, 12, dtfrotate(g, k->inertia));
     eng_arg_pos_lo(g, k->ini, 13);
     eng_launch(g, k->ini, (size_t)a->n);
 }
@@ -84,24 +94,24 @@ static void final_integrate(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k->fin, 7, a->radius);
     eng_arg_mem(g, k->fin, 8, a->rmass);
     eng_arg_real(g, k->fin, 9, 0.5 * g->dt);
-    eng_arg_real(g, k->fin, 10, k->inertia);
+    eng_arg_real(g, k->fin, 10, dtfrotate(g, k->inertia));
     eng_launch(g, k->fin, (size_t)a->n);
 }
 
 /* Fused: the kicks and the drift inside the check and gather kernels
- * (kernels/fused.cl), with dtv = dt and dtf = dt/2 as above. */
+ * (kernels/fused.cl), with dtv = dt, dtf = dt/2 and dtfrotate as above. */
 static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
 {
     struct kern *k = f->data;
     if (hook == HOOK_INITIAL_INTEGRATE) {
         k->prm[0] = g->dt;
         k->prm[1] = 0.5 * g->dt;
-        k->prm[2] = k->inertia;
+        k->prm[2] = dtfrotate(g, k->inertia);
         op->kind = FOP_NVE_SPHERE_INITIAL;
         op->nprm = 3;
     } else if (hook == HOOK_FINAL_INTEGRATE) {
         k->prm[0] = 0.5 * g->dt;
-        k->prm[1] = k->inertia;
+        k->prm[1] = dtfrotate(g, k->inertia);
         op->kind = FOP_NVE_SPHERE_FINAL;
         op->nprm = 2;
     } else {
