@@ -1,9 +1,11 @@
 /* fix_insert.h - the insertion machinery shared by LIGGGHTS's fix
- * insert/pack and insert/rate/region (fix_insert.c, after LIGGGHTS-PUBLIC
- * 3.8 FixInsert and FixInsertPack). A style file supplies its keywords and
- * the three questions LIGGGHTS's subclasses answer: the insertion
- * properties at the first run, how many particles this step, and how many
- * position attempts. */
+ * insert/pack, insert/rate/region and insert/stream (fix_insert.c, after
+ * LIGGGHTS-PUBLIC 3.8 FixInsert and FixInsertPack). A style file supplies
+ * its keywords and the questions LIGGGHTS's subclasses answer: the
+ * insertion properties at the first run, how many particles this step, how
+ * many position attempts, where a candidate lies (the insertion volume),
+ * which tries are refused, which existing atoms the overlap check needs,
+ * and what happens to the placed atoms. */
 #ifndef GR_FIX_INSERT_H
 #define GR_FIX_INSERT_H
 
@@ -20,7 +22,27 @@ struct insert_ops {
     void (*properties)(struct gravel *g, struct insert *in);   /* first run setup */
     int (*ninsert_this)(struct gravel *g, struct insert *in);
     int (*maxtry)(const struct insert *in, int n);
-    int (*reserve)(struct gravel *g, struct insert *in, bigint nsteps);  /* per insertion */
+    /* particles per insertion step, at most; called before the steps between
+     * insertions (in->insert_every) are read, so a style may derive them here */
+    int (*reserve)(struct gravel *g, struct insert *in, bigint nsteps);
+    /* One candidate centre x for a particle of radius r (LIGGGHTS's
+     * generate_random of the subclass). */
+    void (*point)(struct gravel *g, struct insert *in, double r, double x[3]);
+    /* 1: candidate x (radius r) is refused and drawn again; each draw is a
+     * try of the step's maxtry. */
+    int (*redraw)(const struct gravel *g, const struct insert *in, const double x[3], double r);
+    /* 1: an existing atom (or periodic image) at x of radius r goes into the
+     * overlap check's list (LIGGGHTS's is_nearby). */
+    int (*nearby)(const struct gravel *g, const struct insert *in, const double x[3], double r);
+    /* Optional: the velocity of a placed particle (default: vel constant,
+     * uniform or gaussian, drawn from the fix's stream). */
+    void (*velocity)(struct insert *in, double v[3]);
+    /* Optional: FixInsert::insertion_fraction, asked on every insertion step
+     * after the count and before the split (default 1, no draws). */
+    double (*fraction)(struct gravel *g, struct insert *in);
+    /* Optional: the n atoms just placed are device atoms first .. first+n-1
+     * (LIGGGHTS's finalize_insertion). */
+    void (*finalize)(struct gravel *g, struct fix *f, int first, int n);
 };
 
 enum { INS_V_CONSTANT, INS_V_UNIFORM, INS_V_GAUSSIAN };
@@ -43,7 +65,8 @@ struct insert {
     /* region (FixInsertPack) */
     char reg_id[GR_NAMELEN];
     struct region *reg;
-    struct rng_park rrng;           /* the region's stream (LIGGGHTS Region::random) */
+    struct rng_park rrng;           /* the region's stream (LIGGGHTS Region::random), or
+                                       insert/stream's face mesh's (TriMesh::random_) */
     int ntry_mc, ntotal_region, warn_region, check_border;
     double volfrac, masstotal_region, region_volume, insertion_ratio;
     /* work */
@@ -54,7 +77,8 @@ struct insert {
 };
 
 /* Parse `seed S` and the keywords of LIGGGHTS FixInsert plus the style's
- * own (ops->keyword); set up f. */
+ * own (ops->keyword); set up f. f->data, when the style set it, is its
+ * zeroed state beginning with a struct insert; else one is allocated. */
 void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
                    const struct insert_ops *ops);
 /* The region keywords of FixInsertPack (region, volumefraction_region,
@@ -67,6 +91,24 @@ void insert_region_setup(struct gravel *g, struct insert *in);
 /* Error when the region's bounds leave the box and a face is fixed
  * (LIGGGHTS's bbox_extends_outside_box check). */
 void insert_region_check_box(struct gravel *g, struct insert *in);
+/* The region styles' point, redraw and nearby (ops): a random point of
+ * the region within the box (all_in yes: not within r of its surface); a
+ * try within r of a box face is redrawn when overlapcheck and
+ * check_dist_from_subdomain_border are on; atoms within 2 maxrad + r of
+ * the region's bounds are near. */
+void insert_region_point(struct gravel *g, struct insert *in, double r, double x[3]);
+int insert_region_redraw(const struct gravel *g, const struct insert *in, const double x[3],
+                         double r);
+int insert_region_nearby(const struct gravel *g, const struct insert *in, const double x[3],
+                         double r);
+/* LIGGGHTS's Domain::is_in_subdomain and dist_subbox_borders on one
+ * process: x in [lo, hi) of the box; the distance to the nearest box face. */
+int insert_in_subdomain(const struct gravel *g, const double x[3]);
+double insert_dist_box(const struct gravel *g, const double x[3]);
+/* The counts of the rate styles (insert/rate/region, insert/stream):
+ * nparticles, or int((mass + tiny) / E[mass]); particlerate, or massrate /
+ * E[mass]; ninsert_per = rate insert_every dt; the total mass. */
+void insert_rate_counts(struct gravel *g, struct insert *in, double tiny);
 /* FixInsert::calc_ninsert_this: int(ninsert_per + u), capped by nparticles. */
 int insert_ninsert_rate(struct gravel *g, struct insert *in);
 

@@ -248,9 +248,7 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
         struct mesh_pose p;
         mesh_surface_pose(g, mw->id[m], &p);
         double ref[3];
-        for (int r = 0; r < 3; r++)
-            ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
-                     p.R[3 * r + 2] * ms->ref[2] + p.d[r];
+        mesh_pose_point(&p, ms->ref, ref);
         mesh_surface_fmesh_reserve(g, ms, a->n);
         if (pair_types)
             law->by_type = ms->type;
@@ -284,6 +282,26 @@ static void mat_vec(const double A[9], const double v[3], double out[3])
     for (int r = 0; r < 3; r++)
         t[r] = A[3 * r] * v[0] + A[3 * r + 1] * v[1] + A[3 * r + 2] * v[2];
     memcpy(out, t, sizeof t);
+}
+
+void mesh_pose_vector(const struct mesh_pose *p, const double v0[3], double v[3])
+{
+    mat_vec(p->R, v0, v);
+}
+
+void mesh_pose_point(const struct mesh_pose *p, const double x0[3], double x[3])
+{
+    mat_vec(p->R, x0, x);
+    for (int r = 0; r < 3; r++)
+        x[r] += p->d[r];
+}
+
+void mesh_pose_velocity(const struct mesh_pose *p, const double x[3], double u[3])
+{
+    const double *om = p->omega;
+    u[0] = p->V0[0] + om[1] * x[2] - om[2] * x[1];
+    u[1] = p->V0[1] + om[2] * x[0] - om[0] * x[2];
+    u[2] = p->V0[2] + om[0] * x[1] - om[1] * x[0];
 }
 
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p)
@@ -399,14 +417,10 @@ static double vector(struct gravel *g, struct fix *f, int i)
             free(idx);
             struct mesh_pose p;
             mesh_surface_pose(g, f->id, &p);
-            double ref[3];
-            mat_vec(p.R, ms->ref, ref);
-            for (int c = 0; c < 3; c++)
-                ref[c] += p.d[c];
+            double ref[3], vref[3];
+            mesh_pose_point(&p, ms->ref, ref);
+            mesh_pose_velocity(&p, ref, vref);
             const double *om = p.omega;
-            double vref[3] = {p.V0[0] + om[1] * ref[2] - om[2] * ref[1],
-                              p.V0[1] + om[2] * ref[0] - om[0] * ref[2],
-                              p.V0[2] + om[0] * ref[1] - om[1] * ref[0]};
             double pw = 0;
             for (int c = 0; c < 3; c++)
                 pw += ms->cache[c] * vref[c] + ms->cache[3 + c] * om[c];

@@ -54,6 +54,14 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
  * motions on it composed in the order of their fixes. */
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p);
 
+/* x = R x0 + d: a point of the mesh's own frame at the pose (x may be x0). */
+void mesh_pose_point(const struct mesh_pose *p, const double x0[3], double x[3]);
+/* v = R v0: a direction (a normal) at the pose (v may be v0). */
+void mesh_pose_vector(const struct mesh_pose *p, const double v0[3], double v[3]);
+
+/* u = V0 + omega x x: the surface velocity at the lab point x. */
+void mesh_pose_velocity(const struct mesh_pose *p, const double x[3], double u[3]);
+
 /* At a wall fix's init: make f the one wall of the mesh (its force output);
  * an error when another wall fix still holds it. */
 void mesh_surface_claim(struct gravel *g, struct mesh_surface *ms, const char *mesh_id,
