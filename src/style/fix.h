@@ -142,6 +142,9 @@ struct fix_style {
      * moves that origin by shift, so its clock, and the motion, continue
      * where they stood; step-keyed caches move with it. */
     void (*reset_step)(struct gravel *g, struct fix *f, bigint shift);
+    /* Optional: `unfix ID` is about to delete the fix (LIGGGHTS's pre_delete):
+     * what it leaves behind (fix move/mesh: the mesh stays where it moved it). */
+    void (*unfix)(struct gravel *g, struct fix *f);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values, vector(g, f, i) returns value i (1-based) at the current step. */
     int size_vector;

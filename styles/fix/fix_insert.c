@@ -25,6 +25,7 @@
  * 4/3 pi r^3 density, the vel and omega values. Full contract:
  * doc/styles/fix_insert_pack.md. */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -261,6 +262,7 @@ void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
         gr_error(g, "%s: expecting keyword 'seed', got '%.64s'", who, argv[0]);
     in->seed = liggghts_seed(g, argv[1], who);
     rng_park_init(&in->rng, in->seed);
+    in->rrng_seed = in->seed + SEED_OFFSET;
     /* LIGGGHTS's defaults */
     in->ninsert_exists = 1;
     in->insert_every = -1;
@@ -306,8 +308,7 @@ void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
     in->maxrad = in->dist->maxrad;
     f->force_reneighbor = 1;
     f->next_reneighbor = in->first_ins_step;
-    f->time_depend = 1;
-    f->hooks = HOOK_PRE_EXCHANGE;
+    f->hooks = HOOK_PRE_EXCHANGE; /* no time_depend: reset_timestep moves the schedule */
 }
 
 /* ---- the region (LIGGGHTS Region: extent, match_cut, volume_mc) -------- */
@@ -370,6 +371,33 @@ void insert_region_check_box(struct gravel *g, struct insert *in)
                          in->ops->who, r->id);
 }
 
+/* LIGGGHTS's Region::volume_mc: ntry_mc points of the region's bounds from
+ * the region stream (3 draws each); the volume is the share in the region
+ * and the box times the bounds' volume. */
+static void region_volume_mc(struct gravel *g, struct insert *in)
+{
+    const char *who = in->ops->who;
+    struct region *r = in->reg;
+    const double *lo = r->bbox_lo, *hi = r->bbox_hi;
+    long n_in = 0;
+    region_prematch(g, r);
+    for (int i = 0; i < in->ntry_mc; i++) {
+        double x[3];
+        for (int d = 0; d < 3; d++)
+            x[d] = lo[d] + rng_park_uniform(&in->rrng) * (hi[d] - lo[d]);
+        if (in_box(g, x) && region_match(r, x))
+            n_in++;
+    }
+    if (n_in == 0)
+        gr_error(g, "%s: Unable to calculate region volume of %s: region volume is too small "
+                    "or out of domain, or the particles are too large for all_in yes", who,
+                 r->id);
+    double vbox = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    in->region_volume = (double)n_in / (double)in->ntry_mc * vbox;
+    if (!(in->region_volume > 0.) || !isfinite(in->region_volume))
+        gr_error(g, "%s: Region volume calculation with MC failed (%g)", who, in->region_volume);
+}
+
 void insert_region_setup(struct gravel *g, struct insert *in)
 {
     const char *who = in->ops->who;
@@ -392,25 +420,24 @@ void insert_region_setup(struct gravel *g, struct insert *in)
     if (r->openflag)
         gr_error(g, "%s: region %s has open faces (it matches every point)", who, r->id);
     gr_print(g, "INFO: Resetting random generator for region %s\n", r->id);
-    rng_park_init(&in->rrng, in->seed + SEED_OFFSET);
-    const double *lo = r->bbox_lo, *hi = r->bbox_hi;
-    long n_in = 0;
-    region_prematch(g, r);
-    for (int i = 0; i < in->ntry_mc; i++) {
-        double x[3];
-        for (int d = 0; d < 3; d++)
-            x[d] = lo[d] + rng_park_uniform(&in->rrng) * (hi[d] - lo[d]);
-        if (in_box(g, x) && region_match(r, x))
-            n_in++;
-    }
-    if (n_in == 0)
-        gr_error(g, "%s: Unable to calculate region volume of %s: region volume is too small "
-                    "or out of domain, or the particles are too large for all_in yes", who,
-                 r->id);
-    double vbox = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-    in->region_volume = (double)n_in / (double)in->ntry_mc * vbox;
-    if (!(in->region_volume > 0.) || !isfinite(in->region_volume))
-        gr_error(g, "%s: Region volume calculation with MC failed (%g)", who, in->region_volume);
+    rng_park_init(&in->rrng, in->rrng_seed);
+    region_volume_mc(g, in);
+}
+
+int insert_box_changes(const struct gravel *g)
+{
+    for (int d = 0; d < 3; d++)
+        for (int e = 0; e < 2; e++)
+            if (g->dom.bnd[d][e] == 's' || g->dom.bnd[d][e] == 'm')
+                return 1;
+    return 0;
+}
+
+double insert_region_fraction(struct gravel *g, struct insert *in)
+{
+    if (insert_box_changes(g))
+        region_volume_mc(g, in);
+    return 1.0;
 }
 
 void insert_rate_counts(struct gravel *g, struct insert *in, double tiny)
@@ -803,18 +830,30 @@ void insert_destroy(struct fix *f)
     free(in);
 }
 
+void insert_reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    if (f->next_reneighbor > 0) /* LIGGGHTS's FixInsert::reset_timestep (a stopped fix stays so) */
+        f->next_reneighbor += shift;
+}
+
 /* Restart state: the streams, counts and schedule (LIGGGHTS writes the
- * stream, ninserted, first step, next step and mass inserted). */
+ * stream, ninserted, first step, next step and mass inserted), and the step
+ * it was written at: the next insertion moves with the reset_timestep
+ * commands between read_restart and the run, as in LIGGGHTS, where the
+ * state is restored when the fix is defined. Files without that step
+ * (older builds) are read as written at the current step. */
 struct insert_saved {
     struct rng_park rng, rrng;
     int ninserted, ninsert, exact_number, setup_done;
     double massinserted, massinsert, region_volume, ninsert_per, nflowrate, massflowrate;
     int64_t first_ins_step, final_ins_step, most_recent, next_reneighbor;
+    int64_t step;
 };
+#define SAVED_OLD offsetof(struct insert_saved, step)
 
 size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
-    (void)g;
     const struct insert *in = f->data;
     struct insert_saved s;
     memset(&s, 0, sizeof s);
@@ -826,6 +865,7 @@ size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
     s.nflowrate = in->nflowrate, s.massflowrate = in->massflowrate;
     s.first_ins_step = in->first_ins_step, s.final_ins_step = in->final_ins_step;
     s.most_recent = in->most_recent, s.next_reneighbor = f->next_reneighbor;
+    s.step = g->step;
     if (buf && cap >= sizeof s)
         memcpy(buf, &s, sizeof s);
     return sizeof s;
@@ -835,9 +875,10 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
 {
     struct insert *in = f->data;
     struct insert_saved s;
-    if (len != sizeof s)
+    if (len != sizeof s && len != SAVED_OLD)
         gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len, sizeof s);
-    memcpy(&s, buf, sizeof s);
+    s.step = g->step;
+    memcpy(&s, buf, len);
     in->rng = s.rng, in->rrng = s.rrng;
     in->ninserted = s.ninserted, in->ninsert = s.ninsert;
     in->exact_number = s.exact_number, in->setup_done = s.setup_done;
@@ -847,4 +888,6 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     in->first_ins_step = s.first_ins_step, in->final_ins_step = s.final_ins_step;
     in->most_recent = s.most_recent;
     f->next_reneighbor = s.next_reneighbor;
+    rng_park_init(&in->rrng, in->rrng_seed); /* LIGGGHTS reseeds it (region, mesh) */
+    insert_reset_step(g, f, g->step - s.step);
 }

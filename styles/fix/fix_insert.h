@@ -67,6 +67,8 @@ struct insert {
     struct region *reg;
     struct rng_park rrng;           /* the region's stream (LIGGGHTS Region::random), or
                                        insert/stream's face mesh's (TriMesh::random_) */
+    int rrng_seed;                  /* its seed, at setup and after read_restart (seed + 12;
+                                       the mesh's 179424799) */
     int ntry_mc, ntotal_region, warn_region, check_border;
     double volfrac, masstotal_region, region_volume, insertion_ratio;
     /* work */
@@ -88,6 +90,13 @@ int insert_region_keyword(struct gravel *g, struct insert *in, int argc, char **
 /* FixInsertPack's region checks and Monte-Carlo region volume (the region
  * stream reset to seed + 12, ntry_mc points). */
 void insert_region_setup(struct gravel *g, struct insert *in);
+/* 1 when the box may change during a run (a shrink-wrapped boundary:
+ * LIGGGHTS's domain->box_change). */
+int insert_box_changes(const struct gravel *g);
+/* FixInsertPack::insertion_fraction on one process (the fraction hook of
+ * the region styles): 1; with a changing box the Monte-Carlo region volume
+ * is drawn again first (ntry_mc points of the region stream). */
+double insert_region_fraction(struct gravel *g, struct insert *in);
 /* Error when the region's bounds leave the box and a face is fixed
  * (LIGGGHTS's bbox_extends_outside_box check). */
 void insert_region_check_box(struct gravel *g, struct insert *in);
@@ -117,6 +126,9 @@ void insert_pre_exchange(struct gravel *g, struct fix *f);
 int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);
 void insert_destroy(struct fix *f);
 double insert_vector(struct gravel *g, struct fix *f, int i);
+/* reset_timestep moved the step counter: the next insertion moves with it
+ * (LIGGGHTS's FixInsert::reset_timestep; the other steps stay). */
+void insert_reset_step(struct gravel *g, struct fix *f, bigint shift);
 size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
 void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);
 

@@ -64,6 +64,7 @@ static const struct insert_ops ops = {
     .point = insert_region_point,
     .redraw = insert_region_redraw,
     .nearby = insert_region_nearby,
+    .fraction = insert_region_fraction,
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -80,6 +81,7 @@ const struct fix_style fix_style_insert_rate_region = {
     .destroy = insert_destroy,
     .write_restart = insert_write_restart,
     .read_restart = insert_read_restart,
+    .reset_step = insert_reset_step,
     .size_vector = 2,
     .vector = insert_vector,
 };

@@ -311,11 +311,7 @@ static void properties(struct gravel *g, struct insert *in)
 static double fraction(struct gravel *g, struct insert *in)
 {
     struct stream *s = (struct stream *)in;
-    int shrink = 0;
-    for (int d = 0; d < 3; d++)
-        for (int e = 0; e < 2; e++)
-            shrink |= g->dom.bnd[d][e] == 's' || g->dom.bnd[d][e] == 'm';
-    if (s->frac_done && !shrink)
+    if (s->frac_done && !insert_box_changes(g))
         return s->frac;
     s->frac_done = 1;
     long n_in = 0;
@@ -501,6 +497,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     s->every_given = in->insert_every;
     if (in->insert_every == 0)
         gr_error(g, WHO ": 'insert_every' must be > 0");
+    in->rrng_seed = MESH_SEED;
     rng_park_init(&in->rrng, MESH_SEED);
     f->hooks |= HOOK_END_OF_STEP;
     f->sources[f->nsources++] = "fix_insert_stream.cl";
@@ -561,6 +558,7 @@ const struct fix_style fix_style_insert_stream = {
     .destroy = destroy,
     .write_restart = insert_write_restart,
     .read_restart = insert_read_restart,
+    .reset_step = insert_reset_step,
     .size_vector = 2,
     .vector = insert_vector,
 };

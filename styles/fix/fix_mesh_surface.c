@@ -284,6 +284,18 @@ static void mat_vec(const double A[9], const double v[3], double out[3])
     memcpy(out, t, sizeof t);
 }
 
+void mesh_surface_bake(struct gravel *g, const char *id)
+{
+    struct mesh_surface *ms = mesh_surface_get(g, id, "unfix");
+    struct mesh_pose p;
+    mesh_surface_pose(g, id, &p);
+    for (int v = 0; v < ms->m.nvert; v++)
+        mesh_pose_point(&p, ms->m.vert + 3 * v, ms->m.vert + 3 * v);
+    for (int t = 0; t < ms->m.ntri; t++)
+        mesh_pose_vector(&p, ms->normal + 3 * t, ms->normal + 3 * t);
+    mesh_pose_point(&p, ms->ref, ms->ref);
+}
+
 void mesh_pose_vector(const struct mesh_pose *p, const double v0[3], double v[3])
 {
     mat_vec(p->R, v0, v);

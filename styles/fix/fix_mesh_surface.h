@@ -54,6 +54,11 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
  * motions on it composed in the order of their fixes. */
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p);
 
+/* The mesh of fix `id` takes its pose of the current step as its own frame
+ * (vertices, normals, torque reference): what `unfix` of its one fix
+ * move/mesh leaves, the mesh where the motion put it (LIGGGHTS). */
+void mesh_surface_bake(struct gravel *g, const char *id);
+
 /* x = R x0 + d: a point of the mesh's own frame at the pose (x may be x0). */
 void mesh_pose_point(const struct mesh_pose *p, const double x0[3], double x[3]);
 /* v = R v0: a direction (a normal) at the pose (v may be v0). */
