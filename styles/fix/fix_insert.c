@@ -833,8 +833,10 @@ void insert_destroy(struct fix *f)
 void insert_reset_step(struct gravel *g, struct fix *f, bigint shift)
 {
     (void)g;
+    struct insert *in = f->data;
     if (f->next_reneighbor > 0) /* LIGGGHTS's FixInsert::reset_timestep (a stopped fix stays so) */
         f->next_reneighbor += shift;
+    in->clock_shift += shift;
 }
 
 /* Restart state: the streams, counts and schedule (LIGGGHTS writes the
@@ -848,7 +850,7 @@ struct insert_saved {
     int ninserted, ninsert, exact_number, setup_done;
     double massinserted, massinsert, region_volume, ninsert_per, nflowrate, massflowrate;
     int64_t first_ins_step, final_ins_step, most_recent, next_reneighbor;
-    int64_t step;
+    int64_t step, clock_shift;
 };
 #define SAVED_OLD offsetof(struct insert_saved, step)
 
@@ -866,6 +868,7 @@ size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
     s.first_ins_step = in->first_ins_step, s.final_ins_step = in->final_ins_step;
     s.most_recent = in->most_recent, s.next_reneighbor = f->next_reneighbor;
     s.step = g->step;
+    s.clock_shift = in->clock_shift;
     if (buf && cap >= sizeof s)
         memcpy(buf, &s, sizeof s);
     return sizeof s;
@@ -878,6 +881,7 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     if (len != sizeof s && len != SAVED_OLD)
         gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len, sizeof s);
     s.step = g->step;
+    s.clock_shift = 0;
     memcpy(&s, buf, len);
     in->rng = s.rng, in->rrng = s.rrng;
     in->ninserted = s.ninserted, in->ninsert = s.ninsert;
@@ -888,6 +892,7 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     in->first_ins_step = s.first_ins_step, in->final_ins_step = s.final_ins_step;
     in->most_recent = s.most_recent;
     f->next_reneighbor = s.next_reneighbor;
+    in->clock_shift = s.clock_shift;
     rng_park_init(&in->rrng, in->rrng_seed); /* LIGGGHTS reseeds it (region, mesh) */
     insert_reset_step(g, f, g->step - s.step);
 }

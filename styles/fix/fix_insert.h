@@ -58,6 +58,8 @@ struct insert {
     double massinsert, massinserted, nflowrate, massflowrate, ninsert_per;
     int insert_every;               /* 0: once, -1: not given */
     bigint first_ins_step, final_ins_step, most_recent;
+    bigint clock_shift;             /* sum of the reset_timestep shifts since the fix began:
+                                       step - clock_shift runs on without jumps */
     int check_ol, all_in, exact_number, verbose, setup_done;
     int vstyle;
     double v[3], vfluct[3], omega[3];
@@ -127,7 +129,8 @@ int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
 void insert_destroy(struct fix *f);
 double insert_vector(struct gravel *g, struct fix *f, int i);
 /* reset_timestep moved the step counter: the next insertion moves with it
- * (LIGGGHTS's FixInsert::reset_timestep; the other steps stay). */
+ * (LIGGGHTS's FixInsert::reset_timestep; the other steps stay), and so
+ * does clock_shift. */
 void insert_reset_step(struct gravel *g, struct fix *f, bigint shift);
 size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
 void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len);

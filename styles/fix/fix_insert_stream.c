@@ -28,7 +28,9 @@
  * reaches the face (release step = insertion step + int((distance to the
  * face plane + 1e-14) / (|v_n| dt))); there they get v (vel uniform |
  * gaussian: drawn at insertion, in tag order, from the fix's stream) and
- * omega (kernels/fix_insert_stream.cl, end_of_step). The insertion step
+ * omega (kernels/fix_insert_stream.cl, end_of_step). These steps are
+ * counted on the fix's clock, step - clock_shift, which reset_timestep does
+ * not move: the approach goes on across a reset. The insertion step
  * itself: fix_insert.c. Full contract: doc/styles/fix_insert_stream.md. */
 #include <math.h>
 #include <stdlib.h>
@@ -438,10 +440,11 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
             rel[d] = s->p_ref[d] - x[d];
         double steps = (dot3(rel, s->normal) + TINY) / (s->vn_mag * g->dt);
         steps = steps > 0 ? floor(steps) : 0;
-        if (!((double)g->step + steps < 2147483647.0))
-            gr_error(g, WHO " %s: release step %g is beyond the int steps LIGGGHTS counts in",
-                     f->id, (double)g->step + steps);
-        int head[2] = {(int)g->step, (int)g->step + (int)steps};
+        bigint clock = g->step - in->clock_shift;
+        if (!(clock > 0 && (double)clock + steps < 2147483647.0))
+            gr_error(g, WHO " %s: release step %g is out of the range of the release clock",
+                     f->id, (double)clock + steps);
+        int head[2] = {(int)clock, (int)clock + (int)steps};
         double vrel[3];
         memcpy(vrel, in->v, sizeof vrel);
         if (in->vstyle == INS_V_UNIFORM)
@@ -525,7 +528,7 @@ static void end_of_step(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k, 2, a->mask);
     eng_arg_int(g, k, 3, (int)(f->peratom_bytes / sizeof(int)));
     eng_arg_mem(g, k, 4, f->peratom);
-    eng_arg_int(g, k, 5, (int)g->step);
+    eng_arg_int(g, k, 5, (int)(g->step - s->in.clock_shift));
     eng_arg_real(g, k, 6, g->dt);
     for (int d = 0; d < 3; d++)
         eng_arg_real(g, k, 7 + d, s->in.omega[d]);
