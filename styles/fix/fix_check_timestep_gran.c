@@ -105,7 +105,7 @@ static double mesh_vmax_sq(struct gravel *g)
             continue;
         struct mesh_pose p;
         mesh_surface_pose(g, m->id, &p);
-        if (!p.moving)
+        if (!p.moving || ms->has_surface_vel) /* LIGGGHTS: isMoving(), not a conveyor's */
             continue;
         for (int v = 0; v < ms->m.nvert; v++) {
             const double *x0 = ms->m.vert + 3 * (size_t)v;

@@ -119,6 +119,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             arg_yesno(g, argv[i + 1], "verbose");
             i += 2;
+        } else if (!strcmp(kw, "surface_vel")) {
+            arg_need(g, argc, i, 3, kw);
+            for (int k = 0; k < 3; k++)
+                ms->surface_vel[k] = arg_double(g, argv[i + 1 + k], "surface_vel");
+            ms->has_surface_vel = 1;
+            i += 4;
         } else if (!strcmp(kw, "reference_point")) {
             arg_need(g, argc, i, 3, kw);
             for (int k = 0; k < 3; k++)
@@ -127,8 +133,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 4;
         } else {
             gr_error(g, "unknown fix mesh/surface keyword '%.64s' (expected type, scale, move, "
-                        "rotate, precision, reference_point, temperature, curvature, heal or "
-                        "verbose)", kw);
+                        "rotate, precision, reference_point, surface_vel, temperature, curvature, "
+                        "heal or verbose)", kw);
         }
     }
     if (!type)
@@ -138,6 +144,15 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     ms->type = type;
     ms->cache_step = -1;
     compute_normals(g, ms);
+    /* LIGGGHTS gives each triangle surface_vel projected on its plane and scaled back to
+     * |surface_vel|: one velocity for the mesh only when it lies in every triangle */
+    for (int t = 0; ms->has_surface_vel && t < ms->m.ntri; t++) {
+        const double *n = ms->normal + 3 * t, *v = ms->surface_vel;
+        double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+        if (fabs(vn) > 1e-6 * sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]))
+            gr_error(g, "fix mesh/surface: surface_vel is not in the plane of triangle %d (a "
+                        "surface velocity that turns with the triangles is not supported)", t);
+    }
     f->hooks = 0;
 }
 
@@ -376,6 +391,12 @@ void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p)
     memcpy(p->R, R, sizeof R);
     memcpy(p->d, d, sizeof d);
     p->moving = moving;
+    const struct mesh_surface *ms = mesh_surface_get(g, id, "mesh pose");
+    if (ms->has_surface_vel) { /* the surface moves, the mesh stays (no move/mesh: create) */
+        memcpy(p->V0, ms->surface_vel, sizeof p->V0);
+        p->moving = 1;
+        return;
+    }
     if (!moving)
         return;
     /* [omega]x = Rd R^T */

@@ -15,6 +15,8 @@ struct mesh_surface {
     double *normal;             /* unit normal per triangle (right hand over vertices 0 1 2) */
     int type;                   /* wall material type */
     double curvature, temperature;
+    double surface_vel[3];      /* LIGGGHTS's surface_vel: the surface moves in place */
+    int has_surface_vel;
     double ref[3];              /* torque reference point (moves with the mesh) */
     int ref_set;
     /* filled by fix wall/gran ... mesh: per atom force on the mesh and torque about ref */

@@ -30,6 +30,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix move/mesh expects 'mesh MESHID style args' (style linear, wiggle or "
                     "rotate)");
     struct mesh_surface *ms = mesh_surface_get(g, argv[1], "fix move/mesh");
+    if (ms->has_surface_vel)
+        gr_error(g, "fix move/mesh: cannot apply move to a mesh using keyword 'surface_vel' "
+                    "(mesh %s)", argv[1]);
     struct mesh_motion mo;
     memset(&mo, 0, sizeof mo);
     snprintf(mo.mesh, sizeof mo.mesh, "%s", argv[1]);
