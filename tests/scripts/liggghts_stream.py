@@ -461,8 +461,8 @@ def update():
 
 def main():
     if not os.path.isdir(TUTORIALS):
-        print("FAIL liggghts_stream: %s missing (apt-get install liggghts-doc)" % TUTORIALS)
-        return 1
+        print("SKIP liggghts_stream: %s missing (Debian package liggghts-doc)" % TUTORIALS)
+        return 0
     if "--update" in sys.argv:
         update()
         return 0
