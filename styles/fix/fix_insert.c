@@ -466,6 +466,20 @@ void insert_rate_counts(struct gravel *g, struct insert *in, double tiny)
         gr_error(g, "%s: %g particles per insertion step is too many", who, in->ninsert_per);
 }
 
+int insert_maxtry(const struct insert *in, int n)
+{
+    double t = (double)n * in->maxattempt;
+    return t < 2147483647.0 ? (int)t : 2147483647;
+}
+
+int insert_rate_reserve(const struct gravel *g, const struct insert *in)
+{
+    /* before the first run's setup the rate is not yet derived */
+    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
+    double per = rate * (double)in->insert_every * g->dt + 1;
+    return per < 1e9 ? (int)per : 1000000000;
+}
+
 int insert_ninsert_rate(struct gravel *g, struct insert *in)
 {
     if (in->ninsert_per == 0.)

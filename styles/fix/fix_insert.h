@@ -120,6 +120,11 @@ double insert_dist_box(const struct gravel *g, const double x[3]);
  * nparticles, or int((mass + tiny) / E[mass]); particlerate, or massrate /
  * E[mass]; ninsert_per = rate insert_every dt; the total mass. */
 void insert_rate_counts(struct gravel *g, struct insert *in, double tiny);
+/* n maxattempt tries (FixInsert's maxtry), capped at INT_MAX. */
+int insert_maxtry(const struct insert *in, int n);
+/* The rate styles' particles per insertion step, at most: rate x insert_every
+ * x dt + 1. */
+int insert_rate_reserve(const struct gravel *g, const struct insert *in);
 /* FixInsert::calc_ninsert_this: int(ninsert_per + u), capped by nparticles. */
 int insert_ninsert_rate(struct gravel *g, struct insert *in);
 

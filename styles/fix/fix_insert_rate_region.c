@@ -39,19 +39,13 @@ static int ninsert_this(struct gravel *g, struct insert *in)
 
 static int maxtry(const struct insert *in, int n)
 {
-    if (!in->check_ol)
-        return INT_MAX; /* one try each, no limit */
-    double t = (double)n * in->maxattempt;
-    return t < 2147483647.0 ? (int)t : 2147483647;
+    return in->check_ol ? insert_maxtry(in, n) : INT_MAX; /* no check: one try each */
 }
 
 static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
 {
     (void)nsteps;
-    /* before the first run's setup the rate is not yet derived */
-    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
-    double per = rate * (double)in->insert_every * g->dt + 1;
-    return per < 1e9 ? (int)per : 1000000000;
+    return insert_rate_reserve(g, in);
 }
 
 static const struct insert_ops ops = {

@@ -358,12 +358,6 @@ static int ninsert_this(struct gravel *g, struct insert *in)
     return insert_ninsert_rate(g, in);
 }
 
-static int maxtry(const struct insert *in, int n)
-{
-    double t = (double)n * in->maxattempt;
-    return t < 2147483647.0 ? (int)t : 2147483647;
-}
-
 static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
 {
     (void)nsteps;
@@ -371,9 +365,7 @@ static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
     if (!s->face_id[0])
         gr_error(g, WHO ": must define an insertion face");
     geometry(g, s); /* insert_every, which the caller reads next */
-    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
-    double per = rate * (double)in->insert_every * g->dt + 1;
-    return per < 1e9 ? (int)per : 1000000000;
+    return insert_rate_reserve(g, in);
 }
 
 static void point(struct gravel *g, struct insert *in, double r, double x[3])
@@ -479,7 +471,7 @@ static const struct insert_ops ops = {
     .keyword = keyword,
     .properties = properties,
     .ninsert_this = ninsert_this,
-    .maxtry = maxtry,
+    .maxtry = insert_maxtry,
     .reserve = reserve,
     .point = point,
     .redraw = redraw,
