@@ -4,7 +4,7 @@
 # crashes or exits non-zero without reporting a FAIL counts as one failure
 # (a crash of LeakSanitizer's tracer at exit is retried once).
 # A SKIP line that names a dependency `make test` installs (tools/deps.sh:
-# lmp/lammps, vtk/python3-vtk9, clang) is a failure: such a test must run.
+# lmp/lammps, vtk/python3-vtk9, clang, liggghts-doc) is a failure: such a test must run.
 cd "$(dirname "$0")/.." || exit 1
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -12,7 +12,7 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
 export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp:print_suppressions=0"
 status=0
 # words in a SKIP line that name a dependency make test installs
-REQUIRED="lmp lammps vtk python3-vtk9 clang"
+REQUIRED="lmp lammps vtk python3-vtk9 clang liggghts-doc"
 REQTAG='^FAIL .*\[skipped, but make test installs '
 # GR_TESTS replaces the list (tests/scripts/runner.sh checks this driver)
 for t in ${GR_TESTS:-build/tests/test_* tests/scripts/*.sh tests/scripts/*.py}; do

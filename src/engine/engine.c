@@ -186,7 +186,8 @@ void eng_reserve(struct gravel *g, int n)
     alloc_set(g, &e->a, cap);
     e->cap = cap;
     e->ocl.atoms_hint = cap;
-    e->tag_sum = 0; /* the neighbor list indexes the old buffers */
+    nbr_invalidate(g); /* the neighbor list indexes the old buffers; the fixes' per-atom
+                          state (its own buffers) stays with the atoms */
 }
 
 /* Host atoms first .. first + n - 1, every field the device holds. */
@@ -206,7 +207,8 @@ static void put_atoms(struct gravel *g, int first, int n)
 /* Per-atom state of fixes (fix.h): the one allocation path. A fix that
  * declares peratom_bytes gets zero-filled buffers of e->cap atoms when it
  * has none, when they are too small, or when !keep (the atoms changed since
- * the state was written); otherwise its state is kept. */
+ * the state was written); otherwise its state is kept, also when the
+ * buffers grow (the state of the run's atoms moves into the new ones). */
 void eng_fix_state(struct gravel *g, int keep)
 {
     struct engine *e = g->eng;
@@ -219,12 +221,18 @@ void eng_fix_state(struct gravel *g, int keep)
                      f->peratom_bytes);
         if (keep && f->peratom && f->peratom_cap >= (size_t)e->cap)
             continue;
-        release_mem(&f->peratom);
-        release_mem(&f->peratom_tmp);
+        cl_mem old = f->peratom;
         f->peratom = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
+        eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
+        /* a run that needs room for more atoms keeps the state of those it has */
+        size_t nkeep = (size_t)e->a.n < f->peratom_cap ? (size_t)e->a.n : f->peratom_cap;
+        if (keep && old && nkeep)
+            OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, old, f->peratom, 0, 0,
+                                             nkeep * f->peratom_bytes, 0, NULL, NULL));
+        release_mem(&old);
+        release_mem(&f->peratom_tmp);
         f->peratom_tmp = eng_alloc(g, (size_t)e->cap * f->peratom_bytes, "fix per-atom state");
         f->peratom_cap = (size_t)e->cap;
-        eng_fill_zero(g, f->peratom, (size_t)e->cap * f->peratom_bytes);
     }
 }
 

@@ -48,7 +48,8 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
  * atom_style hybrid sphere molecular (either order): spheres with molecule IDs
  * as part of the style (LAMMPS's molecular sub-style; no bonds in granular
  * decks: a molecule template with bonds is refused where it is read).
- * atom_style granular is LIGGGHTS's name for sphere (no flag). */
+ * atom_style granular is LIGGGHTS's name for sphere (no flag), with
+ * LIGGGHTS's thermo kinetic energy. */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
     if (!strcmp(argv[0], "hybrid")) {
@@ -72,7 +73,15 @@ void cmd_atom_style(struct gravel *g, int argc, char **argv)
         g->atoms.style_molecular = 0;
         g->atoms.molecule_flag = 0;
     }
-    if (!strcmp(argv[0], "granular")) {
+    /* LIGGGHTS's thermo `ke` is 1/2 sum m v^2 of the atoms of the step, also just
+     * after an insertion into an empty box (its thermo temperature counts 3 N
+     * degrees of freedom at each evaluation; LAMMPS's counts 3 N - 3 at the run's
+     * setup): a granular deck gets thermo_temp dynamic/dof yes, extra/dof 0. */
+    int granular = !strcmp(argv[0], "granular");
+    g->thermo.temp.dynamic = granular;
+    g->thermo.temp.extra_set = granular;
+    g->thermo.temp.extra_dof = 0;
+    if (granular) {
         if (argc > 1)
             gr_error(g, "atom_style granular takes no arguments, got '%.32s'", argv[1]);
         return;

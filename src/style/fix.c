@@ -284,6 +284,8 @@ void cmd_unfix(struct gravel *g, int argc, char **argv)
     (void)argc;
     for (int i = 0; i < g->styles.nfix; i++)
         if (!strcmp(g->styles.fix[i]->id, argv[0])) {
+            if (g->styles.fix[i]->style->unfix)
+                g->styles.fix[i]->style->unfix(g, g->styles.fix[i]);
             property_atom_release(g, g->styles.fix[i]); /* its properties go with it */
             fix_delete(g->styles.fix[i]);
             memmove(&g->styles.fix[i], &g->styles.fix[i + 1],

@@ -146,6 +146,9 @@ struct fix_style {
      * keywords: argv[0] is the keyword; returns the words it used (0: not
      * its keyword). */
     int (*modify_param)(struct gravel *g, struct fix *f, int argc, char **argv);
+    /* Optional: `unfix ID` is about to delete the fix (LIGGGHTS's pre_delete):
+     * what it leaves behind (fix move/mesh: the mesh stays where it moved it). */
+    void (*unfix)(struct gravel *g, struct fix *f);
     /* Global vector for `f_ID[i]` in thermo output, optional: size_vector
      * values (the instance's f->size_vector starts from it; create may
      * change it), vector(g, f, i) returns value i (1-based) at the current

@@ -16,59 +16,28 @@
 #include "dump.h"
 #include "error.h"
 #include "fix.h"
+#include "dump_mesh.h"
 #include "fix_mesh_surface.h"
-
-struct mvtk {
-    int nmesh;
-    char (*id)[GR_NAMELEN];
-};
 
 static void mv_create(struct gravel *g, struct dump *d, int argc, char **argv)
 {
-    struct mvtk *mv = gr_calloc(g, 1, sizeof *mv);
-    d->data = mv;
-    if (argc) {
-        mv->id = gr_calloc(g, (size_t)argc, sizeof *mv->id);
-        for (int i = 0; i < argc; i++) {
-            mesh_surface_get(g, argv[i], "dump mesh/vtk");
-            snprintf(mv->id[i], GR_NAMELEN, "%s", argv[i]);
-        }
-        mv->nmesh = argc;
-    }
+    struct dump_meshes *dm = gr_calloc(g, 1, sizeof *dm);
+    d->data = dm;
+    for (int i = 0; i < argc; i++)
+        dump_meshes_add(g, dm, argv[i], "dump mesh/vtk");
 }
 
 static void mv_destroy(struct dump *d)
 {
-    struct mvtk *mv = d->data;
-    if (mv)
-        free(mv->id);
-    free(mv);
+    if (d->data)
+        dump_meshes_free(d->data);
+    free(d->data);
     d->data = NULL;
-}
-
-/* The meshes to write: the listed ones, else every fix mesh/surface. */
-static int mesh_list(struct gravel *g, struct dump *d, struct fix **out, int cap)
-{
-    struct mvtk *mv = d->data;
-    int n = 0;
-    for (int k = 0; k < g->styles.nfix && n < cap; k++) {
-        struct fix *f = g->styles.fix[k];
-        if (f->style != &fix_style_mesh_surface)
-            continue;
-        int want = mv->nmesh == 0;
-        for (int i = 0; i < mv->nmesh; i++)
-            want |= !strcmp(mv->id[i], f->id);
-        if (want)
-            out[n++] = f;
-    }
-    return n;
 }
 
 static void mv_init(struct gravel *g, struct dump *d)
 {
-    struct mvtk *mv = d->data;
-    for (int i = 0; i < mv->nmesh; i++)
-        mesh_surface_get(g, mv->id[i], "dump mesh/vtk");
+    dump_meshes_check(g, d->data, "dump mesh/vtk");
 }
 
 #define MAXM 64
@@ -78,7 +47,7 @@ static void mv_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx,
     (void)idx;
     (void)n;
     struct fix *fx[MAXM];
-    int nm = mesh_list(g, d, fx, MAXM);
+    int nm = dump_meshes_list(g, d->data, fx, MAXM);
     struct mesh_pose pose[MAXM];
     int nv = 0, nt = 0;
     for (int m = 0; m < nm; m++) {
@@ -96,12 +65,9 @@ static void mv_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx,
     fprintf(fp, "POINTS %d double\n", nv);
     for (int m = 0; m < nm; m++) {
         const struct mesh_surface *ms = fx[m]->data;
-        const double *R = pose[m].R, *dd = pose[m].d;
         for (int v = 0; v < ms->m.nvert; v++) {
-            const double *p = ms->m.vert + 3 * v;
             double q[3];
-            for (int r = 0; r < 3; r++)
-                q[r] = R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2] + dd[r];
+            mesh_pose_point(&pose[m], ms->m.vert + 3 * v, q);
             fprintf(fp, "%.17g %.17g %.17g\n", q[0], q[1], q[2]);
         }
     }
@@ -135,12 +101,9 @@ static void mv_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx,
     fprintf(fp, "normal 3 %d double\n", nt);
     for (int m = 0; m < nm; m++) {
         const struct mesh_surface *ms = fx[m]->data;
-        const double *R = pose[m].R;
         for (int t = 0; t < ms->m.ntri; t++) {
-            const double *p = ms->normal + 3 * t;
             double q[3];
-            for (int r = 0; r < 3; r++)
-                q[r] = R[3 * r] * p[0] + R[3 * r + 1] * p[1] + R[3 * r + 2] * p[2];
+            mesh_pose_vector(&pose[m], ms->normal + 3 * t, q);
             fprintf(fp, "%.17g %.17g %.17g\n", q[0], q[1], q[2]);
         }
     }
@@ -153,13 +116,8 @@ static void mv_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx,
             for (int k = 0; k < 3; k++)
                 for (int r = 0; r < 3; r++)
                     c[r] += ms->m.vert[3 * ms->m.tri[3 * t + k] + r] / 3.0;
-            for (int r = 0; r < 3; r++)
-                q[r] = ps->R[3 * r] * c[0] + ps->R[3 * r + 1] * c[1] + ps->R[3 * r + 2] * c[2] +
-                       ps->d[r];
-            const double *om = ps->omega;
-            v[0] = ps->V0[0] + om[1] * q[2] - om[2] * q[1];
-            v[1] = ps->V0[1] + om[2] * q[0] - om[0] * q[2];
-            v[2] = ps->V0[2] + om[0] * q[1] - om[1] * q[0];
+            mesh_pose_point(ps, c, q);
+            mesh_pose_velocity(ps, q, v);
             fprintf(fp, "%.17g %.17g %.17g\n", v[0], v[1], v[2]);
         }
     }

@@ -105,17 +105,13 @@ static double mesh_vmax_sq(struct gravel *g)
             continue;
         struct mesh_pose p;
         mesh_surface_pose(g, m->id, &p);
-        if (!p.moving)
+        if (!p.moving || ms->has_surface_vel) /* LIGGGHTS: isMoving(), not a conveyor's */
             continue;
         for (int v = 0; v < ms->m.nvert; v++) {
             const double *x0 = ms->m.vert + 3 * (size_t)v;
             double x[3], u[3];
-            for (int r = 0; r < 3; r++)
-                x[r] = p.R[3 * r] * x0[0] + p.R[3 * r + 1] * x0[1] + p.R[3 * r + 2] * x0[2] +
-                       p.d[r];
-            u[0] = p.V0[0] + p.omega[1] * x[2] - p.omega[2] * x[1];
-            u[1] = p.V0[1] + p.omega[2] * x[0] - p.omega[0] * x[2];
-            u[2] = p.V0[2] + p.omega[0] * x[1] - p.omega[1] * x[0];
+            mesh_pose_point(&p, x0, x);
+            mesh_pose_velocity(&p, x, u);
             double s = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
             if (s > vmax)
                 vmax = s;

@@ -25,6 +25,7 @@
  * 4/3 pi r^3 density, the vel and omega values. Full contract:
  * doc/styles/fix_insert_pack.md. */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -254,13 +255,14 @@ void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
     if (argc < 4)
         gr_error(g, "%s: not enough arguments (expected seed S distributiontemplate ID ...)",
                  who);
-    struct insert *in = gr_calloc(g, 1, sizeof *in);
+    struct insert *in = f->data ? f->data : gr_calloc(g, 1, sizeof *in);
     f->data = in;
     in->ops = ops;
     if (strcmp(argv[0], "seed"))
         gr_error(g, "%s: expecting keyword 'seed', got '%.64s'", who, argv[0]);
     in->seed = liggghts_seed(g, argv[1], who);
     rng_park_init(&in->rng, in->seed);
+    in->rrng_seed = in->seed + SEED_OFFSET;
     /* LIGGGHTS's defaults */
     in->ninsert_exists = 1;
     in->insert_every = -1;
@@ -306,8 +308,7 @@ void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
     in->maxrad = in->dist->maxrad;
     f->force_reneighbor = 1;
     f->next_reneighbor = in->first_ins_step;
-    f->time_depend = 1;
-    f->hooks = HOOK_PRE_EXCHANGE;
+    f->hooks = HOOK_PRE_EXCHANGE; /* no time_depend: reset_timestep moves the schedule */
 }
 
 /* ---- the region (LIGGGHTS Region: extent, match_cut, volume_mc) -------- */
@@ -370,6 +371,33 @@ void insert_region_check_box(struct gravel *g, struct insert *in)
                          in->ops->who, r->id);
 }
 
+/* LIGGGHTS's Region::volume_mc: ntry_mc points of the region's bounds from
+ * the region stream (3 draws each); the volume is the share in the region
+ * and the box times the bounds' volume. */
+static void region_volume_mc(struct gravel *g, struct insert *in)
+{
+    const char *who = in->ops->who;
+    struct region *r = in->reg;
+    const double *lo = r->bbox_lo, *hi = r->bbox_hi;
+    long n_in = 0;
+    region_prematch(g, r);
+    for (int i = 0; i < in->ntry_mc; i++) {
+        double x[3];
+        for (int d = 0; d < 3; d++)
+            x[d] = lo[d] + rng_park_uniform(&in->rrng) * (hi[d] - lo[d]);
+        if (in_box(g, x) && region_match(r, x))
+            n_in++;
+    }
+    if (n_in == 0)
+        gr_error(g, "%s: Unable to calculate region volume of %s: region volume is too small "
+                    "or out of domain, or the particles are too large for all_in yes", who,
+                 r->id);
+    double vbox = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+    in->region_volume = (double)n_in / (double)in->ntry_mc * vbox;
+    if (!(in->region_volume > 0.) || !isfinite(in->region_volume))
+        gr_error(g, "%s: Region volume calculation with MC failed (%g)", who, in->region_volume);
+}
+
 void insert_region_setup(struct gravel *g, struct insert *in)
 {
     const char *who = in->ops->who;
@@ -392,25 +420,64 @@ void insert_region_setup(struct gravel *g, struct insert *in)
     if (r->openflag)
         gr_error(g, "%s: region %s has open faces (it matches every point)", who, r->id);
     gr_print(g, "INFO: Resetting random generator for region %s\n", r->id);
-    rng_park_init(&in->rrng, in->seed + SEED_OFFSET);
-    const double *lo = r->bbox_lo, *hi = r->bbox_hi;
-    long n_in = 0;
-    region_prematch(g, r);
-    for (int i = 0; i < in->ntry_mc; i++) {
-        double x[3];
-        for (int d = 0; d < 3; d++)
-            x[d] = lo[d] + rng_park_uniform(&in->rrng) * (hi[d] - lo[d]);
-        if (in_box(g, x) && region_match(r, x))
-            n_in++;
+    rng_park_init(&in->rrng, in->rrng_seed);
+    region_volume_mc(g, in);
+}
+
+int insert_box_changes(const struct gravel *g)
+{
+    for (int d = 0; d < 3; d++)
+        for (int e = 0; e < 2; e++)
+            if (g->dom.bnd[d][e] == 's' || g->dom.bnd[d][e] == 'm')
+                return 1;
+    return 0;
+}
+
+double insert_region_fraction(struct gravel *g, struct insert *in)
+{
+    if (insert_box_changes(g))
+        region_volume_mc(g, in);
+    return 1.0;
+}
+
+void insert_rate_counts(struct gravel *g, struct insert *in, double tiny)
+{
+    const char *who = in->ops->who;
+    const struct pdist *d = in->dist;
+    if (in->ninsert == 0 && in->ninsert_exists) {
+        if (in->massinsert > 0.) {
+            double n = (in->massinsert + tiny) / d->massexpect;
+            if (!(n < 2147483647.0))
+                gr_error(g, "%s: mass %g is too many particles", who, in->massinsert);
+            in->ninsert = (int)n;
+        } else
+            gr_error(g, "%s: must define either 'nparticles' or 'mass'", who);
     }
-    if (n_in == 0)
-        gr_error(g, "%s: Unable to calculate region volume of %s: region volume is too small "
-                    "or out of domain, or the particles are too large for all_in yes", who,
-                 r->id);
-    double vbox = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-    in->region_volume = (double)n_in / (double)in->ntry_mc * vbox;
-    if (!(in->region_volume > 0.) || !isfinite(in->region_volume))
-        gr_error(g, "%s: Region volume calculation with MC failed (%g)", who, in->region_volume);
+    if (in->nflowrate == 0.) {
+        if (in->massflowrate == 0.)
+            gr_error(g, "%s: must define either 'massrate' or 'particlerate'", who);
+        in->nflowrate = in->massflowrate / d->massexpect;
+    } else
+        in->massflowrate = in->nflowrate * d->massexpect;
+    in->ninsert_per = in->nflowrate * ((double)in->insert_every * g->dt);
+    if (in->ninsert_exists)
+        in->massinsert = (double)in->ninsert * d->massexpect;
+    if (!(in->ninsert_per < 1e9))
+        gr_error(g, "%s: %g particles per insertion step is too many", who, in->ninsert_per);
+}
+
+int insert_maxtry(const struct insert *in, int n)
+{
+    double t = (double)n * in->maxattempt;
+    return t < 2147483647.0 ? (int)t : 2147483647;
+}
+
+int insert_rate_reserve(const struct gravel *g, const struct insert *in)
+{
+    /* before the first run's setup the rate is not yet derived */
+    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
+    double per = rate * (double)in->insert_every * g->dt + 1;
+    return per < 1e9 ? (int)per : 1000000000;
 }
 
 int insert_ninsert_rate(struct gravel *g, struct insert *in)
@@ -425,7 +492,7 @@ int insert_ninsert_rate(struct gravel *g, struct insert *in)
 
 /* A random point of the region within the box (LIGGGHTS generate_random and
  * generate_random_shrinkby_cut with the sub-domain = the box). */
-static void random_point(struct gravel *g, struct insert *in, double cut, double x[3])
+void insert_region_point(struct gravel *g, struct insert *in, double cut, double x[3])
 {
     const struct region *r = in->reg;
     double lo[3], hi[3];
@@ -455,8 +522,15 @@ static void random_point(struct gravel *g, struct insert *in, double cut, double
     }
 }
 
-/* LIGGGHTS Domain::dist_subbox_borders with the sub-box = the box. */
-static double dist_box(const struct gravel *g, const double x[3])
+int insert_in_subdomain(const struct gravel *g, const double x[3])
+{
+    for (int d = 0; d < 3; d++)
+        if (!(x[d] >= g->dom.lo[d] && x[d] < g->dom.hi[d]))
+            return 0;
+    return 1;
+}
+
+double insert_dist_box(const struct gravel *g, const double x[3])
 {
     double dlo = INFINITY, dhi = INFINITY;
     for (int d = 0; d < 3; d++) {
@@ -465,6 +539,23 @@ static double dist_box(const struct gravel *g, const double x[3])
         dhi = b < dhi ? b : dhi;
     }
     return dlo < dhi ? dlo : dhi;
+}
+
+int insert_region_redraw(const struct gravel *g, const struct insert *in, const double x[3],
+                         double r)
+{
+    return in->check_ol && in->check_border && insert_dist_box(g, x) < r;
+}
+
+int insert_region_nearby(const struct gravel *g, const struct insert *in, const double x[3],
+                         double r)
+{
+    (void)g;
+    const double *lo = in->reg->bbox_lo, *hi = in->reg->bbox_hi, cut = r + 2 * in->maxrad;
+    for (int d = 0; d < 3; d++)
+        if (x[d] < lo[d] - cut || x[d] > hi[d] + cut)
+            return 0;
+    return 1;
 }
 
 static void near_add(struct gravel *g, struct insert *in, const double x[3], double r)
@@ -477,15 +568,13 @@ static void near_add(struct gravel *g, struct insert *in, const double x[3], dou
     q[0] = x[0], q[1] = x[1], q[2] = x[2], q[3] = r;
 }
 
-/* The existing atoms (and periodic images) that could touch a particle
- * placed in the region: within 2 maxrad + their radius of its bounds. */
+/* The existing atoms and their periodic images that the style calls near
+ * (LIGGGHTS's load_xnear over local and ghost atoms). */
 static void load_near(struct gravel *g, struct insert *in)
 {
     const struct atoms *a = &g->atoms;
-    const double *lo = in->reg->bbox_lo, *hi = in->reg->bbox_hi;
     in->nnear = 0;
-    for (int i = 0; i < a->n; i++) {
-        double cut = a->radius[i] + 2 * in->maxrad;
+    for (int i = 0; i < a->n; i++)
         for (int sx = -1; sx <= 1; sx++)
             for (int sy = -1; sy <= 1; sy++)
                 for (int sz = -1; sz <= 1; sz++) {
@@ -495,13 +584,10 @@ static void load_near(struct gravel *g, struct insert *in)
                         if (s[d] && !g->dom.periodic[d])
                             ok = 0;
                         x[d] = a->x[3 * i + d] + s[d] * (g->dom.hi[d] - g->dom.lo[d]);
-                        if (x[d] < lo[d] - cut || x[d] > hi[d] + cut)
-                            ok = 0;
                     }
-                    if (ok)
+                    if (ok && in->ops->nearby(g, in, x, a->radius[i]))
                         near_add(g, in, x, a->radius[i]);
                 }
-    }
 }
 
 static int overlaps(const struct insert *in, const double x[3], double r)
@@ -528,31 +614,52 @@ static void random_velocity(struct insert *in, double v[3])
             v[d] = in->v[d] + in->vfluct[d] * rng_park_gaussian(&in->rng);
 }
 
-/* FixInsertPack::x_v_omega: positions (and velocities) of list[0..n); returns
- * how many were placed (the first ones). vel[] gets their velocities. */
+static void velocity(struct insert *in, double v[3])
+{
+    if (in->ops->velocity)
+        in->ops->velocity(in, v);
+    else
+        random_velocity(in, v);
+}
+
+/* One try of LIGGGHTS's x_v_omega: candidates until one is not refused or
+ * the step's tries run out; 1 when x holds a usable candidate. */
+static int try_point(struct gravel *g, struct insert *in, double r, double x[3], long *ntry,
+                     long maxtry)
+{
+    do {
+        in->ops->point(g, in, r, x);
+        (*ntry)++;
+    } while (*ntry < maxtry && in->ops->redraw(g, in, x, r));
+    return *ntry < maxtry;
+}
+
+/* x_v_omega of FixInsertPack and FixInsertStream: positions (and
+ * velocities) of list[0..n); returns how many were placed (the first
+ * ones). vel[] gets their velocities. Without the overlap check every
+ * particle gets one try (a failed one is skipped); with it, particles are
+ * placed in list order until the tries run out. */
 static int place(struct gravel *g, struct insert *in, int n, double *vel)
 {
     int placed = 0;
+    long ntry = 0, maxtry = in->ops->maxtry(in, n);
     if (!in->check_ol) {
-        for (; placed < n; placed++) {
+        for (int k = 0; k < n; k++) {
             struct ins_particle *p = in->list + placed;
-            random_point(g, in, p->radius, p->x);
-            random_velocity(in, vel + 3 * placed);
+            if (try_point(g, in, p->radius, p->x, &ntry, maxtry)) {
+                velocity(in, vel + 3 * placed);
+                placed++;
+            }
         }
         return placed;
     }
-    long ntry = 0, maxtry = in->ops->maxtry(in, n);
     while (ntry < maxtry && placed < n) {
         struct ins_particle *p = in->list + placed;
         int ok = 0;
         while (!ok && ntry < maxtry) {
-            do {
-                random_point(g, in, p->radius, p->x);
-                ntry++;
-            } while (in->check_border && ntry < maxtry && dist_box(g, p->x) < p->radius);
-            if (ntry == maxtry)
+            if (!try_point(g, in, p->radius, p->x, &ntry, maxtry))
                 break;
-            random_velocity(in, vel + 3 * placed);
+            velocity(in, vel + 3 * placed);
             if (!overlaps(in, p->x, p->radius)) {
                 near_add(g, in, p->x, p->radius);
                 ok = 1;
@@ -643,8 +750,10 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
             n = 0;
         exact = in->exact_number = 1;
     }
-    if (!exact) /* distribute_ninsert_this on one process: int(n + u) */
-        n = (int)((double)n + rng_park_uniform(&in->rng));
+    /* distribute_ninsert_this on one process: int(fraction n + u) */
+    double frac = in->ops->fraction ? in->ops->fraction(g, in) : 1.0;
+    if (!exact)
+        n = (int)(frac * (double)n + rng_park_uniform(&in->rng));
     int cap = pdist_max_count(in->dist, n);
     if (cap > in->list_cap) {
         in->list = gr_realloc(g, in->list, (size_t)cap * sizeof *in->list);
@@ -683,6 +792,8 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
     }
     free(vel);
     eng_append(g, nold);
+    if (in->ops->finalize)
+        in->ops->finalize(g, f, nold, placed);
     in->ninserted += placed;
     in->massinserted += mass_now;
     if (in->verbose)
@@ -703,8 +814,8 @@ int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
     bigint next = f->next_reneighbor, last = g->step + nsteps;
     if (next <= g->step || next > last)
         return 0;
-    bigint steps = in->insert_every > 0 ? (last - next) / in->insert_every + 1 : 1;
     double per = (double)in->ops->reserve(g, in, nsteps) + in->dist->n + 2;
+    bigint steps = in->insert_every > 0 ? (last - next) / in->insert_every + 1 : 1;
     double total = per * (double)steps;
     /* the total is known once the first run's setup has derived it (mass M) */
     if (in->ninsert_exists && in->setup_done &&
@@ -733,18 +844,32 @@ void insert_destroy(struct fix *f)
     free(in);
 }
 
+void insert_reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    struct insert *in = f->data;
+    if (f->next_reneighbor > 0) /* LIGGGHTS's FixInsert::reset_timestep (a stopped fix stays so) */
+        f->next_reneighbor += shift;
+    in->clock_shift += shift;
+}
+
 /* Restart state: the streams, counts and schedule (LIGGGHTS writes the
- * stream, ninserted, first step, next step and mass inserted). */
+ * stream, ninserted, first step, next step and mass inserted), and the step
+ * it was written at: the next insertion moves with the reset_timestep
+ * commands between read_restart and the run, as in LIGGGHTS, where the
+ * state is restored when the fix is defined. Files without that step
+ * (older builds) are read as written at the current step. */
 struct insert_saved {
     struct rng_park rng, rrng;
     int ninserted, ninsert, exact_number, setup_done;
     double massinserted, massinsert, region_volume, ninsert_per, nflowrate, massflowrate;
     int64_t first_ins_step, final_ins_step, most_recent, next_reneighbor;
+    int64_t step, clock_shift;
 };
+#define SAVED_OLD offsetof(struct insert_saved, step)
 
 size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
-    (void)g;
     const struct insert *in = f->data;
     struct insert_saved s;
     memset(&s, 0, sizeof s);
@@ -756,6 +881,8 @@ size_t insert_write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
     s.nflowrate = in->nflowrate, s.massflowrate = in->massflowrate;
     s.first_ins_step = in->first_ins_step, s.final_ins_step = in->final_ins_step;
     s.most_recent = in->most_recent, s.next_reneighbor = f->next_reneighbor;
+    s.step = g->step;
+    s.clock_shift = in->clock_shift;
     if (buf && cap >= sizeof s)
         memcpy(buf, &s, sizeof s);
     return sizeof s;
@@ -765,9 +892,11 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
 {
     struct insert *in = f->data;
     struct insert_saved s;
-    if (len != sizeof s)
+    if (len != sizeof s && len != SAVED_OLD)
         gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len, sizeof s);
-    memcpy(&s, buf, sizeof s);
+    s.step = g->step;
+    s.clock_shift = 0;
+    memcpy(&s, buf, len);
     in->rng = s.rng, in->rrng = s.rrng;
     in->ninserted = s.ninserted, in->ninsert = s.ninsert;
     in->exact_number = s.exact_number, in->setup_done = s.setup_done;
@@ -777,4 +906,7 @@ void insert_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     in->first_ins_step = s.first_ins_step, in->final_ins_step = s.final_ins_step;
     in->most_recent = s.most_recent;
     f->next_reneighbor = s.next_reneighbor;
+    in->clock_shift = s.clock_shift;
+    rng_park_init(&in->rrng, in->rrng_seed); /* LIGGGHTS reseeds it (region, mesh) */
+    insert_reset_step(g, f, g->step - s.step);
 }

@@ -10,6 +10,7 @@
  * fix's stream). Tries per step: n maxattempt / (1 - ratio of the target
  * already in R). The insertion step itself: fix_insert.c. Full contract:
  * doc/styles/fix_insert_pack.md. */
+#include <limits.h>
 #include <math.h>
 
 #include "error.h"
@@ -74,6 +75,8 @@ static int ninsert_this(struct gravel *g, struct insert *in)
 
 static int maxtry(const struct insert *in, int n)
 {
+    if (!in->check_ol)
+        return INT_MAX; /* one try each, no limit */
     if (in->insertion_ratio >= 1.)
         return n * in->maxattempt;
     double t = (double)(n * in->maxattempt) / (1. - in->insertion_ratio);
@@ -120,6 +123,10 @@ static const struct insert_ops ops = {
     .ninsert_this = ninsert_this,
     .maxtry = maxtry,
     .reserve = reserve,
+    .point = insert_region_point,
+    .redraw = insert_region_redraw,
+    .nearby = insert_region_nearby,
+    .fraction = insert_region_fraction,
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -138,6 +145,7 @@ const struct fix_style fix_style_insert_pack = {
     .destroy = insert_destroy,
     .write_restart = insert_write_restart,
     .read_restart = insert_read_restart,
+    .reset_step = insert_reset_step,
     .size_vector = 2,
     .vector = insert_vector,
 };

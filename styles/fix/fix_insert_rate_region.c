@@ -8,6 +8,7 @@
  * fix_insert.c; the region keywords as fix insert/pack (volume, count and
  * mass targets are not used). Full contract:
  * doc/styles/fix_insert_rate_region.md. */
+#include <limits.h>
 #include <math.h>
 
 #include "error.h"
@@ -27,27 +28,7 @@ static void properties(struct gravel *g, struct insert *in)
     if (in->volfrac > 0. || in->ntotal_region > 0 || in->masstotal_region > 0.)
         gr_error(g, WHO ": volumefraction_region, particles_in_region and mass_in_region are "
                     "insert/pack keywords (use nparticles or mass with a rate)");
-    const struct pdist *d = in->dist;
-    if (in->ninsert == 0 && in->ninsert_exists) {
-        if (in->massinsert > 0.) {
-            double n = in->massinsert / d->massexpect;
-            if (!(n < 2147483647.0))
-                gr_error(g, WHO ": mass %g is too many particles", in->massinsert);
-            in->ninsert = (int)n;
-        } else
-            gr_error(g, WHO ": must define either 'nparticles' or 'mass'");
-    }
-    if (in->nflowrate == 0.) {
-        if (in->massflowrate == 0.)
-            gr_error(g, WHO ": must define either 'massrate' or 'particlerate'");
-        in->nflowrate = in->massflowrate / d->massexpect;
-    } else
-        in->massflowrate = in->nflowrate * d->massexpect;
-    in->ninsert_per = in->nflowrate * ((double)in->insert_every * g->dt);
-    if (in->ninsert_exists)
-        in->massinsert = (double)in->ninsert * d->massexpect;
-    if (!(in->ninsert_per < 1e9))
-        gr_error(g, WHO ": %g particles per insertion step is too many", in->ninsert_per);
+    insert_rate_counts(g, in, 0.);
 }
 
 static int ninsert_this(struct gravel *g, struct insert *in)
@@ -58,17 +39,13 @@ static int ninsert_this(struct gravel *g, struct insert *in)
 
 static int maxtry(const struct insert *in, int n)
 {
-    double t = (double)n * in->maxattempt;
-    return t < 2147483647.0 ? (int)t : 2147483647;
+    return in->check_ol ? insert_maxtry(in, n) : INT_MAX; /* no check: one try each */
 }
 
 static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
 {
     (void)nsteps;
-    /* before the first run's setup the rate is not yet derived */
-    double rate = in->nflowrate > 0 ? in->nflowrate : in->massflowrate / in->dist->massexpect;
-    double per = rate * (double)in->insert_every * g->dt + 1;
-    return per < 1e9 ? (int)per : 1000000000;
+    return insert_rate_reserve(g, in);
 }
 
 static const struct insert_ops ops = {
@@ -78,6 +55,10 @@ static const struct insert_ops ops = {
     .ninsert_this = ninsert_this,
     .maxtry = maxtry,
     .reserve = reserve,
+    .point = insert_region_point,
+    .redraw = insert_region_redraw,
+    .nearby = insert_region_nearby,
+    .fraction = insert_region_fraction,
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -94,6 +75,7 @@ const struct fix_style fix_style_insert_rate_region = {
     .destroy = insert_destroy,
     .write_restart = insert_write_restart,
     .read_restart = insert_read_restart,
+    .reset_step = insert_reset_step,
     .size_vector = 2,
     .vector = insert_vector,
 };

@@ -119,6 +119,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             arg_need(g, argc, i, 1, kw);
             arg_yesno(g, argv[i + 1], "verbose");
             i += 2;
+        } else if (!strcmp(kw, "surface_vel")) {
+            arg_need(g, argc, i, 3, kw);
+            for (int k = 0; k < 3; k++)
+                ms->surface_vel[k] = arg_double(g, argv[i + 1 + k], "surface_vel");
+            ms->has_surface_vel = 1;
+            i += 4;
         } else if (!strcmp(kw, "reference_point")) {
             arg_need(g, argc, i, 3, kw);
             for (int k = 0; k < 3; k++)
@@ -127,8 +133,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 4;
         } else {
             gr_error(g, "unknown fix mesh/surface keyword '%.64s' (expected type, scale, move, "
-                        "rotate, precision, reference_point, temperature, curvature, heal or "
-                        "verbose)", kw);
+                        "rotate, precision, reference_point, surface_vel, temperature, curvature, "
+                        "heal or verbose)", kw);
         }
     }
     if (!type)
@@ -138,6 +144,15 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     ms->type = type;
     ms->cache_step = -1;
     mesh_surface_normals(g, ms);
+    /* LIGGGHTS gives each triangle surface_vel projected on its plane and scaled back to
+     * |surface_vel|: one velocity for the mesh only when it lies in every triangle */
+    for (int t = 0; ms->has_surface_vel && t < ms->m.ntri; t++) {
+        const double *n = ms->normal + 3 * t, *v = ms->surface_vel;
+        double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+        if (fabs(vn) > 1e-6 * sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]))
+            gr_error(g, "fix mesh/surface: surface_vel is not in the plane of triangle %d (a "
+                        "surface velocity that turns with the triangles is not supported)", t);
+    }
     f->hooks = 0;
 }
 
@@ -256,9 +271,7 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
         struct mesh_pose p;
         mesh_surface_pose_of(g, ms, mw->own[m] ? NULL : mw->id[m], &p);
         double ref[3];
-        for (int r = 0; r < 3; r++)
-            ref[r] = p.R[3 * r] * ms->ref[0] + p.R[3 * r + 1] * ms->ref[1] +
-                     p.R[3 * r + 2] * ms->ref[2] + p.d[r];
+        mesh_pose_point(&p, ms->ref, ref);
         mesh_surface_fmesh_reserve(g, ms, a->n);
         if (pair_types)
             law->by_type = ms->type;
@@ -298,6 +311,38 @@ static void mat_vec(const double A[9], const double v[3], double out[3])
     for (int r = 0; r < 3; r++)
         t[r] = A[3 * r] * v[0] + A[3 * r + 1] * v[1] + A[3 * r + 2] * v[2];
     memcpy(out, t, sizeof t);
+}
+
+void mesh_surface_bake(struct gravel *g, const char *id)
+{
+    struct mesh_surface *ms = mesh_surface_get(g, id, "unfix");
+    struct mesh_pose p;
+    mesh_surface_pose(g, id, &p);
+    for (int v = 0; v < ms->m.nvert; v++)
+        mesh_pose_point(&p, ms->m.vert + 3 * v, ms->m.vert + 3 * v);
+    for (int t = 0; t < ms->m.ntri; t++)
+        mesh_pose_vector(&p, ms->normal + 3 * t, ms->normal + 3 * t);
+    mesh_pose_point(&p, ms->ref, ms->ref);
+}
+
+void mesh_pose_vector(const struct mesh_pose *p, const double v0[3], double v[3])
+{
+    mat_vec(p->R, v0, v);
+}
+
+void mesh_pose_point(const struct mesh_pose *p, const double x0[3], double x[3])
+{
+    mat_vec(p->R, x0, x);
+    for (int r = 0; r < 3; r++)
+        x[r] += p->d[r];
+}
+
+void mesh_pose_velocity(const struct mesh_pose *p, const double x[3], double u[3])
+{
+    const double *om = p->omega;
+    u[0] = p->V0[0] + om[1] * x[2] - om[2] * x[1];
+    u[1] = p->V0[1] + om[2] * x[0] - om[0] * x[2];
+    u[2] = p->V0[2] + om[0] * x[1] - om[1] * x[0];
 }
 
 void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p)
@@ -373,6 +418,12 @@ void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const
     memcpy(p->R, R, sizeof R);
     memcpy(p->d, d, sizeof d);
     p->moving = moving;
+    const struct mesh_surface *ms = mesh_surface_get(g, id, "mesh pose");
+    if (ms->has_surface_vel) { /* the surface moves, the mesh stays (no move/mesh: create) */
+        memcpy(p->V0, ms->surface_vel, sizeof p->V0);
+        p->moving = 1;
+        return;
+    }
     if (!moving)
         return;
     /* [omega]x = Rd R^T */
@@ -426,14 +477,10 @@ static double vector(struct gravel *g, struct fix *f, int i)
             free(idx);
             struct mesh_pose p;
             mesh_surface_pose(g, f->id, &p);
-            double ref[3];
-            mat_vec(p.R, ms->ref, ref);
-            for (int c = 0; c < 3; c++)
-                ref[c] += p.d[c];
+            double ref[3], vref[3];
+            mesh_pose_point(&p, ms->ref, ref);
+            mesh_pose_velocity(&p, ref, vref);
             const double *om = p.omega;
-            double vref[3] = {p.V0[0] + om[1] * ref[2] - om[2] * ref[1],
-                              p.V0[1] + om[2] * ref[0] - om[0] * ref[2],
-                              p.V0[2] + om[0] * ref[1] - om[1] * ref[0]};
             double pw = 0;
             for (int c = 0; c < 3; c++)
                 pw += ms->cache[c] * vref[c] + ms->cache[3 + c] * om[c];

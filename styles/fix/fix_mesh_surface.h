@@ -29,6 +29,8 @@ struct mesh_surface {
     double *normal;             /* unit normal per triangle (right hand over vertices 0 1 2) */
     int type;                   /* wall material type */
     double curvature, temperature;
+    double surface_vel[3];      /* LIGGGHTS's surface_vel: the surface moves in place */
+    int has_surface_vel;
     double ref[3];              /* torque reference point (moves with the mesh) */
     int ref_set;
     /* filled by fix wall/gran ... mesh: per atom force on the mesh and torque about ref */
@@ -69,6 +71,19 @@ void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const
 void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms);
 /* Free what ms holds (not ms itself). */
 void mesh_surface_free(struct mesh_surface *ms);
+
+/* The mesh of fix `id` takes its pose of the current step as its own frame
+ * (vertices, normals, torque reference): what `unfix` of its one fix
+ * move/mesh leaves, the mesh where the motion put it (LIGGGHTS). */
+void mesh_surface_bake(struct gravel *g, const char *id);
+
+/* x = R x0 + d: a point of the mesh's own frame at the pose (x may be x0). */
+void mesh_pose_point(const struct mesh_pose *p, const double x0[3], double x[3]);
+/* v = R v0: a direction (a normal) at the pose (v may be v0). */
+void mesh_pose_vector(const struct mesh_pose *p, const double v0[3], double v[3]);
+
+/* u = V0 + omega x x: the surface velocity at the lab point x. */
+void mesh_pose_velocity(const struct mesh_pose *p, const double x[3], double u[3]);
 
 /* At a wall fix's init: make f the one wall of the mesh (its force output);
  * an error when another wall fix still holds it. */

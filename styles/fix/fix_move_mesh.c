@@ -30,6 +30,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix move/mesh expects 'mesh MESHID style args' (style linear, wiggle or "
                     "rotate)");
     struct mesh_surface *ms = mesh_surface_get(g, argv[1], "fix move/mesh");
+    if (ms->has_surface_vel)
+        gr_error(g, "fix move/mesh: cannot apply move to a mesh using keyword 'surface_vel' "
+                    "(mesh %s)", argv[1]);
     struct mesh_motion mo;
     memset(&mo, 0, sizeof mo);
     snprintf(mo.mesh, sizeof mo.mesh, "%s", argv[1]);
@@ -106,9 +109,27 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
     ((struct mesh_motion *)f->data)->time_origin += shift;
 }
 
+/* unfix: the mesh stays where the motion put it (LIGGGHTS moves the mesh's
+ * nodes). With other motions on the mesh the pose is a composition that
+ * baking would break: refused (LIGGGHTS allows unfixing the last one). */
+static void unfix(struct gravel *g, struct fix *f)
+{
+    const struct mesh_motion *mo = f->data;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *o = g->styles.fix[i];
+        if (o != f && o->style == f->style && !strcmp(((struct mesh_motion *)o->data)->mesh,
+                                                       mo->mesh))
+            gr_error(g, "unfix %s: fix move/mesh %s also moves mesh %s: unfixing one of "
+                        "superposed fix move/mesh commands is not supported", f->id, o->id,
+                     mo->mesh);
+    }
+    mesh_surface_bake(g, mo->mesh);
+}
+
 const struct fix_style fix_style_move_mesh = {
     .name = "move/mesh",
     .create = create,
+    .unfix = unfix,
     .reset_step = reset_step,
     .write_restart = write_restart,
     .read_restart = read_restart,
