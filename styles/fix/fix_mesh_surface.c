@@ -418,9 +418,9 @@ void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const
     memcpy(p->R, R, sizeof R);
     memcpy(p->d, d, sizeof d);
     p->moving = moving;
-    const struct mesh_surface *ms = mesh_surface_get(g, id, "mesh pose");
-    if (ms->has_surface_vel) { /* the surface moves, the mesh stays (no move/mesh: create) */
-        memcpy(p->V0, ms->surface_vel, sizeof p->V0);
+    const struct mesh_surface *sm = ms ? ms : mesh_surface_get(g, id, "mesh pose");
+    if (sm->has_surface_vel) { /* the surface moves, the mesh stays (no move/mesh: create) */
+        memcpy(p->V0, sm->surface_vel, sizeof p->V0);
         p->moving = 1;
         return;
     }
