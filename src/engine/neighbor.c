@@ -56,7 +56,7 @@ struct nbr {
     double lmp_cutmax;          /* -compat lammps2021: LAMMPS's cutneighmax (its bins) */
     int nexg;
     int ago;
-    int opened;                 /* the last pair_gather ran this step's opening (nbr_step_ahead) */
+    int opened;                 /* the last pair_gather ran this step's opening (nbr_step_args) */
     double corners_hold[8][3];  /* box corners at the last build */
     int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */

@@ -7,7 +7,8 @@
  * then pair_gather, which also clears f and torque) -> post_force fixes -> final_integrate fixes -> end_of_step fixes
  * -> output. Per-particle fix work fuses into the check and gather kernels
  * where it can (src/engine/fused.h); the other fixes run from hook lists built once
- * per run. Setup (Verlet::setup) rebuilds the list and computes the step-0
+ * per run. When every fix fused and no output is due, a step's pair_gather also
+ * opens the next step (step_lookahead; kernels/atom_step.cl). Setup (Verlet::setup) rebuilds the list and computes the step-0
  * forces with the history frozen (shearupdate = 0), then calls post_force of
  * every fix.
  *
