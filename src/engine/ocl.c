@@ -91,22 +91,18 @@ static int list_devices(struct gravel *g, cl_platform_id *plat, cl_device_id *de
 }
 
 /* The lane widths (struct ocl): env GRAVEL_LANES = 1, 2, 4, 8 or 16, or
- * "device" (the device's preferred vector width of the precision). By
- * default a CPU device's preferred width, at most 32 bytes of lanes (4
- * double, 8 float: on PoCL 3.1 with AVX-512 lanes of 8 double measured
- * slower than 4; doc/benchmark.md, lanes); 1 on a GPU, whose lanes are its
- * work-items. */
+ * "device" (the device's preferred vector width of the precision; 1 on a
+ * GPU, whose lanes are its work-items). 1 by default: on PoCL 3.1 lanes of
+ * 4 double win on the dense packing (every listed pair touching) and lose
+ * on the chute (most listed pairs apart, which one contact per work-item
+ * leaves at the gate; doc/benchmark.md, lanes). */
 static void ocl_lanes(struct gravel *g, struct ocl *o)
 {
     cl_uint wd = 1, wf = 1;
     const char *env = getenv("GRAVEL_LANES");
-    if (!o->is_gpu && (!env || !*env || !strcmp(env, "device"))) {
+    if (env && !strcmp(env, "device") && !o->is_gpu) {
         clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_DOUBLE, sizeof wd, &wd, NULL);
         clGetDeviceInfo(o->device, CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT, sizeof wf, &wf, NULL);
-        if (!env || !*env) {
-            wd = wd < 4 ? wd : 4;
-            wf = wf < 8 ? wf : 8;
-        }
     } else if (env && *env && strcmp(env, "device")) {
         char *end;
         long v = strtol(env, &end, 10);

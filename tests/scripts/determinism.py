@@ -12,8 +12,7 @@ bit-identical in every variant:
   - atom_modify sort 0 (never re-sorted) and sort 137 (every 137 steps);
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - GRAVEL_LANES=1, 2, 16 and device (the device's preferred vector width)
-    contacts per pair work-item (kernels/lanes.cl; the default is the
-    device's width, at most 32 bytes: 4 double, 8 float);
+    contacts per pair work-item (kernels/lanes.cl; the default is 1);
   - neigh_modify check no (a rebuild every step: other neighbor sets).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
 freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
