@@ -27,6 +27,21 @@ bin/gravel: $(OBJ)
 	@mkdir -p bin
 	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
 
+# bin/gravel-mpi: the same engine over MPI ranks (doc/parallel.md), built when
+# mpicc is installed (Debian libopenmpi-dev). Only src/parallel/comm.c differs:
+# it is compiled again with GR_MPI.
+MPICC  ?= $(shell command -v mpicc 2>/dev/null)
+MPIOBJ  = $(filter-out build/obj/src/parallel/comm.o,$(OBJ)) build/mpi/comm.o
+ifneq ($(MPICC),)
+all: bin/gravel-mpi
+endif
+bin/gravel-mpi: $(MPIOBJ)
+	@mkdir -p bin
+	$(MPICC) $(CFLAGS) -o $@ $^ $(LDLIBS)
+build/mpi/comm.o: src/parallel/comm.c src/parallel/comm.h
+	@mkdir -p build/mpi
+	$(MPICC) $(CPPFLAGS) -DGR_MPI $(CFLAGS) $(WARN) -c -o $@ $<
+
 # Sanitizer build of the whole engine, used by the unit tests and the fuzz replay.
 asan: bin/gravel-asan $(UNITBIN)
 bin/gravel-asan: $(ASANOBJ) build/asan/src/core/main.o

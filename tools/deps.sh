@@ -4,7 +4,7 @@
 # `deps.sh PKG...` checks the named ones instead (make verify: gnuplot-nox).
 # As root it installs what is missing; otherwise it prints the exact apt-get
 # line and fails. `deps.sh --list` prints the default list (for .ci/run).
-PKGS="gcc make ocl-icd-opencl-dev opencl-headers pocl-opencl-icd libgsl-dev python3 python3-vtk9 clang lammps lammps-examples liggghts-doc"
+PKGS="gcc make ocl-icd-opencl-dev opencl-headers pocl-opencl-icd libgsl-dev python3 python3-vtk9 clang lammps lammps-examples liggghts-doc openmpi-bin libopenmpi-dev"
 if [ "$1" = "--list" ]; then echo "$PKGS"; exit 0; fi
 [ $# -gt 0 ] && PKGS="$*"
 missing=""

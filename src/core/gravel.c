@@ -1,5 +1,6 @@
 /* gravel.c - creation, defaults, `clear` and destruction of a simulation. */
 #include "gravel.h"
+#include "par.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -97,6 +98,7 @@ void gr_destroy(struct gravel *g)
     if (!g)
         return;
     free_state(g);
+    par_free(g);
     var_destroy(g->vars);
     inp_destroy(g->inp);
     gr_log_release(g);

@@ -12,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/time.h>
+#include <unistd.h>
 
+#include "comm.h"
 #include "command.h"
 #include "error.h"
 #include "fileio.h"
@@ -135,6 +137,20 @@ static int define_var(struct gravel *g, const char *name, int n, char **values)
     return ok ? 0 : 1;
 }
 
+/* An error on several ranks: rank 0 has reported it (every rank reads the
+ * same script, so most errors happen on all of them) and ends the job; a
+ * rank whose error rank 0 did not see (an atom it owns) waits for that,
+ * then reports it as LAMMPS's "ERROR on proc N" and ends the job. */
+static _Noreturn void rank_failed(struct gravel *g, int rank)
+{
+    if (rank != 0) {
+        sleep(2);
+        fprintf(stderr, "ERROR on proc %d: %s\n", rank, g->err.msg);
+        fflush(stderr);
+    }
+    comm_abort(1);
+}
+
 static double now(void)
 {
     struct timeval tv;
@@ -227,18 +243,24 @@ int main(int argc, char **argv)
         }
 #undef IS
     }
-    /* gravel runs in one process: N copies under mpirun would each run the whole
-     * deck and overwrite one another's outputs. Stop every rank before any file
-     * is opened; rank 0 says why (doc/usage.md, Parallel runs). */
+    /* bin/gravel runs in one process: N copies under mpirun would each run the
+     * whole deck and overwrite one another's outputs. Stop every rank before any
+     * file is opened; rank 0 says why (doc/parallel.md). bin/gravel-mpi starts
+     * MPI here instead. */
     int rank, nranks = launcher_size(&rank);
-    if (nranks > 1) {
+    if (nranks > 1 && !comm_parallel_build()) {
         if (rank == 0)
             fprintf(stderr,
-                    "ERROR: gravel was launched as %d MPI ranks, but it runs in one process "
-                    "(domain decomposition over MPI is not built yet): run it without "
-                    "mpirun, or with -np 1\n",
+                    "ERROR: bin/gravel was launched as %d MPI ranks, but it is the one-process "
+                    "build: run bin/gravel-mpi under mpirun (doc/parallel.md), or bin/gravel "
+                    "without mpirun\n",
                     nranks);
         return 1;
+    }
+    rank = comm_init(&argc, &argv);
+    if (rank != 0) { /* rank 0 alone writes the screen and the log */
+        screen = "none";
+        log = "none";
     }
 
     struct gravel *g = gr_create();
@@ -319,6 +341,9 @@ int main(int argc, char **argv)
     }
     if (g->screen != stdout) /* closed above; the profile's table goes to stderr */
         g->screen = NULL;
+    if (rc == 1 && comm_size() > 1)
+        rank_failed(g, rank);
     gr_destroy(g);
+    comm_finalize();
     return rc;
 }

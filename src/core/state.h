@@ -25,6 +25,7 @@
 typedef int64_t bigint;
 
 struct gravel;
+struct par;
 struct vars;                /* variable.c: opaque */
 struct inp;                 /* input.c: opaque */
 struct engine;              /* device.h: device state */
@@ -261,6 +262,7 @@ struct gravel {
     struct molecule **molecules;
     struct engine *eng;     /* device state, alive across runs; NULL before the first run */
     struct restart *restart; /* restart.c; NULL until restart/read_restart */
+    struct par *par;        /* src/parallel/par.h: the processor grid, a decomposed run */
     uint64_t seed_counter;
     int warned_ignored[16]; /* commands with no meaning here warn once */
     int in_run_every;       /* > 0 while `run ... every` executes its commands (clear

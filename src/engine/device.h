@@ -86,6 +86,8 @@ struct engine {
     size_t recq_cap;            /* ... their capacity in bytes */
     int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
                                  * at most GR_HIST_MAX) */
+    int nghost;                 /* decomposed run: ghost atoms behind the a.n owned ones
+                                 * (src/parallel/par.h) */
     int hist_owner;             /* its last slot is LAMMPS's owner (-compat lammps2021) */
     int cap;                    /* per-atom buffer capacity */
     struct dev_atoms a;

@@ -30,6 +30,8 @@
 #include "log.h"
 #include "memfit.h"
 #include "pair.h"
+#include "par.h"
+#include "comm.h"
 
 #define NCHUNK_MAX 256
 
@@ -413,6 +415,28 @@ static void setup_multi(struct gravel *g, struct nbr *b)
 /* LAMMPS 2021's cutneighmax: the largest init_one cut-off over type pairs
  * whose types have a radius (their atoms', or what fix pour may insert),
  * plus the skin. */
+/* The two largest radii over the ranks, from each rank's two largest. */
+static void top_two_radii(struct gravel *g, double *rmax, double *r2nd)
+{
+    double mine[2] = {*rmax, *r2nd}, *all = NULL;
+    size_t bytes = comm_allgatherv(mine, sizeof mine, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the radii of the ranks");
+    double a = 0, b = 0;
+    for (size_t k = 0; k < bytes / sizeof(double); k++) {
+        double r = all[k];
+        if (r > a) {
+            b = a;
+            a = r;
+        } else if (r > b) {
+            b = r;
+        }
+    }
+    free(all);
+    *rmax = a;
+    *r2nd = b;
+}
+
 static double lammps2021_cutneighmax(struct gravel *g, double insert_rmax)
 {
     const struct pair *p = g->styles.pair;
@@ -531,6 +555,8 @@ void nbr_setup(struct gravel *g)
             r2nd = r;
         }
     }
+    if (par_on(g)) /* the two largest radii of every rank's atoms */
+        top_two_radii(g, &rmax, &r2nd);
     b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
                      pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
     double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
@@ -735,7 +761,8 @@ int nbr_decide(struct gravel *g, int forced)
             return 0;
         if (!g->neigh.check)
             return 1;
-        if (fl[0]) {
+        /* a decomposed run rebuilds on every rank when one needs it */
+        if (par_on(g) ? comm_max_int(fl[0] != 0) : fl[0]) {
             int first = every > g->neigh.delay ? every : g->neigh.delay;
             if (b->ago == first)
                 e->st.ndanger++;
@@ -811,6 +838,8 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
             hi[q] = fmax(hi[q], e->origin[q] + ext[6 * c + 3 + q]);
         }
     free(ext);
+    if (par_on(g))
+        comm_minmax(lo, hi, 3); /* the extent of every rank's atoms */
     domain_shrink_wrap(g, lo, hi);
 }
 
@@ -894,12 +923,12 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
     b->box_moved = 0;
 }
 
-/* The full list in partner-tag order; cells list their atoms in b->perm
- * unless the atoms were just re-sorted (sorted: contiguous ranges). */
-static void build_list(struct gravel *g, struct nbr *b, int sorted)
+/* The full list of atoms 0 .. n-1 (ghosts included) in partner-tag order;
+ * cells list their atoms in b->perm unless the atoms were just re-sorted
+ * (sorted: contiguous ranges). */
+static void build_list(struct gravel *g, struct nbr *b, int sorted, int n)
 {
     struct engine *e = g->eng;
-    int n = e->a.n;
     for (;;) {
         reset_flags(g, b);
         cl_kernel k = b->multi ? b->k_build_multi : b->k_build;
@@ -987,13 +1016,12 @@ static int lammps2021_bins(struct gravel *g, struct nbr *b, cl_kernel k, int a)
     return a;
 }
 
-/* Contacts of the rows just built: offsets (scan of the owned counts),
- * owners, partners, incidence; then their history. */
-static void build_contacts(struct gravel *g, struct nbr *b, int permuted)
+/* Contacts of the rows just built (atoms 0 .. n-1): offsets (scan of the
+ * owned counts), owners, partners, incidence; then their history. */
+static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
 {
     struct engine *e = g->eng;
     struct nbr_list *l = &b->list;
-    int n = e->a.n;
     nbr_scan(g, l->nown, l->coff, n);
     nbr_scan(g, l->ncount, l->ioff, n); /* rows packed: 2 incidences per contact */
     cl_int total = 0;
@@ -1174,8 +1202,16 @@ void nbr_rebuild(struct gravel *g)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
-    int n = e->a.n;
     wrap_and_extent(g, b);
+    if (par_on(g)) { /* a decomposed run: atoms to their ranks, ghosts behind them */
+        b->old_valid = 0; /* the history comes back by tag pair (par_history_restore) */
+        par_exchange(g, b->cutmax);
+        if (b->cap_atoms != (size_t)e->cap) { /* the exchange grew the atoms' room */
+            grow_atoms(g, b, (size_t)e->cap);
+            alloc_list(g, b, b->list.maxn);
+        }
+    }
+    int n = e->a.n + par_nghost(g);
     make_grid(g, b, n);
     grow_cells(g, b, (size_t)b->ncell);
     int m = b->ncell + 1; /* + sentinel cell of lost atoms */
@@ -1241,16 +1277,20 @@ void nbr_rebuild(struct gravel *g)
     /* atom_modify sort: every rebuild (default, < 0), never (0) or at the
      * first rebuild N steps after the last; lost atoms are always dropped */
     bigint every = g->neigh.sort_every;
-    int resort = nkeep < n || !b->built || every < 0 ||
-                 (every > 0 && g->step - b->last_sort >= every);
+    int resort = !par_on(g) && (nkeep < n || !b->built || every < 0 ||
+                                (every > 0 && g->step - b->last_sort >= every));
     if (e->history && b->old_valid)
         retire_contacts(g, b);
     if (resort) {
         resort_atoms(g, b, n, nkeep);
         b->last_sort = g->step;
     }
-    build_list(g, b, resort);
-    build_contacts(g, b, resort);
+    build_list(g, b, resort, resort ? nkeep : n);
+    build_contacts(g, b, resort, resort ? nkeep : n);
+    if (par_on(g)) {
+        par_history_restore(g);
+        nkeep = e->a.n; /* the owned atoms: ghosts are never checked */
+    }
     if (e->history)
         b->old_valid = 1;
     if (nkeep > 0)

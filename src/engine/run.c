@@ -15,6 +15,8 @@
  * The timing breakdown synchronizes the device after each section on every
  * 8th step and on rebuild steps only (see run_steps), so ordinary steps do
  * not wait on the host more than the neighbor decision requires. */
+#include "comm.h"
+#include "par.h"
 #include "run.h"
 
 #include <math.h>
@@ -221,7 +223,7 @@ static void run_hook(struct gravel *g, unsigned hook)
 static int step_lookahead(struct gravel *g, int last)
 {
     const struct engine *e = g->eng;
-    if (!e->k_pair || !e->fused.lookahead || last || output_due(g, g->step) ||
+    if (!e->k_pair || !e->fused.lookahead || last || par_on(g) /* ghosts come between */ || output_due(g, g->step) ||
         restart_due(g, g->step))
         return 0;
     for (int k = 0; k < NHOOK; k++)
@@ -431,6 +433,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     eng_prepare(g);
     struct engine *e = g->eng;
     e->active = 0;
+    par_run_begin(g); /* several ranks: this rank's atoms only from here */
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
@@ -457,6 +460,34 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     precision_report(g);
     acc_begin(g, force); /* collision resolution of the contacts that happen */
     return freezebit;
+}
+
+/* A decomposed run's statistics over the ranks: atoms, neighbors and
+ * contacts summed; the largest overlap and the worst resolved collision
+ * over all (ties: the lowest rank's). */
+static void ranks_stats(struct gravel *g, struct run_stats *st)
+{
+    st->natoms = (int)comm_sum_ll(st->natoms);
+    st->total_neighbors = (double)comm_sum_ll((long long)st->total_neighbors);
+    st->ncontact = (int)comm_sum_ll(st->ncontact);
+    double lo = 0, hi = st->max_overlap_frac;
+    comm_minmax(&lo, &hi, 1);
+    st->max_overlap_frac = hi;
+    struct run_stats *all = NULL;
+    size_t bytes = comm_allgatherv(st, sizeof *st, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the run's statistics");
+    int best = 0;
+    for (int r = 1; r < (int)(bytes / sizeof *st); r++)
+        if (all[r].res_q > all[best].res_q)
+            best = r;
+    st->res_q = all[best].res_q;
+    st->res_vn = all[best].res_vn;
+    st->res_step = all[best].res_step;
+    st->res_tag_i = all[best].res_tag_i;
+    st->res_tag_j = all[best].res_tag_j;
+    memcpy(st->res_wall, all[best].res_wall, sizeof st->res_wall);
+    free(all);
 }
 
 /* Statistics of a finished run (or rerun) and its footer. */
@@ -510,6 +541,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             eng_finish(g);
         double a1 = wall();
         int rebuild = nbr_decide(g, forced_rebuild(g));
+        if (!rebuild && par_on(g))
+            par_forward(g); /* the ghosts' x, v, omega of this step */
         group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */
         double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
@@ -580,6 +613,10 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *
     snprintf(st.res_wall, sizeof st.res_wall, "%s", worst->wall);
     st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
+    if (par_on(g)) {
+        ranks_stats(g, &st);
+        par_run_end(g); /* every rank's host holds every atom again */
+    }
     e->active = 0;
     if (post)
         output_finish(g, &st);

@@ -1,4 +1,6 @@
 /* temperature.c - temperatures and their degrees of freedom (temperature.h). */
+#include "comm.h"
+#include "par.h"
 #include "temperature.h"
 
 #include <string.h>
@@ -37,6 +39,10 @@ static double count_dof(struct gravel *g, const struct temp_state *t, double *na
         case TEMP_SPHERE_ALL: count += dim + (finite ? (dim == 3 ? 3 : 1) : 0); break;
         case TEMP_SPHERE_ROTATE: count += finite ? (dim == 3 ? 3 : 1) : 0; break;
         }
+    }
+    if (par_on(g)) { /* integer counts: exact on any number of ranks */
+        natoms = (double)comm_sum_ll((long long)natoms);
+        count = (double)comm_sum_ll((long long)count);
     }
     double extra = t->extra_set ? t->extra_dof : dim;
     if (t->kind != TEMP_SPHERE_ROTATE) {
@@ -86,7 +92,7 @@ static double sum_mv2(struct gravel *g, const struct temp_state *t)
 {
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    double sum = 0.0;
+    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & t->groupbit))
@@ -94,11 +100,12 @@ static double sum_mv2(struct gravel *g, const struct temp_state *t)
         const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
                      r = a->radius[i];
         if (t->kind != TEMP_SPHERE_ROTATE)
-            sum += (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * m;
+            par_sum_add(g, &sum, 2 * a->tag[i], (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * m);
         if (t->kind != TEMP_TRANS)
-            sum += (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * r * r * m;
+            par_sum_add(g, &sum, 2 * a->tag[i] + 1,
+                        (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * r * r * m);
     }
-    return sum;
+    return par_sum_total(g, &sum);
 }
 
 double temp_scalar(struct gravel *g, struct temp_state *t)

@@ -13,7 +13,9 @@
  *    never removed, and no non-regular file is ever created. A FIFO with no
  *    reader is waited for OF_FIFO_WAIT_MS, then refused (no hang);
  *  - a regular file whose folder does not allow a temporary (EACCES, EPERM,
- *    EROFS) is written through in place, as LAMMPS writes every file.
+ *    EROFS) is written through in place, as LAMMPS writes every file;
+ *  - on several MPI ranks only rank 0 writes: the others write to /dev/null
+ *    (the host atoms are whole on every rank between runs, src/parallel/).
  * Every write is checked: the stream of an open ofile records the errno of
  * its first failed write, and of_commit()/of_flush() report it. */
 #ifndef GR_OUTFILE_H

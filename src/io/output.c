@@ -6,6 +6,7 @@
  * multiples of their N, and a thermo line at multiples of `thermo N` (or at
  * the step an equal-style variable returns for `thermo v_name`) and always
  * at the run's last step. */
+#include "comm.h"
 #include "output.h"
 
 #include <math.h>
@@ -293,8 +294,8 @@ static void finish_common(struct gravel *g, const struct run_stats *s)
     progress_end(g);
     dump_run_end(g);
     st->active = 0;
-    gr_print(g, "Loop time of %.6g on 1 procs for %lld steps with %d atoms\n\n", s->t_total,
-             (long long)s->nsteps, s->natoms);
+    gr_print(g, "Loop time of %.6g on %d procs for %lld steps with %d atoms\n\n", s->t_total,
+             comm_size(), (long long)s->nsteps, s->natoms);
 }
 
 void output_finish_brief(struct gravel *g, const struct run_stats *s)

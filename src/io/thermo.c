@@ -18,11 +18,13 @@
 
 #include "atoms.h"
 #include "args.h"
+#include "comm.h"
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "pair_energy.h"
+#include "par.h"
 #include "pressure.h"
 #include "temperature.h"
 #include "thermo.h"
@@ -661,15 +663,17 @@ static double clock_now(struct gravel *g)
 static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
     struct output_state *st = output_state(g);
-    double natoms = g->atoms.n;
-    int norm = norm_flag(g) && g->atoms.n > 0;
+    /* every rank's atoms (collective: each rank evaluates the same keywords) */
+    long long nall = par_on(g) ? comm_sum_ll(g->atoms.n) : g->atoms.n;
+    double natoms = (double)nall;
+    int norm = norm_flag(g) && nall > 0;
     *isint = keywords[k].type == V_BIGINT;
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
     case KW_ELAPSED: *ival = g->step - g->firststep; return (double)*ival;
     /* LAMMPS: since `run ... start` (else the run's first step) */
     case KW_ELAPLONG: *ival = g->step - g->beginstep; return (double)*ival;
-    case KW_ATOMS: *ival = g->atoms.n; return natoms;
+    case KW_ATOMS: *ival = nall; return natoms;
     case KW_DT: return g->dt;
     case KW_TIME: return g->time;
     case KW_CPU: return clock_now(g);

@@ -5,6 +5,7 @@
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
+#include "par.h"
 
 #define INERTIA 0.4 /* moment of inertia prefactor for a solid sphere */
 
@@ -21,16 +22,17 @@ static double erotate_scalar(struct gravel *g, struct compute *c)
 {
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    double sum = 0.0;
+    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         const double *w = a->omega + 3 * i;
-        sum += (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * a->radius[i] * a->radius[i] *
-               a->rmass[i];
+        par_sum_add(g, &sum, a->tag[i],
+                    (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * a->radius[i] * a->radius[i] *
+                        a->rmass[i]);
     }
-    return 0.5 * INERTIA * compute_mvv2e(g) * sum;
+    return 0.5 * INERTIA * compute_mvv2e(g) * par_sum_total(g, &sum);
 }
 
 const struct compute_style compute_style_erotate_sphere = {

@@ -3,6 +3,7 @@
  * extensive (thermo divides it by the atom count when norm is yes). */
 #include "atoms.h"
 #include "compute.h"
+#include "par.h"
 #include "error.h"
 
 static void ke_create(struct gravel *g, struct compute *c, int argc, char **argv)
@@ -19,15 +20,15 @@ static double ke_scalar(struct gravel *g, struct compute *c)
 {
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    double sum = 0.0;
+    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         const double *v = a->v + 3 * i;
-        sum += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        par_sum_add(g, &sum, a->tag[i], a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
     }
-    return 0.5 * compute_mvv2e(g) * sum;
+    return 0.5 * compute_mvv2e(g) * par_sum_total(g, &sum);
 }
 
 const struct compute_style compute_style_ke = {

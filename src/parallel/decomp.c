@@ -1,0 +1,99 @@
+/* decomp.c - the processor grid and the bricks of the ranks. */
+#include "decomp.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "args.h"
+#include "comm.h"
+#include "error.h"
+#include "par.h"
+
+void cmd_processors(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "processors needs Px Py Pz (a count or *), got %d arguments", argc);
+    if (argc > 3)
+        gr_error(g, "processors keyword '%s' is not supported (only Px Py Pz)", argv[3]);
+    struct decomp *d = &par_state(g)->dc;
+    for (int q = 0; q < 3; q++) {
+        if (strcmp(argv[q], "*") == 0) {
+            d->user[q] = 0;
+            continue;
+        }
+        long v = arg_int(g, argv[q], "processors count");
+        if (v < 1 || v > 1 << 20)
+            gr_error(g, "processors count '%s' must be * or a positive integer", argv[q]);
+        d->user[q] = (int)v;
+    }
+    if (g->dom.box_exists && g->dom.dimension == 2 && d->user[2] > 1)
+        gr_error(g, "processors: Pz must be 1 for a 2d simulation, got %d", d->user[2]);
+}
+
+void decomp_setup(struct gravel *g, struct decomp *d)
+{
+    const struct domain *dm = &g->dom;
+    int n = comm_size();
+    double L[3];
+    for (int q = 0; q < 3; q++)
+        L[q] = dm->hi[q] - dm->lo[q];
+    double area[3] = {L[0] * L[1], L[0] * L[2], L[1] * L[2]};
+    double best = INFINITY;
+    int found = 0;
+    /* LAMMPS's order: px ascending, then py ascending; the first smallest wins */
+    for (int px = 1; px <= n; px++) {
+        if (n % px)
+            continue;
+        for (int py = 1; py <= n / px; py++) {
+            if ((n / px) % py)
+                continue;
+            int pz = n / px / py, f[3] = {px, py, pz};
+            int ok = !(dm->dimension == 2 && pz != 1);
+            for (int q = 0; q < 3; q++)
+                ok = ok && (!d->user[q] || d->user[q] == f[q]);
+            if (!ok)
+                continue;
+            double surf = area[0] / px / py + area[1] / px / pz + area[2] / py / pz;
+            if (surf < best) {
+                best = surf;
+                memcpy(d->p, f, sizeof f);
+                found = 1;
+            }
+        }
+    }
+    if (!found)
+        gr_error(g, "processors %d %d %d (0 = *) does not factor the %d ranks%s", d->user[0],
+                 d->user[1], d->user[2], n, dm->dimension == 2 ? " with Pz = 1 (2d)" : "");
+    int r = comm_rank();
+    d->me[0] = r % d->p[0];
+    d->me[1] = r / d->p[0] % d->p[1];
+    d->me[2] = r / (d->p[0] * d->p[1]);
+}
+
+/* brick index of coordinate x in dimension q */
+static int slab(const struct gravel *g, const struct decomp *d, int q, double x)
+{
+    const struct domain *dm = &g->dom;
+    double L = dm->hi[q] - dm->lo[q], s = (x - dm->lo[q]) / L;
+    if (dm->periodic[q])
+        s -= floor(s);
+    int k = (int)floor(s * d->p[q]);
+    return k < 0 ? 0 : k >= d->p[q] ? d->p[q] - 1 : k;
+}
+
+int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3])
+{
+    return slab(g, d, 0, x[0]) + d->p[0] * (slab(g, d, 1, x[1]) + d->p[1] * slab(g, d, 2, x[2]));
+}
+
+void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double lo[3],
+                  double hi[3])
+{
+    const struct domain *dm = &g->dom;
+    int c[3] = {r % d->p[0], r / d->p[0] % d->p[1], r / (d->p[0] * d->p[1])};
+    for (int q = 0; q < 3; q++) {
+        double L = dm->hi[q] - dm->lo[q];
+        lo[q] = dm->lo[q] + L * c[q] / d->p[q];
+        hi[q] = c[q] + 1 == d->p[q] ? dm->hi[q] : dm->lo[q] + L * (c[q] + 1) / d->p[q];
+    }
+}

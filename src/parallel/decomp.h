@@ -1,0 +1,30 @@
+/* decomp.h - the spatial decomposition: LAMMPS's `processors Px Py Pz`
+ * grid of bricks over the box, each rank owning the atoms in its brick.
+ * The grid is chosen at each run start from the rank count and the box
+ * (LAMMPS's ProcMap::onelevel_grid: the factorization of smallest
+ * sub-domain surface, `*` free, a given count fixed); bricks split each
+ * box length evenly (balance is not built yet). */
+#ifndef GR_DECOMP_H
+#define GR_DECOMP_H
+
+#include "state.h"
+
+struct decomp {
+    int user[3];            /* `processors`: the count per dimension, 0 = * */
+    int p[3];               /* the grid of the run */
+    int me[3];              /* this rank's place in it (rank = x + px (y + py z)) */
+};
+
+/* `processors Px Py Pz`: stores the counts (checked against the rank count
+ * at the next run). */
+void cmd_processors(struct gravel *g, int argc, char **argv);
+/* The grid of the current box for comm_size() ranks. */
+void decomp_setup(struct gravel *g, struct decomp *d);
+/* The rank owning position x (periodic dimensions wrapped into the box;
+ * outside a fixed face: the nearest brick). */
+int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3]);
+/* Brick of rank r: [lo, hi) per dimension. */
+void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double lo[3],
+                  double hi[3]);
+
+#endif

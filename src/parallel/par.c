@@ -1,0 +1,730 @@
+/* par.c - the atoms of a decomposed run: keep, migrate, ghosts, forward,
+ * gather, and the contact history that moves with them (par.h). */
+#include "par.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "atoms.h"
+#include "comm.h"
+#include "compute.h"
+#include "device.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "log.h"
+#include "neighbor.h"
+
+/* ---- contact history by tag pair -------------------------------------------- */
+
+/* Open addressing over (lower tag, higher tag) with hw REAL of raw history
+ * each (the device's bytes: bit-exact on any rank). */
+struct par_hist {
+    size_t cap, n, vb;      /* slots (a power of 2), used, value bytes */
+    int64_t *key;           /* 2 per slot; key[2s] = 0: empty */
+    unsigned char *val;
+};
+
+static uint64_t mix(int64_t a, int64_t b)
+{
+    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full;
+    return h ^ (h >> 29);
+}
+
+static void hist_free(struct par_hist *h)
+{
+    if (!h)
+        return;
+    free(h->key);
+    free(h->val);
+    free(h);
+}
+
+static struct par_hist *hist_new(struct gravel *g, size_t n, size_t vb)
+{
+    struct par_hist *h = gr_calloc(g, 1, sizeof *h);
+    h->cap = 64;
+    while (h->cap < 2 * n + 16)
+        h->cap *= 2;
+    h->vb = vb;
+    h->key = gr_calloc(g, 2 * h->cap, sizeof *h->key);
+    h->val = gr_malloc(g, h->cap * vb + 1);
+    return h;
+}
+
+/* slot of (a, b): its own or the empty one where it goes */
+static size_t hist_slot(const struct par_hist *h, int64_t a, int64_t b)
+{
+    size_t s = mix(a, b) & (h->cap - 1);
+    while (h->key[2 * s] && (h->key[2 * s] != a || h->key[2 * s + 1] != b))
+        s = (s + 1) & (h->cap - 1);
+    return s;
+}
+
+/* Insert (first copy wins: every copy holds the same bits). */
+static void hist_put(struct gravel *g, struct par_hist **hp, int64_t a, int64_t b,
+                     const void *val)
+{
+    struct par_hist *h = *hp;
+    if (2 * (h->n + 1) > h->cap) {
+        struct par_hist *w = hist_new(g, h->n + 1, h->vb);
+        for (size_t s = 0; s < h->cap; s++)
+            if (h->key[2 * s])
+                hist_put(g, &w, h->key[2 * s], h->key[2 * s + 1], h->val + s * h->vb);
+        hist_free(h);
+        *hp = h = w;
+    }
+    size_t s = hist_slot(h, a, b);
+    if (h->key[2 * s])
+        return;
+    h->key[2 * s] = a;
+    h->key[2 * s + 1] = b;
+    memcpy(h->val + s * h->vb, val, h->vb);
+    h->n++;
+}
+
+static const void *hist_get(const struct par_hist *h, int64_t a, int64_t b)
+{
+    size_t s = hist_slot(h, a, b);
+    return h->key[2 * s] ? h->val + s * h->vb : NULL;
+}
+
+/* ---- state ---------------------------------------------------------------------- */
+
+struct par *par_state(struct gravel *g)
+{
+    if (!g->par)
+        g->par = gr_calloc(g, 1, sizeof *g->par);
+    return g->par;
+}
+
+void par_free(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p)
+        return;
+    free(p->sendn);
+    free(p->soff);
+    free(p->sendidx);
+    free(p->recvn);
+    hist_free(p->hist);
+    free(p);
+    g->par = NULL;
+}
+
+int par_on(const struct gravel *g) { return g->par && g->par->on; }
+int par_nghost(const struct gravel *g) { return par_on(g) ? g->par->nghost : 0; }
+
+/* ---- the per-atom record: the FL_STATE rows of the field table -------------------- */
+
+static size_t raw_pos_bytes(const struct gravel *g)
+{
+    return g->eng->single ? 6 * g->eng->rsz : 0; /* x and xlo as the device has them */
+}
+
+static size_t record_bytes(const struct gravel *g)
+{
+    size_t b = raw_pos_bytes(g);
+#define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
+    if (life == FL_STATE)                                                                     \
+        b += sizeof(ctype) * (width);
+    ATOM_FIELDS(BYTES)
+#undef BYTES
+    return b;
+}
+
+/* atom i's record; raw: its device position bytes (single precision) */
+static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
+                      unsigned char *out)
+{
+#define PACK(name, ctype, dev, width, when, life, sect, what)                                  \
+    if (life == FL_STATE) {                                                                   \
+        memcpy(out, a->name + (size_t)i * (width), sizeof(ctype) * (width));                  \
+        out += sizeof(ctype) * (width);                                                       \
+    }
+    ATOM_FIELDS(PACK)
+#undef PACK
+    if (rawb)
+        memcpy(out, raw, rawb);
+}
+
+static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
+                        size_t rawb)
+{
+#define UNPACK(name, ctype, dev, width, when, life, sect, what)                                \
+    if (life == FL_STATE) {                                                                   \
+        memcpy(a->name + (size_t)i * (width), in, sizeof(ctype) * (width));                   \
+        in += sizeof(ctype) * (width);                                                        \
+    }
+    ATOM_FIELDS(UNPACK)
+#undef UNPACK
+    if (rawb)
+        memcpy(raw, in, rawb);
+}
+
+/* ---- what runs across ranks --------------------------------------------------------- */
+
+/* Fix styles whose work is per owned atom with no state of their own
+ * (the rest stop a decomposed run: doc/parallel.md lists them). */
+static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
+                                        "viscous", "setforce", NULL};
+static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
+
+static int listed(const char *const *list, const char *name)
+{
+    for (int i = 0; list[i]; i++)
+        if (strcmp(list[i], name) == 0)
+            return 1;
+    return 0;
+}
+
+static void check_scene(struct gravel *g)
+{
+    const char *why = NULL;
+    static char buf[160];
+    if (g->dom.triclinic)
+        why = "a triclinic box";
+    for (int i = 0; !why && i < g->styles.nfix; i++)
+        if (!listed(par_fixes, g->styles.fix[i]->style->name)) {
+            snprintf(buf, sizeof buf, "fix %s (%.60s)", g->styles.fix[i]->id,
+                     g->styles.fix[i]->style->name);
+            why = buf;
+        }
+    for (int i = 0; !why && i < g->styles.ncompute; i++)
+        if (!listed(par_computes, g->styles.compute[i]->style->name)) {
+            snprintf(buf, sizeof buf, "compute %s (%.60s)", g->styles.compute[i]->id,
+                     g->styles.compute[i]->style->name);
+            why = buf;
+        }
+    static const char *const kw[] = {"step", "elapsed", "elaplong", "atoms", "dt", "time", "cpu",
+                                     "tpcpu", "spcpu", "cpuremain", "part", "temp", "ke",
+                                     "vol", "lx", "ly", "lz", "xlo", "xhi", "ylo", "yhi",
+                                     "zlo", "zhi", NULL};
+    if (!why && g->thermo.ncol == 0)
+        why = "thermo_style one (its epair and press are not summed over ranks yet: use "
+              "thermo_style custom with step atoms temp ke and the allowed computes)";
+    for (int i = 0; !why && i < g->thermo.ncol; i++) {
+        const char *c = g->thermo.col[i];
+        if (!listed(kw, c) && strncmp(c, "c_", 2) != 0) {
+            snprintf(buf, sizeof buf, "thermo keyword %.60s", c);
+            why = buf;
+        }
+    }
+    if (!why && g->styles.ndump)
+        why = "a dump during the run (write_dump after the run works)";
+    if (!why && g->restart)
+        why = "restart files";
+    if (!why && g->eng && g->eng->hist_owner)
+        why = "-compat lammps2021 contact owners";
+    if (why)
+        gr_error(g, "%s cannot run on %d MPI ranks yet (doc/parallel.md lists what can); run "
+                    "it on one rank", why, comm_size());
+}
+
+/* ---- run start and end ---------------------------------------------------------- */
+
+static uint64_t tag_set_key(const struct atoms *a)
+{
+    uint64_t h = 1469598103934665603ull ^ (uint64_t)a->n;
+    for (int i = 0; i < a->n; i++)
+        h = (h ^ (uint64_t)a->tag[i]) * 1099511628211ull;
+    return h ? h : 1;
+}
+
+void par_run_begin(struct gravel *g)
+{
+    struct par *p = par_state(g);
+    p->on = comm_size() > 1;
+    p->nghost = 0;
+    if (!p->on)
+        return;
+    check_scene(g);
+    decomp_setup(g, &p->dc);
+    struct atoms *a = &g->atoms;
+    /* the saved contact history belongs to these atoms only (as one rank
+     * keeps its list only while the atoms are the same) */
+    if (p->hist && tag_set_key(a) != p->tags_at_end) {
+        hist_free(p->hist);
+        p->hist = NULL;
+    }
+    int me = comm_rank(), k = 0;
+    for (int i = 0; i < a->n; i++)
+        if (decomp_owner(g, &p->dc, a->x + 3 * (size_t)i) == me) {
+            if (k != i)
+                atoms_copy(a, i, k);
+            k++;
+        }
+    a->n = k;
+    gr_print(g, "Decomposition: %d x %d x %d MPI ranks\n", p->dc.p[0], p->dc.p[1], p->dc.p[2]);
+}
+
+static int by_tag(const void *x, const void *y, void *rb)
+{
+    size_t r = *(size_t *)rb;
+    int64_t a, b;
+    memcpy(&a, (const char *)x + r, sizeof a);
+    memcpy(&b, (const char *)y + r, sizeof b);
+    (void)r;
+    return (a > b) - (a < b);
+}
+
+/* The current contacts' history into *h by tag pair (the device's raw bytes). */
+static void hist_collect(struct gravel *g, struct par_hist **h)
+{
+    struct engine *e = g->eng;
+    const struct nbr_list *l = nbr_list(g);
+    int nc = l->ncontact;
+    size_t vb = (size_t)e->hist_n * e->rsz;
+    if (!*h)
+        *h = hist_new(g, (size_t)nc, vb);
+    if (nc <= 0 || !l->ci)
+        return;
+    int *ci = gr_malloc(g, 2 * (size_t)nc * sizeof(int));
+    unsigned char *sh = gr_malloc(g, (size_t)nc * vb);
+    eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), ci);
+    eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
+    eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
+    const int64_t *tag = g->atoms.tag;
+    for (int c = 0; c < nc; c++) {
+        int64_t a = tag[ci[c]], b = tag[ci[nc + c]];
+        hist_put(g, h, a < b ? a : b, a < b ? b : a, sh + (size_t)c * vb);
+    }
+    free(ci);
+    free(sh);
+}
+
+/* a table entry as sent: two tags and the value bytes */
+static size_t entry_bytes(const struct par_hist *h) { return 2 * sizeof(int64_t) + h->vb; }
+
+static void entry_pack(const struct par_hist *h, size_t s, unsigned char *out)
+{
+    memcpy(out, h->key + 2 * s, 2 * sizeof(int64_t));
+    memcpy(out + 2 * sizeof(int64_t), h->val + s * h->vb, h->vb);
+}
+
+static void entries_put(struct gravel *g, struct par_hist **h, const unsigned char *in,
+                        size_t bytes)
+{
+    size_t eb = entry_bytes(*h);
+    for (size_t o = 0; o + eb <= bytes; o += eb) {
+        int64_t k[2];
+        memcpy(k, in + o, sizeof k);
+        hist_put(g, h, k[0], k[1], in + o + sizeof k);
+    }
+}
+
+void par_run_end(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->on)
+        return;
+    struct engine *e = g->eng;
+    struct atoms *a = &g->atoms;
+    run_sync_host(g);
+    /* the contacts' history, every rank's, kept by tag pair for the next run */
+    if (e->history && p->list_current) {
+        struct par_hist *h = NULL;
+        hist_collect(g, &h);
+        size_t eb = entry_bytes(h);
+        unsigned char *buf = gr_malloc(g, h->n * eb + 1), *all = NULL;
+        size_t k = 0;
+        for (size_t s = 0; s < h->cap; s++)
+            if (h->key[2 * s])
+                entry_pack(h, s, buf + eb * k++);
+        size_t bytes = comm_allgatherv(buf, k * eb, (void **)&all);
+        free(buf);
+        if (bytes == (size_t)-1)
+            gr_error(g, "out of memory gathering the contact history of every rank");
+        hist_free(h);
+        h = hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
+        entries_put(g, &h, all, bytes);
+        free(all);
+        hist_free(p->hist);
+        p->hist = h;
+    }
+    int n = a->n;
+    size_t rb = record_bytes(g) - raw_pos_bytes(g);
+    unsigned char *mine = gr_malloc(g, (size_t)n * rb + 1), *all = NULL;
+    for (int i = 0; i < n; i++)
+        pack_atom(a, i, NULL, 0, mine + (size_t)i * rb);
+    size_t bytes = comm_allgatherv(mine, (size_t)n * rb, (void **)&all);
+    free(mine);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank");
+    int total = (int)(bytes / rb);
+    size_t tag_at = 0; /* tag is the table's first field */
+    qsort_r(all, (size_t)total, rb, by_tag, &tag_at);
+    atoms_reserve(g, total);
+    for (int i = 0; i < total; i++)
+        unpack_atom(a, i, all + (size_t)i * rb, NULL, 0);
+    free(all);
+    a->n = total;
+    p->tags_at_end = tag_set_key(a);
+    p->on = 0;
+    p->nghost = 0;
+    e->nghost = 0;
+    e->active = 0; /* the device holds one rank's atoms: the host is the truth */
+}
+
+/* ---- the exchange at a rebuild -------------------------------------------------- */
+
+/* per-rank byte buffers of an exchange */
+struct outbox {
+    unsigned char **buf;
+    size_t *len, *cap;
+};
+
+static void outbox_init(struct gravel *g, struct outbox *o, int P)
+{
+    o->buf = gr_calloc(g, (size_t)P, sizeof *o->buf);
+    o->len = gr_calloc(g, (size_t)P, sizeof *o->len);
+    o->cap = gr_calloc(g, (size_t)P, sizeof *o->cap);
+}
+
+static unsigned char *outbox_room(struct gravel *g, struct outbox *o, int r, size_t bytes)
+{
+    if (o->len[r] + bytes > o->cap[r]) {
+        o->cap[r] = 2 * (o->len[r] + bytes) + 256;
+        o->buf[r] = gr_realloc(g, o->buf[r], o->cap[r]);
+    }
+    unsigned char *at = o->buf[r] + o->len[r];
+    o->len[r] += bytes;
+    return at;
+}
+
+/* Send the outbox; returns what arrived (malloc'd), *bytes its size. */
+static unsigned char *outbox_send(struct gravel *g, struct outbox *o, int P, size_t *bytes,
+                                  size_t *from)
+{
+    void *in = NULL;
+    *bytes = comm_alltoallv((void *const *)o->buf, o->len, &in, from);
+    if (*bytes == (size_t)-1)
+        gr_error(g, "out of memory exchanging atoms between ranks");
+    for (int r = 0; r < P; r++)
+        free(o->buf[r]);
+    free(o->buf);
+    free(o->len);
+    free(o->cap);
+    return in;
+}
+
+/* Distance from x to [lo, hi] in one dimension, periodic images included. */
+static double gap(double x, double lo, double hi, double L, int periodic)
+{
+    double best = INFINITY;
+    for (int k = periodic ? -1 : 0; k <= (periodic ? 1 : 0); k++) {
+        double y = x + k * L, d = y < lo ? lo - y : y > hi ? y - hi : 0;
+        best = fmin(best, d);
+    }
+    return best;
+}
+
+/* raw device positions (x, then xlo: single precision) of atoms 0 .. n-1 */
+static unsigned char *raw_positions(struct gravel *g, int n)
+{
+    struct engine *e = g->eng;
+    size_t half = 3 * e->rsz, rb = raw_pos_bytes(g);
+    if (!rb || n == 0)
+        return NULL;
+    unsigned char *x = gr_malloc(g, (size_t)n * half), *lo = gr_malloc(g, (size_t)n * half);
+    unsigned char *raw = gr_malloc(g, (size_t)n * rb);
+    eng_read(g, e->a.x, 0, (size_t)n * half, x);
+    eng_read(g, e->a.xlo, 0, (size_t)n * half, lo);
+    for (int i = 0; i < n; i++) {
+        memcpy(raw + (size_t)i * rb, x + (size_t)i * half, half);
+        memcpy(raw + (size_t)i * rb + half, lo + (size_t)i * half, half);
+    }
+    free(x);
+    free(lo);
+    return raw;
+}
+
+static int cmp_i64(const void *x, const void *y)
+{
+    int64_t a = *(const int64_t *)x, b = *(const int64_t *)y;
+    return (a > b) - (a < b);
+}
+
+/* new owner of an owned tag (tagdest: pairs (tag, rank) sorted by tag); -1 if not owned here */
+static int dest_of(const int64_t *tagdest, int n, int64_t tag)
+{
+    int lo = 0, hi = n - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        int64_t t = tagdest[2 * mid];
+        if (t == tag)
+            return (int)tagdest[2 * mid + 1];
+        if (t < tag)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return -1;
+}
+
+static void check_bricks(struct gravel *g, const struct par *p, double cut)
+{
+    const struct domain *d = &g->dom;
+    for (int q = 0; q < 3; q++) {
+        double L = d->hi[q] - d->lo[q];
+        if (d->periodic[q] && p->dc.p[q] > 1 && L / p->dc.p[q] + 2 * cut >= L)
+            gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the ghost "
+                        "cut-off %g exceeds the box %g; use fewer ranks in %c (processors)",
+                     p->dc.p[q], "xyz"[q], L / p->dc.p[q], cut, L, "xyz"[q]);
+    }
+}
+
+void par_exchange(struct gravel *g, double cut)
+{
+    struct par *p = g->par;
+    struct engine *e = g->eng;
+    struct atoms *a = &g->atoms;
+    const struct domain *dm = &g->dom;
+    int P = comm_size(), me = comm_rank();
+    p->cut = cut;
+    check_bricks(g, p, cut);
+    run_sync_host(g);
+    int n = a->n;
+    size_t rawb = raw_pos_bytes(g), rb = record_bytes(g);
+    unsigned char *raw = raw_positions(g, n);
+    /* the history to carry: the current contacts', or the table saved at the
+     * last run's end (the first build of a run) */
+    struct par_hist *old = p->hist;
+    p->hist = NULL;
+    if (e->history && p->list_current)
+        hist_collect(g, &old);
+    /* destinations; an atom outside a fixed face is lost */
+    int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+    int64_t *tagdest = gr_malloc(g, (2 * (size_t)n + 1) * sizeof(int64_t));
+    for (int i = 0; i < n; i++) {
+        const double *x = a->x + 3 * (size_t)i;
+        for (int q = 0; q < 3; q++)
+            if (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] <= dm->hi[q]))
+                gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed "
+                            "%c face at step %lld", (long long)a->tag[i], x[0], x[1], x[2],
+                         "xyz"[q], (long long)g->step);
+        dest[i] = decomp_owner(g, &p->dc, x);
+        tagdest[2 * i] = a->tag[i];
+        tagdest[2 * i + 1] = dest[i];
+    }
+    qsort(tagdest, (size_t)n, 2 * sizeof(int64_t), cmp_i64);
+    /* 1. atoms that left the brick */
+    struct outbox ob;
+    outbox_init(g, &ob, P);
+    for (int i = 0; i < n; i++)
+        if (dest[i] != me)
+            pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb,
+                      outbox_room(g, &ob, dest[i], rb));
+    size_t inb, from[P];
+    unsigned char *in = outbox_send(g, &ob, P, &inb, from);
+    /* 2. their contacts' history: each entry to the new owners of the atoms
+     * owned here (the other atom's owner sends it to its own) */
+    if (e->history) {
+        size_t vb = (size_t)e->hist_n * e->rsz;
+        if (!old)
+            old = hist_new(g, 0, vb);
+        size_t eb = entry_bytes(old);
+        struct outbox hb;
+        outbox_init(g, &hb, P);
+        for (size_t s = 0; s < old->cap; s++) {
+            if (!old->key[2 * s])
+                continue;
+            int da = dest_of(tagdest, n, old->key[2 * s]);
+            int db = dest_of(tagdest, n, old->key[2 * s + 1]);
+            if (da >= 0)
+                entry_pack(old, s, outbox_room(g, &hb, da, eb));
+            if (db >= 0 && db != da)
+                entry_pack(old, s, outbox_room(g, &hb, db, eb));
+        }
+        size_t hin, hfrom[P];
+        unsigned char *h = outbox_send(g, &hb, P, &hin, hfrom);
+        p->hist = hist_new(g, hin / eb, vb);
+        entries_put(g, &p->hist, h, hin);
+        free(h);
+    }
+    hist_free(old);
+    /* 3. the owned atoms: those that stay, in order, then the arrivals */
+    int k = 0;
+    for (int i = 0; i < n; i++)
+        if (dest[i] == me) {
+            if (k != i) {
+                atoms_copy(a, i, k);
+                if (raw)
+                    memcpy(raw + (size_t)k * rawb, raw + (size_t)i * rawb, rawb);
+            }
+            k++;
+        }
+    int narrive = (int)(inb / rb), nlocal = k + narrive;
+    atoms_reserve(g, nlocal);
+    if (rawb)
+        raw = gr_realloc(g, raw, (size_t)(nlocal + 1) * rawb);
+    for (int j = 0; j < narrive; j++)
+        unpack_atom(a, k + j, in + (size_t)j * rb, raw ? raw + (size_t)(k + j) * rawb : NULL,
+                    rawb);
+    free(in);
+    free(dest);
+    free(tagdest);
+    a->n = nlocal;
+    /* 4. ghosts: every owned atom within the cut-off of another rank's brick */
+    free(p->sendidx);
+    p->sendn = gr_realloc(g, p->sendn, (size_t)P * sizeof(int));
+    p->soff = gr_realloc(g, p->soff, ((size_t)P + 1) * sizeof(int));
+    p->recvn = gr_realloc(g, p->recvn, (size_t)P * sizeof(int));
+    double (*blo)[3] = gr_malloc(g, (size_t)P * sizeof *blo);
+    double (*bhi)[3] = gr_malloc(g, (size_t)P * sizeof *bhi);
+    for (int r = 0; r < P; r++)
+        decomp_brick(g, &p->dc, r, blo[r], bhi[r]);
+    outbox_init(g, &ob, P);
+    int nsend = 0, cap = nlocal + 16;
+    int *idx = gr_malloc(g, (size_t)cap * sizeof(int)), *rk = gr_malloc(g, (size_t)cap * sizeof(int));
+    for (int r = 0; r < P; r++) {
+        p->sendn[r] = 0;
+        if (r == me)
+            continue;
+        for (int i = 0; i < nlocal; i++) {
+            const double *x = a->x + 3 * (size_t)i;
+            int near = 1;
+            for (int q = 0; q < 3 && near; q++)
+                near = gap(x[q], blo[r][q], bhi[r][q], dm->hi[q] - dm->lo[q],
+                           dm->periodic[q]) <= cut;
+            if (!near)
+                continue;
+            if (nsend == cap) {
+                cap *= 2;
+                idx = gr_realloc(g, idx, (size_t)cap * sizeof(int));
+                rk = gr_realloc(g, rk, (size_t)cap * sizeof(int));
+            }
+            idx[nsend] = i;
+            rk[nsend++] = r;
+            p->sendn[r]++;
+            pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb, outbox_room(g, &ob, r, rb));
+        }
+    }
+    free(rk);
+    p->sendidx = idx; /* rank by rank, as the loop above sent them */
+    p->soff[0] = 0;
+    for (int r = 0; r < P; r++)
+        p->soff[r + 1] = p->soff[r] + p->sendn[r];
+    free(blo);
+    free(bhi);
+    in = outbox_send(g, &ob, P, &inb, from);
+    int nghost = (int)(inb / rb);
+    for (int r = 0; r < P; r++)
+        p->recvn[r] = (int)(from[r] / rb);
+    atoms_reserve(g, nlocal + nghost);
+    if (rawb)
+        raw = gr_realloc(g, raw, (size_t)(nlocal + nghost + 1) * rawb);
+    for (int j = 0; j < nghost; j++)
+        unpack_atom(a, nlocal + j, in + (size_t)j * rb,
+                    raw ? raw + (size_t)(nlocal + j) * rawb : NULL, rawb);
+    free(in);
+    /* 5. the device: owned, then ghosts */
+    p->nghost = nghost;
+    eng_reload(g, nlocal, nghost, raw);
+    free(raw);
+    p->list_current = 0;
+}
+
+void par_history_restore(struct gravel *g)
+{
+    struct par *p = g->par;
+    struct engine *e = g->eng;
+    const struct nbr_list *l = nbr_list(g);
+    p->list_current = 1;
+    int nc = l->ncontact;
+    if (!e->history || !p->hist || nc <= 0)
+        return;
+    size_t vb = p->hist->vb;
+    int *ci = gr_malloc(g, 2 * (size_t)nc * sizeof(int));
+    unsigned char *sh = gr_calloc(g, (size_t)nc, vb);
+    eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), ci);
+    eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
+    const int64_t *tag = g->atoms.tag;
+    for (int c = 0; c < nc; c++) {
+        int64_t a = tag[ci[c]], b = tag[ci[nc + c]];
+        const void *v = hist_get(p->hist, a < b ? a : b, a < b ? b : a);
+        if (v)
+            memcpy(sh + (size_t)c * vb, v, vb);
+    }
+    eng_write(g, l->shear, 0, (size_t)nc * vb, sh);
+    free(ci);
+    free(sh);
+    hist_free(p->hist);
+    p->hist = NULL;
+}
+
+/* ---- every other step ----------------------------------------------------------- */
+
+void par_forward(struct gravel *g)
+{
+    struct par *p = g->par;
+    struct engine *e = g->eng;
+    int P = comm_size(), n = e->a.n;
+    cl_mem f[4] = {e->a.x, e->a.xlo, e->a.v, e->rotation ? e->a.omega : NULL};
+    size_t w = 3 * e->rsz;
+    int nf = 0;
+    cl_mem use[4];
+    for (int k = 0; k < 4; k++)
+        if (f[k])
+            use[nf++] = f[k];
+    size_t ab = (size_t)nf * w; /* bytes per ghost */
+    int nsend = p->soff[P];
+    unsigned char *own = gr_malloc(g, (size_t)n * w + 1), *out = gr_malloc(g, (size_t)nsend * ab + 1);
+    for (int k = 0; k < nf; k++) {
+        eng_read(g, use[k], 0, (size_t)n * w, own);
+        for (int s = 0; s < nsend; s++)
+            memcpy(out + (size_t)s * ab + k * w, own + (size_t)p->sendidx[s] * w, w);
+    }
+    free(own);
+    void *sendp[P];
+    size_t sendb[P], recvb[P];
+    for (int r = 0; r < P; r++) {
+        sendp[r] = out + (size_t)p->soff[r] * ab;
+        sendb[r] = (size_t)p->sendn[r] * ab;
+    }
+    void *in = NULL;
+    size_t inb = comm_alltoallv(sendp, sendb, &in, recvb);
+    free(out);
+    if (inb == (size_t)-1)
+        gr_error(g, "out of memory exchanging ghost atoms");
+    int ng = (int)(inb / (ab ? ab : 1));
+    if (ng != p->nghost)
+        gr_error(g, "internal error: %d ghost atoms arrived for %d slots", ng, p->nghost);
+    unsigned char *col = gr_malloc(g, (size_t)ng * w + 1);
+    for (int k = 0; k < nf && ng > 0; k++) {
+        for (int s = 0; s < ng; s++)
+            memcpy(col + (size_t)s * w, (unsigned char *)in + (size_t)s * ab + k * w, w);
+        eng_write(g, use[k], (size_t)n * w, (size_t)ng * w, col);
+    }
+    free(col);
+    free(in);
+}
+
+/* ---- sums in tag order ------------------------------------------------------------ */
+
+void par_sum_add(struct gravel *g, struct par_sum *s, int64_t key, double v)
+{
+    if (!par_on(g)) {
+        s->acc += v;
+        return;
+    }
+    if (s->n == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 1024;
+        s->key = gr_realloc(g, s->key, (size_t)s->cap * sizeof *s->key);
+        s->v = gr_realloc(g, s->v, (size_t)s->cap * sizeof *s->v);
+    }
+    s->key[s->n] = key;
+    s->v[s->n++] = v;
+}
+
+double par_sum_total(struct gravel *g, struct par_sum *s)
+{
+    double t = s->acc;
+    if (par_on(g))
+        t = comm_sum_in_key_order(s->n, s->key, s->v);
+    free(s->key);
+    free(s->v);
+    memset(s, 0, sizeof *s);
+    return t;
+}

@@ -1,0 +1,77 @@
+/* par.h - a run decomposed over MPI ranks (bin/gravel-mpi, doc/parallel.md).
+ *
+ * Between runs every rank holds every atom on the host, in tag order (the
+ * script's commands run the same on each rank). At a run's start each rank
+ * keeps the atoms of its brick (decomp.h); on the device its owned atoms
+ * sit in slots 0 .. nlocal-1 (engine a.n) and copies of other ranks' atoms
+ * within the ghost cut-off (the neighbor cut-off, skin included) behind
+ * them, nghost of them. At a neighbor rebuild the owned atoms that left the
+ * brick move to their new rank with their contact history, and the ghosts
+ * are chosen again; on the other steps the ghosts' positions, velocities
+ * and angular velocities come from their owners, as raw device bytes.
+ *
+ * Every contact between an owned atom and a ghost is evaluated on both
+ * ranks from the same bits, and each particle sums its contacts in partner
+ * tag order, so the trajectory is bit-identical on any number of ranks;
+ * the host sums of thermo add per-atom terms in global tag order
+ * (comm_sum_in_key_order). At a run's end every rank gathers all atoms.
+ *
+ * On one rank (bin/gravel, or bin/gravel-mpi -np 1) none of this runs. */
+#ifndef GR_PAR_H
+#define GR_PAR_H
+
+#include <stdint.h>
+
+#include "decomp.h"
+#include "state.h"
+
+struct par_hist;
+
+struct par {
+    struct decomp dc;
+    int on;                 /* the current run is decomposed (comm_size() > 1) */
+    double cut;             /* ghost cut-off of the run */
+    int nghost;
+    int *sendn, *soff, *sendidx; /* ghosts sent to each rank: owned indices */
+    int *recvn;             /* ghosts received from each rank, in slot order */
+    int list_current;       /* the device's contacts index the current atoms */
+    struct par_hist *hist;  /* contact history by tag pair across a rebuild or runs */
+    uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
+};
+
+/* This gravel's parallel state (created on first use). */
+struct par *par_state(struct gravel *g);
+void par_free(struct gravel *g);
+/* 1 while a decomposed run is active */
+int par_on(const struct gravel *g);
+/* Ghost slots behind the owned atoms on the device (0 when not decomposed). */
+int par_nghost(const struct gravel *g);
+
+/* Run start, before the upload: refuse what cannot run across ranks yet,
+ * choose the grid and keep the atoms of this rank's brick. */
+void par_run_begin(struct gravel *g);
+/* A neighbor rebuild, after the periodic wrap: owned atoms to their ranks
+ * with their contacts' history, ghosts chosen and everything uploaded
+ * (owned, then ghosts). The ghost cut-off is cut. */
+void par_exchange(struct gravel *g, double cut);
+/* After the contacts are built: their history from the tag pairs. */
+void par_history_restore(struct gravel *g);
+/* Every step that does not rebuild: the ghosts' x, v, omega from their owners. */
+void par_forward(struct gravel *g);
+/* Run end: every rank's host holds all atoms in tag order. */
+void par_run_end(struct gravel *g);
+/* A sum over the atoms of every rank in one process's order: terms added
+ * with ascending keys (a tag, or 2 tag + k for several terms per atom) give
+ * the bits of one process adding them in that order. On one rank the terms
+ * are added as they come (the caller adds them in key order). */
+struct par_sum {
+    double acc;
+    int n, cap;
+    int64_t *key;
+    double *v;
+};
+void par_sum_add(struct gravel *g, struct par_sum *s, int64_t key, double v);
+/* The total on every rank (collective); releases s. */
+double par_sum_total(struct gravel *g, struct par_sum *s);
+
+#endif
