@@ -237,6 +237,7 @@ void par_run_begin(struct gravel *g)
     struct par *p = par_state(g);
     p->on = comm_size() > 1;
     p->nghost = 0;
+    p->list_current = 0; /* the device's contacts are the last run's */
     if (!p->on)
         return;
     check_scene(g);
@@ -269,7 +270,8 @@ static int by_tag(const void *x, const void *y, void *rb)
     return (a > b) - (a < b);
 }
 
-/* The current contacts' history into *h by tag pair (the device's raw bytes). */
+/* The current contacts' history into *h by tag pair (the device's raw
+ * bytes): the contacts of an owned atom, whose history this rank keeps. */
 static void hist_collect(struct gravel *g, struct par_hist **h)
 {
     struct engine *e = g->eng;
@@ -286,7 +288,10 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
     eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
     const int64_t *tag = g->atoms.tag;
+    int nown = e->a.n;
     for (int c = 0; c < nc; c++) {
+        if (ci[c] >= nown && ci[nc + c] >= nown)
+            continue; /* two ghosts: their history is their owners' business */
         int64_t a = tag[ci[c]], b = tag[ci[nc + c]];
         hist_put(g, h, a < b ? a : b, a < b ? b : a, sh + (size_t)c * vb);
     }
