@@ -1016,6 +1016,33 @@ static int lammps2021_bins(struct gravel *g, struct nbr *b, cl_kernel k, int a)
     return a;
 }
 
+/* The history transfer (kernels/neighbor.cl hist_transfer) of the current
+ * contacts from previous ones: nc < 0 for none (-nc contacts). */
+static void transfer(struct gravel *g, struct nbr *b, int nc, cl_mem perm, int permuted,
+                     cl_mem coff_old, cl_mem parked, int at, cl_mem old_shear)
+{
+    struct engine *e = g->eng;
+    struct nbr_list *l = &b->list;
+    cl_kernel k = b->k_hist_transfer;
+    int a = 0;
+    eng_arg_int(g, k, a++, nc);
+    eng_arg_mem(g, k, a++, l->ci);
+    eng_arg_mem(g, k, a++, l->cj);
+    eng_arg_mem(g, k, a++, perm);
+    eng_arg_int(g, k, a++, permuted);
+    eng_arg_mem(g, k, a++, coff_old);
+    eng_arg_mem(g, k, a++, parked);
+    eng_arg_int(g, k, a++, at);
+    eng_arg_mem(g, k, a++, old_shear);
+    eng_arg_mem(g, k, a++, l->shear);
+    eng_arg_mem(g, k, a++, e->a.x);
+    eng_arg_mem(g, k, a++, e->a.radius);
+    a = nbr_arg_box(g, k, a, l);
+    eng_arg_mem(g, k, a++, e->a.tag);
+    a = lammps2021_bins(g, b, k, a);
+    eng_launch(g, k, (size_t)(nc < 0 ? -nc : nc));
+}
+
 /* Contacts of the rows just built (atoms 0 .. n-1): offsets (scan of the
  * owned counts), owners, partners, incidence; then their history. */
 static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
@@ -1059,26 +1086,27 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
         return;
     }
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
-    k = b->k_hist_transfer;
-    a = 0;
-    eng_arg_int(g, k, a++, have_old ? total : -total);
-    eng_arg_mem(g, k, a++, l->ci);
-    eng_arg_mem(g, k, a++, l->cj);
     cl_mem any = l->ci; /* the previous contacts' buffers are not read without them */
-    eng_arg_mem(g, k, a++, have_old ? b->perm : any);
-    eng_arg_int(g, k, a++, permuted);
-    eng_arg_mem(g, k, a++, have_old ? b->coff_old : any);
-    eng_arg_mem(g, k, a++, have_old ? l->recf : any);
-    eng_arg_int(g, k, a++, (int)b->old_cj_at);
-    eng_arg_mem(g, k, a++, have_old ? l->recf : l->shear);
-    eng_arg_mem(g, k, a++, l->shear);
-    eng_arg_mem(g, k, a++, e->a.x);
-    eng_arg_mem(g, k, a++, e->a.radius);
-    a = nbr_arg_box(g, k, a, l);
-    eng_arg_mem(g, k, a++, e->a.tag);
-    a = lammps2021_bins(g, b, k, a);
-    eng_launch(g, k, (size_t)total);
+    transfer(g, b, have_old ? total : -total, have_old ? b->perm : any, permuted,
+             have_old ? b->coff_old : any, have_old ? l->recf : any, (int)b->old_cj_at,
+             have_old ? l->recf : l->shear);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
+}
+
+void nbr_history_install(struct gravel *g, const void *hist)
+{
+    struct engine *e = g->eng;
+    struct nbr *b = get(g);
+    struct nbr_list *l = &b->list;
+    size_t bytes = (size_t)l->ncontact * e->hist_n * e->rsz;
+    if (!e->history || l->ncontact <= 0)
+        return;
+    cl_mem from = eng_alloc(g, bytes, "contact history by tag pair");
+    eng_write(g, from, 0, bytes, hist);
+    /* each contact its own previous one: the transfer keeps what overlaps */
+    transfer(g, b, l->ncontact, l->ci, 0, l->coff, l->cj, 0, from);
+    eng_finish(g);
+    clReleaseMemObject(from);
 }
 
 /* Gather one per-atom array (bytes per atom) into the new order through the

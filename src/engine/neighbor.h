@@ -90,6 +90,10 @@ struct nbr_state {
     double *xhold;          /* [3 n] */
 };
 int nbr_export(struct gravel *g, struct nbr_state *s);
+/* A decomposed run's rebuild: hist (the device's bytes, HIST_N REAL per
+ * current contact) becomes the contacts' history, kept only where the
+ * rebuild's transfer keeps it (pairs that overlap now). */
+void nbr_history_install(struct gravel *g, const void *hist);
 int nbr_import(struct gravel *g, const struct nbr_state *s);
 void nbr_state_free(struct nbr_state *s);
 

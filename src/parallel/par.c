@@ -652,7 +652,7 @@ void par_history_restore(struct gravel *g)
         if (v)
             memcpy(sh + (size_t)c * vb, v, vb);
     }
-    eng_write(g, l->shear, 0, (size_t)nc * vb, sh);
+    nbr_history_install(g, sh);
     free(ci);
     free(sh);
     hist_free(p->hist);

@@ -69,7 +69,7 @@ check version '[ $rc -eq 0 ] && grep -q "^gravel [0-9]" out'
 # before any file is opened, rank 0 says why; one rank runs as usual
 rm -f log.gravel
 OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=0 "$bin" -in in.ok -var T 1 > out 2>&1; rc=$?
-check mpi_ranks_refused '[ $rc -eq 1 ] && [ ! -f log.gravel ] && grep -q "^ERROR: gravel was launched as 2 MPI ranks, but it runs in one process" out'
+check mpi_ranks_refused '[ $rc -eq 1 ] && [ ! -f log.gravel ] && grep -q "^ERROR: bin/gravel was launched as 2 MPI ranks, but it is the one-process build: run bin/gravel-mpi" out'
 PMI_SIZE=4 PMI_RANK=3 "$bin" -in in.ok -var T 1 > out 2>&1; rc=$?
 check mpi_other_rank_silent '[ $rc -eq 1 ] && [ ! -s out ] && [ ! -f log.gravel ]'
 OMPI_COMM_WORLD_SIZE=1 OMPI_COMM_WORLD_RANK=0 "$bin" -in in.ok -var T 1 > out 2>&1; rc=$?

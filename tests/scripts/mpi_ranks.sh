@@ -1,0 +1,116 @@
+#!/bin/sh
+# mpi_ranks.sh - bin/gravel-mpi on 1, 2, 3, 4 and 8 ranks (oversubscribed):
+# the thermo rows (17 digits) and the final atoms (write_dump, sorted by ID,
+# 17 digits) are bit-identical to bin/gravel on one process, across two runs
+# (contact history carried by tag pair through migrations and between runs),
+# for a periodic gas crossing every face and corner of the bricks and the
+# LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
+# single precision; errors end every rank with one message (doc/parallel.md).
+cd "$(dirname "$0")/../.." || exit 1
+root=$(pwd)
+serial="$root/bin/gravel"
+par="$root/bin/gravel-mpi"
+data=/work/shared/peers/chute/data.chute
+check() { # name, condition (shell expression)
+    if eval "$2"; then echo "PASS mpi_$1"; else echo "FAIL mpi_$1"; fi
+}
+if [ ! -x "$par" ] || ! command -v mpirun > /dev/null; then
+    echo "FAIL mpi_build [bin/gravel-mpi or mpirun missing: make test installs openmpi-bin and libopenmpi-dev]"
+    exit 1
+fi
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+cd "$t" || exit 1
+ln -s "$data" data.chute
+
+# a hot gas: periodic in x y z, atoms cross every brick face, edge and corner
+cat > gas.in <<'IN'
+variable        pz index 0
+units           lj
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 12 0 12 0 12
+create_box      1 box
+create_atoms    1 box
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+timestep        0.0002
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 temp
+thermo_modify   norm no format float %.17g
+thermo          100
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+# the LAMMPS chute, two runs
+cat > chute.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p fs
+newton          off
+comm_modify     vel yes
+read_data       data.chute
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+timestep        0.0001
+group           bottom type 2
+group           active subtract all bottom
+neigh_modify    exclude group bottom bottom
+fix             1 all gravity 1.0 chute 26.0
+fix             2 bottom freeze
+fix             3 active nve/sphere
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 vol
+thermo_modify   norm no format float %.17g
+thermo          30
+run             120
+run             60
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+
+rows() { grep -E '^ +[0-9]+ +[0-9]+ ' "$1"; }
+# name, deck, ranks, extra gravel arguments, processors line (or empty)
+same() {
+    if [ -n "$5" ]; then sed "s/^comm_modify/processors $5\ncomm_modify/" "$2" > p.in; else cp "$2" p.in; fi
+    mpirun -np "$3" "$par" -in p.in -log none $4 > "$1.out" 2> "$1.err"; rc=$?
+    mv final.dump "$1.dump" 2> /dev/null
+    check "$1" '[ $rc -eq 0 ] && [ -s ref.dump ] && cmp -s ref.dump "$1.dump" && [ "$(rows ref.out)" = "$(rows "$1.out")" ] && [ "$(rows ref.out | wc -l)" -ge 5 ]'
+}
+
+"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump
+same gas_np1 gas.in 1 ""
+same gas_np2 gas.in 2 ""
+same gas_np4 gas.in 4 ""
+same gas_np4_slabs gas.in 4 "" "4 1 1"
+same gas_np8 gas.in 8 ""
+check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
+
+"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump
+same chute_np3 chute.in 3 ""
+same chute_np4_z chute.in 4 "" "1 2 2"
+"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump
+same chute_single_np2 chute.in 2 "-precision single"
+
+# what cannot run across ranks yet stops every rank, one message, exit 1
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/gran hooke\/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL/' chute.in > wall.in
+mpirun -np 2 "$par" -in wall.in -log none > wall.out 2>&1; rc=$?
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" wall.out)" -eq 1 ] && grep -q "fix 4 (wall/gran)" wall.out'
+printf 'units lj\nbogus_cmd 1\n' > bad.in
+mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
+check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
+printf 'processors 3 1 1\n' > procs.in
+cat gas.in >> procs.in
+mpirun -np 2 "$par" -in procs.in -log none > procs.out 2>&1; rc=$?
+check processors_mismatch '[ $rc -ne 0 ] && [ "$(grep -c "does not factor the 2 ranks" procs.out)" -eq 1 ]'
