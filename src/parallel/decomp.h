@@ -15,9 +15,6 @@ struct decomp {
     int me[3];              /* this rank's place in it (rank = x + px (y + py z)) */
 };
 
-/* `processors Px Py Pz`: stores the counts (checked against the rank count
- * at the next run). */
-void cmd_processors(struct gravel *g, int argc, char **argv);
 /* The grid of the current box for comm_size() ranks. */
 void decomp_setup(struct gravel *g, struct decomp *d);
 /* The rank owning position x (periodic dimensions wrapped into the box;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "args.h"
 #include "atoms.h"
 #include "comm.h"
 #include "compute.h"
@@ -115,6 +116,29 @@ void par_free(struct gravel *g)
 
 int par_on(const struct gravel *g) { return g->par && g->par->on; }
 int par_nghost(const struct gravel *g) { return par_on(g) ? g->par->nghost : 0; }
+
+/* ---- the processors command ------------------------------------------------------ */
+
+void cmd_processors(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "processors needs Px Py Pz (a count or *), got %d arguments", argc);
+    if (argc > 3)
+        gr_error(g, "processors keyword '%s' is not supported (only Px Py Pz)", argv[3]);
+    struct decomp *d = &par_state(g)->dc;
+    for (int q = 0; q < 3; q++) {
+        if (strcmp(argv[q], "*") == 0) {
+            d->user[q] = 0;
+            continue;
+        }
+        long v = arg_int(g, argv[q], "processors count");
+        if (v < 1 || v > 1 << 20)
+            gr_error(g, "processors count '%s' must be * or a positive integer", argv[q]);
+        d->user[q] = (int)v;
+    }
+    if (g->dom.box_exists && g->dom.dimension == 2 && d->user[2] > 1)
+        gr_error(g, "processors: Pz must be 1 for a 2d simulation, got %d", d->user[2]);
+}
 
 /* ---- the per-atom record: the FL_STATE rows of the field table -------------------- */
 

@@ -39,6 +39,9 @@ struct par {
     uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
 };
 
+/* `processors Px Py Pz`: the grid's counts (checked against the rank count
+ * at the next run). */
+void cmd_processors(struct gravel *g, int argc, char **argv);
 /* This gravel's parallel state (created on first use). */
 struct par *par_state(struct gravel *g);
 void par_free(struct gravel *g);
