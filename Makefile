@@ -139,6 +139,7 @@ fuzz-merge: bin/fuzz_input
 
 # The agglomeration study of source document 000 chapter 6 (fig. 6.8), see
 # doc/agglomeration.md: about 2 h with the defaults (N 1000, 300 s); AGGLO_QUICK=1 for a few minutes.
+# Checkpoints with restart files: run it again after an interruption and it resumes.
 reproduce-agglomeration: deps
 	@sh tools/deps.sh gnuplot-nox
 	@$(MAKE) --no-print-directory all

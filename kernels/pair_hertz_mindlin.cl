@@ -13,9 +13,12 @@
  *   F_t = -(kt a) s - cd sqrt(kt a m*) v_t,  rescaled to mu max(F_n, 0) when larger
  *         (the dashpot makes F_n tensile late in a contact: no load, no friction)
  *         (in slip the spring is reset to carry F_t alone: s = -F_t/S_t)
+ *   tangential thesis (003 sec. 4.3, kt = 8 G): s = v_t dt afresh each step, nothing
+ *         stored: F_t = -(kt a dt + cd sqrt(kt a m*)) v_t, rescaled to mu max(F_n, 0)
+ *         when larger; no force when v_t = 0 (no static friction)
  *   torque_i = -radi n x F_t  - mu_r R* max(F_n, 0) w/|w|,  w = omega_i - omega_j
  *   torque_j = -radj n x F_t  + mu_r R* max(F_n, 0) w/|w|
- * Param layout HM_*: kn kt cd mu mu_r. [SI or any consistent units.]
+ * Param layout HM_*: kn kt cd mu mu_r tthesis. [SI or any consistent units.]
  * Antisymmetric under i <-> j: n, vr, v_t, s, F and w flip sign. */
 
 /* R* enters the law: the pair loop must fill c->reff (kernels/pair_loop.cl) */
@@ -37,8 +40,9 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
 
     const REAL3 vt = c->vtr; /* the contact points' relative velocity */
 
-    REAL3 s = *shear;
-    if (c->shearupdate)
+    const int thesis = param[HM_TTHESIS] != (REAL)0;
+    REAL3 s = thesis ? vt * c->dt : *shear; /* thesis: one step's displacement */
+    if (c->shearupdate && !thesis)
         s += vt * c->dt;
     s -= dot(s, n) * n;     /* keep the spring in the current tangent plane */
 
@@ -48,19 +52,21 @@ static inline void hertz_mindlin_eval(const struct contact *c, __global const RE
     const REAL ftmag = length(ft);
     const REAL flim = mu * fmax(fnmag, (REAL)0); /* no friction under tension */
     if (ftmag > flim) {
-        if (st > (REAL)0) {
+        if (thesis || st > (REAL)0) {
             /* sliding: F_t = flim ft/|ft|; the spring alone carries it
              * (verify: LAMMPS' mapping s = -(F_t + d_t v_t)/S_t stores the
              * damping share too, which grows as delta^(-1/4) at contact
              * start because d_t/S_t does, leaves a spring of the wrong sign
-             * that later pushes along the slip, and has no dt -> 0 limit) */
+             * that later pushes along the slip, and has no dt -> 0 limit);
+             * thesis: nothing is stored */
             ft *= flim / ftmag;
-            s = -ft / st;
+            if (!thesis)
+                s = -ft / st;
         } else {
             ft = (REAL3)(0);
         }
     }
-    if (c->shearupdate)
+    if (c->shearupdate && !thesis)
         *shear = s;
     out->f = fnmag * n + ft;
 

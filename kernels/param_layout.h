@@ -16,9 +16,10 @@ enum gran_param { GRAN_KN, GRAN_KT, GRAN_GAMMAN, GRAN_GAMMAT, GRAN_XMU, GRAN_LIM
  * t_col = ctcol sqrt(m*), torque on/off (0/1). */
 enum lr_param { LR_KE, LR_KF, LR_MU, LR_CETA, LR_CTCOL, LR_TORQUE, LR_NPARAM };
 
-/* hertz/mindlin: kn = 4/3 E*, kt = 8 G*, damping factor, friction and
- * rolling-friction coefficients (styles/pair/pair_hertz_mindlin.c). */
-enum hm_param { HM_KN, HM_KT, HM_CDAMP, HM_MU, HM_MUR, HM_NPARAM };
+/* hertz/mindlin: kn = 4/3 E*, kt (8 G*, or 8 G with tangential thesis), damping
+ * factor, friction and rolling-friction coefficients, tangential model (0 Mindlin
+ * history, 1 003's one-step displacement) (styles/pair/pair_hertz_mindlin.c). */
+enum hm_param { HM_KN, HM_KT, HM_CDAMP, HM_MU, HM_MUR, HM_TTHESIS, HM_NPARAM };
 
 /* cohesion: kc, then the effect radius a + b r of each side (i, j). */
 enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };

@@ -1,4 +1,5 @@
-/* pair_hertz_mindlin.c - `pair_style hertz/mindlin E nu e mu [rolling mu_r]`:
+/* pair_hertz_mindlin.c - `pair_style hertz/mindlin E nu e mu [rolling mu_r]
+ * [tangential mindlin|thesis]`:
  * Hertz-Mindlin contact with the restitution-derived (Tsuji-type) damping of
  * Hromnik, "A GPGPU implementation of the DEM ... tumbling mill" (source
  * document 003) sec. 4.3, torque on both particles (sec. 4.4) and optional
@@ -19,7 +20,10 @@
  * of one time step) and G* with 1 - nu^2; we keep the Mindlin history and the
  * standard G* (Di Renzo & Di Maio 2004), because the one-step displacement
  * makes the tangential stiffness vanish as dt -> 0 (the same flaw 000 sec.
- * 3.2.2 shows). 003's rolling torque min(|F_n|, omega_rel) mixes units; the
+ * 3.2.2 shows); `tangential thesis` gives 003's own law as an option: s = v_t dt
+ * afresh each step (nothing stored) with S_t = 8 G sqrt(R* delta) (fig. 5.23's
+ * ppTanForceCoeff = 8 G sqrt(R/2) dt), so F_t = 0 when v_t = 0 (no static
+ * friction). 003's rolling torque min(|F_n|, omega_rel) mixes units; the
  * form above is that of Zhou et al. 1999 it cites.
  *
  * Materials per type pair (003 fig. 5.24 gives particle-particle and
@@ -42,9 +46,9 @@
 #include "pair.h"
 #include "pair_seeds.h"
 
-enum { C_E, C_NU, C_REST, C_MU, C_MUR };
+enum { C_E, C_NU, C_REST, C_MU, C_MUR, C_TTHESIS };
 
-#define HMC_N 5
+#define HMC_N 6
 
 /* Per type pair: set (0 none, 1 pair_style values, 2 own values) and values. */
 struct hm_table {
@@ -64,27 +68,39 @@ static void destroy(struct pair *p)
     p->data = NULL;
 }
 
-/* E nu e mu [rolling mu_r] into c[0..5); `who` names the command. */
+/* E nu e mu [rolling mu_r] [tangential mindlin|thesis] into c[0..HMC_N); `who`
+ * names the command. */
 static void parse_material(struct gravel *g, int argc, char **argv, double *c, const char *who)
 {
-    if (argc != 4 && argc != 6)
-        gr_error(g, "%s expects E nu e mu [rolling mu_r], got %d argument(s)", who, argc);
+    if (argc < 4 || argc % 2)
+        gr_error(g, "%s expects E nu e mu [rolling mu_r] [tangential mindlin|thesis], got %d "
+                    "argument(s)", who, argc);
     double E = coeff_arg(g, NULL, argv[0], "Young's modulus E", CR_POSITIVE);
     double nu = coeff_arg(g, NULL, argv[1], "Poisson ratio nu", CR_POISSON);
     double e = coeff_arg(g, NULL, argv[2], "restitution coefficient e", CR_RESTITUTION);
     double mu = coeff_arg(g, NULL, argv[3], "friction coefficient mu", CR_NONNEG);
-    double mur = 0.0;
-    if (argc == 6) {
-        if (strcmp(argv[4], "rolling"))
-            gr_error(g, "unknown pair_style hertz/mindlin keyword '%.64s' (expected rolling)",
-                     argv[4]);
-        mur = coeff_arg(g, NULL, argv[5], "rolling friction coefficient mu_r", CR_NONNEG);
+    double mur = 0.0, thesis = 0.0;
+    for (int k = 4; k < argc; k += 2) {
+        if (!strcmp(argv[k], "rolling"))
+            mur = coeff_arg(g, NULL, argv[k + 1], "rolling friction coefficient mu_r",
+                            CR_NONNEG);
+        else if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 1], "mindlin"))
+            thesis = 0.0;
+        else if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 1], "thesis"))
+            thesis = 1.0;
+        else if (!strcmp(argv[k], "tangential"))
+            gr_error(g, "%s: unknown tangential model '%.64s' (expected mindlin or thesis)", who,
+                     argv[k + 1]);
+        else
+            gr_error(g, "unknown pair_style hertz/mindlin keyword '%.64s' (expected rolling or "
+                        "tangential)", argv[k]);
     }
     c[C_E] = E;
     c[C_NU] = nu;
     c[C_REST] = e;
     c[C_MU] = mu;
     c[C_MUR] = mur;
+    c[C_TTHESIS] = thesis;
 }
 
 static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
@@ -92,7 +108,7 @@ static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
     parse_material(g, argc, argv, p->coef, "pair_style hertz/mindlin");
 }
 
-/* pair_coeff I J [E nu e mu [rolling mu_r]] */
+/* pair_coeff I J [E nu e mu [rolling mu_r] [tangential mindlin|thesis]] */
 static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, int jhi,
                   int argc, char **argv)
 {
@@ -159,11 +175,16 @@ static double estar(const struct pair *p)
     return estar_of(p->coef);
 }
 
+/* G = E / (2 (1 + nu)); tangential thesis uses it as 003's c_t = 8 G sqrt(R*)
+ * (sec. 4.3, fig. 5.23) */
+static double g_of(const double *c)
+{
+    return c[C_E] / (2.0 * (1.0 + c[C_NU]));
+}
+
 static double gstar_of(const double *c)
 {
-    double nu = c[C_NU];
-    double G = c[C_E] / (2.0 * (1.0 + nu));
-    return G / (2.0 * (2.0 - nu));
+    return g_of(c) / (2.0 * (2.0 - c[C_NU]));
 }
 
 static void pack(const struct pair *p, int itype, int jtype, double *param)
@@ -171,10 +192,11 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
     const double *c = material(p, itype, jtype);
     double l = log(c[C_REST]);
     param[HM_KN] = 4.0 / 3.0 * estar_of(c);
-    param[HM_KT] = 8.0 * gstar_of(c);
+    param[HM_KT] = 8.0 * (c[C_TTHESIS] != 0.0 ? g_of(c) : gstar_of(c));
     param[HM_CDAMP] = 2.0 * sqrt(5.0 / 6.0) * (-l / sqrt(l * l + M_PI * M_PI));
     param[HM_MU] = c[C_MU];
     param[HM_MUR] = c[C_MUR];
+    param[HM_TTHESIS] = c[C_TTHESIS];
 }
 
 /* Hertz contact duration of two equal spheres (m* = m/2, R* = r/2) at impact

@@ -3,7 +3,9 @@
 
 Reads the per-grid-point logs written by inputs/published/agglomeration/agglomeration.in
 (PREFIX_Sy<Sy>_St<St>.log), takes the thermo table of each (columns Step Time c_ag[1..5]
-...: number of agglomerates, mean size, sd of size, largest, mean void fraction) and
+...: number of agglomerates, mean size, sd of size, largest, mean void fraction; a
+grid point resumed from a restart file appends a table that starts at the restart step:
+its rows replace the interrupted table's from that step on) and
 averages each statistic over a time window. 000 ran 600 s and averaged over 500-550 s;
 by default the window is the same fraction of the simulated time of each log
 (5/6 to 11/12 of its last thermo time), or --window T0 T1 in seconds.
@@ -33,11 +35,12 @@ RE_SY = re.compile(r"^Stickiness number at the mean flow speed \S+: Sy = (\S+)")
 def parse_log(path):
     """Returns a dict: Sy, St (targets), e, mu, kc, Stk_log, Sy_log (engine's run-setup
     numbers, None when absent), header (list of column names) and rows (list of float
-    lists) of the first thermo table; completed = True when the run printed its
+    lists) of the thermo tables, each later table (a resumed run) replacing the rows from
+    its first step on; completed = True when the last table ended with the run's
     'Loop time' footer."""
     info = {"path": path, "Sy": None, "St": None, "e": None, "mu": None, "kc": None,
             "Stk_log": None, "Sy_log": None, "header": None, "rows": [], "completed": False}
-    in_table = False
+    in_table = first = False
     with open(path, errors="replace") as f:
         for line in f:
             line = line.rstrip("\n")
@@ -58,9 +61,12 @@ def parse_log(path):
                 info["Sy_log"] = float(m.group(1))
                 continue
             words = line.split()
-            if not in_table and info["header"] is None and words[:2] == ["Step", "Time"]:
+            if words[:2] == ["Step", "Time"] and (
+                    info["header"] is None or words == info["header"]):
                 info["header"] = words
+                info["completed"] = False
                 in_table = True
+                first = True
                 continue
             if in_table:
                 if line.startswith("Loop time"):
@@ -70,9 +76,13 @@ def parse_log(path):
                 if len(words) != len(info["header"]):
                     continue            # engine notes inside the table (list growth ...)
                 try:
-                    info["rows"].append([float(w) for w in words])
+                    row = [float(w) for w in words]
                 except ValueError:
                     continue
+                if first:       # a resumed run: its rows replace those from here on
+                    info["rows"] = [r for r in info["rows"] if r[0] < row[0]]
+                    first = False
+                info["rows"].append(row)
     return info
 
 

@@ -1,22 +1,34 @@
 #!/bin/sh
 # Runs the agglomeration study of source document 000 chapter 6 end to end
 # (`make reproduce-agglomeration`): the deck inputs/published/agglomeration/
-# agglomeration.in sweeps the 4 x 4 Stickiness x Stokes grid in one gravel
-# process, tools/agglomeration/average.py averages every grid point over the
-# window of 000 sec. 6.2.2 (the same fraction of the run as 500-550 s of 600 s),
-# tools/agglomeration/plot.py draws fig. 6.8 (mean size and void fraction against
-# the Stokes number, one line per Stickiness number) and the time series.
+# agglomeration.in runs each point of the 4 x 4 Stickiness x Stokes grid in a
+# gravel process of its own, checkpointing with restart files;
+# tools/agglomeration/average.py averages every grid point over the window of
+# 000 sec. 6.2.2 (the same fraction of the run as 500-550 s of 600 s),
+# tools/agglomeration/plot.py draws fig. 6.8 (mean size and void fraction
+# against the Stokes number, one line per Stickiness number) and the time series.
+#
+# Resumable: run it again after an interruption (a wall-time limit, a stopped
+# session) with the same settings and it keeps the finished grid points,
+# resumes each interrupted one from its newer restart file (exact
+# continuation: the same numbers as an uninterrupted run) and starts the rest.
+# Other settings than the run directory's (its file `settings`) start over.
 #
 # Environment (all optional):
 #   AGGLO_QUICK=1  shortened sweep: 5 s per grid point (a few minutes in all)
 #   AGGLO_N        number of particles     (default 1000; 000 table 6.1: 10000)
 #   AGGLO_TEND     simulated s per point   (default 300, quick 5; 000: 600)
 #   AGGLO_NOUT     thermo rows per point   (default 240, quick 50)
+#   AGGLO_SEED     seed of the initial state (default 12345)
+#   AGGLO_SY, AGGLO_ST  the grid (default 000's: "0.1 0.6 1.0 1.5", "0.1 1.0 5.0 10.0")
+#   AGGLO_CHECKPOINTS  restart files per grid point (default 24; 0: none, no resume)
 #   AGGLO_TAG      name of this run in the output names (default full or quick)
 #   AGGLO_OUT      run directory (default build/agglomeration/<tag>)
 #   AGGLO_DOC      where the PNGs and the Markdown table go (default doc)
+#   AGGLO_PLOT=0   no plots (no gnuplot needed)
 # Outputs: $AGGLO_DOC/agglomeration_<tag>.png (fig. 6.8), _<tag>_series.png,
-# _<tag>.md (table); the logs, table.dat and the initial state in the run dir.
+# _<tag>.md (table); the logs, restart files, table.dat and the initial state
+# in the run dir.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ "${AGGLO_QUICK:-0}" = 1 ]; then
@@ -25,25 +37,56 @@ else
     tag=full; tend=${AGGLO_TEND:-300}; nout=${AGGLO_NOUT:-240}
 fi
 n=${AGGLO_N:-1000}
+seed=${AGGLO_SEED:-12345}
+sys=${AGGLO_SY:-0.1 0.6 1.0 1.5}
+sts=${AGGLO_ST:-0.1 1.0 5.0 10.0}
+ncp=${AGGLO_CHECKPOINTS:-24}
 tag=${AGGLO_TAG:-$tag}
 out=${AGGLO_OUT:-$root/build/agglomeration/$tag}
 doc=${AGGLO_DOC:-$root/doc}
+deck=$root/inputs/published/agglomeration/agglomeration.in
 mkdir -p "$out" "$doc"
-rm -f "$out"/agglo_Sy*_St*.log
-echo "agglomeration sweep ($tag): N = $n particles, $tend s per grid point, 16 grid points, in $out"
-start=$(date +%s)
 cd "$out"
-# The deck's own `print` lines show the progress; the full screen output stays in screen.txt.
-"$root/bin/gravel" -in "$root/inputs/published/agglomeration/agglomeration.in" \
-    -var N "$n" -var tend "$tend" -var nout "$nout" -var prefix agglo \
-    -log sweep.log > screen.txt 2>&1 &
-pid=$!
-tail -f screen.txt --pid=$pid 2>/dev/null | grep --line-buffered -E '^(agglomeration grid point|check:|ERROR)' || true
-wait $pid || { echo "gravel failed; see $out/screen.txt"; tail -5 screen.txt; exit 1; }
-echo "sweep took $(( $(date +%s) - start )) s"
+settings="N $n tend $tend nout $nout seed $seed checkpoints $ncp deck $(cksum < "$deck")"
+if [ -f settings ] && [ "$(cat settings)" != "$settings" ]; then
+    echo "settings differ from the earlier run in $out: starting over"
+    rm -f agglo_Sy*_St*.log agglo_Sy*_St*.hist agglo_Sy*_St*.restart.[ab] agglo_init.* screen.txt
+fi
+printf '%s\n' "$settings" > settings
+echo "agglomeration sweep ($tag): N = $n particles, $tend s per grid point, in $out"
+start=$(date +%s)
+for sy in $sys; do
+    for st in $sts; do
+        p=agglo_Sy${sy}_St${st}
+        if grep -q '^agglomeration grid point done' "$p.log" 2>/dev/null; then
+            echo "grid point Sy $sy St $st: finished earlier, kept"
+            continue
+        fi
+        # the newer of the two restart files (written in turn, each atomically)
+        rfile=$(/usr/bin/python3 -c 'import os, sys
+f = [a for a in sys.argv[1:] if os.path.isfile(a)]
+print(max(f, key=lambda a: os.stat(a).st_mtime_ns) if f else "")' "$p.restart.a" "$p.restart.b")
+        if [ -n "$rfile" ]; then
+            set -- -var resume 1 -var rfile "$rfile"
+        else
+            rm -f "$p.log" "$p".*hist
+            set --
+        fi
+        # The deck's own `print` lines show the progress; the full screen output stays in screen.txt.
+        "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" -var tend "$tend" \
+            -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var prefix agglo "$@" \
+            -log sweep.log >> screen.txt 2>&1 &
+        pid=$!
+        tail -n 0 -f screen.txt --pid=$pid 2>/dev/null |
+            grep --line-buffered -E '^(agglomeration grid point|grid point|check:|ERROR)' || true
+        wait $pid || { echo "gravel failed; see $out/screen.txt"; tail -5 screen.txt; exit 1; }
+    done
+done
+echo "sweep took $(( $(date +%s) - start )) s (this invocation)"
 /usr/bin/python3 "$root/tools/agglomeration/average.py" . --prefix agglo --out table.dat \
     --markdown "$doc/agglomeration_$tag.md"
 cat table.dat
+[ "${AGGLO_PLOT:-1}" = 0 ] && exit 0
 title="gravel, 000 fig. 6.8 setup: N = $n, $tend s per point, window 5/6-11/12 of the run"
 /usr/bin/python3 "$root/tools/agglomeration/plot.py" table.dat "$doc/agglomeration_$tag.png" \
     --title "$title" --series . agglo "$doc/agglomeration_${tag}_series.png"

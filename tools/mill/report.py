@@ -254,10 +254,21 @@ def departures(res):
              "tangential displacement to V_t dt afresh each step (fig. 5.23's ppTanForceCoeff "
              "5696.31 = 8 G sqrt(R/2) x 1e-6 s and psTanForceCoeff 67.9176 = 8 G_ps sqrt(R/2) x "
              "1e-6 s fold its step in): no memory and, as it says of its friction in sec. 4.2, no "
-             "static friction (F_t = 0 when V_t = 0).\n")
+             "static friction (F_t = 0 when V_t = 0). Option: `-var tangential thesis` runs the "
+             "thesis's law (pair_style hertz/mindlin ... `tangential thesis`: s = V_t dt each "
+             "step, c_t = 8 G sqrt(R*), doc/styles/pair_hertz_mindlin.md). Its c_t follows the "
+             "deck's softened G and R* = R against the shell (the thesis's coefficients use R/2 "
+             "for both): `soft 1` gives fig. 5.23's bead-bead coefficient exactly, `softps 1` "
+             "1.41x its shell one; with `soft 0.528 softps 0.859` (the thesis's normal "
+             "coefficients) they are 1.89x and 1.65x, since one E sets both.\n")
     o.append("- **No rolling resistance.** The thesis's sec. 4.5 adds a rolling torque mu_R "
-             "min(|F_n|, omega_rel) [ZY03] (fig. 5.23/5.24 give no mu_R); the deck has none "
-             "(hertz/mindlin's optional rolling term is off).\n")
+             "min(|F_n|, omega_rel) [ZY03] (fig. 5.23/5.24 give no mu_R); the tabled runs have "
+             "none. Option: `-var mur MU_R` turns on hertz/mindlin's rolling torque mu_r R* "
+             "max(F_n, 0) against the relative spin (the form of Zhou et al. 1999 that [ZY03] "
+             "uses; the thesis's min(|F_n|, omega_rel) mixes a force and a spin; LAMMPS's pair "
+             "granular `rolling sds` is a spring-dashpot-slider, another model) on bead-bead and "
+             "bead-shell contacts; the value is the user's (0.02 in the check below is only "
+             "illustrative).\n")
     o.append("- **\"Thesis moduli\" are softer than what the thesis ran.** `-var soft 1 -var "
              "softps 1` gives fig. 5.24's moduli through the thesis's own formula E* = E / (2 (1 - "
              "nu^2)) (sec. 4.3): a bead-bead coefficient (4/3) E* sqrt(R/2) = 1.233e9. The thesis "
@@ -265,7 +276,16 @@ def departures(res):
              "GPa, i.e. E* = E: 1.89x stiffer. Its psNormalForceCoeff 32,147,700 = (4/3) E_ps "
              "sqrt(R/2) is 1.16x the shell contact of `softps 1` (E*_ps from the formula, R* = R "
              "against a wall). `-var soft 0.528 -var softps 0.859` gives the thesis's two normal "
-             "coefficients.\n")
+             "coefficients, and `-var dt 1e-6` its time step.\n")
+    o.append("- **The options run (checked 3 Dec 2026, short runs from the fill, 60 %).** "
+             "`-var quick 2000` (0.12 s, the charge lands): default, `tangential thesis` and "
+             "`mur 0.02` end at kinetic energy 0.1032, 0.1035, 0.1032 J, rotational energy "
+             "3.58e-4, 3.35e-4, 2.69e-4 J (rolling resistance takes a quarter of it), largest "
+             "overlap 0.104, 0.113, 0.099 of a radius. The thesis's stiffness and step (`-var "
+             "soft 0.528 -var softps 0.859 -var dt 1e-6 -var quick 20000`, 0.02 s), alone and with "
+             "`tangential thesis -var mur 0.02`: the worst-resolved impact (two beads at 0.99 m/s) "
+             "takes 7.2 steps of 1e-6 s, largest overlap 0.0071 of a radius (these early impacts keep the thesis's 5 % rule). "
+             "Full-length runs with these options were not made.\n")
     old = [r["tag"] for r in res if r.get("cont") is False]
     if old:
         o.append("- **reset_timestep jump (runs %s).** These logs predate the fix of issue 23: "
@@ -459,8 +479,8 @@ def write_doc(res, docdir):
     o.append("## Not done\n")
     o.append("- The full-length mill with end plates; the thesis's unsoftened moduli and 1e-6 s "
              "step (both only a matter of run time: `-var L 0.27 -var soft 0.528 -var softps 0.859` "
-             "(the thesis's normal coefficients; `soft 1 softps 1` is the formula's, 1.89x softer) with a "
-             "1e-6 s timestep edit, end plates added as wall/pair zplane walls, and the STL "
+             "(the thesis's normal coefficients; `soft 1 softps 1` is the formula's, 1.89x softer) "
+             "`-var dt 1e-6`, end plates added as wall/pair zplane walls, and the STL "
              "regenerated with `mill_stl.py --length 0.27`).\n")
     o.append("- A point-by-point numeric comparison with fig. 6.7-6.12: the thesis's figures "
              "are images without tabulated values; the comparison above uses the numbers its "

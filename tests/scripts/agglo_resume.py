@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""agglo_resume.py - the agglomeration sweep (tools/agglomeration/sweep.sh, `make
+reproduce-agglomeration`) survives an interruption: killed in the middle of a
+grid point and run again, it keeps the finished point, resumes the interrupted
+one from its newer restart file and ends with the same numbers as a sweep that
+was never interrupted.
+
+A tiny sweep (27 particles, Sy 1.5, Stk 0.1 and 10, 10 s = 22272 steps per
+point, 8 checkpoints) runs once uninterrupted (A) and once (B) killed with
+SIGKILL (the whole process group, as a batch system's wall-time limit does)
+as soon as the second point's first restart file exists, then run again.
+Checks: B's second invocation keeps point 1 and resumes point 2 from a step
+0 < S < 22272; every thermo row of both logs (after average.py merges the
+resumed table) is identical, digit for digit, to A's, and so is the averaged
+table.dat; the resumed histogram goes to a .from<S>.hist file."""
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SWEEP = os.path.join(ROOT, "tools", "agglomeration", "sweep.sh")
+sys.path.insert(0, os.path.join(ROOT, "tools", "agglomeration"))
+import average  # noqa: E402
+
+NSTEPS = 22272          # round(10 / 0.000449)
+failures = 0
+
+
+def check(name, ok, detail):
+    global failures
+    print("  %s: %s" % (name, detail))
+    print(("PASS " if ok else "FAIL ") + name)
+    failures += not ok
+
+
+def env(out):
+    e = dict(os.environ)
+    e.update(AGGLO_N="27", AGGLO_TEND="10", AGGLO_NOUT="40", AGGLO_SY="1.5",
+             AGGLO_ST="0.1 10.0", AGGLO_CHECKPOINTS="8", AGGLO_OUT=out,
+             AGGLO_DOC=os.path.join(out, "doc"), AGGLO_PLOT="0", AGGLO_TAG="resume")
+    return e
+
+
+def sweep(out):
+    return subprocess.run(["sh", SWEEP], env=env(out), capture_output=True, text=True,
+                          timeout=600)
+
+
+def rows(path):
+    info = average.parse_log(path)
+    return info["rows"], info["completed"]
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        a_dir, b_dir = os.path.join(tmp, "A"), os.path.join(tmp, "B")
+        a = sweep(a_dir)
+        if a.returncode:
+            check("uninterrupted_sweep", False, (a.stdout + a.stderr)[-400:])
+            return 1
+        # B: kill the sweep once the second point has written a checkpoint
+        os.makedirs(b_dir)
+        p = subprocess.Popen(["sh", SWEEP], env=env(b_dir), stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL, start_new_session=True)
+        cp = os.path.join(b_dir, "agglo_Sy1.5_St10.0.restart.a")
+        t0 = time.time()
+        while not os.path.exists(cp) and p.poll() is None and time.time() - t0 < 300:
+            time.sleep(0.01)
+        killed = p.poll() is None
+        if killed:
+            os.killpg(p.pid, signal.SIGKILL)
+        p.wait()
+        log2 = os.path.join(b_dir, "agglo_Sy1.5_St10.0.log")
+        done2 = "agglomeration grid point done" in open(log2).read()
+        check("interrupted", killed and not done2,
+              "sweep killed after point 2's first checkpoint: %s; point 2 finished before the "
+              "kill: %s" % (killed, done2))
+        b = sweep(b_dir)
+        kept = re.search(r"grid point Sy 1.5 St 0.1: finished earlier, kept", b.stdout)
+        m = re.search(r"grid point Sy 1.5 St 10.0 starts at step (\d+)", b.stdout)
+        step = int(m.group(1)) if m else -1
+        exact = "Restart: exact continuation of step %d" % step in open(log2).read()
+        check("resumed", b.returncode == 0 and kept is not None and 0 < step < NSTEPS and exact,
+              "rerun: point 1 kept: %s; point 2 resumed at step %d of %d, log says exact "
+              "continuation: %s%s" % (kept is not None, step, NSTEPS, exact,
+                "" if b.returncode == 0 else "; " + (b.stdout + b.stderr)[-300:]))
+        for st in ("0.1", "10.0"):
+            name = "agglo_Sy1.5_St%s.log" % st
+            ra, ca = rows(os.path.join(a_dir, name))
+            rb, cb = rows(os.path.join(b_dir, name))
+            diff = [x[0] for x, y in zip(ra, rb) if x != y]
+            check("rows_equal_St" + st, ca and cb and len(ra) == len(rb) and len(ra) > 40
+                  and not diff, "%d rows uninterrupted, %d interrupted+resumed, completed %s/%s;"
+                  " differing steps %s" % (len(ra), len(rb), ca, cb, diff[:5]))
+        ta = open(os.path.join(a_dir, "table.dat")).read()
+        tb = open(os.path.join(b_dir, "table.dat")).read()
+        check("table_equal", ta == tb and ta.count("\n") == 3,
+              "table.dat identical: %s (%s)" % (ta == tb, tb.strip().splitlines()[-1]))
+        hist = os.path.join(b_dir, "agglo_Sy1.5_St10.0.from%d.hist" % step)
+        check("resumed_histogram", os.path.isfile(hist), hist)
+    print("%d failure(s)" % failures)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
