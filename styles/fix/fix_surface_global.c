@@ -9,7 +9,8 @@
  *
  *   input stl stype smol FILE   triangles of an STL file (ASCII or binary),
  *                               surface type stype, molecule ID smol; repeatable
- *   input mol ID                refused: gravel's molecule files hold atoms only
+ *   input mol ID                the triangles of a molecule template (Points,
+ *                               Triangles: their own types and molecule IDs)
  *   model ptype stype fstyle args   fstyle hooke | hooke/history | hertz/history
  *                               Kn Kt gamma_n gamma_t xmu dampflag, or granular
  *                               <pair granular's pair_coeff sub-models>; ptype and
@@ -31,16 +32,23 @@
  * T | rotate Px Py Pz Rx Ry Rz T | transrot Vx Vy Vz Px Py Pz Rx Ry Rz T`
  * moves the molecules smol (LAMMPS comma/asterisk list) from where they
  * stand, timed from that command (fix move's formulas, exact at every step:
- * fix_mesh_surface.c composes the pose). Refused: 2d line surfaces, `input
- * mol`, `move variable`, fix_modify type/region and mol/region, JKR (LAMMPS
- * refuses it too), more than MESH_WALLS_MAX molecule IDs. No restart state
+ * fix_mesh_surface.c composes the pose). `fix_modify ID type/region stype
+ * REGION` and `mol/region smol REGION` (LAMMPS 4 Jul 2026) set the type or
+ * molecule ID of the triangles whose centroid is in REGION (region_assign).
+ * Refused: 2d line surfaces, `move
+ * variable`, mol/region after a run or a move, JKR (LAMMPS refuses it too),
+ * more than MESH_WALLS_MAX molecule IDs. No restart state
  * (LAMMPS writes none). */
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "error.h"
 #include "fix_wall_gran.h"
+#include "log.h"
+#include "molecule.h"
+#include "region.h"
 #include "rigid_math.h"
 
 #define SG_MAXSURFTYPE 1024     /* LAMMPS's MAXSURFTYPE */
@@ -63,6 +71,8 @@ struct sg_build {
     double *soup;               /* 9 per triangle */
     int *ttype, *tmol;
     int ntri, cap;
+    struct mesh pending;        /* an STL file being appended (has_pending) */
+    int has_pending;
 };
 
 static void build_free(struct sg_build *b)
@@ -73,10 +83,44 @@ static void build_free(struct sg_build *b)
         mesh_surface_free(b->ms[m]);
         free(b->ms[m]);
     }
+    if (b->has_pending)
+        mesh_free(&b->pending);
     free(b->soup);
     free(b->ttype);
     free(b->tmol);
     free(b);
+}
+
+/* room for n more triangles */
+static void soup_reserve(struct gravel *g, struct sg_build *b, int n)
+{
+    if (b->ntri + n <= b->cap)
+        return;
+    int cap = 2 * (b->ntri + n);
+    double *s = realloc(b->soup, (size_t)cap * 9 * sizeof *s);
+    int *t = s ? realloc(b->ttype, (size_t)cap * sizeof *t) : NULL;
+    int *o = t ? realloc(b->tmol, (size_t)cap * sizeof *o) : NULL;
+    if (s)
+        b->soup = s;
+    if (t)
+        b->ttype = t;
+    if (o)
+        b->tmol = o;
+    if (!o)
+        gr_error(g, "fix surface/global: out of memory for %d triangles", b->ntri + n);
+    b->cap = cap;
+}
+
+/* append one triangle (corners a, b, c) of type and molecule ID */
+static void soup_add(struct sg_build *b, const double *p0, const double *p1, const double *p2,
+                     int stype, int smol)
+{
+    double *d = b->soup + 9 * (size_t)b->ntri;
+    memcpy(d, p0, 3 * sizeof *d);
+    memcpy(d + 3, p1, 3 * sizeof *d);
+    memcpy(d + 6, p2, 3 * sizeof *d);
+    b->ttype[b->ntri] = stype;
+    b->tmol[b->ntri++] = smol;
 }
 
 /* input stl stype smol FILE: append its triangles */
@@ -86,31 +130,36 @@ static void read_stl(struct gravel *g, struct sg_build *b, int stype, int smol, 
     char err[512];
     if (mesh_read(file, 0, &m, err, sizeof err))
         gr_error(g, "fix surface/global input stl: %s", err);
-    if (b->ntri + m.ntri > b->cap) {
-        int cap = 2 * (b->ntri + m.ntri);
-        double *s = realloc(b->soup, (size_t)cap * 9 * sizeof *s);
-        int *t = s ? realloc(b->ttype, (size_t)cap * sizeof *t) : NULL;
-        int *o = t ? realloc(b->tmol, (size_t)cap * sizeof *o) : NULL;
-        if (s)
-            b->soup = s;
-        if (t)
-            b->ttype = t;
-        if (o)
-            b->tmol = o;
-        if (!o) {
-            mesh_free(&m);
-            gr_error(g, "fix surface/global: out of memory for %d triangles", b->ntri + m.ntri);
-        }
-        b->cap = cap;
-    }
-    for (int t = 0; t < m.ntri; t++, b->ntri++) {
-        for (int k = 0; k < 3; k++)
-            memcpy(b->soup + 9 * (size_t)b->ntri + 3 * k, m.vert + 3 * m.tri[3 * t + k],
-                   3 * sizeof(double));
-        b->ttype[b->ntri] = stype;
-        b->tmol[b->ntri] = smol;
-    }
+    b->pending = m; /* build_free frees it if soup_reserve fails */
+    b->has_pending = 1;
+    soup_reserve(g, b, m.ntri);
+    for (int t = 0; t < m.ntri; t++)
+        soup_add(b, m.vert + 3 * m.tri[3 * t], m.vert + 3 * m.tri[3 * t + 1],
+                 m.vert + 3 * m.tri[3 * t + 2], stype, smol);
+    b->has_pending = 0;
     mesh_free(&m);
+}
+
+/* input mol ID: the triangles of a molecule template (their own types and
+ * molecule IDs) */
+static void read_mol(struct gravel *g, struct sg_build *b, const char *id, const char *who)
+{
+    const struct molecule *mol = molecule_find(g, id);
+    if (!mol)
+        gr_error(g, "%s input mol: molecule template ID %.64s does not exist", who, id);
+    if (!mol->ntris)
+        gr_error(g, "%s input mol: molecule template %s has no triangles (Points and "
+                    "Triangles sections)", who, id);
+    for (int t = 0; t < mol->ntris; t++)
+        if (mol->tri_type[t] > SG_MAXSURFTYPE)
+            gr_error(g, "%s input mol: triangle %d of template %s has type %d (at most %d)",
+                     who, t + 1, id, mol->tri_type[t], SG_MAXSURFTYPE);
+    soup_reserve(g, b, mol->ntris);
+    for (int t = 0; t < mol->ntris; t++) {
+        const int *c = mol->tri + 3 * t;
+        soup_add(b, mol->points + 3 * c[0], mol->points + 3 * c[1], mol->points + 3 * c[2],
+                 mol->tri_type[t], mol->tri_mol[t]);
+    }
 }
 
 /* one mesh per molecule ID, in ascending ID order */
@@ -187,9 +236,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             read_stl(g, b, stype, smol, argv[i + 4]);
             i += 5;
         } else if (!strcmp(argv[i + 1], "mol")) {
-            gr_error(g, "fix surface/global input mol: surface molecule files (triangles or "
-                        "lines) are not supported by gravel's molecule command; give the "
-                        "triangles as an STL file (input stl stype smol FILE)");
+            arg_need(g, argc, i, 2, "input mol");
+            read_mol(g, b, argv[i + 2], "fix surface/global");
+            i += 3;
         } else {
             gr_error(g, "fix surface/global input: unknown source '%.64s' (expected stl or mol)",
                      argv[i + 1]);
@@ -243,8 +292,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                 gr_error(g, "Fix surface/global smaxtype < input surf types (%d)", maxtype);
             maxtype = s;
         } else if (!strcmp(kw, "smaxmol")) {
-            if (arg_int(g, v, "smaxmol") < maxmol)
+            int s = arg_int(g, v, "smaxmol");
+            if (s < maxmol)
                 gr_error(g, "fix surface/global smaxmol < input surf molecule IDs (%d)", maxmol);
+            maxmol = s;
         } else if (!strcmp(kw, "flat")) {
             double a = arg_double(g, v, "flat");
             if (a < 0.0 || a > 90.0)
@@ -283,6 +334,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             gr_error(g, "fix surface/global: limit_damping with the classic model %s is not "
                         "supported (use granular ... limit_damping)", argv[used->first]);
     build_meshes(g, b);
+    for (int m = 0; m < b->n; m++) {
+        b->ms[m]->smaxtype = maxtype;
+        b->ms[m]->smaxmol = maxmol;
+    }
     /* the wall: the model's words, then temperature T */
     char *words[512];
     if (used->nword + 2 > (int)(sizeof words / sizeof *words))
@@ -334,12 +389,112 @@ static double move_num(struct gravel *g, const char *s, const char *what)
     return strcmp(s, "NULL") ? arg_double(g, s, what) : 0.0; /* NULL: no motion along it */
 }
 
+/* The centroid of triangle t of mesh ms where it stands now. */
+static void tri_centroid(struct gravel *g, struct mesh_surface *ms, int t, double c[3])
+{
+    struct mesh_pose p;
+    mesh_surface_pose_of(g, ms, NULL, &p);
+    double x0[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        for (int q = 0; q < 3; q++)
+            x0[q] += ms->m.vert[3 * ms->m.tri[3 * t + k] + q] / 3.0;
+    mesh_pose_point(&p, x0, c);
+}
+
+/* mol/region: the wall's own meshes replaced by those of b (the same
+ * triangles with their new molecule IDs); b is freed, also on an error. */
+static void regroup(struct gravel *g, struct mesh_walls *mw, struct sg_build *b)
+{
+    int smaxtype = mw->own[0]->smaxtype, smaxmol = mw->own[0]->smaxmol;
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        build_free(b);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    build_meshes(g, b);
+    g->err.jmp = outer;
+    mesh_walls_release(mw); /* frees the old meshes and their device copies */
+    memset(mw->wm, 0, sizeof mw->wm);
+    for (int m = 0; m < b->n; m++) {
+        b->ms[m]->smaxtype = smaxtype;
+        b->ms[m]->smaxmol = smaxmol;
+        mw->own[m] = b->ms[m];
+    }
+    mw->n = b->n;
+    b->n = 0;
+    build_free(b);
+}
+
+/* fix_modify ID type/region stype REGION | mol/region smol REGION (LAMMPS 4
+ * Jul 2026): the triangles whose centroid is in the region take that type
+ * or molecule ID. gravel applies one model to every type pair, each type
+ * up to smaxtype already checked to have it: a type changes nothing in the
+ * forces. A molecule ID regroups the meshes (one per ID), before any run
+ * and any fix_modify move. */
+static int region_assign(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    int istype = !strcmp(argv[0], "type/region");
+    arg_need(g, argc, 0, 2, argv[0]);
+    struct mesh_walls *mw = wall_gran_meshes(f);
+    int hi = istype ? mw->own[0]->smaxtype : mw->own[0]->smaxmol;
+    int v = arg_int(g, argv[1], istype ? "surface type" : "surface molecule ID");
+    if (v <= 0 || v > hi)
+        gr_error(g, "Invalid fix_modify %s surf %s %d (1..%d: fix surface/global %s)", argv[0],
+                 istype ? "type" : "mol", v, hi, istype ? "smaxtype" : "smaxmol");
+    struct region *r = region_find(g, argv[2]);
+    if (!r)
+        gr_error(g, "Fix_modify %s region %.64s does not exist", argv[0], argv[2]);
+    region_prematch(g, r);
+    int ntri = 0;
+    for (int m = 0; m < mw->n; m++) {
+        ntri += mw->own[m]->m.ntri;
+        if (!istype && (mw->own[m]->nmotion || mw->wm[m].tri))
+            gr_error(g, "fix_modify %s mol/region after a run or a fix_modify move is not "
+                        "supported by gravel (it regroups the surfaces: give it first)", f->id);
+    }
+    struct sg_build *b = NULL;
+    if (!istype) {
+        b = gr_calloc(g, 1, sizeof *b);
+        b->soup = malloc((size_t)ntri * 9 * sizeof *b->soup);
+        b->ttype = malloc((size_t)ntri * sizeof *b->ttype);
+        b->tmol = malloc((size_t)ntri * sizeof *b->tmol);
+        b->cap = ntri;
+        if (!b->soup || !b->ttype || !b->tmol) {
+            build_free(b);
+            gr_error(g, "fix_modify mol/region: out of memory for %d triangles", ntri);
+        }
+    }
+    int count = 0;
+    for (int m = 0; m < mw->n; m++) {
+        const struct mesh *ms = &mw->own[m]->m;
+        for (int t = 0; t < ms->ntri; t++) {
+            double c[3];
+            tri_centroid(g, mw->own[m], t, c);
+            int in = region_match(r, c);
+            count += in;
+            const int *k = ms->tri + 3 * t;
+            if (b)
+                soup_add(b, ms->vert + 3 * k[0], ms->vert + 3 * k[1], ms->vert + 3 * k[2],
+                         mw->own[m]->type, in ? v : mw->own[m]->mol);
+        }
+    }
+    if (b)
+        regroup(g, mw, b);
+    gr_print(g, "Fix_modify %s:\n  %d surfs assigned to %s %d\n", argv[0], count,
+             istype ? "type" : "mol", v);
+    return 3;
+}
+
 /* fix_modify ID move smol mstyle args | type/region ... | mol/region ... */
 static int modify_param(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (!strcmp(argv[0], "type/region") || !strcmp(argv[0], "mol/region"))
-        gr_error(g, "fix_modify %s %s is not supported by gravel's fix surface/global", f->id,
-                 argv[0]);
+        return region_assign(g, f, argc, argv);
     if (strcmp(argv[0], "move"))
         return 0;
     arg_need(g, argc, 0, 2, "move");
