@@ -15,10 +15,15 @@ LAMMPS's Points/Triangles sections); the figures are LAMMPS's.
 2. `fix_modify 20 move * rotate 0 0 0 0 0 1 25` then spins the surface: the
    mean temperature over 5100..10000 within 15 % of LAMMPS's, the spheres
    left on it at step 10000 within 5 of LAMMPS's 40.
-3. The same four triangles as an STL file (`input stl 2 1 surf.tri.stl`)
+3. LAMMPS's `examples/gransurf/in.tribox.gran.global` (its closed box of
+   24 triangles, 12 edges bent by 90 degrees, LAMMPS's `surf.tribox` written
+   with Points/Triangles sections; `log.17Jul26.tribox.gran.global.g++.1`):
+   rows to 1e-7 through step 1300; under `move rotate` (the box spins about
+   z) the mean temperature over 5100..10000 within 5 % of LAMMPS's.
+4. The same four triangles as an STL file (`input stl 2 1 surf.tri.stl`)
    give the very same thermo as `input mol` (gravel against itself, as
    LAMMPS's `in.tri.gran.global.stl` log equals its mol log).
-4. Molecule files with triangles: errors name the line (a corner beyond the
+5. Molecule files with triangles: errors name the line (a corner beyond the
    points, a line-segment header, a surface-only template given to
    create_atoms).
 One PASS/FAIL line per check."""
@@ -127,6 +132,50 @@ LMP_SPIN = [0.023306504, 0.039395924, 0.044213851, 0.048022375, 0.050118433, 0.0
             0.050783371, 0.050256715]
 LMP_ATOMS_END = 40
 
+# examples/gransurf/surf.tribox: 24 triangles (mol 1, type 2) on the faces of
+# the cube [-6, 6]^3, four per face around its centre
+BOX_TRIS = [
+    ((0, 0, -6), (6, 6, -6), (6, -6, -6)), ((0, 0, 6), (6, -6, 6), (6, 6, 6)),
+    ((0, 0, 6), (-6, -6, 6), (6, -6, 6)), ((-6, 6, 6), (-6, -6, 6), (0, 0, 6)),
+    ((-6, -6, -6), (0, 0, -6), (6, -6, -6)), ((0, 0, -6), (-6, -6, -6), (-6, 6, -6)),
+    ((0, 0, 6), (6, 6, 6), (-6, 6, 6)), ((6, 6, -6), (0, 0, -6), (-6, 6, -6)),
+    ((6, 6, -6), (0, 6, 0), (6, 6, 6)), ((0, 6, 0), (-6, 6, 6), (6, 6, 6)),
+    ((6, -6, 6), (0, -6, 0), (6, -6, -6)), ((0, -6, 0), (6, -6, 6), (-6, -6, 6)),
+    ((0, 6, 0), (6, 6, -6), (-6, 6, -6)), ((-6, 6, 6), (0, 6, 0), (-6, 6, -6)),
+    ((0, -6, 0), (-6, -6, -6), (6, -6, -6)), ((0, -6, 0), (-6, -6, 6), (-6, -6, -6)),
+    ((6, 6, 6), (6, 0, 0), (6, 6, -6)), ((6, 0, 0), (6, -6, -6), (6, 6, -6)),
+    ((-6, 6, -6), (-6, 0, 0), (-6, 6, 6)), ((-6, 0, 0), (-6, 6, -6), (-6, -6, -6)),
+    ((6, 0, 0), (6, 6, 6), (6, -6, 6)), ((6, -6, -6), (6, 0, 0), (6, -6, 6)),
+    ((-6, 0, 0), (-6, -6, 6), (-6, 6, 6)), ((-6, 0, 0), (-6, -6, -6), (-6, -6, 6))]
+BOX_DECK = DECK.replace("block -7 7 -7 7 0 9", "block -10 10 -10 10 -10 10").replace(
+    "block -2 2 -2 2 7 9", "block -2 2 -2 2 -2 2").replace(
+    "region          zcylinder cylinder z 0 0 7.0 INF INF units box\n", "").replace(
+    "fix             wall all wall/gran/region {model} region zcylinder\n", "")
+# log.17Jul26.tribox.gran.global.g++.1
+BOX_ROWS = """
+100 30 0.803783 0.803783 0.39507978 0.0029137134
+200 30 1.1967995 1.1967995 0.5882574 0.0043383984
+300 30 1.2814686 1.2814686 0.62987441 0.0046453238
+400 30 0.82831733 0.82831733 0.4099129 0.0030026503
+500 30 0.83212308 0.83212308 0.4151854 0.0036386707
+600 64 0.51244801 0.51244801 0.26324732 0.0040355281
+700 64 0.58463368 0.58463368 0.29927695 0.0077364467
+800 64 0.62279618 0.62279618 0.31820922 0.004914821
+900 64 0.53272146 0.53272146 0.27927993 0.0041951815
+1000 64 0.48924648 0.48924648 0.25803281 0.003982541
+1100 64 0.50058399 0.50058399 0.26562484 0.009853843
+1200 99 0.45803354 0.45803354 0.24120399 0.0079284529
+1300 99 0.43484749 0.43484749 0.22966323 0.0056127167
+"""
+BOX_SPIN = [0.12100891, 0.1443588, 0.15816741, 0.16896962, 0.18235672, 0.19244676, 0.20221895,
+            0.2121376, 0.22324483, 0.23505843, 0.24344476, 0.25564528, 0.26096729, 0.2680203,
+            0.2755327, 0.28103278, 0.28583152, 0.29329943, 0.29447516, 0.29944618, 0.30317486,
+            0.30936404, 0.31247999, 0.31113368, 0.31238603, 0.31255406, 0.31711798,
+            0.31793108, 0.31890924, 0.32299311, 0.32197467, 0.32410459, 0.32508258,
+            0.32654151, 0.32649342, 0.32768902, 0.32899453, 0.32846995, 0.32991204,
+            0.32959323, 0.33080996, 0.32885589, 0.32906968, 0.32987026, 0.33069071,
+            0.33154696, 0.33111225, 0.32997325, 0.33105933, 0.3318598]
+
 
 def thermo_runs(out):
     """The thermo tables of the log, each a list of rows of floats."""
@@ -146,6 +195,16 @@ def thermo_runs(out):
 def write_files(tmp):
     with open(os.path.join(tmp, "surf.tri"), "w") as f:
         f.write(SURF_TRI)
+    pts = []
+    for t in BOX_TRIS:
+        pts += [p for p in t if p not in pts]
+    with open(os.path.join(tmp, "surf.tribox"), "w") as f:
+        f.write(f"tri box\n\n{len(pts)} points\n{len(BOX_TRIS)} triangles\n\nPoints\n\n")
+        for i, p in enumerate(pts):
+            f.write("%d %g %g %g\n" % (i + 1, *p))
+        f.write("\nTriangles\n\n")
+        for i, t in enumerate(BOX_TRIS):
+            f.write("%d 1 2 %d %d %d\n" % (i + 1, *(pts.index(p) + 1 for p in t)))
     with open(os.path.join(tmp, "surf.tri.stl"), "w") as f:
         f.write("solid tri\n")
         for t in TRIS:
@@ -158,6 +217,36 @@ def write_files(tmp):
 
 def mean(v):
     return sum(v) / len(v)
+
+
+def worst_row(rows, table):
+    """largest relative difference of the rows (step: values) from LAMMPS's table"""
+    worst = 0.0
+    for line in table.strip().split("\n"):
+        ref = [float(v) for v in line.split()]
+        got = rows.get(int(ref[0]))
+        if got is None:
+            return float("inf")
+        worst = max([worst] + [abs(a - b) / max(abs(b), 1e-300) for a, b in zip(got[1:], ref[1:])])
+    return worst
+
+
+def tribox(tmp):
+    res = run(BOX_DECK.format(surface=MOL.replace("surf.tri\n", "surf.tribox\n"), model=MODEL),
+              tmp)
+    runs = thermo_runs(res.stdout)
+    if res.returncode != 0 or len(runs) != 2:
+        check("gransurf_tribox_runs", False, (res.stdout + res.stderr)[-400:])
+        return
+    rows = {int(r[0]): r for r in runs[0]}
+    w = worst_row(rows, BOX_ROWS)
+    check("gransurf_tribox_lammps_rows_to_1300", w < 1e-7,
+          f"largest relative difference {w:.2e} (LAMMPS prints 8 digits)")
+    spin = {int(r[0]): r for r in runs[1]}
+    st = [spin[s][2] for s in range(5100, 10001, 100)]
+    m, mr = mean(st), mean(BOX_SPIN)
+    check("gransurf_tribox_spin_mean_temp", abs(m - mr) < 0.05 * mr,
+          f"mean temp 5100..10000 in the spinning box {m:.6g} vs LAMMPS {mr:.6g}")
 
 
 def against_lammps(tmp):
@@ -238,6 +327,7 @@ def main():
         runs = against_lammps(tmp)
         if runs:
             stl_equals_mol(tmp, runs)
+        tribox(tmp)
         errors(tmp)
 
 
