@@ -46,12 +46,12 @@
 #include "args.h"
 #include "error.h"
 #include "fix_wall_gran.h"
+#include "surface_common.h"
 #include "log.h"
 #include "molecule.h"
 #include "region.h"
 #include "rigid_math.h"
 
-#define SG_MAXSURFTYPE 1024     /* LAMMPS's MAXSURFTYPE */
 
 static const char *const sg_options[] = {"smaxtype", "smaxmol", "flat", "neighbor",
                                          "temperature", NULL};
@@ -62,145 +62,6 @@ static int is_option(const char *s)
         if (!strcmp(s, sg_options[k]))
             return 1;
     return 0;
-}
-
-/* The meshes while the command is parsed (f->data until the wall takes them). */
-struct sg_build {
-    int n;
-    struct mesh_surface *ms[MESH_WALLS_MAX];
-    double *soup;               /* 9 per triangle */
-    int *ttype, *tmol;
-    int ntri, cap;
-    struct mesh pending;        /* an STL file being appended (has_pending) */
-    int has_pending;
-};
-
-static void build_free(struct sg_build *b)
-{
-    if (!b)
-        return;
-    for (int m = 0; m < b->n; m++) {
-        mesh_surface_free(b->ms[m]);
-        free(b->ms[m]);
-    }
-    if (b->has_pending)
-        mesh_free(&b->pending);
-    free(b->soup);
-    free(b->ttype);
-    free(b->tmol);
-    free(b);
-}
-
-/* room for n more triangles */
-static void soup_reserve(struct gravel *g, struct sg_build *b, int n)
-{
-    if (b->ntri + n <= b->cap)
-        return;
-    int cap = 2 * (b->ntri + n);
-    double *s = realloc(b->soup, (size_t)cap * 9 * sizeof *s);
-    int *t = s ? realloc(b->ttype, (size_t)cap * sizeof *t) : NULL;
-    int *o = t ? realloc(b->tmol, (size_t)cap * sizeof *o) : NULL;
-    if (s)
-        b->soup = s;
-    if (t)
-        b->ttype = t;
-    if (o)
-        b->tmol = o;
-    if (!o)
-        gr_error(g, "fix surface/global: out of memory for %d triangles", b->ntri + n);
-    b->cap = cap;
-}
-
-/* append one triangle (corners a, b, c) of type and molecule ID */
-static void soup_add(struct sg_build *b, const double *p0, const double *p1, const double *p2,
-                     int stype, int smol)
-{
-    double *d = b->soup + 9 * (size_t)b->ntri;
-    memcpy(d, p0, 3 * sizeof *d);
-    memcpy(d + 3, p1, 3 * sizeof *d);
-    memcpy(d + 6, p2, 3 * sizeof *d);
-    b->ttype[b->ntri] = stype;
-    b->tmol[b->ntri++] = smol;
-}
-
-/* input stl stype smol FILE: append its triangles */
-static void read_stl(struct gravel *g, struct sg_build *b, int stype, int smol, const char *file)
-{
-    struct mesh m;
-    char err[512];
-    if (mesh_read(file, 0, &m, err, sizeof err))
-        gr_error(g, "fix surface/global input stl: %s", err);
-    b->pending = m; /* build_free frees it if soup_reserve fails */
-    b->has_pending = 1;
-    soup_reserve(g, b, m.ntri);
-    for (int t = 0; t < m.ntri; t++)
-        soup_add(b, m.vert + 3 * m.tri[3 * t], m.vert + 3 * m.tri[3 * t + 1],
-                 m.vert + 3 * m.tri[3 * t + 2], stype, smol);
-    b->has_pending = 0;
-    mesh_free(&m);
-}
-
-/* input mol ID: the triangles of a molecule template (their own types and
- * molecule IDs) */
-static void read_mol(struct gravel *g, struct sg_build *b, const char *id, const char *who)
-{
-    const struct molecule *mol = molecule_find(g, id);
-    if (!mol)
-        gr_error(g, "%s input mol: molecule template ID %.64s does not exist", who, id);
-    if (!mol->ntris)
-        gr_error(g, "%s input mol: molecule template %s has no triangles (Points and "
-                    "Triangles sections)", who, id);
-    for (int t = 0; t < mol->ntris; t++)
-        if (mol->tri_type[t] > SG_MAXSURFTYPE)
-            gr_error(g, "%s input mol: triangle %d of template %s has type %d (at most %d)",
-                     who, t + 1, id, mol->tri_type[t], SG_MAXSURFTYPE);
-    soup_reserve(g, b, mol->ntris);
-    for (int t = 0; t < mol->ntris; t++) {
-        const int *c = mol->tri + 3 * t;
-        soup_add(b, mol->points + 3 * c[0], mol->points + 3 * c[1], mol->points + 3 * c[2],
-                 mol->tri_type[t], mol->tri_mol[t]);
-    }
-}
-
-/* one mesh per molecule ID, in ascending ID order */
-static void build_meshes(struct gravel *g, struct sg_build *b)
-{
-    double *soup = gr_malloc(g, (size_t)b->ntri * 9 * sizeof *soup);
-    for (int mol = 0;;) {
-        int next = 0; /* the smallest molecule ID above mol */
-        for (int t = 0; t < b->ntri; t++)
-            if (b->tmol[t] > mol && (!next || b->tmol[t] < next))
-                next = b->tmol[t];
-        if (!next)
-            break;
-        mol = next;
-        if (b->n == MESH_WALLS_MAX) {
-            free(soup);
-            gr_error(g, "fix surface/global: more than %d surface molecule IDs (gravel makes "
-                        "one mesh wall per molecule ID, at most %d)", MESH_WALLS_MAX,
-                     MESH_WALLS_MAX);
-        }
-        int nt = 0, type = 0;
-        for (int t = 0; t < b->ntri; t++)
-            if (b->tmol[t] == mol) {
-                memcpy(soup + 9 * (size_t)nt++, b->soup + 9 * (size_t)t, 9 * sizeof *soup);
-                type = type ? type : b->ttype[t];
-            }
-        struct mesh_surface *ms = gr_calloc(g, 1, sizeof *ms);
-        b->ms[b->n++] = ms;
-        char name[64], err[512];
-        snprintf(name, sizeof name, "surface molecule %d", mol);
-        if (mesh_from_soup(name, soup, nt, 0, &ms->m, err, sizeof err) ||
-            mesh_check_range(&ms->m, name, err, sizeof err)) {
-            free(soup);
-            gr_error(g, "fix surface/global: %s", err);
-        }
-        mesh_surface_normals(g, ms);
-        ms->type = type;
-        ms->mol = mol;
-        ms->cache_step = -1;
-    }
-    free(soup);
 }
 
 struct sg_model {
@@ -226,26 +87,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct sg_build *b = gr_calloc(g, 1, sizeof *b);
     f->data = b; /* freed by destroy() if an error follows */
     f->hooks = 0;
-    int i = 0;
-    for (; i < argc && !strcmp(argv[i], "input"); ) {
-        arg_need(g, argc, i, 1, "input");
-        if (!strcmp(argv[i + 1], "stl")) {
-            arg_need(g, argc, i, 4, "input stl");
-            int stype = arg_int_range(g, argv[i + 2], 1, SG_MAXSURFTYPE, "surface type");
-            int smol = arg_int_range(g, argv[i + 3], 1, 1 << 30, "surface molecule ID");
-            read_stl(g, b, stype, smol, argv[i + 4]);
-            i += 5;
-        } else if (!strcmp(argv[i + 1], "mol")) {
-            arg_need(g, argc, i, 2, "input mol");
-            read_mol(g, b, argv[i + 2], "fix surface/global");
-            i += 3;
-        } else {
-            gr_error(g, "fix surface/global input: unknown source '%.64s' (expected stl or mol)",
-                     argv[i + 1]);
-        }
-    }
-    if (!b->ntri)
-        gr_error(g, "Fix surface/global command requires input keyword");
+    int i = sg_parse_inputs(g, b, argc, argv, "fix surface/global");
     /* models */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     struct sg_model mod[64];
@@ -333,40 +175,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         if (!strcmp(argv[used->first + k], "limit_damping"))
             gr_error(g, "fix surface/global: limit_damping with the classic model %s is not "
                         "supported (use granular ... limit_damping)", argv[used->first]);
-    build_meshes(g, b);
-    for (int m = 0; m < b->n; m++) {
-        b->ms[m]->smaxtype = maxtype;
-        b->ms[m]->smaxmol = maxmol;
-    }
-    /* the wall: the model's words, then temperature T */
-    char *words[512];
-    if (used->nword + 2 > (int)(sizeof words / sizeof *words))
-        gr_error(g, "fix surface/global: model of %d words is too long", used->nword);
-    int nw = 0;
-    for (int k = 0; k < used->nword; k++)
-        words[nw++] = argv[used->first + k];
-    if (temperature) {
-        words[nw++] = "temperature";
-        words[nw++] = (char *)temperature;
-    }
-    wall_gran_create_own(g, f, nw, words, b->ms, b->n);
-    b->n = 0; /* the wall holds the meshes now */
-    build_free(b);
+    sg_make_wall(g, f, b, used->nword, argv + used->first, temperature, maxtype, maxmol);
     f->needs |= NEED_ROTATION; /* LAMMPS: requires atom attributes radius and omega */
 }
-
-static void destroy(struct fix *f)
-{
-    if (f->hooks) /* the wall was made */
-        fix_style_wall_gran.destroy(f);
-    else
-        build_free(f->data);
-    f->data = NULL;
-}
-
-static void init(struct gravel *g, struct fix *f) { fix_style_wall_gran.init(g, f); }
-
-static void post_force(struct gravel *g, struct fix *f) { fix_style_wall_gran.post_force(g, f); }
 
 /* Bake mesh ms's current pose into its vertices (its motions then start
  * from here, as LAMMPS's fix_modify move starts from the current points). */
@@ -410,13 +221,13 @@ static void regroup(struct gravel *g, struct mesh_walls *mw, struct sg_build *b)
     g->err.jmp = &jb;
     if (setjmp(jb)) {
         g->err.jmp = outer;
-        build_free(b);
+        sg_build_free(b);
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);
         exit(1);
     }
-    build_meshes(g, b);
+    sg_build_meshes(g, b);
     g->err.jmp = outer;
     mesh_walls_release(mw); /* frees the old meshes and their device copies */
     memset(mw->wm, 0, sizeof mw->wm);
@@ -427,7 +238,7 @@ static void regroup(struct gravel *g, struct mesh_walls *mw, struct sg_build *b)
     }
     mw->n = b->n;
     b->n = 0;
-    build_free(b);
+    sg_build_free(b);
 }
 
 /* fix_modify ID type/region stype REGION | mol/region smol REGION (LAMMPS 4
@@ -464,8 +275,9 @@ static int region_assign(struct gravel *g, struct fix *f, int argc, char **argv)
         b->ttype = malloc((size_t)ntri * sizeof *b->ttype);
         b->tmol = malloc((size_t)ntri * sizeof *b->tmol);
         b->cap = ntri;
+        b->who = "fix_modify mol/region";
         if (!b->soup || !b->ttype || !b->tmol) {
-            build_free(b);
+            sg_build_free(b);
             gr_error(g, "fix_modify mol/region: out of memory for %d triangles", ntri);
         }
     }
@@ -479,7 +291,7 @@ static int region_assign(struct gravel *g, struct fix *f, int argc, char **argv)
             count += in;
             const int *k = ms->tri + 3 * t;
             if (b)
-                soup_add(b, ms->vert + 3 * k[0], ms->vert + 3 * k[1], ms->vert + 3 * k[2],
+                sg_soup_add(b, ms->vert + 3 * k[0], ms->vert + 3 * k[1], ms->vert + 3 * k[2],
                          mw->own[m]->type, in ? v : mw->own[m]->mol);
         }
     }
@@ -581,9 +393,9 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
 const struct fix_style fix_style_surface_global = {
     .name = "surface/global",
     .create = create,
-    .init = init,
-    .post_force = post_force,
-    .destroy = destroy,
+    .init = sg_init,
+    .post_force = sg_post_force,
+    .destroy = sg_destroy,
     .modify_param = modify_param,
     .reset_step = reset_step,
 };
