@@ -101,6 +101,11 @@ struct fix_style {
     unsigned flags;             /* FIX_* (above) */
     void (*create)(struct gravel *g, struct fix *f, int argc, char **argv);
     void (*init)(struct gravel *g, struct fix *f);                 /* optional */
+    /* optional: at every `run`, before the program is assembled (before
+     * init and before f->hooks, f->needs, f->sources are read): a fix
+     * settles what it takes from commands given after it (fix
+     * surface/local: its wall's model from pair_coeff ... surf/granular). */
+    void (*prepare)(struct gravel *g, struct fix *f);
     void (*initial_integrate)(struct gravel *g, struct fix *f);
     void (*post_force)(struct gravel *g, struct fix *f);
     void (*final_integrate)(struct gravel *g, struct fix *f);

@@ -45,6 +45,7 @@ struct mesh_surface {
      * type and molecule ID (smaxtype, smaxmol), its own motions (from
      * fix_modify ID move), composed before any fix move/mesh */
     int mol, smaxtype, smaxmol;
+    char *model;                /* fix surface/local: the model words its wall was made of */
     int nmotion;
     struct mesh_motion motion[MESH_OWN_MOTIONS];
 };

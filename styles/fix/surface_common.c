@@ -22,6 +22,7 @@ void sg_build_free(struct sg_build *b)
     }
     if (b->has_pending)
         mesh_free(&b->pending);
+    free(b->model);
     free(b->soup);
     free(b->ttype);
     free(b->tmol);
@@ -169,6 +170,8 @@ void sg_make_wall(struct gravel *g, struct fix *f, struct sg_build *b, int nword
                   const char *temperature, int maxtype, int maxmol)
 {
     sg_build_meshes(g, b);
+    b->ms[0]->model = b->model;
+    b->model = NULL;
     for (int m = 0; m < b->n; m++) {
         b->ms[m]->smaxtype = maxtype;
         b->ms[m]->smaxmol = maxmol;
@@ -198,6 +201,10 @@ void sg_destroy(struct fix *f)
     f->data = NULL;
 }
 
-void sg_init(struct gravel *g, struct fix *f) { fix_style_wall_gran.init(g, f); }
+void sg_init(struct gravel *g, struct fix *f)
+{
+    if (f->hooks) /* fix surface/local makes its wall at run start (prepare) */
+        fix_style_wall_gran.init(g, f);
+}
 
 void sg_post_force(struct gravel *g, struct fix *f) { fix_style_wall_gran.post_force(g, f); }

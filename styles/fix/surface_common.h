@@ -21,6 +21,7 @@ struct sg_build {
     struct mesh pending;        /* an STL file being appended (has_pending) */
     int has_pending;
     const char *who;            /* the command, for errors ("fix surface/global") */
+    char *model;                /* fix surface/local: its model words, joined (owned) */
 };
 
 void sg_build_free(struct sg_build *b);
@@ -36,8 +37,9 @@ void sg_build_meshes(struct gravel *g, struct sg_build *b);
 int sg_parse_inputs(struct gravel *g, struct sg_build *b, int argc, char **argv,
                     const char *who);
 /* f becomes the mesh wall of b's triangles (one mesh per molecule ID, b
- * freed), its model the words (hooke ... | granular ...) and temperature T
- * (NULL: none); maxtype, maxmol: the fix's smaxtype and smaxmol. */
+ * freed; b->model goes to the first mesh), its model the words (hooke ... |
+ * granular ...) and temperature T (NULL: none); maxtype, maxmol: the fix's
+ * smaxtype and smaxmol. */
 void sg_make_wall(struct gravel *g, struct fix *f, struct sg_build *b, int nword, char **words,
                   const char *temperature, int maxtype, int maxmol);
 /* the fix hooks of such a fix: the wall's once made (f->hooks), else the

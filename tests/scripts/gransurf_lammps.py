@@ -23,7 +23,20 @@ LAMMPS's Points/Triangles sections); the figures are LAMMPS's.
 4. The same four triangles as an STL file (`input stl 2 1 surf.tri.stl`)
    give the very same thermo as `input mol` (gravel against itself, as
    LAMMPS's `in.tri.gran.global.stl` log equals its mol log).
-5. Molecule files with triangles: errors name the line (a corner beyond the
+5. fix surface/local: LAMMPS's `examples/gransurf/in.tri.gran.surf` (the
+   same scene with local triangles: atom_style tri, `fix surface/local input
+   mol tris`, `pair_style hybrid granular surf/granular`, `pair_coeff 1 2
+   surf/granular ...`, `pair_coeff 2 2 none`), its first run as LAMMPS's
+   deck writes it: c_1 and c_2 (the spheres' temperatures) equal LAMMPS's
+   `log.17Jul26.tri.gran.surf.g++.1` to 8 digits through step 500 (LAMMPS's
+   own local and global runs part at step 600), and the whole run equals
+   gravel's fix surface/global run digit for digit in every column (gravel's
+   triangles are not atoms: LAMMPS's Atoms column counts the 4 triangles,
+   its Temp their zero velocities). `input stl` gives the same numbers.
+   Errors: no surf/granular pair_coeff for a type pair, a particle of a
+   surface type, surf/granular coefficients changed after the first run,
+   models that differ by surface type, a cross pair set none.
+6. Molecule files with triangles: errors name the line (a corner beyond the
    points, a line-segment header, a surface-only template given to
    create_atoms).
 One PASS/FAIL line per check."""
@@ -131,6 +144,33 @@ LMP_SPIN = [0.023306504, 0.039395924, 0.044213851, 0.048022375, 0.050118433, 0.0
             0.052234405, 0.051750173, 0.052336193, 0.052199929, 0.050767113, 0.050765729,
             0.050783371, 0.050256715]
 LMP_ATOMS_END = 40
+
+# in.tri.gran.surf (log.17Jul26.tri.gran.surf.g++.1), first run
+LOCAL = DECK
+for old, new in (
+        ("atom_style      sphere\n", "atom_style      tri\natom_modify     map array\n"),
+        ("comm_modify     vel yes\n", "comm_modify     vel yes cutoff 12.5\n"),
+        ("pair_style      granular\npair_coeff      * *", "pair_style      hybrid granular "
+         "surf/granular\npair_coeff      1 1 granular"),
+        ("neighbor", "pair_coeff      1 2 surf/granular {smodel}\npair_coeff      2 2 none\n"
+         "group           sphere type 1\ngroup           tri type 2\nneighbor"),
+        (" all nve/sphere", " sphere nve/sphere"), (" all gravity", " sphere gravity"),
+        ("ins all pour", "ins sphere pour"), ("wall all wall", "wall sphere wall"),
+        ("1 all temp", "1 sphere temp"), ("2 all temp/sphere", "2 sphere temp/sphere"),
+        ("fix_modify      20 move * rotate 0 0 0 0 0 1 25\nrun             5000\n", "{extra}")):
+    assert old in LOCAL, old
+    LOCAL = LOCAL.replace(old, new, 1)
+LOCAL_MOL = "molecule tris surf.tri\nfix 20 all surface/local input mol tris"
+LOCAL_STL = "fix 20 all surface/local input stl 2 1 surf.tri.stl"
+SMODEL = MODEL[len("granular "):]
+# step c_1 c_2 of LAMMPS's local run (its atoms and temp count the 4 triangles)
+LMP_LOCAL = """
+100 0.43156905 0.21119336
+200 0.73291569 0.35866087
+300 1.125323 0.55068998
+400 1.608791 0.78728068
+500 1.0436449 0.51675284
+"""
 
 # examples/gransurf/surf.tribox: 24 triangles (mol 1, type 2) on the faces of
 # the cube [-6, 6]^3, four per face around its centre
@@ -289,6 +329,50 @@ def against_lammps(tmp):
     return runs
 
 
+def local_runs(tmp, mol_runs):
+    res = run(LOCAL.format(surface=LOCAL_MOL, smodel=SMODEL, model=MODEL, extra=""), tmp)
+    runs = thermo_runs(res.stdout)
+    if res.returncode != 0 or len(runs) != 1:
+        check("gransurf_local_runs", False, (res.stdout + res.stderr)[-400:])
+        return
+    rows = {int(r[0]): r for r in runs[0]}
+    worst = 0.0
+    for line in LMP_LOCAL.strip().split("\n"):
+        ref = [float(v) for v in line.split()]
+        got = rows[int(ref[0])]
+        worst = max(worst, max(abs(a - b) / b for a, b in zip(got[3:5], ref[1:])))
+    check("gransurf_local_lammps_c1_c2_to_500", worst < 1e-7,
+          f"largest relative difference of c_1, c_2 from LAMMPS's local log {worst:.2e}")
+    check("gransurf_local_equals_global", runs[0] == mol_runs[0],
+          f"{len(runs[0])} rows, identical to fix surface/global's: {runs[0] == mol_runs[0]}")
+    res = run(LOCAL.format(surface=LOCAL_STL, smodel=SMODEL, model=MODEL, extra=""), tmp)
+    check("gransurf_local_stl_equals_mol", res.returncode == 0 and thermo_runs(res.stdout) == runs,
+          (res.stdout + res.stderr)[-200:] if res.returncode else "identical thermo")
+
+
+LOCAL_ERRS = [
+    ("no_surf_model", LOCAL_MOL, "1 1 surf/granular " + SMODEL, "",
+     "no pair_coeff 1 2 surf/granular (particle type 1, surface type 2", 34),
+    ("particle_of_surface_type", LOCAL_MOL, "1 2 surf/granular " + SMODEL,
+     "create_atoms 2 single 0 0 5 units box\nrun 0\n", "a surface type of the triangles", 36),
+    ("model_changed", LOCAL_MOL, "1 2 surf/granular " + SMODEL,
+     "pair_coeff 1 2 surf/granular " + SMODEL.replace("4000.0", "5000.0") + "\nrun 0\n",
+     "surf/granular coefficients changed since its first run", 36),
+]
+
+
+def local_errors(tmp):
+    for name, surf, pc, extra, want, line in LOCAL_ERRS:
+        deck = LOCAL.format(surface=surf, smodel="", model=MODEL, extra=extra)
+        deck = deck.replace("pair_coeff      1 2 surf/granular \n", f"pair_coeff {pc}\n")
+        deck = deck.replace("run             5000", "run 0")
+        res = run(deck, tmp)
+        out = res.stdout + res.stderr
+        ok = res.returncode != 0 and want in out and f"in.deck:{line})" in out
+        msg = [x for x in out.split("\n") if "ERROR" in x]
+        check(f"gransurf_local_error_{name}", ok, msg[0] if msg else out[-300:])
+
+
 def stl_equals_mol(tmp, mol_runs):
     res = run(DECK.format(surface=STL, model=MODEL), tmp)
     runs = thermo_runs(res.stdout)
@@ -327,6 +411,8 @@ def main():
         runs = against_lammps(tmp)
         if runs:
             stl_equals_mol(tmp, runs)
+            local_runs(tmp, runs)
+        local_errors(tmp)
         tribox(tmp)
         errors(tmp)
 

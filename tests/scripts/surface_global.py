@@ -29,8 +29,8 @@ the references are gravel's own wall forms and closed-form results.
    a classic model with limit_damping or an extra word, flat out of range,
    smaxtype below the input types, move variable, type/region beyond smaxtype,
    mol/region of a missing region and after a move, an
-   unknown keyword, a missing file, fix surface/local and pair_style
-   surf/granular (not implemented).
+   unknown keyword, a missing file, fix surface/local NULL (a data file's
+   triangles) and pair_style surf/granular outside hybrid.
 One PASS/FAIL line per check."""
 import math
 import os
@@ -283,8 +283,9 @@ ERRORS = [
      "NULL 1 NULL 0 0 smooth 1\n", "model hooke: unexpected word 'smooth'"),
     ("unknown_fstyle", "fix w all surface/global input stl 1 1 floor.stl model * * hertz 1 2\n",
      "unknown fstyle 'hertz'"),
-    ("surface_local", "fix w all surface/local NULL\n", "fix surface/local (LAMMPS 2026"),
-    ("pair_surf_granular", "pair_style surf/granular\n", "pair_style surf/granular (LAMMPS"),
+    ("surface_local_null", "fix w all surface/local NULL\n", "triangles of a data file (NULL"),
+    ("pair_surf_granular_alone", "pair_style surf/granular\n",
+     "acts only as a sub-style of pair_style hybrid"),
     ("missing_file", "fix w all surface/global input stl 1 1 nope.stl model * * hooke 1 NULL 1 "
      "NULL 0 0\n", "nope.stl"),
 ]
