@@ -11,6 +11,9 @@
  *              (kernel files the run program must include) and f->defines
  *              (extra build options, without the leading "-D "). May not
  *              touch the device.
+ *   prepare()  optional, at every `run` before the program is assembled:
+ *              settle what the fix takes from commands given after it
+ *              (fix surface/local makes its wall here, from pair_coeff).
  *   init()     at every `run`, after the program is built, the atoms are on
  *              the device and the pair parameters are packed and uploaded
  *              (g->eng->pair_param, the pair style's record
