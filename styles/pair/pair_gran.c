@@ -366,6 +366,14 @@ static void describe(const struct pair *p, struct pair_caps *c)
         c->eval = "gran_model_eval";
         c->history = m.tm;
     }
+    /* LIGGGHTS resets a pair's history in surfacesClose only, which its
+     * pair loop calls for rsq < contactDistanceFactor^2 radsum^2 past the
+     * contact test: never with the factor 1 of spheres. A pair that
+     * separates keeps its history (shear, hysteresis's largest overlap)
+     * while it stays in the neighbor lists, and finds it on touching again
+     * (doc/styles/pair_gran_model.md). */
+    if (c->history)
+        pair_caps_define(c, "PAIR_HIST_KEEP", "1");
     c->tcol_of = p;
     c->collision_time = collision_time;
 }
