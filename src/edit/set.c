@@ -142,14 +142,22 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
     for (int k = 2; k < argc; k++) {
         const char *kw = argv[k];
         long count = 0;
-        int nv = 1;
+        int nv = 1, shift = 0;
+        if (!strcmp(kw, "property/atom")) { /* LIGGGHTS: property/atom NAME value */
+            arg_need(g, argc, k, 2, kw);
+            if (strcmp(argv[k + 1], "Temp"))
+                gr_error(g, "set property/atom: unknown property '%.64s' (gravel supports Temp, "
+                            "the temperature of fix heat/gran)", argv[k + 1]);
+            kw = "temperature";
+            shift = 1;
+        }
         if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
             nv = 3;
         else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio") ||
                  !strcmp(kw, "type/subset"))
             nv = 3;
-        arg_need(g, argc, k, nv, kw);
-        char **v = argv + k + 1;
+        arg_need(g, argc, k + shift, nv, kw);
+        char **v = argv + k + 1 + shift;
         if (!strcmp(kw, "type")) {
             double tv = 0;
             const double *p = kw_value(g, v[0], "atom type", &tv, buf, dry);
@@ -341,7 +349,7 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         }
         if (!dry)
             gr_print(g, "  %ld settings made for %s\n", count, kw);
-        k += nv;
+        k += nv + shift;
     }
 }
 

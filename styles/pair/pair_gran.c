@@ -27,6 +27,7 @@
 #include "args.h"
 #include "collision_time.h"
 #include "error.h"
+#include "fix_heat_gran.h"
 #include "fix_property_global.h"
 #include "pair.h"
 #include "pair_gran.h"
@@ -270,6 +271,8 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
         q[LG_RMU] = fpg_pair(g, "coefficientRollingFriction", nt, I, J, who);
     q[LG_TORSION] = m->torsion;
     q[LG_WALL] = wall;
+    if (!wall)  /* fix heat/gran's conduction; walls exchange no heat */
+        q[LG_HEAT] = heat_gran_conduction(g, nt, I, J, &q[LG_HC], &q[LG_HAREA]);
 }
 
 /* ---- the pair style ---- */

@@ -35,7 +35,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
-from liggghts_stream import FAILURES, infos, report, thermo  # noqa: E402
+from liggghts_stream import FAILURES, check_bad_decks, infos, report, thermo  # noqa: E402
 from liggghts_stream import run_gravel as run_deck  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -162,18 +162,6 @@ BAD = [("not_planar", "fix face all mesh/surface/planar file wedge.stl type 1 sc
         "0 < curvature <= 60 degrees required", 1)]
 
 
-def check_errors():
-    for name, body, msg, offset in BAD:
-        with tempfile.TemporaryDirectory() as tmp:
-            stage(tmp, HEAD + body)
-            out = run_gravel(tmp)
-            line = HEAD.count("\n") + offset
-            err = out.stdout + out.stderr
-            ok = out.returncode != 0 and msg in err and "(in.deck:%d)" % line in err
-            report(ok, "liggghts_planar_error_" + name,
-                   "rc %d, wanted '%s' at line %d:\n%s" % (out.returncode, msg, line, err[-600:]))
-
-
 def update():
     deck = open(os.path.join(REF, "all_in.in")).read()
     fmt = '"%d %d' + " %.17g" * 10 + '"'
@@ -199,7 +187,8 @@ def main():
         update()
         return 0
     check_deck()
-    check_errors()
+    check_bad_decks(HEAD, BAD, "liggghts_planar_error_",
+                    lambda tmp: stage(tmp, ""))
     return 1 if FAILURES else 0
 
 

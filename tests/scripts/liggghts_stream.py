@@ -430,6 +430,23 @@ def check_errors():
                    "rc %d, wanted '%s' at line %d:\n%s" % (out.returncode, msg, line, err[-600:]))
 
 
+def check_bad_decks(head, bad, prefix, stage=None):
+    """Each (name, body, message, offset) of bad: HEAD + body as in.deck (stage(tmp)
+    puts what it needs beside it) must stop gravel with the message at line
+    offset of the body (from 1)."""
+    for name, body, msg, offset in bad:
+        with tempfile.TemporaryDirectory() as tmp:
+            if stage:
+                stage(tmp)
+            open(os.path.join(tmp, "in.deck"), "w").write(head + body)
+            out = run_gravel(tmp, "in.deck")
+            line = head.count("\n") + offset
+            err = out.stdout + out.stderr
+            ok = out.returncode != 0 and msg in err and "(in.deck:%d)" % line in err
+            report(ok, prefix + name,
+                   "rc %d, wanted '%s' at line %d:\n%s" % (out.returncode, msg, line, err[-600:]))
+
+
 def update():
     os.makedirs(REF, exist_ok=True)
     for name in CHAOS:
