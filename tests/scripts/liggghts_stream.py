@@ -225,12 +225,14 @@ def check_tutorial(form):
 # collisions only change the dissipated part: measured 1.2 %), f_ts[1]
 # exactly (smallest radius), f_ts[2] to CHAOS_TS (it follows the largest
 # speed: measured 0.8 %); the rotational energy (collisional) as the mean
-# over those rows to CHAOS_ROT (measured 6 %). Volume exactly, except that
+# over those rows to CHAOS_ROT (measured 0.02 %; 6 % before pair gran kept
+# the shear history of separated pairs as LIGGGHTS does). conveyor: every
+# row to every printed digit through its 30000 steps (before: to 19000). Volume exactly, except that
 # LIGGGHTS grows conveyor's box by 5e-4 where the box mesh touches its
 # shrink-wrapped faces (doc/liggghts.md): VOL_REL there.
-CHAOS_KE, CHAOS_TS, CHAOS_ROT = 0.03, 0.02, 0.25
+CHAOS_KE, CHAOS_TS, CHAOS_ROT = 0.03, 0.02, 0.05
 CHAOS = {"meshGran": {"inserts": 25, "exact_upto": 2000, "vol": 0.},
-         "conveyor": {"inserts": 3, "exact_upto": 19000, "vol": 6e-4}}
+         "conveyor": {"inserts": 3, "exact_upto": 30001, "vol": 6e-4}}
 
 
 def check_chaotic(name):
