@@ -16,11 +16,21 @@ rewrites them; the dump line names the temperature `f_Temp[0]` there):
   gravel's pair gran does: without that, an atom's velocity differs by 3 %
   from step 23671 on);
 - the hot atoms cool and the cold ones warm (an independent sanity check).
+LIGGGHTS's tutorial heatTransfer_1 (Tutorials_public/heatTransfer_1/in.heatGran,
+read from the installed package liggghts-doc, never copied) runs unchanged: 890
+spheres inserted into a cylinder settle, the half at x > 0 is set to 800 K and
+heat flows for 30000 steps (dump custom/vtk with f_Temp[0] f_heatFlux[0]).
+Against liggghts's log and last dump (committed): the insertion and every
+thermo row to REL up to step TUT_EXACT (measured 6000: the settling bed then
+parts chaotically), f_heattransfer on every row, the mean temperatures of the
+two halves at step 49600 to TUT_HALF relative (measured 2e-5) and the mean
+per-atom difference to TUT_ATOM K (measured 0.17 K, the largest 5.4 K).
 Bad commands stop with LIGGGHTS's messages.
 
 Usage: liggghts_heat.py [--update]. One PASS/FAIL line per case."""
 import gzip
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -32,6 +42,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 REF = os.path.join(ROOT, "tests", "reference", "liggghts_heat")
 REL, REL_KE = 1e-7, 1e-6
 ABS_XV, ABS_T = 1e-9, 1e-8
+TUTORIAL = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/heatTransfer_1"
+TUT_EXACT, TUT_HALF, TUT_ATOM, TUT_LAST = 6000, 1e-4, 1.0, 49600
 FORMS = {"overlap": None, "projection": "contact_area projection",
          "constant": "contact_area constant 2e-6"}
 HEAT_LINE = "fix             heat all heat/gran initial_temperature 300."
@@ -122,6 +134,72 @@ def check_form(form):
     report(ok, tag + "_direction", "hot atoms 5 and 2 must cool, atom 1 warm")
 
 
+def vtk_named(path):
+    """Legacy VTK arrays by name (LIGGGHTS's names with brackets too)."""
+    op = gzip.open if path.endswith(".gz") else open
+    tok, out, i = op(path, "rt").read().split(), {}, 0
+    while i < len(tok):
+        if tok[i] == "POINTS":
+            n = int(tok[i + 1])
+            out["x"] = [float(v) for v in tok[i + 3:i + 3 + 3 * n]]
+            i += 3 + 3 * n
+        elif (i + 3 < len(tok) and tok[i + 1].isdigit() and tok[i + 2].isdigit()
+              and tok[i + 3] in ("int", "float", "double") and tok[i] != "FieldData"):
+            nc, nt = int(tok[i + 1]), int(tok[i + 2])
+            out[tok[i]] = [float(v) for v in tok[i + 4:i + 4 + nc * nt]]
+            i += 4 + nc * nt
+        else:
+            i += 1
+    return out
+
+
+def halves(arr):
+    """Mean temperature of the atoms at x > 0 and x <= 0, and {id: T}."""
+    x, t = arr["x"], arr["f_Temp[0]"]
+    hot = [t[k] for k in range(len(t)) if x[3 * k] > 0]
+    cold = [t[k] for k in range(len(t)) if x[3 * k] <= 0]
+    return (sum(hot) / len(hot), sum(cold) / len(cold),
+            {int(i): v for i, v in zip(arr["id"], t)})
+
+
+def check_tutorial():
+    tag = "liggghts_heat_tutorial_heatTransfer_1"
+    if not os.path.isdir(TUTORIAL):
+        print("SKIP %s: %s missing (Debian package liggghts-doc)" % (tag, TUTORIAL))
+        return
+    reflog = open(os.path.join(REF, "heatTransfer_1.liggghts.log")).read()
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(TUTORIAL, "in.heatGran"), tmp)
+        os.makedirs(os.path.join(tmp, "post"))
+        out = run_gravel(tmp, "in.heatGran")
+        if out.returncode:
+            report(False, tag + "_runs", (out.stdout + out.stderr)[-1500:])
+            return
+        rows = thermo(open(os.path.join(tmp, "log.gravel")).read())
+        mine = vtk_named(os.path.join(tmp, "post", "heatGran_%d.vtk" % TUT_LAST))
+    ref_rows = thermo(reflog)
+    bad = []
+    if [r[:2] for r in rows] != [q[:2] for q in ref_rows]:
+        bad.append("step/atoms columns differ (%d rows, liggghts %d)" % (len(rows), len(ref_rows)))
+    for r, q in zip(rows, ref_rows):
+        cols = range(2, len(q)) if int(q[0]) <= TUT_EXACT else [4]
+        for c in cols:
+            u, w = float(r[c]), float(q[c])
+            if (abs(u - w) / abs(w) if w else abs(u)) > REL_KE:
+                bad.append("step %s column %d: %s vs %s" % (r[0], c, r[c], q[c]))
+    report(not bad, tag + "_thermo", "; ".join(bad[:5]))
+    ref = vtk_named(os.path.join(REF, "heatTransfer_1_%d.liggghts.vtk.gz" % TUT_LAST))
+    (h, c, t), (hr, cr, tr) = halves(mine), halves(ref)
+    d = [abs(t[i] - tr[i]) for i in tr if i in t]
+    ok = (len(d) == len(tr) == len(t) and abs(h - hr) / hr <= TUT_HALF
+          and abs(c - cr) / cr <= TUT_HALF and sum(d) / len(d) <= TUT_ATOM)
+    report(ok, tag + "_temperatures", "x > 0: %.5f vs %.5f, x <= 0: %.5f vs %.5f, mean |dT| %s"
+           % (h, hr, c, cr, sum(d) / len(d) if d else "-"))
+    print("  %d rows; step %d: mean T x > 0 %.4f (liggghts %.4f), x <= 0 %.4f (%.4f); per atom "
+          "|dT| mean %.3g K, largest %.3g K" % (len(rows), TUT_LAST, h, hr, c, cr,
+                                               sum(d) / len(d), max(d)))
+
+
 HEAD = """units si
 atom_style granular
 boundary f f f
@@ -167,6 +245,18 @@ def update():
                     gzip.GzipFile(os.path.join(REF, "%s.liggghts.dump.gz" % form), "wb",
                                   mtime=0) as fo:
                 fo.write(fi.read())
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(TUTORIAL, "in.heatGran"), tmp)
+        os.makedirs(os.path.join(tmp, "post"))
+        out = subprocess.run(["stdbuf", "-o0", "liggghts", "-in", "in.heatGran"], cwd=tmp,
+                             capture_output=True, text=True, timeout=600)
+        open(os.path.join(REF, "heatTransfer_1.liggghts.log"), "w").write(
+            "".join(l for l in out.stdout.splitlines(True) if not l.startswith("Created")))
+        src = os.path.join(tmp, "post", "heatGran_%d.vtk" % TUT_LAST)
+        with open(src, "rb") as fi, gzip.GzipFile(
+                os.path.join(REF, "heatTransfer_1_%d.liggghts.vtk.gz" % TUT_LAST), "wb",
+                mtime=0) as fo:
+            fo.write(fi.read())
     print("references written to", REF)
 
 
@@ -176,6 +266,7 @@ def main():
         return 0
     for form in FORMS:
         check_form(form)
+    check_tutorial()
     check_bad_decks(HEAD, BAD, "liggghts_heat_error_")
     return 1 if FAILURES else 0
 
