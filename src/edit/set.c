@@ -145,10 +145,10 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         int nv = 1, shift = 0;
         if (!strcmp(kw, "property/atom")) { /* LIGGGHTS: property/atom NAME value */
             arg_need(g, argc, k, 2, kw);
-            if (strcmp(argv[k + 1], "Temp"))
-                gr_error(g, "set property/atom: unknown property '%.64s' (gravel supports Temp, "
-                            "the temperature of fix heat/gran)", argv[k + 1]);
-            kw = "temperature";
+            if (strcmp(argv[k + 1], "Temp") && strcmp(argv[k + 1], "heatSource"))
+                gr_error(g, "set property/atom: unknown property '%.64s' (gravel supports Temp "
+                            "and heatSource, of fix heat/gran)", argv[k + 1]);
+            kw = strcmp(argv[k + 1], "Temp") ? "heatSource" : "temperature";
             shift = 1;
         }
         if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
@@ -337,6 +337,20 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     if (!(val >= 0))
                         gr_error(g, "invalid temperature %g in set command", val);
                     a->temperature[i] = val;
+                    count++;
+                }
+        } else if (!strcmp(kw, "heatSource")) { /* LIGGGHTS: property/atom heatSource Q */
+            if (!(g->atoms.heat_flag & ATOM_HEAT_T))
+                gr_error(g, "cannot set property/atom heatSource without the atoms' temperature "
+                            "(fix heat/gran first)");
+            double qv = 0;
+            const double *p = kw_value(g, v[0], "heat source", &qv, buf, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double val = VAL(p, qv, i);
+                    if (!isfinite(val))
+                        gr_error(g, "invalid heat source %g in set command", val);
+                    a->heatsource[i] = val;
                     count++;
                 }
         } else if (!strcmp(kw, "heatflow")) {

@@ -8,8 +8,9 @@
  * however often listed: id, mol, type (int), mass, ix iy iz -> "i" (3 ints),
  * vx vy vz -> "v", fx fy fz -> "f", radius, diameter, omegax omegay omegaz
  * -> "omega", tqx tqy tqz -> "tq" (doubles), then fix heat/gran's
- * f_Temp[0] and f_heatFlux[0] (LIGGGHTS's per-atom Temp and heatFlux: the
- * atoms' temperature and heat flow, under those names). A triple becomes a 3-component
+ * f_Temp[0], f_heatFlux[0] and f_heatSource[0] (LIGGGHTS's per-atom Temp,
+ * heatFlux and heatSource: the atoms' temperature, heat flow and heat
+ * source, under those names). A triple becomes a 3-component
  * array only when all three are listed; otherwise each is its own scalar
  * array under its keyword. One VERTICES cell per particle; dataset field
  * data TIME and CYCLE. Beside each snapshot, as LIGGGHTS, the box as a
@@ -29,12 +30,12 @@
 
 enum { C_ID, C_MOL, C_TYPE, C_MASS, C_IX, C_IY, C_IZ, C_VX, C_VY, C_VZ, C_FX, C_FY, C_FZ,
        C_RADIUS, C_DIAMETER, C_OMEGAX, C_OMEGAY, C_OMEGAZ, C_TQX, C_TQY, C_TQZ, C_TEMP,
-       C_HEATFLUX, C_COUNT };
+       C_HEATFLUX, C_HEATSOURCE, C_COUNT };
 
 static const char *const names[C_COUNT] = {
     "id", "mol", "type", "mass", "ix", "iy", "iz", "vx", "vy", "vz", "fx", "fy", "fz",
     "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz", "f_Temp[0]",
-    "f_heatFlux[0]"};
+    "f_heatFlux[0]", "f_heatSource[0]"};
 
 struct cvtk {
     int on[C_COUNT];
@@ -66,7 +67,8 @@ static void create(struct gravel *g, struct dump *d, int argc, char **argv)
         if (k == C_COUNT)
             gr_error(g, "dump custom/vtk: field '%.64s' is not supported (supported: id mol type "
                         "mass x y z ix iy iz vx vy vz fx fy fz radius diameter omegax omegay "
-                        "omegaz tqx tqy tqz, and f_Temp[0] f_heatFlux[0] with fix heat/gran)", s);
+                        "omegaz tqx tqy tqz, and f_Temp[0] f_heatFlux[0] f_heatSource[0] with fix "
+                        "heat/gran)", s);
         if (k >= C_TEMP && !(g->atoms.heat_flag & ATOM_HEAT_T))
             gr_error(g, "dump custom/vtk: %s needs the atoms' temperature (define fix heat/gran "
                         "first)", s);
@@ -117,6 +119,7 @@ static double value(const struct gravel *g, int c, int i)
         return a->omega ? a->omega[3 * i + c - C_OMEGAX] : 0.0;
     case C_TEMP: return a->temperature[i];
     case C_HEATFLUX: return a->heatflow[i];
+    case C_HEATSOURCE: return a->heatsource[i];
     default: return a->torque ? a->torque[3 * i + c - C_TQX] : 0.0;
     }
 }

@@ -94,9 +94,10 @@ void heat_flow_integrate(struct gravel *g, unsigned groupbit, cl_kernel k, cl_me
     eng_arg_mem(g, k, 3, a->type);
     eng_arg_mem(g, k, 4, a->rmass);
     eng_arg_mem(g, k, 5, a->heatflow);
-    eng_arg_mem(g, k, 6, a->temperature);
-    eng_arg_mem(g, k, 7, cp);
-    eng_arg_real(g, k, 8, g->dt);
+    eng_arg_mem(g, k, 6, a->heatsource);
+    eng_arg_mem(g, k, 7, a->temperature);
+    eng_arg_mem(g, k, 8, cp);
+    eng_arg_real(g, k, 9, g->dt);
     eng_launch(g, k, (size_t)a->n);
 }
 

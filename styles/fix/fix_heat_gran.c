@@ -145,8 +145,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
      * a restart file brought back are kept (LIGGGHTS restores its Temp) */
     struct atoms *a = &g->atoms;
     for (int i = 0; i < a->n; i++) {
-        if (!(a->heat_flag & ATOM_HEAT_T))
+        if (!(a->heat_flag & ATOM_HEAT_T)) {
             a->temperature[i] = h->t0;
+            a->heatsource[i] = 0;
+        }
         a->heatflow[i] = 0;
     }
     a->heat_flag = ATOM_HEAT_BOTH;
