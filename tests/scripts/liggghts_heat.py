@@ -253,7 +253,7 @@ BAD = [("area_correction", "fix h all heat/gran initial_temperature 300. contact
        ("set_property", "fix h all heat/gran initial_temperature 300.\n"
         "set atom 1 property/atom Foo 1.\n", "unknown property 'Foo'", 2),
        ("set_source", "set atom 1 property/atom heatSource 1.\n",
-        "cannot set property/atom heatSource without the atoms' temperature", 1),
+        "cannot set heat source without the atoms' temperature", 1),
        ("twice", "fix h all heat/gran initial_temperature 300.\n"
         "fix h2 all heat/gran initial_temperature 300.\n",
         "cannot have more than one fix of this style", 2)]
