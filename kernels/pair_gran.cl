@@ -244,6 +244,38 @@ static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const
     return t;
 }
 
+#ifdef HAS_HEAT
+/* fix heat/gran's conduction (LIGGGHTS FixHeatGranCond::post_force_eval):
+ * the heat flowing into i from j, (T_j - T_i) H sqrt(A), H = 4 k_i k_j /
+ * (k_i + k_j) (p[LG_HC]); A the contact area: overlap, the circle where the
+ * spheres' surfaces cross, -pi/4 (r-ri-rj)(r+ri-rj)(r-ri+rj)(r+ri+rj) / r^2
+ * (pi min(ri, rj)^2 once one centre is inside the other sphere);
+ * projection pi max(ri, rj)^2; constant p[LG_HAREA]. */
+static inline REAL lg_conduction(__global const REAL *p, const REAL r, const REAL ri,
+                                 const REAL rj, const REAL ti, const REAL tj)
+{
+    const int mode = (int)p[LG_HEAT];
+    REAL area;
+    if (mode == LG_H_NONE)
+        return 0;
+    if (mode == LG_H_OVERLAP) {
+        if (r < fmax(ri, rj)) {
+            area = fmin(ri, rj);
+            area *= area * (REAL)M_PI;
+        } else {
+            area = -(REAL)M_PI / (REAL)4.0 *
+                   ((r - ri - rj) * (r + ri - rj) * (r - ri + rj) * (r + ri + rj)) / (r * r);
+        }
+    } else if (mode == LG_H_PROJECTION) {
+        const REAL rmax = fmax(ri, rj);
+        area = (REAL)M_PI * rmax * rmax;
+    } else {
+        area = p[LG_HAREA];
+    }
+    return (tj - ti) * (p[LG_HC] * sqrt(area));
+}
+#endif
+
 /* The composed law; dmax: hooke/hysteresis's history entry (NULL otherwise).
  * The wall's set has p[LG_WALL] = 1. */
 static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *dmax,
@@ -287,6 +319,9 @@ static inline void gran_model_law(const struct contact *c, __global const REAL *
     else
         Ft = lg_tangential_nohistory(vtr, nf.gammat, p[LG_MU], nf.Fn);
     out->f = F + Ft;
+#ifdef HAS_HEAT
+    out->q = wall ? (REAL)0 : lg_conduction(p, r, radi, radj, c->ti, c->tj);
+#endif
 
     /* torques: on i -cri tor - rt, on j -crj tor + rt, written as the body's
      * -radi tc - tr, -radj tc + tr (tc = (r / radsum) tor) */

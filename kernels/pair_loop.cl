@@ -65,7 +65,11 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     s.acts = 1;
     s.inclusive = 0;
     s.hold = -1;
+#ifdef PAIR_HIST_KEEP /* LIGGGHTS's pair gran: a separated pair keeps its history */
+    s.hzero = 0;
+#else
     s.hzero = PAIR_HIST_N > 0 ? HIST_ZERO_N : 0;
+#endif
     s.note = 1;
     s.note_idx = c;
     s.acode = 0;

@@ -79,14 +79,18 @@ enum col_form { COL_SS, COL_SL, COL_LL };
  * friction (LG_R_*), coefficientRollingFriction, torsionTorque (0/1); 1 for
  * the wall's set (fix wall/gran model ...: reff = radi, lever radi - delta/2,
  * the wall's contact area); hooke/hysteresis's coefficientMaxElasticStiffness,
- * coefficientAdhesionStiffness, coefficientPlasticityDepth. */
+ * coefficientAdhesionStiffness, coefficientPlasticityDepth; fix heat/gran's
+ * conduction (LG_H_*: none on walls and without the fix), its conductance
+ * factor 4 k_i k_j / (k_i + k_j) (thermalConductivity; 0 if one k < 1e-6)
+ * and the area of contact_area constant. */
 enum lg_param { LG_NMODEL, LG_YEFF, LG_GEFF, LG_BETA, LG_LOGE, LG_CHARV, LG_KN, LG_KT, LG_GN,
                 LG_GT, LG_ABSDAMP, LG_TDAMP, LG_LIMIT, LG_KTTOKN, LG_TMODEL, LG_MU, LG_COH,
                 LG_CED, LG_ROLL, LG_RMU, LG_TORSION, LG_WALL, LG_K2MAX, LG_KC, LG_PHIF,
-                LG_NPARAM };
+                LG_HEAT, LG_HC, LG_HAREA, LG_NPARAM };
 enum lg_normal { LG_N_HERTZ, LG_N_HOOKE, LG_N_HERTZ_STIFFNESS, LG_N_HOOKE_STIFFNESS,
                  LG_N_HOOKE_HYSTERESIS };
 enum lg_cohesion { LG_C_NONE, LG_C_SJKR, LG_C_SJKR2 };
 enum lg_rolling { LG_R_NONE, LG_R_CDT };
+enum lg_heat { LG_H_NONE, LG_H_OVERLAP, LG_H_PROJECTION, LG_H_CONSTANT };
 
 #endif

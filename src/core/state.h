@@ -90,6 +90,8 @@ struct atoms {
                              * style (data files carry them), not to fix property/atom */
     int heat_flag;          /* ATOM_HEAT_* bits: fix property/atom temperature, heatflow
                              * (LAMMPS atom->temperature_flag, heatflow_flag) */
+    double temp_default;    /* temperature of a new atom (0; fix heat/gran's
+                             * initial_temperature: LIGGGHTS's Temp default_value) */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
     int *order;             /* scratch of atoms_tag_order() */

@@ -130,6 +130,29 @@ static const double *kw_value(struct gravel *g, const char *s, const char *what,
 
 #define VAL(p, num, i) ((p) ? (p)[i] : (num))
 
+/* A per-atom heat value (temperature, heat source) of the selected atoms
+ * from s: what names it in messages, nonneg refuses values below 0 (else
+ * only non-finite ones). Returns the atoms set (0 in a dry pass). */
+static long set_heat_value(struct gravel *g, double *dst, const char *s, const char *what,
+                           int nonneg, const char *sel, int n, double *buf, int dry)
+{
+    if (!(g->atoms.heat_flag & ATOM_HEAT_T))
+        gr_error(g, "cannot set %s without the atoms' temperature (fix property/atom "
+                    "temperature first, or fix heat/gran)", what);
+    double num = 0;
+    const double *p = kw_value(g, s, what, &num, buf, dry);
+    long count = 0;
+    for (int i = 0; i < n; i++)
+        if (sel[i]) {
+            double val = VAL(p, num, i);
+            if (nonneg ? !(val >= 0) : !isfinite(val))
+                gr_error(g, "invalid %s %g in set command", what, val);
+            dst[i] = val;
+            count++;
+        }
+    return count;
+}
+
 /* Apply the keywords in order; with dry set, only validate them (so a bad
  * keyword late in the line changes nothing). Values given as v_name are
  * checked per atom in the second pass. buf: 3 x atoms.n scratch doubles. */
@@ -142,14 +165,22 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
     for (int k = 2; k < argc; k++) {
         const char *kw = argv[k];
         long count = 0;
-        int nv = 1;
+        int nv = 1, shift = 0;
+        if (!strcmp(kw, "property/atom")) { /* LIGGGHTS: property/atom NAME value */
+            arg_need(g, argc, k, 2, kw);
+            if (strcmp(argv[k + 1], "Temp") && strcmp(argv[k + 1], "heatSource"))
+                gr_error(g, "set property/atom: unknown property '%.64s' (gravel supports Temp "
+                            "and heatSource, of fix heat/gran)", argv[k + 1]);
+            kw = strcmp(argv[k + 1], "Temp") ? "heatSource" : "temperature";
+            shift = 1;
+        }
         if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
             nv = 3;
         else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio") ||
                  !strcmp(kw, "type/subset"))
             nv = 3;
-        arg_need(g, argc, k, nv, kw);
-        char **v = argv + k + 1;
+        arg_need(g, argc, k + shift, nv, kw);
+        char **v = argv + k + 1 + shift;
         if (!strcmp(kw, "type")) {
             double tv = 0;
             const double *p = kw_value(g, v[0], "atom type", &tv, buf, dry);
@@ -318,19 +349,9 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     count++;
                 }
         } else if (!strcmp(kw, "temperature")) { /* LAMMPS 2023 Set::process_temperature */
-            if (!(g->atoms.heat_flag & ATOM_HEAT_T))
-                gr_error(g, "cannot set attribute temperature for this atom style (fix "
-                            "property/atom temperature first)");
-            double tv = 0;
-            const double *p = kw_value(g, v[0], "temperature", &tv, buf, dry);
-            for (int i = 0; i < n; i++)
-                if (sel[i]) {
-                    double val = VAL(p, tv, i);
-                    if (!(val >= 0))
-                        gr_error(g, "invalid temperature %g in set command", val);
-                    a->temperature[i] = val;
-                    count++;
-                }
+            count = set_heat_value(g, a->temperature, v[0], "temperature", 1, sel, n, buf, dry);
+        } else if (!strcmp(kw, "heatSource")) { /* LIGGGHTS: property/atom heatSource Q */
+            count = set_heat_value(g, a->heatsource, v[0], "heat source", 0, sel, n, buf, dry);
         } else if (!strcmp(kw, "heatflow")) {
             gr_error(g, "keyword 'heatflow' is not settable: the heat flow is recomputed every "
                         "step from the contacts (LAMMPS's set has no heatflow keyword either)");
@@ -341,7 +362,7 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         }
         if (!dry)
             gr_print(g, "  %ld settings made for %s\n", count, kw);
-        k += nv;
+        k += nv + shift;
     }
 }
 

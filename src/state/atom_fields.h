@@ -51,7 +51,9 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
  * mass; image the periodic image counts; mol the molecule ID (0 = none);
  * temperature LAMMPS's per-atom temperature and heatflow the heat flowing
  * into the atom in the step (pair and wall conduction, summed like the
- * forces; fix heat/flow integrates it). */
+ * forces; fix heat/flow integrates it); heatsource a heat input of its own
+ * (LIGGGHTS's property/atom heatSource, set by `set ... property/atom
+ * heatSource Q`; 0 unless set), added to heatflow in the update. */
 /* clang-format off */
 #define ATOM_FIELDS(X)                                                                       \
     X(tag,    int64_t,  FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "tags")               \
@@ -67,7 +69,8 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
     X(image,  int,      FD_RAW,  3, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "image flags")        \
     X(mol,    int64_t,  FD_RAW,  1, FW_MOLECULE, FL_STATE, FS_MOLECULE, "molecule IDs")       \
     X(temperature, double, FD_REAL, 1, FW_HEAT,  FL_STATE, FS_HEAT,     "temperatures")       \
-    X(heatflow, double, FD_REAL, 1, FW_HEAT,     FL_STEP,  FS_HEAT,     "heat flows")
+    X(heatflow, double, FD_REAL, 1, FW_HEAT,     FL_STEP,  FS_HEAT,     "heat flows")         \
+    X(heatsource, double, FD_REAL, 1, FW_HEAT,   FL_STATE, FS_HEAT,     "heat sources")
 /* clang-format on */
 
 /* Declares one pointer member per field (struct atoms, struct image). */

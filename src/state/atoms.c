@@ -71,6 +71,8 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
         a->x[3 * i + k] = x[k];
     a->radius[i] = radius;
     a->rmass[i] = rmass;
+    if (a->heat_flag & ATOM_HEAT_T)
+        a->temperature[i] = a->temp_default;
     return i;
 }
 

@@ -7,12 +7,15 @@
  * points are always x y z (listed or not); then, in this order and each once
  * however often listed: id, mol, type (int), mass, ix iy iz -> "i" (3 ints),
  * vx vy vz -> "v", fx fy fz -> "f", radius, diameter, omegax omegay omegaz
- * -> "omega", tqx tqy tqz -> "tq" (doubles). A triple becomes a 3-component
+ * -> "omega", tqx tqy tqz -> "tq" (doubles), then fix heat/gran's
+ * f_Temp[0], f_heatFlux[0] and f_heatSource[0] (LIGGGHTS's per-atom Temp,
+ * heatFlux and heatSource: the atoms' temperature, heat flow and heat
+ * source, under those names). A triple becomes a 3-component
  * array only when all three are listed; otherwise each is its own scalar
  * array under its keyword. One VERTICES cell per particle; dataset field
  * data TIME and CYCLE. Beside each snapshot, as LIGGGHTS, the box as a
  * RECTILINEAR_GRID in "<before *>boundingBox_<step><after *>" (without '*':
- * "<name>_boundingBox.vtk"). Per-atom computes, fixes and variables,
+ * "<name>_boundingBox.vtk"). Other per-atom computes, fixes and variables,
  * scaled/unwrapped coordinates and LIGGGHTS's SPH/superquadric fields are
  * refused, as are the XML extensions (.vtu .vtp .pvtu .pvtp need the VTK
  * library). `dump_modify binary yes`: big-endian binary blocks. */
@@ -26,11 +29,13 @@
 #include "outfile.h"
 
 enum { C_ID, C_MOL, C_TYPE, C_MASS, C_IX, C_IY, C_IZ, C_VX, C_VY, C_VZ, C_FX, C_FY, C_FZ,
-       C_RADIUS, C_DIAMETER, C_OMEGAX, C_OMEGAY, C_OMEGAZ, C_TQX, C_TQY, C_TQZ, C_COUNT };
+       C_RADIUS, C_DIAMETER, C_OMEGAX, C_OMEGAY, C_OMEGAZ, C_TQX, C_TQY, C_TQZ, C_TEMP,
+       C_HEATFLUX, C_HEATSOURCE, C_COUNT };
 
 static const char *const names[C_COUNT] = {
     "id", "mol", "type", "mass", "ix", "iy", "iz", "vx", "vy", "vz", "fx", "fy", "fz",
-    "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz"};
+    "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz", "f_Temp[0]",
+    "f_heatFlux[0]", "f_heatSource[0]"};
 
 struct cvtk {
     int on[C_COUNT];
@@ -62,7 +67,11 @@ static void create(struct gravel *g, struct dump *d, int argc, char **argv)
         if (k == C_COUNT)
             gr_error(g, "dump custom/vtk: field '%.64s' is not supported (supported: id mol type "
                         "mass x y z ix iy iz vx vy vz fx fy fz radius diameter omegax omegay "
-                        "omegaz tqx tqy tqz)", s);
+                        "omegaz tqx tqy tqz, and f_Temp[0] f_heatFlux[0] f_heatSource[0] with fix "
+                        "heat/gran)", s);
+        if (k >= C_TEMP && !(g->atoms.heat_flag & ATOM_HEAT_T))
+            gr_error(g, "dump custom/vtk: %s needs the atoms' temperature (define fix heat/gran "
+                        "first)", s);
         c->on[k] = 1;
     }
 }
@@ -108,6 +117,9 @@ static double value(const struct gravel *g, int c, int i)
     case C_DIAMETER: return 2.0 * a->radius[i];
     case C_OMEGAX: case C_OMEGAY: case C_OMEGAZ:
         return a->omega ? a->omega[3 * i + c - C_OMEGAX] : 0.0;
+    case C_TEMP: return a->temperature[i];
+    case C_HEATFLUX: return a->heatflow[i];
+    case C_HEATSOURCE: return a->heatsource[i];
     default: return a->torque ? a->torque[3 * i + c - C_TQX] : 0.0;
     }
 }

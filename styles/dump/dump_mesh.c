@@ -28,7 +28,7 @@ int dump_meshes_list(struct gravel *g, const struct dump_meshes *dm, struct fix 
         return n;
     }
     for (int k = 0; k < g->styles.nfix && n < cap; k++)
-        if (g->styles.fix[k]->style == &fix_style_mesh_surface)
+        if (fix_is_mesh_surface(g->styles.fix[k]))
             out[n++] = g->styles.fix[k];
     return n;
 }

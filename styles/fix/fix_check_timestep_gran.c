@@ -87,7 +87,7 @@ static double mesh_vmax_sq(struct gravel *g)
     int last = -1; /* the wall fix's position in the fix list */
     for (int k = 0; k < g->styles.nfix; k++) {
         const struct fix *m = g->styles.fix[k];
-        if (m->style == &fix_style_mesh_surface && ((const struct mesh_surface *)m->data)->owner &&
+        if (fix_is_mesh_surface(m) && ((const struct mesh_surface *)m->data)->owner &&
             !strcmp(((const struct mesh_surface *)m->data)->owner->style->name, "wall/gran"))
             for (int q = 0; q < g->styles.nfix; q++)
                 if (g->styles.fix[q] == ((const struct mesh_surface *)m->data)->owner && q > last)
@@ -98,7 +98,7 @@ static double mesh_vmax_sq(struct gravel *g)
         return 0;
     for (int k = 0; k < g->styles.nfix; k++) {
         const struct fix *m = g->styles.fix[k];
-        if (m->style != &fix_style_mesh_surface)
+        if (!fix_is_mesh_surface(m))
             continue;
         const struct mesh_surface *ms = m->data;
         if (ms->owner != g->styles.fix[last])

@@ -13,6 +13,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_heat_flow.h"
 
 struct heat_flow {
     int ntypes;
@@ -84,21 +85,26 @@ static void init(struct gravel *g, struct fix *f)
     h->k = eng_kernel(g, "heat_flow_final");
 }
 
-static void final_integrate(struct gravel *g, struct fix *f)
+void heat_flow_integrate(struct gravel *g, unsigned groupbit, cl_kernel k, cl_mem cp)
 {
-    struct heat_flow *h = f->data;
     struct dev_atoms *a = eng_atoms(g);
-    cl_kernel k = h->k;
     eng_arg_int(g, k, 0, a->n);
-    eng_arg_uint(g, k, 1, f->groupbit);
+    eng_arg_uint(g, k, 1, groupbit);
     eng_arg_mem(g, k, 2, a->mask);
     eng_arg_mem(g, k, 3, a->type);
     eng_arg_mem(g, k, 4, a->rmass);
     eng_arg_mem(g, k, 5, a->heatflow);
-    eng_arg_mem(g, k, 6, a->temperature);
-    eng_arg_mem(g, k, 7, h->buf);
-    eng_arg_real(g, k, 8, g->dt);
+    eng_arg_mem(g, k, 6, a->heatsource);
+    eng_arg_mem(g, k, 7, a->temperature);
+    eng_arg_mem(g, k, 8, cp);
+    eng_arg_real(g, k, 9, g->dt);
     eng_launch(g, k, (size_t)a->n);
+}
+
+static void final_integrate(struct gravel *g, struct fix *f)
+{
+    struct heat_flow *h = f->data;
+    heat_flow_integrate(g, f->groupbit, h->k, h->buf);
 }
 
 const struct fix_style fix_style_heat_flow = {

@@ -43,6 +43,7 @@
 #include "fix.h"
 #include "fix_insert.h"
 #include "fix_mesh_surface.h"
+#include "mesh_planar.h"
 
 #define WHO "fix insert/stream"
 #define TINY 1e-14          /* LIGGGHTS's FIX_INSERT_STREAM_TINY */
@@ -62,6 +63,8 @@ struct stream {
     double normal[3], p_ref[3], v_normal[3], vn_mag;
     double extrude, ext_min, ext_max, vol_lo[3], vol_hi[3];
     double frac;
+    const struct mesh *face;        /* all_in: the face (fix mesh/surface/planar) and */
+    const struct mesh_planar *edges;/*   its nearest active edges */
     cl_kernel eos;
 };
 
@@ -123,8 +126,9 @@ static int on_face(const struct stream *s, const double x[3])
     return 0;
 }
 
-/* A random point of the face (TriMesh::generateRandomOwnedGhost). */
-static void face_point(struct stream *s, double x[3])
+/* A random point of the face (TriMesh::generateRandomOwnedGhost); returns
+ * its triangle. */
+static int face_point(struct stream *s, double x[3])
 {
     struct rng_park *rng = &s->in.rrng;
     double r = rng_park_uniform(rng) * s->acc[s->ntri - 1];
@@ -144,6 +148,24 @@ static void face_point(struct stream *s, double x[3])
     const double *p = s->tri + 9 * lo, b0 = 1. - u - v;
     for (int d = 0; d < 3; d++)
         x[d] = b0 * p[d] + v * p[3 + d] + u * p[6 + d];
+    return lo;
+}
+
+/* all_in yes: a random point of the face at least r from its border as
+ * LIGGGHTS tests it (TriMeshPlanar::generateRandomOwnedGhostWithin: its
+ * triangle's stored nearest active edges, at most MESH_PLANAR_MAXTRY draws,
+ * then a warning and the last point). */
+static void face_point_within(struct gravel *g, struct stream *s, double r, double x[3])
+{
+    for (int ntry = 1;; ntry++) {
+        int t = face_point(s, x);
+        if (mesh_planar_far(s->face, s->edges, t, x, r))
+            return;
+        if (ntry == MESH_PLANAR_MAXTRY) {
+            gr_warn(g, "'All_in yes' did not succeed");
+            return;
+        }
+    }
 }
 
 static void extrude(const struct stream *s, double len, double x[3])
@@ -163,10 +185,11 @@ static void geometry(struct gravel *g, struct stream *s)
     if (pose.moving)
         gr_error(g, WHO ": cannot translate, rotate, scale mesh which is used for particle "
                     "insertion (%s moves)", s->face_id);
-    if (in->all_in)
-        gr_error(g, WHO ": using all_in yes requires you to use a fix mesh/surface/planar "
-                    "(not supported by gravel)");
+    if (in->all_in && !ms->planar)
+        gr_error(g, WHO ": using all_in yes requires you to use a fix mesh/surface/planar");
     const struct mesh *m = &ms->m;
+    s->face = m;
+    s->edges = in->all_in ? &ms->edges : NULL;
     s->ntri = m->ntri;
     s->tri = gr_realloc(g, s->tri, 9 * (size_t)m->ntri * sizeof *s->tri);
     s->acc = gr_realloc(g, s->acc, (size_t)m->ntri * sizeof *s->acc);
@@ -370,9 +393,11 @@ static int reserve(struct gravel *g, struct insert *in, bigint nsteps)
 
 static void point(struct gravel *g, struct insert *in, double r, double x[3])
 {
-    (void)g;
     struct stream *s = (struct stream *)in;
-    face_point(s, x);
+    if (in->all_in)
+        face_point_within(g, s, r, x);
+    else
+        face_point(s, x);
     double u = rng_park_uniform(&in->rng);
     if (in->check_ol)
         extrude(s, -(u * s->ext_max + r + s->ext_min), x);

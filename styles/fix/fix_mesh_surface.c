@@ -12,7 +12,8 @@
  *                          origin of the first move/mesh rotate on the mesh,
  *                          else 0 0 0); it moves with the mesh
  *   temperature T0, curvature c, heal auto_remove_duplicates|no, verbose
- *   yes|no                 accepted as in LIGGGHTS (no effect here)
+ *   yes|no                 accepted as in LIGGGHTS (no effect here, but
+ *                          curvature's angle on mesh/surface/planar)
  * scale, move and rotate apply in the order they are given, once, at the
  * command. The mesh acts on particles through `fix wall/gran ... mesh`,
  * moves with `fix move/mesh`, and is written by `dump mesh/vtk`.
@@ -22,7 +23,13 @@
  * the reference point, 7 the power the mesh motion delivers to the
  * particles, -(F . v(ref) + T . omega) (for a mesh rotating about an axis
  * through ref: -T . omega, the drive's power draw). Sums run in tag order,
- * so they do not depend on the device order of the atoms. */
+ * so they do not depend on the device order of the atoms.
+ *
+ * `fix ID group mesh/surface/planar ...` (same keywords): the same mesh,
+ * which must be planar (LIGGGHTS's test: neighbours across an edge within
+ * the curvature angle, default |n_a . n_b| > 1 - 1e-5), with LIGGGHTS's
+ * lists of nearest active edges for fix insert/stream's all_in yes
+ * (src/state/mesh_planar.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -156,9 +163,33 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->hooks = 0;
 }
 
+static void create_planar(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    create(g, f, argc, argv);
+    struct mesh_surface *ms = f->data;
+    double c = ms->curvature;
+    if (c != 0. && !(c > 0. && c <= 60.))
+        gr_error(g, "fix mesh/surface/planar: 0 < curvature <= 60 degrees required (got %g)", c);
+    double cos_tol = c > 0. ? cos(c * M_PI / 180.) : 1. - 1e-5; /* LIGGGHTS's curvature_ */
+    int t = mesh_planar_check(&ms->m, cos_tol);
+    if (t >= 0)
+        gr_error(g, "fix mesh/surface/planar: Face defined as planar face is in fact not planar "
+                    "(triangle %d and a neighbour). You might want to check the 'curvature' "
+                    "setting", t);
+    if (mesh_planar_build(&ms->m, &ms->edges))
+        gr_error(g, "fix mesh/surface/planar: out of memory");
+    ms->planar = 1;
+}
+
+int fix_is_mesh_surface(const struct fix *f)
+{
+    return f->style == &fix_style_mesh_surface || f->style == &fix_style_mesh_surface_planar;
+}
+
 void mesh_surface_free(struct mesh_surface *ms)
 {
     mesh_free(&ms->m);
+    mesh_planar_free(&ms->edges);
     free(ms->normal);
     ms->normal = NULL;
     free(ms->model);
@@ -182,7 +213,7 @@ struct mesh_surface *mesh_surface_get(struct gravel *g, const char *id, const ch
     struct fix *f = fix_find(g, id);
     if (!f)
         gr_error(g, "%s: no fix with ID '%.64s' (expected a fix mesh/surface)", who, id);
-    if (f->style != &fix_style_mesh_surface)
+    if (!fix_is_mesh_surface(f))
         gr_error(g, "%s: fix %s is a %s fix, not mesh/surface", who, id, f->style->name);
     return f->data;
 }
@@ -509,6 +540,15 @@ const struct fix_style fix_style_mesh_surface = {
     .name = "mesh/surface",
     .reset_step = reset_step,
     .create = create,
+    .destroy = destroy,
+    .size_vector = 7,
+    .vector = vector,
+};
+
+const struct fix_style fix_style_mesh_surface_planar = {
+    .name = "mesh/surface/planar",
+    .reset_step = reset_step,
+    .create = create_planar,
     .destroy = destroy,
     .size_vector = 7,
     .vector = vector,

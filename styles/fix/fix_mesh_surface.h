@@ -8,6 +8,7 @@
 
 #include "fix.h"
 #include "mesh.h"
+#include "mesh_planar.h"
 #include "wall.h"
 
 /* One rigid motion of fix move/mesh or of fix_modify ID move (fix
@@ -32,6 +33,8 @@ struct mesh_surface {
     double surface_vel[3];      /* LIGGGHTS's surface_vel: the surface moves in place */
     int has_surface_vel;
     double ref[3];              /* torque reference point (moves with the mesh) */
+    int planar;                 /* fix mesh/surface/planar: checked planar, edges built */
+    struct mesh_planar edges;   /*   its nearest active edges (insert/stream all_in) */
     int ref_set;
     /* filled by fix wall/gran ... mesh: per atom force on the mesh and torque about ref */
     cl_mem fmesh;
@@ -58,6 +61,10 @@ struct mesh_pose {
 };
 
 extern const struct fix_style fix_style_mesh_surface;
+extern const struct fix_style fix_style_mesh_surface_planar;
+
+/* 1 if f is a fix mesh/surface or mesh/surface/planar. */
+int fix_is_mesh_surface(const struct fix *f);
 extern const struct fix_style fix_style_move_mesh;
 
 /* The mesh of fix `id`, or an error naming `who` when there is none. */

@@ -81,6 +81,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             a->mol[i] = 0;
         a->molecule_flag = 1;
     }
+    if ((props & (P_T | P_Q)) && !a->heat_flag)
+        for (int i = 0; i < a->n; i++)
+            a->heatsource[i] = 0;
     if ((props & P_T) && !(a->heat_flag & ATOM_HEAT_T)) {
         for (int i = 0; i < a->n; i++)
             a->temperature[i] = 0;

@@ -27,6 +27,7 @@
 #include "args.h"
 #include "collision_time.h"
 #include "error.h"
+#include "fix_heat_gran.h"
 #include "fix_property_global.h"
 #include "pair.h"
 #include "pair_gran.h"
@@ -270,6 +271,8 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
         q[LG_RMU] = fpg_pair(g, "coefficientRollingFriction", nt, I, J, who);
     q[LG_TORSION] = m->torsion;
     q[LG_WALL] = wall;
+    if (!wall)  /* fix heat/gran's conduction; walls exchange no heat */
+        q[LG_HEAT] = heat_gran_conduction(g, nt, I, J, &q[LG_HC], &q[LG_HAREA]);
 }
 
 /* ---- the pair style ---- */
@@ -366,6 +369,14 @@ static void describe(const struct pair *p, struct pair_caps *c)
         c->eval = "gran_model_eval";
         c->history = m.tm;
     }
+    /* LIGGGHTS resets a pair's history in surfacesClose only, which its
+     * pair loop calls for rsq < contactDistanceFactor^2 radsum^2 past the
+     * contact test: never with the factor 1 of spheres. A pair that
+     * separates keeps its history (shear, hysteresis's largest overlap)
+     * while it stays in the neighbor lists, and finds it on touching again
+     * (doc/styles/pair_gran_model.md). */
+    if (c->history)
+        pair_caps_define(c, "PAIR_HIST_KEEP", "1");
     c->tcol_of = p;
     c->collision_time = collision_time;
 }

@@ -116,8 +116,10 @@ def check_partial():
 ERRORS = [
     ("xml", "dump d all custom/vtk 1 post/d*.vtu id type x y z\n", ".vtu files (VTK XML)"),
     ("ext", "dump d all custom/vtk 1 post/d*.txt id type x y z\n", "needs the extension .vtk"),
-    ("field", "dump d all custom/vtk 1 d*.vtk id type x y z f_Temp[0]\n",
-     "field 'f_Temp[0]' is not supported"),
+    ("field", "dump d all custom/vtk 1 d*.vtk id type x y z f_wear[0]\n",
+     "field 'f_wear[0]' is not supported"),
+    ("temp", "dump d all custom/vtk 1 d*.vtk id type x y z f_Temp[0]\n",
+     "f_Temp[0] needs the atoms' temperature (define fix heat/gran first)"),
     ("nofield", "dump d all custom/vtk 1 d*.vtk\n", "no fields after the file name"),
 ]
 

@@ -23,6 +23,7 @@
 #include "fix.h"
 #include "fix_mesh_surface.h"
 #include "mesh.h"
+#include "mesh_planar.h"
 #include "output.h"
 #include "thermo.h"
 
@@ -978,6 +979,45 @@ TEST(dump_mesh_vtk)
     mesh_free(&m);
 }
 
+/* fix mesh/surface/planar's geometry (src/state/mesh_planar.c): the unit
+ * square of two triangles, its four border edges active and the diagonal
+ * not; LIGGGHTS's edgePointDist across, beyond and within an edge; a
+ * folded square is not planar, a slight fold passes a 10 degree curvature. */
+TEST(planar_edges)
+{
+    double sq[18] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0};
+    struct mesh m;
+    char err[256];
+    CHECK(mesh_from_soup("square", sq, 2, 0, &m, err, sizeof err) == 0);
+    CHECK(mesh_planar_check(&m, 1. - 1e-5) == -1);
+    struct mesh_planar p = {0};
+    CHECK(mesh_planar_build(&m, &p) == 0);
+    /* 2 triangles x (3 own edges x 2 active edges of each triangle) = 12
+     * candidates per triangle: the list is full and never names the diagonal */
+    for (int t = 0; t < 2; t++)
+        for (int q = 0; q < MESH_PLANAR_NEDGE; q++) {
+            int j = p.edge_tri[MESH_PLANAR_NEDGE * t + q], k = p.edge_k[MESH_PLANAR_NEDGE * t + q];
+            CHECK(j >= 0 && m.nbr[3 * j + k] == -1);
+        }
+    CHECK_NEAR(p.min_dist[0], 0., 0);   /* a vertex of its own edge */
+    const double x[3] = {0.5, 0.2, 0.}, far[3] = {2., -1., 0.};
+    CHECK_NEAR(mesh_edge_point_dist(&m, 0, 0, x), 0.2, 1e-15);     /* across edge (0,0)-(1,0) */
+    CHECK_NEAR(mesh_edge_point_dist(&m, 0, 0, far), sqrt(2.), 1e-15); /* beyond its end (1,0) */
+    CHECK(!mesh_planar_far(&m, &p, 0, x, 0.25));
+    const double mid[3] = {0.6, 0.4, 0.};
+    CHECK(mesh_planar_far(&m, &p, 0, mid, 0.39));
+    mesh_planar_free(&p);
+    mesh_free(&m);
+    /* fold the second triangle's free vertex out of the plane */
+    double fold[18];
+    memcpy(fold, sq, sizeof fold);
+    fold[17] = 0.1;   /* (0, 1, 0.1): about 5.7 degrees */
+    CHECK(mesh_from_soup("fold", fold, 2, 0, &m, err, sizeof err) == 0);
+    CHECK(mesh_planar_check(&m, 1. - 1e-5) == 0);
+    CHECK(mesh_planar_check(&m, cos(10. * M_PI / 180.)) == -1);
+    mesh_free(&m);
+}
+
 int main(void)
 {
     snprintf(dir, sizeof dir, "/tmp/gravel_mesh_XXXXXX");
@@ -1003,6 +1043,7 @@ int main(void)
     RUN(restart_exact);
     RUN(stacked_pose);
     RUN(dump_mesh_vtk);
+    RUN(planar_edges);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0)
