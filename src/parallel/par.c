@@ -215,6 +215,11 @@ static void check_scene(struct gravel *g)
                      g->styles.fix[i]->style->name);
             why = buf;
         }
+    for (int i = 0; !why && i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->energy) {
+            snprintf(buf, sizeof buf, "fix_modify %s energy yes", g->styles.fix[i]->id);
+            why = buf;
+        }
     for (int i = 0; !why && i < g->styles.ncompute; i++)
         if (!listed(par_computes, g->styles.compute[i]->style->name)) {
             snprintf(buf, sizeof buf, "compute %s (%.60s)", g->styles.compute[i]->id,
@@ -224,10 +229,8 @@ static void check_scene(struct gravel *g)
     static const char *const kw[] = {"step", "elapsed", "elaplong", "atoms", "dt", "time", "cpu",
                                      "tpcpu", "spcpu", "cpuremain", "part", "temp", "ke",
                                      "vol", "lx", "ly", "lz", "xlo", "xhi", "ylo", "yhi",
-                                     "zlo", "zhi", NULL};
-    if (!why && g->thermo.ncol == 0)
-        why = "thermo_style one (its epair and press are not summed over ranks yet: use "
-              "thermo_style custom with step atoms temp ke and the allowed computes)";
+                                     "zlo", "zhi", "press", "pxx", "pyy", "pzz", "pxy",
+                                     "pxz", "pyz", "epair", "emol", "pe", "etotal", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
         if (!listed(kw, c) && strncmp(c, "c_", 2) != 0) {

@@ -2,7 +2,8 @@
 # mpi_ranks.sh - bin/gravel-mpi on 1, 2, 3, 4 and 8 ranks (oversubscribed):
 # the thermo rows (17 digits) and the final atoms (write_dump, sorted by ID,
 # 17 digits) are bit-identical to bin/gravel on one process, across two runs
-# (contact history carried by tag pair through migrations and between runs),
+# (contact history carried by tag pair through migrations and between runs;
+# thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision; errors end every rank with one message (doc/parallel.md).
@@ -25,7 +26,8 @@ trap 'rm -rf "$t"' EXIT
 cd "$t" || exit 1
 ln -s "$data" data.chute
 
-# a hot gas: periodic in x y z, atoms cross every brick face, edge and corner
+# a hot gas: periodic in x y z, atoms cross every brick face, edge and corner;
+# LAMMPS's default thermo_style one (temp, epair, emol, etotal, press)
 cat > gas.in <<'IN'
 variable        pz index 0
 units           lj
@@ -45,7 +47,6 @@ neigh_modify    every 1 delay 0
 fix             1 all nve/sphere
 timestep        0.0002
 compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 temp
 thermo_modify   norm no format float %.17g
 thermo          100
 run             600
@@ -72,7 +73,7 @@ fix             1 all gravity 1.0 chute 26.0
 fix             2 bottom freeze
 fix             3 active nve/sphere
 compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 vol
+thermo_style    custom step atoms ke c_1 vol press pxy pyz epair pe etotal temp
 thermo_modify   norm no format float %.17g
 thermo          30
 run             120
@@ -80,7 +81,7 @@ run             60
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
 
-rows() { grep -E '^ +[0-9]+ +[0-9]+ ' "$1"; }
+rows() { grep -E '^ +[0-9]+ +-?[0-9]' "$1"; }
 # name, deck, ranks, extra gravel arguments, processors line (or empty)
 same() {
     if [ -n "$5" ]; then sed "s/^comm_modify/processors $5\ncomm_modify/" "$2" > p.in; else cp "$2" p.in; fi
