@@ -159,11 +159,11 @@ static size_t record_bytes(const struct gravel *g)
 }
 
 /* atom i's record; raw: its device position bytes (single precision) */
-static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
-                      unsigned char *out)
+static void pack_rows(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
+                      int all, unsigned char *out)
 {
 #define PACK(name, ctype, dev, width, when, life, sect, what)                                  \
-    if (life == FL_STATE) {                                                                   \
+    if (life == FL_STATE || all) {                                                            \
         memcpy(out, a->name + (size_t)i * (width), sizeof(ctype) * (width));                  \
         out += sizeof(ctype) * (width);                                                       \
     }
@@ -173,11 +173,11 @@ static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, si
         memcpy(out, raw, rawb);
 }
 
-static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
-                        size_t rawb)
+static void unpack_rows(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
+                        size_t rawb, int all)
 {
 #define UNPACK(name, ctype, dev, width, when, life, sect, what)                                \
-    if (life == FL_STATE) {                                                                   \
+    if (life == FL_STATE || all) {                                                            \
         memcpy(a->name + (size_t)i * (width), in, sizeof(ctype) * (width));                   \
         in += sizeof(ctype) * (width);                                                        \
     }
@@ -185,6 +185,28 @@ static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigne
 #undef UNPACK
     if (rawb)
         memcpy(raw, in, rawb);
+}
+
+static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
+                      unsigned char *out)
+{
+    pack_rows(a, i, raw, rawb, 0, out);
+}
+
+static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
+                        size_t rawb)
+{
+    unpack_rows(a, i, in, raw, rawb, 0);
+}
+
+/* bytes of every row of the field table (FL_STEP ones too: dumps show forces) */
+static size_t all_rows_bytes(void)
+{
+    size_t b = 0;
+#define BYTES(name, ctype, dev, width, when, life, sect, what) b += sizeof(ctype) * (width);
+    ATOM_FIELDS(BYTES)
+#undef BYTES
+    return b;
 }
 
 /* ---- what runs across ranks --------------------------------------------------------- */
@@ -238,14 +260,17 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     }
-    if (!why && g->styles.ndump)
-        why = "a dump during the run (write_dump after the run works)";
     if (!why && g->restart)
         why = "restart files";
     if (!why && g->eng && g->eng->hist_owner)
         why = "-compat lammps2021 contact owners";
     if (why)
-        gr_error(g, "%s cannot run on %d MPI ranks yet (doc/parallel.md lists what can); run "
+        par_refuse(g, why);
+}
+
+void par_refuse(struct gravel *g, const char *why)
+{
+    gr_error(g, "%s cannot run on %d MPI ranks yet (doc/parallel.md lists what can); run "
                     "it on one rank", why, comm_size());
 }
 
@@ -759,4 +784,65 @@ double par_sum_total(struct gravel *g, struct par_sum *s)
     free(s->v);
     memset(s, 0, sizeof *s);
     return t;
+}
+
+/* ---- every atom on every rank for an output step ------------------------------- */
+
+/* by tag: the first 8 bytes of a record */
+static int by_first_tag(const void *x, const void *y)
+{
+    int64_t a, b;
+    memcpy(&a, x, sizeof a);
+    memcpy(&b, y, sizeof b);
+    return (a > b) - (a < b);
+}
+
+void par_gather_begin(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->on || p->gathered)
+        return;
+    struct engine *e = g->eng;
+    run_sync_host(g);
+    struct atoms *a = &g->atoms;
+    size_t rb = all_rows_bytes();
+    unsigned char *mine = gr_malloc(g, (size_t)a->n * rb + 1), *all = NULL;
+    for (int i = 0; i < a->n; i++)
+        pack_rows(a, i, NULL, 0, 1, mine + (size_t)i * rb);
+    size_t bytes = comm_allgatherv(mine, (size_t)a->n * rb, (void **)&all);
+    free(mine);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank for output");
+    int total = (int)(bytes / rb);
+    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
+    p->local = *a;
+    struct atoms full = {0};
+    full.ntypes = a->ntypes;
+    full.molecule_flag = a->molecule_flag;
+    full.style_molecular = a->style_molecular;
+    full.heat_flag = a->heat_flag;
+    full.type_mass = a->type_mass;
+    full.maxtag = a->maxtag;
+    *a = full;
+    atoms_reserve(g, total);
+    for (int i = 0; i < total; i++)
+        unpack_rows(a, i, all + (size_t)i * rb, NULL, 0, 1);
+    a->n = total;
+    free(all);
+    p->gathered = 1;
+    p->on = 0;      /* host sums over the whole set, as one process */
+    e->active = 0;  /* the device holds this rank's atoms: no sync into the whole set */
+}
+
+void par_gather_end(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->gathered)
+        return;
+    atoms_free_fields(&g->atoms);
+    g->atoms = p->local;
+    memset(&p->local, 0, sizeof p->local);
+    p->gathered = 0;
+    p->on = 1;
+    g->eng->active = 1;
 }

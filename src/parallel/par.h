@@ -37,6 +37,8 @@ struct par {
     int list_current;       /* the device's contacts index the current atoms */
     struct par_hist *hist;  /* contact history by tag pair across a rebuild or runs */
     uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
+    int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
+    struct atoms local;
 };
 
 /* `processors Px Py Pz`: the grid's counts (checked against the rank count
@@ -50,6 +52,8 @@ int par_on(const struct gravel *g);
 /* Ghost slots behind the owned atoms on the device (0 when not decomposed). */
 int par_nghost(const struct gravel *g);
 
+/* Stop a decomposed run: why (a style, a keyword) cannot run across ranks yet. */
+_Noreturn void par_refuse(struct gravel *g, const char *why);
 /* Run start, before the upload: refuse what cannot run across ranks yet,
  * choose the grid and keep the atoms of this rank's brick. */
 void par_run_begin(struct gravel *g);
@@ -63,6 +67,12 @@ void par_history_restore(struct gravel *g);
 void par_forward(struct gravel *g);
 /* Run end: every rank's host holds all atoms in tag order. */
 void par_run_end(struct gravel *g);
+/* Output steps of a decomposed run (dumps): every rank's atoms, all fields,
+ * in tag order in g->atoms, sums and syncs as one process, until
+ * par_gather_end restores this rank's own. No device work in between. */
+void par_gather_begin(struct gravel *g);
+void par_gather_end(struct gravel *g);
+
 /* A sum over the atoms of every rank in one process's order: terms added
  * with ascending keys (a tag, or 2 tag + k for several terms per atom) give
  * the bits of one process adding them in that order. On one rank the terms

@@ -6,7 +6,8 @@
 # thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
-# single precision; errors end every rank with one message (doc/parallel.md).
+# single precision, with its dumps (custom and vtk, sorted by ID: every
+# file byte-identical); errors end every rank with one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 serial="$root/bin/gravel"
@@ -76,6 +77,10 @@ compute         1 all erotate/sphere
 thermo_style    custom step atoms ke c_1 vol press pxy pyz epair pe etotal temp
 thermo_modify   norm no format float %.17g
 thermo          30
+dump            d1 all custom 40 d.*.txt id type x y z vx vy vz fx fy fz omegax tqz
+dump_modify     d1 sort id format float %.17g
+dump            d2 all vtk 60 v_*.vtk
+dump_modify     d2 sort id
 run             120
 run             60
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
@@ -83,14 +88,23 @@ IN
 
 rows() { grep -E '^ +[0-9]+ +-?[0-9]' "$1"; }
 # name, deck, ranks, extra gravel arguments, processors line (or empty)
+# the dumps of a run: every file the same bytes as the reference run's (ref/)
+dumps_same() {
+    for f in ref/*; do
+        [ -e "$f" ] || continue
+        cmp -s "$f" "$(basename "$f")" || return 1
+    done
+}
+keep_ref() { rm -rf ref; mkdir ref; mv d.*.txt v_*.vtk ref/ 2> /dev/null; }
 same() {
     if [ -n "$5" ]; then sed "s/^comm_modify/processors $5\ncomm_modify/" "$2" > p.in; else cp "$2" p.in; fi
+    rm -f d.*.txt v_*.vtk
     mpirun -np "$3" "$par" -in p.in -log none $4 > "$1.out" 2> "$1.err"; rc=$?
     mv final.dump "$1.dump" 2> /dev/null
-    check "$1" '[ $rc -eq 0 ] && [ -s ref.dump ] && cmp -s ref.dump "$1.dump" && [ "$(rows ref.out)" = "$(rows "$1.out")" ] && [ "$(rows ref.out | wc -l)" -ge 5 ]'
+    check "$1" '[ $rc -eq 0 ] && [ -s ref.dump ] && cmp -s ref.dump "$1.dump" && [ "$(rows ref.out)" = "$(rows "$1.out")" ] && [ "$(rows ref.out | wc -l)" -ge 5 ] && dumps_same'
 }
 
-"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump
+"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same gas_np1 gas.in 1 ""
 same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
@@ -98,10 +112,11 @@ same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
-"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump
+"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
 same chute_np4_z chute.in 4 "" "1 2 2"
-"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump
+"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
