@@ -451,6 +451,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
             f->style->init(g, f);
     }
     eng_fix_state(g, 1); /* fixes may have declared per-atom state in init */
+    par_fix_state_restore(g); /* several ranks: the state of the last run */
     box_init(g);
     nbr_setup(g);
     fused_setup(g);

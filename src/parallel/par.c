@@ -110,6 +110,9 @@ void par_free(struct gravel *g)
     free(p->sendidx);
     free(p->recvn);
     hist_free(p->hist);
+    for (int k = 0; k < p->nsaved; k++)
+        free(p->saved[k].state);
+    free(p->kept);
     free(p);
     g->par = NULL;
 }
@@ -147,9 +150,20 @@ static size_t raw_pos_bytes(const struct gravel *g)
     return g->eng->single ? 6 * g->eng->rsz : 0; /* x and xlo as the device has them */
 }
 
-static size_t record_bytes(const struct gravel *g)
+/* Device bytes an atom carries besides its field-table rows: its position
+ * bits (single precision), then each fix's per-atom state (fix.h). */
+static size_t extra_bytes(const struct gravel *g)
 {
     size_t b = raw_pos_bytes(g);
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->peratom)
+            b += g->styles.fix[i]->peratom_bytes;
+    return b;
+}
+
+static size_t record_bytes(const struct gravel *g)
+{
+    size_t b = extra_bytes(g);
 #define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
     if (life == FL_STATE)                                                                     \
         b += sizeof(ctype) * (width);
@@ -214,7 +228,8 @@ static size_t all_rows_bytes(void)
 /* Fix styles whose work is per owned atom with no state of their own
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
-                                        "viscous", "setforce", NULL};
+                                        "viscous", "setforce", "wall/gran",
+                                        "wall/gran/region", NULL};
 static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -274,6 +289,68 @@ void par_refuse(struct gravel *g, const char *why)
                     "it on one rank", why, comm_size());
 }
 
+static unsigned char *extra_move(struct gravel *g, int n, unsigned char *extra, int up);
+
+/* by tag: the first 8 bytes of a record */
+static int by_first_tag(const void *x, const void *y)
+{
+    int64_t a, b;
+    memcpy(&a, x, sizeof a);
+    memcpy(&b, y, sizeof b);
+    return (a > b) - (a < b);
+}
+
+/* ---- the fixes' per-atom state between runs ------------------------------------------ */
+
+/* At a run's end: each fix's per-atom state of every atom (tag order),
+ * from the gathered extra bytes (eb per atom, positions' bits first). */
+static void save_fix_state(struct gravel *g, const unsigned char *extra, int total, size_t eb)
+{
+    struct par *p = g->par;
+    for (int k = 0; k < p->nsaved; k++)
+        free(p->saved[k].state);
+    p->nsaved = 0;
+    size_t at = raw_pos_bytes(g);
+    for (int i = 0; i < g->styles.nfix && extra; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom)
+            continue;
+        if (p->nsaved == PAR_MAXSAVED)
+            gr_error(g, "more than %d fixes with per-atom state on several ranks", PAR_MAXSAVED);
+        struct par_saved *sv = &p->saved[p->nsaved++];
+        sv->fix = f;
+        sv->bytes = f->peratom_bytes;
+        sv->state = gr_malloc(g, (size_t)total * sv->bytes + 1);
+        for (int a = 0; a < total; a++)
+            memcpy(sv->state + (size_t)a * sv->bytes, extra + (size_t)a * eb + at, sv->bytes);
+        at += f->peratom_bytes;
+    }
+}
+
+void par_fix_state_restore(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->on || !p->kept)
+        return;
+    int n = g->atoms.n;
+    for (int k = 0; k < p->nsaved; k++) {
+        struct par_saved *sv = &p->saved[k];
+        struct fix *f = NULL;
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i] == sv->fix && sv->fix->peratom &&
+                sv->fix->peratom_bytes == sv->bytes)
+                f = sv->fix;
+        if (!f || n == 0)
+            continue;
+        unsigned char *buf = gr_malloc(g, (size_t)n * sv->bytes);
+        for (int a = 0; a < n; a++)
+            memcpy(buf + (size_t)a * sv->bytes, sv->state + (size_t)p->kept[a] * sv->bytes,
+                   sv->bytes);
+        eng_write(g, f->peratom, 0, (size_t)n * sv->bytes, buf);
+        free(buf);
+    }
+}
+
 /* ---- run start and end ---------------------------------------------------------- */
 
 static uint64_t tag_set_key(const struct atoms *a)
@@ -297,29 +374,24 @@ void par_run_begin(struct gravel *g)
     struct atoms *a = &g->atoms;
     /* the saved contact history belongs to these atoms only (as one rank
      * keeps its list only while the atoms are the same) */
-    if (p->hist && tag_set_key(a) != p->tags_at_end) {
+    int same = tag_set_key(a) == p->tags_at_end;
+    if (p->hist && !same) {
         hist_free(p->hist);
         p->hist = NULL;
     }
+    free(p->kept); /* the fixes' saved state: rows of the kept atoms */
+    p->kept = same && p->nsaved ? gr_malloc(g, ((size_t)a->n + 1) * sizeof(int)) : NULL;
     int me = comm_rank(), k = 0;
     for (int i = 0; i < a->n; i++)
         if (decomp_owner(g, &p->dc, a->x + 3 * (size_t)i) == me) {
             if (k != i)
                 atoms_copy(a, i, k);
+            if (p->kept)
+                p->kept[k] = i;
             k++;
         }
     a->n = k;
     gr_print(g, "Decomposition: %d x %d x %d MPI ranks\n", p->dc.p[0], p->dc.p[1], p->dc.p[2]);
-}
-
-static int by_tag(const void *x, const void *y, void *rb)
-{
-    size_t r = *(size_t *)rb;
-    int64_t a, b;
-    memcpy(&a, (const char *)x + r, sizeof a);
-    memcpy(&b, (const char *)y + r, sizeof b);
-    (void)r;
-    return (a > b) - (a < b);
 }
 
 /* The current contacts' history into *h by tag pair (the device's raw
@@ -401,22 +473,26 @@ void par_run_end(struct gravel *g)
         p->hist = h;
     }
     int n = a->n;
-    size_t rb = record_bytes(g) - raw_pos_bytes(g);
+    size_t eb = extra_bytes(g), rb = record_bytes(g);
+    unsigned char *extra = extra_move(g, n, NULL, 0); /* the fixes' per-atom state */
     unsigned char *mine = gr_malloc(g, (size_t)n * rb + 1), *all = NULL;
     for (int i = 0; i < n; i++)
-        pack_atom(a, i, NULL, 0, mine + (size_t)i * rb);
+        pack_atom(a, i, extra ? extra + (size_t)i * eb : NULL, eb, mine + (size_t)i * rb);
+    free(extra);
     size_t bytes = comm_allgatherv(mine, (size_t)n * rb, (void **)&all);
     free(mine);
     if (bytes == (size_t)-1)
         gr_error(g, "out of memory gathering the atoms of every rank");
     int total = (int)(bytes / rb);
-    size_t tag_at = 0; /* tag is the table's first field */
-    qsort_r(all, (size_t)total, rb, by_tag, &tag_at);
+    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
     atoms_reserve(g, total);
+    extra = eb ? gr_malloc(g, (size_t)total * eb + 1) : NULL;
     for (int i = 0; i < total; i++)
-        unpack_atom(a, i, all + (size_t)i * rb, NULL, 0);
+        unpack_atom(a, i, all + (size_t)i * rb, extra ? extra + (size_t)i * eb : NULL, eb);
     free(all);
     a->n = total;
+    save_fix_state(g, extra, total, eb);
+    free(extra);
     p->tags_at_end = tag_set_key(a);
     p->on = 0;
     p->nghost = 0;
@@ -477,24 +553,47 @@ static double gap(double x, double lo, double hi, double L, int periodic)
     return best;
 }
 
-/* raw device positions (x, then xlo: single precision) of atoms 0 .. n-1 */
-static unsigned char *raw_positions(struct gravel *g, int n)
+/* one device array's rows 0 .. n-1 (w bytes each) to or from column `at`
+ * of the extra bytes (stride eb) */
+static void extra_column(struct gravel *g, cl_mem m, int n, size_t w, unsigned char *extra,
+                         size_t eb, size_t at, int up)
+{
+    unsigned char *col = gr_malloc(g, (size_t)n * w + 1);
+    if (!up)
+        eng_read(g, m, 0, (size_t)n * w, col);
+    for (int i = 0; i < n; i++)
+        if (up)
+            memcpy(col + (size_t)i * w, extra + (size_t)i * eb + at, w);
+        else
+            memcpy(extra + (size_t)i * eb + at, col + (size_t)i * w, w);
+    if (up)
+        eng_write(g, m, 0, (size_t)n * w, col);
+    free(col);
+}
+
+/* The extra bytes of atoms 0 .. n-1 from the device (NULL when none), or
+ * back to it (up). */
+static unsigned char *extra_move(struct gravel *g, int n, unsigned char *extra, int up)
 {
     struct engine *e = g->eng;
-    size_t half = 3 * e->rsz, rb = raw_pos_bytes(g);
-    if (!rb || n == 0)
-        return NULL;
-    unsigned char *x = gr_malloc(g, (size_t)n * half), *lo = gr_malloc(g, (size_t)n * half);
-    unsigned char *raw = gr_malloc(g, (size_t)n * rb);
-    eng_read(g, e->a.x, 0, (size_t)n * half, x);
-    eng_read(g, e->a.xlo, 0, (size_t)n * half, lo);
-    for (int i = 0; i < n; i++) {
-        memcpy(raw + (size_t)i * rb, x + (size_t)i * half, half);
-        memcpy(raw + (size_t)i * rb + half, lo + (size_t)i * half, half);
+    size_t eb = extra_bytes(g), half = 3 * e->rsz, at = 0;
+    if (!eb || n == 0)
+        return extra;
+    if (!up)
+        extra = gr_malloc(g, (size_t)n * eb);
+    if (raw_pos_bytes(g)) {
+        extra_column(g, e->a.x, n, half, extra, eb, 0, up);
+        extra_column(g, e->a.xlo, n, half, extra, eb, half, up);
+        at = 2 * half;
     }
-    free(x);
-    free(lo);
-    return raw;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom)
+            continue;
+        extra_column(g, f->peratom, n, f->peratom_bytes, extra, eb, at, up);
+        at += f->peratom_bytes;
+    }
+    return extra;
 }
 
 static int cmp_i64(const void *x, const void *y)
@@ -543,8 +642,8 @@ void par_exchange(struct gravel *g, double cut)
     check_bricks(g, p, cut);
     run_sync_host(g);
     int n = a->n;
-    size_t rawb = raw_pos_bytes(g), rb = record_bytes(g);
-    unsigned char *raw = raw_positions(g, n);
+    size_t rawb = extra_bytes(g), rb = record_bytes(g);
+    unsigned char *raw = extra_move(g, n, NULL, 0); /* positions' bits, fixes' state */
     /* the history to carry: the current contacts', or the table saved at the
      * last run's end (the first build of a run) */
     struct par_hist *old = p->hist;
@@ -678,7 +777,8 @@ void par_exchange(struct gravel *g, double cut)
     free(in);
     /* 5. the device: owned, then ghosts */
     p->nghost = nghost;
-    eng_reload(g, nlocal, nghost, raw);
+    eng_reload(g, nlocal, nghost);
+    extra_move(g, nlocal + nghost, raw, 1);
     free(raw);
     p->list_current = 0;
 }
@@ -787,15 +887,6 @@ double par_sum_total(struct gravel *g, struct par_sum *s)
 }
 
 /* ---- every atom on every rank for an output step ------------------------------- */
-
-/* by tag: the first 8 bytes of a record */
-static int by_first_tag(const void *x, const void *y)
-{
-    int64_t a, b;
-    memcpy(&a, x, sizeof a);
-    memcpy(&b, y, sizeof b);
-    return (a > b) - (a < b);
-}
 
 void par_gather_begin(struct gravel *g)
 {

@@ -26,6 +26,15 @@
 #include "state.h"
 
 struct par_hist;
+struct fix;
+
+/* a fix's per-atom state of every atom at the last run's end (tag order) */
+struct par_saved {
+    struct fix *fix;
+    size_t bytes;           /* per atom */
+    unsigned char *state;
+};
+#define PAR_MAXSAVED 32
 
 struct par {
     struct decomp dc;
@@ -37,6 +46,9 @@ struct par {
     int list_current;       /* the device's contacts index the current atoms */
     struct par_hist *hist;  /* contact history by tag pair across a rebuild or runs */
     uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
+    struct par_saved saved[PAR_MAXSAVED];
+    int nsaved;
+    int *kept;              /* run start: the kept atoms' rows in the last run's end set */
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
     struct atoms local;
 };
@@ -57,6 +69,9 @@ _Noreturn void par_refuse(struct gravel *g, const char *why);
 /* Run start, before the upload: refuse what cannot run across ranks yet,
  * choose the grid and keep the atoms of this rank's brick. */
 void par_run_begin(struct gravel *g);
+/* Run start, after the fixes' init: their per-atom state as the last run
+ * left it, when the atoms are the same (as one process keeps it). */
+void par_fix_state_restore(struct gravel *g);
 /* A neighbor rebuild, after the periodic wrap: owned atoms to their ranks
  * with their contacts' history, ghosts chosen and everything uploaded
  * (owned, then ghosts). The ghost cut-off is cut. */

@@ -4,7 +4,8 @@
 # 17 digits) are bit-identical to bin/gravel on one process, across two runs
 # (contact history carried by tag pair through migrations and between runs;
 # thermo's sums, the pressure tensor included, in global tag order),
-# for a periodic gas crossing every face and corner of the bricks and the
+# for a periodic gas crossing every face and corner of the bricks, a gas
+# under gravity between plane and region walls (wall history), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); errors end every rank with one message (doc/parallel.md).
@@ -85,6 +86,38 @@ run             120
 run             60
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
+# walls: a plane pair and a region sphere with contact history (the fixes'
+# per-atom state moves with its atom and survives between runs), gravity
+cat > wall.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 12 0 12 0 12
+create_box      1 box
+region          fill block 0 12 0 12 1 11
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             2 all gravity 10.0 vector 0 0 -1
+fix             3 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 12.0
+region          ball sphere 6 6 6 2.0 side out
+region          core sphere 6 6 6 2.6
+delete_atoms    region core
+fix             4 all wall/gran/region hooke/history 200000.0 NULL 50.0 NULL 0.5 1 region ball
+timestep        0.0002
+thermo_modify   norm no format float %.17g
+thermo          100
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
 
 rows() { grep -E '^ +[0-9]+ +-?[0-9]' "$1"; }
 # name, deck, ranks, extra gravel arguments, processors line (or empty)
@@ -112,6 +145,10 @@ same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
+"$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same walls_np2 wall.in 2 ""
+same walls_np4_z wall.in 4 "" "1 2 2"
+
 "$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
@@ -120,9 +157,9 @@ same chute_np4_z chute.in 4 "" "1 2 2"
 same chute_single_np2 chute.in 2 "-precision single"
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/gran hooke\/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL/' chute.in > wall.in
-mpirun -np 2 "$par" -in wall.in -log none > wall.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" wall.out)" -eq 1 ] && grep -q "fix 4 (wall/gran)" wall.out'
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all ave\/time 10 1 10 c_thermo_temp file ave.txt/' chute.in > ave.in
+mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (ave/time)" ave.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
