@@ -190,6 +190,8 @@ struct dump;                /* dump.h */
 
 struct styles {
     struct pair *pair;      /* NULL until pair_style */
+    struct pair *surf;      /* pair_style hybrid's surface sub-style (surf/granular),
+                             * split off the particle laws; NULL: none */
     char *pair_cmds;        /* the pair_style and pair_coeff lines that made it
                              * (one per line; the accuracy map replays them) */
     int nfix, nfix_cap;

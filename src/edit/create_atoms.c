@@ -439,6 +439,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
             if (!mj.mol)
                 gr_error(g, "molecule template ID %.64s for create_atoms does not exist",
                          argv[i + 1]);
+            mol_require_atoms(g, mj.mol);
             molseed = arg_int(g, argv[i + 2], "molecule seed");
             if (molseed <= 0 || molseed > 900000000)
                 gr_error(g, "molecule seed must be in 1..900000000, got %s", argv[i + 2]);

@@ -430,6 +430,9 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
 {
     check_atoms(g);
     ocl_mem_reset_peak();
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->prepare)
+            g->styles.fix[i]->style->prepare(g, g->styles.fix[i]);
     eng_prepare(g);
     struct engine *e = g->eng;
     e->active = 0;

@@ -49,22 +49,32 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
  * as part of the style (LAMMPS's molecular sub-style; no bonds in granular
  * decks: a molecule template with bonds is refused where it is read).
  * atom_style granular is LIGGGHTS's name for sphere (no flag), with
- * LIGGGHTS's thermo kinetic energy. */
+ * LIGGGHTS's thermo kinetic energy. atom_style tri and a hybrid's tri
+ * sub-style (LAMMPS 4 Jul 2026: the triangle particles of fix
+ * surface/local) are sphere here: gravel's local triangles are mesh walls,
+ * not atoms. */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
     if (!strcmp(argv[0], "hybrid")) {
-        int sphere = 0, molecular = 0;
+        int sphere = 0, molecular = 0, tri = 0;
         for (int i = 1; i < argc; i++) {
             if (!strcmp(argv[i], "sphere") && !sphere)
                 sphere = 1;
             else if (!strcmp(argv[i], "molecular") && !molecular)
                 molecular = 1;
+            else if (!strcmp(argv[i], "tri") && !tri)
+                tri = 1;
             else
                 gr_error(g, "hybrid sub-style '%.32s' is not supported (gravel "
-                            "has hybrid sphere molecular)", argv[i]);
+                            "has hybrid sphere molecular and hybrid sphere tri)", argv[i]);
         }
-        if (!sphere || !molecular)
-            gr_error(g, "hybrid needs the sub-styles sphere and molecular");
+        if (!sphere || !(molecular || tri))
+            gr_error(g, "hybrid needs the sub-styles sphere and molecular (or tri)");
+        if (!molecular) { /* hybrid sphere tri: spheres */
+            g->atoms.style_molecular = 0;
+            g->atoms.molecule_flag = 0;
+            return;
+        }
         g->atoms.style_molecular = 1;
         g->atoms.molecule_flag = 1;
         return;
@@ -86,9 +96,14 @@ void cmd_atom_style(struct gravel *g, int argc, char **argv)
             gr_error(g, "atom_style granular takes no arguments, got '%.32s'", argv[1]);
         return;
     }
+    if (!strcmp(argv[0], "tri")) {
+        if (argc > 1)
+            gr_error(g, "atom_style tri takes no arguments, got '%.32s'", argv[1]);
+        return;
+    }
     if (strcmp(argv[0], "sphere") != 0)
         gr_error(g, "atom_style '%.32s' is not supported: gravel has atom_style sphere (LIGGGHTS: "
-                    "granular) and hybrid sphere molecular",
+                    "granular), tri (as sphere) and hybrid sphere molecular",
                  argv[0]);
     if (argc > 2)
         gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");

@@ -24,6 +24,12 @@ struct molecule *molecule_find(struct gravel *g, const char *id)
     return NULL;
 }
 
+void mol_require_atoms(struct gravel *g, const struct molecule *m)
+{
+    if (m->natoms < 1)
+        gr_error(g, "molecule template %s has no atoms (only surface triangles)", m->id);
+}
+
 static void mol_free(struct molecule *m)
 {
     if (!m)
@@ -33,6 +39,10 @@ static void mol_free(struct molecule *m)
     free(m->radius);
     free(m->rmass);
     free(m->molecule);
+    free(m->points);
+    free(m->tri);
+    free(m->tri_mol);
+    free(m->tri_type);
     free(m->dx);
     free(m->dxcom);
     free(m->dxbody);
@@ -59,7 +69,7 @@ struct reader {
     size_t cap;
     int line;
     int *seen;              /* section(): how often each atom appeared */
-    double *tmp;            /* one value per atom (Types, Molecules) */
+    double *tmp;            /* one value per atom (Types, Molecules), 5 per triangle */
 };
 
 static void reader_close(struct reader *r)
@@ -142,40 +152,65 @@ static int inum(struct gravel *g, const struct reader *r, const char *s)
     return (int)v;
 }
 
-/* One per-atom section: natoms lines "index values..." (nval values). */
-static void section(struct gravel *g, struct reader *r, struct molecule *m, const char *name,
-                    int nval, double *out)
+/* One section of n entries (atoms, points or triangles: `noun`), one line
+ * each: "index values..." (nval values), every index 1..n once. */
+static void section(struct gravel *g, struct reader *r, int n, const char *noun,
+                    const char *name, int nval, double *out)
 {
     free(r->seen);
     r->seen = NULL;
-    int *seen = r->seen = gr_calloc(g, (size_t)m->natoms, sizeof(int));
-    for (int k = 0; k < m->natoms; k++) {
+    int *seen = r->seen = gr_calloc(g, (size_t)n, sizeof(int));
+    for (int k = 0; k < n; k++) {
         char *s;
         do
             s = next_line(g, r);
         while (s && !*s);
         if (!s)
-            gr_error(g, "molecule file '%s': %s section ends after %d of %d atoms", r->path,
-                     name, k, m->natoms);
+            gr_error(g, "molecule file '%s': %s section ends after %d of %d %ss", r->path,
+                     name, k, n, noun);
         char *w[8];
-        int n = split(s, w, 8);
-        if (n != nval + 1)
-            gr_error(g, "molecule file '%s' line %d: %s needs an atom index and %d value%s",
-                     r->path, r->line, name, nval, nval > 1 ? "s" : "");
+        int nw = split(s, w, 8);
+        if (nw != nval + 1)
+            gr_error(g, "molecule file '%s' line %d: %s needs an %s index and %d value%s",
+                     r->path, r->line, name, noun, nval, nval > 1 ? "s" : "");
         int i = inum(g, r, w[0]) - 1;
-        if (i < 0 || i >= m->natoms)
-            gr_error(g, "molecule file '%s' line %d: invalid atom index %s in %s", r->path,
-                     r->line, w[0], name);
+        if (i < 0 || i >= n)
+            gr_error(g, "molecule file '%s' line %d: invalid %s index %s in %s", r->path,
+                     r->line, noun, w[0], name);
         seen[i]++;
         for (int q = 0; q < nval; q++)
             out[(size_t)nval * i + q] = num(g, r, w[1 + q]);
     }
-    for (int i = 0; i < m->natoms; i++)
+    for (int i = 0; i < n; i++)
         if (seen[i] != 1)
-            gr_error(g, "molecule file '%s': atom %d appears %d times in %s", r->path, i + 1,
+            gr_error(g, "molecule file '%s': %s %d appears %d times in %s", r->path, noun, i + 1,
                      seen[i], name);
     free(r->seen);
     r->seen = NULL;
+}
+
+/* The Triangles section read as numbers (tri: 5 per triangle, mol type p1 p2
+ * p3) into m's triangle arrays, checked: whole IDs and types >= 1, corner
+ * indices 1..npoints. */
+static void triangles(struct gravel *g, struct reader *r, struct molecule *m, const double *tri)
+{
+    m->tri = gr_calloc(g, 3 * (size_t)m->ntris, sizeof(int));
+    m->tri_mol = gr_calloc(g, (size_t)m->ntris, sizeof(int));
+    m->tri_type = gr_calloc(g, (size_t)m->ntris, sizeof(int));
+    for (int t = 0; t < m->ntris; t++) {
+        const double *v = tri + 5 * (size_t)t;
+        if (!whole_in(v[0], 2147483647.0) || !whole_in(v[1], 2147483647.0))
+            gr_error(g, "molecule file '%s': triangle %d has molecule ID %g and type %g "
+                        "(whole numbers >= 1)", r->path, t + 1, v[0], v[1]);
+        m->tri_mol[t] = (int)v[0];
+        m->tri_type[t] = (int)v[1];
+        for (int k = 0; k < 3; k++) {
+            if (!whole_in(v[2 + k], m->npoints))
+                gr_error(g, "molecule file '%s': triangle %d corner %d is point %g (1..%d)",
+                         r->path, t + 1, k + 1, v[2 + k], m->npoints);
+            m->tri[3 * t + k] = (int)v[2 + k] - 1;
+        }
+    }
 }
 
 /* The file's contents after the open (read_file); every error unwinds
@@ -202,6 +237,14 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
             break; /* a section name */
         if (!strcmp(kw, "atoms") && n == 2) {
             m->natoms = inum(g, r, w[0]);
+        } else if (!strcmp(kw, "points") && n == 2) {
+            m->npoints = inum(g, r, w[0]);
+        } else if (!strcmp(kw, "triangles") && n == 2) {
+            m->ntris = inum(g, r, w[0]);
+        } else if (!strcmp(kw, "lines") && n == 2) {
+            if (inum(g, r, w[0]) != 0)
+                gr_error(g, "molecule file '%s' line %d: line segments (2d granular surfaces) "
+                            "are not supported (3d triangles are)", path, r->line);
         } else if (!strcmp(kw, "mass") && n == 2) {
             m->massflag = 1;
             m->masstotal = scaled(g, path, num(g, r, w[0]), scale * scale * scale, "mass");
@@ -229,13 +272,17 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
                      s);
         }
     }
-    if (m->natoms < 1)
+    if (m->natoms < 0 || m->npoints < 0 || m->ntris < 0 || (m->ntris > 0) != (m->npoints > 0))
+        gr_error(g, "molecule file '%s': invalid atom, point or triangle count (triangles "
+                    "need points)", path);
+    if (m->natoms < 1 && m->ntris < 1)
         gr_error(g, "molecule file '%s': no atoms or invalid atom count", path);
     int nat = m->natoms;
-    m->x = gr_calloc(g, 3 * (size_t)nat, sizeof(double));
-    m->type = gr_calloc(g, (size_t)nat, sizeof(int));
-    int have_x = 0, have_type = 0;
-    double *tmp = r->tmp = gr_calloc(g, (size_t)nat, sizeof(double));
+    m->x = gr_calloc(g, 3 * (size_t)(nat ? nat : 1), sizeof(double));
+    m->type = gr_calloc(g, (size_t)(nat ? nat : 1), sizeof(int));
+    int have_x = 0, have_type = 0, have_tri = 0;
+    size_t ntmp = (size_t)nat > 5 * (size_t)m->ntris ? (size_t)nat : 5 * (size_t)m->ntris;
+    double *tmp = r->tmp = gr_calloc(g, ntmp ? ntmp : 1, sizeof(double));
     while (s) {
         if (!*s) {
             s = next_line(g, r);
@@ -246,15 +293,16 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
         /* each section once (a second Diameters section leaked the first) */
         if ((!strcmp(name, "Coords") && have_x) || (!strcmp(name, "Types") && have_type) ||
             (!strcmp(name, "Diameters") && m->radius) || (!strcmp(name, "Masses") && m->rmass) ||
-            (!strcmp(name, "Molecules") && m->molecule))
+            (!strcmp(name, "Molecules") && m->molecule) || (!strcmp(name, "Points") && m->points) ||
+            (!strcmp(name, "Triangles") && have_tri))
             gr_error(g, "molecule file '%s' line %d: a second %s section", path, r->line, name);
         if (!strcmp(name, "Coords")) {
-            section(g, r, m, name, 3, m->x);
+            section(g, r, nat, "atom", name, 3, m->x);
             for (int i = 0; i < 3 * nat; i++)
                 m->x[i] = scaled(g, path, m->x[i], scale, "coordinate");
             have_x = 1;
         } else if (!strcmp(name, "Types")) {
-            section(g, r, m, name, 1, tmp);
+            section(g, r, nat, "atom", name, 1, tmp);
             for (int i = 0; i < nat; i++) {
                 /* in double: a type plus an offset near INT_MAX must not overflow */
                 double t = tmp[i] + toff;
@@ -271,7 +319,7 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
             free(m->radius);
             m->radius = NULL;
             m->radius = gr_calloc(g, (size_t)nat, sizeof(double));
-            section(g, r, m, name, 1, m->radius);
+            section(g, r, nat, "atom", name, 1, m->radius);
             for (int i = 0; i < nat; i++) {
                 if (m->radius[i] < 0)
                     gr_error(g, "molecule file '%s': invalid diameter %g", path,
@@ -282,7 +330,7 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
             free(m->rmass);
             m->rmass = NULL;
             m->rmass = gr_calloc(g, (size_t)nat, sizeof(double));
-            section(g, r, m, name, 1, m->rmass);
+            section(g, r, nat, "atom", name, 1, m->rmass);
             for (int i = 0; i < nat; i++) {
                 if (m->rmass[i] <= 0)
                     gr_error(g, "molecule file '%s': invalid mass %g", path, m->rmass[i]);
@@ -295,7 +343,7 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
             free(m->molecule);
             m->molecule = NULL;
             m->molecule = gr_calloc(g, (size_t)nat, sizeof(int64_t));
-            section(g, r, m, name, 1, tmp);
+            section(g, r, nat, "atom", name, 1, tmp);
             int64_t mx = 0;
             for (int i = 0; i < nat; i++) {
                 if (!whole_in(tmp[i], 2147483647.0))
@@ -305,14 +353,28 @@ static void read_body(struct gravel *g, struct molecule *m, struct reader *r, do
                 mx = m->molecule[i] > mx ? m->molecule[i] : mx;
             }
             m->nmolecules = (int)mx;
+        } else if (!strcmp(name, "Points") && m->npoints > 0) {
+            m->points = gr_calloc(g, 3 * (size_t)m->npoints, sizeof(double));
+            section(g, r, m->npoints, "point", name, 3, m->points);
+            for (int i = 0; i < 3 * m->npoints; i++)
+                m->points[i] = scaled(g, path, m->points[i], scale, "point coordinate");
+        } else if (!strcmp(name, "Triangles") && m->ntris > 0) {
+            section(g, r, m->ntris, "triangle", name, 5, tmp);
+            have_tri = 1;
         } else {
             gr_error(g, "molecule file '%s' line %d: unsupported section '%.40s' (gravel reads "
-                        "Coords, Types, Molecules, Diameters, Masses)", path, r->line, name);
+                        "Coords, Types, Molecules, Diameters, Masses, Points, Triangles)", path,
+                     r->line, name);
         }
         s = next_line(g, r);
     }
-    if (!have_x || !have_type)
+    if (nat > 0 && (!have_x || !have_type))
         gr_error(g, "molecule file '%s' needs Coords and Types sections", path);
+    if (m->ntris > 0) {
+        if (!m->points || !have_tri)
+            gr_error(g, "molecule file '%s' needs Points and Triangles sections", path);
+        triangles(g, r, m, tmp); /* after Points: the corner indices are checked */
+    }
     if (!m->molecule)
         m->nmolecules = 1;
 }
@@ -406,8 +468,14 @@ void cmd_molecule(struct gravel *g, int argc, char **argv)
             if (m->x[3 * i + 2] != 0.0)
                 gr_error(g, "molecule file '%s': z coord of atom %d must be 0.0 for 2d",
                          argv[1], i + 1);
+    if (m->ntris) { /* LAMMPS counts the surface molecules */
+        for (int t = 0; t < m->ntris; t++)
+            m->nmolecules = m->tri_mol[t] > m->nmolecules ? m->tri_mol[t] : m->nmolecules;
+    }
     gr_print(g, "Read molecule template %s:\n  %d molecules\n  %d atoms with max type %d\n",
              m->id, m->nmolecules, m->natoms, m->ntypes);
+    if (m->ntris)
+        gr_print(g, "  %d triangles\n", m->ntris);
 }
 
 /* ---- derived quantities (LAMMPS Molecule::compute_*) -------------------------- */

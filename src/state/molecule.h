@@ -9,7 +9,11 @@
  * (mol_compute_center, _mass, _com, _inertia); header values of the file
  * (`mass`, `com`, `inertia`) take precedence over the atoms' values, as in
  * LAMMPS. Bonds, angles, charges, special lists and shake info have no
- * meaning for granular spheres: a file with them is an error. */
+ * meaning for granular spheres: a file with them is an error. A template
+ * may also (or only) hold granular surface triangles, LAMMPS 4 Jul 2026's
+ * `N points` / `N triangles` headers and Points ("ID x y z") and Triangles
+ * ("ID mol type p1 p2 p3") sections, read by fix surface/global and
+ * surface/local. */
 #ifndef GR_MOLECULE_H
 #define GR_MOLECULE_H
 
@@ -25,6 +29,10 @@ struct molecule {
     int64_t *molecule;      /* per atom molecule IDs (Molecules section), or NULL */
     int nmolecules;         /* distinct IDs of the Molecules section (1 without) */
     int ntypes;             /* largest type of the template */
+    int npoints, ntris;     /* surface triangles (0: none) */
+    double *points;         /* 3 per point (scaled) */
+    int *tri;               /* 3 corner point indices (0-based) per triangle */
+    int *tri_mol, *tri_type; /* per triangle: surface molecule ID and type (>= 1) */
     /* header values */
     int massflag, comflag, inertiaflag;
     double masstotal, com[3], itensor[6]; /* itensor: xx yy zz xy xz yz (file order) */
@@ -44,6 +52,8 @@ struct molecule {
 void cmd_molecule(struct gravel *g, int argc, char **argv);
 /* The template with this ID, or NULL. */
 struct molecule *molecule_find(struct gravel *g, const char *id);
+/* An error when template m has no atoms (a surface-only one). */
+void mol_require_atoms(struct gravel *g, const struct molecule *m);
 void molecules_free(struct gravel *g);
 
 /* LAMMPS Molecule::compute_center / compute_mass / compute_com /

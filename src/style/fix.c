@@ -186,9 +186,6 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
     for (int i = 0; fix_styles[i]; i++)
         if (!strcmp(fix_styles[i]->name, argv[2]))
             st = fix_styles[i];
-    if (!st && !strcmp(argv[2], "surface/local"))
-        gr_error(g, "fix surface/local (LAMMPS 2026 local granular surfaces) is not supported "
-                    "by gravel; global surfaces: fix surface/global");
     if (!st) {
         char known[512] = "";
         for (int i = 0; fix_styles[i]; i++) {

@@ -11,6 +11,9 @@
  *              (kernel files the run program must include) and f->defines
  *              (extra build options, without the leading "-D "). May not
  *              touch the device.
+ *   prepare()  optional, at every `run` before the program is assembled:
+ *              settle what the fix takes from commands given after it
+ *              (fix surface/local makes its wall here, from pair_coeff).
  *   init()     at every `run`, after the program is built, the atoms are on
  *              the device and the pair parameters are packed and uploaded
  *              (g->eng->pair_param, the pair style's record
@@ -101,6 +104,11 @@ struct fix_style {
     unsigned flags;             /* FIX_* (above) */
     void (*create)(struct gravel *g, struct fix *f, int argc, char **argv);
     void (*init)(struct gravel *g, struct fix *f);                 /* optional */
+    /* optional: at every `run`, before the program is assembled (before
+     * init and before f->hooks, f->needs, f->sources are read): a fix
+     * settles what it takes from commands given after it (fix
+     * surface/local: its wall's model from pair_coeff ... surf/granular). */
+    void (*prepare)(struct gravel *g, struct fix *f);
     void (*initial_integrate)(struct gravel *g, struct fix *f);
     void (*post_force)(struct gravel *g, struct fix *f);
     void (*final_integrate)(struct gravel *g, struct fix *f);

@@ -28,12 +28,21 @@ static const struct pair_style *const pair_styles[] = {
 #undef DUMP
 #undef REGION
 
+static void surf_free(struct gravel *g)
+{
+    if (g->styles.surf)
+        pair_release(g->styles.surf);
+    free(g->styles.surf);
+    g->styles.surf = NULL;
+}
+
 void pair_free(struct gravel *g)
 {
     if (g->styles.pair)
         pair_release(g->styles.pair);
     free(g->styles.pair);
     g->styles.pair = NULL;
+    surf_free(g);
     free(g->styles.pair_cmds);
     g->styles.pair_cmds = NULL;
 }
@@ -91,6 +100,9 @@ void pair_release(struct pair *p)
     free(p->setflag);
     p->setflag = NULL;
     p->setflag_nt = 0;
+    free(p->none);
+    p->none = NULL;
+    p->none_nt = 0;
     if (p->data && p->style && p->style->destroy)
         p->style->destroy(p);
     else
@@ -106,6 +118,50 @@ void pair_create(struct gravel *g, struct pair *p, const struct pair_style *st, 
     st->settings(g, p, argc, argv);
 }
 
+/* pair_style hybrid ... SURF args ...: the surface sub-style (style->surface,
+ * LAMMPS 4 Jul 2026's surf/granular) goes to g->styles.surf; out gets the
+ * rest of the line: `hybrid` and the particle laws, or the one law alone
+ * (out[0] its name) when only one is left. Returns the words in out, 0
+ * when the line names no surface sub-style. */
+static int split_surface(struct gravel *g, const struct pair_style *hy, int argc, char **argv,
+                         char **out)
+{
+    int n = 0, nlaw = 0, law = -1, surf = -1, send = -1;
+    for (int i = 1; i < argc; i++) {
+        const struct pair_style *t = pair_style_find(argv[i]);
+        if (!t)
+            continue;
+        if (t->surface) {
+            if (surf >= 0)
+                gr_error(g, "pair_style %s: one surface sub-style at most (%s given twice)",
+                         hy->name, t->name);
+            surf = i;
+            for (send = i + 1; send < argc && !pair_style_find(argv[send]); send++)
+                ;
+        } else {
+            nlaw++;
+            law = law < 0 ? i : law;
+        }
+    }
+    if (surf < 0)
+        return 0;
+    if (strcmp(hy->name, "hybrid"))
+        gr_error(g, "pair_style %s: %s is a sub-style of pair_style hybrid", hy->name,
+                 argv[surf]);
+    if (!nlaw)
+        gr_error(g, "pair_style hybrid %s needs a particle law beside it (LAMMPS: pair_style "
+                    "hybrid granular %s)", argv[surf], argv[surf]);
+    surf_free(g);
+    struct pair *sp = g->styles.surf = gr_calloc(g, 1, sizeof *sp); /* freed with g on error */
+    pair_create(g, sp, pair_style_find(argv[surf]), send - surf - 1, argv + surf + 1);
+    if (nlaw > 1)
+        out[n++] = argv[0];
+    for (int i = nlaw > 1 ? 1 : law; i < argc; i++)
+        if (i < surf || i >= send)
+            out[n++] = argv[i];
+    return n;
+}
+
 /* pair_style style args... */
 void cmd_pair_style(struct gravel *g, int argc, char **argv)
 {
@@ -116,9 +172,25 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
         pair_free(g);
         return;
     }
-    if (!st && !strcmp(argv[0], "surf/granular"))
-        gr_error(g, "pair_style surf/granular (LAMMPS 2026 local granular surfaces) is not "
-                    "supported by gravel; global surfaces: fix surface/global");
+    if (st && st->surface)
+        gr_error(g, "pair_style %s acts only as a sub-style of pair_style hybrid (LAMMPS: "
+                    "pair_style hybrid granular %s)", st->name, st->name);
+    int one = 0, split = 0, argc0 = argc;
+    char **argv0 = argv, *fa[256];
+    if (st && st->terms) {
+        if (argc > (int)(sizeof fa / sizeof *fa))
+            gr_error(g, "pair_style %s: more than %d words", st->name,
+                     (int)(sizeof fa / sizeof *fa));
+        split = split_surface(g, st, argc, argv, fa);
+        if (split) {
+            argc = split;
+            argv = fa;
+            st = pair_style_find(argv[0]);
+            one = !st->terms;
+        }
+    }
+    if (!split)
+        surf_free(g); /* a pair_style without surf/granular drops its models */
     if (!st) {
         char known[512] = "";
         for (int i = 0; pair_styles[i]; i++) {
@@ -129,7 +201,8 @@ void cmd_pair_style(struct gravel *g, int argc, char **argv)
     }
     struct pair tmp;
     pair_create(g, &tmp, st, argc - 1, argv + 1);
-    record_style(g, argc, argv, g->styles.pair && g->styles.pair->style == st && !st->terms);
+    tmp.one_of_hybrid = one;
+    record_style(g, argc0, argv0, g->styles.pair && g->styles.pair->style == st && !st->terms);
     /* LAMMPS: redefining the same style keeps the coefficients (per-type
      * tables in data included; hybrid/overlay starts afresh) */
     if (g->styles.pair && g->styles.pair->style == st && !st->terms) {
@@ -184,6 +257,21 @@ static void mark_pair(int i, int j, void *vctx)
     c->f[(size_t)(j - 1) * c->nt + (i - 1)] = 1;
 }
 
+/* set the pairs of the ranges (and mirrors) in the nt x nt table *tab of
+ * *tnt types, (re)made for the box's types */
+static void mark_pairs(struct gravel *g, unsigned char **tab, int *tnt, int ilo, int ihi,
+                       int jlo, int jhi)
+{
+    int nt = g->atoms.ntypes;
+    if (!*tab || *tnt != nt) {
+        free(*tab);
+        *tab = gr_calloc(g, (size_t)nt * nt, 1);
+        *tnt = nt;
+    }
+    struct flagctx c = {*tab, nt};
+    pair_coeff_each(ilo, ihi, jlo, jhi, mark_pair, &c);
+}
+
 /* pair_coeff I J [args]: LAMMPS's type ranges (N, *, N*, *N, M*N). As in
  * LAMMPS, two plain numbers with J < I are swapped; otherwise the pairs set
  * are I in the first range and J >= I in the second (`pair_coeff * 2` with 3
@@ -206,6 +294,29 @@ void cmd_pair_coeff(struct gravel *g, int argc, char **argv)
     if (pair_coeff_each(ilo, ihi, jlo, jhi, NULL, NULL) == 0)
         gr_error(g, "pair_coeff %s %s names no type pair I <= J (LAMMPS sets J >= I only; "
                     "write the lower types first)", argv[0], argv[1]);
+    struct pair *sp = g->styles.surf;
+    if (sp && argc > 2 && !strcmp(argv[2], sp->style->name)) {
+        sp->style->coeff(g, sp, ilo, ihi, jlo, jhi, argc - 3, argv + 3);
+        sp->coeff_set = 1;
+        return;
+    }
+    if (p->one_of_hybrid) { /* pair_coeff I J LAW args | none */
+        if (argc > 2 && !strcmp(argv[2], "none")) {
+            if (argc > 3)
+                gr_error(g, "pair_coeff ... none takes no further arguments, got '%.64s'",
+                         argv[3]);
+            mark_pairs(g, &p->none, &p->none_nt, ilo, ihi, jlo, jhi);
+            return;
+        }
+        if (argc < 3 || strcmp(argv[2], p->style->name))
+            gr_error(g, "pair_coeff of this pair_style hybrid expects a sub-style after the "
+                        "types (%s, %s or none), got '%.64s'", p->style->name,
+                     sp ? sp->style->name : "", argc > 2 ? argv[2] : "");
+        argv[2] = argv[1]; /* drop the sub-style's name */
+        argv[1] = argv[0];
+        argv++;
+        argc--;
+    }
     if (p->style->coeff) {
         p->style->coeff(g, p, ilo, ihi, jlo, jhi, argc - 2, argv + 2);
         return;
@@ -214,13 +325,7 @@ void cmd_pair_coeff(struct gravel *g, int argc, char **argv)
         gr_error(g, "pair style %s takes no coefficients after the two types, got '%.64s' "
                     "(its parameters are the pair_style arguments)",
                  p->style->name, argv[2]);
-    if (!p->setflag || p->setflag_nt != nt) {
-        free(p->setflag);
-        p->setflag = gr_calloc(g, (size_t)nt * nt, 1);
-        p->setflag_nt = nt;
-    }
-    struct flagctx c = {p->setflag, nt};
-    pair_coeff_each(ilo, ihi, jlo, jhi, mark_pair, &c);
+    mark_pairs(g, &p->setflag, &p->setflag_nt, ilo, ihi, jlo, jhi);
     p->coeff_set = 1;
 }
 
@@ -373,18 +478,51 @@ void pair_describe(const struct pair *p, struct pair_caps *c)
     p->style->describe(p, c);
 }
 
+int pair_type_absent(const struct pair *p, int t)
+{
+    int nt = p->none_nt;
+    return p->one_of_hybrid && p->none && t >= 1 && t <= nt &&
+           p->none[(size_t)(t - 1) * nt + (t - 1)];
+}
+
+/* one law of pair_style hybrid: `none` only for absent types (I I none),
+ * which no atom may have */
+static void check_absent(struct gravel *g, struct pair *p)
+{
+    int nt = p->none_nt;
+    for (int i = 1; i <= nt; i++)
+        for (int j = i + 1; j <= nt; j++)
+            if (p->none[(size_t)(i - 1) * nt + (j - 1)] && !pair_type_absent(p, i) &&
+                !pair_type_absent(p, j))
+                gr_error(g, "pair_coeff %d %d none: gravel's pair_style hybrid with one "
+                            "particle law switches off only types no particle has (pair_coeff "
+                            "%d %d none, %d %d none: fix surface/local's surface types)",
+                         i, j, i, i, j, j);
+    for (int k = 0; k < g->atoms.n; k++)
+        if (pair_type_absent(p, g->atoms.type[k]))
+            gr_error(g, "atom %lld has type %d, which pair_coeff %d %d none leaves without a "
+                        "particle law (gravel: such types are fix surface/local's surfaces, "
+                        "not particles)", (long long)g->atoms.tag[k], g->atoms.type[k],
+                     g->atoms.type[k], g->atoms.type[k]);
+}
+
 void pair_setup(struct gravel *g)
 {
     struct pair *p = g->styles.pair;
     if (!p)
         return;
+    if (p->one_of_hybrid)
+        check_absent(g, p);
     /* LAMMPS Pair::init: every I I must have been named by a pair_coeff
      * (cross pairs of these styles share the pair_style parameters) */
     if (!p->style->coeff && p->setflag) {
-        int nt = g->atoms.ntypes, i = pair_first_unset_diag(p->setflag, p->setflag_nt);
+        int nt = g->atoms.ntypes, i = 0;
         if (p->setflag_nt != nt)
             gr_error(g, "pair style %s: pair_coeff was given for %d atom types, the box has "
                         "%d: re-issue pair_coeff", p->style->name, p->setflag_nt, nt);
+        for (int t = 1; t <= nt && !i; t++)
+            if (!p->setflag[(size_t)(t - 1) * nt + (t - 1)] && !pair_type_absent(p, t))
+                i = t;
         if (i)
             gr_error(g, "all pair coeffs are not set: no pair_coeff for types %d %d of pair "
                         "style %s (e.g. pair_coeff * *)", i, i, p->style->name);

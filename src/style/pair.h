@@ -169,6 +169,11 @@ struct pair_style {
     /* hybrid, hybrid/overlay: the composed terms (pair_modify pair SUBSTYLE);
      * NULL for a single law. */
     int (*terms)(const struct pair *p, const struct pair **terms);
+    /* 1: a surface sub-style of pair_style hybrid (LAMMPS 4 Jul 2026's
+     * surf/granular): its pair_coeff gives the models of particle/surface
+     * type pairs, which fix surface/local reads (g->styles.surf); never in
+     * the pair loop. */
+    int surface;
     /* Release p->data. */
     void (*destroy)(struct pair *p);
 };
@@ -184,10 +189,20 @@ struct pair {
     int mix_arithmetic;         /* pair_modify mix arithmetic (styles that mix) */
     int shift;                  /* pair_modify shift yes (styles with an energy) */
     void *data;                 /* style-owned (per-type tables, composed terms) */
+    /* `pair_style hybrid LAW args surf/granular`: the one law stands alone
+     * (one_of_hybrid); its pair_coeff lines name it after the types (pair_coeff
+     * 1 1 LAW ...), and `pair_coeff I I none` marks type I absent: no particle
+     * may have it (fix surface/local's surface types), its pairs are not set */
+    int one_of_hybrid;
+    unsigned char *none;        /* nt x nt: pair_coeff I J none (one_of_hybrid) */
+    int none_nt;
     struct pair_caps caps;      /* pair_setup(): the run's capabilities record */
 };
 
 void pair_free(struct gravel *g);
+/* 1 when type t is absent from pair p (one_of_hybrid with pair_coeff t t none):
+ * its pairs need no coefficients (run start checks that no atom has it). */
+int pair_type_absent(const struct pair *p, int t);
 /* The registered style with this name, or NULL (restart.c). */
 const struct pair_style *pair_style_find(const char *name);
 

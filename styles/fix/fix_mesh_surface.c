@@ -161,6 +161,8 @@ void mesh_surface_free(struct mesh_surface *ms)
     mesh_free(&ms->m);
     free(ms->normal);
     ms->normal = NULL;
+    free(ms->model);
+    ms->model = NULL;
     if (ms->fmesh)
         clReleaseMemObject(ms->fmesh);
     ms->fmesh = NULL;

@@ -41,9 +41,11 @@ struct mesh_surface {
     const struct fix *owner;    /* the wall fix that fills fmesh (mesh_surface_claim) */
     bigint cache_step;          /* step of cache[] */
     double cache[7];
-    /* fix surface/global: the mesh's molecule ID and its own motions (from
+    /* fix surface/global: the mesh's molecule ID, the fix's largest surface
+     * type and molecule ID (smaxtype, smaxmol), its own motions (from
      * fix_modify ID move), composed before any fix move/mesh */
-    int mol;
+    int mol, smaxtype, smaxmol;
+    char *model;                /* fix surface/local: the model words its wall was made of */
     int nmotion;
     struct mesh_motion motion[MESH_OWN_MOTIONS];
 };

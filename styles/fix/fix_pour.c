@@ -260,6 +260,7 @@ static void parse_options(struct gravel *g, struct pour *p, int argc, char **arg
             if (!p->mol)
                 gr_error(g, "molecule template ID %.64s for fix pour does not exist",
                          argv[i + 1]);
+            mol_require_atoms(g, p->mol);
             i += 2;
         } else if (!strcmp(k, "molfrac")) {
             /* one molecule per template here: molfrac 1.0 */

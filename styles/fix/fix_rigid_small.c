@@ -280,6 +280,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             if (!r->mol)
                 gr_error(g, "molecule template ID %.64s for fix rigid/small does not exist",
                          argv[i]);
+            mol_require_atoms(g, r->mol);
         } else if (!strcmp(k, "gravity")) {
             arg_need(g, argc, i, 1, k);
             snprintf(r->gravity_id, sizeof r->gravity_id, "%s", argv[++i]);

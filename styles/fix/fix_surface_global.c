@@ -9,7 +9,8 @@
  *
  *   input stl stype smol FILE   triangles of an STL file (ASCII or binary),
  *                               surface type stype, molecule ID smol; repeatable
- *   input mol ID                refused: gravel's molecule files hold atoms only
+ *   input mol ID                the triangles of a molecule template (Points,
+ *                               Triangles: their own types and molecule IDs)
  *   model ptype stype fstyle args   fstyle hooke | hooke/history | hertz/history
  *                               Kn Kt gamma_n gamma_t xmu dampflag, or granular
  *                               <pair granular's pair_coeff sub-models>; ptype and
@@ -31,19 +32,26 @@
  * T | rotate Px Py Pz Rx Ry Rz T | transrot Vx Vy Vz Px Py Pz Rx Ry Rz T`
  * moves the molecules smol (LAMMPS comma/asterisk list) from where they
  * stand, timed from that command (fix move's formulas, exact at every step:
- * fix_mesh_surface.c composes the pose). Refused: 2d line surfaces, `input
- * mol`, `move variable`, fix_modify type/region and mol/region, JKR (LAMMPS
- * refuses it too), more than MESH_WALLS_MAX molecule IDs. No restart state
+ * fix_mesh_surface.c composes the pose). `fix_modify ID type/region stype
+ * REGION` and `mol/region smol REGION` (LAMMPS 4 Jul 2026) set the type or
+ * molecule ID of the triangles whose centroid is in REGION (region_assign).
+ * Refused: 2d line surfaces, `move
+ * variable`, mol/region after a run or a move, JKR (LAMMPS refuses it too),
+ * more than MESH_WALLS_MAX molecule IDs. No restart state
  * (LAMMPS writes none). */
+#include <setjmp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "error.h"
 #include "fix_wall_gran.h"
+#include "surface_common.h"
+#include "log.h"
+#include "molecule.h"
+#include "region.h"
 #include "rigid_math.h"
 
-#define SG_MAXSURFTYPE 1024     /* LAMMPS's MAXSURFTYPE */
 
 static const char *const sg_options[] = {"smaxtype", "smaxmol", "flat", "neighbor",
                                          "temperature", NULL};
@@ -54,104 +62,6 @@ static int is_option(const char *s)
         if (!strcmp(s, sg_options[k]))
             return 1;
     return 0;
-}
-
-/* The meshes while the command is parsed (f->data until the wall takes them). */
-struct sg_build {
-    int n;
-    struct mesh_surface *ms[MESH_WALLS_MAX];
-    double *soup;               /* 9 per triangle */
-    int *ttype, *tmol;
-    int ntri, cap;
-};
-
-static void build_free(struct sg_build *b)
-{
-    if (!b)
-        return;
-    for (int m = 0; m < b->n; m++) {
-        mesh_surface_free(b->ms[m]);
-        free(b->ms[m]);
-    }
-    free(b->soup);
-    free(b->ttype);
-    free(b->tmol);
-    free(b);
-}
-
-/* input stl stype smol FILE: append its triangles */
-static void read_stl(struct gravel *g, struct sg_build *b, int stype, int smol, const char *file)
-{
-    struct mesh m;
-    char err[512];
-    if (mesh_read(file, 0, &m, err, sizeof err))
-        gr_error(g, "fix surface/global input stl: %s", err);
-    if (b->ntri + m.ntri > b->cap) {
-        int cap = 2 * (b->ntri + m.ntri);
-        double *s = realloc(b->soup, (size_t)cap * 9 * sizeof *s);
-        int *t = s ? realloc(b->ttype, (size_t)cap * sizeof *t) : NULL;
-        int *o = t ? realloc(b->tmol, (size_t)cap * sizeof *o) : NULL;
-        if (s)
-            b->soup = s;
-        if (t)
-            b->ttype = t;
-        if (o)
-            b->tmol = o;
-        if (!o) {
-            mesh_free(&m);
-            gr_error(g, "fix surface/global: out of memory for %d triangles", b->ntri + m.ntri);
-        }
-        b->cap = cap;
-    }
-    for (int t = 0; t < m.ntri; t++, b->ntri++) {
-        for (int k = 0; k < 3; k++)
-            memcpy(b->soup + 9 * (size_t)b->ntri + 3 * k, m.vert + 3 * m.tri[3 * t + k],
-                   3 * sizeof(double));
-        b->ttype[b->ntri] = stype;
-        b->tmol[b->ntri] = smol;
-    }
-    mesh_free(&m);
-}
-
-/* one mesh per molecule ID, in ascending ID order */
-static void build_meshes(struct gravel *g, struct sg_build *b)
-{
-    double *soup = gr_malloc(g, (size_t)b->ntri * 9 * sizeof *soup);
-    for (int mol = 0;;) {
-        int next = 0; /* the smallest molecule ID above mol */
-        for (int t = 0; t < b->ntri; t++)
-            if (b->tmol[t] > mol && (!next || b->tmol[t] < next))
-                next = b->tmol[t];
-        if (!next)
-            break;
-        mol = next;
-        if (b->n == MESH_WALLS_MAX) {
-            free(soup);
-            gr_error(g, "fix surface/global: more than %d surface molecule IDs (gravel makes "
-                        "one mesh wall per molecule ID, at most %d)", MESH_WALLS_MAX,
-                     MESH_WALLS_MAX);
-        }
-        int nt = 0, type = 0;
-        for (int t = 0; t < b->ntri; t++)
-            if (b->tmol[t] == mol) {
-                memcpy(soup + 9 * (size_t)nt++, b->soup + 9 * (size_t)t, 9 * sizeof *soup);
-                type = type ? type : b->ttype[t];
-            }
-        struct mesh_surface *ms = gr_calloc(g, 1, sizeof *ms);
-        b->ms[b->n++] = ms;
-        char name[64], err[512];
-        snprintf(name, sizeof name, "surface molecule %d", mol);
-        if (mesh_from_soup(name, soup, nt, 0, &ms->m, err, sizeof err) ||
-            mesh_check_range(&ms->m, name, err, sizeof err)) {
-            free(soup);
-            gr_error(g, "fix surface/global: %s", err);
-        }
-        mesh_surface_normals(g, ms);
-        ms->type = type;
-        ms->mol = mol;
-        ms->cache_step = -1;
-    }
-    free(soup);
 }
 
 struct sg_model {
@@ -177,26 +87,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct sg_build *b = gr_calloc(g, 1, sizeof *b);
     f->data = b; /* freed by destroy() if an error follows */
     f->hooks = 0;
-    int i = 0;
-    for (; i < argc && !strcmp(argv[i], "input"); ) {
-        arg_need(g, argc, i, 1, "input");
-        if (!strcmp(argv[i + 1], "stl")) {
-            arg_need(g, argc, i, 4, "input stl");
-            int stype = arg_int_range(g, argv[i + 2], 1, SG_MAXSURFTYPE, "surface type");
-            int smol = arg_int_range(g, argv[i + 3], 1, 1 << 30, "surface molecule ID");
-            read_stl(g, b, stype, smol, argv[i + 4]);
-            i += 5;
-        } else if (!strcmp(argv[i + 1], "mol")) {
-            gr_error(g, "fix surface/global input mol: surface molecule files (triangles or "
-                        "lines) are not supported by gravel's molecule command; give the "
-                        "triangles as an STL file (input stl stype smol FILE)");
-        } else {
-            gr_error(g, "fix surface/global input: unknown source '%.64s' (expected stl or mol)",
-                     argv[i + 1]);
-        }
-    }
-    if (!b->ntri)
-        gr_error(g, "Fix surface/global command requires input keyword");
+    int i = sg_parse_inputs(g, b, argc, argv, "fix surface/global");
     /* models */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
     struct sg_model mod[64];
@@ -243,8 +134,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                 gr_error(g, "Fix surface/global smaxtype < input surf types (%d)", maxtype);
             maxtype = s;
         } else if (!strcmp(kw, "smaxmol")) {
-            if (arg_int(g, v, "smaxmol") < maxmol)
+            int s = arg_int(g, v, "smaxmol");
+            if (s < maxmol)
                 gr_error(g, "fix surface/global smaxmol < input surf molecule IDs (%d)", maxmol);
+            maxmol = s;
         } else if (!strcmp(kw, "flat")) {
             double a = arg_double(g, v, "flat");
             if (a < 0.0 || a > 90.0)
@@ -282,36 +175,9 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         if (!strcmp(argv[used->first + k], "limit_damping"))
             gr_error(g, "fix surface/global: limit_damping with the classic model %s is not "
                         "supported (use granular ... limit_damping)", argv[used->first]);
-    build_meshes(g, b);
-    /* the wall: the model's words, then temperature T */
-    char *words[512];
-    if (used->nword + 2 > (int)(sizeof words / sizeof *words))
-        gr_error(g, "fix surface/global: model of %d words is too long", used->nword);
-    int nw = 0;
-    for (int k = 0; k < used->nword; k++)
-        words[nw++] = argv[used->first + k];
-    if (temperature) {
-        words[nw++] = "temperature";
-        words[nw++] = (char *)temperature;
-    }
-    wall_gran_create_own(g, f, nw, words, b->ms, b->n);
-    b->n = 0; /* the wall holds the meshes now */
-    build_free(b);
+    sg_make_wall(g, f, b, used->nword, argv + used->first, temperature, maxtype, maxmol);
     f->needs |= NEED_ROTATION; /* LAMMPS: requires atom attributes radius and omega */
 }
-
-static void destroy(struct fix *f)
-{
-    if (f->hooks) /* the wall was made */
-        fix_style_wall_gran.destroy(f);
-    else
-        build_free(f->data);
-    f->data = NULL;
-}
-
-static void init(struct gravel *g, struct fix *f) { fix_style_wall_gran.init(g, f); }
-
-static void post_force(struct gravel *g, struct fix *f) { fix_style_wall_gran.post_force(g, f); }
 
 /* Bake mesh ms's current pose into its vertices (its motions then start
  * from here, as LAMMPS's fix_modify move starts from the current points). */
@@ -334,12 +200,113 @@ static double move_num(struct gravel *g, const char *s, const char *what)
     return strcmp(s, "NULL") ? arg_double(g, s, what) : 0.0; /* NULL: no motion along it */
 }
 
+/* The centroid of triangle t of mesh ms where it stands now. */
+static void tri_centroid(struct gravel *g, struct mesh_surface *ms, int t, double c[3])
+{
+    struct mesh_pose p;
+    mesh_surface_pose_of(g, ms, NULL, &p);
+    double x0[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        for (int q = 0; q < 3; q++)
+            x0[q] += ms->m.vert[3 * ms->m.tri[3 * t + k] + q] / 3.0;
+    mesh_pose_point(&p, x0, c);
+}
+
+/* mol/region: the wall's own meshes replaced by those of b (the same
+ * triangles with their new molecule IDs); b is freed, also on an error. */
+static void regroup(struct gravel *g, struct mesh_walls *mw, struct sg_build *b)
+{
+    int smaxtype = mw->own[0]->smaxtype, smaxmol = mw->own[0]->smaxmol;
+    jmp_buf jb, *outer = g->err.jmp;
+    g->err.jmp = &jb;
+    if (setjmp(jb)) {
+        g->err.jmp = outer;
+        sg_build_free(b);
+        if (outer)
+            longjmp(*outer, 1);
+        gr_report_error(g);
+        exit(1);
+    }
+    sg_build_meshes(g, b);
+    g->err.jmp = outer;
+    mesh_walls_release(mw); /* frees the old meshes and their device copies */
+    memset(mw->wm, 0, sizeof mw->wm);
+    for (int m = 0; m < b->n; m++) {
+        b->ms[m]->smaxtype = smaxtype;
+        b->ms[m]->smaxmol = smaxmol;
+        mw->own[m] = b->ms[m];
+    }
+    mw->n = b->n;
+    b->n = 0;
+    sg_build_free(b);
+}
+
+/* fix_modify ID type/region stype REGION | mol/region smol REGION (LAMMPS 4
+ * Jul 2026): the triangles whose centroid is in the region take that type
+ * or molecule ID. gravel applies one model to every type pair, each type
+ * up to smaxtype already checked to have it: a type changes nothing in the
+ * forces. A molecule ID regroups the meshes (one per ID), before any run
+ * and any fix_modify move. */
+static int region_assign(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    int istype = !strcmp(argv[0], "type/region");
+    arg_need(g, argc, 0, 2, argv[0]);
+    struct mesh_walls *mw = wall_gran_meshes(f);
+    int hi = istype ? mw->own[0]->smaxtype : mw->own[0]->smaxmol;
+    int v = arg_int(g, argv[1], istype ? "surface type" : "surface molecule ID");
+    if (v <= 0 || v > hi)
+        gr_error(g, "Invalid fix_modify %s surf %s %d (1..%d: fix surface/global %s)", argv[0],
+                 istype ? "type" : "mol", v, hi, istype ? "smaxtype" : "smaxmol");
+    struct region *r = region_find(g, argv[2]);
+    if (!r)
+        gr_error(g, "Fix_modify %s region %.64s does not exist", argv[0], argv[2]);
+    region_prematch(g, r);
+    int ntri = 0;
+    for (int m = 0; m < mw->n; m++) {
+        ntri += mw->own[m]->m.ntri;
+        if (!istype && (mw->own[m]->nmotion || mw->wm[m].tri))
+            gr_error(g, "fix_modify %s mol/region after a run or a fix_modify move is not "
+                        "supported by gravel (it regroups the surfaces: give it first)", f->id);
+    }
+    struct sg_build *b = NULL;
+    if (!istype) {
+        b = gr_calloc(g, 1, sizeof *b);
+        b->soup = malloc((size_t)ntri * 9 * sizeof *b->soup);
+        b->ttype = malloc((size_t)ntri * sizeof *b->ttype);
+        b->tmol = malloc((size_t)ntri * sizeof *b->tmol);
+        b->cap = ntri;
+        b->who = "fix_modify mol/region";
+        if (!b->soup || !b->ttype || !b->tmol) {
+            sg_build_free(b);
+            gr_error(g, "fix_modify mol/region: out of memory for %d triangles", ntri);
+        }
+    }
+    int count = 0;
+    for (int m = 0; m < mw->n; m++) {
+        const struct mesh *ms = &mw->own[m]->m;
+        for (int t = 0; t < ms->ntri; t++) {
+            double c[3];
+            tri_centroid(g, mw->own[m], t, c);
+            int in = region_match(r, c);
+            count += in;
+            const int *k = ms->tri + 3 * t;
+            if (b)
+                sg_soup_add(b, ms->vert + 3 * k[0], ms->vert + 3 * k[1], ms->vert + 3 * k[2],
+                         mw->own[m]->type, in ? v : mw->own[m]->mol);
+        }
+    }
+    if (b)
+        regroup(g, mw, b);
+    gr_print(g, "Fix_modify %s:\n  %d surfs assigned to %s %d\n", argv[0], count,
+             istype ? "type" : "mol", v);
+    return 3;
+}
+
 /* fix_modify ID move smol mstyle args | type/region ... | mol/region ... */
 static int modify_param(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (!strcmp(argv[0], "type/region") || !strcmp(argv[0], "mol/region"))
-        gr_error(g, "fix_modify %s %s is not supported by gravel's fix surface/global", f->id,
-                 argv[0]);
+        return region_assign(g, f, argc, argv);
     if (strcmp(argv[0], "move"))
         return 0;
     arg_need(g, argc, 0, 2, "move");
@@ -426,9 +393,9 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
 const struct fix_style fix_style_surface_global = {
     .name = "surface/global",
     .create = create,
-    .init = init,
-    .post_force = post_force,
-    .destroy = destroy,
+    .init = sg_init,
+    .post_force = sg_post_force,
+    .destroy = sg_destroy,
     .modify_param = modify_param,
     .reset_step = reset_step,
 };

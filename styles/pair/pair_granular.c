@@ -459,8 +459,8 @@ static void init(struct gravel *g, struct pair *p)
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++) {
             struct gr_one *o = at(t, i, j);
-            if (o->set == 1)
-                continue;
+            if (o->set == 1 || pair_type_absent(p, i) || pair_type_absent(p, j))
+                continue; /* absent types (hybrid none): no particle has them */
             const struct gr_one *a = at(t, i, i), *b = at(t, j, j);
             if (a->set != 1 || b->set != 1)
                 gr_error(g, "all pair coeffs are not set: pair granular needs pair_coeff %d %d "

@@ -232,8 +232,8 @@ write_data after.data
              "molecule dimer dimer.mol\ncreate_atoms 0 single 1 1 1 mol dimer 0\n",
              "molecule seed must be in 1..900000000, got 0 (in.deck:7)"),
             ("hybrid_bond", "atom_style hybrid sphere bond\n",
-             "hybrid sub-style 'bond' is not supported (gravel has hybrid sphere molecular) "
-             "(in.deck:1)"),
+             "hybrid sub-style 'bond' is not supported (gravel has hybrid sphere molecular "
+             "and hybrid sphere tri) (in.deck:1)"),
             ("property_atom_mol", HEAD + "region box block 0 10 0 10 0 10\ncreate_box 2 box\n"
              "fix p all property/atom mol\n",
              "fix property/atom mol when atom_style already has molecule attribute "

@@ -21,13 +21,16 @@ the references are gravel's own wall forms and closed-form results.
    linear NULL NULL 0.1` lifts the sphere resting on floor 2 by v t (within
    1e-4) and leaves the one on floor 1 in place (1e-9); after `fix_modify
    move 2 none` floor 2 stays where it was (its sphere moves less than 1e-5
-   in a further run).
-5. Errors name the line: input mol, 2d, no input, no model, a type pair
+   in a further run). Both floors read as one molecule and split by
+   `fix_modify w mol/region 2 right` (then `type/region 2 right`, which
+   changes no force in gravel) print the same numbers, every digit.
+5. Errors name the line: input mol of a missing template, 2d, no input, no model, a type pair
    without a model, models that differ by type pair, an unknown fstyle, jkr,
    a classic model with limit_damping or an extra word, flat out of range,
-   smaxtype below the input types, move variable, fix_modify type/region, an
-   unknown keyword, a missing file, fix surface/local and pair_style
-   surf/granular (not implemented).
+   smaxtype below the input types, move variable, type/region beyond smaxtype,
+   mol/region of a missing region and after a move, an
+   unknown keyword, a missing file, fix surface/local NULL (a data file's
+   triangles) and pair_style surf/granular outside hybrid.
 One PASS/FAIL line per check."""
 import math
 import os
@@ -227,12 +230,31 @@ print "Z2 $(z[1]:%.15g) $(z[2]:%.15g)"
           f"molecule 1's moves {still:.1e}")
     check("surface_global_move_none_stays", abs(z["Z2"][1] - z["Z1"][1]) < 1e-5,
           f"z after move none {z['Z2'][1]:.10f} vs {z['Z1'][1]:.10f}")
+    # the same two floors read as one molecule, split by fix_modify mol/region
+    # (and retyped by type/region, which changes no force): the same numbers
+    write_stl(tmp, "both.stl", [[[-7, -3, 0], [-1, -3, 0], [-1, 3, 0]],
+                                [[-7, -3, 0], [-1, 3, 0], [-7, 3, 0]],
+                                [[1, -3, 0], [7, -3, 0], [7, 3, 0]],
+                                [[1, -3, 0], [7, 3, 0], [1, 3, 0]]])
+    split = deck.replace(
+        "input stl 1 1 left.stl input stl 1 2 right.stl model * * granular " + GRAN,
+        "input stl 1 1 both.stl model * * granular " + GRAN + " smaxmol 2 smaxtype 2\n"
+        "region right block 0 INF INF INF INF INF units box\n"
+        "fix_modify w mol/region 2 right\nfix_modify w type/region 2 right")
+    res2 = run(split, tmp)
+    out2 = res2.stdout + res2.stderr
+    z2 = {k: (a, b) for k, a, b in re.findall(r"^(Z\d) (\S+) (\S+)$", out2, re.M)}
+    z1 = {k: (a, b) for k, a, b in re.findall(r"^(Z\d) (\S+) (\S+)$", out, re.M)}
+    msgs = re.findall(r"^  (\d+) surfs assigned to (mol|type) 2$", out2, re.M)
+    check("surface_global_mol_region_split", res2.returncode == 0 and z2 == z1 and
+          msgs == [("2", "mol"), ("2", "type")],
+          f"z rows {z2} vs two inputs {z1}; messages {msgs}")
 
 
 FIX = "fix w all surface/global input stl 1 1 floor.stl model * * granular hooke 1e4 0.5 tangential linear_nohistory 0 0"
 ERRORS = [
     ("input_mol", "fix w all surface/global input mol tris model * * hooke 1 NULL 1 NULL 0 0\n",
-     "input mol"),
+     "molecule template ID tris does not exist"),
     ("no_input", "fix w all surface/global model * * hooke 1 NULL 1 NULL 0 0\n",
      "requires input keyword"),
     ("no_model", "fix w all surface/global input stl 1 1 floor.stl\n", "requires model keyword"),
@@ -249,15 +271,21 @@ ERRORS = [
      "NULL 0 0 smaxtype 2\n", "smaxtype < input surf types"),
     ("move_variable", FIX + "\nfix_modify w move 1 variable v_a NULL NULL NULL NULL NULL\n",
      "move variable is not supported"),
-    ("type_region", FIX + "\nregion r block -1 1 -1 1 -1 1\nfix_modify w type/region 2 r\n",
-     "type/region is not supported"),
+    ("type_region_type", FIX + "\nregion r block -1 1 -1 1 -1 1\nfix_modify w type/region 2 r\n",
+     "Invalid fix_modify type/region surf type 2 (1..1"),
+    ("mol_region_region", FIX + " smaxmol 2\nfix_modify w mol/region 2 nowhere\n",
+     "Fix_modify mol/region region nowhere does not exist"),
+    ("mol_region_after_move", FIX + " smaxmol 2\nregion r block -1 1 -1 1 -1 1\n"
+     "fix_modify w move 1 linear 0 0 1\nfix_modify w mol/region 2 r\n",
+     "mol/region after a run or a fix_modify move is not supported"),
     ("unknown_keyword", FIX + " smooth 1\n", "unknown keyword 'smooth'"),
     ("classic_extra_word", "fix w all surface/global input stl 1 1 floor.stl model * * hooke 1 "
      "NULL 1 NULL 0 0 smooth 1\n", "model hooke: unexpected word 'smooth'"),
     ("unknown_fstyle", "fix w all surface/global input stl 1 1 floor.stl model * * hertz 1 2\n",
      "unknown fstyle 'hertz'"),
-    ("surface_local", "fix w all surface/local NULL\n", "fix surface/local (LAMMPS 2026"),
-    ("pair_surf_granular", "pair_style surf/granular\n", "pair_style surf/granular (LAMMPS"),
+    ("surface_local_null", "fix w all surface/local NULL\n", "triangles of a data file (NULL"),
+    ("pair_surf_granular_alone", "pair_style surf/granular\n",
+     "acts only as a sub-style of pair_style hybrid"),
     ("missing_file", "fix w all surface/global input stl 1 1 nope.stl model * * hooke 1 NULL 1 "
      "NULL 0 0\n", "nope.stl"),
 ]
