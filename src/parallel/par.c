@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "balance.h"
 #include "comm.h"
 #include "compute.h"
 #include "device.h"
@@ -110,6 +111,7 @@ void par_free(struct gravel *g)
     free(p->sendidx);
     free(p->recvn);
     hist_free(p->hist);
+    decomp_free(&p->dc);
     for (int k = 0; k < p->nsaved; k++)
         free(p->saved[k].state);
     free(p->kept);
@@ -229,7 +231,7 @@ static size_t all_rows_bytes(void)
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "wall/gran",
-                                        "wall/gran/region", NULL};
+                                        "wall/gran/region", "balance", NULL};
 static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -624,10 +626,14 @@ static void check_bricks(struct gravel *g, const struct par *p, double cut)
     const struct domain *d = &g->dom;
     for (int q = 0; q < 3; q++) {
         double L = d->hi[q] - d->lo[q];
-        if (d->periodic[q] && p->dc.p[q] > 1 && L / p->dc.p[q] + 2 * cut >= L)
-            gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the ghost "
-                        "cut-off %g exceeds the box %g; use fewer ranks in %c (processors)",
-                     p->dc.p[q], "xyz"[q], L / p->dc.p[q], cut, L, "xyz"[q]);
+        for (int k = 0; d->periodic[q] && p->dc.p[q] > 1 && k < p->dc.p[q]; k++) {
+            double w = L * (decomp_cut(&p->dc, q, k + 1) - decomp_cut(&p->dc, q, k));
+            if (w + 2 * cut >= L)
+                gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the "
+                            "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
+                            "(processors) or even slabs", p->dc.p[q], "xyz"[q], w, cut, L,
+                         "xyz"[q]);
+        }
     }
 }
 
@@ -650,6 +656,11 @@ void par_exchange(struct gravel *g, double cut)
     p->hist = NULL;
     if (e->history && p->list_current)
         hist_collect(g, &old);
+    if (p->balance_dims) { /* fix balance: slab cuts at the atoms' quantiles */
+        balance_shift_run(g, p->balance_dims, p->balance_thresh);
+        p->balance_dims = 0;
+        check_bricks(g, p, cut);
+    }
     /* destinations; an atom outside a fixed face is lost */
     int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int64_t *tagdest = gr_malloc(g, (2 * (size_t)n + 1) * sizeof(int64_t));

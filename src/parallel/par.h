@@ -49,6 +49,8 @@ struct par {
     struct par_saved saved[PAR_MAXSAVED];
     int nsaved;
     int *kept;              /* run start: the kept atoms' rows in the last run's end set */
+    unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
+    double balance_thresh;
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
     struct atoms local;
 };

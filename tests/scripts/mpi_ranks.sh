@@ -7,7 +7,7 @@
 # for a periodic gas crossing every face and corner of the bricks, a gas
 # under gravity between plane and region walls (wall history), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
-# single precision, with its dumps (custom and vtk, sorted by ID: every
+# single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); errors end every rank with one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
@@ -153,6 +153,14 @@ same walls_np4_z wall.in 4 "" "1 2 2"
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
 same chute_np4_z chute.in 4 "" "1 2 2"
+# balance: the chute's z slabs at the atoms' median (LAMMPS 2x1x2 on 4 ranks starts at
+# 8010 atoms, imbalance 1.00125, as lmp prints), then fix balance moving x and z cuts
+# every 40 steps; the same bits as one process with the same deck
+sed 's/^read_data       data.chute/read_data       data.chute\nbalance 1.0 shift z 10 1.05/; s/^run             120/fix bal all balance 40 1.0 shift xz 10 1.0\nrun             120/' chute.in > bal.in
+"$serial" -in bal.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same balance_np4 bal.in 4 ""
+check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 8000.0000$" balance_np4.out && grep -q "^  initial/final imbalance factor  = 1.0012500 1.0000000$" balance_np4.out && grep -q "^  z cuts: 0.0000000 0.5[0-9]* 1.0000000$" balance_np4.out'
+
 "$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
