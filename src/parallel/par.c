@@ -231,7 +231,8 @@ static size_t all_rows_bytes(void)
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "wall/gran",
-                                        "wall/gran/region", "balance", NULL};
+                                        "wall/gran/region", "balance", "mesh/surface",
+                                        "move/mesh", NULL};
 static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -239,6 +240,19 @@ static int listed(const char *const *list, const char *name)
     for (int i = 0; list[i]; i++)
         if (strcmp(list[i], name) == 0)
             return 1;
+    return 0;
+}
+
+/* f_ID[...] of a fix whose global values are summed over the ranks
+ * (mesh/surface: the force and torque on the mesh) */
+static int fix_summed(struct gravel *g, const char *ref)
+{
+    size_t len = strcspn(ref, "[");
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        if (strlen(f->id) == len && !strncmp(f->id, ref, len))
+            return !strcmp(f->style->name, "mesh/surface");
+    }
     return 0;
 }
 
@@ -272,6 +286,8 @@ static void check_scene(struct gravel *g)
                                      "pxz", "pyz", "epair", "emol", "pe", "etotal", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
+        if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))
+            continue;
         if (!listed(kw, c) && strncmp(c, "c_", 2) != 0) {
             snprintf(buf, sizeof buf, "thermo keyword %.60s", c);
             why = buf;

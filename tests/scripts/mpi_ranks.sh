@@ -5,7 +5,8 @@
 # (contact history carried by tag pair through migrations and between runs;
 # thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks, a gas
-# under gravity between plane and region walls (wall history), and the
+# under gravity between plane and region walls (wall history), the example
+# mill (a turning STL mesh, its force and torque in thermo), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); errors end every rank with one message (doc/parallel.md).
@@ -119,6 +120,13 @@ run             300
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
 
+# the example mill: a turning STL mesh (fix mesh/surface + move/mesh + wall/gran
+# mesh, with history), the mesh's force and torque in thermo (f_mill[6], f_mill[7])
+grep -v "mesh/vtk\|^dump            1" "$root/inputs/examples/mill.in" |
+    sed 's/^thermo_modify   norm no/thermo_modify   norm no format float %.17g/; s/^thermo          1000/thermo          200/' > mill.in
+echo 'write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' >> mill.in
+cp "$root/inputs/examples/mill.stl" .
+
 rows() { grep -E '^ +[0-9]+ +-?[0-9]' "$1"; }
 # name, deck, ranks, extra gravel arguments, processors line (or empty)
 # the dumps of a run: every file the same bytes as the reference run's (ref/)
@@ -148,6 +156,10 @@ check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.o
 "$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same walls_np2 wall.in 2 ""
 same walls_np4_z wall.in 4 "" "1 2 2"
+
+"$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same mill_np3 mill.in 3 "-var nsteps 1200"
+check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
 
 "$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
