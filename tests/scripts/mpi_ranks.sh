@@ -156,6 +156,10 @@ check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.o
 "$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same walls_np2 wall.in 2 ""
 same walls_np4_z wall.in 4 "" "1 2 2"
+# an empty sub-domain: the atoms start in the lower third, z split in 3
+sed 's/^region          fill block 0 12 0 12 1 11/region          fill block 0 12 0 12 1 4/; s/^velocity        all create 25.0/velocity        all create 0.5/' wall.in > low.in
+"$serial" -in low.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same empty_subdomain_np3 low.in 3 "" "1 1 3"
 
 "$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same mill_np3 mill.in 3 "-var nsteps 1200"
