@@ -115,6 +115,7 @@ void par_free(struct gravel *g)
     for (int k = 0; k < p->nsaved; k++)
         free(p->saved[k].state);
     free(p->kept);
+    free(p->tags_built);
     free(p);
     g->par = NULL;
 }
@@ -232,7 +233,7 @@ static size_t all_rows_bytes(void)
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "wall/gran",
                                         "wall/gran/region", "balance", "mesh/surface",
-                                        "move/mesh", NULL};
+                                        "move/mesh", "pour", NULL};
 static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -429,8 +430,10 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), ci);
     eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
     eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
-    const int64_t *tag = g->atoms.tag;
-    int nown = e->a.n;
+    /* the tags of the atoms the list indexes (owned and ghosts at the build:
+     * an insertion since may have written over the ghosts' host slots) */
+    const int64_t *tag = g->par->tags_built;
+    int nown = g->par->nlocal_built;
     for (int c = 0; c < nc; c++) {
         if (ci[c] >= nown && ci[nc + c] >= nown)
             continue; /* two ghosts: their history is their owners' business */
@@ -680,23 +683,31 @@ void par_exchange(struct gravel *g, double cut)
     /* destinations; an atom outside a fixed face is lost */
     int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int64_t *tagdest = gr_malloc(g, (2 * (size_t)n + 1) * sizeof(int64_t));
+    int nlost = 0;
     for (int i = 0; i < n; i++) {
         const double *x = a->x + 3 * (size_t)i;
+        int out = 0; /* as the bins of one process: [lo, hi) */
         for (int q = 0; q < 3; q++)
-            if (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] <= dm->hi[q]))
-                gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed "
-                            "%c face at step %lld", (long long)a->tag[i], x[0], x[1], x[2],
-                         "xyz"[q], (long long)g->step);
-        dest[i] = decomp_owner(g, &p->dc, x);
+            out = out || (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] < dm->hi[q]));
+        if (out && g->thermo.lost == LOST_ERROR)
+            gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed face "
+                        "at step %lld; thermo_modify lost ignore|warn keeps going",
+                     (long long)a->tag[i], x[0], x[1], x[2], (long long)g->step);
+        dest[i] = out ? -1 : decomp_owner(g, &p->dc, x); /* -1: lost, dropped */
+        nlost += out;
         tagdest[2 * i] = a->tag[i];
         tagdest[2 * i + 1] = dest[i];
     }
+    long long before = comm_sum_ll(n), lost = comm_sum_ll(nlost);
+    if (lost && g->thermo.lost == LOST_WARN)
+        gr_warn(g, "Lost atoms: original %lld current %lld (step %lld)", before, before - lost,
+                (long long)g->step);
     qsort(tagdest, (size_t)n, 2 * sizeof(int64_t), cmp_i64);
     /* 1. atoms that left the brick */
     struct outbox ob;
     outbox_init(g, &ob, P);
     for (int i = 0; i < n; i++)
-        if (dest[i] != me)
+        if (dest[i] != me && dest[i] >= 0)
             pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb,
                       outbox_room(g, &ob, dest[i], rb));
     size_t inb, from[P];
@@ -807,6 +818,9 @@ void par_exchange(struct gravel *g, double cut)
     eng_reload(g, nlocal, nghost);
     extra_move(g, nlocal + nghost, raw, 1);
     free(raw);
+    p->tags_built = gr_realloc(g, p->tags_built, ((size_t)nlocal + nghost + 1) * sizeof(int64_t));
+    memcpy(p->tags_built, a->tag, ((size_t)nlocal + nghost) * sizeof(int64_t));
+    p->nlocal_built = nlocal;
     p->list_current = 0;
 }
 
@@ -963,4 +977,39 @@ void par_gather_end(struct gravel *g)
     p->gathered = 0;
     p->on = 1;
     g->eng->active = 1;
+}
+
+/* ---- insertion on several ranks (fix pour) ---------------------------------------- */
+
+int par_owns(struct gravel *g, const double x[3])
+{
+    return !par_on(g) || decomp_owner(g, &g->par->dc, x) == comm_rank();
+}
+
+int par_gather_rows(struct gravel *g, double **rows, int n, int width)
+{
+    if (!par_on(g))
+        return n;
+    double *all = NULL;
+    size_t w = (size_t)width * sizeof(double);
+    size_t bytes = comm_allgatherv(*rows, (size_t)n * w, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank");
+    free(*rows);
+    *rows = all;
+    return (int)(bytes / w);
+}
+
+int64_t par_max_tag(struct gravel *g, int64_t mine)
+{
+    if (!par_on(g))
+        return mine;
+    int64_t *all = NULL, m = mine;
+    size_t bytes = comm_allgatherv(&mine, sizeof mine, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the ranks' largest atom IDs");
+    for (size_t r = 0; r < bytes / sizeof mine; r++)
+        m = all[r] > m ? all[r] : m;
+    free(all);
+    return m;
 }

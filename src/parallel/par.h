@@ -44,6 +44,8 @@ struct par {
     int *sendn, *soff, *sendidx; /* ghosts sent to each rank: owned indices */
     int *recvn;             /* ghosts received from each rank, in slot order */
     int list_current;       /* the device's contacts index the current atoms */
+    int64_t *tags_built;    /* the tags of the owned and ghost slots at the last build */
+    int nlocal_built;
     struct par_hist *hist;  /* contact history by tag pair across a rebuild or runs */
     uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
     struct par_saved saved[PAR_MAXSAVED];
@@ -89,6 +91,16 @@ void par_run_end(struct gravel *g);
  * par_gather_end restores this rank's own. No device work in between. */
 void par_gather_begin(struct gravel *g);
 void par_gather_end(struct gravel *g);
+
+/* Insertion on several ranks (fix pour): every rank draws the same
+ * particles from the same neighbors and keeps those of its brick.
+ * par_owns: x lies in this rank's brick (1 on one rank). par_gather_rows:
+ * the n rows of `width` doubles at *rows (malloc'd) become every rank's
+ * rows, rank by rank (returns their count). par_max_tag: the largest of
+ * every rank's `mine`. Collective but par_owns. */
+int par_owns(struct gravel *g, const double x[3]);
+int par_gather_rows(struct gravel *g, double **rows, int n, int width);
+int64_t par_max_tag(struct gravel *g, int64_t mine);
 
 /* A sum over the atoms of every rank in one process's order: terms added
  * with ascending keys (a tag, or 2 tag + k for several terms per atom) give

@@ -6,7 +6,8 @@
 # thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks, a gas
 # under gravity between plane and region walls (wall history), the example
-# mill (a turning STL mesh, its force and torque in thermo), and the
+# mill (a turning STL mesh, its force and torque in thermo), three fix pour
+# decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); errors end every rank with one message (doc/parallel.md).
@@ -179,6 +180,17 @@ check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 80
 
 "$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
+
+# fix pour (tests/reference/pour: ranges, rate, poly diameters into a cylinder,
+# atoms lost through the fixed floor with lost ignore, two pours): every rank draws
+# the same particles against every rank's near atoms and keeps those of its brick
+for d in range_vel_rate poly_cylinder_next two_fixes; do
+    sed 's/^thermo_style    custom step atoms ke/thermo_style    custom step atoms ke\nthermo_modify   format float %.17g/' "$root/tests/reference/pour/$d.in" > "$d.in"
+    "$serial" -in "$d.in" -log none > "$d.ref" 2>&1; mv out.dump "$d.ref.dump"
+    mpirun -np 3 "$par" -in "$d.in" -log none > "$d.out" 2>&1; rc=$?
+    mv out.dump "$d.dump" 2> /dev/null
+    check "pour_${d}_np3" '[ $rc -eq 0 ] && [ -s "$d.ref.dump" ] && cmp -s "$d.ref.dump" "$d.dump" && [ "$(rows "$d.ref")" = "$(rows "$d.out")" ] && [ "$(rows "$d.out" | wc -l)" -ge 4 ]'
+done
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all ave\/time 10 1 10 c_thermo_temp file ave.txt/' chute.in > ave.in
