@@ -756,6 +756,8 @@ void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *
                bigint firststep, bigint laststep)
 {
     struct rerun_args r = {load, ctx, firststep, laststep};
+    if (comm_size() > 1)
+        par_refuse(g, "rerun");
     guarded(g, rerun_body, &r);
 }
 
