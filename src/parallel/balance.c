@@ -30,46 +30,6 @@ unsigned balance_dims(struct gravel *g, const char *dimstr)
     return dims;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-/* Fraction of the box length of coordinate x in dimension q (periodic: wrapped). */
-static double fraction(const struct gravel *g, int q, double x)
-{
-    const struct domain *d = &g->dom;
-    double s = (x - d->lo[q]) / (d->hi[q] - d->lo[q]);
-    if (d->periodic[q])
-        s -= floor(s);
-    return s < 0 ? 0 : s > 1 ? 1 : s;
-}
-
-/* Cuts of dimension q at the quantiles of the n sorted fractions s; even
- * slabs where the atoms cannot separate them. */
-static void quantile_cuts(struct decomp *dc, int q, const double *s, long n)
-{
-    int P = dc->p[q];
-    if (P < 2)
-        return;
-    double *c = malloc(((size_t)P + 1) * sizeof *c);
-    if (!c)
-        return;
-    c[0] = 0;
-    c[P] = 1;
-    for (int k = 1; k < P; k++) {
-        long m = (long)((double)k * (double)n / P);
-        double v = n == 0 ? (double)k / P : m <= 0 ? s[0] : m >= n ? s[n - 1] : 0.5 * (s[m - 1] + s[m]);
-        double floor_k = c[k - 1] + 1e-6; /* every slab keeps a width */
-        c[k] = v > floor_k ? v : floor_k;
-    }
-    for (int k = P - 1; k >= 1; k--) /* and the last ones too */
-        if (c[k] > c[k + 1] - 1e-6)
-            c[k] = c[k + 1] - 1e-6;
-    free(dc->cut[q]);
-    dc->cut[q] = c;
-}
 
 /* largest rank's atom count and the imbalance (largest / mean) of n
  * positions (all atoms) under dc */
@@ -175,9 +135,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
             } else if (shift & (1u << q)) {
                 double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s);
                 for (int k = 0; k < a->n; k++)
-                    s[k] = fraction(g, q, a->x[3 * (size_t)k + q]);
-                qsort(s, (size_t)a->n, sizeof *s, cmp_double);
-                quantile_cuts(dc, q, s, a->n);
+                    s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+                decomp_quantile_cuts(dc, q, s, a->n);
                 free(s);
             }
         }
@@ -192,44 +151,4 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     gr_print(g, "  initial/final maximal load/proc = %#.8g %#.8g\n", maxinit, maxfinal);
     gr_print(g, "  initial/final imbalance factor  = %#.8g %#.8g\n", imbinit, imbfinal);
     print_cuts(g, dc);
-}
-
-double balance_shift_run(struct gravel *g, unsigned dims, double thresh)
-{
-    struct par *p = g->par;
-    struct decomp *dc = &p->dc;
-    const struct atoms *a = &g->atoms;
-    long long n = comm_sum_ll(a->n);
-    int P = dc->p[0] * dc->p[1] * dc->p[2];
-    /* each rank's count under the current cuts: its own atoms */
-    long long mine = a->n, big = mine;
-    {
-        long long *all = NULL;
-        size_t b = comm_allgatherv(&mine, sizeof mine, (void **)&all);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        big = 0;
-        for (size_t r = 0; r < b / sizeof mine; r++)
-            big = all[r] > big ? all[r] : big;
-        free(all);
-    }
-    double imb = n > 0 ? (double)big * P / (double)n : 1.0;
-    if (!(imb > thresh))
-        return imb;
-    for (int q = 0; q < 3; q++) {
-        if (!(dims & (1u << q)) || dc->p[q] < 2)
-            continue;
-        double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
-        for (int k = 0; k < a->n; k++)
-            s[k] = fraction(g, q, a->x[3 * (size_t)k + q]);
-        size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
-        free(s);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        long m = (long)(b / sizeof *all);
-        qsort(all, (size_t)m, sizeof *all, cmp_double);
-        quantile_cuts(dc, q, all, m);
-        free(all);
-    }
-    return imb;
 }

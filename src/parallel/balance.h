@@ -11,10 +11,4 @@
 void cmd_balance(struct gravel *g, int argc, char **argv);
 /* Parse `dimstr` of style shift: bit q set for each of x, y, z named. */
 unsigned balance_dims(struct gravel *g, const char *dimstr);
-/* During a decomposed run's rebuild, before the atoms move: when the
- * imbalance (largest rank's atoms over the mean) exceeds thresh, the cuts
- * of the dimensions in dims move to the quantiles of every rank's atoms.
- * Returns the imbalance found (before). Collective. */
-double balance_shift_run(struct gravel *g, unsigned dims, double thresh);
-
 #endif

@@ -106,3 +106,46 @@ void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double 
         hi[q] = c[q] + 1 == d->p[q] ? dm->hi[q] : dm->lo[q] + L * decomp_cut(d, q, c[q] + 1);
     }
 }
+
+/* Fraction of the box length of coordinate x in dimension q (periodic: wrapped). */
+double decomp_fraction(const struct gravel *g, int q, double x)
+{
+    const struct domain *d = &g->dom;
+    double s = (x - d->lo[q]) / (d->hi[q] - d->lo[q]);
+    if (d->periodic[q])
+        s -= floor(s);
+    return s < 0 ? 0 : s > 1 ? 1 : s;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Cuts of dimension q at the quantiles of the n fractions s (sorted here); even
+ * slabs where the atoms cannot separate them. */
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
+{
+    qsort(s, (size_t)n, sizeof *s, cmp_double);
+    int P = dc->p[q];
+    if (P < 2)
+        return;
+    double *c = malloc(((size_t)P + 1) * sizeof *c);
+    if (!c)
+        return;
+    c[0] = 0;
+    c[P] = 1;
+    for (int k = 1; k < P; k++) {
+        long m = (long)((double)k * (double)n / P);
+        double v = n == 0 ? (double)k / P : m <= 0 ? s[0] : m >= n ? s[n - 1] : 0.5 * (s[m - 1] + s[m]);
+        double floor_k = c[k - 1] + 1e-6; /* every slab keeps a width */
+        c[k] = v > floor_k ? v : floor_k;
+    }
+    for (int k = P - 1; k >= 1; k--) /* and the last ones too */
+        if (c[k] > c[k + 1] - 1e-6)
+            c[k] = c[k + 1] - 1e-6;
+    free(dc->cut[q]);
+    dc->cut[q] = c;
+}
+

@@ -22,6 +22,13 @@ struct decomp {
  * grid stays the same). */
 void decomp_setup(struct gravel *g, struct decomp *d);
 void decomp_free(struct decomp *d);
+/* Fraction of the box length of coordinate x in dimension q (periodic:
+ * wrapped; clamped to 0 ... 1). */
+double decomp_fraction(const struct gravel *g, int q, double x);
+/* Slab cuts of dimension q at the quantiles of the n fractions s (sorted
+ * in place; balance's shift); even slabs where the atoms cannot separate
+ * them. */
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n);
 /* Fraction of the box length below slab k's lower face in dimension q. */
 double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;

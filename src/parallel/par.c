@@ -8,7 +8,6 @@
 
 #include "args.h"
 #include "atoms.h"
-#include "balance.h"
 #include "comm.h"
 #include "compute.h"
 #include "device.h"
@@ -656,6 +655,47 @@ static void check_bricks(struct gravel *g, const struct par *p, double cut)
     }
 }
 
+/* fix balance at a rebuild, before the atoms move: when the imbalance
+ * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
+ * dimensions in dims move to the quantiles of every rank's atoms. */
+static void rebalance(struct gravel *g, unsigned dims, double thresh)
+{
+    struct par *p = g->par;
+    struct decomp *dc = &p->dc;
+    const struct atoms *a = &g->atoms;
+    long long n = comm_sum_ll(a->n);
+    int P = dc->p[0] * dc->p[1] * dc->p[2];
+    /* each rank's count under the current cuts: its own atoms */
+    long long mine = a->n, big = mine;
+    {
+        long long *all = NULL;
+        size_t b = comm_allgatherv(&mine, sizeof mine, (void **)&all);
+        if (b == (size_t)-1)
+            gr_error(g, "out of memory balancing");
+        big = 0;
+        for (size_t r = 0; r < b / sizeof mine; r++)
+            big = all[r] > big ? all[r] : big;
+        free(all);
+    }
+    double imb = n > 0 ? (double)big * P / (double)n : 1.0;
+    if (!(imb > thresh))
+        return;
+    for (int q = 0; q < 3; q++) {
+        if (!(dims & (1u << q)) || dc->p[q] < 2)
+            continue;
+        double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
+        for (int k = 0; k < a->n; k++)
+            s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+        size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
+        free(s);
+        if (b == (size_t)-1)
+            gr_error(g, "out of memory balancing");
+        long m = (long)(b / sizeof *all);
+        decomp_quantile_cuts(dc, q, all, m);
+        free(all);
+    }
+}
+
 void par_exchange(struct gravel *g, double cut)
 {
     struct par *p = g->par;
@@ -676,7 +716,7 @@ void par_exchange(struct gravel *g, double cut)
     if (e->history && p->list_current)
         hist_collect(g, &old);
     if (p->balance_dims) { /* fix balance: slab cuts at the atoms' quantiles */
-        balance_shift_run(g, p->balance_dims, p->balance_thresh);
+        rebalance(g, p->balance_dims, p->balance_thresh);
         p->balance_dims = 0;
         check_bricks(g, p, cut);
     }
