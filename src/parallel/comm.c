@@ -44,6 +44,10 @@ static int rank_, size_ = 1;
 
 int comm_init(int *argc, char ***argv)
 {
+    /* a rank waiting for another yields its core (OpenMPI spins otherwise,
+     * taking the core the other rank's PoCL threads compute on); the
+     * environment's own setting wins */
+    setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
