@@ -1,5 +1,6 @@
 /* pair_energy.c - the pair potential energy (pair_energy.h). */
 #include "pair_energy.h"
+#include "par.h"
 
 #include <stdlib.h>
 
@@ -19,7 +20,7 @@ double pair_energy(struct gravel *g)
         return e->epair_snap;
     const struct nbr_list *l = nbr_list(g);
     int n = e->a.n;
-    if (n <= 0)
+    if (n <= 0 && !par_on(g)) /* a rank without atoms still joins the sum */
         return 0.0;
     cl_mem out = pressure_scratch(g);
     cl_kernel k = e->k_energy;
@@ -35,15 +36,16 @@ double pair_energy(struct gravel *g)
     eng_arg_int(g, k, a++, g->styles.pair->caps.nparam);
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, out);
-    eng_launch(g, k, (size_t)n);
-    double *ei = gr_malloc(g, (size_t)n * sizeof(double));
+    if (n > 0)
+        eng_launch(g, k, (size_t)n);
+    double *ei = gr_malloc(g, ((size_t)n + 1) * sizeof(double));
     eng_read_reals(g, out, (size_t)n, ei);
-    const int *order = eng_tag_order(g); /* sum in tag order */
-    double s = 0.0;
+    const int *order = eng_tag_order(g); /* sum in tag order, every rank's atoms */
+    struct par_sum s = {0};
     for (int i = 0; i < n; i++)
-        s += ei[order[i]];
+        par_sum_add(g, &s, e->tag_seen[order[i]], ei[order[i]]);
     free(ei);
-    return s;
+    return par_sum_total(g, &s);
 }
 
 void pair_energy_snapshot(struct gravel *g)

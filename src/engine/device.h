@@ -70,6 +70,11 @@ struct run_stats {
     bigint nlaunch;                 /* kernel launches and fills in the loop */
     int ncontact;                   /* contacts of the last list built */
     double mem_peak;                /* most bytes of device buffers live during the run */
+    /* several ranks (src/parallel/comm.h): per rank and step, the mean over
+     * the ranks of the bytes and messages sent to other ranks (ghosts and
+     * migration) and of the bytes each rank adds to collectives (sums,
+     * gathers, decisions) and their number */
+    double comm_bytes, comm_msgs, coll_bytes, coll_calls;
 };
 
 struct engine {

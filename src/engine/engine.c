@@ -334,7 +334,7 @@ void eng_append(struct gravel *g, int nold)
     e->n_at_sync = n;
 }
 
-void eng_reload(struct gravel *g, int nlocal, int nghost, const void *raw)
+void eng_reload(struct gravel *g, int nlocal, int nghost)
 {
     struct engine *e = g->eng;
     struct atoms *at = &g->atoms;
@@ -345,19 +345,6 @@ void eng_reload(struct gravel *g, int nlocal, int nghost, const void *raw)
         eng_fix_state(g, 1);
     }
     put_atoms(g, 0, nall);
-    if (raw && nall > 0) { /* the device's own position bits (single precision) */
-        size_t half = 3 * e->rsz;
-        unsigned char *x = gr_malloc(g, (size_t)nall * half), *lo = gr_malloc(g, (size_t)nall * half);
-        for (int i = 0; i < nall; i++) {
-            memcpy(x + (size_t)i * half, (const unsigned char *)raw + (size_t)i * 2 * half, half);
-            memcpy(lo + (size_t)i * half, (const unsigned char *)raw + ((size_t)i * 2 + 1) * half,
-                   half);
-        }
-        eng_write(g, e->a.x, 0, (size_t)nall * half, x);
-        eng_write(g, e->a.xlo, 0, (size_t)nall * half, lo);
-        free(x);
-        free(lo);
-    }
     at->n = nlocal;
     e->a.n = nlocal;
     e->nghost = nghost;

@@ -42,10 +42,9 @@ void eng_append(struct gravel *g, int nold);
 
 /* A decomposed run's rebuild (src/parallel/par.c): the host atoms 0 ..
  * nlocal + nghost - 1 (owned, then ghosts) to the device, which grows as
- * needed; the device's atom count becomes nlocal. raw: the device's
- * position bits of every one of them (x then xlo, 6 REAL per atom; single
- * precision) or NULL. */
-void eng_reload(struct gravel *g, int nlocal, int nghost, const void *raw);
+ * needed (the fixes' per-atom state too, contents kept); the device's atom
+ * count becomes nlocal. */
+void eng_reload(struct gravel *g, int nlocal, int nghost);
 
 /* Device state -> host arrays; no-op when no run is active. Between runs
  * the host arrays in g->atoms are the truth; during a run the device

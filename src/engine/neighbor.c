@@ -820,16 +820,17 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     }
     cl_kernel k = b->k_wrap;
     ka_bind_nbr_wrap_extent(g, k, 0, &wa);
-    if (nch < 1)
+    if (nch < 1 && !par_on(g)) /* a rank without atoms still joins the extent */
         return;
-    eng_launch(g, k, (size_t)nch);
+    if (nch >= 1)
+        eng_launch(g, k, (size_t)nch);
     int shrink = 0;
     for (int q = 0; q < 3; q++)
         if (!d->periodic[q] && (d->bnd[q][0] != BND_F || d->bnd[q][1] != BND_F))
             shrink = 1;
     if (!shrink)
         return;
-    double *ext = gr_malloc(g, (size_t)nch * 6 * sizeof(double));
+    double *ext = gr_malloc(g, ((size_t)nch + 1) * 6 * sizeof(double));
     eng_read_reals(g, b->ext, (size_t)nch * 6, ext);
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int c = 0; c < nch; c++)
@@ -840,6 +841,8 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
     free(ext);
     if (par_on(g))
         comm_minmax(lo, hi, 3); /* the extent of every rank's atoms */
+    if (!(lo[0] <= hi[0]))
+        return; /* no atom on any rank */
     domain_shrink_wrap(g, lo, hi);
 }
 

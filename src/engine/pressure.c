@@ -1,5 +1,6 @@
 /* pressure.c - the pressure from the granular pair virial (pressure.h). */
 #include "pressure.h"
+#include "par.h"
 
 #include <stdlib.h>
 
@@ -37,7 +38,7 @@ void pressure_virial(struct gravel *g, double w[6])
     }
     const struct nbr_list *l = nbr_list(g);
     int n = e->a.n;
-    if (n <= 0)
+    if (n <= 0 && !par_on(g)) /* a rank without atoms still joins the sum */
         return;
     pressure_scratch(g);
     cl_kernel k = e->k_virial;
@@ -50,13 +51,17 @@ void pressure_virial(struct gravel *g, double w[6])
     eng_arg_mem(g, k, a++, e->a.x);
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->virial);
-    eng_launch(g, k, (size_t)n);
-    double *wi = gr_malloc(g, (size_t)n * 6 * sizeof(double));
+    if (n > 0)
+        eng_launch(g, k, (size_t)n);
+    double *wi = gr_malloc(g, ((size_t)n + 1) * 6 * sizeof(double));
     eng_read_reals(g, e->virial, 6 * (size_t)n, wi);
-    const int *order = eng_tag_order(g); /* sum in tag order */
-    for (int k2 = 0; k2 < n; k2++)
-        for (int d = 0; d < 6; d++)
-            w[d] += wi[6 * order[k2] + d];
+    const int *order = eng_tag_order(g); /* sum in tag order, every rank's atoms */
+    for (int d = 0; d < 6; d++) {
+        struct par_sum s = {0};
+        for (int k2 = 0; k2 < n; k2++)
+            par_sum_add(g, &s, e->tag_seen[order[k2]], wi[6 * order[k2] + d]);
+        w[d] = par_sum_total(g, &s);
+    }
     free(wi);
 }
 

@@ -454,6 +454,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
             f->style->init(g, f);
     }
     eng_fix_state(g, 1); /* fixes may have declared per-atom state in init */
+    par_fix_state_restore(g); /* several ranks: the state of the last run */
     box_init(g);
     nbr_setup(g);
     fused_setup(g);
@@ -470,6 +471,16 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
  * over all (ties: the lowest rank's). */
 static void ranks_stats(struct gravel *g, struct run_stats *st)
 {
+    double c[4];
+    comm_counters(c); /* this run's, before the statistics' own */
+    double per = st->nsteps > 0 ? 1.0 / ((double)st->nsteps * comm_size()) : 0;
+    long long sum[4];
+    for (int k = 0; k < 4; k++)
+        sum[k] = comm_sum_ll((long long)c[k]);
+    st->comm_bytes = (double)sum[0] * per;
+    st->comm_msgs = (double)sum[1] * per;
+    st->coll_bytes = (double)sum[2] * per;
+    st->coll_calls = (double)sum[3] * per;
     st->natoms = (int)comm_sum_ll(st->natoms);
     st->total_neighbors = (double)comm_sum_ll((long long)st->total_neighbors);
     st->ncontact = (int)comm_sum_ll(st->ncontact);
@@ -528,6 +539,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     struct run_timers tm = {0};
     e->st.nlaunch = 0;
     nbr_step_reset(g);
+    comm_counters_reset(); /* the loop's communication (the footer's per-step figures) */
     double t0 = wall();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
@@ -744,6 +756,8 @@ void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *
                bigint firststep, bigint laststep)
 {
     struct rerun_args r = {load, ctx, firststep, laststep};
+    if (comm_size() > 1)
+        par_refuse(g, "rerun");
     guarded(g, rerun_body, &r);
 }
 

@@ -120,33 +120,34 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
 {
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    double s[6] = {0, 0, 0, 0, 0, 0};
+    struct par_sum s[6] = {{0}}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & t->groupbit))
             continue;
         const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
                      r = a->radius[i];
+        const int64_t key = 2 * a->tag[i];
         if (t->kind != TEMP_SPHERE_ROTATE) {
-            s[0] += m * v[0] * v[0];
-            s[1] += m * v[1] * v[1];
-            s[2] += m * v[2] * v[2];
-            s[3] += m * v[0] * v[1];
-            s[4] += m * v[0] * v[2];
-            s[5] += m * v[1] * v[2];
+            par_sum_add(g, &s[0], key, m * v[0] * v[0]);
+            par_sum_add(g, &s[1], key, m * v[1] * v[1]);
+            par_sum_add(g, &s[2], key, m * v[2] * v[2]);
+            par_sum_add(g, &s[3], key, m * v[0] * v[1]);
+            par_sum_add(g, &s[4], key, m * v[0] * v[2]);
+            par_sum_add(g, &s[5], key, m * v[1] * v[2]);
         }
         if (t->kind != TEMP_TRANS) {
             double in = INERTIA * m * r * r;
-            s[0] += in * w[0] * w[0];
-            s[1] += in * w[1] * w[1];
-            s[2] += in * w[2] * w[2];
-            s[3] += in * w[0] * w[1];
-            s[4] += in * w[0] * w[2];
-            s[5] += in * w[1] * w[2];
+            par_sum_add(g, &s[0], key + 1, in * w[0] * w[0]);
+            par_sum_add(g, &s[1], key + 1, in * w[1] * w[1]);
+            par_sum_add(g, &s[2], key + 1, in * w[2] * w[2]);
+            par_sum_add(g, &s[3], key + 1, in * w[0] * w[1]);
+            par_sum_add(g, &s[4], key + 1, in * w[0] * w[2]);
+            par_sum_add(g, &s[5], key + 1, in * w[1] * w[2]);
         }
     }
     for (int d = 0; d < 6; d++)
-        out[d] = s[d] * compute_mvv2e(g);
+        out[d] = par_sum_total(g, &s[d]) * compute_mvv2e(g);
 }
 
 struct temp_state *temp_thermo(struct gravel *g)

@@ -2,6 +2,7 @@
  * and `undump` commands, the LAMMPS schedule, and crash-safe file writing
  * (temporary name + rename; see dump.h for the scheme). */
 #include "dump.h"
+#include "par.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -466,9 +467,23 @@ static bigint next_multiple(bigint step, int every)
     return (step / every) * every + every;
 }
 
+/* Dumps that run on several ranks: the atoms' own fields, gathered (par.h). */
+static const char *const across_ranks[] = {"atom", "custom", "vtk", "custom/vtk", NULL};
+
 void dump_setup_all(struct gravel *g)
 {
     int synced = 0;
+    for (int i = 0; i < g->styles.ndump && par_on(g); i++) {
+        struct dump *d = g->styles.dump[i];
+        int ok = 0;
+        for (int k = 0; across_ranks[k]; k++)
+            ok = ok || strcmp(across_ranks[k], d->style->name) == 0;
+        if (!ok) {
+            char why[160];
+            snprintf(why, sizeof why, "dump %s (%.60s)", d->id, d->style->name);
+            par_refuse(g, why);
+        }
+    }
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
         if (d->style->init)
@@ -480,12 +495,14 @@ void dump_setup_all(struct gravel *g)
         if (due && d->last_dump != g->step) {
             if (!synced) {
                 run_sync_host(g);
+                par_gather_begin(g); /* several ranks: every atom, rank 0 writes */
                 synced = 1;
             }
             dump_write(g, d);
         }
         d->next_dump = next_multiple(g->step, d->every);
     }
+    par_gather_end(g);
 }
 
 int dump_due(struct gravel *g, bigint step)
@@ -503,12 +520,14 @@ int dump_step_all(struct gravel *g)
     if (!dump_due(g, g->step))
         return 0;
     run_sync_host(g);
+    par_gather_begin(g); /* several ranks: every atom, rank 0 writes */
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
         if (g->step % d->every == 0 && d->last_dump != g->step)
             dump_write(g, d);
         d->next_dump = next_multiple(g->step, d->every);
     }
+    par_gather_end(g);
     return 1;
 }
 

@@ -376,6 +376,10 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     if (s->nsteps > 0)
         gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
                  s->ncontact, (double)s->nlaunch / (double)s->nsteps);
+    if (comm_size() > 1 && s->nsteps > 0)
+        gr_print(g, "Communication per rank and step = %.6g bytes in %.4g messages to other "
+                    "ranks, %.6g bytes into %.4g collectives (mean over %d ranks)\n",
+                 s->comm_bytes, s->comm_msgs, s->coll_bytes, s->coll_calls, comm_size());
     if (s->natoms > 0)
         gr_print(g, "Device memory = %.4g Mbytes at most (%.0f bytes per atom)\n",
                  s->mem_peak / 1e6, s->mem_peak / s->natoms);

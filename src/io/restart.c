@@ -26,6 +26,7 @@
  * evaluation is not bitwise idempotent for sliding contacts). Anything else
  * falls back to LAMMPS semantics: rebuild, history carried by partner tag,
  * setup forces. */
+#include "comm.h"
 #include "restart.h"
 
 #include <dirent.h>
@@ -992,6 +993,9 @@ void cmd_write_restart(struct gravel *g, int argc, char **argv)
         gr_error(g, "unknown keyword '%.64s' (write_restart takes only a file name)", argv[1]);
     }
     check_name(g, argv[0]);
+    if (comm_size() > 1) /* the contacts' history lives on the ranks' devices */
+        gr_error(g, "write_restart on %d MPI ranks is not built yet (doc/parallel.md): write "
+                    "restart files from one process", comm_size());
     char path[4096];
     expand_star(g, argv[0], path, sizeof path);
     restart_write(g, path);

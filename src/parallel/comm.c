@@ -22,12 +22,32 @@ static int by_key(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+static double count_[4]; /* comm_counters */
+
+void comm_counters(double c[4])
+{
+    for (int k = 0; k < 4; k++)
+        c[k] = count_[k];
+}
+
+void comm_counters_reset(void) { memset(count_, 0, sizeof count_); }
+
 #ifdef GR_MPI
+
+static void collective(size_t bytes)
+{
+    count_[2] += (double)bytes;
+    count_[3] += 1;
+}
 
 static int rank_, size_ = 1;
 
 int comm_init(int *argc, char ***argv)
 {
+    /* a rank waiting for another yields its core (OpenMPI spins otherwise,
+     * taking the core the other rank's PoCL threads compute on); the
+     * environment's own setting wins */
+    setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
@@ -48,6 +68,7 @@ void comm_barrier(void) { MPI_Barrier(MPI_COMM_WORLD); }
 long long comm_sum_ll(long long v)
 {
     long long s = 0;
+    collective(sizeof v);
     MPI_Allreduce(&v, &s, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
     return s;
 }
@@ -55,12 +76,14 @@ long long comm_sum_ll(long long v)
 int comm_max_int(int v)
 {
     int s = 0;
+    collective(sizeof v);
     MPI_Allreduce(&v, &s, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     return s;
 }
 
 void comm_minmax(double *lo, double *hi, int n)
 {
+    collective(2 * (size_t)n * sizeof(double));
     MPI_Allreduce(MPI_IN_PLACE, lo, n, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
     MPI_Allreduce(MPI_IN_PLACE, hi, n, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
 }
@@ -69,6 +92,8 @@ void comm_bcast(void *buf, size_t bytes)
 {
     if (bytes > INT_MAX)
         comm_abort(1);
+    if (rank_ == 0)
+        collective(bytes);
     MPI_Bcast(buf, (int)bytes, MPI_BYTE, 0, MPI_COMM_WORLD);
 }
 
@@ -121,8 +146,13 @@ size_t comm_alltoallv(void *const *send, const size_t *sendbytes, void **recv, s
         return (size_t)-1;
     }
     for (int r = 0; r < p; r++)
-        if (sendbytes[r])
+        if (sendbytes[r]) {
             memcpy(sbuf + sd[r], send[r], sendbytes[r]);
+            if (r != rank_) {
+                count_[0] += (double)sendbytes[r];
+                count_[1] += 1;
+            }
+        }
     MPI_Alltoallv(sbuf, sc, sd, MPI_BYTE, rbuf, rc, rd, MPI_BYTE, MPI_COMM_WORLD);
     free(sbuf);
     free(sc);
@@ -165,6 +195,7 @@ size_t comm_allgatherv(const void *send, size_t bytes, void **all)
         *all = NULL;
         return (size_t)-1;
     }
+    collective(bytes);
     MPI_Allgatherv(send, (int)bytes, MPI_BYTE, buf, cnt, cnt + p, MPI_BYTE, MPI_COMM_WORLD);
     free(each);
     free(cnt);

@@ -40,6 +40,13 @@ size_t comm_alltoallv(void *const *send, const size_t *sendbytes, void **recv,
  * returned ((size_t)-1 on allocation failure). */
 size_t comm_allgatherv(const void *send, size_t bytes, void **all);
 
+/* What this rank sent since the last reset: bytes and messages to other
+ * ranks in personalized exchanges (c[0], c[1]); bytes it put into
+ * collectives (gathers, reductions, broadcasts) and their number (c[2],
+ * c[3]). Not collective. */
+void comm_counters(double c[4]);
+void comm_counters_reset(void);
+
 /* The sum of the values v[k] of keys key[k] over every rank, added in
  * ascending key order (keys unique over the ranks): the same bits as one
  * process adding the same values in key order, on any number of ranks.

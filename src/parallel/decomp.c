@@ -2,6 +2,7 @@
 #include "decomp.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "comm.h"
@@ -10,7 +11,7 @@
 void decomp_setup(struct gravel *g, struct decomp *d)
 {
     const struct domain *dm = &g->dom;
-    int n = comm_size();
+    int n = comm_size(), was[3] = {d->p[0], d->p[1], d->p[2]};
     double L[3];
     for (int q = 0; q < 3; q++)
         L[q] = dm->hi[q] - dm->lo[q];
@@ -41,10 +42,29 @@ void decomp_setup(struct gravel *g, struct decomp *d)
     if (!found)
         gr_error(g, "processors %d %d %d (0 = *) does not factor the %d ranks%s", d->user[0],
                  d->user[1], d->user[2], n, dm->dimension == 2 ? " with Pz = 1 (2d)" : "");
+    if (memcmp(was, d->p, sizeof was) != 0)
+        decomp_free(d); /* a new grid: even slabs again */
     int r = comm_rank();
     d->me[0] = r % d->p[0];
     d->me[1] = r / d->p[0] % d->p[1];
     d->me[2] = r / (d->p[0] * d->p[1]);
+}
+
+void decomp_free(struct decomp *d)
+{
+    for (int q = 0; q < 3; q++) {
+        free(d->cut[q]);
+        d->cut[q] = NULL;
+    }
+}
+
+double decomp_cut(const struct decomp *d, int q, int k)
+{
+    if (k <= 0)
+        return 0.0;
+    if (k >= d->p[q])
+        return 1.0;
+    return d->cut[q] ? d->cut[q][k] : (double)k / d->p[q];
 }
 
 /* brick index of coordinate x in dimension q */
@@ -54,8 +74,20 @@ static int slab(const struct gravel *g, const struct decomp *d, int q, double x)
     double L = dm->hi[q] - dm->lo[q], s = (x - dm->lo[q]) / L;
     if (dm->periodic[q])
         s -= floor(s);
-    int k = (int)floor(s * d->p[q]);
-    return k < 0 ? 0 : k >= d->p[q] ? d->p[q] - 1 : k;
+    int n = d->p[q];
+    if (!d->cut[q]) {
+        int k = (int)floor(s * n);
+        return k < 0 ? 0 : k >= n ? n - 1 : k;
+    }
+    int lo = 0, hi = n - 1; /* the last slab whose lower cut is <= s */
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (d->cut[q][mid] <= s)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
 }
 
 int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3])
@@ -70,7 +102,50 @@ void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double 
     int c[3] = {r % d->p[0], r / d->p[0] % d->p[1], r / (d->p[0] * d->p[1])};
     for (int q = 0; q < 3; q++) {
         double L = dm->hi[q] - dm->lo[q];
-        lo[q] = dm->lo[q] + L * c[q] / d->p[q];
-        hi[q] = c[q] + 1 == d->p[q] ? dm->hi[q] : dm->lo[q] + L * (c[q] + 1) / d->p[q];
+        lo[q] = dm->lo[q] + L * decomp_cut(d, q, c[q]);
+        hi[q] = c[q] + 1 == d->p[q] ? dm->hi[q] : dm->lo[q] + L * decomp_cut(d, q, c[q] + 1);
     }
 }
+
+/* Fraction of the box length of coordinate x in dimension q (periodic: wrapped). */
+double decomp_fraction(const struct gravel *g, int q, double x)
+{
+    const struct domain *d = &g->dom;
+    double s = (x - d->lo[q]) / (d->hi[q] - d->lo[q]);
+    if (d->periodic[q])
+        s -= floor(s);
+    return s < 0 ? 0 : s > 1 ? 1 : s;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Cuts of dimension q at the quantiles of the n fractions s (sorted here); even
+ * slabs where the atoms cannot separate them. */
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
+{
+    qsort(s, (size_t)n, sizeof *s, cmp_double);
+    int P = dc->p[q];
+    if (P < 2)
+        return;
+    double *c = malloc(((size_t)P + 1) * sizeof *c);
+    if (!c)
+        return;
+    c[0] = 0;
+    c[P] = 1;
+    for (int k = 1; k < P; k++) {
+        long m = (long)((double)k * (double)n / P);
+        double v = n == 0 ? (double)k / P : m <= 0 ? s[0] : m >= n ? s[n - 1] : 0.5 * (s[m - 1] + s[m]);
+        double floor_k = c[k - 1] + 1e-6; /* every slab keeps a width */
+        c[k] = v > floor_k ? v : floor_k;
+    }
+    for (int k = P - 1; k >= 1; k--) /* and the last ones too */
+        if (c[k] > c[k + 1] - 1e-6)
+            c[k] = c[k + 1] - 1e-6;
+    free(dc->cut[q]);
+    dc->cut[q] = c;
+}
+

@@ -3,7 +3,8 @@
  * The grid is chosen at each run start from the rank count and the box
  * (LAMMPS's ProcMap::onelevel_grid: the factorization of smallest
  * sub-domain surface, `*` free, a given count fixed); bricks split each
- * box length evenly (balance is not built yet). */
+ * box length evenly until `balance` or `fix balance` moves the cuts
+ * (balance.c). */
 #ifndef GR_DECOMP_H
 #define GR_DECOMP_H
 
@@ -13,10 +14,23 @@ struct decomp {
     int user[3];            /* `processors`: the count per dimension, 0 = * */
     int p[3];               /* the grid of the run */
     int me[3];              /* this rank's place in it (rank = x + px (y + py z)) */
+    double *cut[3];         /* balance: p[q] + 1 cuts per dimension as fractions of the
+                             * box length (0 ... 1); NULL = even slabs */
 };
 
-/* The grid of the current box for comm_size() ranks. */
+/* The grid of the current box for comm_size() ranks (cuts kept while the
+ * grid stays the same). */
 void decomp_setup(struct gravel *g, struct decomp *d);
+void decomp_free(struct decomp *d);
+/* Fraction of the box length of coordinate x in dimension q (periodic:
+ * wrapped; clamped to 0 ... 1). */
+double decomp_fraction(const struct gravel *g, int q, double x);
+/* Slab cuts of dimension q at the quantiles of the n fractions s (sorted
+ * in place; balance's shift); even slabs where the atoms cannot separate
+ * them. */
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n);
+/* Fraction of the box length below slab k's lower face in dimension q. */
+double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;
  * outside a fixed face: the nearest brick). */
 int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3]);

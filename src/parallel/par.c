@@ -110,6 +110,11 @@ void par_free(struct gravel *g)
     free(p->sendidx);
     free(p->recvn);
     hist_free(p->hist);
+    decomp_free(&p->dc);
+    for (int k = 0; k < p->nsaved; k++)
+        free(p->saved[k].state);
+    free(p->kept);
+    free(p->tags_built);
     free(p);
     g->par = NULL;
 }
@@ -147,9 +152,20 @@ static size_t raw_pos_bytes(const struct gravel *g)
     return g->eng->single ? 6 * g->eng->rsz : 0; /* x and xlo as the device has them */
 }
 
-static size_t record_bytes(const struct gravel *g)
+/* Device bytes an atom carries besides its field-table rows: its position
+ * bits (single precision), then each fix's per-atom state (fix.h). */
+static size_t extra_bytes(const struct gravel *g)
 {
     size_t b = raw_pos_bytes(g);
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->peratom)
+            b += g->styles.fix[i]->peratom_bytes;
+    return b;
+}
+
+static size_t record_bytes(const struct gravel *g)
+{
+    size_t b = extra_bytes(g);
 #define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
     if (life == FL_STATE)                                                                     \
         b += sizeof(ctype) * (width);
@@ -159,11 +175,11 @@ static size_t record_bytes(const struct gravel *g)
 }
 
 /* atom i's record; raw: its device position bytes (single precision) */
-static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
-                      unsigned char *out)
+static void pack_rows(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
+                      int all, unsigned char *out)
 {
 #define PACK(name, ctype, dev, width, when, life, sect, what)                                  \
-    if (life == FL_STATE) {                                                                   \
+    if (life == FL_STATE || all) {                                                            \
         memcpy(out, a->name + (size_t)i * (width), sizeof(ctype) * (width));                  \
         out += sizeof(ctype) * (width);                                                       \
     }
@@ -173,11 +189,11 @@ static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, si
         memcpy(out, raw, rawb);
 }
 
-static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
-                        size_t rawb)
+static void unpack_rows(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
+                        size_t rawb, int all)
 {
 #define UNPACK(name, ctype, dev, width, when, life, sect, what)                                \
-    if (life == FL_STATE) {                                                                   \
+    if (life == FL_STATE || all) {                                                            \
         memcpy(a->name + (size_t)i * (width), in, sizeof(ctype) * (width));                   \
         in += sizeof(ctype) * (width);                                                        \
     }
@@ -187,12 +203,36 @@ static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigne
         memcpy(raw, in, rawb);
 }
 
+static void pack_atom(const struct atoms *a, int i, const unsigned char *raw, size_t rawb,
+                      unsigned char *out)
+{
+    pack_rows(a, i, raw, rawb, 0, out);
+}
+
+static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigned char *raw,
+                        size_t rawb)
+{
+    unpack_rows(a, i, in, raw, rawb, 0);
+}
+
+/* bytes of every row of the field table (FL_STEP ones too: dumps show forces) */
+static size_t all_rows_bytes(void)
+{
+    size_t b = 0;
+#define BYTES(name, ctype, dev, width, when, life, sect, what) b += sizeof(ctype) * (width);
+    ATOM_FIELDS(BYTES)
+#undef BYTES
+    return b;
+}
+
 /* ---- what runs across ranks --------------------------------------------------------- */
 
 /* Fix styles whose work is per owned atom with no state of their own
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
-                                        "viscous", "setforce", NULL};
+                                        "viscous", "setforce", "wall/gran",
+                                        "wall/gran/region", "balance", "mesh/surface",
+                                        "move/mesh", "pour", NULL};
 static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -200,6 +240,19 @@ static int listed(const char *const *list, const char *name)
     for (int i = 0; list[i]; i++)
         if (strcmp(list[i], name) == 0)
             return 1;
+    return 0;
+}
+
+/* f_ID[...] of a fix whose global values are summed over the ranks
+ * (mesh/surface: the force and torque on the mesh) */
+static int fix_summed(struct gravel *g, const char *ref)
+{
+    size_t len = strcspn(ref, "[");
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        if (strlen(f->id) == len && !strncmp(f->id, ref, len))
+            return !strcmp(f->style->name, "mesh/surface");
+    }
     return 0;
 }
 
@@ -215,6 +268,11 @@ static void check_scene(struct gravel *g)
                      g->styles.fix[i]->style->name);
             why = buf;
         }
+    for (int i = 0; !why && i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->energy) {
+            snprintf(buf, sizeof buf, "fix_modify %s energy yes", g->styles.fix[i]->id);
+            why = buf;
+        }
     for (int i = 0; !why && i < g->styles.ncompute; i++)
         if (!listed(par_computes, g->styles.compute[i]->style->name)) {
             snprintf(buf, sizeof buf, "compute %s (%.60s)", g->styles.compute[i]->id,
@@ -224,26 +282,91 @@ static void check_scene(struct gravel *g)
     static const char *const kw[] = {"step", "elapsed", "elaplong", "atoms", "dt", "time", "cpu",
                                      "tpcpu", "spcpu", "cpuremain", "part", "temp", "ke",
                                      "vol", "lx", "ly", "lz", "xlo", "xhi", "ylo", "yhi",
-                                     "zlo", "zhi", NULL};
-    if (!why && g->thermo.ncol == 0)
-        why = "thermo_style one (its epair and press are not summed over ranks yet: use "
-              "thermo_style custom with step atoms temp ke and the allowed computes)";
+                                     "zlo", "zhi", "press", "pxx", "pyy", "pzz", "pxy",
+                                     "pxz", "pyz", "epair", "emol", "pe", "etotal", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
+        if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))
+            continue;
         if (!listed(kw, c) && strncmp(c, "c_", 2) != 0) {
             snprintf(buf, sizeof buf, "thermo keyword %.60s", c);
             why = buf;
         }
     }
-    if (!why && g->styles.ndump)
-        why = "a dump during the run (write_dump after the run works)";
     if (!why && g->restart)
         why = "restart files";
     if (!why && g->eng && g->eng->hist_owner)
         why = "-compat lammps2021 contact owners";
     if (why)
-        gr_error(g, "%s cannot run on %d MPI ranks yet (doc/parallel.md lists what can); run "
+        par_refuse(g, why);
+}
+
+void par_refuse(struct gravel *g, const char *why)
+{
+    gr_error(g, "%s cannot run on %d MPI ranks yet (doc/parallel.md lists what can); run "
                     "it on one rank", why, comm_size());
+}
+
+static unsigned char *extra_move(struct gravel *g, int n, unsigned char *extra, int up);
+
+/* by tag: the first 8 bytes of a record */
+static int by_first_tag(const void *x, const void *y)
+{
+    int64_t a, b;
+    memcpy(&a, x, sizeof a);
+    memcpy(&b, y, sizeof b);
+    return (a > b) - (a < b);
+}
+
+/* ---- the fixes' per-atom state between runs ------------------------------------------ */
+
+/* At a run's end: each fix's per-atom state of every atom (tag order),
+ * from the gathered extra bytes (eb per atom, positions' bits first). */
+static void save_fix_state(struct gravel *g, const unsigned char *extra, int total, size_t eb)
+{
+    struct par *p = g->par;
+    for (int k = 0; k < p->nsaved; k++)
+        free(p->saved[k].state);
+    p->nsaved = 0;
+    size_t at = raw_pos_bytes(g);
+    for (int i = 0; i < g->styles.nfix && extra; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom)
+            continue;
+        if (p->nsaved == PAR_MAXSAVED)
+            gr_error(g, "more than %d fixes with per-atom state on several ranks", PAR_MAXSAVED);
+        struct par_saved *sv = &p->saved[p->nsaved++];
+        sv->fix = f;
+        sv->bytes = f->peratom_bytes;
+        sv->state = gr_malloc(g, (size_t)total * sv->bytes + 1);
+        for (int a = 0; a < total; a++)
+            memcpy(sv->state + (size_t)a * sv->bytes, extra + (size_t)a * eb + at, sv->bytes);
+        at += f->peratom_bytes;
+    }
+}
+
+void par_fix_state_restore(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->on || !p->kept)
+        return;
+    int n = g->atoms.n;
+    for (int k = 0; k < p->nsaved; k++) {
+        struct par_saved *sv = &p->saved[k];
+        struct fix *f = NULL;
+        for (int i = 0; i < g->styles.nfix; i++)
+            if (g->styles.fix[i] == sv->fix && sv->fix->peratom &&
+                sv->fix->peratom_bytes == sv->bytes)
+                f = sv->fix;
+        if (!f || n == 0)
+            continue;
+        unsigned char *buf = gr_malloc(g, (size_t)n * sv->bytes);
+        for (int a = 0; a < n; a++)
+            memcpy(buf + (size_t)a * sv->bytes, sv->state + (size_t)p->kept[a] * sv->bytes,
+                   sv->bytes);
+        eng_write(g, f->peratom, 0, (size_t)n * sv->bytes, buf);
+        free(buf);
+    }
 }
 
 /* ---- run start and end ---------------------------------------------------------- */
@@ -269,29 +392,24 @@ void par_run_begin(struct gravel *g)
     struct atoms *a = &g->atoms;
     /* the saved contact history belongs to these atoms only (as one rank
      * keeps its list only while the atoms are the same) */
-    if (p->hist && tag_set_key(a) != p->tags_at_end) {
+    int same = tag_set_key(a) == p->tags_at_end;
+    if (p->hist && !same) {
         hist_free(p->hist);
         p->hist = NULL;
     }
+    free(p->kept); /* the fixes' saved state: rows of the kept atoms */
+    p->kept = same && p->nsaved ? gr_malloc(g, ((size_t)a->n + 1) * sizeof(int)) : NULL;
     int me = comm_rank(), k = 0;
     for (int i = 0; i < a->n; i++)
         if (decomp_owner(g, &p->dc, a->x + 3 * (size_t)i) == me) {
             if (k != i)
                 atoms_copy(a, i, k);
+            if (p->kept)
+                p->kept[k] = i;
             k++;
         }
     a->n = k;
     gr_print(g, "Decomposition: %d x %d x %d MPI ranks\n", p->dc.p[0], p->dc.p[1], p->dc.p[2]);
-}
-
-static int by_tag(const void *x, const void *y, void *rb)
-{
-    size_t r = *(size_t *)rb;
-    int64_t a, b;
-    memcpy(&a, (const char *)x + r, sizeof a);
-    memcpy(&b, (const char *)y + r, sizeof b);
-    (void)r;
-    return (a > b) - (a < b);
 }
 
 /* The current contacts' history into *h by tag pair (the device's raw
@@ -311,8 +429,10 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), ci);
     eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
     eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
-    const int64_t *tag = g->atoms.tag;
-    int nown = e->a.n;
+    /* the tags of the atoms the list indexes (owned and ghosts at the build:
+     * an insertion since may have written over the ghosts' host slots) */
+    const int64_t *tag = g->par->tags_built;
+    int nown = g->par->nlocal_built;
     for (int c = 0; c < nc; c++) {
         if (ci[c] >= nown && ci[nc + c] >= nown)
             continue; /* two ghosts: their history is their owners' business */
@@ -373,22 +493,26 @@ void par_run_end(struct gravel *g)
         p->hist = h;
     }
     int n = a->n;
-    size_t rb = record_bytes(g) - raw_pos_bytes(g);
+    size_t eb = extra_bytes(g), rb = record_bytes(g);
+    unsigned char *extra = extra_move(g, n, NULL, 0); /* the fixes' per-atom state */
     unsigned char *mine = gr_malloc(g, (size_t)n * rb + 1), *all = NULL;
     for (int i = 0; i < n; i++)
-        pack_atom(a, i, NULL, 0, mine + (size_t)i * rb);
+        pack_atom(a, i, extra ? extra + (size_t)i * eb : NULL, eb, mine + (size_t)i * rb);
+    free(extra);
     size_t bytes = comm_allgatherv(mine, (size_t)n * rb, (void **)&all);
     free(mine);
     if (bytes == (size_t)-1)
         gr_error(g, "out of memory gathering the atoms of every rank");
     int total = (int)(bytes / rb);
-    size_t tag_at = 0; /* tag is the table's first field */
-    qsort_r(all, (size_t)total, rb, by_tag, &tag_at);
+    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
     atoms_reserve(g, total);
+    extra = eb ? gr_malloc(g, (size_t)total * eb + 1) : NULL;
     for (int i = 0; i < total; i++)
-        unpack_atom(a, i, all + (size_t)i * rb, NULL, 0);
+        unpack_atom(a, i, all + (size_t)i * rb, extra ? extra + (size_t)i * eb : NULL, eb);
     free(all);
     a->n = total;
+    save_fix_state(g, extra, total, eb);
+    free(extra);
     p->tags_at_end = tag_set_key(a);
     p->on = 0;
     p->nghost = 0;
@@ -449,24 +573,47 @@ static double gap(double x, double lo, double hi, double L, int periodic)
     return best;
 }
 
-/* raw device positions (x, then xlo: single precision) of atoms 0 .. n-1 */
-static unsigned char *raw_positions(struct gravel *g, int n)
+/* one device array's rows 0 .. n-1 (w bytes each) to or from column `at`
+ * of the extra bytes (stride eb) */
+static void extra_column(struct gravel *g, cl_mem m, int n, size_t w, unsigned char *extra,
+                         size_t eb, size_t at, int up)
+{
+    unsigned char *col = gr_malloc(g, (size_t)n * w + 1);
+    if (!up)
+        eng_read(g, m, 0, (size_t)n * w, col);
+    for (int i = 0; i < n; i++)
+        if (up)
+            memcpy(col + (size_t)i * w, extra + (size_t)i * eb + at, w);
+        else
+            memcpy(extra + (size_t)i * eb + at, col + (size_t)i * w, w);
+    if (up)
+        eng_write(g, m, 0, (size_t)n * w, col);
+    free(col);
+}
+
+/* The extra bytes of atoms 0 .. n-1 from the device (NULL when none), or
+ * back to it (up). */
+static unsigned char *extra_move(struct gravel *g, int n, unsigned char *extra, int up)
 {
     struct engine *e = g->eng;
-    size_t half = 3 * e->rsz, rb = raw_pos_bytes(g);
-    if (!rb || n == 0)
-        return NULL;
-    unsigned char *x = gr_malloc(g, (size_t)n * half), *lo = gr_malloc(g, (size_t)n * half);
-    unsigned char *raw = gr_malloc(g, (size_t)n * rb);
-    eng_read(g, e->a.x, 0, (size_t)n * half, x);
-    eng_read(g, e->a.xlo, 0, (size_t)n * half, lo);
-    for (int i = 0; i < n; i++) {
-        memcpy(raw + (size_t)i * rb, x + (size_t)i * half, half);
-        memcpy(raw + (size_t)i * rb + half, lo + (size_t)i * half, half);
+    size_t eb = extra_bytes(g), half = 3 * e->rsz, at = 0;
+    if (!eb || n == 0)
+        return extra;
+    if (!up)
+        extra = gr_malloc(g, (size_t)n * eb);
+    if (raw_pos_bytes(g)) {
+        extra_column(g, e->a.x, n, half, extra, eb, 0, up);
+        extra_column(g, e->a.xlo, n, half, extra, eb, half, up);
+        at = 2 * half;
     }
-    free(x);
-    free(lo);
-    return raw;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!f->peratom)
+            continue;
+        extra_column(g, f->peratom, n, f->peratom_bytes, extra, eb, at, up);
+        at += f->peratom_bytes;
+    }
+    return extra;
 }
 
 static int cmp_i64(const void *x, const void *y)
@@ -497,10 +644,55 @@ static void check_bricks(struct gravel *g, const struct par *p, double cut)
     const struct domain *d = &g->dom;
     for (int q = 0; q < 3; q++) {
         double L = d->hi[q] - d->lo[q];
-        if (d->periodic[q] && p->dc.p[q] > 1 && L / p->dc.p[q] + 2 * cut >= L)
-            gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the ghost "
-                        "cut-off %g exceeds the box %g; use fewer ranks in %c (processors)",
-                     p->dc.p[q], "xyz"[q], L / p->dc.p[q], cut, L, "xyz"[q]);
+        for (int k = 0; d->periodic[q] && p->dc.p[q] > 1 && k < p->dc.p[q]; k++) {
+            double w = L * (decomp_cut(&p->dc, q, k + 1) - decomp_cut(&p->dc, q, k));
+            if (w + 2 * cut >= L)
+                gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the "
+                            "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
+                            "(processors) or even slabs", p->dc.p[q], "xyz"[q], w, cut, L,
+                         "xyz"[q]);
+        }
+    }
+}
+
+/* fix balance at a rebuild, before the atoms move: when the imbalance
+ * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
+ * dimensions in dims move to the quantiles of every rank's atoms. */
+static void rebalance(struct gravel *g, unsigned dims, double thresh)
+{
+    struct par *p = g->par;
+    struct decomp *dc = &p->dc;
+    const struct atoms *a = &g->atoms;
+    long long n = comm_sum_ll(a->n);
+    int P = dc->p[0] * dc->p[1] * dc->p[2];
+    /* each rank's count under the current cuts: its own atoms */
+    long long mine = a->n, big = mine;
+    {
+        long long *all = NULL;
+        size_t b = comm_allgatherv(&mine, sizeof mine, (void **)&all);
+        if (b == (size_t)-1)
+            gr_error(g, "out of memory balancing");
+        big = 0;
+        for (size_t r = 0; r < b / sizeof mine; r++)
+            big = all[r] > big ? all[r] : big;
+        free(all);
+    }
+    double imb = n > 0 ? (double)big * P / (double)n : 1.0;
+    if (!(imb > thresh))
+        return;
+    for (int q = 0; q < 3; q++) {
+        if (!(dims & (1u << q)) || dc->p[q] < 2)
+            continue;
+        double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
+        for (int k = 0; k < a->n; k++)
+            s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+        size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
+        free(s);
+        if (b == (size_t)-1)
+            gr_error(g, "out of memory balancing");
+        long m = (long)(b / sizeof *all);
+        decomp_quantile_cuts(dc, q, all, m);
+        free(all);
     }
 }
 
@@ -515,34 +707,47 @@ void par_exchange(struct gravel *g, double cut)
     check_bricks(g, p, cut);
     run_sync_host(g);
     int n = a->n;
-    size_t rawb = raw_pos_bytes(g), rb = record_bytes(g);
-    unsigned char *raw = raw_positions(g, n);
+    size_t rawb = extra_bytes(g), rb = record_bytes(g);
+    unsigned char *raw = extra_move(g, n, NULL, 0); /* positions' bits, fixes' state */
     /* the history to carry: the current contacts', or the table saved at the
      * last run's end (the first build of a run) */
     struct par_hist *old = p->hist;
     p->hist = NULL;
     if (e->history && p->list_current)
         hist_collect(g, &old);
+    if (p->balance_dims) { /* fix balance: slab cuts at the atoms' quantiles */
+        rebalance(g, p->balance_dims, p->balance_thresh);
+        p->balance_dims = 0;
+        check_bricks(g, p, cut);
+    }
     /* destinations; an atom outside a fixed face is lost */
     int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
     int64_t *tagdest = gr_malloc(g, (2 * (size_t)n + 1) * sizeof(int64_t));
+    int nlost = 0;
     for (int i = 0; i < n; i++) {
         const double *x = a->x + 3 * (size_t)i;
+        int out = 0; /* as the bins of one process: [lo, hi) */
         for (int q = 0; q < 3; q++)
-            if (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] <= dm->hi[q]))
-                gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed "
-                            "%c face at step %lld", (long long)a->tag[i], x[0], x[1], x[2],
-                         "xyz"[q], (long long)g->step);
-        dest[i] = decomp_owner(g, &p->dc, x);
+            out = out || (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] < dm->hi[q]));
+        if (out && g->thermo.lost == LOST_ERROR)
+            gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed face "
+                        "at step %lld; thermo_modify lost ignore|warn keeps going",
+                     (long long)a->tag[i], x[0], x[1], x[2], (long long)g->step);
+        dest[i] = out ? -1 : decomp_owner(g, &p->dc, x); /* -1: lost, dropped */
+        nlost += out;
         tagdest[2 * i] = a->tag[i];
         tagdest[2 * i + 1] = dest[i];
     }
+    long long before = comm_sum_ll(n), lost = comm_sum_ll(nlost);
+    if (lost && g->thermo.lost == LOST_WARN)
+        gr_warn(g, "Lost atoms: original %lld current %lld (step %lld)", before, before - lost,
+                (long long)g->step);
     qsort(tagdest, (size_t)n, 2 * sizeof(int64_t), cmp_i64);
     /* 1. atoms that left the brick */
     struct outbox ob;
     outbox_init(g, &ob, P);
     for (int i = 0; i < n; i++)
-        if (dest[i] != me)
+        if (dest[i] != me && dest[i] >= 0)
             pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb,
                       outbox_room(g, &ob, dest[i], rb));
     size_t inb, from[P];
@@ -650,8 +855,12 @@ void par_exchange(struct gravel *g, double cut)
     free(in);
     /* 5. the device: owned, then ghosts */
     p->nghost = nghost;
-    eng_reload(g, nlocal, nghost, raw);
+    eng_reload(g, nlocal, nghost);
+    extra_move(g, nlocal + nghost, raw, 1);
     free(raw);
+    p->tags_built = gr_realloc(g, p->tags_built, ((size_t)nlocal + nghost + 1) * sizeof(int64_t));
+    memcpy(p->tags_built, a->tag, ((size_t)nlocal + nghost) * sizeof(int64_t));
+    p->nlocal_built = nlocal;
     p->list_current = 0;
 }
 
@@ -756,4 +965,91 @@ double par_sum_total(struct gravel *g, struct par_sum *s)
     free(s->v);
     memset(s, 0, sizeof *s);
     return t;
+}
+
+/* ---- every atom on every rank for an output step ------------------------------- */
+
+void par_gather_begin(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->on || p->gathered)
+        return;
+    struct engine *e = g->eng;
+    run_sync_host(g);
+    struct atoms *a = &g->atoms;
+    size_t rb = all_rows_bytes();
+    unsigned char *mine = gr_malloc(g, (size_t)a->n * rb + 1), *all = NULL;
+    for (int i = 0; i < a->n; i++)
+        pack_rows(a, i, NULL, 0, 1, mine + (size_t)i * rb);
+    size_t bytes = comm_allgatherv(mine, (size_t)a->n * rb, (void **)&all);
+    free(mine);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank for output");
+    int total = (int)(bytes / rb);
+    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
+    p->local = *a;
+    struct atoms full = {0};
+    full.ntypes = a->ntypes;
+    full.molecule_flag = a->molecule_flag;
+    full.style_molecular = a->style_molecular;
+    full.heat_flag = a->heat_flag;
+    full.type_mass = a->type_mass;
+    full.maxtag = a->maxtag;
+    *a = full;
+    atoms_reserve(g, total);
+    for (int i = 0; i < total; i++)
+        unpack_rows(a, i, all + (size_t)i * rb, NULL, 0, 1);
+    a->n = total;
+    free(all);
+    p->gathered = 1;
+    p->on = 0;      /* host sums over the whole set, as one process */
+    e->active = 0;  /* the device holds this rank's atoms: no sync into the whole set */
+}
+
+void par_gather_end(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->gathered)
+        return;
+    atoms_free_fields(&g->atoms);
+    g->atoms = p->local;
+    memset(&p->local, 0, sizeof p->local);
+    p->gathered = 0;
+    p->on = 1;
+    g->eng->active = 1;
+}
+
+/* ---- insertion on several ranks (fix pour) ---------------------------------------- */
+
+int par_owns(struct gravel *g, const double x[3])
+{
+    return !par_on(g) || decomp_owner(g, &g->par->dc, x) == comm_rank();
+}
+
+int par_gather_rows(struct gravel *g, double **rows, int n, int width)
+{
+    if (!par_on(g))
+        return n;
+    double *all = NULL;
+    size_t w = (size_t)width * sizeof(double);
+    size_t bytes = comm_allgatherv(*rows, (size_t)n * w, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank");
+    free(*rows);
+    *rows = all;
+    return (int)(bytes / w);
+}
+
+int64_t par_max_tag(struct gravel *g, int64_t mine)
+{
+    if (!par_on(g))
+        return mine;
+    int64_t *all = NULL, m = mine;
+    size_t bytes = comm_allgatherv(&mine, sizeof mine, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the ranks' largest atom IDs");
+    for (size_t r = 0; r < bytes / sizeof mine; r++)
+        m = all[r] > m ? all[r] : m;
+    free(all);
+    return m;
 }

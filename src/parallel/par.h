@@ -26,6 +26,15 @@
 #include "state.h"
 
 struct par_hist;
+struct fix;
+
+/* a fix's per-atom state of every atom at the last run's end (tag order) */
+struct par_saved {
+    struct fix *fix;
+    size_t bytes;           /* per atom */
+    unsigned char *state;
+};
+#define PAR_MAXSAVED 32
 
 struct par {
     struct decomp dc;
@@ -35,8 +44,17 @@ struct par {
     int *sendn, *soff, *sendidx; /* ghosts sent to each rank: owned indices */
     int *recvn;             /* ghosts received from each rank, in slot order */
     int list_current;       /* the device's contacts index the current atoms */
+    int64_t *tags_built;    /* the tags of the owned and ghost slots at the last build */
+    int nlocal_built;
     struct par_hist *hist;  /* contact history by tag pair across a rebuild or runs */
     uint64_t tags_at_end;   /* tag set the saved history belongs to (0: none) */
+    struct par_saved saved[PAR_MAXSAVED];
+    int nsaved;
+    int *kept;              /* run start: the kept atoms' rows in the last run's end set */
+    unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
+    double balance_thresh;
+    int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
+    struct atoms local;
 };
 
 /* `processors Px Py Pz`: the grid's counts (checked against the rank count
@@ -50,9 +68,14 @@ int par_on(const struct gravel *g);
 /* Ghost slots behind the owned atoms on the device (0 when not decomposed). */
 int par_nghost(const struct gravel *g);
 
+/* Stop a decomposed run: why (a style, a keyword) cannot run across ranks yet. */
+_Noreturn void par_refuse(struct gravel *g, const char *why);
 /* Run start, before the upload: refuse what cannot run across ranks yet,
  * choose the grid and keep the atoms of this rank's brick. */
 void par_run_begin(struct gravel *g);
+/* Run start, after the fixes' init: their per-atom state as the last run
+ * left it, when the atoms are the same (as one process keeps it). */
+void par_fix_state_restore(struct gravel *g);
 /* A neighbor rebuild, after the periodic wrap: owned atoms to their ranks
  * with their contacts' history, ghosts chosen and everything uploaded
  * (owned, then ghosts). The ghost cut-off is cut. */
@@ -63,6 +86,22 @@ void par_history_restore(struct gravel *g);
 void par_forward(struct gravel *g);
 /* Run end: every rank's host holds all atoms in tag order. */
 void par_run_end(struct gravel *g);
+/* Output steps of a decomposed run (dumps): every rank's atoms, all fields,
+ * in tag order in g->atoms, sums and syncs as one process, until
+ * par_gather_end restores this rank's own. No device work in between. */
+void par_gather_begin(struct gravel *g);
+void par_gather_end(struct gravel *g);
+
+/* Insertion on several ranks (fix pour): every rank draws the same
+ * particles from the same neighbors and keeps those of its brick.
+ * par_owns: x lies in this rank's brick (1 on one rank). par_gather_rows:
+ * the n rows of `width` doubles at *rows (malloc'd) become every rank's
+ * rows, rank by rank (returns their count). par_max_tag: the largest of
+ * every rank's `mine`. Collective but par_owns. */
+int par_owns(struct gravel *g, const double x[3]);
+int par_gather_rows(struct gravel *g, double **rows, int n, int width);
+int64_t par_max_tag(struct gravel *g, int64_t mine);
+
 /* A sum over the atoms of every rank in one process's order: terms added
  * with ascending keys (a tag, or 2 tag + k for several terms per atom) give
  * the bits of one process adding them in that order. On one rank the terms

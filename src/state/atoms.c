@@ -107,6 +107,17 @@ void atoms_set_ntypes(struct gravel *g, int ntypes)
     a->ntypes = ntypes;
 }
 
+void atoms_free_fields(struct atoms *a)
+{
+#define FREE(name, ctype, dev, width, when, life, sect, what)                                  \
+    field_free(a->name, (size_t)a->cap * (width) * sizeof(ctype));
+    ATOM_FIELDS(FREE)
+#undef FREE
+    free(a->order);
+    a->order = NULL;
+    a->order_cap = 0;
+}
+
 void atoms_free(struct atoms *a)
 {
 #define FREE(name, ctype, dev, width, when, life, sect, what)                                  \

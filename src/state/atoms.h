@@ -23,6 +23,9 @@ void atoms_remove(struct gravel *g, int i);
 /* Set ntypes and size the per-type tables. */
 void atoms_set_ntypes(struct gravel *g, int ntypes);
 void atoms_free(struct atoms *a);
+/* Release the per-atom arrays and the order scratch only (the per-type
+ * tables stay: a temporary set that shares them, src/parallel/par.c). */
+void atoms_free_fields(struct atoms *a);
 /* Atom indices in ascending tag order (valid until the atoms change):
  * host reductions (thermo, computes) sum in this order, so their results
  * do not depend on the device's memory order (atom_modify sort). */

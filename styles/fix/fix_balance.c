@@ -1,11 +1,27 @@
-/* fix_balance.c - `fix ID group balance Nfreq thresh style args ...`: LAMMPS's
- * dynamic load balancing across MPI ranks. gravel runs on one device, so
- * there is nothing to balance: the fix is accepted (its arguments checked
- * for the Nfreq and threshold LAMMPS requires) with a one-line warning,
- * and does nothing. */
+/* fix_balance.c - `fix ID group balance Nfreq thresh shift dimstr Niter
+ * stopthresh`: LAMMPS's dynamic load balance of a decomposed run
+ * (bin/gravel-mpi, doc/parallel.md). Every Nfreq steps it forces a
+ * neighbor rebuild; there, when the largest rank holds more than thresh
+ * times the mean, the grid's slab cuts in dimstr move to the quantiles of
+ * the atoms (balance.h) before the atoms move to their ranks. Nfreq 0:
+ * once, at the run's first rebuild. On one process there is nothing to
+ * balance: it warns, and forces the same rebuilds (so a run gives the same
+ * bits on any number of ranks). */
+#include <stdlib.h>
+#include <string.h>
+
 #include "args.h"
+#include "balance.h"
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
+#include "par.h"
+
+struct fix_balance {
+    int nfreq;
+    double thresh;
+    unsigned dims;
+};
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -15,14 +31,63 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     double thresh = arg_double(g, argv[1], "thresh");
     if (nfreq < 0)
         gr_error(g, "fix balance Nfreq must be >= 0");
-    if (thresh < 1.0)
+    if (!(thresh >= 1.0))
         gr_error(g, "fix balance thresh must be >= 1.0");
-    gr_warn(g, "fix %s balance: gravel runs on one device, there is nothing to balance "
-               "(accepted, ignored)", f->id);
-    f->hooks = 0;
+    if (!strcmp(argv[2], "rcb") && comm_size() == 1) { /* LAMMPS decks: nothing to do */
+        gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
+        return;
+    }
+    if (!strcmp(argv[2], "rcb"))
+        gr_error(g, "fix balance rcb (tiled sub-domains) is not supported: gravel decomposes "
+                    "into bricks; use shift");
+    if (strcmp(argv[2], "shift") != 0)
+        gr_error(g, "fix balance style '%s' is not supported (shift)", argv[2]);
+    if (argc != 6)
+        gr_error(g, "fix balance shift needs dimstr Niter stopthresh (and no keywords)");
+    struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
+    f->data = b;
+    b->nfreq = nfreq;
+    b->thresh = thresh;
+    b->dims = balance_dims(g, argv[3]);
+    if (arg_int(g, argv[4], "fix balance Niter") < 1)
+        gr_error(g, "fix balance Niter must be >= 1");
+    if (!(arg_double(g, argv[5], "fix balance stopthresh") >= 1.0))
+        gr_error(g, "fix balance stopthresh must be >= 1.0");
+    if (comm_size() == 1)
+        gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
+    f->hooks = HOOK_PRE_EXCHANGE;
 }
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct fix_balance *b = f->data;
+    if (!b)
+        return; /* rcb on one process */
+    f->force_reneighbor = 1; /* on one process too: the same rebuilds, the same bits */
+    bigint n = b->nfreq;
+    f->next_reneighbor = n > 0 ? (g->step / n + 1) * n : g->step + 1;
+}
+
+/* A rebuild step: at the fix's steps, ask the coming exchange to balance. */
+static void pre_exchange(struct gravel *g, struct fix *f)
+{
+    struct fix_balance *b = f->data;
+    if (!b || f->next_reneighbor != g->step)
+        return;
+    if (par_on(g)) {
+        struct par *p = par_state(g);
+        p->balance_dims = b->dims;
+        p->balance_thresh = b->thresh;
+    }
+    f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;
+}
+
+static void destroy(struct fix *f) { free(f->data); }
 
 const struct fix_style fix_style_balance = {
     .name = "balance",
     .create = create,
+    .init = init,
+    .pre_exchange = pre_exchange,
+    .destroy = destroy,
 };

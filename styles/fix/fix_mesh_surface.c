@@ -38,6 +38,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "par.h"
 #include "pair.h"
 #include "rigid_math.h"
 
@@ -502,9 +503,12 @@ static double vector(struct gravel *g, struct fix *f, int i)
                 idx[k] = k;
             sort_tag = tag;
             qsort(idx, (size_t)n, sizeof *idx, cmp_tag);
-            for (int k = 0; k < n; k++)
-                for (int c = 0; c < 6; c++)
-                    ms->cache[c] += fm[6 * idx[k] + c];
+            for (int c = 0; c < 6; c++) { /* every rank's atoms, in tag order */
+                struct par_sum sum = {0};
+                for (int k = 0; k < n; k++)
+                    par_sum_add(g, &sum, tag[idx[k]], fm[6 * idx[k] + c]);
+                ms->cache[c] = par_sum_total(g, &sum);
+            }
             free(fm);
             free(tag);
             free(idx);

@@ -53,6 +53,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "par.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
 #include "log.h"
@@ -167,6 +168,17 @@ static int near_list(struct gravel *g, struct pour *p, const struct atoms *a, in
             q[0] = a->x[3 * i], q[1] = a->x[3 * i + 1], q[2] = a->x[3 * i + 2];
             q[3] = a->radius[i];
         }
+    if (par_on(g)) { /* several ranks: the near atoms of every rank, on every rank */
+        double *rows = gr_malloc(g, (size_t)(nnear + 1) * 4 * sizeof(double));
+        memcpy(rows, p->near, (size_t)nnear * 4 * sizeof(double));
+        nnear = par_gather_rows(g, &rows, nnear, 4);
+        if (nnear + extra > p->near_cap) {
+            p->near_cap = nnear + extra;
+            p->near = gr_realloc(g, p->near, (size_t)(p->near_cap + 1) * 4 * sizeof(double));
+        }
+        memcpy(p->near, rows, (size_t)nnear * 4 * sizeof(double));
+        free(rows);
+    }
     return nnear;
 }
 
@@ -217,13 +229,14 @@ static int64_t max_mol(const struct gravel *g)
     return m;
 }
 
-static int64_t max_tag(const struct gravel *g)
+/* The largest atom ID of every rank. */
+static int64_t max_tag(struct gravel *g)
 {
     int64_t m = 0;
     for (int i = 0; i < g->atoms.n; i++)
         if (g->atoms.tag[i] > m)
             m = g->atoms.tag[i];
-    return m;
+    return par_max_tag(g, m);
 }
 
 /* The first fix whose style starts with "gravity" (LAMMPS ^gravity). */
@@ -801,6 +814,8 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     if (f->next_reneighbor != g->step)
         return;
     if (p->mol) {
+        if (par_on(g))
+            par_refuse(g, "fix pour of molecules");
         run_sync_host(g);
         pre_exchange_mol(g, f);
         return;
@@ -871,7 +886,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
             if (k < top)
                 above = above && in;
         }
-        if (inbox || above) {
+        if ((inbox || above) && par_owns(g, c)) { /* several ranks: the brick's owner */
             int n = atoms_add(g, maxtag + 1, p->ntype, c, radtmp,
                               4.0 * M_PI / 3.0 * radtmp * radtmp * radtmp * denstmp);
             a->mask[n] = 1u | f->groupbit;

@@ -2,10 +2,15 @@
 # mpi_ranks.sh - bin/gravel-mpi on 1, 2, 3, 4 and 8 ranks (oversubscribed):
 # the thermo rows (17 digits) and the final atoms (write_dump, sorted by ID,
 # 17 digits) are bit-identical to bin/gravel on one process, across two runs
-# (contact history carried by tag pair through migrations and between runs),
-# for a periodic gas crossing every face and corner of the bricks and the
+# (contact history carried by tag pair through migrations and between runs;
+# thermo's sums, the pressure tensor included, in global tag order),
+# for a periodic gas crossing every face and corner of the bricks, a gas
+# under gravity between plane and region walls (wall history), the example
+# mill (a turning STL mesh, its force and torque in thermo), three fix pour
+# decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
-# single precision; errors end every rank with one message (doc/parallel.md).
+# single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
+# file byte-identical); errors end every rank with one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 serial="$root/bin/gravel"
@@ -25,7 +30,8 @@ trap 'rm -rf "$t"' EXIT
 cd "$t" || exit 1
 ln -s "$data" data.chute
 
-# a hot gas: periodic in x y z, atoms cross every brick face, edge and corner
+# a hot gas: periodic in x y z, atoms cross every brick face, edge and corner;
+# LAMMPS's default thermo_style one (temp, epair, emol, etotal, press)
 cat > gas.in <<'IN'
 variable        pz index 0
 units           lj
@@ -45,7 +51,6 @@ neigh_modify    every 1 delay 0
 fix             1 all nve/sphere
 timestep        0.0002
 compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 temp
 thermo_modify   norm no format float %.17g
 thermo          100
 run             600
@@ -72,24 +77,76 @@ fix             1 all gravity 1.0 chute 26.0
 fix             2 bottom freeze
 fix             3 active nve/sphere
 compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 vol
+thermo_style    custom step atoms ke c_1 vol press pxy pyz epair pe etotal temp
 thermo_modify   norm no format float %.17g
 thermo          30
+dump            d1 all custom 40 d.*.txt id type x y z vx vy vz fx fy fz omegax tqz
+dump_modify     d1 sort id format float %.17g
+dump            d2 all vtk 60 v_*.vtk
+dump_modify     d2 sort id
 run             120
 run             60
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
+# walls: a plane pair and a region sphere with contact history (the fixes'
+# per-atom state moves with its atom and survives between runs), gravity
+cat > wall.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 12 0 12 0 12
+create_box      1 box
+region          fill block 0 12 0 12 1 11
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             2 all gravity 10.0 vector 0 0 -1
+fix             3 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 12.0
+region          ball sphere 6 6 6 2.0 side out
+region          core sphere 6 6 6 2.6
+delete_atoms    region core
+fix             4 all wall/gran/region hooke/history 200000.0 NULL 50.0 NULL 0.5 1 region ball
+timestep        0.0002
+thermo_modify   norm no format float %.17g
+thermo          100
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
 
-rows() { grep -E '^ +[0-9]+ +[0-9]+ ' "$1"; }
+# the example mill: a turning STL mesh (fix mesh/surface + move/mesh + wall/gran
+# mesh, with history), the mesh's force and torque in thermo (f_mill[6], f_mill[7])
+grep -v "mesh/vtk\|^dump            1" "$root/inputs/examples/mill.in" |
+    sed 's/^thermo_modify   norm no/thermo_modify   norm no format float %.17g/; s/^thermo          1000/thermo          200/' > mill.in
+echo 'write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' >> mill.in
+cp "$root/inputs/examples/mill.stl" .
+
+rows() { grep -E '^ +[0-9]+ +-?[0-9]' "$1"; }
 # name, deck, ranks, extra gravel arguments, processors line (or empty)
+# the dumps of a run: every file the same bytes as the reference run's (ref/)
+dumps_same() {
+    for f in ref/*; do
+        [ -e "$f" ] || continue
+        cmp -s "$f" "$(basename "$f")" || return 1
+    done
+}
+keep_ref() { rm -rf ref; mkdir ref; mv d.*.txt v_*.vtk ref/ 2> /dev/null; }
 same() {
     if [ -n "$5" ]; then sed "s/^comm_modify/processors $5\ncomm_modify/" "$2" > p.in; else cp "$2" p.in; fi
+    rm -f d.*.txt v_*.vtk
     mpirun -np "$3" "$par" -in p.in -log none $4 > "$1.out" 2> "$1.err"; rc=$?
     mv final.dump "$1.dump" 2> /dev/null
-    check "$1" '[ $rc -eq 0 ] && [ -s ref.dump ] && cmp -s ref.dump "$1.dump" && [ "$(rows ref.out)" = "$(rows "$1.out")" ] && [ "$(rows ref.out | wc -l)" -ge 5 ]'
+    check "$1" '[ $rc -eq 0 ] && [ -s ref.dump ] && cmp -s ref.dump "$1.dump" && [ "$(rows ref.out)" = "$(rows "$1.out")" ] && [ "$(rows ref.out | wc -l)" -ge 5 ] && dumps_same'
 }
 
-"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump
+"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same gas_np1 gas.in 1 ""
 same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
@@ -97,16 +154,48 @@ same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
-"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump
+"$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same walls_np2 wall.in 2 ""
+same walls_np4_z wall.in 4 "" "1 2 2"
+# an empty sub-domain: the atoms start in the lower third, z split in 3
+sed 's/^region          fill block 0 12 0 12 1 11/region          fill block 0 12 0 12 1 4/; s/^velocity        all create 25.0/velocity        all create 0.5/' wall.in > low.in
+"$serial" -in low.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same empty_subdomain_np3 low.in 3 "" "1 1 3"
+
+"$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same mill_np3 mill.in 3 "-var nsteps 1200"
+check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
+
+"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
 same chute_np4_z chute.in 4 "" "1 2 2"
-"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump
+# balance: the chute's z slabs at the atoms' median (LAMMPS 2x1x2 on 4 ranks starts at
+# 8010 atoms, imbalance 1.00125, as lmp prints), then fix balance moving x and z cuts
+# every 40 steps; the same bits as one process with the same deck
+sed 's/^read_data       data.chute/read_data       data.chute\nbalance 1.0 shift z 10 1.05/; s/^run             120/fix bal all balance 40 1.0 shift xz 10 1.0\nrun             120/' chute.in > bal.in
+"$serial" -in bal.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same balance_np4 bal.in 4 ""
+check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 8000.0000$" balance_np4.out && grep -q "^  initial/final imbalance factor  = 1.0012500 1.0000000$" balance_np4.out && grep -q "^  z cuts: 0.0000000 0.5[0-9]* 1.0000000$" balance_np4.out'
+
+"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
+# fix pour (tests/reference/pour: ranges, rate, poly diameters into a cylinder,
+# atoms lost through the fixed floor with lost ignore, two pours): every rank draws
+# the same particles against every rank's near atoms and keeps those of its brick
+for d in range_vel_rate poly_cylinder_next two_fixes; do
+    sed 's/^thermo_style    custom step atoms ke/thermo_style    custom step atoms ke\nthermo_modify   format float %.17g/' "$root/tests/reference/pour/$d.in" > "$d.in"
+    "$serial" -in "$d.in" -log none > "$d.ref" 2>&1; mv out.dump "$d.ref.dump"
+    mpirun -np 3 "$par" -in "$d.in" -log none > "$d.out" 2>&1; rc=$?
+    mv out.dump "$d.dump" 2> /dev/null
+    check "pour_${d}_np3" '[ $rc -eq 0 ] && [ -s "$d.ref.dump" ] && cmp -s "$d.ref.dump" "$d.dump" && [ "$(rows "$d.ref")" = "$(rows "$d.out")" ] && [ "$(rows "$d.out" | wc -l)" -ge 4 ]'
+done
+
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/gran hooke\/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL/' chute.in > wall.in
-mpirun -np 2 "$par" -in wall.in -log none > wall.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" wall.out)" -eq 1 ] && grep -q "fix 4 (wall/gran)" wall.out'
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all ave\/time 10 1 10 c_thermo_temp file ave.txt/' chute.in > ave.in
+mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (ave/time)" ave.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'

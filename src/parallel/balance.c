@@ -1,0 +1,154 @@
+/* balance.c - slab cuts from the atoms' coordinates (balance.h). */
+#include "balance.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "args.h"
+#include "comm.h"
+#include "decomp.h"
+#include "error.h"
+#include "log.h"
+#include "par.h"
+
+unsigned balance_dims(struct gravel *g, const char *dimstr)
+{
+    unsigned dims = 0;
+    if (!*dimstr || strlen(dimstr) > 3)
+        gr_error(g, "balance shift dimensions '%s' must be some of x, y, z", dimstr);
+    for (const char *c = dimstr; *c; c++) {
+        int q = *c == 'x' ? 0 : *c == 'y' ? 1 : *c == 'z' ? 2 : -1;
+        if (q < 0 || dims & (1u << q))
+            gr_error(g, "balance shift dimensions '%s' must be some of x, y, z, once each",
+                     dimstr);
+        if (q == 2 && g->dom.dimension == 2)
+            gr_error(g, "balance shift z in a 2d simulation");
+        dims |= 1u << q;
+    }
+    return dims;
+}
+
+
+/* largest rank's atom count and the imbalance (largest / mean) of n
+ * positions (all atoms) under dc */
+static double imbalance_of(struct gravel *g, const struct decomp *dc, const double *x, int n,
+                           double *maxload)
+{
+    int P = dc->p[0] * dc->p[1] * dc->p[2];
+    long *cnt = gr_calloc(g, (size_t)P, sizeof *cnt), mx = 0;
+    for (int i = 0; i < n; i++)
+        cnt[decomp_owner(g, dc, x + 3 * (size_t)i)]++;
+    for (int r = 0; r < P; r++)
+        if (cnt[r] > mx)
+            mx = cnt[r];
+    free(cnt);
+    *maxload = (double)mx;
+    return n > 0 ? (double)mx * P / n : 1.0;
+}
+
+static void print_cuts(struct gravel *g, const struct decomp *dc)
+{
+    for (int q = 0; q < 3; q++) {
+        gr_print(g, "  %c cuts:", "xyz"[q]);
+        for (int k = 0; k <= dc->p[q]; k++)
+            gr_print(g, " %#.8g", decomp_cut(dc, q, k));
+        gr_print(g, "\n");
+    }
+}
+
+void cmd_balance(struct gravel *g, int argc, char **argv)
+{
+    if (argc < 2)
+        gr_error(g, "balance needs thresh and a style (x/y/z, shift or rcb), as LAMMPS");
+    double thresh = arg_double(g, argv[0], "thresh");
+    if (!(thresh >= 1.0))
+        gr_error(g, "balance thresh must be >= 1.0, got %s", argv[0]);
+    struct par *p = par_state(g);
+    struct decomp *dc = &p->dc;
+    decomp_setup(g, dc);
+    /* the styles, checked before anything moves */
+    double *user[3] = {NULL, NULL, NULL};
+    int uniform[3] = {0, 0, 0};
+    unsigned shift = 0;
+    int i = 1;
+    while (i < argc) {
+        const char *s = argv[i];
+        int q = !strcmp(s, "x") ? 0 : !strcmp(s, "y") ? 1 : !strcmp(s, "z") ? 2 : -1;
+        if (q >= 0) {
+            if (i + 1 >= argc)
+                gr_error(g, "balance %s needs uniform or %d cuts", s, dc->p[q] - 1);
+            if (!strcmp(argv[i + 1], "uniform")) {
+                uniform[q] = 1;
+                i += 2;
+                continue;
+            }
+            int P = dc->p[q];
+            if (i + P - 1 > argc - 1)
+                gr_error(g, "balance %s needs uniform or %d cuts for %d slabs", s, P - 1, P);
+            free(user[q]);
+            user[q] = gr_malloc(g, ((size_t)P + 1) * sizeof(double));
+            user[q][0] = 0;
+            user[q][P] = 1;
+            for (int k = 1; k < P; k++) {
+                user[q][k] = arg_double(g, argv[i + k], "balance cut");
+                if (!(user[q][k] > user[q][k - 1]) || !(user[q][k] < 1))
+                    gr_error(g, "balance %s cuts must increase strictly between 0 and 1", s);
+            }
+            i += P;
+        } else if (!strcmp(s, "shift")) {
+            if (i + 3 >= argc)
+                gr_error(g, "balance shift needs dimstr Niter stopthresh");
+            shift = balance_dims(g, argv[i + 1]);
+            if (arg_int(g, argv[i + 2], "balance shift Niter") < 1)
+                gr_error(g, "balance shift Niter must be >= 1");
+            if (!(arg_double(g, argv[i + 3], "balance shift stopthresh") >= 1.0))
+                gr_error(g, "balance shift stopthresh must be >= 1.0");
+            i += 4;
+        } else if (!strcmp(s, "rcb") && comm_size() == 1) {
+            gr_warn(g, "balance rcb: one process, there is nothing to balance");
+            for (int q = 0; q < 3; q++)
+                free(user[q]);
+            return;
+        } else if (!strcmp(s, "rcb")) {
+            gr_error(g, "balance rcb (tiled sub-domains) is not supported: gravel decomposes "
+                        "into bricks; use shift");
+        } else {
+            gr_error(g, "balance keyword '%s' is not supported (x, y, z, shift)", s);
+        }
+    }
+    clock_t t0 = clock();
+    const struct atoms *a = &g->atoms; /* between runs: every atom on every rank */
+    double maxinit, maxfinal;
+    double imbinit = imbalance_of(g, dc, a->x, a->n, &maxinit);
+    int niter = 0;
+    if (imbinit > thresh) {
+        for (int q = 0; q < 3; q++) {
+            if (uniform[q]) {
+                free(dc->cut[q]);
+                dc->cut[q] = NULL;
+            } else if (user[q]) {
+                free(dc->cut[q]);
+                dc->cut[q] = user[q];
+                user[q] = NULL;
+            } else if (shift & (1u << q)) {
+                double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s);
+                for (int k = 0; k < a->n; k++)
+                    s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+                decomp_quantile_cuts(dc, q, s, a->n);
+                free(s);
+            }
+        }
+        niter = 1;
+    }
+    for (int q = 0; q < 3; q++)
+        free(user[q]);
+    double imbfinal = imbalance_of(g, dc, a->x, a->n, &maxfinal);
+    gr_print(g, "Balancing ...\n");
+    gr_print(g, " rebalancing time: %.3f seconds\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
+    gr_print(g, "  iteration count = %d\n", niter);
+    gr_print(g, "  initial/final maximal load/proc = %#.8g %#.8g\n", maxinit, maxfinal);
+    gr_print(g, "  initial/final imbalance factor  = %#.8g %#.8g\n", imbinit, imbfinal);
+    print_cuts(g, dc);
+}
