@@ -1,6 +1,7 @@
 /* pair_energy.c - the pair potential energy (pair_energy.h). */
 #include "pair_energy.h"
 #include "par.h"
+#include "par_sum.h"
 
 #include <stdlib.h>
 

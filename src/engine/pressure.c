@@ -1,6 +1,7 @@
 /* pressure.c - the pressure from the granular pair virial (pressure.h). */
 #include "pressure.h"
 #include "par.h"
+#include "par_sum.h"
 
 #include <stdlib.h>
 

@@ -1,6 +1,7 @@
 /* temperature.c - temperatures and their degrees of freedom (temperature.h). */
 #include "comm.h"
 #include "par.h"
+#include "par_sum.h"
 #include "temperature.h"
 
 #include <string.h>

@@ -16,80 +16,7 @@
 #include "fix.h"
 #include "log.h"
 #include "neighbor.h"
-
-/* ---- contact history by tag pair -------------------------------------------- */
-
-/* Open addressing over (lower tag, higher tag) with hw REAL of raw history
- * each (the device's bytes: bit-exact on any rank). */
-struct par_hist {
-    size_t cap, n, vb;      /* slots (a power of 2), used, value bytes */
-    int64_t *key;           /* 2 per slot; key[2s] = 0: empty */
-    unsigned char *val;
-};
-
-static uint64_t mix(int64_t a, int64_t b)
-{
-    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full;
-    return h ^ (h >> 29);
-}
-
-static void hist_free(struct par_hist *h)
-{
-    if (!h)
-        return;
-    free(h->key);
-    free(h->val);
-    free(h);
-}
-
-static struct par_hist *hist_new(struct gravel *g, size_t n, size_t vb)
-{
-    struct par_hist *h = gr_calloc(g, 1, sizeof *h);
-    h->cap = 64;
-    while (h->cap < 2 * n + 16)
-        h->cap *= 2;
-    h->vb = vb;
-    h->key = gr_calloc(g, 2 * h->cap, sizeof *h->key);
-    h->val = gr_malloc(g, h->cap * vb + 1);
-    return h;
-}
-
-/* slot of (a, b): its own or the empty one where it goes */
-static size_t hist_slot(const struct par_hist *h, int64_t a, int64_t b)
-{
-    size_t s = mix(a, b) & (h->cap - 1);
-    while (h->key[2 * s] && (h->key[2 * s] != a || h->key[2 * s + 1] != b))
-        s = (s + 1) & (h->cap - 1);
-    return s;
-}
-
-/* Insert (first copy wins: every copy holds the same bits). */
-static void hist_put(struct gravel *g, struct par_hist **hp, int64_t a, int64_t b,
-                     const void *val)
-{
-    struct par_hist *h = *hp;
-    if (2 * (h->n + 1) > h->cap) {
-        struct par_hist *w = hist_new(g, h->n + 1, h->vb);
-        for (size_t s = 0; s < h->cap; s++)
-            if (h->key[2 * s])
-                hist_put(g, &w, h->key[2 * s], h->key[2 * s + 1], h->val + s * h->vb);
-        hist_free(h);
-        *hp = h = w;
-    }
-    size_t s = hist_slot(h, a, b);
-    if (h->key[2 * s])
-        return;
-    h->key[2 * s] = a;
-    h->key[2 * s + 1] = b;
-    memcpy(h->val + s * h->vb, val, h->vb);
-    h->n++;
-}
-
-static const void *hist_get(const struct par_hist *h, int64_t a, int64_t b)
-{
-    size_t s = hist_slot(h, a, b);
-    return h->key[2 * s] ? h->val + s * h->vb : NULL;
-}
+#include "par_hist.h"
 
 /* ---- state ---------------------------------------------------------------------- */
 
@@ -109,7 +36,7 @@ void par_free(struct gravel *g)
     free(p->soff);
     free(p->sendidx);
     free(p->recvn);
-    hist_free(p->hist);
+    par_hist_free(p->hist);
     decomp_free(&p->dc);
     for (int k = 0; k < p->nsaved; k++)
         free(p->saved[k].state);
@@ -394,7 +321,7 @@ void par_run_begin(struct gravel *g)
      * keeps its list only while the atoms are the same) */
     int same = tag_set_key(a) == p->tags_at_end;
     if (p->hist && !same) {
-        hist_free(p->hist);
+        par_hist_free(p->hist);
         p->hist = NULL;
     }
     free(p->kept); /* the fixes' saved state: rows of the kept atoms */
@@ -421,7 +348,7 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     int nc = l->ncontact;
     size_t vb = (size_t)e->hist_n * e->rsz;
     if (!*h)
-        *h = hist_new(g, (size_t)nc, vb);
+        *h = par_hist_new(g, (size_t)nc, vb);
     if (nc <= 0 || !l->ci)
         return;
     int *ci = gr_malloc(g, 2 * (size_t)nc * sizeof(int));
@@ -437,30 +364,10 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
         if (ci[c] >= nown && ci[nc + c] >= nown)
             continue; /* two ghosts: their history is their owners' business */
         int64_t a = tag[ci[c]], b = tag[ci[nc + c]];
-        hist_put(g, h, a < b ? a : b, a < b ? b : a, sh + (size_t)c * vb);
+        par_hist_put(g, h, a < b ? a : b, a < b ? b : a, sh + (size_t)c * vb);
     }
     free(ci);
     free(sh);
-}
-
-/* a table entry as sent: two tags and the value bytes */
-static size_t entry_bytes(const struct par_hist *h) { return 2 * sizeof(int64_t) + h->vb; }
-
-static void entry_pack(const struct par_hist *h, size_t s, unsigned char *out)
-{
-    memcpy(out, h->key + 2 * s, 2 * sizeof(int64_t));
-    memcpy(out + 2 * sizeof(int64_t), h->val + s * h->vb, h->vb);
-}
-
-static void entries_put(struct gravel *g, struct par_hist **h, const unsigned char *in,
-                        size_t bytes)
-{
-    size_t eb = entry_bytes(*h);
-    for (size_t o = 0; o + eb <= bytes; o += eb) {
-        int64_t k[2];
-        memcpy(k, in + o, sizeof k);
-        hist_put(g, h, k[0], k[1], in + o + sizeof k);
-    }
 }
 
 void par_run_end(struct gravel *g)
@@ -475,21 +382,21 @@ void par_run_end(struct gravel *g)
     if (e->history && p->list_current) {
         struct par_hist *h = NULL;
         hist_collect(g, &h);
-        size_t eb = entry_bytes(h);
+        size_t eb = par_hist_entry_bytes(h);
         unsigned char *buf = gr_malloc(g, h->n * eb + 1), *all = NULL;
         size_t k = 0;
         for (size_t s = 0; s < h->cap; s++)
             if (h->key[2 * s])
-                entry_pack(h, s, buf + eb * k++);
+                par_hist_entry_pack(h, s, buf + eb * k++);
         size_t bytes = comm_allgatherv(buf, k * eb, (void **)&all);
         free(buf);
         if (bytes == (size_t)-1)
             gr_error(g, "out of memory gathering the contact history of every rank");
-        hist_free(h);
-        h = hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
-        entries_put(g, &h, all, bytes);
+        par_hist_free(h);
+        h = par_hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
+        par_hist_entries_put(g, &h, all, bytes);
         free(all);
-        hist_free(p->hist);
+        par_hist_free(p->hist);
         p->hist = h;
     }
     int n = a->n;
@@ -757,8 +664,8 @@ void par_exchange(struct gravel *g, double cut)
     if (e->history) {
         size_t vb = (size_t)e->hist_n * e->rsz;
         if (!old)
-            old = hist_new(g, 0, vb);
-        size_t eb = entry_bytes(old);
+            old = par_hist_new(g, 0, vb);
+        size_t eb = par_hist_entry_bytes(old);
         struct outbox hb;
         outbox_init(g, &hb, P);
         for (size_t s = 0; s < old->cap; s++) {
@@ -767,17 +674,17 @@ void par_exchange(struct gravel *g, double cut)
             int da = dest_of(tagdest, n, old->key[2 * s]);
             int db = dest_of(tagdest, n, old->key[2 * s + 1]);
             if (da >= 0)
-                entry_pack(old, s, outbox_room(g, &hb, da, eb));
+                par_hist_entry_pack(old, s, outbox_room(g, &hb, da, eb));
             if (db >= 0 && db != da)
-                entry_pack(old, s, outbox_room(g, &hb, db, eb));
+                par_hist_entry_pack(old, s, outbox_room(g, &hb, db, eb));
         }
         size_t hin, hfrom[P];
         unsigned char *h = outbox_send(g, &hb, P, &hin, hfrom);
-        p->hist = hist_new(g, hin / eb, vb);
-        entries_put(g, &p->hist, h, hin);
+        p->hist = par_hist_new(g, hin / eb, vb);
+        par_hist_entries_put(g, &p->hist, h, hin);
         free(h);
     }
-    hist_free(old);
+    par_hist_free(old);
     /* 3. the owned atoms: those that stay, in order, then the arrivals */
     int k = 0;
     for (int i = 0; i < n; i++)
@@ -881,14 +788,14 @@ void par_history_restore(struct gravel *g)
     const int64_t *tag = g->atoms.tag;
     for (int c = 0; c < nc; c++) {
         int64_t a = tag[ci[c]], b = tag[ci[nc + c]];
-        const void *v = hist_get(p->hist, a < b ? a : b, a < b ? b : a);
+        const void *v = par_hist_get(p->hist, a < b ? a : b, a < b ? b : a);
         if (v)
             memcpy(sh + (size_t)c * vb, v, vb);
     }
     nbr_history_install(g, sh);
     free(ci);
     free(sh);
-    hist_free(p->hist);
+    par_hist_free(p->hist);
     p->hist = NULL;
 }
 
@@ -937,34 +844,6 @@ void par_forward(struct gravel *g)
     }
     free(col);
     free(in);
-}
-
-/* ---- sums in tag order ------------------------------------------------------------ */
-
-void par_sum_add(struct gravel *g, struct par_sum *s, int64_t key, double v)
-{
-    if (!par_on(g)) {
-        s->acc += v;
-        return;
-    }
-    if (s->n == s->cap) {
-        s->cap = s->cap ? 2 * s->cap : 1024;
-        s->key = gr_realloc(g, s->key, (size_t)s->cap * sizeof *s->key);
-        s->v = gr_realloc(g, s->v, (size_t)s->cap * sizeof *s->v);
-    }
-    s->key[s->n] = key;
-    s->v[s->n++] = v;
-}
-
-double par_sum_total(struct gravel *g, struct par_sum *s)
-{
-    double t = s->acc;
-    if (par_on(g))
-        t = comm_sum_in_key_order(s->n, s->key, s->v);
-    free(s->key);
-    free(s->v);
-    memset(s, 0, sizeof *s);
-    return t;
 }
 
 /* ---- every atom on every rank for an output step ------------------------------- */
@@ -1017,39 +896,4 @@ void par_gather_end(struct gravel *g)
     p->gathered = 0;
     p->on = 1;
     g->eng->active = 1;
-}
-
-/* ---- insertion on several ranks (fix pour) ---------------------------------------- */
-
-int par_owns(struct gravel *g, const double x[3])
-{
-    return !par_on(g) || decomp_owner(g, &g->par->dc, x) == comm_rank();
-}
-
-int par_gather_rows(struct gravel *g, double **rows, int n, int width)
-{
-    if (!par_on(g))
-        return n;
-    double *all = NULL;
-    size_t w = (size_t)width * sizeof(double);
-    size_t bytes = comm_allgatherv(*rows, (size_t)n * w, (void **)&all);
-    if (bytes == (size_t)-1)
-        gr_error(g, "out of memory gathering the atoms of every rank");
-    free(*rows);
-    *rows = all;
-    return (int)(bytes / w);
-}
-
-int64_t par_max_tag(struct gravel *g, int64_t mine)
-{
-    if (!par_on(g))
-        return mine;
-    int64_t *all = NULL, m = mine;
-    size_t bytes = comm_allgatherv(&mine, sizeof mine, (void **)&all);
-    if (bytes == (size_t)-1)
-        gr_error(g, "out of memory gathering the ranks' largest atom IDs");
-    for (size_t r = 0; r < bytes / sizeof mine; r++)
-        m = all[r] > m ? all[r] : m;
-    free(all);
-    return m;
 }

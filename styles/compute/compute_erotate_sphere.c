@@ -5,7 +5,7 @@
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
-#include "par.h"
+#include "par_sum.h"
 
 #define INERTIA 0.4 /* moment of inertia prefactor for a solid sphere */
 

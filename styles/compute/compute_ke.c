@@ -3,7 +3,7 @@
  * extensive (thermo divides it by the atom count when norm is yes). */
 #include "atoms.h"
 #include "compute.h"
-#include "par.h"
+#include "par_sum.h"
 #include "error.h"
 
 static void ke_create(struct gravel *g, struct compute *c, int argc, char **argv)

@@ -54,6 +54,7 @@
 #include "error.h"
 #include "fix.h"
 #include "par.h"
+#include "par_sum.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
 #include "log.h"
