@@ -67,6 +67,7 @@ struct gravel *gr_create(void)
 
 static void free_state(struct gravel *g)
 {
+    par_free(g); /* `clear` forgets the processor grid too, as LAMMPS */
     engine_destroy(g);
     restart_free(g);
     styles_free(g);
@@ -98,7 +99,6 @@ void gr_destroy(struct gravel *g)
     if (!g)
         return;
     free_state(g);
-    par_free(g);
     var_destroy(g->vars);
     inp_destroy(g->inp);
     gr_log_release(g);

@@ -42,6 +42,8 @@ void par_free(struct gravel *g)
         free(p->saved[k].state);
     free(p->kept);
     free(p->tags_built);
+    if (p->gathered) /* an error during an output step: this rank's own arrays */
+        atoms_free_fields(&p->local);
     free(p);
     g->par = NULL;
 }
