@@ -1393,6 +1393,18 @@ void nbr_state_free(struct nbr_state *s)
     memset(s, 0, sizeof *s);
 }
 
+int nbr_xhold_read(struct gravel *g, int n, double *out)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->nbr || !e->nbr->built)
+        return -1;
+    eng_read_reals(g, e->nbr->xhold, 3 * (size_t)n, out);
+    if (e->single) /* the device's are relative to the origin */
+        for (size_t i = 0; i < 3 * (size_t)n; i++)
+            out[i] += e->origin[i % 3];
+    return e->nbr->ago;
+}
+
 int nbr_export(struct gravel *g, struct nbr_state *s)
 {
     memset(s, 0, sizeof *s);
@@ -1411,11 +1423,8 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
     s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
     eng_read(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
     eng_read(g, l->nlist, 0, (size_t)n * maxn * sizeof(cl_int), s->nlist);
-    eng_read_reals(g, b->xhold, 3 * (size_t)n, s->xhold);
+    nbr_xhold_read(g, n, s->xhold);
     const int hw = e->hist_n;
-    if (e->single) /* the device's are relative to the origin */
-        for (size_t i = 0; i < 3 * (size_t)n; i++)
-            s->xhold[i] += e->origin[i % 3];
     if (e->history) {
         /* per row slot: the owner's history, its negative on the partner's side
          * (only the owner's is read back: contacts are owned by the lower tag) */

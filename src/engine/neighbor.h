@@ -90,6 +90,10 @@ struct nbr_state {
     double *xhold;          /* [3 n] */
 };
 int nbr_export(struct gravel *g, struct nbr_state *s);
+/* The reference positions of the last build of slots 0 .. n-1 (absolute,
+ * double) into out[3n]; returns the steps since that build, -1 (nothing
+ * read) when no list is built. */
+int nbr_xhold_read(struct gravel *g, int n, double *out);
 /* A decomposed run's rebuild: hist (the device's bytes, HIST_N REAL per
  * current contact) becomes the contacts' history, kept only where the
  * rebuild's transfer keeps it (pairs that overlap now). */

@@ -436,7 +436,8 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     eng_prepare(g);
     struct engine *e = g->eng;
     e->active = 0;
-    par_run_begin(g); /* several ranks: this rank's atoms only from here */
+    restart_adopt_ranks(g); /* several ranks: read_restart's state goes by tag */
+    par_run_begin(g);       /* several ranks: this rank's atoms only from here */
     reserve_insertions(g, nsteps);
     eng_upload(g);
     memset(&e->st, 0, sizeof e->st);
@@ -522,13 +523,15 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     /* after read_restart: restored list/history/fix state; 2 = the step's forces too */
     int resumed = restart_resume(g);
     group_dynamic_update(g, -1); /* dynamic groups at setup */
-    if (resumed < 1) {
+    if (resumed < 1 || par_on(g)) { /* several ranks: the setup exchange */
         nbr_rebuild(g);
         post_neighbor(g);
     }
     e->st.nbuilds = 0;
     if (resumed < 2)
         compute_forces(g, freezebit, 1, tsetup, 0);
+    else if (par_on(g))
+        par_resume_forces(g); /* the written step's, by tag: the exchange moved the atoms */
     for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
         if (g->styles.fix[i]->style->setup)
             g->styles.fix[i]->style->setup(g, g->styles.fix[i]);

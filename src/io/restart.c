@@ -48,6 +48,7 @@
 #include "neighbor.h"
 #include "outfile.h"
 #include "pair.h"
+#include "par.h"
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
@@ -221,6 +222,8 @@ struct restart {
     unsigned char *filebuf;     /* scratch of the read in progress */
     struct image *loading;      /* being parsed */
     struct image *pending;      /* applied by read_restart, resumed at the next run */
+    int ranks_result;           /* several ranks: restart_adopt_ranks's restart_resume level */
+    char why[512];              /* ... and why it is not 2 */
 };
 
 static void image_free(struct image *im)
@@ -287,8 +290,7 @@ static uint64_t force_fingerprint(const struct gravel *g)
     return h;
 }
 
-/* Every per-atom host array of the atoms section, in file order. */
-static uint64_t atoms_fingerprint(const struct gravel *g)
+uint64_t restart_atoms_fingerprint(const struct gravel *g)
 {
     const struct atoms *a = &g->atoms;
     size_t n = (size_t)a->n;
@@ -309,9 +311,10 @@ static uint64_t atoms_fingerprint(const struct gravel *g)
  * The driver (load) then rejects a truncated section or trailing bytes.
  * `seen` has bit id set for every section already read. */
 
-/* What the list writer tells the fixes writer: atoms of the written list. */
+/* What the list writer tells the fixes writer: atoms of the written list,
+ * and whether they are the host's of a decomposed run (par_fix_rows). */
 struct wctx {
-    int ndev;
+    int ndev, ranks;
 };
 
 #define BAD(...)                                                                         \
@@ -719,13 +722,24 @@ static void write_list(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     struct engine *e = g->eng;
     struct nbr_state s;
+    int exact = 0;
     c->ndev = 0;
-    if (!e || !e->a.x || !nbr_export(g, &s))
+    c->ranks = comm_size() > 1; /* the device holds one rank's atoms: the host's list */
+    if (c->ranks ? !par_list_export(g, &s, &exact) : !e || !e->a.x || !nbr_export(g, &s)) {
+        if (c->ranks && g->par && g->par->ended)
+            gr_warn(g, "write_restart: the atoms changed since the last run on %d MPI ranks: "
+                       "the contact history and the fixes' per-atom state are not written",
+                    comm_size());
         return;
+    }
     int n = s.n;
     int64_t *devtag = gr_malloc(g, ((size_t)n + 1) * sizeof(int64_t));
-    eng_read(g, e->a.tag, 0, (size_t)n * sizeof(int64_t), devtag);
-    int exact = device_matches_host(g);
+    if (c->ranks)
+        memcpy(devtag, g->atoms.tag, (size_t)n * sizeof(int64_t));
+    else
+        eng_read(g, e->a.tag, 0, (size_t)n * sizeof(int64_t), devtag);
+    if (!c->ranks)
+        exact = device_matches_host(g);
     size_t at = sect_begin(g, w, S_LIST);
     put_i32(g, w, exact);
     put_i32(g, w, s.history);
@@ -817,11 +831,14 @@ static void write_fixes(struct gravel *g, struct wbuf *w, struct wctx *c)
             if (got != len)
                 gr_error(g, "fix %s: restart state size changed while writing", f->id);
         }
-        int rows = ndev && f->peratom && f->peratom_bytes ? ndev : 0;
+        const unsigned char *saved = c->ranks ? par_fix_rows(g, f) : NULL;
+        int rows = ndev && f->peratom && f->peratom_bytes && (saved || !c->ranks) ? ndev : 0;
         put_u32(g, w, rows ? (uint32_t)f->peratom_bytes : 0);
         put_u32(g, w, e ? (uint32_t)e->rsz : 0);
         put_i32(g, w, rows);
-        if (rows) {
+        if (rows && saved) {
+            put(g, w, saved, (size_t)rows * f->peratom_bytes);
+        } else if (rows) {
             size_t bytes = (size_t)rows * f->peratom_bytes;
             unsigned char *b = gr_malloc(g, bytes + 1);
             eng_read(g, f->peratom, 0, bytes, b);
@@ -993,9 +1010,6 @@ void cmd_write_restart(struct gravel *g, int argc, char **argv)
         gr_error(g, "unknown keyword '%.64s' (write_restart takes only a file name)", argv[1]);
     }
     check_name(g, argv[0]);
-    if (comm_size() > 1) /* the contacts' history lives on the ranks' devices */
-        gr_error(g, "write_restart on %d MPI ranks is not built yet (doc/parallel.md): write "
-                    "restart files from one process", comm_size());
     char path[4096];
     expand_star(g, argv[0], path, sizeof path);
     restart_write(g, path);
@@ -1048,6 +1062,11 @@ void cmd_restart(struct gravel *g, int argc, char **argv)
         r->every[1] = n;
         r->toggle = 0;
     }
+}
+
+int restart_periodic(const struct gravel *g)
+{
+    return g->restart && (g->restart->every[0] > 0 || g->restart->every[1] > 0);
 }
 
 int restart_due(const struct gravel *g, bigint step)
@@ -1343,7 +1362,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
         p->coeff_set = im->coeff_set;
         g->styles.pair = p;
     }
-    im->atoms_hash = atoms_fingerprint(g);
+    im->atoms_hash = restart_atoms_fingerprint(g);
     image_free(r->pending);
     r->pending = im;
     r->loading = NULL;
@@ -1464,15 +1483,15 @@ static int neigh_diff(const struct gravel *g, const struct neigh_settings *a,
 /* Why the written list cannot be continued exactly, into why; 0 when it can.
  * Checked in this order: the file's exact data, the atoms, the neighbor
  * settings, the box, the precision, the contact history. */
-static int list_diff(struct gravel *g, const struct image *im, char *why, size_t len)
+static int list_diff(struct gravel *g, const struct image *im, int n, char *why, size_t len)
 {
     struct engine *e = g->eng;
     if (!im->exact)
         return snprintf(why, len, "the file holds no exact continuation data: the atoms were "
                                   "changed after the last run before write_restart") > 0;
-    if (e->a.n != im->n)
-        return snprintf(why, len, "%d atoms (file: %d)", e->a.n, im->n) > 0;
-    if (atoms_fingerprint(g) != im->atoms_hash)
+    if (n != im->n)
+        return snprintf(why, len, "%d atoms (file: %d)", n, im->n) > 0;
+    if (restart_atoms_fingerprint(g) != im->atoms_hash)
         return snprintf(why, len, "per-atom values were changed after read_restart") > 0;
     if (neigh_diff(g, &g->neigh, &im->neigh, why, len))
         return 1;
@@ -1523,46 +1542,241 @@ static int force_diff(const struct gravel *g, const struct image *im, char *why,
     return 0;
 }
 
-int restart_resume(struct gravel *g)
+/* The host atoms by tag (map) and, per written (device-order) atom, its
+ * host row or -1 (row); both malloc'd. */
+static void host_rows(struct gravel *g, const struct image *im, struct tagidx **mapp, int **rowp)
 {
-    struct restart *r = g->restart;
-    if (!r || !r->pending)
-        return 0;
-    struct image *im = r->pending;
-    struct engine *e = g->eng;
-    int n = e->a.n;
-    /* the device holds the host atoms in host order (just uploaded) */
+    int n = g->atoms.n;
     struct tagidx *map = gr_malloc(g, ((size_t)n + 1) * sizeof *map);
     for (int i = 0; i < n; i++) {
         map[i].tag = g->atoms.tag[i];
         map[i].idx = i;
     }
     qsort(map, (size_t)n, sizeof *map, cmp_tagidx);
-    /* row of each written (device-order) atom in the current order, or -1 */
     int *row = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(int));
     for (int i = 0; i < im->ndev; i++)
         row[i] = find_idx(map, n, im->devtag[i]);
+    *mapp = map;
+    *rowp = row;
+}
+
+/* The file's list as rows of the host atoms (nbr_state's form), partners
+ * mapped by tag (unknown ones dropped); the exact list keeps its capacity,
+ * reference positions and steps since the build. */
+static void host_list(struct gravel *g, const struct image *im, const struct tagidx *map,
+                      const int *row, int exact, struct nbr_state *s)
+{
+    struct engine *e = g->eng;
+    int n = g->atoms.n;
+    memset(s, 0, sizeof *s);
+    s->n = n;
+    const int hw = e->history ? e->hist_n : 0;
+    s->history = hw;
+    s->ncount = gr_calloc(g, (size_t)n + 1, sizeof(int));
+    size_t *first = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(size_t));
+    size_t off = 0;
+    for (int i = 0; i < im->ndev; i++) {
+        first[i] = off;
+        off += (size_t)im->ncount[i];
+    }
+    int maxn = exact ? im->maxn : 1;
+    if (!exact)
+        for (int i = 0; i < im->ndev; i++)
+            if (row[i] >= 0 && im->ncount[i] > maxn)
+                maxn = im->ncount[i];
+    s->maxn = maxn > 0 ? maxn : 1;
+    s->nlist = gr_calloc(g, (size_t)n * s->maxn + 1, sizeof(int));
+    if (e->history)
+        s->shear = gr_calloc(g, (size_t)hw * n * s->maxn + 1, sizeof(double));
+    for (int i = 0; i < im->ndev; i++) {
+        int ri = row[i];
+        if (ri < 0)
+            continue;
+        for (int k = 0; k < im->ncount[i]; k++) {
+            int j = find_idx(map, n, im->partner[first[i] + k]);
+            if (j < 0)
+                continue;
+            size_t slot = (size_t)ri * s->maxn + (size_t)s->ncount[ri]++;
+            s->nlist[slot] = j;
+            if (e->history && im->history) /* the common part of the two widths */
+                memcpy(s->shear + (size_t)hw * slot,
+                       im->shear + (size_t)im->history * (first[i] + k),
+                       (size_t)(hw < im->history ? hw : im->history) * sizeof(double));
+        }
+    }
+    free(first);
+    s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+    memcpy(s->xhold, exact ? im->xhold : g->atoms.x, 3 * (size_t)n * sizeof(double));
+    s->ago = exact ? im->ago : 0;
+}
+
+/* The fix of a saved state (same ID and style), or NULL with a warning when
+ * the file holds state for it. */
+static struct fix *saved_fix(struct gravel *g, const struct fix_saved *fs)
+{
+    struct fix *f = fix_find(g, fs->id);
+    if (f && !strcmp(f->style->name, fs->style))
+        return f;
+    if (fs->bloblen || fs->nrows)
+        gr_warn(g, "restart: state of fix %s (%s) not restored: no fix with this ID and style",
+                fs->id, fs->style);
+    return NULL;
+}
+
+/* A fix's global state (its read_restart hook). */
+static void resume_blob(struct gravel *g, struct fix *f, const struct fix_saved *fs)
+{
+    if (!fs->bloblen)
+        return;
+    if (f->style->read_restart)
+        f->style->read_restart(g, f, fs->blob, fs->bloblen);
+    else
+        gr_warn(g, "restart: fix %s (%s) of this build keeps no restart state", fs->id,
+                fs->style);
+}
+
+/* 2: the written step's forces are the continued run's; 1: the exact list,
+ * forces recomputed (why: the setting that differs); 0: neither. */
+static int resume_level(struct gravel *g, const struct image *im, int exact, char *why,
+                        size_t len)
+{
+    if (!exact)
+        return 0;
+    if (force_fingerprint(g) == im->fingerprint)
+        return 2;
+    if (!force_diff(g, im, why, len))
+        snprintf(why, len, "force settings");
+    return 1;
+}
+
+static void resume_report(struct gravel *g, const struct image *im, int result,
+                          const char *why)
+{
+    if (result == 1)
+        gr_print(g, "Restart: continuing with the written neighbor list; forces recomputed: "
+                    "%s differs from the writer\n", why);
+    else if (result == 2)
+        gr_print(g, "Restart: exact continuation of step %lld\n", (long long)im->step);
+    else if (im->has_list)
+        gr_print(g, "Restart: atoms or settings changed since the file was written (%s); "
+                    "contact history carried into a new neighbor list\n", why);
+}
+
+/* What the setup exchange of a decomposed run does that one process defers
+ * to its next neighbor rebuild (why[0] = 0: nothing): wrap the atoms that
+ * left a periodic box, shrink-wrap the box. */
+static void setup_exchange_note(struct gravel *g, char *why, size_t len)
+{
+    const struct domain *d = &g->dom;
+    const struct atoms *a = &g->atoms;
+    long out = 0;
+    int shrink = 0;
+    for (int q = 0; q < 3; q++) {
+        if (!d->periodic[q]) {
+            shrink |= d->bnd[q][0] != BND_F || d->bnd[q][1] != BND_F;
+            continue;
+        }
+        for (int i = 0; i < a->n; i++)
+            out += a->x[3 * (size_t)i + q] < d->lo[q] || a->x[3 * (size_t)i + q] >= d->hi[q];
+    }
+    why[0] = 0;
+    if (out)
+        snprintf(why, len, "wraps %ld atoms into the periodic box%s", out,
+                 shrink ? " and shrink-wraps it" : "");
+    else if (shrink)
+        snprintf(why, len, "shrink-wraps the box");
+}
+
+void restart_adopt_ranks(struct gravel *g)
+{
+    struct restart *r = g->restart;
+    if (comm_size() < 2 || !r || !r->pending)
+        return;
+    struct image *im = r->pending;
+    struct engine *e = g->eng;
+    int n = g->atoms.n;
+    struct tagidx *map;
+    int *row;
+    host_rows(g, im, &map, &row);
+    r->why[0] = 0;
+    int exact = im->has_list && !list_diff(g, im, n, r->why, sizeof r->why);
+    par_adopt_begin(g);
+    for (int k = 0; k < im->nfix; k++) {
+        const struct fix_saved *fs = &im->fix[k];
+        struct fix *f = fs->nrows ? fix_find(g, fs->id) : NULL;
+        if (!f || strcmp(f->style->name, fs->style))
+            continue; /* restart_resume warns */
+        if (fs->rsz != e->rsz) {
+            gr_warn(g, "restart: per-atom state of fix %s not restored (precision differs)",
+                    fs->id);
+            if (exact)
+                snprintf(r->why, sizeof r->why, "per-atom state of fix %s", fs->id);
+            exact = 0;
+            continue;
+        }
+        size_t pb = fs->peratom_bytes;
+        unsigned char *buf = gr_calloc(g, (size_t)n * pb + 1, 1);
+        for (int i = 0; i < fs->nrows; i++)
+            if (row[i] >= 0)
+                memcpy(buf + (size_t)row[i] * pb, fs->peratom + (size_t)i * pb, pb);
+        par_adopt_fix_rows(g, f, pb, buf);
+        free(buf);
+    }
+    if (im->has_list && n > 0) {
+        struct nbr_state s;
+        host_list(g, im, map, row, exact, &s);
+        par_adopt_list(g, &s);
+        nbr_state_free(&s);
+    }
+    r->ranks_result = resume_level(g, im, exact, r->why, sizeof r->why);
+    if (r->ranks_result == 2) {
+        par_adopt_forces(g);
+        setup_exchange_note(g, r->why, sizeof r->why);
+    }
+    free(row);
+    free(map);
+}
+
+int restart_resume(struct gravel *g)
+{
+    struct restart *r = g->restart;
+    if (!r || !r->pending)
+        return 0;
+    struct image *im = r->pending;
+    if (par_on(g)) { /* the list and per-atom state went with the atoms (adopt above) */
+        for (int k = 0; k < im->nfix; k++) {
+            struct fix *f = saved_fix(g, &im->fix[k]);
+            if (f)
+                resume_blob(g, f, &im->fix[k]);
+        }
+        int result = r->ranks_result;
+        if (result == 2 && r->why[0])
+            gr_print(g, "Restart: continuation of step %lld with its forces; the setup exchange "
+                        "%s, which one process does at its next neighbor rebuild: not "
+                        "bit-identical to one process from here\n", (long long)im->step, r->why);
+        else
+            resume_report(g, im, result, r->why);
+        image_free(im);
+        r->pending = NULL;
+        return result;
+    }
+    struct engine *e = g->eng;
+    int n = e->a.n;
+    /* the device holds the host atoms in host order (just uploaded) */
+    struct tagidx *map;
+    int *row;
+    host_rows(g, im, &map, &row);
 
     char why[512] = "";
-    int exact = im->has_list && !list_diff(g, im, why, sizeof why);
+    int exact = im->has_list && !list_diff(g, im, n, why, sizeof why);
 
     /* fix state, for fixes re-created with the same ID and style */
     for (int k = 0; k < im->nfix; k++) {
         struct fix_saved *fs = &im->fix[k];
-        struct fix *f = fix_find(g, fs->id);
-        if (!f || strcmp(f->style->name, fs->style)) {
-            if (fs->bloblen || fs->nrows)
-                gr_warn(g, "restart: state of fix %s (%s) not restored: no fix with this ID "
-                           "and style", fs->id, fs->style);
+        struct fix *f = saved_fix(g, fs);
+        if (!f)
             continue;
-        }
-        if (fs->bloblen) {
-            if (f->style->read_restart)
-                f->style->read_restart(g, f, fs->blob, fs->bloblen);
-            else
-                gr_warn(g, "restart: fix %s (%s) of this build keeps no restart state",
-                        fs->id, fs->style);
-        }
+        resume_blob(g, f, fs);
         if (fs->nrows) {
             if (!f->peratom || f->peratom_bytes != fs->peratom_bytes || fs->rsz != e->rsz) {
                 gr_warn(g, "restart: per-atom state of fix %s not restored (size or precision "
@@ -1585,48 +1799,8 @@ int restart_resume(struct gravel *g)
     int result = 0;
     if (im->has_list && n > 0) {
         struct nbr_state s;
-        memset(&s, 0, sizeof s);
-        s.n = n;
-        const int hw = e->history ? e->hist_n : 0;
-        s.history = hw;
-        s.ncount = gr_calloc(g, (size_t)n + 1, sizeof(int));
-        /* rows of the current atoms, partners mapped by tag (unknown partners dropped) */
-        size_t *first = gr_malloc(g, ((size_t)im->ndev + 1) * sizeof(size_t));
-        size_t off = 0;
-        for (int i = 0; i < im->ndev; i++) {
-            first[i] = off;
-            off += (size_t)im->ncount[i];
-        }
-        int maxn = exact ? im->maxn : 1;
-        if (!exact)
-            for (int i = 0; i < im->ndev; i++)
-                if (row[i] >= 0 && im->ncount[i] > maxn)
-                    maxn = im->ncount[i];
-        s.maxn = maxn > 0 ? maxn : 1;
-        s.nlist = gr_calloc(g, (size_t)n * s.maxn + 1, sizeof(int));
-        if (e->history)
-            s.shear = gr_calloc(g, (size_t)hw * n * s.maxn + 1, sizeof(double));
-        for (int i = 0; i < im->ndev; i++) {
-            int ri = row[i];
-            if (ri < 0)
-                continue;
-            for (int k = 0; k < im->ncount[i]; k++) {
-                int j = find_idx(map, n, im->partner[first[i] + k]);
-                if (j < 0)
-                    continue;
-                size_t slot = (size_t)ri * s.maxn + (size_t)s.ncount[ri]++;
-                s.nlist[slot] = j;
-                if (e->history && im->history) /* the common part of the two widths */
-                    memcpy(s.shear + (size_t)hw * slot,
-                           im->shear + (size_t)im->history * (first[i] + k),
-                           (size_t)(hw < im->history ? hw : im->history) * sizeof(double));
-            }
-        }
-        free(first);
-        s.xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
-        memcpy(s.xhold, exact ? im->xhold : g->atoms.x, 3 * (size_t)n * sizeof(double));
-        s.ago = exact ? im->ago : 0;
-        exact = exact && hw == im->history;
+        host_list(g, im, map, row, exact, &s);
+        exact = exact && s.history == im->history;
         int imported = nbr_import(g, &s);
         nbr_state_free(&s);
         if (!imported) {
@@ -1634,22 +1808,13 @@ int restart_resume(struct gravel *g)
                        "rebuilt and the contact history is lost");
             exact = 0;
             snprintf(why, sizeof why, "the file's neighbor list is not symmetric");
-        } else if (exact) {
-            result = force_fingerprint(g) == im->fingerprint ? 2 : 1;
-            if (result == 1 && !force_diff(g, im, why, sizeof why))
-                snprintf(why, sizeof why, "force settings");
+        } else {
+            result = resume_level(g, im, exact, why, sizeof why);
         }
     }
     free(row);
     free(map);
-    if (result == 1)
-        gr_print(g, "Restart: continuing with the written neighbor list; forces recomputed: "
-                    "%s differs from the writer\n", why);
-    else if (result == 2)
-        gr_print(g, "Restart: exact continuation of step %lld\n", (long long)im->step);
-    else if (im->has_list)
-        gr_print(g, "Restart: atoms or settings changed since the file was written (%s); "
-                    "contact history carried into a new neighbor list\n", why);
+    resume_report(g, im, result, why);
     image_free(im);
     r->pending = NULL;
     return result;

@@ -18,6 +18,8 @@
 #ifndef GR_RESTART_H
 #define GR_RESTART_H
 
+#include <stdint.h>
+
 #include "state.h"
 
 #define RESTART_FORMAT_VERSION 4u
@@ -47,6 +49,19 @@ void restart_step(struct gravel *g);
  * the forces on the device are those the continued run would use (skip the
  * setup force computation). */
 int restart_resume(struct gravel *g);
+
+/* Several MPI ranks, at the next run's start before the atoms are
+ * partitioned: the pending list, history and fixes' per-atom state go to
+ * the decomposition by tag (par.h), which carries them with the atoms;
+ * restart_resume then applies the rest and returns the same levels (the
+ * setup exchange always rebuilds the list; at 2 the forces come back with
+ * par_resume_forces). */
+void restart_adopt_ranks(struct gravel *g);
+/* Whether `restart N` writes files during runs. */
+int restart_periodic(const struct gravel *g);
+/* Hash of every per-atom host array of the atoms section (a file's exact
+ * continuation data is valid while it is unchanged). */
+uint64_t restart_atoms_fingerprint(const struct gravel *g);
 
 /* Free restart settings and pending state (clear, destroy). */
 void restart_free(struct gravel *g);

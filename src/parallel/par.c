@@ -17,6 +17,7 @@
 #include "log.h"
 #include "neighbor.h"
 #include "par_hist.h"
+#include "restart.h"
 
 /* ---- state ---------------------------------------------------------------------- */
 
@@ -42,6 +43,8 @@ void par_free(struct gravel *g)
         free(p->saved[k].state);
     free(p->kept);
     free(p->tags_built);
+    free(p->xhold_end);
+    free(p->resume_ft);
     if (p->gathered) /* an error during an output step: this rank's own arrays */
         atoms_free_fields(&p->local);
     free(p);
@@ -222,8 +225,8 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     }
-    if (!why && g->restart)
-        why = "restart files";
+    if (!why && restart_periodic(g))
+        why = "restart files written during a run (restart N)";
     if (!why && g->eng && g->eng->hist_owner)
         why = "-compat lammps2021 contact owners";
     if (why)
@@ -300,7 +303,7 @@ void par_fix_state_restore(struct gravel *g)
 
 /* ---- run start and end ---------------------------------------------------------- */
 
-static uint64_t tag_set_key(const struct atoms *a)
+uint64_t par_tag_set_key(const struct atoms *a)
 {
     uint64_t h = 1469598103934665603ull ^ (uint64_t)a->n;
     for (int i = 0; i < a->n; i++)
@@ -314,6 +317,7 @@ void par_run_begin(struct gravel *g)
     p->on = comm_size() > 1;
     p->nghost = 0;
     p->list_current = 0; /* the device's contacts are the last run's */
+    p->ended = 0;
     if (!p->on)
         return;
     check_scene(g);
@@ -321,7 +325,7 @@ void par_run_begin(struct gravel *g)
     struct atoms *a = &g->atoms;
     /* the saved contact history belongs to these atoms only (as one rank
      * keeps its list only while the atoms are the same) */
-    int same = tag_set_key(a) == p->tags_at_end;
+    int same = par_tag_set_key(a) == p->tags_at_end;
     if (p->hist && !same) {
         par_hist_free(p->hist);
         p->hist = NULL;
@@ -348,16 +352,17 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     struct engine *e = g->eng;
     const struct nbr_list *l = nbr_list(g);
     int nc = l->ncontact;
-    size_t vb = (size_t)e->hist_n * e->rsz;
+    size_t vb = e->history ? (size_t)e->hist_n * e->rsz : 0; /* without: the pairs only */
     if (!*h)
         *h = par_hist_new(g, (size_t)nc, vb);
     if (nc <= 0 || !l->ci)
         return;
     int *ci = gr_malloc(g, 2 * (size_t)nc * sizeof(int));
-    unsigned char *sh = gr_malloc(g, (size_t)nc * vb);
+    unsigned char *sh = gr_malloc(g, (size_t)nc * vb + 1);
     eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), ci);
     eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), ci + nc);
-    eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
+    if (vb)
+        eng_read(g, l->shear, 0, (size_t)nc * vb, sh);
     /* the tags of the atoms the list indexes (owned and ghosts at the build:
      * an insertion since may have written over the ghosts' host slots) */
     const int64_t *tag = g->par->tags_built;
@@ -380,8 +385,9 @@ void par_run_end(struct gravel *g)
     struct engine *e = g->eng;
     struct atoms *a = &g->atoms;
     run_sync_host(g);
-    /* the contacts' history, every rank's, kept by tag pair for the next run */
-    if (e->history && p->list_current) {
+    /* the contacts and their history, every rank's, kept by tag pair for the
+     * next run and restart files */
+    if (p->list_current) {
         struct par_hist *h = NULL;
         hist_collect(g, &h);
         size_t eb = par_hist_entry_bytes(h);
@@ -401,13 +407,24 @@ void par_run_end(struct gravel *g)
         par_hist_free(p->hist);
         p->hist = h;
     }
+    /* every field (forces too: a restart file continues from them), the
+     * extra bytes and the reference positions of the last build */
     int n = a->n;
-    size_t eb = extra_bytes(g), rb = record_bytes(g);
+    size_t eb = extra_bytes(g), xb = 3 * sizeof(double), rb = all_rows_bytes() + eb + xb;
     unsigned char *extra = extra_move(g, n, NULL, 0); /* the fixes' per-atom state */
+    double *xh = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+    double ago = nbr_xhold_read(g, n, xh), lo = 0;
+    if (ago < 0)
+        memcpy(xh, a->x, 3 * (size_t)n * sizeof(double));
+    comm_minmax(&lo, &ago, 1);
     unsigned char *mine = gr_malloc(g, (size_t)n * rb + 1), *all = NULL;
-    for (int i = 0; i < n; i++)
-        pack_atom(a, i, extra ? extra + (size_t)i * eb : NULL, eb, mine + (size_t)i * rb);
+    for (int i = 0; i < n; i++) {
+        unsigned char *r = mine + (size_t)i * rb;
+        pack_rows(a, i, extra ? extra + (size_t)i * eb : NULL, eb, 1, r);
+        memcpy(r + rb - xb, xh + 3 * (size_t)i, xb);
+    }
     free(extra);
+    free(xh);
     size_t bytes = comm_allgatherv(mine, (size_t)n * rb, (void **)&all);
     free(mine);
     if (bytes == (size_t)-1)
@@ -416,13 +433,21 @@ void par_run_end(struct gravel *g)
     qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
     atoms_reserve(g, total);
     extra = eb ? gr_malloc(g, (size_t)total * eb + 1) : NULL;
-    for (int i = 0; i < total; i++)
-        unpack_atom(a, i, all + (size_t)i * rb, extra ? extra + (size_t)i * eb : NULL, eb);
+    free(p->xhold_end);
+    p->xhold_end = gr_malloc(g, (3 * (size_t)total + 1) * sizeof(double));
+    for (int i = 0; i < total; i++) {
+        const unsigned char *r = all + (size_t)i * rb;
+        unpack_rows(a, i, r, extra ? extra + (size_t)i * eb : NULL, eb, 1);
+        memcpy(p->xhold_end + 3 * (size_t)i, r + rb - xb, xb);
+    }
     free(all);
     a->n = total;
     save_fix_state(g, extra, total, eb);
     free(extra);
-    p->tags_at_end = tag_set_key(a);
+    p->tags_at_end = par_tag_set_key(a);
+    p->ago_end = ago > 0 ? (int)ago : 0;
+    p->host_hash = restart_atoms_fingerprint(g);
+    p->ended = 1;
     p->on = 0;
     p->nghost = 0;
     e->nghost = 0;

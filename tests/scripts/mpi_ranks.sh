@@ -10,7 +10,9 @@
 # decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
-# file byte-identical); errors end every rank with one message (doc/parallel.md).
+# file byte-identical); restart files written on N ranks and read on M (an exact
+# continuation, as one process writing and reading); errors end every rank with
+# one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
 serial="$root/bin/gravel"
@@ -191,6 +193,60 @@ for d in range_vel_rate poly_cylinder_next two_fixes; do
     mv out.dump "$d.dump" 2> /dev/null
     check "pour_${d}_np3" '[ $rc -eq 0 ] && [ -s "$d.ref.dump" ] && cmp -s "$d.ref.dump" "$d.dump" && [ "$(rows "$d.ref")" = "$(rows "$d.out")" ] && [ "$(rows "$d.out" | wc -l)" -ge 4 ]'
 done
+
+# restart files across ranks: the walls deck's first run (600 steps) ends in
+# write_restart, a second script reads the file and runs 300 steps; written on
+# N ranks and read on M, its thermo rows and atoms are bit-identical to one
+# process writing and reading (history by tag pair, the wall fixes' per-atom
+# state, the written step's forces: an exact continuation)
+sed '/^run             300/,$d' wall.in | sed 's/^run             600/run             600\nwrite_restart   r.bin/' > wa.in
+cat > wb.in <<'IN'
+read_restart    r.bin
+fix             1 all nve/sphere
+fix             2 all gravity 10.0 vector 0 0 -1
+fix             3 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 12.0
+region          ball sphere 6 6 6 2.0 side out
+fix             4 all wall/gran/region hooke/history 200000.0 NULL 50.0 NULL 0.5 1 region ball
+thermo_modify   norm no format float %.17g
+thermo          100
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+gr() { # ranks, deck, output, extra arguments: bin/gravel on 1, else gravel-mpi
+    if [ "$1" = 1 ]; then "$serial" -in "$2" -log none $4 > "$3" 2>&1
+    else mpirun -np "$1" "$par" -in "$2" -log none $4 > "$3" 2>&1; fi
+}
+gr 1 wa.in rref.a; gr 1 wb.in rref.out; mv final.dump rref.dump
+restart_pair() { # name, writer ranks, reader ranks
+    gr "$2" wa.in "$1.a"; ra=$?
+    gr "$3" wb.in "$1.out"; rb=$?
+    mv final.dump "$1.dump" 2> /dev/null
+    check "$1" '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s rref.dump ] && cmp -s rref.dump "$1.dump" && [ "$(rows rref.out)" = "$(rows "$1.out")" ] && [ "$(rows "$1.out" | wc -l)" -eq 4 ] && grep -q "^Restart: exact continuation of step 600$" "$1.out"'
+}
+restart_pair restart_np3_to_1 3 1
+restart_pair restart_np1_to_np2 1 2
+restart_pair restart_np2_to_np4 2 4
+# the chute in single precision (shrink-wrapped z): written on 3 ranks, read by one
+# process: exact (the setup row's pressure aside: an exact continuation skips the
+# setup's force computation, and its virial, on one process too); read on 2 ranks
+# the setup exchange shrink-wraps the box at once, and the log says what follows
+grep -v "^dump\|^run             60\|^write_dump\|^compute\|^thermo_style" chute.in | sed 's/^run             120/run             120\nwrite_restart   c.bin/' > ca.in
+cat > cb.in <<'IN'
+read_restart    c.bin
+neigh_modify    exclude group bottom bottom
+fix             1 all gravity 1.0 chute 26.0
+fix             2 bottom freeze
+fix             3 active nve/sphere
+thermo_modify   norm no format float %.17g
+thermo          30
+run             90
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+gr 1 ca.in cref.a "-precision single"; gr 1 cb.in cref.out "-precision single"; mv final.dump cref.dump
+gr 3 ca.in c31.a "-precision single"; ra=$?; gr 1 cb.in c31.out "-precision single"; rb=$?; mv final.dump c31.dump
+check restart_chute_single_np3_to_1 '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s cref.dump ] && cmp -s cref.dump c31.dump && [ "$(rows cref.out | tail -n +2)" = "$(rows c31.out | tail -n +2)" ] && [ "$(rows c31.out | wc -l)" -eq 4 ] && grep -q "^Restart: exact continuation of step 120$" c31.out'
+gr 2 cb.in c32.out "-precision single"; rb=$?
+check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuation of step 120 with its forces; the setup exchange shrink-wraps the box" c32.out'
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all ave\/time 10 1 10 c_thermo_temp file ave.txt/' chute.in > ave.in
