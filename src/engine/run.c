@@ -509,6 +509,73 @@ static void ranks_stats(struct gravel *g, struct run_stats *st)
 static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
                     double maxov, int post);
 
+/* An exact continuation's setup computes the forces for the virial and
+ * energies of its thermo row only: the contacts' tangential history (pairs,
+ * and the fixes' per-atom state such as wall history), which the setup
+ * would rescale to the friction limit with the written step's full-step
+ * velocities, is held on the host meanwhile, and the written step's forces
+ * (computed with its half-step velocities) go back on the device. */
+struct held {
+    unsigned char *shear, **fix; /* fix: one per fix, NULL without state */
+    size_t shear_bytes, force_bytes;
+    unsigned char *f, *torque;   /* one process: the device's forces (the file's) */
+};
+
+static void hold_history(struct gravel *g, struct held *h)
+{
+    struct engine *e = g->eng;
+    const struct nbr_list *l = nbr_list(g);
+    memset(h, 0, sizeof *h);
+    h->shear_bytes = e->history && l->shear ? (size_t)l->ncontact * e->hist_n * e->rsz : 0;
+    if (h->shear_bytes) {
+        h->shear = gr_malloc(g, h->shear_bytes);
+        eng_read(g, l->shear, 0, h->shear_bytes, h->shear);
+    }
+    if (!par_on(g)) { /* no setup rebuild: the uploaded forces are the file's */
+        h->force_bytes = 3 * (size_t)e->a.n * e->rsz;
+        h->f = gr_malloc(g, h->force_bytes + 1);
+        eng_read(g, e->a.f, 0, h->force_bytes, h->f);
+        if (e->a.torque) {
+            h->torque = gr_malloc(g, h->force_bytes + 1);
+            eng_read(g, e->a.torque, 0, h->force_bytes, h->torque);
+        }
+    }
+    h->fix = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->fix);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        size_t bytes = (size_t)e->a.n * f->peratom_bytes;
+        if (f->peratom && bytes) {
+            h->fix[i] = gr_malloc(g, bytes);
+            eng_read(g, f->peratom, 0, bytes, h->fix[i]);
+        }
+    }
+}
+
+/* ... and back, with the written step's forces */
+static void restore_history(struct gravel *g, struct held *h)
+{
+    struct engine *e = g->eng;
+    if (h->shear_bytes)
+        eng_write(g, nbr_list(g)->shear, 0, h->shear_bytes, h->shear);
+    free(h->shear);
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        if (h->fix[i])
+            eng_write(g, f->peratom, 0, (size_t)e->a.n * f->peratom_bytes, h->fix[i]);
+        free(h->fix[i]);
+    }
+    free(h->fix);
+    if (par_on(g)) {
+        par_resume_forces(g); /* by tag: the setup exchange moved the atoms */
+    } else {
+        eng_write(g, e->a.f, 0, h->force_bytes, h->f);
+        if (h->torque)
+            eng_write(g, e->a.torque, 0, h->force_bytes, h->torque);
+    }
+    free(h->f);
+    free(h->torque);
+}
+
 /* The whole run: setup, loop, footer. */
 static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
 {
@@ -528,10 +595,14 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         post_neighbor(g);
     }
     e->st.nbuilds = 0;
-    if (resumed < 2)
+    if (resumed < 2) {
         compute_forces(g, freezebit, 1, tsetup, 0);
-    else if (par_on(g))
-        par_resume_forces(g); /* the written step's, by tag: the exchange moved the atoms */
+    } else { /* the setup's virial and energies; then the written step's forces */
+        struct held h;
+        hold_history(g, &h);
+        compute_forces(g, freezebit, 1, tsetup, 0);
+        restore_history(g, &h);
+    }
     for (int i = 0; i < g->styles.nfix; i++) /* LAMMPS Modify::setup: after the forces */
         if (g->styles.fix[i]->style->setup)
             g->styles.fix[i]->style->setup(g, g->styles.fix[i]);

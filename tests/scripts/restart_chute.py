@@ -9,7 +9,8 @@ neigh_modify every 1 delay 0, timestep, neigh_modify exclude group bottom
 bottom, the fixes, the compute, thermo) and `run 100`. The thermo line of step
 200 (KinEng, c_1 = erotate/sphere, volume) and a %.17g dump of every atom at
 step 200 must equal the unbroken 200-step run's byte for byte, and the log
-must say "exact continuation".
+must say "exact continuation". The continued run's setup row (step 100) has
+its pressure computed (within 1 % of the unbroken run's at step 100).
 
 Controls: the same continuation with `neighbor 0.2 bin` (skin changed) must
 take the fallback and name the skin with both values; with `timestep 0.0002`
@@ -44,7 +45,7 @@ fix             1 all gravity 1.0 chute 26.0
 fix             2 bottom freeze
 fix             3 active nve/sphere
 compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 vol
+thermo_style    custom step atoms ke c_1 vol press
 thermo          100
 thermo_modify   norm no
 """
@@ -77,7 +78,7 @@ def gravel(cwd, deck, tag):
 def thermo_line(log, step):
     for line in log.splitlines():
         w = line.split()
-        if len(w) == 5 and w[0] == str(step):
+        if len(w) == 6 and w[0] == str(step):
             return line.strip()
     return None
 
@@ -104,6 +105,15 @@ def main():
         check("exact_path", "Restart: exact continuation of step 100" in b,
               "; ".join(l for l in b.splitlines() if l.startswith("Restart:")))
         check("thermo_200_identical", lf is not None and lf == lb, "%s vs %s" % (lf, lb))
+        # the setup row's pressure: computed from the restored state (full-step
+        # velocities, as LAMMPS's setup), within 1 % of the unbroken run's step 100
+        pf, pb = thermo_line(full, 100), thermo_line(b, 100)
+        try:
+            p_full, p_cont = float(pf.split()[5]), float(pb.split()[5])
+            ok = abs(p_cont - p_full) <= 0.01 * abs(p_full) and p_full > 0
+        except (AttributeError, ValueError):
+            ok, p_full, p_cont = False, pf, pb
+        check("setup_row_pressure", ok, "%s vs %s" % (p_full, p_cont))
         # erotate/sphere must be the benchmark's (contacts active at the restart)
         check("thermo_200_value", lf is not None and " 1573.8634 " in " " + lf + " ", lf)
         try:
