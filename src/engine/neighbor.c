@@ -1398,7 +1398,8 @@ int nbr_xhold_read(struct gravel *g, int n, double *out)
     struct engine *e = g->eng;
     if (!e || !e->nbr || !e->nbr->built)
         return -1;
-    eng_read_reals(g, e->nbr->xhold, 3 * (size_t)n, out);
+    if (n > 0)
+        eng_read_reals(g, e->nbr->xhold, 3 * (size_t)n, out);
     if (e->single) /* the device's are relative to the origin */
         for (size_t i = 0; i < 3 * (size_t)n; i++)
             out[i] += e->origin[i % 3];

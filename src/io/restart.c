@@ -1064,11 +1064,6 @@ void cmd_restart(struct gravel *g, int argc, char **argv)
     }
 }
 
-int restart_periodic(const struct gravel *g)
-{
-    return g->restart && (g->restart->every[0] > 0 || g->restart->every[1] > 0);
-}
-
 int restart_due(const struct gravel *g, bigint step)
 {
     const struct restart *r = g->restart;
@@ -1079,8 +1074,9 @@ int restart_due(const struct gravel *g, bigint step)
 void restart_step(struct gravel *g)
 {
     struct restart *r = g->restart;
-    if (!r)
+    if (!restart_due(g, g->step))
         return;
+    par_snapshot_begin(g); /* several ranks: every rank's state on the host */
     char path[4096];
     if (r->every[0] > 0 && g->step % r->every[0] == 0) {
         expand_star(g, r->file[0], path, sizeof path);
@@ -1091,6 +1087,7 @@ void restart_step(struct gravel *g)
         r->toggle ^= 1;
         restart_write(g, path);
     }
+    par_snapshot_end(g);
 }
 
 /* ---- reading ------------------------------------------------------------------------ */

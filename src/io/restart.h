@@ -57,8 +57,6 @@ int restart_resume(struct gravel *g);
  * setup exchange always rebuilds the list; at 2 the forces come back with
  * par_resume_forces). */
 void restart_adopt_ranks(struct gravel *g);
-/* Whether `restart N` writes files during runs. */
-int restart_periodic(const struct gravel *g);
 /* Hash of every per-atom host array of the atoms section (a file's exact
  * continuation data is valid while it is unchanged). */
 uint64_t restart_atoms_fingerprint(const struct gravel *g);

@@ -225,8 +225,6 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     }
-    if (!why && restart_periodic(g))
-        why = "restart files written during a run (restart N)";
     if (!why && g->eng && g->eng->hist_owner)
         why = "-compat lammps2021 contact owners";
     if (why)
@@ -377,77 +375,120 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     free(sh);
 }
 
+/* Every rank's contacts and their history by tag pair, into p->hist (for the
+ * next run and restart files). */
+static void hist_gather(struct gravel *g)
+{
+    struct par *p = g->par;
+    struct par_hist *h = NULL;
+    hist_collect(g, &h);
+    size_t eb = par_hist_entry_bytes(h);
+    unsigned char *buf = gr_malloc(g, h->n * eb + 1), *all = NULL;
+    size_t k = 0;
+    for (size_t s = 0; s < h->cap; s++)
+        if (h->key[2 * s])
+            par_hist_entry_pack(h, s, buf + eb * k++);
+    size_t bytes = comm_allgatherv(buf, k * eb, (void **)&all);
+    free(buf);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the contact history of every rank");
+    par_hist_free(h);
+    h = par_hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
+    par_hist_entries_put(g, &h, all, bytes);
+    free(all);
+    par_hist_free(p->hist);
+    p->hist = h;
+}
+
+/* Every rank's atoms, every field of the table (forces too), sorted by tag:
+ * *total records of *rb bytes (malloc'd). With state, each record carries the
+ * atom's extra bytes (the fixes' per-atom state) and the reference position
+ * of the last build (3 doubles) at its end. */
+static unsigned char *atoms_gather(struct gravel *g, int state, int *total, size_t *rb)
+{
+    const struct atoms *a = &g->atoms;
+    int n = a->n;
+    size_t eb = state ? extra_bytes(g) : 0, xb = state ? 3 * sizeof(double) : 0;
+    *rb = all_rows_bytes() + eb + xb;
+    unsigned char *extra = state ? extra_move(g, n, NULL, 0) : NULL;
+    double *xh = NULL;
+    if (state) {
+        xh = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
+        if (nbr_xhold_read(g, n, xh) < 0)
+            memcpy(xh, a->x, 3 * (size_t)n * sizeof(double));
+    }
+    unsigned char *mine = gr_malloc(g, (size_t)n * *rb + 1), *all = NULL;
+    for (int i = 0; i < n; i++) {
+        unsigned char *r = mine + (size_t)i * *rb;
+        pack_rows(a, i, extra ? extra + (size_t)i * eb : NULL, eb, 1, r);
+        if (xh)
+            memcpy(r + *rb - xb, xh + 3 * (size_t)i, xb);
+    }
+    free(extra);
+    free(xh);
+    size_t bytes = comm_allgatherv(mine, (size_t)n * *rb, (void **)&all);
+    free(mine);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the atoms of every rank");
+    *total = (int)(bytes / *rb);
+    qsort(all, (size_t)*total, *rb, by_first_tag); /* tag: the table's first row */
+    return all;
+}
+
+/* The gathered records into g->atoms (room reserved here); with state, the
+ * fixes' per-atom state saved, the reference positions and the steps since
+ * the build (ago) kept for restart files. */
+static void atoms_unpack(struct gravel *g, unsigned char *all, int total, size_t rb, int state,
+                         int ago)
+{
+    struct par *p = g->par;
+    struct atoms *a = &g->atoms;
+    size_t eb = state ? extra_bytes(g) : 0, xb = state ? 3 * sizeof(double) : 0;
+    atoms_reserve(g, total);
+    unsigned char *extra = eb ? gr_malloc(g, (size_t)total * eb + 1) : NULL;
+    if (state) {
+        free(p->xhold_end);
+        p->xhold_end = gr_malloc(g, (3 * (size_t)total + 1) * sizeof(double));
+    }
+    for (int i = 0; i < total; i++) {
+        const unsigned char *r = all + (size_t)i * rb;
+        unpack_rows(a, i, r, extra ? extra + (size_t)i * eb : NULL, eb, 1);
+        if (state)
+            memcpy(p->xhold_end + 3 * (size_t)i, r + rb - xb, xb);
+    }
+    a->n = total;
+    if (state) {
+        save_fix_state(g, extra, total, eb);
+        p->tags_at_end = par_tag_set_key(a);
+        p->ago_end = ago;
+        p->host_hash = restart_atoms_fingerprint(g);
+        p->ended = 1;
+    }
+    free(extra);
+}
+
+/* steps since the last build, the same on every rank (one without atoms too) */
+static int build_age(struct gravel *g)
+{
+    double *none = NULL, lo = 0, ago = nbr_xhold_read(g, 0, none);
+    comm_minmax(&lo, &ago, 1);
+    return ago > 0 ? (int)ago : 0;
+}
+
 void par_run_end(struct gravel *g)
 {
     struct par *p = g->par;
     if (!p || !p->on)
         return;
     struct engine *e = g->eng;
-    struct atoms *a = &g->atoms;
     run_sync_host(g);
-    /* the contacts and their history, every rank's, kept by tag pair for the
-     * next run and restart files */
-    if (p->list_current) {
-        struct par_hist *h = NULL;
-        hist_collect(g, &h);
-        size_t eb = par_hist_entry_bytes(h);
-        unsigned char *buf = gr_malloc(g, h->n * eb + 1), *all = NULL;
-        size_t k = 0;
-        for (size_t s = 0; s < h->cap; s++)
-            if (h->key[2 * s])
-                par_hist_entry_pack(h, s, buf + eb * k++);
-        size_t bytes = comm_allgatherv(buf, k * eb, (void **)&all);
-        free(buf);
-        if (bytes == (size_t)-1)
-            gr_error(g, "out of memory gathering the contact history of every rank");
-        par_hist_free(h);
-        h = par_hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
-        par_hist_entries_put(g, &h, all, bytes);
-        free(all);
-        par_hist_free(p->hist);
-        p->hist = h;
-    }
-    /* every field (forces too: a restart file continues from them), the
-     * extra bytes and the reference positions of the last build */
-    int n = a->n;
-    size_t eb = extra_bytes(g), xb = 3 * sizeof(double), rb = all_rows_bytes() + eb + xb;
-    unsigned char *extra = extra_move(g, n, NULL, 0); /* the fixes' per-atom state */
-    double *xh = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
-    double ago = nbr_xhold_read(g, n, xh), lo = 0;
-    if (ago < 0)
-        memcpy(xh, a->x, 3 * (size_t)n * sizeof(double));
-    comm_minmax(&lo, &ago, 1);
-    unsigned char *mine = gr_malloc(g, (size_t)n * rb + 1), *all = NULL;
-    for (int i = 0; i < n; i++) {
-        unsigned char *r = mine + (size_t)i * rb;
-        pack_rows(a, i, extra ? extra + (size_t)i * eb : NULL, eb, 1, r);
-        memcpy(r + rb - xb, xh + 3 * (size_t)i, xb);
-    }
-    free(extra);
-    free(xh);
-    size_t bytes = comm_allgatherv(mine, (size_t)n * rb, (void **)&all);
-    free(mine);
-    if (bytes == (size_t)-1)
-        gr_error(g, "out of memory gathering the atoms of every rank");
-    int total = (int)(bytes / rb);
-    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
-    atoms_reserve(g, total);
-    extra = eb ? gr_malloc(g, (size_t)total * eb + 1) : NULL;
-    free(p->xhold_end);
-    p->xhold_end = gr_malloc(g, (3 * (size_t)total + 1) * sizeof(double));
-    for (int i = 0; i < total; i++) {
-        const unsigned char *r = all + (size_t)i * rb;
-        unpack_rows(a, i, r, extra ? extra + (size_t)i * eb : NULL, eb, 1);
-        memcpy(p->xhold_end + 3 * (size_t)i, r + rb - xb, xb);
-    }
+    if (p->list_current)
+        hist_gather(g);
+    int ago = build_age(g), total;
+    size_t rb;
+    unsigned char *all = atoms_gather(g, 1, &total, &rb);
+    atoms_unpack(g, all, total, rb, 1, ago);
     free(all);
-    a->n = total;
-    save_fix_state(g, extra, total, eb);
-    free(extra);
-    p->tags_at_end = par_tag_set_key(a);
-    p->ago_end = ago > 0 ? (int)ago : 0;
-    p->host_hash = restart_atoms_fingerprint(g);
-    p->ended = 1;
     p->on = 0;
     p->nghost = 0;
     e->nghost = 0;
@@ -875,24 +916,19 @@ void par_forward(struct gravel *g)
 
 /* ---- every atom on every rank for an output step ------------------------------- */
 
-void par_gather_begin(struct gravel *g)
+/* The whole set on the host, this rank's own kept in p->local (state: with
+ * what a restart file needs, par_snapshot_begin). */
+static void gather_begin(struct gravel *g, int state)
 {
     struct par *p = g->par;
-    if (!p || !p->on || p->gathered)
-        return;
     struct engine *e = g->eng;
     run_sync_host(g);
     struct atoms *a = &g->atoms;
-    size_t rb = all_rows_bytes();
-    unsigned char *mine = gr_malloc(g, (size_t)a->n * rb + 1), *all = NULL;
-    for (int i = 0; i < a->n; i++)
-        pack_rows(a, i, NULL, 0, 1, mine + (size_t)i * rb);
-    size_t bytes = comm_allgatherv(mine, (size_t)a->n * rb, (void **)&all);
-    free(mine);
-    if (bytes == (size_t)-1)
-        gr_error(g, "out of memory gathering the atoms of every rank for output");
-    int total = (int)(bytes / rb);
-    qsort(all, (size_t)total, rb, by_first_tag); /* tag: the table's first row */
+    if (state && p->list_current)
+        hist_gather(g);
+    int ago = state ? build_age(g) : 0, total;
+    size_t rb;
+    unsigned char *all = atoms_gather(g, state, &total, &rb);
     p->local = *a;
     struct atoms full = {0};
     full.ntypes = a->ntypes;
@@ -902,14 +938,39 @@ void par_gather_begin(struct gravel *g)
     full.type_mass = a->type_mass;
     full.maxtag = a->maxtag;
     *a = full;
-    atoms_reserve(g, total);
-    for (int i = 0; i < total; i++)
-        unpack_rows(a, i, all + (size_t)i * rb, NULL, 0, 1);
-    a->n = total;
+    atoms_unpack(g, all, total, rb, state, ago);
     free(all);
     p->gathered = 1;
     p->on = 0;      /* host sums over the whole set, as one process */
     e->active = 0;  /* the device holds this rank's atoms: no sync into the whole set */
+}
+
+void par_gather_begin(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (p && p->on && !p->gathered)
+        gather_begin(g, 0);
+}
+
+void par_snapshot_begin(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (p && p->on && !p->gathered)
+        gather_begin(g, 1);
+}
+
+void par_snapshot_end(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->gathered)
+        return;
+    par_hist_free(p->hist); /* the run's own carry is taken at its end */
+    p->hist = NULL;
+    for (int k = 0; k < p->nsaved; k++)
+        free(p->saved[k].state);
+    p->nsaved = 0;
+    p->ended = 0;
+    par_gather_end(g);
 }
 
 void par_gather_end(struct gravel *g)

@@ -102,6 +102,11 @@ void par_run_end(struct gravel *g);
  * par_gather_end restores this rank's own. No device work in between. */
 void par_gather_begin(struct gravel *g);
 void par_gather_end(struct gravel *g);
+/* A restart file during a decomposed run (`restart N`): as par_gather_begin,
+ * with what par_list_export and par_fix_rows hand the file, until
+ * par_snapshot_end. */
+void par_snapshot_begin(struct gravel *g);
+void par_snapshot_end(struct gravel *g);
 
 /* Restart files on several ranks (src/io/restart.c). Between runs, after a
  * decomposed run and while the host atoms are the ones it left (same tags,

@@ -226,6 +226,17 @@ restart_pair() { # name, writer ranks, reader ranks
 restart_pair restart_np3_to_1 3 1
 restart_pair restart_np1_to_np2 1 2
 restart_pair restart_np2_to_np4 2 4
+# `restart 300 rr.*` during the 600-step run on 3 ranks (the run itself unchanged):
+# rr.300 read by one process and by 2 ranks continues as one process's rr.300
+sed 's/^run             600/restart         300 rr.*\nrun             600/; /^write_restart/d' wa.in > wp.in
+sed 's/^read_restart    r.bin/read_restart    rr.300/' wb.in > wq.in
+gr 1 wp.in pref.a; gr 1 wq.in pref.out; mv final.dump pref.dump
+rm -f rr.*; gr 3 wp.in p3.a; ra=$?
+check restart_mid_run_np3 '[ $ra -eq 0 ] && [ -s rr.300 ] && [ -s rr.600 ] && [ "$(rows pref.a)" = "$(rows p3.a)" ] && [ "$(rows p3.a | wc -l)" -eq 7 ]'
+for np in 1 2; do
+    gr $np wq.in "p3_$np.out"; rb=$?; mv final.dump "p3_$np.dump" 2> /dev/null
+    check "restart_mid_run_np3_read_np$np" '[ $rb -eq 0 ] && [ -s pref.dump ] && cmp -s pref.dump "p3_$np.dump" && [ "$(rows pref.out)" = "$(rows "p3_$np.out")" ] && grep -q "^Restart: exact continuation of step 300$" "p3_$np.out"'
+done
 # the chute in single precision (shrink-wrapped z): written on 3 ranks, read by one
 # process: exact; read on 2 ranks the setup exchange shrink-wraps the box at once,
 # and the log says what follows
