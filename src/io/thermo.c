@@ -668,6 +668,11 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     double natoms = (double)nall;
     int norm = norm_flag(g) && nall > 0;
     *isint = keywords[k].type == V_BIGINT;
+    if (par_gathered(g) && (k == KW_ETOTAL || k == KW_PE || k == KW_EPAIR || k == KW_PRESS ||
+                            (k >= KW_PXX && k <= KW_PYZ)))
+        gr_error(g, "thermo keyword %s read by a compute or variable on every rank's atoms: "
+                    "not built yet on %d MPI ranks (doc/parallel.md)", keywords[k].header,
+                 comm_size());
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
     case KW_ELAPSED: *ival = g->step - g->firststep; return (double)*ival;
@@ -842,6 +847,19 @@ const char *thermo_header_text(struct gravel *g)
     return st->text ? st->text : "";
 }
 
+/* c_ID...: a compute that evaluates on every rank's atoms (compute.h) */
+static int gathers(struct gravel *g, const char *col)
+{
+    char id[GR_NAMELEN];
+    size_t len = strcspn(col + 2, "[");
+    if (len >= sizeof id)
+        return 0;
+    memcpy(id, col + 2, len);
+    id[len] = 0;
+    const struct compute *c = compute_find(g, id);
+    return c && c->style->ranks == COMPUTE_RANKS_GATHER;
+}
+
 const char *thermo_line_text(struct gravel *g)
 {
     struct output_state *st = output_state(g);
@@ -855,20 +873,35 @@ const char *thermo_line_text(struct gravel *g)
             run_sync_host(g);
             break;
         }
-    /* evaluate everything first: computes and variables may raise errors */
-    for (int i = 0; i < st->ncol; i++) {
-        int k = st->kind[i], isint = 0;
-        ival[i] = 0;
-        if (k >= 0) {
-            val[i] = keyword_value(g, k, &ival[i], &isint);
-        } else if (k == KIND_COMPUTE) {
-            val[i] = compute_ref_value(g, t->col[i], norm_flag(g), "thermo_style");
-        } else if (k == KIND_FIX) {
-            val[i] = fix_ref_value(g, t->col[i]);
-        } else {
-            val[i] = var_compute_equal(g, t->col[i] + 2);
+    /* evaluate everything first: computes and variables may raise errors;
+     * several ranks: the computes that need every atom after the rest, on
+     * every rank's atoms gathered (one gather per line) */
+    int norm = norm_flag(g), gather = 0, late[GR_MAXTHERMO];
+    for (int i = 0; i < st->ncol; i++)
+        late[i] = st->kind[i] == KIND_COMPUTE && par_on(g) && gathers(g, t->col[i]);
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < st->ncol; i++) {
+            int k = st->kind[i], isint = 0;
+            if (late[i] != pass)
+                continue;
+            if (late[i] && !gather) {
+                par_gather_begin(g);
+                gather = 1;
+            }
+            ival[i] = 0;
+            if (k >= 0) {
+                val[i] = keyword_value(g, k, &ival[i], &isint);
+            } else if (k == KIND_COMPUTE) {
+                val[i] = compute_ref_value(g, t->col[i], norm, "thermo_style");
+            } else if (k == KIND_FIX) {
+                val[i] = fix_ref_value(g, t->col[i]);
+            } else {
+                val[i] = var_compute_equal(g, t->col[i] + 2);
+            }
         }
     }
+    if (gather)
+        par_gather_end(g);
     text_clear(g);
     if (t->multi)
         text_add(g, "---------------- Step %8lld ----- CPU = %11.4f (sec) ----------------",

@@ -52,6 +52,7 @@ void par_free(struct gravel *g)
 }
 
 int par_on(const struct gravel *g) { return g->par && g->par->on; }
+int par_gathered(const struct gravel *g) { return g->par && g->par->gathered; }
 int par_nghost(const struct gravel *g) { return par_on(g) ? g->par->nghost : 0; }
 
 /* ---- the processors command ------------------------------------------------------ */
@@ -165,7 +166,6 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "viscous", "setforce", "wall/gran",
                                         "wall/gran/region", "balance", "mesh/surface",
                                         "move/mesh", "pour", NULL};
-static const char *const par_computes[] = {"erotate/sphere", "temp", "temp/sphere", "ke", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -206,7 +206,7 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     for (int i = 0; !why && i < g->styles.ncompute; i++)
-        if (!listed(par_computes, g->styles.compute[i]->style->name)) {
+        if (g->styles.compute[i]->style->ranks == COMPUTE_RANKS_NO) {
             snprintf(buf, sizeof buf, "compute %s (%.60s)", g->styles.compute[i]->id,
                      g->styles.compute[i]->style->name);
             why = buf;

@@ -74,6 +74,8 @@ struct par *par_state(struct gravel *g);
 void par_free(struct gravel *g);
 /* 1 while a decomposed run is active */
 int par_on(const struct gravel *g);
+/* 1 while g->atoms holds every rank's atoms for an output step (par_gather_begin) */
+int par_gathered(const struct gravel *g);
 /* Ghost slots behind the owned atoms on the device (0 when not decomposed). */
 int par_nghost(const struct gravel *g);
 

@@ -14,6 +14,7 @@
 #include <gsl/gsl_eigen.h>
 
 #include "args.h"
+#include "atoms.h"
 #include "compute.h"
 #include "domain.h"
 #include "dump.h"
@@ -68,22 +69,25 @@ bigint group_count(const struct gravel *g, int igroup)
     return n;
 }
 
-double group_mass(const struct gravel *g, int igroup)
+double group_mass(struct gravel *g, int igroup)
 {
     unsigned bit = group_bit(igroup);
+    const int *order = atoms_tag_order(g);
     double m = 0;
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.mask[i] & bit)
-            m += g->atoms.rmass[i];
+    for (int k = 0; k < g->atoms.n; k++)
+        if (g->atoms.mask[order[k]] & bit)
+            m += g->atoms.rmass[order[k]];
     return m;
 }
 
-void group_xcm(const struct gravel *g, int igroup, double masstotal, double xcm[3])
+void group_xcm(struct gravel *g, int igroup, double masstotal, double xcm[3])
 {
     unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     double s[3] = {0, 0, 0};
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & bit))
             continue;
         double u[3];
@@ -95,15 +99,18 @@ void group_xcm(const struct gravel *g, int igroup, double masstotal, double xcm[
         xcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
 }
 
-void group_vcm(const struct gravel *g, int igroup, double masstotal, double vcm[3])
+void group_vcm(struct gravel *g, int igroup, double masstotal, double vcm[3])
 {
     unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     double s[3] = {0, 0, 0};
-    for (int i = 0; i < a->n; i++)
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (a->mask[i] & bit)
             for (int d = 0; d < 3; d++)
                 s[d] += a->rmass[i] * a->v[3 * i + d];
+    }
     for (int d = 0; d < 3; d++)
         vcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
 }
@@ -124,25 +131,30 @@ void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3]
             }
 }
 
-double group_ke(const struct gravel *g, int igroup)
+double group_ke(struct gravel *g, int igroup)
 {
     unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     double ke = 0;
-    for (int i = 0; i < a->n; i++)
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (a->mask[i] & bit) {
             const double *v = a->v + 3 * i;
             ke += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         }
+    }
     return 0.5 * ke;
 }
 
-void group_angmom(const struct gravel *g, int igroup, const double xcm[3], double L[3])
+void group_angmom(struct gravel *g, int igroup, const double xcm[3], double L[3])
 {
     unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     L[0] = L[1] = L[2] = 0;
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & bit))
             continue;
         double u[3];
@@ -156,12 +168,14 @@ void group_angmom(const struct gravel *g, int igroup, const double xcm[3], doubl
     }
 }
 
-void group_inertia(const struct gravel *g, int igroup, const double xcm[3], double I[3][3])
+void group_inertia(struct gravel *g, int igroup, const double xcm[3], double I[3][3])
 {
     unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
     memset(I, 0, 9 * sizeof(double));
-    for (int i = 0; i < a->n; i++) {
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & bit))
             continue;
         double u[3];

@@ -22,21 +22,22 @@ static inline unsigned group_bit(int i) { return 1u << i; }
  * else those whose `every` divides step. */
 void group_dynamic_update(struct gravel *g, bigint step);
 
-/* Reductions over the atoms of group i (host arrays). */
+/* Reductions over the atoms of group i (host arrays); sums in tag order, so
+ * they depend on the atoms only (the same on any number of MPI ranks). */
 bigint group_count(const struct gravel *g, int igroup);
-double group_mass(const struct gravel *g, int igroup);
+double group_mass(struct gravel *g, int igroup);
 /* Center of mass of unwrapped positions; masstotal from group_mass (0: xcm = 0). */
-void group_xcm(const struct gravel *g, int igroup, double masstotal, double xcm[3]);
+void group_xcm(struct gravel *g, int igroup, double masstotal, double xcm[3]);
 /* Center-of-mass velocity. */
-void group_vcm(const struct gravel *g, int igroup, double masstotal, double vcm[3]);
+void group_vcm(struct gravel *g, int igroup, double masstotal, double vcm[3]);
 /* Extent of the (wrapped) positions; lo > hi when the group is empty. */
 void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3]);
 /* Translational kinetic energy sum 1/2 m v^2. */
-double group_ke(const struct gravel *g, int igroup);
+double group_ke(struct gravel *g, int igroup);
 /* Angular momentum about xcm (unwrapped positions). */
-void group_angmom(const struct gravel *g, int igroup, const double xcm[3], double L[3]);
+void group_angmom(struct gravel *g, int igroup, const double xcm[3], double L[3]);
 /* Inertia tensor about xcm (point masses, unwrapped positions). */
-void group_inertia(const struct gravel *g, int igroup, const double xcm[3], double I[3][3]);
+void group_inertia(struct gravel *g, int igroup, const double xcm[3], double I[3][3]);
 /* Angular velocity w with I w = L, solved in the principal frame; principal
  * moments below 1e-10 of the largest (two atoms, a line of atoms) get no
  * rotation about that axis, as LAMMPS' nearly-singular branch. */

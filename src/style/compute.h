@@ -20,8 +20,16 @@
 
 struct compute;
 
+/* How a style evaluates in a run decomposed over MPI ranks (par.h). */
+enum compute_ranks {
+    COMPUTE_RANKS_NO,       /* not yet: the run stops (it reads the device's contacts) */
+    COMPUTE_RANKS_SUMS,     /* on the owned atoms, summed over the ranks in tag order */
+    COMPUTE_RANKS_GATHER,   /* on every rank's atoms, gathered in tag order for the output */
+};
+
 struct compute_style {
     const char *name;
+    enum compute_ranks ranks;
     /* Parse the style arguments (argv after "ID group style"), set the
      * output flags and sizes, allocate c->data. Errors via gr_error; the
      * compute is freed by the caller then (destroy is called when set). */

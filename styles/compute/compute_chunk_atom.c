@@ -397,6 +397,7 @@ static void chunk_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_chunk_atom = {
     .name = "chunk/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = chunk_create,
     .scalar = chunk_scalar,
     .peratom = chunk_peratom,

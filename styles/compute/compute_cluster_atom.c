@@ -59,6 +59,7 @@ static void cluster_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_cluster_atom = {
     .name = "cluster/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = cluster_create,
     .peratom = cluster_peratom,
 };

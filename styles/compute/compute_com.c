@@ -22,6 +22,7 @@ static void com_vector(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_com = {
     .name = "com",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = com_create,
     .vector = com_vector,
 };

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atoms.h"
 #include "compute.h"
 #include "compute_chunk_atom.h"
 #include "domain.h"
@@ -41,7 +42,9 @@ static void cc_array(struct gravel *g, struct compute *c)
     double *com = compute_array_rows(g, c, n);
     double *mass = gr_calloc(g, (size_t)(n > 0 ? n : 1), sizeof *mass);
     memset(com, 0, (size_t)n * 3 * sizeof *com);
-    for (int i = 0; i < a->n; i++) {
+    const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
+    for (int q = 0; q < a->n; q++) {
+        const int i = order[q];
         int k = ichunk[i] - 1;
         if (!(a->mask[i] & c->groupbit) || k < 0)
             continue;
@@ -59,6 +62,7 @@ static void cc_array(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_com_chunk = {
     .name = "com/chunk",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = cc_create,
     .init = cc_init,
     .array = cc_array,

@@ -86,6 +86,7 @@ static void coord_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_coord_atom = {
     .name = "coord/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = coord_create,
     .peratom = coord_peratom,
 };

@@ -33,6 +33,7 @@ static void count_type_vector(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_count_type = {
     .name = "count/type",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = count_type_create,
     .vector = count_type_vector,
 };

@@ -37,6 +37,7 @@ static double erotate_scalar(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_erotate_sphere = {
     .name = "erotate/sphere",
+    .ranks = COMPUTE_RANKS_SUMS,
     .create = erotate_create,
     .scalar = erotate_scalar,
 };

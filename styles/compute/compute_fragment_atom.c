@@ -20,5 +20,6 @@ static void fragment_create(struct gravel *g, struct compute *c, int argc, char 
 
 const struct compute_style compute_style_fragment_atom = {
     .name = "fragment/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = fragment_create,
 };

@@ -6,6 +6,7 @@
  * massless group. */
 #include <math.h>
 
+#include "atoms.h"
 #include "compute.h"
 #include "domain.h"
 #include "error.h"
@@ -32,7 +33,9 @@ static double gyration_sums(struct gravel *g, struct compute *c, double rg[7])
     group_xcm(g, c->igroup, mtot, cm);
     for (int k = 0; k < 7; k++)
         rg[k] = 0.0;
-    for (int i = 0; i < a->n; i++) {
+    const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (!(a->mask[i] & c->groupbit))
             continue;
         double u[3];
@@ -66,6 +69,7 @@ static void gyration_vector(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_gyration = {
     .name = "gyration",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = gyration_create,
     .scalar = gyration_scalar,
     .vector = gyration_vector,

@@ -33,6 +33,7 @@ static double ke_scalar(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_ke = {
     .name = "ke",
+    .ranks = COMPUTE_RANKS_SUMS,
     .create = ke_create,
     .scalar = ke_scalar,
 };

@@ -26,6 +26,7 @@ static void ke_atom_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_ke_atom = {
     .name = "ke/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = ke_atom_create,
     .peratom = ke_atom_peratom,
 };

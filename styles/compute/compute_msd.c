@@ -142,10 +142,21 @@ static void msd_vector(struct gravel *g, struct compute *c)
     m->cache_step = g->step;
 }
 
+/* Run setup: the group's count is taken at the first evaluation of the run
+ * (the setup's output), when every atom is on the host (several MPI ranks:
+ * gathered, par.h). */
+static void msd_setup(struct gravel *g, struct compute *c)
+{
+    (void)g;
+    struct msd *m = c->data;
+    m->inited = 0;
+}
+
 const struct compute_style compute_style_msd = {
     .name = "msd",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = msd_create,
-    .init = msd_init,
+    .init = msd_setup,
     .vector = msd_vector,
     .destroy = msd_destroy,
 };

@@ -103,6 +103,7 @@ static void property_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_property_atom = {
     .name = "property/atom",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = property_create,
     .peratom = property_peratom,
     .destroy = property_destroy,

@@ -254,6 +254,7 @@ static void reduce_vector(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_reduce = {
     .name = "reduce",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = reduce_create,
     .init = reduce_init,
     .scalar = reduce_scalar,
@@ -263,6 +264,7 @@ const struct compute_style compute_style_reduce = {
 
 const struct compute_style compute_style_reduce_region = {
     .name = "reduce/region",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = reduce_region_create,
     .init = reduce_init,
     .scalar = reduce_scalar,

@@ -17,6 +17,7 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
 
 const struct compute_style compute_style_temp = {
     .name = "temp",
+    .ranks = COMPUTE_RANKS_SUMS,
     .create = create,
     .init = temp_compute_init,
     .scalar = temp_compute_scalar,

@@ -91,10 +91,21 @@ static void vacf_vector(struct gravel *g, struct compute *c)
         c->vector[k] = w->nvacf ? s[k] / (double)w->nvacf : s[k];
 }
 
+/* Run setup: the group's count is taken at the first evaluation of the run
+ * (the setup's output), when every atom is on the host (several MPI ranks:
+ * gathered, par.h). */
+static void vacf_setup(struct gravel *g, struct compute *c)
+{
+    (void)g;
+    struct vacf *w = c->data;
+    w->inited = 0;
+}
+
 const struct compute_style compute_style_vacf = {
     .name = "vacf",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = vacf_create,
-    .init = vacf_init,
+    .init = vacf_setup,
     .vector = vacf_vector,
     .destroy = vacf_destroy,
 };

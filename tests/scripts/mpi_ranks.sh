@@ -10,7 +10,8 @@
 # decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
-# file byte-identical); restart files written on N ranks and read on M (an exact
+# file byte-identical); the standard computes in thermo and dumps; restart files
+# written on N ranks and read on M (an exact
 # continuation, as one process writing and reading); errors end every rank with
 # one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
@@ -193,6 +194,62 @@ for d in range_vel_rate poly_cylinder_next two_fixes; do
     mv out.dump "$d.dump" 2> /dev/null
     check "pour_${d}_np3" '[ $rc -eq 0 ] && [ -s "$d.ref.dump" ] && cmp -s "$d.ref.dump" "$d.dump" && [ "$(rows "$d.ref")" = "$(rows "$d.out")" ] && [ "$(rows "$d.out" | wc -l)" -ge 4 ]'
 done
+
+# computes on several ranks: those summed per owned atom in tag order (temp) and
+# those evaluated on every rank's atoms gathered for the output step (com,
+# gyration, msd, vacf, reduce of ke/atom, property/atom and coord/atom,
+# count/type, com/chunk of chunk/atom bins, cluster/atom), in thermo and in a
+# dump: every value and file the same bits as one process, on 3 and 4 ranks
+cat > cg.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 12 0 12 0 12
+create_box      2 box
+region          fill block 0 12 0 12 1 11
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1.9098593
+set             type 1 type/fraction 2 0.3 12345
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             2 all gravity 10.0 vector 0 0 -1
+fix             3 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 1 zplane 0.0 12.0
+timestep        0.0002
+group           two type 2
+compute         cm all com
+compute         gy two gyration
+compute         ms all msd com yes
+compute         va all vacf
+compute         ka all ke/atom
+compute         rk all reduce sum c_ka
+compute         pa all property/atom vz radius
+compute         rp all reduce max c_pa[1] c_pa[2]
+compute         ct all count/type atom
+compute         co all coord/atom cutoff 1.2
+compute         rc all reduce ave c_co
+compute         ch all chunk/atom bin/1d z lower 3.0 units box
+compute         cc all com/chunk ch
+compute         cl all cluster/atom 1.0
+compute         rl all reduce min c_cl
+compute         t all temp
+thermo_style    custom step atoms ke c_t c_cm[1] c_cm[3] c_gy c_ms[4] c_va[4] c_rk c_rp[1] c_rp[2] c_ct[2] c_rc c_cc[2][3] c_rl
+thermo_modify   norm no format float %.17g
+thermo          100
+dump            d1 all custom 300 d.*.txt id x y z c_ka c_co c_ch c_cl
+dump_modify     d1 sort id format float %.17g
+run             600
+write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
+IN
+"$serial" -in cg.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same computes_np3 cg.in 3 ""
+same computes_np4 cg.in 4 ""
+check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0" | wc -l)" -ge 5 ]'
 
 # restart files across ranks: the walls deck's first run (600 steps) ends in
 # write_restart, a second script reads the file and runs 300 steps; written on
