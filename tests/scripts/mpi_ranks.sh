@@ -246,6 +246,7 @@ dump_modify     d1 sort id format float %.17g
 run             600
 write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
 IN
+rm -f d.*.txt v_*.vtk # the chute's dumps
 "$serial" -in cg.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
