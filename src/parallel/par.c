@@ -165,7 +165,8 @@ static size_t all_rows_bytes(void)
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "wall/gran",
                                         "wall/gran/region", "balance", "mesh/surface",
-                                        "move/mesh", "pour", NULL};
+                                        "move/mesh", "pour", "ave/time", "ave/chunk",
+                                        "ave/histo", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -3,14 +3,17 @@
 #include "ave_common.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "args.h"
+#include "comm.h"
 #include "compute.h"
 #include "error.h"
 #include "fix.h"
 #include "outfile.h"
+#include "par.h"
 #include "variable.h"
 
 void ave_sched_parse(struct gravel *g, struct ave_sched *s, char **argv, const char *who)
@@ -153,9 +156,24 @@ void ave_global_check(struct gravel *g, char kind, const char *id, int index, in
                  kname, id, n, vector_mode ? "columns" : "values");
 }
 
+void ave_sample(struct gravel *g, struct fix *f, struct ave_sched *s, const char *who,
+                void (*take)(struct gravel *g, struct fix *f))
+{
+    if (!ave_sched_due(g, s, who, f->id))
+        return;
+    par_gather_begin(g); /* several ranks: every rank's atoms, as one process */
+    take(g, f);
+    par_gather_end(g);
+}
+
 void ave_source_check(struct gravel *g, char kind, const char *id, const char *who,
                       const char *fid)
 {
+    if (kind != 'c' && comm_size() > 1) { /* a fix's or variable's value may be one rank's */
+        char why[160];
+        snprintf(why, sizeof why, "%s %s reading %s_%s", who, fid, kind == 'f' ? "f" : "v", id);
+        par_refuse(g, why);
+    }
     if (kind == 'c' && !compute_find(g, id))
         gr_error(g, "%s %s: compute ID '%s' does not exist", who, fid, id);
     if (kind == 'f' && !fix_find(g, id))

@@ -33,6 +33,11 @@ void ave_sched_reset(const struct gravel *g, struct ave_sched *s);
  * last sample or past the next one (the step counter moved) is an error
  * naming the fix. */
 int ave_sched_due(struct gravel *g, struct ave_sched *s, const char *who, const char *id);
+/* At end_of_step (and setup): when this step samples (ave_sched_due), take
+ * it: take(g, f) on the host atoms, every rank's gathered in tag order on
+ * several MPI ranks (par.h). */
+void ave_sample(struct gravel *g, struct fix *f, struct ave_sched *s, const char *who,
+                void (*take)(struct gravel *g, struct fix *f));
 /* After a sample: 1 when it closed the epoch (the Nfreq step). */
 int ave_sched_next(const struct gravel *g, struct ave_sched *s);
 

@@ -30,6 +30,7 @@
 #include <unistd.h>
 
 #include "args.h"
+#include "atoms.h"
 #include "ave_common.h"
 #include "compute_chunk_atom.h"
 #include "engine.h"
@@ -252,11 +253,10 @@ static void grow(struct gravel *g, struct ave_chunk *a, int nchunk)
 
 static void write_vtk(struct gravel *g, struct fix *f, struct ave_chunk *a);
 
-static void sample(struct gravel *g, struct fix *f)
+/* One sample (and the epoch's output when it closes it), on the host atoms. */
+static void take(struct gravel *g, struct fix *f)
 {
     struct ave_chunk *a = f->data;
-    if (!ave_sched_due(g, &a->s, "fix ave/chunk", f->id))
-        return;
     run_sync_host(g);
     struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
     const int nv = a->nvalues;
@@ -294,7 +294,9 @@ static void sample(struct gravel *g, struct fix *f)
         }
         default: break;
         }
-        for (int i = 0; i < at->n; i++) {
+        const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
+        for (int k = 0; k < at->n; k++) {
+            const int i = order[k];
             if (!(at->mask[i] & bit) || ichunk[i] <= 0 || ichunk[i] > a->nchunk)
                 continue;
             double val;
@@ -470,6 +472,12 @@ static void ave_init(struct gravel *g, struct fix *f)
         ave_sched_reset(g, &a->s);
 }
 
+
+static void sample(struct gravel *g, struct fix *f)
+{
+    struct ave_chunk *a = f->data;
+    ave_sample(g, f, &a->s, "fix ave/chunk", take);
+}
 
 const struct fix_style fix_style_ave_chunk = {
     .name = "ave/chunk",

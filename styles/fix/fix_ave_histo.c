@@ -252,11 +252,10 @@ static void bin_value(struct gravel *g, struct fix *f, struct ave_histo *a,
     }
 }
 
-static void ah_sample(struct gravel *g, struct fix *f)
+/* One sample (and the epoch's output when it closes it), on the host atoms. */
+static void ah_take(struct gravel *g, struct fix *f)
 {
     struct ave_histo *a = f->data;
-    if (!ave_sched_due(g, &a->s, WHO, f->id))
-        return;
     run_sync_host(g);
     const size_t n = (size_t)a->nbins + 2;
     if (a->s.irepeat == 0) {
@@ -451,6 +450,12 @@ static double ah_array(struct gravel *g, struct fix *f, int b, int j)
     if (j == 2)
         return a->total[1 + b];
     return a->total[S_COUNT] != 0.0 ? a->total[1 + b] / a->total[S_COUNT] : 0.0;
+}
+
+static void ah_sample(struct gravel *g, struct fix *f)
+{
+    struct ave_histo *a = f->data;
+    ave_sample(g, f, &a->s, WHO, ah_take);
 }
 
 const struct fix_style fix_style_ave_histo = {

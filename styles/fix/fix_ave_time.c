@@ -429,11 +429,10 @@ static void accumulate(struct gravel *g, struct ave_time *a, int j)
     }
 }
 
-static void at_sample(struct gravel *g, struct fix *f)
+/* One sample (and the epoch's output when it closes it), on the host atoms. */
+static void at_take(struct gravel *g, struct fix *f)
 {
     struct ave_time *a = f->data;
-    if (!ave_sched_due(g, &a->s, WHO, f->id))
-        return;
     run_sync_host(g);
     const int nv = a->nvalues;
     if (a->s.irepeat == 0) {
@@ -513,6 +512,12 @@ static double at_array(struct gravel *g, struct fix *f, int i, int j)
     if (!a->w.norm || i < 1 || i > a->nrows)
         return 0.0;
     return a->total[(size_t)(i - 1) * a->nvalues + (j - 1)] / a->w.norm;
+}
+
+static void at_sample(struct gravel *g, struct fix *f)
+{
+    struct ave_time *a = f->data;
+    ave_sample(g, f, &a->s, WHO, at_take);
 }
 
 const struct fix_style fix_style_ave_time = {

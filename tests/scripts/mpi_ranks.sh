@@ -10,7 +10,8 @@
 # decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
-# file byte-identical); the standard computes in thermo and dumps; restart files
+# file byte-identical); the standard computes in thermo and dumps, and the files of
+# fix ave/time, ave/chunk and ave/histo; restart files
 # written on N ranks and read on M (an exact
 # continuation, as one process writing and reading); errors end every rank with
 # one message (doc/parallel.md).
@@ -252,6 +253,17 @@ same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
 check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0" | wc -l)" -ge 5 ]'
 
+# fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
+# for their sampling steps: their files the same bytes as one process's;
+# a variable or fix input stops the run (its value may be one rank's)
+sed 's/^run             600/fix a1 all ave\/time 10 5 100 c_cm[1] c_gy c_rk c_t file at.txt format %.17g\nfix a2 all ave\/chunk 10 5 100 ch vz density\/mass file ac.txt format %.17g\nfix a3 all ave\/histo 10 5 100 -10 10 20 c_pa[1] mode vector file ah.txt\nrun             600/' cg.in > av.in
+"$serial" -in av.in -log none > av.ref 2>&1; mkdir -p avref; mv at.txt ac.txt ah.txt avref/ 2> /dev/null
+mpirun -np 3 "$par" -in av.in -log none > av.out 2>&1; rc=$?
+check ave_fixes_np3 '[ $rc -eq 0 ] && [ "$(wc -l < avref/ac.txt)" -ge 30 ] && [ "$(wc -l < avref/ah.txt)" -ge 100 ] && cmp -s avref/at.txt at.txt && cmp -s avref/ac.txt ac.txt && cmp -s avref/ah.txt ah.txt'
+sed 's/^run             600/variable vv equal step\nfix a4 all ave\/time 10 1 10 v_vv\nrun             600/' cg.in > avv.in
+mpirun -np 2 "$par" -in avv.in -log none > avv.out 2>&1; rc=$?
+check ave_variable_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" avv.out)" -eq 1 ] && grep -q "fix ave/time a4 reading v_vv" avv.out'
+
 # restart files across ranks: the walls deck's first run (600 steps) ends in
 # write_restart, a second script reads the file and runs 300 steps; written on
 # N ranks and read on M, its thermo rows and atoms are bit-identical to one
@@ -317,9 +329,9 @@ gr 2 cb.in c32.out "-precision single"; rb=$?
 check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuation of step 120 with its forces; the setup exchange shrink-wraps the box" c32.out'
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all ave\/time 10 1 10 c_thermo_temp file ave.txt/' chute.in > ave.in
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (ave/time)" ave.out'
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (viscous/nonlinear)" ave.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
