@@ -29,6 +29,7 @@
 #include "fix_mesh_surface.h"
 #include "fix_mesh_surface_stress.h"
 #include "fix_property_global.h"
+#include "par.h"
 
 cl_mem mesh_stress_records(struct gravel *g, struct mesh_stress *st, int n)
 {
@@ -112,6 +113,9 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct mesh_surface *ms = f->data;
     struct mesh_stress *st = ms->stress;
+    if (par_on(g) && (st->do_stress || st->do_wear))
+        gr_error(g, "fix mesh/surface/stress: stress and wear are not supported on several MPI "
+                    "ranks yet (use stress off wear off)");
     int nt = g->atoms.ntypes;
     free(st->kf);
     st->kf = NULL;
