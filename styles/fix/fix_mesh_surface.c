@@ -38,6 +38,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "fix_mesh_surface_stress.h"
 #include "par_sum.h"
 #include "pair.h"
 #include "rigid_math.h"

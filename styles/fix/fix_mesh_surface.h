@@ -25,6 +25,8 @@ struct mesh_motion {
 
 #define MESH_OWN_MOTIONS 2      /* fix surface/global: transrot = linear then rotate */
 
+struct mesh_stress; /* fix_mesh_surface_stress.h */
+
 struct mesh_surface {
     struct mesh m;              /* vertices after scale/move/rotate, in the mesh's own frame */
     double *normal;             /* unit normal per triangle (right hand over vertices 0 1 2) */
@@ -70,12 +72,6 @@ void mesh_surface_create(struct gravel *g, struct fix *f, int argc, char **argv)
 void mesh_surface_destroy(struct fix *f);
 double mesh_surface_vector(struct gravel *g, struct fix *f, int i);
 void mesh_surface_reset_step(struct gravel *g, struct fix *f, bigint shift);
-/* fix mesh/surface/stress (fix_mesh_surface_stress.c): the device buffer of
- * the wall kernel's contact records for n atoms (NULL when st is NULL), and
- * freeing st. */
-struct mesh_stress;
-cl_mem mesh_stress_records(struct gravel *g, struct mesh_stress *st, int n);
-void mesh_stress_free(struct mesh_stress *st);
 
 /* 1 if f is a fix mesh/surface or mesh/surface/planar. */
 int fix_is_mesh_surface(const struct fix *f);

@@ -20,4 +20,10 @@ struct mesh_stress {
     bigint step;                /* step of the last sums (-1: none) */
 };
 
+/* The device buffer of the wall kernel's contact records for n atoms (NULL
+ * when st is NULL: the mesh measures nothing). */
+cl_mem mesh_stress_records(struct gravel *g, struct mesh_stress *st, int n);
+/* Free st and what it holds (NULL: nothing). */
+void mesh_stress_free(struct mesh_stress *st);
+
 #endif
