@@ -106,7 +106,7 @@
 #define KARGS_mesh_kernel(X, Y)                                                                \
     X(PART, wall_atoms) Y(I, hstride) Y(I, hoff) Y(PART, wall_law) Y(CM, tri) Y(CMI, triv)    \
     Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving) Y(M, fmesh)                \
-    Y(I, want_fmesh) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(CML, tag) Y(MI, mlist)      \
+    Y(I, want_fmesh) Y(M, mstress) Y(I, want_mstress) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(CML, tag) Y(MI, mlist)      \
     Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) Y(POS_LO, xlo)
 
 /* REGION_KERNEL: nnode nodes (RG_*) under combinator comb */

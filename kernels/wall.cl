@@ -609,6 +609,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
  * near it, so the cost grows with the triangles near the atom, not with
  * the mesh size. fmesh (want_fmesh): per atom the force on the
  * mesh (3) and its torque about the reference point (3), for f_ID output.
+ * mstress (want_mstress, fix mesh/surface/stress): per atom MESH_SLOTS
+ * contact records (MESH_SREC_*, kernels/wall_layout.h) for the per-triangle
+ * stress and wear the host sums in tag order.
  * BODY: a CONTACT_BODY instance; ROW its form; APPROACH as WALL_KERNEL
  * (fix mesh/surface then bins the triangles with the neighbor skin added).
  * The contacts found by mesh_candidates are run through the body in bin
@@ -622,6 +625,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \
+        __global REAL *srec = mstress + (size_t)i * (MESH_SLOTS * MESH_SREC_W);                \
+        if (want_mstress)                                                                      \
+            srec[MESH_SREC_KEY] = 0; /* no record yet */                                       \
         if (!(mask[i] & groupbit)) {                                                           \
             if (want_fmesh) {                                                                  \
                 vstore3((REAL3)(0), 2 * i, fmesh);                                             \
@@ -666,6 +672,7 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
         WALL_HEAT_PARTNER(pj);                                                                 \
         REAL3 fsum = vload3(i, f), tsum = (REAL3)(0), fm = (REAL3)(0), tm = (REAL3)(0);        \
         const REAL3 rref = (REAL3)(pose[POSE_REF], pose[POSE_REF + 1], pose[POSE_REF + 2]);    \
+        int nrec = 0;                                                                          \
         for (int c = 0; c < nc; c++) {                                                         \
             if (rc[c] < 0)                                                                     \
                 continue;                                                                      \
@@ -689,6 +696,16 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
                 for (int q = 0; q < hw; q++)                                                   \
                     nsh[nnew][q] = h[q];                                                       \
                 nnew++;                                                                        \
+            }                                                                                  \
+            if (want_mstress && nrec < MESH_SLOTS) {                                          \
+                __global REAL *r = srec + nrec * MESH_SREC_W;                                  \
+                const REAL3 vrel = vload3(i, v) - pj.vwall;                                    \
+                r[MESH_SREC_KEY] = (REAL)(t + 1);                                              \
+                vstore3(-o.f, 0, r + MESH_SREC_F);                                             \
+                vstore3(vrel, 0, r + MESH_SREC_V);                                             \
+                r[MESH_SREC_CV] = -dot(s.del, vrel);                                           \
+                if (++nrec < MESH_SLOTS)                                                       \
+                    srec[nrec * MESH_SREC_W + MESH_SREC_KEY] = 0;                              \
             }                                                                                  \
             fsum += o.f;                                                                       \
             tsum += o.ti;                                                                      \

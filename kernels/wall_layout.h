@@ -21,6 +21,12 @@ enum mesh_pose_layout { POSE_R = 0, POSE_D = 9, POSE_V0 = 12, POSE_OMEGA = 15, P
 /* History slots per atom per mesh: key (triangle + 1, 0 = free), then the
  * law's history */
 enum { MESH_SLOTS = 4 };
+/* fix mesh/surface/stress: per atom and mesh MESH_SLOTS contact records of
+ * MESH_SREC_W REAL: the triangle + 1 (0: no more records), the force on the
+ * mesh (3), the atom's velocity relative to the surface at the contact
+ * point (3), and (contact point - centre) . that velocity */
+enum { MESH_SREC_KEY = 0, MESH_SREC_F = 1, MESH_SREC_V = 4, MESH_SREC_CV = 7,
+       MESH_SREC_W = 8 };
 /* The per-atom triangle list of a mesh (kernels/wall.cl mesh_candidates):
  * MESH_LIST_W int (the atom's tag in two halves, the count n (-1: stale),
  * then up to MESH_LIST_K triangle ids) and MESH_LPOS_W REAL (the point it

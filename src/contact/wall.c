@@ -213,7 +213,7 @@ static void mesh_pose_upload(struct gravel *g, struct wall_mesh *wm, const doubl
 void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
                      const struct wall_law *law, const double R[9], const double d[3],
                      const double V0[3], const double omega[3], const double ref[3], int moving,
-                     int hstride, int hoff, cl_mem fmesh)
+                     int hstride, int hoff, cl_mem fmesh, cl_mem mstress)
 {
     struct dev_atoms *a = eng_atoms(g);
     double pose[POSE_N];
@@ -254,6 +254,8 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
         .moving = moving,
         .fmesh = fmesh ? fmesh : a->f,
         .want_fmesh = fmesh != NULL,
+        .mstress = mstress ? mstress : a->f,
+        .want_mstress = mstress != NULL,
         .dt = g->dt,
         .shearupdate = !eng_in_setup(g),
         .inclusive = law->inclusive,

@@ -112,10 +112,11 @@ void wall_mesh_release(struct wall_mesh *wm);
 /* Add the mesh contacts of f's atoms. R, d, V0, omega: the pose; ref: the
  * torque reference point (lab frame). History at REAL offset hoff of a
  * per-atom record of hstride REAL; fmesh (or NULL): per atom force on the
- * mesh and torque about ref. */
+ * mesh and torque about ref; mstress (or NULL): per atom the records of its
+ * contacts (MESH_SREC_*, kernels/wall_layout.h) for fix mesh/surface/stress. */
 void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
                      const struct wall_law *law, const double R[9], const double d[3],
                      const double V0[3], const double omega[3], const double ref[3], int moving,
-                     int hstride, int hoff, cl_mem fmesh);
+                     int hstride, int hoff, cl_mem fmesh, cl_mem mstress);
 
 #endif

@@ -47,6 +47,7 @@ struct nbr {
     size_t cap_pair, cap_contact;
     int old_valid;              /* the previous contacts index the atoms before this build */
     int built;                  /* a list exists for the current run */
+    int radii_changed;          /* nbr_radii_changed: rebuild at the next decision */
     cl_mem xhold, cellof, perm, counts, start, cursor, sums, flags, ext, excl_type,
         excl_group, typecut;
     size_t cap_atoms, cap_cells;
@@ -459,6 +460,45 @@ static double lammps2021_cutneighmax(struct gravel *g, double insert_rmax)
 }
 
 
+/* The cut-offs from the largest radii of the host atoms (and of the atoms
+ * fixes may insert): the cells' size, the largest pair cut-off, the multi
+ * collections. */
+static void set_cutoffs(struct gravel *g, struct nbr *b)
+{
+    struct engine *e = g->eng;
+    int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
+    double rmax = e->insert_rmax, r2nd = e->insert_rmax; /* atoms fixes may insert (fix pour) */
+    for (int i = 0; i < g->atoms.n; i++) {
+        double r = g->atoms.radius[i];
+        if (r > rmax) {
+            r2nd = rmax;
+            rmax = r;
+        } else if (r > r2nd) {
+            r2nd = r;
+        }
+    }
+    if (par_on(g)) /* the two largest radii of every rank's atoms */
+        top_two_radii(g, &rmax, &r2nd);
+    b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
+                     pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
+    double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
+    const struct pair *pp = g->styles.pair;
+    if (pp && pp->caps.type_cut)
+        for (int a = 0; a < nt; a++)
+            for (int c = 0; c < nt; c++)
+                tc[a * nt + c] = pp->caps.type_cut(pp->caps.cut_of, a + 1, c + 1);
+    rel(&b->typecut);
+    b->typecut = eng_alloc(g, (size_t)nt * nt * e->rsz, "type-pair cut-offs");
+    eng_write_reals(g, b->typecut, (size_t)nt * nt, tc);
+    free(tc);
+    if (b->cutmax <= 0)
+        b->cutmax = 1.0;
+    /* the largest cut-off of a pair of two atoms: the two largest radii */
+    b->cutpair = fmax(pair_reach(g, rmax + r2nd) + g->neigh.skin, 0.5 * b->cutmax);
+    b->lmp_cutmax = g->opt.lammps2021 ? lammps2021_cutneighmax(g, e->insert_rmax) : 0;
+    setup_multi(g, b);
+}
+
 void nbr_setup(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -544,41 +584,19 @@ void nbr_setup(struct gravel *g)
     b->excl_group = eng_alloc(g, sizeof eg, "group exclusions");
     if (b->nexg)
         eng_write(g, b->excl_group, 0, (size_t)b->nexg * 3 * sizeof(cl_uint), eg);
-    /* cut-off from the largest radius */
-    double rmax = e->insert_rmax, r2nd = e->insert_rmax; /* atoms fixes may insert (fix pour) */
-    for (int i = 0; i < g->atoms.n; i++) {
-        double r = g->atoms.radius[i];
-        if (r > rmax) {
-            r2nd = rmax;
-            rmax = r;
-        } else if (r > r2nd) {
-            r2nd = r;
-        }
-    }
-    if (par_on(g)) /* the two largest radii of every rank's atoms */
-        top_two_radii(g, &rmax, &r2nd);
-    b->cutmax = fmax(pair_reach(g, 2 * rmax), /* cohesion: effect range */
-                     pair_type_cut_max(g, ~0u, ~0u)) + g->neigh.skin; /* a potential's */
-    double *tc = gr_calloc(g, (size_t)nt * nt, sizeof(double));
-    const struct pair *pp = g->styles.pair;
-    if (pp && pp->caps.type_cut)
-        for (int a = 0; a < nt; a++)
-            for (int c = 0; c < nt; c++)
-                tc[a * nt + c] = pp->caps.type_cut(pp->caps.cut_of, a + 1, c + 1);
-    rel(&b->typecut);
-    b->typecut = eng_alloc(g, (size_t)nt * nt * e->rsz, "type-pair cut-offs");
-    eng_write_reals(g, b->typecut, (size_t)nt * nt, tc);
-    free(tc);
-    if (b->cutmax <= 0)
-        b->cutmax = 1.0;
-    /* the largest cut-off of a pair of two atoms: the two largest radii */
-    b->cutpair = fmax(pair_reach(g, rmax + r2nd) + g->neigh.skin, 0.5 * b->cutmax);
-    b->lmp_cutmax = g->opt.lammps2021 ? lammps2021_cutneighmax(g, e->insert_rmax) : 0;
-    setup_multi(g, b);
+    set_cutoffs(g, b);
+    b->radii_changed = 0;
     b->ago = 0;
     b->built = 0;
     b->last_sort = g->step;
     e->st.nbuilds = e->st.ndanger = 0;
+}
+
+void nbr_radii_changed(struct gravel *g)
+{
+    struct nbr *b = get(g);
+    set_cutoffs(g, b);
+    b->radii_changed = 1;
 }
 
 static void read_flags(struct gravel *g, struct nbr *b, cl_int out[4])
@@ -752,8 +770,10 @@ int nbr_decide(struct gravel *g, int forced)
     read_flags(g, b, fl);
     if (fl[1] != 0x7fffffff)
         nonfinite_error(g, fl[1]);
-    if (forced)
+    if (forced || b->radii_changed) {
+        b->radii_changed = 0;
         return 1;
+    }
     b->ago++;
     int every = g->neigh.every > 0 ? g->neigh.every : 1;
     if (b->ago >= g->neigh.delay && b->ago % every == 0) {

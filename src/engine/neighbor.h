@@ -40,6 +40,11 @@ void nbr_box_changed(struct gravel *g);
 void nbr_setup(struct gravel *g);
 /* Forget the list (atoms changed): the next build transfers no history. */
 void nbr_invalidate(struct gravel *g);
+/* The atoms' radii changed during the run (fix adapt; the host arrays hold
+ * them, in device order, after run_sync_host): the cut-offs follow the new
+ * largest radii and the next step rebuilds the list, so that no contact of
+ * grown atoms is missed. */
+void nbr_radii_changed(struct gravel *g);
 void nbr_free(struct gravel *g);
 /* Per step: LAMMPS Neighbor::decide() (every/delay/check/once, distance
  * check by device reduction) and a non-finite check that stops the run with

@@ -141,14 +141,15 @@ static void box_init(struct gravel *g)
 static int hook_index(unsigned hook)
 {
     return hook == HOOK_INITIAL_INTEGRATE ? 0 : hook == HOOK_POST_FORCE ? 1
-         : hook == HOOK_FINAL_INTEGRATE   ? 2 : hook == HOOK_END_OF_STEP ? 3 : 4;
+         : hook == HOOK_FINAL_INTEGRATE   ? 2 : hook == HOOK_END_OF_STEP ? 3
+         : hook == HOOK_PRE_EXCHANGE      ? 4 : 5;
 }
 
 static void build_hook_lists(struct gravel *g)
 {
     struct hook_lists *h = &g->eng->hooks;
     const unsigned bits[NHOOK] = {HOOK_INITIAL_INTEGRATE, HOOK_POST_FORCE, HOOK_FINAL_INTEGRATE,
-                                  HOOK_END_OF_STEP, HOOK_PRE_EXCHANGE};
+                                  HOOK_END_OF_STEP, HOOK_PRE_EXCHANGE, HOOK_PRE_FORCE};
     for (int k = 0; k < NHOOK; k++) {
         free(h->call[k]);
         h->call[k] = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->call[k]);
@@ -160,7 +161,7 @@ static void build_hook_lists(struct gravel *g)
             void (*fn)(struct gravel *, struct fix *) =
                 k == 0 ? f->style->initial_integrate : k == 1 ? f->style->post_force
               : k == 2 ? f->style->final_integrate   : k == 3 ? f->style->end_of_step
-              : f->style->pre_exchange;
+              : k == 4 ? f->style->pre_exchange      : f->style->pre_force;
             if (fn)
                 h->call[k][h->n[k]++] = (struct hook_call){f, fn};
         }
@@ -595,6 +596,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         post_neighbor(g);
     }
     e->st.nbuilds = 0;
+    run_hook(g, HOOK_PRE_FORCE); /* LAMMPS's setup_pre_force */
     if (resumed < 2) {
         compute_forces(g, freezebit, 1, tsetup, 0);
     } else { /* the setup's virial and energies; then the written step's forces */
@@ -643,7 +645,10 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             post_neighbor(g);
             eng_finish(g);
         }
+        double p1 = wall();
+        run_hook(g, HOOK_PRE_FORCE); /* counted as Modify, like pre_exchange */
         double a2 = wall();
+        tx += a2 - p1;
         int timed = sampled || rebuild;
         double step[TM_N] = {0};
         const int look = step_lookahead(g, s + 1 == nsteps);

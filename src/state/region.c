@@ -203,6 +203,8 @@ double region_parse_bound(struct gravel *g, const char *s, int dim, int is_hi, d
 
 static void region_free(struct region *r)
 {
+    if (r->style && r->style->destroy)
+        r->style->destroy(r->data);
     free(r->sub);
     free(r);
 }

@@ -47,6 +47,7 @@ struct region {
     bigint vel_step;            /* step of the last set_velocity, -1: none */
     int prev_set;               /* prev holds an earlier evaluation */
     int cmax;                   /* most contacts its surface can report (wall ids) */
+    void *data;                 /* style data beyond p[] (mesh/tet: its tetrahedra) */
 };
 
 struct region_style {
@@ -61,6 +62,7 @@ struct region_style {
                  const double scale[3]);
     /* 1 if x is in the geometric interior (before side in|out). */
     int (*inside)(const struct region *r, const double x[3]);
+    void (*destroy)(void *data); /* optional: frees r->data */
 };
 
 /* 1 if x is in region r, with side in|out and the current motion applied

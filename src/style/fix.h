@@ -29,6 +29,11 @@
  *              During the setup force computation (step 0 of a run) only
  *              post_force runs, with eng_in_setup(g) true (LAMMPS' setup():
  *              no shear-history update).
+ *   pre_force  (HOOK_PRE_FORCE) called on every step after the neighbor
+ *              decision (and rebuild) and before the pair forces (LAMMPS's
+ *              pre_force), and once at setup before the setup forces, with
+ *              eng_in_setup(g) true (LAMMPS's setup_pre_force); a fix with
+ *              this hook turns off the fused look-ahead of the next step.
  *   pre_exchange  (HOOK_PRE_EXCHANGE) called on every step whose neighbor
  *              list is rebuilt, after initial_integrate and before the
  *              rebuild (LAMMPS' pre_exchange), with the atoms on the device.
@@ -69,6 +74,7 @@ enum fix_hook {
     HOOK_FINAL_INTEGRATE = 1 << 2,
     HOOK_END_OF_STEP = 1 << 3,
     HOOK_PRE_EXCHANGE = 1 << 4,
+    HOOK_PRE_FORCE = 1 << 5,
 };
 
 /* Per-atom fields / device features a style needs. */
@@ -114,6 +120,7 @@ struct fix_style {
     void (*final_integrate)(struct gravel *g, struct fix *f);
     void (*end_of_step)(struct gravel *g, struct fix *f);
     void (*pre_exchange)(struct gravel *g, struct fix *f);
+    void (*pre_force)(struct gravel *g, struct fix *f);
     /* atoms this fix may insert in the next nsteps steps (0: none); sets
      * *rmax to their largest radius (see header comment) */
     int (*reserve)(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);

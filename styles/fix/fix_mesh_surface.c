@@ -38,28 +38,34 @@
 #include "device.h"
 #include "error.h"
 #include "fix_mesh_surface.h"
+#include "fix_mesh_surface_stress.h"
 #include "par_sum.h"
 #include "pair.h"
 #include "rigid_math.h"
+
+double mesh_surface_tri_normal(const struct mesh *m, int t, double n[3])
+{
+    const double *a = m->vert + 3 * m->tri[3 * t], *b = m->vert + 3 * m->tri[3 * t + 1],
+                 *c = m->vert + 3 * m->tri[3 * t + 2];
+    double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double x[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    double len = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    for (int d = 0; d < 3; d++)
+        n[d] = x[d] / len;
+    return 0.5 * len;
+}
 
 void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms)
 {
     free(ms->normal);
     ms->normal = gr_malloc(g, (size_t)ms->m.ntri * 3 * sizeof(double));
-    for (int t = 0; t < ms->m.ntri; t++) {
-        const double *a = ms->m.vert + 3 * ms->m.tri[3 * t], *b = ms->m.vert + 3 * ms->m.tri[3 * t + 1],
-                     *c = ms->m.vert + 3 * ms->m.tri[3 * t + 2];
-        double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                       e1[0] * e2[1] - e1[1] * e2[0]};
-        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int d = 0; d < 3; d++)
-            ms->normal[3 * t + d] = n[d] / len;
-    }
+    for (int t = 0; t < ms->m.ntri; t++)
+        mesh_surface_tri_normal(&ms->m, t, ms->normal + 3 * t);
 }
 
-static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+void mesh_surface_create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 2 || strcmp(argv[0], "file") != 0)
         gr_error(g, "fix mesh/surface expects 'file F type T' (got %s)",
@@ -166,7 +172,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 
 static void create_planar(struct gravel *g, struct fix *f, int argc, char **argv)
 {
-    create(g, f, argc, argv);
+    mesh_surface_create(g, f, argc, argv);
     struct mesh_surface *ms = f->data;
     double c = ms->curvature;
     if (c != 0. && !(c > 0. && c <= 60.))
@@ -184,7 +190,8 @@ static void create_planar(struct gravel *g, struct fix *f, int argc, char **argv
 
 int fix_is_mesh_surface(const struct fix *f)
 {
-    return f->style == &fix_style_mesh_surface || f->style == &fix_style_mesh_surface_planar;
+    return f->style == &fix_style_mesh_surface || f->style == &fix_style_mesh_surface_planar ||
+           f->style == &fix_style_mesh_surface_stress;
 }
 
 void mesh_surface_free(struct mesh_surface *ms)
@@ -198,9 +205,11 @@ void mesh_surface_free(struct mesh_surface *ms)
     if (ms->fmesh)
         clReleaseMemObject(ms->fmesh);
     ms->fmesh = NULL;
+    mesh_stress_free(ms->stress);
+    ms->stress = NULL;
 }
 
-static void destroy(struct fix *f)
+void mesh_surface_destroy(struct fix *f)
 {
     struct mesh_surface *ms = f->data;
     if (ms)
@@ -311,7 +320,8 @@ void mesh_walls_apply(struct gravel *g, struct fix *f, struct mesh_walls *mw,
             law->by_type = ms->type;
         wall_mesh_apply(g, f, &mw->wm[m], law, p.R, p.d, p.V0, p.omega, ref, p.moving,
                         mw->n * WALL_MESH_SLOTS * (1 + law->history),
-                        m * WALL_MESH_SLOTS * (1 + law->history), ms->fmesh);
+                        m * WALL_MESH_SLOTS * (1 + law->history), ms->fmesh,
+                        mesh_stress_records(g, ms->stress, a->n));
         mesh_surface_filled(g, ms);
     }
 }
@@ -485,7 +495,7 @@ static int cmp_tag(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-static double vector(struct gravel *g, struct fix *f, int i)
+double mesh_surface_vector(struct gravel *g, struct fix *f, int i)
 {
     struct mesh_surface *ms = f->data;
     if (ms->cache_step != g->step || !ms->fmesh_valid || ms->fmesh_step != g->step) {
@@ -530,7 +540,7 @@ static double vector(struct gravel *g, struct fix *f, int i)
 
 /* reset_timestep: the mesh force and its sums still describe the same
  * state, now labelled with the shifted step */
-static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+void mesh_surface_reset_step(struct gravel *g, struct fix *f, bigint shift)
 {
     (void)g;
     struct mesh_surface *ms = f->data;
@@ -542,18 +552,18 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
 
 const struct fix_style fix_style_mesh_surface = {
     .name = "mesh/surface",
-    .reset_step = reset_step,
-    .create = create,
-    .destroy = destroy,
+    .reset_step = mesh_surface_reset_step,
+    .create = mesh_surface_create,
+    .destroy = mesh_surface_destroy,
     .size_vector = 7,
-    .vector = vector,
+    .vector = mesh_surface_vector,
 };
 
 const struct fix_style fix_style_mesh_surface_planar = {
     .name = "mesh/surface/planar",
-    .reset_step = reset_step,
+    .reset_step = mesh_surface_reset_step,
     .create = create_planar,
-    .destroy = destroy,
+    .destroy = mesh_surface_destroy,
     .size_vector = 7,
-    .vector = vector,
+    .vector = mesh_surface_vector,
 };

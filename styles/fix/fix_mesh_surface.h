@@ -25,6 +25,8 @@ struct mesh_motion {
 
 #define MESH_OWN_MOTIONS 2      /* fix surface/global: transrot = linear then rotate */
 
+struct mesh_stress; /* fix_mesh_surface_stress.h */
+
 struct mesh_surface {
     struct mesh m;              /* vertices after scale/move/rotate, in the mesh's own frame */
     double *normal;             /* unit normal per triangle (right hand over vertices 0 1 2) */
@@ -51,6 +53,7 @@ struct mesh_surface {
     char *model;                /* fix surface/local: the model words its wall was made of */
     int nmotion;
     struct mesh_motion motion[MESH_OWN_MOTIONS];
+    struct mesh_stress *stress; /* fix mesh/surface/stress (fix_mesh_surface_stress.c), else NULL */
 };
 
 /* Rigid pose of a mesh: x = R x0 + d for a point x0 of the mesh's own
@@ -62,6 +65,13 @@ struct mesh_pose {
 
 extern const struct fix_style fix_style_mesh_surface;
 extern const struct fix_style fix_style_mesh_surface_planar;
+extern const struct fix_style fix_style_mesh_surface_stress;
+
+/* The mesh/surface style's hooks, shared by mesh/surface/stress. */
+void mesh_surface_create(struct gravel *g, struct fix *f, int argc, char **argv);
+void mesh_surface_destroy(struct fix *f);
+double mesh_surface_vector(struct gravel *g, struct fix *f, int i);
+void mesh_surface_reset_step(struct gravel *g, struct fix *f, bigint shift);
 
 /* 1 if f is a fix mesh/surface or mesh/surface/planar. */
 int fix_is_mesh_surface(const struct fix *f);
@@ -76,6 +86,9 @@ void mesh_surface_pose(struct gravel *g, const char *id, struct mesh_pose *p);
  * then the move/mesh motions on fix id (id NULL: none). */
 void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const char *id,
                           struct mesh_pose *p);
+/* Unit normal n of triangle t of m (right hand over vertices 0 1 2); returns
+ * its area. */
+double mesh_surface_tri_normal(const struct mesh *m, int t, double n[3]);
 /* Unit normals of ms's triangles (ms->normal, right hand over vertices 0 1 2). */
 void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms);
 /* Free what ms holds (not ms itself). */

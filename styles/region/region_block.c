@@ -32,4 +32,4 @@ static int block_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_block = {
-    "block", "xlo xhi ylo yhi zlo zhi", 6, block_parse, block_inside};
+    "block", "xlo xhi ylo yhi zlo zhi", 6, block_parse, block_inside, NULL};

@@ -53,4 +53,4 @@ static int cone_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_cone = {
-    "cone", "dim c1 c2 radlo radhi lo hi", 7, cone_parse, cone_inside};
+    "cone", "dim c1 c2 radlo radhi lo hi", 7, cone_parse, cone_inside, NULL};

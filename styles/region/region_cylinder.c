@@ -59,4 +59,4 @@ static int cyl_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_cylinder = {
-    "cylinder", "dim c1 c2 radius lo hi", 6, cyl_parse, cyl_inside};
+    "cylinder", "dim c1 c2 radius lo hi", 6, cyl_parse, cyl_inside, NULL};

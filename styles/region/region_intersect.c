@@ -39,4 +39,4 @@ static int intersect_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_intersect = {
-    "intersect", "N id1 id2 ...", -1, intersect_parse, intersect_inside};
+    "intersect", "N id1 id2 ...", -1, intersect_parse, intersect_inside, NULL};

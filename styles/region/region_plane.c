@@ -31,4 +31,4 @@ static int plane_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_plane = {
-    "plane", "px py pz nx ny nz", 6, plane_parse, plane_inside};
+    "plane", "px py pz nx ny nz", 6, plane_parse, plane_inside, NULL};

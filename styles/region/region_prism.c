@@ -62,4 +62,4 @@ static int prism_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_prism = {
-    "prism", "xlo xhi ylo yhi zlo zhi xy xz yz", 9, prism_parse, prism_inside};
+    "prism", "xlo xhi ylo yhi zlo zhi xy xz yz", 9, prism_parse, prism_inside, NULL};

@@ -29,4 +29,4 @@ static int sphere_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_sphere = {
-    "sphere", "x y z radius", 4, sphere_parse, sphere_inside};
+    "sphere", "x y z radius", 4, sphere_parse, sphere_inside, NULL};

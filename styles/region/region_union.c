@@ -56,4 +56,4 @@ static int union_inside(const struct region *r, const double x[3])
 }
 
 const struct region_style region_style_union = {
-    "union", "N id1 id2 ...", -1, union_parse, union_inside};
+    "union", "N id1 id2 ...", -1, union_parse, union_inside, NULL};
