@@ -1,0 +1,757 @@
+"""cases.py - LAMMPS's granular unit cases (lammps/lammps,
+unittest/granular/tests/NAME.yaml) for tests/scripts/lammps_unittest.py.
+
+Each Case: the YAML's name (its file), the LAMMPS version that generated its
+reference values, a gravel deck written with the builders below from the
+case's setup (geometry, material, model, fixes), the run segments, and the
+reference values: rows "QUANTITY SEGMENT ATOM a b c" copied from the YAML's
+run_pos, run_vel, run_omega and run_torque (QUANTITY pos, vel, omega,
+torque); rows that are zero in the YAML are left out."""
+from collections import namedtuple
+
+Case = namedtuple("Case", "name version deck segments ref")
+Case.source = property(lambda c: f"unittest/granular/tests/{c.name}.yaml")
+
+
+def setup(box, units="si", dim=3, bound="f f f", types=1):
+    """the box of one case"""
+    return (f"units {units}\ndimension {dim}\nboundary {bound}\natom_style sphere\n"
+            f"region box block {box} units box\ncreate_box {types} box\n")
+
+
+def numerics(neighbor, dt, delay=True):
+    return (f"comm_modify vel yes\nneighbor {neighbor} bin\n"
+            + ("neigh_modify delay 0\n" if delay else "") + f"timestep {dt}\n")
+
+
+def two_spheres(box, sep, d, rho, vin, dt, omega=None, neighbor=0.001, **kw):
+    """two equal spheres at x = -sep and sep, approaching at vin each, spinning
+    about z at omega and -omega"""
+    text = setup(box, **kw)
+    text += (f"create_atoms 1 single {-sep!r} 0.0 0.0 units box\n"
+             f"create_atoms 1 single {sep!r} 0.0 0.0 units box\n"
+             f"set group all diameter {d!r} density {rho!r}\n"
+             "group left id 1\ngroup right id 2\n"
+             f"velocity left set {vin!r} 0.0 0.0\nvelocity right set {-vin!r} 0.0 0.0\n")
+    if omega is not None:
+        text += (f"set group left omega 0.0 0.0 {omega!r}\n"
+                 f"set group right omega 0.0 0.0 {-omega!r}\n")
+    return text + numerics(neighbor, dt)
+
+
+def one_sphere(box, pos, d, rho, dt, v=None, omega=None, neighbor=0.001, delay=True, **kw):
+    """one sphere at pos with velocity v and angular velocity omega"""
+    text = setup(box, **kw)
+    text += (f"create_atoms 1 single {pos[0]!r} {pos[1]!r} {pos[2]!r} units box\n"
+             f"set group all diameter {d!r} density {rho!r}\n")
+    if v is not None:
+        text += f"velocity all set {v[0]!r} {v[1]!r} {v[2]!r}\n"
+    if omega is not None:
+        text += f"set group all omega {omega[0]!r} {omega[1]!r} {omega[2]!r}\n"
+    return text + numerics(neighbor, dt, delay)
+
+
+def typed_spheres(box, atoms, kinds, dt, neighbor, delay=True, **kw):
+    """spheres of several types: atoms [(type, x, y, z)], kinds {type: (d, rho)}"""
+    text = setup(box, types=len(kinds), **kw)
+    text += "".join(f"create_atoms {t} single {x!r} {y!r} {z!r} units box\n" for t, x, y, z in atoms)
+    text += "".join(f"set type {t} diameter {d!r} density {rho!r}\n" for t, (d, rho) in kinds.items())
+    return text + numerics(neighbor, dt, delay)
+
+
+def rows(quantity, axis, values):
+    """reference rows: values[segment][atom - 1] along axis (0, 1, 2) of quantity"""
+    out = []
+    for k, seg in enumerate(values):
+        for i, v in enumerate(seg):
+            c = ["0", "0", "0"]
+            c[axis] = repr(v)
+            out.append(f"{quantity} {k} {i + 1} " + " ".join(c))
+    return "\n".join(out) + "\n"
+
+
+def one(**quantities):
+    """reference rows of one atom: quantity=[(a, b, c) after each segment]"""
+    return "\n".join(f"{q} {k} 1 {a!r} {b!r} {c!r}" for q, segs in quantities.items()
+                     for k, (a, b, c) in enumerate(segs)) + "\n"
+
+
+def model(pair, coeff="", fixes="fix integr all nve/sphere\n"):
+    """pair_style, its pair_coeff * * and the fixes"""
+    return f"pair_style {pair}\npair_coeff * * {coeff}\n" + fixes
+
+
+def head_on(xs, vs, wz=None):
+    """reference rows of a symmetric head-on pair: atom 1 at x, velocity vx
+    (angular velocity wz about z) after each segment, atom 2 mirrored"""
+    rows = []
+    for k, (x, v) in enumerate(zip(xs, vs)):
+        rows += [f"pos {k} 1 {x!r} 0 0", f"pos {k} 2 {-x!r} 0 0",
+                 f"vel {k} 1 {v!r} 0 0", f"vel {k} 2 {-v!r} 0 0"]
+        if wz is not None:
+            rows += [f"omega {k} 1 0 0 {wz!r}", f"omega {k} 2 0 0 {-wz!r}"]
+    return "\n".join(rows)
+
+
+def drop(g=9.81):
+    return f"fix grav all gravity {g!r} vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+
+
+# a 0.2 m sphere dropped from 0.5 m onto a z wall (dem01-hooke, -hookehistory, -granular-hooke)
+DROP = one_sphere("-0.5 0.5 -0.5 0.5 0.0 1.0", (0.0, 0.0, 0.5), 0.2, 2600.0, 0.001,
+                  neighbor=0.1, delay=False)
+DROP_REF = """
+pos 0 1 0 0 1.9343750000000071e-01
+pos 1 1 0 0 9.8142846897904992e-02
+pos 2 1 0 0 9.6957624468093959e-02
+vel 0 1 0 0 -2.4524999999999859e+00
+vel 1 1 0 0 1.4883590261689112e+00
+vel 2 1 0 0 -1.4364636856851367e+00
+"""
+# two 5 mm aluminium spheres head-on at 2 m/s
+ALU_PAIR = dict(box="-0.05 0.05 -0.03 0.03 -0.03 0.03", sep=0.00255, d=0.005, rho=2700.0,
+                vin=2.0, dt=3e-8)
+ALU_PAIR_SPIN = dict(box="-0.2 0.2 -0.1 0.1 -0.1 0.1", sep=0.00255, d=0.005, rho=2700.0,
+                     vin=2.0, dt=1e-8, omega=22.0)
+
+CASES = [
+    Case("dem01-hooke-3d-si", "30 Mar 2026",
+         DROP + model("gran/hooke 1.0e4 NULL 10.0 NULL 0.0 0", "", drop()
+                      + "fix zwall all wall/gran hooke 1.0e4 NULL 10.0 NULL 0.0 0 zplane 0.0 NULL\n"),
+         (250, 150, 300), DROP_REF),
+    Case("dem01-hookehistory-3d-si", "30 Mar 2026",
+         DROP + model("gran/hooke/history 1.0e4 NULL 10.0 NULL 0.5 1", "", drop()
+                      + "fix zwall all wall/gran hooke/history 1.0e4 NULL 10.0 NULL 0.5 1 "
+                      "zplane 0.0 NULL\n"),
+         (250, 150, 300), DROP_REF),
+    Case("dem01-granular-hooke-3d-si", "30 Mar 2026",
+         DROP + model("granular", "hooke 1.0e4 0.8 tangential linear_history 8235.0 0.0 0.0 "
+                      "damping coeff_restitution", drop()
+                      + "fix zwall all wall/gran granular hooke 1.0e4 0.8 tangential linear_history "
+                      "8235.0 0.0 0.0 damping coeff_restitution zplane 0.0 NULL\n"),
+         (250, 150, 300), """
+pos 0 1 0 0 1.9343750000000071e-01
+pos 1 1 0 0 1.0404597405984767e-01
+pos 2 1 0 0 3.0031074554089127e-01
+vel 0 1 0 0 -2.4524999999999859e+00
+vel 1 1 0 0 2.1257159049368028e+00
+vel 2 1 0 0 -8.1728409506318989e-01
+"""),
+    Case("dem01-hertz-tsuji-3d-si", "4 Jul 2026 (with the tsuji sqrt(2) of 2 Sep 2026)",
+         two_spheres(**ALU_PAIR_SPIN)
+         + model("granular", "hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin "
+                 "NULL 0.5 0.4"),
+         (2600, 1500, 1000), """
+pos 0 1 -2.4980771847769199e-03 0 0
+pos 0 2 2.4980771847769199e-03 0 0
+pos 1 1 -2.5034867026327494e-03 0 0
+pos 1 2 2.5034867026327494e-03 0 0
+pos 2 1 -2.5134838795636545e-03 0 0
+pos 2 2 2.5134838795636545e-03 0 0
+vel 0 1 1.8175852473916858e+00 0 0
+vel 0 2 -1.8175852473916858e+00 0 0
+vel 1 1 -9.9971769309661351e-01 0 0
+vel 1 2 9.9971769309661351e-01 0 0
+vel 2 1 -9.9971769309661351e-01 0 0
+vel 2 2 9.9971769309661351e-01 0 0
+omega 0 1 0 0 22.0
+omega 0 2 0 0 -22.0
+omega 1 1 0 0 22.0
+omega 1 2 0 0 -22.0
+omega 2 1 0 0 22.0
+omega 2 2 0 0 -22.0
+"""),
+    Case("dem01-hertz-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR_SPIN)
+         + model("granular", "hertz/material 7.0e10 0.5 0.33 damping coeff_restitution "
+                 "tangential mindlin NULL 0.5 0.4"),
+         (2600, 1500, 1000), """
+pos 0 1 -2.4980771696568298e-03 0 0
+pos 0 2 2.4980771696568298e-03 0 0
+pos 1 1 -2.5034876076619247e-03 0 0
+pos 1 2 2.5034876076619247e-03 0 0
+pos 2 1 -2.5134864441910699e-03 0 0
+pos 2 2 2.5134864441910699e-03 0 0
+vel 0 1 1.8176180382750824e+00 0 0
+vel 0 2 -1.8176180382750824e+00 0 0
+vel 1 1 -9.9988365289612324e-01 0 0
+vel 1 2 9.9988365289612324e-01 0 0
+vel 2 1 -9.9988365289612324e-01 0 0
+vel 2 2 9.9988365289612324e-01 0 0
+omega 0 1 0 0 2.2000000000000000e+01
+omega 0 2 0 0 -2.2000000000000000e+01
+omega 1 1 0 0 2.2000000000000000e+01
+omega 1 2 0 0 -2.2000000000000000e+01
+omega 2 1 0 0 2.2000000000000000e+01
+omega 2 2 0 0 -2.2000000000000000e+01
+"""),
+    Case("dem01-hooke-2d-lj", "4 Jul 2026",
+         two_spheres("-8.0 8.0 -2.0 2.0 -0.1 0.1", 0.55, 1.0, 1.0, 1.0, 0.0001, neighbor=0.05,
+                     units="lj", dim=2, bound="f f p")
+         + model("granular", "hooke 10000.0 0.5 tangential linear_nohistory 0.0 0.0 "
+                 "damping coeff_restitution",
+                 "fix integr all nve/sphere disc\nfix twod all enforce2d\n"),
+         (947, 500), """
+pos 0 1 -5.1414816868621493e-01 0 0
+pos 0 2 5.1414816868621493e-01 0 0
+pos 1 1 -5.3916945975278863e-01 0 0
+pos 1 2 5.3916945975278863e-01 0 0
+vel 0 1 -5.0042582133180780e-01 0 0
+vel 0 2 5.0042582133180780e-01 0 0
+vel 1 1 -5.0042582133180780e-01 0 0
+vel 1 2 5.0042582133180780e-01 0 0
+"""),
+    Case("dem01-hooke-massvel-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 45000.0 tangential linear_nohistory 0.0 0.0 "
+                 "damping mass_velocity"),
+         (2068, 727), """
+pos 0 1 -2.5069240303402292e-03 0 0
+pos 0 2 2.5069240303402292e-03 0 0
+pos 1 1 -2.5290157270366825e-03 0 0
+pos 1 2 2.5290157270366825e-03 0 0
+vel 0 1 -1.0129159420619460e+00 0 0
+vel 0 2 1.0129159420619460e+00 0 0
+vel 1 1 -1.0129159420619460e+00 0 0
+vel 1 2 1.0129159420619460e+00 0 0
+"""),
+    Case("dem01-hooke-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 0.5 tangential linear_nohistory 0.0 0.0 "
+                 "damping coeff_restitution"),
+         (2068, 727), """
+pos 0 1 -2.5068045944333988e-03 0 0
+pos 0 2 2.5068045944333988e-03 0 0
+pos 1 1 -2.5285999681953571e-03 0 0
+pos 1 2 2.5285999681953571e-03 0 0
+vel 0 1 -9.9932937926762544e-01 0 0
+vel 0 2 9.9932937926762544e-01 0 0
+vel 1 1 -9.9932937926762544e-01 0 0
+vel 1 2 9.9932937926762544e-01 0 0
+"""),
+    Case("dem01-hooke-veldamp-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 4.05 tangential linear_nohistory 0.0 0.0 "
+                 "damping velocity"),
+         (2068, 727), """
+pos 0 1 -2.5068052837844447e-03 0 0
+pos 0 2 2.5068052837844447e-03 0 0
+pos 1 1 -2.5286023234116473e-03 0 0
+pos 1 2 2.5286023234116473e-03 0 0
+vel 0 1 -9.9940576007717219e-01 0 0
+vel 0 2 9.9940576007717219e-01 0 0
+vel 1 1 -9.9940576007717219e-01 0 0
+vel 1 2 9.9940576007717219e-01 0 0
+"""),
+]
+
+# two 20 mm glass spheres head-on at 10 m/s, elastic
+GLASS_PAIR = dict(box="-0.05 0.05 -0.03 0.03 -0.03 0.03", sep=0.0101, d=0.02, rho=2800.0,
+                  vin=10.0, dt=2e-8)
+HOOKE_LEGACY = head_on((-2.5067840755741795e-03, -2.5285298759987031e-03),
+                       (-9.9705641561580305e-01, -9.9705641561580305e-01))
+HERTZ_ELASTIC = head_on((-9.9999999999997261e-03, -9.8629436218504573e-03, -9.9982053375566714e-03),
+                        (1.0e+01, 8.8771553283535053e-03, -9.9999015425187849e+00))
+CASES += [
+    Case("dem01-hooke-twosphere-e02-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 0.2 tangential linear_nohistory 0.0 0.0 "
+                 "damping coeff_restitution"), (2068, 727),
+         head_on((-2.5015506331801541e-03, -2.5102721596989442e-03),
+                 (-3.9988658958497214e-01, -3.9988658958497214e-01))),
+    Case("dem01-hooke-twosphere-e08-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 0.8 tangential linear_nohistory 0.0 0.0 "
+                 "damping coeff_restitution"), (2068, 727),
+         head_on((-2.5118996608531133e-03, -2.5467903152001660e-03),
+                 (-1.5997548989987018e+00, -1.5997548989987018e+00))),
+    Case("dem01-hookehistory-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR)
+         + model("granular", "hooke 1e+06 0.5 tangential linear_history 2.8e5 0.0 0.0 "
+                 "damping coeff_restitution"), (2068, 727),
+         head_on((-2.5068045944333988e-03, -2.5285999681953571e-03),
+                 (-9.9932937926762544e-01, -9.9932937926762544e-01))),
+    Case("dem01-legacy-hooke-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR) + model("gran/hooke 1e+06 NULL 4.6e4 NULL 0.0 0"), (2068, 727),
+         HOOKE_LEGACY),
+    Case("dem01-legacy-hookehistory-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**ALU_PAIR) + model("gran/hooke/history 1e+06 NULL 4.6e4 NULL 0.5 1"),
+         (2068, 727), HOOKE_LEGACY),
+    Case("dem02-hertz-peak-3d-si", "4 Jul 2026",
+         two_spheres(**GLASS_PAIR)
+         + model("granular", "hertz 3.33333e+10 0.0 tangential linear_nohistory 0.0 0.0"),
+         (500, 1008, 1000), HERTZ_ELASTIC),
+    Case("dem02-hertz-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**GLASS_PAIR)
+         + model("granular", "hertz 3.33333e+10 0.0 tangential linear_nohistory 0.0 0.0"),
+         (500, 1008, 1000), HERTZ_ELASTIC),
+    Case("dem02-hertzmaterial-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**GLASS_PAIR)
+         + model("granular", "hertz/material 4.8e10 0.0 0.20 tangential mindlin NULL 0.0 0.35"),
+         (500, 1008, 1000),
+         head_on((-9.9999999999997261e-03, -9.8629436766014371e-03, -9.9982054989131309e-03),
+                 (1.0e+01, 8.8698006865996614e-03, -9.9999015644864890e+00))),
+]
+
+BOUNCE = [(9.8790620000001342e-02, -2.8023040176776459e+00), (3.9315623776710512e-01, 6.2828413950094575e-01),
+          (1.4019147961738940e-01, -2.3147158604990428e+00), (3.3053395303137117e-01, 5.1675618297202830e-01),
+          (5.0092585709258959e-02, -1.7498219058701125e+00)]
+BOUNCE_Z = "\n".join(f"pos {k} 1 0 0 {z!r}\nvel {k} 1 0 0 {v!r}" for k, (z, v) in enumerate(BOUNCE))
+WALL_HOOKE = "1.0e4 NULL 2.0 NULL 0.0 0"
+CASES += [
+    Case("dem02-hooke-2d-lj", "30 Mar 2026",
+         one_sphere("-0.5 0.5 0.0 1.0 -0.1 0.1", (0.0, 0.5, 0.0), 0.2, 2600.0, 0.001, neighbor=0.1,
+                    delay=False, units="lj", dim=2, bound="f f p")
+         + model(f"gran/hooke {WALL_HOOKE}", "",
+                 "fix grav all gravity 9.81 vector 0.0 -1.0 0.0\nfix integr all nve/sphere disc\n"
+                 f"fix twod all enforce2d\nfix ywall all wall/gran hooke {WALL_HOOKE} yplane 0.0 NULL\n"),
+         (286, 300, 300, 300, 300),
+         "\n".join(f"pos {k} 1 0 {y!r} 0\nvel {k} 1 0 {v!r} 0" for k, (y, v) in enumerate(BOUNCE))),
+    Case("dem02-hooke-3d-si", "30 Mar 2026",
+         DROP + model(f"gran/hooke {WALL_HOOKE}", "",
+                      drop() + f"fix zwall all wall/gran hooke {WALL_HOOKE} zplane 0.0 NULL\n"),
+         (286, 300, 300, 300, 300), BOUNCE_Z),
+    Case("dem02-hookehistory-3d-si", "30 Mar 2026",
+         DROP + model("gran/hooke/history 1.0e4 NULL 2.0 NULL 0.5 1", "",
+                      drop() + "fix zwall all wall/gran hooke/history 1.0e4 NULL 2.0 NULL 0.5 1 "
+                      "zplane 0.0 NULL\n"),
+         (286, 300, 300, 300, 300), BOUNCE_Z),
+    Case("dem02-legacy-hertzhistory-twosphere-3d-si", "4 Jul 2026",
+         two_spheres(**GLASS_PAIR) + model("gran/hertz/history 3.33333e+10 NULL 0.0 NULL 0.0 0"),
+         (500, 1008, 1000),
+         head_on((-9.9999999999997261e-03, -9.8629436218504573e-03, -9.9982053375566714e-03),
+                 (1.0e+01, 8.8771553283532815e-03, -9.9999015425187849e+00))),
+]
+
+
+def stack(rho1, en=None):
+    """two 1 mm spheres stacked in y between the walls y = 0 and 0.0018 under
+    gravity: pair granular hooke with restitution en, or (en None, one type)
+    gran/hooke"""
+    if en is None:
+        pair, coeff, wall = "gran/hooke 1.0e3 NULL 5.0 NULL 0.0 0", "", "hooke 1.0e3 NULL 5.0 NULL 0.0 0"
+        kinds, t2 = {1: (0.001, rho1)}, 1
+    else:
+        coeff = (f"hooke 1.0e3 {en!r} tangential linear_history 800.0 0.0 0.0 "
+                 "damping coeff_restitution")
+        pair, wall = "granular", "granular " + coeff
+        kinds, t2 = {1: (0.001, rho1), 2: (0.001, 10000.0)}, 2
+    return (typed_spheres("-0.005 0.005 -0.001 0.003 -0.005 0.005",
+                          [(1, 0.0, 0.00045, 0.0), (t2, 0.0, 0.00135, 0.0)],
+                          kinds, 2.0e-6, 0.0005, delay=False)
+            + model(pair, coeff, "fix grav all gravity 9.81 vector 0.0 -1.0 0.0\n"
+                    "fix integr all nve/sphere\n"
+                    f"fix ywall all wall/gran {wall} yplane 0.0 0.0018\n"))
+
+
+def falling(model_args, dens=7000.0, v=3.9, pair="granular"):
+    """a 5 mm sphere at 2.55 mm above the wall z = 0, falling at v without
+    gravity, the pair model also the wall's (pair granular: model_args are
+    its pair_coeff; a gran style: its pair_style arguments)"""
+    coeff, wall = (model_args, "granular " + model_args) if pair == "granular" else \
+        ("", pair.split("/", 1)[1] + " " + model_args)
+    return (one_sphere("-0.05 0.05 -0.05 0.05 -0.05 0.1", (0.0, 0.0, 0.00255), 0.005, dens,
+                       1.0e-8, v=(0.0, 0.0, -v))
+            + model(pair if pair == "granular" else f"{pair} {model_args}", coeff,
+                    "fix integr all nve/sphere\n"
+                    f"fix zwall all wall/gran {wall} zplane 0.0 NULL\n"))
+
+
+HERTZ_WALL = (rows("pos", 2, [[2.4993000166951690e-03], [2.4773193520144258e-03],
+                             [2.5017266321382694e-03]])
+              + rows("vel", 2, [[-3.8996733777045449e+00], [9.2769893463961334e-04],
+                                [3.9000000198694948e+00]]))
+
+
+CASES += [
+    Case("dem02-restitution-3d-si", "30 Mar 2026",
+         one_sphere("-0.5 0.5 -0.5 0.5 0.0 1.0", (0.0, 0.0, 0.5), 0.2, 2600.0, 2.0e-4,
+                    neighbor=0.1, delay=False)
+         + model("granular", "hooke 1.0e6 0.9 tangential linear_history 8235.0 0.0 0.0 "
+                 "damping coeff_restitution", drop()
+                 + "fix zwall all wall/gran granular hooke 1.0e6 0.9 tangential linear_history "
+                 "8235.0 0.0 0.0 damping coeff_restitution zplane 0.0 NULL\n"),
+         (1300, 350, 800),
+         rows("pos", 2, [[1.6842200000001106e-01], [1.7959300714534190e-01], [4.0202265181015850e-01]])
+         + rows("vel", 2, [[-2.5505999999998483e+00], [2.1749852791550288e+00],
+                           [6.0538527915514628e-01]])),
+    Case("dem03-elastic-3d-si", "30 Mar 2026", stack(10000.0, 1.0), (200,) * 5,
+         rows("pos", 1, [[4.1684173029886483e-04, 1.3831303477676166e-03],
+                         [4.4919993452677758e-04, 1.3507035560466720e-03],
+                         [4.1825802027107992e-04, 1.3815735012746196e-03],
+                         [4.4695822989225211e-04, 1.3528370633113184e-03],
+                         [4.2108853140521607e-04, 1.3787259677965739e-03]])
+         + rows("vel", 1, [[6.0382831813026297e-02, -5.9409910101324431e-02],
+                           [-1.1772563285642577e-01, 1.1914259797246207e-01],
+                           [1.7483079908222401e-01, -1.7374004998063819e-01],
+                           [-2.2609762372881306e-01, 2.2626922777377567e-01],
+                           [2.7253050689536862e-01, -2.7337133152454407e-01]])),
+    Case("dem03-granular-hooke-3d-si", "30 Mar 2026", stack(20000.0, 0.9), (200,) * 5,
+         rows("pos", 1, [[4.2750880271217798e-04, 1.3734203173575415e-03],
+                         [4.2715206575450295e-04, 1.3662268109844195e-03],
+                         [4.4014238279789215e-04, 1.3633340934951286e-03],
+                         [4.3312222813520244e-04, 1.3714096021600378e-03],
+                         [4.2927809294012869e-04, 1.3634702759875576e-03]])
+         + rows("vel", 1, [[-1.8728439704170926e-02, 3.1549487146115240e-01],
+                           [3.6373844571441424e-02, -2.4067317240859665e-01],
+                           [-5.4960369002835900e-02, 2.8159785192102209e-02],
+                           [3.0370223149721643e-02, 8.7370989479275268e-02],
+                           [2.4272767801346431e-02, -6.6012830063635633e-02]])),
+]
+CASES += [
+    Case("dem03-hertz-peak-wall-3d-si", "4 Jul 2026",
+         falling("hertz 7.11111e+10 1.0 tangential linear_nohistory 0.0 0.0 damping coeff_restitution"),
+         (1300, 838, 900), HERTZ_WALL),
+    Case("dem03-hertz-wall-3d-si", "4 Jul 2026",
+         falling("hertz 7.11111e+10 1.0 tangential linear_nohistory 0.0 0.0 damping coeff_restitution"),
+         (1300, 838, 900), HERTZ_WALL),
+    Case("dem03-hertzmaterial-wall-3d-si", "4 Jul 2026",
+         falling("hertz/material 1.0e11 1.0 0.25 tangential linear_nohistory 0.0 0.0 "
+                 "damping coeff_restitution"), (1300, 838, 900),
+         rows("pos", 2, [[2.4993000166951712e-03], [2.4773193534324612e-03], [2.5017266363104966e-03]])
+         + rows("vel", 2, [[-3.8996733776535106e+00], [9.2814738217408040e-04],
+                           [3.9000000198738074e+00]])),
+    Case("dem03-hooke-3d-si", "30 Mar 2026", stack(10000.0), (200,) * 5,
+         rows("pos", 1, [[4.1687420671793478e-04, 1.3830977848181261e-03],
+                         [4.4913694832445444e-04, 1.3507665141123094e-03],
+                         [4.1834731207972275e-04, 1.3814843954145124e-03],
+                         [4.4684922629991178e-04, 1.3529464724372667e-03],
+                         [4.2120998421449340e-04, 1.3786049346145681e-03]])
+         + rows("vel", 1, [[6.0281633633810908e-02, -5.9309696025505169e-02],
+                           [-1.1729083122580830e-01, 1.1870496648880484e-01],
+                           [1.7383820109148707e-01, -1.7275067935620653e-01],
+                           [-2.2435859855183826e-01, 2.2452959487657986e-01],
+                           [2.6988630475923114e-01, -2.7072285993549766e-01]])),
+]
+CASES += [
+    Case("dem03-legacy-hertzhistory-wall-3d-si", "4 Jul 2026",
+         falling("7.11111e+10 NULL 0.0 NULL 0.0 0", pair="gran/hertz/history"),
+         (1300, 838, 900), HERTZ_WALL),
+    Case("dem03-unequal-3d-si", "30 Mar 2026",
+         typed_spheres("-0.005 0.005 -0.001 0.003 -0.005 0.005",
+                       [(1, 0.0, 0.00045, 0.0), (2, 0.0, 0.00135, 0.0)],
+                       {1: (0.001, 20000.0), 2: (0.001, 10000.0)}, 2.0e-6, 0.0005, delay=False)
+         + model("gran/hooke 1.0e3 NULL 5.0 NULL 0.0 0", "",
+                 "fix grav all gravity 9.81 vector 0.0 -1.0 0.0\nfix integr all nve/sphere\n"
+                 "fix ywall all wall/gran hooke 1.0e3 NULL 5.0 NULL 0.0 0 yplane 0.0 0.0018\n"),
+         (200,) * 5,
+         rows("pos", 1, [[4.2564259190155403e-04, 1.3784504245448229e-03],
+                         [4.2419204241835777e-04, 1.3676835119071059e-03],
+                         [4.4768918750241992e-04, 1.3505043382620952e-03],
+                         [4.2886535472112509e-04, 1.3879033127905253e-03],
+                         [4.2574868806846548e-04, 1.3580705579185179e-03]])
+         + rows("vel", 1, [[-5.2592792245950440e-02, 4.4896523781940878e-01],
+                           [1.1605339985404901e-01, -5.0363078598220956e-01],
+                           [-1.2003433195161962e-01, 1.3728012616841667e-01],
+                           [-3.3707822776607608e-03, 3.1193281017891328e-01],
+                           [1.7584400185422766e-01, -4.7515633024618298e-01]])),
+    Case("dem04-granular-3d-si", "30 Mar 2026",
+         one_sphere("-5.0 5.0 -1.0 1.0 -0.5 3.0", (0.0, 0.0, 0.49994764), 1.0, 1.0, 2.0e-4,
+                    v=(1.0, 0.0, 0.0), neighbor=0.3, delay=False, units="lj", bound="p f f")
+         + model("granular", "hooke 1.0e4 0.9 tangential linear_history 2857.0 50.0 0.5 "
+                 "damping coeff_restitution", drop(1.0)
+                 + "fix zwall all wall/gran granular hooke 1.0e4 0.9 tangential linear_history "
+                 "2857.0 50.0 0.5 damping coeff_restitution zplane 0.0 NULL\n"),
+         (2000, 2000, 3000), """
+pos 0 1 3.6001999998805151e-01 0 4.9994764011743803e-01
+pos 1 1 6.5478363567795406e-01 0 4.9994764012498077e-01
+pos 2 1 1.0834423236247468e+00 0 4.9994764012239951e-01
+vel 0 1 8.0005000138420557e-01 0 -2.5345589839426964e-09
+vel 1 1 7.1532076566893166e-01 0 -2.3253258400576456e-10
+vel 2 1 7.1428655875330471e-01 0 -2.4852012027712798e-11
+torque 0 1 0 1.3089970949302940e-01 0
+torque 1 1 0 3.2116282128709091e-03 0
+torque 2 1 0 2.6202718039662139e-06 0
+omega 0 1 0 9.9974999307899148e-01 0
+omega 1 1 0 1.4233961716553385e+00 0
+omega 2 1 0 1.4285672062334340e+00 0
+"""),
+]
+
+
+def slider(wall, pair=None, coeff=""):
+    """a unit sphere (units lj) resting on the wall z = 0 under gravity 1,
+    launched along x at 1 without spin: it slides, then rolls"""
+    return (one_sphere("-5.0 5.0 -1.0 1.0 -0.5 3.0", (0.0, 0.0, 0.49994764), 1.0, 1.0, 2.0e-4,
+                       v=(1.0, 0.0, 0.0), neighbor=0.3, delay=False, units="lj", bound="p f f")
+            + model(pair or "gran/" + wall, coeff, drop(1.0)
+                    + f"fix zwall all wall/gran {wall} zplane 0.0 NULL\n"))
+
+
+def oblique(wall, v, pair=None, coeff=""):
+    """a 5 mm aluminium sphere at 2.55 mm above the wall z = 0 (x and y
+    periodic), arriving with velocity v, no gravity"""
+    return (one_sphere("-0.2 0.2 -0.05 0.05 -0.05 0.1", (0.0, 0.0, 0.00255), 0.005, 2700.0,
+                       1.0e-8, v=v, bound="p p f")
+            + model(pair or "gran/" + wall, coeff, "fix integr all nve/sphere\n"
+                    f"fix zwall all wall/gran {wall} zplane 0.0 NULL\n"))
+
+
+def granular_oblique(args, v):
+    return oblique("granular " + args, v, "granular", args)
+
+
+CASES += [
+    Case("dem04-hertz-oblique-3d-si", "4 Jul 2026",
+         granular_oblique("hertz 5.23697e+10 0.98 tangential linear_history 1.5e10 0.0 0.092 "
+                          "damping coeff_restitution", (2.5069, 0.0, -2.9876)),
+         (1724, 1593, 900),
+         one(pos=[(4.3218834621597697e-05, 0, 2.4984950953306625e-03),
+                  (7.7972106138949184e-05, 0, 2.5072236212123943e-03),
+                  (9.5635813315736917e-05, 0, 2.5335742020348153e-03)],
+             vel=[(2.5061771941302529e+00, 0, -2.9797434144592430e+00),
+                  (1.9626341307546062e+00, 0, 2.9278423135870786e+00),
+                  (1.9626341307546062e+00, 0, 2.9278423135870786e+00)],
+             torque=[(0, 1.3466415071223508e-03, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 7.2280586974967476e-01, 0), (0, 5.4426586924539083e+02, 0),
+                    (0, 5.4426586924539083e+02, 0)])),
+    Case("dem04-hookehistory-3d-si", "30 Mar 2026 (generated May 29 18:24:06)",
+         slider("hooke/history 1.0e4 NULL 10.0 NULL 0.5 1"), (2000, 1000, 1500),
+         one(pos=[(3.6001999998766032e-01, 0, 4.9994764011821508e-01),
+                  (5.1019159646854051e-01, 0, 4.9994764012018406e-01),
+                  (7.2449285403938413e-01, 0, 4.9994764012212656e-01)],
+             vel=[(8.0005000121165126e-01, 0, -2.1894600790323674e-09),
+                  (7.1627101956161254e-01, 0, 7.9160543657078750e-10),
+                  (7.1408828278339231e-01, 0, -1.8055543482175481e-10)],
+             torque=[(0, 1.3089970734175041e-01, 0), (0, -6.6770417936071497e-02, 0),
+                     (0, 1.0645337090957297e-03, 0)],
+             omega=[(0, 9.9974999394174546e-01, 0), (0, 1.4186449021919252e+00, 0),
+                    (0, 1.4295585860830191e+00, 0)])),
+    Case("dem04-hookehistory-mu02-3d-si", "30 Mar 2026",
+         slider("hooke/history 1.0e4 NULL 10.0 NULL 0.2 1"), (5000, 3000, 2000),
+         one(pos=[(9.0002000002244098e-01, 0, 4.9994764012162163e-01),
+                  (1.3469570518343204e+00, 0, 4.9994764012242288e-01),
+                  (1.6326712117809838e+00, 0, 4.9994764012243476e-01)],
+             vel=[(8.0002000004788232e-01, 0, -5.5866548574272763e-12),
+                  (7.1460456306198483e-01, 0, 5.1633308959063600e-12),
+                  (7.1428881832023994e-01, 0, -7.1821801507704452e-15)],
+             torque=[(0, 5.2359878382119314e-02, 0), (0, 1.7575722353025908e-03, 0),
+                     (0, -3.2148536923392229e-04, 0)],
+             omega=[(0, 9.9989999976056754e-01, 0), (0, 1.4269771846900607e+00, 0),
+                    (0, 1.4285559083987927e+00, 0)])),
+    Case("dem04-hookehistory-mu10-3d-si", "30 Mar 2026",
+         slider("hooke/history 1.0e4 NULL 10.0 NULL 1.0 1"), (1000, 1000, 1500),
+         one(pos=[(1.8001999988915854e-01, 0, 4.9994764015760984e-01),
+                  (3.2648825313140839e-01, 0, 4.9994764011821557e-01),
+                  (5.4079422853874992e-01, 0, 4.9994764012526222e-01)],
+             vel=[(8.0009999652499675e-01, 0, 3.7088475860776442e-09),
+                  (7.1442951561054957e-01, 0, -2.1894324241942362e-09),
+                  (7.1417392029987881e-01, 0, 3.1368561291478882e-10)],
+             torque=[(0, 2.6179920205531310e-01, 0), (0, -9.4993601987550816e-02, 0),
+                     (0, 5.3165417254795759e-03, 0)],
+             omega=[(0, 9.9950001737502192e-01, 0), (0, 1.4278524219472684e+00, 0),
+                    (0, 1.4291303985005972e+00, 0)])),
+]
+MINDLIN = ("hertz/material 7.0e10 0.98 0.33 tangential mindlin NULL 0.5 0.092 "
+           "damping coeff_restitution")
+CASES += [
+    Case("dem04-hookehistory-oblique-3d-si", "4 Jul 2026",
+         granular_oblique("hooke 2.0e7 0.98 tangential linear_history 5.7e6 0.0 0.092 "
+                          "damping coeff_restitution", (2.5069, 0.0, -2.9876)),
+         (1724, 1133, 900),
+         one(pos=[(4.3218144443063926e-05, 0, 2.4985026256484134e-03),
+                  (6.7697125864983813e-05, 0, 2.5073069827388330e-03),
+                  (8.5360942777429607e-05, 0, 2.5336574338724162e-03)],
+             vel=[(2.5023666425415572e+00, 0, -2.9382675941730652e+00),
+                  (1.9626463236052916e+00, 0, 2.9278279037320356e+00),
+                  (1.9626463236052916e+00, 0, 2.9278279037320356e+00)],
+             torque=[(0, 7.4047972399628442e-03, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 4.5333574584411203e+00, 0), (0, 5.4425367639471085e+02, 0),
+                    (0, 5.4425367639471085e+02, 0)])),
+    Case("dem04-legacy-hookehistory-oblique-3d-si", "4 Jul 2026",
+         oblique("hooke/history 2.0e7 5.7e6 4300.0 NULL 0.092 1", (2.5069, 0.0, -2.9876)),
+         (1724, 1133, 900),
+         one(pos=[(4.3218142763299546e-05, 0, 2.4985026155295545e-03),
+                  (6.7696981122473287e-05, 0, 2.5073079001221308e-03),
+                  (8.5360453524122238e-05, 0, 2.5336616409999723e-03)],
+             vel=[(2.5023650856370478e+00, 0, -2.9383074525765904e+00),
+                  (1.9626080446272482e+00, 0, 2.9281934308733382e+00),
+                  (1.9626080446272482e+00, 0, 2.9281934308733382e+00)],
+             torque=[(0, 7.4016578273017235e-03, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 4.5349143629537201e+00, 0), (0, 5.4429195537274848e+02, 0),
+                    (0, 5.4429195537274848e+02, 0)])),
+    Case("dem04-legacy-hookehistory-grazing-3d-si",
+         "4 Jul 2026 + the wall/gran grazing-impact fix (pull request 5007, 2026)",
+         oblique("hooke/history 2.0e7 NULL 4300 NULL 0.5 1", (3.7839, 0.0, -0.94345)),
+         (5400, 1000, 800),
+         one(pos=[(2.0432066856505740e-04, 0, 2.4990735628708334e-03),
+                  (2.3620950910504049e-04, 0, 2.5015392070110425e-03),
+                  (2.5900773130010181e-04, 0, 2.5089367291857272e-03)],
+             vel=[(3.7553395032095160e+00, 0, -8.8632900641903323e-01),
+                  (2.8497777743815123e+00, 0, 9.2469027185000185e-01),
+                  (2.8497777743815123e+00, 0, 9.2469027185000185e-01)],
+             omega=[(0, 2.8560496790483597e+01, 0), (0, 9.3412222561848876e+02, 0),
+                    (0, 9.3412222561848876e+02, 0)],
+             torque=[(0, 2.4003315845031060e-02, 0), (0, 0, 0), (0, 0, 0)])),
+    Case("dem04-mindlin-oblique-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN, (2.5069, 0.0, -2.9876)), (1700, 1600, 900),
+         one(pos=[(4.2617283835628844e-05, 0, 2.4992110055265266e-03),
+                  (7.7638651345996810e-05, 0, 2.5067258974728027e-03),
+                  (9.5302466035586915e-05, 0, 2.5330764782679018e-03)],
+             vel=[(2.5067149412230361e+00, 0, -2.9854586441519237e+00),
+                  (1.9626460766213021e+00, 0, 2.9278423105668629e+00),
+                  (1.9626460766213021e+00, 0, 2.9278423105668629e+00)],
+             torque=[(0, 6.2225216712037982e-04, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 1.8505877696403941e-01, 0), (0, 5.4425392337870403e+02, 0),
+                    (0, 5.4425392337870403e+02, 0)])),
+    Case("dem04-mindlin-oblique-highvt-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN, (15.237, 0.0, -2.9876)), (1700, 1600, 900),
+         one(pos=[(2.5902898475530905e-04, 0, 2.4992110055265266e-03),
+                  (4.9773200619245841e-04, 0, 2.5067258974728027e-03),
+                  (6.2996675121587480e-04, 0, 2.5330764782679018e-03)],
+             vel=[(1.5236818311646589e+01, 0, -2.9854586441519237e+00),
+                  (1.4692749447044884e+01, 0, 2.9278423105668629e+00),
+                  (1.4692749447044884e+01, 0, 2.9278423105668629e+00)],
+             torque=[(0, 6.2225216712037982e-04, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 1.8168835341725284e-01, 0), (0, 5.4425055295515733e+02, 0),
+                    (0, 5.4425055295515733e+02, 0)])),
+    Case("dem03-hertz-tsuji-wall-3d-si", "4 Jul 2026 (with the tsuji sqrt(2) of 2 Sep 2026)",
+         one_sphere("-0.05 0.012 -0.012 0.012 -0.012 0.012", (-0.0026, 0.0, 0.0), 0.005, 2700.0,
+                    1.0e-8, v=(2.0, 0.0, 0.0))
+         + model("granular", "hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin "
+                 "NULL 0.5 0.4", "fix integr all nve/sphere\n"
+                 "fix xwall all wall/gran granular hertz/material 7.0e10 0.5 0.33 damping tsuji "
+                 "tangential mindlin NULL 0.5 0.4 xplane NULL 0.0\n"),
+         (5500, 1500),
+         one(pos=[(-2.4926116685070137e-03, 0, 0), (-2.5034880148754384e-03, 0, 0)],
+             vel=[(7.1068571385515955e-01, 0, 0), (-9.9974392334184659e-01, 0, 0)])),
+]
+
+
+def mindlin_oblique(xs, vxs, wy0, wy1, tangential="mindlin"):
+    """the mindlin family's oblique impacts (1700 1600 900 steps): the normal
+    motion is the same in all; x, vx and the spin differ"""
+    zs = (2.4992110055265266e-03, 2.5067258974728027e-03, 2.5330764782679018e-03)
+    vzs = (-2.9854586441519237e+00, 2.9278423105668629e+00, 2.9278423105668629e+00)
+    return one(pos=[(x, 0, z) for x, z in zip(xs, zs)],
+               vel=[(vx, 0, vz) for vx, vz in zip(vxs, vzs)],
+               torque=[(0, 6.2225216712037982e-04, 0), (0, 0, 0), (0, 0, 0)],
+               omega=[(0, wy0, 0), (0, wy1, 0), (0, wy1, 0)])
+
+
+CASES += [
+    Case("dem04-mindlin-oblique-lowvt-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN, (2.29, 0.0, -2.9876)), (1700, 1600, 900),
+         mindlin_oblique((3.8929983425594491e-05, 7.0480922152325450e-05, 8.6192621707897299e-05),
+                         (2.2898131225154854e+00, 1.7457443950640865e+00, 1.7457443950640865e+00),
+                         1.8687748451587718e-01, 5.4425560493591468e+02)),
+    Case("dem04-mindlin-sticking-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN, (0.5, 0.0, -2.9876)), (1700, 1600, 900),
+         mindlin_oblique((8.4999811084138828e-06, 1.4048350263709760e-05, 1.7147760385717018e-05),
+                         (4.9980306001692298e-01, 3.4437890244522057e-01, 3.4437890244522057e-01),
+                         1.9693998307698951e-01, 1.5562109755477954e+02)),
+    Case("dem04-mindlinforce-oblique-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN.replace("mindlin", "mindlin/force"), (2.5069, 0.0, -2.9876)),
+         (1700, 1600, 900),
+         mindlin_oblique((4.2617281091578238e-05, 7.7638457625273821e-05, 9.5302165422231973e-05),
+                         (2.5067029952619766e+00, 1.9626341996620487e+00, 1.9626341996620487e+00),
+                         1.9700473802305607e-01, 5.4426580033795710e+02)),
+    Case("dem04-mindlinrescale-oblique-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN.replace("mindlin", "mindlin_rescale"), (2.5069, 0.0, -2.9876)),
+         (1724, 1593, 900),
+         one(pos=[(4.3218840232622755e-05, 0, 2.4984950953312736e-03),
+                  (7.7972301179679522e-05, 0, 2.5072236306699839e-03),
+                  (9.5636115869086668e-05, 0, 2.5335742114736700e-03)],
+             vel=[(2.5061891397356071e+00, 0, -2.9797434105929264e+00),
+                  (1.9626460766007514e+00, 0, 2.9278423115198366e+00),
+                  (1.9626460766007514e+00, 0, 2.9278423115198366e+00)],
+             torque=[(0, 1.3466422172390918e-03, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 7.1086026439197081e-01, 0), (0, 5.4425392339924827e+02, 0),
+                    (0, 5.4425392339924827e+02, 0)])),
+]
+LJ_HOOKE = "hooke 1.0e4 0.9 tangential linear_history 2857.0 {gt} {mu} damping coeff_restitution"
+CASES += [
+    Case("dem04-mindlinrescaleforce-oblique-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN.replace("mindlin", "mindlin_rescale/force"),
+                          (2.5069, 0.0, -2.9876)), (1724, 1593, 900),
+         one(pos=[(4.3218834621541487e-05, 0, 2.4984950953312736e-03),
+                  (7.7972105269440088e-05, 0, 2.5072236306699839e-03),
+                  (9.5635812445203251e-05, 0, 2.5335742114736700e-03)],
+             vel=[(2.5061771937745476e+00, 0, -2.9797434105929264e+00),
+                  (1.9626341306396919e+00, 0, 2.9278423115198366e+00),
+                  (1.9626341306396919e+00, 0, 2.9278423115198366e+00)],
+             torque=[(0, 1.3466422172390918e-03, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 7.2280622545098749e-01, 0), (0, 5.4426586936030731e+02, 0),
+                    (0, 5.4426586936030731e+02, 0)])),
+    Case("dem04-oblique-grazing-3d-si", "4 Jul 2026",
+         granular_oblique(MINDLIN, (3.1947, 0.0, -2.2369)), (2285, 1677, 900),
+         one(pos=[(7.2998820115520601e-05, 0, 2.4988876801169779e-03),
+                  (1.2252260050554098e-04, 0, 2.5054113469810710e-03),
+                  (1.4760738870002189e-04, 0, 2.5251407972463834e-03)],
+             vel=[(3.1942406308257176e+00, 0, -2.2318400261448739e+00),
+                  (2.7871986882754021e+00, 0, 2.1921611405773640e+00),
+                  (2.7871986882754021e+00, 0, 2.1921611405773640e+00)],
+             torque=[(0, 8.6958423865611415e-04, 0), (0, 0, 0), (0, 0, 0)],
+             omega=[(0, 4.5936917428274754e-01, 0), (0, 4.0750131172460095e+02, 0),
+                    (0, 4.0750131172460095e+02, 0)])),
+    Case("dem04-opencyl-rim-3d", "30 Mar 2026",
+         one_sphere("-3.0 3.0 -3.0 3.0 -3.0 3.0", (1.45, 0.0, 0.25), 1.0, 1.0, 2.0e-4,
+                    v=(-0.43, 0.0, -0.26), neighbor=0.3, delay=False, units="lj")
+         + model("granular", LJ_HOOKE.format(gt=50.0, mu=0.5),
+                 "region cyl cylinder z 0.0 0.0 1.0 0.0 2.0 units box open 3\n"
+                 "fix wreg all wall/gran/region granular " + LJ_HOOKE.format(gt=50.0, mu=0.5)
+                 + " region cyl\nfix integr all nve/sphere\n"),
+         (600, 600, 800),
+         one(pos=[(1.4649172516992330e+00, 0, 2.5590025675929823e-01),
+                  (1.5133734660423841e+00, 0, 2.8047164415352149e-01),
+                  (1.5779817518332522e+00, 0, 3.1323349401248585e-01)],
+             vel=[(4.0380178619273527e-01, 0, 2.0476156161839568e-01)] * 3,
+             omega=[(0, 1.3665989122173849e-02, 0)] * 3)),
+]
+
+
+def lj_oblique(wall, v, dt=2.0e-4, pair=None, coeff=""):
+    """a unit sphere (units lj) 0.05 above the wall z = 0 (x and y periodic),
+    arriving with velocity v, no gravity; wall: fix wall/gran's model (pair
+    granular's when pair is None)"""
+    if pair is None:
+        pair, coeff, wall = "granular", wall, "granular " + wall
+    return (one_sphere("-10.0 10.0 -2.0 2.0 -0.5 5.0", (0.0, 0.0, 0.55), 1.0, 1.0, dt, v=v,
+                       neighbor=0.3, delay=False, units="lj", bound="p p f")
+            + model(pair, coeff, "fix integr all nve/sphere\n"
+                    f"fix zwall all wall/gran {wall} zplane 0.0 NULL\n"))
+
+
+CASES += [
+    Case("dem05-granular-oblique-3d", "30 Mar 2026",
+         lj_oblique(LJ_HOOKE.format(gt=0.0, mu=0.3), (4.0, 0.0, -1.0)), (400, 400),
+         one(pos=[(3.0902795539247691e-01, 0, 5.0654764149609222e-01),
+                  (5.8331710158354588e-01, 0, 5.7864005331889168e-01)],
+             vel=[(3.4286143273883534e+00, 0, 9.0115514778494654e-01)] * 2,
+             omega=[(0, 2.8569283630582687e+00, 0)] * 2)),
+    Case("dem05-granular-oblique-steep-3d", "30 Mar 2026",
+         lj_oblique(LJ_HOOKE.format(gt=0.0, mu=0.3), (6.0, 0.0, -1.0)), (400, 400),
+         one(pos=[(4.6902795539247633e-01, 0, 5.0654764149609222e-01),
+                  (9.0331710158355505e-01, 0, 5.7864005331889168e-01)],
+             vel=[(5.4286143273883489e+00, 0, 9.0115514778494654e-01)] * 2,
+             omega=[(0, 2.8569283630582687e+00, 0)] * 2)),
+    Case("dem05-hertz-oblique-3d", "30 Mar 2026",
+         lj_oblique("hertz/history 1.0e5 NULL 10.0 NULL 0.3 1", (1.0, 0.0, -1.0), 1.0e-4,
+                    "gran/hertz/history 1.0e5 NULL 10.0 NULL 0.3 1"), (400, 400),
+         one(pos=[(4.0000000000000119e-02, 0, 5.1000000000000445e-01),
+                  (7.1039114481321816e-02, 0, 5.0143479228817511e-01)],
+             vel=[(1.0, 0, -1.0), (4.3229008746243802e-01, 0, 9.9321877551794191e-01)],
+             omega=[(0, 0, 0), (0, 2.8385495626877999e+00, 0)])),
+    Case("dem05-hookehistory-grazing-3d", "30 Mar 2026",
+         lj_oblique("hooke/history 1.0e4 NULL 10.0 NULL 0.5 1", (4.0, 0.0, -1.0), 2.0e-5,
+                    "gran/hooke/history 1.0e4 NULL 10.0 NULL 0.5 1"), (4000, 4000),
+         one(pos=[(3.0175077594998145e-01, 0, 5.0647290772730569e-01),
+                  (5.4591857348327422e-01, 0, 5.7786219665344374e-01)],
+             vel=[(3.0520974691666085e+00, 0, 8.9236611157415258e-01)] * 2,
+             omega=[(0, 4.7395126541669219e+00, 0)] * 2)),
+    Case("dem05-hookehistory-oblique-3d", "30 Mar 2026 (generated May 29 18:24:08)",
+         lj_oblique("hooke/history 1.0e4 NULL 10.0 NULL 0.3 1", (1.0, 0.0, -1.0), 2.0e-4,
+                    "gran/hooke/history 1.0e4 NULL 10.0 NULL 0.3 1"), (400, 400),
+         one(pos=[(6.9915886195579688e-02, 0, 5.0649254641902497e-01),
+                  (1.0830228471953378e-01, 0, 5.7799092670137819e-01)],
+             vel=[(4.7982998154942136e-01, 0, 8.9372975352958750e-01)] * 2,
+             omega=[(0, 2.6008500922528892e+00, 0)] * 2)),
+]
+
+# cases gravel cannot run: name -> what it needs
+UNSUPPORTED = {}
+# cases whose YAML has no reference values (run_pos "TODO: regenerate")
+NO_REFERENCE = ["dem01-hertzmindlin-cof-3d-si", "dem02-oblique-cof-3d-si", "dem03-rolling-cof-3d-si",
+                "dem04-dmt-twosphere-cof-3d-si", "dem05-spin-headon-cof-3d-si",
+                "dem06-spin-unequal-cof-3d-si", "dem07-wall-normal-cof-3d-si",
+                "dem08-twosphere-normal-3d-si"]

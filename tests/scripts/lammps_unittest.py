@@ -1,0 +1,142 @@
+#!/usr/bin/python3
+"""lammps_unittest.py - LAMMPS's own granular unit cases (lammps/lammps,
+unittest/granular/tests/*.yaml) as gravel decks.
+
+The table is tests/reference/lammps_unittest/cases.py: for each case the
+YAML file it comes from, the LAMMPS version that generated it, a gravel deck
+written for gravel from the case's setup (cases.py's builders), its run
+segments and LAMMPS's per-atom reference values after each segment (run_pos,
+run_vel, run_omega, run_torque, copied from the YAML). gravel runs the deck
+with one `run` per segment and every value must match to 1e-8 relative:
+relative to the largest magnitude of that quantity (position, velocity,
+angular velocity, torque) over the atoms in that segment; a quantity that is
+zero for every atom in LAMMPS must be below 1e-12 in gravel.
+
+cases.py also lists the cases gravel does not run (UNSUPPORTED: the command or
+model each needs) and those without reference values (NO_REFERENCE); this
+test prints their count. All cases run by default (well under a minute);
+`lammps_unittest.py NAME...` runs the named cases only, `-v` prints each
+case's worst error even when it passes."""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "reference", "lammps_unittest"))
+from physics_lammps import GRAVEL, read_dump  # noqa: E402
+
+TOL = 1e-8
+ZERO = 1e-12
+FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz")
+GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9))
+
+
+def parse_ref(text):
+    """rows "QUANTITY SEGMENT ATOM a b c" (QUANTITY pos, vel, omega or
+    torque; a row left out is zero) -> {segment: {atom: [12 values]}}"""
+    col = dict(GROUPS)
+    out = {}
+    for line in text.strip().splitlines():
+        w = line.split()
+        if not w:
+            continue
+        seg, tag = int(w[1]), int(w[2])
+        row = out.setdefault(seg, {}).setdefault(tag, [0.0] * 12)
+        row[col[w[0]]:col[w[0]] + 3] = [float(v) for v in w[3:6]]
+    return out
+
+
+def run(name, deck, segments, extra=()):
+    """gravel on deck + one `run` per segment; {segment: {id: values}} or None"""
+    every = math.gcd(*segments)  # a frame at each segment's end
+    text = deck + f"dump lmp_unittest all custom {every} out.dump id " + " ".join(FIELDS) + "\n"
+    text += "dump_modify lmp_unittest sort id format float %.17g\n"
+    text += "".join(f"run {n}\n" for n in segments)
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(os.path.join(tmp, "in.case"), "w") as f:
+            f.write(text)
+        r = subprocess.run([GRAVEL, "-in", "in.case", "-log", "none", "-echo", "none", *extra],
+                           cwd=tmp, capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed on {name}: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None
+        frames = read_dump(os.path.join(tmp, "out.dump"))
+    out, step = {}, 0
+    for k, n in enumerate(segments):
+        step += n
+        if step not in frames:
+            print(f"  {name}: no dump at step {step}")
+            return None
+        out[k] = frames[step]
+    return out
+
+
+def worst_error(got, ref):
+    """the largest error over ref (relative as the module says) and where"""
+    worst, where = 0.0, ""
+    for seg, rows in ref.items():
+        if seg not in got:
+            return float("inf"), f"segment {seg} missing"
+        for label, c0 in GROUPS:
+            scale = max(abs(v) for vals in rows.values() for v in vals[c0:c0 + 3])
+            for tag, vals in rows.items():
+                if tag not in got[seg]:
+                    return float("inf"), f"segment {seg} atom {tag} missing"
+                for c in range(c0, c0 + 3):
+                    a, b = got[seg][tag][c], vals[c]
+                    err = abs(a - b) / scale if scale > 0 else abs(a) / ZERO * TOL
+                    if err > worst:
+                        worst, where = err, f"segment {seg} atom {tag} {FIELDS[c]}"
+    return worst, where
+
+
+def check_case(case, verbose=False, prefix="lammps_unittest_"):
+    got = run(case.name, case.deck, case.segments)
+    ok = got is not None
+    worst, where = float("nan"), "no run"
+    if ok:
+        worst, where = worst_error(got, parse_ref(case.ref))
+        ok = worst <= TOL
+    if verbose or not ok:
+        print(f"  {case.name} ({case.source}, LAMMPS {case.version}): worst relative "
+              f"error {worst:.3e} ({where})")
+    print(f"{'PASS' if ok else 'FAIL'} {prefix}{case.name}")
+    return ok, got
+
+
+def sensitive(case, got):
+    """the comparison sees a reference value moved by 1e-7 of its quantity's
+    scale (so a case that matches cannot match by construction)"""
+    ref = parse_ref(case.ref)
+    seg, rows = next(iter(ref.items()))
+    tag, vals = next(iter(rows.items()))
+    c = max(range(12), key=lambda k: abs(vals[k]))
+    vals[c] += 1e-7 * abs(vals[c])
+    ok = worst_error(got, ref)[0] > TOL
+    print(f"{'PASS' if ok else 'FAIL'} lammps_unittest_sees_a_1e-7_change ({case.name})")
+    return ok
+
+
+def main(argv):
+    import cases
+    verbose = "-v" in argv
+    names = [a for a in argv if not a.startswith("-")]
+    todo = [c for c in cases.CASES if not names or c.name in names]
+    failed = 0
+    for k, c in enumerate(todo):
+        ok, got = check_case(c, verbose)
+        failed += not ok
+        if k == 0 and got is not None:
+            failed += not sensitive(c, got)
+    if not names:
+        print(f"  {len(cases.CASES)} cases checked ({len(cases.CASES) - failed} match), "
+              f"{len(cases.UNSUPPORTED)} unsupported, {len(cases.NO_REFERENCE)} without "
+              "reference values in LAMMPS's repository")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
