@@ -16,7 +16,8 @@ where it was 1e-7 while it slid, is compared with the quantity's own
 magnitude, not with itself); a quantity that is zero for every atom and
 segment in LAMMPS must be below 1e-12 in gravel.
 
-cases.py also lists the cases gravel does not run (UNSUPPORTED: the command or
+A case of cases.LOOSER is held to the looser tolerance given there, with its
+reason printed. cases.py also lists the cases gravel does not run (UNSUPPORTED: the command or
 model each needs), those without reference values (NO_REFERENCE), those
 another test checks (ELSEWHERE) and the supported ones not yet written there
 (TODO); this test prints their counts. By default the cases of cases.SLOW (each over
@@ -57,15 +58,17 @@ def parse_ref(text):
     return out
 
 
-def run(name, deck, segments, extra=()):
-    """gravel on deck + one `run` per segment; {segment: {id: values}} or None"""
+def run(name, deck, segments, extra=(), files=None):
+    """gravel on deck + one `run` per segment (files: {name: text} written
+    beside the deck); {segment: {id: values}} or None"""
     every = math.gcd(*segments) or 1  # a frame at each segment's end (run 0: step 0)
     text = deck + f"dump lmp_unittest all custom {every} out.dump id " + " ".join(FIELDS) + "\n"
     text += "dump_modify lmp_unittest sort id format float %.17g\n"
     text += "".join(f"run {n}\n" for n in segments)
     with tempfile.TemporaryDirectory() as tmp:
-        with open(os.path.join(tmp, "in.case"), "w") as f:
-            f.write(text)
+        for fname, body in dict(files or {}, **{"in.case": text}).items():
+            with open(os.path.join(tmp, fname), "w") as f:
+                f.write(body)
         r = subprocess.run([GRAVEL, "-in", "in.case", "-log", "none", "-echo", "none", *extra],
                            cwd=tmp, capture_output=True, text=True, timeout=300)
         if r.returncode != 0:
@@ -104,14 +107,16 @@ def worst_error(got, ref):
     return worst, where
 
 
-def check_case(case, verbose=False, prefix="lammps_unittest_"):
-    got = run(case.name, case.deck, case.segments)
+def check_case(case, verbose=False, prefix="lammps_unittest_", tol=TOL, why=""):
+    got = run(case.name, case.deck, case.segments, files=case.files)
     ok = got is not None
     worst, where = float("nan"), "no run"
     if ok:
         worst, where = worst_error(got, parse_ref(case.ref))
-        ok = worst <= TOL
-    if verbose or not ok:
+        ok = worst <= tol
+    if why:
+        print(f"  {case.name}: held to {tol:g}, not {TOL:g}: {why}")
+    if verbose or not ok or why:
         print(f"  {case.name} ({case.source}, LAMMPS {case.version}): worst relative "
               f"error {worst:.3e} ({where})")
     print(f"{'PASS' if ok else 'FAIL'} {prefix}{case.name}")
@@ -139,12 +144,15 @@ def main(argv):
             (not names and (every or c.name not in cases.SLOW))]
     failed = 0
     for k, c in enumerate(todo):
-        ok, got = check_case(c, verbose)
+        tol, why = cases.LOOSER.get(c.name, (TOL, ""))
+        ok, got = check_case(c, verbose, tol=tol, why=why)
         failed += not ok
         if k == 0 and got is not None:
             failed += not sensitive(c, got)
     if not names:
-        print(f"  {len(todo)} cases checked ({len(todo) - failed} match); "
+        looser = sum(c.name in cases.LOOSER for c in todo)
+        print(f"  {len(todo)} cases checked ({len(todo) - failed - looser} match to {TOL:g}, "
+              f"{looser} held to a looser tolerance (LOOSER)); "
               f"{len(cases.CASES) - len(todo)} slow ones left out (--all runs them); "
               f"{len(cases.ELSEWHERE)} checked by other tests; {len(cases.UNSUPPORTED)} "
               f"unsupported; {len(cases.NO_REFERENCE)} without reference values; "
