@@ -42,7 +42,7 @@ enum region_node_layout {
     RG_KIND = 0,        /* enum region_primitive */
     RG_INTERIOR = 1,
     RG_OPENFLAG = 2,
-    RG_OPEN = 3,        /* open faces 0..5 as bits */
+    RG_OPEN = 3,        /* open faces 0..5 as bits; bit RG_OPEN_RIM2021: -compat lammps2021 */
     RG_AXIS = 4,
     RG_WALLOFF = 5,     /* wall id offset inside a union / intersect */
     RG_MOVE = 6,
@@ -58,6 +58,10 @@ enum region_node_layout {
     RG_RPOINT = 33,
     RG_NODE = 40
 };
+/* RG_OPEN's bit set under -compat lammps2021: an open cylinder's cap contact
+ * outside its radius is LAMMPS 2021's (the point above the atom on the cap's
+ * plane, not on the rim) */
+enum { RG_OPEN_RIM2021 = 6 };
 enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
 enum { RG_MAXNODE = 4, RG_MAXC = 8 };
 

@@ -396,27 +396,25 @@ static inline int rg_exterior_cylinder(__global const REAL *nd, const REAL3 x, c
             }
             d2prev = dr2 + dx * dx;
         }
-        if (!rg_open(nd, 0)) {
-            const REAL dx = lo - a;
+        /* a cap's nearest point: above the atom inside the radius, on the
+         * rim outside it (LAMMPS 2026; LAMMPS 2021 kept the curved face's
+         * point there, the atom's own when that face is open) */
+        const int rim = r >= rad && !(((int)nd[RG_OPEN] >> RG_OPEN_RIM2021) & 1);
+        for (int f = 0; f < 2; f++) {
+            if (rg_open(nd, f))
+                continue;
+            const REAL dx = (f ? hi : lo) - a;
             dd = r < rad ? dx * dx : dr2 + dx * dx;
             if (dd < d2prev) {
-                ap = lo;
+                ap = f ? hi : lo;
                 if (r < rad) {
                     t1 = rg_t1(ax, x);
                     t2 = rg_t2(ax, x);
+                } else if (rim) {
+                    t1 = p[0] + d1 * rad / r;
+                    t2 = p[1] + d2 * rad / r;
                 }
                 d2prev = dd;
-            }
-        }
-        if (!rg_open(nd, 1)) {
-            const REAL dx = hi - a;
-            dd = r < rad ? dx * dx : dr2 + dx * dx;
-            if (dd < d2prev) {
-                ap = hi;
-                if (r < rad) {
-                    t1 = rg_t1(ax, x);
-                    t2 = rg_t2(ax, x);
-                }
             }
         }
     }

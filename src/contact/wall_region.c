@@ -33,7 +33,8 @@ static const int trans[3][2] = {{1, 2}, {0, 2}, {0, 1}};
 
 /* Device coordinates are relative to the run's origin (eng->origin; 0 in
  * double precision): every position parameter is shifted by it. */
-static void pack_node(const struct region *r, int walloff, const double o[3], double *nd)
+static void pack_node(const struct region *r, int walloff, const double o[3], int c2021,
+                      double *nd)
 {
     memset(nd, 0, RG_NODE * sizeof *nd);
     nd[RG_KIND] = primitive_kind(r);
@@ -42,7 +43,7 @@ static void pack_node(const struct region *r, int walloff, const double o[3], do
     int bits = 0;
     for (int k = 0; k < 6; k++)
         bits |= r->open_faces[k] << k;
-    nd[RG_OPEN] = bits;
+    nd[RG_OPEN] = bits | c2021 << RG_OPEN_RIM2021;
     nd[RG_AXIS] = r->dim;
     nd[RG_WALLOFF] = walloff;
     nd[RG_MOVE] = r->moveflag;
@@ -135,7 +136,7 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
     int walloff = 0;
     for (int k = 0; k < wr->nnode; k++) {
         const struct region *s = wr->comb ? r->sub[k] : r;
-        pack_node(s, walloff, g->eng->origin, nodes + k * RG_NODE);
+        pack_node(s, walloff, g->eng->origin, g->opt.lammps2021, nodes + k * RG_NODE);
         walloff += s->cmax;
     }
     eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);

@@ -1,13 +1,13 @@
 #!/usr/bin/python3
 """lammps_granular_today.py - gravel's default pair granular and fix wall/gran
-granular follow today's LAMMPS (doc/lammps.md), checked on setups of LAMMPS's
-own granular unit cases (lammps/lammps, unittest/granular/tests/*.yaml): each
-case's deck is written here as a gravel deck and gravel's positions,
-velocities, angular velocities and torques after each run segment must match
-the case's reference values (copied below, with the file they come from) to
-1e-8 relative (relative to the largest magnitude of that quantity in that
-segment; a quantity that is exactly zero in LAMMPS must be below 1e-12 in
-gravel).
+granular follow today's LAMMPS (doc/lammps.md), checked on three of LAMMPS's
+own granular unit cases (lammps/lammps, unittest/granular/tests/*.yaml; their
+gravel decks and reference values are in tests/reference/lammps_unittest/
+cases.py, shared with lammps_unittest.py, which checks every case): gravel's
+positions, velocities, angular velocities and torques after each run segment
+must match the reference values to 1e-8 relative (lammps_unittest.py says
+how), and here also their restitution, and their first segment under -compat
+lammps2021:
 
 - dem01-hertz-tsuji-3d-si.yaml (LAMMPS 4 Jul 2026 + the tsuji sqrt(2) of
   GranSubModDampingTsuji::init): two spinning aluminium spheres, head-on,
@@ -38,154 +38,21 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "reference", "lammps_unittest"))
 from physics_lammps import GRAVEL, read_dump  # noqa: E402
+from lammps_unittest import FIELDS, TOL, parse_ref, run, worst_error  # noqa: E402
+import cases  # noqa: E402
 
-TOL = 1e-8
-ZERO = 1e-12
-FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz")
-GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9))
-
-PAIR_DECK = """units si
-dimension 3
-boundary f f f
-atom_style sphere
-region box block -0.2 0.2 -0.1 0.1 -0.1 0.1 units box
-create_box 1 box
-create_atoms 1 single -0.002550 0.0 0.0 units box
-create_atoms 1 single 0.002550 0.0 0.0 units box
-set group all diameter 0.005 density 2700.0
-group left id 1
-group right id 2
-velocity left set 2.0 0.0 0.0
-velocity right set -2.0 0.0 0.0
-set group left omega 0.0 0.0 22.0
-set group right omega 0.0 0.0 -22.0
-comm_modify vel yes
-neighbor 0.001 bin
-neigh_modify delay 0
-timestep 1.0e-8
-pair_style granular
-pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
-fix integr all nve/sphere
-"""
-
-WALL_DECK = """units si
-dimension 3
-boundary f f f
-atom_style sphere
-region box block -0.05 0.012 -0.012 0.012 -0.012 0.012 units box
-create_box 1 box
-create_atoms 1 single -0.0026 0.0 0.0 units box
-set group all diameter 0.005 density 2700.0
-velocity all set 2.0 0.0 0.0
-comm_modify vel yes
-neighbor 0.001 bin
-neigh_modify delay 0
-timestep 1.0e-8
-pair_style granular
-pair_coeff * * hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4
-fix integr all nve/sphere
-fix xwall all wall/gran granular hertz/material 7.0e10 0.5 0.33 damping tsuji tangential mindlin NULL 0.5 0.4 xplane NULL 0.0
-"""
-
-GRAZE_DECK = """units si
-dimension 3
-boundary p p f
-atom_style sphere
-region box block -0.2 0.2 -0.05 0.05 -0.05 0.1 units box
-create_box 1 box
-create_atoms 1 single 0.0 0.0 0.002550 units box
-set group all diameter 0.005 density 2700
-velocity all set 3.7839 0.0 -0.94345
-comm_modify vel yes
-neighbor 0.001 bin
-neigh_modify delay 0
-timestep 1e-08
-pair_style gran/hooke/history 2.0e7 NULL 4300 NULL 0.5 1
-pair_coeff * *
-fix integr all nve/sphere
-fix zwall all wall/gran hooke/history 2.0e7 NULL 4300 NULL 0.5 1 zplane 0.0 NULL
-"""
-
-# {segment: {atom: [x y z vx vy vz omegax omegay omegaz tqx tqy tqz]}}
-# unittest/granular/tests/dem01-hertz-tsuji-3d-si.yaml (run_pos, run_vel, run_omega, run_torque)
-PAIR_REF = {
-    0: {1: [-2.4980771847769199e-03, 0, 0, 1.8175852473916858e+00, 0, 0, 0, 0, 22.0, 0, 0, 0],
-        2: [2.4980771847769199e-03, 0, 0, -1.8175852473916858e+00, 0, 0, 0, 0, -22.0, 0, 0, 0]},
-    1: {1: [-2.5034867026327494e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
-        2: [2.5034867026327494e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
-    2: {1: [-2.5134838795636545e-03, 0, 0, -9.9971769309661351e-01, 0, 0, 0, 0, 22.0, 0, 0, 0],
-        2: [2.5134838795636545e-03, 0, 0, 9.9971769309661351e-01, 0, 0, 0, 0, -22.0, 0, 0, 0]},
-}
-# unittest/granular/tests/dem03-hertz-tsuji-wall-3d-si.yaml
-WALL_REF = {
-    0: {1: [-2.4926116685070137e-03, 0, 0, 7.1068571385515955e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
-    1: {1: [-2.5034880148754384e-03, 0, 0, -9.9974392334184659e-01, 0, 0, 0, 0, 0, 0, 0, 0]},
-}
-
-# unittest/granular/tests/dem04-legacy-hookehistory-grazing-3d-si.yaml (generated after
-# LAMMPS pull request 5007, the fix wall/gran hooke/history grazing-impact fix of 2026)
-GRAZE_REF = {
-    0: {1: [2.0432066856505740e-04, 0, 2.4990735628708334e-03,
-            3.7553395032095160e+00, 0, -8.8632900641903323e-01,
-            0, 2.8560496790483597e+01, 0, 0, 2.4003315845031060e-02, 0]},
-    1: {1: [2.3620950910504049e-04, 0, 2.5015392070110425e-03,
-            2.8497777743815123e+00, 0, 9.2469027185000185e-01,
-            0, 9.3412222561848876e+02, 0, 0, 0, 0]},
-    2: {1: [2.5900773130010181e-04, 0, 2.5089367291857272e-03,
-            2.8497777743815123e+00, 0, 9.2469027185000185e-01,
-            0, 9.3412222561848876e+02, 0, 0, 0, 0]},
-}
-
-# name, deck, run segments, reference, impact speed and restitution tolerance (None: no
-# restitution check), whether -compat lammps2021 must differ (False: must match too)
-CASES = (
-    ("dem01-hertz-tsuji-3d-si", PAIR_DECK, (2600, 1500, 1000), PAIR_REF, 2.0, 0.02, True),
-    ("dem03-hertz-tsuji-wall-3d-si", WALL_DECK, (5500, 1500), WALL_REF, 2.0, 0.005, True),
-    ("dem04-legacy-hookehistory-grazing-3d-si", GRAZE_DECK, (5400, 1000, 800), GRAZE_REF,
-     None, None, False),
+# the unit cases of tests/reference/lammps_unittest/cases.py checked here: name,
+# impact speed and restitution tolerance (None: no restitution check), whether
+# -compat lammps2021 must differ (False: must match too)
+TODAY = (
+    ("dem01-hertz-tsuji-3d-si", 2.0, 0.02, True),
+    ("dem03-hertz-tsuji-wall-3d-si", 2.0, 0.005, True),
+    ("dem04-legacy-hookehistory-grazing-3d-si", None, None, False),
 )
-
-
-def run(name, deck, segments, extra=()):
-    """gravel on deck + one `run` per segment; {segment: {id: values}} or None"""
-    text = deck + "dump d all custom 100 out.dump id " + " ".join(FIELDS) + "\n"
-    text += "dump_modify d sort id format float %.17g\n"
-    text += "".join(f"run {n}\n" for n in segments)
-    with tempfile.TemporaryDirectory() as tmp:
-        with open(os.path.join(tmp, "in.case"), "w") as f:
-            f.write(text)
-        r = subprocess.run([GRAVEL, "-in", "in.case", "-log", "none", *extra], cwd=tmp,
-                           capture_output=True, text=True, timeout=300)
-        if r.returncode != 0:
-            print(f"  gravel failed on {name}: {r.stdout[-600:]}{r.stderr[-600:]}")
-            return None
-        frames = read_dump(os.path.join(tmp, "out.dump"))
-    out, step = {}, 0
-    for k, n in enumerate(segments):
-        step += n
-        if step not in frames:
-            print(f"  {name}: no dump at step {step}")
-            return None
-        out[k] = frames[step]
-    return out
-
-
-def worst_error(got, ref):
-    worst, where = 0.0, ""
-    for seg, rows in ref.items():
-        if seg not in got:
-            continue
-        for label, c0 in GROUPS:
-            scale = max(abs(v) for vals in rows.values() for v in vals[c0:c0 + 3])
-            for tag, vals in rows.items():
-                for c in range(c0, c0 + 3):
-                    a, b = got[seg][tag][c], vals[c]
-                    err = abs(a - b) / scale if scale > 0 else abs(a) / ZERO
-                    if err > worst:
-                        worst, where = err, f"segment {seg} atom {tag} {FIELDS[c]}"
-    return worst, where
 
 
 MIX_DECK = """units lj
@@ -311,8 +178,11 @@ def check_refusals():
 def main():
     failed = 0 if check_mixing() else 1
     failed += check_refusals()
-    for name, deck, segs, ref, vin, etol, differs in CASES:
-        got = run(name, deck, segs)
+    table = {c.name: c for c in cases.CASES}
+    for name, vin, etol, differs in TODAY:
+        case = table[name]
+        ref = parse_ref(case.ref)
+        got = run(name, case.deck, case.segments)
         ok = got is not None
         if ok:
             worst, where = worst_error(got, ref)
@@ -326,8 +196,8 @@ def main():
                 ok = ok and eok
         print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}")
         failed += not ok
-        old = run(name, deck, segs[:1], ("-compat", "lammps2021"))
-        d = worst_error(old, ref)[0] if old else float("nan")
+        old = run(name, case.deck, case.segments[:1], ("-compat", "lammps2021"))
+        d = worst_error(old, {0: ref[0]})[0] if old else float("nan")
         ok = old is not None and (d > 1e-4 if differs else d <= TOL)
         print(f"  {name} -compat lammps2021: differs from today's LAMMPS by {d:.3e}")
         print(f"{'PASS' if ok else 'FAIL'} lammps_today_{name}_compat2021_"
