@@ -156,7 +156,7 @@ TEST(set_errors)
 }
 
 /* Temperature as LAMMPS compute temp: sum m v^2 / (3N - 3), lj units. */
-static double temp(const struct gravel *g)
+static double temp(struct gravel *g)
 {
     return 2 * group_ke(g, 0) / (3.0 * g->atoms.n - 3.0);
 }
