@@ -17,6 +17,7 @@
  * not wait on the host more than the neighbor decision requires. */
 #include "comm.h"
 #include "par.h"
+#include "par_restart.h"
 #include "run.h"
 
 #include <math.h>

@@ -49,6 +49,7 @@
 #include "outfile.h"
 #include "pair.h"
 #include "par.h"
+#include "par_restart.h"
 
 enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
@@ -290,18 +291,6 @@ static uint64_t force_fingerprint(const struct gravel *g)
     return h;
 }
 
-uint64_t restart_atoms_fingerprint(const struct gravel *g)
-{
-    const struct atoms *a = &g->atoms;
-    size_t n = (size_t)a->n;
-    uint64_t h = fnv1a(FNV_INIT, &a->n, sizeof a->n);
-#define HASH_FIELD(name, ctype, dev, width, when, life, sect, what)                            \
-    if (sect == FS_ATOMS)                                                                     \
-        h = fnv1a(h, a->name, n * (width) * sizeof(ctype));
-    ATOM_FIELDS(HASH_FIELD)
-#undef HASH_FIELD
-    return h;
-}
 
 /* ---- sections: each writer beside its reader ------------------------------------------
  *
@@ -1359,7 +1348,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
         p->coeff_set = im->coeff_set;
         g->styles.pair = p;
     }
-    im->atoms_hash = restart_atoms_fingerprint(g);
+    im->atoms_hash = atoms_fingerprint(&g->atoms);
     image_free(r->pending);
     r->pending = im;
     r->loading = NULL;
@@ -1488,7 +1477,7 @@ static int list_diff(struct gravel *g, const struct image *im, int n, char *why,
                                   "changed after the last run before write_restart") > 0;
     if (n != im->n)
         return snprintf(why, len, "%d atoms (file: %d)", n, im->n) > 0;
-    if (restart_atoms_fingerprint(g) != im->atoms_hash)
+    if (atoms_fingerprint(&g->atoms) != im->atoms_hash)
         return snprintf(why, len, "per-atom values were changed after read_restart") > 0;
     if (neigh_diff(g, &g->neigh, &im->neigh, why, len))
         return 1;

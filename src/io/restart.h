@@ -18,8 +18,6 @@
 #ifndef GR_RESTART_H
 #define GR_RESTART_H
 
-#include <stdint.h>
-
 #include "state.h"
 
 #define RESTART_FORMAT_VERSION 4u
@@ -57,9 +55,6 @@ int restart_resume(struct gravel *g);
  * setup exchange always rebuilds the list; at 2 the forces come back with
  * par_resume_forces). */
 void restart_adopt_ranks(struct gravel *g);
-/* Hash of every per-atom host array of the atoms section (a file's exact
- * continuation data is valid while it is unchanged). */
-uint64_t restart_atoms_fingerprint(const struct gravel *g);
 
 /* Free restart settings and pending state (clear, destroy). */
 void restart_free(struct gravel *g);

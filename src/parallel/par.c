@@ -17,7 +17,6 @@
 #include "log.h"
 #include "neighbor.h"
 #include "par_hist.h"
-#include "restart.h"
 
 /* ---- state ---------------------------------------------------------------------- */
 
@@ -462,7 +461,7 @@ static void atoms_unpack(struct gravel *g, unsigned char *all, int total, size_t
         save_fix_state(g, extra, total, eb);
         p->tags_at_end = par_tag_set_key(a);
         p->ago_end = ago;
-        p->host_hash = restart_atoms_fingerprint(g);
+        p->host_hash = atoms_fingerprint(&g->atoms);
         p->ended = 1;
     }
     free(extra);

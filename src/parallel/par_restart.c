@@ -12,8 +12,8 @@
 #include "fix.h"
 #include "neighbor.h"
 #include "par.h"
+#include "par_restart.h"
 #include "par_hist.h"
-#include "restart.h"
 
 /* one history value, the device's REAL bytes <-> double */
 static double real_get(const unsigned char *b, size_t rsz, int k)
@@ -131,7 +131,7 @@ int par_list_export(struct gravel *g, struct nbr_state *s, int *exact)
     }
     s->xhold = gr_malloc(g, (3 * (size_t)n + 1) * sizeof(double));
     memcpy(s->xhold, p->xhold_end, 3 * (size_t)n * sizeof(double));
-    *exact = restart_atoms_fingerprint(g) == p->host_hash;
+    *exact = atoms_fingerprint(&g->atoms) == p->host_hash;
     return 1;
 }
 

@@ -178,3 +178,21 @@ const int *atoms_tag_order(struct gravel *g)
     atoms_order_by_tag(a->tag, a->n, a->order);
     return a->order;
 }
+
+uint64_t atoms_fingerprint(const struct atoms *a)
+{
+    uint64_t h = 14695981039346656037ull; /* FNV-1a 64 */
+    size_t n = (size_t)a->n;
+    const unsigned char *c = (const unsigned char *)&a->n;
+    for (size_t k = 0; k < sizeof a->n; k++)
+        h = (h ^ c[k]) * 1099511628211ull;
+#define HASH_FIELD(name, ctype, dev, width, when, life, sect, what)                            \
+    if (sect == FS_ATOMS) {                                                                   \
+        c = (const unsigned char *)a->name;                                                   \
+        for (size_t k = 0; k < n * (width) * sizeof(ctype); k++)                              \
+            h = (h ^ c[k]) * 1099511628211ull;                                                \
+    }
+    ATOM_FIELDS(HASH_FIELD)
+#undef HASH_FIELD
+    return h;
+}

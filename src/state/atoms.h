@@ -35,4 +35,8 @@ void atoms_order_by_tag(const int64_t *tag, int n, int *ord);
 /* Index of the atom with this tag, or -1 (linear scan; callers cache). */
 int atoms_find_tag(const struct atoms *a, int64_t tag);
 
+/* Hash of every per-atom host array of the restart file's atoms section
+ * (a file's exact continuation data is valid while it is unchanged). */
+uint64_t atoms_fingerprint(const struct atoms *a);
+
 #endif
