@@ -1596,6 +1596,19 @@ static void host_list(struct gravel *g, const struct image *im, const struct tag
     s->ago = exact ? im->ago : 0;
 }
 
+/* A fix's written per-atom rows in the order of the n host atoms (row[i]:
+ * written atom i's host row, or -1; atoms not written get zeros); malloc'd. */
+static unsigned char *host_fix_rows(struct gravel *g, const struct fix_saved *fs,
+                                    const int *row, int n)
+{
+    size_t pb = fs->peratom_bytes;
+    unsigned char *buf = gr_calloc(g, (size_t)n * pb + 1, 1);
+    for (int i = 0; i < fs->nrows; i++)
+        if (row[i] >= 0)
+            memcpy(buf + (size_t)row[i] * pb, fs->peratom + (size_t)i * pb, pb);
+    return buf;
+}
+
 /* The fix of a saved state (same ID and style), or NULL with a warning when
  * the file holds state for it. */
 static struct fix *saved_fix(struct gravel *g, const struct fix_saved *fs)
@@ -1700,12 +1713,8 @@ void restart_adopt_ranks(struct gravel *g)
             exact = 0;
             continue;
         }
-        size_t pb = fs->peratom_bytes;
-        unsigned char *buf = gr_calloc(g, (size_t)n * pb + 1, 1);
-        for (int i = 0; i < fs->nrows; i++)
-            if (row[i] >= 0)
-                memcpy(buf + (size_t)row[i] * pb, fs->peratom + (size_t)i * pb, pb);
-        par_adopt_fix_rows(g, f, pb, buf);
+        unsigned char *buf = host_fix_rows(g, fs, row, n);
+        par_adopt_fix_rows(g, f, fs->peratom_bytes, buf);
         free(buf);
     }
     if (im->has_list && n > 0) {
@@ -1772,12 +1781,8 @@ int restart_resume(struct gravel *g)
                 exact = 0;
                 continue;
             }
-            size_t pb = fs->peratom_bytes;
-            unsigned char *buf = gr_calloc(g, (size_t)n * pb + 1, 1);
-            for (int i = 0; i < fs->nrows; i++)
-                if (row[i] >= 0)
-                    memcpy(buf + (size_t)row[i] * pb, fs->peratom + (size_t)i * pb, pb);
-            eng_write(g, f->peratom, 0, (size_t)n * pb, buf);
+            unsigned char *buf = host_fix_rows(g, fs, row, n);
+            eng_write(g, f->peratom, 0, (size_t)n * fs->peratom_bytes, buf);
             free(buf);
         }
     }
