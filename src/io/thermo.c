@@ -633,7 +633,11 @@ static double kinetic_energy(struct gravel *g)
 {
     struct temp_state *t = temp_thermo(g);
     double temp = temp_scalar(g, t);
-    return temp * 0.5 * temp_dof(g, t) * temp_boltz(g);
+    double ke = temp * 0.5 * temp_dof(g, t) * temp_boltz(g);
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i]->style->ke_adjust)
+            ke += g->styles.fix[i]->style->ke_adjust(g, g->styles.fix[i]);
+    return ke;
 }
 
 static double volume(const struct gravel *g)

@@ -30,7 +30,7 @@ void mol_require_atoms(struct gravel *g, const struct molecule *m)
         gr_error(g, "molecule template %s has no atoms (only surface triangles)", m->id);
 }
 
-static void mol_free(struct molecule *m)
+void mol_free(struct molecule *m)
 {
     if (!m)
         return;

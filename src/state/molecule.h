@@ -55,6 +55,8 @@ struct molecule *molecule_find(struct gravel *g, const char *id);
 /* An error when template m has no atoms (a surface-only one). */
 void mol_require_atoms(struct gravel *g, const struct molecule *m);
 void molecules_free(struct gravel *g);
+/* Free one template (one not in the list, e.g. a clump template's). */
+void mol_free(struct molecule *m);
 
 /* LAMMPS Molecule::compute_center / compute_mass / compute_com /
  * compute_inertia (each once; later calls return at once). */

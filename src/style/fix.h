@@ -149,6 +149,9 @@ struct fix_style {
      * groupbit (LAMMPS Fix::dof, e.g. rigid bodies); temperatures subtract
      * the sum over fixes. */
     double (*dof)(struct gravel *g, struct fix *f, unsigned groupbit);
+    /* Optional: added to thermo ke and etotal (LIGGGHTS's fix multisphere:
+     * a body counts 1/2 M vcm^2, not its atoms' 1/2 sum m v^2). */
+    double (*ke_adjust)(struct gravel *g, struct fix *f);
     /* Optional: the magnitude of the uniform acceleration this fix applies
      * to its atoms (fix gravity): the -check accuracy map's free-fall speed. */
     double (*acceleration)(const struct fix *f);

@@ -22,8 +22,10 @@
  * particle that finds no place ends the step ("Less insertions than
  * requested"). Placed particles become atoms with tags max + 1, ..., mask
  * all + the groups of the template, the distribution and this fix, mass
- * 4/3 pi r^3 density, the vel and omega values. Full contract:
- * doc/styles/fix_insert_pack.md. */
+ * 4/3 pi r^3 density, the vel and omega values. A clump (particletemplate/
+ * multisphere) is placed by its centre of mass, turned by `orientation`,
+ * checked sphere by sphere, and becomes its spheres' atoms plus a body of
+ * fix multisphere. Full contract: doc/styles/fix_insert_pack.md. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -35,8 +37,12 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_insert.h"
+#include "fix_particletemplate_multisphere.h"
+#include "fix_rigid_small.h"
 #include "log.h"
+#include "molecule.h"
 #include "region.h"
+#include "rigid_math.h"
 
 #define SEED_OFFSET 12
 
@@ -185,10 +191,23 @@ static int base_keyword(struct gravel *g, struct insert *in, int argc, char **ar
     }
     if (!strcmp(k, "orientation")) {
         arg_need(g, argc, i, 1, k);
-        if (strcmp(argv[i + 1], "template"))
-            gr_error(g, "%s: orientation %s is for non-spherical templates; spheres take "
-                        "orientation template only", who, argv[i + 1]);
-        return 2;
+        const char *s = argv[i + 1];
+        if (!strcmp(s, "random") || !strcmp(s, "template")) {
+            in->quat_random = s[0] == 'r';
+            return 2;
+        }
+        if (strcmp(s, "constant"))
+            gr_error(g, "%s: expecting 'random', template' or 'constant' after keyword "
+                        "'orientation', got '%.64s'", who, s);
+        for (int d = 0; d < 4; d++)
+            in->quat[d] = num(g, argc, argv, i + 2 + d, "orientation constant value");
+        double n2 = in->quat[0] * in->quat[0] + in->quat[1] * in->quat[1] +
+                    in->quat[2] * in->quat[2] + in->quat[3] * in->quat[3];
+        if (fabs(n2 - 1.) > 1e-10)
+            gr_error(g, "%s: quaternion not valid (orientation constant %s %s %s %s is not of "
+                        "unit length)", who, argv[i + 2], argv[i + 3], argv[i + 4], argv[i + 5]);
+        in->quat_random = 0;
+        return 6;
     }
     if (!strcmp(k, "set_property"))
         gr_error(g, "%s: set_property (a per-atom property at insertion) is not supported",
@@ -275,6 +294,7 @@ void insert_create(struct gravel *g, struct fix *f, int argc, char **argv,
     in->ntry_mc = 100000;
     in->warn_region = 1;
     in->check_border = 1;
+    in->quat[0] = 1.0;
     for (int i = 2; i < argc;) {
         int used = base_keyword(g, in, argc, argv, i);
         if (!used && ops->keyword)
@@ -602,6 +622,51 @@ static int overlaps(const struct insert *in, const double x[3], double r)
     return 0;
 }
 
+/* A particle's orientation after its velocity draws: LIGGGHTS's
+ * random_unit_quat from the fix's stream (orientation random; drawn for
+ * spheres too, as LIGGGHTS, though only clumps turn), else the fixed one
+ * (template: identity). */
+static void orientation(struct insert *in, double quat[4])
+{
+    if (!in->quat_random) {
+        memcpy(quat, in->quat, 4 * sizeof(double));
+        return;
+    }
+    double u1 = rng_park_uniform(&in->rng), u2 = rng_park_uniform(&in->rng),
+           u3 = rng_park_uniform(&in->rng);
+    double h1 = sqrt(1. - u1), h2 = sqrt(u1);
+    quat[0] = h1 * sin(2. * M_PI * u2);
+    quat[1] = h1 * cos(2. * M_PI * u2);
+    quat[2] = h2 * sin(2. * M_PI * u3);
+    quat[3] = h2 * cos(2. * M_PI * u3);
+}
+
+/* LIGGGHTS's check_near_set_x_v_omega: a particle is refused when it
+ * overlaps anything near (a clump: when any of its spheres does); placed,
+ * it (each sphere) joins the near list. */
+static int fits(struct gravel *g, struct insert *in, const struct ins_particle *p)
+{
+    const struct mstemplate *c = p->tpl ? p->tpl->ms : NULL;
+    if (!c) {
+        if (overlaps(in, p->x, p->radius))
+            return 0;
+        near_add(g, in, p->x, p->radius);
+        return 1;
+    }
+    double rot[3][3], x[3];
+    rm_quat_to_mat(p->quat, rot);
+    for (int k = 0; k < c->nspheres; k++) {
+        mstemplate_sphere(c, rot, p->x, k, x);
+        if (overlaps(in, x, c->rs[k]))
+            return 0;
+    }
+    for (int k = 0; k < c->nspheres; k++) {
+        mstemplate_sphere(c, rot, p->x, k, x);
+        near_add(g, in, x, c->rs[k]);
+    }
+    return 1;
+}
+
 static void random_velocity(struct insert *in, double v[3])
 {
     for (int d = 0; d < 3; d++)
@@ -648,6 +713,7 @@ static int place(struct gravel *g, struct insert *in, int n, double *vel)
             struct ins_particle *p = in->list + placed;
             if (try_point(g, in, p->radius, p->x, &ntry, maxtry)) {
                 velocity(in, vel + 3 * placed);
+                orientation(in, p->quat);
                 placed++;
             }
         }
@@ -660,15 +726,43 @@ static int place(struct gravel *g, struct insert *in, int n, double *vel)
             if (!try_point(g, in, p->radius, p->x, &ntry, maxtry))
                 break;
             velocity(in, vel + 3 * placed);
-            if (!overlaps(in, p->x, p->radius)) {
-                near_add(g, in, p->x, p->radius);
-                ok = 1;
-            }
+            orientation(in, p->quat);
+            ok = fits(g, in, p);
         }
         if (ok)
             placed++;
     }
     return placed;
+}
+
+/* A placed clump: its spheres become atoms (tags after *tag, mass M/n each,
+ * the velocity vel) and a body of fix multisphere (LIGGGHTS
+ * ParticleToInsertMultisphere::insert). */
+static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle *p,
+                      const double vel[3], int64_t *tag)
+{
+    const struct mstemplate *c = p->tpl->ms;
+    const struct molecule *m = c->mol;
+    struct fix *ms = fix_find_style(g, "multisphere");
+    if (!ms)
+        gr_error(g, "%s %s: Multi-sphere particle inserted: You have to use exactly one fix "
+                    "multisphere.", ((struct insert *)f->data)->ops->who, f->id);
+    struct atoms *a = &g->atoms;
+    double rot[3][3], x[3], xgeom[3];
+    rm_quat_to_mat(p->quat, rot);
+    int first = a->n;
+    int64_t tagprev = *tag;
+    for (int k = 0; k < c->nspheres; k++) {
+        mstemplate_sphere(c, rot, p->x, k, x);
+        int i = atoms_add(g, ++*tag, m->type[k], x, m->radius[k], m->rmass[k]);
+        a->mask[i] = 1u | p->groupbit | f->groupbit;
+        for (int d = 0; d < 3; d++)
+            a->v[3 * i + d] = vel[d];
+    }
+    for (int d = 0; d < 3; d++) /* the geometric centre: rot (center - com) + xcm */
+        xgeom[d] = p->x[d] + rot[d][0] * (m->center[0] - m->com[0]) +
+                   rot[d][1] * (m->center[1] - m->com[1]) + rot[d][2] * (m->center[2] - m->com[2]);
+    rigid_small_add_body(g, ms, m, first, tagprev, xgeom, vel, p->quat);
 }
 
 static int64_t max_tag(const struct gravel *g)
@@ -700,6 +794,20 @@ void insert_init(struct gravel *g, struct fix *f)
     }
     if (f->next_reneighbor > 0 && f->next_reneighbor < g->step)
         gr_error(g, "%s %s: 'start' step can not be before current step", in->ops->who, f->id);
+    for (int i = 0; i < in->dist->n; i++)
+        if (in->dist->tpl[i]->ms) {
+            if (!fix_find_style(g, "multisphere"))
+                gr_error(g, "%s %s: template %s is a clump (particletemplate/multisphere): "
+                            "fix multisphere is required", in->ops->who, f->id,
+                         in->dist->tpl_id[i]);
+            if (in->ops->finalize)
+                gr_error(g, "%s %s: particletemplate/multisphere clumps (template %s) are not "
+                            "supported by this insertion style", in->ops->who, f->id,
+                         in->dist->tpl_id[i]);
+            if (in->omega[0] != 0. || in->omega[1] != 0. || in->omega[2] != 0.)
+                gr_error(g, "%s %s: omega with particletemplate/multisphere clumps is not "
+                            "supported", in->ops->who, f->id);
+        }
     if (in->setup_done)
         return;
     /* FixInsert::setup, once */
@@ -781,12 +889,16 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
     double mass_now = 0;
     for (int k = 0; k < placed; k++) {
         const struct ins_particle *p = in->list + k;
-        int i = atoms_add(g, ++tag, p->type, p->x, p->radius, p->mass);
-        a->mask[i] = 1u | p->groupbit | f->groupbit;
-        for (int d = 0; d < 3; d++) {
-            a->v[3 * i + d] = vel[3 * k + d];
-            if (a->omega)
-                a->omega[3 * i + d] = in->omega[d];
+        if (p->tpl && p->tpl->ms) {
+            add_clump(g, f, p, vel + 3 * k, &tag);
+        } else {
+            int i = atoms_add(g, ++tag, p->type, p->x, p->radius, p->mass);
+            a->mask[i] = 1u | p->groupbit | f->groupbit;
+            for (int d = 0; d < 3; d++) {
+                a->v[3 * i + d] = vel[3 * k + d];
+                if (a->omega)
+                    a->omega[3 * i + d] = in->omega[d];
+            }
         }
         mass_now += p->mass;
     }
@@ -815,12 +927,17 @@ int insert_reserve(struct gravel *g, struct fix *f, bigint nsteps, double *rmax)
     if (next <= g->step || next > last)
         return 0;
     double per = (double)in->ops->reserve(g, in, nsteps) + in->dist->n + 2;
+    int atoms_per = 1; /* a clump inserts its spheres */
+    for (int i = 0; i < in->dist->n; i++)
+        if (in->dist->tpl[i]->ms && in->dist->tpl[i]->ms->nspheres > atoms_per)
+            atoms_per = in->dist->tpl[i]->ms->nspheres;
     bigint steps = in->insert_every > 0 ? (last - next) / in->insert_every + 1 : 1;
     double total = per * (double)steps;
     /* the total is known once the first run's setup has derived it (mass M) */
     if (in->ninsert_exists && in->setup_done &&
         total > in->ninsert - in->ninserted + in->dist->n + 2.0)
         total = in->ninsert - in->ninserted + in->dist->n + 2.0;
+    total *= atoms_per;
     if (!(total < 2e9))
         gr_error(g, "%s %s: up to %g insertions in this run are too many", in->ops->who, f->id,
                  total);

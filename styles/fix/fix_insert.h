@@ -63,6 +63,8 @@ struct insert {
     int check_ol, all_in, exact_number, verbose, setup_done;
     int vstyle;
     double v[3], vfluct[3], omega[3];
+    int quat_random;                /* orientation random (else quat: template = identity) */
+    double quat[4];
     double maxrad;
     /* region (FixInsertPack) */
     char reg_id[GR_NAMELEN];

@@ -177,8 +177,9 @@ int pdist_randomize(struct pdist *d, int ntotal, int exact, struct ins_particle 
             p->type = t->type;
             p->radius = r;
             p->density = dens;
-            p->volume = r * r * r * 4. * M_PI / 3.;
-            p->mass = p->density * p->volume;
+            p->volume = t->ms ? t->volexpect : r * r * r * 4. * M_PI / 3.;
+            p->mass = t->ms ? t->massexpect : p->density * p->volume;
+            p->tpl = t;
             p->groupbit = t->groupbit | d->groupbit;
             p->x[0] = p->x[1] = p->x[2] = 0;
         }

@@ -10,7 +10,9 @@ struct ins_particle {
     int type;
     double radius, density, volume, mass;
     unsigned groupbit;          /* template | distribution (| inserting fix) */
-    double x[3];
+    double x[3];                /* centre (a clump's: its centre of mass) */
+    const struct ptemplate *tpl; /* its template (tpl->ms: a clump) */
+    double quat[4];             /* a clump's orientation */
 };
 
 struct pdist {

@@ -88,7 +88,7 @@ int liggghts_seed(struct gravel *g, const char *s, const char *who)
 
 /* `radius|density STYLE args` at argv[i]; returns the words consumed. */
 static int parse_pdf(struct gravel *g, struct pdf *p, int argc, char **argv, int i,
-                     int is_radius)
+                     int is_radius, const char *who)
 {
     const char *what = argv[i], *s = argv[i + 1];
     if (!strcmp(s, "constant")) {
@@ -96,7 +96,7 @@ static int parse_pdf(struct gravel *g, struct pdf *p, int argc, char **argv, int
         p->style = PDF_CONSTANT;
         p->mu = p->min = p->max = arg_double(g, argv[i + 2], what);
         if (!(p->mu > 0))
-            gr_error(g, WHO ": %s must be > 0, got %s", what, argv[i + 2]);
+            gr_error(g, "%s: %s must be > 0, got %s", who, what, argv[i + 2]);
         return 3;
     }
     int k = i + 2;
@@ -105,96 +105,113 @@ static int parse_pdf(struct gravel *g, struct pdf *p, int argc, char **argv, int
         if (is_radius || (k < argc && (!strcmp(argv[k], "number") || !strcmp(argv[k], "mass")))) {
             arg_need(g, argc, i, 2, what);
             if (!strcmp(argv[k], "mass"))
-                gr_error(g, WHO ": mass distribution not implemented for %s (use number)", s);
+                gr_error(g, "%s: mass distribution not implemented for %s (use number)", who, s);
             if (strcmp(argv[k], "number"))
-                gr_error(g, WHO ": expecting 'mass' or 'number' after '%s %s', got '%.64s'",
+                gr_error(g, "%s: expecting 'mass' or 'number' after '%s %s', got '%.64s'", who,
                          what, s, argv[k]);
             k++;
         }
         if (k + 1 >= argc)
-            gr_error(g, WHO ": not enough arguments for %s %s", what, s);
+            gr_error(g, "%s: not enough arguments for %s %s", who, what, s);
         double a = arg_double(g, argv[k], what), b = arg_double(g, argv[k + 1], what);
         if (!strcmp(s, "uniform")) {
             if (!(a > 0 && b > 0 && a < b))
-                gr_error(g, WHO ": illegal min or max value for %s (%s %s: need 0 < min < max)",
+                gr_error(g, "%s: illegal min or max value for %s (%s %s: need 0 < min < max)", who,
                          what, argv[k], argv[k + 1]);
             p->style = PDF_UNIFORM;
             p->min = a, p->max = b;
             p->mu = 0.5 * (a + b);
         } else if (!strcmp(s, "gaussian")) {
             if (!(a > 0))
-                gr_error(g, WHO ": illegal mu value for %s: %s", what, argv[k]);
+                gr_error(g, "%s: illegal mu value for %s: %s", who, what, argv[k]);
             if (!(b > 0))
-                gr_error(g, WHO ": illegal sigma value for %s: %s", what, argv[k + 1]);
+                gr_error(g, "%s: illegal sigma value for %s: %s", who, what, argv[k + 1]);
             p->style = PDF_GAUSSIAN;
             p->mu = a, p->sigma = b;
             p->min = a - 3 * b, p->max = a + 3 * b;
             if (p->min < 0)
-                gr_error(g, WHO ": Probablity distribution: mu-3*sigma < 0, please increase mu "
-                            "or decrease sigma (%s %s %s)", what, argv[k], argv[k + 1]);
+                gr_error(g, "%s: Probablity distribution: mu-3*sigma < 0, please increase mu "
+                            "or decrease sigma (%s %s %s)", who, what, argv[k], argv[k + 1]);
         } else {
             if (!(b > 0))
-                gr_error(g, WHO ": illegal sigma value for %s: %s", what, argv[k + 1]);
+                gr_error(g, "%s: illegal sigma value for %s: %s", who, what, argv[k + 1]);
             p->style = PDF_LOGNORMAL;
             p->mu = a, p->sigma = b;
             p->min = exp(a - 3 * b), p->max = exp(a + 3 * b);
         }
         return k + 2 - i;
     }
-    gr_error(g, WHO ": invalid %s random style '%.64s' (constant, uniform, gaussian, lognormal)",
+    gr_error(g, "%s: invalid %s random style '%.64s' (constant, uniform, gaussian, lognormal)", who,
              what, s);
 }
 
-static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+int ptemplate_keyword(struct gravel *g, struct ptemplate *t, int argc, char **argv, int i,
+                      const char *who)
+{
+    const char *k = argv[i];
+    if (!strcmp(k, "atom_type")) {
+        arg_need(g, argc, i, 1, k);
+        t->type = arg_int(g, argv[i + 1], "atom_type");
+        if (t->type < 1)
+            gr_error(g, "%s: invalid atom type (must be >=1), got %s", who, argv[i + 1]);
+        return 2;
+    }
+    if (!strcmp(k, "radius") || !strcmp(k, "density")) {
+        arg_need(g, argc, i, 2, k);
+        int isr = k[0] == 'r';
+        int n = parse_pdf(g, isr ? &t->radius : &t->density, argc, argv, i, isr, who);
+        if (isr)
+            t->have_radius = 1;
+        else
+            t->have_density = 1;
+        return n;
+    }
+    if (!strcmp(k, "volume_limit")) {
+        arg_need(g, argc, i, 1, k);
+        t->vol_limit = arg_double(g, argv[i + 1], k);
+        if (!(t->vol_limit > 0))
+            gr_error(g, "%s: volume_limit > 0 required, got %s", who, argv[i + 1]);
+        return 2;
+    }
+    if (!strcmp(k, "relative")) {
+        arg_need(g, argc, i, 1, k);
+        if (arg_yesno(g, argv[i + 1], k))
+            gr_error(g, "%s: relative yes (radii relative to a reference) is not "
+                        "supported: no command here reads relative radii", who);
+        return 2;
+    }
+    return 0;
+}
+
+void ptemplate_start(struct gravel *g, struct fix *f, struct ptemplate *t, int argc, char **argv,
+                     const char *who)
 {
     if (g->dom.dimension != 3)
-        gr_error(g, WHO ": this fix is for 3D simulations only");
+        gr_error(g, "%s: this fix is for 3D simulations only", who);
     if (argc < 1)
-        gr_error(g, WHO ": not enough arguments (expected seed keyword values ...)");
-    struct ptemplate *t = gr_calloc(g, 1, sizeof *t);
-    f->data = t;
-    t->seed = liggghts_seed(g, argv[0], WHO);
+        gr_error(g, "%s: not enough arguments (expected seed keyword values ...)", who);
+    t->seed = liggghts_seed(g, argv[0], who);
     rng_park_init(&t->rng, t->seed);
     t->type = 1;
     t->vol_limit = 1e-12;
     t->groupbit = f->groupbit;
-    int have_r = 0, have_d = 0;
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    struct ptemplate *t = gr_calloc(g, 1, sizeof *t);
+    f->data = t;
+    ptemplate_start(g, f, t, argc, argv, WHO);
     for (int i = 1; i < argc;) {
-        const char *k = argv[i];
-        if (!strcmp(k, "atom_type")) {
-            arg_need(g, argc, i, 1, k);
-            t->type = arg_int(g, argv[i + 1], "atom_type");
-            if (t->type < 1)
-                gr_error(g, WHO ": invalid atom type (must be >=1), got %s", argv[i + 1]);
-            i += 2;
-        } else if (!strcmp(k, "radius") || !strcmp(k, "density")) {
-            arg_need(g, argc, i, 2, k);
-            int isr = k[0] == 'r';
-            i += parse_pdf(g, isr ? &t->radius : &t->density, argc, argv, i, isr);
-            if (isr)
-                have_r = 1;
-            else
-                have_d = 1;
-        } else if (!strcmp(k, "volume_limit")) {
-            arg_need(g, argc, i, 1, k);
-            t->vol_limit = arg_double(g, argv[i + 1], k);
-            if (!(t->vol_limit > 0))
-                gr_error(g, WHO ": volume_limit > 0 required, got %s", argv[i + 1]);
-            i += 2;
-        } else if (!strcmp(k, "relative")) {
-            arg_need(g, argc, i, 1, k);
-            if (arg_yesno(g, argv[i + 1], k))
-                gr_error(g, WHO ": relative yes (radii relative to a reference) is not "
-                            "supported: no command here reads relative radii");
-            i += 2;
-        } else {
+        int n = ptemplate_keyword(g, t, argc, argv, i, WHO);
+        if (!n)
             gr_error(g, WHO ": unrecognized keyword '%.64s' (atom_type, density, radius, "
-                        "volume_limit, relative)", k);
-        }
+                        "volume_limit, relative)", argv[i]);
+        i += n;
     }
-    if (!have_d)
+    if (!t->have_density)
         gr_error(g, WHO ": have to define 'density'");
-    if (!have_r)
+    if (!t->have_radius)
         gr_error(g, WHO ": have to define 'radius'");
     if (t->type > g->atoms.ntypes)
         gr_error(g, WHO ": atom_type %d is larger than the number of atom types %d", t->type,
@@ -208,7 +225,8 @@ struct ptemplate *ptemplate_of(struct gravel *g, const char *id, const char *who
     struct fix *f = fix_find(g, id);
     if (!f)
         gr_error(g, "%s: invalid ID for fix particletemplate provided: %.64s", who, id);
-    if (strcmp(f->style->name, "particletemplate/sphere"))
+    if (strcmp(f->style->name, "particletemplate/sphere") &&
+        strcmp(f->style->name, "particletemplate/multisphere"))
         gr_error(g, "%s: fix %s is not of type particletemplate (it is %s)", who, id,
                  f->style->name);
     return f->data;
@@ -225,12 +243,17 @@ double ptemplate_volexpect(struct gravel *g, const struct ptemplate *t, const ch
 
 void ptemplate_draw(struct ptemplate *t, double *radius, double *density)
 {
+    if (t->ms) { /* a clump: no draw (LIGGGHTS FixTemplateMultiplespheres) */
+        *radius = t->radius.mu;
+        *density = t->density.mu;
+        return;
+    }
     *radius = pdf_sample(&t->radius, &t->rng);
     *density = pdf_sample(&t->density, &t->rng);
 }
 
 /* Restart files carry the stream (LIGGGHTS writes its state too). */
-static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+size_t ptemplate_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
     (void)g;
     const struct ptemplate *t = f->data;
@@ -239,7 +262,7 @@ static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
     return sizeof t->rng;
 }
 
-static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+void ptemplate_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct ptemplate *t = f->data;
     if (len != sizeof t->rng)
@@ -251,6 +274,6 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
 const struct fix_style fix_style_particletemplate_sphere = {
     .name = "particletemplate/sphere",
     .create = create,
-    .write_restart = write_restart,
-    .read_restart = read_restart,
+    .write_restart = ptemplate_write_restart,
+    .read_restart = ptemplate_read_restart,
 };

@@ -786,7 +786,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
             if (a->n - first != natom)
                 gr_error(g, "fix pour %s: a rigid molecule was inserted partly outside the box "
                             "(step %lld)", f->id, (long long)g->step);
-            rigid_small_add_body(g, p->rigid, first, maxtag, c, vnew, quat);
+            rigid_small_add_body(g, p->rigid, p->mol, first, maxtag, c, vnew, quat);
         }
         maxtag += natom;
         if (a->molecule_flag)

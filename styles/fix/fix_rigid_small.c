@@ -40,6 +40,15 @@
  * freedom (temperatures): a body wholly in the temperature group keeps 6
  * (3d; 5 if linear) or 3 (2d) of its atoms' 3 + 3 (finite spheres) each.
  *
+ * `fix ID group multisphere` (LIGGGHTS's clumps, create_multisphere) is this
+ * fix with no body at first: the insertion fixes add one per clump of a
+ * particletemplate/multisphere template (rigid_small_add_body), bodies keep
+ * the template's mass and inertia (no reinit), their atoms (masses M/n) get
+ * the body ID as molecule ID and the group ID_clumps (intra-body pairs
+ * excluded from the neighbor lists), fix gravity's torque about xcm is
+ * removed (gravity at the centre of mass, LIGGGHTS), no degree of freedom
+ * is removed and thermo ke counts 1/2 M vcm^2 per body (ke_adjust).
+ *
  * Not supported (clear errors): langevin, infile, the custom body ID style,
  * thermostats/barostats of rigid/n?t/small; write_restart of a run with
  * bodies. */
@@ -55,6 +64,7 @@
 #include "fix.h"
 #include "fix_gravity.h"
 #include "fix_rigid_small.h"
+#include "group.h"
 #include "log.h"
 #include "molecule.h"
 #include "rigid_math.h"
@@ -80,6 +90,10 @@ struct member {
 
 struct rigid {
     struct molecule *mol;
+    int ms;                 /* fix multisphere: bodies only from the insertion fixes */
+    unsigned member_bits;   /* mask bits of inserted members (multisphere: its clump group) */
+    int gcorr;              /* multisphere: fix gravity acts at the bodies' centres of mass */
+    double gacc[3];         /* its acceleration */
     char gravity_id[GR_NAMELEN];
     double gvec[3];
     int reinit, extended, setupflag, mapped;
@@ -304,6 +318,74 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     double rsqfar = 0;
     gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
     (void)rsqfar;
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->sources[f->nsources++] = "fix_rigid_small.cl";
+    f->needs = NEED_ROTATION;
+}
+
+/* `fix ID group multisphere [allow_group_and_set yes|no] [allow_heatsource
+ * no]`: LIGGGHTS's clump integrator as this fix's bodies. It starts with no
+ * body; fix insert/pack, insert/stream and insert/rate/region add one per
+ * particletemplate/multisphere clump they place (rigid_small_add_body).
+ * The bodies keep the template's mass and inertia (no recomputation at a
+ * run's start), their atoms get the body's ID as molecule ID and the group
+ * ID_clumps, and pairs within one body are excluded from the neighbor lists
+ * (LIGGGHTS: neigh_modify exclude molecule). */
+static void create_multisphere(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    const char *who = "fix multisphere";
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (g->styles.fix[i] != f && !strcmp(g->styles.fix[i]->style->name, "multisphere"))
+            gr_error(g, "%s %s: only one fix multisphere at a time is allowed (%s exists)", who,
+                     f->id, g->styles.fix[i]->id);
+    if (g->dom.dimension != 3)
+        gr_error(g, "%s: only 3d simulations are supported", who);
+    for (int i = 0; i < argc; i += 2) {
+        const char *k = argv[i];
+        if (!strcmp(k, "allow_group_and_set") || !strcmp(k, "allow_heatsource")) {
+            arg_need(g, argc, i, 1, k);
+            if (arg_yesno(g, argv[i + 1], k) && k[6] == 'h')
+                gr_error(g, "%s: allow_heatsource yes (heat sources in clumps) is not "
+                            "supported", who);
+        } else if (!strcmp(k, "CAddRhoFluid")) {
+            gr_error(g, "%s: keyword CAddRhoFluid (added fluid mass, CFD coupling) is not "
+                        "supported", who);
+        } else {
+            gr_error(g, "%s: unknown keyword '%.64s' (allow_group_and_set, allow_heatsource)",
+                     who, k);
+        }
+    }
+    struct rigid *r = gr_calloc(g, 1, sizeof *r);
+    f->data = r;
+    r->ms = 1;
+    r->reinit = 0;
+    struct atoms *a = &g->atoms;
+    if (!a->molecule_flag) {
+        for (int i = 0; i < a->n; i++)
+            a->mol[i] = 0;
+        a->molecule_flag = 1;
+    }
+    /* thermo ke as LIGGGHTS: 1/2 sum m v^2 of the atoms of each step (as
+     * atom_style granular; the bodies remove no degree of freedom) */
+    g->thermo.temp.dynamic = 1;
+    g->thermo.temp.extra_set = 1;
+    g->thermo.temp.extra_dof = 0;
+        char name[GR_NAMELEN + 8];
+    snprintf(name, sizeof name, "%s_clumps", f->id);
+    int grp = group_create(g, name);
+    r->member_bits = group_bit(grp);
+    struct neigh_settings *ns = &g->neigh;
+    int k;
+    for (k = 0; k < ns->nexclude_mol; k++)
+        if (ns->exclude_mol[k][0] == grp && ns->exclude_mol[k][1] == 1)
+            break;
+    if (k == ns->nexclude_mol) {
+        if (ns->nexclude_mol >= 16)
+            gr_error(g, "%s: too many neigh_modify exclusions (at most 16 of each kind)", who);
+        ns->exclude_mol[k][0] = grp;
+        ns->exclude_mol[k][1] = 1;
+        ns->nexclude_mol++;
+    }
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     f->sources[f->nsources++] = "fix_rigid_small.cl";
     f->needs = NEED_ROTATION;
@@ -673,6 +755,14 @@ static void forces_and_torques(struct gravel *g, struct fix *f, int gravity)
         b->torque[0] += dy * fi[2] - dz * fi[1];
         b->torque[1] += dz * fi[0] - dx * fi[2];
         b->torque[2] += dx * fi[1] - dy * fi[0];
+        if (r->gcorr) { /* remove the torque of the members' gravity m g (m = M/n) */
+            double mg[3], w = b->mass / b->natoms;
+            for (int q = 0; q < 3; q++)
+                mg[q] = w * r->gacc[q];
+            b->torque[0] -= dy * mg[2] - dz * mg[1];
+            b->torque[1] -= dz * mg[0] - dx * mg[2];
+            b->torque[2] -= dx * mg[1] - dy * mg[0];
+        }
     }
     if (ext)
         for (int j = 0; j < r->nmem; j++) {
@@ -724,6 +814,24 @@ static void init(struct gravel *g, struct fix *f)
             gr_warn(g, "fix nve or nve/sphere also integrates atoms of the rigid bodies of fix "
                        "%s", f->id);
     }
+    if (r->ms) {
+        gr_warn(g, "Energy calculated for multisphere particles is currently not correct");
+        /* LIGGGHTS applies gravity to a clump at its centre of mass: the members
+         * (masses M/n at the sphere centres) get the force, the torque that
+         * puts about the body's centre of mass is taken out again */
+        r->gcorr = 0;
+        for (int i = 0; i < g->styles.nfix; i++) {
+            struct fix *o = g->styles.fix[i];
+            if (strcmp(o->style->name, "gravity"))
+                continue;
+            if (r->gcorr)
+                gr_error(g, "fix multisphere %s: only one fix gravity supported", f->id);
+            if (o->groupbit != 1u)
+                gr_error(g, "fix multisphere %s: fix gravity %s must act on group all (its "
+                            "clumps' atoms)", f->id, o->id);
+            r->gcorr = fix_gravity_vector(o, r->gacc);
+        }
+    }
     r->k_gather = eng_kernel(g, "rigid_gather");
     r->k_scatter = eng_kernel(g, "rigid_scatter");
     r->dcap = 0; /* device buffers of an earlier run: regrown at the first map */
@@ -738,7 +846,7 @@ static void init(struct gravel *g, struct fix *f)
     r->dtv = g->dt;
     r->dtf = 0.5 * g->dt;
     r->dtq = 0.5 * g->dt;
-    if (r->nbody && (r->reinit || !r->setupflag))
+    if (r->nbody && !r->ms && (r->reinit || !r->setupflag))
         setup_bodies(g, r);
     r->setupflag = 1;
     r->mapped = 0;
@@ -797,11 +905,11 @@ static void final_integrate(struct gravel *g, struct fix *f)
     set_xv(g, f, 0);
 }
 
-void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t tagprev,
-                          const double xgeom[3], const double vcm[3], const double quat[4])
+void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
+                          int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                          const double quat[4])
 {
     struct rigid *r = f->data;
-    const struct molecule *mol = r->mol;
     struct atoms *a = &g->atoms;
     int body = r->nbody;
     struct rbody *b = new_body(g, r);
@@ -815,6 +923,9 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t ta
             m->displace[q] = mol->dxbody[3 * k + q];
             m->x[q] = a->x[3 * i + q];
         }
+        a->mask[i] |= r->member_bits;
+        if (r->ms)
+            a->mol[i] = body + 1; /* LIGGGHTS: the body's ID */
     }
     if (mol->radius)
         r->extended = 1;
@@ -844,6 +955,8 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t ta
 static double dof(struct gravel *g, struct fix *f, unsigned groupbit)
 {
     struct rigid *r = f->data;
+    if (r->ms) /* LIGGGHTS FixMultisphere::dof (its warning: init) */
+        return 0;
     if (!r->setupflag) {
         if (r->nbody)
             gr_warn(g, "Cannot count rigid body degrees-of-freedom before bodies are fully "
@@ -878,6 +991,25 @@ static double dof(struct gravel *g, struct fix *f, unsigned groupbit)
     }
     free(c);
     return n;
+}
+
+/* LIGGGHTS's thermo ke of clumps (Multisphere::extract_ke): 1/2 M vcm^2 per
+ * body in place of its atoms' 1/2 sum m v^2 (the velocities set_xv wrote). */
+static double ke_adjust(struct gravel *g, struct fix *f)
+{
+    (void)g;
+    const struct rigid *r = f->data;
+    double d = 0;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        const double *v = r->b[ib].vcm;
+        d += 0.5 * r->b[ib].mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    for (int k = 0; k < r->nmem && r->mv; k++) {
+        const double *v = r->mv + 3 * k;
+        const struct rbody *b = &r->b[r->m[k].body];
+        d -= 0.5 * (b->mass / b->natoms) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    return d;
 }
 
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
@@ -927,17 +1059,22 @@ static void destroy(struct fix *f)
     free(r);
 }
 
+/* the hooks fix rigid/small and fix multisphere share */
+#define RIGID_HOOKS                                                                          \
+    .flags = FIX_STORES_IDS, .init = init, .setup = setup,                                   \
+    .initial_integrate = initial_integrate, .final_integrate = final_integrate,              \
+    .post_neighbor = post_neighbor, .dof = dof, .write_restart = write_restart,              \
+    .read_restart = read_restart, .destroy = destroy
+
 const struct fix_style fix_style_rigid_small = {
     .name = "rigid/small",
-    .flags = FIX_STORES_IDS,
     .create = create,
-    .init = init,
-    .setup = setup,
-    .initial_integrate = initial_integrate,
-    .final_integrate = final_integrate,
-    .post_neighbor = post_neighbor,
-    .dof = dof,
-    .write_restart = write_restart,
-    .read_restart = read_restart,
-    .destroy = destroy,
+    RIGID_HOOKS,
+};
+
+const struct fix_style fix_style_multisphere = {
+    .name = "multisphere",
+    .create = create_multisphere,
+    .ke_adjust = ke_adjust,
+    RIGID_HOOKS,
 };

@@ -11,10 +11,14 @@ struct molecule;
 /* The `mol` template of a fix rigid/small (NULL without one, or for other
  * fixes). */
 struct molecule *rigid_small_template(const struct fix *f);
-/* A new body of template `m`: the host atoms first .. first + m->natoms - 1
- * (tags tagprev + 1 ...), inserted with the template's geometric centre at
- * xgeom, rotated by quat about it, moving with vcm (LAMMPS set_molecule). */
-void rigid_small_add_body(struct gravel *g, struct fix *f, int first, int64_t tagprev,
-                          const double xgeom[3], const double vcm[3], const double quat[4]);
+/* A new body of template `mol` for fix f (rigid/small or multisphere): the
+ * host atoms first .. first + mol->natoms - 1 (tags tagprev + 1 ...),
+ * inserted with the template's geometric centre at xgeom, rotated by quat
+ * about it, moving with vcm (LAMMPS set_molecule). Its mass, centre of mass
+ * and principal moments are the template's. fix multisphere also gives the
+ * atoms the body's ID as molecule ID and its clump group. */
+void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
+                          int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                          const double quat[4]);
 
 #endif
