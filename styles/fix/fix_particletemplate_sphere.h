@@ -45,7 +45,7 @@ void ptemplate_start(struct gravel *g, struct fix *f, struct ptemplate *t, int a
 int ptemplate_keyword(struct gravel *g, struct ptemplate *t, int argc, char **argv, int i,
                       const char *who);
 /* The template of fix `id`, or an error naming `who` when there is no such
- * fix or it is not a particletemplate/sphere. */
+ * fix or it is not a particletemplate/sphere or /multisphere. */
 struct ptemplate *ptemplate_of(struct gravel *g, const char *id, const char *who);
 /* Expected particle volume; error when below volume_limit (as LIGGGHTS). */
 double ptemplate_volexpect(struct gravel *g, const struct ptemplate *t, const char *id);
