@@ -29,7 +29,13 @@
    the tensor's yz: the same deck with LIGGGHTS 3.8.0's printed mass and tensor given
    (`mass ... inertia_tensor ... use_volume`) has every KinEng row to step 40000 within
    REL_380 of LIGGGHTS's.
-5. Bad commands stop with a message naming the script line.
+5. tests/reference/liggghts_multisphere/rate.in: 12 two-sphere clumps inserted by
+   insert/rate/region with `orientation random` fall onto a plane and onto each other:
+   the same insertions as `liggghts` (committed rate.liggghts.log), every atom at step 600
+   where LIGGGHTS put it (committed rate_600.vtk, ABS_X6: the random quaternions drawn
+   as LIGGGHTS's), KinEng rows equal to every digit until the clumps land (16000), then
+   within REL_RATE.
+6. Bad commands stop with a message naming the script line.
 
 --update reruns `liggghts` on the tutorial and rewrites the committed log and dumps.
 One PASS/FAIL line per case; SKIP when the tutorial is not installed."""
@@ -59,6 +65,8 @@ ABS_Z = 1.5e-3      # clump heights after contact, m (clumps ~ 0.03 m across)
 REL_BOUNCE = 2e-3   # KinEng rows of the first bounces (measured 7e-4)
 REL_KE_MEAN = 0.03  # last-half mean KinEng (measured 0.5 %)
 REL_TS1 = 0.05      # last-half mean f_ts[1] (measured 2.9 %: the atoms' density)
+ABS_X6 = 1e-6      # positions LIGGGHTS writes with 6 digits (|x| < 0.25 m)
+REL_RATE = 5e-3     # rate.in KinEng rows after the clumps land (measured 1.5e-3)
 REL_380 = 3e-5      # KinEng rows with LIGGGHTS 3.8.0's tensor given (measured 1.1e-5: its
                     # 7 printed digits)
 
@@ -303,6 +311,36 @@ def check_tutorial():
           "difference %.2e m\n  %s" % (worst, "\n  ".join(lines)))
 
 
+def check_rate():
+    """rate.in: 12 two-sphere clumps by insert/rate/region with orientation random."""
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "rate.in"), tmp)
+        os.makedirs(os.path.join(tmp, "post"))
+        out = run_gravel(tmp, "rate.in")
+        p = os.path.join(tmp, "post", "r_600.vtk")
+        got = vtk_arrays(p) if os.path.exists(p) else None
+    ref_text = open(os.path.join(REF, "rate.liggghts.log")).read()
+    ref = vtk_arrays(os.path.join(REF, "rate_600.vtk"))
+    rows, qrows = thermo(out.stdout), thermo(ref_text)
+    pat = r"inserted (\d+) particle templates \(mass (\S+)\) at step (\d+)"
+    ins, qins = re.findall(pat, out.stdout), re.findall(pat, ref_text)
+    dx = math.inf
+    if got and len(got["id"]) == len(ref["id"]) == 24:
+        pos = {int(t): got["x"][3 * k:3 * k + 3] for k, t in enumerate(got["id"])}
+        dx = max(abs(a - b) for k, t in enumerate(ref["id"])
+                 for a, b in zip(pos.get(int(t), [math.inf] * 3), ref["x"][3 * k:3 * k + 3]))
+    fall = [(r, q) for r, q in zip(rows, qrows) if int(q[0]) <= 16000]
+    rel = [abs(float(r[2]) / float(q[2]) - 1) for r, q in zip(rows, qrows) if float(q[2])]
+    ok = (ins == qins and len(ins) == 2 and len(rows) == len(qrows) == 31 and dx <= ABS_X6 and
+          all(r == q for r, q in fall) and max(rel) <= REL_RATE)
+    report(ok, "liggghts_multisphere_rate_random",
+           "insertions %s (liggghts %s), %d rows (%d), positions at step 600 within %g, KinEng "
+           "within %g" % (ins, qins, len(rows), len(qrows), dx, max(rel, default=-1)))
+    print("  12 clumps in 2 insertions as LIGGGHTS, their atoms at step 600 within %.1e m of "
+          "its (6 printed digits); KinEng rows equal to step 16000, within %.1e to 30000"
+          % (dx, max(rel, default=-1)))
+
+
 def stage_file(tmp):
     open(os.path.join(tmp, "s.txt"), "w").write("# x y z r\n0 0 0 1\n\n1.5 0 0 1\n")
 
@@ -349,6 +387,13 @@ BAD = [("no_multisphere",
 
 def update():
     with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "rate.in"), tmp)
+        os.makedirs(os.path.join(tmp, "post"))
+        out = subprocess.run(["liggghts", "-in", "rate.in"], cwd=tmp, check=True,
+                             capture_output=True, text=True, timeout=1200)
+        open(os.path.join(REF, "rate.liggghts.log"), "w").write(out.stdout)
+        shutil.copy(os.path.join(tmp, "post", "r_600.vtk"), os.path.join(REF, "rate_600.vtk"))
+    with tempfile.TemporaryDirectory() as tmp:
         stage(tmp)
         subprocess.run(["liggghts", "-in", "in.multisphere"], cwd=tmp, check=True,
                        capture_output=True, timeout=1200)
@@ -364,6 +409,7 @@ if __name__ == "__main__":
         update()
     check_analytic()
     check_rigid()
+    check_rate()
     check_tutorial()
     if os.path.isdir(TUTORIAL):
         check_tensor380()
