@@ -45,12 +45,13 @@
     Y(M, recf) Y(M, rect) Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup)          \
     Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(POS_LO, xlo)
 
-/* pair_gather: one work-item per particle, then the fused post_force and
- * final_integrate ops [first, first + npost + nfinal); recq / heatflow as
- * pair_contacts' */
+/* pair_gather: one work-item per particle, then the fused post_force,
+ * final_integrate and end_of_step ops [first, first + npost + nfinal)
+ * (nfinal counts both of the last two); store: the fused fix's per-atom
+ * store (f when none); recq / heatflow as pair_contacts' */
 #define KARGS_pair_gather(X, Y)                                                                \
     X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
-    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, v) Y(M, omega) Y(CM, rmass)           \
+    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega) Y(CM, rmass) \
     Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look)             \
     Y(PART, atom_step) Y(POS_LO, xlo)
 

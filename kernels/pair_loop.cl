@@ -149,9 +149,10 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 
 /* f_i (and torque_i) = the sum of i's incidence records in row order;
  * written, not added (this also clears the force of the step). Then the
- * fused post_force ops [first, first + npost) and final_integrate ops
- * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
- * change f, torque, v and omega; with look, the next step's opening
+ * fused post_force ops [first, first + npost) and final_integrate and
+ * end_of_step ops [first + npost, first + npost + nfinal) of
+ * kernels/fused.cl, which may change f, torque, v and omega (and the fused
+ * fix's store); with look, the next step's opening
  * (kernels/atom_step.cl) on the state in registers. */
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
 __kernel void pair_gather(KA_PARAMS(pair_gather))
@@ -187,12 +188,12 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
         at.r = radius[i];
         at.type = type[i];
         at.mask = mask[i];
-        fused_apply(&at, ops, first, npost + nfinal, prm);
+        at.x = vload3(i, x); /* read by drag's ops and the look-ahead */
+        at.xl = POS_LOAD_LO(i);
+        fused_apply(&at, ops, first, npost + nfinal, prm, store, i);
         fs = at.f;
         ts = at.tq;
         if (look) { /* atom_step stores v and omega after its own ops */
-            at.x = vload3(i, x);
-            at.xl = POS_LOAD_LO(i);
             if (ninit == 0 && nfinal > 0) {
                 vstore3(at.v, i, v);
 #ifdef HAS_ROTATION

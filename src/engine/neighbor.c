@@ -137,7 +137,7 @@ void nbr_quiet_reset(struct gravel *g)
 {
     const struct nbr_list *l = &get(g)->list;
     if (l->quiet && l->ncontact > 0)
-        eng_fill_zero(g, l->quiet, ((size_t)l->ncontact + 3) / 4 * 4); /* capacity >= n + 64 */
+        eng_fill_zero(g, l->quiet, ((size_t)l->ncontact + 3) / 4 * 4);
 }
 
 
@@ -286,7 +286,8 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
         l->ci = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact owners");
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
         l->cslot = eng_alloc(g, b->cap_contact * 2 * sizeof(cl_int), "contact incidences");
-        l->quiet = eng_alloc(g, b->cap_contact, "contact quiet flags");
+        /* whole words: nbr_quiet_reset fills 4 bytes at a time */
+        l->quiet = eng_alloc(g, (b->cap_contact + 3) / 4 * 4, "contact quiet flags");
         if (e->history)
             l->shear = eng_alloc(g, b->cap_contact * (size_t)e->hist_n * e->rsz, "contact history");
     }
