@@ -29,7 +29,7 @@ static inline void atom_step(const int i, struct fused_atom *at, KA_PARAMS(atom_
                              __global const REAL *prm POS_LO_PARAM)
 {
     if (ninit > 0) {
-        fused_apply(at, ops, 0, ninit, prm);
+        fused_apply(at, ops, 0, ninit, prm, (__global REAL *)0, i); /* no initial op keeps a store */
         vstore3(at->x, i, x);
         POS_STORE_LO(at->xl, i);
         vstore3(at->v, i, v);

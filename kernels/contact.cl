@@ -335,7 +335,9 @@ static inline int contact_gate(const int kind, const int i, const struct contact
                          ? s->rgiven * s->rgiven
                          : dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;
     if (kind == CONTACT_PAIR) {
-        if (s->gated) { /* cohesion reaches beyond contact: every listed pair */
+        if (s->gated) { /* cohesion reaches beyond contact: every pair within reach */
+            if (rsq >= s->reach * s->reach)
+                return 0;
             *k = contact_build(kind, i, s, pj, a);
             contact_refine(k, s->del_lo);
             return 1;

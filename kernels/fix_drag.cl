@@ -3,22 +3,7 @@
  * Taylor-Green vortex (000 eq. 6.1-6.3). Host side and the update schemes:
  * styles/fix/fix_drag.c. */
 
-/* Fluid velocity at x. flow 0: (p0, p1, p2); flow 1: Taylor-Green with
- * amplitude A = p0 and wave number a = p1:
- *   u =   A cos(a X) sin(a Y) sin(a Z)
- *   v =   A sin(a X) cos(a Y) sin(a Z)      X = x + pi/(2a), ...
- *   w = -2A sin(a X) sin(a Y) cos(a Z)                                    */
-static inline REAL3 drag_flow(const REAL3 x, const int flow, const REAL p0, const REAL p1,
-                              const REAL p2)
-{
-    if (flow == 0)
-        return (REAL3)(p0, p1, p2);
-    const REAL sh = (REAL)M_PI_2 / p1;
-    const REAL X = p1 * (x.x + sh), Y = p1 * (x.y + sh), Z = p1 * (x.z + sh);
-    REAL cx, cy, cz;
-    const REAL sx = sincos(X, &cx), sy = sincos(Y, &cy), sz = sincos(Z, &cz);
-    return (REAL3)(p0 * cx * sy * sz, p0 * sx * cy * sz, (REAL)-2 * p0 * sx * sy * cz);
-}
+/* The flow and the drag laws: kernels/drag_law.cl */
 
 __kernel void drag_explicit(const int n, const uint groupbit, __global const uint *mask,
                             __global const REAL *x, __global const REAL *v, __global REAL *f,
@@ -30,9 +15,8 @@ __kernel void drag_explicit(const int n, const uint groupbit, __global const uin
     if (i >= n || !(mask[i] & groupbit))
         return;
     (void)rmass;
-    const REAL beta = (REAL)6 * (REAL)M_PI * mu * radius[i];
     const REAL3 uf = drag_flow(vload3(i, x), flow, p0, p1, p2);
-    vstore3(vload3(i, f) + beta * (uf - vload3(i, v)), i, f);
+    vstore3(drag_explicit_force(vload3(i, f), uf, vload3(i, v), radius[i], mu), i, f);
 }
 
 /* Effective drag for one half kick of length h (implicit or exact update):
@@ -51,8 +35,6 @@ __kernel void drag_implicit(const int n, const uint groupbit, __global const uin
     const int i = get_global_id(0);
     if (i >= n || !(mask[i] & groupbit))
         return;
-    const REAL m = rmass[i];
-    const REAL tau = m / ((REAL)6 * (REAL)M_PI * mu * radius[i]);
     REAL3 uf;
     if (replace) {
         uf = vload3(2 * i + 1, dstore);
@@ -60,17 +42,10 @@ __kernel void drag_implicit(const int n, const uint groupbit, __global const uin
         uf = drag_flow(vload3(i, x), flow, p0, p1, p2);
         vstore3(uf, 2 * i + 1, dstore);
     }
-    const REAL3 vi = vload3(i, v);
     REAL3 F = vload3(i, f);
     if (replace)
         F -= vload3(2 * i, dstore);
-    const REAL3 target = uf + (tau / m) * F;   /* steady state under fixed F */
-    REAL3 dv;
-    if (exact)
-        dv = (target - vi) * (-expm1(-h / tau));
-    else
-        dv = (target - vi) * (h / (tau + h));
-    const REAL3 D = (m / h) * dv - F;
+    const REAL3 D = drag_half_kick(F, uf, vload3(i, v), rmass[i], radius[i], mu, exact, h);
     vstore3(D, 2 * i, dstore);
     vstore3(F + D, i, f);
 }

@@ -7,8 +7,10 @@
  *   final_integrate ops    -> pair_gather (after the post_force ops)
  * An op is (kind, group bit, offset of its parameters in prm). Each op does
  * exactly the arithmetic of its fix's own kernel (fix_gravity.cl,
- * fix_freeze.cl, fix_viscous.cl, fix_nve.cl, fix_nve_sphere.cl), so fused
- * and separate runs agree bit for bit. */
+ * fix_freeze.cl, fix_viscous.cl, fix_nve.cl, fix_nve_sphere.cl; fix drag's
+ * laws are shared with fix_drag.cl through drag_law.cl), so fused and
+ * separate runs agree bit for bit. The end_of_step ops follow the
+ * final_integrate ops in pair_gather. */
 
 /* The ops (enum fused_kind) and their layout: kernels/fused_layout.h */
 
@@ -20,8 +22,29 @@ struct fused_atom {
     uint mask;
 };
 
+/* fix drag's kicks (FOP_DRAG_KICK*), as kernels/fix_drag.cl drag_implicit:
+ * store[2i] the drag D in the force, store[2i + 1] the flow at x_i */
+static inline void fused_drag_kick(struct fused_atom *a, __global const REAL *p, const int again,
+                                   __global REAL *store, const int i)
+{
+    REAL3 uf, F = a->f;
+    if (again) {
+        uf = vload3(2 * i + 1, store);
+        F -= vload3(2 * i, store);
+    } else {
+        uf = drag_flow(a->x, (int)p[1], p[2], p[3], p[4]);
+        vstore3(uf, 2 * i + 1, store);
+    }
+    const REAL3 D = drag_half_kick(F, uf, a->v, a->m, a->r, p[0], (int)p[5], p[6]);
+    vstore3(D, 2 * i, store);
+    a->f = F + D;
+}
+
+/* The ops [first, first + count) on particle i; store: the fused fix's
+ * per-atom state (kernels/fused_layout.h), unused by other ops. */
 static inline void fused_apply(struct fused_atom *a, __global const int *ops, const int first,
-                               const int count, __global const REAL *prm)
+                               const int count, __global const REAL *prm, __global REAL *store,
+                               const int i)
 {
     for (int k = first; k < first + count; k++) {
         const int kind = ops[FOP_W * k + FOP_KIND];
@@ -57,6 +80,11 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif
+        } else if (kind == FOP_DRAG_EXPLICIT) {
+            a->f = drag_explicit_force(a->f, drag_flow(a->x, (int)p[1], p[2], p[3], p[4]), a->v,
+                                       a->r, p[0]);
+        } else if (kind == FOP_DRAG_KICK || kind == FOP_DRAG_KICK_AGAIN) {
+            fused_drag_kick(a, p, kind == FOP_DRAG_KICK_AGAIN, store, i);
         }
     }
 }

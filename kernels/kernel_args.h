@@ -21,6 +21,7 @@
  *   M CM    __global REAL * / __global const REAL * ; host cl_mem
  *   MI CMI  __global int * / __global const int * ; host cl_mem
  *   CMU     __global const uint * ; host cl_mem
+ *   MUC     __global uchar * ; host cl_mem (one byte per item)
  *   CML     __global const long * ; host cl_mem (the atoms' tags)
  *   POS_LO  the low parts of the positions in single precision
  *           (POS_LO_PARAM of kernels/common.cl: absent in double); no
@@ -34,20 +35,23 @@
 
 /* pair_contacts: one work-item per contact; shear is ci when the law keeps
  * no history, omega / rect are v / recf without rotation; temp / recq (the
- * temperatures, the incidences' heat records) are v / recf without HAS_HEAT */
+ * temperatures, the incidences' heat records) are v / recf without HAS_HEAT;
+ * quiet[c] = 1: contact c did not act when last evaluated and its records
+ * hold the zeros it wrote (0: unknown, after a rebuild or at a run start) */
 #define KARGS_pair_contacts(X, Y)                                                              \
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CMI, cslot) Y(CM, x) Y(CM, v) Y(CM, omega)          \
     Y(CM, radius) Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param)              \
     Y(I, ntypes) Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box)           \
     Y(M, recf) Y(M, rect) Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup)          \
-    Y(CM, temp) Y(M, recq) Y(POS_LO, xlo)
+    Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(POS_LO, xlo)
 
-/* pair_gather: one work-item per particle, then the fused post_force and
- * final_integrate ops [first, first + npost + nfinal); recq / heatflow as
- * pair_contacts' */
+/* pair_gather: one work-item per particle, then the fused post_force,
+ * final_integrate and end_of_step ops [first, first + npost + nfinal)
+ * (nfinal counts both of the last two); store: the fused fix's per-atom
+ * store (f when none); recq / heatflow as pair_contacts' */
 #define KARGS_pair_gather(X, Y)                                                                \
     X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
-    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, v) Y(M, omega) Y(CM, rmass)           \
+    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega) Y(CM, rmass) \
     Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look)             \
     Y(PART, atom_step) Y(POS_LO, xlo)
 
@@ -146,6 +150,7 @@
 #define KA_DECL_MI(n, X, Y) __global int *n
 #define KA_DECL_CMI(n, X, Y) __global const int *n
 #define KA_DECL_CMU(n, X, Y) __global const uint *n
+#define KA_DECL_MUC(n, X, Y) __global uchar *n
 #define KA_DECL_CML(n, X, Y) __global const long *n
 #define KA_DECL_POS_LO(n, X, Y) POS_LO_PARAM
 #define KA_DECL_PART(n, X, Y) KARGS_##n(X, Y)
@@ -169,6 +174,7 @@
 #define KA_ARG_MI(n, X, Y) n
 #define KA_ARG_CMI(n, X, Y) n
 #define KA_ARG_CMU(n, X, Y) n
+#define KA_ARG_MUC(n, X, Y) n
 #define KA_ARG_CML(n, X, Y) n
 #define KA_ARG_POS_LO(n, X, Y) POS_LO_ARG
 #define KA_ARG_PART(n, X, Y) KARGS_##n(X, Y)
@@ -185,6 +191,7 @@
 #define KA_SEP_MI ,
 #define KA_SEP_CMI ,
 #define KA_SEP_CMU ,
+#define KA_SEP_MUC ,
 #define KA_SEP_CML ,
 #define KA_SEP_POS_LO /* POS_LO_PARAM brings its own comma */
 #define KA_SEP_PART /* the part's first argument brings it */

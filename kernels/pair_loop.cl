@@ -15,6 +15,10 @@
  * negatives.
  *
  * acc/astep: the contact's collision-resolution record (kernels/accuracy.cl).
+ * A contact that does not act writes zero records; one that did not act at
+ * its last evaluation either (quiet[c], reset at every rebuild and run
+ * start) skips those stores: most listed pairs of a flowing bed are apart
+ * for many steps.
  *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
@@ -74,10 +78,19 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     s.note_idx = c;
     s.acode = 0;
     s.refine = 1;
-#ifdef HAS_COHESION /* cohesion acts beyond body contact: every listed pair goes to
-                      * the law, whose terms gate themselves (pair_hybrid_overlay.cl) */
+#ifdef HAS_COHESION /* cohesion acts beyond body contact: every listed pair within
+                      * the effect reach goes to the law, whose terms gate themselves
+                      * (pair_hybrid_overlay.cl) */
     s.gated = 1;
     s.approach = 0;
+#if !defined(PAIR_TYPECUT) && !defined(PAIR_EVAL_ROW)
+    /* the list's bound on every term's reach, 1e-4 wider than any rounding of
+     * a term's own test: a pair beyond it gets nothing from any term and its
+     * history zeroed, the same bits as the laws' own evaluation gives */
+    s.reach = fmax(s.reach, (REAL)COH_REACH_A + (REAL)COH_REACH_B * s.reach) * (REAL)1.0001;
+#else /* a potential's type cut-off or pair granular's jkr hold: the law decides */
+    s.reach = INFINITY;
+#endif
 #else
     s.gated = 0;
 #ifdef PAIR_APPROACH
@@ -110,6 +123,12 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #endif
     const int acted = pair_body(CONTACT_PAIR, i, &s, &pj, &a, p, h, &o);
     contact_hist_store(hrow, h, acted ? PAIR_HIST_N : s.hzero, acted);
+    /* apart now and when last evaluated: its records hold these zeros already */
+    const uchar was_quiet = quiet[c];
+    if (!acted && was_quiet)
+        return;
+    if (was_quiet != !acted)
+        quiet[c] = !acted;
     const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
     vstore3(o.f, si, recf);
     vstore3(-o.f, sj, recf);
@@ -130,9 +149,10 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 
 /* f_i (and torque_i) = the sum of i's incidence records in row order;
  * written, not added (this also clears the force of the step). Then the
- * fused post_force ops [first, first + npost) and final_integrate ops
- * [first + npost, first + npost + nfinal) of kernels/fused.cl, which may
- * change f, torque, v and omega; with look, the next step's opening
+ * fused post_force ops [first, first + npost) and final_integrate and
+ * end_of_step ops [first + npost, first + npost + nfinal) of
+ * kernels/fused.cl, which may change f, torque, v and omega (and the fused
+ * fix's store); with look, the next step's opening
  * (kernels/atom_step.cl) on the state in registers. */
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
 __kernel void pair_gather(KA_PARAMS(pair_gather))
@@ -168,12 +188,12 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
         at.r = radius[i];
         at.type = type[i];
         at.mask = mask[i];
-        fused_apply(&at, ops, first, npost + nfinal, prm);
+        at.x = vload3(i, x); /* read by drag's ops and the look-ahead */
+        at.xl = POS_LOAD_LO(i);
+        fused_apply(&at, ops, first, npost + nfinal, prm, store, i);
         fs = at.f;
         ts = at.tq;
         if (look) { /* atom_step stores v and omega after its own ops */
-            at.x = vload3(i, x);
-            at.xl = POS_LOAD_LO(i);
             if (ninit == 0 && nfinal > 0) {
                 vstore3(at.v, i, v);
 #ifdef HAS_ROTATION

@@ -33,7 +33,8 @@ struct fix;
 /* The run's fused stages (engine-owned; built by fused_setup, fused.h). */
 struct fused_stages {
     cl_mem ops, prm;            /* int[FOP_W per op], REAL[] */
-    int ninit, npost, nfinal;   /* ops: initial first, then post, then final */
+    int ninit, npost, nfinal, neos; /* ops: initial, then post, final, end_of_step */
+    struct fix *store_fix;      /* the fused fix whose per-atom store ops use, or NULL */
     int lookahead;              /* 0: GRAVEL_LOOKAHEAD=0, no step opening in pair_gather */
 };
 

@@ -572,7 +572,9 @@ void eng_prepare(struct gravel *g)
     add_source(g, names, texts, &n, "gran_common.cl", "engine");
     /* normal impulse of the source-document contact laws (same terms) */
     add_source(g, names, texts, &n, "contact_normal.cl", "engine");
-    /* per-particle fix work run inside the check and gather kernels */
+    /* per-particle fix work run inside the check and gather kernels, and
+     * the laws of the fixes it fuses */
+    add_source(g, names, texts, &n, "drag_law.cl", "engine");
     add_source(g, names, texts, &n, "fused.cl", "engine");
     /* a step's opening per particle: nbr_check's, or pair_gather's look-ahead */
     add_source(g, names, texts, &n, "atom_step.cl", "engine");

@@ -22,6 +22,7 @@ struct builder {
     int *ops;
     int nprm, pcap;
     double *prm;
+    struct fix *store_fix;      /* the fix whose per-atom store the ops use */
 };
 
 static void add(struct gravel *g, struct builder *b, struct fix *f, const struct fused_op *op)
@@ -50,17 +51,24 @@ static int stage(struct gravel *g, struct builder *b, unsigned hook, int all)
     struct fix *list[64];
     struct fused_op ops[64];
     int n = 0, ok = 0;
+    struct fix *store_fix = b->store_fix;
     for (int i = 0; i < g->styles.nfix && n < 64; i++) {
         struct fix *f = g->styles.fix[i];
         if (!(f->hooks & hook))
             continue;
         list[n] = f;
-        if (ok == n && f->style->fuse && f->style->fuse(g, f, hook, &ops[n]))
+        ops[n].store = 0;
+        if (ok == n && f->style->fuse && f->style->fuse(g, f, hook, &ops[n]) &&
+            (!ops[n].store || !store_fix || store_fix == f)) {
+            if (ops[n].store)
+                store_fix = f;
             ok++;
+        }
         n++;
     }
     if (all && ok < n)
         return 0;
+    b->store_fix = store_fix;
     for (int k = 0; k < ok; k++) {
         add(g, b, list[k], &ops[k]);
         list[k]->fused_hooks |= hook;
@@ -94,8 +102,12 @@ void fused_setup(struct gravel *g)
             s->npost = stage(g, &b, HOOK_POST_FORCE, 0);
             if (s->npost == count_hook(g, HOOK_POST_FORCE))
                 s->nfinal = stage(g, &b, HOOK_FINAL_INTEGRATE, 1);
+            if (s->npost == count_hook(g, HOOK_POST_FORCE) &&
+                s->nfinal == count_hook(g, HOOK_FINAL_INTEGRATE))
+                s->neos = stage(g, &b, HOOK_END_OF_STEP, 1);
         }
     }
+    s->store_fix = b.store_fix;
     /* never empty buffers: kernels take them as arguments */
     int dummy_op[FOP_W] = {0};
     double dummy_prm = 0;

@@ -114,7 +114,7 @@ void nbr_free(struct gravel *g)
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
-                   &l->cslot, &l->shear, &l->recf, &l->rect, &b->coff_old,
+                   &l->cslot, &l->quiet, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->typecut,
                    &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
@@ -132,6 +132,13 @@ void nbr_invalidate(struct gravel *g)
 }
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
+
+void nbr_quiet_reset(struct gravel *g)
+{
+    const struct nbr_list *l = &get(g)->list;
+    if (l->quiet && l->ncontact > 0)
+        eng_fill_zero(g, l->quiet, ((size_t)l->ncontact + 3) / 4 * 4);
+}
 
 
 static size_t scan_chunks(int m, int *chunk)
@@ -228,10 +235,10 @@ static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 /* The buffers of grow_atoms, per atom slot. */
 static size_t atom_bytes(const struct engine *e) { return 3 * e->rsz + 7 * sizeof(cl_int); }
 
-/* ci, cj, cslot and the history row of one contact. */
+/* ci, cj, cslot, the quiet flag and the history row of one contact. */
 static size_t contact_bytes(const struct engine *e)
 {
-    return 4 * sizeof(cl_int) + (e->history ? (size_t)e->hist_n * e->rsz : 0);
+    return 4 * sizeof(cl_int) + 1 + (e->history ? (size_t)e->hist_n * e->rsz : 0);
 }
 
 /* recf and rect of one contact. */
@@ -273,11 +280,14 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
         rel(&l->ci);
         rel(&l->cj);
         rel(&l->cslot);
+        rel(&l->quiet);
         rel(&l->shear);
         b->cap_contact = grown(nc);
         l->ci = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact owners");
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
         l->cslot = eng_alloc(g, b->cap_contact * 2 * sizeof(cl_int), "contact incidences");
+        /* whole words: nbr_quiet_reset fills 4 bytes at a time */
+        l->quiet = eng_alloc(g, (b->cap_contact + 3) / 4 * 4, "contact quiet flags");
         if (e->history)
             l->shear = eng_alloc(g, b->cap_contact * (size_t)e->hist_n * e->rsz, "contact history");
     }
@@ -532,7 +542,7 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->shear, &l->recf, &l->rect};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->quiet, &l->shear, &l->recf, &l->rect};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
         b->cap_pair = b->cap_contact = 0;
@@ -1080,6 +1090,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
         mem_fit_contacts(g, (size_t)total); /* all of the contacts' buffers, before any */
     alloc_contacts(g, b, (size_t)total);
     l->ncontact = total;
+    nbr_quiet_reset(g); /* the records' buffer held the parked history */
     reset_flags(g, b);
     cl_kernel k = b->k_contacts;
     int a = 0;

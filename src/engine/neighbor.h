@@ -20,13 +20,18 @@ struct nbr_list {
      * ci/cj the two atoms; cslot[2c], cslot[2c + 1] their incidences;
      * shear (3 REAL, history only) seen from ci; recf and rect (rotation
      * only) the incidence records of the step, force and torque
-     * (kernels/pair_loop.cl) */
-    cl_mem coff, ci, cj, cslot, shear, recf, rect;
+     * (kernels/pair_loop.cl); quiet[c] (one byte) = 1 when contact c did not
+     * act at its last evaluation and its records hold the zeros written then */
+    cl_mem coff, ci, cj, cslot, quiet, shear, recf, rect;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
     double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */
 };
 
+/* The records of every contact are unknown (a rebuild parked history in
+ * them, a run starts, a restart restored the list): the next evaluation
+ * writes every contact's records (nbr_list.quiet = 0). */
+void nbr_quiet_reset(struct gravel *g);
 /* Kernel arguments a .. a + 5: the list's periodic lengths Lx Ly Lz, then
  * the tilts xy xz yz (kernels/common.cl, "Triclinic boxes"). Returns a + 6. */
 int nbr_arg_box(struct gravel *g, cl_kernel k, int a, const struct nbr_list *l);

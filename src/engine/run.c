@@ -300,6 +300,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .vgroup = e->vgroup,
             .temp = e->heat ? a->temperature : a->v,
             .recq = recq,
+            .quiet = l->quiet,
         };
         nbr_list_box(l, pc.box);
         ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
@@ -318,8 +319,9 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .ops = e->fused.ops,
             .first = e->fused.ninit,
             .npost = e->fused.npost,
-            .nfinal = e->setup ? 0 : e->fused.nfinal,
+            .nfinal = e->setup ? 0 : e->fused.nfinal + e->fused.neos,
             .prm = e->fused.prm,
+            .store = e->fused.store_fix ? e->fused.store_fix->peratom : a->f,
             .v = a->v,
             .omega = e->rotation ? a->omega : a->v,
             .rmass = a->rmass,
@@ -597,6 +599,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         post_neighbor(g);
     }
     e->st.nbuilds = 0;
+    nbr_quiet_reset(g); /* a restored list's records are unknown */
     run_hook(g, HOOK_PRE_FORCE); /* LAMMPS's setup_pre_force */
     if (resumed < 2) {
         compute_forces(g, freezebit, 1, tsetup, 0);

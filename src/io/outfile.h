@@ -15,7 +15,8 @@
  *  - a regular file whose folder does not allow a temporary (EACCES, EPERM,
  *    EROFS) is written through in place, as LAMMPS writes every file;
  *  - on several MPI ranks only rank 0 writes: the others write to /dev/null
- *    (the host atoms are whole on every rank between runs, src/parallel/).
+ *    (the host atoms are whole on every rank between runs, src/parallel/);
+ *    of_open_fd's files too (logs, print, fix ave and histogram files).
  * Every write is checked: the stream of an open ofile records the errno of
  * its first failed write, and of_commit()/of_flush() report it. */
 #ifndef GR_OUTFILE_H

@@ -165,7 +165,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "viscous", "setforce", "wall/gran",
                                         "wall/gran/region", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk",
-                                        "ave/histo", NULL};
+                                        "ave/histo", "drag", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -32,6 +32,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "atoms.h"
 #include "compute.h"
 #include "compute_agglomerate_mes.h"
 #include "error.h"
@@ -242,11 +243,15 @@ static void cluster(struct gravel *g, struct compute *c)
         gr_error(g, "compute %s agglomerate: tilted triclinic boxes are not supported", c->id);
     for (int q = 0; q < 3; q++)
         L[q] = g->dom.periodic[q] ? g->dom.hi[q] - g->dom.lo[q] : 0.0;
+    /* in tag order: the pairs, the unions and the walks, and so every digit,
+     * depend on the atoms only, not on their memory order (several ranks
+     * gather them in tag order, one process holds them in device order) */
+    const int *ord = atoms_tag_order(g);
     int m = 0;
     int *idx = gr_malloc(g, (size_t)(at->n > 0 ? at->n : 1) * sizeof *idx);
-    for (int i = 0; i < at->n; i++)
-        if (at->mask[i] & c->groupbit)
-            idx[m++] = i;
+    for (int k = 0; k < at->n; k++)
+        if (at->mask[ord[k]] & c->groupbit)
+            idx[m++] = ord[k];
     struct edges e = {0, 0, NULL};
     if (m > 0)
         contacts(g, idx, m, L, &e);
@@ -372,6 +377,7 @@ static void cluster(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_agglomerate = {
     .name = "agglomerate",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = create,
     .vector = vector,
     .destroy = destroy,

@@ -42,6 +42,7 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_drag.h"
+#include "fused.h"
 
 enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN };
 enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT, UPD_TRAPEZOIDAL };
@@ -52,6 +53,7 @@ struct drag {
     double p[3];                /* uniform: ux uy uz; taylor_green: A a - */
     int update;
     cl_kernel kexp, kimp, ktrap;
+    double prm[7];              /* the fused ops' parameters (fuse) */
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -157,6 +159,19 @@ static void init(struct gravel *g, struct fix *f)
     }
 }
 
+/* The flow field is evaluated at the device's coordinates: a shifted
+ * device origin (single precision, a box far from 0) would move it. */
+static void check_origin(struct gravel *g, struct fix *f)
+{
+    const struct drag *d = f->data;
+    const double *o = g->eng->origin;
+    if (d->flow && (o[0] != 0 || o[1] != 0 || o[2] != 0))
+        gr_error(g, "fix %s: the taylor_green field is evaluated at lab coordinates, but in "
+                    "single precision this box (centre %g %g %g, farther from 0 than its size) "
+                    "is shifted on the device: run in double precision or centre the box "
+                    "nearer 0", f->id, o[0], o[1], o[2]);
+}
+
 static void set_common(struct gravel *g, struct fix *f, cl_kernel k, int *i)
 {
     struct drag *d = f->data;
@@ -173,12 +188,7 @@ static void set_common(struct gravel *g, struct fix *f, cl_kernel k, int *i)
     eng_arg_int(g, k, (*i)++, d->flow);
     for (int q = 0; q < 3; q++)
         eng_arg_real(g, k, (*i)++, d->p[q]);
-    const double *o = g->eng->origin;
-    if (d->flow && (o[0] != 0 || o[1] != 0 || o[2] != 0))
-        gr_error(g, "fix %s: the taylor_green field is evaluated at lab coordinates, but in "
-                    "single precision this box (centre %g %g %g, farther from 0 than its size) "
-                    "is shifted on the device: run in double precision or centre the box "
-                    "nearer 0", f->id, o[0], o[1], o[2]);
+    check_origin(g, f);
 }
 
 static void apply_implicit(struct gravel *g, struct fix *f, int replace)
@@ -235,12 +245,41 @@ static void end_of_step(struct gravel *g, struct fix *f)
     apply_implicit(g, f, 1);
 }
 
+/* Fused (src/engine/fused.h): explicit and implicit/exact inside the
+ * gather kernel, the same arithmetic (kernels/drag_law.cl); the
+ * trapezoidal update's closing flag differs at setup, so it runs its own
+ * kernel. prm: mu flow p0 p1 p2 exact h. */
+static int fuse(struct gravel *g, struct fix *f, unsigned hook, struct fused_op *op)
+{
+    struct drag *d = f->data;
+    if (d->update == UPD_TRAPEZOIDAL || (hook != HOOK_POST_FORCE && hook != HOOK_END_OF_STEP))
+        return 0;
+    check_origin(g, f);
+    d->prm[0] = d->mu;
+    d->prm[1] = d->flow;
+    for (int q = 0; q < 3; q++)
+        d->prm[2 + q] = d->p[q];
+    d->prm[5] = d->update == UPD_EXACT;
+    d->prm[6] = 0.5 * g->dt;
+    op->prm = d->prm;
+    if (d->update == UPD_EXPLICIT) {
+        op->kind = FOP_DRAG_EXPLICIT;
+        op->nprm = 5;
+        return 1;
+    }
+    op->kind = hook == HOOK_POST_FORCE ? FOP_DRAG_KICK : FOP_DRAG_KICK_AGAIN;
+    op->nprm = 7;
+    op->store = 1;
+    return 1;
+}
+
 const struct fix_style fix_style_drag = {
     .name = "drag",
     .create = create,
     .init = init,
     .post_force = post_force,
     .end_of_step = end_of_step,
+    .fuse = fuse,
 };
 
 /* Scales of the flow for the Stokes number (used by pair_style cohesion's

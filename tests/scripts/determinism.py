@@ -18,7 +18,9 @@ A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
 freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
 off (GRAVEL_FUSE=0: one launch per fix and hook) and with the look-ahead off
 (GRAVEL_LOOKAHEAD=0: each step's opening in nbr_check instead of the step
-before's pair_gather). Then momentum conservation of the pair forces: a periodic dense packing
+before's pair_gather); so does a cohesive suspension in a Taylor-Green
+vortex whose fix drag fuses (update explicit, implicit and exact), with
+fewer launches per step than unfused. Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
 The same lane widths give the same bits for each lane-generic law (gran
@@ -93,6 +95,64 @@ dump_modify d sort id format float %.17g
 run 1000
 """
 
+# Cohesive spheres in a Taylor-Green vortex (the agglomeration case's
+# styles, source document 000): fix drag's ops fuse into the gather kernel
+# (post_force and end_of_step), so its steps take the look-ahead.
+DRAG = """units si
+atom_style sphere
+boundary p p p
+region box block -1 1 -1 1 -1 1 units box
+create_box 1 box
+create_atoms 1 random 600 5151 NULL overlap 0.06
+set group all diameter 0.05 density 2000
+velocity all create 1.0 777 loop geom
+pair_style hybrid/overlay linear/restitution 1e5 0.5 0.1 kf 1e5 cohesion 150
+pair_coeff * * linear/restitution
+pair_coeff * * cohesion 0.075
+neighbor 0.025 bin
+fix 1 all nve/sphere
+fix 2 all drag 0.05 taylor_green 5 3 update {update}
+timestep 0.0002
+thermo_style custom step ke
+thermo_modify format float %.17g
+thermo 100
+dump d all custom 400 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz
+dump_modify d sort id format float %.17g
+run 400
+"""
+
+
+def launches(out):
+    """kernel launches per step from a run's footer (None if absent)."""
+    for line in (out or "").splitlines():
+        if "kernel launches per step =" in line:
+            return float(line.split("=")[-1])
+    return None
+
+
+def check_drag():
+    """fix drag fused (post_force and end_of_step ops in the gather) against
+    its own kernels (GRAVEL_FUSE=0) and without the look-ahead, for each
+    update it fuses; the fused run must launch fewer kernels per step."""
+    bad = 0
+    for update in ("explicit", "implicit", "exact"):
+        deck = DRAG.format(update=update)
+        rows_f, dump_f, out_f = run_full(deck)
+        for name, env in (("unfused", {"GRAVEL_FUSE": "0"}),
+                          ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"})):
+            rows, dump, out = run_full(deck, env)
+            ok = rows_f is not None and rows is not None and dump == dump_f and rows == rows_f
+            detail = ((dump_f or "") + (dump or ""))[-300:] if rows_f is None or rows is None \
+                else first_difference(dump_f, dump)
+            bad += not check("drag_%s_fused_equals_%s" % (update, name), ok, detail)
+            if name == "unfused":
+                lf, lu = launches(out_f), launches(out)
+                bad += not check("drag_%s_fused_launches_fewer" % update,
+                                 lf is not None and lu is not None and lf < lu - 1,
+                                 "%s vs %s per step" % (lf, lu))
+    return bad
+
+
 PACK = """units lj
 atom_style sphere
 boundary p p p
@@ -115,6 +175,12 @@ run 50
 
 def run(deck, env_extra=None, args=()):
     """Run a deck in a fresh directory; return (thermo rows, dump text)."""
+    rows, dump, _ = run_full(deck, env_extra, args)
+    return rows, dump
+
+
+def run_full(deck, env_extra=None, args=()):
+    """run(), and the run's screen output (None, error text, output on failure)."""
     env = dict(os.environ)
     env.update(env_extra or {})
     with tempfile.TemporaryDirectory() as d:
@@ -123,7 +189,7 @@ def run(deck, env_extra=None, args=()):
         p = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none", *args], cwd=d, env=env,
                            capture_output=True, text=True, timeout=600)
         if p.returncode != 0:
-            return None, p.stdout + p.stderr
+            return None, p.stdout + p.stderr, p.stdout
         rows, inside = [], False
         for line in p.stdout.splitlines():
             if line.split()[:1] == ["Step"]:
@@ -134,7 +200,7 @@ def run(deck, env_extra=None, args=()):
                     break
                 rows.append(line.strip())
         with open(os.path.join(d, "out.dump")) as f:
-            return rows, f.read()
+            return rows, f.read(), p.stdout
 
 
 def check(name, ok, detail=""):
@@ -213,6 +279,7 @@ def main():
         ok = dump_f == dump_n and rows_f == rows_n
         bad += not check("lookahead_equals_none", ok,
                          "" if ok else first_difference(dump_f, dump_n))
+    bad += check_drag()
     rows, dump = run(PACK)
     if rows is None:
         bad += not check("pair_forces_sum_to_zero", False, dump[-400:])

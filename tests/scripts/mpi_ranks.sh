@@ -6,8 +6,9 @@
 # thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks, a gas
 # under gravity between plane and region walls (wall history), the example
-# mill (a turning STL mesh, its force and torque in thermo), three fix pour
-# decks, and the
+# mill (a turning STL mesh, its force and torque in thermo), cohesive spheres
+# in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
+# file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, and the files of
@@ -169,6 +170,38 @@ same empty_subdomain_np3 low.in 3 "" "1 1 3"
 "$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same mill_np3 mill.in 3 "-var nsteps 1200"
 check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
+
+# the agglomeration case's physics (source document 000): cohesive spheres in a
+# Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
+# the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
+cat > agglo.in <<'IN'
+units           si
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+region          box block -1 1 -1 1 -1 1 units box
+create_box      1 box
+create_atoms    1 random 600 5151 NULL overlap 0.06
+set             group all diameter 0.05 density 2000
+velocity        all create 1.0 777 loop geom
+pair_style      hybrid/overlay linear/restitution 1e5 0.5 0.1 kf 1e5 cohesion 150
+pair_coeff      * * linear/restitution
+pair_coeff      * * cohesion 0.075
+neighbor        0.025 bin
+fix             1 all nve/sphere
+fix             2 all drag 0.05 taylor_green 5 3 update implicit
+timestep        0.0002
+compute         ag all agglomerate file d.hist.txt
+thermo_style    custom step c_ag[1] c_ag[2] c_ag[3] c_ag[4] c_ag[5] ke
+thermo_modify   format float %.17g
+thermo          50
+run             400
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+"$serial" -in agglo.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check agglo_clusters_seen '[ -s ref/d.hist.txt ] && [ "$(rows ref.out | awk "\$5 > 1" | wc -l)" -ge 2 ]'
+same agglo_np3 agglo.in 3 ""
+same agglo_np4 agglo.in 4 "" "2 2 1"
 
 "$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
