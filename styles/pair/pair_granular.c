@@ -53,6 +53,14 @@ static const char *const tname[] = {"linear_nohistory", "linear_history", "mindl
                                     "mindlin_classic"};
 #define GR_NTANG ((int)(sizeof tname / sizeof *tname))
 
+/* a model LAMMPS 2021 lacks (damping coeff_restitution, the classic
+ * tangential models): mixed as today's LAMMPS even with -compat lammps2021 */
+static int after_2021(const struct gr_one *o)
+{
+    return o->dm == GR_D_COEFF_RESTITUTION || o->tm == GR_T_HISTORY_CLASSIC ||
+           o->tm == GR_T_MINDLIN_CLASSIC;
+}
+
 /* the /static models: a static and a dynamic friction coefficient */
 static int tang_static(int tm)
 {
@@ -426,7 +434,8 @@ static double pulloff(const struct gr_one *o, double reff)
 }
 
 /* Today's LAMMPS mixing (since the 2023 GranularModel; also every
- * coeff_restitution pair, a model LAMMPS 2021 lacks): GranularModel::
+ * pair of a model LAMMPS 2021 lacks: coeff_restitution, the classic tangential
+ * models): GranularModel::
  * mix_coeffs, then init: every sub-model kept; the damping slot (e for tsuji
  * and coeff_restitution), nu, cohesion and every other coefficient
  * geometric; the material models' E* = 1 / ((1 - nu_I^2)/E_I + (1 -
@@ -489,7 +498,7 @@ static void init(struct gravel *g, struct pair *p)
                             "explicitly via a pair_coeff command", i, j);
             struct gr_one m = *a;
             m.set = 2;
-            if (a->dm == GR_D_COEFF_RESTITUTION || !a->c2021 || !b->c2021) {
+            if (after_2021(a) || !a->c2021 || !b->c2021) {
                 mix_today(a, b, &m);
                 *at(t, i, j) = *at(t, j, i) = m;
                 continue;
@@ -527,7 +536,7 @@ static void init(struct gravel *g, struct pair *p)
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
             if (at(t, i, j)->set == 2 && at(t, i, j)->c2021 &&
-                at(t, i, j)->dm != GR_D_COEFF_RESTITUTION)
+                !after_2021(at(t, i, j)))
                 gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "

@@ -115,14 +115,15 @@ def check_mixing():
     return ok
 
 
-def run_deck(text):
-    """the final state {id: values} of deck text (write_dump at its end)"""
+def run_deck(text, extra=()):
+    """the final state {id: values} of deck text (write_dump at its end;
+    extra: gravel's further arguments)"""
     text += "write_dump all custom final.dump id " + " ".join(FIELDS) + \
         " modify sort id format float %.17g\n"
     with tempfile.TemporaryDirectory() as tmp:
         with open(os.path.join(tmp, "in.mix"), "w") as f:
             f.write(text)
-        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none"], cwd=tmp,
+        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none", *extra], cwd=tmp,
                            capture_output=True, text=True, timeout=300)
         if r.returncode != 0:
             print(f"  gravel failed: {r.stdout[-600:]}{r.stderr[-600:]}")

@@ -24,8 +24,14 @@ GranSubModTangentialLinearHistoryClassic / MindlinClassic).
    reproduces (the cases above), to 1e-10, while linear_history (mindlin)
    differs by more than 1e-7. (A pair does not compare so: pair granular's
    torque lever is r - delta/2, pair gran/*/history's r.)
+4. Mixing: two types of linear_history_classic (mindlin_classic) without
+   pair_coeff 1 2 run as with pair_coeff 1 2 of the geometric means
+   (GranSubMod::mix_coeffs), to 1e-10 (also under -compat lammps2021: LAMMPS
+   2021 has no such model to mix as it did).
 (Their argument checks, and `none` refused as LAMMPS refuses it:
 lammps_granular_today.py's check_refusals.)"""
+import itertools
+import math
 import os
 import sys
 
@@ -106,6 +112,37 @@ def check_turning():
     return bad
 
 
+def check_mixing():
+    """lammps_granular_today.py's two-type collision deck with classic models"""
+    from lammps_granular_today import MIX_DECK, run_deck
+    lines = [w for w in MIX_DECK.splitlines() if w.startswith("pair_coeff")]
+    bad = 0
+    for (tang, normal), extra in itertools.product(
+            (("linear_history_classic", "hooke"), ("mindlin_classic", "hertz")),
+            ((), ("-compat", "lammps2021"))):
+        own = {1: (1e5, 20.0, 3e4, 0.5, 0.5), 2: (2e5, 10.0, 5e4, 0.4, 0.3)}
+        spell = ("pair_coeff {} {} " + normal + " {!r} {!r} damping mass_velocity tangential "
+                 + tang + " {!r} {!r} {!r}")
+        deck = MIX_DECK
+        for t, line in zip((1, 2), lines):
+            deck = deck.replace(line, spell.format(t, t, *own[t]))
+        cross = spell.format(1, 2, *(math.sqrt(a * b) for a, b in zip(own[1], own[2])))
+        worst = 0.0
+        out = [run_deck(deck.format(cross=""), extra), run_deck(deck.format(cross=cross), extra)]
+        ok = None not in out
+        if ok:
+            scale = [max(abs(out[1][t][c]) for t in out[1]) or 1 for c in range(12)]
+            worst = max(abs(out[0][t][c] - out[1][t][c]) / scale[c] for t in out[0]
+                        for c in range(12))
+            ok = worst <= 1e-10 and abs(out[0][1][3] - 1.0) > 1e-3  # and they collided
+        label = "_compat2021" if extra else ""
+        print(f"  {tang}{label}: mixed 1 2 vs its hand-written pair_coeff: worst relative "
+              f"{worst:.3e}")
+        print(f"{'PASS' if ok else 'FAIL'} classic_mixing_{tang}{label}")
+        bad += not ok
+    return bad
+
+
 def main(argv):
     bad = 0
     todo = [c for c in cases.CLASSIC if not argv or c.name in argv]
@@ -115,7 +152,7 @@ def main(argv):
     print(f"  {len(todo)} cases of gran/hooke/history and gran/hertz/history spelled with "
           "linear_history_classic / mindlin_classic")
     if not argv:
-        bad += check_turning() + check_analytic()
+        bad += check_turning() + check_mixing() + check_analytic()
     return 1 if bad else 0
 
 
