@@ -248,6 +248,46 @@ static inline REAL3 grt_static(REAL *h, REAL *dyn, REAL3 n, REAL3 vtr, REAL k, R
     return fs;
 }
 
+/* linear_history_classic and mindlin_classic (LAMMPS 2023+,
+ * GranSubModTangentialLinearHistoryClassic, the GranularModel form of
+ * pair gran/hooke/history and gran/hertz/history): s += v_t dt first, its
+ * magnitude taken, then projected onto the tangent plane without keeping
+ * its magnitude (every update, no threshold); F_t = -k s - eta_t v_t with
+ * k = kt (kt a for mindlin_classic); beyond F_scrit, F_t scaled to it and
+ * s = -(F_t - F_damp) / k, or no force when the shear was 0 before the
+ * projection. LAMMPS's order of operations. */
+static inline REAL3 grt_classic(REAL *h, REAL3 n, REAL3 vtr, REAL k, REAL damp_t, REAL Fscrit,
+                                const struct contact *c)
+{
+    if (c->shearupdate) {
+        h[0] += c->dt * vtr.x;
+        h[1] += c->dt * vtr.y;
+        h[2] += c->dt * vtr.z;
+    }
+    const REAL shrmag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    if (c->shearupdate) {
+        const REAL rsht = h[0] * n.x + h[1] * n.y + h[2] * n.z;
+        h[0] -= rsht * n.x;
+        h[1] -= rsht * n.y;
+        h[2] -= rsht * n.z;
+    }
+    const REAL3 fdamp = (REAL3)(-damp_t * vtr.x, -damp_t * vtr.y, -damp_t * vtr.z);
+    REAL3 fs = (REAL3)(-k * h[0] + fdamp.x, -k * h[1] + fdamp.y, -k * h[2] + fdamp.z);
+    const REAL fsm = sqrt(fs.x * fs.x + fs.y * fs.y + fs.z * fs.z);
+    if (fsm > Fscrit) {
+        if (shrmag != (REAL)0) {
+            const REAL q = Fscrit / fsm, kinv = (REAL)-1.0 / k;
+            fs = (REAL3)(q * fs.x, q * fs.y, q * fs.z);
+            h[0] = kinv * (fs.x - fdamp.x);
+            h[1] = kinv * (fs.y - fdamp.y);
+            h[2] = kinv * (fs.z - fdamp.z);
+        } else {
+            fs = (REAL3)(0);
+        }
+    }
+    return fs;
+}
+
 /* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ---- */
 static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL Frcrit,
                             const struct contact *c)
@@ -366,6 +406,10 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
                         GR_IS(L.t, GR_T_MINDLIN_STATIC, tm))) {
         const REAL k = GR_IS(L.t, GR_T_MINDLIN_STATIC, tm) ? kt * a : kt;
         fs = grt_static(h, h + L.hdyn, n, vtr, k, damp_t, Fncrit, p[GR_MU], p[GR_MUD], c);
+    } else if (L.tang_hist && (GR_IS(L.t, GR_T_HISTORY_CLASSIC, tm) ||
+                               GR_IS(L.t, GR_T_MINDLIN_CLASSIC, tm))) {
+        const REAL k = GR_IS(L.t, GR_T_MINDLIN_CLASSIC, tm) ? kt * a : kt;
+        fs = grt_classic(h, n, vtr, k, damp_t, Fscrit, c);
     } else if (L.tang_hist) {
         if (GR_IS(L.t, GR_T_MINDLIN, tm) || GR_IS(L.t, GR_T_MINDLIN_FORCE, tm) ||
             GR_IS(L.t, GR_T_MINDLIN_RESCALE, tm) || GR_IS(L.t, GR_T_MINDLIN_RESCALE_FORCE, tm))

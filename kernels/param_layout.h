@@ -43,7 +43,8 @@ enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSU
                   GR_D_COEFF_RESTITUTION /* LAMMPS 2024 */ };
 enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RESCALE,
                      GR_T_MINDLIN_FORCE, GR_T_MINDLIN_RESCALE_FORCE,
-                     GR_T_HISTORY_STATIC, GR_T_MINDLIN_STATIC /* today's LAMMPS */ };
+                     GR_T_HISTORY_STATIC, GR_T_MINDLIN_STATIC /* today's LAMMPS */,
+                     GR_T_HISTORY_CLASSIC, GR_T_MINDLIN_CLASSIC /* LAMMPS 2023+ */ };
 enum gr_twist { GR_W_NONE, GR_W_SDS, GR_W_MARSHALL };
 enum gr_roll { GR_R_NONE, GR_R_SDS };
 /* heat conduction (LAMMPS 2023 GranSubModHeat*; kernels/gran_heat.cl): GR_HK is

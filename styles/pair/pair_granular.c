@@ -49,7 +49,23 @@ static const char *const dname[] = {"velocity", "mass_velocity", "viscoelastic",
 static const char *const tname[] = {"linear_nohistory", "linear_history", "mindlin",
                                     "mindlin_rescale", "mindlin/force",
                                     "mindlin_rescale/force", "linear_history/static",
-                                    "mindlin/static"};
+                                    "mindlin/static", "linear_history_classic",
+                                    "mindlin_classic"};
+#define GR_NTANG ((int)(sizeof tname / sizeof *tname))
+
+/* a model LAMMPS 2021 lacks (damping coeff_restitution, the classic
+ * tangential models): mixed as today's LAMMPS even with -compat lammps2021 */
+static int after_2021(const struct gr_one *o)
+{
+    return o->dm == GR_D_COEFF_RESTITUTION || o->tm == GR_T_HISTORY_CLASSIC ||
+           o->tm == GR_T_MINDLIN_CLASSIC;
+}
+
+/* the /static models: a static and a dynamic friction coefficient */
+static int tang_static(int tm)
+{
+    return tm == GR_T_HISTORY_STATIC || tm == GR_T_MINDLIN_STATIC;
+}
 
 static void destroy(struct pair *p)
 {
@@ -131,11 +147,15 @@ double granular_tsuji(double e, int lammps2021)
 }
 
 /* LAMMPS's sub-model names gravel does not have: a clear refusal (`what`
- * names the category) instead of "unknown model" */
+ * names the category) instead of "unknown model". `none` is LAMMPS's
+ * placeholder of an unset sub-model, which its GranularModel::init refuses
+ * for the normal, damping and tangential models with this message. */
 static void refuse_known(struct gravel *g, const char *who, const char *what, const char *s)
 {
-    static const char *const later[] = {"mdr", "epa/linear", "epa/nonlinear", "none",
-                                        "linear_history_classic", "mindlin_classic", NULL};
+    static const char *const later[] = {"mdr", "epa/linear", "epa/nonlinear", NULL};
+    if (!strcmp(s, "none"))
+        gr_error(g, "%s: Must specify %s granular model (LAMMPS refuses '%s' for the normal, "
+                    "damping and tangential models)", who, what, s);
     if (in_list(s, later))
         gr_error(g, "%s: %s model '%s' of LAMMPS's pair granular is not supported by gravel%s",
                  who, what, s,
@@ -201,9 +221,9 @@ static void check_ranges(struct gravel *g, const struct gr_one *o, int kt_null,
     if (!kt_null)
         coeff_check(g, who, "tangential stiffness kt", o->kt, CR_NONNEG);
     coeff_check(g, who, "tangential damping", o->gt, CR_NONNEG);
-    coeff_check(g, who, o->tm >= GR_T_HISTORY_STATIC ? "static friction coefficient"
-                                                     : "friction coefficient", o->mu, CR_NONNEG);
-    if (o->tm >= GR_T_HISTORY_STATIC)
+    coeff_check(g, who, tang_static(o->tm) ? "static friction coefficient"
+                                           : "friction coefficient", o->mu, CR_NONNEG);
+    if (tang_static(o->tm))
         coeff_check(g, who, "dynamic friction coefficient", o->mud, CR_NONNEG);
     coeff_check(g, who, "rolling stiffness", o->kr, CR_NONNEG);
     coeff_check(g, who, "rolling damping", o->gr, CR_NONNEG);
@@ -254,13 +274,14 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             i += 2;
         } else if (!strcmp(k, "tangential")) {
             arg_need(g, argc, i, 1, k);
-            o.tm = lookup(argv[i + 1], tname, 8);
+            o.tm = lookup(argv[i + 1], tname, GR_NTANG);
             refuse_known(g, who, "tangential", argv[i + 1]);
             if (o.tm < 0)
                 gr_error(g, "%s: unknown tangential model '%.64s' (expected "
                             "linear_nohistory, linear_history, mindlin, mindlin_rescale, "
-                            "mindlin/force, mindlin_rescale/force, linear_history/static or "
-                            "mindlin/static)", who, argv[i + 1]);
+                            "mindlin/force, mindlin_rescale/force, linear_history/static, "
+                            "mindlin/static, linear_history_classic or mindlin_classic)", who,
+                         argv[i + 1]);
             if (o.tm == GR_T_NOHISTORY) {
                 o.kt = 0;
                 o.gt = num(g, argv, argc, i + 2, "tangential damping", who);
@@ -268,6 +289,10 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                 i += 4;
                 continue;
             }
+            if (i + 2 < argc && !strcmp(argv[i + 2], "NULL") &&
+                (o.tm == GR_T_HISTORY_CLASSIC || o.tm == GR_T_MINDLIN_CLASSIC))
+                gr_error(g, "%s: Illegal linear tangential model: %s takes no NULL kt (LAMMPS "
+                            "reads it as -1)", who, tname[o.tm]);
             if (i + 2 < argc && !strcmp(argv[i + 2], "NULL") && o.tm >= GR_T_MINDLIN &&
                 o.tm != GR_T_HISTORY_STATIC) {
                 if (o.nm == GR_N_HERTZ || o.nm == GR_N_HOOKE)
@@ -279,7 +304,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                 kt_null = 0;
             }
             o.gt = num(g, argv, argc, i + 3, "tangential damping", who);
-            if (o.tm >= GR_T_HISTORY_STATIC) { /* kt xt mu_static mu_dynamic */
+            if (tang_static(o.tm)) { /* kt xt mu_static mu_dynamic */
                 o.mu = num(g, argv, argc, i + 4, "static friction coefficient", who);
                 o.mud = num(g, argv, argc, i + 5, "dynamic friction coefficient", who);
                 i += 6;
@@ -363,7 +388,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         tsuji(g, &o, who);
     if (o.dm == GR_D_COEFF_RESTITUTION)
         coeff_restitution(g, &o, who);
-    if (o.tm >= GR_T_HISTORY_STATIC && o.wm == GR_W_MARSHALL)
+    if (tang_static(o.tm) && o.wm == GR_W_MARSHALL)
         gr_error(g, "%s: twisting marshall takes its friction from the tangential model, "
                     "which %s does not define (LAMMPS leaves it unset); use twisting sds",
                  who, tname[o.tm]);
@@ -409,7 +434,8 @@ static double pulloff(const struct gr_one *o, double reff)
 }
 
 /* Today's LAMMPS mixing (since the 2023 GranularModel; also every
- * coeff_restitution pair, a model LAMMPS 2021 lacks): GranularModel::
+ * pair of a model LAMMPS 2021 lacks: coeff_restitution, the classic tangential
+ * models): GranularModel::
  * mix_coeffs, then init: every sub-model kept; the damping slot (e for tsuji
  * and coeff_restitution), nu, cohesion and every other coefficient
  * geometric; the material models' E* = 1 / ((1 - nu_I^2)/E_I + (1 -
@@ -472,7 +498,7 @@ static void init(struct gravel *g, struct pair *p)
                             "explicitly via a pair_coeff command", i, j);
             struct gr_one m = *a;
             m.set = 2;
-            if (a->dm == GR_D_COEFF_RESTITUTION || !a->c2021 || !b->c2021) {
+            if (after_2021(a) || !a->c2021 || !b->c2021) {
                 mix_today(a, b, &m);
                 *at(t, i, j) = *at(t, j, i) = m;
                 continue;
@@ -510,7 +536,7 @@ static void init(struct gravel *g, struct pair *p)
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
             if (at(t, i, j)->set == 2 && at(t, i, j)->c2021 &&
-                at(t, i, j)->dm != GR_D_COEFF_RESTITUTION)
+                !after_2021(at(t, i, j)))
                 gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "

@@ -21,8 +21,11 @@ lammps2021:
   that fix restored, so it matches with and without -compat lammps2021.
 
 Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
-it), mdr, damping mdr, epa/linear, epa/nonlinear, linear_history_classic and
-synchronized_verlet each give an error naming them (check_refusals).
+it), mdr, damping mdr, epa/linear, epa/nonlinear and synchronized_verlet
+each give an error naming them; `none` as normal, damping or tangential
+model gives LAMMPS's own "Must specify ... granular model", a NULL kt of
+mindlin_classic LAMMPS's "Illegal linear tangential model" (check_refusals;
+the classic models themselves: tests/scripts/pair_granular_classic.py).
 
 Mixing: two hertz/material tsuji types without pair_coeff 1 2 must run as
 with a pair_coeff 1 2 written from LAMMPS's mixing rules (check_mixing).
@@ -112,14 +115,15 @@ def check_mixing():
     return ok
 
 
-def run_deck(text):
-    """the final state {id: values} of deck text (write_dump at its end)"""
+def run_deck(text, extra=()):
+    """the final state {id: values} of deck text (write_dump at its end;
+    extra: gravel's further arguments)"""
     text += "write_dump all custom final.dump id " + " ".join(FIELDS) + \
         " modify sort id format float %.17g\n"
     with tempfile.TemporaryDirectory() as tmp:
         with open(os.path.join(tmp, "in.mix"), "w") as f:
             f.write(text)
-        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none"], cwd=tmp,
+        r = subprocess.run([GRAVEL, "-in", "in.mix", "-log", "none", *extra], cwd=tmp,
                            capture_output=True, text=True, timeout=300)
         if r.returncode != 0:
             print(f"  gravel failed: {r.stdout[-600:]}{r.stderr[-600:]}")
@@ -149,8 +153,16 @@ REFUSALS = (
      (), "normal model 'epa/nonlinear' of LAMMPS's pair granular is not supported"),
     ("damping_mdr", "pair_coeff * * hooke 1 1 damping mdr 1 tangential linear_history 1 1 0.5",
      (), "damping model 'mdr' of LAMMPS's pair granular is not supported"),
-    ("classic", "pair_coeff * * hooke 1 1 tangential linear_history_classic 1 1 0.5", (),
-     "tangential model 'linear_history_classic' of LAMMPS's pair granular is not supported"),
+    ("classic_kt_null", "pair_coeff * * hertz/material 1e4 0.5 0.3 tangential mindlin_classic "
+     "NULL 1 0.5", (), "Illegal linear tangential model"),
+    ("normal_none", "pair_coeff * * none tangential linear_history 1 1 0.5", (),
+     "Must specify normal granular model"),
+    ("damping_none", "pair_coeff * * hooke 1 1 damping none tangential linear_history 1 1 0.5",
+     (), "Must specify damping granular model"),
+    ("tangential_none", "pair_coeff * * hooke 1 1 tangential none", (),
+     "Must specify tangential granular model"),
+    ("wall_tangential_none", "fix w all wall/gran granular hooke 1 1 tangential none "
+     "zplane 0 NULL", (), "Must specify tangential granular model"),
     ("synchronized_verlet", "pair_coeff * * hooke 1 1 tangential linear_history 1 1 0.5 "
      "synchronized_verlet", (), "synchronized_verlet (LAMMPS's half-step normal"),
 )

@@ -1337,3 +1337,66 @@ ELSEWHERE = {"dem06-nonlinear-3d": "tests/scripts/viscous_nonlinear.py",
              "dem09-viscous-nonlinear-3d-si": "tests/scripts/viscous_nonlinear.py"}
 # supported cases not yet written here (gravel runs their commands)
 TODO = ["dem10-aor-spheres-3d"]
+
+
+# LAMMPS 2023+ runs fix wall/gran hooke/history and hertz/history as its
+# GranularModel with tangential linear_history_classic and mindlin_classic
+# (GranularModel::define_classic_model: hooke + mass_velocity damping or
+# hertz + viscoelastic, kt NULL = 2/7 kn, gamma_t NULL = gamma_n / 2, 0 with
+# dampflag 0, the tangential damping ratio gamma_t / gamma_n); a user can
+# spell the same models in pair_style granular and fix wall/gran granular.
+# classic_spelling rewrites a deck's gran/hooke/history, gran/hertz/history
+# pair styles and wall/gran hooke/history, hertz/history fixes that way, so
+# the cases using them check the classic models against LAMMPS's values
+# (tests/scripts/pair_granular_classic.py). None when the deck has none of
+# them, or has gamma_n = 0 with gamma_t > 0 (LAMMPS: 0/0 ratio).
+CLASSIC_MODELS = {"hooke/history": ("hooke", "mass_velocity", "linear_history_classic"),
+                  "hertz/history": ("hertz", "viscoelastic", "mindlin_classic")}
+
+
+def classic_granular_args(style, words):
+    """pair granular's words for `style kn kt gamman gammat xmu dampflag`, or None"""
+    normal, damping, tangential = CLASSIC_MODELS[style]
+    kn = float(words[0])
+    kt = kn * 2.0 / 7.0 if words[1] == "NULL" else float(words[1])
+    gn = float(words[2])
+    gt = 0.5 * gn if words[3] == "NULL" else float(words[3])
+    if int(words[5]) == 0:
+        gt = 0.0
+    if gn == 0.0 and gt != 0.0:
+        return None
+    xt = gt / gn if gn != 0.0 else 0.0
+    return (f"{normal} {kn!r} {gn!r} damping {damping} tangential {tangential} "
+            f"{kt!r} {xt!r} {float(words[4])!r}")
+
+
+def classic_spelling(deck):
+    out, changed, pending = [], False, ""
+    for line in deck.splitlines():
+        w = line.split()
+        if w[:1] == ["pair_style"] and len(w) >= 8 and w[1][5:] in CLASSIC_MODELS and \
+                w[1].startswith("gran/"):
+            args = classic_granular_args(w[1][5:], w[2:8])
+            if args is None:
+                return None
+            out.append("pair_style granular")
+            pending = args + (" limit_damping" if "limit_damping" in w[8:] else "")
+            changed = True
+            continue
+        if w[:1] == ["pair_coeff"] and pending:
+            out.append(" ".join(w[:3]) + " " + pending)
+            pending = ""
+            continue
+        if w[:1] == ["fix"] and len(w) >= 10 and w[3] == "wall/gran" and w[4] in CLASSIC_MODELS:
+            args = classic_granular_args(w[4], w[5:11])
+            if args is None:
+                return None
+            out.append(" ".join(w[:3]) + " wall/gran granular " + args + " " + " ".join(w[11:]))
+            changed = True
+            continue
+        out.append(line)
+    return "\n".join(out) + "\n" if changed else None
+
+
+CLASSIC = [c._replace(name=c.name + "@classic", deck=d) for c in CASES
+           for d in [classic_spelling(c.deck)] if d is not None]
