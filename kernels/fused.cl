@@ -22,29 +22,46 @@ struct fused_atom {
     uint mask;
 };
 
+#ifdef FUSED_DRAG /* a fix drag in the scene (styles/fix/fix_drag.c): its ops */
 /* fix drag's kicks (FOP_DRAG_KICK*), as kernels/fix_drag.cl drag_implicit:
- * store[2i] the drag D in the force, store[2i + 1] the flow at x_i */
-static inline void fused_drag_kick(struct fused_atom *a, __global const REAL *p, const int again,
-                                   __global REAL *store, const int i)
+ * store[2i] the drag D in the force, store[2i + 1] the flow at x_i; returns
+ * the new force. Out of line and by value: the particle's state stays in
+ * registers in the kernels that never call it. */
+static __attribute__((noinline)) REAL3 fused_drag_kick(const REAL3 f, const REAL3 x,
+                                                       const REAL3 v, const REAL m, const REAL r,
+                                                       __global const REAL *p, const int again,
+                                                       __global REAL *store, const int i)
 {
-    REAL3 uf, F = a->f;
+    REAL3 uf, F = f;
     if (again) {
         uf = vload3(2 * i + 1, store);
         F -= vload3(2 * i, store);
     } else {
-        uf = drag_flow(a->x, (int)p[1], p[2], p[3], p[4]);
+        uf = drag_flow(x, (int)p[1], p[2], p[3], p[4]);
         vstore3(uf, 2 * i + 1, store);
     }
-    const REAL3 D = drag_half_kick(F, uf, a->v, a->m, a->r, p[0], (int)p[5], p[6]);
+    const REAL3 D = drag_half_kick(F, uf, v, m, r, p[0], (int)p[5], p[6]);
     vstore3(D, 2 * i, store);
-    a->f = F + D;
+    return F + D;
 }
+
+/* fix drag's explicit force (FOP_DRAG_EXPLICIT), out of line as above */
+static __attribute__((noinline)) REAL3 fused_drag_explicit(const REAL3 f, const REAL3 x,
+                                                           const REAL3 v, const REAL r,
+                                                           __global const REAL *p)
+{
+    return drag_explicit_force(f, drag_flow(x, (int)p[1], p[2], p[3], p[4]), v, r, p[0]);
+}
+#endif
 
 /* The ops [first, first + count) on particle i; store: the fused fix's
  * per-atom state (kernels/fused_layout.h), unused by other ops. */
-static inline void fused_apply(struct fused_atom *a, __global const int *ops, const int first,
-                               const int count, __global const REAL *prm, __global REAL *store,
-                               const int i)
+/* always inlined: a call would move the particle's state through memory
+ * for every particle; fix drag's ops are compiled only in scenes with the
+ * fix (FUSED_DRAG), out of line, so other scenes keep their registers */
+static inline __attribute__((always_inline)) void
+fused_apply(struct fused_atom *a, __global const int *ops, const int first, const int count,
+            __global const REAL *prm, __global REAL *store, const int i)
 {
     for (int k = first; k < first + count; k++) {
         const int kind = ops[FOP_W * k + FOP_KIND];
@@ -80,11 +97,17 @@ static inline void fused_apply(struct fused_atom *a, __global const int *ops, co
                 a->om = a->om + dtirotate * a->tq;
             }
 #endif
-        } else if (kind == FOP_DRAG_EXPLICIT) {
-            a->f = drag_explicit_force(a->f, drag_flow(a->x, (int)p[1], p[2], p[3], p[4]), a->v,
-                                       a->r, p[0]);
-        } else if (kind == FOP_DRAG_KICK || kind == FOP_DRAG_KICK_AGAIN) {
-            fused_drag_kick(a, p, kind == FOP_DRAG_KICK_AGAIN, store, i);
         }
+#ifdef FUSED_DRAG
+        else if (kind == FOP_DRAG_EXPLICIT) {
+            a->f = fused_drag_explicit(a->f, a->x, a->v, a->r, p);
+        } else if (kind == FOP_DRAG_KICK || kind == FOP_DRAG_KICK_AGAIN) {
+            a->f = fused_drag_kick(a->f, a->x, a->v, a->m, a->r, p, kind == FOP_DRAG_KICK_AGAIN,
+                                   store, i);
+        }
+#else
+        (void)store;
+        (void)i;
+#endif
     }
 }

@@ -101,6 +101,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     f->hooks = HOOK_POST_FORCE | (d->update == UPD_EXPLICIT ? 0u : (unsigned)HOOK_END_OF_STEP);
     f->sources[f->nsources++] = "fix_drag.cl";
+    if (d->update != UPD_TRAPEZOIDAL) /* its ops in the fused kernels (kernels/fused.cl) */
+        snprintf(f->defines, sizeof f->defines, "FUSED_DRAG");
 }
 
 /* The explicit update advances the half-step velocity by forward Euler,
