@@ -188,12 +188,18 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
         at.r = radius[i];
         at.type = type[i];
         at.mask = mask[i];
-        at.x = vload3(i, x); /* read by drag's ops and the look-ahead */
+#ifdef FUSED_DRAG /* fix drag's ops read the position */
+        at.x = vload3(i, x);
         at.xl = POS_LOAD_LO(i);
+#endif
         fused_apply(&at, ops, first, npost + nfinal, prm, store, i);
         fs = at.f;
         ts = at.tq;
         if (look) { /* atom_step stores v and omega after its own ops */
+#ifndef FUSED_DRAG
+            at.x = vload3(i, x);
+            at.xl = POS_LOAD_LO(i);
+#endif
             if (ninit == 0 && nfinal > 0) {
                 vstore3(at.v, i, v);
 #ifdef HAS_ROTATION
