@@ -818,6 +818,12 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!fix_parse_ref(name, id, &index, &col) || !fix_find(g, id))
             return 0;
         struct fix *f = fix_ref_check(g, name, "reference");
+        if ((par_on(g) || par_gathered(g)) && !par_fix_value_global(f)) {
+            char why[160];
+            snprintf(why, sizeof why, "a variable reading fix %.40s (%.40s)", f->id,
+                     f->style->name);
+            par_refuse(g, why);
+        }
         if (index == 0)
             run_sync_host(g);
         *out = fix_output(g, f, index, col, 0, "reference");
@@ -881,8 +887,10 @@ const char *thermo_line_text(struct gravel *g)
      * several ranks: the computes that need every atom after the rest, on
      * every rank's atoms gathered (one gather per line) */
     int norm = norm_flag(g), gather = 0, late[GR_MAXTHERMO];
-    for (int i = 0; i < st->ncol; i++)
-        late[i] = st->kind[i] == KIND_COMPUTE && par_on(g) && gathers(g, t->col[i]);
+    for (int i = 0; i < st->ncol; i++) /* variables too: their keywords, group functions
+                                        * and computes see every atom, as one process */
+        late[i] = par_on(g) && ((st->kind[i] == KIND_COMPUTE && gathers(g, t->col[i])) ||
+                                st->kind[i] == KIND_VARIABLE);
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < st->ncol; i++) {
             int k = st->kind[i], isint = 0;

@@ -14,7 +14,8 @@
 # file byte-identical); the standard computes in thermo and dumps, and the files of
 # fix ave/time, ave/chunk and ave/histo; restart files
 # written on N ranks and read on M (an exact
-# continuation, as one process writing and reading); errors end every rank with
+# continuation, as one process writing and reading); equal-style variables in
+# thermo; errors end every rank with
 # one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
@@ -218,6 +219,13 @@ check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 80
 "$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
+# equal-style variables in thermo: thermo keywords, computes (summed and gathered)
+# and group functions, evaluated on every rank's atoms as one process
+grep -v '^dump' chute.in | sed 's/^thermo_style    custom .*/compute t active temp\nvariable kk equal ke*2+c_1\nvariable m equal mass(active)\nvariable zc equal xcm(active,z)\nvariable vx equal vcm(active,x)\nvariable n equal count(active)\nvariable tt equal c_t\/(1+step)\nvariable w equal v_kk\/v_n\nthermo_style custom step atoms v_kk v_m v_zc v_vx v_n v_tt v_w/' > var.in
+"$serial" -in var.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check thermo_variables_seen '[ "$(rows ref.out | awk "NR > 1 && \$3 > 0 && \$9 > 0" | wc -l)" -ge 4 ]'
+same thermo_variables_np3 var.in 3 ""
+
 # fix pour (tests/reference/pour: ranges, rate, poly diameters into a cylinder,
 # atoms lost through the fixed floor with lost ignore, two pours): every rank draws
 # the same particles against every rank's near atoms and keeps those of its brick
@@ -365,6 +373,10 @@ check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuat
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
 check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (viscous/nonlinear)" ave.out'
+# a variable reading a fix whose value may be one rank's part
+sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > varf.in
+mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
+check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix a (ave/time)" varf.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
