@@ -158,6 +158,20 @@ same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
 same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
+# the footer over the ranks, as LAMMPS prints it (the last run's): Nlocal's mean
+# is atoms / ranks (1728 / N), min <= mean <= max, the histogram counts every
+# rank once, and each timing row has min <= avg <= max
+footer_ok() { # file, ranks, atoms
+    awk -v np="$2" -v na="$3" '
+        /^Nlocal:/ { a = $2; mx = $4; mn = $6; getline; s = 0
+                     for (i = 2; i <= NF; i++) s += $i
+                     nl = (s == np && mn <= a && a <= mx && a * np == na) }
+        /^Section / { rows = good = 0 }
+        /^(Pair|Neigh|Output|Modify) +\|/ { split($0, f, "|"); rows++
+                     if (f[2] + 0 <= f[3] + 0 && f[3] + 0 <= f[4] + 0) good++ }
+        END { exit !(nl && rows == 4 && good == 4) }' "$1"
+}
+check footer_over_ranks 'footer_ok gas_np4.out 4 1728 && footer_ok gas_np8.out 8 1728 && footer_ok ref.out 1 1728'
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
 "$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
