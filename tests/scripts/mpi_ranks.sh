@@ -254,7 +254,7 @@ done
 # computes on several ranks: those summed per owned atom in tag order (temp) and
 # those evaluated on every rank's atoms gathered for the output step (com,
 # gyration, msd, vacf, reduce of ke/atom, property/atom and coord/atom,
-# count/type, com/chunk of chunk/atom bins, cluster/atom), in thermo and in a
+# count/type, com/chunk of chunk/atom bins, cluster/atom, contact/atom), in thermo and in a
 # dump: every value and file the same bits as one process, on 3 and 4 ranks
 cat > cg.in <<'IN'
 units           lj
@@ -293,11 +293,13 @@ compute         ch all chunk/atom bin/1d z lower 3.0 units box
 compute         cc all com/chunk ch
 compute         cl all cluster/atom 1.0
 compute         rl all reduce min c_cl
+compute         cn all contact/atom
+compute         rn all reduce sum c_cn
 compute         t all temp
-thermo_style    custom step atoms ke c_t c_cm[1] c_cm[3] c_gy c_ms[4] c_va[4] c_rk c_rp[1] c_rp[2] c_ct[2] c_rc c_cc[2][3] c_rl
+thermo_style    custom step atoms ke c_t c_cm[1] c_cm[3] c_gy c_ms[4] c_va[4] c_rk c_rp[1] c_rp[2] c_ct[2] c_rc c_cc[2][3] c_rl c_rn
 thermo_modify   norm no format float %.17g
 thermo          100
-dump            d1 all custom 300 d.*.txt id x y z c_ka c_co c_ch c_cl
+dump            d1 all custom 300 d.*.txt id x y z c_ka c_co c_ch c_cl c_cn
 dump_modify     d1 sort id format float %.17g
 run             600
 write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
@@ -306,7 +308,7 @@ rm -f d.*.txt v_*.vtk # the chute's dumps
 "$serial" -in cg.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
-check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0" | wc -l)" -ge 5 ]'
+check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0 && \$17 > 0" | wc -l)" -ge 5 ]'
 
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;
