@@ -468,7 +468,7 @@ static bigint next_multiple(bigint step, int every)
 }
 
 /* Dumps that run on several ranks: the atoms' own fields, gathered (par.h). */
-static const char *const across_ranks[] = {"atom", "custom", "vtk", "custom/vtk", NULL};
+static const char *const across_ranks[] = {"atom", "custom", "vtk", "custom/vtk", "local", NULL};
 
 void dump_setup_all(struct gravel *g)
 {

@@ -11,7 +11,8 @@
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
-# file byte-identical); the standard computes in thermo and dumps, and the files of
+# file byte-identical); the standard computes in thermo and dumps, dump local of
+# property/local and pair/local, and the files of
 # fix ave/time, ave/chunk and ave/histo; restart files
 # written on N ranks and read on M (an exact
 # continuation, as one process writing and reading); equal-style variables in
@@ -309,6 +310,44 @@ rm -f d.*.txt v_*.vtk # the chute's dumps
 same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
 check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0 && \$17 > 0" | wc -l)" -ge 5 ]'
+
+# dump local of compute property/local and pair/local (dist, normal force) on
+# several ranks: the pairs of every rank's atoms gathered, in atom-ID order,
+# rank 0 writes; each file the same bytes as one process's
+cat > loc.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 10 0 10 0 10
+create_box      1 box
+region          fill block 0 10 0 10 1 9
+create_atoms    1 region fill
+set             group all diameter 0.98 density 1.9098593
+velocity        all create 5.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.2 bin
+fix             1 all nve/sphere
+fix             2 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 10.0
+timestep        0.0002
+compute         pl all property/local patom1 patom2 ptype1 cutoff radius
+compute         pf all pair/local dist force fx fy fz cutoff radius
+dump            1 all local 100 d.loc.*.txt index c_pl[1] c_pl[2] c_pf[1] c_pf[2] c_pf[3]
+dump_modify     1 format float %.17g
+thermo_modify   format float %.17g
+thermo          50
+run             300
+write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
+IN
+"$serial" -in loc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check dump_local_written '[ "$(ls ref/d.loc.*.txt | wc -l)" -eq 4 ] && [ "$(wc -l < ref/d.loc.100.txt)" -gt 100 ]'
+same dump_local_np3 loc.in 3 ""
+# pair/local's pN values read each rank's stored contact history: refused
+sed 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4/' loc.in > locp.in
+mpirun -np 2 "$par" -in locp.in -log none > locp.out 2>&1; rc=$?
+check pair_local_history_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" locp.out)" -eq 1 ] && grep -q "compute pair/local pN" locp.out'
 
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;
