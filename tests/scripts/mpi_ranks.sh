@@ -234,11 +234,12 @@ check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 80
 "$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
-# equal-style variables in thermo: thermo keywords, computes (summed and gathered)
-# and group functions, evaluated on every rank's atoms as one process
-grep -v '^dump' chute.in | sed 's/^thermo_style    custom .*/compute t active temp\nvariable kk equal ke*2+c_1\nvariable m equal mass(active)\nvariable zc equal xcm(active,z)\nvariable vx equal vcm(active,x)\nvariable n equal count(active)\nvariable tt equal c_t\/(1+step)\nvariable w equal v_kk\/v_n\nthermo_style custom step atoms v_kk v_m v_zc v_vx v_n v_tt v_w/' > var.in
+# equal-style variables in thermo: thermo keywords (the pressure and energies
+# taken before the gather), computes (summed and gathered) and group functions,
+# evaluated on every rank's atoms as one process; compute pressure
+grep -v '^dump' chute.in | sed 's/^thermo_style    custom .*/compute t active temp\nvariable kk equal ke*2+c_1\nvariable m equal mass(active)\nvariable zc equal xcm(active,z)\nvariable vx equal vcm(active,x)\nvariable n equal count(active)\nvariable tt equal c_t\/(1+step)\nvariable w equal v_kk\/v_n\ncompute pr all pressure thermo_temp\nvariable pp equal press+pxy*2+pe+etotal\nthermo_style custom step atoms v_kk v_m v_zc v_vx v_n v_tt v_w c_pr c_pr[4] v_pp/' > var.in
 "$serial" -in var.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
-check thermo_variables_seen '[ "$(rows ref.out | awk "NR > 1 && \$3 > 0 && \$9 > 0" | wc -l)" -ge 4 ]'
+check thermo_variables_seen '[ "$(rows ref.out | awk "NR > 1 && \$3 > 0 && \$9 > 0 && \$10 > 0 && \$12 > \$10" | wc -l)" -ge 4 ]'
 same thermo_variables_np3 var.in 3 ""
 
 # fix pour (tests/reference/pour: ranges, rate, poly diameters into a cylinder,
@@ -432,6 +433,10 @@ check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ra
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > varf.in
 mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
 check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix a (ave/time)" varf.out'
+# ... or compute pressure (each rank's contacts' virial)
+sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
+mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
+check variable_pressure_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varp.out)" -eq 1 ] && grep -q "compute pr pressure read by a variable" varp.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
