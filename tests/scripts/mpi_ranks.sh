@@ -186,6 +186,12 @@ same empty_subdomain_np3 low.in 3 "" "1 1 3"
 "$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same mill_np3 mill.in 3 "-var nsteps 1200"
 check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
+# the mill's mesh dumps (its geometry, the same on every rank: rank 0 writes) and the
+# atoms' vtk dump sorted by ID, every file byte-identical
+sed 's/^run  /dump mv all mesh\/vtk 400 v_mesh_*.vtk\ndump ms all mesh\/stl 400 d.mesh_*.stl.txt\ndump av all vtk 400 v_atoms_*.vtk\ndump_modify av sort id\nrun  /' mill.in > millm.in
+"$serial" -in millm.in -var nsteps 800 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check mill_mesh_dumps_written '[ "$(ls ref/v_mesh_*.vtk | wc -l)" -eq 3 ] && [ "$(ls ref/d.mesh_*.stl.txt | wc -l)" -eq 3 ] && grep -q "^solid" ref/d.mesh_800.stl.txt'
+same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
 
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
