@@ -664,7 +664,6 @@ static double clock_now(struct gravel *g)
     return st->firstflag ? 0.0 : output_wall() - st->wall0;
 }
 
-/* Value of keyword k. Integers come back in *ival with *isint set. */
 /* The keywords a gathered evaluation cannot compute (the device's virial and
  * energies of each rank's contacts): their slot in output_state.pre, or -1. */
 static const int pre_kw[PRE_KW] = {KW_PE,  KW_ETOTAL, KW_EPAIR, KW_PRESS, KW_PXX,
@@ -678,6 +677,7 @@ static int pre_slot(int k)
     return -1;
 }
 
+/* Value of keyword k. Integers come back in *ival with *isint set. */
 static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
     struct output_state *st = output_state(g);
