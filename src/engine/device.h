@@ -54,11 +54,22 @@ struct hook_lists {
 #define GR_HIST_MAX 16 /* REALs of contact history per contact, at most */
 
 /* What a finished run reports (thermo_footer prints it LAMMPS-style). */
+/* One quantity over the ranks, as LAMMPS's Finish reports it: min, mean,
+ * max, the %varavg imbalance sqrt(<t^2>/<t> - <t>) x 100 (0 for a mean under
+ * 1 ms) and a 10-bin histogram of the ranks' values (one process: all in the
+ * first bin). */
+struct rank_spread {
+    double min, avg, max, varavg;
+    int histo[10];
+};
+
+enum { RUN_SEC_PAIR, RUN_SEC_NEIGH, RUN_SEC_OUTPUT, RUN_SEC_MODIFY, RUN_SEC_N };
+
 struct run_stats {
     bigint nsteps;
     int natoms;
     double t_total;                 /* wall seconds of the loop */
-    double t_pair, t_neigh, t_modify, t_output, t_other;
+    double t_pair, t_neigh, t_modify, t_output;
     bigint nbuilds, ndanger;
     double total_neighbors;         /* entries in the last list built */
     double max_overlap_frac;        /* largest overlap / radius: pairs at outputs,
@@ -76,6 +87,9 @@ struct run_stats {
      * migration) and of the bytes each rank adds to collectives (sums,
      * gathers, decisions) and their number */
     double comm_bytes, comm_msgs, coll_bytes, coll_calls;
+    /* the footer's rows over the ranks: section times (RUN_SEC_*), owned
+     * atoms and neighbor pairs per rank */
+    struct rank_spread sec[RUN_SEC_N], atoms, neighs;
 };
 
 struct engine {

@@ -467,8 +467,11 @@ static bigint next_multiple(bigint step, int every)
     return (step / every) * every + every;
 }
 
-/* Dumps that run on several ranks: the atoms' own fields, gathered (par.h). */
-static const char *const across_ranks[] = {"atom", "custom", "vtk", "custom/vtk", NULL};
+/* Dumps that run on several ranks: the atoms' own fields and the local
+ * computes' rows, gathered (par.h); the meshes' geometry, the same on every
+ * rank. Rank 0 writes. */
+static const char *const across_ranks[] = {"atom",  "custom",   "vtk",      "custom/vtk",
+                                           "local", "mesh/stl", "mesh/vtk", NULL};
 
 void dump_setup_all(struct gravel *g)
 {

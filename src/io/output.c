@@ -251,10 +251,11 @@ void output_step(struct gravel *g)
 
 /* One row of LAMMPS' "MPI task timing breakdown" table (one process:
  * min = avg = max, no variation). */
-static void timing_row(struct gravel *g, const char *label, double t, double total)
+static void timing_row(struct gravel *g, const char *label, const struct rank_spread *s,
+                       double total)
 {
-    gr_print(g, "%-8s| %-10.5g | %-10.5g | %-10.5g |%6.1f |%6.2f\n", label, t, t, t, 0.0,
-             total > 0 ? 100.0 * t / total : 0.0);
+    gr_print(g, "%-8s| %-10.5g | %-10.5g | %-10.5g |%6.1f |%6.2f\n", label, s->min, s->avg,
+             s->max, s->varavg, total > 0 ? 100.0 * s->avg / total : 0.0);
 }
 
 /* LAMMPS 2021 formats these with fmt's "{:W.N}" on a double: "%#W.Ng"
@@ -270,13 +271,15 @@ static void showpoint(char *buf, size_t n, int width, int prec, double v)
     }
 }
 
-/* "Nlocal: ..." with its one-bin histogram, as LAMMPS for one process. */
-static void stat_row(struct gravel *g, const char *label, double v)
+/* "Nlocal: ..." over the ranks and its histogram, as LAMMPS prints them. */
+static void stat_row(struct gravel *g, const char *label, const struct rank_spread *s)
 {
     char ave[64];
-    showpoint(ave, sizeof ave, 11, 6, v);
-    gr_print(g, "%-10s %s ave %11.6g max %11.6g min\n", label, ave, v, v);
-    gr_print(g, "Histogram: 1 0 0 0 0 0 0 0 0 0\n");
+    showpoint(ave, sizeof ave, 11, 6, s->avg);
+    gr_print(g, "%-10s %s ave %11.6g max %11.6g min\nHistogram:", label, ave, s->max, s->min);
+    for (int k = 0; k < 10; k++)
+        gr_print(g, " %d", s->histo[k]);
+    gr_print(g, "\n");
 }
 
 void output_abort(struct gravel *g)
@@ -327,28 +330,27 @@ void output_finish(struct gravel *g, const struct run_stats *s)
                      atom_steps * 1e-3);
     }
 
-    double other = s->t_other;
-    if (other <= 0) {
-        other = t - (s->t_pair + s->t_neigh + s->t_output + s->t_modify);
-        if (other < 0)
-            other = 0;
-    }
+    const struct rank_spread *sec = s->sec;
+    double other = t - (sec[RUN_SEC_PAIR].avg + sec[RUN_SEC_NEIGH].avg +
+                        sec[RUN_SEC_OUTPUT].avg + sec[RUN_SEC_MODIFY].avg);
+    if (other < 0)
+        other = 0;
     gr_print(g, "\nMPI task timing breakdown:\n"
                 "Section |  min time  |  avg time  |  max time  |%%varavg| %%total\n"
                 "---------------------------------------------------------------\n");
-    timing_row(g, "Pair", s->t_pair, t);
-    timing_row(g, "Neigh", s->t_neigh, t);
-    timing_row(g, "Output", s->t_output, t);
-    timing_row(g, "Modify", s->t_modify, t);
+    timing_row(g, "Pair", &sec[RUN_SEC_PAIR], t);
+    timing_row(g, "Neigh", &sec[RUN_SEC_NEIGH], t);
+    timing_row(g, "Output", &sec[RUN_SEC_OUTPUT], t);
+    timing_row(g, "Modify", &sec[RUN_SEC_MODIFY], t);
     gr_print(g, "Other   |            | %-10.4g |            |       |%6.2f\n", other,
              t > 0 ? 100.0 * other / t : 0.0);
 
     gr_print(g, "\n");
-    stat_row(g, "Nlocal:", s->natoms);
+    stat_row(g, "Nlocal:", &s->atoms);
     /* gravel's lists are full (each pair twice); LAMMPS reports its half
      * list, each pair once: print pairs so the numbers compare */
     double pairs = s->total_neighbors / 2;
-    stat_row(g, "Neighs:", pairs);
+    stat_row(g, "Neighs:", &s->neighs);
     gr_print(g, "\nTotal # of neighbors = %.8g\n", pairs);
     if (s->natoms > 0) {
         char ave[64];

@@ -14,8 +14,8 @@
  *    line is due); a loop may call output_step only when it says 1.
  *  - at the end call output_finish(g, &stats): it erases the progress line,
  *    completes appending dump files, and prints LAMMPS' footer. run_stats:
- *    t_other may be 0 (then total minus the other sections is printed);
- *    total_neighbors is the number of entries in gravel's full list (each
+ *    the timing rows from sec[] (Other: the loop time minus their means),
+ *    Nlocal and Neighs from atoms and neighs; total_neighbors is the number of entries in gravel's full list (each
  *    pair twice): the footer prints pairs, like LAMMPS' half list;
  *    max_overlap_frac is printed as given.
  *  - a run that stops on an error calls output_abort(g) first.

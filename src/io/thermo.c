@@ -133,6 +133,7 @@ struct output_state *output_state(struct gravel *g)
     if (!g->thermo.state) {
         g->thermo.state = gr_calloc(g, 1, sizeof *g->thermo.state);
         g->thermo.state->last_thermo = -1;
+        g->thermo.state->pre_step = -1;
         g->thermo.state->wall0 = output_wall();
     }
     return g->thermo.state;
@@ -663,6 +664,19 @@ static double clock_now(struct gravel *g)
     return st->firstflag ? 0.0 : output_wall() - st->wall0;
 }
 
+/* The keywords a gathered evaluation cannot compute (the device's virial and
+ * energies of each rank's contacts): their slot in output_state.pre, or -1. */
+static const int pre_kw[PRE_KW] = {KW_PE,  KW_ETOTAL, KW_EPAIR, KW_PRESS, KW_PXX,
+                                    KW_PYY, KW_PZZ,    KW_PXY,   KW_PXZ,   KW_PYZ};
+
+static int pre_slot(int k)
+{
+    for (int q = 0; q < PRE_KW; q++)
+        if (pre_kw[q] == k)
+            return q;
+    return -1;
+}
+
 /* Value of keyword k. Integers come back in *ival with *isint set. */
 static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
@@ -672,11 +686,13 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     double natoms = (double)nall;
     int norm = norm_flag(g) && nall > 0;
     *isint = keywords[k].type == V_BIGINT;
-    if (par_gathered(g) && (k == KW_ETOTAL || k == KW_PE || k == KW_EPAIR || k == KW_PRESS ||
-                            (k >= KW_PXX && k <= KW_PYZ)))
+    if (par_gathered(g) && pre_slot(k) >= 0) { /* from before the gather (pre_take) */
+        if (st->pre_step == g->step)
+            return st->pre[pre_slot(k)];
         gr_error(g, "thermo keyword %s read by a compute or variable on every rank's atoms: "
                     "not built yet on %d MPI ranks (doc/parallel.md)", keywords[k].header,
                  comm_size());
+    }
     switch ((enum kw_id)k) {
     case KW_STEP: *ival = g->step; return (double)g->step;
     case KW_ELAPSED: *ival = g->step - g->firststep; return (double)*ival;
@@ -818,6 +834,12 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
         if (!fix_parse_ref(name, id, &index, &col) || !fix_find(g, id))
             return 0;
         struct fix *f = fix_ref_check(g, name, "reference");
+        if ((par_on(g) || par_gathered(g)) && !par_fix_value_global(f)) {
+            char why[160];
+            snprintf(why, sizeof why, "a variable reading fix %.40s (%.40s)", f->id,
+                     f->style->name);
+            par_refuse(g, why);
+        }
         if (index == 0)
             run_sync_host(g);
         *out = fix_output(g, f, index, col, 0, "reference");
@@ -851,6 +873,19 @@ const char *thermo_header_text(struct gravel *g)
     return st->text ? st->text : "";
 }
 
+/* Several ranks, before variables are evaluated on the gathered atoms: the
+ * step's pre_kw values, as keyword_value gives them on this rank's share. */
+static void pre_take(struct gravel *g)
+{
+    struct output_state *st = output_state(g);
+    for (int q = 0; q < PRE_KW; q++) {
+        bigint iv = 0;
+        int isint;
+        st->pre[q] = keyword_value(g, pre_kw[q], &iv, &isint);
+    }
+    st->pre_step = g->step;
+}
+
 /* c_ID...: a compute that evaluates on every rank's atoms (compute.h) */
 static int gathers(struct gravel *g, const char *col)
 {
@@ -880,9 +915,15 @@ const char *thermo_line_text(struct gravel *g)
     /* evaluate everything first: computes and variables may raise errors;
      * several ranks: the computes that need every atom after the rest, on
      * every rank's atoms gathered (one gather per line) */
-    int norm = norm_flag(g), gather = 0, late[GR_MAXTHERMO];
-    for (int i = 0; i < st->ncol; i++)
-        late[i] = st->kind[i] == KIND_COMPUTE && par_on(g) && gathers(g, t->col[i]);
+    int norm = norm_flag(g), gather = 0, late[GR_MAXTHERMO], vars = 0;
+    for (int i = 0; i < st->ncol; i++) { /* variables too: their keywords, group
+                                          * functions and computes see every atom */
+        late[i] = par_on(g) && ((st->kind[i] == KIND_COMPUTE && gathers(g, t->col[i])) ||
+                                st->kind[i] == KIND_VARIABLE);
+        vars |= late[i] && st->kind[i] == KIND_VARIABLE;
+    }
+    if (vars)
+        pre_take(g);
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < st->ncol; i++) {
             int k = st->kind[i], isint = 0;
@@ -906,6 +947,7 @@ const char *thermo_line_text(struct gravel *g)
     }
     if (gather)
         par_gather_end(g);
+    st->pre_step = -1; /* only this line's gathered pass reads them */
     text_clear(g);
     if (t->multi)
         text_add(g, "---------------- Step %8lld ----- CPU = %11.4f (sec) ----------------",

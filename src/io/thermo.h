@@ -11,6 +11,8 @@
 #include "state.h"
 
 /* Run-time state of the output module, one per engine (g->thermo.state). */
+enum { PRE_KW = 10 };           /* pe etotal epair press pxx pyy pzz pxy pxz pyz */
+
 struct output_state {
     int active;                 /* between output_setup and output_finish */
     double wall0;               /* monotonic seconds at output_setup */
@@ -34,6 +36,11 @@ struct output_state {
     int drift_on;
     double drift_e0, drift_t0, drift_tcol;
     size_t text_len, text_cap;
+    /* several ranks: the step's pressure and energy keywords (thermo.c,
+     * PRE_KW), taken before a gathered evaluation of variables, which cannot
+     * compute them on the gathered atoms */
+    bigint pre_step;            /* the step they are of (-1: none) */
+    double pre[PRE_KW];
 };
 
 /* The state, allocated on first use; freed by thermo_settings_free. */

@@ -177,13 +177,18 @@ static int listed(const char *const *list, const char *name)
 
 /* f_ID[...] of a fix whose global values are summed over the ranks
  * (mesh/surface: the force and torque on the mesh) */
+int par_fix_value_global(const struct fix *f)
+{
+    return !strcmp(f->style->name, "mesh/surface");
+}
+
 static int fix_summed(struct gravel *g, const char *ref)
 {
     size_t len = strcspn(ref, "[");
     for (int i = 0; i < g->styles.nfix; i++) {
         const struct fix *f = g->styles.fix[i];
         if (strlen(f->id) == len && !strncmp(f->id, ref, len))
-            return !strcmp(f->style->name, "mesh/surface");
+            return par_fix_value_global(f);
     }
     return 0;
 }
@@ -220,7 +225,7 @@ static void check_scene(struct gravel *g)
         const char *c = g->thermo.col[i];
         if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))
             continue;
-        if (!listed(kw, c) && strncmp(c, "c_", 2) != 0) {
+        if (!listed(kw, c) && strncmp(c, "c_", 2) != 0 && strncmp(c, "v_", 2) != 0) {
             snprintf(buf, sizeof buf, "thermo keyword %.60s", c);
             why = buf;
         }

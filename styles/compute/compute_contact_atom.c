@@ -53,6 +53,7 @@ static void contact_peratom(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_contact_atom = {
     .name = "contact/atom",
+    .ranks = COMPUTE_RANKS_GATHER, /* whole counts: any order gives the same values */
     .create = contact_create,
     .peratom = contact_peratom,
 };

@@ -29,6 +29,7 @@
 #include "fix.h"
 #include "host_pairs.h"
 #include "pair.h"
+#include "par.h"
 
 enum { V_DIST, V_ENG, V_FORCE, V_FX, V_FY, V_FZ, V_P };
 static const char *const names[] = {"dist", "eng", "force", "fx", "fy", "fz"};
@@ -136,6 +137,8 @@ static void pl_local(struct gravel *g, struct compute *c)
         wants_sv |= pl->v[q] >= V_P;
     double *hist = NULL, sv[64];
     int hw = 0;
+    if (wants_sv && par_gathered(g)) /* the contacts' history is on each rank's device */
+        par_refuse(g, "compute pair/local pN (the contacts' stored history)");
     if (wants_sv && np > 0) {
         hist = gr_malloc(g, (size_t)np * HOST_PAIRS_HIST_MAX * sizeof *hist);
         hw = host_pairs_history(g, p, np, hist);
@@ -184,8 +187,11 @@ static void pl_local(struct gravel *g, struct compute *c)
     free(hist);
 }
 
+/* several ranks: dist, eng, force, fx fy fz from the gathered atoms as one
+ * process (pairs in atom-ID order); pN reads the device's history: refused */
 const struct compute_style compute_style_pair_local = {
     .name = "pair/local",
+    .ranks = COMPUTE_RANKS_GATHER,
     .create = pl_create,
     .init = pl_init,
     .local = pl_local,

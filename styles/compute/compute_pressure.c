@@ -8,10 +8,12 @@
  * pressure is of the whole system). Global scalar and the pressure tensor
  * as a 6-vector pxx pyy pzz pxy pxz pyz (pressure_tensor; xz yz zz are 0 in
  * 2d), both intensive. */
+#include <stdio.h>
 #include <string.h>
 
 #include "compute.h"
 #include "error.h"
+#include "par.h"
 #include "pressure.h"
 
 struct press {
@@ -76,20 +78,36 @@ static void init(struct gravel *g, struct compute *c)
     temperature(g, c);
 }
 
+/* several ranks: each rank's contacts' virial, summed in tag order
+ * (src/engine/pressure.c); a variable's evaluation on the gathered atoms has
+ * no contacts to read */
+static void ranks_check(struct gravel *g, struct compute *c)
+{
+    if (par_gathered(g)) {
+        char why[160];
+        snprintf(why, sizeof why, "compute %.40s pressure read by a variable (the thermo "
+                                  "keywords press and pxx ... pyz can be)", c->id);
+        par_refuse(g, why);
+    }
+}
+
 static double scalar(struct gravel *g, struct compute *c)
 {
     struct press *p = c->data;
+    ranks_check(g, c);
     return pressure_parts(g, temperature(g, c), p->keflag, p->virialflag);
 }
 
 static void vector(struct gravel *g, struct compute *c)
 {
     struct press *p = c->data;
+    ranks_check(g, c);
     pressure_tensor(g, temperature(g, c), p->keflag, p->virialflag, c->vector);
 }
 
 const struct compute_style compute_style_pressure = {
     .name = "pressure",
+    .ranks = COMPUTE_RANKS_SUMS,
     .create = create,
     .init = init,
     .scalar = scalar,

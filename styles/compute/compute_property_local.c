@@ -96,6 +96,7 @@ static void pr_local(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_property_local = {
     .name = "property/local",
+    .ranks = COMPUTE_RANKS_GATHER, /* pairs of the gathered atoms, in atom-ID order */
     .create = pr_create,
     .local = pr_local,
 };

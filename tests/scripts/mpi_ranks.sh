@@ -11,10 +11,12 @@
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
-# file byte-identical); the standard computes in thermo and dumps, and the files of
+# file byte-identical); the standard computes in thermo and dumps, dump local of
+# property/local and pair/local, and the files of
 # fix ave/time, ave/chunk and ave/histo; restart files
 # written on N ranks and read on M (an exact
-# continuation, as one process writing and reading); errors end every rank with
+# continuation, as one process writing and reading); equal-style variables in
+# thermo; errors end every rank with
 # one message (doc/parallel.md).
 cd "$(dirname "$0")/../.." || exit 1
 root=$(pwd)
@@ -157,6 +159,20 @@ same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
 same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
+# the footer over the ranks, as LAMMPS prints it (the last run's): Nlocal's mean
+# is atoms / ranks (1728 / N), min <= mean <= max, the histogram counts every
+# rank once, and each timing row has min <= avg <= max
+footer_ok() { # file, ranks, atoms
+    awk -v np="$2" -v na="$3" '
+        /^Nlocal:/ { a = $2; mx = $4; mn = $6; getline; s = 0
+                     for (i = 2; i <= NF; i++) s += $i
+                     nl = (s == np && mn <= a && a <= mx && a * np == na) }
+        /^Section / { rows = good = 0 }
+        /^(Pair|Neigh|Output|Modify) +\|/ { split($0, f, "|"); rows++
+                     if (f[2] + 0 <= f[3] + 0 && f[3] + 0 <= f[4] + 0) good++ }
+        END { exit !(nl && rows == 4 && good == 4) }' "$1"
+}
+check footer_over_ranks 'footer_ok gas_np4.out 4 1728 && footer_ok gas_np8.out 8 1728 && footer_ok ref.out 1 1728'
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
 "$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
@@ -170,6 +186,12 @@ same empty_subdomain_np3 low.in 3 "" "1 1 3"
 "$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same mill_np3 mill.in 3 "-var nsteps 1200"
 check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
+# the mill's mesh dumps (its geometry, the same on every rank: rank 0 writes) and the
+# atoms' vtk dump sorted by ID, every file byte-identical
+sed 's/^run  /dump mv all mesh\/vtk 400 v_mesh_*.vtk\ndump ms all mesh\/stl 400 d.mesh_*.stl.txt\ndump av all vtk 400 v_atoms_*.vtk\ndump_modify av sort id\nrun  /' mill.in > millm.in
+"$serial" -in millm.in -var nsteps 800 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check mill_mesh_dumps_written '[ "$(ls ref/v_mesh_*.vtk | wc -l)" -eq 3 ] && [ "$(ls ref/d.mesh_*.stl.txt | wc -l)" -eq 3 ] && grep -q "^solid" ref/d.mesh_800.stl.txt'
+same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
 
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
@@ -218,6 +240,14 @@ check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 80
 "$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same chute_single_np2 chute.in 2 "-precision single"
 
+# equal-style variables in thermo: thermo keywords (the pressure and energies
+# taken before the gather), computes (summed and gathered) and group functions,
+# evaluated on every rank's atoms as one process; compute pressure
+grep -v '^dump' chute.in | sed 's/^thermo_style    custom .*/compute t active temp\nvariable kk equal ke*2+c_1\nvariable m equal mass(active)\nvariable zc equal xcm(active,z)\nvariable vx equal vcm(active,x)\nvariable n equal count(active)\nvariable tt equal c_t\/(1+step)\nvariable w equal v_kk\/v_n\ncompute pr all pressure thermo_temp\nvariable pp equal press+pxy*2+pe+etotal\nthermo_style custom step atoms v_kk v_m v_zc v_vx v_n v_tt v_w c_pr c_pr[4] v_pp/' > var.in
+"$serial" -in var.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check thermo_variables_seen '[ "$(rows ref.out | awk "NR > 1 && \$3 > 0 && \$9 > 0 && \$10 > 0 && \$12 > \$10" | wc -l)" -ge 4 ]'
+same thermo_variables_np3 var.in 3 ""
+
 # fix pour (tests/reference/pour: ranges, rate, poly diameters into a cylinder,
 # atoms lost through the fixed floor with lost ignore, two pours): every rank draws
 # the same particles against every rank's near atoms and keeps those of its brick
@@ -232,7 +262,7 @@ done
 # computes on several ranks: those summed per owned atom in tag order (temp) and
 # those evaluated on every rank's atoms gathered for the output step (com,
 # gyration, msd, vacf, reduce of ke/atom, property/atom and coord/atom,
-# count/type, com/chunk of chunk/atom bins, cluster/atom), in thermo and in a
+# count/type, com/chunk of chunk/atom bins, cluster/atom, contact/atom), in thermo and in a
 # dump: every value and file the same bits as one process, on 3 and 4 ranks
 cat > cg.in <<'IN'
 units           lj
@@ -271,11 +301,13 @@ compute         ch all chunk/atom bin/1d z lower 3.0 units box
 compute         cc all com/chunk ch
 compute         cl all cluster/atom 1.0
 compute         rl all reduce min c_cl
+compute         cn all contact/atom
+compute         rn all reduce sum c_cn
 compute         t all temp
-thermo_style    custom step atoms ke c_t c_cm[1] c_cm[3] c_gy c_ms[4] c_va[4] c_rk c_rp[1] c_rp[2] c_ct[2] c_rc c_cc[2][3] c_rl
+thermo_style    custom step atoms ke c_t c_cm[1] c_cm[3] c_gy c_ms[4] c_va[4] c_rk c_rp[1] c_rp[2] c_ct[2] c_rc c_cc[2][3] c_rl c_rn
 thermo_modify   norm no format float %.17g
 thermo          100
-dump            d1 all custom 300 d.*.txt id x y z c_ka c_co c_ch c_cl
+dump            d1 all custom 300 d.*.txt id x y z c_ka c_co c_ch c_cl c_cn
 dump_modify     d1 sort id format float %.17g
 run             600
 write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
@@ -284,7 +316,45 @@ rm -f d.*.txt v_*.vtk # the chute's dumps
 "$serial" -in cg.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
-check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0" | wc -l)" -ge 5 ]'
+check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0 && \$17 > 0" | wc -l)" -ge 5 ]'
+
+# dump local of compute property/local and pair/local (dist, normal force) on
+# several ranks: the pairs of every rank's atoms gathered, in atom-ID order,
+# rank 0 writes; each file the same bytes as one process's
+cat > loc.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 10 0 10 0 10
+create_box      1 box
+region          fill block 0 10 0 10 1 9
+create_atoms    1 region fill
+set             group all diameter 0.98 density 1.9098593
+velocity        all create 5.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.2 bin
+fix             1 all nve/sphere
+fix             2 all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 10.0
+timestep        0.0002
+compute         pl all property/local patom1 patom2 ptype1 cutoff radius
+compute         pf all pair/local dist force fx fy fz cutoff radius
+dump            1 all local 100 d.loc.*.txt index c_pl[1] c_pl[2] c_pf[1] c_pf[2] c_pf[3]
+dump_modify     1 format float %.17g
+thermo_modify   format float %.17g
+thermo          50
+run             300
+write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
+IN
+"$serial" -in loc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check dump_local_written '[ "$(ls ref/d.loc.*.txt | wc -l)" -eq 4 ] && [ "$(wc -l < ref/d.loc.100.txt)" -gt 100 ]'
+same dump_local_np3 loc.in 3 ""
+# pair/local's pN values read each rank's stored contact history: refused
+sed 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4/' loc.in > locp.in
+mpirun -np 2 "$par" -in locp.in -log none > locp.out 2>&1; rc=$?
+check pair_local_history_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" locp.out)" -eq 1 ] && grep -q "compute pair/local pN" locp.out'
 
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;
@@ -365,6 +435,14 @@ check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuat
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
 check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (viscous/nonlinear)" ave.out'
+# a variable reading a fix whose value may be one rank's part
+sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > varf.in
+mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
+check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix a (ave/time)" varf.out'
+# ... or compute pressure (each rank's contacts' virial)
+sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
+mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
+check variable_pressure_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varp.out)" -eq 1 ] && grep -q "compute pr pressure read by a variable" varp.out'
 printf 'units lj\nbogus_cmd 1\n' > bad.in
 mpirun -np 3 "$par" -in bad.in -log none > bad.out 2>&1; rc=$?
 check script_error_once '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: bogus_cmd" bad.out)" -eq 1 ]'
