@@ -69,7 +69,7 @@ struct run_stats {
     bigint nsteps;
     int natoms;
     double t_total;                 /* wall seconds of the loop */
-    double t_pair, t_neigh, t_modify, t_output;
+    double t_pair, t_neigh, t_modify, t_output, t_other;
     bigint nbuilds, ndanger;
     double total_neighbors;         /* entries in the last list built */
     double max_overlap_frac;        /* largest overlap / radius: pairs at outputs,
@@ -87,8 +87,10 @@ struct run_stats {
      * migration) and of the bytes each rank adds to collectives (sums,
      * gathers, decisions) and their number */
     double comm_bytes, comm_msgs, coll_bytes, coll_calls;
-    /* the footer's rows over the ranks: section times (RUN_SEC_*), owned
-     * atoms and neighbor pairs per rank */
+    /* ranks_spread 1: the footer's rows over the ranks, section times
+     * (RUN_SEC_*), owned atoms and neighbor pairs per rank (0: one process,
+     * output_finish takes them from the fields above) */
+    int ranks_spread;
     struct rank_spread sec[RUN_SEC_N], atoms, neighs;
 };
 

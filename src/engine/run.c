@@ -471,45 +471,20 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     return freezebit;
 }
 
-/* v[0 .. n-1], one value per rank, as LAMMPS's Finish::stats and
- * mpi_timings summarise them (struct rank_spread). */
-static void spread_of(const double *v, int n, struct rank_spread *s)
-{
-    double sum = 0, sq = 0;
-    s->min = s->max = v[0];
-    for (int r = 0; r < n; r++) {
-        sum += v[r];
-        sq += v[r] * v[r];
-        s->min = fmin(s->min, v[r]);
-        s->max = fmax(s->max, v[r]);
-    }
-    s->avg = sum / n;
-    double var = s->avg > 0 ? sq / n / s->avg - s->avg : 0;
-    s->varavg = s->avg > 0.001 && var > 1e-10 ? 100.0 * sqrt(var) : 0.0;
-    memset(s->histo, 0, sizeof s->histo);
-    double del = s->max - s->min;
-    for (int r = 0; r < n; r++) {
-        int m = del == 0.0 ? 0 : (int)((v[r] - s->min) / del * 10);
-        s->histo[m > 9 ? 9 : m]++;
-    }
-}
-
-/* The footer's spreads over the ranks (one process: its own values): the
- * sections' times, owned atoms, neighbor pairs; the loop time becomes the
- * ranks' mean, as LAMMPS prints it. Before ranks_stats sums the counts. */
+/* A decomposed run's footer spreads over the ranks: the sections' times,
+ * owned atoms, neighbor pairs; the loop time becomes the ranks' mean and
+ * Other the loop's mean minus the sections' means, as LAMMPS prints them.
+ * Before ranks_stats sums the counts. */
 static void spreads(struct gravel *g, struct run_stats *st)
 {
     enum { NQ = RUN_SEC_N + 3 };
     double mine[NQ] = {st->t_pair, st->t_neigh, st->t_output, st->t_modify, st->t_total,
                        (double)st->natoms, st->total_neighbors / 2};
-    double *all = mine;
-    int n = 1;
-    if (par_on(g)) {
-        size_t bytes = comm_allgatherv(mine, sizeof mine, (void **)&all);
-        if (bytes == (size_t)-1)
-            gr_error(g, "out of memory gathering the run's timings");
-        n = (int)(bytes / sizeof mine);
-    }
+    double *all = NULL;
+    size_t bytes = comm_allgatherv(mine, sizeof mine, (void **)&all);
+    if (bytes == (size_t)-1)
+        gr_error(g, "out of memory gathering the run's timings");
+    int n = (int)(bytes / sizeof mine);
     double *col = gr_malloc(g, (size_t)n * sizeof *col);
     struct rank_spread loop;
     struct rank_spread *to[NQ] = {&st->sec[RUN_SEC_PAIR], &st->sec[RUN_SEC_NEIGH],
@@ -518,12 +493,13 @@ static void spreads(struct gravel *g, struct run_stats *st)
     for (int q = 0; q < NQ; q++) {
         for (int r = 0; r < n; r++)
             col[r] = all[(size_t)r * NQ + q];
-        spread_of(col, n, to[q]);
+        rank_spread(col, n, to[q]);
     }
     free(col);
-    if (all != mine)
-        free(all);
+    free(all);
     st->t_total = loop.avg;
+    st->t_other = 0;
+    st->ranks_spread = 1;
 }
 
 /* A decomposed run's statistics over the ranks: atoms, neighbors and
@@ -753,6 +729,7 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *
     st.t_neigh = t[TM_NEIGH];
     st.t_modify = t[TM_MODIFY];
     st.t_output = t[TM_OUTPUT];
+    st.t_other = fmax(0.0, ttot - st.t_pair - st.t_neigh - st.t_modify - st.t_output);
     st.total_neighbors = nbr_total(g);
     st.max_overlap_frac = maxov;
     st.res_q = worst->q;
@@ -763,8 +740,8 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *
     snprintf(st.res_wall, sizeof st.res_wall, "%s", worst->wall);
     st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
-    spreads(g, &st);
     if (par_on(g)) {
+        spreads(g, &st);
         ranks_stats(g, &st);
         par_run_end(g); /* every rank's host holds every atom again */
     }

@@ -271,6 +271,27 @@ static void showpoint(char *buf, size_t n, int width, int prec, double v)
     }
 }
 
+void rank_spread(const double *v, int n, struct rank_spread *s)
+{
+    double sum = 0, sq = 0;
+    s->min = s->max = v[0];
+    for (int r = 0; r < n; r++) {
+        sum += v[r];
+        sq += v[r] * v[r];
+        s->min = fmin(s->min, v[r]);
+        s->max = fmax(s->max, v[r]);
+    }
+    s->avg = sum / n;
+    double var = s->avg > 0 ? sq / n / s->avg - s->avg : 0;
+    s->varavg = s->avg > 0.001 && var > 1e-10 ? 100.0 * sqrt(var) : 0.0;
+    memset(s->histo, 0, sizeof s->histo);
+    double del = s->max - s->min;
+    for (int r = 0; r < n; r++) {
+        int m = del == 0.0 ? 0 : (int)((v[r] - s->min) / del * 10);
+        s->histo[m > 9 ? 9 : m]++;
+    }
+}
+
 /* "Nlocal: ..." over the ranks and its histogram, as LAMMPS prints them. */
 static void stat_row(struct gravel *g, const char *label, const struct rank_spread *s)
 {
@@ -310,8 +331,26 @@ void output_finish_brief(struct gravel *g, const struct run_stats *s)
         fflush(g->logfile);
 }
 
-void output_finish(struct gravel *g, const struct run_stats *s)
+/* One process: its own values as spreads of one rank. */
+static void spreads_one(const struct run_stats *s, struct run_stats *o)
 {
+    *o = *s;
+    const double v[RUN_SEC_N] = {s->t_pair, s->t_neigh, s->t_output, s->t_modify};
+    for (int q = 0; q < RUN_SEC_N; q++)
+        rank_spread(&v[q], 1, &o->sec[q]);
+    double natoms = s->natoms, pairs = s->total_neighbors / 2;
+    rank_spread(&natoms, 1, &o->atoms);
+    rank_spread(&pairs, 1, &o->neighs);
+}
+
+void output_finish(struct gravel *g, const struct run_stats *given)
+{
+    struct run_stats one;
+    const struct run_stats *s = given;
+    if (!given->ranks_spread) {
+        spreads_one(given, &one);
+        s = &one;
+    }
     finish_common(g, s);
     double t = s->t_total;
     if (s->nsteps > 0 && t > 0) {
@@ -331,10 +370,13 @@ void output_finish(struct gravel *g, const struct run_stats *s)
     }
 
     const struct rank_spread *sec = s->sec;
-    double other = t - (sec[RUN_SEC_PAIR].avg + sec[RUN_SEC_NEIGH].avg +
-                        sec[RUN_SEC_OUTPUT].avg + sec[RUN_SEC_MODIFY].avg);
-    if (other < 0)
-        other = 0;
+    double other = s->t_other;
+    if (other <= 0) {
+        other = t - (sec[RUN_SEC_PAIR].avg + sec[RUN_SEC_NEIGH].avg + sec[RUN_SEC_OUTPUT].avg +
+                     sec[RUN_SEC_MODIFY].avg);
+        if (other < 0)
+            other = 0;
+    }
     gr_print(g, "\nMPI task timing breakdown:\n"
                 "Section |  min time  |  avg time  |  max time  |%%varavg| %%total\n"
                 "---------------------------------------------------------------\n");

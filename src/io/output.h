@@ -14,8 +14,9 @@
  *    line is due); a loop may call output_step only when it says 1.
  *  - at the end call output_finish(g, &stats): it erases the progress line,
  *    completes appending dump files, and prints LAMMPS' footer. run_stats:
- *    the timing rows from sec[] (Other: the loop time minus their means),
- *    Nlocal and Neighs from atoms and neighs; total_neighbors is the number of entries in gravel's full list (each
+ *    the timing rows from sec[] (rank_spread; Other: t_other, or when 0
+ *    the loop time minus their means), Nlocal and Neighs from atoms and
+ *    neighs; total_neighbors is the number of entries in gravel's full list (each
  *    pair twice): the footer prints pairs, like LAMMPS' half list;
  *    max_overlap_frac is printed as given.
  *  - a run that stops on an error calls output_abort(g) first.
@@ -35,6 +36,10 @@ void output_setup(struct gravel *g);
 int output_due(struct gravel *g, bigint step);
 void output_step(struct gravel *g);
 void output_finish(struct gravel *g, const struct run_stats *st);
+/* v[0 .. n-1], one value per rank (n = 1: one process), summarised as
+ * LAMMPS's Finish does (struct rank_spread, src/engine/device.h). */
+struct rank_spread;
+void rank_spread(const double *v, int n, struct rank_spread *s);
 /* `run N post no`: the same housekeeping, and only the "Loop time" line of
  * the footer (LAMMPS prints nothing more with post no). */
 void output_finish_brief(struct gravel *g, const struct run_stats *st);

@@ -423,7 +423,16 @@ TEST(schedule_and_footer)
     CHECK(out && strstr(out, "Output  | 0.00020322 | 0.00020322 | 0.00020322 |   0.0 |  0.09\n"));
     CHECK(out && strstr(out, "Other   |            | 0.01368    |            |       |  6.14\n"));
     CHECK(out && strstr(out, "Nlocal:        32000.0 ave       32000 max       32000 min\n"));
-    CHECK(out && strstr(out, "Neighs:        115133.0 ave      115133 max      115133 min\n"));
+    CHECK(out && strstr(out, "Neighs:        115133.0 ave      115133 max      115133 min\n"
+                             "Histogram: 1 0 0 0 0 0 0 0 0 0\n"));
+    /* several ranks (LAMMPS's Finish): min, mean, max, %varavg and the histogram */
+    double ranks[4] = {0.10, 0.12, 0.12, 0.18};
+    struct rank_spread rs;
+    rank_spread(ranks, 4, &rs);
+    CHECK(rs.min == 0.10 && rs.max == 0.18 && fabs(rs.avg - 0.13) < 1e-15);
+    /* sqrt(<t^2>/<t> - <t>) x 100 = sqrt(0.0178/0.13 - 0.13) x 100 */
+    CHECK(fabs(rs.varavg - 100.0 * sqrt(0.0178 / 0.13 - 0.13)) < 1e-9);
+    CHECK(rs.histo[0] == 1 && rs.histo[2] == 2 && rs.histo[9] == 1);
     CHECK(out && strstr(out, "Total # of neighbors = 115133\nAve neighs/atom = 3.5979062\n"
                              "Neighbor list builds = 2\nDangerous builds = 0\n"));
     free(out);
