@@ -20,7 +20,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl kernels/*.h))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay fuzz-merge verify reproduce-agglomeration reproduce-mill
+.PHONY: all deps test run bench clean asan fuzz fuzz-replay fuzz-merge verify reproduce-agglomeration reproduce-mill mill-sensitivity
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -152,6 +152,12 @@ reproduce-mill: deps
 	@sh tools/deps.sh gnuplot-nox
 	@$(MAKE) --no-print-directory all
 	@sh tools/mill/reproduce.sh
+
+# The mill's sensitivity to softening, slice length and end plates, time step, fill and
+# tangential law (doc/mill.md, Sensitivity): 8 runs of 4 revolutions at 70 %, hours on
+# 2 cores. Checkpoints with restart files: run it again after an interruption and it resumes.
+mill-sensitivity: all
+	@sh tools/mill/sensitivity.sh
 
 clean:
 	rm -rf build bin

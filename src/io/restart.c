@@ -270,7 +270,8 @@ void restart_free(struct gravel *g)
 /* ---- fingerprints --------------------------------------------------------------- */
 
 /* What the forces of a step depend on besides the atoms and the list: pair
- * style and coefficients, time step, and the fixes in order. */
+ * style and coefficients, time step, and the fixes in order (an output fix's
+ * arguments not: FIX_OUTPUT). */
 static uint64_t force_fingerprint(const struct gravel *g)
 {
     uint64_t h = FNV_INIT;
@@ -286,7 +287,8 @@ static uint64_t force_fingerprint(const struct gravel *g)
         const struct fix *f = g->styles.fix[i];
         h = fnv1a(h, f->id, strlen(f->id) + 1);
         h = fnv1a(h, f->style->name, strlen(f->style->name) + 1);
-        h = fnv1a(h, &f->arghash, sizeof f->arghash);
+        if (!(f->style->flags & FIX_OUTPUT))
+            h = fnv1a(h, &f->arghash, sizeof f->arghash);
     }
     return h;
 }
@@ -1521,7 +1523,7 @@ static int force_diff(const struct gravel *g, const struct image *im, char *why,
         if (strcmp(f->id, fs->id) || strcmp(f->style->name, fs->style))
             return snprintf(why, len, "fix %d is %s (%s), in the file %s (%s)", k + 1, f->id,
                             f->style->name, fs->id, fs->style) > 0;
-        if (f->arghash != fs->arghash)
+        if (f->arghash != fs->arghash && !(f->style->flags & FIX_OUTPUT))
             return snprintf(why, len, "the group or arguments of fix %s (%s)", f->id,
                             fs->style) > 0;
     }

@@ -93,11 +93,16 @@ enum fix_need {
  *                    and a conservative pair law reports its energy drift.
  *   FIX_STORES_IDS   it holds atoms by their IDs (fix rigid/small's bodies):
  *                    commands that renumber atoms refuse while it exists
- *                    (LAMMPS's Fix::stores_ids). */
+ *                    (LAMMPS's Fix::stores_ids).
+ *   FIX_OUTPUT       it only samples and writes (ave/chunk, ave/time,
+ *                    ave/histo): it never moves an atom or changes a force,
+ *                    so read_restart continues exactly when its arguments
+ *                    differ from the writer's (another file, `append`). */
 enum fix_flag {
     FIX_FROZEN = 1 << 0,
     FIX_CONSERVING = 1 << 1,
     FIX_STORES_IDS = 1 << 2,
+    FIX_OUTPUT = 1 << 3,
 };
 
 #define FIX_MAX_SOURCES 10

@@ -481,6 +481,7 @@ static void sample(struct gravel *g, struct fix *f)
 
 const struct fix_style fix_style_ave_chunk = {
     .name = "ave/chunk",
+    .flags = FIX_OUTPUT,
     .create = ave_create,
     .init = ave_init,
     .setup = sample, /* LAMMPS's setup(): a sample when the run's first step is due */

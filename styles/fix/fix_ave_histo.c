@@ -460,6 +460,7 @@ static void ah_sample(struct gravel *g, struct fix *f)
 
 const struct fix_style fix_style_ave_histo = {
     .name = "ave/histo",
+    .flags = FIX_OUTPUT,
     .create = ah_create,
     .init = ah_init,
     .setup = ah_sample, /* LAMMPS's setup(): a sample when the run's first step is due */

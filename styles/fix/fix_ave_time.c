@@ -522,6 +522,7 @@ static void at_sample(struct gravel *g, struct fix *f)
 
 const struct fix_style fix_style_ave_time = {
     .name = "ave/time",
+    .flags = FIX_OUTPUT,
     .create = at_create,
     .init = at_init,
     .setup = at_sample, /* LAMMPS's setup(): a sample when the run's first step is due */

@@ -3,11 +3,14 @@
 
     mill_stl.py OUT.stl [--diameter D] [--length L] [--lifters K]
                         [--height H] [--top W] [--base B] [--arc-facets M]
-                        [--overhang O]
+                        [--overhang O] [--plates]
 
 The shell is the inner surface of a drum of diameter D about the z axis,
 from z = -O to L + O (open ends: use a periodic z of length L for an axial
-slice, or plane walls for end plates). Its profile is K identical lifters,
+slice), or closed by two end plates at z = 0 and z = L (--plates; the
+overhang is then 0): fans of triangles from the axis to every profile
+point, so the plates follow the lifters and have the shell's material
+(the mesh's type). Its profile is K identical lifters,
 evenly spaced with the first centred at the bottom (angle -90 degrees),
 joined by shell arcs of M flat facets each with vertices on the circle of
 radius D/2. Each lifter is a trapezoidal bar along the whole length: a base
@@ -57,6 +60,7 @@ def main():
     p.add_argument("--base", type=float, default=0.020)
     p.add_argument("--arc-facets", type=int, default=18)
     p.add_argument("--overhang", type=float, default=0.0015)
+    p.add_argument("--plates", action="store_true")
     a = p.parse_args()
     R = 0.5 * a.diameter
     if a.lifters < 0 or a.arc_facets < 1 or not (0 <= a.height < R):
@@ -66,7 +70,8 @@ def main():
     K = a.lifters if a.lifters > 0 else 1
     pts = profile(R, K, a.height if a.lifters > 0 else 0.0, a.top, a.base,
                   a.arc_facets if a.lifters > 0 else a.arc_facets)
-    z0, z1 = -a.overhang, a.length + a.overhang
+    o = 0.0 if a.plates else a.overhang
+    z0, z1 = -o, a.length + o
     tris = []
     n = len(pts)
     for i in range(n):
@@ -74,6 +79,11 @@ def main():
         # p_i -> p_i+1 counterclockwise: (p1, p0, p0 + L, p1 + L) has the inward normal
         tris.append(((x1, y1, z0), (x0, y0, z0), (x0, y0, z1)))
         tris.append(((x1, y1, z0), (x0, y0, z1), (x1, y1, z1)))
+    if a.plates:  # normals +z at z = 0 and -z at z = L: into the mill
+        for i in range(n):
+            (x0, y0), (x1, y1) = pts[i], pts[(i + 1) % n]
+            tris.append(((0.0, 0.0, 0.0), (x0, y0, 0.0), (x1, y1, 0.0)))
+            tris.append(((0.0, 0.0, a.length), (x1, y1, a.length), (x0, y0, a.length)))
     with open(a.out, "w") as fp:
         fp.write("solid mill\n")
         for t in tris:

@@ -491,7 +491,13 @@ def write_doc(res, docdir):
     if not any(r["kind"] == "smooth" for r in res):
         o.append("- Fig. 6.13's smooth mill at 50 % with friction 0.42-0.46: the script has it "
                  "(`MILL_SMOOTH=1 make reproduce-mill`) but it was not run for this page.\n")
-    with open(os.path.join(docdir, "mill.md"), "w") as f:
+    # the sensitivity table (tools/mill/sensitivity.py) stays as it was
+    md = os.path.join(docdir, "mill.md")
+    old = open(md).read() if os.path.exists(md) else ""
+    a, b = old.find("<!-- sensitivity -->"), old.find("<!-- /sensitivity -->")
+    if a >= 0 and b > a:
+        o.append(old[a:b + len("<!-- /sensitivity -->")] + "\n")
+    with open(md, "w") as f:
         f.write("\n".join(o) + "\n")
     print("wrote %s" % os.path.join(docdir, "mill.md"))
 
