@@ -1,0 +1,133 @@
+#!/usr/bin/python3
+"""compare.py - gravel against LAMMPS on the avalanche, from tools/avalanche/compare.sh.
+
+    compare.py RUNDIR PAGE
+
+Reads RUNDIR/ENGINE/ENGINE.log for the engines gravel, lmp1 and lmp2 (thermo
+rows by step, the first copy of each: a resumed run repeats its restart
+step), and writes between the markers <!-- compare --> and <!-- /compare -->
+of PAGE (appended when absent): when the runs part (the first row whose
+kinetic energy differs by more than 1e-6 relative), and per time window the
+means of the front position (c_front: the sand grain farthest down the
+slope), the sand's centre (v_xcm) and its kinetic energy (c_ke) for each
+engine. The yardstick is the two LAMMPS runs: a chaotic flow run twice with
+another summation order (1 and 2 processes) differs by |L1 - L2|; gravel
+agrees with LAMMPS as well as LAMMPS agrees with itself when
+|gravel - (L1 + L2)/2| stays within that spread."""
+import os
+import sys
+
+ENGINES = ["gravel", "lmp1", "lmp2"]
+QUANT = [("c_front", "front x (m)", "%.3f"), ("v_xcm", "sand centre x (m)", "%.3f"),
+         ("c_ke", "kinetic energy (J)", "%.4g")]
+BEGIN, END = "<!-- compare -->", "<!-- /compare -->"
+NWIN = 8
+
+
+def rows(path):
+    """{step: {column: value}} of the thermo rows, first copy of each step, and
+    the loop time summed over the log's runs."""
+    out, cols, loop = {}, None, 0.0
+    for l in open(path):
+        f = l.split()
+        if f[:1] == ["Step"]:
+            cols = f
+        elif l.startswith("Loop time of"):
+            loop += float(f[3])
+            cols = None
+        elif cols and f and f[0].isdigit() and len(f) == len(cols):
+            try:
+                vals = [float(x) for x in f]
+            except ValueError:
+                continue
+            out.setdefault(int(f[0]), dict(zip(cols, vals)))
+    return out, loop
+
+
+def parting(a, b, key="c_ke", tol=1e-6):
+    for s in sorted(set(a) & set(b)):
+        x, y = a[s][key], b[s][key]
+        if abs(x - y) > tol * max(abs(x), abs(y), 1e-300):
+            return a[s]["Time"]
+    return None
+
+
+def window_means(r, t0, t1, key):
+    v = [x[key] for x in r.values() if t0 < x["Time"] <= t1 + 1e-12]
+    return sum(v) / len(v) if v else None
+
+
+def report(rundir):
+    data, loops = {}, {}
+    for e in ENGINES:
+        p = os.path.join(rundir, e, e + ".log")
+        if os.path.exists(p):
+            data[e], loops[e] = rows(p)
+    done = {e: os.path.exists(os.path.join(rundir, e, "done")) for e in data}
+    variables = open(os.path.join(rundir, "variables")).read().strip()
+    o = [BEGIN, "", "## gravel against LAMMPS (measured)", "",
+         "Written by `make compare-avalanche` (tools/avalanche/compare.sh, compare.py) with deck "
+         "variables `%s`: the same deck run by gravel and by LAMMPS (29 Sep 2021 - Update 2) on 1 "
+         "and 2 processes. LAMMPS against itself is the yardstick: the flow is chaotic, so "
+         "summing the forces in another order (2 processes) parts the runs after a while, and "
+         "what remains comparable is statistics. Means over time windows; the last column says how far "
+         "gravel is from the LAMMPS mean in units of the LAMMPS spread |L1 - L2|." % (variables or "none: 002's full deck"), ""]
+    o.append("| engine | rows | last time (s) | finished | loop time (s) |")
+    o.append("|---|---|---|---|---|")
+    for e in ENGINES:
+        if e in data and data[e]:
+            last = max(x["Time"] for x in data[e].values())
+            o.append("| %s | %d | %.2f | %s | %.0f |" % (e, len(data[e]), last,
+                                                        "yes" if done[e] else "no (resumes)", loops[e]))
+        else:
+            o.append("| %s | 0 | - | not run yet | - |" % e)
+    o.append("")
+    if all(e in data and data[e] for e in ENGINES):
+        pg = parting(data["gravel"], data["lmp1"])
+        pl = parting(data["lmp1"], data["lmp2"])
+        def when(t):
+            return "t = %.2f s" % t if t is not None else "not within the run"
+        o.append("Kinetic energies part (1e-6 relative): gravel from LAMMPS-1 %s, LAMMPS-1 from "
+                 "LAMMPS-2 %s." % (when(pg), when(pl)))
+        o.append("")
+        tend = min(max(x["Time"] for x in data[e].values()) for e in ENGINES)
+        o.append("| window (s) | " + " | ".join("%s: gravel / L1 / L2 | dist." % h for _, h, _ in QUANT) + " |")
+        o.append("|---|" + "---|---|" * len(QUANT))
+        worst = {k: 0.0 for k, _, _ in QUANT}
+        for w in range(NWIN):
+            t0, t1 = tend * w / NWIN, tend * (w + 1) / NWIN
+            cells = []
+            for k, _, c in QUANT:
+                g, a, b = (window_means(data[e], t0, t1, k) for e in ENGINES)
+                if None in (g, a, b):
+                    cells += ["-", "-"]
+                    continue
+                spread = abs(a - b)
+                d = abs(g - 0.5 * (a + b))
+                ratio = d / spread if spread > 0 else (0.0 if d == 0 else float("inf"))
+                worst[k] = max(worst[k], ratio)
+                cells += [" / ".join(c % x for x in (g, a, b)), "%.2f" % ratio]
+            o.append("| %.2f-%.2f | %s |" % (t0, t1, " | ".join(cells)))
+        o.append("")
+        o.append("Largest distance of gravel from the LAMMPS mean, in units of the LAMMPS spread, "
+                 "over the windows: " + ", ".join("%s %.2f" % (h, worst[k]) for k, h, _ in QUANT) + ".")
+        o.append("")
+    o.append(END)
+    return "\n".join(o) + "\n"
+
+
+def main():
+    rundir, page = sys.argv[1], sys.argv[2]
+    block = report(rundir)
+    text = open(page).read() if os.path.exists(page) else ""
+    if BEGIN in text and END in text:
+        text = text[:text.index(BEGIN)] + block.rstrip("\n") + text[text.index(END) + len(END):]
+    else:
+        text = text.rstrip("\n") + "\n\n" + block
+    with open(page, "w") as f:
+        f.write(text)
+    print("wrote the comparison into %s" % page)
+
+
+if __name__ == "__main__":
+    main()
