@@ -334,7 +334,8 @@ def write_doc(res, docdir):
              "take one to four weeks per speed. The slice is %.2f mm long (%.2f bead diameters, the shortest periodic "
              "length the neighbor cut-off allows), periodic along the axis, with the thesis's "
              "charge per unit length: %d beads (253,125 x %.5f / 0.27). The end plates of the thesis "
-             "are absent (the slice stands for the middle of the mill). Power and torque are scaled "
+             "are absent (the slice stands for the middle of the mill; the sensitivity study below "
+             "runs a slice twice as long, periodic and closed by end plates). Power and torque are scaled "
              "to the 0.27 m mill by 0.27 / L.\n" % (1e3 * L, L / 0.003, round(937500 * L), L))
     o.append("- **Softened contacts.** Fig. 5.24 gives a shear modulus of 26 GPa (pp) and 0.31 GPa "
              "(ps) with Poisson ratios 0.23 and 0.42 (E = 2 G (1 + nu): 64 GPa and 0.88 GPa). The "
@@ -480,8 +481,8 @@ def write_doc(res, docdir):
     o.append("- The full-length mill with end plates; the thesis's unsoftened moduli and 1e-6 s "
              "step (both only a matter of run time: `-var L 0.27 -var soft 0.528 -var softps 0.859` "
              "(the thesis's normal coefficients; `soft 1 softps 1` is the formula's, 1.89x softer) "
-             "`-var dt 1e-6`, end plates added as wall/pair zplane walls, and the STL "
-             "regenerated with `mill_stl.py --length 0.27`).\n")
+             "`-var dt 1e-6`, and end plates: `-var zbound f -var shell plates.stl` "
+             "with the STL made by `mill_stl.py plates.stl --length 0.27 --plates`).\n")
     o.append("- A point-by-point numeric comparison with fig. 6.7-6.12: the thesis's figures "
              "are images without tabulated values; the comparison above uses the numbers its "
              "text states.\n")
