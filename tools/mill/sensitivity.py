@@ -89,7 +89,8 @@ def mean_se(xs):
 
 
 def variant(d, name, L):
-    ep = epochs(os.path.join(d, name + "_2R.txt"))
+    path = os.path.join(d, name + "_2R.txt")
+    ep = epochs(path) if os.path.exists(path) else None
     if not ep:
         return None
     steps = sorted(ep)
@@ -114,7 +115,7 @@ def variant(d, name, L):
     logp = os.path.join(d, name + ".log")
     res["overlap"] = report.max_overlap(logp)
     lt = report.loop_times(logp)
-    res["ms_per_step"] = 1e3 * sum(t for t, _, _ in lt) / max(1, sum(n for _, _, n in lt)) if lt else None
+    res["ms_per_step"] = 1e3 * sum(t for t, _, _ in lt) / max(1, sum(n for _, n, _ in lt)) if lt else None
     return res
 
 
@@ -134,9 +135,11 @@ def table(rundir):
     settings = open(os.path.join(rundir, "settings")).read().split()
     speed, settle, ave, win = settings
     res = {}
+    started = set()
     for name in ORDER:
         d = os.path.join(rundir, name)
         if os.path.isdir(d):
+            started.add(name)
             r = variant(d, name, slice_length(d))
             if r:
                 res[name] = r
@@ -146,16 +149,18 @@ def table(rundir):
          "revolutions averaged in windows of %s revolution; each figure is the mean over the "
          "windows ± its standard error (windows are not independent: a lower bound of the error). "
          "**Bold**: the mean differs from the base run's by more than twice the combined standard "
-         "error. Power: the slice's drive power times 0.27 m / slice length. A variant still "
+         "error and, for the other variants, by more than the two fills differ (the windows' error "
+         "misses the fill-to-fill noise). Power: the slice's drive power times 0.27 m / slice length. A variant still "
          "running shows the windows it has so far (`make mill-sensitivity` resumes it from its "
          "restart files)." % (round(100 * float(speed)), settle, ave, win), ""]
     o.append("| variant | what changes | windows | " + " | ".join(h for _, h, _ in COLS) +
              " | largest overlap / R | ms per step | run time (s) |")
     o.append("|" + "---|" * (len(COLS) + 6))
-    base = res.get("base")
+    base, fill = res.get("base"), res.get("seed2")
     for name in ORDER:
         if name not in res:
-            o.append("| %s | %s | not run yet |%s" % (name, WHAT[name], " |" * (len(COLS) + 3)))
+            o.append("| %s | %s | %s |%s" % (name, WHAT[name], "settling" if name in started
+                                                 else "not run yet", " |" * (len(COLS) + 3)))
             continue
         r = res[name]
         cells = []
