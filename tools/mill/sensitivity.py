@@ -125,6 +125,20 @@ def slice_length(d):
     return float(f[f.index("L") + 1]) if "L" in f else 0.00675
 
 
+def moved(name, k, res):
+    """True when variant name's mean of k differs from the base run's by more
+    than twice the combined standard error and (but for the second fill
+    itself) by more than the two fills differ."""
+    base, fill = res.get("base"), res.get("seed2")
+    if not base or name == "base" or res[name][k][0] is None or base[k][0] is None:
+        return False
+    (m, se, _), (mb, seb, _) = res[name][k], base[k]
+    e = math.sqrt((se or 0.0) ** 2 + (seb or 0.0) ** 2)
+    noise = abs(fill[k][0] - mb) if name != "seed2" and fill and fill[k][0] is not None else 0.0
+    d = abs(m - mb)
+    return d > 2 * e and d > noise
+
+
 def fmt(c, m, se):
     if m is None:
         return "-"
@@ -156,7 +170,8 @@ def table(rundir):
     o.append("| variant | what changes | windows | " + " | ".join(h for _, h, _ in COLS) +
              " | largest overlap / R | ms per step | run time (s) |")
     o.append("|" + "---|" * (len(COLS) + 6))
-    base, fill = res.get("base"), res.get("seed2")
+    base = res.get("base")
+    shifts = {}
     for name in ORDER:
         if name not in res:
             o.append("| %s | %s | %s |%s" % (name, WHAT[name], "settling" if name in started
@@ -167,16 +182,19 @@ def table(rundir):
         for k, _, c in COLS:
             m, se, _ = r[k]
             s = fmt(c, m, se)
-            if base and name != "base" and m is not None and base[k][0] is not None:
-                bse = base[k][1] or 0.0
-                e = math.sqrt((se or 0.0) ** 2 + bse ** 2)
-                if e > 0 and abs(m - base[k][0]) > 2 * e:
-                    s = "**" + s + "**"
+            if moved(name, k, res):
+                s = "**" + s + "**"
+                shifts.setdefault(k, []).append("%s (%s)" % (name, (c % (m - base[k][0]))))
             cells.append(s)
         o.append("| %s | %s | %d%s | %s | %.3f | %s | %s |" % (
             name, WHAT[name], r["windows"], "" if r["done"] else " (running)", " | ".join(cells),
             r["overlap"], "%.1f" % r["ms_per_step"] if r["ms_per_step"] else "-",
             r["seconds"] if r["seconds"] is not None else "-"))
+    if base:
+        o.append("")
+        o.append("Moved beyond the noise (variant and its shift from the base run): " + "; ".join(
+            "%s: %s" % (h, ", ".join(shifts[k]) if k in shifts else "none")
+            for k, h, _ in COLS) + ".")
     o += ["", END]
     return "\n".join(o) + "\n"
 
