@@ -96,23 +96,12 @@ run 1000
 """
 
 # Cohesive spheres in a Taylor-Green vortex (the agglomeration case's
-# styles, source document 000): fix drag's ops fuse into the gather kernel
-# (post_force and end_of_step), so its steps take the look-ahead.
-DRAG = """units si
-atom_style sphere
-boundary p p p
-region box block -1 1 -1 1 -1 1 units box
-create_box 1 box
-create_atoms 1 random 600 5151 NULL overlap 0.06
-set group all diameter 0.05 density 2000
-velocity all create 1.0 777 loop geom
-pair_style hybrid/overlay linear/restitution 1e5 0.5 0.1 kf 1e5 cohesion 150
-pair_coeff * * linear/restitution
-pair_coeff * * cohesion 0.075
-neighbor 0.025 bin
-fix 1 all nve/sphere
-fix 2 all drag 0.05 taylor_green 5 3 update {update}
-timestep 0.0002
+# styles, source document 000; tests/reference/scenes): fix drag's ops fuse
+# into the gather kernel (post_force and end_of_step), so its steps take the
+# look-ahead.
+SCENE = os.path.join(ROOT, "tests", "reference", "scenes", "cohesive_taylor_green.in")
+DRAG = """variable update index {update}
+include {scene}
 thermo_style custom step ke
 thermo_modify format float %.17g
 thermo 100
@@ -136,7 +125,7 @@ def check_drag():
     update it fuses; the fused run must launch fewer kernels per step."""
     bad = 0
     for update in ("explicit", "implicit", "exact"):
-        deck = DRAG.format(update=update)
+        deck = DRAG.format(update=update, scene=SCENE)
         rows_f, dump_f, out_f = run_full(deck)
         for name, env in (("unfused", {"GRAVEL_FUSE": "0"}),
                           ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"})):

@@ -197,23 +197,9 @@ same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
-cat > agglo.in <<'IN'
-units           si
-atom_style      sphere
-boundary        p p p
-comm_modify     vel yes
-region          box block -1 1 -1 1 -1 1 units box
-create_box      1 box
-create_atoms    1 random 600 5151 NULL overlap 0.06
-set             group all diameter 0.05 density 2000
-velocity        all create 1.0 777 loop geom
-pair_style      hybrid/overlay linear/restitution 1e5 0.5 0.1 kf 1e5 cohesion 150
-pair_coeff      * * linear/restitution
-pair_coeff      * * cohesion 0.075
-neighbor        0.025 bin
-fix             1 all nve/sphere
-fix             2 all drag 0.05 taylor_green 5 3 update implicit
-timestep        0.0002
+cat > agglo.in <<IN
+variable        update index implicit
+include         $root/tests/reference/scenes/cohesive_taylor_green.in
 compute         ag all agglomerate file d.hist.txt
 thermo_style    custom step c_ag[1] c_ag[2] c_ag[3] c_ag[4] c_ag[5] ke
 thermo_modify   format float %.17g
