@@ -5,7 +5,8 @@
 
 Reads RUNDIR/ENGINE/ENGINE.log for the engines gravel, lmp1 and lmp2 (thermo
 rows by step, the first copy of each: a resumed run repeats its restart
-step), and writes between the markers <!-- compare --> and <!-- /compare -->
+step; time = step x the first run's time step, as LAMMPS 2021 restarts its
+`time` at read_restart), and writes between the markers <!-- compare --> and <!-- /compare -->
 of PAGE (appended when absent): when the runs part (the first row whose
 kinetic energy differs by more than 1e-6 relative), and per time window the
 means of the front position (c_front: the sand grain farthest down the
@@ -41,6 +42,11 @@ def rows(path):
             except ValueError:
                 continue
             out.setdefault(int(f[0]), dict(zip(cols, vals)))
+    # time from the step: LAMMPS 2021's read_restart restarts its `time` at 0
+    first = min((s for s in out if s > 0), default=None)
+    dt = out[first]["Time"] / first if first else 0.0
+    for s, r in out.items():
+        r["Time"] = s * dt
     return out, loop
 
 
