@@ -477,25 +477,13 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
  * Before ranks_stats sums the counts. */
 static void spreads(struct gravel *g, struct run_stats *st)
 {
-    enum { NQ = RUN_SEC_N + 3 };
-    double mine[NQ] = {st->t_pair, st->t_neigh, st->t_output, st->t_modify, st->t_total,
-                       (double)st->natoms, st->total_neighbors / 2};
-    double *all = NULL;
+    double mine[RUN_ROW_N], *all = NULL;
+    run_stats_row(st, mine);
     size_t bytes = comm_allgatherv(mine, sizeof mine, (void **)&all);
     if (bytes == (size_t)-1)
         gr_error(g, "out of memory gathering the run's timings");
-    int n = (int)(bytes / sizeof mine);
-    double *col = gr_malloc(g, (size_t)n * sizeof *col);
     struct rank_spread loop;
-    struct rank_spread *to[NQ] = {&st->sec[RUN_SEC_PAIR], &st->sec[RUN_SEC_NEIGH],
-                                  &st->sec[RUN_SEC_OUTPUT], &st->sec[RUN_SEC_MODIFY], &loop,
-                                  &st->atoms, &st->neighs};
-    for (int q = 0; q < NQ; q++) {
-        for (int r = 0; r < n; r++)
-            col[r] = all[(size_t)r * NQ + q];
-        rank_spread(col, n, to[q]);
-    }
-    free(col);
+    run_stats_spread(st, all, (int)(bytes / sizeof mine), &loop);
     free(all);
     st->t_total = loop.avg;
     st->t_other = 0;

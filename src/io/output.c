@@ -273,13 +273,19 @@ static void showpoint(char *buf, size_t n, int width, int prec, double v)
 
 void rank_spread(const double *v, int n, struct rank_spread *s)
 {
+    rank_spread_strided(v, n, 1, s);
+}
+
+void rank_spread_strided(const double *v, int n, int stride, struct rank_spread *s)
+{
     double sum = 0, sq = 0;
     s->min = s->max = v[0];
     for (int r = 0; r < n; r++) {
-        sum += v[r];
-        sq += v[r] * v[r];
-        s->min = fmin(s->min, v[r]);
-        s->max = fmax(s->max, v[r]);
+        double x = v[(size_t)r * stride];
+        sum += x;
+        sq += x * x;
+        s->min = fmin(s->min, x);
+        s->max = fmax(s->max, x);
     }
     s->avg = sum / n;
     double var = s->avg > 0 ? sq / n / s->avg - s->avg : 0;
@@ -287,7 +293,7 @@ void rank_spread(const double *v, int n, struct rank_spread *s)
     memset(s->histo, 0, sizeof s->histo);
     double del = s->max - s->min;
     for (int r = 0; r < n; r++) {
-        int m = del == 0.0 ? 0 : (int)((v[r] - s->min) / del * 10);
+        int m = del == 0.0 ? 0 : (int)((v[(size_t)r * stride] - s->min) / del * 10);
         s->histo[m > 9 ? 9 : m]++;
     }
 }
@@ -331,16 +337,30 @@ void output_finish_brief(struct gravel *g, const struct run_stats *s)
         fflush(g->logfile);
 }
 
+void run_stats_row(const struct run_stats *st, double row[RUN_ROW_N])
+{
+    const double v[RUN_ROW_N] = {st->t_pair, st->t_neigh, st->t_output, st->t_modify,
+                                 st->t_total, (double)st->natoms, st->total_neighbors / 2};
+    memcpy(row, v, sizeof v);
+}
+
+void run_stats_spread(struct run_stats *st, const double *rows, int n, struct rank_spread *loop)
+{
+    struct rank_spread *to[RUN_ROW_N] = {&st->sec[RUN_SEC_PAIR], &st->sec[RUN_SEC_NEIGH],
+                                         &st->sec[RUN_SEC_OUTPUT], &st->sec[RUN_SEC_MODIFY],
+                                         loop, &st->atoms, &st->neighs};
+    for (int q = 0; q < RUN_ROW_N; q++)
+        rank_spread_strided(rows + q, n, RUN_ROW_N, to[q]);
+}
+
 /* One process: its own values as spreads of one rank. */
 static void spreads_one(const struct run_stats *s, struct run_stats *o)
 {
     *o = *s;
-    const double v[RUN_SEC_N] = {s->t_pair, s->t_neigh, s->t_output, s->t_modify};
-    for (int q = 0; q < RUN_SEC_N; q++)
-        rank_spread(&v[q], 1, &o->sec[q]);
-    double natoms = s->natoms, pairs = s->total_neighbors / 2;
-    rank_spread(&natoms, 1, &o->atoms);
-    rank_spread(&pairs, 1, &o->neighs);
+    double row[RUN_ROW_N];
+    struct rank_spread loop;
+    run_stats_row(s, row);
+    run_stats_spread(o, row, 1, &loop);
 }
 
 void output_finish(struct gravel *g, const struct run_stats *given)

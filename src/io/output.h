@@ -40,6 +40,15 @@ void output_finish(struct gravel *g, const struct run_stats *st);
  * LAMMPS's Finish does (struct rank_spread, src/engine/device.h). */
 struct rank_spread;
 void rank_spread(const double *v, int n, struct rank_spread *s);
+/* The same of v[0], v[stride], ..., v[(n - 1) stride]. */
+void rank_spread_strided(const double *v, int n, int stride, struct rank_spread *s);
+/* The footer's per-rank quantities: the section times (RUN_SEC_*), the loop
+ * time, owned atoms and neighbor pairs, in that order (run_stats_row); from
+ * n ranks' rows (n = 1: one process) run_stats_spread fills st's sec[],
+ * atoms and neighs and the loop time's spread into *loop. */
+enum { RUN_ROW_N = 7 };
+void run_stats_row(const struct run_stats *st, double row[RUN_ROW_N]);
+void run_stats_spread(struct run_stats *st, const double *rows, int n, struct rank_spread *loop);
 /* `run N post no`: the same housekeeping, and only the "Loop time" line of
  * the footer (LAMMPS prints nothing more with post no). */
 void output_finish_brief(struct gravel *g, const struct run_stats *st);
