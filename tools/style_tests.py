@@ -101,14 +101,15 @@ def uses(page, srcs):
 
 def runners(folder, srcs):
     """the scripts that run a deck folder: they join it into a path
-    ("reference", "<folder>"), or name the string "<folder>" and join
-    "reference" with a variable"""
+    ("reference", "<folder>"), name the string "<folder>" and join
+    "reference" with a variable, or spell the path tests/reference/<folder>/
+    (a shell script's include)"""
     sub = os.path.basename(folder)
     rx = r"[\"']reference[\"'],\s*[\"']%s[\"']" % re.escape(sub)
     rq = r"[\"']%s[\"']" % re.escape(sub)
     return [path for path, text in srcs
             if path.startswith("tests/scripts/") and (
-                re.search(rx, text) or (re.search(rq, text) and
+                re.search(rx, text) or "tests/reference/%s/" % sub in text or (re.search(rq, text) and
                                         re.search(r"[\"']reference[\"'],\s*[a-z_]+\b", text)))]
 
 
