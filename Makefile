@@ -162,7 +162,9 @@ mill-sensitivity: all
 # The avalanche of source document 002 run to its end by gravel and by LAMMPS on 1 and 2
 # processes, compared statistically (inputs/published/avalanche/README.md); the full deck
 # takes many hours here (AVAL_VARS="-var ly 0.36" for a narrow slab). Resumes after an interruption.
-compare-avalanche: all
+compare-avalanche: deps
+	@sh tools/deps.sh gnuplot-nox
+	@$(MAKE) --no-print-directory all
 	@sh tools/avalanche/compare.sh
 
 clean:

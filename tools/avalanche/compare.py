@@ -14,8 +14,10 @@ slope), the sand's centre (v_xcm) and its kinetic energy (c_ke) for each
 engine. The yardstick is the two LAMMPS runs: a chaotic flow run twice with
 another summation order (1 and 2 processes) differs by |L1 - L2|; gravel
 agrees with LAMMPS as well as LAMMPS agrees with itself when
-|gravel - (L1 + L2)/2| stays within that spread."""
+|gravel - (L1 + L2)/2| stays within that spread. Plots front, centre and
+kinetic energy over time into avalanche_compare.png beside PAGE (gnuplot)."""
 import os
+import subprocess
 import sys
 
 ENGINES = ["gravel", "lmp1", "lmp2"]
@@ -63,7 +65,41 @@ def window_means(r, t0, t1, key):
     return sum(v) / len(v) if v else None
 
 
-def report(rundir):
+def plot(data, page):
+    """avalanche_compare.png beside PAGE: front and kinetic energy against time
+    for each engine (gnuplot; skipped with a line when it is missing)."""
+    d = os.path.dirname(os.path.abspath(page))
+    png = os.path.join(d, "avalanche_compare.png")
+    dats = []
+    for e in ENGINES:
+        if e not in data:
+            continue
+        dat = os.path.join(d, ".avalanche_%s.dat" % e)
+        with open(dat, "w") as f:
+            for s in sorted(data[e]):
+                r = data[e][s]
+                f.write("%.6g %.9g %.9g %.9g\n" % (r["Time"], r["c_front"], r["v_xcm"], r["c_ke"]))
+        dats.append((e, dat))
+    script = ('set terminal pngcairo size 1100,420\nset output "%s"\nset multiplot layout 1,2\n'
+              'set xlabel "t (s)"\nset ylabel "x (m)"\nset key bottom right\n'
+              'set title "front (solid) and sand centre (dashed)"\nplot %s\n'
+              'set ylabel "kinetic energy (J)"\nset key top right\nset title "sand kinetic energy"\n'
+              'plot %s\nunset multiplot\n') % (
+        png, ", ".join('"%s" u 1:2 w l lc %d t "%s", "%s" u 1:3 w l dt 2 lc %d notitle'
+                       % (dat, i + 1, e, dat, i + 1) for i, (e, dat) in enumerate(dats)),
+        ", ".join('"%s" u 1:4 w l lc %d t "%s"' % (dat, i + 1, e) for i, (e, dat) in enumerate(dats)))
+    try:
+        subprocess.run(["gnuplot"], input=script, text=True, check=True)
+        ok = True
+    except (OSError, subprocess.CalledProcessError) as exc:
+        print("compare.py: no plot (%s)" % exc)
+        ok = False
+    for _, dat in dats:
+        os.remove(dat)
+    return os.path.basename(png) if ok else None
+
+
+def report(rundir, page):
     data, loops = {}, {}
     for e in ENGINES:
         p = os.path.join(rundir, e, e + ".log")
@@ -118,13 +154,17 @@ def report(rundir):
         o.append("Largest distance of gravel from the LAMMPS mean, in units of the LAMMPS spread, "
                  "over the windows: " + ", ".join("%s %.2f" % (h, worst[k]) for k, h, _ in QUANT) + ".")
         o.append("")
+    png = plot(data, page) if data else None
+    if png:
+        o.append("![front, centre and kinetic energy: gravel, LAMMPS 1 and 2 processes](%s)" % png)
+        o.append("")
     o.append(END)
     return "\n".join(o) + "\n"
 
 
 def main():
     rundir, page = sys.argv[1], sys.argv[2]
-    block = report(rundir)
+    block = report(rundir, page)
     text = open(page).read() if os.path.exists(page) else ""
     if BEGIN in text and END in text:
         text = text[:text.index(BEGIN)] + block.rstrip("\n") + text[text.index(END) + len(END):]
