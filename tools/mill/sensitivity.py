@@ -33,6 +33,8 @@ WHAT = {
     "plates": "slice 13.5 mm closed by end plates (shell material)",
     "thesis": "the thesis's tangential law (V_t dt, no static friction) and rolling mu_r 0.02",
 }
+# the smallest shift that counts: the angles' 2-degree sectors; else 1 %
+RESOLUTION = {"shoulder": 2.0, "toe": 2.0}
 COLS = [("shoulder", "shoulder (deg)", "%+.1f"), ("toe", "toe (deg)", "%+.1f"),
         ("solid", "bulk solidicity", "%.3f"), ("vshell", "charge speed at shell (m/s)", "%.3f"),
         ("power", "power draw, 0.27 m (W)", "%.2f")]
@@ -127,8 +129,9 @@ def slice_length(d):
 
 def moved(name, k, res):
     """True when variant name's mean of k differs from the base run's by more
-    than twice the combined standard error and (but for the second fill
-    itself) by more than the two fills differ."""
+    than twice the combined standard error, (but for the second fill itself)
+    by more than the two fills differ, and by at least the resolution (2
+    degrees for the angles, 1 % of the base value for the others)."""
     base, fill = res.get("base"), res.get("seed2")
     if not base or name == "base" or res[name][k][0] is None or base[k][0] is None:
         return False
@@ -136,7 +139,7 @@ def moved(name, k, res):
     e = math.sqrt((se or 0.0) ** 2 + (seb or 0.0) ** 2)
     noise = abs(fill[k][0] - mb) if name != "seed2" and fill and fill[k][0] is not None else 0.0
     d = abs(m - mb)
-    return d > 2 * e and d > noise
+    return d > 2 * e and d > noise and d >= RESOLUTION.get(k, 0.01 * abs(mb))
 
 
 def fmt(c, m, se):
@@ -163,8 +166,9 @@ def table(rundir):
          "revolutions averaged in windows of %s revolution; each figure is the mean over the "
          "windows ± its standard error (windows are not independent: a lower bound of the error). "
          "**Bold**: the mean differs from the base run's by more than twice the combined standard "
-         "error and, for the other variants, by more than the two fills differ (the windows' error "
-         "misses the fill-to-fill noise). Power: the slice's drive power times 0.27 m / slice length. A variant still "
+         "error, for the other variants by more than the two fills differ (the windows' error "
+         "misses the fill-to-fill noise), and by at least 2 degrees (the angles' sectors) or 1 %% "
+         "(the others): what is not bold is insensitive to that choice. Power: the slice's drive power times 0.27 m / slice length. A variant still "
          "running shows the windows it has so far (`make mill-sensitivity` resumes it from its "
          "restart files)." % (round(100 * float(speed)), settle, ave, win), ""]
     o.append("| variant | what changes | windows | " + " | ".join(h for _, h, _ in COLS) +
@@ -192,7 +196,8 @@ def table(rundir):
             r["seconds"] if r["seconds"] is not None else "-"))
     if base:
         o.append("")
-        o.append("Moved beyond the noise (variant and its shift from the base run): " + "; ".join(
+        o.append("Sensitive (variant and its shift from the base run; none: insensitive to every choice "
+                 "tried): " + "; ".join(
             "%s: %s" % (h, ", ".join(shifts[k]) if k in shifts else "none")
             for k, h, _ in COLS) + ".")
     o += ["", END]
