@@ -18,7 +18,11 @@ Checks (one PASS/FAIL line each):
     histogram file accounts for every particle and matches the thermo count;
   * average.py's window mean equals the mean of the thermo rows in the window; it refuses a
     log whose run did not finish; plot.py writes a PNG;
-  * a Stickiness number outside table 6.2 stops with a message unless -var eps is given.
+  * a Stickiness number outside table 6.2 stops with a message unless -var eps is given;
+  * the override variables: -var kcset 117.24 (table 6.2's Sy 1.5 entry) runs with that k_c
+    and the deck and run setup report Sy = 1.25 (eq. 6.5); -var Aflow 0.5 (the source's own
+    flow amplitude) keeps mu and k_c of the targets while run setup reports Stk = 0.01 and
+    Sy = 6.12 at the weaker flow; without them no override line is printed.
 """
 import glob
 import math
@@ -222,6 +226,39 @@ def off_table(tmp):
           "Sy %s Stk %s e %s" % (info["Sy_log"], info["Stk_log"], info["e"]))
 
 
+def sy_eq_6_5(kc, e, u):
+    """000 eq. 6.5 for the deck's particles (L_e = 0.025 m, m = rho pi d_b^3 / 6)."""
+    le, m = 0.025, 2000 * math.pi / 6 * 0.05 ** 3
+    return le * math.sqrt(kc) / (e * math.sqrt(le * le * kc + u * u * m))
+
+
+def overrides(tmp):
+    """-var kcset and -var Aflow (doc/agglomeration.md, "Low Stokes number")."""
+    d = os.path.join(tmp, "over")
+    os.mkdir(d)
+    rc, out = run_deck(d, "N", 8, "tend", 0.000898, "Sy", 1.5, "St", 0.1)
+    check("no_override_by_default", rc == 0 and "override:" not in out, out[-200:] if rc else "")
+    rc, out = run_deck(d, "N", 8, "tend", 0.000898, "Sy", 1.5, "St", 0.1, "kcset", 117.24,
+                       "logfile", "kc.log")
+    info = average.parse_log(os.path.join(d, "kc.log"))
+    m = re.search(r"check: Stk (\S+) Sy (\S+)", out)
+    want = sy_eq_6_5(117.24, 0.15, 0.7839 * 5)
+    check("kcset_117_24", rc == 0 and info["kc"] == 117.24 and m and
+          same3(float(m.group(2)), want) and same3(info["Sy_log"], want) and
+          same3(info["Stk_log"], 0.1) and "override: k_c 117.24" in out,
+          "kc %s Sy deck %s log %s (eq. 6.5: %.4f)" % (info["kc"], m and m.group(2),
+                                                       info["Sy_log"], want))
+    rc, out = run_deck(d, "N", 8, "tend", 0.000898, "Sy", 1.5, "St", 0.1, "Aflow", 0.5,
+                       "logfile", "af.log")
+    info = average.parse_log(os.path.join(d, "af.log"))
+    want = sy_eq_6_5(info["kc"] or 0, 0.15, 0.7839 * 0.5)
+    check("aflow_0_5", rc == 0 and same3(info["kc"], 171.57) and same3(info["mu"], 10.40) and
+          same3(info["Stk_log"], 0.01) and same3(info["Sy_log"], want) and
+          "flow amplitude 0.5" in out,
+          "kc %s mu %s Stk %s Sy %s (eq. 6.5 at 0.7839 x 0.5: %.4f)"
+          % (info["kc"], info["mu"], info["Stk_log"], info["Sy_log"], want))
+
+
 def main():
     if not os.path.exists(GRAVEL):
         check("gravel_built", False, GRAVEL + " missing: run make")
@@ -231,6 +268,7 @@ def main():
         initial_speeds(tmp)
         agglomeration_forms(tmp)
         off_table(tmp)
+        overrides(tmp)
     return 1 if failures else 0
 
 
