@@ -30,13 +30,15 @@ NWIN = 8
 def rows(path):
     """{step: {column: value}} of the thermo rows, first copy of each step, and
     the loop time summed over the log's runs."""
-    out, cols, loop = {}, None, 0.0
+    out, cols, loop = {}, None, [0.0, 0.0]
     for l in open(path):
         f = l.split()
         if f[:1] == ["Step"]:
             cols = f
         elif l.startswith("Loop time of"):
-            loop += float(f[3])
+            # Loop time of T on P procs for N steps with A atoms
+            loop[0] += float(f[3])
+            loop[1] += float(f[8]) * float(f[11])
             cols = None
         elif cols and f and f[0].isdigit() and len(f) == len(cols):
             try:
@@ -112,17 +114,21 @@ def report(rundir, page):
          "variables `%s`: the same deck run by gravel and by LAMMPS (29 Sep 2021 - Update 2) on 1 "
          "and 2 processes. LAMMPS against itself is the yardstick: the flow is chaotic, so "
          "summing the forces in another order (2 processes) parts the runs after a while, and "
-         "what remains comparable is statistics. Means over time windows; the last column says how far "
-         "gravel is from the LAMMPS mean in units of the LAMMPS spread |L1 - L2|." % (variables or "none: 002's full deck"), ""]
-    o.append("| engine | rows | last time (s) | finished | loop time (s) |")
-    o.append("|---|---|---|---|---|")
+         "what remains comparable is statistics: means over time windows, and how far gravel is "
+         "from the LAMMPS mean against how far the two LAMMPS runs are apart. The loop times "
+         "include runs resumed from restart files (a run killed before its footer counts no "
+         "time); the machine was shared, so rates are only indicative." % (variables or "none: 002's full deck"), ""]
+    o.append("| engine | rows | last time (s) | finished | loop time (s) | M grain-steps/s |")
+    o.append("|---|---|---|---|---|---|")
     for e in ENGINES:
         if e in data and data[e]:
             last = max(x["Time"] for x in data[e].values())
-            o.append("| %s | %d | %.2f | %s | %.0f |" % (e, len(data[e]), last,
-                                                        "yes" if done[e] else "no (resumes)", loops[e]))
+            t, work = loops[e]
+            o.append("| %s | %d | %.2f | %s | %.0f | %s |" % (
+                e, len(data[e]), last, "yes" if done[e] else "no (resumes)", t,
+                "%.2f" % (work / t / 1e6) if t > 0 else "-"))
         else:
-            o.append("| %s | 0 | - | not run yet | - |" % e)
+            o.append("| %s | 0 | - | not run yet | - | - |" % e)
     o.append("")
     if all(e in data and data[e] for e in ENGINES):
         pg = parting(data["gravel"], data["lmp1"])
@@ -133,9 +139,11 @@ def report(rundir, page):
                  "LAMMPS-2 %s." % (when(pg), when(pl)))
         o.append("")
         tend = min(max(x["Time"] for x in data[e].values()) for e in ENGINES)
-        o.append("| window (s) | " + " | ".join("%s: gravel / L1 / L2 | dist." % h for _, h, _ in QUANT) + " |")
+        parted = max(t for t in (pg, pl) if t is not None) if (pg or pl) else tend
+        o.append("| window (s) | " + " | ".join("%s: gravel / L1 / L2 | gravel - L, L1 - L2" % h
+                                                for _, h, _ in QUANT) + " |")
         o.append("|---|" + "---|---|" * len(QUANT))
-        worst = {k: 0.0 for k, _, _ in QUANT}
+        worst = {k: [0.0, 0.0] for k, _, _ in QUANT}
         for w in range(NWIN):
             t0, t1 = tend * w / NWIN, tend * (w + 1) / NWIN
             cells = []
@@ -144,15 +152,19 @@ def report(rundir, page):
                 if None in (g, a, b):
                     cells += ["-", "-"]
                     continue
-                spread = abs(a - b)
-                d = abs(g - 0.5 * (a + b))
-                ratio = d / spread if spread > 0 else (0.0 if d == 0 else float("inf"))
-                worst[k] = max(worst[k], ratio)
-                cells += [" / ".join(c % x for x in (g, a, b)), "%.2f" % ratio]
+                mean = 0.5 * (a + b)
+                dg = 100 * abs(g - mean) / abs(mean) if mean else 0.0
+                dl = 100 * abs(a - b) / abs(mean) if mean else 0.0
+                if t0 >= parted:
+                    worst[k] = [max(worst[k][0], dg), max(worst[k][1], dl)]
+                cells += [" / ".join(c % x for x in (g, a, b)), "%.2f %%, %.2f %%" % (dg, dl)]
             o.append("| %.2f-%.2f | %s |" % (t0, t1, " | ".join(cells)))
         o.append("")
-        o.append("Largest distance of gravel from the LAMMPS mean, in units of the LAMMPS spread, "
-                 "over the windows: " + ", ".join("%s %.2f" % (h, worst[k]) for k, h, _ in QUANT) + ".")
+        o.append("L: the mean of the two LAMMPS runs; differences relative to it. Over the windows "
+                 "after every run has parted (from %.2f s), the largest difference of gravel from "
+                 "LAMMPS against the largest between the two LAMMPS runs: " % parted + ", ".join(
+                     "%s %.2f %% against %.2f %%" % (h, worst[k][0], worst[k][1]) for k, h, _ in QUANT)
+                 + ".")
         o.append("")
     png = plot(data, page) if data else None
     if png:
