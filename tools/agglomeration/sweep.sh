@@ -21,6 +21,8 @@
 #   AGGLO_NOUT     thermo rows per point   (default 240, quick 50)
 #   AGGLO_SEED     seed of the initial state (default 12345)
 #   AGGLO_SY, AGGLO_ST  the grid (default 000's: "0.1 0.6 1.0 1.5", "0.1 1.0 5.0 10.0")
+#   AGGLO_KCSET    k_c in N/m for every point instead of eq. 6.5's (deck -var kcset;
+#                  default 0: eq. 6.5, e.g. 117.24 for table 6.2's Sy 1.5 value)
 #   AGGLO_CHECKPOINTS  restart files per grid point (default 24; 0: none, no resume)
 #   AGGLO_TAG      name of this run in the output names (default full or quick)
 #   AGGLO_OUT      run directory (default build/agglomeration/<tag>)
@@ -41,13 +43,14 @@ seed=${AGGLO_SEED:-12345}
 sys=${AGGLO_SY:-0.1 0.6 1.0 1.5}
 sts=${AGGLO_ST:-0.1 1.0 5.0 10.0}
 ncp=${AGGLO_CHECKPOINTS:-24}
+kcset=${AGGLO_KCSET:-0}
 tag=${AGGLO_TAG:-$tag}
 out=${AGGLO_OUT:-$root/build/agglomeration/$tag}
 doc=${AGGLO_DOC:-$root/doc}
 deck=$root/inputs/published/agglomeration/agglomeration.in
 mkdir -p "$out" "$doc"
 cd "$out"
-settings="N $n tend $tend nout $nout seed $seed checkpoints $ncp deck $(cksum < "$deck")"
+settings="N $n tend $tend nout $nout seed $seed checkpoints $ncp kcset $kcset deck $(cksum < "$deck")"
 if [ -f settings ] && [ "$(cat settings)" != "$settings" ]; then
     echo "settings differ from the earlier run in $out: starting over"
     rm -f agglo_Sy*_St*.log agglo_Sy*_St*.hist agglo_Sy*_St*.restart.[ab] agglo_init.* screen.txt
@@ -74,7 +77,8 @@ print(max(f, key=lambda a: os.stat(a).st_mtime_ns) if f else "")' "$p.restart.a"
         fi
         # The deck's own `print` lines show the progress; the full screen output stays in screen.txt.
         "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" -var tend "$tend" \
-            -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var prefix agglo "$@" \
+            -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var kcset "$kcset" \
+            -var prefix agglo "$@" \
             -log sweep.log >> screen.txt 2>&1 &
         pid=$!
         tail -n 0 -f screen.txt --pid=$pid 2>/dev/null |
