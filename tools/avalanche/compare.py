@@ -21,6 +21,7 @@ import subprocess
 import sys
 
 ENGINES = ["gravel", "lmp1", "lmp2"]
+EXTRA = ["gravel_single"]   # shown when run: gravel's own spread (another precision)
 QUANT = [("c_front", "front x (m)", "%.3f"), ("v_xcm", "sand centre x (m)", "%.3f"),
          ("c_ke", "kinetic energy (J)", "%.4g")]
 BEGIN, END = "<!-- compare -->", "<!-- /compare -->"
@@ -73,7 +74,7 @@ def plot(data, page):
     d = os.path.dirname(os.path.abspath(page))
     png = os.path.join(d, "avalanche_compare.png")
     dats = []
-    for e in ENGINES:
+    for e in ENGINES + EXTRA:
         if e not in data:
             continue
         dat = os.path.join(d, ".avalanche_%s.dat" % e)
@@ -103,7 +104,7 @@ def plot(data, page):
 
 def report(rundir, page):
     data, loops = {}, {}
-    for e in ENGINES:
+    for e in ENGINES + EXTRA:
         p = os.path.join(rundir, e, e + ".log")
         if os.path.exists(p):
             data[e], loops[e] = rows(p)
@@ -120,7 +121,7 @@ def report(rundir, page):
          "time); the machine was shared, so rates are only indicative." % (variables or "none: 002's full deck"), ""]
     o.append("| engine | rows | last time (s) | finished | loop time (s) | M grain-steps/s |")
     o.append("|---|---|---|---|---|---|")
-    for e in ENGINES:
+    for e in ENGINES + [x for x in EXTRA if x in data]:
         if e in data and data[e]:
             last = max(x["Time"] for x in data[e].values())
             t, work = loops[e]
@@ -157,7 +158,9 @@ def report(rundir, page):
                 dl = 100 * abs(a - b) / abs(mean) if mean else 0.0
                 if t0 >= parted:
                     worst[k] = [max(worst[k][0], dg), max(worst[k][1], dl)]
-                cells += [" / ".join(c % x for x in (g, a, b)), "%.2f %%, %.2f %%" % (dg, dl)]
+                sp = window_means(data["gravel_single"], t0, t1, k) if "gravel_single" in data else None
+                cells += [" / ".join(c % x for x in (g, a, b)) + (" (single %s)" % (c % sp) if sp is not None else ""),
+                          "%.2f %%, %.2f %%" % (dg, dl)]
             o.append("| %.2f-%.2f | %s |" % (t0, t1, " | ".join(cells)))
         o.append("")
         o.append("L: the mean of the two LAMMPS runs; differences relative to it. Over the windows "

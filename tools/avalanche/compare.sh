@@ -12,7 +12,8 @@
 # newer cannot be read), so the comparison survives a stopped session.
 # Environment: AVAL_VARS (deck variables, e.g. "-var ly 0.36" for a narrow
 # slab; default: 002's full deck), AVAL_DIR (build/avalanche), AVAL_ENGINES
-# ("gravel lmp1 lmp2"), AVAL_CHECKPOINT (10000), AVAL_NICE (0),
+# ("gravel lmp1 lmp2"; gravel_single adds gravel in single precision: gravel
+# is bit-identical in any order, so its own spread needs another precision), AVAL_CHECKPOINT (10000), AVAL_NICE (0),
 # AVAL_REPORT=0 (no report), AVAL_DOC (the page the table goes into,
 # inputs/published/avalanche/README.md).
 set -e
@@ -35,9 +36,10 @@ echo "$vars" > "$out/variables"
 cmd() { # engine: the command line that runs the deck
     case $1 in
         gravel) echo "$root/bin/gravel -echo none" ;;
+        gravel_single) echo "$root/bin/gravel -echo none -precision single" ;;
         lmp1) echo "lmp" ;;
         lmp2) echo "mpirun --allow-run-as-root --oversubscribe -np 2 lmp" ;;
-        *) echo "compare.sh: unknown engine '$1' (gravel, lmp1, lmp2)" >&2; return 1 ;;
+        *) echo "compare.sh: unknown engine '$1' (gravel, gravel_single, lmp1, lmp2)" >&2; return 1 ;;
     esac
 }
 
