@@ -86,7 +86,8 @@ def plot(data, page):
     script = ('set terminal pngcairo size 1100,420\nset output "%s"\nset multiplot layout 1,2\n'
               'set xlabel "t (s)"\nset ylabel "x (m)"\nset key bottom right\n'
               'set title "front (solid) and sand centre (dashed)"\nplot %s\n'
-              'set ylabel "kinetic energy (J)"\nset key top right\nset title "sand kinetic energy"\n'
+              'set ylabel "kinetic energy (J)"\nset logscale y\nset key top right\n'
+              'set title "sand kinetic energy (log scale)"\n'
               'plot %s\nunset multiplot\n') % (
         png, ", ".join('"%s" u 1:2 w l lc %d t "%s", "%s" u 1:3 w l dt 2 lc %d notitle'
                        % (dat, i + 1, e, dat, i + 1) for i, (e, dat) in enumerate(dats)),
