@@ -83,7 +83,7 @@ def plot(data, page):
                 r = data[e][s]
                 f.write("%.6g %.9g %.9g %.9g\n" % (r["Time"], r["c_front"], r["v_xcm"], r["c_ke"]))
         dats.append((e, dat))
-    script = ('set terminal pngcairo size 1100,420\nset output "%s"\nset multiplot layout 1,2\n'
+    script = ('set terminal pngcairo size 1100,420 noenhanced\nset output "%s"\nset multiplot layout 1,2\n'
               'set xlabel "t (s)"\nset ylabel "x (m)"\nset key bottom right\n'
               'set title "front (solid) and sand centre (dashed)"\nplot %s\n'
               'set ylabel "kinetic energy (J)"\nset logscale y\nset key top right\n'
