@@ -6,8 +6,9 @@
 Reads RUNDIR/ENGINE/ENGINE.log for the engines gravel, lmp1 and lmp2 (thermo
 rows by step, the first copy of each: a resumed run repeats its restart
 step; time = step x the first run's time step, as LAMMPS 2021 restarts its
-`time` at read_restart), and writes between the markers <!-- compare --> and <!-- /compare -->
-of PAGE (appended when absent): when the runs part (the first row whose
+`time` at read_restart), and writes between the markers <!-- compare VARIABLES --> and
+<!-- /compare VARIABLES --> of PAGE (appended when absent; VARIABLES: the deck variables of
+the runs, or "full deck"): when the runs part (the first row whose
 kinetic energy differs by more than 1e-6 relative), and per time window the
 means of the front position (c_front: the sand grain farthest down the
 slope), the sand's centre (v_xcm) and its kinetic energy (c_ke) for each
@@ -15,8 +16,10 @@ engine. The yardstick is the two LAMMPS runs: a chaotic flow run twice with
 another summation order (1 and 2 processes) differs by |L1 - L2|; gravel
 agrees with LAMMPS as well as LAMMPS agrees with itself when
 |gravel - (L1 + L2)/2| stays within that spread. Plots front, centre and
-kinetic energy over time into avalanche_compare.png beside PAGE (gnuplot)."""
+kinetic energy over time into avalanche_compare[_VARIABLES].png beside PAGE
+(gnuplot)."""
 import os
+import re
 import subprocess
 import sys
 
@@ -24,7 +27,11 @@ ENGINES = ["gravel", "lmp1", "lmp2"]
 EXTRA = ["gravel_single"]   # shown when run: gravel's own spread (another precision)
 QUANT = [("c_front", "front x (m)", "%.3f"), ("v_xcm", "sand centre x (m)", "%.3f"),
          ("c_ke", "kinetic energy (J)", "%.4g")]
-BEGIN, END = "<!-- compare -->", "<!-- /compare -->"
+def markers(variables):
+    """The page's block markers for runs of these deck variables: one block per
+    size (the full deck and a narrow slab side by side)."""
+    tag = " ".join(variables.split()) or "full deck"
+    return "<!-- compare %s -->" % tag, "<!-- /compare %s -->" % tag
 NWIN = 8
 
 
@@ -68,11 +75,12 @@ def window_means(r, t0, t1, key):
     return sum(v) / len(v) if v else None
 
 
-def plot(data, page):
-    """avalanche_compare.png beside PAGE: front and kinetic energy against time
-    for each engine (gnuplot; skipped with a line when it is missing)."""
+def plot(data, page, variables):
+    """avalanche_compare[_VARIABLES].png beside PAGE: front and kinetic energy
+    against time for each engine (gnuplot; skipped with a line when missing)."""
     d = os.path.dirname(os.path.abspath(page))
-    png = os.path.join(d, "avalanche_compare.png")
+    tag = re.sub(r"[^A-Za-z0-9.]+", "_", " ".join(variables.split()).replace("-var ", ""))
+    png = os.path.join(d, "avalanche_compare%s.png" % ("_" + tag if tag else ""))
     dats = []
     for e in ENGINES + EXTRA:
         if e not in data:
@@ -111,7 +119,8 @@ def report(rundir, page):
             data[e], loops[e] = rows(p)
     done = {e: os.path.exists(os.path.join(rundir, e, "done")) for e in data}
     variables = open(os.path.join(rundir, "variables")).read().strip()
-    o = [BEGIN, "", "## gravel against LAMMPS (measured)", "",
+    begin, end = markers(variables)
+    o = [begin, "", "## gravel against LAMMPS (measured%s)" % (", " + variables if variables else ", 002's full deck"), "",
          "Written by `make compare-avalanche` (tools/avalanche/compare.sh, compare.py) with deck "
          "variables `%s`: the same deck run by gravel and by LAMMPS (29 Sep 2021 - Update 2) on 1 "
          "and 2 processes. LAMMPS against itself is the yardstick: the flow is chaotic, so "
@@ -170,11 +179,11 @@ def report(rundir, page):
                      "%s %.2f %% against %.2f %%" % (h, worst[k][0], worst[k][1]) for k, h, _ in QUANT)
                  + ".")
         o.append("")
-    png = plot(data, page) if data else None
+    png = plot(data, page, variables) if data else None
     if png:
         o.append("![front, centre and kinetic energy: gravel, LAMMPS 1 and 2 processes](%s)" % png)
         o.append("")
-    o.append(END)
+    o.append(end)
     return "\n".join(o) + "\n"
 
 
@@ -182,8 +191,9 @@ def main():
     rundir, page = sys.argv[1], sys.argv[2]
     block = report(rundir, page)
     text = open(page).read() if os.path.exists(page) else ""
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + block.rstrip("\n") + text[text.index(END) + len(END):]
+    begin, end = markers(open(os.path.join(rundir, "variables")).read())
+    if begin in text and end in text:
+        text = text[:text.index(begin)] + block.rstrip("\n") + text[text.index(end) + len(end):]
     else:
         text = text.rstrip("\n") + "\n\n" + block
     with open(page, "w") as f:
