@@ -23,6 +23,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import marked_block  # noqa: E402
+
 ENGINES = ["gravel", "lmp1", "lmp2"]
 EXTRA = ["gravel_single"]   # shown when run: gravel's own spread (another precision)
 QUANT = [("c_front", "front x (m)", "%.3f"), ("v_xcm", "sand centre x (m)", "%.3f"),
@@ -190,14 +193,8 @@ def report(rundir, page):
 def main():
     rundir, page = sys.argv[1], sys.argv[2]
     block = report(rundir, page)
-    text = open(page).read() if os.path.exists(page) else ""
     begin, end = markers(open(os.path.join(rundir, "variables")).read())
-    if begin in text and end in text:
-        text = text[:text.index(begin)] + block.rstrip("\n") + text[text.index(end) + len(end):]
-    else:
-        text = text.rstrip("\n") + "\n\n" + block
-    with open(page, "w") as f:
-        f.write(text)
+    marked_block.replace(page, begin, end, block)
     print("wrote the comparison into %s" % page)
 
 

@@ -18,6 +18,9 @@ import math
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import marked_block  # noqa: E402
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report  # noqa: E402  (angles, charge_stats: the measures of doc/mill.md)
 
@@ -234,15 +237,7 @@ def table(rundir):
 def main():
     rundir, md = sys.argv[1], sys.argv[2]
     block = table(rundir)
-    text = open(md).read() if os.path.exists(md) else ""
-    if BEGIN in text and END in text:
-        a = text.index(BEGIN)
-        b = text.index(END) + len(END)
-        text = text[:a] + block.rstrip("\n") + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + block
-    with open(md, "w") as f:
-        f.write(text)
+    marked_block.replace(md, BEGIN, END, block)
     print("wrote the sensitivity table into %s" % md)
 
 
