@@ -1,22 +1,24 @@
 #!/bin/sh
-# bench.sh - `make bench`: the three benchmark decks of inputs/bench/ (the
-# LAMMPS chute, a dense packing, a dilute gas) in gravel, double and single
-# precision, and, when `lmp` is installed, the same deck files in LAMMPS on 1
-# and 2 MPI processes; then the source document's agglomeration case
-# (cohesion + drag, N = 10^4) in gravel. Within one repeat the runs of a deck
+# bench.sh - `make bench`: the benchmark decks of inputs/bench/ (the LAMMPS
+# chute, a dense packing, a dilute gas, and a 126-sphere rotating drum, the
+# small scene) in gravel, double and single precision, and, when `lmp` is
+# installed, the same deck files in LAMMPS on 1 and 2 MPI processes (the
+# drum on 1 only); then the source document's agglomeration case (cohesion
+# + drag, N = 10^4) in gravel. Within one repeat the runs of a deck
 # alternate (gravel double, gravel single, LAMMPS-1, LAMMPS-2) so machine
 # noise hits all alike; the table gives medians of particle-steps/s (atoms x
 # steps / loop time, from each "Loop time" line) and the ratios to LAMMPS-2.
 #   BENCH_REPEATS (default 3)   repeats per deck
 #   BENCH_SCALE (default 1)     multiplies every deck's step count
 #   BENCH_DECKS                 subset, e.g. "chute dense" (default all + agglo)
+# The drum's rate is that of its second (turning) run: the last "Loop time".
 #   GRAVEL_FLAGS                extra gravel options (e.g. "-device gpu")
 #   BENCH_MEMORY (default 1)    0 skips the peak-RSS figure (tools/bench_memory.py)
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
 repeats=${BENCH_REPEATS:-3}
 scale=${BENCH_SCALE:-1}
-decks=${BENCH_DECKS:-"chute dense dilute agglo"}
+decks=${BENCH_DECKS:-"chute dense dilute drum agglo"}
 data="$root/../shared/peers/chute/data.chute"
 [ -f "$data" ] || data=/work/shared/peers/chute/data.chute
 tmp=$(mktemp -d)
@@ -50,6 +52,7 @@ deck_vars() {
         chute) echo "-var nsteps $((2000 * scale))" ;;
         dense) echo "-var nsteps $((1000 * scale))" ;;
         dilute) echo "-var nsteps $((2000 * scale))" ;;
+        drum) echo "-var nsteps $((10000 * scale))" ;;
         # 2000 steps of 0.000449 s; thermo (and the agglomerate statistics) twice
         agglo) echo "-var Sy 1.0 -var St 1.0 -var N 10000 -var nout 2 -var tend $(awk -v s="$scale" 'BEGIN { print 2000 * s * 0.000449 }') -var logfile none" ;;
     esac
@@ -75,7 +78,7 @@ for deck in $decks; do
         if [ $have_lmp = 1 ] && [ "$deck" != agglo ]; then
             (cd "$tmp" && lmp -in "$file" $vars -log none > l.out 2>&1)
             rate "$tmp/l.out" >> "$tmp/l1"
-            if [ $have_mpi = 1 ]; then
+            if [ $have_mpi = 1 ] && [ "$deck" != drum ]; then
                 (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in "$file" \
                     $vars -log none > l.out 2>&1)
                 rate "$tmp/l.out" >> "$tmp/l2"
@@ -88,10 +91,15 @@ for deck in $decks; do
     printf "%-8s %9s %9s %9s %9s %8s %8s\n" "$deck" "$(mps "$gd")" "$(mps "$gs")" \
         "$(mps "$l1")" "$(mps "$l2")" "$(ratio "$gd" "$l2")" "$(ratio "$gs" "$l2")"
     eval "rate_$deck=$gd"
+    cp "$tmp/l1" "$tmp/l1_$deck"
 done
 if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
     printf "agglomeration (N = 10^4, double) / dilute gas (double) = %s (goal >= 0.5)\n" \
         "$(ratio "$rate_agglo" "$rate_dilute")"
+fi
+if [ -n "$rate_drum" ] && [ $have_lmp = 1 ]; then
+    printf "drum (126 spheres, double) / LAMMPS-1 = %s (goal >= 1)\n" \
+        "$(ratio "$rate_drum" "$(median < "$tmp/l1_drum")")"
 fi
 [ $have_lmp = 1 ] || echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
 if [ "${BENCH_MEMORY:-1}" != 0 ]; then

@@ -1,7 +1,7 @@
 /* main.c - the gravel command line (LAMMPS-compatible where LAMMPS has the flag):
  *
  *   gravel [-in FILE] [-var NAME VALUE...] [-log FILE|none] [-echo none|screen|log|both]
- *          [-screen none|FILE] [-device cpu|gpu|N] [-precision single|double]
+ *          [-screen none|FILE] [-device cpu|serial|gpu|N] [-precision single|double]
  *          [-progress] [-check [FILE]] [-compat lammps2021] [-h] [-version]
  *
  * Without -in the script comes from stdin. Exit status: 0 on success (or the
@@ -51,7 +51,8 @@ static void usage(FILE *out)
             "  -log, -l FILE|none           log file (default log.gravel)\n"
             "  -echo, -e none|screen|log|both  echo commands (default log)\n"
             "  -screen, -sc none|FILE       screen output off or to a file\n"
-            "  -device cpu|gpu|N            OpenCL device (default: env GRAVEL_DEVICE, else cpu)\n"
+            "  -device cpu|serial|gpu|N     OpenCL device (default: env GRAVEL_DEVICE, else cpu;\n"
+            "                               serial under 1500 atoms)\n"
             "  -precision single|double     floating point in kernels (default double)\n"
             "  -progress                    progress line on stderr during runs\n"
             "  -compat lammps2021           reproduce LAMMPS 29Sep2021 (its quirks, and its\n"
@@ -104,7 +105,7 @@ static int is_flag(const char *s)
 
 static int valid_device(const char *s)
 {
-    if (!strcmp(s, "cpu") || !strcmp(s, "gpu"))
+    if (!strcmp(s, "cpu") || !strcmp(s, "serial") || !strcmp(s, "gpu"))
         return 1;
     if (!*s || strlen(s) > 6)
         return 0;
@@ -223,7 +224,7 @@ int main(int argc, char **argv)
             screen = argv[++i];
         } else if (IS("-device", NULL)) {
             if (!more || !valid_device(argv[i + 1]))
-                return bad("-device must be cpu, gpu or a device number, got '%s'",
+                return bad("-device must be cpu, serial, gpu or a device number, got '%s'",
                            more ? argv[i + 1] : "");
             device = argv[++i];
         } else if (IS("-precision", NULL)) {

@@ -12,16 +12,28 @@
 #include "error.h"
 #include "log.h"
 
+static struct engine *engine_of(struct gravel *g)
+{
+    if (!g->eng)
+        g->eng = gr_calloc(g, 1, sizeof *g->eng);
+    return g->eng;
+}
+
+void eng_expect_atoms(struct gravel *g, long atoms)
+{
+    struct engine *e = engine_of(g);
+    e->expect_atoms = atoms;
+    e->expect_set = 1;
+}
+
 struct engine *eng_get(struct gravel *g)
 {
-    if (!g->eng) {
-        g->eng = gr_calloc(g, 1, sizeof *g->eng);
-    }
-    struct engine *e = g->eng;
+    struct engine *e = engine_of(g);
     if (!e->ready) {
-        ocl_init(g, &e->ocl, g->opt.device);
+        ocl_init(g, &e->ocl, g->opt.device, e->expect_set ? e->expect_atoms : -1);
         e->ready = 1;
-        gr_print(g, "OpenCL device: %s (%s)\n", e->ocl.name, e->ocl.version);
+        gr_print(g, "OpenCL device: %s (%s)%s\n", e->ocl.name, e->ocl.version,
+                 e->ocl.serial ? "; serial: kernels run in gravel's own thread" : "");
     }
     return e;
 }

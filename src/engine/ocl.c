@@ -119,14 +119,38 @@ static void ocl_lanes(struct gravel *g, struct ocl *o)
         o->lanes_float *= 2;
 }
 
-void ocl_init(struct gravel *g, struct ocl *o, const char *want)
+/* Whether the run takes PoCL's serial CPU device ("basic": kernels run in
+ * the calling thread) instead of its threaded one: when asked (`serial`),
+ * or by default (no device named) for a scene of fewer than
+ * OCL_SERIAL_ATOMS atoms per process, where the threaded device's hand-off
+ * to its worker threads and back (45-70 us per wait on PoCL 3.1 here)
+ * costs more than a second core gains (doc/opencl.md, Serial device). Never
+ * when the environment already names PoCL's devices (POCL_DEVICES). */
+static int serial_wanted(const char *want, long atoms)
+{
+    const char *pd = getenv("POCL_DEVICES");
+    if (pd && *pd)
+        return 0;
+    if (want && *want)
+        return !strcmp(want, "serial");
+    return atoms >= 0 && atoms < OCL_SERIAL_ATOMS;
+}
+
+void ocl_init(struct gravel *g, struct ocl *o, const char *want, long atoms)
 {
     cl_platform_id plat[64];
     cl_device_id dev[64];
-    int n = list_devices(g, plat, dev, 64);
     if (!want || !*want)
         want = getenv("GRAVEL_DEVICE");
-    if (!want || !*want)
+    /* PoCL reads POCL_DEVICES once, when the platform is first listed; the
+     * variable is taken back after it, so no child process inherits it */
+    o->serial = serial_wanted(want, atoms);
+    if (o->serial)
+        setenv("POCL_DEVICES", "basic", 1);
+    int n = list_devices(g, plat, dev, 64);
+    if (o->serial)
+        unsetenv("POCL_DEVICES");
+    if (!want || !*want || !strcmp(want, "serial"))
         want = "cpu";
     int pick = -1;
     if (!strcmp(want, "cpu") || !strcmp(want, "gpu")) {
@@ -145,7 +169,8 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want)
         char *end;
         long k = strtol(want, &end, 10);
         if (*end || end == want || k < 0 || k >= n)
-            gr_error(g, "-device '%s': expected cpu, gpu or a device index 0..%d", want, n - 1);
+            gr_error(g, "-device '%s': expected cpu, serial, gpu or a device index 0..%d", want,
+                     n - 1);
         pick = (int)k;
     }
     o->platform = plat[pick];

@@ -22,6 +22,8 @@ struct ocl {
     char name[256];             /* device name as the driver reports it */
     char version[256];          /* driver + platform version (part of the cache key) */
     int is_gpu;
+    int serial;                 /* PoCL's serial CPU device (ocl_init: -device serial, or a
+                                 * scene under OCL_SERIAL_ATOMS atoms by default) */
     int host_unified;           /* a CPU device on host memory (CL_DEVICE_HOST_UNIFIED_MEMORY):
                                  * buffers may be the host's arrays (ocl_wrap); env
                                  * GRAVEL_HOST_SHARE=0 turns that off */
@@ -56,10 +58,15 @@ const char *ocl_errname(cl_int err);
 void ocl_check(struct gravel *g, cl_int err, const char *call);
 #define OCL_CHECK(g, call) ocl_check((g), (call), #call)
 
-/* Pick the device: `want` is "", "cpu", "gpu" or a device index over all
- * platforms; "" falls back to env GRAVEL_DEVICE and then to the first CPU
- * device (PoCL), else the first device. Creates context and in-order queue. */
-void ocl_init(struct gravel *g, struct ocl *o, const char *want);
+/* Scenes of fewer atoms per process run on PoCL's serial device by default. */
+#define OCL_SERIAL_ATOMS 1500
+
+/* Pick the device: `want` is "", "cpu", "serial", "gpu" or a device index
+ * over all platforms; "" falls back to env GRAVEL_DEVICE and then to the
+ * first CPU device (PoCL), else the first device: PoCL's serial device for
+ * fewer than OCL_SERIAL_ATOMS `atoms` (-1: unknown). Creates context and
+ * in-order queue. */
+void ocl_init(struct gravel *g, struct ocl *o, const char *want, long atoms);
 
 /* Build (or load from the cache) one program from `n` named sources
  * concatenated in order, with compiler `options`. A build failure raises an

@@ -187,19 +187,26 @@ static int forced_rebuild(struct gravel *g)
 
 /* Atoms fixes may insert during the next nsteps steps: the device capacity
  * holds them from the start and the neighbor cut-off covers their radii. */
-static void reserve_insertions(struct gravel *g, bigint nsteps)
+static long insertions(struct gravel *g, bigint nsteps, double *rmax)
 {
-    struct engine *e = g->eng;
-    double rmax = 0;
     long extra = 0;
+    *rmax = 0;
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         double r = 0;
         if (f->style->reserve)
             extra += f->style->reserve(g, f, nsteps, &r);
-        if (r > rmax)
-            rmax = r;
+        if (r > *rmax)
+            *rmax = r;
     }
+    return extra;
+}
+
+static void reserve_insertions(struct gravel *g, bigint nsteps)
+{
+    struct engine *e = g->eng;
+    double rmax = 0;
+    long extra = insertions(g, nsteps, &rmax);
     e->insert_rmax = rmax;
     if (extra > 200000000L - g->atoms.n)
         gr_error(g, "too many atoms to insert (%ld)", extra);
@@ -434,6 +441,10 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
 {
     check_atoms(g);
     ocl_mem_reset_peak();
+    if (!g->eng || !g->eng->ready) { /* the first run chooses the device by its size */
+        double rmax;
+        eng_expect_atoms(g, (g->atoms.n + insertions(g, nsteps, &rmax)) / comm_size());
+    }
     for (int i = 0; i < g->styles.nfix; i++)
         if (g->styles.fix[i]->style->prepare)
             g->styles.fix[i]->style->prepare(g, g->styles.fix[i]);

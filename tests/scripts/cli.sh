@@ -46,7 +46,7 @@ check bad_flag '[ $rc -eq 1 ] && grep -q "unknown option .-bogus." out'
 "$bin" -in > out 2>&1; rc=$?
 check missing_value '[ $rc -eq 1 ] && grep -q "needs a file name" out'
 "$bin" -device fast > out 2>&1; rc=$?
-check bad_device '[ $rc -eq 1 ] && grep -q "device must be cpu, gpu or a device number" out'
+check bad_device '[ $rc -eq 1 ] && grep -q "device must be cpu, serial, gpu or a device number" out'
 "$bin" -precision half > out 2>&1; rc=$?
 check bad_precision '[ $rc -eq 1 ] && grep -q "precision must be single or double" out'
 "$bin" -echo loud > out 2>&1; rc=$?

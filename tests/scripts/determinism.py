@@ -13,7 +13,8 @@ bit-identical in every variant:
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - GRAVEL_LANES=1, 2, 16 and device (the device's preferred vector width)
     contacts per pair work-item (kernels/lanes.cl; the default is 1);
-  - neigh_modify check no (a rebuild every step: other neighbor sets).
+  - neigh_modify check no (a rebuild every step: other neighbor sets);
+  - -device serial (PoCL's serial device: every kernel in gravel's thread).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
 freeze, viscous, nve/sphere: src/engine/fused.h) gives the same bits with fusion
 off (GRAVEL_FUSE=0: one launch per fix and hook) and with the look-ahead off
@@ -27,6 +28,9 @@ The same lane widths give the same bits for each lane-generic law (gran
 hooke, hooke/history, hertz/history) in double and single precision (split
 positions, the overlap in double lanes), on a shorter bed
 (lanes_<law>_<precision>_<width>, widths 4 and 16 against 1).
+A scene under 1500 atoms (the dense packing) runs on the serial device
+unless a device is named, and gives the bits of PoCL's threaded device
+(-device cpu).
 One PASS/FAIL line per check.
 """
 import math
@@ -224,6 +228,20 @@ def check_lanes():
     return bad
 
 
+def check_serial_default():
+    """The dense packing (1000 atoms) without a device named runs on the
+    serial device; with -device cpu on PoCL's threads; the same bits."""
+    rows_s, dump_s, out_s = run_full(PACK)
+    rows_t, dump_t, out_t = run_full(PACK, None, ("-device", "cpu"))
+    if rows_s is None or rows_t is None:
+        return not check("serial_by_default", False, ((dump_s or "") + (dump_t or ""))[-400:])
+    bad = not check("serial_by_default", "; serial:" in out_s and "; serial:" not in out_t,
+                    [l for l in (out_s + out_t).splitlines() if "OpenCL device" in l])
+    ok = rows_s == rows_t and dump_s == dump_t
+    return bad + (not check("serial_equals_threads", ok,
+                            "" if ok else first_difference(dump_t, dump_s)))
+
+
 def main():
     ref_rows, ref_dump = run(BED.format(extra=""))
     if ref_rows is None:
@@ -240,10 +258,11 @@ def main():
         ("lanes_device", "", {"GRAVEL_LANES": "device"}),
         ("lanes_16_workgroup_8", "", {"GRAVEL_LANES": "16", "GRAVEL_WORKGROUP": "8"}),
         ("rebuild_every_step", "neigh_modify every 1 delay 0 check no", None),
+        ("device_serial", "", None, ("-device", "serial")),
     ]
     bad = 0
-    for name, extra, env in variants:
-        rows, dump = run(BED.format(extra=extra), env)
+    for name, extra, env, *args in variants:
+        rows, dump = run(BED.format(extra=extra), env, *args)
         if rows is None:
             bad += not check("determinism_" + name, False, dump[-400:])
             continue
@@ -269,6 +288,7 @@ def main():
         bad += not check("lookahead_equals_none", ok,
                          "" if ok else first_difference(dump_f, dump_n))
     bad += check_drag()
+    bad += check_serial_default()
     rows, dump = run(PACK)
     if rows is None:
         bad += not check("pair_forces_sum_to_zero", False, dump[-400:])
