@@ -45,20 +45,30 @@
         }                                                                                      \
     } while (0)
 
-/* Note a wall contact of particle i with wall `code` (the work-item of i). */
+/* Note a wall contact of particle i with wall `code` (the work-item of i).
+ * Every law's dt / t_col is non-decreasing in vn for a given wall, R* and
+ * m* (t_col is constant or falls with vn), so a contact that matches the
+ * record's wall, R* and m* at no higher speed cannot beat it: the law's
+ * collision time (a pow for the Hertz laws) is evaluated only otherwise,
+ * and the record is the one the full test would keep. */
 #define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
+        __global REAL *rec_ = (acc) + ACC_WALL_W * (i);                                        \
         const REAL r_ = sqrt((k)->rsq);                                                        \
         const REAL vn_ = fabs((k)->vdel) / r_;                                                 \
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
-        if (ov_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_OV])                                       \
-            (acc)[ACC_WALL_W * (i) + ACC_WALL_OV] = ov_;                                       \
-        if (vn_ > (REAL)0) {                                                                   \
+        if (ov_ > rec_[ACC_WALL_OV])                                                           \
+            rec_[ACC_WALL_OV] = ov_;                                                           \
+        const int seen_ = rec_[ACC_WALL_CODE] == (REAL)(code) && vn_ <= rec_[ACC_WALL_VN] &&   \
+                          rec_[ACC_WALL_REFF] == (k)->reff && rec_[ACC_WALL_MEFF] == (k)->meff;\
+        if (vn_ > (REAL)0 && !seen_) {                                                         \
             const REAL tc_ = TCOL(k, p, vn_);                                                  \
-            if (tc_ > (REAL)0 && (k)->dt / tc_ > (acc)[ACC_WALL_W * (i) + ACC_WALL_Q]) {       \
-                (acc)[ACC_WALL_W * (i) + ACC_WALL_Q] = (k)->dt / tc_;                          \
-                (acc)[ACC_WALL_W * (i) + ACC_WALL_VN] = vn_;                                   \
-                (acc)[ACC_WALL_W * (i) + ACC_WALL_CODE] = (REAL)(code);                        \
+            if (tc_ > (REAL)0 && (k)->dt / tc_ > rec_[ACC_WALL_Q]) {                           \
+                rec_[ACC_WALL_Q] = (k)->dt / tc_;                                              \
+                rec_[ACC_WALL_VN] = vn_;                                                       \
+                rec_[ACC_WALL_CODE] = (REAL)(code);                                            \
+                rec_[ACC_WALL_REFF] = (k)->reff;                                               \
+                rec_[ACC_WALL_MEFF] = (k)->meff;                                               \
                 (astep)[i] = step;                                                             \
             }                                                                                  \
         }                                                                                      \

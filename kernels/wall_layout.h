@@ -68,9 +68,10 @@ enum { RG_MAXNODE = 4, RG_MAXC = 8 };
 /* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c): ACC_PAIR_W REAL
  * per pair contact (largest dt / t_col, the squared normal speed then) and
  * ACC_WALL_W REAL per particle for its wall contacts (largest dt / t_col,
- * normal speed then, largest overlap / radius, the wall's code). */
+ * normal speed then, largest overlap / radius, the wall's code, and that
+ * contact's R* and m*). */
 enum acc_layout { ACC_PAIR_Q = 0, ACC_PAIR_VN2 = 1, ACC_PAIR_W = 2,
                   ACC_WALL_Q = 0, ACC_WALL_VN = 1, ACC_WALL_OV = 2, ACC_WALL_CODE = 3,
-                  ACC_WALL_W = 4 };
+                  ACC_WALL_REFF = 4, ACC_WALL_MEFF = 5, ACC_WALL_W = 6 };
 
 #endif

@@ -18,7 +18,7 @@ enum { NCHUNK = 256, PAIR_REC = ACC_PAIR_W, WALL_REC = ACC_WALL_W };
 
 struct acc {
     cl_mem prec, pstep;     /* pair contacts: REAL[2], int */
-    cl_mem wrec, wstep;     /* particles (walls): REAL[4], int */
+    cl_mem wrec, wstep;     /* particles (walls): REAL[ACC_WALL_W], int */
     cl_mem out, idx;        /* reduction: REAL[2 NCHUNK], int[2 NCHUNK] */
     size_t pcap, wcap, rsz;
     cl_kernel k_reduce;
