@@ -270,24 +270,33 @@ static inline int stencil(const int c, const int nc, const int periodic, int out
     return k;
 }
 
-/* Contiguous index ranges covering the x-stencil of one (y, z) row: cells
- * are numbered x fastest, so neighboring x cells that do not wrap form one
- * range of the sorted atoms. Returns the number of ranges (1..3). */
-static inline int row_ranges(__global const int *start, const int rowbase, const int *xs,
-                             const int nxs, int *lo, int *hi)
+/* The x-stencil of `stencil` as ranges of cells lo[e] .. hi[e] (cells are
+ * numbered x fastest, so each range is one contiguous run of the sorted
+ * atoms in every (y, z) row): one range, or two when a periodic stencil
+ * wraps. The same cells as stencil(c, nc, periodic), each once. Returns the
+ * number of ranges. */
+static inline int stencil_x(const int c, const int nc, const int periodic, int lo[2], int hi[2])
 {
-    int r = 0;
-    for (int e = 0; e < nxs; e++) {
-        const int cell = rowbase + xs[e];
-        if (r > 0 && xs[e] == xs[e - 1] + 1) {
-            hi[r - 1] = start[cell + 1];
-        } else {
-            lo[r] = start[cell];
-            hi[r] = start[cell + 1];
-            r++;
-        }
+    if (nc < 3) {
+        lo[0] = 0;
+        hi[0] = nc - 1;
+        return 1;
     }
-    return r;
+    if (periodic && c == 0) {
+        lo[0] = 0;
+        hi[0] = 1;
+        lo[1] = hi[1] = nc - 1;
+        return 2;
+    }
+    if (periodic && c == nc - 1) {
+        lo[0] = nc - 2;
+        hi[0] = nc - 1;
+        lo[1] = hi[1] = 0;
+        return 2;
+    }
+    lo[0] = max(c - 1, 0);
+    hi[0] = min(c + 1, nc - 1);
+    return 1;
 }
 
 /* The pair test of every list build: j is a neighbor of i when
@@ -388,18 +397,17 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     int cx = clamp((int)(u.x * sx), 0, nx - 1);
     int cy = clamp((int)(u.y * sy), 0, ny - 1);
     int cz = clamp((int)(u.z * sz), 0, nz - 1);
-    int sxs[3], sys[3], szs[3];
-    const int nsx = stencil(cx, nx, px, sxs);
+    int sys[3], szs[3], xl[2], xh[2];
+    const int nxr = stencil_x(cx, nx, px, xl, xh);
     const int nsy = stencil(cy, ny, py, sys);
     const int nsz = stencil(cz, nz, pz, szs);
     __global int *row = nlist + (size_t)i * maxn;
     int cnt = 0, own = 0;
     for (int a = 0; a < nsz; a++)
         for (int b = 0; b < nsy; b++) {
-            int rlo[3], rhi[3];
-            const int nr = row_ranges(start, (szs[a] * ny + sys[b]) * nx, sxs, nsx, rlo, rhi);
-            for (int e = 0; e < nr; e++) {
-                const int s = rlo[e], t = rhi[e];
+            const int rowbase = (szs[a] * ny + sys[b]) * nx;
+            for (int e = 0; e < nxr; e++) {
+                const int s = start[rowbase + xl[e]], t = start[rowbase + xh[e] + 1];
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
                     if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz, xy,
