@@ -90,8 +90,7 @@ for deck in $decks; do
     l1=$(median < "$tmp/l1"); l2=$(median < "$tmp/l2")
     printf "%-8s %9s %9s %9s %9s %8s %8s\n" "$deck" "$(mps "$gd")" "$(mps "$gs")" \
         "$(mps "$l1")" "$(mps "$l2")" "$(ratio "$gd" "$l2")" "$(ratio "$gs" "$l2")"
-    eval "rate_$deck=$gd"
-    cp "$tmp/l1" "$tmp/l1_$deck"
+    eval "rate_$deck=$gd; lmp1_$deck=$l1"
 done
 if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
     printf "agglomeration (N = 10^4, double) / dilute gas (double) = %s (goal >= 0.5)\n" \
@@ -99,7 +98,7 @@ if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
 fi
 if [ -n "$rate_drum" ] && [ $have_lmp = 1 ]; then
     printf "drum (126 spheres, double) / LAMMPS-1 = %s (goal >= 1)\n" \
-        "$(ratio "$rate_drum" "$(median < "$tmp/l1_drum")")"
+        "$(ratio "$rate_drum" "$lmp1_drum")"
 fi
 [ $have_lmp = 1 ] || echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
 if [ "${BENCH_MEMORY:-1}" != 0 ]; then

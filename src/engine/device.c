@@ -12,31 +12,21 @@
 #include "error.h"
 #include "log.h"
 
-static struct engine *engine_of(struct gravel *g)
+struct engine *eng_open(struct gravel *g, long atoms)
 {
     if (!g->eng)
         g->eng = gr_calloc(g, 1, sizeof *g->eng);
-    return g->eng;
-}
-
-void eng_expect_atoms(struct gravel *g, long atoms)
-{
-    struct engine *e = engine_of(g);
-    e->expect_atoms = atoms;
-    e->expect_set = 1;
-}
-
-struct engine *eng_get(struct gravel *g)
-{
-    struct engine *e = engine_of(g);
+    struct engine *e = g->eng;
     if (!e->ready) {
-        ocl_init(g, &e->ocl, g->opt.device, e->expect_set ? e->expect_atoms : -1);
+        ocl_init(g, &e->ocl, g->opt.device, atoms);
         e->ready = 1;
         gr_print(g, "OpenCL device: %s (%s)%s\n", e->ocl.name, e->ocl.version,
                  e->ocl.serial ? "; serial: kernels run in gravel's own thread" : "");
     }
     return e;
 }
+
+struct engine *eng_get(struct gravel *g) { return eng_open(g, -1); }
 
 struct dev_atoms *eng_atoms(struct gravel *g) { return &g->eng->a; }
 int eng_in_setup(struct gravel *g) { return g->eng && g->eng->setup; }

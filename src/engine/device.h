@@ -97,8 +97,6 @@ struct run_stats {
 struct engine {
     struct ocl ocl;
     int ready;                  /* device chosen */
-    long expect_atoms;          /* atoms per process the first run expects (eng_expect_atoms) */
-    int expect_set;             /* ... given: else the device choice does without */
     int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
     int pair_lw;                /* contacts per work-item of pair_contacts (PAIR_LW) */
     char lanes_prologue[160];   /* kernels/lanes.cl's prologue at the pair width */
@@ -180,9 +178,9 @@ struct engine {
 
 /* Device state of g, creating the device on first use. */
 struct engine *eng_get(struct gravel *g);
-/* Before the device is chosen: the atoms per process the run expects
- * (ocl_init takes PoCL's serial device for a small scene). */
-void eng_expect_atoms(struct gravel *g, long atoms);
+/* eng_get for a run that expects `atoms` per process: a device chosen now
+ * is PoCL's serial one for a small scene (ocl_init). */
+struct engine *eng_open(struct gravel *g, long atoms);
 /* The current per-atom buffers. */
 struct dev_atoms *eng_atoms(struct gravel *g);
 /* 1 during the setup force computation of a run (no history update). */

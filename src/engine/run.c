@@ -441,10 +441,8 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
 {
     check_atoms(g);
     ocl_mem_reset_peak();
-    if (!g->eng || !g->eng->ready) { /* the first run chooses the device by its size */
-        double rmax;
-        eng_expect_atoms(g, (g->atoms.n + insertions(g, nsteps, &rmax)) / comm_size());
-    }
+    double rmax; /* the first run chooses the device by its size */
+    eng_open(g, (g->atoms.n + insertions(g, nsteps, &rmax)) / comm_size());
     for (int i = 0; i < g->styles.nfix; i++)
         if (g->styles.fix[i]->style->prepare)
             g->styles.fix[i]->style->prepare(g, g->styles.fix[i]);
