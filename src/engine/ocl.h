@@ -38,7 +38,7 @@ struct ocl {
                                  * GRAVEL_WORKGROUP, else 128 capped by the device */
     int lanes_double;           /* contacts per work-item of a lane-generic law (kernels/
                                  * lanes.cl) in double and in single: env GRAVEL_LANES
-                                 * (ocl.c, ocl_lanes), 1 by default */
+                                 * (ocl.c, ocl_lanes), 4 on a CPU by default */
     int lanes_float;
 };
 

@@ -12,7 +12,7 @@ bit-identical in every variant:
   - atom_modify sort 0 (never re-sorted) and sort 137 (every 137 steps);
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - GRAVEL_LANES=1, 2, 16 and device (the device's preferred vector width)
-    contacts per pair work-item (kernels/lanes.cl; the default is 1);
+    contacts per pair work-item (kernels/lanes.cl; the default is 4 on a CPU);
   - neigh_modify check no (a rebuild every step: other neighbor sets);
   - -device serial (PoCL's serial device: every kernel in gravel's thread).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
