@@ -49,9 +49,10 @@
  * removed (gravity at the centre of mass, LIGGGHTS), no degree of freedom
  * is removed and thermo ke counts 1/2 M vcm^2 per body (ke_adjust).
  *
+ * Restart files keep the bodies (write_restart, read_restart below).
+ *
  * Not supported (clear errors): langevin, infile, the custom body ID style,
- * thermostats/barostats of rigid/n?t/small; write_restart of a run with
- * bodies. */
+ * thermostats/barostats of rigid/n?t/small. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1012,24 +1013,70 @@ static double ke_adjust(struct gravel *g, struct fix *f)
     return d;
 }
 
+/* Restart state: the bodies and their members as the run left them (this
+ * build's layout: restart files are read by the build that wrote them,
+ * doc/restart.md). A fix that recomputes its bodies at every run's start
+ * (rigid/small, reinit yes: LAMMPS setup_bodies_static/dynamic) continues
+ * from the atoms as a second run in one deck does; with `reinit no` and for
+ * fix multisphere (bodies from the insertion fixes, the template's mass and
+ * inertia) the bodies are restored and the run continues exactly. */
+struct rigid_saved {
+    int32_t version, nbody, nmem, setupflag, extended;
+};
+#define RIGID_SAVED_VERSION 1
+
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
-    (void)buf;
-    (void)cap;
-    struct rigid *r = f->data;
-    if (r->nbody)
-        gr_error(g, "write_restart: fix rigid/small %s holds %d rigid bodies, whose state "
-                    "restart files do not store yet (not supported for rigid bodies)", f->id,
-                 r->nbody);
-    return 0;
+    (void)g;
+    const struct rigid *r = f->data;
+    const size_t bb = (size_t)r->nbody * sizeof *r->b, mb = (size_t)r->nmem * sizeof *r->m;
+    const size_t len = sizeof(struct rigid_saved) + bb + mb;
+    if (!buf || cap < len)
+        return len;
+    struct rigid_saved h = {RIGID_SAVED_VERSION, r->nbody, r->nmem, r->setupflag, r->extended};
+    memcpy(buf, &h, sizeof h);
+    if (bb)
+        memcpy(buf + sizeof h, r->b, bb);
+    if (mb)
+        memcpy(buf + sizeof h + bb, r->m, mb);
+    return len;
 }
 
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
-    (void)g;
-    (void)f;
-    (void)buf;
-    (void)len;
+    struct rigid *r = f->data;
+    struct rigid_saved h;
+    if (len < sizeof h)
+        gr_error(g, "fix %s: restart state of %zu bytes is too short", f->id, len);
+    memcpy(&h, buf, sizeof h);
+    const size_t bb = (size_t)h.nbody * sizeof *r->b, mb = (size_t)h.nmem * sizeof *r->m;
+    if (h.version != RIGID_SAVED_VERSION || h.nbody < 0 || h.nmem < 0 ||
+        len != sizeof h + bb + mb)
+        gr_error(g, "fix %s: restart state of %zu bytes does not hold rigid bodies of this "
+                    "build (written by another version?)", f->id, len);
+    if (!r->ms && r->reinit) { /* recomputed from the atoms at the run's start */
+        if (h.nbody != r->nbody || h.nmem != r->nmem)
+            gr_error(g, "fix %s: the restart file holds %d rigid bodies of %d atoms, the atoms' "
+                        "molecule IDs make %d bodies of %d atoms", f->id, h.nbody, h.nmem,
+                     r->nbody, r->nmem);
+        return;
+    }
+    r->nbody = r->nmem = 0;
+    for (int ib = 0; ib < h.nbody; ib++)
+        memcpy(new_body(g, r), buf + sizeof h + (size_t)ib * sizeof *r->b, sizeof *r->b);
+    for (int k = 0; k < h.nmem; k++) {
+        struct member *m = new_member(g, r);
+        memcpy(m, buf + sizeof h + bb + (size_t)k * sizeof *r->m, sizeof *r->m);
+        m->dev = -1;
+        if (m->body < 0 || m->body >= r->nbody)
+            gr_error(g, "fix %s: restart state names rigid body %d of %d", f->id, m->body + 1,
+                     r->nbody);
+    }
+    sort_members(g, r);
+    r->setupflag = h.setupflag;
+    r->extended = h.extended;
+    r->dcap = 0;
+    r->mapped = 0;
 }
 
 static void destroy(struct fix *f)

@@ -15,8 +15,8 @@
    energy (translation + sphere spins) drifts by less than 1e-9 over 6000
    steps (Richardson quaternion update; measured 5e-11).
 3. Errors name the line: rigid/small without molecule IDs, exclude
-   molecule/intra without them, a missing molecule template, write_restart of
-   a run with rigid bodies (not supported for rigid bodies yet)."""
+   molecule/intra without them, a missing molecule template (restart files
+   with bodies: tests/scripts/restart_rigid.py)."""
 import glob
 import os
 import subprocess
@@ -180,13 +180,6 @@ def main():
     error_case("missing molecule template",
                HEAD % "fix p all property/atom mol" +
                "fix r all rigid/small molecule mol nosuch\n", "nosuch")
-    error_case("write_restart with rigid bodies",
-               HEAD % "fix p all property/atom mol" +
-               "set atom * mol 1\npair_style gran/hooke 2000 NULL 50 NULL 0.5 0\n"
-               "pair_coeff * *\nneigh_modify exclude molecule/intra all\n"
-               "fix r all rigid/small molecule\nthermo_style custom step atoms\nrun 10\n"
-               "write_restart out.restart\n",
-               "not supported for rigid bodies")
     error_case("molecule file with a bad section",
                HEAD % "" + "molecule m bad.mol\n", "unsupported section 'Bonds'",
                {"bad.mol": "# bad\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 1 0 0\n\n"
