@@ -952,6 +952,24 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule
     r->mapped = 0; /* a rebuild follows the insertion (post_neighbor) */
 }
 
+void rigid_small_body_energy(const struct fix *f, double *ke, double *erot)
+{
+    const struct rigid *r = f->data;
+    double t = 0, w = 0;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        const struct rbody *b = &r->b[ib];
+        const double *v = b->vcm, *om = b->omega;
+        t += 0.5 * b->mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        const double *axis[3] = {b->ex, b->ey, b->ez};
+        for (int k = 0; k < 3; k++) {
+            const double wk = axis[k][0] * om[0] + axis[k][1] * om[1] + axis[k][2] * om[2];
+            w += 0.5 * b->inertia[k] * wk * wk;
+        }
+    }
+    *ke = t;
+    *erot = w;
+}
+
 /* LAMMPS FixRigidSmall::dof */
 static double dof(struct gravel *g, struct fix *f, unsigned groupbit)
 {

@@ -21,4 +21,10 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule
                           int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
                           const double quat[4]);
 
+/* The bodies' kinetic energies (mass x velocity^2 units, before mvv2e):
+ * translational sum 1/2 M vcm^2 and rotational sum 1/2 sum_k I_k w_k^2, w_k
+ * the angular velocity on principal axis k, over fix f's bodies, in body
+ * order. */
+void rigid_small_body_energy(const struct fix *f, double *ke, double *erot);
+
 #endif

@@ -35,7 +35,12 @@
    where LIGGGHTS put it (committed rate_600.vtk, ABS_X6: the random quaternions drawn
    as LIGGGHTS's), KinEng rows equal to every digit until the clumps land (16000), then
    within REL_RATE.
-6. Bad commands stop with a message naming the script line.
+6. tests/reference/liggghts_multisphere/energy.in: compute ke/multisphere and
+   erotate/multisphere of a dumbbell clump (exact mass and tensor given) bouncing off a
+   frictionless plane: every thermo row (ke, both computes) within REL_PRINT of
+   `liggghts`'s committed energy.liggghts.log; ke/multisphere equals thermo ke; no spin
+   before the bounce, a constant one after it.
+7. Bad commands stop with a message naming the script line.
 
 --update reruns `liggghts` on the tutorial and rewrites the committed log and dumps.
 One PASS/FAIL line per case; SKIP when the tutorial is not installed."""
@@ -341,6 +346,28 @@ def check_rate():
           % (dx, max(rel, default=-1)))
 
 
+def check_energy():
+    """energy.in: compute ke/multisphere and erotate/multisphere of a bouncing
+    dumbbell against LIGGGHTS's log: every thermo row to its printed digits."""
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "energy.in"), tmp)
+        out = run_gravel(tmp, "energy.in")
+    rows = thermo(out.stdout)
+    qrows = thermo(open(os.path.join(REF, "energy.liggghts.log")).read())
+    worst = max((abs(float(r[k]) - float(q[k])) / max(abs(float(q[k])), 1e-300)
+                 for r, q in zip(rows, qrows) for k in (2, 3, 4) if float(q[k])), default=-1)
+    spin = [float(q[4]) for q in qrows if int(q[0]) >= 10000]
+    ok = (len(rows) == len(qrows) == 28 and 0 <= worst <= REL_PRINT and
+          all(float(r[2]) == float(r[3]) for r in rows) and spin and min(spin) > 0 and
+          all(float(r[4]) == 0 for r in rows if int(r[0]) <= 8000))
+    report(ok, "liggghts_multisphere_energy_computes",
+           "%d rows (liggghts %d), largest relative difference %g (> %g?), ke/multisphere = "
+           "thermo ke on every row: %s" % (len(rows), len(qrows), worst, REL_PRINT,
+                                           all(float(r[2]) == float(r[3]) for r in rows)))
+    print("  ke/multisphere, erotate/multisphere of a bouncing dumbbell: every row within "
+          "%.1e of LIGGGHTS's (8 printed digits)" % worst)
+
+
 def stage_file(tmp):
     open(os.path.join(tmp, "s.txt"), "w").write("# x y z r\n0 0 0 1\n\n1.5 0 0 1\n")
 
@@ -387,6 +414,11 @@ BAD = [("no_multisphere",
 
 def update():
     with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "energy.in"), tmp)
+        out = subprocess.run(["liggghts", "-in", "energy.in", "-log", "none"], cwd=tmp,
+                             check=True, capture_output=True, text=True, timeout=1200)
+        open(os.path.join(REF, "energy.liggghts.log"), "w").write(out.stdout)
+    with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(os.path.join(REF, "rate.in"), tmp)
         os.makedirs(os.path.join(tmp, "post"))
         out = subprocess.run(["liggghts", "-in", "rate.in"], cwd=tmp, check=True,
@@ -410,6 +442,7 @@ if __name__ == "__main__":
     check_analytic()
     check_rigid()
     check_rate()
+    check_energy()
     check_tutorial()
     if os.path.isdir(TUTORIAL):
         check_tensor380()
