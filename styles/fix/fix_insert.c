@@ -762,7 +762,8 @@ static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle
     for (int d = 0; d < 3; d++) /* the geometric centre: rot (center - com) + xcm */
         xgeom[d] = p->x[d] + rot[d][0] * (m->center[0] - m->com[0]) +
                    rot[d][1] * (m->center[1] - m->com[1]) + rot[d][2] * (m->center[2] - m->com[2]);
-    rigid_small_add_body(g, ms, m, first, tagprev, xgeom, vel, p->quat);
+    int body = rigid_small_add_body(g, ms, m, first, tagprev, xgeom, vel, p->quat);
+    rigid_small_hold(ms, body, c->fflag, c->tflag);
 }
 
 static int64_t max_tag(const struct gravel *g)

@@ -27,9 +27,10 @@
  * machinery: atoms = spheres, each of mass M/N (their weights sum to the
  * body's: gravity on the atoms is M g), centre of mass 0, the tensor above;
  * its principal axes are found by the same Jacobi rotations as rigid/small's
- * bodies. Not supported (errors naming the keyword): radius,
- * spheres_different_types, bonded yes, fflag/tflag off, a non-constant
- * density. Full contract: doc/styles/fix_particletemplate_multisphere.md. */
+ * bodies. fflag/tflag (on|off per component) hold the inserted bodies'
+ * velocity or angular momentum components (fix_rigid_small.h,
+ * rigid_small_hold). Not supported (errors naming the keyword): radius,
+ * spheres_different_types, bonded yes, a non-constant density. Full contract: doc/styles/fix_particletemplate_multisphere.md. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,6 +40,7 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_particletemplate_multisphere.h"
+#include "fix_rigid_small.h"
 #include "log.h"
 #include "molecule.h"
 
@@ -207,21 +209,6 @@ static void inertia_mc(const struct mstemplate *c, struct rng_park *rng, double 
     it[3] = m[1][2] * s, it[4] = m[0][2] * s, it[5] = m[0][1] * s;
 }
 
-/* `on on on` after fflag/tflag: anything off is refused. */
-static int flags(struct gravel *g, int argc, char **argv, int i)
-{
-    arg_need(g, argc, i, 3, argv[i]);
-    for (int k = 1; k <= 3; k++) {
-        if (!strcmp(argv[i + k], "off"))
-            gr_error(g, WHO ": '%s ... off' (a body with frozen degrees of freedom) is not "
-                        "supported", argv[i]);
-        if (strcmp(argv[i + k], "on"))
-            gr_error(g, WHO ": expecting 'on or 'off' after '%s', got '%.64s'", argv[i],
-                     argv[i + k]);
-    }
-    return 4;
-}
-
 static void make_molecule(struct gravel *g, struct fix *f, struct mstemplate *c, double mass,
                           const double it[6])
 {
@@ -268,6 +255,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->data = c;
     struct ptemplate *t = &c->t;
     t->ms = c;
+    for (int q = 0; q < 3; q++)
+        c->fflag[q] = c->tflag[q] = 1;
     ptemplate_start(g, f, t, argc, argv, WHO);
     int i = 1, n;
     while (i < argc && (n = ptemplate_keyword(g, t, argc, argv, i, WHO)))
@@ -372,7 +361,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             moi_set = 1;
             i += 7;
         } else if (!strcmp(k, "fflag") || !strcmp(k, "tflag")) {
-            i += flags(g, argc, argv, i);
+            rigid_small_flags_arg(g, argc, argv, i, k[0] == 'f' ? c->fflag : c->tflag);
+            i += 4;
         } else {
             gr_error(g, WHO ": unknown keyword '%.64s' (type, mass, inertia_tensor, "
                         "use_volume, use_density, fflag, tflag)", k);

@@ -16,6 +16,7 @@ struct mstemplate {
     double xmin[3], xmax[3];    /* bounding box of the spheres (same frame) */
     double rbound, xbound[3];   /* bounding sphere */
     double requiv;
+    int fflag[3], tflag[3];     /* LIGGGHTS's fflag, tflag: 0 = that component held */
     /* the clump as a rigid-body template: atoms = spheres, masses M/n, centre of
      * mass at 0, the Monte-Carlo (or given) inertia tensor */
     struct molecule *mol;

@@ -77,6 +77,9 @@ struct rbody {
     double quat[4], inertia[3], ex[3], ey[3], ez[3], xgc_body[3];
     int image[3];           /* periodic image of xcm (LAMMPS body image) */
     int natoms;
+    /* fix multisphere (LIGGGHTS fflag, tflag): 0 where the body's velocity or
+     * angular momentum component is not kicked (held); 1 otherwise */
+    unsigned char fflag[3], tflag[3];
 };
 
 struct member {
@@ -154,6 +157,8 @@ static struct rbody *new_body(struct gravel *g, struct rigid *r)
     }
     struct rbody *b = &r->b[r->nbody++];
     memset(b, 0, sizeof *b);
+    for (int q = 0; q < 3; q++)
+        b->fflag[q] = b->tflag[q] = 1;
     return b;
 }
 
@@ -875,9 +880,11 @@ static void initial_integrate(struct gravel *g, struct fix *f)
         struct rbody *b = &r->b[ib];
         double dtfm = r->dtf / b->mass;
         for (int q = 0; q < 3; q++) {
-            b->vcm[q] += dtfm * b->fcm[q];
+            if (b->fflag[q])
+                b->vcm[q] += dtfm * b->fcm[q];
             b->xcm[q] += r->dtv * b->vcm[q];
-            b->angmom[q] += r->dtf * b->torque[q];
+            if (b->tflag[q])
+                b->angmom[q] += r->dtf * b->torque[q];
         }
         rm_angmom_to_omega(b->angmom, b->ex, b->ey, b->ez, b->inertia, b->omega);
         rm_richardson(b->quat, b->angmom, b->omega, b->inertia, r->dtq);
@@ -898,17 +905,19 @@ static void final_integrate(struct gravel *g, struct fix *f)
         struct rbody *b = &r->b[ib];
         double dtfm = r->dtf / b->mass;
         for (int q = 0; q < 3; q++) {
-            b->vcm[q] += dtfm * b->fcm[q];
-            b->angmom[q] += r->dtf * b->torque[q];
+            if (b->fflag[q])
+                b->vcm[q] += dtfm * b->fcm[q];
+            if (b->tflag[q])
+                b->angmom[q] += r->dtf * b->torque[q];
         }
         rm_angmom_to_omega(b->angmom, b->ex, b->ey, b->ez, b->inertia, b->omega);
     }
     set_xv(g, f, 0);
 }
 
-void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
-                          int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
-                          const double quat[4])
+int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
+                         int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                         const double quat[4])
 {
     struct rigid *r = f->data;
     struct atoms *a = &g->atoms;
@@ -950,6 +959,44 @@ void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule
     for (int q = 0; q < 3; q++)
         b->xgc_body[q] = -b->xgc_body[q];
     r->mapped = 0; /* a rebuild follows the insertion (post_neighbor) */
+    return body;
+}
+
+void rigid_small_hold(struct fix *f, int body, const int fflag[3], const int tflag[3])
+{
+    struct rigid *r = f->data;
+    for (int ib = body < 0 ? 0 : body; ib < (body < 0 ? r->nbody : body + 1); ib++)
+        for (int q = 0; q < 3; q++) {
+            if (fflag)
+                r->b[ib].fflag[q] = fflag[q] != 0;
+            if (tflag)
+                r->b[ib].tflag[q] = tflag[q] != 0;
+        }
+}
+
+/* `fix_modify ID fflag|tflag X Y Z` (fix multisphere, LIGGGHTS
+ * FixMultisphere::modify_param): on/off per component for every body that
+ * exists now; bodies inserted later take their template's flags. */
+static int modify_param(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    struct rigid *r = f->data;
+    if (!r->ms || (strcmp(argv[0], "fflag") && strcmp(argv[0], "tflag")))
+        return 0;
+    int v[3];
+    rigid_small_flags_arg(g, argc, argv, 0, v);
+    rigid_small_hold(f, -1, argv[0][0] == 'f' ? v : NULL, argv[0][0] == 't' ? v : NULL);
+    return 4;
+}
+
+void rigid_small_flags_arg(struct gravel *g, int argc, char **argv, int i, int v[3])
+{
+    arg_need(g, argc, i, 3, argv[i]);
+    for (int k = 0; k < 3; k++) {
+        const char *w = argv[i + 1 + k];
+        if (strcmp(w, "on") && strcmp(w, "off"))
+            gr_error(g, "expecting 'on or 'off' after '%s', got '%.64s'", argv[i], w);
+        v[k] = !strcmp(w, "on");
+    }
 }
 
 void rigid_small_body_energy(const struct fix *f, double *ke, double *erot)
@@ -1129,7 +1176,7 @@ static void destroy(struct fix *f)
     .flags = FIX_STORES_IDS, .init = init, .setup = setup,                                   \
     .initial_integrate = initial_integrate, .final_integrate = final_integrate,              \
     .post_neighbor = post_neighbor, .dof = dof, .write_restart = write_restart,              \
-    .read_restart = read_restart, .destroy = destroy
+    .read_restart = read_restart, .modify_param = modify_param, .destroy = destroy
 
 const struct fix_style fix_style_rigid_small = {
     .name = "rigid/small",

@@ -16,10 +16,17 @@ struct molecule *rigid_small_template(const struct fix *f);
  * inserted with the template's geometric centre at xgeom, rotated by quat
  * about it, moving with vcm (LAMMPS set_molecule). Its mass, centre of mass
  * and principal moments are the template's. fix multisphere also gives the
- * atoms the body's ID as molecule ID and its clump group. */
-void rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
-                          int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
-                          const double quat[4]);
+ * atoms the body's ID as molecule ID and its clump group. Returns the body's
+ * index. */
+int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
+                         int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                         const double quat[4]);
+/* LIGGGHTS's fflag/tflag of body `body` (every body when < 0): 0 where a
+ * component of its velocity (fflag) or angular momentum (tflag) is never
+ * kicked; NULL leaves that set as it is. */
+void rigid_small_hold(struct fix *f, int body, const int fflag[3], const int tflag[3]);
+/* The three on/off words after argv[i] (fflag or tflag) as 1/0 in v. */
+void rigid_small_flags_arg(struct gravel *g, int argc, char **argv, int i, int v[3]);
 
 /* The bodies' kinetic energies (mass x velocity^2 units, before mvv2e):
  * translational sum 1/2 M vcm^2 and rotational sum 1/2 sum_k I_k w_k^2, w_k

@@ -40,7 +40,12 @@
    frictionless plane: every thermo row (ke, both computes) within REL_PRINT of
    `liggghts`'s committed energy.liggghts.log; ke/multisphere equals thermo ke; no spin
    before the bounce, a constant one after it.
-7. Bad commands stop with a message naming the script line.
+7. tests/reference/liggghts_multisphere/flags.in: LIGGGHTS's fflag/tflag (a template
+   holding the x angular momentum through a frictional bounce, then `fix_modify ms
+   fflag on on off` and `tflag off off off`): every row within 1e-9 (ke) and 1e-6
+   (erotate) of `liggghts`'s committed flags.liggghts.log; the z velocity held after
+   the fix_modify (ke constant); the deck without the flags differs (control).
+8. Bad commands stop with a message naming the script line.
 
 --update reruns `liggghts` on the tutorial and rewrites the committed log and dumps.
 One PASS/FAIL line per case; SKIP when the tutorial is not installed."""
@@ -368,6 +373,39 @@ def check_energy():
           "%.1e of LIGGGHTS's (8 printed digits)" % worst)
 
 
+def check_flags():
+    """flags.in: a template's tflag and fix_modify's fflag/tflag against
+    LIGGGHTS's log; the same deck without the flags differs (control)."""
+    deck = open(os.path.join(REF, "flags.in")).read()
+    free = deck.replace(" tflag off on on", "").replace(
+        "fix_modify      ms fflag on on off\n", "").replace(
+        "fix_modify      ms tflag off off off\n", "")
+    runs = []
+    for text in (deck, free):
+        with tempfile.TemporaryDirectory() as tmp:
+            open(os.path.join(tmp, "flags.in"), "w").write(text)
+            runs.append(thermo(run_gravel(tmp, "flags.in").stdout))
+    rows, plain = runs
+    qrows = thermo(open(os.path.join(REF, "flags.liggghts.log")).read())
+
+    def rel(a, b):
+        return abs(float(a) - float(b)) / max(abs(float(b)), 1e-300)
+    worst_ke = max((rel(r[k], q[k]) for r, q in zip(rows, qrows) for k in (2, 3)), default=-1)
+    worst_rot = max((rel(r[4], q[4]) for r, q in zip(rows, qrows) if float(q[4])), default=-1)
+    held = [r for r in rows if int(r[0]) >= 12001]
+    ok = (len(rows) == len(qrows) == 44 and 0 <= worst_ke <= 1e-9 and 0 <= worst_rot <= 1e-6
+          and len({r[2] for r in held}) == 1 and len(plain) == len(rows) and
+          rel(plain[-1][2], rows[-1][2]) > 1e-2 and
+          all(rel(p[4], r[4]) > 1e-3 for p, r in zip(plain, rows) if int(r[0]) == 10000))
+    report(ok, "liggghts_multisphere_fflag_tflag",
+           "%d rows (liggghts %d), ke within %g, erotate within %g, held z velocity: ke %s, "
+           "without the flags: last ke %s" % (len(rows), len(qrows), worst_ke, worst_rot,
+                                              sorted({r[2] for r in held})[:3],
+                                              plain[-1][2] if plain else "?"))
+    print("  fflag/tflag: every row within %.1e (ke) and %.1e (erotate/multisphere) of "
+          "LIGGGHTS's" % (worst_ke, worst_rot))
+
+
 def stage_file(tmp):
     open(os.path.join(tmp, "s.txt"), "w").write("# x y z r\n0 0 0 1\n\n1.5 0 0 1\n")
 
@@ -381,7 +419,10 @@ BAD = [("no_multisphere",
         "currently does not support keyword 'radius'", 1),
        ("density", TWO.replace("constant 1000", "uniform 900 1100"),
         "currently only supports constant density", 1),
-       ("fflag", TWO.replace("type 1\n", "type 1 fflag on on off\n"), "'fflag ... off'", 1),
+       ("fflag", TWO.replace("type 1\n", "type 1 fflag on maybe on\n"), "expecting 'on or 'off'",
+        1),
+       ("fix_modify_tflag", "fix ms all multisphere\nfix_modify ms tflag on off\n",
+        "tflag", 2),
        ("bonded", TWO.replace("spheres 0.02", "bonded yes spheres 0.02"),
         "'bonded yes' is not supported", 1),
        ("different_types", TWO.replace("spheres 0.02", "spheres_different_types 0.02"),
@@ -418,6 +459,10 @@ def update():
         out = subprocess.run(["liggghts", "-in", "energy.in", "-log", "none"], cwd=tmp,
                              check=True, capture_output=True, text=True, timeout=1200)
         open(os.path.join(REF, "energy.liggghts.log"), "w").write(out.stdout)
+        shutil.copy(os.path.join(REF, "flags.in"), tmp)
+        out = subprocess.run(["liggghts", "-in", "flags.in", "-log", "none"], cwd=tmp,
+                             check=True, capture_output=True, text=True, timeout=1200)
+        open(os.path.join(REF, "flags.liggghts.log"), "w").write(out.stdout)
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(os.path.join(REF, "rate.in"), tmp)
         os.makedirs(os.path.join(tmp, "post"))
@@ -443,6 +488,7 @@ if __name__ == "__main__":
     check_rigid()
     check_rate()
     check_energy()
+    check_flags()
     check_tutorial()
     if os.path.isdir(TUTORIAL):
         check_tensor380()
