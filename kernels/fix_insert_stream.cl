@@ -5,7 +5,9 @@
  * - i_step) dt v_int, with omega, force and torque zero, whatever the
  * integrator and the forces did during the step, until its release step
  * r_step (its centre reaches the face); at r_step it gets the release
- * velocity v_rel and omega_ins and moves freely from then on.
+ * velocity v_rel and omega_ins and moves freely from then on. An atom of a
+ * clump (mask & clumpbit, fix multisphere's atoms) is left alone at r_step:
+ * its body is released (LIGGGHTS FixInsertStream::end_of_step). 
  *
  * Per-atom state (the fix's peratom buffer, `stride` ints per atom): int
  * i_step, int r_step (i_step 0: not an atom of this fix), then REAL x_ins hi
@@ -18,14 +20,15 @@ __kernel void insert_stream_end_of_step(const int n, const uint groupbit,
                                         const REAL dt, const REAL omx, const REAL omy,
                                         const REAL omz, __global REAL *x, __global REAL *v,
                                         __global REAL *f, __global REAL *omega,
-                                        __global REAL *torque POS_LO_PARAM)
+                                        __global REAL *torque,
+                                        const uint clumpbit POS_LO_PARAM)
 {
     const int i = get_global_id(0);
     if (i >= n || !(mask[i] & groupbit))
         return;
     __global const int *s = state + (size_t)i * stride;
     const int i_step = s[0], r_step = s[1];
-    if (i_step == 0 || step > r_step)
+    if (i_step == 0 || step > r_step || (step == r_step && (mask[i] & clumpbit)))
         return;
     __global const REAL *d = (__global const REAL *)(s + 2);
     const REAL3 vint = vload3(2, d);

@@ -801,10 +801,9 @@ void insert_init(struct gravel *g, struct fix *f)
                 gr_error(g, "%s %s: template %s is a clump (particletemplate/multisphere): "
                             "fix multisphere is required", in->ops->who, f->id,
                          in->dist->tpl_id[i]);
-            if (in->ops->finalize)
-                gr_error(g, "%s %s: particletemplate/multisphere clumps (template %s) are not "
-                            "supported by this insertion style", in->ops->who, f->id,
-                         in->dist->tpl_id[i]);
+            if (in->ops->finalize && in->vstyle != INS_V_CONSTANT) /* insert/stream */
+                gr_error(g, "%s %s: Currently only fix insert/stream with multisphere particles "
+                            "only supports constant velocity", in->ops->who, f->id);
             if (in->omega[0] != 0. || in->omega[1] != 0. || in->omega[2] != 0.)
                 gr_error(g, "%s %s: omega with particletemplate/multisphere clumps is not "
                             "supported", in->ops->who, f->id);
@@ -905,8 +904,8 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
     }
     free(vel);
     eng_append(g, nold);
-    if (in->ops->finalize)
-        in->ops->finalize(g, f, nold, placed);
+    if (in->ops->finalize) /* every new atom: a clump's spheres too */
+        in->ops->finalize(g, f, nold, a->n - nold);
     in->ninserted += placed;
     in->massinserted += mass_now;
     if (in->verbose)

@@ -28,7 +28,13 @@
  * reaches the face (release step = insertion step + int((distance to the
  * face plane + 1e-14) / (|v_n| dt))); there they get v (vel uniform |
  * gaussian: drawn at insertion, in tag order, from the fix's stream) and
- * omega (kernels/fix_insert_stream.cl, end_of_step). These steps are
+ * omega (kernels/fix_insert_stream.cl, end_of_step). A clump of fix
+ * multisphere (constant vel only, as LIGGGHTS) is released as a body: its
+ * atoms take the release step of its centre of mass (int(distance / (|v_n|
+ * dt)), LIGGGHTS's Multisphere::calc_n_steps), the body drifts at v_n
+ * untouched by forces until then and takes v after it (fix_rigid_small.h,
+ * rigid_small_stream); its atoms follow the approach above but at the
+ * release step, where the body moves them. These steps are
  * counted on the fix's clock, step - clock_shift, which reset_timestep does
  * not move: the approach goes on across a reset. The insertion step
  * itself: fix_insert.c. Full contract: doc/styles/fix_insert_stream.md. */
@@ -43,6 +49,7 @@
 #include "fix.h"
 #include "fix_insert.h"
 #include "fix_mesh_surface.h"
+#include "fix_rigid_small.h"
 #include "mesh_planar.h"
 
 #define WHO "fix insert/stream"
@@ -448,6 +455,8 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
     const struct atoms *a = &g->atoms;
     const struct engine *e = g->eng;
     size_t bytes = state_bytes(g);
+    struct fix *ms = fix_find_style(g, "multisphere");
+    const unsigned clumps = ms ? rigid_small_member_bits(ms) : 0;
     unsigned char *buf = gr_calloc(g, (size_t)n, bytes);
     for (int k = 0; k < n; k++) {
         int i = first + k;
@@ -457,6 +466,9 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
             rel[d] = s->p_ref[d] - x[d];
         double steps = (dot3(rel, s->normal) + TINY) / (s->vn_mag * g->dt);
         steps = steps > 0 ? floor(steps) : 0;
+        if (ms && (a->mask[i] & clumps)) /* a clump's atom: its body's release step */
+            steps = (double)(rigid_small_stream(g, ms, (int)a->mol[i] - 1, s->p_ref, s->normal,
+                                                s->v_normal, in->v) - g->step);
         bigint clock = g->step - in->clock_shift;
         if (!(clock > 0 && (double)clock + steps < 2147483647.0))
             gr_error(g, WHO " %s: release step %g is out of the range of the release clock",
@@ -554,7 +566,9 @@ static void end_of_step(struct gravel *g, struct fix *f)
     eng_arg_mem(g, k, 12, a->f);
     eng_arg_mem(g, k, 13, rot ? a->omega : a->v);
     eng_arg_mem(g, k, 14, rot ? a->torque : a->f);
-    eng_arg_pos_lo(g, k, 15);
+    struct fix *ms = fix_find_style(g, "multisphere");
+    eng_arg_uint(g, k, 15, ms ? rigid_small_member_bits(ms) : 0u);
+    eng_arg_pos_lo(g, k, 16);
     eng_launch(g, k, (size_t)a->n);
 }
 

@@ -80,6 +80,11 @@ struct rbody {
     /* fix multisphere (LIGGGHTS fflag, tflag): 0 where the body's velocity or
      * angular momentum component is not kicked (held); 1 otherwise */
     unsigned char fflag[3], tflag[3];
+    /* fix insert/stream's approach (LIGGGHTS Multisphere start_step_): until
+     * step start_step (>= 0) the body moves at v_int, untouched by forces;
+     * at its end it gets v_rel (start_step -1: released or never streamed) */
+    int64_t start_step;
+    double v_int[3], v_rel[3];
 };
 
 struct member {
@@ -159,6 +164,7 @@ static struct rbody *new_body(struct gravel *g, struct rigid *r)
     memset(b, 0, sizeof *b);
     for (int q = 0; q < 3; q++)
         b->fflag[q] = b->tflag[q] = 1;
+    b->start_step = -1;
     return b;
 }
 
@@ -392,7 +398,7 @@ static void create_multisphere(struct gravel *g, struct fix *f, int argc, char *
         ns->exclude_mol[k][1] = 1;
         ns->nexclude_mol++;
     }
-    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE | HOOK_END_OF_STEP;
     f->sources[f->nsources++] = "fix_rigid_small.cl";
     f->needs = NEED_ROTATION;
 }
@@ -873,11 +879,74 @@ static void setup(struct gravel *g, struct fix *f)
     set_xv(g, f, 0);
 }
 
+/* Whether body b is still on fix insert/stream's approach this step. */
+static int approaching(const struct gravel *g, const struct rbody *b)
+{
+    return b->start_step >= 0 && g->step < b->start_step;
+}
+
+/* fix multisphere's end of step: a streamed body whose approach ended this
+ * step takes its release velocity (LIGGGHTS Multisphere::release, called
+ * by insert/stream for the body's atoms at their release step; its omega
+ * of the insertion is 0 here, angular momentum untouched). */
+static void end_of_step(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        struct rbody *b = &r->b[ib];
+        if (b->start_step >= 0 && g->step >= b->start_step) {
+            memcpy(b->vcm, b->v_rel, sizeof b->vcm);
+            memset(b->omega, 0, sizeof b->omega);
+            b->start_step = -1;
+        }
+    }
+}
+
+static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    struct rigid *r = f->data;
+    for (int ib = 0; ib < r->nbody; ib++)
+        if (r->b[ib].start_step >= 0)
+            r->b[ib].start_step += shift;
+}
+
+int64_t rigid_small_stream(struct gravel *g, struct fix *f, int body, const double p_ref[3],
+                           const double normal[3], const double v_normal[3],
+                           const double v_rel[3])
+{
+    struct rigid *r = f->data;
+    struct rbody *b = &r->b[body];
+    if (b->start_step >= 0)
+        return b->start_step;
+    double dist = 0, vn = 0;
+    for (int q = 0; q < 3; q++) {
+        dist += (p_ref[q] - b->xcm[q]) * normal[q];
+        vn += v_normal[q] * v_normal[q];
+    }
+    b->start_step = g->step + (int64_t)(int)(dist / (sqrt(vn) * g->dt));
+    memcpy(b->v_int, v_normal, sizeof b->v_int);
+    memcpy(b->v_rel, v_rel, sizeof b->v_rel);
+    return b->start_step;
+}
+
+unsigned rigid_small_member_bits(const struct fix *f)
+{
+    return ((const struct rigid *)f->data)->member_bits;
+}
+
 static void initial_integrate(struct gravel *g, struct fix *f)
 {
     struct rigid *r = f->data;
     for (int ib = 0; ib < r->nbody; ib++) {
         struct rbody *b = &r->b[ib];
+        if (approaching(g, b)) { /* LIGGGHTS: v_integrate, a full drift, nothing else */
+            for (int q = 0; q < 3; q++) {
+                b->vcm[q] = b->v_int[q];
+                b->xcm[q] += r->dtv * b->vcm[q];
+            }
+            continue;
+        }
         double dtfm = r->dtf / b->mass;
         for (int q = 0; q < 3; q++) {
             if (b->fflag[q])
@@ -903,6 +972,8 @@ static void final_integrate(struct gravel *g, struct fix *f)
         enforce2d(r);
     for (int ib = 0; ib < r->nbody; ib++) {
         struct rbody *b = &r->b[ib];
+        if (approaching(g, b))
+            continue;
         double dtfm = r->dtf / b->mass;
         for (int q = 0; q < 3; q++) {
             if (b->fflag[q])
@@ -1176,7 +1247,8 @@ static void destroy(struct fix *f)
     .flags = FIX_STORES_IDS, .init = init, .setup = setup,                                   \
     .initial_integrate = initial_integrate, .final_integrate = final_integrate,              \
     .post_neighbor = post_neighbor, .dof = dof, .write_restart = write_restart,              \
-    .read_restart = read_restart, .modify_param = modify_param, .destroy = destroy
+    .read_restart = read_restart, .modify_param = modify_param, .reset_step = reset_step,     \
+    .destroy = destroy
 
 const struct fix_style fix_style_rigid_small = {
     .name = "rigid/small",
@@ -1188,5 +1260,6 @@ const struct fix_style fix_style_multisphere = {
     .name = "multisphere",
     .create = create_multisphere,
     .ke_adjust = ke_adjust,
+    .end_of_step = end_of_step,
     RIGID_HOOKS,
 };

@@ -25,6 +25,16 @@ int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule 
  * component of its velocity (fflag) or angular momentum (tflag) is never
  * kicked; NULL leaves that set as it is. */
 void rigid_small_hold(struct fix *f, int body, const int fflag[3], const int tflag[3]);
+/* fix insert/stream's approach of body `body` of fix multisphere f
+ * (LIGGGHTS Multisphere::calc_n_steps): unless set already, its release
+ * step = now + int(distance of its centre of mass to the face plane through
+ * p_ref (unit normal) / (|v_normal| dt)); until then it moves at v_normal,
+ * untouched by forces, then takes v_rel. Returns the release step. */
+int64_t rigid_small_stream(struct gravel *g, struct fix *f, int body, const double p_ref[3],
+                           const double normal[3], const double v_normal[3],
+                           const double v_rel[3]);
+/* The mask bits of fix multisphere f's clump atoms (its group ID_clumps). */
+unsigned rigid_small_member_bits(const struct fix *f);
 /* The three on/off words after argv[i] (fflag or tflag) as 1/0 in v. */
 void rigid_small_flags_arg(struct gravel *g, int argc, char **argv, int i, int v[3]);
 

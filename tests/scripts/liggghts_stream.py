@@ -31,6 +31,10 @@
    short first one (check_reset), the insertion runs of meshGran and
    conveyor (check_chaotic) and of movingMeshGran (check_exact): see their
    comments.
+5. tests/reference/liggghts_stream/clumps.in: 30 clumps of fix multisphere through the
+   tutorial's face: every KinEng row within REL_CLUMPS of `liggghts`'s (committed
+   clumps.liggghts.log) while they are carried and fall, REL_CLUMPS_LANDED after the
+   first landings.
 
 Usage: liggghts_stream.py [--update] [--full]. One PASS/FAIL line per case."""
 import gzip
@@ -51,6 +55,8 @@ REL = 1e-6            # thermo columns, relative (8 digits printed)
 # floats): half a unit of the 6th digit of z ~ 2.8 m is 5e-6 m; velocities,
 # forces and omega are written in double (measured: 5e-11)
 ABS_X, ABS_V = 1e-5, 1e-8
+REL_CLUMPS = 1e-13        # clumps.in KinEng in flight (15 digits printed; measured 5e-15)
+REL_CLUMPS_LANDED = 1e-5  # after the first landings (measured 6e-7)
 
 FAILURES = []
 
@@ -364,6 +370,11 @@ def stl_facets(text):
 
 def check_stl():
     with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "clumps.in"), tmp)
+        shutil.copytree(os.path.join(TUTORIALS, "insert_stream", "meshes"),
+                        os.path.join(tmp, "meshes"))
+        open(os.path.join(REF, "clumps.liggghts.log"), "w").write(run_liggghts(tmp, "clumps.in"))
+    with tempfile.TemporaryDirectory() as tmp:
         for f in ("stl.in", "wedge.stl"):
             shutil.copy(os.path.join(REF, f), tmp)
         os.makedirs(os.path.join(tmp, "post"))
@@ -407,6 +418,12 @@ def check_stl():
 
 
 BAD = [
+    ("clumps_uniform", "fix pt2 all particletemplate/multisphere 15485863 atom_type 1 density "
+     "constant 2500 nspheres 2 ntry 100000 spheres 0.02 0 0 0.02 -0.02 0 0 0.02 type 1\n"
+     "fix pd2 all particledistribution/discrete 15485867 1 pt2 1.0\nfix ms all multisphere\n"
+     "fix ins all insert/stream seed 32452867 distributiontemplate pd2 nparticles 10 "
+     "vel uniform 0 0 -2 0.1 0.1 0.1 particlerate 1000 insertion_face face extrude_length 0.6"
+     "\nrun 1", "only supports constant velocity", 6),
     ("insertion_face", "fix ins all insert/stream seed 32452867 distributiontemplate pdd1 "
      "nparticles 10 vel constant 0 0 -2 particlerate 1000 extrude_length 0.6\nrun 1",
      "fix insert/stream: must define an insertion face", 3),
@@ -524,6 +541,30 @@ def update():
     print("references written to", REF)
 
 
+def check_clumps():
+    """clumps.in: clumps (fix multisphere) through insert/stream's face against
+    LIGGGHTS: every row to REL_CLUMPS until the first clump lands (step
+    52000), within REL_CLUMPS_LANDED after it."""
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "clumps.in"), tmp)
+        shutil.copytree(os.path.join(TUTORIALS, "insert_stream", "meshes"),
+                        os.path.join(tmp, "meshes"))
+        out = run_gravel(tmp, "clumps.in")
+    rows, qrows = thermo(out.stdout), thermo(open(os.path.join(REF, "clumps.liggghts.log")).read())
+
+    def worst(sel):
+        return max((abs(float(r[2]) - float(q[2])) / max(abs(float(q[2])), 1e-300)
+                    for r, q in zip(rows, qrows) if sel(int(q[0]))), default=-1)
+    flight, landed = worst(lambda s: s <= 52000), worst(lambda s: s > 52000)
+    ok = (len(rows) == len(qrows) == 34 and all(r[:2] == q[:2] for r, q in zip(rows, qrows))
+          and 0 <= flight <= REL_CLUMPS and 0 <= landed <= REL_CLUMPS_LANDED)
+    report(ok, "liggghts_stream_clumps",
+           "%d rows (liggghts %d), KinEng within %g to step 52000, %g after\n%s" % (
+               len(rows), len(qrows), flight, landed, out.stdout[-600:]))
+    print("  insert/stream of 30 clumps: KinEng rows within %.1e of LIGGGHTS's until they "
+          "land, %.1e after" % (flight, landed))
+
+
 def main():
     if not os.path.isdir(TUTORIALS):
         print("SKIP liggghts_stream: %s missing (Debian package liggghts-doc)" % TUTORIALS)
@@ -536,6 +577,7 @@ def main():
     check_chaotic("conveyor")
     check_exact("movingMeshGran", 8000)
     check_stl()
+    check_clumps()
     check_errors()
     return 1 if FAILURES else 0
 
