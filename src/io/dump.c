@@ -469,9 +469,11 @@ static bigint next_multiple(bigint step, int every)
 
 /* Dumps that run on several ranks: the atoms' own fields and the local
  * computes' rows, gathered (par.h); the meshes' geometry, the same on every
- * rank. Rank 0 writes. */
-static const char *const across_ranks[] = {"atom",  "custom",   "vtk",      "custom/vtk",
-                                           "local", "mesh/stl", "mesh/vtk", NULL};
+ * rank, and their stress and wear (summed over every rank's atoms in tag
+ * order, fix mesh/surface/stress). Rank 0 writes. */
+static const char *const across_ranks[] = {"atom",     "custom",   "vtk",
+                                           "custom/vtk", "local",  "mesh/stl",
+                                           "mesh/vtk", "mesh/gran/VTK", NULL};
 
 void dump_setup_all(struct gravel *g)
 {

@@ -165,7 +165,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "viscous", "setforce", "wall/gran",
                                         "wall/gran/region", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk",
-                                        "ave/histo", "drag", NULL};
+                                        "ave/histo", "drag", "property/global",
+                                        "mesh/surface/stress", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -179,7 +180,8 @@ static int listed(const char *const *list, const char *name)
  * (mesh/surface: the force and torque on the mesh) */
 int par_fix_value_global(const struct fix *f)
 {
-    return !strcmp(f->style->name, "mesh/surface");
+    return !strcmp(f->style->name, "mesh/surface") ||
+           !strcmp(f->style->name, "mesh/surface/stress");
 }
 
 static int fix_summed(struct gravel *g, const char *ref)

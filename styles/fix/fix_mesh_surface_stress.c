@@ -6,7 +6,8 @@
  *
  * The wall kernel writes, per atom, a record of each contact with this mesh
  * (kernels/wall_layout.h MESH_SREC_*); at the end of the step the records
- * are summed in atom-tag order:
+ * of every rank's atoms are summed in atom-tag order (so any number of MPI
+ * ranks gives one process's bits):
  *   f_t      = sum of the contact forces on triangle t (this step only)
  *   sigma_n  = |f_t . n_t| / A_t,  sigma_t = |f_t - (f_t . n_t) n_t| / A_t
  *   wear_t  += sum over contacts approaching the surface (c . v_rel >= 0,
@@ -29,7 +30,9 @@
 #include "fix_mesh_surface.h"
 #include "fix_mesh_surface_stress.h"
 #include "fix_property_global.h"
+#include "comm.h"
 #include "par.h"
+#include "par_sum.h"
 
 cl_mem mesh_stress_records(struct gravel *g, struct mesh_stress *st, int n)
 {
@@ -113,9 +116,6 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct mesh_surface *ms = f->data;
     struct mesh_stress *st = ms->stress;
-    if (par_on(g) && (st->do_stress || st->do_wear))
-        gr_error(g, "fix mesh/surface/stress: stress and wear are not supported on several MPI "
-                    "ranks yet (use stress off wear off)");
     int nt = g->atoms.ntypes;
     free(st->kf);
     st->kf = NULL;
@@ -127,13 +127,6 @@ static void init(struct gravel *g, struct fix *f)
     snprintf(who, sizeof who, "fix %s mesh/surface/stress wear finnie", f->id);
     for (int t = 1; t <= nt; t++)
         st->kf[t - 1] = fpg_pair(g, "k_finnie", nt, ms->type, t, who);
-}
-
-static const int64_t *sort_tag;
-static int cmp_tag(const void *a, const void *b)
-{
-    int64_t x = sort_tag[*(const int *)a], y = sort_tag[*(const int *)b];
-    return x < y ? -1 : x > y;
 }
 
 /* Finnie's angle factor E of a relative velocity v (|v| = vm) on a surface
@@ -153,15 +146,19 @@ static double finnie_angle(const double v[3], double vm, const double n[3])
     return 2. * sin_g * cos_g - 3. * sin_g * sin_g;
 }
 
-static void end_of_step(struct gravel *g, struct fix *f)
+/* Row of an atom's records for the sums: tag, type, its MESH_SLOTS records */
+#define ROW_W (2 + MESH_SLOTS * MESH_SREC_W)
+
+static int cmp_row(const void *a, const void *b)
 {
-    struct mesh_surface *ms = f->data;
-    struct mesh_stress *st = ms->stress;
-    int ntri = ms->m.ntri;
-    memset(st->f, 0, 3 * (size_t)ntri * sizeof(double));
-    st->step = g->step;
-    if (!ms->fmesh_valid || ms->fmesh_step != g->step || !st->rec)
-        return; /* no wall used the mesh this step: no force */
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The rows of the atoms of the group with a contact on the mesh this step,
+ * every rank's (par_gather_rows), in ascending tag order; *nrows set. */
+static double *contact_rows(struct gravel *g, struct fix *f, struct mesh_stress *st, int *nrows)
+{
     struct dev_atoms *a = eng_atoms(g);
     int n = a->n;
     size_t w = MESH_SLOTS * MESH_SREC_W;
@@ -169,24 +166,56 @@ static void end_of_step(struct gravel *g, struct fix *f)
     int64_t *tag = gr_malloc(g, (size_t)(n ? n : 1) * sizeof(int64_t));
     unsigned *mask = gr_malloc(g, (size_t)(n ? n : 1) * sizeof(unsigned));
     int *type = gr_malloc(g, (size_t)(n ? n : 1) * sizeof(int));
-    int *idx = gr_malloc(g, (size_t)(n ? n : 1) * sizeof(int));
     eng_read_reals(g, st->rec, (size_t)n * w, rec);
     eng_read(g, a->tag, 0, (size_t)n * sizeof(int64_t), tag);
     eng_read(g, a->mask, 0, (size_t)n * sizeof(unsigned), mask);
     eng_read(g, a->type, 0, (size_t)n * sizeof(int), type);
-    for (int k = 0; k < n; k++)
-        idx[k] = k;
-    sort_tag = tag;
-    qsort(idx, (size_t)n, sizeof *idx, cmp_tag);
+    double *rows = gr_malloc(g, (size_t)(n ? n : 1) * ROW_W * sizeof(double));
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        const double *r = rec + (size_t)i * w;
+        if (!(mask[i] & f->groupbit) || (int)r[MESH_SREC_KEY] < 1)
+            continue;
+        double *row = rows + (size_t)m++ * ROW_W;
+        row[0] = (double)tag[i]; /* exact: tags stay below 2^53 */
+        row[1] = type[i];
+        memcpy(row + 2, r, w * sizeof(double));
+    }
+    free(rec);
+    free(tag);
+    free(mask);
+    free(type);
+    m = par_gather_rows(g, &rows, m, ROW_W);
+    qsort(rows, (size_t)m, ROW_W * sizeof(double), cmp_row);
+    *nrows = m;
+    return rows;
+}
+
+/* The step's sums over the atoms' records in atom-tag order: one process's
+ * bits on any number of ranks (every rank gathers every rank's rows). */
+static void end_of_step(struct gravel *g, struct fix *f)
+{
+    struct mesh_surface *ms = f->data;
+    struct mesh_stress *st = ms->stress;
+    int ntri = ms->m.ntri;
+    memset(st->f, 0, 3 * (size_t)ntri * sizeof(double));
+    st->step = g->step;
+    /* no wall used the mesh this step: no force (the same on every rank) */
+    int used = ms->fmesh_valid && ms->fmesh_step == g->step && st->rec;
+    if (par_on(g))
+        used = comm_max_int(used);
+    if (!used)
+        return;
+    int m;
+    double *rows = contact_rows(g, f, st, &m);
     struct mesh_pose p;
     mesh_surface_pose(g, f->id, &p);
     double *wstep = st->do_wear ? gr_calloc(g, (size_t)(ntri ? ntri : 1), sizeof(double)) : NULL;
-    for (int k = 0; k < n; k++) {
-        int i = idx[k];
-        if (!(mask[i] & f->groupbit))
-            continue;
+    for (int k = 0; k < m; k++) {
+        const double *row = rows + (size_t)k * ROW_W;
+        const int type = (int)row[1];
         for (int s = 0; s < MESH_SLOTS; s++) {
-            const double *r = rec + (size_t)i * w + (size_t)s * MESH_SREC_W;
+            const double *r = row + 2 + (size_t)s * MESH_SREC_W;
             int t = (int)r[MESH_SREC_KEY] - 1;
             if (t < 0 || t >= ntri)
                 break;
@@ -202,7 +231,7 @@ static void end_of_step(struct gravel *g, struct fix *f)
             mesh_pose_vector(&p, ms->normal + 3 * t, nrm);
             double fm = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
             double E = finnie_angle(v, vm, nrm);
-            E *= 2. * st->kf[type[i] - 1] * vm * fm;
+            E *= 2. * st->kf[type - 1] * vm * fm;
             wstep[t] += E * g->dt / st->area[t];
         }
     }
@@ -217,11 +246,7 @@ static void end_of_step(struct gravel *g, struct fix *f)
         st->sigma_t[t] = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / st->area[t];
     }
     free(wstep);
-    free(rec);
-    free(tag);
-    free(mask);
-    free(type);
-    free(idx);
+    free(rows);
 }
 
 /* 1-6 as mesh/surface (force, torque), 7-9 the reference point (LIGGGHTS) */

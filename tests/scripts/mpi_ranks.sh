@@ -6,7 +6,8 @@
 # thermo's sums, the pressure tensor included, in global tag order),
 # for a periodic gas crossing every face and corner of the bricks, a gas
 # under gravity between plane and region walls (wall history), the example
-# mill (a turning STL mesh, its force and torque in thermo), cohesive spheres
+# mill (a turning STL mesh, its force and torque in thermo), a mesh's stress and
+# wear (fix mesh/surface/stress, dump mesh/gran/VTK), cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
@@ -193,6 +194,16 @@ sed 's/^run  /dump mv all mesh\/vtk 400 v_mesh_*.vtk\ndump ms all mesh\/stl 400 
 "$serial" -in millm.in -var nsteps 800 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check mill_mesh_dumps_written '[ "$(ls ref/v_mesh_*.vtk | wc -l)" -eq 3 ] && [ "$(ls ref/d.mesh_*.stl.txt | wc -l)" -eq 3 ] && grep -q "^solid" ref/d.mesh_800.stl.txt'
 same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
+# fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
+# per-triangle sums over every rank's atoms in tag order, every file the same bytes
+cp "$root/tests/reference/liggghts_wear/floor.stl" .
+sed -e 's|post/wear_\*.vtk|v_wear_*.vtk|' -e 's/^thermo_style    custom step atoms ke/thermo_style    custom step atoms ke f_cad[1] f_cad[3]\nthermo_modify   format float %.17g/' \
+    -e '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
+    "$root/tests/reference/liggghts_wear/wear.in" > wear.in
+"$serial" -in wear.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check wear_dumps_written '[ "$(ls ref/v_wear_*.vtk | wc -l)" -eq 15 ] && grep -q "wear" ref/v_wear_3500.vtk'
+same wear_np2 wear.in 2 ""
+same wear_np3 wear.in 3 ""
 
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
