@@ -166,7 +166,10 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "wall/gran/region", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk",
                                         "ave/histo", "drag", "property/global",
-                                        "mesh/surface/stress", NULL};
+                                        "mesh/surface/stress", "mesh/surface/planar",
+                                        "particletemplate/sphere",
+                                        "particledistribution/discrete", "insert/pack",
+                                        "insert/rate/region", "insert/stream", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -180,8 +183,9 @@ static int listed(const char *const *list, const char *name)
  * (mesh/surface: the force and torque on the mesh) */
 int par_fix_value_global(const struct fix *f)
 {
-    return !strcmp(f->style->name, "mesh/surface") ||
-           !strcmp(f->style->name, "mesh/surface/stress");
+    static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
+                                         "insert/rate/region", "insert/stream", NULL};
+    return listed(global, f->style->name);
 }
 
 static int fix_summed(struct gravel *g, const char *ref)

@@ -41,6 +41,8 @@
 #include "fix_rigid_small.h"
 #include "log.h"
 #include "molecule.h"
+#include "par.h"
+#include "par_sum.h"
 #include "region.h"
 #include "rigid_math.h"
 
@@ -608,6 +610,16 @@ static void load_near(struct gravel *g, struct insert *in)
                     if (ok && in->ops->nearby(g, in, x, a->radius[i]))
                         near_add(g, in, x, a->radius[i]);
                 }
+    if (par_on(g)) { /* several ranks: every rank's near atoms, on every rank (any
+                      * order: the overlap test asks only whether one overlaps) */
+        double *rows = gr_malloc(g, (size_t)(in->nnear + 1) * 4 * sizeof(double));
+        memcpy(rows, in->near, (size_t)in->nnear * 4 * sizeof(double));
+        int all = par_gather_rows(g, &rows, in->nnear, 4);
+        in->nnear = 0;
+        for (int k = 0; k < all; k++)
+            near_add(g, in, rows + 4 * k, rows[4 * k + 3]);
+        free(rows);
+    }
 }
 
 static int overlaps(const struct insert *in, const double x[3], double r)
@@ -766,12 +778,13 @@ static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle
     rigid_small_hold(ms, body, c->fflag, c->tflag);
 }
 
-static int64_t max_tag(const struct gravel *g)
+/* The largest atom ID of every rank. */
+static int64_t max_tag(struct gravel *g)
 {
     int64_t m = 0;
     for (int i = 0; i < g->atoms.n; i++)
         m = g->atoms.tag[i] > m ? g->atoms.tag[i] : m;
-    return m;
+    return par_max_tag(g, m);
 }
 
 /* The distribution and its templates again by ID: they may have been
@@ -891,6 +904,9 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
         const struct ins_particle *p = in->list + k;
         if (p->tpl && p->tpl->ms) {
             add_clump(g, f, p, vel + 3 * k, &tag);
+        } else if (!par_owns(g, p->x)) { /* several ranks: every rank placed the same
+                                          * particles; the brick's owner keeps it */
+            ++tag;
         } else {
             int i = atoms_add(g, ++tag, p->type, p->x, p->radius, p->mass);
             a->mask[i] = 1u | p->groupbit | f->groupbit;

@@ -13,9 +13,13 @@
 #include <limits.h>
 #include <math.h>
 
+#include "atoms.h"
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_insert.h"
+#include "par.h"
+#include "par_sum.h"
 #include "region.h"
 
 #define WHO "fix insert/pack"
@@ -40,16 +44,22 @@ static int ninsert_this(struct gravel *g, struct insert *in)
     if (in->warn_region)
         insert_region_check_box(g, in);
     const struct atoms *a = &g->atoms;
-    int np = 0;
-    double vol = 0., mass = 0.;
+    const int *order = atoms_tag_order(g);
+    long long np = 0;
+    struct par_sum sv = {0}, sm = {0}; /* every rank's atoms, in tag order */
     region_prematch(g, in->reg);
-    for (int i = 0; i < a->n; i++)
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
         if (region_match(in->reg, a->x + 3 * i)) {
             double r = a->radius[i];
             np++;
-            vol += 4. * M_PI / 3. * r * r * r;
-            mass += a->rmass[i];
+            par_sum_add(g, &sv, a->tag[i], 4. * M_PI / 3. * r * r * r);
+            par_sum_add(g, &sm, a->tag[i], a->rmass[i]);
         }
+    }
+    const double vol = par_sum_total(g, &sv), mass = par_sum_total(g, &sm);
+    if (par_on(g))
+        np = comm_sum_ll(np);
     double n;
     if (in->volfrac > 0.) {
         n = (in->volfrac * in->region_volume - vol) / in->dist->volexpect +

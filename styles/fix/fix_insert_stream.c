@@ -51,6 +51,7 @@
 #include "fix_mesh_surface.h"
 #include "fix_rigid_small.h"
 #include "mesh_planar.h"
+#include "par.h"
 
 #define WHO "fix insert/stream"
 #define TINY 1e-14          /* LIGGGHTS's FIX_INSERT_STREAM_TINY */
@@ -542,6 +543,8 @@ static void init(struct gravel *g, struct fix *f)
         gr_error(g, WHO ": must define an insertion face");
     geometry(g, s);
     insert_init(g, f);
+    if (par_on(g) && s->in.vstyle != INS_V_CONSTANT) /* drawn per owned atom (finalize) */
+        par_refuse(g, "fix insert/stream with vel uniform or gaussian");
     f->peratom_bytes = state_bytes(g);
     s->eos = eng_kernel(g, "insert_stream_end_of_step");
 }

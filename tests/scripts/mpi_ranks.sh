@@ -7,7 +7,8 @@
 # for a periodic gas crossing every face and corner of the bricks, a gas
 # under gravity between plane and region walls (wall history), the example
 # mill (a turning STL mesh, its force and torque in thermo), a mesh's stress and
-# wear (fix mesh/surface/stress, dump mesh/gran/VTK), cohesive spheres
+# wear (fix mesh/surface/stress, dump mesh/gran/VTK), LIGGGHTS's insert/pack and
+# insert/stream, cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
@@ -194,6 +195,87 @@ sed 's/^run  /dump mv all mesh\/vtk 400 v_mesh_*.vtk\ndump ms all mesh\/stl 400 
 "$serial" -in millm.in -var nsteps 800 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check mill_mesh_dumps_written '[ "$(ls ref/v_mesh_*.vtk | wc -l)" -eq 3 ] && [ "$(ls ref/d.mesh_*.stl.txt | wc -l)" -eq 3 ] && grep -q "^solid" ref/d.mesh_800.stl.txt'
 same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
+# LIGGGHTS's insertion (fix insert/pack with volumefraction_region and all_in,
+# insert/stream through the insert_stream tutorial's face, the installed
+# liggghts-doc's mesh): every rank places the same particles against every
+# rank's atoms, the brick's owner keeps each; the stream's approach state moves
+# with the atoms
+cat > pack.in <<'IN'
+atom_style      granular
+atom_modify     map array
+boundary        m m m
+newton          off
+communicate     single vel yes
+units           si
+region          reg block -0.1 0.1 -0.1 0.1 0 0.3 units box
+create_box      1 reg
+neighbor        0.002 bin
+neigh_modify    delay 0
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
+pair_style      gran model hertz tangential history
+pair_coeff      * *
+timestep        0.00001
+fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
+fix             zw all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+fix             pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.005
+fix             pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.008
+fix             pdd1 all particledistribution/discrete 32452843 2 pts1 0.3 pts2 0.7
+region          bc block -0.08 0.08 -0.08 0.08 0.05 0.25 units box
+fix             ins all insert/pack seed 86028121 distributiontemplate pdd1 vel constant 0. 0. -0.5 insert_every 4000 overlapcheck yes all_in yes volumefraction_region 0.1 region bc
+fix             integr all nve/sphere
+thermo_style    custom step atoms ke f_ins[1]
+thermo_modify   format float %.17g
+thermo          1000
+run             12000
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+"$serial" -in pack.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check insert_pack_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 500 ]'
+same insert_pack_np2 pack.in 2 ""
+same insert_pack_np3 pack.in 3 ""
+mkdir -p meshes
+cp /usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/insert_stream/meshes/face.stl meshes/
+cat > stream.in <<'IN'
+atom_style      granular
+atom_modify     map array
+boundary        m m m
+newton          off
+communicate     single vel yes
+units           si
+region          reg block -1 1 -1 1 -0.05 2.85 units box
+create_box      1 reg
+neighbor        0.01 bin
+neigh_modify    delay 0
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
+pair_style      gran model hertz tangential history
+pair_coeff      * *
+timestep        0.00001
+fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
+fix             pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.015
+fix             pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.025
+fix             pdd1 all particledistribution/discrete 32452843 2 pts1 0.3 pts2 0.7
+fix             ins_mesh all mesh/surface file meshes/face.stl type 1 scale 0.005
+group           nve_group region reg
+fix             ins nve_group insert/stream seed 32452867 distributiontemplate pdd1 nparticles 300 vel constant 0. -0.5 -2. particlerate 1000 overlapcheck yes insertion_face ins_mesh extrude_length 0.6
+fix             integr nve_group nve/sphere
+fix             zw all wall/gran model hertz tangential history primitive type 1 zplane 0.0
+thermo_style    custom step atoms ke
+thermo_modify   format float %.17g lost ignore norm no
+thermo          2000
+run             1
+run             20000
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+"$serial" -in stream.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check insert_stream_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -eq 300 ]'
+same insert_stream_np2 stream.in 2 ""
+same insert_stream_np3 stream.in 3 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
