@@ -169,7 +169,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "mesh/surface/stress", "mesh/surface/planar",
                                         "particletemplate/sphere",
                                         "particledistribution/discrete", "insert/pack",
-                                        "insert/rate/region", "insert/stream", NULL};
+                                        "insert/rate/region", "insert/stream",
+                                        "check/timestep/gran", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -184,7 +185,8 @@ static int listed(const char *const *list, const char *name)
 int par_fix_value_global(const struct fix *f)
 {
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
-                                         "insert/rate/region", "insert/stream", NULL};
+                                         "insert/rate/region", "insert/stream",
+                                         "check/timestep/gran", NULL};
     return listed(global, f->style->name);
 }
 

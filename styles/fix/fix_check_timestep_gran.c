@@ -15,7 +15,8 @@
  * check). Above fraction_r, fraction_h or 1 (skin), and when atoms travel more
  * than the smallest radius in a step, it warns (warn yes, the default) or
  * stops (error yes) with LIGGGHTS's messages. Needs pair_style gran and the
- * youngsModulus and poissonsRatio properties. */
+ * youngsModulus and poissonsRatio properties. On several MPI ranks the
+ * minima and maxima run over every rank's atoms (one process's values). */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -23,12 +24,14 @@
 #include <string.h>
 
 #include "args.h"
+#include "comm.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_mesh_surface.h"
 #include "fix_property_global.h"
 #include "pair.h"
+#include "par.h"
 
 struct cts {
     int nevery;
@@ -149,6 +152,11 @@ static void check(struct gravel *g, struct fix *f)
         if (rad < rmin)
             rmin = rad;
     }
+    if (par_on(g)) { /* every rank's atoms: minima and maxima, the same bits in any order */
+        double lo[2] = {rayleigh, rmin}, hi[2] = {vmax_sqr, 0};
+        comm_minmax(lo, hi, 2);
+        rayleigh = lo[0], rmin = lo[1], vmax_sqr = hi[0];
+    }
     if (c->vmax_user * c->vmax_user > vmax_sqr)
         vmax_sqr = c->vmax_user * c->vmax_user;
     const double vm = mesh_vmax_sq(g);
@@ -168,6 +176,11 @@ static void check(struct gravel *g, struct fix *f)
             if (th < hertz)
                 hertz = th;
         }
+    }
+    if (par_on(g)) {
+        double lo[1] = {hertz}, hi[1] = {0};
+        comm_minmax(lo, hi, 1);
+        hertz = lo[0];
     }
     const double dt = g->dt, skin = g->neigh.skin;
     c->frac[0] = dt / rayleigh;

@@ -276,6 +276,17 @@ IN
 check insert_stream_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -eq 300 ]'
 same insert_stream_np2 stream.in 2 ""
 same insert_stream_np3 stream.in 3 ""
+# LIGGGHTS's meshGran tutorial (the installed liggghts-doc's deck and meshes, its runs
+# cut to step 6000): mesh walls, insert/stream, check/timestep/gran in thermo (its
+# minima and maxima over every rank's atoms)
+tut=/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/meshGran
+rm -rf meshes && cp -r "$tut/meshes" . && mkdir -p post
+sed -E -e 's/^(run[[:space:]]+)[0-9]+/\1 6000/' -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' \
+    -e '$a write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
+    "$tut/in.meshGran" > meshgran.in
+"$serial" -in meshgran.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check meshgran_ran '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
+same meshgran_np2 meshgran.in 2 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
