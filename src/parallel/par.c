@@ -170,7 +170,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "particletemplate/sphere",
                                         "particledistribution/discrete", "insert/pack",
                                         "insert/rate/region", "insert/stream",
-                                        "check/timestep/gran", NULL};
+                                        "check/timestep/gran", "heat/gran",
+                                        "heat/gran/conduction", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -186,7 +187,8 @@ int par_fix_value_global(const struct fix *f)
 {
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
                                          "insert/rate/region", "insert/stream",
-                                         "check/timestep/gran", NULL};
+                                         "check/timestep/gran", "heat/gran",
+                                         "heat/gran/conduction", NULL};
     return listed(global, f->style->name);
 }
 
@@ -887,20 +889,28 @@ void par_forward(struct gravel *g)
     struct par *p = g->par;
     struct engine *e = g->eng;
     int P = comm_size(), n = e->a.n;
-    cl_mem f[4] = {e->a.x, e->a.xlo, e->a.v, e->rotation ? e->a.omega : NULL};
-    size_t w = 3 * e->rsz;
+    /* the fields a step changes that the ghosts' contacts read: x (and its
+     * low part), v, omega, and the temperature of a heat-conducting scene */
+    cl_mem f[5] = {e->a.x, e->a.xlo, e->a.v, e->rotation ? e->a.omega : NULL,
+                   e->heat ? e->a.temperature : NULL};
+    size_t fw[5] = {3 * e->rsz, 3 * e->rsz, 3 * e->rsz, 3 * e->rsz, e->rsz};
     int nf = 0;
-    cl_mem use[4];
-    for (int k = 0; k < 4; k++)
-        if (f[k])
-            use[nf++] = f[k];
-    size_t ab = (size_t)nf * w; /* bytes per ghost */
+    cl_mem use[5];
+    size_t uw[5], uo[5], ab = 0; /* width, offset in a ghost's bytes; bytes per ghost */
+    for (int k = 0; k < 5; k++)
+        if (f[k]) {
+            use[nf] = f[k];
+            uw[nf] = fw[k];
+            uo[nf++] = ab;
+            ab += fw[k];
+        }
     int nsend = p->soff[P];
+    size_t w = 3 * e->rsz; /* the widest field */
     unsigned char *own = gr_malloc(g, (size_t)n * w + 1), *out = gr_malloc(g, (size_t)nsend * ab + 1);
     for (int k = 0; k < nf; k++) {
-        eng_read(g, use[k], 0, (size_t)n * w, own);
+        eng_read(g, use[k], 0, (size_t)n * uw[k], own);
         for (int s = 0; s < nsend; s++)
-            memcpy(out + (size_t)s * ab + k * w, own + (size_t)p->sendidx[s] * w, w);
+            memcpy(out + (size_t)s * ab + uo[k], own + (size_t)p->sendidx[s] * uw[k], uw[k]);
     }
     free(own);
     void *sendp[P];
@@ -920,8 +930,8 @@ void par_forward(struct gravel *g)
     unsigned char *col = gr_malloc(g, (size_t)ng * w + 1);
     for (int k = 0; k < nf && ng > 0; k++) {
         for (int s = 0; s < ng; s++)
-            memcpy(col + (size_t)s * w, (unsigned char *)in + (size_t)s * ab + k * w, w);
-        eng_write(g, use[k], (size_t)n * w, (size_t)ng * w, col);
+            memcpy(col + (size_t)s * uw[k], (unsigned char *)in + (size_t)s * ab + uo[k], uw[k]);
+        eng_write(g, use[k], (size_t)n * uw[k], (size_t)ng * uw[k], col);
     }
     free(col);
     free(in);

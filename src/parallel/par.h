@@ -99,7 +99,8 @@ void par_fix_state_restore(struct gravel *g);
 void par_exchange(struct gravel *g, double cut);
 /* After the contacts are built: their history from the tag pairs. */
 void par_history_restore(struct gravel *g);
-/* Every step that does not rebuild: the ghosts' x, v, omega from their owners. */
+/* Every step that does not rebuild: the ghosts' x, v, omega (and temperature
+ * in a heat-conducting scene) from their owners. */
 void par_forward(struct gravel *g);
 /* Run end: every rank's host holds all atoms in tag order. */
 void par_run_end(struct gravel *g);

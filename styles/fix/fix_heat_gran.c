@@ -30,6 +30,7 @@
 #include "fix_heat_gran.h"
 #include "fix_property_global.h"
 #include "pair.h"
+#include "par_sum.h"
 #include "param_layout.h"
 
 #define WHO "fix heat/gran/conduction"
@@ -193,14 +194,14 @@ static double scalar(struct gravel *g, struct fix *f)
     const struct heat_gran *h = f->data;
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    double sum = 0.;
+    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         int i = order[k];
         int t = a->type[i];
         double c = h->cp && t <= h->ntypes ? h->cp[t - 1] : 0.;
-        sum += c * a->rmass[i] * a->temperature[i];
+        par_sum_add(g, &sum, a->tag[i], c * a->rmass[i] * a->temperature[i]);
     }
-    return sum;
+    return par_sum_total(g, &sum);
 }
 
 /* unfix: the temperature and heat flow go with the fix */

@@ -8,7 +8,7 @@
 # under gravity between plane and region walls (wall history), the example
 # mill (a turning STL mesh, its force and torque in thermo), a mesh's stress and
 # wear (fix mesh/surface/stress, dump mesh/gran/VTK), LIGGGHTS's insert/pack and
-# insert/stream, cohesive spheres
+# insert/stream, the meshGran and heatTransfer_1 tutorials, cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
@@ -287,6 +287,18 @@ sed -E -e 's/^(run[[:space:]]+)[0-9]+/\1 6000/' -e 's/^(thermo_style.*)$/\1\nthe
 "$serial" -in meshgran.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check meshgran_ran '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
 same meshgran_np2 meshgran.in 2 ""
+# LIGGGHTS's heatTransfer_1 tutorial (settle 6000 steps, half the bed set to 800 K,
+# conduct to step 10000): fix heat/gran, the ghosts' temperatures forwarded each
+# step, f_heattransfer summed in tag order; the final temperatures compared too
+tut=/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/heatTransfer_1
+rm -rf meshes && cp -r "$tut/meshes" . 2> /dev/null; mkdir -p post
+sed -E -e 's/^run[[:space:]]+20000 upto/run 6000 upto/' -e 's/^run[[:space:]]+50000 upto/run 10000 upto/' \
+    -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' -e 's/^dump.*$/#/' \
+    -e '$a compute pt all property/atom temperature\nwrite_dump all custom final.dump id x y z vx vy vz c_pt modify sort id format float %.17g' \
+    "$tut/in.heatGran" > heat.in
+"$serial" -in heat.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check heat_conducted '[ "$(awk "NR > 9 && \$8 > 300.00001 && \$8 < 799.9999" ref.dump | wc -l)" -gt 10 ]'
+same heat_np2 heat.in 2 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
