@@ -171,7 +171,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "particledistribution/discrete", "insert/pack",
                                         "insert/rate/region", "insert/stream",
                                         "check/timestep/gran", "heat/gran",
-                                        "heat/gran/conduction", NULL};
+                                        "heat/gran/conduction", "adapt", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -884,28 +884,19 @@ void par_history_restore(struct gravel *g)
 
 /* ---- every other step ----------------------------------------------------------- */
 
-void par_forward(struct gravel *g)
+/* The owned atoms' values of the nf device fields use[k] (uw[k] bytes per
+ * atom) to their ghosts on the other ranks, one message per rank pair. */
+static void forward(struct gravel *g, const cl_mem *use, const size_t *uw, int nf)
 {
     struct par *p = g->par;
-    struct engine *e = g->eng;
-    int P = comm_size(), n = e->a.n;
-    /* the fields a step changes that the ghosts' contacts read: x (and its
-     * low part), v, omega, and the temperature of a heat-conducting scene */
-    cl_mem f[5] = {e->a.x, e->a.xlo, e->a.v, e->rotation ? e->a.omega : NULL,
-                   e->heat ? e->a.temperature : NULL};
-    size_t fw[5] = {3 * e->rsz, 3 * e->rsz, 3 * e->rsz, 3 * e->rsz, e->rsz};
-    int nf = 0;
-    cl_mem use[5];
-    size_t uw[5], uo[5], ab = 0; /* width, offset in a ghost's bytes; bytes per ghost */
-    for (int k = 0; k < 5; k++)
-        if (f[k]) {
-            use[nf] = f[k];
-            uw[nf] = fw[k];
-            uo[nf++] = ab;
-            ab += fw[k];
-        }
+    int P = comm_size(), n = g->eng->a.n;
+    size_t uo[8], ab = 0, w = 0; /* offsets in a ghost's bytes; bytes per ghost; widest */
+    for (int k = 0; k < nf; k++) {
+        uo[k] = ab;
+        ab += uw[k];
+        w = uw[k] > w ? uw[k] : w;
+    }
     int nsend = p->soff[P];
-    size_t w = 3 * e->rsz; /* the widest field */
     unsigned char *own = gr_malloc(g, (size_t)n * w + 1), *out = gr_malloc(g, (size_t)nsend * ab + 1);
     for (int k = 0; k < nf; k++) {
         eng_read(g, use[k], 0, (size_t)n * uw[k], own);
@@ -935,6 +926,33 @@ void par_forward(struct gravel *g)
     }
     free(col);
     free(in);
+}
+
+void par_forward(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    /* the fields a step changes that the ghosts' contacts read: x (and its
+     * low part), v, omega, and the temperature of a heat-conducting scene */
+    cl_mem f[5] = {e->a.x, e->a.xlo, e->a.v, e->rotation ? e->a.omega : NULL,
+                   e->heat ? e->a.temperature : NULL};
+    size_t fw[5] = {3 * e->rsz, 3 * e->rsz, 3 * e->rsz, 3 * e->rsz, e->rsz};
+    cl_mem use[5];
+    size_t uw[5];
+    int nf = 0;
+    for (int k = 0; k < 5; k++)
+        if (f[k]) {
+            use[nf] = f[k];
+            uw[nf++] = fw[k];
+        }
+    forward(g, use, uw, nf);
+}
+
+void par_forward_radii(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    const cl_mem use[2] = {e->a.radius, e->a.rmass};
+    const size_t uw[2] = {e->rsz, e->rsz};
+    forward(g, use, uw, 2);
 }
 
 /* ---- every atom on every rank for an output step ------------------------------- */

@@ -102,6 +102,9 @@ void par_history_restore(struct gravel *g);
 /* Every step that does not rebuild: the ghosts' x, v, omega (and temperature
  * in a heat-conducting scene) from their owners. */
 void par_forward(struct gravel *g);
+/* The ghosts' radius and mass from their owners (fix adapt changed them
+ * between rebuilds). */
+void par_forward_radii(struct gravel *g);
 /* Run end: every rank's host holds all atoms in tag order. */
 void par_run_end(struct gravel *g);
 /* Output steps of a decomposed run (dumps): every rank's atoms, all fields,

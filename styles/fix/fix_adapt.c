@@ -13,7 +13,9 @@
  * (LIGGGHTS and LAMMPS restore only pair and kspace parameters).
  * The work is on the host (the atoms synced, the radii and masses written
  * back); the neighbor cut-offs then follow the largest radius and the list
- * is rebuilt at the next step (nbr_radii_changed). */
+ * is rebuilt at the next step (nbr_radii_changed). On several MPI ranks each
+ * rank resizes its own atoms and sends the new radii and masses to their
+ * ghosts at once (par_forward_radii). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,8 +86,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 static void init(struct gravel *g, struct fix *f)
 {
     struct adapt *a = f->data;
-    if (par_on(g))
-        gr_error(g, "fix adapt is not supported on several MPI ranks yet");
     for (int k = 0; k < a->n; k++) {
         if (!var_exists(g, a->var[k]))
             gr_error(g, "variable %s for fix adapt does not exist", a->var[k]);
@@ -137,6 +137,8 @@ static void pre_force(struct gravel *g, struct fix *f)
         eng_write_reals(g, s->radius, (size_t)at->n, at->radius);
         eng_write_reals(g, s->rmass, (size_t)at->n, at->rmass);
     }
+    if (par_on(g)) /* several ranks: the ghosts' new radii for this step's contacts */
+        par_forward_radii(g);
     nbr_radii_changed(g);
 }
 

@@ -8,7 +8,8 @@
 # under gravity between plane and region walls (wall history), the example
 # mill (a turning STL mesh, its force and torque in thermo), a mesh's stress and
 # wear (fix mesh/surface/stress, dump mesh/gran/VTK), LIGGGHTS's insert/pack and
-# insert/stream, the meshGran and heatTransfer_1 tutorials, cohesive spheres
+# insert/stream, the meshGran, heatTransfer_1 and packing (fix adapt) tutorials,
+# cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
@@ -299,6 +300,18 @@ sed -E -e 's/^run[[:space:]]+20000 upto/run 6000 upto/' -e 's/^run[[:space:]]+50
 "$serial" -in heat.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check heat_conducted '[ "$(awk "NR > 9 && \$8 > 300.00001 && \$8 < 799.9999" ref.dump | wc -l)" -gt 10 ]'
 same heat_np2 heat.in 2 ""
+# LIGGGHTS's packing tutorial (insert/pack, then fix adapt growing every diameter
+# every 40 steps for 4000 steps, relaxing 1000): each rank resizes its own atoms
+# and sends the new radii and masses to their ghosts at once
+tut=/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public/packing
+sed -E -e 's/^variable[[:space:]]+growts equal 50000/variable growts equal 4000/' \
+    -e 's/^variable[[:space:]]+relaxts equal 20000/variable relaxts equal 1000/' \
+    -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' -e 's/^dump.*$/#/' \
+    -e '$a write_dump all custom final.dump id x y z vx vy vz radius mass modify sort id format float %.17g' \
+    "$tut/in.packing" > packing.in
+"$serial" -in packing.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check packing_grown '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 300 ]'
+same packing_np2 packing.in 2 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
