@@ -899,6 +899,8 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
     struct atoms *a = &g->atoms;
     int nold = a->n;
     int64_t tag = max_tag(g);
+    in->tag_first = tag + 1;
+    in->nplaced = placed;
     double mass_now = 0;
     for (int k = 0; k < placed; k++) {
         const struct ins_particle *p = in->list + k;

@@ -61,6 +61,8 @@ struct insert {
     bigint clock_shift;             /* sum of the reset_timestep shifts since the fix began:
                                        step - clock_shift runs on without jumps */
     int check_ol, all_in, exact_number, verbose, setup_done;
+    int64_t tag_first;              /* the insertion step's first new atom ID, and how many */
+    int nplaced;                    /* particles it placed (on every rank, ops->finalize) */
     int vstyle;
     double v[3], vfluct[3], omega[3];
     int quat_random;                /* orientation random (else quat: template = identity) */

@@ -51,7 +51,6 @@
 #include "fix_mesh_surface.h"
 #include "fix_rigid_small.h"
 #include "mesh_planar.h"
-#include "par.h"
 
 #define WHO "fix insert/stream"
 #define TINY 1e-14          /* LIGGGHTS's FIX_INSERT_STREAM_TINY */
@@ -459,6 +458,17 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
     struct fix *ms = fix_find_style(g, "multisphere");
     const unsigned clumps = ms ? rigid_small_member_bits(ms) : 0;
     unsigned char *buf = gr_calloc(g, (size_t)n, bytes);
+    /* the release velocities of every particle placed this step, in tag order
+     * (drawn on every rank alike; this rank's atoms take theirs by ID) */
+    double *vdraw = NULL;
+    if (in->vstyle != INS_V_CONSTANT) {
+        vdraw = gr_malloc(g, 3 * (size_t)(in->nplaced + 1) * sizeof(double));
+        for (int k = 0; k < in->nplaced; k++)
+            for (int d = 0; d < 3; d++)
+                vdraw[3 * k + d] = in->vstyle == INS_V_UNIFORM
+                    ? in->v[d] + in->vfluct[d] * 2.0 * (rng_park_uniform(&in->rng) - 0.50)
+                    : in->v[d] + in->vfluct[d] * rng_park_gaussian(&in->rng);
+    }
     for (int k = 0; k < n; k++) {
         int i = first + k;
         const double *x = a->x + 3 * i;
@@ -477,12 +487,13 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
         int head[2] = {(int)clock, (int)clock + (int)steps};
         double vrel[3];
         memcpy(vrel, in->v, sizeof vrel);
-        if (in->vstyle == INS_V_UNIFORM)
-            for (int d = 0; d < 3; d++)
-                vrel[d] = in->v[d] + in->vfluct[d] * 2.0 * (rng_park_uniform(&in->rng) - 0.50);
-        else if (in->vstyle == INS_V_GAUSSIAN)
-            for (int d = 0; d < 3; d++)
-                vrel[d] = in->v[d] + in->vfluct[d] * rng_park_gaussian(&in->rng);
+        if (vdraw) {
+            int64_t q = a->tag[i] - in->tag_first;
+            if (q < 0 || q >= in->nplaced)
+                gr_error(g, "internal error: " WHO " %s: atom %lld is not one of the %d just "
+                            "placed", f->id, (long long)a->tag[i], in->nplaced);
+            memcpy(vrel, vdraw + 3 * q, sizeof vrel);
+        }
         for (int d = 0; d < 3; d++) {
             double p = x[d] - e->origin[d];
             vals[d] = e->single ? (double)(float)p : p;
@@ -502,6 +513,7 @@ static void finalize(struct gravel *g, struct fix *f, int first, int n)
     }
     eng_write(g, f->peratom, (size_t)first * bytes, (size_t)n * bytes, buf);
     free(buf);
+    free(vdraw);
 }
 
 static const struct insert_ops ops = {
@@ -543,8 +555,6 @@ static void init(struct gravel *g, struct fix *f)
         gr_error(g, WHO ": must define an insertion face");
     geometry(g, s);
     insert_init(g, f);
-    if (par_on(g) && s->in.vstyle != INS_V_CONSTANT) /* drawn per owned atom (finalize) */
-        par_refuse(g, "fix insert/stream with vel uniform or gaussian");
     f->peratom_bytes = state_bytes(g);
     s->eos = eng_kernel(g, "insert_stream_end_of_step");
 }

@@ -277,6 +277,10 @@ IN
 check insert_stream_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -eq 300 ]'
 same insert_stream_np2 stream.in 2 ""
 same insert_stream_np3 stream.in 3 ""
+# vel uniform: every rank draws every placed particle's release velocity in tag order
+sed 's/vel constant 0. -0.5 -2./vel uniform 0. -0.5 -2. 0.1 0.1 0.1/' stream.in > streamu.in
+"$serial" -in streamu.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same insert_stream_uniform_np2 streamu.in 2 ""
 # LIGGGHTS's meshGran tutorial (the installed liggghts-doc's deck and meshes, its runs
 # cut to step 6000): mesh walls, insert/stream, check/timestep/gran in thermo (its
 # minima and maxima over every rank's atoms)
