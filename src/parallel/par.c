@@ -171,7 +171,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "particledistribution/discrete", "insert/pack",
                                         "insert/rate/region", "insert/stream",
                                         "check/timestep/gran", "heat/gran",
-                                        "heat/gran/conduction", "adapt", NULL};
+                                        "heat/gran/conduction", "adapt", "property/atom",
+                                        "heat/flow", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -316,6 +316,40 @@ sed -E -e 's/^variable[[:space:]]+growts equal 50000/variable growts equal 4000/
 "$serial" -in packing.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 check packing_grown '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 300 ]'
 same packing_np2 packing.in 2 ""
+# LAMMPS's heat (fix property/atom temperature heatflow, pair granular heat area,
+# fix heat/flow): half a bed of overlapping spheres held still starts hot; the
+# ghosts' temperatures forwarded every step, the final temperatures compared
+cat > lheat.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        f f f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block -1 9 -1 5 -1 5
+region          fill block 0 7.5 0 3.5 0 3.5
+create_box      1 box
+create_atoms    1 region fill
+set             group all diameter 1.02 density 1.0
+fix             prop all property/atom temperature heatflow
+region          hot block 0 4 INF INF INF INF
+set             group all temperature 0.0
+set             region hot temperature 1.0
+pair_style      granular
+pair_coeff      * * hooke 1000.0 0.5 tangential linear_history 100.0 0.0 0.5 heat area 5.0
+fix             hf all heat/flow constant 1.0
+compute         T all property/atom temperature
+compute         Tsum all reduce sum c_T
+thermo_style    custom step ke c_Tsum
+thermo_modify   format float %.17g norm no
+thermo          100
+timestep        0.001
+run             1000
+write_dump      all custom final.dump id x y z vx vy vz c_T modify sort id format float %.17g
+IN
+"$serial" -in lheat.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check lheat_conducted '[ "$(awk "NR > 9 && \$8 > 0.0001 && \$8 < 0.9999" ref.dump | wc -l)" -gt 10 ]'
+same lheat_np2 lheat.in 2 ""
+same lheat_np3 lheat.in 3 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
