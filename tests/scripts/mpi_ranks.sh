@@ -585,10 +585,16 @@ check restart_chute_single_np3_to_1 '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s cref
 gr 2 cb.in c32.out "-precision single"; rb=$?
 check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuation of step 120 with its forces; the setup exchange shrink-wraps the box" c32.out'
 
+# fix viscous/nonlinear (LAMMPS 2026's Schiller-Naumann drag): per atom, no communication
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > visc.in
+rm -f d.*.txt v_*.vtk # the restart runs' dumps: not this reference's
+"$serial" -in visc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same viscous_nonlinear_np2 visc.in 2 ""
+
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > ave.in
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all deform 1 x scale 1.0/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (viscous/nonlinear)" ave.out'
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (deform)" ave.out'
 # a variable reading a fix whose value may be one rank's part
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > varf.in
 mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
