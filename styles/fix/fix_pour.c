@@ -221,13 +221,14 @@ static double radius_sample(struct pour *p)
     return p->radius_poly[i > 0 ? i - 1 : 0];
 }
 
-static int64_t max_mol(const struct gravel *g)
+/* The largest molecule ID of every rank. */
+static int64_t max_mol(struct gravel *g)
 {
     int64_t m = 0;
     for (int i = 0; g->atoms.molecule_flag && i < g->atoms.n; i++)
         if (g->atoms.mol[i] > m)
             m = g->atoms.mol[i];
-    return m;
+    return par_max_tag(g, m);
 }
 
 /* The largest atom ID of every rank. */
@@ -769,7 +770,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
                 if (k != top)
                     above = above && in;
             }
-            if (!(inbox || above))
+            if (!(inbox || above) || !par_owns(g, q)) /* several ranks: the brick's owner */
                 continue;
             double rad = q[3];
             double mass = mol->rmass ? mol->rmass[m] : 4.0 * M_PI / 3.0 * rad * rad * rad;
@@ -815,8 +816,8 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     if (f->next_reneighbor != g->step)
         return;
     if (p->mol) {
-        if (par_on(g))
-            par_refuse(g, "fix pour of molecules");
+        if (par_on(g) && p->rigid)
+            par_refuse(g, "fix pour of rigid molecules");
         run_sync_host(g);
         pre_exchange_mol(g, f);
         return;

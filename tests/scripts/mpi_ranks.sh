@@ -350,6 +350,19 @@ IN
 check lheat_conducted '[ "$(awk "NR > 9 && \$8 > 0.0001 && \$8 < 0.9999" ref.dump | wc -l)" -gt 10 ]'
 same lheat_np2 lheat.in 2 ""
 same lheat_np3 lheat.in 3 ""
+# fix pour of molecules (LAMMPS's pour.2d.molecule deck, its V-shaped molecules
+# poured without the rigid fix, nve/sphere): every rank draws every molecule, each
+# atom kept by its brick's owner; molecule IDs as one process
+cp /usr/share/lammps/examples/pour/molecule.vshape .
+sed -e 's/^fix             3 all rigid\/small molecule mol object/fix             3 all nve\/sphere/' \
+    -e 's/ mol object rigid 3/ mol object/' -e 's/^\(thermo_modify.*\)$/\1 format float %.17g/' \
+    -e 's/^run[[:space:]]*25000/run 6000\nwrite_dump all custom final.dump id mol x y z vx vy vz modify sort id format float %.17g/' \
+    /usr/share/lammps/examples/pour/in.pour.2d.molecule > pourmol.in
+rm -f d.*.txt v_*.vtk
+"$serial" -in pourmol.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check pour_mol_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
+same pour_mol_np2 pourmol.in 2 ""
+same pour_mol_np3 pourmol.in 3 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
