@@ -189,7 +189,7 @@ int par_fix_value_global(const struct fix *f)
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
-                                         "heat/gran/conduction", NULL};
+                                         "heat/gran/conduction", "gravity", NULL};
     return listed(global, f->style->name);
 }
 
@@ -217,7 +217,7 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     for (int i = 0; !why && i < g->styles.nfix; i++)
-        if (g->styles.fix[i]->energy) {
+        if (g->styles.fix[i]->energy && !par_fix_value_global(g->styles.fix[i])) {
             snprintf(buf, sizeof buf, "fix_modify %s energy yes", g->styles.fix[i]->id);
             why = buf;
         }

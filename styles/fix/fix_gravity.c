@@ -21,6 +21,7 @@
 #include "fix.h"
 #include "fused.h"
 #include "fix_gravity.h"
+#include "par_sum.h"
 
 struct grav {
     double acc[3];
@@ -177,15 +178,16 @@ static double scalar(struct gravel *g, struct fix *f)
     const struct grav *gr = f->data;
     const struct atoms *a = &g->atoms;
     const int *ord = atoms_tag_order(g);
-    double e = 0.0;
+    struct par_sum e = {0}; /* every rank's atoms, in tag order (0 - t == 0 + -t) */
     for (int k = 0; k < a->n; k++) {
         int i = ord[k];
         if (!(a->mask[i] & f->groupbit))
             continue;
         const double *x = a->x + 3 * i;
-        e -= a->rmass[i] * (gr->acc[0] * x[0] + gr->acc[1] * x[1] + gr->acc[2] * x[2]);
+        par_sum_add(g, &e, a->tag[i],
+                    -(a->rmass[i] * (gr->acc[0] * x[0] + gr->acc[1] * x[1] + gr->acc[2] * x[2])));
     }
-    return e;
+    return par_sum_total(g, &e);
 }
 
 const struct fix_style fix_style_gravity = {

@@ -604,6 +604,14 @@ rm -f d.*.txt v_*.vtk # the restart runs' dumps: not this reference's
 "$serial" -in visc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
 same viscous_nonlinear_np2 visc.in 2 ""
 
+# fix_modify energy yes of fix gravity: pe and f_1 summed over every rank's atoms in tag order
+sed -e 's/^fix             1 all gravity 1.0 chute 26.0/fix             1 all gravity 1.0 chute 26.0\nfix_modify      1 energy yes/' \
+    -e 's/^thermo_style    custom \(.*\)$/thermo_style    custom \1 f_1/' chute.in > grav.in
+rm -f d.*.txt v_*.vtk
+"$serial" -in grav.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+check gravity_energy_in_pe '[ "$(rows ref.out | tail -1 | awk "{print (\$10 == \$NF && \$NF > 0)}")" = 1 ]'
+same gravity_energy_np2 grav.in 2 ""
+
 # what cannot run across ranks yet stops every rank, one message, exit 1
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all deform 1 x scale 1.0/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
