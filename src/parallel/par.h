@@ -85,8 +85,9 @@ _Noreturn void par_refuse(struct gravel *g, const char *why);
 /* 1 when fix f's global values are the same on every rank of a decomposed
  * run (mesh/surface and mesh/surface/stress: force and torque summed over
  * the ranks in tag order; the insertion fixes' counts, which every rank
- * keeps whole; gravity's and heat/gran's energies, summed in tag order);
- * others may hold one rank's part. */
+ * keeps whole; gravity's and heat/gran's energies, summed in tag order;
+ * the ave fixes, whose compute inputs are sampled as one process); others
+ * may hold one rank's part. */
 int par_fix_value_global(const struct fix *f);
 /* Run start, before the upload: refuse what cannot run across ranks yet,
  * choose the grid and keep the atoms of this rank's brick. */

@@ -617,9 +617,14 @@ sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
 check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (deform)" ave.out'
 # a variable reading a fix whose value may be one rank's part
-sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > varf.in
+# a variable reading fix ave/time (its compute input sampled as one process): the same bits
+sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
+rm -f d.*.txt v_*.vtk
+"$serial" -in vara.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same variable_ave_time_np2 vara.in 2 ""
+sed 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]/' var.in > varf.in
 mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
-check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix a (ave/time)" varf.out'
+check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix 2 (freeze)" varf.out'
 # ... or compute pressure (each rank's contacts' virial)
 sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
 mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
