@@ -90,6 +90,9 @@ void gr_clear(struct gravel *g)
     g->logfile = keep.logfile;
     g->logname = keep.logname;
     g->logerr = keep.logerr;
+    g->thermolog = keep.thermolog;
+    g->thermologname = keep.thermologname;
+    g->thermologerr = keep.thermologerr;
     g->echo = keep.echo;
     set_defaults(g);
 }

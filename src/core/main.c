@@ -334,6 +334,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "ERROR: %s\n", g->err.msg);
         rc = 1;
     }
+    if (gr_thermolog_close(g) != 0) { /* thermo_log's file, as the log */
+        fprintf(stderr, "ERROR: %s\n", g->err.msg);
+        rc = 1;
+    }
     if (g->screen && g->screen != stdout && (fclose(g->screen) != 0 || screen_err)) {
         /* a screen file cut short is a failed run too */
         fprintf(stderr, "ERROR: cannot write screen file '%s': %s\n", screen,

@@ -92,6 +92,7 @@ struct atoms {
                              * (LAMMPS atom->temperature_flag, heatflow_flag) */
     double temp_default;    /* temperature of a new atom (0; fix heat/gran's
                              * initial_temperature: LIGGGHTS's Temp default_value) */
+    int allow_soft, allow_hard; /* LIGGGHTS's soft_particles, hard_particles yes */
     double *type_mass;      /* [ntypes+1] from the mass command; 0 = unset */
     int64_t maxtag;
     int *order;             /* scratch of atoms_tag_order() */
@@ -242,6 +243,9 @@ struct gravel {
     char *logname;          /* its name, for write errors (NULL: not opened by gr_log_open) */
     int *logerr;            /* errno of the log's first failed write, 0 while none failed
                              * (heap, owned with logname; NULL for a log set directly) */
+    FILE *thermolog;        /* LIGGGHTS's thermo_log file, or NULL; its name and errno as */
+    char *thermologname;    /* the log's (log.c); kept across `clear`, as LIGGGHTS's */
+    int *thermologerr;
     enum echo_mode echo;
 
     struct domain dom;

@@ -29,6 +29,7 @@ static void emit(struct gravel *g, const char *text)
 {
     progress_clear(g); /* stdout and stderr may share the terminal */
     gr_print(g, "%s", text);
+    gr_thermolog_write(g, text);
     if (g->thermo.flush) {
         if (g->screen)
             fflush(g->screen);

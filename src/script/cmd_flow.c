@@ -12,6 +12,7 @@
 
 #include "args.h"
 #include "command.h"
+#include "comm.h"
 #include "error.h"
 #include "fileio.h"
 #include "gravel.h"
@@ -119,6 +120,30 @@ void cmd_log(struct gravel *g, int argc, char **argv)
         gr_error(g, "%s", msg);
     }
     fprintf(g->logfile, "gravel (%s)\n", GR_VERSION);
+}
+
+/* thermo_log FILE [append] | thermo_log none (LIGGGHTS): the thermo header and
+ * rows go to FILE as well (rank 0 writes it) */
+void cmd_thermo_log(struct gravel *g, int argc, char **argv)
+{
+    int append = 0;
+    if (argc == 2) {
+        if (strcmp(argv[1], "append") != 0)
+            gr_error(g, "Illegal thermo_log command: unknown keyword '%.64s' (expected append)",
+                     argv[1]);
+        append = 1;
+    }
+    if (comm_rank() != 0)
+        return;
+    char msg[sizeof g->err.msg];
+    int err = strcmp(argv[0], "none") == 0 ? gr_thermolog_close(g)
+                                           : gr_thermolog_open(g, argv[0], append);
+    if (err > 0)
+        gr_error(g, "Cannot open thermo log file %s: %s", argv[0], strerror(err));
+    if (err < 0) {
+        snprintf(msg, sizeof msg, "%s", g->err.msg);
+        gr_error(g, "%s", msg);
+    }
 }
 
 void cmd_echo(struct gravel *g, int argc, char **argv)

@@ -33,6 +33,27 @@ void cmd_units(struct gravel *g, int argc, char **argv)
     g->dt_set = 0;
 }
 
+/* soft_particles|hard_particles yes|no (LIGGGHTS): lift the youngsModulus
+ * sanity limits of pair gran's material models (styles/pair/pair_gran.c) */
+static int yes_no(struct gravel *g, const char *cmd, const char *v)
+{
+    if (strcmp(v, "yes") && strcmp(v, "no"))
+        gr_error(g, "%s expects 'yes' or 'no'", cmd);
+    return v[0] == 'y';
+}
+
+void cmd_soft_particles(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    g->atoms.allow_soft = yes_no(g, "soft_particles", argv[0]);
+}
+
+void cmd_hard_particles(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    g->atoms.allow_hard = yes_no(g, "hard_particles", argv[0]);
+}
+
 void cmd_dimension(struct gravel *g, int argc, char **argv)
 {
     (void)argc;

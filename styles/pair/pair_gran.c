@@ -169,6 +169,19 @@ static const char *const hysteresis_props[3] = {"coefficientMaxElasticStiffness"
                                                 "coefficientAdhesionStiffness",
                                                 "coefficientPlasticityDepth"};
 
+/* LIGGGHTS's sanity limits on a Young's modulus (global_properties.cpp),
+ * lifted by `soft_particles yes` and `hard_particles yes`; lj units have none. */
+static void youngs_sanity(struct gravel *g, double Y)
+{
+    const int si = g->dom.units == UNITS_SI, cgs = g->dom.units == UNITS_CGS;
+    if (!g->atoms.allow_soft && ((si && Y < 5e6) || (cgs && Y < 5e7)))
+        gr_error(g, "youngsModulus >= %s required for %s units (use command 'soft_particles "
+                    "yes' to override)", si ? "5e6" : "5e7", si ? "SI" : "CGS");
+    if (!g->atoms.allow_hard && ((si && Y > 1e9) || (cgs && Y > 1e10)))
+        gr_error(g, "youngsModulus <= %s required for %s units (use command 'hard_particles "
+                    "yes' to override)", si ? "1e9" : "1e10", si ? "SI" : "CGS");
+}
+
 void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *who)
 {
     if (material_model(m)) {
@@ -177,6 +190,7 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
         for (int t = 0; t < nt; t++) {
             if (!(Y[t] > 0) || !isfinite(Y[t]))
                 gr_error(g, "%s: youngsModulus of type %d must be > 0, got %g", who, t + 1, Y[t]);
+            youngs_sanity(g, Y[t]);
             if (!(nu[t] >= 0 && nu[t] <= 0.5))
                 gr_error(g, "%s: 0 <= poissonsRatio <= 0.5 required (type %d: %g)", who, t + 1,
                          nu[t]);
