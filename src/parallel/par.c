@@ -172,7 +172,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "insert/rate/region", "insert/stream",
                                         "check/timestep/gran", "heat/gran",
                                         "heat/gran/conduction", "adapt", "property/atom",
-                                        "heat/flow", "viscous/nonlinear", NULL};
+                                        "heat/flow", "viscous/nonlinear", "momentum", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

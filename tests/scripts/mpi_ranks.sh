@@ -612,6 +612,15 @@ rm -f d.*.txt v_*.vtk
 check gravity_energy_in_pe '[ "$(rows ref.out | tail -1 | awk "{print (\$10 == \$NF && \$NF > 0)}")" = 1 ]'
 same gravity_energy_np2 grav.in 2 ""
 
+# fix momentum (linear, angular, rescale): its sums over every rank's atoms in tag order
+sed -e 's/^thermo_modify   format float %.15g/thermo_modify   format float %.17g/' \
+    -e '$a write_dump all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+    "$root/tests/reference/momentum/mom.in" > mom.in
+rm -f d.*.txt v_*.vtk
+"$serial" -in mom.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+same momentum_np2 mom.in 2 ""
+same momentum_np3 mom.in 3 ""
+
 # what cannot run across ranks yet stops every rank, one message, exit 1
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all deform 1 x scale 1.0/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
