@@ -10,7 +10,7 @@
  * history zeroing and the torques (contact_out_set); then each lane's
  * history and incidence records are stored (none for a contact apart now
  * and when last evaluated: quiet[c], as pair_loop.cl). A group none of
- * whose contacts touches stops after the gate (pair_lanes_apart): the
+ * whose contacts touches stops after the gate (pair_lane_apart): the
  * apart pairs of a flowing bed or a gas cost about what they cost one per
  * work-item. Every operation is the
  * one-contact body's, in its order, so the results are bit-identical to
@@ -72,32 +72,29 @@ static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
 #define LMINIMG_Z(d, L) (d)
 #endif
 
-/* The group's contacts when none of them touches (pair_loop.cl's
- * pair_contacts for each): a nonzero history is zeroed, and a contact that
- * acted when last evaluated writes zero records (+0 on the owner's, -0 as -F
- * on the partner's) and turns quiet. */
-static inline void pair_lanes_apart(const int c0, const int ncontact, __global REAL *shear,
-                                    __global uchar *quiet, __global const int *cslot,
-                                    __global REAL *recf, __global REAL *rect)
+/* A contact that does not touch (pair_loop.cl's pair_contacts for it): a
+ * nonzero history is zeroed, and if it acted when last evaluated it writes
+ * zero records (+0 on the owner's, -0 as -F on the partner's) and turns
+ * quiet. */
+static inline void pair_lane_apart(const int c, __global REAL *shear, __global uchar *quiet,
+                                   __global const int *cslot, __global REAL *recf,
+                                   __global REAL *rect)
 {
-    for (int l = 0; l < PAIR_LW && c0 + l < ncontact; l++) {
-        const int c = c0 + l;
 #ifdef HAS_HISTORY
-        const REAL h0[3] = {0, 0, 0};
-        contact_hist_store(shear + (size_t)c * 3, h0, 3, 0);
+    const REAL h0[3] = {0, 0, 0};
+    contact_hist_store(shear + (size_t)c * 3, h0, 3, 0);
 #else
-        (void)shear;
+    (void)shear;
 #endif
-        if (quiet[c])
-            continue;
-        quiet[c] = 1;
-        const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
-        const REAL3 f = (REAL3)(0);
-        vstore3(f, si, recf);
-        vstore3(-f, sj, recf);
-        vstore3(f, si, rect);
-        vstore3(f, sj, rect);
-    }
+    if (quiet[c])
+        return;
+    quiet[c] = 1;
+    const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
+    const REAL3 f = (REAL3)(0);
+    vstore3(f, si, recf);
+    vstore3(-f, sj, recf);
+    vstore3(f, si, rect);
+    vstore3(f, sj, rect);
 }
 
 /* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
@@ -194,7 +191,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     k.delta = radsum - k.r;
 #endif
     if (!any(acts)) { /* no lane touches: only history to forget and records to clear */
-        pair_lanes_apart(c0, ncontact, shear, quiet, cslot, recf, rect);
+        for (int l = 0; l < PAIR_LW && c0 + l < ncontact; l++)
+            pair_lane_apart(c0 + l, shear, quiet, cslot, recf, rect);
         return;
     }
     k.reff = radi * radj / (radi + radj);
@@ -266,27 +264,15 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
                 astep[c] = step;
             }
         }
-        const int acted = LANE(actsw, l) != (REAL)0;
-#ifdef HAS_HISTORY /* contact_hist_store */
-        const REAL3 sl = (REAL3)(LANE(shx, l), LANE(shy, l), LANE(shz, l));
-        __global REAL *row = shear + (size_t)c * 3;
-        if (acted) {
-            vstore3(sl, 0, row);
-        } else { /* only what differs (a -0 stays, as contact_hist_store) */
-            if (row[0] != sl.x)
-                row[0] = sl.x;
-            if (row[1] != sl.y)
-                row[1] = sl.y;
-            if (row[2] != sl.z)
-                row[2] = sl.z;
-        }
-#endif
-        /* apart now and when last evaluated: its records hold these zeros already */
-        const uchar was_quiet = quiet[c];
-        if (!acted && was_quiet)
+        if (LANE(actsw, l) == (REAL)0) { /* its selects left zeros: as an apart group's */
+            pair_lane_apart(c, shear, quiet, cslot, recf, rect);
             continue;
-        if (was_quiet != !acted)
-            quiet[c] = !acted;
+        }
+#ifdef HAS_HISTORY /* contact_hist_store of an acting contact: the whole row */
+        vstore3((REAL3)(LANE(shx, l), LANE(shy, l), LANE(shz, l)), c, shear);
+#endif
+        if (quiet[c])
+            quiet[c] = 0;
         const REAL3 f = (REAL3)(LANE(fx, l), LANE(fy, l), LANE(fz, l));
         const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
         vstore3(f, si, recf);

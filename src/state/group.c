@@ -22,6 +22,7 @@
 #include "error.h"
 #include "fix.h"
 #include "log.h"
+#include "par_sum.h"
 #include "region.h"
 #include "device.h"
 #include "variable.h"
@@ -69,48 +70,85 @@ bigint group_count(const struct gravel *g, int igroup)
     return n;
 }
 
+/* What group_sums adds up per atom (n terms each, in this order). */
+enum sum_kind { S_MASS, S_P, S_MX, S_L, S_I, S_KE };
+
+/* Sums over the group's atoms in tag order: mass (1); momentum m v (3);
+ * m x (3, x unwrapped); angular momentum about c (3); the inertia tensor
+ * about c (6: xx yy zz xy yz xz); m v^2 (1). Through par_sum: in a
+ * decomposed run (not gathered) over every rank's atoms, one process's
+ * bits; otherwise the host atoms, added as they come. */
+static void group_sums(struct gravel *g, int igroup, enum sum_kind kind, const double c[3],
+                       double *out)
+{
+    static const int nterm[] = {1, 3, 3, 3, 6, 1};
+    const int n = nterm[kind];
+    const unsigned bit = group_bit(igroup);
+    const struct atoms *a = &g->atoms;
+    const int *order = atoms_tag_order(g);
+    struct par_sum s[6];
+    memset(s, 0, sizeof s);
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
+        if (!(a->mask[i] & bit))
+            continue;
+        const double m = a->rmass[i], *v = a->v + 3 * i;
+        double t[6] = {0}, u[3] = {0}, dx = 0, dy = 0, dz = 0;
+        if (kind == S_MX || kind == S_L || kind == S_I) {
+            domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
+            if (c)
+                dx = u[0] - c[0], dy = u[1] - c[1], dz = u[2] - c[2];
+        }
+        switch (kind) {
+        case S_MASS:
+            t[0] = m;
+            break;
+        case S_P:
+            t[0] = m * v[0], t[1] = m * v[1], t[2] = m * v[2];
+            break;
+        case S_MX:
+            t[0] = m * u[0], t[1] = m * u[1], t[2] = m * u[2];
+            break;
+        case S_L:
+            t[0] = m * (dy * v[2] - dz * v[1]);
+            t[1] = m * (dz * v[0] - dx * v[2]);
+            t[2] = m * (dx * v[1] - dy * v[0]);
+            break;
+        case S_I: /* the off-diagonal terms subtracted: + (-t) is - t */
+            t[0] = m * (dy * dy + dz * dz), t[1] = m * (dx * dx + dz * dz);
+            t[2] = m * (dx * dx + dy * dy), t[3] = -(m * dx * dy);
+            t[4] = -(m * dy * dz), t[5] = -(m * dx * dz);
+            break;
+        case S_KE:
+            t[0] = m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            break;
+        }
+        for (int q = 0; q < n; q++)
+            par_sum_add(g, &s[q], a->tag[i], t[q]);
+    }
+    for (int q = 0; q < n; q++)
+        out[q] = par_sum_total(g, &s[q]);
+}
+
 double group_mass(struct gravel *g, int igroup)
 {
-    unsigned bit = group_bit(igroup);
-    const int *order = atoms_tag_order(g);
-    double m = 0;
-    for (int k = 0; k < g->atoms.n; k++)
-        if (g->atoms.mask[order[k]] & bit)
-            m += g->atoms.rmass[order[k]];
+    double m;
+    group_sums(g, igroup, S_MASS, NULL, &m);
     return m;
 }
 
 void group_xcm(struct gravel *g, int igroup, double masstotal, double xcm[3])
 {
-    unsigned bit = group_bit(igroup);
-    const struct atoms *a = &g->atoms;
-    const int *order = atoms_tag_order(g);
-    double s[3] = {0, 0, 0};
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        if (!(a->mask[i] & bit))
-            continue;
-        double u[3];
-        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
-        for (int d = 0; d < 3; d++)
-            s[d] += a->rmass[i] * u[d];
-    }
+    double s[3];
+    group_sums(g, igroup, S_MX, NULL, s);
     for (int d = 0; d < 3; d++)
         xcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
 }
 
 void group_vcm(struct gravel *g, int igroup, double masstotal, double vcm[3])
 {
-    unsigned bit = group_bit(igroup);
-    const struct atoms *a = &g->atoms;
-    const int *order = atoms_tag_order(g);
-    double s[3] = {0, 0, 0};
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        if (a->mask[i] & bit)
-            for (int d = 0; d < 3; d++)
-                s[d] += a->rmass[i] * a->v[3 * i + d];
-    }
+    double s[3];
+    group_sums(g, igroup, S_P, NULL, s);
     for (int d = 0; d < 3; d++)
         vcm[d] = masstotal > 0 ? s[d] / masstotal : 0.0;
 }
@@ -133,65 +171,24 @@ void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3]
 
 double group_ke(struct gravel *g, int igroup)
 {
-    unsigned bit = group_bit(igroup);
-    const struct atoms *a = &g->atoms;
-    const int *order = atoms_tag_order(g);
-    double ke = 0;
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        if (a->mask[i] & bit) {
-            const double *v = a->v + 3 * i;
-            ke += a->rmass[i] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        }
-    }
+    double ke;
+    group_sums(g, igroup, S_KE, NULL, &ke);
     return 0.5 * ke;
 }
 
 void group_angmom(struct gravel *g, int igroup, const double xcm[3], double L[3])
 {
-    unsigned bit = group_bit(igroup);
-    const struct atoms *a = &g->atoms;
-    const int *order = atoms_tag_order(g);
-    L[0] = L[1] = L[2] = 0;
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        if (!(a->mask[i] & bit))
-            continue;
-        double u[3];
-        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
-        double dx = u[0] - xcm[0], dy = u[1] - xcm[1], dz = u[2] - xcm[2];
-        const double *v = a->v + 3 * i;
-        double m = a->rmass[i];
-        L[0] += m * (dy * v[2] - dz * v[1]);
-        L[1] += m * (dz * v[0] - dx * v[2]);
-        L[2] += m * (dx * v[1] - dy * v[0]);
-    }
+    group_sums(g, igroup, S_L, xcm, L);
 }
 
 void group_inertia(struct gravel *g, int igroup, const double xcm[3], double I[3][3])
 {
-    unsigned bit = group_bit(igroup);
-    const struct atoms *a = &g->atoms;
-    const int *order = atoms_tag_order(g);
-    memset(I, 0, 9 * sizeof(double));
-    for (int k = 0; k < a->n; k++) {
-        const int i = order[k];
-        if (!(a->mask[i] & bit))
-            continue;
-        double u[3];
-        domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
-        double dx = u[0] - xcm[0], dy = u[1] - xcm[1], dz = u[2] - xcm[2];
-        double m = a->rmass[i];
-        I[0][0] += m * (dy * dy + dz * dz);
-        I[1][1] += m * (dx * dx + dz * dz);
-        I[2][2] += m * (dx * dx + dy * dy);
-        I[0][1] -= m * dx * dy;
-        I[1][2] -= m * dy * dz;
-        I[0][2] -= m * dx * dz;
-    }
-    I[1][0] = I[0][1];
-    I[2][1] = I[1][2];
-    I[2][0] = I[0][2];
+    double t[6];
+    group_sums(g, igroup, S_I, xcm, t);
+    I[0][0] = t[0], I[1][1] = t[1], I[2][2] = t[2];
+    I[0][1] = I[1][0] = t[3];
+    I[1][2] = I[2][1] = t[4];
+    I[0][2] = I[2][0] = t[5];
 }
 
 void group_omega(const double L[3], double I[3][3], double w[3])

@@ -23,7 +23,9 @@ static inline unsigned group_bit(int i) { return 1u << i; }
 void group_dynamic_update(struct gravel *g, bigint step);
 
 /* Reductions over the atoms of group i (host arrays); sums in tag order, so
- * they depend on the atoms only (the same on any number of MPI ranks). */
+ * they depend on the atoms only; during a decomposed run (the host holds
+ * this rank's atoms) the sums run over every rank's atoms (par_sum.h):
+ * the same bits on any number of MPI ranks. group_count is this host's. */
 bigint group_count(const struct gravel *g, int igroup);
 double group_mass(struct gravel *g, int igroup);
 /* Center of mass of unwrapped positions; masstotal from group_mass (0: xcm = 0). */

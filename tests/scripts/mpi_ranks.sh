@@ -148,6 +148,14 @@ dumps_same() {
     done
 }
 keep_ref() { rm -rf ref; mkdir ref; mv d.*.txt v_*.vtk ref/ 2> /dev/null; }
+# deck [gravel arguments]: the one-process reference of the next checks (its
+# thermo in ref.out, final atoms in ref.dump, dumps in ref/; an earlier run's
+# dump files are removed first, so ref/ holds this run's only)
+ref_run() {
+    rm -f d.*.txt v_*.vtk
+    # shellcheck disable=SC2086
+    "$serial" -in "$1" -log none $2 > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+}
 same() {
     if [ -n "$5" ]; then sed "s/^comm_modify/processors $5\ncomm_modify/" "$2" > p.in; else cp "$2" p.in; fi
     rm -f d.*.txt v_*.vtk
@@ -157,7 +165,7 @@ same() {
     rm -f d.*.txt v_*.vtk # compared: the next reference run's keep_ref takes only its own
 }
 
-"$serial" -in gas.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run gas.in
 same gas_np1 gas.in 1 ""
 same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
@@ -179,21 +187,21 @@ footer_ok() { # file, ranks, atoms
 check footer_over_ranks 'footer_ok gas_np4.out 4 1728 && footer_ok gas_np8.out 8 1728 && footer_ok ref.out 1 1728'
 check gas_grid_reported 'grep -q "^Decomposition: 2 x 2 x 2 MPI ranks" gas_np8.out && grep -q "^Loop time of .* on 8 procs for 300 steps with 1728 atoms" gas_np8.out'
 
-"$serial" -in wall.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run wall.in
 same walls_np2 wall.in 2 ""
 same walls_np4_z wall.in 4 "" "1 2 2"
 # an empty sub-domain: the atoms start in the lower third, z split in 3
 sed 's/^region          fill block 0 12 0 12 1 11/region          fill block 0 12 0 12 1 4/; s/^velocity        all create 25.0/velocity        all create 0.5/' wall.in > low.in
-"$serial" -in low.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run low.in
 same empty_subdomain_np3 low.in 3 "" "1 1 3"
 
-"$serial" -in mill.in -var nsteps 1200 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run mill.in "-var nsteps 1200"
 same mill_np3 mill.in 3 "-var nsteps 1200"
 check mill_force_seen '[ "$(rows mill_np3.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
 # the mill's mesh dumps (its geometry, the same on every rank: rank 0 writes) and the
 # atoms' vtk dump sorted by ID, every file byte-identical
 sed 's/^run  /dump mv all mesh\/vtk 400 v_mesh_*.vtk\ndump ms all mesh\/stl 400 d.mesh_*.stl.txt\ndump av all vtk 400 v_atoms_*.vtk\ndump_modify av sort id\nrun  /' mill.in > millm.in
-"$serial" -in millm.in -var nsteps 800 -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run millm.in "-var nsteps 800"
 check mill_mesh_dumps_written '[ "$(ls ref/v_mesh_*.vtk | wc -l)" -eq 3 ] && [ "$(ls ref/d.mesh_*.stl.txt | wc -l)" -eq 3 ] && grep -q "^solid" ref/d.mesh_800.stl.txt'
 same mill_mesh_dumps_np3 millm.in 3 "-var nsteps 800"
 # LIGGGHTS's insertion (fix insert/pack with volumefraction_region and all_in,
@@ -233,7 +241,7 @@ thermo          1000
 run             12000
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
-"$serial" -in pack.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run pack.in
 check insert_pack_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 500 ]'
 same insert_pack_np2 pack.in 2 ""
 same insert_pack_np3 pack.in 3 ""
@@ -273,13 +281,13 @@ run             1
 run             20000
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
-"$serial" -in stream.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run stream.in
 check insert_stream_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -eq 300 ]'
 same insert_stream_np2 stream.in 2 ""
 same insert_stream_np3 stream.in 3 ""
 # vel uniform: every rank draws every placed particle's release velocity in tag order
 sed 's/vel constant 0. -0.5 -2./vel uniform 0. -0.5 -2. 0.1 0.1 0.1/' stream.in > streamu.in
-"$serial" -in streamu.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run streamu.in
 same insert_stream_uniform_np2 streamu.in 2 ""
 # LIGGGHTS's meshGran tutorial (the installed liggghts-doc's deck and meshes, its runs
 # cut to step 6000): mesh walls, insert/stream, check/timestep/gran in thermo (its
@@ -289,7 +297,7 @@ rm -rf meshes && cp -r "$tut/meshes" . && mkdir -p post
 sed -E -e 's/^(run[[:space:]]+)[0-9]+/\1 6000/' -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' \
     -e '$a write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
     "$tut/in.meshGran" > meshgran.in
-"$serial" -in meshgran.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run meshgran.in
 check meshgran_ran '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
 same meshgran_np2 meshgran.in 2 ""
 # LIGGGHTS's heatTransfer_1 tutorial (settle 6000 steps, half the bed set to 800 K,
@@ -301,7 +309,7 @@ sed -E -e 's/^run[[:space:]]+20000 upto/run 6000 upto/' -e 's/^run[[:space:]]+50
     -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' -e 's/^dump.*$/#/' \
     -e '$a compute pt all property/atom temperature\nwrite_dump all custom final.dump id x y z vx vy vz c_pt modify sort id format float %.17g' \
     "$tut/in.heatGran" > heat.in
-"$serial" -in heat.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run heat.in
 check heat_conducted '[ "$(awk "NR > 9 && \$8 > 300.00001 && \$8 < 799.9999" ref.dump | wc -l)" -gt 10 ]'
 same heat_np2 heat.in 2 ""
 # LIGGGHTS's packing tutorial (insert/pack, then fix adapt growing every diameter
@@ -313,7 +321,7 @@ sed -E -e 's/^variable[[:space:]]+growts equal 50000/variable growts equal 4000/
     -e 's/^(thermo_style.*)$/\1\nthermo_modify format float %.17g/' -e 's/^dump.*$/#/' \
     -e '$a write_dump all custom final.dump id x y z vx vy vz radius mass modify sort id format float %.17g' \
     "$tut/in.packing" > packing.in
-"$serial" -in packing.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run packing.in
 check packing_grown '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 300 ]'
 same packing_np2 packing.in 2 ""
 # LAMMPS's heat (fix property/atom temperature heatflow, pair granular heat area,
@@ -346,7 +354,7 @@ timestep        0.001
 run             1000
 write_dump      all custom final.dump id x y z vx vy vz c_T modify sort id format float %.17g
 IN
-"$serial" -in lheat.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run lheat.in
 check lheat_conducted '[ "$(awk "NR > 9 && \$8 > 0.0001 && \$8 < 0.9999" ref.dump | wc -l)" -gt 10 ]'
 same lheat_np2 lheat.in 2 ""
 same lheat_np3 lheat.in 3 ""
@@ -358,8 +366,7 @@ sed -e 's/^fix             3 all rigid\/small molecule mol object/fix           
     -e 's/ mol object rigid 3/ mol object/' -e 's/^\(thermo_modify.*\)$/\1 format float %.17g/' \
     -e 's/^run[[:space:]]*25000/run 6000\nwrite_dump all custom final.dump id mol x y z vx vy vz modify sort id format float %.17g/' \
     /usr/share/lammps/examples/pour/in.pour.2d.molecule > pourmol.in
-rm -f d.*.txt v_*.vtk
-"$serial" -in pourmol.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run pourmol.in
 check pour_mol_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
 same pour_mol_np2 pourmol.in 2 ""
 same pour_mol_np3 pourmol.in 3 ""
@@ -369,7 +376,7 @@ cp "$root/tests/reference/liggghts_wear/floor.stl" .
 sed -e 's|post/wear_\*.vtk|v_wear_*.vtk|' -e 's/^thermo_style    custom step atoms ke/thermo_style    custom step atoms ke f_cad[1] f_cad[3]\nthermo_modify   format float %.17g/' \
     -e '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
     "$root/tests/reference/liggghts_wear/wear.in" > wear.in
-"$serial" -in wear.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run wear.in
 check wear_dumps_written '[ "$(ls ref/v_wear_*.vtk | wc -l)" -eq 15 ] && grep -q "wear" ref/v_wear_3500.vtk'
 same wear_np2 wear.in 2 ""
 same wear_np3 wear.in 3 ""
@@ -387,12 +394,12 @@ thermo          50
 run             400
 write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
 IN
-"$serial" -in agglo.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run agglo.in
 check agglo_clusters_seen '[ -s ref/d.hist.txt ] && [ "$(rows ref.out | awk "\$5 > 1" | wc -l)" -ge 2 ]'
 same agglo_np3 agglo.in 3 ""
 same agglo_np4 agglo.in 4 "" "2 2 1"
 
-"$serial" -in chute.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run chute.in
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
 same chute_np4_z chute.in 4 "" "1 2 2"
@@ -400,18 +407,18 @@ same chute_np4_z chute.in 4 "" "1 2 2"
 # 8010 atoms, imbalance 1.00125, as lmp prints), then fix balance moving x and z cuts
 # every 40 steps; the same bits as one process with the same deck
 sed 's/^read_data       data.chute/read_data       data.chute\nbalance 1.0 shift z 10 1.05/; s/^run             120/fix bal all balance 40 1.0 shift xz 10 1.0\nrun             120/' chute.in > bal.in
-"$serial" -in bal.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run bal.in
 same balance_np4 bal.in 4 ""
 check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 8000.0000$" balance_np4.out && grep -q "^  initial/final imbalance factor  = 1.0012500 1.0000000$" balance_np4.out && grep -q "^  z cuts: 0.0000000 0.5[0-9]* 1.0000000$" balance_np4.out'
 
-"$serial" -in chute.in -log none -precision single > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run chute.in "-precision single"
 same chute_single_np2 chute.in 2 "-precision single"
 
 # equal-style variables in thermo: thermo keywords (the pressure and energies
 # taken before the gather), computes (summed and gathered) and group functions,
 # evaluated on every rank's atoms as one process; compute pressure
 grep -v '^dump' chute.in | sed 's/^thermo_style    custom .*/compute t active temp\nvariable kk equal ke*2+c_1\nvariable m equal mass(active)\nvariable zc equal xcm(active,z)\nvariable vx equal vcm(active,x)\nvariable n equal count(active)\nvariable tt equal c_t\/(1+step)\nvariable w equal v_kk\/v_n\ncompute pr all pressure thermo_temp\nvariable pp equal press+pxy*2+pe+etotal\nthermo_style custom step atoms v_kk v_m v_zc v_vx v_n v_tt v_w c_pr c_pr[4] v_pp/' > var.in
-"$serial" -in var.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run var.in
 check thermo_variables_seen '[ "$(rows ref.out | awk "NR > 1 && \$3 > 0 && \$9 > 0 && \$10 > 0 && \$12 > \$10" | wc -l)" -ge 4 ]'
 same thermo_variables_np3 var.in 3 ""
 
@@ -480,7 +487,7 @@ run             600
 write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
 IN
 rm -f d.*.txt v_*.vtk # the chute's dumps
-"$serial" -in cg.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run cg.in
 same computes_np3 cg.in 3 ""
 same computes_np4 cg.in 4 ""
 check computes_nonzero '[ "$(rows computes_np3.out | awk "NR > 1 && \$8 > 0 && \$9 > 0 && \$15 > 0 && \$17 > 0" | wc -l)" -ge 5 ]'
@@ -515,7 +522,7 @@ thermo          50
 run             300
 write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g
 IN
-"$serial" -in loc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run loc.in
 check dump_local_written '[ "$(ls ref/d.loc.*.txt | wc -l)" -eq 4 ] && [ "$(wc -l < ref/d.loc.100.txt)" -gt 100 ]'
 same dump_local_np3 loc.in 3 ""
 # pair/local's pN values read each rank's stored contact history: refused
@@ -600,15 +607,13 @@ check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuat
 
 # fix viscous/nonlinear (LAMMPS 2026's Schiller-Naumann drag): per atom, no communication
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > visc.in
-rm -f d.*.txt v_*.vtk # the restart runs' dumps: not this reference's
-"$serial" -in visc.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run visc.in
 same viscous_nonlinear_np2 visc.in 2 ""
 
 # fix_modify energy yes of fix gravity: pe and f_1 summed over every rank's atoms in tag order
 sed -e 's/^fix             1 all gravity 1.0 chute 26.0/fix             1 all gravity 1.0 chute 26.0\nfix_modify      1 energy yes/' \
     -e 's/^thermo_style    custom \(.*\)$/thermo_style    custom \1 f_1/' chute.in > grav.in
-rm -f d.*.txt v_*.vtk
-"$serial" -in grav.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run grav.in
 check gravity_energy_in_pe '[ "$(rows ref.out | tail -1 | awk "{print (\$10 == \$NF && \$NF > 0)}")" = 1 ]'
 same gravity_energy_np2 grav.in 2 ""
 
@@ -616,8 +621,7 @@ same gravity_energy_np2 grav.in 2 ""
 sed -e 's/^thermo_modify   format float %.15g/thermo_modify   format float %.17g/' \
     -e '$a write_dump all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
     "$root/tests/reference/momentum/mom.in" > mom.in
-rm -f d.*.txt v_*.vtk
-"$serial" -in mom.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run mom.in
 same momentum_np2 mom.in 2 ""
 same momentum_np3 mom.in 3 ""
 
@@ -628,8 +632,7 @@ check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ra
 # a variable reading a fix whose value may be one rank's part
 # a variable reading fix ave/time (its compute input sampled as one process): the same bits
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
-rm -f d.*.txt v_*.vtk
-"$serial" -in vara.in -log none > ref.out 2>&1; mv final.dump ref.dump; keep_ref
+ref_run vara.in
 same variable_ave_time_np2 vara.in 2 ""
 sed 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]/' var.in > varf.in
 mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
