@@ -45,6 +45,8 @@ struct contact {
     REAL3 vr;           /* v_i - v_j */
     REAL3 omi, omj;     /* angular velocities (omj = 0 for a wall) */
     REAL meff;          /* effective mass (LAMMPS: frozen partner -> other mass) */
+    REAL mi, mj;        /* the masses of i and j (mj = 0 for a wall; LIGGGHTS's epsd
+                         * rolling inertia) */
     REAL dt;            /* time step */
     int shearupdate;    /* 0 during setup: history is not advanced */
     int approach;       /* 1: the caller also evaluates pairs apart that one
@@ -301,6 +303,8 @@ static inline struct contact contact_build(const int kind, const int i,
         struct contact k = contact_make(s->del, s->radi, s->radj,
                                         s->radi * s->radj / (s->radi + s->radj),
                                         vload3(i, a->v) - vload3(j, a->v), omi, omj, meff);
+        k.mi = mi;
+        k.mj = mj;
 #ifdef HAS_HEAT
         k.ti = a->temp[i];
         k.tj = a->temp[j];
@@ -309,6 +313,8 @@ static inline struct contact contact_build(const int kind, const int i,
     }
     struct contact k = contact_make(s->del, s->radi, 0, wall_reff(s->radi, s->rwall),
                                     vload3(i, a->v) - pj->vwall, omi, pj->omwall, a->rmass[i]);
+    k.mi = k.meff;
+    k.mj = 0;
 #ifdef HAS_HEAT
     k.ti = a->temp[i];
     k.tj = pj->twall;

@@ -6,7 +6,8 @@
  * model granular takes the sub-models of pair_granular.cl with the wall's
  * own layout (run-time: one model per wall, param GRW_*); LIGGGHTS's `model
  * ...` walls take pair_gran.cl's gran_model_eval with a table by (particle
- * type, wall type) of LG_* sets (LG_WALL = 1). */
+ * type, wall type) of LG_* sets (LG_WALL = 1), its row form with an epsd
+ * rolling model (shear, then the spring torque). */
 
 static inline void wall_granular_eval(const struct contact *c, __global const REAL *p, REAL *h,
                                       struct contact_force *out)
@@ -55,6 +56,7 @@ CONTACT_BODY(gran_hertz_history_body, gran_hertz_history_eval, 0,
              TCOL_OF(gran_hertz_history_eval))
 CONTACT_BODY(wall_granular_body, wall_granular_eval, 1, TCOL_OF(wall_granular_eval))
 CONTACT_BODY(gran_model_body, gran_model_eval, 0, TCOL_OF(gran_model_eval))
+CONTACT_BODY(gran_model_row_body, gran_model_eval_row, 1, TCOL_OF(gran_model_eval_row))
 
 /* each model's contact body and its form (1: a history row) */
 #define WG_BODY_WG_HOOKE gran_hooke_body
@@ -62,11 +64,13 @@ CONTACT_BODY(gran_model_body, gran_model_eval, 0, TCOL_OF(gran_model_eval))
 #define WG_BODY_WG_HERTZ_HISTORY gran_hertz_history_body
 #define WG_BODY_WG_GRANULAR wall_granular_body
 #define WG_BODY_WG_LIGGGHTS gran_model_body
+#define WG_BODY_WG_LIGGGHTS_ROW gran_model_row_body
 #define WG_ROW_WG_HOOKE 0
 #define WG_ROW_WG_HOOKE_HISTORY 0
 #define WG_ROW_WG_HERTZ_HISTORY 0
 #define WG_ROW_WG_GRANULAR 1
 #define WG_ROW_WG_LIGGGHTS 0
+#define WG_ROW_WG_LIGGGHTS_ROW 1
 
 /* every kernel of the table (kernels/wall_gran_kernels.h), without approach:
  * plane and cylinder walls (fix wall/gran), meshes (fix wall/gran ...

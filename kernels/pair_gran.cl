@@ -37,6 +37,13 @@
  *   sjkr2 A = 2 pi (2 ri rj / (ri + rj)) (ri + rj - r) (wall: 2 pi ri (ri - r)).
  * Rolling cdt: tr = mu_r kn deltan reff w/|w| without its en component
  *   (torsionTorque on: kept), w = omi - omj (wall: cri omi / r); on i -tr, on j +tr.
+ * Rolling epsd, epsd2, epsd3 (rolling_model_epsd*.h; Ai et al. 2011): a
+ *   spring torque M += kr dt wt (wt: w without its en component unless
+ *   torsionTorque), kr = 2.25 kn mu_r^2 reff^2 (epsd3: rollingStiffness
+ *   for 2.25; epsd2: kt reff^2), capped at mu_r |Fn| reff; the capped
+ *   spring torque is the history (3 REAL); below the cap epsd and epsd3 add
+ *   the dashpot eta_r 2 sqrt(I kr) wt, I = 1.4 (2d: 1.5) Ii Ij / (Ii + Ij),
+ *   Ii = mi ri^2 (wall: mi ri^2).
  * Torques: on i -cri (en x Ft) - tr, on j -crj (en x Ft) + tr. */
 
 #define LG_SQRT56 ((REAL)0.91287092917527685576161630466800355658790782499663875)
@@ -244,6 +251,49 @@ static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const
     return t;
 }
 
+/* rolling epsd, epsd2, epsd3: the torque subtracted on i (added on j); wr
+ * the relative rotation (the wall's cri omi / r), *m the spring torque
+ * (history; updated when update) */
+static inline REAL3 lg_rolling_epsd(const struct contact *c, __global const REAL *p,
+                                    const REAL3 wr, const REAL3 en,
+                                    const struct lg_normal_out *nf, const REAL reff,
+                                    const int wall, REAL3 *m)
+{
+    const REAL rmu = p[LG_RMU];
+    REAL3 wt = wr;
+    if (p[LG_TORSION] == (REAL)0) {
+        const REAL d = wr.x * en.x + wr.y * en.y + wr.z * en.z;
+        wt = (REAL3)(wr.x - en.x * d, wr.y - en.y * d, wr.z - en.z * d);
+    }
+    const REAL kr = (int)p[LG_ROLL] == LG_R_EPSD2 ? nf->kt * reff * reff
+                                                   : p[LG_RSTIFF] * nf->kn * rmu * rmu * reff * reff;
+    const REAL s = c->dt * kr;
+    REAL3 t = (REAL3)(m->x + wt.x * s, m->y + wt.y * s, m->z + wt.z * s);
+    const REAL tmag = sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+    const REAL tmax = fabs(nf->Fn) * reff * rmu;
+    const int update = c->shearupdate;
+    if (tmag > tmax) { /* full mobilisation: no dashpot */
+        const REAL factor = tmax / tmag;
+        t = (REAL3)(t.x * factor, t.y * factor, t.z * factor);
+        if (update)
+            *m = t;
+        return t;
+    }
+    if (update)
+        *m = t;
+    if ((int)p[LG_ROLL] == LG_R_EPSD2)
+        return t;
+    REAL inertia;
+    if (wall) {
+        inertia = p[LG_RINERTIA] * c->mi * reff * reff;
+    } else {
+        const REAL ii = c->mi * c->radi * c->radi, ij = c->mj * c->radj * c->radj;
+        inertia = p[LG_RINERTIA] * ii * ij / (ii + ij);
+    }
+    const REAL coef = p[LG_RVISC] * (REAL)2 * sqrt(inertia * kr);
+    return (REAL3)(t.x + coef * wt.x, t.y + coef * wt.y, t.z + coef * wt.z);
+}
+
 #ifdef HAS_HEAT
 /* fix heat/gran's conduction (LIGGGHTS FixHeatGranCond::post_force_eval):
  * the heat flowing into i from j, (T_j - T_i) H sqrt(A), H = 4 k_i k_j /
@@ -276,10 +326,11 @@ static inline REAL lg_conduction(__global const REAL *p, const REAL r, const REA
 }
 #endif
 
-/* The composed law; dmax: hooke/hysteresis's history entry (NULL otherwise).
- * The wall's set has p[LG_WALL] = 1. */
+/* The composed law; dmax: hooke/hysteresis's history entry, roll: the epsd
+ * models' spring torque (each NULL otherwise). The wall's set has
+ * p[LG_WALL] = 1. */
 static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *dmax,
-                                  REAL3 *shear, struct contact_force *out)
+                                  REAL3 *shear, REAL3 *roll, struct contact_force *out)
 {
     const int wall = p[LG_WALL] != (REAL)0;
     const REAL3 en = c->n;
@@ -331,6 +382,9 @@ static inline void gran_model_law(const struct contact *c, __global const REAL *
     if ((int)p[LG_ROLL] == LG_R_CDT) {
         const REAL3 w = wall ? wr : c->omi - c->omj;
         rt = lg_rolling_cdt(p, w, en, deltan * nf.kn, reff, wall);
+    } else if (roll) {
+        const REAL3 w = wall ? wr : c->omi - c->omj;
+        rt = lg_rolling_epsd(c, p, w, en, &nf, reff, wall, roll);
     }
     if (wall) {
         out->tc = tor;
@@ -342,22 +396,32 @@ static inline void gran_model_law(const struct contact *c, __global const REAL *
     out->tr = (deltan * (radi - radj) / ((REAL)2 * radsum)) * tor + rt;
 }
 
-/* PAIR_EVAL form: the models without a normal history */
+/* PAIR_EVAL form: the models without a normal or rolling history */
 static inline void gran_model_eval(const struct contact *c, __global const REAL *p,
                                    REAL3 *shear, struct contact_force *out)
 {
-    gran_model_law(c, p, 0, shear, out);
+    gran_model_law(c, p, 0, shear, 0, out);
 }
 
-/* PAIR_EVAL_ROW form (hooke/hysteresis): h = dmax, then the shear */
+/* PAIR_EVAL_ROW form (hooke/hysteresis, the epsd rolling models): h =
+ * [dmax (hooke/hysteresis)] shear [spring torque (epsd*)] */
 static inline void gran_model_eval_row(const struct contact *c, __global const REAL *p, REAL *h,
                                        struct contact_force *out)
 {
-    REAL3 s = (REAL3)(h[1], h[2], h[3]);
-    gran_model_law(c, p, h, &s, out);
-    h[1] = s.x;
-    h[2] = s.y;
-    h[3] = s.z;
+    const int hyst = (int)p[LG_NMODEL] == LG_N_HOOKE_HYSTERESIS;
+    const int epsd = (int)p[LG_ROLL] >= LG_R_EPSD;
+    REAL *hs = h + hyst;
+    REAL3 s = (REAL3)(hs[0], hs[1], hs[2]);
+    REAL3 m = epsd ? (REAL3)(hs[3], hs[4], hs[5]) : (REAL3)(0);
+    gran_model_law(c, p, hyst ? h : 0, &s, epsd ? &m : 0, out);
+    hs[0] = s.x;
+    hs[1] = s.y;
+    hs[2] = s.z;
+    if (epsd) {
+        hs[3] = m.x;
+        hs[4] = m.y;
+        hs[5] = m.z;
+    }
 }
 
 /* collision time (kernels/accuracy.cl): hertz models Johnson's Hertz time

@@ -83,15 +83,20 @@ enum col_form { COL_SS, COL_SL, COL_LL };
  * coefficientAdhesionStiffness, coefficientPlasticityDepth; fix heat/gran's
  * conduction (LG_H_*: none on walls and without the fix), its conductance
  * factor 4 k_i k_j / (k_i + k_j) (thermalConductivity; 0 if one k < 1e-6)
- * and the area of contact_area constant. */
+ * and the area of contact_area constant; the epsd rolling models'
+ * coefficientRollingViscousDamping (epsd, epsd3; 0 for epsd2), the
+ * prefactor of kr (2.25 for epsd, rollingStiffness for epsd3) and of the
+ * rolling inertia (1.4 in 3d, 1.5 in 2d). */
 enum lg_param { LG_NMODEL, LG_YEFF, LG_GEFF, LG_BETA, LG_LOGE, LG_CHARV, LG_KN, LG_KT, LG_GN,
                 LG_GT, LG_ABSDAMP, LG_TDAMP, LG_LIMIT, LG_KTTOKN, LG_TMODEL, LG_MU, LG_COH,
                 LG_CED, LG_ROLL, LG_RMU, LG_TORSION, LG_WALL, LG_K2MAX, LG_KC, LG_PHIF,
-                LG_HEAT, LG_HC, LG_HAREA, LG_NPARAM };
+                LG_HEAT, LG_HC, LG_HAREA, LG_RVISC, LG_RSTIFF, LG_RINERTIA, LG_NPARAM };
 enum lg_normal { LG_N_HERTZ, LG_N_HOOKE, LG_N_HERTZ_STIFFNESS, LG_N_HOOKE_STIFFNESS,
                  LG_N_HOOKE_HYSTERESIS };
 enum lg_cohesion { LG_C_NONE, LG_C_SJKR, LG_C_SJKR2 };
-enum lg_rolling { LG_R_NONE, LG_R_CDT };
+/* the epsd models (elastic-plastic spring-dashpot) keep their spring torque
+ * in 3 more history REAL: every model from LG_R_EPSD on has them */
+enum lg_rolling { LG_R_NONE, LG_R_CDT, LG_R_EPSD, LG_R_EPSD2, LG_R_EPSD3 };
 enum lg_heat { LG_H_NONE, LG_H_OVERLAP, LG_H_PROJECTION, LG_H_CONSTANT };
 
 #endif

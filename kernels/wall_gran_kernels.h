@@ -8,7 +8,8 @@
 
 /* the wall's contact law (`fix wall/gran ID group <model> ...`) */
 enum wall_gran_model { WG_HOOKE, WG_HOOKE_HISTORY, WG_HERTZ_HISTORY, WG_GRANULAR,
-                       WG_LIGGGHTS /* model ...: pair gran's (kernels/pair_gran.cl) */ };
+                       WG_LIGGGHTS /* model ...: pair gran's (kernels/pair_gran.cl) */,
+                       WG_LIGGGHTS_ROW /* the same with an epsd rolling model's history */ };
 /* the contact source: plane or cylinder (kernels/wall.cl WALL_KERNEL),
  * mesh (MESH_KERNEL), region (kernels/wall_region.cl REGION_KERNEL) */
 enum wall_gran_source { WG_WALL, WG_MESH, WG_REGION };
@@ -22,11 +23,13 @@ enum wall_gran_source { WG_WALL, WG_MESH, WG_REGION };
     K(wall_gran_granular, WG_WALL, WG_GRANULAR, 0)                                             \
     K(wall_gran_granular_jkr, WG_WALL, WG_GRANULAR, 1)                                         \
     K(wall_gran_liggghts, WG_WALL, WG_LIGGGHTS, 0)                                             \
+    K(wall_gran_liggghts_row, WG_WALL, WG_LIGGGHTS_ROW, 0)                                     \
     K(mesh_gran_hooke, WG_MESH, WG_HOOKE, 0)                                                   \
     K(mesh_gran_hooke_history, WG_MESH, WG_HOOKE_HISTORY, 0)                                   \
     K(mesh_gran_hertz_history, WG_MESH, WG_HERTZ_HISTORY, 0)                                   \
     K(mesh_gran_granular, WG_MESH, WG_GRANULAR, 0)                                             \
     K(mesh_gran_liggghts, WG_MESH, WG_LIGGGHTS, 0)                                             \
+    K(mesh_gran_liggghts_row, WG_MESH, WG_LIGGGHTS_ROW, 0)                                     \
     K(region_gran_hooke, WG_REGION, WG_HOOKE, 0)                                               \
     K(region_gran_hooke_history, WG_REGION, WG_HOOKE_HISTORY, 0)                               \
     K(region_gran_hertz_history, WG_REGION, WG_HERTZ_HISTORY, 0)                               \

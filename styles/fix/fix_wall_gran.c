@@ -111,6 +111,12 @@ static const struct {
 #undef WG_ROW
 };
 
+/* LIGGGHTS's `model ...` form, in either of its kernel forms */
+static int liggghts_model(enum wall_gran_model m)
+{
+    return m == WG_LIGGGHTS || m == WG_LIGGGHTS_ROW;
+}
+
 static int parse_dim(struct gravel *g, const char *s, const char *kw)
 {
     if (!strcmp(s, "x"))
@@ -263,6 +269,10 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
             gr_error(g, "fix wall/gran: model hooke/hysteresis is not supported for walls (hertz, "
                         "hooke, hertz/stiffness, hooke/stiffness are)");
         w.history = w.lg.tm ? 3 : 0;
+        if (w.lg.roll >= LG_R_EPSD) { /* the row form: shear, then the spring torque */
+            w.model = WG_LIGGGHTS_ROW;
+            w.history = 6;
+        }
         if (i >= argc)
             gr_error(g, "fix wall/gran model ...: missing the wall ('primitive type T ...' or "
                         "'mesh n_meshes N meshes ...') after the model");
@@ -369,12 +379,12 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
 options:
     w.heat = w.model == WG_GRANULAR && (int)w.param[GR_HMODEL] != GR_H_NONE;
     while (i < argc) {
-        if (w.model == WG_LIGGGHTS && !strcmp(argv[i], "store_force")) {
+        if (liggghts_model(w.model) && !strcmp(argv[i], "store_force")) {
             arg_need(g, argc, i, 1, "store_force");
             if (arg_yesno(g, argv[i + 1], "store_force"))
                 gr_error(g, "fix wall/gran keyword 'store_force yes' is not supported");
             i += 2;
-        } else if (w.model == WG_LIGGGHTS && !strcmp(argv[i], "wiggle")) {
+        } else if (liggghts_model(w.model) && !strcmp(argv[i], "wiggle")) {
             gr_error(g, "fix wall/gran model ...: LIGGGHTS has no wiggle (use shear, or fix "
                         "move/mesh on a mesh)");
         } else if (!strcmp(argv[i], "temperature")) { /* LAMMPS 2023: the wall's temperature */
@@ -552,7 +562,7 @@ static void init(struct gravel *g, struct fix *f)
                     "property (fix property/atom temperature heatflow)");
     w->law.heat = w->heat;
     w->law.twall = w->twall;
-    if (w->model == WG_LIGGGHTS) { /* the table by (particle type, wall type) */
+    if (liggghts_model(w->model)) { /* the table by (particle type, wall type) */
         int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
         char who[GR_NAMELEN + 32];
         snprintf(who, sizeof who, "fix %s (wall/gran)", f->id);
@@ -578,7 +588,7 @@ static void init(struct gravel *g, struct fix *f)
     if (w->law.param)
         clReleaseMemObject(w->law.param);
     w->law.param = NULL;
-    if (w->model == WG_LIGGGHTS) {
+    if (liggghts_model(w->model)) {
         size_t nq = (size_t)w->table_nt * w->table_nt * LG_NPARAM;
         w->law.param = eng_alloc(g, nq * e->rsz, "fix wall/gran parameters");
         eng_write_reals(g, w->law.param, nq, w->table);
@@ -616,7 +626,7 @@ static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     if (w->style == W_MESH) {
-        mesh_walls_apply(g, f, &w->mesh, &w->law, w->model == WG_LIGGGHTS);
+        mesh_walls_apply(g, f, &w->mesh, &w->law, liggghts_model(w->model));
         return;
     }
     if (w->style == W_REGION) {

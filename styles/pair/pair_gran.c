@@ -12,14 +12,17 @@
  * (those and characteristicVelocity), hertz/stiffness and hooke/stiffness
  * (kn, kt, gamman, gammat; with absolute_damping gamman_abs, gammat_abs);
  * T: history | no_history (coefficientFriction); C: sjkr | sjkr2
- * (cohesionEnergyDensity); R: cdt (coefficientRollingFriction). Settings:
+ * (cohesionEnergyDensity); R: cdt (coefficientRollingFriction), epsd and
+ * epsd3 (that and coefficientRollingViscousDamping; epsd3 also the scalar
+ * rollingStiffness), epsd2 (coefficientRollingFriction). Settings:
  * tangential_damping (on), limitForce (off), ktToKnUser (hooke, off),
- * absolute_damping (hooke/stiffness, off), torsionTorque (cdt, off).
+ * absolute_damping (hooke/stiffness, off), torsionTorque (rolling, off).
  * hooke/hysteresis (those of hooke and coefficientMaxElasticStiffness,
  * coefficientAdhesionStiffness, coefficientPlasticityDepth; pairs only)
- * keeps the largest overlap in its history row (4 REAL, PAIR_EVAL_ROW).
- * Not supported (clear errors): the epsd rolling models,
- * other surface models, the heating and energy-tracking settings. */
+ * keeps the largest overlap in its history row, the epsd models their
+ * spring torque after the shear (PAIR_EVAL_ROW: [dmax] shear [torque]).
+ * Not supported (clear errors): other surface models, the heating and
+ * energy-tracking settings. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,13 +102,14 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
                 gr_error(g, "%s: cohesion model '%.64s' is not supported (sjkr, sjkr2 or off)",
                          who, v);
         } else if (!strcmp(kw, "rolling_friction")) {
-            if (!strcmp(v, "cdt"))
-                m->roll = LG_R_CDT;
-            else if (!strcmp(v, "off"))
-                m->roll = LG_R_NONE;
-            else
-                gr_error(g, "%s: rolling_friction model '%.64s' is not supported (cdt or off)",
-                         who, v);
+            static const char *const rolling[] = {"off", "cdt", "epsd", "epsd2", "epsd3"};
+            m->roll = -1;
+            for (int k = 0; k < 5; k++)
+                if (!strcmp(v, rolling[k]))
+                    m->roll = k; /* LG_R_NONE .. LG_R_EPSD3 */
+            if (m->roll < 0)
+                gr_error(g, "%s: rolling_friction model '%.64s' is not supported (cdt, epsd, "
+                            "epsd2, epsd3 or off)", who, v);
         } else if (!strcmp(kw, "surface")) {
             if (strcmp(v, "default"))
                 gr_error(g, "%s: surface model '%.64s' is not supported (default)", who, v);
@@ -229,10 +233,11 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
                                  J, v);
                 }
     }
-    const char *pp[] = {"coefficientFriction",
-                        m->coh ? "cohesionEnergyDensity" : NULL,
-                        m->roll ? "coefficientRollingFriction" : NULL};
-    for (int k = 0; k < 3; k++)
+    const int rvisc = m->roll == LG_R_EPSD || m->roll == LG_R_EPSD3;
+    const char *pp[] = {"coefficientFriction", m->coh ? "cohesionEnergyDensity" : NULL,
+                        m->roll ? "coefficientRollingFriction" : NULL,
+                        rvisc ? "coefficientRollingViscousDamping" : NULL};
+    for (int k = 0; k < 4; k++)
         if (pp[k])
             for (int I = 1; I <= nt; I++)
                 for (int J = 1; J <= nt; J++) {
@@ -241,6 +246,12 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
                         gr_error(g, "%s: %s must be >= 0 (types %d %d: %g)", who, pp[k], I, J,
                                  v);
                 }
+    if (m->roll == LG_R_EPSD3) { /* LIGGGHTS: >= 1 in SI units */
+        double k = fpg_scalar(g, "rollingStiffness", who);
+        if (!(k >= 0) || !isfinite(k) || (g->dom.units == UNITS_SI && k < 1))
+            gr_error(g, "%s: rollingStiffness must be >= 0 (>= 1 for SI units), got %g", who,
+                     k);
+    }
 }
 
 void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, int wall,
@@ -283,6 +294,10 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
     q[LG_ROLL] = m->roll;
     if (m->roll)
         q[LG_RMU] = fpg_pair(g, "coefficientRollingFriction", nt, I, J, who);
+    if (m->roll == LG_R_EPSD || m->roll == LG_R_EPSD3)
+        q[LG_RVISC] = fpg_pair(g, "coefficientRollingViscousDamping", nt, I, J, who);
+    q[LG_RSTIFF] = m->roll == LG_R_EPSD3 ? fpg_scalar(g, "rollingStiffness", who) : 2.25;
+    q[LG_RINERTIA] = g->dom.dimension == 2 ? 1.5 : 1.4;
     q[LG_TORSION] = m->torsion;
     q[LG_WALL] = wall;
     if (!wall)  /* fix heat/gran's conduction; walls exchange no heat */
@@ -375,10 +390,11 @@ static void describe(const struct pair *p, struct pair_caps *c)
     lg_from_coef(&m, p->coef);
     pair_caps_source(c, "pair_gran.cl");
     c->rotation = 1;
-    if (m.nm == LG_N_HOOKE_HYSTERESIS) { /* the largest overlap, then the shear */
+    const int hyst = m.nm == LG_N_HOOKE_HYSTERESIS, epsd = m.roll >= LG_R_EPSD;
+    if (hyst || epsd) { /* [the largest overlap] the shear [the spring torque] */
         c->eval_row = "gran_model_eval_row";
         c->history = 1;
-        c->hist_n = 4;
+        c->hist_n = hyst + 3 + 3 * epsd;
     } else {
         c->eval = "gran_model_eval";
         c->history = m.tm;

@@ -89,8 +89,8 @@ TEST(gran_parse_errors)
     CHECK_ERROR(BOX "pair_style gran model hertz\n", "expected 'tangential history|no_history'",
                 5);
     CHECK_ERROR(BOX "pair_style gran tangential history\n", "expected 'model hertz", 5);
-    CHECK_ERROR(BOX "pair_style gran model hertz tangential history rolling_friction epsd2\n",
-                "rolling_friction model 'epsd2' is not supported", 5);
+    CHECK_ERROR(BOX "pair_style gran model hertz tangential history rolling_friction luding\n",
+                "rolling_friction model 'luding' is not supported", 5);
     CHECK_ERROR(BOX "pair_style gran model hertz tangential history cohesion washino\n",
                 "cohesion model 'washino' is not supported", 5);
     CHECK_ERROR(BOX "pair_style gran model hertz tangential history limitForce maybe\n",
@@ -146,6 +146,16 @@ TEST(gran_run_errors)
              "fix m6 all property/global coefficientRestitution2 scalar 1\n",
              "pair_style gran model hertz tangential history cohesion sjkr\n", atoms);
     CHECK_ERROR(buf, "defines cohesionEnergyDensity", 16);
+#define ROLL "fix m6 all property/global coefficientRollingFriction peratomtypepair 2 .1 .1 .1 .1\n"
+    snprintf(buf, sizeof buf, "%s%s%srun 0\n", BOX MAT ROLL,
+             "pair_style gran model hertz tangential history rolling_friction epsd\n", atoms);
+    CHECK_ERROR(buf, "defines coefficientRollingViscousDamping", 16);
+    snprintf(buf, sizeof buf, "%s%s%srun 0\n", BOX MAT ROLL
+             "fix m7 all property/global coefficientRollingViscousDamping peratomtypepair 2 "
+             ".3 .3 .3 .3\nfix m8 all property/global rollingStiffness scalar 0.5\n",
+             "pair_style gran model hertz tangential history rolling_friction epsd3\n", atoms);
+    CHECK_ERROR(buf, "rollingStiffness must be >= 0 (>= 1 for SI units), got 0.5", 18);
+#undef ROLL
     snprintf(buf, sizeof buf, "%s%s%s%srun 0\n", BOX,
              "fix m1 all property/global youngsModulus peratomtype 5.e6 2.e7\n"
              "fix m2 all property/global poissonsRatio peratomtype 0.45 0.6\n"
