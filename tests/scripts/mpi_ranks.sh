@@ -381,6 +381,16 @@ check wear_dumps_written '[ "$(ls ref/v_wear_*.vtk | wc -l)" -eq 15 ] && grep -q
 same wear_np2 wear.in 2 ""
 same wear_np3 wear.in 3 ""
 
+# LIGGGHTS's epsd rolling model: 6-REAL history rows of pairs and of primitive
+# walls (planes, a cylinder) and a mesh floor follow their atoms between ranks
+for d in wall_epsd mesh_epsd; do
+    cp "$root/tests/reference/liggghts/floor.stl" .
+    sed '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz tqx tqy tqz modify sort id format float %.17g' \
+        "$root/tests/reference/liggghts/$d.in" > $d.in
+    ref_run $d.in
+    same ${d}_np2 $d.in 2 ""
+done
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
