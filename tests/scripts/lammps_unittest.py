@@ -17,7 +17,9 @@ magnitude, not with itself); a quantity that is zero for every atom and
 segment in LAMMPS must be below 1e-12 in gravel.
 
 A case of cases.LOOSER is held to the looser tolerance given there, with its
-reason printed. cases.py also lists the cases gravel does not run (UNSUPPORTED: the command or
+reason printed. A case of cases.ANALYTIC (no per-atom values in its YAML) is held
+to LAMMPS's analytic check of it instead (the poured heap's angle of repose in
+LAMMPS's band, with every atom poured). cases.py also lists the cases gravel does not run (UNSUPPORTED: the command or
 model each needs), those without reference values (NO_REFERENCE), those
 another test checks (ELSEWHERE) and the supported ones not yet written there
 (TODO); this test prints their counts. By default the cases of cases.SLOW (each over
@@ -107,6 +109,32 @@ def worst_error(got, ref):
     return worst, where
 
 
+def angle_of_repose(frame, v):
+    """LAMMPS's angle_of_repose (test_dem_common.cpp) of a frame, in degrees"""
+    pts = [vals[0:3] for vals in frame.values()]
+    xc = sum(p[0] for p in pts) / len(pts)
+    yc = sum(p[1] for p in pts) / len(pts)
+    zmax = max(p[2] for p in pts)
+    rmax = max(math.hypot(p[0] - xc, p[1] - yc) for p in pts)
+    return math.degrees(math.atan((zmax - v["floor"]) / rmax)) if rmax > 0 else 90.0
+
+
+def check_analytic(case, how, prefix="lammps_unittest_"):
+    """a case of cases.ANALYTIC: its analytic property after the last segment"""
+    kind, v = how
+    got = run(case.name, case.deck, case.segments, files=case.files)
+    ok = got is not None and kind == "angle_of_repose"
+    if ok:
+        frame = got[len(case.segments) - 1]
+        angle = angle_of_repose(frame, v)
+        ok = len(frame) == v["natoms"] and v["aor_lo"] <= angle <= v["aor_hi"]
+        print(f"  {case.name} ({case.source}, LAMMPS {case.version}): {len(frame)} atoms "
+              f"(LAMMPS pours {v['natoms']}), angle of repose {angle:.2f} deg (LAMMPS's band "
+              f"{v['aor_lo']:g} to {v['aor_hi']:g})")
+    print(f"{'PASS' if ok else 'FAIL'} {prefix}{case.name}")
+    return ok
+
+
 def check_case(case, verbose=False, prefix="lammps_unittest_", tol=TOL, why=""):
     got = run(case.name, case.deck, case.segments, files=case.files)
     ok = got is not None
@@ -144,6 +172,9 @@ def main(argv):
             (not names and (every or c.name not in cases.SLOW))]
     failed = 0
     for k, c in enumerate(todo):
+        if c.name in cases.ANALYTIC:
+            failed += not check_analytic(c, cases.ANALYTIC[c.name])
+            continue
         tol, why = cases.LOOSER.get(c.name, (TOL, ""))
         ok, got = check_case(c, verbose, tol=tol, why=why)
         failed += not ok
@@ -151,8 +182,10 @@ def main(argv):
             failed += not sensitive(c, got)
     if not names:
         looser = sum(c.name in cases.LOOSER for c in todo)
-        print(f"  {len(todo)} cases checked ({len(todo) - failed - looser} match to {TOL:g}, "
-              f"{looser} held to a looser tolerance (LOOSER)); "
+        analytic = sum(c.name in cases.ANALYTIC for c in todo)
+        print(f"  {len(todo)} cases checked ({len(todo) - failed - looser - analytic} match to "
+              f"{TOL:g}, {looser} held to a looser tolerance (LOOSER), {analytic} by an "
+              f"analytic check (ANALYTIC)); "
               f"{len(cases.CASES) - len(todo)} slow ones left out (--all runs them); "
               f"{len(cases.ELSEWHERE)} checked by other tests; {len(cases.UNSUPPORTED)} "
               f"unsupported; {len(cases.NO_REFERENCE)} without reference values; "
