@@ -2,7 +2,8 @@
  * (styles/fix/fix_rigid_small.c): copy the members' forces and torques into a
  * compact buffer (member order), and write back the members' positions,
  * velocities and spins computed on the host. idx[k] = device index of
- * member k. Positions arrive relative to the run's origin, split in hi + lo
+ * member k (-1: its atom is another MPI rank's; gathered as zeros, not
+ * written). Positions arrive relative to the run's origin, split in hi + lo
  * parts with SPLIT_POS (xls), as eng_write_positions splits them. */
 
 __kernel void rigid_gather(const int nm, __global const int *idx, __global const REAL *f,
@@ -13,8 +14,8 @@ __kernel void rigid_gather(const int nm, __global const int *idx, __global const
     if (k >= nm)
         return;
     const int i = idx[k];
-    vstore3(vload3(i, f), 2 * k, out);
-    vstore3(hastorque ? vload3(i, torque) : (REAL3)(0), 2 * k + 1, out);
+    vstore3(i >= 0 ? vload3(i, f) : (REAL3)(0), 2 * k, out);
+    vstore3(hastorque && i >= 0 ? vload3(i, torque) : (REAL3)(0), 2 * k + 1, out);
 }
 
 __kernel void rigid_scatter(const int nm, __global const int *idx, __global const REAL *xs,
@@ -26,6 +27,8 @@ __kernel void rigid_scatter(const int nm, __global const int *idx, __global cons
     if (k >= nm)
         return;
     const int i = idx[k];
+    if (i < 0)
+        return;
     if (setx) {
         vstore3(vload3(k, xs), i, x);
 #ifdef SPLIT_POS

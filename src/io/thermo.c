@@ -65,7 +65,7 @@ static double fix_ref_value(struct gravel *g, const char *ref)
     int index, col;
     struct fix *f = fix_ref_check(g, ref, "thermo_style");
     fix_parse_ref(ref, id, &index, &col);
-    return fix_output(g, f, index, col, norm_flag(g), "thermo_style");
+    return fix_output(g, f, index, col, norm_flag(g) ? par_natoms(g) : 0, "thermo_style");
 }
 
 static const struct {
@@ -682,7 +682,7 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
 {
     struct output_state *st = output_state(g);
     /* every rank's atoms (collective: each rank evaluates the same keywords) */
-    long long nall = par_on(g) ? comm_sum_ll(g->atoms.n) : g->atoms.n;
+    long long nall = par_natoms(g);
     double natoms = (double)nall;
     int norm = norm_flag(g) && nall > 0;
     *isint = keywords[k].type == V_BIGINT;
@@ -915,7 +915,9 @@ const char *thermo_line_text(struct gravel *g)
     /* evaluate everything first: computes and variables may raise errors;
      * several ranks: the computes that need every atom after the rest, on
      * every rank's atoms gathered (one gather per line) */
-    int norm = norm_flag(g), gather = 0, late[GR_MAXTHERMO], vars = 0;
+    /* thermo_modify norm divides by every rank's atoms (collective here) */
+    long long norm = norm_flag(g) ? par_natoms(g) : 0;
+    int gather = 0, late[GR_MAXTHERMO], vars = 0;
     for (int i = 0; i < st->ncol; i++) { /* variables too: their keywords, group
                                           * functions and computes see every atom */
         late[i] = par_on(g) && ((st->kind[i] == KIND_COMPUTE && gathers(g, t->col[i])) ||

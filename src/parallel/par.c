@@ -54,6 +54,13 @@ int par_on(const struct gravel *g) { return g->par && g->par->on; }
 int par_gathered(const struct gravel *g) { return g->par && g->par->gathered; }
 int par_nghost(const struct gravel *g) { return par_on(g) ? g->par->nghost : 0; }
 
+long long par_natoms(const struct gravel *g)
+{
+    if (par_on(g) && !par_gathered(g))
+        return comm_sum_ll(g->atoms.n);
+    return g->atoms.n;
+}
+
 /* ---- the processors command ------------------------------------------------------ */
 
 void cmd_processors(struct gravel *g, int argc, char **argv)
@@ -172,7 +179,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "insert/rate/region", "insert/stream",
                                         "check/timestep/gran", "heat/gran",
                                         "heat/gran/conduction", "adapt", "property/atom",
-                                        "heat/flow", "viscous/nonlinear", "momentum", NULL};
+                                        "heat/flow", "viscous/nonlinear", "momentum",
+                                        "rigid/small", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -75,6 +75,9 @@ void par_free(struct gravel *g);
 int par_on(const struct gravel *g);
 /* 1 while g->atoms holds every rank's atoms for an output step (par_gather_begin) */
 int par_gathered(const struct gravel *g);
+/* Every rank's atoms (collective while a decomposed run is active and its
+ * atoms are not gathered): LAMMPS's natoms, as thermo_modify norm divides by. */
+long long par_natoms(const struct gravel *g);
 /* Ghost slots behind the owned atoms on the device (0 when not decomposed). */
 int par_nghost(const struct gravel *g);
 

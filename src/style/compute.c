@@ -316,7 +316,7 @@ void compute_ref_check(struct gravel *g, const char *ref, const char *who)
                  c->size_vector);
 }
 
-double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who)
+double compute_ref_value(struct gravel *g, const char *ref, long long norm, const char *who)
 {
     char id[GR_NAMELEN];
     int index, col;
@@ -339,8 +339,8 @@ double compute_ref_value(struct gravel *g, const char *ref, int norm, const char
         v = compute_vector(g, c)[index - 1];
         ext = c->extvector;
     }
-    if (norm && ext && g->atoms.n > 0)
-        v /= g->atoms.n;
+    if (norm > 0 && ext)
+        v /= (double)norm;
     return v;
 }
 

@@ -123,9 +123,10 @@ double *compute_array_rows(struct gravel *g, struct compute *c, int rows);
 
 /* Value of reference `ref` ("c_ID" scalar, "c_ID[N]" vector element or
  * "c_ID[I][J]" array element: out of range is an error, as LAMMPS),
- * normalized by atom count when `norm` and the value is extensive. Errors
- * name `who` (e.g. "thermo_style"). */
-double compute_ref_value(struct gravel *g, const char *ref, int norm, const char *who);
+ * divided by the atom count `norm` (every rank's: thermo_modify norm; 0:
+ * not normalized) when the value is extensive. Errors name `who` (e.g.
+ * "thermo_style"). */
+double compute_ref_value(struct gravel *g, const char *ref, long long norm, const char *who);
 /* Check that `ref` names an existing compute with the right kind of output
  * (scalar for c_ID, vector with N in range for c_ID[N], array with J in
  * range for c_ID[I][J]). */

@@ -83,7 +83,7 @@ int fix_output_extensive(const struct fix *f, int index, int col)
     return f->extvector >= 0 ? f->extvector : f->extlist[index - 1];
 }
 
-double fix_output(struct gravel *g, struct fix *f, int index, int col, int norm,
+double fix_output(struct gravel *g, struct fix *f, int index, int col, long long norm,
                   const char *who)
 {
     double v;
@@ -95,8 +95,8 @@ double fix_output(struct gravel *g, struct fix *f, int index, int col, int norm,
     } else {
         v = index ? f->style->vector(g, f, index) : f->style->scalar(g, f);
     }
-    if (norm && g->atoms.n > 0 && fix_output_extensive(f, index, col))
-        v /= g->atoms.n;
+    if (norm > 0 && fix_output_extensive(f, index, col))
+        v /= (double)norm;
     return v;
 }
 

@@ -242,9 +242,9 @@ int fix_parse_ref(const char *ref, char *id, int *index, int *col);
  * range). Errors name `who`. */
 struct fix *fix_ref_check(struct gravel *g, const char *ref, const char *who);
 /* Output (index, col) of f (as fix_parse_ref sets them), divided by the
- * atom count when `norm` and that output is extensive. A row beyond the
- * array's current rows is an error naming `who`. */
-double fix_output(struct gravel *g, struct fix *f, int index, int col, int norm,
+ * atom count `norm` (every rank's; 0: not normalized) when that output is
+ * extensive. A row beyond the array's current rows is an error naming `who`. */
+double fix_output(struct gravel *g, struct fix *f, int index, int col, long long norm,
                   const char *who);
 /* 1 when output (index, col) of f is extensive. */
 int fix_output_extensive(const struct fix *f, int index, int col);

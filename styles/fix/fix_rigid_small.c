@@ -51,6 +51,17 @@
  *
  * Restart files keep the bodies (write_restart, read_restart below).
  *
+ * Several MPI ranks (doc/parallel.md): every rank holds every body and
+ * every member's host state and integrates them all the same way; the
+ * bodies are built at the run's start from every atom (prepare, before the
+ * atoms are split). A member's device slot is on the rank that owns its
+ * atom (dev -1 elsewhere): after rigid_gather each rank sends its members'
+ * forces and torques to every rank (in member order), so every rank sums
+ * each body in the same tag order as one process: the same bits on any
+ * number of ranks. rigid_scatter writes the owned members; their ghosts
+ * get x, v, omega from the forward communication. Contact masses cover the
+ * ghost slots too. fix multisphere and pour of rigid molecules: one rank.
+ *
  * Not supported (clear errors): langevin, infile, the custom body ID style,
  * thermostats/barostats of rigid/n?t/small. */
 #include <math.h>
@@ -59,6 +70,7 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "comm.h"
 #include "domain.h"
 #include "device.h"
 #include "error.h"
@@ -68,6 +80,7 @@
 #include "group.h"
 #include "log.h"
 #include "molecule.h"
+#include "par.h"
 #include "rigid_math.h"
 
 #define SINERTIA 0.4 /* solid sphere */
@@ -92,7 +105,9 @@ struct member {
     int body;
     int ext;                /* finite-size sphere (radius > 0): spins with the body */
     int xbox[3];            /* image of the atom relative to its body's (xcmimage) */
-    int dev;                /* device index (valid after post_neighbor) */
+    int dev;                /* device index (valid after post_neighbor; -1: owned by
+                             * another rank) */
+    unsigned mask;          /* its group bits at the run's start (dof) */
     double displace[3];     /* x - xcm in the body frame */
     double x[3];            /* its position as last written to the device (or inserted) */
 };
@@ -226,6 +241,24 @@ static void match_tags(struct gravel *g, struct rigid *r, const int64_t *tags, i
         idx[k] = j < n && tags[p[j]] == t ? p[j] : -1;
     }
     free(p);
+}
+
+/* the member (index into r->m) with this tag, or -1 (binary search) */
+static int member_of_tag(struct gravel *g, struct rigid *r, int64_t tag)
+{
+    sort_members(g, r);
+    int lo = 0, hi = r->nmem - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        int64_t t = r->m[r->order[mid]].tag;
+        if (t == tag)
+            return r->order[mid];
+        if (t < tag)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return -1;
 }
 
 static double prd(const struct gravel *g, int d)
@@ -574,35 +607,98 @@ static void member_buffers(struct gravel *g, struct rigid *r)
     r->dcap = c;
 }
 
-/* After a rebuild: device indices, image shifts (xcm remapped into the box
- * first, LAMMPS pre_neighbor + image_shift) and contact masses. */
+/* Several ranks: every member's image shift from the rank that owns its
+ * atom (records: member index, xbox). */
+static void share_xbox(struct gravel *g, struct rigid *r)
+{
+    int32_t *rec = gr_malloc(g, 4 * sizeof(int32_t) * ((size_t)r->nmem + 1));
+    size_t nrec = 0;
+    for (int k = 0; k < r->nmem; k++)
+        if (r->m[k].dev >= 0) {
+            int32_t *q = rec + 4 * nrec++;
+            q[0] = k;
+            for (int d = 0; d < 3; d++)
+                q[1 + d] = r->m[k].xbox[d];
+        }
+    void *all = NULL;
+    size_t bytes = comm_allgatherv(rec, nrec * 4 * sizeof(int32_t), &all);
+    free(rec);
+    if (bytes == (size_t)-1)
+        gr_error(g, "fix rigid/small: out of memory gathering the members' images");
+    const int32_t *q = all;
+    for (size_t t = 0; t < bytes / (4 * sizeof(int32_t)); t++, q += 4)
+        for (int d = 0; d < 3; d++)
+            r->m[q[0]].xbox[d] = q[1 + d];
+    free(all);
+}
+
+/* Several ranks: every member's force and torque (r->mout, member order)
+ * from the rank that owns its atom. */
+static void share_forces(struct gravel *g, struct rigid *r)
+{
+    const size_t w = 7; /* member index (as a double), f, torque */
+    double *rec = gr_malloc(g, w * sizeof(double) * ((size_t)r->nmem + 1));
+    size_t nrec = 0;
+    for (int k = 0; k < r->nmem; k++)
+        if (r->m[k].dev >= 0) {
+            double *q = rec + w * nrec++;
+            q[0] = k;
+            memcpy(q + 1, r->mout + 6 * (size_t)k, 6 * sizeof(double));
+        }
+    void *all = NULL;
+    size_t bytes = comm_allgatherv(rec, nrec * w * sizeof(double), &all);
+    free(rec);
+    if (bytes == (size_t)-1)
+        gr_error(g, "fix rigid/small: out of memory gathering the members' forces");
+    const double *q = all;
+    for (size_t t = 0; t < bytes / (w * sizeof(double)); t++, q += w)
+        memcpy(r->mout + 6 * (size_t)q[0], q + 1, 6 * sizeof(double));
+    free(all);
+}
+
+/* After a rebuild: device indices of the owned members (-1: another
+ * rank's), image shifts (xcm remapped into the box first, LAMMPS
+ * pre_neighbor + image_shift) and contact masses (owned and ghost slots). */
 static void post_neighbor(struct gravel *g, struct fix *f)
 {
     struct rigid *r = f->data;
     struct engine *e = g->eng;
     struct dev_atoms *s = eng_atoms(g);
-    int n = s->n;
+    int n = s->n, nall = n + par_nghost(g);
     if (r->nmem == 0) {
         r->mapped = 1;
         return;
     }
-    scratch(g, r, n);
-    eng_read(g, s->tag, 0, (size_t)n * sizeof(int64_t), r->htag);
+    scratch(g, r, nall);
+    eng_read(g, s->tag, 0, (size_t)nall * sizeof(int64_t), r->htag);
     eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
-    int *idx = hold_ints(g, r, (size_t)r->nmem + 1);
-    match_tags(g, r, r->htag, n, idx);
     for (int ib = 0; ib < r->nbody; ib++)
         domain_remap(g, r->b[ib].xcm, r->b[ib].image);
-    for (int k = 0; k < r->nmem; k++) {
-        struct member *m = &r->m[r->order[k]];
-        if (idx[k] < 0)
-            gr_error(g, "fix rigid/small: rigid body atom %lld is missing at step %lld (lost?)",
-                     (long long)m->tag, (long long)g->step);
-        m->dev = idx[k];
+    for (int k = 0; k < r->nmem; k++)
+        r->m[k].dev = -1;
+    long long owned = 0;
+    for (int i = 0; i < n; i++) {
+        int k = member_of_tag(g, r, r->htag[i]);
+        if (k < 0)
+            continue;
+        struct member *m = &r->m[k];
+        m->dev = i;
         for (int d = 0; d < 3; d++)
-            m->xbox[d] = r->himg[3 * m->dev + d] - r->b[m->body].image[d];
+            m->xbox[d] = r->himg[3 * i + d] - r->b[m->body].image[d];
+        owned++;
     }
-    release_ints(r);
+    if (par_on(g)) {
+        share_xbox(g, r);
+        owned = comm_sum_ll(owned);
+    }
+    if (owned != r->nmem) {
+        for (int k = 0; k < r->nmem && !par_on(g); k++)
+            if (r->m[r->order[k]].dev < 0)
+                gr_error(g, "fix rigid/small: rigid body atom %lld is missing at step %lld "
+                            "(lost?)", (long long)r->m[r->order[k]].tag, (long long)g->step);
+        gr_error(g, "fix rigid/small: %lld of the %d rigid body atoms are missing at step %lld "
+                    "(lost?)", (long long)(r->nmem - owned), r->nmem, (long long)g->step);
+    }
     member_buffers(g, r);
     int *di = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
     for (int k = 0; k < r->nmem; k++)
@@ -610,16 +706,20 @@ static void post_neighbor(struct gravel *g, struct fix *f)
     eng_write(g, r->d_idx, 0, (size_t)r->nmem * sizeof(int), di);
     free(di);
     /* contact masses: the body's for members, the atom's for the others */
-    if ((size_t)e->cap > r->cmass_cap || !r->cmass) {
+    size_t cap = (size_t)(e->cap > nall ? e->cap : nall);
+    if (cap > r->cmass_cap || !r->cmass) {
         if (r->cmass)
             clReleaseMemObject(r->cmass);
-        r->cmass = eng_alloc(g, (size_t)e->cap * e->rsz, "rigid body contact masses");
-        r->cmass_cap = (size_t)e->cap;
+        r->cmass = eng_alloc(g, cap * e->rsz, "rigid body contact masses");
+        r->cmass_cap = cap;
     }
-    eng_read_reals(g, s->rmass, (size_t)n, r->hm);
-    for (int k = 0; k < r->nmem; k++)
-        r->hm[r->m[k].dev] = r->b[r->m[k].body].mass;
-    eng_write_reals(g, r->cmass, (size_t)n, r->hm);
+    eng_read_reals(g, s->rmass, (size_t)nall, r->hm);
+    for (int i = 0; i < nall; i++) {
+        int k = member_of_tag(g, r, r->htag[i]);
+        if (k >= 0)
+            r->hm[i] = r->b[r->m[k].body].mass;
+    }
+    eng_write_reals(g, r->cmass, (size_t)nall, r->hm);
     e->contact_mass = r->cmass;
     r->mapped = 1;
 }
@@ -714,7 +814,7 @@ static void set_xv(struct gravel *g, struct fix *f, int setx)
         scratch(g, r, n);
         eng_read(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
         for (int i = 0; i < r->nmem; i++)
-            for (int q = 0; q < 3; q++)
+            for (int q = 0; q < 3 && r->m[i].dev >= 0; q++)
                 r->himg[3 * r->m[i].dev + q] = r->b[r->m[i].body].image[q] + r->m[i].xbox[q];
         eng_write(g, s->image, 0, 3 * (size_t)n * sizeof(int), r->himg);
     }
@@ -749,6 +849,8 @@ static void forces_and_torques(struct gravel *g, struct fix *f, int gravity)
     eng_arg_mem(g, k, 5, r->d_out);
     eng_launch(g, k, (size_t)r->nmem);
     eng_read_reals(g, r->d_out, 6 * (size_t)r->nmem, r->mout);
+    if (par_on(g))
+        share_forces(g, r);
     for (int ib = 0; ib < r->nbody; ib++) {
         memset(r->b[ib].fcm, 0, sizeof r->b[ib].fcm);
         memset(r->b[ib].torque, 0, sizeof r->b[ib].torque);
@@ -808,24 +910,6 @@ static void init(struct gravel *g, struct fix *f)
         gr_warn(g, "Gravity may not be correctly applied to rigid bodies if they consist of "
                    "overlapped particles");
     }
-    unsigned integ = 0; /* groups other integrators move */
-    for (int i = 0; i < g->styles.nfix; i++) {
-        struct fix *o = g->styles.fix[i];
-        if (o != f && (!strcmp(o->style->name, "nve") || !strcmp(o->style->name, "nve/sphere")))
-            integ |= o->groupbit;
-    }
-    if (integ && r->nmem) {
-        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
-        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
-        int k;
-        for (k = 0; k < r->nmem; k++)
-            if (idx[k] >= 0 && (g->atoms.mask[idx[k]] & integ))
-                break;
-        free(idx);
-        if (k < r->nmem)
-            gr_warn(g, "fix nve or nve/sphere also integrates atoms of the rigid bodies of fix "
-                       "%s", f->id);
-    }
     if (r->ms) {
         gr_warn(g, "Energy calculated for multisphere particles is currently not correct");
         /* LIGGGHTS applies gravity to a clump at its centre of mass: the members
@@ -847,21 +931,52 @@ static void init(struct gravel *g, struct fix *f)
     r->k_gather = eng_kernel(g, "rigid_gather");
     r->k_scatter = eng_kernel(g, "rigid_scatter");
     r->dcap = 0; /* device buffers of an earlier run: regrown at the first map */
-    if (r->nmem) { /* positions: the host atoms are the device's now */
-        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
-        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
-        for (int k = 0; k < r->nmem; k++)
-            if (idx[k] >= 0)
-                memcpy(r->m[r->order[k]].x, g->atoms.x + 3 * idx[k], 3 * sizeof(double));
-        free(idx);
-    }
     r->dtv = g->dt;
     r->dtf = 0.5 * g->dt;
     r->dtq = 0.5 * g->dt;
+    r->mapped = 0;
+}
+
+/* At every run's start, while the host holds every atom (before a run on
+ * several ranks splits them): the members' positions and group bits, and
+ * the bodies recomputed from their atoms (unless `reinit no` after the
+ * first run, or fix multisphere). */
+static void prepare(struct gravel *g, struct fix *f)
+{
+    struct rigid *r = f->data;
+    if (comm_size() > 1 && r->ms)
+        par_refuse(g, "fix multisphere (clumps)");
+    unsigned integ = 0; /* groups other integrators move */
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *o = g->styles.fix[i];
+        if (o != f && (!strcmp(o->style->name, "nve") || !strcmp(o->style->name, "nve/sphere")))
+            integ |= o->groupbit;
+    }
+    if (integ && r->nmem) {
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        int k;
+        for (k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0 && (g->atoms.mask[idx[k]] & integ))
+                break;
+        free(idx);
+        if (k < r->nmem)
+            gr_warn(g, "fix nve or nve/sphere also integrates atoms of the rigid bodies of fix "
+                       "%s", f->id);
+    }
+    if (r->nmem) { /* positions: the host atoms are the device's at the upload */
+        int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
+        match_tags(g, r, g->atoms.tag, g->atoms.n, idx);
+        for (int k = 0; k < r->nmem; k++)
+            if (idx[k] >= 0) {
+                memcpy(r->m[r->order[k]].x, g->atoms.x + 3 * idx[k], 3 * sizeof(double));
+                r->m[r->order[k]].mask = g->atoms.mask[idx[k]];
+            }
+        free(idx);
+    }
     if (r->nbody && !r->ms && (r->reinit || !r->setupflag))
         setup_bodies(g, r);
     r->setupflag = 1;
-    r->mapped = 0;
 }
 
 static void setup(struct gravel *g, struct fix *f)
@@ -998,6 +1113,7 @@ int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule 
         struct member *m = new_member(g, r);
         int k = (int)(a->tag[i] - tagprev - 1);
         m->tag = a->tag[i];
+        m->mask = a->mask[i];
         m->body = body;
         m->ext = mol->radius != NULL;
         for (int q = 0; q < 3; q++) {
@@ -1103,16 +1219,12 @@ static double dof(struct gravel *g, struct fix *f, unsigned groupbit)
     if (r->nbody == 0)
         return 0;
     int (*c)[3] = gr_calloc(g, (size_t)r->nbody, sizeof *c);
-    struct atoms *a = &g->atoms;
-    int *idx = gr_calloc(g, (size_t)r->nmem + 1, sizeof(int));
-    match_tags(g, r, a->tag, a->n, idx);
-    for (int k = 0; k < r->nmem; k++) {
-        const struct member *m = &r->m[r->order[k]];
+    for (int k = 0; k < r->nmem; k++) { /* the group bits of the run's start (prepare) */
+        const struct member *m = &r->m[k];
         c[m->body][2]++;
-        if (idx[k] >= 0 && (a->mask[idx[k]] & groupbit))
+        if (m->mask & groupbit)
             c[m->body][m->ext && r->extended ? 1 : 0]++;
     }
-    free(idx);
     double n = 0;
     for (int ib = 0; ib < r->nbody; ib++) {
         if (c[ib][0] + c[ib][1] != c[ib][2])
@@ -1244,7 +1356,7 @@ static void destroy(struct fix *f)
 
 /* the hooks fix rigid/small and fix multisphere share */
 #define RIGID_HOOKS                                                                          \
-    .flags = FIX_STORES_IDS, .init = init, .setup = setup,                                   \
+    .flags = FIX_STORES_IDS, .prepare = prepare, .init = init, .setup = setup,               \
     .initial_integrate = initial_integrate, .final_integrate = final_integrate,              \
     .post_neighbor = post_neighbor, .dof = dof, .write_restart = write_restart,              \
     .read_restart = read_restart, .modify_param = modify_param, .reset_step = reset_step,     \

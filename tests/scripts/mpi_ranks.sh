@@ -391,6 +391,19 @@ for d in wall_epsd mesh_epsd; do
     same ${d}_np2 $d.in 2 ""
 done
 
+# fix rigid/small: bodies spanning sub-domains (rigid_bounce: an L and a dimer
+# among free spheres falling onto a wall, lj units so thermo's c_ values are
+# divided by every rank's atoms); each rank sums every body's members in tag order
+sed -e 's/^dump_modify     d format float %.17g/dump_modify     d format float %.17g sort id/' \
+    -e 's/^thermo_style    custom step atoms c_kk c_rot/&\nthermo_modify   format float %.17g/' \
+    -e '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
+    "$root/tests/reference/rigid/rigid_bounce.in" > rigid.in
+ref_run rigid.in
+check rigid_thermo_rows '[ "$(rows ref.out | wc -l)" -ge 7 ] && grep -q "format float" rigid.in'
+same rigid_np2 rigid.in 2 ""
+same rigid_np3 rigid.in 3 ""
+same rigid_np4_slabs rigid.in 4 "" "4 1 1"
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
