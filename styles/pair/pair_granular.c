@@ -152,15 +152,79 @@ double granular_tsuji(double e, int lammps2021)
  * for the normal, damping and tangential models with this message. */
 static void refuse_known(struct gravel *g, const char *who, const char *what, const char *s)
 {
-    static const char *const later[] = {"mdr", "epa/linear", "epa/nonlinear", NULL};
+    static const char *const later[] = {"epa/linear", "epa/nonlinear", NULL};
     if (!strcmp(s, "none"))
         gr_error(g, "%s: Must specify %s granular model (LAMMPS refuses '%s' for the normal, "
                     "damping and tangential models)", who, what, s);
     if (in_list(s, later))
-        gr_error(g, "%s: %s model '%s' of LAMMPS's pair granular is not supported by gravel%s",
-                 who, what, s,
-                 !strcmp(s, "mdr") ? " (its large-deformation bookkeeping needs LAMMPS's fix "
-                                     "GRANULAR/MDR per-atom radius updates)" : "");
+        gr_error(g, "%s: %s model '%s' of LAMMPS's pair granular is not supported by gravel",
+                 who, what, s);
+}
+
+/* `mdr E nu Y gamma psi_b eta_n0` (today's LAMMPS GranSubModNormalMDR; the
+ * sixth value was a restitution coefficient before LAMMPS's February 2025
+ * patch and is now the damping coefficient eta_n0 of `damping mdr`): read
+ * and checked with LAMMPS's own messages (coeffs_to_local). Returns the
+ * number of words taken. */
+static int mdr_normal(struct gravel *g, char **argv, int argc, int i, const char *who)
+{
+    static const char *const what[] = {"Young's modulus E", "Poisson's ratio nu",
+                                       "yield stress Y", "effective surface energy gamma",
+                                       "critical confinement ratio psi_b",
+                                       "damping coefficient eta_n0"};
+    double c[6];
+    for (int k = 0; k < 6; k++)
+        c[k] = num(g, argv, argc, i + 1 + k, what[k], who);
+    if (c[0] <= 0)
+        gr_error(g, "%s: Illegal MDR normal model, Young's modulus must be greater than 0", who);
+    if (c[1] < 0 || c[1] > 0.5)
+        gr_error(g, "%s: Illegal MDR normal model, Poisson's ratio must be between 0 and 0.5",
+                 who);
+    if (c[2] < 0)
+        gr_error(g, "%s: Illegal MDR normal model, yield stress must be greater than or equal "
+                    "to 0", who);
+    if (c[3] < 0)
+        gr_error(g, "%s: Illegal MDR normal model, effective surface energy must be greater "
+                    "than or equal to 0", who);
+    if (c[4] < 0 || c[4] > 1)
+        gr_error(g, "%s: Illegal MDR normal model, psi_b must be between 0 and 1.0", who);
+    if (c[5] < 0)
+        gr_error(g, "%s: Illegal MDR normal model, damping coefficent must be greater than or "
+                    "equal to 0", who);
+    return 7;
+}
+
+/* `damping mdr d_type` (GranSubModDampingMDR): LAMMPS truncates d_type to an
+ * integer and takes 1 (eta_n0 sqrt(m_eff 2 E_eff a)) or 2 (eta_n0). Returns
+ * the number of words taken. */
+static int mdr_damping(struct gravel *g, char **argv, int argc, int i, const char *who)
+{
+    const double d = num(g, argv, argc, i + 2, "damping type (damping mdr)", who);
+    if (!(fabs(d) < 1e9) || ((int)d != 1 && (int)d != 2))
+        gr_error(g, "%s: Illegal MDR damping model, damping type must an integer equal to 1 or 2",
+                 who);
+    return 3;
+}
+
+/* A line with the mdr normal model or damping mdr, once LAMMPS's own checks
+ * have passed: LAMMPS pairs them only with each other (the damping models'
+ * init), then gravel refuses the model (doc/styles/pair_granular_normal.md,
+ * "mdr"): its force reads the per-atom state of LAMMPS's fix granular/mdr
+ * (apparent radius grown by plastic flow, free-area ratio psi, bulk
+ * response, contact penalties), which gravel does not keep, and without it
+ * the plastic branch is not LAMMPS's mdr. */
+static void mdr_refuse(struct gravel *g, int normal_mdr, int damping_mdr, const char *who)
+{
+    if (normal_mdr && !damping_mdr)
+        gr_error(g, "%s: Only damping mdr may be used with the mdr normal model", who);
+    if (damping_mdr && !normal_mdr)
+        gr_error(g, "%s: Damping mdr can only be used with mdr normal model", who);
+    if (normal_mdr)
+        gr_error(g, "%s: normal model 'mdr' of LAMMPS's pair granular is not supported by "
+                    "gravel: its force reads the per-atom state of LAMMPS's fix granular/mdr "
+                    "(apparent radius grown by plastic flow, free surface ratio psi and the "
+                    "bulk response, contact penalties), which gravel does not keep "
+                    "(doc/styles/pair_granular_normal.md)", who);
 }
 
 double granular_coeff_restitution(double e, int nm)
@@ -245,6 +309,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     o.cutoff = -1;
     o.c2021 = g->opt.lammps2021;
     int kt_null = 0;
+    int normal_mdr = 0, damping_mdr = 0;
     int i = 0;
     while (i < argc) {
         const char *k = argv[i];
@@ -252,7 +317,11 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             break;
         int m = lookup(k, nname, 5);
         refuse_known(g, who, "normal", k);
-        if (m >= 0) {
+        if (!strcmp(k, "mdr")) {
+            normal_mdr = 1;
+            i += mdr_normal(g, argv, argc, i, who);
+        } else if (m >= 0) {
+            normal_mdr = 0;
             o.nm = m;
             o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E", who);
             o.damp = num(g, argv, argc, i + 2, "normal damping", who);
@@ -265,6 +334,12 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             i += m <= GR_N_HERTZ ? 3 : m == GR_N_HERTZ_MATERIAL ? 4 : 5;
         } else if (!strcmp(k, "damping")) {
             arg_need(g, argc, i, 1, k);
+            if (!strcmp(argv[i + 1], "mdr")) {
+                damping_mdr = 1;
+                i += mdr_damping(g, argv, argc, i, who);
+                continue;
+            }
+            damping_mdr = 0;
             o.dm = lookup(argv[i + 1], dname, 5);
             refuse_known(g, who, "damping", argv[i + 1]);
             if (o.dm < 0)
@@ -380,8 +455,9 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                      who, k, allow_cutoff ? "cutoff, " : "");
         }
     }
-    if (o.nm < 0 || o.tm < 0)
+    if ((o.nm < 0 && !normal_mdr) || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
+    mdr_refuse(g, normal_mdr, damping_mdr, who);
     check_ranges(g, &o, kt_null, who);
     o.e = o.damp;
     if (o.dm == GR_D_TSUJI)

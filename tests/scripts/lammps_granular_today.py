@@ -21,8 +21,9 @@ lammps2021:
   that fix restored, so it matches with and without -compat lammps2021.
 
 Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
-it), mdr, damping mdr, epa/linear, epa/nonlinear and synchronized_verlet
-each give an error naming them; `none` as normal, damping or tangential
+it), mdr (checked first as LAMMPS checks it: tests/scripts/lammps_granular_mdr.py),
+damping mdr without it (LAMMPS's own message), epa/linear, epa/nonlinear
+and synchronized_verlet each give an error naming them; `none` as normal, damping or tangential
 model gives LAMMPS's own "Must specify ... granular model", a NULL kt of
 mindlin_classic LAMMPS's "Illegal linear tangential model" (check_refusals;
 the classic models themselves: tests/scripts/pair_granular_classic.py).
@@ -152,7 +153,7 @@ REFUSALS = (
     ("epa_nonlinear", "pair_coeff * * epa/nonlinear 1 2 3 4 tangential linear_history 1 1 0.5",
      (), "normal model 'epa/nonlinear' of LAMMPS's pair granular is not supported"),
     ("damping_mdr", "pair_coeff * * hooke 1 1 damping mdr 1 tangential linear_history 1 1 0.5",
-     (), "damping model 'mdr' of LAMMPS's pair granular is not supported"),
+     (), "Damping mdr can only be used with mdr normal model"),
     ("classic_kt_null", "pair_coeff * * hertz/material 1e4 0.5 0.3 tangential mindlin_classic "
      "NULL 1 0.5", (), "Illegal linear tangential model"),
     ("normal_none", "pair_coeff * * none tangential linear_history 1 1 0.5", (),
