@@ -760,21 +760,25 @@ static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle
         gr_error(g, "%s %s: Multi-sphere particle inserted: You have to use exactly one fix "
                     "multisphere.", ((struct insert *)f->data)->ops->who, f->id);
     struct atoms *a = &g->atoms;
-    double rot[3][3], x[3], xgeom[3];
+    double rot[3][3], xgeom[3];
     rm_quat_to_mat(p->quat, rot);
     int first = a->n;
     int64_t tagprev = *tag;
+    double *xs = gr_malloc(g, 3 * sizeof(double) * (size_t)c->nspheres);
+    const unsigned mask = 1u | p->groupbit | f->groupbit;
     for (int k = 0; k < c->nspheres; k++) {
+        double *x = xs + 3 * k;
         mstemplate_sphere(c, rot, p->x, k, x);
         int i = atoms_add(g, ++*tag, m->type[k], x, m->radius[k], m->rmass[k]);
-        a->mask[i] = 1u | p->groupbit | f->groupbit;
+        a->mask[i] = mask;
         for (int d = 0; d < 3; d++)
             a->v[3 * i + d] = vel[d];
     }
     for (int d = 0; d < 3; d++) /* the geometric centre: rot (center - com) + xcm */
         xgeom[d] = p->x[d] + rot[d][0] * (m->center[0] - m->com[0]) +
                    rot[d][1] * (m->center[1] - m->com[1]) + rot[d][2] * (m->center[2] - m->com[2]);
-    int body = rigid_small_add_body(g, ms, m, first, tagprev, xgeom, vel, p->quat);
+    int body = rigid_small_add_body(g, ms, m, first, tagprev, xs, 3, mask, xgeom, vel, p->quat);
+    free(xs);
     rigid_small_hold(ms, body, c->fflag, c->tflag);
 }
 

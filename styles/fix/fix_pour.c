@@ -760,7 +760,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
             vnew[1] = -sqrt(p->vy * p->vy + 2.0 * p->grav * (c[1] - p->hi_cur));
             vnew[2] = 0.0;
         }
-        int top = dim == 3 ? 2 : 1;
+        int top = dim == 3 ? 2 : 1, placed = 0;
         for (int m = 0; m < natom; m++) {
             const double *q = p->coords + 4 * m;
             int inbox = 1, above = q[top] >= d->hi[top];
@@ -770,6 +770,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
                 if (k != top)
                     above = above && in;
             }
+            placed += inbox || above;
             if (!(inbox || above) || !par_owns(g, q)) /* several ranks: the brick's owner */
                 continue;
             double rad = q[3];
@@ -783,11 +784,12 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
                 a->image[3 * n + k] = p->imgs[3 * m + k];
             }
         }
-        if (p->rigid) {
-            if (a->n - first != natom)
+        if (p->rigid) { /* every rank adds the body (its members on their owners) */
+            if (placed != natom)
                 gr_error(g, "fix pour %s: a rigid molecule was inserted partly outside the box "
                             "(step %lld)", f->id, (long long)g->step);
-            rigid_small_add_body(g, p->rigid, p->mol, first, maxtag, c, vnew, quat);
+            rigid_small_add_body(g, p->rigid, p->mol, first, maxtag, p->coords, 4,
+                                 1u | f->groupbit, c, vnew, quat);
         }
         maxtag += natom;
         if (a->molecule_flag)
@@ -816,8 +818,6 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     if (f->next_reneighbor != g->step)
         return;
     if (p->mol) {
-        if (par_on(g) && p->rigid)
-            par_refuse(g, "fix pour of rigid molecules");
         run_sync_host(g);
         pre_exchange_mol(g, f);
         return;

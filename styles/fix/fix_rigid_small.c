@@ -1102,24 +1102,26 @@ static void final_integrate(struct gravel *g, struct fix *f)
 }
 
 int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
-                         int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                         int first, int64_t tagprev, const double *xs, int xstride,
+                         unsigned mask, const double xgeom[3], const double vcm[3],
                          const double quat[4])
 {
     struct rigid *r = f->data;
     struct atoms *a = &g->atoms;
     int body = r->nbody;
     struct rbody *b = new_body(g, r);
-    for (int i = first; i < first + mol->natoms; i++) {
+    for (int k = 0; k < mol->natoms; k++) {
         struct member *m = new_member(g, r);
-        int k = (int)(a->tag[i] - tagprev - 1);
-        m->tag = a->tag[i];
-        m->mask = a->mask[i];
+        m->tag = tagprev + 1 + k;
+        m->mask = mask;
         m->body = body;
         m->ext = mol->radius != NULL;
         for (int q = 0; q < 3; q++) {
             m->displace[q] = mol->dxbody[3 * k + q];
-            m->x[q] = a->x[3 * i + q];
+            m->x[q] = xs[(size_t)xstride * k + q];
         }
+    }
+    for (int i = first; i < a->n; i++) { /* the members this rank holds */
         a->mask[i] |= r->member_bits;
         if (r->ms)
             a->mol[i] = body + 1; /* LIGGGHTS: the body's ID */

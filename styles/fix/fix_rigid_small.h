@@ -11,15 +11,18 @@ struct molecule;
 /* The `mol` template of a fix rigid/small (NULL without one, or for other
  * fixes). */
 struct molecule *rigid_small_template(const struct fix *f);
-/* A new body of template `mol` for fix f (rigid/small or multisphere): the
- * host atoms first .. first + mol->natoms - 1 (tags tagprev + 1 ...),
- * inserted with the template's geometric centre at xgeom, rotated by quat
- * about it, moving with vcm (LAMMPS set_molecule). Its mass, centre of mass
- * and principal moments are the template's. fix multisphere also gives the
- * atoms the body's ID as molecule ID and its clump group. Returns the body's
- * index. */
+/* A new body of template `mol` for fix f (rigid/small or multisphere): its
+ * members are the template's atoms, tags tagprev + 1 ..., at the positions
+ * xs (member k at xs + k xstride), of group bits mask; the host atoms of
+ * them this rank holds are first .. g->atoms.n - 1 (all of them on one
+ * rank; on several, the owned ones). Inserted with the template's
+ * geometric centre at xgeom, rotated by quat about it, moving with vcm
+ * (LAMMPS set_molecule); its mass, centre of mass and principal moments are
+ * the template's. fix multisphere also gives the atoms the body's ID as
+ * molecule ID and its clump group. Returns the body's index. */
 int rigid_small_add_body(struct gravel *g, struct fix *f, const struct molecule *mol,
-                         int first, int64_t tagprev, const double xgeom[3], const double vcm[3],
+                         int first, int64_t tagprev, const double *xs, int xstride,
+                         unsigned mask, const double xgeom[3], const double vcm[3],
                          const double quat[4]);
 /* LIGGGHTS's fflag/tflag of body `body` (every body when < 0): 0 where a
  * component of its velocity (fflag) or angular momentum (tflag) is never
