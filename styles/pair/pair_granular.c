@@ -1,6 +1,6 @@
 /* pair_granular.c - `pair_style granular [cutoff]` with `pair_coeff I J
  * normal-model args [damping model] tangential model args [rolling sds ...]
- * [twisting marshall | sds ...] [limit_damping] [cutoff c]`: LAMMPS's
+ * [twisting marshall | sds ...] [limit_damping] [synchronized_verlet] [cutoff c]`: LAMMPS's
  * pair granular with its argument conversions and mixing, as today's LAMMPS
  * computes it (GranularModel, gran_sub_mod_*.cpp; tsuji's sqrt(2), per
  * sub-model mixing, the /static tangential models) and, with -compat
@@ -22,6 +22,10 @@
  * sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) (hertz, hertz/material; refused with
  * dmt, jkr), which the kernel multiplies by sqrt(m Fne / delta); two such
  * types mix as today's LAMMPS does (mix_today) even with -compat lammps2021.
+ *
+ * synchronized_verlet (today's LAMMPS): p[GR_SYNC], the half-step normal
+ * in the kernel; refused with linear_nohistory (GranularModel::init) and
+ * under -compat lammps2021; a mixed pair runs without it (mix_coeffs).
  *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
