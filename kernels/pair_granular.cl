@@ -11,6 +11,8 @@
  *       GRN_HAS_JKR, GRN_HAS_DMT say the same to the preprocessor.
  *   GR_TANG_HISTORY  some pair has a tangential model with history (LAMMPS
  *       then runs every pair through the history branch, linear_nohistory too)
+ *   GR_SYNC_USED  some pair has synchronized_verlet (p[GR_SYNC]; without it
+ *       the half-step normal is not compiled)
  *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH, GR_H_DYN  offsets in the
  *       history row of the contact radius of the last step (mindlin_rescale),
  *       the rolling displacement (3), the twist angle, the JKR touch flag, the
@@ -143,13 +145,48 @@ static inline void gr_frame(REAL *h, REAL3 n)
     h[2] *= s;
 }
 
+/* gr_frame of a velocity (synchronized_verlet's damping velocity) */
+static inline REAL3 gr_frame3(const REAL3 v, const REAL3 n)
+{
+    REAL t[3] = {v.x, v.y, v.z};
+    gr_frame(t, n);
+    return (REAL3)(t[0], t[1], t[2]);
+}
+
+/* synchronized_verlet (today's LAMMPS, GranularModel::calculate_forces for a
+ * pair; Vyas et al 2025): when forces are computed the positions are at the
+ * full step and the velocities at the half step, so the contact is taken at
+ * the half step: the normal *n of del - dt/2 vr (normalized as LAMMPS's
+ * norm3: times 1/|.|), and the normal rate *vn, the contact-point velocity
+ * *vtr (vr - vn n + n x w) on it. Every law term then uses this normal, the
+ * force direction and the torques too; the full-step normal c->n serves the
+ * second history projection (grt_history, grr_sds). */
+static inline void gr_half_step(const struct contact *c, REAL3 *n, REAL *vn, REAL3 *vtr)
+{
+    const REAL h = (REAL)0.5 * c->dt;
+    const REAL3 d = (REAL3)(c->del.x - h * c->vr.x, c->del.y - h * c->vr.y,
+                            c->del.z - h * c->vr.z);
+    const REAL inv = (REAL)1 / sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    *n = (REAL3)(d.x * inv, d.y * inv, d.z * inv);
+    *vn = c->vr.x * n->x + c->vr.y * n->y + c->vr.z * n->z;
+    const REAL3 vt = (REAL3)(c->vr.x - *vn * n->x, c->vr.y - *vn * n->y,
+                             c->vr.z - *vn * n->z);
+    const REAL3 w = c->w;
+    *vtr = (REAL3)(vt.x - (w.y * n->z - w.z * n->y), vt.y - (w.z * n->x - w.x * n->z),
+                   vt.z - (w.x * n->y - w.y * n->x));
+}
+
 /* linear_history, mindlin, mindlin_rescale (displacement history, force =
  * -k s - g v) and mindlin/force, mindlin_rescale/force (elastic-force
  * history, force = s - g v); k = kt (linear) or kt a (mindlin). Coulomb
- * limit Fscrit with the history reset consistently. */
+ * limit Fscrit with the history reset consistently. sync (synchronized_verlet,
+ * n the half-step normal): the updated history is projected a second time,
+ * onto the full-step normal nf, by the same test, and when that projection
+ * happens the damping velocity is the contact velocity rotated the same way
+ * (LAMMPS's vtr2, in the force and in the reset history). */
 static inline REAL3 grt_history(const int used, const int ha, int model, REAL *h, REAL3 n,
                                 REAL3 vtr, REAL k, REAL damp_t, REAL Fscrit, REAL a,
-                                const struct contact *c)
+                                const struct contact *c, const int sync, const REAL3 nf)
 {
     const int force_hist = GR_IS(used, GR_T_MINDLIN_FORCE, model) ||
                            GR_IS(used, GR_T_MINDLIN_RESCALE_FORCE, model) ||
@@ -162,10 +199,11 @@ static inline REAL3 grt_history(const int used, const int ha, int model, REAL *h
         h[1] *= factor;
         h[2] *= factor;
     }
+    int frame = 0;
     if (c->shearupdate) {
         const REAL rsht = h[0] * n.x + h[1] * n.y + h[2] * n.z;
-        const int frame = force_hist ? fabs(rsht) > (REAL)1e-10 * Fscrit
-                                     : fabs(rsht) * k > (REAL)1e-10 * Fscrit;
+        frame = force_hist ? fabs(rsht) > (REAL)1e-10 * Fscrit
+                           : fabs(rsht) * k > (REAL)1e-10 * Fscrit;
         if (frame)
             gr_frame(h, n);
         if (!force_hist) {
@@ -179,25 +217,33 @@ static inline REAL3 grt_history(const int used, const int ha, int model, REAL *h
         }
         if (rescale)
             h[ha] = a;
+        if (sync) {
+            const REAL rs2 = h[0] * nf.x + h[1] * nf.y + h[2] * nf.z;
+            frame = force_hist ? fabs(rs2) > (REAL)1e-10 * Fscrit
+                               : fabs(rs2) * k > (REAL)1e-10 * Fscrit;
+            if (frame)
+                gr_frame(h, nf);
+        }
     }
+    const REAL3 vd = sync && frame ? gr_frame3(vtr, nf) : vtr; /* the damping velocity */
     REAL3 fs;
     if (!force_hist)
-        fs = (REAL3)(-k * h[0] - damp_t * vtr.x, -k * h[1] - damp_t * vtr.y,
-                     -k * h[2] - damp_t * vtr.z);
+        fs = (REAL3)(-k * h[0] - damp_t * vd.x, -k * h[1] - damp_t * vd.y,
+                     -k * h[2] - damp_t * vd.z);
     else
-        fs = (REAL3)(h[0] - damp_t * vtr.x, h[1] - damp_t * vtr.y, h[2] - damp_t * vtr.z);
+        fs = (REAL3)(h[0] - damp_t * vd.x, h[1] - damp_t * vd.y, h[2] - damp_t * vd.z);
     const REAL fsm = sqrt(fs.x * fs.x + fs.y * fs.y + fs.z * fs.z);
     if (fsm > Fscrit) {
         const REAL shrmag = sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
         if (shrmag != (REAL)0) {
             if (!force_hist) {
-                h[0] = (REAL)-1.0 / k * (Fscrit * fs.x / fsm + damp_t * vtr.x);
-                h[1] = (REAL)-1.0 / k * (Fscrit * fs.y / fsm + damp_t * vtr.y);
-                h[2] = (REAL)-1.0 / k * (Fscrit * fs.z / fsm + damp_t * vtr.z);
+                h[0] = (REAL)-1.0 / k * (Fscrit * fs.x / fsm + damp_t * vd.x);
+                h[1] = (REAL)-1.0 / k * (Fscrit * fs.y / fsm + damp_t * vd.y);
+                h[2] = (REAL)-1.0 / k * (Fscrit * fs.z / fsm + damp_t * vd.z);
             } else {
-                h[0] = Fscrit * fs.x / fsm + damp_t * vtr.x;
-                h[1] = Fscrit * fs.y / fsm + damp_t * vtr.y;
-                h[2] = Fscrit * fs.z / fsm + damp_t * vtr.z;
+                h[0] = Fscrit * fs.x / fsm + damp_t * vd.x;
+                h[1] = Fscrit * fs.y / fsm + damp_t * vd.y;
+                h[2] = Fscrit * fs.z / fsm + damp_t * vd.z;
             }
             fs *= Fscrit / fsm;
         } else {
@@ -288,9 +334,12 @@ static inline REAL3 grt_classic(REAL *h, REAL3 n, REAL3 vtr, REAL k, REAL damp_t
     return fs;
 }
 
-/* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ---- */
+/* ---- rolling: sds (spring-dashpot-slider on the rolling displacement) ----
+ * sync (synchronized_verlet): the updated displacement projected a second
+ * time, onto the full-step normal nf, by the same test (no rotated damping
+ * velocity here, as LAMMPS's gran_rolling_sds) */
 static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL Frcrit,
-                            const struct contact *c)
+                            const struct contact *c, const int sync, const REAL3 nf)
 {
     if (c->shearupdate) {
         const REAL dn = h[0] * n.x + h[1] * n.y + h[2] * n.z;
@@ -299,6 +348,11 @@ static inline REAL3 grr_sds(REAL *h, REAL3 n, REAL3 vrl, REAL kr, REAL gr, REAL 
         h[0] += vrl.x * c->dt;
         h[1] += vrl.y * c->dt;
         h[2] += vrl.z * c->dt;
+        if (sync) {
+            const REAL dn2 = h[0] * nf.x + h[1] * nf.y + h[2] * nf.z;
+            if (fabs(dn2) * kr > (REAL)1e-10 * Frcrit)
+                gr_frame(h, nf);
+        }
     }
     REAL3 fr = (REAL3)(-kr * h[0] - gr * vrl.x, -kr * h[1] - gr * vrl.y,
                        -kr * h[2] - gr * vrl.z);
@@ -360,8 +414,16 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
             h[k] = 0;
         return;
     }
-    const REAL3 n = c->n; /* the contact's kinematics (kernels/contact.cl) */
-    const REAL vnnr = c->vn;
+    REAL3 n = c->n; /* the contact's kinematics (kernels/contact.cl) */
+    REAL vnnr = c->vn;
+    REAL3 vtr = c->vtr; /* tangential relative velocity at the contact */
+    int sync = 0;       /* synchronized_verlet: the half-step contact (pairs only) */
+#ifdef GR_SYNC_USED
+    if (!L.wall && p[GR_SYNC] != (REAL)0) {
+        sync = 1;
+        gr_half_step(c, &n, &vnnr, &vtr);
+    }
+#endif
     const REAL meff = c->meff;
     const REAL delta = c->delta, dR = delta * Reff;
 
@@ -383,8 +445,6 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     if (p[GR_LIMIT] != (REAL)0 && Fntot < (REAL)0)
         Fntot = 0;
 
-    /* tangential relative velocity at the contact */
-    const REAL3 vtr = c->vtr;
     const REAL vrel = sqrt(vtr.x * vtr.x + vtr.y * vtr.y + vtr.z * vtr.z);
 
     /* the normal load of the Coulomb limits: |Fne + 2 F_pulloff| for jkr;
@@ -414,7 +474,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
         if (GR_IS(L.t, GR_T_MINDLIN, tm) || GR_IS(L.t, GR_T_MINDLIN_FORCE, tm) ||
             GR_IS(L.t, GR_T_MINDLIN_RESCALE, tm) || GR_IS(L.t, GR_T_MINDLIN_RESCALE_FORCE, tm))
             kt *= a;
-        fs = grt_history(L.t, L.ha, tm, h, n, vtr, kt, damp_t, Fscrit, a, c);
+        fs = grt_history(L.t, L.ha, tm, h, n, vtr, kt, damp_t, Fscrit, a, c, sync, c->n);
     } else {
         fs = grt_nohistory(vtr, vrel, damp_t, Fscrit);
     }
@@ -426,7 +486,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
                                   Reff * (relrot.z * n.x - relrot.x * n.z),
                                   Reff * (relrot.x * n.y - relrot.y * n.x));
         const REAL3 fr = grr_sds(h + L.hroll, n, vrl, p[GR_KR], p[GR_GR], p[GR_MUR] * Fncrit,
-                                 c);
+                                 c, sync, c->n);
         tw += (REAL3)(Reff * (n.y * fr.z - n.z * fr.y), Reff * (n.z * fr.x - n.x * fr.z),
                       Reff * (n.x * fr.y - n.y * fr.x));
     }

@@ -33,10 +33,13 @@ enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
  * of the /static tangential models (mu above is their static one);
  * 1 where the pair follows LAMMPS 29Sep2021 (-compat lammps2021: dmt's
  * Coulomb load, marshall's twist stiffness), 0 for today's LAMMPS; the heat
- * model (GR_H_*) and its coefficient. */
+ * model (GR_H_*) and its coefficient; 1 where the pair has LAMMPS's
+ * synchronized_verlet (the half-step normal, kernels/pair_granular.cl; 0 on
+ * walls). */
 enum gr_param { GR_NMODEL, GR_DMODEL, GR_TMODEL, GR_RMODEL, GR_WMODEL, GR_LIMIT,
                 GR_KN, GR_DAMP, GR_COH, GR_KT, GR_GT, GR_MU, GR_KR, GR_GR, GR_MUR,
-                GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_HMODEL, GR_HK, GR_NPARAM };
+                GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_HMODEL, GR_HK, GR_SYNC,
+                GR_NPARAM };
 /* LAMMPS's numbering of the sub-models (pair_granular.cpp) */
 enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR };
 enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI,

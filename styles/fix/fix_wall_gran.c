@@ -184,6 +184,13 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     int n = granular_parse(g, &o, argc, argv, stop, 0,
                            w->mesh.own[0] ? "fix surface/global model granular"
                                           : "fix wall/gran granular");
+    /* LAMMPS's fix wall/gran (and its region and surface forms) parses no
+     * synchronized_verlet, and its GranularModel keeps the full-step normal
+     * for a WALL contact */
+    if (o.sync)
+        gr_error(g, "%s: Unknown fix wall/gran keyword synchronized_verlet (LAMMPS's granular "
+                    "walls have no half-step normal; it is a pair_coeff granular keyword)",
+                 w->mesh.own[0] ? "fix surface/global model granular" : "fix wall/gran granular");
     int kt_null = 0;
     for (int k = 0; k + 2 < n; k++)
         if (!strcmp(argv[k], "tangential") && !strcmp(argv[k + 2], "NULL"))

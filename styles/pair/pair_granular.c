@@ -1,6 +1,6 @@
 /* pair_granular.c - `pair_style granular [cutoff]` with `pair_coeff I J
  * normal-model args [damping model] tangential model args [rolling sds ...]
- * [twisting marshall | sds ...] [limit_damping] [cutoff c]`: LAMMPS's
+ * [twisting marshall | sds ...] [limit_damping] [synchronized_verlet] [cutoff c]`: LAMMPS's
  * pair granular with its argument conversions and mixing, as today's LAMMPS
  * computes it (GranularModel, gran_sub_mod_*.cpp; tsuji's sqrt(2), per
  * sub-model mixing, the /static tangential models) and, with -compat
@@ -23,6 +23,10 @@
  * dmt, jkr), which the kernel multiplies by sqrt(m Fne / delta); two such
  * types mix as today's LAMMPS does (mix_today) even with -compat lammps2021.
  *
+ * synchronized_verlet (today's LAMMPS): p[GR_SYNC], the half-step normal
+ * in the kernel; refused with linear_nohistory (GranularModel::init) and
+ * under -compat lammps2021; a mixed pair runs without it (mix_coeffs).
+ *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
 #include <math.h>
@@ -41,6 +45,7 @@
 struct gr_tab {
     int nt;
     struct gr_one *p;           /* nt x nt, both (I, J) and (J, I) */
+    double dt;                  /* the run's time step (single(): synchronized_verlet) */
 };
 
 static const char *const nname[] = {"hooke", "hertz", "hertz/material", "dmt", "jkr"};
@@ -446,12 +451,15 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
             o.ld = 1;
             i++;
         } else if (!strcmp(k, "synchronized_verlet")) {
-            gr_error(g, "%s: synchronized_verlet (LAMMPS's half-step normal with a second "
-                        "history projection) is not supported by gravel", who);
+            if (o.c2021)
+                gr_error(g, "%s: synchronized_verlet is not in LAMMPS 29Sep2021's pair "
+                            "granular (-compat lammps2021)", who);
+            o.sync = 1;
+            i++;
         } else {
             gr_error(g, "%s: unknown keyword '%.64s' (expected a normal model "
                         "hooke, hertz, hertz/material, dmt or jkr, or damping, tangential, "
-                        "rolling, twisting, heat, %slimit_damping)",
+                        "rolling, twisting, heat, %slimit_damping or synchronized_verlet)",
                      who, k, allow_cutoff ? "cutoff, " : "");
         }
     }
@@ -468,6 +476,12 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         gr_error(g, "%s: twisting marshall takes its friction from the tangential model, "
                     "which %s does not define (LAMMPS leaves it unset); use twisting sds",
                  who, tname[o.tm]);
+    /* GranularModel::init: only the sub-models that project their history
+     * twice may run synchronized (allow_synchronization; linear_nohistory
+     * has no history to project) */
+    if (o.sync && o.tm == GR_T_NOHISTORY)
+        gr_error(g, "%s: Cannot use synchronized verlet with a non-synchronized tangential "
+                    "model, %s", who, tname[o.tm]);
     if (o.ld && o.nm == GR_N_JKR)
         gr_error(g, "Illegal %.*s command, Cannot limit damping with JKR model",
                  (int)strcspn(who, " "), who);
@@ -548,6 +562,7 @@ static void mix_today(const struct gr_one *a, const struct gr_one *b, struct gr_
     m->ld = a->ld || b->ld;
     m->hk = geo(a->hk, b->hk);
     m->cutoff = -1;
+    m->sync = 0; /* mix_coeffs carries limit_damping only: a mixed model runs unsynchronized */
 }
 
 /* Run start: mix unset pairs (LAMMPS init_one); the JKR reach. */
@@ -558,6 +573,7 @@ static void init(struct gravel *g, struct pair *p)
     if (!t || t->nt != nt)
         gr_error(g, "pair style granular: pair_coeff must be given (after the box defines %d "
                     "atom type(s))", nt);
+    t->dt = g->dt;
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++) {
             struct gr_one *o = at(t, i, j);
@@ -611,8 +627,13 @@ static void init(struct gravel *g, struct pair *p)
         }
     for (int i = 1; i <= nt; i++)
         for (int j = i; j <= nt; j++)
-            if (at(t, i, j)->set == 2 && at(t, i, j)->c2021 &&
-                !after_2021(at(t, i, j)))
+            if (at(t, i, j)->set == 2 && (at(t, i, i)->sync || at(t, j, j)->sync))
+                gr_warn(g, "pair granular: types %d %d mixed from %d %d and %d %d run without "
+                           "synchronized_verlet, as LAMMPS's GranularModel::mix_coeffs leaves "
+                           "it (give pair_coeff %d %d ... synchronized_verlet to have it)",
+                        i, j, i, i, j, j, i, j);
+            else if (at(t, i, j)->set == 2 && at(t, i, j)->c2021 &&
+                     !after_2021(at(t, i, j)))
                 gr_warn(g, "pair granular: types %d %d mixed as LAMMPS 29Sep2021 does: hooke, "
                            "velocity damping and linear_nohistory with the geometric means of "
                            "the %d %d and %d %d coefficients (give pair_coeff %d %d for other "
@@ -673,12 +694,14 @@ void granular_pack(const struct gr_one *o, double *q)
     q[GR_2021] = o->c2021;
     q[GR_HMODEL] = o->hm;
     q[GR_HK] = o->hk;
+    q[GR_SYNC] = o->sync;
 }
 
 /* What the scene uses: bit masks per category and the history layout. */
 struct gr_use {
     int n, d, t, r, w;
     int tang_hist, rescale;
+    int sync;                   /* some pair has synchronized_verlet */
     int h_a, h_roll, h_twist, h_touch, h_dyn, width;
 };
 
@@ -697,6 +720,7 @@ static struct gr_use uses(const struct pair *p)
             u.t |= 1 << o->tm;
             u.r |= 1 << o->rm;
             u.w |= 1 << o->wm;
+            u.sync |= o->sync;
         }
     u.tang_hist = (u.t & ~(1 << GR_T_NOHISTORY)) != 0;
     u.rescale = (u.t & (1 << GR_T_MINDLIN_RESCALE | 1 << GR_T_MINDLIN_RESCALE_FORCE)) != 0;
@@ -728,7 +752,8 @@ static double lammps2021_cut(const struct pair *p, int i, int j, double ri, doub
 /* LAMMPS 2021 PairGranular::single, normal part (plus LAMMPS 2024's
  * coeff_restitution damping): fforce = Fntot / r with Fntot = Fne - damp
  * factor v_n (limit_damping: >= 0), 0 beyond touch (jkr: beyond the
- * pull-off distance). No energy. */
+ * pull-off distance); with synchronized_verlet v_n on the half-step normal,
+ * as today's single() runs calculate_forces. No energy. */
 static double granular_single(const struct pair *p, const struct pair_single *s,
                               double *fforce)
 {
@@ -754,8 +779,19 @@ static double granular_single(const struct pair *p, const struct pair_single *s,
         return 0.0;
     double r = sqrt(s->rsq), rinv = 1.0 / r;
     double vnnr = 0;
-    for (int d = 0; d < 3; d++)
-        vnnr += (s->vi[d] - s->vj[d]) * s->del[d] * rinv;
+    if (o->sync) { /* the normal rate on the half-step normal (kernels/pair_granular.cl) */
+        const double h = 0.5 * ((const struct gr_tab *)p->data)->dt;
+        double d[3], vr[3];
+        for (int k = 0; k < 3; k++) {
+            vr[k] = s->vi[k] - s->vj[k];
+            d[k] = s->del[k] - h * vr[k];
+        }
+        const double inv = 1.0 / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        vnnr = vr[0] * (d[0] * inv) + vr[1] * (d[1] * inv) + vr[2] * (d[2] * inv);
+    } else {
+        for (int d = 0; d < 3; d++)
+            vnnr += (s->vi[d] - s->vj[d]) * s->del[d] * rinv;
+    }
     double meff = s->mi * s->mj / (s->mi + s->mj);
     if (s->frozen_i)
         meff = s->mj;
@@ -884,6 +920,8 @@ static void describe(const struct pair *p, struct pair_caps *c)
         pair_caps_define(c, "GR_H_TWIST", "%d", u.h_twist);
     if (u.h_dyn >= 0)
         pair_caps_define(c, "GR_H_DYN", "%d", u.h_dyn);
+    if (u.sync)
+        pair_caps_define(c, "GR_SYNC_USED", NULL);
 }
 
 const struct pair_style pair_style_granular = {

@@ -21,12 +21,14 @@ struct gr_one {
     int ktnull;                 /* the Mindlin kt was NULL (8 G*) */
     int hm;                     /* heat model GR_H_* (LAMMPS 2023: heat area|radius k) */
     double hk;                  /* its coefficient */
+    int sync;                   /* synchronized_verlet given (pair granular only: the
+                                 * walls and surf/granular refuse it) */
 };
 
 /* Parse the sub-model keywords of argv[0..argc) into *o as LAMMPS does
  * (`normal args [damping m] tangential m args [rolling ...] [twisting ...]
- * [heat none|area h|radius k] [limit_damping]`, plus `cutoff c` where
- * allow_cutoff); parsing stops at the
+ * [heat none|area h|radius k] [limit_damping] [synchronized_verlet]`, plus
+ * `cutoff c` where allow_cutoff); parsing stops at the
  * first word in stop (NULL-terminated list, or NULL). kn of the material
  * models is 4/3 E* of (E, nu) and a NULL Mindlin kt 8 G*; tsuji's e becomes
  * its damping coefficient, and so does coeff_restitution's (by the normal

@@ -71,6 +71,9 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     int used = granular_parse(g, &o, argc, argv, NULL, 0, "pair_coeff surf/granular");
     if (used != argc)
         gr_error(g, "pair_coeff surf/granular: unexpected word '%.64s'", argv[used]);
+    if (o.sync) /* LAMMPS's GranularModel keeps the full-step normal for SURFACE contacts */
+        gr_error(g, "pair_coeff surf/granular: synchronized_verlet is not supported here (LAMMPS "
+                    "computes no half-step normal for a particle-surface contact)");
     int nt = g->atoms.ntypes;
     struct surf_tab *t = p->data;
     if (!t || t->nt != nt) {

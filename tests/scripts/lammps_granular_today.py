@@ -20,10 +20,17 @@ lammps2021:
   (pull request 5007): gravel's wall runs pair gran/hooke/history's law, which
   that fix restored, so it matches with and without -compat lammps2021.
 
+synchronized_verlet (check_sync_verlet, decks tests/reference/sync_verlet/):
+LAMMPS's examples/granular/in.sync_verlet must match the kinetic energy of
+LAMMPS's shipped log (8 digits) at every thermo step before the floor bounce
+(1e-7), plain Verlet must not; two spheres meeting head-on (a normal that
+never turns) must run the same with and without it (1e-12), obliquely differ.
+
 Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
 it), mdr (checked first as LAMMPS checks it: tests/scripts/lammps_granular_mdr.py),
-damping mdr without it (LAMMPS's own message), epa/linear, epa/nonlinear
-and synchronized_verlet each give an error naming them; `none` as normal, damping or tangential
+damping mdr without it (LAMMPS's own message), epa/linear and epa/nonlinear each
+give an error naming them; synchronized_verlet with linear_nohistory, on a wall/gran
+wall and under -compat lammps2021 too; `none` as normal, damping or tangential
 model gives LAMMPS's own "Must specify ... granular model", a NULL kt of
 mindlin_classic LAMMPS's "Illegal linear tangential model" (check_refusals;
 the classic models themselves: tests/scripts/pair_granular_classic.py).
@@ -164,8 +171,14 @@ REFUSALS = (
      "Must specify tangential granular model"),
     ("wall_tangential_none", "fix w all wall/gran granular hooke 1 1 tangential none "
      "zplane 0 NULL", (), "Must specify tangential granular model"),
-    ("synchronized_verlet", "pair_coeff * * hooke 1 1 tangential linear_history 1 1 0.5 "
-     "synchronized_verlet", (), "synchronized_verlet (LAMMPS's half-step normal"),
+    ("sync_nohistory", "pair_coeff * * hooke 1 1 tangential linear_nohistory 1 0.5 "
+     "synchronized_verlet", (), "Cannot use synchronized verlet with a non-synchronized "
+     "tangential model, linear_nohistory"),
+    ("sync_wall", "fix w all wall/gran granular hooke 1 1 tangential linear_history 1 1 0.5 "
+     "synchronized_verlet zplane 0 NULL", (), "Unknown fix wall/gran keyword synchronized_verlet"),
+    ("sync_compat2021", "pair_coeff * * hooke 1 1 tangential linear_history 1 1 0.5 "
+     "synchronized_verlet", ("-compat", "lammps2021"),
+     "synchronized_verlet is not in LAMMPS 29Sep2021"),
 )
 
 
@@ -188,9 +201,90 @@ def check_refusals():
     return bad
 
 
+SYNC_DIR = os.path.join(HERE, "..", "reference", "sync_verlet")
+SYNC_LAST = 204000  # the last thermo step before the sphere meets the floor
+
+
+def run_thermo(deck, variables):
+    """{step: ke} of a sync_verlet deck run with -var name value pairs"""
+    args = [a for k, v in variables for a in ("-var", k, v)]
+    with tempfile.TemporaryDirectory() as tmp:
+        for f in os.listdir(SYNC_DIR):
+            os.symlink(os.path.abspath(os.path.join(SYNC_DIR, f)), os.path.join(tmp, f))
+        r = subprocess.run([GRAVEL, "-in", deck, "-log", "none", *args], cwd=tmp,
+                           capture_output=True, text=True, timeout=300)
+        if r.returncode != 0:
+            print(f"  gravel failed: {r.stdout[-600:]}{r.stderr[-600:]}")
+            return None, None
+        final = None
+        if os.path.exists(os.path.join(tmp, "final.dump")):
+            frames = read_dump(os.path.join(tmp, "final.dump"))
+            final = frames[max(frames)]
+    ke = {}
+    for line in r.stdout.splitlines():
+        w = line.split()
+        if len(w) == 2 and w[0].isdigit() and w[1][:1] in "0123456789":
+            ke[int(w[0])] = float(w[1])
+    return ke, final
+
+
+def check_sync_verlet():
+    """synchronized_verlet (today's LAMMPS): LAMMPS's examples/granular/in.sync_verlet
+    against its shipped log (8 printed digits) up to the floor bounce, where the
+    trajectory turns sensitive (a y0 changed by 1e-10 relative moves the kinetic
+    energy after the bounce by 1.5e-6); plain Verlet there leaves the groove later
+    (differs by > 10 % at step 150000); two spheres meeting head-on (a normal that
+    never turns) equal with and without it to roundoff, obliquely they differ"""
+    ref = {}
+    for line in open(os.path.join(SYNC_DIR, "log.18Feb25.sync_verlet.ke")):
+        w = line.split()
+        if w and w[0].isdigit():
+            ref[int(w[0])] = float(w[1])
+    bad = 0
+    ke, _ = run_thermo("sync_verlet.in", (("sync", "synchronized_verlet"),
+                                           ("nrun", str(SYNC_LAST))))
+    worst, where = 0.0, ""
+    ok = ke is not None and all(s in ke for s in ref if s <= SYNC_LAST)
+    for s in sorted(ref):
+        if ok and 0 < s <= SYNC_LAST:
+            e = abs(ke[s] - ref[s]) / ref[s]
+            if e > worst:
+                worst, where = e, f"step {s}"
+    ok = ok and worst <= 1e-7
+    print(f"  sync_verlet: kinetic energy at {len([s for s in ref if 0 < s <= SYNC_LAST])} "
+          f"thermo steps vs LAMMPS's log: worst relative {worst:.2e} {where}")
+    print(f"{'PASS' if ok else 'FAIL'} lammps_today_sync_verlet_log")
+    bad += not ok
+    plain, _ = run_thermo("sync_verlet.in", (("sync", ""), ("nrun", "150000")))
+    d = abs(plain[150000] - ref[150000]) / ref[150000] if plain and 150000 in plain else 0.0
+    ok = d > 0.1
+    print(f"  sync_verlet without the keyword: differs from LAMMPS's log by {d:.2e} "
+          f"at step 150000")
+    print(f"{'PASS' if ok else 'FAIL'} lammps_today_sync_verlet_plain_differs")
+    bad += not ok
+    for dy, same in (("0.0", True), ("0.0015", False)):
+        out = [run_thermo("axial.in", (("sync", s), ("dy", dy)))[1]
+               for s in ("", "synchronized_verlet")]
+        ok = all(o is not None for o in out)
+        worst = 0.0
+        if ok:
+            for c in range(12):
+                scale = max(abs(out[0][t][c]) for t in out[0]) or 1.0
+                for t in out[0]:
+                    worst = max(worst, abs(out[0][t][c] - out[1][t][c]) / scale)
+            ok = worst <= 1e-12 if same else worst > 1e-6
+        print(f"  sync_verlet {'head-on' if same else 'oblique'}: on vs off, worst "
+              f"relative {worst:.2e} (must be {'<= 1e-12' if same else '> 1e-6'})")
+        print(f"{'PASS' if ok else 'FAIL'} lammps_today_sync_verlet_"
+              f"{'headon_same' if same else 'oblique_differs'}")
+        bad += not ok
+    return bad
+
+
 def main():
     failed = 0 if check_mixing() else 1
     failed += check_refusals()
+    failed += check_sync_verlet()
     table = {c.name: c for c in cases.CASES}
     for name, vin, etol, differs in TODAY:
         case = table[name]
