@@ -370,6 +370,15 @@ ref_run pourmol.in
 check pour_mol_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ]'
 same pour_mol_np2 pourmol.in 2 ""
 same pour_mol_np3 pourmol.in 3 ""
+# the same deck as LAMMPS ships it, the molecules rigid bodies (fix rigid/small):
+# every rank adds each body, its atoms kept by their bricks' owners
+sed -e 's/^\(thermo_modify.*\)$/\1 format float %.17g/' \
+    -e 's/^run[[:space:]]*25000/run 6000\nwrite_dump all custom final.dump id mol x y z vx vy vz modify sort id format float %.17g/' \
+    /usr/share/lammps/examples/pour/in.pour.2d.molecule > pourrig.in
+ref_run pourrig.in
+check pour_rigid_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -gt 100 ] && grep -q "rigid/small" pourrig.in'
+same pour_rigid_np2 pourrig.in 2 ""
+same pour_rigid_np3 pourrig.in 3 ""
 # fix mesh/surface/stress (stress, Finnie wear) and dump mesh/gran/VTK: the
 # per-triangle sums over every rank's atoms in tag order, every file the same bytes
 cp "$root/tests/reference/liggghts_wear/floor.stl" .
