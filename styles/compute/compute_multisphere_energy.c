@@ -2,7 +2,8 @@
  * and `compute ID group erotate/multisphere`: the kinetic energy of the clumps
  * of the fix multisphere, translational (sum 1/2 M vcm^2) or rotational (sum
  * 1/2 I w^2 in each body's principal frame), x mvv2e. Global scalars,
- * extensive; the group is ignored (LIGGGHTS: every body of the fix counts). */
+ * extensive; the group is ignored (LIGGGHTS: every body of the fix counts).
+ * On several MPI ranks every rank holds every body: the same value on each. */
 #include "compute.h"
 #include "error.h"
 #include "fix.h"
@@ -40,14 +41,14 @@ static double erotate_scalar(struct gravel *g, struct compute *c)
 
 const struct compute_style compute_style_ke_multisphere = {
     .name = "ke/multisphere",
-    .ranks = COMPUTE_RANKS_NO,
+    .ranks = COMPUTE_RANKS_SUMS, /* every rank's bodies are all the bodies */
     .create = create,
     .scalar = ke_scalar,
 };
 
 const struct compute_style compute_style_erotate_multisphere = {
     .name = "erotate/multisphere",
-    .ranks = COMPUTE_RANKS_NO,
+    .ranks = COMPUTE_RANKS_SUMS, /* every rank's bodies are all the bodies */
     .create = create,
     .scalar = erotate_scalar,
 };

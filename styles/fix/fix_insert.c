@@ -748,7 +748,8 @@ static int place(struct gravel *g, struct insert *in, int n, double *vel)
 }
 
 /* A placed clump: its spheres become atoms (tags after *tag, mass M/n each,
- * the velocity vel) and a body of fix multisphere (LIGGGHTS
+ * the velocity vel; on several ranks each kept by its brick's owner) and a
+ * body of fix multisphere on every rank (LIGGGHTS
  * ParticleToInsertMultisphere::insert). */
 static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle *p,
                       const double vel[3], int64_t *tag)
@@ -769,7 +770,10 @@ static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle
     for (int k = 0; k < c->nspheres; k++) {
         double *x = xs + 3 * k;
         mstemplate_sphere(c, rot, p->x, k, x);
-        int i = atoms_add(g, ++*tag, m->type[k], x, m->radius[k], m->rmass[k]);
+        ++*tag;
+        if (!par_owns(g, x)) /* several ranks: each sphere kept by its brick's owner */
+            continue;
+        int i = atoms_add(g, *tag, m->type[k], x, m->radius[k], m->rmass[k]);
         a->mask[i] = mask;
         for (int d = 0; d < 3; d++)
             a->v[3 * i + d] = vel[d];

@@ -60,7 +60,9 @@
  * each body in the same tag order as one process: the same bits on any
  * number of ranks. rigid_scatter writes the owned members; their ghosts
  * get x, v, omega from the forward communication. Contact masses cover the
- * ghost slots too. fix multisphere and pour of rigid molecules: one rank.
+ * ghost slots too. Bodies inserted by fix pour and the LIGGGHTS insertion
+ * fixes are added on every rank (rigid_small_add_body), their atoms kept by
+ * the ranks that own them.
  *
  * Not supported (clear errors): langevin, infile, the custom body ID style,
  * thermostats/barostats of rigid/n?t/small. */
@@ -944,8 +946,6 @@ static void init(struct gravel *g, struct fix *f)
 static void prepare(struct gravel *g, struct fix *f)
 {
     struct rigid *r = f->data;
-    if (comm_size() > 1 && r->ms)
-        par_refuse(g, "fix multisphere (clumps)");
     unsigned integ = 0; /* groups other integrators move */
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *o = g->styles.fix[i];

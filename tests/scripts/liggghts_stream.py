@@ -370,11 +370,6 @@ def stl_facets(text):
 
 def check_stl():
     with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(os.path.join(REF, "clumps.in"), tmp)
-        shutil.copytree(os.path.join(TUTORIALS, "insert_stream", "meshes"),
-                        os.path.join(tmp, "meshes"))
-        open(os.path.join(REF, "clumps.liggghts.log"), "w").write(run_liggghts(tmp, "clumps.in"))
-    with tempfile.TemporaryDirectory() as tmp:
         for f in ("stl.in", "wedge.stl"):
             shutil.copy(os.path.join(REF, f), tmp)
         os.makedirs(os.path.join(tmp, "post"))
@@ -514,6 +509,11 @@ def check_bad_decks(head, bad, prefix, stage=None):
 
 def update():
     os.makedirs(REF, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(REF, "clumps.in"), tmp)
+        shutil.copytree(os.path.join(TUTORIALS, "insert_stream", "meshes"),
+                        os.path.join(tmp, "meshes"))
+        open(os.path.join(REF, "clumps.liggghts.log"), "w").write(run_liggghts(tmp, "clumps.in"))
     for name in list(CHAOS) + ["movingMeshGran"]:
         with tempfile.TemporaryDirectory() as tmp:
             log = run_liggghts(tmp, stage(tmp, name, "short"))

@@ -413,6 +413,22 @@ same rigid_np2 rigid.in 2 ""
 same rigid_np3 rigid.in 3 ""
 same rigid_np4_slabs rigid.in 4 "" "4 1 1"
 
+# LIGGGHTS's clumps (fix multisphere): clumps inserted by insert/rate/region fall
+# through the sub-domains onto a wall (every rank adds each body, its spheres kept
+# by their bricks' owners); fflag/tflag and ke/erotate/multisphere in thermo
+for d in rate flags energy; do
+    sed -e 's/^run 30000/run 8000/' -e 's/^dump d .*//' \
+        -e 's/^\(thermo_style.*\)$/\1\nthermo_modify format float %.17g/' \
+        -e '$a write_dump all custom final.dump id mol x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g' \
+        "$root/tests/reference/liggghts_multisphere/$d.in" > ms_$d.in
+    ref_run ms_$d.in
+    same ms_${d}_np2 ms_$d.in 2 ""
+    if [ $d = rate ]; then # 12 clumps of 2 spheres
+        check ms_rate_inserted '[ "$(rows ref.out | tail -1 | awk "{print \$2}")" -eq 24 ]'
+        same ms_rate_np3 ms_rate.in 3 ""
+    fi
+done
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
