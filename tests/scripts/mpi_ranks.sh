@@ -429,6 +429,31 @@ for d in rate flags energy; do
     fi
 done
 
+# fix surface/global and surface/local (LAMMPS's gransurf examples as
+# tests/scripts/gransurf_lammps.py writes them, shortened): spheres poured onto
+# triangles, the global ones turned by fix_modify move in their second run
+python3 - "$root" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1] + "/tests/scripts")
+import gransurf_lammps as G
+G.write_files(".")
+TAIL = ("write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz "
+        "modify sort id format float %.17g\n")
+def deck(name, text):
+    text = text.replace("thermo_modify   lost ignore", "thermo_modify   lost ignore format float %.17g")
+    open(name, "w").write(text.replace("run             5000", "run             2000") + TAIL)
+deck("surf_global.in", G.DECK.format(surface=G.MOL, model=G.MODEL))
+deck("surf_box.in", G.BOX_DECK.format(surface=G.MOL.replace("surf.tri\n", "surf.tribox\n"),
+                                      model=G.MODEL))
+deck("surf_local.in", G.LOCAL.format(surface=G.LOCAL_MOL, smodel=G.SMODEL, model=G.MODEL,
+                                     extra=""))
+PY
+for d in surf_global surf_box surf_local; do
+    ref_run $d.in
+    same ${d}_np2 $d.in 2 ""
+done
+same surf_local_np3 surf_local.in 3 ""
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
@@ -621,6 +646,16 @@ restart_pair() { # name, writer ranks, reader ranks
 restart_pair restart_np3_to_1 3 1
 restart_pair restart_np1_to_np2 1 2
 restart_pair restart_np2_to_np4 2 4
+# rigid bodies through a restart file written on 2 ranks and read on 3: the same
+# as one process writing and reading (the bodies recomputed from the atoms at
+# the second run's start, as LAMMPS's reinit yes)
+sed -e 's/^run             3000/run             1500\nwrite_restart   rig.bin/' -e '/^dump/d' \
+    "$root/tests/reference/rigid/rigid_bounce.in" > rwa.in
+grep -E "^(comm_modify|fix|pair_|neigh|timestep|compute|thermo)" rwa.in | sed '1i read_restart    rig.bin' > rwb.in
+printf 'thermo_modify   format float %%.17g\nrun             1500\nwrite_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %%.17g\n' >> rwb.in
+gr 1 rwa.in rwref.a; gr 1 rwb.in rwref.out; mv final.dump rwref.dump
+gr 2 rwa.in rw23.a; ra=$?; gr 3 rwb.in rw23.out; rb=$?; mv final.dump rw23.dump 2> /dev/null
+check restart_rigid_np2_to_np3 '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s rwref.dump ] && cmp -s rwref.dump rw23.dump && [ "$(rows rwref.out)" = "$(rows rw23.out)" ] && [ "$(rows rw23.out | wc -l)" -eq 4 ]'
 # `restart 300 rr.*` during the 600-step run on 3 ranks (the run itself unchanged):
 # rr.300 read by one process and by 2 ranks continues as one process's rr.300
 sed 's/^run             600/restart         300 rr.*\nrun             600/; /^write_restart/d' wa.in > wp.in
