@@ -609,53 +609,42 @@ static void member_buffers(struct gravel *g, struct rigid *r)
     r->dcap = c;
 }
 
-/* Several ranks: every member's image shift from the rank that owns its
- * atom (records: member index, xbox). */
-static void share_xbox(struct gravel *g, struct rigid *r)
+/* Several ranks: row k of rows (w doubles per member, member order) from
+ * the rank that owns member k's atom, on every rank. */
+static void share_member_rows(struct gravel *g, struct rigid *r, double *rows, size_t w,
+                              const char *what)
 {
-    int32_t *rec = gr_malloc(g, 4 * sizeof(int32_t) * ((size_t)r->nmem + 1));
+    double *rec = gr_malloc(g, (w + 1) * sizeof(double) * ((size_t)r->nmem + 1));
     size_t nrec = 0;
     for (int k = 0; k < r->nmem; k++)
         if (r->m[k].dev >= 0) {
-            int32_t *q = rec + 4 * nrec++;
+            double *q = rec + (w + 1) * nrec++;
             q[0] = k;
-            for (int d = 0; d < 3; d++)
-                q[1 + d] = r->m[k].xbox[d];
+            memcpy(q + 1, rows + w * (size_t)k, w * sizeof(double));
         }
     void *all = NULL;
-    size_t bytes = comm_allgatherv(rec, nrec * 4 * sizeof(int32_t), &all);
+    size_t bytes = comm_allgatherv(rec, nrec * (w + 1) * sizeof(double), &all);
     free(rec);
     if (bytes == (size_t)-1)
-        gr_error(g, "fix rigid/small: out of memory gathering the members' images");
-    const int32_t *q = all;
-    for (size_t t = 0; t < bytes / (4 * sizeof(int32_t)); t++, q += 4)
-        for (int d = 0; d < 3; d++)
-            r->m[q[0]].xbox[d] = q[1 + d];
+        gr_error(g, "fix rigid/small: out of memory gathering the members' %s", what);
+    const double *q = all;
+    for (size_t t = 0; t < bytes / ((w + 1) * sizeof(double)); t++, q += w + 1)
+        memcpy(rows + w * (size_t)q[0], q + 1, w * sizeof(double));
     free(all);
 }
 
-/* Several ranks: every member's force and torque (r->mout, member order)
- * from the rank that owns its atom. */
-static void share_forces(struct gravel *g, struct rigid *r)
+/* Several ranks: every member's image shift from the rank that owns its atom. */
+static void share_xbox(struct gravel *g, struct rigid *r)
 {
-    const size_t w = 7; /* member index (as a double), f, torque */
-    double *rec = gr_malloc(g, w * sizeof(double) * ((size_t)r->nmem + 1));
-    size_t nrec = 0;
+    double *rows = gr_malloc(g, 3 * sizeof(double) * ((size_t)r->nmem + 1));
     for (int k = 0; k < r->nmem; k++)
-        if (r->m[k].dev >= 0) {
-            double *q = rec + w * nrec++;
-            q[0] = k;
-            memcpy(q + 1, r->mout + 6 * (size_t)k, 6 * sizeof(double));
-        }
-    void *all = NULL;
-    size_t bytes = comm_allgatherv(rec, nrec * w * sizeof(double), &all);
-    free(rec);
-    if (bytes == (size_t)-1)
-        gr_error(g, "fix rigid/small: out of memory gathering the members' forces");
-    const double *q = all;
-    for (size_t t = 0; t < bytes / (w * sizeof(double)); t++, q += w)
-        memcpy(r->mout + 6 * (size_t)q[0], q + 1, 6 * sizeof(double));
-    free(all);
+        for (int d = 0; d < 3; d++)
+            rows[3 * k + d] = r->m[k].xbox[d];
+    share_member_rows(g, r, rows, 3, "images");
+    for (int k = 0; k < r->nmem; k++)
+        for (int d = 0; d < 3; d++)
+            r->m[k].xbox[d] = (int)rows[3 * k + d];
+    free(rows);
 }
 
 /* After a rebuild: device indices of the owned members (-1: another
@@ -851,8 +840,8 @@ static void forces_and_torques(struct gravel *g, struct fix *f, int gravity)
     eng_arg_mem(g, k, 5, r->d_out);
     eng_launch(g, k, (size_t)r->nmem);
     eng_read_reals(g, r->d_out, 6 * (size_t)r->nmem, r->mout);
-    if (par_on(g))
-        share_forces(g, r);
+    if (par_on(g)) /* every member's force and torque from its owner */
+        share_member_rows(g, r, r->mout, 6, "forces");
     for (int ib = 0; ib < r->nbody; ib++) {
         memset(r->b[ib].fcm, 0, sizeof r->b[ib].fcm);
         memset(r->b[ib].torque, 0, sizeof r->b[ib].torque);
