@@ -172,6 +172,11 @@ def check():
         print(("PASS " if ok else "FAIL ") + "style_tests %s: every test path it names exists%s"
               % (rel, "" if ok else " (missing: %s)" % ", ".join(missing)))
         bad += not ok
+        # issue 20: every style's page says whether it runs on several MPI ranks
+        ok = re.search(r"MPI ranks?\b", text) is not None
+        print(("PASS " if ok else "FAIL ") + "style_tests %s says whether it runs across MPI ranks"
+              % rel)
+        bad += not ok
     return 1 if bad else 0
 
 
