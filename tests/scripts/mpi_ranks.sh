@@ -412,6 +412,11 @@ check rigid_thermo_rows '[ "$(rows ref.out | wc -l)" -ge 7 ] && grep -q "format 
 same rigid_np2 rigid.in 2 ""
 same rigid_np3 rigid.in 3 ""
 same rigid_np4_slabs rigid.in 4 "" "4 1 1"
+# a tumbling body crossing the periodic faces (its members' image flags in the dump)
+sed -e '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz ix iy iz modify sort id format float %.17g' \
+    "$root/tests/reference/rigid/rigid_free.in" > rfree.in
+ref_run rfree.in
+same rigid_free_np3 rfree.in 3 ""
 
 # LIGGGHTS's clumps (fix multisphere): clumps inserted by insert/rate/region fall
 # through the sub-domains onto a wall (every rank adds each body, its spheres kept
