@@ -180,7 +180,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "check/timestep/gran", "heat/gran",
                                         "heat/gran/conduction", "adapt", "property/atom",
                                         "heat/flow", "viscous/nonlinear", "momentum",
-                                        "rigid/small", "multisphere", "surface/global", "surface/local",
+                                        "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
+                                        "nvt/sphere",
                                         "particletemplate/multisphere", NULL};
 
 static int listed(const char *const *list, const char *name)

@@ -40,6 +40,7 @@
 #include "fix_deform.h"
 #include "fix_nh.h"
 #include "group.h"
+#include "par_sum.h"
 #include "pressure.h"
 #include "temperature.h"
 
@@ -375,19 +376,25 @@ static double temperature(struct gravel *g, struct nh *n, int tensor)
     eng_arg_mem(g, k, i++, n->d_mvv);
     eng_launch(g, k, (size_t)na);
     eng_read_reals(g, n->d_mvv, 8 * (size_t)na, n->h_mvv);
+    /* every rank's atoms in tag order (keys 2 tag, 2 tag + 1: the spin term
+     * after the translational one, as one process adds them) */
     const int *ord = eng_tag_order(g);
-    double t = 0, s[3] = {0, 0, 0};
+    struct par_sum st = {0}, ss[3] = {{0}};
     for (int q = 0; q < na; q++) {
         const double *o = n->h_mvv + 8 * (size_t)ord[q];
-        t += o[0];
+        const int64_t key = 2 * g->eng->tag_seen[ord[q]];
+        par_sum_add(g, &st, key, o[0]);
         if (n->sphere)
-            t += o[1];
-        for (int d = 0; d < 3; d++) {
-            s[d] += o[2 + d];
+            par_sum_add(g, &st, key + 1, o[1]);
+        for (int d = 0; tensor && d < 3; d++) {
+            par_sum_add(g, &ss[d], key, o[2 + d]);
             if (n->sphere)
-                s[d] += o[5 + d];
+                par_sum_add(g, &ss[d], key + 1, o[5 + d]);
         }
     }
+    double t = par_sum_total(g, &st), s[3] = {0, 0, 0};
+    for (int d = 0; tensor && d < 3; d++)
+        s[d] = par_sum_total(g, &ss[d]);
     double mvv2e = compute_mvv2e(g);
     for (int d = 0; tensor && d < 3; d++)
         n->mvv[d] = s[d] * mvv2e;

@@ -459,6 +459,18 @@ for d in surf_global surf_box surf_local; do
 done
 same surf_local_np3 surf_local.in 3 ""
 
+# fix nvt and nvt/sphere: the thermostat's temperature summed over every rank's
+# atoms in tag order (LAMMPS's nvt decks of tests/reference/fix_nh; the LJ box
+# replicated along x so that 3 ranks fit its cut-off)
+for d in nvt_sphere_gas nvt_lj; do
+    sed -e 's/^\(fix .*all nvt .*\)$/replicate 3 1 1\n\1/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        "$root/tests/reference/fix_nh/$d.in" > $d.in
+    ref_run $d.in
+    same ${d}_np2 $d.in 2 ""
+    same ${d}_np3 $d.in 3 ""
+done
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
