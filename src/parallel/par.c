@@ -199,7 +199,7 @@ int par_fix_value_global(const struct fix *f)
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
-                                         "heat/gran/conduction", "gravity",
+                                         "heat/gran/conduction", "gravity", "freeze",
                                          /* their inputs are computes on ranks (ave_common.c:
                                           * fix or variable inputs refused), each sample
                                           * taken on every rank's atoms as one process */

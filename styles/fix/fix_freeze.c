@@ -6,7 +6,8 @@
  * it was zeroed at the last force computation. Only when a thermo_style
  * column shows it (checked at run setup) does the fix keep each atom's force
  * (a per-atom buffer, its own kernel instead of the fused op); the host sums
- * the group in tag order. The fused path runs first, so a fix gravity
+ * the group in tag order (on several MPI ranks every rank's atoms, as one
+ * process). The fused path runs first, so a fix gravity
  * defined after the freeze fix is still counted (LAMMPS: not counted). */
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "error.h"
 #include "fix.h"
 #include "fused.h"
+#include "par_sum.h"
 #include "thermo.h"
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -81,14 +83,16 @@ static double vector(struct gravel *g, struct fix *f, int i)
         double *orig = gr_malloc(g, ((size_t)a->n + 1) * 3 * sizeof(double));
         eng_read_reals(g, f->peratom, 3 * (size_t)a->n, orig);
         const int *ord = atoms_tag_order(g);
-        kd->sum[0] = kd->sum[1] = kd->sum[2] = 0.0;
+        struct par_sum s[3] = {{0}}; /* every rank's atoms in tag order (collective) */
         for (int k = 0; k < a->n; k++) {
             int j = ord[k];
             if (a->mask[j] & f->groupbit)
                 for (int d = 0; d < 3; d++)
-                    kd->sum[d] += orig[3 * j + d];
+                    par_sum_add(g, &s[d], a->tag[j], orig[3 * j + d]);
         }
         free(orig);
+        for (int d = 0; d < 3; d++)
+            kd->sum[d] = par_sum_total(g, &s[d]);
         kd->sum_step = g->step;
     }
     return kd->sum[i - 1];

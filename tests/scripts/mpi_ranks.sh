@@ -734,9 +734,13 @@ check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ra
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
 ref_run vara.in
 same variable_ave_time_np2 vara.in 2 ""
-sed 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]/' var.in > varf.in
-mpirun -np 2 "$par" -in varf.in -log none > varf.out 2>&1; rc=$?
-check variable_fix_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" varf.out)" -eq 1 ] && grep -q "a variable reading fix 2 (freeze)" varf.out'
+# fix freeze's f_ID[i] (the frozen base's force) in thermo and in a variable: the
+# group's sum over every rank's atoms in tag order, as one process
+sed -e 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]+f_2[3]/' \
+    -e 's/^\(thermo_style custom .*\)$/\1 f_2[1] f_2[3]/' var.in > varf.in
+ref_run varf.in
+check freeze_force_seen '[ "$(rows ref.out | awk "NR > 1 && \$NF != 0" | wc -l)" -ge 3 ]'
+same variable_freeze_np2 varf.in 2 ""
 # ... or compute pressure (each rank's contacts' virial)
 sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
 mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
