@@ -200,6 +200,7 @@ int par_fix_value_global(const struct fix *f)
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
                                          "heat/gran/conduction", "gravity", "freeze",
+                                         "property/global", /* the script's values */
                                          /* their inputs are computes on ranks (ave_common.c:
                                           * fix or variable inputs refused), each sample
                                           * taken on every rank's atoms as one process */

@@ -399,6 +399,12 @@ for d in wall_epsd mesh_epsd; do
     ref_run $d.in
     same ${d}_np2 $d.in 2 ""
 done
+# fix property/global read by a variable and a thermo column (the script's values)
+sed 's/^thermo_style    custom step atoms ke$/variable yy equal f_m1[2]*2\nthermo_style    custom step atoms ke v_yy f_m1[1]/' \
+    wall_epsd.in > pglob.in
+ref_run pglob.in
+check property_global_seen '[ "$(rows ref.out | awk "\$4 == 40000000 && \$5 == 5000000" | wc -l)" -ge 5 ]'
+same property_global_np2 pglob.in 2 ""
 
 # fix rigid/small: bodies spanning sub-domains (rigid_bounce: an L and a dimer
 # among free spheres falling onto a wall, lj units so thermo's c_ values are
