@@ -227,6 +227,16 @@ static inline REAL3 lg_tangential_nohistory(const REAL3 vtr, const REAL gammat, 
     return (REAL3)(-gamma * vtr.x, -gamma * vtr.y, -gamma * vtr.z);
 }
 
+/* v without its component along en, unless torsionTorque (the rolling
+ * models' torsion switch) */
+static inline REAL3 lg_torsion_off(__global const REAL *p, const REAL3 v, const REAL3 en)
+{
+    if (p[LG_TORSION] != (REAL)0)
+        return v;
+    const REAL d = v.x * en.x + v.y * en.y + v.z * en.z;
+    return (REAL3)(v.x - en.x * d, v.y - en.y * d, v.z - en.z * d);
+}
+
 /* rolling cdt: the torque subtracted on i (added on j); wr the relative
  * rotation (the wall's cri omi / r), Fel = kn deltan */
 static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const REAL3 en,
@@ -244,11 +254,7 @@ static inline REAL3 lg_rolling_cdt(__global const REAL *p, const REAL3 wr, const
         const REAL f = rmu * Fel * reff / wrmag;
         t = (REAL3)(wr.x * f, wr.y * f, wr.z * f);
     }
-    if (p[LG_TORSION] == (REAL)0) {
-        const REAL d = t.x * en.x + t.y * en.y + t.z * en.z;
-        t = (REAL3)(t.x - en.x * d, t.y - en.y * d, t.z - en.z * d);
-    }
-    return t;
+    return lg_torsion_off(p, t, en);
 }
 
 /* rolling epsd, epsd2, epsd3: the torque subtracted on i (added on j); wr
@@ -260,11 +266,7 @@ static inline REAL3 lg_rolling_epsd(const struct contact *c, __global const REAL
                                     const int wall, REAL3 *m)
 {
     const REAL rmu = p[LG_RMU];
-    REAL3 wt = wr;
-    if (p[LG_TORSION] == (REAL)0) {
-        const REAL d = wr.x * en.x + wr.y * en.y + wr.z * en.z;
-        wt = (REAL3)(wr.x - en.x * d, wr.y - en.y * d, wr.z - en.z * d);
-    }
+    const REAL3 wt = lg_torsion_off(p, wr, en);
     const REAL kr = (int)p[LG_ROLL] == LG_R_EPSD2 ? nf->kt * reff * reff
                                                    : p[LG_RSTIFF] * nf->kn * rmu * rmu * reff * reff;
     const REAL s = c->dt * kr;
@@ -379,13 +381,11 @@ static inline void gran_model_law(const struct contact *c, __global const REAL *
     const REAL3 tor = (REAL3)(en.y * Ft.z - en.z * Ft.y, en.z * Ft.x - en.x * Ft.z,
                               en.x * Ft.y - en.y * Ft.x);
     REAL3 rt = (REAL3)(0);
-    if ((int)p[LG_ROLL] == LG_R_CDT) {
-        const REAL3 w = wall ? wr : c->omi - c->omj;
-        rt = lg_rolling_cdt(p, w, en, deltan * nf.kn, reff, wall);
-    } else if (roll) {
-        const REAL3 w = wall ? wr : c->omi - c->omj;
-        rt = lg_rolling_epsd(c, p, w, en, &nf, reff, wall, roll);
-    }
+    const REAL3 wroll = wall ? wr : c->omi - c->omj; /* the rolling models' rotation */
+    if ((int)p[LG_ROLL] == LG_R_CDT)
+        rt = lg_rolling_cdt(p, wroll, en, deltan * nf.kn, reff, wall);
+    else if (roll)
+        rt = lg_rolling_epsd(c, p, wroll, en, &nf, reff, wall, roll);
     if (wall) {
         out->tc = tor;
         out->tr = (-(REAL)0.5 * deltan) * tor + rt;

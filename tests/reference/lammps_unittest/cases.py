@@ -1316,9 +1316,8 @@ AOR = ("hooke 1.0e4 0.3 tangential linear_history 8235.0 50.0 1.0 rolling sds 50
        "damping coeff_restitution")
 CASES += [
     Case("dem10-aor-spheres-3d", "30 Mar 2026",
-         "units lj\ndimension 3\nboundary f f f\natom_style sphere\nlattice sc 1.0\n"
-         "region box block -4.0 4.0 -4.0 4.0 -0.5 10.0 units box\ncreate_box 1 box\n"
-         "region pourreg block -1.2 1.2 -1.2 1.2 3.0 4.5 units box\n"
+         setup("-4.0 4.0 -4.0 4.0 -0.5 10.0", units="lj")
+         + "region pourreg block -1.2 1.2 -1.2 1.2 3.0 4.5 units box\n"
          + numerics(0.3, 5.0e-4, delay=False)
          + model("granular", AOR, "fix grav all gravity 2.0 vector 0.0 0.0 -1.0\n"
                  "fix integr all nve/sphere\n"
