@@ -250,6 +250,7 @@ static inline struct contact_atoms contact_atoms_of(__global const REAL *v,
  * flowing into i (into j: -q). */
 struct contact_out {
     REAL3 f, ti, tj;
+    REAL3 tc;           /* the law's tc: with tr = 0, ti = -radi tc and tj = -radj tc */
 #ifdef HAS_HEAT
     REAL q;
 #endif
@@ -396,6 +397,7 @@ static inline void contact_out_set(const struct contact *k, const struct contact
     o->f = cf->f;
     o->ti = contact_torque_i(k, cf);
     o->tj = -k->radj * cf->tc + cf->tr;
+    o->tc = cf->tc;
 #ifdef HAS_HEAT
     o->q = cf->q;
 #endif

@@ -35,25 +35,26 @@
 
 /* pair_contacts: one work-item per contact; shear is ci when the law keeps
  * no history, omega / rect are v / recf without rotation; temp / recq (the
- * temperatures, the incidences' heat records) are v / recf without HAS_HEAT;
+ * temperatures, the contacts' heat records) are v / recf without HAS_HEAT;
  * quiet[c] = 1: contact c did not act when last evaluated and its records
  * hold the zeros it wrote (0: unknown, after a rebuild or at a run start) */
 #define KARGS_pair_contacts(X, Y)                                                              \
-    X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CMI, cslot) Y(CM, x) Y(CM, v) Y(CM, omega)          \
-    Y(CM, radius) Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param)              \
-    Y(I, ntypes) Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box)           \
-    Y(M, recf) Y(M, rect) Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup)          \
-    Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(POS_LO, xlo)
+    X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)          \
+    Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes)               \
+    Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, recf) Y(M, rect)  \
+    Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq)         \
+    Y(MUC, quiet) Y(POS_LO, xlo)
 
 /* pair_gather: one work-item per particle, then the fused post_force,
  * final_integrate and end_of_step ops [first, first + npost + nfinal)
  * (nfinal counts both of the last two); store: the fused fix's per-atom
- * store (f when none); recq / heatflow as pair_contacts' */
+ * store (f when none); recq / heatflow as pair_contacts'; ioff, coff and
+ * pcon: the list's (src/engine/neighbor.h) */
 #define KARGS_pair_gather(X, Y)                                                                \
-    X(I, n) Y(CMI, ioff) Y(CM, recf) Y(CM, rect) Y(M, f) Y(M, torque) Y(CMI, ops)              \
-    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega) Y(CM, rmass) \
-    Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look)             \
-    Y(PART, atom_step) Y(POS_LO, xlo)
+    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, recf) Y(CM, rect) Y(M, f)             \
+    Y(M, torque) Y(CMI, ops) Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store)       \
+    Y(M, v) Y(M, omega) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq)       \
+    Y(M, heatflow) Y(I, look) Y(PART, atom_step) Y(POS_LO, xlo)
 
 /* force_clear: no pair style (heatflow: f without HAS_HEAT) */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)

@@ -624,16 +624,16 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
 }
 
 /* Contacts from the rows: i owns contacts coff[i] .. coff[i] + nown[i] - 1
- * (its last nown[i] row entries, in order), ci/cj name the two atoms.
- * Row slot k of i is incidence ioff[i] + k (rows packed, partner-tag order);
- * cslot[2c] is the owner's incidence of contact c, cslot[2c + 1] the
- * partner's (found in the owner's row by binary search on the tag). A pair
- * missing from its partner's row sets flags[3] (an inconsistent list). */
+ * (its last nown[i] row entries, in order), ci/cj name the two atoms. Row
+ * slot k < ncount[i] - nown[i] of i (a partner of lower tag, which owns
+ * the contact) has its contact in pcon[ioff[i] - coff[i] + k] (found in
+ * the owner's row by binary search on the tag). A pair missing from its
+ * partner's row sets flags[3] (an inconsistent list). */
 __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlist,
                            __global const int *ncount, __global const int *nown,
                            __global const int *coff, __global const int *ioff,
                            __global const long *tag, __global int *ci, __global int *cj,
-                           __global int *cslot, __global int *flags)
+                           __global int *pcon, __global int *flags)
 {
     const int i = get_global_id(0);
     if (i >= n)
@@ -647,7 +647,6 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
             const int c = coff[i] + k - first;
             ci[c] = i;
             cj[c] = j;
-            cslot[2 * c] = ioff[i] + k;
             continue;
         }
         const size_t rowj = (size_t)j * maxn;
@@ -668,7 +667,7 @@ __kernel void nbr_contacts(const int n, const int maxn, __global const int *nlis
             atomic_or(&flags[3], 1);
             continue;
         }
-        cslot[2 * (coff[j] + at - (ncount[j] - nown[j])) + 1] = ioff[i] + k;
+        pcon[ioff[i] - coff[i] + k] = coff[j] + at - (ncount[j] - nown[j]);
     }
 }
 

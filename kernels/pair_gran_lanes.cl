@@ -8,7 +8,7 @@
  * kinematics the gran laws read (contact_kinematics), the law at width
  * PAIR_LW (PAIR_EVAL_LANES, kernels/gran_law.cl), the accuracy note's test,
  * history zeroing and the torques (contact_out_set); then each lane's
- * history and incidence records are stored (none for a contact apart now
+ * history and records are stored (none for a contact apart now
  * and when last evaluated: quiet[c], as pair_loop.cl). A group none of
  * whose contacts touches stops after the gate (pair_lane_apart): the
  * apart pairs of a flowing bed or a gas cost about what they cost one per
@@ -74,11 +74,9 @@ static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
 
 /* A contact that does not touch (pair_loop.cl's pair_contacts for it): a
  * nonzero history is zeroed, and if it acted when last evaluated it writes
- * zero records (+0 on the owner's, -0 as -F on the partner's) and turns
- * quiet. */
+ * zero records and turns quiet. */
 static inline void pair_lane_apart(const int c, __global REAL *shear, __global uchar *quiet,
-                                   __global const int *cslot, __global REAL *recf,
-                                   __global REAL *rect)
+                                   __global REAL *recf, __global REAL *rect)
 {
 #ifdef HAS_HISTORY
     const REAL h0[3] = {0, 0, 0};
@@ -89,12 +87,14 @@ static inline void pair_lane_apart(const int c, __global REAL *shear, __global u
     if (quiet[c])
         return;
     quiet[c] = 1;
-    const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
     const REAL3 f = (REAL3)(0);
-    vstore3(f, si, recf);
-    vstore3(-f, sj, recf);
-    vstore3(f, si, rect);
-    vstore3(f, sj, rect);
+    vstore3(f, c, recf);
+#ifdef PAIR_TC
+    vstore3(f, c, rect);
+#else
+    vstore3(f, 2 * c, rect);
+    vstore3(f, 2 * c + 1, rect);
+#endif
 }
 
 /* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
@@ -192,7 +192,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #endif
     if (!any(acts)) { /* no lane touches: only history to forget and records to clear */
         for (int l = 0; l < PAIR_LW && c0 + l < ncontact; l++)
-            pair_lane_apart(c0 + l, shear, quiet, cslot, recf, rect);
+            pair_lane_apart(c0 + l, shear, quiet, recf, rect);
         return;
     }
     k.reff = radi * radj / (radi + radj);
@@ -238,6 +238,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     const lreal_w tjx = LSELW(zero, -radj * o.tc.x + zero, acts);
     const lreal_w tjy = LSELW(zero, -radj * o.tc.y + zero, acts);
     const lreal_w tjz = LSELW(zero, -radj * o.tc.z + zero, acts);
+    const lreal_w tcx = LSELW(zero, o.tc.x, acts), tcy = LSELW(zero, o.tc.y, acts);
+    const lreal_w tcz = LSELW(zero, o.tc.z, acts);
     /* the accuracy note's test (ACC_NOTE_PAIR): an acting contact overlapping
      * at a normal speed above its record */
     const lreal_w vn2 = k.vdel * k.vdel / rsq;
@@ -265,7 +267,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
             }
         }
         if (LANE(actsw, l) == (REAL)0) { /* its selects left zeros: as an apart group's */
-            pair_lane_apart(c, shear, quiet, cslot, recf, rect);
+            pair_lane_apart(c, shear, quiet, recf, rect);
             continue;
         }
 #ifdef HAS_HISTORY /* contact_hist_store of an acting contact: the whole row */
@@ -274,11 +276,13 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
         if (quiet[c])
             quiet[c] = 0;
         const REAL3 f = (REAL3)(LANE(fx, l), LANE(fy, l), LANE(fz, l));
-        const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
-        vstore3(f, si, recf);
-        vstore3(-f, sj, recf);
-        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), si, rect);
-        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), sj, rect);
+        vstore3(f, c, recf);
+#ifdef PAIR_TC /* the torque record is tc (pair_loop.cl) */
+        vstore3((REAL3)(LANE(tcx, l), LANE(tcy, l), LANE(tcz, l)), c, rect);
+#else
+        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), 2 * c, rect);
+        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), 2 * c + 1, rect);
+#endif
     }
 #undef LANE
 }

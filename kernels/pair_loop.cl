@@ -5,14 +5,20 @@
  * history, shear[3c ..] is its tangential history, seen from the owner. Each
  * contact is evaluated once, by pair_contacts, through the active evaluator
  * PAIR_EVAL (PAIR_EVAL_ROW: an evaluator taking the contact's whole history
- * row of HIST_N REAL, pair granular), which writes what each side receives into that side's
- * incidence record (force in recf, torque in rect): cslot[2c] (owner: F,
- * -radi tc - tr) and cslot[2c + 1] (partner: -F, -radj tc + tr). A particle's incidences ioff[i] ..
- * ioff[i + 1] - 1 follow its row, in ascending partner tag; pair_gather sums
- * them in that order (a stream), so a particle's sum depends on the
- * particles only, never on memory order, the cell sort, the rebuild
- * schedule or the work split. No atomics; the two sides' forces are exact
- * negatives.
+ * row of HIST_N REAL, pair granular), which writes the contact's records at
+ * its own index: recf[c] the force F on the owner (the partner receives
+ * -F), rect[2c] the owner's torque -radi tc - tr and rect[2c + 1] the
+ * partner's -radj tc + tr; for a law without rolling torque (tr = 0,
+ * PAIR_TC) rect[c] = tc, and each side's gather takes -rad tc with its own
+ * radius (the same products; a sum that starts at +0 is blind to the sign
+ * of a zero term, so tr's +-0 is not missed). A particle's row holds its partners in ascending
+ * tag: first those of lower tag (it is their contact's partner: contact
+ * pcon[ioff[i] - coff[i] + k] for row slot k), then those it owns (its
+ * contacts coff[i] .. coff[i + 1] - 1, in row order); pair_gather sums the
+ * records in that order, so a particle's sum depends on the particles only,
+ * never on memory order, the cell sort, the rebuild schedule or the work
+ * split. No atomics; the two sides' forces are exact negatives. The owned
+ * contacts' records are read as a stream, the others' once each.
  *
  * acc/astep: the contact's collision-resolution record (kernels/accuracy.cl).
  * A contact that does not act writes zero records; one that did not act at
@@ -117,7 +123,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
         h[q] = q < PAIR_HIST_N ? hrow[q] : (REAL)0;
     __global const REAL *p = param + (size_t)((type[i] - 1) * ntypes + (type[j] - 1)) * nparam;
     struct contact_out o;
-    o.f = o.ti = o.tj = (REAL3)(0);
+    o.f = o.ti = o.tj = o.tc = (REAL3)(0);
 #ifdef HAS_HEAT
     o.q = 0;
 #endif
@@ -129,16 +135,15 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
         return;
     if (was_quiet != !acted)
         quiet[c] = !acted;
-    const size_t si = (size_t)cslot[2 * c], sj = (size_t)cslot[2 * c + 1];
-    vstore3(o.f, si, recf);
-    vstore3(-o.f, sj, recf);
-#ifdef HAS_ROTATION
-    vstore3(o.ti, si, rect);
-    vstore3(o.tj, sj, rect);
+    vstore3(o.f, c, recf);
+#if defined(HAS_ROTATION) && defined(PAIR_TC)
+    vstore3(o.tc, c, rect);
+#elif defined(HAS_ROTATION)
+    vstore3(o.ti, 2 * c, rect);
+    vstore3(o.tj, 2 * c + 1, rect);
 #endif
-#ifdef HAS_HEAT /* the heat records, as the forces: exact negatives */
-    recq[si] = o.q;
-    recq[sj] = -o.q;
+#ifdef HAS_HEAT /* the heat record, as the force: the partner receives -q */
+    recq[c] = o.q;
 #else
     (void)temp;
     (void)recq;
@@ -147,8 +152,10 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #endif /* PAIR_LW == 1 */
 #endif /* PAIR_EVAL || PAIR_EVAL_ROW */
 
-/* f_i (and torque_i) = the sum of i's incidence records in row order;
- * written, not added (this also clears the force of the step). Then the
+/* f_i (and torque_i) = the sum of the records of i's contacts in row order
+ * (see the top: the partner side's -F and torque first, then the owned
+ * contacts' F and torque); written, not added (this also clears the force
+ * of the step). Then the
  * fused post_force ops [first, first + npost) and final_integrate and
  * end_of_step ops [first + npost, first + npost + nfinal) of
  * kernels/fused.cl, which may change f, torque, v and omega (and the fused
@@ -161,16 +168,36 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
     if (i >= n)
         return;
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
-    for (int s = ioff[i], e = ioff[i + 1]; s < e; s++) {
-        fs += vload3((size_t)s, recf);
-#ifdef HAS_ROTATION
-        ts += vload3((size_t)s, rect);
+    const int c0 = coff[i], c1 = coff[i + 1];
+    const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
+#ifdef PAIR_TC
+    const REAL nr = -radius[i];
+#endif
+    for (int s = p0; s < p1; s++) {
+        const size_t c = (size_t)pcon[s];
+        fs -= vload3(c, recf);
+#if defined(HAS_ROTATION) && defined(PAIR_TC)
+        const REAL3 t = nr * vload3(c, rect);
+        ts += t;
+#elif defined(HAS_ROTATION)
+        ts += vload3(2 * c + 1, rect);
+#endif
+    }
+    for (int c = c0; c < c1; c++) {
+        fs += vload3((size_t)c, recf);
+#if defined(HAS_ROTATION) && defined(PAIR_TC)
+        const REAL3 t = nr * vload3((size_t)c, rect);
+        ts += t;
+#elif defined(HAS_ROTATION)
+        ts += vload3(2 * (size_t)c, rect);
 #endif
     }
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
     REAL qs = 0;
-    for (int s = ioff[i], e = ioff[i + 1]; s < e; s++)
-        qs += recq[s];
+    for (int s = p0; s < p1; s++)
+        qs -= recq[pcon[s]];
+    for (int c = c0; c < c1; c++)
+        qs += recq[c];
     heatflow[i] = qs;
 #else
     (void)recq;
@@ -222,14 +249,16 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
 
 /* The pair virial of the step, per particle, for the pressure (run only on
  * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum
- * over i's incidence records, in row order, of the tensor del_a F_b in
- * LAMMPS's order xx yy zz xy xz yz (6 REAL per particle), del = x_i - x_j
- * (minimum image), F what i receives. A contact's two sides give the same
+ * over i's row, in row order, of the tensor del_a F_b in LAMMPS's order xx
+ * yy zz xy xz yz (6 REAL per particle), del = x_i - x_j (minimum image), F
+ * what i receives from that contact (its record, or minus it on the
+ * partner's side: see the top). A contact's two sides give the same
  * product, so sum_i w_i = sum over contacts of del F, LAMMPS's
  * ev_tally_xyz virial. Positions have not moved since the forces
  * (final_integrate changes velocities only). */
 __kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
-                          __global const int *ioff, __global const REAL *recf,
+                          __global const int *ioff, __global const int *coff,
+                          __global const int *pcon, __global const REAL *recf,
                           __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
                           const REAL xy, const REAL xz, const REAL yz, __global REAL *w)
 {
@@ -238,12 +267,14 @@ __kernel void pair_virial(const int n, __global const int *nlist, const int maxn
         return;
     const REAL3 xi = vload3(i, x);
     REAL3 s = (REAL3)(0), o = (REAL3)(0);
-    const int s0 = ioff[i], cnt = ioff[i + 1] - s0;
+    const int cnt = ioff[i + 1] - ioff[i], c0 = coff[i];
+    const int nlow = cnt - (coff[i + 1] - c0), p0 = ioff[i] - c0;
     for (int k = 0; k < cnt; k++) {
         const int j = nlist[(size_t)i * maxn + k];
         REAL3 del = xi - vload3(j, x);
         MINIMG3(del);
-        const REAL3 f = vload3((size_t)(s0 + k), recf);
+        const REAL3 f = k < nlow ? -vload3((size_t)pcon[p0 + k], recf)
+                                 : vload3((size_t)(c0 + k - nlow), recf);
         s += del * f;
         o += (REAL3)(del.x * f.y, del.x * f.z, del.y * f.z);
     }

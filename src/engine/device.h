@@ -99,12 +99,14 @@ struct engine {
     int ready;                  /* device chosen */
     int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
     int pair_lw;                /* contacts per work-item of pair_contacts (PAIR_LW) */
+    int pair_tc;                /* the torque records hold each contact's tc (PAIR_TC:
+                                 * the law has no rolling torque, kernels/pair_loop.cl) */
     char lanes_prologue[160];   /* kernels/lanes.cl's prologue at the pair width */
     double origin[3];           /* device positions are x - origin (0 in double) */
     size_t rsz;                 /* sizeof(REAL) */
     int rotation, history;      /* active features of the current run */
     int heat;                   /* the atoms store temperature and heatflow (HAS_HEAT) */
-    cl_mem recq;                /* HAS_HEAT: the incidences' heat records (run.c) */
+    cl_mem recq;                /* HAS_HEAT: the contacts' heat records (run.c) */
     size_t recq_cap;            /* ... their capacity in bytes */
     int hist_n;                 /* REALs of history per contact (HIST_N; 3 by default,
                                  * at most GR_HIST_MAX) */

@@ -489,6 +489,8 @@ static int build_options(struct gravel *g, const struct pair_caps *pc, int lmp20
             OPT(" -D PAIR_EVAL=%s", pc->eval);
         if (e->pair_lw > 1)
             OPT(" -D PAIR_LW=%d -D PAIR_EVAL_LANES=%s", e->pair_lw, pc->eval_lanes);
+        if (e->pair_tc)
+            OPT(" -D PAIR_TC");
         if (pc->approach)
             OPT(" -D PAIR_APPROACH");
         if (pc->energy)
@@ -551,6 +553,8 @@ void eng_prepare(struct gravel *g)
      * records are written by kernels/pair_loop.cl's one-contact kernel */
     e->heat = g->atoms.heat_flag == ATOM_HEAT_BOTH;
     e->pair_lw = e->heat ? 1 : pair_lanes(g, pc, single, lmp2021);
+    /* a law without rolling torque: the torque record is the contact's tc */
+    e->pair_tc = pc && pc->sym_torque && e->rotation;
 
     const char *names[MAX_SOURCES], *texts[MAX_SOURCES];
     int n = 0;

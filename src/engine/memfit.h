@@ -3,8 +3,8 @@
  * contacts are counted, against what the device and the process may hold.
  *
  * Need: per atom slot, the run's per-atom fields (eng_atom_bytes) and the
- * neighbor data (nbr_atom_bytes); per contact, the partners, incidences,
- * history and incidence records (nbr_contact_bytes) and the contact's
+ * neighbor data (nbr_atom_bytes); per contact, the partners, the partner
+ * side's index, history and records (nbr_contact_bytes) and the contact's
  * accuracy record (acc_contact_bytes), at the capacity the contact buffers
  * are allocated with (nbr_capacity). Limits: CL_DEVICE_GLOBAL_MEM_SIZE (or
  * env GRAVEL_DEVICE_MEMORY), the process's address-space limit (ulimit -v,

@@ -38,9 +38,9 @@
 struct nbr {
     struct nbr_list list;
     /* contacts of the previous build, for the history transfer: offsets,
-     * and (during a rebuild only) partners and history parked in the force
-     * record buffer recf, which is free then (old_cj_at: offset of the
-     * partners, in ints) */
+     * and (during a rebuild only) history and partners parked in the record
+     * buffers, which are free then (retire_contacts; old_cj_at: offset of
+     * the partners, in ints) */
     cl_mem coff_old;
     int ncontact_old;
     size_t old_cj_at;
@@ -52,7 +52,7 @@ struct nbr {
         excl_group, typecut;
     size_t cap_atoms, cap_cells;
     size_t rsz;
-    int history, rotation;
+    int history, rotation, pair_tc; /* the engine's, when the records were sized */
     int ncell, nc[3];
     double cutmax, lo[3], hi[3], inv[3];
     double cutpair;             /* largest cut-off of a pair (minimum image needs L >= 2 x) */
@@ -114,7 +114,7 @@ void nbr_free(struct gravel *g)
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
-                   &l->cslot, &l->quiet, &l->shear, &l->recf, &l->rect, &b->coff_old,
+                   &l->pcon, &l->quiet, &l->shear, &l->recf, &l->rect, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->typecut,
                    &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
@@ -190,7 +190,7 @@ static void grow_atoms(struct gravel *g, struct nbr *b, size_t n)
     l->ncount = eng_alloc(g, n * sizeof(cl_int), "neighbor counts");
     l->nown = eng_alloc(g, n * sizeof(cl_int), "owned contact counts");
     l->coff = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
-    l->ioff = eng_alloc(g, (n + 1) * sizeof(cl_int), "incidence offsets");
+    l->ioff = eng_alloc(g, (n + 1) * sizeof(cl_int), "row offsets");
     b->coff_old = eng_alloc(g, (n + 1) * sizeof(cl_int), "contact offsets");
     b->cap_atoms = n;
 }
@@ -218,16 +218,30 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
     b->list.maxn = maxn;
 }
 
-/* Bytes of one buffer of incidence records per contact: both sides'
- * forces (recf), or both sides' torques (rect) (kernels/pair_loop.cl). */
-static size_t cf_bytes(const struct engine *e) { return 6 * e->rsz; }
-
-/* Bytes per contact of the force record buffer: the records, or the parked
- * history row and partner of a rebuild when those are larger. */
+/* Bytes per contact of the record buffers (kernels/pair_loop.cl): recf the
+ * owner's force, rect (rotation only) the torques (both sides', or the
+ * contact's torque tc alone when the law has no rolling torque:
+ * e->pair_tc). A rebuild parks the previous contacts' history rows in recf
+ * (sized to hold them) and their partners in rect (with rotation) or in
+ * recf after the rows (park_partners). */
 static size_t recf_bytes(const struct engine *e)
 {
-    size_t park = (size_t)e->hist_n * e->rsz + sizeof(cl_int);
-    return e->history && park > cf_bytes(e) ? park : cf_bytes(e);
+    size_t own = 3 * e->rsz;
+    size_t park = e->history ? (size_t)e->hist_n * e->rsz + (e->rotation ? 0 : sizeof(cl_int)) : 0;
+    return park > own ? park : own;
+}
+
+static size_t rect_bytes(const struct engine *e) { return (e->pair_tc ? 3 : 6) * e->rsz; }
+
+/* The buffer the previous partners are parked in, and its bytes. */
+static cl_mem park_partners(const struct engine *e, const struct nbr_list *l)
+{
+    return e->rotation ? l->rect : l->recf;
+}
+
+static size_t park_partners_bytes(const struct engine *e, const struct nbr *b)
+{
+    return b->cap_pair * (e->rotation ? rect_bytes(e) : recf_bytes(e));
 }
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
@@ -235,16 +249,16 @@ static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
 /* The buffers of grow_atoms, per atom slot. */
 static size_t atom_bytes(const struct engine *e) { return 3 * e->rsz + 7 * sizeof(cl_int); }
 
-/* ci, cj, cslot, the quiet flag and the history row of one contact. */
+/* ci, cj, pcon, the quiet flag and the history row of one contact. */
 static size_t contact_bytes(const struct engine *e)
 {
-    return 4 * sizeof(cl_int) + 1 + (e->history ? (size_t)e->hist_n * e->rsz : 0);
+    return 3 * sizeof(cl_int) + 1 + (e->history ? (size_t)e->hist_n * e->rsz : 0);
 }
 
 /* recf and rect of one contact. */
 static size_t pair_bytes(const struct engine *e)
 {
-    return recf_bytes(e) + (e->rotation ? cf_bytes(e) : 0);
+    return recf_bytes(e) + (e->rotation ? rect_bytes(e) : 0);
 }
 
 size_t nbr_atom_bytes(struct gravel *g)
@@ -269,8 +283,8 @@ size_t nbr_held_bytes(struct gravel *g)
            b->cap_pair * pair_bytes(e) + 3 * b->cap_cells * sizeof(cl_int);
 }
 
-/* Contact buffers for at least nc contacts (contents not kept): ci, cj
- * cslot and shear (cap_contact); the incidence records recf, rect (cap_pair) separately,
+/* Contact buffers for at least nc contacts (contents not kept): ci, cj,
+ * pcon and shear (cap_contact); the records recf, rect (cap_pair) separately,
  * after the history transfer has read what was parked there. */
 static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 {
@@ -279,13 +293,13 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
     if (nc > b->cap_contact || !l->ci) {
         rel(&l->ci);
         rel(&l->cj);
-        rel(&l->cslot);
+        rel(&l->pcon);
         rel(&l->quiet);
         rel(&l->shear);
         b->cap_contact = grown(nc);
         l->ci = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact owners");
         l->cj = eng_alloc(g, b->cap_contact * sizeof(cl_int), "contact partners");
-        l->cslot = eng_alloc(g, b->cap_contact * 2 * sizeof(cl_int), "contact incidences");
+        l->pcon = eng_alloc(g, b->cap_contact * sizeof(cl_int), "partner-side contacts");
         /* whole words: nbr_quiet_reset fills 4 bytes at a time */
         l->quiet = eng_alloc(g, (b->cap_contact + 3) / 4 * 4, "contact quiet flags");
         if (e->history)
@@ -300,15 +314,15 @@ static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
         rel(&l->recf);
         rel(&l->rect);
         b->cap_pair = grown(nc);
-        l->recf = eng_alloc(g, b->cap_pair * recf_bytes(g->eng), "incidence force records");
+        l->recf = eng_alloc(g, b->cap_pair * recf_bytes(g->eng), "contact force records");
         if (g->eng->rotation)
-            l->rect = eng_alloc(g, b->cap_pair * cf_bytes(g->eng), "incidence torque records");
+            l->rect = eng_alloc(g, b->cap_pair * rect_bytes(g->eng), "contact torque records");
     }
 }
 
-/* The current contacts become the previous ones: offsets swap, partners
- * and history are parked in the force record buffer (history hist_n REAL per
- * contact from byte 0, then the partners; recf_bytes() per contact hold both). */
+/* The current contacts become the previous ones: offsets swap, history
+ * rows (hist_n REAL per contact) are parked in recf from byte 0, partners
+ * in park_partners() from int offset old_cj_at. */
 static void retire_contacts(struct gravel *g, struct nbr *b)
 {
     struct engine *e = g->eng;
@@ -318,13 +332,14 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
     l->coff = t;
     b->ncontact_old = l->ncontact;
     size_t nc = (size_t)l->ncontact, hist = nc * (size_t)e->hist_n * e->rsz;
-    b->old_cj_at = (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
+    b->old_cj_at = e->rotation ? 0 : (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
     if (nc == 0)
         return;
-    if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * recf_bytes(e))
-        gr_error(g, "internal error: the force buffer cannot hold the previous contacts");
+    if (hist > b->cap_pair * recf_bytes(e) ||
+        b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > park_partners_bytes(e, b))
+        gr_error(g, "internal error: the record buffers cannot hold the previous contacts");
     OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->recf, 0, 0, hist, 0, NULL, NULL));
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->recf, 0,
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, park_partners(e, l), 0,
                                      b->old_cj_at * sizeof(cl_int), nc * sizeof(cl_int), 0,
                                      NULL, NULL));
 }
@@ -542,7 +557,7 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->cslot, &l->quiet, &l->shear, &l->recf, &l->rect};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->pcon, &l->quiet, &l->shear, &l->recf, &l->rect};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
         b->cap_pair = b->cap_contact = 0;
@@ -552,13 +567,17 @@ void nbr_setup(struct gravel *g)
         b->rsz = e->rsz;
         b->history = hist_id;
         b->rotation = e->rotation;
+        b->pair_tc = e->pair_tc;
     }
-    if (b->rotation != e->rotation) { /* torque records appear or go */
+    if (b->rotation != e->rotation || b->pair_tc != e->pair_tc) { /* the records change */
+        size_t cap = b->cap_pair;
         rel(&b->list.rect);
-        if (e->rotation)
-            b->list.rect = eng_alloc(g, (b->cap_pair ? b->cap_pair : 1) * cf_bytes(e),
-                                     "incidence torque records");
+        rel(&b->list.recf);
         b->rotation = e->rotation;
+        b->pair_tc = e->pair_tc;
+        b->cap_pair = 0;
+        if (cap)
+            alloc_forces(g, b, cap);
     }
     /* exclusions */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
@@ -1077,20 +1096,21 @@ static void transfer(struct gravel *g, struct nbr *b, int nc, cl_mem perm, int p
 }
 
 /* Contacts of the rows just built (atoms 0 .. n-1): offsets (scan of the
- * owned counts), owners, partners, incidence; then their history. */
+ * owned counts), owners, partners, the partner side's contacts; then their
+ * history. */
 static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
 {
     struct engine *e = g->eng;
     struct nbr_list *l = &b->list;
     nbr_scan(g, l->nown, l->coff, n);
-    nbr_scan(g, l->ncount, l->ioff, n); /* rows packed: 2 incidences per contact */
+    nbr_scan(g, l->ncount, l->ioff, n); /* rows packed: 2 slots per contact */
     cl_int total = 0;
     eng_read(g, l->coff, (size_t)n * sizeof(cl_int), sizeof total, &total);
     if ((size_t)total > b->cap_contact || (size_t)total > b->cap_pair)
         mem_fit_contacts(g, (size_t)total); /* all of the contacts' buffers, before any */
     alloc_contacts(g, b, (size_t)total);
     l->ncontact = total;
-    nbr_quiet_reset(g); /* the records' buffer held the parked history */
+    nbr_quiet_reset(g); /* a records' buffer held the parked history */
     reset_flags(g, b);
     cl_kernel k = b->k_contacts;
     int a = 0;
@@ -1104,7 +1124,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
     eng_arg_mem(g, k, a++, e->a.tag);
     eng_arg_mem(g, k, a++, l->ci);
     eng_arg_mem(g, k, a++, l->cj);
-    eng_arg_mem(g, k, a++, l->cslot);
+    eng_arg_mem(g, k, a++, l->pcon);
     eng_arg_mem(g, k, a++, b->flags);
     eng_launch(g, k, (size_t)n);
     cl_int fl[4];
@@ -1122,8 +1142,8 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
     cl_mem any = l->ci; /* the previous contacts' buffers are not read without them */
     transfer(g, b, have_old ? total : -total, have_old ? b->perm : any, permuted,
-             have_old ? b->coff_old : any, have_old ? l->recf : any, (int)b->old_cj_at,
-             have_old ? l->recf : l->shear);
+             have_old ? b->coff_old : any, have_old ? park_partners(e, l) : any,
+             (int)b->old_cj_at, have_old ? l->recf : l->shear);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
 
@@ -1185,7 +1205,7 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         k = b->k_hist_rename;
         eng_arg_int(g, k, 0, b->ncontact_old);
         eng_arg_mem(g, k, 1, b->cellof);
-        eng_arg_mem(g, k, 2, b->list.recf);
+        eng_arg_mem(g, k, 2, park_partners(e, &b->list));
         eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }
@@ -1462,26 +1482,26 @@ int nbr_export(struct gravel *g, struct nbr_state *s)
          * (only the owner's is read back: contacts are owned by the lower tag) */
         s->shear = gr_calloc(g, (size_t)hw * n * maxn + 1, sizeof(double));
         int *ioff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
-        int *cslot = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
-        int *owner = gr_malloc(g, (2 * (size_t)nc + 1) * sizeof(int));
+        int *coff = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
+        int *pcon = gr_malloc(g, ((size_t)nc + 1) * sizeof(int));
         double *sh = gr_malloc(g, ((size_t)hw * nc + 1) * sizeof(double));
         eng_read(g, l->ioff, 0, ((size_t)n + 1) * sizeof(cl_int), ioff);
-        eng_read(g, l->cslot, 0, 2 * (size_t)nc * sizeof(cl_int), cslot);
+        eng_read(g, l->coff, 0, ((size_t)n + 1) * sizeof(cl_int), coff);
+        eng_read(g, l->pcon, 0, (size_t)nc * sizeof(cl_int), pcon);
         eng_read_reals(g, l->shear, (size_t)hw * nc, sh);
-        /* incidence -> row slot: the atom whose packed row holds it */
-        for (int i = 0; i < n; i++)
-            for (int q = ioff[i]; q < ioff[i + 1]; q++)
-                owner[q] = i;
-        for (int c = 0; c < nc; c++)
-            for (int side = 0; side < 2; side++) {
-                int q = cslot[2 * c + side], i = owner[q];
-                size_t slot = (size_t)i * maxn + (size_t)(q - ioff[i]);
+        for (int i = 0; i < n; i++) {
+            int cnt = ioff[i + 1] - ioff[i], first = cnt - (coff[i + 1] - coff[i]);
+            for (int k = 0; k < cnt; k++) {
+                int c = k < first ? pcon[ioff[i] - coff[i] + k] : coff[i] + k - first;
+                double sign = k < first ? -1.0 : 1.0;
+                size_t slot = (size_t)i * maxn + (size_t)k;
                 for (int d = 0; d < hw; d++)
-                    s->shear[hw * slot + d] = (side ? -1.0 : 1.0) * sh[hw * (size_t)c + d];
+                    s->shear[hw * slot + d] = sign * sh[hw * (size_t)c + d];
             }
+        }
         free(ioff);
-        free(cslot);
-        free(owner);
+        free(coff);
+        free(pcon);
         free(sh);
     }
     return 1;
@@ -1548,9 +1568,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     coff[n] = (int)total;
     ioff[n] = (int)nin;
     int *ci = gr_malloc(g, (total + 1) * sizeof(int)), *cj = gr_malloc(g, (total + 1) * sizeof(int));
-    int *cslot = gr_malloc(g, (2 * total + 1) * sizeof(int));
-    for (size_t c = 0; c < 2 * total; c++)
-        cslot[c] = -1;
+    int *pcon = gr_malloc(g, (total + 1) * sizeof(int));
+    char *met = gr_calloc(g, total + 1, 1); /* the owned contact's partner slot was found */
     double *sh = e->history ? gr_calloc(g, (size_t)hw * total + 1, sizeof(double)) : NULL;
     int asym = 0;
     for (int i = 0; i < n && !asym; i++) {
@@ -1562,7 +1581,6 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
                 int c = coff[i] + k - first;
                 ci[c] = i;
                 cj[c] = j;
-                cslot[2 * c] = ioff[i] + k;
                 if (sh)
                     memcpy(sh + (size_t)hw * c, rsh + (size_t)hw * slot, (size_t)hw * sizeof(double));
                 continue;
@@ -1575,12 +1593,13 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
                 asym = 1;
                 break;
             }
-            cslot[2 * (coff[j] + at - jfirst) + 1] = ioff[i] + k;
+            pcon[ioff[i] - coff[i] + k] = coff[j] + at - jfirst;
+            met[coff[j] + at - jfirst] = 1;
         }
     }
     /* an owned contact whose partner's row lacks the owner is asymmetric too */
     for (size_t c = 0; c < total && !asym; c++)
-        asym = cslot[2 * c + 1] < 0;
+        asym = !met[c];
     if (!asym) {
         alloc_list(g, b, maxn);
         alloc_contacts(g, b, total);
@@ -1589,7 +1608,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
         eng_write(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
         eng_write(g, l->nlist, 0, slots * sizeof(cl_int), row);
         eng_write(g, l->ioff, 0, ((size_t)n + 1) * sizeof(cl_int), ioff);
-        eng_write(g, l->cslot, 0, 2 * total * sizeof(cl_int), cslot);
+        eng_write(g, l->pcon, 0, total * sizeof(cl_int), pcon);
         eng_write(g, l->nown, 0, (size_t)n * sizeof(cl_int), nown);
         eng_write(g, l->coff, 0, ((size_t)n + 1) * sizeof(cl_int), coff);
         eng_write(g, l->ci, 0, total * sizeof(cl_int), ci);
@@ -1604,7 +1623,8 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     }
     free(row);
     free(ioff);
-    free(cslot);
+    free(pcon);
+    free(met);
     free(nown);
     free(coff);
     free(rsh);

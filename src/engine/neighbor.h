@@ -12,17 +12,20 @@
 
 struct nbr_list {
     /* full rows in ascending partner tag: nlist[i maxn + k] (k < ncount[i])
-     * is the device index of i's k-th neighbor; its incidence (the record
-     * of what i receives from that contact) is ioff[i] + k */
+     * is the device index of i's k-th neighbor; ioff[i] the rows' packed
+     * offsets (sum of the counts before i) */
     cl_mem nlist, ncount, nown, ioff;
     int maxn;
-    /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1;
-     * ci/cj the two atoms; cslot[2c], cslot[2c + 1] their incidences;
-     * shear (3 REAL, history only) seen from ci; recf and rect (rotation
-     * only) the incidence records of the step, force and torque
-     * (kernels/pair_loop.cl); quiet[c] (one byte) = 1 when contact c did not
-     * act at its last evaluation and its records hold the zeros written then */
-    cl_mem coff, ci, cj, cslot, quiet, shear, recf, rect;
+    /* contacts, owned by the lower tag: i owns coff[i] .. coff[i + 1] - 1,
+     * its last nown[i] row slots in order; ci/cj the two atoms; row slot
+     * k < ncount[i] - nown[i] of i (a lower-tag partner's contact) is
+     * contact pcon[ioff[i] - coff[i] + k]; shear (HIST_N REAL, history
+     * only) seen from ci; the records of the step (kernels/pair_loop.cl):
+     * recf (3 REAL per contact, the owner's force) and rect (rotation
+     * only, 6 REAL: the owner's torque, the partner's); quiet[c] (one byte)
+     * = 1 when contact c did not act at its last evaluation and its records
+     * hold the zeros written then */
+    cl_mem coff, ci, cj, pcon, quiet, shear, recf, rect;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
     double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */
@@ -117,7 +120,7 @@ void nbr_list_box(const struct nbr_list *l, double box[6]);
 
 /* Memory (src/engine/memfit.c): device bytes per atom slot (reference
  * positions, cell and sort indices, counts, offsets and the list rows), per
- * contact (partners, incidences, history, incidence records), the contact
+ * contact (partners, history, records), the contact
  * capacity allocated for ncontact contacts, and the bytes held now. */
 size_t nbr_atom_bytes(struct gravel *g);
 size_t nbr_contact_bytes(struct gravel *g);

@@ -48,6 +48,8 @@ void pressure_virial(struct gravel *g, double w[6])
     eng_arg_mem(g, k, a++, l->nlist);
     eng_arg_int(g, k, a++, l->maxn);
     eng_arg_mem(g, k, a++, l->ioff);
+    eng_arg_mem(g, k, a++, l->coff);
+    eng_arg_mem(g, k, a++, l->pcon);
     eng_arg_mem(g, k, a++, l->recf);
     eng_arg_mem(g, k, a++, e->a.x);
     a = nbr_arg_box(g, k, a, l);

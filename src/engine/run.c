@@ -249,20 +249,20 @@ static void post_neighbor(struct gravel *g)
             g->styles.fix[i]->style->post_neighbor(g, g->styles.fix[i]);
 }
 
-/* HAS_HEAT: the heat records of ncontact contacts' incidences (two each,
- * kernels/pair_loop.cl), grown as the contacts grow; without heat the
+/* HAS_HEAT: the heat records of ncontact contacts (one each, the owner's
+ * heat: kernels/pair_loop.cl), grown as the contacts grow; without heat the
  * force records stand in (never read). */
 static cl_mem heat_records(struct gravel *g, size_t ncontact)
 {
     struct engine *e = g->eng;
     if (!e->heat)
         return nbr_list(g)->recf;
-    size_t need = (2 * ncontact + 2) * e->rsz;
+    size_t need = (ncontact + 1) * e->rsz;
     if (!e->recq || need > e->recq_cap) {
         if (e->recq)
             clReleaseMemObject(e->recq);
         e->recq_cap = need + need / 8 + 64 * e->rsz;
-        e->recq = eng_alloc(g, e->recq_cap, "incidence heat records");
+        e->recq = eng_alloc(g, e->recq_cap, "contact heat records");
     }
     return e->recq;
 }
@@ -283,7 +283,6 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .ncontact = l->ncontact,
             .ci = l->ci,
             .cj = l->cj,
-            .cslot = l->cslot,
             .x = a->x,
             .v = a->v,
             .omega = e->rotation ? a->omega : a->v,
@@ -319,6 +318,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         struct pair_gather_args pg = {
             .n = a->n,
             .ioff = l->ioff,
+            .coff = l->coff,
+            .pcon = l->pcon,
             .recf = l->recf,
             .rect = e->rotation ? l->rect : l->recf,
             .f = a->f,

@@ -105,6 +105,8 @@ struct pair_caps {
     } def[PAIR_MAXDEF];
     /* ---- state the run keeps ---- */
     int rotation;               /* needs omega and torque */
+    int sym_torque;             /* no rolling torque: every contact's torques are
+                                 * -radi tc and -radj tc (struct contact_force tr = 0) */
     int history;                /* keeps per-contact history ... */
     int hist_n;                 /* ... of hist_n REAL (3 when none; at most GR_HIST_MAX) */
     int flip_lo, flip_n;        /* history slots [flip_lo, flip_lo + flip_n) that LAMMPS

@@ -215,6 +215,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
 {
     pair_caps_source(c, "pair_cohesion.cl");
     c->eval = "cohesion_eval";
+    c->sym_torque = 1; /* no torque */
     c->beyond = 1;
     double a = 0, b = 1; /* no tables yet: the contact distance */
     reach_bound(p, &a, &b);

@@ -228,6 +228,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
 {
     pair_caps_source(c, "pair_colloid.cl");
     c->eval = "colloid_eval";
+    c->sym_torque = 1; /* no torque */
     c->energy = "colloid_energy";
     c->beyond = 1;
     c->cut_of = p;

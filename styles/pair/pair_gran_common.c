@@ -165,6 +165,7 @@ void pair_gran_describe(const struct pair *p, struct pair_caps *c, const char *s
     c->eval = eval;
     c->eval_lanes = law;
     c->rotation = 1;
+    c->sym_torque = 1; /* gran_common.cl: tr = 0 */
     c->history = history;
     c->tcol_of = p;
     c->collision_time = collision_time;

@@ -240,6 +240,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
     pair_caps_source(c, "pair_hertz_mindlin.cl");
     c->eval = "hertz_mindlin_eval";
     c->rotation = 1;
+    c->sym_torque = 1; /* tr = 0 */
     c->history = 1;
     c->tcol_of = p;
     c->collision_time = collision_time;

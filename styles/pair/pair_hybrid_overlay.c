@@ -283,10 +283,12 @@ static void describe(const struct pair *p, struct pair_caps *c)
     if (!h) /* after read_restart, before pair_style is re-issued (init refuses) */
         return;
     pair_caps_define(c, "PAIR_TERMS", "%d", h->n);
+    c->sym_torque = 1; /* every term's */
     for (int k = 0; k < h->n; k++) {
         const struct pair *t = &h->term[k];
         struct pair_caps tc;
         pair_describe(t, &tc);
+        c->sym_torque &= tc.sym_torque;
         for (int q = 0; q < tc.nsources; q++)
             pair_caps_source(c, tc.sources[q]);
         char nm[32];

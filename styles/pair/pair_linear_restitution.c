@@ -106,6 +106,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
 {
     pair_caps_source(c, "pair_linear_restitution.cl");
     c->eval = "linear_restitution_eval";
+    c->sym_torque = 1; /* tr = 0 */
     c->approach = 1;
     c->tcol_of = p;
     c->collision_time = collision_time;
