@@ -202,9 +202,8 @@ static void pack(const struct pair *p, int itype, int jtype, double *param)
 /* Hertz contact duration of two equal spheres (m* = m/2, R* = r/2) at impact
  * speed vn: 2.87 (m*^2 / (R* E*^2 vn))^(1/5). Without a speed, use 1e-3 of
  * the elastic wave speed sqrt(E/rho) as a typical impact speed. */
-/* e = 1 (no dashpot), mu = 0 (no tangential force), mu_r = 0 (no rolling
- * torque), for the pair_style material and every pair's own */
-static int conservative(const struct pair *p)
+/* 1 when test(c) holds for the pair_style material and every pair's own */
+static int every_material(const struct pair *p, int (*test)(const double *c))
 {
     const struct hm_table *t = p->data;
     int nt = t ? t->nt : 0;
@@ -212,11 +211,21 @@ static int conservative(const struct pair *p)
         const double *c = k == (size_t)nt * nt ? p->coef
                         : t->set[k] == 2      ? t->c + k * HMC_N
                                                : p->coef;
-        if (!(c[C_REST] == 1.0 && c[C_MU] == 0.0 && c[C_MUR] == 0.0))
+        if (!test(c))
             return 0;
     }
     return 1;
 }
+
+/* e = 1 (no dashpot), mu = 0 (no tangential force), mu_r = 0 (no rolling
+ * torque) */
+static int elastic(const double *c)
+{
+    return c[C_REST] == 1.0 && c[C_MU] == 0.0 && c[C_MUR] == 0.0;
+}
+
+/* mu_r = 0: no rolling torque (struct contact_force tr = 0) */
+static int rolling_free(const double *c) { return c[C_MUR] == 0.0; }
 
 /* U = 0.4 kn sqrt(R*) delta^2.5, kn = 4/3 E* (F = kn sqrt(R*) delta^1.5) */
 static double contact_energy(const struct pair *p, double delta, double reff)
@@ -240,11 +249,11 @@ static void describe(const struct pair *p, struct pair_caps *c)
     pair_caps_source(c, "pair_hertz_mindlin.cl");
     c->eval = "hertz_mindlin_eval";
     c->rotation = 1;
-    c->sym_torque = 1; /* tr = 0 */
+    c->sym_torque = every_material(p, rolling_free);
     c->history = 1;
     c->tcol_of = p;
     c->collision_time = collision_time;
-    c->conservative = conservative(p);
+    c->conservative = every_material(p, elastic);
     c->energy_of = p;
     c->contact_energy = contact_energy;
 }
