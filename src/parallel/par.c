@@ -181,7 +181,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "heat/gran/conduction", "adapt", "property/atom",
                                         "heat/flow", "viscous/nonlinear", "momentum",
                                         "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
-                                        "nvt/sphere",
+                                        "nvt/sphere", "deform",
                                         "particletemplate/multisphere", NULL};
 
 static int listed(const char *const *list, const char *name)

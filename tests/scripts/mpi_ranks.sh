@@ -11,7 +11,8 @@
 # insert/stream, the meshGran, heatTransfer_1 and packing (fix adapt) tutorials,
 # cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
-# file), three fix pour decks, and the
+# file), three fix pour decks, a gas whose box fix deform changes every
+# step (every remap), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, dump local of
@@ -477,6 +478,32 @@ for d in nvt_sphere_gas nvt_lj; do
     same ${d}_np3 $d.in 3 ""
 done
 
+# fix deform on orthogonal boxes: the box changes every step, the bricks and
+# ghost cut-offs follow it at each rebuild, the atoms cross bricks as the box
+# and the gas move; erate, final and vel with remap x, then a second run with
+# N = 5, scale and delta (the hot gas: every face); wiggle, trate and volume
+# with remap v; final and erate with remap none (the bricks' faces sweep
+# through atoms that stay); a gas under gravity between plane walls with a
+# moving fixed z face
+sed -e 's/^fix             1 all nve\/sphere/&\nfix             2 all deform 1 ${fx} remap ${remap} units box/' \
+    -e 's/^thermo_modify   norm no/thermo_style    custom step ke c_1 press pxx pyy pzz pxy epair vol lx ly lz xlo yhi\n&/' \
+    -e 's/^run             300/unfix           2\nfix             2 all deform 5 x scale 0.9 y delta -0.3 0.2 remap ${remap}\n&/' \
+    -e 's/^variable        pz index 0/variable        remap index x/' gas.in > dgas.in
+printf 'variable fx index "x erate 0.5 y final 0 10.5 z vel -0.8"\n' | cat - dgas.in > dgas_x.in
+printf 'variable fx index "x trate 2.0 y wiggle 1.0 0.05 z volume"\nvariable remap index v\n' | cat - dgas.in > dgas_v.in
+printf 'variable fx index "x final -1 10 y erate -1.5"\nvariable remap index none\n' | cat - dgas.in > dgas_none.in
+ref_run dgas_x.in
+check deform_box_moved '[ "$(rows ref.out | tail -1 | awk "{print \$11, \$12}")" = "11.447999999999999 11" ]'
+same deform_np2 dgas_x.in 2 ""
+same deform_np3 dgas_x.in 3 ""
+ref_run dgas_v.in
+same deform_remap_v_np3 dgas_v.in 3 ""
+ref_run dgas_none.in
+same deform_remap_none_np4 dgas_none.in 4 "" "2 2 1"
+sed 's/^fix             3 all wall\/gran .*$/&\nfix             5 all deform 1 x erate -0.8 y erate 0.6 z final 0 12.5 units box/' wall.in > dwall.in
+ref_run dwall.in
+same deform_walls_np4_z dwall.in 4 "" "1 2 2"
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
@@ -732,9 +759,9 @@ same momentum_np2 mom.in 2 ""
 same momentum_np3 mom.in 3 ""
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all deform 1 x scale 1.0/' chute.in > ave.in
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/pair zplane 0.0 NULL/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (deform)" ave.out'
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (wall/pair)" ave.out'
 # a variable reading a fix whose value may be one rank's part
 # a variable reading fix ave/time (its compute input sampled as one process): the same bits
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
