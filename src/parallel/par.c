@@ -181,7 +181,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "heat/gran/conduction", "adapt", "property/atom",
                                         "heat/flow", "viscous/nonlinear", "momentum",
                                         "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
-                                        "nvt/sphere", "deform",
+                                        "nvt/sphere", "deform", "npt", "npt/sphere", "nph",
+                                        "nph/sphere",
                                         "particletemplate/multisphere", NULL};
 
 static int listed(const char *const *list, const char *name)

@@ -12,7 +12,7 @@
 # cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, a gas whose box fix deform changes every
-# step (every remap), and the
+# step (every remap), the barostats nph and npt (and /sphere), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, dump local of
@@ -477,6 +477,26 @@ for d in nvt_sphere_gas nvt_lj; do
     same ${d}_np2 $d.in 2 ""
     same ${d}_np3 $d.in 3 ""
 done
+
+# the barostats fix nph, npt and their /sphere forms: the box dilation, the
+# barostat's mass and its MTK terms from every rank's atom count, the kinetic
+# tensor and the pair virial summed over every rank's atoms in tag order
+# (LAMMPS's nph/npt decks of tests/reference/fix_nh replicated along x; their
+# thermo every 5 steps)
+for d in nph_xyz_lj npt_aniso_lj nph_sphere_gas npt_sphere_gas nph_sphere_disc; do
+    sed -e 's/^\(fix .*all np[th].*\)$/replicate 3 1 1\n\1/' \
+        -e 's/^thermo_modify   format float %.15g/thermo_modify   format float %.17g/' \
+        -e 's/^thermo          [0-9]*$/thermo          5/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        "$root/tests/reference/fix_nh/$d.in" > $d.in
+    ref_run $d.in
+    case $d in
+    nph_xyz_lj | nph_sphere_gas) same ${d}_np2 $d.in 2 ""; same ${d}_np3 $d.in 3 "" ;;
+    npt_sphere_gas) same ${d}_np3 $d.in 3 "" ;;
+    *) same ${d}_np2 $d.in 2 "" ;;
+    esac
+done
+check barostat_box_moved '[ "$(rows ref.out | head -1 | awk "{print \$NF}")" != "$(rows ref.out | tail -1 | awk "{print \$NF}")" ]'
 
 # fix deform on orthogonal boxes: the box changes every step, the bricks and
 # ghost cut-offs follow it at each rebuild, the atoms cross bricks as the box
