@@ -12,7 +12,8 @@
 # cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, a gas whose box fix deform changes every
-# step (every remap), the barostats nph and npt (and /sphere), and the
+# step (every remap), the barostats nph and npt (and /sphere), triclinic
+# boxes (tilted, sheared, flipped, balanced; LAMMPS's multi/in.granular), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, dump local of
@@ -523,6 +524,73 @@ same deform_remap_none_np4 dgas_none.in 4 "" "2 2 1"
 sed 's/^fix             3 all wall\/gran .*$/&\nfix             5 all deform 1 x erate -0.8 y erate 0.6 z final 0 12.5 units box/' wall.in > dwall.in
 ref_run dwall.in
 same deform_walls_np4_z dwall.in 4 "" "1 2 2"
+
+# triclinic boxes: the bricks are slabs of the lamda coordinates (LAMMPS's
+# decomposition of a tilted box), the ghost cut-off in lamda is the cut-off
+# over the box's width across each pair of faces; the hot gas in a box
+# tilted in xy, xz and yz that fix deform keeps tilting (remap x), on the
+# default grids, in tilted x slabs, flipping xy (and balanced: cuts in
+# lamda), with remap v; LAMMPS's multi/in.granular (2d triclinic, fix
+# nph/sphere, fix deform xy, neighbor multi) on 2 ranks
+cat > tri.in <<'IN'
+variable        fx index "xy erate 0.5 yz vel 0.3 xz erate -0.4"
+variable        remap index x
+variable        xy index 3.0
+units           lj
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+lattice         sc 1.0 origin 0.25 0.25 0.25
+region          box prism 0 12 0 12 0 12 0 0 0
+create_box      1 box
+create_atoms    1 box
+change_box      all xy final ${xy} remap units box
+change_box      all yz final 1.5 remap units box
+change_box      all xz final -2.0 remap units box
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             2 all deform 1 ${fx} remap ${remap} units box
+timestep        0.0002
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 press pxx pyy pzz pxy pxz pyz epair vol xy xz yz
+thermo_modify   norm no format float %.17g
+thermo          50
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+ref_run tri.in
+check tri_box_tilted '[ "$(rows ref.out | tail -1 | awk "{print \$(NF-2), \$(NF-1), \$NF}")" = "4.080000000000001 -2.8640000000000008 1.5540000000000003" ]'
+same tri_np2 tri.in 2 ""
+same tri_np3 tri.in 3 ""
+same tri_np4_slabs tri.in 4 "" "4 1 1"
+printf 'variable fx index "xy erate 3.0 yz erate -2.0"\nvariable xy index 5.5\n' | cat - tri.in > triflip.in
+sed -e 's/^run             300/balance         1.0 shift xy 10 1.0\n&/' \
+    -e 's/^fix             1 all nve\/sphere/&\nfix             b all balance 50 1.0 shift xz 10 1.05/' triflip.in > tribal.in
+ref_run triflip.in
+check tri_flipped '[ "$(rows ref.out | awk "\$1 == 100 && \$(NF-2) < -5" | wc -l)" -eq 1 ]'
+same tri_flip_np4 triflip.in 4 "" "2 2 1"
+ref_run tribal.in
+same tri_balance_np4 tribal.in 4 "" "2 2 1"
+check tri_balanced 'grep "^  x cuts: 0.0000000 0\.[0-9]* 1.0000000" tri_balance_np4.out | grep -vq " 0.50000000 "'
+printf 'variable fx index "xy erate 0.5 yz erate -0.3 x erate 0.2"\nvariable remap index v\n' | cat - tri.in > triv.in
+ref_run triv.in
+same tri_remap_v_np3 triv.in 3 ""
+if [ -f /usr/share/lammps/examples/multi/in.granular ]; then
+    sed -e 's/^thermo          100/thermo_modify   format float %.17g\nthermo          100/' \
+        -e 's/^run             2000/run             1000/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        /usr/share/lammps/examples/multi/in.granular > mgran.in
+    ref_run mgran.in
+    same lammps_multi_granular_np2 mgran.in 2 ""
+else
+    echo "SKIP mpi_lammps_multi_granular_np2 (/usr/share/lammps/examples missing: make test installs lammps)"
+fi
 
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
