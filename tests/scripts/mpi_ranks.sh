@@ -784,6 +784,25 @@ restart_pair() { # name, writer ranks, reader ranks
 restart_pair restart_np3_to_1 3 1
 restart_pair restart_np1_to_np2 1 2
 restart_pair restart_np2_to_np4 2 4
+# a box that changes during the run through a restart file: the sheared
+# triclinic gas (fix deform) written on 2 ranks and read on 4, the nph/sphere
+# gas (its chains' state in the file) written on 3 and read on 2: each an
+# exact continuation, bit-identical to one process writing and reading
+sed '/^run             300/,$d' tri.in | sed 's/^run             600/run             600\nwrite_restart   t.bin/' > ta.in
+{ echo 'read_restart    t.bin'; grep -E "^(variable|neigh|fix|compute|thermo)" tri.in
+  echo 'run             300'; grep "^write_dump" tri.in; } > tb.in
+grep -v "^write_dump" nph_sphere_gas.in | sed 's/^run             500/run             250\nwrite_restart   n.bin/' > na.in
+{ echo 'read_restart    n.bin'; grep -E "^(pair_|neigh|fix|thermo)" nph_sphere_gas.in
+  echo 'run             250'; grep "^write_dump" nph_sphere_gas.in; } > nb.in
+for c in "t 2 4 restart_triclinic_deform_np2_to_np4 600" "n 3 2 restart_nph_sphere_np3_to_np2 250"; do
+    set -- $c
+    nm=$4 at=$5
+    gr 1 $1a.in bref.a; gr 1 $1b.in bref.out; mv final.dump bref.dump
+    gr "$2" $1a.in "$nm.a"; ra=$?
+    gr "$3" $1b.in "$nm.out"; rb=$?
+    mv final.dump "$nm.dump" 2> /dev/null
+    check "$nm" '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s bref.dump ] && cmp -s bref.dump "$nm.dump" && [ "$(rows bref.out)" = "$(rows "$nm.out")" ] && [ "$(rows "$nm.out" | wc -l)" -ge 4 ] && grep -q "^Restart: exact continuation of step $at$" "$nm.out"'
+done
 # rigid bodies through a restart file written on 2 ranks and read on 3: the same
 # as one process writing and reading (the bodies recomputed from the atoms at
 # the second run's start, as LAMMPS's reinit yes)
