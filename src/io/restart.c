@@ -40,6 +40,7 @@
 #include "args.h"
 #include "atoms.h"
 #include "device.h"
+#include "domain.h"
 #include "engine.h"
 #include "error.h"
 #include "fileio.h"
@@ -1677,8 +1678,16 @@ static void setup_exchange_note(struct gravel *g, char *why, size_t len)
             shrink |= d->bnd[q][0] != BND_F || d->bnd[q][1] != BND_F;
             continue;
         }
-        for (int i = 0; i < a->n; i++)
-            out += a->x[3 * (size_t)i + q] < d->lo[q] || a->x[3 * (size_t)i + q] >= d->hi[q];
+        for (int i = 0; i < a->n; i++) {
+            const double *x = a->x + 3 * (size_t)i;
+            if (d->triclinic) { /* inside a tilted box: lamda in [0, 1) */
+                double lam[3];
+                domain_x2lamda(g, x, lam);
+                out += lam[q] < 0 || lam[q] >= 1;
+            } else {
+                out += x[q] < d->lo[q] || x[q] >= d->hi[q];
+            }
+        }
     }
     why[0] = 0;
     if (out)

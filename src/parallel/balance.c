@@ -135,7 +135,7 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
             } else if (shift & (1u << q)) {
                 double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s);
                 for (int k = 0; k < a->n; k++)
-                    s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+                    s[k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
                 decomp_quantile_cuts(dc, q, s, a->n);
                 free(s);
             }

@@ -6,7 +6,15 @@
 #include <string.h>
 
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
+
+static double cross_norm(const double a[3], const double b[3])
+{
+    double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                   a[0] * b[1] - a[1] * b[0]};
+    return sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+}
 
 void decomp_setup(struct gravel *g, struct decomp *d)
 {
@@ -16,6 +24,14 @@ void decomp_setup(struct gravel *g, struct decomp *d)
     for (int q = 0; q < 3; q++)
         L[q] = dm->hi[q] - dm->lo[q];
     double area[3] = {L[0] * L[1], L[0] * L[2], L[1] * L[2]};
+    if (dm->triclinic) { /* LAMMPS's ProcMap::best_factors: the faces of the edge vectors */
+        double h[6];
+        domain_h(g, h);
+        const double a[3] = {h[0], 0, 0}, b[3] = {h[5], h[1], 0}, c[3] = {h[4], h[3], h[2]};
+        area[0] = cross_norm(a, b);
+        area[1] = cross_norm(a, c);
+        area[2] = cross_norm(b, c);
+    }
     double best = INFINITY;
     int found = 0;
     /* LAMMPS's order: px ascending, then py ascending; the first smallest wins */
@@ -67,13 +83,9 @@ double decomp_cut(const struct decomp *d, int q, int k)
     return d->cut[q] ? d->cut[q][k] : (double)k / d->p[q];
 }
 
-/* brick index of coordinate x in dimension q */
-static int slab(const struct gravel *g, const struct decomp *d, int q, double x)
+/* brick index of the fraction s of the box in dimension q (decomp_fraction) */
+static int slab(const struct decomp *d, int q, double s)
 {
-    const struct domain *dm = &g->dom;
-    double L = dm->hi[q] - dm->lo[q], s = (x - dm->lo[q]) / L;
-    if (dm->periodic[q])
-        s -= floor(s);
     int n = d->p[q];
     if (!d->cut[q]) {
         int k = (int)floor(s * n);
@@ -92,7 +104,10 @@ static int slab(const struct gravel *g, const struct decomp *d, int q, double x)
 
 int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3])
 {
-    return slab(g, d, 0, x[0]) + d->p[0] * (slab(g, d, 1, x[1]) + d->p[1] * slab(g, d, 2, x[2]));
+    double s[3];
+    for (int q = 0; q < 3; q++)
+        s[q] = decomp_fraction(g, q, x);
+    return slab(d, 0, s[0]) + d->p[0] * (slab(d, 1, s[1]) + d->p[1] * slab(d, 2, s[2]));
 }
 
 void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double lo[3],
@@ -107,13 +122,27 @@ void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double 
     }
 }
 
-/* Fraction of the box length of coordinate x in dimension q (periodic: wrapped). */
-double decomp_fraction(const struct gravel *g, int q, double x)
+/* The unclamped fraction of position x in dimension q: (x - lo) / L, or the
+ * lamda coordinate of a triclinic box; periodic: wrapped into [0, 1). */
+double decomp_fraction_raw(const struct gravel *g, int q, const double x[3])
 {
     const struct domain *d = &g->dom;
-    double s = (x - d->lo[q]) / (d->hi[q] - d->lo[q]);
+    double s;
+    if (d->triclinic) {
+        double lam[3];
+        domain_x2lamda(g, x, lam);
+        s = lam[q];
+    } else {
+        s = (x[q] - d->lo[q]) / (d->hi[q] - d->lo[q]);
+    }
     if (d->periodic[q])
         s -= floor(s);
+    return s;
+}
+
+double decomp_fraction(const struct gravel *g, int q, const double x[3])
+{
+    double s = decomp_fraction_raw(g, q, x);
     return s < 0 ? 0 : s > 1 ? 1 : s;
 }
 

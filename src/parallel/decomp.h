@@ -3,7 +3,7 @@
  * The grid is chosen at each run start from the rank count and the box
  * (LAMMPS's ProcMap::onelevel_grid: the factorization of smallest
  * sub-domain surface, `*` free, a given count fixed); bricks split each
- * box length evenly until `balance` or `fix balance` moves the cuts
+ * box length (a triclinic box: each lamda coordinate) evenly until `balance` or `fix balance` moves the cuts
  * (balance.c). */
 #ifndef GR_DECOMP_H
 #define GR_DECOMP_H
@@ -22,9 +22,12 @@ struct decomp {
  * grid stays the same). */
 void decomp_setup(struct gravel *g, struct decomp *d);
 void decomp_free(struct decomp *d);
-/* Fraction of the box length of coordinate x in dimension q (periodic:
- * wrapped; clamped to 0 ... 1). */
-double decomp_fraction(const struct gravel *g, int q, double x);
+/* Fraction of the box of position x in dimension q: (x - lo) / L, in a
+ * triclinic box the lamda coordinate (LAMMPS's bricks of a triclinic box
+ * are slabs of lamda); periodic: wrapped; clamped to 0 ... 1 (the raw form
+ * unclamped). */
+double decomp_fraction(const struct gravel *g, int q, const double x[3]);
+double decomp_fraction_raw(const struct gravel *g, int q, const double x[3]);
 /* Slab cuts of dimension q at the quantiles of the n fractions s (sorted
  * in place; balance's shift); even slabs where the atoms cannot separate
  * them. */
@@ -34,7 +37,8 @@ double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;
  * outside a fixed face: the nearest brick). */
 int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3]);
-/* Brick of rank r: [lo, hi) per dimension. */
+/* Brick of rank r: [lo, hi) per dimension (orthogonal boxes; a triclinic
+ * box's bricks are the slabs decomp_cut gives in lamda). */
 void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double lo[3],
                   double hi[3]);
 

@@ -11,6 +11,7 @@
 #include "comm.h"
 #include "compute.h"
 #include "device.h"
+#include "domain.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
@@ -181,7 +182,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "heat/gran/conduction", "adapt", "property/atom",
                                         "heat/flow", "viscous/nonlinear", "momentum",
                                         "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
-                                        "nvt/sphere",
+                                        "nvt/sphere", "deform", "npt", "npt/sphere", "nph",
+                                        "nph/sphere",
                                         "particletemplate/multisphere", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -223,8 +225,6 @@ static void check_scene(struct gravel *g)
 {
     const char *why = NULL;
     static char buf[160];
-    if (g->dom.triclinic)
-        why = "a triclinic box";
     for (int i = 0; !why && i < g->styles.nfix; i++)
         if (!listed(par_fixes, g->styles.fix[i]->style->name)) {
             snprintf(buf, sizeof buf, "fix %s (%.60s)", g->styles.fix[i]->id,
@@ -245,8 +245,10 @@ static void check_scene(struct gravel *g)
     static const char *const kw[] = {"step", "elapsed", "elaplong", "atoms", "dt", "time", "cpu",
                                      "tpcpu", "spcpu", "cpuremain", "part", "temp", "ke",
                                      "vol", "lx", "ly", "lz", "xlo", "xhi", "ylo", "yhi",
-                                     "zlo", "zhi", "press", "pxx", "pyy", "pzz", "pxy",
-                                     "pxz", "pyz", "epair", "emol", "pe", "etotal", NULL};
+                                     "zlo", "zhi", "xy", "xz", "yz", "cella", "cellb", "cellc",
+                                     "cellalpha", "cellbeta", "cellgamma", "press", "pxx",
+                                     "pyy", "pzz", "pxy", "pxz", "pyz", "epair", "emol", "pe",
+                                     "etotal", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
         if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))
@@ -645,18 +647,40 @@ static int dest_of(const int64_t *tagdest, int n, int64_t tag)
     return -1;
 }
 
+/* Per dimension, the box's width across its faces: the length of an
+ * orthogonal box, 1 / |row q of h^-1| in a triclinic one (the distance
+ * between the faces lamda_q = 0 and 1). A ghost cut-off c is c / width in
+ * lamda (LAMMPS's cutghost of a triclinic box), so the ghosts of a brick
+ * are the atoms within that of its lamda slabs: every atom within c of the
+ * brick, and a few more. */
+static void box_widths(const struct gravel *g, double W[3])
+{
+    const struct domain *d = &g->dom;
+    for (int q = 0; q < 3; q++)
+        W[q] = d->hi[q] - d->lo[q];
+    if (!d->triclinic)
+        return;
+    double hi[6];
+    domain_h_inv(g, hi);
+    W[0] = 1.0 / sqrt(hi[0] * hi[0] + hi[5] * hi[5] + hi[4] * hi[4]);
+    W[1] = 1.0 / sqrt(hi[1] * hi[1] + hi[3] * hi[3]);
+    W[2] = 1.0 / hi[2];
+}
+
 static void check_bricks(struct gravel *g, const struct par *p, double cut)
 {
     const struct domain *d = &g->dom;
+    double W[3];
+    box_widths(g, W);
     for (int q = 0; q < 3; q++) {
-        double L = d->hi[q] - d->lo[q];
+        double L = W[q];
         for (int k = 0; d->periodic[q] && p->dc.p[q] > 1 && k < p->dc.p[q]; k++) {
             double w = L * (decomp_cut(&p->dc, q, k + 1) - decomp_cut(&p->dc, q, k));
             if (w + 2 * cut >= L)
-                gr_error(g, "%d ranks in periodic %c: a sub-domain %g long plus twice the "
+                gr_error(g, "%d ranks in periodic %c: a sub-domain %g %s plus twice the "
                             "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
-                            "(processors) or even slabs", p->dc.p[q], "xyz"[q], w, cut, L,
-                         "xyz"[q]);
+                            "(processors) or even slabs", p->dc.p[q], "xyz"[q], w,
+                         d->triclinic ? "wide" : "long", cut, L, "xyz"[q]);
         }
     }
 }
@@ -691,7 +715,7 @@ static void rebalance(struct gravel *g, unsigned dims, double thresh)
             continue;
         double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
         for (int k = 0; k < a->n; k++)
-            s[k] = decomp_fraction(g, q, a->x[3 * (size_t)k + q]);
+            s[k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
         size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
         free(s);
         if (b == (size_t)-1)
@@ -732,9 +756,17 @@ void par_exchange(struct gravel *g, double cut)
     int nlost = 0;
     for (int i = 0; i < n; i++) {
         const double *x = a->x + 3 * (size_t)i;
-        int out = 0; /* as the bins of one process: [lo, hi) */
-        for (int q = 0; q < 3; q++)
-            out = out || (!dm->periodic[q] && !(x[q] >= dm->lo[q] && x[q] < dm->hi[q]));
+        int out = 0; /* as the bins of one process: [lo, hi) (triclinic: lamda in [0, 1)) */
+        for (int q = 0; q < 3; q++) {
+            if (dm->periodic[q])
+                continue;
+            if (dm->triclinic) {
+                double s = decomp_fraction_raw(g, q, x);
+                out = out || !(s >= 0 && s < 1);
+            } else {
+                out = out || !(x[q] >= dm->lo[q] && x[q] < dm->hi[q]);
+            }
+        }
         if (out && g->thermo.lost == LOST_ERROR)
             gr_error(g, "Lost atoms: atom %lld at %g %g %g left the box through a fixed face "
                         "at step %lld; thermo_modify lost ignore|warn keeps going",
@@ -813,8 +845,33 @@ void par_exchange(struct gravel *g, double cut)
     p->recvn = gr_realloc(g, p->recvn, (size_t)P * sizeof(int));
     double (*blo)[3] = gr_malloc(g, (size_t)P * sizeof *blo);
     double (*bhi)[3] = gr_malloc(g, (size_t)P * sizeof *bhi);
-    for (int r = 0; r < P; r++)
-        decomp_brick(g, &p->dc, r, blo[r], bhi[r]);
+    /* per dimension: the coordinate tested, its period and the cut-off in it
+     * (an orthogonal box: x, L and cut; a triclinic one: lamda, 1 and cut
+     * over the width across the faces) */
+    double per[3], cuts[3], W[3];
+    double *lam = NULL;
+    box_widths(g, W);
+    for (int q = 0; q < 3; q++) {
+        per[q] = dm->triclinic ? 1.0 : dm->hi[q] - dm->lo[q];
+        cuts[q] = dm->triclinic ? cut / W[q] : cut;
+    }
+    for (int r = 0; r < P; r++) {
+        if (!dm->triclinic) {
+            decomp_brick(g, &p->dc, r, blo[r], bhi[r]);
+            continue;
+        }
+        int c[3] = {r % p->dc.p[0], r / p->dc.p[0] % p->dc.p[1], r / (p->dc.p[0] * p->dc.p[1])};
+        for (int q = 0; q < 3; q++) {
+            blo[r][q] = decomp_cut(&p->dc, q, c[q]);
+            bhi[r][q] = decomp_cut(&p->dc, q, c[q] + 1);
+        }
+    }
+    if (dm->triclinic) {
+        lam = gr_malloc(g, (3 * (size_t)nlocal + 1) * sizeof *lam);
+        for (int i = 0; i < nlocal; i++)
+            for (int q = 0; q < 3; q++)
+                lam[3 * (size_t)i + q] = decomp_fraction_raw(g, q, a->x + 3 * (size_t)i);
+    }
     outbox_init(g, &ob, P);
     int nsend = 0, cap = nlocal + 16;
     int *idx = gr_malloc(g, (size_t)cap * sizeof(int)), *rk = gr_malloc(g, (size_t)cap * sizeof(int));
@@ -823,11 +880,10 @@ void par_exchange(struct gravel *g, double cut)
         if (r == me)
             continue;
         for (int i = 0; i < nlocal; i++) {
-            const double *x = a->x + 3 * (size_t)i;
+            const double *x = lam ? lam + 3 * (size_t)i : a->x + 3 * (size_t)i;
             int near = 1;
             for (int q = 0; q < 3 && near; q++)
-                near = gap(x[q], blo[r][q], bhi[r][q], dm->hi[q] - dm->lo[q],
-                           dm->periodic[q]) <= cut;
+                near = gap(x[q], blo[r][q], bhi[r][q], per[q], dm->periodic[q]) <= cuts[q];
             if (!near)
                 continue;
             if (nsend == cap) {
@@ -842,6 +898,7 @@ void par_exchange(struct gravel *g, double cut)
         }
     }
     free(rk);
+    free(lam);
     p->sendidx = idx; /* rank by rank, as the loop above sent them */
     p->soff[0] = 0;
     for (int r = 0; r < P; r++)

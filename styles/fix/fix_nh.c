@@ -40,6 +40,7 @@
 #include "fix_deform.h"
 #include "fix_nh.h"
 #include "group.h"
+#include "par.h"
 #include "par_sum.h"
 #include "pressure.h"
 #include "temperature.h"
@@ -631,7 +632,9 @@ static void nhc_press_integrate(struct gravel *g, struct nh *n)
 
 static void nh_omega_dot(struct gravel *g, struct nh *n)
 {
-    double vol = volume(g), nktv2p = 1.0, natoms = (double)g->atoms.n;
+    /* every rank's atoms (LAMMPS's natoms): one rank's count would give each
+     * rank its own barostat and box */
+    double vol = volume(g), nktv2p = 1.0, natoms = (double)par_natoms(g);
     if (n->deviatoric) /* h sigma h^t, its diagonal */
         for (int d = 0; d < 3; d++) {
             double h = g->dom.hi[d] - g->dom.lo[d];
@@ -727,8 +730,8 @@ void fix_nh_setup(struct gravel *g, struct fix *f)
                                  n->eta_mass[ich];
     }
     if (n->pstat) {
-        /* W = (N + 1) kT / p_freq^2 (LAMMPS since 2019) */
-        double kt = boltz * n->t_target, nkt = ((double)g->atoms.n + 1) * kt;
+        /* W = (N + 1) kT / p_freq^2 (LAMMPS since 2019), N over every rank */
+        double kt = boltz * n->t_target, nkt = ((double)par_natoms(g) + 1) * kt;
         for (int d = 0; d < 3; d++)
             if (n->p_flag[d])
                 n->omega_mass[d] = nkt / (n->p_freq[d] * n->p_freq[d]);

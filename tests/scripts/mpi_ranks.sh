@@ -11,7 +11,9 @@
 # insert/stream, the meshGran, heatTransfer_1 and packing (fix adapt) tutorials,
 # cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
-# file), three fix pour decks, and the
+# file), three fix pour decks, a gas whose box fix deform changes every
+# step (every remap), the barostats nph and npt (and /sphere), triclinic
+# boxes (tilted, sheared, flipped, balanced; LAMMPS's multi/in.granular), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
 # single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, dump local of
@@ -477,6 +479,119 @@ for d in nvt_sphere_gas nvt_lj; do
     same ${d}_np3 $d.in 3 ""
 done
 
+# the barostats fix nph, npt and their /sphere forms: the box dilation, the
+# barostat's mass and its MTK terms from every rank's atom count, the kinetic
+# tensor and the pair virial summed over every rank's atoms in tag order
+# (LAMMPS's nph/npt decks of tests/reference/fix_nh replicated along x; their
+# thermo every 5 steps)
+for d in nph_xyz_lj npt_aniso_lj nph_sphere_gas npt_sphere_gas nph_sphere_disc; do
+    sed -e 's/^\(fix .*all np[th].*\)$/replicate 3 1 1\n\1/' \
+        -e 's/^thermo_modify   format float %.15g/thermo_modify   format float %.17g/' \
+        -e 's/^thermo          [0-9]*$/thermo          5/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        "$root/tests/reference/fix_nh/$d.in" > $d.in
+    ref_run $d.in
+    case $d in
+    nph_xyz_lj | nph_sphere_gas) same ${d}_np2 $d.in 2 ""; same ${d}_np3 $d.in 3 "" ;;
+    npt_sphere_gas) same ${d}_np3 $d.in 3 "" ;;
+    *) same ${d}_np2 $d.in 2 "" ;;
+    esac
+done
+check barostat_box_moved '[ "$(rows ref.out | head -1 | awk "{print \$NF}")" != "$(rows ref.out | tail -1 | awk "{print \$NF}")" ]'
+
+# fix deform on orthogonal boxes: the box changes every step, the bricks and
+# ghost cut-offs follow it at each rebuild, the atoms cross bricks as the box
+# and the gas move; erate, final and vel with remap x, then a second run with
+# N = 5, scale and delta (the hot gas: every face); wiggle, trate and volume
+# with remap v; final and erate with remap none (the bricks' faces sweep
+# through atoms that stay); a gas under gravity between plane walls with a
+# moving fixed z face
+sed -e 's/^fix             1 all nve\/sphere/&\nfix             2 all deform 1 ${fx} remap ${remap} units box/' \
+    -e 's/^thermo_modify   norm no/thermo_style    custom step ke c_1 press pxx pyy pzz pxy epair vol lx ly lz xlo yhi\n&/' \
+    -e 's/^run             300/unfix           2\nfix             2 all deform 5 x scale 0.9 y delta -0.3 0.2 remap ${remap}\n&/' \
+    -e 's/^variable        pz index 0/variable        remap index x/' gas.in > dgas.in
+printf 'variable fx index "x erate 0.5 y final 0 10.5 z vel -0.8"\n' | cat - dgas.in > dgas_x.in
+printf 'variable fx index "x trate 2.0 y wiggle 1.0 0.05 z volume"\nvariable remap index v\n' | cat - dgas.in > dgas_v.in
+printf 'variable fx index "x final -1 10 y erate -1.5"\nvariable remap index none\n' | cat - dgas.in > dgas_none.in
+ref_run dgas_x.in
+check deform_box_moved '[ "$(rows ref.out | tail -1 | awk "{print \$11, \$12}")" = "11.447999999999999 11" ]'
+same deform_np2 dgas_x.in 2 ""
+same deform_np3 dgas_x.in 3 ""
+ref_run dgas_v.in
+same deform_remap_v_np3 dgas_v.in 3 ""
+ref_run dgas_none.in
+same deform_remap_none_np4 dgas_none.in 4 "" "2 2 1"
+sed 's/^fix             3 all wall\/gran .*$/&\nfix             5 all deform 1 x erate -0.8 y erate 0.6 z final 0 12.5 units box/' wall.in > dwall.in
+ref_run dwall.in
+same deform_walls_np4_z dwall.in 4 "" "1 2 2"
+
+# triclinic boxes: the bricks are slabs of the lamda coordinates (LAMMPS's
+# decomposition of a tilted box), the ghost cut-off in lamda is the cut-off
+# over the box's width across each pair of faces; the hot gas in a box
+# tilted in xy, xz and yz that fix deform keeps tilting (remap x), on the
+# default grids, in tilted x slabs, flipping xy (and balanced: cuts in
+# lamda), with remap v; LAMMPS's multi/in.granular (2d triclinic, fix
+# nph/sphere, fix deform xy, neighbor multi) on 2 ranks
+cat > tri.in <<'IN'
+variable        fx index "xy erate 0.5 yz vel 0.3 xz erate -0.4"
+variable        remap index x
+variable        xy index 3.0
+units           lj
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+lattice         sc 1.0 origin 0.25 0.25 0.25
+region          box prism 0 12 0 12 0 12 0 0 0
+create_box      1 box
+create_atoms    1 box
+change_box      all xy final ${xy} remap units box
+change_box      all yz final 1.5 remap units box
+change_box      all xz final -2.0 remap units box
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             2 all deform 1 ${fx} remap ${remap} units box
+timestep        0.0002
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 press pxx pyy pzz pxy pxz pyz epair vol xy xz yz
+thermo_modify   norm no format float %.17g
+thermo          50
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+ref_run tri.in
+check tri_box_tilted '[ "$(rows ref.out | tail -1 | awk "{print \$(NF-2), \$(NF-1), \$NF}")" = "4.080000000000001 -2.8640000000000008 1.5540000000000003" ]'
+same tri_np2 tri.in 2 ""
+same tri_np3 tri.in 3 ""
+same tri_np4_slabs tri.in 4 "" "4 1 1"
+printf 'variable fx index "xy erate 3.0 yz erate -2.0"\nvariable xy index 5.5\n' | cat - tri.in > triflip.in
+sed -e 's/^run             300/balance         1.0 shift xy 10 1.0\n&/' \
+    -e 's/^fix             1 all nve\/sphere/&\nfix             b all balance 50 1.0 shift xz 10 1.05/' triflip.in > tribal.in
+ref_run triflip.in
+check tri_flipped '[ "$(rows ref.out | awk "\$1 == 100 && \$(NF-2) < -5" | wc -l)" -eq 1 ]'
+same tri_flip_np4 triflip.in 4 "" "2 2 1"
+ref_run tribal.in
+same tri_balance_np4 tribal.in 4 "" "2 2 1"
+check tri_balanced 'grep "^  x cuts: 0.0000000 0\.[0-9]* 1.0000000" tri_balance_np4.out | grep -vq " 0.50000000 "'
+printf 'variable fx index "xy erate 0.5 yz erate -0.3 x erate 0.2"\nvariable remap index v\n' | cat - tri.in > triv.in
+ref_run triv.in
+same tri_remap_v_np3 triv.in 3 ""
+if [ -f /usr/share/lammps/examples/multi/in.granular ]; then
+    sed -e 's/^thermo          100/thermo_modify   format float %.17g\nthermo          100/' \
+        -e 's/^run             2000/run             1000/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        /usr/share/lammps/examples/multi/in.granular > mgran.in
+    ref_run mgran.in
+    same lammps_multi_granular_np2 mgran.in 2 ""
+else
+    echo "SKIP mpi_lammps_multi_granular_np2 (/usr/share/lammps/examples missing: make test installs lammps)"
+fi
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
@@ -669,6 +784,25 @@ restart_pair() { # name, writer ranks, reader ranks
 restart_pair restart_np3_to_1 3 1
 restart_pair restart_np1_to_np2 1 2
 restart_pair restart_np2_to_np4 2 4
+# a box that changes during the run through a restart file: the sheared
+# triclinic gas (fix deform) written on 2 ranks and read on 4, the nph/sphere
+# gas (its chains' state in the file) written on 3 and read on 2: each an
+# exact continuation, bit-identical to one process writing and reading
+sed '/^run             300/,$d' tri.in | sed 's/^run             600/run             600\nwrite_restart   t.bin/' > ta.in
+{ echo 'read_restart    t.bin'; grep -E "^(variable|neigh|fix|compute|thermo)" tri.in
+  echo 'run             300'; grep "^write_dump" tri.in; } > tb.in
+grep -v "^write_dump" nph_sphere_gas.in | sed 's/^run             500/run             250\nwrite_restart   n.bin/' > na.in
+{ echo 'read_restart    n.bin'; grep -E "^(pair_|neigh|fix|thermo)" nph_sphere_gas.in
+  echo 'run             250'; grep "^write_dump" nph_sphere_gas.in; } > nb.in
+for c in "t 2 4 restart_triclinic_deform_np2_to_np4 600" "n 3 2 restart_nph_sphere_np3_to_np2 250"; do
+    set -- $c
+    nm=$4 at=$5
+    gr 1 $1a.in bref.a; gr 1 $1b.in bref.out; mv final.dump bref.dump
+    gr "$2" $1a.in "$nm.a"; ra=$?
+    gr "$3" $1b.in "$nm.out"; rb=$?
+    mv final.dump "$nm.dump" 2> /dev/null
+    check "$nm" '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s bref.dump ] && cmp -s bref.dump "$nm.dump" && [ "$(rows bref.out)" = "$(rows "$nm.out")" ] && [ "$(rows "$nm.out" | wc -l)" -ge 4 ] && grep -q "^Restart: exact continuation of step $at$" "$nm.out"'
+done
 # rigid bodies through a restart file written on 2 ranks and read on 3: the same
 # as one process writing and reading (the bodies recomputed from the atoms at
 # the second run's start, as LAMMPS's reinit yes)
@@ -732,9 +866,9 @@ same momentum_np2 mom.in 2 ""
 same momentum_np3 mom.in 3 ""
 
 # what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all deform 1 x scale 1.0/' chute.in > ave.in
+sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/pair zplane 0.0 NULL/' chute.in > ave.in
 mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (deform)" ave.out'
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (wall/pair)" ave.out'
 # a variable reading a fix whose value may be one rank's part
 # a variable reading fix ave/time (its compute input sampled as one process): the same bits
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
