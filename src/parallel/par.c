@@ -171,7 +171,7 @@ static size_t all_rows_bytes(void)
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "wall/gran",
-                                        "wall/gran/region", "balance", "mesh/surface",
+                                        "wall/gran/region", "wall/pair", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk",
                                         "ave/histo", "drag", "property/global",
                                         "mesh/surface/stress", "mesh/surface/planar",

@@ -865,10 +865,30 @@ ref_run mom.in
 same momentum_np2 mom.in 2 ""
 same momentum_np3 mom.in 3 ""
 
-# what cannot run across ranks yet stops every rank, one message, exit 1
-sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all wall\/pair zplane 0.0 NULL/' chute.in > ave.in
-mpirun -np 2 "$par" -in ave.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "fix 4 (wall/pair)" ave.out'
+# fix wall/pair (a wall with the pair style's law: hertz/mindlin with rolling
+# resistance, two materials) on flat faces and on the example mill's turning mesh
+sed -e 's|^create_box      1 box|create_box      2 box|' \
+    -e 's|^set             group all diameter 0.9 density 1.9098593|&\nset             type 1 type/fraction 2 0.3 77|' \
+    -e 's|^pair_style .*|pair_style      hertz/mindlin 200000.0 0.3 0.5 0.5 rolling 0.1|' \
+    -e 's|^pair_coeff      \* \*|&\npair_coeff      1 2 200000.0 0.3 0.6 0.4 rolling 0.05|' \
+    -e 's|^fix             3 all wall/gran .*|fix             3 all wall/pair zplane 0.0 12.0|' \
+    -e '/^region          ball/d' -e '/^region          core/d' -e '/^delete_atoms/d' -e '/^fix             4/d' wall.in > wallp.in
+ref_run wallp.in
+check wall_pair_ran '[ "$(grep -c "wall/pair" wallp.in)" -eq 1 ] && [ "$(rows ref.out | wc -l)" -ge 5 ]'
+same wall_pair_np3 wallp.in 3 ""
+sed -e 's|^pair_style .*|pair_style      hertz/mindlin 400000.0 0.3 0.5 0.5 rolling 0.05|' \
+    -e 's|^fix             3 all wall/gran .*|fix             3 all wall/pair mesh n_meshes 1 meshes mill|' mill.in > millp.in
+ref_run millp.in "-var nsteps 1200"
+check wall_pair_mesh_force_seen '[ "$(rows ref.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
+same wall_pair_mesh_np3 millp.in 3 "-var nsteps 1200"
+
+# what cannot run across ranks yet stops every rank, one message, exit 1 (rerun
+# of the chute's own dump)
+sed -e '/^dump/d' -e '/^run  /d' -e '/^write_dump/d' chute.in > rr.in
+echo 'rerun final.dump dump x y z vx vy vz' >> rr.in
+"$serial" -in chute.in -log none > /dev/null 2>&1
+mpirun -np 2 "$par" -in rr.in -log none > ave.out 2>&1; rc=$?
+check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "rerun cannot run" ave.out'
 # a variable reading a fix whose value may be one rank's part
 # a variable reading fix ave/time (its compute input sampled as one process): the same bits
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
