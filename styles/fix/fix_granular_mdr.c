@@ -23,7 +23,8 @@
  * of atoms: contacts are visited in ascending (lower tag, higher tag), so
  * each atom's sums run in ascending partner tag and nothing depends on the
  * memory order. The atoms' state is kept by tag (so it follows every
- * re-sort) and saved in restart files; the new radii go to the device.
+ * re-sort; commands that renumber atoms refuse while the fix exists) and
+ * saved in restart files; the new radii go to the device.
  * LAMMPS's neighbor lists do not follow the radius growth; here an atom
  * grown by a quarter of the skin since the last build asks a rebuild with
  * cut-offs for the new radii (nbr_radii_changed), which changes no result.
@@ -397,6 +398,7 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
 
 const struct fix_style fix_style_granular_mdr = {
     .name = "granular/mdr",
+    .flags = FIX_STORES_IDS, /* its state is by atom ID: no renumbering */
     .create = create,
     .init = init,
     .pre_force = pre_force,

@@ -18,6 +18,13 @@ with the per-atom bookkeeping of its fix granular/mdr
   radii: the centre distance and the apparent radii every 500 steps and the
   final velocities must agree to 1e-9 relative (measured: 1e-13 or better).
   The apparent radius grows in the plastic collisions (the bookkeeping acts).
+- check_pair_local: compute pair/local p13 (the contact area) and force
+  during a plastic collision against the reference.
+- check_trio: three mutually overlapping spheres (contact penalty up to
+  0.95, bulk response with psi_b 0.99) against the reference stepped the
+  same way.
+- check_order: 64 overlapping spheres in a periodic box give the same bits
+  with and without re-sorting the atoms in memory at every rebuild.
 - check_restart: a run split by write_restart / read_restart continues the
   per-atom state and the contact history exactly (16 digits).
 - check_reference: the reference's own physics (Hertz limit, yield onset,
@@ -466,6 +473,46 @@ def check_trio():
                   f"overlap {seen['bulk']:.3e}; y3 {want[3000][3]:.10f} at step 3000")
 
 
+PACK = """atom_modify sort SORT 0
+units si
+atom_style sphere
+boundary p p p
+lattice sc 1.0
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+set atom * diameter 1.0 density 1000
+set atom 7*20 diameter 1.1
+velocity all create 20 4928459 loop geom
+pair_style granular
+pair_coeff * * mdr 1e9 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0 0.5
+neighbor 0.3 bin
+neigh_modify every 1 delay 0 check no
+fix 1 all nve/sphere
+timestep 1e-6
+compute rs all reduce max radius
+thermo_style custom step ke c_rs press
+thermo_modify format float %.17g
+thermo 500
+run 3000
+"""
+
+
+def check_order():
+    """64 spheres overlapping in a periodic box (many contacts, growing
+    radii): the thermo table is the same bits whether the atoms are
+    re-sorted in memory at every rebuild or never (atom_modify sort 1 / 0)"""
+    rows = []
+    for sort in ("0", "1"):
+        r = subprocess.run([GRAVEL, "-log", "none"], input=PACK.replace("SORT", sort),
+                           capture_output=True, text=True, timeout=300)
+        rows.append(thermo_rows(r.stdout, 4) if r.returncode == 0 else {})
+    a, b = rows
+    ok = len(a) == 7 and a == b and a[3000][1] > 0.55
+    return report("memory_order", ok, f"{len(a)} thermo rows identical: {a == b}; largest "
+                  f"radius {a.get(3000, [0, 0])[1]!r} (0.55 at the start)")
+
+
 def check_restart():
     """run 8000 = run 4000, write_restart, read_restart, run 4000 (mid-collision;
     pair granular's coefficients are given again, as LAMMPS's restart keeps
@@ -501,7 +548,7 @@ def check_restart():
 
 def main():
     bad = check_gravel() + check_collisions() + check_pair_local() + check_trio() + \
-        check_restart() + \
+        check_order() + check_restart() + \
         check_reference()
     return 1 if bad else 0
 
