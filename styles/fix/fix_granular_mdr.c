@@ -55,6 +55,7 @@ struct mdr_fix {
     unsigned char *restart;     /* the state read_restart gave, applied at the next run */
     size_t restart_len;
     bigint builds;              /* the run's neighbor builds when Rlist was taken (-1: none) */
+    int warned;                 /* the plastic-overlap warning was given */
 };
 
 static void destroy(struct fix *f)
@@ -332,6 +333,7 @@ static void pre_force(struct gravel *g, struct fix *f)
 
     /* 4. the forces */
     const unsigned frozen = fix_frozen_groupbit(g);
+    int yield_new = 0;
     for (int m = 0; m < s.nc; m++) {
         const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
         double *h = s.hist + (size_t)c * s.hw, dd[3];
@@ -349,7 +351,15 @@ static void pre_force(struct gravel *g, struct fix *f)
             meff = A->rmass[i];
         struct mdr_atom *a2[2] = {&d->at[A->tag[j]], &d->at[A->tag[i]]};
         const double R2[2] = {A->radius[j], A->radius[i]};
-        mdr_pair_force(&d->mat, h + d->hoff, radsum - r, a2, R2, nrm, meff, !setup);
+        mdr_pair_force(&d->mat, h + d->hoff, radsum - r, a2, R2, nrm, meff, !setup,
+                       &yield_new);
+    }
+    if (yield_new && !d->warned) { /* LAMMPS's words, once */
+        gr_warn(g, "fix granular/mdr: The newly inserted particles have pre-existing overlaps "
+                   "that have caused immediate plastic deformation. This could lead to "
+                   "non-physical results in the MDR model, as it handles some aspects related "
+                   "to plastic deformation incrementally.");
+        d->warned = 1;
     }
     eng_write_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
     free(s.ci);

@@ -191,9 +191,11 @@ static double adhesive(const struct mdr_mat *m, double de, double A, double Ainv
 }
 
 double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct mdr_atom *a[2],
-                      const double R2[2], const double n[3], double meff, int update)
+                      const double R2[2], const double n[3], double meff, int update,
+                      int *yield_new)
 {
     const double Eeff = m->Eeff, Eeffinv = 1.0 / Eeff;
+    const double dmax_before = h[MH_DELTA_MAX];
     /* deltamax follows the overlap even in setup (LAMMPS: an atom created
      * with an overlap) */
     if (delta >= h[MH_DELTA_MAX])
@@ -233,6 +235,8 @@ double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct m
         const double pY = m->Y * (1.75 * exp(-4.4 * dm / R) + 1.0); /* mean yield pressure */
         if (h[MH_YFLAG_0 + s] == 0.0 && d_mdr >= dm) {
             const double phertz = 4 * Eeff * sqrt(d_mdr) / (3 * PI_ * sqrt(R));
+            if (!update && dmax_before == 0.0 && phertz > pY)
+                *yield_new = 1;
             if (update && phertz > pY) {
                 h[MH_YFLAG_0 + s] = 1.0;
                 h[MH_DELTAY_0 + s] = d_mdr;

@@ -70,9 +70,12 @@ void mdr_side_deltas(double dmax, double dp0, double dp1, double delta, double R
  * damping scale is stored, and the two atoms' sums gather this contact.
  * Returns the force (the sides' mean, times the penalty weight) and
  * stores it at h[MH_FN], the mean contact area at h[MH_AC_AVG] (LAMMPS's
- * svector value, compute pair/local p13). */
+ * svector value, compute pair/local p13). *yield_new is set to 1 (else
+ * left) when, without update, a contact never evaluated before is already
+ * past yield (LAMMPS's warning for atoms inserted with a plastic overlap). */
 double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct mdr_atom *a[2],
-                      const double R[2], const double n[3], double meff, int update);
+                      const double R[2], const double n[3], double meff, int update,
+                      int *yield_new);
 
 /* The penalty increment of a contact screened by a central particle at
  * angle alpha (radians) between the directions to the two others
