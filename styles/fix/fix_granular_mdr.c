@@ -30,6 +30,7 @@
  * cut-offs for the new radii (nbr_radii_changed), which changes no result.
  * One MPI rank only (par_refuse). */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,8 +45,23 @@
 #include "pair_granular.h"
 #include "par.h"
 
-/* the per-atom state saved in restart files, in this order (doubles) */
-#define MDR_ATOM_VALS 16
+/* the per-atom state a restart file keeps: these doubles of struct
+ * mdr_atom, in this order, after the atom's tag */
+static const size_t atom_vals[] = {
+    offsetof(struct mdr_atom, Ro),      offsetof(struct mdr_atom, Vgeo),
+    offsetof(struct mdr_atom, Velas),   offsetof(struct mdr_atom, Acon0),
+    offsetof(struct mdr_atom, Acon1),   offsetof(struct mdr_atom, Atot),
+    offsetof(struct mdr_atom, psi),     offsetof(struct mdr_atom, ddelta_bar),
+    offsetof(struct mdr_atom, dRavg),   offsetof(struct mdr_atom, Vcaps),
+    offsetof(struct mdr_atom, eps_bar), offsetof(struct mdr_atom, dRnum),
+    offsetof(struct mdr_atom, dRden),   offsetof(struct mdr_atom, Atot_sum)};
+#define MDR_ATOM_VALS (sizeof atom_vals / sizeof atom_vals[0])
+#define MDR_REC (sizeof(int64_t) + MDR_ATOM_VALS * sizeof(double))
+
+static double *atom_val(struct mdr_atom *a, size_t k)
+{
+    return (double *)((char *)a + atom_vals[k]);
+}
 
 struct mdr_fix {
     struct mdr_mat mat;
@@ -110,22 +126,19 @@ static void init(struct gravel *g, struct fix *f)
     mdr_mat_set(&d->mat, mat[0], mat[1], mat[2], mat[3], mat[4]);
     d->hoff = off;
     d->builds = -1;
-    if (d->restart) { /* read_restart's state: tag, then MDR_ATOM_VALS doubles */
-        const size_t rec = sizeof(int64_t) + MDR_ATOM_VALS * sizeof(double);
-        for (size_t o = 0; o + rec <= d->restart_len; o += rec) {
+    if (d->restart) { /* read_restart's state (atom_vals) */
+        for (size_t o = 0; o + MDR_REC <= d->restart_len; o += MDR_REC) {
             int64_t tag;
-            double v[MDR_ATOM_VALS];
             memcpy(&tag, d->restart + o, sizeof tag);
-            memcpy(v, d->restart + o + sizeof tag, sizeof v);
+            if (tag < 1 || tag > ((int64_t)1 << 40))
+                gr_error(g, "fix granular/mdr: the restart file's state names atom %lld",
+                         (long long)tag);
             grow(g, d, tag);
             struct mdr_atom *a = &d->at[tag];
-            double *fld[MDR_ATOM_VALS] = {&a->Ro,      &a->Vgeo,  &a->Velas,      &a->Acon0,
-                                          &a->Acon1,   &a->Atot,  &a->psi,        &a->ddelta_bar,
-                                          &a->dRavg,   &a->Vcaps, &a->eps_bar,    &a->dRnum,
-                                          &a->dRden,   &a->Atot_sum};
-            for (int k = 0; k < 14; k++)
-                *fld[k] = v[k];
-            a->ready = v[14] != 0;
+            for (size_t k = 0; k < MDR_ATOM_VALS; k++)
+                memcpy(atom_val(a, k), d->restart + o + sizeof tag + k * sizeof(double),
+                       sizeof(double));
+            a->ready = 1;
         }
         free(d->restart);
         d->restart = NULL;
@@ -373,21 +386,18 @@ static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
 {
     (void)g;
     struct mdr_fix *d = f->data;
-    const size_t rec = sizeof(int64_t) + MDR_ATOM_VALS * sizeof(double);
     size_t len = 0;
     for (int64_t t = 0; t < d->cap; t++) {
-        const struct mdr_atom *a = &d->at[t];
+        struct mdr_atom *a = &d->at[t];
         if (!a->ready)
             continue;
-        if (buf && len + rec <= cap) {
-            const double v[MDR_ATOM_VALS] = {a->Ro,    a->Vgeo,    a->Velas,  a->Acon0,
-                                             a->Acon1, a->Atot,    a->psi,    a->ddelta_bar,
-                                             a->dRavg, a->Vcaps,   a->eps_bar, a->dRnum,
-                                             a->dRden, a->Atot_sum, 1.0,      0.0};
+        if (buf && len + MDR_REC <= cap) {
             memcpy(buf + len, &t, sizeof t);
-            memcpy(buf + len + sizeof t, v, sizeof v);
+            for (size_t k = 0; k < MDR_ATOM_VALS; k++)
+                memcpy(buf + len + sizeof t + k * sizeof(double), atom_val(a, k),
+                       sizeof(double));
         }
-        len += rec;
+        len += MDR_REC;
     }
     return len;
 }
@@ -395,10 +405,9 @@ static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct mdr_fix *d = f->data;
-    const size_t rec = sizeof(int64_t) + MDR_ATOM_VALS * sizeof(double);
-    if (len % rec)
+    if (len % MDR_REC)
         gr_error(g, "fix granular/mdr: the restart file's state has %zu bytes, not a multiple "
-                    "of %zu", len, rec);
+                    "of %zu", len, (size_t)MDR_REC);
     free(d->restart);
     d->restart = gr_malloc(g, len ? len : 1);
     memcpy(d->restart, buf, len);
