@@ -16,7 +16,9 @@
  *   GR_H_A, GR_H_ROLL, GR_H_TWIST, GR_H_TOUCH, GR_H_DYN  offsets in the
  *       history row of the contact radius of the last step (mindlin_rescale),
  *       the rolling displacement (3), the twist angle, the JKR touch flag, the
- *       /static models' dynamic flag; HIST_N its width.
+ *       /static models' dynamic flag; GR_H_MDR the mdr block (enum mdr_hist of
+ *       param_layout.h: its normal force, computed on the host by fix
+ *       granular/mdr before the forces); HIST_N its width.
  * They fill a struct gr_layout (constants, folded away) for granular_eval;
  * fix wall/gran granular passes its own layout at run time to
  * granular_eval_l (kernels/fix_wall_gran.cl).
@@ -39,6 +41,7 @@ struct gr_layout {
     int ha, hroll, htwist, htouch, width;
     int wall;
     int hdyn;                   /* the /static models' static (0) / dynamic (1) flag */
+    int hmdr;                   /* the mdr block (pairs only; -1 absent) */
 };
 
 /* ---- normal models: elastic force Fne, knfac (stiffness for tsuji), a ---- */
@@ -429,7 +432,12 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
 
     /* normal */
     REAL Fne, knfac, a;
-    if (jkr) {
+    const int mdr = L.hmdr >= 0 && GR_IS(L.n, GR_N_MDR, nm);
+    if (mdr) { /* the host's force (styles/fix/fix_granular_mdr.c); a for mindlin */
+        Fne = h[L.hmdr + MH_FN];
+        a = sqrt(dR);
+        knfac = 0;
+    } else if (jkr) {
         h[L.htouch] = 1;
         Fne = grn_jkr(p[GR_KN], E, p[GR_COH], Reff, dR, &knfac, &a);
     } else if (GR_IS(L.n, GR_N_HOOKE, nm))
@@ -439,8 +447,15 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     else
         Fne = grn_hertz(E, delta, dR, &knfac, &a);
 
-    const REAL damp_pref = p[GR_DAMP] * grd_factor(L.d, (int)p[GR_DMODEL], meff, a, knfac, Fne,
-                                                        delta);
+    REAL damp_pref;
+    if (mdr) { /* damping mdr: type 1 eta_n0 times the contact's damping scale, type 2
+                * eta_n0 while the scale is not 0 (LAMMPS GranSubModDampingMDR) */
+        const REAL sc = h[L.hmdr + MH_DAMP_SCALE];
+        damp_pref = (int)p[GR_MDR_DTYPE] == 1 ? p[GR_DAMP] * sc
+                                               : (sc == (REAL)0 ? (REAL)0 : p[GR_DAMP]);
+    } else {
+        damp_pref = p[GR_DAMP] * grd_factor(L.d, (int)p[GR_DMODEL], meff, a, knfac, Fne, delta);
+    }
     REAL Fntot = Fne + -damp_pref * vnnr;
     if (p[GR_LIMIT] != (REAL)0 && Fntot < (REAL)0)
         Fntot = 0;
@@ -553,6 +568,9 @@ static inline REAL granular_tcol(const struct contact *c, __global const REAL *p
 #ifndef GR_H_DYN
 #define GR_H_DYN -1
 #endif
+#ifndef GR_H_MDR
+#define GR_H_MDR -1
+#endif
 #ifdef GR_TANG_HISTORY
 #define GR_TANG_HISTORY_ON 1
 #else
@@ -569,7 +587,7 @@ static inline void granular_eval(const struct contact *c, __global const REAL *p
     const struct gr_layout L = {GRN_USED,   GRD_USED,  GRT_USED,   GRR_USED,
                                 GRW_USED,   GR_TANG_HISTORY_ON,    GR_H_A,
                                 GR_H_ROLL,  GR_H_TWIST, GR_H_TOUCH, GR_WIDTH, 0,
-                                GR_H_DYN};
+                                GR_H_DYN,   GR_H_MDR};
     granular_eval_l(c, p, h, out, L);
 }
 static inline REAL granular_eval_tcol(const struct contact *c, __global const REAL *p,

@@ -35,15 +35,31 @@ enum coh_param { COH_KC, COH_AI, COH_BI, COH_AJ, COH_BJ, COH_NPARAM };
  * Coulomb load, marshall's twist stiffness), 0 for today's LAMMPS; the heat
  * model (GR_H_*) and its coefficient; 1 where the pair has LAMMPS's
  * synchronized_verlet (the half-step normal, kernels/pair_granular.cl; 0 on
- * walls). */
+ * walls); the mdr damping type (1: eta_n0 times the contact's damping scale,
+ * 2: eta_n0 alone; GR_DAMP holds eta_n0). */
 enum gr_param { GR_NMODEL, GR_DMODEL, GR_TMODEL, GR_RMODEL, GR_WMODEL, GR_LIMIT,
                 GR_KN, GR_DAMP, GR_COH, GR_KT, GR_GT, GR_MU, GR_KR, GR_GR, GR_MUR,
                 GR_KW, GR_GW, GR_MUW, GR_MUD, GR_2021, GR_HMODEL, GR_HK, GR_SYNC,
-                GR_NPARAM };
-/* LAMMPS's numbering of the sub-models (pair_granular.cpp) */
-enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR };
+                GR_MDR_DTYPE, GR_NPARAM };
+/* LAMMPS's numbering of the sub-models (pair_granular.cpp); mdr last (today's
+ * LAMMPS GranSubModNormalMDR with GranSubModDampingMDR, only together) */
+enum gr_normal { GR_N_HOOKE, GR_N_HERTZ, GR_N_HERTZ_MATERIAL, GR_N_DMT, GR_N_JKR, GR_N_MDR };
 enum gr_damping { GR_D_VELOCITY, GR_D_MASS_VELOCITY, GR_D_VISCOELASTIC, GR_D_TSUJI,
-                  GR_D_COEFF_RESTITUTION /* LAMMPS 2024 */ };
+                  GR_D_COEFF_RESTITUTION /* LAMMPS 2024 */, GR_D_MDR };
+
+/* The mdr block of a pair granular contact's history row (at GR_H_MDR):
+ * LAMMPS's 27 entries of GranSubModNormalMDR (side 0 is the contact seen from
+ * its higher-tag atom, side 1 from its lower-tag atom; the contact's owner is
+ * the lower tag, so side 1 is the owner's), then the normal force of the
+ * step (MH_FN: the two sides' mean, penalty applied) and the mean contact
+ * area (MH_AC_AVG, compute pair/local p13), which fix granular/mdr
+ * computes on the host before the forces (styles/fix/fix_granular_mdr.c) and
+ * the kernel reads. */
+enum mdr_hist { MH_DELTA_MAX, MH_DELTAP_0, MH_DELTAP_1, MH_DELTA_0, MH_DELTA_1, MH_DELTAO_0,
+                MH_DELTAO_1, MH_DELTA_MDR_0, MH_DELTA_MDR_1, MH_DELTA_BULK_0, MH_DELTA_BULK_1,
+                MH_DELTAMAX_MDR_0, MH_DELTAMAX_MDR_1, MH_YFLAG_0, MH_YFLAG_1, MH_DELTAY_0,
+                MH_DELTAY_1, MH_CA_0, MH_CA_1, MH_AADH_0, MH_AADH_1, MH_AC_0, MH_AC_1,
+                MH_EPS_BAR_0, MH_EPS_BAR_1, MH_PENALTY, MH_DAMP_SCALE, MH_FN, MH_AC_AVG, MH_N };
 enum gr_tangential { GR_T_NOHISTORY, GR_T_HISTORY, GR_T_MINDLIN, GR_T_MINDLIN_RESCALE,
                      GR_T_MINDLIN_FORCE, GR_T_MINDLIN_RESCALE_FORCE,
                      GR_T_HISTORY_STATIC, GR_T_MINDLIN_STATIC /* today's LAMMPS */,

@@ -34,9 +34,9 @@ SOURCES = ("tests/unit/*.c", "tests/unit/*.h", "tests/scripts/*.py", "tests/scri
 
 # pair granular sub-model pages: the keywords that name their sub-models
 GRANULAR_SUB = {
-    "pair_granular_normal": r"\b(hooke|hertz|hertz/material|dmt|jkr)\s+[-0-9.e]",
+    "pair_granular_normal": r"\b(hooke|hertz|hertz/material|dmt|jkr|mdr)\s+[-0-9.e]",
     "pair_granular_damping": r"\bdamping\s+(velocity|mass_velocity|viscoelastic|tsuji|"
-                             r"coeff_restitution)\b",
+                             r"coeff_restitution|mdr)\b",
     "pair_granular_tangential": r"\btangential\s+(linear_nohistory|linear_history|mindlin)",
     "pair_granular_heat": r"\bheat\s+(area|radius|none)\b",
     "pair_granular_rolling": r"\brolling\s+sds\b",

@@ -50,7 +50,7 @@ int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct hos
  * when there is none (no history style, no list built yet, atoms changed
  * since): hist is then untouched. Pairs not in the list get zeros. hist
  * needs np * HOST_PAIRS_HIST_MAX doubles. */
-#define HOST_PAIRS_HIST_MAX 16 /* = the engine's GR_HIST_MAX (checked in host_pairs.c) */
+#define HOST_PAIRS_HIST_MAX 40 /* = the engine's GR_HIST_MAX (checked in host_pairs.c) */
 int host_pairs_history(struct gravel *g, const struct host_pair *p, int np, double *hist);
 
 #endif

@@ -51,7 +51,7 @@ struct hook_lists {
     struct fix **force;
 };
 
-#define GR_HIST_MAX 16 /* REALs of contact history per contact, at most */
+#define GR_HIST_MAX 40 /* REALs of contact history per contact, at most */
 
 /* What a finished run reports (thermo_footer prints it LAMMPS-style). */
 /* One quantity over the ranks, as LAMMPS's Finish reports it: min, mean,

@@ -139,6 +139,8 @@ struct pair_caps {
     const struct pair *single_of;
     double (*single)(const struct pair *p, const struct pair_single *s, double *fforce);
     int single_extra;           /* extra values single() fills in s->sv (0: none) */
+    int single_hist;            /* single() reads the contact's stored history for the
+                                 * force too (s->hist; pair granular's mdr) */
     /* why this law's forces turn non-finite, named by a run that stops on a
      * non-finite atom (pair colloid: its overlap stop); NULL: the generic
      * diagnosis (diagnose.h) */

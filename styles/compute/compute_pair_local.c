@@ -139,7 +139,10 @@ static void pl_local(struct gravel *g, struct compute *c)
     int hw = 0;
     if (wants_sv && par_gathered(g)) /* the contacts' history is on each rank's device */
         par_refuse(g, "compute pair/local pN (the contacts' stored history)");
-    if (wants_sv && np > 0) {
+    if ((wants_sv || (pl->needs_single && caps.single_hist)) && np > 0) {
+        if (par_gathered(g))
+            par_refuse(g, "compute pair/local of pair granular's mdr (the contacts' stored "
+                          "history)");
         hist = gr_malloc(g, (size_t)np * HOST_PAIRS_HIST_MAX * sizeof *hist);
         hw = host_pairs_history(g, p, np, hist);
     }

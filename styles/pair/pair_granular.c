@@ -27,6 +27,11 @@
  * in the kernel; refused with linear_nohistory (GranularModel::init) and
  * under -compat lammps2021; a mixed pair runs without it (mix_coeffs).
  *
+ * mdr (today's LAMMPS GranSubModNormalMDR with damping mdr): read here, its
+ * per-atom bookkeeping and normal force computed by fix granular/mdr
+ * (styles/fix/fix_granular_mdr.c), which pair_coeff creates; the kernel
+ * reads that force from the contact's history row (GR_H_MDR).
+ *
  * The scene's kernel holds only the sub-models some type pair uses
  * (describe()): see the build options in kernels/pair_granular.cl. */
 #include <math.h>
@@ -37,8 +42,10 @@
 #include "args.h"
 #include "coeff_check.h"
 #include "collision_time.h"
+#include "command.h"
 #include "device.h"
 #include "error.h"
+#include "fix.h"
 #include "pair.h"
 #include "pair_granular.h"
 
@@ -63,7 +70,7 @@ static const char *const tname[] = {"linear_nohistory", "linear_history", "mindl
 static int after_2021(const struct gr_one *o)
 {
     return o->dm == GR_D_COEFF_RESTITUTION || o->tm == GR_T_HISTORY_CLASSIC ||
-           o->tm == GR_T_MINDLIN_CLASSIC;
+           o->tm == GR_T_MINDLIN_CLASSIC || o->nm == GR_N_MDR;
 }
 
 /* the /static models: a static and a dynamic friction coefficient */
@@ -169,9 +176,10 @@ static void refuse_known(struct gravel *g, const char *who, const char *what, co
 /* `mdr E nu Y gamma psi_b eta_n0` (today's LAMMPS GranSubModNormalMDR; the
  * sixth value was a restitution coefficient before LAMMPS's February 2025
  * patch and is now the damping coefficient eta_n0 of `damping mdr`): read
- * and checked with LAMMPS's own messages (coeffs_to_local). Returns the
- * number of words taken. */
-static int mdr_normal(struct gravel *g, char **argv, int argc, int i, const char *who)
+ * into o and checked with LAMMPS's own messages (coeffs_to_local). Returns
+ * the number of words taken. */
+static int mdr_normal(struct gravel *g, struct gr_one *o, char **argv, int argc, int i,
+                      const char *who)
 {
     static const char *const what[] = {"Young's modulus E", "Poisson's ratio nu",
                                        "yield stress Y", "effective surface energy gamma",
@@ -196,40 +204,48 @@ static int mdr_normal(struct gravel *g, char **argv, int argc, int i, const char
     if (c[5] < 0)
         gr_error(g, "%s: Illegal MDR normal model, damping coefficent must be greater than or "
                     "equal to 0", who);
+    o->nm = GR_N_MDR;
+    o->E = c[0];
+    o->nu = c[1];
+    o->Y = c[2];
+    o->gamma = c[3];
+    o->psi_b = c[4];
+    o->damp = c[5];
     return 7;
 }
 
 /* `damping mdr d_type` (GranSubModDampingMDR): LAMMPS truncates d_type to an
  * integer and takes 1 (eta_n0 sqrt(m_eff 2 E_eff a)) or 2 (eta_n0). Returns
  * the number of words taken. */
-static int mdr_damping(struct gravel *g, char **argv, int argc, int i, const char *who)
+static int mdr_damping(struct gravel *g, struct gr_one *o, char **argv, int argc, int i,
+                       const char *who)
 {
     const double d = num(g, argv, argc, i + 2, "damping type (damping mdr)", who);
     if (!(fabs(d) < 1e9) || ((int)d != 1 && (int)d != 2))
         gr_error(g, "%s: Illegal MDR damping model, damping type must an integer equal to 1 or 2",
                  who);
+    o->dm = GR_D_MDR;
+    o->dtype = (int)d;
     return 3;
 }
 
-/* A line with the mdr normal model or damping mdr, once LAMMPS's own checks
- * have passed: LAMMPS pairs them only with each other (the damping models'
- * init), then gravel refuses the model (doc/styles/pair_granular_normal.md,
- * "mdr"): its force reads the per-atom state of LAMMPS's fix granular/mdr
- * (apparent radius grown by plastic flow, free-area ratio psi, bulk
- * response, contact penalties), which gravel does not keep, and without it
- * the plastic branch is not LAMMPS's mdr. */
-static void mdr_refuse(struct gravel *g, int normal_mdr, int damping_mdr, const char *who)
+/* The mdr normal model and damping mdr go only together (the damping
+ * models' init in LAMMPS); pair granular only: LAMMPS's walls with mdr
+ * (fix wall/gran/region, its wall force magnifier and the walls' share of
+ * the per-atom bookkeeping) are not in gravel yet, and fix wall/gran
+ * LAMMPS refuses. */
+static void mdr_pairing(struct gravel *g, const struct gr_one *o, int allow_cutoff,
+                        const char *who)
 {
-    if (normal_mdr && !damping_mdr)
+    if (o->nm == GR_N_MDR && o->dm != GR_D_MDR)
         gr_error(g, "%s: Only damping mdr may be used with the mdr normal model", who);
-    if (damping_mdr && !normal_mdr)
+    if (o->dm == GR_D_MDR && o->nm != GR_N_MDR)
         gr_error(g, "%s: Damping mdr can only be used with mdr normal model", who);
-    if (normal_mdr)
-        gr_error(g, "%s: normal model 'mdr' of LAMMPS's pair granular is not supported by "
-                    "gravel: its force reads the per-atom state of LAMMPS's fix granular/mdr "
-                    "(apparent radius grown by plastic flow, free surface ratio psi and the "
-                    "bulk response, contact penalties), which gravel does not keep "
-                    "(doc/styles/pair_granular_normal.md)", who);
+    if (o->nm == GR_N_MDR && !allow_cutoff)
+        gr_error(g, "%s: normal model 'mdr' is supported by gravel for pair granular only, "
+                    "not on walls (LAMMPS's fix wall/gran/region mdr walls, with their wall "
+                    "force magnifier, are not in gravel yet; LAMMPS refuses fix wall/gran: "
+                    "doc/styles/pair_granular_normal.md)", who);
 }
 
 double granular_coeff_restitution(double e, int nm)
@@ -271,7 +287,8 @@ static void tsuji(struct gravel *g, struct gr_one *o, const char *who)
 static void check_ranges(struct gravel *g, const struct gr_one *o, int kt_null,
                          const char *who)
 {
-    if (o->nm >= GR_N_HERTZ_MATERIAL) {
+    if (o->nm == GR_N_MDR) { /* checked with LAMMPS's words by mdr_normal */
+    } else if (o->nm >= GR_N_HERTZ_MATERIAL) {
         coeff_check(g, who, "Young's modulus E", o->E, CR_POSITIVE);
         coeff_check(g, who, "Poisson's ratio", o->nu, CR_POISSON);
     } else {
@@ -282,9 +299,9 @@ static void check_ranges(struct gravel *g, const struct gr_one *o, int kt_null,
     else if (o->dm == GR_D_COEFF_RESTITUTION)
         coeff_check(g, who, "restitution coefficient e (damping coeff_restitution)", o->damp,
                     CR_RESTITUTION);
-    else
+    else if (o->dm != GR_D_MDR)
         coeff_check(g, who, "normal damping", o->damp, CR_NONNEG);
-    if (o->nm >= GR_N_DMT)
+    if (o->nm == GR_N_DMT || o->nm == GR_N_JKR)
         coeff_check(g, who, o->nm == GR_N_JKR ? "surface energy" : "cohesion", o->coh,
                     CR_NONNEG);
     if (!kt_null)
@@ -314,7 +331,6 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     o.cutoff = -1;
     o.c2021 = g->opt.lammps2021;
     int kt_null = 0;
-    int normal_mdr = 0, damping_mdr = 0;
     int i = 0;
     while (i < argc) {
         const char *k = argv[i];
@@ -323,10 +339,8 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         int m = lookup(k, nname, 5);
         refuse_known(g, who, "normal", k);
         if (!strcmp(k, "mdr")) {
-            normal_mdr = 1;
-            i += mdr_normal(g, argv, argc, i, who);
+            i += mdr_normal(g, &o, argv, argc, i, who);
         } else if (m >= 0) {
-            normal_mdr = 0;
             o.nm = m;
             o.kn = num(g, argv, argc, i + 1, m <= GR_N_HERTZ ? "normal stiffness kn" : "E", who);
             o.damp = num(g, argv, argc, i + 2, "normal damping", who);
@@ -340,11 +354,9 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
         } else if (!strcmp(k, "damping")) {
             arg_need(g, argc, i, 1, k);
             if (!strcmp(argv[i + 1], "mdr")) {
-                damping_mdr = 1;
-                i += mdr_damping(g, argv, argc, i, who);
+                i += mdr_damping(g, &o, argv, argc, i, who);
                 continue;
             }
-            damping_mdr = 0;
             o.dm = lookup(argv[i + 1], dname, 5);
             refuse_known(g, who, "damping", argv[i + 1]);
             if (o.dm < 0)
@@ -463,9 +475,9 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
                      who, k, allow_cutoff ? "cutoff, " : "");
         }
     }
-    if ((o.nm < 0 && !normal_mdr) || o.tm < 0)
+    if (o.nm < 0 || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
-    mdr_refuse(g, normal_mdr, damping_mdr, who);
+    mdr_pairing(g, &o, allow_cutoff, who);
     check_ranges(g, &o, kt_null, who);
     o.e = o.damp;
     if (o.dm == GR_D_TSUJI)
@@ -509,6 +521,13 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
         for (int J = jlo > I ? jlo : I; J <= jhi; J++)
             *at(t, I, J) = *at(t, J, I) = o;
     p->coeff_set = 1;
+    /* mdr keeps per-atom state in fix granular/mdr: created as LAMMPS's
+     * GranSubModNormalMDR::init creates it when there is none */
+    if (o.nm == GR_N_MDR && !fix_find_style(g, "granular/mdr")) {
+        char id[] = "MDR", grp[] = "all", st[] = "granular/mdr";
+        char *fargv[] = {id, grp, st};
+        cmd_fix(g, 3, fargv);
+    }
 }
 
 static double geo(double a, double b) { return sqrt(a * b); }
@@ -695,6 +714,7 @@ void granular_pack(const struct gr_one *o, double *q)
     q[GR_HMODEL] = o->hm;
     q[GR_HK] = o->hk;
     q[GR_SYNC] = o->sync;
+    q[GR_MDR_DTYPE] = o->dtype;
 }
 
 /* What the scene uses: bit masks per category and the history layout. */
@@ -702,7 +722,7 @@ struct gr_use {
     int n, d, t, r, w;
     int tang_hist, rescale;
     int sync;                   /* some pair has synchronized_verlet */
-    int h_a, h_roll, h_twist, h_touch, h_dyn, width;
+    int h_a, h_roll, h_twist, h_touch, h_dyn, h_mdr, width;
 };
 
 static struct gr_use uses(const struct pair *p)
@@ -730,6 +750,7 @@ static struct gr_use uses(const struct pair *p)
     u.h_twist = u.w & ~(1 << GR_W_NONE) ? off++ : -1;
     u.h_touch = (u.n >> GR_N_JKR) & 1 ? off++ : -1;
     u.h_dyn = u.t & (1 << GR_T_HISTORY_STATIC | 1 << GR_T_MINDLIN_STATIC) ? off++ : -1;
+    u.h_mdr = (u.n >> GR_N_MDR) & 1 ? (off += MH_N) - MH_N : -1;
     u.width = off;
     return u;
 }
@@ -791,6 +812,22 @@ static double granular_single(const struct pair *p, const struct pair_single *s,
     } else {
         for (int d = 0; d < 3; d++)
             vnnr += (s->vi[d] - s->vj[d]) * s->del[d] * rinv;
+    }
+    if (o->nm == GR_N_MDR) { /* the step's force and area, which fix granular/mdr stored:
+                              * the positions have not moved since (LAMMPS recomputes them
+                              * without history update, to the same values) */
+        const double *h = s->hist ? s->hist + uses(p).h_mdr : NULL;
+        if (!h)
+            return 0.0;
+        const double sc = h[MH_DAMP_SCALE];
+        const double dp = o->dtype == 1 ? o->damp * sc : (sc == 0.0 ? 0.0 : o->damp);
+        double Fntot = h[MH_FN] - dp * vnnr;
+        if (o->ld && Fntot < 0.0)
+            Fntot = 0.0;
+        *fforce = Fntot * rinv;
+        if (s->sv)
+            s->sv[12] = h[MH_AC_AVG];
+        return 0.0;
     }
     double meff = s->mi * s->mj / (s->mi + s->mj);
     if (s->frozen_i)
@@ -893,6 +930,10 @@ static void describe(const struct pair *p, struct pair_caps *c)
     c->cut2021_of = p;
     c->single = granular_single;
     c->single_of = p;
+    if (u.h_mdr >= 0) { /* LAMMPS's 12 granular values, then the mdr model's contact area */
+        c->single_extra = 13;
+        c->single_hist = 1;
+    }
     c->tcol_of = p;
     c->collision_time = collision_time;
     if ((u.n >> GR_N_JKR) & 1) {
@@ -920,8 +961,44 @@ static void describe(const struct pair *p, struct pair_caps *c)
         pair_caps_define(c, "GR_H_TWIST", "%d", u.h_twist);
     if (u.h_dyn >= 0)
         pair_caps_define(c, "GR_H_DYN", "%d", u.h_dyn);
+    if (u.h_mdr >= 0)
+        pair_caps_define(c, "GR_H_MDR", "%d", u.h_mdr);
     if (u.sync)
         pair_caps_define(c, "GR_SYNC_USED", NULL);
+}
+
+int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[5])
+{
+    const struct gr_tab *t = p->data;
+    const struct gr_one *m = NULL;
+    int other = 0;
+    for (int i = 1; t && i <= t->nt; i++)
+        for (int j = 1; j <= t->nt; j++) {
+            const struct gr_one *o = at(t, i, j);
+            if (!o->set)
+                continue;
+            if (o->nm != GR_N_MDR) {
+                other = 1;
+                continue;
+            }
+            if (m && (m->E != o->E || m->nu != o->nu || m->Y != o->Y ||
+                      m->gamma != o->gamma || m->psi_b != o->psi_b || m->e != o->e ||
+                      m->dtype != o->dtype))
+                gr_error(g, "fix granular/mdr: Cannot currently define multiple MDR normal "
+                            "models in the pairstyle (types %d %d differ)", i, j);
+            m = o;
+        }
+    if (!m)
+        return -1;
+    if (other)
+        gr_error(g, "fix granular/mdr: Cannot combine MDR normal model with a different normal "
+                    "model in the pairstyle");
+    mat[0] = m->E;
+    mat[1] = m->nu;
+    mat[2] = m->Y;
+    mat[3] = m->gamma;
+    mat[4] = m->psi_b;
+    return uses(p).h_mdr;
 }
 
 const struct pair_style pair_style_granular = {

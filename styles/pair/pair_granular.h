@@ -23,6 +23,9 @@ struct gr_one {
     double hk;                  /* its coefficient */
     int sync;                   /* synchronized_verlet given (pair granular only: the
                                  * walls and surf/granular refuse it) */
+    double Y, gamma, psi_b;     /* mdr: yield stress, surface energy, bulk trigger (with E,
+                                 * nu; damp holds its eta_n0) */
+    int dtype;                  /* damping mdr's type, 1 or 2 */
 };
 
 /* Parse the sub-model keywords of argv[0..argc) into *o as LAMMPS does
@@ -48,5 +51,13 @@ double granular_tsuji(double e, int lammps2021);
  * one), -sqrt(3/2) 2 sqrt(5/6) ln e / sqrt(pi^2 + ln^2 e) for the others
  * (the Hertz one); the kernel multiplies it by sqrt(m Fne / delta). */
 double granular_coeff_restitution(double e, int nm);
+
+struct pair;
+/* The mdr model of pair granular p (fix granular/mdr, LAMMPS's
+ * setup_pre_force checks): -1 when no type pair uses mdr; else every type
+ * pair must be that one model (errors with LAMMPS's words otherwise), mat
+ * gets E, nu, Y, gamma, psi_b and the return is the offset of the mdr block
+ * in the history row (kernels/param_layout.h, enum mdr_hist). */
+int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[5]);
 
 #endif

@@ -740,6 +740,23 @@ same dump_local_np3 loc.in 3 ""
 sed 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4/' loc.in > locp.in
 mpirun -np 2 "$par" -in locp.in -log none > locp.out 2>&1; rc=$?
 check pair_local_history_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" locp.out)" -eq 1 ] && grep -q "compute pair/local pN" locp.out'
+# pair granular's mdr model keeps per-atom state on one rank (fix granular/mdr): refused
+cat > mdr.in <<'IN'
+units si
+atom_style sphere
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+create_atoms 1 single -0.5001 0 0
+create_atoms 1 single 0.5001 0 0
+set atom * diameter 1.0 density 1000
+pair_style granular
+pair_coeff * * mdr 1e9 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0 0.5
+fix 1 all nve/sphere
+timestep 1e-6
+run 10
+IN
+mpirun -np 2 "$par" -in mdr.in -log none > mdr.out 2>&1; rc=$?
+check mdr_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" mdr.out)" -eq 1 ] && grep -q "granular/mdr" mdr.out'
 
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;

@@ -10,9 +10,11 @@ reference a gravel implementation must meet and the evidence for the
 refusal (lammps_granular_mdr.py): the apparent-radius growth of the fix
 changes the force of even one plastic contact.
 
-Scope: one pair contact (no walls, so no wall force magnifier), two atoms
-(so no contact penalty: it needs three mutually overlapping particles);
-the bulk response and the mean surface displacement are kept.
+Scope: pair contacts (no walls, so no wall force magnifier); the bulk
+response and the mean surface displacement are kept; a contact's penalty
+(it needs three mutually overlapping particles) is its attribute `penalty`,
+set by the caller from `penalty_increment` (fix granular/mdr's contact
+screening), 0 for two atoms.
 
 Units are the caller's; E, nu, Y, gamma, psi_b, eta_n0 as in `pair_coeff *
 * mdr E nu Y gamma psi_b eta_n0 damping mdr dtype`."""
@@ -24,12 +26,26 @@ A_FAC = 0.99          # the adhesive contact radius stays below 0.99 a_max
 N_WINDOW = 10.0       # the running mean of the radius increments
 
 
+def csqrt(x):
+    """C's sqrt: NaN below 0 (LAMMPS's Newton-Raphson can step to a negative
+    radius; its NaN then runs the loop out to a = 0)"""
+    return math.sqrt(x) if x >= 0 else float("nan")
+
+
 def f_flat(d, A, B, Es):
     """The MDR force of an elliptical indenter of height A and width B pushed
     d into an elastic half space of plane-strain modulus Es (Part I, the
     sphere on a rigid flat: A = 4R, B = 2R)."""
     x = d / A
     return 0.25 * Es * A * B * (math.acos(1 - 2 * x) - (2 - 4 * x) * math.sqrt(x - x * x))
+
+
+def penalty_increment(alpha):
+    """the penalty a contact gets from one third particle that overlaps both
+    of its atoms, alpha the angle at that third particle between the
+    directions to the contact's two atoms (Zunker et al. 2025): a sigmoid
+    that is ~1 when the third particle sits between them (alpha > pi/2)"""
+    return 1.0 / (1.0 + math.exp(-50.0 * (alpha / math.pi - 0.5)))
 
 
 class Material:
@@ -148,14 +164,14 @@ def adhesive_force(m, de, A, B, a_na, aadh, at_max, h, amax):
     else:
         a = aadh
         for it in range(NR_MAX):
-            base = de - A / 2 + A * math.sqrt(B2 / 4 - a * a) / B
-            fa = base + math.sqrt(2 * math.pi * a * g / Es)
+            base = de - A / 2 + A * csqrt(B2 / 4 - a * a) / B
+            fa = base + csqrt(2 * math.pi * a * g / Es)
             if abs(fa) < NR_EPS1:
                 break
-            df = -a * A / (B * math.sqrt(B2 / 4 - a * a)) + g * math.sqrt(math.pi / 2) / \
-                math.sqrt(a * g * Es)
+            df = -a * A / (B * csqrt(B2 / 4 - a * a)) + g * csqrt(math.pi / 2) / \
+                csqrt(a * g * Es)
             a -= fa / df
-            if abs(fa - (base + math.sqrt(2 * math.pi * a * g / Es))) < NR_EPS2:
+            if abs(fa - (base + csqrt(2 * math.pi * a * g / Es))) < NR_EPS2:
                 break
             if it == NR_MAX - 1:
                 a = 0.0
@@ -176,12 +192,15 @@ class Contact:
         self.atoms = (a, b) if a.tag > b.tag else (b, a)
         self.sides = (Side(), Side())
         self.dmax = 0.0
+        self.penalty = 0.0
+        self.dscale = 0.0  # the damping scale of the last update (LAMMPS's DAMP_SCALE)
 
     def force(self, dtot, vnnr, meff, update=True):
         """the normal force (elastic + damping) at total overlap dtot and
         normal rate vnnr (< 0 approaching); with update the history and the
         atoms' sums advance (LAMMPS's history_update)"""
         m = self.m
+        w = max(1.0 - self.penalty, 0.0)
         if dtot >= self.dmax:
             self.dmax = dtot
         A0, A1 = self.atoms
@@ -242,20 +261,23 @@ class Contact:
             a_damp += aadh if m.gamma > 0 else a_na
             Fb = 0.0 if d_bulk <= 0 else at.Acon0 * d_bulk * m.kappa * Ac / at.Vgeo
             Fs[s] = F + Fb
-            eps = (F + Fb) * (-(Ro - deltao)) / (3 * m.kappa * at.Velas)
+            eps = w * (F + Fb) * (-(Ro - deltao)) / (3 * m.kappa * at.Velas)
             if update:
-                at.Atot_sum += Ac - 2 * math.pi * R * (dm + d_bulk)
-                at.Acon1 += Ac
-                h.Ac = Ac
+                at.Atot_sum += w * (Ac - 2 * math.pi * R * (dm + d_bulk))
+                at.Acon1 += w * Ac
+                h.Ac = w * Ac
                 at.Vcaps += math.pi / 3 * delta * delta * (3 * R - delta)
                 at.eps_bar += eps
                 if d_mdr == dm and h.yflag and F > 0:
                     at.dRnum -= at.Vo * (eps - h.eps)
-                    at.dRnum -= math.pi * ddo * (2 * deltao * Ro - deltao ** 2 + R * R - Ro * Ro)
-                    at.dRden += 2 * math.pi * R * (deltao + R - Ro)
+                    at.dRnum -= w * math.pi * ddo * (2 * deltao * Ro - deltao ** 2 + R * R -
+                                                     Ro * Ro)
+                    at.dRden += w * 2 * math.pi * R * (deltao + R - Ro)
                 h.eps = eps
-        Fe = 0.5 * (Fs[0] + Fs[1])
-        scale = math.sqrt(meff * 2 * m.Es * a_damp) if a_damp > 0 else 0.0
+        Fe = w * 0.5 * (Fs[0] + Fs[1])
+        if update:  # without update (a run's setup) the damping reads the stored scale
+            self.dscale = math.sqrt(meff * 2 * m.Es * a_damp) if a_damp > 0 else 0.0
+        scale = self.dscale
         pref = m.eta * scale if m.dtype == 1 else (m.eta if scale != 0 else 0.0)
         return Fe - pref * vnnr, Fe
 

@@ -1,0 +1,427 @@
+/* fix_granular_mdr.c - `fix ID group granular/mdr` (today's LAMMPS
+ * fix_granular_mdr.cpp): the per-atom bookkeeping of pair granular's mdr
+ * normal model, and that model's normal force. pair_coeff ... mdr creates
+ * it as `fix MDR all granular/mdr` when no such fix exists (LAMMPS's
+ * GranSubModNormalMDR::init does the same).
+ *
+ * Every step before the forces (pre_force; at a run's setup only new atoms
+ * are set up and nothing advances, as LAMMPS's setup_pre_force and its
+ * setup force without history update), on the host, in LAMMPS's order:
+ *   1. each atom's update from the sums its contacts gathered at the step
+ *      before: volumes, free surface ratio psi, apparent radius growth
+ *      (styles/pair/gran_mdr.c, mdr_atom_update); the sums are zeroed;
+ *   2. the contact penalties of particles seen through a third one (every
+ *      three mutually overlapping atoms, Zunker et al. 2025);
+ *   3. each atom's mean surface displacement increment (the bulk response);
+ *   4. each contact's mdr normal force (mdr_pair_force), which advances its
+ *      history, gathers the atoms' sums and leaves the force in the
+ *      contact's history row (MH_FN), where the kernel reads it
+ *      (kernels/pair_granular.cl) and adds damping mdr, friction, rolling
+ *      and twisting.
+ * The work is on the host because every step couples each contact to the
+ * per-atom sums of all of its atoms' contacts and the penalties to triples
+ * of atoms: contacts are visited in ascending (lower tag, higher tag), so
+ * each atom's sums run in ascending partner tag and nothing depends on the
+ * memory order. The atoms' state is kept by tag (so it follows every
+ * re-sort; commands that renumber atoms refuse while the fix exists) and
+ * saved in restart files; the new radii go to the device.
+ * LAMMPS's neighbor lists do not follow the radius growth; here an atom
+ * grown by a quarter of the skin since the last build asks a rebuild with
+ * cut-offs for the new radii (nbr_radii_changed), which changes no result.
+ * One MPI rank only (par_refuse). */
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "device.h"
+#include "domain.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "gran_mdr.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "pair_granular.h"
+#include "par.h"
+
+/* the per-atom state a restart file keeps: these doubles of struct
+ * mdr_atom, in this order, after the atom's tag */
+static const size_t atom_vals[] = {
+    offsetof(struct mdr_atom, Ro),      offsetof(struct mdr_atom, Vgeo),
+    offsetof(struct mdr_atom, Velas),   offsetof(struct mdr_atom, Acon0),
+    offsetof(struct mdr_atom, Acon1),   offsetof(struct mdr_atom, Atot),
+    offsetof(struct mdr_atom, psi),     offsetof(struct mdr_atom, ddelta_bar),
+    offsetof(struct mdr_atom, dRavg),   offsetof(struct mdr_atom, Vcaps),
+    offsetof(struct mdr_atom, eps_bar), offsetof(struct mdr_atom, dRnum),
+    offsetof(struct mdr_atom, dRden),   offsetof(struct mdr_atom, Atot_sum)};
+#define MDR_ATOM_VALS (sizeof atom_vals / sizeof atom_vals[0])
+#define MDR_REC (sizeof(int64_t) + MDR_ATOM_VALS * sizeof(double))
+
+static double *atom_val(struct mdr_atom *a, size_t k)
+{
+    return (double *)((char *)a + atom_vals[k]);
+}
+
+struct mdr_fix {
+    struct mdr_mat mat;
+    int hoff;                   /* the mdr block in the history row */
+    struct mdr_atom *at;        /* by tag */
+    int64_t cap;                /* tags 0 .. cap - 1 held */
+    unsigned char *restart;     /* the state read_restart gave, applied at the next run */
+    size_t restart_len;
+    bigint builds;              /* the run's neighbor builds when Rlist was taken (-1: none) */
+    int warned;                 /* the plastic-overlap warning was given */
+};
+
+static void destroy(struct fix *f)
+{
+    struct mdr_fix *d = f->data;
+    if (d) {
+        free(d->at);
+        free(d->restart);
+        free(d);
+    }
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    (void)argv;
+    if (argc != 0)
+        gr_error(g, "fix granular/mdr takes no arguments, got %d", argc);
+    f->data = gr_calloc(g, 1, sizeof(struct mdr_fix));
+    f->hooks = HOOK_PRE_FORCE;
+}
+
+static void grow(struct gravel *g, struct mdr_fix *d, int64_t tag)
+{
+    if (tag < d->cap)
+        return;
+    int64_t cap = d->cap ? d->cap : 64;
+    while (cap <= tag)
+        cap *= 2;
+    struct mdr_atom *n = realloc(d->at, (size_t)cap * sizeof *n);
+    if (!n)
+        gr_error(g, "fix granular/mdr: out of memory for %lld atoms' state", (long long)cap);
+    memset(n + d->cap, 0, (size_t)(cap - d->cap) * sizeof *n);
+    d->at = n;
+    d->cap = cap;
+}
+
+/* LAMMPS's setup_pre_force checks: pair granular whose every type pair is
+ * the one mdr model; one rank. */
+static void init(struct gravel *g, struct fix *f)
+{
+    struct mdr_fix *d = f->data;
+    const struct pair *p = g->styles.pair;
+    if (!p || strcmp(p->style->name, "granular"))
+        gr_error(g, "fix granular/mdr: Must use pair granular with MDR model");
+    double mat[5];
+    int off = granular_mdr_model(g, p, mat);
+    if (off < 0)
+        gr_error(g, "fix granular/mdr: Must specify MDR normal model with pair granular");
+    if (par_on(g))
+        par_refuse(g, "pair granular's mdr normal model (fix granular/mdr keeps per-atom state "
+                      "and contact penalties on one rank)");
+    mdr_mat_set(&d->mat, mat[0], mat[1], mat[2], mat[3], mat[4]);
+    d->hoff = off;
+    d->builds = -1;
+    if (d->restart) { /* read_restart's state (atom_vals) */
+        for (size_t o = 0; o + MDR_REC <= d->restart_len; o += MDR_REC) {
+            int64_t tag;
+            memcpy(&tag, d->restart + o, sizeof tag);
+            if (tag < 1 || tag > ((int64_t)1 << 40))
+                gr_error(g, "fix granular/mdr: the restart file's state names atom %lld",
+                         (long long)tag);
+            grow(g, d, tag);
+            struct mdr_atom *a = &d->at[tag];
+            for (size_t k = 0; k < MDR_ATOM_VALS; k++)
+                memcpy(atom_val(a, k), d->restart + o + sizeof tag + k * sizeof(double),
+                       sizeof(double));
+            a->ready = 1;
+        }
+        free(d->restart);
+        d->restart = NULL;
+    }
+}
+
+/* contacts in ascending (owner tag, partner tag): the owner is the lower tag */
+static const int64_t *sort_tag;
+static const int *sort_ci, *sort_cj;
+static int cmp_contact(const void *pa, const void *pb)
+{
+    const int a = *(const int *)pa, b = *(const int *)pb;
+    const int64_t ai = sort_tag[sort_ci[a]], bi = sort_tag[sort_ci[b]];
+    if (ai != bi)
+        return ai < bi ? -1 : 1;
+    const int64_t aj = sort_tag[sort_cj[a]], bj = sort_tag[sort_cj[b]];
+    return aj < bj ? -1 : aj > bj;
+}
+
+/* x_j - x_i (minimum image) and its length */
+static double sep(const struct gravel *g, int i, int j, double d[3])
+{
+    const double *x = g->atoms.x;
+    for (int q = 0; q < 3; q++)
+        d[q] = x[3 * j + q] - x[3 * i + q];
+    domain_minimum_image(g, d);
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+struct mdr_scene {
+    int nc, hw, *ci, *cj, *ord;
+    double *hist;
+};
+
+/* The contact of atoms (device indices) i and j in the sorted order, or -1 */
+static int find_contact(const struct gravel *g, const struct mdr_scene *s, int i, int j)
+{
+    const int64_t *tag = g->atoms.tag;
+    int64_t lo = tag[i] < tag[j] ? tag[i] : tag[j], hi = tag[i] < tag[j] ? tag[j] : tag[i];
+    int a = 0, b = s->nc - 1;
+    while (a <= b) {
+        int m = (a + b) / 2, c = s->ord[m];
+        int64_t ti = tag[s->ci[c]], tj = tag[s->cj[c]];
+        if (ti == lo && tj == hi)
+            return c;
+        if (ti < lo || (ti == lo && tj < hi))
+            a = m + 1;
+        else
+            b = m - 1;
+    }
+    return -1;
+}
+
+/* The penalty of every contact: zero, then for every three atoms whose
+ * three pairs overlap (r <= r_i + r_j), the pair across the longest side
+ * gets the increment of the angle at the third atom (LAMMPS's
+ * calculate_contact_penalty; each triple once, lowest tag first). */
+static void penalties(struct gravel *g, struct mdr_fix *d, struct mdr_scene *s)
+{
+    const double *rad = g->atoms.radius;
+    const int64_t *tag = g->atoms.tag;
+    for (int c = 0; c < s->nc; c++)
+        s->hist[(size_t)c * s->hw + d->hoff + MH_PENALTY] = 0.0;
+    int *part = gr_malloc(g, (size_t)(s->nc + 1) * sizeof *part);
+    for (int m = 0; m < s->nc;) { /* one owner's contacts: ord[m .. e) */
+        const int i = s->ci[s->ord[m]];
+        int e = m;
+        while (e < s->nc && s->ci[s->ord[e]] == i)
+            e++;
+        int np = 0;
+        for (int k = m; k < e; k++) {
+            double dd[3];
+            const int j = s->cj[s->ord[k]];
+            if (rad[i] + rad[j] - sep(g, i, j, dd) >= 0.0)
+                part[np++] = s->ord[k];
+        }
+        for (int u = 0; u < np; u++)
+            for (int w = u + 1; w < np; w++) {
+                const int j = s->cj[part[u]], k = s->cj[part[w]];
+                double dij[3], dik[3], djk[3];
+                const double rij = sep(g, i, j, dij), rik = sep(g, i, k, dik);
+                const double rjk = sep(g, j, k, djk);
+                if (rad[j] + rad[k] - rjk < 0.0)
+                    continue;
+                const int cjk = find_contact(g, s, j, k);
+                if (cjk < 0)
+                    gr_error(g, "fix granular/mdr: Contact between a pair of particles was "
+                                "detected by the MDR model, however it is not reflected in the "
+                                "neighbor lists (atoms %lld and %lld). To solve this issue "
+                                "either build the neighbor lists more frequently or increase "
+                                "their size (e.g. increase the skin distance).",
+                             (long long)tag[j], (long long)tag[k]);
+                const double rmax = fmax(rij, fmax(rik, rjk));
+                double c0;
+                int hit;
+                if (rij == rmax) { /* k in the middle: i-j screened */
+                    c0 = (-dik[0] / rik) * (-djk[0] / rjk) + (-dik[1] / rik) * (-djk[1] / rjk) +
+                         (-dik[2] / rik) * (-djk[2] / rjk);
+                    hit = part[u];
+                } else if (rik == rmax) { /* j in the middle: i-k screened */
+                    c0 = (-dij[0] / rij) * (djk[0] / rjk) + (-dij[1] / rij) * (djk[1] / rjk) +
+                         (-dij[2] / rij) * (djk[2] / rjk);
+                    hit = part[w];
+                } else { /* i in the middle: j-k screened */
+                    c0 = (dij[0] / rij) * (dik[0] / rik) + (dij[1] / rij) * (dik[1] / rik) +
+                         (dij[2] / rij) * (dik[2] / rik);
+                    hit = cjk;
+                }
+                s->hist[(size_t)hit * s->hw + d->hoff + MH_PENALTY] += mdr_penalty(acos(c0));
+            }
+        m = e;
+    }
+    free(part);
+}
+
+static void pre_force(struct gravel *g, struct fix *f)
+{
+    struct mdr_fix *d = f->data;
+    const int setup = eng_in_setup(g);
+    run_sync_host(g); /* host order = device order */
+    struct atoms *A = &g->atoms;
+    const int n = A->n;
+    int64_t tmax = 0;
+    for (int i = 0; i < n; i++)
+        tmax = A->tag[i] > tmax ? A->tag[i] : tmax;
+    grow(g, d, tmax);
+    /* 1. the atoms (new ones set up, also at setup) */
+    int moved = 0;
+    for (int i = 0; i < n; i++) {
+        struct mdr_atom *a = &d->at[A->tag[i]];
+        const int fresh = !a->ready;
+        if (fresh)
+            mdr_atom_init(a, A->radius[i]);
+        if (setup && !fresh)
+            continue;
+        const double r0 = A->radius[i];
+        mdr_atom_update(&d->mat, a, &A->radius[i]);
+        moved |= A->radius[i] != r0;
+    }
+    for (int i = 0; i < n; i++) {
+        struct mdr_atom *a = &d->at[A->tag[i]];
+        a->ddelta_bar = 0.0;
+        if (!setup)
+            mdr_atom_zero_sums(a);
+    }
+    struct dev_atoms *da = eng_atoms(g);
+    if (moved && !da->shared)
+        eng_write_reals(g, da->radius, (size_t)n, A->radius);
+    /* the radii the list was built for; a rebuild once one grew by skin / 4 */
+    const bigint builds = g->eng->st.nbuilds;
+    int regrow = 0;
+    for (int i = 0; i < n; i++) {
+        struct mdr_atom *a = &d->at[A->tag[i]];
+        if (builds != d->builds)
+            a->Rlist = A->radius[i];
+        regrow |= A->radius[i] - a->Rlist > 0.25 * g->neigh.skin;
+    }
+    d->builds = builds;
+    if (regrow)
+        nbr_radii_changed(g);
+
+    /* the contacts and their history rows */
+    const struct nbr_list *l = nbr_list(g);
+    struct mdr_scene s = {0};
+    s.nc = l->ncontact;
+    s.hw = g->eng->hist_n;
+    if (s.nc == 0)
+        return;
+    s.ci = gr_malloc(g, (size_t)s.nc * sizeof(int));
+    s.cj = gr_malloc(g, (size_t)s.nc * sizeof(int));
+    s.ord = gr_malloc(g, (size_t)s.nc * sizeof(int));
+    s.hist = gr_malloc(g, (size_t)s.nc * s.hw * sizeof(double));
+    eng_read(g, l->ci, 0, (size_t)s.nc * sizeof(int), s.ci);
+    eng_read(g, l->cj, 0, (size_t)s.nc * sizeof(int), s.cj);
+    eng_read_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
+    for (int c = 0; c < s.nc; c++)
+        s.ord[c] = c;
+    sort_tag = A->tag;
+    sort_ci = s.ci;
+    sort_cj = s.cj;
+    qsort(s.ord, (size_t)s.nc, sizeof(int), cmp_contact);
+
+    /* 2. penalties, 3. mean surface displacements (not at setup) */
+    if (!setup) {
+        penalties(g, d, &s);
+        for (int m = 0; m < s.nc; m++) {
+            const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
+            double *h = s.hist + (size_t)c * s.hw, dd[3];
+            const double r = sep(g, i, j, dd), radsum = A->radius[i] + A->radius[j];
+            if (!(r * r < radsum * radsum))
+                continue; /* step 4 forgets its history */
+            const double delta = radsum - r;
+            const double *hm = h + d->hoff;
+            const double dmax = fmax(hm[MH_DELTA_MAX], delta);
+            double ds[2]; /* side 0: the partner j (higher tag), side 1: the owner i */
+            mdr_side_deltas(dmax, hm[MH_DELTAP_0], hm[MH_DELTAP_1], delta, A->radius[j],
+                            A->radius[i], 0, ds);
+            struct mdr_atom *a0 = &d->at[A->tag[j]], *a1 = &d->at[A->tag[i]];
+            if (a0->Acon0 != 0.0)
+                a0->ddelta_bar += hm[MH_AC_0] / a0->Acon0 * (ds[0] - hm[MH_DELTA_0]);
+            if (a1->Acon0 != 0.0)
+                a1->ddelta_bar += hm[MH_AC_1] / a1->Acon0 * (ds[1] - hm[MH_DELTA_1]);
+        }
+    }
+
+    /* 4. the forces */
+    const unsigned frozen = fix_frozen_groupbit(g);
+    int yield_new = 0;
+    for (int m = 0; m < s.nc; m++) {
+        const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
+        double *h = s.hist + (size_t)c * s.hw, dd[3];
+        const double r = sep(g, i, j, dd), radsum = A->radius[i] + A->radius[j];
+        if (!(r * r < radsum * radsum)) { /* apart: LAMMPS's history is zero */
+            for (int k = 0; k < s.hw - g->eng->hist_owner; k++)
+                h[k] = 0.0;
+            continue;
+        }
+        const double nrm[3] = {-dd[0] / r, -dd[1] / r, -dd[2] / r};
+        double meff = A->rmass[i] * A->rmass[j] / (A->rmass[i] + A->rmass[j]);
+        if (A->mask[i] & frozen)
+            meff = A->rmass[j];
+        if (A->mask[j] & frozen)
+            meff = A->rmass[i];
+        struct mdr_atom *a2[2] = {&d->at[A->tag[j]], &d->at[A->tag[i]]};
+        const double R2[2] = {A->radius[j], A->radius[i]};
+        mdr_pair_force(&d->mat, h + d->hoff, radsum - r, a2, R2, nrm, meff, !setup,
+                       &yield_new);
+    }
+    if (yield_new && !d->warned) { /* LAMMPS's words, once */
+        gr_warn(g, "fix granular/mdr: The newly inserted particles have pre-existing overlaps "
+                   "that have caused immediate plastic deformation. This could lead to "
+                   "non-physical results in the MDR model, as it handles some aspects related "
+                   "to plastic deformation incrementally.");
+        d->warned = 1;
+    }
+    eng_write_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
+    free(s.ci);
+    free(s.cj);
+    free(s.ord);
+    free(s.hist);
+}
+
+/* restart: every atom's state by tag (tags with state only) */
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    struct mdr_fix *d = f->data;
+    size_t len = 0;
+    for (int64_t t = 0; t < d->cap; t++) {
+        struct mdr_atom *a = &d->at[t];
+        if (!a->ready)
+            continue;
+        if (buf && len + MDR_REC <= cap) {
+            memcpy(buf + len, &t, sizeof t);
+            for (size_t k = 0; k < MDR_ATOM_VALS; k++)
+                memcpy(buf + len + sizeof t + k * sizeof(double), atom_val(a, k),
+                       sizeof(double));
+        }
+        len += MDR_REC;
+    }
+    return len;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct mdr_fix *d = f->data;
+    if (len % MDR_REC)
+        gr_error(g, "fix granular/mdr: the restart file's state has %zu bytes, not a multiple "
+                    "of %zu", len, (size_t)MDR_REC);
+    free(d->restart);
+    d->restart = gr_malloc(g, len ? len : 1);
+    memcpy(d->restart, buf, len);
+    d->restart_len = len;
+    init(g, f);
+}
+
+const struct fix_style fix_style_granular_mdr = {
+    .name = "granular/mdr",
+    .flags = FIX_STORES_IDS, /* its state is by atom ID: no renumbering */
+    .create = create,
+    .init = init,
+    .pre_force = pre_force,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+    .destroy = destroy,
+};
