@@ -34,14 +34,15 @@
 /* ---- the particle-particle stage (kernels/pair_loop.cl) ---- */
 
 /* pair_contacts: one work-item per contact; shear is ci when the law keeps
- * no history, omega / rect are v / recf without rotation; temp / recq (the
- * temperatures, the contacts' heat records) are v / recf without HAS_HEAT;
+ * no history, omega is v without rotation; rec the contacts' records
+ * (REC_W REAL each, kernels/pair_loop.cl); temp / recq (the temperatures,
+ * the contacts' heat records) are v / rec without HAS_HEAT;
  * quiet[c] = 1: contact c did not act when last evaluated and its records
  * hold the zeros it wrote (0: unknown, after a rebuild or at a run start) */
 #define KARGS_pair_contacts(X, Y)                                                              \
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)          \
     Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes)               \
-    Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, recf) Y(M, rect)  \
+    Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, rec)             \
     Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq)         \
     Y(MUC, quiet) Y(POS_LO, xlo)
 
@@ -51,7 +52,7 @@
  * store (f when none); recq / heatflow as pair_contacts'; ioff, coff and
  * pcon: the list's (src/engine/neighbor.h) */
 #define KARGS_pair_gather(X, Y)                                                                \
-    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, recf) Y(CM, rect) Y(M, f)             \
+    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(M, f)                          \
     Y(M, torque) Y(CMI, ops) Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store)       \
     Y(M, v) Y(M, omega) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq)       \
     Y(M, heatflow) Y(I, look) Y(PART, atom_step) Y(POS_LO, xlo)

@@ -76,7 +76,7 @@ static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
  * nonzero history is zeroed, and if it acted when last evaluated it writes
  * zero records and turns quiet. */
 static inline void pair_lane_apart(const int c, __global REAL *shear, __global uchar *quiet,
-                                   __global REAL *recf, __global REAL *rect)
+                                   __global REAL *rec)
 {
 #ifdef HAS_HISTORY
     const REAL h0[3] = {0, 0, 0};
@@ -88,12 +88,10 @@ static inline void pair_lane_apart(const int c, __global REAL *shear, __global u
         return;
     quiet[c] = 1;
     const REAL3 f = (REAL3)(0);
-    vstore3(f, c, recf);
-#ifdef PAIR_TC
-    vstore3(f, c, rect);
-#else
-    vstore3(f, 2 * c, rect);
-    vstore3(f, 2 * c + 1, rect);
+    vstore3(f, 0, rec + REC_F(c));
+    vstore3(f, 0, rec + REC_T(c));
+#ifndef PAIR_TC
+    vstore3(f, 0, rec + REC_TJ(c));
 #endif
 }
 
@@ -192,7 +190,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #endif
     if (!any(acts)) { /* no lane touches: only history to forget and records to clear */
         for (int l = 0; l < PAIR_LW && c0 + l < ncontact; l++)
-            pair_lane_apart(c0 + l, shear, quiet, recf, rect);
+            pair_lane_apart(c0 + l, shear, quiet, rec);
         return;
     }
     k.reff = radi * radj / (radi + radj);
@@ -267,7 +265,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
             }
         }
         if (LANE(actsw, l) == (REAL)0) { /* its selects left zeros: as an apart group's */
-            pair_lane_apart(c, shear, quiet, recf, rect);
+            pair_lane_apart(c, shear, quiet, rec);
             continue;
         }
 #ifdef HAS_HISTORY /* contact_hist_store of an acting contact: the whole row */
@@ -276,12 +274,12 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
         if (quiet[c])
             quiet[c] = 0;
         const REAL3 f = (REAL3)(LANE(fx, l), LANE(fy, l), LANE(fz, l));
-        vstore3(f, c, recf);
+        vstore3(f, 0, rec + REC_F(c));
 #ifdef PAIR_TC /* the torque record is tc (pair_loop.cl) */
-        vstore3((REAL3)(LANE(tcx, l), LANE(tcy, l), LANE(tcz, l)), c, rect);
+        vstore3((REAL3)(LANE(tcx, l), LANE(tcy, l), LANE(tcz, l)), 0, rec + REC_T(c));
 #else
-        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), 2 * c, rect);
-        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), 2 * c + 1, rect);
+        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), 0, rec + REC_T(c));
+        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), 0, rec + REC_TJ(c));
 #endif
     }
 #undef LANE

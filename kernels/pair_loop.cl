@@ -5,13 +5,13 @@
  * history, shear[3c ..] is its tangential history, seen from the owner. Each
  * contact is evaluated once, by pair_contacts, through the active evaluator
  * PAIR_EVAL (PAIR_EVAL_ROW: an evaluator taking the contact's whole history
- * row of HIST_N REAL, pair granular), which writes the contact's records at
- * its own index: recf[c] the force F on the owner (the partner receives
- * -F), rect[2c] the owner's torque -radi tc - tr and rect[2c + 1] the
- * partner's -radj tc + tr; for a law without rolling torque (tr = 0,
- * PAIR_TC) rect[c] = tc, and each side's gather takes -rad tc with its own
- * radius (the same products; a sum that starts at +0 is blind to the sign
- * of a zero term, so tr's +-0 is not missed). A particle's row holds its partners in ascending
+ * row of HIST_N REAL, pair granular), which writes the contact's record of
+ * REC_W REAL at its own index c: the force F on the owner (the partner
+ * receives -F), then with rotation the owner's torque -radi tc - tr and the
+ * partner's -radj tc + tr, or, for a law without rolling torque (tr = 0,
+ * PAIR_TC), tc alone, from which each side's gather takes -rad tc with its
+ * own radius (the same products; a sum that starts at +0 is blind to the
+ * sign of a zero term, so tr's +-0 is not missed). A particle's row holds its partners in ascending
  * tag: first those of lower tag (it is their contact's partner: contact
  * pcon[ioff[i] - coff[i] + k] for row slot k), then those it owns (its
  * contacts coff[i] .. coff[i + 1] - 1, in row order); pair_gather sums the
@@ -28,6 +28,18 @@
  *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
+
+/* A contact's record (see the top): F; F tc (PAIR_TC); F ti tj */
+#if defined(HAS_ROTATION) && defined(PAIR_TC)
+#define REC_W 6
+#elif defined(HAS_ROTATION)
+#define REC_W 9
+#else
+#define REC_W 3
+#endif
+#define REC_F(c) ((size_t)(c) * REC_W)
+#define REC_T(c) ((size_t)(c) * REC_W + 3)
+#define REC_TJ(c) ((size_t)(c) * REC_W + 6)
 
 #if defined(PAIR_EVAL) || defined(PAIR_EVAL_ROW)
 /* the pair law's contact body (kernels/contact.cl), with its collision
@@ -135,12 +147,12 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
         return;
     if (was_quiet != !acted)
         quiet[c] = !acted;
-    vstore3(o.f, c, recf);
+    vstore3(o.f, 0, rec + REC_F(c));
 #if defined(HAS_ROTATION) && defined(PAIR_TC)
-    vstore3(o.tc, c, rect);
+    vstore3(o.tc, 0, rec + REC_T(c));
 #elif defined(HAS_ROTATION)
-    vstore3(o.ti, 2 * c, rect);
-    vstore3(o.tj, 2 * c + 1, rect);
+    vstore3(o.ti, 0, rec + REC_T(c));
+    vstore3(o.tj, 0, rec + REC_TJ(c));
 #endif
 #ifdef HAS_HEAT /* the heat record, as the force: the partner receives -q */
     recq[c] = o.q;
@@ -174,22 +186,22 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
     const REAL nr = -radius[i];
 #endif
     for (int s = p0; s < p1; s++) {
-        const size_t c = (size_t)pcon[s];
-        fs -= vload3(c, recf);
+        const int c = pcon[s];
+        fs -= vload3(0, rec + REC_F(c));
 #if defined(HAS_ROTATION) && defined(PAIR_TC)
-        const REAL3 t = nr * vload3(c, rect);
+        const REAL3 t = nr * vload3(0, rec + REC_T(c));
         ts += t;
 #elif defined(HAS_ROTATION)
-        ts += vload3(2 * c + 1, rect);
+        ts += vload3(0, rec + REC_TJ(c));
 #endif
     }
     for (int c = c0; c < c1; c++) {
-        fs += vload3((size_t)c, recf);
+        fs += vload3(0, rec + REC_F(c));
 #if defined(HAS_ROTATION) && defined(PAIR_TC)
-        const REAL3 t = nr * vload3((size_t)c, rect);
+        const REAL3 t = nr * vload3(0, rec + REC_T(c));
         ts += t;
 #elif defined(HAS_ROTATION)
-        ts += vload3(2 * (size_t)c, rect);
+        ts += vload3(0, rec + REC_T(c));
 #endif
     }
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
@@ -258,7 +270,7 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
  * (final_integrate changes velocities only). */
 __kernel void pair_virial(const int n, __global const int *nlist, const int maxn,
                           __global const int *ioff, __global const int *coff,
-                          __global const int *pcon, __global const REAL *recf,
+                          __global const int *pcon, __global const REAL *rec,
                           __global const REAL *x, const REAL Lx, const REAL Ly, const REAL Lz,
                           const REAL xy, const REAL xz, const REAL yz, __global REAL *w)
 {
@@ -273,8 +285,8 @@ __kernel void pair_virial(const int n, __global const int *nlist, const int maxn
         const int j = nlist[(size_t)i * maxn + k];
         REAL3 del = xi - vload3(j, x);
         MINIMG3(del);
-        const REAL3 f = k < nlow ? -vload3((size_t)pcon[p0 + k], recf)
-                                 : vload3((size_t)(c0 + k - nlow), recf);
+        const REAL3 f = k < nlow ? -vload3(0, rec + REC_F(pcon[p0 + k]))
+                                 : vload3(0, rec + REC_F(c0 + k - nlow));
         s += del * f;
         o += (REAL3)(del.x * f.y, del.x * f.z, del.y * f.z);
     }

@@ -39,8 +39,8 @@ struct nbr {
     struct nbr_list list;
     /* contacts of the previous build, for the history transfer: offsets,
      * and (during a rebuild only) history and partners parked in the record
-     * buffers, which are free then (retire_contacts; old_cj_at: offset of
-     * the partners, in ints) */
+     * buffer, which is free then (retire_contacts; old_cj_at: offset of the
+     * partners, in ints) */
     cl_mem coff_old;
     int ncontact_old;
     size_t old_cj_at;
@@ -114,7 +114,7 @@ void nbr_free(struct gravel *g)
     struct nbr *b = g->eng->nbr;
     struct nbr_list *l = &b->list;
     cl_mem *m[] = {&l->nlist, &l->ncount, &l->nown, &l->ioff, &l->coff, &l->ci, &l->cj,
-                   &l->pcon, &l->quiet, &l->shear, &l->recf, &l->rect, &b->coff_old,
+                   &l->pcon, &l->quiet, &l->shear, &l->rec, &b->coff_old,
                    &b->xhold, &b->cellof, &b->perm, &b->counts, &b->start, &b->cursor,
                    &b->sums, &b->flags, &b->ext, &b->excl_type, &b->excl_group, &b->typecut,
                    &b->d_collcut, &b->d_type2coll, &b->d_mgrid, &b->d_minv, &b->d_cutab};
@@ -218,30 +218,16 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
     b->list.maxn = maxn;
 }
 
-/* Bytes per contact of the record buffers (kernels/pair_loop.cl): recf the
- * owner's force, rect (rotation only) the torques (both sides', or the
- * contact's torque tc alone when the law has no rolling torque:
- * e->pair_tc). A rebuild parks the previous contacts' history rows in recf
- * (sized to hold them) and their partners in rect (with rotation) or in
- * recf after the rows (park_partners). */
-static size_t recf_bytes(const struct engine *e)
+/* Bytes per contact of the record buffer (kernels/pair_loop.cl, REC_W):
+ * the owner's force, and with rotation the contact's tc (a law without
+ * rolling torque: e->pair_tc) or both sides' torques. A rebuild parks the
+ * previous contacts' history rows and then their partners there, so it is
+ * sized to hold those too. */
+static size_t rec_bytes(const struct engine *e)
 {
-    size_t own = 3 * e->rsz;
-    size_t park = e->history ? (size_t)e->hist_n * e->rsz + (e->rotation ? 0 : sizeof(cl_int)) : 0;
+    size_t own = (size_t)(!e->rotation ? 3 : e->pair_tc ? 6 : 9) * e->rsz;
+    size_t park = e->history ? (size_t)e->hist_n * e->rsz + sizeof(cl_int) : 0;
     return park > own ? park : own;
-}
-
-static size_t rect_bytes(const struct engine *e) { return (e->pair_tc ? 3 : 6) * e->rsz; }
-
-/* The buffer the previous partners are parked in, and its bytes. */
-static cl_mem park_partners(const struct engine *e, const struct nbr_list *l)
-{
-    return e->rotation ? l->rect : l->recf;
-}
-
-static size_t park_partners_bytes(const struct engine *e, const struct nbr *b)
-{
-    return b->cap_pair * (e->rotation ? rect_bytes(e) : recf_bytes(e));
 }
 
 static size_t grown(size_t nc) { return nc + nc / 8 + 64; }
@@ -255,12 +241,6 @@ static size_t contact_bytes(const struct engine *e)
     return 3 * sizeof(cl_int) + 1 + (e->history ? (size_t)e->hist_n * e->rsz : 0);
 }
 
-/* recf and rect of one contact. */
-static size_t pair_bytes(const struct engine *e)
-{
-    return recf_bytes(e) + (e->rotation ? rect_bytes(e) : 0);
-}
-
 size_t nbr_atom_bytes(struct gravel *g)
 {
     int maxn = get(g)->list.maxn;
@@ -269,7 +249,7 @@ size_t nbr_atom_bytes(struct gravel *g)
 
 size_t nbr_contact_bytes(struct gravel *g)
 {
-    return contact_bytes(g->eng) + pair_bytes(g->eng);
+    return contact_bytes(g->eng) + rec_bytes(g->eng);
 }
 
 size_t nbr_capacity(size_t ncontact) { return grown(ncontact); }
@@ -280,12 +260,12 @@ size_t nbr_held_bytes(struct gravel *g)
     const struct nbr *b = get(g);
     size_t rows = b->list.nlist ? (size_t)e->cap * (size_t)b->list.maxn * sizeof(cl_int) : 0;
     return b->cap_atoms * atom_bytes(e) + rows + b->cap_contact * contact_bytes(e) +
-           b->cap_pair * pair_bytes(e) + 3 * b->cap_cells * sizeof(cl_int);
+           b->cap_pair * rec_bytes(e) + 3 * b->cap_cells * sizeof(cl_int);
 }
 
 /* Contact buffers for at least nc contacts (contents not kept): ci, cj,
- * pcon and shear (cap_contact); the records recf, rect (cap_pair) separately,
- * after the history transfer has read what was parked there. */
+ * pcon and shear (cap_contact); the records (cap_pair) separately, after
+ * the history transfer has read what was parked there. */
 static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct engine *e = g->eng;
@@ -310,19 +290,16 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc > b->cap_pair || !l->recf) {
-        rel(&l->recf);
-        rel(&l->rect);
+    if (nc > b->cap_pair || !l->rec) {
+        rel(&l->rec);
         b->cap_pair = grown(nc);
-        l->recf = eng_alloc(g, b->cap_pair * recf_bytes(g->eng), "contact force records");
-        if (g->eng->rotation)
-            l->rect = eng_alloc(g, b->cap_pair * rect_bytes(g->eng), "contact torque records");
+        l->rec = eng_alloc(g, b->cap_pair * rec_bytes(g->eng), "contact records");
     }
 }
 
 /* The current contacts become the previous ones: offsets swap, history
- * rows (hist_n REAL per contact) are parked in recf from byte 0, partners
- * in park_partners() from int offset old_cj_at. */
+ * rows (hist_n REAL per contact) are parked in the records from byte 0,
+ * partners after them from int offset old_cj_at. */
 static void retire_contacts(struct gravel *g, struct nbr *b)
 {
     struct engine *e = g->eng;
@@ -332,14 +309,13 @@ static void retire_contacts(struct gravel *g, struct nbr *b)
     l->coff = t;
     b->ncontact_old = l->ncontact;
     size_t nc = (size_t)l->ncontact, hist = nc * (size_t)e->hist_n * e->rsz;
-    b->old_cj_at = e->rotation ? 0 : (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
+    b->old_cj_at = (hist + sizeof(cl_int) - 1) / sizeof(cl_int);
     if (nc == 0)
         return;
-    if (hist > b->cap_pair * recf_bytes(e) ||
-        b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > park_partners_bytes(e, b))
-        gr_error(g, "internal error: the record buffers cannot hold the previous contacts");
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->recf, 0, 0, hist, 0, NULL, NULL));
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, park_partners(e, l), 0,
+    if (b->old_cj_at * sizeof(cl_int) + nc * sizeof(cl_int) > b->cap_pair * rec_bytes(e))
+        gr_error(g, "internal error: the record buffer cannot hold the previous contacts");
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->shear, l->rec, 0, 0, hist, 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, l->cj, l->rec, 0,
                                      b->old_cj_at * sizeof(cl_int), nc * sizeof(cl_int), 0,
                                      NULL, NULL));
 }
@@ -557,7 +533,7 @@ void nbr_setup(struct gravel *g)
         b->old_valid = 0;
         b->built = 0;
         struct nbr_list *l = &b->list;
-        cl_mem *m[] = {&l->ci, &l->cj, &l->pcon, &l->quiet, &l->shear, &l->recf, &l->rect};
+        cl_mem *m[] = {&l->ci, &l->cj, &l->pcon, &l->quiet, &l->shear, &l->rec};
         for (size_t i = 0; i < sizeof m / sizeof *m; i++)
             rel(m[i]);
         b->cap_pair = b->cap_contact = 0;
@@ -571,8 +547,7 @@ void nbr_setup(struct gravel *g)
     }
     if (b->rotation != e->rotation || b->pair_tc != e->pair_tc) { /* the records change */
         size_t cap = b->cap_pair;
-        rel(&b->list.rect);
-        rel(&b->list.recf);
+        rel(&b->list.rec);
         b->rotation = e->rotation;
         b->pair_tc = e->pair_tc;
         b->cap_pair = 0;
@@ -1142,8 +1117,8 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
     cl_mem any = l->ci; /* the previous contacts' buffers are not read without them */
     transfer(g, b, have_old ? total : -total, have_old ? b->perm : any, permuted,
-             have_old ? b->coff_old : any, have_old ? park_partners(e, l) : any,
-             (int)b->old_cj_at, have_old ? l->recf : l->shear);
+             have_old ? b->coff_old : any, have_old ? l->rec : any, (int)b->old_cj_at,
+             have_old ? l->rec : l->shear);
     alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
 
@@ -1205,7 +1180,7 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
         k = b->k_hist_rename;
         eng_arg_int(g, k, 0, b->ncontact_old);
         eng_arg_mem(g, k, 1, b->cellof);
-        eng_arg_mem(g, k, 2, park_partners(e, &b->list));
+        eng_arg_mem(g, k, 2, b->list.rec);
         eng_arg_int(g, k, 3, (int)b->old_cj_at);
         eng_launch(g, k, (size_t)b->ncontact_old);
     }

@@ -20,12 +20,12 @@ struct nbr_list {
      * its last nown[i] row slots in order; ci/cj the two atoms; row slot
      * k < ncount[i] - nown[i] of i (a lower-tag partner's contact) is
      * contact pcon[ioff[i] - coff[i] + k]; shear (HIST_N REAL, history
-     * only) seen from ci; the records of the step (kernels/pair_loop.cl):
-     * recf (3 REAL per contact, the owner's force) and rect (rotation
-     * only, 6 REAL: the owner's torque, the partner's); quiet[c] (one byte)
-     * = 1 when contact c did not act at its last evaluation and its records
-     * hold the zeros written then */
-    cl_mem coff, ci, cj, pcon, quiet, shear, recf, rect;
+     * only) seen from ci; rec the records of the step (REC_W REAL per
+     * contact: the owner's force, then with rotation the torques or tc,
+     * kernels/pair_loop.cl); quiet[c] (one byte) = 1 when contact c did
+     * not act at its last evaluation and its record holds the zeros
+     * written then */
+    cl_mem coff, ci, cj, pcon, quiet, shear, rec;
     int ncontact;
     double L[3];            /* periodic lengths (0 = not periodic), for minimum image */
     double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */

@@ -50,7 +50,7 @@ void pressure_virial(struct gravel *g, double w[6])
     eng_arg_mem(g, k, a++, l->ioff);
     eng_arg_mem(g, k, a++, l->coff);
     eng_arg_mem(g, k, a++, l->pcon);
-    eng_arg_mem(g, k, a++, l->recf);
+    eng_arg_mem(g, k, a++, l->rec);
     eng_arg_mem(g, k, a++, e->a.x);
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->virial);

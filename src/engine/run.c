@@ -256,7 +256,7 @@ static cl_mem heat_records(struct gravel *g, size_t ncontact)
 {
     struct engine *e = g->eng;
     if (!e->heat)
-        return nbr_list(g)->recf;
+        return nbr_list(g)->rec;
     size_t need = (ncontact + 1) * e->rsz;
     if (!e->recq || need > e->recq_cap) {
         if (e->recq)
@@ -297,8 +297,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .freezebit = freezebit,
             .dt = g->dt,
             .shearupdate = e->setup ? 0 : 1,
-            .recf = l->recf,
-            .rect = e->rotation ? l->rect : l->recf,
+            .rec = l->rec,
             .acc = acc_pair_rec(g),
             .astep = acc_pair_step(g),
             .step = acc_step(g),
@@ -320,8 +319,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .ioff = l->ioff,
             .coff = l->coff,
             .pcon = l->pcon,
-            .recf = l->recf,
-            .rect = e->rotation ? l->rect : l->recf,
+            .rec = l->rec,
             .f = a->f,
             .torque = e->rotation ? a->torque : a->f,
             .ops = e->fused.ops,
