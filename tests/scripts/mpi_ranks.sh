@@ -673,9 +673,10 @@ ref_run rcb.in
 same rcb_np2 rcb.in 2 ""
 same rcb_np3 rcb.in 3 ""
 same rcb_np4 rcb.in 4 ""
-# the grid (2 x 1 x 2, 3 x 1 x 1) left ranks with 2.5 and 2 times the mean; the
-# tiles hold 720 / N each, and fix balance keeps the last run's ranks within 1 atom
-# of the mean at its end (Nlocal's max and min in the footer)
+# the grid (3 x 1 x 1, 2 x 1 x 2) left ranks with 2.5 and 2 times the mean; the
+# tiles hold 720 / N each (`mpirun -np 3|4 lmp` prints the same loads and factors for
+# this deck's balance rcb: 600 -> 240, 2.5 -> 1; 360 -> 180, 2 -> 1), and fix balance
+# keeps the last run's ranks within 1 atom of the mean at its end (the footer's Nlocal)
 nlocal_spread() { awk '/^Nlocal:/ { s = $4 - $6 } END { print s }' "$1"; }
 check rcb_report 'grep -q "^  initial/final imbalance factor  = 2.5000000 1.0000000$" rcb_np3.out && grep -q "^  initial/final maximal load/proc = 360.00000 180.00000$" rcb_np4.out && grep -q "^  rank 0 tile: x 0.00000 0.625000 y 0.00000 0.450000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^  rank 2 tile: x 0.625000 1.00000 y 0.00000 1.00000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^Decomposition: 3 MPI ranks tiled by rcb" rcb_np3.out'
 check rcb_fix_balanced '[ "$(nlocal_spread rcb_np3.out)" -le 2 ] && [ "$(nlocal_spread rcb_np4.out)" -le 2 ] && [ "$(nlocal_spread rcb_np2.out)" -le 2 ]'
