@@ -253,7 +253,11 @@ static inline void pbc_wrap(REAL *h, REAL *l, int *im, const REAL lo, const REAL
  * most per dimension: z against [loz, hiz) (an image shifts by c), then y
  * against the face through the wrapped z (by b), then x against the faces
  * through y and z (by a); the decisions are LAMMPS's lamda tests
- * 0 <= lamda < 1, with L lamda = the u of box_u. */
+ * 0 <= lamda < 1, with L lamda = the u of box_u. A shift that would put the
+ * atom past the opposite face is not made: the atom sits on a face to
+ * round-off (its u a few ulps outside [0, L), as after change_box ... remap
+ * of a lattice atom on a tilted face); LAMMPS's MAX(lamda, lo) keeps such an
+ * atom there too, and box_inside accepts it. */
 static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, const REAL3 hi,
                                 const REAL xy, const REAL xz, const REAL yz)
 {
@@ -263,8 +267,14 @@ static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, co
         const REAL z = h->z + l->z;
         const int dn = z < lo.z ? -1 : z >= hi.z ? 1 : 0;
         if (dn) {
-            pos_add(h, l, (REAL3)(-dn * xz, -dn * yz, -dn * L.z));
-            im->z += dn;
+            REAL3 h2 = *h, l2 = *l;
+            pos_add(&h2, &l2, (REAL3)(-dn * xz, -dn * yz, -dn * L.z));
+            const REAL z2 = h2.z + l2.z;
+            if (z2 >= lo.z && z2 < hi.z) {
+                *h = h2;
+                *l = l2;
+                im->z += dn;
+            }
         }
     }
 #endif
@@ -274,8 +284,14 @@ static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, co
         const REAL uy = ((h->y + l->y) - lo.y) - yz * lz;
         const int dn = uy < 0 ? -1 : uy >= L.y ? 1 : 0;
         if (dn) {
-            pos_add(h, l, (REAL3)(-dn * xy, -dn * L.y, 0));
-            im->y += dn;
+            REAL3 h2 = *h, l2 = *l;
+            pos_add(&h2, &l2, (REAL3)(-dn * xy, -dn * L.y, 0));
+            const REAL uy2 = ((h2.y + l2.y) - lo.y) - yz * lz;
+            if (uy2 >= 0 && uy2 < L.y) {
+                *h = h2;
+                *l = l2;
+                im->y += dn;
+            }
         }
     }
 #endif
@@ -285,11 +301,51 @@ static inline void pbc_wrap_tri(REAL3 *h, REAL3 *l, int3 *im, const REAL3 lo, co
         const REAL ux = ((h->x + l->x) - lo.x) - xy * ly - xz * lz;
         const int dn = ux < 0 ? -1 : ux >= L.x ? 1 : 0;
         if (dn) {
-            pos_add(h, l, (REAL3)(-dn * L.x, 0, 0));
-            im->x += dn;
+            REAL3 h2 = *h, l2 = *l;
+            pos_add(&h2, &l2, (REAL3)(-dn * L.x, 0, 0));
+            const REAL ux2 = ((h2.x + l2.x) - lo.x) - xy * ly - xz * lz;
+            if (ux2 >= 0 && ux2 < L.x) {
+                *h = h2;
+                *l = l2;
+                im->x += dn;
+            }
         }
     }
 #endif
     (void)ly;
+}
+
+/* Whether u (box_u of a position) lies in the tilted box [0, L) per
+ * dimension; in a periodic dimension a margin of round-off (BOX_UTOL of L)
+ * either side admits an atom pbc_wrap_tri left on a face. Outside by more,
+ * an atom crossed a fixed face or moved more than a box length. */
+#ifdef USE_DOUBLE
+#define BOX_UTOL ((REAL)1e-12)
+#else
+#define BOX_UTOL ((REAL)1e-5)
+#endif
+static inline int box_inside1(const REAL u, const REAL L, const int periodic)
+{
+    const REAL m = periodic ? BOX_UTOL * L : (REAL)0;
+    return u >= -m && (periodic ? u < L + m : u < L);
+}
+static inline int box_inside(const REAL3 u, const REAL3 L)
+{
+#ifdef PERIODIC_X
+    const int px = 1;
+#else
+    const int px = 0;
+#endif
+#ifdef PERIODIC_Y
+    const int py = 1;
+#else
+    const int py = 0;
+#endif
+#ifdef PERIODIC_Z
+    const int pz = 1;
+#else
+    const int pz = 0;
+#endif
+    return box_inside1(u.x, L.x, px) && box_inside1(u.y, L.y, py) && box_inside1(u.z, L.z, pz);
 }
 #endif

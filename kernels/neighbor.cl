@@ -126,8 +126,7 @@ __kernel void nbr_bin(const int n, __global const REAL *x, const int nx, const i
     int c;
 #ifdef TRICLINIC
     const REAL3 u = box_u(xi - (REAL3)(lox, loy, loz), hiy - loy, hiz - loz, xy, xz, yz);
-    const int out = !(u.x >= 0 && u.x < hix - lox && u.y >= 0 && u.y < hiy - loy &&
-                      u.z >= 0 && u.z < hiz - loz);
+    const int out = !box_inside(u, (REAL3)(hix - lox, hiy - loy, hiz - loz));
 #else
     const REAL3 u = xi - (REAL3)(lox, loy, loz);
     const int out = !(xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz &&
@@ -511,8 +510,7 @@ __kernel void nbr_bin_multi(const int n, __global const REAL *x, __global const 
         atomic_min(&flags[1], i);
     } else if (
 #ifdef TRICLINIC
-        u.x >= 0 && u.x < hix - lox && u.y >= 0 && u.y < hiy - loy && u.z >= 0 &&
-        u.z < hiz - loz
+        box_inside(u, (REAL3)(hix - lox, hiy - loy, hiz - loz))
 #else
         xi.x >= lox && xi.x < hix && xi.y >= loy && xi.y < hiy && xi.z >= loz && xi.z < hiz
 #endif

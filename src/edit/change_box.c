@@ -146,6 +146,12 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
     struct domain *d = &g->dom;
     struct atoms *a = &g->atoms;
     unsigned bit = group_bit(ig);
+    /* LAMMPS first wraps the atoms into the current box (pbc() on lamda
+     * coordinates when triclinic: a lamda round trip of every atom) */
+    int was_tri = d->triclinic, remapped = 0;
+    if (was_tri)
+        for (int i = 0; i < a->n; i++)
+            domain_remap(g, a->x + 3 * i, a->image + 3 * i);
     struct saved_box sb;
     save_box(g, &sb);
     gr_print(g, "Changing box ...\n");
@@ -232,6 +238,7 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
                 domain_lamda2x(g, lam, x);
             }
             save_box(g, &sb);
+            remapped = 1;
             break;
         }
     }
@@ -246,12 +253,23 @@ void cmd_change_box(struct gravel *g, int argc, char **argv)
         }
     domain_shrink_wrap(g, lo, hi);
     /* wrap periodic dimensions; atoms outside a fixed face are lost */
+    /* triclinic: LAMMPS's remap() (x -> lamda, wrapped into [0, 1), -> x),
+     * then the lamda round trip of its migration, for its bits (velocity
+     * loop geom hashes them): an atom a remap left on a face lands where
+     * LAMMPS puts it. lmp 2021 leaves the bits of the atoms inside a box
+     * that only became triclinic, tilts zero, nothing remapped
+     * (multi/in.granular's `change_box all triclinic`): so does gravel. */
+    int trips = d->triclinic && (was_tri || remapped || d->xy != 0.0 || d->xz != 0.0 ||
+                                 d->yz != 0.0);
     int n0 = a->n;
     for (int i = 0; i < a->n;) {
-        /* lmp 2021 leaves the bits of an atom inside a triclinic box (no
-         * lamda round trip; velocity loop geom hashes them: multi/in.granular) */
-        if (!d->triclinic || !domain_inside(g, a->x + 3 * i))
+        if (trips || !domain_inside(g, a->x + 3 * i))
             domain_remap(g, a->x + 3 * i, a->image + 3 * i);
+        if (trips) {
+            double lam[3];
+            domain_x2lamda(g, a->x + 3 * i, lam);
+            domain_lamda2x(g, lam, a->x + 3 * i);
+        }
         int out = 0;
         for (int q = 0; q < 3; q++)
             if (!d->periodic[q] && (a->x[3 * i + q] < d->lo[q] || a->x[3 * i + q] > d->hi[q]))

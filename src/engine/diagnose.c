@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "device.h"
+#include "domain.h"
 #include "pair.h"
 
 /* Positions and tags at the start of the run: the host arrays, or the
@@ -113,14 +114,24 @@ void diag_lost_atom(const struct gravel *g, long long tag, const double x[3],
 {
     const struct domain *d = &g->dom;
     char face[160] = "";
+    /* below the lo face, above the hi face (a triclinic box's faces tilt:
+     * its lamda coordinates against 0 and 1) */
+    int below[3], above[3];
+    double lam[3];
+    if (d->triclinic)
+        domain_x2lamda(g, x, lam);
+    for (int q = 0; q < 3; q++) {
+        below[q] = d->triclinic ? !(lam[q] >= 0) : !(x[q] >= d->lo[q]);
+        above[q] = d->triclinic ? !(lam[q] <= 1) : !(x[q] <= d->hi[q]);
+    }
     for (int q = 0; q < 3 && !face[0]; q++) {
-        if (d->periodic[q] && !(x[q] >= d->lo[q] && x[q] <= d->hi[q]))
+        if (d->periodic[q] && (below[q] || above[q]))
             snprintf(face, sizeof face, "moved more than a box length through the periodic %c "
                                         "boundaries in one step", "xyz"[q]);
-        else if (!(x[q] >= d->lo[q]))
+        else if (below[q])
             snprintf(face, sizeof face, "crossed the %c lo boundary (%c) at %.10g", "xyz"[q],
                      d->bnd[q][0], d->lo[q]);
-        else if (!(x[q] <= d->hi[q]))
+        else if (above[q])
             snprintf(face, sizeof face, "crossed the %c hi boundary (%c) at %.10g", "xyz"[q],
                      d->bnd[q][1], d->hi[q]);
     }

@@ -1,4 +1,4 @@
-/* balance.c - slab cuts from the atoms' coordinates (balance.h). */
+/* balance.c - slab cuts or rcb tiles from the atoms' coordinates (balance.h). */
 #include "balance.h"
 
 #include <math.h>
@@ -58,6 +58,17 @@ static void print_cuts(struct gravel *g, const struct decomp *dc)
     }
 }
 
+/* each rank's rcb tile as fractions of the box */
+static void print_tiles(struct gravel *g, const struct decomp *dc)
+{
+    for (int r = 0; r < comm_size(); r++) {
+        double lo[3], hi[3];
+        decomp_box(dc, r, lo, hi);
+        gr_print(g, "  rank %d tile: x %#.6g %#.6g y %#.6g %#.6g z %#.6g %#.6g\n", r, lo[0],
+                 hi[0], lo[1], hi[1], lo[2], hi[2]);
+    }
+}
+
 void cmd_balance(struct gravel *g, int argc, char **argv)
 {
     if (argc < 2)
@@ -70,7 +81,7 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     decomp_setup(g, dc);
     /* the styles, checked before anything moves */
     double *user[3] = {NULL, NULL, NULL};
-    int uniform[3] = {0, 0, 0};
+    int uniform[3] = {0, 0, 0}, rcb = 0;
     unsigned shift = 0;
     int i = 1;
     while (i < argc) {
@@ -112,8 +123,13 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
                 free(user[q]);
             return;
         } else if (!strcmp(s, "rcb")) {
-            gr_error(g, "balance rcb (tiled sub-domains) is not supported: gravel decomposes "
-                        "into bricks; use shift");
+            if (!dc->tiled)
+                gr_error(g, "balance rcb needs comm_style tiled (LAMMPS: Balance rcb cannot be "
+                            "used with comm_style brick)");
+            if (i != 1 || argc != 2)
+                gr_error(g, "balance rcb takes no other style or keyword");
+            rcb = 1;
+            i++;
         } else {
             gr_error(g, "balance keyword '%s' is not supported (x, y, z, shift)", s);
         }
@@ -122,8 +138,18 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     const struct atoms *a = &g->atoms; /* between runs: every atom on every rank */
     double maxinit, maxfinal;
     double imbinit = imbalance_of(g, dc, a->x, a->n, &maxinit);
-    int niter = 0;
-    if (imbinit > thresh) {
+    int niter = 0, tiled = decomp_tiled(dc);
+    if (tiled && !rcb) /* a grid style after rcb: the grid again, balanced (LAMMPS) */
+        rcb_free(&dc->rcb);
+    if (rcb && imbinit > thresh) { /* tiles by bisecting every atom */
+        double *s = gr_malloc(g, (3 * (size_t)a->n + 1) * sizeof *s);
+        for (int k = 0; k < a->n; k++)
+            for (int q = 0; q < 3; q++)
+                s[3 * (size_t)k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+        decomp_rcb(g, dc, s, a->n);
+        free(s);
+        niter = 1;
+    } else if (!rcb && (imbinit > thresh || tiled)) {
         for (int q = 0; q < 3; q++) {
             if (uniform[q]) {
                 free(dc->cut[q]);
@@ -150,5 +176,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     gr_print(g, "  iteration count = %d\n", niter);
     gr_print(g, "  initial/final maximal load/proc = %#.8g %#.8g\n", maxinit, maxfinal);
     gr_print(g, "  initial/final imbalance factor  = %#.8g %#.8g\n", imbinit, imbfinal);
-    print_cuts(g, dc);
+    if (decomp_tiled(dc))
+        print_tiles(g, dc);
+    else
+        print_cuts(g, dc);
 }

@@ -59,7 +59,12 @@ void decomp_setup(struct gravel *g, struct decomp *d)
         gr_error(g, "processors %d %d %d (0 = *) does not factor the %d ranks%s", d->user[0],
                  d->user[1], d->user[2], n, dm->dimension == 2 ? " with Pz = 1 (2d)" : "");
     if (memcmp(was, d->p, sizeof was) != 0)
-        decomp_free(d); /* a new grid: even slabs again */
+        for (int q = 0; q < 3; q++) { /* a new grid: even slabs again */
+            free(d->cut[q]);
+            d->cut[q] = NULL;
+        }
+    if (d->rcb.n && (d->rcb.n != n || !d->tiled))
+        rcb_free(&d->rcb); /* tiles of another rank count, or comm_style brick */
     int r = comm_rank();
     d->me[0] = r % d->p[0];
     d->me[1] = r / d->p[0] % d->p[1];
@@ -71,6 +76,34 @@ void decomp_free(struct decomp *d)
     for (int q = 0; q < 3; q++) {
         free(d->cut[q]);
         d->cut[q] = NULL;
+    }
+    rcb_free(&d->rcb);
+}
+
+int decomp_tiled(const struct decomp *d) { return d->rcb.n > 0; }
+
+void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n)
+{
+    const struct domain *dm = &g->dom;
+    double len[3] = {1, 1, 1}; /* LAMMPS bisects a triclinic box in lamda */
+    if (!dm->triclinic)
+        for (int q = 0; q < 3; q++)
+            len[q] = dm->hi[q] - dm->lo[q];
+    rcb_compute(&d->rcb, comm_size(), s, n, len, dm->dimension == 2 ? 2 : 3);
+    if (d->rcb.n != comm_size())
+        gr_error((struct gravel *)g, "out of memory tiling the box by rcb");
+}
+
+void decomp_box(const struct decomp *d, int r, double lo[3], double hi[3])
+{
+    if (d->rcb.n) {
+        rcb_box(&d->rcb, r, lo, hi);
+        return;
+    }
+    int c[3] = {r % d->p[0], r / d->p[0] % d->p[1], r / (d->p[0] * d->p[1])};
+    for (int q = 0; q < 3; q++) {
+        lo[q] = decomp_cut(d, q, c[q]);
+        hi[q] = decomp_cut(d, q, c[q] + 1);
     }
 }
 
@@ -107,6 +140,8 @@ int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[
     double s[3];
     for (int q = 0; q < 3; q++)
         s[q] = decomp_fraction(g, q, x);
+    if (d->rcb.n)
+        return rcb_owner(&d->rcb, s);
     return slab(d, 0, s[0]) + d->p[0] * (slab(d, 1, s[1]) + d->p[1] * slab(d, 2, s[2]));
 }
 
@@ -114,11 +149,12 @@ void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double 
                   double hi[3])
 {
     const struct domain *dm = &g->dom;
-    int c[3] = {r % d->p[0], r / d->p[0] % d->p[1], r / (d->p[0] * d->p[1])};
+    double flo[3], fhi[3];
+    decomp_box(d, r, flo, fhi);
     for (int q = 0; q < 3; q++) {
         double L = dm->hi[q] - dm->lo[q];
-        lo[q] = dm->lo[q] + L * decomp_cut(d, q, c[q]);
-        hi[q] = c[q] + 1 == d->p[q] ? dm->hi[q] : dm->lo[q] + L * decomp_cut(d, q, c[q] + 1);
+        lo[q] = dm->lo[q] + L * flo[q];
+        hi[q] = fhi[q] >= 1.0 ? dm->hi[q] : dm->lo[q] + L * fhi[q];
     }
 }
 

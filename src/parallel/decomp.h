@@ -4,10 +4,12 @@
  * (LAMMPS's ProcMap::onelevel_grid: the factorization of smallest
  * sub-domain surface, `*` free, a given count fixed); bricks split each
  * box length (a triclinic box: each lamda coordinate) evenly until `balance` or `fix balance` moves the cuts
- * (balance.c). */
+ * (balance.c), or, under comm_style tiled, `balance rcb` tiles the box
+ * (rcb.h): the sub-domains are then boxes that do not form a grid. */
 #ifndef GR_DECOMP_H
 #define GR_DECOMP_H
 
+#include "rcb.h"
 #include "state.h"
 
 struct decomp {
@@ -16,12 +18,23 @@ struct decomp {
     int me[3];              /* this rank's place in it (rank = x + px (y + py z)) */
     double *cut[3];         /* balance: p[q] + 1 cuts per dimension as fractions of the
                              * box length (0 ... 1); NULL = even slabs */
+    int tiled;              /* comm_style tiled: balance rcb may tile the box */
+    struct rcb rcb;         /* balance rcb: the ranks' tiles (rcb.n = 0: the grid) */
 };
 
 /* The grid of the current box for comm_size() ranks (cuts kept while the
- * grid stays the same). */
+ * grid stays the same; an rcb tiling while the rank count and comm_style
+ * tiled stay). */
 void decomp_setup(struct gravel *g, struct decomp *d);
 void decomp_free(struct decomp *d);
+/* Whether the ranks hold rcb tiles rather than the grid's bricks. */
+int decomp_tiled(const struct decomp *d);
+/* Tile the box by rcb from the n fractions s[3 i + q] of every atom
+ * (decomp_fraction; reordered here). */
+void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n);
+/* Sub-domain of rank r as fractions of the box (lamda when triclinic):
+ * [lo, hi) per dimension, a brick of the grid or an rcb tile. */
+void decomp_box(const struct decomp *d, int r, double lo[3], double hi[3]);
 /* Fraction of the box of position x in dimension q: (x - lo) / L, in a
  * triclinic box the lamda coordinate (LAMMPS's bricks of a triclinic box
  * are slabs of lamda); periodic: wrapped; clamped to 0 ... 1 (the raw form
@@ -37,8 +50,8 @@ double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;
  * outside a fixed face: the nearest brick). */
 int decomp_owner(const struct gravel *g, const struct decomp *d, const double x[3]);
-/* Brick of rank r: [lo, hi) per dimension (orthogonal boxes; a triclinic
- * box's bricks are the slabs decomp_cut gives in lamda). */
+/* Sub-domain of rank r in box coordinates: [lo, hi) per dimension
+ * (orthogonal boxes; a triclinic box's are decomp_box's lamda). */
 void decomp_brick(const struct gravel *g, const struct decomp *d, int r, double lo[3],
                   double hi[3]);
 

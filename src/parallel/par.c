@@ -85,6 +85,16 @@ void cmd_processors(struct gravel *g, int argc, char **argv)
         gr_error(g, "processors: Pz must be 1 for a 2d simulation, got %d", d->user[2]);
 }
 
+/* `comm_style brick|tiled`: tiled lets balance rcb tile the box (brick
+ * drops a tiling at the next run). One process has nothing to decompose. */
+void cmd_comm_style(struct gravel *g, int argc, char **argv)
+{
+    (void)argc;
+    if (strcmp(argv[0], "brick") != 0 && strcmp(argv[0], "tiled") != 0)
+        gr_error(g, "comm_style '%s' is not brick or tiled", argv[0]);
+    par_state(g)->dc.tiled = !strcmp(argv[0], "tiled");
+}
+
 /* ---- the per-atom record: the FL_STATE rows of the field table -------------------- */
 
 static size_t raw_pos_bytes(const struct gravel *g)
@@ -373,7 +383,11 @@ void par_run_begin(struct gravel *g)
             k++;
         }
     a->n = k;
-    gr_print(g, "Decomposition: %d x %d x %d MPI ranks\n", p->dc.p[0], p->dc.p[1], p->dc.p[2]);
+    if (decomp_tiled(&p->dc))
+        gr_print(g, "Decomposition: %d MPI ranks tiled by rcb\n", comm_size());
+    else
+        gr_print(g, "Decomposition: %d x %d x %d MPI ranks\n", p->dc.p[0], p->dc.p[1],
+                 p->dc.p[2]);
 }
 
 /* The current contacts' history into *h by tag pair (the device's raw
@@ -667,28 +681,40 @@ static void box_widths(const struct gravel *g, double W[3])
     W[2] = 1.0 / hi[2];
 }
 
+/* One exchange serves the ghosts (no multi-hop): in a periodic dimension a
+ * sub-domain that does not span the box must leave room for twice the
+ * ghost cut-off. */
 static void check_bricks(struct gravel *g, const struct par *p, double cut)
 {
     const struct domain *d = &g->dom;
     double W[3];
     box_widths(g, W);
-    for (int q = 0; q < 3; q++) {
-        double L = W[q];
-        for (int k = 0; d->periodic[q] && p->dc.p[q] > 1 && k < p->dc.p[q]; k++) {
-            double w = L * (decomp_cut(&p->dc, q, k + 1) - decomp_cut(&p->dc, q, k));
-            if (w + 2 * cut >= L)
-                gr_error(g, "%d ranks in periodic %c: a sub-domain %g %s plus twice the "
-                            "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
-                            "(processors) or even slabs", p->dc.p[q], "xyz"[q], w,
-                         d->triclinic ? "wide" : "long", cut, L, "xyz"[q]);
+    int tiled = decomp_tiled(&p->dc);
+    for (int r = 0; r < comm_size(); r++) {
+        double lo[3], hi[3];
+        decomp_box(&p->dc, r, lo, hi);
+        for (int q = 0; q < 3; q++) {
+            double L = W[q], w = L * (hi[q] - lo[q]);
+            if (!d->periodic[q] || (lo[q] <= 0 && hi[q] >= 1) || w + 2 * cut < L)
+                continue;
+            if (tiled)
+                gr_error(g, "%d ranks tiled by rcb: rank %d's sub-domain %g %s in periodic %c "
+                            "plus twice the ghost cut-off %g exceeds the box %g; use fewer "
+                            "ranks", comm_size(), r, w, d->triclinic ? "wide" : "long",
+                         "xyz"[q], cut, L);
+            gr_error(g, "%d ranks in periodic %c: a sub-domain %g %s plus twice the "
+                        "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
+                        "(processors) or even slabs", p->dc.p[q], "xyz"[q], w,
+                     d->triclinic ? "wide" : "long", cut, L, "xyz"[q]);
         }
     }
 }
 
 /* fix balance at a rebuild, before the atoms move: when the imbalance
  * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
- * dimensions in dims move to the quantiles of every rank's atoms. */
-static void rebalance(struct gravel *g, unsigned dims, double thresh)
+ * dimensions in dims move to the quantiles of every rank's atoms, or (rcb)
+ * the box is tiled again by bisecting every rank's atoms. */
+static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh)
 {
     struct par *p = g->par;
     struct decomp *dc = &p->dc;
@@ -710,6 +736,19 @@ static void rebalance(struct gravel *g, unsigned dims, double thresh)
     double imb = n > 0 ? (double)big * P / (double)n : 1.0;
     if (!(imb > thresh))
         return;
+    if (rcb) {
+        double *s = gr_malloc(g, (3 * (size_t)a->n + 1) * sizeof *s), *all = NULL;
+        for (int k = 0; k < a->n; k++)
+            for (int q = 0; q < 3; q++)
+                s[3 * (size_t)k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+        size_t b = comm_allgatherv(s, 3 * (size_t)a->n * sizeof *s, (void **)&all);
+        free(s);
+        if (b == (size_t)-1)
+            gr_error(g, "out of memory balancing");
+        decomp_rcb(g, dc, all, (long)(b / (3 * sizeof *all)));
+        free(all);
+        return;
+    }
     for (int q = 0; q < 3; q++) {
         if (!(dims & (1u << q)) || dc->p[q] < 2)
             continue;
@@ -745,9 +784,10 @@ void par_exchange(struct gravel *g, double cut)
     p->hist = NULL;
     if (e->history && p->list_current)
         hist_collect(g, &old);
-    if (p->balance_dims) { /* fix balance: slab cuts at the atoms' quantiles */
-        rebalance(g, p->balance_dims, p->balance_thresh);
+    if (p->balance_dims || p->balance_rcb) { /* fix balance: quantile cuts or rcb tiles */
+        rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh);
         p->balance_dims = 0;
+        p->balance_rcb = 0;
         check_bricks(g, p, cut);
     }
     /* destinations; an atom outside a fixed face is lost */
@@ -855,16 +895,11 @@ void par_exchange(struct gravel *g, double cut)
         per[q] = dm->triclinic ? 1.0 : dm->hi[q] - dm->lo[q];
         cuts[q] = dm->triclinic ? cut / W[q] : cut;
     }
-    for (int r = 0; r < P; r++) {
-        if (!dm->triclinic) {
+    for (int r = 0; r < P; r++) { /* a brick of the grid or an rcb tile */
+        if (!dm->triclinic)
             decomp_brick(g, &p->dc, r, blo[r], bhi[r]);
-            continue;
-        }
-        int c[3] = {r % p->dc.p[0], r / p->dc.p[0] % p->dc.p[1], r / (p->dc.p[0] * p->dc.p[1])};
-        for (int q = 0; q < 3; q++) {
-            blo[r][q] = decomp_cut(&p->dc, q, c[q]);
-            bhi[r][q] = decomp_cut(&p->dc, q, c[q] + 1);
-        }
+        else
+            decomp_box(&p->dc, r, blo[r], bhi[r]);
     }
     if (dm->triclinic) {
         lam = gr_malloc(g, (3 * (size_t)nlocal + 1) * sizeof *lam);

@@ -52,6 +52,7 @@ struct par {
     int nsaved;
     int *kept;              /* run start: the kept atoms' rows in the last run's end set */
     unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
+    int balance_rcb;        /* fix balance rcb: the next exchange tiles the box again */
     double balance_thresh;
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
     struct atoms local;
@@ -68,6 +69,7 @@ struct par {
 /* `processors Px Py Pz`: the grid's counts (checked against the rank count
  * at the next run). */
 void cmd_processors(struct gravel *g, int argc, char **argv);
+void cmd_comm_style(struct gravel *g, int argc, char **argv);
 /* This gravel's parallel state (created on first use). */
 struct par *par_state(struct gravel *g);
 void par_free(struct gravel *g);

@@ -255,7 +255,7 @@ void cmd_info(struct gravel *g, int argc, char **argv)
 
 /* LAMMPS commands about parallel layout, Newton's 3rd law bookkeeping or
  * accelerator packages: they change nothing here, so one warning each. */
-static const char *ignored[] = {"comm_modify", "comm_style", "communicate",
+static const char *ignored[] = {"comm_modify", "communicate",
                                 "newton", "package", "suffix", NULL};
 
 void cmd_ignored(struct gravel *g, int argc, char **argv)

@@ -1,12 +1,17 @@
 /* fix_balance.c - `fix ID group balance Nfreq thresh shift dimstr Niter
- * stopthresh`: LAMMPS's dynamic load balance of a decomposed run
- * (bin/gravel-mpi, doc/parallel.md). Every Nfreq steps it forces a
- * neighbor rebuild; there, when the largest rank holds more than thresh
- * times the mean, the grid's slab cuts in dimstr move to the quantiles of
- * the atoms (balance.h) before the atoms move to their ranks. Nfreq 0:
- * once, at the run's first rebuild. On one process there is nothing to
- * balance: it warns, and forces the same rebuilds (so a run gives the same
- * bits on any number of ranks). */
+ * stopthresh` and `... Nfreq thresh rcb`: LAMMPS's dynamic load balance of
+ * a decomposed run (bin/gravel-mpi, doc/parallel.md).
+ * shift: every Nfreq steps it forces a neighbor rebuild; there, when the
+ * largest rank holds more than thresh times the mean, the grid's slab cuts
+ * in dimstr move to the quantiles of the atoms (balance.h) before the atoms
+ * move to their ranks. On one process there is nothing to balance: it
+ * warns, and forces the same rebuilds (so a run gives the same bits on any
+ * number of ranks).
+ * rcb (comm_style tiled): at the first neighbor rebuild on or after every
+ * Nfreq-th step the box is tiled again by bisecting the atoms (rcb.h).
+ * It forces no rebuild (LAMMPS does), so one process, which has nothing
+ * to balance and only warns, keeps its rebuilds and bits, and so do the
+ * ranks. Nfreq 0: once, at the run's first rebuild. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -20,7 +25,9 @@
 struct fix_balance {
     int nfreq;
     double thresh;
-    unsigned dims;
+    unsigned dims; /* shift */
+    int rcb;
+    bigint next;   /* rcb: the step from which the next rebuild balances */
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -37,11 +44,22 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
         return;
     }
-    if (!strcmp(argv[2], "rcb"))
-        gr_error(g, "fix balance rcb (tiled sub-domains) is not supported: gravel decomposes "
-                    "into bricks; use shift");
+    if (!strcmp(argv[2], "rcb")) {
+        if (!par_state(g)->dc.tiled)
+            gr_error(g, "fix balance rcb needs comm_style tiled (LAMMPS: Fix balance rcb "
+                        "cannot be used with comm_style brick)");
+        if (argc != 3)
+            gr_error(g, "fix balance rcb takes no keywords, got '%s'", argv[3]);
+        struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
+        f->data = b;
+        b->nfreq = nfreq;
+        b->thresh = thresh;
+        b->rcb = 1;
+        f->hooks = HOOK_PRE_EXCHANGE;
+        return;
+    }
     if (strcmp(argv[2], "shift") != 0)
-        gr_error(g, "fix balance style '%s' is not supported (shift)", argv[2]);
+        gr_error(g, "fix balance style '%s' is not supported (shift, rcb)", argv[2]);
     if (argc != 6)
         gr_error(g, "fix balance shift needs dimstr Niter stopthresh (and no keywords)");
     struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
@@ -63,8 +81,12 @@ static void init(struct gravel *g, struct fix *f)
     struct fix_balance *b = f->data;
     if (!b)
         return; /* rcb on one process */
-    f->force_reneighbor = 1; /* on one process too: the same rebuilds, the same bits */
     bigint n = b->nfreq;
+    if (b->rcb) { /* no forced rebuild: the next one from this step on */
+        b->next = n > 0 ? (g->step / n + 1) * n : g->step + 1;
+        return;
+    }
+    f->force_reneighbor = 1; /* on one process too: the same rebuilds, the same bits */
     f->next_reneighbor = n > 0 ? (g->step / n + 1) * n : g->step + 1;
 }
 
@@ -72,6 +94,17 @@ static void init(struct gravel *g, struct fix *f)
 static void pre_exchange(struct gravel *g, struct fix *f)
 {
     struct fix_balance *b = f->data;
+    if (b && b->rcb) {
+        if (b->next <= 0 || g->step < b->next)
+            return;
+        if (par_on(g)) {
+            struct par *p = par_state(g);
+            p->balance_rcb = 1;
+            p->balance_thresh = b->thresh;
+        }
+        b->next = b->nfreq > 0 ? (g->step / b->nfreq + 1) * b->nfreq : 0;
+        return;
+    }
     if (!b || f->next_reneighbor != g->step)
         return;
     if (par_on(g)) {

@@ -15,7 +15,9 @@
 # step (every remap), the barostats nph and npt (and /sphere), triclinic
 # boxes (tilted, sheared, flipped, balanced; LAMMPS's multi/in.granular), and the
 # LAMMPS chute (shrink-wrapped z, frozen base, exclusions) in double and
-# single precision, balanced by `balance` and `fix balance shift`, with its dumps (custom and vtk, sorted by ID: every
+# single precision, balanced by `balance` and `fix balance shift`, a settling bed
+# and the flipping triclinic gas tiled by `balance rcb` and `fix balance rcb`
+# (comm_style tiled), with its dumps (custom and vtk, sorted by ID: every
 # file byte-identical); the standard computes in thermo and dumps, dump local of
 # property/local and pair/local, and the files of
 # fix ave/time, ave/chunk and ave/histo; restart files
@@ -578,6 +580,12 @@ same tri_flip_np4 triflip.in 4 "" "2 2 1"
 ref_run tribal.in
 same tri_balance_np4 tribal.in 4 "" "2 2 1"
 check tri_balanced 'grep "^  x cuts: 0.0000000 0\.[0-9]* 1.0000000" tri_balance_np4.out | grep -vq " 0.50000000 "'
+# ... and tiled by rcb (balance and fix balance every 50 steps, in lamda) while flipping
+sed -e 's/^comm_modify     vel yes/&\ncomm_style      tiled/' -e 's/^run             300/balance         1.0 rcb\n&/' \
+    -e 's/^fix             1 all nve\/sphere/&\nfix             b all balance 50 1.0 rcb/' triflip.in > trircb.in
+ref_run trircb.in
+same tri_rcb_np3 trircb.in 3 ""
+check tri_rcb_tiled 'grep -q "^Decomposition: 3 MPI ranks tiled by rcb" tri_rcb_np3.out'
 printf 'variable fx index "xy erate 0.5 yz erate -0.3 x erate 0.2"\nvariable remap index v\n' | cat - tri.in > triv.in
 ref_run triv.in
 same tri_remap_v_np3 triv.in 3 ""
@@ -624,6 +632,67 @@ check balance_report 'grep -q "^  initial/final maximal load/proc = 8010.0000 80
 
 ref_run chute.in "-precision single"
 same chute_single_np2 chute.in 2 "-precision single"
+
+# balance rcb and fix balance rcb (comm_style tiled): a bed settling under gravity
+# on a plane wall, periodic in x and y, its 720 atoms in the lowest 6 of 16 layers;
+# balance rcb bisects them into tiles that are no grid on 3 ranks (two tiles side by
+# side in y, one beside them in x), fix balance tiles again at the first rebuild
+# after every 100th step; the same bits as one process (which has nothing to balance)
+cat > rcb.in <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+comm_style      tiled
+lattice         sc 1.0
+region          box block 0 12 0 10 0 16
+create_box      1 box
+region          low block 0 12 0 10 0.5 6.5
+create_atoms    1 region low
+set             group all diameter 0.9 density 1.9098593
+velocity        all create 5.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+fix             g all gravity 1.0 vector 0 0 -1
+fix             w all wall/gran hooke/history 200000.0 NULL 50.0 NULL 0.5 0 zplane 0 NULL
+timestep        0.0002
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 press
+thermo_modify   norm no format float %.17g
+thermo          100
+balance         1.0 rcb
+fix             b all balance 100 1.0 rcb
+run             600
+run             300
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+ref_run rcb.in
+same rcb_np2 rcb.in 2 ""
+same rcb_np3 rcb.in 3 ""
+same rcb_np4 rcb.in 4 ""
+# the grid (3 x 1 x 1, 2 x 1 x 2) left ranks with 2.5 and 2 times the mean; the
+# tiles hold 720 / N each (`mpirun -np 3|4 lmp` prints the same loads and factors for
+# this deck's balance rcb: 600 -> 240, 2.5 -> 1; 360 -> 180, 2 -> 1), and fix balance
+# keeps the last run's ranks within 1 atom of the mean at its end (the footer's Nlocal)
+nlocal_spread() { awk '/^Nlocal:/ { s = $4 - $6 } END { print s }' "$1"; }
+check rcb_report 'grep -q "^  initial/final imbalance factor  = 2.5000000 1.0000000$" rcb_np3.out && grep -q "^  initial/final maximal load/proc = 360.00000 180.00000$" rcb_np4.out && grep -q "^  rank 0 tile: x 0.00000 0.625000 y 0.00000 0.450000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^  rank 2 tile: x 0.625000 1.00000 y 0.00000 1.00000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^Decomposition: 3 MPI ranks tiled by rcb" rcb_np3.out'
+check rcb_fix_balanced '[ "$(nlocal_spread rcb_np3.out)" -le 2 ] && [ "$(nlocal_spread rcb_np4.out)" -le 2 ] && [ "$(nlocal_spread rcb_np2.out)" -le 2 ]'
+# a shift after rcb: the grid again (2 x 1 x 2 on 4 ranks), the same bits
+sed 's/^run             300/balance         1.0 shift z 10 1.0\n&/' rcb.in > rcbgrid.in
+ref_run rcbgrid.in
+same rcb_then_grid_np4 rcbgrid.in 4 ""
+check rcb_then_grid 'grep -q "^Decomposition: 2 x 1 x 2 MPI ranks" rcb_then_grid_np4.out'
+# rcb needs comm_style tiled on several ranks (LAMMPS's error), for balance and fix balance
+grep -v '^comm_style' rcb.in > rcbbrick.in
+mpirun -np 2 "$par" -in rcbbrick.in -log none > rcbbrick.out 2>&1; rc=$?
+check rcb_needs_tiled '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: balance: balance rcb needs comm_style tiled" rcbbrick.out)" -eq 1 ] && grep -q "(rcbbrick.in:24)" rcbbrick.out'
+grep -v '^comm_style\|^balance' rcb.in > rcbfix.in
+mpirun -np 2 "$par" -in rcbfix.in -log none > rcbfix.out 2>&1; rc=$?
+check fix_rcb_needs_tiled '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: fix: fix balance rcb needs comm_style tiled" rcbfix.out)" -eq 1 ]'
+
 
 # equal-style variables in thermo: thermo keywords (the pressure and energies
 # taken before the gather), computes (summed and gathered) and group functions,

@@ -10,6 +10,9 @@ spheres from a fixed seed):
            press pxx pyy pzz pxy pxz pyz xy yz against lmp's to THERMO_REL.
   ortho    the gas in an orthogonal periodic box, fix deform x erate and
            y volume (remap x): thermo vol lx ly press pxx pyy pxy to THERMO_REL.
+  face     an sc lattice tilted by change_box xy xz remap, atoms on the
+           tilted face: positions equal lmp's bits, a 100-step run keeps
+           them all (it lost 26 at step 0) and ends within DUMP_TOL of lmp.
   restart  the tilted deck: run 300 equals run 150 + write_restart +
            read_restart + run 150 bit for bit without fix deform, and within
            1e-9 with it (fix deform interpolates from the box at the start of
@@ -259,6 +262,61 @@ def prism_check(update):
              "0.80000000)" in log)
 
 
+FACE = """units lj
+comm_modify vel yes
+atom_style sphere
+boundary p p p
+lattice sc 1.0
+region box prism 0 10 0 10 0 10 0 0 0
+create_box 1 box
+create_atoms 1 box
+change_box all xy final 2 xz final 1 remap
+write_dump all custom remap.dump id x y z modify sort id format float %.17g
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+set type 1 diameter 0.9
+velocity all create 1.0 4928459 loop geom
+fix 1 all nve/sphere
+thermo_style custom step atoms ke
+thermo_modify format float %.17g
+thermo 50
+timestep 0.001
+run 100
+write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id &
+  format float %.17g
+"""
+
+
+def face_check(update):
+    """An sc lattice at origin 0 tilted by change_box xy xz remap: 25 atoms
+    sit on the tilted x face to round-off. Their positions after change_box
+    equal lmp's bit for bit (LAMMPS's lamda round trips and wraps), and the
+    run keeps every atom (it stopped at step 0 with 'Lost atoms'), its
+    final state and thermo within DUMP_TOL / THERMO_REL of lmp's."""
+    ref = {e: os.path.join(REF, "face." + e) for e in ("remap.dump", "lammps.dump",
+                                                       "lammps.log")}
+    if update:
+        with tempfile.TemporaryDirectory() as tmp:
+            rc, log, dump = run("lmp", "face", FACE, tmp, data=False)
+            open(ref["lammps.dump"], "w").write(dump)
+            open(ref["lammps.log"], "w").write(log)
+            open(ref["remap.dump"], "w").write(open(os.path.join(tmp, "remap.dump")).read())
+    with tempfile.TemporaryDirectory() as tmp:
+        rc, log, dump = run(sv.GRAVEL, "face", FACE, tmp, data=False)
+        remap = open(os.path.join(tmp, "remap.dump")).read() if os.path.exists(
+            os.path.join(tmp, "remap.dump")) else ""
+    a, b = atoms(open(ref["remap.dump"]).read()), atoms(remap) if remap else {}
+    same = sum(1 for t in a if a[t] == b.get(t))
+    sv.check("face: change_box xy xz remap places all 1000 atoms as lmp, bit for bit",
+             same == len(a) == 1000, "%d of %d identical" % (same, len(a)))
+    sv.check("face: gravel runs the deck with no lost atom", rc == 0 and
+             "Lost atoms" not in log, log[-400:] if rc else "")
+    if rc:
+        return
+    compare_dump("face", open(ref["lammps.dump"]).read(), dump)
+    compare_thermo("face", open(ref["lammps.log"]).read(), log)
+
+
 BOX3 = """units lj
 atom_style sphere
 region b block 0 8 0 8 0 8 units box
@@ -298,6 +356,7 @@ def main():
     update = "--update" in sys.argv
     error_checks()
     prism_check(update)
+    face_check(update)
     os.makedirs(REF, exist_ok=True)
     dumps = {}
     for name in ("tilted", "ortho", "vremap", "vremap_ortho", "flip"):

@@ -357,6 +357,11 @@ TEST(clear_info_ignored)
                          "package gpu 1\ncommunicate single\nnewton on\n") == GR_OK);
     CHECK(g->err.nwarn == 6); /* once per ignored command name (processors is real) */
     gr_destroy(g);
+    g = test_engine(); /* comm_style is real: tiled lets balance rcb tile the ranks */
+    CHECK(test_script(g, "comm_style tiled\ncomm_style brick\n") == GR_OK);
+    CHECK(g->err.nwarn == 0);
+    gr_destroy(g);
+    CHECK_ERROR("comm_style bogus\n", "comm_style 'bogus' is not brick or tiled", 1);
     CHECK_ERROR("print ok\nshell ls\n", "shell: not supported", 2);
 }
 
