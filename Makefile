@@ -20,7 +20,7 @@ KERNELS  = $(sort $(wildcard kernels/*.cl kernels/*.h))
 UNITSRC  = $(wildcard tests/unit/test_*.c)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/tests/%)
 
-.PHONY: all deps test run bench clean asan fuzz fuzz-replay fuzz-merge verify reproduce-agglomeration reproduce-mill mill-sensitivity compare-avalanche
+.PHONY: all deps test run bench bench-all clean asan fuzz fuzz-replay fuzz-merge verify reproduce-agglomeration reproduce-mill mill-sensitivity compare-avalanche
 all: bin/gravel
 
 bin/gravel: $(OBJ)
@@ -85,6 +85,12 @@ run: deps
 bench: deps
 	@$(MAKE) --no-print-directory all
 	@sh tools/bench.sh
+
+# bench and issue 19's other figures: mesh against pair contacts (both laws) and 10^7 spheres
+bench-all: bench
+	@/usr/bin/python3 tools/bench_mesh.py --repeat 3 --law hooke/history
+	@/usr/bin/python3 tools/bench_mesh.py --repeat 3 --law hertz/mindlin
+	@sh tools/bench_big.sh
 
 # Log regression (tests/regression/, doc/regression.md): every deck in inputs/
 # runs shortened and its thermo log is compared with the committed reference
