@@ -11,14 +11,15 @@
  * partner's -radj tc + tr, or, for a law without rolling torque (tr = 0,
  * PAIR_TC), tc alone, from which each side's gather takes -rad tc with its
  * own radius (the same products; a sum that starts at +0 is blind to the
- * sign of a zero term, so tr's +-0 is not missed). A particle's row holds its partners in ascending
- * tag: first those of lower tag (it is their contact's partner: contact
- * pcon[ioff[i] - coff[i] + k] for row slot k), then those it owns (its
- * contacts coff[i] .. coff[i + 1] - 1, in row order); pair_gather sums the
- * records in that order, so a particle's sum depends on the particles only,
- * never on memory order, the cell sort, the rebuild schedule or the work
- * split. No atomics; the two sides' forces are exact negatives. The owned
- * contacts' records are read as a stream, the others' once each.
+ * sign of a zero term, so tr's +-0 is not missed). A particle's row holds
+ * its partners in ascending tag: first those of lower tag (it is their
+ * contact's partner: contact pcon[ioff[i] - coff[i] + k] for row slot k),
+ * then those it owns (its contacts coff[i] .. coff[i + 1] - 1, in row
+ * order); pair_gather sums the records in that order, so a particle's sum
+ * depends on the particles only, never on memory order, the cell sort, the
+ * rebuild schedule or the work split. No atomics; the two sides' forces are
+ * exact negatives. The owned contacts' records are read as a stream, the
+ * others' once each.
  *
  * acc/astep: the contact's collision-resolution record (kernels/accuracy.cl).
  * A contact that does not act writes zero records; one that did not act at
@@ -164,11 +165,29 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #endif /* PAIR_LW == 1 */
 #endif /* PAIR_EVAL || PAIR_EVAL_ROW */
 
+/* What particle i receives from contact c's record (see the top), added to
+ * its sums: partner, i is the contact's partner (-F and the partner's
+ * torque); nr = -radius[i] (PAIR_TC: the torque -rad tc). */
+static inline void rec_take(__global const REAL *rec, const int c, const int partner,
+                            const REAL nr, REAL3 *fs, REAL3 *ts)
+{
+    const REAL3 f = vload3(0, rec + REC_F(c));
+    *fs = partner ? *fs - f : *fs + f;
+#if defined(HAS_ROTATION) && defined(PAIR_TC)
+    const REAL3 t = nr * vload3(0, rec + REC_T(c));
+    *ts += t;
+#elif defined(HAS_ROTATION)
+    *ts += vload3(0, rec + (partner ? REC_TJ(c) : REC_T(c)));
+#else
+    (void)nr;
+    (void)ts;
+#endif
+}
+
 /* f_i (and torque_i) = the sum of the records of i's contacts in row order
- * (see the top: the partner side's -F and torque first, then the owned
- * contacts' F and torque); written, not added (this also clears the force
- * of the step). Then the
- * fused post_force ops [first, first + npost) and final_integrate and
+ * (see the top: the contacts i is the partner of, then its own); written,
+ * not added (this also clears the force of the step). Then the fused
+ * post_force ops [first, first + npost) and final_integrate and
  * end_of_step ops [first + npost, first + npost + nfinal) of
  * kernels/fused.cl, which may change f, torque, v and omega (and the fused
  * fix's store); with look, the next step's opening
@@ -182,28 +201,11 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
     const int c0 = coff[i], c1 = coff[i + 1];
     const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
-#ifdef PAIR_TC
     const REAL nr = -radius[i];
-#endif
-    for (int s = p0; s < p1; s++) {
-        const int c = pcon[s];
-        fs -= vload3(0, rec + REC_F(c));
-#if defined(HAS_ROTATION) && defined(PAIR_TC)
-        const REAL3 t = nr * vload3(0, rec + REC_T(c));
-        ts += t;
-#elif defined(HAS_ROTATION)
-        ts += vload3(0, rec + REC_TJ(c));
-#endif
-    }
-    for (int c = c0; c < c1; c++) {
-        fs += vload3(0, rec + REC_F(c));
-#if defined(HAS_ROTATION) && defined(PAIR_TC)
-        const REAL3 t = nr * vload3(0, rec + REC_T(c));
-        ts += t;
-#elif defined(HAS_ROTATION)
-        ts += vload3(0, rec + REC_T(c));
-#endif
-    }
+    for (int s = p0; s < p1; s++)
+        rec_take(rec, pcon[s], 1, nr, &fs, &ts);
+    for (int c = c0; c < c1; c++)
+        rec_take(rec, c, 0, nr, &fs, &ts);
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
     REAL qs = 0;
     for (int s = p0; s < p1; s++)
