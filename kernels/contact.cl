@@ -110,6 +110,28 @@ static inline struct contact contact_make(const REAL3 del, const REAL radi, cons
     return c;
 }
 
+#ifdef SPLIT_POS
+/* The refined length *r and overlap *delta of a split separation del +
+ * del_lo between spheres of radii radi, radj (contact_refine's arithmetic,
+ * shared with the history transfer's overlap test, contact_pair_overlaps). */
+static inline void contact_split_r(const REAL3 del, const REAL3 del_lo, const REAL radi,
+                                   const REAL radj, REAL *r, REAL *delta)
+{
+#ifdef HAS_FP64
+    const double dx = (double)del.x + (double)del_lo.x;
+    const double dy = (double)del.y + (double)del_lo.y;
+    const double dz = (double)del.z + (double)del_lo.z;
+    const double rd = sqrt(dx * dx + dy * dy + dz * dz);
+    *r = (REAL)rd;
+    *delta = (REAL)(((double)radi + (double)radj) - rd);
+#else
+    const REAL3 d = del + del_lo;
+    *r = sqrt(dot(d, d));
+    *delta = (radi + radj) - *r;
+#endif
+}
+#endif
+
 /* The separation and overlap of contact c from the split parts: del_lo is
  * the low part of x_i - x_j (SPLIT_POS). With double support they are
  * evaluated in double ((radi + radj) - |del + del_lo|), so an overlap far
@@ -118,18 +140,7 @@ static inline struct contact contact_make(const REAL3 del, const REAL radi, cons
 static inline int contact_refine(struct contact *c, const REAL3 del_lo)
 {
 #ifdef SPLIT_POS
-#ifdef HAS_FP64
-    const double dx = (double)c->del.x + (double)del_lo.x;
-    const double dy = (double)c->del.y + (double)del_lo.y;
-    const double dz = (double)c->del.z + (double)del_lo.z;
-    const double r = sqrt(dx * dx + dy * dy + dz * dz);
-    c->r = (REAL)r;
-    c->delta = (REAL)(((double)c->radi + (double)c->radj) - r);
-#else
-    const REAL3 d = c->del + del_lo;
-    c->r = sqrt(dot(d, d));
-    c->delta = c->radsum - c->r;
-#endif
+    contact_split_r(c->del, del_lo, c->radi, c->radj, &c->r, &c->delta);
     c->del = c->del + del_lo;
     c->rsq = c->r * c->r;
     return c->delta > (REAL)0;
@@ -328,6 +339,36 @@ static inline struct contact contact_build(const int kind, const int i,
     return k;
 }
 
+/* The gate's |del|^2 (del: the whole separation, hi + lo parts) */
+static inline REAL contact_gate_rsq(const REAL3 d)
+{
+    return d.x * d.x + d.y * d.y + d.z * d.z;
+}
+
+/* Whether two particles overlap as a pair contact's gate decides it
+ * (contact_gate for a pair site that is neither gated nor approaching:
+ * |del| < radi + radj, then with SPLIT_POS the refined overlap > 0), from the
+ * minimum-image separation del and its low part del_lo. The history
+ * transfer at a rebuild keeps a contact's history by this very test
+ * (kernels/neighbor.cl, hist_transfer), so a rebuild forgets exactly the
+ * histories the pair kernel would zero at that step: results do not depend
+ * on the rebuild schedule. */
+static inline int contact_pair_overlaps(const REAL3 del, const REAL3 del_lo, const REAL radi,
+                                        const REAL radj)
+{
+    const REAL reach = radi + radj;
+#ifdef SPLIT_POS
+    if (!(contact_gate_rsq(del + del_lo) < reach * reach))
+        return 0;
+    REAL r, delta;
+    contact_split_r(del, del_lo, radi, radj, &r, &delta);
+    return delta > (REAL)0;
+#else
+    (void)del_lo;
+    return contact_gate_rsq(del) < reach * reach;
+#endif
+}
+
 /* Steps 1 and 2 of the body: 1 when the site acts, with *k built. */
 static inline int contact_gate(const int kind, const int i, const struct contact_site *s,
                                const struct contact_partner *pj, const struct contact_atoms *a,
@@ -338,9 +379,7 @@ static inline int contact_gate(const int kind, const int i, const struct contact
 #else
     const REAL3 dtest = s->del;
 #endif
-    const REAL rsq = s->rgiven >= (REAL)0
-                         ? s->rgiven * s->rgiven
-                         : dtest.x * dtest.x + dtest.y * dtest.y + dtest.z * dtest.z;
+    const REAL rsq = s->rgiven >= (REAL)0 ? s->rgiven * s->rgiven : contact_gate_rsq(dtest);
     if (kind == CONTACT_PAIR) {
         if (s->gated) { /* cohesion reaches beyond contact: every pair within reach */
             if (rsq >= s->reach * s->reach)

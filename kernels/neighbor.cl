@@ -767,7 +767,7 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
                             const REAL bloy, const REAL bloz, const REAL bhix, const REAL bhiy,
                             const REAL bhiz, const REAL binvx, const REAL binvy,
                             const REAL binvz, const int nbx, const int nby, const int nbz,
-                            const REAL lmp_cutsq)
+                            const REAL lmp_cutsq POS_LO_PARAM)
 {
     /* ncontact < 0: -ncontact contacts and no previous ones (first build) */
     const int have_old = ncontact > 0, nc = have_old ? ncontact : -ncontact;
@@ -786,8 +786,11 @@ __kernel void hist_transfer(const int ncontact, __global const int *ci, __global
     int keep = 1;
     (void)radius;
 #else
-    const REAL radsum = radius[ci[c]] + radius[j];
-    int keep = del.x * del.x + del.y * del.y + del.z * del.z < radsum * radsum;
+    /* the pair kernel's own test on the same positions (with their low parts
+     * in single precision), so that a rebuild drops exactly the histories
+     * that kernel zeroes at this step, whatever the schedule */
+    int keep = contact_pair_overlaps(del, POS_LOAD_LO(ci[c]) - POS_LOAD_LO(j), radius[ci[c]],
+                                     radius[j]);
 #endif
 #ifdef LMP2021
     struct lmp_grid G;

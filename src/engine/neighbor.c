@@ -1067,6 +1067,7 @@ static void transfer(struct gravel *g, struct nbr *b, int nc, cl_mem perm, int p
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->a.tag);
     a = lammps2021_bins(g, b, k, a);
+    eng_arg_pos_lo(g, k, a); /* single precision only (POS_LO_PARAM) */
     eng_launch(g, k, (size_t)(nc < 0 ? -nc : nc));
 }
 

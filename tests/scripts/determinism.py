@@ -28,6 +28,12 @@ The same lane widths give the same bits for each lane-generic law (gran
 hooke, hooke/history, hertz/history) in double and single precision (split
 positions, the overlap in double lanes), on a shorter bed
 (lanes_<law>_<precision>_<width>, widths 4 and 16 against 1).
+A periodic packing (300 bidisperse spheres; pair granular hertz/material
+with mindlin, rolling and twisting history under fix deform, in double and
+single precision; without the deform and with gran/hooke/history in single)
+gives the same bits with a rebuild every step as with the default schedule
+(periodic_rebuild_every_step_*; `determinism.py rebuild_schedule` runs only
+these).
 A scene under 1500 atoms (the dense packing) runs on the serial device
 unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
@@ -165,6 +171,65 @@ dump_modify d sort id format float %.17g
 run 50
 """
 
+# A periodic packing of pair granular spheres (hertz/material, mindlin
+# tangential history, rolling sds and twisting marshall: a 6-REAL history row)
+# in a box that fix deform shears and compresses: contacts made, broken and
+# re-listed across the periodic faces. A rebuild every step (check no) must
+# give the bits of the default schedule, in double and in single precision
+# (split positions: the history transfer's overlap test reads the low parts
+# as the pair kernel does; check_rebuild_schedule).
+PGRAN = """units lj
+atom_style sphere
+boundary p p p
+region box block 0 6 0 6 0 6 units box
+create_box 2 box
+create_atoms 1 random 150 4242 NULL
+create_atoms 2 random 150 4343 NULL
+set type 1 diameter 1.0 density 1.0
+set type 2 diameter 0.7 density 2.0
+velocity all create 10.0 8811 loop geom
+{pair}
+fix move all nve/sphere
+{deform}
+{extra}
+neighbor 0.2 bin
+timestep 0.0005
+thermo_style custom step ke
+thermo_modify format float %.17g
+thermo 500
+dump d all custom 3000 out.dump id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz
+dump_modify d sort id format float %.17g
+run 3000
+"""
+PGRAN_GRANULAR = ("pair_style granular\n"
+                  "pair_coeff * * hertz/material 1e5 0.3 0.3 damping mass_velocity "
+                  "tangential mindlin NULL 1.0 0.5 rolling sds 1000.0 20.0 0.1 "
+                  "twisting marshall")
+PGRAN_HOOKE = "pair_style gran/hooke/history 20000.0 NULL 50.0 NULL 0.5 1\npair_coeff * *"
+PGRAN_DEFORM = ("change_box all triclinic\n"
+                "fix def all deform 1 xy erate 0.3 z erate -0.1 remap v")
+
+
+def check_rebuild_schedule():
+    """The periodic packing (PGRAN) with `neigh_modify every 1 delay 0 check
+    no` against the default schedule: pair granular under fix deform in
+    double and single precision, gran/hooke/history without it in single."""
+    bad = 0
+    for name, pair, deform, prec in (
+            ("granular_deform_double", PGRAN_GRANULAR, PGRAN_DEFORM, "double"),
+            ("granular_deform_single", PGRAN_GRANULAR, PGRAN_DEFORM, "single"),
+            ("granular_single", PGRAN_GRANULAR, "", "single"),
+            ("hooke_history_single", PGRAN_HOOKE, "", "single")):
+        args = ("-precision", prec)
+        ref_rows, ref_dump = run(PGRAN.format(pair=pair, deform=deform, extra=""), None, args)
+        rows, dump = run(PGRAN.format(pair=pair, deform=deform,
+                                      extra="neigh_modify every 1 delay 0 check no"), None, args)
+        ok = ref_rows is not None and rows is not None and dump == ref_dump and rows == ref_rows
+        detail = ((ref_dump or "") + (dump or ""))[-300:] if ref_rows is None or rows is None \
+            else first_difference(ref_dump, dump)
+        bad += not check("periodic_rebuild_every_step_" + name, ok, detail)
+    return bad
+
 
 def run(deck, env_extra=None, args=()):
     """Run a deck in a fresh directory; return (thermo rows, dump text)."""
@@ -243,6 +308,8 @@ def check_serial_default():
 
 
 def main():
+    if sys.argv[1:] == ["rebuild_schedule"]:  # only the periodic rebuild-schedule checks
+        return 1 if check_rebuild_schedule() else 0
     ref_rows, ref_dump = run(BED.format(extra=""))
     if ref_rows is None:
         check("determinism_reference_run", False, ref_dump[-400:])
@@ -272,6 +339,7 @@ def main():
         bad += not check("determinism_" + name + "_thermo", rows == ref_rows,
                          "%s vs %s" % (rows[-1:], ref_rows[-1:]))
     bad += check_lanes()
+    bad += check_rebuild_schedule()
     rows_f, dump_f = run(CHUTE)
     rows_u, dump_u = run(CHUTE, {"GRAVEL_FUSE": "0"})
     if rows_f is None or rows_u is None:
