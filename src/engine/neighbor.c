@@ -287,7 +287,7 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
     }
 }
 
-static void alloc_forces(struct gravel *g, struct nbr *b, size_t nc)
+static void alloc_records(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
     if (nc > b->cap_pair || !l->rec) {
@@ -552,7 +552,7 @@ void nbr_setup(struct gravel *g)
         b->pair_tc = e->pair_tc;
         b->cap_pair = 0;
         if (cap)
-            alloc_forces(g, b, cap);
+            alloc_records(g, b, cap);
     }
     /* exclusions */
     int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
@@ -1112,7 +1112,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
     if (e->history && !have_old)
         eng_fill_zero(g, l->shear, (size_t)total * e->hist_n * e->rsz);
     if (!have_old && !(e->history && e->hist_owner && total > 0)) {
-        alloc_forces(g, b, (size_t)total);
+        alloc_records(g, b, (size_t)total);
         return;
     }
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
@@ -1120,7 +1120,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
     transfer(g, b, have_old ? total : -total, have_old ? b->perm : any, permuted,
              have_old ? b->coff_old : any, have_old ? l->rec : any, (int)b->old_cj_at,
              have_old ? l->rec : l->shear);
-    alloc_forces(g, b, (size_t)total); /* after the transfer read the parked contacts */
+    alloc_records(g, b, (size_t)total); /* after the transfer read the parked contacts */
 }
 
 void nbr_history_install(struct gravel *g, const void *hist)
@@ -1579,7 +1579,7 @@ int nbr_import(struct gravel *g, const struct nbr_state *s)
     if (!asym) {
         alloc_list(g, b, maxn);
         alloc_contacts(g, b, total);
-        alloc_forces(g, b, total);
+        alloc_records(g, b, total);
         l->ncontact = (int)total;
         eng_write(g, l->ncount, 0, (size_t)n * sizeof(cl_int), s->ncount);
         eng_write(g, l->nlist, 0, slots * sizeof(cl_int), row);
