@@ -681,35 +681,6 @@ static void box_widths(const struct gravel *g, double W[3])
     W[2] = 1.0 / hi[2];
 }
 
-/* One exchange serves the ghosts (no multi-hop): in a periodic dimension a
- * sub-domain that does not span the box must leave room for twice the
- * ghost cut-off. */
-static void check_bricks(struct gravel *g, const struct par *p, double cut)
-{
-    const struct domain *d = &g->dom;
-    double W[3];
-    box_widths(g, W);
-    int tiled = decomp_tiled(&p->dc);
-    for (int r = 0; r < comm_size(); r++) {
-        double lo[3], hi[3];
-        decomp_box(&p->dc, r, lo, hi);
-        for (int q = 0; q < 3; q++) {
-            double L = W[q], w = L * (hi[q] - lo[q]);
-            if (!d->periodic[q] || (lo[q] <= 0 && hi[q] >= 1) || w + 2 * cut < L)
-                continue;
-            if (tiled)
-                gr_error(g, "%d ranks tiled by rcb: rank %d's sub-domain %g %s in periodic %c "
-                            "plus twice the ghost cut-off %g exceeds the box %g; use fewer "
-                            "ranks", comm_size(), r, w, d->triclinic ? "wide" : "long",
-                         "xyz"[q], cut, L);
-            gr_error(g, "%d ranks in periodic %c: a sub-domain %g %s plus twice the "
-                        "ghost cut-off %g exceeds the box %g; use fewer ranks in %c "
-                        "(processors) or even slabs", p->dc.p[q], "xyz"[q], w,
-                     d->triclinic ? "wide" : "long", cut, L, "xyz"[q]);
-        }
-    }
-}
-
 /* fix balance at a rebuild, before the atoms move: when the imbalance
  * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
  * dimensions in dims move to the quantiles of every rank's atoms, or (rcb)
@@ -773,7 +744,6 @@ void par_exchange(struct gravel *g, double cut)
     const struct domain *dm = &g->dom;
     int P = comm_size(), me = comm_rank();
     p->cut = cut;
-    check_bricks(g, p, cut);
     run_sync_host(g);
     int n = a->n;
     size_t rawb = extra_bytes(g), rb = record_bytes(g);
@@ -788,7 +758,6 @@ void par_exchange(struct gravel *g, double cut)
         rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh);
         p->balance_dims = 0;
         p->balance_rcb = 0;
-        check_bricks(g, p, cut);
     }
     /* destinations; an atom outside a fixed face is lost */
     int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
@@ -878,7 +847,12 @@ void par_exchange(struct gravel *g, double cut)
     free(dest);
     free(tagdest);
     a->n = nlocal;
-    /* 4. ghosts: every owned atom within the cut-off of another rank's brick */
+    /* 4. ghosts: every owned atom within the cut-off of another rank's brick
+     * (in any periodic image), sent once at its own coordinates: each rank's
+     * neighbor build takes every pair by its minimum image, unique because a
+     * periodic box is at least twice the neighbor cut-off (checked as on one
+     * process), so a ghost near a brick from both sides serves both, and a
+     * brick plus twice the ghost cut-off may reach across the box */
     free(p->sendidx);
     p->sendn = gr_realloc(g, p->sendn, (size_t)P * sizeof(int));
     p->soff = gr_realloc(g, p->soff, ((size_t)P + 1) * sizeof(int));

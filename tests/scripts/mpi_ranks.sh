@@ -591,14 +591,69 @@ ref_run triv.in
 same tri_remap_v_np3 triv.in 3 ""
 if [ -f /usr/share/lammps/examples/multi/in.granular ]; then
     sed -e 's/^thermo          100/thermo_modify   format float %.17g\nthermo          100/' \
-        -e 's/^run             2000/run             1000/' \
         -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
         /usr/share/lammps/examples/multi/in.granular > mgran.in
     ref_run mgran.in
+    # the whole 2000 steps: the barostat shrinks the box until a brick plus twice
+    # the ghost cut-off (the large spheres' 20 + skin) reaches across it
     same lammps_multi_granular_np2 mgran.in 2 ""
+    # multi/in.powerlaw: particles up to 80 diameters wide, a ghost cut-off of 82
+    # in a box of 322: on 2 x 2 ranks each brick's ghosts wrap round the box
+    sed -e 's/^thermo          100/thermo_modify   format float %.17g\nthermo          100/' \
+        -e 's/^run             1000/run             500/' \
+        -e '$a write_dump      all custom final.dump id x y z vx vy vz modify sort id format float %.17g' \
+        /usr/share/lammps/examples/multi/in.powerlaw > mpow.in
+    cp /usr/share/lammps/examples/multi/data.powerlaw .
+    ref_run mpow.in
+    same lammps_multi_powerlaw_np2 mpow.in 2 ""
+    same lammps_multi_powerlaw_np4 mpow.in 4 "" "2 2 1"
 else
     echo "SKIP mpi_lammps_multi_granular_np2 (/usr/share/lammps/examples missing: make test installs lammps)"
 fi
+
+# ghosts that reach round the periodic box: 4 spheres of diameter 4.5 among
+# small ones in a box of 12 (ghost cut-off 5.0): a brick plus twice the cut-off
+# exceeds the box on 2, 3 and 4 slabs, so a ghost is near a brick from both
+# sides (one copy, each pair by its minimum image); a cut-off over half the box
+# stops every rank with one process's message
+cat > reach.in <<'IN'
+variable        dbig index 4.5
+units           lj
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+region          box block 0 12 0 12 0 12
+create_box      2 box
+create_atoms    1 random 300 48213 NULL overlap 1.0 maxtry 100
+create_atoms    2 single 3 3 3
+create_atoms    2 single 9 9 3
+create_atoms    2 single 3 9 9
+create_atoms    2 single 9 3 9
+set             type 1 diameter 1.0 density 1.9098593
+set             type 2 diameter ${dbig} density 1.9098593
+group           small type 1
+group           big type 2
+delete_atoms    overlap 3.5 small big
+velocity        all create 25.0 4928459 loop geom
+pair_style      gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        0.5 bin
+neigh_modify    every 1 delay 0 check yes
+fix             1 all nve/sphere
+timestep        0.001
+thermo_style    custom step atoms ke epair press pxy
+thermo_modify   format float %.17g
+thermo          200
+run             2000
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+IN
+ref_run reach.in
+check reach_contacts 'grep -q "^Contacts = [1-9]" ref.out && grep -q "^Neighbor list builds = [1-9]" ref.out'
+same ghost_reach_np2 reach.in 2 ""
+same ghost_reach_np3 reach.in 3 ""
+same ghost_reach_np4_slabs reach.in 4 "" "4 1 1"
+mpirun -np 2 "$par" -in reach.in -var dbig 6.0 -log none > reach6.out 2>&1; rc=$?
+check ghost_reach_half_box_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*less than twice the neighbor cut-off" reach6.out)" -eq 1 ]'
 
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
