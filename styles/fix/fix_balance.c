@@ -7,11 +7,9 @@
  * move to their ranks. On one process there is nothing to balance: it
  * warns, and forces the same rebuilds (so a run gives the same bits on any
  * number of ranks).
- * rcb (comm_style tiled): at the first neighbor rebuild on or after every
- * Nfreq-th step the box is tiled again by bisecting the atoms (rcb.h).
- * It forces no rebuild (LAMMPS does), so one process, which has nothing
- * to balance and only warns, keeps its rebuilds and bits, and so do the
- * ranks. Nfreq 0: once, at the run's first rebuild. */
+ * rcb (comm_style tiled): the same forced rebuilds, where the box is tiled
+ * again by bisecting the atoms (rcb.h). Nfreq 0: once, at the run's first
+ * rebuild. As in LAMMPS, both styles force a rebuild every Nfreq steps. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,7 +25,6 @@ struct fix_balance {
     double thresh;
     unsigned dims; /* shift */
     int rcb;
-    bigint next;   /* rcb: the step from which the next rebuild balances */
 };
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -40,12 +37,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix balance Nfreq must be >= 0");
     if (!(thresh >= 1.0))
         gr_error(g, "fix balance thresh must be >= 1.0");
-    if (!strcmp(argv[2], "rcb") && comm_size() == 1) { /* LAMMPS decks: nothing to do */
-        gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
-        return;
-    }
     if (!strcmp(argv[2], "rcb")) {
-        if (!par_state(g)->dc.tiled)
+        if (comm_size() == 1) /* LAMMPS decks: nothing to balance, the same rebuilds */
+            gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
+        else if (!par_state(g)->dc.tiled)
             gr_error(g, "fix balance rcb needs comm_style tiled (LAMMPS: Fix balance rcb "
                         "cannot be used with comm_style brick)");
         if (argc != 3)
@@ -79,13 +74,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 static void init(struct gravel *g, struct fix *f)
 {
     struct fix_balance *b = f->data;
-    if (!b)
-        return; /* rcb on one process */
     bigint n = b->nfreq;
-    if (b->rcb) { /* no forced rebuild: the next one from this step on */
-        b->next = n > 0 ? (g->step / n + 1) * n : g->step + 1;
-        return;
-    }
     f->force_reneighbor = 1; /* on one process too: the same rebuilds, the same bits */
     f->next_reneighbor = n > 0 ? (g->step / n + 1) * n : g->step + 1;
 }
@@ -94,22 +83,12 @@ static void init(struct gravel *g, struct fix *f)
 static void pre_exchange(struct gravel *g, struct fix *f)
 {
     struct fix_balance *b = f->data;
-    if (b && b->rcb) {
-        if (b->next <= 0 || g->step < b->next)
-            return;
-        if (par_on(g)) {
-            struct par *p = par_state(g);
-            p->balance_rcb = 1;
-            p->balance_thresh = b->thresh;
-        }
-        b->next = b->nfreq > 0 ? (g->step / b->nfreq + 1) * b->nfreq : 0;
-        return;
-    }
-    if (!b || f->next_reneighbor != g->step)
+    if (f->next_reneighbor != g->step)
         return;
     if (par_on(g)) {
         struct par *p = par_state(g);
-        p->balance_dims = b->dims;
+        p->balance_rcb = b->rcb;
+        p->balance_dims = b->rcb ? 0 : b->dims;
         p->balance_thresh = b->thresh;
     }
     f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;

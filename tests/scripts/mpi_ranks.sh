@@ -691,8 +691,8 @@ same chute_single_np2 chute.in 2 "-precision single"
 # balance rcb and fix balance rcb (comm_style tiled): a bed settling under gravity
 # on a plane wall, periodic in x and y, its 720 atoms in the lowest 6 of 16 layers;
 # balance rcb bisects them into tiles that are no grid on 3 ranks (two tiles side by
-# side in y, one beside them in x), fix balance tiles again at the first rebuild
-# after every 100th step; the same bits as one process (which has nothing to balance)
+# side in y, one beside them in x), fix balance tiles again at a rebuild it forces
+# every 100 steps; the same bits as one process (which has nothing to balance)
 cat > rcb.in <<'IN'
 units           lj
 atom_style      sphere
@@ -735,6 +735,13 @@ same rcb_np4 rcb.in 4 ""
 nlocal_spread() { awk '/^Nlocal:/ { s = $4 - $6 } END { print s }' "$1"; }
 check rcb_report 'grep -q "^  initial/final imbalance factor  = 2.5000000 1.0000000$" rcb_np3.out && grep -q "^  initial/final maximal load/proc = 360.00000 180.00000$" rcb_np4.out && grep -q "^  rank 0 tile: x 0.00000 0.625000 y 0.00000 0.450000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^  rank 2 tile: x 0.625000 1.00000 y 0.00000 1.00000 z 0.00000 1.00000$" rcb_np3.out && grep -q "^Decomposition: 3 MPI ranks tiled by rcb" rcb_np3.out'
 check rcb_fix_balanced '[ "$(nlocal_spread rcb_np3.out)" -le 2 ] && [ "$(nlocal_spread rcb_np4.out)" -le 2 ] && [ "$(nlocal_spread rcb_np2.out)" -le 2 ]'
+# fix balance rcb forces a rebuild every Nfreq steps, as LAMMPS does, on one
+# process too: without history (lmp 2021's CommTiled has none for the wall) the
+# deck rebuilds 20 and 12 times, the counts `lmp -in rcbh.in` prints
+sed -e 's|^fix             w all wall/gran hooke/history|fix             w all wall/gran hooke|' \
+    -e 's|^pair_style      gran/hooke/history|pair_style      gran/hooke|' rcb.in > rcbh.in
+"$serial" -in rcbh.in -log none > rcbh.out 2>&1
+check rcb_forced_rebuilds_as_lammps '[ "$(grep "^Neighbor list builds" rcbh.out | tr -d "\n")" = "Neighbor list builds = 20Neighbor list builds = 12" ]'
 # a shift after rcb: the grid again (2 x 1 x 2 on 4 ranks), the same bits
 sed 's/^run             300/balance         1.0 shift z 10 1.0\n&/' rcb.in > rcbgrid.in
 ref_run rcbgrid.in
