@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "atoms.h"
+#include "comm.h"
 #include "error.h"
 #include "log.h"
 
@@ -22,6 +23,10 @@ struct engine *eng_open(struct gravel *g, long atoms)
         e->ready = 1;
         gr_print(g, "OpenCL device: %s (%s)%s\n", e->ocl.name, e->ocl.version,
                  e->ocl.serial ? "; serial: kernels run in gravel's own thread" : "");
+        if (e->ocl.threads && !e->ocl.is_gpu)
+            gr_print(g, "PoCL threads per rank: %d (%d ranks share this node's cores; "
+                        "POCL_MAX_PTHREAD_COUNT overrides)\n", e->ocl.threads,
+                     comm_local_size());
     }
     return e;
 }

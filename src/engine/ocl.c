@@ -6,6 +6,7 @@
 #include "ocl.h"
 
 #include <errno.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "comm.h"
 #include "error.h"
 #include "program_cache.h"
 
@@ -143,6 +145,30 @@ static int serial_wanted(const char *want, long atoms)
     return atoms >= 0 && atoms < OCL_SERIAL_ATOMS;
 }
 
+/* Ranks that share a node share its cores: unless the environment says
+ * otherwise, each rank's PoCL threads are the cores it may run on (its
+ * binding), at most the node's cores over its ranks, at least one, so that
+ * N ranks do not start N threads per core (doc/parallel.md, On a CPU).
+ * Set before PoCL lists its devices (it reads the variable then); returns
+ * the count set (0: none), to be taken back after. */
+static int share_cores(void)
+{
+    const char *set = getenv("POCL_MAX_PTHREAD_COUNT");
+    int ranks = comm_local_size();
+    if (ranks < 2 || (set && *set))
+        return 0;
+    long online = sysconf(_SC_NPROCESSORS_ONLN);
+    int threads = online > 0 ? (int)(online / ranks) : 1;
+    cpu_set_t mask;
+    if (sched_getaffinity(0, sizeof mask, &mask) == 0 && CPU_COUNT(&mask) < threads)
+        threads = CPU_COUNT(&mask);
+    threads = threads > 1 ? threads : 1;
+    char v[16];
+    snprintf(v, sizeof v, "%d", threads);
+    setenv("POCL_MAX_PTHREAD_COUNT", v, 1);
+    return threads;
+}
+
 void ocl_init(struct gravel *g, struct ocl *o, const char *want, long atoms)
 {
     cl_platform_id plat[64];
@@ -154,18 +180,31 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want, long atoms)
     o->serial = serial_wanted(want, atoms);
     if (o->serial)
         setenv("POCL_DEVICES", "basic", 1);
+    o->threads = o->serial ? 0 : share_cores();
     int n = list_devices(g, plat, dev, 64);
     if (o->serial)
         unsetenv("POCL_DEVICES");
+    if (o->threads)
+        unsetenv("POCL_MAX_PTHREAD_COUNT");
     if (!want || !*want || !strcmp(want, "serial"))
         want = "cpu";
     int pick = -1;
     if (!strcmp(want, "cpu") || !strcmp(want, "gpu")) {
         cl_device_type t = !strcmp(want, "cpu") ? CL_DEVICE_TYPE_CPU : CL_DEVICE_TYPE_GPU;
+        /* GPUs round-robin over the ranks of a node: its k-th rank takes the
+         * (k mod count)-th GPU (one process: the first) */
+        int nt = 0, skip = 0;
+        for (int i = 0; i < n; i++) {
+            cl_device_type dt;
+            nt += clGetDeviceInfo(dev[i], CL_DEVICE_TYPE, sizeof dt, &dt, NULL) == CL_SUCCESS &&
+                  (dt & t);
+        }
+        if (t == CL_DEVICE_TYPE_GPU && nt > 0)
+            skip = comm_local_rank() % nt;
         for (int i = 0; i < n && pick < 0; i++) {
             cl_device_type dt;
             if (clGetDeviceInfo(dev[i], CL_DEVICE_TYPE, sizeof dt, &dt, NULL) == CL_SUCCESS &&
-                (dt & t))
+                (dt & t) && skip-- == 0)
                 pick = i;
         }
         if (pick < 0 && !strcmp(want, "gpu"))

@@ -24,6 +24,8 @@ struct ocl {
     int is_gpu;
     int serial;                 /* PoCL's serial CPU device (ocl_init: -device serial, or a
                                  * scene under OCL_SERIAL_ATOMS atoms by default) */
+    int threads;                /* PoCL threads this rank asked for, sharing its node's
+                                 * cores with the other ranks there (0: not asked) */
     int host_unified;           /* a CPU device on host memory (CL_DEVICE_HOST_UNIFIED_MEMORY):
                                  * buffers may be the host's arrays (ocl_wrap); env
                                  * GRAVEL_HOST_SHARE=0 turns that off */

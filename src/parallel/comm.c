@@ -40,7 +40,7 @@ static void collective(size_t bytes)
     count_[3] += 1;
 }
 
-static int rank_, size_ = 1;
+static int rank_, size_ = 1, local_rank_, local_size_ = 1;
 
 int comm_init(int *argc, char ***argv)
 {
@@ -51,6 +51,11 @@ int comm_init(int *argc, char ***argv)
     MPI_Init(argc, argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    MPI_Comm node; /* the ranks that share this node's memory */
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+    MPI_Comm_rank(node, &local_rank_);
+    MPI_Comm_size(node, &local_size_);
+    MPI_Comm_free(&node);
     return rank_;
 }
 
@@ -62,6 +67,8 @@ _Noreturn void comm_abort(int code)
 }
 int comm_rank(void) { return rank_; }
 int comm_size(void) { return size_; }
+int comm_local_rank(void) { return local_rank_; }
+int comm_local_size(void) { return local_size_; }
 int comm_parallel_build(void) { return 1; }
 void comm_barrier(void) { MPI_Barrier(MPI_COMM_WORLD); }
 
@@ -246,6 +253,8 @@ void comm_finalize(void) {}
 _Noreturn void comm_abort(int code) { exit(code); }
 int comm_rank(void) { return 0; }
 int comm_size(void) { return 1; }
+int comm_local_rank(void) { return 0; }
+int comm_local_size(void) { return 1; }
 int comm_parallel_build(void) { return 0; }
 void comm_barrier(void) {}
 long long comm_sum_ll(long long v) { return v; }

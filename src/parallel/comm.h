@@ -18,6 +18,10 @@ void comm_finalize(void);
 _Noreturn void comm_abort(int code);
 int comm_rank(void);
 int comm_size(void);
+/* Not collective: this rank among the ranks on its node (shared memory),
+ * and their number (one process: 0 and 1). */
+int comm_local_rank(void);
+int comm_local_size(void);
 /* 1 when this binary can run on several ranks (built with GR_MPI). */
 int comm_parallel_build(void);
 

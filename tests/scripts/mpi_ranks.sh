@@ -677,6 +677,8 @@ ref_run chute.in
 check chute_dumps_written '[ -s ref/d.160.txt ] && [ -s ref/v_180.vtk ] && [ "$(ls ref | wc -l)" -eq 9 ]'
 same chute_np3 chute.in 3 ""
 same chute_np4_z chute.in 4 "" "1 2 2"
+# ranks on one node share its cores: oversubscribed here, one PoCL thread each
+check pocl_threads_shared 'grep -q "^PoCL threads per rank: 1 (3 ranks share this node" chute_np3.out && ! grep -q "^PoCL threads" ref.out'
 # balance: the chute's z slabs at the atoms' median (LAMMPS 2x1x2 on 4 ranks starts at
 # 8010 atoms, imbalance 1.00125, as lmp prints), then fix balance moving x and z cuts
 # every 40 steps; the same bits as one process with the same deck
