@@ -881,37 +881,73 @@ void par_exchange(struct gravel *g, double cut)
             for (int q = 0; q < 3; q++)
                 lam[3 * (size_t)i + q] = decomp_fraction_raw(g, q, a->x + 3 * (size_t)i);
     }
-    outbox_init(g, &ob, P);
-    int nsend = 0, cap = nlocal + 16;
-    int *idx = gr_malloc(g, (size_t)cap * sizeof(int)), *rk = gr_malloc(g, (size_t)cap * sizeof(int));
-    for (int r = 0; r < P; r++) {
-        p->sendn[r] = 0;
-        if (r == me)
-            continue;
-        for (int i = 0; i < nlocal; i++) {
-            const double *x = lam ? lam + 3 * (size_t)i : a->x + 3 * (size_t)i;
-            int near = 1;
-            for (int q = 0; q < 3 && near; q++)
-                near = gap(x[q], blo[r][q], bhi[r][q], per[q], dm->periodic[q]) <= cuts[q];
-            if (!near)
-                continue;
-            if (nsend == cap) {
-                cap *= 2;
-                idx = gr_realloc(g, idx, (size_t)cap * sizeof(int));
-                rk = gr_realloc(g, rk, (size_t)cap * sizeof(int));
+    /* (atom, rank) pairs, atoms ascending; then rank by rank (a stable
+     * counting sort), each rank's atoms ascending, as they are packed */
+    int npair = 0, cap = nlocal + 16;
+    int *pi = gr_malloc(g, (size_t)cap * sizeof(int)), *pr = gr_malloc(g, (size_t)cap * sizeof(int));
+    const int grid = !decomp_tiled(&p->dc), *pg = p->dc.p;
+    int *ranks[3], nr[3];
+    for (int q = 0; q < 3; q++)
+        ranks[q] = gr_malloc(g, (size_t)pg[q] * sizeof(int));
+    for (int i = 0; i < nlocal; i++) {
+        const double *x = lam ? lam + 3 * (size_t)i : a->x + 3 * (size_t)i;
+        int cand = P;
+        if (grid) { /* per dimension the slabs within the cut-off: the grid's near bricks */
+            for (int q = 0; q < 3; q++) {
+                nr[q] = 0;
+                for (int k = 0; k < pg[q]; k++) {
+                    int r0 = q == 0 ? k : q == 1 ? k * pg[0] : k * pg[0] * pg[1];
+                    if (gap(x[q], blo[r0][q], bhi[r0][q], per[q], dm->periodic[q]) <= cuts[q])
+                        ranks[q][nr[q]++] = k;
+                }
             }
-            idx[nsend] = i;
-            rk[nsend++] = r;
-            p->sendn[r]++;
-            pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb, outbox_room(g, &ob, r, rb));
+            cand = nr[0] * nr[1] * nr[2];
+        }
+        for (int c = 0; c < cand; c++) {
+            int r = c;
+            if (grid)
+                r = ranks[0][c % nr[0]] +
+                    pg[0] * (ranks[1][c / nr[0] % nr[1]] + pg[1] * ranks[2][c / (nr[0] * nr[1])]);
+            if (r == me)
+                continue;
+            if (!grid) { /* rcb tiles: every other rank's box */
+                int near = 1;
+                for (int q = 0; q < 3 && near; q++)
+                    near = gap(x[q], blo[r][q], bhi[r][q], per[q], dm->periodic[q]) <= cuts[q];
+                if (!near)
+                    continue;
+            }
+            if (npair == cap) {
+                cap *= 2;
+                pi = gr_realloc(g, pi, (size_t)cap * sizeof(int));
+                pr = gr_realloc(g, pr, (size_t)cap * sizeof(int));
+            }
+            pi[npair] = i;
+            pr[npair++] = r;
         }
     }
-    free(rk);
-    free(lam);
-    p->sendidx = idx; /* rank by rank, as the loop above sent them */
+    for (int q = 0; q < 3; q++)
+        free(ranks[q]);
+    for (int r = 0; r < P; r++)
+        p->sendn[r] = 0;
+    for (int k = 0; k < npair; k++)
+        p->sendn[pr[k]]++;
     p->soff[0] = 0;
     for (int r = 0; r < P; r++)
         p->soff[r + 1] = p->soff[r] + p->sendn[r];
+    int *idx = gr_malloc(g, ((size_t)npair + 1) * sizeof(int));
+    int *fill = gr_calloc(g, (size_t)P, sizeof(int));
+    outbox_init(g, &ob, P);
+    for (int k = 0; k < npair; k++) {
+        int r = pr[k], i = pi[k];
+        idx[p->soff[r] + fill[r]++] = i;
+        pack_atom(a, i, raw ? raw + (size_t)i * rawb : NULL, rawb, outbox_room(g, &ob, r, rb));
+    }
+    free(fill);
+    free(pi);
+    free(pr);
+    free(lam);
+    p->sendidx = idx; /* rank by rank, as packed */
     free(blo);
     free(bhi);
     in = outbox_send(g, &ob, P, &inb, from);
