@@ -30,6 +30,7 @@ a table for doc/benchmark.md."""
 import argparse
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -148,6 +149,8 @@ def main():
                    help="also the CPU-sample ratio of run A (Linux perf)")
     a = p.parse_args()
     GRAVEL = os.path.abspath(a.gravel) if a.gravel else GRAVEL
+    if a.perf and not shutil.which("perf"):
+        sys.exit("bench_mesh.py: --perf needs Linux perf (`perf record`, `perf report`) on PATH")
     with tempfile.TemporaryDirectory() as d:
         L = a.n * 0.98
         ntri = floor_stl(os.path.join(d, "floor.stl"), -0.5, L + 0.5, a.tri_side)
