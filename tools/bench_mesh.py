@@ -19,12 +19,18 @@ wall (fix wall/pair mesh, the same law), B the pair style only, C neither
 (loop times of `run S`). The same two figures from run A alone, by device
 time per kernel (GRAVEL_PROFILE=1: the mesh kernel per mesh contact,
 pair_contacts + pair_gather per pair contact), do not depend on the load of
-a shared machine between the runs. --law hooke/history uses LAMMPS's gran/hooke/history
+a shared machine between the runs. --perf adds a third figure from run A
+alone: the share of CPU samples (`perf record`, Linux perf; PoCL names a
+kernel's code _pocl_kernel_NAME_workgroup) in the mesh kernel against
+pair_contacts + pair_gather, per contact; it counts the cycles each kernel
+ran, not the wall time between its start and end, so other sessions' load
+that preempts a kernel does not enter it. --law hooke/history uses LAMMPS's gran/hooke/history
 with fix wall/gran hooke/history ... mesh instead (no impulse solver). Prints
 a table for doc/benchmark.md."""
 import argparse
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -91,13 +97,34 @@ run %d
 """ % (rho, L, L, L, L, rho, 0.48 / a, pair, wall, steps, steps)
 
 
-def run(d, text):
-    """Loop time, contacts and the device seconds per kernel name of one run."""
+def perf_shares(d, data):
+    """Percent of the CPU samples in the mesh kernels and in pair_contacts +
+    pair_gather, from `perf report` of data."""
+    r = subprocess.run(["perf", "report", "-i", data, "--no-children", "--sort", "sym",
+                        "-F", "overhead,sym"], cwd=d, capture_output=True, text=True,
+                       timeout=600)
+    mesh = pair = 0.0
+    for line in r.stdout.splitlines():
+        m = re.match(r"\s*([0-9.]+)%\s+\[\.\]\s+_pocl_kernel_(\w+)_workgroup", line)
+        if not m:
+            continue
+        if m.group(2).startswith("mesh_"):
+            mesh += float(m.group(1))
+        elif m.group(2) in ("pair_contacts", "pair_gather"):
+            pair += float(m.group(1))
+    return mesh, pair
+
+
+def run(d, text, perf=False):
+    """Loop time, contacts and the device seconds per kernel name of one run
+    (with perf: and the CPU sample shares of perf_shares)."""
     with open(os.path.join(d, "in.deck"), "w") as f:
         f.write(text)
     env = dict(os.environ, GRAVEL_PROFILE="1")
-    r = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none", "-echo", "none"], cwd=d,
-                       capture_output=True, text=True, timeout=1200, env=env)
+    cmd = [GRAVEL, "-in", "in.deck", "-log", "none", "-echo", "none"]
+    if perf:
+        cmd = ["perf", "record", "-q", "-F", "2000", "-o", "perf.data", "--"] + cmd
+    r = subprocess.run(cmd, cwd=d, capture_output=True, text=True, timeout=1200, env=env)
     if r.returncode:
         sys.exit("gravel failed:\n" + r.stdout[-2000:] + r.stderr[-2000:])
     out = r.stdout
@@ -105,7 +132,8 @@ def run(d, text):
     m = re.search(r"Contacts = (\d+)", out)
     kern = {k: float(t) for k, t in
             re.findall(r"^  (\w+) +\d+ calls +([0-9.eE+-]+) s", r.stderr, re.M)}
-    return loop, int(m.group(1)) if m else 0, kern
+    shares = perf_shares(d, "perf.data") if perf else None
+    return loop, int(m.group(1)) if m else 0, kern, shares
 
 
 def main():
@@ -117,23 +145,31 @@ def main():
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--law", choices=sorted(LAWS), default="hertz/mindlin")
     p.add_argument("--gravel", help="the binary (default bin/gravel)")
+    p.add_argument("--perf", action="store_true",
+                   help="also the CPU-sample ratio of run A (Linux perf)")
     a = p.parse_args()
     GRAVEL = os.path.abspath(a.gravel) if a.gravel else GRAVEL
+    if a.perf and not shutil.which("perf"):
+        sys.exit("bench_mesh.py: --perf needs Linux perf (`perf record`, `perf report`) on PATH")
     with tempfile.TemporaryDirectory() as d:
         L = a.n * 0.98
         ntri = floor_stl(os.path.join(d, "floor.stl"), -0.5, L + 0.5, a.tri_side)
         t = {"A": [], "B": [], "C": []}
-        kmesh, kpair = [], []
+        kmesh, kpair, smesh, spair = [], [], [], []
         npair = 0
         for k in range(a.repeat):
             for mode in "ABC":
-                loop, nc, kern = run(d, deck(a.n, mode, a.steps, a.law))
+                loop, nc, kern, sh = run(d, deck(a.n, mode, a.steps, a.law),
+                                         a.perf and mode == "A")
                 t[mode].append(loop)
                 if mode == "B":
                     npair = nc
                 if mode == "A":
                     kmesh.append(sum(v for n, v in kern.items() if n.startswith("mesh_")))
                     kpair.append(kern.get("pair_contacts", 0) + kern.get("pair_gather", 0))
+                    if sh:
+                        smesh.append(sh[0])
+                        spair.append(sh[1])
         natoms = a.n * a.n
         mA, mB, mC = (statistics.median(t[m]) for m in "ABC")
         mesh_c = natoms          # every sphere touches the floor once
@@ -154,6 +190,11 @@ def main():
         print("device time per kernel in run A (medians): mesh kernel %.1f ns per mesh "
               "contact-step; pair_contacts + pair_gather %.1f ns per pair contact-step; ratio "
               "%.2f" % (1e9 * km, 1e9 * kp, km / kp))
+        if a.perf:
+            sm, sp = statistics.median(smesh), statistics.median(spair)
+            print("CPU samples in run A (perf, medians): mesh kernel %.2f %%, pair_contacts + "
+                  "pair_gather %.2f %%; per contact, ratio %.2f"
+                  % (sm, sp, (sm / mesh_c) / (sp / npair) if sm > 0 and sp > 0 else float("nan")))
 
 
 if __name__ == "__main__":
