@@ -369,7 +369,8 @@ static inline void nbr_row_insert(__global int *row, int *cnt, int *own, const i
  * owns, the last nown[i] entries of its row. Cells list their atoms in
  * cellatoms (or, after a re-sort, are contiguous index ranges: sorted = 1).
  * Slots beyond maxn are counted but not written: flags[2] receives the
- * largest count so the host can grow and rebuild. */
+ * largest count of a row that overflows (zero when none does) so the host
+ * can grow and rebuild. */
 __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL *radius,
                         __global const int *type, __global const uint *mask,
                         __global const long *tag, __global const int *start,
@@ -418,7 +419,8 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
         }
     ncount[i] = cnt < maxn ? cnt : maxn;
     nown[i] = own;
-    atomic_max(&flags[2], cnt);
+    if (cnt > maxn) /* only an overflow is read; an atomic per atom bounces a cache line */
+        atomic_max(&flags[2], cnt);
 }
 
 /* ---- neighbor multi: one cell grid per collection ------------------------
@@ -618,7 +620,8 @@ __kernel void nbr_build_multi(const int n, __global const REAL *x, __global cons
         nbr_row_sort(row, cnt, tag);
     ncount[i] = cnt < maxn ? cnt : maxn;
     nown[i] = own;
-    atomic_max(&flags[2], cnt);
+    if (cnt > maxn) /* only an overflow is read; an atomic per atom bounces a cache line */
+        atomic_max(&flags[2], cnt);
 }
 
 /* Contacts from the rows: i owns contacts coff[i] .. coff[i] + nown[i] - 1
