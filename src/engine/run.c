@@ -792,13 +792,17 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         t[TM_OUTPUT] += wall() - o0;
         run_sync_host(g);
         e->active = 0;
+        par_rerun_gather(g); /* several ranks: the snapshot goes into every atom */
         bigint prev = g->step;
         if (load(g, ctx) < 0) {
             g->step = prev;
+            par_rerun_keep(g);
             break;
         }
         check_atoms(g);
+        par_rerun_scatter(g); /* ... and each rank keeps its brick's */
         eng_upload(g);
+        par_fix_state_restore(g);
     }
     eng_upload(g); /* the host may have been read from: the device state again */
     double o0 = wall();
@@ -865,8 +869,6 @@ void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *
                bigint firststep, bigint laststep)
 {
     struct rerun_args r = {load, ctx, firststep, laststep};
-    if (comm_size() > 1)
-        par_refuse(g, "rerun");
     guarded(g, rerun_body, &r);
 }
 

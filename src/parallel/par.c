@@ -352,17 +352,11 @@ uint64_t par_tag_set_key(const struct atoms *a)
     return h ? h : 1;
 }
 
-void par_run_begin(struct gravel *g)
+/* This rank's atoms of the host's whole set (tag order): those of its brick
+ * or tile, with the rows of the last run's end set that the fixes' saved
+ * state and the contact history belong to when the set is the same. */
+static void keep_brick(struct gravel *g, struct par *p)
 {
-    struct par *p = par_state(g);
-    p->on = comm_size() > 1;
-    p->nghost = 0;
-    p->list_current = 0; /* the device's contacts are the last run's */
-    p->ended = 0;
-    if (!p->on)
-        return;
-    check_scene(g);
-    decomp_setup(g, &p->dc);
     struct atoms *a = &g->atoms;
     /* the saved contact history belongs to these atoms only (as one rank
      * keeps its list only while the atoms are the same) */
@@ -383,6 +377,20 @@ void par_run_begin(struct gravel *g)
             k++;
         }
     a->n = k;
+}
+
+void par_run_begin(struct gravel *g)
+{
+    struct par *p = par_state(g);
+    p->on = comm_size() > 1;
+    p->nghost = 0;
+    p->list_current = 0; /* the device's contacts are the last run's */
+    p->ended = 0;
+    if (!p->on)
+        return;
+    check_scene(g);
+    decomp_setup(g, &p->dc);
+    keep_brick(g, p);
     if (decomp_tiled(&p->dc))
         gr_print(g, "Decomposition: %d MPI ranks tiled by rcb\n", comm_size());
     else
@@ -1120,6 +1128,34 @@ void par_snapshot_end(struct gravel *g)
     p->nsaved = 0;
     p->ended = 0;
     par_gather_end(g);
+}
+
+/* ---- rerun: a snapshot read into every rank's whole set ----------------------- */
+
+void par_rerun_gather(struct gravel *g)
+{
+    par_snapshot_begin(g); /* the history and the fixes' state by tag, as at a run's end */
+}
+
+void par_rerun_keep(struct gravel *g)
+{
+    par_snapshot_end(g);
+}
+
+void par_rerun_scatter(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->gathered)
+        return;
+    atoms_free_fields(&p->local); /* the last snapshot's own: the new one replaces them */
+    memset(&p->local, 0, sizeof p->local);
+    p->gathered = 0;
+    p->on = 1;
+    p->ended = 0;
+    p->nghost = 0;
+    g->eng->nghost = 0;
+    p->list_current = 0; /* the next build takes the history from p->hist by tag pair */
+    keep_brick(g, p);
 }
 
 void par_gather_end(struct gravel *g)

@@ -125,5 +125,14 @@ void par_gather_end(struct gravel *g);
 void par_snapshot_begin(struct gravel *g);
 void par_snapshot_end(struct gravel *g);
 
+/* rerun on several ranks. Before a snapshot is read: every rank's atoms in
+ * tag order on the host, the contacts' history and the fixes' per-atom
+ * state saved by tag (the device untouched). No snapshot followed:
+ * par_rerun_keep returns to this rank's atoms. One was read into the whole
+ * set: par_rerun_scatter keeps this rank's brick of it (then eng_upload and
+ * par_fix_state_restore, and the next build exchanges ghosts and history). */
+void par_rerun_gather(struct gravel *g);
+void par_rerun_keep(struct gravel *g);
+void par_rerun_scatter(struct gravel *g);
 
 #endif
