@@ -430,11 +430,9 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     free(sh);
 }
 
-/* Every rank's contacts and their history by tag pair, into p->hist (for the
- * next run and restart files). */
-static void hist_gather(struct gravel *g)
+/* Every rank's contacts and their history by tag pair (a new table). */
+static struct par_hist *hist_all(struct gravel *g)
 {
-    struct par *p = g->par;
     struct par_hist *h = NULL;
     hist_collect(g, &h);
     size_t eb = par_hist_entry_bytes(h);
@@ -451,8 +449,47 @@ static void hist_gather(struct gravel *g)
     h = par_hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
     par_hist_entries_put(g, &h, all, bytes);
     free(all);
+    return h;
+}
+
+/* ... into p->hist (for the next run and restart files). */
+static void hist_gather(struct gravel *g)
+{
+    struct par *p = g->par;
+    struct par_hist *h = hist_all(g);
     par_hist_free(p->hist);
     p->hist = h;
+}
+
+int par_pair_history(struct gravel *g, int np, const int64_t *tags, int maxw, double *hist)
+{
+    struct par *p = g->par;
+    const struct engine *e = g->eng;
+    if (!p || !p->gathered || !e || !e->history || !p->list_current)
+        return 0;
+    int hw = e->hist_n;
+    if (hw <= 0 || hw > maxw)
+        return 0;
+    struct par_hist *h = hist_all(g);
+    for (int k = 0; k < np; k++) {
+        double *out = hist + (size_t)k * hw;
+        int64_t a = tags[2 * k], b = tags[2 * k + 1];
+        const unsigned char *v = par_hist_get(h, a < b ? a : b, a < b ? b : a);
+        for (int d = 0; d < hw; d++) {
+            out[d] = 0.0;
+            if (!v)
+                continue;
+            if (e->rsz == sizeof(float)) {
+                float f;
+                memcpy(&f, v + (size_t)d * sizeof f, sizeof f);
+                out[d] = f;
+            } else {
+                memcpy(out + d, v + (size_t)d * sizeof(double), sizeof(double));
+            }
+        }
+    }
+    par_hist_free(h);
+    return hw;
 }
 
 /* Every rank's atoms, every field of the table (forces too), sorted by tag:

@@ -134,5 +134,12 @@ void par_snapshot_end(struct gravel *g);
 void par_rerun_gather(struct gravel *g);
 void par_rerun_keep(struct gravel *g);
 void par_rerun_scatter(struct gravel *g);
+/* An output step of a decomposed run (par_gathered): the stored history of
+ * each pair (tags[2k], tags[2k+1]) from every rank's contacts by tag pair,
+ * hist[k * width + d] as doubles, as compute pair/local's pN read it (a
+ * contact is owned by its lower tag, as on one process; a pair in no list
+ * gets zeros). Returns the width, 0 without history (or over maxw).
+ * Collective: every rank calls it with its gathered set's pairs. */
+int par_pair_history(struct gravel *g, int np, const int64_t *tags, int maxw, double *hist);
 
 #endif

@@ -805,10 +805,17 @@ IN
 ref_run loc.in
 check dump_local_written '[ "$(ls ref/d.loc.*.txt | wc -l)" -eq 4 ] && [ "$(wc -l < ref/d.loc.100.txt)" -gt 100 ]'
 same dump_local_np3 loc.in 3 ""
-# pair/local's pN values read each rank's stored contact history: refused
-sed 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4/' loc.in > locp.in
-mpirun -np 2 "$par" -in locp.in -log none > locp.out 2>&1; rc=$?
-check pair_local_history_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" locp.out)" -eq 1 ] && grep -q "compute pair/local pN" locp.out'
+# pair/local's pN values (the tangential force from the stored history, its
+# magnitude, the relative velocities): every rank's contacts' history by tag
+# pair, as one process reads its list; in double and single precision
+sed -e 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4 p5 p8 p10/' \
+    -e 's/c_pf\[1\] c_pf\[2\] c_pf\[3\]$/c_pf[1] c_pf[2] c_pf[3] c_pf[4] c_pf[5] c_pf[6] c_pf[7] c_pf[8]/' loc.in > locp.in
+ref_run locp.in
+check pair_local_history_seen '[ "$(awk "NF == 11 && \$8 > 0" ref/d.loc.300.txt | wc -l)" -gt 100 ]'
+same pair_local_history_np2 locp.in 2 ""
+same pair_local_history_np3 locp.in 3 ""
+ref_run locp.in "-precision single"
+same pair_local_history_single_np2 locp.in 2 "-precision single"
 # pair granular's mdr model keeps per-atom state on one rank (fix granular/mdr): refused
 cat > mdr.in <<'IN'
 units si
