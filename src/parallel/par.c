@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "atoms.h"
+#include "balance_weight.h"
 #include "comm.h"
 #include "compute.h"
 #include "device.h"
@@ -386,6 +387,7 @@ void par_run_begin(struct gravel *g)
     p->nghost = 0;
     p->list_current = 0; /* the device's contacts are the last run's */
     p->ended = 0;
+    p->run_cost = 0;
     if (!p->on)
         return;
     check_scene(g);
@@ -756,58 +758,100 @@ static void check_bricks(struct gravel *g, const struct par *p, double cut)
 }
 
 /* fix balance at a rebuild, before the atoms move: when the imbalance
- * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
- * dimensions in dims move to the quantiles of every rank's atoms, or (rcb)
- * the box is tiled again by bisecting every rank's atoms. */
-static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh)
+ * (largest rank's load over the mean; the load is the atom count, or the
+ * sum of the atoms' weights with a weight keyword) exceeds thresh, the cuts
+ * of the dimensions in dims move to the weighted quantiles of every rank's
+ * atoms, or (rcb) the box is tiled again by bisecting every rank's atoms;
+ * then the out file gets the new boxes. */
+static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh,
+                      struct bal_weight *w)
 {
     struct par *p = g->par;
     struct decomp *dc = &p->dc;
     const struct atoms *a = &g->atoms;
-    long long n = comm_sum_ll(a->n);
-    int P = dc->p[0] * dc->p[1] * dc->p[2];
-    /* each rank's count under the current cuts: its own atoms */
-    long long mine = a->n, big = mine;
-    {
-        long long *all = NULL;
-        size_t b = comm_allgatherv(&mine, sizeof mine, (void **)&all);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        big = 0;
-        for (size_t r = 0; r < b / sizeof mine; r++)
-            big = all[r] > big ? all[r] : big;
-        free(all);
+    int P = comm_size();
+    /* each rank's costs (weight time, neigh) and atom count */
+    double mine[3] = {p->run_cost - (w ? w->time_last : 0), nbr_total(g), (double)a->n};
+    double *all = NULL;
+    size_t b = comm_allgatherv(mine, sizeof mine, (void **)&all);
+    if (b != (size_t)P * sizeof mine)
+        gr_error(g, "out of memory balancing");
+    double *ct = gr_malloc(g, 2 * (size_t)P * sizeof *ct), *cn = ct + P;
+    long *nown = gr_malloc(g, (size_t)P * sizeof *nown);
+    for (int r = 0; r < P; r++) {
+        ct[r] = all[3 * r];
+        cn[r] = all[3 * r + 1];
+        nown[r] = (long)all[3 * r + 2];
     }
-    double imb = n > 0 ? (double)big * P / (double)n : 1.0;
-    if (!(imb > thresh))
+    free(all);
+    if (w)
+        w->time_last = p->run_cost; /* LAMMPS: the time up to this balance */
+    double *wt = bal_weight_compute(g, w, a->n, NULL, ct, cn, nown);
+    free(ct);
+    /* each rank's load under the current cuts: its own atoms' */
+    double load = 0, *loads = NULL;
+    for (int i = 0; i < a->n; i++)
+        load += wt ? wt[i] : 1.0;
+    b = comm_allgatherv(&load, sizeof load, (void **)&loads);
+    if (b != (size_t)P * sizeof load)
+        gr_error(g, "out of memory balancing");
+    double big = 0, total = 0;
+    for (int r = 0; r < P; r++) {
+        big = fmax(big, loads[r]);
+        total += loads[r];
+    }
+    free(loads);
+    free(nown);
+    double imb = total > 0 ? big * P / total : 1.0;
+    if (!(imb > thresh)) {
+        free(wt);
         return;
+    }
+    int rec = wt ? 4 : 3;
     if (rcb) {
-        double *s = gr_malloc(g, (3 * (size_t)a->n + 1) * sizeof *s), *all = NULL;
-        for (int k = 0; k < a->n; k++)
+        double *s = gr_malloc(g, ((size_t)rec * a->n + 1) * sizeof *s), *all3 = NULL;
+        for (int k = 0; k < a->n; k++) {
             for (int q = 0; q < 3; q++)
-                s[3 * (size_t)k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-        size_t b = comm_allgatherv(s, 3 * (size_t)a->n * sizeof *s, (void **)&all);
+                s[(size_t)rec * k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+            if (wt)
+                s[(size_t)rec * k + 3] = wt[k];
+        }
+        b = comm_allgatherv(s, (size_t)rec * a->n * sizeof *s, (void **)&all3);
         free(s);
         if (b == (size_t)-1)
             gr_error(g, "out of memory balancing");
-        decomp_rcb(g, dc, all, (long)(b / (3 * sizeof *all)));
-        free(all);
-        return;
+        long m = (long)(b / ((size_t)rec * sizeof *all3));
+        if (wt)
+            decomp_rcb_w(g, dc, all3, m);
+        else
+            decomp_rcb(g, dc, all3, m);
+        free(all3);
+    } else {
+        int st = wt ? 2 : 1;
+        for (int q = 0; q < 3; q++) {
+            if (!(dims & (1u << q)) || dc->p[q] < 2)
+                continue;
+            double *s = gr_malloc(g, ((size_t)st * a->n + 1) * sizeof *s), *all1 = NULL;
+            for (int k = 0; k < a->n; k++) {
+                s[(size_t)st * k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+                if (wt)
+                    s[(size_t)st * k + 1] = wt[k];
+            }
+            b = comm_allgatherv(s, (size_t)st * a->n * sizeof *s, (void **)&all1);
+            free(s);
+            if (b == (size_t)-1)
+                gr_error(g, "out of memory balancing");
+            long m = (long)(b / ((size_t)st * sizeof *all1));
+            if (wt)
+                decomp_quantile_cuts_w(dc, q, all1, m);
+            else
+                decomp_quantile_cuts(dc, q, all1, m);
+            free(all1);
+        }
     }
-    for (int q = 0; q < 3; q++) {
-        if (!(dims & (1u << q)) || dc->p[q] < 2)
-            continue;
-        double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
-        for (int k = 0; k < a->n; k++)
-            s[k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-        size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
-        free(s);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        long m = (long)(b / sizeof *all);
-        decomp_quantile_cuts(dc, q, all, m);
-        free(all);
-    }
+    free(wt);
+    if (w)
+        bal_weight_out(g, w, g->step);
 }
 
 void par_exchange(struct gravel *g, double cut)
@@ -830,9 +874,10 @@ void par_exchange(struct gravel *g, double cut)
     if (e->history && p->list_current)
         hist_collect(g, &old);
     if (p->balance_dims || p->balance_rcb) { /* fix balance: quantile cuts or rcb tiles */
-        rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh);
+        rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh, p->balance_w);
         p->balance_dims = 0;
         p->balance_rcb = 0;
+        p->balance_w = NULL;
         check_bricks(g, p, cut);
     }
     /* destinations; an atom outside a fixed face is lost */

@@ -27,6 +27,7 @@
 
 struct par_hist;
 struct fix;
+struct bal_weight;
 
 /* a fix's per-atom state of every atom at the last run's end (tag order) */
 struct par_saved {
@@ -54,6 +55,10 @@ struct par {
     unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
     int balance_rcb;        /* fix balance rcb: the next exchange tiles the box again */
     double balance_thresh;
+    struct bal_weight *balance_w; /* fix balance's weight and out keywords (NULL: none) */
+    double run_cost;        /* this run's Pair + Neigh wall time so far (weight time) */
+    double last_cost;       /* the last run's Pair + Neigh time and neighbor pairs, */
+    double last_neigh;      /* this rank's (balance weight time, neigh) */
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
     struct atoms local;
     /* what the last decomposed run left for a restart file (ended = 1) */

@@ -17,6 +17,7 @@
 
 #include "args.h"
 #include "balance.h"
+#include "balance_weight.h"
 #include "comm.h"
 #include "error.h"
 #include "fix.h"
@@ -28,7 +29,18 @@ struct fix_balance {
     unsigned dims; /* shift */
     int rcb;
     bigint next;   /* rcb: the step from which the next rebuild balances */
+    struct bal_weight w; /* weight and out keywords */
 };
+
+/* the keywords after the style's arguments (from argv[i]) */
+static void keywords(struct gravel *g, struct fix_balance *b, int argc, char **argv, int i)
+{
+    while (i < argc) {
+        if (strcmp(argv[i], "weight") && strcmp(argv[i], "out"))
+            gr_error(g, "fix balance: unknown keyword '%s' (weight, out)", argv[i]);
+        i = bal_weight_parse(g, &b->w, argc, argv, i, "fix balance");
+    }
+}
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -48,22 +60,22 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         if (!par_state(g)->dc.tiled)
             gr_error(g, "fix balance rcb needs comm_style tiled (LAMMPS: Fix balance rcb "
                         "cannot be used with comm_style brick)");
-        if (argc != 3)
-            gr_error(g, "fix balance rcb takes no keywords, got '%s'", argv[3]);
         struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
         f->data = b;
         b->nfreq = nfreq;
         b->thresh = thresh;
         b->rcb = 1;
+        keywords(g, b, argc, argv, 3);
         f->hooks = HOOK_PRE_EXCHANGE;
         return;
     }
     if (strcmp(argv[2], "shift") != 0)
         gr_error(g, "fix balance style '%s' is not supported (shift, rcb)", argv[2]);
-    if (argc != 6)
-        gr_error(g, "fix balance shift needs dimstr Niter stopthresh (and no keywords)");
+    if (argc < 6)
+        gr_error(g, "fix balance shift needs dimstr Niter stopthresh");
     struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
     f->data = b;
+    keywords(g, b, argc, argv, 6);
     b->nfreq = nfreq;
     b->thresh = thresh;
     b->dims = balance_dims(g, argv[3]);
@@ -82,6 +94,7 @@ static void init(struct gravel *g, struct fix *f)
     if (!b)
         return; /* rcb on one process */
     bigint n = b->nfreq;
+    b->w.time_last = 0; /* weight time: this run's Pair + Neigh from its start */
     if (b->rcb) { /* no forced rebuild: the next one from this step on */
         b->next = n > 0 ? (g->step / n + 1) * n : g->step + 1;
         return;
@@ -101,6 +114,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
             struct par *p = par_state(g);
             p->balance_rcb = 1;
             p->balance_thresh = b->thresh;
+            p->balance_w = &b->w;
         }
         b->next = b->nfreq > 0 ? (g->step / b->nfreq + 1) * b->nfreq : 0;
         return;
@@ -111,11 +125,18 @@ static void pre_exchange(struct gravel *g, struct fix *f)
         struct par *p = par_state(g);
         p->balance_dims = b->dims;
         p->balance_thresh = b->thresh;
+        p->balance_w = &b->w;
     }
     f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;
 }
 
-static void destroy(struct fix *f) { free(f->data); }
+static void destroy(struct fix *f)
+{
+    struct fix_balance *b = f->data;
+    if (b)
+        bal_weight_free(&b->w);
+    free(b);
+}
 
 const struct fix_style fix_style_balance = {
     .name = "balance",

@@ -693,6 +693,33 @@ grep -v '^comm_style\|^balance' rcb.in > rcbfix.in
 mpirun -np 2 "$par" -in rcbfix.in -log none > rcbfix.out 2>&1; rc=$?
 check fix_rcb_needs_tiled '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: fix: fix balance rcb needs comm_style tiled" rcbfix.out)" -eq 1 ]'
 
+# balance weights (LAMMPS's weight group|var|neigh|time) and the out file: the bed's
+# upper 3 layers weigh 3 (group top; or an atom-style variable 1 + 2 (z > 3.5)), so
+# the weighted median of the 1440 lies between layers 4 and 5: z cut 4.5 / 16 =
+# 0.28125 on 1 x 1 x 2 ranks, loads 1440 -> 720 (the count's median would be 3.5);
+# fix balance with weight time (the ranks' Pair + Neigh times: the partition depends
+# on timings, the physics never does), neigh and group, and rcb with weight var and
+# time on 2 and 3 ranks: the same bits as one process
+sed -e '/^comm_style/d' -e 's/^balance         1.0 rcb/region          upper block INF INF INF INF 3.5 INF\ngroup           top region upper\nbalance         1.0 shift z 10 1.0 weight group 1 top 3.0 out bal.out/' \
+    -e 's/^fix             b all balance 100 1.0 rcb/fix             b all balance 100 1.0 shift z 10 1.0 weight time 1.0 weight neigh 0.8 weight group 1 top 3.0 out fbal.out/' rcb.in > wgrid.in
+ref_run wgrid.in
+same balance_weight_np2 wgrid.in 2 "" "1 1 2"
+check balance_weight_report 'grep -q "^  initial/final maximal load/proc = 1440.0000 720.00000$" balance_weight_np2.out && grep -q "^  z cuts: 0.0000000 0.28125000 1.0000000$" balance_weight_np2.out'
+check balance_out_file '[ "$(sed -n 4p bal.out)" = 16 ] && [ "$(sed -n 14p bal.out)" = "5 1 0 0 4.5" ] && [ "$(sed -n 28,30p bal.out | tr "\n" " ")" = "ITEM: NUMBER OF CUBES 2 ITEM: CUBES " ] && [ "$(tail -1 bal.out)" = "2 1 9 10 11 12 13 14 15 16" ] && [ "$(grep -c "^ITEM: CUBES" fbal.out)" -ge 3 ]'
+sed -e 's/^balance         1.0 rcb/variable        wv atom 1.0+2.0*(z>3.5)\nbalance         1.0 rcb weight var wv/' \
+    -e 's/^fix             b all balance 100 1.0 rcb/fix             b all balance 100 1.0 rcb weight time 0.5 weight var wv/' rcb.in > wrcb.in
+ref_run wrcb.in
+same rcb_weight_np2 wrcb.in 2 ""
+same rcb_weight_np3 wrcb.in 3 ""
+check rcb_weight_report 'grep -q "^  initial/final maximal load/proc = 1440.0000 720.00000$" rcb_weight_np2.out'
+# weight store (no custom per-atom property to store in) and a weight <= 0: errors
+sed 's/weight var wv$/weight store wst/' wrcb.in > wstore.in
+mpirun -np 2 "$par" -in wstore.in -log none > wstore.out 2>&1; rc=$?
+check balance_weight_store_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: balance: balance weight store is not supported" wstore.out)" -eq 1 ]'
+sed 's/^variable        wv atom .*/variable        wv atom z-3.5/' wrcb.in > wneg.in
+mpirun -np 2 "$par" -in wneg.in -log none > wneg.out 2>&1; rc=$?
+check balance_weight_negative '[ $rc -ne 0 ] && grep -q "^ERROR: balance: balance weight var wv: atom 1 has weight -2.5 (must be > 0) (wneg.in:26)" wneg.out'
+
 
 # equal-style variables in thermo: thermo keywords (the pressure and energies
 # taken before the gather), computes (summed and gathered) and group functions,
