@@ -1035,6 +1035,18 @@ sed -e 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]+f_2[3]/' \
 ref_run varf.in
 check freeze_force_seen '[ "$(rows ref.out | awk "NR > 1 && \$NF != 0" | wc -l)" -ge 3 ]'
 same variable_freeze_np2 varf.in 2 ""
+# fix ave/time and ave/histo reading variables and fixes: each sample's variables
+# on every rank's atoms gathered (press and pe taken on the ranks first, as thermo
+# does), fix values summed in tag order; their files byte-identical to one process's
+sed -e 's/^variable w equal v_kk\/v_n/variable vz atom vz\nvariable vxa atom vx\nvariable w equal f_at[1]+f_at[5]/' \
+    -e 's/^\(thermo_style custom .*\)$/fix a all ave\/time 10 1 10 c_1\nfix at all ave\/time 10 3 30 v_pp v_kk v_zc v_n f_1 f_a file at.txt\nfix ah all ave\/histo 10 3 30 -1.0 1.0 8 v_vz v_vxa mode vector file ah.txt\n\1 f_at[1] f_at[2] f_at[5] f_ah[2]/' var.in > varv.in
+ref_run varv.in
+mv at.txt ref_at.txt; mv ah.txt ref_ah.txt
+check ave_inputs_seen '[ "$(grep -vc "^#" ref_at.txt)" -ge 3 ] && [ "$(rows ref.out | awk "NR > 1 && \$(NF - 2) != 0 && \$NF != 0" | wc -l)" -ge 3 ]'
+same ave_variable_fix_inputs_np2 varv.in 2 ""
+check ave_variable_fix_files_np2 'cmp -s ref_at.txt at.txt && cmp -s ref_ah.txt ah.txt'
+same ave_variable_fix_inputs_np3 varv.in 3 ""
+check ave_variable_fix_files_np3 'cmp -s ref_at.txt at.txt && cmp -s ref_ah.txt ah.txt'
 # ... or compute pressure (each rank's contacts' virial)
 sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
 mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
