@@ -240,6 +240,6 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
         print_tiles(g, dc);
     else
         print_cuts(g, dc);
-    bal_weight_out(g, &w, g->step);
+    bal_weight_out(g, &w, dc, g->step);
     bal_weight_free(&w);
 }

@@ -13,7 +13,6 @@
 #include "error.h"
 #include "fileio.h"
 #include "group.h"
-#include "par.h"
 #include "variable.h"
 
 static double positive_factor(struct gravel *g, const char *s, const char *who,
@@ -162,7 +161,7 @@ double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,
     return wt;
 }
 
-void bal_weight_out(struct gravel *g, struct bal_weight *w, bigint step)
+void bal_weight_out(struct gravel *g, struct bal_weight *w, const struct decomp *dc, bigint step)
 {
     if (!w->out)
         return;
@@ -174,7 +173,6 @@ void bal_weight_out(struct gravel *g, struct bal_weight *w, bigint step)
             gr_error(g, "balance out: cannot open '%s': %s", w->out, why ? why : "error");
     }
     const struct domain *dm = &g->dom;
-    const struct decomp *dc = &par_state(g)->dc;
     int P = comm_size(), d2 = dm->dimension == 2, nc = d2 ? 4 : 8;
     FILE *fp = w->fp;
     fprintf(fp, "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF NODES\n%d\nITEM: BOX BOUNDS\n",

@@ -31,7 +31,6 @@ struct bal_weight {
     char *var;                     /* weight var */
     double time_factor;            /* weight time (0: not given) */
     double neigh_factor;           /* weight neigh (0: not given) */
-    double time_last;              /* fix balance: the run's cost at the last balance */
     char *out;                     /* out file name */
     FILE *fp;                      /* out file, open (rank 0) */
 };
@@ -50,6 +49,7 @@ double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,
                            const double *cost_neigh, const long *nown);
 /* The boxes of every rank at step `step` to w->out (opened on first use;
  * rank 0 writes: LAMMPS's `out` format of nodes and cubes / squares). */
-void bal_weight_out(struct gravel *g, struct bal_weight *w, bigint step);
+struct decomp;
+void bal_weight_out(struct gravel *g, struct bal_weight *w, const struct decomp *dc, bigint step);
 
 #endif

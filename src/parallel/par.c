@@ -8,7 +8,6 @@
 
 #include "args.h"
 #include "atoms.h"
-#include "balance_weight.h"
 #include "comm.h"
 #include "compute.h"
 #include "device.h"
@@ -388,6 +387,7 @@ void par_run_begin(struct gravel *g)
     p->list_current = 0; /* the device's contacts are the last run's */
     p->ended = 0;
     p->run_cost = 0;
+    p->balance_time_last = 0; /* weight time: this run's Pair + Neigh from its start */
     if (!p->on)
         return;
     check_scene(g);
@@ -763,15 +763,14 @@ static void check_bricks(struct gravel *g, const struct par *p, double cut)
  * of the dimensions in dims move to the weighted quantiles of every rank's
  * atoms, or (rcb) the box is tiled again by bisecting every rank's atoms;
  * then the out file gets the new boxes. */
-static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh,
-                      struct bal_weight *w)
+static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh)
 {
     struct par *p = g->par;
     struct decomp *dc = &p->dc;
     const struct atoms *a = &g->atoms;
     int P = comm_size();
     /* each rank's costs (weight time, neigh) and atom count */
-    double mine[3] = {p->run_cost - (w ? w->time_last : 0), nbr_total(g), (double)a->n};
+    double mine[3] = {p->run_cost - p->balance_time_last, nbr_total(g), (double)a->n};
     double *all = NULL;
     size_t b = comm_allgatherv(mine, sizeof mine, (void **)&all);
     if (b != (size_t)P * sizeof mine)
@@ -784,9 +783,9 @@ static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh,
         nown[r] = (long)all[3 * r + 2];
     }
     free(all);
-    if (w)
-        w->time_last = p->run_cost; /* LAMMPS: the time up to this balance */
-    double *wt = bal_weight_compute(g, w, a->n, NULL, ct, cn, nown);
+    p->balance_time_last = p->run_cost; /* LAMMPS: the time up to this balance */
+    double *wt = p->balance_weigh ? p->balance_weigh(g, p->balance_ctx, a->n, ct, cn, nown)
+                                  : NULL;
     free(ct);
     /* each rank's load under the current cuts: its own atoms' */
     double load = 0, *loads = NULL;
@@ -850,8 +849,8 @@ static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh,
         }
     }
     free(wt);
-    if (w)
-        bal_weight_out(g, w, g->step);
+    if (p->balance_out)
+        p->balance_out(g, p->balance_ctx);
 }
 
 void par_exchange(struct gravel *g, double cut)
@@ -874,10 +873,12 @@ void par_exchange(struct gravel *g, double cut)
     if (e->history && p->list_current)
         hist_collect(g, &old);
     if (p->balance_dims || p->balance_rcb) { /* fix balance: quantile cuts or rcb tiles */
-        rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh, p->balance_w);
+        rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh);
         p->balance_dims = 0;
         p->balance_rcb = 0;
-        p->balance_w = NULL;
+        p->balance_ctx = NULL;
+        p->balance_weigh = NULL;
+        p->balance_out = NULL;
         check_bricks(g, p, cut);
     }
     /* destinations; an atom outside a fixed face is lost */

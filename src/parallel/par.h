@@ -27,7 +27,6 @@
 
 struct par_hist;
 struct fix;
-struct bal_weight;
 
 /* a fix's per-atom state of every atom at the last run's end (tag order) */
 struct par_saved {
@@ -55,8 +54,15 @@ struct par {
     unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
     int balance_rcb;        /* fix balance rcb: the next exchange tiles the box again */
     double balance_thresh;
-    struct bal_weight *balance_w; /* fix balance's weight and out keywords (NULL: none) */
+    /* fix balance's weight and out keywords (NULL: by count, no file): the
+     * atoms' weights (balance_weight.h's bal_weight_compute) and the boxes'
+     * file after a balance, through the fix (par does not call up) */
+    void *balance_ctx;
+    double *(*balance_weigh)(struct gravel *g, void *ctx, int n, const double *cost_time,
+                             const double *cost_neigh, const long *nown);
+    void (*balance_out)(struct gravel *g, void *ctx);
     double run_cost;        /* this run's Pair + Neigh wall time so far (weight time) */
+    double balance_time_last; /* run_cost at the last fix balance */
     double last_cost;       /* the last run's Pair + Neigh time and neighbor pairs, */
     double last_neigh;      /* this rank's (balance weight time, neigh) */
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */

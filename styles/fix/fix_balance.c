@@ -88,13 +88,33 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->hooks = HOOK_PRE_EXCHANGE;
 }
 
+static double *weigh(struct gravel *g, void *ctx, int n, const double *cost_time,
+                     const double *cost_neigh, const long *nown)
+{
+    struct fix_balance *b = ctx;
+    return bal_weight_compute(g, &b->w, n, NULL, cost_time, cost_neigh, nown);
+}
+
+static void out(struct gravel *g, void *ctx)
+{
+    struct fix_balance *b = ctx;
+    bal_weight_out(g, &b->w, &par_state(g)->dc, g->step);
+}
+
+/* the coming exchange balances with this fix's weights and out file */
+static void hand_weights(struct par *p, struct fix_balance *b)
+{
+    p->balance_ctx = b;
+    p->balance_weigh = b->w.on ? weigh : NULL;
+    p->balance_out = b->w.out ? out : NULL;
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct fix_balance *b = f->data;
     if (!b)
         return; /* rcb on one process */
     bigint n = b->nfreq;
-    b->w.time_last = 0; /* weight time: this run's Pair + Neigh from its start */
     if (b->rcb) { /* no forced rebuild: the next one from this step on */
         b->next = n > 0 ? (g->step / n + 1) * n : g->step + 1;
         return;
@@ -114,7 +134,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
             struct par *p = par_state(g);
             p->balance_rcb = 1;
             p->balance_thresh = b->thresh;
-            p->balance_w = &b->w;
+            hand_weights(p, b);
         }
         b->next = b->nfreq > 0 ? (g->step / b->nfreq + 1) * b->nfreq : 0;
         return;
@@ -125,7 +145,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
         struct par *p = par_state(g);
         p->balance_dims = b->dims;
         p->balance_thresh = b->thresh;
-        p->balance_w = &b->w;
+        hand_weights(p, b);
     }
     f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;
 }
