@@ -96,6 +96,14 @@ static void timers_total(const struct run_timers *t, double loop, double *out)
             out[p] *= avail / busy;
 }
 
+/* Pair + Neigh so far (balance weight time): as timers_total, unclamped. */
+static double cost_so_far(const struct run_timers *t)
+{
+    double scale = t->nsamp ? (double)t->nplain / (double)t->nsamp : 0.0;
+    return t->exact[TM_PAIR] + t->exact[TM_NEIGH] +
+           (t->sampled[TM_PAIR] + t->sampled[TM_NEIGH]) * scale;
+}
+
 /* Pack and upload the per-type-pair parameters; create the pair kernels.
  * Before the fixes initialise: a fix that uses the pair law (fix wall/pair)
  * takes the parameter buffer in its init. */
@@ -693,6 +701,8 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         step[TM_NEIGH] = a2 - a1 - tx;
         step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
         timers_step(&tm, rebuild, sampled, step);
+        if (par_on(g))
+            g->par->run_cost = cost_so_far(&tm); /* fix balance's weight time */
         if (!look && output_due(g, g->step)) { /* look: none was due */
             acc_collect(g);
             double ov = nbr_max_overlap(g);
@@ -737,6 +747,8 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *
     st.ncontact = e->k_pair ? nbr_list(g)->ncontact : 0; /* no pair style: none evaluated */
     st.mem_peak = (double)ocl_mem_peak();
     if (par_on(g)) {
+        g->par->last_cost = st.t_pair + st.t_neigh; /* balance's weight time, neigh */
+        g->par->last_neigh = st.total_neighbors;
         spreads(g, &st);
         ranks_stats(g, &st);
         par_run_end(g); /* every rank's host holds every atom again */
@@ -792,13 +804,17 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         t[TM_OUTPUT] += wall() - o0;
         run_sync_host(g);
         e->active = 0;
+        par_rerun_gather(g); /* several ranks: the snapshot goes into every atom */
         bigint prev = g->step;
         if (load(g, ctx) < 0) {
             g->step = prev;
+            par_rerun_keep(g);
             break;
         }
         check_atoms(g);
+        par_rerun_scatter(g); /* ... and each rank keeps its brick's */
         eng_upload(g);
+        par_fix_state_restore(g);
     }
     eng_upload(g); /* the host may have been read from: the device state again */
     double o0 = wall();
@@ -865,8 +881,6 @@ void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *
                bigint firststep, bigint laststep)
 {
     struct rerun_args r = {load, ctx, firststep, laststep};
-    if (comm_size() > 1)
-        par_refuse(g, "rerun");
     guarded(g, rerun_body, &r);
 }
 

@@ -886,6 +886,14 @@ static void pre_take(struct gravel *g)
     st->pre_step = g->step;
 }
 
+void thermo_pre_take(struct gravel *g)
+{
+    if (par_on(g))
+        pre_take(g);
+}
+
+void thermo_pre_clear(struct gravel *g) { output_state(g)->pre_step = -1; }
+
 /* c_ID...: a compute that evaluates on every rank's atoms (compute.h) */
 static int gathers(struct gravel *g, const char *col)
 {

@@ -74,6 +74,13 @@ const char *thermo_line_text(struct gravel *g);
  * v_name. Returns 0 when `name` is none of these (or names no existing
  * compute/variable); raises an error when c_ID exists but has no such value. */
 int thermo_keyword_value(struct gravel *g, const char *name, double *out);
+/* Several ranks, before equal-style variables are evaluated on the gathered
+ * atoms outside a thermo line (fix ave/time's variable inputs): the step's
+ * pe, epair, etotal and pressure keywords taken on the ranks, as a thermo
+ * line takes them (collective; nothing on one rank); thermo_pre_clear
+ * after the evaluation. */
+void thermo_pre_take(struct gravel *g);
+void thermo_pre_clear(struct gravel *g);
 
 /* Commands (commands.def): thermo, thermo_style, thermo_modify. */
 void cmd_thermo(struct gravel *g, int argc, char **argv);

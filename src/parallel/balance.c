@@ -7,6 +7,7 @@
 #include <time.h>
 
 #include "args.h"
+#include "balance_weight.h"
 #include "comm.h"
 #include "decomp.h"
 #include "error.h"
@@ -31,21 +32,54 @@ unsigned balance_dims(struct gravel *g, const char *dimstr)
 }
 
 
-/* largest rank's atom count and the imbalance (largest / mean) of n
- * positions (all atoms) under dc */
+/* largest rank's load and the imbalance (largest / mean) of n positions
+ * (all atoms) under dc; the load is the atom count, or the weights' sum */
 static double imbalance_of(struct gravel *g, const struct decomp *dc, const double *x, int n,
-                           double *maxload)
+                           const double *wt, double *maxload)
 {
     int P = dc->p[0] * dc->p[1] * dc->p[2];
-    long *cnt = gr_calloc(g, (size_t)P, sizeof *cnt), mx = 0;
+    double *load = gr_calloc(g, (size_t)P, sizeof *load), mx = 0, total = 0;
     for (int i = 0; i < n; i++)
-        cnt[decomp_owner(g, dc, x + 3 * (size_t)i)]++;
-    for (int r = 0; r < P; r++)
-        if (cnt[r] > mx)
-            mx = cnt[r];
-    free(cnt);
-    *maxload = (double)mx;
-    return n > 0 ? (double)mx * P / n : 1.0;
+        load[decomp_owner(g, dc, x + 3 * (size_t)i)] += wt ? wt[i] : 1.0;
+    for (int r = 0; r < P; r++) {
+        mx = load[r] > mx ? load[r] : mx;
+        total += load[r];
+    }
+    free(load);
+    *maxload = mx;
+    return total > 0 ? mx * P / total : 1.0;
+}
+
+/* The weights of every atom between runs (every rank holds them all): each
+ * rank's cost of the last run (weight time, neigh) shared by the atoms the
+ * current decomposition gives it. NULL without a weight keyword. */
+static double *weights_between_runs(struct gravel *g, const struct decomp *dc,
+                                    const struct bal_weight *w)
+{
+    if (!w->on)
+        return NULL;
+    const struct atoms *a = &g->atoms;
+    struct par *p = par_state(g);
+    int P = comm_size();
+    int *owner = gr_malloc(g, ((size_t)a->n + 1) * sizeof *owner);
+    long *nown = gr_calloc(g, (size_t)P, sizeof *nown);
+    for (int i = 0; i < a->n; i++)
+        nown[owner[i] = decomp_owner(g, dc, a->x + 3 * (size_t)i)]++;
+    double mine[2] = {p->last_cost, p->last_neigh}, *all = NULL;
+    size_t b = comm_allgatherv(mine, sizeof mine, (void **)&all);
+    if (b != (size_t)P * sizeof mine)
+        gr_error(g, "out of memory balancing");
+    double *ct = gr_malloc(g, 2 * (size_t)P * sizeof *ct), *cn = ct + P;
+    for (int r = 0; r < P; r++) {
+        ct[r] = all[2 * r];
+        cn[r] = all[2 * r + 1];
+    }
+    free(all);
+    double *wt = bal_weight_compute(g, w, a->n, owner, ct, cn, nown);
+    free(ct);
+    free(owner);
+    free(nown);
+    return wt;
 }
 
 static void print_cuts(struct gravel *g, const struct decomp *dc)
@@ -83,9 +117,14 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     double *user[3] = {NULL, NULL, NULL};
     int uniform[3] = {0, 0, 0}, rcb = 0;
     unsigned shift = 0;
+    struct bal_weight w = {0};
     int i = 1;
     while (i < argc) {
         const char *s = argv[i];
+        if (!strcmp(s, "weight") || !strcmp(s, "out")) { /* keywords after the styles */
+            i = bal_weight_parse(g, &w, argc, argv, i, "balance");
+            continue;
+        }
         int q = !strcmp(s, "x") ? 0 : !strcmp(s, "y") ? 1 : !strcmp(s, "z") ? 2 : -1;
         if (q >= 0) {
             if (i + 1 >= argc)
@@ -121,32 +160,45 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
             gr_warn(g, "balance rcb: one process, there is nothing to balance");
             for (int q = 0; q < 3; q++)
                 free(user[q]);
+            bal_weight_free(&w);
             return;
         } else if (!strcmp(s, "rcb")) {
             if (!dc->tiled)
                 gr_error(g, "balance rcb needs comm_style tiled (LAMMPS: Balance rcb cannot be "
                             "used with comm_style brick)");
-            if (i != 1 || argc != 2)
-                gr_error(g, "balance rcb takes no other style or keyword");
+            if (i != 1)
+                gr_error(g, "balance rcb takes no other style");
             rcb = 1;
             i++;
+            if (i < argc && strcmp(argv[i], "weight") && strcmp(argv[i], "out"))
+                gr_error(g, "balance rcb takes no other style, got '%s' (keywords: weight, out)",
+                         argv[i]);
         } else {
-            gr_error(g, "balance keyword '%s' is not supported (x, y, z, shift)", s);
+            gr_error(g, "balance keyword '%s' is not supported (x, y, z, shift; keywords "
+                        "weight, out)", s);
         }
     }
     clock_t t0 = clock();
     const struct atoms *a = &g->atoms; /* between runs: every atom on every rank */
     double maxinit, maxfinal;
-    double imbinit = imbalance_of(g, dc, a->x, a->n, &maxinit);
+    double *wt = weights_between_runs(g, dc, &w);
+    double imbinit = imbalance_of(g, dc, a->x, a->n, wt, &maxinit);
     int niter = 0, tiled = decomp_tiled(dc);
     if (tiled && !rcb) /* a grid style after rcb: the grid again, balanced (LAMMPS) */
         rcb_free(&dc->rcb);
     if (rcb && imbinit > thresh) { /* tiles by bisecting every atom */
-        double *s = gr_malloc(g, (3 * (size_t)a->n + 1) * sizeof *s);
-        for (int k = 0; k < a->n; k++)
+        int rec = wt ? 4 : 3;
+        double *s = gr_malloc(g, ((size_t)rec * a->n + 1) * sizeof *s);
+        for (int k = 0; k < a->n; k++) {
             for (int q = 0; q < 3; q++)
-                s[3 * (size_t)k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-        decomp_rcb(g, dc, s, a->n);
+                s[(size_t)rec * k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+            if (wt)
+                s[(size_t)rec * k + 3] = wt[k];
+        }
+        if (wt)
+            decomp_rcb_w(g, dc, s, a->n);
+        else
+            decomp_rcb(g, dc, s, a->n);
         free(s);
         niter = 1;
     } else if (!rcb && (imbinit > thresh || tiled)) {
@@ -159,10 +211,17 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
                 dc->cut[q] = user[q];
                 user[q] = NULL;
             } else if (shift & (1u << q)) {
-                double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s);
-                for (int k = 0; k < a->n; k++)
-                    s[k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-                decomp_quantile_cuts(dc, q, s, a->n);
+                int st = wt ? 2 : 1;
+                double *s = gr_malloc(g, ((size_t)st * a->n + 1) * sizeof *s);
+                for (int k = 0; k < a->n; k++) {
+                    s[(size_t)st * k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+                    if (wt)
+                        s[(size_t)st * k + 1] = wt[k];
+                }
+                if (wt)
+                    decomp_quantile_cuts_w(dc, q, s, a->n);
+                else
+                    decomp_quantile_cuts(dc, q, s, a->n);
                 free(s);
             }
         }
@@ -170,7 +229,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     }
     for (int q = 0; q < 3; q++)
         free(user[q]);
-    double imbfinal = imbalance_of(g, dc, a->x, a->n, &maxfinal);
+    double imbfinal = imbalance_of(g, dc, a->x, a->n, wt, &maxfinal);
+    free(wt);
     gr_print(g, "Balancing ...\n");
     gr_print(g, " rebalancing time: %.3f seconds\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     gr_print(g, "  iteration count = %d\n", niter);
@@ -180,4 +240,6 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
         print_tiles(g, dc);
     else
         print_cuts(g, dc);
+    bal_weight_out(g, &w, dc, g->step);
+    bal_weight_free(&w);
 }

@@ -94,6 +94,18 @@ void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n)
         gr_error((struct gravel *)g, "out of memory tiling the box by rcb");
 }
 
+void decomp_rcb_w(const struct gravel *g, struct decomp *d, double *s, long n)
+{
+    const struct domain *dm = &g->dom;
+    double len[3] = {1, 1, 1};
+    if (!dm->triclinic)
+        for (int q = 0; q < 3; q++)
+            len[q] = dm->hi[q] - dm->lo[q];
+    rcb_compute_w(&d->rcb, comm_size(), s, n, len, dm->dimension == 2 ? 2 : 3);
+    if (d->rcb.n != comm_size())
+        gr_error((struct gravel *)g, "out of memory tiling the box by rcb");
+}
+
 void decomp_box(const struct decomp *d, int r, double lo[3], double hi[3])
 {
     if (d->rcb.n) {
@@ -190,9 +202,19 @@ static int cmp_double(const void *a, const void *b)
 
 /* Cuts of dimension q at the quantiles of the n fractions s (sorted here); even
  * slabs where the atoms cannot separate them. */
-void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
+static int cmp_pair(const void *a, const void *b)
 {
-    qsort(s, (size_t)n, sizeof *s, cmp_double);
+    const double *u = a, *v = b;
+    if (u[0] != v[0])
+        return (u[0] > v[0]) - (u[0] < v[0]);
+    return (u[1] > v[1]) - (u[1] < v[1]);
+}
+
+/* the cuts of dimension q from the sorted fractions (stride rec doubles;
+ * rec 2: a weight after each, the cut where the weight below reaches its
+ * share; rec 1: the count's share) */
+static void quantile_cuts(struct decomp *dc, int q, const double *s, long n, int rec)
+{
     int P = dc->p[q];
     if (P < 2)
         return;
@@ -201,9 +223,20 @@ void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
         return;
     c[0] = 0;
     c[P] = 1;
+    double wsum = 0, acc = 0;
+    long at = 0;
+    for (long i = 0; rec == 2 && i < n; i++)
+        wsum += s[2 * i + 1];
     for (int k = 1; k < P; k++) {
         long m = (long)((double)k * (double)n / P);
-        double v = n == 0 ? (double)k / P : m <= 0 ? s[0] : m >= n ? s[n - 1] : 0.5 * (s[m - 1] + s[m]);
+        if (rec == 2) { /* the first m with the weight of atoms 0 .. m-1 >= k / P of it */
+            double target = wsum * k / P;
+            while (at < n && acc < target)
+                acc += s[2 * at++ + 1];
+            m = at;
+        }
+        double v = n == 0 ? (double)k / P : m <= 0 ? s[0] : m >= n ? s[rec * (n - 1)]
+                 : 0.5 * (s[rec * (m - 1)] + s[rec * m]);
         double floor_k = c[k - 1] + 1e-6; /* every slab keeps a width */
         c[k] = v > floor_k ? v : floor_k;
     }
@@ -212,5 +245,17 @@ void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
             c[k] = c[k + 1] - 1e-6;
     free(dc->cut[q]);
     dc->cut[q] = c;
+}
+
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
+{
+    qsort(s, (size_t)n, sizeof *s, cmp_double);
+    quantile_cuts(dc, q, s, n, 1);
+}
+
+void decomp_quantile_cuts_w(struct decomp *dc, int q, double *sw, long n)
+{
+    qsort(sw, (size_t)n, 2 * sizeof *sw, cmp_pair);
+    quantile_cuts(dc, q, sw, n, 2);
 }
 

@@ -45,6 +45,11 @@ double decomp_fraction_raw(const struct gravel *g, int q, const double x[3]);
  * in place; balance's shift); even slabs where the atoms cannot separate
  * them. */
 void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n);
+/* The same with a weight per atom: sw[2 i] its fraction, sw[2 i + 1] its
+ * weight (> 0); each slab holds its share of the weight (balance weight). */
+void decomp_quantile_cuts_w(struct decomp *dc, int q, double *sw, long n);
+/* rcb tiles from s[4 i + q] fractions and s[4 i + 3] weights. */
+void decomp_rcb_w(const struct gravel *g, struct decomp *d, double *s, long n);
 /* Fraction of the box length below slab k's lower face in dimension q. */
 double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;

@@ -352,17 +352,11 @@ uint64_t par_tag_set_key(const struct atoms *a)
     return h ? h : 1;
 }
 
-void par_run_begin(struct gravel *g)
+/* This rank's atoms of the host's whole set (tag order): those of its brick
+ * or tile, with the rows of the last run's end set that the fixes' saved
+ * state and the contact history belong to when the set is the same. */
+static void keep_brick(struct gravel *g, struct par *p)
 {
-    struct par *p = par_state(g);
-    p->on = comm_size() > 1;
-    p->nghost = 0;
-    p->list_current = 0; /* the device's contacts are the last run's */
-    p->ended = 0;
-    if (!p->on)
-        return;
-    check_scene(g);
-    decomp_setup(g, &p->dc);
     struct atoms *a = &g->atoms;
     /* the saved contact history belongs to these atoms only (as one rank
      * keeps its list only while the atoms are the same) */
@@ -383,6 +377,22 @@ void par_run_begin(struct gravel *g)
             k++;
         }
     a->n = k;
+}
+
+void par_run_begin(struct gravel *g)
+{
+    struct par *p = par_state(g);
+    p->on = comm_size() > 1;
+    p->nghost = 0;
+    p->list_current = 0; /* the device's contacts are the last run's */
+    p->ended = 0;
+    p->run_cost = 0;
+    p->balance_time_last = 0; /* weight time: this run's Pair + Neigh from its start */
+    if (!p->on)
+        return;
+    check_scene(g);
+    decomp_setup(g, &p->dc);
+    keep_brick(g, p);
     if (decomp_tiled(&p->dc))
         gr_print(g, "Decomposition: %d MPI ranks tiled by rcb\n", comm_size());
     else
@@ -422,11 +432,9 @@ static void hist_collect(struct gravel *g, struct par_hist **h)
     free(sh);
 }
 
-/* Every rank's contacts and their history by tag pair, into p->hist (for the
- * next run and restart files). */
-static void hist_gather(struct gravel *g)
+/* Every rank's contacts and their history by tag pair (a new table). */
+static struct par_hist *hist_all(struct gravel *g)
 {
-    struct par *p = g->par;
     struct par_hist *h = NULL;
     hist_collect(g, &h);
     size_t eb = par_hist_entry_bytes(h);
@@ -443,8 +451,47 @@ static void hist_gather(struct gravel *g)
     h = par_hist_new(g, bytes / eb, eb - 2 * sizeof(int64_t));
     par_hist_entries_put(g, &h, all, bytes);
     free(all);
+    return h;
+}
+
+/* ... into p->hist (for the next run and restart files). */
+static void hist_gather(struct gravel *g)
+{
+    struct par *p = g->par;
+    struct par_hist *h = hist_all(g);
     par_hist_free(p->hist);
     p->hist = h;
+}
+
+int par_pair_history(struct gravel *g, int np, const int64_t *tags, int maxw, double *hist)
+{
+    struct par *p = g->par;
+    const struct engine *e = g->eng;
+    if (!p || !p->gathered || !e || !e->history || !p->list_current)
+        return 0;
+    int hw = e->hist_n;
+    if (hw <= 0 || hw > maxw)
+        return 0;
+    struct par_hist *h = hist_all(g);
+    for (int k = 0; k < np; k++) {
+        double *out = hist + (size_t)k * hw;
+        int64_t a = tags[2 * k], b = tags[2 * k + 1];
+        const unsigned char *v = par_hist_get(h, a < b ? a : b, a < b ? b : a);
+        for (int d = 0; d < hw; d++) {
+            out[d] = 0.0;
+            if (!v)
+                continue;
+            if (e->rsz == sizeof(float)) {
+                float f;
+                memcpy(&f, v + (size_t)d * sizeof f, sizeof f);
+                out[d] = f;
+            } else {
+                memcpy(out + d, v + (size_t)d * sizeof(double), sizeof(double));
+            }
+        }
+    }
+    par_hist_free(h);
+    return hw;
 }
 
 /* Every rank's atoms, every field of the table (forces too), sorted by tag:
@@ -682,58 +729,99 @@ static void box_widths(const struct gravel *g, double W[3])
 }
 
 /* fix balance at a rebuild, before the atoms move: when the imbalance
- * (largest rank's atoms over the mean) exceeds thresh, the cuts of the
- * dimensions in dims move to the quantiles of every rank's atoms, or (rcb)
- * the box is tiled again by bisecting every rank's atoms. */
+ * (largest rank's load over the mean; the load is the atom count, or the
+ * sum of the atoms' weights with a weight keyword) exceeds thresh, the cuts
+ * of the dimensions in dims move to the weighted quantiles of every rank's
+ * atoms, or (rcb) the box is tiled again by bisecting every rank's atoms;
+ * then the out file gets the new boxes. */
 static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh)
 {
     struct par *p = g->par;
     struct decomp *dc = &p->dc;
     const struct atoms *a = &g->atoms;
-    long long n = comm_sum_ll(a->n);
-    int P = dc->p[0] * dc->p[1] * dc->p[2];
-    /* each rank's count under the current cuts: its own atoms */
-    long long mine = a->n, big = mine;
-    {
-        long long *all = NULL;
-        size_t b = comm_allgatherv(&mine, sizeof mine, (void **)&all);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        big = 0;
-        for (size_t r = 0; r < b / sizeof mine; r++)
-            big = all[r] > big ? all[r] : big;
-        free(all);
+    int P = comm_size();
+    /* each rank's costs (weight time, neigh) and atom count */
+    double mine[3] = {p->run_cost - p->balance_time_last, nbr_total(g), (double)a->n};
+    double *all = NULL;
+    size_t b = comm_allgatherv(mine, sizeof mine, (void **)&all);
+    if (b != (size_t)P * sizeof mine)
+        gr_error(g, "out of memory balancing");
+    double *ct = gr_malloc(g, 2 * (size_t)P * sizeof *ct), *cn = ct + P;
+    long *nown = gr_malloc(g, (size_t)P * sizeof *nown);
+    for (int r = 0; r < P; r++) {
+        ct[r] = all[3 * r];
+        cn[r] = all[3 * r + 1];
+        nown[r] = (long)all[3 * r + 2];
     }
-    double imb = n > 0 ? (double)big * P / (double)n : 1.0;
-    if (!(imb > thresh))
+    free(all);
+    p->balance_time_last = p->run_cost; /* LAMMPS: the time up to this balance */
+    double *wt = p->balance_weigh ? p->balance_weigh(g, p->balance_ctx, a->n, ct, cn, nown)
+                                  : NULL;
+    free(ct);
+    /* each rank's load under the current cuts: its own atoms' */
+    double load = 0, *loads = NULL;
+    for (int i = 0; i < a->n; i++)
+        load += wt ? wt[i] : 1.0;
+    b = comm_allgatherv(&load, sizeof load, (void **)&loads);
+    if (b != (size_t)P * sizeof load)
+        gr_error(g, "out of memory balancing");
+    double big = 0, total = 0;
+    for (int r = 0; r < P; r++) {
+        big = fmax(big, loads[r]);
+        total += loads[r];
+    }
+    free(loads);
+    free(nown);
+    double imb = total > 0 ? big * P / total : 1.0;
+    if (!(imb > thresh)) {
+        free(wt);
         return;
+    }
+    int rec = wt ? 4 : 3;
     if (rcb) {
-        double *s = gr_malloc(g, (3 * (size_t)a->n + 1) * sizeof *s), *all = NULL;
-        for (int k = 0; k < a->n; k++)
+        double *s = gr_malloc(g, ((size_t)rec * a->n + 1) * sizeof *s), *all3 = NULL;
+        for (int k = 0; k < a->n; k++) {
             for (int q = 0; q < 3; q++)
-                s[3 * (size_t)k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-        size_t b = comm_allgatherv(s, 3 * (size_t)a->n * sizeof *s, (void **)&all);
+                s[(size_t)rec * k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+            if (wt)
+                s[(size_t)rec * k + 3] = wt[k];
+        }
+        b = comm_allgatherv(s, (size_t)rec * a->n * sizeof *s, (void **)&all3);
         free(s);
         if (b == (size_t)-1)
             gr_error(g, "out of memory balancing");
-        decomp_rcb(g, dc, all, (long)(b / (3 * sizeof *all)));
-        free(all);
-        return;
+        long m = (long)(b / ((size_t)rec * sizeof *all3));
+        if (wt)
+            decomp_rcb_w(g, dc, all3, m);
+        else
+            decomp_rcb(g, dc, all3, m);
+        free(all3);
+    } else {
+        int st = wt ? 2 : 1;
+        for (int q = 0; q < 3; q++) {
+            if (!(dims & (1u << q)) || dc->p[q] < 2)
+                continue;
+            double *s = gr_malloc(g, ((size_t)st * a->n + 1) * sizeof *s), *all1 = NULL;
+            for (int k = 0; k < a->n; k++) {
+                s[(size_t)st * k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
+                if (wt)
+                    s[(size_t)st * k + 1] = wt[k];
+            }
+            b = comm_allgatherv(s, (size_t)st * a->n * sizeof *s, (void **)&all1);
+            free(s);
+            if (b == (size_t)-1)
+                gr_error(g, "out of memory balancing");
+            long m = (long)(b / ((size_t)st * sizeof *all1));
+            if (wt)
+                decomp_quantile_cuts_w(dc, q, all1, m);
+            else
+                decomp_quantile_cuts(dc, q, all1, m);
+            free(all1);
+        }
     }
-    for (int q = 0; q < 3; q++) {
-        if (!(dims & (1u << q)) || dc->p[q] < 2)
-            continue;
-        double *s = gr_malloc(g, ((size_t)a->n + 1) * sizeof *s), *all = NULL;
-        for (int k = 0; k < a->n; k++)
-            s[k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-        size_t b = comm_allgatherv(s, (size_t)a->n * sizeof *s, (void **)&all);
-        free(s);
-        if (b == (size_t)-1)
-            gr_error(g, "out of memory balancing");
-        long m = (long)(b / sizeof *all);
-        decomp_quantile_cuts(dc, q, all, m);
-        free(all);
-    }
+    free(wt);
+    if (p->balance_out)
+        p->balance_out(g, p->balance_ctx);
 }
 
 void par_exchange(struct gravel *g, double cut)
@@ -758,6 +846,9 @@ void par_exchange(struct gravel *g, double cut)
         rebalance(g, p->balance_dims, p->balance_rcb, p->balance_thresh);
         p->balance_dims = 0;
         p->balance_rcb = 0;
+        p->balance_ctx = NULL;
+        p->balance_weigh = NULL;
+        p->balance_out = NULL;
     }
     /* destinations; an atom outside a fixed face is lost */
     int *dest = gr_malloc(g, ((size_t)n + 1) * sizeof(int));
@@ -1130,6 +1221,34 @@ void par_snapshot_end(struct gravel *g)
     p->nsaved = 0;
     p->ended = 0;
     par_gather_end(g);
+}
+
+/* ---- rerun: a snapshot read into every rank's whole set ----------------------- */
+
+void par_rerun_gather(struct gravel *g)
+{
+    par_snapshot_begin(g); /* the history and the fixes' state by tag, as at a run's end */
+}
+
+void par_rerun_keep(struct gravel *g)
+{
+    par_snapshot_end(g);
+}
+
+void par_rerun_scatter(struct gravel *g)
+{
+    struct par *p = g->par;
+    if (!p || !p->gathered)
+        return;
+    atoms_free_fields(&p->local); /* the last snapshot's own: the new one replaces them */
+    memset(&p->local, 0, sizeof p->local);
+    p->gathered = 0;
+    p->on = 1;
+    p->ended = 0;
+    p->nghost = 0;
+    g->eng->nghost = 0;
+    p->list_current = 0; /* the next build takes the history from p->hist by tag pair */
+    keep_brick(g, p);
 }
 
 void par_gather_end(struct gravel *g)

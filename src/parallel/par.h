@@ -54,6 +54,17 @@ struct par {
     unsigned balance_dims;  /* fix balance: the next exchange balances these dimensions */
     int balance_rcb;        /* fix balance rcb: the next exchange tiles the box again */
     double balance_thresh;
+    /* fix balance's weight and out keywords (NULL: by count, no file): the
+     * atoms' weights (balance_weight.h's bal_weight_compute) and the boxes'
+     * file after a balance, through the fix (par does not call up) */
+    void *balance_ctx;
+    double *(*balance_weigh)(struct gravel *g, void *ctx, int n, const double *cost_time,
+                             const double *cost_neigh, const long *nown);
+    void (*balance_out)(struct gravel *g, void *ctx);
+    double run_cost;        /* this run's Pair + Neigh wall time so far (weight time) */
+    double balance_time_last; /* run_cost at the last fix balance */
+    double last_cost;       /* the last run's Pair + Neigh time and neighbor pairs, */
+    double last_neigh;      /* this rank's (balance weight time, neigh) */
     int gathered;           /* par_gather_begin: g->atoms is every rank's, local holds ours */
     struct atoms local;
     /* what the last decomposed run left for a restart file (ended = 1) */
@@ -125,5 +136,21 @@ void par_gather_end(struct gravel *g);
 void par_snapshot_begin(struct gravel *g);
 void par_snapshot_end(struct gravel *g);
 
+/* rerun on several ranks. Before a snapshot is read: every rank's atoms in
+ * tag order on the host, the contacts' history and the fixes' per-atom
+ * state saved by tag (the device untouched). No snapshot followed:
+ * par_rerun_keep returns to this rank's atoms. One was read into the whole
+ * set: par_rerun_scatter keeps this rank's brick of it (then eng_upload and
+ * par_fix_state_restore, and the next build exchanges ghosts and history). */
+void par_rerun_gather(struct gravel *g);
+void par_rerun_keep(struct gravel *g);
+void par_rerun_scatter(struct gravel *g);
+/* An output step of a decomposed run (par_gathered): the stored history of
+ * each pair (tags[2k], tags[2k+1]) from every rank's contacts by tag pair,
+ * hist[k * width + d] as doubles, as compute pair/local's pN read it (a
+ * contact is owned by its lower tag, as on one process; a pair in no list
+ * gets zeros). Returns the width, 0 without history (or over maxw).
+ * Collective: every rank calls it with its gathered set's pairs. */
+int par_pair_history(struct gravel *g, int np, const int64_t *tags, int maxw, double *hist);
 
 #endif

@@ -7,11 +7,34 @@
 static int split_rank(int lo, int hi) { return lo + (hi - lo) / 2 + 1; }
 
 static int sort_dim; /* qsort has no context argument in C11 */
+static int rec = 3;  /* doubles per particle: 3 fractions, and its weight (rcb_compute_w) */
 
 static int cmp_triple(const void *a, const void *b)
 {
-    double x = ((const double *)a)[sort_dim], y = ((const double *)b)[sort_dim];
-    return (x > y) - (x < y);
+    const double *u = a, *v = b;
+    double x = u[sort_dim], y = v[sort_dim];
+    if (x != y || rec == 3)
+        return (x > y) - (x < y);
+    for (int q = 0; q < rec; q++) /* weighted: ties in a fixed order (the prefix sums) */
+        if (u[q] != v[q])
+            return (u[q] > v[q]) - (u[q] < v[q]);
+    return 0;
+}
+
+/* the first m whose particles before it weigh at least the share nlo / np
+ * of the range (unweighted: its count share) */
+static long share_index(const double *s, long n, int nlo, int np)
+{
+    if (rec == 3)
+        return (long)((double)n * nlo / np);
+    double w = 0, acc = 0;
+    for (long i = 0; i < n; i++)
+        w += s[rec * i + 3];
+    double target = w * nlo / np;
+    long m = 0;
+    while (m < n && acc < target)
+        acc += s[rec * m++ + 3];
+    return m;
 }
 
 /* The cut in dimension d of the n particles s (sorted here by d) that
@@ -24,19 +47,19 @@ static double cut_in(double *s, long n, int d, int nlo, int np, const double lo[
                      const double hi[3])
 {
     sort_dim = d;
-    qsort(s, (size_t)n, 3 * sizeof *s, cmp_triple);
-    long m = (long)((double)n * nlo / np), k = m;
-    if (m > 0 && m < n && s[3 * (m - 1) + d] == s[3 * m + d]) {
+    qsort(s, (size_t)n, (size_t)rec * sizeof *s, cmp_triple);
+    long m = share_index(s, n, nlo, np), k = m;
+    if (m > 0 && m < n && s[rec * (m - 1) + d] == s[rec * m + d]) {
         long i0 = m - 1, i1 = m + 1;
-        while (i0 > 0 && s[3 * (i0 - 1) + d] == s[3 * m + d])
+        while (i0 > 0 && s[rec * (i0 - 1) + d] == s[rec * m + d])
             i0--;
-        while (i1 < n && s[3 * i1 + d] == s[3 * m + d])
+        while (i1 < n && s[rec * i1 + d] == s[rec * m + d])
             i1++;
         k = m - i0 <= i1 - m ? i0 : i1;
     }
     double v = n == 0 ? lo[d] + (hi[d] - lo[d]) * nlo / np
-             : k <= 0 ? 0.5 * (lo[d] + s[d]) : k >= n ? 0.5 * (s[3 * (n - 1) + d] + hi[d])
-             : 0.5 * (s[3 * (k - 1) + d] + s[3 * k + d]);
+             : k <= 0 ? 0.5 * (lo[d] + s[d]) : k >= n ? 0.5 * (s[rec * (n - 1) + d] + hi[d])
+             : 0.5 * (s[rec * (k - 1) + d] + s[rec * k + d]);
     double a = lo[d] + 1e-6 * nlo, b = hi[d] - 1e-6 * (np - nlo);
     if (!(a < b))
         return lo[d] + (hi[d] - lo[d]) * nlo / np;
@@ -64,18 +87,18 @@ static void bisect(struct rcb *t, int plo, int phi, double *s, long n, double lo
     }
     if (d != nd - 1) { /* the particles sorted by d again */
         sort_dim = d;
-        qsort(s, (size_t)n, 3 * sizeof *s, cmp_triple);
+        qsort(s, (size_t)n, (size_t)rec * sizeof *s, cmp_triple);
     }
     t->dim[mid] = d;
     t->cut[mid] = v;
     long k = 0;
-    while (k < n && s[3 * k + d] < v)
+    while (k < n && s[rec * k + d] < v)
         k++;
     double h2[3] = {hi[0], hi[1], hi[2]}, l2[3] = {lo[0], lo[1], lo[2]};
     h2[d] = v;
     l2[d] = v;
     bisect(t, plo, mid - 1, s, k, lo, h2, len, nd);
-    bisect(t, mid, phi, s + 3 * k, n - k, l2, hi, len, nd);
+    bisect(t, mid, phi, s + rec * k, n - k, l2, hi, len, nd);
 }
 
 void rcb_compute(struct rcb *t, int nranks, double *s, long n, const double len[3], int nd)
@@ -90,6 +113,13 @@ void rcb_compute(struct rcb *t, int nranks, double *s, long n, const double len[
     t->n = nranks;
     double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     bisect(t, 0, nranks - 1, s, n, lo, hi, len, nd);
+}
+
+void rcb_compute_w(struct rcb *t, int nranks, double *s, long n, const double len[3], int nd)
+{
+    rec = 4;
+    rcb_compute(t, nranks, s, n, len, nd);
+    rec = 3;
 }
 
 int rcb_owner(const struct rcb *t, const double s[3])

@@ -20,6 +20,10 @@ struct rcb {
  * here); len[q] weighs the sides when choosing the longest (box lengths;
  * 1 each for lamda); nd = 2 never cuts z. */
 void rcb_compute(struct rcb *t, int nranks, double *s, long n, const double len[3], int nd);
+/* The same with a weight per particle: s[4 i + q] the fractions, s[4 i + 3]
+ * its weight (> 0); each lower part holds its share of the weight (balance
+ * weight, LAMMPS's weighted rcb); ties ordered by every field. */
+void rcb_compute_w(struct rcb *t, int nranks, double *s, long n, const double len[3], int nd);
 /* The rank whose tile holds the fractions s (a fraction on a cut goes up). */
 int rcb_owner(const struct rcb *t, const double s[3]);
 /* Tile of rank r: [lo, hi) per dimension, fractions of the box. */

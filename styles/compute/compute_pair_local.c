@@ -122,6 +122,22 @@ static void pl_init(struct gravel *g, struct compute *c)
     pl_pair(g, c, &caps);
 }
 
+/* Several ranks (the atoms gathered in tag order for the output step): the
+ * history of each pair from every rank's contacts by tag pair, seen from i
+ * (the lower tag, the contact's owner on every rank as on one process), as
+ * host_pairs_history gives it on one process; pairs in no list get zeros. */
+static int history_ranks(struct gravel *g, const struct host_pair *p, int np, double *hist)
+{
+    int64_t *tags = gr_malloc(g, (2 * (size_t)np + 1) * sizeof *tags);
+    for (int k = 0; k < np; k++) {
+        tags[2 * k] = g->atoms.tag[p[k].i];
+        tags[2 * k + 1] = g->atoms.tag[p[k].j];
+    }
+    int hw = par_pair_history(g, np, tags, HOST_PAIRS_HIST_MAX, hist);
+    free(tags);
+    return hw;
+}
+
 static void pl_local(struct gravel *g, struct compute *c)
 {
     struct pair_local *pl = c->data;
@@ -137,14 +153,9 @@ static void pl_local(struct gravel *g, struct compute *c)
         wants_sv |= pl->v[q] >= V_P;
     double *hist = NULL, sv[64];
     int hw = 0;
-    if (wants_sv && par_gathered(g)) /* the contacts' history is on each rank's device */
-        par_refuse(g, "compute pair/local pN (the contacts' stored history)");
     if ((wants_sv || (pl->needs_single && caps.single_hist)) && np > 0) {
-        if (par_gathered(g))
-            par_refuse(g, "compute pair/local of pair granular's mdr (the contacts' stored "
-                          "history)");
         hist = gr_malloc(g, (size_t)np * HOST_PAIRS_HIST_MAX * sizeof *hist);
-        hw = host_pairs_history(g, p, np, hist);
+        hw = par_gathered(g) ? history_ranks(g, p, np, hist) : host_pairs_history(g, p, np, hist);
     }
     double *out = compute_local_rows(g, c, np);
     for (int k = 0; k < np; k++) {
@@ -190,8 +201,8 @@ static void pl_local(struct gravel *g, struct compute *c)
     free(hist);
 }
 
-/* several ranks: dist, eng, force, fx fy fz from the gathered atoms as one
- * process (pairs in atom-ID order); pN reads the device's history: refused */
+/* several ranks: every value from the gathered atoms as one process (pairs in
+ * atom-ID order); pN from every rank's contact history by tag pair */
 const struct compute_style compute_style_pair_local = {
     .name = "pair/local",
     .ranks = COMPUTE_RANKS_GATHER,

@@ -14,6 +14,7 @@
 #include "fix.h"
 #include "outfile.h"
 #include "par.h"
+#include "thermo.h"
 #include "variable.h"
 
 void ave_sched_parse(struct gravel *g, struct ave_sched *s, char **argv, const char *who)
@@ -161,17 +162,23 @@ void ave_sample(struct gravel *g, struct fix *f, struct ave_sched *s, const char
 {
     if (!ave_sched_due(g, s, who, f->id))
         return;
+    if (s->reads_vars)
+        thermo_pre_take(g); /* several ranks: the keywords a gathered pass cannot take */
     par_gather_begin(g); /* several ranks: every rank's atoms, as one process */
     take(g, f);
     par_gather_end(g);
+    if (s->reads_vars)
+        thermo_pre_clear(g);
 }
 
-void ave_source_check(struct gravel *g, char kind, const char *id, const char *who,
-                      const char *fid)
+void ave_source_check(struct gravel *g, struct ave_sched *s, char kind, const char *id,
+                      const char *who, const char *fid)
 {
-    if (kind != 'c' && comm_size() > 1) { /* a fix's or variable's value may be one rank's */
+    s->reads_vars |= kind == 'v';
+    const struct fix *src = kind == 'f' ? fix_find(g, id) : NULL;
+    if (src && comm_size() > 1 && !par_fix_value_global(src)) { /* may be one rank's part */
         char why[160];
-        snprintf(why, sizeof why, "%s %s reading %s_%s", who, fid, kind == 'f' ? "f" : "v", id);
+        snprintf(why, sizeof why, "%s %s reading f_%s (%s)", who, fid, id, src->style->name);
         par_refuse(g, why);
     }
     if (kind == 'c' && !compute_find(g, id))

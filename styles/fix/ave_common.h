@@ -21,6 +21,7 @@ struct ave_sched {
     bigint nvalid;              /* next sampling step */
     bigint nvalid_last;         /* last sampling step (-1: none yet) */
     int irepeat;                /* samples taken in this epoch */
+    int reads_vars;             /* a variable input (several ranks: pre-gather keywords) */
 };
 
 /* Parse "Nevery Nrepeat Nfreq" (argv[0..2]) with LAMMPS's rules: all
@@ -81,8 +82,12 @@ int ave_keyword(struct gravel *g, struct ave_opts *o, struct ave_sched *s, struc
 void ave_global_check(struct gravel *g, char kind, const char *id, int index, int vector_mode,
                       int nevery, const char *who);
 /* At run setup: the compute ('c'), fix ('f') or variable ('v') `id` that
- * fix `fid` reads still exists, else an error. */
-void ave_source_check(struct gravel *g, char kind, const char *id, const char *who,
+ * fix `fid` reads still exists, else an error. Several ranks: a variable
+ * is evaluated on every rank's atoms gathered (s->reads_vars), a fix's
+ * value must be the same on every rank (par_fix_value_global), else the
+ * run is refused. */
+void ave_source_check(struct gravel *g, struct ave_sched *s, char kind, const char *id,
+                      const char *who,
                       const char *fid);
 
 struct ave_file {

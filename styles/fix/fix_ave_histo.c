@@ -422,7 +422,7 @@ static void ah_init(struct gravel *g, struct fix *f)
     struct ave_histo *a = f->data;
     for (int j = 0; j < a->nvalues; j++)
         if (a->v[j].which >= W_COMPUTE)
-            ave_source_check(g, kind_letter[a->v[j].which], a->v[j].id, WHO, f->id);
+            ave_source_check(g, &a->s, kind_letter[a->v[j].which], a->v[j].id, WHO, f->id);
     if (a->s.nvalid < g->step)
         ave_sched_reset(g, &a->s);
 }

@@ -482,7 +482,7 @@ static void at_init(struct gravel *g, struct fix *f)
     struct ave_time *a = f->data;
     for (int j = 0; j < a->nvalues; j++)
         if (a->v[j].which != W_THERMO_TEMP)
-            ave_source_check(g, a->v[j].name[0], a->v[j].id, WHO, f->id);
+            ave_source_check(g, &a->s, a->v[j].name[0], a->v[j].id, WHO, f->id);
     if (a->s.nvalid < g->step)
         ave_sched_reset(g, &a->s);
 }

@@ -15,6 +15,7 @@
 
 #include "args.h"
 #include "balance.h"
+#include "balance_weight.h"
 #include "comm.h"
 #include "error.h"
 #include "fix.h"
@@ -25,7 +26,18 @@ struct fix_balance {
     double thresh;
     unsigned dims; /* shift */
     int rcb;
+    struct bal_weight w; /* weight and out keywords */
 };
+
+/* the keywords after the style's arguments (from argv[i]) */
+static void keywords(struct gravel *g, struct fix_balance *b, int argc, char **argv, int i)
+{
+    while (i < argc) {
+        if (strcmp(argv[i], "weight") && strcmp(argv[i], "out"))
+            gr_error(g, "fix balance: unknown keyword '%s' (weight, out)", argv[i]);
+        i = bal_weight_parse(g, &b->w, argc, argv, i, "fix balance");
+    }
+}
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
@@ -43,22 +55,22 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         else if (!par_state(g)->dc.tiled)
             gr_error(g, "fix balance rcb needs comm_style tiled (LAMMPS: Fix balance rcb "
                         "cannot be used with comm_style brick)");
-        if (argc != 3)
-            gr_error(g, "fix balance rcb takes no keywords, got '%s'", argv[3]);
         struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
         f->data = b;
         b->nfreq = nfreq;
         b->thresh = thresh;
         b->rcb = 1;
+        keywords(g, b, argc, argv, 3);
         f->hooks = HOOK_PRE_EXCHANGE;
         return;
     }
     if (strcmp(argv[2], "shift") != 0)
         gr_error(g, "fix balance style '%s' is not supported (shift, rcb)", argv[2]);
-    if (argc != 6)
-        gr_error(g, "fix balance shift needs dimstr Niter stopthresh (and no keywords)");
+    if (argc < 6)
+        gr_error(g, "fix balance shift needs dimstr Niter stopthresh");
     struct fix_balance *b = gr_calloc(g, 1, sizeof *b);
     f->data = b;
+    keywords(g, b, argc, argv, 6);
     b->nfreq = nfreq;
     b->thresh = thresh;
     b->dims = balance_dims(g, argv[3]);
@@ -69,6 +81,27 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (comm_size() == 1)
         gr_warn(g, "fix %s balance: one process, there is nothing to balance", f->id);
     f->hooks = HOOK_PRE_EXCHANGE;
+}
+
+static double *weigh(struct gravel *g, void *ctx, int n, const double *cost_time,
+                     const double *cost_neigh, const long *nown)
+{
+    struct fix_balance *b = ctx;
+    return bal_weight_compute(g, &b->w, n, NULL, cost_time, cost_neigh, nown);
+}
+
+static void out(struct gravel *g, void *ctx)
+{
+    struct fix_balance *b = ctx;
+    bal_weight_out(g, &b->w, &par_state(g)->dc, g->step);
+}
+
+/* the coming exchange balances with this fix's weights and out file */
+static void hand_weights(struct par *p, struct fix_balance *b)
+{
+    p->balance_ctx = b;
+    p->balance_weigh = b->w.on ? weigh : NULL;
+    p->balance_out = b->w.out ? out : NULL;
 }
 
 static void init(struct gravel *g, struct fix *f)
@@ -90,11 +123,18 @@ static void pre_exchange(struct gravel *g, struct fix *f)
         p->balance_rcb = b->rcb;
         p->balance_dims = b->rcb ? 0 : b->dims;
         p->balance_thresh = b->thresh;
+        hand_weights(p, b);
     }
     f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;
 }
 
-static void destroy(struct fix *f) { free(f->data); }
+static void destroy(struct fix *f)
+{
+    struct fix_balance *b = f->data;
+    if (b)
+        bal_weight_free(&b->w);
+    free(b);
+}
 
 const struct fix_style fix_style_balance = {
     .name = "balance",

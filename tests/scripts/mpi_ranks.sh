@@ -757,6 +757,33 @@ grep -v '^comm_style\|^balance' rcb.in > rcbfix.in
 mpirun -np 2 "$par" -in rcbfix.in -log none > rcbfix.out 2>&1; rc=$?
 check fix_rcb_needs_tiled '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: fix: fix balance rcb needs comm_style tiled" rcbfix.out)" -eq 1 ]'
 
+# balance weights (LAMMPS's weight group|var|neigh|time) and the out file: the bed's
+# upper 3 layers weigh 3 (group top; or an atom-style variable 1 + 2 (z > 3.5)), so
+# the weighted median of the 1440 lies between layers 4 and 5: z cut 4.5 / 16 =
+# 0.28125 on 1 x 1 x 2 ranks, loads 1440 -> 720 (the count's median would be 3.5);
+# fix balance with weight time (the ranks' Pair + Neigh times: the partition depends
+# on timings, the physics never does), neigh and group, and rcb with weight var and
+# time on 2 and 3 ranks: the same bits as one process
+sed -e '/^comm_style/d' -e 's/^balance         1.0 rcb/region          upper block INF INF INF INF 3.5 INF\ngroup           top region upper\nbalance         1.0 shift z 10 1.0 weight group 1 top 3.0 out bal.out/' \
+    -e 's/^fix             b all balance 100 1.0 rcb/fix             b all balance 100 1.0 shift z 10 1.0 weight time 1.0 weight neigh 0.8 weight group 1 top 3.0 out fbal.out/' rcb.in > wgrid.in
+ref_run wgrid.in
+same balance_weight_np2 wgrid.in 2 "" "1 1 2"
+check balance_weight_report 'grep -q "^  initial/final maximal load/proc = 1440.0000 720.00000$" balance_weight_np2.out && grep -q "^  z cuts: 0.0000000 0.28125000 1.0000000$" balance_weight_np2.out'
+check balance_out_file '[ "$(sed -n 4p bal.out)" = 16 ] && [ "$(sed -n 14p bal.out)" = "5 1 0 0 4.5" ] && [ "$(sed -n 28,30p bal.out | tr "\n" " ")" = "ITEM: NUMBER OF CUBES 2 ITEM: CUBES " ] && [ "$(tail -1 bal.out)" = "2 1 9 10 11 12 13 14 15 16" ] && [ "$(grep -c "^ITEM: CUBES" fbal.out)" -ge 3 ]'
+sed -e 's/^balance         1.0 rcb/variable        wv atom 1.0+2.0*(z>3.5)\nbalance         1.0 rcb weight var wv/' \
+    -e 's/^fix             b all balance 100 1.0 rcb/fix             b all balance 100 1.0 rcb weight time 0.5 weight var wv/' rcb.in > wrcb.in
+ref_run wrcb.in
+same rcb_weight_np2 wrcb.in 2 ""
+same rcb_weight_np3 wrcb.in 3 ""
+check rcb_weight_report 'grep -q "^  initial/final maximal load/proc = 1440.0000 720.00000$" rcb_weight_np2.out'
+# weight store (no custom per-atom property to store in) and a weight <= 0: errors
+sed 's/weight var wv$/weight store wst/' wrcb.in > wstore.in
+mpirun -np 2 "$par" -in wstore.in -log none > wstore.out 2>&1; rc=$?
+check balance_weight_store_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: balance: balance weight store is not supported" wstore.out)" -eq 1 ]'
+sed 's/^variable        wv atom .*/variable        wv atom z-3.5/' wrcb.in > wneg.in
+mpirun -np 2 "$par" -in wneg.in -log none > wneg.out 2>&1; rc=$?
+check balance_weight_negative '[ $rc -ne 0 ] && grep -q "^ERROR: balance: balance weight var wv: atom 1 has weight -2.5 (must be > 0) (wneg.in:26)" wneg.out'
+
 
 # equal-style variables in thermo: thermo keywords (the pressure and energies
 # taken before the gather), computes (summed and gathered) and group functions,
@@ -869,10 +896,17 @@ IN
 ref_run loc.in
 check dump_local_written '[ "$(ls ref/d.loc.*.txt | wc -l)" -eq 4 ] && [ "$(wc -l < ref/d.loc.100.txt)" -gt 100 ]'
 same dump_local_np3 loc.in 3 ""
-# pair/local's pN values read each rank's stored contact history: refused
-sed 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4/' loc.in > locp.in
-mpirun -np 2 "$par" -in locp.in -log none > locp.out 2>&1; rc=$?
-check pair_local_history_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" locp.out)" -eq 1 ] && grep -q "compute pair/local pN" locp.out'
+# pair/local's pN values (the tangential force from the stored history, its
+# magnitude, the relative velocities): every rank's contacts' history by tag
+# pair, as one process reads its list; in double and single precision
+sed -e 's/pair\/local dist force fx fy fz/pair\/local dist p1 p2 p3 p4 p5 p8 p10/' \
+    -e 's/c_pf\[1\] c_pf\[2\] c_pf\[3\]$/c_pf[1] c_pf[2] c_pf[3] c_pf[4] c_pf[5] c_pf[6] c_pf[7] c_pf[8]/' loc.in > locp.in
+ref_run locp.in
+check pair_local_history_seen '[ "$(awk "NF == 11 && \$8 > 0" ref/d.loc.300.txt | wc -l)" -gt 100 ]'
+same pair_local_history_np2 locp.in 2 ""
+same pair_local_history_np3 locp.in 3 ""
+ref_run locp.in "-precision single"
+same pair_local_history_single_np2 locp.in 2 "-precision single"
 # pair granular's mdr model keeps per-atom state on one rank (fix granular/mdr): refused
 cat > mdr.in <<'IN'
 units si
@@ -893,14 +927,15 @@ check mdr_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI 
 
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;
-# a variable or fix input stops the run (its value may be one rank's)
+# a variable input (evaluated on every rank's atoms gathered) too: the same file
 sed 's/^run             600/fix a1 all ave\/time 10 5 100 c_cm[1] c_gy c_rk c_t file at.txt format %.17g\nfix a2 all ave\/chunk 10 5 100 ch vz density\/mass file ac.txt format %.17g\nfix a3 all ave\/histo 10 5 100 -10 10 20 c_pa[1] mode vector file ah.txt\nrun             600/' cg.in > av.in
 "$serial" -in av.in -log none > av.ref 2>&1; mkdir -p avref; mv at.txt ac.txt ah.txt avref/ 2> /dev/null
 mpirun -np 3 "$par" -in av.in -log none > av.out 2>&1; rc=$?
 check ave_fixes_np3 '[ $rc -eq 0 ] && [ "$(wc -l < avref/ac.txt)" -ge 30 ] && [ "$(wc -l < avref/ah.txt)" -ge 100 ] && cmp -s avref/at.txt at.txt && cmp -s avref/ac.txt ac.txt && cmp -s avref/ah.txt ah.txt'
-sed 's/^run             600/variable vv equal step\nfix a4 all ave\/time 10 1 10 v_vv\nrun             600/' cg.in > avv.in
+sed 's/^run             600/variable vv equal step+ke\nfix a4 all ave\/time 10 1 10 v_vv file avv.txt\nrun             600/' cg.in > avv.in
+"$serial" -in avv.in -log none > avv.ref 2>&1; mv avv.txt avvref.txt
 mpirun -np 2 "$par" -in avv.in -log none > avv.out 2>&1; rc=$?
-check ave_variable_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" avv.out)" -eq 1 ] && grep -q "fix ave/time a4 reading v_vv" avv.out'
+check ave_variable_np2 '[ $rc -eq 0 ] && [ "$(grep -vc "^#" avvref.txt)" -ge 50 ] && cmp -s avvref.txt avv.txt'
 
 # restart files across ranks: the walls deck's first run (600 steps) ends in
 # write_restart, a second script reads the file and runs 300 steps; written on
@@ -1032,13 +1067,27 @@ ref_run millp.in "-var nsteps 1200"
 check wall_pair_mesh_force_seen '[ "$(rows ref.out | awk "\$5 != 0 && \$6 != 0" | wc -l)" -ge 1 ]'
 same wall_pair_mesh_np3 millp.in 3 "-var nsteps 1200"
 
-# what cannot run across ranks yet stops every rank, one message, exit 1 (rerun
-# of the chute's own dump)
-sed -e '/^dump/d' -e '/^run  /d' -e '/^write_dump/d' chute.in > rr.in
-echo 'rerun final.dump dump x y z vx vy vz' >> rr.in
-"$serial" -in chute.in -log none > /dev/null 2>&1
-mpirun -np 2 "$par" -in rr.in -log none > ave.out 2>&1; rc=$?
-check unsupported_refused '[ $rc -ne 0 ] && [ "$(grep -c "cannot run on 2 MPI ranks yet" ave.out)" -eq 1 ] && grep -q "rerun cannot run" ave.out'
+# rerun of the chute's dump (every 20 steps, written by one process) after a
+# run that leaves contact history: each snapshot read on every rank, each rank
+# keeping its brick's atoms, the history and the fixes' state carried by tag;
+# thermo per snapshot, a dump during the rerun and the final atoms (forces too)
+sed -e '/^dump/d' -e '/^run  /d' -e '/^write_dump/d' -e '/^thermo  /d' chute.in > rrbase.in
+{ cat rrbase.in; printf 'dump rer all custom 20 rer.dump id type x y z vx vy vz\ndump_modify rer sort id format float %%.17g\nrun 100\n'; } > rrmk.in
+"$serial" -in rrmk.in -log none > rrmk.out 2>&1
+{ cat rrbase.in; cat <<'IN'
+thermo          30
+run             40
+thermo          20
+dump            d1 all custom 40 d.*.txt id type x y z vx vy vz fx fy fz omegax tqz
+dump_modify     d1 sort id format float %.17g
+rerun           rer.dump first 20 dump x y z vx vy vz
+write_dump      all custom final.dump id x y z vx vy vz fx fy fz omegax omegay omegaz modify sort id format float %.17g
+IN
+} > rer.in
+ref_run rer.in
+check rerun_snapshots '[ "$(rows ref.out | wc -l)" -eq 8 ] && [ "$(ls ref | wc -l)" -eq 2 ]'
+same rerun_np2 rer.in 2 ""
+same rerun_np3 rer.in 3 ""
 # a variable reading a fix whose value may be one rank's part
 # a variable reading fix ave/time (its compute input sampled as one process): the same bits
 sed 's/^variable w equal v_kk\/v_n/fix a all ave\/time 10 1 10 c_1\nvariable w equal f_a/' var.in > vara.in
@@ -1051,6 +1100,18 @@ sed -e 's/^variable w equal v_kk\/v_n/variable w equal f_2[1]+f_2[3]/' \
 ref_run varf.in
 check freeze_force_seen '[ "$(rows ref.out | awk "NR > 1 && \$NF != 0" | wc -l)" -ge 3 ]'
 same variable_freeze_np2 varf.in 2 ""
+# fix ave/time and ave/histo reading variables and fixes: each sample's variables
+# on every rank's atoms gathered (press and pe taken on the ranks first, as thermo
+# does), fix values summed in tag order; their files byte-identical to one process's
+sed -e 's/^variable w equal v_kk\/v_n/variable vz atom vz\nvariable vxa atom vx\nvariable w equal f_at[1]+f_at[5]/' \
+    -e 's/^\(thermo_style custom .*\)$/fix a all ave\/time 10 1 10 c_1\nfix at all ave\/time 10 3 30 v_pp v_kk v_zc v_n f_1 f_a file at.txt\nfix ah all ave\/histo 10 3 30 -1.0 1.0 8 v_vz v_vxa mode vector file ah.txt\n\1 f_at[1] f_at[2] f_at[5] f_ah[2]/' var.in > varv.in
+ref_run varv.in
+mv at.txt ref_at.txt; mv ah.txt ref_ah.txt
+check ave_inputs_seen '[ "$(grep -vc "^#" ref_at.txt)" -ge 3 ] && [ "$(rows ref.out | awk "NR > 1 && \$(NF - 2) != 0 && \$NF != 0" | wc -l)" -ge 3 ]'
+same ave_variable_fix_inputs_np2 varv.in 2 ""
+check ave_variable_fix_files_np2 'cmp -s ref_at.txt at.txt && cmp -s ref_ah.txt ah.txt'
+same ave_variable_fix_inputs_np3 varv.in 3 ""
+check ave_variable_fix_files_np3 'cmp -s ref_at.txt at.txt && cmp -s ref_ah.txt ah.txt'
 # ... or compute pressure (each rank's contacts' virial)
 sed 's/^variable w equal v_kk\/v_n/variable w equal c_pr/' var.in > varp.in
 mpirun -np 2 "$par" -in varp.in -log none > varp.out 2>&1; rc=$?
