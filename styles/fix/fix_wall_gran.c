@@ -213,10 +213,6 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     w->nparam = GRW_NPARAM;
     granular_pack(&o, w->param);
     int off = 0;
-    /* mdr: the step's force and damping scale first (the normal model's
-     * history first, as LAMMPS's); the contact's mdr state is fix
-     * granular/mdr's (styles/fix/fix_granular_mdr.c) */
-    w->param[GRW_HMDR] = o.nm == GR_N_MDR ? (off += MHW_N) - MHW_N : -1;
     w->mdr = o.nm == GR_N_MDR;
     if (w->mdr) {
         const double par[7] = {o.E, o.nu, o.Y, o.gamma, o.psi_b, o.damp, o.dtype};
@@ -232,6 +228,10 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
     w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
     w->param[GRW_HDYN] = o.tm == GR_T_HISTORY_STATIC || o.tm == GR_T_MINDLIN_STATIC ? off++ : -1;
+    /* mdr: the step's force and damping scale, last (the tangential history
+     * is at the row's start); the contact's mdr state is fix granular/mdr's
+     * (styles/fix/fix_granular_mdr.c) */
+    w->param[GRW_HMDR] = o.nm == GR_N_MDR ? (off += MHW_N) - MHW_N : -1;
     w->param[GRW_JKR2021] = g->opt.lammps2021;
     w->param[GRW_WIDTH] = off;
     w->history = off;
