@@ -266,9 +266,10 @@ void var_define(struct gravel *g, int argc, char **argv)
                      "optional flags, width and precision)", a[1]);
         break;
     }
-    /* a string variable's text is substituted at its definition, quotes
-     * or not (LAMMPS Variable::set, string style, since 2018) */
-    char *subst = s == V_STRING ? gr_strdup(g, inp_substitute(g, a[0])) : NULL;
+    /* a string variable's text is substituted at its definition, except
+     * text quoted inside it (LAMMPS Variable::set, string style, since
+     * 2018; lmp 29Sep2021 does) */
+    char *subst = s == V_STRING ? gr_strdup(g, inp_substitute_quoted(g, a[0])) : NULL;
     if (subst)
         a[0] = subst;
     if (old)

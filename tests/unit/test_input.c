@@ -450,9 +450,12 @@ TEST(nesting_depth)
                       "variable expand to a command that runs itself?)";
     char want[256];
     snprintf(want, sizeof want, "if: %s (test.in:3)", msg);
-    /* without and with quotes around the inner ${c} */
+    /* the inner ${c} quoted: a string variable substitutes its unquoted
+     * text at its definition (LAMMPS), where c is not defined yet */
     struct gravel *g = test_engine();
     CHECK(test_script(g, "variable c string \"if 1 then ${c}\"\nprint hi\n${c}\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "variable 'c' is not defined") != NULL);
+    CHECK(test_script(g, "variable c string \"if 1 then '${c}'\"\nprint hi\n${c}\n") == GR_ERR);
     CHECK(strstr(g->err.msg, want) != NULL);
     /* the counter unwinds with the error: the same engine nests 100 deep again */
     CHECK(test_script(g, "variable k equal 0\n"
