@@ -18,7 +18,6 @@
 #include "args.h"
 #include "error.h"
 #include "expr.h"
-#include "input.h"
 #include "log.h"
 #include "random.h"
 
@@ -266,16 +265,9 @@ void var_define(struct gravel *g, int argc, char **argv)
                      "optional flags, width and precision)", a[1]);
         break;
     }
-    /* a string variable's text is substituted at its definition, except
-     * text quoted inside it (LAMMPS Variable::set, string style, since
-     * 2018; lmp 29Sep2021 does) */
-    char *subst = s == V_STRING ? gr_strdup(g, inp_substitute_quoted(g, a[0])) : NULL;
-    if (subst)
-        a[0] = subst;
     if (old)
         remove_var(g, old);
     fill(g, append(g, name, (enum vstyle)s, nargs), nargs, a);
-    free(subst);
 }
 
 int var_next(struct gravel *g, const char *name)
