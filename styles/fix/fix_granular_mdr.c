@@ -17,7 +17,10 @@
  *      history, gathers the atoms' sums and leaves the force in the
  *      contact's history row (MH_FN), where the kernel reads it
  *      (kernels/pair_granular.cl) and adds damping mdr, friction, rolling
- *      and twisting.
+ *      and twisting;
+ *   5. the mdr walls' contacts (fix wall/gran/region granular mdr on plane
+ *      regions): their share of step 3 after the pairs', then their force
+ *      after the pairs' (the walls' section below).
  * The work is on the host because every step couples each contact to the
  * per-atom sums of all of its atoms' contacts and the penalties to triples
  * of atoms: contacts are visited in ascending (lower tag, higher tag), so
