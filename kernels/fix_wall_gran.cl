@@ -18,7 +18,7 @@ static inline void wall_granular_eval(const struct contact *c, __global const RE
                                 (int)p[GRW_HA],         (int)p[GRW_HROLL],
                                 (int)p[GRW_HTWIST],     (int)p[GRW_HTOUCH],
                                 (int)p[GRW_WIDTH],      1,
-                                (int)p[GRW_HDYN],       -1};
+                                (int)p[GRW_HDYN],       (int)p[GRW_HMDR]};
     granular_eval_l(c, p, h, out, L);
 }
 

@@ -434,7 +434,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     REAL Fne, knfac, a;
     const int mdr = L.hmdr >= 0 && GR_IS(L.n, GR_N_MDR, nm);
     if (mdr) { /* the host's force (styles/fix/fix_granular_mdr.c); a for mindlin */
-        Fne = h[L.hmdr + MH_FN];
+        Fne = h[L.hmdr + (L.wall ? MHW_FN : MH_FN)];
         a = sqrt(dR);
         knfac = 0;
     } else if (jkr) {
@@ -450,7 +450,7 @@ static inline void granular_eval_l(const struct contact *c, __global const REAL 
     REAL damp_pref;
     if (mdr) { /* damping mdr: type 1 eta_n0 times the contact's damping scale, type 2
                 * eta_n0 while the scale is not 0 (LAMMPS GranSubModDampingMDR) */
-        const REAL sc = h[L.hmdr + MH_DAMP_SCALE];
+        const REAL sc = h[L.hmdr + (L.wall ? MHW_DAMP_SCALE : MH_DAMP_SCALE)];
         damp_pref = (int)p[GR_MDR_DTYPE] == 1 ? p[GR_DAMP] * sc
                                                : (sc == (REAL)0 ? (REAL)0 : p[GR_DAMP]);
     } else {

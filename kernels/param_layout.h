@@ -70,14 +70,20 @@ enum gr_roll { GR_R_NONE, GR_R_SDS };
  * the conductivity (radius) or the heat transfer coefficient (area) */
 enum gr_heat { GR_H_NONE, GR_H_AREA, GR_H_RADIUS };
 
+/* The kernel's part of an mdr wall contact's history (at GRW_HMDR): the
+ * normal force and damping scale fix granular/mdr computed for the step;
+ * the contact's mdr state (enum mdr_hist) is the host's (the wall rows of
+ * the kernels hold WALL_HMAX REAL). */
+enum mdrw_hist { MHW_FN, MHW_DAMP_SCALE, MHW_N };
 /* fix wall/gran granular: the GR_* set, then the history layout of its one
  * model (kernels/fix_wall_gran.cl): tangential history on (0/1), offsets of
  * the contact radius (mindlin_rescale), rolling displacement, twist angle
  * and JKR touch flag (-1: absent), as LAMMPS 2021 sizes a wall's history;
  * then 1 when a jkr wall reaches as LAMMPS 2021's (-compat lammps2021); the
- * offset of the static/dynamic flag of the /static tangential models (-1). */
+ * offset of the static/dynamic flag of the /static tangential models (-1);
+ * the offset of the mdr wall block (enum mdrw_hist; -1: not mdr). */
 enum grw_param { GRW_TANG = GR_NPARAM, GRW_HA, GRW_HROLL, GRW_HTWIST, GRW_HTOUCH, GRW_WIDTH,
-                 GRW_JKR2021, GRW_HDYN, GRW_NPARAM };
+                 GRW_JKR2021, GRW_HDYN, GRW_HMDR, GRW_NPARAM };
 
 /* colloid (styles/pair/pair_colloid.c, kernels/pair_colloid.cl): LAMMPS's form
  * (COL_SS small-small LJ, COL_SL colloid-small, COL_LL colloid-colloid as

@@ -20,8 +20,18 @@
 #include "log.h"
 #include "variable.h"
 
+/* A string variable's text is substituted at its definition, except text
+ * quoted inside it (LAMMPS Variable::set, string style, since 2018; lmp
+ * 29Sep2021 does). */
 void cmd_variable(struct gravel *g, int argc, char **argv)
 {
+    if (argc == 3 && !strcmp(argv[1], "string")) {
+        char *subst = gr_strdup(g, inp_substitute_quoted(g, argv[2]));
+        char *a[3] = {argv[0], argv[1], subst};
+        var_define(g, argc, a);
+        free(subst);
+        return;
+    }
     var_define(g, argc, argv);
 }
 

@@ -424,15 +424,25 @@ static void substitute(struct gravel *g, const char *in, struct dbuf *out, int q
     }
 }
 
-const char *inp_substitute(struct gravel *g, const char *text)
+static const char *substitute_copy(struct gravel *g, const char *text, int quotes)
 {
     struct dbuf *s = &g->inp->scratch;
     /* text may point into scratch from a previous call: substitute a copy */
     struct dbuf *c = &g->inp->subin;
     db_clear(g, c);
     db_add(g, c, text, strlen(text));
-    substitute(g, c->p, s, 0);
+    substitute(g, c->p, s, quotes);
     return s->p;
+}
+
+const char *inp_substitute(struct gravel *g, const char *text)
+{
+    return substitute_copy(g, text, 0);
+}
+
+const char *inp_substitute_quoted(struct gravel *g, const char *text)
+{
+    return substitute_copy(g, text, 1);
 }
 
 static void add_arg(struct gravel *g, struct frame *fr, char *word)

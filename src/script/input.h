@@ -53,6 +53,9 @@ int inp_quit_status(const struct gravel *g);
  * special here; `print` uses this). The result stays valid until the next
  * call. */
 const char *inp_substitute(struct gravel *g, const char *text);
+/* The same with quoted text copied unchanged (rule 6, LAMMPS's
+ * Input::substitute): a string variable's definition. */
+const char *inp_substitute_quoted(struct gravel *g, const char *text);
 
 /* ---- limits for the fuzz harness (0 = unlimited, the default) ---- */
 

@@ -17,7 +17,10 @@
  *      history, gathers the atoms' sums and leaves the force in the
  *      contact's history row (MH_FN), where the kernel reads it
  *      (kernels/pair_granular.cl) and adds damping mdr, friction, rolling
- *      and twisting.
+ *      and twisting;
+ *   5. the mdr walls' contacts (fix wall/gran/region granular mdr on plane
+ *      regions): their share of step 3 after the pairs', then their force
+ *      after the pairs' (the walls' section below).
  * The work is on the host because every step couples each contact to the
  * per-atom sums of all of its atoms' contacts and the penalties to triples
  * of atoms: contacts are visited in ascending (lower tag, higher tag), so
@@ -39,11 +42,13 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_wall_gran.h"
 #include "gran_mdr.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "pair_granular.h"
 #include "par.h"
+#include "region.h"
 
 /* the per-atom state a restart file keeps: these doubles of struct
  * mdr_atom, in this order, after the atom's tag */
@@ -65,6 +70,7 @@ static double *atom_val(struct mdr_atom *a, size_t k)
 
 struct mdr_fix {
     struct mdr_mat mat;
+    double eta, dtype;          /* damping mdr's eta_n0 and type (the walls must agree) */
     int hoff;                   /* the mdr block in the history row */
     struct mdr_atom *at;        /* by tag */
     int64_t cap;                /* tags 0 .. cap - 1 held */
@@ -72,6 +78,11 @@ struct mdr_fix {
     size_t restart_len;
     bigint builds;              /* the run's neighbor builds when Rlist was taken (-1: none) */
     int warned;                 /* the plastic-overlap warning was given */
+    /* the mdr walls' contact state: MH_N doubles per (tag, wall of the
+     * run); zeroed when the run's mdr walls change in number */
+    double *wallh;
+    int64_t wcap;               /* tags held */
+    int wall_n;                 /* walls held */
 };
 
 static void destroy(struct fix *f)
@@ -79,6 +90,7 @@ static void destroy(struct fix *f)
     struct mdr_fix *d = f->data;
     if (d) {
         free(d->at);
+        free(d->wallh);
         free(d->restart);
         free(d);
     }
@@ -116,7 +128,7 @@ static void init(struct gravel *g, struct fix *f)
     const struct pair *p = g->styles.pair;
     if (!p || strcmp(p->style->name, "granular"))
         gr_error(g, "fix granular/mdr: Must use pair granular with MDR model");
-    double mat[5];
+    double mat[7];
     int off = granular_mdr_model(g, p, mat);
     if (off < 0)
         gr_error(g, "fix granular/mdr: Must specify MDR normal model with pair granular");
@@ -124,6 +136,8 @@ static void init(struct gravel *g, struct fix *f)
         par_refuse(g, "pair granular's mdr normal model (fix granular/mdr keeps per-atom state "
                       "and contact penalties on one rank)");
     mdr_mat_set(&d->mat, mat[0], mat[1], mat[2], mat[3], mat[4]);
+    d->eta = mat[5];
+    d->dtype = mat[6];
     d->hoff = off;
     d->builds = -1;
     if (d->restart) { /* read_restart's state (atom_vals) */
@@ -254,6 +268,191 @@ static void penalties(struct gravel *g, struct mdr_fix *d, struct mdr_scene *s)
     free(part);
 }
 
+static void yield_warn(struct gravel *g, struct mdr_fix *d, int yield_new)
+{
+    if (yield_new && !d->warned) { /* LAMMPS's words, once */
+        gr_warn(g, "fix granular/mdr: The newly inserted particles have pre-existing overlaps "
+                   "that have caused immediate plastic deformation. This could lead to "
+                   "non-physical results in the MDR model, as it handles some aspects related "
+                   "to plastic deformation incrementally.");
+        d->warned = 1;
+    }
+}
+
+#define MDR_WALLS_MAX 64
+
+/* ---- the mdr walls (fix wall/gran/region granular mdr ...) ----
+ * LAMMPS's FixGranularMDR::update_fix_gran_wall and the walls' calls of
+ * calculate_forces (fix wall/gran/region's post_force), both done here on
+ * the host: each wall contact's mdr force goes to the mdr block of its
+ * history slot (the wall's per-atom state, fix_wall_gran.h), where the
+ * wall kernel (kernels/fix_wall_gran.cl) reads it and adds damping mdr,
+ * friction and rolling as for the pairs. Between this pre_force and the
+ * wall's post_force neither the atoms nor the region move, so the
+ * contacts found here are the kernel's. */
+struct mdr_wall {
+    struct fix *f;
+    int k;                      /* its index among the run's mdr walls */
+    struct wall_mdr w;
+    struct mdr_mat mat;
+    size_t stride;              /* per-atom REAL */
+    double *buf;                /* the wall's per-atom state, host copy */
+};
+
+/* The walls of this run, in fix order, their state read from the device;
+ * the checks of LAMMPS's setup_pre_force. Returns their count. */
+static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int cap)
+{
+    int nw = 0;
+    for (int k = 0; k < g->styles.nfix; k++) {
+        struct fix *wf = g->styles.fix[k];
+        struct wall_mdr w;
+        if (!wall_gran_mdr(wf, &w))
+            continue;
+        if (nw == cap)
+            gr_error(g, "fix granular/mdr: more than %d mdr walls", cap);
+        static const char *const what[] = {"Young's modulus", "Poisson's ratio",
+                                           "Yield stress", NULL, "Bulk response trigger",
+                                           "Damping coefficient", "Damping type"};
+        const double own[7] = {d->mat.E, d->mat.nu, d->mat.Y, d->mat.gamma, d->mat.psi_b,
+                               d->eta, d->dtype};
+        for (int q = 0; q < 7; q++) /* the surface energy may differ (the wall's own) */
+            if (what[q] && own[q] != w.par[q])
+                gr_error(g, "fix granular/mdr: %s in pair style, %g, does not agree with value "
+                            "%g in fix %s (wall/gran/region)", what[q], own[q], w.par[q], wf->id);
+        const struct region *r = w.region;
+        if (!r || strcmp(r->style->name, "plane"))
+            gr_error(g, "fix granular/mdr: fix %s (wall/gran/region) with the mdr model: region "
+                        "%s is a %s; gravel's mdr walls are plane regions only", wf->id,
+                     r ? r->id : "?", r ? r->style->name : "?");
+        struct mdr_wall *m = &mw[nw];
+        m->k = nw++;
+        m->f = wf;
+        m->w = w;
+        mdr_mat_set(&m->mat, w.par[0], w.par[1], w.par[2], w.par[3], w.par[4]);
+        m->stride = (size_t)(1 + (1 + w.hw) * w.slots);
+        m->buf = NULL;
+        if (!wf->peratom)
+            continue;
+        m->buf = gr_malloc(g, (g->atoms.n ? (size_t)g->atoms.n : 1) * m->stride * sizeof(double));
+        eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->stride, m->buf);
+        if (region_dynamic(r))
+            region_prematch(g, (struct region *)r);
+    }
+    if (nw != d->wall_n || d->wcap < d->cap) { /* the state by (tag, wall) */
+        const size_t row = (size_t)nw * MH_N;
+        double *n = gr_calloc(g, (size_t)(d->cap ? d->cap : 1) * (row ? row : 1), sizeof *n);
+        if (nw == d->wall_n && d->wallh)
+            memcpy(n, d->wallh, (size_t)d->wcap * row * sizeof *n);
+        free(d->wallh);
+        d->wallh = n;
+        d->wcap = d->cap;
+        d->wall_n = nw;
+    }
+    return nw;
+}
+
+/* A plane region's contact with atom x of reach cutoff (LAMMPS's
+ * RegPlane::surface_interior / surface_exterior in the region's static
+ * frame): 1 and the distance *r and the vector from the plane to the atom
+ * del, or 0. */
+static int plane_contact(const struct region *r, const double x[3], double cutoff, double *rr,
+                         double del[3])
+{
+    double y[3] = {x[0], x[1], x[2]};
+    if (r->moveflag)
+        for (int q = 0; q < 3; q++)
+            y[q] -= r->d[q];
+    if (r->rotateflag)
+        region_rotate(r, y, -sin(r->theta), cos(r->theta));
+    const double *p = r->p;
+    double dot = (y[0] - p[0]) * p[3] + (y[1] - p[1]) * p[4] + (y[2] - p[2]) * p[5];
+    const double sgn = r->interior ? 1.0 : -1.0;
+    dot = sgn * dot;
+    if (!(dot < cutoff && dot >= 0))
+        return 0;
+    *rr = dot;
+    for (int q = 0; q < 3; q++)
+        del[q] = sgn * dot * p[3 + q];
+    return 1;
+}
+
+/* Atom i's contact with wall m: its mdr state (d->wallh) and in *hk the
+ * kernel's part of its history slot (the slot bookkeeping of
+ * kernels/wall_region.cl region_slots for a plane's one wall id, both
+ * zeroed for a new contact), the distance and the plane-to-atom vector;
+ * NULL when none (the count reset, as the kernel would). */
+static double *wall_contact(const struct gravel *g, const struct mdr_fix *d,
+                            const struct mdr_wall *m, int i, double *rr, double del[3],
+                            double **hk)
+{
+    const struct atoms *A = &g->atoms;
+    if (!(A->mask[i] & m->f->groupbit) || !m->buf)
+        return NULL;
+    const double *x = A->x + 3 * i;
+    if (!region_match(m->w.region, x))
+        return NULL;
+    double *hist = m->buf + (size_t)i * m->stride;
+    if (!plane_contact(m->w.region, x, A->radius[i], rr, del)) {
+        hist[0] = 0;
+        return NULL;
+    }
+    double *sh = hist + 1 + m->w.slots;
+    double *hb = d->wallh + ((size_t)A->tag[i] * d->wall_n + m->k) * MH_N;
+    if ((int)hist[0] == 0 || (int)hist[1] != 0) { /* a new contact: zero history */
+        hist[0] = 1;
+        hist[1] = 0;
+        for (int q = 0; q < m->w.hw; q++)
+            sh[q] = 0;
+        for (int q = 0; q < MH_N; q++)
+            hb[q] = 0;
+    }
+    *hk = sh + m->w.hoff;
+    return hb;
+}
+
+/* update_fix_gran_wall: each wall contact's share of its atom's mean
+ * surface displacement increment */
+static void walls_mean_disp(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int nw)
+{
+    const struct atoms *A = &g->atoms;
+    for (int k = 0; k < nw; k++)
+        for (int i = 0; i < A->n; i++) {
+            double rr, del[3], *hk;
+            double *h = wall_contact(g, d, &mw[k], i, &rr, del, &hk);
+            struct mdr_atom *a = &d->at[A->tag[i]];
+            if (h && a->Acon0 != 0.0)
+                a->ddelta_bar += 1.0 * h[MH_AC_0] / a->Acon0 * (A->radius[i] - rr - h[MH_DELTA_0]);
+        }
+}
+
+/* the walls' forces (fix wall/gran/region's post_force), after the pairs' */
+static void walls_force(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int nw,
+                        int update, int *yield_new)
+{
+    const struct atoms *A = &g->atoms;
+    for (int k = 0; k < nw; k++) {
+        for (int i = 0; i < A->n; i++) {
+            double rr, del[3], *hk;
+            double *h = wall_contact(g, d, &mw[k], i, &rr, del, &hk);
+            if (!h)
+                continue;
+            /* GranularModel's contact of a region wall: r from the contact vector */
+            const double r = sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+            const double rinv = 1.0 / r;
+            const double nrm[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+            mdr_wall_force(&mw[k].mat, h, A->radius[i] - r, &d->at[A->tag[i]], A->radius[i],
+                           nrm, A->rmass[i], update, yield_new);
+            hk[MHW_FN] = h[MH_FN]; /* the kernel's part (kernels/fix_wall_gran.cl) */
+            hk[MHW_DAMP_SCALE] = h[MH_DAMP_SCALE];
+        }
+        if (mw[k].buf)
+            eng_write_reals(g, mw[k].f->peratom, (size_t)A->n * mw[k].stride, mw[k].buf);
+        free(mw[k].buf);
+        mw[k].buf = NULL;
+    }
+}
+
 static void pre_force(struct gravel *g, struct fix *f)
 {
     struct mdr_fix *d = f->data;
@@ -300,13 +499,21 @@ static void pre_force(struct gravel *g, struct fix *f)
     if (regrow)
         nbr_radii_changed(g);
 
-    /* the contacts and their history rows */
+    /* the contacts and their history rows; the mdr walls' state */
+    struct mdr_wall mw[MDR_WALLS_MAX];
+    const int nw = walls_begin(g, d, mw, MDR_WALLS_MAX);
+    int yield_new = 0;
     const struct nbr_list *l = nbr_list(g);
     struct mdr_scene s = {0};
     s.nc = l->ncontact;
     s.hw = g->eng->hist_n;
-    if (s.nc == 0)
+    if (s.nc == 0) {
+        if (!setup)
+            walls_mean_disp(g, d, mw, nw);
+        walls_force(g, d, mw, nw, !setup, &yield_new);
+        yield_warn(g, d, yield_new);
         return;
+    }
     s.ci = gr_malloc(g, (size_t)s.nc * sizeof(int));
     s.cj = gr_malloc(g, (size_t)s.nc * sizeof(int));
     s.ord = gr_malloc(g, (size_t)s.nc * sizeof(int));
@@ -342,11 +549,11 @@ static void pre_force(struct gravel *g, struct fix *f)
             if (a1->Acon0 != 0.0)
                 a1->ddelta_bar += hm[MH_AC_1] / a1->Acon0 * (ds[1] - hm[MH_DELTA_1]);
         }
+        walls_mean_disp(g, d, mw, nw);
     }
 
     /* 4. the forces */
     const unsigned frozen = fix_frozen_groupbit(g);
-    int yield_new = 0;
     for (int m = 0; m < s.nc; m++) {
         const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
         double *h = s.hist + (size_t)c * s.hw, dd[3];
@@ -367,13 +574,8 @@ static void pre_force(struct gravel *g, struct fix *f)
         mdr_pair_force(&d->mat, h + d->hoff, radsum - r, a2, R2, nrm, meff, !setup,
                        &yield_new);
     }
-    if (yield_new && !d->warned) { /* LAMMPS's words, once */
-        gr_warn(g, "fix granular/mdr: The newly inserted particles have pre-existing overlaps "
-                   "that have caused immediate plastic deformation. This could lead to "
-                   "non-physical results in the MDR model, as it handles some aspects related "
-                   "to plastic deformation incrementally.");
-        d->warned = 1;
-    }
+    walls_force(g, d, mw, nw, !setup, &yield_new);
+    yield_warn(g, d, yield_new);
     eng_write_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
     free(s.ci);
     free(s.cj);

@@ -97,6 +97,8 @@ struct wall {
     int rs_pending, rs_n;
     char rs_style[32];
     double rs_prev[WALL_REGION_MAXNODE][4];
+    int mdr;                    /* the granular mdr normal model (fix granular/mdr's walls) */
+    double mdr_par[7];          /* its E nu Y gamma psi_b eta_n0 and damping mdr type */
 };
 
 /* the kernels, by source, model and jkr (kernels/wall_gran_kernels.h) */
@@ -211,6 +213,11 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     w->nparam = GRW_NPARAM;
     granular_pack(&o, w->param);
     int off = 0;
+    w->mdr = o.nm == GR_N_MDR;
+    if (w->mdr) {
+        const double par[7] = {o.E, o.nu, o.Y, o.gamma, o.psi_b, o.damp, o.dtype};
+        memcpy(w->mdr_par, par, sizeof par);
+    }
     int tang = o.tm != GR_T_NOHISTORY;
     w->param[GRW_TANG] = tang;
     off += tang ? 3 : 0;
@@ -221,6 +228,10 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
     /* jkr: the touch flag, last (as pair granular's row; LAMMPS keeps it first) */
     w->param[GRW_HTOUCH] = o.nm == GR_N_JKR ? off++ : -1;
     w->param[GRW_HDYN] = o.tm == GR_T_HISTORY_STATIC || o.tm == GR_T_MINDLIN_STATIC ? off++ : -1;
+    /* mdr: the step's force and damping scale, last (the tangential history
+     * is at the row's start); the contact's mdr state is fix granular/mdr's
+     * (styles/fix/fix_granular_mdr.c) */
+    w->param[GRW_HMDR] = o.nm == GR_N_MDR ? (off += MHW_N) - MHW_N : -1;
     w->param[GRW_JKR2021] = g->opt.lammps2021;
     w->param[GRW_WIDTH] = off;
     w->history = off;
@@ -231,6 +242,9 @@ static int parse_granular(struct gravel *g, struct wall *w, int argc, char **arg
  * refuses models acting beyond contact there) */
 static void own_meshes(struct gravel *g, struct fix *f, struct wall *w, int n)
 {
+    if (w->mdr)
+        gr_error(g, "MDR model currently only supports fix wall/gran/region, not fix "
+                    "surface/global");
     if (w->model == WG_GRANULAR && (int)w->param[GR_NMODEL] == GR_N_JKR)
         gr_error(g, "Granular models that extend beyond contact (e.g. JKR) not currently "
                     "supported (fix surface/global)");
@@ -343,6 +357,8 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
     }
     ws = argv[i];
     int is_region = !strcmp(f->style->name, "wall/gran/region");
+    if (w.mdr && !is_region) /* LAMMPS's FixGranularMDR::setup_pre_force */
+        gr_error(g, "MDR model currently only supports fix wall/gran/region, not fix wall/gran");
     if (is_region != !strcmp(ws, "region"))
         gr_error(g, is_region ? "fix wall/gran/region expects 'region ID' after the "
                                 "coefficients, got '%.64s'"
@@ -517,6 +533,21 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
         geom.hi = hi;
     }
     return geom;
+}
+
+int wall_gran_mdr(const struct fix *f, struct wall_mdr *out)
+{
+    if (strcmp(f->style->name, "wall/gran/region") && strcmp(f->style->name, "wall/gran"))
+        return 0;
+    const struct wall *w = f->data;
+    if (!w || !w->mdr || w->style != W_REGION)
+        return 0;
+    memcpy(out->par, w->mdr_par, sizeof out->par);
+    out->region = w->region;
+    out->hoff = (int)w->param[GRW_HMDR];
+    out->hw = w->history;
+    out->slots = w->wreg.slots;
+    return 1;
 }
 
 static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }

@@ -17,4 +17,20 @@ void wall_gran_create_own(struct gravel *g, struct fix *f, int argc, char **argv
 /* The meshes of such a wall. */
 struct mesh_walls *wall_gran_meshes(struct fix *f);
 
+/* An mdr wall (fix wall/gran/region granular mdr ...) as fix granular/mdr
+ * sees it: its material (E nu Y gamma psi_b eta_n0 and damping mdr's
+ * type), its region (set by the wall's init; NULL before), the offset of
+ * the mdr block in a contact's history (hoff, kernels/param_layout.h enum
+ * mdr_hist), the history REAL per contact (hw) and the contact slots per
+ * atom: the wall's per-atom state is, per atom, the contact count, `slots`
+ * wall ids, then hw REAL per slot (kernels/wall_region.cl region_slots). */
+struct region;
+struct wall_mdr {
+    double par[7];
+    struct region *region;
+    int hoff, hw, slots;
+};
+/* 1 and *out when f is such a wall, else 0. */
+int wall_gran_mdr(const struct fix *f, struct wall_mdr *out);
+
 #endif

@@ -190,11 +190,129 @@ static double adhesive(const struct mdr_mat *m, double de, double A, double Ainv
     return F;
 }
 
+/* One side of a contact (LAMMPS's loop body over contactSide): the side's
+ * overlap dl of atom at (apparent radius R), its history slots s of h.
+ * Gathers the atom's sums with update; returns the side's force (F_MDR +
+ * F_BULK, no weight), adds its weighted area to *Acsum and its damping
+ * radius to *a_damp. */
+static double mdr_side_force(const struct mdr_mat *m, double *h, int s, double dl,
+                             struct mdr_atom *at, double R, const double n[3], double wij,
+                             double dmax_before, int update, int *yield_new, double *Acsum,
+                             double *a_damp)
+{
+    const double Eeff = m->Eeff, Eeffinv = 1.0 / Eeff;
+    const double Ro = at->Ro;
+    const double ddelta = dl - h[MH_DELTA_0 + s];
+    if (update)
+        h[MH_DELTA_0 + s] = dl;
+    const double deltao = dl - (R - Ro);
+    const double ddeltao = deltao - h[MH_DELTAO_0 + s];
+    if (update)
+        h[MH_DELTAO_0 + s] = deltao;
+    double dd_mdr, dd_bulk;
+    if (at->psi < m->psi_b) { /* the bulk response takes the mean surface motion */
+        dd_mdr = fmin(ddelta - at->ddelta_bar, dl - h[MH_DELTA_MDR_0 + s]);
+        dd_bulk = at->ddelta_bar;
+    } else {
+        dd_bulk = 0.0;
+        dd_mdr = ddelta;
+    }
+    const double d_mdr = h[MH_DELTA_MDR_0 + s] + dd_mdr;
+    if (update)
+        h[MH_DELTA_MDR_0 + s] = d_mdr;
+    const double d_bulk = fmax(0.0, h[MH_DELTA_BULK_0 + s] + dd_bulk);
+    if (update)
+        h[MH_DELTA_BULK_0 + s] = d_bulk;
+    if (d_mdr > h[MH_DELTAMAX_MDR_0 + s])
+        h[MH_DELTAMAX_MDR_0 + s] = d_mdr;
+    const double dm = h[MH_DELTAMAX_MDR_0 + s];
+    const double pY = m->Y * (1.75 * exp(-4.4 * dm / R) + 1.0); /* mean yield pressure */
+    if (h[MH_YFLAG_0 + s] == 0.0 && d_mdr >= dm) {
+        const double phertz = 4 * Eeff * sqrt(d_mdr) / (3 * PI_ * sqrt(R));
+        if (!update && dmax_before == 0.0 && phertz > pY)
+            *yield_new = 1;
+        if (update && phertz > pY) {
+            h[MH_YFLAG_0 + s] = 1.0;
+            h[MH_DELTAY_0 + s] = d_mdr;
+            h[MH_CA_0 + s] = PI_ * (sq(d_mdr) - d_mdr * R);
+        }
+    }
+    const double cA = h[MH_CA_0 + s];
+    double A, Ainv, B, de, amax;
+    if (h[MH_YFLAG_0 + s] == 0.0) { /* elastic: the sphere itself */
+        A = 4.0 * R;
+        Ainv = 1.0 / A;
+        B = 2.0 * R;
+        de = d_mdr;
+        amax = sqrt(dm * R);
+    } else { /* plastic: the elliptical indenter of the yielded cap */
+        amax = sqrt(2.0 * dm * R - sq(dm) + cA * PIINV);
+        const double amaxsq = amax * amax;
+        A = 4.0 * pY * Eeffinv * amax;
+        Ainv = 1.0 / A;
+        B = 2.0 * amax;
+        const double demax = A * 0.5;
+        double Fmax = Eeff * (A * B * 0.25) * acos(1 - 2 * demax * Ainv);
+        Fmax -= (2 - 4 * demax * Ainv) * sqrt(demax * Ainv - sq(demax * Ainv));
+        const double zR = R - (dm - demax); /* depth of the particle centre */
+        double dR = 2 * amaxsq * (-1 + m->nu) -
+                    (-1 + 2 * m->nu) * zR * (-zR + sqrt(amaxsq + sq(zR)));
+        dR *= Fmax / (2.0 * PI_ * amaxsq * m->G * sqrt(amaxsq + sq(zR)));
+        de = (d_mdr - dm + demax + dR) / (1 + dR / demax);
+        if (update)
+            h[MH_DELTAP_0 + s] = dm - (demax + dR);
+    }
+    const double a_na = de >= 0.0 ? B * sqrt(A - de) * sqrt(de) * Ainv : 0.0;
+    double aAdh = h[MH_AADH_0 + s];
+    if (aAdh > A_FAC * amax)
+        aAdh = A_FAC * amax;
+    double F_mdr;
+    if (m->gamma <= 0.0) {
+        F_mdr = de <= 0.0 ? 0.0 : f_na(de, Ainv, Eeff, A, B);
+        if (update)
+            h[MH_AADH_0 + s] = a_na;
+    } else {
+        F_mdr = adhesive(m, de, A, Ainv, B, a_na, d_mdr == dm, &aAdh, &h[MH_AADH_0 + s], update);
+    }
+    double Ac = h[MH_YFLAG_0 + s] == 0.0 ? PI_ * dl * R : PI_ * (2.0 * dl * R - sq(dl)) + cA;
+    if (Ac < 0.0)
+        Ac = 0.0;
+    if (update) {
+        at->Atot_sum += wij * (Ac - 2.0 * PI_ * R * (dm + d_bulk));
+        at->Acon1 += wij * Ac;
+    }
+    *Acsum += wij * Ac;
+    *a_damp += m->gamma > 0.0 ? aAdh : a_na;
+    const double F_bulk = d_bulk <= 0.0 ? 0.0
+                                        : (1.0 / at->Vgeo) * at->Acon0 * d_bulk * m->kappa * Ac;
+    if (update) {
+        h[MH_AC_0 + s] = wij * Ac;
+        at->Vcaps += PI_ * THIRD * sq(dl) * (3.0 * R - dl);
+    }
+    /* the contact's share of the atom's mean strain: f . b / (3 kappa V) */
+    const double Fn = wij * (F_mdr + F_bulk);
+    const double fx = Fn * n[0], fy = Fn * n[1], fz = Fn * n[2];
+    const double bx = -(Ro - deltao) * n[0], by = -(Ro - deltao) * n[1],
+                 bz = -(Ro - deltao) * n[2];
+    const double eps_c = (fx * bx + fy * by + fz * bz) / (3 * m->kappa * at->Velas);
+    if (update)
+        at->eps_bar += eps_c;
+    if (update && d_mdr == dm && h[MH_YFLAG_0 + s] > 0.0 && F_mdr > 0.0) {
+        const double Vo = FOURTHIRDS * PI_ * cube(Ro);
+        at->dRnum -= Vo * (eps_c - h[MH_EPS_BAR_0 + s]);
+        at->dRnum -= wij * PI_ * ddeltao * (2 * deltao * Ro - sq(deltao) + sq(R) - sq(Ro));
+        at->dRden += wij * 2.0 * PI_ * R * (deltao + R - Ro);
+    }
+    if (update)
+        h[MH_EPS_BAR_0 + s] = eps_c;
+    return F_mdr + F_bulk;
+}
+
 double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct mdr_atom *a[2],
                       const double R2[2], const double n[3], double meff, int update,
                       int *yield_new)
 {
-    const double Eeff = m->Eeff, Eeffinv = 1.0 / Eeff;
+    const double Eeff = m->Eeff;
     const double dmax_before = h[MH_DELTA_MAX];
     /* deltamax follows the overlap even in setup (LAMMPS: an atom created
      * with an overlap) */
@@ -204,119 +322,34 @@ double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct m
     double ds[2];
     mdr_side_deltas(dmax, h[MH_DELTAP_0], h[MH_DELTAP_1], delta, R2[0], R2[1], 1, ds);
     const double wij = fmax(1.0 - h[MH_PENALTY], 0.0);
-    double Fs[2] = {0.0, 0.0}, Acsum = 0.0, a_damp = 0.0;
-    for (int s = 0; s < 2; s++) {
-        struct mdr_atom *at = a[s];
-        const double R = R2[s], Ro = at->Ro, dl = ds[s];
-        const double ddelta = dl - h[MH_DELTA_0 + s];
-        if (update)
-            h[MH_DELTA_0 + s] = dl;
-        const double deltao = dl - (R - Ro);
-        const double ddeltao = deltao - h[MH_DELTAO_0 + s];
-        if (update)
-            h[MH_DELTAO_0 + s] = deltao;
-        double dd_mdr, dd_bulk;
-        if (at->psi < m->psi_b) { /* the bulk response takes the mean surface motion */
-            dd_mdr = fmin(ddelta - at->ddelta_bar, dl - h[MH_DELTA_MDR_0 + s]);
-            dd_bulk = at->ddelta_bar;
-        } else {
-            dd_bulk = 0.0;
-            dd_mdr = ddelta;
-        }
-        const double d_mdr = h[MH_DELTA_MDR_0 + s] + dd_mdr;
-        if (update)
-            h[MH_DELTA_MDR_0 + s] = d_mdr;
-        const double d_bulk = fmax(0.0, h[MH_DELTA_BULK_0 + s] + dd_bulk);
-        if (update)
-            h[MH_DELTA_BULK_0 + s] = d_bulk;
-        if (d_mdr > h[MH_DELTAMAX_MDR_0 + s])
-            h[MH_DELTAMAX_MDR_0 + s] = d_mdr;
-        const double dm = h[MH_DELTAMAX_MDR_0 + s];
-        const double pY = m->Y * (1.75 * exp(-4.4 * dm / R) + 1.0); /* mean yield pressure */
-        if (h[MH_YFLAG_0 + s] == 0.0 && d_mdr >= dm) {
-            const double phertz = 4 * Eeff * sqrt(d_mdr) / (3 * PI_ * sqrt(R));
-            if (!update && dmax_before == 0.0 && phertz > pY)
-                *yield_new = 1;
-            if (update && phertz > pY) {
-                h[MH_YFLAG_0 + s] = 1.0;
-                h[MH_DELTAY_0 + s] = d_mdr;
-                h[MH_CA_0 + s] = PI_ * (sq(d_mdr) - d_mdr * R);
-            }
-        }
-        const double cA = h[MH_CA_0 + s];
-        double A, Ainv, B, de, amax;
-        if (h[MH_YFLAG_0 + s] == 0.0) { /* elastic: the sphere itself */
-            A = 4.0 * R;
-            Ainv = 1.0 / A;
-            B = 2.0 * R;
-            de = d_mdr;
-            amax = sqrt(dm * R);
-        } else { /* plastic: the elliptical indenter of the yielded cap */
-            amax = sqrt(2.0 * dm * R - sq(dm) + cA * PIINV);
-            const double amaxsq = amax * amax;
-            A = 4.0 * pY * Eeffinv * amax;
-            Ainv = 1.0 / A;
-            B = 2.0 * amax;
-            const double demax = A * 0.5;
-            double Fmax = Eeff * (A * B * 0.25) * acos(1 - 2 * demax * Ainv);
-            Fmax -= (2 - 4 * demax * Ainv) * sqrt(demax * Ainv - sq(demax * Ainv));
-            const double zR = R - (dm - demax); /* depth of the particle centre */
-            double dR = 2 * amaxsq * (-1 + m->nu) -
-                        (-1 + 2 * m->nu) * zR * (-zR + sqrt(amaxsq + sq(zR)));
-            dR *= Fmax / (2.0 * PI_ * amaxsq * m->G * sqrt(amaxsq + sq(zR)));
-            de = (d_mdr - dm + demax + dR) / (1 + dR / demax);
-            if (update)
-                h[MH_DELTAP_0 + s] = dm - (demax + dR);
-        }
-        const double a_na = de >= 0.0 ? B * sqrt(A - de) * sqrt(de) * Ainv : 0.0;
-        double aAdh = h[MH_AADH_0 + s];
-        if (aAdh > A_FAC * amax)
-            aAdh = A_FAC * amax;
-        double F_mdr;
-        if (m->gamma <= 0.0) {
-            F_mdr = de <= 0.0 ? 0.0 : f_na(de, Ainv, Eeff, A, B);
-            if (update)
-                h[MH_AADH_0 + s] = a_na;
-        } else {
-            F_mdr = adhesive(m, de, A, Ainv, B, a_na, d_mdr == dm, &aAdh, &h[MH_AADH_0 + s],
-                             update);
-        }
-        double Ac = h[MH_YFLAG_0 + s] == 0.0 ? PI_ * dl * R
-                                              : PI_ * (2.0 * dl * R - sq(dl)) + cA;
-        if (Ac < 0.0)
-            Ac = 0.0;
-        if (update) {
-            at->Atot_sum += wij * (Ac - 2.0 * PI_ * R * (dm + d_bulk));
-            at->Acon1 += wij * Ac;
-        }
-        Acsum += wij * Ac;
-        a_damp += m->gamma > 0.0 ? aAdh : a_na;
-        const double F_bulk = d_bulk <= 0.0 ? 0.0
-                                            : (1.0 / at->Vgeo) * at->Acon0 * d_bulk * m->kappa * Ac;
-        Fs[s] = F_mdr + F_bulk;
-        if (update) {
-            h[MH_AC_0 + s] = wij * Ac;
-            at->Vcaps += PI_ * THIRD * sq(dl) * (3.0 * R - dl);
-        }
-        /* the contact's share of the atom's mean strain: f . b / (3 kappa V) */
-        const double Fn = wij * (F_mdr + F_bulk);
-        const double fx = Fn * n[0], fy = Fn * n[1], fz = Fn * n[2];
-        const double bx = -(Ro - deltao) * n[0], by = -(Ro - deltao) * n[1],
-                     bz = -(Ro - deltao) * n[2];
-        const double eps_c = (fx * bx + fy * by + fz * bz) / (3 * m->kappa * at->Velas);
-        if (update)
-            at->eps_bar += eps_c;
-        if (update && d_mdr == dm && h[MH_YFLAG_0 + s] > 0.0 && F_mdr > 0.0) {
-            const double Vo = FOURTHIRDS * PI_ * cube(Ro);
-            at->dRnum -= Vo * (eps_c - h[MH_EPS_BAR_0 + s]);
-            at->dRnum -= wij * PI_ * ddeltao * (2 * deltao * Ro - sq(deltao) + sq(R) - sq(Ro));
-            at->dRden += wij * 2.0 * PI_ * R * (deltao + R - Ro);
-        }
-        if (update)
-            h[MH_EPS_BAR_0 + s] = eps_c;
-    }
+    double Fs[2], Acsum = 0.0, a_damp = 0.0;
+    for (int s = 0; s < 2; s++)
+        Fs[s] = mdr_side_force(m, h, s, ds[s], a[s], R2[s], n, wij, dmax_before, update,
+                               yield_new, &Acsum, &a_damp);
     const double damp_scale = sqrt(meff * 2.0 * Eeff * a_damp);
     const double F = wij * (Fs[0] + Fs[1]) * 0.5;
+    if (update)
+        h[MH_DAMP_SCALE] = a_damp <= 0.0 ? 0.0 : damp_scale;
+    h[MH_FN] = F;
+    h[MH_AC_AVG] = Acsum * 0.5;
+    return F;
+}
+
+double mdr_wall_force(const struct mdr_mat *m, double *h, double delta, struct mdr_atom *a,
+                      double R, const double n[3], double meff, int update, int *yield_new)
+{
+    const double dmax_before = h[MH_DELTA_MAX];
+    if (delta >= h[MH_DELTA_MAX])
+        h[MH_DELTA_MAX] = delta;
+    const double wij = fmax(1.0 - h[MH_PENALTY], 0.0); /* no penalty on a wall: 1 */
+    double Acsum = 0.0, a_damp = 0.0;
+    const double F0 = mdr_side_force(m, h, 0, delta, a, R, n, wij, dmax_before, update,
+                                     yield_new, &Acsum, &a_damp);
+    a_damp = a_damp / 2.0;
+    const double damp_scale = sqrt(meff * 2.0 * (0.5 * m->Eeff) * a_damp);
+    /* the wall force magnifier of the side's (stored) overlap from the initial sphere */
+    const double wfm = exp(10.7 * h[MH_DELTAO_0] / a->Ro - 10.0) + 1.0;
+    const double F = wij * F0 * wfm;
     if (update)
         h[MH_DAMP_SCALE] = a_damp <= 0.0 ? 0.0 : damp_scale;
     h[MH_FN] = F;

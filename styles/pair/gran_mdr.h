@@ -77,6 +77,18 @@ double mdr_pair_force(const struct mdr_mat *m, double *h, double delta, struct m
                       const double R[2], const double n[3], double meff, int update,
                       int *yield_new);
 
+/* One wall contact's normal force at overlap delta (calculate_forces,
+ * contact_type WALLREGION: side 0 only, the whole overlap the atom's, no
+ * penalty): h the mdr block of the wall contact's history, a and R the
+ * atom and its apparent radius, n the unit normal from the wall to the
+ * atom, meff the atom's mass. The side's force is magnified by
+ * exp(10.7 deltao / Ro - 10) + 1 (deltao: the stored overlap from the
+ * initial sphere) and the damping scale is sqrt(meff E* a / 2) (half the
+ * side's damping radius, half the plane strain modulus). Stores and
+ * returns as mdr_pair_force. */
+double mdr_wall_force(const struct mdr_mat *m, double *h, double delta, struct mdr_atom *a,
+                      double R, const double n[3], double meff, int update, int *yield_new);
+
 /* The penalty increment of a contact screened by a central particle at
  * angle alpha (radians) between the directions to the two others
  * (Zunker et al. 2025): 1 / (1 + exp(-50 (alpha / pi - 1/2))). */

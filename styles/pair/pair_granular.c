@@ -230,22 +230,14 @@ static int mdr_damping(struct gravel *g, struct gr_one *o, char **argv, int argc
 }
 
 /* The mdr normal model and damping mdr go only together (the damping
- * models' init in LAMMPS); pair granular only: LAMMPS's walls with mdr
- * (fix wall/gran/region, its wall force magnifier and the walls' share of
- * the per-atom bookkeeping) are not in gravel yet, and fix wall/gran
- * LAMMPS refuses. */
-static void mdr_pairing(struct gravel *g, const struct gr_one *o, int allow_cutoff,
-                        const char *who)
+ * models' init in LAMMPS). Walls: fix wall/gran/region takes mdr, fix
+ * wall/gran refuses it (styles/fix/fix_wall_gran.c). */
+static void mdr_pairing(struct gravel *g, const struct gr_one *o, const char *who)
 {
     if (o->nm == GR_N_MDR && o->dm != GR_D_MDR)
         gr_error(g, "%s: Only damping mdr may be used with the mdr normal model", who);
     if (o->dm == GR_D_MDR && o->nm != GR_N_MDR)
         gr_error(g, "%s: Damping mdr can only be used with mdr normal model", who);
-    if (o->nm == GR_N_MDR && !allow_cutoff)
-        gr_error(g, "%s: normal model 'mdr' is supported by gravel for pair granular only, "
-                    "not on walls (LAMMPS's fix wall/gran/region mdr walls, with their wall "
-                    "force magnifier, are not in gravel yet; LAMMPS refuses fix wall/gran: "
-                    "doc/styles/pair_granular_normal.md)", who);
 }
 
 double granular_coeff_restitution(double e, int nm)
@@ -477,7 +469,7 @@ int granular_parse(struct gravel *g, struct gr_one *po, int argc, char **argv,
     }
     if (o.nm < 0 || o.tm < 0)
         gr_error(g, "%s: must specify normal or tangential contact model", who);
-    mdr_pairing(g, &o, allow_cutoff, who);
+    mdr_pairing(g, &o, who);
     check_ranges(g, &o, kt_null, who);
     o.e = o.damp;
     if (o.dm == GR_D_TSUJI)
@@ -967,7 +959,7 @@ static void describe(const struct pair *p, struct pair_caps *c)
         pair_caps_define(c, "GR_SYNC_USED", NULL);
 }
 
-int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[5])
+int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[7])
 {
     const struct gr_tab *t = p->data;
     const struct gr_one *m = NULL;
@@ -998,6 +990,8 @@ int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[5])
     mat[2] = m->Y;
     mat[3] = m->gamma;
     mat[4] = m->psi_b;
+    mat[5] = m->damp;
+    mat[6] = m->dtype;
     return uses(p).h_mdr;
 }
 

@@ -56,8 +56,8 @@ struct pair;
 /* The mdr model of pair granular p (fix granular/mdr, LAMMPS's
  * setup_pre_force checks): -1 when no type pair uses mdr; else every type
  * pair must be that one model (errors with LAMMPS's words otherwise), mat
- * gets E, nu, Y, gamma, psi_b and the return is the offset of the mdr block
+ * gets E, nu, Y, gamma, psi_b, damping mdr's eta_n0 and type, and the return is the offset of the mdr block
  * in the history row (kernels/param_layout.h, enum mdr_hist). */
-int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[5]);
+int granular_mdr_model(struct gravel *g, const struct pair *p, double mat[7]);
 
 #endif

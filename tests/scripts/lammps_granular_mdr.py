@@ -6,9 +6,17 @@ with the per-atom bookkeeping of its fix granular/mdr
 
 - check_gravel: each of LAMMPS's argument errors (coeffs_to_local, the
   damping models' init) comes first, with LAMMPS's words, naming the script
-  line; mdr on a wall is refused (pair granular only); two different mdr
-  models in one pair style are refused as LAMMPS's fix refuses them; a
-  valid line creates fix MDR (granular/mdr) and runs.
+  line; mdr on fix wall/gran is refused (LAMMPS's fix granular/mdr words),
+  a wall/gran/region mdr wall whose material differs from the pair's is
+  refused as LAMMPS refuses it, and one on a region not a plane; two
+  different mdr models in one pair style are refused as LAMMPS's fix
+  refuses them; a valid line creates fix MDR (granular/mdr) and runs.
+- check_walls: a sphere against a plane region wall (fix wall/gran/region
+  granular mdr) against the reference's WallContact, stepped in LAMMPS's
+  order: elastic, plastic, damped (types 1 and 2), adhesive wall (the
+  wall's own surface energy), a sphere resting on the wall under gravity
+  (bulk response off) and a moving plane that presses it: the height,
+  velocity and apparent radius every 500 steps.
 - check_collisions: gravel against the reference (tests/reference/mdr/mdr_model.py,
   an independent Python statement of the model and its bookkeeping for two
   spheres, stepped here in LAMMPS's velocity-Verlet order): free head-on
@@ -30,9 +38,9 @@ with the per-atom bookkeeping of its fix granular/mdr
   per-atom state and the contact history exactly (16 digits).
 - check_reference: the reference's own physics (Hertz limit, yield onset,
   plastic unloading, energy balance, the bookkeeping's effect).
-No LAMMPS log numbers: LAMMPS's mdr examples (in.triaxial.compaction.12,
-in.tableting.200) need mdr walls on regions (fix wall/gran/region), which
-gravel does not have yet."""
+- check_triaxial: LAMMPS's in.triaxial.compaction.12 (six moving plane
+  walls; tests/reference/mdr, the deck's edits named there) against the
+  thermo of LAMMPS 4 Feb 2025's log of it, every sampled row to 1e-7."""
 import math
 import os
 import subprocess
@@ -52,6 +60,7 @@ create_box 1 box
 pair_style granular
 """
 OK = "mdr 1e9 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0 0.5"
+ONE = "create_atoms 1 single 0 0 0\nset atom 1 diameter 1 density 1000\n"
 # (name, command, the error it must give): LAMMPS's checks, then gravel's refusals
 CASES = (
     ("E", "pair_coeff * * mdr 0 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1 0 0.5",
@@ -75,9 +84,16 @@ CASES = (
     ("damping_without", "pair_coeff * * hertz/material 1e9 0.2 0.3 damping mdr 1 tangential "
      "linear_history 1 0 0.5", "Damping mdr can only be used with mdr normal model"),
     ("refused_wall", "fix w all wall/gran granular " + OK + " zplane 0 NULL",
-     "normal model 'mdr' is supported by gravel for pair granular only"),
-    ("refused_region_wall", "region r plane 0 0 -3 0 0 1\nfix w all wall/gran/region granular " +
-     OK + " region r", "normal model 'mdr' is supported by gravel for pair granular only"),
+     "MDR model currently only supports fix wall/gran/region, not fix wall/gran"),
+    ("wall_E", "pair_coeff * * " + OK + "\nregion r plane 0 0 -3 0 0 1\nfix w all "
+     "wall/gran/region granular " + OK.replace("1e9", "2e9") + " region r\n" + ONE + "run 0",
+     "Young's modulus in pair style, 1e+09, does not agree with value 2e+09 in fix w"),
+    ("wall_psi_b", "pair_coeff * * " + OK + "\nregion r plane 0 0 -3 0 0 1\nfix w all "
+     "wall/gran/region granular " + OK.replace(" 0.5 0.2", " 0.6 0.2") + " region r\n" + ONE +
+     "run 0", "Bulk response trigger in pair style, 0.5, does not agree with value 0.6"),
+    ("wall_not_plane", "pair_coeff * * " + OK + "\nregion r block -3 3 -3 3 -3 3\nfix w all "
+     "wall/gran/region granular " + OK + " region r\n" + ONE + "run 0",
+     "gravel's mdr walls are plane regions only"),
 )
 TWO_MODELS = HEAD.replace("create_box 1", "create_box 2") + """pair_coeff 1 1 OKA
 pair_coeff 2 2 OKB
@@ -317,6 +333,144 @@ def check_collisions():
     return bad
 
 
+WALL_DECK = """units si
+atom_style sphere
+boundary f f f
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+create_atoms 1 single 0 0 {z0!r}
+set atom 1 diameter {d!r} density {rho!r}
+pair_style granular
+pair_coeff * * mdr {E!r} {nu!r} {Y!r} 0 {psi_b!r} {eta!r} damping mdr {dtype} &
+  tangential linear_history 1.4e8 0 0.5
+variable zw equal {vw!r}*elapsed*dt
+region floor plane 0 0 0 0 0 1 side in move NULL NULL v_zw
+fix w all wall/gran/region granular mdr {E!r} {nu!r} {Y!r} {gw!r} {psi_b!r} {eta!r} &
+  damping mdr {dtype} tangential linear_history 1.4e8 0 0.5 region floor
+set atom 1 vz {v0!r}
+fix 1 all nve/sphere
+{grav}
+timestep {dt!r}
+variable z equal z[1]
+variable vz equal vz[1]
+variable r equal radius[1]
+thermo_style custom step v_z v_vz v_r
+thermo_modify format float %.17g
+thermo {every}
+run {steps}
+"""
+
+
+def reference_wall(m, R, rho, z0, v0, g, vw, dt, nsteps, every):
+    """The reference sphere against the plane z = vw t (velocity Verlet with
+    nve/sphere, gravity g along -z, fix granular/mdr's pre_force, the wall's
+    force): {step: [z, vz, R]}"""
+    a = mm.Atom(1, R)
+    mass = rho * 4 / 3 * math.pi * R ** 3
+    c = mm.WallContact(m, a)
+    z, v, f = z0, v0, -mass * g
+    out = {0: [z, v, a.R]}
+    for n in range(1, nsteps + 1):
+        v += 0.5 * dt * f / mass
+        z += dt * v
+        a.update(m.psi_b)
+        a.ddelta_bar = 0.0
+        a.zero_sums()
+        zw = vw * n * dt
+        delta = a.R - (z - zw)
+        if 0 < delta and z >= zw:
+            c.mean_surf_disp(delta)
+            fw, _ = c.force(delta, v - vw, mass)
+        else:
+            c = mm.WallContact(m, a)
+            fw = 0.0
+        f = fw - mass * g
+        v += 0.5 * dt * f / mass
+        if n % every == 0:
+            out[n] = [z, v, a.R]
+    return out
+
+
+# (name, E, nu, Y, gamma of the wall, psi_b, eta, dtype, v0, gravity, wall speed, steps)
+WALLS = (
+    ("elastic", 1e9, 0.3, 1e12, 0.0, 0.5, 0.0, 1, -5.0, 0.0, 0.0, 8000),
+    ("plastic", 1e9, 0.3, 50e6, 0.0, 0.5, 0.0, 1, -20.0, 0.0, 0.0, 8000),
+    ("plastic_damped", 1e9, 0.3, 50e6, 0.0, 0.5, 0.2, 1, -40.0, 0.0, 0.0, 8000),
+    ("plastic_dtype2", 1e9, 0.3, 50e6, 0.0, 0.5, 5e4, 2, -40.0, 0.0, 0.0, 8000),
+    ("adhesive", 1e9, 0.3, 50e6, 2e4, 0.5, 0.2, 1, -40.0, 0.0, 0.0, 8000),
+    ("resting_gravity", 1e7, 0.3, 1e5, 0.0, 0.0, 0.2, 1, 0.0, 9.81, 0.0, 20000),
+    ("pressed", 1e9, 0.3, 50e6, 0.0, 0.5, 0.2, 1, 0.0, 0.0, 5.0, 8000),
+)
+
+
+def check_walls():
+    bad = 0
+    R, rho, dt, every = 0.5, 1000.0, 1e-6, 500
+    for name, E, nu, Y, gw, psi_b, eta, dtype, v0, g, vw, steps in WALLS:
+        z0 = R + 1e-4 if v0 < 0 else R + 1e-6
+        grav = "fix g all gravity %r vector 0 0 -1" % g if g else ""
+        deck = WALL_DECK.format(z0=z0, d=2 * R, rho=rho, E=E, nu=nu, Y=Y, psi_b=psi_b, eta=eta,
+                                dtype=dtype, gw=gw, v0=v0, vw=vw, grav=grav, dt=dt,
+                                every=every, steps=steps)
+        r = subprocess.run([GRAVEL, "-log", "none"], input=deck, capture_output=True,
+                           text=True, timeout=300)
+        got = thermo_rows(r.stdout, 4)
+        mat = mm.Material(E, nu, Y, gw, psi_b, eta, dtype)
+        want = reference_wall(mat, R, rho, z0, v0, g, vw, dt, steps, every)
+        if r.returncode != 0 or set(got) != set(want):
+            bad += report("wall_" + name, False, (r.stdout + r.stderr)[-400:])
+            continue
+        vs = max(abs(v0), abs(vw), 1.0)
+        worst = max(max(abs(got[n][0] - want[n][0]) / R, abs(got[n][1] - want[n][1]) / vs,
+                        abs(got[n][2] - want[n][2]) / R) for n in want)
+        zmin = min(want[n][0] for n in want)
+        grow = want[steps][2] / R - 1
+        ok = worst < 1e-12
+        bad += report("wall_" + name, ok,
+                      f"deepest centre height {zmin:.6f} (R {R}), final vz {got[steps][1]:.6g}, "
+                      f"apparent radius growth {grow:.3e}; worst difference from the reference "
+                      f"{worst:.1e} (relative)")
+    return bad
+
+
+def check_triaxial():
+    """LAMMPS's in.triaxial.compaction.12 (12 spheres pressed by six moving
+    plane walls, mdr pairs and walls, tangential friction) against its log
+    from LAMMPS 4 Feb 2025 (tests/reference/mdr/triaxial12_lammps_4Feb25.txt):
+    KinEng and the rotational energy at every logged row to 1e-7 relative
+    (the log's 8 digits)."""
+    ref = os.path.join(HERE, "..", "reference", "mdr")
+    want = {}
+    with open(os.path.join(ref, "triaxial12_lammps_4Feb25.txt")) as fh:
+        for line in fh:
+            if line.strip() and not line.startswith("#"):
+                w = line.split()
+                want[int(w[0])] = [float(w[1]), float(w[2])]
+    with tempfile.TemporaryDirectory() as d:
+        for f in ("in.triaxial.compaction.12", "spheres12.data"):
+            with open(os.path.join(ref, f)) as src, open(os.path.join(d, f), "w") as dst:
+                dst.write(src.read())
+        r = subprocess.run([GRAVEL, "-log", "none", "-in", "in.triaxial.compaction.12"], cwd=d,
+                           capture_output=True, text=True, timeout=600)
+    rows = {}
+    for line in r.stdout.splitlines():
+        w = line.split()
+        if len(w) == 6 and w[0] == "1e-06" and w[1].isdigit():
+            rows[int(w[1])] = [float(w[3]), float(w[4])]  # the last run's rows win
+    worst, where = 0.0, 0
+    for n, (ke, rot) in want.items():
+        if n not in rows:
+            return report("triaxial_compaction_12", False, f"no row {n}: " +
+                          (r.stdout + r.stderr)[-300:])
+        for k, v in enumerate((ke, rot)):
+            d = abs(rows[n][k] - v) / max(abs(v), 1e-3)
+            if d > worst:
+                worst, where = d, n
+    return report("triaxial_compaction_12", r.returncode == 0 and worst < 1e-7,
+                  f"{len(want)} rows of LAMMPS 4Feb2025's log, worst relative difference "
+                  f"{worst:.1e} (step {where}); final KinEng {rows[49900][0]:.8g}")
+
+
 TRIO = """units si
 atom_style sphere
 boundary f f f
@@ -553,8 +707,10 @@ def check_restart():
 
 
 def main():
+    if sys.argv[1:] == ["walls"]:
+        return 1 if check_walls() + check_triaxial() else 0
     bad = check_gravel() + check_collisions() + check_pair_local() + check_trio() + \
-        check_order() + check_restart() + \
+        check_order() + check_restart() + check_walls() + check_triaxial() + \
         check_reference()
     return 1 if bad else 0
 

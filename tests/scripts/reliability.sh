@@ -186,7 +186,7 @@ check device_memory_bad_value '[ $rc -eq 1 ] && grep -q "^ERROR: run: GRAVEL_DEV
 # at once, naming the line that started it (it overflowed the stack: SIGSEGV, after ~13 s
 # of nested runs through run every)
 cat > in.ifself <<'IN'
-variable c string "if 1 then ${c}"
+variable c string "if 1 then '${c}'"
 print start
 ${c}
 IN
@@ -201,7 +201,7 @@ mass 1 1
 pair_style gran/hooke 1000 0 0 0 0 0
 pair_coeff * *
 fix 1 all nve/sphere
-variable r string "run 1 every 1 ${r}"
+variable r string "run 1 every 1 '${r}'"
 run 1 every 1 "${r}"
 IN
 start=$(date +%s)

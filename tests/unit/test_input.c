@@ -140,12 +140,13 @@ TEST(substitution)
     CHECK_OUTPUT("variable x string Q\nprint $xx\n", "Qx\n");
     /* a variable can supply several words, even the command itself */
     CHECK_OUTPUT("variable w string \"print hi\"\n${w}\n", "hi\n");
-    /* substituted text is not scanned again */
-    CHECK_OUTPUT("variable s string '$x'\nprint \"${s}\"\n", "$x\n");
-    /* no substitution inside quotes at parse time: the variable holds '${a}' */
+    /* substituted text is not scanned again; a string variable substitutes
+     * its text at its definition except what is quoted inside it (LAMMPS;
+     * lmp 29Sep2021 prints the same) */
+    CHECK_OUTPUT("variable s string \"'$x'\"\nprint \"${s}\"\n", "'$x'\n");
     CHECK_OUTPUT("variable a string A\nvariable t string '${a}'\nvariable a string B\n"
                  "print ${t}\n",
-                 "B\n");
+                 "A\n");
     /* loop pad */
     CHECK_OUTPUT("variable i loop 9 10 pad\nprint $i\nnext i\nprint $i\n", "09\n10\n");
 }
@@ -450,9 +451,12 @@ TEST(nesting_depth)
                       "variable expand to a command that runs itself?)";
     char want[256];
     snprintf(want, sizeof want, "if: %s (test.in:3)", msg);
-    /* without and with quotes around the inner ${c} */
+    /* the inner ${c} quoted: a string variable substitutes its unquoted
+     * text at its definition (LAMMPS), where c is not defined yet */
     struct gravel *g = test_engine();
     CHECK(test_script(g, "variable c string \"if 1 then ${c}\"\nprint hi\n${c}\n") == GR_ERR);
+    CHECK(strstr(g->err.msg, "variable 'c' is not defined") != NULL);
+    CHECK(test_script(g, "variable c string \"if 1 then '${c}'\"\nprint hi\n${c}\n") == GR_ERR);
     CHECK(strstr(g->err.msg, want) != NULL);
     /* the counter unwinds with the error: the same engine nests 100 deep again */
     CHECK(test_script(g, "variable k equal 0\n"

@@ -5,13 +5,13 @@ bookkeeping of its fix granular/mdr, for two spheres in head-on contact
 (Zunker and Kamrin 2024 I, II; Zunker et al. 2025; LAMMPS
 gran_sub_mod_normal.cpp GranSubModNormalMDR, gran_sub_mod_damping.cpp
 GranSubModDampingMDR, fix_granular_mdr.cpp as of 2025-2026, see
-doc/styles/pair_granular_normal.md). gravel refuses mdr; this model is the
-reference a gravel implementation must meet and the evidence for the
-refusal (lammps_granular_mdr.py): the apparent-radius growth of the fix
-changes the force of even one plastic contact.
+doc/styles/pair_granular_normal.md): the reference gravel's mdr must meet
+(tests/scripts/lammps_granular_mdr.py); the apparent-radius growth of the
+fix changes the force of even one plastic contact.
 
-Scope: pair contacts (no walls, so no wall force magnifier); the bulk
-response and the mean surface displacement are kept; a contact's penalty
+Scope: pair contacts and a sphere against a flat wall (WallContact, with
+its wall force magnifier); the bulk response and the mean surface
+displacement are kept; a contact's penalty
 (it needs three mutually overlapping particles) is its attribute `penalty`,
 set by the caller from `penalty_increment` (fix granular/mdr's contact
 screening), 0 for two atoms.
@@ -185,6 +185,77 @@ def adhesive_force(m, de, A, B, a_na, aadh, at_max, h, amax):
     return F, aadh
 
 
+def side_force(m, at, h, delta, w, update):
+    """one side of a contact: the flat pushed delta into atom at, h the
+    side's history, w the penalty weight; with update the history and the
+    atom's sums advance. Returns (the side's force F_MDR + F_BULK, its
+    damping contact radius)."""
+    R, Ro = at.R, at.Ro
+    dd = delta - h.delta
+    deltao = delta - (R - Ro)
+    ddo = deltao - h.deltao
+    if update:
+        h.delta, h.deltao = delta, deltao
+    if at.psi < m.psi_b:
+        dmdr, dbulk = min(dd - at.ddelta_bar, delta - h.dmdr), at.ddelta_bar
+    else:
+        dmdr, dbulk = dd, 0.0
+    d_mdr = h.dmdr + dmdr
+    d_bulk = max(0.0, h.dbulk + dbulk)
+    if update:
+        h.dmdr, h.dbulk = d_mdr, d_bulk
+    if d_mdr > h.dmax_mdr:
+        h.dmax_mdr = d_mdr
+    dm = h.dmax_mdr
+    pY = m.p_yield(dm, R)
+    if h.yflag == 0 and d_mdr >= dm and update and m.p_hertz(d_mdr, R) > pY:
+        h.yflag, h.deltaY = 1, d_mdr
+        h.cA = math.pi * (d_mdr * d_mdr - d_mdr * R)
+    if h.yflag == 0:
+        A, B, de, amax = 4 * R, 2 * R, d_mdr, math.sqrt(dm * R)
+    else:
+        amax = math.sqrt(2 * dm * R - dm * dm + h.cA / math.pi)
+        A, B = 4 * pY / m.Es * amax, 2 * amax
+        demax = A / 2
+        Fmax = m.Es * A * B / 4 * math.acos(0.0)
+        zR = R - (dm - demax)
+        rt = math.sqrt(amax * amax + zR * zR)
+        dR = 2 * amax * amax * (m.nu - 1) - (2 * m.nu - 1) * zR * (-zR + rt)
+        dR *= Fmax / (2 * math.pi * amax * amax * m.G * rt)
+        de = (d_mdr - dm + demax + dR) / (1 + dR / demax)
+        if update:
+            h.deltap = dm - (demax + dR)
+    a_na = B * math.sqrt(A - de) * math.sqrt(de) / A if de >= 0 else 0.0
+    if m.gamma <= 0:
+        F = f_flat(de, A, B, m.Es) if de > 0 else 0.0
+        if update:
+            h.aadh = a_na
+        aadh = h.aadh
+    else:
+        saved = h.aadh
+        F, aadh = adhesive_force(m, de, A, B, a_na, h.aadh, d_mdr == dm, h, amax)
+        if not update:
+            h.aadh = saved
+    Ac = math.pi * delta * R if h.yflag == 0 else \
+        math.pi * (2 * delta * R - delta * delta) + h.cA
+    Ac = max(Ac, 0.0)
+    Fb = 0.0 if d_bulk <= 0 else at.Acon0 * d_bulk * m.kappa * Ac / at.Vgeo
+    eps = w * (F + Fb) * (-(Ro - deltao)) / (3 * m.kappa * at.Velas)
+    if update:
+        at.Atot_sum += w * (Ac - 2 * math.pi * R * (dm + d_bulk))
+        at.Acon1 += w * Ac
+        h.Ac = w * Ac
+        at.Vcaps += math.pi / 3 * delta * delta * (3 * R - delta)
+        at.eps_bar += eps
+        if d_mdr == dm and h.yflag and F > 0:
+            at.dRnum -= at.Vo * (eps - h.eps)
+            at.dRnum -= w * math.pi * ddo * (2 * deltao * Ro - deltao ** 2 + R * R -
+                                             Ro * Ro)
+            at.dRden += w * 2 * math.pi * R * (deltao + R - Ro)
+        h.eps = eps
+    return F + Fb, (aadh if m.gamma > 0 else a_na)
+
+
 class Contact:
     def __init__(self, m, a, b):
         """a, b: the two atoms; side 0 is the higher tag's"""
@@ -208,72 +279,8 @@ class Contact:
                          A0.R, A1.R)
         Fs, a_damp = [0.0, 0.0], 0.0
         for s in (0, 1):
-            at, h, delta = self.atoms[s], self.sides[s], ds[s]
-            R, Ro = at.R, at.Ro
-            dd = delta - h.delta
-            deltao = delta - (R - Ro)
-            ddo = deltao - h.deltao
-            if update:
-                h.delta, h.deltao = delta, deltao
-            if at.psi < m.psi_b:
-                dmdr, dbulk = min(dd - at.ddelta_bar, delta - h.dmdr), at.ddelta_bar
-            else:
-                dmdr, dbulk = dd, 0.0
-            d_mdr = h.dmdr + dmdr
-            d_bulk = max(0.0, h.dbulk + dbulk)
-            if update:
-                h.dmdr, h.dbulk = d_mdr, d_bulk
-            if d_mdr > h.dmax_mdr:
-                h.dmax_mdr = d_mdr
-            dm = h.dmax_mdr
-            pY = m.p_yield(dm, R)
-            if h.yflag == 0 and d_mdr >= dm and update and m.p_hertz(d_mdr, R) > pY:
-                h.yflag, h.deltaY = 1, d_mdr
-                h.cA = math.pi * (d_mdr * d_mdr - d_mdr * R)
-            if h.yflag == 0:
-                A, B, de, amax = 4 * R, 2 * R, d_mdr, math.sqrt(dm * R)
-            else:
-                amax = math.sqrt(2 * dm * R - dm * dm + h.cA / math.pi)
-                A, B = 4 * pY / m.Es * amax, 2 * amax
-                demax = A / 2
-                Fmax = m.Es * A * B / 4 * math.acos(0.0)
-                zR = R - (dm - demax)
-                rt = math.sqrt(amax * amax + zR * zR)
-                dR = 2 * amax * amax * (m.nu - 1) - (2 * m.nu - 1) * zR * (-zR + rt)
-                dR *= Fmax / (2 * math.pi * amax * amax * m.G * rt)
-                de = (d_mdr - dm + demax + dR) / (1 + dR / demax)
-                if update:
-                    h.deltap = dm - (demax + dR)
-            a_na = B * math.sqrt(A - de) * math.sqrt(de) / A if de >= 0 else 0.0
-            if m.gamma <= 0:
-                F = f_flat(de, A, B, m.Es) if de > 0 else 0.0
-                if update:
-                    h.aadh = a_na
-                aadh = h.aadh
-            else:
-                saved = h.aadh
-                F, aadh = adhesive_force(m, de, A, B, a_na, h.aadh, d_mdr == dm, h, amax)
-                if not update:
-                    h.aadh = saved
-            Ac = math.pi * delta * R if h.yflag == 0 else \
-                math.pi * (2 * delta * R - delta * delta) + h.cA
-            Ac = max(Ac, 0.0)
-            a_damp += aadh if m.gamma > 0 else a_na
-            Fb = 0.0 if d_bulk <= 0 else at.Acon0 * d_bulk * m.kappa * Ac / at.Vgeo
-            Fs[s] = F + Fb
-            eps = w * (F + Fb) * (-(Ro - deltao)) / (3 * m.kappa * at.Velas)
-            if update:
-                at.Atot_sum += w * (Ac - 2 * math.pi * R * (dm + d_bulk))
-                at.Acon1 += w * Ac
-                h.Ac = w * Ac
-                at.Vcaps += math.pi / 3 * delta * delta * (3 * R - delta)
-                at.eps_bar += eps
-                if d_mdr == dm and h.yflag and F > 0:
-                    at.dRnum -= at.Vo * (eps - h.eps)
-                    at.dRnum -= w * math.pi * ddo * (2 * deltao * Ro - deltao ** 2 + R * R -
-                                                     Ro * Ro)
-                    at.dRden += w * 2 * math.pi * R * (deltao + R - Ro)
-                h.eps = eps
+            Fs[s], ad = side_force(m, self.atoms[s], self.sides[s], ds[s], w, update)
+            a_damp += ad
         Fe = w * 0.5 * (Fs[0] + Fs[1])
         if update:  # without update (a run's setup) the damping reads the stored scale
             self.dscale = math.sqrt(meff * 2 * m.Es * a_damp) if a_damp > 0 else 0.0
@@ -291,6 +298,35 @@ class Contact:
             at, h = self.atoms[s], self.sides[s]
             if at.Acon0 != 0:
                 at.ddelta_bar += h.Ac / at.Acon0 * (ds[s] - h.delta)
+
+
+class WallContact:
+    """a sphere against a flat wall (LAMMPS's fix wall/gran/region with the
+    mdr model): one side only, the flat at the wall, the whole overlap the
+    sphere's, no penalty. The side's force is magnified by exp(10.7 deltao /
+    Ro - 10) + 1 (deltao the overlap from the initial sphere); damping mdr's
+    scale is sqrt(meff E* a / 2), a the side's damping contact radius and
+    meff the sphere's mass."""
+    def __init__(self, m, atom):
+        self.m, self.atom, self.side = m, atom, Side()
+        self.dscale = 0.0
+
+    def force(self, delta, vnnr, meff, update=True):
+        """(total normal force, its elastic-plastic part) at overlap delta and
+        normal rate vnnr (< 0 approaching the wall)"""
+        m = self.m
+        F0, ad = side_force(m, self.atom, self.side, delta, 1.0, update)
+        Fe = F0 * (math.exp(10.7 * self.side.deltao / self.atom.Ro - 10) + 1)
+        if update:
+            self.dscale = math.sqrt(meff * m.Es * ad / 2) if ad > 0 else 0.0
+        pref = m.eta * self.dscale if m.dtype == 1 else (m.eta if self.dscale != 0 else 0.0)
+        return Fe - pref * vnnr, Fe
+
+    def mean_surf_disp(self, delta):
+        """the wall contact's share of the sphere's mean surface displacement"""
+        at, h = self.atom, self.side
+        if at.Acon0 != 0:
+            at.ddelta_bar += h.Ac / at.Acon0 * (delta - h.delta)
 
 
 def drive(m, Ra, Rb, gaps, meff, dt, bookkeeping=True):
