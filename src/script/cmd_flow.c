@@ -26,10 +26,11 @@
 void cmd_variable(struct gravel *g, int argc, char **argv)
 {
     if (argc == 3 && !strcmp(argv[1], "string")) {
-        char *subst = gr_strdup(g, inp_substitute_quoted(g, argv[2]));
-        char *a[3] = {argv[0], argv[1], subst};
+        /* the input's scratch, valid until the next substitution (var_define
+         * makes none and copies the text); nothing to free when it stops on
+         * an error */
+        char *a[3] = {argv[0], argv[1], (char *)inp_substitute_quoted(g, argv[2])};
         var_define(g, argc, a);
-        free(subst);
         return;
     }
     var_define(g, argc, argv);
