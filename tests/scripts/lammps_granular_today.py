@@ -27,8 +27,8 @@ LAMMPS's shipped log (8 digits) at every thermo step before the floor bounce
 never turns) must run the same with and without it (1e-12), obliquely differ.
 
 Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
-it), mdr on a wall (pair granular only; its checks and the pair model:
-tests/scripts/lammps_granular_mdr.py), damping mdr without it (LAMMPS's own message), epa/linear and epa/nonlinear each
+it), mdr on a fix wall/gran wall (LAMMPS's own message: its mdr walls are
+fix wall/gran/region's, tests/scripts/lammps_granular_mdr.py), damping mdr without it (LAMMPS's own message), epa/linear and epa/nonlinear each
 give an error naming them; synchronized_verlet with linear_nohistory, on a wall/gran
 wall and under -compat lammps2021 too; `none` as normal, damping or tangential
 model gives LAMMPS's own "Must specify ... granular model", a NULL kt of
@@ -155,7 +155,7 @@ REFUSALS = (
      "Cannot use tsuji model with a cohesive normal model, dmt"),
     ("mdr_wall", "fix w all wall/gran granular mdr 1e7 0.3 1e5 0.1 0.5 0.5 damping mdr 1 "
      "tangential linear_history 1 1 0.5 zplane 0 NULL", (),
-     "normal model 'mdr' is supported by gravel for pair granular only"),
+     "MDR model currently only supports fix wall/gran/region, not fix wall/gran"),
     ("epa_linear", "pair_coeff * * epa/linear 1 2 3 4 tangential linear_history 1 1 0.5", (),
      "normal model 'epa/linear' of LAMMPS's pair granular is not supported"),
     ("epa_nonlinear", "pair_coeff * * epa/nonlinear 1 2 3 4 tangential linear_history 1 1 0.5",
