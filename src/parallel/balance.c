@@ -187,18 +187,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     if (tiled && !rcb) /* a grid style after rcb: the grid again, balanced (LAMMPS) */
         rcb_free(&dc->rcb);
     if (rcb && imbinit > thresh) { /* tiles by bisecting every atom */
-        int rec = wt ? 4 : 3;
-        double *s = gr_malloc(g, ((size_t)rec * a->n + 1) * sizeof *s);
-        for (int k = 0; k < a->n; k++) {
-            for (int q = 0; q < 3; q++)
-                s[(size_t)rec * k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-            if (wt)
-                s[(size_t)rec * k + 3] = wt[k];
-        }
-        if (wt)
-            decomp_rcb_w(g, dc, s, a->n);
-        else
-            decomp_rcb(g, dc, s, a->n);
+        double *s = decomp_fractions(g, a->x, a->n, wt, -1);
+        decomp_rcb(g, dc, s, a->n, wt != NULL);
         free(s);
         niter = 1;
     } else if (!rcb && (imbinit > thresh || tiled)) {
@@ -211,17 +201,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
                 dc->cut[q] = user[q];
                 user[q] = NULL;
             } else if (shift & (1u << q)) {
-                int st = wt ? 2 : 1;
-                double *s = gr_malloc(g, ((size_t)st * a->n + 1) * sizeof *s);
-                for (int k = 0; k < a->n; k++) {
-                    s[(size_t)st * k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-                    if (wt)
-                        s[(size_t)st * k + 1] = wt[k];
-                }
-                if (wt)
-                    decomp_quantile_cuts_w(dc, q, s, a->n);
-                else
-                    decomp_quantile_cuts(dc, q, s, a->n);
+                double *s = decomp_fractions(g, a->x, a->n, wt, q);
+                decomp_quantile_cuts(dc, q, s, a->n, wt != NULL);
                 free(s);
             }
         }

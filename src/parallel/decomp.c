@@ -82,28 +82,33 @@ void decomp_free(struct decomp *d)
 
 int decomp_tiled(const struct decomp *d) { return d->rcb.n > 0; }
 
-void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n)
+void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n, int weighted)
 {
     const struct domain *dm = &g->dom;
     double len[3] = {1, 1, 1}; /* LAMMPS bisects a triclinic box in lamda */
     if (!dm->triclinic)
         for (int q = 0; q < 3; q++)
             len[q] = dm->hi[q] - dm->lo[q];
-    rcb_compute(&d->rcb, comm_size(), s, n, len, dm->dimension == 2 ? 2 : 3);
+    int nd = dm->dimension == 2 ? 2 : 3;
+    if (weighted)
+        rcb_compute_w(&d->rcb, comm_size(), s, n, len, nd);
+    else
+        rcb_compute(&d->rcb, comm_size(), s, n, len, nd);
     if (d->rcb.n != comm_size())
         gr_error((struct gravel *)g, "out of memory tiling the box by rcb");
 }
 
-void decomp_rcb_w(const struct gravel *g, struct decomp *d, double *s, long n)
+double *decomp_fractions(struct gravel *g, const double *x, int n, const double *wt, int q)
 {
-    const struct domain *dm = &g->dom;
-    double len[3] = {1, 1, 1};
-    if (!dm->triclinic)
-        for (int q = 0; q < 3; q++)
-            len[q] = dm->hi[q] - dm->lo[q];
-    rcb_compute_w(&d->rcb, comm_size(), s, n, len, dm->dimension == 2 ? 2 : 3);
-    if (d->rcb.n != comm_size())
-        gr_error((struct gravel *)g, "out of memory tiling the box by rcb");
+    int nf = q < 0 ? 3 : 1, rec = nf + (wt != NULL);
+    double *s = gr_malloc(g, ((size_t)rec * n + 1) * sizeof *s);
+    for (int k = 0; k < n; k++) {
+        for (int f = 0; f < nf; f++)
+            s[(size_t)rec * k + f] = decomp_fraction(g, q < 0 ? f : q, x + 3 * (size_t)k);
+        if (wt)
+            s[(size_t)rec * k + nf] = wt[k];
+    }
+    return s;
 }
 
 void decomp_box(const struct decomp *d, int r, double lo[3], double hi[3])
@@ -247,15 +252,12 @@ static void quantile_cuts(struct decomp *dc, int q, const double *s, long n, int
     dc->cut[q] = c;
 }
 
-void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n)
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n, int weighted)
 {
-    qsort(s, (size_t)n, sizeof *s, cmp_double);
-    quantile_cuts(dc, q, s, n, 1);
-}
-
-void decomp_quantile_cuts_w(struct decomp *dc, int q, double *sw, long n)
-{
-    qsort(sw, (size_t)n, 2 * sizeof *sw, cmp_pair);
-    quantile_cuts(dc, q, sw, n, 2);
+    if (weighted)
+        qsort(s, (size_t)n, 2 * sizeof *s, cmp_pair);
+    else
+        qsort(s, (size_t)n, sizeof *s, cmp_double);
+    quantile_cuts(dc, q, s, n, weighted ? 2 : 1);
 }
 

@@ -29,9 +29,14 @@ void decomp_setup(struct gravel *g, struct decomp *d);
 void decomp_free(struct decomp *d);
 /* Whether the ranks hold rcb tiles rather than the grid's bricks. */
 int decomp_tiled(const struct decomp *d);
-/* Tile the box by rcb from the n fractions s[3 i + q] of every atom
- * (decomp_fraction; reordered here). */
-void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n);
+/* Tile the box by rcb from the n records of every atom (decomp_fractions
+ * with q < 0: s[3 i + q], or weighted: s[4 i + q] and the weight s[4 i + 3];
+ * reordered here). */
+void decomp_rcb(const struct gravel *g, struct decomp *d, double *s, long n, int weighted);
+/* The records of atoms x[0 .. n-1] (malloc'd): their fractions of the box
+ * (decomp_fraction) in dimension q, or in all three when q < 0, each
+ * followed by its weight wt[k] when wt is not NULL. */
+double *decomp_fractions(struct gravel *g, const double *x, int n, const double *wt, int q);
 /* Sub-domain of rank r as fractions of the box (lamda when triclinic):
  * [lo, hi) per dimension, a brick of the grid or an rcb tile. */
 void decomp_box(const struct decomp *d, int r, double lo[3], double hi[3]);
@@ -43,13 +48,9 @@ double decomp_fraction(const struct gravel *g, int q, const double x[3]);
 double decomp_fraction_raw(const struct gravel *g, int q, const double x[3]);
 /* Slab cuts of dimension q at the quantiles of the n fractions s (sorted
  * in place; balance's shift); even slabs where the atoms cannot separate
- * them. */
-void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n);
-/* The same with a weight per atom: sw[2 i] its fraction, sw[2 i + 1] its
- * weight (> 0); each slab holds its share of the weight (balance weight). */
-void decomp_quantile_cuts_w(struct decomp *dc, int q, double *sw, long n);
-/* rcb tiles from s[4 i + q] fractions and s[4 i + 3] weights. */
-void decomp_rcb_w(const struct gravel *g, struct decomp *d, double *s, long n);
+ * them. weighted: s[2 i] an atom's fraction, s[2 i + 1] its weight (> 0),
+ * each slab holding its share of the weight (balance weight). */
+void decomp_quantile_cuts(struct decomp *dc, int q, double *s, long n, int weighted);
 /* Fraction of the box length below slab k's lower face in dimension q. */
 double decomp_cut(const struct decomp *d, int q, int k);
 /* The rank owning position x (periodic dimensions wrapped into the box;

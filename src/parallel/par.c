@@ -779,43 +779,26 @@ static void rebalance(struct gravel *g, unsigned dims, int rcb, double thresh)
     }
     int rec = wt ? 4 : 3;
     if (rcb) {
-        double *s = gr_malloc(g, ((size_t)rec * a->n + 1) * sizeof *s), *all3 = NULL;
-        for (int k = 0; k < a->n; k++) {
-            for (int q = 0; q < 3; q++)
-                s[(size_t)rec * k + q] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-            if (wt)
-                s[(size_t)rec * k + 3] = wt[k];
-        }
+        double *s = decomp_fractions(g, a->x, a->n, wt, -1), *all3 = NULL;
         b = comm_allgatherv(s, (size_t)rec * a->n * sizeof *s, (void **)&all3);
         free(s);
         if (b == (size_t)-1)
             gr_error(g, "out of memory balancing");
         long m = (long)(b / ((size_t)rec * sizeof *all3));
-        if (wt)
-            decomp_rcb_w(g, dc, all3, m);
-        else
-            decomp_rcb(g, dc, all3, m);
+        decomp_rcb(g, dc, all3, m, wt != NULL);
         free(all3);
     } else {
         int st = wt ? 2 : 1;
         for (int q = 0; q < 3; q++) {
             if (!(dims & (1u << q)) || dc->p[q] < 2)
                 continue;
-            double *s = gr_malloc(g, ((size_t)st * a->n + 1) * sizeof *s), *all1 = NULL;
-            for (int k = 0; k < a->n; k++) {
-                s[(size_t)st * k] = decomp_fraction(g, q, a->x + 3 * (size_t)k);
-                if (wt)
-                    s[(size_t)st * k + 1] = wt[k];
-            }
+            double *s = decomp_fractions(g, a->x, a->n, wt, q), *all1 = NULL;
             b = comm_allgatherv(s, (size_t)st * a->n * sizeof *s, (void **)&all1);
             free(s);
             if (b == (size_t)-1)
                 gr_error(g, "out of memory balancing");
             long m = (long)(b / ((size_t)st * sizeof *all1));
-            if (wt)
-                decomp_quantile_cuts_w(dc, q, all1, m);
-            else
-                decomp_quantile_cuts(dc, q, all1, m);
+            decomp_quantile_cuts(dc, q, all1, m, wt != NULL);
             free(all1);
         }
     }
