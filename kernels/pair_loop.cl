@@ -186,34 +186,44 @@ static inline void rec_take(__global const REAL *rec, const int c, const int par
 
 /* f_i (and torque_i) = the sum of the records of i's contacts in row order
  * (see the top: the contacts i is the partner of, then its own); written,
- * not added (this also clears the force of the step). Then the fused
+ * not added (this also clears the force of the step); in the tail, f_i as
+ * it is. Then the fused
  * post_force ops [first, first + npost) and final_integrate and
  * end_of_step ops [first + npost, first + npost + nfinal) of
  * kernels/fused.cl, which may change f, torque, v and omega (and the fused
  * fix's store); with look, the next step's opening
  * (kernels/atom_step.cl) on the state in registers. */
-/* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
-__kernel void pair_gather(KA_PARAMS(pair_gather))
+/* (tail: fused_tail below; the force so far is read, not gathered) */
+static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gather),
+                                                              const int tail)
 {
     const int i = get_global_id(0);
     if (i >= n)
         return;
     REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
-    const int c0 = coff[i], c1 = coff[i + 1];
-    const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
-    const REAL nr = -radius[i];
-    for (int s = p0; s < p1; s++)
-        rec_take(rec, pcon[s], 1, nr, &fs, &ts);
-    for (int c = c0; c < c1; c++)
-        rec_take(rec, c, 0, nr, &fs, &ts);
+    if (tail) {
+        fs = vload3(i, f);
+#ifdef HAS_ROTATION
+        ts = vload3(i, torque);
+#endif
+    } else {
+        const int c0 = coff[i], c1 = coff[i + 1];
+        const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
+        const REAL nr = -radius[i];
+        for (int s = p0; s < p1; s++)
+            rec_take(rec, pcon[s], 1, nr, &fs, &ts);
+        for (int c = c0; c < c1; c++)
+            rec_take(rec, c, 0, nr, &fs, &ts);
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
-    REAL qs = 0;
-    for (int s = p0; s < p1; s++)
-        qs -= recq[pcon[s]];
-    for (int c = c0; c < c1; c++)
-        qs += recq[c];
-    heatflow[i] = qs;
-#else
+        REAL qs = 0;
+        for (int s = p0; s < p1; s++)
+            qs -= recq[pcon[s]];
+        for (int c = c0; c < c1; c++)
+            qs += recq[c];
+        heatflow[i] = qs;
+#endif
+    }
+#ifndef HAS_HEAT
     (void)recq;
     (void)heatflow;
 #endif
@@ -259,6 +269,23 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
 #ifdef HAS_ROTATION
     vstore3(ts, i, torque);
 #endif
+}
+
+/* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
+__kernel void pair_gather(KA_PARAMS(pair_gather))
+{
+    gather_atom(KA_ARGS(pair_gather), 0);
+}
+
+/* The fused tail (src/engine/fused.h): when the post_force stage fused only
+ * a prefix, the fused ops of the post_force fixes after the last unfused
+ * one and of final_integrate and end_of_step, on the force the unfused
+ * fixes (walls) left in f and torque, after them; with look, the next
+ * step's opening, as pair_gather's. Same arguments as pair_gather (the
+ * contact ones unused). */
+__kernel void fused_tail(KA_PARAMS(pair_gather))
+{
+    gather_atom(KA_ARGS(pair_gather), 1);
 }
 
 /* The pair virial of the step, per particle, for the pressure (run only on

@@ -34,6 +34,11 @@ struct fix;
 struct fused_stages {
     cl_mem ops, prm;            /* int[FOP_W per op], REAL[] */
     int ninit, npost, nfinal, neos; /* ops: initial, then post, final, end_of_step */
+    /* the tail (when post_force fused only a prefix): ops [tfirst, tfirst +
+     * tpost) are the post_force fixes after the last unfused one, then
+     * tfinal final_integrate and end_of_step ops; run by fused_tail after
+     * the unfused post_force fixes (ntail = tpost + tfinal; 0: no tail) */
+    int tfirst, tpost, tfinal;
     struct fix *store_fix;      /* the fused fix whose per-atom store ops use, or NULL */
     int lookahead;              /* 0: GRAVEL_LOOKAHEAD=0, no step opening in pair_gather */
 };
@@ -140,7 +145,7 @@ struct engine {
     int n_at_sync;
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
-    cl_kernel k_pair, k_gather, k_clear;
+    cl_kernel k_pair, k_gather, k_tail, k_clear;
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/engine/pressure.c) */
     cl_kernel k_energy;         /* pair_energy of a potential (src/contact/pair_energy.c) */
     double epair_snap;          /* the pair energy taken before a box change moved the

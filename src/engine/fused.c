@@ -76,6 +76,37 @@ static int stage(struct gravel *g, struct builder *b, unsigned hook, int all)
     return ok;
 }
 
+/* The tail's post_force ops: the fixes of `hook` after the last one that
+ * cannot fuse (none when the last fix cannot). Returns the number fused. */
+static int stage_suffix(struct gravel *g, struct builder *b, unsigned hook)
+{
+    struct fix *list[64];
+    struct fused_op ops[64];
+    int n = 0;
+    struct fix *store_fix = b->store_fix;
+    for (int i = 0; i < g->styles.nfix && n < 64; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (!(f->hooks & hook) || (f->fused_hooks & hook))
+            continue;
+        ops[n].store = 0;
+        if (!(f->style->fuse && f->style->fuse(g, f, hook, &ops[n]) &&
+              (!ops[n].store || !store_fix || store_fix == f))) {
+            n = 0; /* the suffix starts after this one */
+            store_fix = b->store_fix;
+            continue;
+        }
+        if (ops[n].store)
+            store_fix = f;
+        list[n++] = f;
+    }
+    b->store_fix = store_fix;
+    for (int k = 0; k < n; k++) {
+        add(g, b, list[k], &ops[k]);
+        list[k]->fused_hooks |= hook;
+    }
+    return n;
+}
+
 static int count_hook(struct gravel *g, unsigned hook)
 {
     int n = 0;
@@ -105,6 +136,14 @@ void fused_setup(struct gravel *g)
             if (s->npost == count_hook(g, HOOK_POST_FORCE) &&
                 s->nfinal == count_hook(g, HOOK_FINAL_INTEGRATE))
                 s->neos = stage(g, &b, HOOK_END_OF_STEP, 1);
+            if (s->npost < count_hook(g, HOOK_POST_FORCE)) { /* the tail */
+                s->tfirst = b.nops;
+                s->tpost = stage_suffix(g, &b, HOOK_POST_FORCE);
+                int nf = stage(g, &b, HOOK_FINAL_INTEGRATE, 1), ne = 0;
+                if (nf == count_hook(g, HOOK_FINAL_INTEGRATE))
+                    ne = stage(g, &b, HOOK_END_OF_STEP, 1);
+                s->tfinal = nf + ne;
+            }
         }
     }
     s->store_fix = b.store_fix;

@@ -6,7 +6,10 @@
  * op; a stage is fused when every fix of it can be (post_force: the
  * longest prefix, in fix order; final_integrate only after a complete
  * post_force stage, end_of_step only after complete post_force and
- * final_integrate stages), and the fused fixes' own hooks are then skipped
+ * final_integrate stages; when post_force fused only a prefix, the tail:
+ * the post_force fixes after the last unfused one, then final_integrate
+ * and end_of_step likewise, in one fused_tail launch after the unfused
+ * post_force fixes), and the fused fixes' own hooks are then skipped
  * (fix->fused_hooks). Env GRAVEL_FUSE=0 turns fusion off (the results are
  * the same bit for bit: tests/scripts/determinism.py). */
 #ifndef GR_FUSED_H

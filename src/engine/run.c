@@ -8,7 +8,9 @@
  * -> output. Per-particle fix work fuses into the check and gather kernels
  * where it can (src/engine/fused.h); the other fixes run from hook lists built once
  * per run. When every fix fused and no output is due, a step's pair_gather also
- * opens the next step (step_lookahead; kernels/atom_step.cl). Setup (Verlet::setup) rebuilds the list and computes the step-0
+ * opens the next step (step_lookahead; kernels/atom_step.cl); with unfused
+ * post_force fixes (walls) and the rest fused, the fused tail after them does
+ * (fused.h). Setup (Verlet::setup) rebuilds the list and computes the step-0
  * forces with the history frozen (shearupdate = 0), then calls post_force of
  * every fix.
  *
@@ -113,6 +115,7 @@ static void pair_init(struct gravel *g)
     const struct pair *p = g->styles.pair;
     e->k_clear = eng_kernel(g, "force_clear");
     e->k_gather = eng_kernel(g, "pair_gather");
+    e->k_tail = eng_kernel(g, "fused_tail");
     e->k_pair = e->k_virial = e->k_energy = NULL;
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
@@ -231,20 +234,23 @@ static void run_hook(struct gravel *g, unsigned hook)
         h->call[k][i].fn(g, h->call[k][i].fix);
 }
 
-/* Whether this step's pair_gather also runs the next step's opening
- * (kernels/atom_step.cl: its initial_integrate ops, wrap and rebuild check;
- * bit-identical to nbr_check at the next step's start): when nothing reads
- * or moves the particles in between, i.e. every fix's per-step work is
- * fused (no hook left to call; pre_exchange runs after the check), no
- * output or restart file is due, and the step is not the run's last. */
+/* Whether this step's pair_gather (or, with a tail, fused_tail) also runs
+ * the next step's opening (kernels/atom_step.cl: its initial_integrate ops,
+ * wrap and rebuild check; bit-identical to nbr_check at the next step's
+ * start): when nothing reads or moves the particles after it, i.e. every
+ * fix's per-step work is fused (no hook left to call but the post_force
+ * ones before a tail; pre_exchange runs after the check), no output or
+ * restart file is due, and the step is not the run's last. */
 static int step_lookahead(struct gravel *g, int last)
 {
     const struct engine *e = g->eng;
     if (!e->k_pair || !e->fused.lookahead || last || par_on(g) /* ghosts come between */ || output_due(g, g->step) ||
         restart_due(g, g->step))
         return 0;
+    const int tail = e->fused.tpost + e->fused.tfinal > 0; /* opens after the post_force hooks */
     for (int k = 0; k < NHOOK; k++)
-        if (e->hooks.n[k] > 0 && k != hook_index(HOOK_PRE_EXCHANGE))
+        if (e->hooks.n[k] > 0 && k != hook_index(HOOK_PRE_EXCHANGE) &&
+            !(tail && k == hook_index(HOOK_POST_FORCE)))
             return 0;
     return 1;
 }
@@ -281,6 +287,8 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = &e->a;
+    const int tail = e->fused.tpost + e->fused.tfinal > 0; /* fused.h: the fused tail */
+    struct pair_gather_args tail_args = {0};
     double t0 = wall();
     if (e->k_pair) {
         /* the contact pipeline: each contact once, then each particle's sum */
@@ -344,11 +352,12 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .mask = a->mask,
             .recq = recq,
             .heatflow = e->heat ? a->heatflow : a->f,
-            .look = look,
+            .look = look && !tail,
         };
-        nbr_step_args(g, &pg.atom_step, look);
+        nbr_step_args(g, &pg.atom_step, pg.look);
         ka_bind_pair_gather(g, e->k_gather, 0, &pg);
         eng_launch(g, e->k_gather, (size_t)a->n);
+        tail_args = pg;
     } else {
         acc_reserve(g); /* the wall records */
         const struct force_clear_args fc = {
@@ -362,6 +371,15 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     double t1 = wall();
     t[TM_PAIR] += t1 - t0;
     run_hook(g, HOOK_POST_FORCE);
+    if (e->k_pair && tail) { /* the fused ops after the unfused post_force fixes */
+        tail_args.first = e->fused.tfirst;
+        tail_args.npost = e->fused.tpost;
+        tail_args.nfinal = e->setup ? 0 : e->fused.tfinal;
+        tail_args.look = look;
+        nbr_step_args(g, &tail_args.atom_step, look);
+        ka_bind_pair_gather(g, e->k_tail, 0, &tail_args);
+        eng_launch(g, e->k_tail, (size_t)a->n);
+    }
     if (timed)
         eng_finish(g);
     t[TM_MODIFY] += wall() - t1;

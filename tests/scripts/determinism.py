@@ -21,7 +21,10 @@ off (GRAVEL_FUSE=0: one launch per fix and hook) and with the look-ahead off
 (GRAVEL_LOOKAHEAD=0: each step's opening in nbr_check instead of the step
 before's pair_gather); so does a cohesive suspension in a Taylor-Green
 vortex whose fix drag fuses (update explicit, implicit and exact), with
-fewer launches per step than unfused. Then momentum conservation of the pair forces: a periodic dense packing
+fewer launches per step than unfused; and the fused tail (fixes after an
+unfused wall, with the final kick and the next step's opening, in one launch
+after the wall): the bed, and the vortex with a fixed ball before fix drag,
+the same bits unfused and without the look-ahead, with fewer launches. Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
 The same lane widths give the same bits for each lane-generic law (gran
@@ -127,6 +130,47 @@ def launches(out):
         if "kernel launches per step =" in line:
             return float(line.split("=")[-1])
     return None
+
+
+# fix drag after an unfused wall (a fixed ball in the flow): its ops go to
+# the fused tail (src/engine/fused.h) with the final kick and the look-ahead
+DRAG_WALL = """variable update index {update}
+include {scene}
+unfix 2
+region ball sphere 0 0 0 0.2 side out units box
+fix ob all wall/gran/region hooke 1e5 NULL 0.5 NULL 0.1 0 region ball
+fix 2 all drag 0.05 taylor_green 5 3 update ${{update}}
+thermo_style custom step ke
+thermo_modify format float %.17g
+thermo 100
+dump d all custom 400 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz
+dump_modify d sort id format float %.17g
+run 400
+"""
+
+
+def check_tail():
+    """the fused tail: fixes after an unfused post_force fix (a wall) and the
+    final kick run in one launch after it, with the next step's opening; the
+    same bits as unfused and without the look-ahead, and fewer launches: the
+    bed (gravity after the floor wall) and fix drag after a fixed ball."""
+    bad = 0
+    decks = [("bed", BED.format(extra=""))] + [
+        ("drag_%s" % u, DRAG_WALL.format(update=u, scene=SCENE)) for u in ("implicit", "exact")]
+    for label, deck in decks:
+        rows_f, dump_f, out_f = run_full(deck)
+        for name, env in (("unfused", {"GRAVEL_FUSE": "0"}),
+                          ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"})):
+            rows, dump, out = run_full(deck, env)
+            ok = rows_f is not None and rows is not None and dump == dump_f and rows == rows_f
+            detail = ((dump_f or "") + (dump or ""))[-300:] if rows_f is None or rows is None \
+                else first_difference(dump_f, dump)
+            bad += not check("tail_%s_equals_%s" % (label, name), ok, detail)
+            lf, lo = launches(out_f), launches(out)
+            bad += not check("tail_%s_launches_fewer_than_%s" % (label, name),
+                             lf is not None and lo is not None and lf < lo - 0.9,
+                             "%s vs %s per step" % (lf, lo))
+    return bad
 
 
 def check_drag():
@@ -356,6 +400,7 @@ def main():
         bad += not check("lookahead_equals_none", ok,
                          "" if ok else first_difference(dump_f, dump_n))
     bad += check_drag()
+    bad += check_tail()
     bad += check_serial_default()
     rows, dump = run(PACK)
     if rows is None:
