@@ -268,8 +268,6 @@ static void check_scene(struct gravel *g)
             why = buf;
         }
     }
-    if (!why && g->eng && g->eng->hist_owner)
-        why = "-compat lammps2021 contact owners";
     if (why)
         par_refuse(g, why);
 }

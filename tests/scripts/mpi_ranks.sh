@@ -655,6 +655,44 @@ same ghost_reach_np4_slabs reach.in 4 "" "4 1 1"
 mpirun -np 2 "$par" -in reach.in -var dbig 6.0 -log none > reach6.out 2>&1; rc=$?
 check ghost_reach_half_box_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*less than twice the neighbor cut-off" reach6.out)" -eq 1 ]'
 
+# -compat lammps2021: LAMMPS 2021's owner of each pair (its bins and owner rule,
+# evaluated from the global box at each rebuild; at an owner change the whole
+# history row is negated, rolling and twisting too) in a sheared periodic
+# packing of pair granular spheres with rolling and twisting history: the owner
+# changes (the run differs from the default's), and 2, 3 and 4 ranks give one
+# process's bits
+cat > owners.in <<'IN'
+units lj
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+region box block 0 6 0 6 0 6 units box
+create_box 2 box
+create_atoms 1 random 150 4242 NULL
+create_atoms 2 random 150 4343 NULL
+set type 1 diameter 1.0 density 1.0
+set type 2 diameter 0.7 density 2.0
+velocity all create 10.0 8811 loop geom
+pair_style granular
+pair_coeff * * hertz/material 1e5 0.3 0.3 tangential mindlin NULL 1.0 0.5 rolling sds 1e3 1e2 0.1 twisting marshall damping tsuji
+fix move all nve/sphere
+fix def all deform 1 x erate 0.05 y erate -0.05
+neighbor 0.2 bin
+neigh_modify every 1 delay 0
+timestep 0.0005
+thermo_style custom step ke
+thermo_modify format float %.17g
+thermo 250
+run 2000
+write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz fx fy fz tqx tqy tqz modify sort id format float %.17g
+IN
+"$serial" -in owners.in -log none > owners_default.out 2>&1; mv final.dump owners_default.dump
+ref_run owners.in "-compat lammps2021"
+check lammps2021_owners_change '[ -s ref.dump ] && ! cmp -s ref.dump owners_default.dump'
+same lammps2021_owners_np2 owners.in 2 "-compat lammps2021"
+same lammps2021_owners_np3 owners.in 3 "-compat lammps2021"
+same lammps2021_owners_np4 owners.in 4 "-compat lammps2021"
+
 # the agglomeration case's physics (source document 000): cohesive spheres in a
 # Taylor-Green vortex, fix drag's implicit update (its per-atom state moves with
 # the atoms), compute agglomerate in thermo and its histogram file (rank 0 writes)
