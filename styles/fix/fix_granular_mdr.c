@@ -31,7 +31,10 @@
  * LAMMPS's neighbor lists do not follow the radius growth; here an atom
  * grown by a quarter of the skin since the last build asks a rebuild with
  * cut-offs for the new radii (nbr_radii_changed), which changes no result.
- * One MPI rank only (par_refuse). */
+ * On several MPI ranks every rank gathers every rank's atoms and contacts
+ * (fix_granular_mdr_ranks.h) and runs all of the above on the whole set in
+ * the same order, so the state by tag is the same on every rank and the
+ * results are one process's bits; each rank takes back its own part. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
