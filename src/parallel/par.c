@@ -194,7 +194,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
                                         "nvt/sphere", "deform", "npt", "npt/sphere", "nph",
                                         "nph/sphere",
-                                        "particletemplate/multisphere", NULL};
+                                        "particletemplate/multisphere", "granular/mdr", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -31,7 +31,10 @@
  * LAMMPS's neighbor lists do not follow the radius growth; here an atom
  * grown by a quarter of the skin since the last build asks a rebuild with
  * cut-offs for the new radii (nbr_radii_changed), which changes no result.
- * One MPI rank only (par_refuse). */
+ * On several MPI ranks every rank gathers every rank's atoms and contacts
+ * (fix_granular_mdr_ranks.h) and runs all of the above on the whole set in
+ * the same order, so the state by tag is the same on every rank and the
+ * results are one process's bits; each rank takes back its own part. */
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -42,6 +45,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_granular_mdr_ranks.h"
 #include "fix_wall_gran.h"
 #include "gran_mdr.h"
 #include "neighbor.h"
@@ -121,7 +125,7 @@ static void grow(struct gravel *g, struct mdr_fix *d, int64_t tag)
 }
 
 /* LAMMPS's setup_pre_force checks: pair granular whose every type pair is
- * the one mdr model; one rank. */
+ * the one mdr model. */
 static void init(struct gravel *g, struct fix *f)
 {
     struct mdr_fix *d = f->data;
@@ -132,9 +136,6 @@ static void init(struct gravel *g, struct fix *f)
     int off = granular_mdr_model(g, p, mat);
     if (off < 0)
         gr_error(g, "fix granular/mdr: Must specify MDR normal model with pair granular");
-    if (par_on(g))
-        par_refuse(g, "pair granular's mdr normal model (fix granular/mdr keeps per-atom state "
-                      "and contact penalties on one rank)");
     mdr_mat_set(&d->mat, mat[0], mat[1], mat[2], mat[3], mat[4]);
     d->eta = mat[5];
     d->dtype = mat[6];
@@ -173,24 +174,26 @@ static int cmp_contact(const void *pa, const void *pb)
 }
 
 /* x_j - x_i (minimum image) and its length */
-static double sep(const struct gravel *g, int i, int j, double d[3])
+static double sep(const struct gravel *g, const struct mdr_atoms *v, int i, int j, double d[3])
 {
-    const double *x = g->atoms.x;
+    const double *x = v->x;
     for (int q = 0; q < 3; q++)
         d[q] = x[3 * j + q] - x[3 * i + q];
     domain_minimum_image(g, d);
     return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
+/* the contacts (atoms: indices in v) and their history rows */
 struct mdr_scene {
+    const struct mdr_atoms *v;
     int nc, hw, *ci, *cj, *ord;
     double *hist;
 };
 
-/* The contact of atoms (device indices) i and j in the sorted order, or -1 */
-static int find_contact(const struct gravel *g, const struct mdr_scene *s, int i, int j)
+/* The contact of atoms i and j in the sorted order, or -1 */
+static int find_contact(const struct mdr_scene *s, int i, int j)
 {
-    const int64_t *tag = g->atoms.tag;
+    const int64_t *tag = s->v->tag;
     int64_t lo = tag[i] < tag[j] ? tag[i] : tag[j], hi = tag[i] < tag[j] ? tag[j] : tag[i];
     int a = 0, b = s->nc - 1;
     while (a <= b) {
@@ -212,8 +215,9 @@ static int find_contact(const struct gravel *g, const struct mdr_scene *s, int i
  * calculate_contact_penalty; each triple once, lowest tag first). */
 static void penalties(struct gravel *g, struct mdr_fix *d, struct mdr_scene *s)
 {
-    const double *rad = g->atoms.radius;
-    const int64_t *tag = g->atoms.tag;
+    const struct mdr_atoms *v = s->v;
+    const double *rad = v->radius;
+    const int64_t *tag = v->tag;
     for (int c = 0; c < s->nc; c++)
         s->hist[(size_t)c * s->hw + d->hoff + MH_PENALTY] = 0.0;
     int *part = gr_malloc(g, (size_t)(s->nc + 1) * sizeof *part);
@@ -226,18 +230,18 @@ static void penalties(struct gravel *g, struct mdr_fix *d, struct mdr_scene *s)
         for (int k = m; k < e; k++) {
             double dd[3];
             const int j = s->cj[s->ord[k]];
-            if (rad[i] + rad[j] - sep(g, i, j, dd) >= 0.0)
+            if (rad[i] + rad[j] - sep(g, v, i, j, dd) >= 0.0)
                 part[np++] = s->ord[k];
         }
         for (int u = 0; u < np; u++)
             for (int w = u + 1; w < np; w++) {
                 const int j = s->cj[part[u]], k = s->cj[part[w]];
                 double dij[3], dik[3], djk[3];
-                const double rij = sep(g, i, j, dij), rik = sep(g, i, k, dik);
-                const double rjk = sep(g, j, k, djk);
+                const double rij = sep(g, v, i, j, dij), rik = sep(g, v, i, k, dik);
+                const double rjk = sep(g, v, j, k, djk);
                 if (rad[j] + rad[k] - rjk < 0.0)
                     continue;
-                const int cjk = find_contact(g, s, j, k);
+                const int cjk = find_contact(s, j, k);
                 if (cjk < 0)
                     gr_error(g, "fix granular/mdr: Contact between a pair of particles was "
                                 "detected by the MDR model, however it is not reflected in the "
@@ -296,11 +300,12 @@ struct mdr_wall {
     struct wall_mdr w;
     struct mdr_mat mat;
     size_t stride;              /* per-atom REAL */
-    double *buf;                /* the wall's per-atom state, host copy */
+    double *own;                /* the wall's per-atom state of this process's atoms, host copy */
+    double *buf;                /* ... of the atoms the host part reads (own on one process) */
 };
 
-/* The walls of this run, in fix order, their state read from the device;
- * the checks of LAMMPS's setup_pre_force. Returns their count. */
+/* The walls of this run, in fix order, their state read from the device
+ * (own); the checks of LAMMPS's setup_pre_force. Returns their count. */
 static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int cap)
 {
     int nw = 0;
@@ -331,15 +336,23 @@ static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw,
         m->w = w;
         mdr_mat_set(&m->mat, w.par[0], w.par[1], w.par[2], w.par[3], w.par[4]);
         m->stride = (size_t)(1 + (1 + w.hw) * w.slots);
-        m->buf = NULL;
+        m->own = m->buf = NULL;
         if (!wf->peratom)
             continue;
-        m->buf = gr_malloc(g, (g->atoms.n ? (size_t)g->atoms.n : 1) * m->stride * sizeof(double));
-        eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->stride, m->buf);
+        m->own = gr_malloc(g, (g->atoms.n ? (size_t)g->atoms.n : 1) * m->stride * sizeof(double));
+        eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->stride, m->own);
+        m->buf = m->own;
         if (region_dynamic(r))
             region_prematch(g, (struct region *)r);
     }
-    if (nw != d->wall_n || d->wcap < d->cap) { /* the state by (tag, wall) */
+    return nw;
+}
+
+/* The walls' contact state by (tag, wall) for tags below d->cap: zeroed
+ * when the run's mdr walls change in number. */
+static void walls_state(struct gravel *g, struct mdr_fix *d, int nw)
+{
+    if (nw != d->wall_n || d->wcap < d->cap) {
         const size_t row = (size_t)nw * MH_N;
         double *n = gr_calloc(g, (size_t)(d->cap ? d->cap : 1) * (row ? row : 1), sizeof *n);
         if (nw == d->wall_n && d->wallh)
@@ -349,7 +362,6 @@ static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw,
         d->wcap = d->cap;
         d->wall_n = nw;
     }
-    return nw;
 }
 
 /* A plane region's contact with atom x of reach cutoff (LAMMPS's
@@ -382,11 +394,10 @@ static int plane_contact(const struct region *r, const double x[3], double cutof
  * kernels/wall_region.cl region_slots for a plane's one wall id, both
  * zeroed for a new contact), the distance and the plane-to-atom vector;
  * NULL when none (the count reset, as the kernel would). */
-static double *wall_contact(const struct gravel *g, const struct mdr_fix *d,
+static double *wall_contact(const struct mdr_atoms *A, const struct mdr_fix *d,
                             const struct mdr_wall *m, int i, double *rr, double del[3],
                             double **hk)
 {
-    const struct atoms *A = &g->atoms;
     if (!(A->mask[i] & m->f->groupbit) || !m->buf)
         return NULL;
     const double *x = A->x + 3 * i;
@@ -413,13 +424,13 @@ static double *wall_contact(const struct gravel *g, const struct mdr_fix *d,
 
 /* update_fix_gran_wall: each wall contact's share of its atom's mean
  * surface displacement increment */
-static void walls_mean_disp(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int nw)
+static void walls_mean_disp(const struct mdr_atoms *A, struct mdr_fix *d, struct mdr_wall *mw,
+                            int nw)
 {
-    const struct atoms *A = &g->atoms;
     for (int k = 0; k < nw; k++)
         for (int i = 0; i < A->n; i++) {
             double rr, del[3], *hk;
-            double *h = wall_contact(g, d, &mw[k], i, &rr, del, &hk);
+            double *h = wall_contact(A, d, &mw[k], i, &rr, del, &hk);
             struct mdr_atom *a = &d->at[A->tag[i]];
             if (h && a->Acon0 != 0.0)
                 a->ddelta_bar += 1.0 * h[MH_AC_0] / a->Acon0 * (A->radius[i] - rr - h[MH_DELTA_0]);
@@ -427,14 +438,13 @@ static void walls_mean_disp(struct gravel *g, struct mdr_fix *d, struct mdr_wall
 }
 
 /* the walls' forces (fix wall/gran/region's post_force), after the pairs' */
-static void walls_force(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int nw,
-                        int update, int *yield_new)
+static void walls_force(const struct mdr_atoms *A, struct mdr_fix *d, struct mdr_wall *mw,
+                        int nw, int update, int *yield_new)
 {
-    const struct atoms *A = &g->atoms;
     for (int k = 0; k < nw; k++) {
         for (int i = 0; i < A->n; i++) {
             double rr, del[3], *hk;
-            double *h = wall_contact(g, d, &mw[k], i, &rr, del, &hk);
+            double *h = wall_contact(A, d, &mw[k], i, &rr, del, &hk);
             if (!h)
                 continue;
             /* GranularModel's contact of a region wall: r from the contact vector */
@@ -446,141 +456,186 @@ static void walls_force(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw
             hk[MHW_FN] = h[MH_FN]; /* the kernel's part (kernels/fix_wall_gran.cl) */
             hk[MHW_DAMP_SCALE] = h[MH_DAMP_SCALE];
         }
-        if (mw[k].buf)
-            eng_write_reals(g, mw[k].f->peratom, (size_t)A->n * mw[k].stride, mw[k].buf);
-        free(mw[k].buf);
-        mw[k].buf = NULL;
     }
 }
 
+/* The walls' state of this process's atoms back to the device (on several
+ * ranks taken from the gathered set first). */
+static void walls_end(struct gravel *g, struct mdr_wall *mw, int nw, const struct mdr_ranks *r)
+{
+    for (int k = 0; k < nw; k++) {
+        if (mw[k].own) {
+            if (r)
+                mdr_ranks_wall_back(r, k, mw[k].own);
+            eng_write_reals(g, mw[k].f->peratom, (size_t)g->atoms.n * mw[k].stride, mw[k].own);
+        }
+        free(mw[k].own);
+        mw[k].own = mw[k].buf = NULL;
+    }
+}
+
+/* Several ranks: every rank's inputs gathered, the whole host part
+ * evaluated on each (fix_granular_mdr_ranks.h); one process: its own. */
 static void pre_force(struct gravel *g, struct fix *f)
 {
     struct mdr_fix *d = f->data;
     const int setup = eng_in_setup(g);
     run_sync_host(g); /* host order = device order */
     struct atoms *A = &g->atoms;
-    const int n = A->n;
+    const int ranks = par_on(g);
+    struct mdr_ranks rk = {0};
+    struct mdr_wall mw[MDR_WALLS_MAX];
+    const int nw = walls_begin(g, d, mw, MDR_WALLS_MAX);
+    struct mdr_atoms V = {A->n, A->tag, A->x, A->radius, A->rmass, A->mask};
+    if (ranks) {
+        size_t stride[MDR_WALLS_MAX];
+        double *own[MDR_WALLS_MAX];
+        for (int k = 0; k < nw; k++) {
+            stride[k] = mw[k].stride;
+            own[k] = mw[k].own;
+        }
+        mdr_ranks_atoms(g, &rk, nw, stride, own, &V);
+        for (int k = 0; k < nw; k++)
+            mw[k].buf = rk.wall[k];
+    }
+    const int n = V.n;
     int64_t tmax = 0;
     for (int i = 0; i < n; i++)
-        tmax = A->tag[i] > tmax ? A->tag[i] : tmax;
+        tmax = V.tag[i] > tmax ? V.tag[i] : tmax;
     grow(g, d, tmax);
+    walls_state(g, d, nw);
     /* 1. the atoms (new ones set up, also at setup) */
     int moved = 0;
     for (int i = 0; i < n; i++) {
-        struct mdr_atom *a = &d->at[A->tag[i]];
+        struct mdr_atom *a = &d->at[V.tag[i]];
         const int fresh = !a->ready;
         if (fresh)
-            mdr_atom_init(a, A->radius[i]);
+            mdr_atom_init(a, V.radius[i]);
         if (setup && !fresh)
             continue;
-        const double r0 = A->radius[i];
-        mdr_atom_update(&d->mat, a, &A->radius[i]);
-        moved |= A->radius[i] != r0;
+        const double r0 = V.radius[i];
+        mdr_atom_update(&d->mat, a, &V.radius[i]);
+        moved |= V.radius[i] != r0;
     }
     for (int i = 0; i < n; i++) {
-        struct mdr_atom *a = &d->at[A->tag[i]];
+        struct mdr_atom *a = &d->at[V.tag[i]];
         a->ddelta_bar = 0.0;
         if (!setup)
             mdr_atom_zero_sums(a);
     }
+    if (ranks && moved)
+        mdr_ranks_radius_back(&rk, A->radius);
     struct dev_atoms *da = eng_atoms(g);
     if (moved && !da->shared)
-        eng_write_reals(g, da->radius, (size_t)n, A->radius);
+        eng_write_reals(g, da->radius, (size_t)A->n, A->radius);
+    if (ranks && moved) /* the ghosts' new radii for this step's contacts */
+        par_forward_radii(g);
     /* the radii the list was built for; a rebuild once one grew by skin / 4 */
     const bigint builds = g->eng->st.nbuilds;
     int regrow = 0;
     for (int i = 0; i < n; i++) {
-        struct mdr_atom *a = &d->at[A->tag[i]];
+        struct mdr_atom *a = &d->at[V.tag[i]];
         if (builds != d->builds)
-            a->Rlist = A->radius[i];
-        regrow |= A->radius[i] - a->Rlist > 0.25 * g->neigh.skin;
+            a->Rlist = V.radius[i];
+        regrow |= V.radius[i] - a->Rlist > 0.25 * g->neigh.skin;
     }
     d->builds = builds;
     if (regrow)
         nbr_radii_changed(g);
 
-    /* the contacts and their history rows; the mdr walls' state */
-    struct mdr_wall mw[MDR_WALLS_MAX];
-    const int nw = walls_begin(g, d, mw, MDR_WALLS_MAX);
+    /* the contacts and their history rows */
     int yield_new = 0;
     const struct nbr_list *l = nbr_list(g);
-    struct mdr_scene s = {0};
-    s.nc = l->ncontact;
-    s.hw = g->eng->hist_n;
-    if (s.nc == 0) {
-        if (!setup)
-            walls_mean_disp(g, d, mw, nw);
-        walls_force(g, d, mw, nw, !setup, &yield_new);
-        yield_warn(g, d, yield_new);
-        return;
+    const int nloc = l->ncontact, hw = g->eng->hist_n;
+    double *hloc = NULL;
+    int *cloc = NULL;
+    struct mdr_scene s = {.v = &V, .hw = hw};
+    if (nloc > 0) {
+        cloc = gr_malloc(g, 2 * (size_t)nloc * sizeof(int));
+        hloc = gr_malloc(g, (size_t)nloc * hw * sizeof(double));
+        eng_read(g, l->ci, 0, (size_t)nloc * sizeof(int), cloc);
+        eng_read(g, l->cj, 0, (size_t)nloc * sizeof(int), cloc + nloc);
+        eng_read_reals(g, l->shear, (size_t)nloc * hw, hloc);
     }
-    s.ci = gr_malloc(g, (size_t)s.nc * sizeof(int));
-    s.cj = gr_malloc(g, (size_t)s.nc * sizeof(int));
-    s.ord = gr_malloc(g, (size_t)s.nc * sizeof(int));
-    s.hist = gr_malloc(g, (size_t)s.nc * s.hw * sizeof(double));
-    eng_read(g, l->ci, 0, (size_t)s.nc * sizeof(int), s.ci);
-    eng_read(g, l->cj, 0, (size_t)s.nc * sizeof(int), s.cj);
-    eng_read_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
+    if (ranks) {
+        mdr_ranks_contacts(g, &rk, nloc, cloc, cloc + nloc, hloc, hw);
+        s.nc = rk.nc;
+        s.ci = rk.ci;
+        s.cj = rk.cj;
+        s.hist = rk.hist;
+    } else {
+        s.nc = nloc;
+        s.ci = cloc;
+        s.cj = cloc + nloc;
+        s.hist = hloc;
+    }
+    s.ord = gr_malloc(g, ((size_t)s.nc + 1) * sizeof(int));
     for (int c = 0; c < s.nc; c++)
         s.ord[c] = c;
-    sort_tag = A->tag;
+    sort_tag = V.tag;
     sort_ci = s.ci;
     sort_cj = s.cj;
-    qsort(s.ord, (size_t)s.nc, sizeof(int), cmp_contact);
+    if (s.nc > 1)
+        qsort(s.ord, (size_t)s.nc, sizeof(int), cmp_contact);
 
     /* 2. penalties, 3. mean surface displacements (not at setup) */
-    if (!setup) {
+    if (!setup && s.nc > 0) {
         penalties(g, d, &s);
         for (int m = 0; m < s.nc; m++) {
             const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
             double *h = s.hist + (size_t)c * s.hw, dd[3];
-            const double r = sep(g, i, j, dd), radsum = A->radius[i] + A->radius[j];
+            const double r = sep(g, &V, i, j, dd), radsum = V.radius[i] + V.radius[j];
             if (!(r * r < radsum * radsum))
                 continue; /* step 4 forgets its history */
             const double delta = radsum - r;
             const double *hm = h + d->hoff;
             const double dmax = fmax(hm[MH_DELTA_MAX], delta);
             double ds[2]; /* side 0: the partner j (higher tag), side 1: the owner i */
-            mdr_side_deltas(dmax, hm[MH_DELTAP_0], hm[MH_DELTAP_1], delta, A->radius[j],
-                            A->radius[i], 0, ds);
-            struct mdr_atom *a0 = &d->at[A->tag[j]], *a1 = &d->at[A->tag[i]];
+            mdr_side_deltas(dmax, hm[MH_DELTAP_0], hm[MH_DELTAP_1], delta, V.radius[j],
+                            V.radius[i], 0, ds);
+            struct mdr_atom *a0 = &d->at[V.tag[j]], *a1 = &d->at[V.tag[i]];
             if (a0->Acon0 != 0.0)
                 a0->ddelta_bar += hm[MH_AC_0] / a0->Acon0 * (ds[0] - hm[MH_DELTA_0]);
             if (a1->Acon0 != 0.0)
                 a1->ddelta_bar += hm[MH_AC_1] / a1->Acon0 * (ds[1] - hm[MH_DELTA_1]);
         }
-        walls_mean_disp(g, d, mw, nw);
     }
+    if (!setup)
+        walls_mean_disp(&V, d, mw, nw);
 
     /* 4. the forces */
     const unsigned frozen = fix_frozen_groupbit(g);
     for (int m = 0; m < s.nc; m++) {
         const int c = s.ord[m], i = s.ci[c], j = s.cj[c];
         double *h = s.hist + (size_t)c * s.hw, dd[3];
-        const double r = sep(g, i, j, dd), radsum = A->radius[i] + A->radius[j];
+        const double r = sep(g, &V, i, j, dd), radsum = V.radius[i] + V.radius[j];
         if (!(r * r < radsum * radsum)) { /* apart: LAMMPS's history is zero */
             for (int k = 0; k < s.hw - g->eng->hist_owner; k++)
                 h[k] = 0.0;
             continue;
         }
         const double nrm[3] = {-dd[0] / r, -dd[1] / r, -dd[2] / r};
-        double meff = A->rmass[i] * A->rmass[j] / (A->rmass[i] + A->rmass[j]);
-        if (A->mask[i] & frozen)
-            meff = A->rmass[j];
-        if (A->mask[j] & frozen)
-            meff = A->rmass[i];
-        struct mdr_atom *a2[2] = {&d->at[A->tag[j]], &d->at[A->tag[i]]};
-        const double R2[2] = {A->radius[j], A->radius[i]};
+        double meff = V.rmass[i] * V.rmass[j] / (V.rmass[i] + V.rmass[j]);
+        if (V.mask[i] & frozen)
+            meff = V.rmass[j];
+        if (V.mask[j] & frozen)
+            meff = V.rmass[i];
+        struct mdr_atom *a2[2] = {&d->at[V.tag[j]], &d->at[V.tag[i]]};
+        const double R2[2] = {V.radius[j], V.radius[i]};
         mdr_pair_force(&d->mat, h + d->hoff, radsum - r, a2, R2, nrm, meff, !setup,
                        &yield_new);
     }
-    walls_force(g, d, mw, nw, !setup, &yield_new);
+    walls_force(&V, d, mw, nw, !setup, &yield_new);
     yield_warn(g, d, yield_new);
-    eng_write_reals(g, l->shear, (size_t)s.nc * s.hw, s.hist);
-    free(s.ci);
-    free(s.cj);
+    walls_end(g, mw, nw, ranks ? &rk : NULL);
+    if (ranks && nloc > 0)
+        mdr_ranks_contacts_back(&rk, hloc);
+    if (nloc > 0)
+        eng_write_reals(g, l->shear, (size_t)nloc * hw, hloc);
+    free(cloc);
+    free(hloc);
     free(s.ord);
-    free(s.hist);
+    mdr_ranks_free(&rk);
 }
 
 /* restart: every atom's state by tag (tags with state only) */

@@ -9,6 +9,7 @@
 # mill (a turning STL mesh, its force and torque in thermo), a mesh's stress and
 # wear (fix mesh/surface/stress, dump mesh/gran/VTK), LIGGGHTS's insert/pack and
 # insert/stream, the meshGran, heatTransfer_1 and packing (fix adapt) tutorials,
+# pair granular's mdr model with its mdr plane walls (LAMMPS's triaxial compaction),
 # cohesive spheres
 # in a Taylor-Green vortex (fix drag, compute agglomerate and its histogram
 # file), three fix pour decks, a gas whose box fix deform changes every
@@ -945,24 +946,6 @@ same pair_local_history_np2 locp.in 2 ""
 same pair_local_history_np3 locp.in 3 ""
 ref_run locp.in "-precision single"
 same pair_local_history_single_np2 locp.in 2 "-precision single"
-# pair granular's mdr model keeps per-atom state on one rank (fix granular/mdr): refused
-cat > mdr.in <<'IN'
-units si
-atom_style sphere
-region box block -4 4 -4 4 -4 4
-create_box 1 box
-create_atoms 1 single -0.5001 0 0
-create_atoms 1 single 0.5001 0 0
-set atom * diameter 1.0 density 1000
-pair_style granular
-pair_coeff * * mdr 1e9 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0 0.5
-fix 1 all nve/sphere
-timestep 1e-6
-run 10
-IN
-mpirun -np 2 "$par" -in mdr.in -log none > mdr.out 2>&1; rc=$?
-check mdr_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: .*cannot run on 2 MPI ranks yet" mdr.out)" -eq 1 ] && grep -q "granular/mdr" mdr.out'
-
 # fix ave/time, ave/chunk and ave/histo sample on every rank's atoms gathered
 # for their sampling steps: their files the same bytes as one process's;
 # a variable input (evaluated on every rank's atoms gathered) too: the same file
@@ -1067,6 +1050,73 @@ gr 3 ca.in c31.a "-precision single"; ra=$?; gr 1 cb.in c31.out "-precision sing
 check restart_chute_single_np3_to_1 '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s cref.dump ] && cmp -s cref.dump c31.dump && [ "$(rows cref.out)" = "$(rows c31.out)" ] && [ "$(rows c31.out | wc -l)" -eq 4 ] && grep -q "^Restart: exact continuation of step 120$" c31.out'
 gr 2 cb.in c32.out "-precision single"; rb=$?
 check restart_chute_read_np2_said '[ $rb -eq 0 ] && grep -q "^Restart: continuation of step 120 with its forces; the setup exchange shrink-wraps the box" c32.out'
+
+# pair granular's mdr model (fix granular/mdr's per-atom state, contact penalties
+# and mdr plane walls): every rank gathers the bookkeeping's inputs each step and
+# evaluates it in tag order as one process. A 64-sphere gas between two mdr plane
+# walls (plastic contacts grow the radii, 100 rebuilds, atoms crossing the slabs)
+# on 2, 3 and 4 ranks and on 2 in single precision; LAMMPS's
+# in.triaxial.compaction.12 (six moving mdr walls, tests/reference/mdr) on 2 and
+# 4 (2 x 2 x 1) ranks; a restart written on 3 ranks read on 2 and one written
+# on 2 read on 4, as one process writing and reading
+cat > mdr.in <<'IN'
+units           si
+atom_style      sphere
+boundary        p p f
+comm_modify     vel yes
+lattice         sc 1.0
+region          box block 0 4 0 4 0 5
+create_box      1 box
+region          fill block 0 4 0 4 0.5 4.5
+create_atoms    1 region fill
+set             group all diameter 0.9 density 1000
+velocity        all create 1e28 4928459 loop geom
+pair_style      granular
+pair_coeff      * * mdr 1e9 0.3 50e6 0.0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0.0 0.5
+region          floor plane 0 0 0 0 0 1 side in units box
+region          roof plane 0 0 5 0 0 -1 side in units box
+fix             wf all wall/gran/region granular mdr 1e9 0.3 50e6 0.0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0.0 0.5 region floor
+fix             wr all wall/gran/region granular mdr 1e9 0.3 50e6 0.0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0.0 0.5 region roof
+fix             g all gravity 100.0 vector 0 0 -1
+neighbor        0.05 bin
+neigh_modify    every 1 delay 0
+fix             1 all nve/sphere
+timestep        2e-5
+compute         1 all erotate/sphere
+thermo_style    custom step atoms ke c_1 press
+thermo_modify   norm no format float %.17g
+thermo          500
+run             3000
+run             2000
+write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz radius modify sort id format float %.17g
+IN
+ref_run mdr.in
+check mdr_radii_grow '[ "$(awk "NR > 9 && \$11 > 0.45 + 1e-9" ref.dump | wc -l)" -ge 1 ]'
+same mdr_np2 mdr.in 2 ""
+same mdr_np3 mdr.in 3 ""
+same mdr_np4 mdr.in 4 ""
+ref_run mdr.in "-precision single"
+same mdr_single_np2 mdr.in 2 "-precision single"
+cp "$root/tests/reference/mdr/spheres12.data" .
+sed -e 's/^thermo_style  custom dt step atoms ke c_1 vol/thermo_style  custom step atoms ke c_1 vol/' \
+    -e 's/^thermo_modify lost ignore norm no/thermo_modify lost ignore norm no format float %.17g/' \
+    -e 's/^thermo        100/thermo        2000/' "$root/tests/reference/mdr/in.triaxial.compaction.12" > tric.in
+echo 'write_dump all custom final.dump id x y z vx vy vz omegax omegay omegaz radius modify sort id format float %.17g' >> tric.in
+ref_run tric.in
+same mdr_triaxial12_np2 tric.in 2 ""
+same mdr_triaxial12_np4 tric.in 4 "" "2 2 1"
+sed -e '/^run             2000/d' -e 's/^run             3000/run             3000\nwrite_restart   m.bin/' -e '/^write_dump/d' mdr.in > ma.in
+{ echo 'read_restart    m.bin'; grep -E "^(pair_|region          (floor|roof)|fix|neigh|compute|thermo)" mdr.in
+  echo 'run             2000'; grep "^write_dump" mdr.in; } > mb.in
+gr 1 ma.in mref.a; gr 1 mb.in mref.out; mv final.dump mref.dump
+for c in "3 2" "2 4"; do
+    set -- $c
+    nm=mdr_restart_np$1_to_np$2
+    gr "$1" ma.in "$nm.a"; ra=$?
+    gr "$2" mb.in "$nm.out"; rb=$?
+    mv final.dump "$nm.dump" 2> /dev/null
+    check "$nm" '[ $ra -eq 0 ] && [ $rb -eq 0 ] && [ -s mref.dump ] && cmp -s mref.dump "$nm.dump" && [ "$(rows mref.a)" = "$(rows "$nm.a")" ] && [ "$(rows mref.out)" = "$(rows "$nm.out")" ] && [ "$(rows "$nm.out" | wc -l)" -eq 5 ] && grep -q "^Restart: exact continuation of step 3000$" "$nm.out"'
+done
 
 # fix viscous/nonlinear (LAMMPS 2026's Schiller-Naumann drag): per atom, no communication
 sed 's/^fix             3 active nve\/sphere/fix 3 active nve\/sphere\nfix 4 all viscous\/nonlinear 0.1 0.01/' chute.in > visc.in
