@@ -126,6 +126,37 @@ static void grow(struct gravel *g, struct mdr_fix *d, int64_t tag)
 
 /* LAMMPS's setup_pre_force checks: pair granular whose every type pair is
  * the one mdr model. */
+#define MDR_WALLS_MAX 64 /* mdr walls in one run */
+
+/* The walls' contact state of a restart file (its marker record, then the
+ * rows; sizes checked by read_restart) into d->wallh, by tag. */
+static void walls_restore(struct gravel *g, struct mdr_fix *d, const unsigned char *p, size_t n)
+{
+    double head[2];
+    memcpy(head, p + sizeof(int64_t), sizeof head);
+    const int nw = (int)head[0];
+    const size_t row = (size_t)nw * MH_N, wb = sizeof(int64_t) + row * sizeof(double);
+    int64_t cap = d->cap;
+    for (size_t o = MDR_REC; o + wb <= n; o += wb) {
+        int64_t tag;
+        memcpy(&tag, p + o, sizeof tag);
+        if (tag < 1 || tag > ((int64_t)1 << 40))
+            gr_error(g, "fix granular/mdr: the restart file's wall state names atom %lld",
+                     (long long)tag);
+        if (tag + 1 > cap)
+            cap = tag + 1;
+    }
+    free(d->wallh);
+    d->wallh = gr_calloc(g, (size_t)(cap ? cap : 1) * row, sizeof *d->wallh);
+    d->wcap = cap;
+    d->wall_n = nw;
+    for (size_t o = MDR_REC; o + wb <= n; o += wb) {
+        int64_t tag;
+        memcpy(&tag, p + o, sizeof tag);
+        memcpy(d->wallh + (size_t)tag * row, p + o + sizeof tag, row * sizeof(double));
+    }
+}
+
 static void init(struct gravel *g, struct fix *f)
 {
     struct mdr_fix *d = f->data;
@@ -141,10 +172,13 @@ static void init(struct gravel *g, struct fix *f)
     d->dtype = mat[6];
     d->hoff = off;
     d->builds = -1;
-    if (d->restart) { /* read_restart's state (atom_vals) */
-        for (size_t o = 0; o + MDR_REC <= d->restart_len; o += MDR_REC) {
+    if (d->restart) { /* read_restart's state (atom_vals; then the walls', checked) */
+        size_t o = 0;
+        for (; o + MDR_REC <= d->restart_len; o += MDR_REC) {
             int64_t tag;
             memcpy(&tag, d->restart + o, sizeof tag);
+            if (tag == -1)
+                break;
             if (tag < 1 || tag > ((int64_t)1 << 40))
                 gr_error(g, "fix granular/mdr: the restart file's state names atom %lld",
                          (long long)tag);
@@ -155,6 +189,8 @@ static void init(struct gravel *g, struct fix *f)
                        sizeof(double));
             a->ready = 1;
         }
+        if (o + MDR_REC <= d->restart_len)
+            walls_restore(g, d, d->restart + o, d->restart_len - o);
         free(d->restart);
         d->restart = NULL;
     }
@@ -283,7 +319,6 @@ static void yield_warn(struct gravel *g, struct mdr_fix *d, int yield_new)
     }
 }
 
-#define MDR_WALLS_MAX 64
 
 /* ---- the mdr walls (fix wall/gran/region granular mdr ...) ----
  * LAMMPS's FixGranularMDR::update_fix_gran_wall and the walls' calls of
@@ -638,7 +673,25 @@ static void pre_force(struct gravel *g, struct fix *f)
     mdr_ranks_free(&rk);
 }
 
-/* restart: every atom's state by tag (tags with state only) */
+/* restart: every atom's state by tag (tags with state only); then, when the
+ * runs had mdr walls, a marker record (tag -1, then the walls' count and the
+ * number of rows as doubles, the rest zero) and the rows: a tag and its
+ * walls' contact state (wall_n x MH_N doubles, d->wallh), for each tag whose
+ * state is not all zero. */
+static size_t wall_row_bytes(const struct mdr_fix *d)
+{
+    return sizeof(int64_t) + (size_t)d->wall_n * MH_N * sizeof(double);
+}
+
+static int wall_row_used(const struct mdr_fix *d, int64_t t)
+{
+    const double *h = d->wallh + (size_t)t * d->wall_n * MH_N;
+    for (size_t q = 0; q < (size_t)d->wall_n * MH_N; q++)
+        if (h[q] != 0)
+            return 1;
+    return 0;
+}
+
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
     (void)g;
@@ -656,15 +709,57 @@ static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf,
         }
         len += MDR_REC;
     }
+    if (!d->wallh || d->wall_n == 0)
+        return len;
+    int64_t rows = 0;
+    for (int64_t t = 0; t < d->wcap; t++)
+        rows += wall_row_used(d, t);
+    if (buf && len + MDR_REC <= cap) {
+        unsigned char mark[MDR_REC] = {0};
+        const int64_t m = -1;
+        const double head[2] = {(double)d->wall_n, (double)rows};
+        memcpy(mark, &m, sizeof m);
+        memcpy(mark + sizeof m, head, sizeof head);
+        memcpy(buf + len, mark, MDR_REC);
+    }
+    len += MDR_REC;
+    const size_t wb = wall_row_bytes(d);
+    for (int64_t t = 0; t < d->wcap; t++) {
+        if (!wall_row_used(d, t))
+            continue;
+        if (buf && len + wb <= cap) {
+            memcpy(buf + len, &t, sizeof t);
+            memcpy(buf + len + sizeof t, d->wallh + (size_t)t * d->wall_n * MH_N,
+                   wb - sizeof t);
+        }
+        len += wb;
+    }
     return len;
 }
 
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct mdr_fix *d = f->data;
-    if (len % MDR_REC)
+    size_t atoms = 0; /* the atom records' bytes (before the walls' marker) */
+    while (atoms + MDR_REC <= len) {
+        int64_t tag;
+        memcpy(&tag, buf + atoms, sizeof tag);
+        if (tag == -1)
+            break;
+        atoms += MDR_REC;
+    }
+    if (atoms + MDR_REC <= len) { /* the walls' part: its size is checked here */
+        double head[2];
+        memcpy(head, buf + atoms + sizeof(int64_t), sizeof head);
+        const size_t wb = sizeof(int64_t) + (size_t)head[0] * MH_N * sizeof(double);
+        if (!(head[0] >= 1 && head[0] <= MDR_WALLS_MAX && head[1] >= 0 &&
+              len == atoms + MDR_REC + (size_t)head[1] * wb))
+            gr_error(g, "fix granular/mdr: the restart file's wall state (%g walls, %g rows) "
+                        "does not fill its %zu bytes", head[0], head[1], len - atoms);
+    } else if (atoms != len) {
         gr_error(g, "fix granular/mdr: the restart file's state has %zu bytes, not a multiple "
                     "of %zu", len, (size_t)MDR_REC);
+    }
     free(d->restart);
     d->restart = gr_malloc(g, len ? len : 1);
     memcpy(d->restart, buf, len);
