@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atom_custom.h"
 #include "atoms.h"
 #include "compute.h"
 #include "engine.h"
@@ -265,6 +266,83 @@ static double atom_value(struct ep *e, const char *name, double idv)
         ep_fail(e, msg);
     }
     return own_value(a, name, i);
+}
+
+/* A custom property's operand (fix property/atom): i_name d_name (vectors),
+ * i2_name[k] d2_name[k] (column k of an array), each followed by [ID] for
+ * that atom's value (any style), else the current atom's (atom style), as
+ * LAMMPS's Variable::evaluate reads them. */
+static double custom_operand(struct ep *e, const char *name)
+{
+    struct gravel *g = e->g;
+    int arr = name[1] == '2';
+    const char *nm = name + (arr ? 3 : 2);
+    int k = custom_find(&g->atoms, nm);
+    char msg[240];
+    if (k < 0) {
+        snprintf(msg, sizeof msg, "custom property %.64s does not exist (define it with fix "
+                                  "property/atom %.64s)", name, name);
+        ep_fail(e, msg);
+    }
+    const struct custom_prop *pr = &g->atoms.cus.p[k];
+    if (pr->isint != (name[0] == 'i') || (pr->cols != 0) != arr) {
+        char have[GR_CUSTOMLEN + 4];
+        snprintf(msg, sizeof msg, "custom property %.64s is %.70s, not %.64s", nm,
+                 custom_prefixed(&g->atoms, k, have), name);
+        ep_fail(e, msg);
+    }
+    struct custom_ref ref = {k, 0};
+    if (arr) {
+        if (*e->p != '[') {
+            snprintf(msg, sizeof msg, "%.64s is an array: %.64s[k] names its column k", name,
+                     name);
+            ep_fail(e, msg);
+        }
+        e->p++;
+        double c = parse_or(e);
+        if (!accept(e, "]"))
+            ep_fail(e, "missing ']'");
+        if (!(c >= 1 && c <= pr->cols) || c != floor(c)) {
+            snprintf(msg, sizeof msg, "column %g of %.64s is outside 1..%d", c, name, pr->cols);
+            ep_fail(e, msg);
+        }
+        ref.col = (int)c - 1;
+    }
+    if (*e->p == '[') {
+        e->p++;
+        double idv = parse_or(e);
+        if (!accept(e, "]"))
+            ep_fail(e, "missing ']'");
+        struct aslot *sl = NULL;
+        if (e->ax) {
+            int made;
+            sl = next_slot(e, &made);
+            if (!made)
+                return slot_value(e, sl);
+        }
+        if (!(idv >= 1 && idv <= 9.0e18) || idv != floor(idv)) {
+            snprintf(msg, sizeof msg, "%.64s[] needs a positive integer atom ID, got %g", name,
+                     idv);
+            ep_fail(e, msg);
+        }
+        run_sync_host(g);
+        int i = atoms_find_tag(&g->atoms, (int64_t)idv);
+        if (i < 0) {
+            snprintf(msg, sizeof msg, "atom ID %lld in %.64s[] does not exist", (long long)idv,
+                     name);
+            ep_fail(e, msg);
+        }
+        double v = custom_get(&g->atoms, ref, i);
+        if (sl)
+            sl->s = v;
+        return v;
+    }
+    if (!e->ax) {
+        snprintf(msg, sizeof msg, "'%.64s' is per-atom: an atom-style variable, or %.64s[ID]",
+                 name, name);
+        ep_fail(e, msg);
+    }
+    return custom_get(&g->atoms, ref, e->ax->i);
 }
 
 /* ---- math functions --------------------------------------------------------- */
@@ -569,6 +647,9 @@ static double parse_primary(struct ep *e)
         }
         return v;
     }
+    if ((name[0] == 'i' || name[0] == 'd') &&
+        (name[1] == '_' || (name[1] == '2' && name[2] == '_')) && name[name[1] == '_' ? 2 : 3])
+        return custom_operand(e, name);
     if (*e->p == '[' && is_atom_value(name)) {
         e->p++;
         double id = parse_or(e);
