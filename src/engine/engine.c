@@ -348,6 +348,16 @@ void eng_append(struct gravel *g, int nold)
     e->n_at_sync = n;
 }
 
+void eng_put_custom(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *s = &e->a;
+    if (!e->active || !s->custom || s->shared || s->custom_slots != g->atoms.cus.slots)
+        return;
+    field_put(g, s, s->custom, FD_RAW, sizeof(double), s->custom_slots, 0, s->n,
+              g->atoms.custom);
+}
+
 void eng_reload(struct gravel *g, int nlocal, int nghost)
 {
     struct engine *e = g->eng;

@@ -39,6 +39,9 @@ void eng_fix_state(struct gravel *g, int keep);
  * fix per-atom state is zero. The caller forces a neighbor rebuild on this
  * step. The capacity must hold them (fix reserve at run start). */
 void eng_append(struct gravel *g, int nold);
+/* During a run, after run_sync_host: the host's custom property values of
+ * the device's atoms to the device (a fix wrote them on the host). */
+void eng_put_custom(struct gravel *g);
 
 /* A decomposed run's rebuild (src/parallel/par.c): the host atoms 0 ..
  * nlocal + nghost - 1 (owned, then ghosts) to the device, which grows as
