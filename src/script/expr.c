@@ -268,10 +268,11 @@ static double atom_value(struct ep *e, const char *name, double idv)
     return own_value(a, name, i);
 }
 
-/* A custom property's operand (fix property/atom): i_name d_name (vectors),
- * i2_name[k] d2_name[k] (column k of an array), each followed by [ID] for
- * that atom's value (any style), else the current atom's (atom style), as
- * LAMMPS's Variable::evaluate reads them. */
+/* A custom property's operand (fix property/atom), as LAMMPS's variable
+ * reads them: i_name d_name (per-atom vectors), i_name[I] d_name[I] (atom
+ * I's value), i2_name[J] d2_name[J] (column J, per atom), i2_name[I][J]
+ * d2_name[I][J] (atom I's column J). Per-atom forms need an atom-style
+ * evaluation. */
 static double custom_operand(struct ep *e, const char *name)
 {
     struct gravel *g = e->g;
@@ -291,28 +292,34 @@ static double custom_operand(struct ep *e, const char *name)
                  custom_prefixed(&g->atoms, k, have), name);
         ep_fail(e, msg);
     }
-    struct custom_ref ref = {k, 0};
-    if (arr) {
-        if (*e->p != '[') {
-            snprintf(msg, sizeof msg, "%.64s is an array: %.64s[k] names its column k", name,
-                     name);
-            ep_fail(e, msg);
-        }
+    double b[2];
+    int nb = 0;
+    while (nb < 2 && *e->p == '[') {
         e->p++;
-        double c = parse_or(e);
+        b[nb++] = parse_or(e);
         if (!accept(e, "]"))
             ep_fail(e, "missing ']'");
+    }
+    if (nb == 2 && !arr) {
+        snprintf(msg, sizeof msg, "%.64s is a vector: %.64s[ID], not two indices", name, name);
+        ep_fail(e, msg);
+    }
+    if (arr && nb == 0) {
+        snprintf(msg, sizeof msg, "%.64s is an array: %.64s[J] (column J per atom) or "
+                                  "%.64s[ID][J]", name, name, name);
+        ep_fail(e, msg);
+    }
+    struct custom_ref ref = {k, 0};
+    if (arr) {
+        double c = b[nb - 1];
         if (!(c >= 1 && c <= pr->cols) || c != floor(c)) {
             snprintf(msg, sizeof msg, "column %g of %.64s is outside 1..%d", c, name, pr->cols);
             ep_fail(e, msg);
         }
         ref.col = (int)c - 1;
     }
-    if (*e->p == '[') {
-        e->p++;
-        double idv = parse_or(e);
-        if (!accept(e, "]"))
-            ep_fail(e, "missing ']'");
+    if (nb == (arr ? 2 : 1)) { /* one atom's value */
+        double idv = b[0];
         struct aslot *sl = NULL;
         if (e->ax) {
             int made;
@@ -338,8 +345,8 @@ static double custom_operand(struct ep *e, const char *name)
         return v;
     }
     if (!e->ax) {
-        snprintf(msg, sizeof msg, "'%.64s' is per-atom: an atom-style variable, or %.64s[ID]",
-                 name, name);
+        snprintf(msg, sizeof msg, "'%.64s' is per-atom: use it in an atom-style variable, or "
+                                  "name an atom: %.64s[ID]%s", name, name, arr ? "[J]" : "");
         ep_fail(e, msg);
     }
     return custom_get(&g->atoms, ref, e->ax->i);
