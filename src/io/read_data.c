@@ -37,7 +37,8 @@
 #include "group.h"
 #include "log.h"
 
-#define MAXWORDS 256
+#define MAXWORDS 256      /* a fix section's lines (an array's columns) */
+#define LINEWORDS 16      /* every other line */
 #define MAXFIXSECT 8
 
 struct rd {
@@ -47,7 +48,7 @@ struct rd {
     char *line;
     size_t cap;
     long lineno;
-    int nw;
+    int nw, maxw;           /* words of the line; the most a line may have */
     char *w[MAXWORDS];
     int nocoeff;            /* skip Pair Coeffs / PairIJ Coeffs sections */
     int extra_types;        /* extra/atom/types: types beyond the file's */
@@ -85,7 +86,7 @@ static int rd_next(struct rd *r, char **comment)
     char *save = NULL;
     for (char *t = strtok_r(r->line, " \t\r\n\v\f", &save); t;
          t = strtok_r(NULL, " \t\r\n\v\f", &save)) {
-        if (r->nw == MAXWORDS)
+        if (r->nw == (r->maxw ? r->maxw : LINEWORDS))
             gr_error(r->g, "%s:%ld: too many values on one line", r->path, r->lineno);
         r->w[r->nw++] = t;
     }
@@ -345,11 +346,14 @@ static void read_fix_section(struct rd *r, const char *fix_id, const char *sec, 
     if (nc < 0)
         gr_error(g, "%s:%ld: fix %s has more than %d values per atom for its %s section",
                  r->path, r->lineno, fix_id, MAXWORDS - 1, sec);
+    r->maxw = natoms > 0 ? MAXWORDS : 0;
     for (bigint k = 0; k < natoms; k++) {
         if (k == 0)
             first_data_line(r, sec);
         else
             next_data_line(r, sec, k, natoms);
+        if (k == natoms - 1)
+            r->maxw = 0; /* the next section's keyword: the usual limit */
         if (r->nw != nc + 1)
             gr_error(g, "%s:%ld: %s lines of fix %s need %d values (atom-ID and %d of the "
                         "fix's properties), got %d",
