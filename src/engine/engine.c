@@ -174,15 +174,16 @@ static int set_matches_run(struct gravel *g, const struct dev_atoms *s)
 size_t eng_atom_bytes(struct gravel *g)
 {
     struct engine *e = g->eng;
+    size_t cb = (size_t)g->atoms.cus.slots * sizeof(double); /* custom properties */
     if (share_host(e))
-        return 0; /* the host arrays */
+        return cb; /* the host arrays, and the custom properties' re-sort scratch */
     size_t b = e->single ? 3 * e->rsz : 0; /* xlo */
 #define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
     if (field_on(g, when))                                                                    \
         b += field_bytes(e, dev, sizeof(ctype), width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
-    return b + 2 * (size_t)g->atoms.cus.slots * sizeof(double);
+    return b + 2 * cb; /* the custom properties and their re-sort scratch */
 }
 
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
