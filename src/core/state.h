@@ -85,6 +85,8 @@ struct atoms {
     int n, cap;
     int ntypes;
     ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays (atom_fields.h) */
+    struct atom_custom cus; /* custom properties (fix property/atom i_ d_ i2_ d2_) */
+    double *custom;         /* [cap * cus.slots]: their values, one record per atom */
     int molecule_flag;      /* 1: atoms carry molecule IDs (LAMMPS atom->molecule_flag) */
     int style_molecular;    /* atom_style hybrid sphere molecular: the IDs belong to the
                              * style (data files carry them), not to fix property/atom */

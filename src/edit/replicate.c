@@ -138,6 +138,10 @@ void cmd_replicate(struct gravel *g, int argc, char **argv)
                 a->x[3 * j + d] = nx[3 * j + d];
                 a->image[3 * j + d] = nim[3 * j + d];
             }
+            if (a->cus.slots) /* custom properties: the copies carry the values */
+                memcpy(a->custom + (size_t)j * a->cus.slots,
+                       a->custom + (size_t)i * a->cus.slots,
+                       (size_t)a->cus.slots * sizeof(double));
         }
     }
     free(nx);

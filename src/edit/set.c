@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "atom_custom.h"
 #include "domain.h"
 #include "error.h"
 #include "group.h"
@@ -166,6 +167,7 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         const char *kw = argv[k];
         long count = 0;
         int nv = 1, shift = 0;
+        struct custom_ref cref;
         if (!strcmp(kw, "property/atom")) { /* LIGGGHTS: property/atom NAME value */
             arg_need(g, argc, k, 2, kw);
             if (strcmp(argv[k + 1], "Temp") && strcmp(argv[k + 1], "heatSource"))
@@ -355,6 +357,22 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         } else if (!strcmp(kw, "heatflow")) {
             gr_error(g, "keyword 'heatflow' is not settable: the heat flow is recomputed every "
                         "step from the contacts (LAMMPS's set has no heatflow keyword either)");
+        } else if (custom_ref_parse(g, kw, "set", &cref, NULL)) {
+            /* LAMMPS: i_name takes an integer (a variable's value is truncated to
+             * one), d_name any number; i2_name[k] d2_name[k] set column k */
+            const struct custom_prop *cp = &a->cus.p[cref.idx];
+            double cv = 0;
+            const double *p = kw_value(g, v[0], kw, &cv, buf, dry);
+            if (!p)
+                custom_check_value(g, a, cref.idx, cv, "set");
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double val = VAL(p, cv, i);
+                    if (p && cp->isint && isfinite(val))
+                        val = trunc(val);
+                    *custom_at(a, cref, i) = custom_check_value(g, a, cref.idx, val, "set");
+                    count++;
+                }
         } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge")) {
             gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
         } else {

@@ -22,6 +22,10 @@ struct dev_atoms {
     int n;                      /* atoms on the device */
     ATOM_FIELDS(DEV_ATOM_MEMBER)
     cl_mem xlo;                 /* REAL[3n]: low part of x in single precision, else NULL */
+    cl_mem custom;              /* the custom properties' records (atoms.custom, raw
+                                 * doubles), NULL when there are none */
+    cl_mem custom_tmp;          /* the re-sort's scratch for them (never shared) */
+    int custom_slots;           /* doubles per atom of custom */
     int shared;                 /* the buffers are the host arrays of g->atoms (engine.c) */
     uint64_t shared_key;        /* which host arrays (their addresses and capacity) */
 };

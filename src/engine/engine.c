@@ -102,6 +102,9 @@ static void release_set(struct dev_atoms *s)
     ATOM_FIELDS(RELEASE)
 #undef RELEASE
     release_mem(&s->xlo);
+    release_mem(&s->custom);
+    release_mem(&s->custom_tmp);
+    s->custom_slots = 0;
 }
 
 /* In double precision on a CPU device on host memory the per-atom set is
@@ -118,6 +121,7 @@ static uint64_t host_key(const struct atoms *at)
     h = (h ^ (uint64_t)(uintptr_t)at->name) * 1099511628211ull;
     ATOM_FIELDS(KEY)
 #undef KEY
+    h = (h ^ (uint64_t)(uintptr_t)at->custom) * 1099511628211ull;
     return h;
 }
 
@@ -137,6 +141,13 @@ static void alloc_set(struct gravel *g, struct dev_atoms *s, int cap)
                             : eng_alloc(g, n * field_bytes(e, dev, sizeof(ctype), width), what);
     ATOM_FIELDS(ALLOC)
 #undef ALLOC
+    s->custom_slots = at->cus.slots;
+    if (s->custom_slots) {
+        size_t cb = n * (size_t)s->custom_slots * sizeof(double);
+        s->custom = s->shared ? ocl_wrap(g, &e->ocl, at->custom, cb, "custom properties")
+                              : eng_alloc(g, cb, "custom properties");
+        s->custom_tmp = eng_alloc(g, cb, "custom properties (re-sort scratch)");
+    }
     if (e->single)
         s->xlo = eng_alloc(g, 3 * n * e->rsz, "positions (low parts)");
     s->shared_key = s->shared ? host_key(at) : 0;
@@ -157,21 +168,22 @@ static int set_matches_run(struct gravel *g, const struct dev_atoms *s)
     ok = ok && (s->name != NULL) == (field_on(g, when) != 0);
     ATOM_FIELDS(MATCH)
 #undef MATCH
-    return ok;
+    return ok && s->custom_slots == g->atoms.cus.slots;
 }
 
 size_t eng_atom_bytes(struct gravel *g)
 {
     struct engine *e = g->eng;
+    size_t cb = (size_t)g->atoms.cus.slots * sizeof(double); /* custom properties */
     if (share_host(e))
-        return 0; /* the host arrays */
+        return cb; /* the host arrays, and the custom properties' re-sort scratch */
     size_t b = e->single ? 3 * e->rsz : 0; /* xlo */
 #define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
     if (field_on(g, when))                                                                    \
         b += field_bytes(e, dev, sizeof(ctype), width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
-    return b;
+    return b + 2 * cb; /* the custom properties and their re-sort scratch */
 }
 
 /* (Re)allocate the per-atom set for at least n atoms. Contents are not kept: call
@@ -202,6 +214,9 @@ static void put_atoms(struct gravel *g, int first, int n)
         field_put(g, s, s->name, dev, sizeof(ctype), width, first, n, at->name);
     ATOM_FIELDS(PUT)
 #undef PUT
+    if (s->custom)
+        field_put(g, s, s->custom, FD_RAW, sizeof(double), s->custom_slots, first, n,
+                  at->custom);
 }
 
 /* Per-atom state of fixes (fix.h): the one allocation path. A fix that
@@ -334,6 +349,16 @@ void eng_append(struct gravel *g, int nold)
     e->n_at_sync = n;
 }
 
+void eng_put_custom(struct gravel *g)
+{
+    struct engine *e = g->eng;
+    struct dev_atoms *s = &e->a;
+    if (!e->active || !s->custom || s->shared || s->custom_slots != g->atoms.cus.slots)
+        return;
+    field_put(g, s, s->custom, FD_RAW, sizeof(double), s->custom_slots, 0, s->n,
+              g->atoms.custom);
+}
+
 void eng_reload(struct gravel *g, int nlocal, int nghost)
 {
     struct engine *e = g->eng;
@@ -371,6 +396,8 @@ void run_sync_host(struct gravel *g)
         field_get(g, s, s->name, dev, sizeof(ctype), width, n, at->name);
         ATOM_FIELDS(GET)
 #undef GET
+        if (s->custom)
+            field_get(g, s, s->custom, FD_RAW, sizeof(double), s->custom_slots, n, at->custom);
     }
     e->tag_sum = tag_checksum(at);
     e->n_at_sync = n;

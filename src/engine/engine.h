@@ -17,11 +17,13 @@
 void eng_prepare(struct gravel *g);
 void eng_upload(struct gravel *g);
 /* Device bytes of one atom slot of the run's per-atom set (every field the
- * run holds, src/state/atom_fields.h). */
+ * run holds, src/state/atom_fields.h, and the custom properties' record with
+ * its re-sort scratch). */
 size_t eng_atom_bytes(struct gravel *g);
 /* 1 when the run's per-atom device buffers are the host arrays (a CPU
  * device on host memory, double precision; env GRAVEL_HOST_SHARE=0: never):
- * eng_atom_bytes() is then 0, and the run keeps a copy of the start's
+ * eng_atom_bytes() is then the custom properties' re-sort scratch only (0
+ * without them), and the run keeps a copy of the start's
  * positions, velocities and tags on the host (diagnose.h). */
 int eng_shares_host(struct gravel *g);
 /* Make sure the per-atom set holds at least n atoms (exactly n when it
@@ -39,6 +41,9 @@ void eng_fix_state(struct gravel *g, int keep);
  * fix per-atom state is zero. The caller forces a neighbor rebuild on this
  * step. The capacity must hold them (fix reserve at run start). */
 void eng_append(struct gravel *g, int nold);
+/* During a run, after run_sync_host: the host's custom property values of
+ * the device's atoms to the device (a fix wrote them on the host). */
+void eng_put_custom(struct gravel *g);
 
 /* A decomposed run's rebuild (src/parallel/par.c): the host atoms 0 ..
  * nlocal + nghost - 1 (owned, then ghosts) to the device, which grows as

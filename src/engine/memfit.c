@@ -89,10 +89,11 @@ static size_t held_bytes(struct gravel *g)
            acc_held_bytes(g);
 }
 
-/* Host bytes of one atom: the field table's host arrays (in use already). */
-static size_t host_atom_bytes(void)
+/* Host bytes of one atom: the field table's host arrays and the custom
+ * properties' record (in use already). */
+static size_t host_atom_bytes(const struct gravel *g)
 {
-    size_t b = 0;
+    size_t b = (size_t)g->atoms.cus.slots * sizeof(double);
 #define HOST(name, ctype, dev, width, when, life, sect, what) b += (width) * sizeof(ctype);
     ATOM_FIELDS(HOST)
 #undef HOST
@@ -134,7 +135,7 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
         avail = (double)left + (double)held - MARGIN;
         /* the host arrays grow with the atoms too (their capacity by doubling: up to
          * twice the atoms' bytes), and the run start's copy (positions, tags) is to come */
-        double host = (double)host_atom_bytes();
+        double host = (double)host_atom_bytes(g);
         fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host + start);
         snprintf(why, sizeof why,
                  "the process may allocate only %zu more bytes under its address-space limit "

@@ -1193,6 +1193,18 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
 #undef REORDER
     if (s->xlo)
         reorder_array(g, b, s->xlo, 3 * e->rsz, nkeep);
+    if (s->custom) { /* the custom properties' records: their own scratch (any width) */
+        size_t cb = (size_t)s->custom_slots * sizeof(double);
+        cl_kernel k = b->k_reorder_words;
+        eng_arg_int(g, k, 0, nkeep);
+        eng_arg_int(g, k, 1, (int)(cb / 4));
+        eng_arg_mem(g, k, 2, b->perm);
+        eng_arg_mem(g, k, 3, s->custom);
+        eng_arg_mem(g, k, 4, s->custom_tmp);
+        eng_launch(g, k, (size_t)nkeep);
+        OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, s->custom_tmp, s->custom, 0, 0,
+                                         (size_t)nkeep * cb, 0, NULL, NULL));
+    }
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (!f->peratom)

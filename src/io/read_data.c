@@ -27,14 +27,19 @@
 #include <string.h>
 
 #include "args.h"
+#include "atom_custom.h"
 #include "atoms.h"
+#include "fix.h"
+#include "fix_property_atom.h"
 #include "domain.h"
 #include "error.h"
 #include "fileio.h"
 #include "group.h"
 #include "log.h"
 
-#define MAXWORDS 16
+#define MAXWORDS 256      /* a fix section's lines (an array's columns) */
+#define LINEWORDS 16      /* every other line */
+#define MAXFIXSECT 8
 
 struct rd {
     struct gravel *g;
@@ -43,10 +48,12 @@ struct rd {
     char *line;
     size_t cap;
     long lineno;
-    int nw;
+    int nw, maxw;           /* words of the line; the most a line may have */
     char *w[MAXWORDS];
     int nocoeff;            /* skip Pair Coeffs / PairIJ Coeffs sections */
     int extra_types;        /* extra/atom/types: types beyond the file's */
+    int nfix;               /* fix ID header section: sections a fix property/atom reads */
+    const char *fix_id[MAXFIXSECT], *fix_sect[MAXFIXSECT];
     /* tag -> index lookup, built after Atoms */
     int64_t *stag;
     int *sidx;
@@ -79,7 +86,7 @@ static int rd_next(struct rd *r, char **comment)
     char *save = NULL;
     for (char *t = strtok_r(r->line, " \t\r\n\v\f", &save); t;
          t = strtok_r(NULL, " \t\r\n\v\f", &save)) {
-        if (r->nw == MAXWORDS)
+        if (r->nw == (r->maxw ? r->maxw : LINEWORDS))
             gr_error(r->g, "%s:%ld: too many values on one line", r->path, r->lineno);
         r->w[r->nw++] = t;
     }
@@ -322,6 +329,75 @@ static void read_velocities(struct rd *r, bigint natoms)
     }
 }
 
+/* A fix property/atom's section (read_data ... fix ID NULL Section): lines
+ * "atom-ID value ...", the fix's properties in command order (an array's N
+ * columns in turn), one line per atom of the file, as LAMMPS's
+ * FixPropertyAtom::read_data_section. */
+static void read_fix_section(struct rd *r, const char *fix_id, const char *sec, bigint natoms)
+{
+    struct gravel *g = r->g;
+    struct atoms *a = &g->atoms;
+    const struct fix *f = NULL;
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (!strcmp(g->styles.fix[i]->id, fix_id))
+            f = g->styles.fix[i];
+    struct prop_column col[MAXWORDS];
+    int nc = property_atom_columns(g, f, col, MAXWORDS - 1);
+    if (nc < 0)
+        gr_error(g, "%s:%ld: fix %s has more than %d values per atom for its %s section",
+                 r->path, r->lineno, fix_id, MAXWORDS - 1, sec);
+    r->maxw = natoms > 0 ? MAXWORDS : 0;
+    for (bigint k = 0; k < natoms; k++) {
+        if (k == 0)
+            first_data_line(r, sec);
+        else
+            next_data_line(r, sec, k, natoms);
+        if (k == natoms - 1)
+            r->maxw = 0; /* the next section's keyword: the usual limit */
+        if (r->nw != nc + 1)
+            gr_error(g, "%s:%ld: %s lines of fix %s need %d values (atom-ID and %d of the "
+                        "fix's properties), got %d",
+                     r->path, r->lineno, sec, fix_id, nc + 1, nc, r->nw);
+        int64_t tag = rd_int(r, r->w[0], "atom ID");
+        int i = find_tag(r, a->n, tag);
+        if (i < 0)
+            gr_error(g, "%s:%ld: %s for unknown atom ID %s", r->path, r->lineno, sec, r->w[0]);
+        for (int c = 0; c < nc; c++) {
+            const char *w = r->w[1 + c];
+            switch (col[c].kind) {
+            case PC_MOL: {
+                int64_t m = rd_int(r, w, "molecule ID");
+                if (m < 0)
+                    gr_error(g, "%s:%ld: invalid molecule ID %s", r->path, r->lineno, w);
+                a->mol[i] = m;
+                break;
+            }
+            case PC_TEMPERATURE: a->temperature[i] = rd_num(r, w, "temperature"); break;
+            case PC_HEATFLOW: a->heatflow[i] = rd_num(r, w, "heat flow"); break;
+            case PC_CUSTOM: {
+                const struct custom_prop *p = &a->cus.p[col[c].ref.idx];
+                double v = p->isint ? (double)rd_int(r, w, p->name) : rd_num(r, w, p->name);
+                if (p->isint && (v < -2147483648.0 || v > 2147483647.0))
+                    gr_error(g, "%s:%ld: value %s of integer property %s does not fit an int",
+                             r->path, r->lineno, w, p->name);
+                struct custom_ref ref = {col[c].ref.idx, col[c].ref.col};
+                *custom_at(a, ref, i) = v;
+                break;
+            }
+            }
+        }
+    }
+}
+
+/* The fix keyword naming this section (a one- or two-word keyword), or -1. */
+static int fix_section(const struct rd *r, const char *sec)
+{
+    for (int k = 0; k < r->nfix; k++)
+        if (!strcmp(r->fix_sect[k], sec) || !strcmp(r->fix_sect[k], r->w[0]))
+            return k;
+    return -1;
+}
+
 static void read_masses(struct rd *r)
 {
     struct gravel *g = r->g;
@@ -458,6 +534,11 @@ static void read_file(struct rd *r, const double shift[3])
                 gr_error(g, "%s:%ld: a second Masses section", r->path, r->lineno);
             read_masses(r);
             masses_read = 1;
+        } else if (fix_section(r, sec) >= 0) {
+            if (!atoms_read)
+                gr_error(g, "%s:%ld: the %s section of fix %s must come after Atoms", r->path,
+                         r->lineno, sec, r->fix_id[fix_section(r, sec)]);
+            read_fix_section(r, r->fix_id[fix_section(r, sec)], sec, natoms);
         } else if (r->nocoeff && (!strcmp(sec, "Pair Coeffs") || !strcmp(sec, "PairIJ Coeffs"))) {
             skip_section(r, sec, sec[4] == 'I' ? ntypes * (ntypes + 1) / 2 : ntypes);
         } else if (!strcmp(sec, "Bonds") || !strcmp(sec, "Angles") ||
@@ -494,6 +575,8 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     double shift[3] = {0, 0, 0};
     int nocoeff = 0, extra_types = 0;
     const char *volatile group = NULL; /* read again after the setjmp below */
+    const char *fix_id[MAXFIXSECT], *fix_sect[MAXFIXSECT];
+    int nfix = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "shift")) {
             arg_need(g, argc, i, 3, "shift");
@@ -510,8 +593,26 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
             group = argv[++i];
             if (!strcmp(group, "all"))
                 gr_error(g, "group 'all' always holds every atom");
-        } else if (!strcmp(argv[i], "add") || !strcmp(argv[i], "offset") ||
-                   !strcmp(argv[i], "fix")) {
+        } else if (!strcmp(argv[i], "fix")) { /* fix ID header-string section-string */
+            arg_need(g, argc, i, 3, "fix");
+            const struct fix *f = NULL;
+            for (int k = 0; k < g->styles.nfix; k++)
+                if (!strcmp(g->styles.fix[k]->id, argv[i + 1]))
+                    f = g->styles.fix[k];
+            if (!f)
+                gr_error(g, "fix ID %.64s for read_data does not exist", argv[i + 1]);
+            if (!property_atom_is(f))
+                gr_error(g, "fix %s (%s) reads no data file sections: only fix property/atom "
+                            "does", f->id, f->style->name);
+            if (strcmp(argv[i + 2], "NULL"))
+                gr_error(g, "fix %s: header string '%.64s' must be NULL (fix property/atom "
+                            "reads no header line)", f->id, argv[i + 2]);
+            if (nfix == MAXFIXSECT)
+                gr_error(g, "more than %d fix keywords", MAXFIXSECT);
+            fix_id[nfix] = argv[i + 1];
+            fix_sect[nfix++] = argv[i + 3];
+            i += 3;
+        } else if (!strcmp(argv[i], "add") || !strcmp(argv[i], "offset")) {
             gr_error(g, "keyword '%s' is not supported", argv[i]);
         } else {
             gr_error(g, "unknown keyword '%.32s'", argv[i]);
@@ -523,6 +624,9 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
     r.path = argv[0];
     r.nocoeff = nocoeff;
     r.extra_types = extra_types;
+    r.nfix = nfix;
+    memcpy(r.fix_id, fix_id, sizeof fix_id);
+    memcpy(r.fix_sect, fix_sect, sizeof fix_sect);
     const char *why;
     r.fp = fio_open_read(argv[0], 0, &why);
     if (!r.fp)
@@ -537,7 +641,9 @@ void cmd_read_data(struct gravel *g, int argc, char **argv)
         free(r.stag);
         free(r.sidx);
         g->dom = saved; /* no box, no atoms: nothing half-read survives */
+        struct atom_custom cus = g->atoms.cus; /* the fixes' properties stay defined */
         atoms_free(&g->atoms);
+        g->atoms.cus = cus;
         if (outer)
             longjmp(*outer, 1);
         gr_report_error(g);

@@ -38,6 +38,7 @@
 #include <unistd.h>
 
 #include "args.h"
+#include "atom_custom.h"
 #include "atoms.h"
 #include "device.h"
 #include "domain.h"
@@ -56,6 +57,7 @@ enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
     S_MOLECULE, /* optional: molecule IDs (fix property/atom mol, or the atom style's) */
     S_HEAT,     /* optional: temperatures and heat flows (fix property/atom temperature) */
+    S_CUSTOM,   /* optional: custom properties (fix property/atom i_ d_ i2_ d2_) */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -196,6 +198,8 @@ struct image {
     ATOM_FIELDS(ATOM_FIELD_MEMBER) /* the per-atom arrays; mol NULL: no molecule IDs */
     int style_molecular;        /* atom_style hybrid sphere molecular */
     int heat_flag;              /* the S_HEAT section's ATOM_HEAT_* bits (0: none) */
+    struct atom_custom cus;     /* the S_CUSTOM section's properties (n 0: none) */
+    double *custom;             /* ... and their values, cus.slots per atom */
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
@@ -232,7 +236,8 @@ static void image_free(struct image *im)
 {
     if (!im)
         return;
-    void *p[] = {im->type_mass, im->devtag, im->ncount, im->partner, im->shear, im->xhold};
+    void *p[] = {im->type_mass, im->devtag, im->ncount, im->partner, im->shear, im->xhold,
+                 im->custom};
     for (size_t i = 0; i < sizeof p / sizeof *p; i++)
         free(p[i]);
 #define FREE_FIELD(name, ctype, dev, width, when, life, sect, what) free(im->name);
@@ -645,6 +650,57 @@ static int read_heat(struct image *im, struct rbuf *r, unsigned seen, char *err,
     return 1;
 }
 
+/* Optional: the custom properties, each as name, fix ID, integer flag and
+ * columns, then every atom's record (slots doubles, the properties in
+ * order; an integer property's values are exact integers). */
+static void write_custom(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    const struct atoms *a = &g->atoms;
+    if (!a->cus.n)
+        return;
+    size_t at = sect_begin(g, w, S_CUSTOM);
+    put_i32(g, w, a->n);
+    put_i32(g, w, a->cus.n);
+    for (int k = 0; k < a->cus.n; k++) {
+        put_str(g, w, a->cus.p[k].name);
+        put_str(g, w, a->cus.p[k].fix);
+        put_i32(g, w, a->cus.p[k].isint);
+        put_i32(g, w, a->cus.p[k].cols);
+    }
+    put(g, w, a->custom, (size_t)a->n * a->cus.slots * sizeof(double));
+    sect_end(w, at);
+}
+
+static int read_custom(struct image *im, struct rbuf *r, unsigned seen, char *err,
+                       size_t errlen)
+{
+    int nc = get_i32(r), np = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (!(seen >> S_ATOMS & 1u) || nc != im->n)
+        BAD("custom properties of %d atoms, not the atoms section's %d", nc, im->n);
+    if (np < 1 || np > GR_MAXCUSTOM)
+        BAD("invalid number of custom properties %d", np);
+    struct atom_custom *cu = &im->cus;
+    cu->n = np;
+    for (int k = 0; k < np && !r->bad; k++) {
+        struct custom_prop *p = &cu->p[k];
+        get_str(r, p->name, sizeof p->name);
+        get_str(r, p->fix, sizeof p->fix);
+        p->isint = get_i32(r);
+        p->cols = get_i32(r);
+        if (!r->bad && (!custom_name_ok(p->name) || (p->isint != 0 && p->isint != 1) ||
+                        p->cols < 0 || p->cols > 1000))
+            BAD("invalid custom property %d", k + 1);
+        p->slot = cu->slots;
+        p->restored = 1;
+        cu->slots += custom_width(p);
+    }
+    im->custom = get_array(r, (size_t)im->n * cu->slots, sizeof(double));
+    return 1;
+}
+
 static void write_pair(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     (void)c;
@@ -896,6 +952,7 @@ static const struct section {
     {S_ATOMS, "atoms", 1, write_atoms, read_atoms},
     {S_MOLECULE, "molecule IDs", 0, write_molecule, read_molecule},
     {S_HEAT, "temperatures", 0, write_heat, read_heat},
+    {S_CUSTOM, "custom properties", 0, write_custom, read_custom},
     {S_PAIR, "pair", 1, write_pair, read_pair},
     {S_LIST, "neighbor list", 0, write_list, read_list},
     {S_FIXES, "fixes", 1, write_fixes, read_fixes},
@@ -1330,8 +1387,31 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     atoms_set_ntypes(g, im->ntypes);
     memcpy(a->type_mass, im->type_mass, ((size_t)im->ntypes + 1) * sizeof(double));
     a->n = 0;
+    if (im->cus.n || a->cus.n) { /* the file's custom properties; ours it lacks stay, zero */
+        struct atom_custom to = im->cus;
+        int from[GR_MAXCUSTOM];
+        for (int k = 0; k < to.n; k++) {
+            int o = custom_find(a, to.p[k].name);
+            from[k] = -1;
+            if (o >= 0 && !strcmp(a->cus.p[o].fix, to.p[k].fix) &&
+                a->cus.p[o].isint == to.p[k].isint && a->cus.p[o].cols == to.p[k].cols)
+                to.p[k].restored = 0; /* its fix is defined already */
+        }
+        for (int k = 0; k < a->cus.n; k++)
+            if (custom_find_in(&to, a->cus.p[k].name) < 0 && to.n < GR_MAXCUSTOM) {
+                to.p[to.n] = a->cus.p[k];
+                to.p[to.n].slot = to.slots;
+                to.slots += custom_width(&to.p[to.n]);
+                from[to.n++] = -1;
+            }
+        atoms_custom_relayout(g, &to, from);
+    }
     atoms_reserve(g, im->n);
     size_t n = (size_t)im->n;
+    if (im->custom && n) /* the file's properties are the layout's first slots */
+        for (size_t i = 0; i < n; i++)
+            memcpy(a->custom + i * a->cus.slots, im->custom + i * im->cus.slots,
+                   (size_t)im->cus.slots * sizeof(double));
     /* every field the file holds (an optional section's may be absent) */
 #define APPLY_FIELD(name, ctype, dev, width, when, life, sect, what)                           \
     if (im->name)                                                                             \

@@ -115,7 +115,7 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
     decomp_setup(g, dc);
     /* the styles, checked before anything moves */
     double *user[3] = {NULL, NULL, NULL};
-    int uniform[3] = {0, 0, 0}, rcb = 0;
+    int uniform[3] = {0, 0, 0}, rcb = 0, one_rcb = 0;
     unsigned shift = 0;
     struct bal_weight w = {0};
     int i = 1;
@@ -157,11 +157,8 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
                 gr_error(g, "balance shift stopthresh must be >= 1.0");
             i += 4;
         } else if (!strcmp(s, "rcb") && comm_size() == 1) {
-            gr_warn(g, "balance rcb: one process, there is nothing to balance");
-            for (int q = 0; q < 3; q++)
-                free(user[q]);
-            bal_weight_free(&w);
-            return;
+            one_rcb = 1; /* nothing to balance; the keywords still parse */
+            i++;
         } else if (!strcmp(s, "rcb")) {
             if (!dc->tiled)
                 gr_error(g, "balance rcb needs comm_style tiled (LAMMPS: Balance rcb cannot be "
@@ -177,6 +174,14 @@ void cmd_balance(struct gravel *g, int argc, char **argv)
             gr_error(g, "balance keyword '%s' is not supported (x, y, z, shift; keywords "
                         "weight, out)", s);
         }
+    }
+    if (one_rcb) { /* weight store still stores the weights (the same on any ranks) */
+        gr_warn(g, "balance rcb: one process, there is nothing to balance");
+        free(weights_between_runs(g, dc, &w));
+        for (int q = 0; q < 3; q++)
+            free(user[q]);
+        bal_weight_free(&w);
+        return;
     }
     clock_t t0 = clock();
     const struct atoms *a = &g->atoms; /* between runs: every atom on every rank */

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "atom_custom.h"
 #include "comm.h"
 #include "decomp.h"
 #include "domain.h"
@@ -24,6 +25,22 @@ static double positive_factor(struct gravel *g, const char *s, const char *who,
     return f;
 }
 
+/* The index of d_name for weight store, or an error naming who. */
+static int store_check(struct gravel *g, const char *name, const char *who)
+{
+    const struct atoms *a = &g->atoms;
+    int k = custom_find(a, name);
+    if (k < 0)
+        gr_error(g, "%s weight store: custom vector d_%s does not exist (define it with fix "
+                    "property/atom d_%s; the name is given without d_)", who, name, name);
+    if (a->cus.p[k].isint || a->cus.p[k].cols) {
+        char have[GR_CUSTOMLEN + 4];
+        gr_error(g, "%s weight store: %s is not a floating-point vector (d_%s)", who,
+                 custom_prefixed(a, k, have), name);
+    }
+    return k;
+}
+
 int bal_weight_parse(struct gravel *g, struct bal_weight *w, int argc, char **argv, int i,
                      const char *who)
 {
@@ -38,6 +55,10 @@ int bal_weight_parse(struct gravel *g, struct bal_weight *w, int argc, char **ar
         gr_error(g, "%s weight needs a style (group, neigh, time, var)", who);
     const char *st = argv[i + 1];
     w->on = 1;
+    unsigned given = w->ngroup ? BW_GROUP : 0;
+    given |= w->var ? BW_VAR : 0;
+    given |= w->time_factor > 0 ? BW_TIME : 0;
+    given |= w->neigh_factor > 0 ? BW_NEIGH : 0;
     if (!strcmp(st, "group")) {
         if (i + 2 >= argc)
             gr_error(g, "%s weight group needs N and N group/factor pairs", who);
@@ -77,15 +98,24 @@ int bal_weight_parse(struct gravel *g, struct bal_weight *w, int argc, char **ar
             w->neigh_factor = f;
         return i + 3;
     }
-    if (!strcmp(st, "store"))
-        gr_error(g, "%s weight store is not supported: gravel has no custom per-atom property "
-                    "(LAMMPS's d_name) to store the weights in", who);
-    gr_error(g, "%s weight style '%s' is not supported (group, neigh, time, var)", who, st);
+    if (!strcmp(st, "store")) { /* LAMMPS: store name, the d_ vector without prefix */
+        if (i + 2 >= argc)
+            gr_error(g, "%s weight store needs the name of a fix property/atom d_ vector", who);
+        store_check(g, argv[i + 2], who);
+        if (w->store)
+            gr_error(g, "%s weight store given twice", who);
+        w->store = gr_strdup(g, argv[i + 2]);
+        w->store_before = given;
+        return i + 3;
+    }
+    gr_error(g, "%s weight style '%s' is not supported (group, neigh, time, var, store)", who,
+             st);
 }
 
 void bal_weight_free(struct bal_weight *w)
 {
     free(w->var);
+    free(w->store);
     free(w->out);
     if (w->fp)
         fclose(w->fp);
@@ -123,14 +153,19 @@ double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,
 {
     if (!w || !w->on)
         return NULL;
-    const struct atoms *a = &g->atoms;
+    struct atoms *a = &g->atoms;
     double *wt = gr_malloc(g, ((size_t)n + 1) * sizeof *wt);
+    /* with store: the product of the styles before it, in this fixed order
+     * (the styles multiply, so the order changes no more than round-off) */
+    double *st = w->store ? gr_malloc(g, ((size_t)n + 1) * sizeof *st) : NULL;
     for (int i = 0; i < n; i++) {
         double v = 1.0;
         for (int k = 0; k < w->ngroup; k++)
             if (a->mask[i] & group_bit(w->gid[k]))
                 v *= w->gfac[k];
         wt[i] = v;
+        if (st)
+            st[i] = w->store_before & BW_GROUP ? v : 1.0;
     }
     if (w->var) {
         double *val = var_atom_values(g, w->var);
@@ -140,10 +175,13 @@ double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,
                 double bad = val[i];
                 free(val);
                 free(wt);
+                free(st);
                 gr_error(g, "balance weight var %s: atom %lld has weight %g (must be > 0)",
                          w->var, tag, bad);
             }
             wt[i] *= val[i];
+            if (st && (w->store_before & BW_VAR))
+                st[i] *= val[i];
         }
         free(val);
     }
@@ -151,13 +189,23 @@ double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,
     double *wr = gr_malloc(g, (size_t)P * sizeof *wr);
     const double *costs[2] = {cost_time, cost_neigh};
     const double factors[2] = {w->time_factor, w->neigh_factor};
+    const unsigned bits[2] = {BW_TIME, BW_NEIGH};
     for (int s = 0; s < 2; s++) {
         if (!(factors[s] > 0) || !costs[s] || !rank_weights(costs[s], nown, P, factors[s], wr))
             continue;
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < n; i++) {
             wt[i] *= wr[owner ? owner[i] : me];
+            if (st && (w->store_before & bits[s]))
+                st[i] *= wr[owner ? owner[i] : me];
+        }
     }
     free(wr);
+    if (st) { /* LAMMPS's ImbalanceStore: the property must still be a d_ vector */
+        struct custom_ref ref = {store_check(g, w->store, "balance"), 0};
+        for (int i = 0; i < n; i++)
+            *custom_at(a, ref, i) = st[i];
+        free(st);
+    }
     return wt;
 }
 

@@ -14,7 +14,12 @@
  *   neigh factor               the rank's neighbor pairs over its atoms
  * time and neigh give every atom of a rank the same weight; factor != 1
  * stretches the ranks' weights from the lowest to factor times the highest
- * (LAMMPS 2021). `store` is not supported (no custom per-atom property). */
+ * (LAMMPS 2021).
+ *   store name                 each atom's weight so far (the product of the
+ *                              styles given before it; 1 without) into the
+ *                              custom vector d_name of fix property/atom
+ *                              (LAMMPS's ImbalanceStore), on every atom the
+ *                              weights are computed for. */
 #ifndef GR_BALANCE_WEIGHT_H
 #define GR_BALANCE_WEIGHT_H
 
@@ -23,6 +28,7 @@
 #include "state.h"
 
 #define BW_MAXGROUP 32
+enum { BW_GROUP = 1, BW_VAR = 2, BW_TIME = 4, BW_NEIGH = 8 };
 
 struct bal_weight {
     int on;                        /* a weight style was given */
@@ -31,6 +37,8 @@ struct bal_weight {
     char *var;                     /* weight var */
     double time_factor;            /* weight time (0: not given) */
     double neigh_factor;           /* weight neigh (0: not given) */
+    char *store;                   /* weight store: the d_ vector's name (NULL: none) */
+    unsigned store_before;         /* BW_* styles given before store */
     char *out;                     /* out file name */
     FILE *fp;                      /* out file, open (rank 0) */
 };
@@ -41,7 +49,7 @@ int bal_weight_parse(struct gravel *g, struct bal_weight *w, int argc, char **ar
                      const char *who);
 void bal_weight_free(struct bal_weight *w);
 /* The weights of atoms 0 .. n-1 of g->atoms (a new array; NULL when no style
- * is given). owner[i]: the rank whose cost atom i shares (NULL: this rank);
+ * is given), stored in d_name too with `store name`. owner[i]: the rank whose cost atom i shares (NULL: this rank);
  * cost_time / cost_neigh: each rank's cost (P values, the same on every
  * rank) and nown each rank's atom count, for the time and neigh styles. */
 double *bal_weight_compute(struct gravel *g, const struct bal_weight *w, int n,

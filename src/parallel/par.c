@@ -121,7 +121,7 @@ static size_t record_bytes(const struct gravel *g)
         b += sizeof(ctype) * (width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
-    return b;
+    return b + (size_t)g->atoms.cus.slots * sizeof(double); /* the custom properties */
 }
 
 /* atom i's record; raw: its device position bytes (single precision) */
@@ -135,6 +135,9 @@ static void pack_rows(const struct atoms *a, int i, const unsigned char *raw, si
     }
     ATOM_FIELDS(PACK)
 #undef PACK
+    size_t cb = (size_t)a->cus.slots * sizeof(double);
+    memcpy(out, a->custom + (size_t)i * a->cus.slots, cb);
+    out += cb;
     if (rawb)
         memcpy(out, raw, rawb);
 }
@@ -149,6 +152,9 @@ static void unpack_rows(struct atoms *a, int i, const unsigned char *in, unsigne
     }
     ATOM_FIELDS(UNPACK)
 #undef UNPACK
+    size_t cb = (size_t)a->cus.slots * sizeof(double);
+    memcpy(a->custom + (size_t)i * a->cus.slots, in, cb);
+    in += cb;
     if (rawb)
         memcpy(raw, in, rawb);
 }
@@ -165,10 +171,11 @@ static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigne
     unpack_rows(a, i, in, raw, rawb, 0);
 }
 
-/* bytes of every row of the field table (FL_STEP ones too: dumps show forces) */
-static size_t all_rows_bytes(void)
+/* bytes of every row of the field table (FL_STEP ones too: dumps show forces)
+ * and of the custom properties' record */
+static size_t all_rows_bytes(const struct atoms *a)
 {
-    size_t b = 0;
+    size_t b = (size_t)a->cus.slots * sizeof(double);
 #define BYTES(name, ctype, dev, width, when, life, sect, what) b += sizeof(ctype) * (width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
@@ -501,7 +508,7 @@ static unsigned char *atoms_gather(struct gravel *g, int state, int *total, size
     const struct atoms *a = &g->atoms;
     int n = a->n;
     size_t eb = state ? extra_bytes(g) : 0, xb = state ? 3 * sizeof(double) : 0;
-    *rb = all_rows_bytes() + eb + xb;
+    *rb = all_rows_bytes(a) + eb + xb;
     unsigned char *extra = state ? extra_move(g, n, NULL, 0) : NULL;
     double *xh = NULL;
     if (state) {
@@ -1168,6 +1175,7 @@ static void gather_begin(struct gravel *g, int state)
     full.heat_flag = a->heat_flag;
     full.type_mass = a->type_mass;
     full.maxtag = a->maxtag;
+    full.cus = a->cus; /* the custom properties' layout; their storage is the new set's */
     *a = full;
     atoms_unpack(g, all, total, rb, state, ago);
     free(all);

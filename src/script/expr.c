@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atom_custom.h"
 #include "atoms.h"
 #include "compute.h"
 #include "engine.h"
@@ -265,6 +266,90 @@ static double atom_value(struct ep *e, const char *name, double idv)
         ep_fail(e, msg);
     }
     return own_value(a, name, i);
+}
+
+/* A custom property's operand (fix property/atom), as LAMMPS's variable
+ * reads them: i_name d_name (per-atom vectors), i_name[I] d_name[I] (atom
+ * I's value), i2_name[J] d2_name[J] (column J, per atom), i2_name[I][J]
+ * d2_name[I][J] (atom I's column J). Per-atom forms need an atom-style
+ * evaluation. */
+static double custom_operand(struct ep *e, const char *name)
+{
+    struct gravel *g = e->g;
+    int arr = name[1] == '2';
+    const char *nm = name + (arr ? 3 : 2);
+    int k = custom_find(&g->atoms, nm);
+    char msg[240];
+    if (k < 0) {
+        snprintf(msg, sizeof msg, "custom property %.64s does not exist (define it with fix "
+                                  "property/atom %.64s)", name, name);
+        ep_fail(e, msg);
+    }
+    const struct custom_prop *pr = &g->atoms.cus.p[k];
+    if (pr->isint != (name[0] == 'i') || (pr->cols != 0) != arr) {
+        char have[GR_CUSTOMLEN + 4];
+        snprintf(msg, sizeof msg, "custom property %.64s is %.70s, not %.64s", nm,
+                 custom_prefixed(&g->atoms, k, have), name);
+        ep_fail(e, msg);
+    }
+    double b[2];
+    int nb = 0;
+    while (nb < 2 && *e->p == '[') {
+        e->p++;
+        b[nb++] = parse_or(e);
+        if (!accept(e, "]"))
+            ep_fail(e, "missing ']'");
+    }
+    if (nb == 2 && !arr) {
+        snprintf(msg, sizeof msg, "%.64s is a vector: %.64s[ID], not two indices", name, name);
+        ep_fail(e, msg);
+    }
+    if (arr && nb == 0) {
+        snprintf(msg, sizeof msg, "%.64s is an array: %.64s[J] (column J per atom) or "
+                                  "%.64s[ID][J]", name, name, name);
+        ep_fail(e, msg);
+    }
+    struct custom_ref ref = {k, 0};
+    if (arr) {
+        double c = b[nb - 1];
+        if (!(c >= 1 && c <= pr->cols) || c != floor(c)) {
+            snprintf(msg, sizeof msg, "column %g of %.64s is outside 1..%d", c, name, pr->cols);
+            ep_fail(e, msg);
+        }
+        ref.col = (int)c - 1;
+    }
+    if (nb == (arr ? 2 : 1)) { /* one atom's value */
+        double idv = b[0];
+        struct aslot *sl = NULL;
+        if (e->ax) {
+            int made;
+            sl = next_slot(e, &made);
+            if (!made)
+                return slot_value(e, sl);
+        }
+        if (!(idv >= 1 && idv <= 9.0e18) || idv != floor(idv)) {
+            snprintf(msg, sizeof msg, "%.64s[] needs a positive integer atom ID, got %g", name,
+                     idv);
+            ep_fail(e, msg);
+        }
+        run_sync_host(g);
+        int i = atoms_find_tag(&g->atoms, (int64_t)idv);
+        if (i < 0) {
+            snprintf(msg, sizeof msg, "atom ID %lld in %.64s[] does not exist", (long long)idv,
+                     name);
+            ep_fail(e, msg);
+        }
+        double v = custom_get(&g->atoms, ref, i);
+        if (sl)
+            sl->s = v;
+        return v;
+    }
+    if (!e->ax) {
+        snprintf(msg, sizeof msg, "'%.64s' is per-atom: use it in an atom-style variable, or "
+                                  "name an atom: %.64s[ID]%s", name, name, arr ? "[J]" : "");
+        ep_fail(e, msg);
+    }
+    return custom_get(&g->atoms, ref, e->ax->i);
 }
 
 /* ---- math functions --------------------------------------------------------- */
@@ -569,6 +654,9 @@ static double parse_primary(struct ep *e)
         }
         return v;
     }
+    if ((name[0] == 'i' || name[0] == 'd') &&
+        (name[1] == '_' || (name[1] == '2' && name[2] == '_')) && name[name[1] == '_' ? 2 : 3])
+        return custom_operand(e, name);
     if (*e->p == '[' && is_atom_value(name)) {
         e->p++;
         double id = parse_or(e);

@@ -76,4 +76,29 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
 /* Declares one pointer member per field (struct atoms, struct image). */
 #define ATOM_FIELD_MEMBER(name, ctype, dev, width, when, life, sect, what) ctype *name;
 
+/* ---- custom per-atom properties (fix property/atom i_name d_name i2_name N
+ * d2_name N; atom_custom.h) ------------------------------------------------
+ * Defined at run time, so not rows of the table: one more per-atom record,
+ * atoms.custom, of `slots` doubles per atom (an integer property holds
+ * exact integers in its slots). Every whole-set handling of the table rows
+ * treats this record as one more FL_STATE row of FD_RAW doubles: host growth,
+ * append, copy and release (atoms.c), device allocation, upload, download
+ * and the cell re-sort (engine.c, neighbor.c), the MPI records (par.c) and
+ * the restart file (restart.c, section "custom"). */
+#define GR_MAXCUSTOM 32
+#define GR_CUSTOMLEN 64
+struct custom_prop {
+    char name[GR_CUSTOMLEN];    /* without its i_ d_ i2_ d2_ prefix */
+    int isint;                  /* 1: i_ / i2_ (integers), 0: d_ / d2_ */
+    int cols;                   /* 0: a vector; N >= 1: an array of N columns */
+    int slot;                   /* its first slot in the per-atom record */
+    char fix[GR_CUSTOMLEN];     /* the fix property/atom that defines it */
+    int restored;               /* read from a restart file, not yet defined again */
+};
+struct atom_custom {
+    int n;                      /* properties defined */
+    int slots;                  /* doubles per atom of atoms.custom */
+    struct custom_prop p[GR_MAXCUSTOM];
+};
+
 #endif

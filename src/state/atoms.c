@@ -47,6 +47,14 @@ void atoms_reserve(struct gravel *g, int n)
     while (cap < n)
         cap = cap < (1 << 29) ? cap * 2 : n;
     ATOM_FIELDS(GROW)
+    if (a->cus.slots) {
+        size_t w = (size_t)a->cus.slots * sizeof(double);
+        double *p = field_alloc(g, (size_t)cap * w);
+        if (a->custom)
+            memcpy(p, a->custom, (size_t)a->cap * w);
+        field_free(a->custom, (size_t)a->cap * w);
+        a->custom = p;
+    }
     a->cap = cap;
 }
 
@@ -64,6 +72,8 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
     memset(a->name + (size_t)(width) * i, 0, (width) * sizeof(ctype));
     ATOM_FIELDS(ZERO)
 #undef ZERO
+    if (a->cus.slots)
+        memset(a->custom + (size_t)a->cus.slots * i, 0, (size_t)a->cus.slots * sizeof(double));
     a->tag[i] = tag;
     a->type[i] = type;
     a->mask[i] = 1u;
@@ -85,6 +95,27 @@ void atoms_copy(struct atoms *a, int from, int to)
            (width) * sizeof(ctype));
     ATOM_FIELDS(COPY)
 #undef COPY
+    if (a->cus.slots)
+        memcpy(a->custom + (size_t)a->cus.slots * to, a->custom + (size_t)a->cus.slots * from,
+               (size_t)a->cus.slots * sizeof(double));
+}
+
+void atoms_custom_relayout(struct gravel *g, const struct atom_custom *to, const int *from_slot)
+{
+    struct atoms *a = &g->atoms;
+    size_t cap = (size_t)a->cap, nw = (size_t)to->slots, ow = (size_t)a->cus.slots;
+    double *p = nw && cap ? field_alloc(g, cap * nw * sizeof(double)) : NULL;
+    for (int k = 0; k < to->n && p; k++) {
+        int w = to->p[k].cols ? to->p[k].cols : 1, o = from_slot[k];
+        if (o < 0)
+            continue; /* a new property: zero (the mapping's pages) */
+        for (int i = 0; i < a->n; i++)
+            memcpy(p + (size_t)i * nw + to->p[k].slot, a->custom + (size_t)i * ow + o,
+                   (size_t)w * sizeof(double));
+    }
+    field_free(a->custom, cap * ow * sizeof(double));
+    a->custom = p;
+    a->cus = *to;
 }
 
 void atoms_remove(struct gravel *g, int i)
@@ -113,6 +144,8 @@ void atoms_free_fields(struct atoms *a)
     field_free(a->name, (size_t)a->cap * (width) * sizeof(ctype));
     ATOM_FIELDS(FREE)
 #undef FREE
+    field_free(a->custom, (size_t)a->cap * a->cus.slots * sizeof(double));
+    a->custom = NULL;
     free(a->order);
     a->order = NULL;
     a->order_cap = 0;
@@ -124,6 +157,7 @@ void atoms_free(struct atoms *a)
     field_free(a->name, (size_t)a->cap * (width) * sizeof(ctype));
     ATOM_FIELDS(FREE)
 #undef FREE
+    field_free(a->custom, (size_t)a->cap * a->cus.slots * sizeof(double));
     free(a->order);
     free(a->type_mass);
     memset(a, 0, sizeof *a);

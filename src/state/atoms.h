@@ -18,6 +18,10 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
 /* Copy every per-atom field of atom `from` into slot `to` (LAMMPS's
  * AtomVec::copy). */
 void atoms_copy(struct atoms *a, int from, int to);
+/* Give the custom properties the layout `to` (atom_fields.h): property k
+ * of `to` keeps the values at old slot from_slot[k] (< 0: a new one, zero).
+ * Replaces atoms.cus. */
+void atoms_custom_relayout(struct gravel *g, const struct atom_custom *to, const int *from_slot);
 /* Remove atom i by moving the last atom into its slot. */
 void atoms_remove(struct gravel *g, int i);
 /* Set ntypes and size the per-type tables. */

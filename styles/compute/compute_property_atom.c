@@ -4,10 +4,12 @@
  * (c_ID), several a per-atom array (c_ID[N] = attribute N). Atoms outside
  * the group get 0. Attributes: id type mass x y z xu yu zu ix iy iz vx vy vz
  * fx fy fz radius diameter omegax omegay omegaz tqx tqy tqz, and temperature,
- * heatflow (LAMMPS 2023; fix property/atom temperature heatflow). */
+ * heatflow (LAMMPS 2023; fix property/atom temperature heatflow), and the
+ * custom properties i_name d_name i2_name[k] d2_name[k] (fix property/atom). */
 #include <stdlib.h>
 #include <string.h>
 
+#include "atom_custom.h"
 #include "compute.h"
 #include "domain.h"
 #include "error.h"
@@ -25,14 +27,19 @@ static const char *const attr_names[A_COUNT] = {
 
 struct property {
     int n;
-    int *attr;
+    int *attr;                  /* enum attr, or A_CUSTOM */
+    char (*word)[GR_NAMELEN];   /* as given (a custom property is found again at use) */
 };
+
+enum { A_CUSTOM = A_COUNT + 1 };
 
 static void property_destroy(struct compute *c)
 {
     struct property *p = c->data;
-    if (p)
+    if (p) {
         free(p->attr);
+        free(p->word);
+    }
     free(p);
     c->data = NULL;
 }
@@ -44,15 +51,23 @@ static void property_create(struct gravel *g, struct compute *c, int argc, char 
     struct property *p = gr_calloc(g, 1, sizeof *p);
     c->data = p;
     p->attr = gr_calloc(g, (size_t)argc, sizeof *p->attr);
+    p->word = gr_calloc(g, (size_t)argc, sizeof *p->word);
     for (int k = 0; k < argc; k++) {
         int a = -1;
+        struct custom_ref ref;
+        snprintf(p->word[k], sizeof p->word[k], "%.63s", argv[k]);
+        if (custom_ref_parse(g, argv[k], "compute property/atom", &ref, NULL)) {
+            p->attr[p->n++] = A_CUSTOM;
+            continue;
+        }
         for (int j = 0; j < A_COUNT; j++)
             if (strcmp(argv[k], attr_names[j]) == 0)
                 a = j;
         if (a < 0)
             gr_error(g, "compute property/atom: unknown attribute '%.64s' (id type mass x y z xu "
                         "yu zu ix iy iz vx vy vz fx fy fz radius diameter omegax omegay omegaz "
-                        "tqx tqy tqz temperature heatflow)", argv[k]);
+                        "tqx tqy tqz temperature heatflow i_name d_name i2_name[k] d2_name[k])",
+                     argv[k]);
         if ((a == A_TEMPERATURE && !(g->atoms.heat_flag & ATOM_HEAT_T)) ||
             (a == A_HEATFLOW && !(g->atoms.heat_flag & ATOM_HEAT_Q)))
             gr_error(g, "compute property/atom: atom property %s is not allocated (fix "
@@ -94,10 +109,17 @@ static void property_peratom(struct gravel *g, struct compute *c)
 {
     const struct property *p = c->data;
     const struct atoms *a = &g->atoms;
+    struct custom_ref ref[p->n > 0 ? p->n : 1];
+    for (int k = 0; k < p->n; k++)
+        if (p->attr[k] == A_CUSTOM) /* where the property is now (unfix: an error) */
+            custom_ref_parse(g, p->word[k], "compute property/atom", &ref[k], NULL);
     for (int i = 0; i < a->n; i++) {
         int in = (a->mask[i] & c->groupbit) != 0;
         for (int k = 0; k < p->n; k++)
-            c->peratom[(size_t)i * p->n + k] = in ? attr_value(g, p->attr[k], i) : 0.0;
+            c->peratom[(size_t)i * p->n + k] =
+                !in                     ? 0.0
+                : p->attr[k] == A_CUSTOM ? custom_get(a, ref[k], i)
+                                        : attr_value(g, p->attr[k], i);
     }
 }
 

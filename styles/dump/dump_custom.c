@@ -22,6 +22,7 @@
 #include "domain.h"
 #include "dump.h"
 #include "dump_custom.h"
+#include "atom_custom.h"
 #include "error.h"
 #include "thermo.h"
 #include "variable.h"
@@ -30,7 +31,7 @@ enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
     F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_TEMPERATURE,
-    F_HEATFLOW, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2
+    F_HEATFLOW, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2, F_CUSTOM = -3
 };
 
 static const char *const field_names[F_COUNT] = {
@@ -52,6 +53,8 @@ struct column {
     const double *peratom;      /* compute values for the current snapshot */
     int stride;
     double *vals;               /* v_name: the variable's values (owned) */
+    struct custom_ref cref;     /* i_name d_name i2_name[k] d2_name[k] (resolved at init) */
+    int cint;                   /* ... an integer property */
 };
 
 struct custom {
@@ -110,9 +113,15 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
             col->field = F_VARIABLE;
             continue;
         }
+        if (custom_ref_parse(g, s, "dump custom", &col->cref, NULL)) {
+            col->field = F_CUSTOM;
+            col->cint = g->atoms.cus.p[col->cref.idx].isint;
+            continue;
+        }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
                     "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu mol "
-                    "c_ID c_ID[N] v_name)", s);
+                    "temperature heatflow i_name d_name i2_name[k] d2_name[k] c_ID c_ID[N] "
+                    "v_name)", s);
     }
 }
 
@@ -210,10 +219,14 @@ void dump_box_header(struct gravel *g, FILE *fp, const char *what, long long cou
     }
 }
 
+static int col_is_int(const struct column *col)
+{
+    return col->field == F_CUSTOM ? col->cint : col->field >= 0 && field_is_int(col->field);
+}
+
 static int custom_is_int(const void *ctx, int k)
 {
-    const struct column *col = &((const struct custom *)ctx)->col[k];
-    return col->field >= 0 && field_is_int(col->field);
+    return col_is_int(&((const struct custom *)ctx)->col[k]);
 }
 
 static const char *custom_name(const void *ctx, int k)
@@ -244,7 +257,11 @@ static void custom_init(struct gravel *g, struct dump *d)
             compute_peratom_check(g, col->cid, col->index, "dump custom");
         if (col->field == F_VARIABLE)
             var_check_atom(g, col->name + 2, "dump custom");
-        int isint = col->field >= 0 && field_is_int(col->field);
+        if (col->field == F_CUSTOM) { /* the property may have moved (or gone: unfix) */
+            custom_ref_parse(g, col->name, "dump custom", &col->cref, NULL);
+            col->cint = g->atoms.cus.p[col->cref.idx].isint;
+        }
+        int isint = col_is_int(col);
         const char *f = NULL, *src = NULL;
         if (c->fmt.col[i]) {
             f = c->fmt.col[i];
@@ -356,11 +373,15 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
                 v = a->omega[3 * j + col->field - F_OMEGAX];
                 break;
             case F_TQX: case F_TQY: case F_TQZ: v = a->torque[3 * j + col->field - F_TQX]; break;
+            case F_CUSTOM:
+                v = custom_get(a, col->cref, j);
+                iv = (long long)v;
+                break;
             default: v = col->peratom[(size_t)j * col->stride]; break;
             }
             if (i)
                 fputc(' ', fp);
-            if (col->field >= 0 && field_is_int(col->field))
+            if (col_is_int(col))
                 fprintf(fp, col->fmt, iv);
             else
                 fprintf(fp, col->fmt, v);

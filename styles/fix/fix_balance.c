@@ -9,7 +9,9 @@
  * number of ranks).
  * rcb (comm_style tiled): the same forced rebuilds, where the box is tiled
  * again by bisecting the atoms (rcb.h). Nfreq 0: once, at the run's first
- * rebuild. As in LAMMPS, both styles force a rebuild every Nfreq steps. */
+ * rebuild. As in LAMMPS, both styles force a rebuild every Nfreq steps.
+ * `weight store name` writes the atoms' weights into d_name at those steps,
+ * on one process too (the same values on any number of ranks). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,6 +19,7 @@
 #include "balance.h"
 #include "balance_weight.h"
 #include "comm.h"
+#include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "par.h"
@@ -124,6 +127,10 @@ static void pre_exchange(struct gravel *g, struct fix *f)
         p->balance_dims = b->rcb ? 0 : b->dims;
         p->balance_thresh = b->thresh;
         hand_weights(p, b);
+    } else if (b->w.store) { /* one process: the weights only, for store */
+        run_sync_host(g);
+        free(bal_weight_compute(g, &b->w, g->atoms.n, NULL, NULL, NULL, NULL));
+        eng_put_custom(g);
     }
     f->next_reneighbor = b->nfreq > 0 ? g->step + b->nfreq : 0;
 }

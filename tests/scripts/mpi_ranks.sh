@@ -176,6 +176,21 @@ same gas_np2 gas.in 2 ""
 same gas_np4 gas.in 4 ""
 same gas_np4_slabs gas.in 4 "" "4 1 1"
 same gas_np8 gas.in 8 ""
+# custom per-atom properties (fix property/atom i_flag d_w d2_v 2), set by group and
+# by atom-style variables before and between the runs: they move with their atoms
+# across every face; dumps and the final atoms byte-identical to one process
+sed -e 's/^create_box      1 box/&\nfix             pa all property\/atom i_flag d_w d2_v 2 ghost yes/' \
+    -e 's/^velocity .*/&\nregion          half block 0 6 INF INF INF INF\ngroup           half region half\nset             group all d_w 0.5\nset             group half d_w 1.25 i_flag 3\nvariable        dv atom x*y+0.125\nvariable        iv atom id%7-2\nset             group all d2_v[1] v_dv\nset             group half i_flag v_iv\ndump            d1 all custom 300 d.*.txt id x i_flag d_w d2_v[1] d2_v[2]\ndump_modify     d1 sort id format float %.17g/' \
+    -e 's/^run             300/set             group half d2_v[2] v_dv\n&/' \
+    -e 's/^\(write_dump .*\) modify/\1 i_flag d_w d2_v[1] d2_v[2] modify/' gas.in > cgas.in
+ref_run cgas.in
+# the set values at step 0: atoms with x <= 6 have d_w 1.25 and i_flag id%7-2, the
+# others 0.5 and 0; every atom's d2_v[1] = x y + 0.125 of its start
+cgas_ok() { awk 'NR > 9 { n++; h = ($2 <= 6); if ($4 != (h ? 1.25 : 0.5) || $3 != (h ? $1 % 7 - 2 : 0) || $6 != 0) bad++ }
+                 END { exit !(n == 1728 && !bad) }' "$1"; }
+check custom_set_values 'cgas_ok ref/d.0.txt && [ "$(awk "NR > 9 && \$6 != 0" ref/d.900.txt | wc -l)" -gt 0 ]'
+same custom_properties_np2 cgas.in 2 ""
+same custom_properties_np3 cgas.in 3 ""
 # the footer over the ranks, as LAMMPS prints it (the last run's): Nlocal's mean
 # is atoms / ranks (1728 / N), min <= mean <= max, the histogram counts every
 # rank once, and each timing row has min <= avg <= max
@@ -815,10 +830,22 @@ ref_run wrcb.in
 same rcb_weight_np2 wrcb.in 2 ""
 same rcb_weight_np3 wrcb.in 3 ""
 check rcb_weight_report 'grep -q "^  initial/final maximal load/proc = 1440.0000 720.00000$" rcb_weight_np2.out'
-# weight store (no custom per-atom property to store in) and a weight <= 0: errors
-sed 's/weight var wv$/weight store wst/' wrcb.in > wstore.in
-mpirun -np 2 "$par" -in wstore.in -log none > wstore.out 2>&1; rc=$?
-check balance_weight_store_refused '[ $rc -ne 0 ] && [ "$(grep -c "^ERROR: balance: balance weight store is not supported" wstore.out)" -eq 1 ]'
+# weight store: each atom's weight (the var's 1 or 3) in the custom vector d_wst
+# of fix property/atom, stored by balance and at fix balance's steps (the weight
+# of the styles before store: var, not the ranks' times after it), moved with
+# its atom, dumped: the same bytes on 2 and 3 ranks as one process
+sed -e 's/^comm_style      tiled/&\nfix             pa all property\/atom d_wst/' \
+    -e 's/rcb weight var wv$/rcb weight var wv weight store wst/' \
+    -e 's/weight time 0.5 weight var wv$/weight var wv weight store wst weight time 0.5/' \
+    -e 's/^\(write_dump .*\) modify/\1 d_wst modify/' \
+    -e 's/^run             600/dump            d1 all custom 300 d.*.txt id z d_wst\ndump_modify     d1 sort id format float %.17g\n&/' wrcb.in > wstore.in
+ref_run wstore.in
+# d.0.txt: id z d_wst after `balance ... weight var wv weight store wst`: 1 + 2 (z > 3.5)
+store_ok() { awk 'NR > 9 { n++; if ($3 != 1 + 2 * ($2 > 3.5)) bad++; if ($3 == 3) t++ }
+                  END { exit !(n == 720 && !bad && t > 0 && t < n) }' "$1"; }
+check balance_weight_store_values 'store_ok ref/d.0.txt'
+same balance_weight_store_np2 wstore.in 2 ""
+same balance_weight_store_np3 wstore.in 3 ""
 sed 's/^variable        wv atom .*/variable        wv atom z-3.5/' wrcb.in > wneg.in
 mpirun -np 2 "$par" -in wneg.in -log none > wneg.out 2>&1; rc=$?
 check balance_weight_negative '[ $rc -ne 0 ] && grep -q "^ERROR: balance: balance weight var wv: atom 1 has weight -2.5 (must be > 0) (wneg.in:26)" wneg.out'
