@@ -54,6 +54,7 @@ static int field_on(const struct gravel *g, enum atom_field_when when)
     case FW_ROTATION: return g->eng->rotation;
     case FW_MOLECULE: return g->atoms.molecule_flag;
     case FW_HEAT: return g->atoms.heat_flag != 0;
+    case FW_ELLIPSOID: return g->atoms.ellipsoid_flag;
     default: return 1;
     }
 }

@@ -56,6 +56,7 @@ enum sect {
     S_INFO = 1, S_DOMAIN, S_NEIGH, S_GROUPS, S_TYPES, S_ATOMS, S_PAIR, S_LIST, S_FIXES,
     S_MOLECULE, /* optional: molecule IDs (fix property/atom mol, or the atom style's) */
     S_HEAT,     /* optional: temperatures and heat flows (fix property/atom temperature) */
+    S_ELLIPSOID, /* optional: superellipsoid shapes, blockiness, orientations, angular momenta */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -645,6 +646,32 @@ static int read_heat(struct image *im, struct rbuf *r, unsigned seen, char *err,
     return 1;
 }
 
+/* Optional: the superellipsoid fields (atom_style ellipsoid superellipsoid),
+ * as LAMMPS's restart bonus record: shape, quaternion, blockiness, principal
+ * moments, with the angular momenta. */
+static void write_ellipsoid(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    if (!g->atoms.ellipsoid_flag)
+        return;
+    size_t at = sect_begin(g, w, S_ELLIPSOID);
+    put_i32(g, w, g->atoms.n);
+    put_fields(g, w, FS_ELLIPSOID);
+    sect_end(w, at);
+}
+
+static int read_ellipsoid(struct image *im, struct rbuf *r, unsigned seen, char *err,
+                          size_t errlen)
+{
+    int ne = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (!(seen >> S_ATOMS & 1u) || ne != im->n)
+        BAD("superellipsoids of %d atoms, not the atoms section's %d", ne, im->n);
+    get_fields(im, r, FS_ELLIPSOID);
+    return 1;
+}
+
 static void write_pair(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     (void)c;
@@ -896,6 +923,7 @@ static const struct section {
     {S_ATOMS, "atoms", 1, write_atoms, read_atoms},
     {S_MOLECULE, "molecule IDs", 0, write_molecule, read_molecule},
     {S_HEAT, "temperatures", 0, write_heat, read_heat},
+    {S_ELLIPSOID, "superellipsoids", 0, write_ellipsoid, read_ellipsoid},
     {S_PAIR, "pair", 1, write_pair, read_pair},
     {S_LIST, "neighbor list", 0, write_list, read_list},
     {S_FIXES, "fixes", 1, write_fixes, read_fixes},
@@ -1341,6 +1369,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
     a->style_molecular = im->mol != NULL && im->style_molecular;
     a->heat_flag = im->temperature ? im->heat_flag : 0; /* ... temperature heatflow */
+    a->ellipsoid_flag = im->shape != NULL; /* atom_style ellipsoid superellipsoid */
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -84,6 +84,9 @@ void cmd_write_data(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s'", argv[i]);
         }
     }
+    if (g->atoms.ellipsoid_flag)
+        gr_error(g, "write_data with atom_style ellipsoid superellipsoid is not supported (no "
+                    "Ellipsoids section is written): use write_restart");
     if (g->atoms.molecule_flag && !g->atoms.style_molecular)
         gr_warn(g, "write_data: molecule IDs of fix property/atom mol are not written to data "
                    "files (LAMMPS writes them in the fix's section; atom_style hybrid sphere "
