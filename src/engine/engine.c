@@ -538,8 +538,9 @@ void eng_prepare(struct gravel *g)
     e->rsz = single ? sizeof(float) : sizeof(double);
     /* the pair style answers every question of the run once: its record */
     pair_setup(g);
-    const struct pair_caps *pc = p ? &p->caps : NULL;
-    e->rotation = (pc && pc->rotation) || (needs & NEED_ROTATION);
+    /* a host-evaluated law puts no terms in the device program */
+    const struct pair_caps *pc = p && !p->caps.host_forces ? &p->caps : NULL;
+    e->rotation = (p && p->caps.rotation) || (needs & NEED_ROTATION);
     e->history = pc && pc->history;
     e->hist_n = e->history ? pc->hist_n : 3;
     /* -compat lammps2021: a trailing slot records LAMMPS's owner of each
