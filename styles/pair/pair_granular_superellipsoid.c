@@ -147,14 +147,14 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
     }
     struct model md = {.set = 1, .damping = D_VISCOELASTIC, .tangential = T_NONE, .cutoff = -1};
     if (argc < 1)
-        gr_error(g, "pair_coeff: granular/superellipsoid needs a normal model (hooke or hertz)");
+        gr_error(g, "granular/superellipsoid needs a normal model (hooke or hertz)");
     if (!strcmp(argv[0], "hooke") || !strcmp(argv[0], "hertz")) {
         md.normal = argv[0][1] == 'o' ? N_HOOKE : N_HERTZ;
         arg_need(g, argc, 0, 2, argv[0]);
         md.kn = nonneg(g, argv[1], "normal stiffness kn");
         md.gamman = nonneg(g, argv[2], "normal damping gamman");
     } else {
-        gr_error(g, "pair_coeff: unknown normal model '%.64s' for granular/superellipsoid "
+        gr_error(g, "unknown normal model '%.64s' for granular/superellipsoid "
                     "(hooke or hertz)", argv[0]);
     }
     for (int k = 3; k < argc; k++) {
@@ -167,7 +167,7 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
             else if (!strcmp(t, "classic"))
                 md.tangential = T_CLASSIC;
             else
-                gr_error(g, "pair_coeff: unknown tangential model '%.64s' for "
+                gr_error(g, "unknown tangential model '%.64s' for "
                             "granular/superellipsoid (linear_history or classic)", t);
             md.kt = nonneg(g, argv[k + 2], "tangential stiffness kt");
             md.xt = nonneg(g, argv[k + 3], "tangential damping xt");
@@ -180,7 +180,7 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
             else if (!strcmp(argv[k + 1], "viscoelastic"))
                 md.damping = D_VISCOELASTIC;
             else
-                gr_error(g, "pair_coeff: unknown damping model '%.64s' for "
+                gr_error(g, "unknown damping model '%.64s' for "
                             "granular/superellipsoid (mass_velocity or viscoelastic)",
                          argv[k + 1]);
             k += 1;
@@ -191,10 +191,10 @@ static void coeff(struct gravel *g, struct pair *p, int ilo, int ihi, int jlo, i
             md.cutoff = arg_positive(g, argv[k + 1], "cutoff");
             k += 1;
         } else if (!strcmp(kw, "rolling") || !strcmp(kw, "twisting") || !strcmp(kw, "heat")) {
-            gr_error(g, "pair_coeff: %s models are not implemented for superellipsoids (nor in "
+            gr_error(g, "%s models are not implemented for superellipsoids (nor in "
                         "LAMMPS)", kw);
         } else {
-            gr_error(g, "pair_coeff: unknown keyword '%.64s' for granular/superellipsoid", kw);
+            gr_error(g, "unknown keyword '%.64s' for granular/superellipsoid", kw);
         }
     }
     for (int i = ilo; i <= ihi; i++)
