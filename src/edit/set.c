@@ -179,7 +179,8 @@ static void sqe_create(struct atoms *a, int i)
 static void need_ellipsoid(struct gravel *g, const char *kw)
 {
     if (!g->atoms.ellipsoid_flag)
-        gr_error(g, "keyword '%s' needs atom_style ellipsoid superellipsoid", kw);
+        gr_error(g, "keyword '%s' does not apply to atom_style sphere (it needs atom_style "
+                    "ellipsoid superellipsoid)", kw);
 }
 
 /* The quaternion of atom i, which must have a shape (LAMMPS: "Cannot set

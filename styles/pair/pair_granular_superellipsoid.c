@@ -95,10 +95,17 @@ static void destroy(struct pair *p)
     p->data = NULL;
 }
 
+/* The style's data, created with LAMMPS's default settings (a pair
+ * restored by read_restart has none until its pair_coeff). */
 static struct sqe_pair *data_of(struct gravel *g, struct pair *p)
 {
-    if (!p->data)
-        p->data = gr_calloc(g, 1, sizeof(struct sqe_pair));
+    if (!p->data) {
+        struct sqe_pair *s = gr_calloc(g, 1, sizeof *s);
+        s->cutoff = -1;
+        s->bounding_box = 1;
+        s->form = SQE_ALGEBRAIC;
+        p->data = s;
+    }
     return p->data;
 }
 
@@ -215,7 +222,8 @@ static void init(struct gravel *g, struct pair *p)
                       "one process)");
     if (!s || !s->m || s->nt != nt)
         gr_error(g, "pair granular/superellipsoid: pair_coeff must be given for the %d atom "
-                    "type(s) of the box", nt);
+                    "type(s) of the box (restart files do not keep its coefficients: give "
+                    "pair_style and pair_coeff again after read_restart)", nt);
     for (int i = 0; i < a->n; i++) {
         const double *sh = a->shape + 3 * i, *b = a->block + 2 * i;
         if (sh[0] == 0.0 && sh[1] == 0.0 && sh[2] == 0.0)

@@ -17,8 +17,8 @@ granular/superellipsoid (LAMMPS 30 Mar 2026).
    by 3.5 .. 4.5); L stays exact, |q| = 1 to 1e-14.
 4. Two spheres (shape d d d, blockiness 2 2) through granular/superellipsoid
    collide as two spheres through pair granular with the same model (hooke,
-   mass_velocity damping, linear_history friction): head-on, positions and
-   velocities to 1e-10 of their scale. Oblique (friction, spin: I^-1 L
+   mass_velocity damping, linear_history friction; hertz with viscoelastic
+   damping): head-on, positions and velocities to 1e-10 of their scale. Oblique (friction, spin: I^-1 L
    against pair granular's omega) they differ only through the contact
    velocity's lever arm (pair granular: the radius, LAMMPS's GranularModel;
    granular/superellipsoid: the branch vector to the contact point, r -
@@ -81,10 +81,14 @@ def lammps_ellipsoids(tmp):
         return
     lmp_deck = (box("ellipsoid") + body + "pair_style none\n"
                 "compute q all property/atom quatw quati quatj quatk\n"
+                "compute s all property/atom shapex shapey shapez\n"
                 "dump d all custom 500 d.txt id x y z c_q[1] c_q[2] c_q[3] c_q[4] "
-                "angmomx angmomy angmomz\ndump_modify d format float %.17g sort id\nrun 1000\n")
-    gr_deck = (box() + body + "dump d all custom 500 d.txt id x y z quatw quati quatj quatk "
-               "angmomx angmomy angmomz\ndump_modify d format float %.17g sort id\nrun 1000\n")
+                "angmomx angmomy angmomz c_s[1] c_s[2] c_s[3] c_q[1]\n"
+                "dump_modify d format float %.17g sort id\nrun 1000\n")
+    gr_deck = (box() + body + "compute q all property/atom quatw quati quatj quatk shapex shapey "
+               "shapez\ndump d all custom 500 d.txt id x y z quatw quati quatj quatk angmomx "
+               "angmomy angmomz c_q[5] c_q[6] c_q[7] c_q[1]\n"
+               "dump_modify d format float %.17g sort id\nrun 1000\n")
     out = {}
     for who, exe, deck in (("lmp", lmp, lmp_deck), ("gravel", None, gr_deck)):
         d = os.path.join(tmp, who)
@@ -99,7 +103,8 @@ def lammps_ellipsoids(tmp):
             for a, b in zip(out["gravel"][step][tag], out["lmp"][step][tag]):
                 worst = max(worst, abs(a - b) / max(1.0, abs(b)))
     check(worst <= 1e-14, "ellipsoids_match_lammps_nve_asphere_quat_random",
-          f"worst difference {worst:.2e} over x, quaternion, angmom at steps 0, 500, 1000")
+          f"worst difference {worst:.2e} over x, quaternion, angmom, shape diameters (compute "
+          f"property/atom) at steps 0, 500, 1000")
 
 
 # ---- 2. mass properties ------------------------------------------------------
@@ -241,13 +246,13 @@ def symmetric_top(tmp):
 
 
 # ---- 4. spheres through both pair styles -----------------------------------------
-def sphere_pair(tmp, label, y2, kn, dt, steps):
+def sphere_pair(tmp, label, y2, kn, dt, steps, coeff=None):
     """two unit spheres, one at rest, through pair granular and through
     granular/superellipsoid; the largest difference of x, v (and omega =
     I^-1 L) over three frames, relative to 20, 2, 2; the struck sphere's vx"""
     d, m = 1.0, 1.0
-    coeff = (f"hooke {kn!r} 5.0 tangential linear_history {0.285 * kn!r} 0.5 0.5 damping "
-             "mass_velocity")
+    coeff = coeff or (f"hooke {kn!r} 5.0 tangential linear_history {0.285 * kn!r} 0.5 0.5 "
+                      "damping mass_velocity")
     common = ("create_atoms 1 single 8.0 10.0 10.0 units box\n"
               f"create_atoms 1 single 10.5 {y2} 10.0 units box\n"
               "group moving id 1\nvelocity moving set 2.0 0.0 0.0\n"
@@ -289,6 +294,14 @@ def spheres(tmp):
         check(worst <= 1e-10 and moved > 0.1, "spheres_head_on_match_pair_granular",
               f"worst difference {worst:.1e} of the scale (x, v, omega), struck sphere's vx "
               f"{moved:.4f}")
+    # hertz with viscoelastic damping: the contact radius from the curvatures
+    # (1/r each for a sphere) is pair granular's sqrt(delta R*)
+    worst, moved = sphere_pair(tmp, "head_on_hertz", 10.0, 1.0e5, 1e-4, 12000,
+                               "hertz 100000.0 50.0 damping viscoelastic tangential linear_history "
+                               "28500.0 0.5 0.5")
+    if worst is not None:
+        check(worst <= 1e-10 and moved > 0.1, "spheres_head_on_hertz_viscoelastic_match",
+              f"worst difference {worst:.1e} of the scale, struck sphere's vx {moved:.4f}")
     # oblique: pair granular takes the contact velocity with lever arms r (LAMMPS's
     # GranularModel), granular/superellipsoid with the branch vector to the
     # contact point, r - delta/2; the torques agree (both r - delta/2), so the
@@ -363,7 +376,7 @@ def errors(tmp):
     cases = [
         ("atom_style_plain_ellipsoid", box("ellipsoid"), "superellipsoid flag only", 4),
         ("set_shape_sphere", box("sphere") + two + "set type 1 shape 1 1 1\n",
-         "needs atom_style ellipsoid superellipsoid", 9),
+         "does not apply to atom_style sphere (it needs atom_style ellipsoid superellipsoid)", 9),
         ("set_quat_no_shape", box() + two + "set atom 1 quat 0 0 1 30\n", "has no shape", 9),
         ("set_shape_negative", box() + two + "set type 1 shape 1 -1 1\n", "invalid shape", 9),
         ("set_shape_one_zero", box() + two + "set type 1 shape 1 0 1\n", "invalid shape", 9),
@@ -381,12 +394,17 @@ def errors(tmp):
          "1000 0\n", "unknown normal model 'dmt'", 10),
         ("read_data", "units si\natom_style ellipsoid superellipsoid\nread_data none.data\n",
          "read_data with atom_style ellipsoid", 3),
+        ("restart_needs_coeff", None, "give pair_style and pair_coeff again after "
+         "read_restart", 3),
         ("dump_quat_sphere", box("sphere") + two + "dump d all custom 1 d.txt id quatw\n",
          "isn't allocated", 9),
     ]
     for name, deck, what, line in cases:
         d = os.path.join(tmp, "err_" + name)
         os.makedirs(d)
+        if deck is None:  # a restart file of superellipsoids, then a run without pair_coeff
+            r = run(DEM05 + MODEL + "run 10\nwrite_restart r.bin\n", d, name="in.write")
+            deck = "read_restart r.bin\nfix integr all nve/asphere\nrun 10\n"
         r = run(deck, d)
         out = r.stdout + r.stderr
         ok = r.returncode != 0 and what in out and f"in.deck:{line})" in out
