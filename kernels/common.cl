@@ -32,6 +32,9 @@
 #define REAL3 CAT3(REAL)
 #define CAT3(t) CAT3_(t)
 #define CAT3_(t) t##3
+#define REAL4 CAT4(REAL)
+#define CAT4(t) CAT4_(t)
+#define CAT4_(t) t##4
 
 /* Minimum image of one component for a periodic length L (0 = not periodic). */
 static inline REAL min_image(REAL d, REAL L)

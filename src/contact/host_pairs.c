@@ -38,7 +38,12 @@ static int cmp_pair(const void *pa, const void *pb)
 void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
                      void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx)
 {
-    const struct atoms *at = &g->atoms;
+    host_pairs_scan_x(g, g->atoms.x, idx, m, cut, visit, ctx);
+}
+
+void host_pairs_scan_x(struct gravel *g, const double *x, const int *idx, int m, double cut,
+                       void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx)
+{
     if (m < 2)
         return;
     double L[3], lo[3], hi[3];
@@ -49,8 +54,8 @@ void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
     }
     for (int k = 0; k < m; k++)
         for (int q = 0; q < 3; q++) {
-            lo[q] = fmin(lo[q], at->x[3 * idx[k] + q]);
-            hi[q] = fmax(hi[q], at->x[3 * idx[k] + q]);
+            lo[q] = fmin(lo[q], x[3 * idx[k] + q]);
+            hi[q] = fmax(hi[q], x[3 * idx[k] + q]);
         }
     int nc[3];
     for (int q = 0; q < 3; q++) {
@@ -77,7 +82,7 @@ void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
         int ci[3];
         for (int q = 0; q < 3; q++) {
             double w = hi[q] - lo[q];
-            double s = (at->x[3 * idx[k] + q] - lo[q]) / (w > 0 ? w : 1);
+            double s = (x[3 * idx[k] + q] - lo[q]) / (w > 0 ? w : 1);
             if (L[q] > 0)
                 s -= floor(s);
             ci[q] = (int)(s * nc[q]);

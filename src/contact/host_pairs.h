@@ -25,6 +25,12 @@ struct host_pair {
 void host_pairs_scan(struct gravel *g, const int *idx, int m, double cut,
                      void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx);
 
+/* The same scan over positions x (3 per atom, indexed by idx) other than
+ * the host arrays': a run's device state read back (pair
+ * granular/superellipsoid). */
+void host_pairs_scan_x(struct gravel *g, const double *x, const int *idx, int m, double cut,
+                       void (*visit)(struct gravel *g, int k, int kk, void *ctx), void *ctx);
+
 /* Every pair of atoms, one in mask bits `bits_a` and the other in `bits_b`
  * (either way round), with |del| < cut (cut > 0). Returns the count and sets
  * *out (malloc'd, caller frees; NULL when none). Errors name `who`. */

@@ -82,6 +82,11 @@ static void mesh_skip_free(struct mesh_skip *ms)
 
 static const double sphere_radius = 0.5;
 #define SPHERE_MASS (4.0 * M_PI / 3.0 * 0.125) /* density 1, diameter 1 */
+/* atom_style ellipsoid superellipsoid: a new atom is a point particle of
+ * mass 1 (radius 0, no shape) until `set shape` / `set block` make it a
+ * superellipsoid (LAMMPS AtomVecEllipsoid::create_atom_post) */
+#define NEW_RADIUS(g) ((g)->atoms.ellipsoid_flag ? 0.0 : sphere_radius)
+#define NEW_MASS(g) ((g)->atoms.ellipsoid_flag ? 1.0 : SPHERE_MASS)
 
 /* ---- molecules (`mol template-ID seed`, LAMMPS's mode MOLECULE) ------------- */
 
@@ -157,7 +162,7 @@ static void add_lattice_point(struct gravel *g, const double x[3], int basis, vo
         c->n += c->mj->mol->natoms;
         return;
     }
-    atoms_add(g, 0, c->basis_type[basis], x, sphere_radius, SPHERE_MASS);
+    atoms_add(g, 0, c->basis_type[basis], x, NEW_RADIUS(g), NEW_MASS(g));
     c->n++;
 }
 
@@ -335,7 +340,7 @@ static bigint insert_random(struct gravel *g, struct random_job *job)
             add_molecule(g, job->mj, x);
             continue;
         }
-        int i = atoms_add(g, 0, job->type, x, sphere_radius, SPHERE_MASS);
+        int i = atoms_add(g, 0, job->type, x, NEW_RADIUS(g), NEW_MASS(g));
         if (job->overlap > 0)
             grid_insert(g, &job->grid, i);
     }
@@ -559,7 +564,7 @@ void cmd_create_atoms(struct gravel *g, int argc, char **argv)
         if (mj.mol) {
             add_molecule(g, &mj, xone);
         } else {
-            int i = atoms_add(g, 0, type, xone, sphere_radius, SPHERE_MASS);
+            int i = atoms_add(g, 0, type, xone, NEW_RADIUS(g), NEW_MASS(g));
             for (int d = 0; d < 3; d++)
                 g->atoms.image[3 * i + d] = image[d];
         }

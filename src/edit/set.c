@@ -18,7 +18,26 @@
  *   type/ratio T f seed     exactly floor(f N) of the N selected atoms,
  *   type/subset T n seed    exactly n of them: RanMars(seed) with LAMMPS's
  *                           select_subset over the selected atoms in storage
- *                           order. */
+ *                           order.
+ *
+ * atom_style ellipsoid superellipsoid (LAMMPS 30 Mar 2026, AtomVecEllipsoid
+ * set_shape / set_block and Set):
+ *   shape Dx Dy Dz   the three diameters (semi-axes half of them; all 0
+ *                    makes the atom a point particle again); a new shape
+ *                    starts aligned with the box (quat 1 0 0 0), blockiness
+ *                    2 2;
+ *   block n1 n2      blockiness (> 0; an atom without a shape gets semi-axes
+ *                    0.5 0.5 0.5);
+ *   quat a b c theta rotation by theta degrees about the axis (a, b, c)
+ *                    (normalized; in 2d only about z; a b c may be v_name,
+ *                    theta is a number);
+ *   quat/random seed uniform random orientations (LAMMPS's RanPark draws,
+ *                    reseeded per atom from its coordinates);
+ *   angmom Lx Ly Lz  the angular momentum.
+ * Shape and block recompute the principal moments from the current mass
+ * and the bounding radius (radius); mass and density recompute the moments
+ * too (density: mass = volume x density), so the moments always belong to
+ * the mass; `diameter` is refused (the radius is the bounding radius). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +50,7 @@
 #include "log.h"
 #include "random.h"
 #include "region.h"
+#include "superellipsoid.h"
 #include "variable.h"
 
 /* Parse a LAMMPS id range "*", "n", "n*", "*n", "m*n" into [lo, hi] within 1..max. */
@@ -131,6 +151,49 @@ static const double *kw_value(struct gravel *g, const char *s, const char *what,
 
 #define VAL(p, num, i) ((p) ? (p)[i] : (num))
 
+/* 1 when atom i is a superellipsoid (has a shape). */
+static int has_shape(const struct atoms *a, int i)
+{
+    const double *sh = a->shape + 3 * i;
+    return sh[0] != 0.0 || sh[1] != 0.0 || sh[2] != 0.0;
+}
+
+/* Atom i's principal moments (from its mass) and bounding radius after a
+ * change of shape, blockiness or mass (superellipsoid.h). */
+static void sqe_refresh(struct atoms *a, int i)
+{
+    if (!has_shape(a, i))
+        return;
+    sqe_inertia(a->shape + 3 * i, a->rmass[i], a->block + 2 * i, a->inertia + 3 * i);
+    a->radius[i] = sqe_bounding_radius(a->shape + 3 * i, a->block + 2 * i);
+}
+
+/* Atom i becomes a superellipsoid: aligned with the box, an ellipsoid
+ * until `block` (LAMMPS's new bonus record). */
+static void sqe_create(struct atoms *a, int i)
+{
+    double *q = a->quat + 4 * i;
+    q[0] = 1.0, q[1] = q[2] = q[3] = 0.0;
+    a->block[2 * i] = a->block[2 * i + 1] = 2.0;
+}
+
+static void need_ellipsoid(struct gravel *g, const char *kw)
+{
+    if (!g->atoms.ellipsoid_flag)
+        gr_error(g, "keyword '%s' does not apply to atom_style sphere (it needs atom_style "
+                    "ellipsoid superellipsoid)", kw);
+}
+
+/* The quaternion of atom i, which must have a shape (LAMMPS: "Cannot set
+ * quaternion for atom that has none"). */
+static double *quat_of(struct gravel *g, int i)
+{
+    if (!has_shape(&g->atoms, i))
+        gr_error(g, "cannot set the quaternion of atom %lld: it has no shape (set shape "
+                    "first)", (long long)g->atoms.tag[i]);
+    return g->atoms.quat + 4 * i;
+}
+
 /* A per-atom heat value (temperature, heat source) of the selected atoms
  * from s: what names it in messages, nonneg refuses values below 0 (else
  * only non-finite ones). Returns the atoms set (0 in a dry pass). */
@@ -176,8 +239,13 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
             kw = strcmp(argv[k + 1], "Temp") ? "heatSource" : "temperature";
             shift = 1;
         }
-        if (!strcmp(kw, "omega") || !strcmp(kw, "image"))
+        if (!strcmp(kw, "omega") || !strcmp(kw, "image") || !strcmp(kw, "shape") ||
+            !strcmp(kw, "angmom"))
             nv = 3;
+        else if (!strcmp(kw, "quat"))
+            nv = 4;
+        else if (!strcmp(kw, "block"))
+            nv = 2;
         else if (!strcmp(kw, "type/fraction") || !strcmp(kw, "type/ratio") ||
                  !strcmp(kw, "type/subset"))
             nv = 3;
@@ -254,8 +322,14 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                         gr_error(g, "mass %g from %s for atom %lld must be positive",
                                  VAL(p, m, i), v[0], (long long)a->tag[i]);
                     a->rmass[i] = VAL(p, m, i), count++;
+                    if (a->ellipsoid_flag)
+                        sqe_refresh(a, i);
                 }
         } else if (!strcmp(kw, "diameter")) {
+            if (a->ellipsoid_flag)
+                gr_error(g, "keyword 'diameter' does not apply to atom_style ellipsoid "
+                            "superellipsoid: the radius is the bounding radius of the shape "
+                            "(set shape, set block)");
             double d = 0;
             const double *p = kw_value(g, v[0], "diameter", &d, buf, dry);
             if (!p)
@@ -281,6 +355,15 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     if (!(rho > 0))
                         gr_error(g, "density %g from %s for atom %lld must be positive", rho,
                                  v[0], (long long)a->tag[i]);
+                    if (a->ellipsoid_flag) {
+                        /* a superellipsoid's volume; rho itself for a point */
+                        a->rmass[i] = has_shape(a, i)
+                                          ? sqe_volume(a->shape + 3 * i, a->block + 2 * i) * rho
+                                          : rho;
+                        sqe_refresh(a, i);
+                        count++;
+                        continue;
+                    }
                     a->rmass[i] = r <= 0 ? rho
                                   : disc ? M_PI * r * r * rho
                                          : 4.0 * M_PI / 3.0 * r * r * r * rho;
@@ -373,7 +456,120 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     *custom_at(a, cref, i) = custom_check_value(g, a, cref.idx, val, "set");
                     count++;
                 }
-        } else if (!strcmp(kw, "quat") || !strcmp(kw, "angmom") || !strcmp(kw, "charge")) {
+        } else if (!strcmp(kw, "shape")) {
+            need_ellipsoid(g, kw);
+            double d[3];
+            const double *p[3];
+            for (int q = 0; q < 3; q++)
+                p[q] = kw_value(g, v[q], "shape", &d[q], buf + (size_t)q * nb, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double x = VAL(p[0], d[0], i), y = VAL(p[1], d[1], i), z = VAL(p[2], d[2], i);
+                    int zero = x == 0.0 && y == 0.0 && z == 0.0;
+                    if (!(x >= 0 && y >= 0 && z >= 0) || !isfinite(x + y + z) ||
+                        (!zero && (x == 0.0 || y == 0.0 || z == 0.0)))
+                        gr_error(g, "invalid shape %g %g %g for atom %lld: three positive "
+                                    "diameters, or 0 0 0 for a point particle",
+                                 x, y, z, (long long)a->tag[i]);
+                    if (zero) { /* back to a point particle */
+                        memset(a->shape + 3 * i, 0, 3 * sizeof(double));
+                        memset(a->block + 2 * i, 0, 2 * sizeof(double));
+                        memset(a->quat + 4 * i, 0, 4 * sizeof(double));
+                        memset(a->inertia + 3 * i, 0, 3 * sizeof(double));
+                        a->radius[i] = 0.0;
+                        count++;
+                        continue;
+                    }
+                    if (!has_shape(a, i))
+                        sqe_create(a, i);
+                    a->shape[3 * i] = 0.5 * x;
+                    a->shape[3 * i + 1] = 0.5 * y;
+                    a->shape[3 * i + 2] = 0.5 * z;
+                    sqe_refresh(a, i);
+                    count++;
+                }
+        } else if (!strcmp(kw, "block")) {
+            need_ellipsoid(g, kw);
+            double b[2];
+            const double *p[2];
+            for (int q = 0; q < 2; q++)
+                p[q] = kw_value(g, v[q], "blockiness", &b[q], buf + (size_t)q * nb, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double n1 = VAL(p[0], b[0], i), n2 = VAL(p[1], b[1], i);
+                    if (!(n1 > 0 && n2 > 0) || !isfinite(n1 + n2))
+                        gr_error(g, "invalid blockiness %g %g for atom %lld: both must be "
+                                    "positive", n1, n2, (long long)a->tag[i]);
+                    if (!has_shape(a, i)) { /* LAMMPS: a unit-diameter body */
+                        sqe_create(a, i);
+                        for (int q = 0; q < 3; q++)
+                            a->shape[3 * i + q] = 0.5;
+                    }
+                    a->block[2 * i] = n1;
+                    a->block[2 * i + 1] = n2;
+                    sqe_refresh(a, i);
+                    count++;
+                }
+        } else if (!strcmp(kw, "quat")) {
+            need_ellipsoid(g, kw);
+            double w[4];
+            const double *p[3];
+            for (int q = 0; q < 3; q++)
+                p[q] = kw_value(g, v[q], "quat", &w[q], buf + (size_t)q * nb, dry);
+            w[3] = arg_double(g, v[3], "quat angle (degrees; a number)");
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double *qt = quat_of(g, i);
+                    double ax = VAL(p[0], w[0], i), ay = VAL(p[1], w[1], i),
+                           az = VAL(p[2], w[2], i);
+                    if (g->dom.dimension == 2 && (ax != 0.0 || ay != 0.0))
+                        gr_error(g, "cannot set a quaternion with x or y axis components in 2d");
+                    double h = M_PI_2 * w[3] / 180.0, sh = sin(h);
+                    qt[0] = cos(h), qt[1] = ax * sh, qt[2] = ay * sh, qt[3] = az * sh;
+                    double len = sqrt(qt[0] * qt[0] + qt[1] * qt[1] + qt[2] * qt[2] +
+                                      qt[3] * qt[3]);
+                    if (!(len > 0) || !isfinite(len))
+                        gr_error(g, "quat %g %g %g %g is not a rotation", ax, ay, az, w[3]);
+                    for (int q = 0; q < 4; q++)
+                        qt[q] /= len;
+                    count++;
+                }
+        } else if (!strcmp(kw, "quat/random")) {
+            need_ellipsoid(g, kw);
+            int seed = arg_int(g, v[0], "seed");
+            if (seed <= 0)
+                gr_error(g, "seed must be a positive integer, got %s", v[0]);
+            struct rng_park rp;
+            rng_park_init(&rp, 1);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    double *qt = quat_of(g, i);
+                    rng_park_reset_coord(&rp, seed, a->x + 3 * i);
+                    if (g->dom.dimension == 3) {
+                        double s = rng_park_uniform(&rp), t1 = sqrt(1.0 - s), t2 = sqrt(s);
+                        double th1 = 2.0 * M_PI * rng_park_uniform(&rp);
+                        double th2 = 2.0 * M_PI * rng_park_uniform(&rp);
+                        qt[0] = cos(th2) * t2, qt[1] = sin(th1) * t1;
+                        qt[2] = cos(th1) * t1, qt[3] = sin(th2) * t2;
+                    } else {
+                        double th2 = M_PI * rng_park_uniform(&rp);
+                        qt[0] = cos(th2), qt[1] = qt[2] = 0.0, qt[3] = sin(th2);
+                    }
+                    count++;
+                }
+        } else if (!strcmp(kw, "angmom")) {
+            need_ellipsoid(g, kw);
+            double l[3];
+            const double *p[3];
+            for (int q = 0; q < 3; q++)
+                p[q] = kw_value(g, v[q], "angmom", &l[q], buf + (size_t)q * nb, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i]) {
+                    for (int q = 0; q < 3; q++)
+                        a->angmom[3 * i + q] = VAL(p[q], l[q], i);
+                    count++;
+                }
+        } else if (!strcmp(kw, "charge")) {
             gr_error(g, "keyword '%s' does not apply to atom_style sphere", kw);
         } else {
             gr_error(g, "unknown keyword '%.32s'", kw);

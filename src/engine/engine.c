@@ -54,6 +54,7 @@ static int field_on(const struct gravel *g, enum atom_field_when when)
     case FW_ROTATION: return g->eng->rotation;
     case FW_MOLECULE: return g->atoms.molecule_flag;
     case FW_HEAT: return g->atoms.heat_flag != 0;
+    case FW_ELLIPSOID: return g->atoms.ellipsoid_flag;
     default: return 1;
     }
 }
@@ -564,8 +565,9 @@ void eng_prepare(struct gravel *g)
     e->rsz = single ? sizeof(float) : sizeof(double);
     /* the pair style answers every question of the run once: its record */
     pair_setup(g);
-    const struct pair_caps *pc = p ? &p->caps : NULL;
-    e->rotation = (pc && pc->rotation) || (needs & NEED_ROTATION);
+    /* a host-evaluated law puts no terms in the device program */
+    const struct pair_caps *pc = p && !p->caps.host_forces ? &p->caps : NULL;
+    e->rotation = (p && p->caps.rotation) || (needs & NEED_ROTATION);
     e->history = pc && pc->history;
     e->hist_n = e->history ? pc->hist_n : 3;
     /* -compat lammps2021: a trailing slot records LAMMPS's owner of each

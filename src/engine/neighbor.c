@@ -1141,24 +1141,33 @@ void nbr_history_install(struct gravel *g, const void *hist)
 
 /* Gather one per-atom array (bytes per atom) into the new order through the
  * force buffer, free scratch during a rebuild (the forces of the step are
- * computed after it), and copy it back. */
+ * computed after it), and copy it back. A field wider than a force (the
+ * superellipsoids' quaternions, 4 REALs) goes through a scratch buffer of
+ * its own. */
 static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t bytes, int n)
 {
     struct engine *e = g->eng;
     if (n == 0)
         return;
-    if (bytes > 3 * e->rsz || bytes % 4)
-        gr_error(g, "internal error: a per-atom field of %zu bytes per atom does not fit the "
-                    "re-sort's scratch (the force buffer)", bytes);
+    if (bytes % 4)
+        gr_error(g, "internal error: a per-atom field of %zu bytes per atom is not a whole "
+                    "number of words", bytes);
+    cl_mem scratch = e->a.f, own = NULL;
+    if (bytes > 3 * e->rsz)
+        scratch = own = eng_alloc(g, (size_t)n * bytes, "re-sort scratch");
     cl_kernel k = b->k_reorder_words;
     eng_arg_int(g, k, 0, n);
     eng_arg_int(g, k, 1, (int)(bytes / 4));
     eng_arg_mem(g, k, 2, b->perm);
     eng_arg_mem(g, k, 3, m);
-    eng_arg_mem(g, k, 4, e->a.f);
+    eng_arg_mem(g, k, 4, scratch);
     eng_launch(g, k, (size_t)n);
-    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, e->a.f, m, 0, 0, (size_t)n * bytes, 0, NULL,
+    OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, scratch, m, 0, 0, (size_t)n * bytes, 0, NULL,
                                      NULL));
+    if (own) {
+        eng_finish(g);
+        clReleaseMemObject(own);
+    }
 }
 
 /* Re-sort every per-atom array (and the fixes' per-atom state) by b->perm,

@@ -120,7 +120,7 @@ static void pair_init(struct gravel *g)
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     e->pair_param = NULL;
-    if (!p)
+    if (!p || p->caps.host_forces) /* a host law: no device pair kernels */
         return;
     int nt, np = p->caps.nparam;
     double *par = pair_pack(g, &nt);
@@ -365,6 +365,9 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .heatflow = e->heat ? a->heatflow : a->f};
         ka_bind_force_clear(g, e->k_clear, 0, &fc);
         eng_launch(g, e->k_clear, (size_t)a->n);
+        const struct pair *hp = g->styles.pair;
+        if (hp && hp->caps.host_forces)
+            hp->caps.host_forces(g, hp);
     }
     if (timed)
         eng_finish(g);

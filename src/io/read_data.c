@@ -572,6 +572,10 @@ static void read_file(struct rd *r, const double shift[3])
 
 void cmd_read_data(struct gravel *g, int argc, char **argv)
 {
+    if (g->atoms.ellipsoid_flag)
+        gr_error(g, "read_data with atom_style ellipsoid superellipsoid is not supported (its "
+                    "Ellipsoids section is not read): create the atoms and use set shape, "
+                    "set block, set quat");
     double shift[3] = {0, 0, 0};
     int nocoeff = 0, extra_types = 0;
     const char *volatile group = NULL; /* read again after the setjmp below */

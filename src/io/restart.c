@@ -58,6 +58,7 @@ enum sect {
     S_MOLECULE, /* optional: molecule IDs (fix property/atom mol, or the atom style's) */
     S_HEAT,     /* optional: temperatures and heat flows (fix property/atom temperature) */
     S_CUSTOM,   /* optional: custom properties (fix property/atom i_ d_ i2_ d2_) */
+    S_ELLIPSOID, /* optional: superellipsoid shapes, blockiness, orientations, angular momenta */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -701,6 +702,32 @@ static int read_custom(struct image *im, struct rbuf *r, unsigned seen, char *er
     return 1;
 }
 
+/* Optional: the superellipsoid fields (atom_style ellipsoid superellipsoid),
+ * as LAMMPS's restart bonus record: shape, quaternion, blockiness, principal
+ * moments, with the angular momenta. */
+static void write_ellipsoid(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    if (!g->atoms.ellipsoid_flag)
+        return;
+    size_t at = sect_begin(g, w, S_ELLIPSOID);
+    put_i32(g, w, g->atoms.n);
+    put_fields(g, w, FS_ELLIPSOID);
+    sect_end(w, at);
+}
+
+static int read_ellipsoid(struct image *im, struct rbuf *r, unsigned seen, char *err,
+                          size_t errlen)
+{
+    int ne = get_i32(r);
+    if (r->bad)
+        return 1;
+    if (!(seen >> S_ATOMS & 1u) || ne != im->n)
+        BAD("superellipsoids of %d atoms, not the atoms section's %d", ne, im->n);
+    get_fields(im, r, FS_ELLIPSOID);
+    return 1;
+}
+
 static void write_pair(struct gravel *g, struct wbuf *w, struct wctx *c)
 {
     (void)c;
@@ -953,6 +980,7 @@ static const struct section {
     {S_MOLECULE, "molecule IDs", 0, write_molecule, read_molecule},
     {S_HEAT, "temperatures", 0, write_heat, read_heat},
     {S_CUSTOM, "custom properties", 0, write_custom, read_custom},
+    {S_ELLIPSOID, "superellipsoids", 0, write_ellipsoid, read_ellipsoid},
     {S_PAIR, "pair", 1, write_pair, read_pair},
     {S_LIST, "neighbor list", 0, write_list, read_list},
     {S_FIXES, "fixes", 1, write_fixes, read_fixes},
@@ -1421,6 +1449,7 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
     a->molecule_flag = im->mol != NULL; /* fix property/atom mol keeps them */
     a->style_molecular = im->mol != NULL && im->style_molecular;
     a->heat_flag = im->temperature ? im->heat_flag : 0; /* ... temperature heatflow */
+    a->ellipsoid_flag = im->shape != NULL; /* atom_style ellipsoid superellipsoid */
     a->n = im->n;
     a->maxtag = im->maxtag;
     pair_free(g);

@@ -144,6 +144,9 @@ void cmd_write_data(struct gravel *g, int argc, char **argv)
             gr_error(g, "unknown keyword '%.32s'", argv[i]);
         }
     }
+    if (g->atoms.ellipsoid_flag)
+        gr_error(g, "write_data with atom_style ellipsoid superellipsoid is not supported (no "
+                    "Ellipsoids section is written): use write_restart");
     const char *path = argv[0];
     int *order = gr_malloc(g, (size_t)(g->atoms.n ? g->atoms.n : 1) * sizeof(int));
     struct ofile o;

@@ -76,6 +76,7 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
  * not atoms. */
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
+    g->atoms.ellipsoid_flag = 0;
     if (!strcmp(argv[0], "hybrid")) {
         int sphere = 0, molecular = 0, tri = 0;
         for (int i = 1; i < argc; i++) {
@@ -112,6 +113,17 @@ void cmd_atom_style(struct gravel *g, int argc, char **argv)
     g->thermo.temp.dynamic = granular;
     g->thermo.temp.extra_set = granular;
     g->thermo.temp.extra_dof = 0;
+    if (!strcmp(argv[0], "ellipsoid")) {
+        /* LAMMPS 30 Mar 2026: atom_style ellipsoid superellipsoid, the
+         * bonus_super record (shape, blockiness, quaternion, inertia) with a
+         * bounding radius and angular momentum (atom_fields.h) */
+        if (argc != 2 || strcmp(argv[1], "superellipsoid") != 0)
+            gr_error(g, "atom_style ellipsoid is supported with its superellipsoid flag only "
+                        "(atom_style ellipsoid superellipsoid): gravel has no pair style for "
+                        "plain ellipsoids");
+        g->atoms.ellipsoid_flag = 1;
+        return;
+    }
     if (granular) {
         if (argc > 1)
             gr_error(g, "atom_style granular takes no arguments, got '%.32s'", argv[1]);
@@ -124,7 +136,8 @@ void cmd_atom_style(struct gravel *g, int argc, char **argv)
     }
     if (strcmp(argv[0], "sphere") != 0)
         gr_error(g, "atom_style '%.32s' is not supported: gravel has atom_style sphere (LIGGGHTS: "
-                    "granular), tri (as sphere) and hybrid sphere molecular",
+                    "granular), tri (as sphere), hybrid sphere molecular and ellipsoid "
+                    "superellipsoid",
                  argv[0]);
     if (argc > 2)
         gr_error(g, "atom_style sphere takes at most one flag (0 or 1)");

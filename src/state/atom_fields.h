@@ -18,13 +18,14 @@
  *   when   runs that hold it on the device: FW_ALWAYS; FW_ROTATION (some
  *          active style needs rotation); FW_MOLECULE (atoms carry molecule IDs,
  *          atoms.molecule_flag); FW_HEAT (atoms store a temperature:
- *          fix property/atom temperature heatflow, atoms.heat_flag). The host
- *          array always exists.
+ *          fix property/atom temperature heatflow, atoms.heat_flag);
+ *          FW_ELLIPSOID (atom_style ellipsoid superellipsoid,
+ *          atoms.ellipsoid_flag). The host array always exists.
  *   life   FL_STATE: moves with its atom when the device re-sorts by cell
  *          (neighbor.c); FL_STEP: recomputed every step (forces, torques), not
  *          moved (the force buffer is the re-sort's scratch)
- *   sect   restart section holding it (restart.c): FS_ATOMS, FS_MOLECULE or
- *          FS_HEAT;
+ *   sect   restart section holding it (restart.c): FS_ATOMS, FS_MOLECULE,
+ *          FS_HEAT or FS_ELLIPSOID;
  *          each section writes its fields in table order, n * width raw host
  *          elements each
  *   what   words for allocation errors
@@ -42,9 +43,9 @@
 #include <stdint.h>
 
 enum atom_field_dev { FD_POS, FD_REAL, FD_RAW };
-enum atom_field_when { FW_ALWAYS, FW_ROTATION, FW_MOLECULE, FW_HEAT };
+enum atom_field_when { FW_ALWAYS, FW_ROTATION, FW_MOLECULE, FW_HEAT, FW_ELLIPSOID };
 enum atom_field_life { FL_STATE, FL_STEP };
-enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
+enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT, FS_ELLIPSOID };
 
 /* Meanings: tag the global ID (1-based); type 1..ntypes; mask the group bits
  * (bit 0 = "all"); x, v, f, omega, torque xyz per atom; rmass the per-atom
@@ -53,7 +54,14 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
  * into the atom in the step (pair and wall conduction, summed like the
  * forces; fix heat/flow integrates it); heatsource a heat input of its own
  * (LIGGGHTS's property/atom heatSource, set by `set ... property/atom
- * heatSource Q`; 0 unless set), added to heatflow in the update. */
+ * heatSource Q`; 0 unless set), added to heatflow in the update.
+ * Superellipsoids (atom_style ellipsoid superellipsoid, LAMMPS 30 Mar 2026's
+ * bonus_super record, src/state/superellipsoid.h): shape the three semi-axes
+ * (all 0: a point particle, LAMMPS's ellipsoid flag -1), block the
+ * blockiness exponents n1 n2 (2 2: an ellipsoid), quat the orientation
+ * (w i j k, body to space), angmom the space-frame angular momentum,
+ * inertia the principal moments of the body frame; radius holds the
+ * bounding radius there. */
 /* clang-format off */
 #define ATOM_FIELDS(X)                                                                       \
     X(tag,    int64_t,  FD_RAW,  1, FW_ALWAYS,   FL_STATE, FS_ATOMS,    "tags")               \
@@ -70,7 +78,12 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT };
     X(mol,    int64_t,  FD_RAW,  1, FW_MOLECULE, FL_STATE, FS_MOLECULE, "molecule IDs")       \
     X(temperature, double, FD_REAL, 1, FW_HEAT,  FL_STATE, FS_HEAT,     "temperatures")       \
     X(heatflow, double, FD_REAL, 1, FW_HEAT,     FL_STEP,  FS_HEAT,     "heat flows")         \
-    X(heatsource, double, FD_REAL, 1, FW_HEAT,   FL_STATE, FS_HEAT,     "heat sources")
+    X(heatsource, double, FD_REAL, 1, FW_HEAT,   FL_STATE, FS_HEAT,     "heat sources")       \
+    X(shape,  double,   FD_REAL, 3, FW_ELLIPSOID, FL_STATE, FS_ELLIPSOID, "semi-axes")        \
+    X(block,  double,   FD_REAL, 2, FW_ELLIPSOID, FL_STATE, FS_ELLIPSOID, "blockiness")       \
+    X(quat,   double,   FD_REAL, 4, FW_ELLIPSOID, FL_STATE, FS_ELLIPSOID, "quaternions")      \
+    X(angmom, double,   FD_REAL, 3, FW_ELLIPSOID, FL_STATE, FS_ELLIPSOID, "angular momenta")  \
+    X(inertia, double,  FD_REAL, 3, FW_ELLIPSOID, FL_STATE, FS_ELLIPSOID, "principal moments")
 /* clang-format on */
 
 /* Declares one pointer member per field (struct atoms, struct image). */

@@ -145,6 +145,12 @@ struct pair_caps {
      * non-finite atom (pair colloid: its overlap stop); NULL: the generic
      * diagnosis (diagnose.h) */
     const char *nonfinite_cause;
+    /* ---- a law evaluated on the host (pair granular/superellipsoid, first
+     * landing): the run builds no device pair program; after the device
+     * clears the forces each step, host_forces(g, p) writes every atom's
+     * force and torque into the device buffers (engine order). NULL: the
+     * device pipeline above. */
+    void (*host_forces)(struct gravel *g, const struct pair *p);
 };
 
 /* A style's descriptor: lifecycle hooks plus ONE description call. */

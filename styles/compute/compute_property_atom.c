@@ -4,8 +4,10 @@
  * (c_ID), several a per-atom array (c_ID[N] = attribute N). Atoms outside
  * the group get 0. Attributes: id type mass x y z xu yu zu ix iy iz vx vy vz
  * fx fy fz radius diameter omegax omegay omegaz tqx tqy tqz, and temperature,
- * heatflow (LAMMPS 2023; fix property/atom temperature heatflow), and the
- * custom properties i_name d_name i2_name[k] d2_name[k] (fix property/atom). */
+ * heatflow (LAMMPS 2023; fix property/atom temperature heatflow), quatw quati
+ * quatj quatk shapex shapey shapez (diameters) angmomx angmomy angmomz (atom_style
+ * ellipsoid superellipsoid), and the custom properties i_name d_name i2_name[k]
+ * d2_name[k] (fix property/atom). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -17,13 +19,15 @@
 enum attr {
     A_ID, A_TYPE, A_MASS, A_X, A_Y, A_Z, A_XU, A_YU, A_ZU, A_IX, A_IY, A_IZ, A_VX, A_VY, A_VZ,
     A_FX, A_FY, A_FZ, A_RADIUS, A_DIAMETER, A_OMEGAX, A_OMEGAY, A_OMEGAZ, A_TQX, A_TQY, A_TQZ,
-    A_TEMPERATURE, A_HEATFLOW, A_COUNT
+    A_TEMPERATURE, A_HEATFLOW, A_QUATW, A_QUATI, A_QUATJ, A_QUATK, A_SHAPEX, A_SHAPEY, A_SHAPEZ,
+    A_ANGMOMX, A_ANGMOMY, A_ANGMOMZ, A_COUNT
 };
 
 static const char *const attr_names[A_COUNT] = {
     "id", "type", "mass", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz",
     "fx", "fy", "fz", "radius", "diameter", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
-    "temperature", "heatflow"};
+    "temperature", "heatflow", "quatw", "quati", "quatj", "quatk", "shapex", "shapey", "shapez",
+    "angmomx", "angmomy", "angmomz"};
 
 struct property {
     int n;
@@ -66,8 +70,12 @@ static void property_create(struct gravel *g, struct compute *c, int argc, char 
         if (a < 0)
             gr_error(g, "compute property/atom: unknown attribute '%.64s' (id type mass x y z xu "
                         "yu zu ix iy iz vx vy vz fx fy fz radius diameter omegax omegay omegaz "
-                        "tqx tqy tqz temperature heatflow i_name d_name i2_name[k] d2_name[k])",
+                        "tqx tqy tqz temperature heatflow quatw quati quatj quatk shapex shapey "
+                        "shapez angmomx angmomy angmomz i_name d_name i2_name[k] d2_name[k])",
                      argv[k]);
+        if (a >= A_QUATW && !g->atoms.ellipsoid_flag)
+            gr_error(g, "compute property/atom: atom property %s needs atom_style ellipsoid "
+                        "superellipsoid", argv[k]);
         if ((a == A_TEMPERATURE && !(g->atoms.heat_flag & ATOM_HEAT_T)) ||
             (a == A_HEATFLOW && !(g->atoms.heat_flag & ATOM_HEAT_Q)))
             gr_error(g, "compute property/atom: atom property %s is not allocated (fix "
@@ -100,6 +108,9 @@ static double attr_value(const struct gravel *g, int a, int i)
     case A_TQX: case A_TQY: case A_TQZ: return at->torque[3 * i + a - A_TQX];
     case A_TEMPERATURE: return at->heat_flag & ATOM_HEAT_T ? at->temperature[i] : 0.0;
     case A_HEATFLOW: return at->heat_flag & ATOM_HEAT_Q ? at->heatflow[i] : 0.0;
+    case A_QUATW: case A_QUATI: case A_QUATJ: case A_QUATK: return at->quat[4 * i + a - A_QUATW];
+    case A_SHAPEX: case A_SHAPEY: case A_SHAPEZ: return 2.0 * at->shape[3 * i + a - A_SHAPEX];
+    case A_ANGMOMX: case A_ANGMOMY: case A_ANGMOMZ: return at->angmom[3 * i + a - A_ANGMOMX];
     case A_COUNT: break;
     }
     return 0.0;

@@ -13,7 +13,10 @@
  * xlo) / Lx; triclinic: the lamda coordinates), xsu ysu zsu (scaled,
  * unwrapped: xs + ix), xu yu zu unwrapped with the tilted edge vectors, and c_ID / c_ID[N] (a per-atom
  * compute's vector or column N of its array), v_name (an atom-style variable,
- * evaluated at each snapshot). */
+ * evaluated at each snapshot). With atom_style ellipsoid superellipsoid:
+ * quatw quati quatj quatk (the orientation; 0 for a point particle),
+ * shapex shapey shapez (the diameters, twice the semi-axes, as LAMMPS
+ * dumps them), angmomx angmomy angmomz. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -31,13 +34,15 @@ enum field {
     F_ID, F_TYPE, F_X, F_Y, F_Z, F_XU, F_YU, F_ZU, F_IX, F_IY, F_IZ, F_VX, F_VY, F_VZ, F_FX,
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
     F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_TEMPERATURE,
-    F_HEATFLOW, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2, F_CUSTOM = -3
+    F_HEATFLOW, F_QUATW, F_QUATI, F_QUATJ, F_QUATK, F_SHAPEX, F_SHAPEY, F_SHAPEZ, F_ANGMOMX,
+    F_ANGMOMY, F_ANGMOMZ, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2, F_CUSTOM = -3
 };
 
 static const char *const field_names[F_COUNT] = {
     "id", "type", "x", "y", "z", "xu", "yu", "zu", "ix", "iy", "iz", "vx", "vy", "vz", "fx",
     "fy", "fz", "radius", "diameter", "mass", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
-    "xs", "ys", "zs", "xsu", "ysu", "zsu", "mol", "temperature", "heatflow"};
+    "xs", "ys", "zs", "xsu", "ysu", "zsu", "mol", "temperature", "heatflow", "quatw", "quati",
+    "quatj", "quatk", "shapex", "shapey", "shapez", "angmomx", "angmomy", "angmomz"};
 
 static int field_is_int(int f)
 {
@@ -105,6 +110,9 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
         if (col->field == F_HEATFLOW && !(g->atoms.heat_flag & ATOM_HEAT_Q))
             gr_error(g, "dumping an atom property (heatflow) that isn't allocated (fix "
                         "property/atom heatflow)");
+        if (col->field >= F_QUATW && col->field <= F_ANGMOMZ && !g->atoms.ellipsoid_flag)
+            gr_error(g, "dumping an atom property (%s) that isn't allocated (atom_style "
+                        "ellipsoid superellipsoid)", s);
         if (col->field != F_COMPUTE)
             continue;
         if (strncmp(s, "c_", 2) == 0 && compute_parse_ref(s, col->cid, &col->index))
@@ -120,8 +128,8 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
         }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
                     "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu mol "
-                    "temperature heatflow i_name d_name i2_name[k] d2_name[k] c_ID c_ID[N] "
-                    "v_name)", s);
+                    "temperature heatflow quatw quati quatj quatk shapex shapey shapez angmomx "
+                    "angmomy angmomz i_name d_name i2_name[k] d2_name[k] c_ID c_ID[N] v_name)", s);
     }
 }
 
@@ -337,6 +345,15 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
             case F_TYPE: iv = a->type[j]; break;
             case F_TEMPERATURE: v = a->temperature[j]; break;
             case F_HEATFLOW: v = a->heatflow[j]; break;
+            case F_QUATW: case F_QUATI: case F_QUATJ: case F_QUATK:
+                v = a->quat[4 * j + col->field - F_QUATW];
+                break;
+            case F_SHAPEX: case F_SHAPEY: case F_SHAPEZ:
+                v = 2.0 * a->shape[3 * j + col->field - F_SHAPEX];
+                break;
+            case F_ANGMOMX: case F_ANGMOMY: case F_ANGMOMZ:
+                v = a->angmom[3 * j + col->field - F_ANGMOMX];
+                break;
             case F_X: case F_Y: case F_Z: v = a->x[3 * j + col->field - F_X]; break;
             case F_XU: case F_YU: case F_ZU: {
                 int dim = col->field - F_XU;

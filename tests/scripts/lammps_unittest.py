@@ -6,10 +6,11 @@ The table is tests/reference/lammps_unittest/cases.py: for each case the
 YAML file it comes from, the LAMMPS version that generated it, a gravel deck
 written for gravel from the case's setup (cases.py's builders), its run
 segments and LAMMPS's per-atom reference values after each segment (run_pos,
-run_vel, run_omega, run_torque, copied from the YAML). gravel runs the deck
+run_vel, run_omega, run_torque, run_angmom, copied from the YAML; a deck of
+superellipsoids dumps angular momenta instead of angular velocities). gravel runs the deck
 with one `run` per segment and every value must match to 1e-8 relative:
 relative to the largest magnitude of that quantity (position, velocity,
-angular velocity, torque) over the atoms in that segment, or to 1e-3 of its
+angular velocity, torque, angular momentum) over the atoms in that segment, or to 1e-3 of its
 largest magnitude over all segments if that is larger (so that a value left
 as round-off, such as the torque on a sphere that has come to roll, 1e-18
 where it was 1e-7 while it slid, is compared with the quantity's own
@@ -41,13 +42,19 @@ from physics_lammps import GRAVEL, read_dump  # noqa: E402
 TOL = 1e-8
 ZERO = 1e-12
 FLOOR = 1e-3  # a segment's scale is at least this part of the case's
-FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz")
-GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9))
+FIELDS = ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "tqx", "tqy", "tqz",
+          "angmomx", "angmomy", "angmomz")
+GROUPS = (("pos", 0), ("vel", 3), ("omega", 6), ("torque", 9), ("angmom", 12))
+NVAL = len(FIELDS)
+# what a deck's atoms carry: spheres an angular velocity, superellipsoids
+# (atom_style ellipsoid) an angular momentum; the other reads as zero
+SPHERE_FIELDS = FIELDS[:12]
+ELLIPSOID_FIELDS = FIELDS[:6] + FIELDS[9:]
 
 
 def parse_ref(text):
-    """rows "QUANTITY SEGMENT ATOM a b c" (QUANTITY pos, vel, omega or
-    torque; a row left out is zero) -> {segment: {atom: [12 values]}}"""
+    """rows "QUANTITY SEGMENT ATOM a b c" (QUANTITY pos, vel, omega, torque
+    or angmom; a row left out is zero) -> {segment: {atom: [15 values]}}"""
     col = dict(GROUPS)
     out = {}
     for line in text.strip().splitlines():
@@ -55,7 +62,7 @@ def parse_ref(text):
         if not w:
             continue
         seg, tag = int(w[1]), int(w[2])
-        row = out.setdefault(seg, {}).setdefault(tag, [0.0] * 12)
+        row = out.setdefault(seg, {}).setdefault(tag, [0.0] * NVAL)
         row[col[w[0]]:col[w[0]] + 3] = [float(v) for v in w[3:6]]
     return out
 
@@ -64,7 +71,8 @@ def run(name, deck, segments, extra=(), files=None):
     """gravel on deck + one `run` per segment (files: {name: text} written
     beside the deck); {segment: {id: values}} or None"""
     every = math.gcd(*segments) or 1  # a frame at each segment's end (run 0: step 0)
-    text = deck + f"dump lmp_unittest all custom {every} out.dump id " + " ".join(FIELDS) + "\n"
+    fields = ELLIPSOID_FIELDS if "atom_style ellipsoid" in deck else SPHERE_FIELDS
+    text = deck + f"dump lmp_unittest all custom {every} out.dump id " + " ".join(fields) + "\n"
     text += "dump_modify lmp_unittest sort id format float %.17g\n"
     text += "".join(f"run {n}\n" for n in segments)
     with tempfile.TemporaryDirectory() as tmp:
@@ -77,6 +85,10 @@ def run(name, deck, segments, extra=(), files=None):
             print(f"  gravel failed on {name}: {r.stdout[-600:]}{r.stderr[-600:]}")
             return None
         frames = read_dump(os.path.join(tmp, "out.dump"))
+    for rows in frames.values():  # every quantity's place, zero where not dumped
+        for tag, vals in rows.items():
+            full = dict(zip(fields, vals))
+            rows[tag] = [full.get(f, 0.0) for f in FIELDS]
     out, step = {}, 0
     for k, n in enumerate(segments):
         step += n
@@ -156,7 +168,7 @@ def sensitive(case, got):
     scale (so a case that matches cannot match by construction)"""
     ref = parse_ref(case.ref)
     rows = next(iter(ref.values()))
-    tag, c = max(((t, k) for t in rows for k in range(12)), key=lambda tc: abs(rows[tc[0]][tc[1]]))
+    tag, c = max(((t, k) for t in rows for k in range(NVAL)), key=lambda tc: abs(rows[tc[0]][tc[1]]))
     rows[tag][c] += 1e-7 * abs(rows[tag][c])
     ok = worst_error(got, ref)[0] > TOL
     print(f"{'PASS' if ok else 'FAIL'} lammps_unittest_sees_a_1e-7_change ({case.name})")

@@ -5,8 +5,8 @@ Each Case: the YAML's name (its file), the LAMMPS version that generated its
 reference values, a gravel deck written with the builders below from the
 case's setup (geometry, material, model, fixes), the run segments, and the
 reference values: rows "QUANTITY SEGMENT ATOM a b c" copied from the YAML's
-run_pos, run_vel, run_omega and run_torque (QUANTITY pos, vel, omega,
-torque); rows that are zero in the YAML are left out; files: {name: text}
+run_pos, run_vel, run_omega, run_torque and run_angmom (QUANTITY pos, vel,
+omega, torque, angmom); rows that are zero in the YAML are left out; files: {name: text}
 the deck reads (written beside it)."""
 from collections import namedtuple
 
@@ -1352,11 +1352,49 @@ LOOSER = {
 # (the heap of ANALYTIC runs by default: 85000 steps but about 5 s)
 SLOW = {c.name for c in CASES if sum(c.segments) > 20000 and c.name not in ANALYTIC}
 
+
+
+def superellipsoids(box, atoms, shape, block, mass, vx, dt, neighbor):
+    """LAMMPS 30 Mar 2026's superellipsoid pair (atom_style ellipsoid
+    superellipsoid): atoms [(x, y, z)] of type 1 with diameters `shape`,
+    blockiness `block` and mass `mass`, atom 1 moving along x at vx"""
+    text = (f"units si\ndimension 3\nboundary p p p\natom_style ellipsoid superellipsoid\n"
+            f"region box block {box} units box\ncreate_box 1 box\n")
+    text += "".join(f"create_atoms 1 single {x!r} {y!r} {z!r} units box\n" for x, y, z in atoms)
+    text += (f"set type 1 shape {shape[0]!r} {shape[1]!r} {shape[2]!r}\n"
+             f"set type 1 block {block[0]!r} {block[1]!r}\nset type 1 mass {mass!r}\n"
+             f"group moving id 1\nvelocity moving set {vx!r} 0.0 0.0\n")
+    return text + numerics(neighbor, dt, delay=False)
+
+
+# two superellipsoids (1.5 x 1 x 1 m, blockiness 4 4) colliding off-centre:
+# the contact point, overlaps and friction of pair granular/superellipsoid and
+# the quaternion update of fix nve/asphere (run_angmom: the angular momenta)
+CASES += [
+    Case("dem05-superellipsoid-3d", "30 Mar 2026 (generated May 29 17:13:26)",
+         superellipsoids("0.0 20.0 0.0 20.0 0.0 20.0", [(8.0, 10.0, 10.0), (12.0, 10.5, 10.0)],
+                         (1.5, 1.0, 1.0), (4.0, 4.0), 1.0, 3.0, 0.002, 0.5)
+         + model("granular/superellipsoid", "hooke 1000.0 0.0 tangential linear_history 285.0 "
+                 "0.0 0.5 damping mass_velocity", "fix integr all nve/asphere\n"),
+         (150, 150, 300),
+         """
+pos 0 1 8.9000000000000341e+00 1.0000000000000000e+01 1.0000000000000000e+01
+pos 0 2 1.2000000000000000e+01 1.0500000000000000e+01 1.0000000000000000e+01
+pos 1 1 9.8000000000000682e+00 1.0000000000000000e+01 1.0000000000000000e+01
+pos 1 2 1.2000000000000000e+01 1.0500000000000000e+01 1.0000000000000000e+01
+pos 2 1 1.0720492576829887e+01 9.7985163057660145e+00 1.0000000000000000e+01
+pos 2 2 1.2879507423170244e+01 1.0701483694233985e+01 1.0000000000000000e+01
+vel 0 1 3.0000000000000000e+00 0 0
+vel 1 1 3.0000000000000000e+00 0 0
+vel 2 1 2.9163267014654626e-01 -6.3129594762241270e-01 0
+vel 2 2 2.7083673298534547e+00 6.3129594762241270e-01 0
+angmom 2 1 0 0 2.3906948439836406e-01
+angmom 2 2 0 0 2.3906948439836501e-01
+"""),
+]
+
 # cases gravel cannot run: name -> what it needs
-UNSUPPORTED = {
-    "dem05-superellipsoid-3d": "atom_style ellipsoid superellipsoid, pair_style "
-                               "granular/superellipsoid, fix nve/asphere (LAMMPS 30 Mar 2026)",
-}
+UNSUPPORTED = {}
 # cases whose YAML has no reference values (run_pos "TODO: regenerate", lammps_version
 # REGENERATE: the eight of unittest/granular/README_MAPPING.md)
 NO_REFERENCE = ["dem01-hertzmindlin-cof-3d-si", "dem02-oblique-cof-3d-si", "dem03-rolling-cof-3d-si",
