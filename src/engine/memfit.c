@@ -7,6 +7,7 @@
 
 #include "accuracy.h"
 #include "atom_fields.h"
+#include "atoms.h"
 #include "device.h"
 #include "engine.h"
 #include "error.h"
@@ -94,7 +95,9 @@ static size_t held_bytes(struct gravel *g)
 static size_t host_atom_bytes(const struct gravel *g)
 {
     size_t b = (size_t)g->atoms.cus.slots * sizeof(double);
-#define HOST(name, ctype, dev, width, when, life, sect, what) b += (width) * sizeof(ctype);
+#define HOST(name, ctype, dev, width, when, life, sect, what)                                  \
+    if (atoms_holds(&g->atoms, when))                                                         \
+        b += (width) * sizeof(ctype);
     ATOM_FIELDS(HOST)
 #undef HOST
     return b;

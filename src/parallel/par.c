@@ -117,7 +117,7 @@ static size_t record_bytes(const struct gravel *g)
 {
     size_t b = extra_bytes(g);
 #define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
-    if (life == FL_STATE)                                                                     \
+    if (life == FL_STATE && atoms_holds(&g->atoms, when))                                     \
         b += sizeof(ctype) * (width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
@@ -129,7 +129,7 @@ static void pack_rows(const struct atoms *a, int i, const unsigned char *raw, si
                       int all, unsigned char *out)
 {
 #define PACK(name, ctype, dev, width, when, life, sect, what)                                  \
-    if (life == FL_STATE || all) {                                                            \
+    if ((life == FL_STATE || all) && atoms_holds(a, when)) {                                                            \
         memcpy(out, a->name + (size_t)i * (width), sizeof(ctype) * (width));                  \
         out += sizeof(ctype) * (width);                                                       \
     }
@@ -146,7 +146,7 @@ static void unpack_rows(struct atoms *a, int i, const unsigned char *in, unsigne
                         size_t rawb, int all)
 {
 #define UNPACK(name, ctype, dev, width, when, life, sect, what)                                \
-    if (life == FL_STATE || all) {                                                            \
+    if ((life == FL_STATE || all) && atoms_holds(a, when)) {                                                            \
         memcpy(a->name + (size_t)i * (width), in, sizeof(ctype) * (width));                   \
         in += sizeof(ctype) * (width);                                                        \
     }
@@ -176,7 +176,9 @@ static void unpack_atom(struct atoms *a, int i, const unsigned char *in, unsigne
 static size_t all_rows_bytes(const struct atoms *a)
 {
     size_t b = (size_t)a->cus.slots * sizeof(double);
-#define BYTES(name, ctype, dev, width, when, life, sect, what) b += sizeof(ctype) * (width);
+#define BYTES(name, ctype, dev, width, when, life, sect, what)                                 \
+    if (atoms_holds(a, when))                                                                 \
+        b += sizeof(ctype) * (width);
     ATOM_FIELDS(BYTES)
 #undef BYTES
     return b;

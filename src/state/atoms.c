@@ -30,7 +30,7 @@ static void field_free(void *p, size_t bytes)
     {                                                                                         \
         size_t old_ = (size_t)a->cap * (width) * sizeof(ctype);                               \
         ctype *p_ = field_alloc(g, (size_t)cap * (width) * sizeof(ctype));                    \
-        if (a->name)                                                                          \
+        if (a->name && atoms_holds(a, when)) /* else all zero: left untouched */              \
             memcpy(p_, a->name, old_);                                                        \
         field_free(a->name, old_);                                                            \
         a->name = p_;                                                                         \
@@ -69,7 +69,8 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
     if (tag > a->maxtag)
         a->maxtag = tag;
 #define ZERO(name, ctype, dev, width, when, life, sect, what)                                  \
-    memset(a->name + (size_t)(width) * i, 0, (width) * sizeof(ctype));
+    if (atoms_holds(a, when))                                                                 \
+        memset(a->name + (size_t)(width) * i, 0, (width) * sizeof(ctype));
     ATOM_FIELDS(ZERO)
 #undef ZERO
     if (a->cus.slots)
@@ -91,8 +92,9 @@ void atoms_copy(struct atoms *a, int from, int to)
     if (from == to)
         return;
 #define COPY(name, ctype, dev, width, when, life, sect, what)                                  \
-    memcpy(a->name + (size_t)(width) * to, a->name + (size_t)(width) * from,                  \
-           (width) * sizeof(ctype));
+    if (atoms_holds(a, when))                                                                 \
+        memcpy(a->name + (size_t)(width) * to, a->name + (size_t)(width) * from,              \
+               (width) * sizeof(ctype));
     ATOM_FIELDS(COPY)
 #undef COPY
     if (a->cus.slots)

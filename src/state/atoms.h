@@ -9,6 +9,16 @@
 
 #include "state.h"
 
+/* Whether the host holds a field of this `when` (atom_fields.h): every field
+ * but the superellipsoid rows, which only atom_style ellipsoid superellipsoid
+ * writes (fixed before the first atom exists); elsewhere their arrays stay
+ * untouched zero pages, which cost no memory. Loops over the table that
+ * write or move per-atom values skip the fields not held. */
+static inline int atoms_holds(const struct atoms *a, int when)
+{
+    return when != FW_ELLIPSOID || a->ellipsoid_flag;
+}
+
 /* Make room for at least n atoms (values of new slots are zero). */
 void atoms_reserve(struct gravel *g, int n);
 /* Append one atom; returns its index. Tag 0 = next free tag. Radius and
