@@ -29,6 +29,7 @@ TEST(every_field_moves_and_resets)
 {
     struct gravel *g = test_engine();
     struct atoms *a = &g->atoms;
+    a->ellipsoid_flag = 1; /* every row held (atoms_holds) */
     atoms_set_ntypes(g, 1);
     double x[3] = {1, 2, 3};
     atoms_add(g, 0, 1, x, 0.5, 1.0);
@@ -70,9 +71,31 @@ TEST(every_field_moves_and_resets)
     gr_destroy(g);
 }
 
+/* Without atom_style ellipsoid superellipsoid its rows are not held: appends,
+ * removals and growth leave them untouched (zero pages that cost no memory). */
+TEST(unheld_rows_untouched)
+{
+    struct gravel *g = test_engine();
+    struct atoms *a = &g->atoms;
+    atoms_set_ntypes(g, 1);
+    double x[3] = {1, 2, 3};
+    atoms_add(g, 0, 1, x, 0.5, 1.0);
+    atoms_add(g, 0, 1, x, 0.5, 1.0);
+    CHECK(!atoms_holds(a, FW_ELLIPSOID) && atoms_holds(a, FW_ALWAYS) && atoms_holds(a, FW_HEAT));
+    a->quat[0] = 11.0;
+    a->quat[4] = 22.0;
+    atoms_remove(g, 0); /* atom 2 moves into slot 0; its quaternion does not */
+    CHECK(a->n == 1 && a->quat[0] == 11.0);
+    for (int i = 0; i < 5000; i++) /* growth: the unheld rows' content is not copied */
+        atoms_add(g, 0, 1, x, 0.5, 1.0);
+    CHECK(a->quat[0] == 0.0 && a->tag[0] == 2);
+    gr_destroy(g);
+}
+
 int main(void)
 {
     RUN(add_grow_remove);
     RUN(every_field_moves_and_resets);
+    RUN(unheld_rows_untouched);
     return 0;
 }
