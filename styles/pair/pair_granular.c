@@ -164,7 +164,11 @@ double granular_tsuji(double e, int lammps2021)
  * for the normal, damping and tangential models with this message. */
 static void refuse_known(struct gravel *g, const char *who, const char *what, const char *s)
 {
-    static const char *const later[] = {"epa/linear", "epa/nonlinear", NULL};
+    /* epa_linear, epa_nonlinear: described by a development branch of LAMMPS's
+     * documentation (Luding 2008; Thakur et al. 2014), in no LAMMPS source or
+     * release stored here; the slash spellings of gravel's earlier notes too */
+    static const char *const later[] = {"epa_linear", "epa_nonlinear", "epa/linear",
+                                        "epa/nonlinear", NULL};
     if (!strcmp(s, "none"))
         gr_error(g, "%s: Must specify %s granular model (LAMMPS refuses '%s' for the normal, "
                     "damping and tangential models)", who, what, s);

@@ -28,7 +28,7 @@ never turns) must run the same with and without it (1e-12), obliquely differ.
 
 Refusals: tsuji with jkr or dmt (today's LAMMPS; -compat lammps2021 takes
 it), mdr on a fix wall/gran wall (LAMMPS's own message: its mdr walls are
-fix wall/gran/region's, tests/scripts/lammps_granular_mdr.py), damping mdr without it (LAMMPS's own message), epa/linear and epa/nonlinear each
+fix wall/gran/region's, tests/scripts/lammps_granular_mdr.py), damping mdr without it (LAMMPS's own message), epa_linear and epa_nonlinear (and epa/linear) each
 give an error naming them; synchronized_verlet with linear_nohistory, on a wall/gran
 wall and under -compat lammps2021 too; `none` as normal, damping or tangential
 model gives LAMMPS's own "Must specify ... granular model", a NULL kt of
@@ -53,7 +53,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "reference", "lammps_unittest"))
 from physics_lammps import GRAVEL, read_dump  # noqa: E402
-from lammps_unittest import FIELDS, TOL, parse_ref, run, worst_error  # noqa: E402
+from lammps_unittest import SPHERE_FIELDS as FIELDS, TOL, parse_ref, run, worst_error  # noqa: E402
 import cases  # noqa: E402
 
 # the unit cases of tests/reference/lammps_unittest/cases.py checked here: name,
@@ -156,10 +156,14 @@ REFUSALS = (
     ("mdr_wall", "fix w all wall/gran granular mdr 1e7 0.3 1e5 0.1 0.5 0.5 damping mdr 1 "
      "tangential linear_history 1 1 0.5 zplane 0 NULL", (),
      "MDR model currently only supports fix wall/gran/region, not fix wall/gran"),
-    ("epa_linear", "pair_coeff * * epa/linear 1 2 3 4 tangential linear_history 1 1 0.5", (),
+    ("epa_linear", "pair_coeff * * epa_linear 1000.0 50.0 5000.0 200.0 0.5 0.0 tangential "
+     "linear_history 500.0 1.0 0.4 damping mass_velocity", (),
+     "normal model 'epa_linear' of LAMMPS's pair granular is not supported"),
+    ("epa_slash", "pair_coeff * * epa/linear 1 2 3 4 tangential linear_history 1 1 0.5", (),
      "normal model 'epa/linear' of LAMMPS's pair granular is not supported"),
-    ("epa_nonlinear", "pair_coeff * * epa/nonlinear 1 2 3 4 tangential linear_history 1 1 0.5",
-     (), "normal model 'epa/nonlinear' of LAMMPS's pair granular is not supported"),
+    ("epa_nonlinear", "pair_coeff * * epa_nonlinear 1.0e8 50.0 0.3 0.5 0.0 1000.0 1.5 1.0 "
+     "tangential mindlin NULL 1.0 0.4 damping viscoelastic",
+     (), "normal model 'epa_nonlinear' of LAMMPS's pair granular is not supported"),
     ("damping_mdr", "pair_coeff * * hooke 1 1 damping mdr 1 tangential linear_history 1 1 0.5",
      (), "Damping mdr can only be used with mdr normal model"),
     ("classic_kt_null", "pair_coeff * * hertz/material 1e4 0.5 0.3 tangential mindlin_classic "
