@@ -44,41 +44,15 @@ static void add(struct gravel *g, struct builder *b, struct fix *f, const struct
     b->nops++;
 }
 
-/* Fuse the fixes of `hook` from the first; all = every one must fuse.
- * Returns the number fused. */
-static int stage(struct gravel *g, struct builder *b, unsigned hook, int all)
-{
-    struct fix *list[64];
-    struct fused_op ops[64];
-    int n = 0, ok = 0;
-    struct fix *store_fix = b->store_fix;
-    for (int i = 0; i < g->styles.nfix && n < 64; i++) {
-        struct fix *f = g->styles.fix[i];
-        if (!(f->hooks & hook))
-            continue;
-        list[n] = f;
-        ops[n].store = 0;
-        if (ok == n && f->style->fuse && f->style->fuse(g, f, hook, &ops[n]) &&
-            (!ops[n].store || !store_fix || store_fix == f)) {
-            if (ops[n].store)
-                store_fix = f;
-            ok++;
-        }
-        n++;
-    }
-    if (all && ok < n)
-        return 0;
-    b->store_fix = store_fix;
-    for (int k = 0; k < ok; k++) {
-        add(g, b, list[k], &ops[k]);
-        list[k]->fused_hooks |= hook;
-    }
-    return ok;
-}
+/* How a stage takes the fixes of its hook, in fix order: every one or none
+ * (TAKE_ALL), the longest run from the first (TAKE_PREFIX), or the run after
+ * the last one that cannot fuse (TAKE_SUFFIX: the tail's post_force fixes).
+ * At most one fused fix keeps per-atom state (store_fix). */
+enum stage_take { TAKE_ALL, TAKE_PREFIX, TAKE_SUFFIX };
 
-/* The tail's post_force ops: the fixes of `hook` after the last one that
- * cannot fuse (none when the last fix cannot). Returns the number fused. */
-static int stage_suffix(struct gravel *g, struct builder *b, unsigned hook)
+/* Fuse the fixes of `hook` not fused yet as `take` says; returns the number
+ * fused. */
+static int stage(struct gravel *g, struct builder *b, unsigned hook, enum stage_take take)
 {
     struct fix *list[64];
     struct fused_op ops[64];
@@ -89,15 +63,19 @@ static int stage_suffix(struct gravel *g, struct builder *b, unsigned hook)
         if (!(f->hooks & hook) || (f->fused_hooks & hook))
             continue;
         ops[n].store = 0;
-        if (!(f->style->fuse && f->style->fuse(g, f, hook, &ops[n]) &&
-              (!ops[n].store || !store_fix || store_fix == f))) {
-            n = 0; /* the suffix starts after this one */
-            store_fix = b->store_fix;
+        if (f->style->fuse && f->style->fuse(g, f, hook, &ops[n]) &&
+            (!ops[n].store || !store_fix || store_fix == f)) {
+            if (ops[n].store)
+                store_fix = f;
+            list[n++] = f;
             continue;
         }
-        if (ops[n].store)
-            store_fix = f;
-        list[n++] = f;
+        if (take == TAKE_ALL)
+            return 0;
+        if (take == TAKE_PREFIX)
+            break;
+        n = 0; /* TAKE_SUFFIX: the run starts after this one */
+        store_fix = b->store_fix;
     }
     b->store_fix = store_fix;
     for (int k = 0; k < n; k++) {
@@ -128,20 +106,20 @@ void fused_setup(struct gravel *g)
     s->lookahead = !(look && !strcmp(look, "0"));
     struct builder b = {0};
     if (enabled) {
-        s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, 1);
+        s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, TAKE_ALL);
         if (e->k_pair) {
-            s->npost = stage(g, &b, HOOK_POST_FORCE, 0);
+            s->npost = stage(g, &b, HOOK_POST_FORCE, TAKE_PREFIX);
             if (s->npost == count_hook(g, HOOK_POST_FORCE))
-                s->nfinal = stage(g, &b, HOOK_FINAL_INTEGRATE, 1);
+                s->nfinal = stage(g, &b, HOOK_FINAL_INTEGRATE, TAKE_ALL);
             if (s->npost == count_hook(g, HOOK_POST_FORCE) &&
                 s->nfinal == count_hook(g, HOOK_FINAL_INTEGRATE))
-                s->neos = stage(g, &b, HOOK_END_OF_STEP, 1);
+                s->neos = stage(g, &b, HOOK_END_OF_STEP, TAKE_ALL);
             if (s->npost < count_hook(g, HOOK_POST_FORCE)) { /* the tail */
                 s->tfirst = b.nops;
-                s->tpost = stage_suffix(g, &b, HOOK_POST_FORCE);
-                int nf = stage(g, &b, HOOK_FINAL_INTEGRATE, 1), ne = 0;
+                s->tpost = stage(g, &b, HOOK_POST_FORCE, TAKE_SUFFIX);
+                int nf = stage(g, &b, HOOK_FINAL_INTEGRATE, TAKE_ALL), ne = 0;
                 if (nf == count_hook(g, HOOK_FINAL_INTEGRATE))
-                    ne = stage(g, &b, HOOK_END_OF_STEP, 1);
+                    ne = stage(g, &b, HOOK_END_OF_STEP, TAKE_ALL);
                 s->tfinal = nf + ne;
             }
         }

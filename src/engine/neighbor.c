@@ -1139,12 +1139,13 @@ void nbr_history_install(struct gravel *g, const void *hist)
     clReleaseMemObject(from);
 }
 
-/* Gather one per-atom array (bytes per atom) into the new order through the
- * force buffer, free scratch during a rebuild (the forces of the step are
- * computed after it), and copy it back. A field wider than a force (the
- * superellipsoids' quaternions, 4 REALs) goes through a scratch buffer of
- * its own. */
-static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t bytes, int n)
+/* Gather one per-atom array (bytes per atom) into the new order through a
+ * scratch buffer and copy it back: `scratch` when given (n * bytes at
+ * least), else the force buffer, free during a rebuild (the forces of the
+ * step are computed after it), or for a field wider than a force (the
+ * superellipsoids' quaternions, 4 REALs) a buffer allocated here. */
+static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t bytes, int n,
+                          cl_mem scratch)
 {
     struct engine *e = g->eng;
     if (n == 0)
@@ -1152,9 +1153,10 @@ static void reorder_array(struct gravel *g, struct nbr *b, cl_mem m, size_t byte
     if (bytes % 4)
         gr_error(g, "internal error: a per-atom field of %zu bytes per atom is not a whole "
                     "number of words", bytes);
-    cl_mem scratch = e->a.f, own = NULL;
-    if (bytes > 3 * e->rsz)
-        scratch = own = eng_alloc(g, (size_t)n * bytes, "re-sort scratch");
+    cl_mem own = NULL;
+    if (!scratch)
+        scratch = bytes > 3 * e->rsz ? (own = eng_alloc(g, (size_t)n * bytes, "re-sort scratch"))
+                                     : e->a.f;
     cl_kernel k = b->k_reorder_words;
     eng_arg_int(g, k, 0, n);
     eng_arg_int(g, k, 1, (int)(bytes / 4));
@@ -1197,23 +1199,14 @@ static void resort_atoms(struct gravel *g, struct nbr *b, int n, int nkeep)
     /* the fields that move with their atoms (atom_fields.h, FL_STATE) */
 #define REORDER(name, ctype, dev, width, when, life, sect, what)                               \
     if (life == FL_STATE && s->name)                                                          \
-        reorder_array(g, b, s->name, eng_field_bytes(g, dev, sizeof(ctype), width), nkeep);
+        reorder_array(g, b, s->name, eng_field_bytes(g, dev, sizeof(ctype), width), nkeep, NULL);
     ATOM_FIELDS(REORDER)
 #undef REORDER
     if (s->xlo)
-        reorder_array(g, b, s->xlo, 3 * e->rsz, nkeep);
-    if (s->custom) { /* the custom properties' records: their own scratch (any width) */
-        size_t cb = (size_t)s->custom_slots * sizeof(double);
-        cl_kernel k = b->k_reorder_words;
-        eng_arg_int(g, k, 0, nkeep);
-        eng_arg_int(g, k, 1, (int)(cb / 4));
-        eng_arg_mem(g, k, 2, b->perm);
-        eng_arg_mem(g, k, 3, s->custom);
-        eng_arg_mem(g, k, 4, s->custom_tmp);
-        eng_launch(g, k, (size_t)nkeep);
-        OCL_CHECK(g, clEnqueueCopyBuffer(e->ocl.queue, s->custom_tmp, s->custom, 0, 0,
-                                         (size_t)nkeep * cb, 0, NULL, NULL));
-    }
+        reorder_array(g, b, s->xlo, 3 * e->rsz, nkeep, NULL);
+    if (s->custom) /* the custom properties' records: their own scratch (any width) */
+        reorder_array(g, b, s->custom, (size_t)s->custom_slots * sizeof(double), nkeep,
+                      s->custom_tmp);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (!f->peratom)
