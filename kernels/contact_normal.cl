@@ -115,6 +115,29 @@ static inline REAL normal_force_at(const int law, const REAL cv2, const REAL ch,
     return fel + ch * (jl + jr) / dt;
 }
 
+/* The linear law with the overlap positive a drift before and after the kick
+ * (dp > 0, dn > 0): there F_el = ke d and jr = dt S d / (2 d + dt S), so
+ * r(S) (2 d + dt S) is the quadratic dt S^2 + (2 d + c0 dt + A) S + 2 d c0
+ * with c0 = k (ke d + ch jl / dt) - s and A = k ch d. r rises with S where
+ * dn > 0, so at most one root lies there: returns 1 and that root in *S
+ * (the cancellation-free pair of roots q / dt, 2 d c0 / q), else 0 (the
+ * contact ends within the drift: the caller iterates). */
+static inline int normal_linear_inside(const REAL cv2, const REAL ch, const REAL d, const REAL s,
+                                       const REAL jl, const REAL k, const REAL dt, REAL *S)
+{
+    const REAL c0 = k * ((REAL)2 * cv2 * d + ch * jl / dt) - s;
+    const REAL B = (REAL)2 * d + c0 * dt + k * ch * d;
+    const REAL disc = B * B - (REAL)8 * dt * d * c0;
+    if (!(disc >= (REAL)0))
+        return 0;
+    const REAL q = (REAL)-0.5 * (B + copysign(sqrt(disc), B));
+    if (q == (REAL)0)
+        return 0;
+    const REAL s1 = q / dt, s2 = (REAL)2 * d * c0 / q;
+    *S = d + dt * s1 > (REAL)0 ? s1 : s2;
+    return d + dt * *S > (REAL)0;
+}
+
 /* Normal force magnitude along n for overlap d > 0 closing at rate s over
  * the last drift (s = -vr.n), reduced mass meff, time step dt. */
 static inline REAL contact_normal_force(const int law, const REAL cv2, REAL ch,
@@ -130,6 +153,9 @@ static inline REAL contact_normal_force(const int law, const REAL cv2, REAL ch,
     const REAL dpp = fmax(dp, (REAL)0);
     const REAL jl = (pd - normal_shape(law, dpp)) * (d / (d + dpp));
     const REAL k = dt / meff;
+    REAL Sq;
+    if (law == NORMAL_LINEAR && dp > (REAL)0 && normal_linear_inside(cv2, ch, d, s, jl, k, dt, &Sq))
+        return (s - Sq) / k;
     /* bracket [lo, hi] with r(lo) <= 0 <= r(hi), r(S) = S - s + k F(S) */
     const REAL f0 = normal_force_at(law, cv2, ch, d, pd, dp, jl, dt, s);
     const REAL r0 = k * f0;
