@@ -58,6 +58,7 @@
 #include "pair_gran.h"
 #include "pair_granular.h"
 #include "region.h"
+#include "variable.h"
 #include "fix_mesh_surface.h"
 #include "fix_wall_gran.h"
 #include "wall.h"
@@ -91,6 +92,8 @@ struct wall {
     int inits;                  /* runs set up so far (-compat lammps2021: tsuji) */
     int heat, twall_set;        /* a granular heat sub-model; `temperature T` given */
     double twall;               /* the wall's temperature (LAMMPS 2023 Twall) */
+    char tvar[GR_NAMELEN];      /* `temperature v_name`: an equal-style variable, */
+                                /* evaluated at every post_force as LAMMPS does */
     struct wall_region wreg;
     /* restart: the region's previous displacement and angle per node
      * (LAMMPS Region::prev), applied when the region matches at init */
@@ -412,10 +415,14 @@ options:
                         "move/mesh on a mesh)");
         } else if (!strcmp(argv[i], "temperature")) { /* LAMMPS 2023: the wall's temperature */
             arg_need(g, argc, i, 1, "temperature");
-            if (!strncmp(argv[i + 1], "v_", 2))
-                gr_error(g, "fix wall/gran temperature: a variable wall temperature (%.64s) is "
-                            "not supported; give a number", argv[i + 1]);
-            w.twall = arg_double(g, argv[i + 1], "wall temperature");
+            if (!strncmp(argv[i + 1], "v_", 2)) {
+                if (strlen(argv[i + 1] + 2) >= sizeof w.tvar || !argv[i + 1][2])
+                    gr_error(g, "fix wall/gran temperature: bad variable name '%.64s'",
+                             argv[i + 1]);
+                strcpy(w.tvar, argv[i + 1] + 2);
+            } else {
+                w.twall = arg_double(g, argv[i + 1], "wall temperature");
+            }
             w.twall_set = 1;
             i += 2;
         } else if (!strcmp(argv[i], "wiggle")) {
@@ -600,6 +607,12 @@ static void init(struct gravel *g, struct fix *f)
                     "property (fix property/atom temperature heatflow)");
     w->law.heat = w->heat;
     w->law.twall = w->twall;
+    if (w->tvar[0]) { /* LAMMPS's FixWallGran::init checks */
+        if (!var_exists(g, w->tvar))
+            gr_error(g, "Variable %s for fix wall/gran does not exist", w->tvar);
+        if (!var_is_equal(g, w->tvar))
+            gr_error(g, "Variable %s for fix wall/gran must be an equal style variable", w->tvar);
+    }
     if (liggghts_model(w->model)) { /* the table by (particle type, wall type) */
         int nt = g->atoms.ntypes > 0 ? g->atoms.ntypes : 1;
         char who[GR_NAMELEN + 32];
@@ -663,6 +676,8 @@ static void init(struct gravel *g, struct fix *f)
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
+    if (w->tvar[0]) /* the kernels take twall as an argument at this launch */
+        w->law.twall = var_compute_equal(g, w->tvar);
     if (w->style == W_MESH) {
         mesh_walls_apply(g, f, &w->mesh, &w->law, liggghts_model(w->model));
         return;

@@ -20,6 +20,10 @@ custom and compute property/atom (through compute reduce).
 3. A sphere resting on a zplane wall/gran granular wall with heat radius k at
    temperature Tw: T_n from the recurrence T += dt G (Tw - T) / (m cp), 1e-12;
    the same sphere in a wall/gran/region block (its floor): the same numbers.
+   `temperature v_Tw` with an equal-style variable: evaluated at every step
+   as LAMMPS's post_force does (a ramp Tw = 1.5 + 0.001 step follows the
+   recurrence with Tw of the step, 1e-12; a constant variable gives the
+   number's dump byte for byte).
 4. Restart: run 600 = run 300 + write_restart + read_restart + run 300, the
    temperatures bit for bit.
 5. Order independence: 64 pressed spheres settling on a hot wall (pair and
@@ -95,6 +99,11 @@ dump d all custom 100 out.dump id temperature heatflow
 dump_modify d format float %.17g
 run 1000
 """
+
+WALLVAR = WALL.replace("temperature 1.5", "temperature v_Tw").replace(
+    "fix hf all", "variable Tw equal 1.5+0.001*step\nfix hf all")
+WALLCONST = WALL.replace("temperature 1.5", "temperature v_Tw").replace(
+    "fix hf all", "variable Tw equal 1.5\nfix hf all")
 
 WALLREG = WALL.replace("zplane -2.0 NULL", "region floor").replace(
     "fix w all", "region floor block -1.9 1.9 -1.9 1.9 -2 2 units box\nfix w all").replace(
@@ -196,6 +205,9 @@ def main():
             start(t[3], RESTART_A)]
     treg = tempfile.TemporaryDirectory()
     runs.append(start(treg.name, WALLREG))
+    tvar = [tempfile.TemporaryDirectory() for _ in range(2)]
+    runs.append(start(tvar[0].name, WALLVAR))
+    runs.append(start(tvar[1].name, WALLCONST))
     beds = [tempfile.TemporaryDirectory() for _ in range(3)]
     nfirst = len(runs)
     for k, (sort, wg) in enumerate(((1, None), (0, None), (1, "1"))):
@@ -243,6 +255,27 @@ def main():
     else:
         check(False, "heat_wall_region", outs[4][-600:])
     treg.cleanup()
+    # a variable wall temperature
+    if rcs[5] and rcs[6] and rcs[2]:
+        frames = read_dump(os.path.join(tvar[0].name, "out.dump"))
+        aw = math.sqrt(0.01 * 0.5)
+        G, T, worst = 2 * 2.0 * aw, 0.25, 0.0
+        for n in range(1, 1001):
+            T += 0.001 * G * (1.5 + 0.001 * n - T) / (m * 2.0)
+            if n % 100 == 0:
+                worst = max(worst, abs(frames[n][1][0] - T))
+        check(worst < 1e-12, "heat_wall_variable_temperature",
+              f"T {frames[1000][1][0]:.15g}, recurrence with Tw(step) {T:.15g}")
+        same = open(os.path.join(t[2], "out.dump")).read() == \
+            open(os.path.join(tvar[1].name, "out.dump")).read()
+        check(same, "heat_wall_variable_constant", "temperature v_Tw (Tw equal 1.5) dumps as "
+              "temperature 1.5" if same else "dumps differ")
+    else:
+        check(False, "heat_wall_variable_temperature",
+              next(o for o, r in zip(outs[5:7], rcs[5:7]) if not r)[-600:]
+              if not (rcs[5] and rcs[6]) else outs[2][-600:])
+    for x in tvar:
+        x.cleanup()
     # order independence
     rcs, outs = rcs[nfirst:], outs[nfirst:]
     if all(rcs):
@@ -282,6 +315,13 @@ def main():
                "area 1 zplane -2 NULL\n", "Must define wall temperature with heat model"),
         (one + "fix w all wall/gran granular hooke 1 0 tangential linear_nohistory 0 0 "
                "zplane -2 NULL temperature 1\n", "Must define wall temperature with heat model"),
+        (one + "fix p all property/atom temperature heatflow\nfix w all wall/gran granular "
+               "hooke 1 0 tangential linear_nohistory 0 0 heat area 1 zplane -2 NULL "
+               "temperature v_nope\nrun 0\n", "Variable nope for fix wall/gran does not exist"),
+        (one + "fix p all property/atom temperature heatflow\nvariable a atom x\nfix w all "
+               "wall/gran granular hooke 1 0 tangential linear_nohistory 0 0 heat area 1 zplane "
+               "-2 NULL temperature v_a\nrun 0\n",
+         "Variable a for fix wall/gran must be an equal style variable"),
     ]
     for text, want in bad:
         with tempfile.TemporaryDirectory() as tmp:
