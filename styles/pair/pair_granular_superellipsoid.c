@@ -807,9 +807,10 @@ static void *state_read(const unsigned char *coeff, size_t ncoeff, const unsigne
             (m->limit != 0 && m->limit != 1))
             SBAD("invalid granular/superellipsoid model of types %d %d", k / nt + 1,
                  k % nt + 1);
-        for (int q = 0; q < MODEL_REALS; q++)
-            if (!isfinite(*dv[q]))
-                SBAD("non-finite granular/superellipsoid coefficient of types %d %d",
+        for (int q = 0; q < MODEL_REALS; q++) /* as pair_coeff takes them */
+            if (!isfinite(*dv[q]) || (q < MODEL_REALS - 1 ? *dv[q] < 0 :
+                                      !(*dv[q] > 0 || *dv[q] == -1)))
+                SBAD("invalid granular/superellipsoid coefficient %d of types %d %d", q + 1,
                      k / nt + 1, k % nt + 1);
     }
     struct in h = {hist, nhist, 0};

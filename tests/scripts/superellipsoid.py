@@ -30,7 +30,7 @@ granular/superellipsoid (LAMMPS 30 Mar 2026).
    active): the file keeps the models and the contact history (section 14),
    so run 900 equals run 470 + write_restart + clear + read_restart + run
    430 bit for bit with pair_style/pair_coeff re-given or not, and from a
-   `restart 470` file written mid-run; another neighbor skin after
+   `restart 470` file written mid-run, in double and single precision; another neighbor skin after
    read_restart equals the same change between two runs of one process;
    another mu is named as the setting that differs. A corrupted state
    section (checksum re-fixed) is refused naming the problem.
@@ -61,10 +61,10 @@ def check(ok, name, detail="", quiet=False):
     return ok
 
 
-def run(deck, tmp, exe=None, name="in.deck"):
+def run(deck, tmp, exe=None, name="in.deck", flags=()):
     with open(os.path.join(tmp, name), "w") as f:
         f.write(deck)
-    cmd = [exe or GRAVEL, "-in", name, "-log", "none"]
+    cmd = [exe or GRAVEL, *flags, "-in", name, "-log", "none"]
     return subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=300)
 
 
@@ -385,11 +385,13 @@ def restart_in_contact(tmp):
         "other_mu": write + MODEL.replace("0.0 0.5 damping", "0.0 0.4 damping") + CONTACT_DUMP
         + "run 430\n",
     }
+    decks["single_straight"] = decks["straight"]
+    decks["single_coeff_again"] = decks["coeff_again"]
     out, blocks = {}, {}
     for name, deck in decks.items():
         d = os.path.join(tmp, "contact_" + name)
         os.makedirs(d)
-        r = run(deck, d)
+        r = run(deck, d, flags=("-precision", "single") if name.startswith("single") else ())
         if not check(r.returncode == 0, f"restart_contact_{name}_runs",
                      (r.stdout + r.stderr)[-300:], quiet=True):
             return
@@ -408,6 +410,9 @@ def restart_in_contact(tmp):
         check(blocks[name] == a and "exact continuation of step 470" in out[name],
               f"restart_contact_bit_identical_{name}",
               "run 900 == run 470 + restart + run 430 (x v quat angmom f torque, %.17g)")
+    check(blocks["single_coeff_again"] == blocks["single_straight"] != a
+          and "exact continuation of step 470" in out["single_coeff_again"],
+          "restart_contact_bit_identical_single", "-precision single, pair commands again")
     check(blocks["skin_restart"] == blocks["skin_one_process"] and "neighbor skin 0.6" in
           out["skin_restart"], "restart_contact_changed_skin_as_one_process",
           "history carried; equals `neighbor 0.6 bin` between two runs of one process")
