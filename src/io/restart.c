@@ -59,6 +59,8 @@ enum sect {
     S_HEAT,     /* optional: temperatures and heat flows (fix property/atom temperature) */
     S_CUSTOM,   /* optional: custom properties (fix property/atom i_ d_ i2_ d2_) */
     S_ELLIPSOID, /* optional: superellipsoid shapes, blockiness, orientations, angular momenta */
+    S_PAIR_STATE, /* optional: a pair style's own state (granular/superellipsoid's models
+                   * and contact history: pair_style.state_write) */
     S_LAST
 };
 /* ---- growable output buffer -------------------------------------------------- */
@@ -204,6 +206,13 @@ struct image {
     int has_pair, coeff_set, ncoef;
     char pair_name[GR_NAMELEN];
     double coef[PAIR_MAXCOEF];
+    /* the pair style's own state (S_PAIR_STATE): its two parts' bytes, and
+     * the data state_read made of them (validate), installed by apply */
+    int has_pstate;
+    char pstate_name[GR_NAMELEN];
+    unsigned char *pcoef, *phist;
+    size_t npcoef, nphist;
+    void *pdata;
     /* neighbor list (device order of the writer) */
     int has_list, exact, history, ndev, maxn, ago;
     uint64_t fingerprint;
@@ -238,7 +247,14 @@ static void image_free(struct image *im)
     if (!im)
         return;
     void *p[] = {im->type_mass, im->devtag, im->ncount, im->partner, im->shear, im->xhold,
-                 im->custom};
+                 im->custom, im->pcoef, im->phist};
+    if (im->pdata) { /* parsed, not applied: the style's destroy frees it */
+        struct pair tmp = {.style = pair_style_find(im->pair_name), .data = im->pdata};
+        if (tmp.style && tmp.style->destroy)
+            tmp.style->destroy(&tmp);
+        else
+            free(im->pdata);
+    }
     for (size_t i = 0; i < sizeof p / sizeof *p; i++)
         free(p[i]);
 #define FREE_FIELD(name, ctype, dev, width, when, life, sect, what) free(im->name);
@@ -287,6 +303,16 @@ static uint64_t force_fingerprint(const struct gravel *g)
         h = fnv1a(h, p->style->name, strlen(p->style->name) + 1);
         h = fnv1a(h, p->coef, sizeof p->coef);
         h = fnv1a(h, &p->coeff_set, sizeof p->coeff_set);
+        size_t n = p->style->state_write ? p->style->state_write(p, PAIR_STATE_COEFF, NULL, 0)
+                                         : 0;
+        if (n) { /* the style's own coefficients (granular/superellipsoid) */
+            unsigned char *b = malloc(n);
+            if (b) {
+                p->style->state_write(p, PAIR_STATE_COEFF, b, n);
+                h = fnv1a(h, b, n);
+                free(b);
+            }
+        }
     }
     h = fnv1a(h, &g->dt, sizeof g->dt);
     h = fnv1a(h, &g->styles.nfix, sizeof g->styles.nfix);
@@ -760,6 +786,47 @@ static int read_pair(struct image *im, struct rbuf *r, unsigned seen, char *err,
     return 1;
 }
 
+/* Optional: the pair style's own state (pair_style.state_write), its
+ * coefficients and its contact history, each as u64 length + bytes. */
+static void put_pair_part(struct gravel *g, struct wbuf *w, const struct pair *p, int part)
+{
+    size_t n = p->style->state_write(p, part, NULL, 0);
+    unsigned char *b = gr_malloc(g, n + 1);
+    if (p->style->state_write(p, part, b, n) != n)
+        gr_error(g, "pair %s: restart state size changed while writing", p->style->name);
+    put_u64(g, w, n);
+    put(g, w, b, n);
+    free(b);
+}
+
+static void write_pair_state(struct gravel *g, struct wbuf *w, struct wctx *c)
+{
+    (void)c;
+    const struct pair *p = g->styles.pair;
+    if (!p || !p->style->state_write || !p->data)
+        return;
+    size_t at = sect_begin(g, w, S_PAIR_STATE);
+    put_str(g, w, p->style->name);
+    put_pair_part(g, w, p, PAIR_STATE_COEFF);
+    put_pair_part(g, w, p, PAIR_STATE_HISTORY);
+    sect_end(w, at);
+}
+
+static int read_pair_state(struct image *im, struct rbuf *r, unsigned seen, char *err,
+                           size_t errlen)
+{
+    (void)seen;
+    (void)err;
+    (void)errlen;
+    im->has_pstate = 1;
+    get_str(r, im->pstate_name, sizeof im->pstate_name);
+    im->npcoef = (size_t)get_u64(r);
+    im->pcoef = get_array(r, im->npcoef, 1);
+    im->nphist = (size_t)get_u64(r);
+    im->phist = get_array(r, im->nphist, 1);
+    return 1;
+}
+
 /* 1 when the device arrays equal the host arrays in the same order (the
  * device list then describes the host atoms exactly). */
 static int device_matches_host(struct gravel *g)
@@ -982,6 +1049,7 @@ static const struct section {
     {S_CUSTOM, "custom properties", 0, write_custom, read_custom},
     {S_ELLIPSOID, "superellipsoids", 0, write_ellipsoid, read_ellipsoid},
     {S_PAIR, "pair", 1, write_pair, read_pair},
+    {S_PAIR_STATE, "pair state", 0, write_pair_state, read_pair_state},
     {S_LIST, "neighbor list", 0, write_list, read_list},
     {S_FIXES, "fixes", 1, write_fixes, read_fixes},
 };
@@ -1176,10 +1244,23 @@ static int cmp_i64(const void *a, const void *b)
 }
 
 /* Cross-section checks of a fully parsed image. */
-static int validate(const struct image *im, char *err, size_t errlen)
+static int validate(struct image *im, char *err, size_t errlen)
 {
     if (im->has_pair && !pair_style_find(im->pair_name))
         BAD("pair style '%s' of the file is not in this build", im->pair_name);
+    if (im->has_pstate) {
+        const struct pair_style *st = pair_style_find(im->pstate_name);
+        if (!im->has_pair || strcmp(im->pstate_name, im->pair_name))
+            BAD("pair state of style '%s', not the pair section's '%s'", im->pstate_name,
+                im->has_pair ? im->pair_name : "none");
+        if (!st->state_read)
+            BAD("pair style '%s' of this build keeps no restart state", im->pstate_name);
+        char why[200] = "";
+        im->pdata = st->state_read(im->pcoef, im->npcoef, im->phist, im->nphist, why,
+                                   sizeof why);
+        if (!im->pdata)
+            BAD("%s", why);
+    }
     for (int i = 0; i < im->n; i++) {
         if (im->tag[i] < 1 || im->tag[i] > im->maxtag)
             BAD("atom tag %lld outside 1..%lld", (long long)im->tag[i], (long long)im->maxtag);
@@ -1458,6 +1539,8 @@ void cmd_read_restart(struct gravel *g, int argc, char **argv)
         p->style = pair_style_find(im->pair_name);
         memcpy(p->coef, im->coef, (size_t)im->ncoef * sizeof(double));
         p->coeff_set = im->coeff_set;
+        p->data = im->pdata; /* the style's own state (section 14), or none */
+        im->pdata = NULL;
         g->styles.pair = p;
     }
     im->atoms_hash = atoms_fingerprint(&g->atoms);
@@ -1618,6 +1701,16 @@ static int force_diff(const struct gravel *g, const struct image *im, char *why,
     if (p && (p->coeff_set != im->coeff_set ||
               memcmp(p->coef, im->coef, (size_t)im->ncoef * sizeof(double))))
         return snprintf(why, len, "pair_style %s coefficients", p->style->name) > 0;
+    if (p && p->style->state_write) {
+        size_t n = p->style->state_write(p, PAIR_STATE_COEFF, NULL, 0);
+        unsigned char *b = malloc(n + 1);
+        if (b)
+            p->style->state_write(p, PAIR_STATE_COEFF, b, n);
+        int differ = !b || n != im->npcoef || (n && memcmp(b, im->pcoef, n));
+        free(b);
+        if (differ)
+            return snprintf(why, len, "pair_coeff of %s", p->style->name) > 0;
+    }
     if (g->dt != im->dt)
         return snprintf(why, len, "timestep %.15g (file: %.15g)", g->dt, im->dt) > 0;
     int nf = g->styles.nfix;

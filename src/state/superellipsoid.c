@@ -4,15 +4,6 @@
 
 #include <math.h>
 
-enum sqe_kind sqe_kind(const double block[2])
-{
-    if (fabs(block[0] - 2.0) <= SQE_EPSILON_BLOCK && fabs(block[1] - 2.0) <= SQE_EPSILON_BLOCK)
-        return SQE_ELLIPSOID;
-    if (fabs(block[0] - block[1]) <= SQE_EPSILON_BLOCK)
-        return SQE_N1_EQUAL_N2;
-    return SQE_GENERAL;
-}
-
 double sqe_beta(double x, double y)
 {
     /* the Gamma values stay finite for the exponents of any sane shape

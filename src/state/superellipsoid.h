@@ -6,12 +6,10 @@
 #ifndef GR_SUPERELLIPSOID_H
 #define GR_SUPERELLIPSOID_H
 
-/* LAMMPS's BlockType: within 1e-3 of n1 = n2 = 2 an ellipsoid (exact
- * ellipsoid formulas), n1 = n2 within 1e-3, or general. */
-enum sqe_kind { SQE_ELLIPSOID, SQE_N1_EQUAL_N2, SQE_GENERAL };
-#define SQE_EPSILON_BLOCK 1.0e-3
+/* enum sqe_kind (LAMMPS's BlockType) and sqe_kind(block): in the geometry
+ * the host and the device share (kernels/superellipsoid_geom.h). */
+#include "superellipsoid_geom.h"
 
-enum sqe_kind sqe_kind(const double block[2]);
 /* Euler's Beta function B(x, y) = G(x) G(y) / G(x + y), x, y > 0. */
 double sqe_beta(double x, double y);
 /* Volume a b c e1 e2 B(e1/2, 1 + e1) B(e2/2, e2/2), e = 2/n (4/3 pi a b c

@@ -186,7 +186,23 @@ struct pair_style {
     int surface;
     /* Release p->data. */
     void (*destroy)(struct pair *p);
+    /* Restart state beyond coef[] that the style keeps in p->data (pair
+     * granular/superellipsoid: its per-type models and its contact history;
+     * restart section 14, doc/restart.md). state_write(p, part, buf, cap)
+     * returns the byte count of part (PAIR_STATE_COEFF: what the forces
+     * depend on, hashed into the restart's force fingerprint;
+     * PAIR_STATE_HISTORY: what the run carries), writing it when buf is not
+     * NULL and cap suffices; an explicit byte layout (no struct padding).
+     * state_read(coeff, ncoeff, hist, nhist, err, errlen) parses both parts
+     * into a new p->data (the style's destroy() frees it, given a struct
+     * pair holding it), or returns NULL with the reason in err: read_restart
+     * verifies the file before it applies anything. NULL hooks: none. */
+    size_t (*state_write)(const struct pair *p, int part, unsigned char *buf, size_t cap);
+    void *(*state_read)(const unsigned char *coeff, size_t ncoeff, const unsigned char *hist,
+                        size_t nhist, char *err, size_t errlen);
 };
+
+enum { PAIR_STATE_COEFF, PAIR_STATE_HISTORY };
 
 struct pair {
     const struct pair_style *style;

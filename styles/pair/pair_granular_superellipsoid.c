@@ -38,9 +38,12 @@
  * within the sum of bounding radii (a cell grid, src/contact/host_pairs.h),
  * evaluates them in (lower tag, higher tag) order and writes the forces and
  * torques. The run's neighbor list is not used. Not supported (refused):
- * rolling, twisting and heat models (as LAMMPS), MPI ranks, walls. The
- * contact history is not written to restart files: a run continued from a
- * restart starts its contacts afresh. */
+ * rolling, twisting and heat models (as LAMMPS), MPI ranks, walls.
+ *
+ * Restart: the settings are p->coef (the pair section); the models and the
+ * contact history go into restart section 14 through state_write/state_read
+ * (an explicit byte layout, validated before read_restart applies it); the
+ * models' bytes join the force fingerprint of the exact continuation. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,13 +77,19 @@ struct hist {
     double s[3];                /* tangential displacement */
 };
 
+/* The pair_style settings live in p->coef (restart's pair section, the
+ * force fingerprint): */
+enum { C_CUTOFF, C_BOUNDING_BOX, C_GEOMETRIC, C_GAUSSIAN };
+
+/* p->data: the per-type models and the contact history (pair_coeff and the
+ * runs fill it; restart section 14 keeps it; redefining the style keeps it,
+ * as LAMMPS keeps the coefficients and the history fix). */
 struct sqe_pair {
     int nt;
     struct model *m;            /* nt x nt */
-    double cutoff;              /* global cut-off (-1: none given) */
-    int bounding_box, gaussian;
+    int bounding_box, gaussian; /* copied from p->coef at init */
     enum sqe_formulation form;
-    int nhist, caphist;
+    int nhist;
     struct hist *hist;          /* sorted by (ti, tj) */
 };
 
@@ -95,41 +104,35 @@ static void destroy(struct pair *p)
     p->data = NULL;
 }
 
-/* The style's data, created with LAMMPS's default settings (a pair
- * restored by read_restart has none until its pair_coeff). */
+/* The style's data (created by the first pair_coeff, or restored by
+ * read_restart). */
 static struct sqe_pair *data_of(struct gravel *g, struct pair *p)
 {
-    if (!p->data) {
-        struct sqe_pair *s = gr_calloc(g, 1, sizeof *s);
-        s->cutoff = -1;
-        s->bounding_box = 1;
-        s->form = SQE_ALGEBRAIC;
-        p->data = s;
-    }
+    if (!p->data)
+        p->data = gr_calloc(g, 1, sizeof(struct sqe_pair));
     return p->data;
 }
 
 static void settings(struct gravel *g, struct pair *p, int argc, char **argv)
 {
-    struct sqe_pair *s = data_of(g, p);
-    s->cutoff = -1;
-    s->bounding_box = 1;
-    s->gaussian = 0;
-    s->form = SQE_ALGEBRAIC;
+    double *c = p->coef;
+    c[C_CUTOFF] = -1;
+    c[C_BOUNDING_BOX] = 1;
+    c[C_GEOMETRIC] = 0;
+    c[C_GAUSSIAN] = 0;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "no_bounding_box"))
-            s->bounding_box = 0;
+            c[C_BOUNDING_BOX] = 0;
         else if (!strcmp(argv[i], "geometric"))
-            s->form = SQE_GEOMETRIC;
+            c[C_GEOMETRIC] = 1;
         else if (!strcmp(argv[i], "curvature_gaussian"))
-            s->gaussian = 1;
+            c[C_GAUSSIAN] = 1;
         else if (i == 0)
-            s->cutoff = arg_positive(g, argv[i], "pair_style granular/superellipsoid cutoff");
+            c[C_CUTOFF] = arg_positive(g, argv[i], "pair_style granular/superellipsoid cutoff");
         else
             gr_error(g, "pair_style granular/superellipsoid: unknown keyword '%.64s' "
                         "(no_bounding_box, geometric, curvature_gaussian)", argv[i]);
     }
-    p->coef[0] = s->cutoff;
 }
 
 static struct model *model_at(struct sqe_pair *s, int i, int j)
@@ -222,8 +225,10 @@ static void init(struct gravel *g, struct pair *p)
                       "one process)");
     if (!s || !s->m || s->nt != nt)
         gr_error(g, "pair granular/superellipsoid: pair_coeff must be given for the %d atom "
-                    "type(s) of the box (restart files do not keep its coefficients: give "
-                    "pair_style and pair_coeff again after read_restart)", nt);
+                    "type(s) of the box", nt);
+    s->bounding_box = p->coef[C_BOUNDING_BOX] != 0;
+    s->form = p->coef[C_GEOMETRIC] != 0 ? SQE_GEOMETRIC : SQE_ALGEBRAIC;
+    s->gaussian = p->coef[C_GAUSSIAN] != 0;
     for (int i = 0; i < a->n; i++) {
         const double *sh = a->shape + 3 * i, *b = a->block + 2 * i;
         if (sh[0] == 0.0 && sh[1] == 0.0 && sh[2] == 0.0)
@@ -665,6 +670,184 @@ static void host_forces(struct gravel *g, const struct pair *p)
     free_snap(&sn);
 }
 
+/* ---- restart state (section 14): explicit little records, no padding ------- */
+
+enum { MODEL_INTS = 5, MODEL_REALS = 6, MODEL_BYTES = MODEL_INTS * 4 + MODEL_REALS * 8 };
+enum { HIST_BYTES = 2 * 8 + 4 + 8 * 8 };
+
+struct out {
+    unsigned char *p;           /* NULL: count only */
+    size_t n, cap;
+};
+
+static void out_put(struct out *o, const void *v, size_t len)
+{
+    if (o->p && o->n + len <= o->cap)
+        memcpy(o->p + o->n, v, len);
+    o->n += len;
+}
+
+static void out_i32(struct out *o, int v)
+{
+    int32_t x = v;
+    out_put(o, &x, 4);
+}
+
+static void out_f64(struct out *o, double v)
+{
+    out_put(o, &v, 8);
+}
+
+static size_t state_write(const struct pair *p, int part, unsigned char *buf, size_t cap)
+{
+    const struct sqe_pair *s = p->data;
+    struct out o = {buf, 0, cap};
+    if (!s)
+        return 0;
+    if (part == PAIR_STATE_COEFF) {
+        out_i32(&o, s->m ? s->nt : 0);
+        for (int k = 0; s->m && k < s->nt * s->nt; k++) {
+            const struct model *m = &s->m[k];
+            int iv[MODEL_INTS] = {m->set, m->normal, m->damping, m->tangential, m->limit};
+            double dv[MODEL_REALS] = {m->kn, m->gamman, m->kt, m->xt, m->mu, m->cutoff};
+            for (int q = 0; q < MODEL_INTS; q++)
+                out_i32(&o, iv[q]);
+            for (int q = 0; q < MODEL_REALS; q++)
+                out_f64(&o, dv[q]);
+        }
+    } else {
+        out_i32(&o, s->nhist);
+        for (int k = 0; k < s->nhist; k++) {
+            const struct hist *h = &s->hist[k];
+            out_put(&o, &h->ti, 8);
+            out_put(&o, &h->tj, 8);
+            out_i32(&o, h->touch);
+            for (int q = 0; q < 4; q++)
+                out_f64(&o, h->x0[q]);
+            out_f64(&o, h->axis);
+            for (int q = 0; q < 3; q++)
+                out_f64(&o, h->s[q]);
+        }
+    }
+    return o.n;
+}
+
+struct in {
+    const unsigned char *p;
+    size_t n, off;
+};
+
+static int in_i32(struct in *r)
+{
+    int32_t x = 0;
+    if (r->off + 4 <= r->n)
+        memcpy(&x, r->p + r->off, 4);
+    r->off += 4;
+    return x;
+}
+
+static double in_f64(struct in *r)
+{
+    double x = 0;
+    if (r->off + 8 <= r->n)
+        memcpy(&x, r->p + r->off, 8);
+    r->off += 8;
+    return x;
+}
+
+static int64_t in_i64(struct in *r)
+{
+    int64_t x = 0;
+    if (r->off + 8 <= r->n)
+        memcpy(&x, r->p + r->off, 8);
+    r->off += 8;
+    return x;
+}
+
+static void destroy(struct pair *p);
+
+#define SBAD(...)                                                                             \
+    do {                                                                                      \
+        snprintf(err, errlen, __VA_ARGS__);                                                   \
+        struct pair tmp_ = {.data = s};                                                       \
+        destroy(&tmp_);                                                                       \
+        return NULL;                                                                          \
+    } while (0)
+
+static void *state_read(const unsigned char *coeff, size_t ncoeff, const unsigned char *hist,
+                        size_t nhist, char *err, size_t errlen)
+{
+    struct sqe_pair *s = calloc(1, sizeof *s);
+    if (!s) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    struct in r = {coeff, ncoeff, 0};
+    int nt = in_i32(&r);
+    if (ncoeff < 4 || nt < 0 || nt > 4096 ||
+        ncoeff != 4 + (size_t)nt * (size_t)nt * MODEL_BYTES)
+        SBAD("granular/superellipsoid coefficients of %zu bytes for %d types", ncoeff, nt);
+    s->nt = nt;
+    s->m = nt ? calloc((size_t)nt * nt, sizeof *s->m) : NULL;
+    if (nt && !s->m)
+        SBAD("out of memory");
+    for (int k = 0; k < nt * nt; k++) {
+        struct model *m = &s->m[k];
+        m->set = in_i32(&r);
+        m->normal = in_i32(&r);
+        m->damping = in_i32(&r);
+        m->tangential = in_i32(&r);
+        m->limit = in_i32(&r);
+        double *dv[MODEL_REALS] = {&m->kn, &m->gamman, &m->kt, &m->xt, &m->mu, &m->cutoff};
+        for (int q = 0; q < MODEL_REALS; q++)
+            *dv[q] = in_f64(&r);
+        if ((m->set != 0 && m->set != 1) || (m->normal != N_HOOKE && m->normal != N_HERTZ) ||
+            (m->damping != D_MASS_VELOCITY && m->damping != D_VISCOELASTIC) ||
+            m->tangential < T_NONE || m->tangential > T_LINEAR_HISTORY ||
+            (m->limit != 0 && m->limit != 1))
+            SBAD("invalid granular/superellipsoid model of types %d %d", k / nt + 1,
+                 k % nt + 1);
+        for (int q = 0; q < MODEL_REALS; q++) /* as pair_coeff takes them */
+            if (!isfinite(*dv[q]) || (q < MODEL_REALS - 1 ? *dv[q] < 0 :
+                                      !(*dv[q] > 0 || *dv[q] == -1)))
+                SBAD("invalid granular/superellipsoid coefficient %d of types %d %d", q + 1,
+                     k / nt + 1, k % nt + 1);
+    }
+    struct in h = {hist, nhist, 0};
+    int nh = in_i32(&h);
+    if (nhist < 4 || nh < 0 || nhist != 4 + (size_t)nh * HIST_BYTES)
+        SBAD("granular/superellipsoid contact history of %zu bytes for %d contacts", nhist,
+             nh);
+    s->nhist = nh;
+    s->hist = calloc((size_t)nh + 1, sizeof *s->hist);
+    if (!s->hist)
+        SBAD("out of memory");
+    for (int k = 0; k < nh; k++) {
+        struct hist *c = &s->hist[k];
+        c->ti = in_i64(&h);
+        c->tj = in_i64(&h);
+        c->touch = in_i32(&h);
+        for (int q = 0; q < 4; q++)
+            c->x0[q] = in_f64(&h);
+        c->axis = in_f64(&h);
+        for (int q = 0; q < 3; q++)
+            c->s[q] = in_f64(&h);
+        const struct hist *b = k ? c - 1 : NULL;
+        if (c->ti < 1 || c->tj <= c->ti || (c->touch != 0 && c->touch != 1) ||
+            (b && (b->ti > c->ti || (b->ti == c->ti && b->tj >= c->tj))))
+            SBAD("granular/superellipsoid contact %d (tags %lld %lld) invalid or out of order",
+                 k + 1, (long long)c->ti, (long long)c->tj);
+        int fin = isfinite(c->axis);
+        for (int q = 0; q < 4; q++)
+            fin &= isfinite(c->x0[q]) && (q == 3 || isfinite(c->s[q]));
+        if (!fin || c->axis < 0 || c->axis > 14 || c->axis != floor(c->axis))
+            SBAD("granular/superellipsoid contact %d (tags %lld %lld) has non-finite or "
+                 "invalid values", k + 1, (long long)c->ti, (long long)c->tj);
+    }
+    return s;
+}
+#undef SBAD
+
 static void describe(const struct pair *p, struct pair_caps *c)
 {
     (void)p;
@@ -686,4 +869,6 @@ const struct pair_style pair_style_granular_superellipsoid = {
     .describe = describe,
     .pack = pack,
     .destroy = destroy,
+    .state_write = state_write,
+    .state_read = state_read,
 };

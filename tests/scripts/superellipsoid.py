@@ -26,6 +26,14 @@ granular/superellipsoid (LAMMPS 30 Mar 2026).
 5. Restart: run 600 equals run 300 + write_restart + read_restart + run 300
    bit for bit on LAMMPS's dem05-superellipsoid-3d deck (the restart falls
    before the contact), and the superellipsoid fields come back exactly.
+   In contact (step 470 of 900, the contact's force and friction history
+   active): the file keeps the models and the contact history (section 14),
+   so run 900 equals run 470 + write_restart + clear + read_restart + run
+   430 bit for bit with pair_style/pair_coeff re-given or not, and from a
+   `restart 470` file written mid-run, in double and single precision; another neighbor skin after
+   read_restart equals the same change between two runs of one process;
+   another mu is named as the setting that differs. A corrupted state
+   section (checksum re-fixed) is refused naming the problem.
 6. Bounding radius (dump radius) of each shape class as LAMMPS sets it.
 7. Bad input: clear errors naming the line."""
 import math
@@ -53,10 +61,10 @@ def check(ok, name, detail="", quiet=False):
     return ok
 
 
-def run(deck, tmp, exe=None, name="in.deck"):
+def run(deck, tmp, exe=None, name="in.deck", flags=()):
     with open(os.path.join(tmp, name), "w") as f:
         f.write(deck)
-    cmd = [exe or GRAVEL, "-in", name, "-log", "none"]
+    cmd = [exe or GRAVEL, *flags, "-in", name, "-log", "none"]
     return subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=300)
 
 
@@ -347,6 +355,136 @@ def restart(tmp):
           "angmom, radius, mass)")
 
 
+CONTACT_DUMP = ("dump d all custom 900 d.txt id x y z vx vy vz quatw quati quatj quatk angmomx "
+                "angmomy angmomz fx fy fz tqx tqy tqz\n"
+                "dump_modify d format float %.17g sort id\n")
+
+
+def step_block(path, step):
+    """the dump's text of one step (byte comparison)"""
+    for b in open(path).read().split("ITEM: TIMESTEP\n"):
+        if b.startswith(f"{step}\n"):
+            return b
+    return None
+
+
+def restart_in_contact(tmp):
+    """restarts while the two particles touch (steps ~455-485): the models and
+    the contact history come back from the file (section 14)"""
+    write = DEM05 + MODEL + "run 470\nwrite_restart r.bin\nclear\nread_restart r.bin\n"
+    decks = {
+        "straight": DEM05 + MODEL + CONTACT_DUMP + "run 900\n",
+        "no_coeff": write + "fix integr all nve/asphere\n" + CONTACT_DUMP + "run 430\n",
+        "coeff_again": write + MODEL + CONTACT_DUMP + "run 430\n",
+        "mid_run": DEM05 + MODEL + "restart 470 r.*\nrun 600\nclear\nread_restart r.470\n"
+        "fix integr all nve/asphere\n" + CONTACT_DUMP + "run 430\n",
+        "skin_one_process": DEM05 + MODEL + "run 470\nneighbor 0.6 bin\n" + CONTACT_DUMP
+        + "run 430\n",
+        "skin_restart": write + "neighbor 0.6 bin\nfix integr all nve/asphere\n" + CONTACT_DUMP
+        + "run 430\n",
+        "other_mu": write + MODEL.replace("0.0 0.5 damping", "0.0 0.4 damping") + CONTACT_DUMP
+        + "run 430\n",
+    }
+    decks["single_straight"] = decks["straight"]
+    decks["single_coeff_again"] = decks["coeff_again"]
+    out, blocks = {}, {}
+    for name, deck in decks.items():
+        d = os.path.join(tmp, "contact_" + name)
+        os.makedirs(d)
+        r = run(deck, d, flags=("-precision", "single") if name.startswith("single") else ())
+        if not check(r.returncode == 0, f"restart_contact_{name}_runs",
+                     (r.stdout + r.stderr)[-300:], quiet=True):
+            return
+        out[name] = r.stdout
+        blocks[name] = step_block(os.path.join(d, "d.txt"), 900)
+    # the restart step is inside the contact: forces on both particles
+    d = os.path.join(tmp, "contact_at470")
+    os.makedirs(d)
+    r = run(DEM05 + MODEL + "dump d all custom 470 d.txt id fx fy fz\ndump_modify d sort id\n"
+            "run 470\n", d)
+    rows = [ln.split() for ln in step_block(os.path.join(d, "d.txt"), 470).splitlines()[-2:]]
+    fx = [abs(float(w[1])) for w in rows]
+    check(min(fx) > 10.0, "restart_contact_active", f"|fx| at step 470: {fx[0]:.3g}, {fx[1]:.3g}")
+    a = blocks["straight"]
+    for name in ("no_coeff", "coeff_again", "mid_run"):
+        check(blocks[name] == a and "exact continuation of step 470" in out[name],
+              f"restart_contact_bit_identical_{name}",
+              "run 900 == run 470 + restart + run 430 (x v quat angmom f torque, %.17g)")
+    check(blocks["single_coeff_again"] == blocks["single_straight"] != a
+          and "exact continuation of step 470" in out["single_coeff_again"],
+          "restart_contact_bit_identical_single", "-precision single, pair commands again")
+    check(blocks["skin_restart"] == blocks["skin_one_process"] and "neighbor skin 0.6" in
+          out["skin_restart"], "restart_contact_changed_skin_as_one_process",
+          "history carried; equals `neighbor 0.6 bin` between two runs of one process")
+    check(blocks["other_mu"] != a and "pair_coeff of granular/superellipsoid differs" in
+          out["other_mu"], "restart_contact_other_mu_named",
+          "forces recomputed, the log names pair_coeff")
+
+
+def corrupt_state(path, mutate):
+    """rewrite the restart file with section 14 (pair state) changed by
+    mutate(coeff, hist) -> (coeff, hist) and the checksum fixed"""
+    import struct
+    raw = bytearray(open(path, "rb").read())
+    off, out = 32, bytearray(raw[:32])
+    while off < len(raw):
+        sid, zero, ln = struct.unpack_from("<IIQ", raw, off)
+        body = bytes(raw[off + 16:off + 16 + ln])
+        if sid == 14:
+            nl = struct.unpack_from("<I", body, 0)[0]
+            name = body[:4 + nl]
+            q = 4 + nl
+            nc = struct.unpack_from("<Q", body, q)[0]
+            coeff = bytearray(body[q + 8:q + 8 + nc])
+            q += 8 + nc
+            nh = struct.unpack_from("<Q", body, q)[0]
+            hist = bytearray(body[q + 8:q + 8 + nh])
+            coeff, hist = mutate(coeff, hist)
+            body = (name + struct.pack("<Q", len(coeff)) + bytes(coeff)
+                    + struct.pack("<Q", len(hist)) + bytes(hist))
+        out += struct.pack("<IIQ", sid, zero, len(body)) + body
+        off += 16 + ln
+    h = 14695981039346656037
+    for b in out[32:]:
+        h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    struct.pack_into("<QQ", out, 16, len(out) - 32, h)
+    open(path, "wb").write(bytes(out))
+
+
+def restart_state_errors(tmp):
+    import struct
+
+    def types(c, h):
+        struct.pack_into("<i", c, 0, 7)
+        return c, h
+
+    def order(c, h):  # the first contact's tags swapped: tj < ti
+        ti, tj = struct.unpack_from("<qq", h, 4)
+        struct.pack_into("<qq", h, 4, tj, ti)
+        return c, h
+
+    def model(c, h):  # the normal model of types 1 1: 5
+        struct.pack_into("<i", c, 8, 5)
+        return c, h
+    cases = [("types", types, "bytes for 7 types"),
+             ("order", order, "contact 1 (tags 2 1) invalid or out of order"),
+             ("model", model, "invalid granular/superellipsoid model of types 1 1")]
+    for name, mutate, what in cases:
+        d = os.path.join(tmp, "state_" + name)
+        os.makedirs(d)
+        r = run(DEM05 + MODEL + "run 470\nwrite_restart r.bin\n", d, name="in.write")
+        if not check(r.returncode == 0, f"state_{name}_write", r.stdout[-300:], quiet=True):
+            continue
+        corrupt_state(os.path.join(d, "r.bin"), mutate)
+        r = run("read_restart r.bin\n", d)
+        out = r.stdout + r.stderr
+        ok = (r.returncode != 0 and "restart file 'r.bin' is invalid" in out
+              and what in out
+              and "in.deck:1)" in out)
+        err = [ln for ln in out.splitlines() if "ERROR" in ln]
+        check(ok, f"error_restart_state_{name}", err[0].strip()[:200] if err else out[-200:])
+
+
 # ---- 6. bounding radius -----------------------------------------------------------
 def bounding_radius(tmp):
     a, b, c = 0.75, 0.5, 0.4
@@ -394,17 +532,15 @@ def errors(tmp):
          "1000 0\n", "unknown normal model 'dmt'", 10),
         ("read_data", "units si\natom_style ellipsoid superellipsoid\nread_data none.data\n",
          "read_data with atom_style ellipsoid", 3),
-        ("restart_needs_coeff", None, "give pair_style and pair_coeff again after "
-         "read_restart", 3),
+        ("pair_no_coeff", box() + two + "set type 1 shape 1 1 1\n"
+         "pair_style granular/superellipsoid\nfix i all nve/asphere\nrun 1\n",
+         "pair_coeff", 12),
         ("dump_quat_sphere", box("sphere") + two + "dump d all custom 1 d.txt id quatw\n",
          "isn't allocated", 9),
     ]
     for name, deck, what, line in cases:
         d = os.path.join(tmp, "err_" + name)
         os.makedirs(d)
-        if deck is None:  # a restart file of superellipsoids, then a run without pair_coeff
-            r = run(DEM05 + MODEL + "run 10\nwrite_restart r.bin\n", d, name="in.write")
-            deck = "read_restart r.bin\nfix integr all nve/asphere\nrun 10\n"
         r = run(deck, d)
         out = r.stdout + r.stderr
         ok = r.returncode != 0 and what in out and f"in.deck:{line})" in out
@@ -418,6 +554,8 @@ def main():
         symmetric_top(tmp)
         spheres(tmp)
         restart(tmp)
+        restart_in_contact(tmp)
+        restart_state_errors(tmp)
         bounding_radius(tmp)
         errors(tmp)
     print(f"{'FAIL' if FAILED else 'PASS'} superellipsoid ({len(FAILED)} failed)")
