@@ -64,6 +64,9 @@ enum region_node_layout {
 enum { RG_OPEN_RIM2021 = 6 };
 enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
 enum { RG_MAXNODE = 4, RG_MAXC = 8 };
+/* region_probe's per-atom record: the contact count, then per contact its
+ * distance r, del (3) and wall id */
+enum { RG_PROBE_C = 5, RG_PROBE_W = 1 + RG_PROBE_C * RG_MAXC };
 
 /* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c): ACC_PAIR_W REAL
  * per pair contact (largest dt / t_col, the squared normal speed then) and

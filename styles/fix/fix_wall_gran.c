@@ -550,6 +550,12 @@ int wall_gran_mdr(const struct fix *f, struct wall_mdr *out)
     return 1;
 }
 
+void wall_gran_mdr_probe(struct gravel *g, struct fix *f, cl_mem out)
+{
+    struct wall *w = f->data;
+    wall_region_probe(g, f, &w->wreg, w->region, out);
+}
+
 static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }
 
 static struct region *region_node(struct region *r, int k) { return r->nsub ? r->sub[k] : r; }
