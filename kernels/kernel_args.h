@@ -83,6 +83,7 @@
 /* ---- the wall stage (kernels/wall.cl, kernels/wall_region.cl) ---- */
 
 /* what every wall kernel starts with: the atoms of the group, the wall's
+ * `contacts` records (want_contacts: WALL_CONTACT_W REAL per atom, else f),
  * history (has_history REAL per slot) and the accuracy records
  * (kernels/accuracy.cl: acc, astep, the wall's code acode, step); with
  * HAS_HEAT the atoms' temperatures and heat flows, whether the wall
@@ -92,7 +93,7 @@
     X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
     Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
     Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
-    Y(R, twall)
+    Y(R, twall) Y(M, contacts) Y(I, want_contacts)
 
 /* the wall's law: one packed parameter set (by_type 0) or the pair style's
  * sets (ntypes x ntypes of nparam REAL) */

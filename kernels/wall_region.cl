@@ -655,7 +655,10 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
     __kernel void NAME(KA_PARAMS(region_kernel))                                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
-        if (i >= n || !(mask[i] & groupbit))                                                   \
+        if (i >= n)                                                                            \
+            return;                                                                            \
+        WALL_CONTACT_CLEAR(i);                                                                 \
+        if (!(mask[i] & groupbit))                                                             \
             return;                                                                            \
         const int hw = has_history; /* history REAL per slot */                                \
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
@@ -704,6 +707,7 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
             fsum += o.f;                                                                       \
             tsum += o.ti;                                                                      \
             WALL_HEAT_ADD(o);                                                                  \
+            WALL_CONTACT_PUT(i, o.f, xi - s.del, radi);                                        \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
