@@ -123,13 +123,13 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
             col->field = F_VARIABLE;
             continue;
         }
-        if (strncmp(s, "f_", 2) == 0 && s[2]) { /* a fix's per-atom output: checked at init */
-            col->field = F_FIX;
-            continue;
-        }
         if (custom_ref_parse(g, s, "dump custom", &col->cref, NULL)) {
             col->field = F_CUSTOM;
             col->cint = g->atoms.cus.p[col->cref.idx].isint;
+            continue;
+        }
+        if (strncmp(s, "f_", 2) == 0 && s[2]) { /* a fix's per-atom output: checked at init */
+            col->field = F_FIX;
             continue;
         }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
