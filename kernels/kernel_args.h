@@ -83,6 +83,7 @@
 /* ---- the wall stage (kernels/wall.cl, kernels/wall_region.cl) ---- */
 
 /* what every wall kernel starts with: the atoms of the group, the wall's
+ * `contacts` records (want_contacts: WALL_CONTACT_W REAL per atom, else f),
  * history (has_history REAL per slot) and the accuracy records
  * (kernels/accuracy.cl: acc, astep, the wall's code acode, step); with
  * HAS_HEAT the atoms' temperatures and heat flows, whether the wall
@@ -92,7 +93,7 @@
     X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
     Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
     Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
-    Y(R, twall)
+    Y(R, twall) Y(M, contacts) Y(I, want_contacts)
 
 /* the wall's law: one packed parameter set (by_type 0) or the pair style's
  * sets (ntypes x ntypes of nparam REAL) */
@@ -120,12 +121,18 @@
     X(PART, wall_atoms) Y(PART, wall_law) Y(CM, nodes) Y(I, nnode) Y(I, comb)                 \
     Y(I, rinterior) Y(I, slots) Y(I, dynamic) Y(R, dt) Y(I, shearupdate) Y(POS_LO, xlo)
 
+/* region_probe: the region surface contacts of each atom of the group that
+ * the region matches (out: RG_PROBE_W REAL per atom, kernels/wall_region.cl) */
+#define KARGS_region_probe(X, Y)                                                               \
+    X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, radius) Y(CM, nodes) Y(I, nnode)       \
+    Y(I, comb) Y(I, rinterior) Y(I, slots) Y(M, out) Y(POS_LO, xlo)
+
 /* Every list, for the host's structs and binders (src/engine/kargs.h); parts
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
     T(wall_atoms) T(wall_law) T(atom_step) T(pair_contacts) T(pair_gather) T(force_clear)      \
     T(nbr_check) T(nbr_wrap_extent)                                                            \
-    T(wall_kernel) T(mesh_kernel) T(region_kernel)
+    T(wall_kernel) T(mesh_kernel) T(region_kernel) T(region_probe)
 
 #ifdef __OPENCL_VERSION__
 /* ---- device: the parameter list of list `name`, e.g.

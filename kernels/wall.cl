@@ -190,11 +190,32 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
  * a jkr wall: the contact reaches to WALL_REACH beyond touch and is held
  * there only once it has touched; 0 folds either away. Arguments:
  * KARGS_wall_kernel (kernels/kernel_args.h). */
+/* fix wall/gran's `contacts` records (WALL_CONTACT_W, kernels/wall_layout.h):
+ * cleared for every atom at each launch, the acting contact's written */
+#define WALL_CONTACT_CLEAR(i)                                                                  \
+    if (want_contacts)                                                                         \
+        for (int q_ = 0; q_ < WALL_CONTACT_W; q_++)                                            \
+            contacts[(size_t)(i) * WALL_CONTACT_W + q_] = 0;
+#define WALL_CONTACT_PUT(i, F, XC, RAD)                                                        \
+    if (want_contacts) {                                                                       \
+        __global REAL *cr_ = contacts + (size_t)(i) * WALL_CONTACT_W;                          \
+        const REAL3 xc_ = (XC);                                                                \
+        cr_[0] = 1;                                                                            \
+        vstore3((F), 0, cr_ + 1);                                                              \
+        cr_[4] = xc_.x;                                                                        \
+        cr_[5] = xc_.y;                                                                        \
+        cr_[6] = xc_.z;                                                                        \
+        cr_[7] = (RAD);                                                                        \
+    }
+
 #define WALL_KERNEL(NAME, BODY, ROW, APPROACH, JKR)                                            \
     __kernel void NAME(KA_PARAMS(wall_kernel))                                                 \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
-        if (i >= n || !(mask[i] & groupbit))                                                   \
+        if (i >= n)                                                                            \
+            return;                                                                            \
+        WALL_CONTACT_CLEAR(i);                                                                 \
+        if (!(mask[i] & groupbit))                                                             \
             return;                                                                            \
         const struct wall_geom w = wall_geom_of(kind, axis, lo, hi, wradius, vwx, vwy, vwz,    \
                                                 cyl_shear, vshear);                            \
@@ -225,6 +246,7 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
                 fsum += o.f;                                                                   \
                 tsum += o.ti;                                                                  \
                 WALL_HEAT_ADD(o);                                                              \
+                WALL_CONTACT_PUT(i, o.f, xi + xil - s.del, s.radi);                            \
             }                                                                                  \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \

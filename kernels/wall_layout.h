@@ -64,6 +64,15 @@ enum region_node_layout {
 enum { RG_OPEN_RIM2021 = 6 };
 enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
 enum { RG_MAXNODE = 4, RG_MAXC = 8 };
+/* fix wall/gran's `contacts` record per atom (LAMMPS's per-atom array, its
+ * 8 columns): touching (1 or 0), the wall's force on the atom (3), the
+ * contact point on the wall (3, device coordinates: the host adds the run's
+ * origin) and the atom's radius; all zero without contact. An atom with
+ * several contacts keeps its last one (LAMMPS). */
+enum { WALL_CONTACT_W = 8 };
+/* region_probe's per-atom record: the contact count, then per contact its
+ * distance r, del (3) and wall id */
+enum { RG_PROBE_C = 5, RG_PROBE_W = 1 + RG_PROBE_C * RG_MAXC };
 
 /* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c): ACC_PAIR_W REAL
  * per pair contact (largest dt / t_col, the squared normal speed then) and

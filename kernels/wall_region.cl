@@ -655,7 +655,10 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
     __kernel void NAME(KA_PARAMS(region_kernel))                                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
-        if (i >= n || !(mask[i] & groupbit))                                                   \
+        if (i >= n)                                                                            \
+            return;                                                                            \
+        WALL_CONTACT_CLEAR(i);                                                                 \
+        if (!(mask[i] & groupbit))                                                             \
             return;                                                                            \
         const int hw = has_history; /* history REAL per slot */                                \
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
@@ -704,8 +707,41 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
             fsum += o.f;                                                                       \
             tsum += o.ti;                                                                      \
             WALL_HEAT_ADD(o);                                                                  \
+            WALL_CONTACT_PUT(i, o.f, xi - s.del, radi);                                        \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
         WALL_ADD_TORQUE(torque, i, tsum);                                                      \
         WALL_HEAT_STORE(i);                                                                    \
     }
+
+/* The contacts REGION_KERNEL finds for each atom, written out for the host
+ * (fix granular/mdr's walls, styles/fix/fix_granular_mdr.c): per atom
+ * RG_PROBE_W REAL, the count nc (0 for an atom out of the group or not
+ * matched), then per contact r, del and iwall; the reach is the radius, at
+ * most `slots` contacts (as REGION_KERNEL for a law held only in touch). */
+__kernel void region_probe(KA_PARAMS(region_probe))
+{
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    __global REAL *o = out + (size_t)i * RG_PROBE_W;
+    o[0] = 0;
+    if (!(mask[i] & groupbit))
+        return;
+    const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);
+    if (!region_match(nodes, nnode, comb, rinterior, xi))
+        return;
+    struct rg_contact c[RG_MAXC];
+    int nc = region_surface(nodes, nnode, comb, rinterior, xi, radius[i], c);
+    if (nc > slots)
+        nc = slots;
+    o[0] = (REAL)nc;
+    for (int k = 0; k < nc; k++) {
+        __global REAL *q = o + 1 + RG_PROBE_C * k;
+        q[0] = c[k].r;
+        q[1] = c[k].del.x;
+        q[2] = c[k].del.y;
+        q[3] = c[k].del.z;
+        q[4] = (REAL)c[k].iwall;
+    }
+}

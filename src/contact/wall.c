@@ -49,6 +49,8 @@ struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
         .heatflow = e->heat ? a->heatflow : a->f,
         .wheat = e->heat && law->heat,
         .twall = law->twall,
+        .contacts = law->contacts_on ? law->contacts : a->f,
+        .want_contacts = law->contacts_on,
     };
 }
 

@@ -40,6 +40,10 @@ struct wall_law {
     int inclusive;              /* |del| = radius is a contact (LAMMPS wall/gran) */
     int heat;                   /* conducts heat (a wall/gran heat sub-model) ... */
     double twall;               /* ... at this temperature (`temperature T`) */
+    /* LAMMPS's `contacts`: per atom WALL_CONTACT_W REAL (kernels/wall_layout.h),
+     * cleared and written by every launch (plane, cylinder and region walls) */
+    int contacts_on;
+    cl_mem contacts;
 };
 
 /* History slots per atom of a wall of this geometry. */

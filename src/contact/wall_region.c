@@ -120,6 +120,44 @@ size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region 
     return law->history ? (size_t)(1 + (1 + law->history) * wr->slots) * eng_get(g)->rsz : 0;
 }
 
+/* the nodes of r at its present motion state to the device */
+static void upload_nodes(struct gravel *g, struct wall_region *wr, const struct region *r)
+{
+    double nodes[WALL_REGION_MAXNODE * RG_NODE];
+    int walloff = 0;
+    for (int k = 0; k < wr->nnode; k++) {
+        const struct region *s = wr->comb ? r->sub[k] : r;
+        pack_node(s, walloff, g->eng->origin, g->opt.lammps2021, nodes + k * RG_NODE);
+        walloff += s->cmax;
+    }
+    eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
+}
+
+void wall_region_probe(struct gravel *g, struct fix *f, struct wall_region *wr,
+                       struct region *r, cl_mem out)
+{
+    if (region_dynamic(r))
+        region_prematch(g, r);
+    upload_nodes(g, wr, r);
+    struct dev_atoms *a = eng_atoms(g);
+    const struct region_probe_args ka = {
+        .n = a->n,
+        .groupbit = f->groupbit,
+        .mask = a->mask,
+        .x = a->x,
+        .radius = a->radius,
+        .nodes = wr->nodes,
+        .nnode = wr->nnode,
+        .comb = wr->comb,
+        .rinterior = wr->interior,
+        .slots = wr->slots,
+        .out = out,
+    };
+    cl_kernel k = eng_kernel(g, "region_probe");
+    ka_bind_region_probe(g, k, 0, &ka);
+    eng_launch(g, k, (size_t)a->n);
+}
+
 void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
                        struct region *r, const struct wall_law *law)
 {
@@ -132,14 +170,7 @@ void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
         region_prematch(g, r);
         region_set_velocity(g, r);
     }
-    double nodes[WALL_REGION_MAXNODE * RG_NODE];
-    int walloff = 0;
-    for (int k = 0; k < wr->nnode; k++) {
-        const struct region *s = wr->comb ? r->sub[k] : r;
-        pack_node(s, walloff, g->eng->origin, g->opt.lammps2021, nodes + k * RG_NODE);
-        walloff += s->cmax;
-    }
-    eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
+    upload_nodes(g, wr, r);
     struct dev_atoms *a = eng_atoms(g);
     const struct region_kernel_args ka = {
         .wall_atoms = wall_atoms_args(g, f, law),

@@ -14,6 +14,12 @@ size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region 
  * forces and torques of f's atoms. */
 void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
                        struct region *r, const struct wall_law *law);
+/* The surface contacts of f's atoms with r at its present position (the
+ * contacts wall_region_apply would find, reach the radius) into out:
+ * RG_PROBE_W REAL per atom in device order (kernels/wall_region.cl
+ * region_probe). Nothing moves. */
+void wall_region_probe(struct gravel *g, struct fix *f, struct wall_region *wr,
+                       struct region *r, cl_mem out);
 void wall_region_release(struct wall_region *wr);
 
 #endif

@@ -74,6 +74,42 @@ struct fix *fix_ref_check(struct gravel *g, const char *ref, const char *who)
     return f;
 }
 
+struct fix *fix_peratom_check(struct gravel *g, const char *ref, const char *who)
+{
+    char id[GR_NAMELEN];
+    int index, col;
+    if (!fix_parse_ref(ref, id, &index, &col) || col > 0)
+        gr_error(g, "%s: invalid per-atom fix reference '%.64s' (use f_ID or f_ID[N], N >= 1)",
+                 who, ref);
+    struct fix *f = fix_find(g, id);
+    if (!f)
+        gr_error(g, "%s: no fix with ID '%.64s' for %.64s", who, id, ref);
+    if (!f->peratom_flag || !f->style->peratom_values)
+        gr_error(g, "%s: fix %s (%s) does not calculate per-atom values", who, id,
+                 f->style->name);
+    if (index == 0 && f->size_peratom_cols > 0)
+        gr_error(g, "%s: fix %s (%s) calculates a per-atom array: name a column, f_%s[N]", who,
+                 id, f->style->name, id);
+    if (index > 0 && f->size_peratom_cols == 0)
+        gr_error(g, "%s: fix %s (%s) calculates a per-atom vector: f_%s, no index", who, id,
+                 f->style->name, id);
+    if (index > f->size_peratom_cols)
+        gr_error(g, "%s: %.64s is out of range: fix %s's per-atom array has %d columns", who,
+                 ref, id, f->size_peratom_cols);
+    return f;
+}
+
+const double *fix_peratom_ref(struct gravel *g, const char *ref, int *stride, const char *who)
+{
+    char id[GR_NAMELEN];
+    int index, col;
+    struct fix *f = fix_peratom_check(g, ref, who);
+    fix_parse_ref(ref, id, &index, &col);
+    const double *v = f->style->peratom_values(g, f);
+    *stride = f->size_peratom_cols > 0 ? f->size_peratom_cols : 1;
+    return v + (index > 0 ? index - 1 : 0);
+}
+
 int fix_output_extensive(const struct fix *f, int index, int col)
 {
     if (col > 0)

@@ -187,6 +187,12 @@ struct fix_style {
      * adds to the thermo pe (LAMMPS's energy_global_flag). */
     double (*scalar)(struct gravel *g, struct fix *f);
     int energy_global;
+    /* Per-atom output for `f_ID` / `f_ID[i]` in dump custom and compute
+     * reduce (LAMMPS's peratom_flag), optional: the instance's
+     * f->peratom_flag and f->size_peratom_cols (0: a vector) say whether
+     * and what; returns g->atoms.n values (times the columns, row-major)
+     * in host order, current, valid until the next call. */
+    const double *(*peratom_values)(struct gravel *g, struct fix *f);
 };
 
 struct fix {
@@ -228,6 +234,8 @@ struct fix {
     int extscalar, extvector, extarray;
     const int *extlist;         /* [size_vector] when extvector is -1; owned by the style */
     int global_freq;
+    int peratom_flag;           /* per-atom output (style->peratom_values) */
+    int size_peratom_cols;      /* ... 0: a vector; else an array's columns */
     int rows_variable;          /* the vector's length or the array's rows change at run
                                  * time: elements beyond them read as 0, not an error
                                  * (LAMMPS's size_vector_variable, size_array_rows_variable) */
@@ -246,6 +254,12 @@ struct fix *fix_ref_check(struct gravel *g, const char *ref, const char *who);
  * extensive. A row beyond the array's current rows is an error naming `who`. */
 double fix_output(struct gravel *g, struct fix *f, int index, int col, long long norm,
                   const char *who);
+/* Per-atom reference `f_ID` / `f_ID[N]` (ref) checked: the fix exists and
+ * has that per-atom output (a vector for f_ID, column N of an array).
+ * Errors name `who`. */
+struct fix *fix_peratom_check(struct gravel *g, const char *ref, const char *who);
+/* Its values: atom i's is p[i * *stride] (host order), current. */
+const double *fix_peratom_ref(struct gravel *g, const char *ref, int *stride, const char *who);
 /* 1 when output (index, col) of f is extensive. */
 int fix_output_extensive(const struct fix *f, int index, int col);
 

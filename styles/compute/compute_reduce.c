@@ -21,6 +21,7 @@
 #include "atoms.h"
 #include "compute.h"
 #include "error.h"
+#include "fix.h"
 #include "region.h"
 #include "variable.h"
 
@@ -32,6 +33,8 @@ struct input {
     char cid[GR_NAMELEN];       /* per-atom compute ID */
     int index;                  /* c_ID[N]: column N of a per-atom array; 0: vector */
     int local;                  /* c_ID of a local compute (rows, not atoms) */
+    int fix;                    /* f_ID / f_ID[N] (cid holds the reference): a fix's
+                                 * per-atom output */
 };
 
 struct reduce {
@@ -122,8 +125,14 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
                 r->n++;
                 continue;
             }
-            if (strncmp(s, "f_", 2) == 0)
-                gr_error(g, "compute reduce: fix inputs ('%.64s') are not supported", s);
+            if (strncmp(s, "f_", 2) == 0) { /* a fix's per-atom output (checked at init) */
+                if (strlen(s) >= sizeof in->cid)
+                    gr_error(g, "compute reduce: fix reference '%.64s' is too long", s);
+                in->fix = 1;
+                snprintf(in->cid, sizeof in->cid, "%s", s);
+                r->n++;
+                continue;
+            }
             if (!compute_parse_ref(s, in->cid, &in->index))
                 gr_error(g, "compute reduce: unknown input '%.64s'", s);
             if (strcmp(in->cid, c->id) == 0)
@@ -157,6 +166,10 @@ static void reduce_init(struct gravel *g, struct compute *c)
             continue;
         if (r->in[k].var) {
             var_check_atom(g, r->in[k].cid, "compute reduce");
+            continue;
+        }
+        if (r->in[k].fix) {
+            fix_peratom_check(g, r->in[k].cid, "compute reduce");
             continue;
         }
         if (r->in[k].local)
@@ -197,6 +210,8 @@ static double reduce_one(struct gravel *g, struct compute *c, const struct input
     } else if (in->var) {
         vals = var_atom_values(g, in->cid);
         src = vals;
+    } else if (in->fix) {
+        src = fix_peratom_ref(g, in->cid, &stride, "compute reduce");
     } else if (!in->local) {
         struct compute *pc = compute_get(g, in->cid, "compute reduce");
         src = compute_peratom_ref(g, pc, in->index, &stride, "compute reduce");

@@ -23,6 +23,7 @@
 #include "args.h"
 #include "compute.h"
 #include "domain.h"
+#include "fix.h"
 #include "dump.h"
 #include "dump_custom.h"
 #include "atom_custom.h"
@@ -35,7 +36,8 @@ enum field {
     F_FY, F_FZ, F_RADIUS, F_DIAMETER, F_MASS, F_OMEGAX, F_OMEGAY, F_OMEGAZ, F_TQX, F_TQY, F_TQZ,
     F_XS, F_YS, F_ZS, F_XSU, F_YSU, F_ZSU, F_MOL, F_TEMPERATURE,
     F_HEATFLOW, F_QUATW, F_QUATI, F_QUATJ, F_QUATK, F_SHAPEX, F_SHAPEY, F_SHAPEZ, F_ANGMOMX,
-    F_ANGMOMY, F_ANGMOMZ, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2, F_CUSTOM = -3
+    F_ANGMOMY, F_ANGMOMZ, F_COUNT, F_COMPUTE = -1, F_VARIABLE = -2, F_CUSTOM = -3,
+    F_FIX = -4
 };
 
 static const char *const field_names[F_COUNT] = {
@@ -126,10 +128,14 @@ static void custom_create(struct gravel *g, struct dump *d, int argc, char **arg
             col->cint = g->atoms.cus.p[col->cref.idx].isint;
             continue;
         }
+        if (strncmp(s, "f_", 2) == 0 && s[2]) { /* a fix's per-atom output: checked at init */
+            col->field = F_FIX;
+            continue;
+        }
         gr_error(g, "unknown dump custom field '%s' (id type x y z xu yu zu ix iy iz vx vy vz "
                     "fx fy fz radius diameter mass omegax omegay omegaz tqx tqy tqz xs ys zs xsu ysu zsu mol "
                     "temperature heatflow quatw quati quatj quatk shapex shapey shapez angmomx "
-                    "angmomy angmomz i_name d_name i2_name[k] d2_name[k] c_ID c_ID[N] v_name)", s);
+                    "angmomy angmomz i_name d_name i2_name[k] d2_name[k] c_ID c_ID[N] f_ID f_ID[N] v_name)", s);
     }
 }
 
@@ -265,6 +271,8 @@ static void custom_init(struct gravel *g, struct dump *d)
             compute_peratom_check(g, col->cid, col->index, "dump custom");
         if (col->field == F_VARIABLE)
             var_check_atom(g, col->name + 2, "dump custom");
+        if (col->field == F_FIX)
+            fix_peratom_check(g, col->name, "dump custom");
         if (col->field == F_CUSTOM) { /* the property may have moved (or gone: unfix) */
             custom_ref_parse(g, col->name, "dump custom", &col->cref, NULL);
             col->cint = g->atoms.cus.p[col->cref.idx].isint;
@@ -313,6 +321,10 @@ static void custom_write(struct gravel *g, struct dump *d, FILE *fp, const int *
                                                     "dump custom");
     for (int i = 0; i < c->n; i++) {
         struct column *col = &c->col[i];
+        if (col->field == F_FIX) {
+            col->peratom = fix_peratom_ref(g, col->name, &col->stride, "dump custom");
+            continue;
+        }
         if (col->field != F_VARIABLE)
             continue;
         double *v = realloc(col->vals, ((size_t)a->n + 1) * sizeof *v);

@@ -53,6 +53,7 @@
 #include "pair_granular.h"
 #include "par.h"
 #include "region.h"
+#include "wall.h"
 
 /* the per-atom state a restart file keeps: these doubles of struct
  * mdr_atom, in this order, after the atom's tag */
@@ -328,22 +329,35 @@ static void yield_warn(struct gravel *g, struct mdr_fix *d, int yield_new)
  * wall kernel (kernels/fix_wall_gran.cl) reads it and adds damping mdr,
  * friction and rolling as for the pairs. Between this pre_force and the
  * wall's post_force neither the atoms nor the region move, so the
- * contacts found here are the kernel's. */
+ * contacts found here are the kernel's. Any region a wall/gran/region
+ * takes (LAMMPS's mdr walls take any): a plane's one contact is found here
+ * (plane_contact), every other region's contacts by the device's own
+ * Region::surface (kernels/wall_region.cl region_probe), read back with the
+ * wall's state. As LAMMPS, the mdr force of a region contact is the flat
+ * one of the particle's apparent radius at the overlap radius - r: the
+ * surface's curvature (region contact radius) enters only the other
+ * sub-models (the rolling torque's effective radius), in the kernel. */
 struct mdr_wall {
     struct fix *f;
     int k;                      /* its index among the run's mdr walls */
+    int plane;                  /* a plane region: contacts found on the host */
+    int soff;                   /* its first contact slot among all walls' (d->wallh) */
     struct wall_mdr w;
     struct mdr_mat mat;
-    size_t stride;              /* per-atom REAL */
-    double *own;                /* the wall's per-atom state of this process's atoms, host copy */
+    size_t sstride;             /* the wall's per-atom state REAL (device) */
+    size_t stride;              /* per atom in own / buf: the state, then (not a plane)
+                                 * region_probe's record */
+    double *own;                /* this process's atoms, host copy */
     double *buf;                /* ... of the atoms the host part reads (own on one process) */
 };
 
 /* The walls of this run, in fix order, their state read from the device
- * (own); the checks of LAMMPS's setup_pre_force. Returns their count. */
-static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int cap)
+ * (own); the checks of LAMMPS's setup_pre_force. Returns their count;
+ * *nslot the contact slots of all. */
+static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw, int cap,
+                       int *nslot)
 {
-    int nw = 0;
+    int nw = 0, ns = 0;
     for (int k = 0; k < g->styles.nfix; k++) {
         struct fix *wf = g->styles.fix[k];
         struct wall_mdr w;
@@ -361,30 +375,52 @@ static int walls_begin(struct gravel *g, struct mdr_fix *d, struct mdr_wall *mw,
                 gr_error(g, "fix granular/mdr: %s in pair style, %g, does not agree with value "
                             "%g in fix %s (wall/gran/region)", what[q], own[q], w.par[q], wf->id);
         const struct region *r = w.region;
-        if (!r || strcmp(r->style->name, "plane"))
-            gr_error(g, "fix granular/mdr: fix %s (wall/gran/region) with the mdr model: region "
-                        "%s is a %s; gravel's mdr walls are plane regions only", wf->id,
-                     r ? r->id : "?", r ? r->style->name : "?");
+        if (!r)
+            gr_error(g, "internal error: fix %s (wall/gran/region) has no region", wf->id);
         struct mdr_wall *m = &mw[nw];
         m->k = nw++;
         m->f = wf;
         m->w = w;
+        m->plane = !strcmp(r->style->name, "plane");
+        m->soff = ns;
+        ns += w.slots;
         mdr_mat_set(&m->mat, w.par[0], w.par[1], w.par[2], w.par[3], w.par[4]);
-        m->stride = (size_t)(1 + (1 + w.hw) * w.slots);
+        m->sstride = (size_t)(1 + (1 + w.hw) * w.slots);
+        m->stride = m->sstride + (m->plane ? 0 : (size_t)RG_PROBE_W);
         m->own = m->buf = NULL;
         if (!wf->peratom)
             continue;
-        m->own = gr_malloc(g, (g->atoms.n ? (size_t)g->atoms.n : 1) * m->stride * sizeof(double));
-        eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->stride, m->own);
+        const size_t n = g->atoms.n ? (size_t)g->atoms.n : 1;
+        m->own = gr_malloc(g, n * m->stride * sizeof(double));
         m->buf = m->own;
         if (region_dynamic(r))
             region_prematch(g, (struct region *)r);
+        if (m->plane) {
+            eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->stride, m->own);
+            continue;
+        }
+        /* the state, then the probe's record, per atom */
+        double *st = gr_malloc(g, n * m->sstride * sizeof(double));
+        double *pr = gr_malloc(g, n * RG_PROBE_W * sizeof(double));
+        eng_read_reals(g, wf->peratom, (size_t)g->atoms.n * m->sstride, st);
+        cl_mem out = eng_alloc(g, n * RG_PROBE_W * eng_get(g)->rsz, "mdr wall contacts");
+        wall_gran_mdr_probe(g, wf, out);
+        eng_read_reals(g, out, (size_t)g->atoms.n * RG_PROBE_W, pr);
+        clReleaseMemObject(out);
+        for (size_t i = 0; i < (size_t)g->atoms.n; i++) {
+            memcpy(m->own + i * m->stride, st + i * m->sstride, m->sstride * sizeof(double));
+            memcpy(m->own + i * m->stride + m->sstride, pr + i * RG_PROBE_W,
+                   RG_PROBE_W * sizeof(double));
+        }
+        free(st);
+        free(pr);
     }
+    *nslot = ns;
     return nw;
 }
 
-/* The walls' contact state by (tag, wall) for tags below d->cap: zeroed
- * when the run's mdr walls change in number. */
+/* The walls' contact state by (tag, slot of all walls) for tags below
+ * d->cap: zeroed when the run's mdr walls' slots change in number. */
 static void walls_state(struct gravel *g, struct mdr_fix *d, int nw)
 {
     if (nw != d->wall_n || d->wcap < d->cap) {
@@ -424,37 +460,100 @@ static int plane_contact(const struct region *r, const double x[3], double cutof
     return 1;
 }
 
-/* Atom i's contact with wall m: its mdr state (d->wallh) and in *hk the
- * kernel's part of its history slot (the slot bookkeeping of
- * kernels/wall_region.cl region_slots for a plane's one wall id, both
- * zeroed for a new contact), the distance and the plane-to-atom vector;
- * NULL when none (the count reset, as the kernel would). */
-static double *wall_contact(const struct mdr_atoms *A, const struct mdr_fix *d,
-                            const struct mdr_wall *m, int i, double *rr, double del[3],
-                            double **hk)
+/* one contact of an atom with a wall: the distance, the vector from the
+ * surface to the atom, its mdr state (d->wallh) and the kernel's part of
+ * its history slot */
+struct mdr_wc {
+    double r, del[3];
+    double *h, *hk;
+};
+
+/* Atom i's contacts with wall m (at most RG_MAXC) into c; returns their
+ * count. The slots of the wall's per-atom state are kept as the kernel
+ * keeps them (kernels/wall_region.cl region_slots, LAMMPS's
+ * update_contacts, its c2r included), and the mdr state rows with them:
+ * a slot of a wall id no longer touched takes the last slot's state, a new
+ * one starts from zero. An atom out of the group or not matched: none, its
+ * state kept; matched without contact: none, its count reset. */
+static int wall_contacts(const struct mdr_atoms *A, const struct mdr_fix *d,
+                         const struct mdr_wall *m, int i, struct mdr_wc *c)
 {
     if (!(A->mask[i] & m->f->groupbit) || !m->buf)
-        return NULL;
+        return 0;
     const double *x = A->x + 3 * i;
     if (!region_match(m->w.region, x))
-        return NULL;
+        return 0;
     double *hist = m->buf + (size_t)i * m->stride;
-    if (!plane_contact(m->w.region, x, A->radius[i], rr, del)) {
-        hist[0] = 0;
-        return NULL;
+    int nc, iw[RG_MAXC];
+    if (m->plane) {
+        nc = plane_contact(m->w.region, x, A->radius[i], &c[0].r, c[0].del);
+        iw[0] = 0;
+    } else {
+        const double *pr = hist + m->sstride;
+        nc = (int)pr[0];
+        for (int k = 0; k < nc; k++) {
+            const double *q = pr + 1 + RG_PROBE_C * k;
+            c[k].r = q[0];
+            c[k].del[0] = q[1];
+            c[k].del[1] = q[2];
+            c[k].del[2] = q[3];
+            iw[k] = (int)q[4];
+        }
     }
-    double *sh = hist + 1 + m->w.slots;
-    double *hb = d->wallh + ((size_t)A->tag[i] * d->wall_n + m->k) * MH_N;
-    if ((int)hist[0] == 0 || (int)hist[1] != 0) { /* a new contact: zero history */
-        hist[0] = 1;
-        hist[1] = 0;
-        for (int q = 0; q < m->w.hw; q++)
+    if (nc == 0) {
+        hist[0] = 0;
+        return 0;
+    }
+    const int slots = m->w.slots, hw = m->w.hw;
+    double *walls = hist + 1, *sh = hist + 1 + slots;
+    double *hb = d->wallh + ((size_t)A->tag[i] * d->wall_n + m->soff) * MH_N;
+    int ncont = (int)hist[0], c2r[RG_MAXC];
+    for (int k = 0; k < RG_MAXC; k++)
+        c2r[k] = k;
+    if (nc == 1 && ncont == 0) { /* a new contact: zero history */
+        ncont = 1;
+        walls[0] = iw[0];
+        for (int q = 0; q < hw; q++)
             sh[q] = 0;
         for (int q = 0; q < MH_N; q++)
             hb[q] = 0;
+    } else if (!(nc == 1 && ncont == 1 && (int)walls[0] == iw[0])) {
+        int iold = 0;
+        while (iold < ncont) {
+            int k = 0;
+            while (k < nc && iw[k] != (int)walls[iold])
+                k++;
+            if (k >= nc) { /* gone: the last slot moves here */
+                const int last = ncont - 1;
+                memmove(sh + (size_t)hw * iold, sh + (size_t)hw * last, hw * sizeof *sh);
+                memmove(hb + (size_t)MH_N * iold, hb + (size_t)MH_N * last, MH_N * sizeof *hb);
+                walls[iold] = walls[last];
+                ncont--;
+            } else
+                iold++;
+        }
+        const int nold = ncont;
+        for (int inew = 0; inew < nc; inew++) {
+            int k = 0;
+            while (k < nold && (int)walls[k] != iw[inew])
+                k++;
+            if (k < nold)
+                c2r[k] = inew;
+            else {
+                c2r[ncont] = inew;
+                memset(sh + (size_t)hw * ncont, 0, hw * sizeof *sh);
+                memset(hb + (size_t)MH_N * ncont, 0, MH_N * sizeof *hb);
+                walls[ncont] = iw[inew];
+                ncont++;
+            }
+        }
     }
-    *hk = sh + m->w.hoff;
-    return hb;
+    hist[0] = ncont;
+    for (int k = 0; k < nc; k++) {
+        c[k].h = hb + (size_t)MH_N * c2r[k];
+        c[k].hk = sh + (size_t)hw * c2r[k] + m->w.hoff;
+    }
+    return nc;
 }
 
 /* update_fix_gran_wall: each wall contact's share of its atom's mean
@@ -464,11 +563,13 @@ static void walls_mean_disp(const struct mdr_atoms *A, struct mdr_fix *d, struct
 {
     for (int k = 0; k < nw; k++)
         for (int i = 0; i < A->n; i++) {
-            double rr, del[3], *hk;
-            double *h = wall_contact(A, d, &mw[k], i, &rr, del, &hk);
+            struct mdr_wc c[RG_MAXC];
+            const int nc = wall_contacts(A, d, &mw[k], i, c);
             struct mdr_atom *a = &d->at[A->tag[i]];
-            if (h && a->Acon0 != 0.0)
-                a->ddelta_bar += 1.0 * h[MH_AC_0] / a->Acon0 * (A->radius[i] - rr - h[MH_DELTA_0]);
+            for (int ic = 0; ic < nc; ic++)
+                if (a->Acon0 != 0.0)
+                    a->ddelta_bar += 1.0 * c[ic].h[MH_AC_0] / a->Acon0 *
+                                     (A->radius[i] - c[ic].r - c[ic].h[MH_DELTA_0]);
         }
 }
 
@@ -478,31 +579,38 @@ static void walls_force(const struct mdr_atoms *A, struct mdr_fix *d, struct mdr
 {
     for (int k = 0; k < nw; k++) {
         for (int i = 0; i < A->n; i++) {
-            double rr, del[3], *hk;
-            double *h = wall_contact(A, d, &mw[k], i, &rr, del, &hk);
-            if (!h)
-                continue;
-            /* GranularModel's contact of a region wall: r from the contact vector */
-            const double r = sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
-            const double rinv = 1.0 / r;
-            const double nrm[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-            mdr_wall_force(&mw[k].mat, h, A->radius[i] - r, &d->at[A->tag[i]], A->radius[i],
-                           nrm, A->rmass[i], update, yield_new);
-            hk[MHW_FN] = h[MH_FN]; /* the kernel's part (kernels/fix_wall_gran.cl) */
-            hk[MHW_DAMP_SCALE] = h[MH_DAMP_SCALE];
+            struct mdr_wc c[RG_MAXC];
+            const int nc = wall_contacts(A, d, &mw[k], i, c);
+            for (int ic = 0; ic < nc; ic++) {
+                /* GranularModel's contact of a region wall: r from the contact vector */
+                const double *del = c[ic].del;
+                const double r = sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
+                const double rinv = 1.0 / r;
+                const double nrm[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+                double *h = c[ic].h;
+                mdr_wall_force(&mw[k].mat, h, A->radius[i] - r, &d->at[A->tag[i]],
+                               A->radius[i], nrm, A->rmass[i], update, yield_new);
+                c[ic].hk[MHW_FN] = h[MH_FN]; /* the kernel's part (kernels/fix_wall_gran.cl) */
+                c[ic].hk[MHW_DAMP_SCALE] = h[MH_DAMP_SCALE];
+            }
         }
     }
 }
 
 /* The walls' state of this process's atoms back to the device (on several
- * ranks taken from the gathered set first). */
+ * ranks taken from the gathered set first; the probe's records dropped). */
 static void walls_end(struct gravel *g, struct mdr_wall *mw, int nw, const struct mdr_ranks *r)
 {
     for (int k = 0; k < nw; k++) {
         if (mw[k].own) {
             if (r)
                 mdr_ranks_wall_back(r, k, mw[k].own);
-            eng_write_reals(g, mw[k].f->peratom, (size_t)g->atoms.n * mw[k].stride, mw[k].own);
+            if (mw[k].stride != mw[k].sstride)
+                for (size_t i = 0; i < (size_t)g->atoms.n; i++)
+                    memmove(mw[k].own + i * mw[k].sstride, mw[k].own + i * mw[k].stride,
+                            mw[k].sstride * sizeof(double));
+            eng_write_reals(g, mw[k].f->peratom, (size_t)g->atoms.n * mw[k].sstride,
+                            mw[k].own);
         }
         free(mw[k].own);
         mw[k].own = mw[k].buf = NULL;
@@ -520,7 +628,8 @@ static void pre_force(struct gravel *g, struct fix *f)
     const int ranks = par_on(g);
     struct mdr_ranks rk = {0};
     struct mdr_wall mw[MDR_WALLS_MAX];
-    const int nw = walls_begin(g, d, mw, MDR_WALLS_MAX);
+    int nslot = 0;
+    const int nw = walls_begin(g, d, mw, MDR_WALLS_MAX, &nslot);
     struct mdr_atoms V = {A->n, A->tag, A->x, A->radius, A->rmass, A->mask};
     if (ranks) {
         size_t stride[MDR_WALLS_MAX];
@@ -538,7 +647,7 @@ static void pre_force(struct gravel *g, struct fix *f)
     for (int i = 0; i < n; i++)
         tmax = V.tag[i] > tmax ? V.tag[i] : tmax;
     grow(g, d, tmax);
-    walls_state(g, d, nw);
+    walls_state(g, d, nslot);
     /* 1. the atoms (new ones set up, also at setup) */
     int moved = 0;
     for (int i = 0; i < n; i++) {
@@ -752,7 +861,7 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
         double head[2];
         memcpy(head, buf + atoms + sizeof(int64_t), sizeof head);
         const size_t wb = sizeof(int64_t) + (size_t)head[0] * MH_N * sizeof(double);
-        if (!(head[0] >= 1 && head[0] <= MDR_WALLS_MAX && head[1] >= 0 &&
+        if (!(head[0] >= 1 && head[0] <= MDR_WALLS_MAX * RG_MAXC && head[1] >= 0 &&
               len == atoms + MDR_REC + (size_t)head[1] * wb))
             gr_error(g, "fix granular/mdr: the restart file's wall state (%g walls, %g rows) "
                         "does not fill its %zu bytes", head[0], head[1], len - atoms);

@@ -47,10 +47,12 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
 
 #include "args.h"
 #include "coeff_check.h"
 #include "device.h"
+#include "engine.h"
 #include "error.h"
 #include "fix.h"
 #include "wall_gran_kernels.h"
@@ -100,6 +102,8 @@ struct wall {
     int rs_pending, rs_n;
     char rs_style[32];
     double rs_prev[WALL_REGION_MAXNODE][4];
+    double *contacts_host;      /* `contacts`: the host copy peratom_values returns */
+    size_t contacts_cap;        /* atoms the device buffer law.contacts holds */
     int mdr;                    /* the granular mdr normal model (fix granular/mdr's walls) */
     double mdr_par[7];          /* its E nu Y gamma psi_b eta_n0 and damping mdr type */
 };
@@ -438,8 +442,13 @@ options:
             w.vshear = arg_double(g, argv[i + 2], "shear velocity");
             w.wshear = 1;
             i += 3;
-        } else if (!strcmp(argv[i], "contacts")) {
-            gr_error(g, "fix wall/gran keyword 'contacts' is not supported");
+        } else if (!strcmp(argv[i], "contacts")) { /* LAMMPS 2023: the per-atom array */
+            if (w.style == W_MESH || liggghts_model(w.model))
+                gr_error(g, "fix wall/gran keyword 'contacts' is LAMMPS's, for its plane, "
+                            "zcylinder and region walls (not meshes or LIGGGHTS's 'model ...' "
+                            "form)");
+            w.law.contacts_on = 1;
+            i += 1;
         } else if (w.style == W_REGION) {
             gr_error(g, "unknown fix wall/gran/region keyword '%.64s'", argv[i]);
         } else if (w.style == W_MESH) {
@@ -477,6 +486,8 @@ options:
     struct wall *pw = gr_malloc(g, sizeof *pw);
     *pw = w;
     f->data = pw;
+    f->peratom_flag = w.law.contacts_on;
+    f->size_peratom_cols = w.law.contacts_on ? WALL_CONTACT_W : 0;
     f->hooks = HOOK_POST_FORCE;
     f->needs = NEED_ROTATION;
     f->sources[f->nsources++] = "pair_gran_hooke.cl";
@@ -555,6 +566,12 @@ int wall_gran_mdr(const struct fix *f, struct wall_mdr *out)
     out->hw = w->history;
     out->slots = w->wreg.slots;
     return 1;
+}
+
+void wall_gran_mdr_probe(struct gravel *g, struct fix *f, cl_mem out)
+{
+    struct wall *w = f->data;
+    wall_region_probe(g, f, &w->wreg, w->region, out);
 }
 
 static int region_nodes(const struct region *r) { return r->nsub ? r->nsub : 1; }
@@ -673,11 +690,50 @@ static void init(struct gravel *g, struct fix *f)
     f->peratom_bytes = wall_peratom_bytes(g, &geom, &w->law);
 }
 
+/* `contacts`: a device record per atom for this launch (cleared by it) */
+static void contacts_reserve(struct gravel *g, struct wall *w)
+{
+    if (!w->law.contacts_on)
+        return;
+    const size_t n = (size_t)eng_atoms(g)->n;
+    if (w->law.contacts && w->contacts_cap >= n && n > 0)
+        return;
+    if (w->law.contacts)
+        clReleaseMemObject(w->law.contacts);
+    w->contacts_cap = n > 0 ? n : 1;
+    w->law.contacts = eng_alloc(g, w->contacts_cap * WALL_CONTACT_W * eng_get(g)->rsz,
+                                "fix wall/gran contacts");
+}
+
+/* f_ID[1..8] (LAMMPS's per-atom array of `contacts`): the last launch's
+ * records, the contact point in box coordinates; zero for an atom the wall
+ * has not seen (before a run, atoms added since) */
+static const double *contacts_values(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    const size_t n = (size_t)g->atoms.n, nw = n * WALL_CONTACT_W;
+    double *v = realloc(w->contacts_host, (nw ? nw : 1) * sizeof *v);
+    if (!v)
+        gr_error(g, "fix %s: out of memory for its contacts", f->id);
+    w->contacts_host = v;
+    memset(v, 0, nw * sizeof *v);
+    if (!w->law.contacts || !g->eng || (size_t)g->eng->a.n != n || w->contacts_cap < n)
+        return v;
+    run_sync_host(g); /* host order = device order */
+    eng_read_reals(g, w->law.contacts, nw, v);
+    for (size_t i = 0; i < n; i++)
+        if (v[i * WALL_CONTACT_W] != 0)
+            for (int q = 0; q < 3; q++)
+                v[i * WALL_CONTACT_W + 4 + q] += g->eng->origin[q];
+    return v;
+}
+
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct wall *w = f->data;
     if (w->tvar[0]) /* the kernels take twall as an argument at this launch */
         w->law.twall = var_compute_equal(g, w->tvar);
+    contacts_reserve(g, w);
     if (w->style == W_MESH) {
         mesh_walls_apply(g, f, &w->mesh, &w->law, liggghts_model(w->model));
         return;
@@ -695,6 +751,10 @@ static void destroy(struct fix *f)
     struct wall *w = f->data;
     if (w && w->law.param)
         clReleaseMemObject(w->law.param);
+    if (w && w->law.contacts)
+        clReleaseMemObject(w->law.contacts);
+    if (w)
+        free(w->contacts_host);
     if (w) {
         free(w->table);
         mesh_walls_release(&w->mesh);
@@ -779,6 +839,7 @@ const struct fix_style fix_style_wall_gran_region = {
     .write_restart = write_restart,
     .read_restart = read_restart,
     .reset_step = reset_step,
+    .peratom_values = contacts_values,
 };
 
 const struct fix_style fix_style_wall_gran = {
@@ -790,4 +851,5 @@ const struct fix_style fix_style_wall_gran = {
     .write_restart = write_restart,
     .read_restart = read_restart,
     .reset_step = reset_step,
+    .peratom_values = contacts_values,
 };

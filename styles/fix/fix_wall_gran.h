@@ -32,5 +32,9 @@ struct wall_mdr {
 };
 /* 1 and *out when f is such a wall, else 0. */
 int wall_gran_mdr(const struct fix *f, struct wall_mdr *out);
+/* Such a wall's region surface contacts of its atoms at this step into
+ * out (RG_PROBE_W REAL per atom, device order; src/contact/wall_region.h
+ * wall_region_probe). */
+void wall_gran_mdr_probe(struct gravel *g, struct fix *f, cl_mem out);
 
 #endif

@@ -8,7 +8,8 @@ with the per-atom bookkeeping of its fix granular/mdr
   damping models' init) comes first, with LAMMPS's words, naming the script
   line; mdr on fix wall/gran is refused (LAMMPS's fix granular/mdr words),
   a wall/gran/region mdr wall whose material differs from the pair's is
-  refused as LAMMPS refuses it, and one on a region not a plane; two
+  refused as LAMMPS refuses it (mdr walls on other regions than planes:
+  tests/scripts/lammps_mdr_region_walls.py); two
   different mdr models in one pair style are refused as LAMMPS's fix
   refuses them; a valid line creates fix MDR (granular/mdr) and runs.
 - check_walls: a sphere against a plane region wall (fix wall/gran/region
@@ -91,9 +92,6 @@ CASES = (
     ("wall_psi_b", "pair_coeff * * " + OK + "\nregion r plane 0 0 -3 0 0 1\nfix w all "
      "wall/gran/region granular " + OK.replace(" 0.5 0.2", " 0.6 0.2") + " region r\n" + ONE +
      "run 0", "Bulk response trigger in pair style, 0.5, does not agree with value 0.6"),
-    ("wall_not_plane", "pair_coeff * * " + OK + "\nregion r block -3 3 -3 3 -3 3\nfix w all "
-     "wall/gran/region granular " + OK + " region r\n" + ONE + "run 0",
-     "gravel's mdr walls are plane regions only"),
 )
 TWO_MODELS = HEAD.replace("create_box 1", "create_box 2") + """pair_coeff 1 1 OKA
 pair_coeff 2 2 OKB

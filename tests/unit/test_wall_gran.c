@@ -70,8 +70,10 @@ TEST(errors)
                 "periodic dimension x", 6);
     CHECK_ERROR(BOXP "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zcylinder 2\n",
                 "periodic x or y", 6);
-    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL contacts\n",
-                "'contacts' is not supported", 6);
+    /* contacts (LAMMPS 2023+): an 8-column per-atom array */
+    CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL contacts\n"
+                    "compute c all reduce sum f_w[9]\nrun 0\n",
+                "f_w[9] is out of range: fix w's per-atom array has 8 columns", 8);
     CHECK_ERROR(BOX "fix w all wall/gran hooke/history 1 0 1 NULL 0.5 1 zplane 0 NULL\n",
                 "needs Kt > 0", 6);
 }
