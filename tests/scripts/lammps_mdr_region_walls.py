@@ -332,8 +332,11 @@ def check_ranks():
             fh.write(deck)
         one = subprocess.run([GRAVEL, "-log", "none", "-in", "in.obs"], cwd=tmp,
                              capture_output=True, text=True, timeout=600)
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl="self,vader",
+                   OMPI_MCA_btl_vader_single_copy_mechanism="none")  # as mpi_ranks.sh (CI: root)
         two = subprocess.run(["mpirun", "-np", "2", GRAVEL_MPI, "-log", "none", "-in", "in.obs"],
-                             cwd=tmp, capture_output=True, text=True, timeout=600)
+                             cwd=tmp, capture_output=True, text=True, timeout=600, env=env)
     a, b = thermo_rows(one.stdout, 7), thermo_rows(two.stdout, 7)
     ok = one.returncode == 0 and two.returncode == 0 and 2000 in a and a == b
     return report("ranks", ok, f"{len(a)} rows, identical on 2 ranks: {a == b}; step 2000 "
