@@ -40,6 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "atom_custom.h"
 #include "device.h"
 #include "domain.h"
 #include "engine.h"
@@ -101,6 +102,49 @@ static void destroy(struct fix *f)
     }
 }
 
+/* LAMMPS's fix property/atom of the mdr state (FixGranularMDR::
+ * post_constructor): the same d_ names, for compute property/atom, dump
+ * custom and atom-style variables; a copy of the state by tag, written at
+ * the end of every pre_force (at a run's setup only for atoms set up then:
+ * LAMMPS neither updates nor zeroes the others there). */
+#define MDR_PROPS_FIX "MDR_PARTICLE_HISTORY_VARIABLES"
+enum { MDR_NPROPS = 18 };
+static const char *const prop_names[MDR_NPROPS] = {
+    "Ro",   "Vcaps",    "Vgeo",       "Velas", "eps_bar", "dRnumerator",        "dRdenominator",
+    "Acon0", "Acon1",   "Atot",       "Atot_sum", "ddelta_bar", "psi", "history_setup_flag",
+    "sigmaxx", "sigmayy", "sigmazz", "dRavg"};
+
+static void prop_values(const struct mdr_atom *a, double v[MDR_NPROPS])
+{
+    const double vals[MDR_NPROPS] = {a->Ro,    a->Vcaps, a->Vgeo,     a->Velas,    a->eps_bar,
+                                     a->dRnum, a->dRden, a->Acon0,    a->Acon1,    a->Atot,
+                                     a->Atot_sum, a->ddelta_bar, a->psi, a->ready ? 1.0 : 0.0,
+                                     a->sigma[0], a->sigma[1], a->sigma[2], a->dRavg};
+    memcpy(v, vals, sizeof vals);
+}
+
+static void props_write(struct gravel *g, const struct mdr_fix *d, int setup)
+{
+    struct atoms *A = &g->atoms;
+    const int k0 = custom_find(A, prop_names[0]);
+    if (k0 < 0)
+        return;
+    struct custom_ref ref[MDR_NPROPS];
+    for (int q = 0; q < MDR_NPROPS; q++)
+        ref[q] = (struct custom_ref){custom_find(A, prop_names[q]), 0};
+    for (int i = 0; i < A->n; i++) {
+        if (A->tag[i] >= d->cap)
+            continue;
+        const struct mdr_atom *a = &d->at[A->tag[i]];
+        if (setup && custom_get(A, ref[13], i) != 0.0)
+            continue;
+        double v[MDR_NPROPS];
+        prop_values(a, v);
+        for (int q = 0; q < MDR_NPROPS; q++)
+            *custom_at(A, ref[q], i) = v[q];
+    }
+}
+
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     (void)argv;
@@ -108,6 +152,16 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         gr_error(g, "fix granular/mdr takes no arguments, got %d", argc);
     f->data = gr_calloc(g, 1, sizeof(struct mdr_fix));
     f->hooks = HOOK_PRE_FORCE;
+    struct custom_def defs[MDR_NPROPS];
+    for (int q = 0; q < MDR_NPROPS; q++)
+        defs[q] = (struct custom_def){prop_names[q], 0, 0};
+    custom_define(g, MDR_PROPS_FIX, MDR_NPROPS, defs);
+}
+
+static void unfix(struct gravel *g, struct fix *f)
+{
+    (void)f;
+    custom_remove_fix(g, MDR_PROPS_FIX);
 }
 
 static void grow(struct gravel *g, struct mdr_fix *d, int64_t tag)
@@ -780,6 +834,7 @@ static void pre_force(struct gravel *g, struct fix *f)
     free(hloc);
     free(s.ord);
     mdr_ranks_free(&rk);
+    props_write(g, d, setup);
 }
 
 /* restart: every atom's state by tag (tags with state only); then, when the
@@ -882,6 +937,7 @@ const struct fix_style fix_style_granular_mdr = {
     .create = create,
     .init = init,
     .pre_force = pre_force,
+    .unfix = unfix,
     .write_restart = write_restart,
     .read_restart = read_restart,
     .destroy = destroy,

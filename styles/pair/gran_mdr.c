@@ -49,6 +49,7 @@ void mdr_atom_init(struct mdr_atom *a, double R)
     a->dRnum = a->dRden = 0.0;
     a->Atot_sum = 0.0;
     a->ddelta_bar = 0.0;
+    a->sigma[0] = a->sigma[1] = a->sigma[2] = 0.0;
     a->ready = 1;
 }
 
@@ -78,6 +79,7 @@ void mdr_atom_zero_sums(struct mdr_atom *a)
     a->Vcaps = a->eps_bar = 0.0;
     a->dRnum = a->dRden = 0.0;
     a->Acon1 = a->Atot_sum = 0.0;
+    a->sigma[0] = a->sigma[1] = a->sigma[2] = 0.0;
 }
 
 void mdr_side_deltas(double dmax, double dp0, double dp1, double delta, double R0, double R1,
@@ -303,8 +305,12 @@ static double mdr_side_force(const struct mdr_mat *m, double *h, int s, double d
         at->dRnum -= wij * PI_ * ddeltao * (2 * deltao * Ro - sq(deltao) + sq(R) - sq(Ro));
         at->dRden += wij * 2.0 * PI_ * R * (deltao + R - Ro);
     }
-    if (update)
+    if (update) {
         h[MH_EPS_BAR_0 + s] = eps_c;
+        at->sigma[0] += fx * bx / at->Velas;
+        at->sigma[1] += fy * by / at->Velas;
+        at->sigma[2] += fz * bz / at->Velas;
+    }
     return F_mdr + F_bulk;
 }
 

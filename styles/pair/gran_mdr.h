@@ -28,6 +28,7 @@ struct mdr_mat {
 struct mdr_atom {
     double Ro, Vgeo, Velas, Acon0, Acon1, Atot, psi, ddelta_bar, dRavg;
     double Vcaps, eps_bar, dRnum, dRden, Atot_sum;
+    double sigma[3];    /* the contacts' f_q b_q / Velas summed (LAMMPS's d_sigmaxx, yy, zz) */
     int ready;      /* 0: not yet initialised (LAMMPS's history_setup_flag) */
     double Rlist;   /* gravel's: the apparent radius at the last neighbor build */
 };

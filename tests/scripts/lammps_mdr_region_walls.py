@@ -24,9 +24,10 @@ Checked here:
 - check_restart: a sphere pressed plastically into an mdr cylinder wall:
   write_restart at the deepest point, read_restart, run on gives the
   uninterrupted run's bits.
-- check_tableting: LAMMPS's in.tableting.200 (tests/reference/mdr, the
-  deck's one edit named there: 200 mdr spheres in a cylinder die pressed by
-  two moving plane punches, every wall with `contacts`) runs to its end
+- check_tableting: LAMMPS's in.tableting.200 (tests/reference/mdr, unchanged
+  but for comments: 200 mdr spheres in a cylinder die pressed by two moving
+  plane punches, every wall with `contacts`, fix granular/mdr's d_sigma*
+  and d_Velas read by compute property/atom) runs to its end
   (38000 steps); its settling run's kinetic energy at rows 100 .. 3000
   against LAMMPS 4 Feb 2025's log to 1e-7 (particles rest on the punch and
   on the die's closed bottom from step 200; the rows after 3000 differ from
@@ -34,7 +35,13 @@ Checked here:
   deepest press (step 12000) the walls' z forces from their `contacts`
   (compute reduce sum f_ID[4]) balance the upper punch's to 1 % (the rest:
   gravity, inertia, and an atom's second contact with one wall, which
-  LAMMPS's array does not keep).
+  LAMMPS's array does not keep); there the per-atom stresses of fix
+  granular/mdr (dumped d_sigmaxx .. d_eps_bar) keep LAMMPS's identity
+  sigmaxx + sigmayy + sigmazz = 3 kappa eps_bar (both sum f_q b_q / Velas
+  over the atom's contacts; kappa = E / (3 (1 - 2 nu))) to 1e-12, the
+  charge is compressed along the press (mean sigmazz < 0, larger than the
+  lateral means) and the elastic volumes d_Velas = 4/3 pi d_Ro^3 (1 + the
+  last step's eps_bar) are below 4/3 pi d_Ro^3 on average and within 30 %.
 - check_ranks: the settling run's first 2000 steps on 2 MPI ranks give the
   serial run's thermo (fix granular/mdr runs its host part on the gathered
   set)."""
@@ -50,6 +57,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 REF = os.path.join(ROOT, "tests", "reference", "mdr")
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
 GRAVEL_MPI = os.path.join(ROOT, "bin", "gravel-mpi")
+sys.path.insert(0, os.path.dirname(__file__))
+from physics_lammps import read_dump  # noqa: E402
 
 
 def report(name, ok, note=""):
@@ -272,6 +281,11 @@ thermo_modify format float %.17g
 """
 
 
+STRESS_DUMP = """dump s all custom 12000 s.dump id c_sigmaxx c_sigmayy c_sigmazz d_eps_bar c_Velas d_Ro
+dump_modify s format float %.17g
+"""
+
+
 def check_tableting():
     want = {}
     with open(os.path.join(REF, "tableting200_lammps_4Feb25.txt")) as fh:
@@ -284,10 +298,13 @@ def check_tableting():
         deck = open(os.path.join(tmp, "in.tableting.200")).read()
         # observation only: the die's z force and more digits, before the first run
         deck = deck.replace("\nrun 0\n", "\n" + OBSERVE + "run 0\n", 1)
+        deck = deck.replace("variable Vparticles equal c_Velas_sum\n",
+                            "variable Vparticles equal c_Velas_sum\n" + STRESS_DUMP, 1)
         with open(os.path.join(tmp, "in.obs"), "w") as fh:
             fh.write(deck)
         r = subprocess.run([GRAVEL, "-log", "none", "-in", "in.obs"], cwd=tmp,
                            capture_output=True, text=True, timeout=900)
+        stress = read_dump(os.path.join(tmp, "s.dump")) if r.returncode == 0 else {}
     rows = {}
     for line in r.stdout.splitlines():
         w = line.split()
@@ -317,6 +334,22 @@ def check_tableting():
                   f"step 12000 (punch at -0.007): upper {up:.6g} N, lower {low:.6g} N, die "
                   f"{die:.6g} N, weight {weight:.4g} N, residual {res:.3g} N = "
                   f"{abs(res) / abs(up):.2%} of the upper punch's")
+    frame = stress.get(12000, {})
+    kappa = 5e6 / (3 * (1 - 2 * 0.4))
+    worst, scale, vol, vmean = 0.0, 0.0, 0.0, 0.0
+    for sxx, syy, szz, eps, velas, ro in frame.values():
+        scale = max(scale, abs(sxx), abs(syy), abs(szz))
+        worst = max(worst, abs(sxx + syy + szz - 3 * kappa * eps))
+        vol = max(vol, abs(velas / (4 / 3 * math.pi * ro ** 3) - 1))
+        vmean += (velas / (4 / 3 * math.pi * ro ** 3) - 1) / len(frame)
+    mean = [sum(v[q] for v in frame.values()) / max(len(frame), 1) for q in range(3)]
+    ok = len(frame) == 200 and scale > 0 and worst <= 1e-12 * scale and vol < 0.3 and \
+        vmean < 0 and \
+        mean[2] < 0 and abs(mean[2]) > abs(mean[0]) and abs(mean[2]) > abs(mean[1])
+    bad += report("tableting_stresses", ok,
+                  f"step 12000: mean sigma xx {mean[0]:.4g} yy {mean[1]:.4g} zz {mean[2]:.4g} Pa, "
+                  f"|trace - 3 kappa eps_bar| {worst:.2g} against |sigma| up to {scale:.3g}, "
+                  f"|Velas / Vo - 1| up to {vol:.3g} (mean {vmean:.3g}), {len(frame)} atoms")
     return bad
 
 
