@@ -364,6 +364,27 @@ static inline void nbr_row_insert(__global int *row, int *cnt, int *own, const i
     (*cnt)++;
 }
 
+/* nbr_row_insert into a row held in private memory with its partners' tags
+ * (rows of at most NBR_PRIV partners): the same row, without a global load
+ * of a tag per comparison and a global store per shift. */
+#define NBR_PRIV 64
+static inline void nbr_row_insert_priv(int *prow, long *ptag, int *cnt, int *own, const int maxn,
+                                       const long tj, const int j, const long tagi)
+{
+    if (*cnt < maxn) {
+        int p = *cnt;
+        while (p > 0 && ptag[p - 1] > tj) {
+            prow[p] = prow[p - 1];
+            ptag[p] = ptag[p - 1];
+            p--;
+        }
+        prow[p] = j;
+        ptag[p] = tj;
+    }
+    *own += tj > tagi;
+    (*cnt)++;
+}
+
 /* Full Verlet list with skin, each row in ascending partner tag (pairs of
  * nbr_accept). nown[i] counts the partners of higher tag: the contacts i
  * owns, the last nown[i] entries of its row. Cells list their atoms in
@@ -403,6 +424,9 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
     const int nsz = stencil(cz, nz, pz, szs);
     __global int *row = nlist + (size_t)i * maxn;
     int cnt = 0, own = 0;
+    const int priv = maxn <= NBR_PRIV;
+    int prow[NBR_PRIV];
+    long ptag[NBR_PRIV];
     for (int a = 0; a < nsz; a++)
         for (int b = 0; b < nsy; b++) {
             const int rowbase = (szs[a] * ny + sys[b]) * nx;
@@ -410,13 +434,20 @@ __kernel void nbr_build(const int n, __global const REAL *x, __global const REAL
                 const int s = start[rowbase + xl[e]], t = start[rowbase + xh[e] + 1];
                 for (int jj = s; jj < t; jj++) {
                     const int j = sorted ? jj : cellatoms[jj];
-                    if (nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz, xy,
-                                   xz, yz, skin, ntypes, excl_type, nexg, excl_group, mol,
-                                   typecut))
+                    if (!nbr_accept(i, xi, radi, ti, mi, j, x, radius, type, mask, Lx, Ly, Lz,
+                                    xy, xz, yz, skin, ntypes, excl_type, nexg, excl_group, mol,
+                                    typecut))
+                        continue;
+                    if (priv)
+                        nbr_row_insert_priv(prow, ptag, &cnt, &own, maxn, tag[j], j, tagi);
+                    else
                         nbr_row_insert(row, &cnt, &own, maxn, tag, j, tagi);
                 }
             }
         }
+    if (priv)
+        for (int k = 0; k < cnt && k < maxn; k++)
+            row[k] = prow[k];
     ncount[i] = cnt < maxn ? cnt : maxn;
     nown[i] = own;
     if (cnt > maxn) /* only an overflow is read; an atomic per atom bounces a cache line */
