@@ -871,9 +871,7 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
 }
 
 /* Cells per dimension of a grid of cells >= cut over the box, coarsened
- * (x 1.25) until there are at most 8 per atom (natoms) + 2^18 (3 MB of
- * cell arrays): a small sparse scene keeps cells of the cut-off, where its
- * clusters (agglomerates) would put many atoms into a coarser cell. */
+ * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
 static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
 {
     double f[3];
@@ -890,7 +888,7 @@ static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
             nc[q] = m;
             total *= m;
         }
-        if (total <= 8L * natoms + (1L << 18) || total <= 1)
+        if (total <= 8L * natoms + 4096 || total <= 1)
             return total;
         cut *= 1.25;
     }
