@@ -8,12 +8,11 @@
 /* sin and cos of x in double, for |x| < 2^19 pi/2 (the flow's arguments are
  * a few radians; else the built-in sincos): within an ulp of glibc's on 10^7
  * samples of [-14, 14] (near a zero, 1e-20 absolute: the end of pi/2's two
- * parts). Why: PoCL's double
- * sincos is a general routine (a fifth of the agglomeration deck's time, three
- * calls per particle and step); this is the classical one, x reduced by
- * multiples n of pi/2 in two parts (n pi/2's leading 33 bits exact), then
- * the minimax polynomials of sin and cos on [-pi/4, pi/4] (Sun's fdlibm
- * coefficients). */
+ * parts). Why: PoCL's double sincos is a general routine (a fifth of the
+ * agglomeration deck's time, three calls per particle and step); this is the
+ * classical one, x reduced by multiples n of pi/2 in two parts (n pi/2's
+ * leading 33 bits exact), then the minimax polynomials of sin and cos on
+ * [-pi/4, pi/4] (Sun's fdlibm coefficients). */
 static inline double flow_sincos(const double x, double *c)
 {
     if (!(fabs(x) < 823549.6)) /* 2^19 pi/2 */
