@@ -737,30 +737,33 @@ struct in {
     size_t n, off;
 };
 
+/* len bytes into v (left as they are past the end; the offset still
+ * advances, so the caller sees the overrun in r->off), as out_put writes */
+static void in_get(struct in *r, void *v, size_t len)
+{
+    if (r->off + len <= r->n)
+        memcpy(v, r->p + r->off, len);
+    r->off += len;
+}
+
 static int in_i32(struct in *r)
 {
     int32_t x = 0;
-    if (r->off + 4 <= r->n)
-        memcpy(&x, r->p + r->off, 4);
-    r->off += 4;
+    in_get(r, &x, 4);
     return x;
 }
 
 static double in_f64(struct in *r)
 {
     double x = 0;
-    if (r->off + 8 <= r->n)
-        memcpy(&x, r->p + r->off, 8);
-    r->off += 8;
+    in_get(r, &x, 8);
     return x;
 }
 
 static int64_t in_i64(struct in *r)
 {
     int64_t x = 0;
-    if (r->off + 8 <= r->n)
-        memcpy(&x, r->p + r->off, 8);
-    r->off += 8;
+    in_get(r, &x, 8);
     return x;
 }
 

@@ -59,6 +59,7 @@ GRAVEL = os.path.join(ROOT, "bin", "gravel")
 GRAVEL_MPI = os.path.join(ROOT, "bin", "gravel-mpi")
 sys.path.insert(0, os.path.dirname(__file__))
 from physics_lammps import read_dump  # noqa: E402
+from lammps_granular_mdr import thermo_rows  # noqa: E402
 
 
 def report(name, ok, note=""):
@@ -71,20 +72,6 @@ def report(name, ok, note=""):
 def run(deck, cwd=None, timeout=600):
     return subprocess.run([GRAVEL, "-log", "none"], input=deck, capture_output=True, text=True,
                           timeout=timeout, cwd=cwd)
-
-
-def thermo_rows(out, ncol):
-    rows, on = {}, False
-    for line in out.splitlines():
-        w = line.split()
-        if w[:1] == ["Step"]:
-            on = True
-            continue
-        if on and w and w[0].isdigit() and len(w) == ncol:
-            rows[int(w[0])] = [float(v) for v in w[1:]]
-        else:
-            on = False
-    return rows
 
 
 MAT = "mdr 1e9 0.3 50e6 0 0.5 0.2 damping mdr 1 tangential linear_history 1.4e8 0 0.5"
