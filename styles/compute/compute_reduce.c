@@ -125,9 +125,11 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
                 r->n++;
                 continue;
             }
-            if (strncmp(s, "f_", 2) == 0) { /* a fix's per-atom output (checked at init) */
+            if (strncmp(s, "f_", 2) == 0) { /* a fix's per-atom output: as LAMMPS, the fix
+                                               * must exist now; init checks again */
                 if (strlen(s) >= sizeof in->cid)
                     gr_error(g, "compute reduce: fix reference '%.64s' is too long", s);
+                fix_peratom_check(g, s, "compute reduce");
                 in->fix = 1;
                 snprintf(in->cid, sizeof in->cid, "%s", s);
                 r->n++;

@@ -235,7 +235,9 @@ TEST(errors)
     FX_CHECK_ERROR("compute 1 all reduce sum vw\n", "unknown input 'vw'", 1);
     FX_CHECK_ERROR("compute 1 all reduce sum v_a\nprint $(c_1)\n",
                    "compute reduce: variable 'a' is not defined", 2);
-    FX_CHECK_ERROR("compute 1 all reduce sum f_a\n", "fix inputs", 1);
+    FX_CHECK_ERROR("compute 1 all reduce sum f_a\n", "no fix with ID 'a' for f_a", 1);
+    FX_CHECK_ERROR("fix 1 all nve\ncompute 1 all reduce sum f_1\n",
+                   "fix 1 (nve) does not calculate per-atom values", 2);
     FX_CHECK_ERROR("compute 1 all reduce sum c_1\n", "cannot reduce itself", 1);
     FX_CHECK_ERROR("compute 1 all property/atom\n", "at least one attribute", 1);
     FX_CHECK_ERROR("compute 1 all property/atom x q\n", "unknown attribute 'q'", 1);
