@@ -9,8 +9,9 @@
  * TCOL_OF(EVAL) names it for an evaluator EVAL (a macro such as PAIR_EVAL is
  * expanded first).
  *
- * Records (widths and offsets ACC_* of kernels/wall_layout.h), written only
- * by the work-item that owns them (no atomics):
+ * Records (widths and offsets ACC_* of kernels/wall_layout.h), float in both
+ * precisions (a diagnostic: 4 bytes a value), written only by the work-item
+ * that owns them (no atomics):
  *   pair contact c   acc[2c] = largest dt / t_col seen, acc[2c + 1] = the
  *                    squared normal speed then; astep[c] = step (since the run's
  *                    first) it was seen
@@ -27,6 +28,10 @@
 /* The laws' collision-time formulas (tcol_linear, tcol_hertz, ...) are in
  * kernels/collision_time.h, shared with the host. */
 
+/* A record's upper bound of the speed, rounded up to float: the contact that
+ * set it does not beat it again at the same speed. */
+#define ACC_UP(x) convert_float_rtp(x)
+
 /* The notes are taken by the contact body (kernels/contact.cl); TCOL is the
  * law's collision time. Note a pair contact: the record keeps the fastest
  * impact; dt / t_col grows with vn for a given contact, so the law is
@@ -35,11 +40,11 @@
     do {                                                                                       \
         const REAL dv_ = (k)->vdel;                                                            \
         const REAL vn2_ = dv_ * dv_ / (k)->rsq;                                                \
-        if (vn2_ > (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2]) {                                   \
+        if (vn2_ > (REAL)(acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2]) {                             \
             const REAL tc_ = TCOL(k, p, sqrt(vn2_));                                           \
             if (tc_ > (REAL)0) {                                                               \
-                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_Q] = (k)->dt / tc_;                          \
-                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2] = vn2_;                                 \
+                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_Q] = (float)((k)->dt / tc_);                 \
+                (acc)[ACC_PAIR_W * (c) + ACC_PAIR_VN2] = ACC_UP(vn2_);                         \
                 (astep)[c] = step;                                                             \
             }                                                                                  \
         }                                                                                      \
@@ -53,22 +58,24 @@
  * and the record is the one the full test would keep. */
 #define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
-        __global REAL *rec_ = (acc) + ACC_WALL_W * (i);                                        \
+        __global float *rec_ = (acc) + ACC_WALL_W * (i);                                       \
         const REAL r_ = sqrt((k)->rsq);                                                        \
         const REAL vn_ = fabs((k)->vdel) / r_;                                                 \
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
-        if (ov_ > rec_[ACC_WALL_OV])                                                           \
-            rec_[ACC_WALL_OV] = ov_;                                                           \
-        const int seen_ = rec_[ACC_WALL_CODE] == (REAL)(code) && vn_ <= rec_[ACC_WALL_VN] &&   \
-                          rec_[ACC_WALL_REFF] == (k)->reff && rec_[ACC_WALL_MEFF] == (k)->meff;\
+        if (ov_ > (REAL)rec_[ACC_WALL_OV])                                                     \
+            rec_[ACC_WALL_OV] = ACC_UP(ov_);                                                   \
+        const int seen_ = rec_[ACC_WALL_CODE] == (float)(code) &&                              \
+                          vn_ <= (REAL)rec_[ACC_WALL_VN] &&                                    \
+                          rec_[ACC_WALL_REFF] == (float)(k)->reff &&                           \
+                          rec_[ACC_WALL_MEFF] == (float)(k)->meff;                             \
         if (vn_ > (REAL)0 && !seen_) {                                                         \
             const REAL tc_ = TCOL(k, p, vn_);                                                  \
-            if (tc_ > (REAL)0 && (k)->dt / tc_ > rec_[ACC_WALL_Q]) {                           \
-                rec_[ACC_WALL_Q] = (k)->dt / tc_;                                              \
-                rec_[ACC_WALL_VN] = vn_;                                                       \
-                rec_[ACC_WALL_CODE] = (REAL)(code);                                            \
-                rec_[ACC_WALL_REFF] = (k)->reff;                                               \
-                rec_[ACC_WALL_MEFF] = (k)->meff;                                               \
+            if (tc_ > (REAL)0 && (k)->dt / tc_ > (REAL)rec_[ACC_WALL_Q]) {                     \
+                rec_[ACC_WALL_Q] = (float)((k)->dt / tc_);                                     \
+                rec_[ACC_WALL_VN] = ACC_UP(vn_);                                               \
+                rec_[ACC_WALL_CODE] = (float)(code);                                           \
+                rec_[ACC_WALL_REFF] = (float)(k)->reff;                                        \
+                rec_[ACC_WALL_MEFF] = (float)(k)->meff;                                        \
                 (astep)[i] = step;                                                             \
             }                                                                                  \
         }                                                                                      \
@@ -79,23 +86,23 @@
  * index on ties. out[2k], out[2k + 1]: the two maxima; idx[2k], idx[2k + 1]
  * their indices (-1: none above 0). */
 __kernel void acc_reduce(const int n, const int chunk, const int stride, const int ovoff,
-                         __global const REAL *acc, __global REAL *out, __global int *idx)
+                         __global const float *acc, __global float *out, __global int *idx)
 {
     const int k = get_global_id(0);
     const int i0 = k * chunk;
     if (k > 0 && i0 >= n)
         return;
     const int i1 = min(i0 + chunk, n);
-    REAL bq = 0, bo = 0;
+    float bq = 0, bo = 0;
     int iq = -1, io = -1;
     for (int i = i0; i < i1; i++) {
-        const REAL q = acc[(size_t)i * stride];
+        const float q = acc[(size_t)i * stride];
         if (q > bq) {
             bq = q;
             iq = i;
         }
         if (ovoff >= 0) {
-            const REAL o = acc[(size_t)i * stride + ovoff];
+            const float o = acc[(size_t)i * stride + ovoff];
             if (o > bo) {
                 bo = o;
                 io = i;

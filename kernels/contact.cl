@@ -221,7 +221,7 @@ struct contact_atoms {
     __global const REAL *v, *omega, *rmass;
     REAL dt;
     int shearupdate;
-    __global REAL *acc;             /* accuracy records (kernels/accuracy.cl) */
+    __global float *acc;            /* accuracy records (kernels/accuracy.cl) */
     __global int *astep;
     int step;
 #ifdef HAS_HEAT
@@ -233,7 +233,7 @@ struct contact_atoms {
 static inline struct contact_atoms contact_atoms_of(__global const REAL *v,
                                                    __global const REAL *omega,
                                                    __global const REAL *rmass, const REAL dt,
-                                                   const int shearupdate, __global REAL *acc,
+                                                   const int shearupdate, __global float *acc,
                                                    __global int *astep, const int step)
 {
     struct contact_atoms a;

@@ -22,6 +22,8 @@
  *   MI CMI  __global int * / __global const int * ; host cl_mem
  *   CMU     __global const uint * ; host cl_mem
  *   MUC     __global uchar * ; host cl_mem (one byte per item)
+ *   MF      __global float * ; host cl_mem (float in both precisions:
+ *           the accuracy records)
  *   CML     __global const long * ; host cl_mem (the atoms' tags)
  *   POS_LO  the low parts of the positions in single precision
  *           (POS_LO_PARAM of kernels/common.cl: absent in double); no
@@ -43,7 +45,7 @@
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)          \
     Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes)               \
     Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, rec)             \
-    Y(M, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq)         \
+    Y(MF, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq)         \
     Y(MUC, quiet) Y(POS_LO, xlo)
 
 /* pair_gather: one work-item per particle, then the fused post_force,
@@ -92,7 +94,7 @@
 #define KARGS_wall_atoms(X, Y)                                                                 \
     X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
     Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
-    Y(M, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
+    Y(MF, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
     Y(R, twall) Y(M, contacts) Y(I, want_contacts)
 
 /* the wall's law: one packed parameter set (by_type 0) or the pair style's
@@ -160,6 +162,7 @@
 #define KA_DECL_CMI(n, X, Y) __global const int *n
 #define KA_DECL_CMU(n, X, Y) __global const uint *n
 #define KA_DECL_MUC(n, X, Y) __global uchar *n
+#define KA_DECL_MF(n, X, Y) __global float *n
 #define KA_DECL_CML(n, X, Y) __global const long *n
 #define KA_DECL_POS_LO(n, X, Y) POS_LO_PARAM
 #define KA_DECL_PART(n, X, Y) KARGS_##n(X, Y)
@@ -184,6 +187,7 @@
 #define KA_ARG_CMI(n, X, Y) n
 #define KA_ARG_CMU(n, X, Y) n
 #define KA_ARG_MUC(n, X, Y) n
+#define KA_ARG_MF(n, X, Y) n
 #define KA_ARG_CML(n, X, Y) n
 #define KA_ARG_POS_LO(n, X, Y) POS_LO_ARG
 #define KA_ARG_PART(n, X, Y) KARGS_##n(X, Y)
@@ -201,6 +205,7 @@
 #define KA_SEP_CMI ,
 #define KA_SEP_CMU ,
 #define KA_SEP_MUC ,
+#define KA_SEP_MF ,
 #define KA_SEP_CML ,
 #define KA_SEP_POS_LO /* POS_LO_PARAM brings its own comma */
 #define KA_SEP_PART /* the part's first argument brings it */

@@ -151,7 +151,7 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
 #define G_S1(l) shear[3 * (size_t)cc[l]]
 #define G_S2(l) shear[3 * (size_t)cc[l] + 1]
 #define G_S3(l) shear[3 * (size_t)cc[l] + 2]
-#define G_REC(l) acc[ACC_PAIR_W * cc[l] + ACC_PAIR_VN2]
+#define G_REC(l) ((REAL)acc[ACC_PAIR_W * cc[l] + ACC_PAIR_VN2])
 #define G_KN(l) pp[l][GRAN_KN]
 #define G_KT(l) pp[l][GRAN_KT]
 #define G_GN(l) pp[l][GRAN_GAMMAN]
@@ -259,8 +259,8 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
             kc.reff = LANE(reffw, l);
             const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(LANE(vn2, l)));
             if (tc > (REAL)0) {
-                acc[ACC_PAIR_W * c + ACC_PAIR_Q] = dt / tc;
-                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = LANE(vn2, l);
+                acc[ACC_PAIR_W * c + ACC_PAIR_Q] = (float)(dt / tc);
+                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = ACC_UP(LANE(vn2, l));
                 astep[c] = step;
             }
         }

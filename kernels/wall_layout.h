@@ -74,10 +74,10 @@ enum { WALL_CONTACT_W = 8 };
  * distance r, del (3) and wall id */
 enum { RG_PROBE_C = 5, RG_PROBE_W = 1 + RG_PROBE_C * RG_MAXC };
 
-/* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c): ACC_PAIR_W REAL
- * per pair contact (largest dt / t_col, the squared normal speed then) and
- * ACC_WALL_W REAL per particle for its wall contacts (largest dt / t_col,
- * normal speed then, largest overlap / radius, the wall's code, and that
+/* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c), float in
+ * both precisions: ACC_PAIR_W per pair contact (largest dt / t_col, the
+ * squared normal speed then) and ACC_WALL_W per particle for its wall
+ * contacts (largest dt / t_col, normal speed then, largest overlap / radius, the wall's code, and that
  * contact's R* and m*). */
 enum acc_layout { ACC_PAIR_Q = 0, ACC_PAIR_VN2 = 1, ACC_PAIR_W = 2,
                   ACC_WALL_Q = 0, ACC_WALL_VN = 1, ACC_WALL_OV = 2, ACC_WALL_CODE = 3,

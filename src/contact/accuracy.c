@@ -13,14 +13,15 @@
 #include "neighbor.h"
 #include "wall_layout.h"
 
-/* record widths and offsets: kernels/wall_layout.h (ACC_*) */
-enum { NCHUNK = 256, PAIR_REC = ACC_PAIR_W, WALL_REC = ACC_WALL_W };
+/* record widths and offsets: kernels/wall_layout.h (ACC_*); the records are
+ * float in both precisions (a diagnostic: 12 bytes per pair contact) */
+enum { NCHUNK = 256, PAIR_REC = ACC_PAIR_W, WALL_REC = ACC_WALL_W, FSZ = sizeof(cl_float) };
 
 struct acc {
-    cl_mem prec, pstep;     /* pair contacts: REAL[2], int */
-    cl_mem wrec, wstep;     /* particles (walls): REAL[ACC_WALL_W], int */
-    cl_mem out, idx;        /* reduction: REAL[2 NCHUNK], int[2 NCHUNK] */
-    size_t pcap, wcap, rsz;
+    cl_mem prec, pstep;     /* pair contacts: float[2], int */
+    cl_mem wrec, wstep;     /* particles (walls): float[ACC_WALL_W], int */
+    cl_mem out, idx;        /* reduction: float[2 NCHUNK], int[2 NCHUNK] */
+    size_t pcap, wcap;
     cl_kernel k_reduce;
     int force, warned;
     struct acc_worst worst;
@@ -41,21 +42,20 @@ static void rel(cl_mem *m)
     *m = NULL;
 }
 
-/* Records for at least `need` items of `nrec` REAL, zeroed (contents not
+/* Records for at least `need` items of `nrec` floats, zeroed (contents not
  * kept); `slack`: room to grow by 1/8 (contacts; particle records follow
  * the engine's capacity exactly). */
 static void grow(struct gravel *g, cl_mem *rec, cl_mem *step, size_t *cap, size_t need,
                  int slack, int nrec, const char *what)
 {
-    struct engine *e = g->eng;
     if (*rec && need <= *cap)
         return;
     rel(rec);
     rel(step);
     *cap = slack ? need + need / 8 + 64 : need;
-    *rec = eng_alloc(g, *cap * (size_t)nrec * e->rsz, what);
+    *rec = eng_alloc(g, *cap * (size_t)nrec * FSZ, what);
     *step = eng_alloc(g, *cap * sizeof(cl_int), what);
-    eng_fill_zero(g, *rec, *cap * (size_t)nrec * e->rsz);
+    eng_fill_zero(g, *rec, *cap * (size_t)nrec * FSZ);
     eng_fill_zero(g, *step, *cap * sizeof(cl_int));
 }
 
@@ -68,21 +68,13 @@ void acc_reserve(struct gravel *g)
 {
     struct acc *s = get(g);
     struct engine *e = g->eng;
-    if (s->rsz != e->rsz) { /* precision change: every record goes */
-        rel(&s->prec);
-        rel(&s->pstep);
-        rel(&s->wrec);
-        rel(&s->wstep);
-        rel(&s->out);
-        s->rsz = e->rsz;
-    }
     grow(g, &s->prec, &s->pstep, &s->pcap, ncontact(g), 1, PAIR_REC,
          "contact accuracy records");
     if (s->wrec) /* the particle records exist once a wall kernel asked for them */
         grow(g, &s->wrec, &s->wstep, &s->wcap, (size_t)e->cap, 0, WALL_REC,
              "particle accuracy records");
     if (!s->out) {
-        s->out = eng_alloc(g, 2 * NCHUNK * e->rsz, "accuracy reduction");
+        s->out = eng_alloc(g, 2 * NCHUNK * FSZ, "accuracy reduction");
         if (!s->idx)
             s->idx = eng_alloc(g, 2 * NCHUNK * sizeof(cl_int), "accuracy reduction");
     }
@@ -93,7 +85,7 @@ void acc_begin(struct gravel *g, int force)
     struct acc *s = get(g);
     s->k_reduce = eng_kernel(g, "acc_reduce");
     acc_reserve(g);
-    eng_fill_zero(g, s->prec, s->pcap * PAIR_REC * g->eng->rsz);
+    eng_fill_zero(g, s->prec, s->pcap * PAIR_REC * FSZ);
     eng_fill_zero(g, s->pstep, s->pcap * sizeof(cl_int));
     rel(&s->wrec); /* made again, zeroed, by the run's first wall kernel (acc_wall_rec) */
     rel(&s->wstep);
@@ -103,14 +95,9 @@ void acc_begin(struct gravel *g, int force)
     memset(&s->worst, 0, sizeof s->worst);
 }
 
-static double read_real(struct gravel *g, cl_mem m, size_t i)
+static double read_float(struct gravel *g, cl_mem m, size_t i)
 {
-    if (g->eng->single) {
-        float v;
-        eng_read(g, m, i * sizeof v, sizeof v, &v);
-        return v;
-    }
-    double v;
+    cl_float v;
     eng_read(g, m, i * sizeof v, sizeof v, &v);
     return v;
 }
@@ -148,9 +135,9 @@ static int reduce(struct gravel *g, cl_mem rec, int n, int stride, int ovoff, do
     eng_arg_mem(g, k, 5, s->out);
     eng_arg_mem(g, k, 6, s->idx);
     eng_launch(g, k, (size_t)nch);
-    double v[2 * NCHUNK];
+    cl_float v[2 * NCHUNK];
     cl_int ix[2 * NCHUNK];
-    eng_read_reals(g, s->out, 2 * (size_t)nch, v);
+    eng_read(g, s->out, 0, 2 * (size_t)nch * sizeof *v, v);
     eng_read(g, s->idx, 0, 2 * (size_t)nch * sizeof(cl_int), ix);
     int best = -1;
     for (int c = 0; c < nch; c++) { /* chunks in index order: the first max wins */
@@ -180,7 +167,7 @@ void acc_collect(struct gravel *g)
     if (c >= 0 && q > w->q) {
         const struct nbr_list *l = nbr_list(g);
         w->q = q;
-        w->vn = sqrt(read_real(g, s->prec, (size_t)PAIR_REC * c + ACC_PAIR_VN2)); /* stored squared */
+        w->vn = sqrt(read_float(g, s->prec, (size_t)PAIR_REC * c + ACC_PAIR_VN2)); /* stored squared */
         w->step = g->firststep + read_int(g, s->pstep, (size_t)c);
         w->tag_i = read_tag(g, read_int(g, l->ci, (size_t)c));
         w->tag_j = read_tag(g, read_int(g, l->cj, (size_t)c));
@@ -191,17 +178,17 @@ void acc_collect(struct gravel *g)
     w->wall_ov = fmax(w->wall_ov, ov);
     if (i >= 0 && q > w->q) {
         w->q = q;
-        w->vn = read_real(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_VN);
-        int code = (int)read_real(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_CODE);
+        w->vn = read_float(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_VN);
+        int code = (int)read_float(g, s->wrec, (size_t)WALL_REC * i + ACC_WALL_CODE);
         w->step = g->firststep + read_int(g, s->wstep, (size_t)i);
         w->tag_i = read_tag(g, i);
         w->tag_j = 0;
         snprintf(w->wall, sizeof w->wall, "%s",
                  code >= 1 && code <= g->styles.nfix ? g->styles.fix[code - 1]->id : "?");
     }
-    eng_fill_zero(g, s->prec, (size_t)nc * PAIR_REC * e->rsz);
+    eng_fill_zero(g, s->prec, (size_t)nc * PAIR_REC * FSZ);
     if (n > 0)
-        eng_fill_zero(g, s->wrec, (size_t)n * WALL_REC * e->rsz);
+        eng_fill_zero(g, s->wrec, (size_t)n * WALL_REC * FSZ);
     if (!(w->q > 0))
         return;
     double steps = 1.0 / w->q;
@@ -259,15 +246,19 @@ int acc_wall_code(const struct gravel *g, const struct fix *f)
     return code;
 }
 
-size_t acc_contact_bytes(struct gravel *g) { return PAIR_REC * g->eng->rsz + sizeof(cl_int); }
+size_t acc_contact_bytes(struct gravel *g)
+{
+    (void)g;
+    return PAIR_REC * FSZ + sizeof(cl_int);
+}
 
 size_t acc_held_bytes(struct gravel *g)
 {
     const struct acc *s = g->eng->acc;
     if (!s)
         return 0;
-    return (s->prec ? s->pcap * (PAIR_REC * s->rsz + sizeof(cl_int)) : 0) +
-           (s->wrec ? s->wcap * (WALL_REC * s->rsz + sizeof(cl_int)) : 0);
+    return (s->prec ? s->pcap * (PAIR_REC * FSZ + sizeof(cl_int)) : 0) +
+           (s->wrec ? s->wcap * (WALL_REC * FSZ + sizeof(cl_int)) : 0);
 }
 
 void acc_free(struct gravel *g)

@@ -132,15 +132,20 @@ struct engine {
     struct nbr *nbr;
     struct acc *acc;            /* collision-resolution records of the run */
     /* kept across runs: validity of the device neighbor list / history */
-    /* the run start as diagnose.c reads it, kept only while the per-atom set
-     * is the host arrays (dev_atoms.shared), which the run then changes:
-     * positions and tags; the largest finite velocity component; the atoms
-     * that moved more than their radius per step (or were non-finite), with
-     * their velocities */
+    /* what diagnose.c reads of the run start (diag_keep_start), made at the
+     * upload, as the run then changes the host arrays: the atoms whose
+     * nearest neighbour sat on them or overlapped them by more than half the
+     * smaller radius; the largest finite velocity component; the atoms that
+     * moved more than their radius per step (or were non-finite), with their
+     * velocities. Only these: no copy of the positions (memory). */
     struct start_copy {
-        int n, nfast, fast_cap;
-        double *x;
-        int64_t *tag;
+        int valid;
+        int nnear, near_cap, nfast, fast_cap;
+        struct start_near {
+            int64_t tag, other; /* the atom and its nearest neighbour */
+            double x[3];        /* the atom's position */
+            double dist, ri, rj; /* centre distance, the two radii */
+        } *near;
         double vmax;
         int64_t *fast_tag;
         double *fast_v;

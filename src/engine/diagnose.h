@@ -2,10 +2,11 @@
  * that left the box or became non-finite, its neighbour and its speed.
  *
  * Pure functions over the host state; neighbor.c reads the device values of
- * the particle and calls them. The state at the start of the current run
- * (g->firststep) is the host copy of the atoms, or, when the run's device
- * buffers are the host arrays themselves (engine.c), the engine's copy of
- * what these functions read of it (struct start_copy). */
+ * the particle and calls them. What they need of the state at the start of
+ * the current run (g->firststep) is kept by diag_keep_start at the upload
+ * (struct start_copy of device.h): the atoms whose nearest neighbour sat on
+ * them or overlapped them deeply, and the fast ones; no copy of the
+ * positions. */
 #ifndef GR_DIAGNOSE_H
 #define GR_DIAGNOSE_H
 
@@ -37,5 +38,13 @@ int diag_fast(const struct gravel *g, const double v[3], double radius);
  * per collision) the time step is not blamed: the text says so and points
  * at the configuration instead. */
 void diag_time_step(const struct gravel *g, char *out, size_t len);
+
+/* At the run's upload, before the run changes the host arrays: what
+ * diag_nonfinite and diag_time_step read of the run start, into
+ * g->eng->start (a host scan, O(n) for particles of similar size);
+ * diag_free_start releases it. */
+struct start_copy;
+void diag_keep_start(struct gravel *g);
+void diag_free_start(struct start_copy *c);
 
 #endif

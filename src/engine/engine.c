@@ -262,48 +262,6 @@ static uint64_t tag_checksum(const struct atoms *a)
     return h ? h : 1;
 }
 
-static void free_start(struct start_copy *c)
-{
-    free(c->x);
-    free(c->tag);
-    free(c->fast_tag);
-    free(c->fast_v);
-    memset(c, 0, sizeof *c);
-}
-
-/* The run start's copy for diagnose.c when the run writes the host arrays
- * (what diag_nonfinite and diag_time_step read, no more). */
-static void keep_start(struct gravel *g)
-{
-    struct start_copy *c = &g->eng->start;
-    const struct atoms *at = &g->atoms;
-    free_start(c);
-    if (!g->eng->a.shared || at->n == 0)
-        return;
-    size_t n = (size_t)at->n;
-    c->x = gr_malloc(g, 3 * n * sizeof *c->x);
-    c->tag = gr_malloc(g, n * sizeof *c->tag);
-    memcpy(c->x, at->x, 3 * n * sizeof *c->x);
-    memcpy(c->tag, at->tag, n * sizeof *c->tag);
-    c->n = at->n;
-    for (size_t i = 0; i < n; i++) {
-        const double *v = at->v + 3 * i;
-        for (int q = 0; q < 3; q++)
-            if (isfinite(v[q]))
-                c->vmax = fmax(c->vmax, fabs(v[q]));
-        if (diag_fast(g, v, at->radius[i])) {
-            if (c->nfast == c->fast_cap) {
-                c->fast_cap = c->fast_cap ? 2 * c->fast_cap : 16;
-                c->fast_tag = gr_realloc(g, c->fast_tag, (size_t)c->fast_cap * sizeof *c->fast_tag);
-                c->fast_v = gr_realloc(g, c->fast_v, 3 * (size_t)c->fast_cap * sizeof *c->fast_v);
-            }
-            c->fast_tag[c->nfast] = at->tag[i];
-            memcpy(c->fast_v + 3 * c->nfast, v, 3 * sizeof *v);
-            c->nfast++;
-        }
-    }
-}
-
 void eng_upload(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -316,7 +274,7 @@ void eng_upload(struct gravel *g)
         nbr_invalidate(g);
     e->a.n = n;
     put_atoms(g, 0, n);
-    keep_start(g);
+    diag_keep_start(g);
     /* per-atom state of fixes: keep while the atoms are the same, else zero */
     eng_fix_state(g, keep);
     e->active = 1;
@@ -668,7 +626,7 @@ void engine_destroy(struct gravel *g)
     free(e->kern);
     free(e->kern_wg);
     release_set(&e->a);
-    free_start(&e->start);
+    diag_free_start(&e->start);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->peratom)

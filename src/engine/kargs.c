@@ -80,6 +80,7 @@ static int bind_POS_LO(struct gravel *g, cl_kernel k, int i)
 #define KA_BIND_CMI(n) i = bind_mem(g, k, i, a->n, #n);
 #define KA_BIND_CMU(n) i = bind_mem(g, k, i, a->n, #n);
 #define KA_BIND_MUC(n) i = bind_mem(g, k, i, a->n, #n);
+#define KA_BIND_MF(n) i = bind_mem(g, k, i, a->n, #n);
 #define KA_BIND_CML(n) i = bind_mem(g, k, i, a->n, #n);
 #define KA_BIND_POS_LO(n) i = bind_POS_LO(g, k, i);
 #define KA_BIND_PART(n) i = ka_bind_##n(g, k, i, &a->n);

@@ -28,6 +28,7 @@
 #define KA_FIELD_CMI(n) cl_mem n;
 #define KA_FIELD_CMU(n) cl_mem n;
 #define KA_FIELD_MUC(n) cl_mem n;
+#define KA_FIELD_MF(n) cl_mem n;
 #define KA_FIELD_CML(n) cl_mem n;
 #define KA_FIELD_POS_LO(n) /* bound from the engine */
 #define KA_FIELD_PART(n) struct n##_args n;

@@ -103,13 +103,6 @@ static size_t host_atom_bytes(const struct gravel *g)
     return b;
 }
 
-/* Host bytes per atom of the run start's copy (diagnose.h: positions and
- * tags), made at the upload when the device buffers are the host arrays. */
-static double start_copy_bytes(struct gravel *g)
-{
-    return eng_shares_host(g) ? 3 * sizeof(double) + sizeof(int64_t) : 0;
-}
-
 /* n atom slots and nc contacts (z = nc per particle), `how` the contacts'
  * origin: stop unless they fit every limit. */
 static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
@@ -133,13 +126,12 @@ static void check(struct gravel *g, int n, size_t nc, double z, const char *how)
                      ? "GRAVEL_DEVICE_MEMORY" : "CL_DEVICE_GLOBAL_MEM_SIZE", other);
     }
     size_t limit, left = ocl_address_left(&limit);
-    double start = start_copy_bytes(g);
-    if (!why[0] && left != SIZE_MAX && need + start * n > (double)left + (double)held - MARGIN) {
+    if (!why[0] && left != SIZE_MAX && need > (double)left + (double)held - MARGIN) {
         avail = (double)left + (double)held - MARGIN;
         /* the host arrays grow with the atoms too (their capacity by doubling: up to
-         * twice the atoms' bytes), and the run start's copy (positions, tags) is to come */
+         * twice the atoms' bytes) */
         double host = (double)host_atom_bytes(g);
-        fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host + start);
+        fit = (avail + host * (double)g->atoms.cap) / (per + 2 * host);
         snprintf(why, sizeof why,
                  "the process may allocate only %zu more bytes under its address-space limit "
                  "of %zu bytes (ulimit -v)", left, limit);

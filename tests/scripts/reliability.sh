@@ -159,7 +159,7 @@ check read_dump_nan_named '[ $rc -eq 1 ] && grep -q "^ERROR: read_dump: dump fil
 deck="$root/inputs/bench/dense.in"
 (ulimit -v 900000; "$bin" -in "$deck" -var L 100 -var nsteps 10 -log none) > out 2>&1; rc=$?
 fit=$(sed -n 's/.*; about \([0-9]*\) particles would fit.*/\1/p' out)
-check memory_limit_clean_stop '[ $rc -eq 1 ] && grep -q "ERROR: run: 1000000 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 2.8[0-9] contacts per particle (estimated) of 105 bytes each), more than fit: the process may allocate only [0-9]* more bytes under its address-space limit of 921600000 bytes (ulimit -v); about [0-9]* particles would fit (.*dense.in:38)$" out && [ "${fit:-0}" -gt 100000 ] && [ "$fit" -lt 1000000 ] && ! grep -q "Aborted\|bad_alloc\|Assertion\|Loop time" out'
+check memory_limit_clean_stop '[ $rc -eq 1 ] && grep -q "ERROR: run: 1000000 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 2.8[0-9] contacts per particle (estimated) of 97 bytes each), more than fit: the process may allocate only [0-9]* more bytes under its address-space limit of 921600000 bytes (ulimit -v); about [0-9]* particles would fit (.*dense.in:38)$" out && [ "${fit:-0}" -gt 100000 ] && [ "$fit" -lt 1000000 ] && ! grep -q "Aborted\|bad_alloc\|Assertion\|Loop time" out'
 L=$(awk -v n="${fit:-0}" 'BEGIN { L = int((0.9 * n) ^ (1 / 3)); print L }')
 (ulimit -v 900000; "$bin" -in "$deck" -var L "$L" -var nsteps 10 -log none) > out 2>&1; rc=$?
 check memory_limit_would_fit '[ $rc -eq 0 ] && [ "$L" -gt 40 ] && grep -q "^Loop time of .* for 10 steps with $((L * L * L)) atoms" out'
@@ -168,7 +168,7 @@ check memory_limit_would_fit '[ $rc -eq 0 ] && [ "$L" -gt 40 ] && grep -q "^Loop
 # with the particles that would fit, and 90 % of that number does run under the same cap
 GRAVEL_DEVICE_MEMORY=200000000 "$bin" -in "$deck" -var L 100 -var nsteps 10 -log none > out 2>&1; rc=$?
 fit=$(sed -n 's/.*; about \([0-9]*\) particles would fit.*/\1/p' out)
-check device_memory_refused '[ $rc -eq 1 ] && grep -q "ERROR: run: 1000000 particles need about [0-9]* bytes of device memory (.*(estimated) of 105 bytes each), more than fit: the device has 200000000 bytes of global memory (GRAVEL_DEVICE_MEMORY) and 0 are in use by other buffers; about [0-9]* particles would fit (.*dense.in:38)$" out && [ "${fit:-0}" -gt 100000 ] && ! grep -q "Loop time" out'
+check device_memory_refused '[ $rc -eq 1 ] && grep -q "ERROR: run: 1000000 particles need about [0-9]* bytes of device memory (.*(estimated) of 97 bytes each), more than fit: the device has 200000000 bytes of global memory (GRAVEL_DEVICE_MEMORY) and 0 are in use by other buffers; about [0-9]* particles would fit (.*dense.in:38)$" out && [ "${fit:-0}" -gt 100000 ] && ! grep -q "Loop time" out'
 L=$(awk -v n="${fit:-0}" 'BEGIN { L = int((0.9 * n) ^ (1 / 3)); print L }')
 GRAVEL_DEVICE_MEMORY=200000000 "$bin" -in "$deck" -var L "$L" -var nsteps 10 -log none > out 2>&1; rc=$?
 check device_memory_would_fit '[ $rc -eq 0 ] && [ "$L" -gt 40 ] && grep -q "^Loop time of .* for 10 steps with $((L * L * L)) atoms" out'
@@ -178,7 +178,7 @@ check device_memory_would_fit '[ $rc -eq 0 ] && [ "$L" -gt 40 ] && grep -q "^Loo
 GRAVEL_DEVICE_MEMORY=80000000 "$bin" -in "$deck" -var L 64 -var nsteps 10 -log none > out 2>&1
 need=$(sed -n 's/.*need about \([0-9]*\) bytes.*/\1/p' out)
 GRAVEL_DEVICE_MEMORY=$((${need:-0} + 1000000)) "$bin" -in "$deck" -var L 64 -var nsteps 10 -log none > out 2>&1; rc=$?
-check device_memory_counted '[ $rc -eq 1 ] && grep -q "ERROR: run: 262144 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 3.00 contacts per particle (counted) of 105 bytes each), more than fit: .*; about 2[0-9][0-9][0-9][0-9][0-9] particles would fit (.*dense.in:38)$" out && ! grep -q "Loop time" out'
+check device_memory_counted '[ $rc -eq 1 ] && grep -q "ERROR: run: 262144 particles need about [0-9]* bytes of device memory ([0-9]* bytes per particle for its fields and neighbor data, 3.00 contacts per particle (counted) of 97 bytes each), more than fit: .*; about 2[0-9][0-9][0-9][0-9][0-9] particles would fit (.*dense.in:38)$" out && ! grep -q "Loop time" out'
 GRAVEL_DEVICE_MEMORY=1000 "$bin" -in "$deck" -var L 4 -log none > out 2>&1; rc=$?
 check device_memory_bad_value '[ $rc -eq 1 ] && grep -q "^ERROR: run: GRAVEL_DEVICE_MEMORY must be a number of bytes >= 1048576, got .1000." out'
 

@@ -241,6 +241,92 @@ TEST(nonfinite_stop_names_step_tag_and_cause)
     gr_destroy(g);
 }
 
+/* diag_nonfinite's rule by brute force: the nearest other atom (minimum
+ * image per periodic dimension, lowest index on ties) at the same position
+ * or overlapping by more than half the smaller radius. */
+static int brute_near(const struct gravel *g, int i, int *jout, double *dout)
+{
+    const struct atoms *a = &g->atoms;
+    int jmin = -1;
+    double dmin = INFINITY;
+    for (int j = 0; j < a->n; j++) {
+        if (j == i)
+            continue;
+        double dx[3];
+        for (int q = 0; q < 3; q++) {
+            dx[q] = a->x[3 * j + q] - a->x[3 * i + q];
+            double l = g->dom.hi[q] - g->dom.lo[q];
+            if (g->dom.periodic[q] && l > 0)
+                dx[q] -= l * round(dx[q] / l);
+        }
+        double dd = hypot(hypot(dx[0], dx[1]), dx[2]);
+        if (dd < dmin) {
+            dmin = dd;
+            jmin = j;
+        }
+    }
+    if (jmin < 0)
+        return 0;
+    double ri = a->radius[i], rj = a->radius[jmin], rs = fmin(ri, rj);
+    *jout = jmin;
+    *dout = dmin;
+    return dmin <= 1e-12 * (ri + rj) || (rs > 0 && ri + rj - dmin > 0.5 * rs);
+}
+
+/* A random scene: n atoms in and around the box, radii rlo..rhi, every
+ * seventh atom on or deep inside an earlier one. */
+static void start_scene(struct gravel *g, const char *bnd, int n, double rlo, double rhi,
+                        unsigned seed)
+{
+    double lo[3] = {0, 0, 0}, hi[3] = {10, 6, 4};
+    fx_box(g, lo, hi, bnd, 1);
+    unsigned s = seed;
+    for (int k = 0; k < n; k++) {
+        double x[3];
+        for (int q = 0; q < 3; q++)
+            x[q] = lo[q] - 2 + (hi[q] - lo[q] + 4) * fx_rand(&s); /* some outside */
+        if (k % 7 == 6) {
+            int m = (int)(fx_rand(&s) * k);
+            for (int q = 0; q < 3; q++)
+                x[q] = g->atoms.x[3 * m + q] + (k % 14 == 6 ? 0 : 0.2 * rhi * (fx_rand(&s) - 0.5));
+        }
+        atoms_add(g, 0, 1, x, rlo + (rhi - rlo) * fx_rand(&s), 1);
+    }
+}
+
+TEST(start_scan_matches_brute_force)
+{
+    struct {
+        const char *bnd;
+        int n;
+        double rlo, rhi;
+    } cases[] = {{"ppp", 1500, 0.05, 0.5}, {"ffp", 1500, 0.05, 0.5}, {"pff", 800, 0.2, 0.2},
+                 {"ppp", 600, 0, 0}, {"fff", 3, 0.3, 0.3}};
+    for (size_t t = 0; t < sizeof cases / sizeof *cases; t++) {
+        struct gravel *g = test_engine();
+        start_scene(g, cases[t].bnd, cases[t].n, cases[t].rlo, cases[t].rhi, 17u + (unsigned)t);
+        prepare(g);
+        const struct start_copy *c = &g->eng->start;
+        int k = 0, seen = 0;
+        for (int i = 0; i < g->atoms.n; i++) {
+            int j;
+            double d;
+            if (!brute_near(g, i, &j, &d))
+                continue;
+            seen++;
+            CHECK(k < c->nnear);
+            if (k >= c->nnear)
+                break;
+            CHECK(c->near[k].tag == g->atoms.tag[i] && c->near[k].other == g->atoms.tag[j]);
+            CHECK(c->near[k].dist == d);
+            k++;
+        }
+        CHECK(k == c->nnear);
+        CHECK(seen >= cases[t].n / 14); /* the planted ones at least */
+        gr_destroy(g);
+    }
+}
+
 TEST(program_cache_hit)
 {
     char dir[] = "/tmp/gravel-cache-XXXXXX";
@@ -298,6 +384,7 @@ int main(void)
     RUN(periodic_crossing_image_flags);
     RUN(lost_atoms_error);
     RUN(nonfinite_stop_names_step_tag_and_cause);
+    RUN(start_scan_matches_brute_force);
     RUN(program_cache_hit);
     RUN(build_failure_names_source);
     return 0;
