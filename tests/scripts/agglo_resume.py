@@ -12,7 +12,12 @@ as soon as the second point's first restart file exists, then run again.
 Checks: B's second invocation keeps point 1 and resumes point 2 from a step
 0 < S < 22272; every thermo row of both logs (after average.py merges the
 resumed table) is identical, digit for digit, to A's, and so is the averaged
-table.dat; the resumed histogram goes to a .from<S>.hist file."""
+table.dat; the resumed histogram goes to a .from<S>.hist file.
+
+A new machine (C): B's state at the kill is parked (tools/agglomeration/park.sh,
+as a session whose files do not survive commits it) and a sweep in an empty
+run directory takes both points from there, resumes point 2 at the same step
+and ends with A's rows, digit for digit."""
 import os
 import re
 import signal
@@ -23,6 +28,7 @@ import time
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SWEEP = os.path.join(ROOT, "tools", "agglomeration", "sweep.sh")
+PARK = os.path.join(ROOT, "tools", "agglomeration", "park.sh")
 sys.path.insert(0, os.path.join(ROOT, "tools", "agglomeration"))
 import average  # noqa: E402
 
@@ -37,16 +43,16 @@ def check(name, ok, detail):
     failures += not ok
 
 
-def env(out):
+def env(out, parked):
     e = dict(os.environ)
-    e.update(AGGLO_N="27", AGGLO_TEND="10", AGGLO_NOUT="40", AGGLO_SY="1.5",
+    e.update(AGGLO_PARKED=parked, AGGLO_N="27", AGGLO_TEND="10", AGGLO_NOUT="40", AGGLO_SY="1.5",
              AGGLO_ST="0.1 10.0", AGGLO_CHECKPOINTS="8", AGGLO_OUT=out,
              AGGLO_DOC=os.path.join(out, "doc"), AGGLO_PLOT="0", AGGLO_TAG="resume")
     return e
 
 
-def sweep(out):
-    return subprocess.run(["sh", SWEEP], env=env(out), capture_output=True, text=True,
+def sweep(out, parked):
+    return subprocess.run(["sh", SWEEP], env=env(out, parked), capture_output=True, text=True,
                           timeout=600)
 
 
@@ -58,13 +64,14 @@ def rows(path):
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         a_dir, b_dir = os.path.join(tmp, "A"), os.path.join(tmp, "B")
-        a = sweep(a_dir)
+        c_dir, parked = os.path.join(tmp, "C"), os.path.join(tmp, "parked")
+        a = sweep(a_dir, parked)
         if a.returncode:
             check("uninterrupted_sweep", False, (a.stdout + a.stderr)[-400:])
             return 1
         # B: kill the sweep once the second point has written a checkpoint
         os.makedirs(b_dir)
-        p = subprocess.Popen(["sh", SWEEP], env=env(b_dir), stdout=subprocess.DEVNULL,
+        p = subprocess.Popen(["sh", SWEEP], env=env(b_dir, parked), stdout=subprocess.DEVNULL,
                              stderr=subprocess.DEVNULL, start_new_session=True)
         cp = os.path.join(b_dir, "agglo_Sy1.5_St10.0.restart.a")
         t0 = time.time()
@@ -79,7 +86,13 @@ def main():
         check("interrupted", killed and not done2,
               "sweep killed after point 2's first checkpoint: %s; point 2 finished before the "
               "kill: %s" % (killed, done2))
-        b = sweep(b_dir)
+        pk = subprocess.run(["sh", PARK, b_dir, "resume"], env=env(b_dir, parked),
+                            capture_output=True, text=True)
+        names = sorted(os.listdir(os.path.join(parked, "resume"))) if pk.returncode == 0 else []
+        check("parked", pk.returncode == 0 and "agglo_Sy1.5_St10.0.restart.gz" in names
+              and "agglo_Sy1.5_St0.1.restart.gz" not in names and "settings" in names,
+              "park.sh: %s" % (names or (pk.stdout + pk.stderr)[-300:]))
+        b = sweep(b_dir, parked)
         kept = re.search(r"grid point Sy 1.5 St 0.1: finished earlier, kept", b.stdout)
         m = re.search(r"grid point Sy 1.5 St 10.0 starts at step (\d+)", b.stdout)
         step = int(m.group(1)) if m else -1
@@ -96,6 +109,21 @@ def main():
             check("rows_equal_St" + st, ca and cb and len(ra) == len(rb) and len(ra) > 40
                   and not diff, "%d rows uninterrupted, %d interrupted+resumed, completed %s/%s;"
                   " differing steps %s" % (len(ra), len(rb), ca, cb, diff[:5]))
+        c = sweep(c_dir, parked)
+        mc = re.search(r"grid point Sy 1.5 St 10.0 starts at step (\d+)", c.stdout)
+        seeded = c.stdout.count("from the parked run")
+        check("resumed_from_parked", c.returncode == 0 and seeded == 2 and mc is not None
+              and int(mc.group(1)) == step and "grid point Sy 1.5 St 0.1: finished earlier, kept"
+              in c.stdout, "empty run directory: %d grid points from the parked run, point 2 "
+              "resumed at step %s (B: %d)%s" % (seeded, mc.group(1) if mc else "?", step,
+                "" if c.returncode == 0 else "; " + (c.stdout + c.stderr)[-300:]))
+        for st in ("0.1", "10.0"):
+            name = "agglo_Sy1.5_St%s.log" % st
+            ra, _ = rows(os.path.join(a_dir, name))
+            rc_, cc = rows(os.path.join(c_dir, name)) if os.path.isfile(
+                os.path.join(c_dir, name)) else ([], False)
+            check("parked_rows_equal_St" + st, cc and ra == rc_ and len(ra) > 40,
+                  "%d rows uninterrupted, %d parked+resumed" % (len(ra), len(rc_)))
         ta = open(os.path.join(a_dir, "table.dat")).read()
         tb = open(os.path.join(b_dir, "table.dat")).read()
         check("table_equal", ta == tb and ta.count("\n") == 3,

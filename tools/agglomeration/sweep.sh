@@ -13,6 +13,9 @@
 # resumes each interrupted one from its newer restart file (exact
 # continuation: the same numbers as an uninterrupted run) and starts the rest.
 # Other settings than the run directory's (its file `settings`) start over.
+# Where files do not outlive a session, tools/agglomeration/park.sh keeps the
+# progress in the repository (runs/agglomeration/<tag>/): a run directory
+# that lacks a grid point takes it from there (log, histograms, restart).
 #
 # Environment (all optional):
 #   AGGLO_QUICK=1  shortened sweep: 5 s per grid point (a few minutes in all)
@@ -28,6 +31,7 @@
 #   AGGLO_OUT      run directory (default build/agglomeration/<tag>)
 #   AGGLO_DOC      where the PNGs and the Markdown table go (default doc)
 #   AGGLO_PLOT=0   no plots (no gnuplot needed)
+#   AGGLO_PARKED   where parked sweeps are (default runs/agglomeration; park.sh)
 # Outputs: $AGGLO_DOC/agglomeration_<tag>.png (fig. 6.8), _<tag>_series.png,
 # _<tag>.md (table); the logs, restart files, table.dat and the initial state
 # in the run dir.
@@ -51,6 +55,25 @@ deck=$root/inputs/published/agglomeration/agglomeration.in
 mkdir -p "$out" "$doc"
 cd "$out"
 settings="N $n tend $tend nout $nout seed $seed checkpoints $ncp kcset $kcset deck $(cksum < "$deck")"
+# a parked sweep (tools/agglomeration/park.sh: runs/agglomeration/<tag>/ in the
+# repository, same settings): the grid points this run directory does not hold
+parked=${AGGLO_PARKED:-$root/runs/agglomeration}/$tag
+if [ -f "$parked/settings" ] && [ "$(cat "$parked/settings")" = "$settings" ] &&
+    { [ ! -f settings ] || [ "$(cat settings)" = "$settings" ]; }; then
+    for log in "$parked"/agglo_Sy*_St*.log; do
+        [ -f "$log" ] || continue
+        p=$(basename "$log" .log)
+        [ -f "$p.log" ] && continue
+        echo "grid point ${p#agglo_}: from the parked run in $parked"
+        cp "$log" .
+        for h in "$parked/$p".hist "$parked/$p".from*.hist; do
+            if [ -f "$h" ]; then cp "$h" .; fi
+        done
+        rm -f "$p.restart.b"
+        if [ -f "$parked/$p.restart.gz" ]; then gunzip -c "$parked/$p.restart.gz" > "$p.restart.a"; fi
+    done
+    if [ -f "$parked/binaries.txt" ] && [ ! -f binaries.txt ]; then cp "$parked/binaries.txt" .; fi
+fi
 if [ -f settings ] && [ "$(cat settings)" != "$settings" ]; then
     echo "settings differ from the earlier run in $out: starting over"
     rm -f agglo_Sy*_St*.log agglo_Sy*_St*.hist agglo_Sy*_St*.restart.[ab] agglo_init.* screen.txt
@@ -75,13 +98,16 @@ print(max(f, key=lambda a: os.stat(a).st_mtime_ns) if f else "")' "$p.restart.a"
             rm -f "$p.log" "$p".*hist
             set --
         fi
-        # The deck's own `print` lines show the progress; the full screen output stays in screen.txt.
+        # The deck's own `print` lines show the progress; the full screen output stays in
+        # screen.txt (followed from its size now: lines written before tail starts count).
+        touch screen.txt
+        off=$(( $(wc -c < screen.txt) + 1 ))
         "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" -var tend "$tend" \
             -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var kcset "$kcset" \
             -var prefix agglo "$@" \
             -log sweep.log >> screen.txt 2>&1 &
         pid=$!
-        tail -n 0 -f screen.txt --pid=$pid 2>/dev/null |
+        tail -c +$off -f screen.txt --pid=$pid 2>/dev/null |
             grep --line-buffered -E '^(agglomeration grid point|grid point|check:|ERROR)' || true
         wait $pid || { echo "gravel failed; see $out/screen.txt"; tail -5 screen.txt; exit 1; }
     done
