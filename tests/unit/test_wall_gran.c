@@ -73,7 +73,7 @@ TEST(errors)
     /* contacts (LAMMPS 2023+): an 8-column per-atom array */
     CHECK_ERROR(BOX "fix w all wall/gran hooke 1 NULL 1 NULL 0.5 1 zplane 0 NULL contacts\n"
                     "compute c all reduce sum f_w[9]\nrun 0\n",
-                "f_w[9] is out of range: fix w's per-atom array has 8 columns", 8);
+                "f_w[9] is out of range: fix w's per-atom array has 8 columns", 7);
     CHECK_ERROR(BOX "fix w all wall/gran hooke/history 1 0 1 NULL 0.5 1 zplane 0 NULL\n",
                 "needs Kt > 0", 6);
 }
