@@ -15,10 +15,11 @@
  *   pair contact c   acc[2c] = largest dt / t_col seen, acc[2c + 1] = the
  *                    squared normal speed then; astep[c] = step (since the run's
  *                    first) it was seen
- *   particle i       acc[4i] = largest dt / t_col of its wall and mesh
- *   (walls)          contacts, acc[4i + 1] its normal speed, acc[4i + 2] =
- *                    largest wall overlap / radius, acc[4i + 3] = the code
- *                    of the wall that gave acc[4i]; astep[i] its step
+ *   particle i       ACC_WALL_W floats: the largest dt / t_col of its wall
+ *   (walls)          and mesh contacts, the largest wall overlap / radius,
+ *                    the key of the contact that gave the first (wall code,
+ *                    normal speed, R*, m*) and the key of the last contact
+ *                    evaluated that did not beat it; astep[i] the step
  * acc_reduce reduces them by chunks in index order (ties: the lowest index),
  * so the result does not depend on the work split. */
 
@@ -53,9 +54,22 @@
 /* Note a wall contact of particle i with wall `code` (the work-item of i).
  * Every law's dt / t_col is non-decreasing in vn for a given wall, R* and
  * m* (t_col is constant or falls with vn), so a contact that matches the
- * record's wall, R* and m* at no higher speed cannot beat it: the law's
- * collision time (a pow for the Hertz laws) is evaluated only otherwise,
- * and the record is the one the full test would keep. */
+ * record's wall, R* and m* at no higher speed cannot beat it; nor can one
+ * that matches the last evaluation that did not beat the record (the
+ * particle's other wall: records only grow until acc_collect clears both).
+ * The law's collision time (a pow for the Hertz laws) is evaluated only
+ * otherwise, and the record is the one the full test would keep (to the
+ * floats' rounding of the speeds, upward). */
+#define ACC_WALL_MATCH(rec, c, code, vn, k)                                                    \
+    ((rec)[(c) + ACC_KEY_CODE] == (float)(code) && (vn) <= (REAL)(rec)[(c) + ACC_KEY_VN] &&     \
+     (rec)[(c) + ACC_KEY_REFF] == (float)(k)->reff && (rec)[(c) + ACC_KEY_MEFF] == (float)(k)->meff)
+#define ACC_WALL_KEEP(rec, c, code, vn, k)                                                     \
+    do {                                                                                       \
+        (rec)[(c) + ACC_KEY_CODE] = (float)(code);                                             \
+        (rec)[(c) + ACC_KEY_VN] = ACC_UP(vn);                                                  \
+        (rec)[(c) + ACC_KEY_REFF] = (float)(k)->reff;                                          \
+        (rec)[(c) + ACC_KEY_MEFF] = (float)(k)->meff;                                          \
+    } while (0)
 #define ACC_NOTE_WALL(TCOL, i, k, p, code, acc, astep, step)                                   \
     do {                                                                                       \
         __global float *rec_ = (acc) + ACC_WALL_W * (i);                                       \
@@ -64,19 +78,16 @@
         const REAL ov_ = ((k)->radi - r_) / (k)->radi;                                         \
         if (ov_ > (REAL)rec_[ACC_WALL_OV])                                                     \
             rec_[ACC_WALL_OV] = ACC_UP(ov_);                                                   \
-        const int seen_ = rec_[ACC_WALL_CODE] == (float)(code) &&                              \
-                          vn_ <= (REAL)rec_[ACC_WALL_VN] &&                                    \
-                          rec_[ACC_WALL_REFF] == (float)(k)->reff &&                           \
-                          rec_[ACC_WALL_MEFF] == (float)(k)->meff;                             \
-        if (vn_ > (REAL)0 && !seen_) {                                                         \
+        if (vn_ > (REAL)0 && !ACC_WALL_MATCH(rec_, ACC_WALL_KEY, code, vn_, k) &&               \
+            !ACC_WALL_MATCH(rec_, ACC_WALL_LAST, code, vn_, k)) {                              \
             const REAL tc_ = TCOL(k, p, vn_);                                                  \
-            if (tc_ > (REAL)0 && (k)->dt / tc_ > (REAL)rec_[ACC_WALL_Q]) {                     \
-                rec_[ACC_WALL_Q] = (float)((k)->dt / tc_);                                     \
-                rec_[ACC_WALL_VN] = ACC_UP(vn_);                                               \
-                rec_[ACC_WALL_CODE] = (float)(code);                                           \
-                rec_[ACC_WALL_REFF] = (float)(k)->reff;                                        \
-                rec_[ACC_WALL_MEFF] = (float)(k)->meff;                                        \
+            const float q_ = tc_ > (REAL)0 ? (float)((k)->dt / tc_) : 0.0f;                     \
+            if (q_ > rec_[ACC_WALL_Q]) { /* as floats: ties keep the first */                  \
+                rec_[ACC_WALL_Q] = q_;                                                         \
+                ACC_WALL_KEEP(rec_, ACC_WALL_KEY, code, vn_, k);                               \
                 (astep)[i] = step;                                                             \
+            } else if (tc_ > (REAL)0) {                                                        \
+                ACC_WALL_KEEP(rec_, ACC_WALL_LAST, code, vn_, k);                              \
             }                                                                                  \
         }                                                                                      \
     } while (0)

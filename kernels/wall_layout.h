@@ -77,10 +77,15 @@ enum { RG_PROBE_C = 5, RG_PROBE_W = 1 + RG_PROBE_C * RG_MAXC };
 /* Accuracy records (kernels/accuracy.cl, src/contact/accuracy.c), float in
  * both precisions: ACC_PAIR_W per pair contact (largest dt / t_col, the
  * squared normal speed then) and ACC_WALL_W per particle for its wall
- * contacts (largest dt / t_col, normal speed then, largest overlap / radius, the wall's code, and that
- * contact's R* and m*). */
+ * contacts (largest dt / t_col, largest overlap / radius, then two keys of
+ * ACC_KEY_W: the wall's code, normal speed, R* and m* of the contact that
+ * gave the largest dt / t_col and of the last one evaluated that did not). */
 enum acc_layout { ACC_PAIR_Q = 0, ACC_PAIR_VN2 = 1, ACC_PAIR_W = 2,
-                  ACC_WALL_Q = 0, ACC_WALL_VN = 1, ACC_WALL_OV = 2, ACC_WALL_CODE = 3,
-                  ACC_WALL_REFF = 4, ACC_WALL_MEFF = 5, ACC_WALL_W = 6 };
+                  ACC_KEY_CODE = 0, ACC_KEY_VN = 1, ACC_KEY_REFF = 2, ACC_KEY_MEFF = 3,
+                  ACC_KEY_W = 4,
+                  ACC_WALL_Q = 0, ACC_WALL_OV = 1, ACC_WALL_KEY = 2,
+                  ACC_WALL_LAST = ACC_WALL_KEY + ACC_KEY_W, ACC_WALL_W = ACC_WALL_LAST + ACC_KEY_W,
+                  ACC_WALL_VN = ACC_WALL_KEY + ACC_KEY_VN,
+                  ACC_WALL_CODE = ACC_WALL_KEY + ACC_KEY_CODE };
 
 #endif
