@@ -108,6 +108,26 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
         gr_error(g, "compute reduce: unknown mode '%.64s' (sum, min, max, ave, sumsq, avesq, "
                     "sumabs, aveabs)", argv[0]);
     r->mode = modes[m].mode;
+    /* keywords after the inputs (LAMMPS): `inputs peratom|local` says which
+     * kind every input is (without it, each c_ID is taken as it is) */
+    int nin = argc, want = -1; /* -1: either kind, 0: per-atom, 1: local */
+    for (int k = 1; k < argc; k++)
+        if (strcmp(argv[k], "inputs") == 0 || strcmp(argv[k], "replace") == 0) {
+            nin = k;
+            break;
+        }
+    for (int k = nin; k < argc; k += 2) {
+        if (strcmp(argv[k], "replace") == 0)
+            gr_error(g, "compute reduce: keyword 'replace' is not supported");
+        if (strcmp(argv[k], "inputs") != 0)
+            gr_error(g, "compute reduce: unknown keyword '%.64s' (inputs)", argv[k]);
+        if (k + 1 >= argc || (strcmp(argv[k + 1], "peratom") && strcmp(argv[k + 1], "local")))
+            gr_error(g, "compute reduce: inputs expects peratom or local");
+        want = strcmp(argv[k + 1], "local") == 0;
+    }
+    if (nin < 2)
+        gr_error(g, "compute reduce expects a mode and at least one input");
+    argc = nin;
     r->in = gr_calloc(g, (size_t)argc, sizeof *r->in);
     for (int k = 1; k < argc; k++) {
         const char *s = argv[k];
@@ -142,7 +162,7 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
             /* as LAMMPS: the compute must exist (per-atom or local) now; init
              * checks again */
             struct compute *ic = compute_get(g, in->cid, "compute reduce");
-            in->local = ic->local_flag && !ic->peratom_flag;
+            in->local = want >= 0 ? want : ic->local_flag && !ic->peratom_flag;
             if (in->local)
                 compute_local_check(g, in->cid, in->index, "compute reduce");
             else
@@ -150,6 +170,10 @@ static void reduce_parse(struct gravel *g, struct compute *c, struct reduce *r, 
         }
         r->n++;
     }
+    for (int k = 0; want == 1 && k < r->n; k++)
+        if (!r->in[k].local) /* atom attributes, variables and fix outputs are per atom */
+            gr_error(g, "compute reduce: inputs local takes only c_ID and c_ID[N] of local "
+                        "computes: '%.64s' is per atom", argv[k + 1]);
     if (r->n == 1) {
         c->scalar_flag = 1;
         c->extscalar = r->mode == SUM || r->mode == SUMSQ || r->mode == SUMABS;

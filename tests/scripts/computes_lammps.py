@@ -38,6 +38,7 @@ messages for fragment/atom, property/local natom1, pair/local p11, pair/local
 force with pair colloid, a dump local of a per-atom compute."""
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -97,6 +98,8 @@ compute cc up com/chunk chk
 variable ccz equal c_cc[2][3]+0.0
 compute dmax all reduce max c_pl[1]
 compute tsum all reduce ave c_pl[1] c_plr[1]
+compute dmaxl all reduce max c_pl[1] inputs local   #GRAVEL
+compute tsuml all reduce ave c_pl[1] c_plr[1] inputs local   #GRAVEL
 thermo_style custom step c_com[1] c_com[2] c_com[3] c_cup[3] c_gyr c_gyr[1] c_gyr[3] c_gyr[4] &
   c_gyr[6] c_msd[1] c_msd[4] c_msd2[3] c_msd2[4] c_vacf[1] c_vacf[4] c_sumc c_rr[1] c_rr[2] c_rr2 c_dmax c_tsum[1] c_tsum[2] &
   c_cc[1][3] c_cc[2][1] c_cc[3][3] v_ccz
@@ -112,6 +115,7 @@ dump_modify dl format float %.17g
 dump dl2 all local 500 radius.local index c_prr[1] c_prr[2] c_plr[1] c_plr[2]
 dump_modify dl2 format float %.17g
 run 1500
+print "INPUTS_LOCAL $(c_dmaxl:%.17g) $(c_dmax:%.17g) $(c_tsuml[2]:%.17g) $(c_tsum[2]:%.17g)"   #GRAVEL
 """
 
 failures = 0
@@ -470,6 +474,11 @@ def main():
         if r.returncode != 0:
             report(False, "computes_gravel_runs", (r.stdout + r.stderr)[-800:])
             return 1
+        m = re.search(r"^INPUTS_LOCAL (\S+) (\S+) (\S+) (\S+)$", r.stdout, re.M)
+        report(m is not None and m.group(1) == m.group(2) and m.group(3) == m.group(4)
+               and float(m.group(1)) > 0, "computes_reduce_inputs_local",
+               "`inputs local` (LAMMPS 2023) against the same reductions without it: %s"
+               % (m.group(0) if m else "no INPUTS_LOCAL line"))
         if lmp:
             compare(lt, gt)
             granular_single(lmp)

@@ -239,6 +239,17 @@ TEST(errors)
     FX_CHECK_ERROR("fix 1 all nve\ncompute 1 all reduce sum f_1\n",
                    "fix 1 (nve) does not calculate per-atom values", 2);
     FX_CHECK_ERROR("compute 1 all reduce sum c_1\n", "cannot reduce itself", 1);
+    FX_CHECK_ERROR("compute 1 all reduce sum vx inputs local\n",
+                   "inputs local takes only c_ID and c_ID[N] of local computes: 'vx' is per atom",
+                   1);
+    FX_CHECK_ERROR("compute k all ke/atom\ncompute 1 all reduce sum c_k inputs local\n",
+                   "compute k (ke/atom) does not produce local values", 2);
+    FX_CHECK_ERROR("compute 1 all reduce sum vx inputs atoms\n", "inputs expects peratom or local",
+                   1);
+    FX_CHECK_ERROR("compute 1 all reduce sum vx inputs\n", "inputs expects peratom or local", 1);
+    FX_CHECK_ERROR("compute 1 all reduce sum inputs local\n", "a mode and at least one input",
+                   1);
+    FX_CHECK_ERROR("compute 1 all reduce max vx replace 1 2\n", "'replace' is not supported", 1);
     FX_CHECK_ERROR("compute 1 all property/atom\n", "at least one attribute", 1);
     FX_CHECK_ERROR("compute 1 all property/atom x q\n", "unknown attribute 'q'", 1);
     FX_CHECK_ERROR("compute 1 all count/type bond\n", "supports only 'atom'", 1);
