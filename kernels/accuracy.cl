@@ -57,7 +57,7 @@
  * record's wall, R* and m* at no higher speed cannot beat it; nor can one
  * that matches the last evaluation that did not beat the record (the
  * particle's other wall: records only grow until acc_collect clears both).
- * The law's collision time (a pow for the Hertz laws) is evaluated only
+ * The law's collision time (a fifth root for the Hertz laws) is evaluated only
  * otherwise, and the record is the one the full test would keep (to the
  * floats' rounding of the speeds, upward). */
 #define ACC_WALL_MATCH(rec, c, code, vn, k)                                                    \
