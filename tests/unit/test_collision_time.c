@@ -10,7 +10,7 @@
 
 #include "collision_time.h"
 #include "engine.h"
-#include "kernel_sources.h"
+#include "kernel_text.h"
 #include "ocl.h"
 
 enum { N = 4001 };
@@ -24,14 +24,6 @@ static const char *kernel_text =
     "    out[2 * c] = (double)tcol_root5((REAL)in[c]);\n"
     "    out[2 * c + 1] = (double)tcol_hertz((REAL)1.5e5, (REAL)0.5, (REAL)0.3, (REAL)in[c]);\n"
     "}\n";
-
-static const char *source(const char *name)
-{
-    for (int k = 0; gr_kernel_sources[k].name; k++)
-        if (!strcmp(gr_kernel_sources[k].name, name))
-            return gr_kernel_sources[k].text;
-    return NULL;
-}
 
 /* Runs the check kernel over x[] in the given precision; 0 without fp64. */
 static int device_values(const double *x, double *out, int single)
@@ -47,7 +39,7 @@ static int device_values(const double *x, double *out, int single)
                                      "#define REAL float\n"
                                    : "#pragma OPENCL EXTENSION cl_khr_fp64 : enable\n"
                                      "#define REAL double\n",
-                            source("collision_time.h"), kernel_text};
+                            kernel_text_of("collision_time.h"), kernel_text};
     CHECK(texts[1] != NULL);
     ocl_build(g, &e->ocl, 3, names, texts, "");
     cl_kernel k = ocl_kernel(g, &e->ocl, "root5_check");

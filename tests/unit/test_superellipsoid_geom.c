@@ -12,7 +12,7 @@
 #include "test.h"
 
 #include "engine.h"
-#include "kernel_sources.h"
+#include "kernel_text.h"
 #include "ocl.h"
 #include "rigid_math.h"
 #include "superellipsoid_contact.h"
@@ -135,14 +135,6 @@ static const char *kernel_text =
     "    o[14] = sqe_curvature(&bj, pj, 1);\n"
     "}\n";
 
-static const char *source(const char *name)
-{
-    for (int k = 0; gr_kernel_sources[k].name; k++)
-        if (!strcmp(gr_kernel_sources[k].name, name))
-            return gr_kernel_sources[k].text;
-    return NULL;
-}
-
 static uint64_t rng = 88172645463325252ull;
 static double urand(void) /* xorshift64, [0, 1) */
 {
@@ -199,7 +191,7 @@ TEST(device_matches_host)
     const char *names[3] = {"sqe_pragmas.cl", "superellipsoid_geom.h", "sqe_check.cl"};
     const char *texts[3] = {"#pragma OPENCL EXTENSION cl_khr_fp64 : enable\n"
                             "#pragma OPENCL FP_CONTRACT OFF\n",
-                            source("superellipsoid_geom.h"), kernel_text};
+                            kernel_text_of("superellipsoid_geom.h"), kernel_text};
     CHECK(texts[1] != NULL);
     if (!texts[1] || !e->ocl.fp64) {
         printf("  no superellipsoid_geom.h embedded or no fp64 device\n");
