@@ -48,6 +48,25 @@ static inline REAL min_image(REAL d, REAL L)
     return d;
 }
 
+/* Lanes (kernels/pair_gran_lanes.cl, kernels/atom_lanes.cl): a vector type
+ * of W REAL holds W contacts or particles, one per lane. LANES_W(F) is the
+ * vector literal (F(0), .., F(W - 1)); LANE_OF(v, l) lane l of v (a constant
+ * l once unrolled: an extract); LANE_MIN_IMAGE(T, d, L) min_image of each
+ * lane of d (type T), the same comparisons and arithmetic. */
+#define LANE_PASTE(a, b) a##b
+#define LANE_CAT(a, b) LANE_PASTE(a, b)
+#define LANES_2(F) (F(0), F(1))
+#define LANES_4(F) (F(0), F(1), F(2), F(3))
+#define LANES_8(F) (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7))
+#define LANES_16(F)                                                                            \
+    (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7), F(8), F(9), F(10), F(11), F(12), F(13),   \
+     F(14), F(15))
+#define LANE_OF(v, l) (((const REAL *)&(v))[l])
+#define LANE_MIN_IMAGE(T, d, L)                                                                \
+    ((L) > (REAL)0 ? select(select((d), (d) + (T)(L), (d) < (T)((REAL)-0.5 * (L))),           \
+                            (d) - (T)(L), (d) > (T)((REAL)0.5 * (L)))                         \
+                   : (d))
+
 #ifdef PERIODIC_X
 #define MINIMG_X(d, L) min_image(d, L)
 #else
@@ -200,21 +219,17 @@ static inline REAL3 box_ufac(const REAL Ly, const REAL Lz, const REAL xy, const 
 #define POS_LO_ARG , xlo
 #define POS_LOAD_LO(i) vload3(i, xlo)
 #define POS_STORE_LO(val, i) vstore3(val, i, xlo)
-/* hi + lo += d, renormalised (TwoSum, then Fast2Sum): exact to the last bit of lo */
-static inline void pos_add1(REAL *hi, REAL *lo, const REAL d)
-{
-    const REAL s = *hi + d, bb = s - *hi;
-    const REAL t = ((*hi - (s - bb)) + (d - bb)) + *lo;
-    *hi = s + t;
-    *lo = t - (*hi - s);
-}
-static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d)
-{
-    const REAL3 s = *hi + d, bb = s - *hi;
-    const REAL3 t = ((*hi - (s - bb)) + (d - bb)) + *lo;
-    *hi = s + t;
-    *lo = t - (*hi - s);
-}
+/* *hi + *lo += d for values of type T (REAL, REAL3, lanes), renormalised
+ * (TwoSum, then Fast2Sum): exact to the last bit of lo */
+#define POS_TWOSUM(T, hi, lo, d)                                                               \
+    {                                                                                          \
+        const T s_ = *(hi) + (d), bb_ = s_ - *(hi);                                            \
+        const T t_ = ((*(hi) - (s_ - bb_)) + ((d) - bb_)) + *(lo);                             \
+        *(hi) = s_ + t_;                                                                       \
+        *(lo) = t_ - (*(hi) - s_);                                                             \
+    }
+static inline void pos_add1(REAL *hi, REAL *lo, const REAL d) POS_TWOSUM(REAL, hi, lo, d)
+static inline void pos_add(REAL3 *hi, REAL3 *lo, const REAL3 d) POS_TWOSUM(REAL3, hi, lo, d)
 #else
 #define POS_LO_PARAM
 #define POS_LO_ARG

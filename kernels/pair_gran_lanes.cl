@@ -28,14 +28,6 @@
 #error "pair_gran_lanes.cl: a scene the lane form does not cover (src/engine/engine.c)"
 #endif
 
-#define LANE_PASTE(a, b) a##b
-#define LANE_CAT(a, b) LANE_PASTE(a, b)
-#define LANES_2(F) (F(0), F(1))
-#define LANES_4(F) (F(0), F(1), F(2), F(3))
-#define LANES_8(F) (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7))
-#define LANES_16(F)                                                                            \
-    (F(0), F(1), F(2), F(3), F(4), F(5), F(6), F(7), F(8), F(9), F(10), F(11), F(12), F(13),   \
-     F(14), F(15))
 #define LSTORE(v, t) LANE_CAT(vstore, PAIR_LW)(v, 0, t)
 #define LSELW(a, b, m) select((a), (b), (m))
 typedef LANE_CAT(REAL, PAIR_LW) lreal_w;
@@ -53,8 +45,7 @@ typedef LANE_CAT(double, PAIR_LW) ldouble_w;
 /* min_image (kernels/common.cl) of each lane */
 static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
 {
-    const lreal_w up = (lreal_w)((REAL)0.5 * L), down = (lreal_w)((REAL)-0.5 * L);
-    return L > (REAL)0 ? LSELW(LSELW(d, d + (lreal_w)L, d < down), d - (lreal_w)L, d > up) : d;
+    return LANE_MIN_IMAGE(lreal_w, d, L);
 }
 #ifdef PERIODIC_X
 #define LMINIMG_X(d, L) lane_min_image(d, L)
@@ -247,41 +238,39 @@ __kernel void pair_contacts(KA_PARAMS(pair_contacts))
     const lreal_w actsw = LSELW(zero, (lreal_w)1, acts), notew = LSELW(zero, (lreal_w)1, note);
     const lreal_w meffw = k.meff, reffw = k.reff;
     /* back per lane (a constant lane index once unrolled: an extract) */
-#define LANE(v, l) (((const REAL *)&(v))[l])
 #pragma unroll
     for (int l = 0; l < PAIR_LW; l++) {
         const int c = c0 + l;
         if (c >= ncontact)
             break;
-        if (LANE(notew, l) != (REAL)0) { /* ACC_NOTE_PAIR's record (kernels/accuracy.cl) */
+        if (LANE_OF(notew, l) != (REAL)0) { /* ACC_NOTE_PAIR's record (kernels/accuracy.cl) */
             struct contact kc;
-            kc.meff = LANE(meffw, l);
-            kc.reff = LANE(reffw, l);
-            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(LANE(vn2, l)));
+            kc.meff = LANE_OF(meffw, l);
+            kc.reff = LANE_OF(reffw, l);
+            const REAL tc = TCOL_OF(PAIR_EVAL)(&kc, pp[l], sqrt(LANE_OF(vn2, l)));
             if (tc > (REAL)0) {
                 acc[ACC_PAIR_W * c + ACC_PAIR_Q] = (float)(dt / tc);
-                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = ACC_UP(LANE(vn2, l));
+                acc[ACC_PAIR_W * c + ACC_PAIR_VN2] = ACC_UP(LANE_OF(vn2, l));
                 astep[c] = step;
             }
         }
-        if (LANE(actsw, l) == (REAL)0) { /* its selects left zeros: as an apart group's */
+        if (LANE_OF(actsw, l) == (REAL)0) { /* its selects left zeros: as an apart group's */
             pair_lane_apart(c, shear, quiet, rec);
             continue;
         }
 #ifdef HAS_HISTORY /* contact_hist_store of an acting contact: the whole row */
-        vstore3((REAL3)(LANE(shx, l), LANE(shy, l), LANE(shz, l)), c, shear);
+        vstore3((REAL3)(LANE_OF(shx, l), LANE_OF(shy, l), LANE_OF(shz, l)), c, shear);
 #endif
         if (quiet[c])
             quiet[c] = 0;
-        const REAL3 f = (REAL3)(LANE(fx, l), LANE(fy, l), LANE(fz, l));
+        const REAL3 f = (REAL3)(LANE_OF(fx, l), LANE_OF(fy, l), LANE_OF(fz, l));
         vstore3(f, 0, rec + REC_F(c));
 #ifdef PAIR_TC /* the torque record is tc (pair_loop.cl) */
-        vstore3((REAL3)(LANE(tcx, l), LANE(tcy, l), LANE(tcz, l)), 0, rec + REC_T(c));
+        vstore3((REAL3)(LANE_OF(tcx, l), LANE_OF(tcy, l), LANE_OF(tcz, l)), 0, rec + REC_T(c));
 #else
-        vstore3((REAL3)(LANE(tix, l), LANE(tiy, l), LANE(tiz, l)), 0, rec + REC_T(c));
-        vstore3((REAL3)(LANE(tjx, l), LANE(tjy, l), LANE(tjz, l)), 0, rec + REC_TJ(c));
+        vstore3((REAL3)(LANE_OF(tix, l), LANE_OF(tiy, l), LANE_OF(tiz, l)), 0, rec + REC_T(c));
+        vstore3((REAL3)(LANE_OF(tjx, l), LANE_OF(tjy, l), LANE_OF(tjz, l)), 0, rec + REC_TJ(c));
 #endif
     }
-#undef LANE
 }
 #endif /* PAIR_LW > 1 */

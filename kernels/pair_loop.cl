@@ -184,36 +184,34 @@ static inline void rec_take(__global const REAL *rec, const int c, const int par
 #endif
 }
 
-/* f_i (and torque_i) = the sum of the records of i's contacts in row order
- * (see the top: the contacts i is the partner of, then its own); written,
- * not added (this also clears the force of the step); in the tail, f_i as
- * it is. Then the fused
- * post_force ops [first, first + npost) and final_integrate and
- * end_of_step ops [first + npost, first + npost + nfinal) of
- * kernels/fused.cl, which may change f, torque, v and omega (and the fused
- * fix's store); with look, the next step's opening
- * (kernels/atom_step.cl) on the state in registers. */
-/* (tail: fused_tail below; the force so far is read, not gathered) */
-static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gather),
-                                                              const int tail)
+/* i's contact sums: the records of its contacts in row order (see the top:
+ * the contacts i is the partner of, then its own) into *fs and *ts (from
+ * zero), and with heat its heat flow of the step, stored; in the tail, f_i
+ * and torque_i as they are. Shared by the one-particle and the lane forms
+ * (kernels/atom_lanes.cl). */
+static inline __attribute__((always_inline)) void
+gather_sums(const int i, const int tail, __global const int *ioff, __global const int *coff,
+            __global const int *pcon, __global const REAL *rec, __global const REAL *f,
+            __global const REAL *torque, __global const REAL *radius,
+            __global const REAL *recq, __global REAL *heatflow, REAL3 *fs, REAL3 *ts)
 {
-    const int i = get_global_id(0);
-    if (i >= n)
-        return;
-    REAL3 fs = (REAL3)(0), ts = (REAL3)(0);
+    *fs = (REAL3)(0);
+    *ts = (REAL3)(0);
     if (tail) {
-        fs = vload3(i, f);
+        *fs = vload3(i, f);
 #ifdef HAS_ROTATION
-        ts = vload3(i, torque);
+        *ts = vload3(i, torque);
+#else
+        (void)torque;
 #endif
     } else {
         const int c0 = coff[i], c1 = coff[i + 1];
         const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
         const REAL nr = -radius[i];
         for (int s = p0; s < p1; s++)
-            rec_take(rec, pcon[s], 1, nr, &fs, &ts);
+            rec_take(rec, pcon[s], 1, nr, fs, ts);
         for (int c = c0; c < c1; c++)
-            rec_take(rec, c, 0, nr, &fs, &ts);
+            rec_take(rec, c, 0, nr, fs, ts);
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
         REAL qs = 0;
         for (int s = p0; s < p1; s++)
@@ -227,6 +225,21 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
     (void)recq;
     (void)heatflow;
 #endif
+}
+
+/* f_i (and torque_i) = i's contact sums (gather_sums); written, not added
+ * (this also clears the force of the step); in the tail, f_i as it is. Then
+ * the fused post_force ops [first, first + npost) and final_integrate and
+ * end_of_step ops [first + npost, first + npost + nfinal) of
+ * kernels/fused.cl, which may change f, torque, v and omega (and the fused
+ * fix's store); with look, the next step's opening
+ * (kernels/atom_step.cl) on the state in registers. */
+/* (tail: fused_tail below; the force so far is read, not gathered) */
+static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gather),
+                                                              const int tail, const int i)
+{
+    REAL3 fs, ts;
+    gather_sums(i, tail, ioff, coff, pcon, rec, f, torque, radius, recq, heatflow, &fs, &ts);
     if (npost + nfinal > 0 || look) {
         struct fused_atom at;
         at.f = fs;
@@ -272,9 +285,12 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
 }
 
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
+#if !defined(ATOM_LW) || ATOM_LW == 1 /* else kernels/atom_lanes.cl's, in lanes */
 __kernel void pair_gather(KA_PARAMS(pair_gather))
 {
-    gather_atom(KA_ARGS(pair_gather), 0);
+    const int i = get_global_id(0);
+    if (i < n)
+        gather_atom(KA_ARGS(pair_gather), 0, i);
 }
 
 /* The fused tail (src/engine/fused.h): when the post_force stage fused only
@@ -285,8 +301,11 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
  * contact ones unused). */
 __kernel void fused_tail(KA_PARAMS(pair_gather))
 {
-    gather_atom(KA_ARGS(pair_gather), 1);
+    const int i = get_global_id(0);
+    if (i < n)
+        gather_atom(KA_ARGS(pair_gather), 1, i);
 }
+#endif /* ATOM_LW == 1 */
 
 /* The pair virial of the step, per particle, for the pressure (run only on
  * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum

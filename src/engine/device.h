@@ -108,6 +108,7 @@ struct engine {
     int ready;                  /* device chosen */
     int single;                 /* REAL = float; positions split hi + lo (SPLIT_POS) */
     int pair_lw;                /* contacts per work-item of pair_contacts (PAIR_LW) */
+    int atom_lw;                /* particles per work-item of pair_gather (ATOM_LW) */
     int pair_tc;                /* the torque records hold each contact's tc (PAIR_TC:
                                  * the law has no rolling torque, kernels/pair_loop.cl) */
     char lanes_prologue[160];   /* kernels/lanes.cl's prologue at the pair width */

@@ -397,14 +397,30 @@ static void add_source(struct gravel *g, const char **names, const char **texts,
  * (kernels/gran_law.cl) in a scene kernels/pair_gran_lanes.cl covers (no
  * cohesion, approach, velocity remap, triclinic box, split positions or
  * history row beyond 3 REAL); one contact per work-item otherwise. */
+/* whether a fix of the scene builds the program with option `def` */
+static int fix_defines(const struct gravel *g, const char *def)
+{
+    for (int i = 0; i < g->styles.nfix; i++)
+        if (strstr(g->styles.fix[i]->defines, def))
+            return 1;
+    return 0;
+}
+
 static int pair_lanes(struct gravel *g, const struct pair_caps *pc, int single, int lmp2021)
 {
     if (!pc || !pc->eval_lanes || pc->beyond || pc->approach || (single && !g->eng->ocl.fp64) ||
-        lmp2021 || g->dom.triclinic)
+        lmp2021 || g->dom.triclinic || fix_defines(g, "VREMAP"))
         return 1;
-    for (int i = 0; i < g->styles.nfix; i++)
-        if (strstr(g->styles.fix[i]->defines, "VREMAP"))
-            return 1;
+    return single ? g->eng->ocl.lanes_float : g->eng->ocl.lanes_double;
+}
+
+/* The gather's width: the device's lanes in a scene kernels/atom_lanes.cl
+ * covers (no fused fix drag, velocity remap or triclinic box); one
+ * particle per work-item otherwise. */
+static int atom_lanes(struct gravel *g, int single)
+{
+    if (g->dom.triclinic || fix_defines(g, "VREMAP") || fix_defines(g, "FUSED_DRAG"))
+        return 1;
     return single ? g->eng->ocl.lanes_float : g->eng->ocl.lanes_double;
 }
 
@@ -475,6 +491,8 @@ static int build_options(struct gravel *g, const struct pair_caps *pc, int lmp20
             OPT(" -D PAIR_EVAL=%s", pc->eval);
         if (e->pair_lw > 1)
             OPT(" -D PAIR_LW=%d -D PAIR_EVAL_LANES=%s", e->pair_lw, pc->eval_lanes);
+        if (e->atom_lw > 1)
+            OPT(" -D ATOM_LW=%d", e->atom_lw);
         if (e->pair_tc)
             OPT(" -D PAIR_TC");
         if (pc->approach)
@@ -540,6 +558,7 @@ void eng_prepare(struct gravel *g)
      * records are written by kernels/pair_loop.cl's one-contact kernel */
     e->heat = g->atoms.heat_flag == ATOM_HEAT_BOTH;
     e->pair_lw = e->heat ? 1 : pair_lanes(g, pc, single, lmp2021);
+    e->atom_lw = pc ? atom_lanes(g, single) : 1;
     /* a law without rolling torque: the torque record is the contact's tc */
     e->pair_tc = pc && pc->sym_torque && e->rotation;
 
@@ -580,6 +599,7 @@ void eng_prepare(struct gravel *g)
     }
     add_source(g, names, texts, &n, "pair_loop.cl", "engine");
     add_source(g, names, texts, &n, "pair_gran_lanes.cl", "engine");
+    add_source(g, names, texts, &n, "atom_lanes.cl", "engine");
     add_source(g, names, texts, &n, "neighbor.cl", "engine");
     add_source(g, names, texts, &n, "box_change.cl", "engine");
 

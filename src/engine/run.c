@@ -356,7 +356,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         };
         nbr_step_args(g, &pg.atom_step, pg.look);
         ka_bind_pair_gather(g, e->k_gather, 0, &pg);
-        eng_launch(g, e->k_gather, (size_t)a->n);
+        eng_launch(g, e->k_gather, ((size_t)a->n + (size_t)e->atom_lw - 1) / (size_t)e->atom_lw);
         tail_args = pg;
     } else {
         acc_reserve(g); /* the wall records */
@@ -381,7 +381,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         tail_args.look = look;
         nbr_step_args(g, &tail_args.atom_step, look);
         ka_bind_pair_gather(g, e->k_tail, 0, &tail_args);
-        eng_launch(g, e->k_tail, (size_t)a->n);
+        eng_launch(g, e->k_tail, ((size_t)a->n + (size_t)e->atom_lw - 1) / (size_t)e->atom_lw);
     }
     if (timed)
         eng_finish(g);

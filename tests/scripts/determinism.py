@@ -24,7 +24,10 @@ vortex whose fix drag fuses (update explicit, implicit and exact), with
 fewer launches per step than unfused; and the fused tail (fixes after an
 unfused wall, with the final kick and the next step's opening, in one launch
 after the wall): the bed, and the vortex with a fixed ball before fix drag,
-the same bits unfused and without the look-ahead, with fewer launches. Then momentum conservation of the pair forces: a periodic dense packing
+the same bits unfused and without the look-ahead, with fewer launches. The
+chute's fused ops in the gather's lanes (kernels/atom_lanes.cl) at widths 2
+and 16, and 16 without the look-ahead, give the bits of width 1 in both
+precisions (fused_lanes_<precision>_<width>). Then momentum conservation of the pair forces: a periodic dense packing
 (1000 spheres, no gravity, no walls) dumps its forces after 50 steps; their
 sum over all atoms is zero to rounding (|sum f| <= 1e-13 sum |f|).
 The same lane widths give the same bits for each lane-generic law (gran
@@ -337,6 +340,25 @@ def check_lanes():
     return bad
 
 
+def check_fused_lanes():
+    """The chute's fused ops (gravity, freeze, viscous, nve/sphere) and the
+    look-ahead's kick, drift, wrap and check in the gather's lanes
+    (kernels/atom_lanes.cl) at widths 2 and 16 against one particle per
+    work-item, also without the look-ahead, in both precisions."""
+    bad = 0
+    for prec in ("double", "single"):
+        args = ("-precision", prec)
+        ref = run(CHUTE, {"GRAVEL_LANES": "1"}, args)
+        for name, env in (("2", {"GRAVEL_LANES": "2"}), ("16", {"GRAVEL_LANES": "16"}),
+                          ("16_no_lookahead", {"GRAVEL_LANES": "16", "GRAVEL_LOOKAHEAD": "0"})):
+            rows, dump = run(CHUTE, env, args)
+            ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
+            bad += not check("fused_lanes_%s_%s" % (prec, name), ok,
+                             (dump or "")[-300:] if rows is None or ref[0] is None
+                             else first_difference(ref[1], dump))
+    return bad
+
+
 def check_serial_default():
     """The dense packing (1000 atoms) without a device named runs on the
     serial device; with -device cpu on PoCL's threads; the same bits."""
@@ -399,6 +421,7 @@ def main():
         ok = dump_f == dump_n and rows_f == rows_n
         bad += not check("lookahead_equals_none", ok,
                          "" if ok else first_difference(dump_f, dump_n))
+    bad += check_fused_lanes()
     bad += check_drag()
     bad += check_tail()
     bad += check_serial_default()
