@@ -277,7 +277,7 @@ alanes_step(const int i0, struct atom_lanes *at, KA_PARAMS(atom_step), __global 
     const areal dz = AMINIMG_Z(xi.z - h.z, Lz);
     const areal rsq = dx * dx + dy * dy + dz * dz;
     if (any(rsq > (areal)trigsq))
-        atomic_or(&flags[0], 1);
+        atomic_max(&flags[0], stamp);
     /* x - x is 0 for a finite x and NaN otherwise: one test for the six */
     const areal z = (xi.x - xi.x) + (xi.y - xi.y) + (xi.z - xi.z) + (vi.x - vi.x) +
                     (vi.y - vi.y) + (vi.z - vi.z);

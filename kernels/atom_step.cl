@@ -8,8 +8,10 @@
  * In order: the fused initial_integrate ops [0, ninit) (kernels/fused.cl;
  * the kick and the drift) on the state *at, stored back; the periodic wrap
  * into [lo, hi) (image flags follow), so positions never depend on when
- * the list was rebuilt; flags[0] |= 1 if the particle moved (minimum
- * image) more than sqrt(trigsq) since the last build; flags[1] = lowest
+ * the list was rebuilt; flags[0] = max(flags[0], stamp) if the particle
+ * moved (minimum image) more than sqrt(trigsq) since the last build (the
+ * host gives each opening a larger stamp, so flags[0] needs no reset
+ * between steps: src/engine/neighbor.c, step_args); flags[1] = lowest
  * index with a non-finite position or velocity. *at holds x, xl, v and, when
  * ninit > 0, f, om, tq, m, r, type and mask. */
 
@@ -84,7 +86,7 @@ static inline void atom_step(const int i, struct fused_atom *at, KA_PARAMS(atom_
     MINIMG3(d);
     const REAL rsq = d.x * d.x + d.y * d.y + d.z * d.z;
     if (rsq > trigsq)
-        atomic_or(&flags[0], 1);
+        atomic_max(&flags[0], stamp);
     /* x - x is 0 for a finite x and NaN otherwise: one test for the six */
     const REAL3 zx = xi - xi, zv = vi - vi;
     if (zx.x + zx.y + zx.z + zv.x + zv.y + zv.z != (REAL)0)

@@ -73,7 +73,7 @@
  * rebuild and finiteness flags; run by nbr_check, or by pair_gather at the
  * end of the step before (look = 1: src/engine/run.c, step_lookahead) */
 #define KARGS_atom_step(X, Y)                                                                  \
-    X(M, x) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(MI, image) Y(C3, lo) Y(C3, hi)            \
+    X(M, x) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(I, stamp) Y(MI, image) Y(C3, lo) Y(C3, hi)            \
     Y(BOX, box) Y(CM, hrate) Y(U, vgroup) Y(I, ninit)
 
 /* nbr_wrap_extent: periodic wrap (p: periodic per dimension) and the

@@ -18,6 +18,7 @@
  * lists. */
 #include "neighbor.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,6 +61,7 @@ struct nbr {
     int nexg;
     int ago;
     int opened;                 /* the last pair_gather ran this step's opening (nbr_step_args) */
+    int stamp;                  /* of the last opening: flags[0] == stamp when it asks to rebuild */
     double corners_hold[8][3];  /* box corners at the last build */
     int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
@@ -709,19 +711,27 @@ void nbr_box_changed(struct gravel *g)
     b->box_moved = 1;
 }
 
-/* The arguments of a step's opening (kernels/atom_step.cl); with reset, its
- * flags reset for it. */
+/* The arguments of a step's opening (kernels/atom_step.cl); with reset, a
+ * new stamp for it: its rebuild request is flags[0] == stamp, so the flags
+ * need no reset command per step (one at the run's first opening, and when
+ * the stamps wrap); a non-finite particle in flags[1] stops the run. */
 static void step_args(struct gravel *g, struct nbr *b, struct atom_step_args *a, int reset)
 {
     struct engine *e = g->eng;
     double trig = trigger_distance(g, b);
-    if (reset)
-        reset_flags(g, b);
+    if (reset) {
+        if (b->stamp <= 0 || b->stamp == INT_MAX) {
+            reset_flags(g, b);
+            b->stamp = 0;
+        }
+        b->stamp++;
+    }
     *a = (struct atom_step_args){
         .x = e->a.x,
         .xhold = b->xhold,
         .trigsq = trig * trig,
         .flags = b->flags,
+        .stamp = b->stamp,
         .image = e->a.image,
         .box = {0, 0, 0, g->dom.xy, g->dom.xz, g->dom.yz},
         .hrate = e->hrate,
@@ -745,6 +755,7 @@ void nbr_step_args(struct gravel *g, struct atom_step_args *a, int ahead)
 void nbr_step_reset(struct gravel *g)
 {
     get(g)->opened = 0;
+    get(g)->stamp = 0; /* the run's first opening resets the flags */
 }
 
 int nbr_decide(struct gravel *g, int forced)
@@ -786,7 +797,7 @@ int nbr_decide(struct gravel *g, int forced)
         if (!g->neigh.check)
             return 1;
         /* a decomposed run rebuilds on every rank when one needs it */
-        if (par_on(g) ? comm_max_int(fl[0] != 0) : fl[0]) {
+        if (par_on(g) ? comm_max_int(fl[0] == b->stamp) : fl[0] == b->stamp) {
             int first = every > g->neigh.delay ? every : g->neigh.delay;
             if (b->ago == first)
                 e->st.ndanger++;

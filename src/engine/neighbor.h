@@ -62,8 +62,8 @@ void nbr_free(struct gravel *g);
 int nbr_decide(struct gravel *g, int forced);
 /* The arguments of a step's opening for pair_gather (kernels/atom_step.cl).
  * With ahead, the next step's opening runs in this step's pair_gather
- * (src/engine/run.c, step_lookahead): the flags are reset for it and the
- * next nbr_decide only reads them; without, the arguments are bound unused.
+ * (src/engine/run.c, step_lookahead): it gets a new stamp and the next
+ * nbr_decide only reads the flags; without, the arguments are bound unused.
  * nbr_step_reset forgets an opening run ahead (a run's start). */
 struct atom_step_args;
 void nbr_step_args(struct gravel *g, struct atom_step_args *a, int ahead);
