@@ -53,7 +53,9 @@ static inline double flow_sincos(const double x, double *c)
  * amplitude A = p0 and wave number a = p1:
  *   u =   A cos(a X) sin(a Y) sin(a Z)
  *   v =   A sin(a X) cos(a Y) sin(a Z)      X = x + pi/(2a), ...
- *   w = -2A sin(a X) sin(a Y) cos(a Z)                                    */
+ *   w = -2A sin(a X) sin(a Y) cos(a Z)
+ * flow 2: the same with w = -2A cos(a X) sin(a Y) cos(a Z), as source 000's
+ * own code has it (DEMOranges kernels/get_vel_fluid/tgv.cl; compressible). */
 static inline REAL3 drag_flow(const REAL3 x, const int flow, const REAL p0, const REAL p1,
                               const REAL p2)
 {
@@ -63,7 +65,8 @@ static inline REAL3 drag_flow(const REAL3 x, const int flow, const REAL p0, cons
     const REAL X = p1 * (x.x + sh), Y = p1 * (x.y + sh), Z = p1 * (x.z + sh);
     REAL cx, cy, cz;
     const REAL sx = flow_sincos(X, &cx), sy = flow_sincos(Y, &cy), sz = flow_sincos(Z, &cz);
-    return (REAL3)(p0 * cx * sy * sz, p0 * sx * cy * sz, (REAL)-2 * p0 * sx * sy * cz);
+    return (REAL3)(p0 * cx * sy * sz, p0 * sx * cy * sz,
+                   (REAL)-2 * p0 * (flow == 2 ? cx : sx) * sy * cz);
 }
 
 /* update explicit: the force f plus the drag beta (u_f - v), beta = 3 pi mu d */

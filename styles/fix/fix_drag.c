@@ -8,6 +8,9 @@
  * Flows:
  *   uniform ux uy uz       u_f constant
  *   taylor_green A a       Taylor-Green vortex of 000 eq. 6.1-6.3
+ *   taylor_green/demoranges A a   the vortex as 000's own code has it
+ *                          (w with cos(a X) for sin(a X): compressible;
+ *                          doc/agglomeration.md, Low Stokes number)
  *
  * Velocity update (`update`, default implicit):
  *   explicit   F_d added in post_force from the current (half-step) velocity;
@@ -44,7 +47,8 @@
 #include "fix_drag.h"
 #include "fused.h"
 
-enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN };
+/* the kernels' flow codes (kernels/drag_law.cl drag_flow) */
+enum { FLOW_UNIFORM, FLOW_TAYLOR_GREEN, FLOW_TAYLOR_GREEN_DEMORANGES };
 enum { UPD_EXPLICIT, UPD_IMPLICIT, UPD_EXACT, UPD_TRAPEZOIDAL };
 
 struct drag {
@@ -59,8 +63,8 @@ struct drag {
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 2)
-        gr_error(g, "fix drag expects mu and a flow (uniform ux uy uz | taylor_green A a) "
-                    "[update explicit|implicit|exact|trapezoidal]");
+        gr_error(g, "fix drag expects mu and a flow (uniform ux uy uz | taylor_green A a | "
+                    "taylor_green/demoranges A a) [update explicit|implicit|exact|trapezoidal]");
     struct drag *d = gr_calloc(g, 1, sizeof *d);
     f->data = d;
     d->mu = arg_positive(g, argv[0], "fluid viscosity mu");
@@ -71,15 +75,15 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             d->p[k] = arg_double(g, argv[i + 1 + k], "uniform flow velocity");
         d->flow = FLOW_UNIFORM;
         i += 4;
-    } else if (!strcmp(argv[i], "taylor_green")) {
-        arg_need(g, argc, i, 2, "taylor_green");
+    } else if (!strcmp(argv[i], "taylor_green") || !strcmp(argv[i], "taylor_green/demoranges")) {
+        arg_need(g, argc, i, 2, argv[i]);
         d->p[0] = arg_double(g, argv[i + 1], "Taylor-Green amplitude A");
         d->p[1] = arg_positive(g, argv[i + 2], "Taylor-Green wave number a");
-        d->flow = FLOW_TAYLOR_GREEN;
+        d->flow = strchr(argv[i], '/') ? FLOW_TAYLOR_GREEN_DEMORANGES : FLOW_TAYLOR_GREEN;
         i += 3;
     } else {
-        gr_error(g, "unknown fix drag flow '%.64s' (expected uniform or taylor_green)",
-                 argv[i]);
+        gr_error(g, "unknown fix drag flow '%.64s' (expected uniform, taylor_green or "
+                    "taylor_green/demoranges)", argv[i]);
     }
     d->update = UPD_IMPLICIT;
     for (; i < argc; i += 2) {
@@ -294,7 +298,7 @@ int fix_drag_scales(const struct fix *f, double *mu, double *u0, double *l0)
         return 0;
     const struct drag *d = f->data;
     *mu = d->mu;
-    if (d->flow == FLOW_TAYLOR_GREEN) {
+    if (d->flow != FLOW_UNIFORM) {
         *u0 = 0.7839 * fabs(d->p[0]);
         *l0 = M_PI / d->p[1];
     } else {

@@ -88,32 +88,37 @@ def errors():
 
 
 def taylor_green():
-    """Explicit drag force at setup = 3 pi mu d u_f(x0) for a particle at rest."""
+    """Explicit drag force at setup = 3 pi mu d u_f(x0) for a particle at rest,
+    in the vortex of eq. 6.1-6.3 and in source 000's code's variant
+    (taylor_green/demoranges: w with cos(a X) for sin(a X))."""
     A, a, mu, d = 0.7, 2.0, 0.01, 0.1
     x0 = (0.13, -0.21, 0.37)
-    rc, out, row = run(BOX + """create_atoms 1 single %g %g %g
+    for flow in ("taylor_green", "taylor_green/demoranges"):
+        rc, out, row = run(BOX + """create_atoms 1 single %g %g %g
 set atom * diameter %g density 10
 fix i all nve/sphere
-fix d all drag %g taylor_green %g %g update explicit
+fix d all drag %g %s %g %g update explicit
 variable fx equal fx[1]
 variable fy equal fy[1]
 variable fz equal fz[1]
 thermo_style custom step v_fx v_fy v_fz
 thermo_modify format float %%.16g
 run 0
-""" % (x0 + (d, mu, A, a)))
-    sh = math.pi / (2 * a)
-    X, Y, Z = (a * (c + sh) for c in x0)
-    uf = (A * math.cos(X) * math.sin(Y) * math.sin(Z), A * math.sin(X) * math.cos(Y) * math.sin(Z),
-          -2 * A * math.sin(X) * math.sin(Y) * math.cos(Z))
-    beta = 3 * math.pi * mu * d
-    if row is None:
-        check("taylor_green explicit force at setup", False, out[-300:])
-        return
-    got = (row["v_fx"], row["v_fy"], row["v_fz"])
-    err = max(abs(g - beta * u) for g, u in zip(got, uf))
-    check("taylor_green explicit force at setup = 3 pi mu d u_f(x) (eq. 6.1-6.3)",
-          err < 1e-12 * beta * A, "max diff %.2e of %.3e" % (err, beta * A))
+""" % (x0 + (d, mu, flow, A, a)))
+        sh = math.pi / (2 * a)
+        X, Y, Z = (a * (c + sh) for c in x0)
+        wx = math.cos(X) if flow.endswith("demoranges") else math.sin(X)
+        uf = (A * math.cos(X) * math.sin(Y) * math.sin(Z),
+              A * math.sin(X) * math.cos(Y) * math.sin(Z), -2 * A * wx * math.sin(Y) * math.cos(Z))
+        beta = 3 * math.pi * mu * d
+        if row is None:
+            check("%s explicit force at setup" % flow, False, out[-300:])
+            continue
+        got = (row["v_fx"], row["v_fy"], row["v_fz"])
+        err = max(abs(g - beta * u) for g, u in zip(got, uf))
+        check("%s explicit force at setup = 3 pi mu d u_f(x) (eq. 6.1-6.3%s)"
+              % (flow, "; w with cos(a X)" if flow.endswith("demoranges") else ""),
+              err < 1e-12 * beta * A, "max diff %.2e of %.3e" % (err, beta * A))
 
 
 def terminal_velocity():
