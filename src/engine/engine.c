@@ -393,10 +393,6 @@ static void add_source(struct gravel *g, const char **names, const char **texts,
     add_text(g, names, texts, n, name, kernel_text(g, name, who));
 }
 
-/* The pair kernel's width: the device's lanes for a law written in lanes
- * (kernels/gran_law.cl) in a scene kernels/pair_gran_lanes.cl covers (no
- * cohesion, approach, velocity remap, triclinic box, split positions or
- * history row beyond 3 REAL); one contact per work-item otherwise. */
 /* whether a fix of the scene builds the program with option `def` */
 static int fix_defines(const struct gravel *g, const char *def)
 {
@@ -406,6 +402,10 @@ static int fix_defines(const struct gravel *g, const char *def)
     return 0;
 }
 
+/* The pair kernel's width: the device's lanes for a law written in lanes
+ * (kernels/gran_law.cl) in a scene kernels/pair_gran_lanes.cl covers (no
+ * cohesion, approach, velocity remap, triclinic box, split positions or
+ * history row beyond 3 REAL); one contact per work-item otherwise. */
 static int pair_lanes(struct gravel *g, const struct pair_caps *pc, int single, int lmp2021)
 {
     if (!pc || !pc->eval_lanes || pc->beyond || pc->approach || (single && !g->eng->ocl.fp64) ||
