@@ -12,11 +12,10 @@
  * partial group runs the one-particle form.
  *
  * The host takes this form only for a scene it covers (src/engine/engine.c,
- * atom_lanes): no fused fix drag (its ops keep per-atom state, out of
- * line), velocity remap or triclinic box. */
+ * atom_lanes): no velocity remap or triclinic box. */
 
 #if defined(ATOM_LW) && ATOM_LW > 1
-#if defined(FUSED_DRAG) || defined(VREMAP) || defined(TRICLINIC)
+#if defined(VREMAP) || defined(TRICLINIC)
 #error "atom_lanes.cl: a scene the lane form does not cover (src/engine/engine.c)"
 #endif
 
@@ -35,6 +34,17 @@ typedef aint amask;
 #define AL(F) ((areal)LANE_CAT(LANES_, ATOM_LW)(F))
 #define ALOAD(p, i0) LANE_CAT(vload, ATOM_LW)(0, (p) + (i0))
 #define ALANES_DO(F) LANE_CAT(LANES_, ATOM_LW)(F) /* F(0), .., F(ATOM_LW - 1) */
+/* the statement S(l) for each lane l */
+#if ATOM_LW == 2
+#define ALANES_EACH(S) S(0) S(1)
+#elif ATOM_LW == 4
+#define ALANES_EACH(S) S(0) S(1) S(2) S(3)
+#elif ATOM_LW == 8
+#define ALANES_EACH(S) S(0) S(1) S(2) S(3) S(4) S(5) S(6) S(7)
+#else
+#define ALANES_EACH(S)                                                                         \
+    S(0) S(1) S(2) S(3) S(4) S(5) S(6) S(7) S(8) S(9) S(10) S(11) S(12) S(13) S(14) S(15)
+#endif
 
 /* three lanes: a 3-vector of each of the ATOM_LW particles */
 struct a3 {
@@ -50,13 +60,15 @@ static inline struct a3 a3_sel(const struct a3 a, const struct a3 b, const amask
     return r;
 }
 
-/* particles i0 .. i0 + ATOM_LW - 1 of a 3-REAL array */
-static inline struct a3 a3_load(__global const REAL *p, const int i0)
+/* particles i0 .. i0 + ATOM_LW - 1 of an array of w REAL per particle,
+ * their 3-vector at offset off */
+static inline struct a3 a3_load_w(__global const REAL *p, const int i0, const int w,
+                                  const int off)
 {
-    __global const REAL *q = p + 3 * (size_t)i0;
-#define A3X(l) q[3 * (l)]
-#define A3Y(l) q[3 * (l) + 1]
-#define A3Z(l) q[3 * (l) + 2]
+    __global const REAL *q = p + (size_t)w * i0 + off;
+#define A3X(l) q[w * (l)]
+#define A3Y(l) q[w * (l) + 1]
+#define A3Z(l) q[w * (l) + 2]
     struct a3 r;
     r.x = AL(A3X);
     r.y = AL(A3Y);
@@ -65,6 +77,12 @@ static inline struct a3 a3_load(__global const REAL *p, const int i0)
 #undef A3X
 #undef A3Y
 #undef A3Z
+}
+
+/* ... of a 3-REAL array */
+static inline struct a3 a3_load(__global const REAL *p, const int i0)
+{
+    return a3_load_w(p, i0, 3, 0);
 }
 
 /* (lanes are read by subscript, a constant one once ALANES_DO expanded it) */
@@ -136,12 +154,99 @@ struct atom_lanes {
     auint mask;
 };
 
-/* fused_apply (kernels/fused.cl) in lanes, for the ops other than fix
- * drag's: each op's arithmetic on every lane, kept where the particle is in
- * the op's group */
+#ifdef FUSED_DRAG /* fix drag's ops in lanes: kernels/drag_law.cl's arithmetic */
+/* flow_sincos of each lane; in single precision (the built-in sincos) and
+ * with a lane out of its range, the one-value form lane by lane */
+static inline areal aflow_sincos(const areal x, areal *c)
+{
+#ifdef USE_DOUBLE
+    if (all(fabs(x) < (areal)823549.6)) {
+        FLOW_SINCOS_CORE(areal, x, n, sn, cs)
+        const amask q = LANE_CAT(convert_long, ATOM_LW)(n) & 3; /* (int)n & 3 */
+        const amask q0 = q == 0, q1 = q == 1, q2 = q == 2;
+        *c = select(select(select(sn, -cs, q2), -sn, q1), cs, q0);
+        return select(select(select(-cs, -sn, q2), cs, q1), sn, q0);
+    }
+#endif
+    areal s;
+#define A_SINCOS(l)                                                                            \
+    {                                                                                          \
+        REAL c_;                                                                               \
+        s[l] = flow_sincos(x[l], &c_);                                                         \
+        (*c)[l] = c_;                                                                          \
+    }
+    ALANES_EACH(A_SINCOS)
+#undef A_SINCOS
+    return s;
+}
+
+/* drag_flow of each lane */
+static inline struct a3 adrag_flow(const struct a3 x, const int flow, const REAL p0,
+                                   const REAL p1, const REAL p2)
+{
+    struct a3 u;
+    if (flow == 0) {
+        u.x = (areal)p0;
+        u.y = (areal)p1;
+        u.z = (areal)p2;
+        return u;
+    }
+    const REAL sh = (REAL)M_PI_2 / p1;
+    const areal X = p1 * (x.x + sh), Y = p1 * (x.y + sh), Z = p1 * (x.z + sh);
+    areal cx, cy, cz;
+    const areal sx = aflow_sincos(X, &cx), sy = aflow_sincos(Y, &cy), sz = aflow_sincos(Z, &cz);
+    TGV_FLOW(flow, p0, sx, cx, sy, cy, sz, cz, u.x, u.y, u.z)
+    return u;
+}
+
+/* fused_drag_kick (kernels/fused.cl) of each lane: the new force; the
+ * store (D, then u_f, 6 REAL per particle) written where on */
+static inline struct a3 adrag_kick(const struct atom_lanes *a, __global const REAL *p,
+                                   const int again, __global REAL *store, const int i0,
+                                   const amask on)
+{
+    struct a3 uf, F = a->f;
+    if (again) {
+        uf = a3_load_w(store, i0, 6, 3);
+        const struct a3 d0 = a3_load_w(store, i0, 6, 0);
+        F.x = F.x - d0.x;
+        F.y = F.y - d0.y;
+        F.z = F.z - d0.z;
+    } else {
+        uf = adrag_flow(a->x, (int)p[1], p[2], p[3], p[4]);
+#define A_STORE_UF(l) (on[l] ? a3_store_lane(uf, l, store + 6 * (size_t)(i0 + l) + 3, 0) : (void)0)
+        ALANES_DO(A_STORE_UF);
+#undef A_STORE_UF
+    }
+    const REAL h = p[6];
+    const areal tau = a->m / DRAG_BETA(p[0], a->r);
+    areal k = DRAG_KICK_FACTOR(h, tau);
+    if ((int)p[5]) { /* exact: the built-in expm1 lane by lane */
+#define A_EXPM1(l) k[l] = -expm1(-h / tau[l]);
+        ALANES_EACH(A_EXPM1)
+#undef A_EXPM1
+    }
+    const areal tm = tau / a->m, mh = a->m / h;
+    struct a3 D;
+    D.x = DRAG_KICK_D(F.x, uf.x, a->v.x, tm, k, mh);
+    D.y = DRAG_KICK_D(F.y, uf.y, a->v.y, tm, k, mh);
+    D.z = DRAG_KICK_D(F.z, uf.z, a->v.z, tm, k, mh);
+#define A_STORE_D(l) (on[l] ? a3_store_lane(D, l, store + 6 * (size_t)(i0 + l), 0) : (void)0)
+    ALANES_DO(A_STORE_D);
+#undef A_STORE_D
+    F.x = F.x + D.x;
+    F.y = F.y + D.y;
+    F.z = F.z + D.z;
+    return F;
+}
+#endif
+
+/* fused_apply (kernels/fused.cl) in lanes: each op's arithmetic on every
+ * lane, kept where the particle is in the op's group; store: fix drag's
+ * per-particle state (FUSED_DRAG) */
 static inline __attribute__((always_inline)) void
 alanes_apply(struct atom_lanes *a, __global const int *ops, const int first, const int count,
-             __global const REAL *prm)
+             __global const REAL *prm, __global REAL *store, const int i0)
 {
     for (int k = first; k < first + count; k++) {
         const int kind = ops[FOP_W * k + FOP_KIND];
@@ -199,6 +304,20 @@ alanes_apply(struct atom_lanes *a, __global const int *ops, const int first, con
             }
 #endif
         }
+#ifdef FUSED_DRAG
+        else if (kind == FOP_DRAG_EXPLICIT) { /* drag_explicit_force */
+            const struct a3 uf = adrag_flow(a->x, (int)p[1], p[2], p[3], p[4]);
+            const areal beta = DRAG_BETA(p[0], a->r);
+            a->f.x = select(a->f.x, a->f.x + beta * (uf.x - a->v.x), on);
+            a->f.y = select(a->f.y, a->f.y + beta * (uf.y - a->v.y), on);
+            a->f.z = select(a->f.z, a->f.z + beta * (uf.z - a->v.z), on);
+        } else if (kind == FOP_DRAG_KICK || kind == FOP_DRAG_KICK_AGAIN) {
+            a->f = a3_sel(a->f, adrag_kick(a, p, kind == FOP_DRAG_KICK_AGAIN, store, i0, on), on);
+        }
+#else
+        (void)store;
+        (void)i0;
+#endif
     }
 }
 
@@ -208,7 +327,8 @@ alanes_step(const int i0, struct atom_lanes *at, KA_PARAMS(atom_step), __global 
             __global REAL *omega, __global const int *ops, __global const REAL *prm POS_LO_PARAM)
 {
     if (ninit > 0) {
-        alanes_apply(at, ops, 0, ninit, prm);
+        /* no initial op keeps a store */
+        alanes_apply(at, ops, 0, ninit, prm, (__global REAL *)0, i0);
         a3_store(at->x, x, i0);
 #ifdef SPLIT_POS
         a3_store(at->xl, xlo, i0);
@@ -318,16 +438,7 @@ static inline __attribute__((always_inline)) void gather_lanes(KA_PARAMS(pair_ga
         at.tq.y[l] = ts_.y;                                                                    \
         at.tq.z[l] = ts_.z;                                                                    \
     }
-    A_SUMS(0) A_SUMS(1)
-#if ATOM_LW > 2
-    A_SUMS(2) A_SUMS(3)
-#endif
-#if ATOM_LW > 4
-    A_SUMS(4) A_SUMS(5) A_SUMS(6) A_SUMS(7)
-#endif
-#if ATOM_LW > 8
-    A_SUMS(8) A_SUMS(9) A_SUMS(10) A_SUMS(11) A_SUMS(12) A_SUMS(13) A_SUMS(14) A_SUMS(15)
-#endif
+    ALANES_EACH(A_SUMS)
 #undef A_SUMS
     if (npost + nfinal == 0 && !look) {
         a3_store(at.f, f, i0);
@@ -345,12 +456,19 @@ static inline __attribute__((always_inline)) void gather_lanes(KA_PARAMS(pair_ga
     at.r = ALOAD(radius, i0);
     at.type = type + i0;
     at.mask = ALOAD(mask, i0);
-    (void)store;
-    alanes_apply(&at, ops, first, npost + nfinal, prm);
+#ifdef FUSED_DRAG /* fix drag's ops read the position */
+    at.x = a3_load(x, i0);
+#ifdef SPLIT_POS
+    at.xl = a3_load(xlo, i0);
+#endif
+#endif
+    alanes_apply(&at, ops, first, npost + nfinal, prm, store, i0);
     if (look) { /* alanes_step stores v and omega after its own ops */
+#ifndef FUSED_DRAG
         at.x = a3_load(x, i0);
 #ifdef SPLIT_POS
         at.xl = a3_load(xlo, i0);
+#endif
 #endif
         if (ninit == 0 && nfinal > 0) {
             a3_store(at.v, v, i0);

@@ -415,11 +415,11 @@ static int pair_lanes(struct gravel *g, const struct pair_caps *pc, int single, 
 }
 
 /* The gather's width: the device's lanes in a scene kernels/atom_lanes.cl
- * covers (no fused fix drag, velocity remap or triclinic box); one
- * particle per work-item otherwise. */
+ * covers (no velocity remap or triclinic box); one particle per work-item
+ * otherwise. */
 static int atom_lanes(struct gravel *g, int single)
 {
-    if (g->dom.triclinic || fix_defines(g, "VREMAP") || fix_defines(g, "FUSED_DRAG"))
+    if (g->dom.triclinic || fix_defines(g, "VREMAP"))
         return 1;
     return single ? g->eng->ocl.lanes_float : g->eng->ocl.lanes_double;
 }

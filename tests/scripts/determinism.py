@@ -178,14 +178,27 @@ def check_tail():
 
 def check_drag():
     """fix drag fused (post_force and end_of_step ops in the gather) against
-    its own kernels (GRAVEL_FUSE=0) and without the look-ahead, for each
-    update it fuses; the fused run must launch fewer kernels per step."""
+    its own kernels (GRAVEL_FUSE=0), without the look-ahead, and in the
+    gather's lanes at widths 1 and 16 (kernels/atom_lanes.cl: the flow's
+    sincos and the kicks in lanes), for each update it fuses; the fused run
+    must launch fewer kernels per step. In single precision (the built-in
+    sincos, lane by lane) widths 1 and 16 for implicit and exact."""
     bad = 0
+    for update in ("implicit", "exact"):
+        deck = DRAG.format(update=update, scene=SCENE)
+        ref = run(deck, {"GRAVEL_LANES": "1"}, ("-precision", "single"))
+        rows, dump = run(deck, {"GRAVEL_LANES": "16"}, ("-precision", "single"))
+        ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
+        bad += not check("drag_%s_single_lanes_16_equals_1" % update, ok,
+                         (dump or "")[-300:] if rows is None or ref[0] is None
+                         else first_difference(ref[1], dump))
     for update in ("explicit", "implicit", "exact"):
         deck = DRAG.format(update=update, scene=SCENE)
         rows_f, dump_f, out_f = run_full(deck)
         for name, env in (("unfused", {"GRAVEL_FUSE": "0"}),
-                          ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"})):
+                          ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"}),
+                          ("lanes_1", {"GRAVEL_LANES": "1"}),
+                          ("lanes_16", {"GRAVEL_LANES": "16"})):
             rows, dump, out = run_full(deck, env)
             ok = rows_f is not None and rows is not None and dump == dump_f and rows == rows_f
             detail = ((dump_f or "") + (dump or ""))[-300:] if rows_f is None or rows is None \
