@@ -154,6 +154,16 @@ struct atom_lanes {
     auint mask;
 };
 
+#ifdef HAS_ROTATION
+/* nve/sphere's rotational kick omega += dtirotate torque, kept where on */
+static inline void aomega_kick(struct atom_lanes *a, const areal dtirotate, const amask on)
+{
+    a->om.x = select(a->om.x, a->om.x + dtirotate * a->tq.x, on);
+    a->om.y = select(a->om.y, a->om.y + dtirotate * a->tq.y, on);
+    a->om.z = select(a->om.z, a->om.z + dtirotate * a->tq.z, on);
+}
+#endif
+
 #ifdef FUSED_DRAG /* fix drag's ops in lanes: kernels/drag_law.cl's arithmetic */
 /* flow_sincos of each lane; in single precision (the built-in sincos) and
  * with a lane out of its range, the one-value form lane by lane */
@@ -284,10 +294,7 @@ alanes_apply(struct atom_lanes *a, __global const int *ops, const int first, con
             a->xl = a3_sel(a->xl, xl, on);
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_INITIAL) {
-                const areal dtirotate = p[2] / (a->r * a->r * a->m); /* p[2]: dtf / I */
-                a->om.x = select(a->om.x, a->om.x + dtirotate * a->tq.x, on);
-                a->om.y = select(a->om.y, a->om.y + dtirotate * a->tq.y, on);
-                a->om.z = select(a->om.z, a->om.z + dtirotate * a->tq.z, on);
+                aomega_kick(a, p[2] / (a->r * a->r * a->m), on); /* p[2]: dtf / I */
             }
 #endif
         } else if (kind == FOP_NVE_FINAL || kind == FOP_NVE_SPHERE_FINAL) {
@@ -297,10 +304,7 @@ alanes_apply(struct atom_lanes *a, __global const int *ops, const int first, con
             a->v.z = select(a->v.z, a->v.z + dtfm * a->f.z, on);
 #ifdef HAS_ROTATION
             if (kind == FOP_NVE_SPHERE_FINAL) {
-                const areal dtirotate = p[1] / (a->r * a->r * a->m); /* p[1]: dtf / I */
-                a->om.x = select(a->om.x, a->om.x + dtirotate * a->tq.x, on);
-                a->om.y = select(a->om.y, a->om.y + dtirotate * a->tq.y, on);
-                a->om.z = select(a->om.z, a->om.z + dtirotate * a->tq.z, on);
+                aomega_kick(a, p[1] / (a->r * a->r * a->m), on); /* p[1]: dtf / I */
             }
 #endif
         }
