@@ -17,7 +17,14 @@ table.dat; the resumed histogram goes to a .from<S>.hist file.
 A new machine (C): B's state at the kill is parked (tools/agglomeration/park.sh,
 as a session whose files do not survive commits it) and a sweep in an empty
 run directory takes both points from there, resumes point 2 at the same step
-and ends with A's rows, digit for digit."""
+and ends with A's rows, digit for digit.
+
+Two points at once (D, AGGLO_JOBS=2): a sweep in an empty run directory
+starts both points (the second once the first has written the initial
+state), is killed when both have a restart file, and run again with
+AGGLO_JOBS=2; the unfinished points resume (a point may have finished
+before the kill: it is kept) and both end with A's rows, digit for digit.
+An AGGLO_JOBS that is not a positive integer is refused."""
 import os
 import re
 import signal
@@ -43,17 +50,18 @@ def check(name, ok, detail):
     failures += not ok
 
 
-def env(out, parked):
+def env(out, parked, jobs=1):
     e = dict(os.environ)
+    e.update(AGGLO_JOBS=str(jobs))
     e.update(AGGLO_PARKED=parked, AGGLO_N="27", AGGLO_TEND="10", AGGLO_NOUT="40", AGGLO_SY="1.5",
              AGGLO_ST="0.1 10.0", AGGLO_CHECKPOINTS="8", AGGLO_OUT=out,
              AGGLO_DOC=os.path.join(out, "doc"), AGGLO_PLOT="0", AGGLO_TAG="resume")
     return e
 
 
-def sweep(out, parked):
-    return subprocess.run(["sh", SWEEP], env=env(out, parked), capture_output=True, text=True,
-                          timeout=600)
+def sweep(out, parked, jobs=1):
+    return subprocess.run(["sh", SWEEP], env=env(out, parked, jobs), capture_output=True,
+                          text=True, timeout=600)
 
 
 def rows(path):
@@ -130,6 +138,43 @@ def main():
               "table.dat identical: %s (%s)" % (ta == tb, tb.strip().splitlines()[-1]))
         hist = os.path.join(b_dir, "agglo_Sy1.5_St10.0.from%d.hist" % step)
         check("resumed_histogram", os.path.isfile(hist), hist)
+        # D: two points at once, killed while both run, then resumed two at once
+        d_dir = os.path.join(tmp, "D")
+        os.makedirs(d_dir)
+        p = subprocess.Popen(["sh", SWEEP], env=env(d_dir, parked + "-none", 2),
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                             start_new_session=True)
+        cps = [os.path.join(d_dir, "agglo_Sy1.5_St%s.restart.a" % st) for st in ("0.1", "10.0")]
+        t0 = time.time()
+        while not all(map(os.path.exists, cps)) and p.poll() is None and time.time() - t0 < 300:
+            time.sleep(0.01)
+        killed = p.poll() is None
+        if killed:
+            os.killpg(p.pid, signal.SIGKILL)
+        p.wait()
+        d = sweep(d_dir, parked + "-none", 2)
+        steps = [int(x) for x in re.findall(r"grid point Sy 1.5 St [0-9.]+ starts at step (\d+)",
+                                            d.stdout)]
+        kept2 = d.stdout.count("finished earlier, kept")
+        both = [os.path.isfile(os.path.join(d_dir, "screen_Sy1.5_St%s.txt" % st))
+                for st in ("0.1", "10.0")]
+        check("jobs2_resumed", killed and d.returncode == 0 and len(steps) >= 1 and all(both)
+              and "2 grid points at once" in d.stdout
+              and len(steps) + kept2 == 2 and all(0 < x < NSTEPS for x in steps),
+              "killed while running: %s; rerun with AGGLO_JOBS=2 resumed at steps %s, kept %d "
+              "finished point(s)%s" % (killed, steps, kept2,
+                                      "" if d.returncode == 0 else "; " + (d.stdout + d.stderr)[-300:]))
+        for st in ("0.1", "10.0"):
+            name = "agglo_Sy1.5_St%s.log" % st
+            ra, _ = rows(os.path.join(a_dir, name))
+            rd, cd = rows(os.path.join(d_dir, name)) if os.path.isfile(
+                os.path.join(d_dir, name)) else ([], False)
+            check("jobs2_rows_equal_St" + st, cd and ra == rd and len(ra) > 40,
+                  "%d rows one at a time, %d two at once (interrupted, resumed)"
+                  % (len(ra), len(rd)))
+        bad = sweep(os.path.join(tmp, "E"), parked + "-none", "two")
+        check("jobs_refused", bad.returncode != 0 and "AGGLO_JOBS must be a positive integer"
+              in bad.stdout, (bad.stdout + bad.stderr).strip()[-200:])
     print("%d failure(s)" % failures)
     return 1 if failures else 0
 
