@@ -55,6 +55,7 @@ struct nbr {
     size_t rsz;
     int history, rotation, pair_tc; /* the engine's, when the records were sized */
     int ncell, nc[3];
+    long cells_per_atom;        /* env GRAVEL_CELLS_PER_ATOM: the grid's budget (-1: grid_dims's) */
     double cutmax, lo[3], hi[3], inv[3];
     double cutpair;             /* largest cut-off of a pair (minimum image needs L >= 2 x) */
     double lmp_cutmax;          /* -compat lammps2021: LAMMPS's cutneighmax (its bins) */
@@ -523,6 +524,15 @@ void nbr_setup(struct gravel *g)
     b->k_overlap = eng_kernel(g, "nbr_overlap");
     b->k_bin_multi = eng_kernel(g, "nbr_bin_multi");
     b->k_build_multi = eng_kernel(g, "nbr_build_multi");
+    b->cells_per_atom = -1;
+    const char *cpa = getenv("GRAVEL_CELLS_PER_ATOM");
+    if (cpa && *cpa) {
+        char *end;
+        b->cells_per_atom = strtol(cpa, &end, 10);
+        if (*end || b->cells_per_atom < 0 || b->cells_per_atom > 1024)
+            gr_error(g, "GRAVEL_CELLS_PER_ATOM must be a number of cells per atom 0..1024, got "
+                        "'%.32s'", cpa);
+    }
     if (!b->flags)
         b->flags = eng_alloc(g, 4 * sizeof(cl_int), "neighbor flags");
     if (!b->sums)
@@ -882,9 +892,19 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
 }
 
 /* Cells per dimension of a grid of cells >= cut over the box, coarsened
- * (x 1.25) until there are at most 8 per atom (natoms) + 4096. */
-static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
+ * (x 1.25) until there are at most max(8 natoms + 4096, min(32 natoms,
+ * 2^20)), or with cpa >= 0 (GRAVEL_CELLS_PER_ATOM) cpa natoms + 4096. A
+ * rebuild's cost has a part per cell (the counting sort, 12 bytes each) and a
+ * part per candidate pair (the 27 cells around each atom): a sparse scene's
+ * coarse cells hold many candidates, so a small one may have up to 32 cells
+ * per atom (the 10^4-particle agglomeration box: cells of the cut-off, 0.1
+ * m, instead of 0.157 m), at most 2^20 cells in all (12 MB). The lists do
+ * not depend on the grid (rows in tag order). */
+static long grid_dims(const struct domain *d, double cut, int natoms, long cpa, int nc[3])
 {
+    const long small = natoms < (1L << 20) / 32 ? 32L * natoms : 1L << 20;
+    const long budget = cpa >= 0 ? cpa * natoms + 4096
+                                 : (small > 8L * natoms + 4096 ? small : 8L * natoms + 4096);
     double f[3];
     domain_ufac(d, f);
     for (;;) {
@@ -899,7 +919,7 @@ static long grid_dims(const struct domain *d, double cut, int natoms, int nc[3])
             nc[q] = m;
             total *= m;
         }
-        if (total <= 8L * natoms + 4096 || total <= 1)
+        if (total <= budget || total <= 1)
             return total;
         cut *= 1.25;
     }
@@ -919,7 +939,7 @@ static void make_grids_multi(struct gravel *g, struct nbr *b)
         if (b->mcount[c] == 0 && !b->ninterval)
             m[0] = m[1] = m[2] = 1;
         else
-            grid_dims(d, b->cutab[c * nc + c], b->mcount[c], m);
+            grid_dims(d, b->cutab[c * nc + c], b->mcount[c], b->cells_per_atom, m);
         b->mbase[c] = (int)total;
         total += (long)m[0] * m[1] * m[2];
         if (total > 1L << 30)
@@ -943,7 +963,7 @@ static void make_grid(struct gravel *g, struct nbr *b, int n)
     struct domain *d = &g->dom;
     double f[3];
     domain_ufac(d, f);
-    grid_dims(d, b->cutmax, n, b->nc); /* a sparse scene: fewer, larger cells */
+    grid_dims(d, b->cutmax, n, b->cells_per_atom, b->nc); /* a sparse scene: larger cells */
     b->ncell = b->nc[0] * b->nc[1] * b->nc[2];
     if (b->multi)
         make_grids_multi(g, b);

@@ -40,6 +40,8 @@ single precision; without the deform and with gran/hooke/history in single)
 gives the same bits with a rebuild every step as with the default schedule
 (periodic_rebuild_every_step_*; `determinism.py rebuild_schedule` runs only
 these).
+The cohesive suspension gives the same bits on a coarser cell grid and on
+a finer budget (cells_per_atom_*: GRAVEL_CELLS_PER_ATOM=0 and 64).
 A scene under 1500 atoms (the dense packing) runs on the serial device
 unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
@@ -270,6 +272,23 @@ PGRAN_DEFORM = ("change_box all triclinic\n"
                 "fix def all deform 1 xy erate 0.3 z erate -0.1 remap v")
 
 
+def check_cell_grid():
+    """The cohesive suspension (600 spheres in a 2 m box, list reach 0.1 m:
+    20^3 cells by default) on a coarser grid (GRAVEL_CELLS_PER_ATOM=0: at most
+    4096 cells, 16^3) and with a budget of 64 cells per atom: rows are in
+    partner-tag order, so the lists and the bits do not depend on the grid."""
+    bad = 0
+    deck = DRAG.format(update="explicit", scene=SCENE)
+    ref = run(deck)
+    for cpa in ("0", "64"):
+        rows, dump = run(deck, {"GRAVEL_CELLS_PER_ATOM": cpa})
+        ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
+        bad += not check("cells_per_atom_%s_equals_default" % cpa, ok,
+                         (dump or "")[-300:] if rows is None or ref[0] is None
+                         else first_difference(ref[1], dump))
+    return bad
+
+
 def check_rebuild_schedule():
     """The periodic packing (PGRAN) with `neigh_modify every 1 delay 0 check
     no` against the default schedule: pair granular under fix deform in
@@ -436,6 +455,7 @@ def main():
                          "" if ok else first_difference(dump_f, dump_n))
     bad += check_fused_lanes()
     bad += check_drag()
+    bad += check_cell_grid()
     bad += check_tail()
     bad += check_serial_default()
     rows, dump = run(PACK)
