@@ -902,9 +902,12 @@ static void wrap_and_extent(struct gravel *g, struct nbr *b)
  * not depend on the grid (rows in tag order). */
 static long grid_dims(const struct domain *d, double cut, int natoms, long cpa, int nc[3])
 {
-    const long small = natoms < (1L << 20) / 32 ? 32L * natoms : 1L << 20;
-    const long budget = cpa >= 0 ? cpa * natoms + 4096
-                                 : (small > 8L * natoms + 4096 ? small : 8L * natoms + 4096);
+    const long small = 32L * natoms < (1L << 20) ? 32L * natoms : 1L << 20;
+    long budget = 8L * natoms + 4096;
+    if (cpa >= 0)
+        budget = cpa * natoms + 4096;
+    else if (small > budget)
+        budget = small;
     double f[3];
     domain_ufac(d, f);
     for (;;) {

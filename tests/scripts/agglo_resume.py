@@ -64,6 +64,30 @@ def sweep(out, parked, jobs=1):
                           text=True, timeout=600)
 
 
+def sweep_killed(out, parked, checkpoints, jobs=1):
+    """Start a sweep in `out` and kill its whole process group (SIGKILL, as a
+    batch system's wall-time limit does) once every file in `checkpoints`
+    exists; True when it was still running then."""
+    os.makedirs(out)
+    p = subprocess.Popen(["sh", SWEEP], env=env(out, parked, jobs), stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL, start_new_session=True)
+    t0 = time.time()
+    while not all(map(os.path.exists, checkpoints)) and p.poll() is None \
+            and time.time() - t0 < 300:
+        time.sleep(0.01)
+    killed = p.poll() is None
+    if killed:
+        os.killpg(p.pid, signal.SIGKILL)
+    p.wait()
+    return killed
+
+
+def rows_if(run_dir, name):
+    """rows() of a log that may be missing: ([], False) then."""
+    path = os.path.join(run_dir, name)
+    return rows(path) if os.path.isfile(path) else ([], False)
+
+
 def rows(path):
     info = average.parse_log(path)
     return info["rows"], info["completed"]
@@ -78,17 +102,7 @@ def main():
             check("uninterrupted_sweep", False, (a.stdout + a.stderr)[-400:])
             return 1
         # B: kill the sweep once the second point has written a checkpoint
-        os.makedirs(b_dir)
-        p = subprocess.Popen(["sh", SWEEP], env=env(b_dir, parked), stdout=subprocess.DEVNULL,
-                             stderr=subprocess.DEVNULL, start_new_session=True)
-        cp = os.path.join(b_dir, "agglo_Sy1.5_St10.0.restart.a")
-        t0 = time.time()
-        while not os.path.exists(cp) and p.poll() is None and time.time() - t0 < 300:
-            time.sleep(0.01)
-        killed = p.poll() is None
-        if killed:
-            os.killpg(p.pid, signal.SIGKILL)
-        p.wait()
+        killed = sweep_killed(b_dir, parked, [os.path.join(b_dir, "agglo_Sy1.5_St10.0.restart.a")])
         log2 = os.path.join(b_dir, "agglo_Sy1.5_St10.0.log")
         done2 = "agglomeration grid point done" in open(log2).read()
         check("interrupted", killed and not done2,
@@ -128,8 +142,7 @@ def main():
         for st in ("0.1", "10.0"):
             name = "agglo_Sy1.5_St%s.log" % st
             ra, _ = rows(os.path.join(a_dir, name))
-            rc_, cc = rows(os.path.join(c_dir, name)) if os.path.isfile(
-                os.path.join(c_dir, name)) else ([], False)
+            rc_, cc = rows_if(c_dir, name)
             check("parked_rows_equal_St" + st, cc and ra == rc_ and len(ra) > 40,
                   "%d rows uninterrupted, %d parked+resumed" % (len(ra), len(rc_)))
         ta = open(os.path.join(a_dir, "table.dat")).read()
@@ -140,18 +153,8 @@ def main():
         check("resumed_histogram", os.path.isfile(hist), hist)
         # D: two points at once, killed while both run, then resumed two at once
         d_dir = os.path.join(tmp, "D")
-        os.makedirs(d_dir)
-        p = subprocess.Popen(["sh", SWEEP], env=env(d_dir, parked + "-none", 2),
-                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                             start_new_session=True)
-        cps = [os.path.join(d_dir, "agglo_Sy1.5_St%s.restart.a" % st) for st in ("0.1", "10.0")]
-        t0 = time.time()
-        while not all(map(os.path.exists, cps)) and p.poll() is None and time.time() - t0 < 300:
-            time.sleep(0.01)
-        killed = p.poll() is None
-        if killed:
-            os.killpg(p.pid, signal.SIGKILL)
-        p.wait()
+        killed = sweep_killed(d_dir, parked + "-none", [
+            os.path.join(d_dir, "agglo_Sy1.5_St%s.restart.a" % st) for st in ("0.1", "10.0")], 2)
         d = sweep(d_dir, parked + "-none", 2)
         steps = [int(x) for x in re.findall(r"grid point Sy 1.5 St [0-9.]+ starts at step (\d+)",
                                             d.stdout)]
@@ -167,8 +170,7 @@ def main():
         for st in ("0.1", "10.0"):
             name = "agglo_Sy1.5_St%s.log" % st
             ra, _ = rows(os.path.join(a_dir, name))
-            rd, cd = rows(os.path.join(d_dir, name)) if os.path.isfile(
-                os.path.join(d_dir, name)) else ([], False)
+            rd, cd = rows_if(d_dir, name)
             check("jobs2_rows_equal_St" + st, cd and ra == rd and len(ra) > 40,
                   "%d rows one at a time, %d two at once (interrupted, resumed)"
                   % (len(ra), len(rd)))

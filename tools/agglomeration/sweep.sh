@@ -100,6 +100,13 @@ fi
 running="" # "pid:point" of the grid points running in the background (AGGLO_JOBS > 1)
 failed=0
 
+# gravel on grid point ($sy, $st), with the extra arguments given (resume, log)
+run_point() {
+    "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" -var tend "$tend" \
+        -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var kcset "$kcset" \
+        -var prefix agglo "$@"
+}
+
 # Waits until fewer than $1 background points run; reports those that ended.
 reap() {
     while :; do
@@ -141,11 +148,8 @@ print(max(f, key=lambda a: os.stat(a).st_mtime_ns) if f else "")' "$p.restart.a"
         if [ "$jobs" -gt 1 ]; then
             reap "$jobs"
             [ $failed = 0 ] || break 2
-            : > "screen_${p#agglo_}.txt"
-            "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" \
-                -var tend "$tend" -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" \
-                -var kcset "$kcset" -var prefix agglo "$@" -log "sweep_${p#agglo_}.log" \
-                > "screen_${p#agglo_}.txt" 2>&1 &
+            : > "screen_${p#agglo_}.txt" # emptied now: the wait below must not read a stale one
+            run_point "$@" -log "sweep_${p#agglo_}.log" > "screen_${p#agglo_}.txt" 2>&1 &
             pid=$!
             running="$running $pid:$p"
             echo "grid point Sy $sy St $st: started (pid $pid, output in screen_${p#agglo_}.txt)"
@@ -160,10 +164,7 @@ print(max(f, key=lambda a: os.stat(a).st_mtime_ns) if f else "")' "$p.restart.a"
         # screen.txt (followed from its size now: lines written before tail starts count).
         touch screen.txt
         off=$(( $(wc -c < screen.txt) + 1 ))
-        "$root/bin/gravel" -in "$deck" -var Sy "$sy" -var St "$st" -var N "$n" -var tend "$tend" \
-            -var nout "$nout" -var seed "$seed" -var checkpoints "$ncp" -var kcset "$kcset" \
-            -var prefix agglo "$@" \
-            -log sweep.log >> screen.txt 2>&1 &
+        run_point "$@" -log sweep.log >> screen.txt 2>&1 &
         pid=$!
         tail -c +$off -f screen.txt --pid=$pid 2>/dev/null |
             grep --line-buffered -E '^(agglomeration grid point|grid point|check:|ERROR)' || true
