@@ -118,10 +118,17 @@
     Y(I, want_fmesh) Y(M, mstress) Y(I, want_mstress) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(CML, tag) Y(MI, mlist)      \
     Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) Y(POS_LO, xlo)
 
-/* REGION_KERNEL: nnode nodes (RG_*) under combinator comb */
+/* REGION_KERNEL: nwall region walls of one law (a set: RS_* of
+ * kernels/wall_layout.h); wall w's parameters, history and `contacts`
+ * records are param<w>, hist<w> and contacts<w> (the atoms' f where it has
+ * none); temp / heatflow as wall_atoms' */
 #define KARGS_region_kernel(X, Y)                                                              \
-    X(PART, wall_atoms) Y(PART, wall_law) Y(CM, nodes) Y(I, nnode) Y(I, comb)                 \
-    Y(I, rinterior) Y(I, slots) Y(I, dynamic) Y(R, dt) Y(I, shearupdate) Y(POS_LO, xlo)
+    X(I, n) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius) Y(CM, rmass)             \
+    Y(CMI, type) Y(M, f) Y(M, torque) Y(MF, acc) Y(MI, astep) Y(I, step) Y(CM, temp)          \
+    Y(M, heatflow) Y(CM, set) Y(I, nwall) Y(I, ntypes) Y(CM, param0) Y(CM, param1)            \
+    Y(CM, param2) Y(CM, param3) Y(M, hist0) Y(M, hist1) Y(M, hist2) Y(M, hist3)               \
+    Y(M, contacts0) Y(M, contacts1) Y(M, contacts2) Y(M, contacts3) Y(R, dt)                  \
+    Y(I, shearupdate) Y(POS_LO, xlo)
 
 /* region_probe: the region surface contacts of each atom of the group that
  * the region matches (out: RG_PROBE_W REAL per atom, kernels/wall_region.cl) */

@@ -64,6 +64,17 @@ enum region_node_layout {
 enum { RG_OPEN_RIM2021 = 6 };
 enum region_primitive { RG_BLOCK = 1, RG_SPHERE, RG_CYLINDER, RG_CONE, RG_PLANE };
 enum { RG_MAXNODE = 4, RG_MAXC = 8 };
+/* A set of region walls run by one launch (kernels/wall_region.cl
+ * REGION_KERNEL, filled by src/contact/wall_region.c every step): up to
+ * RS_MAXWALL walls of one law, in the order of their post_force calls; per
+ * wall a header of RS_HEAD REAL (its group bit, history width, accuracy
+ * code, node count, combinator, side, slots, motion, parameter form, heat
+ * and `contacts` switches), and its nodes from RS_NODES(w). */
+enum region_set_layout { RS_GROUPBIT = 0, RS_HW, RS_ACODE, RS_NNODE, RS_COMB, RS_INTERIOR,
+                         RS_SLOTS, RS_DYNAMIC, RS_BYTYPE, RS_NPARAM, RS_WHEAT, RS_TWALL,
+                         RS_CONTACTS, RS_HEAD = 16, RS_MAXWALL = 4 };
+#define RS_NODES(w) (RS_MAXWALL * RS_HEAD + (w) * RG_MAXNODE * RG_NODE)
+#define RS_SIZE RS_NODES(RS_MAXWALL)
 /* fix wall/gran's `contacts` record per atom (LAMMPS's per-atom array, its
  * 8 columns): touching (1 or 0), the wall's force on the atom (3), the
  * contact point on the wall (3, device coordinates: the host adds the run's

@@ -105,13 +105,19 @@ static inline int rg_inside(__global const REAL *nd, const REAL3 x)
     return dist <= rad && a >= p[4] && a <= p[5];
 }
 
-/* Region::match in the compound's frame (flip: the side inverted) */
-static inline int rg_match(__global const REAL *nd, const REAL3 x, const int flip)
+/* Region::match of a node, y the point in the node's frame (flip: the side
+ * inverted) */
+static inline int rg_match_at(__global const REAL *nd, const REAL3 y, const int flip)
 {
-    const REAL3 y = rg_inverse(nd, x);
     if (nd[RG_OPENFLAG] != 0)
         return 1;
     return rg_inside(nd, y) == (((int)nd[RG_INTERIOR]) ^ flip);
+}
+
+/* the same for x in the compound's frame */
+static inline int rg_match(__global const REAL *nd, const REAL3 x, const int flip)
+{
+    return rg_match_at(nd, rg_inverse(nd, x), flip);
 }
 
 static inline int rg_open(__global const REAL *nd, const int face)
@@ -487,11 +493,12 @@ static inline int rg_exterior(__global const REAL *nd, const REAL3 x, const REAL
 }
 
 /* Region::surface of one node (flip: side inverted, as union / intersect do
- * for their exterior), contacts written from c[0]; returns how many. */
-static inline int rg_surface(__global const REAL *nd, const int node, const REAL3 xorig,
-                             const REAL cutoff, const int flip, struct rg_contact *c)
+ * for their exterior) for xorig, x its point in the node's frame; contacts
+ * written from c[0]; returns how many. */
+static inline int rg_surface_at(__global const REAL *nd, const int node, const REAL3 xorig,
+                                const REAL3 x, const REAL cutoff, const int flip,
+                                struct rg_contact *c)
 {
-    const REAL3 x = rg_inverse(nd, xorig);
     int n;
     if (nd[RG_OPENFLAG] == 0)
         n = (((int)nd[RG_INTERIOR]) ^ flip) ? rg_interior(nd, x, cutoff, c)
@@ -508,12 +515,26 @@ static inline int rg_surface(__global const REAL *nd, const int node, const REAL
     return n;
 }
 
-/* Region::match of the whole region */
+/* the same with the node's frame found here */
+static inline int rg_surface(__global const REAL *nd, const int node, const REAL3 xorig,
+                             const REAL cutoff, const int flip, struct rg_contact *c)
+{
+    return rg_surface_at(nd, node, xorig, rg_inverse(nd, xorig), cutoff, flip, c);
+}
+
+/* The point a region's own tests take: x in its node's frame for a single
+ * primitive (comb 0; computed once for match and surface), else x. */
+static inline REAL3 region_frame(__global const REAL *nodes, const int comb, const REAL3 x)
+{
+    return comb == 0 ? rg_inverse(nodes, x) : x;
+}
+
+/* Region::match of the whole region (xf: region_frame's point) */
 static inline int region_match(__global const REAL *nodes, const int nnode, const int comb,
-                               const int interior, const REAL3 x)
+                               const int interior, const REAL3 x, const REAL3 xf)
 {
     if (comb == 0)
-        return rg_match(nodes, x, 0);
+        return rg_match_at(nodes, xf, 0);
     int any = 0, all = 1;
     for (int k = 0; k < nnode; k++) {
         const int m = rg_match(nodes + k * RG_NODE, x, 0);
@@ -526,13 +547,14 @@ static inline int region_match(__global const REAL *nodes, const int nnode, cons
 /* Region::surface of the whole region: up to RG_MAXC contacts into c. A
  * union keeps a sub-region's contact whose point lies in no other (closed)
  * sub-region, an intersect one whose point lies in all others; the side out
- * of both works on the inverted sub-regions (LAMMPS RegUnion, RegIntersect). */
+ * of both works on the inverted sub-regions (LAMMPS RegUnion, RegIntersect).
+ * xf: region_frame's point. */
 static inline int region_surface(__global const REAL *nodes, const int nnode, const int comb,
-                                 const int interior, const REAL3 x, const REAL cutoff,
-                                 struct rg_contact *c)
+                                 const int interior, const REAL3 x, const REAL3 xf,
+                                 const REAL cutoff, struct rg_contact *c)
 {
     if (comb == 0)
-        return rg_surface(nodes, 0, x, cutoff, 0, c);
+        return rg_surface_at(nodes, 0, x, xf, cutoff, 0, c);
     const int flip = !interior;
     int n = 0;
     for (int k = 0; k < nnode && n < RG_MAXC; k++) {
@@ -640,78 +662,97 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
     return 1;
 }
 
-/* Region walls (fix wall/gran/region): one work-item per atom of the group.
- * An atom the region does not match is skipped, its history kept; otherwise
- * its contacts (region_surface) run through the law's contact body in
- * region order, each with its slot (region_slots; per atom 1 + (1 + hw)
- * slots REAL, hw = has_history). dynamic: the surface moves with the
- * velocity of the contact's node (0: at rest; the host passes 0 for union /
+/* Region walls (fix wall/gran/region): one work-item per atom, the set's
+ * nwall walls in turn (RS_* of kernels/wall_layout.h: the walls of one law
+ * whose post_force calls follow each other, src/contact/wall_region.c), each
+ * as its own launch would be: an atom out of the wall's group or not
+ * matched by its region is skipped, its history kept; otherwise its
+ * contacts (region_surface) run through the law's contact body in region
+ * order, each with its slot (region_slots; per atom 1 + (1 + hw) slots
+ * REAL, hw the wall's history width), the forces summed onto f and each
+ * wall's torque sum added to torque, in wall order (the sums of separate
+ * launches, bit for bit). A wall's surface moves with the velocity of the
+ * contact's node when RS_DYNAMIC (0: at rest; the host gives 0 for union /
  * intersect, as LAMMPS 2021). BODY: a CONTACT_BODY instance; ROW its form.
  * JKR 1 (a jkr wall, kernels/wall.cl WALL_REACH): the region is searched to
  * the reach, and a contact beyond touch not touched yet is skipped with the
  * history of slot 0 zeroed, as LAMMPS 2021 FixWallGranRegion does.
  * Arguments: KARGS_region_kernel (kernels/kernel_args.h). */
+#define RS_PICK(a, w) ((w) == 0 ? a##0 : (w) == 1 ? a##1 : (w) == 2 ? a##2 : a##3)
 #define REGION_KERNEL(NAME, BODY, ROW, JKR)                                                    \
     __kernel void NAME(KA_PARAMS(region_kernel))                                               \
     {                                                                                          \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \
-        WALL_CONTACT_CLEAR(i);                                                                 \
-        if (!(mask[i] & groupbit))                                                             \
-            return;                                                                            \
-        const int hw = has_history; /* history REAL per slot */                                \
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
-        if (!region_match(nodes, nnode, comb, rinterior, xi))                                  \
-            return;                                                                            \
         const REAL radi = radius[i];                                                           \
-        __global const REAL *p = wall_param(param, by_type, type[i] - 1, ntypes, nparam);      \
-        struct rg_contact c[RG_MAXC];                                                          \
-        int nc = region_surface(nodes, nnode, comb, rinterior, xi,                             \
-                                WALL_REACH(JKR, p, radi), c);                                  \
-        if (nc > slots)                                                                        \
-            nc = slots;                                                                        \
-        __global REAL *hist =                                                                  \
-            has_history ? history + (size_t)i * (1 + (1 + hw) * slots) : history;              \
-        int c2r[RG_MAXC];                                                                      \
-        for (int k = 0; k < RG_MAXC; k++)                                                      \
-            c2r[k] = k;                                                                        \
-        if (has_history && !region_slots(hist, slots, hw, c, nc, c2r))                         \
-            return;                                                                            \
-        struct contact_atoms a =                                                               \
-            contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
-        WALL_HEAT_BEGIN(a);                                                                    \
-        struct contact_site s = wall_site(i, radi, radi, hw, acode);                           \
-        s.gated = 1; /* region_surface decided */                                              \
-        s.refine = 0;                                                                          \
-        s.hold = WALL_HOLD(JKR, p);                                                            \
-        struct contact_partner pj;                                                             \
-        pj.omwall = (REAL3)(0);                                                                \
-        WALL_HEAT_PARTNER(pj);                                                                 \
-        REAL3 fsum = vload3(i, f), tsum = (REAL3)(0);                                          \
-        for (int ic = 0; ic < nc; ic++) {                                                      \
-            __global REAL *hs = has_history ? hist + 1 + slots + hw * c2r[ic] : hist;          \
-            s.del = c[ic].del;                                                                 \
-            s.rwall = c[ic].radius;                                                            \
-            s.rgiven = c[ic].r;                                                                \
-            pj.vwall = dynamic ? region_velocity(nodes + c[ic].node * RG_NODE, xi - s.del)     \
-                               : (REAL3)(0);                                                   \
-            REAL h[WALL_ROW_N(ROW)];                                                           \
-            contact_hist_load(h, hs, hw, WALL_ROW_N(ROW));                                     \
-            struct contact_out o;                                                              \
-            if (!BODY(CONTACT_WALL, i, &s, &pj, &a, p, h, &o)) {                               \
-                contact_hist_store(hist + 1 + slots, h, hw, 0); /* LAMMPS 2021: slot 0 */      \
+        REAL3 fsum = vload3(i, f);                                                             \
+        for (int w = 0; w < nwall; w++) {                                                      \
+            __global const REAL *ws = set + w * RS_HEAD;                                       \
+            const int want_contacts = ws[RS_CONTACTS] != 0, wheat = ws[RS_WHEAT] != 0;         \
+            const REAL twall = ws[RS_TWALL];                                                   \
+            __global REAL *contacts = RS_PICK(contacts, w);                                    \
+            WALL_CONTACT_CLEAR(i);                                                             \
+            if (!(mask[i] & (uint)ws[RS_GROUPBIT]))                                            \
                 continue;                                                                      \
+            __global const REAL *nodes = set + RS_NODES(w);                                    \
+            const int nnode = ws[RS_NNODE], comb = ws[RS_COMB], rinterior = ws[RS_INTERIOR];   \
+            const REAL3 xf = region_frame(nodes, comb, xi);                                    \
+            if (!region_match(nodes, nnode, comb, rinterior, xi, xf))                          \
+                continue;                                                                      \
+            const int hw = ws[RS_HW], slots = ws[RS_SLOTS]; /* history REAL per slot */        \
+            __global const REAL *p = wall_param(RS_PICK(param, w), ws[RS_BYTYPE], type[i] - 1, \
+                                                ntypes, ws[RS_NPARAM]);                        \
+            struct rg_contact c[RG_MAXC];                                                      \
+            int nc = region_surface(nodes, nnode, comb, rinterior, xi, xf,                     \
+                                    WALL_REACH(JKR, p, radi), c);                              \
+            if (nc > slots)                                                                    \
+                nc = slots;                                                                    \
+            __global REAL *hist = RS_PICK(hist, w);                                            \
+            if (hw)                                                                            \
+                hist += (size_t)i * (1 + (1 + hw) * slots);                                    \
+            int c2r[RG_MAXC];                                                                  \
+            for (int k = 0; k < RG_MAXC; k++)                                                  \
+                c2r[k] = k;                                                                    \
+            if (hw && !region_slots(hist, slots, hw, c, nc, c2r))                              \
+                continue;                                                                      \
+            struct contact_atoms a =                                                           \
+                contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);          \
+            WALL_HEAT_BEGIN(a);                                                                \
+            struct contact_site s = wall_site(i, radi, radi, hw, ws[RS_ACODE]);                \
+            s.gated = 1; /* region_surface decided */                                          \
+            s.refine = 0;                                                                      \
+            s.hold = WALL_HOLD(JKR, p);                                                        \
+            struct contact_partner pj;                                                         \
+            pj.omwall = (REAL3)(0);                                                            \
+            WALL_HEAT_PARTNER(pj);                                                             \
+            REAL3 tsum = (REAL3)(0);                                                           \
+            for (int ic = 0; ic < nc; ic++) {                                                  \
+                __global REAL *hs = hw ? hist + 1 + slots + hw * c2r[ic] : hist;               \
+                s.del = c[ic].del;                                                             \
+                s.rwall = c[ic].radius;                                                        \
+                s.rgiven = c[ic].r;                                                            \
+                pj.vwall = ws[RS_DYNAMIC] != 0                                                 \
+                               ? region_velocity(nodes + c[ic].node * RG_NODE, xi - s.del)     \
+                               : (REAL3)(0);                                                   \
+                REAL h[WALL_ROW_N(ROW)];                                                       \
+                contact_hist_load(h, hs, hw, WALL_ROW_N(ROW));                                 \
+                struct contact_out o;                                                          \
+                if (!BODY(CONTACT_WALL, i, &s, &pj, &a, p, h, &o)) {                           \
+                    contact_hist_store(hist + 1 + slots, h, hw, 0); /* LAMMPS 2021: slot 0 */  \
+                    continue;                                                                  \
+                }                                                                              \
+                contact_hist_store(hs, h, hw, 1);                                              \
+                fsum += o.f;                                                                   \
+                tsum += o.ti;                                                                  \
+                WALL_HEAT_ADD(o);                                                              \
+                WALL_CONTACT_PUT(i, o.f, xi - s.del, radi);                                    \
             }                                                                                  \
-            contact_hist_store(hs, h, hw, 1);                                                  \
-            fsum += o.f;                                                                       \
-            tsum += o.ti;                                                                      \
-            WALL_HEAT_ADD(o);                                                                  \
-            WALL_CONTACT_PUT(i, o.f, xi - s.del, radi);                                        \
+            WALL_ADD_TORQUE(torque, i, tsum);                                                  \
+            WALL_HEAT_STORE(i);                                                                \
         }                                                                                      \
         vstore3(fsum, i, f);                                                                   \
-        WALL_ADD_TORQUE(torque, i, tsum);                                                      \
-        WALL_HEAT_STORE(i);                                                                    \
     }
 
 /* The contacts REGION_KERNEL finds for each atom, written out for the host
@@ -729,10 +770,11 @@ __kernel void region_probe(KA_PARAMS(region_probe))
     if (!(mask[i] & groupbit))
         return;
     const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);
-    if (!region_match(nodes, nnode, comb, rinterior, xi))
+    const REAL3 xf = region_frame(nodes, comb, xi);
+    if (!region_match(nodes, nnode, comb, rinterior, xi, xf))
         return;
     struct rg_contact c[RG_MAXC];
-    int nc = region_surface(nodes, nnode, comb, rinterior, xi, radius[i], c);
+    int nc = region_surface(nodes, nnode, comb, rinterior, xi, xf, radius[i], c);
     if (nc > slots)
         nc = slots;
     o[0] = (REAL)nc;

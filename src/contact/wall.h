@@ -73,7 +73,8 @@ struct wall_law_args wall_law_args(struct gravel *g, const struct wall_law *law)
 struct region;
 
 struct wall_region {
-    cl_mem nodes;
+    cl_mem nodes;               /* the nodes for region_probe */
+    cl_mem set;                 /* RS_SIZE REAL: the set this wall leads (RS_* layout) */
     int nnode, comb, interior, slots;
 };
 

@@ -1,7 +1,7 @@
 /* wall_region.c - host side of the region kind of the wall stage
  * (kernels/wall_region.cl): a region packed as device nodes (layout RG_* of
  * the kernel file), its motion evaluated once per step (Region::prematch and
- * set_velocity), the launch. */
+ * set_velocity), the launch of a set of walls. */
 #include "wall_region.h"
 
 #include <math.h>
@@ -115,21 +115,31 @@ size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region 
     if (wr->nodes)
         clReleaseMemObject(wr->nodes);
     wr->nodes = eng_alloc(g, (size_t)nnode * RG_NODE * eng_get(g)->rsz, "wall region nodes");
+    if (wr->set)
+        clReleaseMemObject(wr->set);
+    wr->set = eng_alloc(g, (size_t)RS_SIZE * eng_get(g)->rsz, "wall region set");
     for (int k = 0; k < nnode; k++) /* a new run: velocities by difference restart */
         (comb ? r->sub[k] : r)->vel_step = -1;
     return law->history ? (size_t)(1 + (1 + law->history) * wr->slots) * eng_get(g)->rsz : 0;
 }
 
-/* the nodes of r at its present motion state to the device */
-static void upload_nodes(struct gravel *g, struct wall_region *wr, const struct region *r)
+/* the nodes of r at its present motion state into nodes */
+static void pack_nodes(struct gravel *g, const struct wall_region *wr, const struct region *r,
+                       double *nodes)
 {
-    double nodes[WALL_REGION_MAXNODE * RG_NODE];
     int walloff = 0;
     for (int k = 0; k < wr->nnode; k++) {
         const struct region *s = wr->comb ? r->sub[k] : r;
         pack_node(s, walloff, g->eng->origin, g->opt.lammps2021, nodes + k * RG_NODE);
         walloff += s->cmax;
     }
+}
+
+/* the nodes of r at its present motion state to the device */
+static void upload_nodes(struct gravel *g, struct wall_region *wr, const struct region *r)
+{
+    double nodes[WALL_REGION_MAXNODE * RG_NODE];
+    pack_nodes(g, wr, r, nodes);
     eng_write_reals(g, wr->nodes, (size_t)wr->nnode * RG_NODE, nodes);
 }
 
@@ -158,39 +168,86 @@ void wall_region_probe(struct gravel *g, struct fix *f, struct wall_region *wr,
     eng_launch(g, k, (size_t)a->n);
 }
 
-void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
-                       struct region *r, const struct wall_law *law)
+void wall_region_apply(struct gravel *g, const struct region_wall *set, int nwall)
 {
-    int dynamic = region_dynamic(r);
-    /* LAMMPS 29Sep2021: a union or intersect has no motion of its own, so
-     * Region::velocity_contact gives its contacts a resting surface even
-     * where a sub-region moves; matched here */
-    int vdyn = wr->comb ? 0 : dynamic;
-    if (dynamic) {
-        region_prematch(g, r);
-        region_set_velocity(g, r);
-    }
-    upload_nodes(g, wr, r);
+    if (nwall < 1 || nwall > RS_MAXWALL)
+        gr_error(g, "internal error: a set of %d region walls", nwall);
     struct dev_atoms *a = eng_atoms(g);
-    const struct region_kernel_args ka = {
-        .wall_atoms = wall_atoms_args(g, f, law),
-        .wall_law = wall_law_args(g, law),
-        .nodes = wr->nodes,
-        .nnode = wr->nnode,
-        .comb = wr->comb,
-        .rinterior = wr->interior,
-        .slots = wr->slots,
-        .dynamic = vdyn,
+    double buf[RS_SIZE] = {0};
+    struct region_kernel_args ka = {
+        .n = a->n,
+        .set = set[0].wr->set,
+        .nwall = nwall,
         .dt = g->dt,
         .shearupdate = !eng_in_setup(g),
     };
-    ka_bind_region_kernel(g, law->kernel, 0, &ka);
-    eng_launch(g, law->kernel, (size_t)a->n);
+    cl_mem *param[RS_MAXWALL] = {&ka.param0, &ka.param1, &ka.param2, &ka.param3};
+    cl_mem *hist[RS_MAXWALL] = {&ka.hist0, &ka.hist1, &ka.hist2, &ka.hist3};
+    cl_mem *contacts[RS_MAXWALL] = {&ka.contacts0, &ka.contacts1, &ka.contacts2, &ka.contacts3};
+    for (int w = 0; w < RS_MAXWALL; w++) { /* the walls past nwall: never read */
+        *param[w] = set[0].law->param;
+        *hist[w] = *contacts[w] = a->f;
+    }
+    for (int w = 0; w < nwall; w++) {
+        const struct region_wall *s = &set[w];
+        struct region *r = s->r;
+        int dynamic = region_dynamic(r);
+        if (dynamic) {
+            region_prematch(g, r);
+            region_set_velocity(g, r);
+        }
+        const struct wall_atoms_args wa = wall_atoms_args(g, s->f, s->law);
+        const struct wall_law_args wl = wall_law_args(g, s->law);
+        if (w == 0) { /* what every wall shares */
+            ka.mask = wa.mask;
+            ka.x = wa.x;
+            ka.v = wa.v;
+            ka.omega = wa.omega;
+            ka.radius = wa.radius;
+            ka.rmass = wa.rmass;
+            ka.type = wa.type;
+            ka.f = wa.f;
+            ka.torque = wa.torque;
+            ka.acc = wa.acc;
+            ka.astep = wa.astep;
+            ka.step = wa.step;
+            ka.temp = wa.temp;
+            ka.heatflow = wa.heatflow;
+            ka.ntypes = wl.ntypes;
+        }
+        double *h = buf + w * RS_HEAD;
+        h[RS_GROUPBIT] = wa.groupbit;
+        h[RS_HW] = wa.has_history;
+        h[RS_ACODE] = wa.acode;
+        h[RS_NNODE] = s->wr->nnode;
+        h[RS_COMB] = s->wr->comb;
+        h[RS_INTERIOR] = s->wr->interior;
+        h[RS_SLOTS] = s->wr->slots;
+        /* LAMMPS 29Sep2021: a union or intersect has no motion of its own, so
+         * Region::velocity_contact gives its contacts a resting surface even
+         * where a sub-region moves; matched here */
+        h[RS_DYNAMIC] = s->wr->comb ? 0 : dynamic;
+        h[RS_BYTYPE] = wl.by_type;
+        h[RS_NPARAM] = wl.nparam;
+        h[RS_WHEAT] = wa.wheat;
+        h[RS_TWALL] = wa.twall;
+        h[RS_CONTACTS] = wa.want_contacts;
+        pack_nodes(g, s->wr, r, buf + RS_NODES(w));
+        *param[w] = wl.param;
+        *hist[w] = wa.history;
+        *contacts[w] = wa.contacts;
+    }
+    eng_write_reals(g, ka.set, RS_NODES(nwall), buf);
+    cl_kernel k = set[0].law->kernel;
+    ka_bind_region_kernel(g, k, 0, &ka);
+    eng_launch(g, k, (size_t)a->n);
 }
 
 void wall_region_release(struct wall_region *wr)
 {
     if (wr->nodes)
         clReleaseMemObject(wr->nodes);
-    wr->nodes = NULL;
+    if (wr->set)
+        clReleaseMemObject(wr->set);
+    wr->nodes = wr->set = NULL;
 }

@@ -10,10 +10,18 @@
  * up wr; returns the per-atom history bytes (0 without history). */
 size_t wall_region_init(struct gravel *g, struct wall_region *wr, struct region *r,
                         const struct wall_law *law, const char *who);
-/* Evaluate the motion of r at this step, upload it and add the contact
- * forces and torques of f's atoms. */
-void wall_region_apply(struct gravel *g, struct fix *f, struct wall_region *wr,
-                       struct region *r, const struct wall_law *law);
+/* One wall of a set run by one launch: its fix, region record, region and
+ * law. */
+struct region_wall {
+    struct fix *f;
+    struct wall_region *wr;
+    struct region *r;
+    const struct wall_law *law;
+};
+/* Evaluate the motion of each wall's region at this step, upload the set
+ * (through set[0].wr) and add the contact forces and torques of each
+ * wall's atoms, in set order: nwall (1..RS_MAXWALL) walls of one law. */
+void wall_region_apply(struct gravel *g, const struct region_wall *set, int nwall);
 /* The surface contacts of f's atoms with r at its present position (the
  * contacts wall_region_apply would find, reach the radius) into out:
  * RG_PROBE_W REAL per atom in device order (kernels/wall_region.cl

@@ -45,6 +45,8 @@ struct fused_stages {
     int tfirst, tpost, tfinal;
     struct fix *store_fix;      /* the fused fix whose per-atom store ops use, or NULL */
     int lookahead;              /* 0: GRAVEL_LOOKAHEAD=0, no step opening in pair_gather */
+    int on;                     /* 0: GRAVEL_FUSE=0, nothing fused (region walls: one
+                                 * launch each, src/contact/wall_region.c) */
 };
 
 /* The fix calls of each hook for the current run (run.c). */

@@ -102,6 +102,7 @@ void fused_setup(struct gravel *g)
         g->styles.fix[i]->fused_hooks = 0;
     const char *env = getenv("GRAVEL_FUSE");
     int enabled = !(env && !strcmp(env, "0"));
+    s->on = enabled;
     const char *look = getenv("GRAVEL_LOOKAHEAD");
     s->lookahead = !(look && !strcmp(look, "0"));
     struct builder b = {0};

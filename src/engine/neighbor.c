@@ -1380,9 +1380,12 @@ void nbr_rebuild(struct gravel *g)
     eng_arg_mem(g, k, 2, b->perm);
     eng_arg_mem(g, k, 3, e->a.tag);
     eng_launch(g, k, (size_t)b->ncell);
-    /* atom_modify sort: every rebuild (default, < 0), never (0) or at the
+    /* atom_modify sort: every rebuild (default, < 0; on the serial device,
+     * whose scenes stay in cache, LAMMPS's 1000 steps), never (0) or at the
      * first rebuild N steps after the last; lost atoms are always dropped */
     bigint every = g->neigh.sort_every;
+    if (every < 0 && e->ocl.serial)
+        every = 1000;
     int resort = !par_on(g) && (nkeep < n || !b->built || every < 0 ||
                                 (every > 0 && g->step - b->last_sort >= every));
     if (e->history && b->old_valid)

@@ -186,6 +186,13 @@ static void build_hook_lists(struct gravel *g)
             h->force[h->nforce++] = g->styles.fix[i];
 }
 
+const struct hook_call *run_post_force_calls(struct gravel *g, int *n)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    *n = h->n[hook_index(HOOK_POST_FORCE)];
+    return h->call[hook_index(HOOK_POST_FORCE)];
+}
+
 /* LAMMPS Neighbor::decide()'s must_check: some fix wants a rebuild now. */
 static int forced_rebuild(struct gravel *g)
 {

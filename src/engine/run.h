@@ -17,4 +17,9 @@
 void run_rerun(struct gravel *g, bigint (*load)(struct gravel *, void *), void *ctx,
                bigint firststep, bigint laststep);
 
+/* This run's post_force calls, in order (the fixes fused into the scene's
+ * kernels are not among them); *n their count. */
+struct hook_call; /* device.h */
+const struct hook_call *run_post_force_calls(struct gravel *g, int *n);
+
 #endif

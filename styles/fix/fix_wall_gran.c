@@ -60,6 +60,7 @@
 #include "pair_gran.h"
 #include "pair_granular.h"
 #include "region.h"
+#include "run.h"
 #include "variable.h"
 #include "fix_mesh_surface.h"
 #include "fix_wall_gran.h"
@@ -81,6 +82,7 @@ struct wall {
     double amplitude, period, omega, vshear;
     bigint time_origin;
     struct wall_law law;
+    const char *kname;          /* law.kernel's name (a row of wall_gran_kernel) */
     struct lg_model lg;         /* model ...: LIGGGHTS's model (WG_LIGGGHTS) */
     int wtype;                  /* its primitive's type (0: a mesh's own) */
     double cx, cy;              /* zcylinder axis (LIGGGHTS: any; LAMMPS: 0 0) */
@@ -612,6 +614,7 @@ static void init(struct gravel *g, struct fix *f)
     if (!kname)
         gr_error(g, "internal error: fix %s: no wall/gran kernel for this wall and model", f->id);
     w->law.kernel = eng_kernel(g, kname);
+    w->kname = kname;
     w->law.history = w->history;
     w->law.by_type = 0;
     w->law.nparam = 0;
@@ -728,18 +731,64 @@ static const double *contacts_values(struct gravel *g, struct fix *f)
     return v;
 }
 
-static void post_force(struct gravel *g, struct fix *f)
+/* A wall's state for this step's launch: twall (`temperature v_name`) and
+ * the `contacts` records. */
+static void launch_prepare(struct gravel *g, struct wall *w)
 {
-    struct wall *w = f->data;
     if (w->tvar[0]) /* the kernels take twall as an argument at this launch */
         w->law.twall = var_compute_equal(g, w->tvar);
     contacts_reserve(g, w);
-    if (w->style == W_MESH) {
-        mesh_walls_apply(g, f, &w->mesh, &w->law, liggghts_model(w->model));
+}
+
+/* Whether fix o is a region wall of f's law (a kernel of the same name) */
+static int region_same_law(const struct fix *o, const struct fix *f)
+{
+    const struct wall *wo = o->data, *wf = f->data;
+    return o->style == f->style && wo->style == W_REGION && wo->kname == wf->kname;
+}
+
+/* The region walls one launch runs (src/contact/wall_region.c): the runs of
+ * region walls of one law among the post_force calls, cut into sets of
+ * RS_MAXWALL from the first (of 1 with GRAVEL_FUSE=0). Fills set and returns its size when region
+ * wall f leads one, 0 when f is in the set of a fix called before it. */
+static int region_set(struct gravel *g, struct fix *f, struct region_wall *set)
+{
+    int n = 0, k = 0, first;
+    const struct hook_call *call = run_post_force_calls(g, &n);
+    while (k < n && call[k].fix != f)
+        k++;
+    if (k == n) /* not among the calls: on its own */
+        n = k + 1;
+    for (first = k; first > 0 && region_same_law(call[first - 1].fix, f); first--)
+        ;
+    const int most = g->eng->fused.on ? RS_MAXWALL : 1; /* GRAVEL_FUSE=0: one each */
+    if ((k - first) % most)
+        return 0;
+    int nw = 0;
+    for (; nw < most && k + nw < n; nw++) {
+        struct fix *m = nw ? call[k + nw].fix : f;
+        if (nw && !region_same_law(m, f))
+            break;
+        struct wall *w = m->data;
+        launch_prepare(g, w);
+        set[nw] = (struct region_wall){m, &w->wreg, w->region, &w->law};
+    }
+    return nw;
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    struct wall *w = f->data;
+    if (w->style == W_REGION) {
+        struct region_wall set[RS_MAXWALL];
+        int nw = region_set(g, f, set);
+        if (nw)
+            wall_region_apply(g, set, nw);
         return;
     }
-    if (w->style == W_REGION) {
-        wall_region_apply(g, f, &w->wreg, w->region, &w->law);
+    launch_prepare(g, w);
+    if (w->style == W_MESH) {
+        mesh_walls_apply(g, f, &w->mesh, &w->law, liggghts_model(w->model));
         return;
     }
     struct wall_geom geom = geometry(g, w);

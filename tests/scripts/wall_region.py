@@ -24,6 +24,11 @@ pair_hybrid, compared with LAMMPS dumps by physics_lammps.py) do not cover.
    face 4 of a cylinder, move on a union, a deleted region at run, a missing
    rotate variable, wiggle on wall/gran/region, pair_style hybrid with an
    unknown sub-style in pair_coeff and an unset cross pair of two sub-styles.
+6. Region walls run in sets (one launch for up to 4 walls of one law in a
+   row): nine walls of two laws (rotating, moving, a group, a union,
+   `contacts`, a run of five cut 4 + 1) and two conducting walls give the
+   bits of one launch per wall (GRAVEL_FUSE=0) in both precisions, with
+   fewer launches per step.
 One PASS/FAIL line per check."""
 import math
 import os
@@ -42,12 +47,13 @@ create_box 2 box
 """
 
 
-def run(deck, tmp):
+def run(deck, tmp, env=None, args=()):
     path = os.path.join(tmp, "in.deck")
     with open(path, "w") as f:
         f.write(deck)
-    return subprocess.run([GRAVEL, "-in", path, "-log", "none"], cwd=tmp, capture_output=True,
-                          text=True, timeout=120)
+    return subprocess.run([GRAVEL, "-in", path, "-log", "none", *args], cwd=tmp,
+                          capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, **(env or {})))
 
 
 def check(name, ok, detail):
@@ -233,6 +239,126 @@ def errors(tmp):
         check(f"wall_region_error_{name}", ok, msg[0] if msg else out[-300:])
 
 
+GRANW = ("wall/gran/region granular hertz/material {E} 0.1 0.3 tangential mindlin NULL 1.0 {mu} "
+         "damping tsuji region {reg}")
+SETS = HEAD + """region fill block -4.5 4.5 -4.5 4.5 -3 6 units box
+lattice sc 1.3
+create_atoms 1 region fill
+set type 1 type/fraction 2 0.5 4821
+set group all diameter 1.0 density 1.0
+velocity all create 4.0 8731 loop geom
+group g1 type 1
+pair_style granular
+pair_coeff * * hertz/material 1e5 0.2 0.3 tangential mindlin NULL 1.0 0.5 damping tsuji
+variable theta equal 2*PI*elapsed/4000
+variable zf equal -5+0.5*sin(2*PI*elapsed/1000)
+region cyl cylinder z 0 0 6 -6 8 side in rotate v_theta 0 0 0 0 0 1 units box
+region floor plane 0 0 0 0 0 1 side in move NULL NULL v_zf units box
+region ball sphere 0 0 0 1.5 side out units box
+region post cylinder z 3 0 0.7 -6 8 side out units box
+region lid plane 0 0 7 0 0 -1 side in units box
+region u1 sphere 2 2 2 1.0 side out units box
+region u2 sphere -2 -2 2 1.0 side out units box
+region u union 2 u1 u2
+region b1 block -3.5 -2.5 2 3 -6 8 side out units box
+region b2 block 2.5 3.5 -3 -2 -6 8 side out units box
+region b3 cone z -3 3 0.5 1.0 -5 0 side out units box
+fix 1 all nve/sphere
+fix w1 all {w1}
+fix w2 all {w2} contacts
+fix w3 g1 {w3}
+fix w4 all wall/gran/region hooke/history 2000 NULL 50 NULL 0.5 1 region post
+fix w5 all {w5}
+fix w6 all {w6}
+fix w7 all {w7}
+fix w8 all {w8}
+fix w9 all {w9}
+fix grav all gravity 10 vector 0 0 -1
+compute ke all ke
+thermo_style custom step atoms c_ke
+thermo_modify format float %.17g
+thermo 500
+timestep 0.0005
+dump d all custom 500 out.dump id x y z vx vy vz fx fy fz omegax omegay omegaz f_w2[1] f_w2[2] f_w2[5]
+dump_modify d sort id format float %.17g
+run 2000
+""".format(w1=GRANW.format(E="1e5", mu="0.5", reg="cyl"),
+           w2=GRANW.format(E="1e5", mu="0.5", reg="floor"),
+           w3=GRANW.format(E="1e5", mu="0.5", reg="ball"),
+           w5=GRANW.format(E="1e5", mu="0.5", reg="lid"),
+           w6=GRANW.format(E="2e5", mu="0.4", reg="u"),
+           w7=GRANW.format(E="1e5", mu="0.5", reg="b1"),
+           w8=GRANW.format(E="1e5", mu="0.5", reg="b2"),
+           w9=GRANW.format(E="1e5", mu="0.3", reg="b3"))
+
+HEATW = ("wall/gran/region granular hooke 1000.0 0.0 tangential linear_history 100.0 0.0 0.5 "
+         "heat radius 2.0 region {reg} temperature {T}")
+SETS_HEAT = """units lj
+atom_style sphere
+boundary f f f
+region box block -2 2 -2 2 -2 2 units box
+create_box 1 box
+create_atoms 1 single 0 0 -1.51 units box
+create_atoms 1 single 1.41 0 0 units box
+set group all diameter 1.0 density 1.0
+fix prop all property/atom temperature heatflow
+set group all temperature 0.25
+pair_style granular
+pair_coeff * * hooke 1000.0 0.0 tangential linear_history 100.0 0.0 0.5
+region floor block -1.9 1.9 -1.9 1.9 -2 2 units box
+region side plane 1.9 0 0 -1 0 0 side in units box
+variable Tw equal 2.0+0.001*step
+fix wf all {wf}
+fix ws all {ws}
+fix hf all heat/flow constant 2.0
+timestep 0.001
+dump d all custom 100 out.dump id x z temperature heatflow
+dump_modify d sort id format float %.17g
+run 500
+""".format(wf=HEATW.format(reg="floor", T="1.5"), ws=HEATW.format(reg="side", T="v_Tw"))
+
+
+def launches(out):
+    m = re.findall(r"kernel launches per step = (\S+)", out)
+    return float(m[-1]) if m else None
+
+
+def sets(tmp):
+    """Region walls of one law whose post_force calls follow each other run in
+    one launch, up to RS_MAXWALL (4) each (src/contact/wall_region.c): nine
+    walls (two sets of the granular law around a hooke/history wall, a rotating
+    cylinder, a moving plane, a wall of group g1, a union, `contacts`, the
+    second run of five cut into 4 + 1) and two conducting walls at their own
+    temperatures (one a variable) give the bits of one launch per wall
+    (GRAVEL_FUSE=0), in both precisions, with fewer launches per step."""
+    for name, deck, precs in (("granular", SETS, ("double", "single")),
+                              ("heat", SETS_HEAT, ("double",))):
+        for prec in precs:
+            out = {}
+            for mode, env in (("sets", None), ("one_each", {"GRAVEL_FUSE": "0"})):
+                res = run(deck, tmp, env, ("-precision", prec))
+                dump = open(os.path.join(tmp, "out.dump")).read() if res.returncode == 0 else ""
+                out[mode] = (res.returncode, dump, res.stdout, launches(res.stdout))
+            a, b = out["sets"], out["one_each"]
+            rows = [re.findall(r"^\s+\d+\s+.*$", o[2], re.M) for o in (a, b)]
+            ok = a[0] == 0 and b[0] == 0 and a[1] == b[1] and rows[0] == rows[1] and a[1]
+            check(f"wall_region_sets_{name}_{prec}_equal_one_launch_each", ok,
+                  f"exit {a[0]} / {b[0]}, dumps {'equal' if a[1] == b[1] else 'differ'}, "
+                  f"{len(rows[0])} thermo rows")
+            # the sets save 5 launches (9 walls in 4) and 1 (2 in 1); GRAVEL_FUSE=0
+            # also unfuses the other fixes
+            fewer = 5 if name == "granular" else 1
+            ok = a[3] is not None and b[3] is not None and b[3] - a[3] > fewer - 0.01
+            check(f"wall_region_sets_{name}_{prec}_launches", ok,
+                  f"{a[3]} launches per step with sets, {b[3]} one each "
+                  f"(at least {fewer} fewer)")
+    # the scenes do what they are for: contacts recorded, heat conducted
+    last = last_dump(tmp)
+    warm = [r[2] for r in last.values()]
+    ok = len(warm) == 2 and all(t > 0.26 for t in warm)
+    check("wall_region_sets_heat_conducted", ok, f"temperatures {warm} (from 0.25)")
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         resting(tmp)
@@ -240,6 +366,7 @@ def main():
         moving_match(tmp)
         restart(tmp)
         errors(tmp)
+        sets(tmp)
 
 
 if __name__ == "__main__":
