@@ -754,11 +754,14 @@ static int region_same_law(const struct fix *o, const struct fix *f)
 static int region_set(struct gravel *g, struct fix *f, struct region_wall *set)
 {
     int n = 0, k = 0, first;
-    const struct hook_call *call = run_post_force_calls(g, &n);
+    const struct hook_call *call = run_post_force_calls(g, &n), alone = {f, NULL};
     while (k < n && call[k].fix != f)
         k++;
-    if (k == n) /* not among the calls: on its own */
-        n = k + 1;
+    if (k == n) { /* not among the calls: on its own */
+        call = &alone;
+        k = 0;
+        n = 1;
+    }
     for (first = k; first > 0 && region_same_law(call[first - 1].fix, f); first--)
         ;
     const int most = g->eng->fused.on ? RS_MAXWALL : 1; /* GRAVEL_FUSE=0: one each */
