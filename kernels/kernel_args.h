@@ -43,10 +43,9 @@
  * hold the zeros it wrote (0: unknown, after a rebuild or at a run start) */
 #define KARGS_pair_contacts(X, Y)                                                              \
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)          \
-    Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes)               \
-    Y(I, nparam) Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, rec)             \
-    Y(MF, acc) Y(MI, astep) Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq)         \
-    Y(MUC, quiet) Y(POS_LO, xlo)
+    Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes) Y(I, nparam)  \
+    Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, rec) Y(MF, acc) Y(MI, astep)   \
+    Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(POS_LO, xlo)
 
 /* pair_gather: one work-item per particle, then the fused post_force,
  * final_integrate and end_of_step ops [first, first + npost + nfinal)
@@ -54,10 +53,10 @@
  * store (f when none); recq / heatflow as pair_contacts'; ioff, coff and
  * pcon: the list's (src/engine/neighbor.h) */
 #define KARGS_pair_gather(X, Y)                                                                \
-    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(M, f)                          \
-    Y(M, torque) Y(CMI, ops) Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store)       \
-    Y(M, v) Y(M, omega) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq)       \
-    Y(M, heatflow) Y(I, look) Y(PART, atom_step) Y(POS_LO, xlo)
+    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(M, f) Y(M, torque) Y(CMI, ops) \
+    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega)            \
+    Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look) \
+    Y(PART, atom_step) Y(POS_LO, xlo)
 
 /* force_clear: no pair style (heatflow: f without HAS_HEAT) */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)
@@ -73,8 +72,8 @@
  * rebuild and finiteness flags; run by nbr_check, or by pair_gather at the
  * end of the step before (look = 1: src/engine/run.c, step_lookahead) */
 #define KARGS_atom_step(X, Y)                                                                  \
-    X(M, x) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(I, stamp) Y(MI, image) Y(C3, lo) Y(C3, hi)            \
-    Y(BOX, box) Y(CM, hrate) Y(U, vgroup) Y(I, ninit)
+    X(M, x) Y(CM, xhold) Y(R, trigsq) Y(MI, flags) Y(I, stamp) Y(MI, image) Y(C3, lo)          \
+    Y(C3, hi) Y(BOX, box) Y(CM, hrate) Y(U, vgroup) Y(I, ninit)
 
 /* nbr_wrap_extent: periodic wrap (p: periodic per dimension) and the
  * per-chunk extents */
@@ -84,18 +83,21 @@
 
 /* ---- the wall stage (kernels/wall.cl, kernels/wall_region.cl) ---- */
 
-/* what every wall kernel starts with: the atoms of the group, the wall's
- * `contacts` records (want_contacts: WALL_CONTACT_W REAL per atom, else f),
- * history (has_history REAL per slot) and the accuracy records
- * (kernels/accuracy.cl: acc, astep, the wall's code acode, step); with
- * HAS_HEAT the atoms' temperatures and heat flows, whether the wall
- * conducts (wheat) and its temperature twall (temp / heatflow are v / f
- * without HAS_HEAT) */
+/* what every wall kernel starts with: the atoms, the accuracy records
+ * (kernels/accuracy.cl: acc, astep, step) and, with HAS_HEAT, the atoms'
+ * temperatures and heat flows (temp / heatflow are v / f without HAS_HEAT) */
 #define KARGS_wall_atoms(X, Y)                                                                 \
-    X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)           \
-    Y(CM, rmass) Y(CMI, type) Y(M, f) Y(M, torque) Y(M, history) Y(I, has_history)            \
-    Y(MF, acc) Y(MI, astep) Y(I, acode) Y(I, step) Y(CM, temp) Y(M, heatflow) Y(I, wheat)    \
-    Y(R, twall) Y(M, contacts) Y(I, want_contacts)
+    X(I, n) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius) Y(CM, rmass)             \
+    Y(CMI, type) Y(M, f) Y(M, torque) Y(MF, acc) Y(MI, astep) Y(I, step) Y(CM, temp)           \
+    Y(M, heatflow)
+
+/* one wall's own: its group, `contacts` records (want_contacts:
+ * WALL_CONTACT_W REAL per atom, else f), history (has_history REAL per
+ * slot), accuracy code acode, and whether it conducts heat (wheat) at
+ * temperature twall */
+#define KARGS_wall_own(X, Y)                                                                   \
+    X(U, groupbit) Y(M, history) Y(I, has_history) Y(I, acode) Y(I, wheat) Y(R, twall)         \
+    Y(M, contacts) Y(I, want_contacts)
 
 /* the wall's law: one packed parameter set (by_type 0) or the pair style's
  * sets (ntypes x ntypes of nparam REAL) */
@@ -103,8 +105,8 @@
 
 /* WALL_KERNEL: plane pair and cylinder (struct wall_geom of kernels/wall.cl) */
 #define KARGS_wall_kernel(X, Y)                                                                \
-    X(PART, wall_atoms) Y(PART, wall_law) Y(I, nelem) Y(I, kind) Y(I, axis) Y(R, lo)          \
-    Y(R, hi) Y(R, wradius) Y(R3, vw) Y(I, cyl_shear) Y(R, vshear) Y(R, dt)                    \
+    X(PART, wall_atoms) Y(PART, wall_own) Y(PART, wall_law) Y(I, nelem) Y(I, kind) Y(I, axis)  \
+    Y(R, lo) Y(R, hi) Y(R, wradius) Y(R3, vw) Y(I, cyl_shear) Y(R, vshear) Y(R, dt)            \
     Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
 
 /* MESH_KERNEL: history at hoff of a per-atom record of hstride REAL; the
@@ -113,35 +115,34 @@
  * REAL per atom, keyed by tag; built lskin beyond the radius; mscale the
  * largest |vertex|_1) */
 #define KARGS_mesh_kernel(X, Y)                                                                \
-    X(PART, wall_atoms) Y(I, hstride) Y(I, hoff) Y(PART, wall_law) Y(CM, tri) Y(CMI, triv)    \
-    Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving) Y(M, fmesh)                \
-    Y(I, want_fmesh) Y(M, mstress) Y(I, want_mstress) Y(R, dt) Y(I, shearupdate) Y(I, inclusive) Y(CML, tag) Y(MI, mlist)      \
-    Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) Y(POS_LO, xlo)
+    X(PART, wall_atoms) Y(PART, wall_own) Y(I, hstride) Y(I, hoff) Y(PART, wall_law)           \
+    Y(CM, tri) Y(CMI, triv) Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving)     \
+    Y(M, fmesh) Y(I, want_fmesh) Y(M, mstress) Y(I, want_mstress) Y(R, dt) Y(I, shearupdate)   \
+    Y(I, inclusive) Y(CML, tag) Y(MI, mlist) Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) \
+    Y(POS_LO, xlo)
 
 /* REGION_KERNEL: nwall region walls of one law (a set: RS_* of
  * kernels/wall_layout.h); wall w's parameters, history and `contacts`
  * records are param<w>, hist<w> and contacts<w> (the atoms' f where it has
- * none); temp / heatflow as wall_atoms' */
+ * none); the wall_own part of each wall is in its header */
 #define KARGS_region_kernel(X, Y)                                                              \
-    X(I, n) Y(CMU, mask) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius) Y(CM, rmass)             \
-    Y(CMI, type) Y(M, f) Y(M, torque) Y(MF, acc) Y(MI, astep) Y(I, step) Y(CM, temp)          \
-    Y(M, heatflow) Y(CM, set) Y(I, nwall) Y(I, ntypes) Y(CM, param0) Y(CM, param1)            \
-    Y(CM, param2) Y(CM, param3) Y(M, hist0) Y(M, hist1) Y(M, hist2) Y(M, hist3)               \
-    Y(M, contacts0) Y(M, contacts1) Y(M, contacts2) Y(M, contacts3) Y(R, dt)                  \
-    Y(I, shearupdate) Y(POS_LO, xlo)
+    X(PART, wall_atoms) Y(CM, set) Y(I, nwall) Y(I, ntypes) Y(CM, param0) Y(CM, param1)        \
+    Y(CM, param2) Y(CM, param3) Y(M, hist0) Y(M, hist1) Y(M, hist2) Y(M, hist3)                \
+    Y(M, contacts0) Y(M, contacts1) Y(M, contacts2) Y(M, contacts3) Y(R, dt) Y(I, shearupdate) \
+    Y(POS_LO, xlo)
 
 /* region_probe: the region surface contacts of each atom of the group that
  * the region matches (out: RG_PROBE_W REAL per atom, kernels/wall_region.cl) */
 #define KARGS_region_probe(X, Y)                                                               \
-    X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, radius) Y(CM, nodes) Y(I, nnode)       \
+    X(I, n) Y(U, groupbit) Y(CMU, mask) Y(CM, x) Y(CM, radius) Y(CM, nodes) Y(I, nnode)        \
     Y(I, comb) Y(I, rinterior) Y(I, slots) Y(M, out) Y(POS_LO, xlo)
 
 /* Every list, for the host's structs and binders (src/engine/kargs.h); parts
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
-    T(wall_atoms) T(wall_law) T(atom_step) T(pair_contacts) T(pair_gather) T(force_clear)      \
-    T(nbr_check) T(nbr_wrap_extent)                                                            \
-    T(wall_kernel) T(mesh_kernel) T(region_kernel) T(region_probe)
+    T(wall_atoms) T(wall_own) T(wall_law) T(atom_step) T(pair_contacts) T(pair_gather)         \
+    T(force_clear) T(nbr_check) T(nbr_wrap_extent) T(wall_kernel) T(mesh_kernel)               \
+    T(region_kernel) T(region_probe)
 
 #ifdef __OPENCL_VERSION__
 /* ---- device: the parameter list of list `name`, e.g.

@@ -688,6 +688,8 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
         const REAL3 xi = vload3(i, x) + POS_LOAD_LO(i);                                        \
         const REAL radi = radius[i];                                                           \
         REAL3 fsum = vload3(i, f);                                                             \
+        struct contact_atoms a =                                                               \
+            contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);              \
         for (int w = 0; w < nwall; w++) {                                                      \
             __global const REAL *ws = set + w * RS_HEAD;                                       \
             const int want_contacts = ws[RS_CONTACTS] != 0, wheat = ws[RS_WHEAT] != 0;         \
@@ -717,8 +719,6 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
                 c2r[k] = k;                                                                    \
             if (hw && !region_slots(hist, slots, hw, c, nc, c2r))                              \
                 continue;                                                                      \
-            struct contact_atoms a =                                                           \
-                contact_atoms_of(v, omega, rmass, dt, shearupdate, acc, astep, step);          \
             WALL_HEAT_BEGIN(a);                                                                \
             struct contact_site s = wall_site(i, radi, radi, hw, ws[RS_ACODE]);                \
             s.gated = 1; /* region_surface decided */                                          \

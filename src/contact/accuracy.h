@@ -42,7 +42,7 @@ const struct acc_worst *acc_worst(struct gravel *g);
 cl_mem acc_pair_rec(struct gravel *g);
 cl_mem acc_pair_step(struct gravel *g);
 int acc_step(const struct gravel *g);
-/* Wall kernel arguments (kernels/kernel_args.h KARGS_wall_atoms): the
+/* Wall kernel arguments (kernels/kernel_args.h KARGS_wall_atoms, wall_own): the
  * particles' wall records, their steps, and the code of fix f's walls. */
 cl_mem acc_wall_rec(struct gravel *g);
 cl_mem acc_wall_step(struct gravel *g);

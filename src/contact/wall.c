@@ -22,14 +22,12 @@ size_t wall_peratom_bytes(struct gravel *g, const struct wall_geom *w, const str
     return (size_t)wall_elements(w) * (size_t)law->history * g->eng->rsz;
 }
 
-struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
-                                       const struct wall_law *law)
+struct wall_atoms_args wall_atoms_args(struct gravel *g)
 {
     struct engine *e = g->eng;
     struct dev_atoms *a = eng_atoms(g);
     return (struct wall_atoms_args){
         .n = a->n,
-        .groupbit = f->groupbit,
         .mask = a->mask,
         .x = a->x,
         .v = a->v,
@@ -39,17 +37,24 @@ struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
         .type = a->type,
         .f = a->f,
         .torque = e->rotation ? a->torque : a->f,
-        .history = law->history ? f->peratom : a->f,
-        .has_history = law->history,
         .acc = acc_wall_rec(g),
         .astep = acc_wall_step(g),
-        .acode = acc_wall_code(g, f),
         .step = acc_step(g),
         .temp = e->heat ? a->temperature : a->v,
         .heatflow = e->heat ? a->heatflow : a->f,
-        .wheat = e->heat && law->heat,
+    };
+}
+
+struct wall_own_args wall_own_args(struct gravel *g, struct fix *f, const struct wall_law *law)
+{
+    return (struct wall_own_args){
+        .groupbit = f->groupbit,
+        .history = law->history ? f->peratom : eng_atoms(g)->f,
+        .has_history = law->history,
+        .acode = acc_wall_code(g, f),
+        .wheat = g->eng->heat && law->heat,
         .twall = law->twall,
-        .contacts = law->contacts_on ? law->contacts : a->f,
+        .contacts = law->contacts_on ? law->contacts : eng_atoms(g)->f,
         .want_contacts = law->contacts_on,
     };
 }
@@ -68,7 +73,8 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law)
 {
     struct wall_kernel_args ka = {
-        .wall_atoms = wall_atoms_args(g, f, law),
+        .wall_atoms = wall_atoms_args(g),
+        .wall_own = wall_own_args(g, f, law),
         .wall_law = wall_law_args(g, law),
         .nelem = wall_elements(w),
         .kind = (int)w->kind,
@@ -243,7 +249,8 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
     mesh_pose_upload(g, wm, pose);
     mesh_lists_reserve(g, wm, a->n);
     const struct mesh_kernel_args ka = {
-        .wall_atoms = wall_atoms_args(g, f, law),
+        .wall_atoms = wall_atoms_args(g),
+        .wall_own = wall_own_args(g, f, law),
         .hstride = hstride,
         .hoff = hoff,
         .wall_law = wall_law_args(g, law),

@@ -55,10 +55,11 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
                 const struct wall_law *law);
 
 /* The kernel arguments shared by every wall kind (kernels/kernel_args.h):
- * the atoms of f's group, their history and wall records
- * (KARGS_wall_atoms), and the law's parameters (KARGS_wall_law). */
-struct wall_atoms_args wall_atoms_args(struct gravel *g, struct fix *f,
-                                       const struct wall_law *law);
+ * the atoms and their wall records (KARGS_wall_atoms), fix f's group,
+ * history and switches (KARGS_wall_own), and the law's parameters
+ * (KARGS_wall_law). */
+struct wall_atoms_args wall_atoms_args(struct gravel *g);
+struct wall_own_args wall_own_args(struct gravel *g, struct fix *f, const struct wall_law *law);
 struct wall_law_args wall_law_args(struct gravel *g, const struct wall_law *law);
 
 /* ---- region walls (kernels/wall_region.cl REGION_KERNEL; src/contact/wall_region.c) ----

@@ -175,7 +175,7 @@ void wall_region_apply(struct gravel *g, const struct region_wall *set, int nwal
     struct dev_atoms *a = eng_atoms(g);
     double buf[RS_SIZE] = {0};
     struct region_kernel_args ka = {
-        .n = a->n,
+        .wall_atoms = wall_atoms_args(g),
         .set = set[0].wr->set,
         .nwall = nwall,
         .dt = g->dt,
@@ -196,25 +196,9 @@ void wall_region_apply(struct gravel *g, const struct region_wall *set, int nwal
             region_prematch(g, r);
             region_set_velocity(g, r);
         }
-        const struct wall_atoms_args wa = wall_atoms_args(g, s->f, s->law);
+        const struct wall_own_args wa = wall_own_args(g, s->f, s->law);
         const struct wall_law_args wl = wall_law_args(g, s->law);
-        if (w == 0) { /* what every wall shares */
-            ka.mask = wa.mask;
-            ka.x = wa.x;
-            ka.v = wa.v;
-            ka.omega = wa.omega;
-            ka.radius = wa.radius;
-            ka.rmass = wa.rmass;
-            ka.type = wa.type;
-            ka.f = wa.f;
-            ka.torque = wa.torque;
-            ka.acc = wa.acc;
-            ka.astep = wa.astep;
-            ka.step = wa.step;
-            ka.temp = wa.temp;
-            ka.heatflow = wa.heatflow;
-            ka.ntypes = wl.ntypes;
-        }
+        ka.ntypes = wl.ntypes; /* the same for every wall */
         double *h = buf + w * RS_HEAD;
         h[RS_GROUPBIT] = wa.groupbit;
         h[RS_HW] = wa.has_history;
