@@ -494,14 +494,16 @@ static inline __attribute__((always_inline)) void gather_lanes(KA_PARAMS(pair_ga
 }
 
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
-__kernel void pair_gather(KA_PARAMS(pair_gather))
+__kernel void pair_gather(KA_KERNEL(pair_gather))
 {
+    KA_UNPACK(pair_gather);
     gather_lanes(KA_ARGS(pair_gather), 0);
 }
 
 /* pair_loop.cl's fused_tail in lanes */
-__kernel void fused_tail(KA_PARAMS(pair_gather))
+__kernel void fused_tail(KA_KERNEL(pair_gather))
 {
+    KA_UNPACK(pair_gather);
     gather_lanes(KA_ARGS(pair_gather), 1);
 }
 #endif /* ATOM_LW > 1 */

@@ -1,9 +1,10 @@
 /* kernel_args.h - the argument lists of the contact pipeline's kernels,
  * declared once: each list expands to the kernel's .cl parameter list
- * (KA_PARAMS; the engine prepends this header to every program, after
- * wall_layout.h) and, on the host, to a struct with one field per argument
- * and a binder that sets them in order (src/engine/kargs.h, src/engine/kargs.c). Valid C
- * and OpenCL C. Adding or moving an argument is one edit here; the kernel
+ * (KA_KERNEL: the scalars in one struct, then the buffers; KA_PARAMS, one
+ * parameter per argument, for the functions a kernel calls; the engine
+ * prepends this header to every program, after wall_layout.h) and, on the
+ * host, to a struct with one field per argument and a binder that sets them
+ * (src/engine/kargs.h, src/engine/kargs.c). Valid C and OpenCL C. Adding or moving an argument is one edit here; the kernel
  * body and the host code that fills the struct then read it by name.
  *
  * A list KARGS_<name>(X, Y) names each argument as X(kind, name) for the
@@ -217,6 +218,110 @@
 #define KA_SEP_CML ,
 #define KA_SEP_POS_LO /* POS_LO_PARAM brings its own comma */
 #define KA_SEP_PART /* the part's first argument brings it */
+
+/* ---- device: a kernel's own parameter list, e.g.
+ *   __kernel void pair_contacts(KA_KERNEL(pair_contacts))
+ *   {
+ *       KA_UNPACK(pair_contacts);
+ * A kernel takes its scalars (I U R R3 C3 I3 BOX, its parts' included) in
+ * one struct ka_<name> passed by value, first, then its buffers in list
+ * order: PoCL copies each argument of a launch into memory of its own, so a
+ * scalar costs as much as a buffer (src/engine/kargs.c packs the struct).
+ * KA_UNPACK declares each scalar under its own name, as KA_PARAMS does, so
+ * the body and the functions it calls with KA_ARGS are unchanged. The
+ * struct holds the REALs first, then the ints and uints, then ka_end: the
+ * host lays it out by the same rule. */
+#define KA_KERNEL(name) const struct ka_##name name##_ks KARGS_##name(KA_KB, KA_KB)
+#define KA_KB(kind, name) KA_KB_##kind(name, KA_KB2)
+#define KA_KB2(kind, name) KA_KB_##kind(name, )
+#define KA_KB_I(n, Z)
+#define KA_KB_U(n, Z)
+#define KA_KB_R(n, Z)
+#define KA_KB_R3(n, Z)
+#define KA_KB_C3(n, Z)
+#define KA_KB_I3(n, Z)
+#define KA_KB_BOX(n, Z)
+#define KA_KB_M(n, Z) , KA_DECL_M(n, , )
+#define KA_KB_CM(n, Z) , KA_DECL_CM(n, , )
+#define KA_KB_MI(n, Z) , KA_DECL_MI(n, , )
+#define KA_KB_CMI(n, Z) , KA_DECL_CMI(n, , )
+#define KA_KB_CMU(n, Z) , KA_DECL_CMU(n, , )
+#define KA_KB_MUC(n, Z) , KA_DECL_MUC(n, , )
+#define KA_KB_MF(n, Z) , KA_DECL_MF(n, , )
+#define KA_KB_CML(n, Z) , KA_DECL_CML(n, , )
+#define KA_KB_POS_LO(n, Z) POS_LO_PARAM
+#define KA_KB_PART(n, Z) KARGS_##n(Z, Z)
+
+/* the scalars' struct: REALs (KA_SR), then ints (KA_SI) */
+#define KA_SR(kind, name) KA_SR_##kind(name, KA_SR2)
+#define KA_SR2(kind, name) KA_SR_##kind(name, )
+#define KA_SR_R(n, Z) REAL n;
+#define KA_SR_R3(n, Z) REAL n##x, n##y, n##z;
+#define KA_SR_C3(n, Z) REAL n##x, n##y, n##z;
+#define KA_SR_BOX(n, Z) REAL Lx, Ly, Lz, xy, xz, yz;
+#define KA_SI(kind, name) KA_SI_##kind(name, KA_SI2)
+#define KA_SI2(kind, name) KA_SI_##kind(name, )
+#define KA_SI_I(n, Z) int n;
+#define KA_SI_U(n, Z) uint n;
+#define KA_SI_I3(n, Z) int n##x, n##y, n##z;
+#define KA_SR_PART(n, Z) KARGS_##n(Z, Z)
+#define KA_SI_PART(n, Z) KARGS_##n(Z, Z)
+#define KA_SR_I(n, Z)
+#define KA_SR_U(n, Z)
+#define KA_SR_I3(n, Z)
+#define KA_SR_M(n, Z)
+#define KA_SR_CM(n, Z)
+#define KA_SR_MI(n, Z)
+#define KA_SR_CMI(n, Z)
+#define KA_SR_CMU(n, Z)
+#define KA_SR_MUC(n, Z)
+#define KA_SR_MF(n, Z)
+#define KA_SR_CML(n, Z)
+#define KA_SR_POS_LO(n, Z)
+#define KA_SI_R(n, Z)
+#define KA_SI_R3(n, Z)
+#define KA_SI_C3(n, Z)
+#define KA_SI_BOX(n, Z)
+#define KA_SI_M(n, Z)
+#define KA_SI_CM(n, Z)
+#define KA_SI_MI(n, Z)
+#define KA_SI_CMI(n, Z)
+#define KA_SI_CMU(n, Z)
+#define KA_SI_MUC(n, Z)
+#define KA_SI_MF(n, Z)
+#define KA_SI_CML(n, Z)
+#define KA_SI_POS_LO(n, Z)
+#define KA_KSTRUCT(name)                                                                       \
+    struct ka_##name {                                                                         \
+        KARGS_##name(KA_SR, KA_SR) KARGS_##name(KA_SI, KA_SI) int ka_end;                      \
+    };
+KARGS_LISTS(KA_KSTRUCT)
+#undef KA_KSTRUCT
+
+#define KA_UNPACK(name)                                                                        \
+    const struct ka_##name ka_s = name##_ks;                                                   \
+    KARGS_##name(KA_UN, KA_UN) (void)ka_s
+#define KA_UN(kind, name) KA_UN_##kind(name, KA_UN2)
+#define KA_UN2(kind, name) KA_UN_##kind(name, )
+#define KA_UN_I(n, Z) const int n = ka_s.n;
+#define KA_UN_U(n, Z) const uint n = ka_s.n;
+#define KA_UN_R(n, Z) const REAL n = ka_s.n;
+#define KA_UN_R3(n, Z) const REAL n##x = ka_s.n##x, n##y = ka_s.n##y, n##z = ka_s.n##z;
+#define KA_UN_C3(n, Z) KA_UN_R3(n, Z)
+#define KA_UN_I3(n, Z) const int n##x = ka_s.n##x, n##y = ka_s.n##y, n##z = ka_s.n##z;
+#define KA_UN_BOX(n, Z)                                                                        \
+    const REAL Lx = ka_s.Lx, Ly = ka_s.Ly, Lz = ka_s.Lz, xy = ka_s.xy, xz = ka_s.xz,          \
+               yz = ka_s.yz;
+#define KA_UN_PART(n, Z) KARGS_##n(Z, Z)
+#define KA_UN_M(n, Z)
+#define KA_UN_CM(n, Z)
+#define KA_UN_MI(n, Z)
+#define KA_UN_CMI(n, Z)
+#define KA_UN_CMU(n, Z)
+#define KA_UN_MUC(n, Z)
+#define KA_UN_MF(n, Z)
+#define KA_UN_CML(n, Z)
+#define KA_UN_POS_LO(n, Z)
 #endif
 
 #endif

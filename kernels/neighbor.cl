@@ -11,8 +11,9 @@
 /* Every step, unless the step before ran it (pair_gather, look): the step's
  * opening for every particle (kernels/atom_step.cl). */
 /* arguments: KARGS_nbr_check (kernels/kernel_args.h) */
-__kernel void nbr_check(KA_PARAMS(nbr_check))
+__kernel void nbr_check(KA_KERNEL(nbr_check))
 {
+    KA_UNPACK(nbr_check);
     const int i = get_global_id(0);
     if (i >= n)
         return;
@@ -38,8 +39,9 @@ __kernel void nbr_check(KA_PARAMS(nbr_check))
  * Domain::pbc, one period at most), and write the per-chunk extent
  * ext[6 c ..] = (min x, min y, min z, max x, max y, max z). */
 /* arguments: KARGS_nbr_wrap_extent (kernels/kernel_args.h) */
-__kernel void nbr_wrap_extent(KA_PARAMS(nbr_wrap_extent))
+__kernel void nbr_wrap_extent(KA_KERNEL(nbr_wrap_extent))
 {
+    KA_UNPACK(nbr_wrap_extent);
     const int c = get_global_id(0);
     const int i0 = c * chunk;
     if (c > 0 && i0 >= n)

@@ -87,8 +87,9 @@ static inline void pair_lane_apart(const int c, __global REAL *shear, __global u
 }
 
 /* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
-__kernel void pair_contacts(KA_PARAMS(pair_contacts))
+__kernel void pair_contacts(KA_KERNEL(pair_contacts))
 {
+    KA_UNPACK(pair_contacts);
     const int c0 = get_global_id(0) * PAIR_LW;
     if (c0 >= ncontact)
         return;

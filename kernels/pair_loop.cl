@@ -60,8 +60,9 @@ CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 
 #if !defined(PAIR_LW) || PAIR_LW == 1 /* else kernels/pair_gran_lanes.cl's, in lanes */
 /* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
-__kernel void pair_contacts(KA_PARAMS(pair_contacts))
+__kernel void pair_contacts(KA_KERNEL(pair_contacts))
 {
+    KA_UNPACK(pair_contacts);
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
@@ -286,8 +287,9 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
 
 /* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
 #if !defined(ATOM_LW) || ATOM_LW == 1 /* else kernels/atom_lanes.cl's, in lanes */
-__kernel void pair_gather(KA_PARAMS(pair_gather))
+__kernel void pair_gather(KA_KERNEL(pair_gather))
 {
+    KA_UNPACK(pair_gather);
     const int i = get_global_id(0);
     if (i < n)
         gather_atom(KA_ARGS(pair_gather), 0, i);
@@ -299,8 +301,9 @@ __kernel void pair_gather(KA_PARAMS(pair_gather))
  * fixes (walls) left in f and torque, after them; with look, the next
  * step's opening, as pair_gather's. Same arguments as pair_gather (the
  * contact ones unused). */
-__kernel void fused_tail(KA_PARAMS(pair_gather))
+__kernel void fused_tail(KA_KERNEL(pair_gather))
 {
+    KA_UNPACK(pair_gather);
     const int i = get_global_id(0);
     if (i < n)
         gather_atom(KA_ARGS(pair_gather), 1, i);
@@ -374,8 +377,9 @@ __kernel void pair_energy(const int n, __global const int *nlist, const int maxn
 #endif
 
 /* Zero the force (and torque) when no pair style computes them. */
-__kernel void force_clear(KA_PARAMS(force_clear))
+__kernel void force_clear(KA_KERNEL(force_clear))
 {
+    KA_UNPACK(force_clear);
     const int i = get_global_id(0);
     if (i >= n)
         return;

@@ -209,8 +209,9 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
     }
 
 #define WALL_KERNEL(NAME, BODY, ROW, APPROACH, JKR)                                            \
-    __kernel void NAME(KA_PARAMS(wall_kernel))                                                 \
+    __kernel void NAME(KA_KERNEL(wall_kernel))                                                 \
     {                                                                                          \
+        KA_UNPACK(wall_kernel);                                                                \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \
@@ -642,8 +643,9 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
  * has_history REAL of pair granular's sub-models, kernels/fix_wall_gran.cl).
  * Arguments: KARGS_mesh_kernel (kernels/kernel_args.h). */
 #define MESH_KERNEL(NAME, BODY, ROW, APPROACH)                                                 \
-    __kernel void NAME(KA_PARAMS(mesh_kernel))                                                 \
+    __kernel void NAME(KA_KERNEL(mesh_kernel))                                                 \
     {                                                                                          \
+        KA_UNPACK(mesh_kernel);                                                                \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \

@@ -680,8 +680,9 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
  * Arguments: KARGS_region_kernel (kernels/kernel_args.h). */
 #define RS_PICK(a, w) ((w) == 0 ? a##0 : (w) == 1 ? a##1 : (w) == 2 ? a##2 : a##3)
 #define REGION_KERNEL(NAME, BODY, ROW, JKR)                                                    \
-    __kernel void NAME(KA_PARAMS(region_kernel))                                               \
+    __kernel void NAME(KA_KERNEL(region_kernel))                                               \
     {                                                                                          \
+        KA_UNPACK(region_kernel);                                                              \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \
@@ -760,8 +761,9 @@ static inline int region_slots(__global REAL *hist, const int slots, const int h
  * RG_PROBE_W REAL, the count nc (0 for an atom out of the group or not
  * matched), then per contact r, del and iwall; the reach is the radius, at
  * most `slots` contacts (as REGION_KERNEL for a law held only in touch). */
-__kernel void region_probe(KA_PARAMS(region_probe))
+__kernel void region_probe(KA_KERNEL(region_probe))
 {
+    KA_UNPACK(region_probe);
     const int i = get_global_id(0);
     if (i >= n)
         return;

@@ -3,10 +3,10 @@
 # decks of inputs/bench/ (chute, dense, dilute; double and single precision):
 # medians of million particle-steps/s and NEW / BASE, to show that a change is
 # no slower. BENCH_DECKS picks a subset. Run it on a quiet machine.
+[ -x "$1" ] && [ -x "$2" ] || { echo "usage: tools/bench_ab.sh BASE NEW [REPEATS]"; exit 2; }
+base=$(realpath "$1"); new=$(realpath "$2"); reps=${3:-3}
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
-base=$1; new=$2; reps=${3:-3}
-[ -x "$base" ] && [ -x "$new" ] || { echo "usage: tools/bench_ab.sh BASE NEW [REPEATS]"; exit 2; }
 data="$root/../shared/peers/chute/data.chute"
 [ -f "$data" ] || data=/work/shared/peers/chute/data.chute
 tmp=$(mktemp -d)

@@ -88,6 +88,10 @@ void eng_arg_real(struct gravel *g, cl_kernel k, int i, double v)
         set_arg(g, k, i, sizeof v, &v);
     }
 }
+void eng_arg_bytes(struct gravel *g, cl_kernel k, int i, size_t bytes, const void *p)
+{
+    set_arg(g, k, i, bytes, p);
+}
 void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes)
 {
     set_arg(g, k, i, bytes, NULL);

@@ -218,6 +218,8 @@ void eng_arg_int(struct gravel *g, cl_kernel k, int i, int v);
 void eng_arg_uint(struct gravel *g, cl_kernel k, int i, unsigned v);
 void eng_arg_real(struct gravel *g, cl_kernel k, int i, double v);
 void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes);
+/* a struct passed by value, laid out as the kernel's (src/engine/kargs.c) */
+void eng_arg_bytes(struct gravel *g, cl_kernel k, int i, size_t bytes, const void *p);
 /* Launch a 1-D kernel over n work-items (no-op for n = 0). */
 void eng_launch(struct gravel *g, cl_kernel k, size_t n);
 /* Checked device allocation and transfers (blocking). */

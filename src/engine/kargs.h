@@ -3,8 +3,9 @@
  * named as the kernel's parameter (kinds and host types: the header of
  * kernel_args.h), and a binder
  *     int ka_bind_<name>(g, k, i, const struct <name>_args *a)
- * that sets the arguments in list order from index i and returns the next
- * index. A caller fills the struct by name and binds it with one call: no
+ * that sets the kernel's arguments from index i (KA_KERNEL of kernel_args.h:
+ * its scalars in one struct, then its buffers in list order) and returns the
+ * next index. A caller fills the struct by name and binds it with one call: no
  * positional index is written by hand. */
 #ifndef GR_KARGS_H
 #define GR_KARGS_H
