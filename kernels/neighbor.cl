@@ -151,6 +151,21 @@ __kernel void nbr_bin(const int n, __global const REAL *x, const int nx, const i
     atomic_inc(&counts[c]);
 }
 
+/* The exclusive scan of m ints in one launch of one work-item (the serial
+ * device, where a launch costs more than the loop): out[m] = the total. */
+__kernel void scan_serial(const int m, __global const int *in, __global int *out)
+{
+    if (get_global_id(0) != 0)
+        return;
+    int acc = 0;
+    for (int i = 0; i < m; i++) {
+        const int s = in[i];
+        out[i] = acc;
+        acc += s;
+    }
+    out[m] = acc;
+}
+
 /* Chunked exclusive scan, three launches: partial sums per chunk, a serial
  * scan of the chunk sums, then each chunk scans itself from its offset.
  * start[m] receives the total. */

@@ -76,8 +76,8 @@ struct nbr {
     double *mrad, *cutab, *minvh;
     cl_mem d_collcut, d_type2coll, d_mgrid, d_minv, d_cutab;
     cl_kernel k_bin_multi, k_build_multi;
-    cl_kernel k_check, k_wrap, k_bin, k_scan_partial, k_scan_top, k_scan_final, k_scatter,
-        k_cellsort, k_reorder_words, k_build, k_contacts, k_invperm, k_hist_rename,
+    cl_kernel k_check, k_wrap, k_bin, k_scan_serial, k_scan_partial, k_scan_top, k_scan_final,
+        k_scatter, k_cellsort, k_reorder_words, k_build, k_contacts, k_invperm, k_hist_rename,
         k_hist_transfer, k_overlap;
 };
 
@@ -160,6 +160,13 @@ static size_t scan_chunks(int m, int *chunk)
 void nbr_scan(struct gravel *g, cl_mem in, cl_mem out, int m)
 {
     struct nbr *b = get(g);
+    if (g->eng->ocl.serial) { /* work-items run in turn there: one pass, one launch */
+        eng_arg_int(g, b->k_scan_serial, 0, m);
+        eng_arg_mem(g, b->k_scan_serial, 1, in);
+        eng_arg_mem(g, b->k_scan_serial, 2, out);
+        eng_launch(g, b->k_scan_serial, 1);
+        return;
+    }
     int chunk;
     size_t nch = scan_chunks(m, &chunk);
     eng_arg_int(g, b->k_scan_partial, 0, m);
@@ -510,6 +517,7 @@ void nbr_setup(struct gravel *g)
     b->k_check = eng_kernel(g, "nbr_check");
     b->k_wrap = eng_kernel(g, "nbr_wrap_extent");
     b->k_bin = eng_kernel(g, "nbr_bin");
+    b->k_scan_serial = eng_kernel(g, "scan_serial");
     b->k_scan_partial = eng_kernel(g, "scan_partial");
     b->k_scan_top = eng_kernel(g, "scan_top");
     b->k_scan_final = eng_kernel(g, "scan_final");

@@ -24,9 +24,11 @@ TEST(scan_matches_host)
     fx_box(g, lo, hi, "ppp", 1);
     fx_spheres(g, 4, 4, 4, 2.5, 0.5, 0.5, 0, 1);
     prepare(g);
-    int sizes[] = {1, 7, 64, 1000, 100003};
-    for (size_t t = 0; t < sizeof sizes / sizeof *sizes; t++) {
-        int m = sizes[t];
+    /* both forms: one launch (the serial device's) and three chunked ones */
+    int sizes[] = {1, 7, 64, 1000, 100003}, serial = g->eng->ocl.serial;
+    for (size_t t = 0; t < 2 * sizeof sizes / sizeof *sizes; t++) {
+        int m = sizes[t / 2];
+        g->eng->ocl.serial = (int)(t % 2);
         int *in = malloc((size_t)m * sizeof(int)), *out = malloc((size_t)(m + 1) * sizeof(int));
         unsigned s = 7 + (unsigned)t;
         for (int i = 0; i < m; i++)
@@ -48,6 +50,7 @@ TEST(scan_matches_host)
         free(in);
         free(out);
     }
+    g->eng->ocl.serial = serial;
     gr_destroy(g);
 }
 
