@@ -36,6 +36,30 @@ struct engine *eng_get(struct gravel *g) { return eng_open(g, -1); }
 struct dev_atoms *eng_atoms(struct gravel *g) { return &g->eng->a; }
 int eng_in_setup(struct gravel *g) { return g->eng && g->eng->setup; }
 
+/* The arguments last set on a kernel, so that setting one to the value it
+ * holds is skipped: PoCL allocates and copies at every clSetKernelArg, and a
+ * step's launches set mostly the buffers of the step before. An argument
+ * keeps its value on the kernel until it is set again (OpenCL 1.2 5.9.2);
+ * a local-memory size is not remembered. */
+#define MEMO_ARGS 64
+#define MEMO_INLINE 16
+struct arg_memo {
+    size_t sz; /* 0: unknown */
+    unsigned char v[MEMO_INLINE];
+    unsigned char *big; /* a value over MEMO_INLINE bytes (a struct of scalars) */
+    size_t bigcap;
+};
+struct kern_memo {
+    struct arg_memo a[MEMO_ARGS];
+};
+
+static void memo_forget(struct kern_memo *m)
+{
+    for (int i = 0; i < MEMO_ARGS; i++)
+        free(m->a[i].big);
+    memset(m, 0, sizeof *m);
+}
+
 cl_kernel eng_kernel(struct gravel *g, const char *name)
 {
     struct engine *e = g->eng;
@@ -43,7 +67,9 @@ cl_kernel eng_kernel(struct gravel *g, const char *name)
         e->kern_cap = e->kern_cap ? 2 * e->kern_cap : 32;
         e->kern = gr_realloc(g, e->kern, (size_t)e->kern_cap * sizeof *e->kern);
         e->kern_wg = gr_realloc(g, e->kern_wg, (size_t)e->kern_cap * sizeof *e->kern_wg);
+        e->kern_memo = gr_realloc(g, e->kern_memo, (size_t)e->kern_cap * sizeof *e->kern_memo);
     }
+    memset(&e->kern_memo[e->nkern], 0, sizeof *e->kern_memo);
     cl_kernel k = ocl_kernel(g, &e->ocl, name);
     /* the device's choice (ocl.wg) capped by what the compiled kernel allows */
     size_t kmax = 0;
@@ -57,19 +83,51 @@ cl_kernel eng_kernel(struct gravel *g, const char *name)
 
 void eng_release_kernels(struct engine *e)
 {
-    for (int i = 0; i < e->nkern; i++)
+    for (int i = 0; i < e->nkern; i++) {
         clReleaseKernel(e->kern[i]);
+        memo_forget(&e->kern_memo[i]);
+    }
     e->nkern = 0;
+    e->kern_last = 0;
+}
+
+/* index of kernel k in e->kern (-1: not made by eng_kernel); the last one
+ * found is tried first, as a launch's arguments are set in a row */
+static int kernel_index(struct engine *e, cl_kernel k)
+{
+    if (e->kern_last < e->nkern && e->kern[e->kern_last] == k)
+        return e->kern_last;
+    for (int i = 0; i < e->nkern; i++)
+        if (e->kern[i] == k)
+            return e->kern_last = i;
+    return -1;
 }
 
 static void set_arg(struct gravel *g, cl_kernel k, int i, size_t sz, const void *p)
 {
+    struct engine *e = g->eng;
+    const int ki = kernel_index(e, k);
+    struct arg_memo *m = ki >= 0 && i < MEMO_ARGS ? &e->kern_memo[ki].a[i] : NULL;
+    if (m && p && m->sz == sz && !memcmp(sz <= MEMO_INLINE ? m->v : m->big, p, sz))
+        return;
     cl_int err = clSetKernelArg(k, (cl_uint)i, sz, p);
     if (err != CL_SUCCESS) {
         char name[128] = "?";
         clGetKernelInfo(k, CL_KERNEL_FUNCTION_NAME, sizeof name, name, NULL);
         gr_error(g, "OpenCL clSetKernelArg(%s, %d) failed: %s", name, i, ocl_errname(err));
     }
+    if (!m)
+        return;
+    m->sz = 0;
+    if (!p) /* local memory */
+        return;
+    if (sz > MEMO_INLINE && m->bigcap < sz) {
+        free(m->big);
+        m->big = gr_malloc(g, sz);
+        m->bigcap = sz;
+    }
+    memcpy(sz <= MEMO_INLINE ? m->v : m->big, p, sz);
+    m->sz = sz;
 }
 
 void eng_arg_mem(struct gravel *g, cl_kernel k, int i, cl_mem m) { set_arg(g, k, i, sizeof m, &m); }
@@ -102,10 +160,8 @@ void eng_arg_local(struct gravel *g, cl_kernel k, int i, size_t bytes)
  * results never depend on it (no cross-work-item sums). */
 static size_t work_group(struct engine *e, cl_kernel k)
 {
-    for (int i = 0; i < e->nkern; i++)
-        if (e->kern[i] == k)
-            return e->kern_wg[i];
-    return 1;
+    const int i = kernel_index(e, k);
+    return i >= 0 ? e->kern_wg[i] : 1;
 }
 
 void eng_launch(struct gravel *g, cl_kernel k, size_t n)

@@ -132,6 +132,9 @@ struct engine {
     int nkern, kern_cap;
     cl_kernel *kern;            /* every kernel created for this program */
     size_t *kern_wg;            /* its work-group size (queried once, at creation) */
+    struct kern_memo *kern_memo; /* the arguments last set on it (device.c: a repeat is
+                                  * not set again) */
+    int kern_last;              /* the kernel last looked up (set_arg, work_group) */
     struct nbr *nbr;
     struct acc *acc;            /* collision-resolution records of the run */
     /* kept across runs: validity of the device neighbor list / history */

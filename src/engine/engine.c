@@ -645,6 +645,7 @@ void engine_destroy(struct gravel *g)
     eng_release_kernels(e);
     free(e->kern);
     free(e->kern_wg);
+    free(e->kern_memo);
     release_set(&e->a);
     diag_free_start(&e->start);
     for (int i = 0; i < g->styles.nfix; i++) {

@@ -54,6 +54,42 @@ TEST(scan_matches_host)
     gr_destroy(g);
 }
 
+/* An argument set to the value it holds is not set again (device.c
+ * set_arg): a kernel alternating between two inputs and two sizes must
+ * read the one set last each time. */
+TEST(kernel_arguments_reset_after_change)
+{
+    struct gravel *g = test_engine();
+    double lo[3] = {0, 0, 0}, hi[3] = {10, 10, 10};
+    fx_box(g, lo, hi, "ppp", 1);
+    fx_spheres(g, 4, 4, 4, 2.5, 0.5, 0.5, 0, 1);
+    prepare(g);
+    const int m = 50;
+    int in1[50], in2[50], out[51];
+    for (int i = 0; i < m; i++) {
+        in1[i] = 1;
+        in2[i] = 2;
+    }
+    cl_mem a = eng_alloc(g, sizeof in1, "in1"), b = eng_alloc(g, sizeof in2, "in2");
+    cl_mem o = eng_alloc(g, sizeof out, "out");
+    eng_write(g, a, 0, sizeof in1, in1);
+    eng_write(g, b, 0, sizeof in2, in2);
+    const int serial = g->eng->ocl.serial;
+    for (int t = 0; t < 8; t++) {
+        g->eng->ocl.serial = t / 4;
+        const int two = t % 2, len = t % 4 < 2 ? m : m - 10;
+        nbr_scan(g, two ? b : a, o, len);
+        eng_read(g, o, 0, sizeof out, out);
+        CHECK(out[len] == (two ? 2 : 1) * len);
+        CHECK(out[len - 1] == (two ? 2 : 1) * (len - 1));
+    }
+    g->eng->ocl.serial = serial;
+    clReleaseMemObject(a);
+    clReleaseMemObject(b);
+    clReleaseMemObject(o);
+    gr_destroy(g);
+}
+
 /* Compare the device list of every atom with a brute-force host list. */
 static int list_errors(struct gravel *g, int *total_out)
 {
@@ -379,6 +415,7 @@ TEST(build_failure_names_source)
 int main(void)
 {
     RUN(scan_matches_host);
+    RUN(kernel_arguments_reset_after_change);
     RUN(list_brute_force_periodic_polydisperse);
     RUN(list_brute_force_fixed);
     RUN(list_brute_force_mixed);
