@@ -17,13 +17,20 @@ static void prepare(struct gravel *g)
     nbr_setup(g);
 }
 
-TEST(scan_matches_host)
+/* a small periodic scene with its kernels set up, for the scan checks */
+static struct gravel *scan_engine(void)
 {
     struct gravel *g = test_engine();
     double lo[3] = {0, 0, 0}, hi[3] = {10, 10, 10};
     fx_box(g, lo, hi, "ppp", 1);
     fx_spheres(g, 4, 4, 4, 2.5, 0.5, 0.5, 0, 1);
     prepare(g);
+    return g;
+}
+
+TEST(scan_matches_host)
+{
+    struct gravel *g = scan_engine();
     /* both forms: one launch (the serial device's) and three chunked ones */
     int sizes[] = {1, 7, 64, 1000, 100003}, serial = g->eng->ocl.serial;
     for (size_t t = 0; t < 2 * sizeof sizes / sizeof *sizes; t++) {
@@ -59,11 +66,7 @@ TEST(scan_matches_host)
  * read the one set last each time. */
 TEST(kernel_arguments_reset_after_change)
 {
-    struct gravel *g = test_engine();
-    double lo[3] = {0, 0, 0}, hi[3] = {10, 10, 10};
-    fx_box(g, lo, hi, "ppp", 1);
-    fx_spheres(g, 4, 4, 4, 2.5, 0.5, 0.5, 0, 1);
-    prepare(g);
+    struct gravel *g = scan_engine();
     const int m = 50;
     int in1[50], in2[50], out[51];
     for (int i = 0; i < m; i++) {
