@@ -407,6 +407,7 @@ alanes_step(const int i0, struct atom_lanes *at, KA_PARAMS(atom_step), __global 
                     (vi.y - vi.y) + (vi.z - vi.z);
     const amask bad = z != (areal)0;
     if (any(bad)) { /* the lowest such index: atomic_min of each */
+        atomic_max(&flags[0], stamp); /* as atom_step.cl */
         const aint badi = AINT(bad);
 #define A_BAD(l) (badi[l] ? (void)atomic_min(&flags[1], i0 + l) : (void)0)
         ALANES_DO(A_BAD);
@@ -497,6 +498,8 @@ static inline __attribute__((always_inline)) void gather_lanes(KA_PARAMS(pair_ga
 __kernel void pair_gather(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
+    if (KA_HALTED())
+        return;
     gather_lanes(KA_ARGS(pair_gather), 0);
 }
 
@@ -504,6 +507,8 @@ __kernel void pair_gather(KA_KERNEL(pair_gather))
 __kernel void fused_tail(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
+    if (KA_HALTED())
+        return;
     gather_lanes(KA_ARGS(pair_gather), 1);
 }
 #endif /* ATOM_LW > 1 */

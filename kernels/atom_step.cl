@@ -12,8 +12,9 @@
  * moved (minimum image) more than sqrt(trigsq) since the last build (the
  * host gives each opening a larger stamp, so flags[0] needs no reset
  * between steps: src/engine/neighbor.c, step_args); flags[1] = lowest
- * index with a non-finite position or velocity. *at holds x, xl, v and, when
- * ninit > 0, f, om, tq, m, r, type and mask. */
+ * index with a non-finite position or velocity (which sets flags[0] too,
+ * so that a speculated step halts on it: KARGS_halt). *at holds x, xl, v
+ * and, when ninit > 0, f, om, tq, m, r, type and mask. */
 
 /* pbc_wrap of component c of (xi, xl, im): vector components have no address */
 #define PBC_WRAP_COMPONENT(c, lo, hi, L)                                                       \
@@ -89,6 +90,8 @@ static inline void atom_step(const int i, struct fused_atom *at, KA_PARAMS(atom_
         atomic_max(&flags[0], stamp);
     /* x - x is 0 for a finite x and NaN otherwise: one test for the six */
     const REAL3 zx = xi - xi, zv = vi - vi;
-    if (zx.x + zx.y + zx.z + zv.x + zv.y + zv.z != (REAL)0)
+    if (zx.x + zx.y + zx.z + zv.x + zv.y + zv.z != (REAL)0) {
+        atomic_max(&flags[0], stamp); /* a speculation stops here too (KARGS_halt) */
         atomic_min(&flags[1], i);
+    }
 }

@@ -36,6 +36,13 @@
 
 /* ---- the particle-particle stage (kernels/pair_loop.cl) ---- */
 
+/* halt (a part): the kernels of a speculated step (src/engine/neighbor.c,
+ * nbr_decide: its rebuild flag not read yet) do nothing once an opening of
+ * the speculation asked for a rebuild or met a non-finite particle, i.e.
+ * hflags[0] (the neighbor flags) is a stamp in [hlo, hhi]; hlo > hhi: never
+ * (KA_HALTED, tested first thing in the kernel) */
+#define KARGS_halt(X, Y) X(CMI, hflags) Y(I, hlo) Y(I, hhi)
+
 /* pair_contacts: one work-item per contact; shear is ci when the law keeps
  * no history, omega is v without rotation; rec the contacts' records
  * (REC_W REAL each, kernels/pair_loop.cl); temp / recq (the temperatures,
@@ -46,7 +53,8 @@
     X(I, ncontact) Y(CMI, ci) Y(CMI, cj) Y(CM, x) Y(CM, v) Y(CM, omega) Y(CM, radius)          \
     Y(CM, rmass) Y(CMI, type) Y(CMU, mask) Y(M, shear) Y(CM, param) Y(I, ntypes) Y(I, nparam)  \
     Y(U, freezebit) Y(R, dt) Y(I, shearupdate) Y(BOX, box) Y(M, rec) Y(MF, acc) Y(MI, astep)   \
-    Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(POS_LO, xlo)
+    Y(I, step) Y(CM, hrate) Y(U, vgroup) Y(CM, temp) Y(M, recq) Y(MUC, quiet) Y(PART, halt)    \
+    Y(POS_LO, xlo)
 
 /* pair_gather: one work-item per particle, then the fused post_force,
  * final_integrate and end_of_step ops [first, first + npost + nfinal)
@@ -57,7 +65,7 @@
     X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(M, f) Y(M, torque) Y(CMI, ops) \
     Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega)            \
     Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look) \
-    Y(PART, atom_step) Y(POS_LO, xlo)
+    Y(PART, atom_step) Y(PART, halt) Y(POS_LO, xlo)
 
 /* force_clear: no pair style (heatflow: f without HAS_HEAT) */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)
@@ -141,7 +149,7 @@
 /* Every list, for the host's structs and binders (src/engine/kargs.h); parts
  * first (a list's struct holds its parts' structs). */
 #define KARGS_LISTS(T)                                                                         \
-    T(wall_atoms) T(wall_own) T(wall_law) T(atom_step) T(pair_contacts) T(pair_gather)         \
+    T(wall_atoms) T(wall_own) T(wall_law) T(atom_step) T(halt) T(pair_contacts) T(pair_gather) \
     T(force_clear) T(nbr_check) T(nbr_wrap_extent) T(wall_kernel) T(mesh_kernel)               \
     T(region_kernel) T(region_probe)
 
@@ -297,6 +305,9 @@
     };
 KARGS_LISTS(KA_KSTRUCT)
 #undef KA_KSTRUCT
+
+/* a speculated step's kernel whose speculation failed (KARGS_halt) */
+#define KA_HALTED() (hlo <= hhi && hflags[0] >= hlo && hflags[0] <= hhi)
 
 #define KA_UNPACK(name)                                                                        \
     const struct ka_##name ka_s = name##_ks;                                                   \

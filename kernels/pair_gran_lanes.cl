@@ -90,6 +90,8 @@ static inline void pair_lane_apart(const int c, __global REAL *shear, __global u
 __kernel void pair_contacts(KA_KERNEL(pair_contacts))
 {
     KA_UNPACK(pair_contacts);
+    if (KA_HALTED())
+        return;
     const int c0 = get_global_id(0) * PAIR_LW;
     if (c0 >= ncontact)
         return;

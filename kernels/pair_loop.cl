@@ -63,6 +63,8 @@ CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 __kernel void pair_contacts(KA_KERNEL(pair_contacts))
 {
     KA_UNPACK(pair_contacts);
+    if (KA_HALTED())
+        return;
     const int c = get_global_id(0);
     if (c >= ncontact)
         return;
@@ -290,6 +292,8 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
 __kernel void pair_gather(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
+    if (KA_HALTED())
+        return;
     const int i = get_global_id(0);
     if (i < n)
         gather_atom(KA_ARGS(pair_gather), 0, i);
@@ -304,6 +308,8 @@ __kernel void pair_gather(KA_KERNEL(pair_gather))
 __kernel void fused_tail(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
+    if (KA_HALTED())
+        return;
     const int i = get_global_id(0);
     if (i < n)
         gather_atom(KA_ARGS(pair_gather), 1, i);

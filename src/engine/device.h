@@ -82,6 +82,8 @@ struct run_stats {
     double t_total;                 /* wall seconds of the loop */
     double t_pair, t_neigh, t_modify, t_output, t_other;
     bigint nbuilds, ndanger;
+    bigint nspec, nspec_back;       /* rebuild decisions on speculation, steps gone back
+                                     * (src/engine/neighbor.h, nbr_decide) */
     double total_neighbors;         /* entries in the last list built */
     double max_overlap_frac;        /* largest overlap / radius: pairs at outputs,
                                      * walls and meshes at every step */

@@ -36,6 +36,17 @@
 
 #define NCHUNK_MAX 256
 
+/* At most NBR_SPEC steps in a row decided on speculation (nbr_decide):
+ * each holds what its decision would restore were its opening to ask for a
+ * rebuild. A failed speculation wastes the launches of the steps after the
+ * failed one, so the window stays short beside the steps between rebuilds. */
+#define NBR_SPEC 16
+struct nbr_spec {
+    bigint step;
+    double time;
+    int stamp, ago;
+};
+
 struct nbr {
     struct nbr_list list;
     /* contacts of the previous build, for the history transfer: offsets,
@@ -63,6 +74,10 @@ struct nbr {
     int ago;
     int opened;                 /* the last pair_gather ran this step's opening (nbr_step_args) */
     int stamp;                  /* of the last opening: flags[0] == stamp when it asks to rebuild */
+    int spec_on;                /* steps may be decided on speculation in this run */
+    int nspec;                  /* steps decided on speculation since the last flag read */
+    int interval;               /* steps from a build to the next one asked for (0: none yet) */
+    struct nbr_spec spec[NBR_SPEC];
     double corners_hold[8][3];  /* box corners at the last build */
     int box_moved;              /* the box changed since the last build (nbr_box_changed) */
     bigint last_sort;           /* step of the last re-sort (atom_modify sort) */
@@ -510,6 +525,20 @@ static void set_cutoffs(struct gravel *g, struct nbr *b)
     setup_multi(g, b);
 }
 
+/* Whether this run may decide steps on speculation (nbr_decide): on a
+ * threaded device, whose flag read costs a hand-off to the host and back
+ * (doc/opencl.md; the serial device's costs a microsecond), one process,
+ * LAMMPS's default decision (every 1 delay 0 check yes), and not switched
+ * off (environment GRAVEL_SPECULATE=0). */
+static int speculation_wanted(struct gravel *g)
+{
+    const char *env = getenv("GRAVEL_SPECULATE");
+    if (env && *env && strcmp(env, "0") && strcmp(env, "1"))
+        gr_error(g, "GRAVEL_SPECULATE must be 0 or 1, got '%.32s'", env);
+    return !(env && !strcmp(env, "0")) && !g->eng->ocl.serial && !par_on(g) &&
+           g->neigh.every <= 1 && g->neigh.delay == 0 && g->neigh.check && !g->neigh.once;
+}
+
 void nbr_setup(struct gravel *g)
 {
     struct engine *e = g->eng;
@@ -543,6 +572,8 @@ void nbr_setup(struct gravel *g)
     }
     if (!b->flags)
         b->flags = eng_alloc(g, 4 * sizeof(cl_int), "neighbor flags");
+    b->nspec = b->interval = 0;
+    b->spec_on = speculation_wanted(g);
     if (!b->sums)
         b->sums = eng_alloc(g, (NCHUNK_MAX + 1) * sizeof(cl_int), "scan sums");
     rel(&b->ext);
@@ -613,7 +644,7 @@ void nbr_setup(struct gravel *g)
     b->ago = 0;
     b->built = 0;
     b->last_sort = g->step;
-    e->st.nbuilds = e->st.ndanger = 0;
+    e->st.nbuilds = e->st.ndanger = e->st.nspec = e->st.nspec_back = 0;
 }
 
 void nbr_radii_changed(struct gravel *g)
@@ -776,10 +807,74 @@ void nbr_step_reset(struct gravel *g)
     get(g)->stamp = 0; /* the run's first opening resets the flags */
 }
 
-int nbr_decide(struct gravel *g, int forced)
+/* A step decided on speculation: no rebuild, recorded for the flag read
+ * that checks it; its kernels carry the halt (nbr_halt_args). Only a step
+ * whose opening ran in the step before (opened), that nothing forces to
+ * rebuild, while the stamps stay clear of their wrap (step_args), and not
+ * in the last eighth of the interval between the last two builds, nor the
+ * 4 steps after it, where a rebuild is likely: a speculation that fails
+ * wastes the launches of the steps after the failed one (a 10^4-particle
+ * suspension rebuilding every 6 steps lost 5 % to them without this). */
+static int speculate(struct gravel *g, struct nbr *b, int forced)
+{
+    const int next = b->ago + 1, iv = b->interval;
+    if (!b->spec_on || !b->opened || forced || b->radii_changed || b->box_moved ||
+        b->nspec == NBR_SPEC || b->stamp <= 0 || b->stamp > INT_MAX - 2 * NBR_SPEC ||
+        (iv > 0 && next >= iv - iv / 8 && next <= iv + 4))
+        return 0;
+    b->spec[b->nspec++] = (struct nbr_spec){g->step, g->time, b->stamp, b->ago};
+    g->eng->st.nspec++;
+    b->opened = 0;
+    b->ago++; /* as a decision that read no request */
+    return 1;
+}
+
+/* The flags read after steps decided on speculation (fl): when the opening
+ * of one of them asked for a rebuild or met a non-finite particle (flags[0]
+ * its stamp), its kernels and those of every later step did nothing
+ * (KARGS_halt), so the run goes back to it (g->step, g->time, the stamp and
+ * the count since the build) with its opening done. Returns 1 then. */
+static int speculation_failed(struct gravel *g, struct nbr *b, const cl_int fl[4])
+{
+    int k = 0;
+    while (k < b->nspec && b->spec[k].stamp != fl[0])
+        k++;
+    const int failed = k < b->nspec;
+    if (failed) {
+        const struct nbr_spec *p = &b->spec[k];
+        g->eng->st.nspec_back += g->step - p->step;
+        g->step = p->step;
+        g->time = p->time;
+        b->stamp = p->stamp;
+        b->ago = p->ago;
+        b->opened = 1;
+    }
+    b->nspec = 0;
+    return failed;
+}
+
+void nbr_halt_args(struct gravel *g, struct halt_args *h)
+{
+    const struct nbr *b = get(g);
+    h->hflags = b->flags;
+    h->hlo = b->nspec > 0 ? b->spec[0].stamp : 1;
+    h->hhi = b->nspec > 0 ? b->spec[b->nspec - 1].stamp : 0;
+}
+
+int nbr_decide(struct gravel *g, int forced, int plain)
 {
     struct engine *e = g->eng;
     struct nbr *b = get(g);
+    if (plain && speculate(g, b, forced))
+        return 0;
+    cl_int fl[4];
+    int have = 0; /* fl holds this step's flags */
+    if (b->nspec > 0) {
+        read_flags(g, b, fl);
+        have = 1;
+        if (speculation_failed(g, b, fl))
+            forced = 0; /* nothing forced the step gone back to (speculate) */
+    }
     if (!b->opened) { /* the step's opening; else the last pair_gather ran it */
         struct nbr_check_args ck = {
             .n = e->a.n,
@@ -797,10 +892,11 @@ int nbr_decide(struct gravel *g, int forced)
         step_args(g, b, &ck.atom_step, 1);
         ka_bind_nbr_check(g, b->k_check, 0, &ck);
         eng_launch(g, b->k_check, (size_t)e->a.n);
+        have = 0;
     }
     b->opened = 0;
-    cl_int fl[4];
-    read_flags(g, b, fl);
+    if (!have)
+        read_flags(g, b, fl);
     if (fl[1] != 0x7fffffff)
         nonfinite_error(g, fl[1]);
     if (forced || b->radii_changed) {
@@ -816,6 +912,7 @@ int nbr_decide(struct gravel *g, int forced)
             return 1;
         /* a decomposed run rebuilds on every rank when one needs it */
         if (par_on(g) ? comm_max_int(fl[0] == b->stamp) : fl[0] == b->stamp) {
+            b->interval = b->ago;
             int first = every > g->neigh.delay ? every : g->neigh.delay;
             if (b->ago == first)
                 e->st.ndanger++;

@@ -58,8 +58,23 @@ void nbr_free(struct gravel *g);
  * check by device reduction) and a non-finite check that stops the run with
  * the step, tag and probable cause. Returns 1 when a rebuild is due. With
  * forced (a fix's next_reneighbor is this step) it returns 1 before the
- * every/delay count advances, as LAMMPS (no dangerous-build count). */
-int nbr_decide(struct gravel *g, int forced);
+ * every/delay count advances, as LAMMPS (no dangerous-build count).
+ *
+ * plain: nothing but the step's kernels runs until the next decision (the
+ * step's pair_gather opens the next step: src/engine/run.c). Such a step
+ * whose opening already ran may be decided on speculation (not on the serial
+ * device, nor under MPI, and only with every 1 delay 0 check yes): no
+ * rebuild, without reading the flags, its kernels bound to halt
+ * (nbr_halt_args) if an opening since the last read asked for a rebuild.
+ * The next decision that reads the flags checks them all; when one failed
+ * it puts g->step and g->time back to that step, whose opening then
+ * decides (a rebuild, or the non-finite stop): the caller's step count
+ * follows g->step. The results are those of deciding every step. */
+int nbr_decide(struct gravel *g, int forced, int plain);
+/* The halt of this step's pair kernels (KARGS_halt of kernels/kernel_args.h):
+ * the stamps of the steps decided on speculation, or never. */
+struct halt_args;
+void nbr_halt_args(struct gravel *g, struct halt_args *h);
 /* The arguments of a step's opening for pair_gather (kernels/atom_step.cl).
  * With ahead, the next step's opening runs in this step's pair_gather
  * (src/engine/run.c, step_lookahead): it gets a new stamp and the next

@@ -59,9 +59,11 @@ static double wall(void)
  * The device is synchronized after each section only on sampled steps
  * (every TIME_SAMPLE-th) and on rebuild steps, so ordinary steps run
  * without host waits: rebuild steps are timed exactly, sampled ordinary
- * steps are scaled to all ordinary steps; the output is timed every step. */
+ * steps are scaled to all ordinary steps; the output is timed every step.
+ * A sample's waits cost a threaded device's hand-off each (doc/opencl.md):
+ * one step in 32 keeps them out of the steps decided on speculation. */
 enum timer_phase { TM_PAIR, TM_NEIGH, TM_MODIFY, TM_OUTPUT, TM_N };
-enum { TIME_SAMPLE = 8 };
+enum { TIME_SAMPLE = 32 };
 struct run_timers {
     double exact[TM_N];         /* rebuild steps; the output of every step */
     double sampled[TM_N];       /* sampled ordinary steps */
@@ -262,6 +264,22 @@ static int step_lookahead(struct gravel *g, int last)
     return 1;
 }
 
+/* Whether nothing but the step's pair kernels runs between this step's
+ * rebuild decision and the next (nbr_decide's plain): its pair_gather opens
+ * the next step, no fix calls in (not even post_force before a fused tail:
+ * a wall's kernels carry no halt) and no dynamic group is updated. */
+static int plain_step(struct gravel *g, int last)
+{
+    const struct hook_lists *h = &g->eng->hooks;
+    for (int k = 0; k < NHOOK; k++)
+        if (h->n[k] > 0 && k != hook_index(HOOK_PRE_EXCHANGE))
+            return 0;
+    for (int ig = 1; ig < g->groups.n; ig++)
+        if (g->groups.used[ig] && g->groups.dyn[ig].on)
+            return 0;
+    return step_lookahead(g, last);
+}
+
 /* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */
 static void post_neighbor(struct gravel *g)
 {
@@ -331,6 +349,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .quiet = l->quiet,
         };
         nbr_list_box(l, pc.box);
+        nbr_halt_args(g, &pc.halt);
         ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
         /* PAIR_LW contacts per work-item (kernels/pair_gran_lanes.cl) */
         eng_launch(g, e->k_pair, ((size_t)l->ncontact + (size_t)e->pair_lw - 1) / (size_t)e->pair_lw);
@@ -360,6 +379,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .recq = recq,
             .heatflow = e->heat ? a->heatflow : a->f,
             .look = look && !tail,
+            .halt = pc.halt,
         };
         nbr_step_args(g, &pg.atom_step, pg.look);
         ka_bind_pair_gather(g, e->k_gather, 0, &pg);
@@ -698,7 +718,9 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         if (sampled)
             eng_finish(g);
         double a1 = wall();
-        int rebuild = nbr_decide(g, forced_rebuild(g));
+        /* a step decided on speculation that failed puts g->step back */
+        int rebuild = nbr_decide(g, forced_rebuild(g), plain_step(g, s + 1 == nsteps));
+        s = g->step - g->firststep - 1;
         if (!rebuild && par_on(g))
             par_forward(g); /* the ghosts' x, v, omega of this step */
         group_dynamic_update(g, g->step); /* LAMMPS' post_integrate */

@@ -441,6 +441,9 @@ void output_finish(struct gravel *g, const struct run_stats *given)
     if (s->nsteps > 0)
         gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
                  s->ncontact, (double)s->nlaunch / (double)s->nsteps);
+    if (s->nspec > 0)
+        gr_print(g, "Rebuild decisions on speculation = %lld (%lld steps gone back)\n",
+                 (long long)s->nspec, (long long)s->nspec_back);
     if (comm_size() > 1 && s->nsteps > 0)
         gr_print(g, "Communication per rank and step = %.6g bytes in %.4g messages to other "
                     "ranks, %.6g bytes into %.4g collectives (mean over %d ranks)\n",

@@ -45,6 +45,11 @@ a finer budget (cells_per_atom_*: GRAVEL_CELLS_PER_ATOM=0 and 64).
 A scene under 1500 atoms (the dense packing) runs on the serial device
 unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
+On the threaded device a plain step's rebuild decision is taken on
+speculation (src/engine/neighbor.h, nbr_decide): the chute and the fused
+drag vortex give the same bits with it off (GRAVEL_SPECULATE=0), after at
+least one speculation that failed and went back (the footer's count), and
+a gas heated until an atom is lost mid-run stops with the same message.
 One PASS/FAIL line per check.
 """
 import math
@@ -391,6 +396,65 @@ def check_fused_lanes():
     return bad
 
 
+# a gas whose negative viscous damping heats it until an atom crosses the
+# box in one step: lost at a rebuild that a failed speculation brings
+HEATED_GAS = """units lj
+atom_style sphere
+boundary p p p
+lattice sc 0.2
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 box
+set group all diameter 1.0 density 1.0
+velocity all create 1.0 4321 loop geom
+pair_style gran/hooke/history 2000 NULL 50 NULL 0.5 0
+pair_coeff * *
+neighbor 0.2 bin
+fix 1 all nve/sphere
+fix 2 all viscous -5
+timestep 0.001
+thermo 1000
+run 200000
+"""
+
+
+def speculated(out):
+    """(decisions on speculation, steps gone back) from a run's footer."""
+    for line in (out or "").splitlines():
+        if line.startswith("Rebuild decisions on speculation = "):
+            f = line.replace("(", " ").split()
+            return int(f[5]), int(f[6])
+    return 0, 0
+
+
+def check_speculation():
+    """Rebuild decisions on speculation (threaded device) against every
+    decision read at its step: the same bits, at least one failed
+    speculation gone back, the same stop on a lost atom."""
+    bad = 0
+    cpu = ("-device", "cpu")
+    for label, deck in (("chute", CHUTE),
+                        ("drag", DRAG.format(update="implicit", scene=SCENE))):
+        rows_s, dump_s, out_s = run_full(deck, None, cpu)
+        rows_n, dump_n, out_n = run_full(deck, {"GRAVEL_SPECULATE": "0"}, cpu)
+        ok = rows_s is not None and rows_n is not None and rows_s == rows_n and dump_s == dump_n
+        bad += not check("speculation_%s_equals_none" % label, ok,
+                         ((dump_s or "") + (dump_n or ""))[-300:] if rows_s is None or
+                         rows_n is None else first_difference(dump_n, dump_s))
+        (ns, back), (nn, _) = speculated(out_s), speculated(out_n)
+        bad += not check("speculation_%s_went_back" % label, ns > 0 and back > 0 and nn == 0,
+                         "%d decisions, %d steps back; off: %d" % (ns, back, nn))
+    errs = []
+    for env in (None, {"GRAVEL_SPECULATE": "0"}):
+        rows, text, _ = run_full(HEATED_GAS, env, cpu)
+        errs.append([l for l in (text or "").splitlines() if l.startswith("ERROR")] if rows is None
+                    else [])
+    bad += not check("speculation_lost_atom_same_stop",
+                     errs[0] and errs[0] == errs[1] and "Lost atoms" in errs[0][0],
+                     "%s | %s" % (errs[0][:1], errs[1][:1]))
+    return bad
+
+
 def check_serial_default():
     """The dense packing (1000 atoms) without a device named runs on the
     serial device; with -device cpu on PoCL's threads; the same bits."""
@@ -408,6 +472,8 @@ def check_serial_default():
 def main():
     if sys.argv[1:] == ["rebuild_schedule"]:  # only the periodic rebuild-schedule checks
         return 1 if check_rebuild_schedule() else 0
+    if sys.argv[1:] == ["speculation"]:  # only the speculation checks
+        return 1 if check_speculation() else 0
     ref_rows, ref_dump = run(BED.format(extra=""))
     if ref_rows is None:
         check("determinism_reference_run", False, ref_dump[-400:])
@@ -458,6 +524,7 @@ def main():
     bad += check_cell_grid()
     bad += check_tail()
     bad += check_serial_default()
+    bad += check_speculation()
     rows, dump = run(PACK)
     if rows is None:
         bad += not check("pair_forces_sum_to_zero", False, dump[-400:])
