@@ -108,7 +108,9 @@ __kernel void pair_contacts(KA_KERNEL(pair_contacts))
         cc[l] = min(c0 + l, ncontact - 1);
         ii[l] = ci[cc[l]];
         jj[l] = cj[cc[l]];
-        pp[l] = param + (size_t)((type[ii[l]] - 1) * ntypes + (type[jj[l]] - 1)) * nparam;
+        pp[l] = ntypes == 1 ? param /* one set: no type to load */
+                            : param + (size_t)((type[ii[l]] - 1) * ntypes + (type[jj[l]] - 1)) *
+                                          nparam;
     }
     /* gathered straight into lanes (LG(F): F(0), ..., F(PAIR_LW - 1); no
      * round trip through private memory) */
@@ -191,8 +193,9 @@ __kernel void pair_contacts(KA_KERNEL(pair_contacts))
     k.vr = lr3_of_w(LG(G_VIX) - LG(G_VJX), LG(G_VIY) - LG(G_VJY),
                     LG(G_VIZ) - LG(G_VJZ));
     const lreal_w mi = LG(G_MI), mj = LG(G_MJ);
-    k.meff = LSELW(LSELW(mi * mj / (mi + mj), mj, LG(G_FI) != (lreal_w)0), mi,
-                   LG(G_FJ) != (lreal_w)0);
+    const lreal_w mij = mi * mj / (mi + mj);
+    k.meff = freezebit ? LSELW(LSELW(mij, mj, LG(G_FI) != (lreal_w)0), mi, LG(G_FJ) != (lreal_w)0)
+                       : mij; /* no freeze group: no mask to load */
     /* the kinematics the gran laws and the note read (contact_kinematics) */
     k.rinv = (lreal_w)1 / k.r;
     k.rsqinv = (lreal_w)1 / rsq;
@@ -205,12 +208,21 @@ __kernel void pair_contacts(KA_KERNEL(pair_contacts))
 
     /* the law */
     struct gran_par_w par;
-    par.kn = LG(G_KN);
-    par.kt = LG(G_KT);
-    par.gamman = LG(G_GN);
-    par.gammat = LG(G_GT);
-    par.xmu = LG(G_XMU);
-    par.limit = LG(G_LIM);
+    if (ntypes == 1) { /* one set for every lane */
+        par.kn = (lreal_w)param[GRAN_KN];
+        par.kt = (lreal_w)param[GRAN_KT];
+        par.gamman = (lreal_w)param[GRAN_GAMMAN];
+        par.gammat = (lreal_w)param[GRAN_GAMMAT];
+        par.xmu = (lreal_w)param[GRAN_XMU];
+        par.limit = (lreal_w)param[GRAN_LIMIT];
+    } else {
+        par.kn = LG(G_KN);
+        par.kt = LG(G_KT);
+        par.gamman = LG(G_GN);
+        par.gammat = LG(G_GT);
+        par.xmu = LG(G_XMU);
+        par.limit = LG(G_LIM);
+    }
 #ifdef HAS_HISTORY
     struct lr3_w sh = lr3_of_w(LG(G_S1), LG(G_S2), LG(G_S3));
 #else
