@@ -116,7 +116,7 @@
 #define KARGS_wall_kernel(X, Y)                                                                \
     X(PART, wall_atoms) Y(PART, wall_own) Y(PART, wall_law) Y(I, nelem) Y(I, kind) Y(I, axis)  \
     Y(R, lo) Y(R, hi) Y(R, wradius) Y(R3, vw) Y(I, cyl_shear) Y(R, vshear) Y(R, dt)            \
-    Y(I, shearupdate) Y(I, inclusive) Y(POS_LO, xlo)
+    Y(I, shearupdate) Y(I, inclusive) Y(PART, halt) Y(POS_LO, xlo)
 
 /* MESH_KERNEL: history at hoff of a per-atom record of hstride REAL; the
  * mesh's triangles, bins (gnx x gny x gnz, reach lreach) and pose (POSE_*);

@@ -212,6 +212,8 @@ static inline __global const REAL *wall_param(__global const REAL *param, const 
     __kernel void NAME(KA_KERNEL(wall_kernel))                                                 \
     {                                                                                          \
         KA_UNPACK(wall_kernel);                                                                \
+        if (KA_HALTED())                                                                       \
+            return;                                                                            \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \

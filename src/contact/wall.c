@@ -12,6 +12,7 @@
 #include "error.h"
 #include "fix.h"
 #include "mesh.h"
+#include "neighbor.h"
 #include "ocl.h"
 #include "pair.h"
 
@@ -94,6 +95,7 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
         ka.lo = ka_coord(g, w->axis, w->lo);
         ka.hi = ka_coord(g, w->axis, w->hi);
     }
+    nbr_halt_args(g, &ka.halt);
     ka_bind_wall_kernel(g, law->kernel, 0, &ka);
     eng_launch(g, law->kernel, (size_t)ka.wall_atoms.n);
 }

@@ -264,16 +264,18 @@ static int step_lookahead(struct gravel *g, int last)
     return 1;
 }
 
-/* Whether nothing but the step's pair kernels runs between this step's
- * rebuild decision and the next (nbr_decide's plain): its pair_gather opens
- * the next step, no fix calls in (not even post_force before a fused tail:
- * a wall's kernels carry no halt) and no dynamic group is updated. */
+/* Whether nothing but kernels that take the halt runs between this step's
+ * rebuild decision and the next (nbr_decide's plain): its pair_gather (or
+ * fused_tail) opens the next step, no fix calls in but those that halt
+ * (struct fix, halts: a plane wall's post_force before a fused tail) and no
+ * dynamic group is updated. */
 static int plain_step(struct gravel *g, int last)
 {
     const struct hook_lists *h = &g->eng->hooks;
     for (int k = 0; k < NHOOK; k++)
-        if (h->n[k] > 0 && k != hook_index(HOOK_PRE_EXCHANGE))
-            return 0;
+        for (int i = 0; i < h->n[k]; i++)
+            if (k != hook_index(HOOK_PRE_EXCHANGE) && !h->call[k][i].fix->halts)
+                return 0;
     for (int ig = 1; ig < g->groups.n; ig++)
         if (g->groups.used[ig] && g->groups.dyn[ig].on)
             return 0;

@@ -217,6 +217,10 @@ struct fix {
     int time_depend;            /* 1: its schedule is in absolute steps (fix pour):
                                  * reset_timestep refuses (LAMMPS) */
     int force_reneighbor;       /* 1: next_reneighbor forces a rebuild on that step */
+    int halts;                  /* 1: its per-step hooks launch only kernels that take the
+                                 * halt (KARGS_halt) and keep no host state from one step
+                                 * to the next, so its steps may be decided on speculation
+                                 * (src/engine/neighbor.h, nbr_decide) */
     bigint next_reneighbor;     /* step of the forced rebuild (0 = none) */
     int energy;                 /* fix_modify energy yes: scalar counted in pe */
     /* The instance's global output (LAMMPS's Fix flags), which f_ID,

@@ -46,8 +46,9 @@ A scene under 1500 atoms (the dense packing) runs on the serial device
 unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
 On the threaded device a plain step's rebuild decision is taken on
-speculation (src/engine/neighbor.h, nbr_decide): the chute and the fused
-drag vortex give the same bits with it off (GRAVEL_SPECULATE=0), after at
+speculation (src/engine/neighbor.h, nbr_decide): the chute, the bed (its
+floor wall halts too) and the fused drag vortex give the same bits with it
+off (GRAVEL_SPECULATE=0), after at
 least one speculation that failed and went back (the footer's count), and
 a gas heated until an atom is lost mid-run stops with the same message.
 One PASS/FAIL line per check.
@@ -433,7 +434,7 @@ def check_speculation():
     speculation gone back, the same stop on a lost atom."""
     bad = 0
     cpu = ("-device", "cpu")
-    for label, deck in (("chute", CHUTE),
+    for label, deck in (("chute", CHUTE), ("bed", BED.format(extra="")),
                         ("drag", DRAG.format(update="implicit", scene=SCENE))):
         rows_s, dump_s, out_s = run_full(deck, None, cpu)
         rows_n, dump_n, out_n = run_full(deck, {"GRAVEL_SPECULATE": "0"}, cpu)
