@@ -128,7 +128,7 @@
     Y(CM, tri) Y(CMI, triv) Y(CMI, cstart) Y(CMI, ctri) Y(CM, pose) Y(I3, gn) Y(I, moving)     \
     Y(M, fmesh) Y(I, want_fmesh) Y(M, mstress) Y(I, want_mstress) Y(R, dt) Y(I, shearupdate)   \
     Y(I, inclusive) Y(CML, tag) Y(MI, mlist) Y(M, mlpos) Y(R, lskin) Y(R, lreach) Y(R, mscale) \
-    Y(POS_LO, xlo)
+    Y(PART, halt) Y(POS_LO, xlo)
 
 /* REGION_KERNEL: nwall region walls of one law (a set: RS_* of
  * kernels/wall_layout.h); wall w's parameters, history and `contacts`

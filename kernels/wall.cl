@@ -648,6 +648,8 @@ static inline int mesh_slot_find(const REAL *okey, const int t, const int nc, co
     __kernel void NAME(KA_KERNEL(mesh_kernel))                                                 \
     {                                                                                          \
         KA_UNPACK(mesh_kernel);                                                                \
+        if (KA_HALTED())                                                                       \
+            return;                                                                            \
         const int i = get_global_id(0);                                                        \
         if (i >= n)                                                                            \
             return;                                                                            \

@@ -250,7 +250,7 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
     }
     mesh_pose_upload(g, wm, pose);
     mesh_lists_reserve(g, wm, a->n);
-    const struct mesh_kernel_args ka = {
+    struct mesh_kernel_args ka = {
         .wall_atoms = wall_atoms_args(g),
         .wall_own = wall_own_args(g, f, law),
         .hstride = hstride,
@@ -277,6 +277,7 @@ void wall_mesh_apply(struct gravel *g, struct fix *f, struct wall_mesh *wm,
         .lreach = wm->reach,
         .mscale = wm->mscale,
     };
+    nbr_halt_args(g, &ka.halt);
     ka_bind_mesh_kernel(g, law->kernel, 0, &ka);
     eng_launch(g, law->kernel, (size_t)a->n);
 }

@@ -267,8 +267,8 @@ static int step_lookahead(struct gravel *g, int last)
 /* Whether nothing but kernels that take the halt runs between this step's
  * rebuild decision and the next (nbr_decide's plain): its pair_gather (or
  * fused_tail) opens the next step, no fix calls in but those that halt
- * (struct fix, halts: a plane wall's post_force before a fused tail) and no
- * dynamic group is updated. */
+ * (struct fix, halts: fix wall/gran's post_force before a fused tail) and
+ * no dynamic group is updated. */
 static int plain_step(struct gravel *g, int last)
 {
     const struct hook_lists *h = &g->eng->hooks;

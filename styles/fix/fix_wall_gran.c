@@ -491,8 +491,9 @@ options:
     f->peratom_flag = w.law.contacts_on;
     f->size_peratom_cols = w.law.contacts_on ? WALL_CONTACT_W : 0;
     f->hooks = HOOK_POST_FORCE;
-    /* a plane or cylinder: its geometry a function of the step, its kernel halts */
-    f->halts = w.style != W_REGION && w.style != W_MESH && !w.tvar[0];
+    /* a plane, cylinder or mesh: its geometry a function of the step (a mesh's
+     * pose: fix move/mesh), its kernel halts */
+    f->halts = w.style != W_REGION && !w.tvar[0];
     f->needs = NEED_ROTATION;
     f->sources[f->nsources++] = "pair_gran_hooke.cl";
     f->sources[f->nsources++] = "pair_gran_hooke_history.cl";

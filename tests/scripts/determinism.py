@@ -47,8 +47,8 @@ unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
 On the threaded device a plain step's rebuild decision is taken on
 speculation (src/engine/neighbor.h, nbr_decide): the chute, the bed (its
-floor wall halts too) and the fused drag vortex give the same bits with it
-off (GRAVEL_SPECULATE=0), after at
+floor wall halts too), LIGGGHTS's mesh, plane and cylinder walls and the
+fused drag vortex give the same bits with it off (GRAVEL_SPECULATE=0), after at
 least one speculation that failed and went back (the footer's count), and
 a gas heated until an atom is lost mid-run stops with the same message.
 One PASS/FAIL line per check.
@@ -419,6 +419,18 @@ run 200000
 """
 
 
+# LIGGGHTS's mesh, plane and cylinder walls (tests/reference/liggghts): a mesh
+# wall's kernel halts too
+MESH_WALLS = os.path.join(ROOT, "tests", "reference", "liggghts", "mesh_hooke.in")
+
+
+def mesh_walls_deck():
+    with open(MESH_WALLS) as f:
+        deck = f.read()
+    return deck.replace("file floor.stl", "file " + os.path.join(os.path.dirname(MESH_WALLS),
+                                                                "floor.stl"))
+
+
 def speculated(out):
     """(decisions on speculation, steps gone back) from a run's footer."""
     for line in (out or "").splitlines():
@@ -435,6 +447,7 @@ def check_speculation():
     bad = 0
     cpu = ("-device", "cpu")
     for label, deck in (("chute", CHUTE), ("bed", BED.format(extra="")),
+                        ("mesh", mesh_walls_deck()),
                         ("drag", DRAG.format(update="implicit", scene=SCENE))):
         rows_s, dump_s, out_s = run_full(deck, None, cpu)
         rows_n, dump_n, out_n = run_full(deck, {"GRAVEL_SPECULATE": "0"}, cpu)
