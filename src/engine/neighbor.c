@@ -818,7 +818,7 @@ void nbr_step_reset(struct gravel *g)
 static int speculate(struct gravel *g, struct nbr *b, int forced)
 {
     const int next = b->ago + 1, iv = b->interval;
-    if (!b->spec_on || !b->opened || forced || b->radii_changed || b->box_moved || par_on(g) ||
+    if (!b->spec_on || !b->opened || forced || b->radii_changed || b->box_moved ||
         b->nspec == NBR_SPEC || b->stamp <= 0 || b->stamp > INT_MAX - 2 * NBR_SPEC ||
         (iv > 0 && next >= iv - iv / 8 && next <= iv + 4))
         return 0;

@@ -271,15 +271,16 @@ static int step_lookahead(struct gravel *g, int last)
  * no dynamic group is updated. */
 static int plain_step(struct gravel *g, int last)
 {
-    const struct hook_lists *h = &g->eng->hooks;
-    for (int k = 0; k < NHOOK; k++)
-        for (int i = 0; i < h->n[k]; i++)
-            if (k != hook_index(HOOK_PRE_EXCHANGE) && !h->call[k][i].fix->halts)
-                return 0;
+    if (!step_lookahead(g, last))
+        return 0;
+    const struct hook_lists *h = &g->eng->hooks; /* only a tail's post_force hooks are left */
+    for (int i = 0; i < h->n[hook_index(HOOK_POST_FORCE)]; i++)
+        if (!h->call[hook_index(HOOK_POST_FORCE)][i].fix->halts)
+            return 0;
     for (int ig = 1; ig < g->groups.n; ig++)
         if (g->groups.used[ig] && g->groups.dyn[ig].on)
             return 0;
-    return step_lookahead(g, last);
+    return 1;
 }
 
 /* LAMMPS's post_neighbor: the fixes that follow the atoms' device order. */

@@ -173,10 +173,8 @@ def check_tail():
         for name, env in (("unfused", {"GRAVEL_FUSE": "0"}),
                           ("no_lookahead", {"GRAVEL_LOOKAHEAD": "0"})):
             rows, dump, out = run_full(deck, env)
-            ok = rows_f is not None and rows is not None and dump == dump_f and rows == rows_f
-            detail = ((dump_f or "") + (dump or ""))[-300:] if rows_f is None or rows is None \
-                else first_difference(dump_f, dump)
-            bad += not check("tail_%s_equals_%s" % (label, name), ok, detail)
+            bad += not check_same("tail_%s_equals_%s" % (label, name), (rows_f, dump_f),
+                                  (rows, dump))
             lf, lo = launches(out_f), launches(out)
             bad += not check("tail_%s_launches_fewer_than_%s" % (label, name),
                              lf is not None and lo is not None and lf < lo - 0.9,
@@ -195,11 +193,8 @@ def check_drag():
     for update in ("implicit", "exact"):
         deck = DRAG.format(update=update, scene=SCENE)
         ref = run(deck, {"GRAVEL_LANES": "1"}, ("-precision", "single"))
-        rows, dump = run(deck, {"GRAVEL_LANES": "16"}, ("-precision", "single"))
-        ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
-        bad += not check("drag_%s_single_lanes_16_equals_1" % update, ok,
-                         (dump or "")[-300:] if rows is None or ref[0] is None
-                         else first_difference(ref[1], dump))
+        bad += not check_same("drag_%s_single_lanes_16_equals_1" % update, ref,
+                              run(deck, {"GRAVEL_LANES": "16"}, ("-precision", "single")))
     for update in ("explicit", "implicit", "exact"):
         deck = DRAG.format(update=update, scene=SCENE)
         rows_f, dump_f, out_f = run_full(deck)
@@ -208,10 +203,8 @@ def check_drag():
                           ("lanes_1", {"GRAVEL_LANES": "1"}),
                           ("lanes_16", {"GRAVEL_LANES": "16"})):
             rows, dump, out = run_full(deck, env)
-            ok = rows_f is not None and rows is not None and dump == dump_f and rows == rows_f
-            detail = ((dump_f or "") + (dump or ""))[-300:] if rows_f is None or rows is None \
-                else first_difference(dump_f, dump)
-            bad += not check("drag_%s_fused_equals_%s" % (update, name), ok, detail)
+            bad += not check_same("drag_%s_fused_equals_%s" % (update, name), (rows_f, dump_f),
+                                  (rows, dump))
             if name == "unfused":
                 lf, lu = launches(out_f), launches(out)
                 bad += not check("drag_%s_fused_launches_fewer" % update,
@@ -287,11 +280,8 @@ def check_cell_grid():
     deck = DRAG.format(update="explicit", scene=SCENE)
     ref = run(deck)
     for cpa in ("0", "64"):
-        rows, dump = run(deck, {"GRAVEL_CELLS_PER_ATOM": cpa})
-        ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
-        bad += not check("cells_per_atom_%s_equals_default" % cpa, ok,
-                         (dump or "")[-300:] if rows is None or ref[0] is None
-                         else first_difference(ref[1], dump))
+        bad += not check_same("cells_per_atom_%s_equals_default" % cpa, ref,
+                              run(deck, {"GRAVEL_CELLS_PER_ATOM": cpa}))
     return bad
 
 
@@ -306,13 +296,10 @@ def check_rebuild_schedule():
             ("granular_single", PGRAN_GRANULAR, "", "single"),
             ("hooke_history_single", PGRAN_HOOKE, "", "single")):
         args = ("-precision", prec)
-        ref_rows, ref_dump = run(PGRAN.format(pair=pair, deform=deform, extra=""), None, args)
-        rows, dump = run(PGRAN.format(pair=pair, deform=deform,
-                                      extra="neigh_modify every 1 delay 0 check no"), None, args)
-        ok = ref_rows is not None and rows is not None and dump == ref_dump and rows == ref_rows
-        detail = ((ref_dump or "") + (dump or ""))[-300:] if ref_rows is None or rows is None \
-            else first_difference(ref_dump, dump)
-        bad += not check("periodic_rebuild_every_step_" + name, ok, detail)
+        ref = run(PGRAN.format(pair=pair, deform=deform, extra=""), None, args)
+        got = run(PGRAN.format(pair=pair, deform=deform,
+                               extra="neigh_modify every 1 delay 0 check no"), None, args)
+        bad += not check_same("periodic_rebuild_every_step_" + name, ref, got)
     return bad
 
 
@@ -351,6 +338,15 @@ def check(name, ok, detail=""):
     return ok
 
 
+def check_same(name, ref, got):
+    """check that a run (thermo rows, dump text, ...) has the bits of the
+    reference run"""
+    (ref_rows, ref_dump), (rows, dump) = ref[:2], got[:2]
+    ok = ref_rows is not None and rows is not None and rows == ref_rows and dump == ref_dump
+    return check(name, ok, ((ref_dump or "") + (dump or ""))[-300:]
+                 if ref_rows is None or rows is None else first_difference(ref_dump, dump))
+
+
 def first_difference(a, b):
     for k, (x, y) in enumerate(zip(a.splitlines(), b.splitlines())):
         if x != y:
@@ -368,13 +364,10 @@ def check_lanes():
             "thermo 500", "thermo 200")
         for prec in ("double", "single"):
             args = ("-precision", prec)
-            ref_rows, ref_dump = run(deck, {"GRAVEL_LANES": "1"}, args)
+            ref = run(deck, {"GRAVEL_LANES": "1"}, args)
             for width in ("4", "16"):
                 name = "lanes_%s_%s_%s" % (law.replace("/", "_"), prec, width)
-                rows, dump = run(deck, {"GRAVEL_LANES": width}, args)
-                ok = ref_rows is not None and rows == ref_rows and dump == ref_dump
-                bad += not check(name, ok, (dump or "")[-300:] if rows is None or ref_rows is None
-                                 else first_difference(ref_dump, dump))
+                bad += not check_same(name, ref, run(deck, {"GRAVEL_LANES": width}, args))
     return bad
 
 
@@ -389,11 +382,8 @@ def check_fused_lanes():
         ref = run(CHUTE, {"GRAVEL_LANES": "1"}, args)
         for name, env in (("2", {"GRAVEL_LANES": "2"}), ("16", {"GRAVEL_LANES": "16"}),
                           ("16_no_lookahead", {"GRAVEL_LANES": "16", "GRAVEL_LOOKAHEAD": "0"})):
-            rows, dump = run(CHUTE, env, args)
-            ok = ref[0] is not None and rows == ref[0] and dump == ref[1]
-            bad += not check("fused_lanes_%s_%s" % (prec, name), ok,
-                             (dump or "")[-300:] if rows is None or ref[0] is None
-                             else first_difference(ref[1], dump))
+            bad += not check_same("fused_lanes_%s_%s" % (prec, name), ref,
+                                  run(CHUTE, env, args))
     return bad
 
 
@@ -451,10 +441,8 @@ def check_speculation():
                         ("drag", DRAG.format(update="implicit", scene=SCENE))):
         rows_s, dump_s, out_s = run_full(deck, None, cpu)
         rows_n, dump_n, out_n = run_full(deck, {"GRAVEL_SPECULATE": "0"}, cpu)
-        ok = rows_s is not None and rows_n is not None and rows_s == rows_n and dump_s == dump_n
-        bad += not check("speculation_%s_equals_none" % label, ok,
-                         ((dump_s or "") + (dump_n or ""))[-300:] if rows_s is None or
-                         rows_n is None else first_difference(dump_n, dump_s))
+        bad += not check_same("speculation_%s_equals_none" % label, (rows_n, dump_n),
+                              (rows_s, dump_s))
         (ns, back), (nn, _) = speculated(out_s), speculated(out_n)
         bad += not check("speculation_%s_went_back" % label, ns > 0 and back > 0 and nn == 0,
                          "%d decisions, %d steps back; off: %d" % (ns, back, nn))
@@ -478,9 +466,7 @@ def check_serial_default():
         return not check("serial_by_default", False, ((dump_s or "") + (dump_t or ""))[-400:])
     bad = not check("serial_by_default", "; serial:" in out_s and "; serial:" not in out_t,
                     [l for l in (out_s + out_t).splitlines() if "OpenCL device" in l])
-    ok = rows_s == rows_t and dump_s == dump_t
-    return bad + (not check("serial_equals_threads", ok,
-                            "" if ok else first_difference(dump_t, dump_s)))
+    return bad + (not check_same("serial_equals_threads", (rows_t, dump_t), (rows_s, dump_s)))
 
 
 def main():
@@ -518,21 +504,9 @@ def main():
                          "%s vs %s" % (rows[-1:], ref_rows[-1:]))
     bad += check_lanes()
     bad += check_rebuild_schedule()
-    rows_f, dump_f = run(CHUTE)
-    rows_u, dump_u = run(CHUTE, {"GRAVEL_FUSE": "0"})
-    if rows_f is None or rows_u is None:
-        bad += not check("fused_equals_unfused", False, (dump_f + dump_u)[-400:])
-    else:
-        ok = dump_f == dump_u and rows_f == rows_u
-        bad += not check("fused_equals_unfused", ok,
-                         "" if ok else first_difference(dump_f, dump_u))
-    rows_n, dump_n = run(CHUTE, {"GRAVEL_LOOKAHEAD": "0"})
-    if rows_f is None or rows_n is None:
-        bad += not check("lookahead_equals_none", False, (dump_f + dump_n)[-400:])
-    else:
-        ok = dump_f == dump_n and rows_f == rows_n
-        bad += not check("lookahead_equals_none", ok,
-                         "" if ok else first_difference(dump_f, dump_n))
+    fused = run(CHUTE)
+    bad += not check_same("fused_equals_unfused", fused, run(CHUTE, {"GRAVEL_FUSE": "0"}))
+    bad += not check_same("lookahead_equals_none", fused, run(CHUTE, {"GRAVEL_LOOKAHEAD": "0"}))
     bad += check_fused_lanes()
     bad += check_drag()
     bad += check_cell_grid()
