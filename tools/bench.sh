@@ -4,13 +4,16 @@
 # small scene) in gravel, double and single precision, and, when `lmp` is
 # installed, the same deck files in LAMMPS on 1 and 2 MPI processes (the
 # drum on 1 only); then the source document's agglomeration case (cohesion
-# + drag, N = 10^4) in gravel. Within one repeat the runs of a deck
+# + drag, N = 10^4) in gravel: its first 2000 steps from the lattice (agglo)
+# and 1000 steps late in a run (agglate: resumed from
+# inputs/bench/agglo_late.restart.gz, seed 12345's Sy 1.5 / Stk 1 at 577 s,
+# where the sweeps spend their time). Within one repeat the runs of a deck
 # alternate (gravel double, gravel single, LAMMPS-1, LAMMPS-2) so machine
 # noise hits all alike; the table gives medians of particle-steps/s (atoms x
 # steps / loop time, from each "Loop time" line) and the ratios to LAMMPS-2.
 #   BENCH_REPEATS (default 3)   repeats per deck
 #   BENCH_SCALE (default 1)     multiplies every deck's step count
-#   BENCH_DECKS                 subset, e.g. "chute dense" (default all + agglo)
+#   BENCH_DECKS                 subset, e.g. "chute dense" (default all + agglo agglate)
 # The drum's rate is that of its second (turning) run: the last "Loop time".
 #   GRAVEL_FLAGS                extra gravel options (e.g. "-device gpu")
 #   BENCH_MEMORY (default 1)    0 skips the peak-RSS figure (tools/bench_memory.py)
@@ -18,7 +21,7 @@ cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
 repeats=${BENCH_REPEATS:-3}
 scale=${BENCH_SCALE:-1}
-decks=${BENCH_DECKS:-"chute dense dilute drum agglo"}
+decks=${BENCH_DECKS:-"chute dense dilute drum agglo agglate"}
 data="$root/../shared/peers/chute/data.chute"
 [ -f "$data" ] || data=/work/shared/peers/chute/data.chute
 tmp=$(mktemp -d)
@@ -43,7 +46,7 @@ command -v mpirun >/dev/null 2>&1 && have_mpi=1
 # deck settings: file, steps, extra -var options
 deck_file() {
     case $1 in
-        agglo) echo "$root/inputs/published/agglomeration/agglomeration.in" ;;
+        agglo | agglate) echo "$root/inputs/published/agglomeration/agglomeration.in" ;;
         *) echo "$root/inputs/bench/$1.in" ;;
     esac
 }
@@ -55,8 +58,12 @@ deck_vars() {
         drum) echo "-var nsteps $((10000 * scale))" ;;
         # 2000 steps of 0.000449 s; thermo (and the agglomerate statistics) twice
         agglo) echo "-var Sy 1.0 -var St 1.0 -var N 10000 -var nout 2 -var tend $(awk -v s="$scale" 'BEGIN { print 2000 * s * 0.000449 }') -var logfile none" ;;
+        # from the restart's step 1285977 (577.4 s), 1000 steps; thermo twice
+        agglate) echo "-var Sy 1.5 -var St 1.0 -var N 10000 -var resume 1 -var rfile agglo_late.restart -var nout 2 -var tend $(awk -v s="$scale" 'BEGIN { printf "%.6f", (1285977 + 1000 * s) * 0.000449 }') -var logfile none" ;;
     esac
 }
+gunzip -c "$root/inputs/bench/agglo_late.restart.gz" > "$tmp/agglo_late.restart" ||
+    { echo "bench: cannot unpack inputs/bench/agglo_late.restart.gz"; exit 1; }
 
 printf "benchmark decks (inputs/bench/), %s repeats, alternating; million particle-steps/s (median)\n" "$repeats"
 printf "%-8s %9s %9s %9s %9s %8s %8s\n" deck "g-double" "g-single" LAMMPS-1 LAMMPS-2 "d/L2" "s/L2"
@@ -75,7 +82,7 @@ for deck in $decks; do
                 -log none > g.out 2>&1) || { echo "bench: gravel failed on $deck:"; tail -20 "$tmp/g.out"; exit 1; }
             rate "$tmp/g.out" >> "$tmp/g$(echo $prec | cut -c1)"
         done
-        if [ $have_lmp = 1 ] && [ "$deck" != agglo ]; then
+        if [ $have_lmp = 1 ] && [ "$deck" != agglo ] && [ "$deck" != agglate ]; then
             (cd "$tmp" && lmp -in "$file" $vars -log none > l.out 2>&1)
             rate "$tmp/l.out" >> "$tmp/l1"
             if [ $have_mpi = 1 ] && [ "$deck" != drum ]; then
@@ -95,6 +102,10 @@ done
 if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
     printf "agglomeration (N = 10^4, double) / dilute gas (double) = %s (goal >= 0.5)\n" \
         "$(ratio "$rate_agglo" "$rate_dilute")"
+fi
+if [ -n "$rate_agglate" ] && [ -n "$rate_dilute" ]; then
+    printf "agglomeration late in a run (577 s, double) / dilute gas (double) = %s\n" \
+        "$(ratio "$rate_agglate" "$rate_dilute")"
 fi
 if [ -n "$rate_drum" ] && [ $have_lmp = 1 ]; then
     printf "drum (126 spheres, double) / LAMMPS-1 = %s (goal >= 1)\n" \
