@@ -24,9 +24,15 @@ starts both points (the second once the first has written the initial
 state), is killed when both have a restart file, and run again with
 AGGLO_JOBS=2; the unfinished points resume (a point may have finished
 before the kill: it is kept) and both end with A's rows, digit for digit.
-An AGGLO_JOBS that is not a positive integer is refused."""
+An AGGLO_JOBS that is not a positive integer is refused.
+
+The benchmark's late state (inputs/bench/agglo_late.restart.gz, `make bench`'s
+agglate: seed 12345's Sy 1.5 / Stk 1 at step 1285977) still reads as an exact
+continuation: its first row is the sweep's row at that step, digit for digit."""
+import gzip
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -91,6 +97,31 @@ def rows_if(run_dir, name):
 def rows(path):
     info = average.parse_log(path)
     return info["rows"], info["completed"]
+
+
+# the sweep's row at step 1285977 (runs/agglomeration: seed 12345, Sy 1.5, Stk 1)
+LATE_ROW = "1285977 577.40367 542 18.450185 44.641709 403 0.39479059 4143.907"
+
+
+def check_bench_late(tmp):
+    """the benchmark's late restart resumes exactly (run 0 upto its step)"""
+    d = os.path.join(tmp, "late")
+    os.makedirs(d)
+    with gzip.open(os.path.join(ROOT, "inputs", "bench", "agglo_late.restart.gz"), "rb") as src, \
+            open(os.path.join(d, "agglo_late.restart"), "wb") as dst:
+        shutil.copyfileobj(src, dst)
+    r = subprocess.run([os.path.join(ROOT, "bin", "gravel"), "-in",
+                        os.path.join(ROOT, "inputs", "published", "agglomeration", "agglomeration.in"),
+                        "-var", "Sy", "1.5", "-var", "St", "1.0", "-var", "N", "10000",
+                        "-var", "resume", "1", "-var", "rfile", "agglo_late.restart",
+                        "-var", "tend", "%.6f" % (1285977 * 0.000449), "-var", "nout", "2",
+                        "-var", "logfile", "none", "-log", "none"],
+                       cwd=d, capture_output=True, text=True)
+    lines = [" ".join(l.split()) for l in r.stdout.splitlines()]
+    check("bench_late_restart_exact", r.returncode == 0 and LATE_ROW in lines and
+          "Restart: exact continuation of step 1285977" in r.stdout,
+          "row at the restart's step %s" % ([l for l in lines if l.startswith("1285977 ")][:1]
+                                            or (r.stdout + r.stderr)[-300:]))
 
 
 def main():
@@ -177,6 +208,7 @@ def main():
         bad = sweep(os.path.join(tmp, "E"), parked + "-none", "two")
         check("jobs_refused", bad.returncode != 0 and "AGGLO_JOBS must be a positive integer"
               in bad.stdout, (bad.stdout + bad.stderr).strip()[-200:])
+        check_bench_late(tmp)
     print("%d failure(s)" % failures)
     return 1 if failures else 0
 
