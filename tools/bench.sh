@@ -62,8 +62,11 @@ deck_vars() {
         agglate) echo "-var Sy 1.5 -var St 1.0 -var N 10000 -var resume 1 -var rfile agglo_late.restart -var nout 2 -var tend $(awk -v s="$scale" 'BEGIN { printf "%.6f", (1285977 + 1000 * s) * 0.000449 }') -var logfile none" ;;
     esac
 }
-gunzip -c "$root/inputs/bench/agglo_late.restart.gz" > "$tmp/agglo_late.restart" ||
-    { echo "bench: cannot unpack inputs/bench/agglo_late.restart.gz"; exit 1; }
+case " $decks " in
+    *" agglate "*)
+        gunzip -c "$root/inputs/bench/agglo_late.restart.gz" > "$tmp/agglo_late.restart" ||
+            { echo "bench: cannot unpack inputs/bench/agglo_late.restart.gz"; exit 1; } ;;
+esac
 
 printf "benchmark decks (inputs/bench/), %s repeats, alternating; million particle-steps/s (median)\n" "$repeats"
 printf "%-8s %9s %9s %9s %9s %8s %8s\n" deck "g-double" "g-single" LAMMPS-1 LAMMPS-2 "d/L2" "s/L2"
