@@ -58,9 +58,17 @@ CONTACT_BODY(pair_body, PAIR_EVAL, 0, TCOL_OF(PAIR_EVAL))
 #define PAIR_HIST_N 0
 #endif
 
-#if !defined(PAIR_LW) || PAIR_LW == 1 /* else kernels/pair_gran_lanes.cl's, in lanes */
-/* arguments: KARGS_pair_contacts (kernels/kernel_args.h) */
-__kernel void pair_contacts(KA_KERNEL(pair_contacts))
+/* The one-contact kernel: pair_contacts, or pair_contacts_1 beside a lane
+ * form of the stage (kernels/pair_gran_lanes.cl, PAIR_LW > 1), which a run
+ * may time against it and take at any step (src/engine/lanes_tune.h): the
+ * same bits either way. Arguments: KARGS_pair_contacts
+ * (kernels/kernel_args.h). */
+#if !defined(PAIR_LW) || PAIR_LW == 1
+#define PAIR_CONTACTS_ONE pair_contacts
+#else
+#define PAIR_CONTACTS_ONE pair_contacts_1
+#endif
+__kernel void PAIR_CONTACTS_ONE(KA_KERNEL(pair_contacts))
 {
     KA_UNPACK(pair_contacts);
     if (KA_HALTED())
@@ -165,7 +173,6 @@ __kernel void pair_contacts(KA_KERNEL(pair_contacts))
     (void)recq;
 #endif
 }
-#endif /* PAIR_LW == 1 */
 #endif /* PAIR_EVAL || PAIR_EVAL_ROW */
 
 /* What particle i receives from contact c's record (see the top), added to
@@ -287,9 +294,18 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
 #endif
 }
 
-/* arguments: KARGS_pair_gather (kernels/kernel_args.h) */
-#if !defined(ATOM_LW) || ATOM_LW == 1 /* else kernels/atom_lanes.cl's, in lanes */
-__kernel void pair_gather(KA_KERNEL(pair_gather))
+/* The one-particle kernels: pair_gather and fused_tail, or pair_gather_1
+ * and fused_tail_1 beside their lane forms (kernels/atom_lanes.cl, ATOM_LW
+ * > 1), as pair_contacts_1 above. Arguments: KARGS_pair_gather
+ * (kernels/kernel_args.h). */
+#if !defined(ATOM_LW) || ATOM_LW == 1
+#define PAIR_GATHER_ONE pair_gather
+#define FUSED_TAIL_ONE fused_tail
+#else
+#define PAIR_GATHER_ONE pair_gather_1
+#define FUSED_TAIL_ONE fused_tail_1
+#endif
+__kernel void PAIR_GATHER_ONE(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
     if (KA_HALTED())
@@ -305,7 +321,7 @@ __kernel void pair_gather(KA_KERNEL(pair_gather))
  * fixes (walls) left in f and torque, after them; with look, the next
  * step's opening, as pair_gather's. Same arguments as pair_gather (the
  * contact ones unused). */
-__kernel void fused_tail(KA_KERNEL(pair_gather))
+__kernel void FUSED_TAIL_ONE(KA_KERNEL(pair_gather))
 {
     KA_UNPACK(pair_gather);
     if (KA_HALTED())
@@ -314,7 +330,6 @@ __kernel void fused_tail(KA_KERNEL(pair_gather))
     if (i < n)
         gather_atom(KA_ARGS(pair_gather), 1, i);
 }
-#endif /* ATOM_LW == 1 */
 
 /* The pair virial of the step, per particle, for the pressure (run only on
  * the steps that print it, after the step's pair_contacts): w_i = 1/2 sum

@@ -10,6 +10,7 @@
 #ifndef GR_DEVICE_H
 #define GR_DEVICE_H
 
+#include "lanes_tune.h"
 #include "ocl.h"
 #include "state.h"
 
@@ -163,6 +164,9 @@ struct engine {
     /* pair evaluation of the current run (run.c) */
     cl_mem pair_param;          /* packed per-type-pair parameters */
     cl_kernel k_pair, k_gather, k_tail, k_clear;
+    /* the one-per-work-item forms beside lane ones (NULL: none; lanes_tune.h) */
+    cl_kernel k_pair1, k_gather1, k_tail1;
+    struct lanes_tune lanes;    /* which form each stage takes (lanes_tune.h) */
     cl_kernel k_virial;         /* pair_virial, for the pressure (src/engine/pressure.c) */
     cl_kernel k_energy;         /* pair_energy of a potential (src/contact/pair_energy.c) */
     double epair_snap;          /* the pair energy taken before a box change moved the

@@ -39,6 +39,7 @@
 #include "input.h"
 #include "fix.h"
 #include "kargs.h"
+#include "lanes_tune.h"
 #include "group.h"
 #include "log.h"
 #include "memfit.h"
@@ -119,6 +120,7 @@ static void pair_init(struct gravel *g)
     e->k_gather = eng_kernel(g, "pair_gather");
     e->k_tail = eng_kernel(g, "fused_tail");
     e->k_pair = e->k_virial = e->k_energy = NULL;
+    e->k_pair1 = e->k_gather1 = e->k_tail1 = NULL;
     if (e->pair_param)
         clReleaseMemObject(e->pair_param);
     e->pair_param = NULL;
@@ -130,6 +132,12 @@ static void pair_init(struct gravel *g)
     eng_write_reals(g, e->pair_param, (size_t)nt * nt * np, par);
     free(par);
     e->k_pair = eng_kernel(g, "pair_contacts");
+    if (e->pair_lw > 1) /* and its one-contact form (lanes_tune.h) */
+        e->k_pair1 = eng_kernel(g, "pair_contacts_1");
+    if (e->atom_lw > 1) {
+        e->k_gather1 = eng_kernel(g, "pair_gather_1");
+        e->k_tail1 = eng_kernel(g, "fused_tail_1");
+    }
     e->k_virial = eng_kernel(g, "pair_virial");
     if (p->caps.energy)
         e->k_energy = eng_kernel(g, "pair_energy");
@@ -353,9 +361,14 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         };
         nbr_list_box(l, pc.box);
         nbr_halt_args(g, &pc.halt);
-        ka_bind_pair_contacts(g, e->k_pair, 0, &pc);
-        /* PAIR_LW contacts per work-item (kernels/pair_gran_lanes.cl) */
-        eng_launch(g, e->k_pair, ((size_t)l->ncontact + (size_t)e->pair_lw - 1) / (size_t)e->pair_lw);
+        /* PAIR_LW contacts per work-item (kernels/pair_gran_lanes.cl), or one */
+        size_t w;
+        if (!e->setup)
+            lanes_step(g);
+        cl_kernel kp = lanes_pair_kernel(g, &w);
+        ka_bind_pair_contacts(g, kp, 0, &pc);
+        eng_launch(g, kp, ((size_t)l->ncontact + w - 1) / w);
+        lanes_done(g, LANES_PAIR);
         /* new forces: a virial or energy taken before is stale */
         e->virial_snap_step = e->epair_snap_step = -1;
         /* fused post_force ops, and the final kick except at setup */
@@ -385,8 +398,10 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .halt = pc.halt,
         };
         nbr_step_args(g, &pg.atom_step, pg.look);
-        ka_bind_pair_gather(g, e->k_gather, 0, &pg);
-        eng_launch(g, e->k_gather, ((size_t)a->n + (size_t)e->atom_lw - 1) / (size_t)e->atom_lw);
+        cl_kernel kg = lanes_gather_kernel(g, 0, &w);
+        ka_bind_pair_gather(g, kg, 0, &pg);
+        eng_launch(g, kg, ((size_t)a->n + w - 1) / w);
+        lanes_done(g, LANES_ATOM);
         tail_args = pg;
     } else {
         acc_reserve(g); /* the wall records */
@@ -410,8 +425,10 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
         tail_args.nfinal = e->setup ? 0 : e->fused.tfinal;
         tail_args.look = look;
         nbr_step_args(g, &tail_args.atom_step, look);
-        ka_bind_pair_gather(g, e->k_tail, 0, &tail_args);
-        eng_launch(g, e->k_tail, ((size_t)a->n + (size_t)e->atom_lw - 1) / (size_t)e->atom_lw);
+        size_t w;
+        cl_kernel kt = lanes_gather_kernel(g, 1, &w);
+        ka_bind_pair_gather(g, kt, 0, &tail_args);
+        eng_launch(g, kt, ((size_t)a->n + w - 1) / w);
     }
     if (timed)
         eng_finish(g);
@@ -520,6 +537,7 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
     g->dom.vremap_group = 0;
     pair_init(g); /* the pair parameters first: fixes may use them in init */
+    lanes_begin(g, nsteps);
     for (int i = 0; i < g->styles.nfix; i++) {
         struct fix *f = g->styles.fix[i];
         if (f->style->init)

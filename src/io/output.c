@@ -19,6 +19,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "lanes_tune.h"
 #include "log.h"
 #include "pair.h"
 #include "progress.h"
@@ -441,6 +442,8 @@ void output_finish(struct gravel *g, const struct run_stats *given)
     if (s->nsteps > 0)
         gr_print(g, "Contacts = %d (each evaluated once); kernel launches per step = %.2f\n",
                  s->ncontact, (double)s->nlaunch / (double)s->nsteps);
+    if (lanes_report(g))
+        gr_print(g, "%s\n", lanes_report(g));
     if (s->nspec > 0)
         gr_print(g, "Rebuild decisions on speculation = %lld (%lld steps gone back)\n",
                  (long long)s->nspec, (long long)s->nspec_back);

@@ -13,6 +13,10 @@ bit-identical in every variant:
   - GRAVEL_WORKGROUP=1 and 32 (the default is 128);
   - GRAVEL_LANES=1, 2, 16 and device (the device's preferred vector width)
     contacts per pair work-item (kernels/lanes.cl; the default is 4 on a CPU);
+  - the lane forms and the one-per-work-item forms at alternate steps
+    (GRAVEL_LANES_TUNE=always, src/engine/lanes_tune.h), and the lane forms
+    throughout (GRAVEL_LANES_TUNE=0; by default a run of 400 steps or more
+    times both forms over its first 32 steps and keeps the faster);
   - neigh_modify check no (a rebuild every step: other neighbor sets);
   - -device serial (PoCL's serial device: every kernel in gravel's thread).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
@@ -368,6 +372,9 @@ def check_lanes():
             for width in ("4", "16"):
                 name = "lanes_%s_%s_%s" % (law.replace("/", "_"), prec, width)
                 bad += not check_same(name, ref, run(deck, {"GRAVEL_LANES": width}, args))
+            # width 4 and one contact per work-item at alternate steps
+            name = "lanes_%s_%s_alternating" % (law.replace("/", "_"), prec)
+            bad += not check_same(name, ref, run(deck, {"GRAVEL_LANES_TUNE": "always"}, args))
     return bad
 
 
@@ -381,7 +388,9 @@ def check_fused_lanes():
         args = ("-precision", prec)
         ref = run(CHUTE, {"GRAVEL_LANES": "1"}, args)
         for name, env in (("2", {"GRAVEL_LANES": "2"}), ("16", {"GRAVEL_LANES": "16"}),
-                          ("16_no_lookahead", {"GRAVEL_LANES": "16", "GRAVEL_LOOKAHEAD": "0"})):
+                          ("16_no_lookahead", {"GRAVEL_LANES": "16", "GRAVEL_LOOKAHEAD": "0"}),
+                          ("16_alternating", {"GRAVEL_LANES": "16",
+                                              "GRAVEL_LANES_TUNE": "always"})):
             bad += not check_same("fused_lanes_%s_%s" % (prec, name), ref,
                                   run(CHUTE, env, args))
     return bad
@@ -488,6 +497,8 @@ def main():
         ("lanes_2", "", {"GRAVEL_LANES": "2"}),
         ("lanes_device", "", {"GRAVEL_LANES": "device"}),
         ("lanes_16_workgroup_8", "", {"GRAVEL_LANES": "16", "GRAVEL_WORKGROUP": "8"}),
+        ("lanes_alternating", "", {"GRAVEL_LANES_TUNE": "always"}),
+        ("lanes_untuned", "", {"GRAVEL_LANES_TUNE": "0"}),
         ("rebuild_every_step", "neigh_modify every 1 delay 0 check no", None),
         ("device_serial", "", None, ("-device", "serial")),
     ]
