@@ -2,6 +2,7 @@
  * measured in the run (see lanes_tune.h). */
 #include "lanes_tune.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
