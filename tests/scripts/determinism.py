@@ -16,7 +16,8 @@ bit-identical in every variant:
   - the lane forms and the one-per-work-item forms at alternate steps
     (GRAVEL_LANES_TUNE=always, src/engine/lanes_tune.h), and the lane forms
     throughout (GRAVEL_LANES_TUNE=0; by default a run of 400 steps or more
-    times both forms over its first 32 steps and keeps the faster);
+    times both forms over its first 32 steps and keeps the faster, and says
+    so with its statistics: lanes_report*);
   - neigh_modify check no (a rebuild every step: other neighbor sets);
   - -device serial (PoCL's serial device: every kernel in gravel's thread).
 A chute-like deck whose fixes all fuse into the scene's kernels (gravity,
@@ -59,6 +60,7 @@ One PASS/FAIL line per check.
 """
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -378,6 +380,32 @@ def check_lanes():
     return bad
 
 
+def check_lanes_report():
+    """A run of 400 steps or more on a program with lane forms times them
+    against one per work-item and prints its choice with the run's
+    statistics (src/engine/lanes_tune.h); GRAVEL_LANES_TUNE=0 and a shorter
+    run do not. The bits are the same either way (the variants above)."""
+    deck = BED.format(extra="").replace("run 3000", "run 600").replace(
+        "custom 3000", "custom 600").replace("thermo 500", "thermo 200")
+    pat = re.compile(r"^Lanes measured over 32 steps: pair_contacts (1 contact|\d+ contacts) per "
+                     r"work-item \(median \d+ us; \d+ per work-item \d+ us\), pair_gather "
+                     r"(1 particle|\d+ particles) per work-item \(median \d+ us; \d+ per "
+                     r"work-item \d+ us\)$", re.M)
+    bad = 0
+    _, _, out = run_full(deck)
+    if out is None or "OpenCL program:" not in out:
+        return not check("lanes_report", False, "no program line: %s" % (out or "")[-300:])
+    if "-D PAIR_LW=" not in out or "-D ATOM_LW=" not in out:
+        print("PASS lanes_report (this device takes no lane forms: nothing to measure)")
+        return 0
+    bad += not check("lanes_report", bool(pat.search(out)), out[-600:])
+    _, _, out = run_full(deck, {"GRAVEL_LANES_TUNE": "0"})
+    bad += not check("lanes_report_off", out is not None and "Lanes measured" not in out)
+    _, _, out = run_full(deck.replace("run 600", "run 300"))
+    bad += not check("lanes_report_short_run", out is not None and "Lanes measured" not in out)
+    return bad
+
+
 def check_fused_lanes():
     """The chute's fused ops (gravity, freeze, viscous, nve/sphere) and the
     look-ahead's kick, drift, wrap and check in the gather's lanes
@@ -514,6 +542,7 @@ def main():
         bad += not check("determinism_" + name + "_thermo", rows == ref_rows,
                          "%s vs %s" % (rows[-1:], ref_rows[-1:]))
     bad += check_lanes()
+    bad += check_lanes_report()
     bad += check_rebuild_schedule()
     fused = run(CHUTE)
     bad += not check_same("fused_equals_unfused", fused, run(CHUTE, {"GRAVEL_FUSE": "0"}))
