@@ -5,16 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "device.h"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* Whether stage s has both forms in this run. */
 static int two_forms(const struct engine *e, enum lanes_stage s)
@@ -52,7 +44,7 @@ void lanes_step(struct gravel *g)
     }
     t->measured = 1;
     eng_finish(g);
-    t->t0 = now();
+    t->t0 = eng_clock();
 }
 
 static int by_value(const void *a, const void *b)
@@ -100,7 +92,7 @@ void lanes_done(struct gravel *g, enum lanes_stage s)
     if (!t->measured)
         return;
     eng_finish(g);
-    double t1 = now();
+    double t1 = eng_clock();
     t->sec[s][t->trial % 2 == 0][t->trial / 2] = (float)(t1 - t->t0);
     t->t0 = t1;
     if (s != LANES_ATOM)

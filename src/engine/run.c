@@ -48,12 +48,7 @@
 #include "pair.h"
 #include "restart.h"
 
-static double wall(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+static double wall(void) { return eng_clock(); }
 
 /* The loop's clocks: LAMMPS's timing breakdown (Pair, Neigh, Modify,
  * Output; Other is what the loop spent beyond them), in wall seconds.
