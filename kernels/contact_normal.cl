@@ -115,6 +115,27 @@ static inline REAL normal_force_at(const int law, const REAL cv2, const REAL ch,
     return fel + ch * (jl + jr) / dt;
 }
 
+/* A bound on the round-off of normal_force_at(S) beyond that of its
+ * arguments: the differences of the shapes of nearly equal overlaps lose
+ * digits in proportion to the largest shape over the difference (the
+ * Hertz elastic slope; the dashpot's P(dn) - P(d) for both laws), so near a
+ * root whose overlaps differ little (a resting contact: dn ~ dp ~ d) r can
+ * not get below it however S is chosen. */
+static inline REAL normal_residual_noise(const int law, const REAL cv2, const REAL ch,
+                                         const REAL d, const REAL pd, const REAL dp,
+                                         const REAL dt, const REAL S)
+{
+    const REAL dn = d + dt * S;
+    const REAL pm = normal_shape(law, fmax(fmax(d, dn), dp));
+    REAL el = (REAL)0;
+    if (law == NORMAL_HERTZ) {
+        const REAL span = fabs(dn - dp);
+        if (span > (REAL)NORMAL_TINY * fmax(fabs(dn), fabs(dp)))
+            el = (REAL)2 * cv2 * pd / span;
+    }
+    return (REAL)8 * NORMAL_EPS * pm * (el + fabs(ch) / dt);
+}
+
 /* The linear law with the overlap positive a drift before and after the kick
  * (dp > 0, dn > 0): there F_el = ke d and jr = dt S d / (2 d + dt S), so
  * r(S) (2 d + dt S) is the quadratic dt S^2 + (2 d + c0 dt + A) S + 2 d c0
@@ -171,9 +192,10 @@ static inline REAL contact_normal_force(const int law, const REAL cv2, REAL ch,
         hi = s1;
         rhi = r1;
     }
-    /* Illinois regula falsi: r is monotone with slope >= 1 and nearly linear,
-     * so |S - root| <= |r(S)|: converged when r (or the bracket) is at the
-     * round-off of the rates involved */
+    /* Anderson-Bjorck regula falsi: r is monotone with slope >= 1 and nearly
+     * linear, so |S - root| <= |r(S)|: converged when r (or the bracket) is
+     * at the round-off of the rates involved, or when r is within its own
+     * round-off (normal_residual_noise) */
     const REAL tol = (REAL)4 * NORMAL_EPS * (fabs(s) + fabs(r0));
     REAL S = rlo >= (REAL)0 ? lo : hi;
     int side = 0;
@@ -182,19 +204,24 @@ static inline REAL contact_normal_force(const int law, const REAL cv2, REAL ch,
         if (!(S > lo && S < hi))
             S = (REAL)0.5 * (lo + hi);
         const REAL rs = S - s + k * normal_force_at(law, cv2, ch, d, pd, dp, jl, dt, S);
-        if (fabs(rs) <= tol || hi - lo <= tol)
+        if (fabs(rs) <= tol + k * normal_residual_noise(law, cv2, ch, d, pd, dp, dt, S) ||
+            hi - lo <= tol)
             break;
         if (rs < (REAL)0) {
+            if (side == -1) {
+                const REAL m = (REAL)1 - rs / rlo;
+                rhi *= m > (REAL)0 ? m : (REAL)0.5;
+            }
             lo = S;
             rlo = rs;
-            if (side == -1)
-                rhi *= (REAL)0.5;
             side = -1;
         } else {
+            if (side == 1) {
+                const REAL m = (REAL)1 - rs / rhi;
+                rlo *= m > (REAL)0 ? m : (REAL)0.5;
+            }
             hi = S;
             rhi = rs;
-            if (side == 1)
-                rlo *= (REAL)0.5;
             side = 1;
         }
     }

@@ -475,7 +475,10 @@ static inline void mesh_drop_shadowed(__global const int *triv, const int nc, co
  * list on the way with rl = radi + lskin (lskin <= reach - radi), shrunk
  * when more than MESH_LIST_K triangles are that near; an entry whose
  * margin is not above the round-off bound is left stale (n = -1): the bin
- * search then runs every step, as it does for the approach kernels. */
+ * search then runs every step. The approach kernels also take triangles
+ * one drift from contact, at most D = mesh_drift_reach away beyond the
+ * radius: their lists are fresh while the atom is within (rl - radi) / 2 - D
+ * of xref (every unlisted triangle is then more than radi + D away). */
 #ifdef USE_DOUBLE
 #define MESH_EPS DBL_EPSILON
 #else
@@ -490,15 +493,35 @@ static inline REAL mesh_list_tol(const REAL3 xb, const REAL mscale)
     return (REAL)64 * MESH_EPS * (fabs(xb.x) + fabs(xb.y) + fabs(xb.z) + mscale);
 }
 
-/* 1 when atom i's list holds every triangle it can touch at xb */
+/* A bound on how far beyond its radius a triangle that one drift brings
+ * into or out of contact can be from the atom at xi (mesh_within_drift:
+ * the gap is below |v_rel| dt, v_rel the atom's velocity less the mesh
+ * surface's at the triangle's closest point p, |p - xi| <= radi + D), with
+ * a relative margin for rounding; -1 when none holds (omega dt >= 1/2). */
+static inline REAL mesh_drift_reach(__global const REAL *pose, const int moving, const REAL3 xi,
+                                    const REAL3 vi, const REAL radi, const REAL dt)
+{
+    if (!moving)
+        return length(vi) * dt * (REAL)(1 + 1e-6);
+    const REAL3 om = vload3(POSE_OMEGA / 3, pose);
+    const REAL w = length(om) * dt;
+    if (!(w < (REAL)0.5))
+        return (REAL)-1;
+    /* |v_rel| <= |vi - (V0 + om x xi)| + |om| |p - xi| */
+    const REAL a = length(vi - (vload3(POSE_V0 / 3, pose) + cross(om, xi)));
+    return (a * dt + w * radi) / ((REAL)1 - w) * (REAL)(1 + 1e-6);
+}
+
+/* 1 when atom i's list holds every triangle it can touch at xb, and every
+ * one within drift beyond its radius (drift >= 0) */
 static inline int mesh_list_fresh(__global const int *lt, __global const REAL *lx,
                                   const long tagi, const REAL3 xb, const REAL radi,
-                                  const REAL mscale)
+                                  const REAL mscale, const REAL drift)
 {
     if (lt[MESH_LIST_TAGLO] != (int)(tagi & 0xffffffff) ||
         lt[MESH_LIST_TAGHI] != (int)(tagi >> 32) || lt[MESH_LIST_N] < 0)
         return 0;
-    const REAL room = (REAL)0.5 * (lx[MESH_LPOS_RL] - radi);
+    const REAL room = (REAL)0.5 * (lx[MESH_LPOS_RL] - radi) - drift;
     if (!(room > mesh_list_tol(xb, mscale)))
         return 0;
     const REAL3 dx = xb - (REAL3)(lx[0], lx[1], lx[2]);
@@ -563,8 +586,8 @@ static inline void mesh_list_store(__global int *lt, __global REAL *lx, const lo
  * contact), at most MESH_MAXC, in bin order: tc the triangle, rc its
  * Voronoi region (negative: dropped, a nearer feature holds the contact),
  * dc the separation in the mesh frame, qc its square. Returns how many.
- * Without approach the atom's list (lt, lx: its entries) stands in for its
- * bin while it is fresh, and is rebuilt by the bin search when it is not. */
+ * The atom's list (lt, lx: its entries) stands in for its bin while it is
+ * fresh, and is rebuilt by the bin search when it is not. */
 static inline int mesh_candidates(__global const REAL *tri, __global const int *triv,
                                   __global const int *cstart, __global const int *ctri,
                                   __global const REAL *pose, const int gnx, const int gny,
@@ -576,27 +599,26 @@ static inline int mesh_candidates(__global const REAL *tri, __global const int *
                                   REAL3 *dc, REAL *qc)
 {
     const REAL3 xb = mesh_frame(pose, moving, xi);
+    const REAL drift = approach ? mesh_drift_reach(pose, moving, xi, vi, radi, dt) : (REAL)0;
     int nc = 0;
-    if (!approach && mesh_list_fresh(lt, lx, tagi, xb, radi, mscale)) {
+    if (drift >= (REAL)0 && mesh_list_fresh(lt, lx, tagi, xb, radi, mscale, drift)) {
         const int ln = lt[MESH_LIST_N];
         for (int k = 0; k < ln; k++)
-            mesh_take(tri, pose, lt[MESH_LIST_T + k], moving, xi, xb, vi, radi, inclusive, 0,
-                      dt, &nc, tc, rc, dc, qc);
+            mesh_take(tri, pose, lt[MESH_LIST_T + k], moving, xi, xb, vi, radi, inclusive,
+                      approach, dt, &nc, tc, rc, dc, qc);
     } else {
         const int2 r = mesh_bin_range(cstart, pose, gnx, gny, gnz, xb);
         int ln = 0, lt_[MESH_LIST_K];
         REAL lq_[MESH_LIST_K];
         const REAL rl = radi + fmin(lskin, lreach - radi);
         REAL rl2 = rl * rl;
-        for (int k = r.x; k < r.y && (approach ? nc < MESH_MAXC : 1); k++) {
+        for (int k = r.x; k < r.y; k++) {
             const int t = ctri[k];
             const REAL rsq = mesh_take(tri, pose, t, moving, xi, xb, vi, radi, inclusive,
                                        approach, dt, &nc, tc, rc, dc, qc);
-            if (!approach)
-                mesh_list_note(t, rsq, &ln, lt_, lq_, &rl2);
+            mesh_list_note(t, rsq, &ln, lt_, lq_, &rl2);
         }
-        if (!approach)
-            mesh_list_store(lt, lx, tagi, xb, radi, mscale, ln, lt_, rl2);
+        mesh_list_store(lt, lx, tagi, xb, radi, mscale, ln, lt_, rl2);
     }
     mesh_drop_shadowed(triv, nc, tc, rc, qc);
     return nc;

@@ -22,7 +22,7 @@ trap 'rm -rf "$t"' EXIT
 # what a log says about the machine rather than the physics
 timing='Loop time|Performance|Total wall|Section|^(Pair|Neigh|Comm|Output|Modify|Other) +\||CPU use'
 timing="$timing|Device memory|tau/day|Matom|kernel launches|OpenCL program:|^ *[a-z_]+ +[0-9]+ calls"
-timing="$timing|Rebuild decisions on speculation"
+timing="$timing|Rebuild decisions on speculation|Lanes measured"
 fail=0
 for d in $decks; do
     name=$(basename "$d" .in)

@@ -283,15 +283,16 @@ size_t mesh_walls_init(struct gravel *g, struct fix *f, struct mesh_walls *mw, i
     for (int i = 0; i < g->atoms.n; i++)
         reach = g->atoms.radius[i] > reach ? g->atoms.radius[i] : reach;
     /* a pair style that takes contacts one drift away (linear/restitution)
-     * needs the triangles within the skin of the atom's bin too, and
-     * searches the bin every step; the others keep per-atom triangle lists
-     * built a skin beyond the radius (the neighbor skin, or a tenth of the
-     * largest radius without one; kernels/wall.cl mesh_candidates) */
+     * needs the triangles within the skin of the atom's bin too; every atom
+     * keeps a list of the triangles a skin beyond its radius (the neighbor
+     * skin, or a tenth of the largest radius without one), which stands in
+     * for its bin while it moves less than half that, less its drift
+     * (kernels/wall.cl mesh_candidates) */
     int approach = g->styles.pair && g->styles.pair->caps.approach;
     if (approach)
         reach += g->neigh.skin;
     reach *= 1.0 + 1e-6;
-    double lskin = approach ? 0 : g->neigh.skin > 0 ? g->neigh.skin : 0.1 * reach;
+    double lskin = g->neigh.skin > 0 ? g->neigh.skin : 0.1 * reach;
     char who[GR_NAMELEN + 32];
     snprintf(who, sizeof who, "fix %s (%s mesh)", f->id, f->style->name);
     for (int m = 0; m < mw->n; m++) {
