@@ -47,6 +47,12 @@ gives the same bits with a rebuild every step as with the default schedule
 these).
 The cohesive suspension gives the same bits on a coarser cell grid and on
 a finer budget (cells_per_atom_*: GRAVEL_CELLS_PER_ATOM=0 and 64).
+Spheres tumbling in a turning 24-facet drum (a mesh wall with
+linear/restitution, whose contacts include triangles one drift away: the
+per-atom triangle lists
+stay fresh while the atom is within half the skin less its drift, kernels/wall.cl)
+give the same bits with a neighbor skin of 0.02 (lists rebuilt every few
+steps) and 0.3 (seldom): mesh_approach_lists_skin.
 A scene under 1500 atoms (the dense packing) runs on the serial device
 unless a device is named, and gives the bits of PoCL's threaded device
 (-device cpu).
@@ -291,6 +297,69 @@ def check_cell_grid():
     return bad
 
 
+DRUM = """units lj
+atom_style sphere
+boundary f p f
+region box block -1.2 1.2 0 1 -1.2 1.2 units box
+create_box 1 box
+lattice sc 64
+region inner cylinder y 0 0 0.75 INF INF units box
+create_atoms 1 region inner
+set type 1 diameter 0.2 density 1.0
+velocity all create 0.005 4928459 loop geom
+pair_style linear/restitution 2000 0.5 0.5
+pair_coeff * *
+fix m all mesh/surface file {stl} type 1
+fix w all wall/pair mesh n_meshes 1 meshes m
+fix turn all move/mesh mesh m rotate origin 0 0 0 axis 0 1 0 period 3.0
+fix g all gravity 1.0 vector 0 0 -1
+fix i all nve/sphere
+neighbor {skin} bin
+neigh_modify every 1 delay 0
+timestep 1e-3
+thermo 300
+dump d all custom 1500 out.dump id x y z vx vy vz omegax omegay omegaz
+dump_modify d sort id format float %.17g
+run 1500
+"""
+
+
+def drum_stl(path, n=24, radius=1.0, length=1.0):
+    """A cylinder about the y axis, y in [0, length]: n rectangles of two
+    triangles."""
+    with open(path, "w") as f:
+        f.write("solid drum\n")
+        for k in range(n):
+            a, b = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
+            p = [(radius * math.cos(t), y, radius * math.sin(t))
+                 for t, y in ((a, 0), (b, 0), (b, length), (a, length))]
+            for tri in ((p[0], p[1], p[2]), (p[0], p[2], p[3])):
+                f.write(" facet normal 0 0 0\n  outer loop\n")
+                for v in tri:
+                    f.write("   vertex %.17g %.17g %.17g\n" % v)
+                f.write("  endloop\n endfacet\n")
+        f.write("endsolid drum\n")
+
+
+def check_mesh_approach_lists():
+    """The turning drum (DRUM) with two neighbor skins: the same bits."""
+    with tempfile.TemporaryDirectory() as d:
+        stl = os.path.join(d, "drum.stl")
+        drum_stl(stl)
+        ref = run_full(DRUM.format(stl=stl, skin=0.02))
+        got = run_full(DRUM.format(stl=stl, skin=0.3))
+    if ref[0] is None or got[0] is None:
+        return not check("mesh_approach_lists_skin", False, ((ref[1] or "") + (got[1] or ""))[-400:])
+    # the spheres have come to rest on the drum's wall (radius 1, theirs 0.1)
+    last = ref[1].split("ITEM: ATOMS")[-1].splitlines()[1:]
+    zs = [float(l.split()[3]) for l in last if re.match(r"\d+ ", l)]
+    bad = not check("mesh_approach_lists_on_the_wall", len(zs) == 116 and min(zs) < -0.85,
+                    "%d atoms, lowest z %s" % (len(zs), min(zs) if zs else None))
+    # the thermo rows (a list capacity message between them depends on the skin)
+    rows = [[r for r in x[0] if re.match(r"\d", r)] for x in (ref, got)]
+    return bad + (not check_same("mesh_approach_lists_skin", (rows[0], ref[1]), (rows[1], got[1])))
+
+
 def check_rebuild_schedule():
     """The periodic packing (PGRAN) with `neigh_modify every 1 delay 0 check
     no` against the default schedule: pair granular under fix deform in
@@ -511,6 +580,8 @@ def main():
         return 1 if check_rebuild_schedule() else 0
     if sys.argv[1:] == ["speculation"]:  # only the speculation checks
         return 1 if check_speculation() else 0
+    if sys.argv[1:] == ["mesh"]:  # only the mesh-list check
+        return 1 if check_mesh_approach_lists() else 0
     ref_rows, ref_dump = run(BED.format(extra=""))
     if ref_rows is None:
         check("determinism_reference_run", False, ref_dump[-400:])
@@ -550,6 +621,7 @@ def main():
     bad += check_fused_lanes()
     bad += check_drag()
     bad += check_cell_grid()
+    bad += check_mesh_approach_lists()
     bad += check_tail()
     bad += check_serial_default()
     bad += check_speculation()
