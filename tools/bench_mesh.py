@@ -25,8 +25,10 @@ kernel's code _pocl_kernel_NAME_workgroup) in the mesh kernel against
 pair_contacts + pair_gather, per contact; it counts the cycles each kernel
 ran, not the wall time between its start and end, so other sessions' load
 that preempts a kernel does not enter it. --law hooke/history uses LAMMPS's gran/hooke/history
-with fix wall/gran hooke/history ... mesh instead (no impulse solver). Prints
-a table for doc/benchmark.md."""
+with fix wall/gran hooke/history ... mesh instead (no impulse solver);
+--law linear/restitution (source 000's law, whose mesh walls also take the
+triangles one drift away) with fix wall/pair mesh. Prints a table for
+doc/benchmark.md."""
 import argparse
 import os
 import re
@@ -67,6 +69,8 @@ LAWS = {
     "hooke/history": ("pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1",
                       "fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 1 mesh "
                       "n_meshes 1 meshes m"),
+    "linear/restitution": ("pair_style linear/restitution 2000 0.5 0.5",
+                           "fix w all wall/pair mesh n_meshes 1 meshes m"),
 }
 
 
