@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "thermo.h"
+#include "wall_clock.h"
 
 #define PROGRESS_PERIOD 0.25 /* seconds between redraws */
 
@@ -16,7 +17,7 @@ void progress_begin(struct gravel *g)
 {
     struct output_state *st = output_state(g);
     st->progress_on = g->laststep > g->firststep && (g->opt.progress || isatty(STDERR_FILENO));
-    st->prog_last_wall = output_wall();
+    st->prog_last_wall = wall_clock();
     st->prog_len = 0;
 }
 
@@ -31,7 +32,7 @@ static void format_eta(char *buf, size_t n, double s)
 int progress_due(struct gravel *g)
 {
     struct output_state *st = output_state(g);
-    return st->progress_on && output_wall() - st->prog_last_wall >= PROGRESS_PERIOD;
+    return st->progress_on && wall_clock() - st->prog_last_wall >= PROGRESS_PERIOD;
 }
 
 void progress_update(struct gravel *g)
@@ -39,7 +40,7 @@ void progress_update(struct gravel *g)
     struct output_state *st = output_state(g);
     if (!st->progress_on)
         return;
-    double now = output_wall();
+    double now = wall_clock();
     if (now - st->prog_last_wall < PROGRESS_PERIOD)
         return;
     st->prog_last_wall = now;

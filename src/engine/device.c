@@ -7,7 +7,6 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "atoms.h"
 #include "comm.h"
@@ -233,13 +232,6 @@ void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes)
 }
 
 void eng_finish(struct gravel *g) { OCL_CHECK(g, clFinish(g->eng->ocl.queue)); }
-
-double eng_clock(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src)
 {

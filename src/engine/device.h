@@ -237,8 +237,6 @@ void eng_write(struct gravel *g, cl_mem m, size_t off, size_t bytes, const void 
 void eng_read(struct gravel *g, cl_mem m, size_t off, size_t bytes, void *dst);
 void eng_fill_zero(struct gravel *g, cl_mem m, size_t bytes);
 void eng_finish(struct gravel *g);
-/* Seconds on the monotonic clock (wall time between two readings). */
-double eng_clock(void);
 /* Host doubles <-> device REALs through a scratch buffer. */
 void eng_write_reals(struct gravel *g, cl_mem m, size_t count, const double *src);
 /* The same from REAL element `first` on. */

@@ -27,7 +27,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "accuracy.h"
 #include "accuracy_map.h"
@@ -47,8 +46,7 @@
 #include "output.h"
 #include "pair.h"
 #include "restart.h"
-
-static double wall(void) { return eng_clock(); }
+#include "wall_clock.h"
 
 /* The loop's clocks: LAMMPS's timing breakdown (Pair, Neigh, Modify,
  * Output; Other is what the loop spent beyond them), in wall seconds.
@@ -320,7 +318,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     struct dev_atoms *a = &e->a;
     const int tail = e->fused.tpost + e->fused.tfinal > 0; /* fused.h: the fused tail */
     struct pair_gather_args tail_args = {0};
-    double t0 = wall();
+    double t0 = wall_clock();
     if (e->k_pair) {
         /* the contact pipeline: each contact once, then each particle's sum */
         const struct nbr_list *l = nbr_list(g);
@@ -411,7 +409,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     }
     if (timed)
         eng_finish(g);
-    double t1 = wall();
+    double t1 = wall_clock();
     t[TM_PAIR] += t1 - t0;
     run_hook(g, HOOK_POST_FORCE);
     if (e->k_pair && tail) { /* the fused ops after the unfused post_force fixes */
@@ -427,7 +425,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
     }
     if (timed)
         eng_finish(g);
-    t[TM_MODIFY] += wall() - t1;
+    t[TM_MODIFY] += wall_clock() - t1;
 }
 
 /* Log the collision time of the contact model against the time step:
@@ -719,7 +717,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
     e->st.nlaunch = 0;
     nbr_step_reset(g);
     comm_counters_reset(); /* the loop's communication (the footer's per-step figures) */
-    double t0 = wall();
+    double t0 = wall_clock();
     for (bigint s = 0; s < nsteps; s++) {
         g->step++;
         /* `time` is the step's time throughout the step, as LAMMPS's
@@ -729,11 +727,11 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         int sampled = s % TIME_SAMPLE == 0;
         if (sampled)
             eng_finish(g); /* the previous step's work is not this step's */
-        double a0 = wall();
+        double a0 = wall_clock();
         run_hook(g, HOOK_INITIAL_INTEGRATE);
         if (sampled)
             eng_finish(g);
-        double a1 = wall();
+        double a1 = wall_clock();
         /* a step decided on speculation that failed puts g->step back */
         int rebuild = nbr_decide(g, forced_rebuild(g), plain_step(g, s + 1 == nsteps));
         s = g->step - g->firststep - 1;
@@ -743,27 +741,27 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         double tx = 0; /* pre_exchange (fix pour inserts here): Modify, as LAMMPS */
         if (rebuild) {
             acc_collect(g); /* the records are per contact and atom: before renumbering */
-            double p0 = wall();
+            double p0 = wall_clock();
             run_hook(g, HOOK_PRE_EXCHANGE);
-            tx = wall() - p0;
+            tx = wall_clock() - p0;
             nbr_rebuild(g);
             post_neighbor(g);
             eng_finish(g);
         }
-        double p1 = wall();
+        double p1 = wall_clock();
         run_hook(g, HOOK_PRE_FORCE); /* counted as Modify, like pre_exchange */
-        double a2 = wall();
+        double a2 = wall_clock();
         tx += a2 - p1;
         int timed = sampled || rebuild;
         double step[TM_N] = {0};
         const int look = step_lookahead(g, s + 1 == nsteps);
         compute_forces(g, freezebit, timed, step, look);
-        double b0 = wall();
+        double b0 = wall_clock();
         run_hook(g, HOOK_FINAL_INTEGRATE);
         run_hook(g, HOOK_END_OF_STEP);
         if (timed)
             eng_finish(g);
-        double b1 = wall();
+        double b1 = wall_clock();
         step[TM_NEIGH] = a2 - a1 - tx;
         step[TM_MODIFY] = (a1 - a0) + step[TM_MODIFY] + (b1 - b0) + tx;
         timers_step(&tm, rebuild, sampled, step);
@@ -777,11 +775,11 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             output_step(g);
         }
         restart_step(g); /* `restart N file`: written when the step is a multiple of N */
-        tm.exact[TM_OUTPUT] += wall() - b1;
+        tm.exact[TM_OUTPUT] += wall_clock() - b1;
     }
     double t[TM_N];
-    timers_total(&tm, wall() - t0, t);
-    double ttot = wall() - t0;
+    timers_total(&tm, wall_clock() - t0, t);
+    double ttot = wall_clock() - t0;
     run_end(g, nsteps, ttot, t, maxov, post);
 }
 
@@ -848,7 +846,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     g->beginstep = firststep;
     double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
     bigint ndump = 0;
-    double t0 = wall();
+    double t0 = wall_clock();
     for (int first = 1;; first = 0) {
         ndump++;
         e->setup = 1;
@@ -861,13 +859,13 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         e->setup = 0;
         run_hook(g, HOOK_END_OF_STEP);
         eng_finish(g);
-        double o0 = wall();
+        double o0 = wall_clock();
         maxov = fmax(maxov, nbr_max_overlap(g));
         if (first)
             output_setup(g);
         else if (output_due(g, g->step))
             output_step(g);
-        t[TM_OUTPUT] += wall() - o0;
+        t[TM_OUTPUT] += wall_clock() - o0;
         run_sync_host(g);
         e->active = 0;
         par_rerun_gather(g); /* several ranks: the snapshot goes into every atom */
@@ -883,11 +881,11 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
         par_fix_state_restore(g);
     }
     eng_upload(g); /* the host may have been read from: the device state again */
-    double o0 = wall();
+    double o0 = wall_clock();
     g->laststep = g->step; /* LAMMPS: thermo on the last snapshot */
     output_step(g);
-    t[TM_OUTPUT] += wall() - o0;
-    double ttot = wall() - t0;
+    t[TM_OUTPUT] += wall_clock() - o0;
+    double ttot = wall_clock() - t0;
     run_end(g, ndump, ttot, t, maxov, post);
 }
 

@@ -25,6 +25,7 @@
 #include "progress.h"
 #include "thermo.h"
 #include "variable.h"
+#include "wall_clock.h"
 
 static void emit(struct gravel *g, const char *text)
 {
@@ -209,7 +210,7 @@ void output_setup(struct gravel *g)
 {
     struct output_state *st = output_state(g);
     st->active = 1;
-    st->wall0 = output_wall();
+    st->wall0 = wall_clock();
     st->firstflag = 1;
     st->last_thermo = -1;
     compute_init_all(g);

@@ -14,7 +14,6 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "atoms.h"
 #include "args.h"
@@ -29,6 +28,7 @@
 #include "temperature.h"
 #include "thermo.h"
 #include "variable.h"
+#include "wall_clock.h"
 
 enum vtype { V_BIGINT, V_FLOAT };
 enum kw_id {
@@ -121,20 +121,13 @@ static const char *const style_multi[] = {"step", "atoms", "etotal", "ke", "pe",
 
 /* ---- state and text buffer ------------------------------------------------- */
 
-double output_wall(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 struct output_state *output_state(struct gravel *g)
 {
     if (!g->thermo.state) {
         g->thermo.state = gr_calloc(g, 1, sizeof *g->thermo.state);
         g->thermo.state->last_thermo = -1;
         g->thermo.state->pre_step = -1;
-        g->thermo.state->wall0 = output_wall();
+        g->thermo.state->wall0 = wall_clock();
     }
     return g->thermo.state;
 }
@@ -661,7 +654,7 @@ static int norm_flag(struct gravel *g)
 static double clock_now(struct gravel *g)
 {
     struct output_state *st = output_state(g);
-    return st->firstflag ? 0.0 : output_wall() - st->wall0;
+    return st->firstflag ? 0.0 : wall_clock() - st->wall0;
 }
 
 /* The keywords a gathered evaluation cannot compute (the device's virial and

@@ -45,8 +45,6 @@ struct output_state {
 
 /* The state, allocated on first use; freed by thermo_settings_free. */
 struct output_state *output_state(struct gravel *g);
-/* Monotonic wall-clock seconds. */
-double output_wall(void);
 
 /* Check that printf format `f` holds exactly one conversion of the wanted
  * kind (integer d/i, or float e/E/f/F/g/G), with widths and precisions of
