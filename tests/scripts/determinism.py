@@ -47,8 +47,8 @@ gives the same bits with a rebuild every step as with the default schedule
 these).
 The cohesive suspension gives the same bits on a coarser cell grid and on
 a finer budget (cells_per_atom_*: GRAVEL_CELLS_PER_ATOM=0 and 64).
-Spheres tumbling in a turning 24-facet drum (a mesh wall with
-linear/restitution, whose contacts include triangles one drift away: the
+Spheres tumbling in a turning 24-facet drum (tools/mesh_drum.py; a mesh wall
+with linear/restitution, whose contacts include triangles one drift away: the
 per-atom triangle lists
 stay fresh while the atom is within half the skin less its drift, kernels/wall.cl)
 give the same bits with a neighbor skin of 0.02 (lists rebuilt every few
@@ -299,11 +299,11 @@ def check_cell_grid():
 
 DRUM = """units lj
 atom_style sphere
-boundary f p f
-region box block -1.2 1.2 0 1 -1.2 1.2 units box
+boundary f f p
+region box block -1.2 1.2 -1.2 1.2 0 1 units box
 create_box 1 box
 lattice sc 64
-region inner cylinder y 0 0 0.75 INF INF units box
+region inner cylinder z 0 0 0.75 INF INF units box
 create_atoms 1 region inner
 set type 1 diameter 0.2 density 1.0
 velocity all create 0.005 4928459 loop geom
@@ -311,8 +311,8 @@ pair_style linear/restitution 2000 0.5 0.5
 pair_coeff * *
 fix m all mesh/surface file {stl} type 1
 fix w all wall/pair mesh n_meshes 1 meshes m
-fix turn all move/mesh mesh m rotate origin 0 0 0 axis 0 1 0 period 3.0
-fix g all gravity 1.0 vector 0 0 -1
+fix turn all move/mesh mesh m rotate origin 0 0 0 axis 0 0 1 period 3.0
+fix g all gravity 1.0 vector 0 -1 0
 fix i all nve/sphere
 neighbor {skin} bin
 neigh_modify every 1 delay 0
@@ -324,37 +324,22 @@ run 1500
 """
 
 
-def drum_stl(path, n=24, radius=1.0, length=1.0):
-    """A cylinder about the y axis, y in [0, length]: n rectangles of two
-    triangles."""
-    with open(path, "w") as f:
-        f.write("solid drum\n")
-        for k in range(n):
-            a, b = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
-            p = [(radius * math.cos(t), y, radius * math.sin(t))
-                 for t, y in ((a, 0), (b, 0), (b, length), (a, length))]
-            for tri in ((p[0], p[1], p[2]), (p[0], p[2], p[3])):
-                f.write(" facet normal 0 0 0\n  outer loop\n")
-                for v in tri:
-                    f.write("   vertex %.17g %.17g %.17g\n" % v)
-                f.write("  endloop\n endfacet\n")
-        f.write("endsolid drum\n")
-
-
 def check_mesh_approach_lists():
     """The turning drum (DRUM) with two neighbor skins: the same bits."""
     with tempfile.TemporaryDirectory() as d:
         stl = os.path.join(d, "drum.stl")
-        drum_stl(stl)
+        subprocess.run([sys.executable, os.path.join(ROOT, "tools", "mesh_drum.py"), stl,
+                        "--radius", "1", "--length", "1", "--facets", "24", "--lifters", "0"],
+                       check=True)
         ref = run_full(DRUM.format(stl=stl, skin=0.02))
         got = run_full(DRUM.format(stl=stl, skin=0.3))
     if ref[0] is None or got[0] is None:
         return not check("mesh_approach_lists_skin", False, ((ref[1] or "") + (got[1] or ""))[-400:])
-    # the spheres have come to rest on the drum's wall (radius 1, theirs 0.1)
+    # the spheres have come to rest on the drum's wall (radius 1, theirs 0.1; gravity -y)
     last = ref[1].split("ITEM: ATOMS")[-1].splitlines()[1:]
-    zs = [float(l.split()[3]) for l in last if re.match(r"\d+ ", l)]
-    bad = not check("mesh_approach_lists_on_the_wall", len(zs) == 116 and min(zs) < -0.85,
-                    "%d atoms, lowest z %s" % (len(zs), min(zs) if zs else None))
+    ys = [float(l.split()[2]) for l in last if re.match(r"\d+ ", l)]
+    bad = not check("mesh_approach_lists_on_the_wall", len(ys) == 116 and min(ys) < -0.85,
+                    "%d atoms, lowest y %s" % (len(ys), min(ys) if ys else None))
     # the thermo rows (a list capacity message between them depends on the skin)
     rows = [[r for r in x[0] if re.match(r"\d", r)] for x in (ref, got)]
     return bad + (not check_same("mesh_approach_lists_skin", (rows[0], ref[1]), (rows[1], got[1])))
