@@ -63,20 +63,21 @@ static inline lreal_w lane_min_image(const lreal_w d, const REAL L)
 #define LMINIMG_Z(d, L) (d)
 #endif
 
-/* A contact that does not touch (pair_loop.cl's pair_contacts for it): a
- * nonzero history is zeroed, and if it acted when last evaluated it writes
- * zero records and turns quiet. */
+/* A contact that does not touch (pair_loop.cl's pair_contacts for it): if
+ * it acted when last evaluated, a nonzero history is zeroed, it writes zero
+ * records and turns quiet; else (quiet) its history and records are zero
+ * already and nothing is read. */
 static inline void pair_lane_apart(const int c, __global REAL *shear, __global uchar *quiet,
                                    __global REAL *rec)
 {
+    if (quiet[c])
+        return;
 #ifdef HAS_HISTORY
     const REAL h0[3] = {0, 0, 0};
     contact_hist_store(shear + (size_t)c * 3, h0, 3, 0);
 #else
     (void)shear;
 #endif
-    if (quiet[c])
-        return;
     quiet[c] = 1;
     const REAL3 f = (REAL3)(0);
     vstore3(f, 0, rec + REC_F(c));
