@@ -3,7 +3,8 @@
 # chute, a dense packing, a dilute gas, and a 126-sphere rotating drum, the
 # small scene) in gravel, double and single precision, and, when `lmp` is
 # installed, the same deck files in LAMMPS on 1 and 2 MPI processes (the
-# drum on 1 only); then the source document's agglomeration case (cohesion
+# drum on 1 only); the chute in LIGGGHTS's syntax (chute_lg:
+# chute_liggghts.in) against LIGGGHTS 3.8 (`liggghts`) on 1 and 2; then the source document's agglomeration case (cohesion
 # + drag, N = 10^4) in gravel: its first 2000 steps from the lattice (agglo)
 # and 1000 steps late in a run (agglate: resumed from
 # inputs/bench/agglo_late.restart.gz, seed 12345's Sy 1.5 / Stk 1 at 577 s,
@@ -21,7 +22,7 @@ cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
 repeats=${BENCH_REPEATS:-3}
 scale=${BENCH_SCALE:-1}
-decks=${BENCH_DECKS:-"chute dense dilute drum agglo agglate"}
+decks=${BENCH_DECKS:-"chute chute_lg dense dilute drum agglo agglate"}
 data="$root/../shared/peers/chute/data.chute"
 [ -f "$data" ] || data=/work/shared/peers/chute/data.chute
 tmp=$(mktemp -d)
@@ -42,17 +43,20 @@ have_lmp=0
 command -v lmp >/dev/null 2>&1 && have_lmp=1
 have_mpi=0
 command -v mpirun >/dev/null 2>&1 && have_mpi=1
+have_liggghts=0
+command -v liggghts >/dev/null 2>&1 && have_liggghts=1
 
 # deck settings: file, steps, extra -var options
 deck_file() {
     case $1 in
         agglo | agglate) echo "$root/inputs/published/agglomeration/agglomeration.in" ;;
+        chute_lg) echo "$root/inputs/bench/chute_liggghts.in" ;;
         *) echo "$root/inputs/bench/$1.in" ;;
     esac
 }
 deck_vars() {
     case $1 in
-        chute) echo "-var nsteps $((2000 * scale))" ;;
+        chute | chute_lg) echo "-var nsteps $((2000 * scale))" ;;
         dense) echo "-var nsteps $((1000 * scale))" ;;
         dilute) echo "-var nsteps $((2000 * scale))" ;;
         drum) echo "-var nsteps $((10000 * scale))" ;;
@@ -73,8 +77,8 @@ printf "%-8s %9s %9s %9s %9s %8s %8s\n" deck "g-double" "g-single" LAMMPS-1 LAMM
 for deck in $decks; do
     file=$(deck_file "$deck")
     vars=$(deck_vars "$deck")
-    if [ "$deck" = chute ] && [ ! -f "$data" ]; then
-        echo "chute: data.chute not found (../shared/peers/chute/data.chute): skipped"
+    if { [ "$deck" = chute ] || [ "$deck" = chute_lg ]; } && [ ! -f "$data" ]; then
+        echo "$deck: data.chute not found (../shared/peers/chute/data.chute): skipped"
         continue
     fi
     : > "$tmp/gd"; : > "$tmp/gs"; : > "$tmp/l1"; : > "$tmp/l2"
@@ -85,11 +89,14 @@ for deck in $decks; do
                 -log none > g.out 2>&1) || { echo "bench: gravel failed on $deck:"; tail -20 "$tmp/g.out"; exit 1; }
             rate "$tmp/g.out" >> "$tmp/g$(echo $prec | cut -c1)"
         done
-        if [ $have_lmp = 1 ] && [ "$deck" != agglo ] && [ "$deck" != agglate ]; then
-            (cd "$tmp" && lmp -in "$file" $vars -log none > l.out 2>&1)
+        # the peer: LAMMPS, or LIGGGHTS for chute_lg (the columns LAMMPS-1 and -2)
+        peer=lmp; have_peer=$have_lmp
+        [ "$deck" = chute_lg ] && { peer=liggghts; have_peer=$have_liggghts; }
+        if [ $have_peer = 1 ] && [ "$deck" != agglo ] && [ "$deck" != agglate ]; then
+            (cd "$tmp" && $peer -in "$file" $vars -log none > l.out 2>&1)
             rate "$tmp/l.out" >> "$tmp/l1"
             if [ $have_mpi = 1 ] && [ "$deck" != drum ]; then
-                (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 lmp -in "$file" \
+                (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 $peer -in "$file" \
                     $vars -log none > l.out 2>&1)
                 rate "$tmp/l.out" >> "$tmp/l2"
             fi
@@ -114,6 +121,14 @@ if [ -n "$rate_drum" ] && [ $have_lmp = 1 ]; then
     printf "drum (126 spheres, double) / LAMMPS-1 = %s (goal >= 1)\n" \
         "$(ratio "$rate_drum" "$lmp1_drum")"
 fi
+case " $decks " in
+    *" chute_lg "*)
+        if [ $have_liggghts = 1 ]; then
+            echo "chute_lg: its LAMMPS-1 and LAMMPS-2 columns are LIGGGHTS 3.8 (liggghts) on 1 and 2 processes"
+        else
+            echo "LIGGGHTS (liggghts) not installed: chute_lg has no comparison (apt-get install liggghts)"
+        fi ;;
+esac
 [ $have_lmp = 1 ] || echo "LAMMPS (lmp) not installed: no comparison (apt-get install lammps)"
 if [ "${BENCH_MEMORY:-1}" != 0 ]; then
     /usr/bin/python3 "$root/tools/bench_memory.py" || exit 1
