@@ -434,8 +434,8 @@ static inline __attribute__((always_inline)) void gather_lanes(KA_PARAMS(pair_ga
 #define A_SUMS(l)                                                                              \
     {                                                                                          \
         REAL3 fs_, ts_;                                                                        \
-        gather_sums(i0 + l, tail, ioff, coff, pcon, rec, f, torque, radius, recq, heatflow,    \
-                    &fs_, &ts_);                                                               \
+        gather_sums(i0 + l, tail, ioff, coff, pcon, quiet, rec, zidx, f, torque, radius, recq, \
+                    heatflow, &fs_, &ts_);                                                     \
         at.f.x[l] = fs_.x;                                                                     \
         at.f.y[l] = fs_.y;                                                                     \
         at.f.z[l] = fs_.z;                                                                     \

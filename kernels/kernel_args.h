@@ -59,13 +59,14 @@
 /* pair_gather: one work-item per particle, then the fused post_force,
  * final_integrate and end_of_step ops [first, first + npost + nfinal)
  * (nfinal counts both of the last two); store: the fused fix's per-atom
- * store (f when none); recq / heatflow as pair_contacts'; ioff, coff and
- * pcon: the list's (src/engine/neighbor.h) */
+ * store (f when none); recq / heatflow as pair_contacts'; ioff, coff,
+ * pcon and quiet (read only): the list's (src/engine/neighbor.h); zidx:
+ * the record of zeros past the last contact's (nbr_quiet_reset) */
 #define KARGS_pair_gather(X, Y)                                                                \
-    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(M, f) Y(M, torque) Y(CMI, ops) \
-    Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v) Y(M, omega)            \
-    Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq) Y(M, heatflow) Y(I, look) \
-    Y(PART, atom_step) Y(PART, halt) Y(POS_LO, xlo)
+    X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(I, zidx) Y(M, f) Y(M, torque) \
+    Y(CMI, ops) Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v)            \
+    Y(M, omega) Y(CM, rmass) Y(CM, radius) Y(CMI, type) Y(CMU, mask) Y(CM, recq)               \
+    Y(M, heatflow) Y(I, look) Y(MUC, quiet) Y(PART, atom_step) Y(PART, halt) Y(POS_LO, xlo)
 
 /* force_clear: no pair style (heatflow: f without HAS_HEAT) */
 #define KARGS_force_clear(X, Y) X(I, n) Y(M, f) Y(M, torque) Y(M, heatflow)

@@ -24,8 +24,9 @@
  * acc/astep: the contact's collision-resolution record (kernels/accuracy.cl).
  * A contact that does not act writes zero records; one that did not act at
  * its last evaluation either (quiet[c], reset at every rebuild and run
- * start) skips those stores: most listed pairs of a flowing bed are apart
- * for many steps.
+ * start) skips those stores, and pair_gather reads a shared record of
+ * zeros in place of its own (rec_take): most listed pairs of a flowing bed
+ * are apart for many steps.
  *
  * meff = mi mj / (mi + mj); when one particle is in the freeze group
  * (freezebit), meff is the other particle's mass (LAMMPS pair gran). */
@@ -177,17 +178,26 @@ __kernel void PAIR_CONTACTS_ONE(KA_KERNEL(pair_contacts))
 
 /* What particle i receives from contact c's record (see the top), added to
  * its sums: partner, i is the contact's partner (-F and the partner's
- * torque); nr = -radius[i] (PAIR_TC: the torque -rad tc). */
-static inline void rec_take(__global const REAL *rec, const int c, const int partner,
-                            const REAL nr, REAL3 *fs, REAL3 *ts)
+ * torque); nr = -radius[i] (PAIR_TC: the torque -rad tc). A quiet contact's
+ * record is zero (pair_contacts wrote it so and has not written it since):
+ * the record zidx, zeros that stay in cache (src/engine/neighbor.c,
+ * nbr_quiet_reset), is read in its place, so the same sums are taken
+ * without a load of the contact's own. The choice is arithmetic on the
+ * flag's byte q (0 or 1), not a branch: apart and touching contacts mix
+ * unpredictably in a packing. */
+static inline void rec_take(__global const REAL *rec, const int c, const int zidx,
+                            const uint q, const int partner, const REAL nr, REAL3 *fs,
+                            REAL3 *ts)
 {
-    const REAL3 f = vload3(0, rec + REC_F(c));
+    const long own = (long)REC_F(c);
+    __global const REAL *r = rec + (own + (long)q * ((long)REC_F(zidx) - own));
+    const REAL3 f = vload3(0, r);
     *fs = partner ? *fs - f : *fs + f;
 #if defined(HAS_ROTATION) && defined(PAIR_TC)
-    const REAL3 t = nr * vload3(0, rec + REC_T(c));
+    const REAL3 t = nr * vload3(0, r + 3);
     *ts += t;
 #elif defined(HAS_ROTATION)
-    *ts += vload3(0, rec + (partner ? REC_TJ(c) : REC_T(c)));
+    *ts += vload3(0, r + (partner ? 6 : 3));
 #else
     (void)nr;
     (void)ts;
@@ -201,7 +211,8 @@ static inline void rec_take(__global const REAL *rec, const int c, const int par
  * (kernels/atom_lanes.cl). */
 static inline __attribute__((always_inline)) void
 gather_sums(const int i, const int tail, __global const int *ioff, __global const int *coff,
-            __global const int *pcon, __global const REAL *rec, __global const REAL *f,
+            __global const int *pcon, __global const uchar *quiet, __global const REAL *rec,
+            const int zidx, __global const REAL *f,
             __global const REAL *torque, __global const REAL *radius,
             __global const REAL *recq, __global REAL *heatflow, REAL3 *fs, REAL3 *ts)
 {
@@ -218,10 +229,12 @@ gather_sums(const int i, const int tail, __global const int *ioff, __global cons
         const int c0 = coff[i], c1 = coff[i + 1];
         const int p0 = ioff[i] - c0, p1 = ioff[i + 1] - c1; /* i's partner-side slots in pcon */
         const REAL nr = -radius[i];
-        for (int s = p0; s < p1; s++)
-            rec_take(rec, pcon[s], 1, nr, fs, ts);
+        for (int s = p0; s < p1; s++) {
+            const int c = pcon[s];
+            rec_take(rec, c, zidx, quiet[c], 1, nr, fs, ts);
+        }
         for (int c = c0; c < c1; c++)
-            rec_take(rec, c, 0, nr, fs, ts);
+            rec_take(rec, c, zidx, quiet[c], 0, nr, fs, ts);
 #ifdef HAS_HEAT /* the step's heat flow: i's heat records in the same row order */
         REAL qs = 0;
         for (int s = p0; s < p1; s++)
@@ -249,7 +262,8 @@ static inline __attribute__((always_inline)) void gather_atom(KA_PARAMS(pair_gat
                                                               const int tail, const int i)
 {
     REAL3 fs, ts;
-    gather_sums(i, tail, ioff, coff, pcon, rec, f, torque, radius, recq, heatflow, &fs, &ts);
+    gather_sums(i, tail, ioff, coff, pcon, quiet, rec, zidx, f, torque, radius, recq, heatflow,
+                &fs, &ts);
     if (npost + nfinal > 0 || look) {
         struct fused_atom at;
         at.f = fs;

@@ -151,11 +151,39 @@ void nbr_invalidate(struct gravel *g)
 
 const struct nbr_list *nbr_list(struct gravel *g) { return &get(g)->list; }
 
-void nbr_quiet_reset(struct gravel *g)
+/* REAL per contact record (kernels/pair_loop.cl, REC_W) */
+static size_t rec_reals(const struct engine *e)
+{
+    return (size_t)(!e->rotation ? 3 : e->pair_tc ? 6 : 9);
+}
+
+static void quiet_clear(struct gravel *g)
 {
     const struct nbr_list *l = &get(g)->list;
     if (l->quiet && l->ncontact > 0)
         eng_fill_zero(g, l->quiet, ((size_t)l->ncontact + 3) / 4 * 4);
+}
+
+/* The record past the last contact's: zeros, which pair_gather reads for a
+ * quiet contact's (kernels/pair_loop.cl rec_take; alloc_records leaves
+ * room for it). Written once the records buffer holds records again (a
+ * rebuild parks history there first); nothing writes there until the next
+ * rebuild. */
+static void zero_record(struct gravel *g)
+{
+    const struct nbr_list *l = &get(g)->list;
+    if (!l->rec)
+        return;
+    const size_t w = rec_reals(g->eng) * g->eng->rsz;
+    const cl_uint zero = 0;
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, l->rec, &zero, sizeof zero,
+                                     (size_t)l->ncontact * w, w, 0, NULL, NULL));
+}
+
+void nbr_quiet_reset(struct gravel *g)
+{
+    quiet_clear(g);
+    zero_record(g);
 }
 
 
@@ -250,7 +278,7 @@ static void alloc_list(struct gravel *g, struct nbr *b, int maxn)
  * sized to hold those too. */
 static size_t rec_bytes(const struct engine *e)
 {
-    size_t own = (size_t)(!e->rotation ? 3 : e->pair_tc ? 6 : 9) * e->rsz;
+    size_t own = rec_reals(e) * e->rsz;
     size_t park = e->history ? (size_t)e->hist_n * e->rsz + sizeof(cl_int) : 0;
     return park > own ? park : own;
 }
@@ -315,7 +343,7 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 static void alloc_records(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc > b->cap_pair || !l->rec) {
+    if (nc >= b->cap_pair || !l->rec) { /* and the zero record after them (nbr_quiet_reset) */
         rel(&l->rec);
         b->cap_pair = grown(nc);
         l->rec = eng_alloc(g, b->cap_pair * rec_bytes(g->eng), "contact records");
@@ -1225,7 +1253,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
         mem_fit_contacts(g, (size_t)total); /* all of the contacts' buffers, before any */
     alloc_contacts(g, b, (size_t)total);
     l->ncontact = total;
-    nbr_quiet_reset(g); /* a records' buffer held the parked history */
+    quiet_clear(g); /* the records' buffer holds the parked history */
     reset_flags(g, b);
     cl_kernel k = b->k_contacts;
     int a = 0;
@@ -1252,6 +1280,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
         eng_fill_zero(g, l->shear, (size_t)total * e->hist_n * e->rsz);
     if (!have_old && !(e->history && e->hist_owner && total > 0)) {
         alloc_records(g, b, (size_t)total);
+        zero_record(g);
         return;
     }
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
@@ -1260,6 +1289,7 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
              have_old ? b->coff_old : any, have_old ? l->rec : any, (int)b->old_cj_at,
              have_old ? l->rec : l->shear);
     alloc_records(g, b, (size_t)total); /* after the transfer read the parked contacts */
+    zero_record(g);
 }
 
 void nbr_history_install(struct gravel *g, const void *hist)

@@ -31,9 +31,10 @@ struct nbr_list {
     double tilt[3];         /* tilt factors xy xz yz of the current box (0: orthogonal) */
 };
 
-/* The records of every contact are unknown (a rebuild parked history in
- * them, a run starts, a restart restored the list): the next evaluation
- * writes every contact's records (nbr_list.quiet = 0). */
+/* The records of every contact are unknown (a run starts, a restart
+ * restored the list): the next evaluation writes every contact's records
+ * (nbr_list.quiet = 0), and the zero record after them, which pair_gather
+ * reads for a quiet contact's, is written again. */
 void nbr_quiet_reset(struct gravel *g);
 /* Kernel arguments a .. a + 5: the list's periodic lengths Lx Ly Lz, then
  * the tilts xy xz yz (kernels/common.cl, "Triclinic boxes"). Returns a + 6. */

@@ -371,6 +371,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .coff = l->coff,
             .pcon = l->pcon,
             .rec = l->rec,
+            .zidx = l->ncontact,
             .f = a->f,
             .torque = e->rotation ? a->torque : a->f,
             .ops = e->fused.ops,
@@ -387,6 +388,7 @@ static void compute_forces(struct gravel *g, unsigned freezebit, int timed, doub
             .mask = a->mask,
             .recq = recq,
             .heatflow = e->heat ? a->heatflow : a->f,
+            .quiet = l->quiet,
             .look = look && !tail,
             .halt = pc.halt,
         };
