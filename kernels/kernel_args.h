@@ -61,7 +61,8 @@
  * (nfinal counts both of the last two); store: the fused fix's per-atom
  * store (f when none); recq / heatflow as pair_contacts'; ioff, coff,
  * pcon and quiet (read only): the list's (src/engine/neighbor.h); zidx:
- * the record of zeros past the last contact's (nbr_quiet_reset) */
+ * the record of zeros past the last contact's (src/engine/neighbor.c,
+ * zero_record) */
 #define KARGS_pair_gather(X, Y)                                                                \
     X(I, n) Y(CMI, ioff) Y(CMI, coff) Y(CMI, pcon) Y(CM, rec) Y(I, zidx) Y(M, f) Y(M, torque) \
     Y(CMI, ops) Y(I, first) Y(I, npost) Y(I, nfinal) Y(CM, prm) Y(M, store) Y(M, v)            \

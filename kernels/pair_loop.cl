@@ -181,7 +181,7 @@ __kernel void PAIR_CONTACTS_ONE(KA_KERNEL(pair_contacts))
  * torque); nr = -radius[i] (PAIR_TC: the torque -rad tc). A quiet contact's
  * record is zero (pair_contacts wrote it so and has not written it since):
  * the record zidx, zeros that stay in cache (src/engine/neighbor.c,
- * nbr_quiet_reset), is read in its place, so the same sums are taken
+ * zero_record), is read in its place, so the same sums are taken
  * without a load of the contact's own. The choice is arithmetic on the
  * flag's byte q (0 or 1), not a branch: apart and touching contacts mix
  * unpredictably in a packing. */

@@ -343,7 +343,7 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
 static void alloc_records(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc >= b->cap_pair || !l->rec) { /* and the zero record after them (nbr_quiet_reset) */
+    if (nc >= b->cap_pair || !l->rec) { /* and the zero record after them (zero_record) */
         rel(&l->rec);
         b->cap_pair = grown(nc);
         l->rec = eng_alloc(g, b->cap_pair * rec_bytes(g->eng), "contact records");
