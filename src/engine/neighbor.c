@@ -164,26 +164,25 @@ static void quiet_clear(struct gravel *g)
         eng_fill_zero(g, l->quiet, ((size_t)l->ncontact + 3) / 4 * 4);
 }
 
-/* The record past the last contact's: zeros, which pair_gather reads for a
- * quiet contact's (kernels/pair_loop.cl rec_take; alloc_records leaves
- * room for it). Written once the records buffer holds records again (a
- * rebuild parks history there first); nothing writes there until the next
- * rebuild. */
-static void zero_record(struct gravel *g)
+/* Record nc, the one past nc contacts' records: zeros, which pair_gather
+ * reads for a quiet contact's (kernels/pair_loop.cl rec_take). Nothing
+ * writes there until a rebuild parks history in the records; alloc_records
+ * writes it again after the history transfer. */
+static void zero_record(struct gravel *g, size_t nc)
 {
     const struct nbr_list *l = &get(g)->list;
     if (!l->rec)
         return;
     const size_t w = rec_reals(g->eng) * g->eng->rsz;
     const cl_uint zero = 0;
-    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, l->rec, &zero, sizeof zero,
-                                     (size_t)l->ncontact * w, w, 0, NULL, NULL));
+    OCL_CHECK(g, clEnqueueFillBuffer(g->eng->ocl.queue, l->rec, &zero, sizeof zero, nc * w, w,
+                                     0, NULL, NULL));
 }
 
 void nbr_quiet_reset(struct gravel *g)
 {
     quiet_clear(g);
-    zero_record(g);
+    zero_record(g, (size_t)get(g)->list.ncontact);
 }
 
 
@@ -340,14 +339,17 @@ static void alloc_contacts(struct gravel *g, struct nbr *b, size_t nc)
     }
 }
 
+/* Records for nc contacts and, after them, the record of zeros
+ * (zero_record); contents otherwise not kept. */
 static void alloc_records(struct gravel *g, struct nbr *b, size_t nc)
 {
     struct nbr_list *l = &b->list;
-    if (nc >= b->cap_pair || !l->rec) { /* and the zero record after them (zero_record) */
+    if (nc >= b->cap_pair || !l->rec) {
         rel(&l->rec);
         b->cap_pair = grown(nc);
         l->rec = eng_alloc(g, b->cap_pair * rec_bytes(g->eng), "contact records");
     }
+    zero_record(g, nc);
 }
 
 /* The current contacts become the previous ones: offsets swap, history
@@ -1280,7 +1282,6 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
         eng_fill_zero(g, l->shear, (size_t)total * e->hist_n * e->rsz);
     if (!have_old && !(e->history && e->hist_owner && total > 0)) {
         alloc_records(g, b, (size_t)total);
-        zero_record(g);
         return;
     }
     /* the transfer; with no previous contacts it only records LAMMPS's owners */
@@ -1289,7 +1290,6 @@ static void build_contacts(struct gravel *g, struct nbr *b, int permuted, int n)
              have_old ? b->coff_old : any, have_old ? l->rec : any, (int)b->old_cj_at,
              have_old ? l->rec : l->shear);
     alloc_records(g, b, (size_t)total); /* after the transfer read the parked contacts */
-    zero_record(g);
 }
 
 void nbr_history_install(struct gravel *g, const void *hist)
