@@ -612,7 +612,10 @@ void eng_prepare(struct gravel *g)
     ocl_build(g, &e->ocl, n, names, texts, opts);
     if (e->ocl.program_key != before || !e->ocl.cache_hit)
         gr_print(g, "OpenCL program: %s (%s)\n",
-                 e->ocl.cache_hit ? "program cache hit" : "compiled", opts);
+                 e->ocl.cache_hit ? "program cache hit"
+                 : e->ocl.pcache  ? "compiled"
+                                  : "compiled or taken from the driver's kernel cache",
+                 opts);
 }
 
 void engine_destroy(struct gravel *g)

@@ -237,6 +237,7 @@ void ocl_init(struct gravel *g, struct ocl *o, const char *want, long atoms)
     clGetDeviceInfo(o->device, CL_DEVICE_EXTENSIONS, sizeof ext, ext, NULL);
     ext[sizeof ext - 1] = '\0';
     o->fp64 = strstr(ext, "cl_khr_fp64") != NULL;
+    o->pcache = pcache_wanted(g, o);
     cl_int err;
     o->ctx = clCreateContext(NULL, 1, &o->device, NULL, NULL, &err);
     ocl_check(g, err, "clCreateContext");
@@ -328,7 +329,7 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
         o->program = NULL;
     }
     cl_int err;
-    cl_program cached = pcache_load(g, o, key, options);
+    cl_program cached = o->pcache ? pcache_load(g, o, key, options) : NULL;
     if (cached) {
         o->program = cached;
         o->program_key = key;
@@ -384,7 +385,8 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
     }
     o->program = p;
     o->program_key = key;
-    pcache_store(o, key, options);
+    if (o->pcache)
+        pcache_store(o, key, options);
 }
 
 cl_kernel ocl_kernel(struct gravel *g, struct ocl *o, const char *name)

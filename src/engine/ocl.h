@@ -30,6 +30,7 @@ struct ocl {
                                  * buffers may be the host's arrays (ocl_wrap); env
                                  * GRAVEL_HOST_SHARE=0 turns that off */
     int fp64;                   /* device supports cl_khr_fp64 */
+    int pcache;                 /* gravel's program cache is in use (pcache_wanted) */
     int cache_hit;              /* last ocl_build loaded a cached binary */
     int profile;                /* env GRAVEL_PROFILE: time every kernel (device.c) */
     size_t max_alloc;           /* CL_DEVICE_MAX_MEM_ALLOC_SIZE */

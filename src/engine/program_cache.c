@@ -15,6 +15,21 @@
 static const char magic[8] = {'G', 'R', 'V', 'L', 'P', 'R', 'G', '1'};
 #define MAX_ENTRY ((size_t)512 << 20) /* PoCL's own binaries stop at 256 MiB */
 
+int pcache_wanted(struct gravel *g, const struct ocl *o)
+{
+    const char *env = getenv("GRAVEL_PROGRAM_CACHE");
+    if (env && *env) {
+        if (strcmp(env, "0") && strcmp(env, "1"))
+            gr_error(g, "GRAVEL_PROGRAM_CACHE must be 0 or 1, got '%.32s'", env);
+        return env[0] == '1';
+    }
+    char name[256] = "";
+    clGetPlatformInfo(o->platform, CL_PLATFORM_NAME, sizeof name, name, NULL);
+    name[sizeof name - 1] = '\0';
+    const char *pk = getenv("POCL_KERNEL_CACHE");
+    return !strstr(name, "Portable Computing Language") || (pk && !strcmp(pk, "0"));
+}
+
 int pcache_dir(char *buf, size_t n)
 {
     const char *d = getenv("GRAVEL_CACHE_DIR");

@@ -19,6 +19,14 @@
 
 #define PCACHE_HEADER 32
 
+/* Whether runs on o's device read and write the cache: env
+ * GRAVEL_PROGRAM_CACHE=1 or 0; by default not on PoCL with its own kernel
+ * cache on (POCL_KERNEL_CACHE unset or not 0), which keeps every compiled
+ * kernel itself: there, fetching the binary to store (CL_PROGRAM_BINARIES)
+ * compiles every kernel of the program once more, most of a cold build's
+ * time. Any other value of the variable is an error. */
+int pcache_wanted(struct gravel *g, const struct ocl *o);
+
 /* Directory of the program cache (env GRAVEL_CACHE_DIR, else
  * $XDG_CACHE_HOME/gravel, else ~/.cache/gravel) into buf; 0 if none. */
 int pcache_dir(char *buf, size_t n);

@@ -37,7 +37,8 @@ thermo		1000
 thermo_modify	norm no
 run		100
 DECK
-export GRAVEL_CACHE_DIR="$tmp/cache"
+# gravel's own program cache, on even where PoCL keeps its kernels (opencl.md)
+export GRAVEL_CACHE_DIR="$tmp/cache" GRAVEL_PROGRAM_CACHE=1
 cd "$tmp" || exit 1
 "$root/bin/gravel" -in in.chute -log log1 > out1 2>&1
 rc=$?

@@ -9,7 +9,9 @@ cache was being cleared: PoCL aborts with `pocl_binary.c:771: Assertion len >
 0` on it). Each time the run exits 0 with the same thermo output as the first
 run, warns once that the entry was damaged and removed, rebuilds from source,
 and leaves a verified entry that the next run loads ("program cache hit", no
-warning)."""
+warning). gravel's cache is on for these (GRAVEL_PROGRAM_CACHE=1); by
+default a PoCL device leaves it to PoCL's own kernel cache: no entry is
+written, the log says so, and the run's output is the same."""
 import glob
 import os
 import shutil
@@ -62,10 +64,13 @@ def fnv(data):
     return h
 
 
-def run(d):
+def run(d, use="1"):
+    env = dict(os.environ, GRAVEL_CACHE_DIR=os.path.join(d, "cache"))
+    env.pop("GRAVEL_PROGRAM_CACHE", None)
+    if use is not None:
+        env["GRAVEL_PROGRAM_CACHE"] = use
     r = subprocess.run([GRAVEL, "-in", "in.deck", "-log", "none"], cwd=d,
-                       capture_output=True, text=True,
-                       env=dict(os.environ, GRAVEL_CACHE_DIR=os.path.join(d, "cache")))
+                       capture_output=True, text=True, env=env)
     out = r.stdout + r.stderr
     thermo = [l.split() for l in r.stdout.splitlines()
               if len(l.split()) == 2 and l.split()[0].isdigit()]
@@ -132,6 +137,23 @@ def main():
         rc, out, thermo = run(d)
         report("fifo_entry_left_alone", rc == 0 and thermo == ref and
                os.path.exists(path) and not os.path.isfile(path), out[-800:])
+        os.remove(path)
+        # the default on PoCL (its kernel cache on): gravel's cache neither read nor written
+        pocl = good[HEADER:HEADER + 8] == b"poclbin\0"
+        for use in (None, "0"):
+            rc, out, thermo = run(d, use)
+            written = glob.glob(os.path.join(d, "cache", "*.gbin"))
+            label = "default" if use is None else "off"
+            if use is None and not pocl:
+                report("default_not_pocl_stores", rc == 0 and thermo == ref and len(written) == 1,
+                       out[-800:])
+                continue
+            report(label + "_leaves_it_to_the_driver", rc == 0 and thermo == ref and not written and
+                   "OpenCL program: compiled or taken from the driver's kernel cache" in out,
+                   out[-800:])
+        rc, out, thermo = run(d, "yes")
+        report("bad_setting_refused", rc == 1 and
+               "GRAVEL_PROGRAM_CACHE must be 0 or 1, got 'yes'" in out, out[-800:])
     return 1 if failures else 0
 
 
