@@ -329,8 +329,12 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
         o->program = NULL;
     }
     cl_int err;
+    /* held until the build ends: a process starting the same program waits,
+     * then finds it in a cache; released before any error */
+    const int lock = pcache_build_lock(key);
     cl_program cached = o->pcache ? pcache_load(g, o, key, options) : NULL;
     if (cached) {
+        pcache_build_unlock(lock);
         o->program = cached;
         o->program_key = key;
         o->cache_hit = 1;
@@ -351,8 +355,11 @@ void ocl_build(struct gravel *g, struct ocl *o, int n, const char *const *names,
     const char *srcs[1] = {src};
     cl_program p = clCreateProgramWithSource(o->ctx, 1, srcs, NULL, &err);
     free(src);
-    ocl_check(g, err, "clCreateProgramWithSource");
-    err = clBuildProgram(p, 1, &o->device, options, NULL, NULL);
+    if (err == CL_SUCCESS)
+        err = clBuildProgram(p, 1, &o->device, options, NULL, NULL);
+    pcache_build_unlock(lock);
+    if (!p)
+        ocl_check(g, err, "clCreateProgramWithSource");
     if (err != CL_SUCCESS) {
         size_t len = 0;
         clGetProgramBuildInfo(p, o->device, CL_PROGRAM_BUILD_LOG, 0, NULL, &len);

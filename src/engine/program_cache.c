@@ -5,6 +5,8 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -199,6 +201,37 @@ const char *pcache_pocl_problem(const unsigned char *b, size_t n)
         at += ss;
     }
     return at == n ? NULL : "PoCL binary: bytes after the last kernel";
+}
+
+/* ---- one build at a time per program ------------------------------------------------ */
+
+#define LOCK_WAIT_S 300
+
+int pcache_build_lock(uint64_t key)
+{
+    char dir[900], path[1000];
+    if (!pcache_dir(dir, sizeof dir) || !make_dirs(dir))
+        return -1;
+    snprintf(path, sizeof path, "%s/build-%02u.lock", dir, (unsigned)(key % 64));
+    int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd < 0)
+        return -1;
+    /* a holder that never ends its build (stopped, hung) delays a run by at
+     * most LOCK_WAIT_S, after which it builds without the lock */
+    for (int tries = 0; flock(fd, LOCK_EX | LOCK_NB) != 0; tries++) {
+        if ((errno != EWOULDBLOCK && errno != EINTR) || tries >= LOCK_WAIT_S * 20) {
+            close(fd);
+            return -1;
+        }
+        usleep(50000);
+    }
+    return fd;
+}
+
+void pcache_build_unlock(int fd)
+{
+    if (fd >= 0)
+        close(fd); /* releases the lock */
 }
 
 /* ---- loading ----------------------------------------------------------------------- */

@@ -33,6 +33,16 @@ int pcache_dir(char *buf, size_t n);
 /* The entry file of `key` in buf; 0 when there is no cache directory. */
 int pcache_path(char *buf, size_t n, uint64_t key);
 
+/* Serialize the builds of one program among processes: take (and wait for)
+ * the lock of `key` (one of 64 files `build-NN.lock` in the cache
+ * directory, by key), so that ranks or runs starting the same program at
+ * once compile it once and the others take it from the driver's or gravel's
+ * cache; after 300 s of waiting it goes on without the lock. Returns the
+ * descriptor to give to pcache_build_unlock, -1 when there is no lock (no
+ * cache directory, or the wait ran out). Not collective. */
+int pcache_build_lock(uint64_t key);
+void pcache_build_unlock(int fd);
+
 /* The cached program of `key`, built with `options` and holding kernels;
  * NULL when there is none, or when the entry is damaged (it is removed with
  * a warning naming the reason). */

@@ -374,6 +374,7 @@ TEST(program_cache_hit)
     char dir[] = "/tmp/gravel-cache-XXXXXX";
     CHECK(mkdtemp(dir) != NULL);
     setenv("GRAVEL_CACHE_DIR", dir, 1);
+    setenv("GRAVEL_PROGRAM_CACHE", "1", 1); /* on even where PoCL caches its kernels */
     int hits[2];
     for (int k = 0; k < 2; k++) {
         struct gravel *g = test_engine();
@@ -390,6 +391,7 @@ TEST(program_cache_hit)
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     CHECK(system(cmd) == 0);
     unsetenv("GRAVEL_CACHE_DIR");
+    unsetenv("GRAVEL_PROGRAM_CACHE");
 }
 
 /* A kernel that does not compile: the error names its file and line and
