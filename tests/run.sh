@@ -81,12 +81,12 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 jobs=${GR_TEST_JOBS:-$(nproc 2> /dev/null || echo 1)}
 case "$jobs" in '' | *[!0-9]* | 0) echo "GR_TEST_JOBS must be a positive number, got '$jobs'"; exit 2 ;; esac
-# the longest tests (seconds on two cores, a fresh clone): started first so
-# that the last to end is a short one
-LONG="tests/scripts/mpi_ranks.sh tests/scripts/lammps_unittest.py build/tests/test_contact
-build/tests/test_pair build/tests/test_mesh tests/scripts/physics_lammps.py
-tests/scripts/wall_region.py build/tests/test_restart tests/scripts/lammps_examples.py
-tests/scripts/computes_lammps.py"
+# the longest tests (a fresh clone's cold kernel caches, two cores): started
+# first so that the last to end is a short one
+LONG="tests/scripts/mpi_ranks_more.sh tests/scripts/mpi_ranks.sh tests/scripts/determinism.py
+tests/scripts/lammps_unittest.py tests/scripts/physics_lammps.py
+tests/scripts/pair_granular_classic.py tests/scripts/lammps_examples.py build/tests/test_mesh
+tests/scripts/liggghts_multisphere.py build/tests/test_pair tests/scripts/regression.sh"
 # GR_TESTS replaces the list (tests/scripts/runner.sh checks this driver)
 all=${GR_TESTS:-$(ls build/tests/test_* tests/scripts/*.sh tests/scripts/*.py 2> /dev/null)}
 {

@@ -5,7 +5,7 @@ tests findable by feature).
 For every page doc/styles/<name>.md the style is read from its title (`# fix
 wall/gran`, `# pair_style granular`, `# compute ke/atom`; the pair granular
 sub-model pages by their sub-model keywords) and looked up, as the command that
-uses it, in the test sources: tests/unit/*.[ch], tests/scripts/*.py|sh,
+uses it, in the test sources: tests/unit/*.[ch], tests/scripts/*.py|sh, tests/scripts/lib/*.sh,
 tests/reference/**/*.in, tests/regression/*.in|spec, inputs/verification/*.in.
 A test file that writes the command (`fix ID group wall/gran ...`,
 `pair_style granular`, `region ID cone ...`, also as a hybrid term) uses the
@@ -29,6 +29,7 @@ MARK = "Tests, by file (tools/style_tests.py):"
 MAXLIST = 12
 
 SOURCES = ("tests/unit/*.c", "tests/unit/*.h", "tests/scripts/*.py", "tests/scripts/*.sh",
+           "tests/scripts/lib/*.sh",
            "tests/reference/*.in", "tests/reference/*/*.in", "tests/regression/*.in",
            "tests/regression/*.spec", "inputs/verification/*.in")
 
