@@ -89,12 +89,13 @@ tests/scripts/pair_granular_classic.py tests/scripts/lammps_examples.py build/te
 tests/scripts/liggghts_multisphere.py build/tests/test_pair tests/scripts/regression.sh"
 # GR_TESTS replaces the list (tests/scripts/runner.sh checks this driver)
 all=${GR_TESTS:-$(ls build/tests/test_* tests/scripts/*.sh tests/scripts/*.py 2> /dev/null)}
+all=" $(echo $all) " long=" $(echo $LONG) " # one line each, a space around every path
 {
     for t in $LONG; do
-        case " $(echo $all) " in *" $t "*) echo "$t" ;; esac
+        case "$all" in *" $t "*) echo "$t" ;; esac
     done
     for t in $all; do
-        case " $(echo $LONG) " in *" $t "*) ;; *) [ -e "$t" ] && echo "$t" ;; esac
+        case "$long" in *" $t "*) ;; *) [ -e "$t" ] && echo "$t" ;; esac
     done
 } | xargs -r -P "$jobs" -I{} sh tests/run.sh --one "$out" {}
 passed=$(cat "$out"/*.log 2>/dev/null | grep -c '^PASS ')
