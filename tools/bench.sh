@@ -18,6 +18,9 @@
 # The drum's rate is that of its second (turning) run: the last "Loop time".
 #   GRAVEL_FLAGS                extra gravel options (e.g. "-device gpu")
 #   BENCH_MEMORY (default 1)    0 skips the peak-RSS figure (tools/bench_memory.py)
+#   BENCH_CORE (default 0)      1 adds gravel double on one PoCL thread (POCL_CPU_MAX_CU_COUNT=1
+#                               POCL_MAX_PTHREAD_COUNT=1), alternated with the others, and its
+#                               ratio to LAMMPS-1: the two engines per core
 cd "$(dirname "$0")/.." || exit 1
 root=$(pwd)
 repeats=${BENCH_REPEATS:-3}
@@ -73,7 +76,11 @@ case " $decks " in
 esac
 
 printf "benchmark decks (inputs/bench/), %s repeats, alternating; million particle-steps/s (median)\n" "$repeats"
-printf "%-8s %9s %9s %9s %9s %8s %8s\n" deck "g-double" "g-single" LAMMPS-1 LAMMPS-2 "d/L2" "s/L2"
+core=${BENCH_CORE:-0}
+case $core in 0 | 1) ;; *) echo "bench: BENCH_CORE must be 0 or 1, got '$core'"; exit 1 ;; esac
+printf "%-8s %9s %9s %9s %9s %8s %8s" deck "g-double" "g-single" LAMMPS-1 LAMMPS-2 "d/L2" "s/L2"
+[ "$core" = 1 ] && printf " %9s %8s" "g-1thread" "1t/L1"
+printf "\n"
 for deck in $decks; do
     file=$(deck_file "$deck")
     vars=$(deck_vars "$deck")
@@ -81,7 +88,7 @@ for deck in $decks; do
         echo "$deck: data.chute not found (../shared/peers/chute/data.chute): skipped"
         continue
     fi
-    : > "$tmp/gd"; : > "$tmp/gs"; : > "$tmp/l1"; : > "$tmp/l2"
+    : > "$tmp/gd"; : > "$tmp/gs"; : > "$tmp/g1"; : > "$tmp/l1"; : > "$tmp/l2"
     i=1
     while [ "$i" -le "$repeats" ]; do
         for prec in double single; do
@@ -89,6 +96,12 @@ for deck in $decks; do
                 -log none > g.out 2>&1) || { echo "bench: gravel failed on $deck:"; tail -20 "$tmp/g.out"; exit 1; }
             rate "$tmp/g.out" >> "$tmp/g$(echo $prec | cut -c1)"
         done
+        if [ "$core" = 1 ]; then
+            (cd "$tmp" && POCL_CPU_MAX_CU_COUNT=1 POCL_MAX_PTHREAD_COUNT=1 "$root/bin/gravel" \
+                $GRAVEL_FLAGS -precision double -in "$file" $vars -log none > g.out 2>&1) ||
+                { echo "bench: gravel (one thread) failed on $deck:"; tail -20 "$tmp/g.out"; exit 1; }
+            rate "$tmp/g.out" >> "$tmp/g1"
+        fi
         # the peer: LAMMPS, or LIGGGHTS for chute_lg (the columns LAMMPS-1 and -2)
         peer=lmp; have_peer=$have_lmp
         [ "$deck" = chute_lg ] && { peer=liggghts; have_peer=$have_liggghts; }
@@ -105,8 +118,13 @@ for deck in $decks; do
     done
     gd=$(median < "$tmp/gd"); gs=$(median < "$tmp/gs")
     l1=$(median < "$tmp/l1"); l2=$(median < "$tmp/l2")
-    printf "%-8s %9s %9s %9s %9s %8s %8s\n" "$deck" "$(mps "$gd")" "$(mps "$gs")" \
+    printf "%-8s %9s %9s %9s %9s %8s %8s" "$deck" "$(mps "$gd")" "$(mps "$gs")" \
         "$(mps "$l1")" "$(mps "$l2")" "$(ratio "$gd" "$l2")" "$(ratio "$gs" "$l2")"
+    if [ "$core" = 1 ]; then
+        g1=$(median < "$tmp/g1")
+        printf " %9s %8s" "$(mps "$g1")" "$(ratio "$g1" "$l1")"
+    fi
+    printf "\n"
     eval "rate_$deck=$gd; lmp1_$deck=$l1"
 done
 if [ -n "$rate_agglo" ] && [ -n "$rate_dilute" ]; then
