@@ -623,6 +623,11 @@ void engine_destroy(struct gravel *g)
     struct engine *e = g->eng;
     if (!e)
         return;
+    /* an error may stop a run with kernels still queued or running on the
+     * buffers freed below (the atom arrays the device shares among them):
+     * let them finish first; its status is of no use now */
+    if (e->ocl.queue)
+        (void)clFinish(e->ocl.queue);
     if (e->nprof && g->screen) {
         fprintf(stderr, "GRAVEL_PROFILE: device time per kernel\n");
         for (int i = 0; i < e->nprof; i++)
