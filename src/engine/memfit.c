@@ -49,7 +49,9 @@ static double contacts_estimate(struct gravel *g)
     for (;;) {
         ncell = 1;
         for (int q = 0; q < dim; q++) {
-            nb[q] = (size_t)ceil(ext[q] / h);
+            nb[q] = (size_t)ceil(ext[q] / h); /* 0 when the reach is too large to */
+            if (nb[q] < 1)                     /* multiply out (vol, h infinite) */
+                nb[q] = 1;
             ncell *= nb[q];
         }
         if (ncell <= ((size_t)1 << 22))
@@ -70,7 +72,9 @@ static double contacts_estimate(struct gravel *g)
     for (size_t c = 0; c < ncell; c++)
         pairs += 0.5 * (double)count[c] * ((double)count[c] - 1) * reach / vcell;
     free(count);
-    return pairs / n;
+    /* never more than every pair (also where reach / vcell is inf / inf) */
+    const double z = pairs / n, zall = 0.5 * (n - 1);
+    return z < zall ? z : zall;
 }
 
 /* Bytes of one atom slot and of one contact of the run. */

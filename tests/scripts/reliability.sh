@@ -244,3 +244,31 @@ for k in 1 2 3; do
     grep -q "^ERROR: run: periodic box length 1.2 in z is less than twice the neighbor cut-off 1.3 (the two largest radii + skin) (in.thin:12)$" out || rcs="${rcs}m"
 done
 check error_with_kernels_in_flight '[ "$rcs" = 111 ]'
+
+# a neighbor skin too large to multiply out (1e300): the run's memory estimate
+# once counted atoms into cell 2^64 - 1 (a heap overflow, then an abort); now a
+# periodic box says it is too small for the cut-off and a closed box runs,
+# every pair listed
+for bnd in p f; do
+    cat > in.skin.$bnd <<IN
+units           lj
+atom_style      sphere
+boundary        $bnd $bnd $bnd
+lattice         sc 1.0
+region          box block 0 6 0 6 0 6
+create_box      1 box
+create_atoms    1 box
+set             group all diameter 1.0 density 1.9098593
+velocity        all create 1.0 4928459 loop geom
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+neighbor        1e300 bin
+fix             1 all nve/sphere
+timestep        0.0001
+run             10
+IN
+done
+"$bin" -in in.skin.p -log none > out 2>&1; rc=$?
+check skin_huge_periodic '[ $rc -eq 1 ] && grep -q "^ERROR: run: periodic box length 6 in x is less than twice the neighbor cut-off 1e+300 (the two largest radii + skin) (in.skin.p:15)$" out'
+"$bin" -in in.skin.f -log none > out 2>&1; rc=$?
+check skin_huge_closed '[ $rc -eq 0 ] && grep -q "^Loop time of .* for 10 steps with 216 atoms" out'
