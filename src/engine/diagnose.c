@@ -9,6 +9,7 @@
 #include "device.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "pair.h"
 
 /* What the upload kept of the run start (diag_keep_start), or NULL. */
@@ -163,9 +164,35 @@ int diag_nonfinite(const struct gravel *g, long long tag, const double x[3], con
     return 0;
 }
 
+/* ", a particle centred on a wall's surface (fix ID style, ...: ...)" naming
+ * the run's fixes with walls (FIX_WALL, the first four), else "" */
+static void wall_cause(const struct gravel *g, char *out, size_t len)
+{
+    char ids[160] = "";
+    size_t o = 0;
+    int nw = 0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        const struct fix *f = g->styles.fix[i];
+        if (!(f->style->flags & FIX_WALL))
+            continue;
+        if (nw++ < 4 && o < sizeof ids) {
+            int w = snprintf(ids + o, sizeof ids - o, "%sfix %.32s %s", nw > 1 ? ", " : "",
+                             f->id, f->style->name);
+            o += w > 0 ? (size_t)w : 0;
+        }
+    }
+    if (nw == 0)
+        out[0] = '\0';
+    else
+        snprintf(out, len, ", a particle centred on a wall's surface (%s%s: such a contact has "
+                           "no normal direction)", ids, nw > 4 ? ", ..." : "");
+}
+
 void diag_time_step(const struct gravel *g, char *out, size_t len)
 {
     const struct pair *p = g->styles.pair;
+    char wall[320];
+    wall_cause(g, wall, sizeof wall);
     if (p && p->caps.collision_time && g->atoms.n > 0) {
         double m = 0, r = 0, vmax = 0;
         int64_t mtag = 0;
@@ -185,8 +212,8 @@ void diag_time_step(const struct gravel *g, char *out, size_t len)
             snprintf(out, len,
                      "; the time step %g resolves the estimated collision time %g of pair style "
                      "%s (%.3g steps per collision), so look at the configuration: particles "
-                     "created inside each other, an absurd velocity or force, or a fix that "
-                     "moves atoms", g->dt, tc, p->style->name, tc / g->dt);
+                     "created inside each other%s, an absurd velocity or force, or a fix that "
+                     "moves atoms", g->dt, tc, p->style->name, tc / g->dt, wall);
         else
             snprintf(out, len,
                      "; probable cause: the time step %g vs the estimated collision time %g of "
@@ -194,7 +221,7 @@ void diag_time_step(const struct gravel *g, char *out, size_t len)
                      g->dt, tc, p->style->name, tc / g->dt);
     } else {
         snprintf(out, len, "; probable cause: a time step (%g) too large for the forces, or "
-                           "overlapping particles in the initial configuration", g->dt);
+                           "overlapping particles in the initial configuration%s", g->dt, wall);
     }
 }
 

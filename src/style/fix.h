@@ -97,12 +97,16 @@ enum fix_need {
  *   FIX_OUTPUT       it only samples and writes (ave/chunk, ave/time,
  *                    ave/histo): it never moves an atom or changes a force,
  *                    so read_restart continues exactly when its arguments
- *                    differ from the writer's (another file, `append`). */
+ *                    differ from the writer's (another file, `append`).
+ *   FIX_WALL         its walls push particles by contact (wall/gran,
+ *                    wall/gran/region, wall/pair): a particle centred on a
+ *                    wall's surface is a likely cause of a non-finite run. */
 enum fix_flag {
     FIX_FROZEN = 1 << 0,
     FIX_CONSERVING = 1 << 1,
     FIX_STORES_IDS = 1 << 2,
     FIX_OUTPUT = 1 << 3,
+    FIX_WALL = 1 << 4,
 };
 
 #define FIX_MAX_SOURCES 10

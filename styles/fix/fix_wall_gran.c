@@ -887,6 +887,7 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
 
 const struct fix_style fix_style_wall_gran_region = {
     .name = "wall/gran/region",
+    .flags = FIX_WALL,
     .create = create,
     .init = init,
     .post_force = post_force,
@@ -899,6 +900,7 @@ const struct fix_style fix_style_wall_gran_region = {
 
 const struct fix_style fix_style_wall_gran = {
     .name = "wall/gran",
+    .flags = FIX_WALL,
     .create = create,
     .init = init,
     .post_force = post_force,

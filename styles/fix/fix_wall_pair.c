@@ -122,6 +122,7 @@ static void destroy(struct fix *f)
 
 const struct fix_style fix_style_wall_pair = {
     .name = "wall/pair",
+    .flags = FIX_WALL,
     .create = create,
     .init = init,
     .post_force = post_force,

@@ -6,7 +6,8 @@
 # under an address-space limit or on a device too small (a clean stop with
 # the numbers, before the first large allocation); issue 24: commands that
 # run themselves through a variable (if, run every) and mesh files that are
-# a FIFO or a device; an error while kernels are in flight. One
+# a FIFO or a device; an error while kernels are in flight, a neighbor skin
+# of 1e300, a particle centred on a wall's surface. One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
 bin="$(pwd)/bin/gravel"
@@ -272,3 +273,26 @@ done
 check skin_huge_periodic '[ $rc -eq 1 ] && grep -q "^ERROR: run: periodic box length 6 in x is less than twice the neighbor cut-off 1e+300 (the two largest radii + skin) (in.skin.p:15)$" out'
 "$bin" -in in.skin.f -log none > out 2>&1; rc=$?
 check skin_huge_closed '[ $rc -eq 0 ] && grep -q "^Loop time of .* for 10 steps with 216 atoms" out'
+
+# a particle centred on a region wall's surface: its wall contact has no
+# normal direction (LAMMPS prints nan thermo and goes on); the stop names the
+# run's wall fixes among the likely causes
+cat > in.onwall <<'IN'
+units           lj
+atom_style      sphere
+boundary        p p f
+region          box block 0 8 0 8 0 4
+create_box      1 box
+create_atoms    1 single 4 0 1
+create_atoms    1 single 4 4 1
+set             group all diameter 1.0 density 1.9098593
+pair_style      gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+pair_coeff      * *
+region          cyl cylinder z 4 4 4 0 4 side in
+fix             1 all nve/sphere
+fix             wall all wall/gran/region hooke/history 200000.0 NULL 50.0 NULL 0.5 0 region cyl
+timestep        0.0001
+run             10
+IN
+"$bin" -in in.onwall -log none > out 2>&1; rc=$?
+check nonfinite_on_wall_surface '[ $rc -eq 1 ] && grep -q "^ERROR: run: non-finite position or velocity at step 1: atom 1 has .*, a particle centred on a wall.s surface (fix wall wall/gran/region: such a contact has no normal direction), .*(in.onwall:15)$" out'
