@@ -1035,8 +1035,9 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     }
     if (n < 0)
         gr_error(g, "number of steps must be >= 0, got %lld", (long long)n);
-    if (g->step + n > (bigint)1 << 62)
-        gr_error(g, "too many timesteps");
+    if (n > ((bigint)1 << 62) - g->step) /* step + n, without overflowing near 2^63 */
+        gr_error(g, "too many timesteps: step %lld + %lld steps passes 2^62",
+                 (long long)g->step, (long long)n);
     if (have_start && start > g->step)
         gr_error(g, "run start %lld is after the first step %lld of the run", (long long)start,
                  (long long)g->step);

@@ -7,7 +7,7 @@
 # the numbers, before the first large allocation); issue 24: commands that
 # run themselves through a variable (if, run every) and mesh files that are
 # a FIFO or a device; an error while kernels are in flight, a neighbor skin
-# of 1e300, a particle centred on a wall's surface. One
+# of 1e300, a particle centred on a wall's surface, a run from step 2^63 - 1. One
 # PASS/FAIL line per check; each matches the message and the line it names.
 cd "$(dirname "$0")/../.." || exit 1
 bin="$(pwd)/bin/gravel"
@@ -296,3 +296,19 @@ run             10
 IN
 "$bin" -in in.onwall -log none > out 2>&1; rc=$?
 check nonfinite_on_wall_surface '[ $rc -eq 1 ] && grep -q "^ERROR: run: non-finite position or velocity at step 1: atom 1 has .*, a particle centred on a wall.s surface (fix wall wall/gran/region: such a contact has no normal direction), .*(in.onwall:15)$" out'
+
+# a run from a step near 2^63 (reset_timestep takes any non-negative
+# bigint, as LAMMPS): the step count is checked without overflowing
+cat > in.bigstep <<'IN'
+units           lj
+atom_style      sphere
+region          box block 0 4 0 4 0 4
+create_box      1 box
+create_atoms    1 single 1 1 1
+set             group all diameter 1.0 density 1.0
+fix             1 all nve/sphere
+reset_timestep  9223372036854775807
+run             10
+IN
+"$bin" -in in.bigstep -log none > out 2>&1; rc=$?
+check run_from_step_near_2_63 '[ $rc -eq 1 ] && grep -q "^ERROR: run: too many timesteps: step 9223372036854775807 + 10 steps passes 2^62 (in.bigstep:9)$" out'
