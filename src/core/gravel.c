@@ -28,7 +28,7 @@ void gr_unit_defaults(struct gravel *g)
 
 static void set_defaults(struct gravel *g)
 {
-    g->run_start = -1; /* no `run ... start` pending */
+    g->run_start = g->run_stop = -1; /* no `run ... start/stop` pending */
     g->dom.units = UNITS_LJ;
     g->dom.dimension = 3;
     for (int d = 0; d < 3; d++) {

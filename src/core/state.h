@@ -267,7 +267,11 @@ struct gravel {
     double time;            /* elapsed simulated time */
     bigint firststep, laststep; /* of the current run */
     bigint beginstep;       /* `run ... start N` (else the run's first step): elaplong */
+    bigint endstep;         /* `run ... stop N` (else the run's last step): ramp() */
     bigint run_start;       /* cmd_run -> run_begin: the start keyword, -1 none */
+    bigint run_stop;        /* cmd_run -> run_begin: the stop keyword, -1 none */
+    int running;            /* 1 from a run's setup to its end (LAMMPS's whichflag):
+                             * ramp() between runs gives its first value */
     bigint laststep_reset;
 
     int nmolecule;          /* molecule templates (`molecule` command) */

@@ -528,7 +528,9 @@ static unsigned run_begin(struct gravel *g, bigint nsteps, int force)
     g->firststep = g->step; /* the fixes' init may read the run's span (fix deform) */
     g->laststep = g->step + nsteps;
     g->beginstep = g->run_start >= 0 ? g->run_start : g->step; /* LAMMPS's elaplong origin */
-    g->run_start = -1; /* used once: only cmd_run sets it */
+    g->endstep = g->run_stop >= 0 ? g->run_stop : g->laststep; /* ramp()'s end */
+    g->run_start = g->run_stop = -1; /* used once: only cmd_run sets them */
+    g->running = 1;
     memset(g->dom.h_rate, 0, sizeof g->dom.h_rate); /* a deforming fix's init sets them */
     g->dom.vremap_group = 0;
     pair_init(g); /* the pair parameters first: fixes may use them in init */
@@ -830,6 +832,7 @@ static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *
                    "steps, walls and meshes at every step): "
                    "impacts too fast or contacts too soft for the contact model",
                 100 * maxov);
+    g->running = 0;
 }
 
 /* rerun's core: the run setup once, then for each snapshot (load() puts it
@@ -846,6 +849,7 @@ static void rerun_steps(struct gravel *g, bigint (*load)(struct gravel *, void *
     g->firststep = firststep;
     g->laststep = laststep;
     g->beginstep = firststep;
+    g->endstep = laststep;
     double t[TM_N] = {0}, maxov = 0; /* no Neigh: every snapshot rebuilds in setup */
     bigint ndump = 0;
     double t0 = wall_clock();
@@ -1053,8 +1057,10 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
     bigint run_start = have_start ? start : -1; /* each (sub-)run's elaplong origin */
+    bigint run_stop = have_stop ? stop : -1;    /* and ramp()'s end */
     if (!nevery) {
         g->run_start = run_start;
+        g->run_stop = run_stop;
         run_guarded(g, n, force, post);
         return;
     }
@@ -1062,9 +1068,13 @@ void cmd_run(struct gravel *g, int argc, char **argv)
     for (int iter = 0; left > 0 || iter == 0; iter++) {
         bigint chunk = left < nevery ? left : nevery;
         g->run_start = run_start;
+        g->run_stop = run_stop;
         run_guarded(g, chunk, force, post);
         left -= chunk;
-        if (ncmd && every_commands(g, ncmd, cmds) == GR_QUIT)
+        g->running = 1; /* the commands run inside the run, as LAMMPS's (whichflag) */
+        int rc = ncmd ? every_commands(g, ncmd, cmds) : 0;
+        g->running = 0;
+        if (rc == GR_QUIT)
             return;
     }
 }

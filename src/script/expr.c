@@ -369,6 +369,161 @@ static long seed_arg(struct ep *e, const char *fn, double s)
     return (long)s;
 }
 
+/* ---- functions of the step (LAMMPS's variable doc, "Math functions") ---------
+ * Each reads the current step and the run's span: beginstep (the run's first
+ * step, or `run ... start`), endstep (its last, or `run ... stop`) and dt.
+ * ramp(x,y): x + (y - x) (step - begin) / (end - begin), x between runs;
+ * stagger(x,y), logfreq(x,y,z), logfreq2(x,y,z), logfreq3(x,y,z),
+ * stride(x,y,z), stride2(x,y,z,a,b,c): the next output step after this one
+ * (integer arguments, as LAMMPS truncates them; "never" is NEVER_STEP);
+ * vdisplace(x,y) = x + y t,
+ * swiggle(x,y,z) = x + y sin(2 pi t / z), cwiggle(x,y,z) = x + y (1 - cos(2 pi
+ * t / z)), t = (step - begin) dt, each in LAMMPS's order of operations. */
+static int is_step_function(const char *fn)
+{
+    static const char *const names[] = {"ramp",    "stagger", "logfreq",   "logfreq2",
+                                        "logfreq3", "stride",  "stride2",   "vdisplace",
+                                        "swiggle", "cwiggle", NULL};
+    for (int i = 0; names[i]; i++)
+        if (!strcmp(fn, names[i]))
+            return 1;
+    return 0;
+}
+
+/* "never": the largest double below 2^63, (double)(2^63 - 1 - 512): LAMMPS's
+ * MAXBIGINT_DOUBLE (LAMMPS 2021 gave 2^63, which no 64-bit step can hold) */
+#define NEVER_STEP 9223372036854774784.0
+
+/* An integer argument, truncated as LAMMPS's static_cast<bigint>; one
+ * outside +-2^62 (or not finite) is refused rather than overflowing. */
+static bigint step_arg(struct ep *e, const char *fn, double x)
+{
+    if (!(fabs(x) < 4611686018427387904.0)) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "%s(): argument %g is not a usable step count", fn, x);
+        ep_fail(e, msg);
+    }
+    return (bigint)x;
+}
+
+static _Noreturn void step_invalid(struct ep *e, const char *fn, const char *need)
+{
+    char msg[200];
+    snprintf(msg, sizeof msg, "invalid %s() arguments: %s", fn, need);
+    ep_fail(e, msg);
+}
+
+static double step_function(struct ep *e, const char *fn, const double *a)
+{
+    const struct gravel *g = e->g;
+    const bigint step = g->step;
+    const double d = (double)(step - g->beginstep);
+    if (!strcmp(fn, "ramp")) {
+        if (!g->running)
+            return a[0];
+        double f = d;
+        if (f != 0.0 && g->beginstep != g->endstep)
+            f /= (double)(g->endstep - g->beginstep);
+        return a[0] + f * (a[1] - a[0]);
+    }
+    if (!strcmp(fn, "vdisplace"))
+        return a[0] + a[1] * d * g->dt;
+    if (!strcmp(fn, "swiggle") || !strcmp(fn, "cwiggle")) {
+        if (a[2] == 0.0)
+            step_invalid(e, fn, "the period z must not be 0");
+        const double w = 2.0 * M_PI / a[2] * d * g->dt;
+        return a[0] + a[1] * (fn[0] == 's' ? sin(w) : 1.0 - cos(w));
+    }
+    const bigint x = step_arg(e, fn, a[0]), y = step_arg(e, fn, a[1]);
+    if (!strcmp(fn, "stagger")) {
+        if (x <= 0 || y <= 0 || x <= y)
+            step_invalid(e, fn, "needs x > y > 0");
+        const bigint lower = step / x * x;
+        return (double)(step - lower < y ? lower + y : lower + x);
+    }
+    const bigint z = step_arg(e, fn, a[2]);
+    if (!strcmp(fn, "logfreq")) {
+        if (x <= 0 || y <= 0 || z <= 0 || y >= z)
+            step_invalid(e, fn, "needs x > 0 and 0 < y < z");
+        if (step < x)
+            return (double)x;
+        bigint lower = x;
+        while (lower <= step / z) /* step >= z lower, without overflowing */
+            lower *= z;
+        const bigint multiple = step / lower;
+        return multiple < y ? (double)(multiple + 1) * (double)lower : (double)lower * (double)z;
+    }
+    if (!strcmp(fn, "logfreq2")) {
+        if (x <= 0 || y <= 0 || z <= 0)
+            step_invalid(e, fn, "needs x, y, z > 0");
+        double v = (double)x;
+        if (step >= x) {
+            double delta = (double)x * ((double)z - 1.0) / (double)y;
+            for (bigint count = 1; (double)step >= v; count++) {
+                v += delta;
+                if (count % y == 0)
+                    delta *= (double)z;
+            }
+        }
+        return ceil(v);
+    }
+    if (!strcmp(fn, "logfreq3")) {
+        if (x <= 0 || y <= 1 || z <= 0 || z - x + 1 < y)
+            step_invalid(e, fn, "needs x > 0, y > 1 and z - x + 1 >= y");
+        if (step > z) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "logfreq3(): the step %lld is past its last step %lld",
+                     (long long)step, (long long)z);
+            ep_fail(e, msg);
+        }
+        double v = (double)x;
+        if (step >= x) {
+            double logsp = (double)x;
+            const double factor = pow((double)z / (double)x, 1.0 / (double)(y - 1));
+            bigint linsp = x;
+            while ((double)step >= v) {
+                logsp *= factor;
+                linsp++;
+                v = (double)linsp > logsp
+                        ? (double)linsp
+                        : ceil(logsp) - (double)(((bigint)ceil(logsp) - 1) / z);
+            }
+        }
+        return v;
+    }
+    if (!strcmp(fn, "stride")) {
+        if (x < 0 || y < 0 || z <= 0 || x > y)
+            step_invalid(e, fn, "needs 0 <= x <= y and z > 0");
+        if (step < x)
+            return (double)x;
+        if (step >= y)
+            return NEVER_STEP;
+        const double v = (double)(x + (step - x) / z * z + z);
+        return v > (double)y ? NEVER_STEP : v;
+    }
+    /* stride2(x,y,z,a,b,c): stride x..y by z, and by c inside a..b */
+    const bigint a4 = step_arg(e, fn, a[3]), b5 = step_arg(e, fn, a[4]);
+    const bigint c6 = step_arg(e, fn, a[5]);
+    if (x < 0 || y < 0 || z <= 0 || x > y || a4 < 0 || b5 < 0 || c6 <= 0 || a4 > b5 ||
+        a4 < x || b5 > y)
+        step_invalid(e, fn, "needs 0 <= x <= a <= b <= y and z, c > 0");
+    if (step < x)
+        return (double)x;
+    if (step >= y)
+        return NEVER_STEP;
+    if (step < a4 || step > b5) {
+        bigint next = x + (step - x) / z * z + z;
+        if (step < a4 && next > a4)
+            next = a4;
+        return (double)next;
+    }
+    const bigint inner = a4 + (step - a4) / c6 * c6 + c6;
+    if (inner <= b5)
+        return (double)inner;
+    const bigint next = x + (b5 - x) / z * z + z;
+    return next > y ? NEVER_STEP : (double)next;
+}
+
 static double math_function(struct ep *e, const char *fn, int n, const double *a)
 {
     static const struct {
@@ -377,7 +532,9 @@ static double math_function(struct ep *e, const char *fn, int n, const double *a
     } table[] = {{"sqrt", 1}, {"exp", 1},   {"ln", 1},    {"log", 1},   {"abs", 1},
                  {"sin", 1},  {"cos", 1},   {"tan", 1},   {"asin", 1},  {"acos", 1},
                  {"atan", 1}, {"atan2", 2}, {"ceil", 1},  {"floor", 1}, {"round", 1},
-                 {"random", 3}, {"normal", 3}, {NULL, 0}};
+                 {"random", 3}, {"normal", 3}, {"ramp", 2}, {"stagger", 2}, {"logfreq", 3},
+                 {"logfreq2", 3}, {"logfreq3", 3}, {"stride", 3}, {"stride2", 6},
+                 {"vdisplace", 2}, {"swiggle", 3}, {"cwiggle", 3}, {NULL, 0}};
     char msg[200];
     int k = -1;
     for (int i = 0; table[i].name; i++)
@@ -431,6 +588,8 @@ static double math_function(struct ep *e, const char *fn, int n, const double *a
         return floor(x);
     if (!strcmp(fn, "round"))
         return round_half_up(x);
+    if (is_step_function(fn))
+        return step_function(e, fn, a);
     if (!strcmp(fn, "random")) {
         if (a[1] < a[0])
             ep_fail(e, "random(lo,hi,seed) needs lo <= hi");
@@ -634,13 +793,13 @@ static double parse_primary(struct ep *e)
             }
             v = group_function(e, name, n, args);
         } else {
-            double a[3] = {0, 0, 0};
+            double a[6] = {0, 0, 0, 0, 0, 0};
             int n = 0;
             skip_ws(e);
             if (!accept(e, ")")) {
                 for (;;) {
                     double x = parse_or(e);
-                    if (n < 3)
+                    if (n < 6)
                         a[n] = x;
                     n++;
                     if (accept(e, ","))
