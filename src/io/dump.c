@@ -13,6 +13,7 @@
 #include "engine.h"
 #include "error.h"
 #include "outfile.h"
+#include "variable.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -105,6 +106,7 @@ static void dump_delete(struct gravel *g, struct dump *d, int strict)
     if (d->style && d->style->destroy)
         d->style->destroy(d);
     free(d->file);
+    free(d->every_var);
     free(d->idx);
     free(d);
 }
@@ -238,12 +240,24 @@ static void dump_modify_pass(struct gravel *g, struct dump *d, int argc, char **
         }
         if (strcmp(kw, "every") == 0) {
             arg_need(g, argc, i, 1, kw);
-            if (argv[i + 1][0] == 'v' && argv[i + 1][1] == '_')
-                gr_error(g, "every with a variable is not supported; give a step count");
-            int n = arg_int(g, argv[i + 1], "every");
-            if (n <= 0)
-                gr_error(g, "every must be positive, got %d", n);
-            t->every = n;
+            const char *a = argv[i + 1];
+            if (a[0] == 'v' && a[1] == '_') { /* the variable's value: the next step */
+                if (!a[2] || strlen(a + 2) >= GR_NAMELEN)
+                    gr_error(g, "every v_name needs a variable name, got '%.64s'", a);
+                if (apply) {
+                    free(d->every_var);
+                    d->every_var = gr_strdup(g, a + 2);
+                }
+            } else {
+                int n = arg_int(g, a, "every");
+                if (n <= 0)
+                    gr_error(g, "every must be positive, got %d", n);
+                t->every = n;
+                if (apply) {
+                    free(d->every_var);
+                    d->every_var = NULL;
+                }
+            }
             i += 2;
         } else if (strcmp(kw, "sort") == 0) {
             arg_need(g, argc, i, 1, kw);
@@ -467,6 +481,30 @@ static bigint next_multiple(bigint step, int every)
     return (step / every) * every + every;
 }
 
+/* The step of d's next snapshot after `step`: the next multiple of N, or
+ * with every v_name the variable's value, which must be a later step
+ * (LAMMPS: "Dump every variable returned a bad timestep"). */
+static bigint next_dump_step(struct gravel *g, const struct dump *d, bigint step)
+{
+    if (!d->every_var)
+        return next_multiple(step, d->every);
+    if (!var_retrieve(g, d->every_var))
+        gr_error(g, "dump %s: every variable '%s' is not defined", d->id, d->every_var);
+    double v = var_compute_equal(g, d->every_var);
+    if (!(v > (double)step && v < 9223372036854775808.0))
+        gr_error(g, "dump %s: every variable '%s' returned %g, which is not a step after %lld",
+                 d->id, d->every_var, v, (long long)step);
+    bigint next = (bigint)v;
+    return next > step ? next : step + 1;
+}
+
+/* d writes at `step`: a multiple of N, or with every v_name the step its
+ * variable gave */
+static int dump_at(const struct dump *d, bigint step)
+{
+    return d->every_var ? step == d->next_dump : step % d->every == 0;
+}
+
 /* Dumps that run on several ranks: the atoms' own fields and the local
  * computes' rows, gathered (par.h); the meshes' geometry, the same on every
  * rank, and their stress and wear (summed over every rank's atoms in tag
@@ -496,7 +534,8 @@ void dump_setup_all(struct gravel *g)
     }
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
-        int due = g->step % d->every == 0 || (d->first && d->last_dump < 0);
+        /* the run's first step: a multiple of N, or (every v_name too) `first yes` */
+        int due = (!d->every_var && g->step % d->every == 0) || (d->first && d->last_dump < 0);
         if (due && d->last_dump != g->step) {
             if (!synced) {
                 run_sync_host(g);
@@ -505,7 +544,7 @@ void dump_setup_all(struct gravel *g)
             }
             dump_write(g, d);
         }
-        d->next_dump = next_multiple(g->step, d->every);
+        d->next_dump = next_dump_step(g, d, g->step);
     }
     par_gather_end(g);
 }
@@ -514,7 +553,7 @@ int dump_due(struct gravel *g, bigint step)
 {
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
-        if (step % d->every == 0 && d->last_dump != step)
+        if (dump_at(d, step) && d->last_dump != step)
             return 1;
     }
     return 0;
@@ -528,9 +567,11 @@ int dump_step_all(struct gravel *g)
     par_gather_begin(g); /* several ranks: every atom, rank 0 writes */
     for (int i = 0; i < g->styles.ndump; i++) {
         struct dump *d = g->styles.dump[i];
-        if (g->step % d->every == 0 && d->last_dump != g->step)
+        const int at = dump_at(d, g->step);
+        if (at && d->last_dump != g->step)
             dump_write(g, d);
-        d->next_dump = next_multiple(g->step, d->every);
+        if (at || !d->every_var)
+            d->next_dump = next_dump_step(g, d, g->step);
     }
     par_gather_end(g);
     return 1;

@@ -52,7 +52,9 @@ struct dump {
     const struct dump_style *style;
     int igroup;
     unsigned groupbit;
-    int every;                  /* N */
+    int every;                  /* N (unused while every_var is set) */
+    char *every_var;            /* dump_modify every v_name: the variable giving the next
+                                 * snapshot's step (LAMMPS), else NULL */
     char *file;                 /* as given */
     int multifile;              /* file name holds '*' */
     int pad;                    /* dump_modify pad: zero-pad the step to this width */

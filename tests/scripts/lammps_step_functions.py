@@ -17,7 +17,9 @@ use ramp in variable formula between runs"), and a stride past its last
 step gives (double)(2^63 - 1 - 512) (LAMMPS's MAXBIGINT_DOUBLE; 2021 gave
 2^63); and the errors: stagger(x,y) needs x > y > 0, swiggle's period must
 not be 0, logfreq3 past its last step stops, an argument beyond 2^62 is
-refused. One line PASS/FAIL per case; without `lmp` the comparison FAILs
+refused. And `dump_modify every v_name` (the variable gives each next
+snapshot's step: logfreq, stride, then a plain every N again) writes at the
+steps lmp writes at. One line PASS/FAIL per case; without `lmp` the comparison FAILs
 naming it (tools/deps.sh installs the Debian package lammps)."""
 import os
 import re
@@ -57,6 +59,45 @@ run 90
 run 70 start 50 stop 200
 run 40 every 20 "print 'inside $(v_r:%.15g) $(v_vd:%.15g) $(v_cw:%.15g)'"
 """
+
+# dump_modify every v_name: the variable gives each next snapshot's step
+DUMPS = """units lj
+atom_style sphere
+comm_modify vel yes
+lattice sc 1.0
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+set group all diameter 0.9 density 1.0
+velocity all create 1.0 87287 loop geom
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+timestep 0.001
+variable s equal logfreq(10,3,10)
+variable t equal stride(25,1000,40)
+dump a all custom 1000 a.dump id x
+dump_modify a every v_s first yes
+dump b all custom 1000 b.dump id x
+dump_modify b every v_t
+dump c all custom 1000 c.dump id x
+dump_modify c every v_t every 70
+thermo 50
+run 150
+run 100
+"""
+
+
+def dump_steps(path):
+    """the TIMESTEP of each snapshot of a dump file"""
+    steps, take = [], False
+    with open(path) as fh:
+        for line in fh:
+            if take:
+                steps.append(int(line))
+            take = line.startswith("ITEM: TIMESTEP")
+    return steps
+
 
 ROW = re.compile(r"^\s*\d+(\s+\S+){10}\s*$")
 
@@ -107,6 +148,40 @@ def main():
                   rc == 0 and len(lm) == len(g) and all(len(a) == len(b) for a, b in zip(g, lm))
                   and not bad, "lmp exit %d, rows %d / %d, first differences %s"
                   % (rc, len(g), len(lm), bad[:3]))
+
+        rc, out = run([GRAVEL], DUMPS, gdir)
+        got = {k: dump_steps(os.path.join(gdir, k + ".dump")) for k in "abc"} if rc == 0 else {}
+        want = {"a": [0, 10, 20, 30, 100, 200], "b": [25, 65, 105, 145, 185, 225],
+                "c": [0, 70, 140, 210]}
+        check("dump_every_variable_steps", got == want, "exit %d, %s: %s" % (rc, got, out[-400:]))
+        if shutil.which("lmp") is not None:
+            rc, out = run(["lmp"], DUMPS, ldir)
+            lgot = {k: dump_steps(os.path.join(ldir, k + ".dump")) for k in "abc"} if rc == 0 else {}
+            check("dump_every_variable_steps_match_lammps", lgot == got, "lmp %s" % lgot)
+
+        # a stride past its end: the dump writes no more (LAMMPS 2021 cast 2^63 to a
+        # negative step and stopped); a step not after this one, or no variable: errors
+        tail = DUMPS.split("variable s equal")[0]
+        rc, out = run([GRAVEL], tail + """variable t equal stride(25,130,40)
+dump b all custom 1000 b.dump id x
+dump_modify b every v_t
+run 150
+""", gdir)
+        check("dump_every_stride_past_its_end", rc == 0
+              and dump_steps(os.path.join(gdir, "b.dump")) == [25, 65, 105], out[-400:])
+        rc, out = run([GRAVEL], tail + """variable t equal 40-step
+dump b all custom 1000 b.dump id x
+dump_modify b every v_t
+run 150
+""", gdir)
+        check("dump_every_variable_bad_step", rc == 1 and "ERROR: run: dump b: every variable "
+              "'t' returned 0, which is not a step after 40" in out, out[-400:])
+        rc, out = run([GRAVEL], tail + """dump b all custom 1000 b.dump id x
+dump_modify b every v_nope
+run 10
+""", gdir)
+        check("dump_every_variable_undefined", rc == 1 and
+              "ERROR: run: dump b: every variable 'nope' is not defined" in out, out[-400:])
 
         # gravel alone: later LAMMPS's values where 2021 differs
         rc, out = run([GRAVEL], HEAD + """variable r equal ramp(2.0,7.0)
