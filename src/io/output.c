@@ -48,7 +48,7 @@ static bigint next_thermo(struct gravel *g, bigint step)
     bigint next;
     if (t->every_var) {
         double v = var_compute_equal(g, t->every_var);
-        if (!isfinite(v) || v <= (double)step || v > 9.0e18)
+        if (!(v > (double)step && v < 9223372036854775808.0)) /* a step, after this one */
             gr_error(g, "thermo: variable '%s' returned %g, which is not a step after %lld",
                      t->every_var, v, (long long)step);
         next = (bigint)v;

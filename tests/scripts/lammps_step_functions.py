@@ -169,6 +169,13 @@ run 150
 """, gdir)
         check("dump_every_stride_past_its_end", rc == 0
               and dump_steps(os.path.join(gdir, "b.dump")) == [25, 65, 105], out[-400:])
+        rc, out = run([GRAVEL], tail + """variable t equal stride(25,130,40)
+thermo v_t
+run 150
+""", gdir)
+        rows = [int(l.split()[0]) for l in out.splitlines() if re.match(r"^\s*\d+\s+27\s", l)]
+        check("thermo_every_stride_past_its_end", rc == 0 and rows == [0, 25, 65, 105, 150],
+              "%s %s" % (rows, out[-400:]))
         rc, out = run([GRAVEL], tail + """variable t equal 40-step
 dump b all custom 1000 b.dump id x
 dump_modify b every v_t
