@@ -189,7 +189,7 @@ static size_t all_rows_bytes(const struct atoms *a)
 /* Fix styles whose work is per owned atom with no state of their own
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
-                                        "viscous", "setforce", "wall/gran",
+                                        "viscous", "setforce", "addforce", "wall/gran",
                                         "wall/gran/region", "wall/pair", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk",
                                         "ave/histo", "drag", "property/global",
@@ -220,7 +220,8 @@ int par_fix_value_global(const struct fix *f)
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
-                                         "heat/gran/conduction", "gravity", "freeze",
+                                         "heat/gran/conduction", "gravity", "freeze", "setforce",
+                                         "addforce", /* sums in tag order (force_values.c) */
                                          "property/global", /* the script's values */
                                          /* their inputs are computes on ranks (ave_common.c:
                                           * fix or variable inputs refused), each sample

@@ -1,0 +1,66 @@
+/* fix_setforce.c - `fix ID group setforce fx fy fz`: LAMMPS's fix setforce:
+ * after the forces of the step (post_force, and at a run's setup), each
+ * given component of the group's forces becomes the value (a number, or an
+ * equal-style v_name evaluated every step); NULL leaves that component. The
+ * global vector (f_ID[1..3], extensive) is the group's total force before
+ * the fix at the last step (force_values.h). LAMMPS's `region` keyword and
+ * atom-style variables are refused. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "fix.h"
+#include "force_values.h"
+
+#define WHO "fix setforce"
+
+static void destroy(struct fix *f)
+{
+    struct force_values *fv = f->data;
+    if (fv) {
+        force_values_free(fv);
+        free(fv);
+    }
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 3)
+        gr_error(g, "fix setforce expects fx fy fz (each a number, NULL or v_name)");
+    if (argc > 3) {
+        if (!strcmp(argv[3], "region"))
+            gr_error(g, "fix setforce: keyword region is not supported yet (define a group "
+                        "of the region's atoms: group ID region R)");
+        gr_error(g, "fix setforce: unknown keyword '%.64s'", argv[3]);
+    }
+    struct force_values *fv = gr_calloc(g, 1, sizeof *fv);
+    f->data = fv;
+    force_values_parse(g, fv, argv, 1, WHO);
+    f->hooks = HOOK_POST_FORCE;
+    f->sources[f->nsources++] = "fix_setforce.cl";
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    force_values_init(g, f, f->data, WHO);
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    force_values_apply(g, f, f->data, 0);
+}
+
+static double vector(struct gravel *g, struct fix *f, int i)
+{
+    return force_values_original(g, f, i - 1);
+}
+
+const struct fix_style fix_style_setforce = {
+    .name = "setforce",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+    .size_vector = 3,
+    .vector = vector,
+};

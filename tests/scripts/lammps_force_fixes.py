@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""lammps_force_fixes.py - fix setforce and fix addforce as LAMMPS's.
+
+One deck, run unchanged by `lmp` (LAMMPS 2021, one process) and bin/gravel:
+96 spheres between two wall/gran planes under gravity; the upper half's
+force set to (0, unchanged, v_push) by fix setforce (push an equal-style
+variable of the step), the lower half pushed by fix addforce (v_side, 0.1,
+0) with `fix_modify energy yes`, the upper half also by addforce every 4
+steps. Thermo prints ke, pe (the addforce energy in it), f_sf[1..3] (the
+group's force before setforce), f_af (the addforce energy) and f_af[1..3],
+f_a4 and f_a4[3], every 100 of 1000 steps at %.10g: every value must agree
+to 1e-8 relative (the sums are in tag order here, in atom order there: the
+last digit may differ). On 2 MPI ranks the rows are the same to 17 digits
+as one process's. Then gravel's errors: the region keyword, an
+atom-style variable, NULL in addforce, every 0. One line PASS/FAIL per case;
+without `lmp` the comparison FAILs naming it (tools/deps.sh installs the
+Debian package lammps)."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+GRAVEL = os.path.join(ROOT, "bin", "gravel")
+REL = 1e-8
+
+HEAD = """units lj
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+boundary p p f
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 4 0 4 0 8
+region fill block 0 4 0 4 0 6
+create_box 1 box
+create_atoms 1 region fill
+set group all diameter 0.9 density 1.0
+velocity all create 1.0 87287 loop geom
+region top block INF INF INF INF 3 6 units box
+group top region top
+group bot subtract all top
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
+fix g all gravity 1.0 vector 0 0 -1
+timestep 0.001
+"""
+DECK = HEAD + """variable push equal -0.05-0.0001*step
+variable side equal 0.2*sin(0.01*step)
+fix sf top setforce 0.0 NULL v_push
+fix af bot addforce v_side 0.1 0.0
+fix_modify af energy yes
+fix a4 top addforce 0.0 0.0 0.02 every 4
+thermo_style custom step ke pe f_sf[1] f_sf[2] f_sf[3] f_af f_af[1] f_af[2] f_af[3] f_a4 f_a4[3]
+thermo_modify format float %.10g
+thermo 100
+run 1000
+"""
+
+
+def run(cmd, deck, cwd):
+    with open(os.path.join(cwd, "in.deck"), "w") as fh:
+        fh.write(deck)
+    p = subprocess.run(cmd + ["-in", "in.deck", "-log", "none", "-echo", "none"], cwd=cwd,
+                       capture_output=True, text=True, timeout=300)
+    return p.returncode, p.stdout + p.stderr
+
+
+def rows(text):
+    out = []
+    for line in text.splitlines():
+        w = line.split()
+        if len(w) == 12 and w[0].isdigit():
+            out.append([float(x) for x in w])
+    return out
+
+
+def check(name, ok, detail=""):
+    print(("PASS " if ok else "FAIL ") + name + ("" if ok else ": " + detail))
+
+
+def main():
+    tmp = tempfile.mkdtemp()
+    try:
+        gdir, ldir = os.path.join(tmp, "g"), os.path.join(tmp, "l")
+        os.mkdir(gdir)
+        os.mkdir(ldir)
+        rc, gout = run([GRAVEL], DECK, gdir)
+        g = rows(gout)
+        check("setforce_addforce_run", rc == 0 and len(g) == 11,
+              "exit %d, %d rows: %s" % (rc, len(g), gout[-600:]))
+        if shutil.which("lmp") is None:
+            check("setforce_addforce_match_lammps", False, "lmp not found (apt-get install lammps)")
+        else:
+            rc, lout = run(["lmp"], DECK, ldir)
+            lm = rows(lout)
+            bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+                   if abs(a - b) > REL * max(abs(b), 1e-12)]
+            check("setforce_addforce_match_lammps", rc == 0 and len(lm) == len(g) and not bad,
+                  "lmp exit %d, rows %d / %d, differences %s" % (rc, len(g), len(lm), bad[:3]))
+
+        # on 2 MPI ranks (bin/gravel-mpi): the same rows at 17 digits as one process
+        mpi = os.path.join(ROOT, "bin", "gravel-mpi")
+        deck17 = DECK.replace("%.10g", "%.17g")
+        rc1, one = run([GRAVEL], deck17, gdir)
+        if shutil.which("mpirun") is None or not os.path.exists(mpi):
+            check("setforce_addforce_two_ranks", False, "mpirun or bin/gravel-mpi missing")
+        else:
+            rc2, two = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
+                           deck17, gdir)
+            r1 = [l for l in one.splitlines() if len(l.split()) == 12 and l.split()[0].isdigit()]
+            r2 = [l for l in two.splitlines() if len(l.split()) == 12 and l.split()[0].isdigit()]
+            check("setforce_addforce_two_ranks", rc1 == 0 and rc2 == 0 and len(r1) == 11 and
+                  r1 == r2, "exit %d/%d\n%s" % (rc1, rc2, two[-600:]))
+
+        errors = {
+            "setforce_region_refused": ("fix s top setforce 0 0 0 region top\n",
+                                        "ERROR: fix: fix setforce: keyword region is not "
+                                        "supported yet"),
+            "addforce_atom_variable_refused": ("variable a atom z\nfix s top addforce 0 0 v_a\n"
+                                               "run 1\n", "ERROR: run: fix addforce s: variable "
+                                               "'a' is atom-style: not supported yet"),
+            "addforce_null_refused": ("fix s top addforce NULL 0 0\n",
+                                      "ERROR: fix: fix addforce: fx NULL is not allowed"),
+            "addforce_every_positive": ("fix s top addforce 0 0 0 every 0\n",
+                                        "ERROR: fix: fix addforce: every must be positive, "
+                                        "got 0"),
+        }
+        for name, (cmd, msg) in errors.items():
+            rc, out = run([GRAVEL], HEAD + cmd, gdir)
+            check(name, rc == 1 and msg in out, out[-400:])
+    finally:
+        shutil.rmtree(tmp)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
