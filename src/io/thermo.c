@@ -248,15 +248,23 @@ const char *output_format_fix(const char *f, int want_int, char *out)
 
 /* ---- columns ------------------------------------------------------------------- */
 
-/* LAMMPS' implicit computes thermo_temp and thermo_pe, referenced as
- * c_thermo_temp / c_thermo_pe when no compute of that ID was defined: the
- * keyword they stand for, else -1. */
+/* LAMMPS' implicit computes thermo_temp, thermo_pe and thermo_press,
+ * referenced as c_thermo_temp / c_thermo_pe / c_thermo_press and
+ * c_thermo_press[1..6] (pxx pyy pzz pxy pxz pyz) when no compute of that
+ * ID was defined: the keyword they stand for, else -1. (The thermo
+ * pressure is LAMMPS's thermo_press: it follows thermo_modify temp too.) */
 static int implicit_compute(struct gravel *g, const char *s)
 {
     if (strcmp(s, "c_thermo_temp") == 0 && !compute_find(g, "thermo_temp"))
         return KW_THERMO_TEMP;
     if (strcmp(s, "c_thermo_pe") == 0 && !compute_find(g, "thermo_pe"))
         return KW_PE;
+    if (strncmp(s, "c_thermo_press", 14) == 0 && !compute_find(g, "thermo_press")) {
+        if (s[14] == '\0')
+            return KW_PRESS;
+        if (s[14] == '[' && s[15] >= '1' && s[15] <= '6' && s[16] == ']' && s[17] == '\0')
+            return KW_PXX + (s[15] - '1');
+    }
     return -1;
 }
 
@@ -806,7 +814,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if ((k = implicit_compute(g, name)) >= 0) {
         bigint iv;
         int isint;
-        if (k == KW_THERMO_TEMP)
+        if (k == KW_THERMO_TEMP || needs_host(k))
             run_sync_host(g);
         *out = keyword_value(g, k, &iv, &isint);
         return 1;

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""lammps_thermo_press.py - LAMMPS's implicit compute thermo_press.
+
+LAMMPS defines `compute thermo_press all pressure thermo_temp` by itself;
+decks read it as c_thermo_press and c_thermo_press[1..6] (pxx pyy pzz pxy
+pxz pyz) in thermo_style and in variables. One deck of 64 spheres between
+two wall/gran planes, run unchanged by `lmp` (LAMMPS 2021, one process) and
+bin/gravel for 200 steps, prints them (and press, and an equal-style
+variable of two of them) every 50 steps at %.12g: every value must agree to
+1e-10 relative. One line PASS/FAIL; without `lmp` it FAILs naming it
+(tools/deps.sh installs the Debian package lammps)."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+GRAVEL = os.path.join(ROOT, "bin", "gravel")
+
+DECK = """units lj
+atom_style sphere
+comm_modify vel yes
+boundary p p f
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+set group all diameter 0.95 density 1.0
+velocity all create 1.0 87287 loop geom
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+fix zw all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 4.0
+timestep 0.001
+variable p equal c_thermo_press[3]+c_thermo_press
+thermo_style custom step press c_thermo_press c_thermo_press[1] c_thermo_press[2] &
+  c_thermo_press[3] c_thermo_press[4] c_thermo_press[5] c_thermo_press[6] v_p
+thermo_modify format float %.12g
+thermo 50
+run 200
+"""
+
+
+def rows(cmd, cwd):
+    with open(os.path.join(cwd, "in.deck"), "w") as fh:
+        fh.write(DECK)
+    p = subprocess.run(cmd + ["-in", "in.deck", "-log", "none", "-echo", "none"], cwd=cwd,
+                       capture_output=True, text=True, timeout=120)
+    out = p.stdout + p.stderr
+    r = [[float(x) for x in l.split()] for l in out.splitlines()
+         if len(l.split()) == 10 and l.split()[0].isdigit()]
+    heads = [l.split() for l in out.splitlines() if l.split()[:2] == ["Step", "Press"]]
+    return p.returncode, r, heads, out
+
+
+def main():
+    tmp = tempfile.mkdtemp()
+    try:
+        rc, g, gh, gout = rows([GRAVEL], tmp)
+        ok = rc == 0 and len(g) == 5 and gh and gh[0][2] == "c_thermo_press"
+        if shutil.which("lmp") is None:
+            print("FAIL thermo_press_matches_lammps: lmp not found (apt-get install lammps)")
+            return
+        rc2, lm, lh, lout = rows(["lmp"], tmp)
+        bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+               if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
+        ok = ok and rc2 == 0 and len(lm) == len(g) and gh == lh and not bad
+        print(("PASS" if ok else "FAIL") + " thermo_press_matches_lammps" +
+              ("" if ok else ": %s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:])))
+    finally:
+        shutil.rmtree(tmp)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
