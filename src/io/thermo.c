@@ -22,6 +22,7 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "group.h"
 #include "pair_energy.h"
 #include "par.h"
 #include "pressure.h"
@@ -36,7 +37,7 @@ enum kw_id {
     KW_ETOTAL, KW_VOL, KW_LX, KW_LY, KW_LZ, KW_XLO, KW_XHI, KW_YLO, KW_YHI, KW_ZLO, KW_ZHI,
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
     KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
-    KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA,
+    KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA, KW_DENSITY,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     KW_COUNT
 };
@@ -96,6 +97,7 @@ static const struct {
     [KW_CELLALPHA] = {"cellalpha", "CellAlpha", V_FLOAT},
     [KW_CELLBETA] = {"cellbeta", "CellBeta", V_FLOAT},
     [KW_CELLGAMMA] = {"cellgamma", "CellGamma", V_FLOAT},
+    [KW_DENSITY] = {"density", "Density", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
 };
 
@@ -104,7 +106,7 @@ static const struct {
 static int needs_host(int k)
 {
     return k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS ||
-           (k >= KW_PXX && k <= KW_PYZ);
+           (k >= KW_PXX && k <= KW_PYZ) || k == KW_DENSITY;
 }
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
@@ -785,6 +787,9 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_XZ: return g->dom.xz;
     case KW_YZ: return g->dom.yz;
     case KW_VOL: return volume(g);
+    /* LAMMPS: the mass of every atom (group all) over the volume (area in 2d);
+     * mv2d is 1 in lj, si and cgs */
+    case KW_DENSITY: return group_mass(g, 0) / volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
     case KW_LZ: return g->dom.hi[2] - g->dom.lo[2];

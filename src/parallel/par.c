@@ -268,7 +268,7 @@ static void check_scene(struct gravel *g)
                                      "zlo", "zhi", "xy", "xz", "yz", "cella", "cellb", "cellc",
                                      "cellalpha", "cellbeta", "cellgamma", "press", "pxx",
                                      "pyy", "pzz", "pxy", "pxz", "pyz", "epair", "emol", "pe",
-                                     "etotal", NULL};
+                                     "etotal", "density", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
         if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""lammps_thermo_press.py - LAMMPS's implicit compute thermo_press.
+"""lammps_thermo_press.py - LAMMPS's implicit compute thermo_press, and the
+thermo keyword density.
 
 LAMMPS defines `compute thermo_press all pressure thermo_temp` by itself;
 decks read it as c_thermo_press and c_thermo_press[1..6] (pxx pyy pzz pxy
 pxz pyz) in thermo_style and in variables. One deck of 64 spheres between
 two wall/gran planes, run unchanged by `lmp` (LAMMPS 2021, one process) and
-bin/gravel for 200 steps, prints them (and press, and an equal-style
-variable of two of them) every 50 steps at %.12g: every value must agree to
+bin/gravel for 200 steps, prints them (and press, density - the mass of every atom over the volume
+- and an equal-style variable of them) every 50 steps at %.12g: every value must agree to
 1e-10 relative. One line PASS/FAIL; without `lmp` it FAILs naming it
 (tools/deps.sh installs the Debian package lammps)."""
 import os
@@ -33,9 +34,9 @@ pair_coeff * *
 fix 1 all nve/sphere
 fix zw all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 4.0
 timestep 0.001
-variable p equal c_thermo_press[3]+c_thermo_press
+variable p equal c_thermo_press[3]+c_thermo_press+density
 thermo_style custom step press c_thermo_press c_thermo_press[1] c_thermo_press[2] &
-  c_thermo_press[3] c_thermo_press[4] c_thermo_press[5] c_thermo_press[6] v_p
+  c_thermo_press[3] c_thermo_press[4] c_thermo_press[5] c_thermo_press[6] v_p density
 thermo_modify format float %.12g
 thermo 50
 run 200
@@ -49,7 +50,7 @@ def rows(cmd, cwd):
                        capture_output=True, text=True, timeout=120)
     out = p.stdout + p.stderr
     r = [[float(x) for x in l.split()] for l in out.splitlines()
-         if len(l.split()) == 10 and l.split()[0].isdigit()]
+         if len(l.split()) == 11 and l.split()[0].isdigit()]
     heads = [l.split() for l in out.splitlines() if l.split()[:2] == ["Step", "Press"]]
     return p.returncode, r, heads, out
 
