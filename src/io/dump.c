@@ -13,7 +13,6 @@
 #include "engine.h"
 #include "error.h"
 #include "outfile.h"
-#include "variable.h"
 
 #define PAIR(k, i)
 #define FIX(k, i)
@@ -482,20 +481,10 @@ static bigint next_multiple(bigint step, int every)
 }
 
 /* The step of d's next snapshot after `step`: the next multiple of N, or
- * with every v_name the variable's value, which must be a later step
- * (LAMMPS: "Dump every variable returned a bad timestep"). */
-static bigint next_dump_step(struct gravel *g, const struct dump *d, bigint step)
+ * with every v_name -1: output.c evaluates the variable (dump_every_var). */
+static bigint next_dump_step(const struct dump *d, bigint step)
 {
-    if (!d->every_var)
-        return next_multiple(step, d->every);
-    if (!var_retrieve(g, d->every_var))
-        gr_error(g, "dump %s: every variable '%s' is not defined", d->id, d->every_var);
-    double v = var_compute_equal(g, d->every_var);
-    if (!(v > (double)step && v < 9223372036854775808.0))
-        gr_error(g, "dump %s: every variable '%s' returned %g, which is not a step after %lld",
-                 d->id, d->every_var, v, (long long)step);
-    bigint next = (bigint)v;
-    return next > step ? next : step + 1;
+    return d->every_var ? -1 : next_multiple(step, d->every);
 }
 
 /* d writes at `step`: a multiple of N, or with every v_name the step its
@@ -544,7 +533,7 @@ void dump_setup_all(struct gravel *g)
             }
             dump_write(g, d);
         }
-        d->next_dump = next_dump_step(g, d, g->step);
+        d->next_dump = next_dump_step(d, g->step);
     }
     par_gather_end(g);
 }
@@ -571,7 +560,7 @@ int dump_step_all(struct gravel *g)
         if (at && d->last_dump != g->step)
             dump_write(g, d);
         if (at || !d->every_var)
-            d->next_dump = next_dump_step(g, d, g->step);
+            d->next_dump = next_dump_step(d, g->step);
     }
     par_gather_end(g);
     return 1;

@@ -54,7 +54,8 @@ struct dump {
     unsigned groupbit;
     int every;                  /* N (unused while every_var is set) */
     char *every_var;            /* dump_modify every v_name: the variable giving the next
-                                 * snapshot's step (LAMMPS), else NULL */
+                                 * snapshot's step (LAMMPS), else NULL; next_dump is -1
+                                 * until output.c evaluates it (src/io/output.c) */
     char *file;                 /* as given */
     int multifile;              /* file name holds '*' */
     int pad;                    /* dump_modify pad: zero-pad the step to this width */

@@ -41,6 +41,27 @@ static void emit(struct gravel *g, const char *text)
     gr_log_check(g); /* a run whose log cannot be written stops */
 }
 
+/* dump_modify every v_name: the dumps whose next step is still to be
+ * evaluated (-1, set by dump.c at the run's setup and after each snapshot)
+ * get their variable's value, which must be a later step (LAMMPS: "Dump
+ * every variable returned a bad timestep"). Here, not in dump.c, so that
+ * the dumps stay below the variable language in the include layers. */
+static void dump_every_var(struct gravel *g)
+{
+    for (int i = 0; i < g->styles.ndump; i++) {
+        struct dump *d = g->styles.dump[i];
+        if (!d->every_var || d->next_dump >= 0)
+            continue;
+        if (!var_retrieve(g, d->every_var))
+            gr_error(g, "dump %s: every variable '%s' is not defined", d->id, d->every_var);
+        double v = var_compute_equal(g, d->every_var);
+        if (!(v > (double)g->step && v < 9223372036854775808.0))
+            gr_error(g, "dump %s: every variable '%s' returned %g, which is not a step after "
+                        "%lld", d->id, d->every_var, v, (long long)g->step);
+        d->next_dump = (bigint)v;
+    }
+}
+
 /* Next step with a thermo line after `step`. */
 static bigint next_thermo(struct gravel *g, bigint step)
 {
@@ -216,6 +237,7 @@ void output_setup(struct gravel *g)
     compute_init_all(g);
     thermo_init(g);
     dump_setup_all(g);
+    dump_every_var(g);
     emit(g, thermo_header_text(g));
     thermo_print(g);
     st->drift_on = conserving_scene(g);
@@ -242,6 +264,7 @@ void output_step(struct gravel *g)
 {
     struct output_state *st = output_state(g);
     dump_step_all(g);
+    dump_every_var(g);
     if (g->step >= st->next_thermo && st->last_thermo != g->step) {
         thermo_print(g);
         if (g->step < g->laststep)

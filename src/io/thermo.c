@@ -22,9 +22,9 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
-#include "group.h"
 #include "pair_energy.h"
 #include "par.h"
+#include "par_sum.h"
 #include "pressure.h"
 #include "temperature.h"
 #include "thermo.h"
@@ -644,6 +644,17 @@ static double kinetic_energy(struct gravel *g)
     return ke;
 }
 
+/* the mass of every atom, summed in tag order over every rank's atoms */
+static double total_mass(struct gravel *g)
+{
+    const struct atoms *a = &g->atoms;
+    const int *ord = atoms_tag_order(g);
+    struct par_sum m = {0};
+    for (int k = 0; k < a->n; k++)
+        par_sum_add(g, &m, a->tag[ord[k]], a->rmass[ord[k]]);
+    return par_sum_total(g, &m);
+}
+
 static double volume(const struct gravel *g)
 {
     const struct domain *d = &g->dom;
@@ -789,7 +800,7 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_VOL: return volume(g);
     /* LAMMPS: the mass of every atom (group all) over the volume (area in 2d);
      * mv2d is 1 in lj, si and cgs */
-    case KW_DENSITY: return group_mass(g, 0) / volume(g);
+    case KW_DENSITY: return total_mass(g) / volume(g);
     case KW_LX: return g->dom.hi[0] - g->dom.lo[0];
     case KW_LY: return g->dom.hi[1] - g->dom.lo[1];
     case KW_LZ: return g->dom.hi[2] - g->dom.lo[2];
