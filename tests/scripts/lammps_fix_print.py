@@ -14,12 +14,12 @@ comparison FAILs naming it (tools/deps.sh installs the Debian package
 lammps)."""
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-GRAVEL = os.path.join(ROOT, "bin", "gravel")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import GRAVEL, check, expect_errors, run  # noqa: E402
+
 
 HEAD = """units lj
 atom_style sphere
@@ -46,14 +46,6 @@ run 60
 """
 
 
-def run(cmd, deck, cwd):
-    with open(os.path.join(cwd, "in.deck"), "w") as fh:
-        fh.write(deck)
-    p = subprocess.run(cmd + ["-in", "in.deck", "-log", "none", "-echo", "none"], cwd=cwd,
-                       capture_output=True, text=True, timeout=120)
-    return p.returncode, p.stdout + p.stderr
-
-
 def screen_lines(text):
     return [l for l in text.splitlines() if l.startswith(("r ", "step ", "logq "))]
 
@@ -64,10 +56,6 @@ def read(path):
             return fh.read()
     except OSError as e:
         return "(%s)" % e
-
-
-def check(name, ok, detail=""):
-    print(("PASS " if ok else "FAIL ") + name + ("" if ok else ": " + detail))
 
 
 def main():
@@ -90,7 +78,7 @@ def main():
                   screen_lines(gout) == screen_lines(lout),
                   "lmp exit %d\n%s\n%s\n%s" % (rc, lp, lq, screen_lines(lout)))
 
-        errors = {
+        expect_errors({
             "fix_print_n_positive": ('fix p all print 0 "x"\n',
                                      "ERROR: fix: fix print: N must be positive, got 0"),
             "fix_print_unknown_keyword": ('fix p all print 5 "x" every 3\n',
@@ -101,10 +89,7 @@ def main():
             "fix_print_unwritable_file": ('fix p all print 5 "x" file /dev/full\nrun 10\n',
                                           "ERROR: fix: fix print: writing the file header "
                                           "failed: No space left on device"),
-        }
-        for name, (cmd, msg) in errors.items():
-            rc, out = run([GRAVEL], HEAD + cmd, gdir)
-            check(name, rc == 1 and msg in out, out[-400:])
+        }, HEAD, gdir)
     finally:
         shutil.rmtree(tmp)
 

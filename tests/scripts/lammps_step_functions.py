@@ -24,12 +24,12 @@ naming it (tools/deps.sh installs the Debian package lammps)."""
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-GRAVEL = os.path.join(ROOT, "bin", "gravel")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import GRAVEL, check, expect_errors, run  # noqa: E402
+
 REL = 1e-13
 
 HEAD = """units lj
@@ -102,14 +102,6 @@ def dump_steps(path):
 ROW = re.compile(r"^\s*\d+(\s+\S+){10}\s*$")
 
 
-def run(cmd, deck, cwd):
-    with open(os.path.join(cwd, "in.deck"), "w") as fh:
-        fh.write(deck)
-    p = subprocess.run(cmd + ["-in", "in.deck", "-log", "none", "-echo", "none"], cwd=cwd,
-                       capture_output=True, text=True, timeout=120)
-    return p.returncode, p.stdout + p.stderr
-
-
 def values(text):
     """the thermo rows and the `inside` lines, as lists of numbers"""
     out = []
@@ -121,10 +113,6 @@ def values(text):
 
 def close(a, b):
     return abs(a - b) <= REL * max(1e-300, abs(b)) + 1e-300
-
-
-def check(name, ok, detail=""):
-    print(("PASS " if ok else "FAIL ") + name + ("" if ok else ": " + detail))
 
 
 def main():
@@ -199,20 +187,19 @@ print "between $(v_r:%.15g) $(v_st:%.15g)"
         check("ramp_between_runs_is_first_value_stride_never",
               rc == 0 and "\nbetween 2 9.22337203685477e+18\n" in out, out[-400:])
 
-        errors = {
-            "stagger_needs_x_gt_y": ("print $(stagger(7,100))",
-                                     "invalid stagger() arguments: needs x > y > 0"),
-            "swiggle_period_zero": ("print $(swiggle(1,1,0))",
-                                    "invalid swiggle() arguments: the period z must not be 0"),
-            "logfreq3_past_last_step": ("reset_timestep 2000\nprint $(logfreq3(10,20,1000))",
-                                        "logfreq3(): the step 2000 is past its last step 1000"),
-            "step_argument_beyond_2_62": ("print $(stride(1,1e30,3))",
-                                          "stride(): argument 1e+30 is not a usable step count"),
-        }
-        for name, (cmd, msg) in errors.items():
-            rc, out = run([GRAVEL], HEAD + cmd + "\n", gdir)
-            check(name, rc == 1 and ("ERROR: print: " + msg + " in expression") in out,
-                  out[-400:])
+        expect_errors({
+            "stagger_needs_x_gt_y": ("print $(stagger(7,100))\n", "ERROR: print: invalid "
+                                     "stagger() arguments: needs x > y > 0 in expression"),
+            "swiggle_period_zero": ("print $(swiggle(1,1,0))\n", "ERROR: print: invalid "
+                                    "swiggle() arguments: the period z must not be 0 in "
+                                    "expression"),
+            "logfreq3_past_last_step": ("reset_timestep 2000\nprint $(logfreq3(10,20,1000))\n",
+                                        "ERROR: print: logfreq3(): the step 2000 is past its "
+                                        "last step 1000 in expression"),
+            "step_argument_beyond_2_62": ("print $(stride(1,1e30,3))\n", "ERROR: print: "
+                                          "stride(): argument 1e+30 is not a usable step count "
+                                          "in expression"),
+        }, HEAD, gdir)
     finally:
         shutil.rmtree(tmp)
 

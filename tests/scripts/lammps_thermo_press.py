@@ -12,12 +12,12 @@ bin/gravel for 200 steps, prints them (and press, density - the mass of every at
 (tools/deps.sh installs the Debian package lammps)."""
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-GRAVEL = os.path.join(ROOT, "bin", "gravel")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import GRAVEL, check, run, thermo_rows  # noqa: E402
+
 
 DECK = """units lj
 atom_style sphere
@@ -44,15 +44,9 @@ run 200
 
 
 def rows(cmd, cwd):
-    with open(os.path.join(cwd, "in.deck"), "w") as fh:
-        fh.write(DECK)
-    p = subprocess.run(cmd + ["-in", "in.deck", "-log", "none", "-echo", "none"], cwd=cwd,
-                       capture_output=True, text=True, timeout=120)
-    out = p.stdout + p.stderr
-    r = [[float(x) for x in l.split()] for l in out.splitlines()
-         if len(l.split()) == 11 and l.split()[0].isdigit()]
+    rc, out = run(cmd, DECK, cwd, timeout=120)
     heads = [l.split() for l in out.splitlines() if l.split()[:2] == ["Step", "Press"]]
-    return p.returncode, r, heads, out
+    return rc, thermo_rows(out, 11), heads, out
 
 
 def main():
@@ -61,14 +55,14 @@ def main():
         rc, g, gh, gout = rows([GRAVEL], tmp)
         ok = rc == 0 and len(g) == 5 and gh and gh[0][2] == "c_thermo_press"
         if shutil.which("lmp") is None:
-            print("FAIL thermo_press_matches_lammps: lmp not found (apt-get install lammps)")
+            check("thermo_press_matches_lammps", False, "lmp not found (apt-get install lammps)")
             return
         rc2, lm, lh, lout = rows(["lmp"], tmp)
         bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
                if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
         ok = ok and rc2 == 0 and len(lm) == len(g) and gh == lh and not bad
-        print(("PASS" if ok else "FAIL") + " thermo_press_matches_lammps" +
-              ("" if ok else ": %s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:])))
+        check("thermo_press_matches_lammps", ok,
+              "%s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:]))
     finally:
         shutil.rmtree(tmp)
 
