@@ -189,20 +189,18 @@ static size_t all_rows_bytes(const struct atoms *a)
 /* Fix styles whose work is per owned atom with no state of their own
  * (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
-                                        "viscous", "setforce", "addforce", "wall/gran",
+                                        "viscous", "setforce", "addforce", "aveforce", "wall/gran",
                                         "wall/gran/region", "wall/pair", "balance", "mesh/surface",
-                                        "move/mesh", "pour", "ave/time", "ave/chunk",
-                                        "ave/histo", "drag", "property/global",
-                                        "mesh/surface/stress", "mesh/surface/planar",
-                                        "particletemplate/sphere",
+                                        "move/mesh", "pour", "ave/time", "ave/chunk", "ave/histo",
+                                        "drag", "property/global", "mesh/surface/stress",
+                                        "mesh/surface/planar", "particletemplate/sphere",
                                         "particledistribution/discrete", "insert/pack",
                                         "insert/rate/region", "insert/stream",
-                                        "check/timestep/gran", "heat/gran",
-                                        "heat/gran/conduction", "adapt", "property/atom",
-                                        "heat/flow", "viscous/nonlinear", "momentum",
-                                        "rigid/small", "multisphere", "surface/global", "surface/local", "nvt",
-                                        "nvt/sphere", "deform", "npt", "npt/sphere", "nph",
-                                        "nph/sphere",
+                                        "check/timestep/gran", "heat/gran", "heat/gran/conduction",
+                                        "adapt", "property/atom", "heat/flow", "viscous/nonlinear",
+                                        "momentum", "rigid/small", "multisphere", "surface/global",
+                                        "surface/local", "nvt", "nvt/sphere", "deform", "npt",
+                                        "npt/sphere", "nph", "nph/sphere",
                                         "particletemplate/multisphere", "granular/mdr", NULL};
 
 static int listed(const char *const *list, const char *name)
@@ -220,8 +218,9 @@ int par_fix_value_global(const struct fix *f)
     static const char *const global[] = {"mesh/surface", "mesh/surface/stress", "insert/pack",
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
-                                         "heat/gran/conduction", "gravity", "freeze", "setforce",
-                                         "addforce", /* sums in tag order (force_values.c) */
+                                         "heat/gran/conduction", "gravity", "freeze",
+                                         /* sums in tag order (styles/fix/force_values.c) */
+                                         "setforce", "addforce", "aveforce",
                                          "property/global", /* the script's values */
                                          /* their inputs are computes on ranks (ave_common.c:
                                           * fix or variable inputs refused), each sample

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""lammps_force_fixes.py - fix setforce and fix addforce as LAMMPS's.
+"""lammps_force_fixes.py - fix setforce, addforce and aveforce as LAMMPS's.
 
 One deck, run unchanged by `lmp` (LAMMPS 2021, one process) and bin/gravel:
 96 spheres between two wall/gran planes under gravity; the upper half's
@@ -10,7 +10,9 @@ steps. Thermo prints ke, pe (the addforce energy in it), f_sf[1..3] (the
 group's force before setforce), f_af (the addforce energy) and f_af[1..3],
 f_a4 and f_a4[3], every 100 of 1000 steps at %.10g: every value must agree
 to 1e-8 relative (the sums are in tag order here, in atom order there: the
-last digit may differ). On 2 MPI ranks the rows are the same to 17 digits
+last digit may differ). The same deck with fix aveforce (NULL 0.0 v_push:
+the z force of every upper atom their average plus v_push) in setforce's
+place, likewise. On 2 MPI ranks the rows of both are the same to 17 digits
 as one process's. Then gravel's errors: the region keyword, an
 atom-style variable, NULL in addforce, every 0. One line PASS/FAIL per case;
 without `lmp` the comparison FAILs naming it (tools/deps.sh installs the
@@ -80,19 +82,34 @@ def main():
             check("setforce_addforce_match_lammps", rc == 0 and len(lm) == len(g) and not bad,
                   "lmp exit %d, rows %d / %d, differences %s" % (rc, len(g), len(lm), bad[:3]))
 
+        # fix aveforce in setforce's place: the upper half's z force its average + v_push
+        ave = DECK.replace("fix sf top setforce 0.0 NULL v_push", "fix sf top aveforce NULL 0.0 v_push")
+        rc, aout = run([GRAVEL], ave, gdir)
+        ga = thermo_rows(aout, 12)
+        if shutil.which("lmp") is not None:
+            rc2, alout = run(["lmp"], ave, ldir)
+            la = thermo_rows(alout, 12)
+            bad = [(r[0], a, b) for r, s in zip(ga, la) for a, b in zip(r, s)
+                   if abs(a - b) > REL * max(abs(b), 1e-12)]
+            check("aveforce_matches_lammps", rc == 0 and rc2 == 0 and len(ga) == 11 and
+                  len(la) == 11 and not bad, "exit %d/%d, differences %s\n%s"
+                  % (rc, rc2, bad[:3], aout[-400:]))
+
         # on 2 MPI ranks (bin/gravel-mpi): the same rows at 17 digits as one process
         mpi = os.path.join(ROOT, "bin", "gravel-mpi")
-        deck17 = DECK.replace("%.10g", "%.17g")
-        rc1, one = run([GRAVEL], deck17, gdir)
         if shutil.which("mpirun") is None or not os.path.exists(mpi):
-            check("setforce_addforce_two_ranks", False, "mpirun or bin/gravel-mpi missing")
+            check("force_fixes_two_ranks", False, "mpirun or bin/gravel-mpi missing")
         else:
-            rc2, two = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
-                           deck17, gdir)
-            r1 = [l for l in one.splitlines() if len(l.split()) == 12 and l.split()[0].isdigit()]
-            r2 = [l for l in two.splitlines() if len(l.split()) == 12 and l.split()[0].isdigit()]
-            check("setforce_addforce_two_ranks", rc1 == 0 and rc2 == 0 and len(r1) == 11 and
-                  r1 == r2, "exit %d/%d\n%s" % (rc1, rc2, two[-600:]))
+            same, why = True, ""
+            for deck in (DECK, ave):
+                deck17 = deck.replace("%.10g", "%.17g")
+                rc1, one = run([GRAVEL], deck17, gdir)
+                rc2, two = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
+                                mpi], deck17, gdir)
+                r1, r2 = thermo_rows(one, 12), thermo_rows(two, 12)
+                if rc1 or rc2 or len(r1) != 11 or r1 != r2:
+                    same, why = False, "exit %d/%d\n%s" % (rc1, rc2, two[-600:])
+            check("force_fixes_two_ranks", same, why)
 
         expect_errors({
             "setforce_region_refused": ("fix s top setforce 0 0 0 region top\n",
