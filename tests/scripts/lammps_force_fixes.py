@@ -83,7 +83,8 @@ def main():
                   "lmp exit %d, rows %d / %d, differences %s" % (rc, len(g), len(lm), bad[:3]))
 
         # fix aveforce in setforce's place: the upper half's z force its average + v_push
-        ave = DECK.replace("fix sf top setforce 0.0 NULL v_push", "fix sf top aveforce NULL 0.0 v_push")
+        ave = DECK.replace("fix sf top setforce 0.0 NULL v_push",
+                           "fix sf top aveforce NULL 0.0 v_push")
         rc, aout = run([GRAVEL], ave, gdir)
         ga = thermo_rows(aout, 12)
         if shutil.which("lmp") is not None:
