@@ -39,6 +39,9 @@ enum kw_id {
     KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
     KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA, KW_DENSITY,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
+    /* c_thermo_temp[1..6]: its kinetic tensor (no keyword names) */
+    KW_THERMO_TEMP_V, KW_THERMO_TEMP_V2, KW_THERMO_TEMP_V3, KW_THERMO_TEMP_V4, KW_THERMO_TEMP_V5,
+    KW_THERMO_TEMP_V6,
     KW_COUNT
 };
 #define KIND_COMPUTE (-1)
@@ -99,6 +102,12 @@ static const struct {
     [KW_CELLGAMMA] = {"cellgamma", "CellGamma", V_FLOAT},
     [KW_DENSITY] = {"density", "Density", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
+    [KW_THERMO_TEMP_V] = {"", "c_thermo_temp[1]", V_FLOAT},
+    [KW_THERMO_TEMP_V2] = {"", "c_thermo_temp[2]", V_FLOAT},
+    [KW_THERMO_TEMP_V3] = {"", "c_thermo_temp[3]", V_FLOAT},
+    [KW_THERMO_TEMP_V4] = {"", "c_thermo_temp[4]", V_FLOAT},
+    [KW_THERMO_TEMP_V5] = {"", "c_thermo_temp[5]", V_FLOAT},
+    [KW_THERMO_TEMP_V6] = {"", "c_thermo_temp[6]", V_FLOAT},
 };
 
 /* thermo keywords that read the host arrays (the temperature or the kinetic
@@ -257,8 +266,12 @@ const char *output_format_fix(const char *f, int want_int, char *out)
  * pressure is LAMMPS's thermo_press: it follows thermo_modify temp too.) */
 static int implicit_compute(struct gravel *g, const char *s)
 {
-    if (strcmp(s, "c_thermo_temp") == 0 && !compute_find(g, "thermo_temp"))
-        return KW_THERMO_TEMP;
+    if (strncmp(s, "c_thermo_temp", 13) == 0 && !compute_find(g, "thermo_temp")) {
+        if (s[13] == '\0')
+            return KW_THERMO_TEMP;
+        if (s[13] == '[' && s[14] >= '1' && s[14] <= '6' && s[15] == ']' && s[16] == '\0')
+            return KW_THERMO_TEMP_V + (s[14] - '1'); /* the kinetic tensor, extensive */
+    }
     if (strcmp(s, "c_thermo_pe") == 0 && !compute_find(g, "thermo_pe"))
         return KW_PE;
     if (strncmp(s, "c_thermo_press", 14) == 0 && !compute_find(g, "thermo_press")) {
@@ -763,6 +776,16 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_EMOL: return 0.0;
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
     case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);
+    case KW_THERMO_TEMP_V:
+    case KW_THERMO_TEMP_V2:
+    case KW_THERMO_TEMP_V3:
+    case KW_THERMO_TEMP_V4:
+    case KW_THERMO_TEMP_V5:
+    case KW_THERMO_TEMP_V6: { /* as it is: thermo_line_text normalizes, a variable does not */
+        double tv[6];
+        temp_vector(g, &g->thermo.temp, tv);
+        return tv[k - KW_THERMO_TEMP_V];
+    }
     case KW_PRESS: return pressure_scalar(g, temp_thermo(g)); /* intensive */
     case KW_PXX:
     case KW_PYY:
@@ -830,7 +853,7 @@ int thermo_keyword_value(struct gravel *g, const char *name, double *out)
     if ((k = implicit_compute(g, name)) >= 0) {
         bigint iv;
         int isint;
-        if (k == KW_THERMO_TEMP || needs_host(k))
+        if ((k >= KW_THERMO_TEMP && k <= KW_THERMO_TEMP_V6) || needs_host(k))
             run_sync_host(g);
         *out = keyword_value(g, k, &iv, &isint);
         return 1;
@@ -932,7 +955,8 @@ const char *thermo_line_text(struct gravel *g)
     bigint ival[GR_MAXTHERMO];
     /* host arrays current once per line (computes and ke read them) */
     for (int i = 0; i < st->ncol; i++)
-        if ((st->kind[i] >= 0 && needs_host(st->kind[i])) || st->kind[i] == KW_THERMO_TEMP ||
+        if ((st->kind[i] >= 0 && needs_host(st->kind[i])) ||
+            (st->kind[i] >= KW_THERMO_TEMP && st->kind[i] <= KW_THERMO_TEMP_V6) ||
             st->kind[i] == KIND_COMPUTE || st->kind[i] == KIND_FIX) {
             run_sync_host(g);
             break;
@@ -963,6 +987,8 @@ const char *thermo_line_text(struct gravel *g)
             ival[i] = 0;
             if (k >= 0) {
                 val[i] = keyword_value(g, k, &ival[i], &isint);
+                if (k >= KW_THERMO_TEMP_V && k <= KW_THERMO_TEMP_V6 && norm > 0)
+                    val[i] /= (double)norm; /* an extensive compute vector, as LAMMPS */
             } else if (k == KIND_COMPUTE) {
                 val[i] = compute_ref_value(g, t->col[i], norm, "thermo_style");
             } else if (k == KIND_FIX) {

@@ -1,14 +1,17 @@
 #!/usr/bin/env python3
-"""lammps_thermo_press.py - LAMMPS's implicit compute thermo_press, and the
-thermo keyword density.
+"""lammps_thermo_press.py - LAMMPS's implicit computes thermo_press and
+thermo_temp's vector, and the thermo keyword density.
 
 LAMMPS defines `compute thermo_press all pressure thermo_temp` by itself;
 decks read it as c_thermo_press and c_thermo_press[1..6] (pxx pyy pzz pxy
 pxz pyz) in thermo_style and in variables. One deck of 64 spheres between
 two wall/gran planes, run unchanged by `lmp` (LAMMPS 2021, one process) and
-bin/gravel for 200 steps, prints them (and press, density - the mass of every atom over the volume
-- and an equal-style variable of them) every 50 steps at %.12g: every value must agree to
-1e-10 relative. One line PASS/FAIL; without `lmp` it FAILs naming it
+bin/gravel for 200 steps, prints them (and press, density - the mass of
+every atom over the volume - and an equal-style variable of them) every 50
+steps at %.12g: every value must agree to 1e-10 relative. A second deck prints c_thermo_temp and c_thermo_temp[1..6]
+(the kinetic tensor: divided by the atom count in thermo under lj's norm
+yes, not in the variable that sums two of them), likewise. One line
+PASS/FAIL each; without `lmp` it FAILs naming it
 (tools/deps.sh installs the Debian package lammps)."""
 import os
 import shutil
@@ -43,6 +46,17 @@ run 200
 """
 
 
+# c_thermo_temp[1..6]: the thermo temperature's kinetic tensor, extensive (thermo divides it
+# by the atoms under lj's norm yes; a variable reads it as it is)
+TEMP_DECK = DECK.split("variable p equal")[0] + """variable t4 equal c_thermo_temp[4]+c_thermo_temp[1]
+thermo_style custom step c_thermo_temp c_thermo_temp[1] c_thermo_temp[2] c_thermo_temp[3] &
+  c_thermo_temp[4] c_thermo_temp[5] c_thermo_temp[6] v_t4
+thermo_modify format float %.12g
+thermo 50
+run 200
+"""
+
+
 def rows(cmd, cwd):
     rc, out = run(cmd, DECK, cwd, timeout=120)
     heads = [l.split() for l in out.splitlines() if l.split()[:2] == ["Step", "Press"]]
@@ -61,6 +75,13 @@ def main():
         bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
                if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
         ok = ok and rc2 == 0 and len(lm) == len(g) and gh == lh and not bad
+        rc, gt = run([GRAVEL], TEMP_DECK, tmp)
+        rc2, lt = run(["lmp"], TEMP_DECK, tmp)
+        g9, l9 = thermo_rows(gt, 9), thermo_rows(lt, 9)
+        badt = [(r[0], a, b) for r, s in zip(g9, l9) for a, b in zip(r, s)
+                if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
+        check("thermo_temp_vector_matches_lammps", rc == 0 and rc2 == 0 and len(g9) == 5 and
+              len(l9) == 5 and not badt, "%s\n%s\n%s" % (badt[:3], gt[-400:], lt[-400:]))
         check("thermo_press_matches_lammps", ok,
               "%s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:]))
     finally:
