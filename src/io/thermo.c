@@ -38,6 +38,8 @@ enum kw_id {
     KW_TEMP, KW_EPAIR, KW_EMOL, KW_CPUREMAIN, KW_PRESS,
     KW_PXX, KW_PYY, KW_PZZ, KW_PXY, KW_PXZ, KW_PYZ, KW_XY, KW_XZ, KW_YZ,
     KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA, KW_DENSITY,
+    KW_EVDWL, KW_ECOUL, KW_ELONG, KW_ETAIL, KW_EBOND, KW_EANGLE, KW_EDIHED, KW_EIMP,
+    KW_ENTHALPY, KW_FMAX, KW_FNORM, KW_NBUILD, KW_NDANGER, KW_XLAT, KW_YLAT, KW_ZLAT,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     /* c_thermo_temp[1..6]: its kinetic tensor (no keyword names) */
     KW_THERMO_TEMP_V, KW_THERMO_TEMP_V2, KW_THERMO_TEMP_V3, KW_THERMO_TEMP_V4, KW_THERMO_TEMP_V5,
@@ -101,6 +103,22 @@ static const struct {
     [KW_CELLBETA] = {"cellbeta", "CellBeta", V_FLOAT},
     [KW_CELLGAMMA] = {"cellgamma", "CellGamma", V_FLOAT},
     [KW_DENSITY] = {"density", "Density", V_FLOAT},
+    [KW_EVDWL] = {"evdwl", "E_vdwl", V_FLOAT},
+    [KW_ECOUL] = {"ecoul", "E_coul", V_FLOAT},
+    [KW_ELONG] = {"elong", "E_long", V_FLOAT},
+    [KW_ETAIL] = {"etail", "E_tail", V_FLOAT},
+    [KW_EBOND] = {"ebond", "E_bond", V_FLOAT},
+    [KW_EANGLE] = {"eangle", "E_angle", V_FLOAT},
+    [KW_EDIHED] = {"edihed", "E_dihed", V_FLOAT},
+    [KW_EIMP] = {"eimp", "E_impro", V_FLOAT},
+    [KW_ENTHALPY] = {"enthalpy", "Enthalpy", V_FLOAT},
+    [KW_FMAX] = {"fmax", "Fmax", V_FLOAT},
+    [KW_FNORM] = {"fnorm", "Fnorm", V_FLOAT},
+    [KW_NBUILD] = {"nbuild", "Nbuild", V_BIGINT},
+    [KW_NDANGER] = {"ndanger", "Ndanger", V_BIGINT},
+    [KW_XLAT] = {"xlat", "Xlat", V_FLOAT},
+    [KW_YLAT] = {"ylat", "Ylat", V_FLOAT},
+    [KW_ZLAT] = {"zlat", "Zlat", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
     [KW_THERMO_TEMP_V] = {"", "c_thermo_temp[1]", V_FLOAT},
     [KW_THERMO_TEMP_V2] = {"", "c_thermo_temp[2]", V_FLOAT},
@@ -115,7 +133,8 @@ static const struct {
 static int needs_host(int k)
 {
     return k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS ||
-           (k >= KW_PXX && k <= KW_PYZ) || k == KW_DENSITY;
+           (k >= KW_PXX && k <= KW_PYZ) || k == KW_DENSITY || k == KW_ENTHALPY || k == KW_FMAX ||
+           k == KW_FNORM;
 }
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
@@ -657,6 +676,28 @@ static double kinetic_energy(struct gravel *g)
     return ke;
 }
 
+/* LAMMPS's fmax (the largest force component in magnitude) or fnorm (the
+ * length of the whole force vector), in tag order (one process: several
+ * ranks refuse both, src/parallel/par.c) */
+static double force_norm(struct gravel *g, int max)
+{
+    const struct atoms *a = &g->atoms;
+    const int *ord = atoms_tag_order(g);
+    struct par_sum s = {0};
+    double m = 0.0;
+    for (int k = 0; k < a->n; k++) {
+        const double *f = a->f + 3 * ord[k];
+        for (int d = 0; d < 3; d++)
+            m = fmax(m, fabs(f[d]));
+        par_sum_add(g, &s, a->tag[ord[k]], f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    }
+    if (max) {
+        par_sum_total(g, &s); /* releases it */
+        return m;
+    }
+    return sqrt(par_sum_total(g, &s));
+}
+
 /* the mass of every atom, summed in tag order over every rank's atoms */
 static double total_mass(struct gravel *g)
 {
@@ -774,6 +815,34 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
         return norm ? pe / natoms : pe;
     }
     case KW_EMOL: return 0.0;
+    case KW_EVDWL: { /* the pair style's energy: epair without fixes, as LAMMPS */
+        double pe = pair_energy(g);
+        return norm ? pe / natoms : pe;
+    }
+    /* no charges, long-range solvers, tail corrections or bonds in granular scenes */
+    case KW_ECOUL:
+    case KW_ELONG:
+    case KW_ETAIL:
+    case KW_EBOND:
+    case KW_EANGLE:
+    case KW_EDIHED:
+    case KW_EIMP: return 0.0;
+    case KW_ENTHALPY: { /* LAMMPS: etotal + press vol / nktv2p, vol per atom under norm */
+        double et = kinetic_energy(g) + pair_energy(g) + fix_energy_sum(g);
+        double v = volume(g);
+        if (norm) {
+            et /= natoms;
+            v /= natoms;
+        }
+        return et + pressure_scalar(g, temp_thermo(g)) * v;
+    }
+    case KW_FMAX:
+    case KW_FNORM: return force_norm(g, k == KW_FMAX);
+    case KW_NBUILD: *ival = g->eng ? g->eng->st.nbuilds : 0; return (double)*ival;
+    case KW_NDANGER: *ival = g->eng ? g->eng->st.ndanger : 0; return (double)*ival;
+    case KW_XLAT:
+    case KW_YLAT:
+    case KW_ZLAT: return g->dom.lat.a[k - KW_XLAT];
     case KW_TEMP: return temp_scalar(g, temp_thermo(g)); /* intensive */
     case KW_THERMO_TEMP: return temp_scalar(g, &g->thermo.temp);
     case KW_THERMO_TEMP_V:

@@ -267,7 +267,9 @@ static void check_scene(struct gravel *g)
                                      "zlo", "zhi", "xy", "xz", "yz", "cella", "cellb", "cellc",
                                      "cellalpha", "cellbeta", "cellgamma", "press", "pxx",
                                      "pyy", "pzz", "pxy", "pxz", "pyz", "epair", "emol", "pe",
-                                     "etotal", "density", NULL};
+                                     "etotal", "density", "evdwl", "ecoul", "elong", "etail",
+                                     "ebond", "eangle", "edihed", "eimp", "nbuild", "ndanger",
+                                     "xlat", "ylat", "zlat", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
         if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """lammps_thermo_press.py - LAMMPS's implicit computes thermo_press and
-thermo_temp's vector, and the thermo keyword density.
+thermo_temp's vector, and the thermo keywords density, evdwl, ecoul, elong,
+etail, ebond, eangle, edihed, eimp, enthalpy, fmax, fnorm, nbuild, ndanger,
+xlat, ylat, zlat.
 
 LAMMPS defines `compute thermo_press all pressure thermo_temp` by itself;
 decks read it as c_thermo_press and c_thermo_press[1..6] (pxx pyy pzz pxy
@@ -10,7 +12,9 @@ bin/gravel for 200 steps, prints them (and press, density - the mass of
 every atom over the volume - and an equal-style variable of them) every 50
 steps at %.12g: every value must agree to 1e-10 relative. A second deck prints c_thermo_temp and c_thermo_temp[1..6]
 (the kinetic tensor: divided by the atom count in thermo under lj's norm
-yes, not in the variable that sums two of them), likewise. One line
+yes, not in the variable that sums two of them), likewise; a third, 1000
+steps, the other keywords above, to 1e-9 (fnorm's sum of squares in tag
+order here, in atom order there). One line
 PASS/FAIL each; without `lmp` it FAILs naming it
 (tools/deps.sh installs the Debian package lammps)."""
 import os
@@ -57,6 +61,17 @@ run 200
 """
 
 
+# LAMMPS's other thermo keywords: the energies a granular scene has none of (0), evdwl
+# (the pair energy), enthalpy, fmax, fnorm, nbuild, ndanger and the lattice spacings
+KW_DECK = DECK.split("variable p equal")[0] + """lattice sc 1.5
+thermo_style custom step evdwl ecoul elong etail ebond eangle edihed eimp enthalpy fmax &
+  fnorm nbuild ndanger xlat ylat zlat
+thermo_modify format float %.12g
+thermo 100
+run 1000
+"""
+
+
 def rows(cmd, cwd):
     rc, out = run(cmd, DECK, cwd, timeout=120)
     heads = [l.split() for l in out.splitlines() if l.split()[:2] == ["Step", "Press"]]
@@ -82,6 +97,13 @@ def main():
                 if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
         check("thermo_temp_vector_matches_lammps", rc == 0 and rc2 == 0 and len(g9) == 5 and
               len(l9) == 5 and not badt, "%s\n%s\n%s" % (badt[:3], gt[-400:], lt[-400:]))
+        rc, gk = run([GRAVEL], KW_DECK, tmp)
+        rc2, lk = run(["lmp"], KW_DECK, tmp)
+        g17, l17 = thermo_rows(gk, 17), thermo_rows(lk, 17)
+        badk = [(r[0], a, b) for r, s in zip(g17, l17) for a, b in zip(r, s)
+                if abs(a - b) > 1e-9 * max(abs(b), 1e-12)]
+        check("thermo_keywords_more_match_lammps", rc == 0 and rc2 == 0 and len(g17) == 11 and
+              len(l17) == 11 and not badk, "%s\n%s\n%s" % (badk[:3], gk[-400:], lk[-400:]))
         check("thermo_press_matches_lammps", ok,
               "%s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:]))
     finally:
