@@ -10,7 +10,8 @@ pxz pyz) in thermo_style and in variables. One deck of 64 spheres between
 two wall/gran planes, run unchanged by `lmp` (LAMMPS 2021, one process) and
 bin/gravel for 200 steps, prints them (and press, density - the mass of
 every atom over the volume - and an equal-style variable of them) every 50
-steps at %.12g: every value must agree to 1e-10 relative. A second deck prints c_thermo_temp and c_thermo_temp[1..6]
+steps at %.12g: every value must agree to 1e-10 relative. A second deck
+prints c_thermo_temp and c_thermo_temp[1..6]
 (the kinetic tensor: divided by the atom count in thermo under lj's norm
 yes, not in the variable that sums two of them), likewise; a third, 1000
 steps, the other keywords above, to 1e-9 (fnorm's sum of squares in tag
@@ -52,7 +53,8 @@ run 200
 
 # c_thermo_temp[1..6]: the thermo temperature's kinetic tensor, extensive (thermo divides it
 # by the atoms under lj's norm yes; a variable reads it as it is)
-TEMP_DECK = DECK.split("variable p equal")[0] + """variable t4 equal c_thermo_temp[4]+c_thermo_temp[1]
+TEMP_DECK = DECK.split("variable p equal")[0] + """\
+variable t4 equal c_thermo_temp[4]+c_thermo_temp[1]
 thermo_style custom step c_thermo_temp c_thermo_temp[1] c_thermo_temp[2] c_thermo_temp[3] &
   c_thermo_temp[4] c_thermo_temp[5] c_thermo_temp[6] v_t4
 thermo_modify format float %.12g
