@@ -363,10 +363,10 @@ static void check_keyword(struct gravel *g, const char *s)
             gr_error(g, "could not find thermo custom fix ID '%s'", id);
         return;
     }
-    gr_error(g, "unknown keyword '%s' (known: step elapsed elaplong dt time cpu tpcpu spcpu atoms ke pe "
-                "etotal vol lx ly lz xlo xhi ylo yhi zlo zhi temp press epair emol cpuremain c_ID "
-                "c_ID[N] "
-                "v_name)", s);
+    gr_error(g, "unknown keyword '%s' (known: step elapsed elaplong dt time cpu tpcpu spcpu "
+                "atoms ke pe etotal vol density lx ly lz xlo xhi ylo yhi zlo zhi xy xz yz temp "
+                "press pxx ... pyz epair evdwl emol enthalpy fmax fnorm nbuild ndanger xlat ylat "
+                "zlat cella ... cellgamma cpuremain c_ID c_ID[N] f_ID v_name)", s);
 }
 
 /* A new thermo_style drops thermo_modify settings, as in LAMMPS. */
