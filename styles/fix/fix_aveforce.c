@@ -8,7 +8,6 @@
  * vector (f_ID[1..3], extensive): the group's total force before the fix.
  * LAMMPS's `region` keyword and atom-style variables are refused. */
 #include <stdlib.h>
-#include <string.h>
 
 #include "device.h"
 #include "error.h"
@@ -35,19 +34,9 @@ static void destroy(struct fix *f)
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
-    if (argc < 3)
-        gr_error(g, "fix aveforce expects fx fy fz (each a number, NULL or v_name)");
-    if (argc > 3) {
-        if (!strcmp(argv[3], "region"))
-            gr_error(g, "fix aveforce: keyword region is not supported yet (define a group "
-                        "of the region's atoms: group ID region R)");
-        gr_error(g, "fix aveforce: unknown keyword '%.64s'", argv[3]);
-    }
     struct aveforce *a = gr_calloc(g, 1, sizeof *a);
     f->data = a;
-    force_values_parse(g, &a->fv, argv, 1, WHO);
-    f->hooks = HOOK_POST_FORCE;
-    f->sources[f->nsources++] = "fix_setforce.cl";
+    force_values_create(g, f, &a->fv, argc, argv, WHO);
 }
 
 static void init(struct gravel *g, struct fix *f)

@@ -6,7 +6,6 @@
  * the fix at the last step (force_values.h). LAMMPS's `region` keyword and
  * atom-style variables are refused. */
 #include <stdlib.h>
-#include <string.h>
 
 #include "error.h"
 #include "fix.h"
@@ -25,19 +24,9 @@ static void destroy(struct fix *f)
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
-    if (argc < 3)
-        gr_error(g, "fix setforce expects fx fy fz (each a number, NULL or v_name)");
-    if (argc > 3) {
-        if (!strcmp(argv[3], "region"))
-            gr_error(g, "fix setforce: keyword region is not supported yet (define a group "
-                        "of the region's atoms: group ID region R)");
-        gr_error(g, "fix setforce: unknown keyword '%.64s'", argv[3]);
-    }
     struct force_values *fv = gr_calloc(g, 1, sizeof *fv);
     f->data = fv;
-    force_values_parse(g, fv, argv, 1, WHO);
-    f->hooks = HOOK_POST_FORCE;
-    f->sources[f->nsources++] = "fix_setforce.cl";
+    force_values_create(g, f, fv, argc, argv, WHO);
 }
 
 static void init(struct gravel *g, struct fix *f)

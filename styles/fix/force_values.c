@@ -35,6 +35,22 @@ void force_values_parse(struct gravel *g, struct force_values *fv, char **argv, 
     }
 }
 
+void force_values_create(struct gravel *g, struct fix *f, struct force_values *fv, int argc,
+                         char **argv, const char *who)
+{
+    if (argc < 3)
+        gr_error(g, "%s expects fx fy fz (each a number, NULL or v_name)", who);
+    if (argc > 3) {
+        if (!strcmp(argv[3], "region"))
+            gr_error(g, "%s: keyword region is not supported yet (define a group of the "
+                        "region's atoms: group ID region R)", who);
+        gr_error(g, "%s: unknown keyword '%.64s'", who, argv[3]);
+    }
+    force_values_parse(g, fv, argv, 1, who);
+    f->hooks = HOOK_POST_FORCE;
+    f->sources[f->nsources++] = "fix_setforce.cl";
+}
+
 void force_values_init(struct gravel *g, struct fix *f, struct force_values *fv,
                        const char *who)
 {

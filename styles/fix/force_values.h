@@ -16,6 +16,10 @@ struct force_values {
     cl_kernel k;
 };
 
+/* fix setforce's and aveforce's arguments, fx fy fz and no keyword (LAMMPS's
+ * `region` is refused), into fv; the post_force hook and the kernel file */
+void force_values_create(struct gravel *g, struct fix *f, struct force_values *fv, int argc,
+                         char **argv, const char *who);
 /* argv[0..2] as above; NULL is allowed only with allow_null (setforce) */
 void force_values_parse(struct gravel *g, struct force_values *fv, char **argv, int allow_null,
                         const char *who);
