@@ -454,8 +454,8 @@ static double step_function(struct ep *e, const char *fn, const double *a)
         return multiple < y ? (double)(multiple + 1) * (double)lower : (double)lower * (double)z;
     }
     if (!strcmp(fn, "logfreq2")) {
-        if (x <= 0 || y <= 0 || z <= 0)
-            step_invalid(e, fn, "needs x, y, z > 0");
+        if (x <= 0 || y <= 0 || z <= 1) /* z = 1: LAMMPS's loop would never end */
+            step_invalid(e, fn, "needs x, y > 0 and z > 1");
         double v = (double)x;
         if (step >= x) {
             double delta = (double)x * ((double)z - 1.0) / (double)y;

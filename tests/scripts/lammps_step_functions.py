@@ -196,6 +196,9 @@ print "between $(v_r:%.15g) $(v_st:%.15g)"
             "logfreq3_past_last_step": ("reset_timestep 2000\nprint $(logfreq3(10,20,1000))\n",
                                         "ERROR: print: logfreq3(): the step 2000 is past its "
                                         "last step 1000 in expression"),
+            "logfreq2_factor_one": ("print $(logfreq2(10,4,1))\n", "ERROR: print: invalid "
+                                    "logfreq2() arguments: needs x, y > 0 and z > 1 in "
+                                    "expression"),
             "step_argument_beyond_2_62": ("print $(stride(1,1e30,3))\n", "ERROR: print: "
                                           "stride(): argument 1e+30 is not a usable step count "
                                           "in expression"),
