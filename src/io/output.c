@@ -52,13 +52,9 @@ static void dump_every_var(struct gravel *g)
         struct dump *d = g->styles.dump[i];
         if (!d->every_var || d->next_dump >= 0)
             continue;
-        if (!var_retrieve(g, d->every_var))
-            gr_error(g, "dump %s: every variable '%s' is not defined", d->id, d->every_var);
-        double v = var_compute_equal(g, d->every_var);
-        if (!(v > (double)g->step && v < 9223372036854775808.0))
-            gr_error(g, "dump %s: every variable '%s' returned %g, which is not a step after "
-                        "%lld", d->id, d->every_var, v, (long long)g->step);
-        d->next_dump = (bigint)v;
+        char who[GR_NAMELEN + 32];
+        snprintf(who, sizeof who, "dump %s: every variable", d->id);
+        d->next_dump = var_next_step(g, d->every_var, g->step, who);
     }
 }
 
@@ -68,13 +64,7 @@ static bigint next_thermo(struct gravel *g, bigint step)
     struct thermo_settings *t = &g->thermo;
     bigint next;
     if (t->every_var) {
-        double v = var_compute_equal(g, t->every_var);
-        if (!(v > (double)step && v < 9223372036854775808.0)) /* a step, after this one */
-            gr_error(g, "thermo: variable '%s' returned %g, which is not a step after %lld",
-                     t->every_var, v, (long long)step);
-        next = (bigint)v;
-        if (next <= step)
-            next = step + 1;
+        next = var_next_step(g, t->every_var, step, "thermo: variable");
     } else if (t->every > 0) {
         next = (step / t->every) * t->every + t->every;
     } else {

@@ -372,6 +372,18 @@ double var_compute_equal_depth(struct gravel *g, const char *name, int depth)
     return expr_eval_depth(g, text, depth + 1);
 }
 
+bigint var_next_step(struct gravel *g, const char *name, bigint step, const char *who)
+{
+    if (!var_exists(g, name))
+        gr_error(g, "%s '%s' is not defined", who, name);
+    double v = var_compute_equal(g, name);
+    if (!(v > (double)step && v < 9223372036854775808.0))
+        gr_error(g, "%s '%s' returned %g, which is not a step after %lld", who, name, v,
+                 (long long)step);
+    bigint next = (bigint)v;
+    return next > step ? next : step + 1; /* a step just after: (double)step rounded up */
+}
+
 double var_compute_equal(struct gravel *g, const char *name)
 {
     return var_compute_equal_depth(g, name, 0);

@@ -29,6 +29,11 @@ const char *var_retrieve(struct gravel *g, const char *name);
 int var_exists(struct gravel *g, const char *name);
 /* Numeric value of variable `name`; error if undefined or not numeric. */
 double var_compute_equal(struct gravel *g, const char *name);
+/* The step an equal-style variable gives as the next one after `step`
+ * (thermo, dump_modify every, fix print with v_name): an error "WHO 'NAME'
+ * is not defined", or "WHO 'NAME' returned V, which is not a step after
+ * STEP" unless step < V < 2^63. */
+bigint var_next_step(struct gravel *g, const char *name, bigint step, const char *who);
 /* Atom-style variables (`variable NAME atom formula`): 1 if NAME is one;
  * its value for every host atom (g->atoms.n values, host order, the host
  * arrays synced first during a run) into out; var_check_atom raises

@@ -8,6 +8,7 @@
  * an equal-style variable giving the step of the next print (LAMMPS: the
  * first one evaluated at the run's setup, each next after a print; a value
  * not after the step is an error). The group is not used. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -93,18 +94,9 @@ static bigint next_print(struct gravel *g, struct fix *f, bigint step)
     struct print *p = f->data;
     if (!p->var)
         return (step / p->every) * p->every + p->every;
-    double v = var_compute_equal(g, p->var);
-    if (!(v > (double)step && v < 9223372036854775808.0))
-        gr_error(g, "fix %s print: variable '%s' returned %g, which is not a step after %lld",
-                 f->id, p->var, v, (long long)step);
-    return (bigint)v;
-}
-
-static void init(struct gravel *g, struct fix *f)
-{
-    struct print *p = f->data;
-    if (p->var && !var_retrieve(g, p->var))
-        gr_error(g, "fix %s print: variable '%s' is not defined", f->id, p->var);
+    char who[GR_NAMELEN + 32];
+    snprintf(who, sizeof who, "fix %s print: variable", f->id);
+    return var_next_step(g, p->var, step, who);
 }
 
 static void print_now(struct gravel *g, struct fix *f)
@@ -139,7 +131,6 @@ const struct fix_style fix_style_print = {
     .name = "print",
     .flags = FIX_OUTPUT,
     .create = create,
-    .init = init,
     .setup = setup,
     .end_of_step = print_now,
     .destroy = destroy,
