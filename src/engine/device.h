@@ -175,8 +175,10 @@ struct engine {
     cl_kernel k_box_remap;      /* box_remap, for box changes in a run (src/engine/box_change.c) */
     cl_kernel k_box_flip;       /* box_image_flip, for box flips */
     /* the virial taken before a box change moved the atoms (pressure.h):
-     * valid for step virial_snap_step only (-1: none) */
+     * valid for step virial_snap_step only (-1: none); per particle too
+     * (6 doubles each, device order) */
     double virial_snap[6];
+    double *virial_snap_atoms;
     bigint virial_snap_step;
     /* velocity remap of a deforming box (box_change_vremap): LAMMPS's
      * h_rate (6 REAL) and the group it applies to (0: none) */

@@ -644,6 +644,7 @@ void engine_destroy(struct gravel *g)
         clReleaseMemObject(e->pair_param);
     if (e->virial)
         clReleaseMemObject(e->virial);
+    free(e->virial_snap_atoms);
     if (e->recq)
         clReleaseMemObject(e->recq);
     free(e->tag_seen);

@@ -4,6 +4,7 @@
 #include "par_sum.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "atoms.h"
 #include "device.h"
@@ -25,22 +26,18 @@ cl_mem pressure_scratch(struct gravel *g)
     return e->virial;
 }
 
-void pressure_virial(struct gravel *g, double w[6])
+/* The pair virial of each of the n device particles (pair_virial), 6
+ * doubles each in device order, malloc'd; NULL when there is none (no pair
+ * style, outside a run). */
+static double *virial_of_atoms(struct gravel *g, int n)
 {
-    for (int d = 0; d < 6; d++)
-        w[d] = 0.0;
     struct engine *e = g->eng;
     if (!e || !e->active || !e->k_pair || !e->k_virial)
-        return;
-    if (e->virial_snap_step == g->step) {
-        for (int d = 0; d < 6; d++)
-            w[d] = e->virial_snap[d];
-        return;
-    }
+        return NULL;
+    double *wi = gr_malloc(g, ((size_t)n + 1) * 6 * sizeof(double));
+    if (n <= 0)
+        return wi;
     const struct nbr_list *l = nbr_list(g);
-    int n = e->a.n;
-    if (n <= 0 && !par_on(g)) /* a rank without atoms still joins the sum */
-        return;
     pressure_scratch(g);
     cl_kernel k = e->k_virial;
     int a = 0;
@@ -54,17 +51,56 @@ void pressure_virial(struct gravel *g, double w[6])
     eng_arg_mem(g, k, a++, e->a.x);
     a = nbr_arg_box(g, k, a, l);
     eng_arg_mem(g, k, a++, e->virial);
-    if (n > 0)
-        eng_launch(g, k, (size_t)n);
-    double *wi = gr_malloc(g, ((size_t)n + 1) * 6 * sizeof(double));
+    eng_launch(g, k, (size_t)n);
     eng_read_reals(g, e->virial, 6 * (size_t)n, wi);
-    const int *order = eng_tag_order(g); /* sum in tag order, every rank's atoms */
+    return wi;
+}
+
+/* w = the sum of the n particles' virials wi, in tag order over every
+ * rank's atoms */
+static void virial_sum(struct gravel *g, const double *wi, int n, double w[6])
+{
+    struct engine *e = g->eng;
+    const int *order = eng_tag_order(g);
     for (int d = 0; d < 6; d++) {
         struct par_sum s = {0};
         for (int k2 = 0; k2 < n; k2++)
             par_sum_add(g, &s, e->tag_seen[order[k2]], wi[6 * order[k2] + d]);
         w[d] = par_sum_total(g, &s);
     }
+}
+
+void pressure_virial(struct gravel *g, double w[6])
+{
+    for (int d = 0; d < 6; d++)
+        w[d] = 0.0;
+    struct engine *e = g->eng;
+    if (!e || !e->active || !e->k_pair || !e->k_virial)
+        return;
+    if (e->virial_snap_step == g->step) {
+        for (int d = 0; d < 6; d++)
+            w[d] = e->virial_snap[d];
+        return;
+    }
+    int n = e->a.n;
+    if (n <= 0 && !par_on(g)) /* a rank without atoms still joins the sum */
+        return;
+    double *wi = virial_of_atoms(g, n);
+    virial_sum(g, wi, n, w);
+    free(wi);
+}
+
+void pressure_virial_atoms(struct gravel *g, double *w)
+{
+    struct engine *e = g->eng;
+    int n = e && e->active ? e->a.n : 0;
+    if (n > 0 && e->virial_snap_step == g->step && e->virial_snap_atoms) {
+        memcpy(w, e->virial_snap_atoms, 6 * (size_t)n * sizeof(double));
+        return;
+    }
+    double *wi = virial_of_atoms(g, n);
+    for (size_t k = 0; k < 6 * (size_t)g->atoms.n; k++)
+        w[k] = wi && k < 6 * (size_t)n ? wi[k] : 0.0;
     free(wi);
 }
 
@@ -91,10 +127,13 @@ void pressure_virial_snapshot(struct gravel *g)
     struct engine *e = g->eng;
     if (!e || !e->active || e->virial_snap_step == g->step)
         return;
-    double w[6];
-    pressure_virial(g, w);
+    int n = e->a.n;
+    free(e->virial_snap_atoms); /* per particle too, for compute stress/atom */
+    e->virial_snap_atoms = virial_of_atoms(g, n);
     for (int d = 0; d < 6; d++)
-        e->virial_snap[d] = w[d];
+        e->virial_snap[d] = 0.0;
+    if (e->virial_snap_atoms && (n > 0 || par_on(g)))
+        virial_sum(g, e->virial_snap_atoms, n, e->virial_snap);
     e->virial_snap_step = g->step;
 }
 

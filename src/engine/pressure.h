@@ -19,6 +19,11 @@
 /* The virial tensor W_xx, W_yy, W_zz, W_xy, W_xz, W_yz of the current step
  * (0 without a pair style or outside a run). */
 void pressure_virial(struct gravel *g, double w[6]);
+/* The pair virial of each host atom, w[6 i ..] = W_xx .. W_yz of atom i
+ * (1/2 of its contacts' del_a F_b, LAMMPS's per-atom virial; the host atoms
+ * are in device order during a run), zeros without a pair style or
+ * outside a run. One process. */
+void pressure_virial_atoms(struct gravel *g, double *w);
 /* Take the virial of this step now and return it for the rest of the step:
  * a box change (src/engine/box_change.c) calls it before it moves the atoms, since
  * pair_virial recomputes the separations from the positions (LAMMPS tallies

@@ -19,7 +19,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, check, expect_errors, run, thermo_rows  # noqa: E402
+from peer import GRAVEL, check, dump_steps, expect_errors, run, thermo_rows  # noqa: E402
 
 REL, ABS = 1e-8, 1e-12
 
@@ -57,25 +57,6 @@ run 1500
 """
 
 
-def snapshots(path):
-    snaps, cur, mode = {}, None, None
-    with open(path) as fh:
-        for line in fh:
-            if line.startswith("ITEM: TIMESTEP"):
-                mode = "t"
-            elif line.startswith("ITEM: ATOMS"):
-                mode = "a"
-            elif line.startswith("ITEM"):
-                mode = None
-            elif mode == "t":
-                cur, mode = int(line), None
-                snaps[cur] = {}
-            elif mode == "a":
-                w = line.split()
-                snaps[cur][int(w[0])] = [float(x) for x in w[1:]]
-    return snaps
-
-
 def close(a, b):
     return abs(a - b) <= max(REL * abs(b), ABS)
 
@@ -88,7 +69,7 @@ def main():
         os.mkdir(ldir)
         rc, gout = run([GRAVEL], DECK, gdir)
         g = thermo_rows(gout, 4)
-        gs = snapshots(os.path.join(gdir, "out.dump")) if rc == 0 else {}
+        gs = dump_steps(os.path.join(gdir, "out.dump")) if rc == 0 else {}
         moved = max((v[3] for s in gs.values() for v in s.values()), default=0)
         check("displace_erotate_run", rc == 0 and len(g) == 7 and sorted(gs) ==
               [0, 500, 1000, 1500] and moved > 1.0, "exit %d: %s" % (rc, gout[-600:]))
@@ -97,7 +78,7 @@ def main():
         else:
             rc, lout = run(["lmp"], DECK, ldir)
             lm = thermo_rows(lout, 4)
-            ls = snapshots(os.path.join(ldir, "out.dump")) if rc == 0 else {}
+            ls = dump_steps(os.path.join(ldir, "out.dump")) if rc == 0 else {}
             bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s) if not close(a, b)]
             bad += [(st, i, a, b) for st in ls for i in ls[st]
                     for a, b in zip(gs.get(st, {}).get(i, []), ls[st][i]) if not close(a, b)]

@@ -44,6 +44,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(__file__))
 from liggghts_stream import FAILURES, check_bad_decks, report, run_gravel, thermo  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "lib"))
+from peer import dump_steps  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 REF = os.path.join(ROOT, "tests", "reference", "liggghts_heat")
@@ -67,26 +69,6 @@ def deck(form, liggghts):
         text = text.replace("vx vy vz temperature", "vx vy vz f_Temp[0]")
         text = text.replace("format float %.17g", "format \"%d" + " %.17g" * 7 + "\"")
     return text
-
-
-def dump_steps(path):
-    """LAMMPS text dump: {step: {id: [x, y, z, vx, vy, vz, T]}}."""
-    op = gzip.open if path.endswith(".gz") else open
-    out, step, mode = {}, None, None
-    for line in op(path, "rt"):
-        if line.startswith("ITEM: TIMESTEP"):
-            mode = "t"
-        elif line.startswith("ITEM: ATOMS"):
-            mode = "a"
-        elif line.startswith("ITEM"):
-            mode = None
-        elif mode == "t":
-            step, mode = int(line), None
-            out[step] = {}
-        elif mode == "a":
-            w = line.split()
-            out[step][int(w[0])] = [float(v) for v in w[1:]]
-    return out
 
 
 def check_form(form):

@@ -23,33 +23,15 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import dump_steps  # noqa: E402
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
 TOL = 1e-6
 # the deck folders of tests/reference compared here (rigid/: rigid_small.py, by
 # unwrapped positions: gravel wraps atoms every step, LAMMPS at rebuilds)
 DECK_DIRS = ("pair_gran", "pair_granular", "wall_gran", "wall_gran_region")
-
-
-def read_dump(path):
-    """Frames of a LAMMPS text dump: {step: {id: [values...]}}."""
-    frames, lines, i = {}, open(path).read().split("\n"), 0
-    while i < len(lines):
-        if lines[i].startswith("ITEM: TIMESTEP"):
-            step = int(lines[i + 1])
-            n = int(lines[i + 3])
-            j = i + 4
-            while not lines[j].startswith("ITEM: ATOMS"):
-                j += 1
-            rows = {}
-            for line in lines[j + 1:j + 1 + n]:
-                w = line.split()
-                rows[int(w[0])] = [float(v) for v in w[1:]]
-            frames[step] = rows
-            i = j + 1 + n
-        else:
-            i += 1
-    return frames
 
 
 def run_gravel(deck, tmp, extra=()):
@@ -59,14 +41,14 @@ def run_gravel(deck, tmp, extra=()):
 
 def check_deck(deck, extra=(), tol=TOL, label=""):
     name = os.path.basename(deck)[:-3] + label
-    ref = read_dump(deck[:-3] + ".dump")
+    ref = dump_steps(deck[:-3] + ".dump")
     with tempfile.TemporaryDirectory() as tmp:
         r = run_gravel(deck, tmp, extra)
         if r.returncode != 0:
             print(f"  gravel failed on {name}: {r.stdout[-800:]}{r.stderr[-800:]}")
             print(f"FAIL lammps_{name}")
             return
-        got = read_dump(os.path.join(tmp, "out.dump"))
+        got = dump_steps(os.path.join(tmp, "out.dump"))
     worst, where = 0.0, ""
     ok = sorted(got) == sorted(ref) and len(ref) > 1
     for step in ref:

@@ -1,5 +1,7 @@
 """peer.py - what the decks-against-lmp tests share (tests/scripts/lammps_*.py):
-run one deck in a folder with a given command, report a case, read thermo rows."""
+run one deck in a folder with a given command, report a case, read thermo rows
+and text dumps."""
+import gzip
 import os
 import subprocess
 
@@ -24,8 +26,16 @@ def check(name, ok, detail=""):
 
 def thermo_rows(text, ncol):
     """the lines of ncol numbers whose first is a step, as lists of floats"""
-    return [[float(x) for x in l.split()] for l in text.splitlines()
-            if len(l.split()) == ncol and l.split()[0].isdigit()]
+    rows = []
+    for line in text.splitlines():
+        w = line.split()
+        if len(w) != ncol or not w[0].isdigit():
+            continue
+        try:
+            rows.append([float(x) for x in w])
+        except ValueError:  # a line of words, e.g. LAMMPS's "1 by 1 by 1 MPI processor grid"
+            pass
+    return rows
 
 
 def expect_errors(cases, head, cwd):
@@ -34,3 +44,25 @@ def expect_errors(cases, head, cwd):
     for name, (cmd, msg) in cases.items():
         rc, out = run([GRAVEL], head + cmd, cwd)
         check(name, rc == 1 and msg in out, out[-400:])
+
+
+def dump_steps(path):
+    """a LAMMPS text dump (gzip'd when it ends in .gz) as {step: {id: [values...]}},
+    the values those after the id column"""
+    op = gzip.open if path.endswith(".gz") else open
+    out, step, mode = {}, None, None
+    with op(path, "rt") as fh:
+        for line in fh:
+            if line.startswith("ITEM: TIMESTEP"):
+                mode = "t"
+            elif line.startswith("ITEM: ATOMS"):
+                mode = "a"
+            elif line.startswith("ITEM"):
+                mode = None
+            elif mode == "t":
+                step, mode = int(line), None
+                out[step] = {}
+            elif mode == "a":
+                w = line.split()
+                out[step][int(w[0])] = [float(v) for v in w[1:]]
+    return out
