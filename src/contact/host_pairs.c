@@ -209,40 +209,80 @@ static double type_cut(const struct pair *p, const struct pair_caps *caps, int i
     return ri + rj;
 }
 
+/* LAMMPS 2021 init_one's cut-off of every type pair, cut[i (nt + 1) + j]
+ * (malloc'd), from the largest radii of each type's dynamic and frozen (fix
+ * freeze) atoms present now, frozen-frozen excluded; *cmax their largest. */
+static double *type_cuts(struct gravel *g, const char *who, double *cmax)
+{
+    const struct atoms *a = &g->atoms;
+    int nt = a->ntypes > 0 ? a->ntypes : 1;
+    const struct pair *p = g->styles.pair;
+    if (!p)
+        gr_error(g, "%s: cutoff type needs a pair style (or use cutoff radius)", who);
+    double *dyn = gr_calloc(g, (size_t)(2 * nt + 2), sizeof *dyn), *fro = dyn + nt + 1;
+    unsigned frozen = fix_frozen_groupbit(g);
+    for (int k = 0; k < a->n; k++) {
+        double *m = (a->mask[k] & frozen) ? fro : dyn;
+        if (a->radius[k] > m[a->type[k]])
+            m[a->type[k]] = a->radius[k];
+    }
+    struct pair_caps caps;
+    pair_describe(p, &caps);
+    double *cut = gr_calloc(g, (size_t)(nt + 1) * (nt + 1), sizeof *cut);
+    *cmax = 0;
+    for (int i = 1; i <= nt; i++)
+        for (int j = 1; j <= nt; j++) {
+            double c = type_cut(p, &caps, i, j, dyn[i], dyn[j]);
+            c = fmax(c, type_cut(p, &caps, i, j, fro[i], dyn[j]));
+            c = fmax(c, type_cut(p, &caps, i, j, dyn[i], fro[j]));
+            cut[i * (nt + 1) + j] = c;
+            *cmax = fmax(*cmax, c);
+        }
+    free(dyn);
+    return cut;
+}
+
+double host_pairs_cutforce(struct gravel *g, const char *who)
+{
+    double cmax;
+    free(type_cuts(g, who, &cmax));
+    return cmax;
+}
+
+int host_pairs_excluded(const struct gravel *g, int i, int j)
+{
+    const struct atoms *a = &g->atoms;
+    const struct neigh_settings *ns = &g->neigh;
+    unsigned mi = a->mask[i], mj = a->mask[j];
+    for (int k = 0; k < ns->nexclude_type; k++) {
+        int t1 = ns->exclude_type[k][0], t2 = ns->exclude_type[k][1];
+        if ((a->type[i] == t1 && a->type[j] == t2) || (a->type[i] == t2 && a->type[j] == t1))
+            return 1;
+    }
+    for (int k = 0; k < ns->nexclude; k++) {
+        unsigned b1 = 1u << ns->exclude_group[k][0], b2 = 1u << ns->exclude_group[k][1];
+        if (((mi & b1) && (mj & b2)) || ((mi & b2) && (mj & b1)))
+            return 1;
+    }
+    for (int k = 0; k < ns->nexclude_mol && a->mol; k++) {
+        unsigned b = 1u << ns->exclude_mol[k][0];
+        if ((mi & b) && (mj & b) && ((a->mol[i] == a->mol[j]) == (ns->exclude_mol[k][1] != 0)))
+            return 1;
+    }
+    return 0;
+}
+
 int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct host_pair **out,
                      const char *who)
 {
     const struct atoms *a = &g->atoms;
     int nt = a->ntypes > 0 ? a->ntypes : 1;
-    double *dyn = gr_calloc(g, (size_t)(2 * nt + 2), sizeof *dyn), *fro = dyn + nt + 1;
-    unsigned frozen = fix_frozen_groupbit(g);
     double rmax = 0;
-    for (int k = 0; k < a->n; k++) {
-        double *m = (a->mask[k] & frozen) ? fro : dyn;
-        if (a->radius[k] > m[a->type[k]])
-            m[a->type[k]] = a->radius[k];
-        if (a->radius[k] > rmax)
-            rmax = a->radius[k];
-    }
+    for (int k = 0; k < a->n; k++)
+        rmax = fmax(rmax, a->radius[k]);
     double *cut = NULL, cmax = 2 * rmax;
-    if (!radius) {
-        const struct pair *p = g->styles.pair;
-        if (!p)
-            gr_error(g, "%s: cutoff type needs a pair style (or use cutoff radius)", who);
-        struct pair_caps caps;
-        pair_describe(p, &caps);
-        cut = gr_calloc(g, (size_t)(nt + 1) * (nt + 1), sizeof *cut);
-        cmax = 0;
-        for (int i = 1; i <= nt; i++)
-            for (int j = 1; j <= nt; j++) {
-                double c = type_cut(p, &caps, i, j, dyn[i], dyn[j]);
-                c = fmax(c, type_cut(p, &caps, i, j, fro[i], dyn[j]));
-                c = fmax(c, type_cut(p, &caps, i, j, dyn[i], fro[j]));
-                cut[i * (nt + 1) + j] = c;
-                cmax = fmax(cmax, c);
-            }
-    }
-    free(dyn);
+    if (!radius)
+        cut = type_cuts(g, who, &cmax);
     *out = NULL;
     if (!(cmax > 0)) {
         free(cut);
@@ -254,7 +294,7 @@ int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct hos
     for (int k = 0; k < np; k++) {
         int i = p[k].i, j = p[k].j;
         double c = radius ? a->radius[i] + a->radius[j] : cut[a->type[i] * (nt + 1) + a->type[j]];
-        if (p[k].rsq < c * c)
+        if (p[k].rsq < c * c && !host_pairs_excluded(g, i, j))
             p[m++] = p[k];
     }
     free(cut);

@@ -45,9 +45,20 @@ int host_pairs_find(struct gravel *g, double cut, unsigned bits_a, unsigned bits
  * two types' dynamic and frozen (fix freeze) atoms, frozen-frozen
  * excluded, through the style's caps.lammps2021_cut when it has one (pair
  * granular: JKR pull-off, its cutoff keyword), the radii of the atoms
- * present now. Same order and layout as host_pairs_find. */
+ * present now; pairs neigh_modify exclude removes are left out (as from
+ * LAMMPS's lists). Same order and layout as host_pairs_find. */
 int host_pairs_local(struct gravel *g, unsigned groupbit, int radius, struct host_pair **out,
                      const char *who);
+
+/* LAMMPS 2021's pair cut-off `cutforce`: the largest type-pair cut-off of
+ * host_pairs_local's `cutoff type`. Errors name `who` (no pair style). */
+double host_pairs_cutforce(struct gravel *g, const char *who);
+
+/* 1 when neigh_modify exclude keeps atoms i and j (host indices) out of the
+ * neighbor lists (a type pair, a group pair, molecule/intra or inter), the
+ * test the device's list build applies; LAMMPS's lists for its computes
+ * apply it too. */
+int host_pairs_excluded(const struct gravel *g, int i, int j);
 
 /* The engine's contact history of each pair (LAMMPS's fix neigh/history
  * values that Pair::single reads): hist[k * width + d] for pair k, seen from
