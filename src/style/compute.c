@@ -3,6 +3,7 @@
 #include "compute.h"
 
 #include <ctype.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +28,25 @@ static const struct compute_style *const compute_styles[] = {
 #undef FIX
 #undef DUMP
 #undef REGION
+
+void compute_temp_arg(struct gravel *g, const char *arg, char *id, const char *who)
+{
+    if (strlen(arg) >= GR_NAMELEN)
+        gr_error(g, "%s: temperature ID is too long", who);
+    snprintf(id, GR_NAMELEN, "%s", strcmp(arg, "NULL") ? arg : "");
+}
+
+struct temp_state *compute_temp_named(struct gravel *g, const char *id, const char *who)
+{
+    if (!id[0])
+        return NULL;
+    if (!strcmp(id, "thermo_temp") && !compute_find(g, "thermo_temp"))
+        return &g->thermo.temp; /* LAMMPS's implicit thermo_temp */
+    struct compute *t = compute_get(g, id, who);
+    if (!t->temp)
+        gr_error(g, "%s: compute %s (%s) is not a temperature", who, t->id, t->style->name);
+    return t->temp;
+}
 
 double compute_mvv2e(const struct gravel *g)
 {

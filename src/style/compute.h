@@ -137,6 +137,14 @@ void compute_init_all(struct gravel *g);
 /* Free every compute (called from styles_free on clear and destroy). */
 void compute_free_all(struct gravel *g);
 
+/* A temperature compute argument (compute pressure, stress/atom): copies ID
+ * into id (GR_NAMELEN), or "" for NULL; errors name `who`. */
+void compute_temp_arg(struct gravel *g, const char *arg, char *id, const char *who);
+/* The temperature named by such an ID ("": NULL; thermo_temp without a
+ * compute of that ID: the thermo temperature, as LAMMPS's implicit one);
+ * an error when the compute is not a temperature. */
+struct temp_state *compute_temp_named(struct gravel *g, const char *id, const char *who);
+
 /* Mass-velocity^2 to energy factor of the current units (1 in lj, si, cgs). */
 double compute_mvv2e(const struct gravel *g);
 

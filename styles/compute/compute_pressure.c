@@ -27,10 +27,7 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
         gr_error(g, "compute pressure needs a temperature compute ID (or NULL)");
     struct press *p = gr_calloc(g, 1, sizeof *p);
     c->data = p;
-    if (strlen(argv[0]) >= GR_NAMELEN)
-        gr_error(g, "compute pressure: temperature ID is too long");
-    if (strcmp(argv[0], "NULL"))
-        snprintf(p->temp_id, sizeof p->temp_id, "%s", argv[0]);
+    compute_temp_arg(g, argv[0], p->temp_id, "compute pressure");
     if (argc == 1) {
         p->keflag = p->virialflag = 1;
     } else {
@@ -61,16 +58,8 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
 
 static struct temp_state *temperature(struct gravel *g, struct compute *c)
 {
-    struct press *p = c->data;
-    if (!p->temp_id[0])
-        return NULL;
-    if (!strcmp(p->temp_id, "thermo_temp") && !compute_find(g, "thermo_temp"))
-        return &g->thermo.temp; /* LAMMPS's implicit thermo_temp */
-    struct compute *t = compute_get(g, p->temp_id, "compute pressure");
-    if (!t->temp)
-        gr_error(g, "compute pressure: compute %s (%s) is not a temperature", t->id,
-                 t->style->name);
-    return t->temp;
+    const struct press *p = c->data;
+    return compute_temp_named(g, p->temp_id, "compute pressure");
 }
 
 static void init(struct gravel *g, struct compute *c)

@@ -10,7 +10,6 @@
  * temperature compute or is NULL: gravel's temperatures remove no velocity
  * bias, so the velocities are the atoms' own either way. Atoms outside the
  * group get zeros. One process (it reads the device's contacts). */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,10 +28,7 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
         gr_error(g, "compute stress/atom needs a temperature compute ID (or NULL)");
     struct stress_atom *s = gr_calloc(g, 1, sizeof *s);
     c->data = s;
-    if (strlen(argv[0]) >= GR_NAMELEN)
-        gr_error(g, "compute stress/atom: temperature ID is too long");
-    if (strcmp(argv[0], "NULL"))
-        snprintf(s->temp_id, sizeof s->temp_id, "%s", argv[0]);
+    compute_temp_arg(g, argv[0], s->temp_id, "compute stress/atom");
     s->keflag = s->pairflag = argc == 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "ke"))
@@ -53,12 +49,7 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
 static void init(struct gravel *g, struct compute *c)
 {
     const struct stress_atom *s = c->data;
-    if (!s->temp_id[0] || (!strcmp(s->temp_id, "thermo_temp") && !compute_find(g, "thermo_temp")))
-        return;
-    struct compute *t = compute_get(g, s->temp_id, "compute stress/atom");
-    if (!t->temp)
-        gr_error(g, "compute stress/atom: compute %s (%s) is not a temperature", t->id,
-                 t->style->name);
+    compute_temp_named(g, s->temp_id, "compute stress/atom");
 }
 
 static void peratom(struct gravel *g, struct compute *c)

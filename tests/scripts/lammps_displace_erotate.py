@@ -19,31 +19,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, check, dump_steps, expect_errors, run, thermo_rows  # noqa: E402
+from peer import (GRAVEL, check, close, dump_steps, expect_errors,  # noqa: E402
+                  falling_bed, folders, run, thermo_rows)
 
 REL, ABS = 1e-8, 1e-12
 
-HEAD = """units lj
-atom_style sphere
-atom_modify map array
-comm_modify vel yes
-boundary p p f
-lattice sc 1.0 origin 0.5 0.5 0.5
-region box block 0 4 0 4 0 8
-region fill block 0 4 0 4 0 6
-create_box 1 box
-create_atoms 1 region fill
-set group all diameter 0.9 density 1.0
-velocity all create 3.0 87287 loop geom
-region top block INF INF INF INF 3 6 units box
-group top region top
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-fix 1 all nve/sphere
-fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
-fix g all gravity 1.0 vector 0 0 -1
-timestep 0.001
-"""
+HEAD = falling_bed()
 DECK = HEAD + """compute d top displace/atom
 compute e all erotate/sphere/atom
 compute es all reduce sum c_e
@@ -57,16 +38,10 @@ run 1500
 """
 
 
-def close(a, b):
-    return abs(a - b) <= max(REL * abs(b), ABS)
-
-
 def main():
     tmp = tempfile.mkdtemp()
     try:
-        gdir, ldir = os.path.join(tmp, "g"), os.path.join(tmp, "l")
-        os.mkdir(gdir)
-        os.mkdir(ldir)
+        gdir, ldir = folders(tmp, "g", "l")
         rc, gout = run([GRAVEL], DECK, gdir)
         g = thermo_rows(gout, 4)
         gs = dump_steps(os.path.join(gdir, "out.dump")) if rc == 0 else {}
@@ -79,9 +54,11 @@ def main():
             rc, lout = run(["lmp"], DECK, ldir)
             lm = thermo_rows(lout, 4)
             ls = dump_steps(os.path.join(ldir, "out.dump")) if rc == 0 else {}
-            bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s) if not close(a, b)]
+            bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+                   if not close(a, b, REL, ABS)]
             bad += [(st, i, a, b) for st in ls for i in ls[st]
-                    for a, b in zip(gs.get(st, {}).get(i, []), ls[st][i]) if not close(a, b)]
+                    for a, b in zip(gs.get(st, {}).get(i, []), ls[st][i])
+                    if not close(a, b, REL, ABS)]
             same_atoms = all(sorted(gs.get(st, {})) == sorted(ls[st]) for st in ls)
             check("displace_erotate_match_lammps", rc == 0 and len(lm) == len(g) and same_atoms
                   and sorted(ls) == sorted(gs) and not bad,

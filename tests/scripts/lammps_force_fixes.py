@@ -23,32 +23,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, ROOT, check, expect_errors, run, thermo_rows  # noqa: E402
+from peer import (GRAVEL, ROOT, check, expect_errors, falling_bed, folders, run,  # noqa: E402
+                  thermo_rows)
 
 REL = 1e-8
 
-HEAD = """units lj
-atom_style sphere
-atom_modify map array
-comm_modify vel yes
-boundary p p f
-lattice sc 1.0 origin 0.5 0.5 0.5
-region box block 0 4 0 4 0 8
-region fill block 0 4 0 4 0 6
-create_box 1 box
-create_atoms 1 region fill
-set group all diameter 0.9 density 1.0
-velocity all create 1.0 87287 loop geom
-region top block INF INF INF INF 3 6 units box
-group top region top
-group bot subtract all top
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-fix 1 all nve/sphere
-fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
-fix g all gravity 1.0 vector 0 0 -1
-timestep 0.001
-"""
+HEAD = falling_bed(temperature=1.0, extra="group bot subtract all top\n")
 DECK = HEAD + """variable push equal -0.05-0.0001*step
 variable side equal 0.2*sin(0.01*step)
 fix sf top setforce 0.0 NULL v_push
@@ -65,9 +45,7 @@ run 1000
 def main():
     tmp = tempfile.mkdtemp()
     try:
-        gdir, ldir = os.path.join(tmp, "g"), os.path.join(tmp, "l")
-        os.mkdir(gdir)
-        os.mkdir(ldir)
+        gdir, ldir = folders(tmp, "g", "l")
         rc, gout = run([GRAVEL], DECK, gdir)
         g = thermo_rows(gout, 12)
         check("setforce_addforce_run", rc == 0 and len(g) == 11,

@@ -22,33 +22,13 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, ROOT, check, expect_errors, run, thermo_rows  # noqa: E402
+from peer import (GRAVEL, ROOT, check, close, expect_errors,  # noqa: E402
+                  falling_bed, folders, run, thermo_rows)
 
 REL, ABS = 1e-8, 1e-12
 
-HEAD = """units lj
-atom_style sphere
-atom_modify map array
-comm_modify vel yes cutoff 3.0
-boundary p p f
-lattice sc 1.0 origin 0.5 0.5 0.5
-region box block 0 4 0 4 0 8
-region fill block 0 4 0 4 0 6
-create_box 2 box
-create_atoms 1 region fill
-set group all diameter 0.9 density 1.0
-velocity all create 3.0 87287 loop geom
-region top block INF INF INF INF 3 6 units box
-group top region top
-set group top type 2
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-neigh_modify exclude type 2 2
-fix 1 all nve/sphere
-fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
-fix g all gravity 1.0 vector 0 0 -1
-timestep 0.001
-"""
+HEAD = falling_bed(ntypes=2, comm="comm_modify vel yes cutoff 3.0",
+                   extra="set group top type 2\nneigh_modify exclude type 2 2\n")
 DECK = HEAD + """compute r all rdf 20 cutoff 1.9
 compute r2 all rdf 8 1 1 1 2 2 * * 2 cutoff 1.5
 fix a all ave/time 250 1 250 c_r[*] file rdf.txt mode vector format " %.15g"
@@ -82,16 +62,10 @@ def local_values(path):
     return sorted(vals)
 
 
-def close(a, b):
-    return abs(a - b) <= max(REL * abs(b), ABS)
-
-
 def main():
     tmp = tempfile.mkdtemp()
     try:
-        gdir, ldir = os.path.join(tmp, "g"), os.path.join(tmp, "l")
-        os.mkdir(gdir)
-        os.mkdir(ldir)
+        gdir, ldir = folders(tmp, "g", "l")
         rc, gout = run([GRAVEL], DECK, gdir)
         g = thermo_rows(gout, 6)
         files = ("rdf.txt", "rdf2.txt")
@@ -106,9 +80,11 @@ def main():
             rc, lout = run(["lmp"], DECK, ldir)
             lm = thermo_rows(lout, 6)
             ln = [numbers(os.path.join(ldir, f)) for f in files] if rc == 0 else [[], []]
-            bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s) if not close(a, b)]
+            bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+                   if not close(a, b, REL, ABS)]
             for mine, ref in zip(gn, ln):
-                bad += [(k, a, b) for k, (a, b) in enumerate(zip(mine, ref)) if not close(a, b)]
+                bad += [(k, a, b) for k, (a, b) in enumerate(zip(mine, ref))
+                        if not close(a, b, REL, ABS)]
             check("rdf_match_lammps", rc == 0 and len(lm) == len(g) and
                   [len(x) for x in gn] == [len(x) for x in ln] and not bad,
                   "lmp exit %d, differences %s" % (rc, bad[:3]))
@@ -116,11 +92,10 @@ def main():
                 os.path.join(gdir, "pl.dump")) else []
             ll = local_values(os.path.join(ldir, "pl.dump")) if rc == 0 else []
             check("pair_local_exclude_match_lammps", ll and len(gl) == len(ll) and
-                  all(close(a, b) for a, b in zip(gl, ll)),
+                  all(close(a, b, REL, ABS) for a, b in zip(gl, ll)),
                   "%d distances, lmp %d" % (len(gl), len(ll)))
         # on 2 MPI ranks (bin/gravel-mpi): the same files, byte for byte
-        mpi, mdir = os.path.join(ROOT, "bin", "gravel-mpi"), os.path.join(tmp, "m")
-        os.mkdir(mdir)
+        mpi, (mdir,) = os.path.join(ROOT, "bin", "gravel-mpi"), folders(tmp, "m")
         if shutil.which("mpirun") is None or not os.path.exists(mpi):
             check("rdf_two_ranks_same_files", False, "mpirun or bin/gravel-mpi missing")
         else:

@@ -26,31 +26,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, ROOT, check, dump_steps, expect_errors, run, thermo_rows  # noqa: E402
+from peer import (GRAVEL, ROOT, check, close, dump_steps, expect_errors, falling_bed,  # noqa: E402
+                  folders, run, thermo_rows)
 
 REL, ABS, DUMP_REL = 1e-8, 1e-10, 1e-8
 
-WALL = """units lj
-atom_style sphere
-atom_modify map array
-comm_modify vel yes
-boundary p p f
-lattice sc 1.0 origin 0.5 0.5 0.5
-region box block 0 4 0 4 0 8
-region fill block 0 4 0 4 0 6
-create_box 1 box
-create_atoms 1 region fill
-set group all diameter 0.9 density 1.0
-velocity all create 3.0 87287 loop geom
-region top block INF INF INF INF 3 6 units box
-group top region top
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
-fix 1 all nve/sphere
-fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
-fix g all gravity 1.0 vector 0 0 -1
-timestep 0.001
-"""
+WALL = falling_bed()
 WALL_RUN = WALL + """compute s all stress/atom NULL
 compute p top stress/atom thermo_temp pair
 compute k all stress/atom NULL ke
@@ -95,10 +76,6 @@ DECKS = {"wall": (WALL_RUN, 8, [0, 500, 1000, 1500]),
          "deform": (DEFORM_RUN, 6, [0, 400, 800, 1200])}
 
 
-def close(a, b):
-    return abs(a - b) <= max(REL * abs(b), ABS)
-
-
 def dump_differences(mine, ref):
     """(step, id, mine, ref) where a value is off by more than DUMP_REL of its
     snapshot's largest |value|"""
@@ -114,9 +91,7 @@ def dump_differences(mine, ref):
 
 def check_deck(name, tmp):
     deck, ncol, steps = DECKS[name]
-    gdir, ldir = os.path.join(tmp, name + "_g"), os.path.join(tmp, name + "_l")
-    os.mkdir(gdir)
-    os.mkdir(ldir)
+    gdir, ldir = folders(tmp, name + "_g", name + "_l")
     rc, gout = run([GRAVEL], deck, gdir)
     g = thermo_rows(gout, ncol)
     gs = dump_steps(os.path.join(gdir, "out.dump")) if rc == 0 else {}
@@ -132,7 +107,8 @@ def check_deck(name, tmp):
     rc, lout = run(["lmp"], deck, ldir)
     lm = thermo_rows(lout, ncol)
     ls = dump_steps(os.path.join(ldir, "out.dump")) if rc == 0 else {}
-    bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s) if not close(a, b)]
+    bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+           if not close(a, b, REL, ABS)]
     bad += dump_differences(gs, ls)
     same_atoms = all(sorted(gs.get(st, {})) == sorted(ls[st]) for st in ls)
     check("stress_atom_%s_match_lammps" % name, rc == 0 and len(lm) == len(g) and same_atoms
@@ -144,8 +120,7 @@ def main():
     try:
         for name in DECKS:
             check_deck(name, tmp)
-        edir = os.path.join(tmp, "errors")
-        os.mkdir(edir)
+        edir, = folders(tmp, "errors")
         expect_errors({
             "stress_atom_needs_temp_id": ("compute s all stress/atom\n",
                                           "ERROR: compute: compute stress/atom needs a "

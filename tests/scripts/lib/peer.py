@@ -66,3 +66,46 @@ def dump_steps(path):
                 w = line.split()
                 out[step][int(w[0])] = [float(v) for v in w[1:]]
     return out
+
+
+def folders(parent, *names):
+    """make parent/name for each name (the run folders of one test: "g" for gravel,
+    "l" for lmp, ...); returns their paths"""
+    paths = [os.path.join(parent, n) for n in names]
+    for p in paths:
+        os.mkdir(p)
+    return paths
+
+
+def close(a, b, rel, absolute):
+    """a within rel of b, or within absolute of it where b is near zero"""
+    return abs(a - b) <= max(rel * abs(b), absolute)
+
+
+def falling_bed(temperature=3.0, ntypes=1, comm="comm_modify vel yes", extra=""):
+    """the head of a deck that runs unchanged in lmp and gravel: 96 spheres of
+    diameter 0.9 on a simple cubic lattice, launched at `temperature`, in a box
+    periodic in x and y (4 x 4 x 8) falling under gravity onto a wall/gran floor,
+    gran/hooke/history, group top the upper half; `extra` lines come after the
+    groups (more groups, types, neigh_modify), ntypes atom types in the box"""
+    return """units lj
+atom_style sphere
+atom_modify map array
+%s
+boundary p p f
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 4 0 4 0 8
+region fill block 0 4 0 4 0 6
+create_box %d box
+create_atoms 1 region fill
+set group all diameter 0.9 density 1.0
+velocity all create %s 87287 loop geom
+region top block INF INF INF INF 3 6 units box
+group top region top
+%spair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
+fix g all gravity 1.0 vector 0 0 -1
+timestep 0.001
+""" % (comm, ntypes, temperature, extra)
