@@ -1,0 +1,416 @@
+/* fix_move.c - `fix ID group move style args [units box|lattice]`:
+ * prescribed motion of a group, as LAMMPS's fix move (kernels/fix_move.cl):
+ *   linear Vx Vy Vz            x = x0 + V t (NULL: that component integrated)
+ *   wiggle Ax Ay Az period     x = x0 + A sin(w t), v = A w cos(w t) (NULL: idem)
+ *   rotate Px Py Pz Rx Ry Rz period
+ *                              x0 turned about the axis R through P by w t,
+ *                              v = w R x (x - axis), omega = w R
+ *   variable v_dx v_dy v_dz v_vx v_vy v_vz
+ *                              equal-style variables (or NULL), evaluated each
+ *                              step: x = x0 + dx and/or v = vx per component;
+ *                              v alone drifts the atom, neither integrates it
+ * with t = (step - the step the fix was defined at) dt, w = 2 pi / period,
+ * x0 each atom's unwrapped position when the fix was defined (kept by atom
+ * ID), `units lattice` (the default) scaling V, A and P by the lattice
+ * spacings. The integrated components take LAMMPS's velocity-Verlet kicks.
+ * Output: the per-atom array x0 (f_ID[1..3]). reset_timestep moves the
+ * motion's clock with the steps (the motion continues where it stood);
+ * restart files keep x0 and the clock. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "device.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "tag_ref.h"
+#include "variable.h"
+
+enum move_style { MOVE_LINEAR, MOVE_WIGGLE, MOVE_ROTATE, MOVE_VARIABLE };
+
+struct move {
+    enum move_style style;
+    int given[3];               /* linear / wiggle: the component is not NULL */
+    double vec[3];              /* linear V, wiggle A (scaled) */
+    double point[3], runit[3];  /* rotate */
+    double omega;               /* wiggle, rotate: 2 pi / period */
+    char *var[6];               /* variable: dx dy dz vx vy vz (NULL: none) */
+    bigint time_origin;
+    struct tag_ref x0;          /* unwrapped positions when defined, by atom ID */
+    cl_mem tab, tablo;          /* x0 - origin on the device (tablo: low parts) */
+    int64_t ntab;
+    int stale;                  /* the device's origins are to be (re)written */
+    cl_kernel ini, fin;
+    double *out;                /* peratom_values */
+};
+
+static void destroy(struct fix *f)
+{
+    struct move *m = f->data;
+    if (!m)
+        return;
+    for (int k = 0; k < 6; k++)
+        free(m->var[k]);
+    tag_ref_free(&m->x0);
+    if (m->tab)
+        clReleaseMemObject(m->tab);
+    if (m->tablo)
+        clReleaseMemObject(m->tablo);
+    free(m->out);
+    free(m);
+}
+
+/* a number or NULL (*given 0) */
+static double number_or_null(struct gravel *g, const char *s, int *given, const char *what)
+{
+    *given = strcmp(s, "NULL") != 0;
+    return *given ? arg_double(g, s, what) : 0.0;
+}
+
+static int style_args(struct gravel *g, struct move *m, int argc, char **argv)
+{
+    static const char *const vnames[6] = {"dx", "dy", "dz", "vx", "vy", "vz"};
+    const char *s = argv[0];
+    int need = !strcmp(s, "linear")   ? 4
+               : !strcmp(s, "wiggle") ? 5
+               : !strcmp(s, "rotate") ? 8
+               : !strcmp(s, "variable") ? 7
+                                        : 0;
+    if (!need)
+        gr_error(g, "fix move: unknown style '%.64s' (linear, wiggle, rotate, variable)", s);
+    if (argc < need)
+        gr_error(g, "fix move %s needs %d values, got %d", s, need - 1, argc - 1);
+    if (!strcmp(s, "linear") || !strcmp(s, "wiggle")) {
+        m->style = s[0] == 'l' ? MOVE_LINEAR : MOVE_WIGGLE;
+        for (int d = 0; d < 3; d++)
+            m->vec[d] = number_or_null(g, argv[1 + d], &m->given[d], m->style == MOVE_LINEAR
+                                                                         ? "fix move velocity"
+                                                                         : "fix move amplitude");
+        if (m->style == MOVE_WIGGLE)
+            m->omega = 2.0 * M_PI / arg_positive(g, argv[4], "fix move period");
+    } else if (!strcmp(s, "rotate")) {
+        m->style = MOVE_ROTATE;
+        double axis[3];
+        for (int d = 0; d < 3; d++) {
+            m->point[d] = arg_double(g, argv[1 + d], "fix move rotation point");
+            axis[d] = arg_double(g, argv[4 + d], "fix move rotation axis");
+        }
+        m->omega = 2.0 * M_PI / arg_positive(g, argv[7], "fix move period");
+        double len = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+        if (len == 0.0)
+            gr_error(g, "fix move: zero length rotation vector");
+        for (int d = 0; d < 3; d++)
+            m->runit[d] = axis[d] / len;
+    } else {
+        m->style = MOVE_VARIABLE;
+        for (int k = 0; k < 6; k++) {
+            const char *a = argv[1 + k];
+            if (!strcmp(a, "NULL"))
+                continue;
+            if (strncmp(a, "v_", 2) || !a[2])
+                gr_error(g, "fix move variable: %s must be v_name or NULL, got '%.64s'",
+                         vnames[k], a);
+            m->var[k] = gr_strdup(g, a + 2);
+        }
+    }
+    return need;
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "fix move needs a style (linear, wiggle, rotate, variable)");
+    struct move *m = gr_calloc(g, 1, sizeof *m);
+    f->data = m;
+    int i = style_args(g, m, argc, argv), lattice = 1;
+    while (i < argc) {
+        if (strcmp(argv[i], "units"))
+            gr_error(g, "fix move: unknown keyword '%.64s' (units)", argv[i]);
+        arg_need(g, argc, i, 1, "units");
+        if (!strcmp(argv[i + 1], "box"))
+            lattice = 0;
+        else if (strcmp(argv[i + 1], "lattice"))
+            gr_error(g, "fix move: units must be box or lattice, got '%.64s'", argv[i + 1]);
+        i += 2;
+    }
+    if (g->dom.dimension == 2) {
+        if ((m->style == MOVE_LINEAR || m->style == MOVE_WIGGLE) && m->given[2] && m->vec[2] != 0)
+            gr_error(g, "fix move cannot set %s z motion for a 2d problem",
+                     m->style == MOVE_LINEAR ? "linear" : "wiggle");
+        if (m->style == MOVE_ROTATE && (m->runit[0] != 0 || m->runit[1] != 0))
+            gr_error(g, "fix move cannot rotate around a non-z axis for a 2d problem");
+        if (m->style == MOVE_VARIABLE && (m->var[2] || m->var[5]))
+            gr_error(g, "fix move cannot define a z or vz variable for a 2d problem");
+    }
+    if (lattice && m->style != MOVE_VARIABLE) /* LAMMPS's default lattice: spacing 1 */
+        for (int d = 0; d < 3; d++) {
+            double s = g->dom.lat.style ? g->dom.lat.a[d] : 1.0;
+            if (m->style == MOVE_ROTATE)
+                m->point[d] *= s;
+            else if (m->given[d])
+                m->vec[d] *= s;
+        }
+    /* x0: the group's unwrapped positions now, by atom ID */
+    const struct atoms *a = &g->atoms;
+    for (int k = 0; k < a->n; k++) {
+        if (!(a->mask[k] & f->groupbit))
+            continue;
+        tag_ref_reserve(g, &m->x0, a->tag[k]);
+        domain_unmap(g, a->x + 3 * k, a->image + 3 * k, m->x0.v + 3 * a->tag[k]);
+        m->x0.have[a->tag[k]] = 1;
+    }
+    m->time_origin = g->step;
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    if (m->style == MOVE_ROTATE)
+        f->needs |= NEED_ROTATION;
+    f->sources[f->nsources++] = "fix_move.cl";
+    f->peratom_flag = 1;
+    f->size_peratom_cols = 3;
+}
+
+/* The origins on the device, relative to the run's origin (split in two
+ * floats when positions are). */
+static void upload_origins(struct gravel *g, struct move *m)
+{
+    struct engine *e = g->eng;
+    m->ntab = m->x0.cap;
+    size_t nv = 3 * (size_t)(m->ntab > 0 ? m->ntab : 1);
+    double *hi = gr_calloc(g, nv, sizeof *hi), *lo = gr_calloc(g, nv, sizeof *lo);
+    for (int64_t t = 0; t < m->ntab; t++)
+        for (int d = 0; d < 3; d++) {
+            double u = m->x0.v[3 * t + d] - e->origin[d];
+            hi[3 * t + d] = e->single ? (double)(float)u : u;
+            lo[3 * t + d] = u - hi[3 * t + d];
+        }
+    for (int k = 0; k < 2; k++) {
+        cl_mem *b = k ? &m->tablo : &m->tab;
+        if (*b)
+            clReleaseMemObject(*b);
+        *b = eng_alloc(g, nv * e->rsz, "fix move origins");
+        eng_write_reals(g, *b, nv, k ? lo : hi);
+    }
+    free(hi);
+    free(lo);
+    m->stale = 0;
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct move *m = f->data;
+    if (g->dom.triclinic)
+        gr_error(g, "fix move %s: triclinic boxes are not supported yet", f->id);
+    for (int k = 0; k < 6; k++) {
+        if (!m->var[k])
+            continue;
+        if (!var_exists(g, m->var[k]))
+            gr_error(g, "fix move %s: variable '%s' does not exist", f->id, m->var[k]);
+        if (!var_is_equal(g, m->var[k]))
+            gr_error(g, "fix move %s: variable '%s' is not equal-style (atom-style variables "
+                        "are not supported yet)", f->id, m->var[k]);
+    }
+    const struct atoms *a = &g->atoms;
+    for (int k = 0; k < a->n; k++)
+        if ((a->mask[k] & f->groupbit) && (a->tag[k] >= m->x0.cap || !m->x0.have[a->tag[k]]))
+            gr_error(g, "fix move %s: atom %lld is in its group but was not when the fix was "
+                        "defined: it has no origin", f->id, (long long)a->tag[k]);
+    m->stale = 1; /* written at the first step: read_restart may still replace them */
+    m->ini = eng_kernel(g, "move_initial");
+    m->fin = eng_kernel(g, "move_final");
+}
+
+/* components set by position (pset), by velocity (vset), integrated (nve) */
+static void component_sets(const struct move *m, int *pset, int *vset, int *nve)
+{
+    *pset = *vset = 0;
+    for (int d = 0; d < 3; d++) {
+        int p, v;
+        if (m->style == MOVE_ROTATE)
+            p = v = 1;
+        else if (m->style == MOVE_VARIABLE)
+            p = m->var[d] != NULL, v = m->var[3 + d] != NULL;
+        else
+            p = v = m->given[d];
+        *pset |= p << d;
+        *vset |= v << d;
+    }
+    *nve = 7 & ~(*pset | *vset);
+}
+
+static void initial_integrate(struct gravel *g, struct fix *f)
+{
+    struct move *m = f->data;
+    if (m->stale)
+        upload_origins(g, m);
+    struct dev_atoms *a = eng_atoms(g);
+    const double delta = (double)(g->step - m->time_origin) * g->dt;
+    double disp[3] = {0, 0, 0}, vel[3] = {0, 0, 0}, cosine = 1, sine = 0;
+    int pset, vset, nve;
+    component_sets(m, &pset, &vset, &nve);
+    if (m->style == MOVE_LINEAR) {
+        for (int d = 0; d < 3; d++) {
+            vel[d] = m->vec[d];
+            disp[d] = m->vec[d] * delta;
+        }
+    } else if (m->style == MOVE_WIGGLE || m->style == MOVE_ROTATE) {
+        double arg = m->omega * delta;
+        sine = sin(arg);
+        cosine = cos(arg);
+        for (int d = 0; d < 3 && m->style == MOVE_WIGGLE; d++) {
+            vel[d] = m->vec[d] * m->omega * cosine;
+            disp[d] = m->vec[d] * sine;
+        }
+    } else {
+        for (int d = 0; d < 3; d++) {
+            if (m->var[d])
+                disp[d] = var_compute_equal(g, m->var[d]);
+            if (m->var[3 + d])
+                vel[d] = var_compute_equal(g, m->var[3 + d]);
+        }
+    }
+    cl_kernel k = m->ini;
+    int i = 0;
+    eng_arg_int(g, k, i++, a->n);
+    eng_arg_uint(g, k, i++, f->groupbit);
+    eng_arg_mem(g, k, i++, a->mask);
+    eng_arg_mem(g, k, i++, a->tag);
+    eng_arg_bytes(g, k, i++, sizeof(cl_long), &(cl_long){m->ntab});
+    eng_arg_mem(g, k, i++, m->tab);
+    eng_arg_mem(g, k, i++, m->tablo);
+    eng_arg_mem(g, k, i++, a->x);
+    eng_arg_mem(g, k, i++, a->v);
+    eng_arg_mem(g, k, i++, a->omega ? a->omega : a->v);
+    eng_arg_mem(g, k, i++, a->f);
+    eng_arg_mem(g, k, i++, a->rmass);
+    eng_arg_mem(g, k, i++, a->radius);
+    eng_arg_int(g, k, i++, (int)m->style);
+    eng_arg_int(g, k, i++, pset);
+    eng_arg_int(g, k, i++, vset);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, i++, disp[d]);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, i++, vel[d]);
+    for (int d = 0; d < 3; d++)
+        eng_arg_coord(g, k, i++, d, m->point[d]);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, i++, m->runit[d]);
+    eng_arg_real(g, k, i++, m->omega);
+    eng_arg_real(g, k, i++, cosine);
+    eng_arg_real(g, k, i++, sine);
+    for (int d = 0; d < 3; d++)
+        eng_arg_int(g, k, i++, g->dom.periodic[d]);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, i++, g->dom.hi[d] - g->dom.lo[d]);
+    eng_arg_real(g, k, i++, g->dt);
+    eng_arg_real(g, k, i++, 0.5 * g->dt);
+    eng_arg_pos_lo(g, k, i);
+    eng_launch(g, k, (size_t)a->n);
+}
+
+static void final_integrate(struct gravel *g, struct fix *f)
+{
+    struct move *m = f->data;
+    int pset, vset, nve;
+    component_sets(m, &pset, &vset, &nve);
+    if (!nve)
+        return;
+    struct dev_atoms *a = eng_atoms(g);
+    cl_kernel k = m->fin;
+    eng_arg_int(g, k, 0, a->n);
+    eng_arg_uint(g, k, 1, f->groupbit);
+    eng_arg_mem(g, k, 2, a->mask);
+    eng_arg_mem(g, k, 3, a->tag);
+    eng_arg_bytes(g, k, 4, sizeof(cl_long), &(cl_long){m->ntab});
+    eng_arg_mem(g, k, 5, a->v);
+    eng_arg_mem(g, k, 6, a->f);
+    eng_arg_mem(g, k, 7, a->rmass);
+    eng_arg_int(g, k, 8, nve);
+    eng_arg_real(g, k, 9, 0.5 * g->dt);
+    eng_launch(g, k, (size_t)a->n);
+}
+
+/* f_ID[1..3]: the origins x0 (0 for atoms outside the group, LAMMPS's) */
+static const double *peratom_values(struct gravel *g, struct fix *f)
+{
+    struct move *m = f->data;
+    const struct atoms *a = &g->atoms;
+    m->out = gr_realloc(g, m->out, 3 * (size_t)(a->n > 0 ? a->n : 1) * sizeof *m->out);
+    for (int i = 0; i < a->n; i++) {
+        int64_t t = a->tag[i];
+        int have = (a->mask[i] & f->groupbit) && t < m->x0.cap && m->x0.have[t];
+        for (int d = 0; d < 3; d++)
+            m->out[3 * i + d] = have ? m->x0.v[3 * t + d] : 0.0;
+    }
+    return m->out;
+}
+
+/* reset_timestep: the motion keeps its own clock (t = step - origin) */
+static void reset_step(struct gravel *g, struct fix *f, bigint shift)
+{
+    (void)g;
+    ((struct move *)f->data)->time_origin += shift;
+}
+
+/* restart: the clock, then (ID, x0) of every atom that has an origin */
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const struct move *m = f->data;
+    int64_t count = 0;
+    for (int64_t t = 0; t < m->x0.cap; t++)
+        count += m->x0.have[t];
+    size_t need = 2 * sizeof(int64_t) + (size_t)count * (sizeof(int64_t) + 3 * sizeof(double));
+    if (!buf || cap < need)
+        return need;
+    int64_t head[2] = {m->time_origin, count};
+    memcpy(buf, head, sizeof head);
+    unsigned char *p = buf + sizeof head;
+    for (int64_t t = 0; t < m->x0.cap; t++) {
+        if (!m->x0.have[t])
+            continue;
+        memcpy(p, &t, sizeof t);
+        memcpy(p + sizeof t, m->x0.v + 3 * t, 3 * sizeof(double));
+        p += sizeof t + 3 * sizeof(double);
+    }
+    return need;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    struct move *m = f->data;
+    int64_t head[2];
+    const size_t row = sizeof(int64_t) + 3 * sizeof(double);
+    if (len < sizeof head)
+        gr_error(g, "fix %s: restart state of %zu bytes is too short", f->id, len);
+    memcpy(head, buf, sizeof head);
+    if (head[1] < 0 || len != sizeof head + (size_t)head[1] * row)
+        gr_error(g, "fix %s: restart state of %zu bytes does not hold %lld origins", f->id, len,
+                 (long long)head[1]);
+    tag_ref_free(&m->x0);
+    const unsigned char *p = buf + sizeof head;
+    for (int64_t k = 0; k < head[1]; k++, p += row) {
+        int64_t t;
+        memcpy(&t, p, sizeof t);
+        if (t < 0)
+            gr_error(g, "fix %s: restart state holds atom ID %lld", f->id, (long long)t);
+        tag_ref_reserve(g, &m->x0, t);
+        memcpy(m->x0.v + 3 * t, p + sizeof t, 3 * sizeof(double));
+        m->x0.have[t] = 1;
+    }
+    m->time_origin = head[0];
+    m->stale = 1;
+}
+
+const struct fix_style fix_style_move = {
+    .name = "move",
+    .create = create,
+    .init = init,
+    .initial_integrate = initial_integrate,
+    .final_integrate = final_integrate,
+    .destroy = destroy,
+    .peratom_values = peratom_values,
+    .reset_step = reset_step,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};
