@@ -248,6 +248,7 @@ void cmd_fix(struct gravel *g, int argc, char **argv)
     f->size_vector = st->size_vector;
     f->extscalar = f->extvector = f->extarray = 1;
     f->global_freq = 1;
+    f->peratom_freq = 1;
     /* restart.c: a fix re-specified identically after read_restart continues exactly */
     f->arghash = 1469598103934665603ull;
     for (int a = 1; a < argc; a++)

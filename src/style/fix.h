@@ -242,6 +242,10 @@ struct fix {
     int extscalar, extvector, extarray;
     const int *extlist;         /* [size_vector] when extvector is -1; owned by the style */
     int global_freq;
+    /* per-atom output current only every peratom_freq steps (LAMMPS's
+     * peratom_freq: fix ave/atom's Nfreq; 1 by default): a dump reading
+     * it must write on multiples of it */
+    int peratom_freq;
     int peratom_flag;           /* per-atom output (style->peratom_values) */
     int size_peratom_cols;      /* ... 0: a vector; else an array's columns */
     int rows_variable;          /* the vector's length or the array's rows change at run

@@ -271,8 +271,13 @@ static void custom_init(struct gravel *g, struct dump *d)
             compute_peratom_check(g, col->cid, col->index, "dump custom");
         if (col->field == F_VARIABLE)
             var_check_atom(g, col->name + 2, "dump custom");
-        if (col->field == F_FIX)
-            fix_peratom_check(g, col->name, "dump custom");
+        if (col->field == F_FIX) { /* LAMMPS DumpCustom::init: current on the dump's steps */
+            struct fix *fx = fix_peratom_check(g, col->name, "dump custom");
+            if (!d->every_var && d->every % fx->peratom_freq)
+                gr_error(g, "dump custom %s: dump every %d and fix %s (%s, per-atom output "
+                            "every %d steps) are not computed at compatible times", d->id,
+                         d->every, fx->id, fx->style->name, fx->peratom_freq);
+        }
         if (col->field == F_CUSTOM) { /* the property may have moved (or gone: unfix) */
             custom_ref_parse(g, col->name, "dump custom", &col->cref, NULL);
             col->cint = g->atoms.cus.p[col->cref.idx].isint;
