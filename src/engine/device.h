@@ -51,7 +51,7 @@ struct fused_stages {
 };
 
 /* The fix calls of each hook for the current run (run.c). */
-enum { NHOOK = 6 };
+enum { NHOOK = 7 };
 struct hook_call {
     struct fix *fix;
     void (*fn)(struct gravel *, struct fix *);

@@ -107,7 +107,9 @@ void fused_setup(struct gravel *g)
     s->lookahead = !(look && !strcmp(look, "0"));
     struct builder b = {0};
     if (enabled) {
-        s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, TAKE_ALL);
+        /* a post_integrate fix acts between the kicks and the rebuild check */
+        if (!count_hook(g, HOOK_POST_INTEGRATE))
+            s->ninit = stage(g, &b, HOOK_INITIAL_INTEGRATE, TAKE_ALL);
         if (e->k_pair) {
             s->npost = stage(g, &b, HOOK_POST_FORCE, TAKE_PREFIX);
             if (s->npost == count_hook(g, HOOK_POST_FORCE))

@@ -157,14 +157,15 @@ static int hook_index(unsigned hook)
 {
     return hook == HOOK_INITIAL_INTEGRATE ? 0 : hook == HOOK_POST_FORCE ? 1
          : hook == HOOK_FINAL_INTEGRATE   ? 2 : hook == HOOK_END_OF_STEP ? 3
-         : hook == HOOK_PRE_EXCHANGE      ? 4 : 5;
+         : hook == HOOK_PRE_EXCHANGE      ? 4 : hook == HOOK_PRE_FORCE ? 5 : 6;
 }
 
 static void build_hook_lists(struct gravel *g)
 {
     struct hook_lists *h = &g->eng->hooks;
     const unsigned bits[NHOOK] = {HOOK_INITIAL_INTEGRATE, HOOK_POST_FORCE, HOOK_FINAL_INTEGRATE,
-                                  HOOK_END_OF_STEP, HOOK_PRE_EXCHANGE, HOOK_PRE_FORCE};
+                                  HOOK_END_OF_STEP,       HOOK_PRE_EXCHANGE, HOOK_PRE_FORCE,
+                                  HOOK_POST_INTEGRATE};
     for (int k = 0; k < NHOOK; k++) {
         free(h->call[k]);
         h->call[k] = gr_calloc(g, (size_t)g->styles.nfix + 1, sizeof *h->call[k]);
@@ -176,7 +177,8 @@ static void build_hook_lists(struct gravel *g)
             void (*fn)(struct gravel *, struct fix *) =
                 k == 0 ? f->style->initial_integrate : k == 1 ? f->style->post_force
               : k == 2 ? f->style->final_integrate   : k == 3 ? f->style->end_of_step
-              : k == 4 ? f->style->pre_exchange      : f->style->pre_force;
+              : k == 4 ? f->style->pre_exchange      : k == 5 ? f->style->pre_force
+                                                     : f->style->post_integrate;
             if (fn)
                 h->call[k][h->n[k]++] = (struct hook_call){f, fn};
         }
@@ -733,6 +735,7 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
             eng_finish(g); /* the previous step's work is not this step's */
         double a0 = wall_clock();
         run_hook(g, HOOK_INITIAL_INTEGRATE);
+        run_hook(g, HOOK_POST_INTEGRATE); /* LAMMPS's post_integrate (fix wall/reflect) */
         if (sampled)
             eng_finish(g);
         double a1 = wall_clock();

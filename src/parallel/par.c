@@ -192,7 +192,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "viscous", "setforce", "addforce", "aveforce", "wall/gran",
                                         "wall/gran/region", "wall/pair", "balance", "mesh/surface",
                                         "move/mesh", "pour", "ave/time", "ave/chunk", "ave/histo",
-                                        "ave/atom", "drag", "property/global",
+                                        "ave/atom", "wall/reflect", "drag", "property/global",
                                         "mesh/surface/stress", "mesh/surface/planar",
                                         "particletemplate/sphere", "particledistribution/discrete",
                                         "insert/pack",

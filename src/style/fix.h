@@ -34,6 +34,11 @@
  *              pre_force), and once at setup before the setup forces, with
  *              eng_in_setup(g) true (LAMMPS's setup_pre_force); a fix with
  *              this hook turns off the fused look-ahead of the next step.
+ *   post_integrate  (HOOK_POST_INTEGRATE) called on every step after
+ *              every fix's initial_integrate and before the neighbor
+ *              decision (LAMMPS's post_integrate: fix wall/reflect); a fix
+ *              with this hook turns off the fused initial_integrate stage
+ *              and the look-ahead, so the rebuild check sees its moves.
  *   pre_exchange  (HOOK_PRE_EXCHANGE) called on every step whose neighbor
  *              list is rebuilt, after initial_integrate and before the
  *              rebuild (LAMMPS' pre_exchange), with the atoms on the device.
@@ -75,6 +80,7 @@ enum fix_hook {
     HOOK_END_OF_STEP = 1 << 3,
     HOOK_PRE_EXCHANGE = 1 << 4,
     HOOK_PRE_FORCE = 1 << 5,
+    HOOK_POST_INTEGRATE = 1 << 6,
 };
 
 /* Per-atom fields / device features a style needs. */
@@ -130,6 +136,7 @@ struct fix_style {
     void (*end_of_step)(struct gravel *g, struct fix *f);
     void (*pre_exchange)(struct gravel *g, struct fix *f);
     void (*pre_force)(struct gravel *g, struct fix *f);
+    void (*post_integrate)(struct gravel *g, struct fix *f);
     /* atoms this fix may insert in the next nsteps steps (0: none); sets
      * *rmax to their largest radius (see header comment) */
     int (*reserve)(struct gravel *g, struct fix *f, bigint nsteps, double *rmax);
