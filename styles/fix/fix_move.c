@@ -21,11 +21,11 @@
 #include <string.h>
 
 #include "args.h"
+#include "atom_origin.h"
 #include "device.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
-#include "tag_ref.h"
 #include "variable.h"
 
 enum move_style { MOVE_LINEAR, MOVE_WIGGLE, MOVE_ROTATE, MOVE_VARIABLE };
@@ -38,10 +38,7 @@ struct move {
     double omega;               /* wiggle, rotate: 2 pi / period */
     char *var[6];               /* variable: dx dy dz vx vy vz (NULL: none) */
     bigint time_origin;
-    struct tag_ref x0;          /* unwrapped positions when defined, by atom ID */
-    cl_mem tab, tablo;          /* x0 - origin on the device (tablo: low parts) */
-    int64_t ntab;
-    int stale;                  /* the device's origins are to be (re)written */
+    struct atom_origin x0;      /* unwrapped positions when defined, by atom ID */
     cl_kernel ini, fin;
     double *out;                /* peratom_values */
 };
@@ -53,11 +50,7 @@ static void destroy(struct fix *f)
         return;
     for (int k = 0; k < 6; k++)
         free(m->var[k]);
-    tag_ref_free(&m->x0);
-    if (m->tab)
-        clReleaseMemObject(m->tab);
-    if (m->tablo)
-        clReleaseMemObject(m->tablo);
+    atom_origin_free(&m->x0);
     free(m->out);
     free(m);
 }
@@ -152,15 +145,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             else if (m->given[d])
                 m->vec[d] *= s;
         }
-    /* x0: the group's unwrapped positions now, by atom ID */
-    const struct atoms *a = &g->atoms;
-    for (int k = 0; k < a->n; k++) {
-        if (!(a->mask[k] & f->groupbit))
-            continue;
-        tag_ref_reserve(g, &m->x0, a->tag[k]);
-        domain_unmap(g, a->x + 3 * k, a->image + 3 * k, m->x0.v + 3 * a->tag[k]);
-        m->x0.have[a->tag[k]] = 1;
-    }
+    atom_origin_take(g, &m->x0, f->groupbit); /* x0: the group's positions now */
     m->time_origin = g->step;
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     if (m->style == MOVE_ROTATE)
@@ -168,32 +153,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->sources[f->nsources++] = "fix_move.cl";
     f->peratom_flag = 1;
     f->size_peratom_cols = 3;
-}
-
-/* The origins on the device, relative to the run's origin (split in two
- * floats when positions are). */
-static void upload_origins(struct gravel *g, struct move *m)
-{
-    struct engine *e = g->eng;
-    m->ntab = m->x0.cap;
-    size_t nv = 3 * (size_t)(m->ntab > 0 ? m->ntab : 1);
-    double *hi = gr_calloc(g, nv, sizeof *hi), *lo = gr_calloc(g, nv, sizeof *lo);
-    for (int64_t t = 0; t < m->ntab; t++)
-        for (int d = 0; d < 3; d++) {
-            double u = m->x0.v[3 * t + d] - e->origin[d];
-            hi[3 * t + d] = e->single ? (double)(float)u : u;
-            lo[3 * t + d] = u - hi[3 * t + d];
-        }
-    for (int k = 0; k < 2; k++) {
-        cl_mem *b = k ? &m->tablo : &m->tab;
-        if (*b)
-            clReleaseMemObject(*b);
-        *b = eng_alloc(g, nv * e->rsz, "fix move origins");
-        eng_write_reals(g, *b, nv, k ? lo : hi);
-    }
-    free(hi);
-    free(lo);
-    m->stale = 0;
 }
 
 static void init(struct gravel *g, struct fix *f)
@@ -210,12 +169,7 @@ static void init(struct gravel *g, struct fix *f)
             gr_error(g, "fix move %s: variable '%s' is not equal-style (atom-style variables "
                         "are not supported yet)", f->id, m->var[k]);
     }
-    const struct atoms *a = &g->atoms;
-    for (int k = 0; k < a->n; k++)
-        if ((a->mask[k] & f->groupbit) && (a->tag[k] >= m->x0.cap || !m->x0.have[a->tag[k]]))
-            gr_error(g, "fix move %s: atom %lld is in its group but was not when the fix was "
-                        "defined: it has no origin", f->id, (long long)a->tag[k]);
-    m->stale = 1; /* written at the first step: read_restart may still replace them */
+    atom_origin_setup(g, &m->x0, f->groupbit, "fix move", f->id);
     m->ini = eng_kernel(g, "move_initial");
     m->fin = eng_kernel(g, "move_final");
 }
@@ -241,8 +195,7 @@ static void component_sets(const struct move *m, int *pset, int *vset, int *nve)
 static void initial_integrate(struct gravel *g, struct fix *f)
 {
     struct move *m = f->data;
-    if (m->stale)
-        upload_origins(g, m);
+    atom_origin_device(g, &m->x0);
     struct dev_atoms *a = eng_atoms(g);
     const double delta = (double)(g->step - m->time_origin) * g->dt;
     double disp[3] = {0, 0, 0}, vel[3] = {0, 0, 0}, cosine = 1, sine = 0;
@@ -275,9 +228,9 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_uint(g, k, i++, f->groupbit);
     eng_arg_mem(g, k, i++, a->mask);
     eng_arg_mem(g, k, i++, a->tag);
-    eng_arg_bytes(g, k, i++, sizeof(cl_long), &(cl_long){m->ntab});
-    eng_arg_mem(g, k, i++, m->tab);
-    eng_arg_mem(g, k, i++, m->tablo);
+    eng_arg_bytes(g, k, i++, sizeof(cl_long), &(cl_long){m->x0.ntab});
+    eng_arg_mem(g, k, i++, m->x0.tab);
+    eng_arg_mem(g, k, i++, m->x0.tablo);
     eng_arg_mem(g, k, i++, a->x);
     eng_arg_mem(g, k, i++, a->v);
     eng_arg_mem(g, k, i++, a->omega ? a->omega : a->v);
@@ -321,7 +274,7 @@ static void final_integrate(struct gravel *g, struct fix *f)
     eng_arg_uint(g, k, 1, f->groupbit);
     eng_arg_mem(g, k, 2, a->mask);
     eng_arg_mem(g, k, 3, a->tag);
-    eng_arg_bytes(g, k, 4, sizeof(cl_long), &(cl_long){m->ntab});
+    eng_arg_bytes(g, k, 4, sizeof(cl_long), &(cl_long){m->x0.ntab});
     eng_arg_mem(g, k, 5, a->v);
     eng_arg_mem(g, k, 6, a->f);
     eng_arg_mem(g, k, 7, a->rmass);
@@ -334,15 +287,7 @@ static void final_integrate(struct gravel *g, struct fix *f)
 static const double *peratom_values(struct gravel *g, struct fix *f)
 {
     struct move *m = f->data;
-    const struct atoms *a = &g->atoms;
-    m->out = gr_realloc(g, m->out, 3 * (size_t)(a->n > 0 ? a->n : 1) * sizeof *m->out);
-    for (int i = 0; i < a->n; i++) {
-        int64_t t = a->tag[i];
-        int have = (a->mask[i] & f->groupbit) && t < m->x0.cap && m->x0.have[t];
-        for (int d = 0; d < 3; d++)
-            m->out[3 * i + d] = have ? m->x0.v[3 * t + d] : 0.0;
-    }
-    return m->out;
+    return atom_origin_values(g, &m->x0, f->groupbit, &m->out);
 }
 
 /* reset_timestep: the motion keeps its own clock (t = step - origin) */
@@ -352,54 +297,29 @@ static void reset_step(struct gravel *g, struct fix *f, bigint shift)
     ((struct move *)f->data)->time_origin += shift;
 }
 
-/* restart: the clock, then (ID, x0) of every atom that has an origin */
+/* restart: the clock, then the origins (atom_origin_write) */
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
 {
     (void)g;
     const struct move *m = f->data;
-    int64_t count = 0;
-    for (int64_t t = 0; t < m->x0.cap; t++)
-        count += m->x0.have[t];
-    size_t need = 2 * sizeof(int64_t) + (size_t)count * (sizeof(int64_t) + 3 * sizeof(double));
+    int64_t origin = m->time_origin;
+    size_t need = sizeof origin + atom_origin_write(&m->x0, NULL, 0);
     if (!buf || cap < need)
         return need;
-    int64_t head[2] = {m->time_origin, count};
-    memcpy(buf, head, sizeof head);
-    unsigned char *p = buf + sizeof head;
-    for (int64_t t = 0; t < m->x0.cap; t++) {
-        if (!m->x0.have[t])
-            continue;
-        memcpy(p, &t, sizeof t);
-        memcpy(p + sizeof t, m->x0.v + 3 * t, 3 * sizeof(double));
-        p += sizeof t + 3 * sizeof(double);
-    }
+    memcpy(buf, &origin, sizeof origin);
+    atom_origin_write(&m->x0, buf + sizeof origin, cap - sizeof origin);
     return need;
 }
 
 static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
 {
     struct move *m = f->data;
-    int64_t head[2];
-    const size_t row = sizeof(int64_t) + 3 * sizeof(double);
-    if (len < sizeof head)
+    int64_t origin;
+    if (len < sizeof origin)
         gr_error(g, "fix %s: restart state of %zu bytes is too short", f->id, len);
-    memcpy(head, buf, sizeof head);
-    if (head[1] < 0 || len != sizeof head + (size_t)head[1] * row)
-        gr_error(g, "fix %s: restart state of %zu bytes does not hold %lld origins", f->id, len,
-                 (long long)head[1]);
-    tag_ref_free(&m->x0);
-    const unsigned char *p = buf + sizeof head;
-    for (int64_t k = 0; k < head[1]; k++, p += row) {
-        int64_t t;
-        memcpy(&t, p, sizeof t);
-        if (t < 0)
-            gr_error(g, "fix %s: restart state holds atom ID %lld", f->id, (long long)t);
-        tag_ref_reserve(g, &m->x0, t);
-        memcpy(m->x0.v + 3 * t, p + sizeof t, 3 * sizeof(double));
-        m->x0.have[t] = 1;
-    }
-    m->time_origin = head[0];
-    m->stale = 1;
+    memcpy(&origin, buf, sizeof origin);
+    atom_origin_read(g, &m->x0, buf + sizeof origin, len - sizeof origin, f->id);
+    m->time_origin = origin;
 }
 
 const struct fix_style fix_style_move = {
