@@ -26,6 +26,8 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from peer import dump_steps  # noqa: E402
 
+read_dump = dump_steps  # the name the other lmp comparisons import from here
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
 TOL = 1e-6
