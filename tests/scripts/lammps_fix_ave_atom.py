@@ -20,8 +20,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, ROOT, check, dump_steps, expect_errors,  # noqa: E402
-                  falling_bed, folders, run)
+from peer import (GRAVEL, check, check_same_on_ranks, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run)
 
 REL = 1e-8
 HEAD = falling_bed()
@@ -73,15 +73,7 @@ def main():
             bad = differences(gs, ls)
             check("ave_atom_match_lammps", rc == 0 and sorted(ls) == STEPS and not bad,
                   "lmp exit %d, differences %s" % (rc, bad[:3]))
-        mpi = os.path.join(ROOT, "bin", "gravel-mpi")
-        if shutil.which("mpirun") is None or not os.path.exists(mpi):
-            check("ave_atom_two_ranks_same_dump", False, "mpirun or bin/gravel-mpi missing")
-        else:
-            rc, out = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
-                          DECK, mdir)
-            same = rc == 0 and open(os.path.join(mdir, "out.dump")).read() == open(
-                os.path.join(gdir, "out.dump")).read()
-            check("ave_atom_two_ranks_same_dump", same, "exit %d: %s" % (rc, out[-400:]))
+        check_same_on_ranks("ave_atom_two_ranks_same_dump", 2, DECK, mdir, gdir, ["out.dump"])
         expect_errors({
             "ave_atom_too_few": ("fix a all ave/atom 10 5 100\n", "ERROR: fix: fix ave/atom "
                                  "needs Nevery Nrepeat Nfreq and at least one value"),

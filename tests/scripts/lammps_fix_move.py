@@ -25,8 +25,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, ROOT, check, dump_steps, expect_errors,  # noqa: E402
-                  falling_bed, folders, run)
+from peer import (GRAVEL, check, check_refused_on_ranks, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run)
 
 REL = 1e-8
 L = 4.0  # the box's periodic lengths in x and y
@@ -145,14 +145,8 @@ def main():
                           "motion for a 2d problem"),
         }, "units lj\natom_style sphere\ndimension 2\nboundary p p p\nregion b block 0 4 0 4 "
            "-0.5 0.5\ncreate_box 1 b\ncreate_atoms 1 single 1 1 0\n", edir)
-        mpi, (mdir,) = os.path.join(ROOT, "bin", "gravel-mpi"), folders(tmp, "m")
-        if shutil.which("mpirun") is None or not os.path.exists(mpi):
-            check("move_two_ranks_refused", False, "mpirun or bin/gravel-mpi missing")
-        else:
-            rc, out = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
-                          HEAD + move + "run 10\n", mdir)
-            check("move_two_ranks_refused", rc != 0 and "fix m (move) cannot run on 2 MPI "
-                  "ranks yet" in out, out[-400:])
+        check_refused_on_ranks("move_two_ranks_refused", HEAD + move + "run 10\n", edir,
+                               "fix m (move)")
     finally:
         shutil.rmtree(tmp)
 

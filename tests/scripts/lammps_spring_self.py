@@ -20,8 +20,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, ROOT, check, close, dump_steps, expect_errors,  # noqa: E402
-                  falling_bed, folders, run, thermo_rows)
+from peer import (GRAVEL, check, check_refused_on_ranks, close, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run, thermo_rows)
 
 REL = 1e-8
 L = 4.0
@@ -96,14 +96,8 @@ def main():
             "spring_self_dims": ("fix s top spring/self 1 xx\n", "fix spring/self: components "
                                  "must be xyz, xy, xz, yz, x, y or z, got 'xx'"),
         }, HEAD, edir)
-        mpi = os.path.join(ROOT, "bin", "gravel-mpi")
-        if shutil.which("mpirun") is None or not os.path.exists(mpi):
-            check("spring_self_two_ranks_refused", False, "mpirun or bin/gravel-mpi missing")
-        else:
-            rc, out = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
-                          HEAD + SPRING + "run 10\n", mdir)
-            check("spring_self_two_ranks_refused", rc != 0 and "fix s (spring/self) cannot run "
-                  "on 2 MPI ranks yet" in out, out[-400:])
+        check_refused_on_ranks("spring_self_two_ranks_refused", HEAD + SPRING + "run 10\n",
+                               mdir, "fix s (spring/self)")
     finally:
         shutil.rmtree(tmp)
 

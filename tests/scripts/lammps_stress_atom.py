@@ -26,8 +26,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, ROOT, check, close, dump_steps, expect_errors, falling_bed,  # noqa: E402
-                  folders, run, thermo_rows)
+from peer import (GRAVEL, check, check_refused_on_ranks, close, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run, thermo_rows)
 
 REL, ABS, DUMP_REL = 1e-8, 1e-10, 1e-8
 
@@ -134,14 +134,8 @@ def main():
                 "compute stress/atom: compute e (ke) is not a temperature"),
         }, WALL, edir)
         # several ranks: refused at the run's setup, naming the compute
-        mpi = os.path.join(ROOT, "bin", "gravel-mpi")
-        if shutil.which("mpirun") is None or not os.path.exists(mpi):
-            check("stress_atom_two_ranks_refused", False, "mpirun or bin/gravel-mpi missing")
-        else:
-            rc, out = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi],
-                          WALL + "compute s all stress/atom NULL\nrun 10\n", edir)
-            check("stress_atom_two_ranks_refused", rc != 0 and "compute s (stress/atom) cannot "
-                  "run on 2 MPI ranks yet" in out, out[-400:])
+        check_refused_on_ranks("stress_atom_two_ranks_refused", WALL + "compute s all stress/atom "
+                               "NULL\nrun 10\n", edir, "compute s (stress/atom)")
     finally:
         shutil.rmtree(tmp)
 

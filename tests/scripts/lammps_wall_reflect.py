@@ -18,7 +18,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, ROOT, check, dump_steps, expect_errors, folders, run  # noqa: E402
+from peer import (GRAVEL, check, check_same_on_ranks, dump_steps, expect_errors,  # noqa: E402
+                  folders, run)
 
 REL = 1e-8
 HEAD = """units lj
@@ -76,16 +77,9 @@ def main():
                         if not abs(a - b) <= REL * scale]
             check("wall_reflect_match_lammps", rc == 0 and sorted(ls) == sorted(gs) and not bad,
                   "lmp exit %d, differences %s" % (rc, bad[:3]))
-        mpi = os.path.join(ROOT, "bin", "gravel-mpi")
-        for np, mdir in (("2", m2), ("3", m3)):
-            if shutil.which("mpirun") is None or not os.path.exists(mpi):
-                check("wall_reflect_np%s_same_dump" % np, False, "mpirun or bin/gravel-mpi missing")
-                continue
-            rc, out = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", np, mpi],
-                          DECK, mdir)
-            same = rc == 0 and open(os.path.join(mdir, "out.dump")).read() == open(
-                os.path.join(gdir, "out.dump")).read()
-            check("wall_reflect_np%s_same_dump" % np, same, "exit %d: %s" % (rc, out[-400:]))
+        for np, mdir in ((2, m2), (3, m3)):
+            check_same_on_ranks("wall_reflect_np%d_same_dump" % np, np, DECK, mdir, gdir,
+                                ["out.dump"])
         expect_errors({
             "wall_reflect_needs_wall": ("fix r all wall/reflect\n", "ERROR: fix: fix wall/reflect "
                                         "needs a face (xlo xhi ylo yhi zlo zhi) and its position"),

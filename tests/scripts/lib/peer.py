@@ -3,10 +3,12 @@ run one deck in a folder with a given command, report a case, read thermo rows
 and text dumps."""
 import gzip
 import os
+import shutil
 import subprocess
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 GRAVEL = os.path.join(ROOT, "bin", "gravel")
+GRAVEL_MPI = os.path.join(ROOT, "bin", "gravel-mpi")
 
 
 def run(cmd, deck, cwd, timeout=300):
@@ -109,3 +111,34 @@ fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 8.0
 fix g all gravity 1.0 vector 0 0 -1
 timestep 0.001
 """ % (comm, ntypes, temperature, extra)
+
+
+def run_ranks(np, deck, cwd):
+    """run deck with bin/gravel-mpi on np MPI ranks: (exit status, output), or None
+    when mpirun or bin/gravel-mpi is missing"""
+    if shutil.which("mpirun") is None or not os.path.exists(GRAVEL_MPI):
+        return None
+    return run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np), GRAVEL_MPI],
+               deck, cwd)
+
+
+def check_refused_on_ranks(name, deck, cwd, what):
+    """case name: deck stops on 2 ranks with "<what> cannot run on 2 MPI ranks yet"
+    (what: e.g. "fix m (move)")"""
+    r = run_ranks(2, deck, cwd)
+    if r is None:
+        check(name, False, "mpirun or bin/gravel-mpi missing")
+    else:
+        check(name, r[0] != 0 and what + " cannot run on 2 MPI ranks yet" in r[1], r[1][-400:])
+
+
+def check_same_on_ranks(name, np, deck, cwd, ref_dir, files):
+    """case name: deck on np ranks in cwd writes files byte-identical to those in ref_dir"""
+    r = run_ranks(np, deck, cwd)
+    if r is None:
+        check(name, False, "mpirun or bin/gravel-mpi missing")
+        return
+    same = r[0] == 0 and all(
+        open(os.path.join(cwd, f), "rb").read() == open(os.path.join(ref_dir, f), "rb").read()
+        for f in files)
+    check(name, same, "exit %d: %s" % (r[0], r[1][-400:]))
