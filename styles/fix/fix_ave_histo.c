@@ -4,8 +4,8 @@
  *
  * Values, all of one kind:
  *  - per-atom (the atoms of the group; mode vector): x y z vx vy vz fx fy fz,
- *    c_ID / c_ID[I] of a per-atom compute (vector / column I), v_name of an
- *    atom-style variable;
+ *    c_ID / c_ID[I] of a per-atom compute (vector / column I), f_ID /
+ *    f_ID[I] of a fix's per-atom output, v_name of an atom-style variable;
  *  - local (every row; mode vector): c_ID / c_ID[I] of a local compute;
  *  - global: mode scalar, c_ID (scalar), c_ID[I] (vector element), f_ID,
  *    f_ID[I], v_name (equal-style); mode vector, c_ID / f_ID (the global
@@ -131,10 +131,10 @@ static void parse_value(struct gravel *g, struct ave_histo *a, const char *ref, 
         struct fix *f = fix_find(g, id);
         if (!f)
             gr_error(g, WHO ": fix ID '%s' for %s does not exist", id, ref);
-        if (!f->scalar_flag && !f->vector_flag && !f->array_flag)
-            gr_error(g, WHO ": fix %s (%s) has no global output (gravel's fixes have no per-atom "
-                        "or local output)", id, f->style->name);
-        kind = K_GLOBAL;
+        if (!f->scalar_flag && !f->vector_flag && !f->array_flag && !f->peratom_flag)
+            gr_error(g, WHO ": fix %s (%s) has no global or per-atom output (gravel's fixes have "
+                        "no local output)", id, f->style->name);
+        kind = f->scalar_flag || f->vector_flag || f->array_flag ? K_GLOBAL : K_PERATOM;
     } else {
         if (!var_exists(g, id))
             gr_error(g, WHO ": variable name '%s' for %s does not exist", id, ref);
@@ -155,6 +155,17 @@ static void parse_value(struct gravel *g, struct ave_histo *a, const char *ref, 
     snprintf(v->id, sizeof v->id, "%s", id);
 }
 
+/* "f_ID" or "f_ID[I]" of a fix value (static: one at a time) */
+static const char *fix_ref_text(const struct hvalue *v)
+{
+    static char ref[GR_NAMELEN + 24];
+    if (v->argindex)
+        snprintf(ref, sizeof ref, "f_%s[%d]", v->id, v->argindex);
+    else
+        snprintf(ref, sizeof ref, "f_%s", v->id);
+    return ref;
+}
+
 /* LAMMPS's checks of a value of the fix's kind and mode. */
 static void check_value(struct gravel *g, struct ave_histo *a, const struct hvalue *v)
 {
@@ -162,6 +173,12 @@ static void check_value(struct gravel *g, struct ave_histo *a, const struct hval
         compute_peratom_check(g, v->id, v->argindex, WHO);
     else if (v->which == W_COMPUTE && a->kind == K_LOCAL)
         compute_local_check(g, v->id, v->argindex, WHO);
+    else if (v->which == W_FIX && a->kind == K_PERATOM) {
+        struct fix *src = fix_peratom_check(g, fix_ref_text(v), WHO);
+        if (a->s.nevery % src->peratom_freq) /* LAMMPS: "not computed at compatible time" */
+            gr_error(g, WHO ": fix %s's per-atom output is current every %d steps, Nevery is %d",
+                     src->id, src->peratom_freq, a->s.nevery);
+    }
     else if (v->which == W_COMPUTE || v->which == W_FIX)
         ave_global_check(g, v->which == W_COMPUTE ? 'c' : 'f', v->id, v->argindex,
                          a->vector_mode, a->s.nevery, WHO);
@@ -221,7 +238,11 @@ static void bin_value(struct gravel *g, struct fix *f, struct ave_histo *a,
         struct fix *src = fix_find(g, v->id);
         if (!src)
             gr_error(g, WHO " %s: fix ID '%s' does not exist", f->id, v->id);
-        if (!a->vector_mode)
+        if (a->kind == K_PERATOM) {
+            int stride;
+            const double *p = fix_peratom_ref(g, fix_ref_text(v), &stride, WHO);
+            bin_many(g, f, a, p, natoms, stride, 1);
+        } else if (!a->vector_mode)
             bin_one(a, fix_output(g, src, i, 0, 0, WHO));
         else if (!i)
             for (int r = 1; r <= src->size_vector; r++)

@@ -11,7 +11,10 @@ value agrees with lmp's to 1e-8 of its column's largest value in the
 snapshot (the trajectories to ~1e-11), atoms outside a group and the
 steps before an average's first Nfreq step holding 0 as in LAMMPS (a 1-sample
 average on a multiple of its Nfreq is taken at the run's setup). On 2
-MPI ranks the dump is byte-identical to one process's. Then the errors
+MPI ranks the dump is byte-identical to one process's. fix ave/histo of its
+per-atom output counts the values the dump shows (lmp 2021's counts differ
+from a histogram of its own dumped values there, so it is not the reference).
+Then the errors
 (LAMMPS's dump-and-fix compatibility among them). One line PASS/FAIL per
 case; without `lmp` the comparison FAILs naming it."""
 import os
@@ -21,7 +24,7 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from peer import (GRAVEL, check, check_same_on_ranks, dump_steps,  # noqa: E402
-                  expect_errors, falling_bed, folders, run)
+                  expect_errors, falling_bed, folders, run, thermo_rows)
 
 REL = 1e-8
 HEAD = falling_bed()
@@ -74,6 +77,20 @@ def main():
             check("ave_atom_match_lammps", rc == 0 and sorted(ls) == STEPS and not bad,
                   "lmp exit %d, differences %s" % (rc, bad[:3]))
         check_same_on_ranks("ave_atom_two_ranks_same_dump", 2, DECK, mdir, gdir, ["out.dump"])
+        # fix ave/histo of its per-atom output bins the values the dump shows
+        hdir, = folders(tmp, "h")
+        rc, out = run([GRAVEL], HEAD + "fix a all ave/atom 10 5 100 vx vz\nfix h all ave/histo "
+                      "100 1 100 -1.5 1.5 12 f_a[1] f_a[2] mode vector\ndump 1 all custom 100 "
+                      "d.dump id f_a[1] f_a[2]\ndump_modify 1 format float %.17g\nthermo_style "
+                      "custom step f_h[1] f_h[2] f_h[5][2] f_h[7][2]\nthermo 100\nrun 300\n", hdir)
+        rows = {int(r[0]): r[1:] for r in thermo_rows(out, 5)}
+        ok = rc == 0 and sorted(rows) == [0, 100, 200, 300]
+        for st, atoms in (dump_steps(os.path.join(hdir, "d.dump")).items() if ok else []):
+            vals = [v for row in atoms.values() for v in row]
+            inside = [v for v in vals if -1.5 <= v <= 1.5]
+            count = [sum(1 for v in inside if min(int((v + 1.5) / 0.25), 11) == b) for b in (4, 6)]
+            ok = ok and rows[st] == [len(inside), len(vals) - len(inside)] + count
+        check("ave_histo_of_ave_atom", ok, "exit %d: %s" % (rc, out[-400:]))
         expect_errors({
             "ave_atom_too_few": ("fix a all ave/atom 10 5 100\n", "ERROR: fix: fix ave/atom "
                                  "needs Nevery Nrepeat Nfreq and at least one value"),
