@@ -25,6 +25,7 @@
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
+#include "fix.h"
 #include "group.h"
 #include "thermo.h"
 #include "variable.h"
@@ -755,10 +756,14 @@ static double parse_primary(struct ep *e)
             int index = 0;
             struct compute *c = name[0] == 'c' && compute_parse_ref(ref, id, &index)
                                     ? compute_find(e->g, id) : NULL;
-            if (c && c->peratom_flag) {
+            int col_idx, fcol;
+            struct fix *fx = name[0] == 'f' && fix_parse_ref(ref, id, &col_idx, &fcol) && !fcol
+                                 ? fix_find(e->g, id) : NULL;
+            if ((c && c->peratom_flag) || (fx && fx->peratom_flag)) {
                 int stride = 1, na = e->g->atoms.n;
-                const double *col = compute_peratom_ref(e->g, c, index, &stride,
-                                                        "atom-style variable");
+                const double *col =
+                    c ? compute_peratom_ref(e->g, c, index, &stride, "atom-style variable")
+                      : fix_peratom_ref(e->g, ref, &stride, "atom-style variable");
                 sl->owned = malloc(((size_t)na + 1) * sizeof(double));
                 if (!sl->owned)
                     ep_fail(e, "out of memory");

@@ -20,24 +20,15 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "peratom_input.h"
 #include "ref.h"
-#include "variable.h"
 
 #define WHO "fix ave/atom"
-
-static const char *const atom_words[] = {"x", "y", "z", "vx", "vy", "vz", "fx", "fy", "fz"};
-#define NATOMWORDS ((int)(sizeof atom_words / sizeof atom_words[0]))
-
-struct avalue {
-    char kind;                  /* 'a' an atom word, 'c', 'f', 'v' */
-    int index;                  /* the atom word's number; I of [I] */
-    char id[GR_NAMELEN];
-};
 
 struct ave_atom {
     struct ave_sched s;
     int nvalues;
-    struct avalue *v;
+    struct peratom_input *v;
     double *sum, *avg;          /* [cap * nvalues] by atom ID */
     int64_t cap;
     double *out;                /* peratom_values, host order */
@@ -59,20 +50,8 @@ static void destroy(struct fix *f)
 static void add_value(struct gravel *g, struct ave_atom *a, const char *ref)
 {
     a->v = gr_realloc(g, a->v, (size_t)(a->nvalues + 1) * sizeof *a->v);
-    struct avalue *v = &a->v[a->nvalues++];
-    memset(v, 0, sizeof *v);
-    for (int k = 0; k < NATOMWORDS; k++)
-        if (!strcmp(ref, atom_words[k])) {
-            v->kind = 'a';
-            v->index = k;
-            return;
-        }
-    int col;
-    if (!strchr("cfv", ref[0]) || !ref_parse(ref, ref[0], v->id, &v->index, &col) || col ||
-        (ref[0] == 'v' && v->index))
-        gr_error(g, WHO ": invalid value '%.64s' (x y z vx vy vz fx fy fz, c_ID, c_ID[I], f_ID, "
-                    "f_ID[I], v_name)", ref);
-    v->kind = ref[0];
+    peratom_input_parse(g, ref, PERATOM_XVF, &a->v[a->nvalues++],
+                        "x y z vx vy vz fx fy fz, c_ID, c_ID[I], f_ID, f_ID[I], v_name", WHO);
 }
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -105,21 +84,8 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 static void init(struct gravel *g, struct fix *f)
 {
     struct ave_atom *a = f->data;
-    for (int j = 0; j < a->nvalues; j++) {
-        const struct avalue *v = &a->v[j];
-        char ref[GR_NAMELEN + 24];
-        if (v->index)
-            snprintf(ref, sizeof ref, "%c_%s[%d]", v->kind, v->id, v->index);
-        else
-            snprintf(ref, sizeof ref, "%c_%s", v->kind, v->id);
-        if (v->kind == 'c')
-            compute_peratom_check(g, v->id, v->index, WHO);
-        else if (v->kind == 'f')
-            fix_peratom_check(g, ref, WHO);
-        else if (v->kind == 'v' && (!var_exists(g, v->id) || !var_is_atom(g, v->id)))
-            gr_error(g, WHO " %s: variable '%s' %s", f->id, v->id,
-                     var_exists(g, v->id) ? "is not atom-style" : "does not exist");
-    }
+    for (int j = 0; j < a->nvalues; j++)
+        peratom_input_check(g, &a->v[j], WHO, f->id);
     if (a->s.nvalid < g->step)
         ave_sched_reset(g, &a->s);
 }
@@ -140,29 +106,6 @@ static void reserve(struct gravel *g, struct ave_atom *a, int64_t t)
     a->cap = cap;
 }
 
-/* value j of every host atom: p[i * *stride]; *owned is freed by the caller */
-static const double *value_of_atoms(struct gravel *g, const struct avalue *v, int *stride,
-                                    double **owned)
-{
-    *owned = NULL;
-    *stride = 1;
-    if (v->kind == 'a') {
-        const double *base[3] = {g->atoms.x, g->atoms.v, g->atoms.f};
-        *stride = 3;
-        return base[v->index / 3] + v->index % 3;
-    }
-    if (v->kind == 'v')
-        return *owned = var_atom_values(g, v->id);
-    if (v->kind == 'c')
-        return compute_peratom_ref(g, compute_get(g, v->id, WHO), v->index, stride, WHO);
-    char ref[GR_NAMELEN + 24];
-    if (v->index)
-        snprintf(ref, sizeof ref, "f_%s[%d]", v->id, v->index);
-    else
-        snprintf(ref, sizeof ref, "f_%s", v->id);
-    return fix_peratom_ref(g, ref, stride, WHO);
-}
-
 /* One sample on the host atoms (and the average when it closes the epoch). */
 static void take(struct gravel *g, struct fix *f)
 {
@@ -177,7 +120,7 @@ static void take(struct gravel *g, struct fix *f)
     for (int j = 0; j < nv; j++) {
         int stride;
         double *owned;
-        const double *p = value_of_atoms(g, &a->v[j], &stride, &owned);
+        const double *p = peratom_input_values(g, &a->v[j], &stride, &owned, WHO);
         for (int i = 0; i < at->n; i++)
             if (at->mask[i] & f->groupbit)
                 a->sum[(size_t)at->tag[i] * nv + j] += p[(size_t)i * stride];
