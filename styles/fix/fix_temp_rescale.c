@@ -1,0 +1,167 @@
+/* fix_temp_rescale.c - `fix ID group temp/rescale N Tstart Tstop window
+ * fraction`: velocity rescaling toward a target temperature, as LAMMPS's
+ * fix temp/rescale: at the end of every N-th step, with T the group's
+ * temperature (its own compute temp, or `fix_modify ID temp CID`) and the
+ * target Tstart + (step - begin) / (end - begin) (Tstop - Tstart) over the
+ * run (Tstart may be v_name, an equal-style variable: the target is then
+ * its value), when |T - target| > window the group's velocities are scaled
+ * by sqrt(T' / T), T' = T - fraction (T - target). The energy taken out,
+ * sum of (T - T') dof kB / 2, is the fix's scalar (extensive). The work is
+ * on the host (the atoms synced, the velocities written back), as fix
+ * momentum's. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "compute.h"
+#include "device.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "temperature.h"
+#include "variable.h"
+
+#define WHO "fix temp/rescale"
+
+struct temp_rescale {
+    int nevery;
+    double t_start, t_stop, window, fraction;
+    char *tvar;                 /* Tstart as v_name (else NULL) */
+    char temp_id[GR_NAMELEN];   /* fix_modify temp (else the fix's own) */
+    struct temp_state own;      /* compute temp of the fix's group */
+    double energy;
+};
+
+static void destroy(struct fix *f)
+{
+    struct temp_rescale *r = f->data;
+    if (r)
+        free(r->tvar);
+    free(r);
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc != 5)
+        gr_error(g, WHO " expects N Tstart Tstop window fraction, got %d arguments", argc);
+    struct temp_rescale *r = gr_calloc(g, 1, sizeof *r);
+    f->data = r;
+    r->nevery = arg_int(g, argv[0], WHO " N");
+    if (r->nevery <= 0)
+        gr_error(g, WHO ": N must be > 0, got %d", r->nevery);
+    if (!strncmp(argv[1], "v_", 2) && argv[1][2])
+        r->tvar = gr_strdup(g, argv[1] + 2);
+    else
+        r->t_start = arg_double(g, argv[1], WHO " Tstart");
+    r->t_stop = arg_double(g, argv[2], WHO " Tstop");
+    r->window = arg_double(g, argv[3], WHO " window");
+    r->fraction = arg_double(g, argv[4], WHO " fraction");
+    r->own.kind = TEMP_TRANS;
+    r->own.groupbit = f->groupbit;
+    f->hooks = HOOK_END_OF_STEP;
+}
+
+static struct temp_state *temperature(struct gravel *g, struct fix *f)
+{
+    struct temp_rescale *r = f->data;
+    if (!r->temp_id[0])
+        return &r->own;
+    struct compute *c = compute_get(g, r->temp_id, WHO);
+    if (!c->temp)
+        gr_error(g, WHO " %s: compute %s (%s) is not a temperature", f->id, c->id,
+                 c->style->name);
+    return c->temp;
+}
+
+/* fix_modify ID temp CID */
+static int modify_param(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    struct temp_rescale *r = f->data;
+    if (strcmp(argv[0], "temp"))
+        return 0;
+    if (argc < 2)
+        gr_error(g, "fix_modify %s temp needs a compute ID", f->id);
+    compute_temp_arg(g, argv[1], r->temp_id, "fix_modify temp");
+    if (!r->temp_id[0])
+        gr_error(g, "fix_modify %s temp needs a compute ID, not NULL", f->id);
+    temperature(g, f);
+    return 2;
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct temp_rescale *r = f->data;
+    if (r->tvar && !var_is_equal(g, r->tvar))
+        gr_error(g, WHO " %s: variable '%s' %s", f->id, r->tvar,
+                 var_exists(g, r->tvar) ? "is not equal-style" : "does not exist");
+    temp_setup(g, temperature(g, f));
+}
+
+static void end_of_step(struct gravel *g, struct fix *f)
+{
+    struct temp_rescale *r = f->data;
+    if (g->step % r->nevery)
+        return;
+    run_sync_host(g); /* host order = device order */
+    struct temp_state *t = temperature(g, f);
+    const double t_current = temp_scalar(g, t), dof = temp_dof(g, t);
+    if (dof < 1)
+        return;
+    if (t_current == 0.0)
+        gr_error(g, "computed temperature for fix temp/rescale cannot be 0.0 (step %lld)",
+                 (long long)g->step);
+    double delta = (double)(g->step - g->beginstep);
+    if (delta != 0.0)
+        delta /= (double)(g->endstep - g->beginstep);
+    double target = r->tvar ? var_compute_equal(g, r->tvar)
+                            : r->t_start + delta * (r->t_stop - r->t_start);
+    if (fabs(t_current - target) <= r->window)
+        return;
+    target = t_current - r->fraction * (t_current - target);
+    const double factor = sqrt(target / t_current);
+    r->energy += (t_current - target) * 0.5 * temp_boltz(g) * dof;
+    struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & f->groupbit)
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] *= factor;
+    struct dev_atoms *s = eng_atoms(g);
+    if (!s->shared)
+        eng_write_reals(g, s->v, 3 * (size_t)a->n, a->v);
+}
+
+static double scalar(struct gravel *g, struct fix *f)
+{
+    (void)g;
+    return ((struct temp_rescale *)f->data)->energy;
+}
+
+static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)
+{
+    (void)g;
+    const double e = ((struct temp_rescale *)f->data)->energy;
+    if (buf && cap >= sizeof e)
+        memcpy(buf, &e, sizeof e);
+    return sizeof e;
+}
+
+static void read_restart(struct gravel *g, struct fix *f, const unsigned char *buf, size_t len)
+{
+    if (len != sizeof(double))
+        gr_error(g, "fix %s: restart state of %zu bytes, expected %zu", f->id, len,
+                 sizeof(double));
+    memcpy(&((struct temp_rescale *)f->data)->energy, buf, sizeof(double));
+}
+
+const struct fix_style fix_style_temp_rescale = {
+    .name = "temp/rescale",
+    .create = create,
+    .init = init,
+    .end_of_step = end_of_step,
+    .modify_param = modify_param,
+    .scalar = scalar,
+    .destroy = destroy,
+    .write_restart = write_restart,
+    .read_restart = read_restart,
+};
