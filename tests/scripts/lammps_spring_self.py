@@ -20,8 +20,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, close, dump_steps,  # noqa: E402
-                  expect_errors, falling_bed, folders, run, thermo_rows)
+from peer import (GRAVEL, check, check_refused_on_ranks, check_restart_continues,  # noqa: E402
+                  close, dump_steps, expect_errors, falling_bed, folders, run, thermo_rows)
 
 REL = 1e-8
 L = 4.0
@@ -39,7 +39,7 @@ DECK = HEAD + SPRING + OUT + "run 1500\n"
 def main():
     tmp = tempfile.mkdtemp()
     try:
-        gdir, ldir, rdir, edir, mdir = folders(tmp, "g", "l", "r", "errors", "m")
+        gdir, ldir, edir, mdir = folders(tmp, "g", "l", "errors", "m")
         rc, gout = run([GRAVEL], DECK, gdir)
         g = thermo_rows(gout, 4)
         gs = dump_steps(os.path.join(gdir, "out.dump")) if rc == 0 else {}
@@ -78,17 +78,10 @@ def main():
               "thermo %s, from the positions %g: %s" % (rows[-1:] if rows else None, e,
                                                         out[-300:]))
         # a restart at step 750 continues exactly
-        pos = "dump 1 all custom 1500 out.dump id x y z vx vy vz\n" \
-              "dump_modify 1 sort id format float %.17g\n"
-        one, = folders(tmp, "one")
-        run([GRAVEL], HEAD + SPRING + pos + "run 1500\n", one)
-        run([GRAVEL], HEAD + SPRING + "run 750\nwrite_restart r.bin\n", rdir)
-        rc, out = run([GRAVEL], "read_restart r.bin\n" + HEAD[HEAD.index("fix 1"):] + SPRING +
-                      pos.replace("1500", "750") + "run 750\n", rdir)
-        ref = dump_steps(os.path.join(one, "out.dump")).get(1500)
-        got = dump_steps(os.path.join(rdir, "out.dump")).get(1500) if rc == 0 else None
-        check("spring_self_restart_continues_exactly", ref is not None and got == ref,
-              "exit %d: %s" % (rc, out[-400:]))
+        check_restart_continues("spring_self_restart_continues_exactly", tmp, HEAD + SPRING,
+                                HEAD[HEAD.index("fix 1"):] + SPRING,
+                                "dump 1 all custom %d out.dump id x y z vx vy vz\n"
+                                "dump_modify 1 sort id format float %%.17g\n", 750)
         expect_errors({
             "spring_self_args": ("fix s top spring/self\n", "ERROR: fix: fix spring/self expects "
                                  "K [xyz|xy|xz|yz|x|y|z], got 0 arguments"),

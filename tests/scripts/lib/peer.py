@@ -142,3 +142,17 @@ def check_same_on_ranks(name, np, deck, cwd, ref_dir, files):
         open(os.path.join(cwd, f), "rb").read() == open(os.path.join(ref_dir, f), "rb").read()
         for f in files)
     check(name, same, "exit %d: %s" % (r[0], r[1][-400:]))
+
+
+def check_restart_continues(name, parent, deck, resumed, dump, n):
+    """case name: `deck`, then `dump % (2 n)` and a run of 2 n steps, writes the same
+    dump at step 2 n as `deck`, a run of n, write_restart, then in a new input
+    read_restart + `resumed` (the fixes again) + `dump % n` and a run of n (dump: a
+    dump command writing out.dump every %d steps)"""
+    one, two = folders(parent, name + "_one", name + "_two")
+    run([GRAVEL], deck + dump % (2 * n) + "run %d\n" % (2 * n), one)
+    run([GRAVEL], deck + "run %d\nwrite_restart r.bin\n" % n, two)
+    rc, out = run([GRAVEL], "read_restart r.bin\n" + resumed + dump % n + "run %d\n" % n, two)
+    ref = dump_steps(os.path.join(one, "out.dump")).get(2 * n)
+    got = dump_steps(os.path.join(two, "out.dump")).get(2 * n) if rc == 0 else None
+    check(name, ref is not None and got == ref, "exit %d: %s" % (rc, out[-400:]))
