@@ -36,6 +36,26 @@ void compute_temp_arg(struct gravel *g, const char *arg, char *id, const char *w
     snprintf(id, GR_NAMELEN, "%s", strcmp(arg, "NULL") ? arg : "");
 }
 
+void compute_virial_terms(struct gravel *g, int argc, char **argv, int *keflag, int *virialflag,
+                          const char *who)
+{
+    static const char *const none[] = {"fix", "bond", "angle", "dihedral", "improper", "kspace"};
+    *keflag = *virialflag = argc == 0;
+    for (int i = 0; i < argc; i++) {
+        int known = !strcmp(argv[i], "ke") || !strcmp(argv[i], "pair") ||
+                    !strcmp(argv[i], "virial");
+        for (size_t k = 0; k < sizeof none / sizeof *none; k++)
+            known |= !strcmp(argv[i], none[k]);
+        if (!known)
+            gr_error(g, "%s: unknown keyword '%.64s' (ke, pair, bond, angle, dihedral, improper, "
+                        "kspace, fix, virial)", who, argv[i]);
+        if (!strcmp(argv[i], "ke"))
+            *keflag = 1;
+        else if (!strcmp(argv[i], "pair") || !strcmp(argv[i], "virial"))
+            *virialflag = 1;
+    }
+}
+
 struct temp_state *compute_temp_named(struct gravel *g, const char *id, const char *who)
 {
     if (!id[0])

@@ -145,6 +145,13 @@ void compute_temp_arg(struct gravel *g, const char *arg, char *id, const char *w
  * an error when the compute is not a temperature. */
 struct temp_state *compute_temp_named(struct gravel *g, const char *id, const char *who);
 
+/* LAMMPS's term keywords of compute pressure and stress/atom (argv after the
+ * temperature ID): ke sets *keflag, pair or virial *virialflag; fix and the
+ * molecular terms (bond angle dihedral improper kspace) add nothing here;
+ * none given sets both. Errors name `who`. */
+void compute_virial_terms(struct gravel *g, int argc, char **argv, int *keflag, int *virialflag,
+                          const char *who);
+
 /* Mass-velocity^2 to energy factor of the current units (1 in lj, si, cgs). */
 double compute_mvv2e(const struct gravel *g);
 

@@ -28,25 +28,8 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
     struct press *p = gr_calloc(g, 1, sizeof *p);
     c->data = p;
     compute_temp_arg(g, argv[0], p->temp_id, "compute pressure");
-    if (argc == 1) {
-        p->keflag = p->virialflag = 1;
-    } else {
-        for (int i = 1; i < argc; i++) {
-            if (!strcmp(argv[i], "ke"))
-                p->keflag = 1;
-            else if (!strcmp(argv[i], "pair") || !strcmp(argv[i], "virial"))
-                p->virialflag = 1;
-            else if (!strcmp(argv[i], "fix"))
-                ; /* gravel's fixes have no virial, as LAMMPS 2021's granular fixes */
-            else if (!strcmp(argv[i], "bond") || !strcmp(argv[i], "angle") ||
-                     !strcmp(argv[i], "dihedral") || !strcmp(argv[i], "improper") ||
-                     !strcmp(argv[i], "kspace"))
-                ; /* no such terms: zero */
-            else
-                gr_error(g, "compute pressure: unknown keyword '%.64s' (ke, pair, virial, fix)",
-                         argv[i]);
-        }
-    }
+    compute_virial_terms(g, argc - 1, argv + 1, &p->keflag, &p->virialflag,
+                         "compute pressure");
     if (p->keflag && !p->temp_id[0])
         gr_error(g, "compute pressure: the kinetic part needs a temperature compute, not NULL");
     c->scalar_flag = 1;

@@ -29,18 +29,8 @@ static void create(struct gravel *g, struct compute *c, int argc, char **argv)
     struct stress_atom *s = gr_calloc(g, 1, sizeof *s);
     c->data = s;
     compute_temp_arg(g, argv[0], s->temp_id, "compute stress/atom");
-    s->keflag = s->pairflag = argc == 1;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "ke"))
-            s->keflag = 1;
-        else if (!strcmp(argv[i], "pair") || !strcmp(argv[i], "virial"))
-            s->pairflag = 1;
-        else if (strcmp(argv[i], "fix") && strcmp(argv[i], "bond") && strcmp(argv[i], "angle") &&
-                 strcmp(argv[i], "dihedral") && strcmp(argv[i], "improper") &&
-                 strcmp(argv[i], "kspace")) /* those: no such terms here, zero */
-            gr_error(g, "compute stress/atom: unknown keyword '%.64s' (ke, pair, bond, angle, "
-                        "dihedral, improper, kspace, fix, virial)", argv[i]);
-    }
+    compute_virial_terms(g, argc - 1, argv + 1, &s->keflag, &s->pairflag,
+                         "compute stress/atom");
     c->peratom_flag = 1;
     c->size_peratom_cols = 6;
 }
