@@ -80,6 +80,18 @@ def rows(cmd, cwd):
     return rc, thermo_rows(out, 11), heads, out
 
 
+def both_match(name, deck, cwd, ncol, nrows, rel):
+    """case name: deck's thermo rows of ncol values, nrows of them, in gravel and lmp
+    agree to rel"""
+    rc, gout = run([GRAVEL], deck, cwd)
+    rc2, lout = run(["lmp"], deck, cwd)
+    g, lm = thermo_rows(gout, ncol), thermo_rows(lout, ncol)
+    bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+           if abs(a - b) > rel * max(abs(b), 1e-12)]
+    check(name, rc == 0 and rc2 == 0 and len(g) == nrows and len(lm) == nrows and not bad,
+          "%s\n%s\n%s" % (bad[:3], gout[-400:], lout[-400:]))
+
+
 def main():
     tmp = tempfile.mkdtemp()
     try:
@@ -92,20 +104,8 @@ def main():
         bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
                if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
         ok = ok and rc2 == 0 and len(lm) == len(g) and gh == lh and not bad
-        rc, gt = run([GRAVEL], TEMP_DECK, tmp)
-        rc2, lt = run(["lmp"], TEMP_DECK, tmp)
-        g9, l9 = thermo_rows(gt, 9), thermo_rows(lt, 9)
-        badt = [(r[0], a, b) for r, s in zip(g9, l9) for a, b in zip(r, s)
-                if abs(a - b) > 1e-10 * max(abs(b), 1e-12)]
-        check("thermo_temp_vector_matches_lammps", rc == 0 and rc2 == 0 and len(g9) == 5 and
-              len(l9) == 5 and not badt, "%s\n%s\n%s" % (badt[:3], gt[-400:], lt[-400:]))
-        rc, gk = run([GRAVEL], KW_DECK, tmp)
-        rc2, lk = run(["lmp"], KW_DECK, tmp)
-        g17, l17 = thermo_rows(gk, 17), thermo_rows(lk, 17)
-        badk = [(r[0], a, b) for r, s in zip(g17, l17) for a, b in zip(r, s)
-                if abs(a - b) > 1e-9 * max(abs(b), 1e-12)]
-        check("thermo_keywords_more_match_lammps", rc == 0 and rc2 == 0 and len(g17) == 11 and
-              len(l17) == 11 and not badk, "%s\n%s\n%s" % (badk[:3], gk[-400:], lk[-400:]))
+        both_match("thermo_temp_vector_matches_lammps", TEMP_DECK, tmp, 9, 5, 1e-10)
+        both_match("thermo_keywords_more_match_lammps", KW_DECK, tmp, 17, 11, 1e-9)
         check("thermo_press_matches_lammps", ok,
               "%s %s\n%s\n%s" % (bad[:3], gh, gout[-400:], lout[-400:]))
     finally:
