@@ -1619,6 +1619,37 @@ int nbr_xhold_read(struct gravel *g, int n, double *out)
     return e->nbr->ago;
 }
 
+int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f)
+{
+    struct engine *e = g->eng;
+    if (!e || !e->nbr || !e->nbr->built || e->a.n != g->atoms.n)
+        return -1;
+    const struct nbr_list *l = &e->nbr->list;
+    const int nc = l->ncontact;
+    const size_t w = rec_reals(e);
+    *ci = gr_malloc(g, ((size_t)nc + 1) * sizeof(int));
+    *cj = gr_malloc(g, ((size_t)nc + 1) * sizeof(int));
+    *f = gr_malloc(g, (3 * (size_t)nc + 1) * sizeof(double));
+    if (nc == 0)
+        return 0;
+    double *rec = gr_malloc(g, w * (size_t)nc * sizeof(double));
+    unsigned char *quiet = gr_calloc(g, (size_t)nc, 1);
+    eng_read(g, l->ci, 0, (size_t)nc * sizeof(cl_int), *ci);
+    eng_read(g, l->cj, 0, (size_t)nc * sizeof(cl_int), *cj);
+    if (l->quiet)
+        eng_read(g, l->quiet, 0, (size_t)nc, quiet);
+    if (l->rec)
+        eng_read_reals(g, l->rec, w * (size_t)nc, rec);
+    else
+        memset(rec, 0, w * (size_t)nc * sizeof(double));
+    for (int c = 0; c < nc; c++)
+        for (int d = 0; d < 3; d++)
+            (*f)[3 * (size_t)c + d] = quiet[c] ? 0.0 : rec[w * (size_t)c + d];
+    free(rec);
+    free(quiet);
+    return nc;
+}
+
 int nbr_export(struct gravel *g, struct nbr_state *s)
 {
     memset(s, 0, sizeof *s);

@@ -129,6 +129,14 @@ int nbr_xhold_read(struct gravel *g, int n, double *out);
 void nbr_history_install(struct gravel *g, const void *hist);
 int nbr_import(struct gravel *g, const struct nbr_state *s);
 void nbr_state_free(struct nbr_state *s);
+/* The pair force of every contact of the current list at its last
+ * evaluation (the records pair_contacts wrote: zero for a contact that did
+ * not act), read back in contact order: ci[k] and cj[k] the two atoms
+ * (device indices = host indices after run_sync_host), f[3k .. 3k+2] the
+ * force on ci[k] from cj[k] (cj[k] receives its negative). Returns the
+ * count (the arrays malloc'd, caller frees), or -1 when no list is built
+ * for the current atoms (nothing allocated). */
+int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f);
 
 /* The list's box for a kernel's BOX argument (kernels/kernel_args.h):
  * Lx Ly Lz (0 = not periodic) and the tilts xy xz yz. */

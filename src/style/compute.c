@@ -351,7 +351,7 @@ void compute_ref_check(struct gravel *g, const char *ref, const char *who)
     if (index > 0 && !c->vector_flag)
         gr_error(g, "%s: compute %s (%s) does not produce a global vector", who, id,
                  c->style->name);
-    if (index > 0 && index > c->size_vector)
+    if (index > 0 && index > c->size_vector && !c->size_vector_variable)
         gr_error(g, "%s: %s is out of range: compute %s has %d values", who, ref, id,
                  c->size_vector);
 }
@@ -376,7 +376,11 @@ double compute_ref_value(struct gravel *g, const char *ref, long long norm, cons
         v = compute_scalar(g, c);
         ext = c->extscalar;
     } else {
-        v = compute_vector(g, c)[index - 1];
+        const double *vec = compute_vector(g, c);
+        if (index > c->size_vector)
+            gr_error(g, "%s: %s is out of range: compute %s has %d values now", who, ref, id,
+                     c->size_vector);
+        v = vec[index - 1];
         ext = c->extvector;
     }
     if (norm > 0 && ext)

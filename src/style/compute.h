@@ -55,6 +55,7 @@ struct compute {
     unsigned groupbit;          /* 1u << igroup */
     int scalar_flag, vector_flag, peratom_flag;
     int size_vector;
+    int size_vector_variable;   /* 1: size_vector is known after each evaluation (property/chunk) */
     int size_peratom_cols;      /* 0: per-atom vector; else columns of a per-atom array */
     int extscalar, extvector;   /* 1: extensive, thermo divides by atoms when norm yes */
     double *vector;             /* [size_vector], owned */

@@ -299,6 +299,7 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
     gr->ndim = ca->ndim;
     gr->nchunk = nbins;
     gr->reduced = ca->scaleflag == SC_REDUCED;
+    gr->discard_no = ca->discard == DISCARD_NO;
     free(ca->coord);
     ca->coord = gr_malloc(g, (size_t)nbins * ca->ndim * sizeof(double));
     for (int k = 0; k < nbins; k++) {

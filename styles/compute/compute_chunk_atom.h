@@ -13,6 +13,7 @@ struct chunk_grid {
     double offset[3], delta[3]; /* lower edge and width of the bins (box units,
                                    or fractions of the box with units reduced) */
     int reduced;                /* units reduced */
+    int discard_no;             /* discard no: out-of-range atoms clamped into the end bins */
     int nchunk;                 /* product of nlayers */
     double volume;              /* LAMMPS's chunk_volume_scalar (box units^3) */
     const double *coord;        /* [nchunk][ndim] bin centres, LAMMPS order:

@@ -114,7 +114,7 @@ static void check_value(struct gravel *g, struct ave_time *a, struct value *v)
             return;
         }
         ave_global_check(g, 'c', v->id, i, vec, a->s.nevery, WHO);
-        v->varlen = vec && i;
+        v->varlen = vec && (i || compute_get(g, v->id, WHO)->size_vector_variable);
     } else if (v->which == W_FIX) {
         ave_global_check(g, 'f', v->id, i, vec, a->s.nevery, WHO);
     } else {
@@ -136,8 +136,11 @@ static int column_length(struct gravel *g, const struct value *v)
 {
     if (v->which == W_COMPUTE) {
         struct compute *c = compute_get(g, v->id, WHO);
-        if (v->argindex == 0)
+        if (v->argindex == 0) {
+            if (c->size_vector_variable)
+                compute_vector(g, c);
             return c->size_vector;
+        }
         compute_array(g, c);
         return c->size_array_rows;
     }
