@@ -29,7 +29,7 @@
 #include "fix.h"
 #include "host_pairs.h"
 #include "pair.h"
-#include "par.h"
+#include "pair_single_eval.h"
 
 enum { V_DIST, V_ENG, V_FORCE, V_FX, V_FY, V_FZ, V_P };
 static const char *const names[] = {"dist", "eng", "force", "fx", "fy", "fz"};
@@ -68,7 +68,7 @@ static void pl_create(struct gravel *g, struct compute *c, int argc, char **argv
         if (k < 0 && argv[i][0] == 'p' && argv[i][1] >= '1' && argv[i][1] <= '9') {
             char *end;
             long m = strtol(argv[i] + 1, &end, 10);
-            if (*end || m < 1 || m > 64)
+            if (*end || m < 1 || m > PAIR_SINGLE_SV)
                 gr_error(g, "compute pair/local: invalid value '%.64s' (pN: N from 1)", argv[i]);
             k = V_P + (int)m - 1;
         }
@@ -122,83 +122,43 @@ static void pl_init(struct gravel *g, struct compute *c)
     pl_pair(g, c, &caps);
 }
 
-/* Several ranks (the atoms gathered in tag order for the output step): the
- * history of each pair from every rank's contacts by tag pair, seen from i
- * (the lower tag, the contact's owner on every rank as on one process), as
- * host_pairs_history gives it on one process; pairs in no list get zeros. */
-static int history_ranks(struct gravel *g, const struct host_pair *p, int np, double *hist)
-{
-    int64_t *tags = gr_malloc(g, (2 * (size_t)np + 1) * sizeof *tags);
-    for (int k = 0; k < np; k++) {
-        tags[2 * k] = g->atoms.tag[p[k].i];
-        tags[2 * k + 1] = g->atoms.tag[p[k].j];
-    }
-    int hw = par_pair_history(g, np, tags, HOST_PAIRS_HIST_MAX, hist);
-    free(tags);
-    return hw;
-}
-
 static void pl_local(struct gravel *g, struct compute *c)
 {
     struct pair_local *pl = c->data;
-    const struct atoms *a = &g->atoms;
     struct pair_caps caps;
     pl_pair(g, c, &caps);
-    unsigned frozen = fix_frozen_groupbit(g);
     struct host_pair *p;
     int np = host_pairs_local(g, c->groupbit, pl->radius, &p, "compute pair/local");
     int nc = pl->n > 1 ? pl->n : 1;
     int wants_sv = 0;
     for (int q = 0; q < pl->n; q++)
         wants_sv |= pl->v[q] >= V_P;
-    double *hist = NULL, sv[64];
-    int hw = 0;
-    if ((wants_sv || (pl->needs_single && caps.single_hist)) && np > 0) {
-        hist = gr_malloc(g, (size_t)np * HOST_PAIRS_HIST_MAX * sizeof *hist);
-        hw = par_gathered(g) ? history_ranks(g, p, np, hist) : host_pairs_history(g, p, np, hist);
-    }
+    double *eng = gr_calloc(g, (size_t)np + 1, sizeof *eng);
+    double *fpair = gr_calloc(g, (size_t)np + 1, sizeof *fpair);
+    double *sv = wants_sv ? gr_calloc(g, (size_t)np * PAIR_SINGLE_SV + 1, sizeof *sv) : NULL;
+    if (pl->needs_single)
+        pair_single_eval(g, &caps, p, np, eng, fpair, sv);
     double *out = compute_local_rows(g, c, np);
     for (int k = 0; k < np; k++) {
-        int i = p[k].i, j = p[k].j;
-        double eng = 0.0, fpair = 0.0;
-        if (pl->needs_single) {
-            struct pair_single s;
-            s.itype = a->type[i];
-            s.jtype = a->type[j];
-            memcpy(s.del, p[k].del, sizeof s.del);
-            s.rsq = p[k].rsq;
-            s.radi = a->radius[i];
-            s.radj = a->radius[j];
-            memcpy(s.vi, a->v + 3 * i, sizeof s.vi);
-            memcpy(s.vj, a->v + 3 * j, sizeof s.vj);
-            s.mi = a->rmass[i];
-            s.mj = a->rmass[j];
-            s.frozen_i = (a->mask[i] & frozen) != 0;
-            s.frozen_j = (a->mask[j] & frozen) != 0;
-            memcpy(s.omi, a->omega + 3 * i, sizeof s.omi);
-            memcpy(s.omj, a->omega + 3 * j, sizeof s.omj);
-            s.hist = hw > 0 ? hist + (size_t)k * hw : NULL;
-            s.sv = wants_sv ? sv : NULL;
-            memset(sv, 0, sizeof sv);
-            eng = caps.single(caps.single_of, &s, &fpair);
-        }
         double r = sqrt(p[k].rsq);
         for (int q = 0; q < pl->n; q++) {
             double v = 0.0;
             switch (pl->v[q]) {
             case V_DIST: v = r; break;
-            case V_ENG: v = eng; break;
-            case V_FORCE: v = r * fpair; break;
-            case V_FX: v = p[k].del[0] * fpair; break;
-            case V_FY: v = p[k].del[1] * fpair; break;
-            case V_FZ: v = p[k].del[2] * fpair; break;
-            default: v = sv[pl->v[q] - V_P]; break;
+            case V_ENG: v = eng[k]; break;
+            case V_FORCE: v = r * fpair[k]; break;
+            case V_FX: v = p[k].del[0] * fpair[k]; break;
+            case V_FY: v = p[k].del[1] * fpair[k]; break;
+            case V_FZ: v = p[k].del[2] * fpair[k]; break;
+            default: v = sv[(size_t)k * PAIR_SINGLE_SV + (pl->v[q] - V_P)]; break;
             }
             out[(size_t)k * nc + q] = v;
         }
     }
     free(p);
-    free(hist);
+    free(eng);
+    free(fpair);
+    free(sv);
 }
 
 /* several ranks: every value from the gathered atoms as one process (pairs in

@@ -2,7 +2,8 @@
  * ...`: per-chunk properties of a compute chunk/atom's bins, as LAMMPS's
  * compute property/chunk. Inputs:
  *   count          atoms of the group in the chunk
- *   id             the chunk's ID (1 .. nchunk)
+ *   id             the chunk's original ID: refused, as LAMMPS refuses it
+ *                  without chunk/atom's `compress yes` (gravel's is always no)
  *   coord1 coord2 coord3   the bin centre along the 1st, 2nd, 3rd binned
  *                  dimension (box units, or fractions of the box with units
  *                  reduced, as LAMMPS)
@@ -20,7 +21,7 @@
 #define WHO "compute property/chunk"
 #define PC_MAXIN 16
 
-enum { P_COUNT, P_ID, P_COORD1, P_COORD2, P_COORD3 };
+enum { P_COUNT, P_COORD1, P_COORD2, P_COORD3 };
 
 struct property_chunk {
     char chunk[GR_NAMELEN];
@@ -45,7 +46,9 @@ static void pc_create(struct gravel *g, struct compute *c, int argc, char **argv
         if (!strcmp(s, "count"))
             p = P_COUNT;
         else if (!strcmp(s, "id"))
-            p = P_ID;
+            gr_error(g, WHO ": compute chunk/atom %s stores no IDs for compute property/chunk "
+                        "(id needs compress yes, which gravel's chunk/atom does not have)",
+                     pc->chunk);
         else if (!strcmp(s, "coord1") || !strcmp(s, "coord2") || !strcmp(s, "coord3"))
             p = P_COORD1 + (s[5] - '1');
         else
@@ -90,7 +93,6 @@ static void pc_fill(struct gravel *g, struct compute *c, double **outp, int *row
             double v = 0;
             switch (pc->in[k]) {
             case P_COUNT: v = count[m]; break;
-            case P_ID: v = m + 1; break;
             default: v = grid->coord[(size_t)m * grid->ndim + (pc->in[k] - P_COORD1)]; break;
             }
             out[(size_t)m * pc->n + k] = v;

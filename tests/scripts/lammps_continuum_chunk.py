@@ -17,7 +17,7 @@
    contact's stress spreads to a unit weight, so the bins' mean contact
    stress is minus the pair virial of compute pressure (every component) to
    1e-6 and the fabric sums to sum (V_i + V_j) / 2 n n over the touching
-   pairs; stress = stress/ke + stress/contacts; property/chunk's id, count
+   pairs; stress = stress/ke + stress/contacts; property/chunk's count
    and coord1.
 3. A bed on a wall/gran plane (boundary/fix) and on a frozen layer
    (boundary/atom): the boundary force density integrates to minus the
@@ -112,7 +112,7 @@ compute bins all chunk/atom bin/1d y lower 0.25 units box
 compute cc all continuum/chunk bins 2.5 0.5 natoms density volume/fraction momentum/* &
   velocity/* velocity/grad/* momentum/grad/* strain/rate/* stress/* stress/ke/* &
   stress/contacts/* fabric/* temperature
-compute pc all property/chunk bins id count coord1
+compute pc all property/chunk bins count coord1
 compute p all pressure NULL virial
 fix a all ave/time 200 1 200 c_pc[*] c_cc[*] mode vector file cc.txt format " %.17g"
 dump d all custom 200 atoms.dump id mass radius x y z vx vy vz
@@ -137,7 +137,7 @@ def packing(tmp):
     W = kernel(cut, sd)
     atoms = dump_steps(os.path.join(tmp, "atoms.dump"))[200]
     rows = table(os.path.join(tmp, "cc.txt"))
-    col = lambda k, f, i=0: rows[k][4 + COL[f] + i]  # noqa: E731
+    col = lambda k, f, i=0: rows[k][3 + COL[f] + i]  # noqa: E731
     area, yc = L[0] * L[2], [h * (k + 0.5) for k in range(nb)]
     dens, mom, nat, vf, cnt = [0.0] * nb, [[0.0] * 3 for _ in range(nb)], [0] * nb, \
         [0.0] * nb, [0] * nb
@@ -176,9 +176,8 @@ def packing(tmp):
             for i, v in enumerate(vals):
                 worst = max(worst, abs(col(k, f, i) - v) / max(abs(v), 1e-9))
     check("packing_atom_fields_equal_independent_sums", worst < 1e-10, "worst rel %g" % worst)
-    check("property_chunk_id_count_coord1",
-          all(rows[k][1] == k + 1 and rows[k][2] == cnt[k] and rows[k][3] == yc[k]
-              for k in range(nb)), str(rows[0][:4]))
+    check("property_chunk_count_coord1",
+          all(rows[k][1] == cnt[k] and rows[k][2] == yc[k] for k in range(nb)), str(rows[0][:4]))
     p = [r for r in thermo_rows(out, 8) if r[0] == 200][0][2:]
     vol = L[0] * L[1] * L[2]
     virial = {"xx": p[0], "yy": p[1], "zz": p[2], "yx": p[3], "zx": p[4], "zy": p[5]}
@@ -330,6 +329,8 @@ def errors(tmp):
                            "discard no option is not supported"),
         "err_property_chunk_input": ("compute c all property/chunk bins count mass\n",
                                      "invalid input 'mass'"),
+        "err_property_chunk_id": ("compute c all property/chunk bins id\n",
+                                  "stores no IDs for compute property/chunk"),
         "err_property_chunk_coord2": ("compute c all property/chunk bins coord2\n",
                                       "coord2 needs a chunk/atom compute binned in 2"),
     }, head, tmp)
