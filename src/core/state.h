@@ -155,7 +155,12 @@ enum thermo_lost { LOST_ERROR, LOST_WARN, LOST_IGNORE };
 
 /* A temperature (src/engine/temperature.h): what it counts and its degrees of
  * freedom; the implicit thermo_temp and every compute temp, temp/sphere. */
-enum temp_kind { TEMP_TRANS, TEMP_SPHERE_ALL, TEMP_SPHERE_ROTATE };
+enum temp_kind {
+    TEMP_TRANS, TEMP_SPHERE_ALL, TEMP_SPHERE_ROTATE,
+    TEMP_COM,                   /* about the group's centre-of-mass velocity (temp/com) */
+    TEMP_PARTIAL,               /* the components in flags only (temp/partial) */
+    TEMP_REGION                 /* the group's atoms in a region, counted each time (temp/region) */
+};
 struct temp_state {
     enum temp_kind kind;
     unsigned groupbit;
@@ -165,6 +170,8 @@ struct temp_state {
     double dof;                 /* counted at run setup (temp_setup) */
     double dof_natoms;          /* atoms of the group at that count */
     int dof_valid;              /* dof holds the count of the current run */
+    int flags[3];               /* TEMP_PARTIAL: the components counted (x y z) */
+    char region[GR_NAMELEN];    /* TEMP_REGION: the region's ID */
 };
 
 #define GR_MAXTHERMO 64

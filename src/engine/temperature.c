@@ -12,6 +12,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
+#include "region.h"
 
 #define INERTIA 0.4 /* LAMMPS compute temp/sphere: solid sphere, in 2d as well */
 
@@ -25,18 +26,39 @@ double temp_boltz(const struct gravel *g)
     return 1.0;
 }
 
+/* atom i of the group counts (TEMP_REGION: also inside the region, now) */
+static int counts(struct gravel *g, const struct temp_state *t, const struct region *r, int i)
+{
+    const struct atoms *a = &g->atoms;
+    return (a->mask[i] & t->groupbit) && (!r || region_match(r, a->x + 3 * i));
+}
+
+static const struct region *temp_region(struct gravel *g, const struct temp_state *t)
+{
+    return t->kind == TEMP_REGION ? region_get(g, t->region) : NULL;
+}
+
+static int partial_n(const struct temp_state *t)
+{
+    return t->flags[0] + t->flags[1] + t->flags[2];
+}
+
 static double count_dof(struct gravel *g, const struct temp_state *t, double *natoms_out)
 {
     const struct atoms *a = &g->atoms;
+    const struct region *r = temp_region(g, t);
     int dim = g->dom.dimension;
     double count = 0, natoms = 0;
     for (int i = 0; i < a->n; i++) {
-        if (!(a->mask[i] & t->groupbit))
+        if (!counts(g, t, r, i))
             continue;
         natoms++;
         int finite = a->radius[i] > 0.0;
         switch (t->kind) {
-        case TEMP_TRANS: count += dim; break;
+        case TEMP_TRANS:
+        case TEMP_COM:
+        case TEMP_REGION: count += dim; break;
+        case TEMP_PARTIAL: count += partial_n(t); break;
         case TEMP_SPHERE_ALL: count += dim + (finite ? (dim == 3 ? 3 : 1) : 0); break;
         case TEMP_SPHERE_ROTATE: count += finite ? (dim == 3 ? 3 : 1) : 0; break;
         }
@@ -46,12 +68,17 @@ static double count_dof(struct gravel *g, const struct temp_state *t, double *na
         count = (double)comm_sum_ll((long long)count);
     }
     double extra = t->extra_set ? t->extra_dof : dim;
-    if (t->kind != TEMP_SPHERE_ROTATE) {
+    if (t->kind == TEMP_REGION) { /* LAMMPS's temp/region: no fix dof */
         count -= extra;
+    } else if (t->kind != TEMP_SPHERE_ROTATE) {
         /* LAMMPS's fix_dof: what fixes (rigid bodies) remove */
+        double fixdof = 0;
         for (int i = 0; i < g->styles.nfix; i++)
             if (g->styles.fix[i]->style->dof)
-                count -= g->styles.fix[i]->style->dof(g, g->styles.fix[i], t->groupbit);
+                fixdof += g->styles.fix[i]->style->dof(g, g->styles.fix[i], t->groupbit);
+        /* temp/partial: the share of the counted components */
+        const double share = t->kind == TEMP_PARTIAL ? (double)partial_n(t) / dim : 1.0;
+        count -= share * (extra + fixdof);
     }
     *natoms_out = natoms;
     return count;
@@ -79,7 +106,7 @@ static int removes_dof(struct gravel *g)
 double temp_dof(struct gravel *g, struct temp_state *t)
 {
     int in_run = g->eng && g->eng->active;
-    if (t->dynamic || !in_run || !t->dof_valid)
+    if (t->dynamic || t->kind == TEMP_REGION || !in_run || !t->dof_valid)
         temp_setup(g, t);
     if (t->dof < 0 && t->dof_natoms > 0)
         gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g%s)",
@@ -88,23 +115,65 @@ double temp_dof(struct gravel *g, struct temp_state *t)
     return t->dof;
 }
 
-/* sum m v.v (+ I m r^2 w.w) over the group, tag order. */
-static double sum_mv2(struct gravel *g, const struct temp_state *t)
+/* TEMP_COM: the group's centre-of-mass velocity (LAMMPS's group vcm), else 0 */
+static void bias_velocity(struct gravel *g, const struct temp_state *t, double vb[3])
 {
+    vb[0] = vb[1] = vb[2] = 0.0;
+    if (t->kind != TEMP_COM)
+        return;
     const struct atoms *a = &g->atoms;
     const int *order = atoms_tag_order(g);
-    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
+    struct par_sum s[4] = {{0}}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
         if (!(a->mask[i] & t->groupbit))
             continue;
-        const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
-                     r = a->radius[i];
+        const double m = a->rmass[i];
+        for (int d = 0; d < 3; d++)
+            par_sum_add(g, &s[d], a->tag[i], a->v[3 * i + d] * m);
+        par_sum_add(g, &s[3], a->tag[i], m);
+    }
+    const double mt = par_sum_total(g, &s[3]);
+    for (int d = 0; d < 3; d++) {
+        const double p = par_sum_total(g, &s[d]);
+        vb[d] = mt > 0 ? p / mt : 0.0;
+    }
+}
+
+/* the velocity atom i's temperature counts: v minus the bias (TEMP_COM),
+ * the uncounted components zeroed (TEMP_PARTIAL) */
+static void thermal_velocity(const struct gravel *g, const struct temp_state *t, int i,
+                             const double vb[3], double u[3])
+{
+    const double *v = g->atoms.v + 3 * i;
+    for (int d = 0; d < 3; d++) {
+        u[d] = v[d] - vb[d];
+        if (t->kind == TEMP_PARTIAL && !t->flags[d])
+            u[d] = 0.0;
+    }
+}
+
+/* sum m u.u (+ I m r^2 w.w) over the counted atoms, tag order. */
+static double sum_mv2(struct gravel *g, const struct temp_state *t)
+{
+    const struct atoms *a = &g->atoms;
+    const struct region *r = temp_region(g, t);
+    const int *order = atoms_tag_order(g);
+    double vb[3];
+    bias_velocity(g, t, vb);
+    struct par_sum sum = {0}; /* every rank's atoms, in tag order */
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
+        if (!counts(g, t, r, i))
+            continue;
+        const double *w = a->omega + 3 * i, m = a->rmass[i], rad = a->radius[i];
+        double u[3];
+        thermal_velocity(g, t, i, vb, u);
         if (t->kind != TEMP_SPHERE_ROTATE)
-            par_sum_add(g, &sum, 2 * a->tag[i], (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * m);
-        if (t->kind != TEMP_TRANS)
+            par_sum_add(g, &sum, 2 * a->tag[i], (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * m);
+        if (t->kind == TEMP_SPHERE_ALL || t->kind == TEMP_SPHERE_ROTATE)
             par_sum_add(g, &sum, 2 * a->tag[i] + 1,
-                        (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * r * r * m);
+                        (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * rad * rad * m);
     }
     return par_sum_total(g, &sum);
 }
@@ -120,14 +189,18 @@ double temp_scalar(struct gravel *g, struct temp_state *t)
 void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
 {
     const struct atoms *a = &g->atoms;
+    const struct region *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
+    double vb[3];
+    bias_velocity(g, t, vb);
     struct par_sum s[6] = {{0}}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
-        if (!(a->mask[i] & t->groupbit))
+        if (!counts(g, t, r, i))
             continue;
-        const double *v = a->v + 3 * i, *w = a->omega + 3 * i, m = a->rmass[i],
-                     r = a->radius[i];
+        const double *w = a->omega + 3 * i, m = a->rmass[i], rad = a->radius[i];
+        double v[3];
+        thermal_velocity(g, t, i, vb, v);
         const int64_t key = 2 * a->tag[i];
         if (t->kind != TEMP_SPHERE_ROTATE) {
             par_sum_add(g, &s[0], key, m * v[0] * v[0]);
@@ -137,8 +210,8 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
             par_sum_add(g, &s[4], key, m * v[0] * v[2]);
             par_sum_add(g, &s[5], key, m * v[1] * v[2]);
         }
-        if (t->kind != TEMP_TRANS) {
-            double in = INERTIA * m * r * r;
+        if (t->kind == TEMP_SPHERE_ALL || t->kind == TEMP_SPHERE_ROTATE) {
+            double in = INERTIA * m * rad * rad;
             par_sum_add(g, &s[0], key + 1, in * w[0] * w[0]);
             par_sum_add(g, &s[1], key + 1, in * w[1] * w[1]);
             par_sum_add(g, &s[2], key + 1, in * w[2] * w[2]);
@@ -149,6 +222,27 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
     }
     for (int d = 0; d < 6; d++)
         out[d] = par_sum_total(g, &s[d]) * compute_mvv2e(g);
+}
+
+void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbit,
+                        double factor)
+{
+    struct atoms *a = &g->atoms;
+    const struct region *r = temp_region(g, t);
+    double vb[3];
+    bias_velocity(g, t, vb);
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & groupbit))
+            continue;
+        double *v = a->v + 3 * i;
+        if (r && !region_match(r, a->x + 3 * i))
+            continue; /* temp/region's bias: the atoms outside keep their velocity */
+        for (int d = 0; d < 3; d++) {
+            if (t->kind == TEMP_PARTIAL && !t->flags[d])
+                continue; /* the bias: an uncounted component is kept */
+            v[d] = t->kind == TEMP_COM ? (v[d] - vb[d]) * factor + vb[d] : v[d] * factor;
+        }
+    }
 }
 
 struct temp_state *temp_thermo(struct gravel *g)

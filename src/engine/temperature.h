@@ -5,11 +5,16 @@
  * T = mvv2e sum(...) / (dof kB), summed over the group in tag order:
  *   TEMP_TRANS          m v.v (all three components, also in 2d);
  *   TEMP_SPHERE_ALL     m v.v + 0.4 m r^2 w.w (solid-sphere inertia, also in 2d);
- *   TEMP_SPHERE_ROTATE  0.4 m r^2 w.w only.
+ *   TEMP_SPHERE_ROTATE  0.4 m r^2 w.w only;
+ *   TEMP_COM            m (v - vcm).(v - vcm), vcm the group's (temp/com);
+ *   TEMP_PARTIAL        m v.v over the components of flags (temp/partial);
+ *   TEMP_REGION         m v.v of the group's atoms in the region now (temp/region).
  * Degrees of freedom, per atom of the group (LAMMPS 2021 dof_compute):
  *   TRANS: dim;  SPHERE_ALL: 3d 6 (3 if r = 0), 2d 3 (2 if r = 0);
- *   SPHERE_ROTATE: 3d 3, 2d 1 (0 if r = 0);
- * minus extra/dof (default: the dimension) except in ROTATE mode. dof < 0
+ *   SPHERE_ROTATE: 3d 3, 2d 1 (0 if r = 0); COM, REGION: dim; PARTIAL: the
+ * components counted; minus extra/dof (default: the dimension) and the
+ * fixes' dof except in ROTATE mode (PARTIAL: their share n/dim; REGION:
+ * extra/dof only, counted at every evaluation, as LAMMPS). dof < 0
  * with atoms in the group is an error; dof = 0 gives T = 0. The count is
  * taken at run setup and kept through the run (dynamic/dof no, LAMMPS's
  * default) or retaken at every evaluation (dynamic/dof yes); outside a run
@@ -30,6 +35,13 @@ double temp_scalar(struct gravel *g, struct temp_state *t);
 /* Kinetic-energy tensor xx yy zz xy xz yz (mvv2e sum m v_a v_b, plus the
  * rotational terms for the sphere kinds), extensive, as LAMMPS's vector. */
 void temp_vector(struct gravel *g, struct temp_state *t, double out[6]);
+/* Scale the thermal part of the velocities of the atoms in groupbit by
+ * factor, as LAMMPS's remove_bias_all, scale, restore_bias_all: v = (v - the
+ * centre-of-mass velocity) factor + it (TEMP_COM), the uncounted components
+ * (TEMP_PARTIAL) and the atoms outside the region (TEMP_REGION) unchanged,
+ * v factor otherwise. Host arrays. */
+void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbit,
+                        double factor);
 /* The temperature that thermo uses: thermo_modify temp ID, else thermo_temp. */
 struct temp_state *temp_thermo(struct gravel *g);
 /* compute_modify keywords of a temperature: dynamic/dof (dynamic),

@@ -5,7 +5,8 @@
  * target Tstart + (step - begin) / (end - begin) (Tstop - Tstart) over the
  * run (Tstart may be v_name, an equal-style variable: the target is then
  * its value), when |T - target| > window the group's velocities are scaled
- * by sqrt(T' / T), T' = T - fraction (T - target). The energy taken out,
+ * by sqrt(T' / T), T' = T - fraction (T - target) (with a bias temperature,
+ * temp/com, temp/partial, temp/region, the thermal part only). The energy taken out,
  * sum of (T - T') dof kB / 2, is the fix's scalar (extensive). The work is
  * on the host (the atoms synced, the velocities written back), as fix
  * momentum's. */
@@ -122,10 +123,7 @@ static void end_of_step(struct gravel *g, struct fix *f)
     const double factor = sqrt(target / t_current);
     r->energy += (t_current - target) * 0.5 * temp_boltz(g) * dof;
     struct atoms *a = &g->atoms;
-    for (int i = 0; i < a->n; i++)
-        if (a->mask[i] & f->groupbit)
-            for (int d = 0; d < 3; d++)
-                a->v[3 * i + d] *= factor;
+    temp_scale_thermal(g, t, f->groupbit, factor); /* a bias temperature keeps its bias */
     struct dev_atoms *s = eng_atoms(g);
     if (!s->shared)
         eng_write_reals(g, s->v, 3 * (size_t)a->n, a->v);

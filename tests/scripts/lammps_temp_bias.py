@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""lammps_temp_bias.py - compute temp/com, temp/partial and temp/region as
+LAMMPS's (lmp 2021), as thermo's temperature and as fix temp/rescale's.
+
+The falling bed of tests/scripts/lib/peer.py (96 spheres on a wall/gran
+floor, gran/hooke/history) given a bulk velocity along x, run unchanged by
+`lmp` (one process) and bin/gravel:
+1. thermo prints each temperature and its kinetic-energy tensor (six
+   elements), temp/partial with the y component left out, temp/region of a
+   block the bed falls through (its atom count changes), and compute_modify
+   extra/dof and dynamic/dof on them: equal to 1e-9 relative over 1500 steps;
+2. thermo_modify temp on temp/com: temp, press and its tensor, ke (LAMMPS's
+   ke is the temperature's), to 1e-9;
+3. fix temp/rescale with fix_modify temp on each: the rescaling keeps the
+   bias (the centre-of-mass motion, the y component, the atoms outside the
+   region): thermo and the fix's energy to 1e-9.
+On 2 MPI ranks the three temperatures' file is byte-identical to one
+process's. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
+comparisons FAIL naming it."""
+import os
+import shutil
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import (GRAVEL, check, check_same_on_ranks, close, expect_errors,  # noqa: E402
+                  falling_bed, folders, run, thermo_rows)
+
+HEAD = falling_bed() + """velocity all set 2.0 0.0 0.0 sum yes units box
+region mid block INF INF INF INF 1 4 units box
+compute tc all temp/com
+compute tp top temp/partial 1 0 1
+compute tr all temp/region mid
+"""
+CASES = {
+    "computes": ("compute_modify tp extra/dof 1\ncompute_modify tr dynamic/dof yes\n"
+                 "thermo_style custom step temp c_tc c_tc[1] c_tc[4] c_tc[6] c_tp c_tp[1] "
+                 "c_tp[2] c_tp[5] c_tr c_tr[3] c_tr[4]\n"
+                 "fix t all ave/time 100 1 100 c_tc c_tc[*] c_tp c_tp[*] c_tr c_tr[*] file t.txt "
+                 "format \" %.17g\"\n", 13),
+    "thermo_temp_com": ("thermo_style custom step temp press pxx pzz pxz ke\n"
+                        "thermo_modify temp tc\n", 7),
+    "rescale_com": ("fix r all temp/rescale 50 1.0 1.0 0.02 0.5\nfix_modify r temp tc\n"
+                    "thermo_style custom step temp c_tc f_r\n", 4),
+    "rescale_partial": ("fix r top temp/rescale 50 0.5 0.5 0.02 1.0\nfix_modify r temp tp\n"
+                        "thermo_style custom step temp c_tp f_r\n", 4),
+    "rescale_region": ("fix r all temp/rescale 50 0.5 0.5 0.02 1.0\nfix_modify r temp tr\n"
+                       "thermo_style custom step temp c_tr f_r\n", 4),
+}
+TAIL = "thermo_modify format float %.15g\nthermo 100\nrun 1500\n"
+
+
+def compare(name, parent):
+    body, ncol = CASES[name]
+    deck = HEAD + body + TAIL
+    g, lm = folders(parent, name + "_g", name + "_l")
+    rc, out = run([GRAVEL], deck, g)
+    got = thermo_rows(out, ncol) if rc == 0 else []
+    if shutil.which("lmp") is None:
+        check(name, False, "lmp (Debian package lammps) is not installed")
+        return
+    _, lout = run(["lmp"], deck, lm)
+    ref = thermo_rows(lout, ncol)
+    worst = max((abs(a - b) / max(abs(b), 1e-300) for r, s in zip(got, ref)
+                 for a, b in zip(r, s) if not close(a, b, 0, 1e-12)), default=0.0)
+    ok = len(ref) == 16 and len(got) == 16 and all(
+        close(a, b, 1e-9, 1e-12) for r, s in zip(got, ref) for a, b in zip(r, s))
+    check("temp_bias_" + name, ok, "rows %d/%d, worst rel %g: %s" %
+          (len(got), len(ref), worst, (out if rc else lout)[-300:]))
+    if name == "computes":
+        ranks = os.path.join(parent, "ranks")
+        os.mkdir(ranks)
+        check_same_on_ranks("temp_bias_same_on_2_ranks", 2, deck, ranks, g, ["t.txt"])
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in CASES:
+            compare(name, tmp)
+        err = os.path.join(tmp, "err")
+        os.mkdir(err)
+        expect_errors({
+            "err_com_args": ("compute c all temp/com 1\n", "takes no arguments"),
+            "err_partial_args": ("compute c all temp/partial 1 0\n", "expects xflag yflag zflag"),
+            "err_partial_flag": ("compute c all temp/partial 1 2 0\n", "flags must be 0 or 1"),
+            "err_region_missing": ("compute c all temp/region nowhere\n", "nowhere"),
+            "err_region_args": ("compute c all temp/region\n", "expects a region ID"),
+        }, falling_bed(), err)
+
+
+main()
