@@ -1,0 +1,240 @@
+/* fix_langevin.c - `fix ID group langevin Tstart Tstop damp seed [omega
+ * yes|no] [scale type ratio] [zero yes|no] [angmom no] [tally no] [gjf no]`:
+ * LAMMPS's fix langevin, a Langevin thermostat: at post_force every atom of
+ * the group gets the drag -m v / (damp ratio_type) and a random force of
+ * uniform components gamma2 (u - 1/2), gamma2 = sqrt(m) sqrt(24 kB T /
+ * damp / dt) / sqrt(ratio_type), T the target (Tstart to Tstop over the
+ * run, or an equal-style variable); zero yes removes the group's mean
+ * random force; omega yes thermostats the spins of finite-size spheres the
+ * same way (I = 0.4 m r^2 in place of m). The random numbers are LAMMPS's
+ * RanMars stream (seed of rank 0) drawn on the host in atom-ID order, three
+ * per atom, the translational ones of every atom first: LAMMPS's draws on
+ * one process when its atoms keep their creation order (`atom_modify sort
+ * 0 0.0`); with LAMMPS's default spatial sorting the stream meets the atoms
+ * in another order, the same statistics. The forces are added on the
+ * device (kernels/fix_langevin.cl). Not yet: tally yes, gjf, angmom (no
+ * ellipsoids here), an atom-style target, fix_modify temp. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "args.h"
+#include "device.h"
+#include "engine.h"
+#include "error.h"
+#include "fix.h"
+#include "random.h"
+#include "temperature.h"
+#include "variable.h"
+
+#define WHO "fix langevin"
+
+struct langevin {
+    double t_start, t_stop, t_period;
+    char *tvar;                 /* Tstart as v_name (equal-style), else NULL */
+    int seed, oflag, zero;
+    double omega_c1, omega_c2;  /* LAMMPS's rotational drag and noise factors (10/3, 80) */
+    int ntypes;
+    double *ratio;              /* [ntypes] */
+    struct rng_mars rng;
+    cl_mem dratio, dfran;
+    size_t dfran_n;
+    cl_kernel k;
+};
+
+static void destroy(struct fix *f)
+{
+    struct langevin *l = f->data;
+    if (l) {
+        if (l->dratio)
+            clReleaseMemObject(l->dratio);
+        if (l->dfran)
+            clReleaseMemObject(l->dfran);
+        free(l->ratio);
+        free(l->tvar);
+        free(l);
+    }
+}
+
+static void create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 4)
+        gr_error(g, WHO " expects Tstart Tstop damp seed [keyword value ...], got %d arguments",
+                 argc);
+    if (g->atoms.ntypes < 1)
+        gr_error(g, WHO " needs atom types (create the box first)");
+    struct langevin *l = gr_calloc(g, 1, sizeof *l);
+    f->data = l;
+    if (!strncmp(argv[0], "v_", 2) && argv[0][2])
+        l->tvar = gr_strdup(g, argv[0] + 2);
+    else
+        l->t_start = arg_double(g, argv[0], WHO " Tstart");
+    l->t_stop = arg_double(g, argv[1], WHO " Tstop");
+    l->t_period = arg_double(g, argv[2], WHO " damp");
+    l->seed = arg_int(g, argv[3], WHO " seed");
+    if (!(l->t_period > 0))
+        gr_error(g, WHO ": damp must be > 0, got %g", l->t_period);
+    if (l->seed <= 0 || l->seed > 900000000)
+        gr_error(g, WHO ": seed must be in 1 .. 900000000, got %d", l->seed);
+    l->ntypes = g->atoms.ntypes;
+    l->ratio = gr_malloc(g, (size_t)l->ntypes * sizeof *l->ratio);
+    for (int t = 0; t < l->ntypes; t++)
+        l->ratio[t] = 1.0;
+    l->omega_c1 = 10.0 / 3.0; /* LAMMPS: rotational diffusion of spheres (since 2020) */
+    l->omega_c2 = 80.0;
+    for (int i = 4; i < argc;) {
+        const char *kw = argv[i];
+        arg_need(g, argc, i, 1, kw);
+        const char *v = argv[i + 1];
+        if (!strcmp(kw, "omega")) {
+            l->oflag = arg_yesno(g, v, "omega");
+            i += 2;
+        } else if (!strcmp(kw, "zero")) {
+            l->zero = arg_yesno(g, v, "zero");
+            i += 2;
+        } else if (!strcmp(kw, "scale")) {
+            arg_need(g, argc, i, 2, kw);
+            const int t = arg_int_range(g, v, 1, l->ntypes, WHO " scale type");
+            l->ratio[t - 1] = arg_double(g, argv[i + 2], WHO " scale ratio");
+            i += 3;
+        } else if (!strcmp(kw, "tally") || !strcmp(kw, "gjf") || !strcmp(kw, "angmom")) {
+            if (strcmp(v, "no"))
+                gr_error(g, WHO ": %s %s is not supported yet (only %s no)", kw, v, kw);
+            i += 2;
+        } else {
+            gr_error(g, WHO ": unknown keyword '%.64s' (omega, scale, zero, angmom, tally, gjf)",
+                     kw);
+        }
+    }
+    rng_mars_init(&l->rng, l->seed); /* LAMMPS: seed + rank, rank 0 */
+    f->hooks = HOOK_POST_FORCE;
+    f->sources[f->nsources++] = "fix_langevin.cl";
+}
+
+static void init(struct gravel *g, struct fix *f)
+{
+    struct langevin *l = f->data;
+    if (l->ntypes < g->atoms.ntypes)
+        gr_error(g, "fix %s langevin was defined for %d atom types, now there are %d", f->id,
+                 l->ntypes, g->atoms.ntypes);
+    if (l->tvar && !var_is_equal(g, l->tvar))
+        gr_error(g, WHO " %s: variable %s %s", f->id, l->tvar,
+                 var_exists(g, l->tvar) ? "is not equal-style (atom-style targets: not yet)"
+                                        : "does not exist");
+    if (l->oflag && !g->eng->rotation)
+        gr_error(g, WHO " %s: omega yes needs a run with rotation (atom_style sphere and a "
+                    "pair style that turns the particles)", f->id);
+    if (l->dratio)
+        clReleaseMemObject(l->dratio);
+    l->dratio = eng_alloc(g, (size_t)l->ntypes * g->eng->rsz, WHO " ratio");
+    eng_write_reals(g, l->dratio, (size_t)l->ntypes, l->ratio);
+    l->k = eng_kernel(g, "langevin_post_force");
+}
+
+/* the target temperature of this step (LAMMPS's compute_target) */
+static double target(struct gravel *g, struct langevin *l)
+{
+    double t;
+    if (l->tvar) {
+        t = var_compute_equal(g, l->tvar);
+        if (t < 0.0)
+            gr_error(g, WHO ": variable %s returned a negative temperature %g at step %lld",
+                     l->tvar, t, (long long)g->step);
+    } else {
+        double delta = (double)(g->step - g->beginstep);
+        if (delta != 0.0)
+            delta /= (double)(g->endstep - g->beginstep);
+        t = l->t_start + delta * (l->t_stop - l->t_start);
+    }
+    return t;
+}
+
+static void post_force(struct gravel *g, struct fix *f)
+{
+    struct langevin *l = f->data;
+    struct engine *e = g->eng;
+    struct dev_atoms *a = eng_atoms(g);
+    const int n = a->n;
+    const double tsqrt = sqrt(target(g, l)), boltz = temp_boltz(g), dt = g->dt;
+    /* the atoms' mask, type, mass and radius in device order, visited by atom ID */
+    const int *ord = eng_tag_order(g);
+    unsigned *mask = gr_malloc(g, ((size_t)n + 1) * sizeof *mask);
+    int *type = gr_malloc(g, ((size_t)n + 1) * sizeof *type);
+    double *m = gr_malloc(g, ((size_t)n + 1) * sizeof *m);
+    double *rad = gr_malloc(g, ((size_t)n + 1) * sizeof *rad);
+    double *fran = gr_calloc(g, 6 * (size_t)n + 1, sizeof *fran);
+    eng_read(g, a->mask, 0, (size_t)n * sizeof *mask, mask);
+    eng_read(g, a->type, 0, (size_t)n * sizeof *type, type);
+    eng_read_reals(g, a->rmass, (size_t)n, m);
+    eng_read_reals(g, a->radius, (size_t)n, rad);
+    const double c2 = sqrt(24.0 * boltz / l->t_period / dt), c2r = sqrt(l->omega_c2 * boltz /
+                                                                         l->t_period / dt);
+    double fsum[3] = {0, 0, 0};
+    long long count = 0;
+    for (int q = 0; q < n; q++) { /* translation: three draws per atom of the group */
+        const int i = ord[q];
+        if (!(mask[i] & f->groupbit))
+            continue;
+        double gamma2 = sqrt(m[i]) * c2;
+        gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
+        for (int d = 0; d < 3; d++) {
+            fran[6 * (size_t)i + d] = gamma2 * (rng_mars_uniform(&l->rng) - 0.5);
+            fsum[d] += fran[6 * (size_t)i + d];
+        }
+        count++;
+    }
+    for (int q = 0; l->oflag && q < n; q++) { /* then the spins of finite spheres */
+        const int i = ord[q];
+        if (!(mask[i] & f->groupbit) || !(rad[i] > 0.0))
+            continue;
+        const double inertia = 0.4 * rad[i] * rad[i] * m[i];
+        double gamma2 = sqrt(inertia) * c2r;
+        gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
+        for (int d = 0; d < 3; d++)
+            fran[6 * (size_t)i + 3 + d] = gamma2 * (rng_mars_uniform(&l->rng) - 0.5);
+    }
+    if (count > 0)
+        for (int d = 0; d < 3; d++)
+            fsum[d] /= (double)count;
+    if (!l->dfran || l->dfran_n < (size_t)n) {
+        if (l->dfran)
+            clReleaseMemObject(l->dfran);
+        l->dfran_n = (size_t)n + (size_t)n / 8 + 16;
+        l->dfran = eng_alloc(g, 6 * l->dfran_n * e->rsz, WHO " random forces");
+    }
+    eng_write_reals(g, l->dfran, 6 * (size_t)n, fran);
+    free(mask);
+    free(type);
+    free(m);
+    free(rad);
+    free(fran);
+    cl_kernel k = l->k;
+    int p = 0;
+    eng_arg_int(g, k, p++, n);
+    eng_arg_uint(g, k, p++, f->groupbit);
+    eng_arg_mem(g, k, p++, a->mask);
+    eng_arg_mem(g, k, p++, a->type);
+    eng_arg_mem(g, k, p++, a->rmass);
+    eng_arg_mem(g, k, p++, a->radius);
+    eng_arg_mem(g, k, p++, a->v);
+    eng_arg_mem(g, k, p++, e->rotation ? a->omega : a->v);
+    eng_arg_mem(g, k, p++, a->f);
+    eng_arg_mem(g, k, p++, e->rotation ? a->torque : a->f);
+    eng_arg_mem(g, k, p++, l->dfran);
+    eng_arg_mem(g, k, p++, l->dratio);
+    eng_arg_real(g, k, p++, l->t_period);
+    eng_arg_int(g, k, p++, l->zero);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, p++, fsum[d]);
+    eng_arg_int(g, k, p++, l->oflag);
+    eng_arg_real(g, k, p++, l->omega_c1);
+    eng_launch(g, k, (size_t)n);
+}
+
+const struct fix_style fix_style_langevin = {
+    .name = "langevin",
+    .create = create,
+    .init = init,
+    .post_force = post_force,
+    .destroy = destroy,
+};

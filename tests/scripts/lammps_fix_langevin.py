@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""lammps_fix_langevin.py - fix langevin as LAMMPS's (lmp 2021).
+
+1. A dilute granular gas (125 spheres of two types, gran/hooke/history,
+   periodic) with `atom_modify sort 0 0.0`, so that LAMMPS's one process
+   meets its atoms in creation (= ID) order: fix langevin with a
+   temperature ramp, `omega yes`, `zero yes`, `scale 2 2.0`, and with an
+   equal-style target: thermo ke and the rotational energy equal lmp's to
+   1e-9 relative every 200 steps over 2000 (the same RanMars stream, the
+   same forces).
+2. Physics, gravel alone: 1000 point-like spheres that never touch, held at
+   T = 1.5 (damp 0.1): the temperature averaged over the second half of the
+   run is 1.5 within 3 %, and with `omega yes` the rotational temperature
+   too (equipartition).
+3. The errors; refused on MPI ranks. One line PASS/FAIL per case; without
+   `lmp` the comparisons FAIL naming it."""
+import os
+import shutil
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from peer import (GRAVEL, check, check_refused_on_ranks, close, expect_errors,  # noqa: E402
+                  folders, run, thermo_rows)
+
+GAS = """units lj
+atom_style sphere
+atom_modify map array sort 0 0.0
+comm_modify vel yes
+boundary p p p
+lattice sc 0.3
+region box block 0 5 0 5 0 5
+create_box 2 box
+create_atoms 1 box
+set group all diameter 1.0 density 1.0
+set type 1 type/fraction 2 0.5 8812
+velocity all create 0.5 87287 loop geom
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+fix 1 all nve/sphere
+compute rot all erotate/sphere
+timestep 0.001
+"""
+TAIL = """thermo_style custom step ke c_rot
+thermo_modify format float %.15g
+thermo 200
+run 2000
+"""
+CASES = {
+    "ramp_omega_zero_scale": "fix lg all langevin 1.0 2.0 0.5 48279 omega yes zero yes "
+                             "scale 2 2.0\n",
+    "translation_only": "fix lg all langevin 0.8 0.8 0.2 1234 zero no\n",
+    "equal_variable_target": "variable tt equal 0.5+0.0005*step\n"
+                             "fix lg all langevin v_tt 1.0 0.5 9999 omega yes\n",
+}
+
+IDEAL = """units lj
+atom_style sphere
+boundary p p p
+lattice sc 0.05
+region box block 0 10 0 10 0 10
+create_box 1 box
+create_atoms 1 box
+set group all diameter 0.01 density 1000000.0
+velocity all create 0.1 4711 loop geom
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 1
+pair_coeff * *
+fix 1 all nve/sphere
+fix lg all langevin 1.5 1.5 0.1 777 omega yes
+compute tr all temp/sphere dof rotate
+thermo_style custom step temp c_tr
+thermo_modify format float %.10g
+thermo 100
+timestep 0.005
+run 6000
+"""
+
+
+def compare(name, parent):
+    deck = GAS + CASES[name] + TAIL
+    g, lm = folders(parent, name + "_g", name + "_l")
+    rc, out = run([GRAVEL], deck, g)
+    got = thermo_rows(out, 3) if rc == 0 else []
+    if shutil.which("lmp") is None:
+        check("langevin_" + name, False, "lmp (Debian package lammps) is not installed")
+        return
+    _, lout = run(["lmp"], deck, lm)
+    ref = thermo_rows(lout, 3)
+    worst = max((abs(a - b) / max(abs(b), 1e-300) for r, s in zip(got, ref)
+                 for a, b in zip(r, s)), default=0.0)
+    ok = len(ref) == 11 and len(got) == 11 and all(
+        close(a, b, 1e-9, 1e-14) for r, s in zip(got, ref) for a, b in zip(r, s))
+    check("langevin_" + name, ok, "rows %d/%d, worst rel %g: %s" %
+          (len(got), len(ref), worst, (out if rc else lout)[-300:]))
+
+
+def ideal(tmp):
+    rc, out = run([GRAVEL], IDEAL, tmp)
+    rows = [r for r in thermo_rows(out, 3) if r[0] >= 3000] if rc == 0 else []
+    t = sum(r[1] for r in rows) / max(len(rows), 1)
+    tr = sum(r[2] for r in rows) / max(len(rows), 1)
+    check("langevin_equipartition_translation", len(rows) == 31 and abs(t / 1.5 - 1) < 0.03,
+          "mean temp %g (target 1.5): %s" % (t, out[-300:]))
+    check("langevin_equipartition_rotation", len(rows) == 31 and abs(tr / 1.5 - 1) < 0.03,
+          "mean rotational temp %g (target 1.5)" % tr)
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in CASES:
+            compare(name, tmp)
+        d = os.path.join(tmp, "ideal")
+        os.mkdir(d)
+        ideal(d)
+        e = os.path.join(tmp, "err")
+        os.mkdir(e)
+        expect_errors({
+            "err_args": ("fix lg all langevin 1.0 1.0 0.5\n", "expects Tstart Tstop damp seed"),
+            "err_seed": ("fix lg all langevin 1.0 1.0 0.5 0\n", "seed must be in 1 .. 900000000"),
+            "err_damp": ("fix lg all langevin 1.0 1.0 0.0 5\n", "damp must be > 0"),
+            "err_tally": ("fix lg all langevin 1.0 1.0 0.5 5 tally yes\n",
+                          "tally yes is not supported yet"),
+            "err_keyword": ("fix lg all langevin 1.0 1.0 0.5 5 bias yes\n",
+                            "unknown keyword 'bias'"),
+            "err_atom_target": ("variable t atom 1.0\nfix lg all langevin v_t 1.0 0.5 5\n"
+                                "run 0\n", "atom-style targets: not yet"),
+        }, GAS, e)
+        check_refused_on_ranks("refused_on_ranks", GAS + "fix lg all langevin 1.0 1.0 0.5 5\n"
+                               "run 10\n", e, "fix lg (langevin)")
+
+
+main()
