@@ -13,6 +13,11 @@
 /* The pair energy of the current positions (0 outside a run, without a
  * pair style or for a style without an energy). */
 double pair_energy(struct gravel *g);
+/* Each atom's half of its pairs' energies (LAMMPS's eatom of the pair
+ * style: compute pe/atom) into out[0 .. atoms.n), in device order = host
+ * order after a run's host sync. Returns 0 (out untouched) when there is no
+ * pair energy to take (outside a run, no pair style, a style without one). */
+int pair_energy_atoms(struct gravel *g, double *out);
 /* Take this step's pair energy now, for the rest of the step: a box change
  * after the forces (src/engine/box_change.c) calls it before it moves the atoms
  * (compute_forces discards it). */
