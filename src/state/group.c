@@ -491,8 +491,11 @@ void cmd_group(struct gravel *g, int argc, char **argv)
         for (int i = 0; i < a->n; i++)
             if (region_match(r, a->x + 3 * i))
                 a->mask[i] |= bit;
-    } else if (!strcmp(style, "type") || !strcmp(style, "id")) {
-        int is_type = style[0] == 't';
+    } else if (!strcmp(style, "type") || !strcmp(style, "id") || !strcmp(style, "molecule")) {
+        int is_type = style[0] == 't', is_mol = style[0] == 'm';
+        if (is_mol && !a->molecule_flag)
+            gr_error(g, "group molecule requires atom attribute molecule (fix property/atom "
+                        "mol)");
         struct selector s;
         bigint(*buf)[3] = gr_malloc(g, (size_t)(nrest ? nrest : 1) * sizeof *buf);
         jmp_buf *outer = g->err.jmp, here;
@@ -505,11 +508,11 @@ void cmd_group(struct gravel *g, int argc, char **argv)
             gr_report_error(g);
             exit(1);
         }
-        parse_selector(g, nrest, rest, is_type ? "type" : "id", &s, buf);
+        parse_selector(g, nrest, rest, is_type ? "type" : is_mol ? "molecule" : "id", &s, buf);
         bit = group_bit(group_create(g, id));
         g->err.jmp = outer;
         for (int i = 0; i < a->n; i++)
-            if (sel_match(&s, is_type ? a->type[i] : a->tag[i]))
+            if (sel_match(&s, is_type ? a->type[i] : is_mol ? a->mol[i] : a->tag[i]))
                 a->mask[i] |= bit;
         free(buf);
     } else if (!strcmp(style, "subtract") || !strcmp(style, "union") ||

@@ -84,6 +84,7 @@
 #include "molecule.h"
 #include "par.h"
 #include "rigid_math.h"
+#include "temperature.h"
 
 #define SINERTIA 0.4 /* solid sphere */
 
@@ -281,7 +282,9 @@ static int by_mol(const void *a, const void *b)
 }
 
 /* One body per molecule ID of the group's atoms (LAMMPS create_bodies). */
-static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
+/* The bodies of the group's atoms, one per value of key[i] (molecule IDs,
+ * fix rigid's group index or 0 for `single`), in ascending key order. */
+static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r, const int64_t *key)
 {
     struct atoms *a = &g->atoms;
     int n = 0;
@@ -289,12 +292,12 @@ static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
     for (int i = 0; i < a->n; i++)
         if (a->mask[i] & f->groupbit)
             list[n++] = i;
-    cmp_mol = a->mol;
+    cmp_mol = key;
     cmp_tagv = a->tag;
     qsort(list, (size_t)n, sizeof(int), by_mol);
     for (int s = 0; s < n;) {
         int e = s;
-        while (e < n && a->mol[list[e]] == a->mol[list[s]])
+        while (e < n && key[list[e]] == key[list[s]])
             e++;
         double lo[3] = {1e20, 1e20, 1e20}, hi[3] = {-1e20, -1e20, -1e20};
         for (int k = s; k < e; k++) {
@@ -306,8 +309,8 @@ static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r)
             }
         }
         if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2])
-            gr_error(g, "fix rigid/small: one or more rigid bodies are a single particle "
-                        "(molecule %lld)", (long long)a->mol[list[s]]);
+            gr_error(g, "fix %s: one or more rigid bodies are a single particle (body key %lld)",
+                     f->style->name, (long long)key[list[s]]);
         int body = r->nbody;
         (void)new_body(g, r);
         for (int k = s; k < e; k++) {
@@ -361,13 +364,188 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         mol_compute_com(g, r->mol);
         mol_compute_inertia(g, r->mol);
     }
-    create_bodies(g, f, r);
+    create_bodies(g, f, r, g->atoms.mol);
     double rsqfar = 0;
     gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
     (void)rsqfar;
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     f->sources[f->nsources++] = "fix_rigid_small.cl";
     f->needs = NEED_ROTATION;
+}
+
+/* LAMMPS's body range M of fix rigid's force/torque keywords (N, *, N*, *M,
+ * N*M over 1..nbody) into [*lo, *hi] (0-based) */
+static void body_range(struct gravel *g, const char *w, int nbody, int *lo, int *hi)
+{
+    const char *star = strchr(w, '*');
+    long a, b;
+    char *end;
+    if (!star) {
+        a = b = strtol(w, &end, 10);
+        if (*end)
+            gr_error(g, "fix rigid: invalid body index '%.32s'", w);
+    } else {
+        a = star == w ? 1 : strtol(w, &end, 10);
+        if (star != w && end != star)
+            gr_error(g, "fix rigid: invalid body range '%.32s'", w);
+        b = star[1] ? strtol(star + 1, &end, 10) : nbody;
+        if (star[1] && *end)
+            gr_error(g, "fix rigid: invalid body range '%.32s'", w);
+    }
+    if (a < 1 || b > nbody || a > b)
+        gr_error(g, "fix rigid: body range '%.32s' is not within 1..%d", w, nbody);
+    *lo = (int)a - 1;
+    *hi = (int)b - 1;
+}
+
+/* `fix ID group rigid single|molecule|group N g1 .. gN [reinit yes|no]
+ * [force M x y z] [torque M x y z]`: LAMMPS's fix rigid, the same bodies
+ * and integration as rigid/small, the bodies set by the body style: the
+ * whole group (single), each molecule ID (molecule), each listed group
+ * (an atom in two of them is an error); force and torque switch the bodies'
+ * force and torque components on or off (LAMMPS's fflag, tflag). Global
+ * scalar: the bodies' temperature, LAMMPS's sum of M vcm^2 and w I w over
+ * the components not held (6 per body) less the linear bodies; global array nbody x 15: xcm, vcm, fcm, torque,
+ * image flags of each body. */
+static void create_rigid(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    if (argc < 1)
+        gr_error(g, "fix rigid expects a body style (single, molecule, group)");
+    struct atoms *a = &g->atoms;
+    int64_t *key = gr_calloc(g, (size_t)a->n + 1, sizeof *key);
+    int i = 1;
+    if (!strcmp(argv[0], "single")) {
+        /* every atom of the group: key 0 */
+    } else if (!strcmp(argv[0], "molecule")) {
+        if (!a->molecule_flag) {
+            free(key);
+            gr_error(g, "fix rigid molecule requires atom attribute molecule (fix property/atom "
+                        "mol)");
+        }
+        memcpy(key, a->mol, (size_t)a->n * sizeof *key);
+    } else if (!strcmp(argv[0], "group")) {
+        if (argc < 2) {
+            free(key);
+            gr_error(g, "fix rigid group expects N and N group IDs");
+        }
+        const int ng = arg_int(g, argv[1], "fix rigid group N");
+        if (ng <= 0 || argc < 2 + ng) {
+            free(key);
+            gr_error(g, "fix rigid group expects N > 0 and N group IDs, got %d and %d", ng,
+                     argc - 2);
+        }
+        for (int k = 0; k < a->n; k++)
+            key[k] = -1;
+        for (int q = 0; q < ng; q++) {
+            const int ig = group_find(g, argv[2 + q]);
+            if (ig < 0) {
+                free(key);
+                gr_error(g, "could not find fix rigid group ID %.64s", argv[2 + q]);
+            }
+            for (int k = 0; k < a->n; k++) {
+                if (!(a->mask[k] & group_bit(ig)) || !(a->mask[k] & f->groupbit))
+                    continue;
+                if (key[k] >= 0) {
+                    free(key);
+                    gr_error(g, "one or more atoms belong to multiple rigid bodies");
+                }
+                key[k] = q;
+            }
+        }
+        for (int k = 0; k < a->n; k++)
+            if (key[k] < 0 && (a->mask[k] & f->groupbit)) { /* in the fix's group, no body */
+                free(key);
+                gr_error(g, "fix rigid group: atom %lld of group %s is in none of the %d "
+                            "body groups",
+                         (long long)a->tag[k], g->groups.name[f->igroup], ng);
+            }
+        i = 2 + ng;
+    } else if (!strcmp(argv[0], "custom")) {
+        free(key);
+        gr_error(g, "fix rigid custom is not supported (use molecule IDs or groups)");
+    } else {
+        free(key);
+        gr_error(g, "unknown fix rigid body style '%.64s' (single, molecule, group)", argv[0]);
+    }
+    struct rigid *r = gr_calloc(g, 1, sizeof *r);
+    f->data = r;
+    r->reinit = 1;
+    create_bodies(g, f, r, key);
+    free(key);
+    for (; i < argc; i++) {
+        const char *k = argv[i];
+        if (!strcmp(k, "reinit")) {
+            arg_need(g, argc, i, 1, k);
+            r->reinit = arg_yesno(g, argv[++i], k);
+        } else if (!strcmp(k, "force") || !strcmp(k, "torque")) {
+            arg_need(g, argc, i, 4, k);
+            int lo, hi, v[3];
+            body_range(g, argv[i + 1], r->nbody, &lo, &hi);
+            char *w[4] = {argv[i], argv[i + 2], argv[i + 3], argv[i + 4]};
+            rigid_small_flags_arg(g, 4, w, 0, v);
+            for (int ib = lo; ib <= hi; ib++)
+                rigid_small_hold(f, ib, k[0] == 'f' ? v : NULL, k[0] == 't' ? v : NULL);
+            i += 4;
+        } else if (!strcmp(k, "langevin") || !strcmp(k, "infile") || !strcmp(k, "temp") ||
+                   !strcmp(k, "iso") || !strcmp(k, "aniso") || !strcmp(k, "dilate") ||
+                   !strcmp(k, "x") || !strcmp(k, "y") || !strcmp(k, "z") ||
+                   !strcmp(k, "couple") || !strcmp(k, "tparam") || !strcmp(k, "pchain") ||
+                   !strcmp(k, "gravity")) {
+            gr_error(g, "fix rigid keyword '%s' is not supported", k);
+        } else {
+            gr_error(g, "unknown fix rigid keyword '%.64s' (reinit, force, torque)", k);
+        }
+    }
+    gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
+    f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
+    f->sources[f->nsources++] = "fix_rigid_small.cl";
+    f->needs = NEED_ROTATION;
+    f->array_flag = 1;
+    f->size_array_rows = r->nbody;
+    f->size_array_cols = 15;
+    f->extarray = 0;
+}
+
+/* fix rigid's scalar: LAMMPS's FixRigid::compute_scalar */
+static double rigid_scalar(struct gravel *g, struct fix *f)
+{
+    const struct rigid *r = f->data;
+    double t = 0.0;
+    int nlinear = 0, nflags = 0;
+    for (int ib = 0; ib < r->nbody; ib++) {
+        const struct rbody *b = &r->b[ib];
+        for (int q = 0; q < 3; q++)
+            nflags += b->fflag[q] + b->tflag[q];
+        for (int q = 0; q < 3; q++)
+            t += b->mass * (b->fflag[q] * b->vcm[q] * b->vcm[q]);
+        /* the angular velocity in the body frame: L projected on the principal axes / I */
+        const double *axis[3] = {b->ex, b->ey, b->ez};
+        for (int q = 0; q < 3; q++) {
+            double w = axis[q][0] * b->angmom[0] + axis[q][1] * b->angmom[1] +
+                       axis[q][2] * b->angmom[2];
+            w = b->inertia[q] == 0.0 ? 0.0 : w / b->inertia[q];
+            t += b->tflag[q] * b->inertia[q] * w * w;
+        }
+        nlinear += b->inertia[0] == 0.0 || b->inertia[1] == 0.0 || b->inertia[2] == 0.0;
+    }
+    const double dof = (double)nflags - nlinear; /* 6 per body, less the components held */
+    return dof > 0 ? t / (dof * temp_boltz(g)) : 0.0;
+}
+
+/* row i (1-based): xcm vcm fcm torque image */
+static double rigid_array(struct gravel *g, struct fix *f, int i, int j)
+{
+    (void)g;
+    const struct rigid *r = f->data;
+    const struct rbody *b = &r->b[i - 1];
+    const int q = (j - 1) % 3;
+    switch ((j - 1) / 3) {
+    case 0: return b->xcm[q];
+    case 1: return b->vcm[q];
+    case 2: return b->fcm[q];
+    case 3: return b->torque[q];
+    default: return b->image[q];
+    }
 }
 
 /* `fix ID group multisphere [allow_group_and_set yes|no] [allow_heatsource
@@ -1364,5 +1542,13 @@ const struct fix_style fix_style_multisphere = {
     .create = create_multisphere,
     .ke_adjust = ke_adjust,
     .end_of_step = end_of_step,
+    RIGID_HOOKS,
+};
+
+const struct fix_style fix_style_rigid = {
+    .name = "rigid",
+    .create = create_rigid,
+    .scalar = rigid_scalar,
+    .array = rigid_array,
     RIGID_HOOKS,
 };
