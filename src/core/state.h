@@ -171,7 +171,9 @@ struct temp_state {
     double dof_natoms;          /* atoms of the group at that count */
     int dof_valid;              /* dof holds the count of the current run */
     int flags[3];               /* TEMP_PARTIAL: the components counted (x y z) */
-    char region[GR_NAMELEN];    /* TEMP_REGION: the region's ID */
+    char region[GR_NAMELEN];    /* TEMP_REGION: the region's ID, */
+    const void *region_obj;     /* the region resolved by its compute (init), */
+    int (*region_in)(const void *region_obj, const double x[3]); /* and its test */
 };
 
 #define GR_MAXTHERMO 64

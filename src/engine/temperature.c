@@ -12,7 +12,6 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
-#include "region.h"
 
 #define INERTIA 0.4 /* LAMMPS compute temp/sphere: solid sphere, in 2d as well */
 
@@ -26,16 +25,21 @@ double temp_boltz(const struct gravel *g)
     return 1.0;
 }
 
-/* atom i of the group counts (TEMP_REGION: also inside the region, now) */
-static int counts(struct gravel *g, const struct temp_state *t, const struct region *r, int i)
+/* TEMP_REGION: the region its compute resolved, else NULL */
+static const void *temp_region(struct gravel *g, const struct temp_state *t)
 {
-    const struct atoms *a = &g->atoms;
-    return (a->mask[i] & t->groupbit) && (!r || region_match(r, a->x + 3 * i));
+    if (t->kind != TEMP_REGION)
+        return NULL;
+    if (!t->region_obj || !t->region_in)
+        gr_error(g, "compute temp/region: region %s is not set up", t->region);
+    return t->region_obj;
 }
 
-static const struct region *temp_region(struct gravel *g, const struct temp_state *t)
+/* atom i of the group counts (TEMP_REGION: also inside the region, now) */
+static int counts(struct gravel *g, const struct temp_state *t, const void *r, int i)
 {
-    return t->kind == TEMP_REGION ? region_get(g, t->region) : NULL;
+    const struct atoms *a = &g->atoms;
+    return (a->mask[i] & t->groupbit) && (!r || t->region_in(r, a->x + 3 * i));
 }
 
 static int partial_n(const struct temp_state *t)
@@ -46,7 +50,7 @@ static int partial_n(const struct temp_state *t)
 static double count_dof(struct gravel *g, const struct temp_state *t, double *natoms_out)
 {
     const struct atoms *a = &g->atoms;
-    const struct region *r = temp_region(g, t);
+    const void *r = temp_region(g, t);
     int dim = g->dom.dimension;
     double count = 0, natoms = 0;
     for (int i = 0; i < a->n; i++) {
@@ -157,7 +161,7 @@ static void thermal_velocity(const struct gravel *g, const struct temp_state *t,
 static double sum_mv2(struct gravel *g, const struct temp_state *t)
 {
     const struct atoms *a = &g->atoms;
-    const struct region *r = temp_region(g, t);
+    const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
     double vb[3];
     bias_velocity(g, t, vb);
@@ -189,7 +193,7 @@ double temp_scalar(struct gravel *g, struct temp_state *t)
 void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
 {
     const struct atoms *a = &g->atoms;
-    const struct region *r = temp_region(g, t);
+    const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
     double vb[3];
     bias_velocity(g, t, vb);
@@ -228,14 +232,14 @@ void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbi
                         double factor)
 {
     struct atoms *a = &g->atoms;
-    const struct region *r = temp_region(g, t);
+    const void *r = temp_region(g, t);
     double vb[3];
     bias_velocity(g, t, vb);
     for (int i = 0; i < a->n; i++) {
         if (!(a->mask[i] & groupbit))
             continue;
         double *v = a->v + 3 * i;
-        if (r && !region_match(r, a->x + 3 * i))
+        if (r && !t->region_in(r, a->x + 3 * i))
             continue; /* temp/region's bias: the atoms outside keep their velocity */
         for (int d = 0; d < 3; d++) {
             if (t->kind == TEMP_PARTIAL && !t->flags[d])

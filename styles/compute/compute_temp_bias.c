@@ -41,6 +41,18 @@ static void partial_create(struct gravel *g, struct compute *c, int argc, char *
         gr_error(g, "compute temp/partial cannot use the z dimension (zflag) for 2d systems");
 }
 
+/* the temperature's region test (temperature.c does not know regions) */
+static int inside(const void *r, const double x[3])
+{
+    return region_match(r, x);
+}
+
+static void resolve(struct gravel *g, struct compute *c)
+{
+    c->temp->region_obj = region_get(g, c->temp->region);
+    c->temp->region_in = inside;
+}
+
 static void region_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     if (argc != 1)
@@ -50,13 +62,27 @@ static void region_create(struct gravel *g, struct compute *c, int argc, char **
     region_get(g, argv[0]);
     temp_compute_attach(g, c, TEMP_REGION);
     strcpy(c->temp->region, argv[0]);
+    resolve(g, c);
 }
 
-/* the region may have been deleted since */
+/* the region may have been deleted or redefined since */
 static void region_init(struct gravel *g, struct compute *c)
 {
-    region_get(g, c->temp->region);
+    resolve(g, c);
     temp_compute_init(g, c);
+}
+
+/* every evaluation looks the region up again (it may be gone since) */
+static double region_scalar(struct gravel *g, struct compute *c)
+{
+    resolve(g, c);
+    return temp_compute_scalar(g, c);
+}
+
+static void region_vector(struct gravel *g, struct compute *c)
+{
+    resolve(g, c);
+    temp_compute_vector(g, c);
 }
 
 const struct compute_style compute_style_temp_com = {
@@ -82,6 +108,6 @@ const struct compute_style compute_style_temp_region = {
     .ranks = COMPUTE_RANKS_SUMS,
     .create = region_create,
     .init = region_init,
-    .scalar = temp_compute_scalar,
-    .vector = temp_compute_vector,
+    .scalar = region_scalar,
+    .vector = region_vector,
 };
