@@ -105,6 +105,13 @@ void arg_type_range(struct gravel *g, const char *s, int ntypes, int *lo, int *h
     arg_range(g, s, ntypes, lo, hi, "atom type");
 }
 
+int arg_axis(struct gravel *g, const char *s, const char *what)
+{
+    if (s[0] && !s[1] && s[0] >= 'x' && s[0] <= 'z')
+        return s[0] - 'x';
+    gr_error(g, "%s must be x, y or z, got '%.32s'", what, s);
+}
+
 int arg_group(struct gravel *g, const char *name)
 {
     for (int i = 0; i < GR_MAXGROUP; i++)

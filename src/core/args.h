@@ -21,6 +21,8 @@ int arg_is_number(const char *s);
 void arg_type_range(struct gravel *g, const char *s, int ntypes, int *lo, int *hi);
 /* The same for other numbered things (what: "molecule ID", "surface type" ...) in 1..n. */
 void arg_range(struct gravel *g, const char *s, int n, int *lo, int *hi, const char *what);
+/* "x", "y", "z" -> 0, 1, 2; else "what must be x, y or z". */
+int arg_axis(struct gravel *g, const char *s, const char *what);
 /* Index of group `name` or an error "unknown group". */
 int arg_group(struct gravel *g, const char *name);
 /* Check that a keyword has `need` values after it at argv[i]. */

@@ -670,6 +670,41 @@ static void add_walls(struct gravel *g, struct cc_eval *ev, int i, int m)
     }
 }
 
+/* an atom in the atom sums: in the group, in a chunk (m >= 0), not a boundary atom */
+static int counted(const struct continuum *cc, const struct compute *c, const struct atoms *at,
+                   int i, int m)
+{
+    return (at->mask[i] & c->groupbit) && m >= 0 &&
+           !(cc->bgroupbit && (at->mask[i] & cc->bgroupbit));
+}
+
+/* a bin an atom reaches: its index, the kernel at the atom, the squared distance */
+struct cc_bin {
+    int m;
+    double w, r2;
+};
+
+/* the bins of the atoms' stencil around bin m, seen from an atom at x: into
+ * out (room for the stencil), returns how many */
+static int atom_bins(const struct gravel *g, const struct cc_eval *ev, int m, const double *x,
+                     struct cc_bin *out)
+{
+    double x0[3];
+    bin_centre(g, ev->grid, m, x, x0);
+    int nb = 0;
+    for (int s = 0; s < ev->atoms.n; s++) {
+        const int mt = shifted(g, ev->grid, m, ev->atoms.dn[s]);
+        if (mt < 0)
+            continue;
+        double d[3];
+        for (int k = 0; k < 3; k++)
+            d[k] = x[k] - (x0[k] + ev->atoms.dx[s][k]);
+        const double r2 = dot3(d, d);
+        out[nb++] = (struct cc_bin){mt, cc_w(ev->cc, sqrt(r2)), r2};
+    }
+    return nb;
+}
+
 static void cc_array(struct gravel *g, struct compute *c)
 {
     struct continuum *cc = c->data;
@@ -693,29 +728,21 @@ static void cc_array(struct gravel *g, struct compute *c)
     const int *order = atoms_tag_order(g);
     const double wc2 = cc->wcut * cc->wcut;
     /* the atoms' own sums, in tag order */
+    struct cc_bin *bins = gr_malloc(g, ((size_t)ev.atoms.n + 1) * sizeof *bins);
     for (int q = 0; q < at->n; q++) {
         const int i = order[q], m = ichunk[i] - 1;
-        if (!(at->mask[i] & c->groupbit) || m < 0)
+        if (!counted(cc, c, at, i, m))
             continue;
-        if (cc->bgroupbit && (at->mask[i] & cc->bgroupbit))
-            continue;
-        const double *xi = at->x + 3 * (size_t)i, *vi = at->v + 3 * (size_t)i;
+        const double *vi = at->v + 3 * (size_t)i;
         const double mi = at->rmass[i], vol = volume_of(g, at->radius[i]);
-        double x0[3];
-        bin_centre(g, ev.grid, m, xi, x0);
-        for (int s = 0; s < ev.st->n; s++) {
-            const int mt = shifted(g, ev.grid, m, ev.st->dn[s]);
-            if (mt < 0)
-                continue;
-            double d[3];
-            for (int k = 0; k < 3; d[k] = xi[k] - (x0[k] + ev.st->dx[s][k]), k++)
-                ;
-            const double r2 = dot3(d, d), w = cc_w(cc, sqrt(r2));
-            double *row = ev.acc + (size_t)mt * nval;
+        const int nb = atom_bins(g, &ev, m, at->x + 3 * (size_t)i, bins);
+        for (int s = 0; s < nb; s++) {
+            const double w = bins[s].w;
+            double *row = ev.acc + (size_t)bins[s].m * nval;
             for (int k = 0; k < nval; k++) {
                 const struct cc_value *v = &cc->val[k];
                 switch (v->field) {
-                case F_NATOMS: row[k] += r2 < wc2; break;
+                case F_NATOMS: row[k] += bins[s].r2 < wc2; break;
                 case F_DENSITY: row[k] += mi * w; break;
                 case F_VOLFRAC: row[k] += vol * w; break;
                 case F_MOMENTUM: row[k] += mi * vi[v->a] * w; break;
@@ -744,25 +771,17 @@ static void cc_array(struct gravel *g, struct compute *c)
         }
         for (int q = 0; q < at->n; q++) {
             const int i = order[q], m = ichunk[i] - 1;
-            if (!(at->mask[i] & c->groupbit) || m < 0)
+            if (!counted(cc, c, at, i, m))
                 continue;
-            if (cc->bgroupbit && (at->mask[i] & cc->bgroupbit))
-                continue;
-            const double *xi = at->x + 3 * (size_t)i, *vi = at->v + 3 * (size_t)i;
+            const double *vi = at->v + 3 * (size_t)i;
             const double mi = at->rmass[i];
-            double x0[3], u[3];
-            bin_centre(g, ev.grid, m, xi, x0);
+            double u[3];
             for (int a = 0; a < 3; a++)
                 u[a] = vbin[3 * m + a] - vi[a];
-            for (int s = 0; s < ev.st->n; s++) {
-                const int mt = shifted(g, ev.grid, m, ev.st->dn[s]);
-                if (mt < 0)
-                    continue;
-                double d[3];
-                for (int k = 0; k < 3; d[k] = xi[k] - (x0[k] + ev.st->dx[s][k]), k++)
-                    ;
-                const double w = cc_w(cc, sqrt(dot3(d, d)));
-                double *row = ev.acc + (size_t)mt * nval;
+            const int nb = atom_bins(g, &ev, m, at->x + 3 * (size_t)i, bins);
+            for (int s = 0; s < nb; s++) {
+                const double w = bins[s].w;
+                double *row = ev.acc + (size_t)bins[s].m * nval;
                 for (int k = 0; k < nval; k++) {
                     const struct cc_value *v = &cc->val[k];
                     if (v->field == F_TEMPERATURE)
@@ -774,6 +793,7 @@ static void cc_array(struct gravel *g, struct compute *c)
         }
         free(vbin);
     }
+    free(bins);
     /* divided by the lengths of the unbinned dimensions */
     int binned[3] = {0, 0, 0};
     for (int q = 0; q < ev.grid->ndim; q++)

@@ -47,25 +47,6 @@ static void fb_destroy(struct compute *c)
     c->data = NULL;
 }
 
-/* "lo", "lo*hi", "*", "lo*", "*hi" within 1..n (LAMMPS's utils::bounds) */
-static void type_range(struct gravel *g, const char *s, int n, int *lo, int *hi)
-{
-    const char *star = strchr(s, '*');
-    if (!star) {
-        *lo = *hi = arg_int(g, s, WHO " type/include");
-    } else {
-        char a[32] = "", b[32] = "";
-        if (star - s >= (long)sizeof a || strlen(star + 1) >= sizeof b)
-            gr_error(g, WHO ": invalid type range '%.64s'", s);
-        memcpy(a, s, (size_t)(star - s));
-        strcpy(b, star + 1);
-        *lo = a[0] ? arg_int(g, a, WHO " type/include") : 1;
-        *hi = b[0] ? arg_int(g, b, WHO " type/include") : n;
-    }
-    if (*lo < 1 || *hi > n || *lo > *hi)
-        gr_error(g, WHO ": type range '%.64s' is not within 1..%d", s, n);
-}
-
 /* every range of a comma-separated list, into lo[], hi[] (returns the count) */
 static int type_list(struct gravel *g, const char *s, int n, int *lo, int *hi, int cap)
 {
@@ -78,7 +59,7 @@ static int type_list(struct gravel *g, const char *s, int n, int *lo, int *hi, i
          tok = strtok_r(NULL, ",", &save)) {
         if (m == cap)
             gr_error(g, WHO ": at most %d type ranges in a list", cap);
-        type_range(g, tok, n, lo + m, hi + m);
+        arg_type_range(g, tok, n, lo + m, hi + m);
         m++;
     }
     if (m == 0)

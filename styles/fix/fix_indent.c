@@ -15,11 +15,10 @@
 #include "args.h"
 #include "device.h"
 #include "domain.h"
-#include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "force_values.h"
 #include "lattice.h"
-#include "par_sum.h"
 #include "variable.h"
 
 #define WHO "fix indent"
@@ -52,17 +51,6 @@ static void value(struct gravel *g, struct indent *d, int v, const char *s)
         d->val[v] = arg_double(g, s, WHO " value");
 }
 
-static int axis(struct gravel *g, const char *s)
-{
-    if (!strcmp(s, "x"))
-        return 0;
-    if (!strcmp(s, "y"))
-        return 1;
-    if (!strcmp(s, "z"))
-        return 2;
-    gr_error(g, WHO ": dim must be x, y or z, got '%.32s'", s);
-}
-
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 1)
@@ -83,7 +71,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 5;
         } else if (!strcmp(kw, "cylinder")) {
             arg_need(g, argc, i, 4, kw);
-            d->cdim = axis(g, argv[i + 1]);
+            d->cdim = arg_axis(g, argv[i + 1], WHO " dim");
             const int c1 = d->cdim == 0 ? V_Y : V_X, c2 = d->cdim == 2 ? V_Y : V_Z;
             value(g, d, c1, argv[i + 2]);
             value(g, d, c2, argv[i + 3]);
@@ -92,7 +80,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             i += 5;
         } else if (!strcmp(kw, "plane")) {
             arg_need(g, argc, i, 3, kw);
-            d->cdim = axis(g, argv[i + 1]);
+            d->cdim = arg_axis(g, argv[i + 1], WHO " dim");
             value(g, d, V_P, argv[i + 2]);
             if (!strcmp(argv[i + 3], "lo"))
                 d->planeside = -1;
@@ -192,18 +180,7 @@ static void post_force(struct gravel *g, struct fix *f)
 /* column c (0 energy, 1..3 the force on the indenter) summed in tag order */
 static double sum_column(struct gravel *g, struct fix *f, int c)
 {
-    if (!g->eng || !f->peratom || g->eng->a.n == 0)
-        return 0.0; /* no run yet: LAMMPS's zeros */
-    struct engine *e = g->eng;
-    const int n = e->a.n;
-    const int *ord = eng_tag_order(g);
-    double *r = gr_malloc(g, 4 * (size_t)n * sizeof *r);
-    eng_read_reals(g, f->peratom, 4 * (size_t)n, r);
-    struct par_sum s = {0}; /* every rank's atoms, in tag order */
-    for (int k = 0; k < n; k++)
-        par_sum_add(g, &s, e->tag_seen[ord[k]], r[4 * ord[k] + c]);
-    free(r);
-    return par_sum_total(g, &s);
+    return fix_peratom_sum(g, f, 4, c);
 }
 
 static double scalar(struct gravel *g, struct fix *f) { return sum_column(g, f, 0); }

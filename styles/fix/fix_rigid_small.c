@@ -373,31 +373,6 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->needs = NEED_ROTATION;
 }
 
-/* LAMMPS's body range M of fix rigid's force/torque keywords (N, *, N*, *M,
- * N*M over 1..nbody) into [*lo, *hi] (0-based) */
-static void body_range(struct gravel *g, const char *w, int nbody, int *lo, int *hi)
-{
-    const char *star = strchr(w, '*');
-    long a, b;
-    char *end;
-    if (!star) {
-        a = b = strtol(w, &end, 10);
-        if (*end)
-            gr_error(g, "fix rigid: invalid body index '%.32s'", w);
-    } else {
-        a = star == w ? 1 : strtol(w, &end, 10);
-        if (star != w && end != star)
-            gr_error(g, "fix rigid: invalid body range '%.32s'", w);
-        b = star[1] ? strtol(star + 1, &end, 10) : nbody;
-        if (star[1] && *end)
-            gr_error(g, "fix rigid: invalid body range '%.32s'", w);
-    }
-    if (a < 1 || b > nbody || a > b)
-        gr_error(g, "fix rigid: body range '%.32s' is not within 1..%d", w, nbody);
-    *lo = (int)a - 1;
-    *hi = (int)b - 1;
-}
-
 /* `fix ID group rigid single|molecule|group N g1 .. gN [reinit yes|no]
  * [force M x y z] [torque M x y z]`: LAMMPS's fix rigid, the same bodies
  * and integration as rigid/small, the bodies set by the body style: the
@@ -480,10 +455,10 @@ static void create_rigid(struct gravel *g, struct fix *f, int argc, char **argv)
         } else if (!strcmp(k, "force") || !strcmp(k, "torque")) {
             arg_need(g, argc, i, 4, k);
             int lo, hi, v[3];
-            body_range(g, argv[i + 1], r->nbody, &lo, &hi);
+            arg_range(g, argv[i + 1], r->nbody, &lo, &hi, "fix rigid body"); /* 1-based */
             char *w[4] = {argv[i], argv[i + 2], argv[i + 3], argv[i + 4]};
             rigid_small_flags_arg(g, 4, w, 0, v);
-            for (int ib = lo; ib <= hi; ib++)
+            for (int ib = lo - 1; ib < hi; ib++)
                 rigid_small_hold(f, ib, k[0] == 'f' ? v : NULL, k[0] == 't' ? v : NULL);
             i += 4;
         } else if (!strcmp(k, "langevin") || !strcmp(k, "infile") || !strcmp(k, "temp") ||

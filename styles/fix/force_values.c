@@ -90,17 +90,22 @@ void force_values_apply(struct gravel *g, struct fix *f, struct force_values *fv
 
 double force_values_original(struct gravel *g, struct fix *f, int d)
 {
+    return fix_peratom_sum(g, f, 3, d);
+}
+
+double fix_peratom_sum(struct gravel *g, struct fix *f, int width, int col)
+{
     if (!g->eng || !f->peratom || g->eng->a.n == 0)
         return 0.0; /* no run yet: LAMMPS's zeros */
     struct engine *e = g->eng;
     const int n = e->a.n;
     const int *ord = eng_tag_order(g); /* reads the device tags into e->tag_seen */
-    double *o = gr_malloc(g, 3 * (size_t)n * sizeof *o);
-    eng_read_reals(g, f->peratom, 3 * (size_t)n, o);
+    double *r = gr_malloc(g, (size_t)width * n * sizeof *r + 1);
+    eng_read_reals(g, f->peratom, (size_t)width * n, r);
     struct par_sum s = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < n; k++)
-        par_sum_add(g, &s, e->tag_seen[ord[k]], o[3 * ord[k] + d]);
-    free(o);
+        par_sum_add(g, &s, e->tag_seen[ord[k]], r[(size_t)width * ord[k] + col]);
+    free(r);
     return par_sum_total(g, &s);
 }
 

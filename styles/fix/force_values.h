@@ -32,5 +32,9 @@ void force_values_apply(struct gravel *g, struct fix *f, struct force_values *fv
 /* component d (0..2) of the group's force before the fix, in tag order */
 double force_values_original(struct gravel *g, struct fix *f, int d);
 void force_values_free(struct force_values *fv);
+/* Column col of fix f's per-atom records (f->peratom, `width` REAL per atom,
+ * device order), summed over the atoms in tag order (every rank's): 0 before
+ * a run has given the fix its records (LAMMPS's zeros). */
+double fix_peratom_sum(struct gravel *g, struct fix *f, int width, int col);
 
 #endif

@@ -14,13 +14,12 @@
 Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
 comparisons FAIL naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, ROOT, check, close, dump_steps, expect_errors,  # noqa: E402
-                  falling_bed, folders, run, thermo_rows)
+from peer import (ROOT, check, close, dump_steps, expect_errors, falling_bed,  # noqa: E402
+                  thermo_against_lmp)
 
 COLLOID = open(os.path.join(ROOT, "tests", "reference", "colloid", "pair_colloid_ll.in")).read()
 COLLOID = COLLOID.split("thermo_style")[0] + """compute pe all pe
@@ -51,19 +50,10 @@ run 500
 
 
 def compare(name, deck, ncol, nrows, parent, dump=None):
-    g, lm = folders(parent, name + "_g", name + "_l")
-    rc, out = run([GRAVEL], deck, g)
-    got = thermo_rows(out, ncol) if rc == 0 else []
-    if shutil.which("lmp") is None:
-        check(name, False, "lmp (Debian package lammps) is not installed")
-        return
-    _, lout = run(["lmp"], deck, lm)
-    ref = thermo_rows(lout, ncol)
-    ok = len(ref) == nrows and len(got) == nrows and all(
-        close(a, b, 1e-10, 1e-12) for r, s in zip(got, ref) for a, b in zip(r, s))
-    check(name, ok, "rows %d/%d: %s %s" % (len(got), len(ref), got[-1:], ref[-1:]))
+    ok, _, _, g, lm = thermo_against_lmp(name, deck, ncol, nrows, parent, 1e-10, 1e-12)
     if dump:
-        a, b = dump_steps(os.path.join(g, dump)), dump_steps(os.path.join(lm, dump))
+        a = dump_steps(os.path.join(g, dump)) if ok else {}
+        b = dump_steps(os.path.join(lm, dump)) if ok else {}
         same = a.keys() == b.keys() and all(
             close(x[0], y[0], 1e-10, 1e-12) for s in a for i, x in a[s].items()
             for y in [b[s][i]])

@@ -112,7 +112,7 @@ def main():
             "fabric_err_unknown": ("compute f all fabric radius contact stress\n",
                                    "unknown tensor or keyword 'stress'"),
             "fabric_err_type_range": ("compute f all fabric radius contact type/include 1 3\n",
-                                      "type range '3' is not within 1..2"),
+                                      "atom type range '3' is outside 1..2"),
             "fabric_err_tangential_granular": (
                 "compute f all fabric radius force/tangential\n" + gran + "run 0\n",
                 "does not calculate tangential forces"),

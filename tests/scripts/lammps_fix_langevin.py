@@ -15,13 +15,12 @@
 3. The errors; refused on MPI ranks. One line PASS/FAIL per case; without
    `lmp` the comparisons FAIL naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, close, expect_errors,  # noqa: E402
-                  folders, run, thermo_rows)
+from peer import (GRAVEL, check, check_refused_on_ranks, expect_errors, run,  # noqa: E402
+                  thermo_against_lmp, thermo_rows)
 
 GAS = """units lj
 atom_style sphere
@@ -77,21 +76,7 @@ run 6000
 
 
 def compare(name, parent):
-    deck = GAS + CASES[name] + TAIL
-    g, lm = folders(parent, name + "_g", name + "_l")
-    rc, out = run([GRAVEL], deck, g)
-    got = thermo_rows(out, 3) if rc == 0 else []
-    if shutil.which("lmp") is None:
-        check("langevin_" + name, False, "lmp (Debian package lammps) is not installed")
-        return
-    _, lout = run(["lmp"], deck, lm)
-    ref = thermo_rows(lout, 3)
-    worst = max((abs(a - b) / max(abs(b), 1e-300) for r, s in zip(got, ref)
-                 for a, b in zip(r, s)), default=0.0)
-    ok = len(ref) == 11 and len(got) == 11 and all(
-        close(a, b, 1e-9, 1e-14) for r, s in zip(got, ref) for a, b in zip(r, s))
-    check("langevin_" + name, ok, "rows %d/%d, worst rel %g: %s" %
-          (len(got), len(ref), worst, (out if rc else lout)[-300:]))
+    thermo_against_lmp("langevin_" + name, GAS + CASES[name] + TAIL, 3, 11, parent, 1e-9, 1e-14)
 
 
 def ideal(tmp):

@@ -12,13 +12,11 @@ of its array (xcm, vcm, fcm, torque, image of two bodies): equal to 1e-8
 relative (1e-10 absolute) every 250 steps. Then the errors. One line
 PASS/FAIL per case; without `lmp` the comparisons FAIL naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, close, expect_errors, folders, run,  # noqa: E402
-                  thermo_rows)
+from peer import expect_errors, thermo_against_lmp  # noqa: E402
 
 HEAD = """units lj
 atom_style sphere
@@ -79,21 +77,8 @@ CASES = {
 
 def compare(name, parent):
     fix, more = CASES[name]
-    ncol = 7 + len(more.split())
     deck = HEAD + fix + TAIL.format(more=more)
-    g, lm = folders(parent, name + "_g", name + "_l")
-    rc, out = run([GRAVEL], deck, g)
-    got = thermo_rows(out, ncol) if rc == 0 else []
-    if shutil.which("lmp") is None:
-        check("rigid_" + name, False, "lmp (Debian package lammps) is not installed")
-        return
-    _, lout = run(["lmp"], deck, lm)
-    ref = thermo_rows(lout, ncol)
-    bad = [(r[0], a, b) for r, s in zip(got, ref) for a, b in zip(r, s)
-           if not close(a, b, 1e-8, 1e-10)]
-    ok = len(ref) == 13 and len(got) == 13 and not bad
-    check("rigid_" + name, ok, "rows %d/%d, %d differ %s: %s" %
-          (len(got), len(ref), len(bad), bad[:3], (out if rc else lout)[-300:]))
+    thermo_against_lmp("rigid_" + name, deck, 7 + len(more.split()), 13, parent, 1e-8, 1e-10)
 
 
 def main():
@@ -109,7 +94,7 @@ def main():
             "err_group_missing": ("fix rb all rigid group 1 nope\n",
                                   "could not find fix rigid group ID nope"),
             "err_body_range": ("fix rb bodies rigid molecule force 4 on on on\n",
-                               "body range '4' is not within 1..3"),
+                               "fix rigid body range '4' is outside 1..3"),
             "err_keyword": ("fix rb all rigid molecule langevin 1 1 1 1\n",
                             "fix rigid keyword 'langevin' is not supported"),
         }, HEAD, err)

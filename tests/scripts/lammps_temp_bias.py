@@ -18,13 +18,12 @@ On 2 MPI ranks the three temperatures' file is byte-identical to one
 process's. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
 comparisons FAIL naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_same_on_ranks, close, expect_errors,  # noqa: E402
-                  falling_bed, folders, run, thermo_rows)
+from peer import (check_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
+                  thermo_against_lmp)
 
 HEAD = falling_bed() + """velocity all set 2.0 0.0 0.0 sum yes units box
 region mid block INF INF INF INF 1 4 units box
@@ -53,20 +52,7 @@ TAIL = "thermo_modify format float %.15g\nthermo 100\nrun 1500\n"
 def compare(name, parent):
     body, ncol = CASES[name]
     deck = HEAD + body + TAIL
-    g, lm = folders(parent, name + "_g", name + "_l")
-    rc, out = run([GRAVEL], deck, g)
-    got = thermo_rows(out, ncol) if rc == 0 else []
-    if shutil.which("lmp") is None:
-        check(name, False, "lmp (Debian package lammps) is not installed")
-        return
-    _, lout = run(["lmp"], deck, lm)
-    ref = thermo_rows(lout, ncol)
-    worst = max((abs(a - b) / max(abs(b), 1e-300) for r, s in zip(got, ref)
-                 for a, b in zip(r, s) if not close(a, b, 0, 1e-12)), default=0.0)
-    ok = len(ref) == 16 and len(got) == 16 and all(
-        close(a, b, 1e-9, 1e-12) for r, s in zip(got, ref) for a, b in zip(r, s))
-    check("temp_bias_" + name, ok, "rows %d/%d, worst rel %g: %s" %
-          (len(got), len(ref), worst, (out if rc else lout)[-300:]))
+    _, _, _, g, _ = thermo_against_lmp("temp_bias_" + name, deck, ncol, 16, parent, 1e-9, 1e-12)
     if name == "computes":
         ranks = os.path.join(parent, "ranks")
         os.mkdir(ranks)

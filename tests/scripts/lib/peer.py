@@ -156,3 +156,24 @@ def check_restart_continues(name, parent, deck, resumed, dump, n):
     ref = dump_steps(os.path.join(one, "out.dump")).get(2 * n)
     got = dump_steps(os.path.join(two, "out.dump")).get(2 * n) if rc == 0 else None
     check(name, ref is not None and got == ref, "exit %d: %s" % (rc, out[-400:]))
+
+
+def thermo_against_lmp(name, deck, ncol, nrows, parent, rel, absolute):
+    """case name: `deck` run by bin/gravel and lmp in folders parent/name_g and
+    parent/name_l prints nrows thermo rows of ncol numbers in each, equal
+    within rel (or absolute); FAIL naming lmp when it is not installed.
+    Returns (ok, gravel's rows, lmp's rows, gravel's folder, lmp's folder)"""
+    g, lm = folders(parent, name + "_g", name + "_l")
+    rc, out = run([GRAVEL], deck, g)
+    got = thermo_rows(out, ncol) if rc == 0 else []
+    if shutil.which("lmp") is None:
+        check(name, False, "lmp (Debian package lammps) is not installed")
+        return False, got, [], g, lm
+    _, lout = run(["lmp"], deck, lm)
+    ref = thermo_rows(lout, ncol)
+    bad = [(r[0], a, b) for r, t in zip(got, ref) for a, b in zip(r, t)
+           if not close(a, b, rel, absolute)]
+    ok = len(ref) == nrows and len(got) == nrows and not bad
+    check(name, ok, "rows %d/%d, %d differ %s: %s" %
+          (len(got), len(ref), len(bad), bad[:3], (out if rc else lout)[-300:]))
+    return ok, got, ref, g, lm
