@@ -128,7 +128,8 @@ static double cc_scale(int nbin, double c, double sd)
         return 1.0 / (sqrt(2 * M_PI) * sd * er - 2 * c * e);
     if (nbin == 2)
         return 1.0 / (2 * M_PI * (sd * sd * (1 - e) - 0.5 * c * c * e));
-    return 1.0 / (4 * M_PI * (sqrt(0.5 * M_PI) * sd * sd * sd * er - c * e * (c * c + 3 * sd * sd) / 3));
+    const double ball = sqrt(0.5 * M_PI) * sd * sd * sd * er - c * e * (c * c + 3 * sd * sd) / 3;
+    return 1.0 / (4 * M_PI * ball);
 }
 
 /* ---- arguments ---------------------------------------------------------- */
@@ -856,7 +857,8 @@ static void cc_array(struct gravel *g, struct compute *c)
     }
     double *out = compute_array_rows(g, c, nchunk);
     for (int m = 0; m < nchunk; m++)
-        memcpy(out + (size_t)m * cc->nout, ev.acc + (size_t)m * nval, (size_t)cc->nout * sizeof *out);
+        memcpy(out + (size_t)m * cc->nout, ev.acc + (size_t)m * nval,
+               (size_t)cc->nout * sizeof *out);
     free(ev.acc);
     free_stencil(&ev.atoms);
     free_stencil(&ev.lines);

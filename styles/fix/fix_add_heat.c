@@ -7,7 +7,8 @@
  * overwrite yes sets the heat flow of the step to this fix's alone (the
  * contacts' and earlier fixes' heat dropped). Runs at post_force in fix
  * order after the contacts' heat (kernels/fix_add_heat.cl), at every step
- * but not at a run's setup (as LAMMPS); fix heat/flow integrates the result. Needs fix property/atom temperature heatflow. */
+ * but not at a run's setup (as LAMMPS); fix heat/flow integrates the
+ * result. Needs fix property/atom temperature heatflow. */
 #include <stdlib.h>
 #include <string.h>
 

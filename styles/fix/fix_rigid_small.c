@@ -283,14 +283,15 @@ static int by_mol(const void *a, const void *b)
 
 /* One body per molecule ID of the group's atoms (LAMMPS create_bodies). */
 /* The bodies of the group's atoms, one per value of key[i] (molecule IDs,
- * fix rigid's group index or 0 for `single`), in ascending key order. */
+ * fix rigid's group index or 0 for `single`; < 0: in no body), in
+ * ascending key order. */
 static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r, const int64_t *key)
 {
     struct atoms *a = &g->atoms;
     int n = 0;
     int *list = hold_ints(g, r, (size_t)a->n + 1);
     for (int i = 0; i < a->n; i++)
-        if (a->mask[i] & f->groupbit)
+        if ((a->mask[i] & f->groupbit) && key[i] >= 0)
             list[n++] = i;
     cmp_mol = key;
     cmp_tagv = a->tag;
@@ -377,11 +378,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
  * [force M x y z] [torque M x y z]`: LAMMPS's fix rigid, the same bodies
  * and integration as rigid/small, the bodies set by the body style: the
  * whole group (single), each molecule ID (molecule), each listed group
- * (an atom in two of them is an error); force and torque switch the bodies'
- * force and torque components on or off (LAMMPS's fflag, tflag). Global
- * scalar: the bodies' temperature, LAMMPS's sum of M vcm^2 and w I w over
- * the components not held (6 per body) less the linear bodies; global array nbody x 15: xcm, vcm, fcm, torque,
- * image flags of each body. */
+ * (an atom in two of them is an error; one in none is in no body); force
+ * and torque switch the bodies' force and torque components on or off
+ * (LAMMPS's fflag, tflag). Global scalar: the bodies' temperature, LAMMPS's
+ * sum of M vcm^2 and w I w over the components not held (6 per body) less
+ * the linear bodies; global array nbody x 15: xcm, vcm, fcm, torque, image
+ * flags of each body. */
 static void create_rigid(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 1)
@@ -427,14 +429,7 @@ static void create_rigid(struct gravel *g, struct fix *f, int argc, char **argv)
                 key[k] = q;
             }
         }
-        for (int k = 0; k < a->n; k++)
-            if (key[k] < 0 && (a->mask[k] & f->groupbit)) { /* in the fix's group, no body */
-                free(key);
-                gr_error(g, "fix rigid group: atom %lld of group %s is in none of the %d "
-                            "body groups",
-                         (long long)a->tag[k], g->groups.name[f->igroup], ng);
-            }
-        i = 2 + ng;
+        i = 2 + ng; /* atoms in none of the groups are in no body, as LAMMPS */
     } else if (!strcmp(argv[0], "custom")) {
         free(key);
         gr_error(g, "fix rigid custom is not supported (use molecule IDs or groups)");
