@@ -6,12 +6,17 @@ The falling bed of tests/scripts/lib/peer.py (96 spheres on a wall/gran
 floor) binned along z (chunk/atom bin/1d, 1.0 wide), run unchanged by `lmp`
 and bin/gravel for 1500 steps: fix ave/time writes every 250 steps, in
 vector mode, the bins' count and centre (property/chunk), centre of mass
-(com/chunk), centre-of-mass velocity (vcm/chunk), and reduce/chunk sum of
-compute ke/atom, max and min of an atom-style variable (vz) and of a
-per-atom compute's column; a one-input reduce/chunk as a vector; empty
-bins (min 1e20 and max -1e20, as LAMMPS). The files' numbers agree to 1e-8
-relative (1e-10 absolute: sums of contact forces in a bin cancel). Then the errors. One line PASS/FAIL per case;
-without `lmp` the comparisons FAIL naming it."""
+(com/chunk), centre-of-mass velocity (vcm/chunk of a smaller group), and
+one-input reduce/chunk vectors: sums of compute ke/atom and of a per-atom
+compute's column, max and min of an atom-style variable (vz) and of
+compute columns, over all atoms or a smaller group; empty bins keep
+LAMMPS's initial values (min 1e20, max -1e20). The files' numbers agree to
+1e-8 relative (1e-10 absolute: sums of contact forces in a bin cancel).
+Several inputs in one reduce/chunk (an array) give the one-input vectors'
+numbers bit for bit (lmp 2021 initialises only part of such an array for
+min and max, a bug today's LAMMPS has fixed: not compared with lmp). Then
+the errors. One line PASS/FAIL per case; without `lmp` the comparisons FAIL
+naming it."""
 import os
 import shutil
 import sys
