@@ -23,7 +23,8 @@
    (boundary/atom): the boundary force density integrates to minus the
    walls' force on the atoms (their contacts array) and to the frozen
    layer's force (fix freeze's vector).
-4. 2d: the density integrates to the discs' mass per unit length.
+4. 2d: the density integrates to the discs' mass per unit length; bins in
+   two and three dimensions: the density integrates to the mass.
 Then the errors."""
 import math
 import os
@@ -337,10 +338,48 @@ def errors(tmp):
     check_refused_on_ranks("refused_on_ranks", TWOD, tmp, "compute cc (continuum/chunk)")
 
 
+MULTI = """units lj
+atom_style sphere
+boundary p p p
+lattice sc 1.0 origin 0.5 0.5 0.5
+region box block 0 6 0 6 0 6
+create_box 1 box
+create_atoms 1 box
+set group all diameter 0.9 density 1.0
+displace_atoms all random 0.1 0.1 0.1 777 units box
+pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix 1 all nve/sphere
+compute b2 all chunk/atom bin/2d x lower 0.5 y lower 0.5 units box
+compute b3 all chunk/atom bin/3d x lower 0.5 y lower 0.5 z lower 0.5 units box
+compute c2 all continuum/chunk b2 2.0 0.4 density volume/fraction
+compute c3 all continuum/chunk b3 2.0 0.4 density natoms
+fix a all ave/time 1 1 1 c_c2[*] mode vector file c2.txt format " %.17g"
+fix b all ave/time 1 1 1 c_c3[*] mode vector file c3.txt format " %.17g"
+run 0
+"""
+
+
+def multi_d(tmp):
+    """bins in two and three dimensions: the 2d and 3d kernels' normalisation"""
+    rc, out = run([GRAVEL], MULTI, tmp)
+    mass = 216 * 4 / 3 * math.pi * 0.45 ** 3
+    r2 = table(os.path.join(tmp, "c2.txt")) if rc == 0 else []
+    r3 = table(os.path.join(tmp, "c3.txt")) if rc == 0 else []
+    m2 = sum(r[1] for r in r2) * 0.5 * 0.5 * 6  # bins 0.5 x 0.5, divided by Lz
+    v2 = sum(r[2] for r in r2) * 0.5 * 0.5 * 6
+    m3 = sum(r[1] for r in r3) * 0.5 ** 3
+    check("bins_2d_density_integrates_to_mass", len(r2) == 144 and rel(m2, mass) < 1e-5 and
+          rel(v2, mass) < 1e-5, "%s %g %g %g" % (out[-200:], m2, v2, mass))
+    check("bins_3d_density_integrates_to_mass", len(r3) == 1728 and rel(m3, mass) < 5e-5,
+          "%g %g" % (m3, mass))
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name, fn in (("chute", lammps_chute), ("pack", packing), ("bound", boundaries),
-                         ("twod", two_d), ("err", errors)):
+                         ("twod", two_d), ("multi", multi_d),
+                         ("err", errors)):
             d = os.path.join(tmp, name)
             os.mkdir(d)
             fn(d)
