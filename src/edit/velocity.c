@@ -24,6 +24,8 @@
 #include <string.h>
 
 #include "args.h"
+#include "compute.h"
+#include "temperature.h"
 #include "variable.h"
 #include "domain.h"
 #include "error.h"
@@ -35,6 +37,8 @@ enum vloop { LOOP_ALL, LOOP_LOCAL, LOOP_GEOM };
 struct vopts {
     int gaussian, sum, mom, rot, lattice_units;
     enum vloop loop;
+    char temp[GR_NAMELEN];      /* temp ID: the temperature compute ("" none) */
+    int bias;                   /* bias yes: its velocity bias kept */
 };
 
 /* Boltzmann constant in the unit system: LAMMPS's force->boltz values
@@ -122,7 +126,27 @@ static void assign(struct atoms *a, int i, const double r[3], int dim)
 struct create_res {
     int *map;
     double *vsave;
+    double *vbias;              /* bias yes: the bias taken out */
 };
+
+/* The temperature compute of `temp ID` (NULL without one); bias yes needs
+ * one with a velocity bias */
+static struct temp_state *velocity_temp(struct gravel *g, const struct vopts *o)
+{
+    if (!o->temp[0]) {
+        if (o->bias)
+            gr_error(g, "cannot use velocity bias command without temp keyword");
+        return NULL;
+    }
+    struct compute *c = compute_get(g, o->temp, "velocity temp");
+    if (!c->temp)
+        gr_error(g, "velocity temperature ID %s does not compute temperature", o->temp);
+    if (o->bias && !temp_has_bias(c->temp))
+        gr_error(g, "velocity temperature ID %s does not compute a velocity bias (temp/com, "
+                    "temp/partial, temp/region do)",
+                 o->temp);
+    return c->temp;
+}
 
 #define VELOCITY_WARMUP 100 /* LAMMPS velocity.cpp WARMUP, loop local */
 
@@ -138,10 +162,13 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
         if ((a->mask[i] & bit) && !(a->rmass[i] > 0))
             gr_error(g, "atom %lld has mass %g: velocity create needs positive masses",
                      (long long)a->tag[i], a->rmass[i]);
-    if (o->sum) {
+    struct temp_state *tc = velocity_temp(g, o);
+    if (o->sum) { /* LAMMPS: the velocities as they are, bias included */
         res->vsave = gr_malloc(g, (size_t)a->n * 3 * sizeof(double));
         memcpy(res->vsave, a->v, (size_t)a->n * 3 * sizeof(double));
     }
+    if (o->bias) /* LAMMPS: the bias taken out before the velocities are made */
+        res->vbias = temp_bias_remove(g, tc);
     struct rng_park rng;
     double r[3];
     if (o->loop == LOOP_GEOM) {
@@ -193,17 +220,24 @@ static void do_create(struct gravel *g, int ig, double t_want, int seed,
         zero_momentum(g, ig);
     if (o->rot)
         zero_rotation(g, ig);
-    double t = group_temp(g, ig);
+    /* LAMMPS: with a bias, the plain temperature of the group's new velocities */
+    double t = tc && !o->bias ? temp_scalar(g, tc) : group_temp(g, ig);
     if (!(t > 0))
         gr_error(g, "cannot rescale a zero temperature");
     double f = sqrt(t_want / t);
     for (int i = 0; i < a->n; i++)
         if (a->mask[i] & bit)
-            for (int d = 0; d < 3; d++) {
+            for (int d = 0; d < 3; d++)
                 a->v[3 * i + d] *= f;
-                if (res->vsave)
-                    a->v[3 * i + d] += res->vsave[3 * i + d];
-            }
+    if (res->vbias) { /* LAMMPS: reapply_bias_all, restore_bias_all, then sum */
+        temp_bias_reapply(g, tc);
+        temp_bias_restore(g, tc, res->vbias);
+        res->vbias = NULL;
+    }
+    for (int i = 0; res->vsave && i < a->n; i++)
+        if (a->mask[i] & bit)
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] += res->vsave[3 * i + d];
 }
 
 static void parse_opts(struct gravel *g, int argc, char **argv, int start, struct vopts *o)
@@ -214,6 +248,8 @@ static void parse_opts(struct gravel *g, int argc, char **argv, int start, struc
     o->rot = 0;
     o->lattice_units = 1;
     o->loop = LOOP_ALL; /* LAMMPS default */
+    o->temp[0] = '\0';
+    o->bias = 0;
     for (int i = start; i < argc; i++) {
         const char *kw = argv[i];
         arg_need(g, argc, i, 1, kw);
@@ -243,9 +279,12 @@ static void parse_opts(struct gravel *g, int argc, char **argv, int start, struc
         } else if (!strcmp(kw, "units")) {
             o->lattice_units = domain_parse_units_kw(g, v);
         } else if (!strcmp(kw, "bias")) {
-            if (arg_yesno(g, v, "bias"))
-                gr_error(g, "bias yes is not supported (no temperature computes with bias)");
-        } else if (!strcmp(kw, "temp") || !strcmp(kw, "rigid")) {
+            o->bias = arg_yesno(g, v, "bias");
+        } else if (!strcmp(kw, "temp")) {
+            if (strlen(v) >= GR_NAMELEN)
+                gr_error(g, "temp compute ID '%.64s...' is too long", v);
+            strcpy(o->temp, v);
+        } else if (!strcmp(kw, "rigid")) {
             gr_error(g, "keyword '%s' is not supported", kw);
         } else {
             gr_error(g, "unknown keyword '%.32s'", kw);
@@ -267,13 +306,14 @@ void cmd_velocity(struct gravel *g, int argc, char **argv)
         if (seed <= 0)
             gr_error(g, "seed must be a positive integer, got %s", argv[3]);
         parse_opts(g, argc, argv, 4, &o);
-        struct create_res res = {NULL, NULL};
+        struct create_res res = {NULL, NULL, NULL};
         jmp_buf *outer = g->err.jmp, here;
         g->err.jmp = &here;
         if (setjmp(here)) {
             g->err.jmp = outer;
             free(res.map);
             free(res.vsave);
+            free(res.vbias);
             if (outer)
                 longjmp(*outer, 1);
             gr_report_error(g);
@@ -324,14 +364,19 @@ void cmd_velocity(struct gravel *g, int argc, char **argv)
         arg_need(g, argc, 1, 1, "scale");
         double t_want = arg_nonneg(g, argv[2], "temperature");
         parse_opts(g, argc, argv, 3, &o);
-        double t = group_temp(g, ig);
+        struct temp_state *tc = velocity_temp(g, &o);
+        double t = tc ? temp_scalar(g, tc) : group_temp(g, ig);
         if (!(t > 0))
             gr_error(g, "cannot rescale a zero temperature");
         double f = sqrt(t_want / t);
-        for (int i = 0; i < a->n; i++)
-            if (a->mask[i] & bit)
-                for (int d = 0; d < 3; d++)
-                    a->v[3 * i + d] *= f;
+        if (o.bias) { /* LAMMPS: the bias out, the group scaled, the bias back */
+            temp_scale_thermal(g, tc, bit, f);
+        } else {
+            for (int i = 0; i < a->n; i++)
+                if (a->mask[i] & bit)
+                    for (int d = 0; d < 3; d++)
+                        a->v[3 * i + d] *= f;
+        }
     } else if (!strcmp(style, "ramp")) {
         arg_need(g, argc, 1, 6, "ramp");
         static const char *vd[3] = {"vx", "vy", "vz"}, *cd[3] = {"x", "y", "z"};

@@ -228,25 +228,69 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
         out[d] = par_sum_total(g, &s[d]) * compute_mvv2e(g);
 }
 
+int temp_has_bias(const struct temp_state *t)
+{
+    return t->kind == TEMP_COM || t->kind == TEMP_PARTIAL || t->kind == TEMP_REGION;
+}
+
+double *temp_bias_remove(struct gravel *g, struct temp_state *t)
+{
+    struct atoms *a = &g->atoms;
+    const void *r = temp_region(g, t);
+    double vcm[3];
+    bias_velocity(g, t, vcm);
+    double *vb = gr_calloc(g, 3 * (size_t)a->n + 1, sizeof *vb);
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & t->groupbit))
+            continue;
+        double *v = a->v + 3 * i, *b = vb + 3 * i;
+        for (int d = 0; d < 3; d++) {
+            if (t->kind == TEMP_COM) {
+                b[d] = vcm[d];
+                v[d] -= b[d];
+            } else if ((t->kind == TEMP_PARTIAL && !t->flags[d]) ||
+                       (r && !t->region_in(r, a->x + 3 * i))) {
+                b[d] = v[d];
+                v[d] = 0.0;
+            }
+        }
+    }
+    return vb;
+}
+
+void temp_bias_reapply(struct gravel *g, const struct temp_state *t)
+{
+    struct atoms *a = &g->atoms;
+    if (t->kind != TEMP_PARTIAL)
+        return;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & t->groupbit)
+            for (int d = 0; d < 3; d++)
+                if (!t->flags[d])
+                    a->v[3 * i + d] = 0.0;
+}
+
+void temp_bias_restore(struct gravel *g, const struct temp_state *t, double *vb)
+{
+    struct atoms *a = &g->atoms;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & t->groupbit)
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] += vb[3 * i + d];
+    free(vb);
+}
+
 void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbit,
                         double factor)
 {
     struct atoms *a = &g->atoms;
-    const void *r = temp_region(g, t);
-    double vb[3];
-    bias_velocity(g, t, vb);
-    for (int i = 0; i < a->n; i++) {
-        if (!(a->mask[i] & groupbit))
-            continue;
-        double *v = a->v + 3 * i;
-        if (r && !t->region_in(r, a->x + 3 * i))
-            continue; /* temp/region's bias: the atoms outside keep their velocity */
-        for (int d = 0; d < 3; d++) {
-            if (t->kind == TEMP_PARTIAL && !t->flags[d])
-                continue; /* the bias: an uncounted component is kept */
-            v[d] = t->kind == TEMP_COM ? (v[d] - vb[d]) * factor + vb[d] : v[d] * factor;
-        }
-    }
+    double *vb = temp_has_bias(t) ? temp_bias_remove(g, t) : NULL;
+    for (int i = 0; i < a->n; i++)
+        if (a->mask[i] & groupbit)
+            for (int d = 0; d < 3; d++)
+                a->v[3 * i + d] *= factor;
+    if (vb)
+        temp_bias_restore(g, t, vb);
 }
 
 struct temp_state *temp_thermo(struct gravel *g)

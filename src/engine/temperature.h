@@ -35,11 +35,20 @@ double temp_scalar(struct gravel *g, struct temp_state *t);
 /* Kinetic-energy tensor xx yy zz xy xz yz (mvv2e sum m v_a v_b, plus the
  * rotational terms for the sphere kinds), extensive, as LAMMPS's vector. */
 void temp_vector(struct gravel *g, struct temp_state *t, double out[6]);
-/* Scale the thermal part of the velocities of the atoms in groupbit by
- * factor, as LAMMPS's remove_bias_all, scale, restore_bias_all: v = (v - the
- * centre-of-mass velocity) factor + it (TEMP_COM), the uncounted components
- * (TEMP_PARTIAL) and the atoms outside the region (TEMP_REGION) unchanged,
- * v factor otherwise. Host arrays. */
+/* A temperature with a velocity bias (temp/com, temp/partial, temp/region),
+ * LAMMPS's remove_bias_all / reapply_bias_all / restore_bias_all on the host
+ * arrays over the temperature's group: remove takes the bias out (the
+ * centre-of-mass velocity subtracted; the uncounted components, the atoms
+ * outside the region: kept aside and zeroed) and returns it per atom
+ * (malloc'd); reapply zeroes what temp/partial does not count again;
+ * restore adds the bias back and frees it. */
+int temp_has_bias(const struct temp_state *t);
+double *temp_bias_remove(struct gravel *g, struct temp_state *t);
+void temp_bias_reapply(struct gravel *g, const struct temp_state *t);
+void temp_bias_restore(struct gravel *g, const struct temp_state *t, double *vb);
+/* Scale the velocities of the atoms in groupbit by factor, a bias
+ * temperature's bias removed before and restored after (LAMMPS's fix
+ * temp/rescale, velocity scale ... bias yes). Host arrays. */
 void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbit,
                         double factor);
 /* The temperature that thermo uses: thermo_modify temp ID, else thermo_temp. */

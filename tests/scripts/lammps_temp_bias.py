@@ -13,7 +13,9 @@ floor, gran/hooke/history) given a bulk velocity along x, run unchanged by
    ke is the temperature's), to 1e-9;
 3. fix temp/rescale with fix_modify temp on each: the rescaling keeps the
    bias (the centre-of-mass motion, the y component, the atoms outside the
-   region): thermo and the fix's energy to 1e-9.
+   region): thermo and the fix's energy to 1e-9;
+4. velocity create and scale with `temp ID` and `bias yes` on them (with
+   sum yes, loop local and geom): every velocity equal to lmp's to 1e-12.
 On 2 MPI ranks the three temperatures' file is byte-identical to one
 process's. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
 comparisons FAIL naming it."""
@@ -22,8 +24,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (check_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
-                  thermo_against_lmp)
+from peer import (check, check_same_on_ranks, close, dump_steps, expect_errors,  # noqa: E402
+                  falling_bed, thermo_against_lmp)
 
 HEAD = falling_bed() + """velocity all set 2.0 0.0 0.0 sum yes units box
 region mid block INF INF INF INF 1 4 units box
@@ -47,6 +49,20 @@ CASES = {
                        "thermo_style custom step temp c_tr f_r\n", 4),
 }
 TAIL = "thermo_modify format float %.15g\nthermo 100\nrun 1500\n"
+VELOCITY = {  # velocity create / scale with `temp ID` and `bias yes`, after HEAD
+    "velocity_create_temp_com_bias": "velocity all create 0.7 4411 temp tc bias yes loop geom\n",
+    "velocity_create_temp_partial_bias_sum": "velocity top create 0.4 98 temp tp bias yes "
+                                             "sum yes loop local\n",
+    "velocity_create_temp_id": "velocity all create 0.9 5 temp tc dist gaussian\n",
+    "velocity_scale_region_bias": "velocity all scale 0.25 temp tr bias yes\n",
+    "velocity_scale_temp_partial": "velocity top scale 2.0 temp tp\n",
+}
+VTAIL = """thermo_style custom step ke c_tc c_tp c_tr
+thermo_modify format float %.15g
+dump d all custom 1 v.dump id vx vy vz
+dump_modify d sort id format float %.15g
+run 0
+"""
 
 
 def compare(name, parent):
@@ -63,6 +79,14 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name in CASES:
             compare(name, tmp)
+        for name, cmd in VELOCITY.items():
+            ok, _, _, g, lm = thermo_against_lmp(name, HEAD + cmd + VTAIL, 5, 1, tmp, 1e-12,
+                                                 1e-14)
+            if ok:
+                a, b = dump_steps(os.path.join(g, "v.dump")), dump_steps(os.path.join(lm, "v.dump"))
+                bad = [i for i in a[0] if any(not close(x, y, 1e-12, 1e-14)
+                                              for x, y in zip(a[0][i], b[0][i]))]
+                check(name + "_velocities", a.keys() == b.keys() and not bad, str(bad[:5]))
         err = os.path.join(tmp, "err")
         os.mkdir(err)
         expect_errors({
@@ -71,6 +95,10 @@ def main():
             "err_partial_flag": ("compute c all temp/partial 1 2 0\n", "flags must be 0 or 1"),
             "err_region_missing": ("compute c all temp/region nowhere\n", "nowhere"),
             "err_region_args": ("compute c all temp/region\n", "expects a region ID"),
+            "err_bias_without_temp": ("velocity all create 1.0 5 bias yes\n",
+                                      "velocity bias command without temp keyword"),
+            "err_bias_plain_temp": ("compute t all temp\nvelocity all scale 1.0 temp t bias "
+                                    "yes\n", "does not compute a velocity bias"),
         }, falling_bed(), err)
 
 
