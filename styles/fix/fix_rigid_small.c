@@ -281,11 +281,12 @@ static int by_mol(const void *a, const void *b)
     return (cmp_tagv[i] > cmp_tagv[j]) - (cmp_tagv[i] < cmp_tagv[j]);
 }
 
-/* One body per molecule ID of the group's atoms (LAMMPS create_bodies). */
 /* The bodies of the group's atoms, one per value of key[i] (molecule IDs,
  * fix rigid's group index or 0 for `single`; < 0: in no body), in
- * ascending key order. */
-static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r, const int64_t *key)
+ * ascending key order (LAMMPS create_bodies). by_molecule: the keys are
+ * molecule IDs (messages name them; otherwise bodies count from 1). */
+static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r, const int64_t *key,
+                          int by_molecule)
 {
     struct atoms *a = &g->atoms;
     int n = 0;
@@ -310,8 +311,9 @@ static void create_bodies(struct gravel *g, struct fix *f, struct rigid *r, cons
             }
         }
         if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2])
-            gr_error(g, "fix %s: one or more rigid bodies are a single particle (body key %lld)",
-                     f->style->name, (long long)key[list[s]]);
+            gr_error(g, "fix %s: one or more rigid bodies are a single particle (%s %lld)",
+                     f->style->name, by_molecule ? "molecule" : "body",
+                     (long long)key[list[s]] + (by_molecule ? 0 : 1));
         int body = r->nbody;
         (void)new_body(g, r);
         for (int k = s; k < e; k++) {
@@ -365,7 +367,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         mol_compute_com(g, r->mol);
         mol_compute_inertia(g, r->mol);
     }
-    create_bodies(g, f, r, g->atoms.mol);
+    create_bodies(g, f, r, g->atoms.mol, 1);
     double rsqfar = 0;
     gr_print(g, "  %d rigid bodies with %d atoms\n", r->nbody, r->nmem);
     (void)rsqfar;
@@ -440,7 +442,7 @@ static void create_rigid(struct gravel *g, struct fix *f, int argc, char **argv)
     struct rigid *r = gr_calloc(g, 1, sizeof *r);
     f->data = r;
     r->reinit = 1;
-    create_bodies(g, f, r, key);
+    create_bodies(g, f, r, key, !strcmp(argv[0], "molecule"));
     free(key);
     for (; i < argc; i++) {
         const char *k = argv[i];
