@@ -1,4 +1,4 @@
-/* fix_addforce.c - `fix ID group addforce fx fy fz [every N]`: LAMMPS's fix
+/* fix_addforce.c - `fix ID group addforce fx fy fz [every N] [region ID]`: LAMMPS's fix
  * addforce: after the forces of the step (post_force, and at a run's
  * setup), on steps that are multiples of N (default 1), the value (a
  * number, or an equal-style v_name evaluated then) is added to the group's
@@ -7,8 +7,9 @@
  * group's unwrapped positions (those of the step it is read: with every N
  * > 1 LAMMPS keeps the last application's), in tag order; global vector (f_ID[1..3]):
  * the group's total force before the fix at its last application
- * (force_values.h). LAMMPS's `region` and `energy` keywords and atom-style
- * variables are refused. */
+ * (force_values.h). `region ID`: only the group's atoms inside the region
+ * take the force and count in the energy (LAMMPS). The `energy` keyword
+ * (an atom-style variable's energy) and atom-style variables are refused. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,7 @@
 #include "fix.h"
 #include "force_values.h"
 #include "par_sum.h"
+#include "region.h"
 
 #define WHO "fix addforce"
 
@@ -39,7 +41,8 @@ static void destroy(struct fix *f)
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 3)
-        gr_error(g, "fix addforce expects fx fy fz (each a number or v_name) [every N]");
+        gr_error(g, "fix addforce expects fx fy fz (each a number or v_name) [every N] "
+                    "[region ID]");
     struct addforce *a = gr_calloc(g, 1, sizeof *a);
     f->data = a;
     a->every = 1;
@@ -49,12 +52,14 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             a->every = arg_int(g, argv[i + 1], "every");
             if (a->every <= 0)
                 gr_error(g, "fix addforce: every must be positive, got %d", a->every);
-        } else if (!strcmp(argv[i], "region") || !strcmp(argv[i], "energy")) {
-            gr_error(g, "fix addforce: keyword %s is not supported yet%s", argv[i],
-                     argv[i][0] == 'r' ? " (define a group of the region's atoms: group ID "
-                                         "region R)" : "");
+        } else if (!strcmp(argv[i], "region")) {
+            force_values_region(g, &a->fv, argc, argv, i, WHO);
+        } else if (!strcmp(argv[i], "energy")) {
+            gr_error(g, "fix addforce: keyword energy (an atom-style variable's energy) is not "
+                        "supported yet: atom-style force variables are not");
         } else {
-            gr_error(g, "fix addforce: unknown keyword '%.64s' (expected every)", argv[i]);
+            gr_error(g, "fix addforce: unknown keyword '%.64s' (expected every, region)",
+                     argv[i]);
         }
     }
     force_values_parse(g, &a->fv, argv, 0, WHO);
@@ -75,17 +80,24 @@ static void post_force(struct gravel *g, struct fix *f)
         force_values_apply(g, f, &a->fv, 1);
 }
 
-/* -sum (fx xu + fy yu + fz zu) over the group, xu unwrapped, in tag order
- * (the host atoms are current when a scalar is read) */
+/* -sum (fx xu + fy yu + fz zu) over the group (with a region, its atoms
+ * inside it now), xu unwrapped, in tag order (the host atoms are current
+ * when a scalar is read) */
 static double scalar(struct gravel *g, struct fix *f)
 {
     const struct addforce *a = f->data;
     const struct atoms *at = &g->atoms;
     const int *ord = atoms_tag_order(g);
+    struct region *r = NULL;
+    if (a->fv.region) {
+        if (!(r = region_find(g, a->fv.region)))
+            gr_error(g, "fix %s: region %s does not exist", f->id, a->fv.region);
+        region_prematch(g, r);
+    }
     struct par_sum e = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < at->n; k++) {
         const int i = ord[k];
-        if (!(at->mask[i] & f->groupbit))
+        if (!(at->mask[i] & f->groupbit) || (r && !region_match(r, at->x + 3 * i)))
             continue;
         double u[3];
         domain_unmap(g, at->x + 3 * i, at->image + 3 * i, u);

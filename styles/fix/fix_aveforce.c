@@ -1,12 +1,13 @@
-/* fix_aveforce.c - `fix ID group aveforce fx fy fz`: LAMMPS's fix aveforce:
+/* fix_aveforce.c - `fix ID group aveforce fx fy fz [region ID]`: LAMMPS's fix aveforce:
  * after the forces of the step (post_force, and at a run's setup), each
  * given component of the force on every atom of the group becomes the
  * group's average force in it plus the value (a number, or an equal-style
  * v_name evaluated then); NULL leaves that component. The average is summed
  * over the atoms in tag order on the host (the forces before the fix are
- * read back every step: a round trip per step, n atoms x 3 values). Global
- * vector (f_ID[1..3], extensive): the group's total force before the fix.
- * LAMMPS's `region` keyword and atom-style variables are refused. */
+ * read back every step: a round trip per step, n atoms x 3 values). With
+ * `region ID`, the group's atoms inside the region at the step (LAMMPS).
+ * Global vector (f_ID[1..3], extensive): their total force before the fix.
+ * Atom-style variables are refused. */
 #include <stdlib.h>
 
 #include "device.h"
@@ -19,7 +20,6 @@
 
 struct aveforce {
     struct force_values fv;   /* the values added to the average */
-    struct force_values set;  /* what the second launch sets: the averages plus them */
     double sum[3];            /* the group's force before the fix at the last step */
 };
 
@@ -43,12 +43,11 @@ static void init(struct gravel *g, struct fix *f)
 {
     struct aveforce *a = f->data;
     force_values_init(g, f, &a->fv, WHO);
-    a->set.k = a->fv.k;
-    a->set.on = a->fv.on;
 }
 
-/* The group's total force now and its atom count, in tag order. */
-static void group_force(struct gravel *g, struct fix *f, double sum[3], double *count)
+/* The selected atoms' total force now and their count, in tag order. */
+static void group_force(struct gravel *g, struct fix *f, const struct force_values *fv,
+                        double sum[3], double *count)
 {
     struct engine *e = g->eng;
     const int n = e->a.n;
@@ -60,7 +59,7 @@ static void group_force(struct gravel *g, struct fix *f, double sum[3], double *
     struct par_sum s[4] = {{0}};
     for (int k = 0; k < n; k++) {
         const int i = ord[k];
-        if (!(mask[i] & f->groupbit))
+        if (!force_values_took(f, fv, mask, i))
             continue;
         for (int d = 0; d < 3; d++)
             par_sum_add(g, &s[d], e->tag_seen[i], o[3 * i + d]);
@@ -76,16 +75,15 @@ static void group_force(struct gravel *g, struct fix *f, double sum[3], double *
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct aveforce *a = f->data;
-    struct force_values probe = a->fv;
-    probe.on = 0; /* the first launch only keeps the forces before the fix */
-    force_values_apply(g, f, &probe, 0);
-    double count;
-    group_force(g, f, a->sum, &count);
+    force_values_prepare(g, f, &a->fv);
+    force_values_launch(g, f, &a->fv, 0, a->fv.v, 0); /* keeps the forces before the fix */
+    double count, v[3];
+    group_force(g, f, &a->fv, a->sum, &count);
     if (count == 0)
         return;
-    for (int d = 0; d < 3; d++) /* the variables' values of this step, as probe took them */
-        a->set.v[d] = a->sum[d] / count + probe.v[d];
-    force_values_apply(g, f, &a->set, 0);
+    for (int d = 0; d < 3; d++)
+        v[d] = a->sum[d] / count + a->fv.v[d];
+    force_values_launch(g, f, &a->fv, a->fv.on, v, 0);
 }
 
 static double vector(struct gravel *g, struct fix *f, int i)

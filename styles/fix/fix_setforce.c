@@ -1,10 +1,11 @@
-/* fix_setforce.c - `fix ID group setforce fx fy fz`: LAMMPS's fix setforce:
+/* fix_setforce.c - `fix ID group setforce fx fy fz [region ID]`: LAMMPS's fix setforce:
  * after the forces of the step (post_force, and at a run's setup), each
  * given component of the group's forces becomes the value (a number, or an
  * equal-style v_name evaluated every step); NULL leaves that component. The
  * global vector (f_ID[1..3], extensive) is the group's total force before
- * the fix at the last step (force_values.h). LAMMPS's `region` keyword and
- * atom-style variables are refused. */
+ * the fix at the last step (force_values.h). `region ID`: only the group's
+ * atoms inside the region at the step (LAMMPS). Atom-style variables are
+ * refused. */
 #include <stdlib.h>
 
 #include "error.h"

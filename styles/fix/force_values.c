@@ -9,6 +9,7 @@
 #include "device.h"
 #include "error.h"
 #include "par_sum.h"
+#include "region.h"
 #include "variable.h"
 
 void force_values_parse(struct gravel *g, struct force_values *fv, char **argv, int allow_null,
@@ -40,15 +41,61 @@ void force_values_create(struct gravel *g, struct fix *f, struct force_values *f
 {
     if (argc < 3)
         gr_error(g, "%s expects fx fy fz (each a number, NULL or v_name)", who);
-    if (argc > 3) {
-        if (!strcmp(argv[3], "region"))
-            gr_error(g, "%s: keyword region is not supported yet (define a group of the "
-                        "region's atoms: group ID region R)", who);
-        gr_error(g, "%s: unknown keyword '%.64s'", who, argv[3]);
+    for (int i = 3; i < argc; i += 2) {
+        if (strcmp(argv[i], "region"))
+            gr_error(g, "%s: unknown keyword '%.64s' (expected region)", who, argv[i]);
+        force_values_region(g, fv, argc, argv, i, who);
     }
     force_values_parse(g, fv, argv, 1, who);
     f->hooks = HOOK_POST_FORCE;
     f->sources[f->nsources++] = "fix_setforce.cl";
+}
+
+void force_values_region(struct gravel *g, struct force_values *fv, int argc, char **argv, int i,
+                         const char *who)
+{
+    if (i + 1 >= argc)
+        gr_error(g, "%s: keyword region needs a region ID", who);
+    if (!region_find(g, argv[i + 1]))
+        gr_error(g, "%s: region %.64s does not exist", who, argv[i + 1]);
+    free(fv->region);
+    fv->region = gr_strdup(g, argv[i + 1]);
+}
+
+/* fv->sel and its device copy: the group's atoms inside the region now
+ * (LAMMPS's prematch, then match per atom) */
+static void select_region(struct gravel *g, struct fix *f, struct force_values *fv)
+{
+    struct engine *e = g->eng;
+    const int n = e->a.n;
+    struct region *r = region_find(g, fv->region);
+    if (!r)
+        gr_error(g, "fix %s: region %s does not exist", f->id, fv->region);
+    region_prematch(g, r);
+    double *x = gr_malloc(g, 3 * (size_t)n * sizeof *x + 1);
+    cl_uint *mask = gr_malloc(g, (size_t)n * sizeof *mask + 1);
+    eng_read_positions(g, &e->a, n, x);
+    eng_read(g, e->a.mask, 0, (size_t)n * sizeof *mask, mask);
+    free(fv->sel);
+    fv->sel = gr_malloc(g, (size_t)n * sizeof *fv->sel + 1);
+    for (int i = 0; i < n; i++)
+        fv->sel[i] = (mask[i] & f->groupbit) && region_match(r, x + 3 * (size_t)i);
+    free(x);
+    free(mask);
+    if (!fv->dsel || fv->dsel_n < (size_t)n) {
+        if (fv->dsel)
+            clReleaseMemObject(fv->dsel);
+        fv->dsel_n = (size_t)n + (size_t)n / 8 + 16;
+        fv->dsel = eng_alloc(g, fv->dsel_n * sizeof(cl_uint), "fix force region atoms");
+    }
+    if (n > 0)
+        eng_write(g, fv->dsel, 0, (size_t)n * sizeof(cl_uint), fv->sel);
+}
+
+int force_values_took(const struct fix *f, const struct force_values *fv, const cl_uint *mask,
+                      int i)
+{
+    return fv->region ? (int)fv->sel[i] : (mask[i] & f->groupbit) != 0;
 }
 
 void force_values_init(struct gravel *g, struct fix *f, struct force_values *fv,
@@ -69,23 +116,36 @@ void force_values_init(struct gravel *g, struct fix *f, struct force_values *fv,
     fv->k = eng_kernel(g, "force_set_add");
 }
 
-void force_values_apply(struct gravel *g, struct fix *f, struct force_values *fv, int add)
+void force_values_prepare(struct gravel *g, struct fix *f, struct force_values *fv)
 {
     for (int d = 0; d < 3; d++)
         if (fv->var[d])
             fv->v[d] = var_compute_equal(g, fv->var[d]);
+    if (fv->region)
+        select_region(g, f, fv);
+}
+
+void force_values_launch(struct gravel *g, struct fix *f, struct force_values *fv, int on,
+                         const double v[3], int add)
+{
     struct dev_atoms *a = eng_atoms(g);
     cl_kernel k = fv->k;
     eng_arg_int(g, k, 0, a->n);
-    eng_arg_uint(g, k, 1, f->groupbit);
-    eng_arg_mem(g, k, 2, a->mask);
+    eng_arg_uint(g, k, 1, fv->region ? 1u : f->groupbit);
+    eng_arg_mem(g, k, 2, fv->region ? fv->dsel : a->mask);
     eng_arg_mem(g, k, 3, a->f);
     eng_arg_mem(g, k, 4, f->peratom);
-    eng_arg_int(g, k, 5, fv->on);
+    eng_arg_int(g, k, 5, on);
     eng_arg_int(g, k, 6, add);
     for (int d = 0; d < 3; d++)
-        eng_arg_real(g, k, 7 + d, fv->v[d]);
+        eng_arg_real(g, k, 7 + d, v[d]);
     eng_launch(g, k, (size_t)a->n);
+}
+
+void force_values_apply(struct gravel *g, struct fix *f, struct force_values *fv, int add)
+{
+    force_values_prepare(g, f, fv);
+    force_values_launch(g, f, fv, fv->on, fv->v, add);
 }
 
 double force_values_original(struct gravel *g, struct fix *f, int d)
@@ -113,4 +173,8 @@ void force_values_free(struct force_values *fv)
 {
     for (int d = 0; d < 3; d++)
         free(fv->var[d]);
+    free(fv->region);
+    free(fv->sel);
+    if (fv->dsel)
+        clReleaseMemObject(fv->dsel);
 }

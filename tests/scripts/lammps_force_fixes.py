@@ -13,7 +13,10 @@ to 1e-8 relative (the sums are in tag order here, in atom order there: the
 last digit may differ). The same deck with fix aveforce (NULL 0.0 v_push:
 the z force of every upper atom their average plus v_push) in setforce's
 place, likewise. On 2 MPI ranks the rows of both are the same to 17 digits
-as one process's. Then gravel's errors: the region keyword, an
+as one process's. The `region` keyword of all three (a region moving with
+an equal-style variable, and the static region of the upper half; atoms
+fall through both), both decks compared with lmp alike and on 2 ranks.
+Then gravel's errors: an unknown region, addforce's `energy` keyword, an
 atom-style variable, NULL in addforce, every 0. One line PASS/FAIL per case;
 without `lmp` the comparison FAILs naming it (tools/deps.sh installs the
 Debian package lammps)."""
@@ -40,6 +43,34 @@ thermo_modify format float %.10g
 thermo 100
 run 1000
 """
+
+# the region keyword: a slab moving down with v_dz and the static region top
+REGION = DECK.replace("fix sf top setforce 0.0 NULL v_push\n", """variable dz equal -0.0005*step
+region mid block INF INF INF INF 1.0 3.0 units box move NULL NULL v_dz
+fix sf all setforce NULL 0.0 v_push region mid
+""").replace("fix af bot addforce v_side 0.1 0.0\n",
+             "fix af all addforce v_side 0.1 0.0 region top\n").replace(
+    "fix a4 top addforce 0.0 0.0 0.02 every 4\n",
+    "fix a4 all addforce 0.0 0.0 0.02 every 4 region mid\n")
+REGION_AVE = REGION.replace("fix sf all setforce NULL 0.0 v_push region mid",
+                            "fix sf all aveforce NULL 0.0 v_push region mid")
+
+
+def compare(name, deck, gdir, ldir):
+    """deck in gravel and lmp: 11 thermo rows each, every value within REL or
+    1e-12 (sums that cancel to round-off: 1e-16 against 4e-18)"""
+    rc, gout = run([GRAVEL], deck, gdir)
+    g = thermo_rows(gout, 12)
+    if shutil.which("lmp") is None:
+        check(name, False, "lmp not found (apt-get install lammps)")
+        return
+    rc2, lout = run(["lmp"], deck, ldir)
+    lm = thermo_rows(lout, 12)
+    bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
+           if abs(a - b) > max(REL * abs(b), 1e-12)]
+    check(name, rc == 0 and rc2 == 0 and len(g) == 11 and len(lm) == 11 and not bad,
+          "exit %d/%d, rows %d / %d, differences %s\n%s"
+          % (rc, rc2, len(g), len(lm), bad[:3], gout[-400:]))
 
 
 def main():
@@ -73,6 +104,8 @@ def main():
             check("aveforce_matches_lammps", rc == 0 and rc2 == 0 and len(ga) == 11 and
                   len(la) == 11 and not bad, "exit %d/%d, differences %s\n%s"
                   % (rc, rc2, bad[:3], aout[-400:]))
+        compare("region_setforce_addforce_match_lammps", REGION, gdir, ldir)
+        compare("region_aveforce_matches_lammps", REGION_AVE, gdir, ldir)
 
         # on 2 MPI ranks (bin/gravel-mpi): the same rows at 17 digits as one process
         mpi = os.path.join(ROOT, "bin", "gravel-mpi")
@@ -80,7 +113,7 @@ def main():
             check("force_fixes_two_ranks", False, "mpirun or bin/gravel-mpi missing")
         else:
             same, why = True, ""
-            for deck in (DECK, ave):
+            for deck in (DECK, ave, REGION, REGION_AVE):
                 deck17 = deck.replace("%.10g", "%.17g")
                 rc1, one = run([GRAVEL], deck17, gdir)
                 rc2, two = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
@@ -91,9 +124,17 @@ def main():
             check("force_fixes_two_ranks", same, why)
 
         expect_errors({
-            "setforce_region_refused": ("fix s top setforce 0 0 0 region top\n",
-                                        "ERROR: fix: fix setforce: keyword region is not "
-                                        "supported yet"),
+            "setforce_unknown_region": ("fix s top setforce 0 0 0 region nowhere\n",
+                                        "ERROR: fix: fix setforce: region nowhere does not "
+                                        "exist"),
+            "aveforce_region_needs_id": ("fix s top aveforce 0 0 0 region\n",
+                                         "ERROR: fix: fix aveforce: keyword region needs a "
+                                         "region ID"),
+            "addforce_energy_refused": ("fix s top addforce 0 0 0 energy e\n",
+                                        "ERROR: fix: fix addforce: keyword energy"),
+            "region_deleted_before_run": ("fix s top addforce 0 0 1 region top\n"
+                                          "region top delete\nrun 1\n",
+                                          "ERROR: run: fix s: region top does not exist"),
             "addforce_atom_variable_refused": ("variable a atom z\nfix s top addforce 0 0 v_a\n"
                                                "run 1\n", "ERROR: run: fix addforce s: variable "
                                                "'a' is atom-style: not supported yet"),
