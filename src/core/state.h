@@ -21,6 +21,8 @@
 
 #define GR_MAXGROUP 32      /* groups are bits of a 32-bit per-atom mask */
 #define GR_NAMELEN 64       /* longest ID of a fix, compute, region, group, dump */
+#define HALT_SOFT 1         /* struct gravel's halt (fix halt's error soft | continue) */
+#define HALT_CONTINUE 2
 
 typedef int64_t bigint;
 
@@ -290,6 +292,9 @@ struct gravel {
     struct par *par;        /* src/parallel/par.h: the processor grid, a decomposed run */
     uint64_t seed_counter;
     int warned_ignored[16]; /* commands with no meaning here warn once */
+    int halt;               /* fix halt met its condition (LAMMPS's expired timer): the
+                             * run ends after the step; HALT_SOFT: later runs are
+                             * skipped, HALT_CONTINUE: cleared at the run's end */
     int in_run_every;       /* > 0 while `run ... every` executes its commands (clear
                              * refuses: the run goes on with the simulation) */
 };

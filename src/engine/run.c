@@ -783,11 +783,17 @@ static void run_steps(struct gravel *g, bigint nsteps, int force, int post)
         }
         restart_step(g); /* `restart N file`: written when the step is a multiple of N */
         tm.exact[TM_OUTPUT] += wall_clock() - b1;
+        if (g->halt) { /* fix halt: the run ends after this step (LAMMPS's timeout) */
+            nsteps = g->step - g->firststep;
+            break;
+        }
     }
     double t[TM_N];
     timers_total(&tm, wall_clock() - t0, t);
     double ttot = wall_clock() - t0;
     run_end(g, nsteps, ttot, t, maxov, post);
+    if (g->halt == HALT_CONTINUE) /* fix halt ... error continue: later runs go on */
+        g->halt = 0;
 }
 
 static void run_end(struct gravel *g, bigint nsteps, double ttot, const double *t,
@@ -1057,6 +1063,8 @@ void cmd_run(struct gravel *g, int argc, char **argv)
         gr_print(g, "(-check: run %lld not performed)\n", (long long)n);
         return;
     }
+    if (g->halt) /* fix halt ... error soft ended an earlier run: LAMMPS skips this one */
+        return;
     if (g->atoms.n == 0)
         gr_warn(g, "running with no atoms");
     bigint run_start = have_start ? start : -1; /* each (sub-)run's elaplong origin */
@@ -1068,7 +1076,7 @@ void cmd_run(struct gravel *g, int argc, char **argv)
         return;
     }
     bigint left = n;
-    for (int iter = 0; left > 0 || iter == 0; iter++) {
+    for (int iter = 0; (left > 0 || iter == 0) && !g->halt; iter++) {
         bigint chunk = left < nevery ? left : nevery;
         g->run_start = run_start;
         g->run_stop = run_stop;
