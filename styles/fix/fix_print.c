@@ -7,7 +7,9 @@
  * line ("# Fix print output for fix ID" unless `title`). N may be v_name,
  * an equal-style variable giving the step of the next print (LAMMPS: the
  * first one evaluated at the run's setup, each next after a print; a value
- * not after the step is an error). The group is not used. */
+ * not after the step is an error). The group is not used. On MPI ranks the
+ * string is substituted over every rank's atoms gathered (as fix ave/time's
+ * variables), printed and written by rank 0. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +20,8 @@
 #include "fix.h"
 #include "input.h"
 #include "log.h"
+#include "par.h"
+#include "thermo.h"
 #include "variable.h"
 
 #define WHO "fix print"
@@ -104,6 +108,8 @@ static void print_now(struct gravel *g, struct fix *f)
     struct print *p = f->data;
     if (g->step != p->next)
         return;
+    thermo_pre_take(g); /* several ranks: the keywords a gathered pass cannot take */
+    par_gather_begin(g); /* several ranks: every rank's atoms, as one process */
     const char *text = inp_substitute(g, p->text);
     if (p->screen)
         gr_print(g, "%s\n", text);
@@ -113,6 +119,8 @@ static void print_now(struct gravel *g, struct fix *f)
         ave_file_end(g, &p->af, WHO, f->id);
     }
     p->next = next_print(g, f, g->step);
+    par_gather_end(g);
+    thermo_pre_clear(g);
 }
 
 /* LAMMPS's setup: the first print is due at the run's first step when it is
@@ -120,9 +128,13 @@ static void print_now(struct gravel *g, struct fix *f)
 static void setup(struct gravel *g, struct fix *f)
 {
     struct print *p = f->data;
-    if (p->var)
+    if (p->var) {
+        thermo_pre_take(g);
+        par_gather_begin(g);
         p->next = next_print(g, f, g->step);
-    else
+        par_gather_end(g);
+        thermo_pre_clear(g);
+    } else
         p->next = g->step % p->every ? next_print(g, f, g->step) : g->step;
     print_now(g, f);
 }

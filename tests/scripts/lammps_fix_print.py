@@ -6,7 +6,8 @@ has three fix print: every 25 steps into a file (the step, $(ke:%.10g) and
 an atom's position, with LAMMPS's title line), every v_s steps (s =
 logfreq(10,3,10)) appended to a file with its own title and not on the
 screen, and every 40 steps on the screen only (printing ${s}); two runs. The
-files must be byte-identical and the screen lines the same. Then gravel's
+files must be byte-identical and the screen lines the same. On 2 MPI ranks (bin/gravel-mpi)
+the files and screen lines are those of one process. Then gravel's
 errors: N not positive, an unknown keyword, a variable that returns a step
 not after the current one, a file that cannot be written (/dev/full: the
 fix command stops at its title line). One line PASS/FAIL per case; without `lmp` the
@@ -18,7 +19,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, check, expect_errors, run  # noqa: E402
+from peer import GRAVEL, check, expect_errors, run, run_ranks  # noqa: E402
 
 
 HEAD = """units lj
@@ -77,6 +78,17 @@ def main():
             check("fix_print_matches_lammps", rc == 0 and gp == lp and gq == lq and
                   screen_lines(gout) == screen_lines(lout),
                   "lmp exit %d\n%s\n%s\n%s" % (rc, lp, lq, screen_lines(lout)))
+
+        mdir = os.path.join(tmp, "m")
+        os.mkdir(mdir)
+        r2 = run_ranks(2, DECK, mdir)
+        if r2 is None:
+            check("fix_print_two_ranks", False, "mpirun or bin/gravel-mpi missing")
+        else:
+            mp, mq = read(os.path.join(mdir, "p.txt")), read(os.path.join(mdir, "q.txt"))
+            check("fix_print_two_ranks", r2[0] == 0 and mp == gp and mq == gq and
+                  screen_lines(r2[1]) == screen_lines(gout),
+                  "exit %d\n%s\n%s\n%s" % (r2[0], mp, mq, r2[1][-600:]))
 
         expect_errors({
             "fix_print_n_positive": ('fix p all print 0 "x"\n',
