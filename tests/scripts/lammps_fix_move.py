@@ -16,8 +16,10 @@ positions, velocities and angular velocities agree to 1e-6 (the bed around
 them is chaotic: not compared). Then gravel alone: a run of 1000 steps
 equals 500 + write_restart + read_restart + 500 (same dumps, byte for
 byte), and reset_timestep between two runs of 500 continues the motion (the
-same positions as the two runs without it); then the errors, and the refusal on 2 MPI
-ranks. One line PASS/FAIL per case; without `lmp` the comparisons FAIL
+same positions as the two runs without it); on 2 and 3 MPI ranks
+(bin/gravel-mpi) each style's dump (positions, velocities, angular
+velocities, origins at 17 digits) is byte-identical to one process's; then
+the errors. One line PASS/FAIL per case; without `lmp` the comparisons FAIL
 naming it."""
 import os
 import shutil
@@ -25,7 +27,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, dump_steps,  # noqa: E402
+from peer import (GRAVEL, check, check_same_on_ranks, dump_steps,  # noqa: E402
                   expect_errors, falling_bed, folders, run)
 
 REL = 1e-8
@@ -145,8 +147,15 @@ def main():
                           "motion for a 2d problem"),
         }, "units lj\natom_style sphere\ndimension 2\nboundary p p p\nregion b block 0 4 0 4 "
            "-0.5 0.5\ncreate_box 1 b\ncreate_atoms 1 single 1 1 0\n", edir)
-        check_refused_on_ranks("move_two_ranks_refused", HEAD + move + "run 10\n", edir,
-                               "fix m (move)")
+        # on MPI ranks: every style byte-identical to one process
+        full = OUT.replace("%.15g", "%.17g")
+        for name, style in STYLES.items():
+            ref, = folders(tmp, "ranks_ref_" + name)
+            run([GRAVEL], HEAD + style + full + "run 1000\n", ref)
+            for np in (2, 3):
+                rdir, = folders(tmp, "ranks%d_%s" % (np, name))
+                check_same_on_ranks("move_%s_%d_ranks" % (name, np), np,
+                                    HEAD + style + full + "run 1000\n", rdir, ref, ["out.dump"])
     finally:
         shutil.rmtree(tmp)
 

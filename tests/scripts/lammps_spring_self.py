@@ -12,16 +12,17 @@ wraps every step, LAMMPS at rebuilds; the springs see unwrapped positions in
 both). gravel alone: the energy printed equals 1/2 K sum |x - x0|^2 from the
 dumped unwrapped positions and the origins fix move keeps for the same group
 (fix move with every component NULL integrating it: an independent reckoning), a run continued from a restart file at step 750
-equals the uninterrupted one, and the errors; on 2 MPI ranks the run is
-refused naming the fix. One line PASS/FAIL per case."""
+equals the uninterrupted one, and the errors; on 2 and 3 MPI ranks
+(bin/gravel-mpi) the dump (17 digits) and the thermo rows (ke, pe with the
+springs' energy, f_s) are byte-identical to one process's. One line PASS/FAIL per case."""
 import os
 import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, check_restart_continues,  # noqa: E402
-                  close, dump_steps, expect_errors, falling_bed, folders, run, thermo_rows)
+from peer import (GRAVEL, check, check_restart_continues, close, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run, run_ranks, thermo_rows)
 
 REL = 1e-8
 L = 4.0
@@ -89,8 +90,19 @@ def main():
             "spring_self_dims": ("fix s top spring/self 1 xx\n", "fix spring/self: components "
                                  "must be xyz, xy, xz, yz, x, y or z, got 'xx'"),
         }, HEAD, edir)
-        check_refused_on_ranks("spring_self_two_ranks_refused", HEAD + SPRING + "run 10\n",
-                               mdir, "fix s (spring/self)")
+        # on MPI ranks: the same dump and thermo rows, byte for byte, as one process
+        exact = DECK.replace("%.15g", "%.17g")
+        rc, one = run([GRAVEL], exact, mdir)
+        ref = open(os.path.join(mdir, "out.dump"), "rb").read() if rc == 0 else None
+        for np in (2, 3):
+            r = run_ranks(np, exact, mdir)
+            if r is None:
+                check("spring_self_%d_ranks" % np, False, "mpirun or bin/gravel-mpi missing")
+                continue
+            got = open(os.path.join(mdir, "out.dump"), "rb").read() if r[0] == 0 else None
+            check("spring_self_%d_ranks" % np, ref is not None and got == ref and
+                  thermo_rows(r[1], 4) == thermo_rows(one, 4) and len(thermo_rows(one, 4)) == 7,
+                  "exit %d: %s" % (r[0], r[1][-400:]))
     finally:
         shutil.rmtree(tmp)
 
