@@ -202,7 +202,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "momentum", "rigid/small", "multisphere", "surface/global",
                                         "surface/local", "nvt", "nvt/sphere", "deform", "npt",
                                         "npt/sphere", "nph", "nph/sphere",
-                                        "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", NULL};
+                                        "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", "indent", "temp/rescale", "damping/cundall", "add/heat", "rigid", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -221,7 +221,8 @@ int par_fix_value_global(const struct fix *f)
                                          "check/timestep/gran", "heat/gran",
                                          "heat/gran/conduction", "gravity", "freeze",
                                          /* sums in tag order (styles/fix/force_values.c) */
-                                         "setforce", "addforce", "aveforce", "spring/self",
+                                         "setforce", "addforce", "aveforce", "spring/self", "indent",
+                                         "temp/rescale", "rigid",
                                          "property/global", /* the script's values */
                                          /* their inputs are computes on ranks (ave_common.c:
                                           * fix or variable inputs refused), each sample

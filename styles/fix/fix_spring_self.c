@@ -14,7 +14,7 @@
 #include "device.h"
 #include "error.h"
 #include "fix.h"
-#include "par_sum.h"
+#include "force_values.h"
 
 struct spring_self {
     double k;
@@ -97,18 +97,7 @@ static void post_force(struct gravel *g, struct fix *f)
 /* 1/2 sum of k |d|^2 over every rank's atoms, in atom-ID order */
 static double scalar(struct gravel *g, struct fix *f)
 {
-    struct engine *e = g->eng;
-    if (!e || !f->peratom || e->a.n == 0)
-        return 0.0;
-    const int n = e->a.n;
-    const int *ord = eng_tag_order(g);
-    double *ei = gr_malloc(g, (size_t)n * sizeof *ei);
-    eng_read_reals(g, f->peratom, (size_t)n, ei);
-    struct par_sum sum = {0};
-    for (int k = 0; k < n; k++)
-        par_sum_add(g, &sum, e->tag_seen[ord[k]], ei[ord[k]]);
-    free(ei);
-    return 0.5 * par_sum_total(g, &sum);
+    return 0.5 * fix_peratom_sum(g, f, 1, 0);
 }
 
 static size_t write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)

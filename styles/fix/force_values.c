@@ -155,17 +155,19 @@ double force_values_original(struct gravel *g, struct fix *f, int d)
 
 double fix_peratom_sum(struct gravel *g, struct fix *f, int width, int col)
 {
-    if (!g->eng || !f->peratom || g->eng->a.n == 0)
+    if (!g->eng)
         return 0.0; /* no run yet: LAMMPS's zeros */
     struct engine *e = g->eng;
-    const int n = e->a.n;
-    const int *ord = eng_tag_order(g); /* reads the device tags into e->tag_seen */
-    double *r = gr_malloc(g, (size_t)width * n * sizeof *r + 1);
-    eng_read_reals(g, f->peratom, (size_t)width * n, r);
+    const int n = f->peratom ? e->a.n : 0;
     struct par_sum s = {0}; /* every rank's atoms, in tag order */
-    for (int k = 0; k < n; k++)
-        par_sum_add(g, &s, e->tag_seen[ord[k]], r[(size_t)width * ord[k] + col]);
-    free(r);
+    if (n > 0) { /* a rank without atoms still takes part in the sum */
+        const int *ord = eng_tag_order(g); /* reads the device tags into e->tag_seen */
+        double *r = gr_malloc(g, (size_t)width * n * sizeof *r);
+        eng_read_reals(g, f->peratom, (size_t)width * n, r);
+        for (int k = 0; k < n; k++)
+            par_sum_add(g, &s, e->tag_seen[ord[k]], r[(size_t)width * ord[k] + col]);
+        free(r);
+    }
     return par_sum_total(g, &s);
 }
 

@@ -10,14 +10,16 @@ Q = k (Ttarget^4 - T^4) (1e-12: pow), an equal-style variable of the step
 (exact), an atom-style variable by type (exact). overwrite yes on two
 touching spheres conducting heat (`heat area`): their temperatures follow the
 fix's heat alone (exact), where without it the conduction moves them. Then
-the errors and the refusal on MPI ranks."""
+the errors; on 2 MPI ranks (the two spheres on different ranks, touching
+and apart, constant, quartic and atom-style) the temperature dumps are
+byte-identical to one process's."""
 import math
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, dump_steps,  # noqa: E402
+from peer import (GRAVEL, check, check_same_on_ranks, dump_steps, folders,  # noqa: E402
                   expect_errors, run)
 
 HEAD = """units lj
@@ -119,9 +121,13 @@ def main():
             "err_variable": ("fix ah all add/heat constant v_nope\nrun 0\n",
                              "variable nope does not exist"),
         }, HEAD % APART, e)
-        check_refused_on_ranks("refused_on_ranks", HEAD % APART +
-                               "fix ah all add/heat constant 1.0\nrun 10\n", e,
-                               "fix ah (add/heat)")
+        for where, label in ((APART, "apart"), (TOUCHING, "touching")):
+            for name in ("constant", "quartic", "atom_variable"):
+                one, two = folders(tmp, "one_%s_%s" % (label, name), "two_%s_%s" % (label, name))
+                deck = HEAD % where + CASES[name][0] + TAIL
+                run([GRAVEL], deck, one)
+                check_same_on_ranks("%s_%s_2_ranks" % (name, label), 2, deck, two, one,
+                                    ["out.dump"])
 
 
 main()

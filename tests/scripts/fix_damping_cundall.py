@@ -18,15 +18,16 @@ against an independent statement of the rule in this file:
 4. Spin on a frictional floor (sliding): with gamma_a = 0.5 the spin's rate
    of change is 1.5 times that without (the friction torque opposes the
    spin), gamma_l = 0 leaves the translation as it was.
-5. LAMMPS's warning for a post_force fix after it; the errors; refused on MPI
-   ranks."""
+5. LAMMPS's warning for a post_force fix after it; the errors.
+6. On 2 MPI ranks the falling bed of peer.py damped (with `scale type`)
+   writes the same dump as one process, byte for byte."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, dump_steps,  # noqa: E402
-                  expect_errors, run)
+from peer import (GRAVEL, check, check_same_on_ranks, dump_steps,  # noqa: E402
+                  expect_errors, falling_bed, folders, run)
 
 HEAD = """units lj
 atom_style sphere
@@ -157,8 +158,12 @@ def errors(tmp):
         "err_not_atom_var": ("variable s equal 1\nfix c all damping/cundall 0.3 0.2 scale v_s\n",
                              "atom-style"),
     }, HEAD, tmp)
-    check_refused_on_ranks("refused_on_ranks", HEAD + "fix c all damping/cundall 0.3 0.2\nrun 10\n",
-                           tmp, "fix c (damping/cundall)")
+    one, two = folders(tmp, "one", "two")
+    bed = falling_bed(ntypes=2, extra="set group top type 2\n") + \
+        "fix c all damping/cundall 0.3 0.2 scale 2 1.5\n" + \
+        DUMP.replace("id z vz", "id x y z vx vy vz omegax")
+    run([GRAVEL], bed, one)
+    check_same_on_ranks("falling_bed_2_ranks", 2, bed, two, one, ["out.dump"])
 
 
 def main():

@@ -10,14 +10,17 @@ cylinder along y with `units box` and a growing radius; a plane from above
 (`plane z ... hi`); a sphere with `side in` holding the bed inside it. thermo
 prints ke, the indenter's energy f_ID and force f_ID[1..3], and pe with
 `fix_modify energy yes`: equal to 1e-9 relative (1e-12 absolute) every 100
-steps over 1500. Then gravel's errors. One line PASS/FAIL per case;
+steps over 1500. On 2 MPI ranks every case's rows equal one process's to
+17 digits (the plane presses every atom into one rank's half: a rank
+without atoms still takes part in the sums). Then gravel's errors. One line PASS/FAIL per case;
 without `lmp` the comparisons FAIL naming it."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import check, expect_errors, falling_bed, thermo_against_lmp  # noqa: E402
+from peer import (check, check_thermo_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
+                  thermo_against_lmp)
 
 CASES = {
     "sphere_moving_periodic": "variable zc equal 7.0-0.003*step\n"
@@ -47,6 +50,11 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name in CASES:
             compare(name, tmp)
+        ranks = os.path.join(tmp, "ranks")
+        os.mkdir(ranks)
+        for name, fix in CASES.items():
+            check_thermo_same_on_ranks("indent_%s_2_ranks" % name, 2, falling_bed() + fix +
+                                       TAIL.replace("%.15g", "%.17g"), 7, ranks)
         err = os.path.join(tmp, "err")
         os.mkdir(err)
         expect_errors({

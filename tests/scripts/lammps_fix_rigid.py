@@ -9,14 +9,15 @@ atoms as the fix's group), `group 2 ...` (two clumps by group), and
 `molecule` with `force`/`torque` flags holding components of some bodies.
 thermo prints ke, the fix's scalar (the bodies' temperature) and elements
 of its array (xcm, vcm, fcm, torque, image of two bodies): equal to 1e-8
-relative (1e-10 absolute) every 250 steps. Then the errors. One line
+relative (1e-10 absolute) every 250 steps; on 2 MPI ranks every case's rows
+equal one process's to 17 digits. Then the errors. One line
 PASS/FAIL per case; without `lmp` the comparisons FAIL naming it."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import expect_errors, thermo_against_lmp  # noqa: E402
+from peer import check_thermo_same_on_ranks, expect_errors, thermo_against_lmp  # noqa: E402
 
 HEAD = """units lj
 atom_style sphere
@@ -79,6 +80,10 @@ def compare(name, parent):
     fix, more = CASES[name]
     deck = HEAD + fix + TAIL.format(more=more)
     thermo_against_lmp("rigid_" + name, deck, 7 + len(more.split()), 13, parent, 1e-8, 1e-10)
+    ranks = os.path.join(parent, "ranks_" + name)
+    os.mkdir(ranks)
+    check_thermo_same_on_ranks("rigid_%s_2_ranks" % name, 2, deck.replace("%.15g", "%.17g"),
+                               7 + len(more.split()), ranks)
 
 
 def main():

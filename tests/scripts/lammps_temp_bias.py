@@ -17,15 +17,16 @@ floor, gran/hooke/history) given a bulk velocity along x, run unchanged by
 4. velocity create and scale with `temp ID` and `bias yes` on them (with
    sum yes, loop local and geom): every velocity equal to lmp's to 1e-12.
 On 2 MPI ranks the three temperatures' file is byte-identical to one
-process's. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
+process's, and each temp/rescale case's thermo rows equal one process's to
+17 digits. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
 comparisons FAIL naming it."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (check, check_same_on_ranks, close, dump_steps, expect_errors,  # noqa: E402
-                  falling_bed, thermo_against_lmp)
+from peer import (check, check_same_on_ranks, check_thermo_same_on_ranks, close,  # noqa: E402
+                  dump_steps, expect_errors, falling_bed, thermo_against_lmp)
 
 HEAD = falling_bed() + """velocity all set 2.0 0.0 0.0 sum yes units box
 region mid block INF INF INF INF 1 4 units box
@@ -73,6 +74,11 @@ def compare(name, parent):
         ranks = os.path.join(parent, "ranks")
         os.mkdir(ranks)
         check_same_on_ranks("temp_bias_same_on_2_ranks", 2, deck, ranks, g, ["t.txt"])
+    if name.startswith("rescale"):
+        ranks = os.path.join(parent, "ranks_" + name)
+        os.mkdir(ranks)
+        check_thermo_same_on_ranks("temp_bias_%s_2_ranks" % name, 2,
+                                   deck.replace("%.15g", "%.17g"), ncol, ranks)
 
 
 def main():

@@ -144,6 +144,19 @@ def check_same_on_ranks(name, np, deck, cwd, ref_dir, files):
     check(name, same, "exit %d: %s" % (r[0], r[1][-400:]))
 
 
+def check_thermo_same_on_ranks(name, np, deck, ncol, cwd):
+    """case name: deck's thermo rows (ncol columns; write the deck's floats with
+    %.17g) on np ranks equal those of one process, value for value"""
+    rc, one = run([GRAVEL], deck, cwd)
+    r = run_ranks(np, deck, cwd)
+    if r is None:
+        check(name, False, "mpirun or bin/gravel-mpi missing")
+        return
+    a, b = thermo_rows(one, ncol), thermo_rows(r[1], ncol)
+    check(name, rc == 0 and r[0] == 0 and len(a) > 1 and a == b,
+          "exit %d/%d, rows %d/%d: %s" % (rc, r[0], len(a), len(b), r[1][-400:]))
+
+
 def check_restart_continues(name, parent, deck, resumed, dump, n):
     """case name: `deck`, then `dump % (2 n)` and a run of 2 n steps, writes the same
     dump at step 2 n as `deck`, a run of n, write_restart, then in a new input
