@@ -202,7 +202,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "momentum", "rigid/small", "multisphere", "surface/global",
                                         "surface/local", "nvt", "nvt/sphere", "deform", "npt",
                                         "npt/sphere", "nph", "nph/sphere",
-                                        "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", "indent", "temp/rescale", "damping/cundall", "add/heat", "rigid", NULL};
+                                        "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", "indent", "temp/rescale", "damping/cundall", "add/heat", "rigid", "store/state", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

@@ -8,7 +8,9 @@
  * yes` subtracts the group's centre of mass (unwrapped, group.h) from the
  * unwrapped positions xu yu zu (LAMMPS's: not from x y z). Output: a per-atom vector (one input) or
  * array, 0 for atoms outside the group; values kept by atom ID, so they
- * follow the atoms through gravel's re-sorts, and in restart files. */
+ * follow the atoms through gravel's re-sorts, and in restart files. On MPI
+ * ranks every rank stores every atom's values (taken on the ranks' atoms
+ * gathered, as fix ave/atom's samples), so an atom finds them on any rank. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,8 +20,10 @@
 #include "error.h"
 #include "fix.h"
 #include "group.h"
+#include "par.h"
 #include "peratom_input.h"
 #include "ref.h"
+#include "thermo.h"
 
 #define WHO "fix store/state"
 
@@ -87,6 +91,17 @@ static void store(struct gravel *g, struct fix *f, int attrs, int cfv)
     }
 }
 
+/* store() during a run: on every rank's atoms gathered (several ranks) */
+static void store_in_run(struct gravel *g, struct fix *f, int attrs, int cfv)
+{
+    run_sync_host(g);
+    thermo_pre_take(g); /* several ranks: the keywords a gathered pass cannot take */
+    par_gather_begin(g);
+    store(g, f, attrs, cfv);
+    par_gather_end(g);
+    thermo_pre_clear(g);
+}
+
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 2)
@@ -142,8 +157,7 @@ static void setup(struct gravel *g, struct fix *f)
     if (!s->first)
         return;
     s->first = 0;
-    run_sync_host(g);
-    store(g, f, 0, 1);
+    store_in_run(g, f, 0, 1);
 }
 
 static void end_of_step(struct gravel *g, struct fix *f)
@@ -151,8 +165,7 @@ static void end_of_step(struct gravel *g, struct fix *f)
     struct store_state *s = f->data;
     if (g->step % s->nevery)
         return;
-    run_sync_host(g);
-    store(g, f, 1, 1);
+    store_in_run(g, f, 1, 1);
 }
 
 static const double *peratom_values(struct gravel *g, struct fix *f)

@@ -10,7 +10,8 @@ yes`), fz, compute ke/atom and an atom-style variable on the upper half,
 and an atom-style variable z - f_s0[3] (the fall since the start) reading
 the first. A dump every 300 steps of them agrees with lmp's to 1e-8 of each
 column's largest value. A run continued from a restart file at step 750
-equals the uninterrupted one. Then the errors. One line PASS/FAIL per case;
+equals the uninterrupted one. On 2 and 3 MPI ranks (bin/gravel-mpi) the dump
+(17 digits) is byte-identical to one process's. Then the errors. One line PASS/FAIL per case;
 without `lmp` the comparison FAILs naming it."""
 import os
 import shutil
@@ -18,8 +19,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_restart_continues, dump_steps,  # noqa: E402
-                  expect_errors, falling_bed, folders, run)
+from peer import (GRAVEL, check, check_restart_continues, check_same_on_ranks,  # noqa: E402
+                  dump_steps, expect_errors, falling_bed, folders, run)
 
 REL = 1e-8
 HEAD = falling_bed()
@@ -63,6 +64,13 @@ def main():
         check_restart_continues("store_state_restart_continues", tmp, HEAD + FIXES,
                                 HEAD[HEAD.index("fix 1"):] + FIXES,
                                 DUMP.replace("300", "%d").replace("%.15g", "%%.15g"), 750)
+        # on MPI ranks: every atom's stored values on every rank
+        exact = DECK.replace("%.15g", "%.17g")
+        one, = folders(tmp, "ranks_one")
+        run([GRAVEL], exact, one)
+        for np in (2, 3):
+            d, = folders(tmp, "ranks%d" % np)
+            check_same_on_ranks("store_state_%d_ranks" % np, np, exact, d, one, ["out.dump"])
         expect_errors({
             "store_state_args": ("fix s all store/state 0\n", "ERROR: fix: fix store/state needs N "
                                  "and at least one input"),
