@@ -21,6 +21,9 @@ particles, as many as asked, inside their region and without overlaps.
    later insertion steps add nothing to a full region; insert/rate/region with `mass M`
    stops at int(M / E[mass]) particles; overlapcheck no places the whole count.
 3. Bad commands stop with LIGGGHTS's message and the script line.
+4. mixed and extra (the numberbased and massbased distributions) on 2 MPI
+   ranks (bin/gravel-mpi): every dump frame's lines (sorted: the dump is not)
+   and the log's thermo rows identical to one process's.
 
 One PASS/FAIL line per case."""
 import gzip
@@ -111,6 +114,29 @@ dump d all custom 40 dump.out id type x y z radius mass
 dump_modify d format line "%d %d %.17g %.17g %.17g %.17g %.17g"
 run 40
 """
+
+
+def check_ranks(deck):
+    """deck's body on 2 MPI ranks: dump.out and the thermo rows as one process's"""
+    name = f"liggghts_insert_{deck}_2_ranks"
+    mpi = os.path.join(ROOT, "bin", "gravel-mpi")
+    if not os.path.exists(mpi) or subprocess.run(["which", "mpirun"],
+                                                 capture_output=True).returncode:
+        return report(False, name, "mpirun or bin/gravel-mpi missing")
+    text = HEAD + open(os.path.join(REF, deck + ".body")).read().replace(
+        'dump_modify d format "', 'dump_modify d format line "')
+    out = []
+    for cmd in ([GRAVEL], ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", mpi]):
+        with tempfile.TemporaryDirectory() as tmp:
+            open(os.path.join(tmp, "in.deck"), "w").write(text)
+            r = subprocess.run(cmd + ["-in", "in.deck", "-log", "log.gravel"], cwd=tmp,
+                               capture_output=True, text=True, timeout=300)
+            if r.returncode != 0:
+                return report(False, name, (r.stdout + r.stderr)[-800:])
+            frames = [sorted(f.split("\n")) for f in
+                      open(os.path.join(tmp, "dump.out")).read().split("ITEM: TIMESTEP\n")]
+            out.append((frames, thermo(open(os.path.join(tmp, "log.gravel")).read())))
+    report(out[0] == out[1] and len(out[0][1]) > 1, name)
 
 
 def check_props():
@@ -269,6 +295,8 @@ def main():
     check_props()
     check_no_overlapcheck()
     check_errors()
+    check_ranks("mixed")
+    check_ranks("extra")
     return 1 if FAILURES else 0
 
 
