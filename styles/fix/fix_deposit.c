@@ -15,17 +15,21 @@
  * process deposits LAMMPS's atoms. Lengths and velocities are in lattice
  * units unless `units box`. Global scalar: the atoms deposited. Restart
  * files keep the stream, the count and the schedule. Not supported: `mol`,
- * `molfrac`, `rigid`, `shake`, `orient`, `var`, `set`. */
+ * `molfrac`, `rigid`, `shake`, `orient`, `var`, `set`. On MPI ranks every
+ * rank draws every atom and its brick's owner keeps it; `near`, `global`
+ * and `local` look at every rank's atoms. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "args.h"
 #include "atoms.h"
+#include "comm.h"
 #include "domain.h"
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "par.h"
 #include "par_sum.h"
 #include "random.h"
 #include "region.h"
@@ -202,7 +206,11 @@ static double highest(struct gravel *g, const struct deposit *d, const double c[
         if (x[up] > top)
             top = x[up];
     }
-    return top; /* one process (the fix is refused on several ranks) */
+    if (par_on(g)) { /* several ranks: the highest of every rank's atoms */
+        double lo = top;
+        comm_minmax(&lo, &top, 1);
+    }
+    return top;
 }
 
 /* nearer than `near` to an atom */
@@ -215,7 +223,7 @@ static int crowded(struct gravel *g, const struct deposit *d, const double c[3])
         domain_minimum_image(g, del);
         flag = del[0] * del[0] + del[1] * del[1] + del[2] * del[2] < d->nearsq;
     }
-    return flag;
+    return par_on(g) ? comm_max_int(flag) : flag; /* several ranks: any rank's atom */
 }
 
 static void pre_exchange(struct gravel *g, struct fix *f)

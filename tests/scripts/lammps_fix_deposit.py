@@ -12,15 +12,18 @@ hi delta` with `rate`, `target` and `id next`; `gaussian` in box units;
 two runs in a row (the schedule continues); `attempt 1` in a crowded
 region (fewer deposits, LAMMPS's warning). A restart written mid-way and
 read back continues to the same dump; the fix's scalar (today's LAMMPS;
-lmp 2021 has none) counts the deposits. Then the errors. One line PASS/FAIL
+lmp 2021 has none) counts the deposits. On 2 and 3 MPI ranks
+(bin/gravel-mpi) every case's end dump is byte-identical to one process's
+(each rank draws every atom; its brick's owner keeps it; `near`, `global`
+and `local` look at every rank's atoms). Then the errors. One line PASS/FAIL
 per case; without `lmp` the comparisons FAIL naming it."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_restart_continues, close, dump_steps,  # noqa: E402
-                  expect_errors, run, thermo_against_lmp)
+from peer import (GRAVEL, check, check_restart_continues, check_same_on_ranks,  # noqa: E402
+                  close, dump_steps, expect_errors, folders, run, thermo_against_lmp)
 
 HEAD = """units lj
 atom_style sphere
@@ -82,6 +85,14 @@ def main():
         for name, fix in CASES.items():
             compare(name, HEAD + fix + TAIL, 11 + 1, tmp)
         compare("two_runs", TWO_RUNS, 14, tmp)
+        for name, fix in CASES.items():  # on MPI ranks: the same atoms, byte for byte
+            deck = (HEAD + fix + TAIL).replace("%.15g", "%.17g")
+            one, = folders(tmp, "one_" + name)
+            run([GRAVEL], deck, one)
+            for np in (2, 3):
+                d, = folders(tmp, "np%d_%s" % (np, name))
+                check_same_on_ranks("deposit_%s_%d_ranks" % (name, np), np, deck, d, one,
+                                    ["end.dump"])
         check_restart_continues(
             "deposit_restart", tmp,
             HEAD + "fix d all deposit 30 1 50 12345 region dep near 1.0 vz -1 -0.5\n",
