@@ -203,7 +203,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "surface/local", "nvt", "nvt/sphere", "deform", "npt",
                                         "npt/sphere", "nph", "nph/sphere",
                                         "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", "indent", "temp/rescale", "damping/cundall", "add/heat", "rigid", "store/state", "particledistribution/discrete/numberbased",
-                                        "particledistribution/discrete/massbased", "deposit", NULL};
+                                        "particledistribution/discrete/massbased", "deposit", "langevin", NULL};
 
 static int listed(const char *const *list, const char *name)
 {

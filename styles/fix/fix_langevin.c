@@ -12,8 +12,11 @@
  * one process when its atoms keep their creation order (`atom_modify sort
  * 0 0.0`); with LAMMPS's default spatial sorting the stream meets the atoms
  * in another order, the same statistics. The forces are added on the
- * device (kernels/fix_langevin.cl). Not yet: tally yes, gjf, angmom (no
- * ellipsoids here), an atom-style target, fix_modify temp. */
+ * device (kernels/fix_langevin.cl). On MPI ranks every rank draws the
+ * whole stream and takes its atoms' numbers by their place in ID order, so
+ * the run is one process's (LAMMPS's ranks draw from streams of their
+ * own). Not yet: tally yes, gjf, angmom (no ellipsoids here), an
+ * atom-style target, fix_modify temp. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +26,8 @@
 #include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "par.h"
+#include "par_sum.h"
 #include "random.h"
 #include "temperature.h"
 #include "variable.h"
@@ -149,6 +154,51 @@ static double target(struct gravel *g, struct langevin *l)
     return t;
 }
 
+static int by_tag(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The group's atoms of every rank in atom-ID order, as rows (tag, finite
+ * sphere: 1 or 0) at *rows; returns their count. On one rank the local
+ * atoms (ord: the device atoms by ID). */
+static int group_by_tag(struct gravel *g, const int *ord, int n, const unsigned *mask,
+                        const double *rad, unsigned groupbit, double **rows)
+{
+    struct engine *e = g->eng;
+    double *r = gr_malloc(g, 2 * ((size_t)n + 1) * sizeof *r);
+    int ng = 0;
+    for (int q = 0; q < n; q++) {
+        const int i = ord[q];
+        if (!(mask[i] & groupbit))
+            continue;
+        r[2 * ng] = (double)e->tag_seen[i];
+        r[2 * ng + 1] = rad[i] > 0.0;
+        ng++;
+    }
+    if (par_on(g)) { /* several ranks: every rank's rows, then in ID order */
+        ng = par_gather_rows(g, &r, ng, 2);
+        qsort(r, (size_t)ng, 2 * sizeof *r, by_tag);
+    }
+    *rows = r;
+    return ng;
+}
+
+/* the row of tag t in rows (ng of them, ascending tags) */
+static int row_of(const double *rows, int ng, double t)
+{
+    int lo = 0, hi = ng - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (rows[2 * mid] < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 static void post_force(struct gravel *g, struct fix *f)
 {
     struct langevin *l = f->data;
@@ -169,33 +219,43 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_read_reals(g, a->radius, (size_t)n, rad);
     const double c2 = sqrt(24.0 * boltz / l->t_period / dt), c2r = sqrt(l->omega_c2 * boltz /
                                                                          l->t_period / dt);
-    double fsum[3] = {0, 0, 0};
-    long long count = 0;
-    for (int q = 0; q < n; q++) { /* translation: three draws per atom of the group */
+    /* The stream, one process's: three draws per group atom in ID order,
+     * then three per finite sphere of the group; every rank draws them all
+     * and takes its atoms' (row: the atom's place, spin: its sphere's). */
+    double *rows;
+    const int ng = group_by_tag(g, ord, n, mask, rad, f->groupbit, &rows);
+    int *spin = gr_malloc(g, ((size_t)ng + 1) * sizeof *spin), ns = 0;
+    for (int k = 0; k < ng; k++)
+        spin[k] = l->oflag && rows[2 * k + 1] != 0.0 ? ns++ : -1;
+    double *u = gr_malloc(g, 3 * ((size_t)ng + ns + 1) * sizeof *u);
+    for (int k = 0; k < 3 * (ng + ns); k++)
+        u[k] = rng_mars_uniform(&l->rng);
+    struct par_sum fs[3] = {{0}}; /* the mean random force, summed in ID order */
+    for (int q = 0; q < n; q++) {
         const int i = ord[q];
         if (!(mask[i] & f->groupbit))
             continue;
+        const int k = row_of(rows, ng, (double)e->tag_seen[i]);
         double gamma2 = sqrt(m[i]) * c2;
         gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
         for (int d = 0; d < 3; d++) {
-            fran[6 * (size_t)i + d] = gamma2 * (rng_mars_uniform(&l->rng) - 0.5);
-            fsum[d] += fran[6 * (size_t)i + d];
+            fran[6 * (size_t)i + d] = gamma2 * (u[3 * k + d] - 0.5);
+            par_sum_add(g, &fs[d], e->tag_seen[i], fran[6 * (size_t)i + d]);
         }
-        count++;
-    }
-    for (int q = 0; l->oflag && q < n; q++) { /* then the spins of finite spheres */
-        const int i = ord[q];
-        if (!(mask[i] & f->groupbit) || !(rad[i] > 0.0))
+        if (spin[k] < 0)
             continue;
         const double inertia = 0.4 * rad[i] * rad[i] * m[i];
-        double gamma2 = sqrt(inertia) * c2r;
-        gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
+        double gamma2r = sqrt(inertia) * c2r;
+        gamma2r *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
         for (int d = 0; d < 3; d++)
-            fran[6 * (size_t)i + 3 + d] = gamma2 * (rng_mars_uniform(&l->rng) - 0.5);
+            fran[6 * (size_t)i + 3 + d] = gamma2r * (u[3 * (ng + spin[k]) + d] - 0.5);
     }
-    if (count > 0)
-        for (int d = 0; d < 3; d++)
-            fsum[d] /= (double)count;
+    double fsum[3];
+    for (int d = 0; d < 3; d++)
+        fsum[d] = par_sum_total(g, &fs[d]) / (ng > 0 ? (double)ng : 1.0);
+    free(rows);
+    free(spin);
+    free(u);
     if (!l->dfran || l->dfran_n < (size_t)n) {
         if (l->dfran)
             clReleaseMemObject(l->dfran);

@@ -12,15 +12,17 @@
    T = 1.5 (damp 0.1): the temperature averaged over the second half of the
    run is 1.5 within 3 %, and with `omega yes` the rotational temperature
    too (equipartition).
-3. The errors; refused on MPI ranks. One line PASS/FAIL per case; without
+3. On 2 and 3 MPI ranks (bin/gravel-mpi) every case of 1. prints the rows
+   of one process to 17 digits (every rank draws the whole stream).
+4. The errors. One line PASS/FAIL per case; without
    `lmp` the comparisons FAIL naming it."""
 import os
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_refused_on_ranks, expect_errors, run,  # noqa: E402
-                  thermo_against_lmp, thermo_rows)
+from peer import (GRAVEL, check, check_thermo_same_on_ranks, expect_errors,  # noqa: E402
+                  run, thermo_against_lmp, thermo_rows)
 
 GAS = """units lj
 atom_style sphere
@@ -110,8 +112,10 @@ def main():
             "err_atom_target": ("variable t atom 1.0\nfix lg all langevin v_t 1.0 0.5 5\n"
                                 "run 0\n", "atom-style targets: not yet"),
         }, GAS, e)
-        check_refused_on_ranks("refused_on_ranks", GAS + "fix lg all langevin 1.0 1.0 0.5 5\n"
-                               "run 10\n", e, "fix lg (langevin)")
+        for name, fix in CASES.items():
+            for np in (2, 3):
+                check_thermo_same_on_ranks("langevin_%s_%d_ranks" % (name, np), np,
+                                           (GAS + fix + TAIL).replace("%.15g", "%.17g"), 3, e)
 
 
 main()
