@@ -58,6 +58,14 @@ int par_gather_rows(struct gravel *g, double **rows, int n, int width)
     return (int)(bytes / w);
 }
 
+int64_t par_max_atom_tag(struct gravel *g)
+{
+    int64_t m = 0;
+    for (int i = 0; i < g->atoms.n; i++)
+        m = g->atoms.tag[i] > m ? g->atoms.tag[i] : m;
+    return par_max_tag(g, m);
+}
+
 int64_t par_max_tag(struct gravel *g, int64_t mine)
 {
     if (!par_on(g))

@@ -16,6 +16,8 @@
 int par_owns(struct gravel *g, const double x[3]);
 int par_gather_rows(struct gravel *g, double **rows, int n, int width);
 int64_t par_max_tag(struct gravel *g, int64_t mine);
+/* The largest atom ID of every rank's host atoms (0: none). Collective. */
+int64_t par_max_atom_tag(struct gravel *g);
 
 /* A sum over the atoms of every rank in one process's order: terms added
  * with ascending keys (a tag, or 2 tag + k for several terms per atom) give

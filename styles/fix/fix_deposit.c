@@ -47,15 +47,6 @@ struct deposit {
     struct rng_park rng;
 };
 
-static int64_t max_tag(struct gravel *g)
-{
-    int64_t m = 0;
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.tag[i] > m)
-            m = g->atoms.tag[i];
-    return par_max_tag(g, m);
-}
-
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     if (argc < 4)
@@ -165,7 +156,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     d->sigma *= s[0];
     if (d->idnext)
-        d->maxtag = max_tag(g);
+        d->maxtag = par_max_atom_tag(g);
     rng_park_init(&d->rng, d->seed);
     for (int k = 0; k < 30; k++) /* LAMMPS: warm up against consecutive seeds */
         rng_park_uniform(&d->rng);
@@ -236,7 +227,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     const struct region *r = region_get(g, d->region);
     const int up = g->dom.dimension == 2 ? 1 : 2, nold = a->n;
     const double offset = d->rateflag ? (double)(g->step - d->nfirst) * g->dt * d->rate : 0.0;
-    const int64_t maxtag = d->idnext ? d->maxtag : max_tag(g);
+    const int64_t maxtag = d->idnext ? d->maxtag : par_max_atom_tag(g);
     int success = 0;
     for (int attempt = 0; attempt < d->maxattempt && !success; attempt++) {
         double c[3];

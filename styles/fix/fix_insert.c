@@ -786,15 +786,6 @@ static void add_clump(struct gravel *g, struct fix *f, const struct ins_particle
     rigid_small_hold(ms, body, c->fflag, c->tflag);
 }
 
-/* The largest atom ID of every rank. */
-static int64_t max_tag(struct gravel *g)
-{
-    int64_t m = 0;
-    for (int i = 0; i < g->atoms.n; i++)
-        m = g->atoms.tag[i] > m ? g->atoms.tag[i] : m;
-    return par_max_tag(g, m);
-}
-
 /* The distribution and its templates again by ID: they may have been
  * unfixed or replaced since. */
 static void relink(struct gravel *g, struct insert *in)
@@ -906,7 +897,7 @@ void insert_pre_exchange(struct gravel *g, struct fix *f)
     int placed = place(g, in, n, vel);
     struct atoms *a = &g->atoms;
     int nold = a->n;
-    int64_t tag = max_tag(g);
+    int64_t tag = par_max_atom_tag(g);
     in->tag_first = tag + 1;
     in->nplaced = placed;
     double mass_now = 0;

@@ -231,16 +231,6 @@ static int64_t max_mol(struct gravel *g)
     return par_max_tag(g, m);
 }
 
-/* The largest atom ID of every rank. */
-static int64_t max_tag(struct gravel *g)
-{
-    int64_t m = 0;
-    for (int i = 0; i < g->atoms.n; i++)
-        if (g->atoms.tag[i] > m)
-            m = g->atoms.tag[i];
-    return par_max_tag(g, m);
-}
-
 /* The first fix whose style starts with "gravity" (LAMMPS ^gravity). */
 static struct fix *find_gravity(struct gravel *g)
 {
@@ -527,7 +517,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                  reg->id, reg->style->name);
     }
     if (p->idnext) {
-        p->maxtag = max_tag(g);
+        p->maxtag = par_max_atom_tag(g);
         p->maxmol = max_mol(g);
     }
     rng_park_init(&p->rng, p->seed);
@@ -692,7 +682,7 @@ static void pre_exchange_mol(struct gravel *g, struct fix *f)
     struct atoms *a = &g->atoms;
     const struct domain *d = &g->dom;
     int dim = d->dimension, nold = a->n, natom = mol->natoms;
-    int64_t maxtag = p->idnext ? p->maxtag : max_tag(g);
+    int64_t maxtag = p->idnext ? p->maxtag : par_max_atom_tag(g);
     int64_t maxmol = p->idnext ? p->maxmol : max_mol(g);
     int nnew = p->nper;
     if (p->ninserted + nnew > p->ninsert)
@@ -826,7 +816,7 @@ static void pre_exchange(struct gravel *g, struct fix *f)
     struct atoms *a = &g->atoms;
     const struct domain *d = &g->dom;
     int dim = d->dimension, nold = a->n;
-    int64_t maxtag = p->idnext ? p->maxtag : max_tag(g);
+    int64_t maxtag = p->idnext ? p->maxtag : par_max_atom_tag(g);
     int nnew = p->nper;
     if (p->ninserted + nnew > p->ninsert)
         nnew = p->ninsert - p->ninserted;
