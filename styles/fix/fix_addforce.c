@@ -1,15 +1,18 @@
-/* fix_addforce.c - `fix ID group addforce fx fy fz [every N] [region ID]`: LAMMPS's fix
- * addforce: after the forces of the step (post_force, and at a run's
- * setup), on steps that are multiples of N (default 1), the value (a
- * number, or an equal-style v_name evaluated then) is added to the group's
- * forces. Global scalar (f_ID, extensive; `fix_modify ID energy yes` adds
- * it to pe): the potential energy -sum (fx xu + fy yu + fz zu) over the
- * group's unwrapped positions (those of the step it is read: with every N
- * > 1 LAMMPS keeps the last application's), in tag order; global vector (f_ID[1..3]):
- * the group's total force before the fix at its last application
- * (force_values.h). `region ID`: only the group's atoms inside the region
- * take the force and count in the energy (LAMMPS). The `energy` keyword
- * (an atom-style variable's energy) and atom-style variables are refused. */
+/* fix_addforce.c - `fix ID group addforce fx fy fz [every N] [region ID]
+ * [energy v_name]`: LAMMPS's fix addforce: after the forces of the step
+ * (post_force, and at a run's setup), on steps that are multiples of N
+ * (default 1), the value (a number, an equal-style v_name evaluated then,
+ * or an atom-style v_name: each atom's own) is added to the group's forces.
+ * Global scalar (f_ID, extensive; `fix_modify ID energy yes` adds it to
+ * pe): the potential energy -sum (fx xu + fy yu + fz zu) over the group's
+ * unwrapped positions, in tag order: with numbers and equal-style values
+ * those of the step it is read (with every N > 1 LAMMPS keeps the last
+ * application's); with an atom-style component, or with `energy v_name`
+ * (an atom-style variable: each atom's energy, summed), those of the last
+ * application, as LAMMPS. Global vector (f_ID[1..3]): the group's total
+ * force before the fix at its last application (force_values.h). `region
+ * ID`: only the group's atoms inside the region take the force and count in
+ * the energy (LAMMPS). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -46,6 +49,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     struct addforce *a = gr_calloc(g, 1, sizeof *a);
     f->data = a;
     a->every = 1;
+    a->fv.allow_atom = 1;
     for (int i = 3; i < argc; i += 2) {
         if (!strcmp(argv[i], "every")) {
             arg_need(g, argc, i, 1, "every");
@@ -55,10 +59,14 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         } else if (!strcmp(argv[i], "region")) {
             force_values_region(g, &a->fv, argc, argv, i, WHO);
         } else if (!strcmp(argv[i], "energy")) {
-            gr_error(g, "fix addforce: keyword energy (an atom-style variable's energy) is not "
-                        "supported yet: atom-style force variables are not");
+            arg_need(g, argc, i, 1, "energy");
+            const char *e = argv[i + 1];
+            if (strncmp(e, "v_", 2) || !e[2] || strlen(e + 2) >= GR_NAMELEN)
+                gr_error(g, "fix addforce: energy must be v_name, got '%.64s'", e);
+            free(a->fv.evar);
+            a->fv.evar = gr_strdup(g, e + 2);
         } else {
-            gr_error(g, "fix addforce: unknown keyword '%.64s' (expected every, region)",
+            gr_error(g, "fix addforce: unknown keyword '%.64s' (expected every, region, energy)",
                      argv[i]);
         }
     }
@@ -86,6 +94,8 @@ static void post_force(struct gravel *g, struct fix *f)
 static double scalar(struct gravel *g, struct fix *f)
 {
     const struct addforce *a = f->data;
+    if (force_values_peratom(&a->fv)) /* the last application's, as LAMMPS */
+        return force_values_energy(g, &a->fv);
     const struct atoms *at = &g->atoms;
     const int *ord = atoms_tag_order(g);
     struct region *r = NULL;

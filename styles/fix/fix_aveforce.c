@@ -7,7 +7,7 @@
  * read back every step: a round trip per step, n atoms x 3 values). With
  * `region ID`, the group's atoms inside the region at the step (LAMMPS).
  * Global vector (f_ID[1..3], extensive): their total force before the fix.
- * Atom-style variables are refused. */
+ * Atom-style variables are refused, as LAMMPS refuses them. */
 #include <stdlib.h>
 
 #include "device.h"

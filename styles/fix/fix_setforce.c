@@ -1,11 +1,11 @@
-/* fix_setforce.c - `fix ID group setforce fx fy fz [region ID]`: LAMMPS's fix setforce:
- * after the forces of the step (post_force, and at a run's setup), each
- * given component of the group's forces becomes the value (a number, or an
- * equal-style v_name evaluated every step); NULL leaves that component. The
- * global vector (f_ID[1..3], extensive) is the group's total force before
- * the fix at the last step (force_values.h). `region ID`: only the group's
- * atoms inside the region at the step (LAMMPS). Atom-style variables are
- * refused. */
+/* fix_setforce.c - `fix ID group setforce fx fy fz [region ID]`: LAMMPS's
+ * fix setforce: after the forces of the step (post_force, and at a run's
+ * setup), each given component of the group's forces becomes the value (a
+ * number, an equal-style v_name evaluated every step, or an atom-style
+ * v_name: each atom's own); NULL leaves that component. The global vector
+ * (f_ID[1..3], extensive) is the group's total force before the fix at the
+ * last step (force_values.h). `region ID`: only the group's atoms inside
+ * the region at the step (LAMMPS). */
 #include <stdlib.h>
 
 #include "error.h"
@@ -27,6 +27,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     struct force_values *fv = gr_calloc(g, 1, sizeof *fv);
     f->data = fv;
+    fv->allow_atom = 1;
     force_values_create(g, f, fv, argc, argv, WHO);
 }
 

@@ -7,6 +7,8 @@
 
 #include "args.h"
 #include "device.h"
+#include "domain.h"
+#include "engine.h"
 #include "error.h"
 #include "par_sum.h"
 #include "region.h"
@@ -106,30 +108,121 @@ void force_values_init(struct gravel *g, struct fix *f, struct force_values *fv,
             continue;
         if (!var_exists(g, fv->var[d]))
             gr_error(g, "%s %s: variable '%s' does not exist", who, f->id, fv->var[d]);
-        if (var_is_atom(g, fv->var[d]))
-            gr_error(g, "%s %s: variable '%s' is atom-style: not supported yet (give an "
-                        "equal-style variable)", who, f->id, fv->var[d]);
-        if (!var_is_equal(g, fv->var[d]))
-            gr_error(g, "%s %s: variable '%s' is not equal-style", who, f->id, fv->var[d]);
+        fv->atom[d] = var_is_atom(g, fv->var[d]);
+        if (fv->atom[d] && !fv->allow_atom)
+            gr_error(g, "%s %s: variable '%s' is atom-style: LAMMPS's fix aveforce takes "
+                        "equal-style variables only", who, f->id, fv->var[d]);
+        if (!fv->atom[d] && !var_is_equal(g, fv->var[d]))
+            gr_error(g, "%s %s: variable '%s' is not equal-style%s", who, f->id, fv->var[d],
+                     fv->allow_atom ? " or atom-style" : "");
+    }
+    if (fv->evar) {
+        if (!var_exists(g, fv->evar))
+            gr_error(g, "%s %s: variable '%s' does not exist", who, f->id, fv->evar);
+        if (!var_is_atom(g, fv->evar))
+            gr_error(g, "%s %s: energy variable '%s' is not atom-style", who, f->id, fv->evar);
+        if (!fv->var[0] && !fv->var[1] && !fv->var[2])
+            gr_error(g, "%s %s: cannot use variable energy with constant force (LAMMPS)", who,
+                     f->id);
     }
     f->peratom_bytes = 3 * g->eng->rsz; /* the force before the fix */
     fv->k = eng_kernel(g, "force_set_add");
+    fv->katom = eng_kernel(g, "force_set_add_atom");
+}
+
+int force_values_peratom(const struct force_values *fv)
+{
+    return fv->atom[0] || fv->atom[1] || fv->atom[2] || fv->evar;
+}
+
+/* The atom-style components' values on the device (the others: v) and,
+ * for addforce's scalar, each selected atom's energy with its ID. */
+static void atom_values(struct gravel *g, struct fix *f, struct force_values *fv)
+{
+    struct engine *e = g->eng;
+    const int n = e->a.n;
+    double *col[4] = {NULL, NULL, NULL, NULL};
+    run_sync_host(g); /* positions and images for the energies */
+    for (int d = 0; d < 3; d++)
+        if (fv->atom[d])
+            col[d] = var_atom_values(g, fv->var[d]); /* syncs the host atoms first */
+    if (fv->evar)
+        col[3] = var_atom_values(g, fv->evar);
+    const struct atoms *a = &g->atoms;
+    double *val = gr_malloc(g, 3 * ((size_t)n + 1) * sizeof *val);
+    free(fv->eatom);
+    free(fv->etag);
+    fv->eatom = gr_malloc(g, ((size_t)n + 1) * sizeof *fv->eatom);
+    fv->etag = gr_malloc(g, ((size_t)n + 1) * sizeof *fv->etag);
+    fv->ne = 0;
+    for (int i = 0; i < n; i++) {
+        for (int d = 0; d < 3; d++)
+            val[3 * (size_t)i + d] = col[d] ? col[d][i] : fv->v[d];
+        if (!force_values_took(f, fv, a->mask, i))
+            continue;
+        double en = 0.0, u[3];
+        if (col[3]) {
+            en = col[3][i];
+        } else {
+            domain_unmap(g, a->x + 3 * (size_t)i, a->image + 3 * (size_t)i, u);
+            for (int d = 0; d < 3; d++)
+                if (fv->on & (1 << d))
+                    en -= val[3 * (size_t)i + d] * u[d];
+        }
+        fv->eatom[fv->ne] = en;
+        fv->etag[fv->ne++] = a->tag[i];
+    }
+    if (!fv->dval || fv->dval_n < (size_t)n) {
+        if (fv->dval)
+            clReleaseMemObject(fv->dval);
+        fv->dval_n = (size_t)n + (size_t)n / 8 + 16;
+        fv->dval = eng_alloc(g, 3 * fv->dval_n * e->rsz, "fix force atom-style values");
+    }
+    if (n > 0)
+        eng_write_reals(g, fv->dval, 3 * (size_t)n, val);
+    free(val);
+    for (int k = 0; k < 4; k++)
+        free(col[k]);
+}
+
+double force_values_energy(struct gravel *g, const struct force_values *fv)
+{
+    int *ord = gr_malloc(g, ((size_t)fv->ne + 1) * sizeof *ord);
+    for (int k = 0; k < fv->ne; k++)
+        ord[k] = k;
+    /* the rows in ID order (insertion sort: they come in device order) */
+    for (int k = 1; k < fv->ne; k++)
+        for (int j = k; j > 0 && fv->etag[ord[j - 1]] > fv->etag[ord[j]]; j--) {
+            const int t = ord[j];
+            ord[j] = ord[j - 1];
+            ord[j - 1] = t;
+        }
+    struct par_sum s = {0};
+    for (int k = 0; k < fv->ne; k++)
+        par_sum_add(g, &s, fv->etag[ord[k]], fv->eatom[ord[k]]);
+    free(ord);
+    return par_sum_total(g, &s);
 }
 
 void force_values_prepare(struct gravel *g, struct fix *f, struct force_values *fv)
 {
     for (int d = 0; d < 3; d++)
-        if (fv->var[d])
+        if (fv->var[d] && !fv->atom[d])
             fv->v[d] = var_compute_equal(g, fv->var[d]);
     if (fv->region)
         select_region(g, f, fv);
+    if (force_values_peratom(fv))
+        atom_values(g, f, fv);
 }
 
 void force_values_launch(struct gravel *g, struct fix *f, struct force_values *fv, int on,
                          const double v[3], int add)
 {
     struct dev_atoms *a = eng_atoms(g);
-    cl_kernel k = fv->k;
+    const int per = !v && force_values_peratom(fv);
+    if (!v)
+        v = fv->v;
+    cl_kernel k = per ? fv->katom : fv->k;
     eng_arg_int(g, k, 0, a->n);
     eng_arg_uint(g, k, 1, fv->region ? 1u : f->groupbit);
     eng_arg_mem(g, k, 2, fv->region ? fv->dsel : a->mask);
@@ -137,15 +230,18 @@ void force_values_launch(struct gravel *g, struct fix *f, struct force_values *f
     eng_arg_mem(g, k, 4, f->peratom);
     eng_arg_int(g, k, 5, on);
     eng_arg_int(g, k, 6, add);
-    for (int d = 0; d < 3; d++)
-        eng_arg_real(g, k, 7 + d, v[d]);
+    if (per)
+        eng_arg_mem(g, k, 7, fv->dval);
+    else
+        for (int d = 0; d < 3; d++)
+            eng_arg_real(g, k, 7 + d, v[d]);
     eng_launch(g, k, (size_t)a->n);
 }
 
 void force_values_apply(struct gravel *g, struct fix *f, struct force_values *fv, int add)
 {
     force_values_prepare(g, f, fv);
-    force_values_launch(g, f, fv, fv->on, fv->v, add);
+    force_values_launch(g, f, fv, fv->on, NULL, add);
 }
 
 double force_values_original(struct gravel *g, struct fix *f, int d)
@@ -179,4 +275,9 @@ void force_values_free(struct force_values *fv)
     free(fv->sel);
     if (fv->dsel)
         clReleaseMemObject(fv->dsel);
+    free(fv->evar);
+    free(fv->eatom);
+    free(fv->etag);
+    if (fv->dval)
+        clReleaseMemObject(fv->dval);
 }

@@ -16,8 +16,12 @@ place, likewise. On 2 MPI ranks the rows of both are the same to 17 digits
 as one process's. The `region` keyword of all three (a region moving with
 an equal-style variable, and the static region of the upper half; atoms
 fall through both), both decks compared with lmp alike and on 2 ranks.
-Then gravel's errors: an unknown region, addforce's `energy` keyword, an
-atom-style variable, NULL in addforce, every 0. One line PASS/FAIL per case;
+Atom-style variables (setforce's and addforce's components, functions of
+z, beside equal-style ones; addforce's `energy v_name`): thermo with both
+fixes' vectors and energies, lmp alike and on 2 ranks.
+Then gravel's errors: an unknown region, `energy` not v_name, an energy
+variable with constant forces or not atom-style, an atom-style variable in
+aveforce, a string variable, NULL in addforce, every 0. One line PASS/FAIL per case;
 without `lmp` the comparison FAILs naming it (tools/deps.sh installs the
 Debian package lammps)."""
 import os
@@ -52,6 +56,23 @@ fix sf all setforce NULL 0.0 v_push region mid
              "fix af all addforce v_side 0.1 0.0 region top\n").replace(
     "fix a4 top addforce 0.0 0.0 0.02 every 4\n",
     "fix a4 all addforce 0.0 0.0 0.02 every 4 region mid\n")
+# atom-style variables: setforce's x (and an equal-style z), addforce's x and
+# z on the lower half (energy: -f . xu per atom), and a third addforce with
+# `energy v_en` (LAMMPS's energy keyword) on every atom; functions of z
+# (not periodic): LAMMPS wraps x and y at its rebuilds, gravel every step
+ATOM = HEAD + """variable push equal -0.05-0.0001*step
+variable fx atom 0.02*(z-3.0)+0.01*type
+variable fz atom -0.01*z
+variable en atom 0.005*z*z
+fix sf top setforce v_fx NULL v_push
+fix af bot addforce v_fx 0.1 v_fz
+fix_modify af energy yes
+fix ae all addforce 0.0 v_fx 0.0 energy v_en
+thermo_style custom step ke pe f_sf[1] f_sf[2] f_sf[3] f_af f_af[1] f_af[2] f_af[3] f_ae f_ae[2]
+thermo_modify format float %.10g
+thermo 100
+run 1000
+"""
 REGION_AVE = REGION.replace("fix sf all setforce NULL 0.0 v_push region mid",
                             "fix sf all aveforce NULL 0.0 v_push region mid")
 
@@ -106,6 +127,7 @@ def main():
                   % (rc, rc2, bad[:3], aout[-400:]))
         compare("region_setforce_addforce_match_lammps", REGION, gdir, ldir)
         compare("region_aveforce_matches_lammps", REGION_AVE, gdir, ldir)
+        compare("atom_variables_match_lammps", ATOM, gdir, ldir)
 
         # on 2 MPI ranks (bin/gravel-mpi): the same rows at 17 digits as one process
         mpi = os.path.join(ROOT, "bin", "gravel-mpi")
@@ -113,7 +135,7 @@ def main():
             check("force_fixes_two_ranks", False, "mpirun or bin/gravel-mpi missing")
         else:
             same, why = True, ""
-            for deck in (DECK, ave, REGION, REGION_AVE):
+            for deck in (DECK, ave, REGION, REGION_AVE, ATOM):
                 deck17 = deck.replace("%.10g", "%.17g")
                 rc1, one = run([GRAVEL], deck17, gdir)
                 rc2, two = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
@@ -130,14 +152,22 @@ def main():
             "aveforce_region_needs_id": ("fix s top aveforce 0 0 0 region\n",
                                          "ERROR: fix: fix aveforce: keyword region needs a "
                                          "region ID"),
-            "addforce_energy_refused": ("fix s top addforce 0 0 0 energy e\n",
-                                        "ERROR: fix: fix addforce: keyword energy"),
+            "addforce_energy_form": ("fix s top addforce 0 0 0 energy e\n",
+                                     "ERROR: fix: fix addforce: energy must be v_name, got 'e'"),
+            "addforce_energy_constant": ("variable e atom z\nfix s top addforce 0 0 1 energy v_e"
+                                         "\nrun 1\n", "cannot use variable energy with "
+                                         "constant force"),
+            "addforce_energy_not_atom": ("variable e equal 1\nvariable a atom z\n"
+                                         "fix s top addforce v_a 0 0 energy v_e\nrun 1\n",
+                                         "energy variable 'e' is not atom-style"),
+            "aveforce_atom_variable_refused": ("variable a atom z\nfix s top aveforce 0 0 v_a\n"
+                                               "run 1\n", "takes equal-style variables only"),
             "region_deleted_before_run": ("fix s top addforce 0 0 1 region top\n"
                                           "region top delete\nrun 1\n",
                                           "ERROR: run: fix s: region top does not exist"),
-            "addforce_atom_variable_refused": ("variable a atom z\nfix s top addforce 0 0 v_a\n"
-                                               "run 1\n", "ERROR: run: fix addforce s: variable "
-                                               "'a' is atom-style: not supported yet"),
+            "addforce_variable_style": ("variable a string z\nfix s top addforce 0 0 v_a\n"
+                                        "run 1\n", "ERROR: run: fix addforce s: variable "
+                                        "'a' is not equal-style or atom-style"),
             "addforce_null_refused": ("fix s top addforce NULL 0 0\n",
                                       "ERROR: fix: fix addforce: fx NULL is not allowed"),
             "addforce_every_positive": ("fix s top addforce 0 0 0 every 0\n",
