@@ -185,22 +185,28 @@ static void atom_values(struct gravel *g, struct fix *f, struct force_values *fv
         free(col[k]);
 }
 
+struct tagged_energy {
+    int64_t tag;
+    double e;
+};
+
+static int by_tag(const void *a, const void *b)
+{
+    const int64_t x = ((const struct tagged_energy *)a)->tag;
+    const int64_t y = ((const struct tagged_energy *)b)->tag;
+    return (x > y) - (x < y);
+}
+
 double force_values_energy(struct gravel *g, const struct force_values *fv)
 {
-    int *ord = gr_malloc(g, ((size_t)fv->ne + 1) * sizeof *ord);
+    struct tagged_energy *r = gr_malloc(g, ((size_t)fv->ne + 1) * sizeof *r);
     for (int k = 0; k < fv->ne; k++)
-        ord[k] = k;
-    /* the rows in ID order (insertion sort: they come in device order) */
-    for (int k = 1; k < fv->ne; k++)
-        for (int j = k; j > 0 && fv->etag[ord[j - 1]] > fv->etag[ord[j]]; j--) {
-            const int t = ord[j];
-            ord[j] = ord[j - 1];
-            ord[j - 1] = t;
-        }
+        r[k] = (struct tagged_energy){fv->etag[k], fv->eatom[k]};
+    qsort(r, (size_t)fv->ne, sizeof *r, by_tag); /* they come in device order */
     struct par_sum s = {0};
     for (int k = 0; k < fv->ne; k++)
-        par_sum_add(g, &s, fv->etag[ord[k]], fv->eatom[ord[k]]);
-    free(ord);
+        par_sum_add(g, &s, r[k].tag, r[k].e);
+    free(r);
     return par_sum_total(g, &s);
 }
 
