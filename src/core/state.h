@@ -176,6 +176,9 @@ struct temp_state {
     char region[GR_NAMELEN];    /* TEMP_REGION: the region's ID, */
     const void *region_obj;     /* the region resolved by its compute (init), */
     int (*region_in)(const void *region_obj, const double x[3]); /* and its test */
+    char bias_id[GR_NAMELEN];   /* temp/sphere's `bias ID` ("" none), */
+    struct temp_state *bias;    /* that temperature, whose bias is taken out of the
+                                 * velocities (resolved at init), else NULL */
 };
 
 #define GR_MAXTHERMO 64

@@ -47,6 +47,32 @@ static int partial_n(const struct temp_state *t)
     return t->flags[0] + t->flags[1] + t->flags[2];
 }
 
+/* the degrees of freedom a sphere temperature's bias takes away (LAMMPS's
+ * temp/sphere dof_compute): temp/partial's uncounted components of every
+ * atom (mode all only), temp/region's every degree of freedom of the atoms
+ * outside its region; temp/com none */
+static double bias_dof(struct gravel *g, const struct temp_state *t, double natoms)
+{
+    const struct temp_state *b = t->bias;
+    const int dim = g->dom.dimension, all = t->kind == TEMP_SPHERE_ALL;
+    if (!b)
+        return 0.0;
+    if (b->kind == TEMP_PARTIAL)
+        return all ? (double)(dim - partial_n(b)) * natoms : 0.0;
+    if (b->kind != TEMP_REGION)
+        return 0.0;
+    const struct atoms *a = &g->atoms;
+    const void *r = temp_region(g, b);
+    long long n = 0;
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & t->groupbit) || b->region_in(r, a->x + 3 * i))
+            continue;
+        const int rot = a->radius[i] > 0.0 ? (dim == 3 ? 3 : 1) : 0;
+        n += (all ? dim : 0) + rot;
+    }
+    return (double)(par_on(g) ? comm_sum_ll(n) : n);
+}
+
 static double count_dof(struct gravel *g, const struct temp_state *t, double *natoms_out)
 {
     const struct atoms *a = &g->atoms;
@@ -84,6 +110,7 @@ static double count_dof(struct gravel *g, const struct temp_state *t, double *na
         const double share = t->kind == TEMP_PARTIAL ? (double)partial_n(t) / dim : 1.0;
         count -= share * (extra + fixdof);
     }
+    count -= bias_dof(g, t, natoms);
     *natoms_out = natoms;
     return count;
 }
@@ -110,7 +137,8 @@ static int removes_dof(struct gravel *g)
 double temp_dof(struct gravel *g, struct temp_state *t)
 {
     int in_run = g->eng && g->eng->active;
-    if (t->dynamic || t->kind == TEMP_REGION || !in_run || !t->dof_valid)
+    if (t->dynamic || t->kind == TEMP_REGION || (t->bias && t->bias->kind == TEMP_REGION) ||
+        !in_run || !t->dof_valid)
         temp_setup(g, t);
     if (t->dof < 0 && t->dof_natoms > 0)
         gr_error(g, "temperature degrees of freedom < 0 (%g atoms, extra/dof %g%s)",
@@ -145,14 +173,19 @@ static void bias_velocity(struct gravel *g, const struct temp_state *t, double v
 }
 
 /* the velocity atom i's temperature counts: v minus the bias (TEMP_COM),
- * the uncounted components zeroed (TEMP_PARTIAL) */
+ * the uncounted components zeroed (TEMP_PARTIAL); a sphere temperature
+ * with `bias` takes its bias's rule, and its atoms outside a temp/region
+ * bias's region count no translation (LAMMPS's remove_bias_all) */
 static void thermal_velocity(const struct gravel *g, const struct temp_state *t, int i,
                              const double vb[3], double u[3])
 {
     const double *v = g->atoms.v + 3 * i;
+    const struct temp_state *b = t->bias ? t->bias : t;
+    const int out = t->bias && b->kind == TEMP_REGION &&
+                    !b->region_in(b->region_obj, g->atoms.x + 3 * i);
     for (int d = 0; d < 3; d++) {
         u[d] = v[d] - vb[d];
-        if (t->kind == TEMP_PARTIAL && !t->flags[d])
+        if ((b->kind == TEMP_PARTIAL && !b->flags[d]) || out)
             u[d] = 0.0;
     }
 }
@@ -164,7 +197,7 @@ static double sum_mv2(struct gravel *g, const struct temp_state *t)
     const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
     double vb[3];
-    bias_velocity(g, t, vb);
+    bias_velocity(g, t->bias ? t->bias : t, vb);
     struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
@@ -196,7 +229,7 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
     const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
     double vb[3];
-    bias_velocity(g, t, vb);
+    bias_velocity(g, t->bias ? t->bias : t, vb);
     struct par_sum s[6] = {{0}}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];

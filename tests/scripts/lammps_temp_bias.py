@@ -15,10 +15,12 @@ floor, gran/hooke/history) given a bulk velocity along x, run unchanged by
    bias (the centre-of-mass motion, the y component, the atoms outside the
    region): thermo and the fix's energy to 1e-9;
 4. velocity create and scale with `temp ID` and `bias yes` on them (with
-   sum yes, loop local and geom): every velocity equal to lmp's to 1e-12.
+   sum yes, loop local and geom): every velocity equal to lmp's to 1e-12;
+5. compute temp/sphere with `bias` on temp/com, temp/partial (group all) and
+   temp/region, dof all and rotate: scalars and tensor elements to 1e-9.
 On 2 MPI ranks the three temperatures' file is byte-identical to one
-process's, and each temp/rescale case's thermo rows equal one process's to
-17 digits. Then gravel's errors. One line PASS/FAIL per case; without `lmp` the
+process's, and each temp/rescale case's and the temp/sphere bias case's
+thermo rows equal one process's to 17 digits. Then gravel's errors (temp/sphere's bias too). One line PASS/FAIL per case; without `lmp` the
 comparisons FAIL naming it."""
 import os
 import sys
@@ -42,6 +44,13 @@ CASES = {
                  "format \" %.17g\"\n", 13),
     "thermo_temp_com": ("thermo_style custom step temp press pxx pzz pxz ke\n"
                         "thermo_modify temp tc\n", 7),
+    "sphere_bias": ("compute pa all temp/partial 1 0 1\n"
+                    "compute sc all temp/sphere bias tc\ncompute sp all temp/sphere bias pa\n"
+                    "compute sr all temp/sphere bias tr\n"
+                    "compute spr all temp/sphere bias pa dof rotate\n"
+                    "compute srr all temp/sphere bias tr dof rotate\n"
+                    "thermo_style custom step c_sc c_sp c_sr c_spr c_srr c_sc[1] c_sp[2] c_sr[3] "
+                    "c_sr[4]\n", 10),
     "rescale_com": ("fix r all temp/rescale 50 1.0 1.0 0.02 0.5\nfix_modify r temp tc\n"
                     "thermo_style custom step temp c_tc f_r\n", 4),
     "rescale_partial": ("fix r top temp/rescale 50 0.5 0.5 0.02 1.0\nfix_modify r temp tp\n"
@@ -74,7 +83,7 @@ def compare(name, parent):
         ranks = os.path.join(parent, "ranks")
         os.mkdir(ranks)
         check_same_on_ranks("temp_bias_same_on_2_ranks", 2, deck, ranks, g, ["t.txt"])
-    if name.startswith("rescale"):
+    if name.startswith("rescale") or name == "sphere_bias":
         ranks = os.path.join(parent, "ranks_" + name)
         os.mkdir(ranks)
         check_thermo_same_on_ranks("temp_bias_%s_2_ranks" % name, 2,
@@ -105,6 +114,14 @@ def main():
                                       "velocity bias command without temp keyword"),
             "err_bias_plain_temp": ("compute t all temp\nvelocity all scale 1.0 temp t bias "
                                     "yes\n", "does not compute a velocity bias"),
+            "err_sphere_bias_plain": ("compute t all temp\ncompute s all temp/sphere bias t\n"
+                                      "thermo_style custom step c_s\nrun 0\n",
+                                      "bias compute t does not calculate a velocity bias"),
+            "err_sphere_bias_group": ("compute t top temp/com\ncompute s all temp/sphere bias t"
+                                      "\nthermo_style custom step c_s\nrun 0\n",
+                                      "bias compute t's group does not match its group"),
+            "err_sphere_bias_missing": ("compute s all temp/sphere bias\n",
+                                        "bias needs a compute ID"),
         }, falling_bed(), err)
 
 
