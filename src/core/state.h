@@ -107,11 +107,12 @@ struct atoms {
 
 /* ---- groups ---------------------------------------------------------------- */
 
-/* group ID dynamic parent [region R] [var V] [every N]: membership is
- * re-evaluated at the start of each run and every N steps (group.c) */
+/* group ID dynamic parent [region R] [var V] [property P] [every N]:
+ * membership is re-evaluated at the start of each run and every N steps
+ * (group.c) */
 struct group_dyn {
     int on, parent, every;
-    char region[GR_NAMELEN], var[GR_NAMELEN];
+    char region[GR_NAMELEN], var[GR_NAMELEN], prop[GR_NAMELEN];
 };
 
 struct groups {

@@ -14,6 +14,7 @@
 #include <gsl/gsl_eigen.h>
 
 #include "args.h"
+#include "atom_custom.h"
 #include "atoms.h"
 #include "compute.h"
 #include "domain.h"
@@ -328,10 +329,20 @@ static void dynamic_set(struct gravel *g, int ig)
     struct atoms *a = &g->atoms;
     const struct region *r = d->region[0] ? region_get(g, d->region) : NULL;
     double *v = d->var[0] ? var_atom_values(g, d->var) : NULL;
+    struct custom_ref pr = {-1, 0};
+    if (d->prop[0]) { /* LAMMPS's FixGroup: a custom vector, by its bare name */
+        pr.idx = custom_find(a, d->prop);
+        if (pr.idx < 0 || a->cus.p[pr.idx].cols) {
+            free(v);
+            gr_error(g, "custom per-atom vector %s for group dynamic %s does not exist (fix "
+                        "property/atom i_%s or d_%s)", d->prop, g->groups.name[ig], d->prop,
+                     d->prop);
+        }
+    }
     unsigned bit = group_bit(ig), parent = group_bit(d->parent);
     for (int i = 0; i < a->n; i++) {
         int in = (a->mask[i] & parent) && (!r || region_match(r, a->x + 3 * i)) &&
-                 (!v || v[i] != 0.0);
+                 (!v || v[i] != 0.0) && (pr.idx < 0 || custom_get(a, pr, i) != 0.0);
         if (in)
             a->mask[i] |= bit;
         else
@@ -355,12 +366,13 @@ void group_dynamic_update(struct gravel *g, bigint step)
     }
 }
 
-/* group ID dynamic parent [region R] [var V] [every N] (LAMMPS FixGroup). */
+/* group ID dynamic parent [region R] [var V] [property P] [every N]
+ * (LAMMPS FixGroup; P a custom vector's bare name, i_P or d_P). */
 static void define_dynamic(struct gravel *g, const char *id, int nrest, char **rest)
 {
     if (nrest < 1)
         gr_error(g, "group dynamic needs a parent group");
-    struct group_dyn d = {1, arg_group(g, rest[0]), 1, "", ""};
+    struct group_dyn d = {1, arg_group(g, rest[0]), 1, "", "", ""};
     for (int k = 1; k < nrest; k++) {
         const char *kw = rest[k];
         if (k + 1 >= nrest)
@@ -375,10 +387,12 @@ static void define_dynamic(struct gravel *g, const char *id, int nrest, char **r
         } else if (!strcmp(kw, "every")) {
             d.every = arg_int_range(g, val, 1, 1 << 30, "every");
         } else if (!strcmp(kw, "property")) {
-            gr_error(g, "group dynamic property needs fix property/atom custom values, which "
-                        "gravel does not have yet");
+            if (!custom_name_ok(val) || strlen(val) >= GR_NAMELEN)
+                gr_error(g, "group dynamic property: '%.64s' is not a custom vector's name", val);
+            snprintf(d.prop, sizeof d.prop, "%s", val);
         } else {
-            gr_error(g, "unknown group dynamic keyword '%.32s' (region, var, every)", kw);
+            gr_error(g, "unknown group dynamic keyword '%.32s' (region, var, property, every)",
+                     kw);
         }
     }
     int ig = group_create(g, id);
