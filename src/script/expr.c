@@ -165,12 +165,32 @@ static double atom_mass(const struct atoms *a, int i)
     return 0;
 }
 
-/* count(group), mass(group), xcm(group,dim), vcm(group,dim), bound(group,dir):
- * the reductions of group.c on the host arrays (synced first during a run). */
+/* inertia()'s second argument: xx yy zz xy yz xz (LAMMPS's dimdim) */
+static void dimdim_index(struct ep *e, const char *s, int *r, int *c)
+{
+    static const char *const names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+    static const int rows[6] = {0, 1, 2, 0, 1, 0}, cols[6] = {0, 1, 2, 1, 2, 2};
+    for (int k = 0; k < 6; k++)
+        if (!strcmp(s, names[k])) {
+            *r = rows[k];
+            *c = cols[k];
+            return;
+        }
+    char msg[160];
+    snprintf(msg, sizeof msg, "inertia() component must be xx yy zz xy yz xz, got '%.64s'", s);
+    ep_fail(e, msg);
+}
+
+/* count(group), mass(group), xcm(group,dim), vcm(group,dim), fcm(group,dim),
+ * bound(group,dir), ke(group), gyration(group), angmom(group,dim),
+ * torque(group,dim), inertia(group,dimdim), omega(group,dim): LAMMPS's
+ * group functions, the reductions of group.c on the host arrays (synced
+ * first during a run; about the unwrapped centre of mass). */
 static double group_function(struct ep *e, const char *fn, int nargs, char args[][GR_NAMELEN])
 {
     struct gravel *g = e->g;
-    int want = (strcmp(fn, "count") == 0 || strcmp(fn, "mass") == 0) ? 1 : 2;
+    int want = (strcmp(fn, "count") == 0 || strcmp(fn, "mass") == 0 || strcmp(fn, "ke") == 0 ||
+                strcmp(fn, "gyration") == 0) ? 1 : 2;
     if (nargs != want) {
         char msg[160];
         snprintf(msg, sizeof msg, "%s() takes %d argument%s, got %d", fn, want,
@@ -191,6 +211,39 @@ static double group_function(struct ep *e, const char *fn, int nargs, char args[
         else
             group_vcm(g, igroup, group_mass(g, igroup), c);
         return c[d];
+    }
+    if (strcmp(fn, "ke") == 0)
+        return group_ke(g, igroup);
+    if (strcmp(fn, "fcm") == 0) {
+        double f[3];
+        group_fcm(g, igroup, f);
+        return f[dim_index(e, args[1])];
+    }
+    if (strcmp(fn, "gyration") == 0 || strcmp(fn, "angmom") == 0 ||
+        strcmp(fn, "torque") == 0 || strcmp(fn, "inertia") == 0 || strcmp(fn, "omega") == 0) {
+        const double m = group_mass(g, igroup);
+        double c[3], v[3], I[3][3];
+        group_xcm(g, igroup, m, c);
+        if (fn[0] == 'g')
+            return group_gyration(g, igroup, m, c);
+        if (fn[0] == 'i') {
+            int r, col;
+            dimdim_index(e, args[1], &r, &col);
+            group_inertia(g, igroup, c, I);
+            return I[r][col];
+        }
+        const int d = dim_index(e, args[1]);
+        if (fn[0] == 't') {
+            group_torque(g, igroup, c, v);
+            return v[d];
+        }
+        group_angmom(g, igroup, c, v);
+        if (fn[0] == 'a')
+            return v[d];
+        double w[3];
+        group_inertia(g, igroup, c, I);
+        group_omega(v, I, w);
+        return w[d];
     }
     if (strcmp(fn, "bound") == 0) {
         static const char *dirs[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
@@ -217,8 +270,13 @@ static double group_function(struct ep *e, const char *fn, int nargs, char args[
 
 static int is_group_function(const char *name)
 {
-    return !strcmp(name, "count") || !strcmp(name, "mass") || !strcmp(name, "xcm") ||
-           !strcmp(name, "vcm") || !strcmp(name, "bound");
+    static const char *const fns[] = {"count", "mass", "xcm", "vcm", "fcm", "bound", "ke",
+                                      "gyration", "angmom", "torque", "inertia", "omega",
+                                      NULL};
+    for (int k = 0; fns[k]; k++)
+        if (!strcmp(name, fns[k]))
+            return 1;
+    return 0;
 }
 
 /* x[ID] y z vx vy vz fx fy fz radius mass type id [ID]. */

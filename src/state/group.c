@@ -72,17 +72,18 @@ bigint group_count(const struct gravel *g, int igroup)
 }
 
 /* What group_sums adds up per atom (n terms each, in this order). */
-enum sum_kind { S_MASS, S_P, S_MX, S_L, S_I, S_KE };
+enum sum_kind { S_MASS, S_P, S_MX, S_L, S_I, S_KE, S_F, S_T, S_RG };
 
 /* Sums over the group's atoms in tag order: mass (1); momentum m v (3);
  * m x (3, x unwrapped); angular momentum about c (3); the inertia tensor
- * about c (6: xx yy zz xy yz xz); m v^2 (1). Through par_sum: in a
+ * about c (6: xx yy zz xy yz xz); m v^2 (1); force (3); torque of the
+ * forces about c (3); m |x - c|^2 (1). Through par_sum: in a
  * decomposed run (not gathered) over every rank's atoms, one process's
  * bits; otherwise the host atoms, added as they come. */
 static void group_sums(struct gravel *g, int igroup, enum sum_kind kind, const double c[3],
                        double *out)
 {
-    static const int nterm[] = {1, 3, 3, 3, 6, 1};
+    static const int nterm[] = {1, 3, 3, 3, 6, 1, 3, 3, 1};
     const int n = nterm[kind];
     const unsigned bit = group_bit(igroup);
     const struct atoms *a = &g->atoms;
@@ -93,9 +94,9 @@ static void group_sums(struct gravel *g, int igroup, enum sum_kind kind, const d
         const int i = order[k];
         if (!(a->mask[i] & bit))
             continue;
-        const double m = a->rmass[i], *v = a->v + 3 * i;
+        const double m = a->rmass[i], *v = a->v + 3 * i, *f = a->f + 3 * i;
         double t[6] = {0}, u[3] = {0}, dx = 0, dy = 0, dz = 0;
-        if (kind == S_MX || kind == S_L || kind == S_I) {
+        if (kind == S_MX || kind == S_L || kind == S_I || kind == S_T || kind == S_RG) {
             domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
             if (c)
                 dx = u[0] - c[0], dy = u[1] - c[1], dz = u[2] - c[2];
@@ -122,6 +123,17 @@ static void group_sums(struct gravel *g, int igroup, enum sum_kind kind, const d
             break;
         case S_KE:
             t[0] = m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            break;
+        case S_F:
+            t[0] = f[0], t[1] = f[1], t[2] = f[2];
+            break;
+        case S_T:
+            t[0] = dy * f[2] - dz * f[1];
+            t[1] = dz * f[0] - dx * f[2];
+            t[2] = dx * f[1] - dy * f[0];
+            break;
+        case S_RG:
+            t[0] = (dx * dx + dy * dy + dz * dz) * m;
             break;
         }
         for (int q = 0; q < n; q++)
@@ -175,6 +187,23 @@ double group_ke(struct gravel *g, int igroup)
     double ke;
     group_sums(g, igroup, S_KE, NULL, &ke);
     return 0.5 * ke;
+}
+
+void group_fcm(struct gravel *g, int igroup, double fcm[3])
+{
+    group_sums(g, igroup, S_F, NULL, fcm);
+}
+
+void group_torque(struct gravel *g, int igroup, const double xcm[3], double tq[3])
+{
+    group_sums(g, igroup, S_T, xcm, tq);
+}
+
+double group_gyration(struct gravel *g, int igroup, double masstotal, const double xcm[3])
+{
+    double r;
+    group_sums(g, igroup, S_RG, xcm, &r);
+    return masstotal > 0.0 ? sqrt(r / masstotal) : 0.0;
 }
 
 void group_angmom(struct gravel *g, int igroup, const double xcm[3], double L[3])

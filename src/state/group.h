@@ -36,6 +36,12 @@ void group_vcm(struct gravel *g, int igroup, double masstotal, double vcm[3]);
 void group_bounds(const struct gravel *g, int igroup, double lo[3], double hi[3]);
 /* Translational kinetic energy sum 1/2 m v^2. */
 double group_ke(struct gravel *g, int igroup);
+/* Total force on the group (LAMMPS's fcm). */
+void group_fcm(struct gravel *g, int igroup, double fcm[3]);
+/* Torque of the atoms' forces about xcm (unwrapped positions). */
+void group_torque(struct gravel *g, int igroup, const double xcm[3], double tq[3]);
+/* Radius of gyration about xcm: sqrt(sum m |x - xcm|^2 / masstotal), 0 for no mass. */
+double group_gyration(struct gravel *g, int igroup, double masstotal, const double xcm[3]);
 /* Angular momentum about xcm (unwrapped positions). */
 void group_angmom(struct gravel *g, int igroup, const double xcm[3], double L[3]);
 /* Inertia tensor about xcm (point masses, unwrapped positions). */
