@@ -281,8 +281,8 @@ TEST(velocity_errors)
     CHECK_ERROR(CUBE "velocity all scale 1.0\n", "cannot rescale a zero temperature", 5);
     CHECK_ERROR(CUBE "velocity all ramp vw 0 1 z 0 1\n", "ramp velocity component must be", 5);
     CHECK_ERROR(CUBE "group one id 1\nvelocity one create 1.0 5\n", "needs at least 2 atoms", 6);
-    CHECK_ERROR(CUBE "velocity all create 1.0 5 temp mytemp\n", "keyword 'temp' is not supported",
-                5);
+    CHECK_ERROR(CUBE "velocity all create 1.0 5 temp mytemp\n",
+                "velocity temp refers to unknown compute ID 'mytemp'", 5);
 }
 
 int main(void)
