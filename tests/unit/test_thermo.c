@@ -287,7 +287,7 @@ TEST(errors)
     FX_CHECK_ERROR("thermo_modify temp t\n", "unknown compute ID 't'", 1);
     FX_CHECK_ERROR("compute k all ke\nthermo_modify temp k\n", "does not compute a temperature", 2);
     FX_CHECK_ERROR("compute t all temp/sphere dof some\n", "all or rotate", 1);
-    FX_CHECK_ERROR("compute t all temp/sphere bias b\n", "bias is not supported", 1);
+    FX_CHECK_ERROR("compute t all temp/sphere bias\n", "bias needs a compute ID", 1);
     FX_CHECK_ERROR("thermo_modify frobnicate 1\n", "unknown keyword 'frobnicate'", 1);
     FX_CHECK_ERROR("compute_modify thermo_temp dynamic/dof maybe\n", "yes or no", 1);
     FX_CHECK_ERROR("compute_modify thermo_temp extra/dof x\n", "expected a number", 1);
