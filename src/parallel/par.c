@@ -186,8 +186,8 @@ static size_t all_rows_bytes(const struct atoms *a)
 
 /* ---- what runs across ranks --------------------------------------------------------- */
 
-/* Fix styles whose work is per owned atom with no state of their own
- * (the rest stop a decomposed run: doc/parallel.md lists them). */
+/* Fix styles that run on MPI ranks, each checked against one process in
+ * its test (the rest stop a decomposed run: doc/parallel.md lists them). */
 static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze", "enforce2d",
                                         "viscous", "setforce", "addforce", "aveforce", "wall/gran",
                                         "wall/gran/region", "wall/pair", "balance", "mesh/surface",
@@ -195,15 +195,18 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "ave/atom", "wall/reflect", "drag", "property/global",
                                         "mesh/surface/stress", "mesh/surface/planar",
                                         "particletemplate/sphere", "particledistribution/discrete",
-                                        "insert/pack",
-                                        "insert/rate/region", "insert/stream",
+                                        "insert/pack", "insert/rate/region", "insert/stream",
                                         "check/timestep/gran", "heat/gran", "heat/gran/conduction",
                                         "adapt", "property/atom", "heat/flow", "viscous/nonlinear",
                                         "momentum", "rigid/small", "multisphere", "surface/global",
                                         "surface/local", "nvt", "nvt/sphere", "deform", "npt",
                                         "npt/sphere", "nph", "nph/sphere",
-                                        "particletemplate/multisphere", "granular/mdr", "halt", "print", "move", "spring/self", "indent", "temp/rescale", "damping/cundall", "add/heat", "rigid", "store/state", "particledistribution/discrete/numberbased",
-                                        "particledistribution/discrete/massbased", "deposit", "langevin", NULL};
+                                        "particletemplate/multisphere", "granular/mdr", "halt",
+                                        "print", "move", "ave/correlate", "spring/self", "indent",
+                                        "temp/rescale", "damping/cundall", "add/heat", "rigid",
+                                        "store/state", "particledistribution/discrete/numberbased",
+                                        "particledistribution/discrete/massbased", "deposit",
+                                        "langevin", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -221,14 +224,16 @@ int par_fix_value_global(const struct fix *f)
                                          "insert/rate/region", "insert/stream",
                                          "check/timestep/gran", "heat/gran",
                                          "heat/gran/conduction", "gravity", "freeze",
-                                         /* sums in tag order (styles/fix/force_values.c) */
-                                         "setforce", "addforce", "aveforce", "spring/self", "indent",
-                                         "temp/rescale", "rigid",
+                                         /* sums in tag order (force_values.c, fix_indent.c,
+                                          * fix_spring_self.c, temperature.c) */
+                                         "setforce", "addforce", "aveforce", "spring/self",
+                                         "indent", "temp/rescale",
+                                         "rigid", /* every rank holds every body */
                                          "property/global", /* the script's values */
-                                         /* their inputs are computes on ranks (ave_common.c:
-                                          * fix or variable inputs refused), each sample
-                                          * taken on every rank's atoms as one process */
-                                         "ave/time", "ave/chunk", "ave/histo", NULL};
+                                         /* each sample taken on every rank's atoms as one
+                                          * process (ave_common.c) */
+                                         "ave/time", "ave/chunk", "ave/histo", "ave/correlate",
+                                         NULL};
     return listed(global, f->style->name);
 }
 

@@ -223,6 +223,18 @@ void ave_window_advance(struct ave_window *w)
     }
 }
 
+double ave_scalar_input(struct gravel *g, char kind, const char *id, int index, const char *ref,
+                        const char *who)
+{
+    if (kind == 'c') {
+        struct compute *c = compute_get(g, id, who);
+        return index ? compute_vector(g, c)[index - 1] : compute_scalar(g, c);
+    }
+    if (kind == 'f')
+        return fix_output(g, fix_ref_check(g, ref, who), index, 0, 0, who);
+    return var_compute_equal(g, id);
+}
+
 void ave_file_open(struct gravel *g, struct ave_file *af, const char *path, int append,
                    const char *who)
 {

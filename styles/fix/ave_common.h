@@ -90,6 +90,12 @@ void ave_source_check(struct gravel *g, struct ave_sched *s, char kind, const ch
                       const char *who,
                       const char *fid);
 
+/* The current value of a global input: compute `id`'s scalar (index 0) or
+ * vector element `index` (kind 'c'), fix `ref`'s likewise ('f'; ref the
+ * input as written, f_ID or f_ID[I]), equal-style variable `id` ('v'). */
+double ave_scalar_input(struct gravel *g, char kind, const char *id, int index, const char *ref,
+                        const char *who);
+
 struct ave_file {
     FILE *fp;
     int fd, err;

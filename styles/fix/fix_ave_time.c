@@ -391,17 +391,10 @@ static void accumulate(struct gravel *g, struct ave_time *a, int j)
     double *dst = a->one + j;
     if (a->mode == MODE_SCALAR) {
         double x;
-        if (v->which == W_COMPUTE) {
-            struct compute *c = compute_get(g, v->id, WHO);
-            x = v->argindex ? compute_vector(g, c)[v->argindex - 1] : compute_scalar(g, c);
-        } else if (v->which == W_FIX) {
-            struct fix *f = fix_ref_check(g, v->name, WHO);
-            x = fix_output(g, f, v->argindex, 0, 0, WHO);
-        } else if (v->which == W_THERMO_TEMP) {
+        if (v->which == W_THERMO_TEMP)
             thermo_keyword_value(g, "c_thermo_temp", &x);
-        } else {
-            x = var_compute_equal(g, v->id);
-        }
+        else
+            x = ave_scalar_input(g, v->name[0], v->id, v->argindex, v->name, WHO);
         *dst = v->offcol ? x : *dst + x;
         return;
     }
