@@ -26,6 +26,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "group.h"
 #include "variable.h"
 
 enum move_style { MOVE_LINEAR, MOVE_WIGGLE, MOVE_ROTATE, MOVE_VARIABLE };
@@ -146,6 +147,14 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                 m->vec[d] *= s;
         }
     atom_origin_take(g, &m->x0, f->groupbit); /* x0: the group's positions now */
+    /* LAMMPS moves the local triangles of fix surface/local this way; here they
+     * are no atoms (its group would be empty and nothing would move) */
+    for (int k = 0; k < g->styles.nfix && group_count(g, f->igroup) == 0; k++)
+        if (!strcmp(g->styles.fix[k]->style->name, "surface/local"))
+            gr_error(g, "fix move: group %s has no atoms; the triangles of fix surface/local %s "
+                        "are not atoms here and cannot be moved by fix move (define them with "
+                        "fix surface/global: its fix_modify move turns them)", g->groups.name[f->igroup],
+                     g->styles.fix[k]->id);
     m->time_origin = g->step;
     f->hooks = HOOK_INITIAL_INTEGRATE | HOOK_FINAL_INTEGRATE;
     if (m->style == MOVE_ROTATE)

@@ -358,6 +358,8 @@ LOCAL_ERRS = [
     ("model_changed", LOCAL_MOL, "1 2 surf/granular " + SMODEL,
      "pair_coeff 1 2 surf/granular " + SMODEL.replace("4000.0", "5000.0") + "\nrun 0\n",
      "surf/granular coefficients changed since its first run", 36),
+    ("fix_move_triangles", LOCAL_MOL, "1 2 surf/granular " + SMODEL,
+     "fix mv tri move linear 1 0 0\n", "cannot be moved by fix move", 35),
 ]
 
 
