@@ -3,7 +3,8 @@
  * fix_ave_chunk.cpp semantics and text file.
  *
  * Values: vx vy vz fx fy fz, density/number, density/mass, mass, c_ID and
- * c_ID[N] (per-atom compute), and gravel's `solidicity`: the volume of the
+ * c_ID[N] (per-atom compute), f_ID and f_ID[N] (a fix's per-atom output),
+ * v_name (atom-style variable), and gravel's `solidicity`: the volume of the
  * spheres whose centres are in the chunk over the chunk volume (003 sec.
  * 5.2.9, 6.2: a sphere is counted wholly in the bin of its centre, as the
  * chunk assignment; porosity = 1 - solidicity). Solidicity is normalized
@@ -41,7 +42,7 @@
 #include "outfile.h"
 #include "variable.h"
 
-enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID };
+enum { V_V, V_F, V_DNUM, V_DMASS, V_MASS, V_COMPUTE, V_SOLID, V_FIX, V_VARIABLE };
 enum { NORM_ALL, NORM_SAMPLE, NORM_NONE };
 
 #define AVE_MAXVAL 64
@@ -113,11 +114,18 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
         if (w < 0) {
             if (!strcmp(s, "temp"))
                 gr_error(g, "fix ave/chunk: value 'temp' is not supported");
-            if (!strncmp(s, "v_", 2))
-                gr_error(g, "fix ave/chunk: '%.64s': gravel has no atom-style variables (use "
-                            "a per-atom compute c_ID)", s);
-            if (!strncmp(s, "f_", 2))
-                gr_error(g, "fix ave/chunk: '%.64s': no fix in gravel has per-atom output", s);
+            if (!strncmp(s, "v_", 2)) {
+                if (!s[2] || strlen(s + 2) >= GR_NAMELEN || strchr(s, '['))
+                    gr_error(g, "fix ave/chunk: '%.64s' must name an atom-style variable", s);
+                var_check_atom(g, s + 2, "fix ave/chunk");
+                snprintf(id, sizeof id, "%s", s + 2);
+                w = V_VARIABLE;
+                a->s.reads_vars = 1; /* several ranks: thermo keywords taken first */
+            }
+            if (!strncmp(s, "f_", 2)) {
+                fix_peratom_check(g, s, "fix ave/chunk");
+                w = V_FIX;
+            }
             if (!strncmp(s, "c_", 2)) {
                 if (!compute_parse_ref(s, id, &idx))
                     gr_error(g, "fix ave/chunk: malformed compute reference '%.64s'", s);
@@ -282,6 +290,7 @@ static void take(struct gravel *g, struct fix *f)
             a->count_one[ichunk[i] - 1] += 1;
     for (int j = 0; j < nv; j++) {
         const double *src = NULL;
+        double *owned = NULL;
         int stride = 1, comp = a->argindex[j];
         switch (a->which[j]) {
         case V_V: src = at->v; stride = 3; break;
@@ -292,6 +301,14 @@ static void take(struct gravel *g, struct fix *f)
             comp = 0;
             break;
         }
+        case V_FIX:
+            src = fix_peratom_ref(g, a->names[j], &stride, "fix ave/chunk");
+            comp = 0;
+            break;
+        case V_VARIABLE:
+            src = owned = var_atom_values(g, a->ids[j]);
+            comp = 0;
+            break;
         default: break;
         }
         const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
@@ -312,6 +329,7 @@ static void take(struct gravel *g, struct fix *f)
             }
             a->values_one[(size_t)(ichunk[i] - 1) * nv + j] += val;
         }
+        free(owned);
     }
     /* the sample: accumulate sums (all, none) or per-sample averages (sample) */
     for (int m = 0; m < a->nchunk; m++) {
@@ -465,9 +483,14 @@ static void ave_init(struct gravel *g, struct fix *f)
 {
     struct ave_chunk *a = f->data;
     chunk_atom_get(g, a->chunk, "fix ave/chunk");
-    for (int j = 0; j < a->nvalues; j++)
+    for (int j = 0; j < a->nvalues; j++) {
         if (a->which[j] == V_COMPUTE)
             compute_peratom_check(g, a->ids[j], a->argindex[j], "fix ave/chunk");
+        else if (a->which[j] == V_FIX)
+            fix_peratom_check(g, a->names[j], "fix ave/chunk");
+        else if (a->which[j] == V_VARIABLE)
+            var_check_atom(g, a->ids[j], "fix ave/chunk");
+    }
     if (a->s.nvalid < g->step)
         ave_sched_reset(g, &a->s);
 }

@@ -143,7 +143,7 @@ ERRORS = [
     ("compute c all chunk/atom bin/1d x lower 1\nfix a all ave/chunk 10 3 20 c vx",
      "Nfreq must be a multiple"),
     ("compute c all chunk/atom bin/1d x lower 1\nfix a all ave/chunk 10 1 20 c v_foo",
-     "no atom-style variables"),
+     "variable 'foo' is not defined"),
     ("compute k all ke\nfix a all ave/chunk 10 1 20 k vx", "not chunk/atom"),
     ("compute c all chunk/atom bin/1d x lower 1\nfix a all ave/chunk 10 1 20 c vx bogus 3",
      "unknown value or keyword 'bogus'"),
