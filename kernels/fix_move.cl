@@ -35,7 +35,8 @@ __kernel void move_initial(const int n, const uint groupbit, __global const uint
                            __global REAL *x, __global REAL *v, __global REAL *omega,
                            __global const REAL *f, __global const REAL *rmass,
                            __global const REAL *radius, const int style, const int pset,
-                           const int vset, const REAL dispx, const REAL dispy,
+                           const int vset, const int aset, __global const REAL *pa,
+                           const REAL dispx, const REAL dispy,
                            const REAL dispz, const REAL velx, const REAL vely,
                            const REAL velz, const REAL px, const REAL py, const REAL pz,
                            const REAL rx, const REAL ry, const REAL rz, const REAL w,
@@ -97,7 +98,13 @@ __kernel void move_initial(const int n, const uint groupbit, __global const uint
         for (int q = 0; q < 3; q++)
             move_remap_near(&h[q], &l[q], xo[q], per[q], L[q]);
     } else {
-        const REAL disp[3] = {dispx, dispy, dispz}, vel[3] = {velx, vely, velz};
+        REAL disp[3] = {dispx, dispy, dispz}, vel[3] = {velx, vely, velz};
+        for (int q = 0; q < 3; q++) { /* atom-style variables: the atom's own values */
+            if ((aset >> q) & 1)
+                disp[q] = pa[6 * i + q];
+            if ((aset >> (3 + q)) & 1)
+                vel[q] = pa[6 * i + 3 + q];
+        }
         const REAL fi[3] = {f[3 * i], f[3 * i + 1], f[3 * i + 2]};
         const REAL dtfm = dtf / rmass[i];
         for (int q = 0; q < 3; q++) {

@@ -27,6 +27,7 @@
 #include "error.h"
 #include "fix.h"
 #include "group.h"
+#include "par.h"
 #include "thermo.h"
 #include "variable.h"
 
@@ -51,6 +52,7 @@ struct aslot {
 struct actx {
     int i;                  /* current atom (host index) */
     int first;              /* the first atom: slots are being made */
+    int resolve_only;       /* no atom: make the slots (their collectives), read none */
     int k;                  /* next slot */
     int n, cap;
     struct aslot *slot;
@@ -126,6 +128,8 @@ static struct aslot *next_slot(struct ep *e, int *made)
 
 static double slot_value(const struct ep *e, const struct aslot *s)
 {
+    if (e->ax->resolve_only)
+        return 0.0;
     return s->col ? s->col[(size_t)s->stride * e->ax->i] : s->s;
 }
 
@@ -1090,6 +1094,13 @@ void expr_eval_atoms(struct gravel *g, const char *text, double *out, int depth)
         a->k = 0;
         struct ep e = {g, text, text, depth, a};
         out[i] = eval_one(&e);
+    }
+    if (g->atoms.n == 0 && par_on(g)) {
+        /* a rank without atoms still takes the expression's global terms, whose
+         * sums over the ranks the others are in (the value is not used) */
+        a->resolve_only = a->first = 1;
+        struct ep e = {g, text, text, depth, a};
+        (void)eval_one(&e);
     }
     g->err.jmp = outer;
     actx_free(a);

@@ -6,7 +6,8 @@
  *                              x0 turned about the axis R through P by w t,
  *                              v = w R x (x - axis), omega = w R
  *   variable v_dx v_dy v_dz v_vx v_vy v_vz
- *                              equal-style variables (or NULL), evaluated each
+ *                              equal- or atom-style variables (or NULL; an
+ *                              atom-style one gives each atom its own), evaluated each
  *                              step: x = x0 + dx and/or v = vx per component;
  *                              v alone drifts the atom, neither integrates it
  * with t = (step - the step the fix was defined at) dt, w = 2 pi / period,
@@ -38,6 +39,9 @@ struct move {
     double point[3], runit[3];  /* rotate */
     double omega;               /* wiggle, rotate: 2 pi / period */
     char *var[6];               /* variable: dx dy dz vx vy vz (NULL: none) */
+    int aset;                   /* bit k: var[k] is atom-style (each atom's own value) */
+    cl_mem dpa;                 /* their values, 6 per atom (device order) */
+    size_t dpa_n;
     bigint time_origin;
     struct atom_origin x0;      /* unwrapped positions when defined, by atom ID */
     cl_kernel ini, fin;
@@ -53,6 +57,8 @@ static void destroy(struct fix *f)
         free(m->var[k]);
     atom_origin_free(&m->x0);
     free(m->out);
+    if (m->dpa)
+        clReleaseMemObject(m->dpa);
     free(m);
 }
 
@@ -169,14 +175,17 @@ static void init(struct gravel *g, struct fix *f)
     struct move *m = f->data;
     if (g->dom.triclinic)
         gr_error(g, "fix move %s: triclinic boxes are not supported yet", f->id);
+    m->aset = 0;
     for (int k = 0; k < 6; k++) {
         if (!m->var[k])
             continue;
         if (!var_exists(g, m->var[k]))
             gr_error(g, "fix move %s: variable '%s' does not exist", f->id, m->var[k]);
-        if (!var_is_equal(g, m->var[k]))
-            gr_error(g, "fix move %s: variable '%s' is not equal-style (atom-style variables "
-                        "are not supported yet)", f->id, m->var[k]);
+        if (var_is_atom(g, m->var[k]))
+            m->aset |= 1 << k;
+        else if (!var_is_equal(g, m->var[k]))
+            gr_error(g, "fix move %s: variable '%s' is neither equal- nor atom-style", f->id,
+                     m->var[k]);
     }
     atom_origin_setup(g, &m->x0, f->groupbit, "fix move", f->id);
     m->ini = eng_kernel(g, "move_initial");
@@ -199,6 +208,31 @@ static void component_sets(const struct move *m, int *pset, int *vset, int *nve)
         *vset |= v << d;
     }
     *nve = 7 & ~(*pset | *vset);
+}
+
+/* The atom-style variables' values of every device atom (LAMMPS's
+ * compute_atom on the group; the kernel reads the group's), 6 per atom. */
+static void atom_values(struct gravel *g, struct move *m)
+{
+    const int n = eng_atoms(g)->n;
+    double *pa = gr_calloc(g, 6 * (size_t)n + 1, sizeof *pa);
+    for (int k = 0; k < 6; k++) {
+        if (!(m->aset >> k & 1))
+            continue;
+        double *v = var_atom_values(g, m->var[k]); /* host atoms = device order */
+        for (int i = 0; i < n; i++)
+            pa[6 * (size_t)i + k] = v[i];
+        free(v);
+    }
+    if (!m->dpa || m->dpa_n < (size_t)n) {
+        if (m->dpa)
+            clReleaseMemObject(m->dpa);
+        m->dpa_n = (size_t)n + (size_t)n / 8 + 16;
+        m->dpa = eng_alloc(g, 6 * m->dpa_n * g->eng->rsz, "fix move atom-style values");
+    }
+    if (n > 0)
+        eng_write_reals(g, m->dpa, 6 * (size_t)n, pa);
+    free(pa);
 }
 
 static void initial_integrate(struct gravel *g, struct fix *f)
@@ -225,11 +259,13 @@ static void initial_integrate(struct gravel *g, struct fix *f)
         }
     } else {
         for (int d = 0; d < 3; d++) {
-            if (m->var[d])
+            if (m->var[d] && !(m->aset >> d & 1))
                 disp[d] = var_compute_equal(g, m->var[d]);
-            if (m->var[3 + d])
+            if (m->var[3 + d] && !(m->aset >> (3 + d) & 1))
                 vel[d] = var_compute_equal(g, m->var[3 + d]);
         }
+        if (m->aset)
+            atom_values(g, m);
     }
     cl_kernel k = m->ini;
     int i = 0;
@@ -249,6 +285,8 @@ static void initial_integrate(struct gravel *g, struct fix *f)
     eng_arg_int(g, k, i++, (int)m->style);
     eng_arg_int(g, k, i++, pset);
     eng_arg_int(g, k, i++, vset);
+    eng_arg_int(g, k, i++, m->aset);
+    eng_arg_mem(g, k, i++, m->aset ? m->dpa : a->v); /* unread without atom-style values */
     for (int d = 0; d < 3; d++)
         eng_arg_real(g, k, i++, disp[d]);
     for (int d = 0; d < 3; d++)

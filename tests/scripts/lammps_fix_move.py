@@ -40,6 +40,10 @@ STYLES = {
     "variable": "variable dz equal 0.3*sin(2*PI*elapsed*dt)\n"
                 "variable vz equal 0.3*2*PI*cos(2*PI*elapsed*dt)\n"
                 "fix m top move variable NULL NULL v_dz NULL NULL v_vz\n",
+    "variable_atom": "variable dz atom 0.3*sin(2*PI*elapsed*dt)*(1+0.01*id)\n"
+                     "variable vz atom 0.3*2*PI*cos(2*PI*elapsed*dt)*(1+0.01*id)\n"
+                     "variable dx equal 0.1*elapsed*dt\n"
+                     "fix m top move variable v_dx NULL v_dz NULL NULL v_vz\n",
 }
 OUT = """dump 1 all custom 250 out.dump id x y z vx vy vz omegax omegay omegaz f_m[1] f_m[3]
 dump_modify 1 sort id format float %.15g

@@ -8,7 +8,9 @@ whose value is a sum over the ranks (setforce, addforce and aveforce
 vectors, addforce, spring/self and indent energies in pe, temp/rescale,
 momentum, the temperatures with and without bias, ke/atom reduced,
 erotate/sphere, pe, pressure, msd, gyration, com, vcm, xcm and bound in
-variables, fix ave/time, fix print, fix halt) must still take part in each
+variables, fix ave/time, fix print, fix halt, and an atom-style force
+variable whose formula holds a group sum, xcm(all,z), evaluated on each
+rank's own atoms) must still take part in each
 collective (a rank that skips one hangs the run). thermo at 17 digits, the
 ave/time and print files and a dump must be byte-identical to one
 process's, and the footer must show a rank with no atoms (3 ranks). One
@@ -38,7 +40,8 @@ fix 1 all nve/sphere
 fix w all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 40.0
 fix g all gravity 1.0 vector 0 0 -1
 fix sf all setforce NULL NULL NULL
-fix af all addforce 0.0 0.0 0.0
+variable fa atom 0.001*(z-xcm(all,z))
+fix af all addforce v_fa 0.0 0.0
 fix_modify af energy yes
 fix av all aveforce NULL NULL NULL
 fix sp all spring/self 1.0 xy
