@@ -3,13 +3,22 @@
  * the group (mask & groupbit), its force before the fix into orig (3 REAL
  * per atom, zero for the others: the fix's global vector sums it on the
  * host in tag order), then each component whose bit of `on` is set becomes
- * (add 0) or gains (add 1) the value: (vx, vy, vz) for every atom
- * (force_set_add), or the atom's own row of val (force_set_add_atom: the
- * atom-style variables' values). */
+ * (add 0) or gains (add 1) the value: (vx, vy, vz) for every atom, or with
+ * per the atom's own row of val (the atom-style variables' values). */
 
-static inline void set_add(const int i, __global REAL *f, __global REAL *orig, const int on,
-                           const int add, const REAL3 v)
+__kernel void force_set_add(const int n, const uint groupbit, __global const uint *mask,
+                            __global REAL *f, __global REAL *orig, const int on, const int add,
+                            const REAL vx, const REAL vy, const REAL vz, const int per,
+                            __global const REAL *val)
 {
+    const int i = get_global_id(0);
+    if (i >= n)
+        return;
+    if (!(mask[i] & groupbit)) {
+        vstore3((REAL3)(0), i, orig);
+        return;
+    }
+    const REAL3 v = per ? vload3(i, val) : (REAL3)(vx, vy, vz);
     REAL3 fi = vload3(i, f);
     vstore3(fi, i, orig);
     if (on & 1)
@@ -19,30 +28,4 @@ static inline void set_add(const int i, __global REAL *f, __global REAL *orig, c
     if (on & 4)
         fi.z = add ? fi.z + v.z : v.z;
     vstore3(fi, i, f);
-}
-
-__kernel void force_set_add(const int n, const uint groupbit, __global const uint *mask,
-                            __global REAL *f, __global REAL *orig, const int on, const int add,
-                            const REAL vx, const REAL vy, const REAL vz)
-{
-    const int i = get_global_id(0);
-    if (i >= n)
-        return;
-    if (!(mask[i] & groupbit))
-        vstore3((REAL3)(0), i, orig);
-    else
-        set_add(i, f, orig, on, add, (REAL3)(vx, vy, vz));
-}
-
-__kernel void force_set_add_atom(const int n, const uint groupbit, __global const uint *mask,
-                                 __global REAL *f, __global REAL *orig, const int on,
-                                 const int add, __global const REAL *val)
-{
-    const int i = get_global_id(0);
-    if (i >= n)
-        return;
-    if (!(mask[i] & groupbit))
-        vstore3((REAL3)(0), i, orig);
-    else
-        set_add(i, f, orig, on, add, vload3(i, val));
 }

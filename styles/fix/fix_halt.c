@@ -28,7 +28,6 @@
 #include "variable.h"
 #include "wall_clock.h"
 
-#define WHO "fix halt"
 
 enum attribute { ATT_VARIABLE, ATT_TLIMIT, ATT_DISKFREE };
 enum op { OP_LT, OP_LE, OP_GT, OP_GE, OP_EQ, OP_NE, OP_XOR };

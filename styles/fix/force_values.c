@@ -127,7 +127,6 @@ void force_values_init(struct gravel *g, struct fix *f, struct force_values *fv,
     }
     f->peratom_bytes = 3 * g->eng->rsz; /* the force before the fix */
     fv->k = eng_kernel(g, "force_set_add");
-    fv->katom = eng_kernel(g, "force_set_add_atom");
 }
 
 int force_values_peratom(const struct force_values *fv)
@@ -228,7 +227,7 @@ void force_values_launch(struct gravel *g, struct fix *f, struct force_values *f
     const int per = !v && force_values_peratom(fv);
     if (!v)
         v = fv->v;
-    cl_kernel k = per ? fv->katom : fv->k;
+    cl_kernel k = fv->k;
     eng_arg_int(g, k, 0, a->n);
     eng_arg_uint(g, k, 1, fv->region ? 1u : f->groupbit);
     eng_arg_mem(g, k, 2, fv->region ? fv->dsel : a->mask);
@@ -236,11 +235,10 @@ void force_values_launch(struct gravel *g, struct fix *f, struct force_values *f
     eng_arg_mem(g, k, 4, f->peratom);
     eng_arg_int(g, k, 5, on);
     eng_arg_int(g, k, 6, add);
-    if (per)
-        eng_arg_mem(g, k, 7, fv->dval);
-    else
-        for (int d = 0; d < 3; d++)
-            eng_arg_real(g, k, 7 + d, v[d]);
+    for (int d = 0; d < 3; d++)
+        eng_arg_real(g, k, 7 + d, v[d]);
+    eng_arg_int(g, k, 10, per);
+    eng_arg_mem(g, k, 11, per ? fv->dval : a->f); /* unread without per-atom values */
     eng_launch(g, k, (size_t)a->n);
 }
 

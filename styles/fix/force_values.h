@@ -26,7 +26,6 @@ struct force_values {
     int ne;
     double *eatom;
     int64_t *etag;
-    cl_kernel katom;
     char *region;               /* `region ID`, else NULL */
     cl_uint *sel;               /* with a region: 1 for the atoms of the last application */
     cl_mem dsel;                /* its device copy, dsel_n entries */
