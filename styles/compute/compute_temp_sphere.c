@@ -33,8 +33,8 @@ static void resolve_bias(struct gravel *g, struct compute *c)
         if (b->groupbit != c->groupbit)
             gr_error(g, "compute temp/sphere %s: bias compute %s's group does not match its "
                         "group", c->id, b->id);
-        if (b->style->init)
-            b->style->init(g, b);
+        if (b->temp->kind == TEMP_REGION && b->style->init)
+            b->style->init(g, b); /* its region looked up again (com, partial: nothing to) */
         t->bias = b->temp;
     }
 }

@@ -231,11 +231,12 @@ static void post_force(struct gravel *g, struct fix *f)
     for (int k = 0; k < 3 * (ng + ns); k++)
         u[k] = rng_mars_uniform(&l->rng);
     struct par_sum fs[3] = {{0}}; /* the mean random force, summed in ID order */
+    int next = 0; /* one rank: the rows are this loop's atoms, in its order */
     for (int q = 0; q < n; q++) {
         const int i = ord[q];
         if (!(mask[i] & f->groupbit))
             continue;
-        const int k = row_of(rows, ng, (double)e->tag_seen[i]);
+        const int k = par_on(g) ? row_of(rows, ng, (double)e->tag_seen[i]) : next++;
         double gamma2 = sqrt(m[i]) * c2;
         gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
         for (int d = 0; d < 3; d++) {
