@@ -4,7 +4,9 @@
  * with zero yes f -= the group's mean random force (fsum). gamma1 =
  * -m / damp / ratio_type, computed here as LAMMPS does. With omega, the
  * same for the torque: torque += gamma1r omega + tran, gamma1r = -c1r I /
- * damp / ratio (I = 0.4 m r^2; c1r LAMMPS's 10/3 or 1), for r > 0. */
+ * damp / ratio (I = 0.4 m r^2; c1r LAMMPS's 10/3 or 1), for r > 0. With
+ * tally, flan receives the translational force added (for the host's
+ * energy tally). */
 
 __kernel void langevin_post_force(const int n, const uint groupbit, __global const uint *mask,
                                   __global const int *type, __global const REAL *rmass,
@@ -13,7 +15,8 @@ __kernel void langevin_post_force(const int n, const uint groupbit, __global con
                                   __global REAL *torque, __global const REAL *fran,
                                   __global const REAL *ratio, const REAL t_period,
                                   const int zero, const REAL fsx, const REAL fsy, const REAL fsz,
-                                  const int oflag, const REAL c1r)
+                                  const int oflag, const REAL c1r, const int tally,
+                                  __global REAL *flan)
 {
     const int i = get_global_id(0);
     if (i >= n || !(mask[i] & groupbit))
@@ -21,10 +24,15 @@ __kernel void langevin_post_force(const int n, const uint groupbit, __global con
     const REAL rt = ratio[type[i] - 1];
     REAL gamma1 = -rmass[i] / t_period;
     gamma1 *= (REAL)1 / rt;
-    REAL3 fi = vload3(i, f) + (gamma1 * vload3(i, v) + vload3(2 * i, fran));
-    if (zero)
+    REAL3 fl = gamma1 * vload3(i, v) + vload3(2 * i, fran);
+    REAL3 fi = vload3(i, f) + fl;
+    if (zero) {
         fi -= (REAL3)(fsx, fsy, fsz);
+        fl -= (REAL3)(fsx, fsy, fsz);
+    }
     vstore3(fi, i, f);
+    if (tally)
+        vstore3(fl, i, flan);
 #ifdef HAS_ROTATION
     if (oflag && radius[i] > (REAL)0) {
         const REAL inertia = (REAL)0.4 * radius[i] * radius[i] * rmass[i];

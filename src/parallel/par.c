@@ -227,7 +227,7 @@ int par_fix_value_global(const struct fix *f)
                                          /* sums in tag order (force_values.c, fix_indent.c,
                                           * fix_spring_self.c, temperature.c) */
                                          "setforce", "addforce", "aveforce", "spring/self",
-                                         "indent", "temp/rescale",
+                                         "indent", "temp/rescale", "langevin",
                                          "rigid", /* every rank holds every body */
                                          "property/global", /* the script's values */
                                          /* each sample taken on every rank's atoms as one

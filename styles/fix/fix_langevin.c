@@ -1,5 +1,5 @@
 /* fix_langevin.c - `fix ID group langevin Tstart Tstop damp seed [omega
- * yes|no] [scale type ratio] [zero yes|no] [angmom no] [tally no] [gjf no]`:
+ * yes|no] [scale type ratio] [zero yes|no] [tally yes|no] [angmom no] [gjf no]`:
  * LAMMPS's fix langevin, a Langevin thermostat: at post_force every atom of
  * the group gets the drag -m v / (damp ratio_type) and a random force of
  * uniform components gamma2 (u - 1/2), gamma2 = sqrt(m) sqrt(24 kB T /
@@ -15,8 +15,13 @@
  * device (kernels/fix_langevin.cl). On MPI ranks every rank draws the
  * whole stream and takes its atoms' numbers by their place in ID order, so
  * the run is one process's (LAMMPS's ranks draw from streams of their
- * own). Not yet: tally yes, gjf, angmom (no ellipsoids here), an
- * atom-style target, fix_modify temp. */
+ * own). tally yes: the kernel keeps each atom's thermostat force
+ * (translational, after zero's mean), and at end_of_step the host adds
+ * dt sum F . v over the group in atom-ID order (every rank's atoms as one
+ * process's); the scalar f_ID is minus that energy, taken back half a step
+ * and restarted at each run's first step, as LAMMPS's compute_scalar. Not
+ * yet: gjf, angmom (no ellipsoids here), an atom-style target, fix_modify
+ * temp. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,13 +42,14 @@
 struct langevin {
     double t_start, t_stop, t_period;
     char *tvar;                 /* Tstart as v_name (equal-style), else NULL */
-    int seed, oflag, zero;
+    int seed, oflag, zero, tally;
+    double energy, energy_onestep; /* tally: LAMMPS's running sum and the last step's term */
     double omega_c1, omega_c2;  /* LAMMPS's rotational drag and noise factors (10/3, 80) */
     int ntypes;
     double *ratio;              /* [ntypes] */
     struct rng_mars rng;
-    cl_mem dratio, dfran;
-    size_t dfran_n;
+    cl_mem dratio, dfran, dflan; /* dflan: tally's thermostat force per atom (3 REAL) */
+    size_t dfran_n, dflan_n;
     cl_kernel k;
 };
 
@@ -55,6 +61,8 @@ static void destroy(struct fix *f)
             clReleaseMemObject(l->dratio);
         if (l->dfran)
             clReleaseMemObject(l->dfran);
+        if (l->dflan)
+            clReleaseMemObject(l->dflan);
         free(l->ratio);
         free(l->tvar);
         free(l);
@@ -102,7 +110,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
             const int t = arg_int_range(g, v, 1, l->ntypes, WHO " scale type");
             l->ratio[t - 1] = arg_double(g, argv[i + 2], WHO " scale ratio");
             i += 3;
-        } else if (!strcmp(kw, "tally") || !strcmp(kw, "gjf") || !strcmp(kw, "angmom")) {
+        } else if (!strcmp(kw, "tally")) {
+            l->tally = arg_yesno(g, v, "tally");
+            i += 2;
+        } else if (!strcmp(kw, "gjf") || !strcmp(kw, "angmom")) {
             if (strcmp(v, "no"))
                 gr_error(g, WHO ": %s %s is not supported yet (only %s no)", kw, v, kw);
             i += 2;
@@ -112,7 +123,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         }
     }
     rng_mars_init(&l->rng, l->seed); /* LAMMPS: seed + rank, rank 0 */
-    f->hooks = HOOK_POST_FORCE;
+    f->hooks = HOOK_POST_FORCE | (l->tally ? HOOK_END_OF_STEP : 0);
     f->sources[f->nsources++] = "fix_langevin.cl";
 }
 
@@ -264,6 +275,12 @@ static void post_force(struct gravel *g, struct fix *f)
         l->dfran = eng_alloc(g, 6 * l->dfran_n * e->rsz, WHO " random forces");
     }
     eng_write_reals(g, l->dfran, 6 * (size_t)n, fran);
+    if (l->tally && (!l->dflan || l->dflan_n < (size_t)n)) {
+        if (l->dflan)
+            clReleaseMemObject(l->dflan);
+        l->dflan_n = l->dfran_n;
+        l->dflan = eng_alloc(g, 3 * l->dflan_n * e->rsz, WHO " thermostat forces");
+    }
     free(mask);
     free(type);
     free(m);
@@ -289,7 +306,64 @@ static void post_force(struct gravel *g, struct fix *f)
         eng_arg_real(g, k, p++, fsum[d]);
     eng_arg_int(g, k, p++, l->oflag);
     eng_arg_real(g, k, p++, l->omega_c1);
+    eng_arg_int(g, k, p++, l->tally);
+    eng_arg_mem(g, k, p++, l->tally ? l->dflan : l->dfran);
     eng_launch(g, k, (size_t)n);
+}
+
+/* tally: sum over the group of F . v, F the thermostat force of the last
+ * post_force, v the velocities now; in atom-ID order over every rank's
+ * atoms (collective). */
+static double flan_dot_v(struct gravel *g, struct fix *f)
+{
+    struct langevin *l = f->data;
+    struct engine *e = g->eng;
+    struct dev_atoms *a = eng_atoms(g);
+    const int n = a->n;
+    struct par_sum s = {0};
+    if (l->dflan && n > 0) {
+        const int *ord = eng_tag_order(g);
+        unsigned *mask = gr_malloc(g, (size_t)n * sizeof *mask);
+        double *fl = gr_malloc(g, 3 * (size_t)n * sizeof *fl);
+        double *v = gr_malloc(g, 3 * (size_t)n * sizeof *v);
+        eng_read(g, a->mask, 0, (size_t)n * sizeof *mask, mask);
+        eng_read_reals(g, l->dflan, 3 * (size_t)n, fl);
+        eng_read_reals(g, a->v, 3 * (size_t)n, v);
+        for (int q = 0; q < n; q++) {
+            const int i = ord[q];
+            if (!(mask[i] & f->groupbit))
+                continue;
+            const double *fi = fl + 3 * (size_t)i, *vi = v + 3 * (size_t)i;
+            par_sum_add(g, &s, e->tag_seen[i], fi[0] * vi[0] + fi[1] * vi[1] + fi[2] * vi[2]);
+        }
+        free(mask);
+        free(fl);
+        free(v);
+    }
+    return par_sum_total(g, &s);
+}
+
+/* LAMMPS's end_of_step: the energy the reservoir took this step */
+static void end_of_step(struct gravel *g, struct fix *f)
+{
+    struct langevin *l = f->data;
+    l->energy_onestep = flan_dot_v(g, f);
+    l->energy += l->energy_onestep * g->dt;
+}
+
+/* LAMMPS's compute_scalar: minus the energy added, at the last full step
+ * (the running sum is half a step ahead); at a run's first step the sum
+ * starts again from the setup force */
+static double scalar(struct gravel *g, struct fix *f)
+{
+    struct langevin *l = f->data;
+    if (!l->tally || !l->dflan)
+        return 0.0;
+    if (g->step == g->beginstep) {
+        l->energy_onestep = flan_dot_v(g, f);
+        l->energy = 0.5 * l->energy_onestep * g->dt;
+    }
+    return -(l->energy - 0.5 * l->energy_onestep * g->dt);
 }
 
 const struct fix_style fix_style_langevin = {
@@ -297,5 +371,7 @@ const struct fix_style fix_style_langevin = {
     .create = create,
     .init = init,
     .post_force = post_force,
+    .end_of_step = end_of_step,
+    .scalar = scalar,
     .destroy = destroy,
 };

@@ -12,6 +12,9 @@
    T = 1.5 (damp 0.1): the temperature averaged over the second half of the
    run is 1.5 within 3 %, and with `omega yes` the rotational temperature
    too (equipartition).
+   `tally yes`: the thermostat's energy f_lg (with omega, zero and scale)
+   equals lmp's to 1e-9 over two runs (LAMMPS restarts the tally at each
+   run's first step).
 3. On 2 and 3 MPI ranks (bin/gravel-mpi) every case of 1. prints the rows
    of one process to 17 digits (every rank draws the whole stream).
 4. The errors. One line PASS/FAIL per case; without
@@ -54,6 +57,13 @@ CASES = {
     "equal_variable_target": "variable tt equal 0.5+0.0005*step\n"
                              "fix lg all langevin v_tt 1.0 0.5 9999 omega yes\n",
 }
+# tally yes: f_lg beside ke and the rotational energy, over two runs
+TALLY = ("fix lg all langevin 1.0 2.0 0.5 48279 omega yes zero yes scale 2 2.0 tally yes\n"
+         "thermo_style custom step ke c_rot f_lg\n"
+         "thermo_modify format float %.15g\n"
+         "thermo 200\n"
+         "run 1000\n"
+         "run 600\n")
 
 IDEAL = """units lj
 atom_style sphere
@@ -96,6 +106,10 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name in CASES:
             compare(name, tmp)
+        ok, got, _, _, _ = thermo_against_lmp("langevin_tally", GAS + TALLY, 4, 10, tmp, 1e-9,
+                                              1e-14)
+        check("langevin_tally_energy_taken", ok and got[5][3] < -1.0 and got[6][3] == 0.0,
+              "rows %s" % got[4:7])
         d = os.path.join(tmp, "ideal")
         os.mkdir(d)
         ideal(d)
@@ -105,17 +119,18 @@ def main():
             "err_args": ("fix lg all langevin 1.0 1.0 0.5\n", "expects Tstart Tstop damp seed"),
             "err_seed": ("fix lg all langevin 1.0 1.0 0.5 0\n", "seed must be in 1 .. 900000000"),
             "err_damp": ("fix lg all langevin 1.0 1.0 0.0 5\n", "damp must be > 0"),
-            "err_tally": ("fix lg all langevin 1.0 1.0 0.5 5 tally yes\n",
-                          "tally yes is not supported yet"),
+            "err_gjf": ("fix lg all langevin 1.0 1.0 0.5 5 gjf vhalf\n",
+                        "gjf vhalf is not supported yet"),
             "err_keyword": ("fix lg all langevin 1.0 1.0 0.5 5 bias yes\n",
                             "unknown keyword 'bias'"),
             "err_atom_target": ("variable t atom 1.0\nfix lg all langevin v_t 1.0 0.5 5\n"
                                 "run 0\n", "atom-style targets: not yet"),
         }, GAS, e)
-        for name, fix in CASES.items():
+        decks = [(name, GAS + fix + TAIL, 3) for name, fix in CASES.items()]
+        for name, deck, ncol in decks + [("tally", GAS + TALLY, 4)]:
             for np in (2, 3):
                 check_thermo_same_on_ranks("langevin_%s_%d_ranks" % (name, np), np,
-                                           (GAS + fix + TAIL).replace("%.15g", "%.17g"), 3, e)
+                                           deck.replace("%.15g", "%.17g"), ncol, e)
 
 
 main()
