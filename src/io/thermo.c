@@ -40,6 +40,7 @@ enum kw_id {
     KW_CELLA, KW_CELLB, KW_CELLC, KW_CELLALPHA, KW_CELLBETA, KW_CELLGAMMA, KW_DENSITY,
     KW_EVDWL, KW_ECOUL, KW_ELONG, KW_ETAIL, KW_EBOND, KW_EANGLE, KW_EDIHED, KW_EIMP,
     KW_ENTHALPY, KW_FMAX, KW_FNORM, KW_NBUILD, KW_NDANGER, KW_XLAT, KW_YLAT, KW_ZLAT,
+    KW_ECOUPLE, KW_ECONSERVE,
     KW_THERMO_TEMP, /* c_thermo_temp without a compute of that ID: no keyword name */
     /* c_thermo_temp[1..6]: its kinetic tensor (no keyword names) */
     KW_THERMO_TEMP_V, KW_THERMO_TEMP_V2, KW_THERMO_TEMP_V3, KW_THERMO_TEMP_V4, KW_THERMO_TEMP_V5,
@@ -119,6 +120,8 @@ static const struct {
     [KW_XLAT] = {"xlat", "Xlat", V_FLOAT},
     [KW_YLAT] = {"ylat", "Ylat", V_FLOAT},
     [KW_ZLAT] = {"zlat", "Zlat", V_FLOAT},
+    [KW_ECOUPLE] = {"ecouple", "Ecouple", V_FLOAT},
+    [KW_ECONSERVE] = {"econserve", "Econserve", V_FLOAT},
     [KW_THERMO_TEMP] = {"", "c_thermo_temp", V_FLOAT},
     [KW_THERMO_TEMP_V] = {"", "c_thermo_temp[1]", V_FLOAT},
     [KW_THERMO_TEMP_V2] = {"", "c_thermo_temp[2]", V_FLOAT},
@@ -134,7 +137,7 @@ static int needs_host(int k)
 {
     return k == KW_KE || k == KW_ETOTAL || k == KW_PE || k == KW_TEMP || k == KW_PRESS ||
            (k >= KW_PXX && k <= KW_PYZ) || k == KW_DENSITY || k == KW_ENTHALPY || k == KW_FMAX ||
-           k == KW_FNORM;
+           k == KW_FNORM || k == KW_ECOUPLE || k == KW_ECONSERVE;
 }
 
 /* gravel's `one`: LAMMPS' one is "step temp epair emol etotal press". For
@@ -809,6 +812,16 @@ static double keyword_value(struct gravel *g, int k, bigint *ival, int *isint)
     case KW_PE: {
         double pe = pair_energy(g) + fix_energy_sum(g);
         return norm ? pe / natoms : pe;
+    }
+    case KW_ECOUPLE: /* the thermostats' and barostats' reservoir energy (ecouple fixes);
+                      * LAMMPS does not divide it by the atoms under norm yes */
+        return fix_ecouple_sum(g);
+    case KW_ECONSERVE: { /* LAMMPS: pe + ke + ecouple, each as its keyword gives it */
+        bigint iv;
+        int is;
+        double e = keyword_value(g, KW_PE, &iv, &is) + keyword_value(g, KW_KE, &iv, &is);
+        *isint = 0;
+        return e + keyword_value(g, KW_ECOUPLE, &iv, &is);
     }
     case KW_EPAIR: {
         double pe = pair_energy(g);

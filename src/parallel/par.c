@@ -229,6 +229,9 @@ int par_fix_value_global(const struct fix *f)
                                          "setforce", "addforce", "aveforce", "spring/self",
                                          "indent", "temp/rescale", "langevin",
                                          "rigid", /* every rank holds every body */
+                                         /* the chains' state, the same on every rank */
+                                         "nvt", "nvt/sphere", "npt", "npt/sphere", "nph",
+                                         "nph/sphere",
                                          "property/global", /* the script's values */
                                          /* each sample taken on every rank's atoms as one
                                           * process (ave_common.c) */
@@ -277,7 +280,7 @@ static void check_scene(struct gravel *g)
                                      "pyy", "pzz", "pxy", "pxz", "pyz", "epair", "emol", "pe",
                                      "etotal", "density", "evdwl", "ecoul", "elong", "etail",
                                      "ebond", "eangle", "edihed", "eimp", "nbuild", "ndanger",
-                                     "xlat", "ylat", "zlat", NULL};
+                                     "xlat", "ylat", "zlat", "ecouple", "econserve", NULL};
     for (int i = 0; !why && i < g->thermo.ncol; i++) {
         const char *c = g->thermo.col[i];
         if (!strncmp(c, "f_", 2) && fix_summed(g, c + 2))

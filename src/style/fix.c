@@ -356,6 +356,17 @@ double fix_energy_sum(struct gravel *g)
     return e;
 }
 
+double fix_ecouple_sum(struct gravel *g)
+{
+    double e = 0.0;
+    for (int i = 0; i < g->styles.nfix; i++) {
+        struct fix *f = g->styles.fix[i];
+        if (f->style->ecouple && f->style->scalar)
+            e += f->style->scalar(g, f);
+    }
+    return e;
+}
+
 /* fix_modify ID keyword value ... (LAMMPS fix_modify). energy yes on a
  * fix with a global energy (fix gravity) adds its scalar to the thermo pe
  * and etotal, as LAMMPS; on other fixes, like virial yes and respa levels,

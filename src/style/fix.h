@@ -195,9 +195,11 @@ struct fix_style {
     /* Global scalar for `f_ID` in thermo output, optional, extensive (divided
      * by the atom count under thermo_modify norm yes); host arrays current.
      * energy_global: the scalar is an energy that `fix_modify ID energy yes`
-     * adds to the thermo pe (LAMMPS's energy_global_flag). */
+     * adds to the thermo pe (LAMMPS's energy_global_flag); ecouple: the
+     * scalar is the energy exchanged with a reservoir (a thermostat's or
+     * barostat's), summed by thermo `ecouple` (LAMMPS's ecouple_flag). */
     double (*scalar)(struct gravel *g, struct fix *f);
-    int energy_global;
+    int energy_global, ecouple;
     /* Per-atom output for `f_ID` / `f_ID[i]` in dump custom and compute
      * reduce (LAMMPS's peratom_flag), optional: the instance's
      * f->peratom_flag and f->size_peratom_cols (0: a vector) say whether
@@ -298,6 +300,8 @@ void fix_free_all(struct gravel *g);
 /* Sum of the scalars of fixes with fix_modify energy yes (not normalized;
  * host arrays must be current). */
 double fix_energy_sum(struct gravel *g);
+/* Sum of the scalars of the fixes whose style has ecouple (thermo ecouple). */
+double fix_ecouple_sum(struct gravel *g);
 /* Error "cannot reset timestep with a time-dependent fix defined (fix ID
  * style)" if a fix has time_depend (reset_timestep, read_dump, rerun). */
 void fix_check_time_reset(struct gravel *g);

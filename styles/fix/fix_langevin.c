@@ -373,5 +373,6 @@ const struct fix_style fix_style_langevin = {
     .post_force = post_force,
     .end_of_step = end_of_step,
     .scalar = scalar,
+    .ecouple = 1,
     .destroy = destroy,
 };

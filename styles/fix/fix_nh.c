@@ -812,6 +812,50 @@ void fix_nh_final_integrate(struct gravel *g, struct fix *f)
         nhc_press_integrate(g, n);
 }
 
+/* The conserved quantity's extra energy (LAMMPS's compute_scalar, after
+ * Martyna, Tuckerman, Tobias and Klein 1996, eqs. 2 and 8): the thermostat
+ * chain's kinetic and potential terms, the barostat's kinetic energy and
+ * P_hydro (V - V0) per barostatted dimension, its chain, and with a
+ * deviatoric target the strain energy 1/2 Tr(sigma h h^t) (orthogonal box:
+ * the diagonal). */
+double fix_nh_scalar(struct gravel *g, struct fix *f)
+{
+    const struct nh *n = f->data;
+    const double kt = temp_boltz(g) * n->t_target, nktv2p = 1.0;
+    double energy = 0.0;
+    if (n->tstat) {
+        energy += n->ke_target * n->eta[0] + 0.5 * n->eta_mass[0] * n->eta_dot[0] * n->eta_dot[0];
+        for (int ich = 1; ich < n->mtchain; ich++)
+            energy += kt * n->eta[ich] + 0.5 * n->eta_mass[ich] * n->eta_dot[ich] * n->eta_dot[ich];
+    }
+    if (n->pstat) {
+        const double vol = volume(g);
+        double lkt_press = 0.0;
+        for (int d = 0; d < 3; d++)
+            if (n->p_flag[d]) {
+                energy += 0.5 * n->omega_dot[d] * n->omega_dot[d] * n->omega_mass[d] +
+                          n->p_hydro * (vol - n->vol0) / (n->pdim * nktv2p);
+                lkt_press += kt;
+            }
+        if (n->mpchain) {
+            energy += lkt_press * n->etap[0] +
+                      0.5 * n->etap_mass[0] * n->etap_dot[0] * n->etap_dot[0];
+            for (int ich = 1; ich < n->mpchain; ich++)
+                energy += kt * n->etap[ich] +
+                          0.5 * n->etap_mass[ich] * n->etap_dot[ich] * n->etap_dot[ich];
+        }
+        if (n->deviatoric) {
+            double d = 0.0;
+            for (int q = 0; q < 3; q++) {
+                const double h = g->dom.hi[q] - g->dom.lo[q];
+                d += n->sigma[q] * (h * h);
+            }
+            energy += 0.5 * d / nktv2p;
+        }
+    }
+    return energy;
+}
+
 /* ---- restart: the chains' state (LAMMPS pack_restart_data) ---- */
 
 size_t fix_nh_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap)

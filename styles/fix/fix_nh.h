@@ -15,6 +15,8 @@ void fix_nh_setup(struct gravel *g, struct fix *f);
 void fix_nh_initial_integrate(struct gravel *g, struct fix *f);
 void fix_nh_final_integrate(struct gravel *g, struct fix *f);
 void fix_nh_destroy(struct fix *f);
+/* f_ID: the energy of the chains and the barostat (LAMMPS's compute_scalar) */
+double fix_nh_scalar(struct gravel *g, struct fix *f);
 size_t fix_nh_write_restart(struct gravel *g, struct fix *f, unsigned char *buf, size_t cap);
 void fix_nh_read_restart(struct gravel *g, struct fix *f, const unsigned char *buf,
                          size_t len);
@@ -30,6 +32,8 @@ void fix_nh_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
         .initial_integrate = fix_nh_initial_integrate,                                         \
         .final_integrate = fix_nh_final_integrate,                                             \
         .destroy = fix_nh_destroy,                                                             \
+        .scalar = fix_nh_scalar,                                                               \
+        .ecouple = 1,                                                                          \
         .write_restart = fix_nh_write_restart,                                                 \
         .read_restart = fix_nh_read_restart,                                                   \
     }

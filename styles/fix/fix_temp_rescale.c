@@ -159,6 +159,7 @@ const struct fix_style fix_style_temp_rescale = {
     .end_of_step = end_of_step,
     .modify_param = modify_param,
     .scalar = scalar,
+    .ecouple = 1,
     .destroy = destroy,
     .write_restart = write_restart,
     .read_restart = read_restart,

@@ -59,7 +59,7 @@ CASES = {
 }
 # tally yes: f_lg beside ke and the rotational energy, over two runs
 TALLY = ("fix lg all langevin 1.0 2.0 0.5 48279 omega yes zero yes scale 2 2.0 tally yes\n"
-         "thermo_style custom step ke c_rot f_lg\n"
+         "thermo_style custom step ke c_rot f_lg ecouple econserve\n"
          "thermo_modify format float %.15g\n"
          "thermo 200\n"
          "run 1000\n"
@@ -106,7 +106,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name in CASES:
             compare(name, tmp)
-        ok, got, _, _, _ = thermo_against_lmp("langevin_tally", GAS + TALLY, 4, 10, tmp, 1e-9,
+        ok, got, _, _, _ = thermo_against_lmp("langevin_tally", GAS + TALLY, 6, 10, tmp, 1e-9,
                                               1e-14)
         check("langevin_tally_energy_taken", ok and got[5][3] < -1.0 and got[6][3] == 0.0,
               "rows %s" % got[4:7])
@@ -127,7 +127,7 @@ def main():
                                 "run 0\n", "atom-style targets: not yet"),
         }, GAS, e)
         decks = [(name, GAS + fix + TAIL, 3) for name, fix in CASES.items()]
-        for name, deck, ncol in decks + [("tally", GAS + TALLY, 4)]:
+        for name, deck, ncol in decks + [("tally", GAS + TALLY, 6)]:
             for np in (2, 3):
                 check_thermo_same_on_ranks("langevin_%s_%d_ranks" % (name, np), np,
                                            deck.replace("%.15g", "%.17g"), ncol, e)

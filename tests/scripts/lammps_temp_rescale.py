@@ -7,7 +7,8 @@ bin/gravel, with two rescalings: every 50 steps the whole gas toward a
 target ramped from 5 to 1 (window 0.2, fraction 0.5), and every 100 steps
 the lower half held at 2 (window 0.05, fraction 1) through a temperature
 compute given by `fix_modify temp`. Every thermo row (temp, ke, that
-compute, both fixes' energies) agrees with lmp's to 1e-7 relative (the
+compute, both fixes' energies, ecouple (their sum, not divided by the
+atoms under lj's norm yes, as LAMMPS) and econserve) agrees with lmp's to 1e-7 relative (the
 gas is chaotic: the trajectories part at 1e-9 by the end). Then the errors.
 One line PASS/FAIL per case; without `lmp` the comparison FAILs naming it."""
 import os
@@ -41,7 +42,7 @@ DECK = HEAD + """compute th half temp
 fix tr all temp/rescale 50 5.0 1.0 0.2 0.5
 fix tr2 half temp/rescale 100 2.0 2.0 0.05 1.0
 fix_modify tr2 temp th
-thermo_style custom step temp ke c_th f_tr f_tr2
+thermo_style custom step temp ke c_th f_tr f_tr2 ecouple econserve
 thermo_modify format float %.15g
 thermo 200
 run 2000
@@ -53,14 +54,15 @@ def main():
     try:
         gdir, ldir, edir = folders(tmp, "g", "l", "errors")
         rc, gout = run([GRAVEL], DECK, gdir)
-        g = thermo_rows(gout, 6)
-        check("temp_rescale_run", rc == 0 and len(g) == 11 and g[-1][1] < 2.0 and g[-1][4] < 0,
+        g = thermo_rows(gout, 8)
+        check("temp_rescale_run", rc == 0 and len(g) == 11 and g[-1][1] < 2.0 and g[-1][4] < 0 and
+              abs(g[-1][6] - 125 * (g[-1][4] + g[-1][5])) <= 1e-9 * abs(g[-1][6]),
               "exit %d: %s" % (rc, gout[-600:]))
         if shutil.which("lmp") is None:
             check("temp_rescale_match_lammps", False, "lmp not found (apt-get install lammps)")
         else:
             rc, lout = run(["lmp"], DECK, ldir)
-            lm = thermo_rows(lout, 6)
+            lm = thermo_rows(lout, 8)
             bad = [(r[0], a, b) for r, s in zip(g, lm) for a, b in zip(r, s)
                    if not close(a, b, REL, 1e-12)]
             check("temp_rescale_match_lammps", rc == 0 and len(lm) == len(g) and not bad,
