@@ -18,11 +18,13 @@
  *   plane pair   elements lo face (0) and hi face (1) normal to `axis`; as in
  *                LAMMPS fix wall/gran only the nearer face acts:
  *                del = (x_a - lo) e_a, or -(hi - x_a) e_a
- *   zcylinder    element 0, axis z through x = y = 0 (lo, hi: the axis
- *                relative to the device origin), radius R:
- *                del = -(R - |x_xy|) x_xy / |x_xy|, rwall = -2R inside,
- *                +2R outside; with azimuthal shear the surface moves at
- *                vshear (y, -x) / |x_xy|
+ *   cylinder     element 0, axis along `axis` a through (lo, hi) in the
+ *                dimensions (a + 1, a + 2) mod 3 (relative to the device
+ *                origin), radius R; r the particle's offset from the axis:
+ *                del = -(R - |r|) r / |r|, rwall = -2R inside, +2R outside;
+ *                sheared across its axis the surface moves at speed vshear
+ *                (LAMMPS's zcylinder: vshear (y, -x) / |r|) or turns at
+ *                vshear about it (LIGGGHTS: vshear e_a x r)
  *   triangle     mesh walls (MESH_KERNEL below): the elements are the
  *                triangles of a fix mesh/surface, binned in the mesh's own
  *                frame, history in slots keyed by triangle id
@@ -34,7 +36,7 @@ struct wall_geom {
     int kind, axis;
     REAL lo, hi, radius;
     REAL3 v;                /* translational velocity of the surface */
-    int cyl_shear;          /* zcylinder: azimuthal surface speed vshear */
+    int cyl_shear;          /* cylinder sheared across its axis: CYL_SHEAR_* */
     REAL vshear;
 };
 
@@ -55,6 +57,13 @@ static inline struct wall_geom wall_geom_of(const int kind, const int axis, cons
     return w;
 }
 
+/* Component q of p, and the vector with s at component q (0 elsewhere). */
+static inline REAL comp3(const REAL3 p, const int q) { return q == 0 ? p.x : q == 1 ? p.y : p.z; }
+static inline REAL3 unit3(const int q, const REAL s)
+{
+    return (REAL3)(q == 0 ? s : 0, q == 1 ? s : 0, q == 2 ? s : 0);
+}
+
 /* Closest point of element e to a sphere at x (radius radi): 1 when e may
  * touch it, with del, rwall and the surface velocity vwall filled. */
 static inline int wall_point(const struct wall_geom *w, const int e, const REAL3 xp,
@@ -72,18 +81,22 @@ static inline int wall_point(const struct wall_geom *w, const int e, const REAL3
         *del = (REAL3)(w->axis == 0 ? d : 0, w->axis == 1 ? d : 0, w->axis == 2 ? d : 0);
         return 1;
     }
-    /* WALL_ZCYLINDER: the axis at (lo, hi) (0, 0 but for the device origin) */
-    const REAL3 x = (REAL3)(xp.x - w->lo, xp.y - w->hi, xp.z);
-    const REAL delxy = sqrt(x.x * x.x + x.y * x.y);
+    /* WALL_CYLINDER about axis a: its axis at (lo, hi) in the dimensions b =
+     * a + 1, c = a + 2 (mod 3; LIGGGHTS's order: z through (x, y), x through
+     * (y, z), y through (z, x)), relative to the device origin */
+    const int a = w->axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    const REAL u = comp3(xp, b) - w->lo, v = comp3(xp, c) - w->hi;
+    const REAL delxy = sqrt(u * u + v * v);
     const REAL delr = w->radius - delxy;
     if (delr > radi)
         return 0;
-    *del = (REAL3)(-delr / delxy * x.x, -delr / delxy * x.y, 0);
+    *del = unit3(b, -delr / delxy * u) + unit3(c, -delr / delxy * v);
     *rwall = delxy < w->radius ? -2 * w->radius : 2 * w->radius;
-    if (w->cyl_shear) {
-        vwall->x += w->vshear * x.y / delxy;
-        vwall->y += -w->vshear * x.x / delxy;
-        vwall->z = 0;
+    if (w->cyl_shear == CYL_SHEAR_SPEED) { /* LAMMPS: speed vshear, clockwise about a */
+        *vwall += unit3(b, w->vshear * v / delxy) + unit3(c, -w->vshear * u / delxy);
+        *vwall -= unit3(a, comp3(*vwall, a));
+    } else if (w->cyl_shear == CYL_SHEAR_OMEGA) { /* LIGGGHTS: vshear e_a x (0, u, v) */
+        *vwall = unit3(b, -w->vshear * v) + unit3(c, w->vshear * u);
     }
     return 1;
 }

@@ -6,7 +6,11 @@
 #define GR_WALL_LAYOUT_H
 
 /* Geometry kinds of a plane/cylinder wall (kernels/wall.cl wall_point) */
-enum wall_kind { WALL_PLANE = 0, WALL_ZCYLINDER = 1 };
+enum wall_kind { WALL_PLANE = 0, WALL_CYLINDER = 1 };
+/* A cylinder's surface motion when sheared across its axis: LAMMPS's
+ * azimuthal speed vshear (zcylinder), or LIGGGHTS's angular velocity vshear
+ * about the axis (v = vshear e_axis x r) */
+enum wall_cyl_shear { CYL_SHEAR_NONE = 0, CYL_SHEAR_SPEED = 1, CYL_SHEAR_OMEGA = 2 };
 
 /* REAL of history per wall contact in the row form (a law's whole history
  * row: pair granular's sub-models) */

@@ -88,9 +88,9 @@ void wall_apply(struct gravel *g, struct fix *f, const struct wall_geom *w,
         .shearupdate = !eng_in_setup(g),
         .inclusive = law->inclusive,
     };
-    if (w->kind == WALL_ZCYLINDER) { /* the axis (cx, cy) relative to the origin */
-        ka.lo = ka_coord(g, 0, w->cx);
-        ka.hi = ka_coord(g, 1, w->cy);
+    if (w->kind == WALL_CYLINDER) { /* the axis (cx, cy) relative to the origin */
+        ka.lo = ka_coord(g, (w->axis + 1) % 3, w->cx);
+        ka.hi = ka_coord(g, (w->axis + 2) % 3, w->cy);
     } else {
         ka.lo = ka_coord(g, w->axis, w->lo);
         ka.hi = ka_coord(g, w->axis, w->hi);

@@ -17,12 +17,13 @@ struct fix;
 
 struct wall_geom {
     enum wall_kind kind;
-    int axis;                   /* plane: normal axis 0..2 */
+    int axis;                   /* plane: normal axis 0..2; cylinder: its axis a */
     double lo, hi;              /* plane: face positions (+-WALL_FAR = no face) */
-    double radius;              /* zcylinder */
+    double radius;              /* cylinder */
     double v[3];                /* velocity of the surface */
-    int cyl_shear;              /* zcylinder: azimuthal surface speed vshear */
-    double cx, cy;              /* zcylinder: the axis (0, 0 for LAMMPS's) */
+    int cyl_shear;              /* cylinder: CYL_SHEAR_* (kernels/wall_layout.h) */
+    double cx, cy;              /* cylinder: the axis's coordinates in dimensions a + 1
+                                 * and a + 2 (mod 3) (0, 0 for LAMMPS's zcylinder) */
     double vshear;
 };
 

@@ -32,7 +32,8 @@
  *
  * LIGGGHTS's form: `fix ID group wall/gran model M tangential T [cohesion C]
  * [rolling_friction R] [settings] primitive type W xplane|yplane|zplane p |
- * zcylinder R cx cy` or `... mesh n_meshes N meshes ID...` [shear dim v]:
+ * xcylinder|ycylinder|zcylinder R c1 c2` or `... mesh n_meshes N meshes ID...`
+ * [shear dim v]:
  * pair gran's models (styles/pair/pair_gran.h, kernels/pair_gran.cl) with
  * the materials of (particle type, wall type W; a mesh's own type) from fix
  * property/global, packed at every run as a table by type pair. A primitive
@@ -67,7 +68,7 @@
 #include "wall.h"
 #include "wall_region.h"
 
-enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_ZCYLINDER = 3, W_MESH = 4, W_REGION = 5 };
+enum { W_XPLANE = 0, W_YPLANE = 1, W_ZPLANE = 2, W_CYLINDER = 3, W_MESH = 4, W_REGION = 5 };
 
 
 struct wall {
@@ -85,7 +86,9 @@ struct wall {
     const char *kname;          /* law.kernel's name (a row of wall_gran_kernel) */
     struct lg_model lg;         /* model ...: LIGGGHTS's model (WG_LIGGGHTS) */
     int wtype;                  /* its primitive's type (0: a mesh's own) */
-    double cx, cy;              /* zcylinder axis (LIGGGHTS: any; LAMMPS: 0 0) */
+    int cylaxis;                /* W_CYLINDER: its axis (LAMMPS: z; LIGGGHTS: x, y or z) */
+    double cx, cy;              /* its axis's coordinates in dimensions cylaxis + 1 and
+                                 * cylaxis + 2 (mod 3) (LIGGGHTS: any; LAMMPS: 0 0) */
     double *table;              /* WG_LIGGGHTS: nt x nt x LG_NPARAM, rebuilt at init */
     int table_nt;
     struct mesh_walls mesh;     /* wallstyle mesh */
@@ -319,7 +322,7 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
             i += 3;
             if (i >= argc)
                 gr_error(g, "fix wall/gran primitive: missing the primitive (xplane, yplane, "
-                            "zplane or zcylinder)");
+                            "zplane, xcylinder, ycylinder or zcylinder)");
             const char *ps = ws = argv[i];
             if (!strcmp(ps, "xplane") || !strcmp(ps, "yplane") || !strcmp(ps, "zplane")) {
                 arg_need(g, argc, i, 1, ps);
@@ -327,16 +330,23 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
                 w.lo = arg_double(g, argv[i + 1], "plane position");
                 w.hi = WALL_FAR;
                 i += 2;
-            } else if (!strcmp(ps, "zcylinder")) {
+            } else if (!strcmp(ps, "xcylinder") || !strcmp(ps, "ycylinder") ||
+                       !strcmp(ps, "zcylinder")) {
+                /* LIGGGHTS: R, then the axis's centre in the next two dimensions
+                 * (cyclic: x -> y z, y -> z x, z -> x y) */
+                static const char *const centre[3][2] = {{"cylinder centre y", "cylinder centre z"},
+                                                         {"cylinder centre z", "cylinder centre x"},
+                                                         {"cylinder centre x", "cylinder centre y"}};
                 arg_need(g, argc, i, 3, ps);
-                w.style = W_ZCYLINDER;
+                w.style = W_CYLINDER;
+                w.cylaxis = ps[0] - 'x';
                 w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
-                w.cx = arg_double(g, argv[i + 2], "cylinder axis x");
-                w.cy = arg_double(g, argv[i + 3], "cylinder axis y");
+                w.cx = arg_double(g, argv[i + 2], centre[w.cylaxis][0]);
+                w.cy = arg_double(g, argv[i + 3], centre[w.cylaxis][1]);
                 i += 4;
             } else {
                 gr_error(g, "fix wall/gran primitive '%.64s' is not supported (xplane, yplane, "
-                            "zplane or zcylinder)", ps);
+                            "zplane, xcylinder, ycylinder or zcylinder)", ps);
             }
         } else if (strcmp(argv[i], "mesh")) {
             gr_error(g, "fix wall/gran model ...: unknown keyword '%.64s' (expected primitive "
@@ -393,7 +403,8 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
         i += 3;
     } else if (!strcmp(ws, "zcylinder")) {
         arg_need(g, argc, i, 1, ws);
-        w.style = W_ZCYLINDER;
+        w.style = W_CYLINDER;
+        w.cylaxis = 2;
         w.cylradius = arg_positive(g, argv[i + 1], "cylinder radius");
         i += 2;
     } else if (!strcmp(ws, "mesh")) {
@@ -473,12 +484,14 @@ options:
                     "move/mesh)");
     if (w.style <= W_ZPLANE && g->dom.periodic[w.style])
         gr_error(g, "cannot use a %s wall in the periodic dimension %c", ws, 'x' + w.style);
-    if (w.style == W_ZCYLINDER && (g->dom.periodic[0] || g->dom.periodic[1]))
-        gr_error(g, "cannot use a zcylinder wall with periodic x or y");
+    if (w.style == W_CYLINDER && (g->dom.periodic[(w.cylaxis + 1) % 3] ||
+                                  g->dom.periodic[(w.cylaxis + 2) % 3]))
+        gr_error(g, "cannot use a %s wall with periodic %c or %c", ws,
+                 'x' + (w.cylaxis + 1) % 3, 'x' + (w.cylaxis + 2) % 3);
     if (w.wiggle && w.wshear)
         gr_error(g, "cannot both wiggle and shear a wall");
-    if (w.wiggle && w.style == W_ZCYLINDER && w.axis != 2)
-        gr_error(g, "a zcylinder wall can only wiggle along z");
+    if (w.wiggle && w.style == W_CYLINDER && w.axis != w.cylaxis)
+        gr_error(g, "a %s wall can only wiggle along %c", ws, 'x' + w.cylaxis);
     if (w.wshear && w.style <= W_ZPLANE && w.axis == w.style)
         gr_error(g, "a %s wall cannot shear along its normal %c", ws, 'x' + w.axis);
     if (w.wiggle)
@@ -525,7 +538,8 @@ struct mesh_walls *wall_gran_meshes(struct fix *f)
 
 /* The wall at the current step: wiggle moves the faces along the axis and
  * gives the surface velocity; shear moves the surface tangentially (a
- * zcylinder sheared about x or y moves azimuthally, per atom). */
+ * cylinder sheared across its axis turns, per atom: LAMMPS's zcylinder at
+ * surface speed vshear, LIGGGHTS's at angular velocity vshear). */
 static struct wall_geom geometry(struct gravel *g, const struct wall *w)
 {
     struct wall_geom geom = {0};
@@ -540,12 +554,15 @@ static struct wall_geom geometry(struct gravel *g, const struct wall *w)
     } else if (w->wshear) {
         geom.v[w->axis] = w->vshear;
     }
-    if (w->style == W_ZCYLINDER) {
-        geom.kind = WALL_ZCYLINDER;
+    if (w->style == W_CYLINDER) {
+        geom.kind = WALL_CYLINDER;
+        geom.axis = w->cylaxis;
         geom.radius = w->cylradius;
         geom.cx = w->cx;
         geom.cy = w->cy;
-        geom.cyl_shear = w->wshear && w->axis != 2;
+        geom.cyl_shear = !w->wshear || w->axis == w->cylaxis ? CYL_SHEAR_NONE
+                         : liggghts_model(w->model)         ? CYL_SHEAR_OMEGA
+                                                            : CYL_SHEAR_SPEED;
         geom.vshear = w->vshear;
         if (geom.cyl_shear)
             geom.v[0] = geom.v[1] = geom.v[2] = 0.0;
