@@ -4,7 +4,8 @@
  * the group gets the drag -m v / (damp ratio_type) and a random force of
  * uniform components gamma2 (u - 1/2), gamma2 = sqrt(m) sqrt(24 kB T /
  * damp / dt) / sqrt(ratio_type), T the target (Tstart to Tstop over the
- * run, or an equal-style variable); zero yes removes the group's mean
+ * run, an equal-style variable, or an atom-style variable: each atom's
+ * own target, Tstop unused); zero yes removes the group's mean
  * random force; omega yes thermostats the spins of finite-size spheres the
  * same way (I = 0.4 m r^2 in place of m). The random numbers are LAMMPS's
  * RanMars stream (seed of rank 0) drawn on the host in atom-ID order, three
@@ -20,8 +21,7 @@
  * dt sum F . v over the group in atom-ID order (every rank's atoms as one
  * process's); the scalar f_ID is minus that energy, taken back half a step
  * and restarted at each run's first step, as LAMMPS's compute_scalar. Not
- * yet: gjf, angmom (no ellipsoids here), an atom-style target, fix_modify
- * temp. */
+ * yet: gjf, angmom (no ellipsoids here), fix_modify temp. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,7 +41,8 @@
 
 struct langevin {
     double t_start, t_stop, t_period;
-    char *tvar;                 /* Tstart as v_name (equal-style), else NULL */
+    char *tvar;                 /* Tstart as v_name (equal- or atom-style), else NULL */
+    int tatom;                  /* tvar is atom-style: a target per atom */
     int seed, oflag, zero, tally;
     double energy, energy_onestep; /* tally: LAMMPS's running sum and the last step's term */
     double omega_c1, omega_c2;  /* LAMMPS's rotational drag and noise factors (10/3, 80) */
@@ -133,10 +134,10 @@ static void init(struct gravel *g, struct fix *f)
     if (l->ntypes < g->atoms.ntypes)
         gr_error(g, "fix %s langevin was defined for %d atom types, now there are %d", f->id,
                  l->ntypes, g->atoms.ntypes);
-    if (l->tvar && !var_is_equal(g, l->tvar))
+    l->tatom = l->tvar && var_is_atom(g, l->tvar);
+    if (l->tvar && !l->tatom && !var_is_equal(g, l->tvar))
         gr_error(g, WHO " %s: variable %s %s", f->id, l->tvar,
-                 var_exists(g, l->tvar) ? "is not equal-style (atom-style targets: not yet)"
-                                        : "does not exist");
+                 var_exists(g, l->tvar) ? "is neither equal- nor atom-style" : "does not exist");
     if (l->oflag && !g->eng->rotation)
         gr_error(g, WHO " %s: omega yes needs a run with rotation (atom_style sphere and a "
                     "pair style that turns the particles)", f->id);
@@ -147,11 +148,14 @@ static void init(struct gravel *g, struct fix *f)
     l->k = eng_kernel(g, "langevin_post_force");
 }
 
-/* the target temperature of this step (LAMMPS's compute_target) */
+/* the target temperature of this step (LAMMPS's compute_target; an
+ * atom-style target: per atom, target_atoms) */
 static double target(struct gravel *g, struct langevin *l)
 {
     double t;
-    if (l->tvar) {
+    if (l->tatom) {
+        t = 1.0;
+    } else if (l->tvar) {
         t = var_compute_equal(g, l->tvar);
         if (t < 0.0)
             gr_error(g, WHO ": variable %s returned a negative temperature %g at step %lld",
@@ -161,6 +165,30 @@ static double target(struct gravel *g, struct langevin *l)
         if (delta != 0.0)
             delta /= (double)(g->endstep - g->beginstep);
         t = l->t_start + delta * (l->t_stop - l->t_start);
+    }
+    return t;
+}
+
+/* An atom-style target: sqrt(T_i) of every device atom (device order = host
+ * order after the sync), the group's checked non-negative; NULL otherwise. */
+static double *target_atoms(struct gravel *g, struct fix *f, struct langevin *l,
+                            const unsigned *mask, int n)
+{
+    if (!l->tatom)
+        return NULL;
+    run_sync_host(g);
+    double *t = var_atom_values(g, l->tvar);
+    for (int i = 0; i < n; i++) {
+        if (!(mask[i] & f->groupbit))
+            continue;
+        if (t[i] < 0.0) {
+            const double bad = t[i];
+            free(t);
+            gr_error(g, WHO ": variable %s returned a negative temperature %g for atom %lld at "
+                        "step %lld", l->tvar, bad, (long long)g->eng->tag_seen[i],
+                     (long long)g->step);
+        }
+        t[i] = sqrt(t[i]);
     }
     return t;
 }
@@ -228,6 +256,7 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_read(g, a->type, 0, (size_t)n * sizeof *type, type);
     eng_read_reals(g, a->rmass, (size_t)n, m);
     eng_read_reals(g, a->radius, (size_t)n, rad);
+    double *tatom = target_atoms(g, f, l, mask, n);
     const double c2 = sqrt(24.0 * boltz / l->t_period / dt), c2r = sqrt(l->omega_c2 * boltz /
                                                                          l->t_period / dt);
     /* The stream, one process's: three draws per group atom in ID order,
@@ -248,8 +277,9 @@ static void post_force(struct gravel *g, struct fix *f)
         if (!(mask[i] & f->groupbit))
             continue;
         const int k = par_on(g) ? row_of(rows, ng, (double)e->tag_seen[i]) : next++;
+        const double ts = tatom ? tatom[i] : tsqrt;
         double gamma2 = sqrt(m[i]) * c2;
-        gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
+        gamma2 *= 1.0 / sqrt(l->ratio[type[i] - 1]) * ts;
         for (int d = 0; d < 3; d++) {
             fran[6 * (size_t)i + d] = gamma2 * (u[3 * k + d] - 0.5);
             par_sum_add(g, &fs[d], e->tag_seen[i], fran[6 * (size_t)i + d]);
@@ -258,7 +288,7 @@ static void post_force(struct gravel *g, struct fix *f)
             continue;
         const double inertia = 0.4 * rad[i] * rad[i] * m[i];
         double gamma2r = sqrt(inertia) * c2r;
-        gamma2r *= 1.0 / sqrt(l->ratio[type[i] - 1]) * tsqrt;
+        gamma2r *= 1.0 / sqrt(l->ratio[type[i] - 1]) * ts;
         for (int d = 0; d < 3; d++)
             fran[6 * (size_t)i + 3 + d] = gamma2r * (u[3 * (ng + spin[k]) + d] - 0.5);
     }
@@ -268,6 +298,7 @@ static void post_force(struct gravel *g, struct fix *f)
     free(rows);
     free(spin);
     free(u);
+    free(tatom);
     if (!l->dfran || l->dfran_n < (size_t)n) {
         if (l->dfran)
             clReleaseMemObject(l->dfran);

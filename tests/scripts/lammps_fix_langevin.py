@@ -4,8 +4,8 @@
 1. A dilute granular gas (125 spheres of two types, gran/hooke/history,
    periodic) with `atom_modify sort 0 0.0`, so that LAMMPS's one process
    meets its atoms in creation (= ID) order: fix langevin with a
-   temperature ramp, `omega yes`, `zero yes`, `scale 2 2.0`, and with an
-   equal-style target: thermo ke and the rotational energy equal lmp's to
+   temperature ramp, `omega yes`, `zero yes`, `scale 2 2.0`, with an
+   equal-style target and with an atom-style one (a target per atom): thermo ke and the rotational energy equal lmp's to
    1e-9 relative every 200 steps over 2000 (the same RanMars stream, the
    same forces).
 2. Physics, gravel alone: 1000 point-like spheres that never touch, held at
@@ -56,6 +56,8 @@ CASES = {
     "translation_only": "fix lg all langevin 0.8 0.8 0.2 1234 zero no\n",
     "equal_variable_target": "variable tt equal 0.5+0.0005*step\n"
                              "fix lg all langevin v_tt 1.0 0.5 9999 omega yes\n",
+    "atom_variable_target": "variable ta atom 0.4+0.3*type+0.02*(id%9)\n"
+                            "fix lg all langevin v_ta 1.0 0.5 4242 omega yes zero yes\n",
 }
 # tally yes: f_lg beside ke and the rotational energy, over two runs
 TALLY = ("fix lg all langevin 1.0 2.0 0.5 48279 omega yes zero yes scale 2 2.0 tally yes\n"
@@ -123,8 +125,9 @@ def main():
                         "gjf vhalf is not supported yet"),
             "err_keyword": ("fix lg all langevin 1.0 1.0 0.5 5 bias yes\n",
                             "unknown keyword 'bias'"),
-            "err_atom_target": ("variable t atom 1.0\nfix lg all langevin v_t 1.0 0.5 5\n"
-                                "run 0\n", "atom-style targets: not yet"),
+            "err_atom_target": ("variable t atom 1.0-id\nfix lg all langevin v_t 1.0 0.5 5\n"
+                                "run 0\n", "variable t returned a negative temperature -1 for "
+                                "atom 2"),
         }, GAS, e)
         decks = [(name, GAS + fix + TAIL, 3) for name, fix in CASES.items()]
         for name, deck, ncol in decks + [("tally", GAS + TALLY, 6)]:
