@@ -206,7 +206,8 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "temp/rescale", "damping/cundall", "add/heat", "rigid",
                                         "store/state", "particledistribution/discrete/numberbased",
                                         "particledistribution/discrete/massbased", "deposit",
-                                        "langevin", NULL};
+                                        "langevin", "nve/limit", "nve/noforce", "lineforce",
+                                        "planeforce", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -227,7 +228,7 @@ int par_fix_value_global(const struct fix *f)
                                          /* sums in tag order (force_values.c, fix_indent.c,
                                           * fix_spring_self.c, temperature.c) */
                                          "setforce", "addforce", "aveforce", "spring/self",
-                                         "indent", "temp/rescale", "langevin",
+                                         "indent", "temp/rescale", "langevin", "nve/limit",
                                          "rigid", /* every rank holds every body */
                                          /* the chains' state, the same on every rank */
                                          "nvt", "nvt/sphere", "npt", "npt/sphere", "nph",
