@@ -16,7 +16,11 @@ row agrees to 1e-9 relative:
    rotational energy and the probe group's centre of mass;
 3. lineforce 1 0.5 -1 and 4. planeforce 0 1 0 on the falling bed (after
    gravity and the wall): ke, the rotational energy and the bed's centre of
-   mass (planeforce: y fixed), over 1000 steps (the falling bed is chaotic:
+   mass (planeforce: y fixed);
+5. spring tether (a NULL component, R0 0.5, fix_modify energy yes: pe) and
+   spring couple (the top half to three probe spheres) on the falling bed:
+   the probe's centre of mass, the spring's energy f_sp and its force vector
+   f_sp[1..4], over 1000 steps (the falling bed is chaotic:
    by step 1400 the codes part at 1e-8).
 On 2 MPI ranks each deck prints the rows of one process to 17 digits. Then
 the errors. One line PASS/FAIL per case; without `lmp` the comparisons FAIL
@@ -64,6 +68,15 @@ CASES = {
                     6, 11),
     "lineforce": (falling_bed() + "fix lf all lineforce 1 0.5 -1\n" + TAIL % (("all",) * 3), 6, 11),
     "planeforce": (falling_bed() + "fix pf all planeforce 0 1 0\n" + TAIL % (("all",) * 3), 6, 11),
+    "spring_tether": (falling_bed(extra="group probe id 1 2 3\n") +
+                      "fix sp probe spring tether 20.0 2.0 NULL 4.0 0.5\n"
+                      "fix_modify sp energy yes\n" +
+                      TAIL.replace("v_cz", "v_cz f_sp f_sp[1] f_sp[2] f_sp[3] f_sp[4] pe") %
+                      (("probe",) * 3), 12, 11),
+    "spring_couple": (falling_bed(extra="group probe id 1 2 3\n") +
+                      "fix sp top spring couple probe 15.0 0.5 -0.3 NULL 0.0\n" +
+                      TAIL.replace("v_cz", "v_cz f_sp f_sp[1] f_sp[2] f_sp[3] f_sp[4]") %
+                      (("probe",) * 3), 11, 11),
 }
 
 
@@ -93,6 +106,11 @@ def main():
             "err_noforce_args": ("fix n all nve/noforce 1\n", "takes no arguments, got '1'"),
             "err_lineforce_args": ("fix l all lineforce 1 0\n", "fix lineforce expects x y z"),
             "err_planeforce_zero": ("fix p all planeforce 0 0 0\n", "has no length"),
+            "err_spring_style": ("fix s all spring pull 1 0 0 0 0\n", "expected tether or couple"),
+            "err_spring_group": ("fix s all spring couple nogroup 1 0 0 0 0\n",
+                                 "group 'nogroup' does not exist"),
+            "err_spring_args": ("fix s all spring tether 1 0 0 0\n",
+                                "tether expects K x y z R0, got 4"),
         }, falling_bed(), e)
         decks = [("nve_limit", PACK.replace("%.15g", "%.17g"), 3)] + \
             [(n, d.replace("%.15g", "%.17g"), c) for n, (d, c, _) in CASES.items()]
