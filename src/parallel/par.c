@@ -207,7 +207,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "store/state", "particledistribution/discrete/numberbased",
                                         "particledistribution/discrete/massbased", "deposit",
                                         "langevin", "nve/limit", "nve/noforce", "lineforce",
-                                        "planeforce", "spring", NULL};
+                                        "planeforce", "spring", "temp/berendsen", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -229,7 +229,7 @@ int par_fix_value_global(const struct fix *f)
                                           * fix_spring_self.c, temperature.c) */
                                          "setforce", "addforce", "aveforce", "spring/self",
                                          "indent", "temp/rescale", "langevin", "nve/limit",
-                                         "spring",
+                                         "spring", "temp/berendsen",
                                          "rigid", /* every rank holds every body */
                                          /* the chains' state, the same on every rank */
                                          "nvt", "nvt/sphere", "npt", "npt/sphere", "nph",

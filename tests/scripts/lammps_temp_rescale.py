@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""lammps_temp_rescale.py - fix temp/rescale as LAMMPS's.
+"""lammps_temp_rescale.py - fix temp/rescale and fix temp/berendsen as LAMMPS's.
 
 125 spheres launched at temperature 5 in a periodic box, gran/hooke/history,
 2000 steps, run unchanged by `lmp` (LAMMPS 2021, one process) and
@@ -9,7 +9,11 @@ the lower half held at 2 (window 0.05, fraction 1) through a temperature
 compute given by `fix_modify temp`. Every thermo row (temp, ke, that
 compute, both fixes' energies, ecouple (their sum, not divided by the
 atoms under lj's norm yes, as LAMMPS) and econserve) agrees with lmp's to 1e-7 relative (the
-gas is chaotic: the trajectories part at 1e-9 by the end). Then the errors.
+gas is chaotic: the trajectories part at 1e-9 by the end). The same gas
+under fix temp/berendsen twice (the whole gas toward an equal-style
+variable's target, Tdamp 0.2; the lower half through `fix_modify temp` from 2
+to 1.5, Tdamp 0.05): temp, ke, both fixes' energies, ecouple and econserve to
+1e-7; on 2 MPI ranks the rows of one process to 17 digits. Then the errors.
 One line PASS/FAIL per case; without `lmp` the comparison FAILs naming it."""
 import os
 import shutil
@@ -17,7 +21,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import GRAVEL, check, close, expect_errors, folders, run, thermo_rows  # noqa: E402
+from peer import (GRAVEL, check, check_thermo_same_on_ranks, close, expect_errors,  # noqa: E402
+                  folders, run, thermo_against_lmp, thermo_rows)
 
 REL = 1e-7
 HEAD = """units lj
@@ -47,6 +52,16 @@ thermo_modify format float %.15g
 thermo 200
 run 2000
 """
+BERENDSEN = HEAD + """compute th half temp
+variable tt equal 5.0-0.002*step
+fix tb all temp/berendsen v_tt 1.0 0.2
+fix tb2 half temp/berendsen 2.0 1.5 0.05
+fix_modify tb2 temp th
+thermo_style custom step temp ke c_th f_tb f_tb2 ecouple econserve
+thermo_modify format float %.15g
+thermo 200
+run 2000
+"""
 
 
 def main():
@@ -67,7 +82,16 @@ def main():
                    if not close(a, b, REL, 1e-12)]
             check("temp_rescale_match_lammps", rc == 0 and len(lm) == len(g) and not bad,
                   "lmp exit %d, differences %s" % (rc, bad[:3]))
+        ok, b, _, _, _ = thermo_against_lmp("temp_berendsen_match_lammps", BERENDSEN, 8, 11, tmp,
+                                            REL, 1e-12)
+        check("temp_berendsen_acts", ok and b[-1][1] < 1.5 and b[-1][4] != 0 and b[-1][5] != 0,
+              "rows %s" % b[-2:])
+        check_thermo_same_on_ranks("temp_berendsen_2_ranks", 2,
+                                   BERENDSEN.replace("%.15g", "%.17g"), 8, edir)
         expect_errors({
+            "temp_berendsen_args": ("fix t all temp/berendsen 1 1\n", "fix temp/berendsen "
+                                    "expects Tstart Tstop Tdamp, got 2 arguments"),
+            "temp_berendsen_damp": ("fix t all temp/berendsen 1 1 0\n", "Tdamp must be > 0"),
             "temp_rescale_args": ("fix t all temp/rescale 10 1 1 0.1\n", "ERROR: fix: fix "
                                   "temp/rescale expects N Tstart Tstop window fraction, got 4"),
             "temp_rescale_n": ("fix t all temp/rescale 0 1 1 0.1 1\n", "fix temp/rescale: N must "
