@@ -94,6 +94,8 @@ struct atoms {
                              * style (data files carry them), not to fix property/atom */
     int heat_flag;          /* ATOM_HEAT_* bits: fix property/atom temperature, heatflow
                              * (LAMMPS atom->temperature_flag, heatflow_flag) */
+    char style[16];         /* the atom_style command's style ("": sphere, the default;
+                             * variables' is_active) */
     int ellipsoid_flag;     /* atom_style ellipsoid superellipsoid (LAMMPS atom->
                              * superellipsoid_flag): the FW_ELLIPSOID fields */
     double temp_default;    /* temperature of a new atom (0; fix heat/gran's

@@ -12,6 +12,7 @@
  * state behind: the parser allocates nothing, except the per-atom columns of
  * expr_eval_atoms, freed on every exit. */
 #include "expr.h"
+#include "feature.h"
 
 #include <ctype.h>
 #include <setjmp.h>
@@ -597,7 +598,8 @@ static double math_function(struct ep *e, const char *fn, int n, const double *a
                  {"atan", 1}, {"atan2", 2}, {"ceil", 1},  {"floor", 1}, {"round", 1},
                  {"random", 3}, {"normal", 3}, {"ramp", 2}, {"stagger", 2}, {"logfreq", 3},
                  {"logfreq2", 3}, {"logfreq3", 3}, {"stride", 3}, {"stride2", 6},
-                 {"vdisplace", 2}, {"swiggle", 3}, {"cwiggle", 3}, {NULL, 0}};
+                 {"vdisplace", 2}, {"swiggle", 3}, {"cwiggle", 3}, {"ternary", 3},
+                 {"sign", 1}, {NULL, 0}};
     char msg[200];
     int k = -1;
     for (int i = 0; table[i].name; i++)
@@ -651,6 +653,10 @@ static double math_function(struct ep *e, const char *fn, int n, const double *a
         return floor(x);
     if (!strcmp(fn, "round"))
         return round_half_up(x);
+    if (!strcmp(fn, "ternary")) /* today's LAMMPS: y when x is not 0, else z */
+        return x != 0.0 ? a[1] : a[2];
+    if (!strcmp(fn, "sign")) /* today's LAMMPS: 1 for x >= 0, else -1 */
+        return x >= 0.0 ? 1.0 : -1.0;
     if (is_step_function(fn))
         return step_function(e, fn, a);
     if (!strcmp(fn, "random")) {
@@ -848,6 +854,14 @@ static double parse_primary(struct ep *e)
     if (*e->p == '(') {
         e->p++;
         double v;
+        if (feature_is_function(name)) { /* is_active(...): a constant of the script */
+            char args[2][GR_NAMELEN], err[200];
+            int n = parse_word_args(e, args, 2);
+            int r = feature_value(e->g, name, n, args, err, sizeof err);
+            if (r < 0)
+                ep_fail(e, err);
+            return (double)r;
+        }
         if (is_group_function(name)) {
             char args[3][GR_NAMELEN];
             int n = parse_word_args(e, args, 3);

@@ -77,6 +77,7 @@ void cmd_dimension(struct gravel *g, int argc, char **argv)
 void cmd_atom_style(struct gravel *g, int argc, char **argv)
 {
     g->atoms.ellipsoid_flag = 0;
+    snprintf(g->atoms.style, sizeof g->atoms.style, "%s", argv[0]);
     if (!strcmp(argv[0], "hybrid")) {
         int sphere = 0, molecular = 0, tri = 0;
         for (int i = 1; i < argc; i++) {

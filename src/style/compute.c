@@ -118,6 +118,14 @@ static void check_id(struct gravel *g, const char *id)
                      id);
 }
 
+int compute_style_known(const char *name)
+{
+    for (int k = 0; compute_styles[k]; k++)
+        if (!strcmp(compute_styles[k]->name, name))
+            return 1;
+    return 0;
+}
+
 void cmd_compute(struct gravel *g, int argc, char **argv)
 {
     check_id(g, argv[0]);

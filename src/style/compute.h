@@ -83,6 +83,8 @@ void cmd_uncompute(struct gravel *g, int argc, char **argv);
 
 /* The compute with this ID, or NULL. */
 struct compute *compute_find(struct gravel *g, const char *id);
+/* 1 when `name` is a compute style gravel has. */
+int compute_style_known(const char *name);
 /* Like compute_find but raises "unknown compute ID" naming `who`. */
 struct compute *compute_get(struct gravel *g, const char *id, const char *who);
 

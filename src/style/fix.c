@@ -212,6 +212,14 @@ static int valid_id(const char *s)
 }
 
 /* fix ID group style args... */
+int fix_style_known(const char *name)
+{
+    for (int i = 0; fix_styles[i]; i++)
+        if (!strcmp(fix_styles[i]->name, name))
+            return 1;
+    return 0;
+}
+
 void cmd_fix(struct gravel *g, int argc, char **argv)
 {
     if (!valid_id(argv[0]))

@@ -288,6 +288,8 @@ int fix_output_extensive(const struct fix *f, int index, int col);
 struct fix *fix_find(struct gravel *g, const char *id);
 /* The first fix of this style name (e.g. "gravity"), or NULL. */
 struct fix *fix_find_style(struct gravel *g, const char *style);
+/* 1 when `name` is a fix style gravel has. */
+int fix_style_known(const char *name);
 /* The first fix that applies a uniform acceleration (style->acceleration),
  * or NULL. */
 struct fix *fix_find_acceleration(struct gravel *g);
