@@ -169,24 +169,24 @@ static double target(struct gravel *g, struct langevin *l)
     return t;
 }
 
-/* An atom-style target: sqrt(T_i) of every device atom (device order = host
- * order after the sync), the group's checked non-negative; NULL otherwise. */
-static double *target_atoms(struct gravel *g, struct fix *f, struct langevin *l,
-                            const unsigned *mask, int n)
+/* An atom-style target: sqrt(T_i) of every atom (device order = host order
+ * after the sync), the group's checked non-negative; NULL otherwise. Called
+ * before post_force allocates, so an error leaves nothing behind. */
+static double *target_atoms(struct gravel *g, struct fix *f, struct langevin *l)
 {
     if (!l->tatom)
         return NULL;
     run_sync_host(g);
+    const struct atoms *a = &g->atoms;
     double *t = var_atom_values(g, l->tvar);
-    for (int i = 0; i < n; i++) {
-        if (!(mask[i] & f->groupbit))
+    for (int i = 0; i < a->n; i++) {
+        if (!(a->mask[i] & f->groupbit))
             continue;
         if (t[i] < 0.0) {
             const double bad = t[i];
             free(t);
             gr_error(g, WHO ": variable %s returned a negative temperature %g for atom %lld at "
-                        "step %lld", l->tvar, bad, (long long)g->eng->tag_seen[i],
-                     (long long)g->step);
+                        "step %lld", l->tvar, bad, (long long)a->tag[i], (long long)g->step);
         }
         t[i] = sqrt(t[i]);
     }
@@ -242,6 +242,7 @@ static void post_force(struct gravel *g, struct fix *f)
 {
     struct langevin *l = f->data;
     struct engine *e = g->eng;
+    double *tatom = target_atoms(g, f, l); /* first: it may stop the run */
     struct dev_atoms *a = eng_atoms(g);
     const int n = a->n;
     const double tsqrt = sqrt(target(g, l)), boltz = temp_boltz(g), dt = g->dt;
@@ -256,7 +257,6 @@ static void post_force(struct gravel *g, struct fix *f)
     eng_read(g, a->type, 0, (size_t)n * sizeof *type, type);
     eng_read_reals(g, a->rmass, (size_t)n, m);
     eng_read_reals(g, a->radius, (size_t)n, rad);
-    double *tatom = target_atoms(g, f, l, mask, n);
     const double c2 = sqrt(24.0 * boltz / l->t_period / dt), c2r = sqrt(l->omega_c2 * boltz /
                                                                          l->t_period / dt);
     /* The stream, one process's: three draws per group atom in ID order,
