@@ -96,11 +96,22 @@ static void tc_init(struct gravel *g, struct compute *c)
     chunk_atom_get(g, ((struct temp_chunk *)c->data)->chunk, WHO);
 }
 
-/* The chunk of each atom (0-based; < 0: none or outside the group), each
- * chunk's centre-of-mass velocity (vcm, 3 per chunk) and mass; returns
- * nchunk. */
-static int tc_chunks(struct gravel *g, struct compute *c, int **idx, double **vcm,
-                     double **mass)
+/* One pass over the atoms in the group and a chunk, in atom-ID order: the
+ * sums every output is made of. */
+struct tc_sums {
+    int nchunk;
+    double t, count, tensor[6]; /* whole: sum m |v'|^2, atoms, sum m v'_a v'_b */
+    double *chunk;              /* per chunk: sum m |v'|^2, sum m |vcm|^2, sum m |v - vcm|^2 */
+    int *n;                     /* per chunk: atoms */
+};
+
+static void tc_sums_free(struct tc_sums *s)
+{
+    free(s->chunk);
+    free(s->n);
+}
+
+static void tc_sum(struct gravel *g, struct compute *c, struct tc_sums *s)
 {
     struct temp_chunk *t = c->data;
     const struct atoms *a = &g->atoms;
@@ -108,58 +119,56 @@ static int tc_chunks(struct gravel *g, struct compute *c, int **idx, double **vc
     const struct chunk_grid *grid = chunk_atom_setup(g, ca);
     const int *ichunk = chunk_atom_assign(g, ca);
     const int n = grid->nchunk > 0 ? grid->nchunk : 0;
-    int *k = gr_malloc(g, ((size_t)a->n + 1) * sizeof *k);
-    double *v = gr_calloc(g, 3 * (size_t)(n + 1), sizeof *v), *m = gr_calloc(g, (size_t)n + 1,
-                                                                              sizeof *m);
+    const size_t rows = (size_t)n + 1;
+    double *vcm = gr_calloc(g, 3 * rows, sizeof *vcm), *mass = gr_calloc(g, rows, sizeof *mass);
+    memset(s, 0, sizeof *s);
+    s->nchunk = n;
+    s->chunk = gr_calloc(g, 3 * rows, sizeof *s->chunk);
+    s->n = gr_calloc(g, rows, sizeof *s->n);
     const int *order = atoms_tag_order(g);
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q];
-        k[i] = (a->mask[i] & c->groupbit) ? ichunk[i] - 1 : -1;
-        if (k[i] < 0)
+    for (int q = 0; q < a->n; q++) { /* each chunk's centre-of-mass velocity */
+        const int i = order[q], k = (a->mask[i] & c->groupbit) ? ichunk[i] - 1 : -1;
+        if (k < 0)
             continue;
         for (int d = 0; d < 3; d++)
-            v[3 * k[i] + d] += a->v[3 * i + d] * a->rmass[i];
-        m[k[i]] += a->rmass[i];
+            vcm[3 * k + d] += a->v[3 * i + d] * a->rmass[i];
+        mass[k] += a->rmass[i];
     }
-    for (int j = 0; j < n; j++)
+    for (int k = 0; k < n; k++)
         for (int d = 0; d < 3; d++)
-            v[3 * j + d] = m[j] > 0.0 ? v[3 * j + d] / m[j] : 0.0;
-    *idx = k;
-    *vcm = v;
-    *mass = m;
-    return n;
-}
-
-/* v' of atom i: its velocity, less its chunk's vcm when sub */
-static void thermal_v(const struct atoms *a, int i, const double *vcm, int k, int sub,
-                      double out[3])
-{
-    for (int d = 0; d < 3; d++)
-        out[d] = a->v[3 * i + d] - (sub ? vcm[3 * k + d] : 0.0);
+            vcm[3 * k + d] = mass[k] > 0.0 ? vcm[3 * k + d] / mass[k] : 0.0;
+    for (int q = 0; q < a->n; q++) { /* the sums, v' = v - vcm with com yes */
+        const int i = order[q], k = (a->mask[i] & c->groupbit) ? ichunk[i] - 1 : -1;
+        if (k < 0)
+            continue;
+        const double m = a->rmass[i], *v = a->v + 3 * i, *w = vcm + 3 * k;
+        double r[3], u[3];
+        for (int d = 0; d < 3; d++) {
+            r[d] = v[d] - w[d];
+            u[d] = t->com ? r[d] : v[d];
+        }
+        const double uu = (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * m;
+        s->t += uu;
+        s->count += 1.0;
+        double *e = s->tensor;
+        e[0] += m * u[0] * u[0], e[1] += m * u[1] * u[1], e[2] += m * u[2] * u[2];
+        e[3] += m * u[0] * u[1], e[4] += m * u[0] * u[2], e[5] += m * u[1] * u[2];
+        s->chunk[3 * k] += uu;
+        s->chunk[3 * k + 1] += (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * m;
+        s->chunk[3 * k + 2] += (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) * m;
+        s->n[k]++;
+    }
+    free(vcm);
+    free(mass);
 }
 
 static double tc_scalar(struct gravel *g, struct compute *c)
 {
     struct temp_chunk *t = c->data;
-    const struct atoms *a = &g->atoms;
-    int *k;
-    double *vcm, *mass;
-    const int n = tc_chunks(g, c, &k, &vcm, &mass);
-    double sum = 0.0, count = 0.0;
-    const int *order = atoms_tag_order(g);
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q];
-        if (k[i] < 0)
-            continue;
-        double u[3];
-        thermal_v(a, i, vcm, k[i], t->com, u);
-        sum += (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * a->rmass[i];
-        count += 1.0;
-    }
-    free(k);
-    free(vcm);
-    free(mass);
-    const double dof = n * t->cdof + t->adof * count;
+    struct tc_sums s;
+    tc_sum(g, c, &s);
+    const double dof = s.nchunk * t->cdof + t->adof * s.count, sum = s.t, count = s.count;
+    tc_sums_free(&s);
     if (dof < 0.0 && count > 0.0)
         gr_error(g, WHO " %s: temperature degrees of freedom < 0", c->id);
     return dof > 0.0 ? 1.0 / (dof * temp_boltz(g)) * sum : 0.0; /* LAMMPS's tfactor */
@@ -167,73 +176,32 @@ static double tc_scalar(struct gravel *g, struct compute *c)
 
 static void tc_vector(struct gravel *g, struct compute *c)
 {
-    struct temp_chunk *t = c->data;
-    const struct atoms *a = &g->atoms;
-    int *k;
-    double *vcm, *mass;
-    tc_chunks(g, c, &k, &vcm, &mass);
-    double s[6] = {0};
-    const int *order = atoms_tag_order(g);
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q];
-        if (k[i] < 0)
-            continue;
-        double u[3];
-        const double m = a->rmass[i];
-        thermal_v(a, i, vcm, k[i], t->com, u);
-        s[0] += m * u[0] * u[0], s[1] += m * u[1] * u[1], s[2] += m * u[2] * u[2];
-        s[3] += m * u[0] * u[1], s[4] += m * u[0] * u[2], s[5] += m * u[1] * u[2];
-    }
-    free(k);
-    free(vcm);
-    free(mass);
+    struct tc_sums s;
+    tc_sum(g, c, &s);
     if (!c->vector)
         c->vector = gr_calloc(g, 6, sizeof *c->vector);
-    memcpy(c->vector, s, sizeof s);
+    memcpy(c->vector, s.tensor, sizeof s.tensor);
+    tc_sums_free(&s);
 }
 
 static void tc_array(struct gravel *g, struct compute *c)
 {
     struct temp_chunk *t = c->data;
-    const struct atoms *a = &g->atoms;
-    int *k;
-    double *vcm, *mass;
-    const int n = tc_chunks(g, c, &k, &vcm, &mass);
-    const size_t rows = (size_t)(n > 0 ? n : 1);
-    double *sum = gr_calloc(g, rows * 3, sizeof *sum); /* temp, kecom, internal sums */
-    int *count = gr_calloc(g, rows, sizeof *count);
-    const int *order = atoms_tag_order(g);
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q];
-        if (k[i] < 0)
-            continue;
-        const int j = k[i];
-        const double m = a->rmass[i], *w = vcm + 3 * j;
-        double u[3], r[3];
-        thermal_v(a, i, vcm, j, t->com, u);
-        thermal_v(a, i, vcm, j, 1, r);
-        sum[3 * j] += (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * m;
-        sum[3 * j + 1] += (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * m;
-        sum[3 * j + 2] += (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) * m;
-        count[j]++;
-    }
-    double *out = compute_array_rows(g, c, n);
-    for (int j = 0; j < n; j++)
+    struct tc_sums s;
+    tc_sum(g, c, &s);
+    double *out = compute_array_rows(g, c, s.nchunk);
+    for (int j = 0; j < s.nchunk; j++)
         for (int v = 0; v < t->nvalues; v++) {
             double x;
             if (t->which[v] == TC_TEMP) {
-                const double dof = t->cdof + t->adof * count[j];
-                x = dof > 0.0 ? 1.0 / (dof * temp_boltz(g)) * sum[3 * j] : 0.0;
+                const double dof = t->cdof + t->adof * s.n[j];
+                x = dof > 0.0 ? 1.0 / (dof * temp_boltz(g)) * s.chunk[3 * j] : 0.0;
             } else {
-                x = 0.5 * sum[3 * j + (t->which[v] == TC_KECOM ? 1 : 2)];
+                x = 0.5 * s.chunk[3 * j + (t->which[v] == TC_KECOM ? 1 : 2)];
             }
             out[(size_t)j * t->nvalues + v] = x;
         }
-    free(sum);
-    free(count);
-    free(k);
-    free(vcm);
-    free(mass);
+    tc_sums_free(&s);
 }
 
 const struct compute_style compute_style_temp_chunk = {

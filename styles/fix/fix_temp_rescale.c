@@ -184,28 +184,20 @@ static void read_restart(struct gravel *g, struct fix *f, const unsigned char *b
     memcpy(&((struct temp_rescale *)f->data)->energy, buf, sizeof(double));
 }
 
-const struct fix_style fix_style_temp_rescale = {
-    .name = "temp/rescale",
-    .create = create,
-    .init = init,
-    .end_of_step = end_of_step,
-    .modify_param = modify_param,
-    .scalar = scalar,
-    .ecouple = 1,
-    .destroy = destroy,
-    .write_restart = write_restart,
-    .read_restart = read_restart,
-};
+/* the two styles share every hook; create tells them apart by name */
+#define TEMP_RESCALE_STYLE(ident, nm)                                                          \
+    const struct fix_style fix_style_##ident = {                                               \
+        .name = nm,                                                                            \
+        .create = create,                                                                      \
+        .init = init,                                                                          \
+        .end_of_step = end_of_step,                                                            \
+        .modify_param = modify_param,                                                          \
+        .scalar = scalar,                                                                      \
+        .ecouple = 1,                                                                          \
+        .destroy = destroy,                                                                    \
+        .write_restart = write_restart,                                                        \
+        .read_restart = read_restart,                                                          \
+    }
 
-const struct fix_style fix_style_temp_berendsen = {
-    .name = "temp/berendsen",
-    .create = create,
-    .init = init,
-    .end_of_step = end_of_step,
-    .modify_param = modify_param,
-    .scalar = scalar,
-    .ecouple = 1,
-    .destroy = destroy,
-    .write_restart = write_restart,
-    .read_restart = read_restart,
-};
+TEMP_RESCALE_STYLE(temp_rescale, "temp/rescale");
+TEMP_RESCALE_STYLE(temp_berendsen, "temp/berendsen");

@@ -18,13 +18,12 @@ solved in its principal axes) get the exact omega and angular momentum.
 Then the errors. One line PASS/FAIL per
 case; without `lmp` the comparison FAILs naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from peer import (GRAVEL, check, check_same_on_ranks, close, expect_errors,  # noqa: E402
-                  falling_bed, folders, run)
+                  falling_bed, file_numbers, run, run_with_lmp)
 
 DECK = falling_bed() + """compute bins all chunk/atom bin/1d z lower 2.0 units box
 compute gy all gyration/chunk bins
@@ -60,21 +59,14 @@ run 0
 """
 
 
-def numbers(path):
-    return [float(w) for line in open(path) if not line.startswith("#") for w in line.split()]
-
-
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        g, lm = folders(tmp, "g", "l")
-        rc, out = run([GRAVEL], DECK, g)
-        a = numbers(os.path.join(g, "moments.txt")) if rc == 0 else []
-        if shutil.which("lmp") is None:
+        rc, out, lout, g, lm = run_with_lmp(DECK, tmp, "moments")
+        a = file_numbers(os.path.join(g, "moments.txt")) if rc == 0 else []
+        if lout is None:
             check("chunk_moments_equal_lmp", False, "lmp (Debian package lammps) is not installed")
         else:
-            _, lout = run(["lmp"], DECK, lm)
-            path = os.path.join(lm, "moments.txt")
-            b = numbers(path) if os.path.exists(path) else []
+            b = file_numbers(os.path.join(lm, "moments.txt"))
             # a one-atom chunk's omega is round-off over round-off in lmp (see the top)
             singular = [(x, y) for x, y in zip(a, b) if abs(y) > 1e6]
             bad = [(x, y) for x, y in zip(a, b) if abs(y) <= 1e6 and not close(x, y, 1e-8, 1e-10)]

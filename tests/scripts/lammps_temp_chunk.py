@@ -12,13 +12,12 @@ values: all equal to 1e-9 relative (1e-12 absolute). On 2 MPI ranks the
 file and thermo rows are those of one process. Then the errors. One line
 PASS/FAIL per case; without `lmp` the comparisons FAIL naming it."""
 import os
-import shutil
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (GRAVEL, check, check_same_on_ranks, close, expect_errors,  # noqa: E402
-                  falling_bed, folders, run, thermo_rows)
+from peer import (check, check_same_on_ranks, close, expect_errors,  # noqa: E402
+                  falling_bed, file_numbers, run_with_lmp, thermo_rows)
 
 DECK = falling_bed() + """velocity all set 1.5 0.0 0.0 sum yes units box
 compute bins all chunk/atom bin/1d z lower 2.0 units box
@@ -32,22 +31,15 @@ run 1000
 """
 
 
-def numbers(path):
-    return [float(w) for line in open(path) if not line.startswith("#") for w in line.split()]
-
-
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        g, lm = folders(tmp, "g", "l")
-        rc, out = run([GRAVEL], DECK, g)
-        a = numbers(os.path.join(g, "tchunk.txt")) if rc == 0 else []
+        rc, out, lout, g, lm = run_with_lmp(DECK, tmp, "tchunk")
+        a = file_numbers(os.path.join(g, "tchunk.txt")) if rc == 0 else []
         ta = thermo_rows(out, 7) if rc == 0 else []
-        if shutil.which("lmp") is None:
+        if lout is None:
             check("temp_chunk_equal_lmp", False, "lmp (Debian package lammps) is not installed")
         else:
-            _, lout = run(["lmp"], DECK, lm)
-            path = os.path.join(lm, "tchunk.txt")
-            b = numbers(path) if os.path.exists(path) else []
+            b = file_numbers(os.path.join(lm, "tchunk.txt"))
             tb = thermo_rows(lout, 7)
             bad = [(x, y) for x, y in zip(a, b) if not close(x, y, 1e-9, 1e-12)]
             bad += [(x, y) for r, s in zip(ta, tb) for x, y in zip(r, s)

@@ -171,6 +171,24 @@ def check_restart_continues(name, parent, deck, resumed, dump, n):
     check(name, ref is not None and got == ref, "exit %d: %s" % (rc, out[-400:]))
 
 
+def file_numbers(path):
+    """every number of a text output file (fix ave/time's), its # lines left out;
+    [] when the file is missing"""
+    if not os.path.exists(path):
+        return []
+    return [float(w) for line in open(path) if not line.startswith("#") for w in line.split()]
+
+
+def run_with_lmp(deck, parent, name):
+    """deck run by bin/gravel in parent/name_g and by lmp (when installed) in
+    parent/name_l: (gravel's exit status, its output, lmp's output or None,
+    gravel's folder, lmp's folder)"""
+    g, lm = folders(parent, name + "_g", name + "_l")
+    rc, out = run([GRAVEL], deck, g)
+    lout = run(["lmp"], deck, lm)[1] if shutil.which("lmp") else None
+    return rc, out, lout, g, lm
+
+
 def thermo_against_lmp(name, deck, ncol, nrows, parent, rel, absolute):
     """case name: `deck` run by bin/gravel and lmp in folders parent/name_g and
     parent/name_l prints nrows thermo rows of ncol numbers in each, equal
