@@ -103,8 +103,11 @@ TEST(gran_parse_errors)
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive type 3 zplane 0\n",
                 "primitive type 3 is out of range 1..2", 5);
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive type 1 "
+                    "xcone 0.1 0 0\n",
+                "primitive 'xcone' is not supported", 5);
+    CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive type 1 "
                     "xcylinder 0.1 0 0\n",
-                "primitive 'xcylinder' is not supported", 5);
+                "cannot use a xcylinder wall with periodic y or z", 5);
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history\n",
                 "missing the wall ('primitive type T", 5);
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive kind 1 zplane "
