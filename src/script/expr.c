@@ -12,7 +12,6 @@
  * state behind: the parser allocates nothing, except the per-atom columns of
  * expr_eval_atoms, freed on every exit. */
 #include "expr.h"
-#include "feature.h"
 
 #include <ctype.h>
 #include <setjmp.h>
@@ -26,9 +25,11 @@
 #include "compute.h"
 #include "engine.h"
 #include "error.h"
+#include "feature.h"
 #include "fix.h"
 #include "group.h"
 #include "par.h"
+#include "region.h"
 #include "thermo.h"
 #include "variable.h"
 
@@ -856,8 +857,16 @@ static double parse_primary(struct ep *e)
         double v;
         if (feature_is_function(name)) { /* is_active(...): a constant of the script */
             char args[2][GR_NAMELEN], err[200];
-            int n = parse_word_args(e, args, 2);
-            int r = feature_value(e->g, name, n, args, err, sizeof err);
+            int n = parse_word_args(e, args, 2), r;
+            const char *cat = n == 2 && !strcmp(name, "is_defined") ? args[0] : "";
+            if (!strcmp(cat, "group"))
+                r = group_find(e->g, args[1]) >= 0;
+            else if (!strcmp(cat, "region"))
+                r = region_find(e->g, args[1]) != NULL;
+            else if (!strcmp(cat, "variable"))
+                r = var_exists(e->g, args[1]) != 0;
+            else
+                r = feature_value(e->g, name, n, args, err, sizeof err);
             if (r < 0)
                 ep_fail(e, err);
             return (double)r;

@@ -11,7 +11,8 @@
 /* 1 when fn is one of them. */
 int feature_is_function(const char *fn);
 /* Its value, 0 or 1, for its n word arguments; on a bad call -1 with the
- * reason in err (LAMMPS's errors: an unknown category or name). */
+ * reason in err (LAMMPS's errors: an unknown category or name).
+ * is_defined(group|region|variable, ...) is the caller's (expr.c). */
 int feature_value(struct gravel *g, const char *fn, int n, char args[][GR_NAMELEN], char *err,
                   size_t errlen);
 
