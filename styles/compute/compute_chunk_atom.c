@@ -28,18 +28,28 @@
 #include "args.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
+#include "peratom_input.h"
 #include "region.h"
 
 enum { LOWER, CENTER, UPPER, COORD };
 enum { SC_BOX, SC_LATTICE, SC_REDUCED };
 enum { DISCARD_NO, DISCARD_MIXED, DISCARD_YES };
 
+/* The chunk styles: spatial bins, or one chunk per atom type, molecule ID or
+ * integer value of a per-atom input (c_ID, f_ID, v_name: (int) value, below
+ * 1 excluded) */
+enum chunk_style { CHUNK_BIN, CHUNK_TYPE, CHUNK_MOLECULE, CHUNK_VALUE };
+
 struct chunk_atom {
+    enum chunk_style style;
+    struct peratom_input value;     /* CHUNK_VALUE */
     int ndim, dim[3], originflag[3];
     double origin_user[3], delta[3], invdelta[3], origin[3];
     int minflag[3], maxflag[3];     /* by box dimension */
     double minvalue[3], maxvalue[3];
     int scaleflag, discard, nchunk_once, laid_out;
+    char lock[GR_NAMELEN];          /* ID of the fix that froze the layout ("": none) */
     char region[GR_NAMELEN];        /* "" = none */
     struct chunk_grid grid;
     double *coord;
@@ -73,7 +83,8 @@ static int parse_dim(struct gravel *g, const char *s)
 static void chunk_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     if (argc < 1)
-        gr_error(g, "compute chunk/atom expects a style: bin/1d, bin/2d or bin/3d");
+        gr_error(g, "compute chunk/atom expects a style: bin/1d, bin/2d, bin/3d, type, molecule, "
+                    "c_ID, f_ID or v_name");
     struct chunk_atom *ca = gr_calloc(g, 1, sizeof *ca);
     c->data = ca;
     const char *st = argv[0];
@@ -83,13 +94,23 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
         ca->ndim = 2;
     else if (!strcmp(st, "bin/3d"))
         ca->ndim = 3;
-    else if (!strcmp(st, "bin/sphere") || !strcmp(st, "bin/cylinder") || !strcmp(st, "type") ||
-             !strcmp(st, "molecule") || !strncmp(st, "c_", 2) || !strncmp(st, "f_", 2) ||
-             !strncmp(st, "v_", 2))
+    else if (!strcmp(st, "type"))
+        ca->style = CHUNK_TYPE;
+    else if (!strcmp(st, "molecule"))
+        ca->style = CHUNK_MOLECULE;
+    else if (!strncmp(st, "c_", 2) || !strncmp(st, "f_", 2) || !strncmp(st, "v_", 2)) {
+        ca->style = CHUNK_VALUE;
+        peratom_input_parse(g, st, PERATOM_XVF, &ca->value, "c_ID, c_ID[I], f_ID, f_ID[I], v_name",
+                            "compute chunk/atom");
+    } else if (!strcmp(st, "bin/sphere") || !strcmp(st, "bin/cylinder"))
         gr_error(g, "compute chunk/atom: style '%.32s' is not supported (bin/1d, bin/2d, "
-                    "bin/3d)", st);
+                    "bin/3d, type, molecule, c_ID, f_ID, v_name)", st);
     else
-        gr_error(g, "compute chunk/atom: unknown style '%.32s' (bin/1d, bin/2d, bin/3d)", st);
+        gr_error(g, "compute chunk/atom: unknown style '%.32s' (bin/1d, bin/2d, bin/3d, type, "
+                    "molecule, c_ID, f_ID, v_name)", st);
+    if (ca->style == CHUNK_MOLECULE && !g->atoms.molecule_flag)
+        gr_error(g, "compute chunk/atom molecule: the atoms have no molecule IDs (atom_style "
+                    "hybrid sphere molecular)");
     if (argc < 1 + 3 * ca->ndim)
         gr_error(g, "compute chunk/atom %s expects %d arguments (dim origin delta each), got "
                     "%d", st, 3 * ca->ndim, argc - 1);
@@ -124,6 +145,11 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
     int nchunk_set = 0;
     for (int i = iarg; i < argc; i++) {
         const char *kw = argv[i];
+        if (ca->style != CHUNK_BIN &&
+            (!strcmp(kw, "units") || !strcmp(kw, "bound") || !strcmp(kw, "discard") ||
+             !strcmp(kw, "pbc")))
+            gr_error(g, "compute chunk/atom %s: keyword '%s' applies to the bin styles only", st,
+                     kw);
         if (!strcmp(kw, "units")) {
             arg_need(g, argc, i, 1, kw);
             const char *v = argv[++i];
@@ -236,11 +262,73 @@ int chunk_atom_ncoord(const struct compute *c)
     return ((const struct chunk_atom *)c->data)->ndim;
 }
 
+static void ichunk_room(struct gravel *g, struct compute *c, struct chunk_atom *ca, int n)
+{
+    if (n <= ca->cap)
+        return;
+    int cap = n > 16 ? n : 16;
+    int *p = realloc(ca->ichunk, (size_t)cap * sizeof(int));
+    if (!p)
+        gr_error(g, "out of memory for compute %s", c->id);
+    ca->ichunk = p;
+    ca->cap = cap;
+}
+
+/* The non-bin styles' chunk of every host atom (0: outside the group or the
+ * region, or a value below 1); returns the largest. */
+static int assign_ids(struct gravel *g, struct compute *c, struct chunk_atom *ca)
+{
+    const struct atoms *a = &g->atoms;
+    ichunk_room(g, c, ca, a->n);
+    const struct region *r = ca->region[0] ? region_get(g, ca->region) : NULL;
+    int stride = 1, hi = 0;
+    double *owned = NULL;
+    const double *val = ca->style == CHUNK_VALUE
+                            ? peratom_input_values(g, &ca->value, &stride, &owned,
+                                                   "compute chunk/atom")
+                            : NULL;
+    for (int i = 0; i < a->n; i++) {
+        int id = 0;
+        if ((a->mask[i] & c->groupbit) && !(r && !region_match(r, a->x + 3 * (size_t)i))) {
+            if (ca->style == CHUNK_TYPE)
+                id = a->type[i];
+            else if (ca->style == CHUNK_MOLECULE)
+                id = a->mol[i] > 0 && a->mol[i] <= 1 << 30 ? (int)a->mol[i] : 0;
+            else {
+                const double v = val[(size_t)i * stride];
+                id = v >= 1.0 && v < 1073741824.0 ? (int)v : 0; /* LAMMPS's (int) cast */
+            }
+        }
+        ca->ichunk[i] = id;
+        hi = id > hi ? id : hi;
+    }
+    free(owned);
+    return hi;
+}
+
+/* The non-bin styles' layout: nchunk the atom types, or the largest ID
+ * (at least 1); no coordinates; the box's volume. */
+static const struct chunk_grid *setup_ids(struct gravel *g, struct compute *c,
+                                          struct chunk_atom *ca)
+{
+    struct chunk_grid *gr = &ca->grid;
+    const int hi = assign_ids(g, c, ca);
+    gr->ndim = 0;
+    gr->nchunk = ca->style == CHUNK_TYPE ? g->atoms.ntypes : hi > 0 ? hi : 1;
+    gr->coord = NULL;
+    const double *lo = g->dom.lo, *up = g->dom.hi;
+    gr->volume = (up[0] - lo[0]) * (up[1] - lo[1]) * (g->dom.dimension == 3 ? up[2] - lo[2] : 1.0);
+    ca->laid_out = 1;
+    return gr;
+}
+
 const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
 {
     struct chunk_atom *ca = c->data;
-    if (ca->laid_out && ca->nchunk_once)
+    if (ca->laid_out && (ca->nchunk_once || (ca->lock[0] && fix_find(g, ca->lock))))
         return &ca->grid;
+    if (ca->style != CHUNK_BIN)
+        return setup_ids(g, c, ca);
     double binlo[3], binhi[3], prd[3];
     if (g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
         gr_error(g, "compute %s chunk/atom: spatial bins in a tilted triclinic box are not "
@@ -325,14 +413,14 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
     const struct atoms *a = &g->atoms;
     if (!ca->laid_out)
         chunk_atom_setup(g, c);
-    if (a->n > ca->cap) {
-        int cap = a->n > 16 ? a->n : 16;
-        int *p = realloc(ca->ichunk, (size_t)cap * sizeof(int));
-        if (!p)
-            gr_error(g, "out of memory for compute %s", c->id);
-        ca->ichunk = p;
-        ca->cap = cap;
+    if (ca->style != CHUNK_BIN) { /* IDs beyond a frozen count (nchunk once) are out */
+        assign_ids(g, c, ca);
+        for (int i = 0; i < a->n; i++)
+            if (ca->ichunk[i] > ca->grid.nchunk)
+                ca->ichunk[i] = 0;
+        return ca->ichunk;
     }
+    ichunk_room(g, c, ca, a->n);
     const struct region *r = ca->region[0] ? region_get(g, ca->region) : NULL;
     const struct chunk_grid *gr = &ca->grid;
     for (int i = 0; i < a->n; i++) {
@@ -381,6 +469,22 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
             ca->ichunk[i] = id + 1;
     }
     return ca->ichunk;
+}
+
+void chunk_atom_lock(struct gravel *g, struct compute *c, const char *fix_id)
+{
+    struct chunk_atom *ca = c->data;
+    if (ca->lock[0] && strcmp(ca->lock, fix_id) && fix_find(g, ca->lock))
+        gr_error(g, "compute %s chunk/atom: fixes %s and %s average over it with epochs that "
+                    "do not line up (LAMMPS: incompatible ways)", c->id, ca->lock, fix_id);
+    snprintf(ca->lock, sizeof ca->lock, "%s", fix_id);
+}
+
+void chunk_atom_unlock(struct compute *c, const char *fix_id)
+{
+    struct chunk_atom *ca = c->data;
+    if (!strcmp(ca->lock, fix_id))
+        ca->lock[0] = '\0';
 }
 
 static double chunk_scalar(struct gravel *g, struct compute *c)

@@ -31,5 +31,11 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c);
 /* Chunk of every host atom (1..nchunk, 0 = excluded: outside the group or
  * region, or discarded), on the grid of the last chunk_atom_setup. */
 const int *chunk_atom_assign(struct gravel *g, struct compute *c);
+/* LAMMPS's lock: while the fix `fix_id` (averaging over chunks) holds it,
+ * the layout (nchunk, bins) stays as its epoch's first sample set it, for
+ * every reader; another fix's lock is an error (a fix that is gone holds
+ * none). */
+void chunk_atom_lock(struct gravel *g, struct compute *c, const char *fix_id);
+void chunk_atom_unlock(struct compute *c, const char *fix_id);
 
 #endif

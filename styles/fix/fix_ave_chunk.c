@@ -206,6 +206,9 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (a->w.kind != AVE_RUNNING && a->af.overwrite)
         gr_error(g, "fix ave/chunk: overwrite needs ave running");
+    if (a->vtk && chunk_atom_ncoord(cc) == 0)
+        gr_error(g, "fix ave/chunk: vtk needs spatial bins (compute %s is not bin/1d, bin/2d or "
+                    "bin/3d)", cc->id);
     if (file) {
         ave_file_open(g, &a->af, file, append, "fix ave/chunk");
         FILE *fp = a->af.fp;
@@ -270,6 +273,8 @@ static void take(struct gravel *g, struct fix *f)
     const int nv = a->nvalues;
     if (a->s.irepeat == 0) {
         a->grid = chunk_atom_setup(g, cc);
+        if (a->s.nrepeat > 1 && a->w.kind == AVE_ONE) /* LAMMPS: nchunk fixed for the epoch */
+            chunk_atom_lock(g, cc, f->id);
         grow(g, a, a->grid->nchunk);
         for (int m = 0; m < a->nchunk; m++) {
             a->count_many[m] = a->count_sum[m] = 0;
@@ -354,6 +359,7 @@ static void take(struct gravel *g, struct fix *f)
     }
     if (!ave_sched_next(g, &a->s))
         return;
+    chunk_atom_unlock(cc, f->id);
     /* the epoch's average */
     double repeat = a->s.nrepeat;
     for (int m = 0; m < a->nchunk; m++) {

@@ -138,7 +138,7 @@ ERRORS = [
     ("compute c all chunk/atom bin/2d x lower 1 x lower 1", "dimension x is binned twice"),
     ("compute c all chunk/atom bin/1d q lower 1", "dimension must be x, y or z"),
     ("compute c all chunk/atom bin/1d x lower -1", "bin width delta"),
-    ("compute c all chunk/atom type", "is not supported"),
+    ("compute c all chunk/atom bin/cylinder z lower 0.1 0 0 0 1 10", "is not supported"),
     ("compute c all chunk/atom bin/1d x lower 1 units furlong", "units must be box"),
     ("compute c all chunk/atom bin/1d x lower 1\nfix a all ave/chunk 10 3 20 c vx",
      "Nfreq must be a multiple"),
