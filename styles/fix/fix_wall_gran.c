@@ -298,13 +298,13 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
             gr_error(g, "fix wall/gran/region: LIGGGHTS's 'model ...' form is not supported "
                         "(use fix wall/gran model ... primitive or mesh)");
         i = lg_parse(g, &w.lg, argc, argv, stop, "fix wall/gran");
-        if (w.lg.nm == LG_N_HOOKE_HYSTERESIS)
-            gr_error(g, "fix wall/gran: model hooke/hysteresis is not supported for walls (hertz, "
-                        "hooke, hertz/stiffness, hooke/stiffness are)");
         w.history = w.lg.tm ? 3 : 0;
-        if (w.lg.roll >= LG_R_EPSD) { /* the row form: shear, then the spring torque */
+        const int hyst = w.lg.nm == LG_N_HOOKE_HYSTERESIS;
+        if (w.lg.roll >= LG_R_EPSD || hyst) {
+            /* the row form (kernels/pair_gran.cl gran_model_eval_row): hooke/hysteresis's
+             * largest overlap, the shear, then an epsd model's spring torque */
             w.model = WG_LIGGGHTS_ROW;
-            w.history = 6;
+            w.history = hyst + 3 + (w.lg.roll >= LG_R_EPSD ? 3 : 0);
         }
         if (i >= argc)
             gr_error(g, "fix wall/gran model ...: missing the wall ('primitive type T ...' or "

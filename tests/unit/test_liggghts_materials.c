@@ -83,9 +83,6 @@ TEST(gran_parse_errors)
 {
     CHECK_ERROR(BOX "pair_style gran model hooke/plastic tangential history\n",
                 "model 'hooke/plastic' is not supported", 5);
-    CHECK_ERROR(BOX "fix w all wall/gran model hooke/hysteresis tangential history primitive "
-                    "type 1 zplane 0\n",
-                "hooke/hysteresis is not supported for walls", 5);
     CHECK_ERROR(BOX "pair_style gran model hertz\n", "expected 'tangential history|no_history'",
                 5);
     CHECK_ERROR(BOX "pair_style gran tangential history\n", "expected 'model hertz", 5);
