@@ -6,7 +6,9 @@
  *   keywords: units box|lattice|reduced (default lattice), bound dim lo hi
  *   (lo = lower|value, hi = upper|value), discard mixed|yes|no (default
  *   mixed), region ID, nchunk once|every (default every; once with units
- *   reduced), ids every, pbc yes|no (no effect on bin styles), compress no.
+ *   reduced), ids every, pbc yes|no (no effect on bin styles), compress
+ *   (molecule and value styles: the IDs present numbered 1..N in ascending
+ *   order, the original IDs kept for property/chunk).
  *
  * Bins: in each binned dimension the lattice of edges origin + k delta is
  * extended to cover [boxlo, boxhi] (or the bound), exactly as LAMMPS: lo is
@@ -21,6 +23,7 @@
  * delta / box length over the binned dimensions. */
 #include "compute_chunk_atom.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,6 +53,8 @@ struct chunk_atom {
     double minvalue[3], maxvalue[3];
     int scaleflag, discard, nchunk_once, laid_out;
     char lock[GR_NAMELEN];          /* ID of the fix that froze the layout ("": none) */
+    int compress;                   /* compress yes: ids[] the original IDs, ascending */
+    int *ids, nids;
     char region[GR_NAMELEN];        /* "" = none */
     struct chunk_grid grid;
     double *coord;
@@ -63,6 +68,7 @@ static void chunk_destroy(struct compute *c)
     if (ca) {
         free(ca->coord);
         free(ca->ichunk);
+        free(ca->ids);
     }
     free(ca);
     c->data = NULL;
@@ -215,8 +221,10 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
             arg_yesno(g, argv[++i], "pbc");
         } else if (!strcmp(kw, "compress")) {
             arg_need(g, argc, i, 1, kw);
-            if (arg_yesno(g, argv[++i], "compress"))
-                gr_error(g, "compute chunk/atom: compress yes is not supported");
+            ca->compress = arg_yesno(g, argv[++i], "compress");
+            if (ca->compress && ca->style != CHUNK_MOLECULE && ca->style != CHUNK_VALUE)
+                gr_error(g, "compute chunk/atom %s: compress yes applies to the molecule and "
+                            "c_ID/f_ID/v_name styles (gravel)", st);
         } else if (!strcmp(kw, "limit")) {
             gr_error(g, "compute chunk/atom: keyword 'limit' is not supported");
         } else {
@@ -257,9 +265,20 @@ struct compute *chunk_atom_get(struct gravel *g, const char *id, const char *who
     return c;
 }
 
+int chunk_atom_compressed(const struct compute *c)
+{
+    return ((const struct chunk_atom *)c->data)->compress;
+}
+
 int chunk_atom_ncoord(const struct compute *c)
 {
     return ((const struct chunk_atom *)c->data)->ndim;
+}
+
+static int int_cmp(const void *a, const void *b)
+{
+    const int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
 }
 
 static void ichunk_room(struct gravel *g, struct compute *c, struct chunk_atom *ca, int n)
@@ -274,8 +293,11 @@ static void ichunk_room(struct gravel *g, struct compute *c, struct chunk_atom *
     ca->cap = cap;
 }
 
-/* The non-bin styles' chunk of every host atom (0: outside the group or the
- * region, or a value below 1); returns the largest. */
+/* The non-bin styles' chunk of every host atom: 0 outside the group or the
+ * region or for an ID below 1; with compress every ID of an atom in the group
+ * and region (0 and negative ones too, as LAMMPS hashes them) and CHUNK_OUT for
+ * the others. Returns the largest ID. */
+#define CHUNK_OUT INT_MIN
 static int assign_ids(struct gravel *g, struct compute *c, struct chunk_atom *ca)
 {
     const struct atoms *a = &g->atoms;
@@ -288,16 +310,15 @@ static int assign_ids(struct gravel *g, struct compute *c, struct chunk_atom *ca
                                                    "compute chunk/atom")
                             : NULL;
     for (int i = 0; i < a->n; i++) {
-        int id = 0;
+        int id = ca->compress ? CHUNK_OUT : 0;
         if ((a->mask[i] & c->groupbit) && !(r && !region_match(r, a->x + 3 * (size_t)i))) {
-            if (ca->style == CHUNK_TYPE)
-                id = a->type[i];
-            else if (ca->style == CHUNK_MOLECULE)
-                id = a->mol[i] > 0 && a->mol[i] <= 1 << 30 ? (int)a->mol[i] : 0;
-            else {
-                const double v = val[(size_t)i * stride];
-                id = v >= 1.0 && v < 1073741824.0 ? (int)v : 0; /* LAMMPS's (int) cast */
-            }
+            double v = ca->style == CHUNK_TYPE       ? a->type[i]
+                       : ca->style == CHUNK_MOLECULE ? (double)a->mol[i]
+                                                     : val[(size_t)i * stride];
+            v = v > 1073741823.0 ? 1073741823.0 : v < -1073741823.0 ? -1073741823.0 : v;
+            id = (int)v; /* LAMMPS's (int) cast */
+            if (!ca->compress && id < 1)
+                id = 0;
         }
         ca->ichunk[i] = id;
         hi = id > hi ? id : hi;
@@ -315,6 +336,23 @@ static const struct chunk_grid *setup_ids(struct gravel *g, struct compute *c,
     const int hi = assign_ids(g, c, ca);
     gr->ndim = 0;
     gr->nchunk = ca->style == CHUNK_TYPE ? g->atoms.ntypes : hi > 0 ? hi : 1;
+    gr->ids = NULL;
+    if (ca->compress) { /* the IDs present, ascending: chunk k is ids[k - 1] */
+        free(ca->ids);
+        ca->ids = gr_malloc(g, ((size_t)g->atoms.n + 1) * sizeof *ca->ids);
+        ca->nids = 0;
+        for (int i = 0; i < g->atoms.n; i++)
+            if (ca->ichunk[i] != CHUNK_OUT)
+                ca->ids[ca->nids++] = ca->ichunk[i];
+        qsort(ca->ids, (size_t)ca->nids, sizeof *ca->ids, int_cmp);
+        int u = 0;
+        for (int k = 0; k < ca->nids; k++)
+            if (u == 0 || ca->ids[k] != ca->ids[u - 1])
+                ca->ids[u++] = ca->ids[k];
+        ca->nids = u;
+        gr->nchunk = u > 0 ? u : 1;
+        gr->ids = ca->ids;
+    }
     gr->coord = NULL;
     const double *lo = g->dom.lo, *up = g->dom.hi;
     gr->volume = (up[0] - lo[0]) * (up[1] - lo[1]) * (g->dom.dimension == 3 ? up[2] - lo[2] : 1.0);
@@ -415,9 +453,16 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
         chunk_atom_setup(g, c);
     if (ca->style != CHUNK_BIN) { /* IDs beyond a frozen count (nchunk once) are out */
         assign_ids(g, c, ca);
-        for (int i = 0; i < a->n; i++)
-            if (ca->ichunk[i] > ca->grid.nchunk)
-                ca->ichunk[i] = 0;
+        for (int i = 0; i < a->n; i++) {
+            int *id = &ca->ichunk[i];
+            if (ca->compress) { /* its place among the layout's IDs, or none */
+                const int *hit = *id == CHUNK_OUT ? NULL
+                                 : bsearch(id, ca->ids, (size_t)ca->nids, sizeof *id, int_cmp);
+                *id = hit ? (int)(hit - ca->ids) + 1 : 0;
+            }
+            if (*id > ca->grid.nchunk)
+                *id = 0;
+        }
         return ca->ichunk;
     }
     ichunk_room(g, c, ca, a->n);

@@ -18,12 +18,16 @@ struct chunk_grid {
     double volume;              /* LAMMPS's chunk_volume_scalar (box units^3) */
     const double *coord;        /* [nchunk][ndim] bin centres, LAMMPS order:
                                    the last binned dimension varies fastest */
+    const int *ids;             /* compress yes: [nchunk] each chunk's original ID
+                                   (NULL: chunk k is ID k) */
 };
 
 /* The chunk/atom compute `id`, or an error naming `who`. */
 struct compute *chunk_atom_get(struct gravel *g, const char *id, const char *who);
 /* Binned dimensions (LAMMPS ncoord), known from the arguments. */
 int chunk_atom_ncoord(const struct compute *c);
+/* 1 with compress yes (the grid's ids are the original chunk IDs). */
+int chunk_atom_compressed(const struct compute *c);
 /* Lay out the bins on the current box (LAMMPS setup_chunks); returns the
  * grid, valid until the next call. nchunk once: laid out at the first call
  * only. */

@@ -21,7 +21,7 @@
 #define WHO "compute property/chunk"
 #define PC_MAXIN 16
 
-enum { P_COUNT, P_COORD1, P_COORD2, P_COORD3 };
+enum { P_COUNT, P_ID, P_COORD1, P_COORD2, P_COORD3 };
 
 struct property_chunk {
     char chunk[GR_NAMELEN];
@@ -45,10 +45,12 @@ static void pc_create(struct gravel *g, struct compute *c, int argc, char **argv
         int p;
         if (!strcmp(s, "count"))
             p = P_COUNT;
-        else if (!strcmp(s, "id"))
-            gr_error(g, WHO ": compute chunk/atom %s stores no IDs for compute property/chunk "
-                        "(id needs compress yes, which gravel's chunk/atom does not have)",
-                     pc->chunk);
+        else if (!strcmp(s, "id")) {
+            if (!chunk_atom_compressed(chunk_atom_get(g, pc->chunk, WHO)))
+                gr_error(g, WHO ": id needs compute chunk/atom %s with compress yes (the "
+                            "original IDs), as LAMMPS", pc->chunk);
+            p = P_ID;
+        }
         else if (!strcmp(s, "coord1") || !strcmp(s, "coord2") || !strcmp(s, "coord3"))
             p = P_COORD1 + (s[5] - '1');
         else
@@ -93,6 +95,7 @@ static void pc_fill(struct gravel *g, struct compute *c, double **outp, int *row
             double v = 0;
             switch (pc->in[k]) {
             case P_COUNT: v = count[m]; break;
+            case P_ID: v = grid->ids ? grid->ids[m] : m + 1; break;
             default: v = grid->coord[(size_t)m * grid->ndim + (pc->in[k] - P_COORD1)]; break;
             }
             out[(size_t)m * pc->n + k] = v;

@@ -15,7 +15,9 @@ compute (image flags: every atom excluded, one empty chunk); thermo prints
 the chunk counts. Every file's numbers and the thermo rows agree to 1e-9.
 On 2 MPI ranks the files are byte-identical to one process's. Then the
 errors. Chunks by molecule ID (IDs 1, 2 and 4: chunk 3 is empty) give
-lmp's centres of mass (compute com/chunk) to 1e-9. One line PASS/FAIL per case; without `lmp` the comparison FAILs
+lmp's centres of mass (compute com/chunk) to 1e-9, and with compress yes
+(ID 0 a chunk too, as LAMMPS hashes it) the same and property/chunk's id
+column 0 1 2 4. One line PASS/FAIL per case; without `lmp` the comparison FAILs
 naming it."""
 import os
 import sys
@@ -75,6 +77,12 @@ thermo_style custom step c_cm
 thermo 250
 run 500
 """
+# compress yes: the IDs present (0 for the six atoms without a molecule, 1, 2, 4) numbered
+# 1..4 in ascending order, property/chunk id the original IDs
+MOLC = MOL.replace("compute cm all chunk/atom molecule\n",
+                   "compute cm all chunk/atom molecule compress yes\n"
+                   "compute pi all property/chunk cm id count\n").replace(
+    "c_com[*] mode vector", "c_com[*] c_pi[*] mode vector")
 
 
 def main():
@@ -100,6 +108,14 @@ def main():
         bad = [(x, y) for x, y in zip(a, b) if not close(x, y, 1e-9, 1e-12)]
         check("chunk_molecule_equal_lmp", len(a) == len(b) == 54 and not bad and a[10:14] == [3, 0, 0, 0],
               "%d / %d numbers, %s: %s" % (len(a), len(b), bad[:3], out[-300:]))
+        rc, out, lout, g3, lm3 = run_with_lmp(MOLC, tmp, "compress")
+        a = file_numbers(os.path.join(g3, "mol.txt")) if rc == 0 else []
+        b = file_numbers(os.path.join(lm3, "mol.txt")) if lout is not None else []
+        bad = [(x, y) for x, y in zip(a, b) if not close(x, y, 1e-9, 1e-12)]
+        ids = [a[2 + 6 * k + 4] for k in range(4)] if len(a) >= 26 else []
+        check("chunk_compress_equal_lmp", len(a) == len(b) == 78 and not bad and
+              ids == [0, 1, 2, 4], "%d / %d numbers, ids %s, %s: %s" %
+              (len(a), len(b), ids, bad[:3], out[-300:]))
         counts = [r[2] for r in ta]
         check("chunk_value_count_grows", len(ta) == 7 and counts[0] == 3 and max(counts) >= 4,
               "layer chunk counts %s" % counts)
@@ -111,6 +127,10 @@ def main():
             "err_molecule": ("compute c all chunk/atom molecule\n", "have no molecule IDs"),
             "err_bin_keyword": ("compute c all chunk/atom type units box\n",
                                 "applies to the bin styles only"),
+            "err_compress_type": ("compute c all chunk/atom type compress yes\n",
+                                  "compress yes applies to the molecule"),
+            "err_id_uncompressed": ("compute c all chunk/atom type\n"
+                                    "compute p all property/chunk c id\n", "id needs compute"),
             "err_value": ("compute c all chunk/atom v_nope\nthermo_style custom step c_c\n"
                           "run 0\n", "nope"),
             "err_vtk": ("compute c all chunk/atom type\n"

@@ -331,7 +331,7 @@ def errors(tmp):
         "err_property_chunk_input": ("compute c all property/chunk bins count mass\n",
                                      "invalid input 'mass'"),
         "err_property_chunk_id": ("compute c all property/chunk bins id\n",
-                                  "stores no IDs for compute property/chunk"),
+                                  "id needs compute chunk/atom bins with compress yes"),
         "err_property_chunk_coord2": ("compute c all property/chunk bins coord2\n",
                                       "coord2 needs a chunk/atom compute binned in 2"),
     }, head, tmp)
