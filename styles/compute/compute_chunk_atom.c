@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "atoms.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
@@ -530,6 +531,34 @@ void chunk_atom_unlock(struct compute *c, const char *fix_id)
     struct chunk_atom *ca = c->data;
     if (!strcmp(ca->lock, fix_id))
         ca->lock[0] = '\0';
+}
+
+void chunk_mass_mean(struct gravel *g, unsigned groupbit, const int *ichunk, int nchunk,
+                     const double *u, double *mean, double *mass)
+{
+    const struct atoms *a = &g->atoms;
+    double *m = gr_calloc(g, (size_t)nchunk + 1, sizeof *m);
+    memset(mean, 0, 3 * (size_t)nchunk * sizeof *mean);
+    const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
+    for (int q = 0; q < a->n; q++) {
+        const int i = order[q], k = ichunk[i] - 1;
+        if (!(a->mask[i] & groupbit) || k < 0 || k >= nchunk)
+            continue;
+        double x[3];
+        if (u)
+            memcpy(x, u + 3 * (size_t)i, sizeof x);
+        else
+            domain_unmap(g, a->x + 3 * (size_t)i, a->image + 3 * (size_t)i, x);
+        m[k] += a->rmass[i];
+        for (int d = 0; d < 3; d++)
+            mean[3 * k + d] += x[d] * a->rmass[i];
+    }
+    for (int k = 0; k < nchunk; k++)
+        for (int d = 0; d < 3; d++)
+            mean[3 * k + d] = m[k] > 0 ? mean[3 * k + d] / m[k] : 0.0;
+    if (mass)
+        memcpy(mass, m, (size_t)nchunk * sizeof *m);
+    free(m);
 }
 
 static double chunk_scalar(struct gravel *g, struct compute *c)

@@ -35,6 +35,12 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c);
 /* Chunk of every host atom (1..nchunk, 0 = excluded: outside the group or
  * region, or discarded), on the grid of the last chunk_atom_setup. */
 const int *chunk_atom_assign(struct gravel *g, struct compute *c);
+/* Each chunk's mass-weighted mean of u (3 per atom: velocities, or unwrapped
+ * positions when u is NULL) over the atoms in groupbit with ichunk > 0, summed
+ * in atom-ID order: mean[3 nchunk] (0 for a chunk without mass) and, when
+ * mass is not NULL, mass[nchunk]. Host arrays. */
+void chunk_mass_mean(struct gravel *g, unsigned groupbit, const int *ichunk, int nchunk,
+                     const double *u, double *mean, double *mass);
 /* LAMMPS's lock: while the fix `fix_id` (averaging over chunks) holds it,
  * the layout (nchunk, bins) stays as its epoch's first sample set it, for
  * every reader; another fix's lock is an error (a fix that is gone holds

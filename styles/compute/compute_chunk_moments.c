@@ -132,18 +132,9 @@ static int cm_eval(struct gravel *g, struct compute *c, double **out, int *cols)
     double *in = gr_calloc(g, 6 * rows, sizeof *in), *L = gr_calloc(g, 3 * rows, sizeof *L);
     double *u = gr_malloc(g, 3 * ((size_t)a->n + 1) * sizeof *u);
     const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q], k = ichunk[i] - 1;
+    for (int i = 0; i < a->n; i++)
         domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u + 3 * i);
-        if (!(a->mask[i] & c->groupbit) || k < 0)
-            continue;
-        mass[k] += a->rmass[i];
-        for (int d = 0; d < 3; d++)
-            com[3 * k + d] += u[3 * i + d] * a->rmass[i];
-    }
-    for (int k = 0; k < n; k++)
-        for (int d = 0; d < 3; d++)
-            com[3 * k + d] = mass[k] > 0 ? com[3 * k + d] / mass[k] : 0.0;
+    chunk_mass_mean(g, c->groupbit, ichunk, n, u, com, mass);
     for (int q = 0; q < a->n; q++) {
         const int i = order[q], k = ichunk[i] - 1;
         if (!(a->mask[i] & c->groupbit) || k < 0)

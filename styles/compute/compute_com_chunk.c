@@ -46,28 +46,8 @@ static void cc_array(struct gravel *g, struct compute *c)
     const struct chunk_grid *grid = chunk_atom_setup(g, ca);
     const int *ichunk = chunk_atom_assign(g, ca);
     int n = grid->nchunk;
-    double *com = compute_array_rows(g, c, n);
-    double *mass = gr_calloc(g, (size_t)(n > 0 ? n : 1), sizeof *mass);
-    memset(com, 0, (size_t)n * 3 * sizeof *com);
-    const int *order = atoms_tag_order(g); /* sums that depend on the atoms only */
-    for (int q = 0; q < a->n; q++) {
-        const int i = order[q];
-        int k = ichunk[i] - 1;
-        if (!(a->mask[i] & c->groupbit) || k < 0)
-            continue;
-        double u[3], m = a->rmass[i];
-        if (vel)
-            memcpy(u, a->v + 3 * i, sizeof u);
-        else
-            domain_unmap(g, a->x + 3 * i, a->image + 3 * i, u);
-        mass[k] += m;
-        for (int d = 0; d < 3; d++)
-            com[3 * k + d] += u[d] * m;
-    }
-    for (int k = 0; k < n; k++)
-        for (int d = 0; d < 3; d++)
-            com[3 * k + d] = mass[k] > 0 ? com[3 * k + d] / mass[k] : 0.0;
-    free(mass);
+    chunk_mass_mean(g, c->groupbit, ichunk, n, vel ? a->v : NULL, compute_array_rows(g, c, n),
+                    NULL);
 }
 
 const struct compute_style compute_style_com_chunk = {

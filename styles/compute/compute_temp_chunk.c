@@ -120,23 +120,13 @@ static void tc_sum(struct gravel *g, struct compute *c, struct tc_sums *s)
     const int *ichunk = chunk_atom_assign(g, ca);
     const int n = grid->nchunk > 0 ? grid->nchunk : 0;
     const size_t rows = (size_t)n + 1;
-    double *vcm = gr_calloc(g, 3 * rows, sizeof *vcm), *mass = gr_calloc(g, rows, sizeof *mass);
+    double *vcm = gr_calloc(g, 3 * rows, sizeof *vcm);
     memset(s, 0, sizeof *s);
     s->nchunk = n;
     s->chunk = gr_calloc(g, 3 * rows, sizeof *s->chunk);
     s->n = gr_calloc(g, rows, sizeof *s->n);
     const int *order = atoms_tag_order(g);
-    for (int q = 0; q < a->n; q++) { /* each chunk's centre-of-mass velocity */
-        const int i = order[q], k = (a->mask[i] & c->groupbit) ? ichunk[i] - 1 : -1;
-        if (k < 0)
-            continue;
-        for (int d = 0; d < 3; d++)
-            vcm[3 * k + d] += a->v[3 * i + d] * a->rmass[i];
-        mass[k] += a->rmass[i];
-    }
-    for (int k = 0; k < n; k++)
-        for (int d = 0; d < 3; d++)
-            vcm[3 * k + d] = mass[k] > 0.0 ? vcm[3 * k + d] / mass[k] : 0.0;
+    chunk_mass_mean(g, c->groupbit, ichunk, n, a->v, vcm, NULL);
     for (int q = 0; q < a->n; q++) { /* the sums, v' = v - vcm with com yes */
         const int i = order[q], k = (a->mask[i] & c->groupbit) ? ichunk[i] - 1 : -1;
         if (k < 0)
@@ -159,7 +149,6 @@ static void tc_sum(struct gravel *g, struct compute *c, struct tc_sums *s)
         s->n[k]++;
     }
     free(vcm);
-    free(mass);
 }
 
 static double tc_scalar(struct gravel *g, struct compute *c)
