@@ -1,6 +1,9 @@
 /* compute_chunk_atom.c - `compute ID group chunk/atom bin/1d|bin/2d|bin/3d
  * dim origin delta [dim origin delta ...] keyword value ...`, LAMMPS's
- * spatial-bin chunks (compute_chunk_atom.cpp):
+ * spatial-bin chunks (compute_chunk_atom.cpp), and its shells:
+ * `bin/sphere xc yc zc rmin rmax nbin` and `bin/cylinder dim origin delta
+ * c1 c2 rmin rmax nbin` (the axis binned as bin/1d, each plane's atoms in
+ * nbin rings about (c1, c2)):
  *
  *   dim = x|y|z, origin = lower|center|upper|value, delta = bin width.
  *   keywords: units box|lattice|reduced (default lattice), bound dim lo hi
@@ -20,7 +23,19 @@
  * as a value. Chunk IDs run 1..nchunk with the last binned dimension
  * varying fastest. Output: per-atom chunk ID (0 = excluded), and the
  * scalar nchunk. The chunk volume is LAMMPS's: box volume x product of
- * delta / box length over the binned dimensions. */
+ * delta / box length over the binned dimensions.
+ *
+ * Shells, as LAMMPS: shell k spans rmin + k (rmax - rmin) / nbin to the
+ * next; the distance from the centre (axis) of the atom's position mapped
+ * into the box, with pbc yes its nearest image per dimension; outside
+ * [rmin, rmax) clamped into the end shells (discard mixed, no) or excluded
+ * (yes). A cylinder's chunk is ring x planes + axial bin + 1. Volumes
+ * per chunk: 4/3 pi (r_hi^3 - r_lo^3) (in 2d too, as LAMMPS) and
+ * pi (r_hi^2 - r_lo^2) x the axial bin width. Units lattice scale a sphere's
+ * centre and radii (radii by the x spacing) and a cylinder's axial bins, not
+ * its centre or radii (LAMMPS's scaling skips them); units reduced take the
+ * centre in box fractions and the radii in fractions of the box length along
+ * x (a cylinder: its first dimension across the axis). */
 #include "compute_chunk_atom.h"
 
 #include <limits.h>
@@ -45,8 +60,20 @@ enum { DISCARD_NO, DISCARD_MIXED, DISCARD_YES };
  * 1 excluded) */
 enum chunk_style { CHUNK_BIN, CHUNK_TYPE, CHUNK_MOLECULE, CHUNK_VALUE };
 
+/* bin/sphere and bin/cylinder: the shells, as given and as laid out */
+struct shells {
+    double origin_user[3], rmin_user, rmax_user; /* scaled to box units but reduced */
+    int nbin, pbc;
+    int cdim[2];                    /* the dimensions across a cylinder's axis */
+    double origin[3], rmin, rmax, inv; /* laid out: box units, inv = nbin / (rmax - rmin) */
+    int nplanes;                    /* a cylinder's axial bins */
+    double *volumes;                /* [nchunk] */
+};
+
 struct chunk_atom {
     enum chunk_style style;
+    enum chunk_radial radial;       /* CHUNK_BIN: shells beside the rectangular bins */
+    struct shells sh;
     struct peratom_input value;     /* CHUNK_VALUE */
     int ndim, dim[3], originflag[3];
     double origin_user[3], delta[3], invdelta[3], origin[3];
@@ -70,6 +97,7 @@ static void chunk_destroy(struct compute *c)
         free(ca->coord);
         free(ca->ichunk);
         free(ca->ids);
+        free(ca->sh.volumes);
     }
     free(ca);
     c->data = NULL;
@@ -87,11 +115,45 @@ static int parse_dim(struct gravel *g, const char *s)
     return 0;
 }
 
+/* bin/sphere's `xc yc zc rmin rmax nbin` or bin/cylinder's `c1 c2 rmin rmax
+ * nbin` from argv[iarg]; returns the index after them. */
+static int parse_shells(struct gravel *g, struct chunk_atom *ca, const char *st, int argc,
+                        char **argv, int iarg)
+{
+    struct shells *sh = &ca->sh;
+    const int sphere = ca->radial == CHUNK_RADIAL_SPHERE, ncen = sphere ? 3 : 2;
+    if (argc < iarg + ncen + 3)
+        gr_error(g, "compute chunk/atom %s expects %s rmin rmax nbin", st,
+                 sphere ? "xc yc zc" : "dim origin delta c1 c2");
+    if (sphere) {
+        for (int d = 0; d < 3; d++)
+            sh->origin_user[d] = arg_double(g, argv[iarg + d], "sphere centre");
+        if (g->dom.dimension == 2 && sh->origin_user[2] != 0.0)
+            gr_error(g, "compute chunk/atom bin/sphere: the centre's z must be 0.0 in 2d");
+    } else {
+        const int axis = ca->dim[0];
+        sh->cdim[0] = axis == 0 ? 1 : 0;
+        sh->cdim[1] = axis == 2 ? 1 : 2;
+        if (g->dom.dimension == 2 && axis != 2)
+            gr_error(g, "compute chunk/atom bin/cylinder: the axis must be z in 2d");
+        for (int k = 0; k < 2; k++)
+            sh->origin_user[sh->cdim[k]] = arg_double(g, argv[iarg + k], "cylinder axis position");
+    }
+    iarg += ncen;
+    sh->rmin_user = arg_double(g, argv[iarg], "rmin");
+    sh->rmax_user = arg_double(g, argv[iarg + 1], "rmax");
+    sh->nbin = arg_int_range(g, argv[iarg + 2], 1, 1 << 24, "nbin (number of shells)");
+    if (sh->rmin_user < 0.0 || sh->rmin_user >= sh->rmax_user)
+        gr_error(g, "compute chunk/atom %s: needs 0 <= rmin < rmax, got rmin %g rmax %g", st,
+                 sh->rmin_user, sh->rmax_user);
+    return iarg + 3;
+}
+
 static void chunk_create(struct gravel *g, struct compute *c, int argc, char **argv)
 {
     if (argc < 1)
-        gr_error(g, "compute chunk/atom expects a style: bin/1d, bin/2d, bin/3d, type, molecule, "
-                    "c_ID, f_ID or v_name");
+        gr_error(g, "compute chunk/atom expects a style: bin/1d, bin/2d, bin/3d, bin/sphere, "
+                    "bin/cylinder, type, molecule, c_ID, f_ID or v_name");
     struct chunk_atom *ca = gr_calloc(g, 1, sizeof *ca);
     c->data = ca;
     const char *st = argv[0];
@@ -101,7 +163,12 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
         ca->ndim = 2;
     else if (!strcmp(st, "bin/3d"))
         ca->ndim = 3;
-    else if (!strcmp(st, "type"))
+    else if (!strcmp(st, "bin/sphere"))
+        ca->radial = CHUNK_RADIAL_SPHERE;
+    else if (!strcmp(st, "bin/cylinder")) {
+        ca->radial = CHUNK_RADIAL_CYLINDER;
+        ca->ndim = 1;
+    } else if (!strcmp(st, "type"))
         ca->style = CHUNK_TYPE;
     else if (!strcmp(st, "molecule"))
         ca->style = CHUNK_MOLECULE;
@@ -109,12 +176,9 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
         ca->style = CHUNK_VALUE;
         peratom_input_parse(g, st, PERATOM_XVF, &ca->value, "c_ID, c_ID[I], f_ID, f_ID[I], v_name",
                             "compute chunk/atom");
-    } else if (!strcmp(st, "bin/sphere") || !strcmp(st, "bin/cylinder"))
-        gr_error(g, "compute chunk/atom: style '%.32s' is not supported (bin/1d, bin/2d, "
-                    "bin/3d, type, molecule, c_ID, f_ID, v_name)", st);
-    else
-        gr_error(g, "compute chunk/atom: unknown style '%.32s' (bin/1d, bin/2d, bin/3d, type, "
-                    "molecule, c_ID, f_ID, v_name)", st);
+    } else
+        gr_error(g, "compute chunk/atom: unknown style '%.32s' (bin/1d, bin/2d, bin/3d, "
+                    "bin/sphere, bin/cylinder, type, molecule, c_ID, f_ID, v_name)", st);
     if (ca->style == CHUNK_MOLECULE && !g->atoms.molecule_flag)
         gr_error(g, "compute chunk/atom molecule: the atoms have no molecule IDs (atom_style "
                     "hybrid sphere molecular)");
@@ -143,6 +207,8 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
                 gr_error(g, "compute chunk/atom %s: dimension %s is binned twice", st,
                          argv[iarg]);
     }
+    if (ca->radial)
+        iarg = parse_shells(g, ca, st, argc, argv, iarg);
     for (int d = 0; d < 3; d++) {
         ca->minflag[d] = LOWER;
         ca->maxflag[d] = UPPER;
@@ -219,7 +285,7 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
                             "chunks at every use: ids every)", v);
         } else if (!strcmp(kw, "pbc")) {
             arg_need(g, argc, i, 1, kw);
-            arg_yesno(g, argv[++i], "pbc");
+            ca->sh.pbc = arg_yesno(g, argv[++i], "pbc");
         } else if (!strcmp(kw, "compress")) {
             arg_need(g, argc, i, 1, kw);
             ca->compress = arg_yesno(g, argv[++i], "compress");
@@ -251,6 +317,12 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
         if (ca->maxflag[d] == COORD)
             ca->maxvalue[d] *= sc[d];
     }
+    if (ca->radial == CHUNK_RADIAL_SPHERE) { /* LAMMPS: radii by the x spacing */
+        for (int d = 0; d < 3; d++)
+            ca->sh.origin_user[d] *= sc[d];
+        ca->sh.rmin_user *= sc[0];
+        ca->sh.rmax_user *= sc[0];
+    }
     c->peratom_flag = 1;
     c->scalar_flag = 1;
     c->extscalar = 0;
@@ -271,9 +343,17 @@ int chunk_atom_compressed(const struct compute *c)
     return ((const struct chunk_atom *)c->data)->compress;
 }
 
+enum chunk_radial chunk_atom_radial(const struct compute *c)
+{
+    return ((const struct chunk_atom *)c->data)->radial;
+}
+
 int chunk_atom_ncoord(const struct compute *c)
 {
-    return ((const struct chunk_atom *)c->data)->ndim;
+    const struct chunk_atom *ca = c->data;
+    return ca->radial == CHUNK_RADIAL_SPHERE     ? 1
+           : ca->radial == CHUNK_RADIAL_CYLINDER ? 2
+                                                 : ca->ndim;
 }
 
 static int int_cmp(const void *a, const void *b)
@@ -361,6 +441,97 @@ static const struct chunk_grid *setup_ids(struct gravel *g, struct compute *c,
     return gr;
 }
 
+/* The shells on the current box, around the rectangular layout of the grid
+ * (a cylinder's axial bins, none for a sphere: one plane): nchunk, coord,
+ * volumes (LAMMPS setup_sphere_bins, setup_cylinder_bins, bin_volumes). */
+static void setup_shells(struct gravel *g, struct compute *c, struct chunk_atom *ca,
+                         const double prd[3])
+{
+    struct shells *sh = &ca->sh;
+    struct chunk_grid *gr = &ca->grid;
+    const int sphere = ca->radial == CHUNK_RADIAL_SPHERE;
+    const int *cd = sh->cdim, ncross = sphere ? 3 : 2;
+    const double rscale = ca->scaleflag != SC_REDUCED ? 1.0 : prd[sphere ? 0 : cd[0]];
+    for (int k = 0; k < ncross; k++) {
+        const int d = sphere ? k : cd[k];
+        sh->origin[d] = ca->scaleflag == SC_REDUCED
+                            ? g->dom.lo[d] + sh->origin_user[d] * prd[d]
+                            : sh->origin_user[d];
+        if (sh->pbc && g->dom.periodic[d] && (d < 2 || g->dom.dimension == 3) &&
+            sh->rmax_user * rscale > 0.5 * prd[d])
+            gr_error(g, "compute %s chunk/atom %s: rmax %g is more than half the periodic box "
+                        "along %c (pbc yes)", c->id, sphere ? "bin/sphere" : "bin/cylinder",
+                     sh->rmax_user * rscale, "xyz"[d]);
+    }
+    sh->rmin = sh->rmin_user * rscale;
+    sh->rmax = sh->rmax_user * rscale;
+    sh->inv = sh->nbin / (sh->rmax - sh->rmin);
+    sh->nplanes = gr->nchunk;
+    if ((double)sh->nbin * sh->nplanes > (double)(1 << 28))
+        gr_error(g, "compute %s chunk/atom: too many bins (%d shells x %d planes)", c->id,
+                 sh->nbin, sh->nplanes);
+    const int n = sh->nbin * sh->nplanes, nc = sphere ? 1 : 2;
+    double *axial = ca->coord; /* [nplanes] a cylinder's bin/1d centres */
+    ca->coord = gr_malloc(g, (size_t)n * nc * sizeof(double));
+    free(sh->volumes);
+    sh->volumes = gr_malloc(g, (size_t)n * sizeof(double));
+    /* the axial bin's length in box units, LAMMPS's slab thickness */
+    const double slab = sphere ? 1.0
+                               : prd[ca->dim[0]] * gr->delta[0] /
+                                     (gr->reduced ? 1.0 : prd[ca->dim[0]]);
+    for (int k = 0; k < n; k++) {
+        const int ir = k / sh->nplanes, ip = k % sh->nplanes;
+        const double w = sh->rmax - sh->rmin, lo = sh->rmin + ir * w / sh->nbin;
+        const double hi = ir == sh->nbin - 1 ? sh->rmax : sh->rmin + (ir + 1) * w / sh->nbin;
+        ca->coord[(size_t)k * nc] = 0.5 * (lo + hi);
+        if (!sphere)
+            ca->coord[(size_t)k * nc + 1] = axial[ip];
+        sh->volumes[k] = sphere ? 4.0 / 3.0 * M_PI * hi * hi * hi - 4.0 / 3.0 * M_PI * lo * lo * lo
+                                : (M_PI * hi * hi - M_PI * lo * lo) * slab;
+    }
+    free(axial);
+    gr->nchunk = n;
+    gr->ncoord = nc;
+    gr->coord = ca->coord;
+    gr->volumes = sh->volumes;
+}
+
+/* Shell of the atom at x (0..nbin-1), or -1 excluded (discard yes) */
+static int shell_of(const struct gravel *g, const struct chunk_atom *ca, const double *x)
+{
+    const struct shells *sh = &ca->sh;
+    const int sphere = ca->radial == CHUNK_RADIAL_SPHERE, ncross = sphere ? 3 : 2;
+    double r2 = 0;
+    for (int k = 0; k < ncross; k++) {
+        const int d = sphere ? k : sh->cdim[k];
+        const double lo = g->dom.lo[d], hi = g->dom.hi[d], prd = hi - lo;
+        double xr = x[d];
+        if (g->dom.periodic[d]) { /* LAMMPS: a sphere maps any distance, a cylinder one box */
+            do {
+                if (xr < lo)
+                    xr += prd;
+                else if (xr >= hi)
+                    xr -= prd;
+            } while (sphere && (xr < lo || xr >= hi));
+        }
+        double dx = xr - sh->origin[d];
+        if (sh->pbc && g->dom.periodic[d]) {
+            do {
+                if (fabs(dx) > 0.5 * prd)
+                    dx += dx < 0.0 ? prd : -prd;
+            } while (sphere && fabs(dx) > 0.5 * prd);
+        }
+        r2 += dx * dx;
+    }
+    const double r = sqrt(r2);
+    int ib = (int)((r - sh->rmin) * sh->inv);
+    if (r < sh->rmin)
+        ib--;
+    if (ca->discard == DISCARD_YES)
+        return ib < 0 || ib >= sh->nbin ? -1 : ib;
+    return ib < 0 ? 0 : ib >= sh->nbin ? sh->nbin - 1 : ib;
+}
+
 const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
 {
     struct chunk_atom *ca = c->data;
@@ -427,8 +598,15 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
     gr->nchunk = nbins;
     gr->reduced = ca->scaleflag == SC_REDUCED;
     gr->discard_no = ca->discard == DISCARD_NO;
+    gr->radial = ca->radial;
+    gr->ncoord = ca->ndim;
+    gr->volumes = NULL;
+    double vol = g->dom.dimension == 3 ? prd[0] * prd[1] * prd[2] : prd[0] * prd[1];
+    for (int m = 0; m < ca->ndim; m++)
+        vol *= gr->delta[m] / (gr->reduced ? 1.0 : prd[gr->dim[m]]);
+    gr->volume = vol;
     free(ca->coord);
-    ca->coord = gr_malloc(g, (size_t)nbins * ca->ndim * sizeof(double));
+    ca->coord = gr_malloc(g, (size_t)nbins * (ca->ndim + 1) * sizeof(double));
     for (int k = 0; k < nbins; k++) {
         int rem = k;
         for (int m = ca->ndim - 1; m >= 0; m--) {
@@ -438,10 +616,8 @@ const struct chunk_grid *chunk_atom_setup(struct gravel *g, struct compute *c)
         }
     }
     gr->coord = ca->coord;
-    double vol = g->dom.dimension == 3 ? prd[0] * prd[1] * prd[2] : prd[0] * prd[1];
-    for (int m = 0; m < ca->ndim; m++)
-        vol *= gr->delta[m] / (gr->reduced ? 1.0 : prd[gr->dim[m]]);
-    gr->volume = vol;
+    if (ca->radial)
+        setup_shells(g, c, ca, prd);
     ca->laid_out = 1;
     return gr;
 }
@@ -510,6 +686,11 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
                 keep = 0;
             }
             id = id * gr->nlayers[m] + ib;
+        }
+        if (keep && ca->radial) {
+            const int ir = shell_of(g, ca, x);
+            keep = ir >= 0;
+            id += ir * ca->sh.nplanes;
         }
         if (keep)
             ca->ichunk[i] = id + 1;

@@ -1,13 +1,18 @@
 /* compute_chunk_atom.h - what fix ave/chunk reads from a
- * `compute ID group chunk/atom bin/1d|bin/2d|bin/3d ...` (its bins and each
- * atom's chunk), styles/compute/compute_chunk_atom.c. */
+ * `compute ID group chunk/atom bin/1d|bin/2d|bin/3d|bin/sphere|bin/cylinder
+ * ...` (its bins and each atom's chunk), styles/compute/compute_chunk_atom.c. */
 #ifndef GR_COMPUTE_CHUNK_ATOM_H
 #define GR_COMPUTE_CHUNK_ATOM_H
 
 #include "compute.h"
 
+/* Bins in shells about a centre (bin/sphere) or an axis (bin/cylinder) */
+enum chunk_radial { CHUNK_RADIAL_NONE, CHUNK_RADIAL_SPHERE, CHUNK_RADIAL_CYLINDER };
+
 struct chunk_grid {
-    int ndim;                   /* 1, 2 or 3 binned dimensions */
+    enum chunk_radial radial;   /* NONE: the chunks are the rectangular bins */
+    int ndim;                   /* 1, 2 or 3 rectangular binned dimensions (a cylinder's
+                                   axis: 1, a sphere: 0) */
     int dim[3];                 /* box dimension of binned dimension m */
     int nlayers[3];             /* bins along binned dimension m */
     double offset[3], delta[3]; /* lower edge and width of the bins (box units,
@@ -16,16 +21,22 @@ struct chunk_grid {
     int discard_no;             /* discard no: out-of-range atoms clamped into the end bins */
     int nchunk;                 /* product of nlayers */
     double volume;              /* LAMMPS's chunk_volume_scalar (box units^3) */
-    const double *coord;        /* [nchunk][ndim] bin centres, LAMMPS order:
-                                   the last binned dimension varies fastest */
+    const double *volumes;      /* [nchunk] each chunk's volume (radial bins: LAMMPS's
+                                   chunk_volume_vec), NULL: every chunk `volume` */
+    int ncoord;                 /* coordinates per chunk (radial: sphere 1, cylinder 2) */
+    const double *coord;        /* [nchunk][ncoord] bin centres, LAMMPS order: the
+                                   last binned dimension varies fastest; radial bins:
+                                   the shell's mid radius (then the axial centre) */
     const int *ids;             /* compress yes: [nchunk] each chunk's original ID
                                    (NULL: chunk k is ID k) */
 };
 
 /* The chunk/atom compute `id`, or an error naming `who`. */
 struct compute *chunk_atom_get(struct gravel *g, const char *id, const char *who);
-/* Binned dimensions (LAMMPS ncoord), known from the arguments. */
+/* Coordinates per chunk (LAMMPS ncoord), known from the arguments. */
 int chunk_atom_ncoord(const struct compute *c);
+/* bin/sphere or bin/cylinder (NONE for every other style), from the arguments. */
+enum chunk_radial chunk_atom_radial(const struct compute *c);
 /* 1 with compress yes (the grid's ids are the original chunk IDs). */
 int chunk_atom_compressed(const struct compute *c);
 /* Lay out the bins on the current box (LAMMPS setup_chunks); returns the

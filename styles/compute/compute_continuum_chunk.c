@@ -310,8 +310,9 @@ static void cc_create(struct gravel *g, struct compute *c, int argc, char **argv
     if (g->dom.triclinic)
         gr_error(g, WHO " does not support triclinic boxes");
     const int nbin = chunk_atom_ncoord(ca);
-    if (nbin == 0)
-        gr_error(g, WHO ": compute %s is not a spatial binning (bin/1d, bin/2d, bin/3d)", ca->id);
+    if (nbin == 0 || chunk_atom_radial(ca))
+        gr_error(g, WHO ": compute %s is not a rectangular spatial binning (bin/1d, bin/2d, "
+                    "bin/3d)", ca->id);
     const double e = exp(-cc->wcut * cc->wcut / (2 * cc->wsd * cc->wsd));
     cc->scale = cc_scale(nbin, cc->wcut, cc->wsd);
     cc->offset = cc->scale * e;

@@ -96,7 +96,7 @@ static void pc_fill(struct gravel *g, struct compute *c, double **outp, int *row
             switch (pc->in[k]) {
             case P_COUNT: v = count[m]; break;
             case P_ID: v = grid->ids ? grid->ids[m] : m + 1; break;
-            default: v = grid->coord[(size_t)m * grid->ndim + (pc->in[k] - P_COORD1)]; break;
+            default: v = grid->coord[(size_t)m * grid->ncoord + (pc->in[k] - P_COORD1)]; break;
             }
             out[(size_t)m * pc->n + k] = v;
         }

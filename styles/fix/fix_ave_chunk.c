@@ -206,9 +206,9 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     if (a->w.kind != AVE_RUNNING && a->af.overwrite)
         gr_error(g, "fix ave/chunk: overwrite needs ave running");
-    if (a->vtk && chunk_atom_ncoord(cc) == 0)
-        gr_error(g, "fix ave/chunk: vtk needs spatial bins (compute %s is not bin/1d, bin/2d or "
-                    "bin/3d)", cc->id);
+    if (a->vtk && (chunk_atom_ncoord(cc) == 0 || chunk_atom_radial(cc)))
+        gr_error(g, "fix ave/chunk: vtk needs spatial bins on a grid (compute %s is not bin/1d, "
+                    "bin/2d or bin/3d)", cc->id);
     if (file) {
         ave_file_open(g, &a->af, file, append, "fix ave/chunk");
         FILE *fp = a->af.fp;
@@ -385,12 +385,12 @@ static void take(struct gravel *g, struct fix *f)
             a->count_sum[m] /= repeat;
         }
     }
-    double vol = a->grid->volume;
+    const double *vols = a->grid->volumes;
     for (int j = 0; j < nv; j++) {
         int w = a->which[j];
         if (w == V_DNUM || w == V_DMASS || w == V_SOLID)
             for (int m = 0; m < a->nchunk; m++)
-                a->values_sum[(size_t)m * nv + j] /= vol;
+                a->values_sum[(size_t)m * nv + j] /= vols ? vols[m] : a->grid->volume;
     }
     ave_window_add(&a->w, a->values_total, a->values_list, a->values_sum,
                    (size_t)a->nchunk * nv);
@@ -408,8 +408,8 @@ static void take(struct gravel *g, struct fix *f)
         double nc = a->w.norm;
         for (int m = 0; m < a->nchunk; m++) {
             fprintf(fp, "  %d", m + 1);
-            for (int k = 0; k < gr->ndim; k++)
-                fprintf(fp, " %g", gr->coord[(size_t)m * gr->ndim + k]);
+            for (int k = 0; k < gr->ncoord; k++)
+                fprintf(fp, " %g", gr->coord[(size_t)m * gr->ncoord + k]);
             fprintf(fp, " %g", a->count_total[m] / nc);
             for (int j = 0; j < nv; j++)
                 fprintf(fp, fmt, a->values_total[(size_t)m * nv + j] / nc);
