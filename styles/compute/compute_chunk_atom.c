@@ -8,10 +8,13 @@
  *   dim = x|y|z, origin = lower|center|upper|value, delta = bin width.
  *   keywords: units box|lattice|reduced (default lattice), bound dim lo hi
  *   (lo = lower|value, hi = upper|value), discard mixed|yes|no (default
- *   mixed), region ID, nchunk once|every (default every; once with units
- *   reduced), ids every, pbc yes|no (no effect on bin styles), compress
- *   (molecule and value styles: the IDs present numbered 1..N in ascending
- *   order, the original IDs kept for property/chunk).
+ *   mixed; without bins yes|no, default yes: an ID outside 1..nchunk in no
+ *   chunk or in the last), region ID, nchunk once|every (default every; once
+ *   with units reduced or ids once), ids once|every (once: each atom's first
+ *   chunk kept by tag), limit N max|exact (non-bin styles), pbc yes|no
+ *   (shells only), compress (molecule and value styles: the IDs present
+ *   numbered 1..N in ascending order, the original IDs kept for
+ *   property/chunk).
  *
  * Bins: in each binned dimension the lattice of edges origin + k delta is
  * extended to cover [boxlo, boxhi] (or the bound), exactly as LAMMPS: lo is
@@ -46,8 +49,10 @@
 #include "args.h"
 #include "atoms.h"
 #include "domain.h"
+#include "engine.h"
 #include "error.h"
 #include "fix.h"
+#include "par.h"
 #include "peratom_input.h"
 #include "region.h"
 
@@ -83,6 +88,9 @@ struct chunk_atom {
     char lock[GR_NAMELEN];          /* ID of the fix that froze the layout ("": none) */
     int compress;                   /* compress yes: ids[] the original IDs, ascending */
     int *ids, nids;
+    int limit, limit_exact;         /* limit N max|exact (0: none; non-bin styles) */
+    int ids_once;                   /* ids once: each atom's first chunk, kept by tag */
+    int *kept, nkept;               /* [nkept] by tag (nkept 0: none taken yet) */
     char region[GR_NAMELEN];        /* "" = none */
     struct chunk_grid grid;
     double *coord;
@@ -97,6 +105,7 @@ static void chunk_destroy(struct compute *c)
         free(ca->coord);
         free(ca->ichunk);
         free(ca->ids);
+        free(ca->kept);
         free(ca->sh.volumes);
     }
     free(ca);
@@ -219,8 +228,7 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
     for (int i = iarg; i < argc; i++) {
         const char *kw = argv[i];
         if (ca->style != CHUNK_BIN &&
-            (!strcmp(kw, "units") || !strcmp(kw, "bound") || !strcmp(kw, "discard") ||
-             !strcmp(kw, "pbc")))
+            (!strcmp(kw, "units") || !strcmp(kw, "bound") || !strcmp(kw, "pbc")))
             gr_error(g, "compute chunk/atom %s: keyword '%s' applies to the bin styles only", st,
                      kw);
         if (!strcmp(kw, "units")) {
@@ -263,6 +271,8 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
             else
                 gr_error(g, "compute chunk/atom: discard must be mixed, yes or no, got '%.32s'",
                          v);
+            if (ca->style != CHUNK_BIN && ca->discard == DISCARD_MIXED)
+                gr_error(g, "compute chunk/atom %s: discard mixed needs bins (yes or no)", st);
         } else if (!strcmp(kw, "region")) {
             arg_need(g, argc, i, 1, kw);
             region_get(g, argv[++i]);
@@ -280,9 +290,15 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
         } else if (!strcmp(kw, "ids")) {
             arg_need(g, argc, i, 1, kw);
             const char *v = argv[++i];
-            if (strcmp(v, "every") != 0)
-                gr_error(g, "compute chunk/atom: ids %.32s is not supported (gravel assigns "
-                            "chunks at every use: ids every)", v);
+            if (!strcmp(v, "once"))
+                ca->ids_once = 1;
+            else if (!strcmp(v, "every"))
+                ca->ids_once = 0;
+            else if (!strcmp(v, "nfreq"))
+                gr_error(g, "compute chunk/atom: ids nfreq is not supported (once, every)");
+            else
+                gr_error(g, "compute chunk/atom: ids must be once, nfreq or every, got '%.32s'",
+                         v);
         } else if (!strcmp(kw, "pbc")) {
             arg_need(g, argc, i, 1, kw);
             ca->sh.pbc = arg_yesno(g, argv[++i], "pbc");
@@ -293,13 +309,37 @@ static void chunk_create(struct gravel *g, struct compute *c, int argc, char **a
                 gr_error(g, "compute chunk/atom %s: compress yes applies to the molecule and "
                             "c_ID/f_ID/v_name styles (gravel)", st);
         } else if (!strcmp(kw, "limit")) {
-            gr_error(g, "compute chunk/atom: keyword 'limit' is not supported");
+            arg_need(g, argc, i, 1, kw);
+            ca->limit = arg_int_range(g, argv[++i], 0, INT_MAX, "limit");
+            if (ca->limit) {
+                arg_need(g, argc, i, 1, "limit N");
+                const char *v = argv[++i];
+                if (!strcmp(v, "max") || !strcmp(v, "exact"))
+                    ca->limit_exact = v[0] == 'e';
+                else
+                    gr_error(g, "compute chunk/atom: limit N expects max or exact, got '%.32s'",
+                             v);
+            }
         } else {
             gr_error(g, "compute chunk/atom: unknown keyword '%.32s'", kw);
         }
     }
     if (!nchunk_set && ca->scaleflag == SC_REDUCED)
         ca->nchunk_once = 1;
+    if (ca->style != CHUNK_BIN && ca->discard == DISCARD_MIXED)
+        ca->discard = DISCARD_YES; /* LAMMPS's default without bins */
+    if (ca->limit && ca->compress && ca->style != CHUNK_BIN)
+        gr_error(g, "compute chunk/atom %s: limit with compress yes is not supported (LAMMPS "
+                    "keeps compressed IDs above the limit)", st);
+    if (ca->ids_once) { /* frozen IDs need a frozen count (LAMMPS: nchunk once) */
+        if (nchunk_set && !ca->nchunk_once)
+            gr_error(g, "compute chunk/atom %s: ids once needs nchunk once", st);
+        if (!nchunk_set && (ca->compress || ca->style == CHUNK_VALUE ||
+                            (ca->style == CHUNK_MOLECULE && ca->region[0])))
+            gr_error(g, "compute chunk/atom %s: ids once needs nchunk once (this style's "
+                        "default is every)", st);
+        ca->nchunk_once = 1;
+    }
     /* scale to box units (LAMMPS: delta, origin and bounds times the lattice spacing) */
     double sc[3] = {1, 1, 1};
     if (ca->scaleflag == SC_LATTICE)
@@ -362,6 +402,24 @@ static int int_cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* ids once: the chunks just assigned, kept by tag (at the first assignment) */
+static void keep_ids(struct gravel *g, struct chunk_atom *ca)
+{
+    const struct atoms *a = &g->atoms;
+    if (!ca->ids_once || ca->nkept)
+        return;
+    int64_t top = 0;
+    for (int i = 0; i < a->n; i++)
+        top = a->tag[i] > top ? a->tag[i] : top;
+    if (top >= INT_MAX)
+        gr_error(g, "compute chunk/atom ids once: atom IDs up to %lld are too large",
+                 (long long)top);
+    ca->nkept = (int)top + 1;
+    ca->kept = gr_calloc(g, (size_t)ca->nkept, sizeof *ca->kept);
+    for (int i = 0; i < a->n; i++)
+        ca->kept[a->tag[i]] = ca->ichunk[i];
+}
+
 static void ichunk_room(struct gravel *g, struct compute *c, struct chunk_atom *ca, int n)
 {
     if (n <= ca->cap)
@@ -374,10 +432,9 @@ static void ichunk_room(struct gravel *g, struct compute *c, struct chunk_atom *
     ca->cap = cap;
 }
 
-/* The non-bin styles' chunk of every host atom: 0 outside the group or the
- * region or for an ID below 1; with compress every ID of an atom in the group
- * and region (0 and negative ones too, as LAMMPS hashes them) and CHUNK_OUT for
- * the others. Returns the largest ID. */
+/* The non-bin styles' chunk ID of every host atom in the group and region
+ * (any integer: 0 and negative ones too, as LAMMPS hashes them with compress)
+ * and CHUNK_OUT for the others. Returns the largest ID, at least 0. */
 #define CHUNK_OUT INT_MIN
 static int assign_ids(struct gravel *g, struct compute *c, struct chunk_atom *ca)
 {
@@ -391,15 +448,13 @@ static int assign_ids(struct gravel *g, struct compute *c, struct chunk_atom *ca
                                                    "compute chunk/atom")
                             : NULL;
     for (int i = 0; i < a->n; i++) {
-        int id = ca->compress ? CHUNK_OUT : 0;
+        int id = CHUNK_OUT;
         if ((a->mask[i] & c->groupbit) && !(r && !region_match(r, a->x + 3 * (size_t)i))) {
             double v = ca->style == CHUNK_TYPE       ? a->type[i]
                        : ca->style == CHUNK_MOLECULE ? (double)a->mol[i]
                                                      : val[(size_t)i * stride];
             v = v > 1073741823.0 ? 1073741823.0 : v < -1073741823.0 ? -1073741823.0 : v;
             id = (int)v; /* LAMMPS's (int) cast */
-            if (!ca->compress && id < 1)
-                id = 0;
         }
         ca->ichunk[i] = id;
         hi = id > hi ? id : hi;
@@ -417,6 +472,8 @@ static const struct chunk_grid *setup_ids(struct gravel *g, struct compute *c,
     const int hi = assign_ids(g, c, ca);
     gr->ndim = 0;
     gr->nchunk = ca->style == CHUNK_TYPE ? g->atoms.ntypes : hi > 0 ? hi : 1;
+    if (ca->limit) /* LAMMPS: limit N max or exact (not with compress) */
+        gr->nchunk = ca->limit_exact || ca->limit < gr->nchunk ? ca->limit : gr->nchunk;
     gr->ids = NULL;
     if (ca->compress) { /* the IDs present, ascending: chunk k is ids[k - 1] */
         free(ca->ids);
@@ -628,18 +685,32 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
     const struct atoms *a = &g->atoms;
     if (!ca->laid_out)
         chunk_atom_setup(g, c);
-    if (ca->style != CHUNK_BIN) { /* IDs beyond a frozen count (nchunk once) are out */
+    if (ca->ids_once && ca->nkept) { /* LAMMPS's stored IDs: 0 for atoms since */
+        ichunk_room(g, c, ca, a->n);
+        for (int i = 0; i < a->n; i++)
+            ca->ichunk[i] = a->tag[i] < ca->nkept ? ca->kept[a->tag[i]] : 0;
+        return ca->ichunk;
+    }
+    if (ca->style != CHUNK_BIN) {
+        /* LAMMPS's discard rule: an ID outside 1..nchunk (beyond a frozen
+         * count too; with compress one not in the layout) is in no chunk, or
+         * with discard no in the last */
         assign_ids(g, c, ca);
+        const int n = ca->grid.nchunk, out = ca->discard == DISCARD_NO ? n : 0;
         for (int i = 0; i < a->n; i++) {
             int *id = &ca->ichunk[i];
-            if (ca->compress) { /* its place among the layout's IDs, or none */
-                const int *hit = *id == CHUNK_OUT ? NULL
-                                 : bsearch(id, ca->ids, (size_t)ca->nids, sizeof *id, int_cmp);
-                *id = hit ? (int)(hit - ca->ids) + 1 : 0;
-            }
-            if (*id > ca->grid.nchunk)
+            if (*id == CHUNK_OUT) {
                 *id = 0;
+                continue;
+            }
+            if (ca->compress) { /* its place among the layout's IDs, or none */
+                const int *hit = bsearch(id, ca->ids, (size_t)ca->nids, sizeof *id, int_cmp);
+                *id = hit ? (int)(hit - ca->ids) + 1 : out;
+            }
+            if (*id < 1 || *id > n)
+                *id = out;
         }
+        keep_ids(g, ca);
         return ca->ichunk;
     }
     ichunk_room(g, c, ca, a->n);
@@ -695,7 +766,26 @@ const int *chunk_atom_assign(struct gravel *g, struct compute *c)
         if (keep)
             ca->ichunk[i] = id + 1;
     }
+    keep_ids(g, ca);
     return ca->ichunk;
+}
+
+/* run setup: with ids once, the first run's setup takes every atom's chunk
+ * (LAMMPS's setup), on several ranks on every rank's atoms gathered: every
+ * rank keeps every tag's */
+static void chunk_init(struct gravel *g, struct compute *c)
+{
+    struct chunk_atom *ca = c->data;
+    if (!ca->ids_once || ca->nkept)
+        return;
+    run_sync_host(g);
+    const int gather = par_on(g) && !par_gathered(g);
+    if (gather)
+        par_gather_begin(g);
+    chunk_atom_setup(g, c);
+    chunk_atom_assign(g, c);
+    if (gather)
+        par_gather_end(g);
 }
 
 void chunk_atom_lock(struct gravel *g, struct compute *c, const char *fix_id)
@@ -759,6 +849,7 @@ const struct compute_style compute_style_chunk_atom = {
     .name = "chunk/atom",
     .ranks = COMPUTE_RANKS_GATHER,
     .create = chunk_create,
+    .init = chunk_init,
     .scalar = chunk_scalar,
     .peratom = chunk_peratom,
     .destroy = chunk_destroy,
