@@ -164,7 +164,8 @@ enum temp_kind {
     TEMP_TRANS, TEMP_SPHERE_ALL, TEMP_SPHERE_ROTATE,
     TEMP_COM,                   /* about the group's centre-of-mass velocity (temp/com) */
     TEMP_PARTIAL,               /* the components in flags only (temp/partial) */
-    TEMP_REGION                 /* the group's atoms in a region, counted each time (temp/region) */
+    TEMP_REGION,                /* the group's atoms in a region, counted each time (temp/region) */
+    TEMP_PROFILE                /* about each spatial bin's mean velocity (temp/profile) */
 };
 struct temp_state {
     enum temp_kind kind;
@@ -175,7 +176,9 @@ struct temp_state {
     double dof;                 /* counted at run setup (temp_setup) */
     double dof_natoms;          /* atoms of the group at that count */
     int dof_valid;              /* dof holds the count of the current run */
-    int flags[3];               /* TEMP_PARTIAL: the components counted (x y z) */
+    int flags[3];               /* TEMP_PARTIAL: the components counted (x y z);
+                                 * TEMP_PROFILE: the components whose bin mean is removed */
+    int nbin[3];                /* TEMP_PROFILE: bins along x y z */
     char region[GR_NAMELEN];    /* TEMP_REGION: the region's ID, */
     const void *region_obj;     /* the region resolved by its compute (init), */
     int (*region_in)(const void *region_obj, const double x[3]); /* and its test */

@@ -87,6 +87,7 @@ static double count_dof(struct gravel *g, const struct temp_state *t, double *na
         switch (t->kind) {
         case TEMP_TRANS:
         case TEMP_COM:
+        case TEMP_PROFILE:
         case TEMP_REGION: count += dim; break;
         case TEMP_PARTIAL: count += partial_n(t); break;
         case TEMP_SPHERE_ALL: count += dim + (finite ? (dim == 3 ? 3 : 1) : 0); break;
@@ -110,6 +111,8 @@ static double count_dof(struct gravel *g, const struct temp_state *t, double *na
         const double share = t->kind == TEMP_PARTIAL ? (double)partial_n(t) / dim : 1.0;
         count -= share * (extra + fixdof);
     }
+    if (t->kind == TEMP_PROFILE) /* each bin's mean velocity (LAMMPS: Evans and Morriss) */
+        count -= (double)dim * temp_profile_nbins(t);
     count -= bias_dof(g, t, natoms);
     *natoms_out = natoms;
     return count;
@@ -172,6 +175,76 @@ static void bias_velocity(struct gravel *g, const struct temp_state *t, double v
     }
 }
 
+int temp_profile_nbins(const struct temp_state *t)
+{
+    return t->nbin[0] * t->nbin[1] * t->nbin[2];
+}
+
+int *temp_profile_bins(struct gravel *g, const struct temp_state *t)
+{
+    const struct atoms *a = &g->atoms;
+    if (g->dom.xy != 0.0 || g->dom.xz != 0.0 || g->dom.yz != 0.0)
+        gr_error(g, "compute temp/profile: bins in a tilted triclinic box are not supported");
+    int *bin = gr_malloc(g, ((size_t)a->n + 1) * sizeof *bin);
+    for (int i = 0; i < a->n; i++) {
+        bin[i] = -1;
+        if (!(a->mask[i] & t->groupbit))
+            continue;
+        int ib[3] = {0, 0, 0};
+        for (int d = 0; d < 3; d++) {
+            if (t->nbin[d] <= 1)
+                continue;
+            const double lo = g->dom.lo[d], hi = g->dom.hi[d], prd = hi - lo;
+            double c = a->x[3 * i + d];
+            if (g->dom.periodic[d]) {
+                if (c < lo)
+                    c += prd;
+                if (c >= hi)
+                    c -= prd;
+            }
+            const int k = (int)((c - lo) * (t->nbin[d] / prd));
+            ib[d] = k < 0 ? 0 : k > t->nbin[d] - 1 ? t->nbin[d] - 1 : k;
+        }
+        bin[i] = t->nbin[0] * t->nbin[1] * ib[2] + t->nbin[0] * ib[1] + ib[0];
+    }
+    return bin;
+}
+
+double *temp_profile_means(struct gravel *g, const struct temp_state *t, const int *bin)
+{
+    const struct atoms *a = &g->atoms;
+    const int nb = temp_profile_nbins(t);
+    const int *order = atoms_tag_order(g);
+    struct par_sum *s = gr_calloc(g, 4 * (size_t)nb, sizeof *s); /* vx vy vz count */
+    for (int k = 0; k < a->n; k++) {
+        const int i = order[k];
+        if (bin[i] < 0)
+            continue;
+        for (int d = 0; d < 3; d++)
+            if (t->flags[d])
+                par_sum_add(g, &s[4 * bin[i] + d], a->tag[i], a->v[3 * i + d]);
+        par_sum_add(g, &s[4 * bin[i] + 3], a->tag[i], 1.0);
+    }
+    double *mean = gr_malloc(g, 4 * (size_t)nb * sizeof *mean);
+    for (int j = 0; j < 4 * nb; j++)
+        mean[j] = par_sum_total(g, &s[j]);
+    free(s);
+    for (int j = 0; j < nb; j++)
+        if (mean[4 * j + 3] > 0.0)
+            for (int d = 0; d < 3; d++)
+                mean[4 * j + d] /= mean[4 * j + 3];
+    return mean;
+}
+
+/* the bias an atom's velocity loses: vb (TEMP_COM's, else 0), or with a
+ * profile (bin and mean non-NULL) its bin's mean of the flagged components */
+static void atom_bias(const struct temp_state *b, const double vb[3], const int *bin,
+                      const double *mean, int i, double out[3])
+{
+    for (int d = 0; d < 3; d++)
+        out[d] = mean ? (b->flags[d] && bin[i] >= 0 ? mean[4 * bin[i] + d] : 0.0) : vb[d];
+}
+
 /* the velocity atom i's temperature counts: v minus the bias (TEMP_COM),
  * the uncounted components zeroed (TEMP_PARTIAL); a sphere temperature
  * with `bias` takes its bias's rule, and its atoms outside a temp/region
@@ -190,14 +263,28 @@ static void thermal_velocity(const struct gravel *g, const struct temp_state *t,
     }
 }
 
+/* a profile bias's bins and means (NULL, NULL for the other kinds) */
+static void profile_of(struct gravel *g, const struct temp_state *b, int **bin, double **mean)
+{
+    *bin = NULL;
+    *mean = NULL;
+    if (b->kind != TEMP_PROFILE)
+        return;
+    *bin = temp_profile_bins(g, b);
+    *mean = temp_profile_means(g, b, *bin);
+}
+
 /* sum m u.u (+ I m r^2 w.w) over the counted atoms, tag order. */
 static double sum_mv2(struct gravel *g, const struct temp_state *t)
 {
     const struct atoms *a = &g->atoms;
     const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
-    double vb[3];
-    bias_velocity(g, t->bias ? t->bias : t, vb);
+    const struct temp_state *b = t->bias ? t->bias : t;
+    double vb0[3], vb[3], *mean;
+    int *bin;
+    bias_velocity(g, b, vb0);
+    profile_of(g, b, &bin, &mean);
     struct par_sum sum = {0}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
@@ -205,6 +292,7 @@ static double sum_mv2(struct gravel *g, const struct temp_state *t)
             continue;
         const double *w = a->omega + 3 * i, m = a->rmass[i], rad = a->radius[i];
         double u[3];
+        atom_bias(b, vb0, bin, mean, i, vb);
         thermal_velocity(g, t, i, vb, u);
         if (t->kind != TEMP_SPHERE_ROTATE)
             par_sum_add(g, &sum, 2 * a->tag[i], (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * m);
@@ -212,6 +300,8 @@ static double sum_mv2(struct gravel *g, const struct temp_state *t)
             par_sum_add(g, &sum, 2 * a->tag[i] + 1,
                         (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * INERTIA * rad * rad * m);
     }
+    free(bin);
+    free(mean);
     return par_sum_total(g, &sum);
 }
 
@@ -228,8 +318,11 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
     const struct atoms *a = &g->atoms;
     const void *r = temp_region(g, t);
     const int *order = atoms_tag_order(g);
-    double vb[3];
-    bias_velocity(g, t->bias ? t->bias : t, vb);
+    const struct temp_state *b = t->bias ? t->bias : t;
+    double vb0[3], vb[3], *mean;
+    int *bin;
+    bias_velocity(g, b, vb0);
+    profile_of(g, b, &bin, &mean);
     struct par_sum s[6] = {{0}}; /* every rank's atoms, in tag order */
     for (int k = 0; k < a->n; k++) {
         const int i = order[k];
@@ -237,6 +330,7 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
             continue;
         const double *w = a->omega + 3 * i, m = a->rmass[i], rad = a->radius[i];
         double v[3];
+        atom_bias(b, vb0, bin, mean, i, vb);
         thermal_velocity(g, t, i, vb, v);
         const int64_t key = 2 * a->tag[i];
         if (t->kind != TEMP_SPHERE_ROTATE) {
@@ -257,29 +351,35 @@ void temp_vector(struct gravel *g, struct temp_state *t, double out[6])
             par_sum_add(g, &s[5], key + 1, in * w[1] * w[2]);
         }
     }
+    free(bin);
+    free(mean);
     for (int d = 0; d < 6; d++)
         out[d] = par_sum_total(g, &s[d]) * compute_mvv2e(g);
 }
 
 int temp_has_bias(const struct temp_state *t)
 {
-    return t->kind == TEMP_COM || t->kind == TEMP_PARTIAL || t->kind == TEMP_REGION;
+    return t->kind == TEMP_COM || t->kind == TEMP_PARTIAL || t->kind == TEMP_REGION ||
+           t->kind == TEMP_PROFILE;
 }
 
 double *temp_bias_remove(struct gravel *g, struct temp_state *t)
 {
     struct atoms *a = &g->atoms;
     const void *r = temp_region(g, t);
-    double vcm[3];
+    double vcm[3], *mean;
+    int *bin;
     bias_velocity(g, t, vcm);
+    profile_of(g, t, &bin, &mean);
     double *vb = gr_calloc(g, 3 * (size_t)a->n + 1, sizeof *vb);
     for (int i = 0; i < a->n; i++) {
         if (!(a->mask[i] & t->groupbit))
             continue;
         double *v = a->v + 3 * i, *b = vb + 3 * i;
         for (int d = 0; d < 3; d++) {
-            if (t->kind == TEMP_COM) {
-                b[d] = vcm[d];
+            if (t->kind == TEMP_COM || t->kind == TEMP_PROFILE) {
+                b[d] = t->kind == TEMP_COM ? vcm[d]
+                       : t->flags[d] && bin[i] >= 0 ? mean[4 * bin[i] + d] : 0.0;
                 v[d] -= b[d];
             } else if ((t->kind == TEMP_PARTIAL && !t->flags[d]) ||
                        (r && !t->region_in(r, a->x + 3 * i))) {
@@ -288,6 +388,8 @@ double *temp_bias_remove(struct gravel *g, struct temp_state *t)
             }
         }
     }
+    free(bin);
+    free(mean);
     return vb;
 }
 

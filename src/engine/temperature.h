@@ -8,7 +8,10 @@
  *   TEMP_SPHERE_ROTATE  0.4 m r^2 w.w only;
  *   TEMP_COM            m (v - vcm).(v - vcm), vcm the group's (temp/com);
  *   TEMP_PARTIAL        m v.v over the components of flags (temp/partial);
- *   TEMP_REGION         m v.v of the group's atoms in the region now (temp/region).
+ *   TEMP_REGION         m v.v of the group's atoms in the region now (temp/region);
+ *   TEMP_PROFILE        m (v - vbin).(v - vbin), vbin the mean velocity of the
+ *                       atom's spatial bin over the flagged components
+ *                       (temp/profile; dim x bins fewer degrees of freedom).
  * Degrees of freedom, per atom of the group (LAMMPS 2021 dof_compute):
  *   TRANS: dim;  SPHERE_ALL: 3d 6 (3 if r = 0), 2d 3 (2 if r = 0);
  *   SPHERE_ROTATE: 3d 3, 2d 1 (0 if r = 0); COM, REGION: dim; PARTIAL: the
@@ -51,6 +54,13 @@ void temp_bias_restore(struct gravel *g, const struct temp_state *t, double *vb)
  * temp/rescale, velocity scale ... bias yes). Host arrays. */
 void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbit,
                         double factor);
+/* TEMP_PROFILE's bins: their count; each host atom's bin (-1 outside the
+ * group; malloc'd); each bin's mean of the flagged velocity components and
+ * its atom count, 4 per bin (summed in tag order, every rank's atoms;
+ * malloc'd; collective on several ranks). */
+int temp_profile_nbins(const struct temp_state *t);
+int *temp_profile_bins(struct gravel *g, const struct temp_state *t);
+double *temp_profile_means(struct gravel *g, const struct temp_state *t, const int *bin);
 /* The temperature that thermo uses: thermo_modify temp ID, else thermo_temp. */
 struct temp_state *temp_thermo(struct gravel *g);
 /* compute_modify keywords of a temperature: dynamic/dof (dynamic),
