@@ -59,6 +59,10 @@ struct ave_chunk {
     struct ave_file af;
     char *format;
     char *vtk;                          /* vtk file pattern or NULL */
+    int spatial;                        /* LIGGGHTS's fix ave/spatial: its file layout */
+    int write_ts;                       /* ave/spatial write_ts: the step line */
+    char own_chunk;                     /* ave/spatial: the chunk compute is its own */
+    char reduced;                       /* ave/spatial: units reduced */
     /* state */
     int nchunk, maxchunk;
     double *count_one, *count_many, *count_sum, *count_total, *count_list;
@@ -88,12 +92,17 @@ static void ave_destroy(struct fix *f)
     f->data = NULL;
 }
 
-static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
+/* ave/chunk's arguments; spatial: as LIGGGHTS's fix ave/spatial (argv's
+ * chunkID its own compute), whose file heads and step lines differ */
+static void create_in(struct gravel *g, struct fix *f, int argc, char **argv, int spatial,
+                      int write_ts)
 {
     if (argc < 5)
         gr_error(g, "fix ave/chunk expects Nevery Nrepeat Nfreq chunkID and at least one value");
     struct ave_chunk *a = gr_calloc(g, 1, sizeof *a);
     f->data = a;
+    a->spatial = spatial;
+    a->write_ts = write_ts;
     ave_sched_parse(g, &a->s, argv, "fix ave/chunk");
     snprintf(a->chunk, sizeof a->chunk, "%s", argv[3]);
     struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
@@ -209,7 +218,29 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (a->vtk && (chunk_atom_ncoord(cc) == 0 || chunk_atom_radial(cc)))
         gr_error(g, "fix ave/chunk: vtk needs spatial bins on a grid (compute %s is not bin/1d, "
                     "bin/2d or bin/3d)", cc->id);
-    if (file) {
+    if (file && spatial) { /* LIGGGHTS: a title of one character prints nothing */
+        ave_file_open(g, &a->af, file, append, "fix ave/spatial");
+        FILE *fp = a->af.fp;
+        if (!title[0])
+            fprintf(fp, "# Spatial-averaged data for fix %s and group %s\n", f->id,
+                    g->groups.name[f->igroup]);
+        else if (strlen(title[0]) > 1)
+            fprintf(fp, "%s\n", title[0]);
+        if (!title[1])
+            fprintf(fp, "# Timestep Number-of-bins\n");
+        else if (strlen(title[1]) > 1)
+            fprintf(fp, "%s\n", title[1]);
+        if (!title[2]) {
+            static const char *head[] = {"", "# Bin Coord Ncount", "# Bin Coord1 Coord2 Ncount",
+                                         "# Bin Coord1 Coord2 Coord3 Ncount"};
+            fputs(head[chunk_atom_ncoord(cc)], fp);
+            for (int k = 0; k < a->nvalues; k++)
+                fprintf(fp, " %s", a->names[k]);
+            fputc('\n', fp);
+        } else if (strlen(title[2]) > 1)
+            fprintf(fp, "%s\n", title[2]);
+        ave_file_header_done(g, &a->af, "fix ave/spatial");
+    } else if (file) {
         ave_file_open(g, &a->af, file, append, "fix ave/chunk");
         FILE *fp = a->af.fp;
         if (title[0])
@@ -233,6 +264,142 @@ static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
     }
     ave_sched_reset(g, &a->s);
     f->hooks = HOOK_END_OF_STEP;
+}
+
+static void ave_create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    create_in(g, f, argc, argv, 0, 1);
+}
+
+/* LIGGGHTS's (LAMMPS 2013's) `fix ID group ave/spatial Nevery Nrepeat Nfreq
+ * dim origin delta [dim origin delta ...] value ... keyword ...`: ave/chunk
+ * over its own compute chunk/atom bin/Nd (ID_spatial: the fix's group,
+ * units, region, discard no: atoms beyond the box in the end bins, as
+ * ave/spatial clamps them), with ave/spatial's file: `# Spatial-averaged
+ * data ...`, `# Timestep Number-of-bins`, `# Bin Coord ...`, a step line
+ * without the total count (write_ts no: none). */
+static void spatial_create(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    const char *who = "fix ave/spatial";
+    if (argc < 7)
+        gr_error(g, "%s expects Nevery Nrepeat Nfreq dim origin delta ... and at least one "
+                    "value", who);
+    int i = 3, ndim = 0;
+    while (i + 2 < argc && (!strcmp(argv[i], "x") || !strcmp(argv[i], "y") ||
+                            !strcmp(argv[i], "z"))) {
+        if (++ndim > 3)
+            gr_error(g, "%s: at most three binned dimensions", who);
+        i += 3;
+    }
+    if (!ndim)
+        gr_error(g, "%s: expecting a dimension x, y or z after Nfreq, got '%.32s'", who, argv[3]);
+    const char *units = "lattice", *region = NULL;
+    int write_ts = 1;
+    char **rest = gr_calloc(g, (size_t)argc + 1, sizeof *rest);
+    int nrest = 0;
+    static const char *pass1[] = {"norm", "file", "append", "title1", "title2", "title3"};
+    for (int k = i; k < argc; k++) {
+        const char *kw = argv[k];
+        int known = 0;
+        for (size_t q = 0; q < sizeof pass1 / sizeof pass1[0]; q++)
+            known |= !strcmp(kw, pass1[q]);
+        if (!strcmp(kw, "units") || !strcmp(kw, "region") || !strcmp(kw, "write_ts")) {
+            arg_need(g, argc, k, 1, kw);
+            if (kw[0] == 'u')
+                units = argv[k + 1];
+            else if (kw[0] == 'r')
+                region = argv[k + 1];
+            else
+                write_ts = arg_yesno(g, argv[k + 1], "write_ts");
+            k++;
+        } else if (!strcmp(kw, "std")) {
+            gr_error(g, "%s: keyword 'std' is not supported", who);
+        } else if (known) {
+            arg_need(g, argc, k, 1, kw);
+            rest[nrest++] = argv[k];
+            rest[nrest++] = argv[++k];
+        } else if (!strcmp(kw, "ave")) {
+            arg_need(g, argc, k, 1, kw);
+            rest[nrest++] = argv[k];
+            rest[nrest++] = argv[++k];
+            if (!strcmp(argv[k], "window")) {
+                arg_need(g, argc, k, 1, "ave window");
+                rest[nrest++] = argv[++k];
+            }
+        } else if (!strcmp(kw, "overwrite")) {
+            rest[nrest++] = argv[k];
+        } else if (!strcmp(kw, "vx") || !strcmp(kw, "vy") || !strcmp(kw, "vz") ||
+                   !strcmp(kw, "fx") || !strcmp(kw, "fy") || !strcmp(kw, "fz") ||
+                   !strcmp(kw, "density/number") || !strcmp(kw, "density/mass") ||
+                   !strncmp(kw, "c_", 2) || !strncmp(kw, "f_", 2) || !strncmp(kw, "v_", 2)) {
+            rest[nrest++] = argv[k];
+        } else {
+            gr_error(g, "%s: unknown value or keyword '%.64s'", who, kw);
+        }
+    }
+    /* its own chunk/atom compute: ID_spatial (replacing one of an earlier fix of this ID) */
+    char cid[GR_NAMELEN + 16], style[8];
+    snprintf(cid, sizeof cid, "%s_spatial", f->id);
+    snprintf(style, sizeof style, "bin/%dd", ndim);
+    if (compute_find(g, cid)) {
+        char *un[] = {cid};
+        cmd_uncompute(g, 1, un);
+    }
+    char *cargv[24];
+    int nc = 0;
+    cargv[nc++] = cid;
+    cargv[nc++] = g->groups.name[f->igroup];
+    cargv[nc++] = "chunk/atom";
+    cargv[nc++] = style;
+    for (int k = 3; k < 3 + 3 * ndim; k++)
+        cargv[nc++] = argv[k];
+    cargv[nc++] = "units";
+    cargv[nc++] = (char *)units;
+    cargv[nc++] = "discard";
+    cargv[nc++] = "no";
+    if (region) {
+        cargv[nc++] = "region";
+        cargv[nc++] = (char *)region;
+    }
+    cmd_compute(g, nc, cargv);
+    char **av = gr_calloc(g, (size_t)nrest + 5, sizeof *av);
+    int na = 0;
+    for (int k = 0; k < 3; k++)
+        av[na++] = argv[k];
+    av[na++] = cid;
+    for (int k = 0; k < nrest; k++)
+        av[na++] = rest[k];
+    free(rest);
+    create_in(g, f, na, av, 1, write_ts);
+    free(av);
+    ((struct ave_chunk *)f->data)->own_chunk = 1;
+    ((struct ave_chunk *)f->data)->reduced = !strcmp(units, "reduced");
+}
+
+/* the box may change size in a run: a shrink-wrapped face or a fix that
+ * deforms or rescales the box (LAMMPS's domain->box_change_size) */
+static int box_changes_size(const struct gravel *g)
+{
+    for (int d = 0; d < 3; d++)
+        for (int k = 0; k < 2; k++)
+            if (g->dom.bnd[d][k] == BND_S || g->dom.bnd[d][k] == BND_M)
+                return 1;
+    static const char *const deforming[] = {"deform", "npt", "nph", "npt/sphere", "nph/sphere"};
+    for (int i = 0; i < g->styles.nfix; i++)
+        for (size_t k = 0; k < sizeof deforming / sizeof deforming[0]; k++)
+            if (!strcmp(g->styles.fix[i]->style->name, deforming[k]))
+                return 1;
+    return 0;
+}
+
+/* unfix of an ave/spatial: its chunk compute goes with it */
+static void spatial_unfix(struct gravel *g, struct fix *f)
+{
+    const struct ave_chunk *a = f->data;
+    if (a && a->own_chunk && compute_find(g, a->chunk)) {
+        char *un[] = {(char *)a->chunk};
+        cmd_uncompute(g, 1, un);
+    }
 }
 
 static void grow(struct gravel *g, struct ave_chunk *a, int nchunk)
@@ -402,7 +569,10 @@ static void take(struct gravel *g, struct fix *f)
         double count = 0;
         for (int m = 0; m < a->nchunk; m++)
             count += a->count_total[m];
-        fprintf(fp, "%lld %d %g\n", (long long)g->step, a->nchunk, count);
+        if (!a->spatial)
+            fprintf(fp, "%lld %d %g\n", (long long)g->step, a->nchunk, count);
+        else if (a->write_ts)
+            fprintf(fp, "%lld %d\n", (long long)g->step, a->nchunk);
         const char *fmt = a->format ? a->format : " %g";
         const struct chunk_grid *gr = a->grid;
         double nc = a->w.norm;
@@ -489,6 +659,9 @@ static void ave_init(struct gravel *g, struct fix *f)
 {
     struct ave_chunk *a = f->data;
     chunk_atom_get(g, a->chunk, "fix ave/chunk");
+    if (a->spatial && a->w.kind != AVE_ONE && !a->reduced && box_changes_size(g))
+        gr_error(g, "Fix ave/spatial settings invalid with changing box size (ave running or "
+                    "window needs units reduced: the bin count may change)");
     for (int j = 0; j < a->nvalues; j++) {
         if (a->which[j] == V_COMPUTE)
             compute_peratom_check(g, a->ids[j], a->argindex[j], "fix ave/chunk");
@@ -507,6 +680,17 @@ static void sample(struct gravel *g, struct fix *f)
     struct ave_chunk *a = f->data;
     ave_sample(g, f, &a->s, "fix ave/chunk", take);
 }
+
+const struct fix_style fix_style_ave_spatial = {
+    .name = "ave/spatial",
+    .flags = FIX_OUTPUT,
+    .create = spatial_create,
+    .init = ave_init,
+    .setup = sample,
+    .end_of_step = sample,
+    .unfix = spatial_unfix,
+    .destroy = ave_destroy,
+};
 
 const struct fix_style fix_style_ave_chunk = {
     .name = "ave/chunk",
