@@ -208,7 +208,7 @@ static const char *const par_fixes[] = {"nve/sphere", "nve", "gravity", "freeze"
                                         "particledistribution/discrete/massbased", "deposit",
                                         "langevin", "nve/limit", "nve/noforce", "lineforce",
                                         "planeforce", "spring", "temp/berendsen",
-                                        "massflow/mesh", "ave/spatial", NULL};
+                                        "massflow/mesh", "ave/spatial", "buoyancy", NULL};
 
 static int listed(const char *const *list, const char *name)
 {
@@ -239,7 +239,9 @@ int par_fix_value_global(const struct fix *f)
                                          /* each sample taken on every rank's atoms as one
                                           * process (ave_common.c) */
                                          "ave/time", "ave/chunk", "ave/histo", "ave/correlate",
-                                         "massflow/mesh", "ave/spatial", NULL};
+                                         "massflow/mesh", "ave/spatial",
+                                         "buoyancy", /* its sum in tag order */
+                                         NULL};
     return listed(global, f->style->name);
 }
 
