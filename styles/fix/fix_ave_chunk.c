@@ -338,9 +338,9 @@ static void spatial_create(struct gravel *g, struct fix *f, int argc, char **arg
         }
     }
     /* its own chunk/atom compute: ID_spatial (replacing one of an earlier fix of this ID) */
-    char cid[GR_NAMELEN + 16], style[8];
+    static char *const styles[] = {"bin/1d", "bin/2d", "bin/3d"};
+    char cid[GR_NAMELEN + 16], *style = styles[ndim - 1];
     snprintf(cid, sizeof cid, "%s_spatial", f->id);
-    snprintf(style, sizeof style, "bin/%dd", ndim);
     if (compute_find(g, cid)) {
         char *un[] = {cid};
         cmd_uncompute(g, 1, un);
