@@ -21,8 +21,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (check, check_same_on_ranks, close, expect_errors, falling_bed,  # noqa: E402
-                  file_numbers, run_with_lmp, thermo_rows)
+from peer import (check, check_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
+                  files_against_lmp)
 
 NAMES = ["c1", "c2", "c3", "c4", "c5", "c6"]
 FILES = ["%s.txt" % n for n in NAMES]
@@ -44,22 +44,8 @@ run 1500
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        rc, out, lout, g, lm = run_with_lmp(DECK, tmp, "limit")
-        a = {f: file_numbers(os.path.join(g, f)) for f in FILES} if rc == 0 else {}
-        ta = thermo_rows(out, 7) if rc == 0 else []
-        if lout is None:
-            check("chunk_limit_ids_equal_lmp", False,
-                  "lmp (Debian package lammps) is not installed")
-        else:
-            b = {f: file_numbers(os.path.join(lm, f)) for f in FILES}
-            tb = thermo_rows(lout, 7)
-            bad = [(f, len(a.get(f, [])), len(b[f])) for f in FILES
-                   if len(a.get(f, [])) != len(b[f]) or not b[f]]
-            bad += [(f, x, y) for f in FILES for x, y in zip(a.get(f, []), b[f])
-                    if not close(x, y, 1e-9, 1e-13)]
-            bad += [("thermo", r, s) for r, s in zip(ta, tb) if r != s]
-            check("chunk_limit_ids_equal_lmp", rc == 0 and len(ta) == len(tb) == 7 and not bad,
-                  "%s: %s" % (bad[:4], (out if rc else lout)[-300:]))
+        rc, out, ta, g = files_against_lmp("chunk_limit_ids_equal_lmp", DECK, FILES, 7, 7, tmp,
+                                           1e-9, 1e-13)
         # the counts: limit 2, exact 5, type limit 2, 4 bins, 3 kept layers; discard no grows
         check("chunk_limit_counts", len(ta) == 7 and ta[0][1:] == [2, 5, 2, 4, 3, 3] and
               ta[-1][6] == 4, "thermo %s" % ta)

@@ -22,8 +22,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (check, check_same_on_ranks, close, expect_errors, falling_bed,  # noqa: E402
-                  file_numbers, run_with_lmp, thermo_rows)
+from peer import (check, check_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
+                  files_against_lmp)
 
 NAMES = ["s1", "s2", "c1", "c2", "c3"]
 FILES = ["%s.txt" % n for n in NAMES] + ["p1.txt", "p3.txt", "p5.txt"]
@@ -49,21 +49,8 @@ run 1500
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        rc, out, lout, g, lm = run_with_lmp(DECK, tmp, "shells")
-        a = {f: file_numbers(os.path.join(g, f)) for f in FILES} if rc == 0 else {}
-        ta = thermo_rows(out, 6) if rc == 0 else []
-        if lout is None:
-            check("chunk_shells_equal_lmp", False, "lmp (Debian package lammps) is not installed")
-        else:
-            b = {f: file_numbers(os.path.join(lm, f)) for f in FILES}
-            tb = thermo_rows(lout, 6)
-            bad = [(f, len(a.get(f, [])), len(b[f])) for f in FILES
-                   if len(a.get(f, [])) != len(b[f]) or not b[f]]
-            bad += [(f, x, y) for f in FILES for x, y in zip(a.get(f, []), b[f])
-                    if not close(x, y, 1e-9, 1e-12)]
-            bad += [("thermo", r, s) for r, s in zip(ta, tb) if r != s]
-            check("chunk_shells_equal_lmp", rc == 0 and len(ta) == len(tb) == 7 and not bad,
-                  "%s: %s" % (bad[:4], (out if rc else lout)[-300:]))
+        rc, out, ta, g = files_against_lmp("chunk_shells_equal_lmp", DECK, FILES, 6, 7, tmp,
+                                           1e-9, 1e-12)
         # the chunk counts: shells x planes
         check("chunk_shells_counts", ta[:1] == [[0, 5, 4, 16, 12, 12]] if ta else False,
               "thermo %s" % ta[:1])

@@ -18,8 +18,8 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from peer import (check, check_same_on_ranks, close, expect_errors, falling_bed,  # noqa: E402
-                  file_numbers, run_with_lmp, thermo_rows)
+from peer import (check, check_same_on_ranks, expect_errors, falling_bed,  # noqa: E402
+                  files_against_lmp)
 
 FILES = ["mt.txt", "mz.txt"]
 DECK = falling_bed(ntypes=3) + """set type 1 type/fraction 2 0.4 1234
@@ -40,22 +40,8 @@ run 500
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        rc, out, lout, g, lm = run_with_lmp(DECK, tmp, "msd")
-        a = {f: file_numbers(os.path.join(g, f)) for f in FILES} if rc == 0 else {}
-        ta = thermo_rows(out, 4) if rc == 0 else []
-        if lout is None:
-            check("msd_chunk_equal_lmp", False, "lmp (Debian package lammps) is not installed")
-        else:
-            b = {f: file_numbers(os.path.join(lm, f)) for f in FILES}
-            tb = thermo_rows(lout, 4)
-            bad = [(f, len(a.get(f, [])), len(b[f])) for f in FILES
-                   if len(a.get(f, [])) != len(b[f]) or not b[f]]
-            bad += [(f, x, y) for f in FILES for x, y in zip(a.get(f, []), b[f])
-                    if not close(x, y, 1e-9, 1e-13)]
-            bad += [("thermo", r, s) for r, s in zip(ta, tb)
-                    if any(not close(x, y, 1e-9, 1e-13) for x, y in zip(r, s))]
-            check("msd_chunk_equal_lmp", rc == 0 and len(ta) == len(tb) == 8 and not bad,
-                  "%s: %s" % (bad[:4], (out if rc else lout)[-300:]))
+        rc, out, ta, g = files_against_lmp("msd_chunk_equal_lmp", DECK, FILES, 4, 8, tmp,
+                                           1e-9, 1e-13)
         # the first row is zero, later ones are not
         check("msd_chunk_reference", len(ta) == 8 and ta[0][1:] == [0, 0, 0] and
               all(r[1] > 0 for r in ta[1:]), "thermo %s" % ta)

@@ -124,6 +124,17 @@ def run_gravel(cwd, deck):
                           capture_output=True, text=True, timeout=1200)
 
 
+def run_gravel_ranks(cwd, deck, np=2):
+    """the deck on np MPI ranks (bin/gravel-mpi), or None when mpirun or
+    bin/gravel-mpi is missing"""
+    mpi = os.path.join(ROOT, "bin", "gravel-mpi")
+    if shutil.which("mpirun") is None or not os.path.exists(mpi):
+        return None
+    return subprocess.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np),
+                           mpi, "-in", deck, "-log", "log.gravel"], cwd=cwd,
+                          capture_output=True, text=True, timeout=1200)
+
+
 def thermo(text):
     return [l.split() for l in text.split("\n")
             if re.match(r"^\s*\d+\s+\d+\s+[-\d.eE+]+(\s+[-\d.eE+]+)*\s*$", l)]

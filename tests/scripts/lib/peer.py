@@ -189,6 +189,31 @@ def run_with_lmp(deck, parent, name):
     return rc, out, lout, g, lm
 
 
+def files_against_lmp(name, deck, files, ncol, nrows, parent, rel, absolute):
+    """case name: `deck` run by bin/gravel and lmp (run_with_lmp in parent/name)
+    writes each of `files` with the same numbers within rel (or absolute) and
+    prints nrows thermo rows of ncol numbers, equal within the same; FAIL
+    naming lmp when it is not installed. Returns (gravel's exit status, its
+    output, its thermo rows, gravel's folder)"""
+    rc, out, lout, g, lm = run_with_lmp(deck, parent, name)
+    got = thermo_rows(out, ncol) if rc == 0 else []
+    if lout is None:
+        check(name, False, "lmp (Debian package lammps) is not installed")
+        return rc, out, got, g
+    a = {f: file_numbers(os.path.join(g, f)) for f in files} if rc == 0 else {}
+    b = {f: file_numbers(os.path.join(lm, f)) for f in files}
+    ref = thermo_rows(lout, ncol)
+    bad = [(f, len(a.get(f, [])), len(b[f])) for f in files
+           if len(a.get(f, [])) != len(b[f]) or not b[f]]
+    bad += [(f, x, y) for f in files for x, y in zip(a.get(f, []), b[f])
+            if not close(x, y, rel, absolute)]
+    bad += [("thermo", r, t) for r, t in zip(got, ref)
+            if any(not close(x, y, rel, absolute) for x, y in zip(r, t))]
+    check(name, rc == 0 and len(got) == len(ref) == nrows and not bad,
+          "%s: %s" % (bad[:4], (out if rc else lout)[-300:]))
+    return rc, out, got, g
+
+
 def thermo_against_lmp(name, deck, ncol, nrows, parent, rel, absolute):
     """case name: `deck` run by bin/gravel and lmp in folders parent/name_g and
     parent/name_l prints nrows thermo rows of ncol numbers in each, equal
