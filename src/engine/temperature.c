@@ -236,13 +236,19 @@ double *temp_profile_means(struct gravel *g, const struct temp_state *t, const i
     return mean;
 }
 
+double temp_profile_bias(const struct temp_state *t, const int *bin, const double *mean, int i,
+                         int d)
+{
+    return t->flags[d] && bin[i] >= 0 ? mean[4 * bin[i] + d] : 0.0;
+}
+
 /* the bias an atom's velocity loses: vb (TEMP_COM's, else 0), or with a
  * profile (bin and mean non-NULL) its bin's mean of the flagged components */
 static void atom_bias(const struct temp_state *b, const double vb[3], const int *bin,
                       const double *mean, int i, double out[3])
 {
     for (int d = 0; d < 3; d++)
-        out[d] = mean ? (b->flags[d] && bin[i] >= 0 ? mean[4 * bin[i] + d] : 0.0) : vb[d];
+        out[d] = mean ? temp_profile_bias(b, bin, mean, i, d) : vb[d];
 }
 
 /* the velocity atom i's temperature counts: v minus the bias (TEMP_COM),
@@ -378,8 +384,7 @@ double *temp_bias_remove(struct gravel *g, struct temp_state *t)
         double *v = a->v + 3 * i, *b = vb + 3 * i;
         for (int d = 0; d < 3; d++) {
             if (t->kind == TEMP_COM || t->kind == TEMP_PROFILE) {
-                b[d] = t->kind == TEMP_COM ? vcm[d]
-                       : t->flags[d] && bin[i] >= 0 ? mean[4 * bin[i] + d] : 0.0;
+                b[d] = t->kind == TEMP_COM ? vcm[d] : temp_profile_bias(t, bin, mean, i, d);
                 v[d] -= b[d];
             } else if ((t->kind == TEMP_PARTIAL && !t->flags[d]) ||
                        (r && !t->region_in(r, a->x + 3 * i))) {

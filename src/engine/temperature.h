@@ -61,6 +61,10 @@ void temp_scale_thermal(struct gravel *g, struct temp_state *t, unsigned groupbi
 int temp_profile_nbins(const struct temp_state *t);
 int *temp_profile_bins(struct gravel *g, const struct temp_state *t);
 double *temp_profile_means(struct gravel *g, const struct temp_state *t, const int *bin);
+/* Component d of the velocity bias of host atom i: its bin's mean when d is
+ * flagged, else 0 (bin, mean: the two above). */
+double temp_profile_bias(const struct temp_state *t, const int *bin, const double *mean, int i,
+                         int d);
 /* The temperature that thermo uses: thermo_modify temp ID, else thermo_temp. */
 struct temp_state *temp_thermo(struct gravel *g);
 /* compute_modify keywords of a temperature: dynamic/dof (dynamic),

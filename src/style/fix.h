@@ -106,13 +106,17 @@ enum fix_need {
  *                    differ from the writer's (another file, `append`).
  *   FIX_WALL         its walls push particles by contact (wall/gran,
  *                    wall/gran/region, wall/pair): a particle centred on a
- *                    wall's surface is a likely cause of a non-finite run. */
+ *                    wall's surface is a likely cause of a non-finite run.
+ *   FIX_BOX_CHANGE   it changes the box's size during a run (deform, npt,
+ *                    nph: LAMMPS's box_change_size), so layouts laid out on
+ *                    the box (spatial bins) may change with it. */
 enum fix_flag {
     FIX_FROZEN = 1 << 0,
     FIX_CONSERVING = 1 << 1,
     FIX_STORES_IDS = 1 << 2,
     FIX_OUTPUT = 1 << 3,
     FIX_WALL = 1 << 4,
+    FIX_BOX_CHANGE = 1 << 5,
 };
 
 #define FIX_MAX_SOURCES 10

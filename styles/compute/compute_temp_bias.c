@@ -164,7 +164,7 @@ static void profile_array(struct gravel *g, struct compute *c)
             continue;
         double u[3];
         for (int d = 0; d < 3; d++)
-            u[d] = a->v[3 * i + d] - (t->flags[d] ? mean[4 * bin[i] + d] : 0.0);
+            u[d] = a->v[3 * i + d] - temp_profile_bias(t, bin, mean, i, d);
         par_sum_add(g, &s[bin[i]], a->tag[i], (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) *
                                                  a->rmass[i]);
     }

@@ -70,6 +70,21 @@ struct ave_chunk {
     const struct chunk_grid *grid;
 };
 
+/* the values without an ID */
+static const struct { const char *name; int which, index; } plain[] = {
+    {"vx", V_V, 0}, {"vy", V_V, 1}, {"vz", V_V, 2}, {"fx", V_F, 0}, {"fy", V_F, 1},
+    {"fz", V_F, 2}, {"density/number", V_DNUM, 0}, {"density/mass", V_DMASS, 0},
+    {"mass", V_MASS, 0}, {"solidicity", V_SOLID, 0}};
+
+/* s is a value (a plain one, or c_, f_, v_ with a name) */
+static int value_word(const char *s)
+{
+    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++)
+        if (!strcmp(s, plain[k].name))
+            return 1;
+    return (!strncmp(s, "c_", 2) || !strncmp(s, "f_", 2) || !strncmp(s, "v_", 2)) && s[2];
+}
+
 static void ave_destroy(struct fix *f)
 {
     struct ave_chunk *a = f->data;
@@ -107,10 +122,6 @@ static void create_in(struct gravel *g, struct fix *f, int argc, char **argv, in
     snprintf(a->chunk, sizeof a->chunk, "%s", argv[3]);
     struct compute *cc = chunk_atom_get(g, a->chunk, "fix ave/chunk");
     int iarg = 4;
-    static const struct { const char *name; int which, index; } plain[] = {
-        {"vx", V_V, 0}, {"vy", V_V, 1}, {"vz", V_V, 2}, {"fx", V_F, 0}, {"fy", V_F, 1},
-        {"fz", V_F, 2}, {"density/number", V_DNUM, 0}, {"density/mass", V_DMASS, 0},
-        {"mass", V_MASS, 0}, {"solidicity", V_SOLID, 0}};
     for (; iarg < argc; iarg++) {
         const char *s = argv[iarg];
         int w = -1, idx = 0;
@@ -328,10 +339,7 @@ static void spatial_create(struct gravel *g, struct fix *f, int argc, char **arg
             }
         } else if (!strcmp(kw, "overwrite")) {
             rest[nrest++] = argv[k];
-        } else if (!strcmp(kw, "vx") || !strcmp(kw, "vy") || !strcmp(kw, "vz") ||
-                   !strcmp(kw, "fx") || !strcmp(kw, "fy") || !strcmp(kw, "fz") ||
-                   !strcmp(kw, "density/number") || !strcmp(kw, "density/mass") ||
-                   !strncmp(kw, "c_", 2) || !strncmp(kw, "f_", 2) || !strncmp(kw, "v_", 2)) {
+        } else if (value_word(kw)) {
             rest[nrest++] = argv[k];
         } else {
             gr_error(g, "%s: unknown value or keyword '%.64s'", who, kw);
@@ -377,18 +385,16 @@ static void spatial_create(struct gravel *g, struct fix *f, int argc, char **arg
 }
 
 /* the box may change size in a run: a shrink-wrapped face or a fix that
- * deforms or rescales the box (LAMMPS's domain->box_change_size) */
+ * changes it (FIX_BOX_CHANGE; LAMMPS's domain->box_change_size) */
 static int box_changes_size(const struct gravel *g)
 {
     for (int d = 0; d < 3; d++)
         for (int k = 0; k < 2; k++)
             if (g->dom.bnd[d][k] == BND_S || g->dom.bnd[d][k] == BND_M)
                 return 1;
-    static const char *const deforming[] = {"deform", "npt", "nph", "npt/sphere", "nph/sphere"};
     for (int i = 0; i < g->styles.nfix; i++)
-        for (size_t k = 0; k < sizeof deforming / sizeof deforming[0]; k++)
-            if (!strcmp(g->styles.fix[i]->style->name, deforming[k]))
-                return 1;
+        if (g->styles.fix[i]->style->flags & FIX_BOX_CHANGE)
+            return 1;
     return 0;
 }
 

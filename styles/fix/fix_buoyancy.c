@@ -79,17 +79,12 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
  * test_direction: no component across dim) */
 static double gravity_along(struct gravel *g, const struct buoyancy *b, double *gmag)
 {
-    const struct fix *grav = NULL;
+    double acc[3], a[3];
     int n = 0;
     for (int i = 0; i < g->styles.nfix; i++)
-        if (!strcmp(g->styles.fix[i]->style->name, "gravity")) {
-            grav = g->styles.fix[i];
-            n++;
-        }
+        n += fix_gravity_vector(g->styles.fix[i], n ? a : acc);
     if (n != 1)
         gr_error(g, WHO ": need exactly one fix gravity (%d defined)", n);
-    double acc[3];
-    fix_gravity_vector(grav, acc);
     double across = 0;
     for (int d = 0; d < 3; d++)
         across += d == b->dim ? 0. : acc[d];

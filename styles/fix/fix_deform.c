@@ -550,6 +550,7 @@ int fix_deform_changes(const struct fix *f, int p)
 
 const struct fix_style fix_style_deform = {
     .name = "deform",
+    .flags = FIX_BOX_CHANGE,
     .create = create,
     .init = init,
     .end_of_step = end_of_step,

@@ -60,6 +60,8 @@ struct massflow {
     signed char *counter;           /* by tag: -1, 0, 1, 2 */
     int64_t ncounter;
     int64_t *near, *near_start;     /* tags near each triangle: near[near_start[t] ..) */
+    int *where;                     /* [nwhere] host index by tag (-1: none), each step */
+    int64_t nwhere;
     int have_near;
 };
 
@@ -71,6 +73,7 @@ static void mf_destroy(struct fix *f)
         free(m->counter);
         free(m->near);
         free(m->near_start);
+        free(m->where);
     }
     free(m);
     f->data = NULL;
@@ -248,9 +251,7 @@ static void mf_init(struct gravel *g, struct fix *f)
 {
     struct massflow *m = f->data;
     struct mesh_surface *ms = mesh_surface_get(g, m->mesh, WHO);
-    double c = ms->curvature;
-    double cos_tol = c > 0. ? cos(c * M_PI / 180.) : 1. - 1e-5; /* LIGGGHTS's curvature_ */
-    if (mesh_planar_check(&ms->m, cos_tol) >= 0)
+    if (mesh_planar_check(&ms->m, mesh_surface_cos_tol(ms)) >= 0)
         gr_error(g, WHO ": requires a planar face mass flow measurement (mesh %s is not planar)",
                  m->mesh);
     struct mesh_pose p;
@@ -373,7 +374,12 @@ static void mf_end_of_step(struct gravel *g, struct fix *f)
     for (int i = 0; i < a->n; i++)
         top = a->tag[i] > top ? a->tag[i] : top;
     counters_room(g, m, top);
-    int *where = gr_malloc(g, ((size_t)top + 1) * sizeof *where); /* host index by tag */
+    if (top + 1 > m->nwhere) { /* grown, never shrunk: no allocation per step */
+        free(m->where);
+        m->where = gr_malloc(g, ((size_t)top + 1) * sizeof *m->where);
+        m->nwhere = top + 1;
+    }
+    int *where = m->where;
     for (int64_t t = 0; t <= top; t++)
         where[t] = -1;
     for (int i = 0; i < a->n; i++)
@@ -411,7 +417,6 @@ static void mf_end_of_step(struct gravel *g, struct fix *f)
             }
         }
     }
-    free(where);
     m->mass += mass_this;
     m->np += np_this;
     if (reported && m->af.fp)

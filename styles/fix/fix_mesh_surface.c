@@ -170,6 +170,12 @@ void mesh_surface_create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->hooks = 0;
 }
 
+double mesh_surface_cos_tol(const struct mesh_surface *ms)
+{
+    const double c = ms->curvature;
+    return c > 0. ? cos(c * M_PI / 180.) : 1. - 1e-5; /* LIGGGHTS's curvature_ */
+}
+
 static void create_planar(struct gravel *g, struct fix *f, int argc, char **argv)
 {
     mesh_surface_create(g, f, argc, argv);
@@ -177,8 +183,7 @@ static void create_planar(struct gravel *g, struct fix *f, int argc, char **argv
     double c = ms->curvature;
     if (c != 0. && !(c > 0. && c <= 60.))
         gr_error(g, "fix mesh/surface/planar: 0 < curvature <= 60 degrees required (got %g)", c);
-    double cos_tol = c > 0. ? cos(c * M_PI / 180.) : 1. - 1e-5; /* LIGGGHTS's curvature_ */
-    int t = mesh_planar_check(&ms->m, cos_tol);
+    int t = mesh_planar_check(&ms->m, mesh_surface_cos_tol(ms));
     if (t >= 0)
         gr_error(g, "fix mesh/surface/planar: Face defined as planar face is in fact not planar "
                     "(triangle %d and a neighbour). You might want to check the 'curvature' "

@@ -91,6 +91,10 @@ void mesh_surface_pose_of(struct gravel *g, const struct mesh_surface *ms, const
 double mesh_surface_tri_normal(const struct mesh *m, int t, double n[3]);
 /* Unit normals of ms's triangles (ms->normal, right hand over vertices 0 1 2). */
 void mesh_surface_normals(struct gravel *g, struct mesh_surface *ms);
+/* The cosine two neighbouring triangles' normals must exceed for LIGGGHTS's
+ * planarity test (its curvature_: cos of the `curvature` angle, else
+ * 1 - 1e-5), for mesh_planar_check. */
+double mesh_surface_cos_tol(const struct mesh_surface *ms);
 /* Free what ms holds (not ms itself). */
 void mesh_surface_free(struct mesh_surface *ms);
 

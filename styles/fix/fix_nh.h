@@ -23,9 +23,10 @@ void fix_nh_read_restart(struct gravel *g, struct fix *f, const unsigned char *b
 
 /* A descriptor of this family: the style name picks thermostat, barostat
  * and /sphere (fix_nh_create). */
-#define FIX_NH_STYLE(ident, nm)                                                                \
+#define FIX_NH_STYLE(ident, nm, fl)                                                            \
     const struct fix_style fix_style_##ident = {                                               \
         .name = nm,                                                                            \
+        .flags = fl,                                                                           \
         .create = fix_nh_create,                                                               \
         .init = fix_nh_init,                                                                   \
         .setup = fix_nh_setup,                                                                 \

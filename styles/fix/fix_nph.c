@@ -4,4 +4,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(nph, "nph");
+FIX_NH_STYLE(nph, "nph", FIX_BOX_CHANGE);

@@ -4,4 +4,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(nph_sphere, "nph/sphere");
+FIX_NH_STYLE(nph_sphere, "nph/sphere", FIX_BOX_CHANGE);

@@ -4,4 +4,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(npt, "npt");
+FIX_NH_STYLE(npt, "npt", FIX_BOX_CHANGE);

@@ -4,4 +4,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(npt_sphere, "npt/sphere");
+FIX_NH_STYLE(npt_sphere, "npt/sphere", FIX_BOX_CHANGE);

@@ -4,4 +4,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(nvt, "nvt");
+FIX_NH_STYLE(nvt, "nvt", 0);

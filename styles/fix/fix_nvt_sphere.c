@@ -5,4 +5,4 @@
 #include "fix.h"
 #include "fix_nh.h"
 
-FIX_NH_STYLE(nvt_sphere, "nvt/sphere");
+FIX_NH_STYLE(nvt_sphere, "nvt/sphere", 0);
