@@ -25,6 +25,10 @@
  *           bounded below by the adhesion -kc delta (dmax then moves on);
  *           k2max = kn coefficientMaxElasticStiffness, kc = kn
  *           coefficientAdhesionStiffness, phiF = coefficientPlasticityDepth
+ *   thornton_ning  Fn from Thornton and Ning's adhesive elastic-plastic law
+ *           (lg_thornton_ning: surfaceEnergy gamma_s, yield radius ri
+ *           coefficientYieldRatio, its state in the history), hertz's kt,
+ *           gammat = +2 sqrt(5/6) beta sqrt(kt meff) (LIGGGHTS's sign: < 0)
  *   hertz/stiffness  kn, kt, gamman meff, gammat meff, each x sqrt(reff deltan)
  *   hooke/stiffness  kn, kt, gamman meff, gammat meff (absolute_damping: no meff)
  *   (tangential_damping off: gammat = 0)
@@ -92,14 +96,171 @@ static inline REAL lg_hysteresis(__global const REAL *p, const REAL kn, const RE
     return fHys;
 }
 
-/* dmax: hooke/hysteresis's history entry (NULL for the other models) */
-static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL reff,
-                                             const REAL meff, const REAL deltan, const REAL vn,
-                                             REAL *dmax, const int update)
+/* thornton_ning (LIGGGHTS normal_model_thornton_ning.h; Thornton and Ning
+ * 1998): adhesive elastic-plastic loading along the largest overlap, JKR-like
+ * unloading, detachment at -5/9 fc, in LIGGGHTS's order of operations.
+ * fc = 3/2 pi gamma_s reff is the pull-off force of the surface energy. */
+static inline REAL lg_tn_fl(const REAL force_old, const REAL fc, const int adhesion)
+{
+    /* LIGGGHTS takes the root as it is and goes NaN where round-off puts the
+     * force a hair below -fc (at pull-off; a yielded contact's fc, recomputed
+     * from a flattened radius that is reff again up to round-off), and fl,
+     * (sqrt(force_old + fc) -+ sqrt(fc))^2 >= 0, can round below 0 too: both
+     * held at 0, which changes nothing where LIGGGHTS's values are finite */
+    const REAL root = sqrt(fmax(fc * (force_old + fc), (REAL)0));
+    if (adhesion)
+        return fmax(force_old + (REAL)2 * (fc - root), (REAL)0);
+    return fmax(force_old + (REAL)2 * (fc + root), (REAL)0);
+}
+
+/* the contact radius at the equivalent Hertz load fl (or sqrt(R delta)
+ * without adhesion) */
+static inline REAL lg_tn_a(const REAL fl, const REAL E, const REAL R, const REAL delta,
+                           const REAL gamma_s)
+{
+    if (gamma_s == (REAL)0)
+        return sqrt(R * delta);
+    return pow(((REAL)3. * R * fl) / ((REAL)4. * E), (REAL)(1. / 3.));
+}
+
+/* the elastic branch: *df the force change over dn, returns the force */
+static inline REAL lg_tn_elastic(const REAL force_old, const REAL fc, const int adhesion,
+                                 const REAL E, const REAL R, const REAL delta, const REAL dn,
+                                 const REAL gamma_s, REAL *df)
+{
+    const REAL fl = lg_tn_fl(force_old, fc, adhesion);
+    const REAL a = lg_tn_a(fl, E, R, delta, gamma_s);
+    REAL d;
+    if (fc != (REAL)0) {
+        const REAL up = (REAL)3 * sqrt(fl) - (REAL)3 * sqrt(fc);
+        const REAL down = (REAL)3 * sqrt(fl) - sqrt(fc);
+        d = (REAL)2 * E * a * up / down;
+    } else {
+        d = (REAL)2 * E * a;
+    }
+    *df = d * dn;
+    return force_old + *df;
+}
+
+/* The normal force of ri's contact at overlap delta; h the history row
+ * (enum lg_tn_hist), updated. A yield stress <= 0 (LIGGGHTS stops: "Invalid
+ * yield stress") gives NaN, which stops the run (the host checks the atoms
+ * present at each run start: styles/pair/pair_gran.c). */
+static inline REAL lg_thornton_ning(__global const REAL *p, const REAL ri, REAL reff,
+                                    const REAL delta, REAL *h)
+{
+    const REAL E = p[LG_YEFF], gamma_s = p[LG_GSURF];
+    int flags = (int)h[LG_TN_FLAGS];
+    REAL delta_old = h[LG_TN_DELTA_OLD], delta_max = h[LG_TN_DELTA_MAX];
+    REAL force_old = h[LG_TN_FORCE_OLD], force_max = h[LG_TN_FORCE_MAX];
+    REAL detaching_delta = h[LG_TN_DETACH_DELTA], detaching_force = h[LG_TN_DETACH_FORCE];
+    REAL fc = gamma_s * reff * (REAL)M_PI * ((REAL)3. / (REAL)2.);
+    const REAL a_yield = ri * p[LG_YRATIO];
+    const REAL yield_stress = (((REAL)2. * E * a_yield) / ((REAL)M_PI * reff)) -
+                              sqrt((REAL)2. * gamma_s * E / ((REAL)M_PI * a_yield));
+    if (!(yield_stress > (REAL)0))
+        return NAN;
+    const REAL limit_yield_stress = pow((REAL)2. * E * E * gamma_s /
+                                            ((REAL)M_PI * (REAL)M_PI * reff),
+                                        (REAL)(1. / 3.));
+    const int plastic_from_start = yield_stress < limit_yield_stress;
+    if (!(flags & LG_TN_VIRGIN)) { /* first touch */
+        force_old = -((REAL)8. / (REAL)9.) * fc;
+        delta_old = 0;
+        flags = LG_TN_VIRGIN;
+        force_max = force_old;
+        delta_max = 0;
+        detaching_delta = 0;
+        detaching_force = -((REAL)5. / (REAL)9.) * fc;
+    }
+    REAL f, df = 0;
+    if ((flags & LG_TN_DETACHING) && delta < detaching_delta) {
+        f = 0;
+    } else {
+        if (flags & LG_TN_DETACHING) { /* reloads from where it detached */
+            flags &= ~LG_TN_DETACHING;
+            delta_old = detaching_delta;
+            force_old = detaching_force;
+        }
+        const REAL dn = delta - delta_old;
+        int adhesion = (flags & LG_TN_ADHESION) != 0;
+        if (delta >= delta_max) { /* loading */
+            delta_max = delta;
+            const REAL fl = lg_tn_fl(force_old, fc, 0);
+            const REAL a = lg_tn_a(fl, E, reff, delta, gamma_s);
+            if (a >= a_yield)
+                flags |= LG_TN_YIELDING;
+            if (plastic_from_start || (flags & LG_TN_YIELDING)) {
+                REAL d;
+                if (fc != (REAL)0) {
+                    const REAL up = (REAL)3 * (REAL)M_PI * reff * yield_stress * sqrt(fl) -
+                                    (REAL)2 * a_yield * E * sqrt(fc);
+                    const REAL down = (REAL)3 * sqrt(fl) - sqrt(fc);
+                    d = up / down;
+                } else {
+                    d = (REAL)2 * E * a_yield;
+                }
+                df = d * dn;
+                f = force_old + df;
+            } else {
+                f = lg_tn_elastic(force_old, fc, adhesion, E, reff, delta, dn, gamma_s, &df);
+            }
+        } else { /* unloading or reloading: a yielded contact's flattened radius */
+            if (flags & LG_TN_YIELDING) {
+                const REAL fl_max = lg_tn_fl(force_max, fc, 0);
+                reff = reff * fl_max / (force_max + sqrt((REAL)4 * fc * fl_max));
+                fc = ((REAL)3. / (REAL)2.) * (REAL)M_PI * gamma_s * reff;
+            }
+            f = lg_tn_elastic(force_old, fc, adhesion, E, reff, delta, dn, gamma_s, &df);
+        }
+        if (gamma_s == (REAL)0 && f < (REAL)0) { /* no adhesion: parts at zero force */
+            f = 0;
+            flags |= LG_TN_DETACHING;
+            detaching_delta = delta;
+            detaching_force = 0;
+        }
+        if (f < -fc) { /* past the pull-off force: the other branch */
+            adhesion = 1 - adhesion;
+            f = lg_tn_elastic(force_old, fc, adhesion, E, reff, delta, dn, gamma_s, &df);
+        }
+        if (adhesion && f + (REAL)3 * df >= -((REAL)5. / (REAL)9.) * fc) { /* detaches */
+            f = 0;
+            flags |= LG_TN_DETACHING;
+            detaching_delta = delta_old;
+            detaching_force = force_old;
+        }
+        flags = adhesion ? flags | LG_TN_ADHESION : flags & ~LG_TN_ADHESION;
+    }
+    h[LG_TN_FLAGS] = (REAL)flags;
+    h[LG_TN_DELTA_OLD] = delta;
+    h[LG_TN_DELTA_MAX] = delta_max;
+    h[LG_TN_FORCE_OLD] = f;
+    h[LG_TN_FORCE_MAX] = f > force_max ? f : force_max;
+    h[LG_TN_DETACH_DELTA] = detaching_delta;
+    h[LG_TN_DETACH_FORCE] = detaching_force;
+    return f;
+}
+
+/* nh: the normal model's history (LG_NORMAL_HIST REAL; NULL without one);
+ * radi: the contact's first particle (thornton_ning's yield radius) */
+static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL radi,
+                                             const REAL reff, const REAL meff,
+                                             const REAL deltan, const REAL vn, REAL *nh,
+                                             const int update)
 {
     struct lg_normal_out o;
     const int nm = (int)p[LG_NMODEL];
     const int tdamp = p[LG_TDAMP] != (REAL)0;
+    if (nm == LG_N_THORNTON_NING) { /* kt and gammat from Hertz; LIGGGHTS's gammat has the
+                                     * sign of beta, and no tangential_damping switch */
+        const REAL sqrtval = sqrt(reff * deltan);
+        o.kn = o.gamman = 0;
+        o.kt = (REAL)8. * p[LG_GEFF] * sqrtval;
+        o.gammat = (REAL)2. * LG_SQRT56 * p[LG_BETA] * sqrt(o.kt * meff);
+        o.Fn = nh ? lg_thornton_ning(p, radi, reff, deltan, nh) : (REAL)0;
+        return o;
+    }
+    REAL *dmax = nh;
     if (nm == LG_N_HOOKE_HYSTERESIS) {
         const REAL Y = p[LG_YEFF], cv = p[LG_CHARV], l = p[LG_LOGE];
         const REAL sqrtval = sqrt(reff);
@@ -328,10 +489,10 @@ static inline REAL lg_conduction(__global const REAL *p, const REAL r, const REA
 }
 #endif
 
-/* The composed law; dmax: hooke/hysteresis's history entry, roll: the epsd
- * models' spring torque (each NULL otherwise). The wall's set has
+/* The composed law; nh: the normal model's history (lg_normal), roll: the
+ * epsd models' spring torque (each NULL otherwise). The wall's set has
  * p[LG_WALL] = 1. */
-static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *dmax,
+static inline void gran_model_law(const struct contact *c, __global const REAL *p, REAL *nh,
                                   REAL3 *shear, REAL3 *roll, struct contact_force *out)
 {
     const int wall = p[LG_WALL] != (REAL)0;
@@ -358,7 +519,7 @@ static inline void gran_model_law(const struct contact *c, __global const REAL *
                               vt.z - (del.y * wr.x - del.x * wr.y));
     const REAL reff = wall ? radi : radi * radj / (radi + radj);
 
-    const struct lg_normal_out nf = lg_normal(p, reff, c->meff, deltan, vn, dmax,
+    const struct lg_normal_out nf = lg_normal(p, radi, reff, c->meff, deltan, vn, nh,
                                               c->shearupdate);
     REAL3 F = (REAL3)(nf.Fn * en.x, nf.Fn * en.y, nf.Fn * en.z);
     if ((int)p[LG_COH] != LG_C_NONE) {
@@ -403,17 +564,18 @@ static inline void gran_model_eval(const struct contact *c, __global const REAL 
     gran_model_law(c, p, 0, shear, 0, out);
 }
 
-/* PAIR_EVAL_ROW form (hooke/hysteresis, the epsd rolling models): h =
- * [dmax (hooke/hysteresis)] shear [spring torque (epsd*)] */
+/* PAIR_EVAL_ROW form (hooke/hysteresis, thornton_ning, the epsd rolling
+ * models): h = [the normal model's history (LG_NORMAL_HIST)] shear [spring
+ * torque (epsd*)] */
 static inline void gran_model_eval_row(const struct contact *c, __global const REAL *p, REAL *h,
                                        struct contact_force *out)
 {
-    const int hyst = (int)p[LG_NMODEL] == LG_N_HOOKE_HYSTERESIS;
+    const int nh = LG_NORMAL_HIST((int)p[LG_NMODEL]);
     const int epsd = (int)p[LG_ROLL] >= LG_R_EPSD;
-    REAL *hs = h + hyst;
+    REAL *hs = h + nh;
     REAL3 s = (REAL3)(hs[0], hs[1], hs[2]);
     REAL3 m = epsd ? (REAL3)(hs[3], hs[4], hs[5]) : (REAL3)(0);
-    gran_model_law(c, p, hyst ? h : 0, &s, epsd ? &m : 0, out);
+    gran_model_law(c, p, nh ? h : 0, &s, epsd ? &m : 0, out);
     hs[0] = s.x;
     hs[1] = s.y;
     hs[2] = s.z;
@@ -431,9 +593,9 @@ static inline REAL gran_model_eval_tcol(const struct contact *c, __global const 
 {
     const int nm = (int)p[LG_NMODEL];
     const REAL reff = p[LG_WALL] != (REAL)0 ? c->radi : c->reff;
-    if (nm == LG_N_HERTZ)
+    if (nm == LG_N_HERTZ || nm == LG_N_THORNTON_NING) /* thornton_ning: its Hertz loading */
         return tcol_hertz((REAL)4. / (REAL)3. * p[LG_YEFF], reff, c->meff, vn);
-    const struct lg_normal_out o = lg_normal(p, reff, c->meff, (REAL)0, (REAL)0, 0, 0);
+    const struct lg_normal_out o = lg_normal(p, c->radi, reff, c->meff, (REAL)0, (REAL)0, 0, 0);
     if (nm == LG_N_HERTZ_STIFFNESS)
         return tcol_hertz(p[LG_KN], reff, c->meff, vn);
     return o.kn > (REAL)0 ? tcol_linear(o.kn, 0, c->meff) : (REAL)0;

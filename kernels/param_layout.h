@@ -111,13 +111,26 @@ enum col_form { COL_SS, COL_SL, COL_LL };
  * and the area of contact_area constant; the epsd rolling models'
  * coefficientRollingViscousDamping (epsd, epsd3; 0 for epsd2), the
  * prefactor of kr (2.25 for epsd, rollingStiffness for epsd3) and of the
- * rolling inertia (1.4 in 3d, 1.5 in 2d). */
+ * rolling inertia (1.4 in 3d, 1.5 in 2d); thornton_ning's surfaceEnergy (of the
+ * pair) and coefficientYieldRatio (of type I: the contact's first particle,
+ * a wall's atom). */
 enum lg_param { LG_NMODEL, LG_YEFF, LG_GEFF, LG_BETA, LG_LOGE, LG_CHARV, LG_KN, LG_KT, LG_GN,
                 LG_GT, LG_ABSDAMP, LG_TDAMP, LG_LIMIT, LG_KTTOKN, LG_TMODEL, LG_MU, LG_COH,
                 LG_CED, LG_ROLL, LG_RMU, LG_TORSION, LG_WALL, LG_K2MAX, LG_KC, LG_PHIF,
-                LG_HEAT, LG_HC, LG_HAREA, LG_RVISC, LG_RSTIFF, LG_RINERTIA, LG_NPARAM };
+                LG_HEAT, LG_HC, LG_HAREA, LG_RVISC, LG_RSTIFF, LG_RINERTIA, LG_GSURF,
+                LG_YRATIO, LG_NPARAM };
 enum lg_normal { LG_N_HERTZ, LG_N_HOOKE, LG_N_HERTZ_STIFFNESS, LG_N_HOOKE_STIFFNESS,
-                 LG_N_HOOKE_HYSTERESIS };
+                 LG_N_HOOKE_HYSTERESIS, LG_N_THORNTON_NING };
+/* The normal model's history REAL, first in a contact's history row:
+ * hooke/hysteresis the largest overlap; thornton_ning its state (enum
+ * lg_tn_hist) */
+#define LG_NORMAL_HIST(nm) ((nm) == LG_N_HOOKE_HYSTERESIS ? 1 : (nm) == LG_N_THORNTON_NING ? 7 : 0)
+/* thornton_ning's history: LIGGGHTS's ten values, its four flags in one
+ * REAL (LG_TN_* bits) */
+enum lg_tn_hist { LG_TN_FLAGS, LG_TN_DELTA_OLD, LG_TN_DELTA_MAX, LG_TN_FORCE_OLD,
+                  LG_TN_FORCE_MAX, LG_TN_DETACH_DELTA, LG_TN_DETACH_FORCE };
+enum lg_tn_flag { LG_TN_VIRGIN = 1, LG_TN_ADHESION = 2, LG_TN_DETACHING = 4,
+                  LG_TN_YIELDING = 8 };
 enum lg_cohesion { LG_C_NONE, LG_C_SJKR, LG_C_SJKR2 };
 /* the epsd models (elastic-plastic spring-dashpot) keep their spring torque
  * in 3 more history REAL: every model from LG_R_EPSD on has them */

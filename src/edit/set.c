@@ -7,7 +7,8 @@
  * (radius 0), also in 2d; `density/disc` (2d only) sets mass = pi r^2 rho
  * (an area density); `mass` sets the mass directly. Keywords apply in order.
  * Coordinates set in periodic dimensions are wrapped into the box. Values of
- * type, mass, diameter, density, omega, x y z and vx vy vz may be v_name, an
+ * type, mass, diameter, density, omega, omegax omegay omegaz (LIGGGHTS's one
+ * component), x y z and vx vy vz may be v_name, an
  * atom-style variable evaluated for every atom when the keyword applies.
  *
  * The random keywords draw LAMMPS's numbers (src/core/random.c), so `lmp` on one
@@ -419,6 +420,14 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
             for (int i = 0; i < n; i++)
                 if (sel[i])
                     a->v[3 * i + d] = VAL(p, val, i), count++;
+        } else if (!strncmp(kw, "omega", 5) && kw[5] >= 'x' && kw[5] <= 'z' && kw[6] == '\0') {
+            /* LIGGGHTS's omegax, omegay, omegaz: one component */
+            int d = kw[5] - 'x';
+            double val = 0;
+            const double *p = kw_value(g, v[0], kw, &val, buf, dry);
+            for (int i = 0; i < n; i++)
+                if (sel[i])
+                    a->omega[3 * i + d] = VAL(p, val, i), count++;
         } else if (!strcmp(kw, "mol")) {
             if (!g->atoms.molecule_flag)
                 gr_error(g, "cannot set attribute mol for atom style (fix property/atom mol "

@@ -299,12 +299,13 @@ static void create_wall(struct gravel *g, struct fix *f, int argc, char **argv,
                         "(use fix wall/gran model ... primitive or mesh)");
         i = lg_parse(g, &w.lg, argc, argv, stop, "fix wall/gran");
         w.history = w.lg.tm ? 3 : 0;
-        const int hyst = w.lg.nm == LG_N_HOOKE_HYSTERESIS;
-        if (w.lg.roll >= LG_R_EPSD || hyst) {
-            /* the row form (kernels/pair_gran.cl gran_model_eval_row): hooke/hysteresis's
-             * largest overlap, the shear, then an epsd model's spring torque */
+        const int nh = LG_NORMAL_HIST(w.lg.nm);
+        if (w.lg.roll >= LG_R_EPSD || nh) {
+            /* the row form (kernels/pair_gran.cl gran_model_eval_row): the normal model's
+             * state (hooke/hysteresis, thornton_ning), the shear, then an epsd model's
+             * spring torque */
             w.model = WG_LIGGGHTS_ROW;
-            w.history = hyst + 3 + (w.lg.roll >= LG_R_EPSD ? 3 : 0);
+            w.history = nh + 3 + (w.lg.roll >= LG_R_EPSD ? 3 : 0);
         }
         if (i >= argc)
             gr_error(g, "fix wall/gran model ...: missing the wall ('primitive type T ...' or "
@@ -667,6 +668,7 @@ static void init(struct gravel *g, struct fix *f)
             for (int J = 1; J <= nt; J++)
                 lg_pack(g, &w->lg, nt, I, J, 1,
                         w->table + ((size_t)(I - 1) * nt + (J - 1)) * LG_NPARAM, who);
+        lg_check_yield(g, &w->lg, w->table, nt, w->style == W_MESH ? -1 : w->wtype, who);
         w->law.by_type = w->style == W_MESH ? 0 : -w->wtype;
         w->law.nparam = LG_NPARAM;
     }

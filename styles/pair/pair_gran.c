@@ -19,8 +19,10 @@
  * absolute_damping (hooke/stiffness, off), torsionTorque (rolling, off).
  * hooke/hysteresis (those of hooke and coefficientMaxElasticStiffness,
  * coefficientAdhesionStiffness, coefficientPlasticityDepth; pairs only)
- * keeps the largest overlap in its history row, the epsd models their
- * spring torque after the shear (PAIR_EVAL_ROW: [dmax] shear [torque]).
+ * keeps the largest overlap in its history row, thornton_ning (hertz's
+ * materials, surfaceEnergy per type pair, coefficientYieldRatio per type; no
+ * rolling friction) its seven-REAL state, the epsd models their spring
+ * torque after the shear (PAIR_EVAL_ROW: [normal state] shear [torque]).
  * Not supported (clear errors): other surface models, the heating and
  * energy-tracking settings. */
 #include <math.h>
@@ -44,6 +46,7 @@ static const struct {
     {"hertz/stiffness", LG_N_HERTZ_STIFFNESS},
     {"hooke/stiffness", LG_N_HOOKE_STIFFNESS},
     {"hooke/hysteresis", LG_N_HOOKE_HYSTERESIS},
+    {"thornton_ning", LG_N_THORNTON_NING},
 };
 
 static int in_list(const char *s, const char *const *list)
@@ -82,7 +85,8 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
                     m->nm = normal_models[k].nm;
             if (m->nm < 0)
                 gr_error(g, "%s: model '%.64s' is not supported (gravel has hertz, hooke, "
-                            "hertz/stiffness, hooke/stiffness, hooke/hysteresis)", who, v);
+                            "hertz/stiffness, hooke/stiffness, hooke/hysteresis, "
+                            "thornton_ning)", who, v);
         } else if (!strcmp(kw, "tangential")) {
             if (!strcmp(v, "history"))
                 m->tm = 1;
@@ -135,9 +139,14 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
         i += 2;
     }
     if (m->nm < 0)
-        gr_error(g, "%s: expected 'model hertz|hooke|hertz/stiffness|hooke/stiffness'", who);
+        gr_error(g, "%s: expected 'model hertz|hooke|hertz/stiffness|hooke/stiffness|"
+                    "hooke/hysteresis|thornton_ning'", who);
     if (m->tm < 0)
         gr_error(g, "%s: expected 'tangential history|no_history' after the model", who);
+    if (m->nm == LG_N_THORNTON_NING && m->roll != LG_R_NONE)
+        gr_error(g, "%s: rolling_friction with model thornton_ning is not supported (LIGGGHTS "
+                    "3.8's thornton_ning leaves the normal stiffness the rolling models read "
+                    "unset)", who);
     return i;
 }
 
@@ -166,7 +175,14 @@ void lg_from_coef(struct lg_model *m, const double *c)
 
 static int material_model(const struct lg_model *m)
 {
-    return m->nm == LG_N_HERTZ || m->nm == LG_N_HOOKE || m->nm == LG_N_HOOKE_HYSTERESIS;
+    return m->nm == LG_N_HERTZ || m->nm == LG_N_HOOKE || m->nm == LG_N_HOOKE_HYSTERESIS ||
+           m->nm == LG_N_THORNTON_NING;
+}
+
+/* hooke's stiffness from the characteristic velocity */
+static int hooke_model(const struct lg_model *m)
+{
+    return m->nm == LG_N_HOOKE || m->nm == LG_N_HOOKE_HYSTERESIS;
 }
 
 static const char *const hysteresis_props[3] = {"coefficientMaxElasticStiffness",
@@ -215,7 +231,21 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
                             gr_error(g, "%s: %s must be %s (types %d %d: %g)", who,
                                      hysteresis_props[k], k == 0 ? "> 1" : ">= 0", I, J, v);
                     }
-        if (m->nm != LG_N_HERTZ) {
+        if (m->nm == LG_N_THORNTON_NING) {
+            const double *yr = fpg_pertype(g, "coefficientYieldRatio", nt, who);
+            for (int t = 0; t < nt; t++)
+                if (!(yr[t] >= 0 && yr[t] <= 1))
+                    gr_error(g, "%s: 0 <= coefficientYieldRatio <= 1 required (type %d: %g)",
+                             who, t + 1, yr[t]);
+            for (int I = 1; I <= nt; I++)
+                for (int J = 1; J <= nt; J++) {
+                    double v = fpg_pair(g, "surfaceEnergy", nt, I, J, who);
+                    if (!(v >= 0) || !isfinite(v))
+                        gr_error(g, "%s: surfaceEnergy must be >= 0 (types %d %d: %g)", who, I,
+                                 J, v);
+                }
+        }
+        if (hooke_model(m)) {
             double cv = fpg_scalar(g, "characteristicVelocity", who);
             if (!(cv > 0) || !isfinite(cv))
                 gr_error(g, "%s: characteristicVelocity must be > 0, got %g", who, cv);
@@ -268,8 +298,12 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
         const double l = log(fpg_pair(g, "coefficientRestitution", nt, I, J, who));
         q[LG_LOGE] = l;
         q[LG_BETA] = l / sqrt(pow(l, 2.) + pow(M_PI, 2.));
-        if (m->nm != LG_N_HERTZ)
+        if (hooke_model(m))
             q[LG_CHARV] = fpg_scalar(g, "characteristicVelocity", who);
+        if (m->nm == LG_N_THORNTON_NING) {
+            q[LG_GSURF] = fpg_pair(g, "surfaceEnergy", nt, I, J, who);
+            q[LG_YRATIO] = fpg_pertype(g, "coefficientYieldRatio", nt, who)[I - 1];
+        }
         if (m->nm == LG_N_HOOKE_HYSTERESIS) {
             q[LG_K2MAX] = fpg_pair(g, hysteresis_props[0], nt, I, J, who);
             q[LG_KC] = fpg_pair(g, hysteresis_props[1], nt, I, J, who);
@@ -302,6 +336,53 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
     q[LG_WALL] = wall;
     if (!wall)  /* fix heat/gran's conduction; walls exchange no heat */
         q[LG_HEAT] = heat_gran_conduction(g, nt, I, J, &q[LG_HC], &q[LG_HAREA]);
+}
+
+/* thornton_ning's yield stress of a contact (kernels/pair_gran.cl
+ * lg_thornton_ning), from the packed set q */
+static double tn_yield_stress(const double *q, double ri, double reff)
+{
+    const double E = q[LG_YEFF], a = ri * q[LG_YRATIO];
+    return 2. * E * a / (M_PI * reff) - sqrt(2. * q[LG_GSURF] * E / (M_PI * a));
+}
+
+void lg_check_yield(struct gravel *g, const struct lg_model *m, const double *table, int nt,
+                    int jwall, const char *who)
+{
+    if (m->nm != LG_N_THORNTON_NING)
+        return;
+    const struct atoms *at = &g->atoms;
+    double *rmin = gr_calloc(g, 2 * (size_t)nt, sizeof *rmin), *rmax = rmin + nt;
+    for (int t = 0; t < nt; t++)
+        rmin[t] = INFINITY;
+    for (int i = 0; i < at->n; i++) {
+        const int t = at->type[i] - 1;
+        if (t >= 0 && t < nt) {
+            rmin[t] = fmin(rmin[t], at->radius[i]);
+            rmax[t] = fmax(rmax[t], at->radius[i]);
+        }
+    }
+    const int wall = jwall != 0;
+    for (int I = 1; I <= nt; I++)
+        for (int J = jwall > 0 ? jwall : 1; J <= (jwall > 0 ? jwall : nt); J++) {
+            const double ri = rmin[I - 1], rj = wall ? 0 : rmax[J - 1];
+            if (!isfinite(ri) || (!wall && !(rj > 0)))
+                continue; /* no atoms of a type */
+            const double *q = table + ((size_t)(I - 1) * nt + (J - 1)) * LG_NPARAM;
+            const double reff = wall ? ri : ri * rj / (ri + rj);
+            const double ys = tn_yield_stress(q, ri, reff);
+            if (!(ys > 0)) {
+                free(rmin);
+                gr_error(g, "%s: model thornton_ning: the yield stress of a type %d atom of "
+                            "radius %g against %s %d%s is %g, not > 0 (2 Y* a_y / (pi reff) - "
+                            "sqrt(2 surfaceEnergy Y* / (pi a_y)), a_y = radius x "
+                            "coefficientYieldRatio): raise coefficientYieldRatio or lower "
+                            "surfaceEnergy (LIGGGHTS: Invalid yield stress)", who, I, ri,
+                         wall ? "a wall of type" : "type", J, wall ? "" : " (its largest)",
+                         ys);
+            }
+        }
+    free(rmin);
 }
 
 /* ---- the pair style ---- */
@@ -343,6 +424,7 @@ static void init(struct gravel *g, struct pair *p)
         for (int J = 1; J <= nt; J++)
             lg_pack(g, &m, nt, I, J, 0, t->q + ((size_t)(I - 1) * nt + (J - 1)) * LG_NPARAM,
                     "pair_style gran");
+    lg_check_yield(g, &m, t->q, nt, 0, "pair_style gran");
 }
 
 static void pack(const struct pair *p, int itype, int jtype, double *param)
@@ -364,6 +446,7 @@ static double collision_time(const struct pair *p, double m, double r, double vn
     double meff = 0.5 * m, reff = 0.5 * r;
     switch ((int)q[LG_NMODEL]) {
     case LG_N_HERTZ:
+    case LG_N_THORNTON_NING: /* its Hertz loading */
         if (!(vn > 0))
             vn = 1e-3 * sqrt(q[LG_YEFF] / (m / (4.0 / 3.0 * M_PI * r * r * r)));
         return tcol_hertz(4.0 / 3.0 * q[LG_YEFF], reff, meff, vn);
@@ -390,11 +473,11 @@ static void describe(const struct pair *p, struct pair_caps *c)
     lg_from_coef(&m, p->coef);
     pair_caps_source(c, "pair_gran.cl");
     c->rotation = 1;
-    const int hyst = m.nm == LG_N_HOOKE_HYSTERESIS, epsd = m.roll >= LG_R_EPSD;
-    if (hyst || epsd) { /* [the largest overlap] the shear [the spring torque] */
+    const int nh = LG_NORMAL_HIST(m.nm), epsd = m.roll >= LG_R_EPSD;
+    if (nh || epsd) { /* [the normal model's state] the shear [the spring torque] */
         c->eval_row = "gran_model_eval_row";
         c->history = 1;
-        c->hist_n = hyst + 3 + 3 * epsd;
+        c->hist_n = nh + 3 + 3 * epsd;
     } else {
         c->eval = "gran_model_eval";
         c->history = m.tm;
@@ -402,7 +485,8 @@ static void describe(const struct pair *p, struct pair_caps *c)
     /* LIGGGHTS resets a pair's history in surfacesClose only, which its
      * pair loop calls for rsq < contactDistanceFactor^2 radsum^2 past the
      * contact test: never with the factor 1 of spheres. A pair that
-     * separates keeps its history (shear, hysteresis's largest overlap)
+     * separates keeps its history (shear, hysteresis's largest overlap,
+     * thornton_ning's state)
      * while it stays in the neighbor lists, and finds it on touching again
      * (doc/styles/pair_gran_model.md). */
     if (c->history)

@@ -33,5 +33,12 @@ void lg_from_coef(struct lg_model *m, const double *c);
 void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *who);
 void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, int wall,
              double *q, const char *who);
+/* thornton_ning: stop (naming `who`) where a contact of the atoms present
+ * would have a yield stress <= 0 (LIGGGHTS stops at the contact), the
+ * smallest atom of each type against the largest of each (jwall > 0:
+ * against a wall of type jwall instead, < 0: walls of every type); table:
+ * the packed sets, nt x nt. Other models: nothing. */
+void lg_check_yield(struct gravel *g, const struct lg_model *m, const double *table, int nt,
+                    int jwall, const char *who);
 
 #endif

@@ -10,7 +10,7 @@
 # wear (fix mesh/surface/stress, dump mesh/gran/VTK), LIGGGHTS's insert/pack and
 # insert/stream, the meshGran, heatTransfer_1 and packing (fix adapt) tutorials,
 # LAMMPS's heat, fix pour of molecules (free and rigid), LIGGGHTS's epsd rolling
-# model, fix rigid/small and clumps, fix surface/global and surface/local,
+# and thornton_ning models, fix rigid/small and clumps, fix surface/global and surface/local,
 # the thermostats and barostats nvt, nph and npt (and /sphere), a gas whose box
 # fix deform changes every step (every remap), triclinic boxes (tilted,
 # sheared, flipped, balanced; LAMMPS's multi/in.granular), ghosts that reach
@@ -262,8 +262,9 @@ same wear_np2 wear.in 2 ""
 same wear_np3 wear.in 3 ""
 
 # LIGGGHTS's epsd rolling model: 6-REAL history rows of pairs and of primitive
-# walls (planes, a cylinder) and a mesh floor follow their atoms between ranks
-for d in wall_epsd mesh_epsd; do
+# walls (planes, a cylinder) and a mesh floor follow their atoms between ranks;
+# thornton_ning's 10-REAL rows (its state and the shear) on a settling pile
+for d in wall_epsd mesh_epsd pile_thornton_ning; do
     cp "$root/tests/reference/liggghts/floor.stl" .
     sed '$a write_dump      all custom final.dump id x y z vx vy vz omegax omegay omegaz tqx tqy tqz modify sort id format float %.17g' \
         "$root/tests/reference/liggghts/$d.in" > $d.in

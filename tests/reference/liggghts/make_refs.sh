@@ -13,6 +13,8 @@ for deck in ${*:-*.in}; do
     cp ./*.stl "$tmp/" 2>/dev/null || true
     (cd "$tmp" && stdbuf -o0 liggghts -in "$deck" > screen.txt 2>&1) || true
     cp "$tmp/out.dump" "$here/$name.dump"
-    grep -v '^Created\|^ *[0-9] by' "$tmp/screen.txt" > "$here/$name.liggghts.log"
+    # a run that stops on a signal leaves a backtrace and stray bytes: dropped
+    grep -a -v '^Created\|^ *[0-9] by\|^\[' "$tmp/screen.txt" |
+        LC_ALL=C tr -cd '\11\12\15\40-\176' > "$here/$name.liggghts.log"
     rm -rf "$tmp"
 done
