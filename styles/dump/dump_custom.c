@@ -181,6 +181,13 @@ int dump_formats_modify(struct gravel *g, struct dump_formats *fm, const struct 
         }
         return 2;
     }
+    if (strchr(what, '%')) { /* LIGGGHTS's (and LAMMPS's before 2016) `format "..."`: a line */
+        if (strlen(what) > 4000)
+            gr_error(g, "format line is too long");
+        if (apply)
+            set_str(g, &fm->line, what);
+        return 2;
+    }
     arg_need(g, argc, i, 2, "format");
     const char *f = argv[i + 2];
     if (strcmp(what, "line") == 0) {
@@ -208,8 +215,8 @@ int dump_formats_modify(struct gravel *g, struct dump_formats *fm, const struct 
         if (apply)
             set_str(g, &fm->col[k - 1], f);
     } else {
-        gr_error(g, "format must be followed by line, int, float, none or a column number, got "
-                    "'%.64s'", what);
+        gr_error(g, "format must be followed by line, int, float, none, a column number or "
+                    "(LIGGGHTS) the line's format string, got '%.64s'", what);
     }
     return 3;
 }

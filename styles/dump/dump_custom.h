@@ -23,9 +23,10 @@ struct dump_columns {
     const char *noun;           /* the columns in messages: "fields", "values" */
 };
 
-/* dump_modify format line|int|float|N "fmt" | format none at argv[i]:
- * the words used (0: not `format`); every format is checked, stored only
- * with `apply`. */
+/* dump_modify format line|int|float|N "fmt" | format none | format "fmt"
+ * (LIGGGHTS's and old LAMMPS's line: a word with a %) at argv[i]: the words
+ * used (0: not `format`); every format is checked, stored only with
+ * `apply`. */
 int dump_formats_modify(struct gravel *g, struct dump_formats *fm, const struct dump_columns *dc,
                         int argc, char **argv, int i, int apply);
 void dump_formats_free(struct dump_formats *fm);

@@ -33,7 +33,11 @@ against the liggghts dump).
 
 thornton_ning's errors (TN_ERRORS): rolling friction with it, a yield stress
 <= 0 of the atoms present (pairs and walls), a yield ratio out of [0, 1], no
-surfaceEnergy: each stops gravel with its message, naming the line."""
+surfaceEnergy: each stops gravel with its message, naming the line.
+
+LIGGGHTS's `dump_modify ... format "%d %.17g ..."` (the whole line, as
+make_refs.sh writes the decks for liggghts) gives the dump the `format float`
+form gives."""
 import math
 import os
 import statistics
@@ -183,6 +187,23 @@ def tn_errors():
     return fails
 
 
+def dump_line_format():
+    """LIGGGHTS's `dump_modify d format "%d %.17g ..."` (make_refs.sh's form of
+    the decks) writes the file the `format float %.17g` form writes"""
+    src = open(os.path.join(ROOT, "tests", "reference", "liggghts", "gran_hertz.in")).read()
+    line = '"%d' + " %.17g" * 15 + '"'
+    texts = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for k, text in enumerate((src, src.replace("format float %.17g", "format " + line, 1))):
+            open(os.path.join(tmp, "d.in"), "w").write(text)
+            r = run_gravel("d.in", tmp)
+            texts.append(open(os.path.join(tmp, "out.dump")).read() if r.returncode == 0
+                         else r.stdout[-400:])
+    ok = texts[0] == texts[1] and texts[0].count("ITEM: TIMESTEP") > 1
+    print(f"{'PASS' if ok else 'FAIL'} liggghts_dump_modify_format_line")
+    return not ok
+
+
 def main():
     decks = sorted(glob.glob(os.path.join(ROOT, "tests", "reference", "liggghts", "*.in")))
     fails = 0
@@ -231,6 +252,7 @@ def main():
     fails += not restart_check("wall_epsd", 2500)
     fails += not restart_check("gran_thornton_ning", 2700)
     fails += tn_errors()
+    fails += dump_line_format()
     return 1 if fails else 0
 
 
