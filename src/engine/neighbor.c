@@ -1619,7 +1619,7 @@ int nbr_xhold_read(struct gravel *g, int n, double *out)
     return e->nbr->ago;
 }
 
-int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f)
+int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f, double **t)
 {
     struct engine *e = g->eng;
     if (!e || !e->nbr || !e->nbr->built || e->a.n != g->atoms.n)
@@ -1630,6 +1630,8 @@ int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f)
     *ci = gr_malloc(g, ((size_t)nc + 1) * sizeof(int));
     *cj = gr_malloc(g, ((size_t)nc + 1) * sizeof(int));
     *f = gr_malloc(g, (3 * (size_t)nc + 1) * sizeof(double));
+    if (t)
+        *t = gr_calloc(g, 3 * (size_t)nc + 1, sizeof(double));
     if (nc == 0)
         return 0;
     double *rec = gr_malloc(g, w * (size_t)nc * sizeof(double));
@@ -1643,8 +1645,13 @@ int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f)
     else
         memset(rec, 0, w * (size_t)nc * sizeof(double));
     for (int c = 0; c < nc; c++)
-        for (int d = 0; d < 3; d++)
-            (*f)[3 * (size_t)c + d] = quiet[c] ? 0.0 : rec[w * (size_t)c + d];
+        for (int d = 0; d < 3; d++) {
+            const double *r = rec + w * (size_t)c;
+            (*f)[3 * (size_t)c + d] = quiet[c] ? 0.0 : r[d];
+            /* the owner's torque: its own (F ti tj), or -radi tc (PAIR_TC) */
+            if (t && !quiet[c] && w > 3)
+                (*t)[3 * (size_t)c + d] = w == 9 ? r[3 + d] : -g->atoms.radius[(*ci)[c]] * r[3 + d];
+        }
     free(rec);
     free(quiet);
     return nc;

@@ -133,10 +133,11 @@ void nbr_state_free(struct nbr_state *s);
  * evaluation (the records pair_contacts wrote: zero for a contact that did
  * not act), read back in contact order: ci[k] and cj[k] the two atoms
  * (device indices = host indices after run_sync_host), f[3k .. 3k+2] the
- * force on ci[k] from cj[k] (cj[k] receives its negative). Returns the
- * count (the arrays malloc'd, caller frees), or -1 when no list is built
- * for the current atoms (nothing allocated). */
-int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f);
+ * force on ci[k] from cj[k] (cj[k] receives its negative) and, when t is
+ * not NULL, t[3k .. 3k+2] the torque on ci[k] (0 without rotation). Returns
+ * the count (the arrays malloc'd, caller frees), or -1 when no list is
+ * built for the current atoms (nothing allocated). */
+int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f, double **t);
 
 /* The list's box for a kernel's BOX argument (kernels/kernel_args.h):
  * Lx Ly Lz (0 = not periodic) and the tilts xy xz yz. */

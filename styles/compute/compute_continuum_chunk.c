@@ -565,7 +565,7 @@ static int read_contacts(struct gravel *g, struct compute *c, struct cc_contact 
     const struct atoms *at = &g->atoms;
     int *ci, *cj;
     double *f;
-    const int nc = nbr_contact_forces(g, &ci, &cj, &f);
+    const int nc = nbr_contact_forces(g, &ci, &cj, &f, NULL);
     if (nc < 0)
         gr_error(g, WHO " %s: stress, fabric and boundary/force read the contacts of a run: "
                     "evaluate it during or after a run with these atoms",
