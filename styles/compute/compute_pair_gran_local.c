@@ -27,17 +27,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compute.h"
+#include "compute_pair_gran_local.h"
 #include "error.h"
 #include "host_pairs.h"
 #include "neighbor.h"
 #include "pair.h"
 
-enum pgl_value { PG_POS, PG_VEL, PG_ID, PG_F, PG_FN, PG_FT, PG_T, PG_TN, PG_TT, PG_HIST,
-                 PG_AREA, PG_DELTA, PG_CP, PG_N };
 static const char *const pgl_names[PG_N] = {
     "pos", "vel", "id", "force", "force_normal", "force_tangential", "torque",
     "torque_normal", "torque_tangential", "history", "contactArea", "delta", "contactPoint"};
+extern const struct compute_style compute_style_pair_gran_local;
 static const int pgl_width[PG_N] = {6, 6, 3, 3, 3, 3, 3, 3, 3, 0, 1, 1, 3};
 
 struct pgl {
@@ -244,6 +243,20 @@ static void pgl_local(struct gravel *g, struct compute *c)
     free(cj);
     free(fc);
     free(tc);
+}
+
+int pgl_columns(const struct compute *c, int at[PG_N])
+{
+    if (c->style != &compute_style_pair_gran_local)
+        return 0;
+    const struct pgl *pg = c->data;
+    int n = 0;
+    for (int k = 0; k < PG_N; k++) {
+        at[k] = pg->on[k] ? n : -1;
+        if (pg->on[k])
+            n += k == PG_HIST ? pg->hist_w : pgl_width[k];
+    }
+    return 1;
 }
 
 const struct compute_style compute_style_pair_gran_local = {

@@ -15,12 +15,21 @@
    torque equal for equal radii, the contact point one box period away), and
    the ghost's velocity (LIGGGHTS's is half a kick old: ghosts are not updated
    after the final integration) is left out.
-2. The forces are those that acted: with a dashpot (coefficientRestitution
+2. dump local/gran/vtk of the same compute writes LIGGGHTS's dataset
+   (fc3000.liggghts.vtk.gz, read with VTK's reader): the same cell arrays in
+   the same order (vel1 vel2 id1 id2 force force_normal force_tangential
+   torque contact_area delta), per contact the points x_i, x_j and the contact
+   point (to LIGGGHTS's 6 printed digits, the contact point up to a box
+   period) joined by three lines that carry the contact's values, equal to
+   1e-9 of each array's largest magnitude.
+3. The forces are those that acted: with a dashpot (coefficientRestitution
    0.5) every atom's force in the dump equals the sum of its contacts' rows
    (the force on i, its negative on j) to 1e-12.
-3. The default columns are LIGGGHTS's 25 (pos vel id force torque history
+4. The default columns are LIGGGHTS's 25 (pos vel id force torque history
    contactArea); the errors (heatFlux, an unknown keyword, history of a
-   model without one, no pair style, 2 MPI ranks) stop gravel, naming the line.
+   model without one, no pair style, 2 MPI ranks; the dump's compute of
+   another style or without pos, an XML file name) stop gravel, naming the
+   line.
 
 Usage: liggghts_pair_gran_local.py [--update]. One PASS/FAIL line per case."""
 import gzip
@@ -81,16 +90,108 @@ def compare(mine, ref):
     return worst, where
 
 
+def vtk_deck():
+    """the deck with the contacts drawn by dump local/gran/vtk instead of dump local"""
+    lines = [l for l in DECK.split("\n") if not l.startswith(("dump            dl",
+                                                              "dump_modify     dl"))]
+    return "\n".join(lines).replace("run             3000",
+                                    "dump            dv all local/gran/vtk 3000 fc*.vtk cpgl\n"
+                                    "run             3000")
+
+
 def update():
     with tempfile.TemporaryDirectory() as tmp:
         open(os.path.join(tmp, "contacts.in"), "w").write(DECK)
-        subprocess.run(["liggghts", "-in", "contacts.in"], cwd=tmp, capture_output=True,
-                       timeout=600, check=True)
+        open(os.path.join(tmp, "vtk.in"), "w").write(vtk_deck())
+        for deck in ("contacts.in", "vtk.in"):
+            subprocess.run(["liggghts", "-in", deck], cwd=tmp, capture_output=True,
+                           timeout=600, check=True)
         for s in STEPS:
             with open(os.path.join(tmp, "contacts.%d.txt" % s), "rb") as f, \
                     gzip.open(os.path.join(REF, "contacts.%d.liggghts.txt.gz" % s), "wb") as g:
                 shutil.copyfileobj(f, g)
+        with open(os.path.join(tmp, "fc3000.vtk"), "rb") as f, \
+                gzip.open(os.path.join(REF, "fc3000.liggghts.vtk.gz"), "wb") as g:
+            shutil.copyfileobj(f, g)
     print("updated", REF)
+
+
+def read_contacts_vtk(text):
+    """a local/gran/vtk file: (array names, {(lower id, higher id): (points, values)},
+    lines per contact, whether every contact's lines are LIGGGHTS's three)"""
+    import vtk
+    r = vtk.vtkPolyDataReader()
+    r.ReadFromInputStringOn()
+    r.SetInputString(text)
+    r.ReadAllFieldsOn()
+    r.Update()
+    o = r.GetOutput()
+    cd = o.GetCellData()
+    names = [cd.GetArrayName(k) for k in range(cd.GetNumberOfArrays())]
+    ncell, npts = o.GetNumberOfCells(), o.GetNumberOfPoints()
+    per = ncell // max(npts // 3, 1) if npts else 0
+    lines_ok = per == 3 and ncell == npts
+    out = {}
+    for c in range(npts // 3):
+        ids = vtk.vtkIdList()
+        for k, want in enumerate(((0, 1), (0, 2), (1, 2))):
+            o.GetCellPoints(3 * c + k, ids)
+            lines_ok &= (ids.GetId(0), ids.GetId(1)) == (3 * c + want[0], 3 * c + want[1])
+        pts = [list(o.GetPoint(3 * c + k)) for k in range(3)]
+        vals = {n: list(cd.GetArray(n).GetTuple(3 * c)) for n in names}
+        same = all(list(cd.GetArray(n).GetTuple(3 * c + k)) == vals[n]
+                   for n in names for k in (1, 2))
+        lines_ok &= same
+        i, j = int(vals["id1"][0]), int(vals["id2"][0])
+        if i > j:  # the other side, as entries() turns a dump local row
+            pts = [pts[1], pts[0], pts[2]]
+            vals["vel1"], vals["vel2"] = vals["vel2"], vals["vel1"]
+            vals["id1"], vals["id2"] = vals["id2"], vals["id1"]
+            for n in ("force", "force_normal", "force_tangential"):
+                vals[n] = [-x for x in vals[n]]
+        out[(min(i, j), max(i, j))] = (pts, vals)
+    return names, out, lines_ok
+
+
+def check_vtk(tmp, periodic):
+    """dump local/gran/vtk: LIGGGHTS's dataset (points, lines, cell arrays) per contact;
+    periodic: the pairs that meet across a periodic boundary (their ghost's velocity,
+    half a kick old in LIGGGHTS, is left out)"""
+    open(os.path.join(tmp, "vtk.in"), "w").write(vtk_deck())
+    out = run_gravel(tmp, "vtk.in")
+    if out.returncode:
+        report(False, "local_gran_vtk_runs", (out.stdout + out.stderr)[-600:])
+        return
+    names, mine, lines_ok = read_contacts_vtk(open(os.path.join(tmp, "fc3000.vtk")).read())
+    with gzip.open(os.path.join(REF, "fc3000.liggghts.vtk.gz"), "rt") as f:
+        ref_names, ref, _ = read_contacts_vtk(f.read())
+    report(names == ref_names and len(names) == 10, "local_gran_vtk_arrays",
+           "%s against liggghts %s" % (names, ref_names))
+    report(lines_ok, "local_gran_vtk_three_lines_per_contact")
+    worst, where = 1.0, None
+    if sorted(mine) == sorted(ref) and len(ref) > 100:
+        scale = {}
+        for pts, vals in ref.values():
+            for n, v in vals.items():
+                scale[n] = max(scale.get(n, 0.0), *(abs(x) for x in v))
+        worst = 0.0
+        for key, (pts, vals) in ref.items():
+            mp, mv = mine[key]
+            for k in range(3):
+                for d in range(3):
+                    e = mp[k][d] - pts[k][d]
+                    e -= BOX * round(e / BOX)  # the contact point by the other image
+                    if abs(e) > 1e-5 * BOX:  # LIGGGHTS writes its points to 6 digits
+                        worst, where = max(worst, 1.0), (key, "point", k)
+            for n, v in vals.items():
+                if n == "vel1" and key in periodic:
+                    continue  # the ghost's velocity
+                for a, b in zip(mv[n], v):
+                    err = abs(a - b) / max(scale[n], 1e-300)
+                    if err > worst:
+                        worst, where = err, (key, n)
+    report(worst <= TOL, "local_gran_vtk_equal_liggghts",
+           "%d contacts against %d, worst %.3g at %s" % (len(mine), len(ref), worst, where))
 
 
 def atoms(path):
@@ -136,6 +237,7 @@ def main():
                    "pair_gran_local_equal_liggghts_step_%d" % s,
                    "%d rows against %d, worst %.3g at %s" % (len(mine), len(ref), worst, where))
         force_sums(tmp, "elastic")
+        check_vtk(tmp, {k for k, v in ref.items() if v[14] == 1})
     with tempfile.TemporaryDirectory() as tmp:  # with a dashpot: the forces that acted
         open(os.path.join(tmp, "contacts.in"), "w").write(
             DECK.replace("peratomtypepair 2 1.0 1.0 1.0 1.0", "peratomtypepair 2 0.5 0.6 0.6 0.7"))
@@ -167,6 +269,12 @@ def main():
          "'heatFlux' is not supported", 1),
         ("keyword", "compute c all pair/gran/local pos forces\n",
          "illegal/unrecognized keyword 'forces'", 1),
+        ("vtk_compute", "compute c all pair/local dist\ndump d all local/gran/vtk 10 f*.vtk c\n"
+         "run 0\n", "requires a valid ID of a compute pair/gran/local ('c' is another style)", 3),
+        ("vtk_no_pos", "compute c all pair/gran/local force\n"
+         "dump d all local/gran/vtk 10 f*.vtk c\nrun 0\n", "that writes the positions (pos)", 3),
+        ("vtk_xml", "compute c all pair/gran/local\ndump d all local/gran/vtk 10 f*.vtp c\n",
+         ".vtp files (VTK XML) are not written here", 2),
     ]
     check_bad_decks(head, bad, "pair_gran_local_error_")
     nohist = head.replace("tangential history cohesion sjkr", "tangential no_history")
