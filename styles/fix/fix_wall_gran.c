@@ -483,10 +483,13 @@ options:
     if (w.style == W_MESH && (w.wiggle || w.wshear))
         gr_error(g, "fix wall/gran mesh: wiggle and shear do not apply to meshes (use fix "
                     "move/mesh)");
-    if (w.style <= W_ZPLANE && g->dom.periodic[w.style])
+    /* LAMMPS refuses a wall across a periodic dimension; LIGGGHTS's primitive walls
+     * (model ...) are allowed there and act on the atoms' positions in the box */
+    const int lg = liggghts_model(w.model);
+    if (!lg && w.style <= W_ZPLANE && g->dom.periodic[w.style])
         gr_error(g, "cannot use a %s wall in the periodic dimension %c", ws, 'x' + w.style);
-    if (w.style == W_CYLINDER && (g->dom.periodic[(w.cylaxis + 1) % 3] ||
-                                  g->dom.periodic[(w.cylaxis + 2) % 3]))
+    if (!lg && w.style == W_CYLINDER && (g->dom.periodic[(w.cylaxis + 1) % 3] ||
+                                         g->dom.periodic[(w.cylaxis + 2) % 3]))
         gr_error(g, "cannot use a %s wall with periodic %c or %c", ws,
                  'x' + (w.cylaxis + 1) % 3, 'x' + (w.cylaxis + 2) % 3);
     if (w.wiggle && w.wshear)
