@@ -25,6 +25,11 @@
  *           bounded below by the adhesion -kc delta (dmax then moves on);
  *           k2max = kn coefficientMaxElasticStiffness, kc = kn
  *           coefficientAdhesionStiffness, phiF = coefficientPlasticityDepth
+ *   luding  hooke/hysteresis's law with kn = LoadingStiffness (kt = kn),
+ *           k2max = kn UnloadingStiffness, on the adhesion branch dmax =
+ *           (k2 + kc)/(k2 - kn) delta; Fn = fHys - gamman vn + pullOffForce,
+ *           set to 0 when negative with limitForce (on by default) only
+ *           without adhesion (kc = 0, pullOffForce 0)
  *   thornton_ning  Fn from Thornton and Ning's adhesive elastic-plastic law
  *           (lg_thornton_ning: surfaceEnergy gamma_s, yield radius ri
  *           coefficientYieldRatio, its state in the history), hertz's kt,
@@ -241,6 +246,50 @@ static inline REAL lg_thornton_ning(__global const REAL *p, const REAL ri, REAL 
     return f;
 }
 
+/* luding (LIGGGHTS normal_model_luding.h; Luding 2008): the linear
+ * hysteresis of hooke/hysteresis on the largest overlap *dmax with the
+ * stiffnesses given (k1 = LoadingStiffness, k2max = k1 UnloadingStiffness,
+ * kc = k1 coefficientAdhesionStiffness), on the adhesion branch *dmax moves
+ * to (k2 + kc)/(k2 - k1) deltan; both updates at every evaluation, as
+ * LIGGGHTS. Returns the elastic-plastic force fHys. */
+static inline REAL lg_luding(__global const REAL *p, const REAL k1, const REAL reff,
+                             const REAL deltan, REAL *dmax)
+{
+    const REAL k2Max = k1 * p[LG_K2MAX];
+    const REAL kc = p[LG_KC] * k1;
+    REAL deltaMax;
+    if (deltan > *dmax) {
+        *dmax = deltan;
+        deltaMax = deltan;
+    } else {
+        deltaMax = *dmax;
+    }
+    const REAL deltaMaxLim = (k2Max / (k2Max - k1)) * p[LG_PHIF] * (REAL)2 * reff;
+    REAL k2, fHys;
+    if (deltaMax >= deltaMaxLim) {
+        k2 = k2Max;
+        const REAL fTmp = k2 * (deltan - deltaMaxLim) + k1 * deltaMaxLim;
+        if (fTmp >= -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            *dmax = ((k2 + kc) / (k2 - k1)) * deltan;
+        }
+    } else {
+        k2 = k1 + (k2Max - k1) * deltaMax / deltaMaxLim;
+        const REAL fTmp = k2 * (deltan - deltaMax) + k1 * deltaMax;
+        if (fTmp >= k1 * deltan) {
+            fHys = k1 * deltan;
+        } else if (fTmp > -kc * deltan) {
+            fHys = fTmp;
+        } else {
+            fHys = -kc * deltan;
+            *dmax = ((k2 + kc) / (k2 - k1)) * deltan;
+        }
+    }
+    return fHys;
+}
+
 /* nh: the normal model's history (LG_NORMAL_HIST REAL; NULL without one);
  * radi: the contact's first particle (thornton_ning's yield radius) */
 static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL radi,
@@ -261,6 +310,18 @@ static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL 
         return o;
     }
     REAL *dmax = nh;
+    if (nm == LG_N_LUDING) { /* kt = kn = LoadingStiffness; pullOffForce added */
+        const REAL l = p[LG_LOGE];
+        o.kn = o.kt = p[LG_KN];
+        o.gamman = sqrt((REAL)4. * meff * o.kn / ((REAL)1. + ((REAL)M_PI / l) * ((REAL)M_PI / l)));
+        o.gammat = tdamp ? o.gamman : (REAL)0;
+        const REAL fHys = dmax ? lg_luding(p, o.kn, reff, deltan, dmax) : o.kn * deltan;
+        o.Fn = fHys + -o.gamman * vn + p[LG_FADH];
+        if (p[LG_LIMIT] != (REAL)0 && o.Fn < (REAL)0 && p[LG_KC] == (REAL)0 &&
+            p[LG_FADH] == (REAL)0)
+            o.Fn = 0;
+        return o;
+    }
     if (nm == LG_N_HOOKE_HYSTERESIS) {
         const REAL Y = p[LG_YEFF], cv = p[LG_CHARV], l = p[LG_LOGE];
         const REAL sqrtval = sqrt(reff);

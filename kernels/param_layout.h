@@ -113,18 +113,21 @@ enum col_form { COL_SS, COL_SL, COL_LL };
  * prefactor of kr (2.25 for epsd, rollingStiffness for epsd3) and of the
  * rolling inertia (1.4 in 3d, 1.5 in 2d); thornton_ning's surfaceEnergy (of the
  * pair) and coefficientYieldRatio (of type I: the contact's first particle,
- * a wall's atom). */
+ * a wall's atom); luding's LoadingStiffness (in LG_KN), UnloadingStiffness,
+ * coefficientAdhesionStiffness and coefficientPlasticityDepth (as
+ * hooke/hysteresis's, in LG_K2MAX LG_KC LG_PHIF) and pullOffForce (LG_FADH). */
 enum lg_param { LG_NMODEL, LG_YEFF, LG_GEFF, LG_BETA, LG_LOGE, LG_CHARV, LG_KN, LG_KT, LG_GN,
                 LG_GT, LG_ABSDAMP, LG_TDAMP, LG_LIMIT, LG_KTTOKN, LG_TMODEL, LG_MU, LG_COH,
                 LG_CED, LG_ROLL, LG_RMU, LG_TORSION, LG_WALL, LG_K2MAX, LG_KC, LG_PHIF,
                 LG_HEAT, LG_HC, LG_HAREA, LG_RVISC, LG_RSTIFF, LG_RINERTIA, LG_GSURF,
-                LG_YRATIO, LG_NPARAM };
+                LG_YRATIO, LG_FADH, LG_NPARAM };
 enum lg_normal { LG_N_HERTZ, LG_N_HOOKE, LG_N_HERTZ_STIFFNESS, LG_N_HOOKE_STIFFNESS,
-                 LG_N_HOOKE_HYSTERESIS, LG_N_THORNTON_NING };
+                 LG_N_HOOKE_HYSTERESIS, LG_N_THORNTON_NING, LG_N_LUDING };
 /* The normal model's history REAL, first in a contact's history row:
- * hooke/hysteresis the largest overlap; thornton_ning its state (enum
- * lg_tn_hist) */
-#define LG_NORMAL_HIST(nm) ((nm) == LG_N_HOOKE_HYSTERESIS ? 1 : (nm) == LG_N_THORNTON_NING ? 7 : 0)
+ * hooke/hysteresis and luding the largest overlap; thornton_ning its state
+ * (enum lg_tn_hist) */
+#define LG_NORMAL_HIST(nm)                                                                     \
+    ((nm) == LG_N_HOOKE_HYSTERESIS || (nm) == LG_N_LUDING ? 1 : (nm) == LG_N_THORNTON_NING ? 7 : 0)
 /* thornton_ning's history: LIGGGHTS's ten values, its four flags in one
  * REAL (LG_TN_* bits) */
 enum lg_tn_hist { LG_TN_FLAGS, LG_TN_DELTA_OLD, LG_TN_DELTA_MAX, LG_TN_FORCE_OLD,

@@ -21,7 +21,10 @@
  * coefficientAdhesionStiffness, coefficientPlasticityDepth; pairs only)
  * keeps the largest overlap in its history row, thornton_ning (hertz's
  * materials, surfaceEnergy per type pair, coefficientYieldRatio per type; no
- * rolling friction) its seven-REAL state, the epsd models their spring
+ * rolling friction) its seven-REAL state, luding (LoadingStiffness,
+ * UnloadingStiffness, coefficientAdhesionStiffness, coefficientPlasticityDepth,
+ * pullOffForce, coefficientRestitution; limitForce on by default) the largest
+ * overlap, the epsd models their spring
  * torque after the shear (PAIR_EVAL_ROW: [normal state] shear [torque]).
  * Not supported (clear errors): other surface models, the heating and
  * energy-tracking settings. */
@@ -47,6 +50,7 @@ static const struct {
     {"hooke/stiffness", LG_N_HOOKE_STIFFNESS},
     {"hooke/hysteresis", LG_N_HOOKE_HYSTERESIS},
     {"thornton_ning", LG_N_THORNTON_NING},
+    {"luding", LG_N_LUDING},
 };
 
 static int in_list(const char *s, const char *const *list)
@@ -73,6 +77,7 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
     m->nm = -1;
     m->tm = -1;
     m->tdamp = 1;
+    int limit_given = 0;
     int i = 0;
     while (i < argc && !in_list(argv[i], stop)) {
         const char *kw = argv[i];
@@ -86,7 +91,7 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
             if (m->nm < 0)
                 gr_error(g, "%s: model '%.64s' is not supported (gravel has hertz, hooke, "
                             "hertz/stiffness, hooke/stiffness, hooke/hysteresis, "
-                            "thornton_ning)", who, v);
+                            "thornton_ning, luding)", who, v);
         } else if (!strcmp(kw, "tangential")) {
             if (!strcmp(v, "history"))
                 m->tm = 1;
@@ -121,6 +126,7 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
             m->tdamp = onoff(g, v, kw, who);
         } else if (!strcmp(kw, "limitForce")) {
             m->limit = onoff(g, v, kw, who);
+            limit_given = 1;
         } else if (!strcmp(kw, "ktToKnUser")) {
             m->kttokn = onoff(g, v, kw, who);
         } else if (!strcmp(kw, "absolute_damping")) {
@@ -140,7 +146,9 @@ int lg_parse(struct gravel *g, struct lg_model *m, int argc, char **argv,
     }
     if (m->nm < 0)
         gr_error(g, "%s: expected 'model hertz|hooke|hertz/stiffness|hooke/stiffness|"
-                    "hooke/hysteresis|thornton_ning'", who);
+                    "hooke/hysteresis|thornton_ning|luding'", who);
+    if (m->nm == LG_N_LUDING && !limit_given)
+        m->limit = 1; /* luding's limitForce is on by default (LIGGGHTS) */
     if (m->tm < 0)
         gr_error(g, "%s: expected 'tangential history|no_history' after the model", who);
     if (m->nm == LG_N_THORNTON_NING && m->roll != LG_R_NONE)
@@ -250,6 +258,27 @@ void lg_check(struct gravel *g, const struct lg_model *m, int nt, const char *wh
             if (!(cv > 0) || !isfinite(cv))
                 gr_error(g, "%s: characteristicVelocity must be > 0, got %g", who, cv);
         }
+    } else if (m->nm == LG_N_LUDING) {
+        static const char *const names[] = {"LoadingStiffness", "UnloadingStiffness",
+                                            "coefficientAdhesionStiffness",
+                                            "coefficientPlasticityDepth", "pullOffForce",
+                                            "coefficientRestitution"};
+        for (int k = 0; k < 6; k++)
+            for (int I = 1; I <= nt; I++)
+                for (int J = 1; J <= nt; J++) {
+                    double v = fpg_pair(g, names[k], nt, I, J, who);
+                    /* UnloadingStiffness 1: (k2 + kc)/(k2 - kn) divides by 0 (LIGGGHTS
+                     * goes NaN); the pull-off force may have either sign */
+                    int ok = k == 0   ? v > 0
+                             : k == 1 ? v > 1
+                             : k == 4 ? 1
+                             : k == 5 ? v > 0.05 && v <= 1
+                                      : v >= 0;
+                    if (!ok || !isfinite(v))
+                        gr_error(g, "%s: %s must be %s (types %d %d: %g)", who, names[k],
+                                 k == 0 ? "> 0" : k == 1 ? "> 1" : k == 4 ? "finite"
+                                 : k == 5 ? "in (0.05, 1]" : ">= 0", I, J, v);
+                }
     } else {
         const char *gn = m->absdamp && m->nm == LG_N_HOOKE_STIFFNESS ? "gamman_abs" : "gamman";
         const char *gt = m->absdamp && m->nm == LG_N_HOOKE_STIFFNESS ? "gammat_abs" : "gammat";
@@ -309,6 +338,13 @@ void lg_pack(struct gravel *g, const struct lg_model *m, int nt, int I, int J, i
             q[LG_KC] = fpg_pair(g, hysteresis_props[1], nt, I, J, who);
             q[LG_PHIF] = fpg_pair(g, hysteresis_props[2], nt, I, J, who);
         }
+    } else if (m->nm == LG_N_LUDING) {
+        q[LG_KN] = fpg_pair(g, "LoadingStiffness", nt, I, J, who);
+        q[LG_K2MAX] = fpg_pair(g, "UnloadingStiffness", nt, I, J, who);
+        q[LG_KC] = fpg_pair(g, "coefficientAdhesionStiffness", nt, I, J, who);
+        q[LG_PHIF] = fpg_pair(g, "coefficientPlasticityDepth", nt, I, J, who);
+        q[LG_FADH] = fpg_pair(g, "pullOffForce", nt, I, J, who);
+        q[LG_LOGE] = log(fpg_pair(g, "coefficientRestitution", nt, I, J, who));
     } else {
         const int abs = m->absdamp && m->nm == LG_N_HOOKE_STIFFNESS;
         q[LG_KN] = fpg_pair(g, "kn", nt, I, J, who);

@@ -33,7 +33,9 @@ against the liggghts dump).
 
 thornton_ning's errors (TN_ERRORS): rolling friction with it, a yield stress
 <= 0 of the atoms present (pairs and walls), a yield ratio out of [0, 1], no
-surfaceEnergy: each stops gravel with its message, naming the line.
+surfaceEnergy; luding's (LUDING_ERRORS): UnloadingStiffness 1 (LIGGGHTS divides
+by zero), LoadingStiffness 0, no pullOffForce: each stops gravel with its
+message, naming the line.
 
 LIGGGHTS's `dump_modify ... format "%d %.17g ..."` (the whole line, as
 make_refs.sh writes the decks for liggghts) gives the dump the `format float`
@@ -167,12 +169,23 @@ TN_ERRORS = [
 ]
 
 
-def tn_errors():
-    """each bad thornton_ning deck stops with its message, naming its line"""
-    src = open(os.path.join(ROOT, "tests", "reference", "liggghts",
-                            "gran_thornton_ning.in")).read()
+# luding's: (name, substitution on gran_luding.in, message, the line it names)
+LUDING_ERRORS = [
+    ("unloading", ("UnloadingStiffness peratomtypepair 2 2. 3. 3. 1.5",
+                   "UnloadingStiffness peratomtypepair 2 2. 3. 3. 1.0", 1),
+     "UnloadingStiffness must be > 1 (types 2 2: 1)", "run"),
+    ("loading", ("LoadingStiffness peratomtypepair 2 2000.", "LoadingStiffness peratomtypepair 2 0.", 1),
+     "LoadingStiffness must be > 0 (types 1 1: 0)", "run"),
+    ("pull_off", ("fix             m9 all property/global pullOffForce", "#", 1),
+     "requires a fix property/global that defines pullOffForce", "run"),
+]
+
+
+def model_errors(deck, cases, prefix):
+    """each bad deck stops with its message, naming its line"""
+    src = open(os.path.join(ROOT, "tests", "reference", "liggghts", deck)).read()
     fails = 0
-    for name, (old, new, count), msg, cmd in TN_ERRORS:
+    for name, (old, new, count), msg, cmd in cases:
         text = src.replace(old, new, count)
         line = 1 + next(i for i, l in enumerate(text.split("\n")) if l.startswith(cmd))
         with tempfile.TemporaryDirectory() as tmp:
@@ -182,7 +195,7 @@ def tn_errors():
         ok = r.returncode != 0 and msg in err and f"(e.in:{line})" in err
         if not ok:
             print(f"  wanted '{msg}' at e.in:{line}: {err[-500:]}")
-        print(f"{'PASS' if ok else 'FAIL'} liggghts_thornton_ning_error_{name}")
+        print(f"{'PASS' if ok else 'FAIL'} {prefix}{name}")
         fails += not ok
     return fails
 
@@ -251,7 +264,8 @@ def main():
     fails += not restart_check("gran_hysteresis", 100)
     fails += not restart_check("wall_epsd", 2500)
     fails += not restart_check("gran_thornton_ning", 2700)
-    fails += tn_errors()
+    fails += model_errors("gran_thornton_ning.in", TN_ERRORS, "liggghts_thornton_ning_error_")
+    fails += model_errors("gran_luding.in", LUDING_ERRORS, "liggghts_luding_error_")
     fails += dump_line_format()
     return 1 if fails else 0
 
