@@ -102,9 +102,17 @@ TEST(gran_parse_errors)
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive type 1 "
                     "xcone 0.1 0 0\n",
                 "primitive 'xcone' is not supported", 5);
-    CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive type 1 "
-                    "xcylinder 0.1 0 0\n",
-                "cannot use a xcylinder wall with periodic y or z", 5);
+    /* LIGGGHTS's primitives may stand across periodic dimensions (LAMMPS's may not) */
+    {
+        struct gravel *gp = test_engine();
+        CHECK(test_script(gp, BOX "fix w all wall/gran model hertz tangential history "
+                                  "primitive type 1 xcylinder 0.1 0 0\n"
+                                  "fix w2 all wall/gran model hertz tangential history "
+                                  "primitive type 1 zplane 0\n") == GR_OK);
+        gr_destroy(gp);
+    }
+    CHECK_ERROR(BOX "fix w all wall/gran hooke/history 2000 NULL 50 NULL 0.5 0 zplane 0 NULL\n",
+                "cannot use a zplane wall in the periodic dimension z", 5);
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history\n",
                 "missing the wall ('primitive type T", 5);
     CHECK_ERROR(BOX "fix w all wall/gran model hertz tangential history primitive kind 1 zplane "
