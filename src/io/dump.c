@@ -566,7 +566,31 @@ int dump_step_all(struct gravel *g)
     return 1;
 }
 
-/* ---- binary helpers -------------------------------------------------------------- */
+/* ---- legacy VTK and binary helpers --------------------------------------------- */
+
+void dump_vtk_check_name(struct gravel *g, const struct dump *d)
+{
+    const char *dot = strrchr(d->file, '.');
+    if (dot && !strcmp(dot, ".vtk"))
+        return;
+    if (dot && (!strcmp(dot, ".vtu") || !strcmp(dot, ".vtp") || !strcmp(dot, ".pvtu") ||
+                !strcmp(dot, ".pvtp")))
+        gr_error(g, "dump %s: %s files (VTK XML) are not written here: use a .vtk file name "
+                    "(legacy VTK)", d->style->name, dot);
+    gr_error(g, "dump %s: file name '%.200s' needs the extension .vtk", d->style->name, d->file);
+}
+
+int dump_vtk_binary(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply)
+{
+    if (strcmp(argv[i], "binary"))
+        return 0;
+    arg_need(g, argc, i, 1, "binary");
+    int yes = arg_yesno(g, argv[i + 1], "binary");
+    if (apply)
+        d->binary = yes;
+    return 2;
+}
+
 
 void dump_write_be_doubles(FILE *fp, const double *v, size_t n)
 {

@@ -106,5 +106,11 @@ void dump_free_all(struct gravel *g);
  * Write n doubles / int32 in big-endian order (legacy VTK binary). */
 void dump_write_be_doubles(FILE *fp, const double *v, size_t n);
 void dump_write_be_int32(FILE *fp, const int32_t *v, size_t n);
+/* A legacy VTK dump's checks, errors naming the dump style: its file name
+ * ends in .vtk (the XML extensions need the VTK library: refused by name);
+ * dump_modify binary yes|no at argv[i]: the words used (0: not `binary`),
+ * d->binary set with apply. */
+void dump_vtk_check_name(struct gravel *g, const struct dump *d);
+int dump_vtk_binary(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply);
 
 #endif

@@ -45,14 +45,7 @@ struct cvtk {
 
 static void create(struct gravel *g, struct dump *d, int argc, char **argv)
 {
-    const char *dot = strrchr(d->file, '.');
-    if (!dot || strcmp(dot, ".vtk")) {
-        if (dot && (!strcmp(dot, ".vtu") || !strcmp(dot, ".vtp") || !strcmp(dot, ".pvtu") ||
-                    !strcmp(dot, ".pvtp")))
-            gr_error(g, "dump custom/vtk: %s files (VTK XML) are not written here: use a "
-                        ".vtk file name (legacy VTK)", dot);
-        gr_error(g, "dump custom/vtk: file name '%.200s' needs the extension .vtk", d->file);
-    }
+    dump_vtk_check_name(g, d);
     if (argc < 1)
         gr_error(g, "dump custom/vtk: no fields after the file name");
     struct cvtk *c = gr_calloc(g, 1, sizeof *c);
@@ -87,13 +80,9 @@ static void destroy(struct dump *d)
 
 static int modify(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply)
 {
-    if (!strcmp(argv[i], "binary")) {
-        arg_need(g, argc, i, 1, "binary");
-        int yes = arg_yesno(g, argv[i + 1], "binary");
-        if (apply)
-            d->binary = yes;
-        return 2;
-    }
+    const int used = dump_vtk_binary(g, d, argc, argv, i, apply);
+    if (used)
+        return used;
     if (!strcmp(argv[i], "label")) { /* LIGGGHTS: the title line */
         arg_need(g, argc, i, 1, "label");
         return 2;

@@ -42,14 +42,7 @@ static const struct {
 
 static void lgv_create(struct gravel *g, struct dump *d, int argc, char **argv)
 {
-    const char *dot = strrchr(d->file, '.');
-    if (!dot || strcmp(dot, ".vtk")) {
-        if (dot && (!strcmp(dot, ".vtu") || !strcmp(dot, ".vtp") || !strcmp(dot, ".pvtu") ||
-                    !strcmp(dot, ".pvtp")))
-            gr_error(g, "dump local/gran/vtk: %s files (VTK XML) are not written here: use a "
-                        ".vtk file name (legacy VTK)", dot);
-        gr_error(g, "dump local/gran/vtk: file name '%.200s' needs the extension .vtk", d->file);
-    }
+    dump_vtk_check_name(g, d);
     if (argc != 1)
         gr_error(g, "dump local/gran/vtk: expected the ID of a compute pair/gran/local after the "
                     "file name, got %d words", argc);
@@ -67,18 +60,6 @@ static void lgv_destroy(struct dump *d)
         free(l->buf);
     free(l);
     d->data = NULL;
-}
-
-static int lgv_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply)
-{
-    if (!strcmp(argv[i], "binary")) {
-        arg_need(g, argc, i, 1, "binary");
-        int yes = arg_yesno(g, argv[i + 1], "binary");
-        if (apply)
-            d->binary = yes;
-        return 2;
-    }
-    return 0;
 }
 
 /* The compute and its columns (errors name the dump). */
@@ -198,7 +179,7 @@ const struct dump_style dump_style_local_gran_vtk = {
     .name = "local/gran/vtk",
     .append = 0,
     .create = lgv_create,
-    .modify = lgv_modify,
+    .modify = dump_vtk_binary,
     .init = lgv_init,
     .write = lgv_write,
     .destroy = lgv_destroy,
