@@ -15,7 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "args.h"
 #include "compute.h"
 #include "compute_pair_gran_local.h"
 #include "dump.h"

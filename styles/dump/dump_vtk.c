@@ -17,7 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "args.h"
 #include "dump.h"
 #include "error.h"
 
@@ -45,18 +44,6 @@ static void vtk_destroy(struct dump *d)
     }
     free(v);
     d->data = NULL;
-}
-
-static int vtk_modify(struct gravel *g, struct dump *d, int argc, char **argv, int i,
-                      int apply)
-{
-    if (strcmp(argv[i], "binary") != 0)
-        return 0;
-    arg_need(g, argc, i, 1, "binary");
-    int yes = arg_yesno(g, argv[i + 1], "binary");
-    if (apply)
-        d->binary = yes;
-    return 2;
 }
 
 static double *scratch(struct gravel *g, struct dump *d, int n)
@@ -207,7 +194,7 @@ const struct dump_style dump_style_vtk = {
     .name = "vtk",
     .append = 0,
     .create = vtk_create,
-    .modify = vtk_modify,
+    .modify = dump_vtk_binary,
     .write = vtk_write,
     .destroy = vtk_destroy,
 };
