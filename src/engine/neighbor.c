@@ -1650,7 +1650,8 @@ int nbr_contact_forces(struct gravel *g, int **ci, int **cj, double **f, double 
             (*f)[3 * (size_t)c + d] = quiet[c] ? 0.0 : r[d];
             /* the owner's torque: its own (F ti tj), or -radi tc (PAIR_TC) */
             if (t && !quiet[c] && w > 3)
-                (*t)[3 * (size_t)c + d] = w == 9 ? r[3 + d] : -g->atoms.radius[(*ci)[c]] * r[3 + d];
+                (*t)[3 * (size_t)c + d] =
+                    w == 9 ? r[3 + d] : -g->atoms.radius[(*ci)[c]] * r[3 + d];
         }
     free(rec);
     free(quiet);
