@@ -232,12 +232,22 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
         long count = 0;
         int nv = 1, shift = 0;
         struct custom_ref cref;
+        char ligkw[GR_CUSTOMLEN + 4];
         if (!strcmp(kw, "property/atom")) { /* LIGGGHTS: property/atom NAME value */
             arg_need(g, argc, k, 2, kw);
-            if (strcmp(argv[k + 1], "Temp") && strcmp(argv[k + 1], "heatSource"))
+            const char *nm = argv[k + 1];
+            const int ck = custom_find(a, nm);
+            if (ck >= 0 && !a->cus.p[ck].isint && !a->cus.p[ck].cols) {
+                /* a scalar of LIGGGHTS's fix property/atom: its d_ property */
+                snprintf(ligkw, sizeof ligkw, "d_%s", nm);
+                kw = ligkw;
+            } else if (strcmp(nm, "Temp") && strcmp(nm, "heatSource")) {
                 gr_error(g, "set property/atom: unknown property '%.64s' (gravel supports Temp "
-                            "and heatSource, of fix heat/gran)", argv[k + 1]);
-            kw = strcmp(argv[k + 1], "Temp") ? "heatSource" : "temperature";
+                            "and heatSource, of fix heat/gran, and the scalars of fix "
+                            "property/atom NAME scalar ...)", nm);
+            } else {
+                kw = strcmp(nm, "Temp") ? "heatSource" : "temperature";
+            }
             shift = 1;
         }
         if (!strcmp(kw, "omega") || !strcmp(kw, "image") || !strcmp(kw, "shape") ||

@@ -152,9 +152,34 @@ void custom_define(struct gravel *g, const char *fix, int n, const struct custom
         snprintf(p->fix, sizeof p->fix, "%s", fix);
         p->isint = defs[d].isint;
         p->cols = defs[d].cols;
+        for (int c = 0; defs[d].def && c < custom_width(p) && c < GR_CUSTOM_DEFS; c++)
+            p->def[c] = defs[d].def[c];
         from[to.n++] = keep;
     }
     relayout(g, &to, from);
+    /* a property new to the atoms starts at its new-atom values (LIGGGHTS) */
+    struct atoms *at = &g->atoms;
+    for (int d = 0; d < n; d++) {
+        const int k = custom_find(at, defs[d].name);
+        if (!defs[d].def || from[k] >= 0)
+            continue;
+        const struct custom_prop *p = &at->cus.p[k];
+        const int w = custom_width(p) < GR_CUSTOM_DEFS ? custom_width(p) : GR_CUSTOM_DEFS;
+        for (int i = 0; i < at->n; i++)
+            memcpy(at->custom + (size_t)i * at->cus.slots + p->slot, p->def,
+                   (size_t)w * sizeof(double));
+    }
+}
+
+void custom_new_atom(struct atoms *a, int i)
+{
+    double *rec = a->custom + (size_t)a->cus.slots * i;
+    memset(rec, 0, (size_t)a->cus.slots * sizeof(double));
+    for (int k = 0; k < a->cus.n; k++) {
+        const struct custom_prop *p = &a->cus.p[k];
+        const int w = custom_width(p) < GR_CUSTOM_DEFS ? custom_width(p) : GR_CUSTOM_DEFS;
+        memcpy(rec + p->slot, p->def, (size_t)w * sizeof(double));
+    }
 }
 
 void custom_remove_fix(struct gravel *g, const char *fix)

@@ -48,6 +48,7 @@ double custom_check_value(struct gravel *g, const struct atoms *a, int k, double
 struct custom_def {
     const char *name;           /* without prefix */
     int isint, cols;
+    const double *def;          /* a new atom's values (custom_width of them), or NULL: 0 */
 };
 /* Make fix `fix`'s properties exactly defs[0..n-1]: a property it already
  * had with the same type and shape keeps its values (a fix given again with
@@ -56,6 +57,8 @@ struct custom_def {
  * fix defines is an error (LAMMPS: "Fix property/atom vector name already
  * exists"). */
 void custom_define(struct gravel *g, const char *fix, int n, const struct custom_def *defs);
+/* Atom i's custom values: every property's new-atom values (atoms_add). */
+void custom_new_atom(struct atoms *a, int i);
 /* Remove every property of fix `fix` (unfix). */
 void custom_remove_fix(struct gravel *g, const char *fix);
 /* 1 when `name` is a valid property name (letters, digits, underscores). */

@@ -100,6 +100,7 @@ enum atom_field_sect { FS_ATOMS, FS_MOLECULE, FS_HEAT, FS_ELLIPSOID };
  * the restart file (restart.c, section "custom"). */
 #define GR_MAXCUSTOM 32
 #define GR_CUSTOMLEN 64
+#define GR_CUSTOM_DEFS 16 /* columns of a property that can have their own new-atom value */
 struct custom_prop {
     char name[GR_CUSTOMLEN];    /* without its i_ d_ i2_ d2_ prefix */
     int isint;                  /* 1: i_ / i2_ (integers), 0: d_ / d2_ */
@@ -107,6 +108,8 @@ struct custom_prop {
     int slot;                   /* its first slot in the per-atom record */
     char fix[GR_CUSTOMLEN];     /* the fix property/atom that defines it */
     int restored;               /* read from a restart file, not yet defined again */
+    double def[GR_CUSTOM_DEFS]; /* a new atom's values, by column (LIGGGHTS's fix
+                                 * property/atom defaults; 0 otherwise) */
 };
 struct atom_custom {
     int n;                      /* properties defined */

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
+#include "atom_custom.h"
 #include "error.h"
 
 /* The arrays are page mappings: page-aligned (a CPU device can use them as
@@ -74,7 +75,7 @@ int atoms_add(struct gravel *g, int64_t tag, int type, const double x[3], double
     ATOM_FIELDS(ZERO)
 #undef ZERO
     if (a->cus.slots)
-        memset(a->custom + (size_t)a->cus.slots * i, 0, (size_t)a->cus.slots * sizeof(double));
+        custom_new_atom(a, i); /* zeros, or a property's new-atom values */
     a->tag[i] = tag;
     a->type[i] = type;
     a->mask[i] = 1u;

@@ -154,7 +154,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     f->hooks = HOOK_PRE_FORCE;
     struct custom_def defs[MDR_NPROPS];
     for (int q = 0; q < MDR_NPROPS; q++)
-        defs[q] = (struct custom_def){prop_names[q], 0, 0};
+        defs[q] = (struct custom_def){prop_names[q], 0, 0, NULL};
     custom_define(g, MDR_PROPS_FIX, MDR_NPROPS, defs);
 }
 

@@ -17,6 +17,9 @@
  *                (LAMMPS's Atom::add_custom): 0 for every atom when defined,
  *                stored in atoms.custom (atom_custom.h) and moved with the
  *                atoms like the table's rows.
+ * LIGGGHTS's form `NAME scalar|vector restart ghost reverse values`
+ * (create_liggghts): the custom d_NAME / d2_NAME N with new-atom values,
+ * its values the fix's per-atom output f_ID.
  * `ghost` only matters to LAMMPS's ghost-atom communication: accepted.
  * Other LAMMPS properties (q, rmass ...) are not supported: a clear error.
  * A property is defined by one fix only, as in LAMMPS; unfixing it removes
@@ -37,6 +40,8 @@ enum { P_MOL = 1, P_T = 2, P_Q = 4 };
 /* What one fix property/atom command defined, in command order. */
 struct prop_fix {
     unsigned props;             /* P_* bits */
+    int liggghts;               /* LIGGGHTS's form: one property, per-atom output f_ID */
+    double *out;                /* ... its values in host order (peratom_values) */
     int n;                      /* words of the command that define values */
     int kind[GR_MAXCUSTOM + 3]; /* P_MOL, P_T, P_Q, or 0 for a custom property */
     char name[GR_MAXCUSTOM + 3][GR_CUSTOMLEN];
@@ -52,8 +57,66 @@ static unsigned props_of(const struct fix *f)
 
 static void destroy(struct fix *f)
 {
-    free(f->data);
+    struct prop_fix *pf = f->data;
+    if (pf)
+        free(pf->out);
+    free(pf);
     f->data = NULL;
+}
+
+/* LIGGGHTS's form, `fix ID group property/atom NAME scalar|vector restart
+ * ghost reverse v1 [v2 ...]`: the custom property d_NAME (scalar) or d2_NAME N
+ * (vector of the N values given), whose new atoms take those values (the
+ * atoms present take them when the property is new); its values are the
+ * fix's per-atom output f_ID (f_ID[k]); the three yes|no flags concern
+ * LIGGGHTS's storage and communication: checked and accepted. */
+static void create_liggghts(struct gravel *g, struct fix *f, int argc, char **argv)
+{
+    struct prop_fix *pf = f->data;
+    const char *nm = argv[0];
+    const int vec = !strcmp(argv[1], "vector");
+    if (!custom_name_ok(nm))
+        gr_error(g, "fix property/atom: invalid property name '%.80s' (letters, digits and "
+                    "underscores, at most %d characters)", nm, GR_CUSTOMLEN - 1);
+    if (argc < 6)
+        gr_error(g, "fix property/atom %s %s: expected the three yes|no flags (restart, "
+                    "communicate ghost, communicate reverse) and %s", nm, argv[1],
+                 vec ? "the default values" : "the default value");
+    for (int k = 2; k < 5; k++)
+        (void)arg_yesno(g, argv[k], "fix property/atom flag");
+    const int nv = argc - 5;
+    if (!vec && nv != 1)
+        gr_error(g, "fix property/atom %s scalar: expected one default value, got %d", nm, nv);
+    if (nv > GR_CUSTOM_DEFS)
+        gr_error(g, "fix property/atom %s vector: at most %d values, got %d", nm,
+                 GR_CUSTOM_DEFS, nv);
+    double def[GR_CUSTOM_DEFS];
+    for (int k = 0; k < nv; k++)
+        def[k] = arg_double(g, argv[5 + k], "fix property/atom default value");
+    const struct custom_def d = {nm, 0, vec ? nv : 0, def};
+    custom_define(g, f->id, 1, &d);
+    pf->liggghts = 1;
+    pf->kind[0] = 0;
+    snprintf(pf->name[pf->n++], GR_CUSTOMLEN, "%s", nm);
+    f->peratom_flag = 1;
+    f->size_peratom_cols = vec ? nv : 0;
+}
+
+static const double *peratom_values(struct gravel *g, struct fix *f)
+{
+    struct prop_fix *pf = f->data;
+    const struct atoms *a = &g->atoms;
+    const int k = custom_find(a, pf->name[0]);
+    if (!pf->liggghts || k < 0)
+        gr_error(g, "fix %s (property/atom) has no per-atom output (LIGGGHTS's form has: "
+                    "fix ID group property/atom NAME scalar|vector ...)", f->id);
+    const struct custom_prop *p = &a->cus.p[k];
+    const int w = custom_width(p);
+    pf->out = gr_realloc(g, pf->out, ((size_t)a->n * w + 1) * sizeof *pf->out);
+    for (int i = 0; i < a->n; i++)
+        memcpy(pf->out + (size_t)i * w, a->custom + (size_t)i * a->cus.slots + p->slot,
+               (size_t)w * sizeof(double));
+    return pf->out;
 }
 
 static void create(struct gravel *g, struct fix *f, int argc, char **argv)
@@ -63,6 +126,10 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                     "i_name, d_name, i2_name N, d2_name N)");
     struct prop_fix *pf = gr_calloc(g, 1, sizeof *pf);
     f->data = pf;
+    if (argc >= 2 && (!strcmp(argv[1], "scalar") || !strcmp(argv[1], "vector"))) {
+        create_liggghts(g, f, argc, argv);
+        return;
+    }
     unsigned props = 0;
     struct custom_def defs[GR_MAXCUSTOM];
     int ndef = 0;
@@ -96,7 +163,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
                     gr_error(g, "fix property/atom: custom property name %s given twice", nm);
             if (ndef == GR_MAXCUSTOM)
                 gr_error(g, "fix property/atom: more than %d custom properties", GR_MAXCUSTOM);
-            defs[ndef++] = (struct custom_def){nm, w[0] == 'i', cols};
+            defs[ndef++] = (struct custom_def){nm, w[0] == 'i', cols, NULL};
             pf->kind[pf->n] = 0;
             snprintf(pf->name[pf->n++], GR_CUSTOMLEN, "%s", nm);
         } else if (!strcmp(argv[i], "ghost")) {
@@ -106,7 +173,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
         } else {
             gr_error(g, "fix property/atom: property '%.64s' is not supported (gravel "
                         "supports mol, temperature, heatflow, i_name, d_name, i2_name N and "
-                        "d2_name N)", argv[i]);
+                        "d2_name N, and LIGGGHTS's NAME scalar|vector ...)", argv[i]);
         }
     }
     if (!props && !ndef)
@@ -194,4 +261,5 @@ const struct fix_style fix_style_property_atom = {
     .name = "property/atom",
     .create = create,
     .destroy = destroy,
+    .peratom_values = peratom_values,
 };

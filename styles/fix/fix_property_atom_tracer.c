@@ -83,7 +83,7 @@ static void create(struct gravel *g, struct fix *f, int argc, char **argv)
     if (t->mark_step < 0)
         gr_error(g, WHO ": expecting keyword 'mark_step'");
     t->first_mark = t->mark_step >= g->step; /* LIGGGHTS: a mark step past is done */
-    const struct custom_def def = {f->id, 0, 0};
+    const struct custom_def def = {f->id, 0, 0, NULL};
     custom_define(g, f->id, 1, &def);
     f->hooks = HOOK_END_OF_STEP;
     f->peratom_flag = 1;
