@@ -10,7 +10,8 @@ restart ghost reverse defaults, against LIGGGHTS 3.8.
    it and the dumps), and the dumps (id type z f_pa f_pb[1..3]) at steps 0,
    5000 and 10000 hold LIGGGHTS's values.
 2. The properties are gravel's custom d_color and d2_dragf 3: dump custom
-   d_color equals f_pa.
+   d_color equals f_pa; the 400 atoms fix insert/stream creates (buoyancy.in's
+   stream) take the default.
 3. Errors: a scalar with two values, missing flags, a flag that is not yes or
    no, set property/atom of a name no fix defines.
 
@@ -79,6 +80,22 @@ def main():
         report(len(cu) == 4 and all(r[1] == r[2] for r in cu)
                and [r[1] for r in cu] == [-1.5, -1.5, 7.25, 3.5],
                "property_atom_is_custom_d_color", str(cu))
+    # atoms that fix insert/stream creates take the default too (buoyancy.in's stream)
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(os.path.join(ROOT, "tests", "reference", "liggghts_planar", "face8.stl"), tmp)
+        src = open(os.path.join(ROOT, "tests", "reference", "liggghts_buoyancy",
+                                "buoyancy.in")).read()
+        deck = "\n".join(
+            "fix             pa all property/atom col scalar yes no no 2.5\n"
+            "compute         s all reduce sum f_pa" if l.startswith("fix             b all") else
+            "thermo_style    custom step atoms c_s" if l.startswith("thermo_style") else l
+            for l in src.split("\n"))
+        open(os.path.join(tmp, "in.deck"), "w").write(deck)
+        out = run_gravel(tmp, "in.deck")
+        st = [r for r in thermo(out.stdout) if len(r) == 3] if out.returncode == 0 else []
+        report(len(st) > 10 and int(st[-1][1]) == 400 and
+               all(float(r[2]) == 2.5 * int(r[1]) for r in st),
+               "property_atom_inserted_default", (out.stdout + out.stderr)[-400:])
     head = DECK.split("fix             pa all")[0]
     bad = [
         ("scalar_two", "fix p all property/atom c scalar yes no no 1 2\n",
