@@ -93,7 +93,7 @@ def main():
         open(os.path.join(tmp, "in.deck"), "w").write(deck)
         out = run_gravel(tmp, "in.deck")
         st = [r for r in thermo(out.stdout) if len(r) == 3] if out.returncode == 0 else []
-        report(len(st) > 10 and int(st[-1][1]) == 400 and
+        report(len(st) > 10 and max(int(r[1]) for r in st) == 400 and
                all(float(r[2]) == 2.5 * int(r[1]) for r in st),
                "property_atom_inserted_default", (out.stdout + out.stderr)[-400:])
     head = DECK.split("fix             pa all")[0]
