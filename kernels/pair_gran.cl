@@ -62,10 +62,15 @@ struct lg_normal_out {
     REAL Fn, kn, kt, gamman, gammat;
 };
 
-/* hooke/hysteresis's elastic force on the largest overlap *dmax (updated:
- * raised to deltan always, moved on along the adhesion branch when update) */
+/* hooke/hysteresis's and luding's elastic force on the largest overlap *dmax:
+ * loading kn delta, un/reloading k2 (delta - dmax) + kn dmax with k2 = kn +
+ * (k2max - kn) dmax / dlim (k2max beyond dlim), never below the adhesion
+ * -kc delta. *dmax is raised to deltan always; on the adhesion branch it
+ * moves on: hooke/hysteresis to a root (when update), luding to (k2 + kc) /
+ * (k2 - kn) delta (always, as LIGGGHTS). */
 static inline REAL lg_hysteresis(__global const REAL *p, const REAL kn, const REAL reff,
-                                 const REAL deltan, REAL *dmax, const int update)
+                                 const REAL deltan, REAL *dmax, const int update,
+                                 const int luding)
 {
     const REAL k2Max = kn * p[LG_K2MAX];
     const REAL kc = kn * p[LG_KC];
@@ -73,30 +78,32 @@ static inline REAL lg_hysteresis(__global const REAL *p, const REAL kn, const RE
         *dmax = deltan;
     const REAL deltaMax = *dmax;
     const REAL deltaMaxLim = (k2Max / (k2Max - kn)) * p[LG_PHIF] * (REAL)2 * reff;
-    REAL fHys;
+    REAL fHys = 0, k2;
+    int adhesion = 0;
     if (deltaMax >= deltaMaxLim) {
-        const REAL fTmp = k2Max * (deltan - deltaMaxLim) + kn * deltaMaxLim;
-        if (fTmp >= -kc * deltan) {
+        k2 = k2Max;
+        const REAL fTmp = k2 * (deltan - deltaMaxLim) + kn * deltaMaxLim;
+        if (fTmp >= -kc * deltan)
             fHys = fTmp;
-        } else {
-            fHys = -kc * deltan;
-            if (update)
-                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
-                                                                      deltaMaxLim / (k2Max - kn))));
-        }
+        else
+            adhesion = 1;
     } else {
-        const REAL k2 = kn + (k2Max - kn) * deltaMax / deltaMaxLim;
+        k2 = kn + (k2Max - kn) * deltaMax / deltaMaxLim;
         const REAL fTmp = k2 * (deltan - deltaMax) + kn * deltaMax;
-        if (fTmp >= kn * deltan) {
+        if (fTmp >= kn * deltan)
             fHys = kn * deltan;
-        } else if (fTmp > -kc * deltan) {
+        else if (fTmp > -kc * deltan)
             fHys = fTmp;
-        } else {
-            fHys = -kc * deltan;
-            if (update)
-                *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
-                                                                      deltaMaxLim / (k2Max - kn))));
-        }
+        else
+            adhesion = 1;
+    }
+    if (adhesion) {
+        fHys = -kc * deltan;
+        if (luding)
+            *dmax = ((k2 + kc) / (k2 - kn)) * deltan;
+        else if (update)
+            *dmax = (REAL)0.5 * (deltan + sqrt(deltan * deltan + (REAL)4 * ((kn + kc) * deltan *
+                                                                  deltaMaxLim / (k2Max - kn))));
     }
     return fHys;
 }
@@ -246,50 +253,6 @@ static inline REAL lg_thornton_ning(__global const REAL *p, const REAL ri, REAL 
     return f;
 }
 
-/* luding (LIGGGHTS normal_model_luding.h; Luding 2008): the linear
- * hysteresis of hooke/hysteresis on the largest overlap *dmax with the
- * stiffnesses given (k1 = LoadingStiffness, k2max = k1 UnloadingStiffness,
- * kc = k1 coefficientAdhesionStiffness), on the adhesion branch *dmax moves
- * to (k2 + kc)/(k2 - k1) deltan; both updates at every evaluation, as
- * LIGGGHTS. Returns the elastic-plastic force fHys. */
-static inline REAL lg_luding(__global const REAL *p, const REAL k1, const REAL reff,
-                             const REAL deltan, REAL *dmax)
-{
-    const REAL k2Max = k1 * p[LG_K2MAX];
-    const REAL kc = p[LG_KC] * k1;
-    REAL deltaMax;
-    if (deltan > *dmax) {
-        *dmax = deltan;
-        deltaMax = deltan;
-    } else {
-        deltaMax = *dmax;
-    }
-    const REAL deltaMaxLim = (k2Max / (k2Max - k1)) * p[LG_PHIF] * (REAL)2 * reff;
-    REAL k2, fHys;
-    if (deltaMax >= deltaMaxLim) {
-        k2 = k2Max;
-        const REAL fTmp = k2 * (deltan - deltaMaxLim) + k1 * deltaMaxLim;
-        if (fTmp >= -kc * deltan) {
-            fHys = fTmp;
-        } else {
-            fHys = -kc * deltan;
-            *dmax = ((k2 + kc) / (k2 - k1)) * deltan;
-        }
-    } else {
-        k2 = k1 + (k2Max - k1) * deltaMax / deltaMaxLim;
-        const REAL fTmp = k2 * (deltan - deltaMax) + k1 * deltaMax;
-        if (fTmp >= k1 * deltan) {
-            fHys = k1 * deltan;
-        } else if (fTmp > -kc * deltan) {
-            fHys = fTmp;
-        } else {
-            fHys = -kc * deltan;
-            *dmax = ((k2 + kc) / (k2 - k1)) * deltan;
-        }
-    }
-    return fHys;
-}
-
 /* nh: the normal model's history (LG_NORMAL_HIST REAL; NULL without one);
  * radi: the contact's first particle (thornton_ning's yield radius) */
 static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL radi,
@@ -315,7 +278,8 @@ static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL 
         o.kn = o.kt = p[LG_KN];
         o.gamman = sqrt((REAL)4. * meff * o.kn / ((REAL)1. + ((REAL)M_PI / l) * ((REAL)M_PI / l)));
         o.gammat = tdamp ? o.gamman : (REAL)0;
-        const REAL fHys = dmax ? lg_luding(p, o.kn, reff, deltan, dmax) : o.kn * deltan;
+        const REAL fHys = dmax ? lg_hysteresis(p, o.kn, reff, deltan, dmax, update, 1)
+                               : o.kn * deltan;
         o.Fn = fHys + -o.gamman * vn + p[LG_FADH];
         if (p[LG_LIMIT] != (REAL)0 && o.Fn < (REAL)0 && p[LG_KC] == (REAL)0 &&
             p[LG_FADH] == (REAL)0)
@@ -331,7 +295,7 @@ static inline struct lg_normal_out lg_normal(__global const REAL *p, const REAL 
         o.gamman = sqrt((REAL)4. * meff * o.kn /
                         ((REAL)1. + ((REAL)M_PI / l) * ((REAL)M_PI / l)));
         o.gammat = tdamp ? o.gamman : (REAL)0;
-        const REAL fHys = dmax ? lg_hysteresis(p, o.kn, reff, deltan, dmax, update)
+        const REAL fHys = dmax ? lg_hysteresis(p, o.kn, reff, deltan, dmax, update, 0)
                                : o.kn * deltan;
         o.Fn = fHys + -o.gamman * vn;
         return o;
