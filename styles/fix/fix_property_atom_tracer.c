@@ -95,6 +95,10 @@ static void init(struct gravel *g, struct fix *f)
     const struct tracer *t = f->data;
     if (!region_find(g, t->region))
         gr_error(g, WHO " %s: region ID '%s' does not exist", f->id, t->region);
+    /* a run with nothing left to mark keeps no per-step host hook (its steps
+     * stay fused) */
+    const int done = t->style == TR_NONE || (t->style == TR_DIRAC && !t->first_mark);
+    f->hooks = done ? 0 : HOOK_END_OF_STEP;
 }
 
 static struct custom_ref marker_ref(struct gravel *g, const struct fix *f)
