@@ -580,6 +580,23 @@ void dump_vtk_check_name(struct gravel *g, const struct dump *d)
     gr_error(g, "dump %s: file name '%.200s' needs the extension .vtk", d->style->name, d->file);
 }
 
+void dump_vtk_polydata_head(struct gravel *g, const struct dump *d, FILE *fp, const char *title)
+{
+    const int bin = d->binary;
+    fprintf(fp, "# vtk DataFile Version 3.0\n%s\n%s\nDATASET POLYDATA\n", title,
+            bin ? "BINARY" : "ASCII");
+    fprintf(fp, "FIELD FieldData 2\nTIME 1 1 double\n");
+    const int32_t cyc = g->step > INT32_MAX ? INT32_MAX : (int32_t)g->step;
+    if (bin) {
+        dump_write_be_doubles(fp, &g->time, 1);
+        fprintf(fp, "\nCYCLE 1 1 int\n");
+        dump_write_be_int32(fp, &cyc, 1);
+        fputc('\n', fp);
+    } else {
+        fprintf(fp, "%.17g\nCYCLE 1 1 int\n%d\n", g->time, (int)cyc);
+    }
+}
+
 int dump_vtk_binary(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply)
 {
     if (strcmp(argv[i], "binary"))

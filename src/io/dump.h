@@ -111,6 +111,10 @@ void dump_write_be_int32(FILE *fp, const int32_t *v, size_t n);
  * dump_modify binary yes|no at argv[i]: the words used (0: not `binary`),
  * d->binary set with apply. */
 void dump_vtk_check_name(struct gravel *g, const struct dump *d);
+/* A legacy VTK POLYDATA snapshot's head: version, the title line, ASCII or
+ * BINARY (d->binary), the dataset and its field data TIME and CYCLE (the
+ * step, capped at INT32_MAX), which ParaView shows as time. */
+void dump_vtk_polydata_head(struct gravel *g, const struct dump *d, FILE *fp, const char *title);
 int dump_vtk_binary(struct gravel *g, struct dump *d, int argc, char **argv, int i, int apply);
 
 #endif

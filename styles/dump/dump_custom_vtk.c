@@ -191,19 +191,10 @@ static void write(struct gravel *g, struct dump *d, FILE *fp, const int *idx, in
         if (a->tag[idx[k]] > INT32_MAX)
             gr_error(g, "dump custom/vtk: atom ID %lld does not fit LIGGGHTS's int id array "
                         "(use dump vtk, which writes 64-bit IDs)", (long long)a->tag[idx[k]]);
-    fprintf(fp, "# vtk DataFile Version 3.0\n");
-    fprintf(fp, "gravel dump %s step %lld time %.17g\n", d->id, (long long)g->step, g->time);
-    fprintf(fp, "%s\nDATASET POLYDATA\n", bin ? "BINARY" : "ASCII");
-    fprintf(fp, "FIELD FieldData 2\nTIME 1 1 double\n");
-    int32_t cyc = g->step > INT32_MAX ? INT32_MAX : (int32_t)g->step;
-    if (bin) {
-        dump_write_be_doubles(fp, &g->time, 1);
-        fprintf(fp, "\nCYCLE 1 1 int\n");
-        dump_write_be_int32(fp, &cyc, 1);
-        fputc('\n', fp);
-    } else {
-        fprintf(fp, "%.17g\nCYCLE 1 1 int\n%d\n", g->time, (int)cyc);
-    }
+    char title[GR_NAMELEN + 96];
+    snprintf(title, sizeof title, "gravel dump %s step %lld time %.17g", d->id,
+             (long long)g->step, g->time);
+    dump_vtk_polydata_head(g, d, fp, title);
     fprintf(fp, "POINTS %d double\n", n);
     if (bin) {
         if (c->cap < 3 * n) {

@@ -117,20 +117,10 @@ static void lgv_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx
     const int cp = at[PG_CP] >= 0, per = cp ? 3 : 2; /* points per contact */
     const int cells = cp ? 3 : 1;                  /* lines per contact */
     const int bin = d->binary;
-    fprintf(fp, "# vtk DataFile Version 3.0\n");
-    fprintf(fp, "gravel dump %s contacts of compute %s step %lld time %.17g\n", d->id, l->cid,
-            (long long)g->step, g->time);
-    fprintf(fp, "%s\nDATASET POLYDATA\nFIELD FieldData 2\nTIME 1 1 double\n",
-            bin ? "BINARY" : "ASCII");
-    put_doubles(g, d, fp, &g->time, 1, 1);
-    int32_t cyc = g->step > INT32_MAX ? INT32_MAX : (int32_t)g->step;
-    fprintf(fp, "CYCLE 1 1 int\n");
-    if (bin) {
-        dump_write_be_int32(fp, &cyc, 1);
-        fputc('\n', fp);
-    } else {
-        fprintf(fp, "%d\n", (int)cyc);
-    }
+    char title[2 * GR_NAMELEN + 96];
+    snprintf(title, sizeof title, "gravel dump %s contacts of compute %s step %lld time %.17g",
+             d->id, l->cid, (long long)g->step, g->time);
+    dump_vtk_polydata_head(g, d, fp, title);
     const size_t np = (size_t)nr * per, nc = (size_t)nr * cells;
     fprintf(fp, "POINTS %zu double\n", np);
     double *b = room(g, l, 3 * np + 1);

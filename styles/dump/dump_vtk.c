@@ -108,26 +108,10 @@ static void vtk_write(struct gravel *g, struct dump *d, FILE *fp, const int *idx
             maxtag = a->tag[idx[k]];
     int wide = maxtag > INT32_MAX;
 
-    fprintf(fp, "# vtk DataFile Version 3.0\n");
-    fprintf(fp, "gravel dump %s step %lld time %.17g\n", d->id, (long long)g->step, g->time);
-    fprintf(fp, "%s\nDATASET POLYDATA\n", bin ? "BINARY" : "ASCII");
-
-    /* dataset field data: time and cycle, which ParaView shows as time */
-    fprintf(fp, "FIELD FieldData 2\nTIME 1 1 double\n");
-    if (bin) {
-        dump_write_be_doubles(fp, &g->time, 1);
-        fputc('\n', fp);
-    } else {
-        fprintf(fp, "%.17g\n", g->time);
-    }
-    fprintf(fp, "CYCLE 1 1 int\n");
-    int32_t cyc = g->step > INT32_MAX ? INT32_MAX : (int32_t)g->step;
-    if (bin) {
-        dump_write_be_int32(fp, &cyc, 1);
-        fputc('\n', fp);
-    } else {
-        fprintf(fp, "%d\n", (int)cyc);
-    }
+    char title[GR_NAMELEN + 96];
+    snprintf(title, sizeof title, "gravel dump %s step %lld time %.17g", d->id,
+             (long long)g->step, g->time);
+    dump_vtk_polydata_head(g, d, fp, title);
 
     fprintf(fp, "POINTS %d double\n", n);
     write_doubles(g, d, fp, a->x, 3, idx, n);
