@@ -422,22 +422,17 @@ static void apply(struct gravel *g, int argc, char **argv, char *sel, int *scrat
                     domain_remap(g, a->x + 3 * i, a->image + 3 * i);
                     count++;
                 }
-        } else if (kw[0] == 'v' && (kw[1] == 'x' || kw[1] == 'y' || kw[1] == 'z') &&
-                   kw[2] == '\0') {
-            int d = kw[1] - 'x';
+        } else if ((kw[0] == 'v' && kw[1] >= 'x' && kw[1] <= 'z' && kw[2] == '\0') ||
+                   (!strncmp(kw, "omega", 5) && kw[5] >= 'x' && kw[5] <= 'z' && kw[6] == '\0')) {
+            /* one component: vx vy vz, LIGGGHTS's omegax omegay omegaz */
+            const size_t len = strlen(kw);
+            double *arr = kw[0] == 'v' ? a->v : a->omega;
+            int d = kw[len - 1] - 'x';
             double val = 0;
             const double *p = kw_value(g, v[0], kw, &val, buf, dry);
             for (int i = 0; i < n; i++)
                 if (sel[i])
-                    a->v[3 * i + d] = VAL(p, val, i), count++;
-        } else if (!strncmp(kw, "omega", 5) && kw[5] >= 'x' && kw[5] <= 'z' && kw[6] == '\0') {
-            /* LIGGGHTS's omegax, omegay, omegaz: one component */
-            int d = kw[5] - 'x';
-            double val = 0;
-            const double *p = kw_value(g, v[0], kw, &val, buf, dry);
-            for (int i = 0; i < n; i++)
-                if (sel[i])
-                    a->omega[3 * i + d] = VAL(p, val, i), count++;
+                    arr[3 * i + d] = VAL(p, val, i), count++;
         } else if (!strcmp(kw, "mol")) {
             if (!g->atoms.molecule_flag)
                 gr_error(g, "cannot set attribute mol for atom style (fix property/atom mol "
